@@ -1,0 +1,60 @@
+  // ---- Mesolight relief (vtkReliefMapper): march the height field below this fragment ----
+  // Tangent frame scaled to texture units: dP/du and dP/dv from screen-space derivatives
+  // (taken in uniform control flow above), the smooth tangent direction from the vertices.
+  vec3 mlN = normalVCVSOutput;
+  float mlDet = mlDUVdx.x * mlDUVdy.y - mlDUVdy.x * mlDUVdx.y;
+  vec2 mlUV = mlTCoordVC;
+  vec3 mlPos = vertexVC.xyz;
+  vec3 mlHit = vec3(mlUV, 0.0);
+  vec3 mlHitPos = mlPos;
+  vec3 mlShadingNormal = mlN;
+  mat3 mlWorldToTexture = mat3(0.0);
+  if (abs(mlDet) > 1e-30)
+  {
+    vec3 dPdu = (mlDPdx * mlDUVdy.y - mlDPdy * mlDUVdx.y) / mlDet;
+    vec3 dPdv = (mlDPdy * mlDUVdx.x - mlDPdx * mlDUVdy.x) / mlDet;
+    float su = length(dPdu - mlN * dot(mlN, dPdu));
+    float sv = length(dPdv - mlN * dot(mlN, dPdv));
+    vec3 T = mlTangentVC - mlN * dot(mlN, mlTangentVC);
+    T = dot(T, T) > 1e-20 ? normalize(T) : normalize(dPdu - mlN * dot(mlN, dPdu) + 1e-30);
+    float handedness = dot(cross(dPdu, dPdv), mlN) < 0.0 ? -1.0 : 1.0;
+    vec3 B = cross(mlN, T) * handedness;
+    dPdu = T * su;
+    dPdv = B * sv;
+    float worldDepth = mlDepthScale * su; // world depth of depth = 1
+    vec3 depthAxis = -mlN * max(worldDepth, 1e-6 * su);
+    mlWorldToTexture = inverse(mat3(dPdu, dPdv, depthAxis));
+    vec3 dir = mlCameraParallel != 0 ? vec3(0.0, 0.0, -1.0) : normalize(mlPos);
+    vec3 q = mlWorldToTexture * dir; // texture-space change per unit of world distance
+#if ML_METHOD != 0
+    if (worldDepth > 0.0 && q.z > 1e-6)
+    {
+      vec3 span = vec3(q.xy / q.z, 1.0); // from depth 0 to depth 1
+      float t = mlTraceView(mlHit, span);
+      mlHit = mlHit + t * span;
+      mlHitPos = mlPos + dir * (mlHit.z / q.z);
+    }
+#endif
+#ifdef ML_SILHOUETTES
+    if (any(lessThan(mlHit.xy, vec2(0.0))) || any(greaterThan(mlHit.xy, vec2(1.0))))
+    {
+      discard;
+    }
+#endif
+    vec2 g = mlDepthGradient(mlHit.xy);
+    vec3 pu = dPdu - mlN * (worldDepth * g.x);
+    vec3 pv = dPdv - mlN * (worldDepth * g.y);
+    mlShadingNormal = normalize(cross(pu, pv) * handedness);
+  }
+  vec3 diffuse = vec3(0.0);
+  vec3 specular = vec3(0.0);
+  mlAccumulateLights(mlHitPos, mlShadingNormal, mlHit, mlWorldToTexture, diffuse, specular);
+  gl_FragData[0] = vec4(ambientColor + diffuse * diffuseColor + specular * mlSpecularColor, opacity);
+#ifdef ML_ALBEDO_SAMPLER
+  gl_FragData[0] = clamp(gl_FragData[0], 0.0, 1.0) *
+    textureGrad(ML_ALBEDO_SAMPLER, mlHit.xy, mlDUVdx, mlDUVdy);
+#endif
+#ifdef ML_WRITE_DEPTH
+  vec4 mlClip = mlViewToClip * vec4(mlHitPos, 1.0);
+  gl_FragDepth = clamp(0.5 * (mlClip.z / mlClip.w) + 0.5, 0.0, 1.0);
+#endif

@@ -1,0 +1,61 @@
+// Mesolight relief: every VTK light of the renderer, shaded with the Phong model of VTK's own
+// vtkOpenGLPolyDataMapper (same attenuation, spot cone and reflect-based specular), so a relief
+// surface and a dense mesh of the same height field shade alike. Self-shadowing comes from the
+// height field (mlShadowed), evaluated only where a light can contribute.
+
+#define ML_MAX_LIGHTS 8
+uniform int mlNumberOfLights;
+uniform vec3 mlLightColor[ML_MAX_LIGHTS];       // diffuse colour x intensity
+uniform vec3 mlLightDirectionVC[ML_MAX_LIGHTS]; // direction light travels, view coordinates
+uniform vec3 mlLightPositionVC[ML_MAX_LIGHTS];
+uniform vec3 mlLightAttenuation[ML_MAX_LIGHTS];
+uniform float mlLightConeAngle[ML_MAX_LIGHTS];
+uniform float mlLightExponent[ML_MAX_LIGHTS];
+uniform int mlLightPositional[ML_MAX_LIGHTS];
+uniform vec3 mlSpecularColor; // specular x specular colour
+uniform float mlSpecularPower;
+
+// Accumulates diffuse and specular light at a point of the height field.
+//   posVC, normalVC: the hit point and the height field's normal there, view coordinates
+//   hit: the hit in texture space; worldToTexture maps a view-space direction to texture space
+void mlAccumulateLights(vec3 posVC, vec3 normalVC, vec3 hit, mat3 worldToTexture,
+  inout vec3 diffuse, inout vec3 specular)
+{
+  vec3 viewDir = normalize(-posVC);
+  for (int i = 0; i < mlNumberOfLights; ++i)
+  {
+    float attenuation = 1.0;
+    vec3 lightDir = mlLightDirectionVC[i];
+    if (mlLightPositional[i] != 0)
+    {
+      lightDir = posVC - mlLightPositionVC[i];
+      float dist = length(lightDir);
+      lightDir = lightDir / max(dist, 1e-30);
+      vec3 a = mlLightAttenuation[i];
+      attenuation = 1.0 / max(a.x + a.y * dist + a.z * dist * dist, 1e-30);
+      if (mlLightConeAngle[i] <= 90.0)
+      {
+        float coneDot = dot(lightDir, mlLightDirectionVC[i]);
+        attenuation = coneDot >= cos(radians(mlLightConeAngle[i]))
+          ? attenuation * pow(coneDot, mlLightExponent[i])
+          : 0.0;
+      }
+    }
+    float df = max(0.0, attenuation * dot(normalVC, -lightDir));
+    if (df <= 0.0)
+    {
+      continue; // facing away or outside the cone: no shadow march needed
+    }
+#ifdef ML_SELF_SHADOWING
+    vec3 toLight = worldToTexture * (-lightDir);
+    // A light at or below the macro-surface horizon is blocked by the surface itself.
+    if (toLight.z >= -1e-6 || mlShadowed(hit, toLight / -toLight.z))
+    {
+      continue;
+    }
+#endif
+    diffuse += df * mlLightColor[i];
+    float sf = attenuation * pow(max(0.0, dot(reflect(lightDir, normalVC), viewDir)), mlSpecularPower);
+    specular += sf * mlLightColor[i];
+  }
+}

@@ -1,0 +1,661 @@
+#include "vtkReliefMapper.h"
+
+#include "vtkActor.h"
+#include "vtkAlgorithmOutput.h"
+#include "vtkCamera.h"
+#include "vtkCellArray.h"
+#include "vtkCommand.h"
+#include "vtkDataArray.h"
+#include "vtkExecutive.h"
+#include "vtkFieldData.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkLight.h"
+#include "vtkLightCollection.h"
+#include "vtkMath.h"
+#include "vtkMatrix4x4.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLHelper.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataNormals.h"
+#include "vtkPolyDataTangents.h"
+#include "vtkProperty.h"
+#include "vtkRenderer.h"
+#include "vtkShader.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+#include "vtkTriangleFilter.h"
+
+// GLSL sources embedded at build time (vtk_encode_string).
+#include "vtkReliefHeightFieldFS.h"
+#include "vtkReliefImplFS.h"
+#include "vtkReliefLightingFS.h"
+#include "vtkReliefMarchFS.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <iostream>
+#include <string>
+#include <vector>
+
+vtkStandardNewMacro(vtkReliefMapper);
+
+namespace
+{
+const char* const MethodNames[] = { "texture", "steep", "pom", "relief" };
+const char* const ReliefTCoordsName = "vtkReliefMapperTCoords";
+
+// Compile-time refinement of the march per method (see vtkReliefMarchFS.glsl, ML_REFINE).
+int RefinementKind(int method)
+{
+  switch (method)
+  {
+    case vtkReliefMapper::Relief:
+      return 2; // binary search
+    case vtkReliefMapper::ParallaxOcclusion:
+      return 1; // one secant step
+    default:
+      return 0;
+  }
+}
+
+bool AllTriangles(vtkPolyData* poly)
+{
+  if (poly->GetNumberOfStrips() > 0)
+  {
+    return false;
+  }
+  vtkCellArray* polys = poly->GetPolys();
+  return polys->IsHomogeneous() == 3;
+}
+
+// Replaces non-finite tangents (degenerate texture triangles) by any direction perpendicular to
+// the normal, so the shader never receives NaN.
+void SanitizeTangents(vtkFloatArray* tangents, vtkDataArray* normals)
+{
+  const vtkIdType n = tangents->GetNumberOfTuples();
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    float* t = tangents->GetPointer(3 * i);
+    if (std::isfinite(t[0]) && std::isfinite(t[1]) && std::isfinite(t[2]) &&
+      (t[0] * t[0] + t[1] * t[1] + t[2] * t[2]) > 1e-20f)
+    {
+      continue;
+    }
+    double nrm[3];
+    normals->GetTuple(i, nrm);
+    double perp[3];
+    vtkMath::Perpendiculars(nrm, perp, nullptr, 0.0);
+    if (!std::isfinite(perp[0]))
+    {
+      perp[0] = 1.0;
+      perp[1] = perp[2] = 0.0;
+    }
+    t[0] = static_cast<float>(perp[0]);
+    t[1] = static_cast<float>(perp[1]);
+    t[2] = static_cast<float>(perp[2]);
+  }
+}
+} // namespace
+
+//------------------------------------------------------------------------------
+vtkReliefMapper::vtkReliefMapper()
+{
+  this->SetNumberOfInputPorts(2);
+  this->ReliefTextureObject = vtkSmartPointer<vtkTextureObject>::New();
+  // Our own texture-coordinate attribute: VTK uploads "tcoord" only when the actor has a texture.
+  this->MapDataArrayToVertexAttribute(
+    "mlTCoordMC", ReliefTCoordsName, vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
+}
+
+//------------------------------------------------------------------------------
+vtkReliefMapper::~vtkReliefMapper() = default;
+
+//------------------------------------------------------------------------------
+int vtkReliefMapper::FillInputPortInformation(int port, vtkInformation* info)
+{
+  if (port == 1)
+  {
+    info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkImageData");
+    info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+    return 1;
+  }
+  return this->Superclass::FillInputPortInformation(port, info);
+}
+
+//------------------------------------------------------------------------------
+const char* vtkReliefMapper::GetMethodName(int method)
+{
+  if (method < 0 || method >= NumberOfMethods)
+  {
+    return "unknown";
+  }
+  return MethodNames[method];
+}
+
+//------------------------------------------------------------------------------
+bool vtkReliefMapper::SetMethodByName(const char* name)
+{
+  if (!name)
+  {
+    return false;
+  }
+  const std::string n(name);
+  for (int m = 0; m < NumberOfMethods; ++m)
+  {
+    if (n == MethodNames[m])
+    {
+      this->SetMethod(m);
+      return true;
+    }
+  }
+  return false;
+}
+
+//------------------------------------------------------------------------------
+void vtkReliefMapper::SetReliefTextureData(vtkImageData* image)
+{
+  this->SetInputDataInternal(1, image);
+}
+
+//------------------------------------------------------------------------------
+void vtkReliefMapper::SetReliefTextureConnection(vtkAlgorithmOutput* output)
+{
+  this->SetInputConnection(1, output);
+}
+
+//------------------------------------------------------------------------------
+vtkImageData* vtkReliefMapper::GetReliefTexture()
+{
+  if (this->GetNumberOfInputConnections(1) < 1)
+  {
+    return nullptr;
+  }
+  return vtkImageData::SafeDownCast(this->GetExecutive()->GetInputData(1, 0));
+}
+
+//------------------------------------------------------------------------------
+vtkPolyData* vtkReliefMapper::PrepareInput(vtkPolyData* input)
+{
+  if (this->PreparedInput && input == this->PreparedInputSource &&
+    input->GetMTime() <= this->PreparedInputSourceTime)
+  {
+    return this->PreparedInput;
+  }
+  this->PreparedInput = nullptr;
+  this->PreparedInputSource = input;
+  this->PreparedInputSourceTime = input->GetMTime();
+
+  vtkDataArray* tcoords = input->GetPointData()->GetTCoords();
+  if (!tcoords || tcoords->GetNumberOfComponents() < 2)
+  {
+    vtkErrorMacro(<< "The input has no point texture coordinates (2 components). A relief surface "
+                     "is addressed by texture coordinates: give the mesh tcoords, e.g. with "
+                     "vtkTextureMapToPlane or from the mesh file.");
+    return nullptr;
+  }
+  if (input->GetNumberOfPolys() + input->GetNumberOfStrips() == 0)
+  {
+    vtkErrorMacro(<< "The input has no polygons; vtkReliefMapper draws surfaces only.");
+    return nullptr;
+  }
+  for (vtkIdType i = 0; i < tcoords->GetNumberOfTuples(); ++i)
+  {
+    if (!std::isfinite(tcoords->GetComponent(i, 0)) || !std::isfinite(tcoords->GetComponent(i, 1)))
+    {
+      vtkErrorMacro(<< "Texture coordinate " << i << " is not finite (NaN or Inf).");
+      return nullptr;
+    }
+  }
+
+  vtkSmartPointer<vtkPolyData> mesh = input;
+  if (!AllTriangles(mesh))
+  {
+    vtkNew<vtkTriangleFilter> triangles;
+    triangles->SetInputData(mesh);
+    triangles->PassVertsOff();
+    triangles->PassLinesOff();
+    triangles->Update();
+    mesh = triangles->GetOutput();
+  }
+  if (!mesh->GetPointData()->GetNormals())
+  {
+    vtkNew<vtkPolyDataNormals> normals;
+    normals->SetInputData(mesh);
+    normals->SplittingOff();
+    normals->ConsistencyOff();
+    normals->AutoOrientNormalsOff();
+    normals->ComputePointNormalsOn();
+    normals->ComputeCellNormalsOff();
+    normals->Update();
+    mesh = normals->GetOutput();
+  }
+  vtkFloatArray* tangents = vtkFloatArray::SafeDownCast(mesh->GetPointData()->GetTangents());
+  if (!tangents || tangents->GetNumberOfComponents() != 3)
+  {
+    vtkNew<vtkPolyDataTangents> tangentFilter;
+    tangentFilter->SetInputData(mesh);
+    tangentFilter->ComputePointTangentsOn();
+    tangentFilter->ComputeCellTangentsOff();
+    tangentFilter->Update();
+    mesh = tangentFilter->GetOutput();
+    vtkDataArray* computed = mesh->GetPointData()->GetTangents();
+    if (!computed)
+    {
+      vtkErrorMacro(<< "Could not compute tangents for the input.");
+      return nullptr;
+    }
+    // The OpenGL mapper uploads tangents only as floats.
+    vtkNew<vtkFloatArray> asFloat;
+    asFloat->DeepCopy(computed);
+    asFloat->SetName("Tangents");
+    vtkNew<vtkPolyData> copy;
+    copy->ShallowCopy(mesh);
+    copy->GetPointData()->SetTangents(asFloat);
+    mesh = copy;
+    tangents = asFloat;
+  }
+  else
+  {
+    vtkNew<vtkPolyData> copy;
+    copy->ShallowCopy(mesh);
+    vtkNew<vtkFloatArray> own;
+    own->DeepCopy(tangents);
+    copy->GetPointData()->SetTangents(own);
+    mesh = copy;
+    tangents = own;
+  }
+  SanitizeTangents(tangents, mesh->GetPointData()->GetNormals());
+  vtkNew<vtkFloatArray> reliefTCoords;
+  reliefTCoords->SetName(ReliefTCoordsName);
+  reliefTCoords->SetNumberOfComponents(2);
+  vtkDataArray* meshTCoords = mesh->GetPointData()->GetTCoords();
+  reliefTCoords->SetNumberOfTuples(meshTCoords->GetNumberOfTuples());
+  for (vtkIdType i = 0; i < meshTCoords->GetNumberOfTuples(); ++i)
+  {
+    reliefTCoords->SetTypedComponent(i, 0, static_cast<float>(meshTCoords->GetComponent(i, 0)));
+    reliefTCoords->SetTypedComponent(i, 1, static_cast<float>(meshTCoords->GetComponent(i, 1)));
+  }
+  mesh->GetPointData()->AddArray(reliefTCoords);
+  this->PreparedInput = mesh;
+  return this->PreparedInput;
+}
+
+//------------------------------------------------------------------------------
+bool vtkReliefMapper::UpdateReliefTexture(vtkRenderer* ren)
+{
+  vtkImageData* image = this->GetReliefTexture();
+  if (!image)
+  {
+    vtkErrorMacro(<< "No relief texture: call SetReliefTextureConnection() or "
+                     "SetReliefTextureData() with the output of vtkReliefTextureFilter.");
+    return false;
+  }
+  auto* renWin = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+  if (image == this->ReliefTextureUploaded && image->GetMTime() <= this->ReliefTextureUploadTime &&
+    this->ReliefTextureObject->GetHandle() != 0 && this->ReliefTextureObject->GetContext() == renWin)
+  {
+    return this->ReliefTextureReady;
+  }
+  this->ReliefTextureUploaded = image;
+  this->ReliefTextureUploadTime = image->GetMTime();
+  this->ReliefTextureReady = false;
+
+  int dims[3];
+  image->GetDimensions(dims);
+  vtkDataArray* scalars = image->GetPointData()->GetScalars();
+  if (dims[0] < 1 || dims[1] < 1 || !scalars || scalars->GetNumberOfTuples() < 1)
+  {
+    vtkErrorMacro(<< "The relief texture is empty.");
+    return false;
+  }
+  if (dims[2] != 1)
+  {
+    vtkErrorMacro(<< "The relief texture must be a 2D image; it has " << dims[2] << " slices.");
+    return false;
+  }
+  if (scalars->GetNumberOfComponents() != 4)
+  {
+    vtkErrorMacro(<< "The relief texture needs 4 components (normal RGB, depth A) as made by "
+                     "vtkReliefTextureFilter; it has "
+                  << scalars->GetNumberOfComponents() << ".");
+    return false;
+  }
+  const bool bytes = scalars->GetDataType() == VTK_UNSIGNED_CHAR;
+  const vtkIdType count = static_cast<vtkIdType>(dims[0]) * dims[1];
+  std::vector<float> texels(static_cast<size_t>(count) * 4);
+  for (vtkIdType i = 0; i < count; ++i)
+  {
+    for (int c = 0; c < 4; ++c)
+    {
+      double value = scalars->GetComponent(i, c);
+      if (bytes)
+      {
+        value /= 255.0;
+      }
+      if (!std::isfinite(value))
+      {
+        vtkErrorMacro(<< "The relief texture has a non-finite value at texel " << i
+                      << " (component " << c << "); NaN or Inf cannot be rendered.");
+        return false;
+      }
+      texels[static_cast<size_t>(i) * 4 + c] = static_cast<float>(vtkMath::ClampValue(value, 0.0, 1.0));
+    }
+  }
+
+  this->ReliefTextureObject->SetContext(renWin);
+  this->ReliefTextureObject->SetMinificationFilter(vtkTextureObject::Linear);
+  this->ReliefTextureObject->SetMagnificationFilter(vtkTextureObject::Linear);
+  if (!this->ReliefTextureObject->Create2DFromRaw(
+        static_cast<unsigned int>(dims[0]), static_cast<unsigned int>(dims[1]), 4, VTK_FLOAT,
+        texels.data()))
+  {
+    vtkErrorMacro(<< "Could not create a " << dims[0] << "x" << dims[1]
+                  << " float RGBA texture (too large for this OpenGL implementation?).");
+    return false;
+  }
+  this->ReliefTextureSize[0] = dims[0];
+  this->ReliefTextureSize[1] = dims[1];
+  this->BakedDepthScale = -1.0;
+  if (vtkDataArray* baked = image->GetFieldData()->GetArray("MesolightDepthScale"))
+  {
+    if (baked->GetNumberOfTuples() > 0)
+    {
+      this->BakedDepthScale = baked->GetComponent(0, 0);
+    }
+  }
+  this->ReliefTextureReady = true;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkReliefMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* actor)
+{
+  // vtkOpenGLPolyDataMapper::RenderPiece has set CurrentInput to the input; draw a prepared copy
+  // (normals and tangents added) instead, and bring the relief texture up to date.
+  this->ReadyToDraw = false;
+  if (!this->Static && this->GetNumberOfInputConnections(1) > 0)
+  {
+    vtkAlgorithmOutput* reliefPort = this->GetInputConnection(1, 0);
+    reliefPort->GetProducer()->Update(reliefPort->GetIndex());
+  }
+  vtkPolyData* prepared = this->CurrentInput ? this->PrepareInput(this->CurrentInput) : nullptr;
+  if (!prepared || !this->UpdateReliefTexture(ren))
+  {
+    return;
+  }
+  this->CurrentInput = prepared;
+  this->HasAlbedoTexture = actor->GetTexture() != nullptr;
+  const int wrap = this->RepeatTexture ? vtkTextureObject::Repeat : vtkTextureObject::ClampToEdge;
+  this->ReliefTextureObject->SetWrapS(wrap);
+  this->ReliefTextureObject->SetWrapT(wrap);
+  this->ReliefTextureObject->Activate();
+  this->Superclass::RenderPieceStart(ren, actor);
+  this->ReadyToDraw = true;
+}
+
+//------------------------------------------------------------------------------
+void vtkReliefMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* actor)
+{
+  if (this->ReadyToDraw)
+  {
+    this->Superclass::RenderPieceDraw(ren, actor);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkReliefMapper::RenderPieceFinish(vtkRenderer* ren, vtkActor* actor)
+{
+  if (this->ReadyToDraw)
+  {
+    this->Superclass::RenderPieceFinish(ren, actor);
+    this->ReliefTextureObject->Deactivate();
+  }
+  this->ReadyToDraw = false;
+}
+
+//------------------------------------------------------------------------------
+std::string vtkReliefMapper::ShaderKey() const
+{
+  return std::to_string(this->Method) + (this->SelfShadowing ? "S" : "s") +
+    (this->Silhouettes ? "E" : "e") + (this->WriteDepth ? "D" : "d") +
+    (this->HasAlbedoTexture ? "A" : "a");
+}
+
+//------------------------------------------------------------------------------
+bool vtkReliefMapper::GetNeedToRebuildShaders(
+  vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* actor)
+{
+  if (this->Superclass::GetNeedToRebuildShaders(cellBO, ren, actor))
+  {
+    return true;
+  }
+  auto it = this->ShaderKeys.find(&cellBO);
+  return it == this->ShaderKeys.end() || it->second != this->ShaderKey();
+}
+
+//------------------------------------------------------------------------------
+void vtkReliefMapper::ReplaceShaderValues(
+  std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* actor)
+{
+  std::string vs = shaders[vtkShader::Vertex]->GetSource();
+  std::string fs = shaders[vtkShader::Fragment]->GetSource();
+
+  // Reserve our places before VTK fills its tags. VTK's lighting and its texture modulation at
+  // the undisplaced coordinate are replaced by the relief implementation.
+  vtkShaderProgram::Substitute(vs, "//VTK::Normal::Dec",
+    "in vec3 tangentMC;\nuniform mat3 mlTangentMatrix;\nout vec3 mlTangentVC;\n"
+    "in vec2 mlTCoordMC;\nout vec2 mlTCoordVC;\n//VTK::Normal::Dec");
+  vtkShaderProgram::Substitute(vs, "//VTK::Normal::Impl",
+    "mlTangentVC = mlTangentMatrix * tangentMC;\n  mlTCoordVC = mlTCoordMC;\n  //VTK::Normal::Impl");
+  vtkShaderProgram::Substitute(
+    fs, "//VTK::CustomUniforms::Dec", "//VTK::CustomUniforms::Dec\n//MESOLIGHT::Dec");
+  vtkShaderProgram::Substitute(
+    fs, "//VTK::UniformFlow::Impl", "//MESOLIGHT::UniformFlow::Impl\n  //VTK::UniformFlow::Impl");
+  vtkShaderProgram::Substitute(fs, "//VTK::Light::Impl", "//MESOLIGHT::Relief::Impl");
+  vtkShaderProgram::Substitute(fs, "//VTK::TCoord::Impl", "");
+  shaders[vtkShader::Vertex]->SetSource(vs);
+  shaders[vtkShader::Fragment]->SetSource(fs);
+
+  this->Superclass::ReplaceShaderValues(shaders, ren, actor);
+
+  fs = shaders[vtkShader::Fragment]->GetSource();
+  std::string defines = "#define ML_METHOD " + std::to_string(this->Method) + "\n" +
+    "#define ML_REFINE " + std::to_string(RefinementKind(this->Method)) + "\n";
+  if (this->SelfShadowing)
+  {
+    defines += "#define ML_SELF_SHADOWING\n";
+  }
+  if (this->Silhouettes)
+  {
+    defines += "#define ML_SILHOUETTES\n";
+  }
+  if (this->WriteDepth)
+  {
+    defines += "#define ML_WRITE_DEPTH\n";
+  }
+  if (this->HasAlbedoTexture)
+  {
+    defines += "#define ML_ALBEDO_SAMPLER actortexture\n";
+  }
+  const std::string declarations = defines +
+    "in vec3 mlTangentVC;\n"
+    "in vec2 mlTCoordVC;\n"
+    "uniform int mlCameraParallel;\n"
+    "uniform mat4 mlViewToClip;\n" +
+    vtkReliefHeightFieldFS + vtkReliefMarchFS + vtkReliefLightingFS;
+  vtkShaderProgram::Substitute(fs, "//MESOLIGHT::Dec", declarations);
+  vtkShaderProgram::Substitute(fs, "//MESOLIGHT::UniformFlow::Impl",
+    "vec3 mlDPdx = dFdx(vertexVC.xyz);\n"
+    "  vec3 mlDPdy = dFdy(vertexVC.xyz);\n"
+    "  vec2 mlDUVdx = dFdx(mlTCoordVC);\n"
+    "  vec2 mlDUVdy = dFdy(mlTCoordVC);");
+  vtkShaderProgram::Substitute(fs, "//MESOLIGHT::Relief::Impl", vtkReliefImplFS);
+  shaders[vtkShader::Fragment]->SetSource(fs);
+
+  this->ShaderKeys[this->LastBoundBO] = this->ShaderKey();
+
+  if (const char* dump = std::getenv("MESOLIGHT_DUMP_SHADERS"))
+  {
+    if (dump[0] != '\0' && dump[0] != '0')
+    {
+      std::cerr << "==== vtkReliefMapper vertex shader ====\n"
+                << shaders[vtkShader::Vertex]->GetSource() << "\n"
+                << "==== vtkReliefMapper fragment shader ====\n"
+                << shaders[vtkShader::Fragment]->GetSource() << std::endl;
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkReliefMapper::SetMapperShaderParameters(
+  vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* actor)
+{
+  this->Superclass::SetMapperShaderParameters(cellBO, ren, actor);
+  vtkShaderProgram* program = cellBO.Program;
+  if (!program)
+  {
+    return;
+  }
+  program->SetUniformi("mlReliefTexture", this->ReliefTextureObject->GetTextureUnit());
+  program->SetUniformf("mlDepthScale", static_cast<float>(this->DepthScale));
+  // Normals baked with another depth scale are rescaled through the depth gradient.
+  const double baked = this->BakedDepthScale >= 0.0 ? this->BakedDepthScale : this->DepthScale;
+  program->SetUniformf("mlGradientScale", baked > 0.0 ? static_cast<float>(1.0 / baked) : 0.0f);
+  program->SetUniformf("mlTexelAspect",
+    this->ReliefTextureSize[0] > 0
+      ? static_cast<float>(this->ReliefTextureSize[1]) / this->ReliefTextureSize[0]
+      : 1.0f);
+  program->SetUniformi("mlLinearSteps", this->LinearSteps);
+  program->SetUniformi("mlRefinementSteps", this->RefinementSteps);
+
+  vtkCamera* camera = ren->GetActiveCamera();
+  program->SetUniformi("mlCameraParallel", camera->GetParallelProjection());
+  vtkMatrix4x4* projection =
+    camera->GetProjectionTransformMatrix(ren->GetTiledAspectRatio(), -1, 1);
+  float columnMajor[16];
+  for (int r = 0; r < 4; ++r)
+  {
+    for (int c = 0; c < 4; ++c)
+    {
+      columnMajor[c * 4 + r] = static_cast<float>(projection->GetElement(r, c));
+    }
+  }
+  program->SetUniformMatrix4x4("mlViewToClip", columnMajor);
+
+  // Tangents are surface directions: transform them with the linear part of model-view.
+  vtkNew<vtkMatrix4x4> modelView;
+  vtkMatrix4x4::Multiply4x4(camera->GetViewTransformMatrix(), actor->GetMatrix(), modelView);
+  float tangentMatrix[9];
+  for (int r = 0; r < 3; ++r)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      tangentMatrix[c * 3 + r] = static_cast<float>(modelView->GetElement(r, c));
+    }
+  }
+  program->SetUniformMatrix3x3("mlTangentMatrix", tangentMatrix);
+
+  vtkProperty* property = actor->GetProperty();
+  const double* sc = property->GetSpecularColor();
+  const float specular[3] = { static_cast<float>(property->GetSpecular() * sc[0]),
+    static_cast<float>(property->GetSpecular() * sc[1]),
+    static_cast<float>(property->GetSpecular() * sc[2]) };
+  program->SetUniform3f("mlSpecularColor", specular);
+  program->SetUniformf("mlSpecularPower", static_cast<float>(property->GetSpecularPower()));
+
+  this->SetLightUniforms(program, ren);
+}
+
+//------------------------------------------------------------------------------
+void vtkReliefMapper::SetLightUniforms(vtkShaderProgram* program, vtkRenderer* ren)
+{
+  float color[MaximumNumberOfLights][3] = {};
+  float direction[MaximumNumberOfLights][3] = {};
+  float position[MaximumNumberOfLights][3] = {};
+  float attenuation[MaximumNumberOfLights][3] = {};
+  float coneAngle[MaximumNumberOfLights] = {};
+  float exponent[MaximumNumberOfLights] = {};
+  int positional[MaximumNumberOfLights] = {};
+
+  vtkMatrix4x4* view = ren->GetActiveCamera()->GetViewTransformMatrix();
+  int count = 0;
+  vtkCollectionSimpleIterator it;
+  vtkLightCollection* lights = ren->GetLights();
+  lights->InitTraversal(it);
+  while (vtkLight* light = lights->GetNextLight(it))
+  {
+    if (!light->GetSwitch())
+    {
+      continue;
+    }
+    if (count == MaximumNumberOfLights)
+    {
+      if (!this->WarnedTooManyLights)
+      {
+        vtkWarningMacro(<< "More than " << MaximumNumberOfLights
+                        << " lights are switched on; vtkReliefMapper shades the first "
+                        << MaximumNumberOfLights << ".");
+        this->WarnedTooManyLights = true;
+      }
+      break;
+    }
+    const double intensity = light->GetIntensity();
+    const double* diffuse = light->GetDiffuseColor();
+    double lp[4] = { 0, 0, 0, 1 };
+    double lfp[3];
+    light->GetTransformedPosition(lp);
+    light->GetTransformedFocalPoint(lfp);
+    double dirWC[3] = { lfp[0] - lp[0], lfp[1] - lp[1], lfp[2] - lp[2] };
+    vtkMath::Normalize(dirWC);
+    double posVC[4];
+    view->MultiplyPoint(lp, posVC);
+    for (int k = 0; k < 3; ++k)
+    {
+      color[count][k] = static_cast<float>(diffuse[k] * intensity);
+      direction[count][k] = static_cast<float>(view->GetElement(k, 0) * dirWC[0] +
+        view->GetElement(k, 1) * dirWC[1] + view->GetElement(k, 2) * dirWC[2]);
+      position[count][k] = static_cast<float>(posVC[k]);
+      attenuation[count][k] = static_cast<float>(light->GetAttenuationValues()[k]);
+    }
+    coneAngle[count] = static_cast<float>(light->GetConeAngle());
+    exponent[count] = static_cast<float>(light->GetExponent());
+    positional[count] = light->GetPositional();
+    ++count;
+  }
+  program->SetUniformi("mlNumberOfLights", count);
+  program->SetUniform3fv("mlLightColor", MaximumNumberOfLights, color);
+  program->SetUniform3fv("mlLightDirectionVC", MaximumNumberOfLights, direction);
+  program->SetUniform3fv("mlLightPositionVC", MaximumNumberOfLights, position);
+  program->SetUniform3fv("mlLightAttenuation", MaximumNumberOfLights, attenuation);
+  program->SetUniform1fv("mlLightConeAngle", MaximumNumberOfLights, coneAngle);
+  program->SetUniform1fv("mlLightExponent", MaximumNumberOfLights, exponent);
+  program->SetUniform1iv("mlLightPositional", MaximumNumberOfLights, positional);
+}
+
+//------------------------------------------------------------------------------
+void vtkReliefMapper::ReleaseGraphicsResources(vtkWindow* win)
+{
+  this->ReliefTextureObject->ReleaseGraphicsResources(win);
+  this->ReliefTextureUploaded = nullptr;
+  this->ShaderKeys.clear();
+  this->Superclass::ReleaseGraphicsResources(win);
+}
+
+//------------------------------------------------------------------------------
+void vtkReliefMapper::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Method: " << GetMethodName(this->Method) << "\n";
+  os << indent << "LinearSteps: " << this->LinearSteps << "\n";
+  os << indent << "RefinementSteps: " << this->RefinementSteps << "\n";
+  os << indent << "DepthScale: " << this->DepthScale << "\n";
+  os << indent << "SelfShadowing: " << (this->SelfShadowing ? "On" : "Off") << "\n";
+  os << indent << "Silhouettes: " << (this->Silhouettes ? "On" : "Off") << "\n";
+  os << indent << "WriteDepth: " << (this->WriteDepth ? "On" : "Off") << "\n";
+  os << indent << "RepeatTexture: " << (this->RepeatTexture ? "On" : "Off") << "\n";
+  os << indent << "ReliefTexture: " << this->GetReliefTexture() << "\n";
+}
