@@ -72,24 +72,47 @@ bool AllTriangles(vtkPolyData* poly)
   return polys->IsHomogeneous() == 3;
 }
 
-// Replaces non-finite tangents (degenerate texture triangles) by any direction perpendicular to
-// the normal, so the shader never receives NaN.
-void SanitizeTangents(vtkFloatArray* tangents, vtkDataArray* normals)
+bool UsableDirection(const double v[3])
 {
-  const vtkIdType n = tangents->GetNumberOfTuples();
+  return std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]) &&
+    (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) > 1e-20;
+}
+
+// Degenerate triangles (zero area, or coinciding texture coordinates) give zero or NaN normals
+// and tangents. Replace them by a usable frame so the shader never receives NaN.
+void SanitizeFrame(vtkPolyData* mesh)
+{
+  vtkPointData* pd = mesh->GetPointData();
+  vtkDataArray* normals = pd->GetNormals();
+  auto* tangents = vtkFloatArray::SafeDownCast(pd->GetTangents());
+  const vtkIdType n = mesh->GetNumberOfPoints();
+  vtkSmartPointer<vtkDataArray> ownNormals;
   for (vtkIdType i = 0; i < n; ++i)
   {
+    double nrm[3];
+    normals->GetTuple(i, nrm);
+    if (!UsableDirection(nrm))
+    {
+      if (!ownNormals) // the normals may be the user's: change a copy
+      {
+        ownNormals = vtkSmartPointer<vtkDataArray>::Take(normals->NewInstance());
+        ownNormals->DeepCopy(normals);
+        pd->SetNormals(ownNormals);
+        normals = ownNormals;
+      }
+      normals->SetTuple3(i, 0.0, 0.0, 1.0);
+      nrm[0] = nrm[1] = 0.0;
+      nrm[2] = 1.0;
+    }
     float* t = tangents->GetPointer(3 * i);
-    if (std::isfinite(t[0]) && std::isfinite(t[1]) && std::isfinite(t[2]) &&
-      (t[0] * t[0] + t[1] * t[1] + t[2] * t[2]) > 1e-20f)
+    const double tangent[3] = { t[0], t[1], t[2] };
+    if (UsableDirection(tangent))
     {
       continue;
     }
-    double nrm[3];
-    normals->GetTuple(i, nrm);
     double perp[3];
     vtkMath::Perpendiculars(nrm, perp, nullptr, 0.0);
-    if (!std::isfinite(perp[0]))
+    if (!UsableDirection(perp))
     {
       perp[0] = 1.0;
       perp[1] = perp[2] = 0.0;
@@ -256,7 +279,6 @@ vtkPolyData* vtkReliefMapper::PrepareInput(vtkPolyData* input)
     copy->ShallowCopy(mesh);
     copy->GetPointData()->SetTangents(asFloat);
     mesh = copy;
-    tangents = asFloat;
   }
   else
   {
@@ -266,9 +288,8 @@ vtkPolyData* vtkReliefMapper::PrepareInput(vtkPolyData* input)
     own->DeepCopy(tangents);
     copy->GetPointData()->SetTangents(own);
     mesh = copy;
-    tangents = own;
   }
-  SanitizeTangents(tangents, mesh->GetPointData()->GetNormals());
+  SanitizeFrame(mesh);
   vtkNew<vtkFloatArray> reliefTCoords;
   reliefTCoords->SetName(ReliefTCoordsName);
   reliefTCoords->SetNumberOfComponents(2);

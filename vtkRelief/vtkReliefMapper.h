@@ -38,6 +38,7 @@
 
 #include "MesolightReliefModule.h" // for export macro
 #include "vtkOpenGLPolyDataMapper.h"
+#include "vtkPolyData.h"     // for GetPreparedInput
 #include "vtkSmartPointer.h" // for members
 
 #include <map>    // for ShaderKeys

@@ -1,0 +1,132 @@
+#include "ImageCompare.h"
+
+#include <vtkCamera.h>
+#include <vtkFloatArray.h>
+#include <vtkImageData.h>
+#include <vtkNew.h>
+#include <vtkPNGWriter.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+#include <vtkRendererCollection.h>
+#include <vtkUnsignedCharArray.h>
+
+#include <cmath>
+#include <cstring>
+
+namespace mesolight
+{
+
+//------------------------------------------------------------------------------
+double Frame::EyeDepth(size_t pixel) const
+{
+  const double z = this->Depth[pixel];
+  if (this->Parallel)
+  {
+    return this->Near + z * (this->Far - this->Near);
+  }
+  // Inverse of the perspective depth mapping with glDepthRange(0, 1).
+  const double ndc = 2.0 * z - 1.0;
+  return 2.0 * this->Near * this->Far / (this->Far + this->Near - ndc * (this->Far - this->Near));
+}
+
+//------------------------------------------------------------------------------
+Frame CaptureFrame(vtkRenderWindow* window)
+{
+  window->Render();
+  Frame frame;
+  const int* size = window->GetSize();
+  frame.Width = size[0];
+  frame.Height = size[1];
+  vtkNew<vtkUnsignedCharArray> rgb;
+  window->GetPixelData(0, 0, size[0] - 1, size[1] - 1, 0, rgb, 0);
+  frame.Rgb.assign(rgb->GetPointer(0), rgb->GetPointer(0) + 3 * size_t(size[0]) * size[1]);
+  vtkNew<vtkFloatArray> depth;
+  window->GetZbufferData(0, 0, size[0] - 1, size[1] - 1, depth);
+  frame.Depth.assign(depth->GetPointer(0), depth->GetPointer(0) + size_t(size[0]) * size[1]);
+  vtkRenderer* renderer = window->GetRenderers()->GetFirstRenderer();
+  if (renderer)
+  {
+    double range[2];
+    renderer->GetActiveCamera()->GetClippingRange(range);
+    frame.Near = range[0];
+    frame.Far = range[1];
+    frame.Parallel = renderer->GetActiveCamera()->GetParallelProjection() != 0;
+  }
+  return frame;
+}
+
+//------------------------------------------------------------------------------
+FrameDifference CompareFrames(
+  const Frame& a, const Frame& b, double depthTolerance, const Frame* footprint)
+{
+  FrameDifference d;
+  if (a.Width != b.Width || a.Height != b.Height || a.Depth.empty())
+  {
+    d.SilhouetteMismatch = 100.0;
+    return d;
+  }
+  const size_t pixels = size_t(a.Width) * a.Height;
+  long long either = 0, onlyOne = 0, depthOff = 0;
+  double absSum = 0.0, sqSum = 0.0, depthSum = 0.0;
+  const bool useFootprint = footprint && footprint->Depth.size() == pixels;
+  for (size_t p = 0; p < pixels; ++p)
+  {
+    if (useFootprint && !footprint->Covered(p))
+    {
+      continue;
+    }
+    const bool ca = a.Covered(p), cb = b.Covered(p);
+    if (ca || cb)
+    {
+      ++either;
+    }
+    if (ca != cb)
+    {
+      ++onlyOne;
+      continue;
+    }
+    if (!ca)
+    {
+      continue;
+    }
+    ++d.CoveredBoth;
+    for (int c = 0; c < 3; ++c)
+    {
+      const double diff = double(a.Rgb[3 * p + c]) - double(b.Rgb[3 * p + c]);
+      absSum += std::abs(diff);
+      sqSum += diff * diff;
+    }
+    const double dz = std::abs(a.EyeDepth(p) - b.EyeDepth(p));
+    depthSum += dz;
+    if (dz > depthTolerance)
+    {
+      ++depthOff;
+    }
+  }
+  if (d.CoveredBoth > 0)
+  {
+    d.MeanColorError = absSum / (3.0 * d.CoveredBoth);
+    d.RmsColorError = std::sqrt(sqSum / (3.0 * d.CoveredBoth));
+    d.MeanDepthError = depthSum / d.CoveredBoth;
+    d.DepthMismatch = 100.0 * double(depthOff) / d.CoveredBoth;
+  }
+  d.Psnr = d.RmsColorError > 0.0 ? 20.0 * std::log10(255.0 / d.RmsColorError) : 99.0;
+  d.SilhouetteMismatch = either > 0 ? 100.0 * double(onlyOne) / either : 0.0;
+  return d;
+}
+
+//------------------------------------------------------------------------------
+bool WritePng(const Frame& frame, const char* fileName)
+{
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(frame.Width, frame.Height, 1);
+  image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+  std::memcpy(image->GetScalarPointer(), frame.Rgb.data(), frame.Rgb.size());
+  vtkNew<vtkPNGWriter> writer;
+  writer->SetInputData(image);
+  writer->SetFileName(fileName);
+  writer->Write();
+  return writer->GetErrorCode() == 0;
+}
+
+} // namespace mesolight

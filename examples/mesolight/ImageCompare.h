@@ -1,0 +1,58 @@
+// Captures a rendered frame (colour and depth) and compares two frames of the same view:
+// the error figures every relief test and benchmark reports.
+#ifndef mesolight_ImageCompare_h
+#define mesolight_ImageCompare_h
+
+#include <cstddef>
+#include <vector>
+
+class vtkRenderWindow;
+
+namespace mesolight
+{
+
+/** One rendered frame: RGB bytes and the depth buffer, bottom row first. */
+struct Frame
+{
+  int Width = 0;
+  int Height = 0;
+  std::vector<unsigned char> Rgb;
+  std::vector<float> Depth; // window depth in [0,1]; 1 = background
+  double Near = 0.0;        // camera clipping range, to linearise Depth
+  double Far = 1.0;
+  bool Parallel = false;
+
+  bool Covered(size_t pixel) const { return this->Depth[pixel] < 1.0f; }
+  /** Distance from the eye plane of a covered pixel. */
+  double EyeDepth(size_t pixel) const;
+};
+
+/** Renders the window and reads back its colour and depth. */
+Frame CaptureFrame(vtkRenderWindow* window);
+
+struct FrameDifference
+{
+  double MeanColorError = 0.0; // mean |difference| over RGB, in 8-bit levels, pixels covered in both
+  double RmsColorError = 0.0;  // RMSE in 8-bit levels
+  double Psnr = 0.0;           // dB, from RmsColorError
+  double SilhouetteMismatch = 0.0; // % of pixels covered in exactly one frame, of those in either
+  double MeanDepthError = 0.0;     // mean |eye depth difference| over pixels covered in both, world units
+  double DepthMismatch = 0.0;      // % of pixels covered in both whose eye depths differ by > tolerance
+  long long CoveredBoth = 0;
+};
+
+/**
+ * Compares two frames of the same camera. depthTolerance is in world units. When footprint is
+ * given (the coarse mesh drawn alone), only pixels it covers count: a relief can only draw
+ * inside its mesh's footprint, so the band of a displaced surface seen outside it is not an error
+ * of the march.
+ */
+FrameDifference CompareFrames(
+  const Frame& a, const Frame& b, double depthTolerance, const Frame* footprint = nullptr);
+
+/** Writes the frame's colour as PNG. */
+bool WritePng(const Frame& frame, const char* fileName);
+
+} // namespace mesolight
+
+#endif

@@ -1,0 +1,300 @@
+#include "ReliefScene.h"
+
+#include "vtkHeightFieldMeshFilter.h"
+#include "vtkOIIOImageReader.h"
+#include "vtkProceduralReliefSource.h"
+#include "vtkReliefMapper.h"
+#include "vtkReliefTextureFilter.h"
+
+#include <vtkActor.h>
+#include <vtkCamera.h>
+#include <vtkCommand.h>
+#include <vtkImageData.h>
+#include <vtkLight.h>
+#include <vtkMath.h>
+#include <vtkNew.h>
+#include <vtkPlaneSource.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkProperty.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+#include <vtkTexture.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <sstream>
+
+namespace mesolight
+{
+namespace
+{
+// Collects VTK error messages of one pipeline so the tool can report them as its own.
+class ErrorCollector : public vtkCommand
+{
+public:
+  static ErrorCollector* New() { return new ErrorCollector; }
+  void Execute(vtkObject*, unsigned long, void* callData) override
+  {
+    if (callData)
+    {
+      this->Messages += static_cast<const char*>(callData);
+    }
+  }
+  std::string Messages;
+};
+
+// The wall spans [0,1] x [0, H/W] in the z = 0 plane, facing +z.
+double WallHeight(vtkImageData* relief)
+{
+  int dims[3];
+  relief->GetDimensions(dims);
+  return dims[0] > 0 ? static_cast<double>(dims[1]) / dims[0] : 1.0;
+}
+
+// The coarse wall: a few quads spanning the texel centres of the relief texture, exactly the
+// extent of the dense reference mesh (one vertex per texel centre), with u,v = texture position.
+vtkSmartPointer<vtkPolyData> MakeWall(vtkImageData* relief)
+{
+  int dims[3];
+  relief->GetDimensions(dims);
+  const double h = WallHeight(relief);
+  const double du = 0.5 / dims[0], dv = 0.5 / dims[1];
+  vtkNew<vtkPlaneSource> plane;
+  plane->SetOrigin(du, dv * h, 0.0);
+  plane->SetPoint1(1.0 - du, dv * h, 0.0);
+  plane->SetPoint2(du, (1.0 - dv) * h, 0.0);
+  plane->SetResolution(4, 4);
+  plane->Update();
+  auto wall = vtkSmartPointer<vtkPolyData>::New();
+  wall->DeepCopy(plane->GetOutput());
+  vtkDataArray* tcoords = wall->GetPointData()->GetTCoords();
+  for (vtkIdType i = 0; i < tcoords->GetNumberOfTuples(); ++i)
+  {
+    tcoords->SetComponent(i, 0, du + tcoords->GetComponent(i, 0) * (1.0 - 2.0 * du));
+    tcoords->SetComponent(i, 1, dv + tcoords->GetComponent(i, 1) * (1.0 - 2.0 * dv));
+  }
+  return wall;
+}
+
+void ApplyMaterial(vtkActor* actor)
+{
+  vtkProperty* property = actor->GetProperty();
+  property->SetColor(1.0, 1.0, 1.0);
+  property->SetAmbient(0.08);
+  property->SetDiffuse(0.9);
+  property->SetSpecular(0.15);
+  property->SetSpecularPower(24.0);
+}
+} // namespace
+
+//------------------------------------------------------------------------------
+bool BuildReliefTextures(const ReliefSceneOptions& options, vtkSmartPointer<vtkImageData>& relief,
+  vtkSmartPointer<vtkTexture>& albedo, std::string& error)
+{
+  vtkNew<ErrorCollector> errors;
+  vtkNew<vtkReliefTextureFilter> bake;
+  bake->AddObserver(vtkCommand::ErrorEvent, errors);
+  bake->SetDepthScale(options.DepthScale);
+  vtkNew<vtkProceduralReliefSource> source;
+  source->AddObserver(vtkCommand::ErrorEvent, errors);
+  vtkNew<vtkOIIOImageReader> reader;
+  reader->AddObserver(vtkCommand::ErrorEvent, errors);
+
+  albedo = vtkSmartPointer<vtkTexture>::New();
+  albedo->InterpolateOn();
+  albedo->MipmapOn();
+  albedo->RepeatOff();
+  albedo->EdgeClampOn();
+
+  if (!options.DepthFile.empty())
+  {
+    reader->SetFileName(options.DepthFile.c_str());
+    bake->SetInputConnection(reader->GetOutputPort());
+    bake->SetInvertInput(options.DepthFileIsHeight);
+    // A depth file comes without colour: a light grey albedo shows the relief itself.
+    vtkNew<vtkImageData> grey;
+    grey->SetDimensions(1, 1, 1);
+    grey->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+    auto* px = static_cast<unsigned char*>(grey->GetScalarPointer());
+    px[0] = px[1] = px[2] = 200;
+    albedo->SetInputData(grey);
+  }
+  else
+  {
+    if (!source->SetPatternByName(options.Pattern.c_str()))
+    {
+      error = "unknown pattern '" + options.Pattern + "'";
+      return false;
+    }
+    source->SetResolution(options.Resolution, options.Resolution);
+    bake->SetInputConnection(source->GetOutputPort(0));
+    source->Update();
+    vtkNew<vtkImageData> albedoImage;
+    albedoImage->DeepCopy(source->GetOutput(1));
+    albedo->SetInputData(albedoImage);
+  }
+  bake->Update();
+  if (!errors->Messages.empty() || !bake->GetOutput() ||
+    bake->GetOutput()->GetNumberOfPoints() == 0)
+  {
+    error = errors->Messages.empty() ? "could not bake the relief texture" : errors->Messages;
+    return false;
+  }
+  relief = vtkSmartPointer<vtkImageData>::New();
+  relief->DeepCopy(bake->GetOutput());
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void SetupCameraAndLights(const ReliefSceneOptions& options, vtkRenderer* renderer)
+{
+  // Aim at the wall's centre from ViewAngle off its normal, turned by ViewAzimuth about it.
+  const double height = 1.0; // scenes are square unless a file says otherwise: close enough
+  const double centre[3] = { 0.5, 0.5 * height, 0.0 };
+  const double a = vtkMath::RadiansFromDegrees(options.ViewAngle);
+  const double b = vtkMath::RadiansFromDegrees(options.ViewAzimuth);
+  const double d = options.ViewDistance;
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->SetFocalPoint(centre);
+  camera->SetPosition(centre[0] + d * std::sin(a) * std::sin(b),
+    centre[1] - d * std::sin(a) * std::cos(b), centre[2] + d * std::cos(a));
+  camera->SetViewUp(0.0, 0.0, 1.0);
+  if (options.ViewAngle < 1.0)
+  {
+    camera->SetViewUp(0.0, 1.0, 0.0);
+  }
+  camera->SetViewAngle(30.0);
+  // The same clipping range for every variant, so depth buffers compare.
+  camera->SetClippingRange(0.25 * d, 2.5 * d);
+
+  renderer->RemoveAllLights();
+  renderer->AutomaticLightCreationOff();
+  const double e = vtkMath::RadiansFromDegrees(options.LightElevation);
+  vtkNew<vtkLight> key;
+  key->SetLightTypeToSceneLight();
+  key->PositionalOff();
+  key->SetFocalPoint(centre);
+  key->SetPosition(centre[0] - std::cos(e) * 0.8, centre[1] + std::cos(e) * 0.6, std::sin(e));
+  key->SetColor(1.0, 0.96, 0.9);
+  key->SetIntensity(1.0);
+  renderer->AddLight(key);
+  if (options.Lights > 1)
+  {
+    vtkNew<vtkLight> fill;
+    fill->SetLightTypeToSceneLight();
+    fill->PositionalOff();
+    fill->SetFocalPoint(centre);
+    fill->SetPosition(centre[0] + 0.5, centre[1] - 0.7, 0.9);
+    fill->SetColor(0.75, 0.85, 1.0);
+    fill->SetIntensity(0.3);
+    renderer->AddLight(fill);
+  }
+  renderer->SetBackground(0.08, 0.09, 0.11);
+}
+
+//------------------------------------------------------------------------------
+bool BuildReliefScene(const ReliefSceneOptions& options, ReliefScene& scene, std::string& error)
+{
+  if (!BuildReliefTextures(options, scene.ReliefTexture, scene.Albedo, error))
+  {
+    return false;
+  }
+  scene.Mapper = vtkSmartPointer<vtkReliefMapper>::New();
+  scene.Mapper->SetInputData(MakeWall(scene.ReliefTexture));
+  scene.Mapper->SetReliefTextureData(scene.ReliefTexture);
+  if (!scene.Mapper->SetMethodByName(options.Method.c_str()))
+  {
+    error = "unknown method '" + options.Method + "'";
+    return false;
+  }
+  scene.Mapper->SetDepthScale(options.DepthScale);
+  scene.Mapper->SetLinearSteps(options.LinearSteps);
+  scene.Mapper->SetRefinementSteps(options.RefinementSteps);
+  scene.Mapper->SetSelfShadowing(options.SelfShadowing);
+  scene.Mapper->SetSilhouettes(options.Silhouettes);
+  scene.Mapper->SetWriteDepth(options.WriteDepth);
+
+  scene.Actor = vtkSmartPointer<vtkActor>::New();
+  scene.Actor->SetMapper(scene.Mapper);
+  scene.Actor->SetTexture(scene.Albedo);
+  ApplyMaterial(scene.Actor);
+  scene.Renderer = vtkSmartPointer<vtkRenderer>::New();
+  scene.Renderer->AddActor(scene.Actor);
+  SetupCameraAndLights(options, scene.Renderer);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool BuildDenseReferenceScene(
+  const ReliefSceneOptions& options, ReliefScene& scene, std::string& error)
+{
+  if (!BuildReliefTextures(options, scene.ReliefTexture, scene.Albedo, error))
+  {
+    return false;
+  }
+  vtkNew<vtkHeightFieldMeshFilter> dense;
+  dense->SetInputData(scene.ReliefTexture);
+  dense->SetOrigin(0.0, 0.0, 0.0);
+  dense->SetPoint1(1.0, 0.0, 0.0);
+  dense->SetPoint2(0.0, WallHeight(scene.ReliefTexture), 0.0);
+  dense->UseInputDepthScaleOff();
+  dense->SetDepthScale(options.DepthScale);
+  dense->Update();
+
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(dense->GetOutputPort());
+  mapper->ScalarVisibilityOff();
+  scene.Mapper = nullptr;
+  scene.Actor = vtkSmartPointer<vtkActor>::New();
+  scene.Actor->SetMapper(mapper);
+  scene.Actor->SetTexture(scene.Albedo);
+  ApplyMaterial(scene.Actor);
+  scene.Renderer = vtkSmartPointer<vtkRenderer>::New();
+  scene.Renderer->AddActor(scene.Actor);
+  SetupCameraAndLights(options, scene.Renderer);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool BuildTexturedPlaneScene(
+  const ReliefSceneOptions& options, ReliefScene& scene, std::string& error)
+{
+  if (!BuildReliefTextures(options, scene.ReliefTexture, scene.Albedo, error))
+  {
+    return false;
+  }
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputData(MakeWall(scene.ReliefTexture));
+  scene.Mapper = nullptr;
+  scene.Actor = vtkSmartPointer<vtkActor>::New();
+  scene.Actor->SetMapper(mapper);
+  scene.Actor->SetTexture(scene.Albedo);
+  ApplyMaterial(scene.Actor);
+  scene.Renderer = vtkSmartPointer<vtkRenderer>::New();
+  scene.Renderer->AddActor(scene.Actor);
+  SetupCameraAndLights(options, scene.Renderer);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkRenderWindow> MakeOffscreenWindow(
+  const ReliefSceneOptions& options, vtkRenderer* renderer)
+{
+  auto window = vtkSmartPointer<vtkRenderWindow>::New();
+  window->SetOffScreenRendering(1);
+  window->SetMultiSamples(0);
+  window->SetSize(options.Width, options.Height);
+  window->AddRenderer(renderer);
+  return window;
+}
+
+//------------------------------------------------------------------------------
+bool HasDisplay()
+{
+  const char* display = std::getenv("DISPLAY");
+  return display && display[0] != '\0';
+}
+
+} // namespace mesolight

@@ -1,0 +1,87 @@
+// The default relief scene of the `mesolight` tool, and its independent reference.
+//
+// One description (ReliefSceneOptions) builds two renderings of the same height field:
+//  - the relief surface: a coarse plane drawn by vtkReliefMapper with a relief texture;
+//  - the dense reference: one vertex per texel (vtkHeightFieldMeshFilter) drawn by VTK's stock
+//    mapper with the same albedo texture, normals, lights and camera.
+// The tool renders the first; tests and benchmarks compare the two.
+#ifndef mesolight_ReliefScene_h
+#define mesolight_ReliefScene_h
+
+#include "vtkReliefMapper.h"
+
+#include <vtkActor.h>
+#include <vtkImageData.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+#include <vtkSmartPointer.h>
+#include <vtkTexture.h>
+
+#include <string>
+
+namespace mesolight
+{
+
+struct ReliefSceneOptions
+{
+  std::string Pattern = "Bricks"; // vtkProceduralReliefSource pattern name
+  std::string DepthFile;          // a depth image instead of the procedural pattern
+  bool DepthFileIsHeight = false; // the file stores height (white = high), not depth
+  int Resolution = 512;           // texels per side of the procedural map
+  double DepthScale = 0.04;       // world depth of depth 1 / world width of the wall
+  std::string Method = "relief";  // vtkReliefMapper::SetMethodByName
+  int LinearSteps = 10;
+  int RefinementSteps = 8;
+  bool SelfShadowing = true;
+  bool Silhouettes = true;
+  bool WriteDepth = true;
+  int Width = 800;
+  int Height = 800;
+  double ViewAngle = 55.0; // camera angle from the wall's normal, degrees
+  double ViewAzimuth = 20.0;
+  double ViewDistance = 2.2; // in wall widths
+  int Lights = 2;            // 1: key light; 2: key + fill
+  double LightElevation = 35.0; // key light elevation above the wall, degrees
+};
+
+/** The pieces of a built scene, for callers that change them interactively. */
+struct ReliefScene
+{
+  vtkSmartPointer<vtkRenderer> Renderer;
+  vtkSmartPointer<vtkActor> Actor;
+  vtkSmartPointer<vtkReliefMapper> Mapper;          // null for the dense reference
+  vtkSmartPointer<vtkImageData> ReliefTexture;      // normal + depth, as uploaded
+  vtkSmartPointer<vtkTexture> Albedo;
+};
+
+/**
+ * Builds the relief texture and albedo described by the options. Returns false and fills error
+ * when the depth file cannot be read or the texture cannot be baked.
+ */
+bool BuildReliefTextures(const ReliefSceneOptions& options, vtkSmartPointer<vtkImageData>& relief,
+  vtkSmartPointer<vtkTexture>& albedo, std::string& error);
+
+/** The relief scene: a coarse plane with vtkReliefMapper. */
+bool BuildReliefScene(const ReliefSceneOptions& options, ReliefScene& scene, std::string& error);
+
+/** The same scene as a dense displaced mesh drawn by the stock mapper (the reference). */
+bool BuildDenseReferenceScene(
+  const ReliefSceneOptions& options, ReliefScene& scene, std::string& error);
+
+/** The same scene as a plain textured plane (stock mapper, no relief): the cheapest baseline. */
+bool BuildTexturedPlaneScene(
+  const ReliefSceneOptions& options, ReliefScene& scene, std::string& error);
+
+/** Places camera and lights as the options say; every scene variant uses this. */
+void SetupCameraAndLights(const ReliefSceneOptions& options, vtkRenderer* renderer);
+
+/** An offscreen window of the options' size holding the renderer. */
+vtkSmartPointer<vtkRenderWindow> MakeOffscreenWindow(
+  const ReliefSceneOptions& options, vtkRenderer* renderer);
+
+/** Whether an X display is available for an interactive window. */
+bool HasDisplay();
+
+} // namespace mesolight
+
+#endif

@@ -1,0 +1,433 @@
+// mesolight: render, bake and benchmark relief surfaces from the command line.
+//
+//   mesolight render [options]                 the default scene (procedural brick wall) to PNG,
+//                                              and an interactive window when a display exists
+//   mesolight bake DEPTH_IMAGE --out RELIEF    a relief texture (normal RGB + depth A)
+//   mesolight bench [options]                  time and error of relief vs the dense reference
+#include "CommandLine.h"
+#include "ImageCompare.h"
+#include "ReliefBenchmark.h"
+#include "ReliefScene.h"
+
+#include "vtkOIIOImageReader.h"
+#include "vtkOIIOImageWriter.h"
+#include "vtkReliefMapper.h"
+#include "vtkReliefTextureFilter.h"
+
+#include <vtkActor.h>
+#include <vtkCallbackCommand.h>
+#include <vtkCommand.h>
+#include <vtkImageData.h>
+#include <vtkInteractorStyleTrackballCamera.h>
+#include <vtkNew.h>
+#include <vtkObjectFactory.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderWindowInteractor.h>
+#include <vtkRenderer.h>
+#include <vtkTextActor.h>
+#include <vtkTextProperty.h>
+
+#include <cstdio>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <sys/stat.h>
+#include <vector>
+
+namespace
+{
+using mesolight::CommandLine;
+using mesolight::ReliefSceneOptions;
+
+const char* const Usage = R"(mesolight - relief surfaces for VTK
+
+Usage:
+  mesolight render [options]                   render the default relief scene
+  mesolight bake DEPTH_IMAGE --out RELIEF_IMAGE [options]
+                                               bake a relief texture from a depth image
+  mesolight bench [options]                    time and error of each rendering path
+  mesolight help [COMMAND]                     this text, or one command's options
+
+Run 'mesolight COMMAND --help' for the options of a command.
+)";
+
+// Options shared by every command that builds the relief scene.
+void AddSceneOptions(CommandLine& cl)
+{
+  cl.AddValue("--pattern", "NAME", "procedural map: Bricks, Stone, HemisphereTorus, Flat, SineWave", "Bricks");
+  cl.AddValue("--depth-file", "IMAGE", "use this depth image (any OpenImageIO format) instead");
+  cl.AddFlag("--height", "the depth image stores height (white = high) rather than depth");
+  cl.AddValue("--resolution", "N", "texels per side of the procedural map", "512");
+  cl.AddValue("--depth-scale", "K", "relief depth as a fraction of the wall width", "0.04");
+  cl.AddValue("--method", "NAME", "relief (linear+binary), pom, steep, texture", "relief");
+  cl.AddValue("--linear-steps", "N", "linear search steps", "10");
+  cl.AddValue("--refinement-steps", "N", "binary search steps (relief)", "8");
+  cl.AddFlag("--no-shadows", "no self-shadowing");
+  cl.AddFlag("--no-silhouettes", "keep fragments whose hit leaves the texture");
+  cl.AddFlag("--no-depth-write", "keep the mesh depth instead of the hit depth");
+  cl.AddValue("--size", "WxH", "image size in pixels", "800x800");
+  cl.AddValue("--view-angle", "DEG", "camera angle from the wall normal", "55");
+  cl.AddValue("--azimuth", "DEG", "camera turn about the wall normal", "20");
+  cl.AddValue("--lights", "N", "1 = key light, 2 = key + fill", "2");
+  cl.AddValue("--light-elevation", "DEG", "key light elevation above the wall", "35");
+}
+
+bool ReadSceneOptions(const CommandLine& cl, ReliefSceneOptions& o, std::string& error)
+{
+  o.Pattern = cl.Get("--pattern");
+  o.DepthFile = cl.Get("--depth-file");
+  o.DepthFileIsHeight = cl.Has("--height");
+  o.Method = cl.Get("--method");
+  o.SelfShadowing = !cl.Has("--no-shadows");
+  o.Silhouettes = !cl.Has("--no-silhouettes");
+  o.WriteDepth = !cl.Has("--no-depth-write");
+  if (!cl.GetInt("--resolution", 1, 16384, o.Resolution, error) ||
+    !cl.GetDouble("--depth-scale", 0.0, 10.0, o.DepthScale, error) ||
+    !cl.GetInt("--linear-steps", 1, 1024, o.LinearSteps, error) ||
+    !cl.GetInt("--refinement-steps", 0, 64, o.RefinementSteps, error) ||
+    !cl.GetDouble("--view-angle", 0.0, 89.9, o.ViewAngle, error) ||
+    !cl.GetDouble("--azimuth", -360.0, 360.0, o.ViewAzimuth, error) ||
+    !cl.GetInt("--lights", 1, 2, o.Lights, error) ||
+    !cl.GetDouble("--light-elevation", 0.0, 90.0, o.LightElevation, error))
+  {
+    return false;
+  }
+  const std::string size = cl.Get("--size");
+  int w = 0, h = 0;
+  char x = 0;
+  std::istringstream in(size);
+  if (!(in >> w >> x >> h) || x != 'x' || w < 16 || h < 16 || w > 8192 || h > 8192)
+  {
+    error = "option --size: '" + size + "' is not WxH with 16 <= W, H <= 8192";
+    return false;
+  }
+  o.Width = w;
+  o.Height = h;
+  return true;
+}
+
+bool SameFile(const std::string& a, const std::string& b)
+{
+  struct stat sa, sb;
+  if (stat(a.c_str(), &sa) != 0 || stat(b.c_str(), &sb) != 0)
+  {
+    return false;
+  }
+  return sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
+}
+
+// Interactive keys on top of the trackball camera; VTK's own keys keep working.
+class ReliefInteractorStyle : public vtkInteractorStyleTrackballCamera
+{
+public:
+  static ReliefInteractorStyle* New();
+  vtkTypeMacro(ReliefInteractorStyle, vtkInteractorStyleTrackballCamera);
+
+  vtkReliefMapper* Mapper = nullptr;
+  vtkTextActor* Status = nullptr;
+
+  void OnChar() override
+  {
+    vtkRenderWindowInteractor* rwi = this->Interactor;
+    const char key = rwi->GetKeyCode();
+    vtkReliefMapper* m = this->Mapper;
+    switch (key)
+    {
+      case 'm':
+        m->SetMethod((m->GetMethod() + 1) % vtkReliefMapper::NumberOfMethods);
+        break;
+      case '+':
+      case '=':
+        m->SetLinearSteps(m->GetLinearSteps() + 2);
+        break;
+      case '-':
+        m->SetLinearSteps(m->GetLinearSteps() - 2);
+        break;
+      case ']':
+        m->SetDepthScale(m->GetDepthScale() * 1.25);
+        break;
+      case '[':
+        m->SetDepthScale(m->GetDepthScale() / 1.25);
+        break;
+      case 'x':
+        m->SetSelfShadowing(!m->GetSelfShadowing());
+        break;
+      case 'o':
+        m->SetSilhouettes(!m->GetSilhouettes());
+        break;
+      case 'z':
+        m->SetWriteDepth(!m->GetWriteDepth());
+        break;
+      default:
+        this->Superclass::OnChar();
+        return;
+    }
+    this->UpdateStatus();
+    rwi->Render();
+  }
+
+  void UpdateStatus()
+  {
+    std::ostringstream text;
+    text << "method " << vtkReliefMapper::GetMethodName(this->Mapper->GetMethod()) << " [m]   steps "
+         << this->Mapper->GetLinearSteps() << "+" << this->Mapper->GetRefinementSteps()
+         << " [+/-]   depth " << this->Mapper->GetDepthScale() << " [ [ ] ]\nshadows "
+         << (this->Mapper->GetSelfShadowing() ? "on" : "off") << " [x]   silhouettes "
+         << (this->Mapper->GetSilhouettes() ? "on" : "off") << " [o]   depth write "
+         << (this->Mapper->GetWriteDepth() ? "on" : "off") << " [z]   quit [q]";
+    this->Status->SetInput(text.str().c_str());
+  }
+};
+vtkStandardNewMacro(ReliefInteractorStyle);
+
+int RunRender(const std::vector<std::string>& args)
+{
+  CommandLine cl;
+  AddSceneOptions(cl);
+  cl.AddValue("--out", "FILE", "PNG to write", "mesolight-render.png");
+  cl.AddFlag("--offscreen", "only write the PNG, never open a window");
+  cl.AddFlag("--help", "show this help");
+  std::string error;
+  ReliefSceneOptions options;
+  if (!cl.Parse(args, error) || !ReadSceneOptions(cl, options, error))
+  {
+    std::cerr << "mesolight render: " << error << "\n";
+    return 2;
+  }
+  if (cl.Has("--help"))
+  {
+    std::cout << "mesolight render [options]\n\nRenders the default relief scene (a procedural brick "
+                 "wall, two lights, an oblique camera)\nto a PNG, then opens an interactive window "
+                 "when a display is available.\nKeys: m method, +/- steps, [ ] depth, x shadows, o "
+                 "silhouettes, z depth write, q quit.\n\nOptions:\n";
+    cl.PrintOptions(std::cout);
+    return 0;
+  }
+  if (!cl.Positional().empty())
+  {
+    std::cerr << "mesolight render: unexpected argument '" << cl.Positional()[0] << "'\n";
+    return 2;
+  }
+  const std::string out = cl.Get("--out");
+  if (!options.DepthFile.empty() && SameFile(out, options.DepthFile))
+  {
+    std::cerr << "mesolight render: --out would overwrite the input " << options.DepthFile << "\n";
+    return 2;
+  }
+
+  mesolight::ReliefScene scene;
+  if (!mesolight::BuildReliefScene(options, scene, error))
+  {
+    std::cerr << "mesolight render: " << error << "\n";
+    return 1;
+  }
+  auto window = mesolight::MakeOffscreenWindow(options, scene.Renderer);
+  mesolight::Frame frame = mesolight::CaptureFrame(window);
+  if (!mesolight::WritePng(frame, out.c_str()))
+  {
+    std::cerr << "mesolight render: could not write " << out << "\n";
+    return 1;
+  }
+  std::cout << "wrote " << out << " (" << options.Width << "x" << options.Height << ", method "
+            << options.Method << ")\n";
+  if (cl.Has("--offscreen") || !mesolight::HasDisplay())
+  {
+    return 0;
+  }
+  window->RemoveRenderer(scene.Renderer);
+  window = nullptr;
+
+  vtkNew<vtkRenderWindow> onscreen;
+  onscreen->SetSize(options.Width, options.Height);
+  onscreen->SetWindowName("mesolight");
+  onscreen->AddRenderer(scene.Renderer);
+  vtkNew<vtkTextActor> status;
+  status->GetTextProperty()->SetFontSize(14);
+  status->GetTextProperty()->SetColor(0.9, 0.9, 0.9);
+  status->SetPosition(8, 8);
+  scene.Renderer->AddViewProp(status);
+  vtkNew<vtkRenderWindowInteractor> interactor;
+  vtkNew<ReliefInteractorStyle> style;
+  style->Mapper = scene.Mapper;
+  style->Status = status;
+  style->UpdateStatus();
+  interactor->SetInteractorStyle(style);
+  interactor->SetRenderWindow(onscreen);
+  onscreen->Render();
+  scene.Renderer->ResetCameraClippingRange();
+  interactor->Start();
+  return 0;
+}
+
+int RunBake(const std::vector<std::string>& args)
+{
+  CommandLine cl;
+  cl.AddValue("--out", "RELIEF_IMAGE", "relief texture to write (.exr/.tif float, .png 8/16-bit)");
+  cl.AddValue("--depth-scale", "K", "relief depth as a fraction of the texture width", "0.04");
+  cl.AddValue("--border", "MODE", "clamp or wrap (tiling maps)", "clamp");
+  cl.AddFlag("--height", "the input stores height (white = high) rather than depth");
+  cl.AddFlag("--normalize", "stretch the input's value range to [0, 1]");
+  cl.AddValue("--bits", "N", "8 or 16 bits per channel for PNG/TIFF output", "8");
+  cl.AddFlag("--help", "show this help");
+  std::string error;
+  if (!cl.Parse(args, error))
+  {
+    std::cerr << "mesolight bake: " << error << "\n";
+    return 2;
+  }
+  if (cl.Has("--help"))
+  {
+    std::cout << "mesolight bake DEPTH_IMAGE --out RELIEF_IMAGE [options]\n\nBakes a relief "
+                 "texture: Sobel normals (packed (n+1)/2) in RGB, depth in A\n(0 = top, 1 = "
+                 "deepest).\n\nOptions:\n";
+    cl.PrintOptions(std::cout);
+    return 0;
+  }
+  if (cl.Positional().size() != 1 || !cl.Has("--out"))
+  {
+    std::cerr << "mesolight bake: usage: mesolight bake DEPTH_IMAGE --out RELIEF_IMAGE\n";
+    return 2;
+  }
+  const std::string in = cl.Positional()[0];
+  const std::string out = cl.Get("--out");
+  double depthScale = 0.04;
+  int bits = 8;
+  if (!cl.GetDouble("--depth-scale", 0.0, 100.0, depthScale, error) ||
+    !cl.GetInt("--bits", 8, 16, bits, error))
+  {
+    std::cerr << "mesolight bake: " << error << "\n";
+    return 2;
+  }
+  if (bits != 8 && bits != 16)
+  {
+    std::cerr << "mesolight bake: --bits must be 8 or 16\n";
+    return 2;
+  }
+  const std::string border = cl.Get("--border");
+  if (border != "clamp" && border != "wrap")
+  {
+    std::cerr << "mesolight bake: --border must be clamp or wrap\n";
+    return 2;
+  }
+  if (out == in || SameFile(out, in))
+  {
+    std::cerr << "mesolight bake: --out must differ from the input\n";
+    return 2;
+  }
+
+  vtkNew<vtkOIIOImageReader> reader;
+  reader->SetFileName(in.c_str());
+  vtkNew<vtkReliefTextureFilter> bake;
+  bake->SetInputConnection(reader->GetOutputPort());
+  bake->SetDepthScale(depthScale);
+  bake->SetInvertInput(cl.Has("--height"));
+  bake->SetNormalizeRange(cl.Has("--normalize"));
+  if (border == "wrap")
+  {
+    bake->SetBorderModeToWrap();
+  }
+  else
+  {
+    bake->SetBorderModeToClamp();
+  }
+  vtkNew<vtkOIIOImageWriter> writer;
+  writer->SetInputConnection(bake->GetOutputPort());
+  writer->SetFileName(out.c_str());
+  writer->SetBitDepth(bits);
+  // Errors from any stage are reported by VTK on stderr; the exit code tells the caller.
+  bake->Update();
+  if (bake->GetOutput()->GetNumberOfPoints() == 0 || reader->GetErrorCode() != 0)
+  {
+    std::cerr << "mesolight bake: could not bake " << in << "\n";
+    return 1;
+  }
+  if (!writer->Write())
+  {
+    std::cerr << "mesolight bake: could not write " << out << "\n";
+    return 1;
+  }
+  int dims[3];
+  bake->GetOutput()->GetDimensions(dims);
+  std::cout << "wrote " << out << " (" << dims[0] << "x" << dims[1] << " relief texture, depth scale "
+            << depthScale << ")\n";
+  return 0;
+}
+
+int RunBench(const std::vector<std::string>& args)
+{
+  CommandLine cl;
+  AddSceneOptions(cl);
+  cl.AddValue("--sizes", "N,N,..", "relief map resolutions to measure", "512,1024");
+  cl.AddValue("--frames", "N", "timed frames per configuration (median reported)", "20");
+  cl.AddValue("--csv", "FILE", "also write the table as CSV");
+  cl.AddFlag("--help", "show this help");
+  std::string error;
+  ReliefSceneOptions options;
+  if (!cl.Parse(args, error) || !ReadSceneOptions(cl, options, error))
+  {
+    std::cerr << "mesolight bench: " << error << "\n";
+    return 2;
+  }
+  if (cl.Has("--help"))
+  {
+    std::cout << "mesolight bench [options]\n\nMeasures ms/frame of a stock textured plane, relief "
+                 "mapping, parallax occlusion mapping\nand the dense displaced mesh, and the error "
+                 "of each against the dense mesh.\n\nOptions:\n";
+    cl.PrintOptions(std::cout);
+    return 0;
+  }
+  mesolight::BenchmarkSettings settings;
+  settings.Scene = options;
+  if (!cl.GetInt("--frames", 1, 10000, settings.Frames, error))
+  {
+    std::cerr << "mesolight bench: " << error << "\n";
+    return 2;
+  }
+  std::istringstream sizes(cl.Get("--sizes"));
+  std::string item;
+  while (std::getline(sizes, item, ','))
+  {
+    const int n = std::atoi(item.c_str());
+    if (n < 2 || n > 8192)
+    {
+      std::cerr << "mesolight bench: bad size '" << item << "' in --sizes\n";
+      return 2;
+    }
+    settings.Resolutions.push_back(n);
+  }
+  settings.CsvFile = cl.Get("--csv");
+  return mesolight::RunReliefBenchmark(settings, std::cout) ? 0 : 1;
+}
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  std::vector<std::string> args(argv + 1, argv + argc);
+  if (args.empty() || args[0] == "--help" || args[0] == "-h" ||
+    (args[0] == "help" && args.size() == 1))
+  {
+    std::cout << Usage;
+    return args.empty() ? 2 : 0;
+  }
+  std::string command = args[0];
+  args.erase(args.begin());
+  if (command == "help")
+  {
+    command = args[0];
+    args = { "--help" };
+  }
+  if (command == "render")
+  {
+    return RunRender(args);
+  }
+  if (command == "bake")
+  {
+    return RunBake(args);
+  }
+  if (command == "bench")
+  {
+    return RunBench(args);
+  }
+  std::cerr << "mesolight: unknown command '" << command << "'\n" << Usage;
+  return 2;
+}

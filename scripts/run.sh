@@ -1,0 +1,13 @@
+#!/usr/bin/env bash
+# The main job: set up (packages, build), then render the default relief scene to
+# mesolight-render.png. With a display it also opens an interactive window; without one it
+# renders offscreen under Xvfb (Mesa llvmpipe). Extra arguments go to `mesolight render`.
+set -euo pipefail
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+build="${MESOLIGHT_BUILD_DIR:-$here/build}"
+bash "$here/scripts/setup.sh"
+
+if [ -n "${DISPLAY:-}" ]; then
+  exec "$build/bin/mesolight" render "$@"
+fi
+exec xvfb-run -a -s "-screen 0 1280x1024x24" "$build/bin/mesolight" render --offscreen "$@"

@@ -1,0 +1,220 @@
+// Bad input reaches the user as a clear VTK error, never as a crash or garbage pixels.
+#include "ImageCompare.h"
+#include "ReliefScene.h"
+#include "TestReliefTestUtilities.h"
+#include "vtkOIIOImageReader.h"
+#include "vtkReliefMapper.h"
+#include "vtkReliefTextureFilter.h"
+
+#include <vtkActor.h>
+#include <vtkCamera.h>
+#include <vtkCellArray.h>
+#include <vtkFloatArray.h>
+#include <vtkImageData.h>
+#include <vtkLight.h>
+#include <vtkNew.h>
+#include <vtkPlaneSource.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <limits>
+
+namespace
+{
+using namespace mesolight;
+
+// Draws polydata with a relief mapper in a small offscreen window; returns the frame.
+Frame DrawWithRelief(vtkReliefMapper* mapper, vtkPolyData* mesh)
+{
+  mapper->SetInputData(mesh);
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  vtkNew<vtkRenderer> renderer;
+  renderer->AddActor(actor);
+  vtkNew<vtkLight> light;
+  light->SetLightTypeToSceneLight();
+  light->SetPosition(0.3, -0.5, 1.0);
+  renderer->AddLight(light);
+  renderer->GetActiveCamera()->SetPosition(0.0, -1.0, 1.5);
+  renderer->GetActiveCamera()->SetFocalPoint(0.0, 0.0, 0.0);
+  renderer->GetActiveCamera()->SetClippingRange(0.1, 10.0);
+  ReliefSceneOptions size;
+  size.Width = size.Height = 96;
+  auto window = MakeOffscreenWindow(size, renderer);
+  return CaptureFrame(window);
+}
+
+vtkSmartPointer<vtkPolyData> PlaneWithTCoords()
+{
+  vtkNew<vtkPlaneSource> plane;
+  plane->Update();
+  auto mesh = vtkSmartPointer<vtkPolyData>::New();
+  mesh->DeepCopy(plane->GetOutput());
+  return mesh;
+}
+
+vtkSmartPointer<vtkImageData> SmallRelief()
+{
+  return test::BakeRelief(
+    test::MakeDepthMap(16, 16, [](double u, double v) { return 0.5 + 0.4 * std::sin(9 * u) * v; }),
+    0.05);
+}
+
+long long CoveredPixels(const Frame& frame)
+{
+  long long n = 0;
+  for (size_t p = 0; p < frame.Depth.size(); ++p)
+  {
+    n += frame.Covered(p) ? 1 : 0;
+  }
+  return n;
+}
+} // namespace
+
+TEST(ReliefBadInput, MissingTextureCoordinatesIsAnError)
+{
+  auto mesh = PlaneWithTCoords();
+  mesh->GetPointData()->SetTCoords(nullptr);
+  vtkNew<vtkReliefMapper> mapper;
+  mapper->SetReliefTextureData(SmallRelief());
+  vtkNew<test::MessageRecorder> messages;
+  messages->Watch(mapper);
+  const Frame frame = DrawWithRelief(mapper, mesh);
+  EXPECT_NE(messages->Errors.find("texture coordinates"), std::string::npos) << messages->Errors;
+  EXPECT_EQ(CoveredPixels(frame), 0);
+}
+
+TEST(ReliefBadInput, MissingReliefTextureIsAnError)
+{
+  vtkNew<vtkReliefMapper> mapper;
+  vtkNew<test::MessageRecorder> messages;
+  messages->Watch(mapper);
+  DrawWithRelief(mapper, PlaneWithTCoords());
+  EXPECT_NE(messages->Errors.find("No relief texture"), std::string::npos) << messages->Errors;
+}
+
+TEST(ReliefBadInput, ReliefTextureWithoutFourComponentsIsAnError)
+{
+  auto depthOnly = test::MakeDepthMap(8, 8, [](double, double) { return 0.5; });
+  vtkNew<vtkReliefMapper> mapper;
+  mapper->SetReliefTextureData(depthOnly);
+  vtkNew<test::MessageRecorder> messages;
+  messages->Watch(mapper);
+  DrawWithRelief(mapper, PlaneWithTCoords());
+  EXPECT_NE(messages->Errors.find("4 components"), std::string::npos) << messages->Errors;
+}
+
+TEST(ReliefBadInput, NaNDepthIsRejectedByTheBake)
+{
+  auto depth = test::MakeDepthMap(16, 16, [](double u, double v) {
+    return (u > 0.5 && v > 0.5) ? std::numeric_limits<double>::quiet_NaN() : 0.5;
+  });
+  vtkNew<vtkReliefTextureFilter> bake;
+  bake->SetInputData(depth);
+  vtkNew<test::MessageRecorder> messages;
+  messages->Watch(bake);
+  bake->Update();
+  EXPECT_FALSE(messages->Errors.empty());
+}
+
+TEST(ReliefBadInput, NaNInTheReliefTextureIsRejectedByTheMapper)
+{
+  auto relief = SmallRelief();
+  relief->GetPointData()->GetScalars()->SetComponent(5, 3, std::nan(""));
+  vtkNew<vtkReliefMapper> mapper;
+  mapper->SetReliefTextureData(relief);
+  vtkNew<test::MessageRecorder> messages;
+  messages->Watch(mapper);
+  const Frame frame = DrawWithRelief(mapper, PlaneWithTCoords());
+  EXPECT_NE(messages->Errors.find("non-finite"), std::string::npos) << messages->Errors;
+  EXPECT_EQ(CoveredPixels(frame), 0);
+}
+
+TEST(ReliefBadInput, OneByOneDepthMapRendersFlat)
+{
+  auto depth = test::MakeDepthMap(1, 1, [](double, double) { return 0.3; });
+  vtkNew<vtkReliefTextureFilter> bake;
+  bake->SetInputData(depth);
+  vtkNew<test::MessageRecorder> bakeMessages;
+  bakeMessages->Watch(bake);
+  bake->Update();
+  EXPECT_TRUE(bakeMessages->Errors.empty()) << bakeMessages->Errors;
+  EXPECT_FALSE(bakeMessages->Warnings.empty()) << "a 1x1 map should be flagged";
+  vtkNew<vtkReliefMapper> mapper;
+  mapper->SetReliefTextureConnection(bake->GetOutputPort());
+  vtkNew<test::MessageRecorder> messages;
+  messages->Watch(mapper);
+  const Frame frame = DrawWithRelief(mapper, PlaneWithTCoords());
+  EXPECT_TRUE(messages->Errors.empty()) << messages->Errors;
+  EXPECT_GT(CoveredPixels(frame), 100);
+}
+
+TEST(ReliefBadInput, DegenerateTrianglesRenderWithoutErrors)
+{
+  // Two good triangles, one with zero area and one whose texture coordinates coincide.
+  vtkNew<vtkPoints> points;
+  points->InsertNextPoint(-0.5, -0.5, 0);
+  points->InsertNextPoint(0.5, -0.5, 0);
+  points->InsertNextPoint(0.5, 0.5, 0);
+  points->InsertNextPoint(-0.5, 0.5, 0);
+  points->InsertNextPoint(0.0, 0.0, 0);
+  vtkNew<vtkFloatArray> tcoords;
+  tcoords->SetNumberOfComponents(2);
+  const float uv[5][2] = { { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 }, { 1, 1 } };
+  for (const auto& t : uv)
+  {
+    tcoords->InsertNextTypedTuple(t);
+  }
+  vtkNew<vtkCellArray> polys;
+  const vtkIdType tris[4][3] = { { 0, 1, 2 }, { 0, 2, 3 }, { 0, 0, 1 }, { 2, 4, 2 } };
+  for (const auto& t : tris)
+  {
+    polys->InsertNextCell(3, t);
+  }
+  vtkNew<vtkPolyData> mesh;
+  mesh->SetPoints(points);
+  mesh->SetPolys(polys);
+  mesh->GetPointData()->SetTCoords(tcoords);
+  vtkNew<vtkReliefMapper> mapper;
+  mapper->SetReliefTextureData(SmallRelief());
+  vtkNew<test::MessageRecorder> messages;
+  messages->Watch(mapper);
+  const Frame frame = DrawWithRelief(mapper, mesh);
+  EXPECT_TRUE(messages->Errors.empty()) << messages->Errors;
+  EXPECT_GT(CoveredPixels(frame), 100);
+  vtkDataArray* tangents = mapper->GetPreparedInput()->GetPointData()->GetTangents();
+  ASSERT_NE(tangents, nullptr);
+  for (vtkIdType i = 0; i < tangents->GetNumberOfTuples(); ++i)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      EXPECT_TRUE(std::isfinite(tangents->GetComponent(i, c)));
+    }
+  }
+}
+
+TEST(ReliefBadInput, UnreadableFilesAreErrors)
+{
+  const std::string garbage = test::OutputPath("garbage.png");
+  {
+    std::ofstream out(garbage, std::ios::binary);
+    out << "this is not a PNG file at all";
+  }
+  for (const std::string& file : { test::OutputPath("no-such-file.exr"), garbage })
+  {
+    vtkNew<vtkOIIOImageReader> reader;
+    reader->SetFileName(file.c_str());
+    vtkNew<test::MessageRecorder> messages;
+    messages->Watch(reader);
+    reader->Update();
+    EXPECT_FALSE(messages->Errors.empty()) << file;
+    EXPECT_NE(messages->Errors.find(file), std::string::npos) << "the message names the file";
+  }
+}

@@ -1,0 +1,130 @@
+// Self-shadowing against analytic shadows: a ridge of height h = DepthScale (in wall widths) on a
+// flat floor, lit by a directional light at elevation e across the ridge, seen from straight
+// above with a parallel camera. The ridge's shadow on the floor must start at the ridge's edge and
+// be h / tan(e) long.
+#include "ImageCompare.h"
+#include "ReliefScene.h"
+#include "TestReliefTestUtilities.h"
+#include "vtkReliefMapper.h"
+
+#include <vtkActor.h>
+#include <vtkCamera.h>
+#include <vtkImageData.h>
+#include <vtkLight.h>
+#include <vtkMath.h>
+#include <vtkNew.h>
+#include <vtkPlaneSource.h>
+#include <vtkProperty.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace
+{
+using namespace mesolight;
+
+constexpr double RidgeLow = 0.45;
+constexpr double RidgeHigh = 0.55;
+constexpr double DepthScale = 0.1;
+constexpr int Pixels = 400;
+
+struct ShadowRun
+{
+  double Start = -1.0; // u of the first dark pixel right of the ridge centre
+  double End = -1.0;   // u of the last dark pixel of that run
+};
+
+ShadowRun RenderRidgeShadow(double elevationDegrees, bool shadows, int linearSteps, const char* tag)
+{
+  auto depth = test::MakeDepthMap(
+    256, 256, [](double u, double) { return (u >= RidgeLow && u <= RidgeHigh) ? 0.0 : 1.0; });
+  auto relief = test::BakeRelief(depth, DepthScale);
+
+  vtkNew<vtkPlaneSource> plane;
+  plane->SetOrigin(0, 0, 0);
+  plane->SetPoint1(1, 0, 0);
+  plane->SetPoint2(0, 1, 0);
+  vtkNew<vtkReliefMapper> mapper;
+  mapper->SetInputConnection(plane->GetOutputPort());
+  mapper->SetReliefTextureData(relief);
+  mapper->SetDepthScale(DepthScale);
+  mapper->SetSelfShadowing(shadows);
+  mapper->SetLinearSteps(linearSteps);
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetAmbient(0.0);
+  actor->GetProperty()->SetDiffuse(1.0);
+  actor->GetProperty()->SetSpecular(0.0);
+  actor->GetProperty()->SetColor(1, 1, 1);
+
+  vtkNew<vtkRenderer> renderer;
+  renderer->AddActor(actor);
+  renderer->AutomaticLightCreationOff();
+  const double e = vtkMath::RadiansFromDegrees(elevationDegrees);
+  vtkNew<vtkLight> light;
+  light->SetLightTypeToSceneLight();
+  light->PositionalOff();
+  light->SetFocalPoint(0.5, 0.5, 0.0);
+  light->SetPosition(0.5 - std::cos(e), 0.5, std::sin(e)); // from -u, across the ridge
+  renderer->AddLight(light);
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->ParallelProjectionOn();
+  camera->SetParallelScale(0.5);
+  camera->SetFocalPoint(0.5, 0.5, 0.0);
+  camera->SetPosition(0.5, 0.5, 2.0);
+  camera->SetViewUp(0, 1, 0);
+  camera->SetClippingRange(0.5, 4.0);
+
+  ReliefSceneOptions size;
+  size.Width = size.Height = Pixels;
+  auto window = MakeOffscreenWindow(size, renderer);
+  const Frame frame = CaptureFrame(window);
+  WritePng(frame, test::OutputPath(tag).c_str());
+
+  // Lit floor: N.L = sin(e). Dark: below a quarter of that.
+  const double lit = 255.0 * std::sin(e);
+  const int row = Pixels / 4;
+  ShadowRun run;
+  for (int x = Pixels / 2; x < Pixels; ++x)
+  {
+    const double value = frame.Rgb[3 * (size_t(row) * Pixels + x)];
+    const bool dark = value < 0.25 * lit;
+    const double u = (x + 0.5) / Pixels;
+    if (dark && run.Start < 0.0)
+    {
+      run.Start = u;
+    }
+    if (dark)
+    {
+      run.End = u;
+    }
+    if (!dark && run.Start >= 0.0)
+    {
+      break;
+    }
+  }
+  return run;
+}
+} // namespace
+
+TEST(ReliefShadows, RidgeShadowHasTheAnalyticLength)
+{
+  for (double elevation : { 30.0, 50.0 })
+  {
+    const ShadowRun run = RenderRidgeShadow(elevation, true, 10, "ridge-shadow.png");
+    const double expectedEnd = RidgeHigh + DepthScale / std::tan(vtkMath::RadiansFromDegrees(elevation));
+    EXPECT_NEAR(run.Start, RidgeHigh, 0.01) << "elevation " << elevation;
+    EXPECT_NEAR(run.End, expectedEnd, 0.02) << "elevation " << elevation;
+  }
+}
+
+// Negative test: with self-shadowing off there is no shadow to find.
+TEST(ReliefShadows, NoShadowWhenSelfShadowingIsOff)
+{
+  const ShadowRun run = RenderRidgeShadow(30.0, false, 10, "ridge-noshadow.png");
+  const double expectedEnd = RidgeHigh + DepthScale / std::tan(vtkMath::RadiansFromDegrees(30.0));
+  EXPECT_FALSE(std::abs(run.End - expectedEnd) < 0.02);
+}
