@@ -1,0 +1,101 @@
+/**
+ * HeightFieldTracer: the exact CPU reference that GPU ray-marched relief mapping is measured
+ * against. Plain C++17 + GLM, no VTK types, so it unit-tests fast and reads like the math.
+ *
+ * Conventions (shared with the relief shaders):
+ *  - Texture space (u, v, d): u, v in [0, 1] across the map; d is depth, 0 = the top surface (the
+ *    mesh), 1 = deepest. A ray going into the surface has increasing d.
+ *  - A height field is W x H depth samples, row-major; row j = 0 is v near 0, column i = 0 is u
+ *    near 0. Sample (i, j) sits at the texel centre ((i + 0.5) / W, (j + 0.5) / H).
+ *  - The continuous surface is exactly GL_LINEAR + GL_CLAMP_TO_EDGE sampling of that texture
+ *    (in exact arithmetic): bilinear between the four nearest texel centres, constant extension
+ *    outside the centre grid (u < 0.5 / W uses column 0, and so on, also outside [0, 1]).
+ *  - A point (u, v, d) is "on or below" the surface when d >= depth(u, v).
+ */
+
+#ifndef mesolight_HeightFieldTracer_h
+#define mesolight_HeightFieldTracer_h
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include <cstddef>
+#include <optional>
+#include <vector>
+
+namespace mesolight
+{
+
+/** W x H depth samples and the continuous bilinear, clamp-to-edge surface through them. */
+class HeightField
+{
+public:
+  /**
+   * depth holds w * h samples, row-major, row 0 at v ~ 0. Throws std::invalid_argument when
+   * w < 1, h < 1, depth.size() != w * h, or a sample is not finite (the message names it).
+   */
+  HeightField(int w, int h, std::vector<float> depth);
+
+  int Width() const { return this->W; }
+  int Height() const { return this->H; }
+
+  /** Sample at column i, row j (0 <= i < W, 0 <= j < H; not range-checked). */
+  float Texel(int i, int j) const { return this->Depth[static_cast<std::size_t>(j) * this->W + i]; }
+
+  /** Texel with both indices clamped into range: the clamp-to-edge extension of the samples. */
+  double ClampedTexel(int i, int j) const;
+
+  /** Surface depth at (u, v): GL_LINEAR + GL_CLAMP_TO_EDGE, evaluated exactly in double. */
+  double DepthAt(double u, double v) const;
+
+  /**
+   * (d depth / du, d depth / dv) of the bilinear surface. Zero across a clamp band. On a cell
+   * boundary (a crease of the surface) this is the derivative of the cell on the +u / +v side.
+   */
+  glm::dvec2 GradientAt(double u, double v) const;
+
+private:
+  int W;
+  int H;
+  std::vector<float> Depth;
+};
+
+struct RayHit
+{
+  double t;         // ray parameter: point = origin + t * dir
+  glm::dvec3 point; // (u, v, d) of the hit
+};
+
+/**
+ * Exact first intersection of the ray origin + t * dir, t in [0, tMax], with the surface: the
+ * smallest t at which the ray goes from above to on/below (t = 0 if the origin is already on or
+ * below). dir need not be normalized; any dir.z works (down, horizontal, up). Cost is
+ * O(texel cells crossed). Returns nullopt on a miss, tMax < 0, or any non-finite input
+ * (tMax included: pass a finite bound). The returned t is the upper end of a bracket of width
+ * <= 1e-12 * max(1, t) around the first sign change of (ray d - surface depth) as evaluated in
+ * double: the point at t is on or below, just before it the ray is above.
+ */
+std::optional<RayHit> IntersectFirst(const HeightField& hf, const glm::dvec3& origin,
+  const glm::dvec3& dir, double tMax);
+
+/**
+ * True when the ray from point (on the surface) toward the light reaches d <= 0 (leaves the top
+ * of the height field) without passing strictly below the surface. toLight.z < 0 points up; a
+ * light at or below the horizon (toLight.z >= 0) gives false, as does any non-finite input. The
+ * ray starts epsilon along normalize(toLight) from point, to avoid self-intersection.
+ */
+bool Visible(const HeightField& hf, const glm::dvec3& point, const glm::dvec3& toLight,
+  double epsilon = 1e-6);
+
+/**
+ * TEST ORACLE ONLY: dense uniform sampling of [0, tMax] at `samples` steps, then bisection on the
+ * first on/below sample. Independent of IntersectFirst's cell logic (it only uses DepthAt), but it
+ * can miss features thinner than a step, so it may report a later hit or none; never an earlier
+ * one. Throws std::invalid_argument if samples < 1.
+ */
+std::optional<RayHit> IntersectFirstBruteForce(const HeightField& hf, const glm::dvec3& origin,
+  const glm::dvec3& dir, double tMax, int samples);
+
+} // namespace mesolight
+
+#endif
