@@ -383,6 +383,7 @@ int RunBench(const std::vector<std::string>& args)
     std::cerr << "mesolight bench: " << error << "\n";
     return 2;
   }
+  settings.Resolutions.clear();
   std::istringstream sizes(cl.Get("--sizes"));
   std::string item;
   while (std::getline(sizes, item, ','))
