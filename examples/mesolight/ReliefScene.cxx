@@ -37,10 +37,22 @@ public:
   static ErrorCollector* New() { return new ErrorCollector; }
   void Execute(vtkObject*, unsigned long, void* callData) override
   {
-    if (callData)
+    if (!callData)
     {
-      this->Messages += static_cast<const char*>(callData);
+      return;
     }
+    // Keep what the message says, without VTK's "ERROR: In <file>, line N" location line.
+    std::string text = static_cast<const char*>(callData);
+    const size_t lineEnd = text.find('\n');
+    if (text.compare(0, 10, "ERROR: In ") == 0 && lineEnd != std::string::npos)
+    {
+      text = text.substr(lineEnd + 1);
+    }
+    while (!text.empty() && (text.back() == '\n' || text.back() == ' '))
+    {
+      text.pop_back();
+    }
+    this->Messages += (this->Messages.empty() ? "" : "; ") + text;
   }
   std::string Messages;
 };

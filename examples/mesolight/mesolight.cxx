@@ -20,7 +20,9 @@
 #include <vtkImageData.h>
 #include <vtkInteractorStyleTrackballCamera.h>
 #include <vtkNew.h>
+#include <vtkLogger.h>
 #include <vtkObjectFactory.h>
+#include <vtkOutputWindow.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderWindowInteractor.h>
 #include <vtkRenderer.h>
@@ -115,6 +117,39 @@ bool SameFile(const std::string& a, const std::string& b)
   }
   return sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
 }
+
+// VTK reports a failing reader twice: the reader's own message, then the executive's dump of
+// the pipeline request. A command-line user needs the first only, on one line.
+class ConsoleOutputWindow : public vtkOutputWindow
+{
+public:
+  static ConsoleOutputWindow* New();
+  vtkTypeMacro(ConsoleOutputWindow, vtkOutputWindow);
+  void DisplayErrorText(const char* text) override { this->DisplayText(text); }
+  void DisplayWarningText(const char* text) override { this->DisplayText(text); }
+  void DisplayGenericWarningText(const char* text) override { this->DisplayText(text); }
+  void DisplayText(const char* text) override
+  {
+    const std::string message(text ? text : "");
+    if (message.find("returned failure for request") != std::string::npos)
+    {
+      return;
+    }
+    // Drop VTK's "ERROR: In <source file>, line N" prefix line; keep what it says.
+    const size_t firstLineEnd = message.find('\n');
+    const bool hasLocation = message.compare(0, 10, "ERROR: In ") == 0 ||
+      message.compare(0, 12, "Warning: In ") == 0;
+    std::string body = hasLocation && firstLineEnd != std::string::npos
+      ? message.substr(firstLineEnd + 1)
+      : message;
+    while (!body.empty() && (body.back() == '\n' || body.back() == ' '))
+    {
+      body.pop_back();
+    }
+    std::cerr << "mesolight: " << body << "\n";
+  }
+};
+vtkStandardNewMacro(ConsoleOutputWindow);
 
 // Interactive keys on top of the trackball camera; VTK's own keys keep working.
 class ReliefInteractorStyle : public vtkInteractorStyleTrackballCamera
@@ -403,6 +438,9 @@ int RunBench(const std::vector<std::string>& args)
 
 int main(int argc, char* argv[])
 {
+  vtkNew<ConsoleOutputWindow> console;
+  vtkOutputWindow::SetInstance(console);
+  vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF); // messages go through the console window
   std::vector<std::string> args(argv + 1, argv + argc);
   if (args.empty() || args[0] == "--help" || args[0] == "-h" ||
     (args[0] == "help" && args.size() == 1))
