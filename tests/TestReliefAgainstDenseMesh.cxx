@@ -24,6 +24,7 @@ ReliefSceneOptions TestScene()
   o.Height = 400;
   o.DepthScale = 0.04;
   o.SelfShadowing = false;
+  o.ViewDistance = 2.2; // the wall fills most of the view
   return o;
 }
 

@@ -39,7 +39,7 @@ struct ReliefSceneOptions
   int Height = 800;
   double ViewAngle = 55.0; // camera angle from the wall's normal, degrees
   double ViewAzimuth = 20.0;
-  double ViewDistance = 2.2; // in wall widths
+  double ViewDistance = 2.6; // in wall widths
   int Lights = 2;            // 1: key light; 2: key + fill
   double LightElevation = 35.0; // key light elevation above the wall, degrees
 };

@@ -264,7 +264,7 @@ int RunRender(const std::vector<std::string>& args)
     return 1;
   }
   std::cout << "wrote " << out << " (" << options.Width << "x" << options.Height << ", method "
-            << options.Method << ")\n";
+            << options.Method << ")" << std::endl;
   if (cl.Has("--offscreen") || !mesolight::HasDisplay())
   {
     return 0;
