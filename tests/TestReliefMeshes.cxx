@@ -1,0 +1,100 @@
+// vtkReliefMapper on meshes other than a plane: tangents are generated, and a curved, tiled
+// surface renders without errors and with visible relief.
+#include "ImageCompare.h"
+#include "ReliefScene.h"
+#include "TestReliefTestUtilities.h"
+#include "vtkProceduralReliefSource.h"
+#include "vtkReliefMapper.h"
+#include "vtkReliefTextureFilter.h"
+
+#include <vtkCamera.h>
+#include <vtkLight.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkProperty.h>
+#include <vtkTexturedSphereSource.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace
+{
+using namespace mesolight;
+
+// Mean absolute difference between two frames over pixels covered in both.
+double MeanDifference(const Frame& a, const Frame& b)
+{
+  double sum = 0.0;
+  long long n = 0;
+  for (size_t p = 0; p < a.Depth.size(); ++p)
+  {
+    if (a.Covered(p) && b.Covered(p))
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        sum += std::abs(double(a.Rgb[3 * p + c]) - double(b.Rgb[3 * p + c]));
+      }
+      ++n;
+    }
+  }
+  return n > 0 ? sum / (3.0 * n) : 0.0;
+}
+
+Frame RenderSphere(double depthScale, vtkReliefMapper* mapper, test::MessageRecorder* messages)
+{
+  vtkNew<vtkProceduralReliefSource> source;
+  source->SetPatternToBricks();
+  source->SetResolution(256, 256);
+  vtkNew<vtkReliefTextureFilter> relief;
+  relief->SetInputConnection(source->GetOutputPort(0));
+  relief->SetDepthScale(depthScale);
+  relief->SetBorderModeToWrap();
+  vtkNew<vtkTexturedSphereSource> sphere;
+  sphere->SetThetaResolution(48);
+  sphere->SetPhiResolution(24);
+  mapper->SetInputConnection(sphere->GetOutputPort());
+  mapper->SetReliefTextureConnection(relief->GetOutputPort());
+  mapper->SetDepthScale(depthScale);
+  mapper->SilhouettesOff(); // the texture wraps around the sphere
+  mapper->RepeatTextureOn();
+  messages->Watch(mapper);
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetAmbient(0.1);
+  vtkNew<vtkRenderer> renderer;
+  renderer->AddActor(actor);
+  vtkNew<vtkLight> light;
+  light->SetLightTypeToSceneLight();
+  light->SetPosition(-1.5, -2, 1.5); // from the camera side, upper left
+  light->SetFocalPoint(0, 0, 0);
+  renderer->AddLight(light);
+  renderer->GetActiveCamera()->SetPosition(0, -3, 0.5);
+  renderer->GetActiveCamera()->SetViewUp(0, 0, 1);
+  renderer->ResetCamera();
+  ReliefSceneOptions size;
+  size.Width = size.Height = 200;
+  auto window = MakeOffscreenWindow(size, renderer);
+  return CaptureFrame(window);
+}
+} // namespace
+
+TEST(ReliefMeshes, TexturedSphereGetsTangentsAndShowsRelief)
+{
+  vtkNew<vtkReliefMapper> flatMapper, reliefMapper;
+  vtkNew<test::MessageRecorder> messages;
+  const Frame flat = RenderSphere(0.0, flatMapper, messages);
+  const Frame relief = RenderSphere(0.03, reliefMapper, messages);
+  WritePng(relief, test::OutputPath("sphere-relief.png").c_str());
+  EXPECT_TRUE(messages->Errors.empty()) << messages->Errors;
+  ASSERT_NE(reliefMapper->GetPreparedInput(), nullptr);
+  EXPECT_NE(reliefMapper->GetPreparedInput()->GetPointData()->GetTangents(), nullptr);
+  long long covered = 0;
+  for (size_t p = 0; p < relief.Depth.size(); ++p)
+  {
+    covered += relief.Covered(p) ? 1 : 0;
+  }
+  EXPECT_GT(covered, 200 * 200 / 5); // the sphere fills about a quarter of the view
+  // The relief (mortar recessed, self-shadowed) must visibly change the image.
+  EXPECT_GT(MeanDifference(flat, relief), 3.0);
+}
