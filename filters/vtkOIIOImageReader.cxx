@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkOIIOImageReader.h"
 
+#include "core/OneLineMessage.h"
+
 #include "vtkDataArray.h"
 #include "vtkDataObject.h"
 #include "vtkErrorCode.h"
@@ -82,27 +84,6 @@ bool IsKnownExtension(const fs::path& path)
   return false;
 }
 
-/// OpenImageIO messages may span several lines: make them one line.
-std::string Trimmed(const std::string& text)
-{
-  std::string s;
-  for (char c : text)
-  {
-    if (c != '\n' && c != '\r')
-    {
-      s += c;
-    }
-    else if (!s.empty() && s.back() != ' ')
-    {
-      s += "; ";
-    }
-  }
-  while (!s.empty() && (std::isspace(static_cast<unsigned char>(s.back())) || s.back() == ';'))
-  {
-    s.pop_back();
-  }
-  return s.empty() ? std::string("no details") : s;
-}
 }
 
 //------------------------------------------------------------------------------
@@ -186,7 +167,7 @@ bool vtkOIIOImageReader::ReadHeader(Header& header)
   auto in = OIIO::ImageInput::open(this->FileName, &config);
   if (!in)
   {
-    const std::string oiioError = Trimmed(OIIO::geterror());
+    const std::string oiioError = mesolight::OneLineMessage(OIIO::geterror());
     if (IsKnownExtension(path))
     {
       this->SetErrorCode(vtkErrorCode::FileFormatError);
@@ -321,7 +302,7 @@ int vtkOIIOImageReader::RequestData(
   {
     this->SetErrorCode(vtkErrorCode::FileFormatError);
     vtkErrorMacro("Cannot read image '" << this->FileName
-                                        << "' (OpenImageIO: " << Trimmed(OIIO::geterror())
+                                        << "' (OpenImageIO: " << mesolight::OneLineMessage(OIIO::geterror())
                                         << ").");
     return 0;
   }
@@ -341,7 +322,7 @@ int vtkOIIOImageReader::RequestData(
   unsigned char* lastRow = base + static_cast<size_t>(rowBytes) * (header.Height - 1);
   const bool ok = in->read_image(0, 0, 0, header.Channels, header.Format, lastRow,
     OIIO::AutoStride, -rowBytes, OIIO::AutoStride, &vtkOIIOImageReader::ProgressCallback, this);
-  const std::string oiioError = Trimmed(in->geterror());
+  const std::string oiioError = mesolight::OneLineMessage(in->geterror());
   in->close();
   in->geterror();
   if (this->GetAbortExecute())

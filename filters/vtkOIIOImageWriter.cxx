@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkOIIOImageWriter.h"
 
+#include "core/OneLineMessage.h"
+
 #include "core/ScalarConversion.h"
 
 #include "vtkDataArray.h"
@@ -73,27 +75,6 @@ void ConvertFlipTo(OIIO::TypeDesc format, const TIn* in, int w, int h, int nComp
   }
 }
 
-/// OpenImageIO messages may span several lines: make them one line.
-std::string Trimmed(const std::string& text)
-{
-  std::string s;
-  for (char c : text)
-  {
-    if (c != '\n' && c != '\r')
-    {
-      s += c;
-    }
-    else if (!s.empty() && s.back() != ' ')
-    {
-      s += "; ";
-    }
-  }
-  while (!s.empty() && (std::isspace(static_cast<unsigned char>(s.back())) || s.back() == ';'))
-  {
-    s.pop_back();
-  }
-  return s.empty() ? std::string("no details") : s;
-}
 
 std::string UniqueSuffix()
 {
@@ -258,7 +239,7 @@ bool vtkOIIOImageWriter::WriteImage(vtkImageData* input)
     this->SetErrorCode(vtkErrorCode::UnrecognizedFileTypeError);
     vtkErrorMacro("Cannot write '" << fileName << "': unknown or unsupported file extension '"
                                    << target.extension().string()
-                                   << "' (OpenImageIO: " << Trimmed(OIIO::geterror()) << ").");
+                                   << "' (OpenImageIO: " << mesolight::OneLineMessage(OIIO::geterror()) << ").");
     return false;
   }
   const std::string format = out->format_name();
@@ -321,16 +302,16 @@ bool vtkOIIOImageWriter::WriteImage(vtkImageData* input)
     this->SetErrorCode(vtkErrorCode::CannotOpenFileError);
     vtkErrorMacro("Cannot write '" << fileName << "': cannot create a " << format << " file in '"
                                    << directory.string()
-                                   << "' (OpenImageIO: " << Trimmed(out->geterror()) << ").");
+                                   << "' (OpenImageIO: " << mesolight::OneLineMessage(out->geterror()) << ").");
     out.reset();
     removeTemporary();
     return false;
   }
   const bool written = out->write_image(pixelType, pixels.data(), OIIO::AutoStride,
     OIIO::AutoStride, OIIO::AutoStride, &vtkOIIOImageWriter::ProgressCallback, this);
-  const std::string writeError = written ? std::string() : Trimmed(out->geterror());
+  const std::string writeError = written ? std::string() : mesolight::OneLineMessage(out->geterror());
   const bool closed = out->close();
-  const std::string closeError = closed ? std::string() : Trimmed(out->geterror());
+  const std::string closeError = closed ? std::string() : mesolight::OneLineMessage(out->geterror());
   out.reset();
   if (this->GetAbortExecute())
   {

@@ -11,6 +11,7 @@
 #include <vtkCommand.h>
 #include <vtkImageData.h>
 #include <vtkLight.h>
+#include <vtkMapper.h>
 #include <vtkMath.h>
 #include <vtkNew.h>
 #include <vtkPlaneSource.h>
@@ -88,6 +89,20 @@ vtkSmartPointer<vtkPolyData> MakeWall(vtkImageData* relief)
     tcoords->SetComponent(i, 1, dv + tcoords->GetComponent(i, 1) * (1.0 - 2.0 * dv));
   }
   return wall;
+}
+
+void ApplyMaterial(vtkActor* actor);
+
+// Every scene variant: the same actor material, albedo, camera and lights.
+void FinishScene(const ReliefSceneOptions& options, vtkMapper* mapper, ReliefScene& scene)
+{
+  scene.Actor = vtkSmartPointer<vtkActor>::New();
+  scene.Actor->SetMapper(mapper);
+  scene.Actor->SetTexture(scene.Albedo);
+  ApplyMaterial(scene.Actor);
+  scene.Renderer = vtkSmartPointer<vtkRenderer>::New();
+  scene.Renderer->AddActor(scene.Actor);
+  SetupCameraAndLights(options, scene.Renderer);
 }
 
 void ApplyMaterial(vtkActor* actor)
@@ -228,13 +243,7 @@ bool BuildReliefScene(const ReliefSceneOptions& options, ReliefScene& scene, std
   scene.Mapper->SetSilhouettes(options.Silhouettes);
   scene.Mapper->SetWriteDepth(options.WriteDepth);
 
-  scene.Actor = vtkSmartPointer<vtkActor>::New();
-  scene.Actor->SetMapper(scene.Mapper);
-  scene.Actor->SetTexture(scene.Albedo);
-  ApplyMaterial(scene.Actor);
-  scene.Renderer = vtkSmartPointer<vtkRenderer>::New();
-  scene.Renderer->AddActor(scene.Actor);
-  SetupCameraAndLights(options, scene.Renderer);
+  FinishScene(options, scene.Mapper, scene);
   return true;
 }
 
@@ -259,13 +268,7 @@ bool BuildDenseReferenceScene(
   mapper->SetInputConnection(dense->GetOutputPort());
   mapper->ScalarVisibilityOff();
   scene.Mapper = nullptr;
-  scene.Actor = vtkSmartPointer<vtkActor>::New();
-  scene.Actor->SetMapper(mapper);
-  scene.Actor->SetTexture(scene.Albedo);
-  ApplyMaterial(scene.Actor);
-  scene.Renderer = vtkSmartPointer<vtkRenderer>::New();
-  scene.Renderer->AddActor(scene.Actor);
-  SetupCameraAndLights(options, scene.Renderer);
+  FinishScene(options, mapper, scene);
   return true;
 }
 
@@ -280,13 +283,7 @@ bool BuildTexturedPlaneScene(
   vtkNew<vtkPolyDataMapper> mapper;
   mapper->SetInputData(MakeWall(scene.ReliefTexture));
   scene.Mapper = nullptr;
-  scene.Actor = vtkSmartPointer<vtkActor>::New();
-  scene.Actor->SetMapper(mapper);
-  scene.Actor->SetTexture(scene.Albedo);
-  ApplyMaterial(scene.Actor);
-  scene.Renderer = vtkSmartPointer<vtkRenderer>::New();
-  scene.Renderer->AddActor(scene.Actor);
-  SetupCameraAndLights(options, scene.Renderer);
+  FinishScene(options, mapper, scene);
   return true;
 }
 
