@@ -443,7 +443,7 @@ std::string vtkReliefMapper::ShaderKey() const
 {
   return std::to_string(this->Method) + (this->SelfShadowing ? "S" : "s") +
     (this->Silhouettes ? "E" : "e") + (this->WriteDepth ? "D" : "d") +
-    (this->HasAlbedoTexture ? "A" : "a");
+    (this->HasAlbedoTexture ? "A" : "a") + std::to_string(this->Output);
 }
 
 //------------------------------------------------------------------------------
@@ -485,7 +485,8 @@ void vtkReliefMapper::ReplaceShaderValues(
 
   fs = shaders[vtkShader::Fragment]->GetSource();
   std::string defines = "#define ML_METHOD " + std::to_string(this->Method) + "\n" +
-    "#define ML_REFINE " + std::to_string(RefinementKind(this->Method)) + "\n";
+    "#define ML_REFINE " + std::to_string(RefinementKind(this->Method)) + "\n" +
+    "#define ML_OUTPUT " + std::to_string(this->Output) + "\n";
   if (this->SelfShadowing)
   {
     defines += "#define ML_SELF_SHADOWING\n";
@@ -678,5 +679,6 @@ void vtkReliefMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Silhouettes: " << (this->Silhouettes ? "On" : "Off") << "\n";
   os << indent << "WriteDepth: " << (this->WriteDepth ? "On" : "Off") << "\n";
   os << indent << "RepeatTexture: " << (this->RepeatTexture ? "On" : "Off") << "\n";
+  os << indent << "Output: " << this->Output << "\n";
   os << indent << "ReliefTexture: " << this->GetReliefTexture() << "\n";
 }

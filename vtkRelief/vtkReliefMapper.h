@@ -127,6 +127,24 @@ public:
   vtkBooleanMacro(RepeatTexture, bool);
   ///@}
 
+  enum OutputType
+  {
+    ShadedOutput = 0,          ///< the lit surface (default)
+    HitUOutput = 1,            ///< hit u as 24-bit fixed point in RGB, for measurements
+    HitVOutput = 2,            ///< hit v, likewise
+    LightVisibilityOutput = 3, ///< white where the first light reaches the hit point, else black
+    NumberOfOutputs
+  };
+
+  ///@{
+  /**
+   * What the fragments show: the shaded surface, or measurement outputs that tests and
+   * benchmarks compare with exact CPU references (see mesolight::DecodeHitCoordinate).
+   */
+  vtkSetClampMacro(Output, int, ShadedOutput, NumberOfOutputs - 1);
+  vtkGetMacro(Output, int);
+  ///@}
+
   ///@{
   /**
    * The relief texture: float or unsigned char RGBA image, normal packed in RGB as (n+1)/2,
@@ -177,6 +195,7 @@ protected:
   bool Silhouettes = true;
   bool WriteDepth = true;
   bool RepeatTexture = false;
+  int Output = ShadedOutput;
 
   vtkSmartPointer<vtkImageData> ReliefTextureData;
   vtkSmartPointer<vtkPolyData> PreparedInput;

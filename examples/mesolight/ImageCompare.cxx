@@ -40,6 +40,7 @@ Frame CaptureFrame(vtkRenderWindow* window)
   vtkNew<vtkUnsignedCharArray> rgb;
   window->GetPixelData(0, 0, size[0] - 1, size[1] - 1, 0, rgb, 0);
   frame.Rgb.assign(rgb->GetPointer(0), rgb->GetPointer(0) + 3 * size_t(size[0]) * size[1]);
+
   vtkNew<vtkFloatArray> depth;
   window->GetZbufferData(0, 0, size[0] - 1, size[1] - 1, depth);
   frame.Depth.assign(depth->GetPointer(0), depth->GetPointer(0) + size_t(size[0]) * size[1]);
@@ -113,6 +114,18 @@ FrameDifference CompareFrames(
   d.Psnr = d.RmsColorError > 0.0 ? 20.0 * std::log10(255.0 / d.RmsColorError) : 99.0;
   d.SilhouetteMismatch = either > 0 ? 100.0 * double(onlyOne) / either : 0.0;
   return d;
+}
+
+//------------------------------------------------------------------------------
+bool DecodeHitCoordinate(const Frame& frame, size_t pixel, double& coordinate)
+{
+  if (!frame.Covered(pixel))
+  {
+    return false;
+  }
+  const unsigned char* c = &frame.Rgb[3 * pixel];
+  coordinate = (65536.0 * c[0] + 256.0 * c[1] + c[2]) / 16777215.0;
+  return true;
 }
 
 //------------------------------------------------------------------------------

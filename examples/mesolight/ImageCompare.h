@@ -50,6 +50,12 @@ struct FrameDifference
 FrameDifference CompareFrames(
   const Frame& a, const Frame& b, double depthTolerance, const Frame* footprint = nullptr);
 
+/**
+ * Decodes vtkReliefMapper's HitUOutput / HitVOutput at a pixel: the hit coordinate as 24-bit
+ * fixed point. False for background pixels.
+ */
+bool DecodeHitCoordinate(const Frame& frame, size_t pixel, double& coordinate);
+
 /** Writes the frame's colour as PNG. */
 bool WritePng(const Frame& frame, const char* fileName);
 

@@ -48,11 +48,24 @@
   }
   vec3 diffuse = vec3(0.0);
   vec3 specular = vec3(0.0);
-  mlAccumulateLights(mlHitPos, mlShadingNormal, mlHit, mlWorldToTexture, diffuse, specular);
+  float mlFirstLightVisible = 0.0;
+  mlAccumulateLights(mlHitPos, mlShadingNormal, mlHit, mlWorldToTexture, diffuse, specular,
+    mlFirstLightVisible);
+#if ML_OUTPUT == 1 || ML_OUTPUT == 2
+  // One hit texture coordinate (u or v) as 24-bit fixed point in RGB, opaque (measurement).
+  float mlFixed = floor(clamp(ML_OUTPUT == 1 ? mlHit.x : mlHit.y, 0.0, 1.0) * 16777215.0 + 0.5);
+  float mlR = floor(mlFixed / 65536.0);
+  float mlG = floor((mlFixed - 65536.0 * mlR) / 256.0);
+  gl_FragData[0] = vec4(mlR, mlG, mlFixed - 65536.0 * mlR - 256.0 * mlG, 255.0) / 255.0;
+#elif ML_OUTPUT == 3
+  // Whether the first light reaches the hit point (facing it and not self-shadowed).
+  gl_FragData[0] = vec4(vec3(mlFirstLightVisible), 1.0);
+#else
   gl_FragData[0] = vec4(ambientColor + diffuse * diffuseColor + specular * mlSpecularColor, opacity);
 #ifdef ML_ALBEDO_SAMPLER
   gl_FragData[0] = clamp(gl_FragData[0], 0.0, 1.0) *
     textureGrad(ML_ALBEDO_SAMPLER, mlHit.xy, mlDUVdx, mlDUVdy);
+#endif
 #endif
 #ifdef ML_WRITE_DEPTH
   vec4 mlClip = mlViewToClip * vec4(mlHitPos, 1.0);

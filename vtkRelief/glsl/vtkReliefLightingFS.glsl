@@ -18,9 +18,11 @@ uniform float mlSpecularPower;
 // Accumulates diffuse and specular light at a point of the height field.
 //   posVC, normalVC: the hit point and the height field's normal there, view coordinates
 //   hit: the hit in texture space; worldToTexture maps a view-space direction to texture space
+//   firstLightVisible: 1 when light 0 reaches the point (for measurements), else 0
 void mlAccumulateLights(vec3 posVC, vec3 normalVC, vec3 hit, mat3 worldToTexture,
-  inout vec3 diffuse, inout vec3 specular)
+  inout vec3 diffuse, inout vec3 specular, out float firstLightVisible)
 {
+  firstLightVisible = 0.0;
   vec3 viewDir = normalize(-posVC);
   for (int i = 0; i < mlNumberOfLights; ++i)
   {
@@ -54,6 +56,7 @@ void mlAccumulateLights(vec3 posVC, vec3 normalVC, vec3 hit, mat3 worldToTexture
       continue;
     }
 #endif
+    firstLightVisible = i == 0 ? 1.0 : firstLightVisible;
     diffuse += df * mlLightColor[i];
     float sf = attenuation * pow(max(0.0, dot(reflect(lightDir, normalVC), viewDir)), mlSpecularPower);
     specular += sf * mlLightColor[i];

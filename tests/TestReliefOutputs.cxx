@@ -1,0 +1,83 @@
+// vtkReliefMapper's measurement outputs decode to what they encode: on a flat map seen straight
+// down through a parallel camera, the hit coordinate of each pixel is the pixel's own position.
+#include "ImageCompare.h"
+#include "ReliefScene.h"
+#include "TestReliefTestUtilities.h"
+#include "vtkReliefMapper.h"
+
+#include <vtkActor.h>
+#include <vtkCamera.h>
+#include <vtkLight.h>
+#include <vtkNew.h>
+#include <vtkPlaneSource.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace
+{
+using namespace mesolight;
+constexpr int Pixels = 256;
+
+Frame RenderTopDown(int output)
+{
+  auto relief = test::BakeRelief(test::MakeDepthMap(64, 64, [](double, double) { return 0.0; }), 0.1);
+  vtkNew<vtkPlaneSource> plane;
+  plane->SetOrigin(0, 0, 0);
+  plane->SetPoint1(1, 0, 0);
+  plane->SetPoint2(0, 1, 0);
+  vtkNew<vtkReliefMapper> mapper;
+  mapper->SetInputConnection(plane->GetOutputPort());
+  mapper->SetReliefTextureData(relief);
+  mapper->SetDepthScale(0.1);
+  mapper->SetOutput(output);
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  vtkNew<vtkRenderer> renderer;
+  renderer->AddActor(actor);
+  vtkNew<vtkLight> light;
+  light->SetLightTypeToSceneLight();
+  light->SetPosition(0.5, 0.5, 1.0);
+  light->SetFocalPoint(0.5, 0.5, 0.0);
+  renderer->AddLight(light);
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->ParallelProjectionOn();
+  camera->SetParallelScale(0.5);
+  camera->SetFocalPoint(0.5, 0.5, 0.0);
+  camera->SetPosition(0.5, 0.5, 2.0);
+  camera->SetViewUp(0, 1, 0);
+  camera->SetClippingRange(0.5, 4.0);
+  ReliefSceneOptions size;
+  size.Width = size.Height = Pixels;
+  auto window = MakeOffscreenWindow(size, renderer);
+  return CaptureFrame(window);
+}
+} // namespace
+
+TEST(ReliefOutputs, HitCoordinatesDecodeToThePixelPosition)
+{
+  const Frame us = RenderTopDown(vtkReliefMapper::HitUOutput);
+  const Frame vs = RenderTopDown(vtkReliefMapper::HitVOutput);
+  double worst = 0.0;
+  for (int y = 2; y < Pixels - 2; ++y)
+  {
+    for (int x = 2; x < Pixels - 2; ++x)
+    {
+      const size_t p = size_t(y) * Pixels + x;
+      double u = -1.0, v = -1.0;
+      ASSERT_TRUE(DecodeHitCoordinate(us, p, u));
+      ASSERT_TRUE(DecodeHitCoordinate(vs, p, v));
+      worst = std::max(worst, std::abs(u - (x + 0.5) / Pixels));
+      worst = std::max(worst, std::abs(v - (y + 0.5) / Pixels));
+    }
+  }
+  EXPECT_LT(worst, 1e-3) << "a tenth of a pixel";
+}
+
+TEST(ReliefOutputs, LightVisibilityIsWhiteUnderAnOverheadLight)
+{
+  const Frame lit = RenderTopDown(vtkReliefMapper::LightVisibilityOutput);
+  const size_t centre = size_t(Pixels / 2) * Pixels + Pixels / 2;
+  EXPECT_EQ(lit.Rgb[3 * centre], 255);
+}
