@@ -45,7 +45,11 @@ vtkStandardNewMacro(vtkReliefMapper);
 
 namespace
 {
-const char* const MethodNames[] = { "texture", "steep", "pom", "relief" };
+const char* const MethodNames[] = { "texture", "bump", "parallax", "parallax-limit",
+  "parallax-slope", "iterative-parallax", "binary", "secant", "linear", "pom", "relief", "interval",
+  "relaxed-cone", "relaxed-cone-interval", "cone", "max-mipmap" };
+static_assert(sizeof(MethodNames) / sizeof(MethodNames[0]) == vtkReliefMapper::NumberOfMethods,
+  "one name per method");
 const char* const ReliefTCoordsName = "vtkReliefMapperTCoords";
 
 // Compile-time refinement of the march per method (see vtkReliefMarchFS.glsl, ML_REFINE).
@@ -160,6 +164,21 @@ const char* vtkReliefMapper::GetMethodName(int method)
 }
 
 //------------------------------------------------------------------------------
+int vtkReliefMapper::GetRequiredConeMap(int method)
+{
+  switch (method)
+  {
+    case RelaxedConeBinary:
+    case RelaxedConeInterval:
+      return RelaxedConeMap;
+    case ConservativeCone:
+      return ConservativeConeMap;
+    default:
+      return NoConeMap;
+  }
+}
+
+//------------------------------------------------------------------------------
 bool vtkReliefMapper::SetMethodByName(const char* name)
 {
   if (!name)
@@ -167,6 +186,11 @@ bool vtkReliefMapper::SetMethodByName(const char* name)
     return false;
   }
   const std::string n(name);
+  if (n == "steep")
+  {
+    this->SetMethod(LinearSearch);
+    return true;
+  }
   for (int m = 0; m < NumberOfMethods; ++m)
   {
     if (n == MethodNames[m])

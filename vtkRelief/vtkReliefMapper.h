@@ -55,13 +55,42 @@ public:
   vtkTypeMacro(vtkReliefMapper, vtkOpenGLPolyDataMapper);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
+  /**
+   * Height-field intersection methods (seed 000, §4), all sharing one march skeleton.
+   * Non-iterative: TextureMapping (no displacement), Bump (normals only), Parallax,
+   * ParallaxOffsetLimiting, ParallaxSlope. Unsafe iterative: IterativeParallax, BinarySearch,
+   * Secant. Safe iterative: LinearSearch (steep parallax), ParallaxOcclusion (linear + one secant
+   * step), Relief (linear + binary), Interval (linear + interval steps, seed eq. 3).
+   * Empty-space skipping: RelaxedConeBinary and RelaxedConeInterval need a relaxed cone map,
+   * ConservativeCone a conservative one (vtkConeMapFilter output as the relief texture);
+   * MaximumMipmap traces exactly through a min-depth pyramid the mapper builds itself.
+   */
   enum MethodType
   {
     TextureMapping = 0,
-    SteepParallax = 1,
-    ParallaxOcclusion = 2,
-    Relief = 3,
+    Bump,
+    Parallax,
+    ParallaxOffsetLimiting,
+    ParallaxSlope,
+    IterativeParallax,
+    BinarySearch,
+    Secant,
+    LinearSearch,
+    ParallaxOcclusion,
+    Relief,
+    Interval,
+    RelaxedConeBinary,
+    RelaxedConeInterval,
+    ConservativeCone,
+    MaximumMipmap,
     NumberOfMethods
+  };
+
+  enum ConeMapKind
+  {
+    NoConeMap = 0,
+    RelaxedConeMap = 1,
+    ConservativeConeMap = 2
   };
 
   ///@{
@@ -71,12 +100,17 @@ public:
   vtkSetClampMacro(Method, int, TextureMapping, NumberOfMethods - 1);
   vtkGetMacro(Method, int);
   void SetMethodToTextureMapping() { this->SetMethod(TextureMapping); }
-  void SetMethodToSteepParallax() { this->SetMethod(SteepParallax); }
+  void SetMethodToSteepParallax() { this->SetMethod(LinearSearch); }
   void SetMethodToParallaxOcclusion() { this->SetMethod(ParallaxOcclusion); }
   void SetMethodToRelief() { this->SetMethod(Relief); }
+  /** Short names used on the command line: "texture", "bump", "parallax", "parallax-limit",
+   * "parallax-slope", "iterative-parallax", "binary", "secant", "linear" (also "steep"), "pom",
+   * "relief", "interval", "relaxed-cone", "relaxed-cone-interval", "cone", "max-mipmap". */
   static const char* GetMethodName(int method);
-  /** Set the method from its name ("relief", "pom", "steep", "texture"); false if unknown. */
+  /** Set the method from its name; false if unknown. */
   bool SetMethodByName(const char* name);
+  /** The cone map a method needs in the relief texture (ConeMapKind). */
+  static int GetRequiredConeMap(int method);
   ///@}
 
   ///@{
