@@ -9,6 +9,9 @@
 #include "vtkExecutive.h"
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
+#include "vtkOpenGLError.h"
+#include "vtkVariant.h"
+#include "vtk_glew.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkLight.h"
@@ -34,7 +37,10 @@
 #include "vtkReliefImplFS.h"
 #include "vtkReliefLightingFS.h"
 #include "vtkReliefMarchFS.h"
+#include "vtkReliefMaxMipmapFS.h"
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
@@ -64,6 +70,95 @@ int RefinementKind(int method)
     default:
       return 0;
   }
+}
+
+// GLSL names of the methods, so the shader reads "#if ML_METHOD == ML_RELIEF".
+std::string MethodDefines()
+{
+  const char* const glslNames[] = { "ML_TEXTURE_MAPPING", "ML_BUMP", "ML_PARALLAX",
+    "ML_PARALLAX_OFFSET_LIMITING", "ML_PARALLAX_SLOPE", "ML_ITERATIVE_PARALLAX",
+    "ML_BINARY_SEARCH", "ML_SECANT", "ML_LINEAR_SEARCH", "ML_PARALLAX_OCCLUSION", "ML_RELIEF",
+    "ML_INTERVAL", "ML_RELAXED_CONE_BINARY", "ML_RELAXED_CONE_INTERVAL", "ML_CONSERVATIVE_CONE",
+    "ML_MAXIMUM_MIPMAP" };
+  static_assert(sizeof(glslNames) / sizeof(glslNames[0]) == vtkReliefMapper::NumberOfMethods,
+    "one GLSL name per method");
+  std::string defines;
+  for (int m = 0; m < vtkReliefMapper::NumberOfMethods; ++m)
+  {
+    defines += std::string("#define ") + glslNames[m] + " " + std::to_string(m) + "\n";
+  }
+  return defines;
+}
+
+// The min-depth pyramid of exact maximum-mipmap tracing (Tevs et al. 2008), as
+// vtkReliefMaxMipmapFS.glsl reads it: level 0 has a cell between each 2x2 texel centres plus the
+// clamp-to-edge border cells ((W+1) x (H+1)), holding the minimum depth of its corner texels;
+// each next level the minimum of 2x2 cells, sizes halving rounded up, down to 1x1.
+std::vector<std::vector<float>> MinDepthPyramid(
+  const std::vector<float>& depth, int w, int h, std::vector<std::pair<int, int>>& sizes)
+{
+  auto texel = [&](int i, int j) {
+    i = std::min(std::max(i, 0), w - 1);
+    j = std::min(std::max(j, 0), h - 1);
+    return depth[static_cast<size_t>(j) * w + i];
+  };
+  std::vector<std::vector<float>> levels;
+  int lw = w + 1, lh = h + 1;
+  std::vector<float> level(static_cast<size_t>(lw) * lh);
+  for (int j = 0; j < lh; ++j)
+  {
+    for (int i = 0; i < lw; ++i)
+    {
+      level[static_cast<size_t>(j) * lw + i] = std::min(
+        std::min(texel(i - 1, j - 1), texel(i, j - 1)), std::min(texel(i - 1, j), texel(i, j)));
+    }
+  }
+  sizes.clear();
+  sizes.emplace_back(lw, lh);
+  levels.push_back(level);
+  while (lw > 1 || lh > 1)
+  {
+    const int nw = (lw + 1) / 2, nh = (lh + 1) / 2;
+    std::vector<float> next(static_cast<size_t>(nw) * nh);
+    const std::vector<float>& prev = levels.back();
+    for (int j = 0; j < nh; ++j)
+    {
+      for (int i = 0; i < nw; ++i)
+      {
+        float m = prev[static_cast<size_t>(2 * j) * lw + 2 * i];
+        for (int dj = 0; dj < 2; ++dj)
+        {
+          for (int di = 0; di < 2; ++di)
+          {
+            const int pi = std::min(2 * i + di, lw - 1), pj = std::min(2 * j + dj, lh - 1);
+            m = std::min(m, prev[static_cast<size_t>(pj) * lw + pi]);
+          }
+        }
+        next[static_cast<size_t>(j) * nw + i] = m;
+      }
+    }
+    lw = nw;
+    lh = nh;
+    sizes.emplace_back(lw, lh);
+    levels.push_back(std::move(next));
+  }
+  return levels;
+}
+
+// "relaxed" / "conservative" (or 1 / 2) from the cone map's field data; 0 if not cone packed.
+int ConeTypeOf(vtkImageData* image)
+{
+  vtkAbstractArray* type = image->GetFieldData()->GetAbstractArray("MesolightConeType");
+  if (!type || type->GetNumberOfValues() < 1)
+  {
+    return vtkReliefMapper::NoConeMap;
+  }
+  std::string text = type->GetVariantValue(0).ToString();
+  std::transform(text.begin(), text.end(), text.begin(),
+    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return (text.find("conserv") != std::string::npos || text == "2")
+    ? vtkReliefMapper::ConservativeConeMap
+    : vtkReliefMapper::RelaxedConeMap;
 }
 
 bool AllTriangles(vtkPolyData* poly)
@@ -340,8 +435,12 @@ bool vtkReliefMapper::UpdateReliefTexture(vtkRenderer* ren)
     return false;
   }
   auto* renWin = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+  // Upload again when the image changed, or when mipmaps or the pyramid are newly needed.
+  const bool needPyramid = this->Method == MaximumMipmap;
   if (image == this->ReliefTextureUploaded && image->GetMTime() <= this->ReliefTextureUploadTime &&
-    this->ReliefTextureObject->GetHandle() != 0 && this->ReliefTextureObject->GetContext() == renWin)
+    this->ReliefTextureObject->GetHandle() != 0 &&
+    this->ReliefTextureObject->GetContext() == renWin &&
+    this->UploadedWithMipmaps == this->LevelOfDetail && (!needPyramid || this->PyramidLevels > 0))
   {
     return this->ReliefTextureReady;
   }
@@ -370,8 +469,11 @@ bool vtkReliefMapper::UpdateReliefTexture(vtkRenderer* ren)
     return false;
   }
   const bool bytes = scalars->GetDataType() == VTK_UNSIGNED_CHAR;
+  this->ConeType = ConeTypeOf(image);
+  this->ConePacked = this->ConeType != NoConeMap;
   const vtkIdType count = static_cast<vtkIdType>(dims[0]) * dims[1];
   std::vector<float> texels(static_cast<size_t>(count) * 4);
+  std::vector<float> depth(needPyramid ? static_cast<size_t>(count) : 0);
   for (vtkIdType i = 0; i < count; ++i)
   {
     for (int c = 0; c < 4; ++c)
@@ -387,13 +489,29 @@ bool vtkReliefMapper::UpdateReliefTexture(vtkRenderer* ren)
                       << " (component " << c << "); NaN or Inf cannot be rendered.");
         return false;
       }
-      texels[static_cast<size_t>(i) * 4 + c] = static_cast<float>(vtkMath::ClampValue(value, 0.0, 1.0));
+      if (c == 2 && this->ConePacked)
+      {
+        // Cone ratio: raw in float maps, stored as c / (1 + c) in 8-bit ones (never widened).
+        value = bytes ? value / (1.0 - std::min(value, 0.999)) : std::max(value, 0.0);
+      }
+      else
+      {
+        value = vtkMath::ClampValue(value, 0.0, 1.0);
+      }
+      texels[static_cast<size_t>(i) * 4 + c] = static_cast<float>(value);
+    }
+    if (needPyramid)
+    {
+      depth[static_cast<size_t>(i)] = texels[static_cast<size_t>(i) * 4 + 3];
     }
   }
 
   this->ReliefTextureObject->SetContext(renWin);
-  this->ReliefTextureObject->SetMinificationFilter(vtkTextureObject::Linear);
+  this->ReliefTextureObject->SetGenerateMipmap(this->LevelOfDetail);
+  this->ReliefTextureObject->SetMinificationFilter(
+    this->LevelOfDetail ? vtkTextureObject::LinearMipmapLinear : vtkTextureObject::Linear);
   this->ReliefTextureObject->SetMagnificationFilter(vtkTextureObject::Linear);
+  this->UploadedWithMipmaps = this->LevelOfDetail;
   if (!this->ReliefTextureObject->Create2DFromRaw(
         static_cast<unsigned int>(dims[0]), static_cast<unsigned int>(dims[1]), 4, VTK_FLOAT,
         texels.data()))
@@ -412,7 +530,50 @@ bool vtkReliefMapper::UpdateReliefTexture(vtkRenderer* ren)
       this->BakedDepthScale = baked->GetComponent(0, 0);
     }
   }
+  this->PyramidLevels = 0;
+  if (needPyramid && !this->UpdatePyramid(renWin, depth))
+  {
+    return false;
+  }
   this->ReliefTextureReady = true;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkReliefMapper::UpdatePyramid(vtkOpenGLRenderWindow* renWin, const std::vector<float>& depth)
+{
+  std::vector<std::pair<int, int>> sizes;
+  const std::vector<std::vector<float>> levels =
+    MinDepthPyramid(depth, this->ReliefTextureSize[0], this->ReliefTextureSize[1], sizes);
+  if (!this->PyramidTextureObject)
+  {
+    this->PyramidTextureObject = vtkSmartPointer<vtkTextureObject>::New();
+  }
+  vtkTextureObject* pyramid = this->PyramidTextureObject;
+  pyramid->SetContext(renWin);
+  pyramid->SetMinificationFilter(vtkTextureObject::NearestMipmapNearest);
+  pyramid->SetMagnificationFilter(vtkTextureObject::Nearest);
+  pyramid->SetWrapS(vtkTextureObject::ClampToEdge);
+  pyramid->SetWrapT(vtkTextureObject::ClampToEdge);
+  pyramid->SetBaseLevel(0);
+  pyramid->SetMaxLevel(static_cast<int>(levels.size()) - 1);
+  if (!pyramid->Create2DFromRaw(static_cast<unsigned int>(sizes[0].first),
+        static_cast<unsigned int>(sizes[0].second), 1, VTK_FLOAT,
+        const_cast<float*>(levels[0].data())))
+  {
+    vtkErrorMacro(<< "Could not create the min-depth pyramid texture.");
+    return false;
+  }
+  // vtkTextureObject uploads one level; the coarser ones are ours (minima, not averages).
+  pyramid->Bind();
+  for (size_t l = 1; l < levels.size(); ++l)
+  {
+    glTexImage2D(GL_TEXTURE_2D, static_cast<GLint>(l), GL_R32F, sizes[l].first, sizes[l].second, 0,
+      GL_RED, GL_FLOAT, levels[l].data());
+  }
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, static_cast<GLint>(levels.size()) - 1);
+  vtkOpenGLCheckErrorMacro("failed uploading the min-depth pyramid");
+  this->PyramidLevels = static_cast<int>(levels.size());
   return true;
 }
 
@@ -432,12 +593,28 @@ void vtkReliefMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* actor)
   {
     return;
   }
+  const int requiredCones = GetRequiredConeMap(this->Method);
+  if (requiredCones != NoConeMap && !this->ConePacked)
+  {
+    vtkErrorMacro(<< "Method '" << GetMethodName(this->Method)
+                  << "' needs a relief texture with cone ratios: use vtkConeMapFilter's output.");
+    return;
+  }
+  if (requiredCones == ConservativeConeMap && this->ConeType == RelaxedConeMap)
+  {
+    vtkWarningMacro(<< "Conservative cone stepping with relaxed cones may step through the "
+                       "surface; bake conservative cones for method 'cone'.");
+  }
   this->CurrentInput = prepared;
   this->HasAlbedoTexture = actor->GetTexture() != nullptr;
   const int wrap = this->RepeatTexture ? vtkTextureObject::Repeat : vtkTextureObject::ClampToEdge;
   this->ReliefTextureObject->SetWrapS(wrap);
   this->ReliefTextureObject->SetWrapT(wrap);
   this->ReliefTextureObject->Activate();
+  if (this->Method == MaximumMipmap)
+  {
+    this->PyramidTextureObject->Activate();
+  }
   this->Superclass::RenderPieceStart(ren, actor);
   this->ReadyToDraw = true;
 }
@@ -458,6 +635,10 @@ void vtkReliefMapper::RenderPieceFinish(vtkRenderer* ren, vtkActor* actor)
   {
     this->Superclass::RenderPieceFinish(ren, actor);
     this->ReliefTextureObject->Deactivate();
+    if (this->Method == MaximumMipmap && this->PyramidTextureObject)
+    {
+      this->PyramidTextureObject->Deactivate();
+    }
   }
   this->ReadyToDraw = false;
 }
@@ -467,7 +648,9 @@ std::string vtkReliefMapper::ShaderKey() const
 {
   return std::to_string(this->Method) + (this->SelfShadowing ? "S" : "s") +
     (this->Silhouettes ? "E" : "e") + (this->WriteDepth ? "D" : "d") +
-    (this->HasAlbedoTexture ? "A" : "a") + std::to_string(this->Output);
+    (this->HasAlbedoTexture ? "A" : "a") + std::to_string(this->Output) +
+    (this->ConePacked ? "C" : "c") + (this->AdaptiveSteps ? "V" : "v") +
+    (this->LevelOfDetail ? "L" : "l");
 }
 
 //------------------------------------------------------------------------------
@@ -508,7 +691,7 @@ void vtkReliefMapper::ReplaceShaderValues(
   this->Superclass::ReplaceShaderValues(shaders, ren, actor);
 
   fs = shaders[vtkShader::Fragment]->GetSource();
-  std::string defines = "#define ML_METHOD " + std::to_string(this->Method) + "\n" +
+  std::string defines = MethodDefines() + "#define ML_METHOD " + std::to_string(this->Method) + "\n" +
     "#define ML_REFINE " + std::to_string(RefinementKind(this->Method)) + "\n" +
     "#define ML_OUTPUT " + std::to_string(this->Output) + "\n";
   if (this->SelfShadowing)
@@ -527,18 +710,31 @@ void vtkReliefMapper::ReplaceShaderValues(
   {
     defines += "#define ML_ALBEDO_SAMPLER actortexture\n";
   }
+  if (this->ConePacked)
+  {
+    defines += "#define ML_CONE_PACKED\n";
+  }
+  if (this->AdaptiveSteps)
+  {
+    defines += "#define ML_ADAPTIVE_STEPS\n";
+  }
   const std::string declarations = defines +
     "in vec3 mlTangentVC;\n"
     "in vec2 mlTCoordVC;\n"
     "uniform int mlCameraParallel;\n"
     "uniform mat4 mlViewToClip;\n" +
-    vtkReliefHeightFieldFS + vtkReliefMarchFS + vtkReliefLightingFS;
+    vtkReliefHeightFieldFS + (this->Method == MaximumMipmap ? vtkReliefMaxMipmapFS : "") +
+    vtkReliefMarchFS + vtkReliefLightingFS;
   vtkShaderProgram::Substitute(fs, "//MESOLIGHT::Dec", declarations);
   vtkShaderProgram::Substitute(fs, "//MESOLIGHT::UniformFlow::Impl",
     "vec3 mlDPdx = dFdx(vertexVC.xyz);\n"
     "  vec3 mlDPdy = dFdy(vertexVC.xyz);\n"
     "  vec2 mlDUVdx = dFdx(mlTCoordVC);\n"
-    "  vec2 mlDUVdy = dFdy(mlTCoordVC);");
+    "  vec2 mlDUVdy = dFdy(mlTCoordVC);" +
+      std::string(this->LevelOfDetail
+          ? "\n  mlMarchLod = max(0.0, log2(max(length(mlDUVdx * mlTextureSize), "
+            "length(mlDUVdy * mlTextureSize))));"
+          : ""));
   vtkShaderProgram::Substitute(fs, "//MESOLIGHT::Relief::Impl", vtkReliefImplFS);
   shaders[vtkShader::Fragment]->SetSource(fs);
 
@@ -577,6 +773,15 @@ void vtkReliefMapper::SetMapperShaderParameters(
       : 1.0f);
   program->SetUniformi("mlLinearSteps", this->LinearSteps);
   program->SetUniformi("mlRefinementSteps", this->RefinementSteps);
+  program->SetUniformi("mlMinimumSteps", std::min(this->MinimumSteps, this->LinearSteps));
+  const float textureSize[2] = { static_cast<float>(this->ReliefTextureSize[0]),
+    static_cast<float>(this->ReliefTextureSize[1]) };
+  program->SetUniform2f("mlTextureSize", textureSize);
+  if (this->Method == MaximumMipmap && this->PyramidTextureObject)
+  {
+    program->SetUniformi("mlMinDepthPyramid", this->PyramidTextureObject->GetTextureUnit());
+    program->SetUniformi("mlPyramidLevels", this->PyramidLevels);
+  }
 
   vtkCamera* camera = ren->GetActiveCamera();
   program->SetUniformi("mlCameraParallel", camera->GetParallelProjection());
@@ -686,6 +891,11 @@ void vtkReliefMapper::SetLightUniforms(vtkShaderProgram* program, vtkRenderer* r
 void vtkReliefMapper::ReleaseGraphicsResources(vtkWindow* win)
 {
   this->ReliefTextureObject->ReleaseGraphicsResources(win);
+  if (this->PyramidTextureObject)
+  {
+    this->PyramidTextureObject->ReleaseGraphicsResources(win);
+  }
+  this->PyramidLevels = 0;
   this->ReliefTextureUploaded = nullptr;
   this->ShaderKeys.clear();
   this->Superclass::ReleaseGraphicsResources(win);
@@ -704,5 +914,8 @@ void vtkReliefMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "WriteDepth: " << (this->WriteDepth ? "On" : "Off") << "\n";
   os << indent << "RepeatTexture: " << (this->RepeatTexture ? "On" : "Off") << "\n";
   os << indent << "Output: " << this->Output << "\n";
+  os << indent << "AdaptiveSteps: " << (this->AdaptiveSteps ? "On" : "Off") << "\n";
+  os << indent << "MinimumSteps: " << this->MinimumSteps << "\n";
+  os << indent << "LevelOfDetail: " << (this->LevelOfDetail ? "On" : "Off") << "\n";
   os << indent << "ReliefTexture: " << this->GetReliefTexture() << "\n";
 }

@@ -43,9 +43,11 @@
 
 #include <map>    // for ShaderKeys
 #include <string> // for ShaderKey
+#include <vector> // for UpdatePyramid
 
 class vtkAlgorithmOutput;
 class vtkImageData;
+class vtkOpenGLRenderWindow;
 class vtkTextureObject;
 
 class MESOLIGHTRELIEF_EXPORT vtkReliefMapper : public vtkOpenGLPolyDataMapper
@@ -116,12 +118,37 @@ public:
   ///@{
   /**
    * Number of linear-search steps from the surface to depth 1 (default 10) and of refinement
-   * steps (binary search; default 8). Clamped to [1, 1024] and [0, 64].
+   * steps (binary search; default 8). Clamped to [1, 1024] and [0, 64]. For iterative parallax
+   * LinearSteps counts iterations, for cone stepping cone steps, and for MaximumMipmap it is
+   * the iteration budget of the traversal (give it 64 or more).
    */
   vtkSetClampMacro(LinearSteps, int, 1, 1024);
   vtkGetMacro(LinearSteps, int);
   vtkSetClampMacro(RefinementSteps, int, 0, 64);
   vtkGetMacro(RefinementSteps, int);
+  ///@}
+
+  ///@{
+  /**
+   * View-angle adaptive step counts (Tatarchuk 2006): LinearSteps at grazing angles down to
+   * MinimumSteps head-on. Default off.
+   */
+  vtkSetMacro(AdaptiveSteps, bool);
+  vtkGetMacro(AdaptiveSteps, bool);
+  vtkBooleanMacro(AdaptiveSteps, bool);
+  vtkSetClampMacro(MinimumSteps, int, 1, 1024);
+  vtkGetMacro(MinimumSteps, int);
+  ///@}
+
+  ///@{
+  /**
+   * Sample the height field at the pixel footprint's mipmap level (the relief texture gets
+   * mipmaps), so distant relief is filtered rather than aliased. Cone ratios are always read at
+   * the base level. Default off.
+   */
+  vtkSetMacro(LevelOfDetail, bool);
+  vtkGetMacro(LevelOfDetail, bool);
+  vtkBooleanMacro(LevelOfDetail, bool);
   ///@}
 
   ///@{
@@ -167,6 +194,7 @@ public:
     HitUOutput = 1,            ///< hit u as 24-bit fixed point in RGB, for measurements
     HitVOutput = 2,            ///< hit v, likewise
     LightVisibilityOutput = 3, ///< white where the first light reaches the hit point, else black
+    NonFiniteCheckOutput = 4,  ///< red where a NaN or Inf arose on the way to the colour, else green
     NumberOfOutputs
   };
 
@@ -230,6 +258,15 @@ protected:
   bool WriteDepth = true;
   bool RepeatTexture = false;
   int Output = ShadedOutput;
+  bool AdaptiveSteps = false;
+  int MinimumSteps = 4;
+  bool LevelOfDetail = false;
+  bool ConePacked = false; // the relief texture carries cone ratios in B (vtkConeMapFilter)
+  int ConeType = NoConeMap;
+  bool UploadedWithMipmaps = false;
+  vtkSmartPointer<vtkTextureObject> PyramidTextureObject;
+  int PyramidLevels = 0;
+  bool UpdatePyramid(vtkOpenGLRenderWindow* renWin, const std::vector<float>& depth);
 
   vtkSmartPointer<vtkImageData> ReliefTextureData;
   vtkSmartPointer<vtkPolyData> PreparedInput;

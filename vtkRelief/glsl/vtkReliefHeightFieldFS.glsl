@@ -1,26 +1,52 @@
-// Mesolight relief: height-field access shared by every march method.
+// Mesolight relief: height-field access shared by every method.
 //
 // Relief texture (seed 000, §4.1): tangent-space normal packed as (n+1)/2 in RGB, depth in A with
-// 0 = the mesh surface and 1 = the deepest point. Texture space is (u, v, depth).
+// 0 = the mesh surface and 1 = the deepest point. Texture space is (u, v, depth). A cone-packed
+// texture (vtkConeMapFilter, ML_CONE_PACKED) keeps the normal's x, y in RG and the cone ratio
+// (horizontal radius in texture widths per unit of depth) in B, as in the relief thesis.
 
 uniform sampler2D mlReliefTexture;
 uniform float mlDepthScale;    // world depth of depth = 1 over the world length of one u unit
 uniform float mlGradientScale; // 1 / depth scale the normals were baked with (0: flat bake)
 uniform float mlTexelAspect;   // texture height / width in texels (texels are square)
+uniform vec2 mlTextureSize;    // texels
 uniform int mlLinearSteps;
 uniform int mlRefinementSteps;
+uniform int mlMinimumSteps; // adaptive step counts: from mlLinearSteps (grazing) to this (head-on)
 
-// Marches take explicit level 0: implicit derivatives are undefined inside divergent loops.
+// The level of detail the march samples at: 0, or the pixel footprint when LevelOfDetail is on.
+// Marches use explicit levels: implicit derivatives are undefined inside divergent loops.
+float mlMarchLod = 0.0;
+
 float mlDepthAt(vec2 uv)
 {
-  return textureLod(mlReliefTexture, uv, 0.0).a;
+  return textureLod(mlReliefTexture, uv, mlMarchLod).a;
 }
+
+vec3 mlPackedNormalAt(vec2 uv)
+{
+  vec4 texel = textureLod(mlReliefTexture, uv, mlMarchLod);
+#ifdef ML_CONE_PACKED
+  vec2 nxy = texel.rg * 2.0 - 1.0;
+  return vec3(nxy, sqrt(max(0.0, 1.0 - dot(nxy, nxy))));
+#else
+  return texel.rgb * 2.0 - 1.0;
+#endif
+}
+
+#ifdef ML_CONE_PACKED
+// Cone ratio at the base level: cone maps are never averaged (an average cone is not a cone).
+float mlConeAt(vec2 uv)
+{
+  return max(textureLod(mlReliefTexture, uv, 0.0).b, 0.0);
+}
+#endif
 
 // (d depth / du, d depth / dv) recovered from the baked normal n ~ (k dd/dx, k dd/dy, 1), where x = u
 // and y = v * aspect are measured in texture widths (vtkReliefTextureFilter's convention).
 vec2 mlDepthGradient(vec2 uv)
 {
-  vec3 n = textureLod(mlReliefTexture, uv, 0.0).rgb * 2.0 - 1.0;
+  vec3 n = mlPackedNormalAt(uv);
   float nz = max(n.z, 1e-4);
   return vec2(n.x, n.y * mlTexelAspect) * (mlGradientScale / nz);
 }

@@ -9,7 +9,8 @@
   vec3 mlHitPos = mlPos;
   vec3 mlShadingNormal = mlN;
   mat3 mlWorldToTexture = mat3(0.0);
-  if (abs(mlDet) > 1e-30)
+  bool mlHasFrame = abs(mlDet) > 1e-30;
+  if (mlHasFrame)
   {
     vec3 dPdu = (mlDPdx * mlDUVdy.y - mlDPdy * mlDUVdx.y) / mlDet;
     vec3 dPdv = (mlDPdy * mlDUVdx.x - mlDPdx * mlDUVdy.x) / mlDet;
@@ -26,10 +27,18 @@
     mlWorldToTexture = inverse(mat3(dPdu, dPdv, depthAxis));
     vec3 dir = mlCameraParallel != 0 ? vec3(0.0, 0.0, -1.0) : normalize(mlPos);
     vec3 q = mlWorldToTexture * dir; // texture-space change per unit of world distance
-#if ML_METHOD != 0
+    mlCosView = clamp(-dot(dir, mlN), 0.0, 1.0);
+    mlViewSteps = mlLinearSteps;
+#ifdef ML_ADAPTIVE_STEPS
+    // More steps at grazing angles, where the ray crosses more texels (Tatarchuk 2006).
+    mlViewSteps = int(mix(float(mlLinearSteps), float(mlMinimumSteps), mlCosView) + 0.5);
+#endif
+#if ML_METHOD != ML_TEXTURE_MAPPING && ML_METHOD != ML_BUMP
     if (worldDepth > 0.0 && q.z > 1e-6)
     {
-      vec3 span = vec3(q.xy / q.z, 1.0); // from depth 0 to depth 1
+      // From depth 0 to depth 1. At grazing angles the span grows without bound; it is kept
+      // finite so no NaN or Inf reaches the samplers (silhouettes discard such fragments).
+      vec3 span = vec3(clamp(q.xy / q.z, vec2(-1e4), vec2(1e4)), 1.0);
       float t = mlTraceView(mlHit, span);
       mlHit = mlHit + t * span;
       mlHitPos = mlPos + dir * (mlHit.z / q.z);
@@ -41,16 +50,23 @@
       discard;
     }
 #endif
+#if ML_METHOD != ML_TEXTURE_MAPPING
     vec2 g = mlDepthGradient(mlHit.xy);
     vec3 pu = dPdu - mlN * (worldDepth * g.x);
     vec3 pv = dPdv - mlN * (worldDepth * g.y);
     mlShadingNormal = normalize(cross(pu, pv) * handedness);
+#endif
   }
+  // Bump mapping shades the undisplaced point but shadows it from the height below it.
+  vec3 mlShadowPoint = mlHit;
+#if ML_METHOD == ML_BUMP
+  mlShadowPoint.z = mlDepthAt(mlHit.xy);
+#endif
   vec3 diffuse = vec3(0.0);
   vec3 specular = vec3(0.0);
   float mlFirstLightVisible = 0.0;
-  mlAccumulateLights(mlHitPos, mlShadingNormal, mlHit, mlWorldToTexture, diffuse, specular,
-    mlFirstLightVisible);
+  mlAccumulateLights(mlHitPos, mlShadingNormal, mlShadowPoint, mlWorldToTexture,
+    mlHasFrame, diffuse, specular, mlFirstLightVisible);
 #if ML_OUTPUT == 1 || ML_OUTPUT == 2
   // One hit texture coordinate (u or v) as 24-bit fixed point in RGB, opaque (measurement).
   float mlFixed = floor(clamp(ML_OUTPUT == 1 ? mlHit.x : mlHit.y, 0.0, 1.0) * 16777215.0 + 0.5);
@@ -65,6 +81,13 @@
 #ifdef ML_ALBEDO_SAMPLER
   gl_FragData[0] = clamp(gl_FragData[0], 0.0, 1.0) *
     textureGrad(ML_ALBEDO_SAMPLER, mlHit.xy, mlDUVdx, mlDUVdy);
+#endif
+#if ML_OUTPUT == 4
+  // Red where anything on the way to the colour was NaN or Inf (stress tests), else green.
+  bool mlBad = any(isnan(mlHit)) || any(isinf(mlHit)) || any(isnan(mlHitPos)) ||
+    any(isinf(mlHitPos)) || any(isnan(mlShadingNormal)) || any(isnan(gl_FragData[0])) ||
+    any(isinf(gl_FragData[0]));
+  gl_FragData[0] = mlBad ? vec4(1.0, 0.0, 0.0, 1.0) : vec4(0.0, 1.0, 0.0, 1.0);
 #endif
 #endif
 #ifdef ML_WRITE_DEPTH

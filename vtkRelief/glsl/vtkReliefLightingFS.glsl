@@ -19,8 +19,9 @@ uniform float mlSpecularPower;
 //   posVC, normalVC: the hit point and the height field's normal there, view coordinates
 //   hit: the hit in texture space; worldToTexture maps a view-space direction to texture space
 //   firstLightVisible: 1 when light 0 reaches the point (for measurements), else 0
+//   marchShadows: false where the fragment has no usable tangent frame
 void mlAccumulateLights(vec3 posVC, vec3 normalVC, vec3 hit, mat3 worldToTexture,
-  inout vec3 diffuse, inout vec3 specular, out float firstLightVisible)
+  bool marchShadows, inout vec3 diffuse, inout vec3 specular, out float firstLightVisible)
 {
   firstLightVisible = 0.0;
   vec3 viewDir = normalize(-posVC);
@@ -51,7 +52,8 @@ void mlAccumulateLights(vec3 posVC, vec3 normalVC, vec3 hit, mat3 worldToTexture
 #ifdef ML_SELF_SHADOWING
     vec3 toLight = worldToTexture * (-lightDir);
     // A light at or below the macro-surface horizon is blocked by the surface itself.
-    if (toLight.z >= -1e-6 || mlShadowed(hit, toLight / -toLight.z))
+    if (marchShadows &&
+      (toLight.z >= -1e-6 || mlShadowed(hit, clamp(toLight / -toLight.z, -1e4, 1e4))))
     {
       continue;
     }

@@ -1,22 +1,32 @@
-// Mesolight relief: the march skeleton, written once for every method (seed 000, §4.1.2-4.2).
+// Mesolight relief: the march skeleton, written once for every method (seed 000, §4.1-4.2).
 //
 // A ray through the height field in texture space is p(t) = origin + t * span, t in [0, 1], with
-// p.z the depth of the ray. A sample is "below" the height field when its depth is at least the
-// stored depth. Methods differ only in how the bracket found by the linear search is refined,
-// selected at compile time by ML_REFINE (0: none, 1: one secant step, 2: binary search).
+// p.z the depth of the ray. A view ray enters at the surface (origin.z = 0) and span.z = 1; a
+// shadow ray runs from where the light ray enters the surface down to a hit point. A sample is
+// "below" the height field when its depth is at least the stored depth. Methods are selected at
+// compile time (ML_METHOD); they share the searches and refinements below.
 
-// Linear search (Levoy 1990; the "quasi-safe" first pass of relief mapping): returns the first
-// sample at or below the height field and, in tAbove, the last sample above it. A view ray ends at
-// depth 1, which is never above the height field, so it always returns a hit.
-float mlLinearSearch(vec3 origin, vec3 span, int steps, out float tAbove)
+float mlCosView = 1.0; // cosine of the view angle, for offset limiting
+int mlViewSteps = 10;   // linear (or cone) steps for this view ray, adaptive if asked
+
+// Ray depth minus height-field depth at t: < 0 above the surface, >= 0 at or below it.
+float mlGap(vec3 origin, vec3 span, float t)
 {
-  float dt = 1.0 / float(steps);
-  tAbove = 0.0;
+  vec3 p = origin + t * span;
+  return p.z - mlDepthAt(p.xy);
+}
+
+// Linear search (Levoy 1990; the "quasi-safe" first pass of relief mapping): the first sample at
+// or below the height field and, in tAbove, the last sample above it. A view ray ends at depth 1,
+// never above the height field, so it always returns a hit.
+float mlLinearSearch(vec3 origin, vec3 span, float tStart, int steps, out float tAbove)
+{
+  float dt = (1.0 - tStart) / float(steps);
+  tAbove = tStart;
   for (int i = 1; i <= steps; ++i)
   {
-    float t = float(i) * dt;
-    vec3 p = origin + t * span;
-    if (p.z >= mlDepthAt(p.xy))
+    float t = tStart + float(i) * dt;
+    if (mlGap(origin, span, t) >= 0.0)
     {
       return t;
     }
@@ -32,8 +42,7 @@ float mlBinaryRefine(vec3 origin, vec3 span, float tAbove, float tBelow, int ste
   for (int i = 0; i < steps; ++i)
   {
     float tm = 0.5 * (tAbove + tBelow);
-    vec3 p = origin + tm * span;
-    if (p.z >= mlDepthAt(p.xy))
+    if (mlGap(origin, span, tm) >= 0.0)
     {
       tBelow = tm;
     }
@@ -45,53 +54,187 @@ float mlBinaryRefine(vec3 origin, vec3 span, float tAbove, float tBelow, int ste
   return 0.5 * (tAbove + tBelow);
 }
 
-// One secant step (parallax occlusion mapping, Tatarchuk 2006): intersect the ray with the
-// straight line through the height field at the two bracketing samples.
-float mlSecantRefine(vec3 origin, vec3 span, float tAbove, float tBelow)
+// Interval mapping (Risser et al. 2006; seed eq. 3) and the secant method: intersect the ray with
+// the straight line through the height field at the bracket's ends, keep the half that still
+// brackets the crossing, repeat. One step of it is parallax occlusion mapping's refinement.
+float mlIntervalRefine(vec3 origin, vec3 span, float tAbove, float tBelow, int steps)
 {
-  vec3 pa = origin + tAbove * span;
-  vec3 pb = origin + tBelow * span;
-  float da = pa.z - mlDepthAt(pa.xy); // < 0: above
-  float db = pb.z - mlDepthAt(pb.xy); // >= 0: below
-  float denom = da - db;
-  return denom < 0.0 ? mix(tAbove, tBelow, da / denom) : tBelow;
+  float gA = mlGap(origin, span, tAbove);
+  float gB = mlGap(origin, span, tBelow);
+  float t = tBelow;
+  for (int i = 0; i < steps; ++i)
+  {
+    float denom = gA - gB;
+    if (denom >= 0.0)
+    {
+      break; // not a bracket (flat or degenerate): keep the sample below
+    }
+    t = mix(tAbove, tBelow, gA / denom);
+    float g = mlGap(origin, span, t);
+    if (g >= 0.0)
+    {
+      tBelow = t;
+      gB = g;
+    }
+    else
+    {
+      tAbove = t;
+      gA = g;
+    }
+  }
+  return t;
 }
 
-// First intersection of a view ray entering the surface at origin (origin.z = 0).
+// Parallax with slope information (McGuire & McGuire 2005; seed §4.1.1 d): intersect the ray
+// with the tangent plane of the height field at the current estimate. Repeated, it is iterative
+// parallax mapping (Premecz 2006). Unsafe: it may converge to any intersection.
+float mlSlopeStep(vec3 origin, vec3 span, float t)
+{
+  vec2 x = origin.xy + t * span.xy;
+  float h = mlDepthAt(x);
+  vec2 g = mlDepthGradient(x);
+  float denom = max(1.0 - dot(g, span.xy), 0.2); // a plane nearly along the ray: damp the step
+  return clamp((h + dot(g, origin.xy - x)) / denom, 0.0, 1.0);
+}
+
+#ifdef ML_CONE_PACKED
+// Cone stepping (Dummer 2006; relaxed: Policarpo & Oliveira 2007). From a point above the
+// surface, advance to where the ray leaves the cone of the texel below it. Conservative cones
+// are empty: the ray never goes below. Relaxed cones may be entered once: the ray may land below
+// the surface, having crossed it exactly once, which brackets the first hit.
+// Returns the first t found below the surface (bracketed = true, tAbove the point before it), or
+// the last point reached.
+float mlConeSearch(vec3 origin, vec3 span, int steps, out float tAbove, out bool bracketed)
+{
+  // Horizontal travel in texture widths per unit of depth.
+  float rate = length(vec2(span.x, span.y * mlTexelAspect)) / max(span.z, 1e-6);
+  float t = 0.0;
+  tAbove = 0.0;
+  bracketed = false;
+  for (int i = 0; i < steps; ++i)
+  {
+    vec3 p = origin + t * span;
+    float depth = mlDepthAt(p.xy);
+    if (p.z >= depth)
+    {
+      bracketed = true;
+      return t;
+    }
+    float c = mlConeAt(p.xy);
+    tAbove = t;
+    t = min(t + c * (depth - p.z) / ((rate + c) * max(span.z, 1e-6)), 1.0);
+  }
+  if (mlGap(origin, span, t) >= 0.0)
+  {
+    bracketed = true;
+  }
+  return t;
+}
+#endif
+
+// First intersection (or the method's estimate of it) of a view ray entering at origin.
 float mlTraceView(vec3 origin, vec3 span)
 {
-  float tAbove;
-  float tBelow = mlLinearSearch(origin, span, mlLinearSteps, tAbove);
-#if ML_REFINE == 2
+  float tAbove = 0.0;
+#if ML_METHOD == ML_TEXTURE_MAPPING || ML_METHOD == ML_BUMP
+  return 0.0;
+#elif ML_METHOD == ML_PARALLAX
+  return mlDepthAt(origin.xy); // constant height around the entry point (Kaneko et al. 2001)
+#elif ML_METHOD == ML_PARALLAX_OFFSET_LIMITING
+  return mlDepthAt(origin.xy) * mlCosView; // offset no longer than the height (Welsh 2004)
+#elif ML_METHOD == ML_PARALLAX_SLOPE
+  return mlSlopeStep(origin, span, 0.0);
+#elif ML_METHOD == ML_ITERATIVE_PARALLAX
+  float t = 0.0;
+  for (int i = 0; i < mlViewSteps; ++i)
+  {
+    t = mlSlopeStep(origin, span, t);
+  }
+  return t;
+#elif ML_METHOD == ML_BINARY_SEARCH
+  return mlBinaryRefine(origin, span, 0.0, 1.0, mlRefinementSteps);
+#elif ML_METHOD == ML_SECANT
+  return mlIntervalRefine(origin, span, 0.0, 1.0, mlRefinementSteps);
+#elif ML_METHOD == ML_LINEAR_SEARCH
+  return mlLinearSearch(origin, span, 0.0, mlViewSteps, tAbove);
+#elif ML_METHOD == ML_PARALLAX_OCCLUSION
+  float tBelow = mlLinearSearch(origin, span, 0.0, mlViewSteps, tAbove);
+  return mlIntervalRefine(origin, span, tAbove, tBelow, 1);
+#elif ML_METHOD == ML_RELIEF
+  float tBelow = mlLinearSearch(origin, span, 0.0, mlViewSteps, tAbove);
   return mlBinaryRefine(origin, span, tAbove, tBelow, mlRefinementSteps);
-#elif ML_REFINE == 1
-  return mlSecantRefine(origin, span, tAbove, tBelow);
+#elif ML_METHOD == ML_INTERVAL
+  float tBelow = mlLinearSearch(origin, span, 0.0, mlViewSteps, tAbove);
+  return mlIntervalRefine(origin, span, tAbove, tBelow, mlRefinementSteps);
+#elif ML_METHOD == ML_RELAXED_CONE_BINARY || ML_METHOD == ML_RELAXED_CONE_INTERVAL
+  bool bracketed;
+  float tBelow = mlConeSearch(origin, span, mlViewSteps, tAbove, bracketed);
+  if (!bracketed)
+  {
+    // Steps ran out above the surface: finish with a short linear search (rare).
+    tBelow = mlLinearSearch(origin, span, tBelow, 4, tAbove);
+  }
+#if ML_METHOD == ML_RELAXED_CONE_BINARY
+  return mlBinaryRefine(origin, span, tAbove, tBelow, mlRefinementSteps);
 #else
-  return tBelow;
+  return mlIntervalRefine(origin, span, tAbove, tBelow, mlRefinementSteps);
+#endif
+#elif ML_METHOD == ML_CONSERVATIVE_CONE
+  bool bracketed;
+  return mlConeSearch(origin, span, mlViewSteps, tAbove, bracketed);
+#elif ML_METHOD == ML_MAXIMUM_MIPMAP
+  return mlTraceMaxMipmap(origin, span, mlViewSteps);
+#else
+  return 0.0;
 #endif
 }
 
 // Hard self-shadow test (seed 000, §4.3): march from where the light ray enters the surface down
 // to the hit point; the hit is shadowed when the ray passes below the height field before it.
-// The number of samples is proportional to the depth travelled, so shallow hits cost less.
+// The work is proportional to the depth travelled, so shallow hits cost less; cone maps and the
+// min-depth pyramid skip empty space as they do for view rays.
 bool mlShadowed(vec3 hit, vec3 spanUpPerDepth)
 {
-  if (hit.z <= 0.0)
+  if (hit.z <= 1e-4)
   {
     return false;
   }
   vec3 origin = hit + spanUpPerDepth * hit.z; // origin.z == 0
   vec3 span = hit - origin;
+  const float bias = 2e-3; // depth units: avoids self-shadowing acne at the hit itself
+#if ML_METHOD == ML_MAXIMUM_MIPMAP
+  float t = mlTraceMaxMipmap(origin + vec3(0.0, 0.0, -bias), span, mlLinearSteps);
+  return t < 1.0 - 1e-3;
+#else
+#ifdef ML_CONE_PACKED
+  float rate = length(vec2(span.x, span.y * mlTexelAspect)) / span.z;
+  float t = 0.0;
+  for (int i = 0; i < mlLinearSteps && t < 1.0; ++i)
+  {
+    vec3 p = origin + t * span;
+    float depth = mlDepthAt(p.xy);
+    if (p.z > depth + bias)
+    {
+      return t < 1.0 - 1e-3;
+    }
+    // At least a linear step's worth, so stalls at conservative cones' walls still progress.
+    float c = mlConeAt(p.xy);
+    t += max(c * (depth - p.z) / ((rate + c) * span.z), 1.0 / float(4 * mlLinearSteps));
+  }
+  return false;
+#else
   int steps = max(2, int(ceil(float(mlLinearSteps) * hit.z)) + 1);
   float dt = 1.0 / float(steps);
-  // Skip the last sample (the hit itself); a small bias avoids self-shadowing acne.
+  // Skip the last sample (the hit itself).
   for (int i = 1; i < steps; ++i)
   {
     vec3 p = origin + (float(i) * dt) * span;
-    if (p.z > mlDepthAt(p.xy) + 2e-3)
+    if (p.z > mlDepthAt(p.xy) + bias)
     {
       return true;
     }
   }
   return false;
+#endif
+#endif
 }
