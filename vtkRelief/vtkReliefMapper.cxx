@@ -92,8 +92,9 @@ std::string MethodDefines()
 
 // The min-depth pyramid of exact maximum-mipmap tracing (Tevs et al. 2008), as
 // vtkReliefMaxMipmapFS.glsl reads it: level 0 has a cell between each 2x2 texel centres plus the
-// clamp-to-edge border cells ((W+1) x (H+1)), holding the minimum depth of its corner texels;
-// each next level the minimum of 2x2 cells, sizes halving rounded up, down to 1x1.
+// clamp-to-edge border cells ((W+1) x (H+1)), holding the minimum depth of its corner texels.
+// Level sizes halve rounding down, as OpenGL requires of a complete mipmap; a level's last cell
+// also covers the odd cell left over below it, so each cell bounds everything beneath it.
 std::vector<std::vector<float>> MinDepthPyramid(
   const std::vector<float>& depth, int w, int h, std::vector<std::pair<int, int>>& sizes)
 {
@@ -118,19 +119,20 @@ std::vector<std::vector<float>> MinDepthPyramid(
   levels.push_back(level);
   while (lw > 1 || lh > 1)
   {
-    const int nw = (lw + 1) / 2, nh = (lh + 1) / 2;
+    const int nw = std::max(1, lw / 2), nh = std::max(1, lh / 2);
     std::vector<float> next(static_cast<size_t>(nw) * nh);
     const std::vector<float>& prev = levels.back();
     for (int j = 0; j < nh; ++j)
     {
+      const int j1 = (j == nh - 1) ? lh : std::min(2 * j + 2, lh);
       for (int i = 0; i < nw; ++i)
       {
-        float m = prev[static_cast<size_t>(2 * j) * lw + 2 * i];
-        for (int dj = 0; dj < 2; ++dj)
+        const int i1 = (i == nw - 1) ? lw : std::min(2 * i + 2, lw);
+        float m = 1.0f;
+        for (int pj = 2 * j; pj < j1; ++pj)
         {
-          for (int di = 0; di < 2; ++di)
+          for (int pi = 2 * i; pi < i1; ++pi)
           {
-            const int pi = std::min(2 * i + di, lw - 1), pj = std::min(2 * j + dj, lh - 1);
             m = std::min(m, prev[static_cast<size_t>(pj) * lw + pi]);
           }
         }
@@ -566,6 +568,11 @@ bool vtkReliefMapper::UpdatePyramid(vtkOpenGLRenderWindow* renWin, const std::ve
   }
   // vtkTextureObject uploads one level; the coarser ones are ours (minima, not averages).
   pyramid->Bind();
+  // Tightly packed rows, whatever pixel-store state earlier uploads left behind.
+  glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
+  glPixelStorei(GL_UNPACK_SKIP_ROWS, 0);
+  glPixelStorei(GL_UNPACK_SKIP_PIXELS, 0);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
   for (size_t l = 1; l < levels.size(); ++l)
   {
     glTexImage2D(GL_TEXTURE_2D, static_cast<GLint>(l), GL_R32F, sizes[l].first, sizes[l].second, 0,

@@ -3,8 +3,10 @@
 //
 // Level 0 holds one value per cell between texel centres, (W+1) x (H+1) cells including the
 // clamp-to-edge border cells: the minimum depth of the cell's four corner texels, which bounds
-// the bilinear patch from above. Level L+1 is the minimum over 2x2 cells of level L (sizes halve
-// rounding up). In cell space x = u W - 0.5, texel i sits at x = i and cell k spans [k-1, k].
+// the bilinear patch from above. Level L+1 is the minimum over 2x2 cells of level L; sizes halve
+// rounding down (a complete OpenGL mipmap) and a level's last cell also covers the leftover cell
+// below it, so level-0 cell k lies in level-L cell min(k >> L, size_L - 1). In cell space
+// x = u W - 0.5, texel i sits at x = i and cell k spans [k-1, k].
 
 uniform sampler2D mlMinDepthPyramid;
 uniform int mlPyramidLevels;
@@ -86,12 +88,13 @@ float mlTraceMaxMipmap(vec3 origin, vec3 span, int maxIterations)
     vec2 x = p.xy * mlTextureSize - 0.5;
     ivec2 k0 = clamp(ivec2(floor(x)) + 1, ivec2(0), cells0 - 1);
     int scale = 1 << level;
-    ivec2 kL = k0 / scale;
-    // The cell's extent in cell space; border cells reach to infinity (clamp extension).
+    ivec2 sizeL = textureSize(mlMinDepthPyramid, level);
+    ivec2 kL = min(k0 / scale, sizeL - 1);
+    // The cell's extent in cell space; first and last cells reach to infinity (clamp extension).
     vec2 lo = vec2(kL * scale) - 1.0;
     vec2 hi = vec2((kL + 1) * scale) - 1.0;
-    lo = mix(lo, vec2(-1e30), lessThanEqual(kL * scale, ivec2(0)));
-    hi = mix(hi, vec2(1e30), greaterThanEqual((kL + 1) * scale, cells0));
+    lo = mix(lo, vec2(-1e30), lessThanEqual(kL, ivec2(0)));
+    hi = mix(hi, vec2(1e30), greaterThanEqual(kL, sizeL - 1));
     vec2 tx = vec2(1e30);
     tx.x = dx.x > 0.0 ? (hi.x - x.x) / dx.x : (dx.x < 0.0 ? (lo.x - x.x) / dx.x : 1e30);
     tx.y = dx.y > 0.0 ? (hi.y - x.y) / dx.y : (dx.y < 0.0 ? (lo.y - x.y) / dx.y : 1e30);
@@ -121,6 +124,7 @@ float mlTraceMaxMipmap(vec3 origin, vec3 span, int maxIterations)
         return hit;
       }
       t = tExit + nudge;
+      level = min(level + 1, top);
     }
     if (t >= 1.0)
     {
