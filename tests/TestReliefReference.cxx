@@ -125,7 +125,7 @@ TEST_P(ReliefReferenceVsDenseMesh, DepthAndCoverageAgree)
             << " s; covered " << reference.CountCovered() << " of footprint " << a.Footprint
             << "; depth within 5% of the relief depth: " << a.DepthAgreement
             << "%; coverage mismatch " << a.CoverageMismatch << "%" << std::endl;
-  EXPECT_GT(a.CoveredBoth, o.Width * o.Height / 8);
+  EXPECT_GT(a.CoveredBoth, o.Width * o.Height / 20) << "at 85 deg the wall is a thin band";
   EXPECT_GE(a.DepthAgreement, 99.0);
   EXPECT_LE(a.CoverageMismatch, 1.0);
   EXPECT_LT(reference.Seconds, 2.0) << "400x400 pixels should trace well under two seconds";
@@ -133,7 +133,8 @@ TEST_P(ReliefReferenceVsDenseMesh, DepthAndCoverageAgree)
 
 INSTANTIATE_TEST_SUITE_P(Scenes, ReliefReferenceVsDenseMesh,
   ::testing::Values(ReferenceCase{ "Bricks", 0.04, 55.0 }, ReferenceCase{ "Bricks", 0.04, 80.0 },
-    ReferenceCase{ "HemisphereTorus", 0.15, 55.0 }, ReferenceCase{ "Stone", 0.08, 0.0 }));
+    ReferenceCase{ "Bricks", 0.04, 85.0 }, ReferenceCase{ "HemisphereTorus", 0.15, 55.0 },
+    ReferenceCase{ "Stone", 0.08, 0.0 }));
 
 // Negative test: a reference traced with the wrong depth scale must fail the same comparison.
 TEST(ReliefReference, WrongDepthScaleDisagreesWithTheDenseMesh)

@@ -52,7 +52,9 @@ std::vector<ReliefSweepStep> ReliefSweepStepsFor(int method)
     case vtkReliefMapper::Parallax:
     case vtkReliefMapper::ParallaxOffsetLimiting:
     case vtkReliefMapper::ParallaxSlope:
-      steps.push_back({ 1, 0, "-" });
+      // One setting; the mapper's defaults, so a method that still falls back to the default
+      // march (not yet implemented in the shaders) shows that march, not a degenerate one.
+      steps.push_back({ 10, 8, "-" });
       break;
     case vtkReliefMapper::IterativeParallax:
       for (int l : { 2, 4, 8 })
@@ -246,6 +248,7 @@ struct MapSource
   std::string Label;    // as shown in the table
   std::string Pattern;  // procedural pattern, or empty
   std::string DepthFile;
+  std::string Note; // printed under the table
 };
 
 // The "file" map: the user's depth file, or the Stone pattern written as a 16-bit PNG.
@@ -273,6 +276,8 @@ bool PrepareFileMap(const ReliefSweepSettings& settings, const std::string& dire
   }
   map.Label = "file(stone16)";
   map.DepthFile = file;
+  map.Note = "the Stone pattern written to " + file +
+    " as a 16-bit PNG and read back through vtkOIIOImageReader (tests the file path, not real data)";
   out << "map 'file': no --depth-file given, so the Stone pattern was written to " << file
       << " as a 16-bit PNG and is read back through vtkOIIOImageReader: this row set tests the "
          "file path, not real data.\n";
@@ -698,6 +703,13 @@ bool RunReliefSweep(
   for (const ReliefSweepRow& r : rows)
   {
     PrintRow(out, r);
+  }
+  for (const MapSource& map : maps)
+  {
+    if (!map.Note.empty())
+    {
+      out << map.Label << ": " << map.Note << "\n";
+    }
   }
   for (const std::string& s : skipped)
   {
