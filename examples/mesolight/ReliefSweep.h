@@ -1,0 +1,81 @@
+// `mesolight bench relief`: accuracy and speed of every relief method, measured per map, view
+// angle and step setting against exact references:
+//  - hit error (texels) and silhouettes against the CPU reference (ReliefReference.h),
+//  - shadows (first light) against the CPU reference's visibility,
+//  - colour against the dense displaced mesh drawn by VTK's stock mapper (self-shadowing off).
+// Prints a table, writes CSV and one chart per view angle (ms/frame vs mean hit error, Pareto
+// front), and ends with a summary.
+#ifndef mesolight_ReliefSweep_h
+#define mesolight_ReliefSweep_h
+
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace mesolight
+{
+
+struct ReliefSweepSettings
+{
+  // Procedural pattern names, or "file" (DepthFile; without one the Stone pattern is written to a
+  // 16-bit PNG in the output directory and read back, which tests the file path, not real data).
+  std::vector<std::string> Maps{ "Bricks", "Stone", "HemisphereTorus", "file" };
+  std::string DepthFile;
+  std::vector<double> Angles{ 0.0, 45.0, 70.0, 80.0, 85.0 };
+  int Width = 512;
+  int Height = 512;
+  int Frames = 5;                   // timed frames per configuration, after one warm-up frame
+  std::vector<std::string> Methods; // vtkReliefMapper method names; empty: all
+  std::string CsvFile;
+  std::string PlotDirectory; // one PNG chart per view angle; empty: no charts
+  int Resolution = 512;      // texels per side of the procedural maps
+  double DepthScale = 0.04;
+};
+
+/** One step setting of a method: what the mapper's LinearSteps / RefinementSteps mean for it. */
+struct ReliefSweepStep
+{
+  int LinearSteps = 10;
+  int RefinementSteps = 0;
+  std::string Label; // e.g. "16+4", "iter 4", "-"
+};
+
+/** The step settings swept for a vtkReliefMapper method (see ReliefSweep.cxx for the table). */
+std::vector<ReliefSweepStep> ReliefSweepStepsFor(int method);
+
+/** One measured configuration (map x view angle x method x step setting). */
+struct ReliefSweepRow
+{
+  std::string Map;
+  double Angle = 0.0;
+  int Method = 0;
+  std::string MethodName;
+  ReliefSweepStep Step;
+  double MedianMs = 0.0;
+  double FirstMs = 0.0; // the warm-up frame (shader compilation, uploads)
+  double HitMeanTexels = 0.0;
+  double HitP99Texels = 0.0;
+  double SilhouetteMismatch = 0.0; // % of the footprint
+  double ColorRmse = 0.0;          // 8-bit levels, shaded (no self-shadowing) vs the dense mesh
+  double Psnr = 0.0;
+  double ShadowMismatch = 0.0; // % of pixels covered in both
+  long long CoveredBoth = 0;
+  long long Footprint = 0;
+};
+
+/**
+ * Runs the sweep described by settings, printing progress, the table and the summary to out.
+ * False (with a message on out) when a scene, a reference or an output file fails.
+ */
+bool RunReliefSweep(
+  const ReliefSweepSettings& settings, std::ostream& out, std::vector<ReliefSweepRow>* rows = nullptr);
+
+/**
+ * `mesolight bench relief [options]`: args are the options after "relief". Returns the process
+ * exit code: 0 success (or --help), 1 a failed run, 2 bad arguments.
+ */
+int RunReliefSweep(const std::vector<std::string>& args);
+
+} // namespace mesolight
+
+#endif
