@@ -579,8 +579,19 @@ bool vtkReliefMapper::UpdatePyramid(vtkOpenGLRenderWindow* renWin, const std::ve
       GL_RED, GL_FLOAT, levels[l].data());
   }
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, static_cast<GLint>(levels.size()) - 1);
+  if (levels.size() > 16)
+  {
+    vtkErrorMacro(<< "Relief textures above 32768 texels per side are not supported.");
+    return false;
+  }
   vtkOpenGLCheckErrorMacro("failed uploading the min-depth pyramid");
   this->PyramidLevels = static_cast<int>(levels.size());
+  this->PyramidSizes.clear();
+  for (const auto& size : sizes)
+  {
+    this->PyramidSizes.push_back(size.first);
+    this->PyramidSizes.push_back(size.second);
+  }
   return true;
 }
 
@@ -788,6 +799,8 @@ void vtkReliefMapper::SetMapperShaderParameters(
   {
     program->SetUniformi("mlMinDepthPyramid", this->PyramidTextureObject->GetTextureUnit());
     program->SetUniformi("mlPyramidLevels", this->PyramidLevels);
+    program->SetUniform1iv("mlPyramidSizes", static_cast<int>(this->PyramidSizes.size()),
+      this->PyramidSizes.data());
   }
 
   vtkCamera* camera = ren->GetActiveCamera();

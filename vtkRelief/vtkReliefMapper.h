@@ -266,6 +266,7 @@ protected:
   bool UploadedWithMipmaps = false;
   vtkSmartPointer<vtkTextureObject> PyramidTextureObject;
   int PyramidLevels = 0;
+  std::vector<int> PyramidSizes; // cells per level, (w, h) pairs
   bool UpdatePyramid(vtkOpenGLRenderWindow* renWin, const std::vector<float>& depth);
 
   vtkSmartPointer<vtkImageData> ReliefTextureData;

@@ -8,6 +8,7 @@
 #include "ImageCompare.h"
 #include "ReliefBenchmark.h"
 #include "ReliefScene.h"
+#include "ReliefSweep.h"
 
 #include "vtkOIIOImageReader.h"
 #include "vtkOIIOImageWriter.h"
@@ -47,7 +48,9 @@ Usage:
   mesolight render [options]                   render the default relief scene
   mesolight bake DEPTH_IMAGE --out RELIEF_IMAGE [options]
                                                bake a relief texture from a depth image
-  mesolight bench [options]                    time and error of each rendering path
+  mesolight bench [options]                    time and error: relief vs the dense mesh
+  mesolight bench relief [options]             every method x steps x view angle x map:
+                                               time vs exact hit error, CSV and plots
   mesolight help [COMMAND]                     this text, or one command's options
 
 Run 'mesolight COMMAND --help' for the options of a command.
@@ -390,6 +393,10 @@ int RunBake(const std::vector<std::string>& args)
 
 int RunBench(const std::vector<std::string>& args)
 {
+  if (!args.empty() && args[0] == "relief")
+  {
+    return mesolight::RunReliefSweep(std::vector<std::string>(args.begin() + 1, args.end()));
+  }
   CommandLine cl;
   AddSceneOptions(cl);
   cl.AddValue("--sizes", "N,N,..", "relief map resolutions to measure", "512,1024");

@@ -10,6 +10,8 @@
 
 uniform sampler2D mlMinDepthPyramid;
 uniform int mlPyramidLevels;
+// Cells per level as (w, h) pairs: textureSize() of a level is unreliable on Mesa llvmpipe.
+uniform int mlPyramidSizes[32];
 
 // Depth of texel (i, j), clamped to the texture like GL_CLAMP_TO_EDGE.
 float mlTexelDepth(ivec2 ij)
@@ -88,7 +90,7 @@ float mlTraceMaxMipmap(vec3 origin, vec3 span, int maxIterations)
     vec2 x = p.xy * mlTextureSize - 0.5;
     ivec2 k0 = clamp(ivec2(floor(x)) + 1, ivec2(0), cells0 - 1);
     int scale = 1 << level;
-    ivec2 sizeL = textureSize(mlMinDepthPyramid, level);
+    ivec2 sizeL = ivec2(mlPyramidSizes[2 * level], mlPyramidSizes[2 * level + 1]);
     ivec2 kL = min(k0 / scale, sizeL - 1);
     // The cell's extent in cell space; first and last cells reach to infinity (clamp extension).
     vec2 lo = vec2(kL * scale) - 1.0;
