@@ -1,0 +1,101 @@
+// Every intersection method against the exact CPU reference (ReliefReference: the bilinear height
+// field traced exactly by HeightFieldTracer). Safe and exact methods must find the first hit to
+// within a fraction of a texel; plain texture mapping must not (negative test); unsafe methods
+// are measured and printed.
+#include "ImageCompare.h"
+#include "ReliefReference.h"
+#include "ReliefScene.h"
+#include "TestReliefTestUtilities.h"
+#include "vtkReliefMapper.h"
+
+#include <gtest/gtest.h>
+
+#include <iostream>
+
+namespace
+{
+using namespace mesolight;
+
+struct MethodCase
+{
+  const char* Method;
+  int Linear;
+  int Refine;
+  double ViewAngle;
+  double MaxMeanTexels; // < 0: measured only
+};
+
+void PrintTo(const MethodCase& c, std::ostream* os)
+{
+  *os << c.Method << " " << c.Linear << "+" << c.Refine << " at " << c.ViewAngle << " deg";
+}
+
+HitComparison MeasureHits(const MethodCase& c, const char* pattern)
+{
+  ReliefSceneOptions o;
+  o.Pattern = pattern;
+  o.Resolution = 256;
+  o.Width = o.Height = 320;
+  o.DepthScale = 0.12;
+  o.ViewAngle = c.ViewAngle;
+  o.ViewDistance = 2.2;
+  o.Method = c.Method;
+  o.LinearSteps = c.Linear;
+  o.RefinementSteps = c.Refine;
+  o.SelfShadowing = false;
+  std::string error;
+  ReliefScene scene;
+  EXPECT_TRUE(BuildReliefScene(o, scene, error)) << error;
+  auto window = MakeOffscreenWindow(o, scene.Renderer);
+  scene.Mapper->SetOutput(vtkReliefMapper::HitUOutput);
+  const Frame hitU = CaptureFrame(window);
+  scene.Mapper->SetOutput(vtkReliefMapper::HitVOutput);
+  const Frame hitV = CaptureFrame(window);
+  ReliefReference reference;
+  EXPECT_TRUE(ComputeReliefReference(MakeReliefReferenceInput(scene, o), reference, error))
+    << error;
+  const HitComparison hits = CompareHits(reference, hitU, hitV);
+  std::cout << "[" << pattern << " " << c.Method << " " << c.Linear << "+" << c.Refine << " @"
+            << c.ViewAngle << "] hit error mean " << hits.MeanTexels << " p99 " << hits.P99Texels
+            << " texels, silhouettes " << hits.SilhouetteMismatch << "%" << std::endl;
+  EXPECT_GT(hits.CoveredBoth, 1000);
+  return hits;
+}
+
+class ReliefMethodHits : public ::testing::TestWithParam<MethodCase>
+{
+};
+} // namespace
+
+TEST_P(ReliefMethodHits, AgainstExactReference)
+{
+  const MethodCase c = GetParam();
+  for (const char* pattern : { "HemisphereTorus", "Bricks" })
+  {
+    const HitComparison hits = MeasureHits(c, pattern);
+    if (c.MaxMeanTexels >= 0.0)
+    {
+      EXPECT_LE(hits.MeanTexels, c.MaxMeanTexels) << pattern;
+    }
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Safe, ReliefMethodHits,
+  ::testing::Values(MethodCase{ "relief", 32, 8, 55.0, 0.25 },
+    MethodCase{ "interval", 32, 4, 55.0, 0.25 }, MethodCase{ "pom", 32, 0, 55.0, 0.5 },
+    MethodCase{ "linear", 64, 0, 55.0, 1.0 }, MethodCase{ "max-mipmap", 128, 0, 55.0, 0.05 },
+    MethodCase{ "max-mipmap", 256, 0, 85.0, 0.5 }));
+
+INSTANTIATE_TEST_SUITE_P(Unsafe, ReliefMethodHits,
+  ::testing::Values(MethodCase{ "parallax", 1, 0, 55.0, -1.0 },
+    MethodCase{ "parallax-limit", 1, 0, 55.0, -1.0 }, MethodCase{ "parallax-slope", 1, 0, 55.0, -1.0 },
+    MethodCase{ "iterative-parallax", 4, 0, 55.0, -1.0 }, MethodCase{ "binary", 1, 8, 55.0, -1.0 },
+    MethodCase{ "secant", 1, 8, 55.0, -1.0 }));
+
+// Negative test: without a march the hit stays where the ray enters the mesh.
+TEST(ReliefMethodHitsNegative, TextureMappingMissesTheFirstHit)
+{
+  const HitComparison hits =
+    MeasureHits(MethodCase{ "texture", 1, 0, 55.0, -1.0 }, "HemisphereTorus");
+  EXPECT_GT(hits.MeanTexels, 3.0);
+}
