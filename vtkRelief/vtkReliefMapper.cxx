@@ -261,6 +261,22 @@ const char* vtkReliefMapper::GetMethodName(int method)
 }
 
 //------------------------------------------------------------------------------
+void vtkReliefMapper::SetDepthScale(double depthScale)
+{
+  if (std::isnan(depthScale))
+  {
+    vtkErrorMacro(<< "SetDepthScale: NaN is not a depth scale; keeping " << this->DepthScale << ".");
+    return;
+  }
+  depthScale = vtkMath::ClampValue(depthScale, 0.0, 10.0);
+  if (depthScale != this->DepthScale)
+  {
+    this->DepthScale = depthScale;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
 int vtkReliefMapper::GetRequiredConeMap(int method)
 {
   switch (method)

@@ -154,9 +154,9 @@ public:
   ///@{
   /**
    * Depth of depth = 1 relative to the world width of the texture (dimensionless, default 0.05).
-   * 0 renders a flat (normal-mapped) surface. Clamped to [0, 10].
+   * 0 renders a flat (normal-mapped) surface. Clamped to [0, 10]; NaN is refused with an error.
    */
-  vtkSetClampMacro(DepthScale, double, 0.0, 10.0);
+  void SetDepthScale(double depthScale);
   vtkGetMacro(DepthScale, double);
   ///@}
 

@@ -1,0 +1,188 @@
+// Numerical stress: grazing views up to 89.9 degrees, depth scales 0 and 10, 1x1, non-power-of-two,
+// flat, spike and 4096^2 maps. vtkReliefMapper's NonFiniteCheckOutput paints a fragment red when a
+// NaN or Inf arose anywhere on the way to its colour (hit, position, normal, colour), so "no red
+// pixel" means no NaN or Inf reached the framebuffer.
+#include "ImageCompare.h"
+#include "ReliefScene.h"
+#include "TestReliefTestUtilities.h"
+#include "vtkReliefMapper.h"
+
+#include <vtkImageData.h>
+#include <vtkRendererCollection.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+#include <iostream>
+#include <sstream>
+
+namespace
+{
+using namespace mesolight;
+
+struct StressResult
+{
+  long long Red = 0;
+  long long Covered = 0;
+  std::string Errors;
+};
+
+// Renders the wall with the given relief texture (or the options' pattern when null) and counts
+// red (non-finite) and covered pixels.
+StressResult Stress(ReliefSceneOptions o, vtkImageData* relief)
+{
+  o.Width = o.Height = 160;
+  o.ViewDistance = 2.2;
+  std::string error;
+  ReliefScene scene;
+  StressResult result;
+  if (!BuildReliefScene(o, scene, error))
+  {
+    result.Errors = error;
+    return result;
+  }
+  if (relief)
+  {
+    scene.Mapper->SetReliefTextureData(relief);
+  }
+  vtkNew<test::MessageRecorder> messages;
+  messages->Watch(scene.Mapper);
+  scene.Mapper->SetOutput(vtkReliefMapper::NonFiniteCheckOutput);
+  // One window for all cases: each X window costs the server resources, and a test process
+  // opening a hundred of them can exhaust Xvfb.
+  static vtkSmartPointer<vtkRenderWindow> window = MakeOffscreenWindow(o, scene.Renderer);
+  window->GetRenderers()->RemoveAllItems();
+  window->AddRenderer(scene.Renderer);
+  const Frame frame = CaptureFrame(window);
+  window->RemoveRenderer(scene.Renderer);
+  for (size_t p = 0; p < frame.Depth.size(); ++p)
+  {
+    if (!frame.Covered(p))
+    {
+      continue;
+    }
+    ++result.Covered;
+    const unsigned char* c = &frame.Rgb[3 * p];
+    result.Red += (c[0] > 128 && c[1] < 128) ? 1 : 0;
+  }
+  result.Errors = messages->Errors;
+  return result;
+}
+
+const char* const StressMethods[] = { "relief", "pom", "interval", "linear", "parallax",
+  "parallax-slope", "iterative-parallax", "binary", "secant", "max-mipmap", "bump" };
+} // namespace
+
+TEST(ReliefStress, GrazingViewsUpTo89Point9Degrees)
+{
+  for (const char* method : StressMethods)
+  {
+    for (double angle : { 80.0, 89.0, 89.9 })
+    {
+      ReliefSceneOptions o;
+      o.Pattern = "Bricks";
+      o.Resolution = 128;
+      o.Method = method;
+      o.LinearSteps = std::string(method) == "max-mipmap" ? 128 : 16;
+      o.ViewAngle = angle;
+      o.DepthScale = 0.1;
+      const StressResult r = Stress(o, nullptr);
+      EXPECT_TRUE(r.Errors.empty()) << method << " " << angle << ": " << r.Errors;
+      EXPECT_EQ(r.Red, 0) << method << " at " << angle << " degrees";
+    }
+  }
+}
+
+TEST(ReliefStress, DepthScaleZeroAndVeryLarge)
+{
+  for (const char* method : StressMethods)
+  {
+    for (double depthScale : { 0.0, 10.0 })
+    {
+      ReliefSceneOptions o;
+      o.Pattern = "HemisphereTorus";
+      o.Resolution = 64;
+      o.Method = method;
+      o.LinearSteps = std::string(method) == "max-mipmap" ? 128 : 16;
+      o.DepthScale = depthScale;
+      o.ViewAngle = 60.0;
+      const StressResult r = Stress(o, nullptr);
+      EXPECT_TRUE(r.Errors.empty()) << method << " " << depthScale << ": " << r.Errors;
+      EXPECT_EQ(r.Red, 0) << method << " with depth scale " << depthScale;
+      if (depthScale == 0.0)
+      {
+        EXPECT_GT(r.Covered, 1000) << method << ": a flat relief covers the wall";
+      }
+    }
+  }
+}
+
+TEST(ReliefStress, DegenerateAndSpikyMaps)
+{
+  struct Map
+  {
+    const char* Name;
+    int Width, Height;
+    std::function<double(double, double)> Depth;
+  };
+  const Map maps[] = {
+    { "1x1", 1, 1, [](double, double) { return 0.4; } },
+    { "37x23", 37, 23, [](double u, double v) { return 0.5 + 0.45 * std::sin(17 * u) * std::cos(11 * v); } },
+    { "flat-deep", 32, 32, [](double, double) { return 1.0; } },
+    { "flat-top", 32, 32, [](double, double) { return 0.0; } },
+    { "spike", 64, 64,
+      [](double u, double v) { return (std::abs(u - 0.5) < 0.008 && std::abs(v - 0.5) < 0.008) ? 0.0 : 1.0; } },
+    { "2x1", 2, 1, [](double u, double) { return u < 0.5 ? 0.0 : 1.0; } },
+  };
+  for (const Map& map : maps)
+  {
+    auto relief = test::BakeRelief(test::MakeDepthMap(map.Width, map.Height, map.Depth), 0.1);
+    for (const char* method : StressMethods)
+    {
+      ReliefSceneOptions o;
+      o.Pattern = "Flat";
+      o.Resolution = 8;
+      o.Method = method;
+      o.LinearSteps = std::string(method) == "max-mipmap" ? 128 : 16;
+      o.DepthScale = 0.1;
+      o.ViewAngle = 70.0;
+      const StressResult r = Stress(o, relief);
+      EXPECT_TRUE(r.Errors.empty()) << map.Name << " " << method << ": " << r.Errors;
+      EXPECT_EQ(r.Red, 0) << map.Name << " " << method;
+    }
+  }
+}
+
+TEST(ReliefStress, Map4096Squared)
+{
+  ReliefSceneOptions o;
+  o.Pattern = "Stone";
+  o.Resolution = 4096;
+  o.Method = "relief";
+  o.DepthScale = 0.03;
+  o.ViewAngle = 75.0;
+  const StressResult r = Stress(o, nullptr);
+  EXPECT_TRUE(r.Errors.empty()) << r.Errors;
+  EXPECT_EQ(r.Red, 0);
+  EXPECT_GT(r.Covered, 1000);
+  o.Method = "max-mipmap";
+  o.LinearSteps = 256;
+  const StressResult m = Stress(o, nullptr);
+  EXPECT_TRUE(m.Errors.empty()) << m.Errors;
+  EXPECT_EQ(m.Red, 0);
+}
+
+// Absurd parameters are refused with a message, never passed to the shader.
+TEST(ReliefStress, NaNDepthScaleIsRefused)
+{
+  vtkNew<vtkReliefMapper> mapper;
+  vtkNew<test::MessageRecorder> messages;
+  messages->Watch(mapper);
+  mapper->SetDepthScale(0.2);
+  mapper->SetDepthScale(std::nan(""));
+  EXPECT_EQ(mapper->GetDepthScale(), 0.2);
+  EXPECT_NE(messages->Errors.find("NaN"), std::string::npos);
+  mapper->SetDepthScale(1e300);
+  EXPECT_EQ(mapper->GetDepthScale(), 10.0);
+}
