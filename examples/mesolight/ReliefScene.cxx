@@ -242,6 +242,8 @@ bool BuildReliefScene(const ReliefSceneOptions& options, ReliefScene& scene, std
   scene.Mapper->SetSelfShadowing(options.SelfShadowing);
   scene.Mapper->SetSilhouettes(options.Silhouettes);
   scene.Mapper->SetWriteDepth(options.WriteDepth);
+  scene.Mapper->SetAdaptiveSteps(options.AdaptiveSteps);
+  scene.Mapper->SetLevelOfDetail(options.LevelOfDetail);
 
   FinishScene(options, scene.Mapper, scene);
   return true;

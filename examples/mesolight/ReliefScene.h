@@ -35,6 +35,8 @@ struct ReliefSceneOptions
   bool SelfShadowing = true;
   bool Silhouettes = true;
   bool WriteDepth = true;
+  bool AdaptiveSteps = false;
+  bool LevelOfDetail = false;
   int Width = 800;
   int Height = 800;
   double ViewAngle = 55.0; // camera angle from the wall's normal, degrees

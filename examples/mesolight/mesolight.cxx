@@ -64,9 +64,17 @@ void AddSceneOptions(CommandLine& cl)
   cl.AddFlag("--height", "the depth image stores height (white = high) rather than depth");
   cl.AddValue("--resolution", "N", "texels per side of the procedural map", "512");
   cl.AddValue("--depth-scale", "K", "relief depth as a fraction of the wall width", "0.04");
-  cl.AddValue("--method", "NAME", "relief (linear+binary), pom, steep, texture", "relief");
-  cl.AddValue("--linear-steps", "N", "linear search steps", "10");
-  cl.AddValue("--refinement-steps", "N", "binary search steps (relief)", "8");
+  cl.AddValue("--method", "NAME",
+    "texture, bump, parallax, parallax-limit, parallax-slope, iterative-parallax, binary, secant, "
+    "linear (steep), pom, relief, interval, relaxed-cone, relaxed-cone-interval, cone, max-mipmap",
+    "relief");
+  cl.AddValue("--linear-steps", "N",
+    "linear search steps (cone steps; iterations for iterative parallax and max-mipmap, "
+    "which defaults to 128)",
+    "10");
+  cl.AddValue("--refinement-steps", "N", "binary / interval / secant refinement steps", "8");
+  cl.AddFlag("--adaptive-steps", "fewer linear steps head-on, --linear-steps at grazing angles");
+  cl.AddFlag("--level-of-detail", "march the height field at the pixel footprint's mipmap level");
   cl.AddFlag("--no-shadows", "no self-shadowing");
   cl.AddFlag("--no-silhouettes", "keep fragments whose hit leaves the texture");
   cl.AddFlag("--no-depth-write", "keep the mesh depth instead of the hit depth");
@@ -86,6 +94,8 @@ bool ReadSceneOptions(const CommandLine& cl, ReliefSceneOptions& o, std::string&
   o.SelfShadowing = !cl.Has("--no-shadows");
   o.Silhouettes = !cl.Has("--no-silhouettes");
   o.WriteDepth = !cl.Has("--no-depth-write");
+  o.AdaptiveSteps = cl.Has("--adaptive-steps");
+  o.LevelOfDetail = cl.Has("--level-of-detail");
   if (!cl.GetInt("--resolution", 1, 16384, o.Resolution, error) ||
     !cl.GetDouble("--depth-scale", 0.0, 10.0, o.DepthScale, error) ||
     !cl.GetInt("--linear-steps", 1, 1024, o.LinearSteps, error) ||
@@ -96,6 +106,10 @@ bool ReadSceneOptions(const CommandLine& cl, ReliefSceneOptions& o, std::string&
     !cl.GetDouble("--light-elevation", 0.0, 90.0, o.LightElevation, error))
   {
     return false;
+  }
+  if (!cl.Has("--linear-steps") && o.Method == "max-mipmap")
+  {
+    o.LinearSteps = 128; // an iteration budget for the pyramid traversal, not linear steps
   }
   const std::string size = cl.Get("--size");
   int w = 0, h = 0;
