@@ -3,6 +3,7 @@
 // above with a parallel camera. The ridge's shadow on the floor must start at the ridge's edge and
 // be h / tan(e) long.
 #include "ImageCompare.h"
+#include "ReliefReference.h"
 #include "ReliefScene.h"
 #include "TestReliefTestUtilities.h"
 #include "vtkReliefMapper.h"
@@ -21,6 +22,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <iostream>
 
 namespace
 {
@@ -127,4 +129,59 @@ TEST(ReliefShadows, NoShadowWhenSelfShadowingIsOff)
   const ShadowRun run = RenderRidgeShadow(30.0, false, 10, "ridge-noshadow.png");
   const double expectedEnd = RidgeHigh + DepthScale / std::tan(vtkMath::RadiansFromDegrees(30.0));
   EXPECT_FALSE(std::abs(run.End - expectedEnd) < 0.02);
+}
+
+// Per-pixel self-shadowing against exact visibility: ReliefReference traces each pixel's first
+// hit and then the light ray from it through the bilinear height field (HeightFieldTracer).
+namespace
+{
+double ShadowMismatch(const char* method, int linearSteps, bool shadows, double* shadowedShare)
+{
+  ReliefSceneOptions o;
+  o.Pattern = "HemisphereTorus";
+  o.Resolution = 256;
+  o.Width = o.Height = 320;
+  o.DepthScale = 0.15;
+  o.ViewAngle = 45.0;
+  o.ViewDistance = 2.2;
+  o.LightElevation = 25.0;
+  o.Lights = 1;
+  o.Method = method;
+  o.LinearSteps = linearSteps;
+  o.SelfShadowing = shadows;
+  std::string error;
+  ReliefScene scene;
+  EXPECT_TRUE(BuildReliefScene(o, scene, error)) << error;
+  scene.Mapper->SetOutput(vtkReliefMapper::LightVisibilityOutput);
+  auto window = MakeOffscreenWindow(o, scene.Renderer);
+  const Frame visibility = CaptureFrame(window);
+  ReliefReference reference;
+  EXPECT_TRUE(ComputeReliefReference(MakeReliefReferenceInput(scene, o), reference, error))
+    << error;
+  long long covered = 0, shadowed = 0;
+  for (size_t p = 0; p < reference.State.size(); ++p)
+  {
+    if (reference.IsCovered(p))
+    {
+      ++covered;
+      shadowed += reference.FacesLight[p] && !reference.Unshadowed[p] ? 1 : 0;
+    }
+  }
+  *shadowedShare = covered > 0 ? 100.0 * double(shadowed) / covered : 0.0;
+  const double mismatch = CompareLightVisibility(reference, visibility);
+  std::cout << "[shadows " << method << " " << linearSteps << (shadows ? "" : " off")
+            << "] mismatch " << mismatch << "% of covered pixels (" << *shadowedShare
+            << "% truly self-shadowed)" << std::endl;
+  return mismatch;
+}
+} // namespace
+
+TEST(ReliefShadows, PerPixelVisibilityMatchesExactTracing)
+{
+  double shadowed = 0.0;
+  EXPECT_LT(ShadowMismatch("relief", 16, true, &shadowed), 1.0);
+  EXPECT_GT(shadowed, 5.0) << "the scene must have real self-shadows to test";
+  EXPECT_LT(ShadowMismatch("max-mipmap", 128, true, &shadowed), 0.5);
+  // Negative: without the shadow march the mismatch is the whole shadowed share.
+  EXPECT_GT(ShadowMismatch("relief", 16, false, &shadowed), 0.8 * shadowed);
 }
