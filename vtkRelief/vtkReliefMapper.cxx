@@ -35,6 +35,7 @@
 // GLSL sources embedded at build time (vtk_encode_string).
 #include "vtkReliefHeightFieldFS.h"
 #include "vtkReliefImplFS.h"
+#include "vtkReliefLightSetFS.h"
 #include "vtkReliefLightingFS.h"
 #include "vtkReliefMarchFS.h"
 #include "vtkReliefMaxMipmapFS.h"
@@ -228,7 +229,7 @@ void SanitizeFrame(vtkPolyData* mesh)
 //------------------------------------------------------------------------------
 vtkReliefMapper::vtkReliefMapper()
 {
-  this->SetNumberOfInputPorts(2);
+  this->SetNumberOfInputPorts(3);
   this->ReliefTextureObject = vtkSmartPointer<vtkTextureObject>::New();
   // Our own texture-coordinate attribute: VTK uploads "tcoord" only when the actor has a texture.
   this->MapDataArrayToVertexAttribute(
@@ -241,7 +242,7 @@ vtkReliefMapper::~vtkReliefMapper() = default;
 //------------------------------------------------------------------------------
 int vtkReliefMapper::FillInputPortInformation(int port, vtkInformation* info)
 {
-  if (port == 1)
+  if (port == 1 || port == 2)
   {
     info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkImageData");
     info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
@@ -325,6 +326,125 @@ void vtkReliefMapper::SetReliefTextureData(vtkImageData* image)
 void vtkReliefMapper::SetReliefTextureConnection(vtkAlgorithmOutput* output)
 {
   this->SetInputConnection(1, output);
+}
+
+//------------------------------------------------------------------------------
+void vtkReliefMapper::SetLightSetData(vtkImageData* lights)
+{
+  this->SetInputDataInternal(2, lights);
+}
+
+//------------------------------------------------------------------------------
+void vtkReliefMapper::SetLightSetConnection(vtkAlgorithmOutput* output)
+{
+  this->SetInputConnection(2, output);
+}
+
+//------------------------------------------------------------------------------
+vtkImageData* vtkReliefMapper::GetLightSet()
+{
+  if (this->GetNumberOfInputConnections(2) < 1)
+  {
+    return nullptr;
+  }
+  return vtkImageData::SafeDownCast(this->GetExecutive()->GetInputData(2, 0));
+}
+
+//------------------------------------------------------------------------------
+bool vtkReliefMapper::UpdateLightSet(vtkOpenGLRenderWindow* renWin)
+{
+  vtkImageData* lights = this->GetLightSet();
+  this->HasLightSet = lights != nullptr;
+  if (!lights)
+  {
+    return true;
+  }
+  if (lights == this->LightSetUploaded && lights->GetMTime() <= this->LightSetUploadTime &&
+    this->LightSetTextureObject && this->LightSetTextureObject->GetHandle() != 0 &&
+    this->LightSetTextureObject->GetContext() == renWin)
+  {
+    return this->LightSetCount > 0;
+  }
+  this->LightSetUploaded = lights;
+  this->LightSetUploadTime = lights->GetMTime();
+  this->LightSetCount = 0;
+  int dims[3];
+  lights->GetDimensions(dims);
+  vtkDataArray* values = lights->GetPointData()->GetScalars();
+  if (!values || dims[1] != 2 || dims[0] < 1 || values->GetNumberOfComponents() < 3)
+  {
+    vtkErrorMacro(<< "The light set must be an N x 2 image with 3 or 4 components (row 0 "
+                     "directions, row 1 irradiance), as vtkMedianCutLights makes it.");
+    return false;
+  }
+  // Sorted by luminance, strongest first, so the shader can stop at the first negligible light.
+  struct Light
+  {
+    float Direction[3];
+    float Irradiance[3];
+    float Luminance;
+  };
+  std::vector<Light> sorted(static_cast<size_t>(dims[0]));
+  for (int i = 0; i < dims[0]; ++i)
+  {
+    Light& light = sorted[static_cast<size_t>(i)];
+    double direction[3];
+    for (int c = 0; c < 3; ++c)
+    {
+      direction[c] = values->GetComponent(i, c);
+      light.Irradiance[c] = static_cast<float>(values->GetComponent(dims[0] + i, c));
+      if (!std::isfinite(direction[c]) || !std::isfinite(light.Irradiance[c]) ||
+        light.Irradiance[c] < 0.0f)
+      {
+        vtkErrorMacro(<< "Light " << i << " of the light set has a non-finite direction or a "
+                         "negative or non-finite irradiance.");
+        return false;
+      }
+    }
+    if (vtkMath::Normalize(direction) <= 0.0)
+    {
+      vtkErrorMacro(<< "Light " << i << " of the light set has a zero direction.");
+      return false;
+    }
+    for (int c = 0; c < 3; ++c)
+    {
+      light.Direction[c] = static_cast<float>(direction[c]);
+    }
+    light.Luminance = 0.2125f * light.Irradiance[0] + 0.7154f * light.Irradiance[1] +
+      0.0721f * light.Irradiance[2];
+  }
+  std::sort(sorted.begin(), sorted.end(),
+    [](const Light& a, const Light& b) { return a.Luminance > b.Luminance; });
+  std::vector<float> texels(static_cast<size_t>(dims[0]) * 8);
+  for (int i = 0; i < dims[0]; ++i)
+  {
+    const Light& light = sorted[static_cast<size_t>(i)];
+    float* d = &texels[static_cast<size_t>(i) * 4];
+    float* e = &texels[(static_cast<size_t>(dims[0]) + i) * 4];
+    for (int c = 0; c < 3; ++c)
+    {
+      d[c] = light.Direction[c];
+      e[c] = light.Irradiance[c];
+    }
+    d[3] = 0.0f;
+    e[3] = light.Luminance;
+  }
+  if (!this->LightSetTextureObject)
+  {
+    this->LightSetTextureObject = vtkSmartPointer<vtkTextureObject>::New();
+  }
+  this->LightSetTextureObject->SetContext(renWin);
+  this->LightSetTextureObject->SetMinificationFilter(vtkTextureObject::Nearest);
+  this->LightSetTextureObject->SetMagnificationFilter(vtkTextureObject::Nearest);
+  if (!this->LightSetTextureObject->Create2DFromRaw(
+        static_cast<unsigned int>(dims[0]), 2, 4, VTK_FLOAT, texels.data()))
+  {
+    vtkErrorMacro(<< "Could not create the light-set texture (" << dims[0] << " lights).");
+    return false;
+  }
+  this->LightSetCount = dims[0];
+  this->LightSetMaximum = sorted.empty() ? 0.0f : sorted.front().Luminance;
+  return true;
 }
 
 //------------------------------------------------------------------------------
@@ -622,8 +742,14 @@ void vtkReliefMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* actor)
     vtkAlgorithmOutput* reliefPort = this->GetInputConnection(1, 0);
     reliefPort->GetProducer()->Update(reliefPort->GetIndex());
   }
+  if (!this->Static && this->GetNumberOfInputConnections(2) > 0)
+  {
+    vtkAlgorithmOutput* lightPort = this->GetInputConnection(2, 0);
+    lightPort->GetProducer()->Update(lightPort->GetIndex());
+  }
   vtkPolyData* prepared = this->CurrentInput ? this->PrepareInput(this->CurrentInput) : nullptr;
-  if (!prepared || !this->UpdateReliefTexture(ren))
+  if (!prepared || !this->UpdateReliefTexture(ren) ||
+    !this->UpdateLightSet(vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow())))
   {
     return;
   }
@@ -649,6 +775,10 @@ void vtkReliefMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* actor)
   {
     this->PyramidTextureObject->Activate();
   }
+  if (this->HasLightSet)
+  {
+    this->LightSetTextureObject->Activate();
+  }
   this->Superclass::RenderPieceStart(ren, actor);
   this->ReadyToDraw = true;
 }
@@ -673,6 +803,10 @@ void vtkReliefMapper::RenderPieceFinish(vtkRenderer* ren, vtkActor* actor)
     {
       this->PyramidTextureObject->Deactivate();
     }
+    if (this->HasLightSet)
+    {
+      this->LightSetTextureObject->Deactivate();
+    }
   }
   this->ReadyToDraw = false;
 }
@@ -684,7 +818,8 @@ std::string vtkReliefMapper::ShaderKey() const
     (this->Silhouettes ? "E" : "e") + (this->WriteDepth ? "D" : "d") +
     (this->HasAlbedoTexture ? "A" : "a") + std::to_string(this->Output) +
     (this->ConePacked ? "C" : "c") + (this->AdaptiveSteps ? "V" : "v") +
-    (this->LevelOfDetail ? "L" : "l");
+    (this->LevelOfDetail ? "L" : "l") + (this->HasLightSet ? "I" : "i") +
+    (this->ToneMapping ? "T" : "t");
 }
 
 //------------------------------------------------------------------------------
@@ -718,6 +853,25 @@ void vtkReliefMapper::ReplaceShaderValues(
   vtkShaderProgram::Substitute(
     fs, "//VTK::UniformFlow::Impl", "//MESOLIGHT::UniformFlow::Impl\n  //VTK::UniformFlow::Impl");
   vtkShaderProgram::Substitute(fs, "//VTK::Light::Impl", "//MESOLIGHT::Relief::Impl");
+  if (this->PrimitiveInfo[this->LastBoundBO].LastLightComplexity == 0)
+  {
+    // Without VTK lights (e.g. lit only by a light set) VTK declares no normal and no view-space
+    // position; the relief needs both. VTK fills these uniforms whenever a shader uses them.
+    vtkShaderProgram::Substitute(vs, "//VTK::Normal::Dec",
+      "in vec3 normalMC;\nuniform mat3 normalMatrix;\nout vec3 normalVCVSOutput;\n"
+      "uniform mat4 MCVCMatrix;\nout vec4 vertexVCVSOutput;\n//VTK::Normal::Dec");
+    vtkShaderProgram::Substitute(vs, "//VTK::Normal::Impl",
+      "normalVCVSOutput = normalMatrix * normalMC;\n"
+      "  vertexVCVSOutput = MCVCMatrix * vertexMC;\n  //VTK::Normal::Impl");
+    vtkShaderProgram::Substitute(fs, "//VTK::Normal::Dec",
+      "in vec3 normalVCVSOutput;\nin vec4 vertexVCVSOutput;\n//VTK::Normal::Dec");
+    vtkShaderProgram::Substitute(fs, "//MESOLIGHT::UniformFlow::Impl",
+      "vec4 vertexVC = vertexVCVSOutput;\n  //MESOLIGHT::UniformFlow::Impl");
+    vtkShaderProgram::Substitute(fs, "//MESOLIGHT::Relief::Impl",
+      "vec3 normalVCVSOutput = normalize(normalVCVSOutput);\n"
+      "  if (gl_FrontFacing == false) { normalVCVSOutput = -normalVCVSOutput; }\n"
+      "  //MESOLIGHT::Relief::Impl");
+  }
   vtkShaderProgram::Substitute(fs, "//VTK::TCoord::Impl", "");
   shaders[vtkShader::Vertex]->SetSource(vs);
   shaders[vtkShader::Fragment]->SetSource(fs);
@@ -752,13 +906,21 @@ void vtkReliefMapper::ReplaceShaderValues(
   {
     defines += "#define ML_ADAPTIVE_STEPS\n";
   }
+  if (this->HasLightSet)
+  {
+    defines += "#define ML_LIGHT_SET\n";
+  }
+  if (this->ToneMapping)
+  {
+    defines += "#define ML_TONE_MAPPING\n";
+  }
   const std::string declarations = defines +
     "in vec3 mlTangentVC;\n"
     "in vec2 mlTCoordVC;\n"
     "uniform int mlCameraParallel;\n"
     "uniform mat4 mlViewToClip;\n" +
     vtkReliefHeightFieldFS + (this->Method == MaximumMipmap ? vtkReliefMaxMipmapFS : "") +
-    vtkReliefMarchFS + vtkReliefLightingFS;
+    vtkReliefMarchFS + vtkReliefLightingFS + (this->HasLightSet ? vtkReliefLightSetFS : "");
   vtkShaderProgram::Substitute(fs, "//MESOLIGHT::Dec", declarations);
   vtkShaderProgram::Substitute(fs, "//MESOLIGHT::UniformFlow::Impl",
     "vec3 mlDPdx = dFdx(vertexVC.xyz);\n"
@@ -853,6 +1015,25 @@ void vtkReliefMapper::SetMapperShaderParameters(
     static_cast<float>(property->GetSpecular() * sc[2]) };
   program->SetUniform3f("mlSpecularColor", specular);
   program->SetUniformf("mlSpecularPower", static_cast<float>(property->GetSpecularPower()));
+  program->SetUniformf("mlExposure", static_cast<float>(this->Exposure));
+  if (this->HasLightSet)
+  {
+    program->SetUniformi("mlLightSet", this->LightSetTextureObject->GetTextureUnit());
+    program->SetUniformi("mlLightSetCount", this->LightSetCount);
+    program->SetUniformf("mlLightSetCutoff",
+      static_cast<float>(this->LightSetThreshold * this->LightSetMaximum));
+    program->SetUniformi("mlShadowedLights", this->ShadowedLights);
+    float worldToView[9];
+    vtkMatrix4x4* view = camera->GetViewTransformMatrix();
+    for (int r = 0; r < 3; ++r)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        worldToView[c * 3 + r] = static_cast<float>(view->GetElement(r, c));
+      }
+    }
+    program->SetUniformMatrix3x3("mlWorldToView", worldToView);
+  }
 
   this->SetLightUniforms(program, ren);
 }
@@ -953,5 +1134,10 @@ void vtkReliefMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "AdaptiveSteps: " << (this->AdaptiveSteps ? "On" : "Off") << "\n";
   os << indent << "MinimumSteps: " << this->MinimumSteps << "\n";
   os << indent << "LevelOfDetail: " << (this->LevelOfDetail ? "On" : "Off") << "\n";
+  os << indent << "LightSet: " << this->GetLightSet() << "\n";
+  os << indent << "Exposure: " << this->Exposure << "\n";
+  os << indent << "ToneMapping: " << (this->ToneMapping ? "On" : "Off") << "\n";
+  os << indent << "LightSetThreshold: " << this->LightSetThreshold << "\n";
+  os << indent << "ShadowedLights: " << this->ShadowedLights << "\n";
   os << indent << "ReliefTexture: " << this->GetReliefTexture() << "\n";
 }

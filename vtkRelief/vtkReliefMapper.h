@@ -217,6 +217,40 @@ public:
   vtkImageData* GetReliefTexture();
   ///@}
 
+  ///@{
+  /**
+   * An image-based light set, lighting the surface besides the renderer's lights: an N x 2 float
+   * image (vtkMedianCutLights' light texture), row 0 the unit directions toward the lights in
+   * world coordinates, row 1 the irradiance each delivers at normal incidence (RGB). Each light
+   * shades (Lambertian, albedo / pi) and self-shadows the height field. Input port 2.
+   */
+  void SetLightSetData(vtkImageData* lights);
+  void SetLightSetConnection(vtkAlgorithmOutput* output);
+  vtkImageData* GetLightSet();
+  ///@}
+
+  ///@{
+  /** Scale of the light-set shading (default 1) and Reinhard tone mapping (default off). */
+  vtkSetClampMacro(Exposure, double, 0.0, 1e6);
+  vtkGetMacro(Exposure, double);
+  vtkSetMacro(ToneMapping, bool);
+  vtkGetMacro(ToneMapping, bool);
+  vtkBooleanMacro(ToneMapping, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Skips for light sets, each measurable (mesolight bench ibl): lights whose luminance is below
+   * LightSetThreshold times the strongest light's are skipped entirely (default 0: none);
+   * with ShadowedLights = K > 0 only the K strongest lights facing a pixel march their shadows,
+   * the rest are weighted by the visible fraction of those K (default 0: all march).
+   */
+  vtkSetClampMacro(LightSetThreshold, double, 0.0, 1.0);
+  vtkGetMacro(LightSetThreshold, double);
+  vtkSetClampMacro(ShadowedLights, int, 0, 1 << 16);
+  vtkGetMacro(ShadowedLights, int);
+  ///@}
+
   /**
    * Maximum number of VTK lights shaded per fragment; further lights are ignored with a warning.
    */
@@ -268,6 +302,18 @@ protected:
   int PyramidLevels = 0;
   std::vector<int> PyramidSizes; // cells per level, (w, h) pairs
   bool UpdatePyramid(vtkOpenGLRenderWindow* renWin, const std::vector<float>& depth);
+  /** Uploads the light set when it changed; false (with an error) if unusable. */
+  bool UpdateLightSet(vtkOpenGLRenderWindow* renWin);
+  double Exposure = 1.0;
+  bool ToneMapping = false;
+  double LightSetThreshold = 0.0;
+  int ShadowedLights = 0;
+  vtkSmartPointer<vtkTextureObject> LightSetTextureObject;
+  vtkImageData* LightSetUploaded = nullptr;
+  vtkMTimeType LightSetUploadTime = 0;
+  int LightSetCount = 0;
+  float LightSetMaximum = 0.0f; // luminance of the strongest light
+  bool HasLightSet = false;
 
   vtkSmartPointer<vtkImageData> ReliefTextureData;
   vtkSmartPointer<vtkPolyData> PreparedInput;

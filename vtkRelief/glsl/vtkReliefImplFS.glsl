@@ -78,6 +78,15 @@
   gl_FragData[0] = vec4(vec3(mlFirstLightVisible), 1.0);
 #else
   gl_FragData[0] = vec4(ambientColor + diffuse * diffuseColor + specular * mlSpecularColor, opacity);
+#ifdef ML_LIGHT_SET
+  // Lambertian under the environment: albedo / pi times irradiance, scaled by the exposure.
+  vec3 mlEnvironment = mlLightSetIrradiance(mlShadingNormal, mlShadowPoint, mlWorldToTexture,
+    mlHasFrame) * (diffuseColor / 3.14159265);
+  gl_FragData[0].rgb = (gl_FragData[0].rgb + mlEnvironment) * mlExposure;
+#ifdef ML_TONE_MAPPING
+  gl_FragData[0].rgb = gl_FragData[0].rgb / (1.0 + gl_FragData[0].rgb); // Reinhard
+#endif
+#endif
 #ifdef ML_ALBEDO_SAMPLER
   gl_FragData[0] = clamp(gl_FragData[0], 0.0, 1.0) *
     textureGrad(ML_ALBEDO_SAMPLER, mlHit.xy, mlDUVdx, mlDUVdy);

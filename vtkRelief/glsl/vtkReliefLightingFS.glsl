@@ -14,6 +14,7 @@ uniform float mlLightExponent[ML_MAX_LIGHTS];
 uniform int mlLightPositional[ML_MAX_LIGHTS];
 uniform vec3 mlSpecularColor; // specular x specular colour
 uniform float mlSpecularPower;
+uniform float mlExposure; // scales the light-set shading (ML_LIGHT_SET)
 
 // Accumulates diffuse and specular light at a point of the height field.
 //   posVC, normalVC: the hit point and the height field's normal there, view coordinates

@@ -1,0 +1,65 @@
+// Mesolight relief: an image-based light set (median-cut lights of an HDR environment, seed 000
+// §5), each light shading and self-shadowing the height field, which gives soft shadows.
+//
+// The light texture is N x 2: row 0 the unit directions toward the lights (world coordinates),
+// row 1 the irradiance each delivers at normal incidence (RGB) and its luminance (A). Lights come
+// sorted by luminance, strongest first, so the loop can stop at the first negligible one.
+// What a pixel does not need is skipped: lights behind the shading normal or below the
+// macro-surface horizon get no shadow march, and with mlShadowedLights > 0 only the strongest
+// facing lights are marched; the others are weighted by the visible fraction of those.
+
+uniform sampler2D mlLightSet;
+uniform int mlLightSetCount;
+uniform float mlLightSetCutoff; // luminance below which lights are skipped
+uniform int mlShadowedLights;   // 0: march every facing light
+uniform mat3 mlWorldToView;
+
+// Irradiance at the hit from the light set (to be multiplied by albedo / pi).
+vec3 mlLightSetIrradiance(vec3 normalVC, vec3 hit, mat3 worldToTexture, bool marchShadows)
+{
+  vec3 irradiance = vec3(0.0);
+  vec3 unmarched = vec3(0.0);
+  float marchedWeight = 0.0;
+  float visibleWeight = 0.0;
+  int marched = 0;
+  for (int i = 0; i < mlLightSetCount; ++i)
+  {
+    vec4 e = texelFetch(mlLightSet, ivec2(i, 1), 0);
+    if (e.a < mlLightSetCutoff)
+    {
+      break; // sorted: every further light is weaker still
+    }
+    vec3 l = mlWorldToView * texelFetch(mlLightSet, ivec2(i, 0), 0).xyz;
+    float ndl = dot(normalVC, l);
+    if (ndl <= 0.0)
+    {
+      continue;
+    }
+    vec3 contribution = e.rgb * ndl;
+#ifdef ML_SELF_SHADOWING
+    if (marchShadows)
+    {
+      vec3 toLight = worldToTexture * l;
+      if (toLight.z >= -1e-6)
+      {
+        continue; // below the macro-surface horizon: blocked without marching
+      }
+      if (mlShadowedLights > 0 && marched >= mlShadowedLights)
+      {
+        unmarched += contribution;
+        continue;
+      }
+      ++marched;
+      float weight = dot(contribution, vec3(0.2125, 0.7154, 0.0721));
+      marchedWeight += weight;
+      if (mlShadowed(hit, clamp(toLight / -toLight.z, -1e4, 1e4)))
+      {
+        continue;
+      }
+      visibleWeight += weight;
+    }
+#endif
+    irradiance += contribution;
+  }
+  return irradiance + unmarched * (marchedWeight > 0.0 ? visibleWeight / marchedWeight : 1.0);
+}
