@@ -40,6 +40,8 @@
 #include "vtkReliefMarchFS.h"
 #include "vtkReliefMaxMipmapFS.h"
 
+#include "ConeMaps.h" // Mesolight::Filters core: the min-depth pyramid
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -89,63 +91,6 @@ std::string MethodDefines()
     defines += std::string("#define ") + glslNames[m] + " " + std::to_string(m) + "\n";
   }
   return defines;
-}
-
-// The min-depth pyramid of exact maximum-mipmap tracing (Tevs et al. 2008), as
-// vtkReliefMaxMipmapFS.glsl reads it: level 0 has a cell between each 2x2 texel centres plus the
-// clamp-to-edge border cells ((W+1) x (H+1)), holding the minimum depth of its corner texels.
-// Level sizes halve rounding down, as OpenGL requires of a complete mipmap; a level's last cell
-// also covers the odd cell left over below it, so each cell bounds everything beneath it.
-std::vector<std::vector<float>> MinDepthPyramid(
-  const std::vector<float>& depth, int w, int h, std::vector<std::pair<int, int>>& sizes)
-{
-  auto texel = [&](int i, int j) {
-    i = std::min(std::max(i, 0), w - 1);
-    j = std::min(std::max(j, 0), h - 1);
-    return depth[static_cast<size_t>(j) * w + i];
-  };
-  std::vector<std::vector<float>> levels;
-  int lw = w + 1, lh = h + 1;
-  std::vector<float> level(static_cast<size_t>(lw) * lh);
-  for (int j = 0; j < lh; ++j)
-  {
-    for (int i = 0; i < lw; ++i)
-    {
-      level[static_cast<size_t>(j) * lw + i] = std::min(
-        std::min(texel(i - 1, j - 1), texel(i, j - 1)), std::min(texel(i - 1, j), texel(i, j)));
-    }
-  }
-  sizes.clear();
-  sizes.emplace_back(lw, lh);
-  levels.push_back(level);
-  while (lw > 1 || lh > 1)
-  {
-    const int nw = std::max(1, lw / 2), nh = std::max(1, lh / 2);
-    std::vector<float> next(static_cast<size_t>(nw) * nh);
-    const std::vector<float>& prev = levels.back();
-    for (int j = 0; j < nh; ++j)
-    {
-      const int j1 = (j == nh - 1) ? lh : std::min(2 * j + 2, lh);
-      for (int i = 0; i < nw; ++i)
-      {
-        const int i1 = (i == nw - 1) ? lw : std::min(2 * i + 2, lw);
-        float m = 1.0f;
-        for (int pj = 2 * j; pj < j1; ++pj)
-        {
-          for (int pi = 2 * i; pi < i1; ++pi)
-          {
-            m = std::min(m, prev[static_cast<size_t>(pj) * lw + pi]);
-          }
-        }
-        next[static_cast<size_t>(j) * nw + i] = m;
-      }
-    }
-    lw = nw;
-    lh = nh;
-    sizes.emplace_back(lw, lh);
-    levels.push_back(std::move(next));
-  }
-  return levels;
 }
 
 // "relaxed" / "conservative" (or 1 / 2) from the cone map's field data; 0 if not cone packed.
@@ -680,9 +625,18 @@ bool vtkReliefMapper::UpdateReliefTexture(vtkRenderer* ren)
 //------------------------------------------------------------------------------
 bool vtkReliefMapper::UpdatePyramid(vtkOpenGLRenderWindow* renWin, const std::vector<float>& depth)
 {
+  // The min-depth pyramid (filters/core/ConeMaps.h): level sizes halve rounding down, a complete
+  // OpenGL mipmap, so the coarser levels upload as mip levels of one texture.
+  const std::vector<std::vector<float>> levels = mesolight::ComputeMinDepthPyramid(
+    depth.data(), this->ReliefTextureSize[0], this->ReliefTextureSize[1]);
   std::vector<std::pair<int, int>> sizes;
-  const std::vector<std::vector<float>> levels =
-    MinDepthPyramid(depth, this->ReliefTextureSize[0], this->ReliefTextureSize[1], sizes);
+  for (size_t l = 0; l < levels.size(); ++l)
+  {
+    int lw = 0, lh = 0;
+    mesolight::MinDepthPyramidLevelSize(
+      this->ReliefTextureSize[0], this->ReliefTextureSize[1], static_cast<int>(l), lw, lh);
+    sizes.emplace_back(lw, lh);
+  }
   if (!this->PyramidTextureObject)
   {
     this->PyramidTextureObject = vtkSmartPointer<vtkTextureObject>::New();

@@ -533,8 +533,8 @@ bool MinDepthPyramidLevelSize(int w, int h, int level, int& lw, int& lh)
     {
       return false;
     }
-    lw = (lw + 1) / 2;
-    lh = (lh + 1) / 2;
+    lw = std::max(1, lw / 2);
+    lh = std::max(1, lh / 2);
   }
   return true;
 }
@@ -562,14 +562,15 @@ std::vector<std::vector<float>> ComputeMinDepthPyramid(const float* depth, int w
   while (lw > 1 || lh > 1)
   {
     const std::vector<float>& c = levels.back();
-    const int pw = (lw + 1) / 2;
-    const int ph = (lh + 1) / 2;
+    const int pw = std::max(1, lw / 2);
+    const int ph = std::max(1, lh / 2);
     std::vector<float> p(static_cast<std::size_t>(pw) * ph, kNone);
     for (int j = 0; j < lh; ++j)
     {
       for (int i = 0; i < lw; ++i)
       {
-        float& m = p[static_cast<std::size_t>(j / 2) * pw + i / 2];
+        const int pi = std::min(i / 2, pw - 1), pj = std::min(j / 2, ph - 1);
+        float& m = p[static_cast<std::size_t>(pj) * pw + pi];
         m = std::min(m, c[static_cast<std::size_t>(j) * lw + i]);
       }
     }

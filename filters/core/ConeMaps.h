@@ -178,16 +178,17 @@ MESOLIGHTFILTERS_EXPORT float DecodeConeRatio8(std::uint8_t code);
  * minimum of the patch's 4 corner texels, which bounds the bilinear patch from above
  * (every point of the cell is at least that deep).
  *
- * Level k + 1 has ceil(W_k / 2) x ceil(H_k / 2) values, each the minimum over its (up to)
- * 2 x 2 children 2i .. 2i + 1, 2j .. 2j + 1 (children beyond an odd size are ignored, so the
- * last parent covers a single child column / row). The last level is 1 x 1. Empty when
- * w < 1 or h < 1. Level sizes: see MinDepthPyramidLevelSize().
+ * Level k + 1 has max(1, W_k / 2) x max(1, H_k / 2) values (sizes halve rounding down, as a
+ * complete OpenGL mipmap requires), each the minimum over its children 2i .. 2i + 1,
+ * 2j .. 2j + 1; the last parent of a row or column also takes the odd child left over, so
+ * child (i, j) belongs to parent (min(i / 2, W_{k+1} - 1), min(j / 2, H_{k+1} - 1)). The last
+ * level is 1 x 1. Empty when w < 1 or h < 1. Level sizes: see MinDepthPyramidLevelSize().
  */
 MESOLIGHTFILTERS_EXPORT std::vector<std::vector<float>> ComputeMinDepthPyramid(
   const float* depth, int w, int h);
 
 /// Size of pyramid level `level` for a w x h depth map: level 0 is (w + 1) x (h + 1), then
-/// ceil halving. Returns false if the level does not exist.
+/// halving rounded down (at least 1). Returns false if the level does not exist.
 MESOLIGHTFILTERS_EXPORT bool MinDepthPyramidLevelSize(int w, int h, int level, int& lw, int& lh);
 
 } // namespace mesolight

@@ -516,10 +516,13 @@ TEST(ConeMaps, MinDepthPyramidBoundsTheBilinearSurface)
       {
         for (int i = 0; i < pw; ++i)
         {
+          // Children 2i, 2i+1; the last parent also takes the odd child left over.
           float expected = 2.0f;
-          for (int y = 2 * j; y <= 2 * j + 1 && y < chh; ++y)
+          const int yEnd = (j == ph - 1) ? chh - 1 : 2 * j + 1;
+          const int xEnd = (i == pw - 1) ? chw - 1 : 2 * i + 1;
+          for (int y = 2 * j; y <= yEnd && y < chh; ++y)
           {
-            for (int x = 2 * i; x <= 2 * i + 1 && x < chw; ++x)
+            for (int x = 2 * i; x <= xEnd && x < chw; ++x)
             {
               expected = std::min(expected, pyramid[level - 1][static_cast<size_t>(y) * chw + x]);
             }
