@@ -1,5 +1,6 @@
 #include "ReliefScene.h"
 
+#include "vtkConeMapFilter.h"
 #include "vtkHeightFieldMeshFilter.h"
 #include "vtkOIIOImageReader.h"
 #include "vtkProceduralReliefSource.h"
@@ -118,7 +119,7 @@ void ApplyMaterial(vtkActor* actor)
 
 //------------------------------------------------------------------------------
 bool BuildReliefTextures(const ReliefSceneOptions& options, vtkSmartPointer<vtkImageData>& relief,
-  vtkSmartPointer<vtkTexture>& albedo, std::string& error)
+  vtkSmartPointer<vtkTexture>& albedo, std::string& error, int coneMap)
 {
   vtkNew<ErrorCollector> errors;
   vtkNew<vtkReliefTextureFilter> bake;
@@ -171,6 +172,28 @@ bool BuildReliefTextures(const ReliefSceneOptions& options, vtkSmartPointer<vtkI
   }
   relief = vtkSmartPointer<vtkImageData>::New();
   relief->DeepCopy(bake->GetOutput());
+  if (coneMap != vtkReliefMapper::NoConeMap)
+  {
+    vtkNew<vtkConeMapFilter> cones;
+    cones->AddObserver(vtkCommand::ErrorEvent, errors);
+    cones->SetInputData(relief);
+    if (coneMap == vtkReliefMapper::ConservativeConeMap)
+    {
+      cones->SetConeTypeToConservative();
+    }
+    else
+    {
+      cones->SetConeTypeToRelaxed();
+    }
+    cones->Update();
+    if (!errors->Messages.empty())
+    {
+      error = errors->Messages;
+      return false;
+    }
+    relief = vtkSmartPointer<vtkImageData>::New();
+    relief->DeepCopy(cones->GetOutput());
+  }
   return true;
 }
 
@@ -224,7 +247,14 @@ void SetupCameraAndLights(const ReliefSceneOptions& options, vtkRenderer* render
 //------------------------------------------------------------------------------
 bool BuildReliefScene(const ReliefSceneOptions& options, ReliefScene& scene, std::string& error)
 {
-  if (!BuildReliefTextures(options, scene.ReliefTexture, scene.Albedo, error))
+  vtkNew<vtkReliefMapper> probe;
+  if (!probe->SetMethodByName(options.Method.c_str()))
+  {
+    error = "unknown method '" + options.Method + "'";
+    return false;
+  }
+  if (!BuildReliefTextures(options, scene.ReliefTexture, scene.Albedo, error,
+        vtkReliefMapper::GetRequiredConeMap(probe->GetMethod())))
   {
     return false;
   }

@@ -57,11 +57,13 @@ struct ReliefScene
 };
 
 /**
- * Builds the relief texture and albedo described by the options. Returns false and fills error
- * when the depth file cannot be read or the texture cannot be baked.
+ * Builds the relief texture and albedo described by the options; with a cone map kind
+ * (vtkReliefMapper::ConeMapKind) the texture is vtkConeMapFilter's cone-packed one. Returns false
+ * and fills error when the depth file cannot be read or the texture cannot be baked.
  */
 bool BuildReliefTextures(const ReliefSceneOptions& options, vtkSmartPointer<vtkImageData>& relief,
-  vtkSmartPointer<vtkTexture>& albedo, std::string& error);
+  vtkSmartPointer<vtkTexture>& albedo, std::string& error,
+  int coneMap = vtkReliefMapper::NoConeMap);
 
 /** The relief scene: a coarse plane with vtkReliefMapper. */
 bool BuildReliefScene(const ReliefSceneOptions& options, ReliefScene& scene, std::string& error);

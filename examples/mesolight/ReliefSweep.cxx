@@ -97,7 +97,7 @@ std::vector<ReliefSweepStep> ReliefSweepStepsFor(int method)
     case vtkReliefMapper::ConservativeCone:
       for (int l : { 8, 16, 32 })
       {
-        steps.push_back({ l, 0, label(l, 0) });
+        steps.push_back({ l, 4, label(l, 4) }); // cone steps, then binary search of the bracket
       }
       break;
     case vtkReliefMapper::MaximumMipmap:

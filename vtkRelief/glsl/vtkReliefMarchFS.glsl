@@ -102,31 +102,28 @@ float mlSlopeStep(vec3 origin, vec3 span, float t)
 // surface, advance to where the ray leaves the cone of the texel below it. Conservative cones
 // are empty: the ray never goes below. Relaxed cones may be entered once: the ray may land below
 // the surface, having crossed it exactly once, which brackets the first hit.
-// Returns the first t found below the surface (bracketed = true, tAbove the point before it), or
-// the last point reached.
-float mlConeSearch(vec3 origin, vec3 span, int steps, out float tAbove, out bool bracketed)
+// Near steep walls cones are thin and the steps stall; each step is therefore at least an even
+// share of what remains of the ray, so the search always reaches a sample below the surface (at
+// worst it degrades to a linear search of the remainder). Returns the first t found below the
+// surface, with tAbove the point before it.
+float mlConeSearch(vec3 origin, vec3 span, int steps, out float tAbove)
 {
   // Horizontal travel in texture widths per unit of depth.
   float rate = length(vec2(span.x, span.y * mlTexelAspect)) / max(span.z, 1e-6);
   float t = 0.0;
   tAbove = 0.0;
-  bracketed = false;
   for (int i = 0; i < steps; ++i)
   {
     vec3 p = origin + t * span;
     float depth = mlDepthAt(p.xy);
     if (p.z >= depth)
     {
-      bracketed = true;
       return t;
     }
     float c = mlConeAt(p.xy);
+    float coneStep = c * (depth - p.z) / ((rate + c) * max(span.z, 1e-6));
     tAbove = t;
-    t = min(t + c * (depth - p.z) / ((rate + c) * max(span.z, 1e-6)), 1.0);
-  }
-  if (mlGap(origin, span, t) >= 0.0)
-  {
-    bracketed = true;
+    t = min(t + max(coneStep, (1.0 - t) / float(steps - i)), 1.0);
   }
   return t;
 }
@@ -166,22 +163,12 @@ float mlTraceView(vec3 origin, vec3 span)
 #elif ML_METHOD == ML_INTERVAL
   float tBelow = mlLinearSearch(origin, span, 0.0, mlViewSteps, tAbove);
   return mlIntervalRefine(origin, span, tAbove, tBelow, mlRefinementSteps);
-#elif ML_METHOD == ML_RELAXED_CONE_BINARY || ML_METHOD == ML_RELAXED_CONE_INTERVAL
-  bool bracketed;
-  float tBelow = mlConeSearch(origin, span, mlViewSteps, tAbove, bracketed);
-  if (!bracketed)
-  {
-    // Steps ran out above the surface: finish with a short linear search (rare).
-    tBelow = mlLinearSearch(origin, span, tBelow, 4, tAbove);
-  }
-#if ML_METHOD == ML_RELAXED_CONE_BINARY
+#elif ML_METHOD == ML_RELAXED_CONE_BINARY || ML_METHOD == ML_CONSERVATIVE_CONE
+  float tBelow = mlConeSearch(origin, span, mlViewSteps, tAbove);
   return mlBinaryRefine(origin, span, tAbove, tBelow, mlRefinementSteps);
-#else
+#elif ML_METHOD == ML_RELAXED_CONE_INTERVAL
+  float tBelow = mlConeSearch(origin, span, mlViewSteps, tAbove);
   return mlIntervalRefine(origin, span, tAbove, tBelow, mlRefinementSteps);
-#endif
-#elif ML_METHOD == ML_CONSERVATIVE_CONE
-  bool bracketed;
-  return mlConeSearch(origin, span, mlViewSteps, tAbove, bracketed);
 #elif ML_METHOD == ML_MAXIMUM_MIPMAP
   return mlTraceMaxMipmap(origin, span, mlViewSteps);
 #else
@@ -209,17 +196,18 @@ bool mlShadowed(vec3 hit, vec3 spanUpPerDepth)
 #ifdef ML_CONE_PACKED
   float rate = length(vec2(span.x, span.y * mlTexelAspect)) / span.z;
   float t = 0.0;
-  for (int i = 0; i < mlLinearSteps && t < 1.0; ++i)
+  for (int i = 0; i < mlLinearSteps && t < 1.0 - 1e-3; ++i)
   {
     vec3 p = origin + t * span;
     float depth = mlDepthAt(p.xy);
     if (p.z > depth + bias)
     {
-      return t < 1.0 - 1e-3;
+      return true;
     }
-    // At least a linear step's worth, so stalls at conservative cones' walls still progress.
+    // As in mlConeSearch: at least an even share of the rest, so stalls at walls still progress
+    // and a blocker is sampled below its surface.
     float c = mlConeAt(p.xy);
-    t += max(c * (depth - p.z) / ((rate + c) * span.z), 1.0 / float(4 * mlLinearSteps));
+    t += max(c * (depth - p.z) / ((rate + c) * span.z), (1.0 - t) / float(mlLinearSteps - i));
   }
   return false;
 #else
