@@ -85,9 +85,9 @@ INSTANTIATE_TEST_SUITE_P(Safe, ReliefMethodHits,
     MethodCase{ "interval", 32, 4, 55.0, 0.25 }, MethodCase{ "pom", 32, 0, 55.0, 0.5 },
     MethodCase{ "linear", 64, 0, 55.0, 1.0 }, MethodCase{ "max-mipmap", 128, 0, 55.0, 0.05 },
     MethodCase{ "max-mipmap", 256, 0, 85.0, 0.5 },
-    MethodCase{ "relaxed-cone", 16, 8, 55.0, 0.25 },
-    MethodCase{ "relaxed-cone-interval", 16, 4, 55.0, 0.25 },
-    MethodCase{ "cone", 32, 0, 55.0, 1.0 }));
+    MethodCase{ "relaxed-cone", 32, 8, 55.0, 0.25 },
+    MethodCase{ "relaxed-cone-interval", 32, 4, 55.0, 0.25 },
+    MethodCase{ "cone", 32, 4, 55.0, 0.25 }));
 
 INSTANTIATE_TEST_SUITE_P(Unsafe, ReliefMethodHits,
   ::testing::Values(MethodCase{ "parallax", 1, 0, 55.0, -1.0 },
