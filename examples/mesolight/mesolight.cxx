@@ -10,6 +10,7 @@
 #include "ReliefScene.h"
 #include "ReliefSweep.h"
 
+#include "vtkConeMapFilter.h"
 #include "vtkOIIOImageReader.h"
 #include "vtkOIIOImageWriter.h"
 #include "vtkReliefMapper.h"
@@ -30,6 +31,7 @@
 #include <vtkTextActor.h>
 #include <vtkTextProperty.h>
 
+#include <chrono>
 #include <cstdio>
 #include <iostream>
 #include <sstream>
@@ -48,6 +50,8 @@ Usage:
   mesolight render [options]                   render the default relief scene
   mesolight bake DEPTH_IMAGE --out RELIEF_IMAGE [options]
                                                bake a relief texture from a depth image
+  mesolight cone DEPTH_IMAGE --out FILE.exr [options]
+                                               bake a cone-packed relief texture
   mesolight bench [options]                    time and error: relief vs the dense mesh
   mesolight bench relief [options]             every method x steps x view angle x map:
                                                time vs exact hit error, CSV and plots
@@ -405,6 +409,82 @@ int RunBake(const std::vector<std::string>& args)
   return 0;
 }
 
+int RunCone(const std::vector<std::string>& args)
+{
+  CommandLine cl;
+  cl.AddValue("--out", "FILE", "cone map to write (.exr: float RGBA = normal x, y; cone ratio; depth)");
+  cl.AddValue("--type", "TYPE", "relaxed or conservative", "relaxed");
+  cl.AddValue("--depth-scale", "K", "relief depth as a fraction of the texture width", "0.04");
+  cl.AddValue("--border", "MODE", "clamp or wrap (tiling maps)", "clamp");
+  cl.AddFlag("--height", "the input stores height (white = high) rather than depth");
+  cl.AddFlag("--normalize", "stretch the input's value range to [0, 1]");
+  cl.AddFlag("--seed8", "the relief thesis' 8-bit packing (cone as c / (1 + c)) instead of float");
+  cl.AddFlag("--help", "show this help");
+  std::string error;
+  double depthScale = 0.04;
+  if (!cl.Parse(args, error) || !cl.GetDouble("--depth-scale", 0.0, 100.0, depthScale, error))
+  {
+    std::cerr << "mesolight cone: " << error << "\n";
+    return 2;
+  }
+  if (cl.Has("--help"))
+  {
+    std::cout << "mesolight cone DEPTH_IMAGE --out FILE.exr [options]\n\nBakes a cone-packed relief "
+                 "texture for cone stepping: R,G normal x, y packed (n+1)/2,\nB cone ratio "
+                 "(width / height), A depth (0 top .. 1 deepest).\n\nOptions:\n";
+    cl.PrintOptions(std::cout);
+    return 0;
+  }
+  const std::string type = cl.Get("--type");
+  const std::string border = cl.Get("--border");
+  if (cl.Positional().size() != 1 || !cl.Has("--out") ||
+    (type != "relaxed" && type != "conservative") || (border != "clamp" && border != "wrap"))
+  {
+    std::cerr << "mesolight cone: usage: mesolight cone DEPTH_IMAGE --out FILE.exr "
+                 "[--type relaxed|conservative] [--border clamp|wrap]\n";
+    return 2;
+  }
+  const std::string in = cl.Positional()[0];
+  const std::string out = cl.Get("--out");
+  if (out == in || SameFile(out, in))
+  {
+    std::cerr << "mesolight cone: --out must differ from the input\n";
+    return 2;
+  }
+  vtkNew<vtkOIIOImageReader> reader;
+  reader->SetFileName(in.c_str());
+  vtkNew<vtkConeMapFilter> cones;
+  cones->SetInputConnection(reader->GetOutputPort());
+  cones->SetDepthScale(depthScale);
+  cones->SetInvertInput(cl.Has("--height"));
+  cones->SetNormalizeRange(cl.Has("--normalize"));
+  cones->SetBorderMode(border == "wrap" ? 1 : 0);
+  cones->SetConeType(type == "conservative" ? vtkConeMapFilter::CONSERVATIVE : vtkConeMapFilter::RELAXED);
+  cones->SetPacking(cl.Has("--seed8") ? vtkConeMapFilter::SEED_8BIT : vtkConeMapFilter::FLOAT);
+  const auto start = std::chrono::steady_clock::now();
+  cones->Update();
+  const double seconds =
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (cones->GetOutput()->GetNumberOfPoints() == 0)
+  {
+    std::cerr << "mesolight cone: could not make a cone map of " << in << "\n";
+    return 1;
+  }
+  vtkNew<vtkOIIOImageWriter> writer;
+  writer->SetInputConnection(cones->GetOutputPort());
+  writer->SetFileName(out.c_str());
+  if (!writer->Write())
+  {
+    std::cerr << "mesolight cone: could not write " << out << "\n";
+    return 1;
+  }
+  int dims[3];
+  cones->GetOutput()->GetDimensions(dims);
+  std::cout << "wrote " << out << " (" << dims[0] << "x" << dims[1] << " " << type
+            << " cone map, " << seconds << " s)" << std::endl;
+  return 0;
+}
+
 int RunBench(const std::vector<std::string>& args)
 {
   if (!args.empty() && args[0] == "relief")
@@ -483,6 +563,10 @@ int main(int argc, char* argv[])
   if (command == "bake")
   {
     return RunBake(args);
+  }
+  if (command == "cone")
+  {
+    return RunCone(args);
   }
   if (command == "bench")
   {
