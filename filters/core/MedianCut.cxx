@@ -5,6 +5,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <atomic>
+#include <memory>
+#include <numeric>
 #include <queue>
 #include <sstream>
 #include <thread>
@@ -16,12 +19,18 @@ namespace
 {
 constexpr double Pi = EnvPi;
 
-/// Run fn(begin, end) over [0, n) on the hardware threads.
+/// Number of threads ParallelFor uses for n items.
+int ThreadsFor(int n)
+{
+  return std::max(1, std::min<int>(n / 16 + 1, static_cast<int>(std::thread::hardware_concurrency())));
+}
+
+/// Run fn(begin, end) over [0, n) on the hardware threads: thread t gets the contiguous band
+/// [n t / T, n (t + 1) / T).
 template <typename Fn>
 void ParallelFor(int n, Fn fn)
 {
-  const int threads =
-    std::max(1, std::min<int>(n / 16 + 1, static_cast<int>(std::thread::hardware_concurrency())));
+  const int threads = ThreadsFor(n);
   if (threads <= 1)
   {
     fn(0, n);
@@ -46,39 +55,45 @@ class Sat
 {
 public:
   Sat() = default;
+  /// Allocates without initialising (every entry is written by the build); row 0 and
+  /// column 0 are zero.
   void Resize(int w, int h)
   {
     this->W1 = w + 1;
-    this->Table.assign(static_cast<size_t>(w + 1) * static_cast<size_t>(h + 1), 0.0);
+    this->Table.reset(new double[static_cast<size_t>(w + 1) * static_cast<size_t>(h + 1)]);
+    std::fill(this->Table.get(), this->Table.get() + w + 1, 0.0);
+    for (int y = 1; y <= h; ++y)
+    {
+      this->Row(y)[0] = 0.0;
+    }
   }
-  double* Row(int y) { return this->Table.data() + static_cast<size_t>(y) * this->W1; }
+  double* Row(int y) { return this->Table.get() + static_cast<size_t>(y) * this->W1; }
   /// Sum over columns [x0, x1), rows [y0, y1).
   double Sum(int x0, int x1, int y0, int y1) const
   {
-    const double* a = this->Table.data() + static_cast<size_t>(y0) * this->W1;
-    const double* b = this->Table.data() + static_cast<size_t>(y1) * this->W1;
+    const double* a = this->Table.get() + static_cast<size_t>(y0) * this->W1;
+    const double* b = this->Table.get() + static_cast<size_t>(y1) * this->W1;
     return b[x1] - b[x0] - a[x1] + a[x0];
   }
-  /// Turn per-row prefix sums (already in rows 1..H) into a full SAT.
-  void AccumulateRows(int h)
+  /**
+   * Rows [yBegin, yEnd] hold per-row prefix sums plus the SAT row yBegin - 1 when built as
+   * one band: add `offset` (the SAT row just above the band) to the band's rows.
+   */
+  void AddOffsetRow(int yBegin, int yEnd, const double* offset)
   {
-    const int w1 = this->W1;
-    ParallelFor(w1, [&](int begin, int end) {
-      for (int y = 1; y <= h; ++y)
+    for (int y = yBegin; y <= yEnd; ++y)
+    {
+      double* cur = this->Row(y);
+      for (int x = 1; x < this->W1; ++x)
       {
-        const double* prev = this->Row(y - 1);
-        double* cur = this->Row(y);
-        for (int x = begin; x < end; ++x)
-        {
-          cur[x] += prev[x];
-        }
+        cur[x] += offset[x];
       }
-    });
+    }
   }
 
 private:
   int W1 = 1;
-  std::vector<double> Table;
+  std::unique_ptr<double[]> Table;
 };
 
 struct Region
@@ -334,16 +349,24 @@ MedianCutStatus ComputeMedianCut(const float* pixels, int components, int width,
   }
   std::vector<long long> badPerRow(static_cast<size_t>(h), 0);
   std::vector<long long> firstBadPerRow(static_cast<size_t>(h), -1);
+  // Each thread builds a band of rows: per-row prefix sums plus the band's rows above, in
+  // one pass; the bands are then offset by the SAT row above them.
   ParallelFor(h, [&](int begin, int end) {
     for (int y = begin; y < end; ++y)
     {
       const int j = h - 1 - y;
       const float* p = pixels + static_cast<size_t>(j) * w * components;
+      const bool above = y > begin;
       double* e = cut.E.Row(y + 1);
+      const double* e0 = cut.E.Row(y);
       double* ex = cut.Variance ? cut.Ex.Row(y + 1) : nullptr;
       double* exx = cut.Variance ? cut.Exx.Row(y + 1) : nullptr;
       double* ey = cut.Variance ? cut.Ey.Row(y + 1) : nullptr;
       double* eyy = cut.Variance ? cut.Eyy.Row(y + 1) : nullptr;
+      const double* ex0 = cut.Variance ? cut.Ex.Row(y) : nullptr;
+      const double* exx0 = cut.Variance ? cut.Exx.Row(y) : nullptr;
+      const double* ey0 = cut.Variance ? cut.Ey.Row(y) : nullptr;
+      const double* eyy0 = cut.Variance ? cut.Eyy.Row(y) : nullptr;
       const double weight = rowWeight[y];
       const double yc = y + 0.5;
       double run = 0.0;
@@ -362,13 +385,20 @@ MedianCutStatus ComputeMedianCut(const float* pixels, int components, int width,
           {
             firstBadPerRow[y] = x;
           }
-          e[x + 1] = run;
+          e[x + 1] = run + (above ? e0[x + 1] : 0.0);
+          if (ex)
+          {
+            ex[x + 1] = runX + (above ? ex0[x + 1] : 0.0);
+            exx[x + 1] = runXX + (above ? exx0[x + 1] : 0.0);
+            ey[x + 1] = runY + (above ? ey0[x + 1] : 0.0);
+            eyy[x + 1] = runYY + (above ? eyy0[x + 1] : 0.0);
+          }
           continue;
         }
         const double lum = Luminance(std::max(0.0, r), std::max(0.0, g), std::max(0.0, b));
         const double v = lum * weight;
         run += v;
-        e[x + 1] = run;
+        e[x + 1] = run + (above ? e0[x + 1] : 0.0);
         if (ex)
         {
           const double xc = x + 0.5;
@@ -376,10 +406,10 @@ MedianCutStatus ComputeMedianCut(const float* pixels, int components, int width,
           runXX += v * xc * xc;
           runY += v * yc;
           runYY += v * yc * yc;
-          ex[x + 1] = runX;
-          exx[x + 1] = runXX;
-          ey[x + 1] = runY;
-          eyy[x + 1] = runYY;
+          ex[x + 1] = runX + (above ? ex0[x + 1] : 0.0);
+          exx[x + 1] = runXX + (above ? exx0[x + 1] : 0.0);
+          ey[x + 1] = runY + (above ? ey0[x + 1] : 0.0);
+          eyy[x + 1] = runYY + (above ? eyy0[x + 1] : 0.0);
         }
       }
     }
@@ -404,13 +434,24 @@ MedianCutStatus ComputeMedianCut(const float* pixels, int components, int width,
     }
     return MedianCutStatus::Error;
   }
-  cut.E.AccumulateRows(h);
-  if (cut.Variance)
+  const int bands = ThreadsFor(h);
+  for (int t = 1; t < bands; ++t)
   {
-    cut.Ex.AccumulateRows(h);
-    cut.Exx.AccumulateRows(h);
-    cut.Ey.AccumulateRows(h);
-    cut.Eyy.AccumulateRows(h);
+    const int begin = static_cast<int>(static_cast<long long>(h) * t / bands);
+    const int end = static_cast<int>(static_cast<long long>(h) * (t + 1) / bands);
+    // Table rows begin+1 .. end hold the band; table row `begin` is complete.
+    std::vector<Sat*> tables = { &cut.E };
+    if (cut.Variance)
+    {
+      tables.insert(tables.end(), { &cut.Ex, &cut.Exx, &cut.Ey, &cut.Eyy });
+    }
+    for (Sat* table : tables)
+    {
+      const double* offset = table->Row(begin);
+      ParallelFor(end - begin, [&](int b, int e) {
+        table->AddOffsetRow(begin + 1 + b, begin + e, offset);
+      });
+    }
   }
   const double total = cut.E.Sum(0, w, 0, h);
   if (!(total > 0.0))
@@ -461,9 +502,21 @@ MedianCutStatus ComputeMedianCut(const float* pixels, int components, int width,
   // 3. One light per region: colour, energy centroid, solid angle.
   lights.resize(done.size());
   const int regionCount = static_cast<int>(done.size());
-  ParallelFor(regionCount, [&](int begin, int end) {
-    for (int k = begin; k < end; ++k)
+  // Largest regions first, handed out one at a time (region sizes differ by orders of
+  // magnitude, so fixed bands of regions would leave a thread idle).
+  std::vector<int> order(static_cast<size_t>(regionCount));
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](int a, int b) {
+    const long long areaA = static_cast<long long>(done[a].X1 - done[a].X0) * (done[a].Y1 - done[a].Y0);
+    const long long areaB = static_cast<long long>(done[b].X1 - done[b].X0) * (done[b].Y1 - done[b].Y0);
+    return areaA > areaB;
+  });
+  std::atomic<int> next(0);
+  const int workers = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  ParallelFor(std::min(regionCount, workers) * 16, [&](int, int) {
+    for (int slot = next++; slot < regionCount; slot = next++)
     {
+      const int k = order[slot];
       const Region& r = done[k];
       double rgb[3] = { 0.0, 0.0, 0.0 };
       double m[3] = { 0.0, 0.0, 0.0 };
