@@ -9,6 +9,7 @@ PACKAGES=(
   libopenimageio-dev openimageio-tools libopenexr-dev
   libglm-dev
   libembree-dev
+  blender-data
   googletest libgtest-dev libgmock-dev
   xvfb xauth mesa-utils libgl1-mesa-dri
 )

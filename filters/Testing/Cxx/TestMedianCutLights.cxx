@@ -1,0 +1,290 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// vtkMedianCutLights and vtkProceduralEnvironmentSource: outputs, file row order, errors,
+// CSV.
+#include "vtkMedianCutLights.h"
+#include "vtkOIIOImageReader.h"
+#include "vtkProceduralEnvironmentSource.h"
+
+#include "MesolightTestUtilities.h"
+
+#include "vtkCallbackCommand.h"
+#include "vtkDataArray.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <OpenImageIO/imageio.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <string>
+#include <vector>
+
+using mesolight_test::MessageCapture;
+
+namespace
+{
+constexpr double Pi = 3.14159265358979323846;
+
+vtkSmartPointer<vtkImageData> Image(int w, int h, float value, int components = 3)
+{
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetExtent(0, w - 1, 0, h - 1, 0, 0);
+  vtkNew<vtkFloatArray> a;
+  a->SetNumberOfComponents(components);
+  a->SetNumberOfTuples(static_cast<vtkIdType>(w) * h);
+  a->Fill(value);
+  image->GetPointData()->SetScalars(a);
+  return image;
+}
+
+double Degrees(const double a[3], const double b[3])
+{
+  const double c = a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+  return std::acos(std::max(-1.0, std::min(1.0, c))) * 180.0 / Pi;
+}
+} // namespace
+
+TEST(MedianCutLights, OutputsOnTheSunSky)
+{
+  vtkNew<vtkProceduralEnvironmentSource> sky;
+  sky->SetMapToSunSky();
+  sky->SetResolution(256, 128);
+  sky->SetSunElevation(30.0);
+  sky->SetSunAzimuth(90.0); // +Y, 30 degrees up
+  vtkNew<vtkMedianCutLights> lights;
+  lights->SetInputConnection(sky->GetOutputPort());
+  lights->SetNumberOfLights(32);
+  lights->Update();
+  vtkPolyData* out = lights->GetOutput();
+  ASSERT_EQ(out->GetNumberOfPoints(), 32);
+  EXPECT_EQ(out->GetNumberOfVerts(), 32);
+  vtkDataArray* irradiance = out->GetPointData()->GetArray("Irradiance");
+  vtkDataArray* uv = out->GetPointData()->GetArray("MapCoordinates");
+  vtkDataArray* solidAngle = out->GetPointData()->GetArray("SolidAngle");
+  ASSERT_TRUE(irradiance && uv && solidAngle);
+  EXPECT_EQ(irradiance->GetNumberOfComponents(), 3);
+  EXPECT_EQ(uv->GetNumberOfComponents(), 2);
+  // The strongest light is the sun.
+  double p[3];
+  out->GetPoint(0, p);
+  const double sun[3] = { 0.0, std::cos(Pi / 6), std::sin(Pi / 6) };
+  EXPECT_LT(Degrees(p, sun), 1.0);
+  EXPECT_NEAR(uv->GetComponent(0, 0), 0.25, 0.01);
+  EXPECT_NEAR(uv->GetComponent(0, 1), 1.0 / 3.0, 0.01);
+  double area = 0.0;
+  for (vtkIdType k = 0; k < 32; ++k)
+  {
+    area += solidAngle->GetComponent(k, 0);
+  }
+  EXPECT_NEAR(area, 4 * Pi, 1e-4);
+
+  // The light texture: N x 2, row 0 directions, row 1 irradiances.
+  vtkImageData* texture = lights->GetLightTexture();
+  ASSERT_TRUE(texture);
+  int dims[3];
+  texture->GetDimensions(dims);
+  EXPECT_EQ(dims[0], 32);
+  EXPECT_EQ(dims[1], 2);
+  vtkDataArray* texels = texture->GetPointData()->GetScalars();
+  ASSERT_TRUE(texels);
+  EXPECT_EQ(texels->GetNumberOfComponents(), 4);
+  EXPECT_NEAR(texels->GetComponent(0, 1), p[1], 1e-6);
+  EXPECT_NEAR(texels->GetComponent(32, 0), irradiance->GetComponent(0, 0), 1e-3);
+
+  // Variance minimization gives the same count.
+  lights->VarianceMinimizationOn();
+  lights->SetNumberOfLights(7);
+  lights->Update();
+  EXPECT_EQ(lights->GetOutput()->GetNumberOfPoints(), 7);
+}
+
+TEST(MedianCutLights, FileRowOrderZenithOnTop)
+{
+  // An EXR whose FIRST file row (the top of the picture) is bright must give a light at the
+  // zenith: vtkOIIOImageReader flips rows, the filter reads row H-1 as v ~ 0.
+  const auto dir = mesolight_test::TestDirectory();
+  const std::string file = (dir / "zenith.exr").string();
+  const int w = 64;
+  const int h = 32;
+  std::vector<float> pixels(static_cast<size_t>(w) * h * 3, 0.01f);
+  for (int i = 0; i < 3 * w; ++i)
+  {
+    pixels[i] = 1000.0f; // file row 0
+  }
+  auto out = OIIO::ImageOutput::create(file);
+  ASSERT_TRUE(out);
+  ASSERT_TRUE(out->open(file, OIIO::ImageSpec(w, h, 3, OIIO::TypeDesc::FLOAT)));
+  ASSERT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, pixels.data()));
+  out->close();
+  vtkNew<vtkOIIOImageReader> reader;
+  reader->SetFileName(file.c_str());
+  vtkNew<vtkMedianCutLights> lights;
+  lights->SetInputConnection(reader->GetOutputPort());
+  lights->SetNumberOfLights(4);
+  lights->Update();
+  ASSERT_EQ(lights->GetOutput()->GetNumberOfPoints(), 4);
+  double p[3];
+  lights->GetOutput()->GetPoint(0, p);
+  EXPECT_GT(p[2], 0.99);
+}
+
+TEST(MedianCutLights, BadInput)
+{
+  auto expectError = [](vtkImageData* image, int count, const std::string& needle) {
+    vtkNew<vtkMedianCutLights> lights;
+    vtkNew<MessageCapture> capture;
+    capture->Watch(lights);
+    lights->SetInputData(image);
+    lights->SetNumberOfLights(count);
+    lights->Update();
+    EXPECT_TRUE(capture->HasError(needle)) << "expected \"" << needle << "\", got: "
+                                           << capture->AllErrors();
+    EXPECT_EQ(lights->GetOutput()->GetNumberOfPoints(), 0);
+  };
+  auto nan = Image(16, 8, 1.0f);
+  vtkFloatArray::SafeDownCast(nan->GetPointData()->GetScalars())
+    ->SetComponent(2 * 16 + 5, 1, std::nanf(""));
+  vtkFloatArray::SafeDownCast(nan->GetPointData()->GetScalars())
+    ->SetComponent(7 * 16 + 1, 0, INFINITY);
+  expectError(nan, 4, "contains 2 NaN or infinite value(s)");
+  expectError(nan, 4, "(i=5, j=2");
+  expectError(Image(16, 8, 0.0f), 4, "no light");
+  expectError(Image(16, 8, 1.0f), 0, "NumberOfLights must be between 1 and the number of "
+                                     "pixels (128); it is 0");
+  expectError(Image(16, 8, 1.0f), 129, "it is 129");
+  expectError(Image(16, 8, 1.0f, 1), 4, "3 or more components");
+  {
+    vtkNew<vtkMedianCutLights> lights;
+    vtkNew<MessageCapture> capture;
+    capture->Watch(lights);
+    lights->Update();
+    EXPECT_TRUE(capture->HasError("No input image")) << capture->AllErrors();
+  }
+
+  // Warnings: not 2:1, negative values (clamped); the output is still produced.
+  auto odd = Image(30, 10, 1.0f);
+  vtkFloatArray::SafeDownCast(odd->GetPointData()->GetScalars())->SetComponent(3, 0, -2.0f);
+  vtkNew<vtkMedianCutLights> lights;
+  vtkNew<MessageCapture> capture;
+  capture->Watch(lights);
+  lights->SetInputData(odd);
+  lights->SetNumberOfLights(5);
+  lights->Update();
+  EXPECT_TRUE(capture->Errors.empty()) << capture->AllErrors();
+  EXPECT_TRUE(capture->HasWarning("not 2:1"));
+  EXPECT_TRUE(capture->HasWarning("1 negative value(s)"));
+  EXPECT_EQ(lights->GetOutput()->GetNumberOfPoints(), 5);
+
+  // Unsigned char input works (divided by 255).
+  auto bytes = vtkSmartPointer<vtkImageData>::New();
+  bytes->SetExtent(0, 15, 0, 7, 0, 0);
+  bytes->AllocateScalars(VTK_UNSIGNED_CHAR, 4);
+  vtkUnsignedCharArray::SafeDownCast(bytes->GetPointData()->GetScalars())->Fill(255);
+  vtkNew<vtkMedianCutLights> fromBytes;
+  fromBytes->SetInputData(bytes);
+  fromBytes->SetNumberOfLights(1);
+  fromBytes->Update();
+  ASSERT_EQ(fromBytes->GetOutput()->GetNumberOfPoints(), 1);
+  EXPECT_NEAR(fromBytes->GetOutput()->GetPointData()->GetArray("Irradiance")->GetComponent(0, 0),
+    4 * Pi, 1e-4);
+}
+
+TEST(MedianCutLights, Abort)
+{
+  vtkNew<vtkProceduralEnvironmentSource> sky;
+  vtkNew<vtkMedianCutLights> lights;
+  lights->SetInputConnection(sky->GetOutputPort());
+  // Abort from a progress observer, as a GUI would.
+  vtkNew<vtkCallbackCommand> abort;
+  abort->SetCallback([](vtkObject* caller, unsigned long, void*, void*) {
+    static_cast<vtkAlgorithm*>(caller)->SetAbortExecute(1);
+  });
+  lights->AddObserver(vtkCommand::ProgressEvent, abort);
+  lights->Update();
+  EXPECT_EQ(lights->GetOutput()->GetNumberOfPoints(), 0);
+  lights->RemoveAllObservers();
+  lights->Modified();
+  lights->Update();
+  EXPECT_EQ(lights->GetOutput()->GetNumberOfPoints(), 64);
+}
+
+TEST(MedianCutLights, CsvHeaderAndRows)
+{
+  const auto dir = mesolight_test::TestDirectory();
+  vtkNew<vtkProceduralEnvironmentSource> sky;
+  sky->SetResolution(128, 64);
+  vtkNew<vtkMedianCutLights> lights;
+  lights->SetInputConnection(sky->GetOutputPort());
+  lights->SetNumberOfLights(12);
+  lights->Update();
+  std::string error;
+  const std::string file = (dir / "lights.csv").string();
+  ASSERT_TRUE(vtkMedianCutLights::WriteCsv(lights->GetOutput(), file, error)) << error;
+  std::ifstream in(file);
+  std::string line;
+  std::getline(in, line);
+  EXPECT_EQ(line, "u,v,x,y,z,r,g,b");
+  int rows = 0;
+  while (std::getline(in, line))
+  {
+    int commas = 0;
+    for (char c : line)
+    {
+      commas += c == ',' ? 1 : 0;
+    }
+    EXPECT_EQ(commas, 7);
+    ++rows;
+  }
+  EXPECT_EQ(rows, 12);
+  EXPECT_FALSE(
+    vtkMedianCutLights::WriteCsv(lights->GetOutput(), (dir / "no" / "x.csv").string(), error));
+  vtkNew<vtkPolyData> empty;
+  EXPECT_FALSE(vtkMedianCutLights::WriteCsv(empty, file, error));
+}
+
+TEST(ProceduralEnvironmentSource, SunAtItsDirection)
+{
+  vtkNew<vtkProceduralEnvironmentSource> sky;
+  sky->SetMapToSunSky();
+  sky->SetResolution(512, 256);
+  sky->SetSunElevation(0.0);
+  sky->SetSunAzimuth(0.0);
+  sky->Update();
+  vtkImageData* image = sky->GetOutput();
+  int dims[3];
+  image->GetDimensions(dims);
+  EXPECT_EQ(dims[0], 512);
+  EXPECT_EQ(dims[1], 256);
+  vtkDataArray* radiance = image->GetPointData()->GetArray("Radiance");
+  ASSERT_TRUE(radiance);
+  // Sun on the +X horizon: u = 0 (the left/right edges), v = 0.5 (rows 127 and 128).
+  double best = -1.0;
+  int bi = -1;
+  int bj = -1;
+  double top = 0.0;
+  double bottom = 0.0;
+  for (int j = 0; j < 256; ++j)
+  {
+    for (int i = 0; i < 512; ++i)
+    {
+      const double r = radiance->GetComponent(j * 512 + i, 0);
+      if (r > best)
+      {
+        best = r;
+        bi = i;
+        bj = j;
+      }
+    }
+  }
+  top = radiance->GetComponent(255 * 512, 2);
+  bottom = radiance->GetComponent(0, 2);
+  EXPECT_TRUE(bi <= 2 || bi >= 509) << bi;
+  EXPECT_TRUE(bj == 127 || bj == 128) << bj;
+  EXPECT_GT(top, 5 * bottom); // sky (blue) on top in VTK row order, ground at row 0
+}
