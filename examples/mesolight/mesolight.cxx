@@ -6,6 +6,7 @@
 //   mesolight bench [options]                  time and error of relief vs the dense reference
 #include "CommandLine.h"
 #include "ImageCompare.h"
+#include "LightsCommand.h"
 #include "ReliefBenchmark.h"
 #include "ReliefScene.h"
 #include "ReliefSweep.h"
@@ -55,6 +56,10 @@ Usage:
   mesolight bench [options]                    time and error: relief vs the dense mesh
   mesolight bench relief [options]             every method x steps x view angle x map:
                                                time vs exact hit error, CSV and plots
+  mesolight lights ENV_IMAGE --count N --out lights.csv
+                                               median-cut lights of an HDR environment
+  mesolight bench lights [options]             light-set irradiance error vs exact
+                                               integration and SH9; median-cut time
   mesolight help [COMMAND]                     this text, or one command's options
 
 Run 'mesolight COMMAND --help' for the options of a command.
@@ -487,6 +492,10 @@ int RunCone(const std::vector<std::string>& args)
 
 int RunBench(const std::vector<std::string>& args)
 {
+  if (!args.empty() && args[0] == "lights")
+  {
+    return mesolight::RunLightsBenchmark(std::vector<std::string>(args.begin() + 1, args.end()));
+  }
   if (!args.empty() && args[0] == "relief")
   {
     return mesolight::RunReliefSweep(std::vector<std::string>(args.begin() + 1, args.end()));
@@ -563,6 +572,10 @@ int main(int argc, char* argv[])
   if (command == "bake")
   {
     return RunBake(args);
+  }
+  if (command == "lights")
+  {
+    return mesolight::RunLightsCommand(args);
   }
   if (command == "cone")
   {
