@@ -2,6 +2,8 @@
 // soft self-shadows, and the skips (negligible lights, K shadowed lights) measured against the
 // unskipped render.
 #include "ImageCompare.h"
+#include "LightSetBenchmark.h"
+#include "ReliefReference.h"
 #include "ReliefScene.h"
 #include "TestReliefTestUtilities.h"
 #include "vtkReliefMapper.h"
@@ -17,6 +19,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 
@@ -143,4 +146,65 @@ TEST(ReliefLightSet, PitFloorIsDarkenedBySelfShadowing)
   EXPECT_NEAR(open, 127.5, 3.0);
   EXPECT_LT(inside, 0.8 * open);
   EXPECT_GT(inside, 0.2 * open);
+}
+
+// The relief lit by median-cut lights of a sun-and-sky environment against Monte Carlo
+// integration of the whole environment with exact first hits and exact height-field visibility.
+// More lights converge toward it; without self-shadowing the error is much larger (negative).
+TEST(ReliefLightSet, MedianCutLightsAgainstMonteCarlo)
+{
+  ReliefSceneOptions o;
+  o.Pattern = "HemisphereTorus";
+  o.Resolution = 128;
+  o.DepthScale = 0.12;
+  o.ViewAngle = 40.0;
+  o.ViewDistance = 2.2;
+  o.Width = o.Height = 200;
+  o.Lights = 0;
+  o.LinearSteps = 16;
+  o.Environment = "procedural:sun";
+  o.EnvironmentLights = 16;
+  std::string error;
+  ReliefScene scene;
+  ASSERT_TRUE(BuildReliefScene(o, scene, error)) << error;
+  scene.Actor->SetTexture(nullptr);
+  scene.Actor->GetProperty()->SetAmbient(0.0);
+  scene.Actor->GetProperty()->SetDiffuse(1.0);
+  scene.Actor->GetProperty()->SetSpecular(0.0);
+  ReliefReference hits;
+  ASSERT_TRUE(ComputeReliefReference(MakeReliefReferenceInput(scene, o), hits, error)) << error;
+  auto environment = LoadEnvironment(o.Environment, error);
+  ASSERT_TRUE(environment) << error;
+  const auto reference =
+    ComputeEnvironmentReference(hits, scene.ReliefTexture, environment, o.DepthScale, 800, 2048, true);
+  double brightest = 0.0;
+  for (const auto& s : reference)
+  {
+    brightest = std::max(brightest, (s.Irradiance[0] + s.Irradiance[1] + s.Irradiance[2]) / 3.0);
+  }
+  ASSERT_GT(brightest, 0.0);
+  const double exposure = 200.0 / 255.0 * vtkMath::Pi() / brightest;
+  scene.Mapper->SetExposure(exposure);
+
+  static vtkSmartPointer<vtkRenderWindow> window = MakeOffscreenWindow(o, scene.Renderer);
+  window->GetRenderers()->RemoveAllItems();
+  window->SetSize(o.Width, o.Height);
+  window->AddRenderer(scene.Renderer);
+  auto errorWith = [&](int lights, bool shadows) {
+    ReliefSceneOptions lo = o;
+    lo.EnvironmentLights = lights;
+    scene.Mapper->SetLightSetData(MakeEnvironmentLights(lo, error));
+    scene.Mapper->SetSelfShadowing(shadows);
+    const double e = EnvironmentError(CaptureFrame(window), reference, exposure);
+    std::cout << "[ibl] " << lights << " lights" << (shadows ? "" : ", no shadows") << ": " << e
+              << "% mean error vs Monte Carlo" << std::endl;
+    return e;
+  };
+  const double e16 = errorWith(16, true);
+  const double e256 = errorWith(256, true);
+  const double unshadowed = errorWith(256, false);
+  window->RemoveRenderer(scene.Renderer);
+  EXPECT_LT(e256, 5.0);
+  EXPECT_LT(e256, e16);
+  EXPECT_GT(unshadowed, 1.5 * e256);
 }

@@ -773,7 +773,7 @@ std::string vtkReliefMapper::ShaderKey() const
     (this->HasAlbedoTexture ? "A" : "a") + std::to_string(this->Output) +
     (this->ConePacked ? "C" : "c") + (this->AdaptiveSteps ? "V" : "v") +
     (this->LevelOfDetail ? "L" : "l") + (this->HasLightSet ? "I" : "i") +
-    (this->ToneMapping ? "T" : "t");
+    (this->ToneMapping ? "T" : "t") + (this->ShadowCulling ? "K" : "k");
 }
 
 //------------------------------------------------------------------------------
@@ -867,6 +867,10 @@ void vtkReliefMapper::ReplaceShaderValues(
   if (this->ToneMapping)
   {
     defines += "#define ML_TONE_MAPPING\n";
+  }
+  if (!this->ShadowCulling)
+  {
+    defines += "#define ML_NO_SHADOW_CULLING\n";
   }
   const std::string declarations = defines +
     "in vec3 mlTangentVC;\n"
@@ -1093,5 +1097,6 @@ void vtkReliefMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ToneMapping: " << (this->ToneMapping ? "On" : "Off") << "\n";
   os << indent << "LightSetThreshold: " << this->LightSetThreshold << "\n";
   os << indent << "ShadowedLights: " << this->ShadowedLights << "\n";
+  os << indent << "ShadowCulling: " << (this->ShadowCulling ? "On" : "Off") << "\n";
   os << indent << "ReliefTexture: " << this->GetReliefTexture() << "\n";
 }

@@ -249,6 +249,13 @@ public:
   vtkGetMacro(LightSetThreshold, double);
   vtkSetClampMacro(ShadowedLights, int, 0, 1 << 16);
   vtkGetMacro(ShadowedLights, int);
+  /**
+   * Lights behind the shading normal contribute nothing and skip their shadow march (default
+   * on). Off marches them anyway, only to measure what the culling saves.
+   */
+  vtkSetMacro(ShadowCulling, bool);
+  vtkGetMacro(ShadowCulling, bool);
+  vtkBooleanMacro(ShadowCulling, bool);
   ///@}
 
   /**
@@ -308,6 +315,7 @@ protected:
   bool ToneMapping = false;
   double LightSetThreshold = 0.0;
   int ShadowedLights = 0;
+  bool ShadowCulling = true;
   vtkSmartPointer<vtkTextureObject> LightSetTextureObject;
   vtkImageData* LightSetUploaded = nullptr;
   vtkMTimeType LightSetUploadTime = 0;

@@ -2,6 +2,8 @@
 
 #include "vtkConeMapFilter.h"
 #include "vtkHeightFieldMeshFilter.h"
+#include "vtkMedianCutLights.h"
+#include "vtkProceduralEnvironmentSource.h"
 #include "vtkOIIOImageReader.h"
 #include "vtkProceduralReliefSource.h"
 #include "vtkReliefMapper.h"
@@ -198,6 +200,61 @@ bool BuildReliefTextures(const ReliefSceneOptions& options, vtkSmartPointer<vtkI
 }
 
 //------------------------------------------------------------------------------
+vtkSmartPointer<vtkImageData> LoadEnvironment(const std::string& spec, std::string& error)
+{
+  vtkNew<ErrorCollector> errors;
+  auto map = vtkSmartPointer<vtkImageData>::New();
+  if (spec == "procedural:sky" || spec == "procedural:sun")
+  {
+    vtkNew<vtkProceduralEnvironmentSource> sky;
+    sky->SetResolution(1024, 512);
+    if (spec == "procedural:sun")
+    {
+      sky->SetMapToSunSky();
+    }
+    sky->Update();
+    map->DeepCopy(sky->GetOutput());
+    return map;
+  }
+  vtkNew<vtkOIIOImageReader> reader;
+  reader->AddObserver(vtkCommand::ErrorEvent, errors);
+  reader->SetFileName(spec.c_str());
+  reader->Update();
+  if (!errors->Messages.empty() || reader->GetOutput()->GetNumberOfPoints() == 0)
+  {
+    error = errors->Messages.empty() ? "could not read the environment " + spec : errors->Messages;
+    return nullptr;
+  }
+  map->DeepCopy(reader->GetOutput());
+  return map;
+}
+
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkImageData> MakeEnvironmentLights(
+  const ReliefSceneOptions& options, std::string& error)
+{
+  vtkSmartPointer<vtkImageData> map = LoadEnvironment(options.Environment, error);
+  if (!map)
+  {
+    return nullptr;
+  }
+  vtkNew<ErrorCollector> errors;
+  vtkNew<vtkMedianCutLights> cut;
+  cut->AddObserver(vtkCommand::ErrorEvent, errors);
+  cut->SetInputData(map);
+  cut->SetNumberOfLights(options.EnvironmentLights);
+  cut->Update();
+  if (!errors->Messages.empty() || !cut->GetLightTexture())
+  {
+    error = errors->Messages.empty() ? "median cut failed" : errors->Messages;
+    return nullptr;
+  }
+  auto lights = vtkSmartPointer<vtkImageData>::New();
+  lights->DeepCopy(cut->GetLightTexture());
+  return lights;
+}
+
+//------------------------------------------------------------------------------
 void SetupCameraAndLights(const ReliefSceneOptions& options, vtkRenderer* renderer)
 {
   // Aim at the wall's centre from ViewAngle off its normal, turned by ViewAzimuth about it.
@@ -219,8 +276,13 @@ void SetupCameraAndLights(const ReliefSceneOptions& options, vtkRenderer* render
   // The same clipping range for every variant, so depth buffers compare.
   camera->SetClippingRange(0.25 * d, 2.5 * d);
 
+  renderer->SetBackground(0.08, 0.09, 0.11);
   renderer->RemoveAllLights();
   renderer->AutomaticLightCreationOff();
+  if (options.Lights < 1)
+  {
+    return;
+  }
   const double e = vtkMath::RadiansFromDegrees(options.LightElevation);
   vtkNew<vtkLight> key;
   key->SetLightTypeToSceneLight();
@@ -241,7 +303,6 @@ void SetupCameraAndLights(const ReliefSceneOptions& options, vtkRenderer* render
     fill->SetIntensity(0.3);
     renderer->AddLight(fill);
   }
-  renderer->SetBackground(0.08, 0.09, 0.11);
 }
 
 //------------------------------------------------------------------------------
@@ -274,6 +335,17 @@ bool BuildReliefScene(const ReliefSceneOptions& options, ReliefScene& scene, std
   scene.Mapper->SetWriteDepth(options.WriteDepth);
   scene.Mapper->SetAdaptiveSteps(options.AdaptiveSteps);
   scene.Mapper->SetLevelOfDetail(options.LevelOfDetail);
+  scene.Mapper->SetExposure(options.Exposure);
+  scene.Mapper->SetToneMapping(options.ToneMapping);
+  if (!options.Environment.empty())
+  {
+    scene.LightSet = MakeEnvironmentLights(options, error);
+    if (!scene.LightSet)
+    {
+      return false;
+    }
+    scene.Mapper->SetLightSetData(scene.LightSet);
+  }
 
   FinishScene(options, scene.Mapper, scene);
   return true;

@@ -42,7 +42,13 @@ struct ReliefSceneOptions
   double ViewAngle = 55.0; // camera angle from the wall's normal, degrees
   double ViewAzimuth = 20.0;
   double ViewDistance = 2.6; // in wall widths
-  int Lights = 2;            // 1: key light; 2: key + fill
+  int Lights = 2;            // 0: none; 1: key light; 2: key + fill
+  // Image-based lighting: "" (none), "procedural:sky", "procedural:sun" or an HDR file; its
+  // median-cut lights light the relief (vtkReliefMapper light set).
+  std::string Environment;
+  int EnvironmentLights = 128;
+  double Exposure = 1.0;
+  bool ToneMapping = false;
   double LightElevation = 35.0; // key light elevation above the wall, degrees
 };
 
@@ -54,7 +60,15 @@ struct ReliefScene
   vtkSmartPointer<vtkReliefMapper> Mapper;          // null for the dense reference
   vtkSmartPointer<vtkImageData> ReliefTexture;      // normal + depth, as uploaded
   vtkSmartPointer<vtkTexture> Albedo;
+  vtkSmartPointer<vtkImageData> LightSet; // median-cut lights of the environment, if any
 };
+
+/** An environment map: "procedural:sky", "procedural:sun" or an HDR file (lat-long). */
+vtkSmartPointer<vtkImageData> LoadEnvironment(const std::string& spec, std::string& error);
+
+/** The options' environment as a light set (vtkMedianCutLights' N x 2 light texture). */
+vtkSmartPointer<vtkImageData> MakeEnvironmentLights(
+  const ReliefSceneOptions& options, std::string& error);
 
 /**
  * Builds the relief texture and albedo described by the options; with a cone map kind

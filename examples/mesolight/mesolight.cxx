@@ -6,6 +6,7 @@
 //   mesolight bench [options]                  time and error of relief vs the dense reference
 #include "CommandLine.h"
 #include "ImageCompare.h"
+#include "LightSetBenchmark.h"
 #include "LightsCommand.h"
 #include "ReliefBenchmark.h"
 #include "ReliefScene.h"
@@ -60,6 +61,8 @@ Usage:
                                                median-cut lights of an HDR environment
   mesolight bench lights [options]             light-set irradiance error vs exact
                                                integration and SH9; median-cut time
+  mesolight bench ibl [options]                relief lit by 32..1024 median-cut lights: time,
+                                               each skip, error vs Monte Carlo
   mesolight help [COMMAND]                     this text, or one command's options
 
 Run 'mesolight COMMAND --help' for the options of a command.
@@ -90,7 +93,12 @@ void AddSceneOptions(CommandLine& cl)
   cl.AddValue("--size", "WxH", "image size in pixels", "800x800");
   cl.AddValue("--view-angle", "DEG", "camera angle from the wall normal", "55");
   cl.AddValue("--azimuth", "DEG", "camera turn about the wall normal", "20");
-  cl.AddValue("--lights", "N", "1 = key light, 2 = key + fill", "2");
+  cl.AddValue("--lights", "N", "VTK lights: 0 = none, 1 = key light, 2 = key + fill", "2");
+  cl.AddValue("--environment", "SPEC",
+    "light also by an environment: procedural:sky, procedural:sun or a lat-long HDR file");
+  cl.AddValue("--env-lights", "N", "median-cut lights of the environment", "128");
+  cl.AddValue("--exposure", "X", "scale of the environment lighting", "1");
+  cl.AddFlag("--tone-map", "Reinhard tone mapping of the environment-lit colour");
   cl.AddValue("--light-elevation", "DEG", "key light elevation above the wall", "35");
 }
 
@@ -104,6 +112,8 @@ bool ReadSceneOptions(const CommandLine& cl, ReliefSceneOptions& o, std::string&
   o.Silhouettes = !cl.Has("--no-silhouettes");
   o.WriteDepth = !cl.Has("--no-depth-write");
   o.AdaptiveSteps = cl.Has("--adaptive-steps");
+  o.Environment = cl.Get("--environment");
+  o.ToneMapping = cl.Has("--tone-map");
   o.LevelOfDetail = cl.Has("--level-of-detail");
   if (!cl.GetInt("--resolution", 1, 16384, o.Resolution, error) ||
     !cl.GetDouble("--depth-scale", 0.0, 10.0, o.DepthScale, error) ||
@@ -111,7 +121,9 @@ bool ReadSceneOptions(const CommandLine& cl, ReliefSceneOptions& o, std::string&
     !cl.GetInt("--refinement-steps", 0, 64, o.RefinementSteps, error) ||
     !cl.GetDouble("--view-angle", 0.0, 89.9, o.ViewAngle, error) ||
     !cl.GetDouble("--azimuth", -360.0, 360.0, o.ViewAzimuth, error) ||
-    !cl.GetInt("--lights", 1, 2, o.Lights, error) ||
+    !cl.GetInt("--lights", 0, 2, o.Lights, error) ||
+    !cl.GetInt("--env-lights", 1, 4096, o.EnvironmentLights, error) ||
+    !cl.GetDouble("--exposure", 0.0, 1e6, o.Exposure, error) ||
     !cl.GetDouble("--light-elevation", 0.0, 90.0, o.LightElevation, error))
   {
     return false;
@@ -492,6 +504,10 @@ int RunCone(const std::vector<std::string>& args)
 
 int RunBench(const std::vector<std::string>& args)
 {
+  if (!args.empty() && args[0] == "ibl")
+  {
+    return mesolight::RunLightSetBenchmark(std::vector<std::string>(args.begin() + 1, args.end()));
+  }
   if (!args.empty() && args[0] == "lights")
   {
     return mesolight::RunLightsBenchmark(std::vector<std::string>(args.begin() + 1, args.end()));

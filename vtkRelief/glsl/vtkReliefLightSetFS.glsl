@@ -22,6 +22,7 @@ vec3 mlLightSetIrradiance(vec3 normalVC, vec3 hit, mat3 worldToTexture, bool mar
   float marchedWeight = 0.0;
   float visibleWeight = 0.0;
   int marched = 0;
+  float wasted = 0.0; // only with ML_NO_SHADOW_CULLING, to measure what culling saves
   for (int i = 0; i < mlLightSetCount; ++i)
   {
     vec4 e = texelFetch(mlLightSet, ivec2(i, 1), 0);
@@ -33,6 +34,13 @@ vec3 mlLightSetIrradiance(vec3 normalVC, vec3 hit, mat3 worldToTexture, bool mar
     float ndl = dot(normalVC, l);
     if (ndl <= 0.0)
     {
+#if defined(ML_NO_SHADOW_CULLING) && defined(ML_SELF_SHADOWING)
+      vec3 away = worldToTexture * l;
+      if (marchShadows && away.z < -1e-6)
+      {
+        wasted += mlShadowed(hit, clamp(away / -away.z, -1e4, 1e4)) ? 1.0 : 0.0;
+      }
+#endif
       continue;
     }
     vec3 contribution = e.rgb * ndl;
@@ -61,5 +69,7 @@ vec3 mlLightSetIrradiance(vec3 normalVC, vec3 hit, mat3 worldToTexture, bool mar
 #endif
     irradiance += contribution;
   }
-  return irradiance + unmarched * (marchedWeight > 0.0 ? visibleWeight / marchedWeight : 1.0);
+  // (1e-30 * wasted keeps the measured, useless marches from being compiled away.)
+  return irradiance + unmarched * (marchedWeight > 0.0 ? visibleWeight / marchedWeight : 1.0) +
+    vec3(1e-30 * wasted);
 }

@@ -1,0 +1,474 @@
+#include "LightSetBenchmark.h"
+
+#include "CommandLine.h"
+#include "ImageCompare.h"
+#include "ReliefReference.h"
+
+#include "core/EnvironmentMaps.h"
+#include "HeightFieldTracer.h"
+
+#include <glm/geometric.hpp>
+#include <vtkActor.h>
+#include <vtkDataArray.h>
+#include <vtkImageData.h>
+#include <vtkPointData.h>
+#include <vtkProperty.h>
+#include <vtkRenderWindow.h>
+#include <vtkSMPTools.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <random>
+#include <sstream>
+
+namespace mesolight
+{
+namespace
+{
+constexpr double Pi = 3.14159265358979323846;
+
+// Environment pixels as a discrete distribution proportional to luminance x solid angle.
+struct EnvironmentSampler
+{
+  int Width = 0, Height = 0;
+  std::vector<double> Cdf;     // cumulative, normalized
+  std::vector<double> Weights; // probability of each pixel
+  std::vector<float> Radiance; // RGB per pixel, VTK row order
+};
+
+EnvironmentSampler MakeSampler(vtkImageData* environment)
+{
+  EnvironmentSampler s;
+  int dims[3];
+  environment->GetDimensions(dims);
+  s.Width = dims[0];
+  s.Height = dims[1];
+  vtkDataArray* values = environment->GetPointData()->GetScalars();
+  const size_t n = static_cast<size_t>(s.Width) * s.Height;
+  s.Radiance.resize(3 * n);
+  s.Weights.resize(n);
+  s.Cdf.resize(n);
+  double total = 0.0;
+  for (int j = 0; j < s.Height; ++j)
+  {
+    const double omega = PixelSolidAngle(j, s.Width, s.Height);
+    for (int i = 0; i < s.Width; ++i)
+    {
+      const size_t p = static_cast<size_t>(j) * s.Width + i;
+      for (int c = 0; c < 3; ++c)
+      {
+        s.Radiance[3 * p + c] = static_cast<float>(values->GetComponent(static_cast<vtkIdType>(p), c));
+      }
+      const double w = std::max(0.0,
+        Luminance(s.Radiance[3 * p], s.Radiance[3 * p + 1], s.Radiance[3 * p + 2]) * omega);
+      s.Weights[p] = w;
+      total += w;
+      s.Cdf[p] = total;
+    }
+  }
+  for (size_t p = 0; p < n; ++p)
+  {
+    s.Weights[p] /= total;
+    s.Cdf[p] /= total;
+  }
+  return s;
+}
+
+struct Timing
+{
+  double MedianMs = 0.0;
+};
+
+double MedianFrameMs(vtkRenderWindow* window, int frames)
+{
+  using Clock = std::chrono::steady_clock;
+  window->Render(); // warm-up: shader compilation, uploads
+  window->WaitForCompletion();
+  std::vector<double> times;
+  for (int i = 0; i < frames; ++i)
+  {
+    const auto t = Clock::now();
+    window->Render();
+    window->WaitForCompletion();
+    times.push_back(std::chrono::duration<double, std::milli>(Clock::now() - t).count());
+  }
+  std::nth_element(times.begin(), times.begin() + times.size() / 2, times.end());
+  return times[times.size() / 2];
+}
+
+// GL_LINEAR + CLAMP_TO_EDGE sample of the packed normal (RGB) of a relief texture.
+glm::dvec3 SampleNormal(vtkDataArray* rgba, int w, int h, double u, double v)
+{
+  const double x = u * w - 0.5, y = v * h - 0.5;
+  const int i0 = static_cast<int>(std::floor(x)), j0 = static_cast<int>(std::floor(y));
+  const double fx = x - i0, fy = y - j0;
+  auto texel = [&](int i, int j) {
+    i = std::min(std::max(i, 0), w - 1);
+    j = std::min(std::max(j, 0), h - 1);
+    const vtkIdType id = static_cast<vtkIdType>(j) * w + i;
+    return glm::dvec3(rgba->GetComponent(id, 0), rgba->GetComponent(id, 1), rgba->GetComponent(id, 2));
+  };
+  return (texel(i0, j0) * (1 - fx) + texel(i0 + 1, j0) * fx) * (1 - fy) +
+    (texel(i0, j0 + 1) * (1 - fx) + texel(i0 + 1, j0 + 1) * fx) * fy;
+}
+
+double MeanAbsoluteDifference(const Frame& a, const Frame& b)
+{
+  double sum = 0.0;
+  long long n = 0;
+  for (size_t p = 0; p < a.Depth.size(); ++p)
+  {
+    if (a.Covered(p) && b.Covered(p))
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        sum += std::abs(double(a.Rgb[3 * p + c]) - double(b.Rgb[3 * p + c]));
+      }
+      ++n;
+    }
+  }
+  return n > 0 ? sum / (3.0 * n) : 0.0;
+}
+} // namespace
+
+//------------------------------------------------------------------------------
+std::vector<EnvironmentIrradianceSample> ComputeEnvironmentReference(const ReliefReference& hits,
+  vtkImageData* relief, vtkImageData* environment, double depthScale, int maxPixels,
+  int samplesPerPixel, bool shadows)
+{
+  int dims[3];
+  relief->GetDimensions(dims);
+  vtkDataArray* rgba = relief->GetPointData()->GetScalars();
+  std::vector<float> depth(static_cast<size_t>(dims[0]) * dims[1]);
+  for (size_t i = 0; i < depth.size(); ++i)
+  {
+    depth[i] = static_cast<float>(rgba->GetComponent(static_cast<vtkIdType>(i), 3));
+  }
+  const HeightField field(dims[0], dims[1], depth);
+  const double aspect = static_cast<double>(dims[1]) / dims[0];
+  const EnvironmentSampler sampler = MakeSampler(environment);
+
+  // Covered pixels, evenly strided down to maxPixels.
+  std::vector<size_t> covered;
+  for (size_t p = 0; p < hits.State.size(); ++p)
+  {
+    if (hits.IsCovered(p))
+    {
+      covered.push_back(p);
+    }
+  }
+  const size_t stride = std::max<size_t>(1, covered.size() / std::max(1, maxPixels));
+  std::vector<EnvironmentIrradianceSample> samples;
+  for (size_t k = 0; k < covered.size(); k += stride)
+  {
+    samples.push_back(EnvironmentIrradianceSample{ covered[k], { 0.0, 0.0, 0.0 } });
+  }
+
+  vtkSMPTools::For(0, static_cast<vtkIdType>(samples.size()), [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType s = begin; s < end; ++s)
+    {
+      EnvironmentIrradianceSample& sample = samples[static_cast<size_t>(s)];
+      const size_t p = sample.Pixel;
+      const glm::dvec3 hit(hits.HitU[p], hits.HitV[p], hits.HitD[p]);
+      // The shading normal is the relief texture's (bilinearly sampled, as the GPU does): the
+      // asset's normals are part of the scene; only visibility and irradiance are referenced.
+      const glm::dvec3 packed = SampleNormal(rgba, dims[0], dims[1], hit.x, hit.y);
+      const glm::dvec3 nt = packed * 2.0 - 1.0;
+      const double nz = std::max(nt.z, 1e-4);
+      // Depth gradient from the baked normal (depth scale k), then the world normal of the
+      // surface (u, aspect v, -k d): Pu x Pv.
+      const glm::dvec2 g(nt.x / (nz * depthScale), nt.y * aspect / (nz * depthScale));
+      glm::dvec3 n(depthScale * aspect * g.x, depthScale * g.y, aspect);
+      n = glm::normalize(n);
+      std::mt19937 rng(static_cast<unsigned>(p) * 2654435761u + 17u);
+      std::uniform_real_distribution<double> uniform(0.0, 1.0);
+      for (int k = 0; k < samplesPerPixel; ++k)
+      {
+        const double x = uniform(rng);
+        const size_t pixel = static_cast<size_t>(
+          std::lower_bound(sampler.Cdf.begin(), sampler.Cdf.end(), x) - sampler.Cdf.begin());
+        if (pixel >= sampler.Cdf.size() || sampler.Weights[pixel] <= 0.0)
+        {
+          continue;
+        }
+        const int i = static_cast<int>(pixel % sampler.Width);
+        const int j = static_cast<int>(pixel / sampler.Width);
+        double d[3];
+        DirectionFromMapUV(PixelCenterU(i, sampler.Width), PixelCenterV(j, sampler.Height), d);
+        const double cosine = n.x * d[0] + n.y * d[1] + n.z * d[2];
+        if (cosine <= 0.0 || d[2] <= 0.0)
+        {
+          continue;
+        }
+        if (shadows && !Visible(field, hit, glm::dvec3(d[0], d[1] / aspect, -d[2] / depthScale)))
+        {
+          continue;
+        }
+        const double weight = PixelSolidAngle(j, sampler.Width, sampler.Height) * cosine /
+          (sampler.Weights[pixel] * samplesPerPixel);
+        for (int c = 0; c < 3; ++c)
+        {
+          sample.Irradiance[c] += sampler.Radiance[3 * pixel + c] * weight;
+        }
+      }
+    }
+  });
+  return samples;
+}
+
+//------------------------------------------------------------------------------
+double EnvironmentError(
+  const Frame& frame, const std::vector<EnvironmentIrradianceSample>& ref, double exposure)
+{
+  double sum = 0.0;
+  long long n = 0;
+  for (const EnvironmentIrradianceSample& s : ref)
+  {
+    if (!frame.Covered(s.Pixel))
+    {
+      continue;
+    }
+    double expected = 0.0, rendered = 0.0;
+    for (int c = 0; c < 3; ++c)
+    {
+      expected += 255.0 * exposure * s.Irradiance[c] / Pi / 3.0;
+      rendered += frame.Rgb[3 * s.Pixel + c] / 3.0;
+    }
+    if (expected < 8.0 || expected > 250.0)
+    {
+      continue; // too dark for 8-bit relative errors, or clipped
+    }
+    sum += std::abs(rendered - expected) / expected;
+    ++n;
+  }
+  return n > 0 ? 100.0 * sum / n : 0.0;
+}
+
+//------------------------------------------------------------------------------
+int RunLightSetBenchmark(const std::vector<std::string>& args)
+{
+  CommandLine cl;
+  cl.AddValue("--environment", "SPEC", "procedural:sky, procedural:sun or a lat-long HDR file",
+    "procedural:sun");
+  cl.AddValue("--counts", "N,N,..", "light counts (one run for all)", "32,64,128,256,512,1024");
+  cl.AddValue("--skip-count", "N", "light count of the skip measurements", "256");
+  cl.AddValue("--frames", "N", "timed frames per configuration (median)", "10");
+  cl.AddValue("--size", "WxH", "window size", "512x512");
+  cl.AddValue("--samples", "N", "Monte Carlo samples per reference pixel", "2048");
+  cl.AddValue("--csv", "FILE", "also write the rows as CSV");
+  cl.AddFlag("--help", "show this help");
+  std::string error;
+  int frames = 10, samples = 2048, skipCount = 256;
+  if (!cl.Parse(args, error) || !cl.GetInt("--frames", 1, 1000, frames, error) ||
+    !cl.GetInt("--samples", 16, 1 << 20, samples, error) ||
+    !cl.GetInt("--skip-count", 1, 4096, skipCount, error))
+  {
+    std::cerr << "mesolight bench ibl: " << error << "\n";
+    return 2;
+  }
+  if (cl.Has("--help"))
+  {
+    std::cout << "mesolight bench ibl [options]\n\nA relief (hemisphere and torus, relief 16+8, "
+                 "self-shadowed) lit only by median-cut light\nsets of an environment: frame time "
+                 "per light count, the effect of each skip, and the error\nagainst a Monte Carlo "
+                 "reference with exact height-field visibility.\n\nOptions:\n";
+    cl.PrintOptions(std::cout);
+    return 0;
+  }
+  std::vector<int> counts;
+  {
+    std::istringstream in(cl.Get("--counts"));
+    std::string item;
+    while (std::getline(in, item, ','))
+    {
+      const int n = std::atoi(item.c_str());
+      if (n < 1 || n > 4096)
+      {
+        std::cerr << "mesolight bench ibl: bad count '" << item << "'\n";
+        return 2;
+      }
+      counts.push_back(n);
+    }
+  }
+  ReliefSceneOptions o;
+  o.Pattern = "HemisphereTorus";
+  o.Resolution = 256;
+  o.DepthScale = 0.12;
+  o.ViewAngle = 40.0;
+  o.ViewDistance = 2.2;
+  o.Lights = 0;
+  o.LinearSteps = 16;
+  o.RefinementSteps = 8;
+  o.Environment = cl.Get("--environment");
+  o.EnvironmentLights = counts.front();
+  {
+    const std::string size = cl.Get("--size");
+    char x = 0;
+    std::istringstream in(size);
+    if (!(in >> o.Width >> x >> o.Height) || x != 'x' || o.Width < 16 || o.Height < 16)
+    {
+      std::cerr << "mesolight bench ibl: bad --size " << size << "\n";
+      return 2;
+    }
+  }
+
+  ReliefScene scene;
+  if (!BuildReliefScene(o, scene, error))
+  {
+    std::cerr << "mesolight bench ibl: " << error << "\n";
+    return 1;
+  }
+  // White Lambertian surface, lit by the environment only: the reference is albedo / pi x E.
+  scene.Actor->SetTexture(nullptr);
+  scene.Actor->GetProperty()->SetAmbient(0.0);
+  scene.Actor->GetProperty()->SetDiffuse(1.0);
+  scene.Actor->GetProperty()->SetSpecular(0.0);
+  vtkSmartPointer<vtkImageData> environment = LoadEnvironment(o.Environment, error);
+  if (!environment)
+  {
+    std::cerr << "mesolight bench ibl: " << error << "\n";
+    return 1;
+  }
+  ReliefReference hits;
+  if (!ComputeReliefReference(MakeReliefReferenceInput(scene, o), hits, error))
+  {
+    std::cerr << "mesolight bench ibl: " << error << "\n";
+    return 1;
+  }
+  const auto referenceStart = std::chrono::steady_clock::now();
+  const std::vector<EnvironmentIrradianceSample> reference = ComputeEnvironmentReference(
+    hits, scene.ReliefTexture, environment, o.DepthScale, 3000, samples, true);
+  const double referenceSeconds =
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - referenceStart).count();
+  // Exposure: the brightest reference pixel at about 200 of 255.
+  double brightest = 0.0;
+  for (const auto& s : reference)
+  {
+    brightest = std::max(brightest, (s.Irradiance[0] + s.Irradiance[1] + s.Irradiance[2]) / 3.0);
+  }
+  const double exposure = brightest > 0.0 ? 200.0 / 255.0 * Pi / brightest : 1.0;
+  scene.Mapper->SetExposure(exposure);
+
+  auto window = MakeOffscreenWindow(o, scene.Renderer);
+  struct Row
+  {
+    std::string Config;
+    int Lights;
+    double Ms;
+    double ErrorMc;
+    double DiffFull; // mean |difference| to the unskipped render, 8-bit levels (-1: n/a)
+  };
+  std::vector<Row> rows;
+  auto setLights = [&](int count) {
+    ReliefSceneOptions lo = o;
+    lo.EnvironmentLights = count;
+    scene.Mapper->SetLightSetData(MakeEnvironmentLights(lo, error));
+  };
+  auto measure = [&](const std::string& config, int count, const Frame* full) {
+    const double ms = MedianFrameMs(window, frames);
+    const Frame frame = CaptureFrame(window);
+    rows.push_back({ config, count, ms, EnvironmentError(frame, reference, exposure),
+      full ? MeanAbsoluteDifference(frame, *full) : -1.0 });
+    return frame;
+  };
+
+  for (int count : counts)
+  {
+    setLights(count);
+    measure("every light marches its shadow", count, nullptr);
+  }
+  scene.Mapper->SetShadowedLights(32);
+  for (int count : counts)
+  {
+    setLights(count);
+    measure("shadows for the 32 strongest facing lights", count, nullptr);
+  }
+  scene.Mapper->SetShadowedLights(0);
+  setLights(skipCount);
+  const Frame full = measure("reference configuration", skipCount, nullptr);
+  scene.Mapper->ShadowCullingOff();
+  measure("no culling of lights behind the normal", skipCount, &full);
+  scene.Mapper->ShadowCullingOn();
+  for (double threshold : { 0.01, 0.05 })
+  {
+    scene.Mapper->SetLightSetThreshold(threshold);
+    std::ostringstream label;
+    label << "skip lights < " << threshold * 100 << "% of the strongest";
+    measure(label.str(), skipCount, &full);
+  }
+  scene.Mapper->SetLightSetThreshold(0.0);
+  for (int k : { 8, 32 })
+  {
+    scene.Mapper->SetShadowedLights(k);
+    measure("shadows for the " + std::to_string(k) + " strongest lights only", skipCount, &full);
+  }
+  scene.Mapper->SetShadowedLights(0);
+  scene.Mapper->SelfShadowingOff();
+  measure("no self-shadowing (negative reference)", skipCount, &full);
+  scene.Mapper->SelfShadowingOn();
+
+  std::cout << "Relief lit by median-cut lights of " << o.Environment << " (relief 16+8, "
+            << o.Width << "x" << o.Height << ", " << frames << " timed frames, median)\n"
+            << "Error: mean relative error of the rendered radiance against a Monte Carlo "
+               "reference\n(exact first hits and exact height-field visibility, "
+            << samples << " samples per pixel, " << reference.size() << " pixels, "
+            << std::fixed << std::setprecision(1) << referenceSeconds << " s).\n\n";
+  std::cout << std::left << std::setw(46) << "configuration" << std::right << std::setw(7)
+            << "lights" << std::setw(11) << "ms/frame" << std::setw(11) << "error %"
+            << std::setw(13) << "vs full lvl" << "\n";
+  for (const Row& r : rows)
+  {
+    std::cout << std::left << std::setw(46) << r.Config << std::right << std::setw(7) << r.Lights
+              << std::fixed << std::setprecision(1) << std::setw(11) << r.Ms
+              << std::setprecision(2) << std::setw(11) << r.ErrorMc << std::setw(13);
+    if (r.DiffFull >= 0.0)
+    {
+      std::cout << r.DiffFull;
+    }
+    else
+    {
+      std::cout << "-";
+    }
+    std::cout << "\n";
+  }
+  for (const char* series :
+    { "every light marches its shadow", "shadows for the 32 strongest facing lights" })
+  {
+    const Row* first = nullptr;
+    const Row* last = nullptr;
+    for (const Row& r : rows)
+    {
+      if (r.Config == series)
+      {
+        first = first ? first : &r;
+        last = &r;
+      }
+    }
+    if (first && last && first != last)
+    {
+      std::cout << "\n" << series << ": " << last->Lights << " lights take "
+                << std::setprecision(1) << last->Ms / first->Ms << "x the time of "
+                << first->Lights << " (the relief thesis: 29x from 32 to 1024).";
+    }
+  }
+  std::cout << "\n";
+  const std::string csvFile = cl.Get("--csv");
+  if (!csvFile.empty())
+  {
+    std::ofstream csv(csvFile);
+    csv << "configuration,lights,ms_per_frame,error_pct_vs_monte_carlo,mean_diff_vs_full\n";
+    for (const Row& r : rows)
+    {
+      csv << '"' << r.Config << "\"," << r.Lights << ',' << r.Ms << ',' << r.ErrorMc << ','
+          << (r.DiffFull >= 0.0 ? std::to_string(r.DiffFull) : std::string()) << "\n";
+    }
+    std::cout << "wrote " << csvFile << "\n";
+  }
+  return 0;
+}
+
+} // namespace mesolight
