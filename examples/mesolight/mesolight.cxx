@@ -13,6 +13,8 @@
 #include "ReliefSweep.h"
 
 #include "vtkConeMapFilter.h"
+#include "vtkLightProbeToLatLong.h"
+#include "core/EnvironmentMaps.h"
 #include "vtkOIIOImageReader.h"
 #include "vtkOIIOImageWriter.h"
 #include "vtkReliefMapper.h"
@@ -21,7 +23,10 @@
 #include <vtkActor.h>
 #include <vtkCallbackCommand.h>
 #include <vtkCommand.h>
+#include <vtkDataArray.h>
+#include <vtkFloatArray.h>
 #include <vtkImageData.h>
+#include <vtkPointData.h>
 #include <vtkInteractorStyleTrackballCamera.h>
 #include <vtkNew.h>
 #include <vtkLogger.h>
@@ -57,6 +62,8 @@ Usage:
   mesolight bench [options]                    time and error: relief vs the dense mesh
   mesolight bench relief [options]             every method x steps x view angle x map:
                                                time vs exact hit error, CSV and plots
+  mesolight probe PROBE_IMAGE --out FILE.exr   light probe (angular map, mirror ball, two-view
+                                               merge) -> lat-long environment
   mesolight lights ENV_IMAGE --count N --out lights.csv
                                                median-cut lights of an HDR environment
   mesolight bench lights [options]             light-set irradiance error vs exact
@@ -502,6 +509,141 @@ int RunCone(const std::vector<std::string>& args)
   return 0;
 }
 
+bool ParseVector(const std::string& text, double v[3])
+{
+  char c1 = 0, c2 = 0;
+  std::istringstream in(text);
+  return static_cast<bool>(in >> v[0] >> c1 >> v[1] >> c2 >> v[2]) && c1 == ',' && c2 == ',';
+}
+
+mesolight::RgbImage ToRgb(vtkImageData* image)
+{
+  int dims[3];
+  image->GetDimensions(dims);
+  mesolight::RgbImage rgb(dims[0], dims[1]);
+  vtkDataArray* values = image->GetPointData()->GetScalars();
+  for (vtkIdType p = 0; p < static_cast<vtkIdType>(dims[0]) * dims[1]; ++p)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      rgb.Rgb[3 * p + c] = static_cast<float>(values->GetComponent(p, std::min(c, values->GetNumberOfComponents() - 1)));
+    }
+  }
+  return rgb;
+}
+
+int RunProbe(const std::vector<std::string>& args)
+{
+  CommandLine cl;
+  cl.AddValue("--out", "FILE.exr", "lat-long environment to write");
+  cl.AddValue("--type", "TYPE", "angular (Debevec light probe) or mirror-ball", "angular");
+  cl.AddValue("--width", "W", "output width (height W/2); 0 = twice the probe size", "0");
+  cl.AddValue("--forward", "X,Y,Z", "direction the probe camera looked in", "1,0,0");
+  cl.AddValue("--up", "X,Y,Z", "up direction of the probe picture", "0,0,1");
+  cl.AddValue("--merge", "PROBE_B", "second view of the same probe (the relief thesis' two-view merge)");
+  cl.AddValue("--merge-forward", "X,Y,Z", "direction the second view looked in", "0,1,0");
+  cl.AddValue("--mask", "IMAGE", "lat-long mask C: result = A C + B (1 - C)");
+  cl.AddFlag("--help", "show this help");
+  std::string error;
+  int width = 0;
+  double forward[3], up[3], forwardB[3];
+  if (!cl.Parse(args, error) || !cl.GetInt("--width", 0, 32768, width, error))
+  {
+    std::cerr << "mesolight probe: " << error << "\n";
+    return 2;
+  }
+  if (cl.Has("--help"))
+  {
+    std::cout << "mesolight probe PROBE_IMAGE --out FILE.exr [options]\n\nConverts a light probe "
+                 "picture (angular map or mirror ball) into a lat-long environment\n(+Z up, v = 0 "
+                 "at the top row; docs/environment-maps.md).\n\nOptions:\n";
+    cl.PrintOptions(std::cout);
+    return 0;
+  }
+  const std::string type = cl.Get("--type");
+  if (cl.Positional().size() != 1 || !cl.Has("--out") || (type != "angular" && type != "mirror-ball") ||
+    !ParseVector(cl.Get("--forward"), forward) || !ParseVector(cl.Get("--up"), up) ||
+    !ParseVector(cl.Get("--merge-forward"), forwardB) || (cl.Has("--merge") != cl.Has("--mask")))
+  {
+    std::cerr << "mesolight probe: usage: mesolight probe PROBE_IMAGE --out FILE.exr "
+                 "[--type angular|mirror-ball] [--forward x,y,z] [--up x,y,z] "
+                 "[--merge PROBE_B --mask MASK]\n";
+    return 2;
+  }
+  const std::string out = cl.Get("--out");
+  for (const std::string& in : { cl.Positional()[0], cl.Get("--merge"), cl.Get("--mask") })
+  {
+    if (!in.empty() && (in == out || SameFile(in, out)))
+    {
+      std::cerr << "mesolight probe: --out must differ from the inputs\n";
+      return 2;
+    }
+  }
+  auto convert = [&](const std::string& file, const double f[3]) -> vtkSmartPointer<vtkImageData> {
+    vtkNew<vtkOIIOImageReader> reader;
+    reader->SetFileName(file.c_str());
+    vtkNew<vtkLightProbeToLatLong> toLatLong;
+    toLatLong->SetInputConnection(reader->GetOutputPort());
+    toLatLong->SetProbeType(type == "mirror-ball" ? vtkLightProbeToLatLong::MIRROR_BALL
+                                                  : vtkLightProbeToLatLong::ANGULAR_MAP);
+    toLatLong->SetOutputWidth(width);
+    toLatLong->SetForward(const_cast<double*>(f));
+    toLatLong->SetUp(up);
+    toLatLong->Update();
+    if (toLatLong->GetOutput()->GetNumberOfPoints() == 0)
+    {
+      return nullptr;
+    }
+    auto result = vtkSmartPointer<vtkImageData>::New();
+    result->DeepCopy(toLatLong->GetOutput());
+    return result;
+  };
+  vtkSmartPointer<vtkImageData> map = convert(cl.Positional()[0], forward);
+  if (!map)
+  {
+    std::cerr << "mesolight probe: could not convert " << cl.Positional()[0] << "\n";
+    return 1;
+  }
+  if (cl.Has("--merge"))
+  {
+    vtkSmartPointer<vtkImageData> second = convert(cl.Get("--merge"), forwardB);
+    vtkNew<vtkOIIOImageReader> maskReader;
+    maskReader->SetFileName(cl.Get("--mask").c_str());
+    maskReader->Update();
+    int dims[3], maskDims[3];
+    map->GetDimensions(dims);
+    maskReader->GetOutput()->GetDimensions(maskDims);
+    if (!second || maskDims[0] != dims[0] || maskDims[1] != dims[1])
+    {
+      std::cerr << "mesolight probe: the second view and the mask must convert to / be "
+                << dims[0] << "x" << dims[1] << "\n";
+      return 1;
+    }
+    vtkDataArray* maskValues = maskReader->GetOutput()->GetPointData()->GetScalars();
+    const double maskScale = maskValues->GetDataType() == VTK_UNSIGNED_CHAR ? 1.0 / 255.0 : 1.0;
+    std::vector<float> mask(static_cast<size_t>(dims[0]) * dims[1]);
+    for (size_t p = 0; p < mask.size(); ++p)
+    {
+      mask[p] = static_cast<float>(maskValues->GetComponent(static_cast<vtkIdType>(p), 0) * maskScale);
+    }
+    const mesolight::RgbImage merged = mesolight::MergeWithMask(ToRgb(map), ToRgb(second), mask);
+    std::copy(merged.Rgb.begin(), merged.Rgb.end(),
+      vtkFloatArray::SafeDownCast(map->GetPointData()->GetScalars())->GetPointer(0));
+  }
+  vtkNew<vtkOIIOImageWriter> writer;
+  writer->SetInputData(map);
+  writer->SetFileName(out.c_str());
+  if (!writer->Write())
+  {
+    std::cerr << "mesolight probe: could not write " << out << "\n";
+    return 1;
+  }
+  int dims[3];
+  map->GetDimensions(dims);
+  std::cout << "wrote " << out << " (" << dims[0] << "x" << dims[1] << " lat-long)" << std::endl;
+  return 0;
+}
+
 int RunBench(const std::vector<std::string>& args)
 {
   if (!args.empty() && args[0] == "ibl")
@@ -588,6 +730,10 @@ int main(int argc, char* argv[])
   if (command == "bake")
   {
     return RunBake(args);
+  }
+  if (command == "probe")
+  {
+    return RunProbe(args);
   }
   if (command == "lights")
   {
