@@ -371,7 +371,7 @@ bool vtkReliefMapper::UpdateLightSet(vtkOpenGLRenderWindow* renWin)
       d[c] = light.Direction[c];
       e[c] = light.Irradiance[c];
     }
-    d[3] = 0.0f;
+    d[3] = light.Luminance;
     e[3] = light.Luminance;
   }
   if (!this->LightSetTextureObject)

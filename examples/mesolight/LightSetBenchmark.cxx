@@ -381,11 +381,11 @@ int RunLightSetBenchmark(const std::vector<std::string>& args)
     setLights(count);
     measure("every light marches its shadow", count, nullptr);
   }
-  scene.Mapper->SetShadowedLights(16);
+  scene.Mapper->SetShadowedLights(32);
   for (int count : counts)
   {
     setLights(count);
-    measure("shadows for the 16 strongest facing lights", count, nullptr);
+    measure("shadows for the 32 strongest facing lights", count, nullptr);
   }
   scene.Mapper->SetShadowedLights(0);
   setLights(skipCount);
@@ -436,7 +436,7 @@ int RunLightSetBenchmark(const std::vector<std::string>& args)
     std::cout << "\n";
   }
   for (const char* series :
-    { "every light marches its shadow", "shadows for the 16 strongest facing lights" })
+    { "every light marches its shadow", "shadows for the 32 strongest facing lights" })
   {
     const Row* first = nullptr;
     const Row* last = nullptr;

@@ -1,9 +1,11 @@
 // Mesolight relief: an image-based light set (median-cut lights of an HDR environment, seed 000
 // §5), each light shading and self-shadowing the height field, which gives soft shadows.
 //
-// The light texture is N x 2: row 0 the unit directions toward the lights (world coordinates),
-// row 1 the irradiance each delivers at normal incidence (RGB) and its luminance (A). Lights come
-// sorted by luminance, strongest first, so the loop can stop at the first negligible one.
+// The light texture is N x 2: row 0 the unit directions toward the lights (world coordinates)
+// and their luminance (A), row 1 the irradiance each delivers at normal incidence (RGB). Lights
+// come sorted by luminance, strongest first, so the loop can stop at the first negligible one.
+// The loop runs in world coordinates (one normal transform per pixel, not one per light) and
+// reads a light's irradiance only if the light faces the pixel.
 // What a pixel does not need is skipped: lights behind the shading normal or below the
 // macro-surface horizon get no shadow march, and with mlShadowedLights > 0 only the strongest
 // facing lights are marched; the others are weighted by the visible fraction of those.
@@ -23,19 +25,19 @@ vec3 mlLightSetIrradiance(vec3 normalVC, vec3 hit, mat3 worldToTexture, bool mar
   float visibleWeight = 0.0;
   int marched = 0;
   float wasted = 0.0; // only with ML_NO_SHADOW_CULLING, to measure what culling saves
+  vec3 normalWC = transpose(mlWorldToView) * normalVC; // the view rotation is orthonormal
   for (int i = 0; i < mlLightSetCount; ++i)
   {
-    vec4 e = texelFetch(mlLightSet, ivec2(i, 1), 0);
-    if (e.a < mlLightSetCutoff)
+    vec4 light = texelFetch(mlLightSet, ivec2(i, 0), 0);
+    if (light.a < mlLightSetCutoff)
     {
       break; // sorted: every further light is weaker still
     }
-    vec3 l = mlWorldToView * texelFetch(mlLightSet, ivec2(i, 0), 0).xyz;
-    float ndl = dot(normalVC, l);
+    float ndl = dot(normalWC, light.xyz);
     if (ndl <= 0.0)
     {
 #if defined(ML_NO_SHADOW_CULLING) && defined(ML_SELF_SHADOWING)
-      vec3 away = worldToTexture * l;
+      vec3 away = worldToTexture * (mlWorldToView * light.xyz);
       if (marchShadows && away.z < -1e-6)
       {
         wasted += mlShadowed(hit, clamp(away / -away.z, -1e4, 1e4)) ? 1.0 : 0.0;
@@ -43,11 +45,11 @@ vec3 mlLightSetIrradiance(vec3 normalVC, vec3 hit, mat3 worldToTexture, bool mar
 #endif
       continue;
     }
-    vec3 contribution = e.rgb * ndl;
+    vec3 contribution = texelFetch(mlLightSet, ivec2(i, 1), 0).rgb * ndl;
 #ifdef ML_SELF_SHADOWING
     if (marchShadows)
     {
-      vec3 toLight = worldToTexture * l;
+      vec3 toLight = worldToTexture * (mlWorldToView * light.xyz);
       if (toLight.z >= -1e-6)
       {
         continue; // below the macro-surface horizon: blocked without marching
