@@ -52,35 +52,17 @@ vtkSmartPointer<vtkImageData> UniformSkyLights(int n, double radiance)
 
 Frame RenderTopDown(vtkImageData* relief, vtkImageData* lights, double exposure)
 {
-  vtkNew<vtkPlaneSource> plane;
-  plane->SetOrigin(0, 0, 0);
-  plane->SetPoint1(1, 0, 0);
-  plane->SetPoint2(0, 1, 0);
   vtkNew<vtkReliefMapper> mapper;
-  mapper->SetInputConnection(plane->GetOutputPort());
-  mapper->SetReliefTextureData(relief);
-  mapper->SetDepthScale(0.1);
+  auto actor = test::UnitSquareRelief(mapper, relief, 0.1);
   if (lights)
   {
     mapper->SetLightSetData(lights);
   }
   mapper->SetExposure(exposure);
-  vtkNew<vtkActor> actor;
-  actor->SetMapper(mapper);
-  actor->GetProperty()->SetAmbient(0.0);
-  actor->GetProperty()->SetDiffuse(1.0);
-  actor->GetProperty()->SetSpecular(0.0);
-  actor->GetProperty()->SetColor(1, 1, 1);
   vtkNew<vtkRenderer> renderer;
   renderer->AutomaticLightCreationOff(); // the light set only
   renderer->AddActor(actor);
-  vtkCamera* camera = renderer->GetActiveCamera();
-  camera->ParallelProjectionOn();
-  camera->SetParallelScale(0.5);
-  camera->SetFocalPoint(0.5, 0.5, 0.0);
-  camera->SetPosition(0.5, 0.5, 2.0);
-  camera->SetViewUp(0, 1, 0);
-  camera->SetClippingRange(0.5, 4.0);
+  test::LookStraightDown(renderer);
   // One window for the whole test program: opening a new X window right after a light-set render
   // was seen to fail under Xvfb + llvmpipe ("bad X server connection"), see docs/known-issues.md.
   ReliefSceneOptions size;

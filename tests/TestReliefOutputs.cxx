@@ -23,17 +23,9 @@ constexpr int Pixels = 256;
 Frame RenderTopDown(int output)
 {
   auto relief = test::BakeRelief(test::MakeDepthMap(64, 64, [](double, double) { return 0.0; }), 0.1);
-  vtkNew<vtkPlaneSource> plane;
-  plane->SetOrigin(0, 0, 0);
-  plane->SetPoint1(1, 0, 0);
-  plane->SetPoint2(0, 1, 0);
   vtkNew<vtkReliefMapper> mapper;
-  mapper->SetInputConnection(plane->GetOutputPort());
-  mapper->SetReliefTextureData(relief);
-  mapper->SetDepthScale(0.1);
+  auto actor = test::UnitSquareRelief(mapper, relief, 0.1);
   mapper->SetOutput(output);
-  vtkNew<vtkActor> actor;
-  actor->SetMapper(mapper);
   vtkNew<vtkRenderer> renderer;
   renderer->AddActor(actor);
   vtkNew<vtkLight> light;
@@ -41,13 +33,7 @@ Frame RenderTopDown(int output)
   light->SetPosition(0.5, 0.5, 1.0);
   light->SetFocalPoint(0.5, 0.5, 0.0);
   renderer->AddLight(light);
-  vtkCamera* camera = renderer->GetActiveCamera();
-  camera->ParallelProjectionOn();
-  camera->SetParallelScale(0.5);
-  camera->SetFocalPoint(0.5, 0.5, 0.0);
-  camera->SetPosition(0.5, 0.5, 2.0);
-  camera->SetViewUp(0, 1, 0);
-  camera->SetClippingRange(0.5, 4.0);
+  test::LookStraightDown(renderer);
   ReliefSceneOptions size;
   size.Width = size.Height = Pixels;
   auto window = MakeOffscreenWindow(size, renderer);

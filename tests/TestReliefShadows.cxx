@@ -45,22 +45,10 @@ ShadowRun RenderRidgeShadow(double elevationDegrees, bool shadows, int linearSte
     256, 256, [](double u, double) { return (u >= RidgeLow && u <= RidgeHigh) ? 0.0 : 1.0; });
   auto relief = test::BakeRelief(depth, DepthScale);
 
-  vtkNew<vtkPlaneSource> plane;
-  plane->SetOrigin(0, 0, 0);
-  plane->SetPoint1(1, 0, 0);
-  plane->SetPoint2(0, 1, 0);
   vtkNew<vtkReliefMapper> mapper;
-  mapper->SetInputConnection(plane->GetOutputPort());
-  mapper->SetReliefTextureData(relief);
-  mapper->SetDepthScale(DepthScale);
+  auto actor = test::UnitSquareRelief(mapper, relief, DepthScale);
   mapper->SetSelfShadowing(shadows);
   mapper->SetLinearSteps(linearSteps);
-  vtkNew<vtkActor> actor;
-  actor->SetMapper(mapper);
-  actor->GetProperty()->SetAmbient(0.0);
-  actor->GetProperty()->SetDiffuse(1.0);
-  actor->GetProperty()->SetSpecular(0.0);
-  actor->GetProperty()->SetColor(1, 1, 1);
 
   vtkNew<vtkRenderer> renderer;
   renderer->AddActor(actor);
@@ -72,13 +60,7 @@ ShadowRun RenderRidgeShadow(double elevationDegrees, bool shadows, int linearSte
   light->SetFocalPoint(0.5, 0.5, 0.0);
   light->SetPosition(0.5 - std::cos(e), 0.5, std::sin(e)); // from -u, across the ridge
   renderer->AddLight(light);
-  vtkCamera* camera = renderer->GetActiveCamera();
-  camera->ParallelProjectionOn();
-  camera->SetParallelScale(0.5);
-  camera->SetFocalPoint(0.5, 0.5, 0.0);
-  camera->SetPosition(0.5, 0.5, 2.0);
-  camera->SetViewUp(0, 1, 0);
-  camera->SetClippingRange(0.5, 4.0);
+  test::LookStraightDown(renderer);
 
   ReliefSceneOptions size;
   size.Width = size.Height = Pixels;

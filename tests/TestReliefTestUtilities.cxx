@@ -1,6 +1,14 @@
 #include "TestReliefTestUtilities.h"
 
+#include "vtkReliefMapper.h"
 #include "vtkReliefTextureFilter.h"
+
+#include <vtkActor.h>
+#include <vtkCamera.h>
+#include <vtkPlaneSource.h>
+#include <vtkPolyData.h>
+#include <vtkProperty.h>
+#include <vtkRenderer.h>
 
 #include <vtkFloatArray.h>
 #include <vtkImageData.h>
@@ -61,6 +69,37 @@ vtkSmartPointer<vtkImageData> BakeRelief(vtkImageData* depth, double depthScale)
   auto relief = vtkSmartPointer<vtkImageData>::New();
   relief->DeepCopy(bake->GetOutput());
   return relief;
+}
+
+vtkSmartPointer<vtkActor> UnitSquareRelief(
+  vtkReliefMapper* mapper, vtkImageData* relief, double depthScale)
+{
+  vtkNew<vtkPlaneSource> plane;
+  plane->SetOrigin(0, 0, 0);
+  plane->SetPoint1(1, 0, 0);
+  plane->SetPoint2(0, 1, 0);
+  plane->Update();
+  mapper->SetInputData(plane->GetOutput());
+  mapper->SetReliefTextureData(relief);
+  mapper->SetDepthScale(depthScale);
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetAmbient(0.0);
+  actor->GetProperty()->SetDiffuse(1.0);
+  actor->GetProperty()->SetSpecular(0.0);
+  actor->GetProperty()->SetColor(1, 1, 1);
+  return actor;
+}
+
+void LookStraightDown(vtkRenderer* renderer)
+{
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->ParallelProjectionOn();
+  camera->SetParallelScale(0.5);
+  camera->SetFocalPoint(0.5, 0.5, 0.0);
+  camera->SetPosition(0.5, 0.5, 2.0);
+  camera->SetViewUp(0, 1, 0);
+  camera->SetClippingRange(0.5, 4.0);
 }
 
 std::string OutputPath(const std::string& name)

@@ -8,8 +8,11 @@
 #include <functional>
 #include <string>
 
+class vtkActor;
 class vtkImageData;
 class vtkObject;
+class vtkReliefMapper;
+class vtkRenderer;
 
 namespace mesolight
 {
@@ -34,6 +37,16 @@ vtkSmartPointer<vtkImageData> MakeDepthMap(
 
 /** The relief texture of a depth map (vtkReliefTextureFilter, clamp borders). */
 vtkSmartPointer<vtkImageData> BakeRelief(vtkImageData* depth, double depthScale);
+
+/**
+ * The unit square [0,1]^2 at z = 0 (texture coordinates = position) drawn by mapper with the given
+ * relief texture, as a white Lambertian actor (ambient 0, diffuse 1, specular 0).
+ */
+vtkSmartPointer<vtkActor> UnitSquareRelief(
+  vtkReliefMapper* mapper, vtkImageData* relief, double depthScale);
+
+/** A parallel camera looking straight down at the unit square, which fills the view. */
+void LookStraightDown(vtkRenderer* renderer);
 
 /** Where test output goes (a build-tree directory). */
 std::string OutputPath(const std::string& name);
