@@ -301,8 +301,22 @@ int RunRender(const std::vector<std::string>& args)
     std::cerr << "mesolight render: " << error << "\n";
     return 1;
   }
-  auto window = mesolight::MakeOffscreenWindow(options, scene.Renderer);
-  mesolight::Frame frame = mesolight::CaptureFrame(window);
+  // One window for both the PNG and the interactive view: on screen when a display is there.
+  const bool interactive = !cl.Has("--offscreen") && mesolight::HasDisplay();
+  vtkSmartPointer<vtkRenderWindow> window;
+  if (interactive)
+  {
+    window = vtkSmartPointer<vtkRenderWindow>::New();
+    window->SetSize(options.Width, options.Height);
+    window->SetMultiSamples(0);
+    window->SetWindowName("mesolight");
+    window->AddRenderer(scene.Renderer);
+  }
+  else
+  {
+    window = mesolight::MakeOffscreenWindow(options, scene.Renderer);
+  }
+  const mesolight::Frame frame = mesolight::CaptureFrame(window);
   if (!mesolight::WritePng(frame, out.c_str()))
   {
     std::cerr << "mesolight render: could not write " << out << "\n";
@@ -310,17 +324,10 @@ int RunRender(const std::vector<std::string>& args)
   }
   std::cout << "wrote " << out << " (" << options.Width << "x" << options.Height << ", method "
             << options.Method << ")" << std::endl;
-  if (cl.Has("--offscreen") || !mesolight::HasDisplay())
+  if (!interactive)
   {
     return 0;
   }
-  window->RemoveRenderer(scene.Renderer);
-  window = nullptr;
-
-  vtkNew<vtkRenderWindow> onscreen;
-  onscreen->SetSize(options.Width, options.Height);
-  onscreen->SetWindowName("mesolight");
-  onscreen->AddRenderer(scene.Renderer);
   vtkNew<vtkTextActor> status;
   status->GetTextProperty()->SetFontSize(14);
   status->GetTextProperty()->SetColor(0.9, 0.9, 0.9);
@@ -332,9 +339,8 @@ int RunRender(const std::vector<std::string>& args)
   style->Status = status;
   style->UpdateStatus();
   interactor->SetInteractorStyle(style);
-  interactor->SetRenderWindow(onscreen);
-  onscreen->Render();
-  scene.Renderer->ResetCameraClippingRange();
+  interactor->SetRenderWindow(window);
+  window->Render();
   interactor->Start();
   return 0;
 }
