@@ -1,4 +1,5 @@
 #include "vtkConeMapFilter.h"
+#include "vtkWholeExtentRequest.h"
 
 #include "core/ConeMaps.h"
 #include "vtkReliefTextureFilter.h"
@@ -48,13 +49,7 @@ int vtkConeMapFilter::RequestUpdateExtent(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
 {
   // Cones see the whole map.
-  if (inputVector[0]->GetNumberOfInformationObjects() > 0)
-  {
-    vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
-    int wholeExtent[6];
-    inInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), wholeExtent);
-    inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), wholeExtent, 6);
-  }
+  mesolight::RequestWholeInputExtent(inputVector);
   return 1;
 }
 

@@ -1,4 +1,5 @@
 #include "vtkLightProbeToLatLong.h"
+#include "vtkWholeExtentRequest.h"
 
 #include "core/EnvironmentMaps.h"
 
@@ -46,10 +47,7 @@ int vtkLightProbeToLatLong::RequestInformation(
 int vtkLightProbeToLatLong::RequestUpdateExtent(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
 {
-  vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
-  int wholeExtent[6];
-  inInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), wholeExtent);
-  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), wholeExtent, 6);
+  mesolight::RequestWholeInputExtent(inputVector);
   return 1;
 }
 

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkMedianCutLights.h"
+#include "vtkWholeExtentRequest.h"
 
 #include "core/EnvironmentMaps.h"
 #include "core/MedianCut.h"
@@ -106,13 +107,7 @@ int vtkMedianCutLights::RequestUpdateExtent(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
 {
   // The median cut needs the whole map.
-  if (inputVector[0]->GetNumberOfInformationObjects() > 0)
-  {
-    vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
-    int wholeExtent[6];
-    inInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), wholeExtent);
-    inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), wholeExtent, 6);
-  }
+  mesolight::RequestWholeInputExtent(inputVector);
   return 1;
 }
 

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkOIIOImageWriter.h"
+#include "vtkWholeExtentRequest.h"
 
 #include "core/OneLineMessage.h"
 
@@ -134,13 +135,7 @@ int vtkOIIOImageWriter::RequestInformation(
 int vtkOIIOImageWriter::RequestUpdateExtent(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
 {
-  if (inputVector[0]->GetNumberOfInformationObjects() > 0)
-  {
-    vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
-    int wholeExtent[6];
-    inInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), wholeExtent);
-    inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), wholeExtent, 6);
-  }
+  mesolight::RequestWholeInputExtent(inputVector);
   return 1;
 }
 

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkReliefTextureFilter.h"
+#include "vtkWholeExtentRequest.h"
 
 #include "core/ScalarConversion.h"
 #include "core/SobelNormals.h"
@@ -84,13 +85,7 @@ int vtkReliefTextureFilter::RequestUpdateExtent(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
 {
   // The Sobel stencil and NormalizeRange need the whole image.
-  if (inputVector[0]->GetNumberOfInformationObjects() > 0)
-  {
-    vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
-    int wholeExtent[6];
-    inInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), wholeExtent);
-    inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), wholeExtent, 6);
-  }
+  mesolight::RequestWholeInputExtent(inputVector);
   return 1;
 }
 

@@ -65,16 +65,12 @@ void RowThetaRange(int j, int height, double& theta0, double& theta1)
   theta1 = Pi * (fromTop + 1) / height;
 }
 
-/// Resample a square probe picture into a lat-long map with the given inverse mapping.
-template <typename PointFromDirection>
-RgbImage ProbeToLatLong(const RgbImage& probe, int width, int height, int samples,
-  PointFromDirection pointFromDirection)
+/// Fills a W x H image, each pixel the average of samples x samples sub-pixel evaluations of
+/// sample(fx, fy, rgb), with fx, fy the sub-pixel position in [0,1] over the image (VTK row order).
+template <typename Sample>
+RgbImage Supersample(int width, int height, int samples, Sample sample)
 {
-  RgbImage out(width, height);
-  if (probe.Width < 1 || probe.Height < 1 || width < 1 || height < 1)
-  {
-    return out;
-  }
+  RgbImage out(std::max(0, width), std::max(0, height));
   samples = std::max(1, samples);
   const double inv = 1.0 / (samples * samples);
   for (int j = 0; j < height; ++j)
@@ -86,29 +82,41 @@ RgbImage ProbeToLatLong(const RgbImage& probe, int width, int height, int sample
       {
         for (int si = 0; si < samples; ++si)
         {
-          const double u = (i + (si + 0.5) / samples) / width;
-          const double v = 1.0 - (j + (sj + 0.5) / samples) / height;
-          double d[3];
-          DirectionFromMapUV(u, v, d);
-          double a = 0.0;
-          double b = 0.0;
-          pointFromDirection(d, a, b);
-          const double x = (a + 1.0) * 0.5 * probe.Width;
-          const double y = (b + 1.0) * 0.5 * probe.Height;
           float c[3];
-          SampleBilinear(probe, x, y, false, c);
-          sum[0] += c[0];
-          sum[1] += c[1];
-          sum[2] += c[2];
+          sample((i + (si + 0.5) / samples) / width, (j + (sj + 0.5) / samples) / height, c);
+          for (int k = 0; k < 3; ++k)
+          {
+            sum[k] += c[k];
+          }
         }
       }
       float* p = out.Pixel(i, j);
-      p[0] = static_cast<float>(sum[0] * inv);
-      p[1] = static_cast<float>(sum[1] * inv);
-      p[2] = static_cast<float>(sum[2] * inv);
+      for (int k = 0; k < 3; ++k)
+      {
+        p[k] = static_cast<float>(sum[k] * inv);
+      }
     }
   }
   return out;
+}
+
+/// Resample a square probe picture into a lat-long map with the given inverse mapping.
+template <typename PointFromDirection>
+RgbImage ProbeToLatLong(const RgbImage& probe, int width, int height, int samples,
+  PointFromDirection pointFromDirection)
+{
+  if (probe.Width < 1 || probe.Height < 1 || width < 1 || height < 1)
+  {
+    return RgbImage(std::max(0, width), std::max(0, height));
+  }
+  return Supersample(width, height, samples, [&](double fx, double fy, float c[3]) {
+    double d[3];
+    DirectionFromMapUV(fx, 1.0 - fy, d); // v = 0 at the top row
+    double a = 0.0;
+    double b = 0.0;
+    pointFromDirection(d, a, b);
+    SampleBilinear(probe, (a + 1.0) * 0.5 * probe.Width, (b + 1.0) * 0.5 * probe.Height, false, c);
+  });
 }
 
 /// Lat-long -> square probe picture with the given forward mapping (nearest-free: bilinear).
@@ -383,39 +391,13 @@ void SampleBilinear(const RgbImage& image, double x, double y, bool wrapX, float
 //------------------------------------------------------------------------------
 RgbImage ResampleLatLong(const RgbImage& map, int width, int height, int samples)
 {
-  RgbImage out(std::max(0, width), std::max(0, height));
   if (map.Width < 1 || map.Height < 1 || width < 1 || height < 1)
   {
-    return out;
+    return RgbImage(std::max(0, width), std::max(0, height));
   }
-  samples = std::max(1, samples);
-  const double inv = 1.0 / (samples * samples);
-  for (int j = 0; j < height; ++j)
-  {
-    for (int i = 0; i < width; ++i)
-    {
-      double sum[3] = { 0.0, 0.0, 0.0 };
-      for (int sj = 0; sj < samples; ++sj)
-      {
-        for (int si = 0; si < samples; ++si)
-        {
-          const double x = (i + (si + 0.5) / samples) / width * map.Width;
-          const double y = (j + (sj + 0.5) / samples) / height * map.Height;
-          float c[3];
-          SampleBilinear(map, x, y, true, c);
-          sum[0] += c[0];
-          sum[1] += c[1];
-          sum[2] += c[2];
-        }
-      }
-      float* p = out.Pixel(i, j);
-      for (int c = 0; c < 3; ++c)
-      {
-        p[c] = static_cast<float>(sum[c] * inv);
-      }
-    }
-  }
-  return out;
+  return Supersample(width, height, samples, [&](double fx, double fy, float c[3]) {
+    SampleBilinear(map, fx * map.Width, fy * map.Height, true, c);
+  });
 }
 
 //------------------------------------------------------------------------------
