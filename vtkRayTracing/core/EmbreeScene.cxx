@@ -1,0 +1,189 @@
+#include "EmbreeScene.h"
+
+#include <embree3/rtcore.h>
+
+#include <stdexcept>
+#include <string>
+
+namespace mesolight
+{
+
+struct EmbreeScene::Internals
+{
+  RTCDevice Device = nullptr;
+  RTCScene Scene = nullptr;
+};
+
+namespace
+{
+std::string DeviceError(RTCDevice device)
+{
+  switch (rtcGetDeviceError(device))
+  {
+    case RTC_ERROR_NONE:
+      return "no error";
+    case RTC_ERROR_INVALID_ARGUMENT:
+      return "invalid argument";
+    case RTC_ERROR_INVALID_OPERATION:
+      return "invalid operation";
+    case RTC_ERROR_OUT_OF_MEMORY:
+      return "out of memory";
+    case RTC_ERROR_UNSUPPORTED_CPU:
+      return "unsupported CPU";
+    case RTC_ERROR_CANCELLED:
+      return "cancelled";
+    default:
+      return "unknown error";
+  }
+}
+
+void ToEmbree(const SceneRay& in, RTCRay& out)
+{
+  out.org_x = in.Origin.x;
+  out.org_y = in.Origin.y;
+  out.org_z = in.Origin.z;
+  out.dir_x = in.Direction.x;
+  out.dir_y = in.Direction.y;
+  out.dir_z = in.Direction.z;
+  out.tnear = in.TNear;
+  out.tfar = in.TFar;
+  out.time = 0.0f;
+  out.mask = 0xFFFFFFFFu;
+  out.id = 0;
+  out.flags = 0;
+}
+} // namespace
+
+EmbreeScene::EmbreeScene(const TriangleScene& scene)
+  : Impl(new Internals)
+  , Triangles(&scene)
+{
+  this->Impl->Device = rtcNewDevice(nullptr);
+  if (!this->Impl->Device)
+  {
+    throw std::runtime_error("Embree: cannot create a device");
+  }
+  this->Impl->Scene = rtcNewScene(this->Impl->Device);
+  if (!scene.Triangles.empty())
+  {
+    RTCGeometry geometry = rtcNewGeometry(this->Impl->Device, RTC_GEOMETRY_TYPE_TRIANGLE);
+    auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0,
+      RTC_FORMAT_FLOAT3, 3 * sizeof(float), scene.Positions.size()));
+    auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0,
+      RTC_FORMAT_UINT3, 3 * sizeof(unsigned), scene.Triangles.size()));
+    if (!vertices || !indices)
+    {
+      const std::string why = DeviceError(this->Impl->Device);
+      rtcReleaseGeometry(geometry);
+      rtcReleaseScene(this->Impl->Scene);
+      rtcReleaseDevice(this->Impl->Device);
+      throw std::runtime_error("Embree: cannot allocate the triangle buffers (" + why + ")");
+    }
+    for (std::size_t v = 0; v < scene.Positions.size(); ++v)
+    {
+      vertices[3 * v + 0] = scene.Positions[v].x;
+      vertices[3 * v + 1] = scene.Positions[v].y;
+      vertices[3 * v + 2] = scene.Positions[v].z;
+    }
+    for (std::size_t t = 0; t < scene.Triangles.size(); ++t)
+    {
+      indices[3 * t + 0] = scene.Triangles[t].x;
+      indices[3 * t + 1] = scene.Triangles[t].y;
+      indices[3 * t + 2] = scene.Triangles[t].z;
+    }
+    rtcCommitGeometry(geometry);
+    rtcAttachGeometry(this->Impl->Scene, geometry);
+    rtcReleaseGeometry(geometry);
+  }
+  rtcSetSceneBuildQuality(this->Impl->Scene, RTC_BUILD_QUALITY_HIGH);
+  rtcCommitScene(this->Impl->Scene);
+  if (rtcGetDeviceError(this->Impl->Device) != RTC_ERROR_NONE)
+  {
+    const std::string why = DeviceError(this->Impl->Device);
+    rtcReleaseScene(this->Impl->Scene);
+    rtcReleaseDevice(this->Impl->Device);
+    throw std::runtime_error("Embree: cannot build the scene (" + why + ")");
+  }
+}
+
+EmbreeScene::~EmbreeScene()
+{
+  rtcReleaseScene(this->Impl->Scene);
+  rtcReleaseDevice(this->Impl->Device);
+}
+
+SceneHit EmbreeScene::Intersect(const SceneRay& ray) const
+{
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  RTCRayHit rayHit;
+  ToEmbree(ray, rayHit.ray);
+  rayHit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  rayHit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+  rtcIntersect1(this->Impl->Scene, &context, &rayHit);
+  SceneHit hit;
+  if (rayHit.hit.geomID != RTC_INVALID_GEOMETRY_ID)
+  {
+    hit.Triangle = rayHit.hit.primID;
+    hit.T = rayHit.ray.tfar;
+    hit.U = rayHit.hit.u;
+    hit.V = rayHit.hit.v;
+  }
+  return hit;
+}
+
+bool EmbreeScene::Occluded(const SceneRay& ray) const
+{
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  RTCRay embreeRay;
+  ToEmbree(ray, embreeRay);
+  rtcOccluded1(this->Impl->Scene, &context, &embreeRay);
+  // Embree sets tfar to -inf when the ray is occluded.
+  return embreeRay.tfar < 0.0f;
+}
+
+void EmbreeScene::Intersect16(const SceneRay* rays, SceneHit* hits, int count) const
+{
+  // Packets and their valid masks must be 64-byte aligned (PLATFORM.md).
+  alignas(64) RTCRayHit16 packet;
+  alignas(64) int valid[16];
+  for (int i = 0; i < 16; ++i)
+  {
+    const bool active = i < count;
+    valid[i] = active ? -1 : 0;
+    const SceneRay ray = active ? rays[i] : SceneRay{};
+    packet.ray.org_x[i] = ray.Origin.x;
+    packet.ray.org_y[i] = ray.Origin.y;
+    packet.ray.org_z[i] = ray.Origin.z;
+    packet.ray.dir_x[i] = ray.Direction.x;
+    packet.ray.dir_y[i] = ray.Direction.y;
+    packet.ray.dir_z[i] = ray.Direction.z;
+    packet.ray.tnear[i] = ray.TNear;
+    packet.ray.tfar[i] = ray.TFar;
+    packet.ray.time[i] = 0.0f;
+    packet.ray.mask[i] = 0xFFFFFFFFu;
+    packet.ray.id[i] = static_cast<unsigned>(i);
+    packet.ray.flags[i] = 0;
+    packet.hit.geomID[i] = RTC_INVALID_GEOMETRY_ID;
+    packet.hit.instID[0][i] = RTC_INVALID_GEOMETRY_ID;
+  }
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+  rtcIntersect16(valid, this->Impl->Scene, &context, &packet);
+  for (int i = 0; i < count; ++i)
+  {
+    SceneHit hit;
+    if (packet.hit.geomID[i] != RTC_INVALID_GEOMETRY_ID)
+    {
+      hit.Triangle = packet.hit.primID[i];
+      hit.T = packet.ray.tfar[i];
+      hit.U = packet.hit.u[i];
+      hit.V = packet.hit.v[i];
+    }
+    hits[i] = hit;
+  }
+}
+
+} // namespace mesolight

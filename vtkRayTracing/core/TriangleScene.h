@@ -1,0 +1,105 @@
+// TriangleScene: a static scene of triangles with per-triangle materials, in plain C++ (GLM, no
+// VTK types). Shared by the Embree ray tracer (its references) and the virtual light field
+// (vtkVLF), so both see the same geometry, materials and Cornell box.
+#ifndef mesolight_TriangleScene_h
+#define mesolight_TriangleScene_h
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace mesolight
+{
+
+// Wavefront MTL terms (seed 002 §2.1 uses Kd, Ks and emission): diffuse reflectance,
+// perfect-specular reflectance, emitted radiance. Glossy terms are for the ray tracer
+// (seed 004 §1): Phong shininess and a roughness in [0,1] that spreads reflected rays.
+struct SceneMaterial
+{
+  std::string Name;
+  glm::vec3 Diffuse{ 0.8f };   // Kd, albedo in [0,1]
+  glm::vec3 Specular{ 0.0f };  // Ks, perfect-mirror reflectance in [0,1]
+  glm::vec3 Emission{ 0.0f };  // Ke, emitted radiance (W sr^-1 m^-2, arbitrary units)
+  glm::vec3 Ambient{ 0.0f };   // Ka
+  float Shininess = 0.0f;      // Ns, Phong exponent
+  float Roughness = 0.0f;      // 0 mirror .. 1 very rough
+};
+
+struct TriangleScene
+{
+  std::vector<glm::vec3> Positions;
+  std::vector<glm::uvec3> Triangles;      // indices into Positions
+  std::vector<std::uint32_t> MaterialIds; // one per triangle, index into Materials
+  std::vector<SceneMaterial> Materials;
+  // Optional per-vertex attributes (empty, or one per position).
+  std::vector<glm::vec3> Normals;
+  std::vector<glm::vec2> TextureCoordinates;
+
+  std::size_t TriangleCount() const { return this->Triangles.size(); }
+  glm::vec3 Vertex(std::size_t triangle, int corner) const
+  {
+    return this->Positions[this->Triangles[triangle][corner]];
+  }
+  // Unnormalised geometric normal (cross product of the edges, counter-clockwise front face);
+  // its length is twice the triangle's area.
+  glm::vec3 FaceNormal(std::size_t triangle) const;
+  float Area(std::size_t triangle) const;
+  const SceneMaterial& MaterialOf(std::size_t triangle) const
+  {
+    return this->Materials[this->MaterialIds[triangle]];
+  }
+
+  // Appends a material and returns its id.
+  std::uint32_t AddMaterial(const SceneMaterial& material);
+  // Appends a planar convex polygon (fan-triangulated), counter-clockwise seen from its front.
+  void AddPolygon(const std::vector<glm::vec3>& corners, std::uint32_t materialId);
+  // Appends another scene (materials are appended too, ids remapped).
+  void Append(const TriangleScene& other);
+};
+
+// What is wrong with a scene, one problem per entry ("triangle 12 is degenerate (area 0)",
+// "no emitter"): empty when the scene can be used. Degenerate means area <= minimumArea
+// times the squared bounding-box diagonal.
+struct SceneCheck
+{
+  std::vector<std::string> Errors;   // the scene cannot be used
+  std::vector<std::string> Warnings; // usable, but probably not what the user meant
+  std::size_t DegenerateTriangles = 0;
+  bool Ok() const { return this->Errors.empty(); }
+};
+SceneCheck CheckScene(const TriangleScene& scene, bool requireEmitter, float minimumArea = 1e-12f);
+
+// Drops degenerate triangles (see CheckScene); returns how many were dropped.
+std::size_t RemoveDegenerateTriangles(TriangleScene& scene, float minimumArea = 1e-12f);
+
+// Axis-aligned bounds; false for an empty scene.
+bool SceneBounds(const TriangleScene& scene, glm::vec3& lower, glm::vec3& upper);
+
+// Translates and scales uniformly so the bounding sphere of the bounding box is the unit sphere
+// centred at the origin (seed 002 §2.4 assumes the scene inside the unit sphere). Returns the
+// scale applied (1 for an empty scene). Emission is radiance, so it is not rescaled.
+float NormalizeToUnitSphere(TriangleScene& scene);
+
+// The Cornell box as published by the Cornell Program of Computer Graphics
+// (https://www.graphics.cornell.edu/online/box/data.html): floor, ceiling, back, red left and
+// green right walls, a short and a tall block, the ceiling light. Millimetres, y up, camera at
+// (278, 273, -800) looking along +z with a 39.3 degree field of view (35 mm focal length on a
+// 25 mm film). The published reflectance spectra are given as the RGB values commonly used by
+// renderers (white 0.725/0.71/0.68, red 0.63/0.065/0.05, green 0.14/0.45/0.091; light radiance
+// 17/12/4). The light quad sits 0.1 mm below the ceiling so the two never coincide. All faces
+// point into the room (blocks: outward).
+TriangleScene MakeCornellBox();
+struct CornellCamera
+{
+  glm::vec3 Position{ 278.0f, 273.0f, -800.0f };
+  glm::vec3 FocalPoint{ 278.0f, 273.0f, 0.0f };
+  glm::vec3 ViewUp{ 0.0f, 1.0f, 0.0f };
+  float ViewAngleDegrees = 39.3077f; // 2 atan(12.5 / 35)
+};
+
+} // namespace mesolight
+
+#endif
