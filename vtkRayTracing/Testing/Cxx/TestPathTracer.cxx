@@ -12,6 +12,7 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace
@@ -96,7 +97,11 @@ TEST_P(Furnace, RadianceIsEmissionOverOneMinusAlbedo)
 
 INSTANTIATE_TEST_SUITE_P(PathTracer, Furnace,
   ::testing::Values(FurnaceCase{ 0.5f, LightSampling::MultipleImportance },
-    FurnaceCase{ 0.8f, LightSampling::MultipleImportance }, FurnaceCase{ 0.5f, LightSampling::BsdfOnly }));
+    FurnaceCase{ 0.8f, LightSampling::MultipleImportance }, FurnaceCase{ 0.5f, LightSampling::BsdfOnly }),
+  [](const ::testing::TestParamInfo<FurnaceCase>& param) {
+    return std::string(param.param.Sampling == LightSampling::BsdfOnly ? "Bsdf" : "Mis") + "Albedo" +
+      std::to_string(static_cast<int>(param.param.Albedo * 100.0f + 0.5f));
+  });
 
 TEST(PathTracerNegative, DoubleCountedDirectLightFailsTheFurnace)
 {
