@@ -2,7 +2,12 @@
 
 #include <embree3/rtcore.h>
 
+#include <glm/geometric.hpp>
+
+#include <cmath>
+#include <limits>
 #include <stdexcept>
+#include <utility>
 #include <string>
 
 namespace mesolight
@@ -12,6 +17,7 @@ struct EmbreeScene::Internals
 {
   RTCDevice Device = nullptr;
   RTCScene Scene = nullptr;
+  unsigned SphereGeometry = RTC_INVALID_GEOMETRY_ID;
 };
 
 namespace
@@ -37,6 +43,125 @@ std::string DeviceError(RTCDevice device)
   }
 }
 
+bool UsableSphere(const SceneSphere& sphere)
+{
+  return std::isfinite(sphere.Center.x) && std::isfinite(sphere.Center.y) &&
+    std::isfinite(sphere.Center.z) && std::isfinite(sphere.Radius) && sphere.Radius > 0.0f;
+}
+
+void SphereBounds(const RTCBoundsFunctionArguments* args)
+{
+  const auto* spheres = static_cast<const SceneSphere*>(args->geometryUserPtr);
+  const SceneSphere& sphere = spheres[args->primID];
+  RTCBounds* bounds = args->bounds_o;
+  const float r = UsableSphere(sphere) ? sphere.Radius : 0.0f;
+  const glm::vec3 c = UsableSphere(sphere) ? sphere.Center : glm::vec3(0.0f);
+  bounds->lower_x = c.x - r;
+  bounds->lower_y = c.y - r;
+  bounds->lower_z = c.z - r;
+  bounds->upper_x = c.x + r;
+  bounds->upper_y = c.y + r;
+  bounds->upper_z = c.z + r;
+}
+
+// Nearest root of |o + t d - c| = r in (tnear, tfar), in the numerically robust form (Haines
+// et al., "Precision improvements for ray/sphere intersection", Ray Tracing Gems, 2019).
+bool IntersectSphere(const SceneSphere& sphere, const glm::vec3& origin, const glm::vec3& direction,
+  float tnear, float tfar, float& t)
+{
+  if (!UsableSphere(sphere))
+  {
+    return false;
+  }
+  const glm::vec3 f = origin - sphere.Center;
+  const float a = glm::dot(direction, direction);
+  if (!(a > 0.0f))
+  {
+    return false;
+  }
+  const float b = -glm::dot(f, direction);
+  const glm::vec3 l = f + (b / a) * direction;
+  const float discriminant = a * (sphere.Radius * sphere.Radius - glm::dot(l, l));
+  if (discriminant < 0.0f)
+  {
+    return false;
+  }
+  const float c = glm::dot(f, f) - sphere.Radius * sphere.Radius;
+  const float q = b + std::copysign(std::sqrt(discriminant), b);
+  float t0 = c / q;
+  float t1 = q / a;
+  if (t0 > t1)
+  {
+    std::swap(t0, t1);
+  }
+  if (t0 > tnear && t0 < tfar)
+  {
+    t = t0;
+    return true;
+  }
+  if (t1 > tnear && t1 < tfar)
+  {
+    t = t1;
+    return true;
+  }
+  return false;
+}
+
+void SphereIntersect(const RTCIntersectFunctionNArguments* args)
+{
+  const auto* spheres = static_cast<const SceneSphere*>(args->geometryUserPtr);
+  const SceneSphere& sphere = spheres[args->primID];
+  RTCRayN* rays = RTCRayHitN_RayN(args->rayhit, args->N);
+  RTCHitN* hits = RTCRayHitN_HitN(args->rayhit, args->N);
+  for (unsigned i = 0; i < args->N; ++i)
+  {
+    if (args->valid[i] == 0)
+    {
+      continue;
+    }
+    const unsigned n = args->N;
+    const glm::vec3 origin(RTCRayN_org_x(rays, n, i), RTCRayN_org_y(rays, n, i), RTCRayN_org_z(rays, n, i));
+    const glm::vec3 direction(RTCRayN_dir_x(rays, n, i), RTCRayN_dir_y(rays, n, i), RTCRayN_dir_z(rays, n, i));
+    float t = 0.0f;
+    if (!IntersectSphere(sphere, origin, direction, RTCRayN_tnear(rays, n, i), RTCRayN_tfar(rays, n, i), t))
+    {
+      continue;
+    }
+    const glm::vec3 normal = origin + t * direction - sphere.Center;
+    RTCRayN_tfar(rays, n, i) = t;
+    RTCHitN_Ng_x(hits, n, i) = normal.x;
+    RTCHitN_Ng_y(hits, n, i) = normal.y;
+    RTCHitN_Ng_z(hits, n, i) = normal.z;
+    RTCHitN_u(hits, n, i) = 0.0f;
+    RTCHitN_v(hits, n, i) = 0.0f;
+    RTCHitN_primID(hits, n, i) = args->primID;
+    RTCHitN_geomID(hits, n, i) = args->geomID;
+    RTCHitN_instID(hits, n, i, 0) = args->context->instID[0];
+  }
+}
+
+void SphereOccluded(const RTCOccludedFunctionNArguments* args)
+{
+  const auto* spheres = static_cast<const SceneSphere*>(args->geometryUserPtr);
+  const SceneSphere& sphere = spheres[args->primID];
+  for (unsigned i = 0; i < args->N; ++i)
+  {
+    if (args->valid[i] == 0)
+    {
+      continue;
+    }
+    const unsigned n = args->N;
+    RTCRayN* rays = args->ray;
+    const glm::vec3 origin(RTCRayN_org_x(rays, n, i), RTCRayN_org_y(rays, n, i), RTCRayN_org_z(rays, n, i));
+    const glm::vec3 direction(RTCRayN_dir_x(rays, n, i), RTCRayN_dir_y(rays, n, i), RTCRayN_dir_z(rays, n, i));
+    float t = 0.0f;
+    if (IntersectSphere(sphere, origin, direction, RTCRayN_tnear(rays, n, i), RTCRayN_tfar(rays, n, i), t))
+    {
+      RTCRayN_tfar(rays, n, i) = -std::numeric_limits<float>::infinity();
+    }
+  }
+}
+
 void ToEmbree(const SceneRay& in, RTCRay& out)
 {
   out.org_x = in.Origin.x;
@@ -57,6 +182,19 @@ void ToEmbree(const SceneRay& in, RTCRay& out)
 EmbreeScene::EmbreeScene(const TriangleScene& scene)
   : Impl(new Internals)
   , Triangles(&scene)
+{
+  this->Build(scene);
+}
+
+EmbreeScene::EmbreeScene(const TriangleScene& scene, std::vector<SceneSphere> spheres)
+  : Impl(new Internals)
+  , Triangles(&scene)
+  , SphereList(std::move(spheres))
+{
+  this->Build(scene);
+}
+
+void EmbreeScene::Build(const TriangleScene& scene)
 {
   this->Impl->Device = rtcNewDevice(nullptr);
   if (!this->Impl->Device)
@@ -95,6 +233,18 @@ EmbreeScene::EmbreeScene(const TriangleScene& scene)
     rtcAttachGeometry(this->Impl->Scene, geometry);
     rtcReleaseGeometry(geometry);
   }
+  if (!this->SphereList.empty())
+  {
+    RTCGeometry geometry = rtcNewGeometry(this->Impl->Device, RTC_GEOMETRY_TYPE_USER);
+    rtcSetGeometryUserPrimitiveCount(geometry, static_cast<unsigned>(this->SphereList.size()));
+    rtcSetGeometryUserData(geometry, this->SphereList.data());
+    rtcSetGeometryBoundsFunction(geometry, SphereBounds, nullptr);
+    rtcSetGeometryIntersectFunction(geometry, SphereIntersect);
+    rtcSetGeometryOccludedFunction(geometry, SphereOccluded);
+    rtcCommitGeometry(geometry);
+    this->Impl->SphereGeometry = rtcAttachGeometry(this->Impl->Scene, geometry);
+    rtcReleaseGeometry(geometry);
+  }
   rtcSetSceneBuildQuality(this->Impl->Scene, RTC_BUILD_QUALITY_HIGH);
   rtcCommitScene(this->Impl->Scene);
   if (rtcGetDeviceError(this->Impl->Device) != RTC_ERROR_NONE)
@@ -122,7 +272,12 @@ SceneHit EmbreeScene::Intersect(const SceneRay& ray) const
   rayHit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
   rtcIntersect1(this->Impl->Scene, &context, &rayHit);
   SceneHit hit;
-  if (rayHit.hit.geomID != RTC_INVALID_GEOMETRY_ID)
+  if (rayHit.hit.geomID != RTC_INVALID_GEOMETRY_ID && rayHit.hit.geomID == this->Impl->SphereGeometry)
+  {
+    hit.Sphere = rayHit.hit.primID;
+    hit.T = rayHit.ray.tfar;
+  }
+  else if (rayHit.hit.geomID != RTC_INVALID_GEOMETRY_ID)
   {
     hit.Triangle = rayHit.hit.primID;
     hit.T = rayHit.ray.tfar;
@@ -175,7 +330,12 @@ void EmbreeScene::Intersect16(const SceneRay* rays, SceneHit* hits, int count) c
   for (int i = 0; i < count; ++i)
   {
     SceneHit hit;
-    if (packet.hit.geomID[i] != RTC_INVALID_GEOMETRY_ID)
+    if (packet.hit.geomID[i] != RTC_INVALID_GEOMETRY_ID && packet.hit.geomID[i] == this->Impl->SphereGeometry)
+    {
+      hit.Sphere = packet.hit.primID[i];
+      hit.T = packet.ray.tfar[i];
+    }
+    else if (packet.hit.geomID[i] != RTC_INVALID_GEOMETRY_ID)
     {
       hit.Triangle = packet.hit.primID[i];
       hit.T = packet.ray.tfar[i];

@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <limits>
 #include <memory>
+#include <vector>
 
 namespace mesolight
 {
@@ -30,7 +31,16 @@ struct SceneHit
   std::uint32_t Triangle = None; // index into TriangleScene::Triangles, None if missed
   float T = std::numeric_limits<float>::infinity();
   float U = 0.0f, V = 0.0f; // barycentrics: point = (1-U-V) v0 + U v1 + V v2
-  bool Hit() const { return this->Triangle != None; }
+  // Index into the scene's analytic spheres when a sphere was hit (Triangle is None then).
+  std::uint32_t Sphere = None;
+  bool Hit() const { return this->Triangle != None || this->Sphere != None; }
+};
+
+// An analytic sphere, intersected exactly (Embree user geometry) rather than tessellated.
+struct SceneSphere
+{
+  glm::vec3 Center{ 0.0f };
+  float Radius = 1.0f;
 };
 
 class EmbreeScene
@@ -39,6 +49,9 @@ public:
   // Builds and commits the Embree scene. Degenerate triangles are kept (Embree never reports
   // hits on them). Throws std::runtime_error when Embree fails (message says why).
   explicit EmbreeScene(const TriangleScene& scene);
+  // The triangles and analytic spheres (hits report SceneHit::Sphere). Spheres with a
+  // non-positive or non-finite radius or centre are never hit.
+  EmbreeScene(const TriangleScene& scene, std::vector<SceneSphere> spheres);
   ~EmbreeScene();
   EmbreeScene(const EmbreeScene&) = delete;
   EmbreeScene& operator=(const EmbreeScene&) = delete;
@@ -51,11 +64,14 @@ public:
   void Intersect16(const SceneRay* rays, SceneHit* hits, int count) const;
 
   const TriangleScene& Scene() const { return *this->Triangles; }
+  const std::vector<SceneSphere>& Spheres() const { return this->SphereList; }
 
 private:
   struct Internals;
   std::unique_ptr<Internals> Impl;
   const TriangleScene* Triangles;
+  std::vector<SceneSphere> SphereList;
+  void Build(const TriangleScene& scene);
 };
 
 } // namespace mesolight
