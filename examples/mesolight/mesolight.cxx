@@ -8,6 +8,7 @@
 #include "ImageCompare.h"
 #include "LightSetBenchmark.h"
 #include "LightsCommand.h"
+#include "TraceCommand.h"
 #include "ReliefBenchmark.h"
 #include "ReliefScene.h"
 #include "ReliefSweep.h"
@@ -70,6 +71,11 @@ Usage:
                                                integration and SH9; median-cut time
   mesolight bench ibl [options]                relief lit by 32..1024 median-cut lights: time,
                                                each skip, error vs Monte Carlo
+  mesolight trace [--scene spheres|ring|cornell] [options]
+                                               Embree ray tracer (textured material channels,
+                                               glossy reflection, adaptive, progressive) or the
+                                               path-traced Cornell box
+  mesolight bench trace [options]              rays/s (coherent vs incoherent), path samples/s
   mesolight help [COMMAND]                     this text, or one command's options
 
 Run 'mesolight COMMAND --help' for the options of a command.
@@ -748,6 +754,14 @@ int main(int argc, char* argv[])
   if (command == "cone")
   {
     return RunCone(args);
+  }
+  if (command == "trace")
+  {
+    return mesolight::RunTraceCommand(args);
+  }
+  if (command == "bench" && !args.empty() && args[0] == "trace")
+  {
+    return mesolight::RunTraceBenchmark(std::vector<std::string>(args.begin() + 1, args.end()));
   }
   if (command == "bench")
   {

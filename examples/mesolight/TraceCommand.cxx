@@ -1,0 +1,297 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "TraceCommand.h"
+
+#include "CommandLine.h"
+#include "ReliefScene.h" // HasDisplay
+#include "TraceScenes.h"
+
+#include "EmbreeScene.h"
+#include "PathTracer.h"
+#include "TexturedRayTracer.h"
+#include "TriangleScene.h"
+#include "vtkEmbreeRayTracer.h"
+#include "vtkOIIOImageWriter.h"
+
+#include <vtkCallbackCommand.h>
+#include <vtkCamera.h>
+#include <vtkFloatArray.h>
+#include <vtkImageActor.h>
+#include <vtkImageData.h>
+#include <vtkImageMapper3D.h>
+#include <vtkInteractorStyleImage.h>
+#include <vtkNew.h>
+#include <vtkPNGWriter.h>
+#include <vtkPointData.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderWindowInteractor.h>
+#include <vtkRenderer.h>
+#include <vtkUnsignedCharArray.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+
+namespace mesolight
+{
+
+namespace
+{
+double Seconds(std::chrono::steady_clock::time_point start)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// Linear radiance -> 8-bit with the sRGB transfer curve (clamped), for PNGs of the path tracer.
+vtkSmartPointer<vtkImageData> ToDisplayBytes(const RgbImage& image)
+{
+  auto bytes = vtkSmartPointer<vtkImageData>::New();
+  bytes->SetDimensions(image.Width, image.Height, 1);
+  bytes->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+  auto* out = static_cast<unsigned char*>(bytes->GetScalarPointer());
+  for (std::size_t v = 0; v < image.Rgb.size(); ++v)
+  {
+    const float linear = std::min(1.0f, std::max(0.0f, std::isfinite(image.Rgb[v]) ? image.Rgb[v] : 0.0f));
+    const float encoded = linear <= 0.0031308f ? 12.92f * linear : 1.055f * std::pow(linear, 1.0f / 2.4f) - 0.055f;
+    out[v] = static_cast<unsigned char>(encoded * 255.0f + 0.5f);
+  }
+  return bytes;
+}
+
+vtkSmartPointer<vtkImageData> ToFloatImage(const RgbImage& image)
+{
+  auto result = vtkSmartPointer<vtkImageData>::New();
+  result->SetDimensions(image.Width, image.Height, 1);
+  vtkNew<vtkFloatArray> values;
+  values->SetNumberOfComponents(3);
+  values->SetNumberOfTuples(static_cast<vtkIdType>(image.Width) * image.Height);
+  std::copy(image.Rgb.begin(), image.Rgb.end(), values->GetPointer(0));
+  result->GetPointData()->SetScalars(values);
+  return result;
+}
+
+bool WritePng(vtkImageData* image, const std::string& fileName)
+{
+  vtkNew<vtkPNGWriter> writer;
+  writer->SetInputData(image);
+  writer->SetFileName(fileName.c_str());
+  writer->Write();
+  return writer->GetErrorCode() == 0;
+}
+
+// A window showing an image pixel for pixel.
+struct ImageWindow
+{
+  vtkNew<vtkImageData> Shown;
+  vtkNew<vtkImageActor> Actor;
+  vtkNew<vtkRenderer> Renderer;
+  vtkNew<vtkRenderWindow> Window;
+  vtkNew<vtkRenderWindowInteractor> Interactor;
+
+  ImageWindow(int width, int height, const char* title)
+  {
+    this->Shown->SetDimensions(width, height, 1);
+    this->Shown->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+    std::fill_n(static_cast<unsigned char*>(this->Shown->GetScalarPointer()), 3 * width * height, 0);
+    this->Actor->GetMapper()->SetInputData(this->Shown);
+    this->Renderer->AddActor(this->Actor);
+    this->Window->AddRenderer(this->Renderer);
+    this->Window->SetSize(width, height);
+    this->Window->SetWindowName(title);
+    this->Interactor->SetRenderWindow(this->Window);
+    vtkNew<vtkInteractorStyleImage> style;
+    this->Interactor->SetInteractorStyle(style);
+    vtkCamera* camera = this->Renderer->GetActiveCamera();
+    camera->ParallelProjectionOn();
+    camera->SetFocalPoint(0.5 * (width - 1), 0.5 * (height - 1), 0.0);
+    camera->SetPosition(0.5 * (width - 1), 0.5 * (height - 1), 1000.0);
+    camera->SetViewUp(0.0, 1.0, 0.0);
+    camera->SetParallelScale(0.5 * height);
+    this->Renderer->ResetCameraClippingRange();
+    this->Interactor->Initialize();
+  }
+  void Show(vtkImageData* image)
+  {
+    this->Shown->DeepCopy(image);
+    this->Shown->Modified();
+    this->Window->Render();
+  }
+};
+
+int TraceCornell(const CommandLine& cl, int width, int height, int threads, bool interactive)
+{
+  std::string error;
+  int samples = 64;
+  if (!cl.GetInt("--samples", 1, 1 << 20, samples, error))
+  {
+    std::cerr << "mesolight trace: " << error << "\n";
+    return 2;
+  }
+  const TriangleScene box = MakeCornellBox();
+  const EmbreeScene embree(box);
+  PathTracerSettings settings;
+  settings.Threads = threads;
+  const PathTracer tracer(embree, settings);
+  const auto start = std::chrono::steady_clock::now();
+  const RgbImage image = tracer.RenderImage(PinholeCamera(CornellCamera{}), width, height, samples, 1);
+  const double seconds = Seconds(start);
+  if (image.Width == 0)
+  {
+    std::cerr << "mesolight trace: path tracing failed\n";
+    return 1;
+  }
+  std::cout << "cornell: " << width << "x" << height << ", " << samples << " paths per pixel in " << std::fixed
+            << std::setprecision(2) << seconds << " s ("
+            << std::setprecision(3) << static_cast<double>(width) * height * samples / seconds / 1e6
+            << " M paths/s)\n";
+  auto bytes = ToDisplayBytes(image);
+  const std::string out = cl.Get("--out");
+  if (!WritePng(bytes, out))
+  {
+    std::cerr << "mesolight trace: cannot write " << out << "\n";
+    return 1;
+  }
+  std::cout << "wrote " << out << "\n";
+  if (cl.Has("--exr"))
+  {
+    vtkNew<vtkOIIOImageWriter> writer;
+    writer->SetInputData(ToFloatImage(image));
+    writer->SetFileName(cl.Get("--exr").c_str());
+    writer->Write();
+    std::cout << "wrote " << cl.Get("--exr") << " (linear radiance)\n";
+  }
+  if (interactive)
+  {
+    ImageWindow window(width, height, "mesolight trace: Cornell box (path traced)");
+    window.Show(bytes);
+    window.Interactor->Start();
+  }
+  return 0;
+}
+} // namespace
+
+int RunTraceCommand(const std::vector<std::string>& args)
+{
+  CommandLine cl;
+  cl.AddValue("--scene", "NAME", "spheres (textured spheres on a checker), ring (bump + roughness maps), "
+                                 "cornell (path-traced reference)", "spheres");
+  cl.AddValue("--width", "N", "image width in pixels", "640");
+  cl.AddValue("--height", "N", "image height in pixels", "480");
+  cl.AddValue("--samples", "N", "cornell: paths per pixel", "64");
+  cl.AddFlag("--adaptive", "adaptive supersampling: 3x3 rays where a pixel differs from a neighbour");
+  cl.AddValue("--threshold", "X", "adaptive supersampling threshold (largest RGB difference, 0..1)", "0.1");
+  cl.AddFlag("--progressive", "progressive refinement: 1 ray, 2x2 blocks, 4x4 ... (shown as it happens)");
+  cl.AddFlag("--nearest", "nearest texture lookups instead of bilinear");
+  cl.AddValue("--glossy-samples", "N", "distributed rays per rough reflection", "16");
+  cl.AddValue("--max-depth", "N", "reflection recursion limit", "5");
+  cl.AddValue("--threads", "N", "worker threads (0: all cores)", "0");
+  cl.AddValue("--out", "FILE.png", "where to write the image", "mesolight-trace.png");
+  cl.AddValue("--exr", "FILE.exr", "cornell: also write the linear radiance");
+  cl.AddFlag("--offscreen", "only write the image, never open a window");
+  cl.AddFlag("--help", "show this help");
+  std::string error;
+  if (!cl.Parse(args, error))
+  {
+    std::cerr << "mesolight trace: " << error << "\n";
+    return 2;
+  }
+  if (cl.Has("--help"))
+  {
+    std::cout << "mesolight trace [options]\n\nRay traces a built-in scene on the CPU with Embree "
+                 "(seed 004: texture-mapped\nmaterial channels, glossy reflection, adaptive supersampling, "
+                 "progressive\nrefinement), or path traces the Cornell box.\n\nOptions:\n";
+    cl.PrintOptions(std::cout);
+    return 0;
+  }
+  int width = 0, height = 0, glossy = 0, depth = 0, threads = 0;
+  double threshold = 0.0;
+  if (!cl.GetInt("--width", 1, 16384, width, error) || !cl.GetInt("--height", 1, 16384, height, error) ||
+    !cl.GetInt("--glossy-samples", 1, 1024, glossy, error) || !cl.GetInt("--max-depth", 0, 64, depth, error) ||
+    !cl.GetInt("--threads", 0, 1024, threads, error) || !cl.GetDouble("--threshold", 0.0, 10.0, threshold, error))
+  {
+    std::cerr << "mesolight trace: " << error << "\n";
+    return 2;
+  }
+  const std::string sceneName = cl.Get("--scene");
+  const bool interactive = !cl.Has("--offscreen") && HasDisplay();
+  if (sceneName == "cornell")
+  {
+    return TraceCornell(cl, width, height, threads, interactive);
+  }
+  vtkNew<vtkRenderer> scene;
+  vtkNew<vtkEmbreeRayTracer> tracer;
+  if (sceneName == "spheres")
+  {
+    BuildSpheresScene(scene, tracer);
+  }
+  else if (sceneName == "ring")
+  {
+    BuildRingScene(scene, tracer);
+  }
+  else
+  {
+    std::cerr << "mesolight trace: unknown scene '" << sceneName << "' (spheres, ring, cornell)\n";
+    return 2;
+  }
+  tracer->SetRenderer(scene);
+  tracer->SetWidth(width);
+  tracer->SetHeight(height);
+  tracer->SetAdaptiveSupersampling(cl.Has("--adaptive"));
+  tracer->SetAdaptiveThreshold(threshold);
+  tracer->SetProgressive(cl.Has("--progressive"));
+  tracer->SetBilinearTextures(!cl.Has("--nearest"));
+  tracer->SetGlossySamples(glossy);
+  tracer->SetMaxDepth(depth);
+  tracer->SetNumberOfThreads(threads);
+
+  std::unique_ptr<ImageWindow> window;
+  vtkNew<vtkCallbackCommand> refinement;
+  if (interactive)
+  {
+    window.reset(new ImageWindow(width, height, "mesolight trace"));
+    window->Window->Render();
+    refinement->SetClientData(window.get());
+    refinement->SetCallback([](vtkObject* caller, unsigned long, void* client, void*) {
+      auto* shown = static_cast<ImageWindow*>(client);
+      shown->Show(static_cast<vtkEmbreeRayTracer*>(caller)->GetPartialImage());
+    });
+    tracer->AddObserver(vtkEmbreeRayTracer::RefinementEvent, refinement);
+  }
+  const auto start = std::chrono::steady_clock::now();
+  tracer->Update();
+  const double seconds = Seconds(start);
+  vtkImageData* image = tracer->GetOutput();
+  int dims[3];
+  image->GetDimensions(dims);
+  if (dims[0] != width || dims[1] != height || !image->GetPointData()->GetScalars())
+  {
+    std::cerr << "mesolight trace: ray tracing failed\n";
+    return 1;
+  }
+  std::cout << sceneName << ": " << width << "x" << height << " in " << std::fixed << std::setprecision(2)
+            << seconds << " s; " << tracer->GetPrimaryRays() << " primary, " << tracer->GetShadowRays()
+            << " shadow, " << tracer->GetSecondaryRays() << " reflection rays; "
+            << tracer->GetSupersampledPixels() << " pixels supersampled; " << tracer->GetAnalyticSphereCount()
+            << " spheres, " << tracer->GetTriangleCount() << " triangles\n";
+  const std::string out = cl.Get("--out");
+  // Only the RGB bytes go to the PNG.
+  vtkNew<vtkImageData> bytes;
+  bytes->SetDimensions(width, height, 1);
+  bytes->GetPointData()->SetScalars(image->GetPointData()->GetScalars());
+  if (!WritePng(bytes, out))
+  {
+    std::cerr << "mesolight trace: cannot write " << out << "\n";
+    return 1;
+  }
+  std::cout << "wrote " << out << "\n";
+  if (window)
+  {
+    window->Show(bytes);
+    window->Interactor->Start();
+  }
+  return 0;
+}
+
+} // namespace mesolight
