@@ -10,9 +10,11 @@
 #include "TexturedRayTracer.h"
 #include "TriangleScene.h"
 #include "vtkEmbreeRayTracer.h"
+#include "vtkOIIOImageReader.h"
 #include "vtkOIIOImageWriter.h"
 
 #include <vtkCallbackCommand.h>
+#include <vtkDataArray.h>
 #include <vtkCamera.h>
 #include <vtkFloatArray.h>
 #include <vtkImageActor.h>
@@ -33,6 +35,7 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <map>
 
 namespace mesolight
 {
@@ -120,22 +123,150 @@ struct ImageWindow
   }
 };
 
+// The scene as Wavefront OBJ + MTL (Kd, Ke), for other renderers (the Cycles comparison).
+bool WriteObj(const TriangleScene& scene, const std::string& objFile)
+{
+  const std::string mtlFile = objFile.substr(0, objFile.find_last_of('.')) + ".mtl";
+  std::ofstream obj(objFile);
+  std::ofstream mtl(mtlFile);
+  if (!obj || !mtl)
+  {
+    return false;
+  }
+  const std::string mtlName = mtlFile.substr(mtlFile.find_last_of('/') + 1);
+  obj << "# Mesolight scene (millimetres, y up, faces counter-clockwise from the front)\nmtllib " << mtlName << "\n";
+  for (const glm::vec3& p : scene.Positions)
+  {
+    obj << "v " << p.x << " " << p.y << " " << p.z << "\n";
+  }
+  std::uint32_t current = SceneHit::None;
+  for (std::size_t t = 0; t < scene.TriangleCount(); ++t)
+  {
+    if (scene.MaterialIds[t] != current)
+    {
+      current = scene.MaterialIds[t];
+      obj << "usemtl " << scene.Materials[current].Name << "\n";
+    }
+    obj << "f " << scene.Triangles[t].x + 1 << " " << scene.Triangles[t].y + 1 << " " << scene.Triangles[t].z + 1 << "\n";
+  }
+  for (const SceneMaterial& m : scene.Materials)
+  {
+    mtl << "newmtl " << m.Name << "\nKd " << m.Diffuse.x << " " << m.Diffuse.y << " " << m.Diffuse.z << "\nKe "
+        << m.Emission.x << " " << m.Emission.y << " " << m.Emission.z << "\n";
+  }
+  return static_cast<bool>(obj) && static_cast<bool>(mtl);
+}
+
+// Mean radiance per Cornell-box quad (two triangles each: floor, ceiling, back, red, green,
+// light, block faces) over the pixels whose 3 x 3 neighbourhood sees only that quad, ours
+// against another renderer's linear image of the same view. True when every region with
+// enough pixels agrees within `tolerance` (relative, per channel, for channels above 0.02).
+bool CompareRegions(const TriangleScene& box, const RgbImage& ours, const RgbImage& theirs, double tolerance)
+{
+  if (ours.Width != theirs.Width || ours.Height != theirs.Height)
+  {
+    std::cerr << "compare: image sizes differ (" << ours.Width << "x" << ours.Height << " vs " << theirs.Width << "x"
+              << theirs.Height << ")\n";
+    return false;
+  }
+  const EmbreeScene embree(box);
+  const PinholeCamera camera{ CornellCamera{} };
+  const int w = ours.Width, h = ours.Height;
+  std::vector<int> region(static_cast<std::size_t>(w) * h, -1);
+  for (int j = 0; j < h; ++j)
+  {
+    for (int i = 0; i < w; ++i)
+    {
+      const SceneHit hit = embree.Intersect(camera.Ray(i + 0.5f, j + 0.5f, w, h));
+      region[static_cast<std::size_t>(j) * w + i] = hit.Hit() ? static_cast<int>(hit.Triangle / 2) : -1;
+    }
+  }
+  const char* names[] = { "floor", "ceiling", "back wall", "red wall", "green wall", "light" };
+  std::map<int, std::pair<glm::dvec3, glm::dvec3>> sums;
+  std::map<int, int> counts;
+  for (int j = 1; j + 1 < h; ++j)
+  {
+    for (int i = 1; i + 1 < w; ++i)
+    {
+      const int r = region[static_cast<std::size_t>(j) * w + i];
+      bool interior = r >= 0;
+      for (int b = -1; b <= 1 && interior; ++b)
+      {
+        for (int a = -1; a <= 1; ++a)
+        {
+          interior = interior && region[static_cast<std::size_t>(j + b) * w + i + a] == r;
+        }
+      }
+      if (!interior)
+      {
+        continue;
+      }
+      const float* x = ours.Pixel(i, j);
+      const float* y = theirs.Pixel(i, j);
+      sums[r].first += glm::dvec3(x[0], x[1], x[2]);
+      sums[r].second += glm::dvec3(y[0], y[1], y[2]);
+      ++counts[r];
+    }
+  }
+  bool agree = true;
+  std::cout << std::left << std::setw(16) << "region" << std::right << std::setw(8) << "pixels" << std::setw(30)
+            << "mesolight (R G B)" << std::setw(30) << "other (R G B)" << std::setw(10) << "max err" << "\n";
+  for (const auto& entry : sums)
+  {
+    const int r = entry.first;
+    if (counts[r] < 30)
+    {
+      continue;
+    }
+    const glm::dvec3 a = entry.second.first / static_cast<double>(counts[r]);
+    const glm::dvec3 b = entry.second.second / static_cast<double>(counts[r]);
+    double worst = 0.0;
+    for (int c = 0; c < 3; ++c)
+    {
+      if (std::max(a[c], b[c]) > 0.02)
+      {
+        worst = std::max(worst, std::abs(a[c] - b[c]) / std::max(a[c], b[c]));
+      }
+    }
+    agree = agree && worst <= tolerance;
+    const std::string name = r < 6 ? names[r] : (r < 11 ? "short block " : "tall block ") + std::to_string(r < 11 ? r - 5 : r - 10);
+    std::cout << std::left << std::setw(16) << name << std::right << std::setw(8) << counts[r] << std::fixed
+              << std::setprecision(4) << std::setw(10) << a.x << std::setw(10) << a.y << std::setw(10) << a.z
+              << std::setw(10) << b.x << std::setw(10) << b.y << std::setw(10) << b.z << std::setw(9)
+              << std::setprecision(1) << 100.0 * worst << "%\n";
+  }
+  std::cout << (agree ? "regions agree" : "REGIONS DIFFER") << " (tolerance " << 100.0 * tolerance << "%)\n";
+  return agree;
+}
+
 int TraceCornell(const CommandLine& cl, int width, int height, int threads, bool interactive)
 {
   std::string error;
   int samples = 64;
-  if (!cl.GetInt("--samples", 1, 1 << 20, samples, error))
+  int seed = 1;
+  if (!cl.GetInt("--samples", 1, 1 << 20, samples, error) || !cl.GetInt("--seed", 0, 1 << 30, seed, error))
   {
     std::cerr << "mesolight trace: " << error << "\n";
     return 2;
   }
   const TriangleScene box = MakeCornellBox();
+  if (cl.Has("--export-obj"))
+  {
+    if (!WriteObj(box, cl.Get("--export-obj")))
+    {
+      std::cerr << "mesolight trace: cannot write " << cl.Get("--export-obj") << "\n";
+      return 1;
+    }
+    std::cout << "wrote " << cl.Get("--export-obj") << " and its .mtl\n";
+    return 0;
+  }
   const EmbreeScene embree(box);
   PathTracerSettings settings;
   settings.Threads = threads;
   const PathTracer tracer(embree, settings);
   const auto start = std::chrono::steady_clock::now();
-  const RgbImage image = tracer.RenderImage(PinholeCamera(CornellCamera{}), width, height, samples, 1);
+  const RgbImage image = tracer.RenderImage(
+    PinholeCamera(CornellCamera{}), width, height, samples, static_cast<std::uint64_t>(seed));
   const double seconds = Seconds(start);
   if (image.Width == 0)
   {
@@ -162,6 +293,42 @@ int TraceCornell(const CommandLine& cl, int width, int height, int threads, bool
     writer->Write();
     std::cout << "wrote " << cl.Get("--exr") << " (linear radiance)\n";
   }
+  if (cl.Has("--compare-exr"))
+  {
+    vtkNew<vtkOIIOImageReader> reader;
+    reader->SetFileName(cl.Get("--compare-exr").c_str());
+    reader->Update();
+    vtkImageData* other = reader->GetOutput();
+    int dims[3];
+    other->GetDimensions(dims);
+    vtkDataArray* values = other->GetPointData()->GetScalars();
+    if (!values || dims[0] < 1 || values->GetNumberOfComponents() < 3)
+    {
+      std::cerr << "mesolight trace: cannot read an RGB image from " << cl.Get("--compare-exr") << "\n";
+      return 1;
+    }
+    RgbImage theirs(dims[0], dims[1]);
+    for (int j = 0; j < dims[1]; ++j)
+    {
+      for (int i = 0; i < dims[0]; ++i)
+      {
+        for (int c = 0; c < 3; ++c)
+        {
+          theirs.Pixel(i, j)[c] = static_cast<float>(values->GetComponent(static_cast<vtkIdType>(j) * dims[0] + i, c));
+        }
+      }
+    }
+    double tolerance = 0.05;
+    if (!cl.GetDouble("--tolerance", 0.0, 10.0, tolerance, error))
+    {
+      std::cerr << "mesolight trace: " << error << "\n";
+      return 2;
+    }
+    if (!CompareRegions(box, image, theirs, tolerance))
+    {
+      return 1;
+    }
+  }
   if (interactive)
   {
     ImageWindow window(width, height, "mesolight trace: Cornell box (path traced)");
@@ -180,6 +347,7 @@ int RunTraceCommand(const std::vector<std::string>& args)
   cl.AddValue("--width", "N", "image width in pixels", "640");
   cl.AddValue("--height", "N", "image height in pixels", "480");
   cl.AddValue("--samples", "N", "cornell: paths per pixel", "64");
+  cl.AddValue("--seed", "N", "cornell: random seed of the paths", "1");
   cl.AddFlag("--adaptive", "adaptive supersampling: 3x3 rays where a pixel differs from a neighbour");
   cl.AddValue("--threshold", "X", "adaptive supersampling threshold (largest RGB difference, 0..1)", "0.1");
   cl.AddFlag("--progressive", "progressive refinement: 1 ray, 2x2 blocks, 4x4 ... (shown as it happens)");
@@ -189,6 +357,10 @@ int RunTraceCommand(const std::vector<std::string>& args)
   cl.AddValue("--threads", "N", "worker threads (0: all cores)", "0");
   cl.AddValue("--out", "FILE.png", "where to write the image", "mesolight-trace.png");
   cl.AddValue("--exr", "FILE.exr", "cornell: also write the linear radiance");
+  cl.AddValue("--export-obj", "FILE.obj", "cornell: write the box as OBJ + MTL and stop");
+  cl.AddValue("--compare-exr", "FILE.exr", "cornell: compare mean radiance per wall with another renderer's "
+                                           "linear image of the same view (exit 1 when they differ)");
+  cl.AddValue("--tolerance", "X", "relative tolerance of --compare-exr", "0.05");
   cl.AddFlag("--offscreen", "only write the image, never open a window");
   cl.AddFlag("--help", "show this help");
   std::string error;
