@@ -24,6 +24,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <map>
 #include <memory>
@@ -555,6 +556,9 @@ int RunVlfBenchmark(const std::vector<std::string>& args)
     std::cerr << "mesolight bench vlf: " << error << "\n";
     return 2;
   }
+  ResetPeakResident();
+  std::printf("process resident memory before any light field: %s (VTK, Embree, TBB loaded)\n",
+    vlf::FormatBytes(PeakResidentBytes()).c_str());
   std::ostringstream csv;
   csv << "directions,rays,tiles,iteration,build_s,propagate_s,total_s,estimate_bytes,allocated_bytes,"
          "peak_rss_bytes,energy_error,floor_mean_error,floor_rms_error,furnace_error,cornell_error\n";
@@ -573,6 +577,37 @@ int RunVlfBenchmark(const std::vector<std::string>& args)
       settings.MemoryBudget = static_cast<std::uint64_t>(budget * 1073741824.0);
       try
       {
+        struct Row
+        {
+          int Iteration;
+          double Energy, Propagate;
+          std::uint64_t Peak, Allocated;
+          std::string Cornell;
+        };
+        std::vector<Row> rows;
+        const TriangleScene cornell = MakeCornellBox();
+        const vlf::MemoryEstimate estimate = vlf::EstimateMemory(cornell, settings);
+        ResetPeakResident();
+        const Clock::time_point start = Clock::now();
+        std::unique_ptr<vlf::LightField> field = vlf::LightField::Build(cornell, settings);
+        const double build = Seconds(start);
+        double propagate = 0.0;
+        for (int it = 1; it <= iterations; ++it)
+        {
+          const vlf::LightField::IterationEnergy e = vlf::PropagateIteration(*field);
+          propagate += e.Seconds;
+          std::string cornellError = "n/a";
+          const vlf::ReferenceRadiance reference = CornellReference(cornell);
+          if (reference && it == iterations)
+          {
+            const vlf::PatchComparisonResult r = vlf::ComparePatches(*field, reference, 64);
+            cornellError = std::to_string(r.AreaWeightedMeanError);
+            std::cout << r.Table();
+          }
+          const std::uint64_t peak = PeakResidentBytes();
+          rows.push_back({ it, e.ConservationError(), propagate, peak, field->AllocatedBytes(), cornellError });
+        }
+        field.reset();
         // Accuracy at these settings on the analytic cases (small scenes, quick).
         double floorMean = 0.0, floorRms = 0.0, furnace = 0.0;
         {
@@ -623,36 +658,19 @@ int RunVlfBenchmark(const std::vector<std::string>& args)
           }
         }
 
-        const TriangleScene cornell = MakeCornellBox();
-        const vlf::MemoryEstimate estimate = vlf::EstimateMemory(cornell, settings);
-        ResetPeakResident();
-        const Clock::time_point start = Clock::now();
-        std::unique_ptr<vlf::LightField> field = vlf::LightField::Build(cornell, settings);
-        const double build = Seconds(start);
-        double propagate = 0.0;
-        for (int it = 1; it <= iterations; ++it)
+        for (const Row& row : rows)
         {
-          const vlf::LightField::IterationEnergy e = vlf::PropagateIteration(*field);
-          propagate += e.Seconds;
-          std::string cornellError = "n/a";
-          const vlf::ReferenceRadiance reference = CornellReference(cornell);
-          if (reference && it == iterations)
-          {
-            const vlf::PatchComparisonResult r = vlf::ComparePatches(*field, reference, 64);
-            cornellError = std::to_string(r.AreaWeightedMeanError);
-            std::cout << r.Table();
-          }
-          const std::uint64_t peak = PeakResidentBytes();
           std::printf("%10d %5d %5d %4d %9.2f %11.2f %9.2f %11s %11s %10.1e %8.2f%% %8.2f%% %8.2f%%\n",
-            directions, rays, settings.TilesPerSide, it, build, propagate, build + propagate,
-            vlf::FormatBytes(estimate.TotalBytes).c_str(), vlf::FormatBytes(peak).c_str(),
-            e.ConservationError(), 100.0 * floorMean, 100.0 * floorRms, 100.0 * furnace);
-          std::fflush(stdout);
-          csv << directions << ',' << rays << ',' << settings.TilesPerSide << ',' << it << ',' << build
-              << ',' << propagate << ',' << build + propagate << ',' << estimate.TotalBytes << ','
-              << field->AllocatedBytes() << ',' << peak << ',' << e.ConservationError() << ','
-              << floorMean << ',' << floorRms << ',' << furnace << ',' << cornellError << '\n';
+            directions, rays, settings.TilesPerSide, row.Iteration, build, row.Propagate,
+            build + row.Propagate, vlf::FormatBytes(estimate.TotalBytes).c_str(),
+            vlf::FormatBytes(row.Peak).c_str(), row.Energy, 100.0 * floorMean, 100.0 * floorRms,
+            100.0 * furnace);
+          csv << directions << ',' << rays << ',' << settings.TilesPerSide << ',' << row.Iteration << ','
+              << build << ',' << row.Propagate << ',' << build + row.Propagate << ','
+              << estimate.TotalBytes << ',' << row.Allocated << ',' << row.Peak << ',' << row.Energy
+              << ',' << floorMean << ',' << floorRms << ',' << furnace << ',' << row.Cornell << '\n';
         }
+        std::fflush(stdout);
         ChartSeries& t = timeSeries[directions];
         t.Name = std::to_string(directions) + " directions, " + std::to_string(iterations) + " iterations";
         t.X.push_back(rays);
@@ -680,6 +698,11 @@ int RunVlfBenchmark(const std::vector<std::string>& args)
     std::cout << "wrote " << cl.Get("--csv") << "\n";
   }
   const std::string plot = cl.Get("--plot");
+  if (!plot.empty() && !std::getenv("DISPLAY"))
+  {
+    std::cerr << "mesolight bench vlf: no plot: VTK charts need a display (run under xvfb-run)\n";
+    return 1;
+  }
   if (!plot.empty())
   {
     ScatterChart chart;
