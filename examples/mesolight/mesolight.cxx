@@ -12,6 +12,7 @@
 #include "ReliefBenchmark.h"
 #include "ReliefScene.h"
 #include "ReliefSweep.h"
+#include "VlfCommand.h"
 
 #include "vtkConeMapFilter.h"
 #include "vtkLightProbeToLatLong.h"
@@ -76,6 +77,11 @@ Usage:
                                                glossy reflection, adaptive, progressive) or the
                                                path-traced Cornell box
   mesolight bench trace [options]              rays/s (coherent vs incoherent), path samples/s
+  mesolight vlf propagate [SCENE.obj] --out FIELD [options]
+                                               propagate a virtual light field (built-in
+                                               Cornell box without SCENE)
+  mesolight vlf render FIELD --out IMAGE.png   render a light field's diffuse totals
+  mesolight bench vlf [options]                light field time, memory and accuracy sweep
   mesolight help [COMMAND]                     this text, or one command's options
 
 Run 'mesolight COMMAND --help' for the options of a command.
@@ -666,6 +672,10 @@ int RunBench(const std::vector<std::string>& args)
   {
     return mesolight::RunLightsBenchmark(std::vector<std::string>(args.begin() + 1, args.end()));
   }
+  if (!args.empty() && args[0] == "vlf")
+  {
+    return mesolight::RunVlfBenchmark(std::vector<std::string>(args.begin() + 1, args.end()));
+  }
   if (!args.empty() && args[0] == "relief")
   {
     return mesolight::RunReliefSweep(std::vector<std::string>(args.begin() + 1, args.end()));
@@ -766,6 +776,10 @@ int main(int argc, char* argv[])
   if (command == "bench")
   {
     return RunBench(args);
+  }
+  if (command == "vlf")
+  {
+    return mesolight::RunVlfCommand(args);
   }
   std::cerr << "mesolight: unknown command '" << command << "'\n" << Usage;
   return 2;

@@ -1,0 +1,745 @@
+#include "VlfCommand.h"
+
+#include "ChartPlot.h"
+#include "CommandLine.h"
+
+#include "EmbreeScene.h"
+#include "LightField.h"
+#include "Lookup.h"
+#include "ObjScene.h"
+#include "PatchComparison.h"
+#include "PathTracer.h"
+#include "Propagation.h"
+#include "Snapshot.h"
+#include "TriangleScene.h"
+
+#include <vtkImageData.h>
+#include <vtkNew.h>
+#include <vtkPNGWriter.h>
+#include <vtkUnsignedCharArray.h>
+#include <vtkPointData.h>
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <functional>
+#include <map>
+#include <memory>
+#include <iostream>
+#include <sstream>
+
+namespace mesolight
+{
+namespace
+{
+namespace vlf = mesolight::vlf;
+using Clock = std::chrono::steady_clock;
+
+double Seconds(Clock::time_point since)
+{
+  return std::chrono::duration<double>(Clock::now() - since).count();
+}
+
+bool ParseList(const std::string& text, std::vector<int>& values, int low, int high, std::string& error)
+{
+  values.clear();
+  std::istringstream in(text);
+  std::string item;
+  while (std::getline(in, item, ','))
+  {
+    char* end = nullptr;
+    const long v = std::strtol(item.c_str(), &end, 10);
+    if (item.empty() || *end != '\0' || v < low || v > high)
+    {
+      error = "'" + item + "' is not a whole number in [" + std::to_string(low) + ", " +
+        std::to_string(high) + "]";
+      return false;
+    }
+    values.push_back(static_cast<int>(v));
+  }
+  if (values.empty())
+  {
+    error = "an empty list";
+    return false;
+  }
+  return true;
+}
+
+// Peak resident memory since the last reset (Linux: VmHWM; writing 5 to clear_refs resets it).
+std::uint64_t PeakResidentBytes()
+{
+  std::ifstream status("/proc/self/status");
+  std::string line;
+  while (std::getline(status, line))
+  {
+    if (line.compare(0, 6, "VmHWM:") == 0)
+    {
+      return std::strtoull(line.c_str() + 6, nullptr, 10) * 1024;
+    }
+  }
+  return 0;
+}
+void ResetPeakResident()
+{
+  std::ofstream clear("/proc/self/clear_refs");
+  clear << "5";
+}
+
+// Progress on stderr in steps of 10%.
+vlf::ProgressCallbacks PrintedProgress(const std::string& what)
+{
+  auto last = std::make_shared<int>(-1);
+  vlf::ProgressCallbacks callbacks;
+  callbacks.Progress = [what, last](double fraction) {
+    const int step = static_cast<int>(fraction * 10.0);
+    if (step != *last)
+    {
+      *last = step;
+      std::cerr << "\r" << what << " " << step * 10 << "%" << (step >= 10 ? "\n" : "") << std::flush;
+    }
+  };
+  return callbacks;
+}
+
+int Propagate(const std::vector<std::string>& args)
+{
+  CommandLine cl;
+  cl.AddValue("--out", "FIELD", "light field snapshot to write after every iteration (required)");
+  cl.AddValue("--directions", "N", "directions: 2n^2+1, e.g. 513, 2049, 8193", "513");
+  cl.AddValue("--rays", "N", "lines per subfield side", "32");
+  cl.AddValue("--tiles", "M", "tiles per subfield side (0 = rays / 8)", "0");
+  cl.AddValue("--iterations", "K", "shooting iterations (in total, when resuming)", "4");
+  cl.AddValue("--memory-budget", "GIB", "refuse fields needing more memory than this", "4");
+  cl.AddFlag("--resume", "continue the propagation stored in FIELD");
+  cl.AddFlag("--force", "replace an existing light field FIELD (never any other file)");
+  cl.AddFlag("--help", "show this help");
+  std::string error;
+  if (!cl.Parse(args, error))
+  {
+    std::cerr << "mesolight vlf propagate: " << error << "\n";
+    return 2;
+  }
+  if (cl.Has("--help"))
+  {
+    std::cout << "mesolight vlf propagate [SCENE.obj] --out FIELD [options]\n\n"
+                 "Propagates the scene's light (the built-in Cornell box without SCENE) into a "
+                 "virtual light field,\nwriting FIELD after every iteration.\n\nOptions:\n";
+    cl.PrintOptions(std::cout);
+    return 0;
+  }
+  int directions = 0, rays = 0, tiles = 0, iterations = 0;
+  double budget = 0.0;
+  if (!cl.GetInt("--directions", 3, 1 << 26, directions, error) || !cl.GetInt("--rays", 1, 4096, rays, error) ||
+    !cl.GetInt("--tiles", 0, 4096, tiles, error) || !cl.GetInt("--iterations", 0, 10000, iterations, error) ||
+    !cl.GetDouble("--memory-budget", 1e-3, 1e6, budget, error))
+  {
+    std::cerr << "mesolight vlf propagate: " << error << "\n";
+    return 2;
+  }
+  const std::string out = cl.Get("--out");
+  if (out.empty())
+  {
+    std::cerr << "mesolight vlf propagate: --out FIELD is required\n";
+    return 2;
+  }
+  if (cl.Positional().size() > 1)
+  {
+    std::cerr << "mesolight vlf propagate: one scene at most\n";
+    return 2;
+  }
+  const bool resume = cl.Has("--resume");
+  if (resume && cl.Has("--force"))
+  {
+    std::cerr << "mesolight vlf propagate: --resume and --force exclude each other\n";
+    return 2;
+  }
+  if (vlf::FileExists(out) && !vlf::IsSnapshotFile(out))
+  {
+    std::cerr << "mesolight vlf propagate: '" << out
+              << "' exists and is not a light field: it is left alone, choose another --out\n";
+    return 1;
+  }
+  if (vlf::FileExists(out) && !resume && !cl.Has("--force"))
+  {
+    std::cerr << "mesolight vlf propagate: '" << out
+              << "' already holds a light field: add --resume to continue it or --force to replace it\n";
+    return 1;
+  }
+  if (resume && !vlf::FileExists(out))
+  {
+    std::cerr << "mesolight vlf propagate: --resume: '" << out << "' does not exist\n";
+    return 1;
+  }
+  const std::uint64_t budgetBytes = static_cast<std::uint64_t>(budget * 1073741824.0);
+  try
+  {
+    std::unique_ptr<vlf::LightField> field;
+    if (resume)
+    {
+      if (!cl.Positional().empty())
+      {
+        std::cerr << "mesolight vlf propagate: --resume takes the scene and settings from '" << out
+                  << "'; do not name a scene\n";
+        return 2;
+      }
+      field = vlf::ReadSnapshot(out, budgetBytes);
+      std::cout << "resuming '" << out << "' after " << field->IterationsDone << " iterations\n";
+    }
+    else
+    {
+      TriangleScene scene;
+      if (cl.Positional().empty())
+      {
+        scene = MakeCornellBox();
+        std::cout << "scene: the built-in Cornell box\n";
+      }
+      else
+      {
+        vlf::ObjSceneRead read = vlf::ReadObjScene(cl.Positional()[0]);
+        for (const std::string& w : read.Warnings)
+        {
+          std::cerr << "mesolight vlf propagate: warning: " << w << "\n";
+        }
+        scene = std::move(read.Scene);
+        std::cout << "scene: " << cl.Positional()[0] << " (" << scene.TriangleCount() << " triangles, "
+                  << scene.Materials.size() << " materials)\n";
+      }
+      vlf::LightFieldSettings settings;
+      settings.Directions = static_cast<std::size_t>(directions);
+      settings.RaysPerSide = rays;
+      settings.TilesPerSide = tiles > 0 ? tiles : std::max(1, rays / 8);
+      settings.MemoryBudget = budgetBytes;
+      const vlf::MemoryEstimate estimate = vlf::EstimateMemory(scene, settings);
+      std::cout << "light field: " << directions << " directions x " << rays << "x" << rays << " rays, "
+                << settings.TilesPerSide << "x" << settings.TilesPerSide << " tiles; memory up to "
+                << estimate.Describe() << "\n";
+      const Clock::time_point start = Clock::now();
+      field = vlf::LightField::Build(scene, settings, vlf::ThreadParallelFor, PrintedProgress("tracing subfields"));
+      std::cout << "traced in " << Seconds(start) << " s, " << vlf::FormatBytes(field->AllocatedBytes())
+                << " allocated\n";
+    }
+    vlf::PropagationOptions options;
+    options.Callbacks = PrintedProgress("propagating");
+    vlf::Propagate(*field, iterations, options, [&](const vlf::LightField& f) {
+      vlf::WriteSnapshot(f, out);
+      const vlf::LightField::IterationEnergy& e = f.EnergyLog.back();
+      std::printf("iteration %d: %.2f s, shot %.4g, escaped %.4g, absorbed %.4g, left to shoot %.4g "
+                  "(energy balance error %.1e); wrote %s\n",
+        e.Iteration, e.Seconds, e.Shot[0] + e.Shot[1] + e.Shot[2],
+        e.Escaped[0] + e.Escaped[1] + e.Escaped[2], e.Absorbed[0] + e.Absorbed[1] + e.Absorbed[2],
+        e.Unshot[0] + e.Unshot[1] + e.Unshot[2], e.ConservationError(), out.c_str());
+      std::fflush(stdout);
+    });
+    if (field->IterationsDone >= iterations && !vlf::FileExists(out))
+    {
+      vlf::WriteSnapshot(*field, out); // zero iterations: the traced field
+    }
+    std::cout << "light field '" << out << "': " << field->IterationsDone << " iterations\n";
+  }
+  catch (const std::exception& e)
+  {
+    std::cerr << "mesolight vlf propagate: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}
+
+bool ParseVector(const std::string& text, int count, double* values)
+{
+  std::istringstream in(text);
+  std::string item;
+  int n = 0;
+  while (std::getline(in, item, ','))
+  {
+    char* end = nullptr;
+    if (n >= count)
+    {
+      return false;
+    }
+    values[n] = std::strtod(item.c_str(), &end);
+    if (item.empty() || *end != '\0' || !std::isfinite(values[n]))
+    {
+      return false;
+    }
+    ++n;
+  }
+  return n == count;
+}
+
+int Render(const std::vector<std::string>& args)
+{
+  CommandLine cl;
+  cl.AddValue("--out", "IMAGE.png", "where to write the image (required)");
+  cl.AddValue("--size", "WxH", "image size in pixels", "512x512");
+  cl.AddValue("--camera", "X,Y,Z,FX,FY,FZ",
+    "camera position and focal point in scene coordinates (default: the Cornell box camera for "
+    "the Cornell box, else a view of the whole scene along +z)");
+  cl.AddValue("--view-up", "X,Y,Z", "camera up direction", "0,1,0");
+  cl.AddValue("--view-angle", "DEG", "vertical field of view", "39.3077");
+  cl.AddValue("--exposure", "X", "radiance scale before the sRGB curve", "1");
+  cl.AddFlag("--force", "replace an existing IMAGE.png");
+  cl.AddFlag("--help", "show this help");
+  std::string error;
+  if (!cl.Parse(args, error))
+  {
+    std::cerr << "mesolight vlf render: " << error << "\n";
+    return 2;
+  }
+  if (cl.Has("--help"))
+  {
+    std::cout << "mesolight vlf render FIELD --out IMAGE.png [options]\n\n"
+                 "Renders a light field's diffuse totals (the seed's progressive mode: per-surface "
+                 "total diffuse\ntextures, bilinear) by casting a ray per pixel; mirror surfaces "
+                 "show the field's radiance\ntoward the eye (three-direction spherical "
+                 "interpolation).\n\nOptions:\n";
+    cl.PrintOptions(std::cout);
+    return 0;
+  }
+  if (cl.Positional().size() != 1 || cl.Get("--out").empty())
+  {
+    std::cerr << "mesolight vlf render: give one FIELD and --out IMAGE.png\n";
+    return 2;
+  }
+  const std::string out = cl.Get("--out");
+  if (vlf::FileExists(out) && !cl.Has("--force"))
+  {
+    std::cerr << "mesolight vlf render: '" << out << "' exists; add --force to replace it\n";
+    return 1;
+  }
+  int width = 0, height = 0;
+  {
+    char x = 0;
+    std::istringstream in(cl.Get("--size"));
+    if (!(in >> width >> x >> height) || x != 'x' || width < 1 || height < 1 || width > 16384 || height > 16384)
+    {
+      std::cerr << "mesolight vlf render: --size '" << cl.Get("--size") << "' is not WxH in [1, 16384]\n";
+      return 2;
+    }
+  }
+  double viewAngle = 0.0, exposure = 0.0;
+  if (!cl.GetDouble("--view-angle", 1.0, 179.0, viewAngle, error) ||
+    !cl.GetDouble("--exposure", 0.0, 1e9, exposure, error))
+  {
+    std::cerr << "mesolight vlf render: " << error << "\n";
+    return 2;
+  }
+  try
+  {
+    const std::unique_ptr<vlf::LightField> field = vlf::ReadSnapshot(cl.Positional()[0]);
+    const TriangleScene& unit = field->Scene();
+    glm::vec3 lower, upper;
+    SceneBounds(unit, lower, upper);
+    const glm::vec3 worldLower = vlf::ToWorld(*field, lower), worldUpper = vlf::ToWorld(*field, upper);
+    glm::vec3 eye, focal;
+    double up[3] = { 0.0, 1.0, 0.0 };
+    if (!ParseVector(cl.Get("--view-up"), 3, up))
+    {
+      std::cerr << "mesolight vlf render: --view-up needs X,Y,Z\n";
+      return 2;
+    }
+    if (cl.Has("--camera"))
+    {
+      double c[6];
+      if (!ParseVector(cl.Get("--camera"), 6, c))
+      {
+        std::cerr << "mesolight vlf render: --camera needs X,Y,Z,FX,FY,FZ\n";
+        return 2;
+      }
+      eye = glm::vec3(c[0], c[1], c[2]);
+      focal = glm::vec3(c[3], c[4], c[5]);
+    }
+    else
+    {
+      const TriangleScene cornell = MakeCornellBox();
+      glm::vec3 cl0, cu0;
+      SceneBounds(cornell, cl0, cu0);
+      if (glm::length(cl0 - worldLower) + glm::length(cu0 - worldUpper) < 1.0f)
+      {
+        const CornellCamera camera;
+        eye = camera.Position;
+        focal = camera.FocalPoint;
+      }
+      else
+      {
+        const glm::vec3 centre = 0.5f * (worldLower + worldUpper);
+        const float radius = 0.5f * glm::length(worldUpper - worldLower);
+        focal = centre;
+        eye = centre - glm::vec3(0.0f, 0.0f, 2.2f * radius);
+      }
+    }
+    // Camera frame in the field's unit-sphere coordinates.
+    const glm::vec3 eyeUnit = vlf::ToUnit(*field, eye);
+    const glm::vec3 forward = glm::normalize(vlf::ToUnit(*field, focal) - eyeUnit);
+    glm::vec3 right = glm::cross(forward, glm::vec3(up[0], up[1], up[2]));
+    if (!(glm::length(right) > 1e-6f))
+    {
+      std::cerr << "mesolight vlf render: the view-up direction is parallel to the view direction\n";
+      return 2;
+    }
+    right = glm::normalize(right);
+    const glm::vec3 trueUp = glm::cross(right, forward);
+    const float tanHalf = static_cast<float>(std::tan(0.5 * viewAngle * 3.14159265358979 / 180.0));
+    const float aspect = static_cast<float>(width) / static_cast<float>(height);
+
+    const EmbreeScene embree(unit);
+    const vlf::Lookup lookup(*field);
+    std::vector<unsigned char> pixels(static_cast<std::size_t>(width) * height * 3);
+    const Clock::time_point start = Clock::now();
+    vlf::ThreadParallelFor(static_cast<std::size_t>(height), [&](std::size_t r0, std::size_t r1) {
+      for (std::size_t row = r0; row < r1; ++row)
+      {
+        for (int column = 0; column < width; ++column)
+        {
+          const float sx = (2.0f * (column + 0.5f) / width - 1.0f) * tanHalf * aspect;
+          const float sy = (2.0f * (row + 0.5f) / height - 1.0f) * tanHalf;
+          SceneRay ray;
+          ray.Origin = eyeUnit;
+          ray.Direction = glm::normalize(forward + sx * right + sy * trueUp);
+          const SceneHit hit = embree.Intersect(ray);
+          glm::vec3 radiance(0.0f);
+          if (hit.Hit())
+          {
+            const std::uint32_t s = field->SurfaceOfTriangle(hit.Triangle);
+            const glm::vec3 p = ray.Origin + hit.T * ray.Direction;
+            const SceneMaterial& m = unit.MaterialOf(hit.Triangle);
+            const bool front = s != vlf::NoSurface && glm::dot(field->Surfaces()[s].Normal, ray.Direction) < 0.0f;
+            if (front)
+            {
+              radiance = glm::length(m.Specular) > 0.0f
+                ? lookup.RadianceLeaving(s, p, -ray.Direction)
+                : lookup.DiffuseRadiance(s, p);
+            }
+          }
+          // Row 0 of a VTK image is the bottom row.
+          unsigned char* rgb = &pixels[(row * static_cast<std::size_t>(width) + column) * 3];
+          for (int c = 0; c < 3; ++c)
+          {
+            const double v = std::max(0.0, std::min(1.0, exposure * radiance[c]));
+            const double srgb = v <= 0.0031308 ? 12.92 * v : 1.055 * std::pow(v, 1.0 / 2.4) - 0.055;
+            rgb[c] = static_cast<unsigned char>(std::lround(255.0 * srgb));
+          }
+        }
+      }
+    });
+    vtkNew<vtkImageData> image;
+    image->SetDimensions(width, height, 1);
+    vtkNew<vtkUnsignedCharArray> colours;
+    colours->SetNumberOfComponents(3);
+    colours->SetNumberOfTuples(static_cast<vtkIdType>(width) * height);
+    std::copy(pixels.begin(), pixels.end(), colours->GetPointer(0));
+    image->GetPointData()->SetScalars(colours);
+    vtkNew<vtkPNGWriter> writer;
+    writer->SetInputData(image);
+    writer->SetFileName(out.c_str());
+    writer->Write();
+    if (writer->GetErrorCode() != 0)
+    {
+      std::cerr << "mesolight vlf render: could not write '" << out << "'\n";
+      return 1;
+    }
+    std::cout << "wrote " << out << " (" << width << "x" << height << ", " << Seconds(start)
+              << " s, light field after " << field->IterationsDone << " iterations)\n";
+  }
+  catch (const std::exception& e)
+  {
+    std::cerr << "mesolight vlf render: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}
+
+} // namespace
+
+int RunVlfCommand(const std::vector<std::string>& args)
+{
+  const char* usage = "mesolight vlf propagate [SCENE.obj] --out FIELD [options]\n"
+                      "mesolight vlf render FIELD --out IMAGE.png [options]\n"
+                      "Run 'mesolight vlf propagate --help' or 'mesolight vlf render --help' for the options.\n";
+  if (args.empty() || args[0] == "--help" || args[0] == "-h")
+  {
+    std::cout << usage;
+    return args.empty() ? 2 : 0;
+  }
+  const std::vector<std::string> rest(args.begin() + 1, args.end());
+  if (args[0] == "propagate")
+  {
+    return Propagate(rest);
+  }
+  if (args[0] == "render")
+  {
+    return Render(rest);
+  }
+  std::cerr << "mesolight vlf: unknown subcommand '" << args[0] << "'\n" << usage;
+  return 2;
+}
+
+namespace
+{
+// The Cornell box reference: the path tracer's diffuse radiance leaving each point (all bounces,
+// next-event estimation; vtkRayTracing/core/PathTracer.h), 256 paths per point.
+vlf::ReferenceRadiance CornellReference(const TriangleScene& world)
+{
+  auto scene = std::make_shared<TriangleScene>(world);
+  auto embree = std::make_shared<EmbreeScene>(*scene);
+  auto tracer = std::make_shared<PathTracer>(*embree);
+  return [scene, embree, tracer](std::uint32_t triangle, const glm::vec3& point) {
+    const std::uint64_t seed = (static_cast<std::uint64_t>(triangle) << 32) ^
+      std::hash<float>{}(point.x) ^ (std::hash<float>{}(point.y) << 1) ^ (std::hash<float>{}(point.z) << 2);
+    return tracer->DiffuseRadianceLeaving(triangle, point, 256, seed);
+  };
+}
+
+// A square emitter over a floor: the floor's diffuse radiance is rho Le F(x) exactly (F the
+// point-to-square form factor, Howell C-11).
+double CornerFormFactor(double a, double b, double h)
+{
+  const double x = a / h, y = b / h, pi = 3.14159265358979323846;
+  return (x / std::sqrt(1.0 + x * x) * std::atan(y / std::sqrt(1.0 + x * x)) +
+           y / std::sqrt(1.0 + y * y) * std::atan(x / std::sqrt(1.0 + y * y))) /
+    (2.0 * pi);
+}
+double SquareFormFactor(double side, double h, double px, double py)
+{
+  const double s = 0.5 * side;
+  auto corner = [&](double a, double b) {
+    return (a < 0 ? -1.0 : 1.0) * (b < 0 ? -1.0 : 1.0) * CornerFormFactor(std::abs(a), std::abs(b), h);
+  };
+  return corner(s - px, s - py) + corner(s + px, s - py) + corner(s - px, s + py) + corner(s + px, s + py);
+}
+TriangleScene EmitterOverFloor(float albedo, float le)
+{
+  TriangleScene scene;
+  SceneMaterial floor;
+  floor.Name = "floor";
+  floor.Diffuse = glm::vec3(albedo);
+  SceneMaterial light;
+  light.Name = "light";
+  light.Diffuse = glm::vec3(0.0f);
+  light.Emission = glm::vec3(le);
+  const std::uint32_t f = scene.AddMaterial(floor), l = scene.AddMaterial(light);
+  scene.AddPolygon({ { -1, -1, 0 }, { 1, -1, 0 }, { 1, 1, 0 }, { -1, 1, 0 } }, f);
+  scene.AddPolygon({ { -0.5f, -0.5f, 1 }, { -0.5f, 0.5f, 1 }, { 0.5f, 0.5f, 1 }, { 0.5f, -0.5f, 1 } }, l);
+  return scene;
+}
+} // namespace
+
+int RunVlfBenchmark(const std::vector<std::string>& args)
+{
+  CommandLine cl;
+  cl.AddValue("--directions", "N,N,..", "direction counts (2n^2+1)", "513,2049");
+  cl.AddValue("--rays", "N,N,..", "lines per subfield side", "32,64,128");
+  cl.AddValue("--iterations", "K", "shooting iterations (each one timed)", "4");
+  cl.AddValue("--memory-budget", "GIB", "skip configurations needing more", "6");
+  cl.AddValue("--csv", "FILE", "write the rows as CSV");
+  cl.AddValue("--plot", "FILE.png", "plot time vs rays (and FILE-error.png: error vs rays)");
+  cl.AddFlag("--help", "show this help");
+  std::string error;
+  if (!cl.Parse(args, error))
+  {
+    std::cerr << "mesolight bench vlf: " << error << "\n";
+    return 2;
+  }
+  if (cl.Has("--help"))
+  {
+    std::cout << "mesolight bench vlf [options]\n\nPropagation time and peak memory of the Cornell "
+                 "box light field per direction count,\nrays per side and iteration; accuracy of "
+                 "the same settings on analytic cases (floor under\na square emitter vs the form "
+                 "factor; furnace vs Le/(1-rho)).\n\nOptions:\n";
+    cl.PrintOptions(std::cout);
+    return 0;
+  }
+  std::vector<int> directionList, rayList;
+  int iterations = 0;
+  double budget = 0.0;
+  if (!ParseList(cl.Get("--directions"), directionList, 3, 1 << 26, error) ||
+    !ParseList(cl.Get("--rays"), rayList, 8, 4096, error) ||
+    !cl.GetInt("--iterations", 1, 1000, iterations, error) ||
+    !cl.GetDouble("--memory-budget", 1e-3, 1e6, budget, error))
+  {
+    std::cerr << "mesolight bench vlf: " << error << "\n";
+    return 2;
+  }
+  ResetPeakResident();
+  std::printf("process resident memory before any light field: %s (VTK, Embree, TBB loaded)\n",
+    vlf::FormatBytes(PeakResidentBytes()).c_str());
+  std::ostringstream csv;
+  csv << "directions,rays,tiles,iteration,build_s,propagate_s,total_s,estimate_bytes,allocated_bytes,"
+         "peak_rss_bytes,energy_error,floor_mean_error,floor_rms_error,furnace_error,cornell_error\n";
+  std::map<int, ChartSeries> timeSeries, errorSeries;
+  std::printf("%10s %5s %5s %4s %9s %11s %9s %11s %11s %10s %9s %9s %9s\n", "directions", "rays",
+    "tiles", "iter", "build s", "propagate s", "total s", "estimate", "peak RSS", "energy err",
+    "floor err", "floor rms", "furnace");
+  for (const int directions : directionList)
+  {
+    for (const int rays : rayList)
+    {
+      vlf::LightFieldSettings settings;
+      settings.Directions = static_cast<std::size_t>(directions);
+      settings.RaysPerSide = rays;
+      settings.TilesPerSide = std::max(1, rays / 8);
+      settings.MemoryBudget = static_cast<std::uint64_t>(budget * 1073741824.0);
+      try
+      {
+        struct Row
+        {
+          int Iteration;
+          double Energy, Propagate;
+          std::uint64_t Peak, Allocated;
+          std::string Cornell;
+        };
+        std::vector<Row> rows;
+        const TriangleScene cornell = MakeCornellBox();
+        const vlf::MemoryEstimate estimate = vlf::EstimateMemory(cornell, settings);
+        ResetPeakResident();
+        const Clock::time_point start = Clock::now();
+        std::unique_ptr<vlf::LightField> field = vlf::LightField::Build(cornell, settings);
+        const double build = Seconds(start);
+        double propagate = 0.0;
+        for (int it = 1; it <= iterations; ++it)
+        {
+          const vlf::LightField::IterationEnergy e = vlf::PropagateIteration(*field);
+          propagate += e.Seconds;
+          std::string cornellError = "n/a";
+          const vlf::ReferenceRadiance reference = CornellReference(cornell);
+          if (reference && it == iterations)
+          {
+            const vlf::PatchComparisonResult r = vlf::ComparePatches(*field, reference, 64);
+            cornellError = std::to_string(r.AreaWeightedMeanError);
+            std::cout << r.Table();
+          }
+          const std::uint64_t peak = PeakResidentBytes();
+          rows.push_back({ it, e.ConservationError(), propagate, peak, field->AllocatedBytes(), cornellError });
+        }
+        field.reset();
+        // Accuracy at these settings on the analytic cases (small scenes, quick).
+        double floorMean = 0.0, floorRms = 0.0, furnace = 0.0;
+        {
+          const float albedo = 0.5f, le = 2.0f;
+          std::unique_ptr<vlf::LightField> f = vlf::LightField::Build(EmitterOverFloor(albedo, le), settings);
+          vlf::Propagate(*f, 1);
+          const TriangleScene& unit = f->Scene();
+          const vlf::PatchComparisonResult r = vlf::ComparePatches(*f,
+            [&](std::uint32_t t, const glm::vec3& w) {
+              return unit.MaterialOf(t).Emission.x > 0.0f
+                ? glm::vec3(le)
+                : glm::vec3(static_cast<float>(albedo * le * SquareFormFactor(1.0, 1.0, w.x, w.y)));
+            },
+            1000);
+          floorMean = r.Patches[0].MeanError;
+          floorRms = r.Patches[0].PointError;
+        }
+        {
+          TriangleScene cube;
+          SceneMaterial m;
+          m.Diffuse = glm::vec3(0.5f);
+          m.Emission = glm::vec3(1.0f);
+          const std::uint32_t id = cube.AddMaterial(m);
+          for (int axis = 0; axis < 3; ++axis)
+          {
+            for (int side = -1; side <= 1; side += 2)
+            {
+              std::vector<glm::vec3> q(4);
+              const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+              for (int c = 0; c < 4; ++c)
+              {
+                q[c][axis] = static_cast<float>(side);
+                q[c][u] = (c == 1 || c == 2) ? 1.0f : -1.0f;
+                q[c][v] = c >= 2 ? 1.0f : -1.0f;
+              }
+              if (side > 0) // fronts toward the centre
+              {
+                std::swap(q[1], q[3]);
+              }
+              cube.AddPolygon(q, id);
+            }
+          }
+          std::unique_ptr<vlf::LightField> f = vlf::LightField::Build(cube, settings);
+          vlf::Propagate(*f, iterations);
+          for (const glm::vec3& t : f->TotalDiffuse)
+          {
+            furnace = std::max(furnace, std::abs(t.x - 2.0) / 2.0);
+          }
+        }
+
+        for (const Row& row : rows)
+        {
+          std::printf("%10d %5d %5d %4d %9.2f %11.2f %9.2f %11s %11s %10.1e %8.2f%% %8.2f%% %8.2f%%\n",
+            directions, rays, settings.TilesPerSide, row.Iteration, build, row.Propagate,
+            build + row.Propagate, vlf::FormatBytes(estimate.TotalBytes).c_str(),
+            vlf::FormatBytes(row.Peak).c_str(), row.Energy, 100.0 * floorMean, 100.0 * floorRms,
+            100.0 * furnace);
+          csv << directions << ',' << rays << ',' << settings.TilesPerSide << ',' << row.Iteration << ','
+              << build << ',' << row.Propagate << ',' << build + row.Propagate << ','
+              << estimate.TotalBytes << ',' << row.Allocated << ',' << row.Peak << ',' << row.Energy
+              << ',' << floorMean << ',' << floorRms << ',' << furnace << ',' << row.Cornell << '\n';
+        }
+        std::fflush(stdout);
+        ChartSeries& t = timeSeries[directions];
+        t.Name = std::to_string(directions) + " directions, " + std::to_string(iterations) + " iterations";
+        t.X.push_back(rays);
+        t.Y.push_back(build + propagate);
+        ChartSeries& er = errorSeries[directions];
+        er.Name = std::to_string(directions) + " directions";
+        er.X.push_back(rays);
+        er.Y.push_back(100.0 * floorRms);
+      }
+      catch (const std::exception& ex)
+      {
+        std::printf("%10d %5d: skipped: %s\n", directions, rays, ex.what());
+      }
+    }
+  }
+  if (!cl.Get("--csv").empty())
+  {
+    std::ofstream file(cl.Get("--csv"));
+    file << csv.str();
+    if (!file)
+    {
+      std::cerr << "mesolight bench vlf: could not write " << cl.Get("--csv") << "\n";
+      return 1;
+    }
+    std::cout << "wrote " << cl.Get("--csv") << "\n";
+  }
+  const std::string plot = cl.Get("--plot");
+  if (!plot.empty() && !std::getenv("DISPLAY"))
+  {
+    std::cerr << "mesolight bench vlf: no plot: VTK charts need a display (run under xvfb-run)\n";
+    return 1;
+  }
+  if (!plot.empty())
+  {
+    ScatterChart chart;
+    chart.Title = "Cornell box light field: build + propagation time (2 cores)";
+    chart.XLabel = "rays per subfield side";
+    chart.YLabel = "seconds";
+    for (auto& s : timeSeries)
+    {
+      chart.Points.push_back(s.second);
+    }
+    ScatterChart errors;
+    errors.Title = "Floor under a square emitter: RMS error of the diffuse radiance vs the form factor";
+    errors.XLabel = "rays per subfield side";
+    errors.YLabel = "RMS relative error (%)";
+    for (auto& s : errorSeries)
+    {
+      errors.Points.push_back(s.second);
+    }
+    const std::string errorPlot = plot.size() > 4 && plot.substr(plot.size() - 4) == ".png"
+      ? plot.substr(0, plot.size() - 4) + "-error.png"
+      : plot + "-error.png";
+    if (!WriteScatterChartPng(chart, plot, error) || !WriteScatterChartPng(errors, errorPlot, error))
+    {
+      std::cerr << "mesolight bench vlf: " << error << "\n";
+      return 1;
+    }
+    std::cout << "wrote " << plot << " and " << errorPlot << "\n";
+  }
+  return 0;
+}
+
+} // namespace mesolight

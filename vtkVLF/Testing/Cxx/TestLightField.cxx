@@ -1,0 +1,237 @@
+// Tests of the light field structure (seed 002 §2.4.1): surface grouping, every line's crossings
+// against brute-force intersection with all triangles, the memory estimate as an upper bound of
+// what is allocated, refusals (budget, bad settings, no emitter), lookups on the tile lists.
+#include "LightField.h"
+#include "VLFTestScenes.h"
+
+#include <glm/geometric.hpp>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <random>
+#include <string>
+
+namespace
+{
+using namespace mesolight;
+using namespace mesolight::vlf;
+
+LightFieldSettings Small()
+{
+  LightFieldSettings s;
+  s.Directions = 33; // n = 4
+  s.RaysPerSide = 16;
+  s.TilesPerSide = 4;
+  return s;
+}
+
+// Möller-Trumbore, double precision: the independent reference for the crossings.
+bool IntersectTriangle(const glm::dvec3& o, const glm::dvec3& d, const glm::dvec3& a,
+  const glm::dvec3& b, const glm::dvec3& c, double& t)
+{
+  const glm::dvec3 e1 = b - a, e2 = c - a;
+  const glm::dvec3 p = glm::cross(d, e2);
+  const double det = glm::dot(e1, p);
+  if (std::abs(det) < 1e-14)
+  {
+    return false;
+  }
+  const glm::dvec3 s = o - a;
+  const double u = glm::dot(s, p) / det;
+  const glm::dvec3 q = glm::cross(s, e1);
+  const double v = glm::dot(d, q) / det;
+  t = glm::dot(e2, q) / det;
+  return u >= 0.0 && v >= 0.0 && u + v <= 1.0;
+}
+
+std::string MessageOf(const std::function<void()>& action)
+{
+  try
+  {
+    action();
+  }
+  catch (const std::exception& e)
+  {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(VLFLightField, GroupsPlanarSurfaces)
+{
+  const TriangleScene cube = vlftest::MakeFurnaceCube(0.5f, 1.0f);
+  std::vector<std::uint32_t> triangleSurface;
+  const std::vector<Surface> surfaces = GroupSurfaces(cube, 0.1f, triangleSurface);
+  ASSERT_EQ(surfaces.size(), 6u);
+  for (const Surface& s : surfaces)
+  {
+    EXPECT_EQ(s.Triangles.size(), 2u);
+    EXPECT_NEAR(s.Area, 4.0, 1e-5);
+    // The texture rectangle fits the square face exactly: 2 / 0.1 = 20 texels.
+    EXPECT_EQ(s.TextureWidth, 20);
+    EXPECT_EQ(s.TextureHeight, 20);
+    EXPECT_NEAR(s.TexelU * s.TextureWidth, 2.0f, 1e-5f);
+    // Inward normals: the centre is in front of every face.
+    EXPECT_GT(-s.Offset, 0.0f);
+    // Texel centres lie on the plane.
+    EXPECT_NEAR(glm::dot(s.Normal, s.TexelCentre(3, 7)), s.Offset, 1e-5f);
+  }
+}
+
+TEST(VLFLightField, CrossingsMatchBruteForce)
+{
+  const TriangleScene cornell = MakeCornellBox();
+  LightFieldSettings settings = Small();
+  const std::unique_ptr<LightField> field = LightField::Build(cornell, settings);
+  const TriangleScene& scene = field->Scene();
+  const int n = settings.RaysPerSide;
+  const float h = settings.CellSize();
+  std::size_t lines = 0, crossings = 0;
+  std::vector<Crossing> found;
+  for (std::size_t k = 0; k < field->SubfieldCount(); k += 3)
+  {
+    const Subfield& f = field->GetSubfield(k);
+    for (int j = 0; j < n; ++j)
+    {
+      for (int i = 0; i < n; ++i)
+      {
+        const float a = -1.0f + (i + 0.5f) * h, b = -1.0f + (j + 0.5f) * h;
+        const glm::dvec3 origin = glm::dvec3(a * f.AxisU + b * f.AxisV) - 1.01 * glm::dvec3(f.Direction);
+        // Brute force: every triangle; one crossing per surface (the nearest of its triangles).
+        std::vector<std::pair<double, std::uint32_t>> expected;
+        for (std::size_t t = 0; t < scene.TriangleCount(); ++t)
+        {
+          double depth;
+          if (IntersectTriangle(origin, glm::dvec3(f.Direction), glm::dvec3(scene.Vertex(t, 0)),
+                glm::dvec3(scene.Vertex(t, 1)), glm::dvec3(scene.Vertex(t, 2)), depth) &&
+            depth > 0.0)
+          {
+            const std::uint32_t s = field->SurfaceOfTriangle(t);
+            auto same = std::find_if(expected.begin(), expected.end(),
+              [&](const std::pair<double, std::uint32_t>& e) { return e.second == s; });
+            if (same == expected.end())
+            {
+              expected.emplace_back(depth, s);
+            }
+          }
+        }
+        std::sort(expected.begin(), expected.end());
+        field->LineCrossings(k, i, j, found);
+        lines += found.empty() ? 0 : 1;
+        crossings += found.size();
+        ASSERT_EQ(found.size(), expected.size()) << "subfield " << k << " line " << i << "," << j;
+        for (std::size_t q = 0; q < found.size(); ++q)
+        {
+          EXPECT_EQ(found[q].Surface, expected[q].second);
+          EXPECT_NEAR(found[q].Depth, expected[q].first, 1e-4);
+          EXPECT_EQ(field->FindCell(k, i, j, found[q].Surface), static_cast<std::int64_t>(found[q].Cell));
+        }
+      }
+    }
+  }
+  EXPECT_GT(lines, 0u);
+  EXPECT_GE(crossings, 2 * lines); // a line through the box crosses at least two surfaces
+}
+
+TEST(VLFLightField, EstimateBoundsTheAllocation)
+{
+  const TriangleScene cornell = MakeCornellBox();
+  LightFieldSettings settings = Small();
+  settings.Directions = 129;
+  settings.RaysPerSide = 32;
+  const MemoryEstimate estimate = EstimateMemory(cornell, settings);
+  const std::unique_ptr<LightField> field = LightField::Build(cornell, settings);
+  const std::uint64_t allocated = field->AllocatedBytes();
+  std::printf("[ estimate ] %s; allocated %s\n", estimate.Describe().c_str(),
+    FormatBytes(allocated).c_str());
+  EXPECT_EQ(field->Estimate().TotalBytes, estimate.TotalBytes);
+  EXPECT_LE(allocated, estimate.TotalBytes);
+  EXPECT_GE(allocated, estimate.TotalBytes / 4); // a useful bound, not a wild one
+}
+
+TEST(VLFLightField, RefusesOverBudgetBeforeAllocating)
+{
+  const TriangleScene cornell = MakeCornellBox();
+  LightFieldSettings settings = Small();
+  settings.MemoryBudget = 1024; // 1 KiB
+  const std::string message = MessageOf([&] { LightField::Build(cornell, settings); });
+  EXPECT_NE(message.find("memory budget of 1.00 KiB"), std::string::npos) << message;
+  EXPECT_THROW(LightField::Build(cornell, settings), MemoryBudgetError);
+}
+
+TEST(VLFLightField, RejectsBadSettingsAndScenes)
+{
+  const TriangleScene cornell = MakeCornellBox();
+  LightFieldSettings s = Small();
+  s.RaysPerSide = 30;
+  EXPECT_NE(MessageOf([&] { LightField::Build(cornell, s); }).find("not a multiple"), std::string::npos);
+  s = Small();
+  s.Directions = 500;
+  EXPECT_THROW(LightField::Build(cornell, s), std::invalid_argument);
+  s = Small();
+  s.RaysPerSide = 0;
+  EXPECT_THROW(LightField::Build(cornell, s), std::invalid_argument);
+  s = Small();
+  s.TexelSize = std::numeric_limits<float>::quiet_NaN();
+  EXPECT_THROW(LightField::Build(cornell, s), std::invalid_argument);
+
+  TriangleScene dark = cornell;
+  for (SceneMaterial& m : dark.Materials)
+  {
+    m.Emission = glm::vec3(0.0f);
+  }
+  EXPECT_NE(MessageOf([&] { LightField::Build(dark, Small()); }).find("emitter"), std::string::npos);
+
+  TriangleScene bright = cornell;
+  bright.Materials[0].Specular = glm::vec3(0.5f);
+  EXPECT_NE(MessageOf([&] { LightField::Build(bright, Small()); }).find("reflects more light"),
+    std::string::npos);
+
+  TriangleScene broken = cornell;
+  broken.Positions[0].x = std::numeric_limits<float>::quiet_NaN();
+  EXPECT_THROW(LightField::Build(broken, Small()), std::invalid_argument);
+  EXPECT_THROW(LightField::Build(TriangleScene(), Small()), std::invalid_argument);
+}
+
+TEST(VLFLightField, DegenerateTrianglesAreIgnored)
+{
+  TriangleScene cube = vlftest::MakeFurnaceCube(0.5f, 1.0f);
+  cube.Positions.push_back(glm::vec3(0.0f));
+  cube.Positions.push_back(glm::vec3(0.0f));
+  cube.Positions.push_back(glm::vec3(0.0f));
+  const std::uint32_t first = static_cast<std::uint32_t>(cube.Positions.size() - 3);
+  cube.Triangles.emplace_back(first, first + 1, first + 2);
+  cube.MaterialIds.push_back(0);
+  const std::unique_ptr<LightField> field = LightField::Build(cube, Small());
+  EXPECT_EQ(field->Surfaces().size(), 6u);
+  EXPECT_EQ(field->SurfaceOfTriangle(12), NoSurface);
+}
+
+TEST(VLFLightField, ParallelForCallbackIsUsedAndAbortStops)
+{
+  const TriangleScene cornell = MakeCornellBox();
+  std::size_t calls = 0;
+  ParallelFor serial = [&](std::size_t count, const std::function<void(std::size_t, std::size_t)>& body) {
+    ++calls;
+    body(0, count);
+  };
+  double last = -1.0;
+  bool monotone = true;
+  ProgressCallbacks progress;
+  progress.Progress = [&](double p) {
+    monotone = monotone && p >= last;
+    last = p;
+  };
+  LightField::Build(cornell, Small(), serial, progress);
+  EXPECT_GT(calls, 0u);
+  EXPECT_TRUE(monotone);
+  EXPECT_NEAR(last, 1.0, 1e-9);
+
+  ProgressCallbacks abort;
+  abort.AbortRequested = [] { return true; };
+  EXPECT_THROW(LightField::Build(cornell, Small(), serial, abort), AbortedError);
+}
+
+} // namespace

@@ -1,0 +1,277 @@
+// Tests of the Wavefront OBJ + MTL reader and writer: every supported statement, errors with
+// file:line, missing MTL and materials, scene checks (no emitter, degenerate and non-manifold
+// triangles), and the Cornell box written, read back and compared with the built-in one.
+#include "ObjScene.h"
+
+#include <glm/geometric.hpp>
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace
+{
+using mesolight::TriangleScene;
+using mesolight::vlf::ObjReadOptions;
+using mesolight::vlf::ObjSceneError;
+using mesolight::vlf::ObjSceneRead;
+using mesolight::vlf::ReadObjScene;
+
+std::string TempPath(const std::string& name)
+{
+  return std::string(MESOLIGHT_VLF_TEST_TEMP_DIR) + "/" + name;
+}
+
+std::string WriteText(const std::string& name, const std::string& text)
+{
+  const std::string path = TempPath(name);
+  std::ofstream(path, std::ios::binary) << text;
+  return path;
+}
+
+// The message of the ObjSceneError that reading `path` throws ("" if none).
+std::string ReadError(const std::string& path, const ObjReadOptions& options = {})
+{
+  try
+  {
+    ReadObjScene(path, options);
+  }
+  catch (const ObjSceneError& error)
+  {
+    return error.what();
+  }
+  return "";
+}
+
+const char* const LampMtl = "newmtl lamp\nKd 0.1 0.2 0.3\nKe 5 4 3\n"
+                            "newmtl mirror # a comment\nKd 0\nKs 0.9 0.9 0.9\nNs 200\nKa 0.1 0.1 0.1\n"
+                            "illum 3\nmap_Kd -bm 1 textures/wood.png\nmap_Ks shiny.png\n";
+
+TEST(ObjScene, ReadsEveryStatement)
+{
+  WriteText("every.mtl", LampMtl);
+  const std::string path = WriteText("every.obj",
+    "# comment\r\nmtllib every.mtl\r\no thing\ng group\ns off\n"
+    "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0.5 1.5 \\\n 0\n"
+    "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nvt 0.5 1\n"
+    "vn 0 0 2\n"
+    "usemtl lamp\n"
+    "f 1/1/1 2/2/1 3/3/1 5/5/1 4/4/1\n" // a pentagon: three triangles
+    "usemtl mirror\n"
+    "f -4/-4/-1 -3/-3/-1 -1/-1/-1\n"); // negative indices: vertices 2, 3, 5
+  const ObjSceneRead read = ReadObjScene(path);
+  const TriangleScene& scene = read.Scene;
+  EXPECT_EQ(read.ObjVertices, 5u);
+  EXPECT_EQ(read.ObjFaces, 2u);
+  ASSERT_EQ(scene.TriangleCount(), 4u);
+  ASSERT_EQ(scene.Materials.size(), 2u);
+  EXPECT_EQ(scene.Materials[0].Name, "lamp");
+  EXPECT_EQ(scene.Materials[0].Diffuse, glm::vec3(0.1f, 0.2f, 0.3f));
+  EXPECT_EQ(scene.Materials[0].Emission, glm::vec3(5.0f, 4.0f, 3.0f));
+  EXPECT_EQ(scene.Materials[1].Diffuse, glm::vec3(0.0f)); // "Kd 0" is grey 0
+  EXPECT_EQ(scene.Materials[1].Specular, glm::vec3(0.9f));
+  EXPECT_EQ(scene.Materials[1].Ambient, glm::vec3(0.1f));
+  EXPECT_EQ(scene.Materials[1].Shininess, 200.0f);
+  EXPECT_EQ(read.TextureMaps[1].at("map_Kd"), "textures/wood.png");
+  EXPECT_EQ(read.TextureMaps[1].at("map_Ks"), "shiny.png");
+  EXPECT_TRUE(read.TextureMaps[0].empty());
+  EXPECT_EQ(scene.MaterialIds, (std::vector<std::uint32_t>{ 0, 0, 0, 1 }));
+  // The continued line is vertex 5; the fan starts at the first corner.
+  EXPECT_EQ(scene.Vertex(1, 2), glm::vec3(0.5f, 1.5f, 0.0f));
+  EXPECT_EQ(scene.Vertex(3, 0), glm::vec3(1.0f, 0.0f, 0.0f));
+  EXPECT_EQ(scene.Vertex(3, 1), glm::vec3(1.0f, 1.0f, 0.0f));
+  EXPECT_EQ(scene.Vertex(3, 2), glm::vec3(0.5f, 1.5f, 0.0f));
+  // Per-vertex attributes, normals normalised.
+  ASSERT_EQ(scene.Normals.size(), scene.Positions.size());
+  ASSERT_EQ(scene.TextureCoordinates.size(), scene.Positions.size());
+  EXPECT_EQ(scene.Normals[0], glm::vec3(0.0f, 0.0f, 1.0f));
+  EXPECT_EQ(scene.TextureCoordinates[scene.Triangles[1][2]], glm::vec2(0.5f, 1.0f));
+  EXPECT_EQ(read.NonManifoldEdges, 0u);
+  EXPECT_EQ(read.DegenerateTriangles, 0u);
+  EXPECT_TRUE(read.Warnings.empty()) << read.Warnings.front();
+}
+
+TEST(ObjScene, ErrorsNameFileAndLine)
+{
+  std::string vertices;
+  for (int v = 0; v < 31; ++v)
+  {
+    vertices += "v " + std::to_string(v) + " " + std::to_string(v * v) + " 1\n";
+  }
+  // Line 12 of a file whose vertex 40 does not exist (31 vertices).
+  std::string text;
+  for (int v = 0; v < 11; ++v)
+  {
+    text += "v " + std::to_string(v) + " " + std::to_string(v * v) + " 1\n";
+  }
+  text += "f 1 2 40\n";
+  for (int v = 11; v < 31; ++v)
+  {
+    text += "v " + std::to_string(v) + " 0 1\n";
+  }
+  std::string path = WriteText("scene.obj", text);
+  EXPECT_EQ(ReadError(path), path + ":12: face refers to vertex 40 of 11");
+
+  const auto errorOf = [&](const std::string& body) {
+    return ReadError(WriteText("bad.obj", vertices + body));
+  };
+  const std::string bad = TempPath("bad.obj");
+  EXPECT_EQ(errorOf("f 1 2 40\n"), bad + ":32: face refers to vertex 40 of 31");
+  EXPECT_EQ(errorOf("f 1 2 0\n"), bad + ":32: face refers to vertex 0 of 31");
+  EXPECT_EQ(errorOf("f 1 2 -32\n"), bad + ":32: face refers to vertex -32 of 31");
+  EXPECT_EQ(errorOf("f 1 2\n"), bad + ":32: a face needs at least 3 vertices, got 2");
+  EXPECT_EQ(errorOf("f 1 2 x\n"), bad + ":32: cannot read 'x' as a vertex index");
+  EXPECT_EQ(errorOf("f 1/5 2/5 3/5\n"), bad + ":32: face refers to texture coordinate 5 of 0");
+  EXPECT_EQ(errorOf("f 1//2 2//2 3//2\n"), bad + ":32: face refers to normal 2 of 0");
+  EXPECT_EQ(errorOf("v 1 2\n"), bad + ":32: 'v' needs 3 numbers, got 2");
+  EXPECT_EQ(errorOf("v 1 2 zz\n"), bad + ":32: cannot read 'zz' as a number");
+  EXPECT_EQ(errorOf("v 1 nan 3\n"), bad + ":32: 'nan' is not a finite number");
+  EXPECT_EQ(errorOf("v 1 1e39 3\n"), bad + ":32: cannot read '1e39' as a number");
+  EXPECT_EQ(errorOf("usemtl\n"), bad + ":32: usemtl needs a material name");
+  EXPECT_EQ(errorOf(""), bad + ": no faces");
+  EXPECT_EQ(ReadError(TempPath("does-not-exist.obj")),
+    TempPath("does-not-exist.obj") + ": cannot open the file");
+  // Not an OBJ at all: binary data, or text without any OBJ statement.
+  EXPECT_EQ(ReadError(WriteText("binary.obj", std::string("v 1 2 3\n\x89PNG\0\0\0", 15))),
+    TempPath("binary.obj") + ":2: binary data: this is not a text Wavefront file");
+  std::string prose;
+  for (int k = 0; k < 30; ++k)
+  {
+    prose += "Lorem ipsum dolor sit amet\n";
+  }
+  EXPECT_EQ(ReadError(WriteText("prose.obj", prose)),
+    TempPath("prose.obj") + ":21: no Wavefront OBJ statement in the first 20 lines: this is not an "
+                            "OBJ file");
+  // MTL errors name the MTL file and its line.
+  WriteText("bad.mtl", "newmtl a\nKd 0.5 0.5 0.5\nKe 1 x 1\n");
+  EXPECT_EQ(errorOf("mtllib bad.mtl\nf 1 2 3\n"), TempPath("bad.mtl") + ":3: cannot read 'x' as a number");
+  WriteText("bad2.mtl", "Kd 0.5 0.5 0.5\n");
+  EXPECT_EQ(errorOf("mtllib bad2.mtl\nf 1 2 3\n"), TempPath("bad2.mtl") + ":1: 'Kd' before any newmtl");
+  // A material with a negative colour is refused by the scene check.
+  WriteText("negative.mtl", "newmtl a\nKd -0.5 0.5 0.5\n");
+  EXPECT_EQ(errorOf("mtllib negative.mtl\nusemtl a\nf 1 2 3\n"),
+    bad + ": material 'a' has a negative value");
+}
+
+TEST(ObjScene, MissingMtlGivesGreyAndAWarning)
+{
+  const std::string path = WriteText("missing.obj",
+    "mtllib nowhere.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl lamp\nf 1 2 3\n");
+  const ObjSceneRead read = ReadObjScene(path);
+  ASSERT_EQ(read.Scene.Materials.size(), 1u);
+  EXPECT_EQ(read.Scene.Materials[0].Diffuse, glm::vec3(0.5f));
+  EXPECT_EQ(read.Scene.Materials[0].Name, "lamp");
+  ASSERT_GE(read.Warnings.size(), 2u);
+  EXPECT_NE(read.Warnings[0].find(path + ":1: mtllib 'nowhere.mtl' not found"), std::string::npos);
+  EXPECT_NE(read.Warnings[1].find(path + ":5: material 'lamp' is not in any MTL file"),
+    std::string::npos);
+  // Faces before any usemtl get the default grey too, without a warning of their own.
+  const ObjSceneRead plain =
+    ReadObjScene(WriteText("plain.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"));
+  ASSERT_EQ(plain.Scene.Materials.size(), 1u);
+  EXPECT_EQ(plain.Scene.Materials[0].Name, "default-grey");
+}
+
+TEST(ObjScene, NoEmitter)
+{
+  const std::string path = WriteText("dark.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  ObjReadOptions strict;
+  strict.RequireEmitter = true;
+  EXPECT_EQ(ReadError(path, strict),
+    path + ": the scene has no emitter (no material with emission Ke > 0)");
+  const ObjSceneRead read = ReadObjScene(path);
+  ASSERT_FALSE(read.Warnings.empty());
+  EXPECT_NE(read.Warnings.back().find("no emitter"), std::string::npos);
+  // With an emitter, the strict read passes.
+  WriteText("lamp.mtl", LampMtl);
+  const std::string lit =
+    WriteText("lit.obj", "mtllib lamp.mtl\nusemtl lamp\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  EXPECT_EQ(ReadError(lit, strict), "");
+}
+
+TEST(ObjScene, DegenerateAndNonManifoldTriangles)
+{
+  // Three triangles on one edge (1-2), one zero-area triangle (collinear), one repeated vertex.
+  const std::string path = WriteText("fins.obj",
+    "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 -1 0\nv 0 0 1\nv 2 0 0\n"
+    "f 1 2 3\nf 2 1 4\nf 1 2 5\nf 1 2 6\nf 3 3 5\n");
+  const ObjSceneRead read = ReadObjScene(path);
+  EXPECT_EQ(read.DegenerateTriangles, 2u);
+  EXPECT_EQ(read.Scene.TriangleCount(), 3u); // removed
+  EXPECT_EQ(read.NonManifoldEdges, 1u);      // edge 1-2 is used four times
+  bool warnedNonManifold = false, warnedDegenerate = false;
+  for (const std::string& w : read.Warnings)
+  {
+    warnedNonManifold = warnedNonManifold || w.find("1 non-manifold edges") != std::string::npos;
+    warnedDegenerate = warnedDegenerate || w.find("2 degenerate") != std::string::npos;
+  }
+  EXPECT_TRUE(warnedNonManifold);
+  EXPECT_TRUE(warnedDegenerate);
+  ObjReadOptions keep;
+  keep.RemoveDegenerateTriangles = false;
+  EXPECT_EQ(ReadObjScene(path, keep).Scene.TriangleCount(), 5u);
+  // Only degenerate triangles: an error.
+  EXPECT_EQ(ReadError(WriteText("flat.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n")),
+    TempPath("flat.obj") + ": every triangle of the scene is degenerate (zero area)");
+  // A closed manifold (tetrahedron) has none.
+  EXPECT_EQ(mesolight::vlf::CountNonManifoldEdges(
+              { { 0, 1, 2 }, { 0, 3, 1 }, { 1, 3, 2 }, { 2, 3, 0 } }),
+    0u);
+}
+
+void ExpectSameScene(const TriangleScene& a, const TriangleScene& b)
+{
+  ASSERT_EQ(a.Positions.size(), b.Positions.size());
+  ASSERT_EQ(a.Triangles, b.Triangles);
+  ASSERT_EQ(a.MaterialIds, b.MaterialIds);
+  for (std::size_t v = 0; v < a.Positions.size(); ++v)
+  {
+    ASSERT_EQ(a.Positions[v], b.Positions[v]) << "vertex " << v; // bit-exact: 9 digits
+  }
+  ASSERT_EQ(a.Materials.size(), b.Materials.size());
+  for (std::size_t m = 0; m < a.Materials.size(); ++m)
+  {
+    EXPECT_EQ(a.Materials[m].Name, b.Materials[m].Name);
+    EXPECT_EQ(a.Materials[m].Diffuse, b.Materials[m].Diffuse);
+    EXPECT_EQ(a.Materials[m].Specular, b.Materials[m].Specular);
+    EXPECT_EQ(a.Materials[m].Emission, b.Materials[m].Emission);
+  }
+}
+
+TEST(ObjScene, CornellBoxRoundTripAndNoOverwrite)
+{
+  const TriangleScene box = mesolight::MakeCornellBox();
+  const std::string path = TempPath("cornell-roundtrip.obj");
+  std::remove(path.c_str());
+  std::remove(TempPath("cornell-roundtrip.mtl").c_str());
+  mesolight::vlf::WriteObjScene(box, path, false, "The Cornell box");
+  ObjReadOptions strict;
+  strict.RequireEmitter = true;
+  const ObjSceneRead read = ReadObjScene(path, strict);
+  EXPECT_TRUE(read.Warnings.empty());
+  ExpectSameScene(box, read.Scene);
+  // A second write refuses and leaves the file alone.
+  std::ifstream before(path);
+  const std::string original((std::istreambuf_iterator<char>(before)), {});
+  EXPECT_THROW(mesolight::vlf::WriteObjScene(TriangleScene(box), path), ObjSceneError);
+  std::ifstream after(path);
+  EXPECT_EQ(original, std::string((std::istreambuf_iterator<char>(after)), {}));
+  EXPECT_NO_THROW(mesolight::vlf::WriteObjScene(box, path, true));
+  // Writing into a folder that does not exist fails cleanly.
+  EXPECT_THROW(mesolight::vlf::WriteObjScene(box, TempPath("no/such/dir/box.obj")), ObjSceneError);
+}
+
+// The committed example data (examples/data/cornell-box.obj/.mtl) is the built-in box.
+TEST(ObjScene, CommittedCornellBoxMatchesBuiltIn)
+{
+  ObjReadOptions strict;
+  strict.RequireEmitter = true;
+  const ObjSceneRead read =
+    ReadObjScene(std::string(MESOLIGHT_SOURCE_DIR) + "/examples/data/cornell-box.obj", strict);
+  EXPECT_TRUE(read.Warnings.empty());
+  ExpectSameScene(mesolight::MakeCornellBox(), read.Scene);
+}
+
+} // namespace

@@ -1,0 +1,147 @@
+// Snapshots (seed 002 §2.4.2.1): exact round trip, resuming gives the same field as running
+// straight through, atomic replacement, and clear errors (never a crash) for foreign, truncated
+// and corrupt files.
+#include "Propagation.h"
+#include "Snapshot.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <fstream>
+#include <iterator>
+#include <string>
+#include <vector>
+
+namespace
+{
+using namespace mesolight;
+using namespace mesolight::vlf;
+
+std::string TempPath(const std::string& name)
+{
+  return std::string(MESOLIGHT_TEST_TEMP_DIR) + "/" + name;
+}
+
+std::unique_ptr<LightField> SmallCornell(int iterations)
+{
+  LightFieldSettings settings;
+  settings.Directions = 33;
+  settings.RaysPerSide = 16;
+  settings.TilesPerSide = 4;
+  std::unique_ptr<LightField> field = LightField::Build(MakeCornellBox(), settings);
+  Propagate(*field, iterations);
+  return field;
+}
+
+std::vector<char> ReadBytes(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  return std::vector<char>(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+void WriteBytes(const std::string& path, const std::vector<char>& bytes)
+{
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+}
+
+std::string ReadError(const std::string& path)
+{
+  try
+  {
+    ReadSnapshot(path);
+  }
+  catch (const SnapshotError& e)
+  {
+    return e.what();
+  }
+  return "";
+}
+
+void ExpectSameField(const LightField& a, const LightField& b)
+{
+  ASSERT_EQ(a.IterationsDone, b.IterationsDone);
+  ASSERT_EQ(a.SubfieldCount(), b.SubfieldCount());
+  EXPECT_EQ(a.TotalDiffuse, b.TotalDiffuse);
+  EXPECT_EQ(a.UnshotDiffuse, b.UnshotDiffuse);
+  EXPECT_EQ(a.Capacity, b.Capacity);
+  EXPECT_EQ(a.NormalizationScale(), b.NormalizationScale());
+  EXPECT_EQ(a.Scene().Positions, b.Scene().Positions);
+  for (std::size_t k = 0; k < a.SubfieldCount(); ++k)
+  {
+    EXPECT_EQ(a.GetSubfield(k).Depth, b.GetSubfield(k).Depth);
+    EXPECT_EQ(a.GetSubfield(k).Radiance, b.GetSubfield(k).Radiance);
+  }
+}
+
+TEST(VLFSnapshot, RoundTripsExactlyAndResumes)
+{
+  const std::string path = TempPath("roundtrip.vlf");
+  std::remove(path.c_str());
+  const std::unique_ptr<LightField> two = SmallCornell(2);
+  WriteSnapshot(*two, path);
+  EXPECT_TRUE(IsSnapshotFile(path));
+  EXPECT_FALSE(FileExists(path + ".tmp-" + std::to_string(static_cast<long>(::getpid()))));
+  std::unique_ptr<LightField> loaded = ReadSnapshot(path);
+  ExpectSameField(*two, *loaded);
+  ASSERT_EQ(loaded->EnergyLog.size(), 2u);
+  EXPECT_EQ(loaded->EnergyLog[1].Shot, two->EnergyLog[1].Shot);
+
+  // Resume: two iterations, a snapshot, one more == three straight through.
+  Propagate(*loaded, 3);
+  const std::unique_ptr<LightField> three = SmallCornell(3);
+  ExpectSameField(*three, *loaded);
+}
+
+TEST(VLFSnapshot, ForeignTruncatedAndCorruptFilesGiveClearErrors)
+{
+  const std::string path = TempPath("damaged.vlf");
+  WriteSnapshot(*SmallCornell(1), path);
+  const std::vector<char> good = ReadBytes(path);
+  ASSERT_GT(good.size(), 1000u);
+
+  EXPECT_NE(ReadError(TempPath("does-not-exist.vlf")).find("cannot open"), std::string::npos);
+
+  WriteBytes(path, std::vector<char>{ 'h', 'e', 'l', 'l', 'o' });
+  EXPECT_NE(ReadError(path).find("not a Mesolight light field snapshot"), std::string::npos);
+  EXPECT_FALSE(IsSnapshotFile(path));
+
+  // Cut at several places: the header, the settings, the middle, the last byte.
+  for (const std::size_t length : { std::size_t(20), std::size_t(60), good.size() / 2, good.size() - 1 })
+  {
+    WriteBytes(path, std::vector<char>(good.begin(), good.begin() + static_cast<std::ptrdiff_t>(length)));
+    EXPECT_NE(ReadError(path).find("truncated"), std::string::npos) << "cut at " << length << ": " << ReadError(path);
+  }
+
+  // Flip one byte at several places: header, counts, data.
+  for (const std::size_t at : { std::size_t(10), std::size_t(30), std::size_t(60), std::size_t(100),
+         good.size() / 3, good.size() - 5 })
+  {
+    std::vector<char> bad = good;
+    bad[at] = static_cast<char>(bad[at] ^ 0x5a);
+    WriteBytes(path, bad);
+    const std::string message = ReadError(path);
+    EXPECT_TRUE(message.find("corrupt") != std::string::npos ||
+      message.find("version") != std::string::npos || message.find("byte order") != std::string::npos ||
+      message.find("truncated") != std::string::npos)
+      << "flipped byte " << at << ": '" << message << "'";
+  }
+
+  // Extra bytes at the end.
+  std::vector<char> longer = good;
+  longer.push_back('x');
+  WriteBytes(path, longer);
+  EXPECT_NE(ReadError(path).find("corrupt"), std::string::npos);
+}
+
+TEST(VLFSnapshot, AFailedWriteLeavesThePreviousFile)
+{
+  const std::string path = TempPath("kept.vlf");
+  WriteSnapshot(*SmallCornell(1), path);
+  const std::vector<char> before = ReadBytes(path);
+  // A directory cannot be renamed over by a file: the write fails, the old file stays intact.
+  EXPECT_THROW(WriteSnapshot(*SmallCornell(1), TempPath("no-such-dir/field.vlf")), SnapshotError);
+  EXPECT_EQ(ReadBytes(path), before);
+}
+
+} // namespace

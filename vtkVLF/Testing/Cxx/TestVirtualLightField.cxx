@@ -1,0 +1,167 @@
+// vtkVirtualLightField: the Cornell box through the filter gives per-cell and per-point
+// "Radiance" (the light at its emission plus what it reflects, the walls lit), progress and
+// abort, a clear error over the memory budget, snapshots written / resumed / never over a
+// foreign file, the irradiance query, PrintSelf.
+#include "vtkVirtualLightField.h"
+
+#include "LightField.h"
+#include "vtkCornellBoxSource.h"
+
+#include <vtkCellData.h>
+#include <vtkCommand.h>
+#include <vtkDataArray.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace
+{
+class Messages : public vtkCommand
+{
+public:
+  static Messages* New() { return new Messages; }
+  void Execute(vtkObject*, unsigned long event, void* data) override
+  {
+    if (event == vtkCommand::ProgressEvent)
+    {
+      ++this->ProgressEvents;
+      if (this->AbortAt >= 0 && this->ProgressEvents >= this->AbortAt && this->Filter)
+      {
+        this->Filter->SetAbortExecute(1);
+      }
+      return;
+    }
+    this->Text += data ? static_cast<const char*>(data) : "";
+  }
+  std::string Text;
+  int ProgressEvents = 0;
+  int AbortAt = -1;
+  vtkAlgorithm* Filter = nullptr;
+};
+
+std::string TempPath(const std::string& name)
+{
+  return std::string(MESOLIGHT_TEST_TEMP_DIR) + "/" + name;
+}
+
+void SmallSettings(vtkVirtualLightField* filter)
+{
+  filter->SetDirections(33);
+  filter->SetRaysPerSide(16);
+  filter->SetIterations(2);
+}
+
+TEST(VLFVirtualLightField, CornellBoxRadiance)
+{
+  vtkNew<vtkCornellBoxSource> box;
+  vtkNew<vtkVirtualLightField> filter;
+  filter->SetInputConnection(box->GetOutputPort());
+  SmallSettings(filter);
+  vtkNew<Messages> messages;
+  filter->AddObserver(vtkCommand::ProgressEvent, messages);
+  filter->Update();
+  vtkPolyData* out = filter->GetOutput();
+  ASSERT_NE(filter->GetLightField(), nullptr);
+  EXPECT_EQ(filter->GetLightField()->IterationsDone, 2);
+  EXPECT_GT(messages->ProgressEvents, 2);
+  vtkDataArray* cells = out->GetCellData()->GetArray("Radiance");
+  vtkDataArray* points = out->GetPointData()->GetArray("Radiance");
+  ASSERT_NE(cells, nullptr);
+  ASSERT_NE(points, nullptr);
+  ASSERT_EQ(cells->GetNumberOfTuples(), out->GetNumberOfCells());
+  vtkDataArray* emission = out->GetCellData()->GetArray("Emission");
+  ASSERT_NE(emission, nullptr);
+  int lit = 0;
+  for (vtkIdType c = 0; c < out->GetNumberOfCells(); ++c)
+  {
+    const double e = emission->GetComponent(c, 0);
+    const double r = cells->GetComponent(c, 0);
+    if (e > 0.0)
+    {
+      EXPECT_GE(r, e); // the light: its emission and what it reflects
+    }
+    else
+    {
+      lit += r > 0.0 ? 1 : 0;
+    }
+  }
+  EXPECT_EQ(lit, out->GetNumberOfCells() - 2); // every wall and block face receives light
+
+  // Irradiance under the light on the floor's centre, facing up: positive and finite.
+  const double p[3] = { 278.0, 1.0, 279.0 }, n[3] = { 0.0, 1.0, 0.0 };
+  double e[3];
+  ASSERT_TRUE(filter->ComputeIrradiance(p, n, e));
+  EXPECT_GT(e[0], 0.0);
+
+  std::ostringstream printed;
+  filter->Print(printed);
+  EXPECT_NE(printed.str().find("Directions: 33"), std::string::npos);
+  EXPECT_NE(printed.str().find("2 iterations done"), std::string::npos);
+}
+
+TEST(VLFVirtualLightField, BudgetAbortAndSnapshots)
+{
+  vtkNew<vtkCornellBoxSource> box;
+  vtkNew<vtkVirtualLightField> filter;
+  filter->SetInputConnection(box->GetOutputPort());
+  SmallSettings(filter);
+  vtkNew<Messages> messages;
+  filter->AddObserver(vtkCommand::ErrorEvent, messages);
+  filter->AddObserver(vtkCommand::WarningEvent, messages);
+
+  filter->SetMemoryBudget(4096);
+  filter->Update();
+  EXPECT_NE(messages->Text.find("memory budget"), std::string::npos) << messages->Text;
+  EXPECT_EQ(filter->GetLightField(), nullptr);
+  filter->SetMemoryBudget(vtkTypeInt64(1) << 30);
+
+  // A file the user made is never replaced.
+  const std::string foreign = TempPath("user-notes.txt");
+  {
+    std::ofstream out(foreign);
+    out << "precious";
+  }
+  messages->Text.clear();
+  filter->SetSnapshotFileName(foreign.c_str());
+  filter->Update();
+  EXPECT_NE(messages->Text.find("not a light field snapshot"), std::string::npos) << messages->Text;
+  std::ifstream in(foreign);
+  std::string content;
+  in >> content;
+  EXPECT_EQ(content, "precious");
+
+  // Snapshots after each iteration, then resume to more iterations.
+  const std::string snapshot = TempPath("filter.vlf");
+  std::remove(snapshot.c_str());
+  filter->SetSnapshotFileName(snapshot.c_str());
+  filter->Update();
+  ASSERT_NE(filter->GetLightField(), nullptr);
+  filter->SetResumeFromSnapshot(true);
+  filter->SetIterations(3);
+  filter->Update();
+  ASSERT_NE(filter->GetLightField(), nullptr);
+  EXPECT_EQ(filter->GetLightField()->IterationsDone, 3);
+  EXPECT_EQ(filter->GetLightField()->EnergyLog.size(), 3u);
+
+  // Abort from a progress observer.
+  vtkNew<vtkVirtualLightField> aborted;
+  aborted->SetInputConnection(box->GetOutputPort());
+  SmallSettings(aborted);
+  vtkNew<Messages> stopper;
+  stopper->AbortAt = 2;
+  stopper->Filter = aborted;
+  aborted->AddObserver(vtkCommand::ProgressEvent, stopper);
+  aborted->AddObserver(vtkCommand::WarningEvent, stopper);
+  aborted->Update();
+  EXPECT_EQ(aborted->GetLightField(), nullptr);
+  EXPECT_NE(stopper->Text.find("aborted"), std::string::npos);
+}
+
+} // namespace

@@ -1,0 +1,808 @@
+#include "LightField.h"
+
+#include "EmbreeScene.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <cstdio>
+#include <exception>
+#include <map>
+#include <mutex>
+#include <sstream>
+#include <thread>
+#include <tuple>
+
+namespace mesolight
+{
+namespace vlf
+{
+
+namespace
+{
+// Lines start this far behind the centre: the scene lies within the unit sphere.
+constexpr float LineStart = 1.01f;
+// After a hit the next query starts a few float steps beyond it: Embree computes a triangle's
+// distance independently of TNear, so the same triangle is never found again, while a crossing
+// right behind it (a line clipping a corner of a closed box) still is; a larger step would
+// lose such pairs and let light escape from closed scenes.
+float NextQueryStart(float t)
+{
+  return t + std::max(1e-7f, 4e-7f * t);
+}
+constexpr float Pi = 3.14159265358979f;
+
+std::size_t HardwareThreads()
+{
+  const unsigned n = std::thread::hardware_concurrency();
+  return n == 0 ? 2 : n;
+}
+
+// Orthonormal frame around a unit vector (Duff et al., "Building an orthonormal basis,
+// revisited", JCGT 2017); d.z >= 0 for the hemisphere directions.
+void Frame(const glm::vec3& d, glm::vec3& u, glm::vec3& v)
+{
+  const float sign = std::copysign(1.0f, d.z);
+  const float a = -1.0f / (sign + d.z);
+  const float b = d.x * d.y * a;
+  u = glm::vec3(1.0f + sign * d.x * d.x * a, sign * b, -sign * d.x);
+  v = glm::vec3(b, sign + d.y * d.y * a, -d.y);
+}
+
+// Subfield k's frame: Frame() turned about d by a golden-ratio angle. The turn keeps lines off
+// systematic alignments with the scene (an axis-aligned box's face diagonals lie in planes
+// that symmetric directions and an unturned grid hit exactly, where Embree may miss both
+// triangles of the shared edge); the [-1, 1]^2 grid covers the unit disk at any angle.
+void SubfieldFrame(std::size_t k, const glm::vec3& d, glm::vec3& u, glm::vec3& v)
+{
+  glm::vec3 u0, v0;
+  Frame(d, u0, v0);
+  const double turns = 0.1 + static_cast<double>(k) * 0.6180339887498949;
+  const float angle = static_cast<float>(2.0 * 3.14159265358979323846 * (turns - std::floor(turns)));
+  u = std::cos(angle) * u0 + std::sin(angle) * v0;
+  v = -std::sin(angle) * u0 + std::cos(angle) * v0;
+}
+
+std::uint64_t MapCellBytes(bool specular)
+{
+  return sizeof(float) + sizeof(glm::vec3) + (specular ? sizeof(glm::vec3) : 0);
+}
+
+// Upper bound on the (tile, surface) pairs of every subfield: a surface can only occupy the
+// tiles holding cell centres inside the bounding boxes of its projected triangles.
+std::uint64_t CountTileSurfacePairs(const TriangleScene& scene, const std::vector<Surface>& surfaces,
+  const DirectionSet& directions, const LightFieldSettings& settings)
+{
+  const int n = settings.RaysPerSide;
+  const int m = settings.TilesPerSide;
+  const int ts = settings.TileSide();
+  const float h = settings.CellSize();
+  std::uint64_t pairs = 0;
+  std::vector<std::uint8_t> marked(static_cast<std::size_t>(m) * m);
+  for (std::size_t k = 0; k < directions.Size(); ++k)
+  {
+    glm::vec3 u, v;
+    SubfieldFrame(k, directions.Direction(k), u, v);
+    for (const Surface& surface : surfaces)
+    {
+      std::fill(marked.begin(), marked.end(), 0);
+      for (std::uint32_t t : surface.Triangles)
+      {
+        float lo[2] = { 1e30f, 1e30f }, hi[2] = { -1e30f, -1e30f };
+        for (int c = 0; c < 3; ++c)
+        {
+          const glm::vec3 p = scene.Vertex(t, c);
+          const float cell[2] = { (glm::dot(p, u) + 1.0f) / h - 0.5f, (glm::dot(p, v) + 1.0f) / h - 0.5f };
+          for (int a = 0; a < 2; ++a)
+          {
+            lo[a] = std::min(lo[a], cell[a]);
+            hi[a] = std::max(hi[a], cell[a]);
+          }
+        }
+        const int i0 = std::max(0, static_cast<int>(std::ceil(lo[0] - 1e-3f)));
+        const int i1 = std::min(n - 1, static_cast<int>(std::floor(hi[0] + 1e-3f)));
+        const int j0 = std::max(0, static_cast<int>(std::ceil(lo[1] - 1e-3f)));
+        const int j1 = std::min(n - 1, static_cast<int>(std::floor(hi[1] + 1e-3f)));
+        for (int tj = j0 / ts; i0 <= i1 && tj <= j1 / ts && j0 <= j1; ++tj)
+        {
+          for (int ti = i0 / ts; ti <= i1 / ts; ++ti)
+          {
+            marked[static_cast<std::size_t>(tj) * m + ti] = 1;
+          }
+        }
+      }
+      pairs += static_cast<std::uint64_t>(std::count(marked.begin(), marked.end(), 1));
+    }
+  }
+  return pairs;
+}
+
+MemoryEstimate EstimateFor(const TriangleScene& scene, const std::vector<Surface>& surfaces,
+  const DirectionSet& directions, const LightFieldSettings& settings, bool specular)
+{
+  MemoryEstimate e;
+  e.Surfaces = surfaces.size();
+  for (const Surface& s : surfaces)
+  {
+    e.Texels += s.TexelCount();
+  }
+  const std::uint64_t pairs = CountTileSurfacePairs(scene, surfaces, directions, settings);
+  const std::uint64_t ts = static_cast<std::uint64_t>(settings.TileSide());
+  const std::uint64_t tiles = static_cast<std::uint64_t>(settings.TilesPerSide) * settings.TilesPerSide;
+  e.MapCells = pairs * ts * ts;
+  e.MapBytes = e.MapCells * MapCellBytes(specular) + pairs * sizeof(TileEntry) +
+    directions.Size() * ((tiles + 1) * sizeof(std::uint32_t) + sizeof(Subfield));
+  const std::uint64_t blocks = DefaultBlockCount(directions.Size());
+  // total + unshot + capacity, and one receive buffer per worker block during propagation.
+  e.TextureBytes = e.Texels * (2 * sizeof(glm::vec3) + sizeof(float)) +
+    blocks * e.Texels * sizeof(glm::vec3);
+  e.TotalBytes = e.MapBytes + e.TextureBytes;
+  return e;
+}
+
+std::string Join(const std::vector<std::string>& items)
+{
+  std::string out;
+  for (const std::string& item : items)
+  {
+    out += (out.empty() ? "" : "; ") + item;
+  }
+  return out;
+}
+} // namespace
+
+void ThreadParallelFor(std::size_t count, const std::function<void(std::size_t, std::size_t)>& body)
+{
+  const std::size_t workers = std::min(count, HardwareThreads());
+  if (workers <= 1)
+  {
+    if (count > 0)
+    {
+      body(0, count);
+    }
+    return;
+  }
+  std::atomic<std::size_t> next{ 0 };
+  std::exception_ptr failure;
+  std::mutex failureMutex;
+  auto run = [&]() {
+    try
+    {
+      for (std::size_t i = next++; i < count; i = next++)
+      {
+        body(i, i + 1);
+      }
+    }
+    catch (...)
+    {
+      std::lock_guard<std::mutex> lock(failureMutex);
+      if (!failure)
+      {
+        failure = std::current_exception();
+      }
+      next = count;
+    }
+  };
+  std::vector<std::thread> threads;
+  for (std::size_t t = 1; t < workers; ++t)
+  {
+    threads.emplace_back(run);
+  }
+  run();
+  for (std::thread& t : threads)
+  {
+    t.join();
+  }
+  if (failure)
+  {
+    std::rethrow_exception(failure);
+  }
+}
+
+std::size_t DefaultBlockCount(std::size_t count)
+{
+  return std::max<std::size_t>(1, std::min(count, 2 * HardwareThreads()));
+}
+
+void RunInBlocks(std::size_t count, std::size_t blocks, const ParallelFor& parallelFor,
+  const ProgressCallbacks& progress, double begin, double end,
+  const std::function<void(std::size_t block, std::size_t item)>& work)
+{
+  blocks = std::max<std::size_t>(1, blocks);
+  const std::size_t perBlock = 4; // items per block per round
+  const std::size_t round = blocks * perBlock;
+  const ParallelFor& forEach = parallelFor ? parallelFor : ParallelFor(ThreadParallelFor);
+  for (std::size_t start = 0; start < count; start += round)
+  {
+    if (progress.AbortRequested && progress.AbortRequested())
+    {
+      throw AbortedError();
+    }
+    forEach(blocks, [&](std::size_t b0, std::size_t b1) {
+      for (std::size_t b = b0; b < b1; ++b)
+      {
+        for (std::size_t q = 0; q < perBlock; ++q)
+        {
+          const std::size_t item = start + b * perBlock + q;
+          if (item < count)
+          {
+            work(b, item);
+          }
+        }
+      }
+    });
+    if (progress.Progress)
+    {
+      const double done = static_cast<double>(std::min(count, start + round)) / static_cast<double>(count);
+      progress.Progress(begin + (end - begin) * done);
+    }
+  }
+  if (progress.AbortRequested && progress.AbortRequested())
+  {
+    throw AbortedError();
+  }
+}
+
+std::string LightFieldSettings::Validate() const
+{
+  std::ostringstream e;
+  if (this->RaysPerSide < 1 || this->RaysPerSide > 4096)
+  {
+    e << "rays per side " << this->RaysPerSide << " is outside [1, 4096]";
+  }
+  else if (this->TilesPerSide < 1 || this->TilesPerSide > this->RaysPerSide)
+  {
+    e << "tiles per side " << this->TilesPerSide << " is outside [1, rays per side = "
+      << this->RaysPerSide << "]";
+  }
+  else if (this->RaysPerSide % this->TilesPerSide != 0)
+  {
+    e << "rays per side " << this->RaysPerSide << " is not a multiple of tiles per side "
+      << this->TilesPerSide;
+  }
+  else if (!(this->TexelSize >= 0.0f) || !std::isfinite(this->TexelSize) ||
+    (this->TexelSize > 0.0f && this->TexelSize < 1e-4f))
+  {
+    e << "texel size " << this->TexelSize << " is not 0 (= cell size) or in [1e-4, inf)";
+  }
+  else if (this->MemoryBudget == 0)
+  {
+    e << "memory budget is 0 bytes";
+  }
+  return e.str();
+}
+
+std::string FormatBytes(std::uint64_t bytes)
+{
+  const char* units[] = { "B", "KiB", "MiB", "GiB", "TiB" };
+  double value = static_cast<double>(bytes);
+  int unit = 0;
+  while (value >= 1024.0 && unit < 4)
+  {
+    value /= 1024.0;
+    ++unit;
+  }
+  char text[64];
+  std::snprintf(text, sizeof(text), unit == 0 ? "%.0f %s" : "%.2f %s", value, units[unit]);
+  return text;
+}
+
+std::string MemoryEstimate::Describe() const
+{
+  std::ostringstream out;
+  out << FormatBytes(this->TotalBytes) << " (radiance maps " << FormatBytes(this->MapBytes)
+      << " for at most " << this->MapCells << " cells, " << this->Surfaces << " surfaces with "
+      << this->Texels << " texels: " << FormatBytes(this->TextureBytes) << ")";
+  return out.str();
+}
+
+double LightField::IterationEnergy::ConservationError() const
+{
+  double worst = 0.0;
+  for (int c = 0; c < 3; ++c)
+  {
+    const double out = this->Escaped[c] + this->Absorbed[c] + this->BackFaces[c] +
+      this->SpecularLost[c] + this->Unshot[c];
+    if (this->Shot[c] > 0.0)
+    {
+      worst = std::max(worst, std::abs(this->Shot[c] - out) / this->Shot[c]);
+    }
+    else if (out > 0.0)
+    {
+      worst = std::max(worst, 1.0);
+    }
+  }
+  return worst;
+}
+
+glm::vec2 Surface::TexelCoordinates(const glm::vec3& x) const
+{
+  const glm::vec3 r = x - this->Origin;
+  return glm::vec2(glm::dot(r, this->AxisU) / this->TexelU - 0.5f,
+    glm::dot(r, this->AxisV) / this->TexelV - 0.5f);
+}
+
+glm::vec3 Surface::TexelCentre(int a, int b) const
+{
+  return this->Origin + (static_cast<float>(a) + 0.5f) * this->TexelU * this->AxisU +
+    (static_cast<float>(b) + 0.5f) * this->TexelV * this->AxisV;
+}
+
+std::vector<Surface> GroupSurfaces(
+  const TriangleScene& scene, float texelSize, std::vector<std::uint32_t>& triangleSurface)
+{
+  std::vector<Surface> surfaces;
+  triangleSurface.assign(scene.TriangleCount(), 0);
+  std::map<std::tuple<std::uint32_t, long, long, long, long>, std::uint32_t> byPlane;
+  const float quantum = 1e4f; // planes equal within 1e-4 share a surface
+  for (std::size_t t = 0; t < scene.TriangleCount(); ++t)
+  {
+    const glm::vec3 doubleArea = scene.FaceNormal(t);
+    const float length = glm::length(doubleArea);
+    if (!(length > 0.0f) || !std::isfinite(length))
+    {
+      triangleSurface[t] = NoSurface; // degenerate: Embree never reports hits on it
+      continue;
+    }
+    const glm::vec3 n = doubleArea / length;
+    const float offset = glm::dot(n, scene.Vertex(t, 0));
+    const auto key = std::make_tuple(scene.MaterialIds[t], std::lround(n.x * quantum),
+      std::lround(n.y * quantum), std::lround(n.z * quantum), std::lround(offset * quantum));
+    auto found = byPlane.find(key);
+    if (found == byPlane.end())
+    {
+      Surface s;
+      s.Material = scene.MaterialIds[t];
+      s.Normal = n;
+      s.Offset = offset;
+      // Texture axes along the first triangle's first edge: a fan-triangulated rectangle then
+      // gets a texture that fits it exactly.
+      const glm::vec3 edge = scene.Vertex(t, 1) - scene.Vertex(t, 0);
+      s.AxisU = glm::normalize(edge - glm::dot(edge, n) * n);
+      s.AxisV = glm::cross(n, s.AxisU);
+      s.Origin = scene.Vertex(t, 0);
+      found = byPlane.emplace(key, static_cast<std::uint32_t>(surfaces.size())).first;
+      surfaces.push_back(s);
+    }
+    Surface& s = surfaces[found->second];
+    s.Triangles.push_back(static_cast<std::uint32_t>(t));
+    s.Area += static_cast<double>(scene.Area(t));
+    triangleSurface[t] = found->second;
+  }
+  std::size_t texelOffset = 0;
+  for (Surface& s : surfaces)
+  {
+    float lo[2] = { 1e30f, 1e30f }, hi[2] = { -1e30f, -1e30f };
+    const glm::vec3 reference = s.Origin;
+    for (std::uint32_t t : s.Triangles)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        const glm::vec3 r = scene.Vertex(t, c) - reference;
+        const float st[2] = { glm::dot(r, s.AxisU), glm::dot(r, s.AxisV) };
+        for (int a = 0; a < 2; ++a)
+        {
+          lo[a] = std::min(lo[a], st[a]);
+          hi[a] = std::max(hi[a], st[a]);
+        }
+      }
+    }
+    const float extentU = std::max(hi[0] - lo[0], 1e-6f);
+    const float extentV = std::max(hi[1] - lo[1], 1e-6f);
+    s.TextureWidth = std::max(1, static_cast<int>(std::ceil(extentU / texelSize - 1e-3f)));
+    s.TextureHeight = std::max(1, static_cast<int>(std::ceil(extentV / texelSize - 1e-3f)));
+    s.TexelU = extentU / static_cast<float>(s.TextureWidth);
+    s.TexelV = extentV / static_cast<float>(s.TextureHeight);
+    // Origin on the plane at the rectangle's lower corner.
+    const glm::vec3 onPlane = reference - (glm::dot(s.Normal, reference) - s.Offset) * s.Normal;
+    s.Origin = onPlane + lo[0] * s.AxisU + lo[1] * s.AxisV;
+    s.TexelOffset = texelOffset;
+    texelOffset += s.TexelCount();
+  }
+  return surfaces;
+}
+
+MemoryEstimate EstimateMemory(const TriangleScene& scene, const LightFieldSettings& settings)
+{
+  const std::string problem = settings.Validate();
+  if (!problem.empty())
+  {
+    throw std::invalid_argument(problem);
+  }
+  if (scene.TriangleCount() == 0)
+  {
+    throw std::invalid_argument("the scene has no triangles");
+  }
+  TriangleScene unit = scene;
+  NormalizeToUnitSphere(unit);
+  const DirectionSet directions = DirectionSet::WithCount(settings.Directions);
+  std::vector<std::uint32_t> triangleSurface;
+  const float texel = settings.TexelSize > 0.0f ? settings.TexelSize : settings.CellSize();
+  const std::vector<Surface> surfaces = GroupSurfaces(unit, texel, triangleSurface);
+  bool specular = false;
+  for (const SceneMaterial& m : unit.Materials)
+  {
+    specular = specular || glm::length(m.Specular) > 0.0f;
+  }
+  return EstimateFor(unit, surfaces, directions, settings, specular);
+}
+
+void LightField::Setup(const TriangleScene& scene, const LightFieldSettings& settings, bool normalize)
+{
+  const std::string problem = settings.Validate();
+  if (!problem.empty())
+  {
+    throw std::invalid_argument(problem);
+  }
+  const SceneCheck check = CheckScene(scene, /*requireEmitter=*/true);
+  if (!check.Ok())
+  {
+    throw std::invalid_argument("the scene cannot be used: " + Join(check.Errors));
+  }
+  for (const SceneMaterial& m : scene.Materials)
+  {
+    const glm::vec3 reflect = m.Diffuse + m.Specular;
+    if (reflect.x > 1.0f || reflect.y > 1.0f || reflect.z > 1.0f || m.Diffuse.x < 0.0f ||
+      m.Diffuse.y < 0.0f || m.Diffuse.z < 0.0f || m.Specular.x < 0.0f || m.Specular.y < 0.0f ||
+      m.Specular.z < 0.0f)
+    {
+      throw std::invalid_argument("material '" + m.Name +
+        "' reflects more light than it receives or a negative amount (Kd + Ks must lie in [0, 1] "
+        "per channel)");
+    }
+    this->AnySpecular = this->AnySpecular || glm::length(m.Specular) > 0.0f;
+  }
+  this->Config = settings;
+  this->NormalizedScene = scene;
+  if (normalize)
+  {
+    glm::vec3 lower, upper;
+    SceneBounds(scene, lower, upper);
+    this->Centre = 0.5f * (lower + upper);
+    this->Scale = NormalizeToUnitSphere(this->NormalizedScene);
+  }
+  this->DirectionsPtr.reset(new DirectionSet(DirectionSet::WithCount(settings.Directions)));
+  const float texel = settings.TexelSize > 0.0f ? settings.TexelSize : settings.CellSize();
+  this->SurfaceList = GroupSurfaces(this->NormalizedScene, texel, this->TriangleSurface);
+  this->TexelTotal = 0;
+  for (const Surface& s : this->SurfaceList)
+  {
+    this->TexelTotal += s.TexelCount();
+  }
+  this->EstimateUsed = EstimateFor(
+    this->NormalizedScene, this->SurfaceList, *this->DirectionsPtr, settings, this->AnySpecular);
+  if (this->EstimateUsed.TotalBytes > settings.MemoryBudget)
+  {
+    std::ostringstream message;
+    message << "the light field would need up to " << this->EstimateUsed.Describe()
+            << " for " << settings.Directions << " directions x " << settings.RaysPerSide << "x"
+            << settings.RaysPerSide << " rays, above the memory budget of "
+            << FormatBytes(settings.MemoryBudget)
+            << "; use fewer directions or rays per side, or raise the budget";
+    throw MemoryBudgetError(message.str());
+  }
+  const std::size_t count = this->DirectionsPtr->Size();
+  this->Subfields.assign(count, Subfield());
+  const float uniform = 2.0f * Pi / static_cast<float>(count);
+  for (std::size_t k = 0; k < count; ++k)
+  {
+    Subfield& f = this->Subfields[k];
+    f.Direction = this->DirectionsPtr->Direction(k);
+    SubfieldFrame(k, f.Direction, f.AxisU, f.AxisV);
+    f.Weight = settings.UseSolidAngleWeights ? this->DirectionsPtr->SolidAngle(k) : uniform;
+  }
+}
+
+std::unique_ptr<LightField> LightField::CreateEmpty(
+  const TriangleScene& scene, const LightFieldSettings& settings)
+{
+  std::unique_ptr<LightField> field(new LightField());
+  field->Setup(scene, settings, /*normalize=*/true);
+  return field;
+}
+
+std::unique_ptr<LightField> LightField::Build(const TriangleScene& scene,
+  const LightFieldSettings& settings, const ParallelFor& parallelFor,
+  const ProgressCallbacks& progress)
+{
+  std::unique_ptr<LightField> field = CreateEmpty(scene, settings);
+  const EmbreeScene embree(field->NormalizedScene);
+  const std::size_t count = field->Subfields.size();
+  RunInBlocks(count, DefaultBlockCount(count), parallelFor, progress, 0.0, 0.8,
+    [&](std::size_t, std::size_t k) { field->TraceSubfield(k, embree); });
+
+  // Shooting capacity of each texel (Propagation.h): the flux a unit diffuse radiance there
+  // sends along all lines that leave it, sum over crossings of w_texel * cellArea * weight_k.
+  // It is the discrete counterpart of pi * texelArea (seed §3.6.3's total projected cell area).
+  const std::size_t texels = field->TexelTotal;
+  const std::size_t blocks = DefaultBlockCount(count);
+  std::vector<std::vector<double>> partial(blocks, std::vector<double>(texels, 0.0));
+  const float cellArea = settings.CellSize() * settings.CellSize();
+  const int n = settings.RaysPerSide;
+  RunInBlocks(count, blocks, parallelFor, progress, 0.8, 1.0, [&](std::size_t b, std::size_t k) {
+    std::vector<Crossing> crossings;
+    const Subfield& f = field->Subfields[k];
+    for (int j = 0; j < n; ++j)
+    {
+      for (int i = 0; i < n; ++i)
+      {
+        field->LineCrossings(k, i, j, crossings);
+        for (const Crossing& c : crossings)
+        {
+          if (field->Orientation(k, c.Surface) == 0)
+          {
+            continue;
+          }
+          const TexelWeights w =
+            field->WeightsAt(c.Surface, field->PointOnLine(k, i, j, c.Depth));
+          for (int q = 0; q < 4; ++q)
+          {
+            partial[b][w.Texel[q]] += static_cast<double>(w.Weight[q] * cellArea * f.Weight);
+          }
+        }
+      }
+    }
+  });
+  field->Capacity.assign(texels, 0.0f);
+  for (std::size_t t = 0; t < texels; ++t)
+  {
+    double sum = 0.0;
+    for (const std::vector<double>& p : partial)
+    {
+      sum += p[t];
+    }
+    field->Capacity[t] = static_cast<float>(sum);
+  }
+  // Emitters shoot first: before iteration 1 the unshot radiance is the emission.
+  field->TotalDiffuse.assign(texels, glm::vec3(0.0f));
+  for (std::size_t s = 0; s < field->SurfaceList.size(); ++s)
+  {
+    const Surface& surface = field->SurfaceList[s];
+    const glm::vec3 emission = field->NormalizedScene.Materials[surface.Material].Emission;
+    std::fill(field->TotalDiffuse.begin() + static_cast<std::ptrdiff_t>(surface.TexelOffset),
+      field->TotalDiffuse.begin() + static_cast<std::ptrdiff_t>(surface.TexelOffset + surface.TexelCount()),
+      emission);
+  }
+  field->UnshotDiffuse = field->TotalDiffuse;
+  return field;
+}
+
+void LightField::TraceSubfield(std::size_t k, const EmbreeScene& embree)
+{
+  Subfield& f = this->Subfields[k];
+  const int n = this->Config.RaysPerSide;
+  const int m = this->Config.TilesPerSide;
+  const int ts = this->Config.TileSide();
+  const float h = this->Config.CellSize();
+  struct Hit
+  {
+    std::uint32_t Tile, Surface, Local;
+    float Depth;
+  };
+  std::vector<Hit> hits;
+  alignas(64) SceneRay rays[16];
+  alignas(64) SceneHit results[16];
+  int cellOf[16];
+  std::uint32_t lastSurface[16];
+  for (int j = 0; j < n; ++j)
+  {
+    const float b = -1.0f + (static_cast<float>(j) + 0.5f) * h;
+    for (int i0 = 0; i0 < n; i0 += 16)
+    {
+      int count = 0;
+      for (int i = i0; i < std::min(n, i0 + 16); ++i)
+      {
+        const float a = -1.0f + (static_cast<float>(i) + 0.5f) * h;
+        if (a * a + b * b > 1.0001f)
+        {
+          continue; // the line misses the unit sphere
+        }
+        rays[count].Origin = a * f.AxisU + b * f.AxisV - LineStart * f.Direction;
+        rays[count].Direction = f.Direction;
+        rays[count].TNear = 0.0f;
+        rays[count].TFar = 2.0f * LineStart;
+        cellOf[count] = i;
+        lastSurface[count] = SceneHit::None;
+        ++count;
+      }
+      // Repeated nearest hits: every crossing along the line, in depth order.
+      while (count > 0)
+      {
+        embree.Intersect16(rays, results, count);
+        int alive = 0;
+        for (int r = 0; r < count; ++r)
+        {
+          if (!results[r].Hit())
+          {
+            continue;
+          }
+          const std::uint32_t s = this->TriangleSurface[results[r].Triangle];
+          if (s != NoSurface && s != lastSurface[r] && this->Orientation(k, s) != 0)
+          {
+            const int i = cellOf[r];
+            const std::uint32_t tile = static_cast<std::uint32_t>((j / ts) * m + i / ts);
+            const std::uint32_t local = static_cast<std::uint32_t>((j % ts) * ts + i % ts);
+            hits.push_back({ tile, s, local, results[r].T });
+            lastSurface[r] = s;
+          }
+          rays[alive] = rays[r];
+          rays[alive].TNear = NextQueryStart(results[r].T);
+          cellOf[alive] = cellOf[r];
+          lastSurface[alive] = lastSurface[r];
+          ++alive;
+        }
+        count = alive;
+      }
+    }
+  }
+  std::sort(hits.begin(), hits.end(), [](const Hit& x, const Hit& y) {
+    return std::tie(x.Tile, x.Surface, x.Local) < std::tie(y.Tile, y.Surface, y.Local);
+  });
+  const std::size_t tiles = static_cast<std::size_t>(m) * m;
+  f.TileStart.assign(tiles + 1, 0);
+  f.Entries.clear();
+  for (std::size_t q = 0; q < hits.size(); ++q)
+  {
+    if (q == 0 || hits[q].Tile != hits[q - 1].Tile || hits[q].Surface != hits[q - 1].Surface)
+    {
+      f.Entries.push_back({ hits[q].Surface, static_cast<std::uint32_t>(f.Entries.size()) });
+      ++f.TileStart[hits[q].Tile + 1];
+    }
+  }
+  for (std::size_t t = 0; t < tiles; ++t)
+  {
+    f.TileStart[t + 1] += f.TileStart[t];
+  }
+  const std::size_t cellsPerMap = static_cast<std::size_t>(ts) * ts;
+  f.Depth.assign(f.Entries.size() * cellsPerMap, -1.0f);
+  f.Radiance.assign(f.Entries.size() * cellsPerMap, glm::vec3(0.0f));
+  if (this->AnySpecular)
+  {
+    f.UnshotSpecular.assign(f.Entries.size() * cellsPerMap, glm::vec3(0.0f));
+  }
+  std::size_t map = 0;
+  for (std::size_t q = 0; q < hits.size(); ++q)
+  {
+    if (q > 0 && (hits[q].Tile != hits[q - 1].Tile || hits[q].Surface != hits[q - 1].Surface))
+    {
+      ++map;
+    }
+    f.Depth[map * cellsPerMap + hits[q].Local] = hits[q].Depth;
+  }
+}
+
+std::uint64_t LightField::AllocatedBytes() const
+{
+  std::uint64_t bytes = 0;
+  for (const Subfield& f : this->Subfields)
+  {
+    bytes += f.Depth.capacity() * sizeof(float) + f.Radiance.capacity() * sizeof(glm::vec3) +
+      f.UnshotSpecular.capacity() * sizeof(glm::vec3) + f.Entries.capacity() * sizeof(TileEntry) +
+      f.TileStart.capacity() * sizeof(std::uint32_t) + sizeof(Subfield);
+  }
+  bytes += (this->TotalDiffuse.capacity() + this->UnshotDiffuse.capacity()) * sizeof(glm::vec3) +
+    this->Capacity.capacity() * sizeof(float);
+  return bytes;
+}
+
+glm::vec2 LightField::CellCoordinates(std::size_t k, const glm::vec3& p) const
+{
+  const Subfield& f = this->Subfields[k];
+  const float h = this->Config.CellSize();
+  return glm::vec2((glm::dot(p, f.AxisU) + 1.0f) / h - 0.5f, (glm::dot(p, f.AxisV) + 1.0f) / h - 0.5f);
+}
+
+float LightField::DepthOf(std::size_t k, const glm::vec3& p) const
+{
+  return glm::dot(p, this->Subfields[k].Direction) + LineStart;
+}
+
+glm::vec3 LightField::PointOnLine(std::size_t k, int i, int j, float depth) const
+{
+  const Subfield& f = this->Subfields[k];
+  const float h = this->Config.CellSize();
+  const float a = -1.0f + (static_cast<float>(i) + 0.5f) * h;
+  const float b = -1.0f + (static_cast<float>(j) + 0.5f) * h;
+  return a * f.AxisU + b * f.AxisV + (depth - LineStart) * f.Direction;
+}
+
+std::int64_t LightField::FindCell(std::size_t k, int i, int j, std::uint32_t surface) const
+{
+  const int n = this->Config.RaysPerSide;
+  if (i < 0 || j < 0 || i >= n || j >= n)
+  {
+    return -1;
+  }
+  const Subfield& f = this->Subfields[k];
+  if (f.TileStart.empty())
+  {
+    return -1;
+  }
+  const int ts = this->Config.TileSide();
+  const std::size_t tile = static_cast<std::size_t>((j / ts) * this->Config.TilesPerSide + i / ts);
+  const auto begin = f.Entries.begin() + f.TileStart[tile];
+  const auto end = f.Entries.begin() + f.TileStart[tile + 1];
+  const auto found = std::lower_bound(
+    begin, end, surface, [](const TileEntry& e, std::uint32_t s) { return e.Surface < s; });
+  if (found == end || found->Surface != surface)
+  {
+    return -1;
+  }
+  const std::size_t cell = static_cast<std::size_t>(found->Map) * ts * ts +
+    static_cast<std::size_t>((j % ts) * ts + i % ts);
+  return f.Depth[cell] >= 0.0f ? static_cast<std::int64_t>(cell) : -1;
+}
+
+void LightField::LineCrossings(std::size_t k, int i, int j, std::vector<Crossing>& out) const
+{
+  out.clear();
+  const int n = this->Config.RaysPerSide;
+  const Subfield& f = this->Subfields[k];
+  if (i < 0 || j < 0 || i >= n || j >= n || f.TileStart.empty())
+  {
+    return;
+  }
+  const int ts = this->Config.TileSide();
+  const std::size_t tile = static_cast<std::size_t>((j / ts) * this->Config.TilesPerSide + i / ts);
+  const std::size_t local = static_cast<std::size_t>((j % ts) * ts + i % ts);
+  const std::size_t cellsPerMap = static_cast<std::size_t>(ts) * ts;
+  for (std::uint32_t e = f.TileStart[tile]; e < f.TileStart[tile + 1]; ++e)
+  {
+    const std::size_t cell = static_cast<std::size_t>(f.Entries[e].Map) * cellsPerMap + local;
+    const float depth = f.Depth[cell];
+    if (depth >= 0.0f)
+    {
+      Crossing c{ f.Entries[e].Surface, depth, cell };
+      // Insertion sort: a line crosses few surfaces.
+      out.push_back(c);
+      for (std::size_t q = out.size() - 1; q > 0 && out[q - 1].Depth > out[q].Depth; --q)
+      {
+        std::swap(out[q - 1], out[q]);
+      }
+    }
+  }
+}
+
+int LightField::Orientation(std::size_t k, std::uint32_t surface) const
+{
+  const float c = glm::dot(this->SurfaceList[surface].Normal, this->Subfields[k].Direction);
+  return c > 0.0f ? 1 : (c < 0.0f ? -1 : 0);
+}
+
+TexelWeights LightField::WeightsAt(std::uint32_t surface, const glm::vec3& x) const
+{
+  const Surface& s = this->SurfaceList[surface];
+  const glm::vec2 c = s.TexelCoordinates(x);
+  const float fa = std::floor(c.x), fb = std::floor(c.y);
+  const float wa = c.x - fa, wb = c.y - fb;
+  const int a0 = static_cast<int>(fa), b0 = static_cast<int>(fb);
+  auto clampA = [&](int a) { return std::min(std::max(a, 0), s.TextureWidth - 1); };
+  auto clampB = [&](int b) { return std::min(std::max(b, 0), s.TextureHeight - 1); };
+  TexelWeights w;
+  const int as[2] = { clampA(a0), clampA(a0 + 1) };
+  const int bs[2] = { clampB(b0), clampB(b0 + 1) };
+  for (int q = 0; q < 4; ++q)
+  {
+    const int da = q & 1, db = q >> 1;
+    w.Texel[q] = s.TexelOffset + static_cast<std::size_t>(bs[db]) * s.TextureWidth + as[da];
+    w.Weight[q] = (da ? wa : 1.0f - wa) * (db ? wb : 1.0f - wb);
+  }
+  return w;
+}
+
+glm::vec3 LightField::SampleTexture(
+  const std::vector<glm::vec3>& texture, std::uint32_t surface, const glm::vec3& x) const
+{
+  const TexelWeights w = this->WeightsAt(surface, x);
+  glm::vec3 sum(0.0f);
+  for (int q = 0; q < 4; ++q)
+  {
+    sum += w.Weight[q] * texture[w.Texel[q]];
+  }
+  return sum;
+}
+
+} // namespace vlf
+} // namespace mesolight

@@ -1,0 +1,300 @@
+// LightField: the virtual light field's data structure (seed 002 §2.4.1), in plain C++ (GLM, no
+// VTK types).
+//
+// For each direction d_k of a DirectionSet a parallel subfield (PSF) of N x N lines parallel to
+// d_k covers the unit sphere's projection: line (i, j) passes through the centre of cell (i, j)
+// of a square [-1, 1]^2 in the plane perpendicular to d_k (cell side h = 2/N). The cells are
+// split into m x m tiles. A line carries light both ways, so the upper-hemisphere directions
+// d_k stand for the whole sphere {+d_k, -d_k}.
+//
+// Surfaces. The scene's triangles are grouped into planar surfaces: triangles of one material on
+// one plane (within 1e-4 of the unit sphere) form one surface. A line crosses a plane at most
+// once, so (subfield, cell, surface) names at most one crossing. Surfaces are one-sided: the front
+// (counter-clockwise) side emits and reflects; light reaching a back side is absorbed (closed
+// scenes never show back sides to light).
+//
+// Per tile the list of surfaces its lines cross, sorted by surface id (lookups binary-search it,
+// seed §2.4.2.2.2). Per surface per tile a radiance map of tileSide x tileSide cells: the
+// crossing's depth along the line (negative when the cell's line misses the surface: the seed's
+// visibility map), the radiance the surface has sent along the line so far (RGB), and, when the
+// scene has mirror surfaces, the perfect-specular radiance received but not yet sent.
+//
+// Per surface a total diffuse radiance texture for walkthrough (seed §2.4.2.2.3, progressive
+// mode): texels on the surface's plane in its own frame x = Origin + s AxisU + t AxisV, spanning
+// the bounding rectangle of its triangles; texel centres at ((a + 1/2) TexelU, (b + 1/2) TexelV).
+// Values are read and written with clamped bilinear weights. Beside the total, each texel keeps
+// the diffuse radiance received but not yet shot (progressive radiosity) and its shooting
+// capacity (Propagation.h).
+#ifndef mesolight_vlf_LightField_h
+#define mesolight_vlf_LightField_h
+
+#include "DirectionSet.h"
+#include "TriangleScene.h"
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace mesolight
+{
+class EmbreeScene;
+
+namespace vlf
+{
+
+// Runs body(begin, end) over disjoint sub-ranges covering [0, count), possibly concurrently, and
+// returns when all are done. The VTK wrapper passes vtkSMPTools::For; the default uses
+// std::thread (one worker per hardware thread).
+using ParallelFor =
+  std::function<void(std::size_t count, const std::function<void(std::size_t, std::size_t)>& body)>;
+void ThreadParallelFor(
+  std::size_t count, const std::function<void(std::size_t, std::size_t)>& body);
+
+// Progress in [0, 1] and a polled abort request; both optional.
+struct ProgressCallbacks
+{
+  std::function<void(double fraction)> Progress;
+  std::function<bool()> AbortRequested;
+};
+
+// Thrown when AbortRequested() returned true; the light field is then unusable (its last
+// snapshot is not).
+class AbortedError : public std::runtime_error
+{
+public:
+  AbortedError()
+    : std::runtime_error("light field computation aborted")
+  {
+  }
+};
+
+// Runs work(block, item) for every item in [0, count). Items are dealt out in rounds of
+// `blocks` concurrent workers; a worker's block index names a private buffer no other
+// concurrent worker touches. Between rounds (on the calling thread) progress goes from begin to
+// end and an abort request throws AbortedError.
+void RunInBlocks(std::size_t count, std::size_t blocks, const ParallelFor& parallelFor,
+  const ProgressCallbacks& progress, double begin, double end,
+  const std::function<void(std::size_t block, std::size_t item)>& work);
+// Worker blocks used for `count` items: twice the hardware threads, at most count.
+std::size_t DefaultBlockCount(std::size_t count);
+
+// Thrown when the structure would need more memory than the budget allows (nothing allocated).
+class MemoryBudgetError : public std::runtime_error
+{
+public:
+  using std::runtime_error::runtime_error;
+};
+
+struct LightFieldSettings
+{
+  std::size_t Directions = 513; // 2 n^2 + 1: 513, 2049, 8193 (DirectionSet::WithCount)
+  int RaysPerSide = 32;         // N: lines per subfield side
+  int TilesPerSide = 4;         // m: tiles per subfield side, N a multiple of m
+  // Texel side of the total diffuse textures in unit-sphere units; 0 = the cell side 2/N.
+  float TexelSize = 0.0f;
+  std::uint64_t MemoryBudget = std::uint64_t(4) << 30; // bytes
+  // §3.6.2: weight each direction by its solid angle. False gives every direction 2 pi / K
+  // (only for the negative tests: the field is then biased toward densely sampled directions).
+  bool UseSolidAngleWeights = true;
+
+  // Empty when usable, else what is wrong ("--rays 30 is not a multiple of --tiles 4").
+  std::string Validate() const;
+  int TileSide() const { return this->RaysPerSide / this->TilesPerSide; }
+  float CellSize() const { return 2.0f / static_cast<float>(this->RaysPerSide); }
+};
+
+struct Surface
+{
+  std::uint32_t Material = 0;
+  glm::vec3 Normal{ 0.0f, 0.0f, 1.0f }; // unit, front side
+  float Offset = 0.0f;                  // plane: dot(Normal, x) == Offset
+  glm::vec3 Origin{ 0.0f };             // texture frame
+  glm::vec3 AxisU{ 1.0f, 0.0f, 0.0f };
+  glm::vec3 AxisV{ 0.0f, 1.0f, 0.0f };
+  int TextureWidth = 1;
+  int TextureHeight = 1;
+  float TexelU = 1.0f; // texel size along AxisU / AxisV
+  float TexelV = 1.0f;
+  std::size_t TexelOffset = 0; // first texel in LightField::Textures
+  double Area = 0.0;
+  std::vector<std::uint32_t> Triangles;
+
+  std::size_t TexelCount() const
+  {
+    return static_cast<std::size_t>(this->TextureWidth) * static_cast<std::size_t>(this->TextureHeight);
+  }
+  // Continuous texel coordinates of a point (texel centres at integers).
+  glm::vec2 TexelCoordinates(const glm::vec3& x) const;
+  glm::vec3 TexelCentre(int a, int b) const;
+};
+
+// Up to four texels and clamped bilinear weights (sum 1) of a point on a surface.
+struct TexelWeights
+{
+  std::array<std::size_t, 4> Texel{}; // global texel index (Surface::TexelOffset included)
+  std::array<float, 4> Weight{};
+};
+
+struct TileEntry
+{
+  std::uint32_t Surface = 0;
+  std::uint32_t Map = 0; // index of the map: its cells start at Map * tileSide^2
+};
+
+struct Subfield
+{
+  glm::vec3 Direction{ 0.0f, 0.0f, 1.0f };
+  glm::vec3 AxisU{ 1.0f, 0.0f, 0.0f }; // cell i grows along AxisU, j along AxisV
+  glm::vec3 AxisV{ 0.0f, 1.0f, 0.0f };
+  float Weight = 0.0f; // solid angle used in propagation and gathering (sr)
+  std::vector<std::uint32_t> TileStart; // m*m + 1 offsets into Entries
+  std::vector<TileEntry> Entries;       // per tile, sorted by surface
+  std::vector<float> Depth;             // per map cell: distance along the line, < 0 = no crossing
+  std::vector<glm::vec3> Radiance;      // per map cell: radiance sent along the line so far
+  std::vector<glm::vec3> UnshotSpecular; // per map cell (empty without mirror surfaces)
+};
+
+// One surface crossing of a line.
+struct Crossing
+{
+  std::uint32_t Surface = 0;
+  float Depth = 0.0f;
+  std::size_t Cell = 0; // index into the subfield's per-map-cell arrays
+};
+
+struct MemoryEstimate
+{
+  std::size_t Surfaces = 0;
+  std::size_t Texels = 0;
+  std::uint64_t MapCells = 0;     // upper bound: projected triangle bounding boxes per tile
+  std::uint64_t MapBytes = 0;     // depth + radiance (+ unshot specular) per cell, tile lists
+  std::uint64_t TextureBytes = 0; // total, unshot, capacity (+ per-block receive buffers)
+  std::uint64_t TotalBytes = 0;
+  std::string Describe() const; // "1.23 GiB (maps 1.2 GiB for 2.1e7 cells, textures 3 MiB)"
+};
+
+// Bytes needed by a LightField for the scene (normalised to the unit sphere first, as Build
+// does) and settings, computed without allocating the structure. Throws std::invalid_argument
+// for unusable settings or an empty scene.
+MemoryEstimate EstimateMemory(const TriangleScene& scene, const LightFieldSettings& settings);
+
+std::string FormatBytes(std::uint64_t bytes); // "3.5 GiB", "12 MiB", "512 B"
+
+class LightField
+{
+public:
+  // Normalises a copy of the scene into the unit sphere, groups surfaces, checks the memory
+  // estimate against the budget (MemoryBudgetError, nothing allocated), then traces every
+  // subfield's lines with Embree (repeated nearest hits, 16-ray packets) to fill the tile
+  // lists, depths and texture capacities. Throws std::invalid_argument for bad settings or a
+  // scene CheckScene rejects (no emitter, degenerate triangles) or with Kd + Ks > 1.
+  static std::unique_ptr<LightField> Build(const TriangleScene& scene,
+    const LightFieldSettings& settings, const ParallelFor& parallelFor = ThreadParallelFor,
+    const ProgressCallbacks& progress = {});
+
+  // The structure without subfield contents (for Snapshot): scene normalised, surfaces grouped,
+  // directions and frames set, memory checked; maps, tile lists and textures left empty.
+  static std::unique_ptr<LightField> CreateEmpty(
+    const TriangleScene& scene, const LightFieldSettings& settings);
+
+  const LightFieldSettings& Settings() const { return this->Config; }
+  const DirectionSet& Directions() const { return *this->DirectionsPtr; }
+  const TriangleScene& Scene() const { return this->NormalizedScene; } // in the unit sphere
+  // world = Centre + unit / Scale
+  float NormalizationScale() const { return this->Scale; }
+  glm::vec3 NormalizationCentre() const { return this->Centre; }
+  const std::vector<Surface>& Surfaces() const { return this->SurfaceList; }
+  std::uint32_t SurfaceOfTriangle(std::size_t triangle) const { return this->TriangleSurface[triangle]; }
+  const SceneMaterial& MaterialOf(std::uint32_t surface) const
+  {
+    return this->NormalizedScene.Materials[this->SurfaceList[surface].Material];
+  }
+  bool HasSpecular() const { return this->AnySpecular; }
+  const MemoryEstimate& Estimate() const { return this->EstimateUsed; }
+  std::uint64_t AllocatedBytes() const; // what the maps and textures hold now
+
+  std::size_t SubfieldCount() const { return this->Subfields.size(); }
+  const Subfield& GetSubfield(std::size_t k) const { return this->Subfields[k]; }
+  Subfield& GetSubfield(std::size_t k) { return this->Subfields[k]; }
+
+  // Continuous cell coordinates of a point in subfield k (cell centres at integers).
+  glm::vec2 CellCoordinates(std::size_t k, const glm::vec3& p) const;
+  // Distance along subfield k's lines from their origin plane to p.
+  float DepthOf(std::size_t k, const glm::vec3& p) const;
+  // Point where line (i, j) of subfield k is at the given depth.
+  glm::vec3 PointOnLine(std::size_t k, int i, int j, float depth) const;
+  // Map cell of surface s on line (i, j) of subfield k, or -1 when the line misses it.
+  std::int64_t FindCell(std::size_t k, int i, int j, std::uint32_t surface) const;
+  // The crossings of line (i, j) of subfield k ordered by depth (out is cleared first).
+  void LineCrossings(std::size_t k, int i, int j, std::vector<Crossing>& out) const;
+  // Which way surface s sends light along subfield k's lines: +1 toward greater depth
+  // (its front faces +d_k), -1 toward smaller depth, 0 when it lies along the lines.
+  int Orientation(std::size_t k, std::uint32_t surface) const;
+
+  // Total diffuse textures (radiance leaving diffusely), unshot diffuse radiance and the
+  // shooting capacity (Propagation.h), all indexed by Surface::TexelOffset + b * width + a.
+  std::vector<glm::vec3> TotalDiffuse;
+  std::vector<glm::vec3> UnshotDiffuse;
+  std::vector<float> Capacity;
+  TexelWeights WeightsAt(std::uint32_t surface, const glm::vec3& x) const;
+  glm::vec3 SampleTexture(const std::vector<glm::vec3>& texture, std::uint32_t surface,
+    const glm::vec3& x) const;
+
+  // Propagation state (Propagation.h).
+  int IterationsDone = 0;
+  struct IterationEnergy
+  {
+    int Iteration = 0;
+    std::array<double, 3> Shot{};        // flux sent along lines this iteration
+    std::array<double, 3> Escaped{};     // left the scene
+    std::array<double, 3> Absorbed{};    // (1 - Kd - Ks) of what surfaces received
+    std::array<double, 3> BackFaces{};   // reached a back side
+    std::array<double, 3> SpecularLost{}; // mirrored into a direction no line can carry
+    std::array<double, 3> Unshot{};      // reflected, to be sent next iteration
+    double Seconds = 0.0;
+    // |Shot - (Escaped + Absorbed + BackFaces + SpecularLost + Unshot)| / Shot, worst channel.
+    double ConservationError() const;
+  };
+  std::vector<IterationEnergy> EnergyLog;
+
+  std::size_t TexelCount() const { return this->TexelTotal; }
+
+private:
+  LightField() = default;
+  // normalize false: the scene already lies in the unit sphere (a snapshot's).
+  void Setup(const TriangleScene& scene, const LightFieldSettings& settings, bool normalize);
+  friend std::unique_ptr<LightField> ReadSnapshot(const std::string& path, std::uint64_t memoryBudget);
+  void TraceSubfield(std::size_t k, const EmbreeScene& embree);
+
+  LightFieldSettings Config;
+  std::unique_ptr<DirectionSet> DirectionsPtr;
+  TriangleScene NormalizedScene;
+  float Scale = 1.0f;
+  glm::vec3 Centre{ 0.0f };
+  std::vector<Surface> SurfaceList;
+  std::vector<std::uint32_t> TriangleSurface;
+  std::vector<Subfield> Subfields;
+  std::size_t TexelTotal = 0;
+  bool AnySpecular = false;
+  MemoryEstimate EstimateUsed;
+};
+
+// Surface index of degenerate triangles (they belong to no surface).
+constexpr std::uint32_t NoSurface = 0xffffffffu;
+
+// Groups a (unit-sphere) scene's triangles into planar one-material surfaces with texture
+// frames; triangleSurface gets each triangle's surface. Exposed for tests and the estimate.
+std::vector<Surface> GroupSurfaces(const TriangleScene& scene, float texelSize,
+  std::vector<std::uint32_t>& triangleSurface);
+
+} // namespace vlf
+} // namespace mesolight
+
+#endif

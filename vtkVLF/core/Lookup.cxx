@@ -1,0 +1,213 @@
+#include "Lookup.h"
+
+#include <glm/geometric.hpp>
+
+#include <cmath>
+
+namespace mesolight
+{
+namespace vlf
+{
+
+namespace
+{
+constexpr float Pi = 3.14159265358979f;
+// Crossings closer than this to p along the line count as p's own surface.
+constexpr float SelfDepth = 1e-4f;
+
+// The cells around continuous cell coordinates c and their weights: one cell, or the bilinear
+// 2 x 2 (of the 3 x 3 neighbourhood) surrounding c.
+int CellsAround(const glm::vec2& c, CellInterpolation mode, int (&i)[4], int (&j)[4], float (&w)[4])
+{
+  if (mode == CellInterpolation::Nearest)
+  {
+    i[0] = static_cast<int>(std::lround(c.x));
+    j[0] = static_cast<int>(std::lround(c.y));
+    w[0] = 1.0f;
+    return 1;
+  }
+  const float fi = std::floor(c.x), fj = std::floor(c.y);
+  const float ai = c.x - fi, aj = c.y - fj;
+  for (int q = 0; q < 4; ++q)
+  {
+    const int di = q & 1, dj = q >> 1;
+    i[q] = static_cast<int>(fi) + di;
+    j[q] = static_cast<int>(fj) + dj;
+    w[q] = (di ? ai : 1.0f - ai) * (dj ? aj : 1.0f - aj);
+  }
+  return 4;
+}
+} // namespace
+
+glm::vec3 Lookup::CellRadiance(std::size_t k, std::uint32_t s, std::size_t cell, const glm::vec3& x) const
+{
+  const Subfield& f = this->Field.GetSubfield(k);
+  glm::vec3 radiance = f.Radiance[cell] + this->Field.SampleTexture(this->Field.UnshotDiffuse, s, x);
+  if (!f.UnshotSpecular.empty())
+  {
+    radiance += f.UnshotSpecular[cell];
+  }
+  return radiance;
+}
+
+bool Lookup::SubfieldRadiance(std::size_t k, std::uint32_t s, const glm::vec3& p,
+  CellInterpolation cells, glm::vec3& radiance) const
+{
+  int is[4], js[4];
+  float ws[4];
+  const int count = CellsAround(this->Field.CellCoordinates(k, p), cells, is, js, ws);
+  glm::vec3 sum(0.0f);
+  float weight = 0.0f;
+  for (int q = 0; q < count; ++q)
+  {
+    if (ws[q] <= 0.0f)
+    {
+      continue;
+    }
+    const std::int64_t cell = this->Field.FindCell(k, is[q], js[q], s);
+    if (cell >= 0)
+    {
+      sum += ws[q] * this->CellRadiance(k, s, static_cast<std::size_t>(cell), p);
+      weight += ws[q];
+    }
+  }
+  if (!(weight > 0.0f))
+  {
+    return false;
+  }
+  radiance = sum / weight;
+  return true;
+}
+
+glm::vec3 Lookup::DiffuseRadiance(std::uint32_t surface, const glm::vec3& p) const
+{
+  return this->Field.SampleTexture(this->Field.TotalDiffuse, surface, p);
+}
+
+glm::vec3 Lookup::RadianceLeaving(std::uint32_t surface, const glm::vec3& p, const glm::vec3& w,
+  CellInterpolation cells, DirectionInterpolation directions) const
+{
+  const DirectionSet& set = this->Field.Directions();
+  glm::vec3 sum(0.0f);
+  float weight = 0.0f;
+  if (directions == DirectionInterpolation::Nearest)
+  {
+    bool flipped = false;
+    const std::size_t k = set.Nearest(w, &flipped);
+    glm::vec3 value;
+    if (this->Field.Orientation(k, surface) == (flipped ? -1 : 1) &&
+      this->SubfieldRadiance(k, surface, p, cells, value))
+    {
+      return value;
+    }
+    return this->DiffuseRadiance(surface, p);
+  }
+  const DirectionSet::Interpolation blend = set.Interpolate(w);
+  for (int v = 0; v < 3; ++v)
+  {
+    const std::size_t k = blend.Index[v];
+    glm::vec3 value;
+    if (blend.Weight[v] > 0.0f &&
+      this->Field.Orientation(k, surface) == (blend.VertexFlipped[v] ? -1 : 1) &&
+      this->SubfieldRadiance(k, surface, p, cells, value))
+    {
+      sum += blend.Weight[v] * value;
+      weight += blend.Weight[v];
+    }
+  }
+  return weight > 0.0f ? sum / weight : this->DiffuseRadiance(surface, p);
+}
+
+glm::vec3 Lookup::IncidentRadiance(std::size_t k, int sense, const glm::vec3& p,
+  CellInterpolation cells, std::uint32_t ignore) const
+{
+  int is[4], js[4];
+  float ws[4];
+  const int count = CellsAround(this->Field.CellCoordinates(k, p), cells, is, js, ws);
+  const float depth = this->Field.DepthOf(k, p);
+  thread_local std::vector<Crossing> crossings;
+  glm::vec3 sum(0.0f), fallback(0.0f);
+  float weight = 0.0f, fallbackWeight = -1.0f;
+  for (int q = 0; q < count; ++q)
+  {
+    if (ws[q] <= 0.0f)
+    {
+      continue;
+    }
+    this->Field.LineCrossings(k, is[q], js[q], crossings);
+    // The crossings just before and after p's depth bound the segment of this line that p's
+    // neighbourhood lies in.
+    const Crossing* before = nullptr;
+    const Crossing* after = nullptr;
+    for (const Crossing& c : crossings)
+    {
+      if (c.Surface == ignore)
+      {
+        continue;
+      }
+      if (c.Depth < depth - SelfDepth)
+      {
+        before = &c;
+      }
+      else if (c.Depth > depth + SelfDepth)
+      {
+        after = &c;
+        break;
+      }
+    }
+    const Crossing* sender = sense > 0 ? after : before;
+    glm::vec3 radiance(0.0f); // nothing (light leaves the scene) or a back side: no light
+    if (sender && this->Field.Orientation(k, sender->Surface) == -sense)
+    {
+      const glm::vec3 x = this->Field.PointOnLine(k, is[q], js[q], sender->Depth);
+      radiance = this->CellRadiance(k, sender->Surface, sender->Cell, x);
+    }
+    // A neighbouring line tells about p only when its segment is open space like p's: both
+    // bounds face into it. Near a wall a neighbour may already be behind the wall at p's
+    // depth, or pass beside a wall parallel to it crossing nothing at all; it is left out and
+    // the others renormalised (counting it would darken points near walls).
+    const bool open = (!before || this->Field.Orientation(k, before->Surface) > 0) &&
+      (!after || this->Field.Orientation(k, after->Surface) < 0) && !crossings.empty();
+    if (open)
+    {
+      sum += ws[q] * radiance;
+      weight += ws[q];
+    }
+    else if (ws[q] > fallbackWeight)
+    {
+      fallback = radiance;
+      fallbackWeight = ws[q];
+    }
+  }
+  // No open segment around p (p behind a one-sided surface): the nearest line as it is.
+  return weight > 0.0f ? sum / weight : fallback;
+}
+
+glm::vec3 Lookup::Irradiance(
+  const glm::vec3& p, const glm::vec3& n, const GatherOptions& options, std::uint32_t ignore) const
+{
+  const std::size_t count = this->Field.SubfieldCount();
+  const float uniform = 2.0f * Pi / static_cast<float>(count);
+  glm::vec3 sum(0.0f);
+  float total = 0.0f;
+  for (std::size_t k = 0; k < count; ++k)
+  {
+    const float c = glm::dot(this->Field.GetSubfield(k).Direction, n);
+    if (c == 0.0f)
+    {
+      continue;
+    }
+    const float weight =
+      (options.SolidAngleWeights ? this->Field.Directions().SolidAngle(k) : uniform) * std::abs(c);
+    total += weight;
+    sum += weight * this->IncidentRadiance(k, c > 0.0f ? 1 : -1, p, options.Cells, ignore);
+  }
+  if (!options.ProjectedAreaNormalization)
+  {
+    return sum;
+  }
+  return total > 0.0f ? sum * (Pi / total) : glm::vec3(0.0f);
+}
+
+} // namespace vlf
+} // namespace mesolight

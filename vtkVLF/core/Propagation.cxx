@@ -1,0 +1,255 @@
+#include "Propagation.h"
+
+#include <glm/geometric.hpp>
+
+#include <chrono>
+#include <cmath>
+
+namespace mesolight
+{
+namespace vlf
+{
+
+namespace
+{
+constexpr double Pi = 3.14159265358979323846;
+
+void Add(std::array<double, 3>& sum, const glm::vec3& value)
+{
+  sum[0] += static_cast<double>(value.x);
+  sum[1] += static_cast<double>(value.y);
+  sum[2] += static_cast<double>(value.z);
+}
+
+void Add(std::array<double, 3>& sum, const std::array<double, 3>& value)
+{
+  for (int c = 0; c < 3; ++c)
+  {
+    sum[c] += value[c];
+  }
+}
+
+struct SpecularDeposit
+{
+  std::uint32_t Subfield;
+  std::size_t Cell;
+  glm::vec3 Radiance;
+};
+
+// What one worker block accumulates during an iteration.
+struct BlockState
+{
+  std::vector<glm::vec3> Reflected; // reflected diffuse flux per texel
+  std::vector<SpecularDeposit> Specular;
+  LightField::IterationEnergy Energy;
+};
+
+// Sends the unshot radiance of every crossing of subfield k one step along its lines.
+void ShootSubfield(LightField& field, std::size_t k, BlockState& state)
+{
+  const LightFieldSettings& settings = field.Settings();
+  const int n = settings.RaysPerSide;
+  Subfield& f = field.GetSubfield(k);
+  const float fluxPerRadiance = settings.CellSize() * settings.CellSize() * f.Weight;
+  const bool specular = field.HasSpecular();
+  const DirectionSet& directions = field.Directions();
+  std::vector<Crossing> crossings;
+  for (int j = 0; j < n; ++j)
+  {
+    for (int i = 0; i < n; ++i)
+    {
+      field.LineCrossings(k, i, j, crossings);
+      for (std::size_t q = 0; q < crossings.size(); ++q)
+      {
+        const Crossing& sender = crossings[q];
+        const int sense = field.Orientation(k, sender.Surface);
+        glm::vec3 radiance = field.SampleTexture(
+          field.UnshotDiffuse, sender.Surface, field.PointOnLine(k, i, j, sender.Depth));
+        if (specular)
+        {
+          radiance += f.UnshotSpecular[sender.Cell];
+          f.UnshotSpecular[sender.Cell] = glm::vec3(0.0f);
+        }
+        if (radiance.x <= 0.0f && radiance.y <= 0.0f && radiance.z <= 0.0f)
+        {
+          continue;
+        }
+        f.Radiance[sender.Cell] += radiance;
+        const glm::vec3 flux = radiance * fluxPerRadiance;
+        Add(state.Energy.Shot, flux);
+        const std::ptrdiff_t r = static_cast<std::ptrdiff_t>(q) + sense;
+        if (r < 0 || r >= static_cast<std::ptrdiff_t>(crossings.size()))
+        {
+          Add(state.Energy.Escaped, flux);
+          continue;
+        }
+        const Crossing& receiver = crossings[static_cast<std::size_t>(r)];
+        if (field.Orientation(k, receiver.Surface) != -sense)
+        {
+          Add(state.Energy.BackFaces, flux);
+          continue;
+        }
+        const SceneMaterial& material = field.MaterialOf(receiver.Surface);
+        const glm::vec3 x = field.PointOnLine(k, i, j, receiver.Depth);
+        const glm::vec3 reflected = material.Diffuse * flux;
+        const TexelWeights w = field.WeightsAt(receiver.Surface, x);
+        for (int t = 0; t < 4; ++t)
+        {
+          state.Reflected[w.Texel[t]] += w.Weight[t] * reflected;
+        }
+        Add(state.Energy.Absorbed, (glm::vec3(1.0f) - material.Diffuse - material.Specular) * flux);
+        if (material.Specular.x <= 0.0f && material.Specular.y <= 0.0f && material.Specular.z <= 0.0f)
+        {
+          continue;
+        }
+        // Perfect mirror: into the nearest direction of the mirrored one (seed §2.4.1.2).
+        const glm::vec3& normal = field.Surfaces()[receiver.Surface].Normal;
+        const glm::vec3 travel = static_cast<float>(sense) * f.Direction;
+        const glm::vec3 mirrored = travel - 2.0f * glm::dot(travel, normal) * normal;
+        bool flipped = false;
+        const std::size_t target = directions.Nearest(glm::normalize(mirrored), &flipped);
+        const glm::vec3 specularFlux = material.Specular * flux;
+        if (field.Orientation(target, receiver.Surface) != (flipped ? -1 : 1))
+        {
+          Add(state.Energy.SpecularLost, specularFlux);
+          continue;
+        }
+        const glm::vec2 c = field.CellCoordinates(target, x);
+        const int i0 = static_cast<int>(std::floor(c.x)), j0 = static_cast<int>(std::floor(c.y));
+        const float fi = c.x - static_cast<float>(i0), fj = c.y - static_cast<float>(j0);
+        std::int64_t cells[4];
+        float weights[4];
+        float weightSum = 0.0f;
+        for (int t = 0; t < 4; ++t)
+        {
+          const int di = t & 1, dj = t >> 1;
+          cells[t] = field.FindCell(target, i0 + di, j0 + dj, receiver.Surface);
+          weights[t] = cells[t] < 0 ? 0.0f : (di ? fi : 1.0f - fi) * (dj ? fj : 1.0f - fj);
+          weightSum += weights[t];
+        }
+        if (!(weightSum > 0.0f))
+        {
+          Add(state.Energy.SpecularLost, specularFlux);
+          continue;
+        }
+        const float scale = f.Weight / field.GetSubfield(target).Weight / weightSum;
+        for (int t = 0; t < 4; ++t)
+        {
+          if (weights[t] > 0.0f)
+          {
+            state.Specular.push_back({ static_cast<std::uint32_t>(target),
+              static_cast<std::size_t>(cells[t]), material.Specular * radiance * (scale * weights[t]) });
+          }
+        }
+      }
+    }
+  }
+}
+} // namespace
+
+std::array<double, 3> UnshotFlux(const LightField& field)
+{
+  std::array<double, 3> flux{};
+  for (std::size_t t = 0; t < field.UnshotDiffuse.size(); ++t)
+  {
+    Add(flux, field.UnshotDiffuse[t] * field.Capacity[t]);
+  }
+  const float cellArea = field.Settings().CellSize() * field.Settings().CellSize();
+  for (std::size_t k = 0; k < field.SubfieldCount(); ++k)
+  {
+    const Subfield& f = field.GetSubfield(k);
+    for (const glm::vec3& radiance : f.UnshotSpecular)
+    {
+      Add(flux, radiance * (cellArea * f.Weight));
+    }
+  }
+  return flux;
+}
+
+LightField::IterationEnergy PropagateIteration(LightField& field, const PropagationOptions& options)
+{
+  const auto start = std::chrono::steady_clock::now();
+  const std::size_t count = field.SubfieldCount();
+  const std::size_t texels = field.TexelCount();
+  const std::size_t blocks = DefaultBlockCount(count);
+  std::vector<BlockState> states(blocks);
+  for (BlockState& s : states)
+  {
+    s.Reflected.assign(texels, glm::vec3(0.0f));
+  }
+  RunInBlocks(count, blocks, options.Parallel, options.Callbacks, 0.0, 1.0,
+    [&](std::size_t b, std::size_t k) { ShootSubfield(field, k, states[b]); });
+
+  LightField::IterationEnergy energy;
+  energy.Iteration = field.IterationsDone + 1;
+  std::vector<glm::vec3>& reflected = states[0].Reflected;
+  for (std::size_t b = 0; b < blocks; ++b)
+  {
+    const LightField::IterationEnergy& e = states[b].Energy;
+    Add(energy.Shot, e.Shot);
+    Add(energy.Escaped, e.Escaped);
+    Add(energy.Absorbed, e.Absorbed);
+    Add(energy.BackFaces, e.BackFaces);
+    Add(energy.SpecularLost, e.SpecularLost);
+    if (b > 0)
+    {
+      for (std::size_t t = 0; t < texels; ++t)
+      {
+        reflected[t] += states[b].Reflected[t];
+      }
+      states[b].Reflected = std::vector<glm::vec3>();
+    }
+  }
+  // Reflected flux -> unshot diffuse radiance (see the header: the discrete capacity keeps the
+  // flux exactly).
+  for (const Surface& s : field.Surfaces())
+  {
+    const float area = static_cast<float>(Pi) * s.TexelU * s.TexelV;
+    for (std::size_t t = s.TexelOffset; t < s.TexelOffset + s.TexelCount(); ++t)
+    {
+      const float normalizer =
+        options.Normalization == DiffuseNormalization::DiscreteCapacity ? field.Capacity[t] : area;
+      const glm::vec3 unshot = normalizer > 0.0f ? reflected[t] / normalizer : glm::vec3(0.0f);
+      field.UnshotDiffuse[t] = unshot;
+      field.TotalDiffuse[t] += unshot;
+    }
+  }
+  for (const BlockState& s : states)
+  {
+    for (const SpecularDeposit& d : s.Specular)
+    {
+      field.GetSubfield(d.Subfield).UnshotSpecular[d.Cell] += d.Radiance;
+    }
+  }
+  energy.Unshot = UnshotFlux(field);
+  field.IterationsDone = energy.Iteration;
+  energy.Seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  field.EnergyLog.push_back(energy);
+  return energy;
+}
+
+void Propagate(LightField& field, int iterations, const PropagationOptions& options,
+  const std::function<void(const LightField&)>& afterIteration)
+{
+  const int first = field.IterationsDone;
+  const int total = iterations - first;
+  for (int it = first; it < iterations; ++it)
+  {
+    PropagationOptions step = options;
+    if (options.Callbacks.Progress)
+    {
+      const double begin = static_cast<double>(it - first) / total;
+      step.Callbacks.Progress = [&, begin](double fraction) {
+        options.Callbacks.Progress(begin + fraction / total);
+      };
+    }
+    PropagateIteration(field, step);
+    if (afterIteration)
+    {
+      afterIteration(field);
+    }
+  }
+}
+
+} // namespace vlf
+} // namespace mesolight

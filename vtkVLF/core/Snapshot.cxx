@@ -1,0 +1,567 @@
+#include "Snapshot.h"
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <type_traits>
+#include <unistd.h>
+
+namespace mesolight
+{
+namespace vlf
+{
+
+namespace
+{
+constexpr char Magic[8] = { 'M', 'L', 'V', 'L', 'F', 'S', 'N', 'P' };
+constexpr std::uint32_t ByteOrderMark = 0x01020304u;
+constexpr std::size_t BufferBytes = std::size_t(1) << 20; // a multiple of 8: hashing is per word
+
+struct Header
+{
+  char MagicBytes[8];
+  std::uint32_t Version;
+  std::uint32_t ByteOrder;
+  std::uint64_t PayloadBytes;
+  std::uint64_t PayloadChecksum;
+  std::uint64_t Reserved;
+  std::uint64_t HeaderChecksum; // over the fields above
+};
+static_assert(sizeof(Header) == 48, "snapshot header layout");
+
+// 64-bit multiply-xorshift hash over little-endian 8-byte words; a short last word is padded with
+// zeros and the byte count is mixed in at the end.
+class Checksum
+{
+public:
+  void Update(const unsigned char* data, std::size_t bytes)
+  {
+    std::size_t q = 0;
+    for (; q + 8 <= bytes; q += 8)
+    {
+      std::uint64_t word;
+      std::memcpy(&word, data + q, 8);
+      this->Mix(word);
+    }
+    if (q < bytes)
+    {
+      std::uint64_t word = 0;
+      std::memcpy(&word, data + q, bytes - q);
+      this->Mix(word);
+    }
+    this->Length += bytes;
+  }
+  std::uint64_t Value() const
+  {
+    std::uint64_t h = this->State ^ (this->Length * 0xff51afd7ed558ccdULL);
+    h ^= h >> 33;
+    h *= 0xc4ceb9fe1a85ec53ULL;
+    return h ^ (h >> 33);
+  }
+
+private:
+  void Mix(std::uint64_t word)
+  {
+    this->State = (this->State ^ word) * 0x9E3779B97F4A7C15ULL;
+    this->State ^= this->State >> 29;
+  }
+  std::uint64_t State = 0x243F6A8885A308D3ULL;
+  std::uint64_t Length = 0;
+};
+
+std::uint64_t HeaderChecksum(const Header& h)
+{
+  Checksum c;
+  c.Update(reinterpret_cast<const unsigned char*>(&h), offsetof(Header, HeaderChecksum));
+  return c.Value();
+}
+
+std::string Quoted(const std::string& path)
+{
+  return "'" + path + "'";
+}
+
+class Writer
+{
+public:
+  Writer(const std::string& path, std::FILE* file)
+    : Path(path)
+    , File(file)
+  {
+    this->Buffer.reserve(BufferBytes);
+  }
+  template <typename T>
+  void Value(const T& value)
+  {
+    static_assert(std::is_trivially_copyable<T>::value, "plain data only");
+    this->Bytes(&value, sizeof(T));
+  }
+  template <typename T>
+  void Array(const std::vector<T>& values)
+  {
+    static_assert(std::is_trivially_copyable<T>::value, "plain data only");
+    this->Value(static_cast<std::uint64_t>(values.size()));
+    this->Bytes(values.data(), values.size() * sizeof(T));
+  }
+  void String(const std::string& text)
+  {
+    this->Value(static_cast<std::uint64_t>(text.size()));
+    this->Bytes(text.data(), text.size());
+  }
+  void Bytes(const void* data, std::size_t bytes)
+  {
+    const unsigned char* p = static_cast<const unsigned char*>(data);
+    while (bytes > 0)
+    {
+      const std::size_t take = std::min(bytes, BufferBytes - this->Buffer.size());
+      this->Buffer.insert(this->Buffer.end(), p, p + take);
+      p += take;
+      bytes -= take;
+      if (this->Buffer.size() == BufferBytes)
+      {
+        this->Flush();
+      }
+    }
+  }
+  void Flush()
+  {
+    if (this->Buffer.empty())
+    {
+      return;
+    }
+    this->Hash.Update(this->Buffer.data(), this->Buffer.size());
+    if (std::fwrite(this->Buffer.data(), 1, this->Buffer.size(), this->File) != this->Buffer.size())
+    {
+      throw SnapshotError("cannot write " + Quoted(this->Path) + ": " + std::strerror(errno));
+    }
+    this->Written += this->Buffer.size();
+    this->Buffer.clear();
+  }
+  std::uint64_t Written = 0;
+  Checksum Hash;
+
+private:
+  std::string Path;
+  std::FILE* File;
+  std::vector<unsigned char> Buffer;
+};
+
+class Reader
+{
+public:
+  Reader(const std::string& path, std::FILE* file, std::uint64_t payloadBytes)
+    : Path(path)
+    , File(file)
+    , Remaining(payloadBytes)
+  {
+  }
+  template <typename T>
+  T Value()
+  {
+    static_assert(std::is_trivially_copyable<T>::value, "plain data only");
+    T value;
+    this->Bytes(&value, sizeof(T));
+    return value;
+  }
+  // A count of items of `itemBytes` each, checked against the bytes left so a corrupt count
+  // cannot ask for absurd memory.
+  std::uint64_t Count(std::size_t itemBytes, const char* what)
+  {
+    const std::uint64_t count = this->Value<std::uint64_t>();
+    if (itemBytes > 0 && count > this->BytesLeft() / itemBytes)
+    {
+      this->Fail(std::string("its ") + what + " count " + std::to_string(count) +
+        " does not fit in the bytes left");
+    }
+    return count;
+  }
+  template <typename T>
+  void Array(std::vector<T>& values, const char* what, std::uint64_t expected)
+  {
+    const std::uint64_t count = this->Count(sizeof(T), what);
+    if (count != expected)
+    {
+      this->Fail(std::string("it holds ") + std::to_string(count) + " " + what + " where " +
+        std::to_string(expected) + " were expected");
+    }
+    values.resize(count);
+    this->Bytes(values.data(), count * sizeof(T));
+  }
+  std::string String(const char* what)
+  {
+    const std::uint64_t count = this->Count(1, what);
+    if (count > 4096)
+    {
+      this->Fail(std::string("its ") + what + " is " + std::to_string(count) + " bytes long");
+    }
+    std::string text(count, '\0');
+    this->Bytes(&text[0], count);
+    return text;
+  }
+  void Bytes(void* data, std::size_t bytes)
+  {
+    unsigned char* p = static_cast<unsigned char*>(data);
+    while (bytes > 0)
+    {
+      if (this->Position == this->Buffer.size())
+      {
+        this->Refill();
+      }
+      const std::size_t take = std::min(bytes, this->Buffer.size() - this->Position);
+      std::memcpy(p, this->Buffer.data() + this->Position, take);
+      this->Position += take;
+      p += take;
+      bytes -= take;
+    }
+  }
+  std::uint64_t BytesLeft() const { return this->Remaining + (this->Buffer.size() - this->Position); }
+  [[noreturn]] void Fail(const std::string& what) const
+  {
+    throw SnapshotError(Quoted(this->Path) + " is corrupt: " + what);
+  }
+  Checksum Hash;
+
+private:
+  void Refill()
+  {
+    if (this->Remaining == 0)
+    {
+      this->Fail("it ends before its contents are complete");
+    }
+    const std::size_t take = static_cast<std::size_t>(std::min<std::uint64_t>(BufferBytes, this->Remaining));
+    this->Buffer.resize(take);
+    if (std::fread(this->Buffer.data(), 1, take, this->File) != take)
+    {
+      throw SnapshotError(Quoted(this->Path) + " is truncated (read error)");
+    }
+    this->Hash.Update(this->Buffer.data(), take);
+    this->Remaining -= take;
+    this->Position = 0;
+  }
+  std::string Path;
+  std::FILE* File;
+  std::uint64_t Remaining;
+  std::vector<unsigned char> Buffer;
+  std::size_t Position = 0;
+};
+
+void WriteMaterial(Writer& w, const SceneMaterial& m)
+{
+  w.String(m.Name);
+  w.Value(m.Diffuse);
+  w.Value(m.Specular);
+  w.Value(m.Emission);
+  w.Value(m.Ambient);
+  w.Value(m.Shininess);
+  w.Value(m.Roughness);
+}
+
+SceneMaterial ReadMaterial(Reader& r)
+{
+  SceneMaterial m;
+  m.Name = r.String("material name");
+  m.Diffuse = r.Value<glm::vec3>();
+  m.Specular = r.Value<glm::vec3>();
+  m.Emission = r.Value<glm::vec3>();
+  m.Ambient = r.Value<glm::vec3>();
+  m.Shininess = r.Value<float>();
+  m.Roughness = r.Value<float>();
+  return m;
+}
+
+void WritePayload(Writer& w, const LightField& field)
+{
+  const LightFieldSettings& s = field.Settings();
+  w.Value(static_cast<std::uint64_t>(s.Directions));
+  w.Value(static_cast<std::int32_t>(s.RaysPerSide));
+  w.Value(static_cast<std::int32_t>(s.TilesPerSide));
+  w.Value(s.TexelSize);
+  w.Value(s.MemoryBudget);
+  w.Value(static_cast<std::uint8_t>(s.UseSolidAngleWeights ? 1 : 0));
+  w.Value(static_cast<std::int32_t>(field.IterationsDone));
+  w.Value(field.NormalizationScale());
+  w.Value(field.NormalizationCentre());
+
+  const TriangleScene& scene = field.Scene();
+  w.Array(scene.Positions);
+  w.Array(scene.Triangles);
+  w.Array(scene.MaterialIds);
+  w.Array(scene.Normals);
+  w.Array(scene.TextureCoordinates);
+  w.Value(static_cast<std::uint64_t>(scene.Materials.size()));
+  for (const SceneMaterial& m : scene.Materials)
+  {
+    WriteMaterial(w, m);
+  }
+
+  w.Array(field.TotalDiffuse);
+  w.Array(field.UnshotDiffuse);
+  w.Array(field.Capacity);
+  w.Array(field.EnergyLog);
+  for (std::size_t k = 0; k < field.SubfieldCount(); ++k)
+  {
+    const Subfield& f = field.GetSubfield(k);
+    w.Array(f.TileStart);
+    w.Array(f.Entries);
+    w.Array(f.Depth);
+    w.Array(f.Radiance);
+    w.Array(f.UnshotSpecular);
+  }
+}
+} // namespace
+
+bool FileExists(const std::string& path)
+{
+  struct stat info;
+  return ::stat(path.c_str(), &info) == 0;
+}
+
+bool IsSnapshotFile(const std::string& path)
+{
+  std::FILE* file = std::fopen(path.c_str(), "rb");
+  if (!file)
+  {
+    return false;
+  }
+  char magic[8] = {};
+  const bool ok = std::fread(magic, 1, 8, file) == 8 && std::memcmp(magic, Magic, 8) == 0;
+  std::fclose(file);
+  return ok;
+}
+
+void WriteSnapshot(const LightField& field, const std::string& path)
+{
+  if (path.empty())
+  {
+    throw SnapshotError("no snapshot file name given");
+  }
+  const std::string temporary = path + ".tmp-" + std::to_string(static_cast<long>(::getpid()));
+  std::FILE* file = std::fopen(temporary.c_str(), "wb");
+  if (!file)
+  {
+    throw SnapshotError("cannot create " + Quoted(temporary) + ": " + std::strerror(errno));
+  }
+  try
+  {
+    Header header{};
+    std::memcpy(header.MagicBytes, Magic, 8);
+    header.Version = SnapshotVersion;
+    header.ByteOrder = ByteOrderMark;
+    if (std::fwrite(&header, sizeof(header), 1, file) != 1)
+    {
+      throw SnapshotError("cannot write " + Quoted(temporary) + ": " + std::strerror(errno));
+    }
+    Writer writer(temporary, file);
+    WritePayload(writer, field);
+    writer.Flush();
+    header.PayloadBytes = writer.Written;
+    header.PayloadChecksum = writer.Hash.Value();
+    header.HeaderChecksum = HeaderChecksum(header);
+    if (std::fseek(file, 0, SEEK_SET) != 0 || std::fwrite(&header, sizeof(header), 1, file) != 1 ||
+      std::fflush(file) != 0 || ::fsync(::fileno(file)) != 0)
+    {
+      throw SnapshotError("cannot write " + Quoted(temporary) + ": " + std::strerror(errno));
+    }
+  }
+  catch (...)
+  {
+    std::fclose(file);
+    std::remove(temporary.c_str());
+    throw;
+  }
+  if (std::fclose(file) != 0)
+  {
+    std::remove(temporary.c_str());
+    throw SnapshotError("cannot write " + Quoted(temporary) + ": " + std::strerror(errno));
+  }
+  if (std::rename(temporary.c_str(), path.c_str()) != 0)
+  {
+    const std::string reason = std::strerror(errno);
+    std::remove(temporary.c_str());
+    throw SnapshotError("cannot rename " + Quoted(temporary) + " to " + Quoted(path) + ": " + reason);
+  }
+}
+
+std::unique_ptr<LightField> ReadSnapshot(const std::string& path, std::uint64_t memoryBudget)
+{
+  std::FILE* file = std::fopen(path.c_str(), "rb");
+  if (!file)
+  {
+    throw SnapshotError("cannot open light field " + Quoted(path) + ": " + std::strerror(errno));
+  }
+  struct Closer
+  {
+    std::FILE* File;
+    ~Closer() { std::fclose(this->File); }
+  } closer{ file };
+
+  Header header{};
+  const std::size_t headerRead = std::fread(&header, 1, sizeof(header), file);
+  if (headerRead < 8 || std::memcmp(header.MagicBytes, Magic, 8) != 0)
+  {
+    throw SnapshotError(Quoted(path) + " is not a Mesolight light field snapshot (no MLVLFSNP header)");
+  }
+  if (headerRead < sizeof(header))
+  {
+    throw SnapshotError(Quoted(path) + " is truncated: its header is incomplete");
+  }
+  if (header.HeaderChecksum != HeaderChecksum(header))
+  {
+    throw SnapshotError(Quoted(path) + " is corrupt: its header checksum does not match");
+  }
+  if (header.ByteOrder != ByteOrderMark)
+  {
+    throw SnapshotError(Quoted(path) + " was written on a machine of the other byte order");
+  }
+  if (header.Version != SnapshotVersion)
+  {
+    throw SnapshotError(Quoted(path) + " is snapshot version " + std::to_string(header.Version) +
+      "; this build reads version " + std::to_string(SnapshotVersion));
+  }
+  struct stat info;
+  if (::fstat(::fileno(file), &info) != 0)
+  {
+    throw SnapshotError("cannot read " + Quoted(path) + ": " + std::strerror(errno));
+  }
+  const std::uint64_t fileBytes = static_cast<std::uint64_t>(info.st_size);
+  if (fileBytes < sizeof(header) + header.PayloadBytes)
+  {
+    throw SnapshotError(Quoted(path) + " is truncated: it has " + std::to_string(fileBytes) +
+      " bytes, its header announces " + std::to_string(sizeof(header) + header.PayloadBytes));
+  }
+  if (fileBytes > sizeof(header) + header.PayloadBytes)
+  {
+    throw SnapshotError(Quoted(path) + " is corrupt: it has " +
+      std::to_string(fileBytes - sizeof(header) - header.PayloadBytes) +
+      " bytes after the end its header announces");
+  }
+
+  Reader r(path, file, header.PayloadBytes);
+  LightFieldSettings settings;
+  settings.Directions = static_cast<std::size_t>(r.Value<std::uint64_t>());
+  settings.RaysPerSide = r.Value<std::int32_t>();
+  settings.TilesPerSide = r.Value<std::int32_t>();
+  settings.TexelSize = r.Value<float>();
+  settings.MemoryBudget = r.Value<std::uint64_t>();
+  settings.UseSolidAngleWeights = r.Value<std::uint8_t>() != 0;
+  if (memoryBudget > 0)
+  {
+    settings.MemoryBudget = memoryBudget;
+  }
+  const std::string problem = settings.Validate();
+  if (!problem.empty())
+  {
+    r.Fail("its settings are invalid: " + problem);
+  }
+  const int iterations = r.Value<std::int32_t>();
+  if (iterations < 0 || iterations > 1000000)
+  {
+    r.Fail("it claims " + std::to_string(iterations) + " iterations");
+  }
+  const float scale = r.Value<float>();
+  const glm::vec3 centre = r.Value<glm::vec3>();
+
+  TriangleScene scene;
+  scene.Positions.resize(r.Count(sizeof(glm::vec3), "position"));
+  r.Bytes(scene.Positions.data(), scene.Positions.size() * sizeof(glm::vec3));
+  scene.Triangles.resize(r.Count(sizeof(glm::uvec3), "triangle"));
+  r.Bytes(scene.Triangles.data(), scene.Triangles.size() * sizeof(glm::uvec3));
+  r.Array(scene.MaterialIds, "material ids", scene.Triangles.size());
+  scene.Normals.resize(r.Count(sizeof(glm::vec3), "normal"));
+  r.Bytes(scene.Normals.data(), scene.Normals.size() * sizeof(glm::vec3));
+  scene.TextureCoordinates.resize(r.Count(sizeof(glm::vec2), "texture coordinate"));
+  r.Bytes(scene.TextureCoordinates.data(), scene.TextureCoordinates.size() * sizeof(glm::vec2));
+  const std::uint64_t materials = r.Count(48, "material");
+  for (std::uint64_t q = 0; q < materials; ++q)
+  {
+    scene.Materials.push_back(ReadMaterial(r));
+  }
+  for (const glm::uvec3& t : scene.Triangles)
+  {
+    if (t.x >= scene.Positions.size() || t.y >= scene.Positions.size() || t.z >= scene.Positions.size())
+    {
+      r.Fail("a triangle refers to a missing vertex");
+    }
+  }
+  for (std::uint32_t id : scene.MaterialIds)
+  {
+    if (id >= scene.Materials.size())
+    {
+      r.Fail("a triangle refers to a missing material");
+    }
+  }
+
+  std::unique_ptr<LightField> field(new LightField());
+  try
+  {
+    field->Setup(scene, settings, /*normalize=*/false);
+  }
+  catch (const MemoryBudgetError&)
+  {
+    throw;
+  }
+  catch (const std::exception& e)
+  {
+    r.Fail(std::string("its scene or settings are unusable: ") + e.what());
+  }
+  field->Scale = scale;
+  field->Centre = centre;
+  field->IterationsDone = iterations;
+  const std::size_t texels = field->TexelCount();
+  r.Array(field->TotalDiffuse, "total texels", texels);
+  r.Array(field->UnshotDiffuse, "unshot texels", texels);
+  r.Array(field->Capacity, "capacity texels", texels);
+  field->EnergyLog.resize(r.Count(sizeof(LightField::IterationEnergy), "energy record"));
+  r.Bytes(field->EnergyLog.data(), field->EnergyLog.size() * sizeof(LightField::IterationEnergy));
+
+  const std::size_t tiles = static_cast<std::size_t>(settings.TilesPerSide) * settings.TilesPerSide;
+  const std::size_t cellsPerMap = static_cast<std::size_t>(settings.TileSide()) * settings.TileSide();
+  const std::size_t surfaces = field->Surfaces().size();
+  for (std::size_t k = 0; k < field->SubfieldCount(); ++k)
+  {
+    Subfield& f = field->GetSubfield(k);
+    r.Array(f.TileStart, "tile offsets", tiles + 1);
+    const std::uint64_t entries = r.Count(sizeof(TileEntry), "tile entry");
+    if (f.TileStart[0] != 0 || f.TileStart[tiles] != entries)
+    {
+      r.Fail("the tile lists of subfield " + std::to_string(k) + " are inconsistent");
+    }
+    for (std::size_t t = 0; t < tiles; ++t)
+    {
+      if (f.TileStart[t] > f.TileStart[t + 1])
+      {
+        r.Fail("the tile lists of subfield " + std::to_string(k) + " are inconsistent");
+      }
+    }
+    f.Entries.resize(entries);
+    r.Bytes(f.Entries.data(), entries * sizeof(TileEntry));
+    for (std::size_t t = 0; t < tiles; ++t)
+    {
+      for (std::uint32_t e = f.TileStart[t]; e < f.TileStart[t + 1]; ++e)
+      {
+        if (f.Entries[e].Surface >= surfaces || f.Entries[e].Map >= entries ||
+          (e > f.TileStart[t] && f.Entries[e - 1].Surface >= f.Entries[e].Surface))
+        {
+          r.Fail("a tile list of subfield " + std::to_string(k) + " is corrupt");
+        }
+      }
+    }
+    r.Array(f.Depth, "depth cells", entries * cellsPerMap);
+    r.Array(f.Radiance, "radiance cells", entries * cellsPerMap);
+    r.Array(f.UnshotSpecular, "unshot specular cells", field->HasSpecular() ? entries * cellsPerMap : 0);
+  }
+  if (r.BytesLeft() != 0)
+  {
+    r.Fail(std::to_string(r.BytesLeft()) + " bytes are left over after its contents");
+  }
+  if (r.Hash.Value() != header.PayloadChecksum)
+  {
+    throw SnapshotError(Quoted(path) + " is corrupt: its checksum does not match its contents");
+  }
+  return field;
+}
+
+} // namespace vlf
+} // namespace mesolight

@@ -1,0 +1,54 @@
+// Snapshot: a light field on disk after each propagation iteration (seed 002 §2.4.2.1: the
+// propagator writes its state after every iteration and can continue from it).
+//
+// Format (little-endian, version 1): a 48-byte header -- magic "MLVLFSNP", version, byte-order
+// mark, payload size, payload checksum, header checksum -- then the payload: settings,
+// iterations done, the (unit-sphere) scene with its materials, the diffuse textures, the energy
+// log and every subfield's tile lists and maps. Surfaces and directions are rebuilt from the
+// scene and settings on reading. The checksum is a 64-bit multiply-xorshift hash of the payload
+// words.
+//
+// Writing goes to "<path>.tmp-<pid>" in the same directory, is flushed to disk (fsync), then
+// renamed over <path>: a kill at any moment leaves either the previous snapshot or the new one.
+// Reading checks the header, the size (a truncated file is named as such), every count against
+// what the scene and settings imply and against the bytes left, and the checksum; any problem
+// throws SnapshotError with a message saying what is wrong, never a crash.
+#ifndef mesolight_vlf_Snapshot_h
+#define mesolight_vlf_Snapshot_h
+
+#include "LightField.h"
+
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+namespace mesolight
+{
+namespace vlf
+{
+
+class SnapshotError : public std::runtime_error
+{
+public:
+  using std::runtime_error::runtime_error;
+};
+
+constexpr std::uint32_t SnapshotVersion = 1;
+
+// Writes atomically (see above). Throws SnapshotError when the file cannot be written (the
+// previous file, if any, is left untouched).
+void WriteSnapshot(const LightField& field, const std::string& path);
+
+// Reads a snapshot. memoryBudget (bytes, 0 = the one stored) is checked before allocating.
+// Throws SnapshotError for a missing, foreign, truncated, corrupt or incompatible file, and
+// MemoryBudgetError when the field does not fit the budget.
+std::unique_ptr<LightField> ReadSnapshot(const std::string& path, std::uint64_t memoryBudget = 0);
+
+// True when the file exists and starts with the snapshot magic (cheap: reads 8 bytes).
+bool IsSnapshotFile(const std::string& path);
+bool FileExists(const std::string& path);
+
+} // namespace vlf
+} // namespace mesolight
+
+#endif

@@ -1,0 +1,72 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @class   vtkTriangleSceneConverter
+ * @brief   vtkPolyData with material cell arrays <-> mesolight::TriangleScene
+ *
+ * The light field's scenes (mesolight::TriangleScene, vtkRayTracing/core/TriangleScene.h) as
+ * vtkPolyData: triangles, and per cell the material arrays
+ *  - "Diffuse" (3 floats, Kd), "Specular" (3, Ks, perfect specular), "Emission" (3, Ke,
+ *    emitted radiance), "MaterialId" (int, index into the scene's materials),
+ *  - point normals and texture coordinates when the scene has them,
+ *  - field data "MaterialNames" (strings, indexed by MaterialId).
+ *
+ * ToTriangleScene accepts any vtkPolyData: polygons and strips are triangulated (a warning says
+ * how many), vertices and lines are dropped (a warning), missing material arrays get the default
+ * grey material (Kd 0.5, no specular, no emission) with a warning, a 1-component array is taken as
+ * grey. Cells with equal MaterialId share one material (without MaterialId, cells with equal
+ * Diffuse/Specular/Emission do). Errors (no triangles, non-finite points, arrays of the wrong
+ * size, negative colours) go through vtkErrorMacro and return false; warnings through
+ * vtkWarningMacro (observe vtkCommand::ErrorEvent / WarningEvent to catch them).
+ */
+#ifndef vtkTriangleSceneConverter_h
+#define vtkTriangleSceneConverter_h
+
+#include "MesolightVLFModule.h" // For export macro
+#include "vtkObject.h"
+#include "vtkSmartPointer.h" // For ToPolyData
+
+class vtkPolyData;
+namespace mesolight
+{
+struct TriangleScene;
+}
+
+class MESOLIGHTVLF_EXPORT vtkTriangleSceneConverter : public vtkObject
+{
+public:
+  static vtkTriangleSceneConverter* New();
+  vtkTypeMacro(vtkTriangleSceneConverter, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /**
+   * The scene as vtkPolyData with the material arrays above, into `output` (replacing its
+   * contents).
+   */
+  void ToPolyData(const mesolight::TriangleScene& scene, vtkPolyData* output);
+  vtkSmartPointer<vtkPolyData> ToPolyData(const mesolight::TriangleScene& scene);
+
+  /**
+   * `input` as a triangle scene. Returns false (and reports with vtkErrorMacro) when it cannot
+   * be used; `scene` is then left empty.
+   */
+  bool ToTriangleScene(vtkPolyData* input, mesolight::TriangleScene& scene);
+
+  ///@{
+  /**
+   * Number of warnings the last ToTriangleScene call reported.
+   */
+  vtkGetMacro(LastWarningCount, int);
+  ///@}
+
+protected:
+  vtkTriangleSceneConverter() = default;
+  ~vtkTriangleSceneConverter() override = default;
+
+private:
+  vtkTriangleSceneConverter(const vtkTriangleSceneConverter&) = delete;
+  void operator=(const vtkTriangleSceneConverter&) = delete;
+
+  int LastWarningCount = 0;
+};
+
+#endif

@@ -1,0 +1,207 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "vtkVirtualLightField.h"
+
+#include "LightField.h"
+#include "Lookup.h"
+#include "PatchComparison.h"
+#include "Propagation.h"
+#include "Snapshot.h"
+#include "TriangleScene.h"
+#include "vtkTriangleSceneConverter.h"
+
+#include "vtkCellData.h"
+#include "vtkFloatArray.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkSMPTools.h"
+
+#include <glm/geometric.hpp>
+
+vtkStandardNewMacro(vtkVirtualLightField);
+
+vtkVirtualLightField::vtkVirtualLightField() = default;
+vtkVirtualLightField::~vtkVirtualLightField() = default;
+
+const mesolight::vlf::LightField* vtkVirtualLightField::GetLightField() const
+{
+  return this->Field.get();
+}
+
+vtkTypeInt64 vtkVirtualLightField::GetEstimatedBytes() const
+{
+  return this->Field ? static_cast<vtkTypeInt64>(this->Field->Estimate().TotalBytes) : 0;
+}
+
+bool vtkVirtualLightField::ComputeIrradiance(
+  const double point[3], const double normal[3], double irradiance[3]) const
+{
+  if (!this->Field)
+  {
+    return false;
+  }
+  const glm::vec3 n(static_cast<float>(normal[0]), static_cast<float>(normal[1]), static_cast<float>(normal[2]));
+  if (!(glm::length(n) > 0.0f))
+  {
+    return false;
+  }
+  const glm::vec3 p = mesolight::vlf::ToUnit(*this->Field,
+    glm::vec3(static_cast<float>(point[0]), static_cast<float>(point[1]), static_cast<float>(point[2])));
+  const glm::vec3 e = mesolight::vlf::Lookup(*this->Field).Irradiance(p, glm::normalize(n));
+  for (int c = 0; c < 3; ++c)
+  {
+    irradiance[c] = static_cast<double>(e[c]);
+  }
+  return true;
+}
+
+int vtkVirtualLightField::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  namespace vlf = mesolight::vlf;
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  this->Field.reset();
+  if (!input)
+  {
+    vtkErrorMacro("No input scene.");
+    return 0;
+  }
+  vtkNew<vtkTriangleSceneConverter> converter;
+  mesolight::TriangleScene scene;
+  if (!converter->ToTriangleScene(input, scene))
+  {
+    vtkErrorMacro("The input cannot be used as a light field scene (see the converter's message).");
+    return 0;
+  }
+  if (this->Iterations < 0 || this->Iterations > 10000)
+  {
+    vtkErrorMacro("Iterations " << this->Iterations << " is outside [0, 10000].");
+    return 0;
+  }
+  if (this->Directions < 1 || this->MemoryBudget <= 0)
+  {
+    vtkErrorMacro("Directions (" << this->Directions << ") and MemoryBudget (" << this->MemoryBudget
+                                 << ") must be positive.");
+    return 0;
+  }
+  vlf::LightFieldSettings settings;
+  settings.Directions = static_cast<std::size_t>(this->Directions);
+  settings.RaysPerSide = this->RaysPerSide;
+  settings.TilesPerSide = this->Tiles > 0 ? this->Tiles : std::max(1, this->RaysPerSide / 8);
+  settings.MemoryBudget = static_cast<std::uint64_t>(this->MemoryBudget);
+
+  vlf::ParallelFor smp = [](std::size_t count, const std::function<void(std::size_t, std::size_t)>& body) {
+    vtkSMPTools::For(0, static_cast<vtkIdType>(count), 1, [&](vtkIdType begin, vtkIdType end) {
+      body(static_cast<std::size_t>(begin), static_cast<std::size_t>(end));
+    });
+  };
+  const bool snapshots = !this->SnapshotFileName.empty();
+  try
+  {
+    if (snapshots && vlf::FileExists(this->SnapshotFileName) && !vlf::IsSnapshotFile(this->SnapshotFileName))
+    {
+      vtkErrorMacro("'" << this->SnapshotFileName
+                        << "' exists and is not a light field snapshot: it is left alone; choose "
+                           "another SnapshotFileName.");
+      return 0;
+    }
+    std::unique_ptr<vlf::LightField> field;
+    const double buildShare = 0.3;
+    if (snapshots && this->ResumeFromSnapshot && vlf::FileExists(this->SnapshotFileName))
+    {
+      field = vlf::ReadSnapshot(this->SnapshotFileName, settings.MemoryBudget);
+    }
+    else
+    {
+      vlf::ProgressCallbacks build;
+      build.Progress = [this, buildShare](double f) { this->UpdateProgress(buildShare * f); };
+      build.AbortRequested = [this] { return this->GetAbortExecute() != 0; };
+      field = vlf::LightField::Build(scene, settings, smp, build);
+    }
+    vlf::PropagationOptions options;
+    options.Parallel = smp;
+    options.Callbacks.Progress = [this, buildShare](double f) {
+      this->UpdateProgress(buildShare + (1.0 - buildShare) * f);
+    };
+    options.Callbacks.AbortRequested = [this] { return this->GetAbortExecute() != 0; };
+    vlf::Propagate(*field, this->Iterations, options, [&](const vlf::LightField& f) {
+      if (snapshots)
+      {
+        vlf::WriteSnapshot(f, this->SnapshotFileName);
+      }
+    });
+    this->Field = std::move(field);
+  }
+  catch (const vlf::AbortedError&)
+  {
+    vtkWarningMacro("Light field propagation aborted.");
+    return 0;
+  }
+  catch (const std::exception& e)
+  {
+    vtkErrorMacro(<< e.what());
+    return 0;
+  }
+
+  // Output: the scene in world coordinates with the diffuse radiance leaving each surface.
+  const vlf::LightField& field = *this->Field;
+  mesolight::TriangleScene world = field.Scene();
+  for (glm::vec3& p : world.Positions)
+  {
+    p = vlf::ToWorld(field, p);
+  }
+  converter->ToPolyData(world, output);
+  const vtkIdType triangles = static_cast<vtkIdType>(world.TriangleCount());
+  vtkNew<vtkFloatArray> cellRadiance;
+  cellRadiance->SetName("Radiance");
+  cellRadiance->SetNumberOfComponents(3);
+  cellRadiance->SetNumberOfTuples(triangles);
+  vtkNew<vtkFloatArray> pointRadiance;
+  pointRadiance->SetName("Radiance");
+  pointRadiance->SetNumberOfComponents(3);
+  pointRadiance->SetNumberOfTuples(static_cast<vtkIdType>(world.Positions.size()));
+  pointRadiance->Fill(0.0);
+  const mesolight::TriangleScene& unit = field.Scene();
+  for (vtkIdType t = 0; t < triangles; ++t)
+  {
+    const std::uint32_t s = field.SurfaceOfTriangle(static_cast<std::size_t>(t));
+    glm::vec3 mean(0.0f);
+    if (s != vlf::NoSurface)
+    {
+      const glm::vec3 centre =
+        (unit.Vertex(t, 0) + unit.Vertex(t, 1) + unit.Vertex(t, 2)) / 3.0f;
+      mean = field.SampleTexture(field.TotalDiffuse, s, centre);
+      for (int c = 0; c < 3; ++c)
+      {
+        const glm::vec3 corner = field.SampleTexture(field.TotalDiffuse, s, unit.Vertex(t, c));
+        mean += corner;
+        const float rgb[3] = { corner.x, corner.y, corner.z };
+        pointRadiance->SetTypedTuple(static_cast<vtkIdType>(unit.Triangles[t][c]), rgb);
+      }
+      mean /= 4.0f;
+    }
+    const float rgb[3] = { mean.x, mean.y, mean.z };
+    cellRadiance->SetTypedTuple(t, rgb);
+  }
+  output->GetCellData()->AddArray(cellRadiance);
+  output->GetPointData()->AddArray(pointRadiance);
+  return 1;
+}
+
+void vtkVirtualLightField::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Directions: " << this->Directions << "\n";
+  os << indent << "RaysPerSide: " << this->RaysPerSide << "\n";
+  os << indent << "Tiles: " << this->Tiles << (this->Tiles == 0 ? " (RaysPerSide / 8)" : "") << "\n";
+  os << indent << "Iterations: " << this->Iterations << "\n";
+  os << indent << "MemoryBudget: " << this->MemoryBudget << " bytes\n";
+  os << indent << "SnapshotFileName: " << (this->SnapshotFileName.empty() ? "(none)" : this->SnapshotFileName) << "\n";
+  os << indent << "ResumeFromSnapshot: " << this->ResumeFromSnapshot << "\n";
+  os << indent << "LightField: "
+     << (this->Field ? std::to_string(this->Field->IterationsDone) + " iterations done" : "(none)") << "\n";
+}

@@ -1,0 +1,126 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @class   vtkVirtualLightField
+ * @brief   propagates a scene's light into a virtual light field (seed 002 §2.4)
+ *
+ * Input: a scene as vtkPolyData with the material cell arrays of vtkTriangleSceneConverter
+ * ("Diffuse", "Specular", "Emission", "MaterialId"), e.g. from vtkCornellBoxSource or
+ * vtkLightFieldSceneReader. The filter builds the light field (Directions parallel subfields of
+ * RaysPerSide x RaysPerSide lines in Tiles x Tiles tiles, mesolight::vlf::LightField) and runs
+ * Iterations shooting iterations (mesolight::vlf::Propagate) on vtkSMPTools threads.
+ *
+ * Output: the scene's triangles (world coordinates, material arrays kept) with the diffuse
+ * radiance leaving each surface -- the per-surface total diffuse textures, the walkthrough's
+ * progressive mode (seed §2.4.2.2.3) -- as cell data "Radiance" (mean over the triangle's corners
+ * and centre) and point data "Radiance" (at each vertex), 3 components, linear radiance.
+ *
+ * Memory is estimated before anything is allocated; above MemoryBudget the filter fails with a
+ * message saying how much it would need. With a SnapshotFileName a snapshot is written after
+ * every iteration (atomically); with ResumeFromSnapshot an existing snapshot of that name is
+ * read and propagation continues from it up to Iterations. The filter refuses to replace a file
+ * that is not a light field snapshot. Progress goes through UpdateProgress; AbortExecute stops
+ * between rounds of subfields.
+ *
+ * After an update, GetLightField() gives the field for lookups (mesolight::vlf::Lookup), and
+ * ComputeIrradiance() the irradiance at any world point and normal (the movable-object query).
+ */
+#ifndef vtkVirtualLightField_h
+#define vtkVirtualLightField_h
+
+#include "MesolightVLFModule.h" // For export macro
+#include "vtkPolyDataAlgorithm.h"
+
+#include <memory> // For std::unique_ptr
+#include <string> // For std::string
+
+namespace mesolight
+{
+namespace vlf
+{
+class LightField;
+}
+}
+
+class MESOLIGHTVLF_EXPORT vtkVirtualLightField : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkVirtualLightField* New();
+  vtkTypeMacro(vtkVirtualLightField, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /** Directions of the subfields: 2 n^2 + 1 (513, 2049, 8193; default 513). */
+  vtkSetMacro(Directions, int);
+  vtkGetMacro(Directions, int);
+  ///@}
+
+  ///@{
+  /** Lines per subfield side (default 32). */
+  vtkSetMacro(RaysPerSide, int);
+  vtkGetMacro(RaysPerSide, int);
+  ///@}
+
+  ///@{
+  /** Tiles per subfield side; RaysPerSide must be a multiple. 0 (default) = RaysPerSide / 8. */
+  vtkSetMacro(Tiles, int);
+  vtkGetMacro(Tiles, int);
+  ///@}
+
+  ///@{
+  /** Shooting iterations (default 4). */
+  vtkSetMacro(Iterations, int);
+  vtkGetMacro(Iterations, int);
+  ///@}
+
+  ///@{
+  /** Memory budget in bytes (default 4 GiB). */
+  vtkSetMacro(MemoryBudget, vtkTypeInt64);
+  vtkGetMacro(MemoryBudget, vtkTypeInt64);
+  ///@}
+
+  ///@{
+  /** Snapshot written after every iteration (none when empty). */
+  vtkSetStdStringFromCharMacro(SnapshotFileName);
+  vtkGetCharFromStdStringMacro(SnapshotFileName);
+  ///@}
+
+  ///@{
+  /** Continue from an existing snapshot of SnapshotFileName (default off). */
+  vtkSetMacro(ResumeFromSnapshot, bool);
+  vtkGetMacro(ResumeFromSnapshot, bool);
+  vtkBooleanMacro(ResumeFromSnapshot, bool);
+  ///@}
+
+  /** The field of the last successful update (nullptr before). */
+  const mesolight::vlf::LightField* GetLightField() const;
+
+  /**
+   * Irradiance at a world point with a unit normal, gathered from the field (seed §3.6).
+   * False before a successful update.
+   */
+  bool ComputeIrradiance(const double point[3], const double normal[3], double irradiance[3]) const;
+
+  /** Bytes the last update's field needs (its memory estimate), 0 before. */
+  vtkTypeInt64 GetEstimatedBytes() const;
+
+protected:
+  vtkVirtualLightField();
+  ~vtkVirtualLightField() override;
+
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+private:
+  vtkVirtualLightField(const vtkVirtualLightField&) = delete;
+  void operator=(const vtkVirtualLightField&) = delete;
+
+  int Directions = 513;
+  int RaysPerSide = 32;
+  int Tiles = 0;
+  int Iterations = 4;
+  vtkTypeInt64 MemoryBudget = vtkTypeInt64(4) << 30;
+  std::string SnapshotFileName;
+  bool ResumeFromSnapshot = false;
+  std::unique_ptr<mesolight::vlf::LightField> Field;
+};
+
+#endif
