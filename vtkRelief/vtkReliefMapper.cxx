@@ -1,6 +1,7 @@
 #include "vtkReliefMapper.h"
 
 #include "vtkAlgorithmOutput.h"
+#include "vtkAttachReliefTexture.h"
 #include "vtkExecutive.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
@@ -117,9 +118,19 @@ void vtkReliefMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* actor)
   {
     return;
   }
+  // Without connections, a relief texture and light set attached as field data are used.
+  vtkSmartPointer<vtkImageData> relief = this->GetReliefTexture();
+  if (!relief)
+  {
+    relief = vtkAttachReliefTexture::GetAttachedReliefTexture(this->CurrentInput);
+  }
+  vtkSmartPointer<vtkImageData> lights = this->GetLightSet();
+  if (!lights)
+  {
+    lights = vtkAttachReliefTexture::GetAttachedLightSet(this->CurrentInput);
+  }
   if (!this->Shading->StartDraw(
-        vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow()), this->GetReliefTexture(),
-        this->GetLightSet(), actor))
+        vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow()), relief, lights, actor))
   {
     return;
   }

@@ -29,11 +29,12 @@
  * normals; if the relief texture carries a different "MesolightDepthScale" field value, the mapper
  * rescales its normals so shading stays consistent with the marched geometry.
  *
- * The relief texture comes either as data (SetReliefTextureData) or from a pipeline
- * (SetReliefTextureConnection, input port 1).
+ * The relief texture comes either as data (SetReliefTextureData), from a pipeline
+ * (SetReliefTextureConnection, input port 1), or attached to the input polydata as field data
+ * (vtkAttachReliefTexture); likewise the light set (input port 2).
  *
  * The relief work (settings, textures, shader edits, uniforms) is done by a vtkReliefShading
- * (GetShading()) that other mappers can share; the setters here forward to it.
+ * (GetShading()) that vtkCompositeReliefMapper shares; the setters here forward to it.
  */
 
 #ifndef vtkReliefMapper_h
@@ -275,7 +276,7 @@ public:
    */
   static constexpr int MaximumNumberOfLights = vtkReliefShading::MaximumNumberOfLights;
 
-  /** The relief work, shareable with other mappers; holds every setting above. */
+  /** The relief work shared with vtkCompositeReliefMapper; holds every setting above. */
   vtkReliefShading* GetShading() { return this->Shading; }
 
   /** Includes the shading's modification time. */

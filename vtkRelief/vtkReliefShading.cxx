@@ -680,7 +680,8 @@ bool vtkReliefShading::StartDraw(
   this->Drawing = false;
   if (!relief)
   {
-    vtkErrorMacro(<< "No relief texture: give the mapper the output of vtkReliefTextureFilter.");
+    vtkErrorMacro(<< "No relief texture: give the mapper the output of vtkReliefTextureFilter "
+                     "(or attach it to the polydata with vtkAttachReliefTexture).");
     return false;
   }
   if (!this->UpdateReliefTexture(renWin, relief) || !this->UpdateLightSet(renWin, lights))

@@ -1,15 +1,15 @@
 /**
  * @class   vtkReliefShading
- * @brief   The relief rendering of vtkReliefMapper, shareable by other mappers: the
+ * @brief   The relief rendering shared by vtkReliefMapper and vtkCompositeReliefMapper: the
  *          settings, the GPU textures (relief texture, min-depth pyramid, light set), the
  *          prepared geometry, the shader source edits and the uniforms.
  *
  * A relief surface is drawn by a vtkOpenGLPolyDataMapper whose shaders are edited in two steps
  * around the superclass' own edits (ReplaceShaderValues), with extra textures bound around the
  * draw (RenderPieceStart/Finish) and extra uniforms set per draw (SetMapperShaderParameters).
- * vtkReliefMapper is such a mapper; a composite mapper's helper (vtkCompositeMapperHelper2,
- * how ParaView's geometry representations draw) can be another. Each delegates every
- * relief-specific step to a vtkReliefShading, so they draw the same pixels.
+ * vtkReliefMapper is such a mapper; vtkCompositeReliefMapper's helper (a
+ * vtkCompositeMapperHelper2, how ParaView's geometry representations draw) is another. Both
+ * delegate every relief-specific step to one vtkReliefShading, so the two draw the same pixels.
  * See vtkReliefMapper for what the settings mean.
  */
 
