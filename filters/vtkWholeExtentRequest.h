@@ -9,12 +9,12 @@
 
 namespace mesolight
 {
-/** Sets the update extent of input port 0's first connection to its whole extent. */
-inline void RequestWholeInputExtent(vtkInformationVector** inputVector)
+/** Sets the update extent of an input port's first connection to its whole extent. */
+inline void RequestWholeInputExtent(vtkInformationVector** inputVector, int port = 0)
 {
-  if (inputVector[0]->GetNumberOfInformationObjects() > 0)
+  if (inputVector[port]->GetNumberOfInformationObjects() > 0)
   {
-    vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
+    vtkInformation* inInfo = inputVector[port]->GetInformationObject(0);
     int wholeExtent[6];
     inInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), wholeExtent);
     inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), wholeExtent, 6);

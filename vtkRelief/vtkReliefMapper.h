@@ -29,8 +29,12 @@
  * normals; if the relief texture carries a different "MesolightDepthScale" field value, the mapper
  * rescales its normals so shading stays consistent with the marched geometry.
  *
- * The relief texture comes either as data (SetReliefTextureData) or from a pipeline
- * (SetReliefTextureConnection, input port 1).
+ * The relief texture comes either as data (SetReliefTextureData), from a pipeline
+ * (SetReliefTextureConnection, input port 1), or attached to the input polydata as field data
+ * (vtkAttachReliefTexture); likewise the light set (input port 2).
+ *
+ * The relief work (settings, textures, shader edits, uniforms) is done by a vtkReliefShading
+ * (GetShading()) that vtkCompositeReliefMapper shares; the setters here forward to it.
  */
 
 #ifndef vtkReliefMapper_h
@@ -38,17 +42,13 @@
 
 #include "MesolightReliefModule.h" // for export macro
 #include "vtkOpenGLPolyDataMapper.h"
-#include "vtkPolyData.h"     // for GetPreparedInput
-#include "vtkSmartPointer.h" // for members
-
-#include <map>    // for ShaderKeys
-#include <string> // for ShaderKey
-#include <vector> // for UpdatePyramid
+#include "vtkNew.h"            // for Shading
+#include "vtkPolyData.h"       // for GetPreparedInput
+#include "vtkReliefShading.h"  // for the forwarded settings
+#include "vtkSmartPointer.h"   // for members
 
 class vtkAlgorithmOutput;
 class vtkImageData;
-class vtkOpenGLRenderWindow;
-class vtkTextureObject;
 
 class MESOLIGHTRELIEF_EXPORT vtkReliefMapper : public vtkOpenGLPolyDataMapper
 {
@@ -69,38 +69,38 @@ public:
    */
   enum MethodType
   {
-    TextureMapping = 0,
-    Bump,
-    Parallax,
-    ParallaxOffsetLimiting,
-    ParallaxSlope,
-    IterativeParallax,
-    BinarySearch,
-    Secant,
-    LinearSearch,
-    ParallaxOcclusion,
-    Relief,
-    Interval,
-    RelaxedConeBinary,
-    RelaxedConeInterval,
-    ConservativeCone,
-    MaximumMipmap,
-    NumberOfMethods
+    TextureMapping = vtkReliefShading::TextureMapping,
+    Bump = vtkReliefShading::Bump,
+    Parallax = vtkReliefShading::Parallax,
+    ParallaxOffsetLimiting = vtkReliefShading::ParallaxOffsetLimiting,
+    ParallaxSlope = vtkReliefShading::ParallaxSlope,
+    IterativeParallax = vtkReliefShading::IterativeParallax,
+    BinarySearch = vtkReliefShading::BinarySearch,
+    Secant = vtkReliefShading::Secant,
+    LinearSearch = vtkReliefShading::LinearSearch,
+    ParallaxOcclusion = vtkReliefShading::ParallaxOcclusion,
+    Relief = vtkReliefShading::Relief,
+    Interval = vtkReliefShading::Interval,
+    RelaxedConeBinary = vtkReliefShading::RelaxedConeBinary,
+    RelaxedConeInterval = vtkReliefShading::RelaxedConeInterval,
+    ConservativeCone = vtkReliefShading::ConservativeCone,
+    MaximumMipmap = vtkReliefShading::MaximumMipmap,
+    NumberOfMethods = vtkReliefShading::NumberOfMethods
   };
 
   enum ConeMapKind
   {
-    NoConeMap = 0,
-    RelaxedConeMap = 1,
-    ConservativeConeMap = 2
+    NoConeMap = vtkReliefShading::NoConeMap,
+    RelaxedConeMap = vtkReliefShading::RelaxedConeMap,
+    ConservativeConeMap = vtkReliefShading::ConservativeConeMap
   };
 
   ///@{
   /**
    * Height-field intersection method. Default: Relief.
    */
-  vtkSetClampMacro(Method, int, TextureMapping, NumberOfMethods - 1);
-  vtkGetMacro(Method, int);
+  void SetMethod(int value) { this->Shading->SetMethod(value); }
+  int GetMethod() { return this->Shading->GetMethod(); }
   void SetMethodToTextureMapping() { this->SetMethod(TextureMapping); }
   void SetMethodToSteepParallax() { this->SetMethod(LinearSearch); }
   void SetMethodToParallaxOcclusion() { this->SetMethod(ParallaxOcclusion); }
@@ -108,11 +108,11 @@ public:
   /** Short names used on the command line: "texture", "bump", "parallax", "parallax-limit",
    * "parallax-slope", "iterative-parallax", "binary", "secant", "linear" (also "steep"), "pom",
    * "relief", "interval", "relaxed-cone", "relaxed-cone-interval", "cone", "max-mipmap". */
-  static const char* GetMethodName(int method);
+  static const char* GetMethodName(int method) { return vtkReliefShading::GetMethodName(method); }
   /** Set the method from its name; false if unknown. */
   bool SetMethodByName(const char* name);
   /** The cone map a method needs in the relief texture (ConeMapKind). */
-  static int GetRequiredConeMap(int method);
+  static int GetRequiredConeMap(int method) { return vtkReliefShading::GetRequiredConeMap(method); }
   ///@}
 
   ///@{
@@ -122,10 +122,10 @@ public:
    * LinearSteps counts iterations, for cone stepping cone steps, and for MaximumMipmap it is
    * the iteration budget of the traversal (give it 64 or more).
    */
-  vtkSetClampMacro(LinearSteps, int, 1, 1024);
-  vtkGetMacro(LinearSteps, int);
-  vtkSetClampMacro(RefinementSteps, int, 0, 64);
-  vtkGetMacro(RefinementSteps, int);
+  void SetLinearSteps(int value) { this->Shading->SetLinearSteps(value); }
+  int GetLinearSteps() { return this->Shading->GetLinearSteps(); }
+  void SetRefinementSteps(int value) { this->Shading->SetRefinementSteps(value); }
+  int GetRefinementSteps() { return this->Shading->GetRefinementSteps(); }
   ///@}
 
   ///@{
@@ -133,11 +133,12 @@ public:
    * View-angle adaptive step counts (Tatarchuk 2006): LinearSteps at grazing angles down to
    * MinimumSteps head-on. Default off.
    */
-  vtkSetMacro(AdaptiveSteps, bool);
-  vtkGetMacro(AdaptiveSteps, bool);
-  vtkBooleanMacro(AdaptiveSteps, bool);
-  vtkSetClampMacro(MinimumSteps, int, 1, 1024);
-  vtkGetMacro(MinimumSteps, int);
+  void SetAdaptiveSteps(bool value) { this->Shading->SetAdaptiveSteps(value); }
+  bool GetAdaptiveSteps() { return this->Shading->GetAdaptiveSteps(); }
+  void AdaptiveStepsOn() { this->SetAdaptiveSteps(true); }
+  void AdaptiveStepsOff() { this->SetAdaptiveSteps(false); }
+  void SetMinimumSteps(int value) { this->Shading->SetMinimumSteps(value); }
+  int GetMinimumSteps() { return this->Shading->GetMinimumSteps(); }
   ///@}
 
   ///@{
@@ -146,9 +147,10 @@ public:
    * mipmaps), so distant relief is filtered rather than aliased. Cone ratios are always read at
    * the base level. Default off.
    */
-  vtkSetMacro(LevelOfDetail, bool);
-  vtkGetMacro(LevelOfDetail, bool);
-  vtkBooleanMacro(LevelOfDetail, bool);
+  void SetLevelOfDetail(bool value) { this->Shading->SetLevelOfDetail(value); }
+  bool GetLevelOfDetail() { return this->Shading->GetLevelOfDetail(); }
+  void LevelOfDetailOn() { this->SetLevelOfDetail(true); }
+  void LevelOfDetailOff() { this->SetLevelOfDetail(false); }
   ///@}
 
   ///@{
@@ -156,46 +158,55 @@ public:
    * Depth of depth = 1 relative to the world width of the texture (dimensionless, default 0.05).
    * 0 renders a flat (normal-mapped) surface. Clamped to [0, 10]; NaN is refused with an error.
    */
-  void SetDepthScale(double depthScale);
-  vtkGetMacro(DepthScale, double);
+  void SetDepthScale(double depthScale)
+  {
+    this->Shading->SetDepthScale(depthScale);
+  }
+  double GetDepthScale() { return this->Shading->GetDepthScale(); }
   ///@}
 
   ///@{
   /** Hard self-shadowing toward each light by marching the height field. Default on. */
-  vtkSetMacro(SelfShadowing, bool);
-  vtkGetMacro(SelfShadowing, bool);
-  vtkBooleanMacro(SelfShadowing, bool);
+  void SetSelfShadowing(bool value) { this->Shading->SetSelfShadowing(value); }
+  bool GetSelfShadowing() { return this->Shading->GetSelfShadowing(); }
+  void SelfShadowingOn() { this->SetSelfShadowing(true); }
+  void SelfShadowingOff() { this->SetSelfShadowing(false); }
   ///@}
 
   ///@{
   /** Discard fragments whose hit point leaves the [0,1]^2 texture domain. Default on. */
-  vtkSetMacro(Silhouettes, bool);
-  vtkGetMacro(Silhouettes, bool);
-  vtkBooleanMacro(Silhouettes, bool);
+  void SetSilhouettes(bool value) { this->Shading->SetSilhouettes(value); }
+  bool GetSilhouettes() { return this->Shading->GetSilhouettes(); }
+  void SilhouettesOn() { this->SetSilhouettes(true); }
+  void SilhouettesOff() { this->SetSilhouettes(false); }
   ///@}
 
   ///@{
   /** Write gl_FragDepth from the hit point instead of the mesh surface. Default on. */
-  vtkSetMacro(WriteDepth, bool);
-  vtkGetMacro(WriteDepth, bool);
-  vtkBooleanMacro(WriteDepth, bool);
+  void SetWriteDepth(bool value) { this->Shading->SetWriteDepth(value); }
+  bool GetWriteDepth() { return this->Shading->GetWriteDepth(); }
+  void WriteDepthOn() { this->SetWriteDepth(true); }
+  void WriteDepthOff() { this->SetWriteDepth(false); }
   ///@}
 
   ///@{
   /** Repeat the relief texture outside [0,1] (tiling) instead of clamping. Default off. */
-  vtkSetMacro(RepeatTexture, bool);
-  vtkGetMacro(RepeatTexture, bool);
-  vtkBooleanMacro(RepeatTexture, bool);
+  void SetRepeatTexture(bool value) { this->Shading->SetRepeatTexture(value); }
+  bool GetRepeatTexture() { return this->Shading->GetRepeatTexture(); }
+  void RepeatTextureOn() { this->SetRepeatTexture(true); }
+  void RepeatTextureOff() { this->SetRepeatTexture(false); }
   ///@}
 
   enum OutputType
   {
-    ShadedOutput = 0,          ///< the lit surface (default)
-    HitUOutput = 1,            ///< hit u as 24-bit fixed point in RGB, for measurements
-    HitVOutput = 2,            ///< hit v, likewise
-    LightVisibilityOutput = 3, ///< white where the first light reaches the hit point, else black
-    NonFiniteCheckOutput = 4,  ///< red where a NaN or Inf arose on the way to the colour, else green
-    NumberOfOutputs
+    ShadedOutput = vtkReliefShading::ShadedOutput, ///< the lit surface (default)
+    HitUOutput = vtkReliefShading::HitUOutput, ///< hit u as 24-bit fixed point in RGB
+    HitVOutput = vtkReliefShading::HitVOutput, ///< hit v, likewise
+    /// white where the first light reaches the hit point, else black
+    LightVisibilityOutput = vtkReliefShading::LightVisibilityOutput,
+    /// red where a NaN or Inf arose on the way to the colour, else green
+    NonFiniteCheckOutput = vtkReliefShading::NonFiniteCheckOutput,
+    NumberOfOutputs = vtkReliefShading::NumberOfOutputs
   };
 
   ///@{
@@ -203,8 +214,8 @@ public:
    * What the fragments show: the shaded surface, or measurement outputs that tests and
    * benchmarks compare with exact CPU references (see mesolight::DecodeHitCoordinate).
    */
-  vtkSetClampMacro(Output, int, ShadedOutput, NumberOfOutputs - 1);
-  vtkGetMacro(Output, int);
+  void SetOutput(int value) { this->Shading->SetOutput(value); }
+  int GetOutput() { return this->Shading->GetOutput(); }
   ///@}
 
   ///@{
@@ -231,11 +242,12 @@ public:
 
   ///@{
   /** Scale of the light-set shading (default 1) and Reinhard tone mapping (default off). */
-  vtkSetClampMacro(Exposure, double, 0.0, 1e6);
-  vtkGetMacro(Exposure, double);
-  vtkSetMacro(ToneMapping, bool);
-  vtkGetMacro(ToneMapping, bool);
-  vtkBooleanMacro(ToneMapping, bool);
+  void SetExposure(double value) { this->Shading->SetExposure(value); }
+  double GetExposure() { return this->Shading->GetExposure(); }
+  void SetToneMapping(bool value) { this->Shading->SetToneMapping(value); }
+  bool GetToneMapping() { return this->Shading->GetToneMapping(); }
+  void ToneMappingOn() { this->SetToneMapping(true); }
+  void ToneMappingOff() { this->SetToneMapping(false); }
   ///@}
 
   ///@{
@@ -245,23 +257,30 @@ public:
    * with ShadowedLights = K > 0 only the K strongest lights facing a pixel march their shadows,
    * the rest are weighted by the visible fraction of those K (default 0: all march).
    */
-  vtkSetClampMacro(LightSetThreshold, double, 0.0, 1.0);
-  vtkGetMacro(LightSetThreshold, double);
-  vtkSetClampMacro(ShadowedLights, int, 0, 1 << 16);
-  vtkGetMacro(ShadowedLights, int);
+  void SetLightSetThreshold(double value) { this->Shading->SetLightSetThreshold(value); }
+  double GetLightSetThreshold() { return this->Shading->GetLightSetThreshold(); }
+  void SetShadowedLights(int value) { this->Shading->SetShadowedLights(value); }
+  int GetShadowedLights() { return this->Shading->GetShadowedLights(); }
   /**
    * Lights behind the shading normal contribute nothing and skip their shadow march (default
    * on). Off marches them anyway, only to measure what the culling saves.
    */
-  vtkSetMacro(ShadowCulling, bool);
-  vtkGetMacro(ShadowCulling, bool);
-  vtkBooleanMacro(ShadowCulling, bool);
+  void SetShadowCulling(bool value) { this->Shading->SetShadowCulling(value); }
+  bool GetShadowCulling() { return this->Shading->GetShadowCulling(); }
+  void ShadowCullingOn() { this->SetShadowCulling(true); }
+  void ShadowCullingOff() { this->SetShadowCulling(false); }
   ///@}
 
   /**
    * Maximum number of VTK lights shaded per fragment; further lights are ignored with a warning.
    */
-  static constexpr int MaximumNumberOfLights = 8;
+  static constexpr int MaximumNumberOfLights = vtkReliefShading::MaximumNumberOfLights;
+
+  /** The relief work shared with vtkCompositeReliefMapper; holds every setting above. */
+  vtkReliefShading* GetShading() { return this->Shading; }
+
+  /** Includes the shading's modification time. */
+  vtkMTimeType GetMTime() override;
 
   void ReleaseGraphicsResources(vtkWindow* win) override;
 
@@ -282,62 +301,9 @@ protected:
     std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
   void SetMapperShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
 
-  /** Adds normals/tangents when missing; null (with an error) if the input cannot be used. */
-  vtkPolyData* PrepareInput(vtkPolyData* input);
-  /** Uploads the relief texture when it changed; false (with an error) if unusable. */
-  bool UpdateReliefTexture(vtkRenderer* ren);
-  void SetLightUniforms(vtkShaderProgram* program, vtkRenderer* ren);
-  /** Options compiled into the shader; a change rebuilds it. */
-  std::string ShaderKey() const;
-
-  int Method = Relief;
-  int LinearSteps = 10;
-  int RefinementSteps = 8;
-  double DepthScale = 0.05;
-  bool SelfShadowing = true;
-  bool Silhouettes = true;
-  bool WriteDepth = true;
-  bool RepeatTexture = false;
-  int Output = ShadedOutput;
-  bool AdaptiveSteps = false;
-  int MinimumSteps = 4;
-  bool LevelOfDetail = false;
-  bool ConePacked = false; // the relief texture carries cone ratios in B (vtkConeMapFilter)
-  int ConeType = NoConeMap;
-  bool UploadedWithMipmaps = false;
-  vtkSmartPointer<vtkTextureObject> PyramidTextureObject;
-  int PyramidLevels = 0;
-  std::vector<int> PyramidSizes; // cells per level, (w, h) pairs
-  bool UpdatePyramid(vtkOpenGLRenderWindow* renWin, const std::vector<float>& depth);
-  /** Uploads the light set when it changed; false (with an error) if unusable. */
-  bool UpdateLightSet(vtkOpenGLRenderWindow* renWin);
-  double Exposure = 1.0;
-  bool ToneMapping = false;
-  double LightSetThreshold = 0.0;
-  int ShadowedLights = 0;
-  bool ShadowCulling = true;
-  vtkSmartPointer<vtkTextureObject> LightSetTextureObject;
-  vtkImageData* LightSetUploaded = nullptr;
-  vtkMTimeType LightSetUploadTime = 0;
-  int LightSetCount = 0;
-  float LightSetMaximum = 0.0f; // luminance of the strongest light
-  bool HasLightSet = false;
-
-  vtkSmartPointer<vtkImageData> ReliefTextureData;
-  vtkSmartPointer<vtkPolyData> PreparedInput;
-  vtkMTimeType PreparedInputSourceTime = 0;
-  vtkPolyData* PreparedInputSource = nullptr;
-
-  vtkSmartPointer<vtkTextureObject> ReliefTextureObject;
-  vtkMTimeType ReliefTextureUploadTime = 0;
-  vtkImageData* ReliefTextureUploaded = nullptr;
-  int ReliefTextureSize[2] = { 0, 0 };
-  double BakedDepthScale = 0.0; // 0 = unknown: normals taken as consistent with DepthScale
-  bool ReliefTextureReady = false;
-  bool WarnedTooManyLights = false;
-  bool HasAlbedoTexture = false;
+  vtkNew<vtkReliefShading> Shading;
+  vtkPolyData* PreparedInput = nullptr;
   bool ReadyToDraw = false;
-  std::map<const vtkOpenGLHelper*, std::string> ShaderKeys;
 
 private:
   vtkReliefMapper(const vtkReliefMapper&) = delete;

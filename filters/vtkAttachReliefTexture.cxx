@@ -1,0 +1,203 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "vtkAttachReliefTexture.h"
+
+#include "vtkDataArray.h"
+#include "vtkDataSet.h"
+#include "vtkFieldData.h"
+#include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkIntArray.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkWholeExtentRequest.h"
+
+#include <string>
+
+vtkStandardNewMacro(vtkAttachReliefTexture);
+
+namespace
+{
+// Field-data names: <prefix>, <prefix>Size, and the image's own field arrays under
+// <prefix><name without "Mesolight">.
+const char* const ReliefPrefix = "MesolightReliefTexture";
+const char* const LightSetPrefix = "MesolightLightSet";
+const char* const ImageFieldArrays[] = { "MesolightDepthScale", "MesolightConeType" };
+
+// Adds image's scalars (shared, not copied) and size under prefix; false if it has none.
+bool Attach(vtkImageData* image, const char* prefix, vtkFieldData* field)
+{
+  vtkDataArray* scalars = image ? image->GetPointData()->GetScalars() : nullptr;
+  int dims[3] = { 0, 0, 0 };
+  if (image)
+  {
+    image->GetDimensions(dims);
+  }
+  if (!scalars || dims[0] < 1 || dims[1] < 1 || dims[2] != 1)
+  {
+    return false;
+  }
+  vtkSmartPointer<vtkDataArray> texels = vtkSmartPointer<vtkDataArray>::Take(scalars->NewInstance());
+  texels->ShallowCopy(scalars); // the same memory under our name
+  texels->SetName(prefix);
+  field->AddArray(texels);
+  vtkNew<vtkIntArray> size;
+  size->SetName((std::string(prefix) + "Size").c_str());
+  size->InsertNextValue(dims[0]);
+  size->InsertNextValue(dims[1]);
+  field->AddArray(size);
+  for (const char* name : ImageFieldArrays)
+  {
+    if (vtkAbstractArray* a = image->GetFieldData()->GetAbstractArray(name))
+    {
+      vtkSmartPointer<vtkAbstractArray> copy = vtkSmartPointer<vtkAbstractArray>::Take(a->NewInstance());
+      copy->DeepCopy(a);
+      copy->SetName((std::string(prefix) + (name + 9)).c_str()); // drop "Mesolight"
+      field->AddArray(copy);
+    }
+  }
+  return true;
+}
+
+vtkSmartPointer<vtkImageData> Detach(vtkDataObject* data, const char* prefix)
+{
+  vtkFieldData* field = data ? data->GetFieldData() : nullptr;
+  if (!field)
+  {
+    return nullptr;
+  }
+  vtkDataArray* texels = field->GetArray(prefix);
+  vtkDataArray* size = field->GetArray((std::string(prefix) + "Size").c_str());
+  if (!texels || !size || size->GetNumberOfValues() < 2)
+  {
+    return nullptr;
+  }
+  const int w = static_cast<int>(size->GetComponent(0, 0));
+  const int h = static_cast<int>(size->GetComponent(1, 0));
+  if (w < 1 || h < 1 || texels->GetNumberOfTuples() != static_cast<vtkIdType>(w) * h)
+  {
+    return nullptr;
+  }
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(w, h, 1);
+  image->GetPointData()->SetScalars(texels); // shared: uploads are keyed by this array
+  for (const char* name : ImageFieldArrays)
+  {
+    if (vtkAbstractArray* a = field->GetAbstractArray((std::string(prefix) + (name + 9)).c_str()))
+    {
+      vtkSmartPointer<vtkAbstractArray> copy = vtkSmartPointer<vtkAbstractArray>::Take(a->NewInstance());
+      copy->DeepCopy(a);
+      copy->SetName(name);
+      image->GetFieldData()->AddArray(copy);
+    }
+  }
+  return image;
+}
+} // namespace
+
+//------------------------------------------------------------------------------
+vtkAttachReliefTexture::vtkAttachReliefTexture()
+{
+  this->SetNumberOfInputPorts(3);
+}
+
+//------------------------------------------------------------------------------
+void vtkAttachReliefTexture::SetReliefTextureConnection(vtkAlgorithmOutput* output)
+{
+  this->SetInputConnection(1, output);
+}
+
+//------------------------------------------------------------------------------
+void vtkAttachReliefTexture::SetLightSetConnection(vtkAlgorithmOutput* output)
+{
+  this->SetInputConnection(2, output);
+}
+
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkImageData> vtkAttachReliefTexture::GetAttachedReliefTexture(vtkDataObject* data)
+{
+  return Detach(data, ReliefPrefix);
+}
+
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkImageData> vtkAttachReliefTexture::GetAttachedLightSet(vtkDataObject* data)
+{
+  return Detach(data, LightSetPrefix);
+}
+
+//------------------------------------------------------------------------------
+int vtkAttachReliefTexture::FillInputPortInformation(int port, vtkInformation* info)
+{
+  if (port == 0)
+  {
+    info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataSet");
+    return 1;
+  }
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkImageData");
+  if (port == 2)
+  {
+    info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+  }
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkAttachReliefTexture::RequestUpdateExtent(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  // The surface gets the requested piece; the textures are needed whole on every piece.
+  this->Superclass::RequestUpdateExtent(request, inputVector, outputVector);
+  mesolight::RequestWholeInputExtent(inputVector, 1);
+  mesolight::RequestWholeInputExtent(inputVector, 2);
+  for (int port = 1; port < 3; ++port)
+  {
+    if (inputVector[port]->GetNumberOfInformationObjects() > 0)
+    {
+      vtkInformation* info = inputVector[port]->GetInformationObject(0);
+      info->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), 0);
+      info->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), 1);
+    }
+  }
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkAttachReliefTexture::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkDataSet* input = vtkDataSet::GetData(inputVector[0], 0);
+  vtkImageData* relief = vtkImageData::GetData(inputVector[1], 0);
+  vtkImageData* lights =
+    inputVector[2]->GetNumberOfInformationObjects() > 0 ? vtkImageData::GetData(inputVector[2], 0) : nullptr;
+  vtkDataSet* output = vtkDataSet::GetData(outputVector, 0);
+  if (!input || !output)
+  {
+    vtkErrorMacro(<< "No input surface.");
+    return 0;
+  }
+  output->ShallowCopy(input);
+  vtkNew<vtkFieldData> field; // the input's field data stays untouched
+  field->ShallowCopy(input->GetFieldData());
+  output->SetFieldData(field);
+  if (!Attach(relief, ReliefPrefix, field))
+  {
+    vtkErrorMacro(<< "The relief texture (input port 1) must be a non-empty 2D image with point "
+                     "scalars, as vtkReliefTextureFilter makes it.");
+    return 0;
+  }
+  if (lights && !Attach(lights, LightSetPrefix, field))
+  {
+    vtkErrorMacro(<< "The light set (input port 2) must be a 2D image with point scalars, as "
+                     "vtkMedianCutLights makes it (output port 1).");
+    return 0;
+  }
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkAttachReliefTexture::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+}

@@ -1,0 +1,59 @@
+/**
+ * @class   vtkReliefSurfaceRepresentation
+ * @brief   ParaView's "Relief Surface": a surface representation that draws polydata as relief
+ *          surfaces with vtkCompositeReliefMapper.
+ *
+ * The relief texture and the optional light set come with the data, attached as field data by
+ * vtkAttachReliefTexture ("Attach Relief Texture" filter), so every MPI rank draws its piece
+ * with the whole texture and writes the relief's depth, which IceT composites.
+ * Each setting is forwarded to the mapper and the LOD mapper (their vtkReliefShading).
+ */
+
+#ifndef vtkReliefSurfaceRepresentation_h
+#define vtkReliefSurfaceRepresentation_h
+
+#include "MesolightParaViewReliefModule.h" // for export macro
+#include "vtkGeometryRepresentationWithFaces.h"
+
+class vtkReliefShading;
+
+class MESOLIGHTPARAVIEWRELIEF_EXPORT vtkReliefSurfaceRepresentation
+  : public vtkGeometryRepresentationWithFaces
+{
+public:
+  static vtkReliefSurfaceRepresentation* New();
+  vtkTypeMacro(vtkReliefSurfaceRepresentation, vtkGeometryRepresentationWithFaces);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /** Relief settings (see vtkReliefMapper). */
+  void SetReliefMethod(int method);
+  void SetLinearSteps(int steps);
+  void SetRefinementSteps(int steps);
+  void SetAdaptiveSteps(bool on);
+  void SetMinimumSteps(int steps);
+  void SetReliefDepthScale(double scale);
+  void SetSelfShadowing(bool on);
+  void SetSilhouettes(bool on);
+  void SetWriteDepth(bool on);
+  void SetRepeatTexture(bool on);
+  void SetLevelOfDetail(bool on);
+  void SetExposure(double exposure);
+  void SetToneMapping(bool on);
+  void SetLightSetThreshold(double threshold);
+  void SetShadowedLights(int count);
+  ///@}
+
+protected:
+  vtkReliefSurfaceRepresentation();
+  ~vtkReliefSurfaceRepresentation() override = default;
+
+  /** The shadings of the mapper and the LOD mapper (both get every setting). */
+  vtkReliefShading* Shading(int which);
+
+private:
+  vtkReliefSurfaceRepresentation(const vtkReliefSurfaceRepresentation&) = delete;
+  void operator=(const vtkReliefSurfaceRepresentation&) = delete;
+};
+
+#endif

@@ -1,0 +1,130 @@
+"""Shared pieces of the Mesolight plugin tests (pvbatch / pvpython).
+
+The scene mirrors tests/TestReliefAgainstDenseMesh.cxx: a procedural brick relief on the unit
+square, drawn by the Relief Surface representation, against an independent reference: the same
+height field as a dense displaced mesh (one vertex per texel, Mesolight Height Field Mesh) drawn
+by ParaView's ordinary Surface representation, with the same camera, lights and colour.
+"""
+import os
+import sys
+
+from paraview import servermanager
+from paraview.simple import *  # noqa: F401,F403  (the plugin's proxies land here too)
+import paraview.simple as pvs
+from vtkmodules.util.numpy_support import vtk_to_numpy
+from vtkmodules.vtkIOImage import vtkPNGReader
+import numpy as np
+
+SIZE = [400, 400]
+BACKGROUND = [1.0, 0.0, 1.0]  # magenta: never a grey of the white surface
+DEPTH_SCALE = 0.04
+# Thresholds (as in tests/TestReliefAgainstDenseMesh.cxx): met by a correct first-hit march,
+# missed by far by plain texture mapping or a flat surface.
+MAX_MEAN_COLOR_ERROR = 3.0      # 8-bit levels, over pixels covered in both images
+MAX_SILHOUETTE_MISMATCH = 1.0   # percent of the footprint covered by only one image
+
+
+def load_plugin():
+    """Loads the plugin given by MESOLIGHT_PLUGIN (the ctest environment) or argv[1]."""
+    path = os.environ.get("MESOLIGHT_PLUGIN") or sys.argv[1]
+    pvs.LoadPlugin(path, remote=False, ns=pvs.__dict__)
+    # The tests place the camera themselves.
+    pvs._DisableFirstRenderCameraReset()
+    return path
+
+
+def make_view():
+    view = pvs.CreateView("RenderView")
+    view.ViewSize = SIZE
+    view.OrientationAxesVisibility = 0
+    view.UseColorPaletteForBackground = 0
+    view.Background = BACKGROUND
+    view.UseFXAA = 0
+    set_camera(view)
+    return view
+
+
+def set_camera(view):
+    view.CameraPosition = [0.5, -1.0, 1.5]
+    view.CameraFocalPoint = [0.5, 0.45, 0.0]
+    view.CameraViewUp = [0.0, 0.0, 1.0]
+    view.CameraViewAngle = 30
+
+
+def relief_texture(resolution=256):
+    depth = pvs.MesolightProceduralRelief(Pattern=0, Resolution=[resolution, resolution])
+    return pvs.MesolightReliefTexture(Input=pvs.OutputPort(depth, 0), DepthScale=DEPTH_SCALE)
+
+
+def unit_square(resolution=1):
+    return pvs.Plane(Origin=[0, 0, 0], Point1=[1, 0, 0], Point2=[0, 1, 0],
+                     XResolution=resolution, YResolution=resolution)
+
+
+def show_relief(surface, relief, view, lights=None, **settings):
+    attached = pvs.MesolightAttachReliefTexture(Input=surface, ReliefTexture=relief)
+    if lights is not None:
+        attached.LightSet = lights
+    display = pvs.Show(attached, view)
+    display.ColorArrayName = ["POINTS", ""]
+    display.SetRepresentationType("Relief Surface")
+    display.ReliefDepthScale = DEPTH_SCALE
+    for name, value in settings.items():
+        setattr(display, name, value)
+    return attached, display
+
+
+def show_dense_reference(relief, view):
+    mesh = pvs.MesolightHeightFieldMesh(Input=relief)
+    display = pvs.Show(mesh, view)
+    display.ColorArrayName = ["POINTS", ""]
+    display.SetRepresentationType("Surface")
+    return mesh, display
+
+
+def capture(view, path):
+    """Renders, saves a PNG and returns it as an H x W x 3 uint8 array."""
+    set_camera(view)
+    pvs.Render(view)
+    pvs.SaveScreenshot(path, view, ImageResolution=SIZE, TransparentBackground=0)
+    return capture_file(path)
+
+
+def capture_file(path):
+    """A PNG as an H x W x 3 int array."""
+    reader = vtkPNGReader()
+    reader.SetFileName(path)
+    reader.Update()
+    image = reader.GetOutput()
+    w, h, _ = image.GetDimensions()
+    pixels = vtk_to_numpy(image.GetPointData().GetScalars()).reshape(h, w, -1)
+    return pixels[:, :, :3].astype(np.int32)
+
+
+def covered(pixels):
+    bg = (np.array(BACKGROUND) * 255).astype(np.int32)
+    return np.any(np.abs(pixels - bg) > 8, axis=2)
+
+
+def compare(frame, reference, footprint):
+    """Mean colour error (levels) over pixels covered in both, and silhouette mismatch: % of the
+    coarse surface's footprint (a boolean mask) covered by only one of the two images. As in
+    the VTK tests, the dense mesh's pixels outside the footprint (the floor seen past the near
+    edge, where a relief surface has no fragment to start a ray from) are not counted."""
+    a, b = covered(frame) & footprint, covered(reference) & footprint
+    both = a & b
+    mean_error = float(np.abs(frame[both] - reference[both]).mean()) if both.any() else 255.0
+    mismatch = 100.0 * float((a ^ b).sum()) / max(1, int(footprint.sum()))
+    return {"mean_color_error": mean_error, "silhouette_mismatch": mismatch,
+            "covered_both": int(both.sum())}
+
+
+def within_tolerance(d):
+    return (d["mean_color_error"] <= MAX_MEAN_COLOR_ERROR and
+            d["silhouette_mismatch"] <= MAX_SILHOUETTE_MISMATCH)
+
+
+def output_dir():
+    out = os.environ.get("MESOLIGHT_TEST_OUTPUT", ".")
+    os.makedirs(out, exist_ok=True)
+    return out

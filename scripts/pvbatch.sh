@@ -1,0 +1,16 @@
+#!/usr/bin/env bash
+# pvbatch with the Mesolight plugin: ParaView's Python modules from the local python3-paraview
+# copy (scripts/setup-paraview.sh) and the plugin auto-loaded through PV_PLUGIN_PATH.
+# Without a display it runs under Xvfb. Example:
+#   scripts/pvbatch.sh my_pipeline.py            (LoadPlugin is not even needed)
+#   mpiexec -n 2 scripts/pvbatch.sh my_pipeline.py
+set -euo pipefail
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+build="${MESOLIGHT_PARAVIEW_BUILD_DIR:-$here/build-paraview}"
+export PYTHONPATH="$build/paraview-python/usr/lib/python3/dist-packages${PYTHONPATH:+:$PYTHONPATH}"
+export PV_PLUGIN_PATH="$build/lib/paraview-5.11/plugins/Mesolight${PV_PLUGIN_PATH:+:$PV_PLUGIN_PATH}"
+export MESOLIGHT_PLUGIN="$build/lib/paraview-5.11/plugins/Mesolight/Mesolight.so"
+if [ -z "${DISPLAY:-}" ]; then
+  exec xvfb-run -a -s "-screen 0 1280x1024x24" pvbatch "$@"
+fi
+exec pvbatch "$@"

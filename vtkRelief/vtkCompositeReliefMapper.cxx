@@ -1,0 +1,245 @@
+#include "vtkCompositeReliefMapper.h"
+
+#include "vtkAttachReliefTexture.h"
+#include "vtkCompositeDataIterator.h"
+#include "vtkCompositeDataSet.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLVertexBufferObjectGroup.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkRenderer.h"
+#include "vtkShader.h"
+#include "vtk_glew.h" // before vtkCompositeMapperHelper2.h: VTK 9.1's uses GLenum undeclared
+
+#include "vtkCompositeMapperHelper2.h"
+
+#include <algorithm>
+#include <vector>
+
+//==============================================================================
+// The helper that draws the blocks (internal to this mapper, as in ParaView's
+// EmbossingRepresentations): a vtkOpenGLPolyDataMapper whose relief steps are the parent's
+// vtkReliefShading, the same calls vtkReliefMapper makes.
+class vtkCompositeReliefMapperHelper : public vtkCompositeMapperHelper2
+{
+public:
+  static vtkCompositeReliefMapperHelper* New();
+  vtkTypeMacro(vtkCompositeReliefMapperHelper, vtkCompositeMapperHelper2);
+
+protected:
+  vtkCompositeReliefMapperHelper() = default;
+  ~vtkCompositeReliefMapperHelper() override = default;
+
+  vtkReliefShading* Shading() const
+  {
+    return static_cast<vtkCompositeReliefMapper*>(this->Parent)->Shading;
+  }
+
+  void RenderPieceStart(vtkRenderer* ren, vtkActor* actor) override
+  {
+    auto* parent = static_cast<vtkCompositeReliefMapper*>(this->Parent);
+    this->ReadyToDraw = false;
+    // Every block must carry a relief (texture coordinates); prepared copies are made once.
+    std::vector<vtkPolyData*> inputs;
+    for (const auto& entry : this->Data)
+    {
+      inputs.push_back(entry.first);
+      if (!this->Shading()->PrepareInput(entry.first))
+      {
+        return;
+      }
+    }
+    this->Shading()->KeepPreparedInputs(inputs);
+    if (!this->Shading()->StartDraw(vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow()),
+          parent->CurrentReliefTexture, parent->CurrentLightSet, actor))
+    {
+      return;
+    }
+    this->Superclass::RenderPieceStart(ren, actor);
+    this->ReadyToDraw = true;
+  }
+
+  void RenderPieceDraw(vtkRenderer* ren, vtkActor* actor) override
+  {
+    if (this->ReadyToDraw)
+    {
+      this->Superclass::RenderPieceDraw(ren, actor);
+    }
+  }
+
+  void RenderPieceFinish(vtkRenderer* ren, vtkActor* actor) override
+  {
+    if (this->ReadyToDraw)
+    {
+      this->Superclass::RenderPieceFinish(ren, actor);
+      this->Shading()->FinishDraw();
+    }
+    this->ReadyToDraw = false;
+  }
+
+  // Draws each block's prepared copy (triangles, normals, tangents) and adds the attributes
+  // the helper does not upload itself: tangents, and the relief texture coordinates (the
+  // helper uploads "tcoord" only when the actor has a texture).
+  void AppendOneBufferObject(vtkRenderer* ren, vtkActor* actor,
+    vtkCompositeMapperHelperData* hdata, vtkIdType& voffset, std::vector<unsigned char>& colors,
+    std::vector<float>& norms) override
+  {
+    vtkPolyData* source = hdata->Data;
+    vtkPolyData* prepared = this->Shading()->PrepareInput(source);
+    if (!prepared)
+    {
+      this->Superclass::AppendOneBufferObject(ren, actor, hdata, voffset, colors, norms);
+      return;
+    }
+    hdata->Data = prepared; // same points as the source, triangulated
+    this->Superclass::AppendOneBufferObject(ren, actor, hdata, voffset, colors, norms);
+    hdata->Data = source;
+    vtkDataArray* tangents = prepared->GetPointData()->GetTangents();
+    vtkDataArray* tcoords =
+      prepared->GetPointData()->GetArray(vtkReliefShading::GetReliefTCoordsName());
+    vtkIdType offset = 0;
+    vtkIdType total = 0;
+    // Reused blocks (the superclass found their vertices already uploaded) keep ours too.
+    if (!this->VBOs->ArrayExists("tangentMC", tangents, offset, total) || offset != voffset)
+    {
+      this->VBOs->AppendDataArray("tangentMC", tangents, VTK_FLOAT);
+    }
+    if (!this->VBOs->ArrayExists("mlTCoordMC", tcoords, offset, total) || offset != voffset)
+    {
+      this->VBOs->AppendDataArray("mlTCoordMC", tcoords, VTK_FLOAT);
+    }
+  }
+
+  bool GetNeedToRebuildShaders(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* actor) override
+  {
+    return this->Superclass::GetNeedToRebuildShaders(cellBO, ren, actor) ||
+      this->Shading()->ShaderKeyChanged(&cellBO);
+  }
+
+  void ReplaceShaderValues(
+    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* actor) override
+  {
+    std::string vs = shaders[vtkShader::Vertex]->GetSource();
+    std::string fs = shaders[vtkShader::Fragment]->GetSource();
+    this->Shading()->ReplaceShaderValuesBefore(
+      vs, fs, this->PrimitiveInfo[this->LastBoundBO].LastLightComplexity == 0);
+    shaders[vtkShader::Vertex]->SetSource(vs);
+    shaders[vtkShader::Fragment]->SetSource(fs);
+    this->Superclass::ReplaceShaderValues(shaders, ren, actor);
+    fs = shaders[vtkShader::Fragment]->GetSource();
+    this->Shading()->ReplaceShaderValuesAfter(fs, this->LastBoundBO);
+    shaders[vtkShader::Fragment]->SetSource(fs);
+  }
+
+  void SetMapperShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* actor) override
+  {
+    this->Superclass::SetMapperShaderParameters(cellBO, ren, actor);
+    this->Shading()->SetShaderParameters(cellBO.Program, ren, actor);
+  }
+
+  bool ReadyToDraw = false;
+
+private:
+  vtkCompositeReliefMapperHelper(const vtkCompositeReliefMapperHelper&) = delete;
+  void operator=(const vtkCompositeReliefMapperHelper&) = delete;
+};
+
+vtkStandardNewMacro(vtkCompositeReliefMapperHelper);
+
+//==============================================================================
+vtkStandardNewMacro(vtkCompositeReliefMapper);
+
+//------------------------------------------------------------------------------
+vtkCompositeReliefMapper::vtkCompositeReliefMapper()
+{
+  this->Shading->SetMessageOwner(this);
+}
+
+//------------------------------------------------------------------------------
+vtkCompositeReliefMapper::~vtkCompositeReliefMapper() = default;
+
+//------------------------------------------------------------------------------
+vtkCompositeMapperHelper2* vtkCompositeReliefMapper::CreateHelper()
+{
+  return vtkCompositeReliefMapperHelper::New();
+}
+
+//------------------------------------------------------------------------------
+void vtkCompositeReliefMapper::SetReliefTextureData(vtkImageData* image)
+{
+  if (this->ReliefTextureData != image)
+  {
+    this->ReliefTextureData = image;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkCompositeReliefMapper::SetLightSetData(vtkImageData* lights)
+{
+  if (this->LightSetData != lights)
+  {
+    this->LightSetData = lights;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkCompositeReliefMapper::Render(vtkRenderer* ren, vtkActor* actor)
+{
+  this->CurrentReliefTexture = this->ReliefTextureData;
+  this->CurrentLightSet = this->LightSetData;
+  vtkDataObject* input = this->GetInputDataObject(0, 0);
+  std::vector<vtkDataObject*> blocks;
+  if (auto* composite = vtkCompositeDataSet::SafeDownCast(input))
+  {
+    vtkSmartPointer<vtkCompositeDataIterator> it;
+    it.TakeReference(composite->NewIterator());
+    for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
+    {
+      blocks.push_back(it->GetCurrentDataObject());
+    }
+  }
+  else if (input)
+  {
+    blocks.push_back(input);
+  }
+  for (vtkDataObject* block : blocks)
+  {
+    if (!this->CurrentReliefTexture)
+    {
+      this->CurrentReliefTexture = vtkAttachReliefTexture::GetAttachedReliefTexture(block);
+    }
+    if (!this->CurrentLightSet)
+    {
+      this->CurrentLightSet = vtkAttachReliefTexture::GetAttachedLightSet(block);
+    }
+  }
+  this->Superclass::Render(ren, actor);
+}
+
+//------------------------------------------------------------------------------
+vtkMTimeType vtkCompositeReliefMapper::GetMTime()
+{
+  return std::max(this->Superclass::GetMTime(), this->Shading->GetMTime());
+}
+
+//------------------------------------------------------------------------------
+void vtkCompositeReliefMapper::ReleaseGraphicsResources(vtkWindow* win)
+{
+  this->Shading->ReleaseGraphicsResources(win);
+  this->Superclass::ReleaseGraphicsResources(win);
+}
+
+//------------------------------------------------------------------------------
+void vtkCompositeReliefMapper::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Shading:\n";
+  this->Shading->PrintSelf(os, indent.GetNextIndent());
+  os << indent << "ReliefTextureData: " << this->ReliefTextureData.Get() << "\n";
+  os << indent << "LightSetData: " << this->LightSetData.Get() << "\n";
+}
