@@ -21,6 +21,9 @@
 
 #include <glm/geometric.hpp>
 
+#include <map>
+#include <utility>
+
 vtkStandardNewMacro(vtkVirtualLightField);
 
 vtkVirtualLightField::vtkVirtualLightField() = default;
@@ -149,10 +152,36 @@ int vtkVirtualLightField::RequestData(
 
   // Output: the scene in world coordinates with the diffuse radiance leaving each surface.
   const vlf::LightField& field = *this->Field;
-  mesolight::TriangleScene world = field.Scene();
-  for (glm::vec3& p : world.Positions)
+  const mesolight::TriangleScene& unit = field.Scene();
+  // A vertex shared by two surfaces (a wall and the floor along their edge) is duplicated, one
+  // copy per surface, so one surface's point "Radiance" never bleeds into the other's.
+  mesolight::TriangleScene world = unit;
+  world.Positions.clear();
+  world.Normals.clear();
+  world.TextureCoordinates.clear();
+  std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> copyOf;
+  for (std::size_t t = 0; t < unit.TriangleCount(); ++t)
   {
-    p = vlf::ToWorld(field, p);
+    const std::uint32_t surface = field.SurfaceOfTriangle(t);
+    for (int c = 0; c < 3; ++c)
+    {
+      const std::uint32_t original = unit.Triangles[t][c];
+      auto inserted = copyOf.emplace(std::make_pair(surface, original),
+        static_cast<std::uint32_t>(world.Positions.size()));
+      if (inserted.second)
+      {
+        world.Positions.push_back(vlf::ToWorld(field, unit.Positions[original]));
+        if (unit.Normals.size() == unit.Positions.size())
+        {
+          world.Normals.push_back(unit.Normals[original]);
+        }
+        if (unit.TextureCoordinates.size() == unit.Positions.size())
+        {
+          world.TextureCoordinates.push_back(unit.TextureCoordinates[original]);
+        }
+      }
+      world.Triangles[t][c] = inserted.first->second;
+    }
   }
   converter->ToPolyData(world, output);
   const vtkIdType triangles = static_cast<vtkIdType>(world.TriangleCount());
@@ -165,7 +194,6 @@ int vtkVirtualLightField::RequestData(
   pointRadiance->SetNumberOfComponents(3);
   pointRadiance->SetNumberOfTuples(static_cast<vtkIdType>(world.Positions.size()));
   pointRadiance->Fill(0.0);
-  const mesolight::TriangleScene& unit = field.Scene();
   for (vtkIdType t = 0; t < triangles; ++t)
   {
     const std::uint32_t s = field.SurfaceOfTriangle(static_cast<std::size_t>(t));
@@ -180,7 +208,7 @@ int vtkVirtualLightField::RequestData(
         const glm::vec3 corner = field.SampleTexture(field.TotalDiffuse, s, unit.Vertex(t, c));
         mean += corner;
         const float rgb[3] = { corner.x, corner.y, corner.z };
-        pointRadiance->SetTypedTuple(static_cast<vtkIdType>(unit.Triangles[t][c]), rgb);
+        pointRadiance->SetTypedTuple(static_cast<vtkIdType>(world.Triangles[t][c]), rgb);
       }
       mean /= 4.0f;
     }

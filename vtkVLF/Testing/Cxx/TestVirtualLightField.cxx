@@ -7,6 +7,8 @@
 #include "LightField.h"
 #include "vtkCornellBoxSource.h"
 
+#include <vtkCell.h>
+#include <vtkCleanPolyData.h>
 #include <vtkCellData.h>
 #include <vtkCommand.h>
 #include <vtkDataArray.h>
@@ -19,6 +21,7 @@
 #include <cstdio>
 #include <fstream>
 #include <sstream>
+#include <vector>
 #include <string>
 
 namespace
@@ -61,8 +64,11 @@ void SmallSettings(vtkVirtualLightField* filter)
 TEST(VLFVirtualLightField, CornellBoxRadiance)
 {
   vtkNew<vtkCornellBoxSource> box;
+  // Merged points: walls, floor and blocks share the vertices along their edges, as most meshes do.
+  vtkNew<vtkCleanPolyData> merged;
+  merged->SetInputConnection(box->GetOutputPort());
   vtkNew<vtkVirtualLightField> filter;
-  filter->SetInputConnection(box->GetOutputPort());
+  filter->SetInputConnection(merged->GetOutputPort());
   SmallSettings(filter);
   vtkNew<Messages> messages;
   filter->AddObserver(vtkCommand::ProgressEvent, messages);
@@ -93,6 +99,25 @@ TEST(VLFVirtualLightField, CornellBoxRadiance)
     }
   }
   EXPECT_EQ(lit, out->GetNumberOfCells() - 2); // every wall and block face receives light
+
+  // No point is shared by two cells of different materials (the light and the ceiling, a red
+  // wall and the floor): point radiance of one surface must not bleed into another.
+  vtkDataArray* materials = out->GetCellData()->GetArray("MaterialId");
+  ASSERT_NE(materials, nullptr);
+  std::vector<double> materialOfPoint(static_cast<std::size_t>(out->GetNumberOfPoints()), -1.0);
+  int shared = 0;
+  for (vtkIdType c = 0; c < out->GetNumberOfCells(); ++c)
+  {
+    vtkCell* cell = out->GetCell(c);
+    for (vtkIdType i = 0; i < cell->GetNumberOfPoints(); ++i)
+    {
+      double& m = materialOfPoint[static_cast<std::size_t>(cell->GetPointId(i))];
+      const double mine = materials->GetComponent(c, 0);
+      shared += (m >= 0.0 && m != mine) ? 1 : 0;
+      m = mine;
+    }
+  }
+  EXPECT_EQ(shared, 0);
 
   // Irradiance under the light on the floor's centre, facing up: positive and finite.
   const double p[3] = { 278.0, 1.0, 279.0 }, n[3] = { 0.0, 1.0, 0.0 };
