@@ -11,6 +11,7 @@
 #include "ReliefBenchmark.h"
 #include "ReliefScene.h"
 #include "ReliefSweep.h"
+#include "ConeBenchmark.h"
 
 #include "vtkConeMapFilter.h"
 #include "vtkLightProbeToLatLong.h"
@@ -62,6 +63,7 @@ Usage:
   mesolight bench [options]                    time and error: relief vs the dense mesh
   mesolight bench relief [options]             every method x steps x view angle x map:
                                                time vs exact hit error, CSV and plots
+  mesolight bench cones [options]              cone-map generation time, oracle speed-up
   mesolight probe PROBE_IMAGE --out FILE.exr   light probe (angular map, mirror ball, two-view
                                                merge) -> lat-long environment
   mesolight lights ENV_IMAGE --count N --out lights.csv
@@ -659,6 +661,10 @@ int RunBench(const std::vector<std::string>& args)
   if (!args.empty() && args[0] == "lights")
   {
     return mesolight::RunLightsBenchmark(std::vector<std::string>(args.begin() + 1, args.end()));
+  }
+  if (!args.empty() && args[0] == "cones")
+  {
+    return mesolight::RunConeBenchmark(std::vector<std::string>(args.begin() + 1, args.end()));
   }
   if (!args.empty() && args[0] == "relief")
   {

@@ -99,21 +99,18 @@ struct ConeMapOptions
    */
   std::function<bool(double)> Progress;
   /**
-   * Bilinear safety (see the file comment): 3 x 3 neighbourhood minimum (Ban et al. 2024),
-   * then the safety scale of the cone type. Default on. Off gives the raw per-texel cones.
+   * Default on: cones valid on the bilinear surface, for every apex position and every read of
+   * the ratio with bilinear filtering (the cell bound of the file comment; provable, no safety
+   * factor). Off: the per-texel cones over the texel samples only (narrower definition of
+   * validity, NOT safe under bilinear filtering; kept for comparison and tests).
    */
   bool BilinearSafe = true;
   /**
-   * EMPIRICAL factors applied with BilinearSafe. The per-texel definitions are exact over the
-   * texel samples, but the bilinear surface between texels and apexes between texel centres
-   * can need narrower cones than the 3 x 3 minimum gives (grazing rays over bilinear saddles,
-   * cones read between a deep texel and shallow ones). These factors are the largest round
-   * values with margin that make the unit tests' CPU stepping (100 000 random rays per test
-   * map) never pass the exact first hit, nor (conservative) go below the surface: 0.8 and 0.7
-   * passed there. Not a proof.
+   * Relative tolerance of the fast bilinear-safe search: the result r satisfies
+   * exact / (1 + Tolerance) <= r <= exact, where exact is what the brute-force oracle returns
+   * (still a valid cone: it is never wider). 0 gives results bit-identical to the oracle.
    */
-  float RelaxedSafetyScale = 0.75f;
-  float ConservativeSafetyScale = 0.6f;
+  float Tolerance = 0.05f;
   /// Clamp of the ratios (flat areas). Default kConeMaxRatio.
   float MaxRatio = kConeMaxRatio;
 };
