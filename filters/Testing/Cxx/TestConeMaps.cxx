@@ -387,14 +387,30 @@ TEST(ConeMaps, SteppingTestHasTeeth)
   {
     for (int i = 0; i < 24; ++i)
     {
-      const double r2 = (std::pow(i - 11.5, 2) + std::pow(j - 11.5, 2)) / 64.0;
-      dome.Depth[static_cast<size_t>(j) * 24 + i] = Clamp01(0.9 - 0.8 * std::max(0.0, 1.0 - r2));
+      const double r2 = (std::pow(i - 11.5, 2) + std::pow(j - 11.5, 2)) / 49.0;
+      dome.Depth[static_cast<size_t>(j) * 24 + i] =
+        Clamp01(0.9 - 0.8 * std::pow(std::max(0.0, 1.0 - r2), 2.0));
     }
   }
   const auto domeRelaxed =
     mesolight::ComputeRelaxedConeMap(dome.Depth.data(), dome.W, dome.H, Serial());
+  const auto domeConservative =
+    mesolight::ComputeConservativeConeMap(dome.Depth.data(), dome.W, dome.H, Serial());
+  double widest = 0.0;
+  for (size_t k = 0; k < domeRelaxed.size(); ++k)
+  {
+    widest = std::max(widest, static_cast<double>(domeRelaxed[k] / domeConservative[k]));
+  }
+  std::cout << "dome: relaxed cones up to " << widest << " x the conservative ones\n";
   EXPECT_EQ(CheckStepping(dome, domeRelaxed, 1.0, 3000, 12, false).PastFirstHit, 0);
-  relaxedAsConservative += CheckStepping(dome, domeRelaxed, 1.0, 3000, 11, true).WentBelow;
+  // The bilinear-safe relaxed cones are only modestly wider than conservative ones (printed
+  // above), so the checker's ability to see a relaxed cone dive is shown with the wider
+  // per-texel-sample relaxed cones.
+  ConeMapOptions samples = Serial();
+  samples.BilinearSafe = false;
+  const auto domeSampleRelaxed =
+    mesolight::ComputeRelaxedConeMap(dome.Depth.data(), dome.W, dome.H, samples);
+  relaxedAsConservative += CheckStepping(dome, domeSampleRelaxed, 1.0, 3000, 11, true).WentBelow;
   for (int k = 0; k < 4; ++k)
   {
     std::cout << "cones x" << scales[k] << ": relaxed " << relaxedFailures[k]
@@ -403,8 +419,8 @@ TEST(ConeMaps, SteppingTestHasTeeth)
   }
   std::cout << "relaxed cones stepped as conservative: " << relaxedAsConservative
             << " rays below the surface\n";
-  EXPECT_GT(relaxedFailures[2], 0);
-  EXPECT_GT(conservativeFailures[2], 0);
+  EXPECT_GT(relaxedFailures[1], 0); // 1.5x
+  EXPECT_GT(conservativeFailures[1], 0);
   EXPECT_GT(relaxedAsConservative, 0);
 }
 
