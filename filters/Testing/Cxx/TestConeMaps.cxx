@@ -6,6 +6,16 @@
 #include "core/ConeMaps.h"
 
 #include "HeightFieldTracer.h"
+#include "vtkConeMapFilter.h"
+#include "vtkProceduralReliefSource.h"
+
+#include "vtkCommand.h"
+#include "vtkDataArray.h"
+#include "vtkFieldData.h"
+#include "vtkImageData.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkStringArray.h"
 
 #include <gtest/gtest.h>
 
@@ -646,4 +656,78 @@ TEST(ConeMaps, ProgressAndAbort)
     mesolight::ComputeRelaxedConeMap(m.Depth.data(), m.W, m.H, Serial()));
   EXPECT_GT(hookCalls, 0);
   EXPECT_TRUE(mesolight::ComputeRelaxedConeMap(m.Depth.data(), 0, 3).empty());
+}
+
+TEST(vtkConeMapFilter, PacksTheCoreConesReportsProgressAndAborts)
+{
+  vtkNew<vtkProceduralReliefSource> source;
+  source->SetPatternToHemisphereTorus();
+  source->SetResolution(40, 33);
+  vtkNew<vtkConeMapFilter> filter;
+  filter->SetInputConnection(source->GetOutputPort(0));
+  std::vector<double> progress;
+  struct Progress : public vtkCommand
+  {
+    static Progress* New() { return new Progress; }
+    void Execute(vtkObject* caller, unsigned long, void* data) override
+    {
+      this->Values->push_back(*static_cast<double*>(data));
+      if (this->AbortAt >= 0.0 && this->Values->back() >= this->AbortAt)
+      {
+        static_cast<vtkAlgorithm*>(caller)->SetAbortExecute(1);
+      }
+    }
+    std::vector<double>* Values = nullptr;
+    double AbortAt = -1.0;
+  };
+  vtkNew<Progress> observer;
+  observer->Values = &progress;
+  filter->AddObserver(vtkCommand::ProgressEvent, observer);
+  filter->Update();
+  vtkImageData* out = filter->GetOutput();
+  int dims[3];
+  out->GetDimensions(dims);
+  ASSERT_EQ(dims[0], 40);
+  ASSERT_EQ(dims[1], 33);
+  vtkDataArray* packed = out->GetPointData()->GetScalars();
+  ASSERT_NE(packed, nullptr);
+  ASSERT_EQ(packed->GetNumberOfComponents(), 4);
+  auto* type = vtkStringArray::SafeDownCast(out->GetFieldData()->GetAbstractArray("MesolightConeType"));
+  ASSERT_NE(type, nullptr);
+  EXPECT_EQ(type->GetValue(0), "relaxed");
+  // B is the core's relaxed cone map of the depth in A.
+  std::vector<float> depth(40 * 33);
+  for (size_t k = 0; k < depth.size(); ++k)
+  {
+    depth[k] = static_cast<float>(packed->GetComponent(static_cast<vtkIdType>(k), 3));
+  }
+  const auto cones = mesolight::ComputeRelaxedConeMap(depth.data(), 40, 33);
+  for (size_t k = 0; k < depth.size(); ++k)
+  {
+    ASSERT_EQ(static_cast<float>(packed->GetComponent(static_cast<vtkIdType>(k), 2)), cones[k]);
+  }
+  ASSERT_GE(progress.size(), 3u);
+  EXPECT_TRUE(std::is_sorted(progress.begin(), progress.end()));
+  EXPECT_EQ(progress.back(), 1.0);
+
+  // 8-bit packing: the never-widening code of each cone.
+  filter->SetPackingToSeed8Bit();
+  filter->SetConeTypeToConservative();
+  filter->Update();
+  vtkDataArray* bytes = filter->GetOutput()->GetPointData()->GetScalars();
+  ASSERT_EQ(bytes->GetDataType(), VTK_UNSIGNED_CHAR);
+  const auto conservative = mesolight::ComputeConservativeConeMap(depth.data(), 40, 33);
+  for (size_t k = 0; k < depth.size(); ++k)
+  {
+    ASSERT_EQ(bytes->GetComponent(static_cast<vtkIdType>(k), 2),
+      mesolight::EncodeConeRatio8(conservative[k]));
+  }
+
+  // Abort half-way: no error, no cone map.
+  progress.clear();
+  observer->AbortAt = 0.3;
+  filter->SetConeTypeToRelaxed();
+  filter->Update();
+  EXPECT_LT(progress.back(), 1.0);
+  EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), 0);
 }
