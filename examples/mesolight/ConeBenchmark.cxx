@@ -4,6 +4,7 @@
 #include "CommandLine.h"
 #include "core/ConeMaps.h"
 #include "core/ProceduralHeightFields.h"
+#include "HeightFieldTracer.h"
 
 #include <algorithm>
 #include <chrono>
@@ -12,6 +13,7 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <random>
 #include <sstream>
 #include <thread>
 
@@ -77,6 +79,157 @@ std::vector<std::string> Split(const std::string& s)
   }
   return out;
 }
+
+// The shader's searches on the CPU (vtkReliefMarchFS.glsl: mlLinearSearch, mlConeSearch,
+// mlBinaryRefine), for a view ray entering at origin (depth 0) with span (rate * dir, 1).
+struct Bracket
+{
+  double Above = 0.0;
+  double Below = 1.0;
+  int ConeBeatFloor = 0; // cone steps longer than the even share of the rest
+  int Steps = 0;
+};
+
+Bracket LinearSearch(const HeightField& hf, const glm::dvec3& o, const glm::dvec3& span, int steps)
+{
+  Bracket b;
+  const double dt = 1.0 / steps;
+  for (int i = 1; i <= steps; ++i)
+  {
+    const double t = i * dt;
+    const glm::dvec3 p = o + t * span;
+    if (p.z - hf.DepthAt(p.x, p.y) >= 0.0)
+    {
+      b.Below = t;
+      return b;
+    }
+    b.Above = t;
+  }
+  return b;
+}
+
+Bracket ConeSearch(const HeightField& hf, const HeightField& cones, const glm::dvec3& o,
+  const glm::dvec3& span, double rate, int steps, bool floor)
+{
+  Bracket b;
+  double t = 0.0;
+  for (int i = 0; i < steps; ++i)
+  {
+    const glm::dvec3 p = o + t * span;
+    const double depth = hf.DepthAt(p.x, p.y);
+    if (p.z >= depth)
+    {
+      b.Below = t;
+      return b;
+    }
+    const double c = cones.DepthAt(p.x, p.y);
+    const double coneStep = c * (depth - p.z) / (rate + c);
+    const double share = (1.0 - t) / (steps - i);
+    b.ConeBeatFloor += coneStep > share ? 1 : 0;
+    ++b.Steps;
+    b.Above = t;
+    t = std::min(t + (floor ? std::max(coneStep, share) : coneStep), 1.0);
+  }
+  b.Below = t;
+  return b;
+}
+
+double BinaryRefine(const HeightField& hf, const glm::dvec3& o, const glm::dvec3& span,
+  Bracket b, int steps)
+{
+  for (int i = 0; i < steps; ++i)
+  {
+    const double tm = 0.5 * (b.Above + b.Below);
+    const glm::dvec3 p = o + tm * span;
+    (p.z - hf.DepthAt(p.x, p.y) >= 0.0 ? b.Below : b.Above) = tm;
+  }
+  return 0.5 * (b.Above + b.Below);
+}
+
+// Hit error in texels of the shader's relief (linear + binary) and relaxed cone (+ binary)
+// searches against the exact first hit, per search step count, on the CPU: what each step buys,
+// without llvmpipe's timing noise or fixed per-frame cost.
+void SteppingAnalysis(const std::vector<ReliefPattern>& patterns,
+  const std::vector<std::string>& names, int n, double depthScale, int rays, int threads,
+  std::ostream& out)
+{
+  const int stepCounts[] = { 2, 3, 4, 6, 8, 12, 16, 24, 32, 48, 64 };
+  const int refine = 6;
+  out << "\nSearch steps vs hit error on the CPU (" << n << "^2 maps, depth scale " << depthScale
+      << ", " << rays << " random view rays per map and angle, " << refine
+      << " binary steps after each search; error = horizontal distance to the exact first hit in "
+         "texels).\nlin = relief's linear search; cone = relaxed cone search with the shader's "
+         "even-share floor (bilinear-safe cones); cone/sample = the same with per-texel-sample "
+         "cones (not bilinear-safe); beat = % of cone steps longer than the floor.\n";
+  for (size_t mi = 0; mi < patterns.size(); ++mi)
+  {
+    const std::vector<float> depth = MakeMap(patterns[mi], n);
+    ConeMapOptions safe;
+    safe.Threads = threads;
+    ConeMapOptions samples = safe;
+    samples.BilinearSafe = false;
+    const HeightField hf(n, n, depth);
+    const HeightField cones(n, n, ComputeRelaxedConeMap(depth.data(), n, n, safe));
+    const HeightField sampleCones(n, n, ComputeRelaxedConeMap(depth.data(), n, n, samples));
+    for (double angle : { 45.0, 70.0, 80.0, 85.0 })
+    {
+      const double rate = depthScale * std::tan(angle * M_PI / 180.0); // widths per unit depth
+      std::mt19937 rng(17);
+      std::uniform_real_distribution<double> uni(0.0, 1.0);
+      const size_t k = sizeof(stepCounts) / sizeof(stepCounts[0]);
+      std::vector<double> lin(k, 0.0), cone(k, 0.0), sample(k, 0.0), beat(k, 0.0), tried(k, 0.0);
+      int counted = 0;
+      for (int r = 0; r < rays; ++r)
+      {
+        const double phi = 2.0 * M_PI * uni(rng);
+        const glm::dvec3 o(0.1 + 0.8 * uni(rng), 0.1 + 0.8 * uni(rng), 0.0);
+        const glm::dvec3 span(rate * std::cos(phi), rate * std::sin(phi), 1.0);
+        const auto hit = IntersectFirst(hf, o, span, 1.0);
+        if (!hit)
+        {
+          continue;
+        }
+        ++counted;
+        const double toTexels = rate * n;
+        for (size_t s = 0; s < k; ++s)
+        {
+          const int steps = stepCounts[s];
+          lin[s] += std::abs(BinaryRefine(hf, o, span, LinearSearch(hf, o, span, steps), refine) -
+                      hit->t) * toTexels;
+          const Bracket b = ConeSearch(hf, cones, o, span, rate, steps, true);
+          cone[s] += std::abs(BinaryRefine(hf, o, span, b, refine) - hit->t) * toTexels;
+          beat[s] += b.ConeBeatFloor;
+          tried[s] += b.Steps;
+          sample[s] += std::abs(BinaryRefine(hf, o, span,
+                                  ConeSearch(hf, sampleCones, o, span, rate, steps, true), refine) -
+                         hit->t) * toTexels;
+        }
+      }
+      out << "\n" << names[mi] << ", " << angle << " deg: mean hit error (texels) per search steps\n"
+          << std::setw(8) << "steps" << std::setw(10) << "lin" << std::setw(10) << "cone"
+          << std::setw(13) << "cone/sample" << std::setw(8) << "beat" << "\n";
+      for (size_t s = 0; s < k; ++s)
+      {
+        out << std::setw(8) << stepCounts[s] << std::setprecision(3) << std::setw(10)
+            << lin[s] / counted << std::setw(10) << cone[s] / counted << std::setw(13)
+            << sample[s] / counted << std::setw(7) << std::setprecision(1)
+            << (tried[s] > 0 ? 100.0 * beat[s] / tried[s] : 0.0) << "%\n";
+      }
+      // Equal error: for each linear step count, the fewest cone steps with no larger error.
+      out << "  fewest cone steps reaching the linear search's error:";
+      for (size_t s = 0; s < k; ++s)
+      {
+        size_t c = 0;
+        while (c < k && cone[c] > lin[s])
+        {
+          ++c;
+        }
+        out << " " << stepCounts[s] << "->" << (c < k ? std::to_string(stepCounts[c]) : "-");
+      }
+      out << "\n" << std::flush;
+    }
+  }
+}
 } // namespace
 
 int RunConeBenchmark(const std::vector<std::string>& args)
@@ -92,6 +245,10 @@ int RunConeBenchmark(const std::vector<std::string>& args)
     "map size for the width comparison with per-texel-sample cones (0: skip)", "128");
   cl.AddValue("--tolerance", "T", "relative tolerance of the fast search (ConeMapOptions)",
     std::to_string(ConeMapOptions().Tolerance));
+  cl.AddValue("--stepping-size", "N",
+    "map size of the CPU search-steps vs hit-error analysis (0: skip)", "256");
+  cl.AddValue("--stepping-rays", "N", "rays per map and angle of that analysis", "20000");
+  cl.AddValue("--depth-scale", "K", "depth scale of that analysis (as in bench relief)", "0.04");
   cl.AddValue("--csv", "FILE", "write one CSV row per map, size and cone type");
   cl.AddFlag("--help", "show this help");
   std::string error;
@@ -99,10 +256,16 @@ int RunConeBenchmark(const std::vector<std::string>& args)
   int oracleSize = 48;
   int compareSize = 128;
   double tolerance = ConeMapOptions().Tolerance;
+  int steppingSize = 256;
+  int steppingRays = 20000;
+  double depthScale = 0.04;
   if (!cl.Parse(args, error) || !cl.GetInt("--threads", 1, 256, threads, error) ||
     !cl.GetInt("--oracle-size", 2, 512, oracleSize, error) ||
     !cl.GetInt("--compare-size", 0, 2048, compareSize, error) ||
-    !cl.GetDouble("--tolerance", 0.0, 10.0, tolerance, error))
+    !cl.GetDouble("--tolerance", 0.0, 10.0, tolerance, error) ||
+    !cl.GetInt("--stepping-size", 0, 4096, steppingSize, error) ||
+    !cl.GetInt("--stepping-rays", 1, 10000000, steppingRays, error) ||
+    !cl.GetDouble("--depth-scale", 1e-4, 10.0, depthScale, error))
   {
     std::cerr << "mesolight bench cones: " << error << "\n";
     return 2;
@@ -271,6 +434,10 @@ int RunConeBenchmark(const std::vector<std::string>& args)
                 << "\n"
                 << std::flush;
     }
+  }
+  if (steppingSize > 0)
+  {
+    SteppingAnalysis(patterns, mapNames, steppingSize, depthScale, steppingRays, threads, std::cout);
   }
   return 0;
 }
