@@ -28,8 +28,8 @@
  *    reached in flat areas and on the shallowest texels), stored as float.
  *
  * Cone definitions (stated for the continuous surface; evaluated as described below):
- *  - Conservative (Dummer): c_p = min over texels q with d_q < d_p of
- *    dist(p, q) / (d_p - d_q): the cone contains no sample of the height field.
+ *  - Conservative (Dummer): the widest cone containing no point of the height field, i.e.
+ *    c_p = min over surface points q shallower than the apex of dist(p, q) / (d_p - d_q).
  *  - Relaxed (Policarpo; exact version after Ban et al.): the widest cone such that every
  *    straight ray segment that starts on the cone axis above the apex and goes down to the
  *    cone's side (that is, every step of relaxed cone stepping) crosses the surface at most

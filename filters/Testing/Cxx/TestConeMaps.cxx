@@ -710,13 +710,19 @@ TEST(vtkConeMapFilter, PacksTheCoreConesReportsProgressAndAborts)
   EXPECT_TRUE(std::is_sorted(progress.begin(), progress.end()));
   EXPECT_EQ(progress.back(), 1.0);
 
-  // 8-bit packing: the never-widening code of each cone.
+  // 8-bit packing: the never-widening code of each cone, computed for the depth as stored
+  // (rounded to 1/255), which is the surface the renderer samples.
   filter->SetPackingToSeed8Bit();
   filter->SetConeTypeToConservative();
   filter->Update();
   vtkDataArray* bytes = filter->GetOutput()->GetPointData()->GetScalars();
   ASSERT_EQ(bytes->GetDataType(), VTK_UNSIGNED_CHAR);
-  const auto conservative = mesolight::ComputeConservativeConeMap(depth.data(), 40, 33);
+  std::vector<float> stored(depth.size());
+  for (size_t k = 0; k < depth.size(); ++k)
+  {
+    stored[k] = static_cast<float>(bytes->GetComponent(static_cast<vtkIdType>(k), 3) / 255.0);
+  }
+  const auto conservative = mesolight::ComputeConservativeConeMap(stored.data(), 40, 33);
   for (size_t k = 0; k < depth.size(); ++k)
   {
     ASSERT_EQ(bytes->GetComponent(static_cast<vtkIdType>(k), 2),
