@@ -619,14 +619,23 @@ public:
     // The cells within kNearRing first, directly (a ring search, as Ban et al. 2024 do); on
     // rough and flat maps the cone is often settled there: every cell further out is at least
     // kNearRing + 1 away, so none can go below (kNearRing + 1 - sqrt 2) / (w (dX - lowest)).
-    for (int yj = std::max(0, xj - kNearRing); yj <= std::min(this->CH - 1, xj + kNearRing); ++yj)
+    // Ring by ring (Chebyshev distance 0 .. kNearRing), so that the nearest, usually binding,
+    // cells lower Best first and the quick rejection of PairBound drops most of the others.
+    for (int ring = 0; ring <= kNearRing; ++ring)
     {
-      for (int yi = std::max(0, xi - kNearRing); yi <= std::min(this->CW - 1, xi + kNearRing);
-           ++yi)
+      for (int yj = std::max(0, xj - ring); yj <= std::min(this->CH - 1, xj + ring); ++yj)
       {
-        if (this->CellMin[static_cast<std::size_t>(yj) * this->CW + yi] < st.DX)
+        const bool edgeRow = std::abs(yj - xj) == ring;
+        for (int yi = std::max(0, xi - ring); yi <= std::min(this->CW - 1, xi + ring); ++yi)
         {
-          st.Best = std::min(st.Best, this->PairBound(xi, xj, cx, yi, yj, st.Best));
+          if (!edgeRow && std::abs(yi - xi) != ring)
+          {
+            continue; // inside the ring: done before
+          }
+          if (this->CellMin[static_cast<std::size_t>(yj) * this->CW + yi] < st.DX)
+          {
+            st.Best = std::min(st.Best, this->PairBound(xi, xj, cx, yi, yj, st.Best));
+          }
         }
       }
     }
