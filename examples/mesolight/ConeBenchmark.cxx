@@ -311,6 +311,7 @@ int RunConeBenchmark(const std::vector<std::string>& args)
       std::cerr << "mesolight bench cones: cannot write " << cl.Get("--csv") << "\n";
       return 1;
     }
+    csv << std::fixed;
     csv << "map,size,type,threads,seconds,cpu_seconds,oracle_seconds_extrapolated,speedup,median_ratio,"
            "clamped_fraction\n";
   }
@@ -371,8 +372,8 @@ int RunConeBenchmark(const std::vector<std::string>& args)
         if (csv)
         {
           csv << mapNames[mi] << "," << n << "," << (relaxed ? "relaxed" : "conservative") << ","
-              << threads << "," << std::setprecision(4) << seconds << "," << cpuSeconds << "," << std::setprecision(1)
-              << extrapolated << "," << std::setprecision(1) << extrapolated / seconds << ","
+              << threads << "," << std::setprecision(3) << seconds << "," << cpuSeconds << ","
+              << std::setprecision(1) << extrapolated << "," << std::setprecision(1) << extrapolated / seconds << ","
               << std::setprecision(5) << median << "," << std::setprecision(5) << clamped << "\n";
         }
       }

@@ -282,9 +282,16 @@ void RunRows(const ConeMapOptions& options, int rowBegin, int rowEnd,
 //    (x_u, x_v, y_u, y_v), so its minimum over the box X x Y is at one of the 16 corner pairs:
 //    r = min over corner pairs (k, l) with D_k > D_l of ((y_l - x_k).n) / (D_k - D_l) bounds
 //    every pair of the cells;
+//    (any unit n with (y - x).n >= 0 on all 16 pairs works; the axis is also tried when the
+//    cells are 2 or more apart along it);
 //  - Y equal or adjacent to X: D(x) - D(y) <= G |x - y| with G the largest gradient norm of the
-//    3 x 3 cells around X (the segment stays in them), so r = 1 / G.
-// Everything is in grid units; ratios are divided by w (horizontal unit: texture widths).
+//    3 x 3 cells around X (the segment stays in them), so r = 1 / G; for relaxed cones also
+//    r = 1 / V with V the diameter of the box of gradients there (see the constructor).
+// A falling point y is counted in the cell its one-sided derivative is taken from (the cell
+// the ray enters leaving y), so every falling point is covered by exactly the cell whose
+// gradient range CellMayFall() tests. Everything is in grid units; ratios are divided by w
+// (horizontal unit: texture widths). The bounds are evaluated in double from the float depths
+// and truncated to float, so rounding can only narrow them (up to double round-off, 1e-16).
 
 struct CellCorners
 {
