@@ -5,13 +5,13 @@
 //   mesolight bake DEPTH_IMAGE --out RELIEF    a relief texture (normal RGB + depth A)
 //   mesolight bench [options]                  time and error of relief vs the dense reference
 #include "CommandLine.h"
+#include "ConeBenchmark.h"
 #include "ImageCompare.h"
 #include "LightSetBenchmark.h"
 #include "LightsCommand.h"
 #include "ReliefBenchmark.h"
 #include "ReliefScene.h"
 #include "ReliefSweep.h"
-#include "ConeBenchmark.h"
 
 #include "vtkConeMapFilter.h"
 #include "vtkLightProbeToLatLong.h"
@@ -654,6 +654,10 @@ int RunProbe(const std::vector<std::string>& args)
 
 int RunBench(const std::vector<std::string>& args)
 {
+  if (!args.empty() && args[0] == "cones")
+  {
+    return mesolight::RunConeBenchmark(std::vector<std::string>(args.begin() + 1, args.end()));
+  }
   if (!args.empty() && args[0] == "ibl")
   {
     return mesolight::RunLightSetBenchmark(std::vector<std::string>(args.begin() + 1, args.end()));
@@ -661,10 +665,6 @@ int RunBench(const std::vector<std::string>& args)
   if (!args.empty() && args[0] == "lights")
   {
     return mesolight::RunLightsBenchmark(std::vector<std::string>(args.begin() + 1, args.end()));
-  }
-  if (!args.empty() && args[0] == "cones")
-  {
-    return mesolight::RunConeBenchmark(std::vector<std::string>(args.begin() + 1, args.end()));
   }
   if (!args.empty() && args[0] == "relief")
   {
