@@ -106,10 +106,17 @@ int vtkConeMapFilter::RequestData(
   const int w = dims[0], h = dims[1];
   vtkDataArray* rgba = relief->GetPointData()->GetScalars();
   const vtkIdType count = static_cast<vtkIdType>(w) * h;
+  // The 8-bit packing stores the depth rounded to 1/255: the cones must be valid for the surface
+  // the renderer will sample, so they are computed from that quantized depth.
+  auto byte = [](double x) {
+    return static_cast<unsigned char>(std::min(255.0, std::max(0.0, x * 255.0 + 0.5)));
+  };
   std::vector<float> depth(static_cast<size_t>(count));
   for (vtkIdType i = 0; i < count; ++i)
   {
-    depth[static_cast<size_t>(i)] = static_cast<float>(rgba->GetComponent(i, 3));
+    const double d = rgba->GetComponent(i, 3);
+    depth[static_cast<size_t>(i)] =
+      this->Packing == SEED_8BIT ? static_cast<float>(byte(d) / 255.0) : static_cast<float>(d);
   }
 
   mesolight::ConeMapOptions options;
@@ -144,9 +151,6 @@ int vtkConeMapFilter::RequestData(
     packed->SetNumberOfTuples(count);
     for (vtkIdType i = 0; i < count; ++i)
     {
-      auto byte = [](double x) {
-        return static_cast<unsigned char>(std::min(255.0, std::max(0.0, x * 255.0 + 0.5)));
-      };
       packed->SetTypedComponent(i, 0, byte(rgba->GetComponent(i, 0)));
       packed->SetTypedComponent(i, 1, byte(rgba->GetComponent(i, 1)));
       packed->SetTypedComponent(i, 2, mesolight::EncodeConeRatio8(cones[static_cast<size_t>(i)]));

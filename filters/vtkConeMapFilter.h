@@ -4,10 +4,11 @@
  *
  * Cone maps store, per texel, the widest cone above the surface that a ray may step through
  * safely: conservative cones (Dummer 2006) contain no surface at all; relaxed cones (Policarpo &
- * Oliveira 2007, computed exactly on the texel samples after Ban et al. 2024) may be entered once
- * but never left, so relaxed cone stepping followed by a binary or interval search finds the first
- * hit. Cone ratios are horizontal radius (in texture widths) over depth. See filters/core/
- * ConeMaps.h for the definitions and the empirical bilinear safety scale.
+ * Oliveira 2007, with the exact definition of Ban et al. 2024) may be entered once but never left,
+ * so relaxed cone stepping followed by a binary or interval search finds the first hit. Both are
+ * provably valid on the bilinear surface the renderer samples, with ratios read bilinearly (no
+ * safety factor). Cone ratios are horizontal radius (in texture widths) over depth. See
+ * filters/core/ConeMaps.h for the definitions and the bound. Computed with vtkSMPTools.
  *
  * Input: a depth map, read exactly as vtkReliefTextureFilter reads it (the same options), or a
  * relief texture (4 components: depth in A).

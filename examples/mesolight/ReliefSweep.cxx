@@ -145,6 +145,37 @@ std::vector<std::string> SplitList(const std::string& text)
   return items;
 }
 
+// Methods whose LinearSteps / RefinementSteps are a linear or cone search and its refinement.
+bool UsesSearchSteps(int m)
+{
+  return m == vtkReliefMapper::LinearSearch || m == vtkReliefMapper::ParallaxOcclusion ||
+    m == vtkReliefMapper::Relief || m == vtkReliefMapper::Interval ||
+    m == vtkReliefMapper::RelaxedConeBinary || m == vtkReliefMapper::RelaxedConeInterval ||
+    m == vtkReliefMapper::ConservativeCone;
+}
+
+// "L+R" -> LinearSteps L (1..1024), RefinementSteps R (0..64).
+bool ParseStepLabel(const std::string& label, ReliefSweepStep& step)
+{
+  const size_t plus = label.find('+');
+  if (plus == std::string::npos)
+  {
+    return false;
+  }
+  char* end1 = nullptr;
+  char* end2 = nullptr;
+  const long l = std::strtol(label.c_str(), &end1, 10);
+  const long r = std::strtol(label.c_str() + plus + 1, &end2, 10);
+  if (end1 != label.c_str() + plus || *end2 != '\0' || l < 1 || l > 1024 || r < 0 || r > 64)
+  {
+    return false;
+  }
+  step.LinearSteps = static_cast<int>(l);
+  step.RefinementSteps = static_cast<int>(r);
+  step.Label = label;
+  return true;
+}
+
 int MethodFromName(const std::string& name)
 {
   if (name == "steep")
@@ -477,6 +508,77 @@ void PrintSummary(const ReliefSweepSettings& settings, const std::vector<ReliefS
         << " pairs, range " << Fixed(ratios.front(), 2) << " - " << Fixed(ratios.back(), 2) << ")\n";
   }
 
+  // The same question asked as "time to reach an error", symmetrically: each relief
+  // configuration's mean hit error E is a target; for each method take its fastest
+  // configuration (same map and angle) with mean hit error <= E (the Pareto front read at E;
+  // the minimum over noisy timings is taken on both sides alike). Also with the frame time of
+  // plain texture mapping (same view) subtracted: the march's own cost, which is what a cheaper
+  // search can save (llvmpipe's fixed per-frame cost is not).
+  for (const double angle : settings.Angles)
+  {
+    std::vector<double> frame;
+    std::vector<double> march;
+    int unmatched = 0;
+    for (const ReliefSweepRow& target : rows)
+    {
+      if (target.Method != vtkReliefMapper::Relief || target.Angle != angle)
+      {
+        continue;
+      }
+      const ReliefSweepRow* cone = nullptr;
+      const ReliefSweepRow* relief = nullptr;
+      const ReliefSweepRow* base = nullptr;
+      for (const ReliefSweepRow& r : rows)
+      {
+        if (r.Map != target.Map || r.Angle != angle)
+        {
+          continue;
+        }
+        if (r.Method == vtkReliefMapper::TextureMapping)
+        {
+          base = &r;
+        }
+        const bool fastEnough = r.HitMeanTexels <= target.HitMeanTexels;
+        if (r.Method == vtkReliefMapper::RelaxedConeBinary && fastEnough &&
+          (!cone || r.MedianMs < cone->MedianMs))
+        {
+          cone = &r;
+        }
+        if (r.Method == vtkReliefMapper::Relief && fastEnough &&
+          (!relief || r.MedianMs < relief->MedianMs))
+        {
+          relief = &r;
+        }
+      }
+      if (!cone || !relief || cone->MedianMs <= 0.0)
+      {
+        ++unmatched;
+        continue;
+      }
+      frame.push_back(relief->MedianMs / cone->MedianMs);
+      if (base && relief->MedianMs > base->MedianMs && cone->MedianMs > base->MedianMs)
+      {
+        march.push_back((relief->MedianMs - base->MedianMs) / (cone->MedianMs - base->MedianMs));
+      }
+    }
+    if (frame.empty())
+    {
+      continue;
+    }
+    std::sort(frame.begin(), frame.end());
+    std::sort(march.begin(), march.end());
+    out << "- " << angle << " deg, fastest relief / fastest relaxed cone reaching each relief "
+        << "setting's mean hit error: median " << Fixed(frame[frame.size() / 2], 2) << " (range "
+        << Fixed(frame.front(), 2) << " - " << Fixed(frame.back(), 2) << ", " << frame.size()
+        << " error targets, " << unmatched << " without a cone match)";
+    if (!march.empty())
+    {
+      out << "; march time only (minus texture mapping): median "
+          << Fixed(march[march.size() / 2], 2) << " (" << march.size() << ")";
+    }
+    out << "\n";
+  }
+
   // The exact methods at the most grazing angle.
   double grazing = -1.0;
   for (double a : settings.Angles)
@@ -649,7 +751,18 @@ bool RunReliefSweep(
         mapper->SetReliefTextureData(
           kind == vtkReliefMapper::NoConeMap ? relief.ReliefTexture.Get() : coneMaps[kind].Get());
         mapper->SetMethod(m);
-        for (const ReliefSweepStep& step : ReliefSweepStepsFor(m))
+        std::vector<ReliefSweepStep> steps = ReliefSweepStepsFor(m);
+        if (!settings.Steps.empty() && UsesSearchSteps(m))
+        {
+          steps.clear();
+          for (const std::string& label : settings.Steps)
+          {
+            ReliefSweepStep step;
+            ParseStepLabel(label, step);
+            steps.push_back(step);
+          }
+        }
+        for (const ReliefSweepStep& step : steps)
         {
           ReliefSweepRow row;
           row.Map = map.Label;
@@ -761,6 +874,8 @@ int RunReliefSweep(const std::vector<std::string>& args)
   cl.AddValue("--methods", "all|LIST", "vtkReliefMapper method names", "all");
   cl.AddValue("--resolution", "N", "texels per side of the procedural maps", "512");
   cl.AddValue("--depth-scale", "K", "world depth of depth 1 / wall width", "0.04");
+  cl.AddValue("--steps", "L+R,..",
+    "step settings for the linear/cone-search methods instead of the built-in table");
   cl.AddValue("--csv", "FILE", "write one CSV row per configuration");
   cl.AddValue("--plots", "DIR", "write one PNG chart per view angle into DIR");
   cl.AddFlag("--help", "show this help");
@@ -840,6 +955,16 @@ int RunReliefSweep(const std::vector<std::string>& args)
   {
     std::cerr << "mesolight bench relief: --maps and --angles need at least one entry\n";
     return 2;
+  }
+  settings.Steps = SplitList(cl.Get("--steps"));
+  for (const std::string& label : settings.Steps)
+  {
+    ReliefSweepStep step;
+    if (!ParseStepLabel(label, step))
+    {
+      std::cerr << "mesolight bench relief: --steps: '" << label << "' is not L+R\n";
+      return 2;
+    }
   }
   settings.CsvFile = cl.Get("--csv");
   settings.PlotDirectory = cl.Get("--plots");

@@ -30,6 +30,9 @@ struct ReliefSweepSettings
   std::string PlotDirectory; // one PNG chart per view angle; empty: no charts
   int Resolution = 512;      // texels per side of the procedural maps
   double DepthScale = 0.04;
+  // Step settings ("L+R") replacing the table for the methods with a linear or cone search
+  // (linear search, POM, relief, interval, cone methods); empty: the table.
+  std::vector<std::string> Steps;
 };
 
 /** One step setting of a method: what the mapper's LinearSteps / RefinementSteps mean for it. */

@@ -5,6 +5,7 @@
 //   mesolight bake DEPTH_IMAGE --out RELIEF    a relief texture (normal RGB + depth A)
 //   mesolight bench [options]                  time and error of relief vs the dense reference
 #include "CommandLine.h"
+#include "ConeBenchmark.h"
 #include "ImageCompare.h"
 #include "LightSetBenchmark.h"
 #include "LightsCommand.h"
@@ -64,6 +65,7 @@ Usage:
   mesolight bench [options]                    time and error: relief vs the dense mesh
   mesolight bench relief [options]             every method x steps x view angle x map:
                                                time vs exact hit error, CSV and plots
+  mesolight bench cones [options]              cone-map generation time, oracle speed-up
   mesolight probe PROBE_IMAGE --out FILE.exr   light probe (angular map, mirror ball, two-view
                                                merge) -> lat-long environment
   mesolight lights ENV_IMAGE --count N --out lights.csv
@@ -664,6 +666,10 @@ int RunProbe(const std::vector<std::string>& args)
 
 int RunBench(const std::vector<std::string>& args)
 {
+  if (!args.empty() && args[0] == "cones")
+  {
+    return mesolight::RunConeBenchmark(std::vector<std::string>(args.begin() + 1, args.end()));
+  }
   if (!args.empty() && args[0] == "ibl")
   {
     return mesolight::RunLightSetBenchmark(std::vector<std::string>(args.begin() + 1, args.end()));

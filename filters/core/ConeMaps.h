@@ -27,9 +27,9 @@
  *    is c * (d_p - d). Ratios are clamped to [0, MaxRatio] (default kConeMaxRatio = 1e3,
  *    reached in flat areas and on the shallowest texels), stored as float.
  *
- * Cone definitions (both evaluated over the texel samples, exactly; see the .cxx):
- *  - Conservative (Dummer): c_p = min over texels q with d_q < d_p of
- *    dist(p, q) / (d_p - d_q): the cone contains no sample of the height field.
+ * Cone definitions (stated for the continuous surface; evaluated as described below):
+ *  - Conservative (Dummer): the widest cone containing no point of the height field, i.e.
+ *    c_p = min over surface points q shallower than the apex of dist(p, q) / (d_p - d_q).
  *  - Relaxed (Policarpo; exact version after Ban et al.): the widest cone such that every
  *    straight ray segment that starts on the cone axis above the apex and goes down to the
  *    cone's side (that is, every step of relaxed cone stepping) crosses the surface at most
@@ -43,17 +43,33 @@
  *    Ban et al. show its cones are too wide. A texel q is a falling edge for p when the
  *    bilinear surface, leaving q in the direction q - p, has a positive one-sided
  *    derivative (or a zero one and a positive second-order term).
- *  - Bilinear safety (Ban et al.): the renderer reads ratios with bilinear filtering at
- *    points between texel centres, where the exact cone can be narrower than at the four
- *    corners. With Options.BilinearSafe (the default) each ratio is replaced by the minimum
- *    over its 3 x 3 texel neighbourhood, so an interpolated ratio never exceeds any ratio
- *    of the texels around its cell; relaxed cones also count q as a falling edge when it is
- *    one seen from any apex position in the cells around p (IsFallingEdgeNear). That is NOT
- *    sufficient on its own (measured: grazing rays still pass the first hit for a few rays
- *    in 10^5), so an empirical safety scale follows (ConeMapOptions). The unit tests check
- *    the consequence that matters: CPU cone stepping with bilinear lookups never passes the
- *    first hit found by mesolight::IntersectFirst. An exact bilinear-surface cone (per cell,
- *    with continuous apexes and falling edges) is future work.
+ *  - Bilinear safety (default, ConeMapOptions::BilinearSafe): the renderer reads the depth AND
+ *    the ratio with bilinear filtering at any point between texel centres. Ban et al. show
+ *    that per-texel cones are then not enough. Here the cones are provably valid for every
+ *    apex on the bilinear surface: for each cell X of the texel-centre grid a ratio R_X is
+ *    computed that is <= the exact (continuous) cone ratio at every apex position in X, and
+ *    each texel stores the minimum of R_X over the 4 cells it is a corner of, so any
+ *    bilinearly interpolated ratio (a convex combination of a cell's 4 corners) is valid
+ *    (the role of Ban et al.'s 3 x 3 minimum pass). R_X bounds |y - x| / (D(x) - D(y)) over
+ *    the points y of every other cell Y that could violate the definition (conservative: any
+ *    shallower point; relaxed: a falling point, detected from the cell's gradient range and
+ *    the directions from X to Y), with
+ *      far cells (2+ apart): (y - x).n - r (D(x) - D(y)) is multi-affine in the 4 coordinates,
+ *        so its minimum over X x Y is at one of the 16 corner pairs (exact corner depths);
+ *      near cells: D(x) - D(y) <= G |x - y| (G: largest gradient norm around X) and, for
+ *        relaxed cones, <= V |x - y| (V: spread of the gradients around X; a falling point
+ *        has a non-negative slope along the ray, so the drop before it is bounded by how much
+ *        the gradient varies: planes get no bound at all).
+ *    Details and proofs in the .cxx. There is no empirical safety factor; the stored float
+ *    is truncated toward zero (never wider than the bound).
+ *    Cost: the fast search is a branch and bound over a min-depth pyramid of cells with
+ *    per-octant minima over the cells that can fall in that octant (so that cells rising away
+ *    from the apex are skipped), after a direct search of the cells within 3 of the apex (the
+ *    ring search of Ban et al.), and a node is not opened when it is small against its
+ *    distance (Valasek & Ban 2022's coarse max-mipmap texels): within ConeMapOptions::Tolerance.
+ *  - BilinearSafe off: per-texel cones over the texel samples only (the definitions above
+ *    with q ranging over texels and IsFallingEdgeNear); NOT valid under bilinear filtering
+ *    (grazing rays pass the first hit); kept as a comparison (mesolight bench cones).
  *
  * Encodings of a ratio c:
  *  - float (e.g. the Float packing of vtkConeMapFilter): c itself, in [0, MaxRatio];
@@ -99,21 +115,18 @@ struct ConeMapOptions
    */
   std::function<bool(double)> Progress;
   /**
-   * Bilinear safety (see the file comment): 3 x 3 neighbourhood minimum (Ban et al. 2024),
-   * then the safety scale of the cone type. Default on. Off gives the raw per-texel cones.
+   * Default on: cones valid on the bilinear surface, for every apex position and every read of
+   * the ratio with bilinear filtering (the cell bound of the file comment; provable, no safety
+   * factor). Off: the per-texel cones over the texel samples only (narrower definition of
+   * validity, NOT safe under bilinear filtering; kept for comparison and tests).
    */
   bool BilinearSafe = true;
   /**
-   * EMPIRICAL factors applied with BilinearSafe. The per-texel definitions are exact over the
-   * texel samples, but the bilinear surface between texels and apexes between texel centres
-   * can need narrower cones than the 3 x 3 minimum gives (grazing rays over bilinear saddles,
-   * cones read between a deep texel and shallow ones). These factors are the largest round
-   * values with margin that make the unit tests' CPU stepping (100 000 random rays per test
-   * map) never pass the exact first hit, nor (conservative) go below the surface: 0.8 and 0.7
-   * passed there. Not a proof.
+   * Relative tolerance of the fast bilinear-safe search: the result r satisfies
+   * exact / (1 + Tolerance) <= r <= exact, where exact is what the brute-force oracle returns
+   * (still a valid cone: it is never wider). 0 gives results bit-identical to the oracle.
    */
-  float RelaxedSafetyScale = 0.75f;
-  float ConservativeSafetyScale = 0.6f;
+  float Tolerance = 0.25f;
   /// Clamp of the ratios (flat areas). Default kConeMaxRatio.
   float MaxRatio = kConeMaxRatio;
 };
@@ -136,7 +149,8 @@ MESOLIGHTFILTERS_EXPORT std::vector<float> ComputeConeMap(ConeType type, const f
 ///@{
 /**
  * TEST ORACLES: the same definitions by exhaustive O((w h)^2) search, single-threaded (only
- * Options.BilinearSafe and MaxRatio are used). Bit-identical to the fast versions.
+ * Options.BilinearSafe and MaxRatio are used). The fast versions are bit-identical to them
+ * with Tolerance 0, and within [oracle / (1 + Tolerance), oracle] otherwise.
  */
 MESOLIGHTFILTERS_EXPORT std::vector<float> ComputeConservativeConeMapBruteForce(
   const float* depth, int w, int h, const ConeMapOptions& options = ConeMapOptions());
