@@ -1,5 +1,6 @@
 #include "VlfCommand.h"
 
+#include "AnalyticCases.h"
 #include "ChartPlot.h"
 #include "CommandLine.h"
 
@@ -494,38 +495,6 @@ vlf::ReferenceRadiance CornellReference(const TriangleScene& world)
   };
 }
 
-// A square emitter over a floor: the floor's diffuse radiance is rho Le F(x) exactly (F the
-// point-to-square form factor, Howell C-11).
-double CornerFormFactor(double a, double b, double h)
-{
-  const double x = a / h, y = b / h, pi = 3.14159265358979323846;
-  return (x / std::sqrt(1.0 + x * x) * std::atan(y / std::sqrt(1.0 + x * x)) +
-           y / std::sqrt(1.0 + y * y) * std::atan(x / std::sqrt(1.0 + y * y))) /
-    (2.0 * pi);
-}
-double SquareFormFactor(double side, double h, double px, double py)
-{
-  const double s = 0.5 * side;
-  auto corner = [&](double a, double b) {
-    return (a < 0 ? -1.0 : 1.0) * (b < 0 ? -1.0 : 1.0) * CornerFormFactor(std::abs(a), std::abs(b), h);
-  };
-  return corner(s - px, s - py) + corner(s + px, s - py) + corner(s - px, s + py) + corner(s + px, s + py);
-}
-TriangleScene EmitterOverFloor(float albedo, float le)
-{
-  TriangleScene scene;
-  SceneMaterial floor;
-  floor.Name = "floor";
-  floor.Diffuse = glm::vec3(albedo);
-  SceneMaterial light;
-  light.Name = "light";
-  light.Diffuse = glm::vec3(0.0f);
-  light.Emission = glm::vec3(le);
-  const std::uint32_t f = scene.AddMaterial(floor), l = scene.AddMaterial(light);
-  scene.AddPolygon({ { -1, -1, 0 }, { 1, -1, 0 }, { 1, 1, 0 }, { -1, 1, 0 } }, f);
-  scene.AddPolygon({ { -0.5f, -0.5f, 1 }, { -0.5f, 0.5f, 1 }, { 0.5f, 0.5f, 1 }, { 0.5f, -0.5f, 1 } }, l);
-  return scene;
-}
 } // namespace
 
 int RunVlfBenchmark(const std::vector<std::string>& args)
@@ -620,14 +589,14 @@ int RunVlfBenchmark(const std::vector<std::string>& args)
         double floorMean = 0.0, floorRms = 0.0, furnace = 0.0;
         {
           const float albedo = 0.5f, le = 2.0f;
-          std::unique_ptr<vlf::LightField> f = vlf::LightField::Build(EmitterOverFloor(albedo, le), settings);
+          std::unique_ptr<vlf::LightField> f = vlf::LightField::Build(vlf::MakeEmitterOverFloor(1.0f, 1.0f, 2.0f, albedo, le), settings);
           vlf::Propagate(*f, 1);
           const TriangleScene& unit = f->Scene();
           const vlf::PatchComparisonResult r = vlf::ComparePatches(*f,
             [&](std::uint32_t t, const glm::vec3& w) {
               return unit.MaterialOf(t).Emission.x > 0.0f
                 ? glm::vec3(le)
-                : glm::vec3(static_cast<float>(albedo * le * SquareFormFactor(1.0, 1.0, w.x, w.y)));
+                : glm::vec3(static_cast<float>(albedo * le * vlf::SquareFormFactor(1.0, 1.0, w.x, w.y)));
             },
             1000);
           floorMean = r.Patches[0].MeanError;
