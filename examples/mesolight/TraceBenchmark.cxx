@@ -161,7 +161,8 @@ int RunTraceBenchmark(const std::vector<std::string>& args)
   });
   rows.push_back({ "primary coherent, single rays", threads, primaryCount, single, "rays" });
 
-  const double packets = best([&] {
+  // Traces the rays of 4 x 4 pixel blocks as 16-ray packets; rayAt(i, j) gives pixel (i, j)'s ray.
+  auto tracePackets = [&](const std::function<SceneRay(int, int)>& rayAt) {
     ForEachTile(size, size, 16, threads, [&](const TileRange& tile) {
       SceneRay rays[16];
       SceneHit result[16];
@@ -174,13 +175,16 @@ int RunTraceBenchmark(const std::vector<std::string>& args)
           {
             for (int a = 0; a < 4 && i + a < tile.X1; ++a)
             {
-              rays[n++] = camera.Ray(i + a + 0.5f, j + b + 0.5f, size, size);
+              rays[n++] = rayAt(i + a, j + b);
             }
           }
           embree.Intersect16(rays, result, n);
         }
       }
     });
+  };
+  const double packets = best([&] {
+    tracePackets([&](int i, int j) { return camera.Ray(i + 0.5f, j + 0.5f, size, size); });
   });
   rows.push_back({ "primary coherent, 16-ray packets (4x4 pixels)", threads, primaryCount, packets, "rays" });
 
@@ -216,25 +220,7 @@ int RunTraceBenchmark(const std::vector<std::string>& args)
   });
   rows.push_back({ "diffuse bounces incoherent, single rays", threads, primaryCount, incoherent, "rays" });
   const double incoherentPackets = best([&] {
-    ForEachTile(size, size, 16, threads, [&](const TileRange& tile) {
-      SceneRay rays[16];
-      SceneHit result[16];
-      for (int j = tile.Y0; j < tile.Y1; j += 4)
-      {
-        for (int i = tile.X0; i < tile.X1; i += 4)
-        {
-          int n = 0;
-          for (int b = 0; b < 4 && j + b < tile.Y1; ++b)
-          {
-            for (int a = 0; a < 4 && i + a < tile.X1; ++a)
-            {
-              rays[n++] = bounces[static_cast<std::size_t>(j + b) * size + i + a];
-            }
-          }
-          embree.Intersect16(rays, result, n);
-        }
-      }
-    });
+    tracePackets([&](int i, int j) { return bounces[static_cast<std::size_t>(j) * size + i]; });
   });
   rows.push_back({ "diffuse bounces incoherent, 16-ray packets", threads, primaryCount, incoherentPackets, "rays" });
 
