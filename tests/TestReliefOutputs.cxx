@@ -1,5 +1,6 @@
 // vtkReliefMapper's measurement outputs decode to what they encode: on a flat map seen straight
-// down through a parallel camera, the hit coordinate of each pixel is the pixel's own position.
+// down through a parallel camera, the hit coordinate of each pixel is the pixel's own position,
+// and the sample count is exactly what the march skeleton takes.
 #include "ImageCompare.h"
 #include "ReliefScene.h"
 #include "TestReliefTestUtilities.h"
@@ -14,18 +15,25 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
 
 namespace
 {
 using namespace mesolight;
 constexpr int Pixels = 256;
 
-Frame RenderTopDown(int output)
+Frame RenderTopDown(int output, double depth = 0.0,
+  const std::function<void(vtkReliefMapper*)>& configure = nullptr)
 {
-  auto relief = test::BakeRelief(test::MakeDepthMap(64, 64, [](double, double) { return 0.0; }), 0.1);
+  auto relief =
+    test::BakeRelief(test::MakeDepthMap(64, 64, [depth](double, double) { return depth; }), 0.1);
   vtkNew<vtkReliefMapper> mapper;
   auto actor = test::UnitSquareRelief(mapper, relief, 0.1);
   mapper->SetOutput(output);
+  if (configure)
+  {
+    configure(mapper);
+  }
   vtkNew<vtkRenderer> renderer;
   renderer->AddActor(actor);
   vtkNew<vtkLight> light;
@@ -66,4 +74,31 @@ TEST(ReliefOutputs, LightVisibilityIsWhiteUnderAnOverheadLight)
   const Frame lit = RenderTopDown(vtkReliefMapper::LightVisibilityOutput);
   const size_t centre = size_t(Pixels / 2) * Pixels + Pixels / 2;
   EXPECT_EQ(lit.Rgb[3 * centre], 255);
+}
+
+// Relief 10+4 on a flat map at depth 0.35, straight down: the linear search samples t = 0.1 ..
+// 0.4 (4 samples, the last one below), 4 binary steps, 1 normal fetch for shading = 9. With
+// self-shadowing under an overhead light, the shadow march from the top down to the hit adds
+// ceil(10 * 0.35) = 4 samples (it skips the hit itself). Texture mapping samples nothing.
+TEST(ReliefOutputs, SampleCountIsWhatTheMarchTakes)
+{
+  const auto count = [](const Frame& frame) {
+    const size_t centre = size_t(Pixels / 2) * Pixels + Pixels / 2;
+    int n = -1;
+    EXPECT_TRUE(DecodeSampleCount(frame, centre, n));
+    return n;
+  };
+  const auto relief = [](bool shadows) {
+    return [shadows](vtkReliefMapper* m) {
+      m->SetMethod(vtkReliefMapper::Relief);
+      m->SetLinearSteps(10);
+      m->SetRefinementSteps(4);
+      m->SetSelfShadowing(shadows);
+    };
+  };
+  EXPECT_EQ(count(RenderTopDown(vtkReliefMapper::SampleCountOutput, 0.35, relief(false))), 9);
+  EXPECT_EQ(count(RenderTopDown(vtkReliefMapper::SampleCountOutput, 0.35, relief(true))), 13);
+  EXPECT_EQ(count(RenderTopDown(vtkReliefMapper::SampleCountOutput, 0.35,
+              [](vtkReliefMapper* m) { m->SetMethod(vtkReliefMapper::TextureMapping); })),
+    0);
 }

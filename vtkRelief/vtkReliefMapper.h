@@ -206,6 +206,9 @@ public:
     LightVisibilityOutput = vtkReliefShading::LightVisibilityOutput,
     /// red where a NaN or Inf arose on the way to the colour, else green
     NonFiniteCheckOutput = vtkReliefShading::NonFiniteCheckOutput,
+    /// relief-texture samples the fragment took, as a 16-bit count in R (high) and G (low)
+    /// bytes: the march's cost, independent of the machine (mesolight::DecodeSampleCount)
+    SampleCountOutput = vtkReliefShading::SampleCountOutput,
     NumberOfOutputs = vtkReliefShading::NumberOfOutputs
   };
 

@@ -821,6 +821,10 @@ void vtkReliefShading::ReplaceShaderValuesAfter(std::string& fs, const void* cel
   {
     defines += "#define ML_ADAPTIVE_STEPS\n";
   }
+  if (this->LevelOfDetail)
+  {
+    defines += "#define ML_LEVEL_OF_DETAIL\n";
+  }
   if (this->HasLightSet)
   {
     defines += "#define ML_LIGHT_SET\n";

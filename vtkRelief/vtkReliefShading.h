@@ -77,6 +77,7 @@ public:
     HitVOutput = 2,
     LightVisibilityOutput = 3,
     NonFiniteCheckOutput = 4,
+    SampleCountOutput = 5,
     NumberOfOutputs
   };
 

@@ -18,13 +18,23 @@ uniform int mlMinimumSteps; // adaptive step counts: from mlLinearSteps (grazing
 // Marches use explicit levels: implicit derivatives are undefined inside divergent loops.
 float mlMarchLod = 0.0;
 
+// Relief-texture samples this fragment took (SampleCountOutput): what a march costs on any GPU.
+int mlSampleCount = 0;
+#if ML_OUTPUT == 5
+#define ML_COUNT_SAMPLE() ++mlSampleCount
+#else
+#define ML_COUNT_SAMPLE()
+#endif
+
 float mlDepthAt(vec2 uv)
 {
+  ML_COUNT_SAMPLE();
   return textureLod(mlReliefTexture, uv, mlMarchLod).a;
 }
 
 vec3 mlPackedNormalAt(vec2 uv)
 {
+  ML_COUNT_SAMPLE();
   vec4 texel = textureLod(mlReliefTexture, uv, mlMarchLod);
 #ifdef ML_CONE_PACKED
   vec2 nxy = texel.rg * 2.0 - 1.0;
@@ -38,7 +48,21 @@ vec3 mlPackedNormalAt(vec2 uv)
 // Cone ratio at the base level: cone maps are never averaged (an average cone is not a cone).
 float mlConeAt(vec2 uv)
 {
+  ML_COUNT_SAMPLE();
   return max(textureLod(mlReliefTexture, uv, 0.0).b, 0.0);
+}
+
+// Depth (x) and cone ratio (y) at uv: one fetch of the packed texel, so a cone step costs what a
+// linear step costs; two when level of detail reads the depth from a coarser level.
+vec2 mlDepthAndConeAt(vec2 uv)
+{
+#ifdef ML_LEVEL_OF_DETAIL
+  return vec2(mlDepthAt(uv), mlConeAt(uv));
+#else
+  ML_COUNT_SAMPLE();
+  vec4 texel = textureLod(mlReliefTexture, uv, 0.0);
+  return vec2(texel.a, max(texel.b, 0.0));
+#endif
 }
 #endif
 

@@ -97,6 +97,11 @@
     any(isinf(mlHitPos)) || any(isnan(mlShadingNormal)) || any(isnan(gl_FragData[0])) ||
     any(isinf(gl_FragData[0]));
   gl_FragData[0] = mlBad ? vec4(1.0, 0.0, 0.0, 1.0) : vec4(0.0, 1.0, 0.0, 1.0);
+#elif ML_OUTPUT == 5
+  // Relief-texture samples this fragment took, shading and shadows of every light included, as
+  // a 16-bit count in R (high) and G (low).
+  float mlCount = float(min(mlSampleCount, 65535));
+  gl_FragData[0] = vec4(floor(mlCount / 256.0), mod(mlCount, 256.0), 0.0, 255.0) / 255.0;
 #endif
 #endif
 #ifdef ML_WRITE_DEPTH

@@ -115,12 +115,13 @@ float mlConeSearch(vec3 origin, vec3 span, int steps, out float tAbove)
   for (int i = 0; i < steps; ++i)
   {
     vec3 p = origin + t * span;
-    float depth = mlDepthAt(p.xy);
+    vec2 depthCone = mlDepthAndConeAt(p.xy);
+    float depth = depthCone.x;
     if (p.z >= depth)
     {
       return t;
     }
-    float c = mlConeAt(p.xy);
+    float c = depthCone.y;
     float coneStep = c * (depth - p.z) / ((rate + c) * max(span.z, 1e-6));
     tAbove = t;
     t = min(t + max(coneStep, (1.0 - t) / float(steps - i)), 1.0);
@@ -199,14 +200,15 @@ bool mlShadowed(vec3 hit, vec3 spanUpPerDepth)
   for (int i = 0; i < mlLinearSteps && t < 1.0 - 1e-3; ++i)
   {
     vec3 p = origin + t * span;
-    float depth = mlDepthAt(p.xy);
+    vec2 depthCone = mlDepthAndConeAt(p.xy);
+    float depth = depthCone.x;
     if (p.z > depth + bias)
     {
       return true;
     }
     // As in mlConeSearch: at least an even share of the rest, so stalls at walls still progress
     // and a blocker is sampled below its surface.
-    float c = mlConeAt(p.xy);
+    float c = depthCone.y;
     t += max(c * (depth - p.z) / ((rate + c) * span.z), (1.0 - t) / float(mlLinearSteps - i));
   }
   return false;

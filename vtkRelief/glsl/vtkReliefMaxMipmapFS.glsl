@@ -17,6 +17,7 @@ uniform int mlPyramidSizes[32];
 float mlTexelDepth(ivec2 ij)
 {
   ivec2 size = ivec2(mlTextureSize);
+  ML_COUNT_SAMPLE();
   return texelFetch(mlReliefTexture, clamp(ij, ivec2(0), size - 1), 0).a;
 }
 
@@ -101,6 +102,7 @@ float mlTraceMaxMipmap(vec3 origin, vec3 span, int maxIterations)
     tx.x = dx.x > 0.0 ? (hi.x - x.x) / dx.x : (dx.x < 0.0 ? (lo.x - x.x) / dx.x : 1e30);
     tx.y = dx.y > 0.0 ? (hi.y - x.y) / dx.y : (dx.y < 0.0 ? (lo.y - x.y) / dx.y : 1e30);
     float tExit = min(1.0, t + max(min(tx.x, tx.y), 0.0));
+    ML_COUNT_SAMPLE();
     float minDepth = texelFetch(mlMinDepthPyramid, kL, level).r;
     float zExit = origin.z + tExit * span.z;
     if (zExit < minDepth && span.z > 0.0 || max(p.z, zExit) < minDepth)
