@@ -212,8 +212,8 @@ TEST(ReliefSweep, TinySweepWritesRowsCsvAndCharts)
   std::vector<ReliefSweepRow> rows;
   ASSERT_TRUE(RunReliefSweep(s, out, &rows)) << out.str();
   std::cout << out.str();
-  // texture: 1 setting, relief: 9 settings, on two maps.
-  ASSERT_EQ(rows.size(), 20u);
+  // texture: 1 setting, relief: 15 settings, on two maps.
+  ASSERT_EQ(rows.size(), 32u);
   EXPECT_TRUE(std::filesystem::exists(dir + "/sweep-stone-16bit.png"));
   EXPECT_TRUE(std::filesystem::exists(dir + "/relief-sweep-view60.png"));
   std::ifstream csv(s.CsvFile);
@@ -222,15 +222,25 @@ TEST(ReliefSweep, TinySweepWritesRowsCsvAndCharts)
   {
     ++lines;
   }
-  EXPECT_EQ(lines, 21);
+  EXPECT_EQ(lines, 33);
   for (const std::string& map : { std::string("Bricks"), std::string("file(stone16)") })
   {
     double texture = -1.0, relief = -1.0;
+    double samples8 = -1.0, samples128 = -1.0; // relief 8+8 and 128+8, per pixel
     for (const ReliefSweepRow& r : rows)
     {
       if (r.Map == map && r.MethodName == "texture")
       {
         texture = r.HitMeanTexels;
+        EXPECT_EQ(r.SamplesPerPixel, 0.0) << "texture mapping samples no relief";
+      }
+      if (r.Map == map && r.MethodName == "relief" && r.Step.Label == "8+8")
+      {
+        samples8 = r.SamplesPerPixel;
+      }
+      if (r.Map == map && r.MethodName == "relief" && r.Step.Label == "128+8")
+      {
+        samples128 = r.SamplesPerPixel;
       }
       if (r.Map == map && r.MethodName == "relief" && r.Step.Label == "32+8")
       {
@@ -242,6 +252,9 @@ TEST(ReliefSweep, TinySweepWritesRowsCsvAndCharts)
     EXPECT_GE(relief, 0.0) << map;
     EXPECT_LT(relief, 0.5) << map;
     EXPECT_GT(texture, 4.0 * relief) << map;
+    // At least 8 binary steps and the shading normal; the longer search samples more.
+    EXPECT_GE(samples8, 9.0) << map;
+    EXPECT_GT(samples128, samples8) << map;
   }
   EXPECT_EQ(ReliefSweepStepsFor(vtkReliefMapper::MaximumMipmap).size(), 3u);
   EXPECT_NE(RunReliefSweep(std::vector<std::string>{ "--methods", "no-such-method" }), 0);

@@ -129,6 +129,35 @@ bool DecodeHitCoordinate(const Frame& frame, size_t pixel, double& coordinate)
 }
 
 //------------------------------------------------------------------------------
+bool DecodeSampleCount(const Frame& frame, size_t pixel, int& count)
+{
+  if (!frame.Covered(pixel))
+  {
+    return false;
+  }
+  const unsigned char* c = &frame.Rgb[3 * pixel];
+  count = 256 * c[0] + c[1];
+  return true;
+}
+
+//------------------------------------------------------------------------------
+double MeanSampleCount(const Frame& frame)
+{
+  double sum = 0.0;
+  long long n = 0;
+  for (size_t p = 0; p < frame.Depth.size(); ++p)
+  {
+    int count = 0;
+    if (DecodeSampleCount(frame, p, count))
+    {
+      sum += count;
+      ++n;
+    }
+  }
+  return n > 0 ? sum / n : 0.0;
+}
+
+//------------------------------------------------------------------------------
 bool WritePng(const Frame& frame, const char* fileName)
 {
   vtkNew<vtkImageData> image;

@@ -56,6 +56,15 @@ FrameDifference CompareFrames(
  */
 bool DecodeHitCoordinate(const Frame& frame, size_t pixel, double& coordinate);
 
+/**
+ * Decodes vtkReliefMapper's SampleCountOutput at a pixel: the relief-texture samples the fragment
+ * took. False for background pixels.
+ */
+bool DecodeSampleCount(const Frame& frame, size_t pixel, int& count);
+
+/** Mean of DecodeSampleCount over the covered pixels of a frame (0 if none is covered). */
+double MeanSampleCount(const Frame& frame);
+
 /** Writes the frame's colour as PNG. */
 bool WritePng(const Frame& frame, const char* fileName);
 

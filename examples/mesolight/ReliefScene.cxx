@@ -16,6 +16,7 @@
 #include <vtkLight.h>
 #include <vtkMapper.h>
 #include <vtkMath.h>
+#include <vtkMatrix4x4.h>
 #include <vtkNew.h>
 #include <vtkPlaneSource.h>
 #include <vtkPointData.h>
@@ -26,6 +27,7 @@
 #include <vtkRenderer.h>
 #include <vtkTexture.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <sstream>
@@ -255,6 +257,45 @@ vtkSmartPointer<vtkImageData> MakeEnvironmentLights(
 }
 
 //------------------------------------------------------------------------------
+static void FillViewportWithWall(vtkCamera* camera, double height, double depthScale)
+{
+  // Bounding box, in normalized device coordinates at aspect 1, of the wall's box (the relief
+  // reaches depthScale below it). It is a convex solid, so its 8 corners bound the projection.
+  camera->UseExplicitAspectRatioOn();
+  camera->SetExplicitAspectRatio(1.0);
+  vtkMatrix4x4* m = camera->GetCompositeProjectionTransformMatrix(1.0, -1.0, 1.0);
+  double lo[2] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MAX };
+  double hi[2] = { -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
+  for (int corner = 0; corner < 8; ++corner)
+  {
+    const double p[4] = { double(corner & 1), (corner & 2) ? height : 0.0,
+      (corner & 4) ? -depthScale : 0.0, 1.0 };
+    double q[4];
+    m->MultiplyPoint(p, q);
+    for (int k = 0; k < 2; ++k)
+    {
+      const double ndc = q[k] / q[3];
+      lo[k] = std::min(lo[k], ndc);
+      hi[k] = std::max(hi[k], ndc);
+    }
+  }
+  // Half extents with a 2% margin, so silhouettes stay inside the frame.
+  const double sx = 0.51 * (hi[0] - lo[0]);
+  const double sy = 0.51 * (hi[1] - lo[1]);
+  if (!(sx > 1e-6 && sy > 1e-6))
+  {
+    camera->UseExplicitAspectRatioOff();
+    return;
+  }
+  // Narrowing the vertical view angle by sy scales NDC by 1 / sy; the aspect ratio sx / sy maps
+  // the horizontal extent to [-1, 1]; the window centre (in NDC of the new frustum) recentres.
+  const double halfAngle = std::atan(std::tan(vtkMath::RadiansFromDegrees(0.5 * camera->GetViewAngle())) * sy);
+  camera->SetViewAngle(2.0 * vtkMath::DegreesFromRadians(halfAngle));
+  camera->SetExplicitAspectRatio(sx / sy);
+  camera->SetWindowCenter(0.5 * (lo[0] + hi[0]) / sx, 0.5 * (lo[1] + hi[1]) / sy);
+}
+
+//------------------------------------------------------------------------------
 void SetupCameraAndLights(const ReliefSceneOptions& options, vtkRenderer* renderer)
 {
   // Aim at the wall's centre from ViewAngle off its normal, turned by ViewAzimuth about it.
@@ -275,6 +316,12 @@ void SetupCameraAndLights(const ReliefSceneOptions& options, vtkRenderer* render
   camera->SetViewAngle(30.0);
   // The same clipping range for every variant, so depth buffers compare.
   camera->SetClippingRange(0.25 * d, 2.5 * d);
+  camera->SetWindowCenter(0.0, 0.0);
+  camera->UseExplicitAspectRatioOff();
+  if (options.FillViewport)
+  {
+    FillViewportWithWall(camera, height, options.DepthScale);
+  }
 
   renderer->SetBackground(0.08, 0.09, 0.11);
   renderer->RemoveAllLights();

@@ -42,6 +42,10 @@ struct ReliefSceneOptions
   double ViewAngle = 55.0; // camera angle from the wall's normal, degrees
   double ViewAzimuth = 20.0;
   double ViewDistance = 2.6; // in wall widths
+  // Stretch and centre the projection so the wall's footprint (relief depth included) fills the
+  // viewport: at grazing angles the wall is otherwise a thin strip of the frame, and a frame time
+  // would measure mostly the fixed per-frame cost, not the march. Pixels are then not square.
+  bool FillViewport = false;
   int Lights = 2;            // 0: none; 1: key light; 2: key + fill
   // Image-based lighting: "" (none), "procedural:sky", "procedural:sun" or an HDR file; its
   // median-cut lights light the relief (vtkReliefMapper light set).

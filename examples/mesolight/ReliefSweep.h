@@ -30,6 +30,9 @@ struct ReliefSweepSettings
   std::string PlotDirectory; // one PNG chart per view angle; empty: no charts
   int Resolution = 512;      // texels per side of the procedural maps
   double DepthScale = 0.04;
+  // Frame each view so the wall fills the window (ReliefSceneOptions::FillViewport): frame times
+  // then measure the march over the whole window at every angle, not a strip of it.
+  bool FillViewport = true;
   // Step settings ("L+R") replacing the table for the methods with a linear or cone search
   // (linear search, POM, relief, interval, cone methods); empty: the table.
   std::vector<std::string> Steps;
@@ -56,6 +59,9 @@ struct ReliefSweepRow
   ReliefSweepStep Step;
   double MedianMs = 0.0;
   double FirstMs = 0.0; // the warm-up frame (shader compilation, uploads)
+  // Relief-texture samples per covered pixel (SampleCountOutput): the march's cost on any GPU,
+  // free of llvmpipe's timing noise and fixed per-frame cost.
+  double SamplesPerPixel = 0.0;
   double HitMeanTexels = 0.0;
   double HitP99Texels = 0.0;
   double SilhouetteMismatch = 0.0; // % of the footprint
