@@ -181,6 +181,7 @@ bool BuildReliefTextures(const ReliefSceneOptions& options, vtkSmartPointer<vtkI
     vtkNew<vtkConeMapFilter> cones;
     cones->AddObserver(vtkCommand::ErrorEvent, errors);
     cones->SetInputData(relief);
+    cones->SetDepthScale(options.DepthScale); // bake the normals as the relief texture was
     if (coneMap == vtkReliefMapper::ConservativeConeMap)
     {
       cones->SetConeTypeToConservative();

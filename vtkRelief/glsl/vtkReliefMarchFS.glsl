@@ -194,10 +194,14 @@ bool mlShadowed(vec3 hit, vec3 spanUpPerDepth)
   float t = mlTraceMaxMipmap(origin + vec3(0.0, 0.0, -bias), span, mlLinearSteps);
   return t < 1.0 - 1e-3;
 #else
+  // The linear search's budget: mlLinearSteps per unit of depth travelled, so a shallow hit costs
+  // a few samples. The cone march shares it (its floor is then the linear step), so it never
+  // samples more than the linear search it accelerates.
+  int steps = max(2, int(ceil(float(mlLinearSteps) * hit.z)) + 1);
 #ifdef ML_CONE_PACKED
   float rate = length(vec2(span.x, span.y * mlTexelAspect)) / span.z;
   float t = 0.0;
-  for (int i = 0; i < mlLinearSteps && t < 1.0 - 1e-3; ++i)
+  for (int i = 0; i < steps && t < 1.0 - 1e-3; ++i)
   {
     vec3 p = origin + t * span;
     vec2 depthCone = mlDepthAndConeAt(p.xy);
@@ -209,11 +213,10 @@ bool mlShadowed(vec3 hit, vec3 spanUpPerDepth)
     // As in mlConeSearch: at least an even share of the rest, so stalls at walls still progress
     // and a blocker is sampled below its surface.
     float c = depthCone.y;
-    t += max(c * (depth - p.z) / ((rate + c) * span.z), (1.0 - t) / float(mlLinearSteps - i));
+    t += max(c * (depth - p.z) / ((rate + c) * span.z), (1.0 - t) / float(steps - i));
   }
   return false;
 #else
-  int steps = max(2, int(ceil(float(mlLinearSteps) * hit.z)) + 1);
   float dt = 1.0 / float(steps);
   // Skip the last sample (the hit itself).
   for (int i = 1; i < steps; ++i)
