@@ -279,10 +279,11 @@ int RunLightSetBenchmark(const std::vector<std::string>& args)
   }
   if (cl.Has("--help"))
   {
-    std::cout << "mesolight bench ibl [options]\n\nA relief (hemisphere and torus, relief 16+8, "
-                 "self-shadowed) lit only by median-cut light\nsets of an environment: frame time "
-                 "per light count, the effect of each skip, and the error\nagainst a Monte Carlo "
-                 "reference with exact height-field visibility.\n\nOptions:\n";
+    std::cout << "mesolight bench ibl [options]\n\nA relief (--map, relief 16+8, self-shadowed) "
+                 "lit only by median-cut light\nsets of an environment: frame time per light "
+                 "count, the effect of each skip, the error\nagainst a Monte Carlo reference with "
+                 "exact height-field visibility, and relief vs relaxed\ncone stepping at equal "
+                 "error (--compare-count lights).\n\nOptions:\n";
     cl.PrintOptions(std::cout);
     return 0;
   }

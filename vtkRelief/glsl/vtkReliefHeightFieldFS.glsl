@@ -19,8 +19,9 @@ uniform int mlMinimumSteps; // adaptive step counts: from mlLinearSteps (grazing
 float mlMarchLod = 0.0;
 
 // Relief-texture samples this fragment took (SampleCountOutput): what a march costs on any GPU.
-int mlSampleCount = 0;
+// Counted only when that output is asked for; the other variants carry no counter at all.
 #if ML_OUTPUT == 5
+int mlSampleCount = 0;
 #define ML_COUNT_SAMPLE() ++mlSampleCount
 #else
 #define ML_COUNT_SAMPLE()
