@@ -11,6 +11,6 @@ export PYTHONPATH="$build/paraview-python/usr/lib/python3/dist-packages${PYTHONP
 export PV_PLUGIN_PATH="$build/lib/paraview-5.11/plugins/Mesolight${PV_PLUGIN_PATH:+:$PV_PLUGIN_PATH}"
 export MESOLIGHT_PLUGIN="$build/lib/paraview-5.11/plugins/Mesolight/Mesolight.so"
 if [ -z "${DISPLAY:-}" ]; then
-  exec xvfb-run -a -s "-screen 0 1280x1024x24" pvbatch "$@"
+  exec bash "$here/scripts/xvfb.sh" pvbatch "$@"
 fi
 exec pvbatch "$@"

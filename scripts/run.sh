@@ -10,4 +10,4 @@ bash "$here/scripts/setup.sh"
 if [ -n "${DISPLAY:-}" ]; then
   exec "$build/bin/mesolight" render "$@"
 fi
-exec xvfb-run -a -s "-screen 0 1280x1024x24" "$build/bin/mesolight" render --offscreen "$@"
+exec bash "$here/scripts/xvfb.sh" "$build/bin/mesolight" render --offscreen "$@"
