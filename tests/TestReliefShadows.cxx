@@ -164,6 +164,8 @@ TEST(ReliefShadows, PerPixelVisibilityMatchesExactTracing)
   EXPECT_LT(ShadowMismatch("relief", 16, true, &shadowed), 1.0);
   EXPECT_GT(shadowed, 5.0) << "the scene must have real self-shadows to test";
   EXPECT_LT(ShadowMismatch("max-mipmap", 128, true, &shadowed), 0.5);
+  EXPECT_LT(ShadowMismatch("relaxed-cone", 16, true, &shadowed), 1.0);
+  EXPECT_LT(ShadowMismatch("cone", 16, true, &shadowed), 1.0);
   // Negative: without the shadow march the mismatch is the whole shadowed share.
   EXPECT_GT(ShadowMismatch("relief", 16, false, &shadowed), 0.8 * shadowed);
 }

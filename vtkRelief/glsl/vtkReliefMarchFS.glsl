@@ -198,10 +198,13 @@ bool mlShadowed(vec3 hit, vec3 spanUpPerDepth)
   // a few samples. The cone march shares it (its floor is then the linear step), so it never
   // samples more than the linear search it accelerates.
   int steps = max(2, int(ceil(float(mlLinearSteps) * hit.z)) + 1);
+  float dt = 1.0 / float(steps);
 #ifdef ML_CONE_PACKED
+  // The linear search's samples at most, and never nearer the hit than its last one (1 - dt):
+  // closer samples see the hit's own surface (acne where the hit sits on a steep wall). Cone
+  // steps are taken where they are longer than the linear step.
   float rate = length(vec2(span.x, span.y * mlTexelAspect)) / span.z;
-  float t = 0.0;
-  for (int i = 0; i < steps && t < 1.0 - 1e-3; ++i)
+  for (float t = dt; t < 1.0 - dt + 1e-4;)
   {
     vec3 p = origin + t * span;
     vec2 depthCone = mlDepthAndConeAt(p.xy);
@@ -210,14 +213,11 @@ bool mlShadowed(vec3 hit, vec3 spanUpPerDepth)
     {
       return true;
     }
-    // As in mlConeSearch: at least an even share of the rest, so stalls at walls still progress
-    // and a blocker is sampled below its surface.
     float c = depthCone.y;
-    t += max(c * (depth - p.z) / ((rate + c) * span.z), (1.0 - t) / float(steps - i));
+    t += max(c * (depth - p.z) / ((rate + c) * span.z), dt);
   }
   return false;
 #else
-  float dt = 1.0 / float(steps);
   // Skip the last sample (the hit itself).
   for (int i = 1; i < steps; ++i)
   {
