@@ -1,7 +1,8 @@
 // `mesolight bench ibl`: a relief surface lit by median-cut light sets of an environment.
 // Frame time against the number of lights (one run for all counts, like the relief thesis'
-// table 1), the effect of each skip on time and error, and the error of each light set against a
-// Monte Carlo reference with exact height-field visibility.
+// table 1), the effect of each skip on time and error, the error of each light set against a
+// Monte Carlo reference with exact height-field visibility, and relief vs relaxed cone stepping at
+// equal error against the exact render of the same light set.
 #ifndef mesolight_LightSetBenchmark_h
 #define mesolight_LightSetBenchmark_h
 
@@ -31,6 +32,16 @@ struct EnvironmentIrradianceSample
 std::vector<EnvironmentIrradianceSample> ComputeEnvironmentReference(const ReliefReference& hits,
   vtkImageData* relief, vtkImageData* environment, double depthScale, int maxPixels,
   int samplesPerPixel, bool shadows);
+
+/**
+ * Exact reference for a light set (vtkMedianCutLights' light texture): for the same pixels as
+ * ComputeEnvironmentReference, the irradiance at the exact hit from exactly these lights, each
+ * shadowed by the exact bilinear height field. Against it, a render's error is the relief
+ * method's own (hits and visibility), without the light set's sampling error, which is the same
+ * for every method.
+ */
+std::vector<EnvironmentIrradianceSample> ComputeLightSetReference(const ReliefReference& hits,
+  vtkImageData* relief, vtkImageData* lights, double depthScale, int maxPixels);
 
 /**
  * Mean relative error of a render against the reference: the render's colour at each sampled
