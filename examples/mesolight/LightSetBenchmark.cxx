@@ -189,6 +189,22 @@ struct ReferenceSetup
   {
     return glm::dvec3(d[0], d[1] / this->Aspect, -d[2] / this->DepthScale);
   }
+
+  // irradiance(sample, exact hit, shading normal) for every reference pixel, in parallel.
+  template <typename Irradiance>
+  void ForEachPixel(const ReliefReference& hits, std::vector<EnvironmentIrradianceSample>& samples,
+    Irradiance irradiance) const
+  {
+    vtkSMPTools::For(0, static_cast<vtkIdType>(samples.size()), [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType s = begin; s < end; ++s)
+      {
+        EnvironmentIrradianceSample& sample = samples[static_cast<size_t>(s)];
+        const size_t p = sample.Pixel;
+        const glm::dvec3 hit(hits.HitU[p], hits.HitV[p], hits.HitD[p]);
+        irradiance(sample, hit, this->WorldNormal(hit));
+      }
+    });
+  }
 };
 
 } // namespace
@@ -203,14 +219,9 @@ std::vector<EnvironmentIrradianceSample> ComputeEnvironmentReference(const Relie
   const EnvironmentSampler sampler = MakeSampler(environment);
   std::vector<EnvironmentIrradianceSample> samples = ReferenceSetup::Pixels(hits, maxPixels);
 
-  vtkSMPTools::For(0, static_cast<vtkIdType>(samples.size()), [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType s = begin; s < end; ++s)
-    {
-      EnvironmentIrradianceSample& sample = samples[static_cast<size_t>(s)];
-      const size_t p = sample.Pixel;
-      const glm::dvec3 hit(hits.HitU[p], hits.HitV[p], hits.HitD[p]);
-      const glm::dvec3 n = setup.WorldNormal(hit);
-      std::mt19937 rng(static_cast<unsigned>(p) * 2654435761u + 17u);
+  setup.ForEachPixel(hits, samples,
+    [&](EnvironmentIrradianceSample& sample, const glm::dvec3& hit, const glm::dvec3& n) {
+      std::mt19937 rng(static_cast<unsigned>(sample.Pixel) * 2654435761u + 17u);
       std::uniform_real_distribution<double> uniform(0.0, 1.0);
       for (int k = 0; k < samplesPerPixel; ++k)
       {
@@ -241,8 +252,7 @@ std::vector<EnvironmentIrradianceSample> ComputeEnvironmentReference(const Relie
           sample.Irradiance[c] += sampler.Radiance[3 * pixel + c] * weight;
         }
       }
-    }
-  });
+    });
   return samples;
 }
 
@@ -259,13 +269,8 @@ std::vector<EnvironmentIrradianceSample> ComputeLightSetReference(const ReliefRe
   vtkDataArray* texels = lights->GetPointData()->GetScalars();
   const int count = dims[1] >= 2 && texels && texels->GetNumberOfComponents() >= 3 ? dims[0] : 0;
 
-  vtkSMPTools::For(0, static_cast<vtkIdType>(samples.size()), [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType s = begin; s < end; ++s)
-    {
-      EnvironmentIrradianceSample& sample = samples[static_cast<size_t>(s)];
-      const size_t p = sample.Pixel;
-      const glm::dvec3 hit(hits.HitU[p], hits.HitV[p], hits.HitD[p]);
-      const glm::dvec3 n = setup.WorldNormal(hit);
+  setup.ForEachPixel(hits, samples,
+    [&](EnvironmentIrradianceSample& sample, const glm::dvec3& hit, const glm::dvec3& n) {
       for (int l = 0; l < count; ++l)
       {
         double d[3];
@@ -283,8 +288,7 @@ std::vector<EnvironmentIrradianceSample> ComputeLightSetReference(const ReliefRe
           sample.Irradiance[c] += texels->GetComponent(count + l, c) * cosine;
         }
       }
-    }
-  });
+    });
   return samples;
 }
 
