@@ -105,9 +105,10 @@ TEST(ReliefOutputs, SampleCountIsWhatTheMarchTakes)
     0);
 }
 
-// Cone-stepped shadow rays get the linear search's depth-proportional budget, so on Bricks, whose
-// hits are mostly shallow, they sample no more than relief's shadow rays. (With a fixed budget of
-// LinearSteps per ray they took about 2.4x relief's samples.)
+// Cone-stepped shadow rays take the linear search's samples at most (its depth-proportional
+// budget, its first and last sample), so on Bricks, whose hits are mostly shallow, they sample no
+// more than relief's shadow rays (3.5 against 8.5 per pixel). With a fixed budget of LinearSteps
+// per ray they took 15.0.
 TEST(ReliefOutputs, ConeShadowsSampleNoMoreThanReliefShadows)
 {
   const auto shadowSamples = [](const char* method) {
