@@ -131,12 +131,13 @@ TEST(ReliefLightSet, PitFloorIsDarkenedBySelfShadowing)
   EXPECT_GT(inside, 0.2 * open);
 }
 
-// The relief lit by median-cut lights of a sun-and-sky environment against Monte Carlo
-// integration of the whole environment with exact first hits and exact height-field visibility.
-// More lights converge toward it; without self-shadowing the error is much larger (negative).
-TEST(ReliefLightSet, MedianCutLightsAgainstMonteCarlo)
+namespace
 {
-  ReliefSceneOptions o;
+// HemisphereTorus lit only by `lights` median-cut lights of the procedural sun and sky, as a white
+// Lambertian surface: the references' radiance is then albedo / pi x irradiance.
+bool BuildSunLitScene(int lights, int linearSteps, ReliefSceneOptions& o, ReliefScene& scene,
+  std::string& error)
+{
   o.Pattern = "HemisphereTorus";
   o.Resolution = 128;
   o.DepthScale = 0.12;
@@ -144,29 +145,49 @@ TEST(ReliefLightSet, MedianCutLightsAgainstMonteCarlo)
   o.ViewDistance = 2.2;
   o.Width = o.Height = 200;
   o.Lights = 0;
-  o.LinearSteps = 16;
+  o.LinearSteps = linearSteps;
   o.Environment = "procedural:sun";
-  o.EnvironmentLights = 16;
-  std::string error;
-  ReliefScene scene;
-  ASSERT_TRUE(BuildReliefScene(o, scene, error)) << error;
+  o.EnvironmentLights = lights;
+  if (!BuildReliefScene(o, scene, error))
+  {
+    return false;
+  }
   scene.Actor->SetTexture(nullptr);
   scene.Actor->GetProperty()->SetAmbient(0.0);
   scene.Actor->GetProperty()->SetDiffuse(1.0);
   scene.Actor->GetProperty()->SetSpecular(0.0);
+  return true;
+}
+
+// Exposure that puts the brightest reference pixel at 200 of 255 (0 if all are black).
+double ExposureFor(const std::vector<EnvironmentIrradianceSample>& reference)
+{
+  double brightest = 0.0;
+  for (const auto& s : reference)
+  {
+    brightest = std::max(brightest, (s.Irradiance[0] + s.Irradiance[1] + s.Irradiance[2]) / 3.0);
+  }
+  return brightest > 0.0 ? 200.0 / 255.0 * vtkMath::Pi() / brightest : 0.0;
+}
+} // namespace
+
+// The relief lit by median-cut lights of a sun-and-sky environment against Monte Carlo
+// integration of the whole environment with exact first hits and exact height-field visibility.
+// More lights converge toward it; without self-shadowing the error is much larger (negative).
+TEST(ReliefLightSet, MedianCutLightsAgainstMonteCarlo)
+{
+  ReliefSceneOptions o;
+  std::string error;
+  ReliefScene scene;
+  ASSERT_TRUE(BuildSunLitScene(16, 16, o, scene, error)) << error;
   ReliefReference hits;
   ASSERT_TRUE(ComputeReliefReference(MakeReliefReferenceInput(scene, o), hits, error)) << error;
   auto environment = LoadEnvironment(o.Environment, error);
   ASSERT_TRUE(environment) << error;
   const auto reference =
     ComputeEnvironmentReference(hits, scene.ReliefTexture, environment, o.DepthScale, 800, 2048, true);
-  double brightest = 0.0;
-  for (const auto& s : reference)
-  {
-    brightest = std::max(brightest, (s.Irradiance[0] + s.Irradiance[1] + s.Irradiance[2]) / 3.0);
-  }
-  ASSERT_GT(brightest, 0.0);
-  const double exposure = 200.0 / 255.0 * vtkMath::Pi() / brightest;
+  const double exposure = ExposureFor(reference);
+  ASSERT_GT(exposure, 0.0);
   scene.Mapper->SetExposure(exposure);
 
   static vtkSmartPointer<vtkRenderWindow> window = MakeOffscreenWindow(o, scene.Renderer);
@@ -199,23 +220,9 @@ TEST(ReliefLightSet, MedianCutLightsAgainstMonteCarlo)
 TEST(ReliefLightSet, LightSetRenderAgainstTheExactRenderOfTheSameLights)
 {
   ReliefSceneOptions o;
-  o.Pattern = "HemisphereTorus";
-  o.Resolution = 128;
-  o.DepthScale = 0.12;
-  o.ViewAngle = 40.0;
-  o.ViewDistance = 2.2;
-  o.Width = o.Height = 200;
-  o.Lights = 0;
-  o.LinearSteps = 32;
-  o.Environment = "procedural:sun";
-  o.EnvironmentLights = 32;
   std::string error;
   ReliefScene scene;
-  ASSERT_TRUE(BuildReliefScene(o, scene, error)) << error;
-  scene.Actor->SetTexture(nullptr);
-  scene.Actor->GetProperty()->SetAmbient(0.0);
-  scene.Actor->GetProperty()->SetDiffuse(1.0);
-  scene.Actor->GetProperty()->SetSpecular(0.0);
+  ASSERT_TRUE(BuildSunLitScene(32, 32, o, scene, error)) << error;
   vtkSmartPointer<vtkImageData> coneRelief;
   vtkSmartPointer<vtkTexture> albedo;
   ASSERT_TRUE(
@@ -227,13 +234,8 @@ TEST(ReliefLightSet, LightSetRenderAgainstTheExactRenderOfTheSameLights)
     ComputeLightSetReference(hits, scene.ReliefTexture, scene.LightSet, o.DepthScale, 800);
   const auto coneReference =
     ComputeLightSetReference(hits, coneRelief, scene.LightSet, o.DepthScale, 800);
-  double brightest = 0.0;
-  for (const auto& s : reliefReference)
-  {
-    brightest = std::max(brightest, (s.Irradiance[0] + s.Irradiance[1] + s.Irradiance[2]) / 3.0);
-  }
-  ASSERT_GT(brightest, 0.0);
-  const double exposure = 200.0 / 255.0 * vtkMath::Pi() / brightest;
+  const double exposure = ExposureFor(reliefReference);
+  ASSERT_GT(exposure, 0.0);
   scene.Mapper->SetExposure(exposure);
   auto window = MakeOffscreenWindow(o, scene.Renderer);
 
