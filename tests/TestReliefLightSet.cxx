@@ -12,6 +12,7 @@
 #include <vtkFloatArray.h>
 #include <vtkImageData.h>
 #include <vtkMath.h>
+#include <vtkNew.h>
 #include <vtkPlaneSource.h>
 #include <vtkPointData.h>
 #include <vtkProperty.h>
@@ -234,6 +235,15 @@ TEST(ReliefLightSet, LightSetRenderAgainstTheExactRenderOfTheSameLights)
     ComputeLightSetReference(hits, scene.ReliefTexture, scene.LightSet, o.DepthScale, 800);
   const auto coneReference =
     ComputeLightSetReference(hits, coneRelief, scene.LightSet, o.DepthScale, 800);
+  ASSERT_FALSE(reliefReference.empty());
+  // Not a light texture (none; one row only): no reference rather than a black one.
+  EXPECT_TRUE(
+    ComputeLightSetReference(hits, scene.ReliefTexture, nullptr, o.DepthScale, 800).empty());
+  vtkNew<vtkImageData> oneRow;
+  oneRow->SetDimensions(4, 1, 1);
+  oneRow->AllocateScalars(VTK_FLOAT, 4);
+  EXPECT_TRUE(
+    ComputeLightSetReference(hits, scene.ReliefTexture, oneRow, o.DepthScale, 800).empty());
   const double exposure = ExposureFor(reliefReference);
   ASSERT_GT(exposure, 0.0);
   scene.Mapper->SetExposure(exposure);

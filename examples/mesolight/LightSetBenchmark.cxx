@@ -144,6 +144,19 @@ struct ReferenceSetup
     }
   }
 
+  // A relief texture this can read: 4 components (normal or cone packing, depth in A), 2D.
+  static bool Usable(vtkImageData* relief)
+  {
+    vtkDataArray* rgba = relief ? relief->GetPointData()->GetScalars() : nullptr;
+    int dims[3] = { 0, 0, 0 };
+    if (relief)
+    {
+      relief->GetDimensions(dims);
+    }
+    return rgba && rgba->GetNumberOfComponents() == 4 && dims[0] >= 1 && dims[1] >= 1 &&
+      rgba->GetNumberOfTuples() == static_cast<vtkIdType>(dims[0]) * dims[1];
+  }
+
   HeightField Field() const { return HeightField(this->Dims[0], this->Dims[1], this->Depth); }
 
   // Covered pixels, evenly strided down to maxPixels.
@@ -214,6 +227,10 @@ std::vector<EnvironmentIrradianceSample> ComputeEnvironmentReference(const Relie
   vtkImageData* relief, vtkImageData* environment, double depthScale, int maxPixels,
   int samplesPerPixel, bool shadows)
 {
+  if (!ReferenceSetup::Usable(relief) || !environment)
+  {
+    return {};
+  }
   const ReferenceSetup setup(relief, depthScale);
   const HeightField field = setup.Field();
   const EnvironmentSampler sampler = MakeSampler(environment);
@@ -260,14 +277,23 @@ std::vector<EnvironmentIrradianceSample> ComputeEnvironmentReference(const Relie
 std::vector<EnvironmentIrradianceSample> ComputeLightSetReference(const ReliefReference& hits,
   vtkImageData* relief, vtkImageData* lights, double depthScale, int maxPixels)
 {
+  // Row 0: unit directions toward the lights (world); row 1: irradiance at normal incidence.
+  vtkDataArray* texels = lights ? lights->GetPointData()->GetScalars() : nullptr;
+  int dims[3] = { 0, 0, 0 };
+  if (lights)
+  {
+    lights->GetDimensions(dims);
+  }
+  if (!texels || dims[0] < 1 || dims[1] != 2 || texels->GetNumberOfComponents() < 3 ||
+    texels->GetNumberOfTuples() != 2 * static_cast<vtkIdType>(dims[0]) ||
+    !ReferenceSetup::Usable(relief))
+  {
+    return {}; // not a light texture of vtkMedianCutLights, or not a relief texture
+  }
+  const int count = dims[0];
   const ReferenceSetup setup(relief, depthScale);
   const HeightField field = setup.Field();
   std::vector<EnvironmentIrradianceSample> samples = ReferenceSetup::Pixels(hits, maxPixels);
-  // Row 0: unit directions toward the lights (world); row 1: irradiance at normal incidence.
-  int dims[3];
-  lights->GetDimensions(dims);
-  vtkDataArray* texels = lights->GetPointData()->GetScalars();
-  const int count = dims[1] >= 2 && texels && texels->GetNumberOfComponents() >= 3 ? dims[0] : 0;
 
   setup.ForEachPixel(hits, samples,
     [&](EnvironmentIrradianceSample& sample, const glm::dvec3& hit, const glm::dvec3& n) {
@@ -526,6 +552,12 @@ int RunLightSetBenchmark(const std::vector<std::string>& args)
     };
     lightsReferenceSeconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (lightsReference[0].empty() || lightsReference[1].empty())
+    {
+      std::cerr << "mesolight bench ibl: no pixel for the light-set reference (empty light set or "
+                   "relief texture, or nothing covered)\n";
+      return 1;
+    }
     for (int method : { int(vtkReliefMapper::Relief), int(vtkReliefMapper::RelaxedConeBinary) })
     {
       scene.Mapper->SetReliefTextureData(

@@ -27,7 +27,8 @@ struct EnvironmentIrradianceSample
  * Monte Carlo reference (importance sampling of environment pixels by luminance x solid angle,
  * deterministic seed): for up to maxPixels covered pixels of the reference, the irradiance at the
  * exact hit, from every direction of the environment, shadowed by the exact bilinear height field.
- * world depth = d x depthScale, +Z up for both the wall and the environment.
+ * world depth = d x depthScale, +Z up for both the wall and the environment. Empty if `relief` is
+ * not a 4-component relief texture or there is no environment.
  */
 std::vector<EnvironmentIrradianceSample> ComputeEnvironmentReference(const ReliefReference& hits,
   vtkImageData* relief, vtkImageData* environment, double depthScale, int maxPixels,
@@ -38,7 +39,8 @@ std::vector<EnvironmentIrradianceSample> ComputeEnvironmentReference(const Relie
  * ComputeEnvironmentReference, the irradiance at the exact hit from exactly these lights, each
  * shadowed by the exact bilinear height field. Against it, a render's error is the relief
  * method's own (hits and visibility), without the light set's sampling error, which is the same
- * for every method.
+ * for every method. Empty if `lights` is not an N x 2 light texture of at least 3 components or
+ * `relief` is not a 4-component relief texture.
  */
 std::vector<EnvironmentIrradianceSample> ComputeLightSetReference(const ReliefReference& hits,
   vtkImageData* relief, vtkImageData* lights, double depthScale, int maxPixels);

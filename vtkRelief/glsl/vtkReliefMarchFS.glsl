@@ -203,8 +203,11 @@ bool mlShadowed(vec3 hit, vec3 spanUpPerDepth)
   // The linear search's samples at most, and never nearer the hit than its last one (1 - dt):
   // closer samples see the hit's own surface (acne where the hit sits on a steep wall). Cone
   // steps are taken where they are longer than the linear step.
+  // (The integer bound only makes termination evident: every step is at least dt, so t passes
+  // 1 - dt within steps - 1 iterations.)
   float rate = length(vec2(span.x, span.y * mlTexelAspect)) / span.z;
-  for (float t = dt; t < 1.0 - dt + 1e-4;)
+  float t = dt;
+  for (int i = 1; i < steps && t < 1.0 - dt + 1e-4; ++i)
   {
     vec3 p = origin + t * span;
     vec2 depthCone = mlDepthAndConeAt(p.xy);
