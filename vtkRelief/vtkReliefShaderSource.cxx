@@ -133,7 +133,7 @@ void vtkReliefShaderSource::ReplaceValuesAfter(std::string& fs, const void* cell
 {
   vtkReliefProperty* p = this->Property;
   std::string defines = MethodDefines() + "#define ML_METHOD " + std::to_string(p->GetMethod()) +
-    "\n" + "#define ML_REFINE " + std::to_string(RefinementKind(p->GetMethod())) + "\n" +
+    "\n#define ML_REFINE " + std::to_string(RefinementKind(p->GetMethod())) + "\n" +
     "#define ML_OUTPUT " + std::to_string(p->GetOutput()) + "\n";
   if (p->GetSelfShadowing())
   {
