@@ -115,7 +115,7 @@ TEST(CompositeReliefMapper, TwoBlocksWithAttachedTexturesMatchTheReliefMapper)
   vtkNew<vtkReliefMapper> plain;
   plain->SetInputData(Strip(0.0, 1.0));
   plain->SetReliefTextureData(relief);
-  plain->SetDepthScale(DepthScale);
+  plain->GetReliefProperty()->SetDepthScale(DepthScale);
   const Frame reference = Render(plain, "composite-reference.png");
 
   vtkNew<vtkMultiBlockDataSet> blocks;
@@ -124,7 +124,7 @@ TEST(CompositeReliefMapper, TwoBlocksWithAttachedTexturesMatchTheReliefMapper)
   blocks->SetBlock(1, Attached(Strip(0.5, 1.0), relief));
   vtkNew<vtkCompositeReliefMapper> composite;
   composite->SetInputDataObject(blocks);
-  composite->GetShading()->SetDepthScale(DepthScale);
+  composite->GetReliefProperty()->SetDepthScale(DepthScale);
   vtkNew<test::MessageRecorder> messages;
   messages->Watch(composite);
   const Frame frame = Render(composite, "composite-two-blocks.png");
@@ -140,7 +140,7 @@ TEST(CompositeReliefMapper, TwoBlocksWithAttachedTexturesMatchTheReliefMapper)
   EXPECT_LT(d.DepthMismatch, 0.2);
 
   // The comparison can fail: the same blocks without the march differ clearly.
-  composite->GetShading()->SetMethod(vtkReliefShading::TextureMapping);
+  composite->GetReliefProperty()->SetMethod(vtkReliefProperty::TextureMapping);
   const FrameDifference flat = CompareFrames(
     Render(composite, "composite-texture-mapping.png"), reference, 0.02 * DepthScale);
   EXPECT_GT(flat.MeanColorError, 2.0);

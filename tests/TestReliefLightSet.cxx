@@ -60,7 +60,7 @@ Frame RenderTopDown(vtkImageData* relief, vtkImageData* lights, double exposure)
   {
     mapper->SetLightSetData(lights);
   }
-  mapper->SetExposure(exposure);
+  mapper->GetReliefProperty()->SetExposure(exposure);
   vtkNew<vtkRenderer> renderer;
   renderer->AutomaticLightCreationOff(); // the light set only
   renderer->AddActor(actor);
@@ -189,7 +189,7 @@ TEST(ReliefLightSet, MedianCutLightsAgainstMonteCarlo)
     ComputeEnvironmentReference(hits, scene.ReliefTexture, environment, o.DepthScale, 800, 2048, true);
   const double exposure = ExposureFor(reference);
   ASSERT_GT(exposure, 0.0);
-  scene.Mapper->SetExposure(exposure);
+  scene.Mapper->GetReliefProperty()->SetExposure(exposure);
 
   static vtkSmartPointer<vtkRenderWindow> window = MakeOffscreenWindow(o, scene.Renderer);
   window->GetRenderers()->RemoveAllItems();
@@ -199,7 +199,7 @@ TEST(ReliefLightSet, MedianCutLightsAgainstMonteCarlo)
     ReliefSceneOptions lo = o;
     lo.EnvironmentLights = lights;
     scene.Mapper->SetLightSetData(MakeEnvironmentLights(lo, error));
-    scene.Mapper->SetSelfShadowing(shadows);
+    scene.Mapper->GetReliefProperty()->SetSelfShadowing(shadows);
     const double e = EnvironmentError(CaptureFrame(window), reference, exposure);
     std::cout << "[ibl] " << lights << " lights" << (shadows ? "" : ", no shadows") << ": " << e
               << "% mean error vs Monte Carlo" << std::endl;
@@ -227,7 +227,7 @@ TEST(ReliefLightSet, LightSetRenderAgainstTheExactRenderOfTheSameLights)
   vtkSmartPointer<vtkImageData> coneRelief;
   vtkSmartPointer<vtkTexture> albedo;
   ASSERT_TRUE(
-    BuildReliefTextures(o, coneRelief, albedo, error, vtkReliefMapper::RelaxedConeMap))
+    BuildReliefTextures(o, coneRelief, albedo, error, vtkReliefProperty::RelaxedConeMap))
     << error;
   ReliefReference hits;
   ASSERT_TRUE(ComputeReliefReference(MakeReliefReferenceInput(scene, o), hits, error)) << error;
@@ -246,15 +246,15 @@ TEST(ReliefLightSet, LightSetRenderAgainstTheExactRenderOfTheSameLights)
     ComputeLightSetReference(hits, scene.ReliefTexture, oneRow, o.DepthScale, 800).empty());
   const double exposure = ExposureFor(reliefReference);
   ASSERT_GT(exposure, 0.0);
-  scene.Mapper->SetExposure(exposure);
+  scene.Mapper->GetReliefProperty()->SetExposure(exposure);
   auto window = MakeOffscreenWindow(o, scene.Renderer);
 
   const double relief = EnvironmentError(CaptureFrame(window), reliefReference, exposure);
-  scene.Mapper->SelfShadowingOff();
+  scene.Mapper->GetReliefProperty()->SelfShadowingOff();
   const double unshadowed = EnvironmentError(CaptureFrame(window), reliefReference, exposure);
-  scene.Mapper->SelfShadowingOn();
+  scene.Mapper->GetReliefProperty()->SelfShadowingOn();
   scene.Mapper->SetReliefTextureData(coneRelief);
-  scene.Mapper->SetMethod(vtkReliefMapper::RelaxedConeBinary);
+  scene.Mapper->GetReliefProperty()->SetMethod(vtkReliefProperty::RelaxedConeBinary);
   const double cone = EnvironmentError(CaptureFrame(window), coneReference, exposure);
   std::cout << "[same lights] relief " << relief << "%, relaxed cone " << cone
             << "%, no shadows " << unshadowed << "%" << std::endl;

@@ -36,9 +36,9 @@ Frame RenderSphere(double depthScale, vtkReliefMapper* mapper, test::MessageReco
   sphere->SetPhiResolution(24);
   mapper->SetInputConnection(sphere->GetOutputPort());
   mapper->SetReliefTextureConnection(relief->GetOutputPort());
-  mapper->SetDepthScale(depthScale);
-  mapper->SilhouettesOff(); // the texture wraps around the sphere
-  mapper->RepeatTextureOn();
+  mapper->GetReliefProperty()->SetDepthScale(depthScale);
+  mapper->GetReliefProperty()->SilhouettesOff(); // the texture wraps around the sphere
+  mapper->GetReliefProperty()->RepeatTextureOn();
   messages->Watch(mapper);
   vtkNew<vtkActor> actor;
   actor->SetMapper(mapper);

@@ -47,9 +47,9 @@ HitComparison MeasureHits(const MethodCase& c, const char* pattern)
   ReliefScene scene;
   EXPECT_TRUE(BuildReliefScene(o, scene, error)) << error;
   auto window = MakeOffscreenWindow(o, scene.Renderer);
-  scene.Mapper->SetOutput(vtkReliefMapper::HitUOutput);
+  scene.Mapper->GetReliefProperty()->SetOutput(vtkReliefProperty::HitUOutput);
   const Frame hitU = CaptureFrame(window);
-  scene.Mapper->SetOutput(vtkReliefMapper::HitVOutput);
+  scene.Mapper->GetReliefProperty()->SetOutput(vtkReliefProperty::HitVOutput);
   const Frame hitV = CaptureFrame(window);
   ReliefReference reference;
   EXPECT_TRUE(ComputeReliefReference(MakeReliefReferenceInput(scene, o), reference, error))

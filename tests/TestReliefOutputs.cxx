@@ -31,7 +31,7 @@ Frame RenderTopDown(int output, double depth = 0.0,
     test::BakeRelief(test::MakeDepthMap(64, 64, [depth](double, double) { return depth; }), 0.1);
   vtkNew<vtkReliefMapper> mapper;
   auto actor = test::UnitSquareRelief(mapper, relief, 0.1);
-  mapper->SetOutput(output);
+  mapper->GetReliefProperty()->SetOutput(output);
   if (configure)
   {
     configure(mapper);
@@ -53,8 +53,8 @@ Frame RenderTopDown(int output, double depth = 0.0,
 
 TEST(ReliefOutputs, HitCoordinatesDecodeToThePixelPosition)
 {
-  const Frame us = RenderTopDown(vtkReliefMapper::HitUOutput);
-  const Frame vs = RenderTopDown(vtkReliefMapper::HitVOutput);
+  const Frame us = RenderTopDown(vtkReliefProperty::HitUOutput);
+  const Frame vs = RenderTopDown(vtkReliefProperty::HitVOutput);
   double worst = 0.0;
   for (int y = 2; y < Pixels - 2; ++y)
   {
@@ -73,7 +73,7 @@ TEST(ReliefOutputs, HitCoordinatesDecodeToThePixelPosition)
 
 TEST(ReliefOutputs, LightVisibilityIsWhiteUnderAnOverheadLight)
 {
-  const Frame lit = RenderTopDown(vtkReliefMapper::LightVisibilityOutput);
+  const Frame lit = RenderTopDown(vtkReliefProperty::LightVisibilityOutput);
   const size_t centre = size_t(Pixels / 2) * Pixels + Pixels / 2;
   EXPECT_EQ(lit.Rgb[3 * centre], 255);
 }
@@ -92,16 +92,17 @@ TEST(ReliefOutputs, SampleCountIsWhatTheMarchTakes)
   };
   const auto relief = [](bool shadows) {
     return [shadows](vtkReliefMapper* m) {
-      m->SetMethod(vtkReliefMapper::Relief);
-      m->SetLinearSteps(10);
-      m->SetRefinementSteps(4);
-      m->SetSelfShadowing(shadows);
+      m->GetReliefProperty()->SetMethod(vtkReliefProperty::Relief);
+      m->GetReliefProperty()->SetLinearSteps(10);
+      m->GetReliefProperty()->SetRefinementSteps(4);
+      m->GetReliefProperty()->SetSelfShadowing(shadows);
     };
   };
-  EXPECT_EQ(count(RenderTopDown(vtkReliefMapper::SampleCountOutput, 0.35, relief(false))), 9);
-  EXPECT_EQ(count(RenderTopDown(vtkReliefMapper::SampleCountOutput, 0.35, relief(true))), 13);
-  EXPECT_EQ(count(RenderTopDown(vtkReliefMapper::SampleCountOutput, 0.35,
-              [](vtkReliefMapper* m) { m->SetMethod(vtkReliefMapper::TextureMapping); })),
+  EXPECT_EQ(count(RenderTopDown(vtkReliefProperty::SampleCountOutput, 0.35, relief(false))), 9);
+  EXPECT_EQ(count(RenderTopDown(vtkReliefProperty::SampleCountOutput, 0.35, relief(true))), 13);
+  EXPECT_EQ(count(RenderTopDown(vtkReliefProperty::SampleCountOutput, 0.35,
+              [](vtkReliefMapper* m)
+              { m->GetReliefProperty()->SetMethod(vtkReliefProperty::TextureMapping); })),
     0);
 }
 
@@ -130,7 +131,7 @@ TEST(ReliefOutputs, ConeShadowsSampleNoMoreThanReliefShadows)
       {
         return -1.0;
       }
-      scene.Mapper->SetOutput(vtkReliefMapper::SampleCountOutput);
+      scene.Mapper->GetReliefProperty()->SetOutput(vtkReliefProperty::SampleCountOutput);
       auto window = MakeOffscreenWindow(o, scene.Renderer);
       const double mean = MeanSampleCount(CaptureFrame(window));
       withShadows = shadows ? mean : withShadows - mean;

@@ -159,9 +159,9 @@ HitComparison GpuHitError(const ReliefSceneOptions& options, const std::string& 
   ReliefScene scene;
   const ReliefReference reference = ComputeReference(options, scene);
   auto window = MakeOffscreenWindow(options, scene.Renderer);
-  scene.Mapper->SetOutput(vtkReliefMapper::HitUOutput);
+  scene.Mapper->GetReliefProperty()->SetOutput(vtkReliefProperty::HitUOutput);
   const Frame u = CaptureFrame(window);
-  scene.Mapper->SetOutput(vtkReliefMapper::HitVOutput);
+  scene.Mapper->GetReliefProperty()->SetOutput(vtkReliefProperty::HitVOutput);
   const Frame v = CaptureFrame(window);
   const HitComparison c = CompareHits(reference, u, v);
   std::cout << "[" << tag << "] hit error mean " << c.MeanTexels << " texels, p99 " << c.P99Texels
@@ -256,7 +256,7 @@ TEST(ReliefSweep, TinySweepWritesRowsCsvAndCharts)
     EXPECT_GE(samples8, 9.0) << map;
     EXPECT_GT(samples128, samples8) << map;
   }
-  EXPECT_EQ(ReliefSweepStepsFor(vtkReliefMapper::MaximumMipmap).size(), 3u);
+  EXPECT_EQ(ReliefSweepStepsFor(vtkReliefProperty::MaximumMipmap).size(), 3u);
   EXPECT_NE(RunReliefSweep(std::vector<std::string>{ "--methods", "no-such-method" }), 0);
   EXPECT_NE(RunReliefSweep(std::vector<std::string>{ "--size", "12" }), 0);
 }

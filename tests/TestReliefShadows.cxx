@@ -47,8 +47,8 @@ ShadowRun RenderRidgeShadow(double elevationDegrees, bool shadows, int linearSte
 
   vtkNew<vtkReliefMapper> mapper;
   auto actor = test::UnitSquareRelief(mapper, relief, DepthScale);
-  mapper->SetSelfShadowing(shadows);
-  mapper->SetLinearSteps(linearSteps);
+  mapper->GetReliefProperty()->SetSelfShadowing(shadows);
+  mapper->GetReliefProperty()->SetLinearSteps(linearSteps);
 
   vtkNew<vtkRenderer> renderer;
   renderer->AddActor(actor);
@@ -134,7 +134,7 @@ double ShadowMismatch(const char* method, int linearSteps, bool shadows, double*
   std::string error;
   ReliefScene scene;
   EXPECT_TRUE(BuildReliefScene(o, scene, error)) << error;
-  scene.Mapper->SetOutput(vtkReliefMapper::LightVisibilityOutput);
+  scene.Mapper->GetReliefProperty()->SetOutput(vtkReliefProperty::LightVisibilityOutput);
   auto window = MakeOffscreenWindow(o, scene.Renderer);
   const Frame visibility = CaptureFrame(window);
   ReliefReference reference;

@@ -48,7 +48,7 @@ StressResult Stress(ReliefSceneOptions o, vtkImageData* relief)
   }
   vtkNew<test::MessageRecorder> messages;
   messages->Watch(scene.Mapper);
-  scene.Mapper->SetOutput(vtkReliefMapper::NonFiniteCheckOutput);
+  scene.Mapper->GetReliefProperty()->SetOutput(vtkReliefProperty::NonFiniteCheckOutput);
   // One window for all cases: each X window costs the server resources, and a test process
   // opening a hundred of them can exhaust Xvfb.
   static vtkSmartPointer<vtkRenderWindow> window = MakeOffscreenWindow(o, scene.Renderer);
@@ -179,10 +179,10 @@ TEST(ReliefStress, NaNDepthScaleIsRefused)
   vtkNew<vtkReliefMapper> mapper;
   vtkNew<test::MessageRecorder> messages;
   messages->Watch(mapper);
-  mapper->SetDepthScale(0.2);
-  mapper->SetDepthScale(std::nan(""));
-  EXPECT_EQ(mapper->GetDepthScale(), 0.2);
+  mapper->GetReliefProperty()->SetDepthScale(0.2);
+  mapper->GetReliefProperty()->SetDepthScale(std::nan(""));
+  EXPECT_EQ(mapper->GetReliefProperty()->GetDepthScale(), 0.2);
   EXPECT_NE(messages->Errors.find("NaN"), std::string::npos);
-  mapper->SetDepthScale(1e300);
-  EXPECT_EQ(mapper->GetDepthScale(), 10.0);
+  mapper->GetReliefProperty()->SetDepthScale(1e300);
+  EXPECT_EQ(mapper->GetReliefProperty()->GetDepthScale(), 10.0);
 }

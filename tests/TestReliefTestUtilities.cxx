@@ -81,7 +81,7 @@ vtkSmartPointer<vtkActor> UnitSquareRelief(
   plane->Update();
   mapper->SetInputData(plane->GetOutput());
   mapper->SetReliefTextureData(relief);
-  mapper->SetDepthScale(depthScale);
+  mapper->GetReliefProperty()->SetDepthScale(depthScale);
   auto actor = vtkSmartPointer<vtkActor>::New();
   actor->SetMapper(mapper);
   actor->GetProperty()->SetAmbient(0.0);

@@ -10,6 +10,8 @@
 #include "vtkOpenGLVertexBufferObjectGroup.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
+#include "vtkReliefGeometryCache.h"
+#include "vtkReliefShading.h"
 #include "vtkRenderer.h"
 #include "vtkShader.h"
 #include "vtk_glew.h" // before vtkCompositeMapperHelper2.h: VTK 9.1's uses GLenum undeclared
@@ -22,7 +24,7 @@
 //==============================================================================
 // The helper that draws the blocks (internal to this mapper, as in ParaView's
 // EmbossingRepresentations): a vtkOpenGLPolyDataMapper whose relief steps are the parent's
-// vtkReliefShading, the same calls vtkReliefMapper makes.
+// vtkReliefShading, with the parent's vtkReliefProperty: the same calls vtkReliefMapper makes.
 class vtkCompositeReliefMapperHelper : public vtkCompositeMapperHelper2
 {
 public:
@@ -43,18 +45,20 @@ protected:
     auto* parent = static_cast<vtkCompositeReliefMapper*>(this->Parent);
     this->ReadyToDraw = false;
     // Every block must carry a relief (texture coordinates); prepared copies are made once.
+    vtkReliefGeometryCache* geometry = this->Shading()->GetGeometryCache();
     std::vector<vtkPolyData*> inputs;
     for (const auto& entry : this->Data)
     {
       inputs.push_back(entry.first);
-      if (!this->Shading()->PrepareInput(entry.first))
+      if (!geometry->Prepare(entry.first))
       {
         return;
       }
     }
-    this->Shading()->KeepPreparedInputs(inputs);
+    geometry->KeepOnly(inputs);
     if (!this->Shading()->StartDraw(vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow()),
-          parent->CurrentReliefTexture, parent->CurrentLightSet, actor))
+          parent->GetReliefProperty(), parent->CurrentReliefTexture, parent->CurrentLightSet,
+          actor))
     {
       return;
     }
@@ -88,7 +92,7 @@ protected:
     std::vector<float>& norms) override
   {
     vtkPolyData* source = hdata->Data;
-    vtkPolyData* prepared = this->Shading()->PrepareInput(source);
+    vtkPolyData* prepared = this->Shading()->GetGeometryCache()->Prepare(source);
     if (!prepared)
     {
       this->Superclass::AppendOneBufferObject(ren, actor, hdata, voffset, colors, norms);
@@ -99,7 +103,7 @@ protected:
     hdata->Data = source;
     vtkDataArray* tangents = prepared->GetPointData()->GetTangents();
     vtkDataArray* tcoords =
-      prepared->GetPointData()->GetArray(vtkReliefShading::GetReliefTCoordsName());
+      prepared->GetPointData()->GetArray(vtkReliefGeometryCache::GetReliefTCoordsName());
     vtkIdType offset = 0;
     vtkIdType total = 0;
     // Reused blocks (the superclass found their vertices already uploaded) keep ours too.
@@ -156,6 +160,7 @@ vtkStandardNewMacro(vtkCompositeReliefMapper);
 vtkCompositeReliefMapper::vtkCompositeReliefMapper()
 {
   this->Shading->SetMessageOwner(this);
+  this->GetReliefProperty(); // the default settings, reporting to this mapper
 }
 
 //------------------------------------------------------------------------------
@@ -222,9 +227,31 @@ void vtkCompositeReliefMapper::Render(vtkRenderer* ren, vtkActor* actor)
 }
 
 //------------------------------------------------------------------------------
+vtkReliefProperty* vtkCompositeReliefMapper::GetReliefProperty()
+{
+  if (!this->ReliefProperty)
+  {
+    this->ReliefProperty = vtkSmartPointer<vtkReliefProperty>::New();
+    this->ReliefProperty->SetMessageOwner(this);
+  }
+  return this->ReliefProperty;
+}
+
+//------------------------------------------------------------------------------
+void vtkCompositeReliefMapper::SetReliefProperty(vtkReliefProperty* property)
+{
+  if (this->ReliefProperty != property)
+  {
+    this->ReliefProperty = property;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
 vtkMTimeType vtkCompositeReliefMapper::GetMTime()
 {
-  return std::max(this->Superclass::GetMTime(), this->Shading->GetMTime());
+  const vtkMTimeType own = this->Superclass::GetMTime();
+  return this->ReliefProperty ? std::max(own, this->ReliefProperty->GetMTime()) : own;
 }
 
 //------------------------------------------------------------------------------
@@ -238,6 +265,11 @@ void vtkCompositeReliefMapper::ReleaseGraphicsResources(vtkWindow* win)
 void vtkCompositeReliefMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+  os << indent << "ReliefProperty: " << this->ReliefProperty.Get() << "\n";
+  if (this->ReliefProperty)
+  {
+    this->ReliefProperty->PrintSelf(os, indent.GetNextIndent());
+  }
   os << indent << "Shading:\n";
   this->Shading->PrintSelf(os, indent.GetNextIndent());
   os << indent << "ReliefTextureData: " << this->ReliefTextureData.Get() << "\n";

@@ -4,8 +4,9 @@
  *          inputs and for ParaView's geometry representations (which draw through one).
  *
  * Draws each polydata block as a relief surface, with exactly vtkReliefMapper's shader edits,
- * textures and uniforms: both delegate them to a vtkReliefShading (GetShading(), which holds
- * the method, steps, depth scale, shadows, silhouettes, depth write, light-set settings).
+ * textures and uniforms: both delegate them to a vtkReliefShading. The settings are a
+ * vtkReliefProperty (GetReliefProperty()), which can be shared with other mappers, e.g. a
+ * representation's mapper and LOD mapper.
  *
  * The relief texture and the light set come from SetReliefTextureData() / SetLightSetData()
  * when given, otherwise from the field data of the first block that carries them
@@ -22,10 +23,11 @@
 #include "MesolightReliefModule.h" // for export macro
 #include "vtkCompositePolyDataMapper2.h"
 #include "vtkNew.h"            // for Shading
-#include "vtkReliefShading.h"  // for GetShading
+#include "vtkReliefProperty.h" // for GetReliefProperty: callers set the relief through it
 #include "vtkSmartPointer.h"   // for members
 
 class vtkImageData;
+class vtkReliefShading;
 
 class MESOLIGHTRELIEF_EXPORT vtkCompositeReliefMapper : public vtkCompositePolyDataMapper2
 {
@@ -34,8 +36,15 @@ public:
   vtkTypeMacro(vtkCompositeReliefMapper, vtkCompositePolyDataMapper2);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  /** The relief settings and GPU state shared with vtkReliefMapper. */
-  vtkReliefShading* GetShading() { return this->Shading; }
+  ///@{
+  /**
+   * The relief settings. Every mapper starts with a property of its own, whose errors reach
+   * this mapper's observers; setting one shares it, e.g. between several mappers. Null makes a
+   * new default property on the next GetReliefProperty().
+   */
+  vtkReliefProperty* GetReliefProperty();
+  void SetReliefProperty(vtkReliefProperty* property);
+  ///@}
 
   ///@{
   /** Explicit relief texture / light set; null (default) reads them from the input's field data. */
@@ -46,7 +55,7 @@ public:
   /** Finds the relief texture and light set of this render, then draws the blocks. */
   void Render(vtkRenderer* ren, vtkActor* actor) override;
 
-  /** Includes the shading's modification time. */
+  /** Includes the relief property's modification time. */
   vtkMTimeType GetMTime() override;
 
   void ReleaseGraphicsResources(vtkWindow* win) override;
@@ -57,6 +66,7 @@ protected:
 
   vtkCompositeMapperHelper2* CreateHelper() override;
 
+  vtkSmartPointer<vtkReliefProperty> ReliefProperty;
   vtkNew<vtkReliefShading> Shading;
   vtkSmartPointer<vtkImageData> ReliefTextureData;
   vtkSmartPointer<vtkImageData> LightSetData;

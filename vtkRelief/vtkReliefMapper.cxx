@@ -8,6 +8,8 @@
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLHelper.h"
 #include "vtkOpenGLRenderWindow.h"
+#include "vtkReliefGeometryCache.h"
+#include "vtkReliefShading.h"
 #include "vtkRenderer.h"
 #include "vtkShader.h"
 
@@ -20,8 +22,9 @@ vtkReliefMapper::vtkReliefMapper()
 {
   this->SetNumberOfInputPorts(3);
   this->Shading->SetMessageOwner(this);
+  this->GetReliefProperty(); // the default settings, reporting to this mapper
   // Our own texture-coordinate attribute: VTK uploads "tcoord" only when the actor has a texture.
-  this->MapDataArrayToVertexAttribute("mlTCoordMC", vtkReliefShading::GetReliefTCoordsName(),
+  this->MapDataArrayToVertexAttribute("mlTCoordMC", vtkReliefGeometryCache::GetReliefTCoordsName(),
     vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
 }
 
@@ -41,15 +44,31 @@ int vtkReliefMapper::FillInputPortInformation(int port, vtkInformation* info)
 }
 
 //------------------------------------------------------------------------------
-vtkMTimeType vtkReliefMapper::GetMTime()
+vtkReliefProperty* vtkReliefMapper::GetReliefProperty()
 {
-  return std::max(this->Superclass::GetMTime(), this->Shading->GetMTime());
+  if (!this->ReliefProperty)
+  {
+    this->ReliefProperty = vtkSmartPointer<vtkReliefProperty>::New();
+    this->ReliefProperty->SetMessageOwner(this);
+  }
+  return this->ReliefProperty;
 }
 
 //------------------------------------------------------------------------------
-bool vtkReliefMapper::SetMethodByName(const char* name)
+void vtkReliefMapper::SetReliefProperty(vtkReliefProperty* property)
 {
-  return this->Shading->SetMethodByName(name);
+  if (this->ReliefProperty != property)
+  {
+    this->ReliefProperty = property;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkMTimeType vtkReliefMapper::GetMTime()
+{
+  const vtkMTimeType own = this->Superclass::GetMTime();
+  return this->ReliefProperty ? std::max(own, this->ReliefProperty->GetMTime()) : own;
 }
 
 //------------------------------------------------------------------------------
@@ -112,8 +131,9 @@ void vtkReliefMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* actor)
     vtkAlgorithmOutput* lightPort = this->GetInputConnection(2, 0);
     lightPort->GetProducer()->Update(lightPort->GetIndex());
   }
-  this->PreparedInput =
-    this->CurrentInput ? this->Shading->PrepareInput(this->CurrentInput) : nullptr;
+  this->PreparedInput = this->CurrentInput
+    ? this->Shading->GetGeometryCache()->Prepare(this->CurrentInput)
+    : nullptr;
   if (!this->PreparedInput)
   {
     return;
@@ -129,8 +149,8 @@ void vtkReliefMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* actor)
   {
     lights = vtkAttachReliefTexture::GetAttachedLightSet(this->CurrentInput);
   }
-  if (!this->Shading->StartDraw(
-        vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow()), relief, lights, actor))
+  if (!this->Shading->StartDraw(vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow()),
+        this->GetReliefProperty(), relief, lights, actor))
   {
     return;
   }
@@ -202,6 +222,11 @@ void vtkReliefMapper::ReleaseGraphicsResources(vtkWindow* win)
 void vtkReliefMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+  os << indent << "ReliefProperty: " << this->ReliefProperty.Get() << "\n";
+  if (this->ReliefProperty)
+  {
+    this->ReliefProperty->PrintSelf(os, indent.GetNextIndent());
+  }
   os << indent << "Shading:\n";
   this->Shading->PrintSelf(os, indent.GetNextIndent());
   os << indent << "LightSet: " << this->GetLightSet() << "\n";

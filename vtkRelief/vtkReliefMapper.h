@@ -13,7 +13,10 @@
  *  - discards fragments whose hit leaves the texture domain (silhouettes),
  *  - writes gl_FragDepth from the hit point so other geometry intersects the relief correctly.
  *
- * Methods (one march skeleton, method-specific refinement):
+ * The settings (method, steps, depth scale, shadows, silhouettes, depth write, outputs, light-set
+ * shading) are a vtkReliefProperty: mapper->GetReliefProperty()->SetMethodToRelief(), and so on.
+ * Several mappers can share one property (SetReliefProperty()), as actors share a vtkProperty.
+ * Methods (one march skeleton, method-specific refinement), among them:
  *  - Relief: linear search + binary search (Policarpo et al. 2005; the thesis uses 10 + 8).
  *  - ParallaxOcclusion: linear search + one secant step between the last two samples (Tatarchuk 2006).
  *  - SteepParallax: linear search only (McGuire & McGuire 2005).
@@ -33,22 +36,24 @@
  * (SetReliefTextureConnection, input port 1), or attached to the input polydata as field data
  * (vtkAttachReliefTexture); likewise the light set (input port 2).
  *
- * The relief work (settings, textures, shader edits, uniforms) is done by a vtkReliefShading
- * (GetShading()) that vtkCompositeReliefMapper shares; the setters here forward to it.
+ * Up to vtkReliefShading::MaximumNumberOfLights (8) of the renderer's lights are shaded; further
+ * lights are ignored with a warning. The relief drawing (geometry, textures, shader edits,
+ * uniforms) is done by a vtkReliefShading, the same as vtkCompositeReliefMapper's.
  */
 
 #ifndef vtkReliefMapper_h
 #define vtkReliefMapper_h
 
 #include "MesolightReliefModule.h" // for export macro
+#include "vtkNew.h"                // for Shading
 #include "vtkOpenGLPolyDataMapper.h"
-#include "vtkNew.h"            // for Shading
 #include "vtkPolyData.h"       // for GetPreparedInput
-#include "vtkReliefShading.h"  // for the forwarded settings
-#include "vtkSmartPointer.h"   // for members
+#include "vtkReliefProperty.h" // for GetReliefProperty: callers set the relief through it
+#include "vtkSmartPointer.h"   // for ReliefProperty
 
 class vtkAlgorithmOutput;
 class vtkImageData;
+class vtkReliefShading;
 
 class MESOLIGHTRELIEF_EXPORT vtkReliefMapper : public vtkOpenGLPolyDataMapper
 {
@@ -57,168 +62,14 @@ public:
   vtkTypeMacro(vtkReliefMapper, vtkOpenGLPolyDataMapper);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  /**
-   * Height-field intersection methods (seed 000, §4), all sharing one march skeleton.
-   * Non-iterative: TextureMapping (no displacement), Bump (normals only), Parallax,
-   * ParallaxOffsetLimiting, ParallaxSlope. Unsafe iterative: IterativeParallax, BinarySearch,
-   * Secant. Safe iterative: LinearSearch (steep parallax), ParallaxOcclusion (linear + one secant
-   * step), Relief (linear + binary), Interval (linear + interval steps, seed eq. 3).
-   * Empty-space skipping: RelaxedConeBinary and RelaxedConeInterval need a relaxed cone map,
-   * ConservativeCone a conservative one (vtkConeMapFilter output as the relief texture);
-   * MaximumMipmap traces exactly through a min-depth pyramid the mapper builds itself.
-   */
-  enum MethodType
-  {
-    TextureMapping = vtkReliefShading::TextureMapping,
-    Bump = vtkReliefShading::Bump,
-    Parallax = vtkReliefShading::Parallax,
-    ParallaxOffsetLimiting = vtkReliefShading::ParallaxOffsetLimiting,
-    ParallaxSlope = vtkReliefShading::ParallaxSlope,
-    IterativeParallax = vtkReliefShading::IterativeParallax,
-    BinarySearch = vtkReliefShading::BinarySearch,
-    Secant = vtkReliefShading::Secant,
-    LinearSearch = vtkReliefShading::LinearSearch,
-    ParallaxOcclusion = vtkReliefShading::ParallaxOcclusion,
-    Relief = vtkReliefShading::Relief,
-    Interval = vtkReliefShading::Interval,
-    RelaxedConeBinary = vtkReliefShading::RelaxedConeBinary,
-    RelaxedConeInterval = vtkReliefShading::RelaxedConeInterval,
-    ConservativeCone = vtkReliefShading::ConservativeCone,
-    MaximumMipmap = vtkReliefShading::MaximumMipmap,
-    NumberOfMethods = vtkReliefShading::NumberOfMethods
-  };
-
-  enum ConeMapKind
-  {
-    NoConeMap = vtkReliefShading::NoConeMap,
-    RelaxedConeMap = vtkReliefShading::RelaxedConeMap,
-    ConservativeConeMap = vtkReliefShading::ConservativeConeMap
-  };
-
   ///@{
   /**
-   * Height-field intersection method. Default: Relief.
+   * The relief settings. Every mapper starts with a property of its own, whose errors reach
+   * this mapper's observers; setting one shares it, e.g. between several mappers. Null makes a
+   * new default property on the next GetReliefProperty().
    */
-  void SetMethod(int value) { this->Shading->SetMethod(value); }
-  int GetMethod() { return this->Shading->GetMethod(); }
-  void SetMethodToTextureMapping() { this->SetMethod(TextureMapping); }
-  void SetMethodToSteepParallax() { this->SetMethod(LinearSearch); }
-  void SetMethodToParallaxOcclusion() { this->SetMethod(ParallaxOcclusion); }
-  void SetMethodToRelief() { this->SetMethod(Relief); }
-  /** Short names used on the command line: "texture", "bump", "parallax", "parallax-limit",
-   * "parallax-slope", "iterative-parallax", "binary", "secant", "linear" (also "steep"), "pom",
-   * "relief", "interval", "relaxed-cone", "relaxed-cone-interval", "cone", "max-mipmap". */
-  static const char* GetMethodName(int method) { return vtkReliefShading::GetMethodName(method); }
-  /** Set the method from its name; false if unknown. */
-  bool SetMethodByName(const char* name);
-  /** The cone map a method needs in the relief texture (ConeMapKind). */
-  static int GetRequiredConeMap(int method) { return vtkReliefShading::GetRequiredConeMap(method); }
-  ///@}
-
-  ///@{
-  /**
-   * Number of linear-search steps from the surface to depth 1 (default 10) and of refinement
-   * steps (binary search; default 8). Clamped to [1, 1024] and [0, 64]. For iterative parallax
-   * LinearSteps counts iterations, for cone stepping cone steps, and for MaximumMipmap it is
-   * the iteration budget of the traversal (give it 64 or more).
-   */
-  void SetLinearSteps(int value) { this->Shading->SetLinearSteps(value); }
-  int GetLinearSteps() { return this->Shading->GetLinearSteps(); }
-  void SetRefinementSteps(int value) { this->Shading->SetRefinementSteps(value); }
-  int GetRefinementSteps() { return this->Shading->GetRefinementSteps(); }
-  ///@}
-
-  ///@{
-  /**
-   * View-angle adaptive step counts (Tatarchuk 2006): LinearSteps at grazing angles down to
-   * MinimumSteps head-on. Default off.
-   */
-  void SetAdaptiveSteps(bool value) { this->Shading->SetAdaptiveSteps(value); }
-  bool GetAdaptiveSteps() { return this->Shading->GetAdaptiveSteps(); }
-  void AdaptiveStepsOn() { this->SetAdaptiveSteps(true); }
-  void AdaptiveStepsOff() { this->SetAdaptiveSteps(false); }
-  void SetMinimumSteps(int value) { this->Shading->SetMinimumSteps(value); }
-  int GetMinimumSteps() { return this->Shading->GetMinimumSteps(); }
-  ///@}
-
-  ///@{
-  /**
-   * Sample the height field at the pixel footprint's mipmap level (the relief texture gets
-   * mipmaps), so distant relief is filtered rather than aliased. Cone ratios are always read at
-   * the base level. Default off.
-   */
-  void SetLevelOfDetail(bool value) { this->Shading->SetLevelOfDetail(value); }
-  bool GetLevelOfDetail() { return this->Shading->GetLevelOfDetail(); }
-  void LevelOfDetailOn() { this->SetLevelOfDetail(true); }
-  void LevelOfDetailOff() { this->SetLevelOfDetail(false); }
-  ///@}
-
-  ///@{
-  /**
-   * Depth of depth = 1 relative to the world width of the texture (dimensionless, default 0.05).
-   * 0 renders a flat (normal-mapped) surface. Clamped to [0, 10]; NaN is refused with an error.
-   */
-  void SetDepthScale(double depthScale)
-  {
-    this->Shading->SetDepthScale(depthScale);
-  }
-  double GetDepthScale() { return this->Shading->GetDepthScale(); }
-  ///@}
-
-  ///@{
-  /** Hard self-shadowing toward each light by marching the height field. Default on. */
-  void SetSelfShadowing(bool value) { this->Shading->SetSelfShadowing(value); }
-  bool GetSelfShadowing() { return this->Shading->GetSelfShadowing(); }
-  void SelfShadowingOn() { this->SetSelfShadowing(true); }
-  void SelfShadowingOff() { this->SetSelfShadowing(false); }
-  ///@}
-
-  ///@{
-  /** Discard fragments whose hit point leaves the [0,1]^2 texture domain. Default on. */
-  void SetSilhouettes(bool value) { this->Shading->SetSilhouettes(value); }
-  bool GetSilhouettes() { return this->Shading->GetSilhouettes(); }
-  void SilhouettesOn() { this->SetSilhouettes(true); }
-  void SilhouettesOff() { this->SetSilhouettes(false); }
-  ///@}
-
-  ///@{
-  /** Write gl_FragDepth from the hit point instead of the mesh surface. Default on. */
-  void SetWriteDepth(bool value) { this->Shading->SetWriteDepth(value); }
-  bool GetWriteDepth() { return this->Shading->GetWriteDepth(); }
-  void WriteDepthOn() { this->SetWriteDepth(true); }
-  void WriteDepthOff() { this->SetWriteDepth(false); }
-  ///@}
-
-  ///@{
-  /** Repeat the relief texture outside [0,1] (tiling) instead of clamping. Default off. */
-  void SetRepeatTexture(bool value) { this->Shading->SetRepeatTexture(value); }
-  bool GetRepeatTexture() { return this->Shading->GetRepeatTexture(); }
-  void RepeatTextureOn() { this->SetRepeatTexture(true); }
-  void RepeatTextureOff() { this->SetRepeatTexture(false); }
-  ///@}
-
-  enum OutputType
-  {
-    ShadedOutput = vtkReliefShading::ShadedOutput, ///< the lit surface (default)
-    HitUOutput = vtkReliefShading::HitUOutput, ///< hit u as 24-bit fixed point in RGB
-    HitVOutput = vtkReliefShading::HitVOutput, ///< hit v, likewise
-    /// white where the first light reaches the hit point, else black
-    LightVisibilityOutput = vtkReliefShading::LightVisibilityOutput,
-    /// red where a NaN or Inf arose on the way to the colour, else green
-    NonFiniteCheckOutput = vtkReliefShading::NonFiniteCheckOutput,
-    /// relief-texture samples the fragment took, as a 16-bit count in R (high) and G (low)
-    /// bytes: the march's cost, independent of the machine (mesolight::DecodeSampleCount)
-    SampleCountOutput = vtkReliefShading::SampleCountOutput,
-    NumberOfOutputs = vtkReliefShading::NumberOfOutputs
-  };
-
-  ///@{
-  /**
-   * What the fragments show: the shaded surface, or measurement outputs that tests and
-   * benchmarks compare with exact CPU references (see mesolight::DecodeHitCoordinate).
-   */
-  void SetOutput(int value) { this->Shading->SetOutput(value); }
-  int GetOutput() { return this->Shading->GetOutput(); }
+  vtkReliefProperty* GetReliefProperty();
+  void SetReliefProperty(vtkReliefProperty* property);
   ///@}
 
   ///@{
@@ -243,46 +94,7 @@ public:
   vtkImageData* GetLightSet();
   ///@}
 
-  ///@{
-  /** Scale of the light-set shading (default 1) and Reinhard tone mapping (default off). */
-  void SetExposure(double value) { this->Shading->SetExposure(value); }
-  double GetExposure() { return this->Shading->GetExposure(); }
-  void SetToneMapping(bool value) { this->Shading->SetToneMapping(value); }
-  bool GetToneMapping() { return this->Shading->GetToneMapping(); }
-  void ToneMappingOn() { this->SetToneMapping(true); }
-  void ToneMappingOff() { this->SetToneMapping(false); }
-  ///@}
-
-  ///@{
-  /**
-   * Skips for light sets, each measurable (mesolight bench ibl): lights whose luminance is below
-   * LightSetThreshold times the strongest light's are skipped entirely (default 0: none);
-   * with ShadowedLights = K > 0 only the K strongest lights facing a pixel march their shadows,
-   * the rest are weighted by the visible fraction of those K (default 0: all march).
-   */
-  void SetLightSetThreshold(double value) { this->Shading->SetLightSetThreshold(value); }
-  double GetLightSetThreshold() { return this->Shading->GetLightSetThreshold(); }
-  void SetShadowedLights(int value) { this->Shading->SetShadowedLights(value); }
-  int GetShadowedLights() { return this->Shading->GetShadowedLights(); }
-  /**
-   * Lights behind the shading normal contribute nothing and skip their shadow march (default
-   * on). Off marches them anyway, only to measure what the culling saves.
-   */
-  void SetShadowCulling(bool value) { this->Shading->SetShadowCulling(value); }
-  bool GetShadowCulling() { return this->Shading->GetShadowCulling(); }
-  void ShadowCullingOn() { this->SetShadowCulling(true); }
-  void ShadowCullingOff() { this->SetShadowCulling(false); }
-  ///@}
-
-  /**
-   * Maximum number of VTK lights shaded per fragment; further lights are ignored with a warning.
-   */
-  static constexpr int MaximumNumberOfLights = vtkReliefShading::MaximumNumberOfLights;
-
-  /** The relief work shared with vtkCompositeReliefMapper; holds every setting above. */
-  vtkReliefShading* GetShading() { return this->Shading; }
-
-  /** Includes the shading's modification time. */
+  /** Includes the relief property's modification time. */
   vtkMTimeType GetMTime() override;
 
   void ReleaseGraphicsResources(vtkWindow* win) override;
@@ -304,6 +116,7 @@ protected:
     std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
   void SetMapperShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
 
+  vtkSmartPointer<vtkReliefProperty> ReliefProperty;
   vtkNew<vtkReliefShading> Shading;
   vtkPolyData* PreparedInput = nullptr;
   bool ReadyToDraw = false;

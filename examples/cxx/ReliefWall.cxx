@@ -38,8 +38,8 @@ int main(int argc, char* argv[])
   vtkNew<vtkReliefMapper> mapper;
   mapper->SetInputConnection(wall->GetOutputPort());
   mapper->SetReliefTextureConnection(relief->GetOutputPort());
-  mapper->SetDepthScale(0.04);
-  mapper->SetMethodToRelief(); // 10 linear + 8 binary steps, self-shadowed
+  mapper->GetReliefProperty()->SetDepthScale(0.04);
+  mapper->GetReliefProperty()->SetMethodToRelief(); // 10 linear + 8 binary steps, self-shadowed
 
   vtkNew<vtkActor> actor;
   actor->SetMapper(mapper);

@@ -456,7 +456,7 @@ int RunLightSetBenchmark(const std::vector<std::string>& args)
     brightest = std::max(brightest, (s.Irradiance[0] + s.Irradiance[1] + s.Irradiance[2]) / 3.0);
   }
   const double exposure = brightest > 0.0 ? 200.0 / 255.0 * Pi / brightest : 1.0;
-  scene.Mapper->SetExposure(exposure);
+  scene.Mapper->GetReliefProperty()->SetExposure(exposure);
 
   auto window = MakeOffscreenWindow(o, scene.Renderer);
   struct Row
@@ -488,35 +488,35 @@ int RunLightSetBenchmark(const std::vector<std::string>& args)
     setLights(count);
     measure("every light marches its shadow", count, nullptr);
   }
-  scene.Mapper->SetShadowedLights(32);
+  scene.Mapper->GetReliefProperty()->SetShadowedLights(32);
   for (int count : counts)
   {
     setLights(count);
     measure("shadows for the 32 strongest facing lights", count, nullptr);
   }
-  scene.Mapper->SetShadowedLights(0);
+  scene.Mapper->GetReliefProperty()->SetShadowedLights(0);
   setLights(skipCount);
   const Frame full = measure("reference configuration", skipCount, nullptr);
-  scene.Mapper->ShadowCullingOff();
+  scene.Mapper->GetReliefProperty()->ShadowCullingOff();
   measure("no culling of lights behind the normal", skipCount, &full);
-  scene.Mapper->ShadowCullingOn();
+  scene.Mapper->GetReliefProperty()->ShadowCullingOn();
   for (double threshold : { 0.01, 0.05 })
   {
-    scene.Mapper->SetLightSetThreshold(threshold);
+    scene.Mapper->GetReliefProperty()->SetLightSetThreshold(threshold);
     std::ostringstream label;
     label << "skip lights < " << threshold * 100 << "% of the strongest";
     measure(label.str(), skipCount, &full);
   }
-  scene.Mapper->SetLightSetThreshold(0.0);
+  scene.Mapper->GetReliefProperty()->SetLightSetThreshold(0.0);
   for (int k : { 8, 32 })
   {
-    scene.Mapper->SetShadowedLights(k);
+    scene.Mapper->GetReliefProperty()->SetShadowedLights(k);
     measure("shadows for the " + std::to_string(k) + " strongest lights only", skipCount, &full);
   }
-  scene.Mapper->SetShadowedLights(0);
-  scene.Mapper->SelfShadowingOff();
+  scene.Mapper->GetReliefProperty()->SetShadowedLights(0);
+  scene.Mapper->GetReliefProperty()->SelfShadowingOff();
   measure("no self-shadowing (negative reference)", skipCount, &full);
-  scene.Mapper->SelfShadowingOn();
+  scene.Mapper->GetReliefProperty()->SelfShadowingOn();
 
   // Relief vs relaxed cone stepping under many self-shadowing lights (the relief thesis' multi-light
   // table: relaxed cone 1.8-1.9x relief's frame rate at 32-1024 lights, 10 linear or cone steps +
@@ -535,7 +535,7 @@ int RunLightSetBenchmark(const std::vector<std::string>& args)
   vtkSmartPointer<vtkImageData> coneRelief;
   vtkSmartPointer<vtkTexture> unusedAlbedo;
   if (compareCount > 0 &&
-    !BuildReliefTextures(o, coneRelief, unusedAlbedo, error, vtkReliefMapper::RelaxedConeMap))
+    !BuildReliefTextures(o, coneRelief, unusedAlbedo, error, vtkReliefProperty::RelaxedConeMap))
   {
     std::cerr << "mesolight bench ibl: relaxed cone map: " << error << "\n";
     return 1;
@@ -558,30 +558,30 @@ int RunLightSetBenchmark(const std::vector<std::string>& args)
                    "relief texture, or nothing covered)\n";
       return 1;
     }
-    for (int method : { int(vtkReliefMapper::Relief), int(vtkReliefMapper::RelaxedConeBinary) })
+    for (int method : { int(vtkReliefProperty::Relief), int(vtkReliefProperty::RelaxedConeBinary) })
     {
       scene.Mapper->SetReliefTextureData(
-        method == vtkReliefMapper::Relief ? scene.ReliefTexture.Get() : coneRelief.Get());
-      scene.Mapper->SetMethod(method);
+        method == vtkReliefProperty::Relief ? scene.ReliefTexture.Get() : coneRelief.Get());
+      scene.Mapper->GetReliefProperty()->SetMethod(method);
       for (int steps : { 4, 6, 8, 10, 12, 16, 24, 32, 48, 64 })
       {
-        scene.Mapper->SetLinearSteps(steps);
-        scene.Mapper->SetRefinementSteps(8);
+        scene.Mapper->GetReliefProperty()->SetLinearSteps(steps);
+        scene.Mapper->GetReliefProperty()->SetRefinementSteps(8);
         MethodRow row{ method, steps, MedianFrameMs(window, frames), 0.0, 0.0, 0.0 };
         const Frame frame = CaptureFrame(window);
         row.ErrorLights = EnvironmentError(
-          frame, lightsReference[method == vtkReliefMapper::Relief ? 0 : 1], exposure);
+          frame, lightsReference[method == vtkReliefProperty::Relief ? 0 : 1], exposure);
         row.ErrorMc = EnvironmentError(frame, reference, exposure);
-        scene.Mapper->SetOutput(vtkReliefMapper::SampleCountOutput);
+        scene.Mapper->GetReliefProperty()->SetOutput(vtkReliefProperty::SampleCountOutput);
         row.Samples = MeanSampleCount(CaptureFrame(window));
-        scene.Mapper->SetOutput(vtkReliefMapper::ShadedOutput);
+        scene.Mapper->GetReliefProperty()->SetOutput(vtkReliefProperty::ShadedOutput);
         methodRows.push_back(row);
       }
     }
     scene.Mapper->SetReliefTextureData(scene.ReliefTexture);
-    scene.Mapper->SetMethod(vtkReliefMapper::Relief);
-    scene.Mapper->SetLinearSteps(o.LinearSteps);
-    scene.Mapper->SetRefinementSteps(o.RefinementSteps);
+    scene.Mapper->GetReliefProperty()->SetMethod(vtkReliefProperty::Relief);
+    scene.Mapper->GetReliefProperty()->SetLinearSteps(o.LinearSteps);
+    scene.Mapper->GetReliefProperty()->SetRefinementSteps(o.RefinementSteps);
   }
 
   std::cout << "Relief lit by median-cut lights of " << o.Environment << " (relief 16+8, "
@@ -644,7 +644,7 @@ int RunLightSetBenchmark(const std::vector<std::string>& args)
     for (const MethodRow& r : methodRows)
     {
       std::cout << std::left << std::setw(16)
-                << (r.Method == vtkReliefMapper::Relief ? "relief" : "relaxed-cone") << std::right
+                << (r.Method == vtkReliefProperty::Relief ? "relief" : "relaxed-cone") << std::right
                 << std::setw(7) << r.Steps << std::fixed << std::setprecision(1) << std::setw(11)
                 << r.Ms << std::setw(11) << r.Samples << std::setprecision(2) << std::setw(11)
                 << r.ErrorLights << std::setw(11) << r.ErrorMc << "\n";
@@ -655,7 +655,7 @@ int RunLightSetBenchmark(const std::vector<std::string>& args)
     std::vector<double> msRatios, sampleRatios;
     for (const MethodRow& target : methodRows)
     {
-      if (target.Method != vtkReliefMapper::Relief)
+      if (target.Method != vtkReliefProperty::Relief)
       {
         continue;
       }
@@ -663,7 +663,7 @@ int RunLightSetBenchmark(const std::vector<std::string>& args)
       const MethodRow* leanest[2] = { nullptr, nullptr };
       for (const MethodRow& r : methodRows)
       {
-        const int k = r.Method == vtkReliefMapper::Relief ? 0 : 1;
+        const int k = r.Method == vtkReliefProperty::Relief ? 0 : 1;
         if (r.ErrorLights > target.ErrorLights + 0.05)
         {
           continue;

@@ -176,13 +176,13 @@ bool BuildReliefTextures(const ReliefSceneOptions& options, vtkSmartPointer<vtkI
   }
   relief = vtkSmartPointer<vtkImageData>::New();
   relief->DeepCopy(bake->GetOutput());
-  if (coneMap != vtkReliefMapper::NoConeMap)
+  if (coneMap != vtkReliefProperty::NoConeMap)
   {
     vtkNew<vtkConeMapFilter> cones;
     cones->AddObserver(vtkCommand::ErrorEvent, errors);
     cones->SetInputData(relief);
     cones->SetDepthScale(options.DepthScale); // bake the normals as the relief texture was
-    if (coneMap == vtkReliefMapper::ConservativeConeMap)
+    if (coneMap == vtkReliefProperty::ConservativeConeMap)
     {
       cones->SetConeTypeToConservative();
     }
@@ -356,35 +356,35 @@ void SetupCameraAndLights(const ReliefSceneOptions& options, vtkRenderer* render
 //------------------------------------------------------------------------------
 bool BuildReliefScene(const ReliefSceneOptions& options, ReliefScene& scene, std::string& error)
 {
-  vtkNew<vtkReliefMapper> probe;
+  vtkNew<vtkReliefProperty> probe;
   if (!probe->SetMethodByName(options.Method.c_str()))
   {
     error = "unknown method '" + options.Method + "'";
     return false;
   }
   if (!BuildReliefTextures(options, scene.ReliefTexture, scene.Albedo, error,
-        vtkReliefMapper::GetRequiredConeMap(probe->GetMethod())))
+        vtkReliefProperty::GetRequiredConeMap(probe->GetMethod())))
   {
     return false;
   }
   scene.Mapper = vtkSmartPointer<vtkReliefMapper>::New();
   scene.Mapper->SetInputData(MakeWall(scene.ReliefTexture));
   scene.Mapper->SetReliefTextureData(scene.ReliefTexture);
-  if (!scene.Mapper->SetMethodByName(options.Method.c_str()))
+  if (!scene.Mapper->GetReliefProperty()->SetMethodByName(options.Method.c_str()))
   {
     error = "unknown method '" + options.Method + "'";
     return false;
   }
-  scene.Mapper->SetDepthScale(options.DepthScale);
-  scene.Mapper->SetLinearSteps(options.LinearSteps);
-  scene.Mapper->SetRefinementSteps(options.RefinementSteps);
-  scene.Mapper->SetSelfShadowing(options.SelfShadowing);
-  scene.Mapper->SetSilhouettes(options.Silhouettes);
-  scene.Mapper->SetWriteDepth(options.WriteDepth);
-  scene.Mapper->SetAdaptiveSteps(options.AdaptiveSteps);
-  scene.Mapper->SetLevelOfDetail(options.LevelOfDetail);
-  scene.Mapper->SetExposure(options.Exposure);
-  scene.Mapper->SetToneMapping(options.ToneMapping);
+  scene.Mapper->GetReliefProperty()->SetDepthScale(options.DepthScale);
+  scene.Mapper->GetReliefProperty()->SetLinearSteps(options.LinearSteps);
+  scene.Mapper->GetReliefProperty()->SetRefinementSteps(options.RefinementSteps);
+  scene.Mapper->GetReliefProperty()->SetSelfShadowing(options.SelfShadowing);
+  scene.Mapper->GetReliefProperty()->SetSilhouettes(options.Silhouettes);
+  scene.Mapper->GetReliefProperty()->SetWriteDepth(options.WriteDepth);
+  scene.Mapper->GetReliefProperty()->SetAdaptiveSteps(options.AdaptiveSteps);
+  scene.Mapper->GetReliefProperty()->SetLevelOfDetail(options.LevelOfDetail);
+  scene.Mapper->GetReliefProperty()->SetExposure(options.Exposure);
+  scene.Mapper->GetReliefProperty()->SetToneMapping(options.ToneMapping);
   if (!options.Environment.empty())
   {
     scene.LightSet = MakeEnvironmentLights(options, error);

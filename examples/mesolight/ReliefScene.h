@@ -29,7 +29,7 @@ struct ReliefSceneOptions
   bool DepthFileIsHeight = false; // the file stores height (white = high), not depth
   int Resolution = 512;           // texels per side of the procedural map
   double DepthScale = 0.04;       // world depth of depth 1 / world width of the wall
-  std::string Method = "relief";  // vtkReliefMapper::SetMethodByName
+  std::string Method = "relief";  // vtkReliefProperty::SetMethodByName
   int LinearSteps = 10;
   int RefinementSteps = 8;
   bool SelfShadowing = true;
@@ -76,12 +76,12 @@ vtkSmartPointer<vtkImageData> MakeEnvironmentLights(
 
 /**
  * Builds the relief texture and albedo described by the options; with a cone map kind
- * (vtkReliefMapper::ConeMapKind) the texture is vtkConeMapFilter's cone-packed one. Returns false
+ * (vtkReliefProperty::ConeMapKind) the texture is vtkConeMapFilter's cone-packed one. Returns false
  * and fills error when the depth file cannot be read or the texture cannot be baked.
  */
 bool BuildReliefTextures(const ReliefSceneOptions& options, vtkSmartPointer<vtkImageData>& relief,
   vtkSmartPointer<vtkTexture>& albedo, std::string& error,
-  int coneMap = vtkReliefMapper::NoConeMap);
+  int coneMap = vtkReliefProperty::NoConeMap);
 
 /** The relief scene: a coarse plane with vtkReliefMapper. */
 bool BuildReliefScene(const ReliefSceneOptions& options, ReliefScene& scene, std::string& error);

@@ -47,23 +47,23 @@ std::vector<ReliefSweepStep> ReliefSweepStepsFor(int method)
   std::vector<ReliefSweepStep> steps;
   switch (method)
   {
-    case vtkReliefMapper::TextureMapping:
-    case vtkReliefMapper::Bump:
-    case vtkReliefMapper::Parallax:
-    case vtkReliefMapper::ParallaxOffsetLimiting:
-    case vtkReliefMapper::ParallaxSlope:
+    case vtkReliefProperty::TextureMapping:
+    case vtkReliefProperty::Bump:
+    case vtkReliefProperty::Parallax:
+    case vtkReliefProperty::ParallaxOffsetLimiting:
+    case vtkReliefProperty::ParallaxSlope:
       // One setting; the mapper's defaults, so a method that still falls back to the default
       // march (not yet implemented in the shaders) shows that march, not a degenerate one.
       steps.push_back({ 10, 8, "-" });
       break;
-    case vtkReliefMapper::IterativeParallax:
+    case vtkReliefProperty::IterativeParallax:
       for (int l : { 2, 4, 8 })
       {
         steps.push_back({ l, 0, "iter " + std::to_string(l) });
       }
       break;
-    case vtkReliefMapper::BinarySearch:
-    case vtkReliefMapper::Secant:
+    case vtkReliefProperty::BinarySearch:
+    case vtkReliefProperty::Secant:
       // Unsafe searches over the whole ray: iterations as refinement steps, no linear search.
       for (int r : { 4, 8, 16 })
       {
@@ -72,15 +72,15 @@ std::vector<ReliefSweepStep> ReliefSweepStepsFor(int method)
       break;
     // Search steps up to 128: at grazing angles the sub-texel accurate settings, where the
     // searches differ most, need 64 or more.
-    case vtkReliefMapper::LinearSearch:
-    case vtkReliefMapper::ParallaxOcclusion:
+    case vtkReliefProperty::LinearSearch:
+    case vtkReliefProperty::ParallaxOcclusion:
       for (int l : { 8, 16, 32, 64, 128 })
       {
         steps.push_back({ l, 0, label(l, 0) });
       }
       break;
-    case vtkReliefMapper::Relief:
-    case vtkReliefMapper::Interval:
+    case vtkReliefProperty::Relief:
+    case vtkReliefProperty::Interval:
       for (int l : { 8, 16, 32, 64, 128 })
       {
         for (int r : { 0, 4, 8 })
@@ -89,8 +89,8 @@ std::vector<ReliefSweepStep> ReliefSweepStepsFor(int method)
         }
       }
       break;
-    case vtkReliefMapper::RelaxedConeBinary:
-    case vtkReliefMapper::RelaxedConeInterval:
+    case vtkReliefProperty::RelaxedConeBinary:
+    case vtkReliefProperty::RelaxedConeInterval:
       for (int l : { 8, 16, 32, 64, 128 })
       {
         for (int r : { 4, 8 })
@@ -99,13 +99,13 @@ std::vector<ReliefSweepStep> ReliefSweepStepsFor(int method)
         }
       }
       break;
-    case vtkReliefMapper::ConservativeCone:
+    case vtkReliefProperty::ConservativeCone:
       for (int l : { 8, 16, 32, 64, 128 })
       {
         steps.push_back({ l, 4, label(l, 4) }); // cone steps, then binary search of the bracket
       }
       break;
-    case vtkReliefMapper::MaximumMipmap:
+    case vtkReliefProperty::MaximumMipmap:
       for (int l : { 32, 64, 128 })
       {
         steps.push_back({ l, 0, "iter " + std::to_string(l) });
@@ -153,10 +153,10 @@ std::vector<std::string> SplitList(const std::string& text)
 // Methods whose LinearSteps / RefinementSteps are a linear or cone search and its refinement.
 bool UsesSearchSteps(int m)
 {
-  return m == vtkReliefMapper::LinearSearch || m == vtkReliefMapper::ParallaxOcclusion ||
-    m == vtkReliefMapper::Relief || m == vtkReliefMapper::Interval ||
-    m == vtkReliefMapper::RelaxedConeBinary || m == vtkReliefMapper::RelaxedConeInterval ||
-    m == vtkReliefMapper::ConservativeCone;
+  return m == vtkReliefProperty::LinearSearch || m == vtkReliefProperty::ParallaxOcclusion ||
+    m == vtkReliefProperty::Relief || m == vtkReliefProperty::Interval ||
+    m == vtkReliefProperty::RelaxedConeBinary || m == vtkReliefProperty::RelaxedConeInterval ||
+    m == vtkReliefProperty::ConservativeCone;
 }
 
 // "L+R" -> LinearSteps L (1..1024), RefinementSteps R (0..64).
@@ -185,11 +185,11 @@ int MethodFromName(const std::string& name)
 {
   if (name == "steep")
   {
-    return vtkReliefMapper::LinearSearch;
+    return vtkReliefProperty::LinearSearch;
   }
-  for (int m = 0; m < vtkReliefMapper::NumberOfMethods; ++m)
+  for (int m = 0; m < vtkReliefProperty::NumberOfMethods; ++m)
   {
-    if (name == vtkReliefMapper::GetMethodName(m))
+    if (name == vtkReliefProperty::GetMethodName(m))
     {
       return m;
     }
@@ -205,7 +205,7 @@ vtkSmartPointer<vtkImageData> BuildConeMap(
 #if MESOLIGHT_HAVE_CONE_MAP_FILTER
   vtkNew<vtkConeMapFilter> cones;
   cones->SetInputData(relief);
-  if (kind == vtkReliefMapper::RelaxedConeMap)
+  if (kind == vtkReliefProperty::RelaxedConeMap)
   {
     cones->SetConeTypeToRelaxed();
   }
@@ -427,7 +427,7 @@ bool WritePlots(const ReliefSweepSettings& settings, const std::vector<ReliefSwe
       if (!seriesOf.count(method))
       {
         seriesOf[method] = chart.Points.size();
-        chart.Points.push_back({ vtkReliefMapper::GetMethodName(method), {}, {} });
+        chart.Points.push_back({ vtkReliefProperty::GetMethodName(method), {}, {} });
       }
       ChartSeries& series = chart.Points[seriesOf[method]];
       const double x = entry.second.Ms / entry.second.N;
@@ -498,7 +498,7 @@ void PrintConeVersusRelief(const ReliefSweepSettings& settings,
       Ratios here;
       for (const ReliefSweepRow& target : rows)
       {
-        if (target.Method != vtkReliefMapper::Relief || target.Angle != angle || target.Map != map)
+        if (target.Method != vtkReliefProperty::Relief || target.Angle != angle || target.Map != map)
         {
           continue;
         }
@@ -506,8 +506,8 @@ void PrintConeVersusRelief(const ReliefSweepSettings& settings,
         const ReliefSweepRow* leanest[2] = { nullptr, nullptr };
         for (const ReliefSweepRow& r : rows)
         {
-          const int k = r.Method == vtkReliefMapper::Relief ? 0
-            : r.Method == vtkReliefMapper::RelaxedConeBinary ? 1
+          const int k = r.Method == vtkReliefProperty::Relief ? 0
+            : r.Method == vtkReliefProperty::RelaxedConeBinary ? 1
                                                              : -1;
           if (k < 0 || r.Map != map || r.Angle != angle || r.HitMeanTexels > target.HitMeanTexels)
           {
@@ -597,9 +597,9 @@ void PrintSummary(const ReliefSweepSettings& settings, const std::vector<ReliefS
   bool any = false;
   for (const ReliefSweepRow& r : rows)
   {
-    const bool exactRelief = r.Method == vtkReliefMapper::Relief && r.Step.LinearSteps == 32 &&
+    const bool exactRelief = r.Method == vtkReliefProperty::Relief && r.Step.LinearSteps == 32 &&
       r.Step.RefinementSteps == 8;
-    if (r.Angle != grazing || !(exactRelief || r.Method == vtkReliefMapper::MaximumMipmap))
+    if (r.Angle != grazing || !(exactRelief || r.Method == vtkReliefProperty::MaximumMipmap))
     {
       continue;
     }
@@ -624,7 +624,7 @@ bool RunReliefSweep(
   std::vector<int> methods;
   if (settings.Methods.empty())
   {
-    for (int m = 0; m < vtkReliefMapper::NumberOfMethods; ++m)
+    for (int m = 0; m < vtkReliefProperty::NumberOfMethods; ++m)
     {
       methods.push_back(m);
     }
@@ -714,8 +714,8 @@ bool RunReliefSweep(
     std::map<int, vtkSmartPointer<vtkImageData>> coneMaps;
     for (int m : methods)
     {
-      const int kind = vtkReliefMapper::GetRequiredConeMap(m);
-      if (kind == vtkReliefMapper::NoConeMap || coneMaps.count(kind))
+      const int kind = vtkReliefProperty::GetRequiredConeMap(m);
+      if (kind == vtkReliefProperty::NoConeMap || coneMaps.count(kind))
       {
         continue;
       }
@@ -723,7 +723,7 @@ bool RunReliefSweep(
       coneMaps[kind] = BuildConeMap(relief.ReliefTexture, kind, o.DepthScale, why);
       if (!coneMaps[kind])
       {
-        skipped.push_back(std::string(kind == vtkReliefMapper::RelaxedConeMap ? "relaxed" : "conservative") +
+        skipped.push_back(std::string(kind == vtkReliefProperty::RelaxedConeMap ? "relaxed" : "conservative") +
           " cone map for " + map.Label + ": " + why);
       }
     }
@@ -750,14 +750,14 @@ bool RunReliefSweep(
 
       for (int m : methods)
       {
-        const int kind = vtkReliefMapper::GetRequiredConeMap(m);
-        if (kind != vtkReliefMapper::NoConeMap && !coneMaps[kind])
+        const int kind = vtkReliefProperty::GetRequiredConeMap(m);
+        if (kind != vtkReliefProperty::NoConeMap && !coneMaps[kind])
         {
           continue;
         }
         mapper->SetReliefTextureData(
-          kind == vtkReliefMapper::NoConeMap ? relief.ReliefTexture.Get() : coneMaps[kind].Get());
-        mapper->SetMethod(m);
+          kind == vtkReliefProperty::NoConeMap ? relief.ReliefTexture.Get() : coneMaps[kind].Get());
+        mapper->GetReliefProperty()->SetMethod(m);
         std::vector<ReliefSweepStep> steps = ReliefSweepStepsFor(m);
         if (!settings.Steps.empty() && UsesSearchSteps(m))
         {
@@ -775,27 +775,27 @@ bool RunReliefSweep(
           row.Map = map.Label;
           row.Angle = angle;
           row.Method = m;
-          row.MethodName = vtkReliefMapper::GetMethodName(m);
+          row.MethodName = vtkReliefProperty::GetMethodName(m);
           row.Step = step;
-          mapper->SetLinearSteps(step.LinearSteps);
-          mapper->SetRefinementSteps(step.RefinementSteps);
+          mapper->GetReliefProperty()->SetLinearSteps(step.LinearSteps);
+          mapper->GetReliefProperty()->SetRefinementSteps(step.RefinementSteps);
 
           // Shaded, no self-shadowing: timing and colour against the dense mesh.
-          mapper->SetSelfShadowing(false);
-          mapper->SetOutput(vtkReliefMapper::ShadedOutput);
+          mapper->GetReliefProperty()->SetSelfShadowing(false);
+          mapper->GetReliefProperty()->SetOutput(vtkReliefProperty::ShadedOutput);
           row.MedianMs = TimeFrames(reliefWindow, settings.Frames, row.FirstMs);
           const Frame shaded = CaptureFrame(reliefWindow);
           row.ColorRmse = ColorRmse(reference, shaded, denseFrame);
           row.Psnr = row.ColorRmse > 0.0 ? 20.0 * std::log10(255.0 / row.ColorRmse) : 99.0;
 
           // What the march sampled, per covered pixel of the same (shadowless) frame.
-          mapper->SetOutput(vtkReliefMapper::SampleCountOutput);
+          mapper->GetReliefProperty()->SetOutput(vtkReliefProperty::SampleCountOutput);
           row.SamplesPerPixel = MeanSampleCount(CaptureFrame(reliefWindow));
 
           // Hit coordinates against the CPU reference.
-          mapper->SetOutput(vtkReliefMapper::HitUOutput);
+          mapper->GetReliefProperty()->SetOutput(vtkReliefProperty::HitUOutput);
           const Frame hitU = CaptureFrame(reliefWindow);
-          mapper->SetOutput(vtkReliefMapper::HitVOutput);
+          mapper->GetReliefProperty()->SetOutput(vtkReliefProperty::HitVOutput);
           const Frame hitV = CaptureFrame(reliefWindow);
           const HitComparison hits = CompareHits(reference, hitU, hitV);
           row.HitMeanTexels = hits.MeanTexels;
@@ -805,12 +805,12 @@ bool RunReliefSweep(
           row.Footprint = hits.Footprint;
 
           // First-light visibility with self-shadowing on.
-          mapper->SetSelfShadowing(true);
-          mapper->SetOutput(vtkReliefMapper::LightVisibilityOutput);
+          mapper->GetReliefProperty()->SetSelfShadowing(true);
+          mapper->GetReliefProperty()->SetOutput(vtkReliefProperty::LightVisibilityOutput);
           const Frame visibility = CaptureFrame(reliefWindow);
           row.ShadowMismatch = CompareLightVisibility(reference, visibility);
-          mapper->SetSelfShadowing(false);
-          mapper->SetOutput(vtkReliefMapper::ShadedOutput);
+          mapper->GetReliefProperty()->SetSelfShadowing(false);
+          mapper->GetReliefProperty()->SetOutput(vtkReliefProperty::ShadedOutput);
 
           rows.push_back(row);
         }
@@ -957,9 +957,9 @@ int RunReliefSweep(const std::vector<std::string>& args)
       if (MethodFromName(name) < 0)
       {
         std::cerr << "mesolight bench relief: unknown method '" << name << "' (names:";
-        for (int m = 0; m < vtkReliefMapper::NumberOfMethods; ++m)
+        for (int m = 0; m < vtkReliefProperty::NumberOfMethods; ++m)
         {
-          std::cerr << " " << vtkReliefMapper::GetMethodName(m);
+          std::cerr << " " << vtkReliefProperty::GetMethodName(m);
         }
         std::cerr << ")\n";
         return 2;

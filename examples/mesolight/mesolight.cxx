@@ -224,11 +224,11 @@ public:
   {
     vtkRenderWindowInteractor* rwi = this->Interactor;
     const char key = rwi->GetKeyCode();
-    vtkReliefMapper* m = this->Mapper;
+    vtkReliefProperty* m = this->Mapper->GetReliefProperty();
     switch (key)
     {
       case 'm':
-        m->SetMethod((m->GetMethod() + 1) % vtkReliefMapper::NumberOfMethods);
+        m->SetMethod((m->GetMethod() + 1) % vtkReliefProperty::NumberOfMethods);
         break;
       case '+':
       case '=':
@@ -263,12 +263,13 @@ public:
   void UpdateStatus()
   {
     std::ostringstream text;
-    text << "method " << vtkReliefMapper::GetMethodName(this->Mapper->GetMethod()) << " [m]   steps "
-         << this->Mapper->GetLinearSteps() << "+" << this->Mapper->GetRefinementSteps()
-         << " [+/-]   depth " << this->Mapper->GetDepthScale() << " [ [ ] ]\nshadows "
-         << (this->Mapper->GetSelfShadowing() ? "on" : "off") << " [x]   silhouettes "
-         << (this->Mapper->GetSilhouettes() ? "on" : "off") << " [o]   depth write "
-         << (this->Mapper->GetWriteDepth() ? "on" : "off") << " [z]   quit [q]";
+    vtkReliefProperty* p = this->Mapper->GetReliefProperty();
+    text << "method " << vtkReliefProperty::GetMethodName(p->GetMethod()) << " [m]   steps "
+         << p->GetLinearSteps() << "+" << p->GetRefinementSteps()
+         << " [+/-]   depth " << p->GetDepthScale() << " [ [ ] ]\nshadows "
+         << (p->GetSelfShadowing() ? "on" : "off") << " [x]   silhouettes "
+         << (p->GetSilhouettes() ? "on" : "off") << " [o]   depth write "
+         << (p->GetWriteDepth() ? "on" : "off") << " [z]   quit [q]";
     this->Status->SetInput(text.str().c_str());
   }
 };

@@ -2,7 +2,7 @@
 
 #include "vtkCompositeReliefMapper.h"
 #include "vtkObjectFactory.h"
-#include "vtkReliefShading.h"
+#include "vtkReliefProperty.h"
 
 vtkStandardNewMacro(vtkReliefSurfaceRepresentation);
 
@@ -13,24 +13,28 @@ vtkReliefSurfaceRepresentation::vtkReliefSurfaceRepresentation()
   // superclass' mappers by relief ones, then wire them up again.
   this->Mapper->Delete();
   this->LODMapper->Delete();
-  this->Mapper = vtkCompositeReliefMapper::New();
-  this->LODMapper = vtkCompositeReliefMapper::New();
+  auto* mapper = vtkCompositeReliefMapper::New();
+  auto* lodMapper = vtkCompositeReliefMapper::New();
+  mapper->SetReliefProperty(this->ReliefProperty);
+  lodMapper->SetReliefProperty(this->ReliefProperty);
+  // Errors of the shared settings reach whoever watches the (full-resolution) mapper.
+  this->ReliefProperty->SetMessageOwner(mapper);
+  this->Mapper = mapper;
+  this->LODMapper = lodMapper;
   this->SetupDefaults();
 }
 
 //------------------------------------------------------------------------------
-vtkReliefShading* vtkReliefSurfaceRepresentation::Shading(int which)
+vtkReliefProperty* vtkReliefSurfaceRepresentation::GetReliefProperty()
 {
-  return static_cast<vtkCompositeReliefMapper*>(which == 0 ? this->Mapper : this->LODMapper)
-    ->GetShading();
+  return this->ReliefProperty;
 }
 
-// Each setter sets both mappers' shadings and marks the representation modified.
-#define MESOLIGHT_FORWARD(Name, Type, ShadingSetter)                                              \
+// Each proxy command sets the shared property and marks the representation modified.
+#define MESOLIGHT_FORWARD(Name, Type, PropertySetter)                                             \
   void vtkReliefSurfaceRepresentation::Set##Name(Type value)                                       \
   {                                                                                                \
-    this->Shading(0)->ShadingSetter(value);                                                        \
-    this->Shading(1)->ShadingSetter(value);                                                        \
+    this->ReliefProperty->PropertySetter(value);                                                   \
     this->Modified();                                                                              \
   }
 
@@ -55,6 +59,6 @@ MESOLIGHT_FORWARD(ShadowedLights, int, SetShadowedLights)
 void vtkReliefSurfaceRepresentation::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Shading:\n";
-  this->Shading(0)->PrintSelf(os, indent.GetNextIndent());
+  os << indent << "ReliefProperty:\n";
+  this->ReliefProperty->PrintSelf(os, indent.GetNextIndent());
 }

@@ -6,7 +6,8 @@
  * The relief texture and the optional light set come with the data, attached as field data by
  * vtkAttachReliefTexture ("Attach Relief Texture" filter), so every MPI rank draws its piece
  * with the whole texture and writes the relief's depth, which IceT composites.
- * Each setting is forwarded to the mapper and the LOD mapper (their vtkReliefShading).
+ * The mapper and the LOD mapper share one vtkReliefProperty (GetReliefProperty()); the setters
+ * below are the ParaView proxy's commands (MesolightRelief.xml), each setting that property.
  */
 
 #ifndef vtkReliefSurfaceRepresentation_h
@@ -14,8 +15,9 @@
 
 #include "MesolightParaViewReliefModule.h" // for export macro
 #include "vtkGeometryRepresentationWithFaces.h"
+#include "vtkNew.h" // for ReliefProperty
 
-class vtkReliefShading;
+class vtkReliefProperty;
 
 class MESOLIGHTPARAVIEWRELIEF_EXPORT vtkReliefSurfaceRepresentation
   : public vtkGeometryRepresentationWithFaces
@@ -44,12 +46,14 @@ public:
   void SetShadowedLights(int count);
   ///@}
 
+  /** The relief settings of both the mapper and the LOD mapper. */
+  vtkReliefProperty* GetReliefProperty();
+
 protected:
   vtkReliefSurfaceRepresentation();
   ~vtkReliefSurfaceRepresentation() override = default;
 
-  /** The shadings of the mapper and the LOD mapper (both get every setting). */
-  vtkReliefShading* Shading(int which);
+  vtkNew<vtkReliefProperty> ReliefProperty;
 
 private:
   vtkReliefSurfaceRepresentation(const vtkReliefSurfaceRepresentation&) = delete;

@@ -1,0 +1,179 @@
+// Unit tests for vtkReliefProperty: the one method-name table, and one property shared by
+// several mappers (no GPU needed).
+
+#include "vtkReliefMapper.h"
+#include "vtkReliefProperty.h"
+
+#include <vtkCommand.h>
+#include <vtkNew.h>
+#include <vtkSmartPointer.h>
+#include <vtkVersionMacros.h>
+
+#if VTK_VERSION_NUMBER < VTK_VERSION_CHECK(9, 3, 0)
+#include "vtkCompositeReliefMapper.h"
+#endif
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+namespace
+{
+// Collects the error texts an object's observers receive.
+class ErrorRecorder : public vtkCommand
+{
+public:
+  static ErrorRecorder* New() { return new ErrorRecorder; }
+  void Execute(vtkObject*, unsigned long, void* callData) override
+  {
+    this->Errors += callData ? static_cast<const char*>(callData) : "";
+  }
+  std::string Errors;
+};
+} // namespace
+
+TEST(ReliefProperty, MethodNamesRoundTrip)
+{
+  for (int m = 0; m < vtkReliefProperty::NumberOfMethods; ++m)
+  {
+    const char* name = vtkReliefProperty::GetMethodName(m);
+    EXPECT_EQ(vtkReliefProperty::GetMethodFromName(name), m) << name;
+    vtkNew<vtkReliefProperty> property;
+    property->SetMethod(m == 0 ? 1 : 0);
+    EXPECT_TRUE(property->SetMethodByName(name)) << name;
+    EXPECT_EQ(property->GetMethod(), m) << name;
+  }
+  EXPECT_STREQ(vtkReliefProperty::GetMethodName(vtkReliefProperty::Relief), "relief");
+  EXPECT_STREQ(vtkReliefProperty::GetMethodName(vtkReliefProperty::ParallaxOcclusion), "pom");
+  EXPECT_STREQ(vtkReliefProperty::GetMethodName(vtkReliefProperty::MaximumMipmap), "max-mipmap");
+}
+
+TEST(ReliefProperty, SteepIsLinearSearch)
+{
+  EXPECT_EQ(vtkReliefProperty::GetMethodFromName("steep"), vtkReliefProperty::LinearSearch);
+  EXPECT_EQ(vtkReliefProperty::GetMethodFromName("linear"), vtkReliefProperty::LinearSearch);
+  vtkNew<vtkReliefProperty> property;
+  EXPECT_TRUE(property->SetMethodByName("steep"));
+  EXPECT_EQ(property->GetMethod(), vtkReliefProperty::LinearSearch);
+  property->SetMethodToRelief();
+  property->SetMethodToSteepParallax();
+  EXPECT_EQ(property->GetMethod(), vtkReliefProperty::LinearSearch);
+}
+
+TEST(ReliefProperty, UnknownNamesAreRefused)
+{
+  EXPECT_EQ(vtkReliefProperty::GetMethodFromName("no-such-method"), -1);
+  EXPECT_EQ(vtkReliefProperty::GetMethodFromName(""), -1);
+  EXPECT_EQ(vtkReliefProperty::GetMethodFromName(nullptr), -1);
+  EXPECT_EQ(vtkReliefProperty::GetMethodFromName("Relief"), -1) << "names are case-sensitive";
+  vtkNew<vtkReliefProperty> property;
+  property->SetMethod(vtkReliefProperty::Interval);
+  EXPECT_FALSE(property->SetMethodByName("no-such-method"));
+  EXPECT_FALSE(property->SetMethodByName(nullptr));
+  EXPECT_EQ(property->GetMethod(), vtkReliefProperty::Interval) << "the method is kept";
+  EXPECT_STREQ(vtkReliefProperty::GetMethodName(-1), "unknown");
+  EXPECT_STREQ(vtkReliefProperty::GetMethodName(vtkReliefProperty::NumberOfMethods), "unknown");
+}
+
+TEST(ReliefProperty, RequiredConeMaps)
+{
+  EXPECT_EQ(vtkReliefProperty::GetRequiredConeMap(vtkReliefProperty::RelaxedConeBinary),
+    vtkReliefProperty::RelaxedConeMap);
+  EXPECT_EQ(vtkReliefProperty::GetRequiredConeMap(vtkReliefProperty::RelaxedConeInterval),
+    vtkReliefProperty::RelaxedConeMap);
+  EXPECT_EQ(vtkReliefProperty::GetRequiredConeMap(vtkReliefProperty::ConservativeCone),
+    vtkReliefProperty::ConservativeConeMap);
+  EXPECT_EQ(vtkReliefProperty::GetRequiredConeMap(vtkReliefProperty::Relief),
+    vtkReliefProperty::NoConeMap);
+  EXPECT_EQ(vtkReliefProperty::GetRequiredConeMap(vtkReliefProperty::MaximumMipmap),
+    vtkReliefProperty::NoConeMap);
+}
+
+TEST(ReliefProperty, DefaultsAndClamping)
+{
+  vtkNew<vtkReliefProperty> property;
+  EXPECT_EQ(property->GetMethod(), vtkReliefProperty::Relief);
+  EXPECT_EQ(property->GetLinearSteps(), 10);
+  EXPECT_EQ(property->GetRefinementSteps(), 8);
+  EXPECT_EQ(property->GetDepthScale(), 0.05);
+  EXPECT_TRUE(property->GetSelfShadowing());
+  EXPECT_EQ(property->GetOutput(), vtkReliefProperty::ShadedOutput);
+  property->SetMethod(1000);
+  EXPECT_EQ(property->GetMethod(), vtkReliefProperty::NumberOfMethods - 1);
+  property->SetLinearSteps(0);
+  EXPECT_EQ(property->GetLinearSteps(), 1);
+  property->SetDepthScale(-1.0);
+  EXPECT_EQ(property->GetDepthScale(), 0.0);
+}
+
+TEST(ReliefProperty, SharedByTwoMappers)
+{
+  vtkNew<vtkReliefMapper> first;
+  vtkNew<vtkReliefMapper> second;
+  second->SetReliefProperty(first->GetReliefProperty());
+  ASSERT_EQ(first->GetReliefProperty(), second->GetReliefProperty());
+
+  const vtkMTimeType firstBefore = first->GetMTime();
+  const vtkMTimeType secondBefore = second->GetMTime();
+  first->GetReliefProperty()->SetLinearSteps(32);
+  EXPECT_GT(first->GetMTime(), firstBefore);
+  EXPECT_GT(second->GetMTime(), secondBefore);
+  EXPECT_EQ(second->GetReliefProperty()->GetLinearSteps(), 32);
+
+  // A property made on its own and given to both, as a representation does.
+  vtkNew<vtkReliefProperty> shared;
+  first->SetReliefProperty(shared);
+  second->SetReliefProperty(shared);
+  const vtkMTimeType firstMiddle = first->GetMTime();
+  const vtkMTimeType secondMiddle = second->GetMTime();
+  shared->SetMethodByName("pom");
+  EXPECT_GT(first->GetMTime(), firstMiddle);
+  EXPECT_GT(second->GetMTime(), secondMiddle);
+  EXPECT_EQ(first->GetReliefProperty()->GetMethod(), vtkReliefProperty::ParallaxOcclusion);
+
+  // An unchanged setting changes no modification time.
+  const vtkMTimeType firstAfter = first->GetMTime();
+  shared->SetMethodByName("pom");
+  EXPECT_EQ(first->GetMTime(), firstAfter);
+
+  // Null gives the mapper a new default property of its own.
+  second->SetReliefProperty(nullptr);
+  ASSERT_NE(second->GetReliefProperty(), nullptr);
+  EXPECT_NE(second->GetReliefProperty(), shared.Get());
+  EXPECT_EQ(second->GetReliefProperty()->GetMethod(), vtkReliefProperty::Relief);
+}
+
+#if VTK_VERSION_NUMBER < VTK_VERSION_CHECK(9, 3, 0)
+TEST(ReliefProperty, SharedByReliefAndCompositeMappers)
+{
+  vtkNew<vtkReliefMapper> plain;
+  vtkNew<vtkCompositeReliefMapper> composite;
+  composite->SetReliefProperty(plain->GetReliefProperty());
+  const vtkMTimeType before = composite->GetMTime();
+  plain->GetReliefProperty()->SetDepthScale(0.2);
+  EXPECT_GT(composite->GetMTime(), before);
+  EXPECT_EQ(composite->GetReliefProperty()->GetDepthScale(), 0.2);
+}
+#endif
+
+TEST(ReliefProperty, ErrorsReachTheObserversOfTheMapperThatMadeIt)
+{
+  vtkNew<vtkReliefMapper> mapper;
+  vtkNew<ErrorRecorder> errors;
+  mapper->AddObserver(vtkCommand::ErrorEvent, errors);
+  mapper->GetReliefProperty()->SetDepthScale(0.2);
+  mapper->GetReliefProperty()->SetDepthScale(std::nan(""));
+  EXPECT_EQ(mapper->GetReliefProperty()->GetDepthScale(), 0.2);
+  EXPECT_NE(errors->Errors.find("NaN"), std::string::npos) << errors->Errors;
+
+  // The owner is not referenced: a property outliving its mapper has none.
+  vtkSmartPointer<vtkReliefProperty> kept = mapper->GetReliefProperty();
+  EXPECT_EQ(kept->GetMessageOwner(), mapper.Get());
+  {
+    vtkNew<vtkReliefMapper> other;
+    kept = other->GetReliefProperty();
+    EXPECT_EQ(kept->GetMessageOwner(), other.Get());
+  }
+  EXPECT_EQ(kept->GetMessageOwner(), nullptr);
+}

@@ -1,0 +1,136 @@
+#include "vtkLightSetTexture.h"
+
+#include "vtkDataArray.h"
+#include "vtkImageData.h"
+#include "vtkMath.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkPointData.h"
+#include "vtkTextureObject.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+vtkStandardNewMacro(vtkLightSetTexture);
+
+//------------------------------------------------------------------------------
+vtkLightSetTexture::vtkLightSetTexture() = default;
+
+//------------------------------------------------------------------------------
+vtkLightSetTexture::~vtkLightSetTexture() = default;
+
+//------------------------------------------------------------------------------
+bool vtkLightSetTexture::Update(vtkOpenGLRenderWindow* renWin, vtkImageData* lights)
+{
+  this->HasLightSet = lights != nullptr;
+  if (!lights)
+  {
+    return true;
+  }
+  vtkDataArray* values = lights->GetPointData()->GetScalars();
+  if (values && values == this->Uploaded && values->GetMTime() <= this->UploadTime &&
+    this->TextureObject && this->TextureObject->GetHandle() != 0 &&
+    this->TextureObject->GetContext() == renWin)
+  {
+    return this->NumberOfLights > 0;
+  }
+  this->Uploaded = values;
+  this->UploadTime = values ? values->GetMTime() : 0;
+  this->NumberOfLights = 0;
+  int dims[3];
+  lights->GetDimensions(dims);
+  if (!values || dims[1] != 2 || dims[0] < 1 || values->GetNumberOfComponents() < 3)
+  {
+    vtkErrorMacro(<< "The light set must be an N x 2 image with 3 or 4 components (row 0 "
+                     "directions, row 1 irradiance), as vtkMedianCutLights makes it.");
+    return false;
+  }
+  // Sorted by luminance, strongest first, so the shader can stop at the first negligible light.
+  struct Light
+  {
+    float Direction[3];
+    float Irradiance[3];
+    float Luminance;
+  };
+  std::vector<Light> sorted(static_cast<size_t>(dims[0]));
+  for (int i = 0; i < dims[0]; ++i)
+  {
+    Light& light = sorted[static_cast<size_t>(i)];
+    double direction[3];
+    for (int c = 0; c < 3; ++c)
+    {
+      direction[c] = values->GetComponent(i, c);
+      light.Irradiance[c] = static_cast<float>(values->GetComponent(dims[0] + i, c));
+      if (!std::isfinite(direction[c]) || !std::isfinite(light.Irradiance[c]) ||
+        light.Irradiance[c] < 0.0f)
+      {
+        vtkErrorMacro(<< "Light " << i << " of the light set has a non-finite direction or a "
+                         "negative or non-finite irradiance.");
+        return false;
+      }
+    }
+    if (vtkMath::Normalize(direction) <= 0.0)
+    {
+      vtkErrorMacro(<< "Light " << i << " of the light set has a zero direction.");
+      return false;
+    }
+    for (int c = 0; c < 3; ++c)
+    {
+      light.Direction[c] = static_cast<float>(direction[c]);
+    }
+    light.Luminance = 0.2125f * light.Irradiance[0] + 0.7154f * light.Irradiance[1] +
+      0.0721f * light.Irradiance[2];
+  }
+  std::sort(sorted.begin(), sorted.end(),
+    [](const Light& a, const Light& b) { return a.Luminance > b.Luminance; });
+  std::vector<float> texels(static_cast<size_t>(dims[0]) * 8);
+  for (int i = 0; i < dims[0]; ++i)
+  {
+    const Light& light = sorted[static_cast<size_t>(i)];
+    float* d = &texels[static_cast<size_t>(i) * 4];
+    float* e = &texels[(static_cast<size_t>(dims[0]) + i) * 4];
+    for (int c = 0; c < 3; ++c)
+    {
+      d[c] = light.Direction[c];
+      e[c] = light.Irradiance[c];
+    }
+    d[3] = light.Luminance;
+    e[3] = light.Luminance;
+  }
+  if (!this->TextureObject)
+  {
+    this->TextureObject = vtkSmartPointer<vtkTextureObject>::New();
+  }
+  this->TextureObject->SetContext(renWin);
+  this->TextureObject->SetMinificationFilter(vtkTextureObject::Nearest);
+  this->TextureObject->SetMagnificationFilter(vtkTextureObject::Nearest);
+  if (!this->TextureObject->Create2DFromRaw(
+        static_cast<unsigned int>(dims[0]), 2, 4, VTK_FLOAT, texels.data()))
+  {
+    vtkErrorMacro(<< "Could not create the light-set texture (" << dims[0] << " lights).");
+    return false;
+  }
+  this->NumberOfLights = dims[0];
+  this->MaximumLuminance = sorted.empty() ? 0.0f : sorted.front().Luminance;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkLightSetTexture::ReleaseGraphicsResources(vtkWindow* win)
+{
+  if (this->TextureObject)
+  {
+    this->TextureObject->ReleaseGraphicsResources(win);
+  }
+  this->Uploaded = nullptr;
+}
+
+//------------------------------------------------------------------------------
+void vtkLightSetTexture::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "HasLightSet: " << (this->HasLightSet ? "yes" : "no") << "\n";
+  os << indent << "NumberOfLights: " << this->NumberOfLights << "\n";
+  os << indent << "MaximumLuminance: " << this->MaximumLuminance << "\n";
+}

@@ -1,0 +1,65 @@
+/**
+ * @class   vtkMinDepthPyramidTexture
+ * @brief   The min-depth (maximum-mipmap) pyramid of a relief texture on the GPU, which the
+ *          MaximumMipmap method traverses.
+ *
+ * Level 0 is the relief texture's depth; each coarser level holds the minimum depth (the highest
+ * surface) of the cells below it (mesolight::ComputeMinDepthPyramid, filters/core/ConeMaps.h).
+ * Level sizes halve rounding down, a complete OpenGL mipmap, so all levels are mip levels of one
+ * single-channel float texture (uploaded by hand: OpenGL would average, not take minima).
+ */
+
+#ifndef vtkMinDepthPyramidTexture_h
+#define vtkMinDepthPyramidTexture_h
+
+#include "MesolightReliefModule.h" // for export macro
+#include "vtkObject.h"
+#include "vtkSmartPointer.h" // for TextureObject
+
+#include <vector> // for LevelSizes
+
+class vtkOpenGLRenderWindow;
+class vtkTextureObject;
+class vtkWindow;
+
+class MESOLIGHTRELIEF_EXPORT vtkMinDepthPyramidTexture : public vtkObject
+{
+public:
+  static vtkMinDepthPyramidTexture* New();
+  vtkTypeMacro(vtkMinDepthPyramidTexture, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /**
+   * Builds and uploads the pyramid of a width x height depth image (row by row, depth in
+   * [0, 1]). False (with an error) if the texture cannot be made.
+   */
+  bool Upload(vtkOpenGLRenderWindow* renWin, const std::vector<float>& depth, int width, int height);
+
+  /** Marks the pyramid as not built (its relief texture changed). */
+  void Reset() { this->NumberOfLevels = 0; }
+
+  /** Number of levels uploaded; 0 until Upload succeeds. */
+  vtkGetMacro(NumberOfLevels, int);
+
+  /** Cells per level, (width, height) pairs from level 0 on. */
+  const std::vector<int>& GetLevelSizes() const { return this->LevelSizes; }
+
+  /** The texture; null before the first Upload. */
+  vtkTextureObject* GetTextureObject() { return this->TextureObject; }
+
+  void ReleaseGraphicsResources(vtkWindow* win);
+
+protected:
+  vtkMinDepthPyramidTexture();
+  ~vtkMinDepthPyramidTexture() override;
+
+  vtkSmartPointer<vtkTextureObject> TextureObject;
+  int NumberOfLevels = 0;
+  std::vector<int> LevelSizes;
+
+private:
+  vtkMinDepthPyramidTexture(const vtkMinDepthPyramidTexture&) = delete;
+  void operator=(const vtkMinDepthPyramidTexture&) = delete;
+};
+
+#endif

@@ -1,0 +1,227 @@
+#include "vtkReliefGeometryCache.h"
+
+#include "vtkCellArray.h"
+#include "vtkDataArray.h"
+#include "vtkFloatArray.h"
+#include "vtkMath.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataNormals.h"
+#include "vtkPolyDataTangents.h"
+#include "vtkTriangleFilter.h"
+
+#include <algorithm>
+#include <cmath>
+
+vtkStandardNewMacro(vtkReliefGeometryCache);
+
+namespace
+{
+const char* const ReliefTCoordsName = "vtkReliefMapperTCoords";
+
+bool AllTriangles(vtkPolyData* poly)
+{
+  if (poly->GetNumberOfStrips() > 0)
+  {
+    return false;
+  }
+  vtkCellArray* polys = poly->GetPolys();
+  return polys->IsHomogeneous() == 3;
+}
+
+bool UsableDirection(const double v[3])
+{
+  return std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]) &&
+    (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) > 1e-20;
+}
+
+// Degenerate triangles (zero area, or coinciding texture coordinates) give zero or NaN normals
+// and tangents. Replace them by a usable frame so the shader never receives NaN.
+void SanitizeFrame(vtkPolyData* mesh)
+{
+  vtkPointData* pd = mesh->GetPointData();
+  vtkDataArray* normals = pd->GetNormals();
+  auto* tangents = vtkFloatArray::SafeDownCast(pd->GetTangents());
+  const vtkIdType n = mesh->GetNumberOfPoints();
+  vtkSmartPointer<vtkDataArray> ownNormals;
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    double nrm[3];
+    normals->GetTuple(i, nrm);
+    if (!UsableDirection(nrm))
+    {
+      if (!ownNormals) // the normals may be the user's: change a copy
+      {
+        ownNormals = vtkSmartPointer<vtkDataArray>::Take(normals->NewInstance());
+        ownNormals->DeepCopy(normals);
+        pd->SetNormals(ownNormals);
+        normals = ownNormals;
+      }
+      normals->SetTuple3(i, 0.0, 0.0, 1.0);
+      nrm[0] = nrm[1] = 0.0;
+      nrm[2] = 1.0;
+    }
+    float* t = tangents->GetPointer(3 * i);
+    const double tangent[3] = { t[0], t[1], t[2] };
+    if (UsableDirection(tangent))
+    {
+      continue;
+    }
+    double perp[3];
+    vtkMath::Perpendiculars(nrm, perp, nullptr, 0.0);
+    if (!UsableDirection(perp))
+    {
+      perp[0] = 1.0;
+      perp[1] = perp[2] = 0.0;
+    }
+    t[0] = static_cast<float>(perp[0]);
+    t[1] = static_cast<float>(perp[1]);
+    t[2] = static_cast<float>(perp[2]);
+  }
+}
+} // namespace
+
+//------------------------------------------------------------------------------
+vtkReliefGeometryCache::vtkReliefGeometryCache() = default;
+
+//------------------------------------------------------------------------------
+vtkReliefGeometryCache::~vtkReliefGeometryCache() = default;
+
+//------------------------------------------------------------------------------
+const char* vtkReliefGeometryCache::GetReliefTCoordsName()
+{
+  return ReliefTCoordsName;
+}
+
+//------------------------------------------------------------------------------
+vtkPolyData* vtkReliefGeometryCache::Prepare(vtkPolyData* input)
+{
+  if (!input)
+  {
+    return nullptr;
+  }
+  PreparedGeometry& cached = this->Prepared[input];
+  if (cached.Prepared && input->GetMTime() <= cached.SourceTime)
+  {
+    return cached.Prepared;
+  }
+  cached.Prepared = nullptr;
+  cached.SourceTime = input->GetMTime();
+
+  vtkDataArray* tcoords = input->GetPointData()->GetTCoords();
+  if (!tcoords || tcoords->GetNumberOfComponents() < 2)
+  {
+    vtkErrorMacro(<< "The input has no point texture coordinates (2 components). A relief surface "
+                     "is addressed by texture coordinates: give the mesh tcoords, e.g. with "
+                     "vtkTextureMapToPlane or from the mesh file.");
+    return nullptr;
+  }
+  if (input->GetNumberOfPolys() + input->GetNumberOfStrips() == 0)
+  {
+    vtkErrorMacro(<< "The input has no polygons; vtkReliefMapper draws surfaces only.");
+    return nullptr;
+  }
+  for (vtkIdType i = 0; i < tcoords->GetNumberOfTuples(); ++i)
+  {
+    if (!std::isfinite(tcoords->GetComponent(i, 0)) || !std::isfinite(tcoords->GetComponent(i, 1)))
+    {
+      vtkErrorMacro(<< "Texture coordinate " << i << " is not finite (NaN or Inf).");
+      return nullptr;
+    }
+  }
+
+  vtkSmartPointer<vtkPolyData> mesh = input;
+  if (!AllTriangles(mesh))
+  {
+    vtkNew<vtkTriangleFilter> triangles;
+    triangles->SetInputData(mesh);
+    triangles->PassVertsOff();
+    triangles->PassLinesOff();
+    triangles->Update();
+    mesh = triangles->GetOutput();
+  }
+  if (!mesh->GetPointData()->GetNormals())
+  {
+    vtkNew<vtkPolyDataNormals> normals;
+    normals->SetInputData(mesh);
+    normals->SplittingOff();
+    normals->ConsistencyOff();
+    normals->AutoOrientNormalsOff();
+    normals->ComputePointNormalsOn();
+    normals->ComputeCellNormalsOff();
+    normals->Update();
+    mesh = normals->GetOutput();
+  }
+  vtkFloatArray* tangents = vtkFloatArray::SafeDownCast(mesh->GetPointData()->GetTangents());
+  if (!tangents || tangents->GetNumberOfComponents() != 3)
+  {
+    vtkNew<vtkPolyDataTangents> tangentFilter;
+    tangentFilter->SetInputData(mesh);
+    tangentFilter->ComputePointTangentsOn();
+    tangentFilter->ComputeCellTangentsOff();
+    tangentFilter->Update();
+    mesh = tangentFilter->GetOutput();
+    vtkDataArray* computed = mesh->GetPointData()->GetTangents();
+    if (!computed)
+    {
+      vtkErrorMacro(<< "Could not compute tangents for the input.");
+      return nullptr;
+    }
+    // The OpenGL mapper uploads tangents only as floats.
+    vtkNew<vtkFloatArray> asFloat;
+    asFloat->DeepCopy(computed);
+    asFloat->SetName("Tangents");
+    vtkNew<vtkPolyData> copy;
+    copy->ShallowCopy(mesh);
+    copy->GetPointData()->SetTangents(asFloat);
+    mesh = copy;
+  }
+  else
+  {
+    vtkNew<vtkPolyData> copy;
+    copy->ShallowCopy(mesh);
+    vtkNew<vtkFloatArray> own;
+    own->DeepCopy(tangents);
+    copy->GetPointData()->SetTangents(own);
+    mesh = copy;
+  }
+  SanitizeFrame(mesh);
+  vtkNew<vtkFloatArray> reliefTCoords;
+  reliefTCoords->SetName(ReliefTCoordsName);
+  reliefTCoords->SetNumberOfComponents(2);
+  vtkDataArray* meshTCoords = mesh->GetPointData()->GetTCoords();
+  reliefTCoords->SetNumberOfTuples(meshTCoords->GetNumberOfTuples());
+  for (vtkIdType i = 0; i < meshTCoords->GetNumberOfTuples(); ++i)
+  {
+    reliefTCoords->SetTypedComponent(i, 0, static_cast<float>(meshTCoords->GetComponent(i, 0)));
+    reliefTCoords->SetTypedComponent(i, 1, static_cast<float>(meshTCoords->GetComponent(i, 1)));
+  }
+  mesh->GetPointData()->AddArray(reliefTCoords);
+  cached.Prepared = mesh;
+  return mesh;
+}
+
+//------------------------------------------------------------------------------
+void vtkReliefGeometryCache::KeepOnly(const std::vector<vtkPolyData*>& inputs)
+{
+  for (auto it = this->Prepared.begin(); it != this->Prepared.end();)
+  {
+    if (std::find(inputs.begin(), inputs.end(), it->first) == inputs.end())
+    {
+      it = this->Prepared.erase(it);
+    }
+    else
+    {
+      ++it;
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkReliefGeometryCache::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "PreparedInputs: " << this->Prepared.size() << "\n";
+}

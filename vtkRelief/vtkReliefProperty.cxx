@@ -1,0 +1,140 @@
+#include "vtkReliefProperty.h"
+
+#include "vtkMath.h"
+#include "vtkObjectFactory.h"
+#include "vtkReliefMessageForwarder.h"
+
+#include <cmath>
+#include <cstring>
+
+vtkStandardNewMacro(vtkReliefProperty);
+
+namespace
+{
+const char* const MethodNames[] = { "texture", "bump", "parallax", "parallax-limit",
+  "parallax-slope", "iterative-parallax", "binary", "secant", "linear", "pom", "relief", "interval",
+  "relaxed-cone", "relaxed-cone-interval", "cone", "max-mipmap" };
+static_assert(sizeof(MethodNames) / sizeof(MethodNames[0]) == vtkReliefProperty::NumberOfMethods,
+  "one name per method");
+} // namespace
+
+//------------------------------------------------------------------------------
+vtkReliefProperty::vtkReliefProperty() = default;
+
+//------------------------------------------------------------------------------
+vtkReliefProperty::~vtkReliefProperty() = default;
+
+//------------------------------------------------------------------------------
+const char* vtkReliefProperty::GetMethodName(int method)
+{
+  if (method < 0 || method >= NumberOfMethods)
+  {
+    return "unknown";
+  }
+  return MethodNames[method];
+}
+
+//------------------------------------------------------------------------------
+int vtkReliefProperty::GetMethodFromName(const char* name)
+{
+  if (!name)
+  {
+    return -1;
+  }
+  if (std::strcmp(name, "steep") == 0)
+  {
+    return LinearSearch;
+  }
+  for (int m = 0; m < NumberOfMethods; ++m)
+  {
+    if (std::strcmp(name, MethodNames[m]) == 0)
+    {
+      return m;
+    }
+  }
+  return -1;
+}
+
+//------------------------------------------------------------------------------
+bool vtkReliefProperty::SetMethodByName(const char* name)
+{
+  const int method = GetMethodFromName(name);
+  if (method < 0)
+  {
+    return false;
+  }
+  this->SetMethod(method);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+int vtkReliefProperty::GetRequiredConeMap(int method)
+{
+  switch (method)
+  {
+    case RelaxedConeBinary:
+    case RelaxedConeInterval:
+      return RelaxedConeMap;
+    case ConservativeCone:
+      return ConservativeConeMap;
+    default:
+      return NoConeMap;
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkReliefProperty::SetDepthScale(double depthScale)
+{
+  if (std::isnan(depthScale))
+  {
+    vtkErrorMacro(<< "SetDepthScale: NaN is not a depth scale; keeping " << this->DepthScale << ".");
+    return;
+  }
+  depthScale = vtkMath::ClampValue(depthScale, 0.0, 10.0);
+  if (depthScale != this->DepthScale)
+  {
+    this->DepthScale = depthScale;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkReliefProperty::SetMessageOwner(vtkObject* owner)
+{
+  if (!this->Messages)
+  {
+    this->Messages = vtkSmartPointer<vtkReliefMessageForwarder>::New();
+    this->Messages->Watch(this);
+  }
+  this->Messages->SetOwner(owner);
+}
+
+//------------------------------------------------------------------------------
+vtkObject* vtkReliefProperty::GetMessageOwner()
+{
+  return this->Messages ? this->Messages->GetOwner() : nullptr;
+}
+
+//------------------------------------------------------------------------------
+void vtkReliefProperty::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Method: " << GetMethodName(this->Method) << "\n";
+  os << indent << "LinearSteps: " << this->LinearSteps << "\n";
+  os << indent << "RefinementSteps: " << this->RefinementSteps << "\n";
+  os << indent << "DepthScale: " << this->DepthScale << "\n";
+  os << indent << "SelfShadowing: " << (this->SelfShadowing ? "On" : "Off") << "\n";
+  os << indent << "Silhouettes: " << (this->Silhouettes ? "On" : "Off") << "\n";
+  os << indent << "WriteDepth: " << (this->WriteDepth ? "On" : "Off") << "\n";
+  os << indent << "RepeatTexture: " << (this->RepeatTexture ? "On" : "Off") << "\n";
+  os << indent << "Output: " << this->Output << "\n";
+  os << indent << "AdaptiveSteps: " << (this->AdaptiveSteps ? "On" : "Off") << "\n";
+  os << indent << "MinimumSteps: " << this->MinimumSteps << "\n";
+  os << indent << "LevelOfDetail: " << (this->LevelOfDetail ? "On" : "Off") << "\n";
+  os << indent << "Exposure: " << this->Exposure << "\n";
+  os << indent << "ToneMapping: " << (this->ToneMapping ? "On" : "Off") << "\n";
+  os << indent << "LightSetThreshold: " << this->LightSetThreshold << "\n";
+  os << indent << "ShadowedLights: " << this->ShadowedLights << "\n";
+  os << indent << "ShadowCulling: " << (this->ShadowCulling ? "On" : "Off") << "\n";
+  os << indent << "MessageOwner: " << this->GetMessageOwner() << "\n";
+}

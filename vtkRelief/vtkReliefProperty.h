@@ -1,0 +1,273 @@
+/**
+ * @class   vtkReliefProperty
+ * @brief   The settings of a relief surface: the height-field intersection method, its step
+ *          counts, the depth scale, shadows, silhouettes, depth write, measurement outputs and
+ *          light-set shading.
+ *
+ * Like vtkProperty for an actor or vtkVolumeProperty for a volume: vtkReliefMapper and
+ * vtkCompositeReliefMapper each hold one (GetReliefProperty()), several mappers can share one
+ * (SetReliefProperty()), and a mapper's modification time includes its property's.
+ *
+ * Methods (the relief thesis §4 and later work), all sharing one march skeleton:
+ *  - Non-iterative: TextureMapping (no displacement), Bump (normals only), Parallax,
+ *    ParallaxOffsetLimiting, ParallaxSlope.
+ *  - Unsafe iterative: IterativeParallax, BinarySearch, Secant.
+ *  - Safe iterative: LinearSearch (steep parallax, McGuire & McGuire 2005), ParallaxOcclusion
+ *    (linear + one secant step, Tatarchuk 2006), Relief (linear + binary, Policarpo et al. 2005),
+ *    Interval (linear + interval steps).
+ *  - Empty-space skipping: RelaxedConeBinary and RelaxedConeInterval need a relaxed cone map,
+ *    ConservativeCone a conservative one (vtkConeMapFilter output as the relief texture);
+ *    MaximumMipmap traces exactly through a min-depth pyramid the mapper builds itself.
+ *
+ * Units: DepthScale is dimensionless: the world depth of depth = 1 divided by the world length
+ * of one unit of u (the texture's width on the mesh). The same convention is used when baking
+ * the normals; if the relief texture carries a different "MesolightDepthScale" field value, the
+ * mapper rescales its normals so shading stays consistent with the marched geometry.
+ *
+ * The method names used on command lines ("relief", "pom", ...) are defined here once
+ * (GetMethodName, GetMethodFromName).
+ */
+
+#ifndef vtkReliefProperty_h
+#define vtkReliefProperty_h
+
+#include "MesolightReliefModule.h" // for export macro
+#include "vtkObject.h"
+#include "vtkSmartPointer.h" // for Messages
+
+class vtkReliefMessageForwarder;
+
+class MESOLIGHTRELIEF_EXPORT vtkReliefProperty : public vtkObject
+{
+public:
+  static vtkReliefProperty* New();
+  vtkTypeMacro(vtkReliefProperty, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /** Height-field intersection methods (see the class description). */
+  enum MethodType
+  {
+    TextureMapping = 0,
+    Bump,
+    Parallax,
+    ParallaxOffsetLimiting,
+    ParallaxSlope,
+    IterativeParallax,
+    BinarySearch,
+    Secant,
+    LinearSearch,
+    ParallaxOcclusion,
+    Relief,
+    Interval,
+    RelaxedConeBinary,
+    RelaxedConeInterval,
+    ConservativeCone,
+    MaximumMipmap,
+    NumberOfMethods
+  };
+
+  /** The cone map a relief texture carries (vtkConeMapFilter), or a method needs. */
+  enum ConeMapKind
+  {
+    NoConeMap = 0,
+    RelaxedConeMap = 1,
+    ConservativeConeMap = 2
+  };
+
+  /** What the fragments show. */
+  enum OutputType
+  {
+    ShadedOutput = 0, ///< the lit surface (default)
+    HitUOutput = 1,   ///< hit u as 24-bit fixed point in RGB
+    HitVOutput = 2,   ///< hit v, likewise
+    /// white where the first light reaches the hit point, else black
+    LightVisibilityOutput = 3,
+    /// red where a NaN or Inf arose on the way to the colour, else green
+    NonFiniteCheckOutput = 4,
+    /// relief-texture samples the fragment took, as a 16-bit count in R (high) and G (low)
+    /// bytes: the march's cost, independent of the machine (mesolight::DecodeSampleCount)
+    SampleCountOutput = 5,
+    NumberOfOutputs
+  };
+
+  ///@{
+  /** Height-field intersection method. Default: Relief. */
+  vtkSetClampMacro(Method, int, TextureMapping, NumberOfMethods - 1);
+  vtkGetMacro(Method, int);
+  void SetMethodToTextureMapping() { this->SetMethod(TextureMapping); }
+  void SetMethodToSteepParallax() { this->SetMethod(LinearSearch); }
+  void SetMethodToParallaxOcclusion() { this->SetMethod(ParallaxOcclusion); }
+  void SetMethodToRelief() { this->SetMethod(Relief); }
+  ///@}
+
+  ///@{
+  /**
+   * Short method names used on the command line: "texture", "bump", "parallax",
+   * "parallax-limit", "parallax-slope", "iterative-parallax", "binary", "secant", "linear" (also
+   * "steep"), "pom", "relief", "interval", "relaxed-cone", "relaxed-cone-interval", "cone",
+   * "max-mipmap". GetMethodName returns "unknown" outside the methods; GetMethodFromName -1 for
+   * an unknown (or null) name; SetMethodByName false, leaving the method unchanged.
+   */
+  static const char* GetMethodName(int method);
+  static int GetMethodFromName(const char* name);
+  bool SetMethodByName(const char* name);
+  ///@}
+
+  /** The cone map a method needs in the relief texture (ConeMapKind). */
+  static int GetRequiredConeMap(int method);
+
+  ///@{
+  /**
+   * Number of linear-search steps from the surface to depth 1 (default 10) and of refinement
+   * steps (binary search; default 8). Clamped to [1, 1024] and [0, 64]. For iterative parallax
+   * LinearSteps counts iterations, for cone stepping cone steps, and for MaximumMipmap it is
+   * the iteration budget of the traversal (give it 64 or more).
+   */
+  vtkSetClampMacro(LinearSteps, int, 1, 1024);
+  vtkGetMacro(LinearSteps, int);
+  vtkSetClampMacro(RefinementSteps, int, 0, 64);
+  vtkGetMacro(RefinementSteps, int);
+  ///@}
+
+  ///@{
+  /**
+   * View-angle adaptive step counts (Tatarchuk 2006): LinearSteps at grazing angles down to
+   * MinimumSteps (clamped to [1, 1024], default 4) head-on. Default off.
+   */
+  vtkSetMacro(AdaptiveSteps, bool);
+  vtkGetMacro(AdaptiveSteps, bool);
+  vtkBooleanMacro(AdaptiveSteps, bool);
+  vtkSetClampMacro(MinimumSteps, int, 1, 1024);
+  vtkGetMacro(MinimumSteps, int);
+  ///@}
+
+  ///@{
+  /**
+   * Sample the height field at the pixel footprint's mipmap level (the relief texture gets
+   * mipmaps), so distant relief is filtered rather than aliased. Cone ratios are always read at
+   * the base level. Default off.
+   */
+  vtkSetMacro(LevelOfDetail, bool);
+  vtkGetMacro(LevelOfDetail, bool);
+  vtkBooleanMacro(LevelOfDetail, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Depth of depth = 1 relative to the world width of the texture (dimensionless, default 0.05).
+   * 0 renders a flat (normal-mapped) surface. Clamped to [0, 10]; NaN is refused with an error.
+   */
+  void SetDepthScale(double depthScale);
+  vtkGetMacro(DepthScale, double);
+  ///@}
+
+  ///@{
+  /** Hard self-shadowing toward each light by marching the height field. Default on. */
+  vtkSetMacro(SelfShadowing, bool);
+  vtkGetMacro(SelfShadowing, bool);
+  vtkBooleanMacro(SelfShadowing, bool);
+  ///@}
+
+  ///@{
+  /** Discard fragments whose hit point leaves the [0,1]^2 texture domain. Default on. */
+  vtkSetMacro(Silhouettes, bool);
+  vtkGetMacro(Silhouettes, bool);
+  vtkBooleanMacro(Silhouettes, bool);
+  ///@}
+
+  ///@{
+  /** Write gl_FragDepth from the hit point instead of the mesh surface. Default on. */
+  vtkSetMacro(WriteDepth, bool);
+  vtkGetMacro(WriteDepth, bool);
+  vtkBooleanMacro(WriteDepth, bool);
+  ///@}
+
+  ///@{
+  /** Repeat the relief texture outside [0,1] (tiling) instead of clamping. Default off. */
+  vtkSetMacro(RepeatTexture, bool);
+  vtkGetMacro(RepeatTexture, bool);
+  vtkBooleanMacro(RepeatTexture, bool);
+  ///@}
+
+  ///@{
+  /**
+   * What the fragments show (OutputType): the shaded surface, or measurement outputs that tests
+   * and benchmarks compare with exact CPU references (see mesolight::DecodeHitCoordinate).
+   */
+  vtkSetClampMacro(Output, int, ShadedOutput, NumberOfOutputs - 1);
+  vtkGetMacro(Output, int);
+  ///@}
+
+  ///@{
+  /** Scale of the light-set shading (default 1) and Reinhard tone mapping (default off). */
+  vtkSetClampMacro(Exposure, double, 0.0, 1e6);
+  vtkGetMacro(Exposure, double);
+  vtkSetMacro(ToneMapping, bool);
+  vtkGetMacro(ToneMapping, bool);
+  vtkBooleanMacro(ToneMapping, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Skips for light sets, each measurable (mesolight bench ibl): lights whose luminance is below
+   * LightSetThreshold times the strongest light's are skipped entirely (default 0: none);
+   * with ShadowedLights = K > 0 only the K strongest lights facing a pixel march their shadows,
+   * the rest are weighted by the visible fraction of those K (default 0: all march).
+   */
+  vtkSetClampMacro(LightSetThreshold, double, 0.0, 1.0);
+  vtkGetMacro(LightSetThreshold, double);
+  vtkSetClampMacro(ShadowedLights, int, 0, 1 << 16);
+  vtkGetMacro(ShadowedLights, int);
+  ///@}
+
+  ///@{
+  /**
+   * Lights behind the shading normal contribute nothing and skip their shadow march (default
+   * on). Off marches them anyway, only to measure what the culling saves.
+   */
+  vtkSetMacro(ShadowCulling, bool);
+  vtkGetMacro(ShadowCulling, bool);
+  vtkBooleanMacro(ShadowCulling, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Errors and warnings of this property also reach the observers of this owner: a mapper
+   * sets itself as the owner of the property it makes, so users watching the mapper hear
+   * about refused settings. Not referenced (a weak pointer); without an owner, or without
+   * observers on it, messages are displayed as usual.
+   */
+  void SetMessageOwner(vtkObject* owner);
+  vtkObject* GetMessageOwner();
+  ///@}
+
+protected:
+  vtkReliefProperty();
+  ~vtkReliefProperty() override;
+
+  int Method = Relief;
+  int LinearSteps = 10;
+  int RefinementSteps = 8;
+  double DepthScale = 0.05;
+  bool SelfShadowing = true;
+  bool Silhouettes = true;
+  bool WriteDepth = true;
+  bool RepeatTexture = false;
+  int Output = ShadedOutput;
+  bool AdaptiveSteps = false;
+  int MinimumSteps = 4;
+  bool LevelOfDetail = false;
+  double Exposure = 1.0;
+  bool ToneMapping = false;
+  double LightSetThreshold = 0.0;
+  int ShadowedLights = 0;
+  bool ShadowCulling = true;
+
+  vtkSmartPointer<vtkReliefMessageForwarder> Messages; // made by SetMessageOwner
+
+private:
+  vtkReliefProperty(const vtkReliefProperty&) = delete;
+  void operator=(const vtkReliefProperty&) = delete;
+};
+
+#endif

@@ -1,0 +1,215 @@
+#include "vtkReliefShaderSource.h"
+
+#include "vtkObjectFactory.h"
+#include "vtkReliefProperty.h"
+#include "vtkShaderProgram.h"
+
+// GLSL sources embedded at build time (vtk_encode_string).
+#include "vtkReliefHeightFieldFS.h"
+#include "vtkReliefImplFS.h"
+#include "vtkReliefLightSetFS.h"
+#include "vtkReliefLightingFS.h"
+#include "vtkReliefMarchFS.h"
+#include "vtkReliefMaxMipmapFS.h"
+
+#include <cstdlib>
+#include <iostream>
+#include <string>
+
+vtkStandardNewMacro(vtkReliefShaderSource);
+
+namespace
+{
+// Compile-time refinement of the march per method (see vtkReliefMarchFS.glsl, ML_REFINE).
+int RefinementKind(int method)
+{
+  switch (method)
+  {
+    case vtkReliefProperty::Relief:
+      return 2; // binary search
+    case vtkReliefProperty::ParallaxOcclusion:
+      return 1; // one secant step
+    default:
+      return 0;
+  }
+}
+
+// GLSL names of the methods, so the shader reads "#if ML_METHOD == ML_RELIEF".
+std::string MethodDefines()
+{
+  const char* const glslNames[] = { "ML_TEXTURE_MAPPING", "ML_BUMP", "ML_PARALLAX",
+    "ML_PARALLAX_OFFSET_LIMITING", "ML_PARALLAX_SLOPE", "ML_ITERATIVE_PARALLAX",
+    "ML_BINARY_SEARCH", "ML_SECANT", "ML_LINEAR_SEARCH", "ML_PARALLAX_OCCLUSION", "ML_RELIEF",
+    "ML_INTERVAL", "ML_RELAXED_CONE_BINARY", "ML_RELAXED_CONE_INTERVAL", "ML_CONSERVATIVE_CONE",
+    "ML_MAXIMUM_MIPMAP" };
+  static_assert(sizeof(glslNames) / sizeof(glslNames[0]) == vtkReliefProperty::NumberOfMethods,
+    "one GLSL name per method");
+  std::string defines;
+  for (int m = 0; m < vtkReliefProperty::NumberOfMethods; ++m)
+  {
+    defines += std::string("#define ") + glslNames[m] + " " + std::to_string(m) + "\n";
+  }
+  return defines;
+}
+} // namespace
+
+//------------------------------------------------------------------------------
+vtkReliefShaderSource::vtkReliefShaderSource()
+{
+  this->Property = vtkSmartPointer<vtkReliefProperty>::New();
+}
+
+//------------------------------------------------------------------------------
+vtkReliefShaderSource::~vtkReliefShaderSource() = default;
+
+//------------------------------------------------------------------------------
+void vtkReliefShaderSource::Configure(
+  vtkReliefProperty* property, bool albedoTexture, bool conePacked, bool lightSet)
+{
+  this->Property = property;
+  this->HasAlbedoTexture = albedoTexture;
+  this->ConePacked = conePacked;
+  this->HasLightSet = lightSet;
+}
+
+//------------------------------------------------------------------------------
+std::string vtkReliefShaderSource::Key() const
+{
+  vtkReliefProperty* p = this->Property;
+  return std::to_string(p->GetMethod()) + (p->GetSelfShadowing() ? "S" : "s") +
+    (p->GetSilhouettes() ? "E" : "e") + (p->GetWriteDepth() ? "D" : "d") +
+    (this->HasAlbedoTexture ? "A" : "a") + std::to_string(p->GetOutput()) +
+    (this->ConePacked ? "C" : "c") + (p->GetAdaptiveSteps() ? "V" : "v") +
+    (p->GetLevelOfDetail() ? "L" : "l") + (this->HasLightSet ? "I" : "i") +
+    (p->GetToneMapping() ? "T" : "t") + (p->GetShadowCulling() ? "K" : "k");
+}
+
+//------------------------------------------------------------------------------
+bool vtkReliefShaderSource::KeyChanged(const void* cellBO) const
+{
+  auto it = this->Keys.find(cellBO);
+  return it == this->Keys.end() || it->second != this->Key();
+}
+
+//------------------------------------------------------------------------------
+void vtkReliefShaderSource::ReplaceValuesBefore(std::string& vs, std::string& fs, bool noVTKLights)
+{
+  // Reserve our places before VTK fills its tags. VTK's lighting and its texture modulation at
+  // the undisplaced coordinate are replaced by the relief implementation.
+  vtkShaderProgram::Substitute(vs, "//VTK::Normal::Dec",
+    "in vec3 tangentMC;\nuniform mat3 mlTangentMatrix;\nout vec3 mlTangentVC;\n"
+    "in vec2 mlTCoordMC;\nout vec2 mlTCoordVC;\n//VTK::Normal::Dec");
+  vtkShaderProgram::Substitute(vs, "//VTK::Normal::Impl",
+    "mlTangentVC = mlTangentMatrix * tangentMC;\n  mlTCoordVC = mlTCoordMC;\n  //VTK::Normal::Impl");
+  vtkShaderProgram::Substitute(
+    fs, "//VTK::CustomUniforms::Dec", "//VTK::CustomUniforms::Dec\n//MESOLIGHT::Dec");
+  vtkShaderProgram::Substitute(
+    fs, "//VTK::UniformFlow::Impl", "//MESOLIGHT::UniformFlow::Impl\n  //VTK::UniformFlow::Impl");
+  vtkShaderProgram::Substitute(fs, "//VTK::Light::Impl", "//MESOLIGHT::Relief::Impl");
+  if (noVTKLights)
+  {
+    // Without VTK lights (e.g. lit only by a light set) VTK declares no normal and no view-space
+    // position; the relief needs both. VTK fills these uniforms whenever a shader uses them.
+    vtkShaderProgram::Substitute(vs, "//VTK::Normal::Dec",
+      "in vec3 normalMC;\nuniform mat3 normalMatrix;\nout vec3 normalVCVSOutput;\n"
+      "uniform mat4 MCVCMatrix;\nout vec4 vertexVCVSOutput;\n//VTK::Normal::Dec");
+    vtkShaderProgram::Substitute(vs, "//VTK::Normal::Impl",
+      "normalVCVSOutput = normalMatrix * normalMC;\n"
+      "  vertexVCVSOutput = MCVCMatrix * vertexMC;\n  //VTK::Normal::Impl");
+    vtkShaderProgram::Substitute(fs, "//VTK::Normal::Dec",
+      "in vec3 normalVCVSOutput;\nin vec4 vertexVCVSOutput;\n//VTK::Normal::Dec");
+    vtkShaderProgram::Substitute(fs, "//MESOLIGHT::UniformFlow::Impl",
+      "vec4 vertexVC = vertexVCVSOutput;\n  //MESOLIGHT::UniformFlow::Impl");
+    vtkShaderProgram::Substitute(fs, "//MESOLIGHT::Relief::Impl",
+      "vec3 normalVCVSOutput = normalize(normalVCVSOutput);\n"
+      "  if (gl_FrontFacing == false) { normalVCVSOutput = -normalVCVSOutput; }\n"
+      "  //MESOLIGHT::Relief::Impl");
+  }
+  vtkShaderProgram::Substitute(fs, "//VTK::TCoord::Impl", "");
+}
+
+//------------------------------------------------------------------------------
+void vtkReliefShaderSource::ReplaceValuesAfter(std::string& fs, const void* cellBO)
+{
+  vtkReliefProperty* p = this->Property;
+  std::string defines = MethodDefines() + "#define ML_METHOD " + std::to_string(p->GetMethod()) +
+    "\n#define ML_REFINE " + std::to_string(RefinementKind(p->GetMethod())) + "\n" +
+    "#define ML_OUTPUT " + std::to_string(p->GetOutput()) + "\n";
+  if (p->GetSelfShadowing())
+  {
+    defines += "#define ML_SELF_SHADOWING\n";
+  }
+  if (p->GetSilhouettes())
+  {
+    defines += "#define ML_SILHOUETTES\n";
+  }
+  if (p->GetWriteDepth())
+  {
+    defines += "#define ML_WRITE_DEPTH\n";
+  }
+  if (this->HasAlbedoTexture)
+  {
+    defines += "#define ML_ALBEDO_SAMPLER actortexture\n";
+  }
+  if (this->ConePacked)
+  {
+    defines += "#define ML_CONE_PACKED\n";
+  }
+  if (p->GetAdaptiveSteps())
+  {
+    defines += "#define ML_ADAPTIVE_STEPS\n";
+  }
+  if (p->GetLevelOfDetail())
+  {
+    defines += "#define ML_LEVEL_OF_DETAIL\n";
+  }
+  if (this->HasLightSet)
+  {
+    defines += "#define ML_LIGHT_SET\n";
+  }
+  if (p->GetToneMapping())
+  {
+    defines += "#define ML_TONE_MAPPING\n";
+  }
+  if (!p->GetShadowCulling())
+  {
+    defines += "#define ML_NO_SHADOW_CULLING\n";
+  }
+  const std::string declarations = defines +
+    "in vec3 mlTangentVC;\n"
+    "in vec2 mlTCoordVC;\n"
+    "uniform int mlCameraParallel;\n"
+    "uniform mat4 mlViewToClip;\n" +
+    vtkReliefHeightFieldFS +
+    (p->GetMethod() == vtkReliefProperty::MaximumMipmap ? vtkReliefMaxMipmapFS : "") +
+    vtkReliefMarchFS + vtkReliefLightingFS + (this->HasLightSet ? vtkReliefLightSetFS : "");
+  vtkShaderProgram::Substitute(fs, "//MESOLIGHT::Dec", declarations);
+  vtkShaderProgram::Substitute(fs, "//MESOLIGHT::UniformFlow::Impl",
+    "vec3 mlDPdx = dFdx(vertexVC.xyz);\n"
+    "  vec3 mlDPdy = dFdy(vertexVC.xyz);\n"
+    "  vec2 mlDUVdx = dFdx(mlTCoordVC);\n"
+    "  vec2 mlDUVdy = dFdy(mlTCoordVC);" +
+      std::string(p->GetLevelOfDetail()
+          ? "\n  mlMarchLod = max(0.0, log2(max(length(mlDUVdx * mlTextureSize), "
+            "length(mlDUVdy * mlTextureSize))));"
+          : ""));
+  vtkShaderProgram::Substitute(fs, "//MESOLIGHT::Relief::Impl", vtkReliefImplFS);
+
+  this->Keys[cellBO] = this->Key();
+
+  if (const char* dump = std::getenv("MESOLIGHT_DUMP_SHADERS"))
+  {
+    if (dump[0] != '\0' && dump[0] != '0')
+    {
+      std::cerr << "==== relief fragment shader ====\n" << fs << std::endl;
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkReliefShaderSource::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Variant: " << this->Key() << "\n";
+  os << indent << "Shaders: " << this->Keys.size() << "\n";
+}

@@ -1,0 +1,70 @@
+/**
+ * @class   vtkReliefShaderSource
+ * @brief   The relief's edits of a VTK OpenGL mapper's shader sources, and the variant (the
+ *          compile-time choices) each of the mapper's shaders was built for.
+ *
+ * The edits come in two steps around the mapper superclass' own (ReplaceShaderValues): before,
+ * tangents and relief texture coordinates are passed through the vertex shader and our
+ * placeholders reserved in the fragment shader; after, the relief implementation (the GLSL of
+ * vtkRelief/glsl, embedded at build time) replaces VTK's lighting, with #defines for the
+ * variant: the property's method, output and switches, and what the draw binds (an albedo
+ * texture, a cone-packed relief texture, a light set). Each shader is keyed by the variant it
+ * was built for, so a change of variant rebuilds it.
+ */
+
+#ifndef vtkReliefShaderSource_h
+#define vtkReliefShaderSource_h
+
+#include "MesolightReliefModule.h" // for export macro
+#include "vtkObject.h"
+#include "vtkSmartPointer.h" // for Property
+
+#include <map>    // for Keys
+#include <string> // for the sources
+
+class vtkReliefProperty;
+
+class MESOLIGHTRELIEF_EXPORT vtkReliefShaderSource : public vtkObject
+{
+public:
+  static vtkReliefShaderSource* New();
+  vtkTypeMacro(vtkReliefShaderSource, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /** The variant of the coming draw: the property's settings and what the draw binds. */
+  void Configure(vtkReliefProperty* property, bool albedoTexture, bool conePacked, bool lightSet);
+
+  /** Whether the shader recorded for this helper (cellBO) was built for another variant. */
+  bool KeyChanged(const void* cellBO) const;
+
+  /**
+   * The edits before the mapper's superclass fills VTK's tags. noVTKLights: the mapper shades
+   * without VTK lights (light complexity 0), so VTK declares no normal and no view-space
+   * position; they are declared here.
+   */
+  static void ReplaceValuesBefore(std::string& vs, std::string& fs, bool noVTKLights);
+
+  /** The edits after the superclass: the relief implementation of the current variant. */
+  void ReplaceValuesAfter(std::string& fs, const void* cellBO);
+
+  /** Forget which variant each shader was built for (graphics resources released). */
+  void ForgetShaders() { this->Keys.clear(); }
+
+protected:
+  vtkReliefShaderSource();
+  ~vtkReliefShaderSource() override;
+
+  std::string Key() const;
+
+  vtkSmartPointer<vtkReliefProperty> Property;
+  bool HasAlbedoTexture = false;
+  bool ConePacked = false;
+  bool HasLightSet = false;
+  std::map<const void*, std::string> Keys;
+
+private:
+  vtkReliefShaderSource(const vtkReliefShaderSource&) = delete;
+  void operator=(const vtkReliefShaderSource&) = delete;
+};
+
+#endif
