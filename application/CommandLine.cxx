@@ -3,10 +3,64 @@
 #include <cmath>
 #include <cstdlib>
 #include <iomanip>
+#include <iostream>
 #include <sstream>
 
 namespace mesolight
 {
+namespace
+{
+// A finite number in [low, high]; the message says which option and item is wrong.
+bool ParseNumber(const std::string& name, const std::string& text, double low, double high,
+  double& value, std::string& error)
+{
+  char* end = nullptr;
+  const double parsed = std::strtod(text.c_str(), &end);
+  if (text.empty() || end == text.c_str() || *end != '\0' || !std::isfinite(parsed))
+  {
+    error = "option " + name + ": '" + text + "' is not a number";
+    return false;
+  }
+  if (parsed < low || parsed > high)
+  {
+    std::ostringstream range;
+    range << "option " << name << ": " << parsed << " is outside [" << low << ", " << high << "]";
+    error = range.str();
+    return false;
+  }
+  value = parsed;
+  return true;
+}
+
+std::vector<std::string> SplitCommas(const std::string& text)
+{
+  std::vector<std::string> items;
+  std::istringstream in(text);
+  std::string item;
+  while (std::getline(in, item, ','))
+  {
+    while (!item.empty() && item.front() == ' ')
+    {
+      item.erase(item.begin());
+    }
+    while (!item.empty() && item.back() == ' ')
+    {
+      item.pop_back();
+    }
+    if (!item.empty())
+    {
+      items.push_back(item);
+    }
+  }
+  return items;
+}
+} // namespace
+
+CommandLine::CommandLine(const std::string& name, const std::string& synopsis)
+  : Name(name)
+  , Synopsis(synopsis)
+{
+}
 
 void CommandLine::AddValue(const std::string& name, const std::string& meta,
   const std::string& help, const std::string& defaultValue)
@@ -84,6 +138,40 @@ bool CommandLine::Parse(const std::vector<std::string>& args, std::string& error
   return true;
 }
 
+bool CommandLine::ParseArguments(const std::vector<std::string>& args, int& status)
+{
+  if (this->Options.count("--help") == 0)
+  {
+    this->AddFlag("--help", "show this help");
+  }
+  std::string error;
+  if (!this->Parse(args, error))
+  {
+    status = this->UsageError(error);
+    return false;
+  }
+  if (this->Has("--help"))
+  {
+    this->PrintHelp(std::cout);
+    status = 0;
+    return false;
+  }
+  status = 0;
+  return true;
+}
+
+int CommandLine::UsageError(const std::string& message) const
+{
+  std::cerr << this->Name << ": " << message << "\n";
+  return 2;
+}
+
+void CommandLine::PrintHelp(std::ostream& os) const
+{
+  os << this->Synopsis << "\nOptions:\n";
+  this->PrintOptions(os);
+}
+
 bool CommandLine::Has(const std::string& name) const
 {
   return this->Values.count(name) > 0;
@@ -108,22 +196,7 @@ bool CommandLine::GetDouble(
   {
     return true; // keep the caller's default
   }
-  char* end = nullptr;
-  const double parsed = std::strtod(text.c_str(), &end);
-  if (end == text.c_str() || *end != '\0' || !std::isfinite(parsed))
-  {
-    error = "option " + name + ": '" + text + "' is not a number";
-    return false;
-  }
-  if (parsed < low || parsed > high)
-  {
-    std::ostringstream range;
-    range << "option " << name << ": " << parsed << " is outside [" << low << ", " << high << "]";
-    error = range.str();
-    return false;
-  }
-  value = parsed;
-  return true;
+  return ParseNumber(name, text, low, high, value, error);
 }
 
 bool CommandLine::GetInt(
@@ -141,6 +214,55 @@ bool CommandLine::GetInt(
   }
   value = static_cast<int>(parsed);
   return true;
+}
+
+bool CommandLine::GetDoubleList(const std::string& name, double low, double high,
+  std::vector<double>& values, std::string& error) const
+{
+  values.clear();
+  for (const std::string& item : SplitCommas(this->Get(name)))
+  {
+    double value = 0.0;
+    if (!ParseNumber(name, item, low, high, value, error))
+    {
+      return false;
+    }
+    values.push_back(value);
+  }
+  if (values.empty())
+  {
+    error = "option " + name + " needs at least one value";
+    return false;
+  }
+  return true;
+}
+
+bool CommandLine::GetIntList(const std::string& name, int low, int high, std::vector<int>& values,
+  std::string& error) const
+{
+  std::vector<double> parsed;
+  if (!this->GetDoubleList(name, low, high, parsed, error))
+  {
+    return false;
+  }
+  values.clear();
+  for (double value : parsed)
+  {
+    if (value != std::floor(value))
+    {
+      std::ostringstream message;
+      message << "option " << name << ": " << value << " is not a whole number";
+      error = message.str();
+      return false;
+    }
+    values.push_back(static_cast<int>(value));
+  }
+  return true;
+}
+
+std::vector<std::string> CommandLine::GetStringList(const std::string& name) const
+{
+  return SplitCommas(this->Get(name));
 }
 
 void CommandLine::PrintOptions(std::ostream& os) const

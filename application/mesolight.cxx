@@ -5,6 +5,7 @@
 //   mesolight bake DEPTH_IMAGE --out RELIEF    a relief texture (normal RGB + depth A)
 //   mesolight bench [options]                  time and error of relief vs the dense reference
 #include "CommandLine.h"
+#include "CommandTable.h"
 #include "ConeBenchmark.h"
 #include "ImageCompare.h"
 #include "LightSetBenchmark.h"
@@ -53,41 +54,6 @@ namespace
 {
 using mesolight::CommandLine;
 using mesolight::ReliefSceneOptions;
-
-const char* const Usage = R"(mesolight - relief surfaces for VTK
-
-Usage:
-  mesolight render [options]                   render the default relief scene
-  mesolight bake DEPTH_IMAGE --out RELIEF_IMAGE [options]
-                                               bake a relief texture from a depth image
-  mesolight cone DEPTH_IMAGE --out FILE.exr [options]
-                                               bake a cone-packed relief texture
-  mesolight bench [options]                    time and error: relief vs the dense mesh
-  mesolight bench relief [options]             every method x steps x view angle x map:
-                                               time vs exact hit error, CSV and plots
-  mesolight bench cones [options]              cone-map generation time, oracle speed-up
-  mesolight probe PROBE_IMAGE --out FILE.exr   light probe (angular map, mirror ball, two-view
-                                               merge) -> lat-long environment
-  mesolight lights ENV_IMAGE --count N --out lights.csv
-                                               median-cut lights of an HDR environment
-  mesolight bench lights [options]             light-set irradiance error vs exact
-                                               integration and SH9; median-cut time
-  mesolight bench ibl [options]                relief lit by 32..1024 median-cut lights: time,
-                                               each skip, error vs Monte Carlo
-  mesolight trace [--scene spheres|ring|cornell] [options]
-                                               Embree ray tracer (textured material channels,
-                                               glossy reflection, adaptive, progressive) or the
-                                               path-traced Cornell box
-  mesolight bench trace [options]              rays/s (coherent vs incoherent), path samples/s
-  mesolight vlf propagate [SCENE.obj] --out FIELD [options]
-                                               propagate a virtual light field (built-in
-                                               Cornell box without SCENE)
-  mesolight vlf render FIELD --out IMAGE.png   render a light field's diffuse totals
-  mesolight bench vlf [options]                light field time, memory and accuracy sweep
-  mesolight help [COMMAND]                     this text, or one command's options
-
-Run 'mesolight COMMAND --help' for the options of a command.
-)";
 
 // Options shared by every command that builds the relief scene.
 void AddSceneOptions(CommandLine& cl)
@@ -276,26 +242,24 @@ vtkStandardNewMacro(ReliefInteractorStyle);
 
 int RunRender(const std::vector<std::string>& args)
 {
-  CommandLine cl;
+  CommandLine cl("mesolight render",
+    "mesolight render [options]\n\nRenders the default relief scene (a procedural brick "
+    "wall, two lights, an oblique camera)\nto a PNG, then opens an interactive window "
+    "when a display is available.\nKeys: m method, +/- steps, [ ] depth, x shadows, o "
+    "silhouettes, z depth write, q quit.\n");
   AddSceneOptions(cl);
   cl.AddValue("--out", "FILE", "PNG to write", "mesolight-render.png");
   cl.AddFlag("--offscreen", "only write the PNG, never open a window");
-  cl.AddFlag("--help", "show this help");
   std::string error;
   ReliefSceneOptions options;
-  if (!cl.Parse(args, error) || !ReadSceneOptions(cl, options, error))
+  int exitCode = 0;
+  if (!cl.ParseArguments(args, exitCode))
   {
-    std::cerr << "mesolight render: " << error << "\n";
-    return 2;
+    return exitCode; // --help printed, or a usage error reported
   }
-  if (cl.Has("--help"))
+  if (!ReadSceneOptions(cl, options, error))
   {
-    std::cout << "mesolight render [options]\n\nRenders the default relief scene (a procedural brick "
-                 "wall, two lights, an oblique camera)\nto a PNG, then opens an interactive window "
-                 "when a display is available.\nKeys: m method, +/- steps, [ ] depth, x shadows, o "
-                 "silhouettes, z depth write, q quit.\n\nOptions:\n";
-    cl.PrintOptions(std::cout);
-    return 0;
+    return cl.UsageError(error);
   }
   if (!cl.Positional().empty())
   {
@@ -361,27 +325,21 @@ int RunRender(const std::vector<std::string>& args)
 
 int RunBake(const std::vector<std::string>& args)
 {
-  CommandLine cl;
+  CommandLine cl("mesolight bake",
+    "mesolight bake DEPTH_IMAGE --out RELIEF_IMAGE [options]\n\nBakes a relief "
+    "texture: Sobel normals (packed (n+1)/2) in RGB, depth in A\n(0 = top, 1 = "
+    "deepest).\n");
   cl.AddValue("--out", "RELIEF_IMAGE", "relief texture to write (.exr/.tif float, .png 8/16-bit)");
   cl.AddValue("--depth-scale", "K", "relief depth as a fraction of the texture width", "0.04");
   cl.AddValue("--border", "MODE", "clamp or wrap (tiling maps)", "clamp");
   cl.AddFlag("--height", "the input stores height (white = high) rather than depth");
   cl.AddFlag("--normalize", "stretch the input's value range to [0, 1]");
   cl.AddValue("--bits", "N", "8 or 16 bits per channel for PNG/TIFF output", "8");
-  cl.AddFlag("--help", "show this help");
   std::string error;
-  if (!cl.Parse(args, error))
+  int exitCode = 0;
+  if (!cl.ParseArguments(args, exitCode))
   {
-    std::cerr << "mesolight bake: " << error << "\n";
-    return 2;
-  }
-  if (cl.Has("--help"))
-  {
-    std::cout << "mesolight bake DEPTH_IMAGE --out RELIEF_IMAGE [options]\n\nBakes a relief "
-                 "texture: Sobel normals (packed (n+1)/2) in RGB, depth in A\n(0 = top, 1 = "
-                 "deepest).\n\nOptions:\n";
-    cl.PrintOptions(std::cout);
-    return 0;
+    return exitCode; // --help printed, or a usage error reported
   }
   if (cl.Positional().size() != 1 || !cl.Has("--out"))
   {
@@ -395,8 +353,7 @@ int RunBake(const std::vector<std::string>& args)
   if (!cl.GetDouble("--depth-scale", 0.0, 100.0, depthScale, error) ||
     !cl.GetInt("--bits", 8, 16, bits, error))
   {
-    std::cerr << "mesolight bake: " << error << "\n";
-    return 2;
+    return cl.UsageError(error);
   }
   if (bits != 8 && bits != 16)
   {
@@ -455,7 +412,10 @@ int RunBake(const std::vector<std::string>& args)
 
 int RunCone(const std::vector<std::string>& args)
 {
-  CommandLine cl;
+  CommandLine cl("mesolight cone",
+    "mesolight cone DEPTH_IMAGE --out FILE.exr [options]\n\nBakes a cone-packed relief "
+    "texture for cone stepping: R,G normal x, y packed (n+1)/2,\nB cone ratio "
+    "(width / height), A depth (0 top .. 1 deepest).\n");
   cl.AddValue("--out", "FILE", "cone map to write (.exr: float RGBA = normal x, y; cone ratio; depth)");
   cl.AddValue("--type", "TYPE", "relaxed or conservative", "relaxed");
   cl.AddValue("--depth-scale", "K", "relief depth as a fraction of the texture width", "0.04");
@@ -463,21 +423,16 @@ int RunCone(const std::vector<std::string>& args)
   cl.AddFlag("--height", "the input stores height (white = high) rather than depth");
   cl.AddFlag("--normalize", "stretch the input's value range to [0, 1]");
   cl.AddFlag("--seed8", "the relief thesis' 8-bit packing (cone as c / (1 + c)) instead of float");
-  cl.AddFlag("--help", "show this help");
   std::string error;
   double depthScale = 0.04;
-  if (!cl.Parse(args, error) || !cl.GetDouble("--depth-scale", 0.0, 100.0, depthScale, error))
+  int exitCode = 0;
+  if (!cl.ParseArguments(args, exitCode))
   {
-    std::cerr << "mesolight cone: " << error << "\n";
-    return 2;
+    return exitCode; // --help printed, or a usage error reported
   }
-  if (cl.Has("--help"))
+  if (!cl.GetDouble("--depth-scale", 0.0, 100.0, depthScale, error))
   {
-    std::cout << "mesolight cone DEPTH_IMAGE --out FILE.exr [options]\n\nBakes a cone-packed relief "
-                 "texture for cone stepping: R,G normal x, y packed (n+1)/2,\nB cone ratio "
-                 "(width / height), A depth (0 top .. 1 deepest).\n\nOptions:\n";
-    cl.PrintOptions(std::cout);
-    return 0;
+    return cl.UsageError(error);
   }
   const std::string type = cl.Get("--type");
   const std::string border = cl.Get("--border");
@@ -554,7 +509,10 @@ mesolight::RgbImage ToRgb(vtkImageData* image)
 
 int RunProbe(const std::vector<std::string>& args)
 {
-  CommandLine cl;
+  CommandLine cl("mesolight probe",
+    "mesolight probe PROBE_IMAGE --out FILE.exr [options]\n\nConverts a light probe "
+    "picture (angular map or mirror ball) into a lat-long environment\n(+Z up, v = 0 "
+    "at the top row; docs/environment-maps.md).\n");
   cl.AddValue("--out", "FILE.exr", "lat-long environment to write");
   cl.AddValue("--type", "TYPE", "angular (Debevec light probe) or mirror-ball", "angular");
   cl.AddValue("--width", "W", "output width (height W/2); 0 = twice the probe size", "0");
@@ -563,22 +521,17 @@ int RunProbe(const std::vector<std::string>& args)
   cl.AddValue("--merge", "PROBE_B", "second view of the same probe (the relief thesis' two-view merge)");
   cl.AddValue("--merge-forward", "X,Y,Z", "direction the second view looked in", "0,1,0");
   cl.AddValue("--mask", "IMAGE", "lat-long mask C: result = A C + B (1 - C)");
-  cl.AddFlag("--help", "show this help");
   std::string error;
   int width = 0;
   double forward[3], up[3], forwardB[3];
-  if (!cl.Parse(args, error) || !cl.GetInt("--width", 0, 32768, width, error))
+  int exitCode = 0;
+  if (!cl.ParseArguments(args, exitCode))
   {
-    std::cerr << "mesolight probe: " << error << "\n";
-    return 2;
+    return exitCode; // --help printed, or a usage error reported
   }
-  if (cl.Has("--help"))
+  if (!cl.GetInt("--width", 0, 32768, width, error))
   {
-    std::cout << "mesolight probe PROBE_IMAGE --out FILE.exr [options]\n\nConverts a light probe "
-                 "picture (angular map or mirror ball) into a lat-long environment\n(+Z up, v = 0 "
-                 "at the top row; docs/environment-maps.md).\n\nOptions:\n";
-    cl.PrintOptions(std::cout);
-    return 0;
+    return cl.UsageError(error);
   }
   const std::string type = cl.Get("--type");
   if (cl.Positional().size() != 1 || !cl.Has("--out") || (type != "angular" && type != "mirror-ball") ||
@@ -664,71 +617,111 @@ int RunProbe(const std::vector<std::string>& args)
   return 0;
 }
 
-int RunBench(const std::vector<std::string>& args)
+int RunBenchDefault(const std::vector<std::string>& args)
 {
-  if (!args.empty() && args[0] == "cones")
-  {
-    return mesolight::RunConeBenchmark(std::vector<std::string>(args.begin() + 1, args.end()));
-  }
-  if (!args.empty() && args[0] == "ibl")
-  {
-    return mesolight::RunLightSetBenchmark(std::vector<std::string>(args.begin() + 1, args.end()));
-  }
-  if (!args.empty() && args[0] == "lights")
-  {
-    return mesolight::RunLightsBenchmark(std::vector<std::string>(args.begin() + 1, args.end()));
-  }
-  if (!args.empty() && args[0] == "vlf")
-  {
-    return mesolight::RunVlfBenchmark(std::vector<std::string>(args.begin() + 1, args.end()));
-  }
-  if (!args.empty() && args[0] == "relief")
-  {
-    return mesolight::RunReliefSweep(std::vector<std::string>(args.begin() + 1, args.end()));
-  }
-  CommandLine cl;
+  CommandLine cl("mesolight bench",
+    "mesolight bench [options]\n\nMeasures ms/frame of a stock textured plane, relief "
+    "mapping, parallax occlusion mapping\nand the dense displaced mesh, and the error "
+    "of each against the dense mesh.\n");
   AddSceneOptions(cl);
   cl.AddValue("--sizes", "N,N,..", "relief map resolutions to measure", "512,1024");
   cl.AddValue("--frames", "N", "timed frames per configuration (median reported)", "20");
   cl.AddValue("--csv", "FILE", "also write the table as CSV");
-  cl.AddFlag("--help", "show this help");
   std::string error;
   ReliefSceneOptions options;
-  if (!cl.Parse(args, error) || !ReadSceneOptions(cl, options, error))
+  int exitCode = 0;
+  if (!cl.ParseArguments(args, exitCode))
   {
-    std::cerr << "mesolight bench: " << error << "\n";
-    return 2;
+    return exitCode; // --help printed, or a usage error reported
   }
-  if (cl.Has("--help"))
+  if (!ReadSceneOptions(cl, options, error))
   {
-    std::cout << "mesolight bench [options]\n\nMeasures ms/frame of a stock textured plane, relief "
-                 "mapping, parallax occlusion mapping\nand the dense displaced mesh, and the error "
-                 "of each against the dense mesh.\n\nOptions:\n";
-    cl.PrintOptions(std::cout);
-    return 0;
+    return cl.UsageError(error);
   }
   mesolight::BenchmarkSettings settings;
   settings.Scene = options;
   if (!cl.GetInt("--frames", 1, 10000, settings.Frames, error))
   {
-    std::cerr << "mesolight bench: " << error << "\n";
-    return 2;
+    return cl.UsageError(error);
   }
-  settings.Resolutions.clear();
-  std::istringstream sizes(cl.Get("--sizes"));
-  std::string item;
-  while (std::getline(sizes, item, ','))
+  if (!cl.GetIntList("--sizes", 2, 8192, settings.Resolutions, error))
   {
-    const int n = std::atoi(item.c_str());
-    if (n < 2 || n > 8192)
-    {
-      std::cerr << "mesolight bench: bad size '" << item << "' in --sizes\n";
-      return 2;
-    }
-    settings.Resolutions.push_back(n);
+    return cl.UsageError(error);
   }
   settings.CsvFile = cl.Get("--csv");
   return mesolight::RunReliefBenchmark(settings, std::cout) ? 0 : 1;
+}
+const std::vector<mesolight::Command>& Commands();
+
+// `mesolight help [COMMAND...]`: the usage, or a command's options.
+int RunHelp(const std::vector<std::string>& args);
+
+void PrintUsage(std::ostream& os)
+{
+  os << "mesolight - relief surfaces for VTK\n\nUsage:\n";
+  mesolight::PrintCommandUsage(os, "mesolight", Commands());
+  os << "\nRun 'mesolight COMMAND --help' for the options of a command.\n";
+}
+
+// Every command: name, usage, summary (the lines of `mesolight --help`), handler.
+const std::vector<mesolight::Command>& Commands()
+{
+  using namespace mesolight;
+  static const std::vector<Command> commands = {
+    { "render", "[options]", "render the default relief scene", RunRender, {} },
+    { "bake", "DEPTH_IMAGE --out RELIEF_IMAGE [options]", "bake a relief texture from a depth image",
+      RunBake, {} },
+    { "cone", "DEPTH_IMAGE --out FILE.exr [options]", "bake a cone-packed relief texture", RunCone,
+      {} },
+    { "probe", "PROBE_IMAGE --out FILE.exr",
+      "light probe (angular map, mirror ball, two-view\nmerge) -> lat-long environment", RunProbe,
+      {} },
+    { "lights", "ENV_IMAGE --count N --out lights.csv", "median-cut lights of an HDR environment",
+      RunLightsCommand, {} },
+    { "trace", "[--scene spheres|ring|cornell] [options]",
+      "Embree ray tracer (textured material channels,\nglossy reflection, adaptive, progressive) or "
+      "the\npath-traced Cornell box",
+      RunTraceCommand, {} },
+    { "vlf", "", "", nullptr,
+      {
+        { "propagate", "[SCENE.obj] --out FIELD [options]",
+          "propagate a virtual light field (built-in\nCornell box without SCENE)", RunVlfPropagate,
+          {} },
+        { "render", "FIELD --out IMAGE.png", "render a light field's diffuse totals", RunVlfRender,
+          {} },
+      } },
+    { "bench", "", "", nullptr,
+      {
+        { "", "[options]", "time and error: relief vs the dense mesh", RunBenchDefault, {} },
+        { "relief", "[options]",
+          "every method x steps x view angle x map:\ntime vs exact hit error, CSV and plots",
+          static_cast<int (*)(const std::vector<std::string>&)>(RunReliefSweep), {} },
+        { "cones", "[options]", "cone-map generation time, oracle speed-up", RunConeBenchmark, {} },
+        { "lights", "[options]",
+          "light-set irradiance error vs exact\nintegration and SH9; median-cut time",
+          RunLightsBenchmark, {} },
+        { "ibl", "[options]",
+          "relief lit by 32..1024 median-cut lights: time,\neach skip, error vs Monte Carlo",
+          RunLightSetBenchmark, {} },
+        { "trace", "[options]", "rays/s (coherent vs incoherent), path samples/s",
+          RunTraceBenchmark, {} },
+        { "vlf", "[options]", "light field time, memory and accuracy sweep", RunVlfBenchmark, {} },
+      } },
+    { "help", "[COMMAND]", "this text, or one command's options", RunHelp, {} },
+  };
+  return commands;
+}
+
+int RunHelp(const std::vector<std::string>& args)
+{
+  if (args.empty())
+  {
+    PrintUsage(std::cout);
+    return 0;
+  }
+  std::vector<std::string> withHelp = args;
+  withHelp.emplace_back("--help");
+  return mesolight::DispatchCommand("mesolight", Commands(), withHelp);
 }
 } // namespace
 
@@ -737,56 +730,11 @@ int main(int argc, char* argv[])
   vtkNew<ConsoleOutputWindow> console;
   vtkOutputWindow::SetInstance(console);
   vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF); // messages go through the console window
-  std::vector<std::string> args(argv + 1, argv + argc);
-  if (args.empty() || args[0] == "--help" || args[0] == "-h" ||
-    (args[0] == "help" && args.size() == 1))
+  const std::vector<std::string> args(argv + 1, argv + argc);
+  if (args.empty() || args[0] == "--help" || args[0] == "-h")
   {
-    std::cout << Usage;
+    PrintUsage(std::cout);
     return args.empty() ? 2 : 0;
   }
-  std::string command = args[0];
-  args.erase(args.begin());
-  if (command == "help")
-  {
-    command = args[0];
-    args = { "--help" };
-  }
-  if (command == "render")
-  {
-    return RunRender(args);
-  }
-  if (command == "bake")
-  {
-    return RunBake(args);
-  }
-  if (command == "probe")
-  {
-    return RunProbe(args);
-  }
-  if (command == "lights")
-  {
-    return mesolight::RunLightsCommand(args);
-  }
-  if (command == "cone")
-  {
-    return RunCone(args);
-  }
-  if (command == "trace")
-  {
-    return mesolight::RunTraceCommand(args);
-  }
-  if (command == "bench" && !args.empty() && args[0] == "trace")
-  {
-    return mesolight::RunTraceBenchmark(std::vector<std::string>(args.begin() + 1, args.end()));
-  }
-  if (command == "bench")
-  {
-    return RunBench(args);
-  }
-  if (command == "vlf")
-  {
-    return mesolight::RunVlfCommand(args);
-  }
-  std::cerr << "mesolight: unknown command '" << command << "'\n" << Usage;
-  return 2;
+  return mesolight::DispatchCommand("mesolight", Commands(), args);
 }
