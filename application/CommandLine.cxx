@@ -1,9 +1,11 @@
 #include "CommandLine.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <iomanip>
 #include <iostream>
+#include <limits>
 #include <sstream>
 
 namespace mesolight
@@ -24,7 +26,8 @@ bool ParseNumber(const std::string& name, const std::string& text, double low, d
   if (parsed < low || parsed > high)
   {
     std::ostringstream range;
-    range << "option " << name << ": " << parsed << " is outside [" << low << ", " << high << "]";
+    range << std::setprecision(12) // bounds such as 1 << 26 in full, not 6.71089e+07
+          << "option " << name << ": " << parsed << " is outside [" << low << ", " << high << "]";
     error = range.str();
     return false;
   }
@@ -257,6 +260,20 @@ bool CommandLine::GetIntList(const std::string& name, int low, int high, std::ve
     }
     values.push_back(static_cast<int>(value));
   }
+  return true;
+}
+
+bool CommandLine::GetDoubleVector(const std::string& name, size_t count, double* values) const
+{
+  std::vector<double> list;
+  std::string error;
+  if (!this->GetDoubleList(name, std::numeric_limits<double>::lowest(),
+        std::numeric_limits<double>::max(), list, error) ||
+    list.size() != count)
+  {
+    return false;
+  }
+  std::copy(list.begin(), list.end(), values);
   return true;
 }
 

@@ -58,6 +58,8 @@ public:
     std::string& error) const;
   bool GetDoubleList(const std::string& name, double low, double high, std::vector<double>& values,
     std::string& error) const;
+  /** An X,Y,Z-style value: exactly count finite numbers. False otherwise. */
+  bool GetDoubleVector(const std::string& name, size_t count, double* values) const;
   /** The items of a comma-separated list, spaces around them and empty items dropped. */
   std::vector<std::string> GetStringList(const std::string& name) const;
   const std::vector<std::string>& Positional() const { return this->PositionalArgs; }

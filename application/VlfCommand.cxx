@@ -218,28 +218,6 @@ int Propagate(const std::vector<std::string>& args)
   return 0;
 }
 
-bool ParseVector(const std::string& text, int count, double* values)
-{
-  std::istringstream in(text);
-  std::string item;
-  int n = 0;
-  while (std::getline(in, item, ','))
-  {
-    char* end = nullptr;
-    if (n >= count)
-    {
-      return false;
-    }
-    values[n] = std::strtod(item.c_str(), &end);
-    if (item.empty() || *end != '\0' || !std::isfinite(values[n]))
-    {
-      return false;
-    }
-    ++n;
-  }
-  return n == count;
-}
-
 int Render(const std::vector<std::string>& args)
 {
   CommandLine cl("mesolight vlf render",
@@ -299,7 +277,7 @@ int Render(const std::vector<std::string>& args)
     const glm::vec3 worldLower = vlf::ToWorld(*field, lower), worldUpper = vlf::ToWorld(*field, upper);
     glm::vec3 eye, focal;
     double up[3] = { 0.0, 1.0, 0.0 };
-    if (!ParseVector(cl.Get("--view-up"), 3, up))
+    if (!cl.GetDoubleVector("--view-up", 3, up))
     {
       std::cerr << "mesolight vlf render: --view-up needs X,Y,Z\n";
       return 2;
@@ -307,7 +285,7 @@ int Render(const std::vector<std::string>& args)
     if (cl.Has("--camera"))
     {
       double c[6];
-      if (!ParseVector(cl.Get("--camera"), 6, c))
+      if (!cl.GetDoubleVector("--camera", 6, c))
       {
         std::cerr << "mesolight vlf render: --camera needs X,Y,Z,FX,FY,FZ\n";
         return 2;

@@ -484,13 +484,6 @@ int RunCone(const std::vector<std::string>& args)
   return 0;
 }
 
-bool ParseVector(const std::string& text, double v[3])
-{
-  char c1 = 0, c2 = 0;
-  std::istringstream in(text);
-  return static_cast<bool>(in >> v[0] >> c1 >> v[1] >> c2 >> v[2]) && c1 == ',' && c2 == ',';
-}
-
 mesolight::RgbImage ToRgb(vtkImageData* image)
 {
   int dims[3];
@@ -535,8 +528,8 @@ int RunProbe(const std::vector<std::string>& args)
   }
   const std::string type = cl.Get("--type");
   if (cl.Positional().size() != 1 || !cl.Has("--out") || (type != "angular" && type != "mirror-ball") ||
-    !ParseVector(cl.Get("--forward"), forward) || !ParseVector(cl.Get("--up"), up) ||
-    !ParseVector(cl.Get("--merge-forward"), forwardB) || (cl.Has("--merge") != cl.Has("--mask")))
+    !cl.GetDoubleVector("--forward", 3, forward) || !cl.GetDoubleVector("--up", 3, up) ||
+    !cl.GetDoubleVector("--merge-forward", 3, forwardB) || (cl.Has("--merge") != cl.Has("--mask")))
   {
     std::cerr << "mesolight probe: usage: mesolight probe PROBE_IMAGE --out FILE.exr "
                  "[--type angular|mirror-ball] [--forward x,y,z] [--up x,y,z] "

@@ -1,6 +1,7 @@
 # `mesolight bench relief` end to end on a tiny sweep: a procedural map and the 16-bit PNG file
 # path, two methods; the table's rows, the CSV and one chart per angle appear, and the relief
 # march is more accurate than plain texture mapping. Bad arguments exit with 2.
+cmake_minimum_required(VERSION 3.16) # quoted strings in if() are strings (CMP0054)
 file(REMOVE_RECURSE "${WORK}")
 file(MAKE_DIRECTORY "${WORK}")
 execute_process(COMMAND "${CLI}" bench relief --maps Bricks,file --angles 60 --size 160x160
