@@ -5,6 +5,8 @@
 #ifndef mesolight_LightSetReference_h
 #define mesolight_LightSetReference_h
 
+#include "MesolightEvaluationModule.h" // for the export macro
+
 #include <cstddef>
 #include <vector>
 
@@ -29,9 +31,9 @@ struct EnvironmentIrradianceSample
  * world depth = d x depthScale, +Z up for both the wall and the environment. Empty if `relief` is
  * not a 4-component relief texture or there is no environment.
  */
-std::vector<EnvironmentIrradianceSample> ComputeEnvironmentReference(const ReliefReference& hits,
-  vtkImageData* relief, vtkImageData* environment, double depthScale, int maxPixels,
-  int samplesPerPixel, bool shadows);
+MESOLIGHTEVALUATION_EXPORT std::vector<EnvironmentIrradianceSample> ComputeEnvironmentReference(
+  const ReliefReference& hits, vtkImageData* relief, vtkImageData* environment, double depthScale,
+  int maxPixels, int samplesPerPixel, bool shadows);
 
 /**
  * Exact reference for a light set (vtkMedianCutLights' light texture): for the same pixels as
@@ -41,15 +43,16 @@ std::vector<EnvironmentIrradianceSample> ComputeEnvironmentReference(const Relie
  * for every method. Empty if `lights` is not an N x 2 light texture of at least 3 components or
  * `relief` is not a 4-component relief texture.
  */
-std::vector<EnvironmentIrradianceSample> ComputeLightSetReference(const ReliefReference& hits,
-  vtkImageData* relief, vtkImageData* lights, double depthScale, int maxPixels);
+MESOLIGHTEVALUATION_EXPORT std::vector<EnvironmentIrradianceSample> ComputeLightSetReference(
+  const ReliefReference& hits, vtkImageData* relief, vtkImageData* lights, double depthScale,
+  int maxPixels);
 
 /**
  * Mean relative error of a render against the reference: the render's colour at each sampled
  * pixel against 255 x exposure x albedo / pi x irradiance (white albedo, no other light).
  */
-double EnvironmentError(const Frame& frame, const std::vector<EnvironmentIrradianceSample>& ref,
-  double exposure);
+MESOLIGHTEVALUATION_EXPORT double EnvironmentError(
+  const Frame& frame, const std::vector<EnvironmentIrradianceSample>& ref, double exposure);
 
 } // namespace mesolight
 
