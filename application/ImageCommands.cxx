@@ -75,8 +75,7 @@ int RunBakeCommand(const std::vector<std::string>& args)
   }
   if (cl.Positional().size() != 1 || !cl.Has("--out"))
   {
-    std::cerr << "mesolight bake: usage: mesolight bake DEPTH_IMAGE --out RELIEF_IMAGE\n";
-    return 2;
+    return cl.UsageError("usage: mesolight bake DEPTH_IMAGE --out RELIEF_IMAGE");
   }
   const std::string in = cl.Positional()[0];
   const std::string out = cl.Get("--out");
@@ -89,19 +88,16 @@ int RunBakeCommand(const std::vector<std::string>& args)
   }
   if (bits != 8 && bits != 16)
   {
-    std::cerr << "mesolight bake: --bits must be 8 or 16\n";
-    return 2;
+    return cl.UsageError("--bits must be 8 or 16");
   }
   const std::string border = cl.Get("--border");
   if (border != "clamp" && border != "wrap")
   {
-    std::cerr << "mesolight bake: --border must be clamp or wrap\n";
-    return 2;
+    return cl.UsageError("--border must be clamp or wrap");
   }
   if (out == in || SameFile(out, in))
   {
-    std::cerr << "mesolight bake: --out must differ from the input\n";
-    return 2;
+    return cl.UsageError("--out must differ from the input");
   }
 
   vtkNew<vtkOIIOImageReader> reader;
@@ -179,8 +175,7 @@ int RunConeCommand(const std::vector<std::string>& args)
   const std::string out = cl.Get("--out");
   if (out == in || SameFile(out, in))
   {
-    std::cerr << "mesolight cone: --out must differ from the input\n";
-    return 2;
+    return cl.UsageError("--out must differ from the input");
   }
   vtkNew<vtkOIIOImageReader> reader;
   reader->SetFileName(in.c_str());
@@ -257,8 +252,7 @@ int RunProbeCommand(const std::vector<std::string>& args)
   {
     if (!in.empty() && (in == out || SameFile(in, out)))
     {
-      std::cerr << "mesolight probe: --out must differ from the inputs\n";
-      return 2;
+      return cl.UsageError("--out must differ from the inputs");
     }
   }
   auto convert = [&](const std::string& file, const double f[3]) -> vtkSmartPointer<vtkImageData> {

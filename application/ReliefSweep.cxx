@@ -642,8 +642,7 @@ int RunReliefSweep(const std::vector<std::string>& args)
   }
   if (settings.Maps.empty() || settings.Angles.empty())
   {
-    std::cerr << "mesolight bench relief: --maps and --angles need at least one entry\n";
-    return 2;
+    return cl.UsageError("--maps and --angles need at least one entry");
   }
   settings.Steps = cl.GetStringList("--steps");
   for (const std::string& label : settings.Steps)

@@ -113,19 +113,16 @@ int Propagate(const std::vector<std::string>& args)
   const std::string out = cl.Get("--out");
   if (out.empty())
   {
-    std::cerr << "mesolight vlf propagate: --out FIELD is required\n";
-    return 2;
+    return cl.UsageError("--out FIELD is required");
   }
   if (cl.Positional().size() > 1)
   {
-    std::cerr << "mesolight vlf propagate: one scene at most\n";
-    return 2;
+    return cl.UsageError("one scene at most");
   }
   const bool resume = cl.Has("--resume");
   if (resume && cl.Has("--force"))
   {
-    std::cerr << "mesolight vlf propagate: --resume and --force exclude each other\n";
-    return 2;
+    return cl.UsageError("--resume and --force exclude each other");
   }
   if (vlf::FileExists(out) && !vlf::IsSnapshotFile(out))
   {
@@ -243,8 +240,7 @@ int Render(const std::vector<std::string>& args)
   }
   if (cl.Positional().size() != 1 || cl.Get("--out").empty())
   {
-    std::cerr << "mesolight vlf render: give one FIELD and --out IMAGE.png\n";
-    return 2;
+    return cl.UsageError("give one FIELD and --out IMAGE.png");
   }
   const std::string out = cl.Get("--out");
   if (vlf::FileExists(out) && !cl.Has("--force"))
@@ -279,16 +275,14 @@ int Render(const std::vector<std::string>& args)
     double up[3] = { 0.0, 1.0, 0.0 };
     if (!cl.GetDoubleVector("--view-up", 3, up))
     {
-      std::cerr << "mesolight vlf render: --view-up needs X,Y,Z\n";
-      return 2;
+      return cl.UsageError("--view-up needs X,Y,Z");
     }
     if (cl.Has("--camera"))
     {
       double c[6];
       if (!cl.GetDoubleVector("--camera", 6, c))
       {
-        std::cerr << "mesolight vlf render: --camera needs X,Y,Z,FX,FY,FZ\n";
-        return 2;
+        return cl.UsageError("--camera needs X,Y,Z,FX,FY,FZ");
       }
       eye = glm::vec3(c[0], c[1], c[2]);
       focal = glm::vec3(c[3], c[4], c[5]);
@@ -318,8 +312,7 @@ int Render(const std::vector<std::string>& args)
     glm::vec3 right = glm::cross(forward, glm::vec3(up[0], up[1], up[2]));
     if (!(glm::length(right) > 1e-6f))
     {
-      std::cerr << "mesolight vlf render: the view-up direction is parallel to the view direction\n";
-      return 2;
+      return cl.UsageError("the view-up direction is parallel to the view direction");
     }
     right = glm::normalize(right);
     const glm::vec3 trueUp = glm::cross(right, forward);
