@@ -2,7 +2,7 @@
 // soft self-shadows, and the skips (negligible lights, K shadowed lights) measured against the
 // unskipped render.
 #include "ImageCompare.h"
-#include "LightSetBenchmark.h"
+#include "LightSetReference.h"
 #include "ReliefReference.h"
 #include "ReliefScene.h"
 #include "TestReliefTestUtilities.h"

@@ -5,19 +5,16 @@
 #include "ImageCompare.h"
 #include "ReliefReference.h"
 #include "ReliefScene.h"
-#include "ReliefSweep.h"
 #include "TestReliefTestUtilities.h"
 #include "vtkReliefMapper.h"
+#include "vtkReliefProperty.h"
 
 #include <vtkRenderWindow.h>
 
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <filesystem>
-#include <fstream>
 #include <iostream>
-#include <sstream>
 
 namespace
 {
@@ -190,73 +187,4 @@ TEST(ReliefReference, PlainTextureMappingHitsAreFarOff)
   o.Method = "texture";
   const HitComparison c = GpuHitError(o, "texture, 55 deg");
   EXPECT_GT(c.MeanTexels, 1.0) << "twice the 0.5 texel bound the relief march must meet";
-}
-
-// `mesolight bench relief` end to end on a tiny sweep: a procedural map and the 16-bit PNG file
-// path, two methods; the table's rows, the CSV and one chart per angle appear, and the relief
-// march is more accurate than plain texture mapping.
-TEST(ReliefSweep, TinySweepWritesRowsCsvAndCharts)
-{
-  const std::string dir = test::OutputPath("relief-sweep");
-  std::filesystem::remove_all(dir);
-  ReliefSweepSettings s;
-  s.Maps = { "Bricks", "file" };
-  s.Angles = { 60.0 };
-  s.Width = s.Height = 160;
-  s.Frames = 1;
-  s.Resolution = 128;
-  s.Methods = { "texture", "relief" };
-  s.CsvFile = dir + "/sweep.csv";
-  s.PlotDirectory = dir;
-  std::ostringstream out;
-  std::vector<ReliefSweepRow> rows;
-  ASSERT_TRUE(RunReliefSweep(s, out, &rows)) << out.str();
-  std::cout << out.str();
-  // texture: 1 setting, relief: 15 settings, on two maps.
-  ASSERT_EQ(rows.size(), 32u);
-  EXPECT_TRUE(std::filesystem::exists(dir + "/sweep-stone-16bit.png"));
-  EXPECT_TRUE(std::filesystem::exists(dir + "/relief-sweep-view60.png"));
-  std::ifstream csv(s.CsvFile);
-  int lines = 0;
-  for (std::string line; std::getline(csv, line);)
-  {
-    ++lines;
-  }
-  EXPECT_EQ(lines, 33);
-  for (const std::string& map : { std::string("Bricks"), std::string("file(stone16)") })
-  {
-    double texture = -1.0, relief = -1.0;
-    double samples8 = -1.0, samples128 = -1.0; // relief 8+8 and 128+8, per pixel
-    for (const ReliefSweepRow& r : rows)
-    {
-      if (r.Map == map && r.MethodName == "texture")
-      {
-        texture = r.HitMeanTexels;
-        EXPECT_EQ(r.SamplesPerPixel, 0.0) << "texture mapping samples no relief";
-      }
-      if (r.Map == map && r.MethodName == "relief" && r.Step.Label == "8+8")
-      {
-        samples8 = r.SamplesPerPixel;
-      }
-      if (r.Map == map && r.MethodName == "relief" && r.Step.Label == "128+8")
-      {
-        samples128 = r.SamplesPerPixel;
-      }
-      if (r.Map == map && r.MethodName == "relief" && r.Step.Label == "32+8")
-      {
-        relief = r.HitMeanTexels;
-        EXPECT_GT(r.Psnr, 20.0) << map;
-        EXPECT_LT(r.SilhouetteMismatch, 2.0) << map;
-      }
-    }
-    EXPECT_GE(relief, 0.0) << map;
-    EXPECT_LT(relief, 0.5) << map;
-    EXPECT_GT(texture, 4.0 * relief) << map;
-    // At least 8 binary steps and the shading normal; the longer search samples more.
-    EXPECT_GE(samples8, 9.0) << map;
-    EXPECT_GT(samples128, samples8) << map;
-  }
-  EXPECT_EQ(ReliefSweepStepsFor(vtkReliefProperty::MaximumMipmap).size(), 3u);
-  EXPECT_NE(RunReliefSweep(std::vector<std::string>{ "--methods", "no-such-method" }), 0);
-  EXPECT_NE(RunReliefSweep(std::vector<std::string>{ "--size", "12" }), 0);
 }

@@ -90,7 +90,10 @@ glm::vec3 CosineAround(const glm::vec3& n, RandomSequence& rng)
 
 int RunTraceBenchmark(const std::vector<std::string>& args)
 {
-  CommandLine cl;
+  CommandLine cl("mesolight bench trace",
+    "mesolight bench trace [options]\n\nEmbree rays per second on a dense sphere seen from "
+    "inside (coherent primary rays\nsingle and in 16-ray packets, incoherent diffuse bounces "
+    "single and in packets),\nand path-tracer paths per second on the Cornell box.\n");
   cl.AddValue("--triangles", "N", "triangles of the dense sphere", "1000000");
   cl.AddValue("--size", "N", "rays per side of the primary ray grid", "1024");
   cl.AddValue("--threads", "N", "worker threads", "2");
@@ -98,24 +101,19 @@ int RunTraceBenchmark(const std::vector<std::string>& args)
   cl.AddValue("--cornell-samples", "N", "paths per pixel for the path tracer", "16");
   cl.AddValue("--repeats", "N", "timed repetitions (the fastest is reported)", "3");
   cl.AddValue("--csv", "FILE", "also write the table as CSV");
-  cl.AddFlag("--help", "show this help");
   std::string error;
   int triangles = 0, size = 0, threads = 0, cornellSize = 0, cornellSamples = 0, repeats = 0;
-  if (!cl.Parse(args, error) || !cl.GetInt("--triangles", 8, 50000000, triangles, error) ||
+  int exitCode = 0;
+  if (!cl.ParseArguments(args, exitCode))
+  {
+    return exitCode; // --help printed, or a usage error reported
+  }
+  if (!cl.GetInt("--triangles", 8, 50000000, triangles, error) ||
     !cl.GetInt("--size", 16, 8192, size, error) || !cl.GetInt("--threads", 1, 1024, threads, error) ||
     !cl.GetInt("--cornell-size", 8, 4096, cornellSize, error) ||
     !cl.GetInt("--cornell-samples", 1, 65536, cornellSamples, error) || !cl.GetInt("--repeats", 1, 100, repeats, error))
   {
-    std::cerr << "mesolight bench trace: " << error << "\n";
-    return 2;
-  }
-  if (cl.Has("--help"))
-  {
-    std::cout << "mesolight bench trace [options]\n\nEmbree rays per second on a dense sphere seen from "
-                 "inside (coherent primary rays\nsingle and in 16-ray packets, incoherent diffuse bounces "
-                 "single and in packets),\nand path-tracer paths per second on the Cornell box.\n\nOptions:\n";
-    cl.PrintOptions(std::cout);
-    return 0;
+    return cl.UsageError(error);
   }
 
   auto best = [&](const std::function<void()>& run) {

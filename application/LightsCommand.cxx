@@ -114,30 +114,6 @@ std::vector<std::array<double, 3>> FibonacciNormals(int n)
   return out;
 }
 
-bool ParseCounts(const std::string& text, std::vector<int>& counts, std::string& error)
-{
-  counts.clear();
-  std::stringstream ss(text);
-  std::string item;
-  while (std::getline(ss, item, ','))
-  {
-    char* end = nullptr;
-    const long value = std::strtol(item.c_str(), &end, 10);
-    if (item.empty() || *end != '\0' || value < 1 || value > 1000000)
-    {
-      error = "--counts expects positive integers separated by commas; got '" + text + "'";
-      return false;
-    }
-    counts.push_back(static_cast<int>(value));
-  }
-  if (counts.empty())
-  {
-    error = "--counts is empty";
-    return false;
-  }
-  return true;
-}
-
 struct ErrorStats
 {
   double Mean = 0.0;
@@ -174,27 +150,21 @@ ErrorStats Compare(const std::vector<std::array<double, 3>>& normals,
 //------------------------------------------------------------------------------
 int RunLightsCommand(const std::vector<std::string>& args)
 {
-  CommandLine cl;
+  CommandLine cl("mesolight lights",
+    "mesolight lights ENV_IMAGE --out lights.csv [options]\n\nApproximates a "
+    "lat-long environment map (or procedural:sky / procedural:sun)\nby N directional "
+    "lights with solid-angle-weighted median cut. CSV columns:\nu,v = light centroid "
+    "in map coordinates (v = 0 top row); x,y,z = unit direction\n(+Z up, u = 0 toward "
+    "+X, u = 0.25 toward +Y); r,g,b = irradiance at normal incidence.\n");
   cl.AddValue("--out", "FILE.csv", "where to write the lights (header u,v,x,y,z,r,g,b)");
   cl.AddValue("--count", "N", "number of lights (any N >= 1)", "64");
   cl.AddFlag("--variance", "variance-minimizing cuts (Viriyothai & Debevec 2009)");
   cl.AddValue("--resolution", "H", "height of procedural maps (width 2H)", "512");
-  cl.AddFlag("--help", "show this help");
   std::string error;
-  if (!cl.Parse(args, error))
+  int exitCode = 0;
+  if (!cl.ParseArguments(args, exitCode))
   {
-    std::cerr << "mesolight lights: " << error << "\n";
-    return 2;
-  }
-  if (cl.Has("--help"))
-  {
-    std::cout << "mesolight lights ENV_IMAGE --out lights.csv [options]\n\nApproximates a "
-                 "lat-long environment map (or procedural:sky / procedural:sun)\nby N directional "
-                 "lights with solid-angle-weighted median cut. CSV columns:\nu,v = light centroid "
-                 "in map coordinates (v = 0 top row); x,y,z = unit direction\n(+Z up, u = 0 toward "
-                 "+X, u = 0.25 toward +Y); r,g,b = irradiance at normal incidence.\n\nOptions:\n";
-    cl.PrintOptions(std::cout);
-    return 0;
+    return exitCode; // --help printed, or a usage error reported
   }
   if (cl.Positional().size() != 1 || !cl.Has("--out"))
   {
@@ -207,15 +177,13 @@ int RunLightsCommand(const std::vector<std::string>& args)
   if (!cl.GetInt("--count", 1, 1 << 26, count, error) ||
     !cl.GetInt("--resolution", 2, 8192, height, error))
   {
-    std::cerr << "mesolight lights: " << error << "\n";
-    return 2;
+    return cl.UsageError(error);
   }
   const std::string in = cl.Positional()[0];
   vtkSmartPointer<vtkAlgorithm> source = MapSource(in, height, error);
   if (!source)
   {
-    std::cerr << "mesolight lights: " << error << "\n";
-    return 2;
+    return cl.UsageError(error);
   }
   vtkNew<vtkMedianCutLights> lights;
   lights->SetInputConnection(source->GetOutputPort());
@@ -253,7 +221,14 @@ int RunLightsCommand(const std::vector<std::string>& args)
 //------------------------------------------------------------------------------
 int RunLightsBenchmark(const std::vector<std::string>& args)
 {
-  CommandLine cl;
+  CommandLine cl("mesolight bench lights",
+    "mesolight bench lights [options]\n\nMean and max relative error of unoccluded "
+    "diffuse irradiance (luminance) from\nmedian cut light sets (plain and "
+    "variance-minimizing) and from 9 spherical\nharmonics (Ramamoorthi & Hanrahan "
+    "2001), against exact numerical integration\nover the map, for the procedural "
+    "SmoothSky and SunSky (2-degree sun + window)\nmaps and Blender's CC0 studio-light "
+    "HDRIs when installed (package blender-data);\nthen the median cut time for "
+    "4096x2048 -> 1024 lights.\n");
   cl.AddValue("--counts", "N,N,..", "light counts", "16,32,64,128,256,512,1024");
   cl.AddValue("--normals", "N", "Fibonacci-sphere normals for the irradiance error", "2000");
   cl.AddValue("--resolution", "H", "height of the procedural maps (width 2H)", "512");
@@ -261,36 +236,22 @@ int RunLightsBenchmark(const std::vector<std::string>& args)
   cl.AddValue("--blender-dir", "DIR", "directory of lat-long EXR studio lights",
     "/usr/share/blender/datafiles/studiolights/world");
   cl.AddValue("--timing-repeats", "N", "median cut runs on 4096x2048 (best is reported)", "5");
-  cl.AddFlag("--help", "show this help");
   std::string error;
-  if (!cl.Parse(args, error))
+  int exitCode = 0;
+  if (!cl.ParseArguments(args, exitCode))
   {
-    std::cerr << "mesolight bench lights: " << error << "\n";
-    return 2;
-  }
-  if (cl.Has("--help"))
-  {
-    std::cout << "mesolight bench lights [options]\n\nMean and max relative error of unoccluded "
-                 "diffuse irradiance (luminance) from\nmedian cut light sets (plain and "
-                 "variance-minimizing) and from 9 spherical\nharmonics (Ramamoorthi & Hanrahan "
-                 "2001), against exact numerical integration\nover the map, for the procedural "
-                 "SmoothSky and SunSky (2-degree sun + window)\nmaps and Blender's CC0 studio-light "
-                 "HDRIs when installed (package blender-data);\nthen the median cut time for "
-                 "4096x2048 -> 1024 lights.\n\nOptions:\n";
-    cl.PrintOptions(std::cout);
-    return 0;
+    return exitCode; // --help printed, or a usage error reported
   }
   std::vector<int> counts;
   int normalCount = 2000;
   int height = 512;
   int repeats = 5;
-  if (!ParseCounts(cl.Get("--counts"), counts, error) ||
+  if (!cl.GetIntList("--counts", 1, 1000000, counts, error) ||
     !cl.GetInt("--normals", 10, 1000000, normalCount, error) ||
     !cl.GetInt("--resolution", 8, 8192, height, error) ||
     !cl.GetInt("--timing-repeats", 0, 1000, repeats, error))
   {
-    std::cerr << "mesolight bench lights: " << error << "\n";
-    return 2;
+    return cl.UsageError(error);
   }
 
   // Maps.

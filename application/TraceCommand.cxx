@@ -341,7 +341,10 @@ int TraceCornell(const CommandLine& cl, int width, int height, int threads, bool
 
 int RunTraceCommand(const std::vector<std::string>& args)
 {
-  CommandLine cl;
+  CommandLine cl("mesolight trace",
+    "mesolight trace [options]\n\nRay traces a built-in scene on the CPU with Embree "
+    "(seed 004: texture-mapped\nmaterial channels, glossy reflection, adaptive supersampling, "
+    "progressive\nrefinement), or path traces the Cornell box.\n");
   cl.AddValue("--scene", "NAME", "spheres (textured spheres on a checker), ring (bump + roughness maps), "
                                  "cornell (path-traced reference)", "spheres");
   cl.AddValue("--width", "N", "image width in pixels", "640");
@@ -362,20 +365,11 @@ int RunTraceCommand(const std::vector<std::string>& args)
                                            "linear image of the same view (exit 1 when they differ)");
   cl.AddValue("--tolerance", "X", "relative tolerance of --compare-exr", "0.05");
   cl.AddFlag("--offscreen", "only write the image, never open a window");
-  cl.AddFlag("--help", "show this help");
   std::string error;
-  if (!cl.Parse(args, error))
+  int exitCode = 0;
+  if (!cl.ParseArguments(args, exitCode))
   {
-    std::cerr << "mesolight trace: " << error << "\n";
-    return 2;
-  }
-  if (cl.Has("--help"))
-  {
-    std::cout << "mesolight trace [options]\n\nRay traces a built-in scene on the CPU with Embree "
-                 "(seed 004: texture-mapped\nmaterial channels, glossy reflection, adaptive supersampling, "
-                 "progressive\nrefinement), or path traces the Cornell box.\n\nOptions:\n";
-    cl.PrintOptions(std::cout);
-    return 0;
+    return exitCode; // --help printed, or a usage error reported
   }
   int width = 0, height = 0, glossy = 0, depth = 0, threads = 0;
   double threshold = 0.0;
@@ -383,8 +377,7 @@ int RunTraceCommand(const std::vector<std::string>& args)
     !cl.GetInt("--glossy-samples", 1, 1024, glossy, error) || !cl.GetInt("--max-depth", 0, 64, depth, error) ||
     !cl.GetInt("--threads", 0, 1024, threads, error) || !cl.GetDouble("--threshold", 0.0, 10.0, threshold, error))
   {
-    std::cerr << "mesolight trace: " << error << "\n";
-    return 2;
+    return cl.UsageError(error);
   }
   const std::string sceneName = cl.Get("--scene");
   const bool interactive = !cl.Has("--offscreen") && HasDisplay();

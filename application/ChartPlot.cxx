@@ -22,7 +22,7 @@
 #include <cmath>
 #include <numeric>
 
-// The OpenGL context device of vtkContextView. mesolight_scene is a static library, so the
+// The OpenGL context device of vtkContextView. mesolight_application is a static library, so the
 // executables' autoinit does not reach the chart code: register it here.
 VTK_MODULE_INIT(vtkRenderingContextOpenGL2);
 

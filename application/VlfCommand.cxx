@@ -46,31 +46,6 @@ double Seconds(Clock::time_point since)
   return std::chrono::duration<double>(Clock::now() - since).count();
 }
 
-bool ParseList(const std::string& text, std::vector<int>& values, int low, int high, std::string& error)
-{
-  values.clear();
-  std::istringstream in(text);
-  std::string item;
-  while (std::getline(in, item, ','))
-  {
-    char* end = nullptr;
-    const long v = std::strtol(item.c_str(), &end, 10);
-    if (item.empty() || *end != '\0' || v < low || v > high)
-    {
-      error = "'" + item + "' is not a whole number in [" + std::to_string(low) + ", " +
-        std::to_string(high) + "]";
-      return false;
-    }
-    values.push_back(static_cast<int>(v));
-  }
-  if (values.empty())
-  {
-    error = "an empty list";
-    return false;
-  }
-  return true;
-}
-
 // Peak resident memory since the last reset (Linux: VmHWM; writing 5 to clear_refs resets it).
 std::uint64_t PeakResidentBytes()
 {
@@ -109,7 +84,10 @@ vlf::ProgressCallbacks PrintedProgress(const std::string& what)
 
 int Propagate(const std::vector<std::string>& args)
 {
-  CommandLine cl;
+  CommandLine cl("mesolight vlf propagate",
+    "mesolight vlf propagate [SCENE.obj] --out FIELD [options]\n\n"
+    "Propagates the scene's light (the built-in Cornell box without SCENE) into a "
+    "virtual light field,\nwriting FIELD after every iteration.\n");
   cl.AddValue("--out", "FIELD", "light field snapshot to write after every iteration (required)");
   cl.AddValue("--directions", "N", "directions: 2n^2+1, e.g. 513, 2049, 8193", "513");
   cl.AddValue("--rays", "N", "lines per subfield side", "32");
@@ -118,20 +96,11 @@ int Propagate(const std::vector<std::string>& args)
   cl.AddValue("--memory-budget", "GIB", "refuse fields needing more memory than this", "4");
   cl.AddFlag("--resume", "continue the propagation stored in FIELD");
   cl.AddFlag("--force", "replace an existing light field FIELD (never any other file)");
-  cl.AddFlag("--help", "show this help");
   std::string error;
-  if (!cl.Parse(args, error))
+  int exitCode = 0;
+  if (!cl.ParseArguments(args, exitCode))
   {
-    std::cerr << "mesolight vlf propagate: " << error << "\n";
-    return 2;
-  }
-  if (cl.Has("--help"))
-  {
-    std::cout << "mesolight vlf propagate [SCENE.obj] --out FIELD [options]\n\n"
-                 "Propagates the scene's light (the built-in Cornell box without SCENE) into a "
-                 "virtual light field,\nwriting FIELD after every iteration.\n\nOptions:\n";
-    cl.PrintOptions(std::cout);
-    return 0;
+    return exitCode; // --help printed, or a usage error reported
   }
   int directions = 0, rays = 0, tiles = 0, iterations = 0;
   double budget = 0.0;
@@ -139,25 +108,21 @@ int Propagate(const std::vector<std::string>& args)
     !cl.GetInt("--tiles", 0, 4096, tiles, error) || !cl.GetInt("--iterations", 0, 10000, iterations, error) ||
     !cl.GetDouble("--memory-budget", 1e-3, 1e6, budget, error))
   {
-    std::cerr << "mesolight vlf propagate: " << error << "\n";
-    return 2;
+    return cl.UsageError(error);
   }
   const std::string out = cl.Get("--out");
   if (out.empty())
   {
-    std::cerr << "mesolight vlf propagate: --out FIELD is required\n";
-    return 2;
+    return cl.UsageError("--out FIELD is required");
   }
   if (cl.Positional().size() > 1)
   {
-    std::cerr << "mesolight vlf propagate: one scene at most\n";
-    return 2;
+    return cl.UsageError("one scene at most");
   }
   const bool resume = cl.Has("--resume");
   if (resume && cl.Has("--force"))
   {
-    std::cerr << "mesolight vlf propagate: --resume and --force exclude each other\n";
-    return 2;
+    return cl.UsageError("--resume and --force exclude each other");
   }
   if (vlf::FileExists(out) && !vlf::IsSnapshotFile(out))
   {
@@ -250,31 +215,14 @@ int Propagate(const std::vector<std::string>& args)
   return 0;
 }
 
-bool ParseVector(const std::string& text, int count, double* values)
-{
-  std::istringstream in(text);
-  std::string item;
-  int n = 0;
-  while (std::getline(in, item, ','))
-  {
-    char* end = nullptr;
-    if (n >= count)
-    {
-      return false;
-    }
-    values[n] = std::strtod(item.c_str(), &end);
-    if (item.empty() || *end != '\0' || !std::isfinite(values[n]))
-    {
-      return false;
-    }
-    ++n;
-  }
-  return n == count;
-}
-
 int Render(const std::vector<std::string>& args)
 {
-  CommandLine cl;
+  CommandLine cl("mesolight vlf render",
+    "mesolight vlf render FIELD --out IMAGE.png [options]\n\n"
+    "Renders a light field's diffuse totals (the seed's progressive mode: per-surface "
+    "total diffuse\ntextures, bilinear) by casting a ray per pixel; mirror surfaces "
+    "show the field's radiance\ntoward the eye (three-direction spherical "
+    "interpolation).\n");
   cl.AddValue("--out", "IMAGE.png", "where to write the image (required)");
   cl.AddValue("--size", "WxH", "image size in pixels", "512x512");
   cl.AddValue("--camera", "X,Y,Z,FX,FY,FZ",
@@ -284,27 +232,15 @@ int Render(const std::vector<std::string>& args)
   cl.AddValue("--view-angle", "DEG", "vertical field of view", "39.3077");
   cl.AddValue("--exposure", "X", "radiance scale before the sRGB curve", "1");
   cl.AddFlag("--force", "replace an existing IMAGE.png");
-  cl.AddFlag("--help", "show this help");
   std::string error;
-  if (!cl.Parse(args, error))
+  int exitCode = 0;
+  if (!cl.ParseArguments(args, exitCode))
   {
-    std::cerr << "mesolight vlf render: " << error << "\n";
-    return 2;
-  }
-  if (cl.Has("--help"))
-  {
-    std::cout << "mesolight vlf render FIELD --out IMAGE.png [options]\n\n"
-                 "Renders a light field's diffuse totals (the seed's progressive mode: per-surface "
-                 "total diffuse\ntextures, bilinear) by casting a ray per pixel; mirror surfaces "
-                 "show the field's radiance\ntoward the eye (three-direction spherical "
-                 "interpolation).\n\nOptions:\n";
-    cl.PrintOptions(std::cout);
-    return 0;
+    return exitCode; // --help printed, or a usage error reported
   }
   if (cl.Positional().size() != 1 || cl.Get("--out").empty())
   {
-    std::cerr << "mesolight vlf render: give one FIELD and --out IMAGE.png\n";
-    return 2;
+    return cl.UsageError("give one FIELD and --out IMAGE.png");
   }
   const std::string out = cl.Get("--out");
   if (vlf::FileExists(out) && !cl.Has("--force"))
@@ -326,8 +262,7 @@ int Render(const std::vector<std::string>& args)
   if (!cl.GetDouble("--view-angle", 1.0, 179.0, viewAngle, error) ||
     !cl.GetDouble("--exposure", 0.0, 1e9, exposure, error))
   {
-    std::cerr << "mesolight vlf render: " << error << "\n";
-    return 2;
+    return cl.UsageError(error);
   }
   try
   {
@@ -338,18 +273,16 @@ int Render(const std::vector<std::string>& args)
     const glm::vec3 worldLower = vlf::ToWorld(*field, lower), worldUpper = vlf::ToWorld(*field, upper);
     glm::vec3 eye, focal;
     double up[3] = { 0.0, 1.0, 0.0 };
-    if (!ParseVector(cl.Get("--view-up"), 3, up))
+    if (!cl.GetDoubleVector("--view-up", 3, up))
     {
-      std::cerr << "mesolight vlf render: --view-up needs X,Y,Z\n";
-      return 2;
+      return cl.UsageError("--view-up needs X,Y,Z");
     }
     if (cl.Has("--camera"))
     {
       double c[6];
-      if (!ParseVector(cl.Get("--camera"), 6, c))
+      if (!cl.GetDoubleVector("--camera", 6, c))
       {
-        std::cerr << "mesolight vlf render: --camera needs X,Y,Z,FX,FY,FZ\n";
-        return 2;
+        return cl.UsageError("--camera needs X,Y,Z,FX,FY,FZ");
       }
       eye = glm::vec3(c[0], c[1], c[2]);
       focal = glm::vec3(c[3], c[4], c[5]);
@@ -379,8 +312,7 @@ int Render(const std::vector<std::string>& args)
     glm::vec3 right = glm::cross(forward, glm::vec3(up[0], up[1], up[2]));
     if (!(glm::length(right) > 1e-6f))
     {
-      std::cerr << "mesolight vlf render: the view-up direction is parallel to the view direction\n";
-      return 2;
+      return cl.UsageError("the view-up direction is parallel to the view direction");
     }
     right = glm::normalize(right);
     const glm::vec3 trueUp = glm::cross(right, forward);
@@ -456,27 +388,14 @@ int Render(const std::vector<std::string>& args)
 
 } // namespace
 
-int RunVlfCommand(const std::vector<std::string>& args)
+int RunVlfPropagate(const std::vector<std::string>& args)
 {
-  const char* usage = "mesolight vlf propagate [SCENE.obj] --out FIELD [options]\n"
-                      "mesolight vlf render FIELD --out IMAGE.png [options]\n"
-                      "Run 'mesolight vlf propagate --help' or 'mesolight vlf render --help' for the options.\n";
-  if (args.empty() || args[0] == "--help" || args[0] == "-h")
-  {
-    std::cout << usage;
-    return args.empty() ? 2 : 0;
-  }
-  const std::vector<std::string> rest(args.begin() + 1, args.end());
-  if (args[0] == "propagate")
-  {
-    return Propagate(rest);
-  }
-  if (args[0] == "render")
-  {
-    return Render(rest);
-  }
-  std::cerr << "mesolight vlf: unknown subcommand '" << args[0] << "'\n" << usage;
-  return 2;
+  return Propagate(args);
+}
+
+int RunVlfRender(const std::vector<std::string>& args)
+{
+  return Render(args);
 }
 
 namespace
@@ -499,39 +418,32 @@ vlf::ReferenceRadiance CornellReference(const TriangleScene& world)
 
 int RunVlfBenchmark(const std::vector<std::string>& args)
 {
-  CommandLine cl;
+  CommandLine cl("mesolight bench vlf",
+    "mesolight bench vlf [options]\n\nPropagation time and peak memory of the Cornell "
+    "box light field per direction count,\nrays per side and iteration; accuracy of "
+    "the same settings on analytic cases (floor under\na square emitter vs the form "
+    "factor; furnace vs Le/(1-rho)).\n");
   cl.AddValue("--directions", "N,N,..", "direction counts (2n^2+1)", "513,2049");
   cl.AddValue("--rays", "N,N,..", "lines per subfield side", "32,64,128");
   cl.AddValue("--iterations", "K", "shooting iterations (each one timed)", "4");
   cl.AddValue("--memory-budget", "GIB", "skip configurations needing more", "6");
   cl.AddValue("--csv", "FILE", "write the rows as CSV");
   cl.AddValue("--plot", "FILE.png", "plot time vs rays (and FILE-error.png: error vs rays)");
-  cl.AddFlag("--help", "show this help");
   std::string error;
-  if (!cl.Parse(args, error))
+  int exitCode = 0;
+  if (!cl.ParseArguments(args, exitCode))
   {
-    std::cerr << "mesolight bench vlf: " << error << "\n";
-    return 2;
-  }
-  if (cl.Has("--help"))
-  {
-    std::cout << "mesolight bench vlf [options]\n\nPropagation time and peak memory of the Cornell "
-                 "box light field per direction count,\nrays per side and iteration; accuracy of "
-                 "the same settings on analytic cases (floor under\na square emitter vs the form "
-                 "factor; furnace vs Le/(1-rho)).\n\nOptions:\n";
-    cl.PrintOptions(std::cout);
-    return 0;
+    return exitCode; // --help printed, or a usage error reported
   }
   std::vector<int> directionList, rayList;
   int iterations = 0;
   double budget = 0.0;
-  if (!ParseList(cl.Get("--directions"), directionList, 3, 1 << 26, error) ||
-    !ParseList(cl.Get("--rays"), rayList, 8, 4096, error) ||
+  if (!cl.GetIntList("--directions", 3, 1 << 26, directionList, error) ||
+    !cl.GetIntList("--rays", 8, 4096, rayList, error) ||
     !cl.GetInt("--iterations", 1, 1000, iterations, error) ||
     !cl.GetDouble("--memory-budget", 1e-3, 1e6, budget, error))
   {
-    std::cerr << "mesolight bench vlf: " << error << "\n";
-    return 2;
+    return cl.UsageError(error);
   }
   ResetPeakResident();
   std::printf("process resident memory before any light field: %s (VTK, Embree, TBB loaded)\n",

@@ -16,6 +16,8 @@
 #ifndef mesolight_HeightFieldTracer_h
 #define mesolight_HeightFieldTracer_h
 
+#include "MesolightEvaluationModule.h" // for the export macro
+
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
@@ -27,7 +29,7 @@ namespace mesolight
 {
 
 /** W x H depth samples and the continuous bilinear, clamp-to-edge surface through them. */
-class HeightField
+class MESOLIGHTEVALUATION_EXPORT HeightField
 {
 public:
   /**
@@ -75,8 +77,8 @@ struct RayHit
  * <= 1e-12 * max(1, t) around the first sign change of (ray d - surface depth) as evaluated in
  * double: the point at t is on or below, just before it the ray is above.
  */
-std::optional<RayHit> IntersectFirst(const HeightField& hf, const glm::dvec3& origin,
-  const glm::dvec3& dir, double tMax);
+MESOLIGHTEVALUATION_EXPORT std::optional<RayHit> IntersectFirst(
+  const HeightField& hf, const glm::dvec3& origin, const glm::dvec3& dir, double tMax);
 
 /**
  * True when the ray from point (on the surface) toward the light reaches d <= 0 (leaves the top
@@ -84,8 +86,8 @@ std::optional<RayHit> IntersectFirst(const HeightField& hf, const glm::dvec3& or
  * light at or below the horizon (toLight.z >= 0) gives false, as does any non-finite input. The
  * ray starts epsilon along normalize(toLight) from point, to avoid self-intersection.
  */
-bool Visible(const HeightField& hf, const glm::dvec3& point, const glm::dvec3& toLight,
-  double epsilon = 1e-6);
+MESOLIGHTEVALUATION_EXPORT bool Visible(
+  const HeightField& hf, const glm::dvec3& point, const glm::dvec3& toLight, double epsilon = 1e-6);
 
 /**
  * TEST ORACLE ONLY: dense uniform sampling of [0, tMax] at `samples` steps, then bisection on the
@@ -93,8 +95,8 @@ bool Visible(const HeightField& hf, const glm::dvec3& point, const glm::dvec3& t
  * can miss features thinner than a step, so it may report a later hit or none; never an earlier
  * one. Throws std::invalid_argument if samples < 1.
  */
-std::optional<RayHit> IntersectFirstBruteForce(const HeightField& hf, const glm::dvec3& origin,
-  const glm::dvec3& dir, double tMax, int samples);
+MESOLIGHTEVALUATION_EXPORT std::optional<RayHit> IntersectFirstBruteForce(
+  const HeightField& hf, const glm::dvec3& origin, const glm::dvec3& dir, double tMax, int samples);
 
 } // namespace mesolight
 

@@ -3,6 +3,8 @@
 #ifndef mesolight_ImageCompare_h
 #define mesolight_ImageCompare_h
 
+#include "MesolightEvaluationModule.h" // for the export macro
+
 #include <cstddef>
 #include <vector>
 
@@ -12,7 +14,7 @@ namespace mesolight
 {
 
 /** One rendered frame: RGB bytes and the depth buffer, bottom row first. */
-struct Frame
+struct MESOLIGHTEVALUATION_EXPORT Frame
 {
   int Width = 0;
   int Height = 0;
@@ -28,7 +30,7 @@ struct Frame
 };
 
 /** Renders the window and reads back its colour and depth. */
-Frame CaptureFrame(vtkRenderWindow* window);
+MESOLIGHTEVALUATION_EXPORT Frame CaptureFrame(vtkRenderWindow* window);
 
 struct FrameDifference
 {
@@ -47,26 +49,27 @@ struct FrameDifference
  * inside its mesh's footprint, so the band of a displaced surface seen outside it is not an error
  * of the march.
  */
-FrameDifference CompareFrames(
+MESOLIGHTEVALUATION_EXPORT FrameDifference CompareFrames(
   const Frame& a, const Frame& b, double depthTolerance, const Frame* footprint = nullptr);
 
 /**
  * Decodes vtkReliefMapper's HitUOutput / HitVOutput at a pixel: the hit coordinate as 24-bit
  * fixed point. False for background pixels.
  */
-bool DecodeHitCoordinate(const Frame& frame, size_t pixel, double& coordinate);
+MESOLIGHTEVALUATION_EXPORT bool DecodeHitCoordinate(
+  const Frame& frame, size_t pixel, double& coordinate);
 
 /**
  * Decodes vtkReliefMapper's SampleCountOutput at a pixel: the relief-texture samples the fragment
  * took. False for background pixels.
  */
-bool DecodeSampleCount(const Frame& frame, size_t pixel, int& count);
+MESOLIGHTEVALUATION_EXPORT bool DecodeSampleCount(const Frame& frame, size_t pixel, int& count);
 
 /** Mean of DecodeSampleCount over the covered pixels of a frame (0 if none is covered). */
-double MeanSampleCount(const Frame& frame);
+MESOLIGHTEVALUATION_EXPORT double MeanSampleCount(const Frame& frame);
 
 /** Writes the frame's colour as PNG. */
-bool WritePng(const Frame& frame, const char* fileName);
+MESOLIGHTEVALUATION_EXPORT bool WritePng(const Frame& frame, const char* fileName);
 
 } // namespace mesolight
 

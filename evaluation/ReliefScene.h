@@ -8,7 +8,10 @@
 #ifndef mesolight_ReliefScene_h
 #define mesolight_ReliefScene_h
 
+#include "MesolightEvaluationModule.h" // for the export macro
+
 #include "vtkReliefMapper.h"
+#include "vtkReliefProperty.h"
 
 #include <vtkActor.h>
 #include <vtkImageData.h>
@@ -29,7 +32,7 @@ struct ReliefSceneOptions
   bool DepthFileIsHeight = false; // the file stores height (white = high), not depth
   int Resolution = 512;           // texels per side of the procedural map
   double DepthScale = 0.04;       // world depth of depth 1 / world width of the wall
-  std::string Method = "relief";  // vtkReliefProperty::SetMethodByName
+  std::string Method = "relief";  // vtkReliefMapper::SetMethodByName
   int LinearSteps = 10;
   int RefinementSteps = 8;
   bool SelfShadowing = true;
@@ -68,41 +71,44 @@ struct ReliefScene
 };
 
 /** An environment map: "procedural:sky", "procedural:sun" or an HDR file (lat-long). */
-vtkSmartPointer<vtkImageData> LoadEnvironment(const std::string& spec, std::string& error);
+MESOLIGHTEVALUATION_EXPORT vtkSmartPointer<vtkImageData> LoadEnvironment(
+  const std::string& spec, std::string& error);
 
 /** The options' environment as a light set (vtkMedianCutLights' N x 2 light texture). */
-vtkSmartPointer<vtkImageData> MakeEnvironmentLights(
+MESOLIGHTEVALUATION_EXPORT vtkSmartPointer<vtkImageData> MakeEnvironmentLights(
   const ReliefSceneOptions& options, std::string& error);
 
 /**
  * Builds the relief texture and albedo described by the options; with a cone map kind
- * (vtkReliefProperty::ConeMapKind) the texture is vtkConeMapFilter's cone-packed one. Returns false
+ * (vtkReliefMapper::ConeMapKind) the texture is vtkConeMapFilter's cone-packed one. Returns false
  * and fills error when the depth file cannot be read or the texture cannot be baked.
  */
-bool BuildReliefTextures(const ReliefSceneOptions& options, vtkSmartPointer<vtkImageData>& relief,
-  vtkSmartPointer<vtkTexture>& albedo, std::string& error,
+MESOLIGHTEVALUATION_EXPORT bool BuildReliefTextures(const ReliefSceneOptions& options,
+  vtkSmartPointer<vtkImageData>& relief, vtkSmartPointer<vtkTexture>& albedo, std::string& error,
   int coneMap = vtkReliefProperty::NoConeMap);
 
 /** The relief scene: a coarse plane with vtkReliefMapper. */
-bool BuildReliefScene(const ReliefSceneOptions& options, ReliefScene& scene, std::string& error);
+MESOLIGHTEVALUATION_EXPORT bool BuildReliefScene(
+  const ReliefSceneOptions& options, ReliefScene& scene, std::string& error);
 
 /** The same scene as a dense displaced mesh drawn by the stock mapper (the reference). */
-bool BuildDenseReferenceScene(
+MESOLIGHTEVALUATION_EXPORT bool BuildDenseReferenceScene(
   const ReliefSceneOptions& options, ReliefScene& scene, std::string& error);
 
 /** The same scene as a plain textured plane (stock mapper, no relief): the cheapest baseline. */
-bool BuildTexturedPlaneScene(
+MESOLIGHTEVALUATION_EXPORT bool BuildTexturedPlaneScene(
   const ReliefSceneOptions& options, ReliefScene& scene, std::string& error);
 
 /** Places camera and lights as the options say; every scene variant uses this. */
-void SetupCameraAndLights(const ReliefSceneOptions& options, vtkRenderer* renderer);
+MESOLIGHTEVALUATION_EXPORT void SetupCameraAndLights(
+  const ReliefSceneOptions& options, vtkRenderer* renderer);
 
 /** An offscreen window of the options' size holding the renderer. */
-vtkSmartPointer<vtkRenderWindow> MakeOffscreenWindow(
+MESOLIGHTEVALUATION_EXPORT vtkSmartPointer<vtkRenderWindow> MakeOffscreenWindow(
   const ReliefSceneOptions& options, vtkRenderer* renderer);
 
 /** Whether an X display is available for an interactive window. */
-bool HasDisplay();
+MESOLIGHTEVALUATION_EXPORT bool HasDisplay();
 
 } // namespace mesolight
 

@@ -1,6 +1,6 @@
 #include "ReliefSweep.h"
+#include "ReliefSweepReport.h"
 
-#include "ChartPlot.h"
 #include "CommandLine.h"
 #include "ImageCompare.h"
 #include "ReliefReference.h"
@@ -8,6 +8,7 @@
 #include "vtkOIIOImageWriter.h"
 #include "vtkProceduralReliefSource.h"
 #include "vtkReliefMapper.h"
+#include "vtkReliefProperty.h"
 
 #if __has_include("vtkConeMapFilter.h")
 #include "vtkConeMapFilter.h"
@@ -127,29 +128,6 @@ double Milliseconds(Clock::duration d)
   return std::chrono::duration<double, std::milli>(d).count();
 }
 
-std::vector<std::string> SplitList(const std::string& text)
-{
-  std::vector<std::string> items;
-  std::stringstream stream(text);
-  std::string item;
-  while (std::getline(stream, item, ','))
-  {
-    while (!item.empty() && item.front() == ' ')
-    {
-      item.erase(item.begin());
-    }
-    while (!item.empty() && item.back() == ' ')
-    {
-      item.pop_back();
-    }
-    if (!item.empty())
-    {
-      items.push_back(item);
-    }
-  }
-  return items;
-}
-
 // Methods whose LinearSteps / RefinementSteps are a linear or cone search and its refinement.
 bool UsesSearchSteps(int m)
 {
@@ -179,22 +157,6 @@ bool ParseStepLabel(const std::string& label, ReliefSweepStep& step)
   step.RefinementSteps = static_cast<int>(r);
   step.Label = label;
   return true;
-}
-
-int MethodFromName(const std::string& name)
-{
-  if (name == "steep")
-  {
-    return vtkReliefProperty::LinearSearch;
-  }
-  for (int m = 0; m < vtkReliefProperty::NumberOfMethods; ++m)
-  {
-    if (name == vtkReliefProperty::GetMethodName(m))
-    {
-      return m;
-    }
-  }
-  return -1;
 }
 
 // The cone map a cone method needs, built from the relief texture; null when it cannot be built
@@ -319,301 +281,6 @@ bool PrepareFileMap(const ReliefSweepSettings& settings, const std::string& dire
          "file path, not real data.\n";
   return true;
 }
-
-std::string Fixed(double value, int precision)
-{
-  std::ostringstream s;
-  s << std::fixed << std::setprecision(precision) << value;
-  return s.str();
-}
-
-void PrintHeader(std::ostream& out)
-{
-  out << std::left << std::setw(16) << "map" << std::right << std::setw(6) << "angle" << "  "
-      << std::left << std::setw(22) << "method" << std::setw(9) << "steps" << std::right
-      << std::setw(9) << "ms/frame" << std::setw(9) << "samples" << std::setw(10) << "hit mean" << std::setw(9) << "hit p99"
-      << std::setw(8) << "silh %" << std::setw(8) << "RMSE" << std::setw(7) << "PSNR"
-      << std::setw(9) << "shadow %" << "\n";
-}
-
-void PrintRow(std::ostream& out, const ReliefSweepRow& r)
-{
-  out << std::left << std::setw(16) << r.Map << std::right << std::setw(6) << Fixed(r.Angle, 0)
-      << "  " << std::left << std::setw(22) << r.MethodName << std::setw(9) << r.Step.Label
-      << std::right << std::setw(9) << Fixed(r.MedianMs, 1) << std::setw(9)
-      << Fixed(r.SamplesPerPixel, 1) << std::setw(10) << Fixed(r.HitMeanTexels, 3) << std::setw(9) << Fixed(r.HitP99Texels, 2) << std::setw(8)
-      << Fixed(r.SilhouetteMismatch, 2) << std::setw(8) << Fixed(r.ColorRmse, 2) << std::setw(7)
-      << Fixed(r.Psnr, 1) << std::setw(9) << Fixed(r.ShadowMismatch, 2) << "\n";
-}
-
-bool WriteCsv(const std::string& file, const std::vector<ReliefSweepRow>& rows,
-  const ReliefSweepSettings& settings)
-{
-  std::ofstream csv(file);
-  csv << "map,view_angle_deg,method,linear_steps,refinement_steps,steps,width,height,depth_scale,"
-         "ms_per_frame,first_frame_ms,samples_per_pixel,hit_error_mean_texels,hit_error_p99_texels,"
-         "silhouette_mismatch_pct,color_rmse,psnr_db,shadow_mismatch_pct,covered_both,"
-         "footprint\n";
-  csv << std::setprecision(8);
-  for (const ReliefSweepRow& r : rows)
-  {
-    csv << '"' << r.Map << "\"," << r.Angle << ',' << r.MethodName << ',' << r.Step.LinearSteps
-        << ',' << r.Step.RefinementSteps << ",\"" << r.Step.Label << "\"," << settings.Width << ','
-        << settings.Height << ',' << settings.DepthScale << ',' << r.MedianMs << ',' << r.FirstMs
-        << ',' << r.SamplesPerPixel << ',' << r.HitMeanTexels << ',' << r.HitP99Texels << ',' << r.SilhouetteMismatch << ','
-        << r.ColorRmse << ',' << r.Psnr << ',' << r.ShadowMismatch << ',' << r.CoveredBoth << ','
-        << r.Footprint << "\n";
-  }
-  return static_cast<bool>(csv);
-}
-
-std::string AngleTag(double angle)
-{
-  std::ostringstream s;
-  s << angle;
-  std::string t = s.str();
-  std::replace(t.begin(), t.end(), '.', 'p');
-  return t;
-}
-
-// One chart per view angle: every configuration's ms/frame and mean hit error, averaged over the
-// maps, one series per method, and the Pareto front.
-bool WritePlots(const ReliefSweepSettings& settings, const std::vector<ReliefSweepRow>& rows,
-  const std::vector<std::string>& mapLabels, std::ostream& out)
-{
-  for (double angle : settings.Angles)
-  {
-    struct Sum
-    {
-      double Ms = 0.0;
-      double Error = 0.0;
-      int N = 0;
-    };
-    std::map<std::pair<int, std::string>, Sum> sums; // (method, step label)
-    for (const ReliefSweepRow& r : rows)
-    {
-      if (r.Angle != angle)
-      {
-        continue;
-      }
-      Sum& s = sums[{ r.Method, r.Step.Label }];
-      s.Ms += r.MedianMs;
-      s.Error += r.HitMeanTexels;
-      ++s.N;
-    }
-    if (sums.empty())
-    {
-      continue;
-    }
-    ScatterChart chart;
-    std::ostringstream title;
-    title << "View " << angle << " deg: speed vs accuracy (" << settings.Width << "x"
-          << settings.Height << " px, mean over";
-    for (const std::string& m : mapLabels)
-    {
-      title << " " << m;
-    }
-    title << ")";
-    chart.Title = title.str();
-    chart.XLabel = "ms/frame (median)";
-    chart.YLabel = "mean hit error (texels, log)";
-    chart.LogY = true;
-    chart.YFloor = 1e-3;
-    std::map<int, size_t> seriesOf;
-    std::vector<double> allX, allY;
-    for (const auto& entry : sums)
-    {
-      const int method = entry.first.first;
-      if (!seriesOf.count(method))
-      {
-        seriesOf[method] = chart.Points.size();
-        chart.Points.push_back({ vtkReliefProperty::GetMethodName(method), {}, {} });
-      }
-      ChartSeries& series = chart.Points[seriesOf[method]];
-      const double x = entry.second.Ms / entry.second.N;
-      const double y = entry.second.Error / entry.second.N;
-      series.X.push_back(x);
-      series.Y.push_back(y);
-      allX.push_back(x);
-      allY.push_back(y);
-    }
-    chart.Line.Name = "Pareto front";
-    for (size_t i : ParetoFront(allX, allY))
-    {
-      chart.Line.X.push_back(allX[i]);
-      chart.Line.Y.push_back(allY[i]);
-    }
-    const std::string file =
-      (std::filesystem::path(settings.PlotDirectory) / ("relief-sweep-view" + AngleTag(angle) + ".png"))
-        .string();
-    std::string error;
-    if (!WriteScatterChartPng(chart, file, error))
-    {
-      out << "bench relief: " << error << "\n";
-      return false;
-    }
-    out << "wrote " << file << "\n";
-  }
-  return true;
-}
-
-// Relaxed cones vs relief at equal mean hit error (issue target: >= 2x). Each relief
-// configuration's mean hit error E is a target; for each method take its fastest configuration
-// (same map and angle) with mean hit error <= E: both Pareto fronts read at E, the minimum over
-// noisy timings taken on both sides alike. Cost is measured twice: llvmpipe ms/frame, and
-// relief-texture samples per pixel (what the march costs on any GPU, without llvmpipe's noise and
-// fixed per-frame cost). Targets of at most 0.1 texel (sub-texel accurate settings) are also
-// reported apart: that is where a renderer that must look right at grazing angles operates.
-void PrintConeVersusRelief(const ReliefSweepSettings& settings,
-  const std::vector<ReliefSweepRow>& rows, std::ostream& out)
-{
-  const double accurate = 0.1; // texels
-  auto median = [](std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v.empty() ? 0.0 : v[v.size() / 2];
-  };
-  auto cell = [&median](const std::vector<double>& v) {
-    return v.empty() ? std::string("-") : Fixed(median(v), 2) + " (" + std::to_string(v.size()) + ")";
-  };
-  std::vector<std::string> maps;
-  for (const ReliefSweepRow& r : rows)
-  {
-    if (std::find(maps.begin(), maps.end(), r.Map) == maps.end())
-    {
-      maps.push_back(r.Map);
-    }
-  }
-  struct Ratios
-  {
-    std::vector<double> Ms, Samples, AccurateMs, AccurateSamples;
-  };
-  std::map<double, Ratios> perAngle;
-  Ratios all;
-  std::ostringstream table;
-  bool any = false;
-  for (const std::string& map : maps)
-  {
-    for (const double angle : settings.Angles)
-    {
-      Ratios here;
-      for (const ReliefSweepRow& target : rows)
-      {
-        if (target.Method != vtkReliefProperty::Relief || target.Angle != angle || target.Map != map)
-        {
-          continue;
-        }
-        const ReliefSweepRow* fastest[2] = { nullptr, nullptr }; // relief, relaxed cone
-        const ReliefSweepRow* leanest[2] = { nullptr, nullptr };
-        for (const ReliefSweepRow& r : rows)
-        {
-          const int k = r.Method == vtkReliefProperty::Relief ? 0
-            : r.Method == vtkReliefProperty::RelaxedConeBinary ? 1
-                                                             : -1;
-          if (k < 0 || r.Map != map || r.Angle != angle || r.HitMeanTexels > target.HitMeanTexels)
-          {
-            continue;
-          }
-          if (!fastest[k] || r.MedianMs < fastest[k]->MedianMs)
-          {
-            fastest[k] = &r;
-          }
-          if (!leanest[k] || r.SamplesPerPixel < leanest[k]->SamplesPerPixel)
-          {
-            leanest[k] = &r;
-          }
-        }
-        if (!fastest[1] || fastest[1]->MedianMs <= 0.0 || leanest[1]->SamplesPerPixel <= 0.0)
-        {
-          continue;
-        }
-        const double ms = fastest[0]->MedianMs / fastest[1]->MedianMs;
-        const double samples = leanest[0]->SamplesPerPixel / leanest[1]->SamplesPerPixel;
-        for (Ratios* into : { &here, &perAngle[angle], &all })
-        {
-          into->Ms.push_back(ms);
-          into->Samples.push_back(samples);
-          if (target.HitMeanTexels <= accurate)
-          {
-            into->AccurateMs.push_back(ms);
-            into->AccurateSamples.push_back(samples);
-          }
-        }
-      }
-      if (here.Ms.empty())
-      {
-        continue;
-      }
-      any = true;
-      table << "    " << std::left << std::setw(18) << map << std::right << std::setw(5)
-            << Fixed(angle, 0) << std::setw(16) << cell(here.Ms) << std::setw(16)
-            << cell(here.Samples) << std::setw(16) << cell(here.AccurateMs) << std::setw(16)
-            << cell(here.AccurateSamples) << "\n";
-    }
-  }
-  if (!any)
-  {
-    out << "- relaxed cones vs relief: skipped (needs relief and relaxed-cone rows; cone maps "
-           "unavailable or method not selected)\n";
-    return;
-  }
-  out << "- relaxed cones vs relief at equal mean hit error: relief / relaxed cone, each method's "
-         "cheapest setting reaching each relief setting's error; median (number of error "
-         "targets), in ms/frame and in relief-texture samples per pixel; 'accurate' = targets <= "
-      << accurate << " texel\n"
-      << "    " << std::left << std::setw(18) << "map" << std::right << std::setw(5) << "angle"
-      << std::setw(16) << "ms" << std::setw(16) << "samples" << std::setw(16) << "accurate ms"
-      << std::setw(16) << "accurate samp." << "\n"
-      << table.str();
-  for (const auto& entry : perAngle)
-  {
-    out << "    " << std::left << std::setw(18) << "all maps" << std::right << std::setw(5)
-        << Fixed(entry.first, 0) << std::setw(16) << cell(entry.second.Ms) << std::setw(16)
-        << cell(entry.second.Samples) << std::setw(16) << cell(entry.second.AccurateMs)
-        << std::setw(16) << cell(entry.second.AccurateSamples) << "\n";
-  }
-  out << "    " << std::left << std::setw(18) << "all" << std::right << std::setw(5) << "-"
-      << std::setw(16) << cell(all.Ms) << std::setw(16) << cell(all.Samples) << std::setw(16)
-      << cell(all.AccurateMs) << std::setw(16) << cell(all.AccurateSamples) << "\n";
-}
-
-void PrintSummary(const ReliefSweepSettings& settings, const std::vector<ReliefSweepRow>& rows,
-  std::ostream& out)
-{
-  out << "\nSummary\n";
-  PrintConeVersusRelief(settings, rows, out);
-
-  // The exact methods at the most grazing angle.
-  double grazing = -1.0;
-  for (double a : settings.Angles)
-  {
-    grazing = std::max(grazing, a);
-  }
-  if (grazing < 0.0)
-  {
-    return;
-  }
-  out << "- mean hit error of the exact methods at " << grazing << " deg"
-      << (grazing == 85.0 ? "" : " (85 deg not swept: the most grazing angle instead)") << ":\n";
-  bool any = false;
-  for (const ReliefSweepRow& r : rows)
-  {
-    const bool exactRelief = r.Method == vtkReliefProperty::Relief && r.Step.LinearSteps == 32 &&
-      r.Step.RefinementSteps == 8;
-    if (r.Angle != grazing || !(exactRelief || r.Method == vtkReliefProperty::MaximumMipmap))
-    {
-      continue;
-    }
-    any = true;
-    out << "    " << std::left << std::setw(16) << r.Map << std::setw(12) << r.MethodName
-        << std::setw(9) << r.Step.Label << std::right << " mean " << Fixed(r.HitMeanTexels, 3)
-        << " texels, p99 " << Fixed(r.HitP99Texels, 2) << ", " << Fixed(r.MedianMs, 1)
-        << " ms/frame\n";
-  }
-  if (!any)
-  {
-    out << "    (neither max-mipmap nor relief 32+8 was swept)\n";
-  }
-}
 } // namespace
 
 //------------------------------------------------------------------------------
@@ -631,7 +298,7 @@ bool RunReliefSweep(
   }
   for (const std::string& name : settings.Methods)
   {
-    const int m = MethodFromName(name);
+    const int m = vtkReliefProperty::GetMethodFromName(name.c_str());
     if (m < 0)
     {
       out << "bench relief: unknown method '" << name << "'\n";
@@ -745,7 +412,7 @@ bool RunReliefSweep(
       }
       out << "[" << map.Label << ", " << angle << " deg] CPU reference: "
           << reference.CountCovered() << " covered of " << reference.CountFootprint()
-          << " footprint pixels in " << Fixed(reference.Seconds, 3) << " s\n"
+          << " footprint pixels in " << report::Fixed(reference.Seconds, 3) << " s\n"
           << std::flush;
 
       for (int m : methods)
@@ -823,10 +490,10 @@ bool RunReliefSweep(
   }
 
   out << "\n";
-  PrintHeader(out);
+  report::PrintHeader(out);
   for (const ReliefSweepRow& r : rows)
   {
-    PrintRow(out, r);
+    report::PrintRow(out, r);
   }
   for (const MapSource& map : maps)
   {
@@ -842,7 +509,7 @@ bool RunReliefSweep(
   bool ok = true;
   if (!settings.CsvFile.empty())
   {
-    if (WriteCsv(settings.CsvFile, rows, settings))
+    if (report::WriteCsv(settings.CsvFile, rows, settings))
     {
       out << "wrote " << settings.CsvFile << "\n";
     }
@@ -859,9 +526,9 @@ bool RunReliefSweep(
     {
       labels.push_back(map.Label);
     }
-    ok = WritePlots(settings, rows, labels, out) && ok;
+    ok = report::WritePlots(settings, rows, labels, out) && ok;
   }
-  PrintSummary(settings, rows, out);
+  report::PrintSummary(settings, rows, out);
   if (rowsOut)
   {
     *rowsOut = rows;
@@ -873,7 +540,10 @@ bool RunReliefSweep(
 int RunReliefSweep(const std::vector<std::string>& args)
 {
   ReliefSweepSettings settings;
-  CommandLine cl;
+  CommandLine cl("mesolight bench relief",
+    "Usage: mesolight bench relief [options]\n"
+    "Accuracy and speed of every relief method per map, view angle and step setting,\n"
+    "against the exact CPU reference and the dense displaced mesh.\n");
   cl.AddValue("--maps", "LIST",
     "comma-separated maps: procedural patterns (Bricks, Stone, HemisphereTorus, ...) and 'file'",
     "Bricks,Stone,HemisphereTorus,file");
@@ -892,40 +562,30 @@ int RunReliefSweep(const std::vector<std::string>& args)
   cl.AddFlag("--no-fill",
     "keep the square, whole-wall framing (the wall is then a thin strip at grazing angles) "
     "instead of stretching the view so the wall fills the window");
-  cl.AddFlag("--help", "show this help");
   std::string error;
-  if (!cl.Parse(args, error))
+  int exitCode = 0;
+  if (!cl.ParseArguments(args, exitCode))
   {
-    std::cerr << "mesolight bench relief: " << error << "\n";
-    return 2;
-  }
-  if (cl.Has("--help"))
-  {
-    std::cout << "Usage: mesolight bench relief [options]\n"
-                 "Accuracy and speed of every relief method per map, view angle and step setting,\n"
-                 "against the exact CPU reference and the dense displaced mesh.\n\nOptions:\n";
-    cl.PrintOptions(std::cout);
-    return 0;
+    return exitCode; // --help printed, or a usage error reported
   }
   if (!cl.Positional().empty())
   {
     std::cerr << "mesolight bench relief: unexpected argument '" << cl.Positional()[0] << "'\n";
     return 2;
   }
-  settings.Maps = SplitList(cl.Get("--maps"));
+  settings.Maps = cl.GetStringList("--maps");
   settings.FillViewport = !cl.Has("--no-fill");
   settings.DepthFile = cl.Get("--depth-file");
-  settings.Angles.clear();
-  for (const std::string& a : SplitList(cl.Get("--angles")))
+  if (!cl.GetDoubleList("--angles", 0.0, 90.0, settings.Angles, error))
   {
-    char* end = nullptr;
-    const double angle = std::strtod(a.c_str(), &end);
-    if (end == a.c_str() || *end != '\0' || !(angle >= 0.0 && angle < 90.0))
+    return cl.UsageError(error);
+  }
+  for (double angle : settings.Angles)
+  {
+    if (angle == 90.0)
     {
-      std::cerr << "mesolight bench relief: --angles: '" << a << "' is not an angle in [0, 90)\n";
-      return 2;
+      return cl.UsageError("--angles: '90' is not an angle in [0, 90)");
     }
-    settings.Angles.push_back(angle);
   }
   const std::string size = cl.Get("--size");
   const size_t x = size.find('x');
@@ -945,16 +605,15 @@ int RunReliefSweep(const std::vector<std::string>& args)
     !cl.GetInt("--resolution", 2, 8192, settings.Resolution, error) ||
     !cl.GetDouble("--depth-scale", 1e-4, 10.0, settings.DepthScale, error))
   {
-    std::cerr << "mesolight bench relief: " << error << "\n";
-    return 2;
+    return cl.UsageError(error);
   }
   const std::string methods = cl.Get("--methods");
   if (methods != "all")
   {
-    settings.Methods = SplitList(methods);
+    settings.Methods = cl.GetStringList("--methods");
     for (const std::string& name : settings.Methods)
     {
-      if (MethodFromName(name) < 0)
+      if (vtkReliefProperty::GetMethodFromName(name.c_str()) < 0)
       {
         std::cerr << "mesolight bench relief: unknown method '" << name << "' (names:";
         for (int m = 0; m < vtkReliefProperty::NumberOfMethods; ++m)
@@ -968,10 +627,9 @@ int RunReliefSweep(const std::vector<std::string>& args)
   }
   if (settings.Maps.empty() || settings.Angles.empty())
   {
-    std::cerr << "mesolight bench relief: --maps and --angles need at least one entry\n";
-    return 2;
+    return cl.UsageError("--maps and --angles need at least one entry");
   }
-  settings.Steps = SplitList(cl.Get("--steps"));
+  settings.Steps = cl.GetStringList("--steps");
   for (const std::string& label : settings.Steps)
   {
     ReliefSweepStep step;

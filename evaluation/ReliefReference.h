@@ -14,6 +14,8 @@
 #ifndef mesolight_ReliefReference_h
 #define mesolight_ReliefReference_h
 
+#include "MesolightEvaluationModule.h" // for the export macro
+
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -44,7 +46,7 @@ struct ReliefReferenceInput
 };
 
 /** Per-pixel result. Fields other than State are meaningful only for covered pixels. */
-struct ReliefReference
+struct MESOLIGHTEVALUATION_EXPORT ReliefReference
 {
   enum PixelState : unsigned char
   {
@@ -84,7 +86,7 @@ struct ReliefReference
  * the input is unusable (no camera, empty size, a relief texture without a depth channel, a
  * non-positive depth scale).
  */
-bool ComputeReliefReference(
+MESOLIGHTEVALUATION_EXPORT bool ComputeReliefReference(
   const ReliefReferenceInput& input, ReliefReference& reference, std::string& error);
 
 /**
@@ -92,7 +94,7 @@ bool ComputeReliefReference(
  * texture, the options' window size and depth scale (or depthScale when it is positive, e.g. to
  * compute a deliberately wrong reference).
  */
-ReliefReferenceInput MakeReliefReferenceInput(
+MESOLIGHTEVALUATION_EXPORT ReliefReferenceInput MakeReliefReferenceInput(
   const ReliefScene& scene, const ReliefSceneOptions& options, double depthScale = 0.0);
 
 /** A GPU render's hit coordinates (HitUOutput, HitVOutput frames) against the reference. */
@@ -107,13 +109,14 @@ struct HitComparison
 };
 
 /** Compares decoded hit coordinates; the frames must have the reference's size. */
-HitComparison CompareHits(const ReliefReference& reference, const Frame& hitU, const Frame& hitV);
+MESOLIGHTEVALUATION_EXPORT HitComparison CompareHits(
+  const ReliefReference& reference, const Frame& hitU, const Frame& hitV);
 
 /**
  * % of the pixels covered in both where vtkReliefMapper's LightVisibilityOutput (white = lit)
  * disagrees with ReliefReference::LightVisible. coveredBoth receives the pixel count.
  */
-double CompareLightVisibility(
+MESOLIGHTEVALUATION_EXPORT double CompareLightVisibility(
   const ReliefReference& reference, const Frame& visibility, long long* coveredBoth = nullptr);
 
 } // namespace mesolight

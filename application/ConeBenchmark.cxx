@@ -65,21 +65,6 @@ double Quantile(std::vector<double> v, double q)
   return v[std::min(v.size() - 1, static_cast<size_t>(q * static_cast<double>(v.size())))];
 }
 
-std::vector<std::string> Split(const std::string& s)
-{
-  std::vector<std::string> out;
-  std::istringstream in(s);
-  std::string item;
-  while (std::getline(in, item, ','))
-  {
-    if (!item.empty())
-    {
-      out.push_back(item);
-    }
-  }
-  return out;
-}
-
 // The shader's searches on the CPU (vtkReliefMarchFS.glsl: mlLinearSearch, mlConeSearch,
 // mlBinaryRefine), for a view ray entering at origin (depth 0) with span (rate * dir, 1).
 struct Bracket
@@ -234,7 +219,11 @@ void SteppingAnalysis(const std::vector<ReliefPattern>& patterns,
 
 int RunConeBenchmark(const std::vector<std::string>& args)
 {
-  CommandLine cl;
+  CommandLine cl("mesolight bench cones",
+    "mesolight bench cones [options]\n\nTimes the bilinear-safe cone-map generators "
+    "(relaxed and conservative) per map and size,\nthe brute-force oracle on a small "
+    "map (extrapolated by its O(cells^2) cost), and compares\nthe cone widths with "
+    "per-texel-sample cones.\n");
   cl.AddValue("--maps", "A,B,..", "procedural maps: Bricks, Stone, HemisphereTorus, SineWave",
     "Bricks,Stone,HemisphereTorus");
   cl.AddValue("--sizes", "N,N,..", "map sizes (N x N texels) timed with the fast generators",
@@ -250,7 +239,6 @@ int RunConeBenchmark(const std::vector<std::string>& args)
   cl.AddValue("--stepping-rays", "N", "rays per map and angle of that analysis", "20000");
   cl.AddValue("--depth-scale", "K", "depth scale of that analysis (as in bench relief)", "0.04");
   cl.AddValue("--csv", "FILE", "write one CSV row per map, size and cone type");
-  cl.AddFlag("--help", "show this help");
   std::string error;
   int threads = 2;
   int oracleSize = 48;
@@ -259,7 +247,12 @@ int RunConeBenchmark(const std::vector<std::string>& args)
   int steppingSize = 256;
   int steppingRays = 20000;
   double depthScale = 0.04;
-  if (!cl.Parse(args, error) || !cl.GetInt("--threads", 1, 256, threads, error) ||
+  int exitCode = 0;
+  if (!cl.ParseArguments(args, exitCode))
+  {
+    return exitCode; // --help printed, or a usage error reported
+  }
+  if (!cl.GetInt("--threads", 1, 256, threads, error) ||
     !cl.GetInt("--oracle-size", 2, 512, oracleSize, error) ||
     !cl.GetInt("--compare-size", 0, 2048, compareSize, error) ||
     !cl.GetDouble("--tolerance", 0.0, 10.0, tolerance, error) ||
@@ -267,20 +260,10 @@ int RunConeBenchmark(const std::vector<std::string>& args)
     !cl.GetInt("--stepping-rays", 1, 10000000, steppingRays, error) ||
     !cl.GetDouble("--depth-scale", 1e-4, 10.0, depthScale, error))
   {
-    std::cerr << "mesolight bench cones: " << error << "\n";
-    return 2;
-  }
-  if (cl.Has("--help"))
-  {
-    std::cout << "mesolight bench cones [options]\n\nTimes the bilinear-safe cone-map generators "
-                 "(relaxed and conservative) per map and size,\nthe brute-force oracle on a small "
-                 "map (extrapolated by its O(cells^2) cost), and compares\nthe cone widths with "
-                 "per-texel-sample cones.\n\nOptions:\n";
-    cl.PrintOptions(std::cout);
-    return 0;
+    return cl.UsageError(error);
   }
   std::vector<ReliefPattern> patterns;
-  const std::vector<std::string> mapNames = Split(cl.Get("--maps"));
+  const std::vector<std::string> mapNames = cl.GetStringList("--maps");
   for (const std::string& name : mapNames)
   {
     ReliefPattern p;
@@ -292,15 +275,9 @@ int RunConeBenchmark(const std::vector<std::string>& args)
     patterns.push_back(p);
   }
   std::vector<int> sizes;
-  for (const std::string& item : Split(cl.Get("--sizes")))
+  if (!cl.GetIntList("--sizes", 2, 8192, sizes, error))
   {
-    const int n = std::atoi(item.c_str());
-    if (n < 2 || n > 8192)
-    {
-      std::cerr << "mesolight bench cones: bad size '" << item << "'\n";
-      return 2;
-    }
-    sizes.push_back(n);
+    return cl.UsageError(error);
   }
   std::ofstream csv;
   if (cl.Has("--csv"))

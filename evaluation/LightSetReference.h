@@ -1,15 +1,16 @@
-// `mesolight bench ibl`: a relief surface lit by median-cut light sets of an environment.
-// Frame time against the number of lights (one run for all counts, like the relief thesis'
-// table 1), the effect of each skip on time and error, the error of each light set against a
-// Monte Carlo reference with exact height-field visibility, and relief vs relaxed cone stepping at
-// equal error against the exact render of the same light set.
-#ifndef mesolight_LightSetBenchmark_h
-#define mesolight_LightSetBenchmark_h
+// Exact references for a relief surface lit by an environment or by a light set of it: the
+// irradiance at each reference pixel's exact hit (ReliefReference.h), shadowed by the exact
+// bilinear height field (HeightFieldTracer.h), and a render's error against it. `mesolight bench
+// ibl` and the light-set tests measure renders against these.
+#ifndef mesolight_LightSetReference_h
+#define mesolight_LightSetReference_h
 
-#include "ReliefScene.h"
+#include "MesolightEvaluationModule.h" // for the export macro
 
-#include <string>
+#include <cstddef>
 #include <vector>
+
+class vtkImageData;
 
 namespace mesolight
 {
@@ -30,9 +31,9 @@ struct EnvironmentIrradianceSample
  * world depth = d x depthScale, +Z up for both the wall and the environment. Empty if `relief` is
  * not a 4-component relief texture or there is no environment.
  */
-std::vector<EnvironmentIrradianceSample> ComputeEnvironmentReference(const ReliefReference& hits,
-  vtkImageData* relief, vtkImageData* environment, double depthScale, int maxPixels,
-  int samplesPerPixel, bool shadows);
+MESOLIGHTEVALUATION_EXPORT std::vector<EnvironmentIrradianceSample> ComputeEnvironmentReference(
+  const ReliefReference& hits, vtkImageData* relief, vtkImageData* environment, double depthScale,
+  int maxPixels, int samplesPerPixel, bool shadows);
 
 /**
  * Exact reference for a light set (vtkMedianCutLights' light texture): for the same pixels as
@@ -42,18 +43,16 @@ std::vector<EnvironmentIrradianceSample> ComputeEnvironmentReference(const Relie
  * for every method. Empty if `lights` is not an N x 2 light texture of at least 3 components or
  * `relief` is not a 4-component relief texture.
  */
-std::vector<EnvironmentIrradianceSample> ComputeLightSetReference(const ReliefReference& hits,
-  vtkImageData* relief, vtkImageData* lights, double depthScale, int maxPixels);
+MESOLIGHTEVALUATION_EXPORT std::vector<EnvironmentIrradianceSample> ComputeLightSetReference(
+  const ReliefReference& hits, vtkImageData* relief, vtkImageData* lights, double depthScale,
+  int maxPixels);
 
 /**
  * Mean relative error of a render against the reference: the render's colour at each sampled
  * pixel against 255 x exposure x albedo / pi x irradiance (white albedo, no other light).
  */
-double EnvironmentError(const Frame& frame, const std::vector<EnvironmentIrradianceSample>& ref,
-  double exposure);
-
-/** `mesolight bench ibl [--counts 32,...,1024] [--frames N] [--csv FILE] ...` */
-int RunLightSetBenchmark(const std::vector<std::string>& args);
+MESOLIGHTEVALUATION_EXPORT double EnvironmentError(
+  const Frame& frame, const std::vector<EnvironmentIrradianceSample>& ref, double exposure);
 
 } // namespace mesolight
 

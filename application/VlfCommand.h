@@ -12,11 +12,17 @@ namespace mesolight
 /**
  * mesolight vlf propagate [SCENE.obj] --out FIELD [--directions N] [--rays N] [--tiles M]
  *   [--iterations K] [--memory-budget GIB] [--resume | --force]
+ * `args` excludes the words "vlf propagate". Returns 0 on success, 1 on failure, 2 on bad
+ * arguments.
+ */
+int RunVlfPropagate(const std::vector<std::string>& args);
+
+/**
  * mesolight vlf render FIELD --out IMAGE.png [--size WxH] [--camera X,Y,Z,FX,FY,FZ]
  *   [--view-angle DEG] [--exposure X]
- * `args` excludes the word "vlf". Returns 0 on success, 1 on failure, 2 on bad arguments.
+ * `args` excludes the words "vlf render". Returns 0 on success, 1 on failure, 2 on bad arguments.
  */
-int RunVlfCommand(const std::vector<std::string>& args);
+int RunVlfRender(const std::vector<std::string>& args);
 
 /**
  * mesolight bench vlf [--directions 513,2049] [--rays 32,64,128] [--iterations K]

@@ -1,0 +1,300 @@
+#include "CommandLine.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <iomanip>
+#include <iostream>
+#include <limits>
+#include <sstream>
+
+namespace mesolight
+{
+namespace
+{
+// A finite number in [low, high]; the message says which option and item is wrong.
+bool ParseNumber(const std::string& name, const std::string& text, double low, double high,
+  double& value, std::string& error)
+{
+  char* end = nullptr;
+  const double parsed = std::strtod(text.c_str(), &end);
+  if (text.empty() || end == text.c_str() || *end != '\0' || !std::isfinite(parsed))
+  {
+    error = "option " + name + ": '" + text + "' is not a number";
+    return false;
+  }
+  if (parsed < low || parsed > high)
+  {
+    std::ostringstream range;
+    range << std::setprecision(12) // bounds such as 1 << 26 in full, not 6.71089e+07
+          << "option " << name << ": " << parsed << " is outside [" << low << ", " << high << "]";
+    error = range.str();
+    return false;
+  }
+  value = parsed;
+  return true;
+}
+
+std::vector<std::string> SplitCommas(const std::string& text)
+{
+  std::vector<std::string> items;
+  std::istringstream in(text);
+  std::string item;
+  while (std::getline(in, item, ','))
+  {
+    while (!item.empty() && item.front() == ' ')
+    {
+      item.erase(item.begin());
+    }
+    while (!item.empty() && item.back() == ' ')
+    {
+      item.pop_back();
+    }
+    if (!item.empty())
+    {
+      items.push_back(item);
+    }
+  }
+  return items;
+}
+} // namespace
+
+CommandLine::CommandLine(const std::string& name, const std::string& synopsis)
+  : Name(name)
+  , Synopsis(synopsis)
+{
+}
+
+void CommandLine::AddValue(const std::string& name, const std::string& meta,
+  const std::string& help, const std::string& defaultValue)
+{
+  this->Order.push_back(name);
+  Option& option = this->Options[name];
+  option.Meta = meta;
+  option.Help = help;
+  option.Default = defaultValue;
+  option.TakesValue = true;
+}
+
+void CommandLine::AddFlag(const std::string& name, const std::string& help)
+{
+  this->Order.push_back(name);
+  Option& option = this->Options[name];
+  option.Help = help;
+  option.TakesValue = false;
+}
+
+bool CommandLine::Parse(const std::vector<std::string>& args, std::string& error)
+{
+  for (size_t i = 0; i < args.size(); ++i)
+  {
+    const std::string& arg = args[i];
+    if (arg.size() < 3 || arg.compare(0, 2, "--") != 0)
+    {
+      if (!arg.empty() && arg[0] == '-' && arg.size() > 1)
+      {
+        error = "unknown option '" + arg + "' (options are spelled --name)";
+        return false;
+      }
+      this->PositionalArgs.push_back(arg);
+      continue;
+    }
+    std::string name = arg;
+    std::string value;
+    bool inlineValue = false;
+    const size_t eq = arg.find('=');
+    if (eq != std::string::npos)
+    {
+      name = arg.substr(0, eq);
+      value = arg.substr(eq + 1);
+      inlineValue = true;
+    }
+    auto it = this->Options.find(name);
+    if (it == this->Options.end())
+    {
+      error = "unknown option '" + name + "' (see --help)";
+      return false;
+    }
+    if (it->second.TakesValue)
+    {
+      if (!inlineValue)
+      {
+        if (i + 1 >= args.size())
+        {
+          error = "option " + name + " needs a value (" + it->second.Meta + ")";
+          return false;
+        }
+        value = args[++i];
+      }
+      this->Values[name] = value;
+    }
+    else
+    {
+      if (inlineValue)
+      {
+        error = "option " + name + " takes no value";
+        return false;
+      }
+      this->Values[name] = "1";
+    }
+  }
+  return true;
+}
+
+bool CommandLine::ParseArguments(const std::vector<std::string>& args, int& status)
+{
+  if (this->Options.count("--help") == 0)
+  {
+    this->AddFlag("--help", "show this help");
+  }
+  std::string error;
+  if (!this->Parse(args, error))
+  {
+    status = this->UsageError(error);
+    return false;
+  }
+  if (this->Has("--help"))
+  {
+    this->PrintHelp(std::cout);
+    status = 0;
+    return false;
+  }
+  status = 0;
+  return true;
+}
+
+int CommandLine::UsageError(const std::string& message) const
+{
+  std::cerr << this->Name << ": " << message << "\n";
+  return 2;
+}
+
+void CommandLine::PrintHelp(std::ostream& os) const
+{
+  os << this->Synopsis << "\nOptions:\n";
+  this->PrintOptions(os);
+}
+
+bool CommandLine::Has(const std::string& name) const
+{
+  return this->Values.count(name) > 0;
+}
+
+std::string CommandLine::Get(const std::string& name) const
+{
+  auto it = this->Values.find(name);
+  if (it != this->Values.end())
+  {
+    return it->second;
+  }
+  auto opt = this->Options.find(name);
+  return opt != this->Options.end() ? opt->second.Default : std::string();
+}
+
+bool CommandLine::GetDouble(
+  const std::string& name, double low, double high, double& value, std::string& error) const
+{
+  const std::string text = this->Get(name);
+  if (text.empty())
+  {
+    return true; // keep the caller's default
+  }
+  return ParseNumber(name, text, low, high, value, error);
+}
+
+bool CommandLine::GetInt(
+  const std::string& name, int low, int high, int& value, std::string& error) const
+{
+  double parsed = value;
+  if (!this->GetDouble(name, low, high, parsed, error))
+  {
+    return false;
+  }
+  if (parsed != std::floor(parsed))
+  {
+    error = "option " + name + " needs a whole number";
+    return false;
+  }
+  value = static_cast<int>(parsed);
+  return true;
+}
+
+bool CommandLine::GetDoubleList(const std::string& name, double low, double high,
+  std::vector<double>& values, std::string& error) const
+{
+  values.clear();
+  for (const std::string& item : SplitCommas(this->Get(name)))
+  {
+    double value = 0.0;
+    if (!ParseNumber(name, item, low, high, value, error))
+    {
+      return false;
+    }
+    values.push_back(value);
+  }
+  if (values.empty())
+  {
+    error = "option " + name + " needs at least one value";
+    return false;
+  }
+  return true;
+}
+
+bool CommandLine::GetIntList(const std::string& name, int low, int high, std::vector<int>& values,
+  std::string& error) const
+{
+  std::vector<double> parsed;
+  if (!this->GetDoubleList(name, low, high, parsed, error))
+  {
+    return false;
+  }
+  values.clear();
+  for (double value : parsed)
+  {
+    if (value != std::floor(value))
+    {
+      std::ostringstream message;
+      message << "option " << name << ": " << value << " is not a whole number";
+      error = message.str();
+      return false;
+    }
+    values.push_back(static_cast<int>(value));
+  }
+  return true;
+}
+
+bool CommandLine::GetDoubleVector(const std::string& name, size_t count, double* values) const
+{
+  std::vector<double> list;
+  std::string error;
+  if (!this->GetDoubleList(name, std::numeric_limits<double>::lowest(),
+        std::numeric_limits<double>::max(), list, error) ||
+    list.size() != count)
+  {
+    return false;
+  }
+  std::copy(list.begin(), list.end(), values);
+  return true;
+}
+
+std::vector<std::string> CommandLine::GetStringList(const std::string& name) const
+{
+  return SplitCommas(this->Get(name));
+}
+
+void CommandLine::PrintOptions(std::ostream& os) const
+{
+  for (const std::string& name : this->Order)
+  {
+    const Option& option = this->Options.at(name);
+    std::string head = "  " + name + (option.TakesValue ? " " + option.Meta : "");
+    os << std::left << std::setw(30) << head << " " << option.Help;
+    if (!option.Default.empty())
+    {
+      os << " (default: " << option.Default << ")";
+    }
+    os << "\n";
+  }
+}
+
+} // namespace mesolight

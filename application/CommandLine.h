@@ -1,0 +1,87 @@
+// A small, strict command-line parser for the `mesolight` tool: every option is declared with
+// its help text, so `--help` documents exactly what is accepted and unknown options are errors.
+// Help and usage errors are written here once: a command gives its name and synopsis, and
+// ParseArguments prints the help on --help (exit 0) or the error on bad arguments (exit 2).
+#ifndef mesolight_CommandLine_h
+#define mesolight_CommandLine_h
+
+#include <map>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace mesolight
+{
+
+class CommandLine
+{
+public:
+  CommandLine() = default;
+  /**
+   * name: the command as typed ("mesolight bake"), the prefix of its error messages; synopsis:
+   * its usage line and description, printed by --help above the options.
+   */
+  CommandLine(const std::string& name, const std::string& synopsis);
+
+  /** Declares an option taking a value (e.g. "--out", "FILE", "where to write"). */
+  void AddValue(const std::string& name, const std::string& meta, const std::string& help,
+    const std::string& defaultValue = "");
+  /** Declares a flag without a value. */
+  void AddFlag(const std::string& name, const std::string& help);
+
+  /** Parses args; positional arguments are kept in order. False with a message on error. */
+  bool Parse(const std::vector<std::string>& args, std::string& error);
+
+  /**
+   * Declares --help (last, unless declared), parses args and handles what ends the command
+   * there: on --help prints the help and sets status 0; on an error prints "NAME: error" and sets
+   * status 2. True when the command goes on.
+   */
+  bool ParseArguments(const std::vector<std::string>& args, int& status);
+  /** Prints "NAME: message" on stderr; returns 2, the exit code of a usage error. */
+  int UsageError(const std::string& message) const;
+  /** Prints the synopsis and the options. */
+  void PrintHelp(std::ostream& os) const;
+
+  bool Has(const std::string& name) const;
+  std::string Get(const std::string& name) const;
+  /** Numeric accessors; false with a message when the value is not a finite number in range. */
+  bool GetInt(const std::string& name, int low, int high, int& value, std::string& error) const;
+  bool GetDouble(
+    const std::string& name, double low, double high, double& value, std::string& error) const;
+  /**
+   * Comma-separated lists ("512,1024"). Every item must be a number in [low, high] (whole for
+   * GetIntList), and there must be at least one; false with a message naming the option and the
+   * item otherwise.
+   */
+  bool GetIntList(const std::string& name, int low, int high, std::vector<int>& values,
+    std::string& error) const;
+  bool GetDoubleList(const std::string& name, double low, double high, std::vector<double>& values,
+    std::string& error) const;
+  /** An X,Y,Z-style value: exactly count finite numbers. False otherwise. */
+  bool GetDoubleVector(const std::string& name, size_t count, double* values) const;
+  /** The items of a comma-separated list, spaces around them and empty items dropped. */
+  std::vector<std::string> GetStringList(const std::string& name) const;
+  const std::vector<std::string>& Positional() const { return this->PositionalArgs; }
+
+  void PrintOptions(std::ostream& os) const;
+
+private:
+  struct Option
+  {
+    std::string Meta;
+    std::string Help;
+    std::string Default;
+    bool TakesValue = false;
+  };
+  std::string Name;
+  std::string Synopsis;
+  std::vector<std::string> Order;
+  std::map<std::string, Option> Options;
+  std::map<std::string, std::string> Values;
+  std::vector<std::string> PositionalArgs;
+};
+
+} // namespace mesolight
+
+#endif

@@ -1,0 +1,26 @@
+// Image commands of the `mesolight` tool: `bake` (relief texture), `cone` (cone-packed relief
+// texture) and `probe` (light probe -> lat-long environment).
+#ifndef mesolight_ImageCommands_h
+#define mesolight_ImageCommands_h
+
+#include <string>
+#include <vector>
+
+namespace mesolight
+{
+
+/** mesolight bake DEPTH_IMAGE --out RELIEF_IMAGE [options]; `args` excludes "bake". */
+int RunBakeCommand(const std::vector<std::string>& args);
+
+/** mesolight cone DEPTH_IMAGE --out FILE.exr [options]; `args` excludes "cone". */
+int RunConeCommand(const std::vector<std::string>& args);
+
+/** mesolight probe PROBE_IMAGE --out FILE.exr [options]; `args` excludes "probe". */
+int RunProbeCommand(const std::vector<std::string>& args);
+
+/** Whether two paths name the same existing file (so an output would overwrite an input). */
+bool SameFile(const std::string& a, const std::string& b);
+
+} // namespace mesolight
+
+#endif

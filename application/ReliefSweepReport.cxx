@@ -1,0 +1,321 @@
+#include "ReliefSweepReport.h"
+
+#include "ChartPlot.h"
+#include "vtkReliefMapper.h"
+#include "vtkReliefProperty.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <map>
+#include <sstream>
+
+namespace mesolight
+{
+namespace report
+{
+std::string Fixed(double value, int precision)
+{
+  std::ostringstream s;
+  s << std::fixed << std::setprecision(precision) << value;
+  return s.str();
+}
+
+void PrintHeader(std::ostream& out)
+{
+  out << std::left << std::setw(16) << "map" << std::right << std::setw(6) << "angle" << "  "
+      << std::left << std::setw(22) << "method" << std::setw(9) << "steps" << std::right
+      << std::setw(9) << "ms/frame" << std::setw(9) << "samples" << std::setw(10) << "hit mean" << std::setw(9) << "hit p99"
+      << std::setw(8) << "silh %" << std::setw(8) << "RMSE" << std::setw(7) << "PSNR"
+      << std::setw(9) << "shadow %" << "\n";
+}
+
+void PrintRow(std::ostream& out, const ReliefSweepRow& r)
+{
+  out << std::left << std::setw(16) << r.Map << std::right << std::setw(6) << Fixed(r.Angle, 0)
+      << "  " << std::left << std::setw(22) << r.MethodName << std::setw(9) << r.Step.Label
+      << std::right << std::setw(9) << Fixed(r.MedianMs, 1) << std::setw(9)
+      << Fixed(r.SamplesPerPixel, 1) << std::setw(10) << Fixed(r.HitMeanTexels, 3) << std::setw(9) << Fixed(r.HitP99Texels, 2) << std::setw(8)
+      << Fixed(r.SilhouetteMismatch, 2) << std::setw(8) << Fixed(r.ColorRmse, 2) << std::setw(7)
+      << Fixed(r.Psnr, 1) << std::setw(9) << Fixed(r.ShadowMismatch, 2) << "\n";
+}
+
+bool WriteCsv(const std::string& file, const std::vector<ReliefSweepRow>& rows,
+  const ReliefSweepSettings& settings)
+{
+  std::ofstream csv(file);
+  csv << "map,view_angle_deg,method,linear_steps,refinement_steps,steps,width,height,depth_scale,"
+         "ms_per_frame,first_frame_ms,samples_per_pixel,hit_error_mean_texels,hit_error_p99_texels,"
+         "silhouette_mismatch_pct,color_rmse,psnr_db,shadow_mismatch_pct,covered_both,"
+         "footprint\n";
+  csv << std::setprecision(8);
+  for (const ReliefSweepRow& r : rows)
+  {
+    csv << '"' << r.Map << "\"," << r.Angle << ',' << r.MethodName << ',' << r.Step.LinearSteps
+        << ',' << r.Step.RefinementSteps << ",\"" << r.Step.Label << "\"," << settings.Width << ','
+        << settings.Height << ',' << settings.DepthScale << ',' << r.MedianMs << ',' << r.FirstMs
+        << ',' << r.SamplesPerPixel << ',' << r.HitMeanTexels << ',' << r.HitP99Texels << ',' << r.SilhouetteMismatch << ','
+        << r.ColorRmse << ',' << r.Psnr << ',' << r.ShadowMismatch << ',' << r.CoveredBoth << ','
+        << r.Footprint << "\n";
+  }
+  return static_cast<bool>(csv);
+}
+
+namespace
+{
+std::string AngleTag(double angle)
+{
+  std::ostringstream s;
+  s << angle;
+  std::string t = s.str();
+  std::replace(t.begin(), t.end(), '.', 'p');
+  return t;
+}
+} // namespace
+
+// One chart per view angle: every configuration's ms/frame and mean hit error, averaged over the
+// maps, one series per method, and the Pareto front.
+bool WritePlots(const ReliefSweepSettings& settings, const std::vector<ReliefSweepRow>& rows,
+  const std::vector<std::string>& mapLabels, std::ostream& out)
+{
+  for (double angle : settings.Angles)
+  {
+    struct Sum
+    {
+      double Ms = 0.0;
+      double Error = 0.0;
+      int N = 0;
+    };
+    std::map<std::pair<int, std::string>, Sum> sums; // (method, step label)
+    for (const ReliefSweepRow& r : rows)
+    {
+      if (r.Angle != angle)
+      {
+        continue;
+      }
+      Sum& s = sums[{ r.Method, r.Step.Label }];
+      s.Ms += r.MedianMs;
+      s.Error += r.HitMeanTexels;
+      ++s.N;
+    }
+    if (sums.empty())
+    {
+      continue;
+    }
+    ScatterChart chart;
+    std::ostringstream title;
+    title << "View " << angle << " deg: speed vs accuracy (" << settings.Width << "x"
+          << settings.Height << " px, mean over";
+    for (const std::string& m : mapLabels)
+    {
+      title << " " << m;
+    }
+    title << ")";
+    chart.Title = title.str();
+    chart.XLabel = "ms/frame (median)";
+    chart.YLabel = "mean hit error (texels, log)";
+    chart.LogY = true;
+    chart.YFloor = 1e-3;
+    std::map<int, size_t> seriesOf;
+    std::vector<double> allX, allY;
+    for (const auto& entry : sums)
+    {
+      const int method = entry.first.first;
+      if (!seriesOf.count(method))
+      {
+        seriesOf[method] = chart.Points.size();
+        chart.Points.push_back({ vtkReliefProperty::GetMethodName(method), {}, {} });
+      }
+      ChartSeries& series = chart.Points[seriesOf[method]];
+      const double x = entry.second.Ms / entry.second.N;
+      const double y = entry.second.Error / entry.second.N;
+      series.X.push_back(x);
+      series.Y.push_back(y);
+      allX.push_back(x);
+      allY.push_back(y);
+    }
+    chart.Line.Name = "Pareto front";
+    for (size_t i : ParetoFront(allX, allY))
+    {
+      chart.Line.X.push_back(allX[i]);
+      chart.Line.Y.push_back(allY[i]);
+    }
+    const std::string file =
+      (std::filesystem::path(settings.PlotDirectory) / ("relief-sweep-view" + AngleTag(angle) + ".png"))
+        .string();
+    std::string error;
+    if (!WriteScatterChartPng(chart, file, error))
+    {
+      out << "bench relief: " << error << "\n";
+      return false;
+    }
+    out << "wrote " << file << "\n";
+  }
+  return true;
+}
+
+namespace
+{
+// Relaxed cones vs relief at equal mean hit error (issue target: >= 2x). Each relief
+// configuration's mean hit error E is a target; for each method take its fastest configuration
+// (same map and angle) with mean hit error <= E: both Pareto fronts read at E, the minimum over
+// noisy timings taken on both sides alike. Cost is measured twice: llvmpipe ms/frame, and
+// relief-texture samples per pixel (what the march costs on any GPU, without llvmpipe's noise and
+// fixed per-frame cost). Targets of at most 0.1 texel (sub-texel accurate settings) are also
+// reported apart: that is where a renderer that must look right at grazing angles operates.
+void PrintConeVersusRelief(const ReliefSweepSettings& settings,
+  const std::vector<ReliefSweepRow>& rows, std::ostream& out)
+{
+  const double accurate = 0.1; // texels
+  auto median = [](std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return v.empty() ? 0.0 : v[v.size() / 2];
+  };
+  auto cell = [&median](const std::vector<double>& v) {
+    return v.empty() ? std::string("-") : Fixed(median(v), 2) + " (" + std::to_string(v.size()) + ")";
+  };
+  std::vector<std::string> maps;
+  for (const ReliefSweepRow& r : rows)
+  {
+    if (std::find(maps.begin(), maps.end(), r.Map) == maps.end())
+    {
+      maps.push_back(r.Map);
+    }
+  }
+  struct Ratios
+  {
+    std::vector<double> Ms, Samples, AccurateMs, AccurateSamples;
+  };
+  std::map<double, Ratios> perAngle;
+  Ratios all;
+  std::ostringstream table;
+  bool any = false;
+  for (const std::string& map : maps)
+  {
+    for (const double angle : settings.Angles)
+    {
+      Ratios here;
+      for (const ReliefSweepRow& target : rows)
+      {
+        if (target.Method != vtkReliefProperty::Relief || target.Angle != angle || target.Map != map)
+        {
+          continue;
+        }
+        const ReliefSweepRow* fastest[2] = { nullptr, nullptr }; // relief, relaxed cone
+        const ReliefSweepRow* leanest[2] = { nullptr, nullptr };
+        for (const ReliefSweepRow& r : rows)
+        {
+          const int k = r.Method == vtkReliefProperty::Relief ? 0
+            : r.Method == vtkReliefProperty::RelaxedConeBinary ? 1
+                                                             : -1;
+          if (k < 0 || r.Map != map || r.Angle != angle || r.HitMeanTexels > target.HitMeanTexels)
+          {
+            continue;
+          }
+          if (!fastest[k] || r.MedianMs < fastest[k]->MedianMs)
+          {
+            fastest[k] = &r;
+          }
+          if (!leanest[k] || r.SamplesPerPixel < leanest[k]->SamplesPerPixel)
+          {
+            leanest[k] = &r;
+          }
+        }
+        if (!fastest[1] || fastest[1]->MedianMs <= 0.0 || leanest[1]->SamplesPerPixel <= 0.0)
+        {
+          continue;
+        }
+        const double ms = fastest[0]->MedianMs / fastest[1]->MedianMs;
+        const double samples = leanest[0]->SamplesPerPixel / leanest[1]->SamplesPerPixel;
+        for (Ratios* into : { &here, &perAngle[angle], &all })
+        {
+          into->Ms.push_back(ms);
+          into->Samples.push_back(samples);
+          if (target.HitMeanTexels <= accurate)
+          {
+            into->AccurateMs.push_back(ms);
+            into->AccurateSamples.push_back(samples);
+          }
+        }
+      }
+      if (here.Ms.empty())
+      {
+        continue;
+      }
+      any = true;
+      table << "    " << std::left << std::setw(18) << map << std::right << std::setw(5)
+            << Fixed(angle, 0) << std::setw(16) << cell(here.Ms) << std::setw(16)
+            << cell(here.Samples) << std::setw(16) << cell(here.AccurateMs) << std::setw(16)
+            << cell(here.AccurateSamples) << "\n";
+    }
+  }
+  if (!any)
+  {
+    out << "- relaxed cones vs relief: skipped (needs relief and relaxed-cone rows; cone maps "
+           "unavailable or method not selected)\n";
+    return;
+  }
+  out << "- relaxed cones vs relief at equal mean hit error: relief / relaxed cone, each method's "
+         "cheapest setting reaching each relief setting's error; median (number of error "
+         "targets), in ms/frame and in relief-texture samples per pixel; 'accurate' = targets <= "
+      << accurate << " texel\n"
+      << "    " << std::left << std::setw(18) << "map" << std::right << std::setw(5) << "angle"
+      << std::setw(16) << "ms" << std::setw(16) << "samples" << std::setw(16) << "accurate ms"
+      << std::setw(16) << "accurate samp." << "\n"
+      << table.str();
+  for (const auto& entry : perAngle)
+  {
+    out << "    " << std::left << std::setw(18) << "all maps" << std::right << std::setw(5)
+        << Fixed(entry.first, 0) << std::setw(16) << cell(entry.second.Ms) << std::setw(16)
+        << cell(entry.second.Samples) << std::setw(16) << cell(entry.second.AccurateMs)
+        << std::setw(16) << cell(entry.second.AccurateSamples) << "\n";
+  }
+  out << "    " << std::left << std::setw(18) << "all" << std::right << std::setw(5) << "-"
+      << std::setw(16) << cell(all.Ms) << std::setw(16) << cell(all.Samples) << std::setw(16)
+      << cell(all.AccurateMs) << std::setw(16) << cell(all.AccurateSamples) << "\n";
+}
+} // namespace
+
+void PrintSummary(const ReliefSweepSettings& settings, const std::vector<ReliefSweepRow>& rows,
+  std::ostream& out)
+{
+  out << "\nSummary\n";
+  PrintConeVersusRelief(settings, rows, out);
+
+  // The exact methods at the most grazing angle.
+  double grazing = -1.0;
+  for (double a : settings.Angles)
+  {
+    grazing = std::max(grazing, a);
+  }
+  if (grazing < 0.0)
+  {
+    return;
+  }
+  out << "- mean hit error of the exact methods at " << grazing << " deg"
+      << (grazing == 85.0 ? "" : " (85 deg not swept: the most grazing angle instead)") << ":\n";
+  bool any = false;
+  for (const ReliefSweepRow& r : rows)
+  {
+    const bool exactRelief = r.Method == vtkReliefProperty::Relief && r.Step.LinearSteps == 32 &&
+      r.Step.RefinementSteps == 8;
+    if (r.Angle != grazing || !(exactRelief || r.Method == vtkReliefProperty::MaximumMipmap))
+    {
+      continue;
+    }
+    any = true;
+    out << "    " << std::left << std::setw(16) << r.Map << std::setw(12) << r.MethodName
+        << std::setw(9) << r.Step.Label << std::right << " mean " << Fixed(r.HitMeanTexels, 3)
+        << " texels, p99 " << Fixed(r.HitP99Texels, 2) << ", " << Fixed(r.MedianMs, 1)
+        << " ms/frame\n";
+  }
+  if (!any)
+  {
+    out << "    (neither max-mipmap nor relief 32+8 was swept)\n";
+  }
+}
+
+} // namespace report
+} // namespace mesolight

@@ -1,0 +1,293 @@
+#include "RenderCommand.h"
+
+#include "CommandLine.h"
+#include "ImageCommands.h"
+#include "ImageCompare.h"
+#include "ReliefBenchmark.h"
+#include "ReliefScene.h"
+#include "vtkReliefMapper.h"
+#include "vtkReliefProperty.h"
+
+#include <vtkInteractorStyleTrackballCamera.h>
+#include <vtkNew.h>
+#include <vtkObjectFactory.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderWindowInteractor.h>
+#include <vtkRenderer.h>
+#include <vtkTextActor.h>
+#include <vtkTextProperty.h>
+
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace mesolight
+{
+namespace
+{
+
+// Options shared by every command that builds the relief scene.
+void AddSceneOptions(CommandLine& cl)
+{
+  cl.AddValue("--pattern", "NAME", "procedural map: Bricks, Stone, HemisphereTorus, Flat, SineWave", "Bricks");
+  cl.AddValue("--depth-file", "IMAGE", "use this depth image (any OpenImageIO format) instead");
+  cl.AddFlag("--height", "the depth image stores height (white = high) rather than depth");
+  cl.AddValue("--resolution", "N", "texels per side of the procedural map", "512");
+  cl.AddValue("--depth-scale", "K", "relief depth as a fraction of the wall width", "0.04");
+  cl.AddValue("--method", "NAME",
+    "texture, bump, parallax, parallax-limit, parallax-slope, iterative-parallax, binary, secant, "
+    "linear (steep), pom, relief, interval, relaxed-cone, relaxed-cone-interval, cone, max-mipmap",
+    "relief");
+  cl.AddValue("--linear-steps", "N",
+    "linear search steps (cone steps; iterations for iterative parallax and max-mipmap, "
+    "which defaults to 128)",
+    "10");
+  cl.AddValue("--refinement-steps", "N", "binary / interval / secant refinement steps", "8");
+  cl.AddFlag("--adaptive-steps", "fewer linear steps head-on, --linear-steps at grazing angles");
+  cl.AddFlag("--level-of-detail", "march the height field at the pixel footprint's mipmap level");
+  cl.AddFlag("--no-shadows", "no self-shadowing");
+  cl.AddFlag("--no-silhouettes", "keep fragments whose hit leaves the texture");
+  cl.AddFlag("--no-depth-write", "keep the mesh depth instead of the hit depth");
+  cl.AddValue("--size", "WxH", "image size in pixels", "800x800");
+  cl.AddValue("--view-angle", "DEG", "camera angle from the wall normal", "55");
+  cl.AddValue("--azimuth", "DEG", "camera turn about the wall normal", "20");
+  cl.AddValue("--lights", "N", "VTK lights: 0 = none, 1 = key light, 2 = key + fill", "2");
+  cl.AddValue("--environment", "SPEC",
+    "light also by an environment: procedural:sky, procedural:sun or a lat-long HDR file");
+  cl.AddValue("--env-lights", "N", "median-cut lights of the environment", "128");
+  cl.AddValue("--exposure", "X", "scale of the environment lighting", "1");
+  cl.AddFlag("--tone-map", "Reinhard tone mapping of the environment-lit colour");
+  cl.AddValue("--light-elevation", "DEG", "key light elevation above the wall", "35");
+}
+
+bool ReadSceneOptions(const CommandLine& cl, ReliefSceneOptions& o, std::string& error)
+{
+  o.Pattern = cl.Get("--pattern");
+  o.DepthFile = cl.Get("--depth-file");
+  o.DepthFileIsHeight = cl.Has("--height");
+  o.Method = cl.Get("--method");
+  o.SelfShadowing = !cl.Has("--no-shadows");
+  o.Silhouettes = !cl.Has("--no-silhouettes");
+  o.WriteDepth = !cl.Has("--no-depth-write");
+  o.AdaptiveSteps = cl.Has("--adaptive-steps");
+  o.Environment = cl.Get("--environment");
+  o.ToneMapping = cl.Has("--tone-map");
+  o.LevelOfDetail = cl.Has("--level-of-detail");
+  if (!cl.GetInt("--resolution", 1, 16384, o.Resolution, error) ||
+    !cl.GetDouble("--depth-scale", 0.0, 10.0, o.DepthScale, error) ||
+    !cl.GetInt("--linear-steps", 1, 1024, o.LinearSteps, error) ||
+    !cl.GetInt("--refinement-steps", 0, 64, o.RefinementSteps, error) ||
+    !cl.GetDouble("--view-angle", 0.0, 89.9, o.ViewAngle, error) ||
+    !cl.GetDouble("--azimuth", -360.0, 360.0, o.ViewAzimuth, error) ||
+    !cl.GetInt("--lights", 0, 2, o.Lights, error) ||
+    !cl.GetInt("--env-lights", 1, 4096, o.EnvironmentLights, error) ||
+    !cl.GetDouble("--exposure", 0.0, 1e6, o.Exposure, error) ||
+    !cl.GetDouble("--light-elevation", 0.0, 90.0, o.LightElevation, error))
+  {
+    return false;
+  }
+  if (!cl.Has("--linear-steps") && o.Method == "max-mipmap")
+  {
+    o.LinearSteps = 128; // an iteration budget for the pyramid traversal, not linear steps
+  }
+  const std::string size = cl.Get("--size");
+  int w = 0, h = 0;
+  char x = 0;
+  std::istringstream in(size);
+  if (!(in >> w >> x >> h) || x != 'x' || w < 16 || h < 16 || w > 8192 || h > 8192)
+  {
+    error = "option --size: '" + size + "' is not WxH with 16 <= W, H <= 8192";
+    return false;
+  }
+  o.Width = w;
+  o.Height = h;
+  return true;
+}
+
+
+// Interactive keys on top of the trackball camera; VTK's own keys keep working.
+class ReliefInteractorStyle : public vtkInteractorStyleTrackballCamera
+{
+public:
+  static ReliefInteractorStyle* New();
+  vtkTypeMacro(ReliefInteractorStyle, vtkInteractorStyleTrackballCamera);
+
+  vtkReliefMapper* Mapper = nullptr;
+  vtkTextActor* Status = nullptr;
+
+  void OnChar() override
+  {
+    vtkRenderWindowInteractor* rwi = this->Interactor;
+    const char key = rwi->GetKeyCode();
+    vtkReliefProperty* m = this->Mapper->GetReliefProperty();
+    switch (key)
+    {
+      case 'm':
+        m->SetMethod((m->GetMethod() + 1) % vtkReliefProperty::NumberOfMethods);
+        break;
+      case '+':
+      case '=':
+        m->SetLinearSteps(m->GetLinearSteps() + 2);
+        break;
+      case '-':
+        m->SetLinearSteps(m->GetLinearSteps() - 2);
+        break;
+      case ']':
+        m->SetDepthScale(m->GetDepthScale() * 1.25);
+        break;
+      case '[':
+        m->SetDepthScale(m->GetDepthScale() / 1.25);
+        break;
+      case 'x':
+        m->SetSelfShadowing(!m->GetSelfShadowing());
+        break;
+      case 'o':
+        m->SetSilhouettes(!m->GetSilhouettes());
+        break;
+      case 'z':
+        m->SetWriteDepth(!m->GetWriteDepth());
+        break;
+      default:
+        this->Superclass::OnChar();
+        return;
+    }
+    this->UpdateStatus();
+    rwi->Render();
+  }
+
+  void UpdateStatus()
+  {
+    std::ostringstream text;
+    vtkReliefProperty* p = this->Mapper->GetReliefProperty();
+    text << "method " << vtkReliefProperty::GetMethodName(p->GetMethod()) << " [m]   steps "
+         << p->GetLinearSteps() << "+" << p->GetRefinementSteps()
+         << " [+/-]   depth " << p->GetDepthScale() << " [ [ ] ]\nshadows "
+         << (p->GetSelfShadowing() ? "on" : "off") << " [x]   silhouettes "
+         << (p->GetSilhouettes() ? "on" : "off") << " [o]   depth write "
+         << (p->GetWriteDepth() ? "on" : "off") << " [z]   quit [q]";
+    this->Status->SetInput(text.str().c_str());
+  }
+};
+vtkStandardNewMacro(ReliefInteractorStyle);
+} // namespace
+
+int RunRenderCommand(const std::vector<std::string>& args)
+{
+  CommandLine cl("mesolight render",
+    "mesolight render [options]\n\nRenders the default relief scene (a procedural brick "
+    "wall, two lights, an oblique camera)\nto a PNG, then opens an interactive window "
+    "when a display is available.\nKeys: m method, +/- steps, [ ] depth, x shadows, o "
+    "silhouettes, z depth write, q quit.\n");
+  AddSceneOptions(cl);
+  cl.AddValue("--out", "FILE", "PNG to write", "mesolight-render.png");
+  cl.AddFlag("--offscreen", "only write the PNG, never open a window");
+  std::string error;
+  ReliefSceneOptions options;
+  int exitCode = 0;
+  if (!cl.ParseArguments(args, exitCode))
+  {
+    return exitCode; // --help printed, or a usage error reported
+  }
+  if (!ReadSceneOptions(cl, options, error))
+  {
+    return cl.UsageError(error);
+  }
+  if (!cl.Positional().empty())
+  {
+    std::cerr << "mesolight render: unexpected argument '" << cl.Positional()[0] << "'\n";
+    return 2;
+  }
+  const std::string out = cl.Get("--out");
+  if (!options.DepthFile.empty() && SameFile(out, options.DepthFile))
+  {
+    std::cerr << "mesolight render: --out would overwrite the input " << options.DepthFile << "\n";
+    return 2;
+  }
+
+  ReliefScene scene;
+  if (!BuildReliefScene(options, scene, error))
+  {
+    std::cerr << "mesolight render: " << error << "\n";
+    return 1;
+  }
+  // One window for both the PNG and the interactive view: on screen when a display is there.
+  const bool interactive = !cl.Has("--offscreen") && HasDisplay();
+  vtkSmartPointer<vtkRenderWindow> window;
+  if (interactive)
+  {
+    window = vtkSmartPointer<vtkRenderWindow>::New();
+    window->SetSize(options.Width, options.Height);
+    window->SetMultiSamples(0);
+    window->SetWindowName("mesolight");
+    window->AddRenderer(scene.Renderer);
+  }
+  else
+  {
+    window = MakeOffscreenWindow(options, scene.Renderer);
+  }
+  const Frame frame = CaptureFrame(window);
+  if (!WritePng(frame, out.c_str()))
+  {
+    std::cerr << "mesolight render: could not write " << out << "\n";
+    return 1;
+  }
+  std::cout << "wrote " << out << " (" << options.Width << "x" << options.Height << ", method "
+            << options.Method << ")" << std::endl;
+  if (!interactive)
+  {
+    return 0;
+  }
+  vtkNew<vtkTextActor> status;
+  status->GetTextProperty()->SetFontSize(14);
+  status->GetTextProperty()->SetColor(0.9, 0.9, 0.9);
+  status->SetPosition(8, 8);
+  scene.Renderer->AddViewProp(status);
+  vtkNew<vtkRenderWindowInteractor> interactor;
+  vtkNew<ReliefInteractorStyle> style;
+  style->Mapper = scene.Mapper;
+  style->Status = status;
+  style->UpdateStatus();
+  interactor->SetInteractorStyle(style);
+  interactor->SetRenderWindow(window);
+  window->Render();
+  interactor->Start();
+  return 0;
+}
+
+int RunReliefBenchmarkCommand(const std::vector<std::string>& args)
+{
+  CommandLine cl("mesolight bench",
+    "mesolight bench [options]\n\nMeasures ms/frame of a stock textured plane, relief "
+    "mapping, parallax occlusion mapping\nand the dense displaced mesh, and the error "
+    "of each against the dense mesh.\n");
+  AddSceneOptions(cl);
+  cl.AddValue("--sizes", "N,N,..", "relief map resolutions to measure", "512,1024");
+  cl.AddValue("--frames", "N", "timed frames per configuration (median reported)", "20");
+  cl.AddValue("--csv", "FILE", "also write the table as CSV");
+  std::string error;
+  ReliefSceneOptions options;
+  int exitCode = 0;
+  if (!cl.ParseArguments(args, exitCode))
+  {
+    return exitCode; // --help printed, or a usage error reported
+  }
+  if (!ReadSceneOptions(cl, options, error))
+  {
+    return cl.UsageError(error);
+  }
+  BenchmarkSettings settings;
+  settings.Scene = options;
+  if (!cl.GetInt("--frames", 1, 10000, settings.Frames, error))
+  {
+    return cl.UsageError(error);
+  }
+  if (!cl.GetIntList("--sizes", 2, 8192, settings.Resolutions, error))
+  {
+    return cl.UsageError(error);
+  }
+  settings.CsvFile = cl.Get("--csv");
+  return RunReliefBenchmark(settings, std::cout) ? 0 : 1;
+}
+
+} // namespace mesolight

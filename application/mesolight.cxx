@@ -1,0 +1,144 @@
+// mesolight: render, bake and benchmark relief surfaces from the command line. The commands are
+// one table (Commands() below: name, usage, summary, handler); `mesolight --help` is printed from
+// it, and `mesolight COMMAND --help` by each command's CommandLine.
+#include "CommandTable.h"
+#include "ConeBenchmark.h"
+#include "ImageCommands.h"
+#include "LightSetBenchmark.h"
+#include "LightsCommand.h"
+#include "RenderCommand.h"
+#include "ReliefSweep.h"
+#include "TraceCommand.h"
+#include "VlfCommand.h"
+
+#include <vtkLogger.h>
+#include <vtkNew.h>
+#include <vtkObjectFactory.h>
+#include <vtkOutputWindow.h>
+
+#include <iostream>
+#include <string>
+#include <vector>
+
+namespace
+{
+// VTK reports a failing reader twice: the reader's own message, then the executive's dump of
+// the pipeline request. A command-line user needs the first only, on one line.
+class ConsoleOutputWindow : public vtkOutputWindow
+{
+public:
+  static ConsoleOutputWindow* New();
+  vtkTypeMacro(ConsoleOutputWindow, vtkOutputWindow);
+  void DisplayErrorText(const char* text) override { this->DisplayText(text); }
+  void DisplayWarningText(const char* text) override { this->DisplayText(text); }
+  void DisplayGenericWarningText(const char* text) override { this->DisplayText(text); }
+  void DisplayText(const char* text) override
+  {
+    const std::string message(text ? text : "");
+    if (message.find("returned failure for request") != std::string::npos)
+    {
+      return;
+    }
+    // Drop VTK's "ERROR: In <source file>, line N" prefix line; keep what it says.
+    const size_t firstLineEnd = message.find('\n');
+    const bool hasLocation = message.compare(0, 10, "ERROR: In ") == 0 ||
+      message.compare(0, 12, "Warning: In ") == 0;
+    std::string body = hasLocation && firstLineEnd != std::string::npos
+      ? message.substr(firstLineEnd + 1)
+      : message;
+    while (!body.empty() && (body.back() == '\n' || body.back() == ' '))
+    {
+      body.pop_back();
+    }
+    std::cerr << "mesolight: " << body << "\n";
+  }
+};
+vtkStandardNewMacro(ConsoleOutputWindow);
+
+const std::vector<mesolight::Command>& Commands();
+
+// `mesolight help [COMMAND...]`: the usage, or a command's options.
+int RunHelp(const std::vector<std::string>& args);
+
+void PrintUsage(std::ostream& os)
+{
+  os << "mesolight - relief surfaces for VTK\n\nUsage:\n";
+  mesolight::PrintCommandUsage(os, "mesolight", Commands());
+  os << "\nRun 'mesolight COMMAND --help' for the options of a command.\n";
+}
+
+// Every command: name, usage, summary (the lines of `mesolight --help`), handler.
+const std::vector<mesolight::Command>& Commands()
+{
+  using namespace mesolight;
+  static const std::vector<Command> commands = {
+    { "render", "[options]", "render the default relief scene", RunRenderCommand, {} },
+    { "bake", "DEPTH_IMAGE --out RELIEF_IMAGE [options]", "bake a relief texture from a depth image",
+      RunBakeCommand, {} },
+    { "cone", "DEPTH_IMAGE --out FILE.exr [options]", "bake a cone-packed relief texture", RunConeCommand,
+      {} },
+    { "probe", "PROBE_IMAGE --out FILE.exr",
+      "light probe (angular map, mirror ball, two-view\nmerge) -> lat-long environment", RunProbeCommand,
+      {} },
+    { "lights", "ENV_IMAGE --count N --out lights.csv", "median-cut lights of an HDR environment",
+      RunLightsCommand, {} },
+    { "trace", "[--scene spheres|ring|cornell] [options]",
+      "Embree ray tracer (textured material channels,\nglossy reflection, adaptive, progressive) or "
+      "the\npath-traced Cornell box",
+      RunTraceCommand, {} },
+    { "vlf", "", "", nullptr,
+      {
+        { "propagate", "[SCENE.obj] --out FIELD [options]",
+          "propagate a virtual light field (built-in\nCornell box without SCENE)", RunVlfPropagate,
+          {} },
+        { "render", "FIELD --out IMAGE.png", "render a light field's diffuse totals", RunVlfRender,
+          {} },
+      } },
+    { "bench", "", "", nullptr,
+      {
+        { "", "[options]", "time and error: relief vs the dense mesh", RunReliefBenchmarkCommand, {} },
+        { "relief", "[options]",
+          "every method x steps x view angle x map:\ntime vs exact hit error, CSV and plots",
+          static_cast<int (*)(const std::vector<std::string>&)>(RunReliefSweep), {} },
+        { "cones", "[options]", "cone-map generation time, oracle speed-up", RunConeBenchmark, {} },
+        { "lights", "[options]",
+          "light-set irradiance error vs exact\nintegration and SH9; median-cut time",
+          RunLightsBenchmark, {} },
+        { "ibl", "[options]",
+          "relief lit by 32..1024 median-cut lights: time,\neach skip, error vs Monte Carlo",
+          RunLightSetBenchmark, {} },
+        { "trace", "[options]", "rays/s (coherent vs incoherent), path samples/s",
+          RunTraceBenchmark, {} },
+        { "vlf", "[options]", "light field time, memory and accuracy sweep", RunVlfBenchmark, {} },
+      } },
+    { "help", "[COMMAND]", "this text, or one command's options", RunHelp, {} },
+  };
+  return commands;
+}
+
+int RunHelp(const std::vector<std::string>& args)
+{
+  if (args.empty())
+  {
+    PrintUsage(std::cout);
+    return 0;
+  }
+  std::vector<std::string> withHelp = args;
+  withHelp.emplace_back("--help");
+  return mesolight::DispatchCommand("mesolight", Commands(), withHelp);
+}
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  vtkNew<ConsoleOutputWindow> console;
+  vtkOutputWindow::SetInstance(console);
+  vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF); // messages go through the console window
+  const std::vector<std::string> args(argv + 1, argv + argc);
+  if (args.empty() || args[0] == "--help" || args[0] == "-h")
+  {
+    PrintUsage(std::cout);
+    return args.empty() ? 2 : 0;
+  }
+  return mesolight::DispatchCommand("mesolight", Commands(), args);
+}
