@@ -32,7 +32,6 @@ namespace mesolight
 {
 namespace
 {
-constexpr double Pi = 3.14159265358979323846;
 
 // Environment pixels as a discrete distribution proportional to luminance x solid angle.
 struct EnvironmentSampler
@@ -333,7 +332,7 @@ double EnvironmentError(
     double expected = 0.0, rendered = 0.0;
     for (int c = 0; c < 3; ++c)
     {
-      expected += 255.0 * exposure * s.Irradiance[c] / Pi / 3.0;
+      expected += 255.0 * exposure * s.Irradiance[c] / Pi<double> / 3.0;
       rendered += frame.Rgb[3 * s.Pixel + c] / 3.0;
     }
     if (expected < 8.0 || expected > 250.0)
@@ -455,7 +454,7 @@ int RunLightSetBenchmark(const std::vector<std::string>& args)
   {
     brightest = std::max(brightest, (s.Irradiance[0] + s.Irradiance[1] + s.Irradiance[2]) / 3.0);
   }
-  const double exposure = brightest > 0.0 ? 200.0 / 255.0 * Pi / brightest : 1.0;
+  const double exposure = brightest > 0.0 ? 200.0 / 255.0 * Pi<double> / brightest : 1.0;
   scene.Mapper->SetExposure(exposure);
 
   auto window = MakeOffscreenWindow(o, scene.Renderer);

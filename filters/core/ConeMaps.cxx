@@ -1,13 +1,14 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "ConeMaps.h"
 
+#include "MinDepthPyramid.h"
+#include "ParallelFor.h"
+
 #include <algorithm>
 #include <array>
-#include <atomic>
 #include <cmath>
 #include <cstddef>
 #include <limits>
-#include <thread>
 #include <utility>
 
 namespace mesolight
@@ -38,13 +39,7 @@ inline double Ratio(long long di2dj2, int w, double dp, double dq)
 constexpr int kTile = 8;
 constexpr float kNone = std::numeric_limits<float>::infinity();
 
-struct TileLevel
-{
-  int W;
-  int H;
-  int Size; // texels per side of a node at this level
-  std::vector<float> Min;
-};
+using TileLevel = MinPyramidLevel; // one channel: the minimum candidate depth
 
 bool HasDeeperNeighbour(const float* depth, int w, int h, int i, int j)
 {
@@ -80,22 +75,41 @@ std::vector<TileLevel> BuildTiles(const float* depth, int w, int h, bool falling
     }
   }
   levels.push_back(std::move(base));
-  while (levels.back().W > 1 || levels.back().H > 1)
-  {
-    const TileLevel& c = levels.back();
-    TileLevel p{ (c.W + 1) / 2, (c.H + 1) / 2, c.Size * 2, {} };
-    p.Min.assign(static_cast<std::size_t>(p.W) * p.H, kNone);
-    for (int j = 0; j < c.H; ++j)
-    {
-      for (int i = 0; i < c.W; ++i)
-      {
-        float& m = p.Min[static_cast<std::size_t>(j / 2) * p.W + i / 2];
-        m = std::min(m, c.Min[static_cast<std::size_t>(j) * c.W + i]);
-      }
-    }
-    levels.push_back(std::move(p));
-  }
+  AddMinPyramidLevels(levels, 1, PyramidHalving::RoundUp);
   return levels;
+}
+
+// The (up to 4) children of node (ti, tj) in the child level of w x h nodes with their bounds
+// (bound(ci, cj, gap) returns a child's bound and sets its gap), nearest first: an insertion
+// sort of <= 4, so equal bounds keep the row-major order. Both searches descend with it.
+struct NodeChild
+{
+  double B;
+  double Gap;
+  int I;
+  int J;
+};
+template <class BoundFunction>
+int ChildrenNearestFirst(int w, int h, int ti, int tj, BoundFunction bound, NodeChild (&children)[4])
+{
+  int n = 0;
+  for (int cj = 2 * tj; cj <= 2 * tj + 1 && cj < h; ++cj)
+  {
+    for (int ci = 2 * ti; ci <= 2 * ti + 1 && ci < w; ++ci)
+    {
+      double gap = 0.0;
+      const double b = bound(ci, cj, gap);
+      children[n++] = { b, gap, ci, cj };
+    }
+  }
+  for (int a = 1; a < n; ++a)
+  {
+    for (int c = a; c > 0 && children[c].B < children[c - 1].B; --c)
+    {
+      std::swap(children[c], children[c - 1]);
+    }
+  }
+  return n;
 }
 
 // Distance in texels (per axis) from texel index p to the index range [lo, hi].
@@ -158,27 +172,9 @@ private:
       return;
     }
     const TileLevel& C = this->Levels[level - 1];
-    struct Child
-    {
-      double B;
-      int I;
-      int J;
-    } children[4];
-    int n = 0;
-    for (int cj = 2 * tj; cj <= 2 * tj + 1 && cj < C.H; ++cj)
-    {
-      for (int ci = 2 * ti; ci <= 2 * ti + 1 && ci < C.W; ++ci)
-      {
-        children[n++] = { this->Bound(level - 1, ci, cj, pi, pj, dp), ci, cj };
-      }
-    }
-    for (int a = 1; a < n; ++a) // nearest first (insertion sort of <= 4)
-    {
-      for (int b = a; b > 0 && children[b].B < children[b - 1].B; --b)
-      {
-        std::swap(children[b], children[b - 1]);
-      }
-    }
+    NodeChild children[4];
+    const int n = ChildrenNearestFirst(C.W, C.H, ti, tj,
+      [&](int ci, int cj, double&) { return this->Bound(level - 1, ci, cj, pi, pj, dp); }, children);
     for (int k = 0; k < n; ++k)
     {
       if (children[k].B >= best)
@@ -223,40 +219,14 @@ private:
   std::vector<TileLevel> Levels;
 };
 
+// The rows [rowBegin, rowEnd) on mesolight::ParallelFor: every row's cones are computed alone,
+// so the split does not matter.
 void RunRows(const ConeMapOptions& options, int rowBegin, int rowEnd,
   const std::function<void(int, int)>& body)
 {
-  if (options.ParallelFor)
-  {
-    options.ParallelFor(rowBegin, rowEnd, body);
-    return;
-  }
-  int threads = options.Threads > 0 ? options.Threads
-                                    : static_cast<int>(std::thread::hardware_concurrency());
-  threads = std::max(1, std::min(threads, rowEnd - rowBegin));
-  if (threads == 1)
-  {
-    body(rowBegin, rowEnd);
-    return;
-  }
-  // Rows one at a time from a shared counter: cost varies a lot between rows.
-  std::atomic<int> next(rowBegin);
-  auto work = [&]() {
-    for (int row = next++; row < rowEnd; row = next++)
-    {
-      body(row, row + 1);
-    }
-  };
-  std::vector<std::thread> pool;
-  for (int t = 1; t < threads; ++t)
-  {
-    pool.emplace_back(work);
-  }
-  work();
-  for (auto& t : pool)
-  {
-    t.join();
-  }
+  ParallelFor(static_cast<std::size_t>(rowBegin), static_cast<std::size_t>(rowEnd), 1,
+    [&](std::size_t begin, std::size_t end) { body(static_cast<int>(begin), static_cast<int>(end)); },
+    options.Threads);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -514,25 +484,7 @@ public:
       }
     }
     this->Levels.push_back(std::move(base));
-    while (this->Levels.back().W > 1 || this->Levels.back().H > 1)
-    {
-      const Level& c = this->Levels.back();
-      Level p{ (c.W + 1) / 2, (c.H + 1) / 2, c.Size * 2, {} };
-      p.Min.assign(static_cast<std::size_t>(p.W) * p.H * 9, kNone);
-      for (int j = 0; j < c.H; ++j)
-      {
-        for (int i = 0; i < c.W; ++i)
-        {
-          const float* cm = &c.Min[(static_cast<std::size_t>(j) * c.W + i) * 9];
-          float* pm = &p.Min[(static_cast<std::size_t>(j / 2) * p.W + i / 2) * 9];
-          for (int s = 0; s < 9; ++s)
-          {
-            pm[s] = std::min(pm[s], cm[s]);
-          }
-        }
-      }
-      this->Levels.push_back(std::move(p));
-    }
+    AddMinPyramidLevels(this->Levels, 9, PyramidHalving::RoundUp);
   }
 
   // Lower bound (texture widths per unit depth) of the cone ratio at every apex of cell X over
@@ -661,13 +613,7 @@ public:
   int CellsH() const { return this->CH; }
 
 private:
-  struct Level
-  {
-    int W;
-    int H;
-    int Size; // cells per side of a node
-    std::vector<float> Min;
-  };
+  using Level = MinPyramidLevel; // 9 channels: per octant (0-7) and all cells (kAllCells)
   struct State
   {
     int Xi;
@@ -764,35 +710,15 @@ private:
       return;
     }
     const Level& C = this->Levels[level - 1];
-    struct Child
-    {
-      double B;
-      double Gap;
-      int I;
-      int J;
-    } children[4];
-    int n = 0;
-    for (int cj = 2 * tj; cj <= 2 * tj + 1 && cj < C.H; ++cj)
-    {
-      for (int ci = 2 * ti; ci <= 2 * ti + 1 && ci < C.W; ++ci)
-      {
-        double gap = 0.0;
-        const double b = this->NodeBound(level - 1, ci, cj, st, gap);
-        children[n++] = { b, gap, ci, cj };
-      }
-    }
+    NodeChild children[4];
+    const int n = ChildrenNearestFirst(C.W, C.H, ti, tj,
+      [&](int ci, int cj, double& gap) { return this->NodeBound(level - 1, ci, cj, st, gap); },
+      children);
     // A node small against its distance is not opened: its bound (its shallowest candidate
     // depth at its nearest distance) is taken as is, as the quick cone map generation of Valasek
     // & Ban (2022) takes a coarse max-mipmap texel. Still a lower bound; narrower than the cell
     // search by at most the distance error, a factor 1 + Tolerance on the node's own cells.
     const double acceptSize = C.Size * std::sqrt(2.0);
-    for (int a = 1; a < n; ++a)
-    {
-      for (int b = a; b > 0 && children[b].B < children[b - 1].B; --b)
-      {
-        std::swap(children[b], children[b - 1]);
-      }
-    }
     for (int k = 0; k < n; ++k)
     {
       if (!std::isfinite(children[k].B) || this->Prune(children[k].B, st))
@@ -1141,68 +1067,6 @@ float DecodeConeRatio8(std::uint8_t code)
   }
   const float x = static_cast<float>(code) / 255.0f;
   return x / (1.0f - x); // the same float arithmetic as the shader
-}
-
-bool MinDepthPyramidLevelSize(int w, int h, int level, int& lw, int& lh)
-{
-  if (w < 1 || h < 1 || level < 0)
-  {
-    return false;
-  }
-  lw = w + 1;
-  lh = h + 1;
-  for (int k = 0; k < level; ++k)
-  {
-    if (lw == 1 && lh == 1)
-    {
-      return false;
-    }
-    lw = std::max(1, lw / 2);
-    lh = std::max(1, lh / 2);
-  }
-  return true;
-}
-
-std::vector<std::vector<float>> ComputeMinDepthPyramid(const float* depth, int w, int h)
-{
-  std::vector<std::vector<float>> levels;
-  if (!depth || w < 1 || h < 1)
-  {
-    return levels;
-  }
-  int lw = w + 1;
-  int lh = h + 1;
-  std::vector<float> level0(static_cast<std::size_t>(lw) * lh);
-  for (int cj = 0; cj < lh; ++cj)
-  {
-    for (int ci = 0; ci < lw; ++ci)
-    {
-      level0[static_cast<std::size_t>(cj) * lw + ci] = std::min(
-        { At(depth, w, h, ci - 1, cj - 1), At(depth, w, h, ci, cj - 1), At(depth, w, h, ci - 1, cj),
-          At(depth, w, h, ci, cj) });
-    }
-  }
-  levels.push_back(std::move(level0));
-  while (lw > 1 || lh > 1)
-  {
-    const std::vector<float>& c = levels.back();
-    const int pw = std::max(1, lw / 2);
-    const int ph = std::max(1, lh / 2);
-    std::vector<float> p(static_cast<std::size_t>(pw) * ph, kNone);
-    for (int j = 0; j < lh; ++j)
-    {
-      for (int i = 0; i < lw; ++i)
-      {
-        const int pi = std::min(i / 2, pw - 1), pj = std::min(j / 2, ph - 1);
-        float& m = p[static_cast<std::size_t>(pj) * pw + pi];
-        m = std::min(m, c[static_cast<std::size_t>(j) * lw + i]);
-      }
-    }
-    levels.push_back(std::move(p));
-    lw = pw;
-    lh = ph;
-  }
-  return levels;
 }
 
 } // namespace mesolight

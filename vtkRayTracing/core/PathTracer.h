@@ -11,8 +11,8 @@
 #define mesolight_PathTracer_h
 
 #include "EmbreeScene.h"
-#include "EnvironmentMaps.h" // RgbImage, the lat-long conventions and lookup
 #include "ParallelTiles.h"
+#include "RgbImage.h"
 #include "PinholeCamera.h"
 #include "RandomSequence.h"
 #include "TriangleScene.h"

@@ -14,7 +14,7 @@
 #define mesolight_TexturedRayTracer_h
 
 #include "EmbreeScene.h"
-#include "EnvironmentMaps.h" // RgbImage
+#include "RgbImage.h"
 #include "ParallelTiles.h"
 #include "PinholeCamera.h"
 #include "RandomSequence.h"
