@@ -60,7 +60,7 @@
  *        relaxed cones, <= V |x - y| (V: spread of the gradients around X; a falling point
  *        has a non-negative slope along the ray, so the drop before it is bounded by how much
  *        the gradient varies: planes get no bound at all).
- *    Details and proofs in the .cxx. There is no empirical safety factor; the stored float
+ *    Details and proofs in ConeMapBounds.cxx. There is no empirical safety factor; the stored float
  *    is truncated toward zero (never wider than the bound).
  *    Cost: the fast search is a branch and bound over a min-depth pyramid of cells with
  *    per-octant minima over the cells that can fall in that octant (so that cells rising away
