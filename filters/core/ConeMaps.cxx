@@ -215,6 +215,10 @@ void RunRows(const ConeMapOptions& options, int rowBegin, int rowEnd,
     options.Threads);
 }
 
+// ---------------------------------------------------------------------------------------------
+// The branch-and-bound search of the bilinear-safe cones (ConeMapOptions::BilinearSafe); the
+// cell-pair bound it minimises, and why it holds, are in ConeMapBounds.
+//
 // Octant s of directions: angles [45 s, 45 (s + 1)] degrees, spanned by kOctant[s], [s + 1].
 constexpr double kOctant[9][2] = { { 1, 0 }, { 1, 1 }, { 0, 1 }, { -1, 1 }, { -1, 0 },
   { -1, -1 }, { 0, -1 }, { 1, -1 }, { 1, 0 } };

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "core/EnvironmentMaps.h"
+
 #include "MathConstants.h"
 
 #include <algorithm>

@@ -1,10 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "core/MedianCut.h"
+
 #include "MathConstants.h"
-
-#include "core/EnvironmentMaps.h"
-
 #include "ParallelFor.h"
+#include "core/EnvironmentMaps.h"
 
 #include <algorithm>
 #include <cmath>
@@ -12,14 +11,13 @@
 #include <numeric>
 #include <queue>
 #include <sstream>
-#include <thread>
+#include <thread> // hardware_concurrency() only: fixes the number of bands/blocks (no thread started)
 
 namespace mesolight
 {
 
 namespace
 {
-
 /// Number of row bands of the summed-area tables for n rows. The sums depend on where the
 /// bands start, so their number stays what it always was (the hardware threads, at most one
 /// per 16 rows), whatever runs them.
@@ -343,7 +341,7 @@ MedianCutStatus ComputeMedianCut(const float* pixels, int components, int width,
   }
   std::vector<long long> badPerRow(static_cast<size_t>(h), 0);
   std::vector<long long> firstBadPerRow(static_cast<size_t>(h), -1);
-  // Each thread builds a band of rows: per-row prefix sums plus the band's rows above, in
+  // Each task builds a band of rows: per-row prefix sums plus the band's rows above, in
   // one pass; the bands are then offset by the SAT row above them.
   ForEachBand(h, [&](int begin, int end) {
     for (int y = begin; y < end; ++y)

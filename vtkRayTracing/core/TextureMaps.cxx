@@ -1,4 +1,5 @@
 #include "TextureMaps.h"
+
 #include "MathConstants.h"
 
 #include <glm/geometric.hpp>

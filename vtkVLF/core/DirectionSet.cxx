@@ -1,4 +1,5 @@
 #include "DirectionSet.h"
+
 #include "MathConstants.h"
 
 #include <glm/geometric.hpp>

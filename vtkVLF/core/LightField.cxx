@@ -1,4 +1,5 @@
 #include "LightField.h"
+
 #include "MathConstants.h"
 #include "OrthonormalBasis.h"
 #include "ParallelFor.h"
@@ -12,7 +13,7 @@
 #include <cstdio>
 #include <map>
 #include <sstream>
-#include <thread>
+#include <thread> // hardware_concurrency() only: fixes the number of bands/blocks (no thread started)
 #include <tuple>
 
 namespace mesolight

@@ -1,4 +1,5 @@
 #include "Lookup.h"
+
 #include "MathConstants.h"
 
 #include <glm/geometric.hpp>

@@ -1,4 +1,5 @@
 #include "Propagation.h"
+
 #include "MathConstants.h"
 
 #include <glm/geometric.hpp>
