@@ -205,14 +205,31 @@ private:
   std::vector<TileLevel> Levels;
 };
 
-// The rows [rowBegin, rowEnd) on mesolight::ParallelFor: every row's cones are computed alone,
-// so the split does not matter.
-void RunRows(const ConeMapOptions& options, int rowBegin, int rowEnd,
-  const std::function<void(int, int)>& body)
+// row(r) for every row r of [0, rows) on mesolight::ParallelFor, in up to 64 chunks of rows;
+// after each chunk, progress reports begin + span * (chunks done) / chunks. Each row is computed
+// alone, so the split does not matter. False when the progress callback aborted.
+bool ForEachRow(const ConeMapOptions& options, int rows, double begin, double span,
+  const std::function<void(int)>& row)
 {
-  ParallelFor(static_cast<std::size_t>(rowBegin), static_cast<std::size_t>(rowEnd), 1,
-    [&](std::size_t begin, std::size_t end) { body(static_cast<int>(begin), static_cast<int>(end)); },
-    options.Threads);
+  const int chunks = std::max(1, std::min(rows, 64));
+  for (int c = 0; c < chunks; ++c)
+  {
+    const int rowBegin = static_cast<int>(static_cast<long long>(rows) * c / chunks);
+    const int rowEnd = static_cast<int>(static_cast<long long>(rows) * (c + 1) / chunks);
+    ParallelFor(static_cast<std::size_t>(rowBegin), static_cast<std::size_t>(rowEnd), 1,
+      [&](std::size_t first, std::size_t last) {
+        for (std::size_t r = first; r < last; ++r)
+        {
+          row(static_cast<int>(r));
+        }
+      },
+      options.Threads);
+    if (!ReportProgress(options.Progress, begin + span * (c + 1) / chunks))
+    {
+      return false;
+    }
+  }
+  return true;
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -515,28 +532,19 @@ std::vector<float> ComputeCellBound(
   const int ch = h + 1;
   std::vector<double> cells(static_cast<std::size_t>(cw) * ch);
   search.BuildPyramid();
-  if (options.Progress && !options.Progress(0.02))
+  if (!ReportProgress(options.Progress, 0.02))
   {
     return {};
   }
-  const int chunks = std::max(1, std::min(ch, 64));
-  for (int c = 0; c < chunks; ++c)
-  {
-    const int rowBegin = static_cast<int>(static_cast<long long>(ch) * c / chunks);
-    const int rowEnd = static_cast<int>(static_cast<long long>(ch) * (c + 1) / chunks);
-    RunRows(options, rowBegin, rowEnd, [&](int begin, int end) {
-      for (int xj = begin; xj < end; ++xj)
-      {
-        for (int xi = 0; xi < cw; ++xi)
-        {
-          cells[static_cast<std::size_t>(xj) * cw + xi] = search.Run(xi, xj);
-        }
-      }
-    });
-    if (options.Progress && !options.Progress(0.02 + 0.97 * (c + 1) / chunks))
+  const bool done = ForEachRow(options, ch, 0.02, 0.97, [&](int xj) {
+    for (int xi = 0; xi < cw; ++xi)
     {
-      return {};
+      cells[static_cast<std::size_t>(xj) * cw + xi] = search.Run(xi, xj);
     }
+  });
+  if (!done)
+  {
+    return {};
   }
   return TexelsFromCells(cells, w, h);
 }
@@ -548,14 +556,14 @@ std::vector<float> ComputeFast(
   {
     return {};
   }
-  if (options.Progress && !options.Progress(0.0))
+  if (!ReportProgress(options.Progress, 0.0))
   {
     return {};
   }
   if (options.BilinearSafe)
   {
     std::vector<float> ratio = ComputeCellBound(depth, w, h, options, relaxed);
-    if (ratio.empty() || (options.Progress && !options.Progress(1.0)))
+    if (ratio.empty() || !ReportProgress(options.Progress, 1.0))
     {
       return {};
     }
@@ -564,26 +572,17 @@ std::vector<float> ComputeFast(
   const ConeSearch search(depth, w, h, relaxed, static_cast<double>(options.MaxRatio));
   std::vector<float> ratio(static_cast<std::size_t>(w) * h);
   float* out = ratio.data();
-  const int chunks = std::max(1, std::min(h, 64));
-  for (int c = 0; c < chunks; ++c)
-  {
-    const int rowBegin = static_cast<int>(static_cast<long long>(h) * c / chunks);
-    const int rowEnd = static_cast<int>(static_cast<long long>(h) * (c + 1) / chunks);
-    RunRows(options, rowBegin, rowEnd, [&](int begin, int end) {
-      for (int j = begin; j < end; ++j)
-      {
-        for (int i = 0; i < w; ++i)
-        {
-          out[static_cast<std::size_t>(j) * w + i] = search.Run(i, j);
-        }
-      }
-    });
-    if (options.Progress && !options.Progress(0.99 * (c + 1) / chunks))
+  const bool done = ForEachRow(options, h, 0.0, 0.99, [&](int j) {
+    for (int i = 0; i < w; ++i)
     {
-      return {};
+      out[static_cast<std::size_t>(j) * w + i] = search.Run(i, j);
     }
+  });
+  if (!done)
+  {
+    return {};
   }
-  if (options.Progress && !options.Progress(1.0))
+  if (!ReportProgress(options.Progress, 1.0))
   {
     return {};
   }

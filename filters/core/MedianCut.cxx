@@ -277,7 +277,7 @@ MedianCutStatus ComputeMedianCut(const float* pixels, int components, int width,
     error = os.str();
     return MedianCutStatus::Error;
   }
-  auto progress = [&](double f) { return !options.Progress || options.Progress(f); };
+  auto progress = [&](double f) { return ReportProgress(options.Progress, f); };
 
   const int w = width;
   const int h = height;
