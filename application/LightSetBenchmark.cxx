@@ -3,6 +3,7 @@
 #include "CommandLine.h"
 #include "ImageCompare.h"
 #include "LightSetReference.h"
+#include "MathConstants.h"
 #include "ReliefReference.h"
 #include "ReliefScene.h"
 #include "vtkReliefMapper.h"
@@ -26,7 +27,6 @@ namespace mesolight
 {
 namespace
 {
-constexpr double Pi = 3.14159265358979323846;
 
 struct Timing
 {
@@ -149,7 +149,7 @@ int RunLightSetBenchmark(const std::vector<std::string>& args)
   {
     brightest = std::max(brightest, (s.Irradiance[0] + s.Irradiance[1] + s.Irradiance[2]) / 3.0);
   }
-  const double exposure = brightest > 0.0 ? 200.0 / 255.0 * Pi / brightest : 1.0;
+  const double exposure = brightest > 0.0 ? 200.0 / 255.0 * Pi<double> / brightest : 1.0;
   scene.Mapper->GetReliefProperty()->SetExposure(exposure);
 
   auto window = MakeOffscreenWindow(o, scene.Renderer);

@@ -33,7 +33,7 @@ namespace mesolight
 
 namespace
 {
-constexpr double Pi = EnvPi;
+constexpr double Pi = mesolight::Pi<double>;
 
 /// The built-in maps: "sky" (smooth sky over a dim ground) and "sun" (the same sky, a
 /// 2-degree sun and a bright window, as in the reference experiment).

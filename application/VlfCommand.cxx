@@ -6,6 +6,7 @@
 
 #include "EmbreeScene.h"
 #include "LightField.h"
+#include "ParallelFor.h"
 #include "Lookup.h"
 #include "ObjScene.h"
 #include "PatchComparison.h"
@@ -67,19 +68,18 @@ void ResetPeakResident()
 }
 
 // Progress on stderr in steps of 10%.
-vlf::ProgressCallbacks PrintedProgress(const std::string& what)
+ProgressCallback PrintedProgress(const std::string& what)
 {
   auto last = std::make_shared<int>(-1);
-  vlf::ProgressCallbacks callbacks;
-  callbacks.Progress = [what, last](double fraction) {
+  return [what, last](double fraction) {
     const int step = static_cast<int>(fraction * 10.0);
     if (step != *last)
     {
       *last = step;
       std::cerr << "\r" << what << " " << step * 10 << "%" << (step >= 10 ? "\n" : "") << std::flush;
     }
+    return true;
   };
-  return callbacks;
 }
 
 int Propagate(const std::vector<std::string>& args)
@@ -185,12 +185,12 @@ int Propagate(const std::vector<std::string>& args)
                 << settings.TilesPerSide << "x" << settings.TilesPerSide << " tiles; memory up to "
                 << estimate.Describe() << "\n";
       const Clock::time_point start = Clock::now();
-      field = vlf::LightField::Build(scene, settings, vlf::ThreadParallelFor, PrintedProgress("tracing subfields"));
+      field = vlf::LightField::Build(scene, settings, PrintedProgress("tracing subfields"));
       std::cout << "traced in " << Seconds(start) << " s, " << vlf::FormatBytes(field->AllocatedBytes())
                 << " allocated\n";
     }
     vlf::PropagationOptions options;
-    options.Callbacks = PrintedProgress("propagating");
+    options.Progress = PrintedProgress("propagating");
     vlf::Propagate(*field, iterations, options, [&](const vlf::LightField& f) {
       vlf::WriteSnapshot(f, out);
       const vlf::LightField::IterationEnergy& e = f.EnergyLog.back();
@@ -323,7 +323,7 @@ int Render(const std::vector<std::string>& args)
     const vlf::Lookup lookup(*field);
     std::vector<unsigned char> pixels(static_cast<std::size_t>(width) * height * 3);
     const Clock::time_point start = Clock::now();
-    vlf::ThreadParallelFor(static_cast<std::size_t>(height), [&](std::size_t r0, std::size_t r1) {
+    ParallelFor(0, static_cast<std::size_t>(height), 1, [&](std::size_t r0, std::size_t r1) {
       for (std::size_t row = r0; row < r1; ++row)
       {
         for (int column = 0; column < width; ++column)

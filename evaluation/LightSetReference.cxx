@@ -1,5 +1,7 @@
 #include "LightSetReference.h"
 
+#include "MathConstants.h"
+
 #include "HeightFieldTracer.h"
 #include "ImageCompare.h"
 #include "ReliefReference.h"
@@ -21,7 +23,6 @@ namespace mesolight
 {
 namespace
 {
-constexpr double Pi = 3.14159265358979323846;
 
 // Environment pixels as a discrete distribution proportional to luminance x solid angle.
 struct EnvironmentSampler
@@ -300,7 +301,7 @@ double EnvironmentError(
     double expected = 0.0, rendered = 0.0;
     for (int c = 0; c < 3; ++c)
     {
-      expected += 255.0 * exposure * s.Irradiance[c] / Pi / 3.0;
+      expected += 255.0 * exposure * s.Irradiance[c] / Pi<double> / 3.0;
       rendered += frame.Rgb[3 * s.Pixel + c] / 3.0;
     }
     if (expected < 8.0 || expected > 250.0)

@@ -14,7 +14,6 @@
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
-#include "vtkSMPTools.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkStringArray.h"
 #include "vtkUnsignedCharArray.h"
@@ -120,13 +119,7 @@ int vtkConeMapFilter::RequestData(
   }
 
   mesolight::ConeMapOptions options;
-  options.ParallelFor = [](int begin, int end, const std::function<void(int, int)>& body) {
-    vtkSMPTools::For(begin, end, [&](int b, int e) { body(b, e); });
-  };
-  options.Progress = [this](double done) {
-    this->UpdateProgress(done);
-    return !this->GetAbortExecute();
-  };
+  options.Progress = mesolight::AlgorithmProgress(this);
   const std::vector<float> cones = mesolight::ComputeConeMap(
     this->ConeType == CONSERVATIVE ? mesolight::ConeType::Conservative
                                    : mesolight::ConeType::Relaxed,

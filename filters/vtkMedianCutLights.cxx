@@ -233,10 +233,7 @@ int vtkMedianCutLights::RequestData(
   mesolight::MedianCutOptions options;
   options.NumberOfLights = this->NumberOfLights;
   options.VarianceMinimization = this->VarianceMinimization;
-  options.Progress = [this](double f) {
-    this->UpdateProgress(0.1 + 0.8 * f);
-    return !this->GetAbortExecute();
-  };
+  options.Progress = mesolight::AlgorithmProgress(this, 0.1, 0.9);
   std::vector<mesolight::MedianCutLight> lights;
   std::string error;
   const mesolight::MedianCutStatus status =

@@ -135,7 +135,8 @@ public:
   ///@}
 
   ///@{
-  /** Worker threads (0: all cores) and the seed of the distributed rays. */
+  /** Threads: 1 traces on the calling thread only, any other value on all of vtkSMPTools'
+   * threads (vtkSMPTools::Initialize sets how many); and the seed of the distributed rays. */
   vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
   vtkGetMacro(NumberOfThreads, int);
   vtkSetMacro(Seed, vtkTypeUInt64);

@@ -17,7 +17,6 @@
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
-#include "vtkSMPTools.h"
 
 #include <glm/geometric.hpp>
 
@@ -97,11 +96,6 @@ int vtkVirtualLightField::RequestData(
   settings.TilesPerSide = this->Tiles > 0 ? this->Tiles : std::max(1, this->RaysPerSide / 8);
   settings.MemoryBudget = static_cast<std::uint64_t>(this->MemoryBudget);
 
-  vlf::ParallelFor smp = [](std::size_t count, const std::function<void(std::size_t, std::size_t)>& body) {
-    vtkSMPTools::For(0, static_cast<vtkIdType>(count), 1, [&](vtkIdType begin, vtkIdType end) {
-      body(static_cast<std::size_t>(begin), static_cast<std::size_t>(end));
-    });
-  };
   const bool snapshots = !this->SnapshotFileName.empty();
   try
   {
@@ -120,17 +114,10 @@ int vtkVirtualLightField::RequestData(
     }
     else
     {
-      vlf::ProgressCallbacks build;
-      build.Progress = [this, buildShare](double f) { this->UpdateProgress(buildShare * f); };
-      build.AbortRequested = [this] { return this->GetAbortExecute() != 0; };
-      field = vlf::LightField::Build(scene, settings, smp, build);
+      field = vlf::LightField::Build(scene, settings, mesolight::AlgorithmProgress(this, 0.0, buildShare));
     }
     vlf::PropagationOptions options;
-    options.Parallel = smp;
-    options.Callbacks.Progress = [this, buildShare](double f) {
-      this->UpdateProgress(buildShare + (1.0 - buildShare) * f);
-    };
-    options.Callbacks.AbortRequested = [this] { return this->GetAbortExecute() != 0; };
+    options.Progress = mesolight::AlgorithmProgress(this, buildShare, 1.0);
     vlf::Propagate(*field, this->Iterations, options, [&](const vlf::LightField& f) {
       if (snapshots)
       {

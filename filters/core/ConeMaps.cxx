@@ -1,35 +1,22 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "ConeMaps.h"
 
+#include "ConeMapBounds.h"
+#include "MinDepthPyramid.h"
+#include "ParallelFor.h"
+
 #include <algorithm>
 #include <array>
-#include <atomic>
 #include <cmath>
 #include <cstddef>
 #include <limits>
-#include <thread>
 #include <utility>
 
 namespace mesolight
 {
-bool IsFallingEdgeNear(const float* depth, int w, int h, int pi, int pj, int qi, int qj);
 namespace
 {
-
-inline float At(const float* depth, int w, int h, int i, int j)
-{
-  i = std::min(std::max(i, 0), w - 1);
-  j = std::min(std::max(j, 0), h - 1);
-  return depth[static_cast<std::size_t>(j) * w + i];
-}
-
-// The ratio a texel q (offset di, dj from the apex, depth dq < dp) allows. Written once so the
-// fast search and the oracle compute bit-identical values; every operation is monotone, so a
-// lower bound computed with the same formula from smaller offsets / depths is a true bound.
-inline double Ratio(long long di2dj2, int w, double dp, double dq)
-{
-  return std::sqrt(static_cast<double>(di2dj2)) / w / (dp - dq);
-}
+using namespace conemaps;
 
 // Min-depth tiles over TEXELS (not cells) for pruning the search: level 0 = kTile x kTile
 // texels, each next level the minimum of 2 x 2 children (ceil halving). `candidate` says
@@ -38,13 +25,7 @@ inline double Ratio(long long di2dj2, int w, double dp, double dq)
 constexpr int kTile = 8;
 constexpr float kNone = std::numeric_limits<float>::infinity();
 
-struct TileLevel
-{
-  int W;
-  int H;
-  int Size; // texels per side of a node at this level
-  std::vector<float> Min;
-};
+using TileLevel = MinPyramidLevel; // one channel: the minimum candidate depth
 
 bool HasDeeperNeighbour(const float* depth, int w, int h, int i, int j)
 {
@@ -80,22 +61,41 @@ std::vector<TileLevel> BuildTiles(const float* depth, int w, int h, bool falling
     }
   }
   levels.push_back(std::move(base));
-  while (levels.back().W > 1 || levels.back().H > 1)
-  {
-    const TileLevel& c = levels.back();
-    TileLevel p{ (c.W + 1) / 2, (c.H + 1) / 2, c.Size * 2, {} };
-    p.Min.assign(static_cast<std::size_t>(p.W) * p.H, kNone);
-    for (int j = 0; j < c.H; ++j)
-    {
-      for (int i = 0; i < c.W; ++i)
-      {
-        float& m = p.Min[static_cast<std::size_t>(j / 2) * p.W + i / 2];
-        m = std::min(m, c.Min[static_cast<std::size_t>(j) * c.W + i]);
-      }
-    }
-    levels.push_back(std::move(p));
-  }
+  AddMinPyramidLevels(levels, 1, PyramidHalving::RoundUp);
   return levels;
+}
+
+// The (up to 4) children of node (ti, tj) in the child level of w x h nodes with their bounds
+// (bound(ci, cj, gap) returns a child's bound and sets its gap), nearest first: an insertion
+// sort of <= 4, so equal bounds keep the row-major order. Both searches descend with it.
+struct NodeChild
+{
+  double B;
+  double Gap;
+  int I;
+  int J;
+};
+template <class BoundFunction>
+int ChildrenNearestFirst(int w, int h, int ti, int tj, BoundFunction bound, NodeChild (&children)[4])
+{
+  int n = 0;
+  for (int cj = 2 * tj; cj <= 2 * tj + 1 && cj < h; ++cj)
+  {
+    for (int ci = 2 * ti; ci <= 2 * ti + 1 && ci < w; ++ci)
+    {
+      double gap = 0.0;
+      const double b = bound(ci, cj, gap);
+      children[n++] = { b, gap, ci, cj };
+    }
+  }
+  for (int a = 1; a < n; ++a)
+  {
+    for (int c = a; c > 0 && children[c].B < children[c - 1].B; --c)
+    {
+      std::swap(children[c], children[c - 1]);
+    }
+  }
+  return n;
 }
 
 // Distance in texels (per axis) from texel index p to the index range [lo, hi].
@@ -158,27 +158,9 @@ private:
       return;
     }
     const TileLevel& C = this->Levels[level - 1];
-    struct Child
-    {
-      double B;
-      int I;
-      int J;
-    } children[4];
-    int n = 0;
-    for (int cj = 2 * tj; cj <= 2 * tj + 1 && cj < C.H; ++cj)
-    {
-      for (int ci = 2 * ti; ci <= 2 * ti + 1 && ci < C.W; ++ci)
-      {
-        children[n++] = { this->Bound(level - 1, ci, cj, pi, pj, dp), ci, cj };
-      }
-    }
-    for (int a = 1; a < n; ++a) // nearest first (insertion sort of <= 4)
-    {
-      for (int b = a; b > 0 && children[b].B < children[b - 1].B; --b)
-      {
-        std::swap(children[b], children[b - 1]);
-      }
-    }
+    NodeChild children[4];
+    const int n = ChildrenNearestFirst(C.W, C.H, ti, tj,
+      [&](int ci, int cj, double&) { return this->Bound(level - 1, ci, cj, pi, pj, dp); }, children);
     for (int k = 0; k < n; ++k)
     {
       if (children[k].B >= best)
@@ -223,129 +205,37 @@ private:
   std::vector<TileLevel> Levels;
 };
 
-void RunRows(const ConeMapOptions& options, int rowBegin, int rowEnd,
-  const std::function<void(int, int)>& body)
+// row(r) for every row r of [0, rows) on mesolight::ParallelFor, in up to 64 chunks of rows;
+// after each chunk, progress reports begin + span * (chunks done) / chunks. Each row is computed
+// alone, so the split does not matter. False when the progress callback aborted.
+bool ForEachRow(const ConeMapOptions& options, int rows, double begin, double span,
+  const std::function<void(int)>& row)
 {
-  if (options.ParallelFor)
+  const int chunks = std::max(1, std::min(rows, 64));
+  for (int c = 0; c < chunks; ++c)
   {
-    options.ParallelFor(rowBegin, rowEnd, body);
-    return;
-  }
-  int threads = options.Threads > 0 ? options.Threads
-                                    : static_cast<int>(std::thread::hardware_concurrency());
-  threads = std::max(1, std::min(threads, rowEnd - rowBegin));
-  if (threads == 1)
-  {
-    body(rowBegin, rowEnd);
-    return;
-  }
-  // Rows one at a time from a shared counter: cost varies a lot between rows.
-  std::atomic<int> next(rowBegin);
-  auto work = [&]() {
-    for (int row = next++; row < rowEnd; row = next++)
+    const int rowBegin = static_cast<int>(static_cast<long long>(rows) * c / chunks);
+    const int rowEnd = static_cast<int>(static_cast<long long>(rows) * (c + 1) / chunks);
+    ParallelFor(static_cast<std::size_t>(rowBegin), static_cast<std::size_t>(rowEnd), 1,
+      [&](std::size_t first, std::size_t last) {
+        for (std::size_t r = first; r < last; ++r)
+        {
+          row(static_cast<int>(r));
+        }
+      },
+      options.Threads);
+    if (!ReportProgress(options.Progress, begin + span * (c + 1) / chunks))
     {
-      body(row, row + 1);
+      return false;
     }
-  };
-  std::vector<std::thread> pool;
-  for (int t = 1; t < threads; ++t)
-  {
-    pool.emplace_back(work);
   }
-  work();
-  for (auto& t : pool)
-  {
-    t.join();
-  }
+  return true;
 }
 
 // ---------------------------------------------------------------------------------------------
-// Cones that are provably valid on the bilinear surface (ConeMapOptions::BilinearSafe).
+// The branch-and-bound search of the bilinear-safe cones (ConeMapOptions::BilinearSafe); the
+// cell-pair bound it minimises, and why it holds, are in ConeMapBounds.
 //
-// Grid coordinates: texel centres on the integers. Cell (ci, cj), ci in [0, w], cj in [0, h],
-// is the square [ci - 1, ci] x [cj - 1, cj] with corner texels (ci - 1 | ci, cj - 1 | cj),
-// clamped into the image (the same cells as ComputeMinDepthPyramid). The GL_LINEAR surface is
-// bilinear on each cell; the clamp bands outside the outermost centres are covered by the
-// border cells (treated as whole squares, which only enlarges the sets the bounds cover).
-//
-// Per apex cell X we compute R_X <= the exact cone ratio R*(x) at EVERY apex position x in X,
-// and store at texel t the minimum of R_X over the 4 cells t is a corner of. A ratio read with
-// bilinear filtering at x in cell X is a convex combination of its 4 corner texels' values,
-// each <= R_X <= R*(x): the interpolated cone is valid (Ban et al. 2024, sec. on bilinear
-// interpolation; here with the bound below instead of a per-texel cone).
-//
-// R_X is the minimum over cells Y of a lower bound of |y - x| / (D(x) - D(y)) over x in X and
-// y in Y with D(y) < D(x) (conservative: any such y; relaxed: y a falling point, see
-// ConeMaps.h, along y - x, which Y can only contain if CellMayFall()):
-//  - Y at Chebyshev distance >= 2: with n the unit vector between the cell centres,
-//    |y - x| >= (y - x).n >= 0, and (y - x).n - r (D(x) - D(y)) is multi-affine in
-//    (x_u, x_v, y_u, y_v), so its minimum over the box X x Y is at one of the 16 corner pairs:
-//    r = min over corner pairs (k, l) with D_k > D_l of ((y_l - x_k).n) / (D_k - D_l) bounds
-//    every pair of the cells;
-//    (any unit n with (y - x).n >= 0 on all 16 pairs works; the axis is also tried when the
-//    cells are 2 or more apart along it);
-//  - Y equal or adjacent to X: D(x) - D(y) <= G |x - y| with G the largest gradient norm of the
-//    3 x 3 cells around X (the segment stays in them), so r = 1 / G; for relaxed cones also
-//    r = 1 / V with V the diameter of the box of gradients there (see the constructor).
-// A falling point y is counted in the cell its one-sided derivative is taken from (the cell
-// the ray enters leaving y), so every falling point is covered by exactly the cell whose
-// gradient range CellMayFall() tests. Everything is in grid units; ratios are divided by w
-// (horizontal unit: texture widths). The bounds are evaluated in double from the float depths
-// and truncated to float, so rounding can only narrow them (up to double round-off, 1e-16).
-
-struct CellCorners
-{
-  double D[4]; // (ci-1, cj-1), (ci, cj-1), (ci-1, cj), (ci, cj)
-
-  CellCorners(const float* depth, int w, int h, int ci, int cj)
-  {
-    this->D[0] = At(depth, w, h, ci - 1, cj - 1);
-    this->D[1] = At(depth, w, h, ci, cj - 1);
-    this->D[2] = At(depth, w, h, ci - 1, cj);
-    this->D[3] = At(depth, w, h, ci, cj);
-  }
-  double Min() const { return std::min(std::min(D[0], D[1]), std::min(D[2], D[3])); }
-  double Max() const { return std::max(std::max(D[0], D[1]), std::max(D[2], D[3])); }
-  // Largest gradient norm on the cell (per grid unit): d/du ranges over D1 - D0 .. D3 - D2
-  // (linearly in v), d/dv over D2 - D0 .. D3 - D1; the norm is largest at a corner.
-  double GradientNorm() const
-  {
-    const double gx = std::max(std::abs(D[1] - D[0]), std::abs(D[3] - D[2]));
-    const double gy = std::max(std::abs(D[2] - D[0]), std::abs(D[3] - D[1]));
-    return std::sqrt(gx * gx + gy * gy);
-  }
-  // Sign of the largest derivative along (vx, vy) anywhere on the cell.
-  int MaxSlopeSign(double vx, double vy) const
-  {
-    const double gx0 = D[1] - D[0], gx1 = D[3] - D[2];
-    const double gy0 = D[2] - D[0], gy1 = D[3] - D[1];
-    const double m = vx * (vx > 0.0 ? std::max(gx0, gx1) : std::min(gx0, gx1)) +
-      vy * (vy > 0.0 ? std::max(gy0, gy1) : std::min(gy0, gy1));
-    return m > 0.0 ? 1 : (m == 0.0 ? 0 : -1);
-  }
-  double Twist() const { return D[3] - D[2] - D[1] + D[0]; }
-};
-
-// Can the cell contain a falling point along some direction of the convex cone spanned by the
-// n vectors g? Along direction t the cell's depth is d0 + s (t . grad) + s^2 tx ty twist; any
-// direction of the cone is a non-negative combination of the g's, so its slope is positive
-// somewhere only if some g's is, and zero at best only if some g's is zero at best (then the
-// second-order term decides; we accept any non-zero twist).
-bool CellMayFall(const CellCorners& c, const double (*g)[2], int n)
-{
-  bool zero = false;
-  for (int k = 0; k < n; ++k)
-  {
-    const int s = c.MaxSlopeSign(g[k][0], g[k][1]);
-    if (s > 0)
-    {
-      return true;
-    }
-    zero = zero || s == 0;
-  }
-  return zero && c.Twist() != 0.0;
-}
-
 // Octant s of directions: angles [45 s, 45 (s + 1)] degrees, spanned by kOctant[s], [s + 1].
 constexpr double kOctant[9][2] = { { 1, 0 }, { 1, 1 }, { 0, 1 }, { -1, 1 }, { -1, 0 },
   { -1, -1 }, { 0, -1 }, { 1, -1 }, { 1, 0 } };
@@ -414,72 +304,14 @@ constexpr int kNearRing = 3; // cells (Chebyshev distance) searched directly aro
 constexpr int kAllCells = 8; // node value index: minimum over all cells (conservative cones)
 
 // Cell-pair bound and its branch-and-bound search. The oracle calls PairBound for every pair.
-class CellConeSearch
+class CellConeSearch : public CellPairBounds
 {
 public:
   CellConeSearch(const float* depth, int w, int h, bool relaxed, double maxRatio, double tolerance)
-    : Depth(depth)
-    , W(w)
-    , H(h)
-    , CW(w + 1)
-    , CH(h + 1)
-    , Relaxed(relaxed)
+    : CellPairBounds(depth, w, h, relaxed)
     , MaxRatio(maxRatio)
     , Tolerance(tolerance)
   {
-    // Over the 3 x 3 cells around each cell: the largest gradient norm G (Lipschitz constant)
-    // and, for relaxed cones, the diameter V of the box of gradients. A falling point y has
-    // t . grad D(y) >= 0 along t = (y - x) / |y - x|, so along the segment
-    // D(x) - D(y) = -|y - x| avg(t . grad D) <= |y - x| max |grad D(y) - grad D(z)| <= V |y - x|:
-    // on smooth surfaces V is much smaller than G (a plane has V = 0: no bound at all).
-    const std::size_t cells = static_cast<std::size_t>(this->CW) * this->CH;
-    std::vector<float> g(cells);
-    std::vector<std::array<float, 4>> box(cells); // gx min, gx max, gy min, gy max
-    for (int cj = 0; cj < this->CH; ++cj)
-    {
-      for (int ci = 0; ci < this->CW; ++ci)
-      {
-        const CellCorners c(depth, w, h, ci, cj);
-        const std::size_t k = static_cast<std::size_t>(cj) * this->CW + ci;
-        g[k] = static_cast<float>(c.GradientNorm());
-        const double gx0 = c.D[1] - c.D[0], gx1 = c.D[3] - c.D[2];
-        const double gy0 = c.D[2] - c.D[0], gy1 = c.D[3] - c.D[1];
-        box[k] = { static_cast<float>(std::min(gx0, gx1)), static_cast<float>(std::max(gx0, gx1)),
-          static_cast<float>(std::min(gy0, gy1)), static_cast<float>(std::max(gy0, gy1)) };
-      }
-    }
-    this->Lipschitz.assign(cells, 0.0f);
-    this->Variation.assign(cells, 0.0f);
-    for (int cj = 0; cj < this->CH; ++cj)
-    {
-      for (int ci = 0; ci < this->CW; ++ci)
-      {
-        float m = 0.0f;
-        std::array<double, 4> b{ 1e30, -1e30, 1e30, -1e30 };
-        for (int bj = std::max(0, cj - 1); bj <= std::min(this->CH - 1, cj + 1); ++bj)
-        {
-          for (int bi = std::max(0, ci - 1); bi <= std::min(this->CW - 1, ci + 1); ++bi)
-          {
-            const std::size_t k = static_cast<std::size_t>(bj) * this->CW + bi;
-            m = std::max(m, g[k]);
-            b[0] = std::min<double>(b[0], box[k][0]);
-            b[1] = std::max<double>(b[1], box[k][1]);
-            b[2] = std::min<double>(b[2], box[k][2]);
-            b[3] = std::max<double>(b[3], box[k][3]);
-          }
-        }
-        const std::size_t k = static_cast<std::size_t>(cj) * this->CW + ci;
-        // One float step up: values rounded to float, 1 / G and 1 / V must stay lower bounds.
-        // (The per-cell box ends were rounded to float too: widen V by a relative 1e-6.)
-        this->Lipschitz[k] =
-          m > 0.0f ? std::nextafter(m, std::numeric_limits<float>::infinity()) : 0.0f;
-        const double v = std::hypot(b[1] - b[0], b[3] - b[2]) * (1.0 + 1e-6) +
-          1e-7 * (std::abs(b[0]) + std::abs(b[1]) + std::abs(b[2]) + std::abs(b[3]));
-        this->Variation[k] = static_cast<float>(v) < v
-          ? std::nextafter(static_cast<float>(v), std::numeric_limits<float>::infinity())
-          : static_cast<float>(v);
-      }
-    }
   }
 
   // Node pyramid over cells: level 0 = kCellTile^2 cells per node; values per node: minimum
@@ -514,106 +346,7 @@ public:
       }
     }
     this->Levels.push_back(std::move(base));
-    while (this->Levels.back().W > 1 || this->Levels.back().H > 1)
-    {
-      const Level& c = this->Levels.back();
-      Level p{ (c.W + 1) / 2, (c.H + 1) / 2, c.Size * 2, {} };
-      p.Min.assign(static_cast<std::size_t>(p.W) * p.H * 9, kNone);
-      for (int j = 0; j < c.H; ++j)
-      {
-        for (int i = 0; i < c.W; ++i)
-        {
-          const float* cm = &c.Min[(static_cast<std::size_t>(j) * c.W + i) * 9];
-          float* pm = &p.Min[(static_cast<std::size_t>(j / 2) * p.W + i / 2) * 9];
-          for (int s = 0; s < 9; ++s)
-          {
-            pm[s] = std::min(pm[s], cm[s]);
-          }
-        }
-      }
-      this->Levels.push_back(std::move(p));
-    }
-  }
-
-  // Lower bound (texture widths per unit depth) of the cone ratio at every apex of cell X over
-  // the surface of cell Y; +inf when Y cannot constrain X.
-  // Pairs that cannot go below `cutoff` may return +inf early (the minimum is unchanged).
-  double PairBound(int xi, int xj, const CellCorners& cx, int yi, int yj, double cutoff) const
-  {
-    const CellCorners cy(this->Depth, this->W, this->H, yi, yj);
-    const double dX = cx.Max();
-    const double minY = cy.Min();
-    if (!(minY < dX))
-    {
-      return std::numeric_limits<double>::infinity();
-    }
-    const int dx = yi - xi;
-    const int dy = yj - xj;
-    const bool near = std::abs(dx) <= 1 && std::abs(dy) <= 1;
-    const double len = std::sqrt(static_cast<double>(dx) * dx + static_cast<double>(dy) * dy);
-    // Every corner pair has (y_l - x_k).n >= len - sqrt(2) and D_k - D_l <= dX - minY.
-    if (!near && (len - std::sqrt(2.0)) / this->W / (dX - minY) * (1.0 - 1e-9) >= cutoff)
-    {
-      return std::numeric_limits<double>::infinity();
-    }
-    if (this->Relaxed)
-    {
-      // Directions from X to Y: the box (dx, dy) + [-1, 1]^2, spanned by its corners (or, when
-      // it contains 0, every direction, spanned by the axes).
-      static const double axes[4][2] = { { 1, 0 }, { 0, 1 }, { -1, 0 }, { 0, -1 } };
-      const double corners[4][2] = { { dx - 1.0, dy - 1.0 }, { dx + 1.0, dy - 1.0 },
-        { dx - 1.0, dy + 1.0 }, { dx + 1.0, dy + 1.0 } };
-      if (!CellMayFall(cy, near ? axes : corners, 4))
-      {
-        return std::numeric_limits<double>::infinity();
-      }
-    }
-    if (near)
-    {
-      const std::size_t k = static_cast<std::size_t>(xj) * this->CW + xi;
-      double g = this->Lipschitz[k];
-      if (this->Relaxed)
-      {
-        g = std::min<double>(g, this->Variation[k]);
-      }
-      return g > 0.0 ? 1.0 / (g * this->W) : std::numeric_limits<double>::infinity();
-    }
-    // Any unit n with (y - x).n >= 0 on all corner pairs gives a valid bound; take the best of
-    // the direction between the centres and, when the cells are 2 or more apart along an axis,
-    // that axis (tighter for cells nearly in line with an axis).
-    double bound = ProjectedBound(cx, cy, dx / len, dy / len, dx, dy);
-    if (std::abs(dx) >= 2)
-    {
-      bound = std::max(bound, ProjectedBound(cx, cy, dx > 0 ? 1.0 : -1.0, 0.0, dx, dy));
-    }
-    if (std::abs(dy) >= 2)
-    {
-      bound = std::max(bound, ProjectedBound(cx, cy, 0.0, dy > 0 ? 1.0 : -1.0, dx, dy));
-    }
-    return bound / this->W;
-  }
-
-  // min over corner pairs (k, l) with D_k > D_l of ((y_l - x_k).n) / (D_k - D_l), grid units.
-  static double ProjectedBound(
-    const CellCorners& cx, const CellCorners& cy, double nx, double ny, int dx, int dy)
-  {
-    static const double ox[4] = { -0.5, 0.5, -0.5, 0.5 };
-    static const double oy[4] = { -0.5, -0.5, 0.5, 0.5 };
-    const double base = dx * nx + dy * ny;
-    double best = std::numeric_limits<double>::infinity();
-    for (int k = 0; k < 4; ++k)
-    {
-      for (int l = 0; l < 4; ++l)
-      {
-        const double m = cx.D[k] - cy.D[l];
-        if (m > 0.0)
-        {
-          const double n = base + (ox[l] - ox[k]) * nx + (oy[l] - oy[k]) * ny;
-          best = std::min(best, n / m);
-        }
-      }
-    }
-    return best;
+    AddMinPyramidLevels(this->Levels, 9, PyramidHalving::RoundUp);
   }
 
   // R_X by branch and bound, nearest nodes first. With Tolerance > 0 a node is also skipped
@@ -661,13 +394,7 @@ public:
   int CellsH() const { return this->CH; }
 
 private:
-  struct Level
-  {
-    int W;
-    int H;
-    int Size; // cells per side of a node
-    std::vector<float> Min;
-  };
+  using Level = MinPyramidLevel; // 9 channels: per octant (0-7) and all cells (kAllCells)
   struct State
   {
     int Xi;
@@ -764,35 +491,15 @@ private:
       return;
     }
     const Level& C = this->Levels[level - 1];
-    struct Child
-    {
-      double B;
-      double Gap;
-      int I;
-      int J;
-    } children[4];
-    int n = 0;
-    for (int cj = 2 * tj; cj <= 2 * tj + 1 && cj < C.H; ++cj)
-    {
-      for (int ci = 2 * ti; ci <= 2 * ti + 1 && ci < C.W; ++ci)
-      {
-        double gap = 0.0;
-        const double b = this->NodeBound(level - 1, ci, cj, st, gap);
-        children[n++] = { b, gap, ci, cj };
-      }
-    }
+    NodeChild children[4];
+    const int n = ChildrenNearestFirst(C.W, C.H, ti, tj,
+      [&](int ci, int cj, double& gap) { return this->NodeBound(level - 1, ci, cj, st, gap); },
+      children);
     // A node small against its distance is not opened: its bound (its shallowest candidate
     // depth at its nearest distance) is taken as is, as the quick cone map generation of Valasek
     // & Ban (2022) takes a coarse max-mipmap texel. Still a lower bound; narrower than the cell
     // search by at most the distance error, a factor 1 + Tolerance on the node's own cells.
     const double acceptSize = C.Size * std::sqrt(2.0);
-    for (int a = 1; a < n; ++a)
-    {
-      for (int b = a; b > 0 && children[b].B < children[b - 1].B; --b)
-      {
-        std::swap(children[b], children[b - 1]);
-      }
-    }
     for (int k = 0; k < n; ++k)
     {
       if (!std::isfinite(children[k].B) || this->Prune(children[k].B, st))
@@ -808,99 +515,36 @@ private:
     }
   }
 
-  const float* Depth;
-  int W;
-  int H;
-  int CW;
-  int CH;
-  bool Relaxed;
   double MaxRatio;
   double Tolerance;
-  std::vector<float> Lipschitz;
-  std::vector<float> Variation;
   std::vector<float> CellMin; // minimum corner depth per cell (float, as in the pyramid)
   std::vector<Level> Levels;
 };
 
-// Largest float not above x (the stored cone is never wider than the computed bound).
-float TruncateToFloat(double x)
-{
-  float f = static_cast<float>(x);
-  if (static_cast<double>(f) > x)
-  {
-    f = std::nextafter(f, -std::numeric_limits<float>::infinity());
-  }
-  return f;
-}
-
-// Per texel: the minimum of R_X over the (up to) 4 cells the texel is a corner of.
-std::vector<float> TexelsFromCells(const std::vector<double>& cells, int w, int h)
-{
-  std::vector<float> out(static_cast<std::size_t>(w) * h);
-  const int cw = w + 1;
-  for (int j = 0; j < h; ++j)
-  {
-    for (int i = 0; i < w; ++i)
-    {
-      const std::size_t c = static_cast<std::size_t>(j) * cw + i;
-      out[static_cast<std::size_t>(j) * w + i] = TruncateToFloat(
-        std::min({ cells[c], cells[c + 1], cells[c + cw], cells[c + cw + 1] }));
-    }
-  }
-  return out;
-}
-
+// The bilinear-safe cones by the branch-and-bound search (ConeMapOracle.cxx has the
+// exhaustive one).
 std::vector<float> ComputeCellBound(
-  const float* depth, int w, int h, const ConeMapOptions& options, bool relaxed, bool bruteForce)
+  const float* depth, int w, int h, const ConeMapOptions& options, bool relaxed)
 {
   CellConeSearch search(depth, w, h, relaxed, static_cast<double>(options.MaxRatio),
-    bruteForce ? 0.0 : std::max(0.0, static_cast<double>(options.Tolerance)));
+    std::max(0.0, static_cast<double>(options.Tolerance)));
   const int cw = w + 1;
   const int ch = h + 1;
   std::vector<double> cells(static_cast<std::size_t>(cw) * ch);
-  if (bruteForce)
-  {
-    for (int xj = 0; xj < ch; ++xj)
-    {
-      for (int xi = 0; xi < cw; ++xi)
-      {
-        const CellCorners cx(depth, w, h, xi, xj);
-        double best = options.MaxRatio;
-        for (int yj = 0; yj < ch; ++yj)
-        {
-          for (int yi = 0; yi < cw; ++yi)
-          {
-            best = std::min(best, search.PairBound(xi, xj, cx, yi, yj, best));
-          }
-        }
-        cells[static_cast<std::size_t>(xj) * cw + xi] = best;
-      }
-    }
-    return TexelsFromCells(cells, w, h);
-  }
   search.BuildPyramid();
-  if (options.Progress && !options.Progress(0.02))
+  if (!ReportProgress(options.Progress, 0.02))
   {
     return {};
   }
-  const int chunks = std::max(1, std::min(ch, 64));
-  for (int c = 0; c < chunks; ++c)
-  {
-    const int rowBegin = static_cast<int>(static_cast<long long>(ch) * c / chunks);
-    const int rowEnd = static_cast<int>(static_cast<long long>(ch) * (c + 1) / chunks);
-    RunRows(options, rowBegin, rowEnd, [&](int begin, int end) {
-      for (int xj = begin; xj < end; ++xj)
-      {
-        for (int xi = 0; xi < cw; ++xi)
-        {
-          cells[static_cast<std::size_t>(xj) * cw + xi] = search.Run(xi, xj);
-        }
-      }
-    });
-    if (options.Progress && !options.Progress(0.02 + 0.97 * (c + 1) / chunks))
+  const bool done = ForEachRow(options, ch, 0.02, 0.97, [&](int xj) {
+    for (int xi = 0; xi < cw; ++xi)
     {
-      return {};
+      cells[static_cast<std::size_t>(xj) * cw + xi] = search.Run(xi, xj);
     }
+  });
+  if (!done)
+  {
+    return {};
   }
   return TexelsFromCells(cells, w, h);
 }
@@ -912,14 +556,14 @@ std::vector<float> ComputeFast(
   {
     return {};
   }
-  if (options.Progress && !options.Progress(0.0))
+  if (!ReportProgress(options.Progress, 0.0))
   {
     return {};
   }
   if (options.BilinearSafe)
   {
-    std::vector<float> ratio = ComputeCellBound(depth, w, h, options, relaxed, false);
-    if (ratio.empty() || (options.Progress && !options.Progress(1.0)))
+    std::vector<float> ratio = ComputeCellBound(depth, w, h, options, relaxed);
+    if (ratio.empty() || !ReportProgress(options.Progress, 1.0))
     {
       return {};
     }
@@ -928,153 +572,24 @@ std::vector<float> ComputeFast(
   const ConeSearch search(depth, w, h, relaxed, static_cast<double>(options.MaxRatio));
   std::vector<float> ratio(static_cast<std::size_t>(w) * h);
   float* out = ratio.data();
-  const int chunks = std::max(1, std::min(h, 64));
-  for (int c = 0; c < chunks; ++c)
-  {
-    const int rowBegin = static_cast<int>(static_cast<long long>(h) * c / chunks);
-    const int rowEnd = static_cast<int>(static_cast<long long>(h) * (c + 1) / chunks);
-    RunRows(options, rowBegin, rowEnd, [&](int begin, int end) {
-      for (int j = begin; j < end; ++j)
-      {
-        for (int i = 0; i < w; ++i)
-        {
-          out[static_cast<std::size_t>(j) * w + i] = search.Run(i, j);
-        }
-      }
-    });
-    if (options.Progress && !options.Progress(0.99 * (c + 1) / chunks))
+  const bool done = ForEachRow(options, h, 0.0, 0.99, [&](int j) {
+    for (int i = 0; i < w; ++i)
     {
-      return {};
+      out[static_cast<std::size_t>(j) * w + i] = search.Run(i, j);
     }
+  });
+  if (!done)
+  {
+    return {};
   }
-  if (options.Progress && !options.Progress(1.0))
+  if (!ReportProgress(options.Progress, 1.0))
   {
     return {};
   }
   return ratio;
 }
 
-std::vector<float> ComputeBruteForce(
-  const float* depth, int w, int h, const ConeMapOptions& options, bool relaxed)
-{
-  if (!depth || w < 1 || h < 1)
-  {
-    return {};
-  }
-  if (options.BilinearSafe)
-  {
-    return ComputeCellBound(depth, w, h, options, relaxed, true);
-  }
-  std::vector<float> ratio(static_cast<std::size_t>(w) * h);
-  for (int pj = 0; pj < h; ++pj)
-  {
-    for (int pi = 0; pi < w; ++pi)
-    {
-      const double dp = depth[static_cast<std::size_t>(pj) * w + pi];
-      double best = options.MaxRatio;
-      for (int qj = 0; qj < h; ++qj)
-      {
-        for (int qi = 0; qi < w; ++qi)
-        {
-          const double dq = depth[static_cast<std::size_t>(qj) * w + qi];
-          if (!(dq < dp) || (relaxed && !IsFallingEdgeNear(depth, w, h, pi, pj, qi, qj)))
-          {
-            continue;
-          }
-          const long long di = qi - pi;
-          const long long dj = qj - pj;
-          best = std::min(best, Ratio(di * di + dj * dj, w, dp, dq));
-        }
-      }
-      ratio[static_cast<std::size_t>(pj) * w + pi] = static_cast<float>(best);
-    }
-  }
-  return ratio;
-}
-
-
 } // namespace
-
-namespace
-{
-// Falling-edge test of texel q along the direction (a, b) (texel units, not both 0): the
-// bilinear patch q lies on when leaving it along (a, b) is the quadrant's cell, and along
-// q + t (a, b) its depth is d00 + t (|a| dx + |b| dy) + t^2 |a| |b| dxy. A zero component
-// still picks a quadrant by its sign bit (+0 / -0), so directions just off an axis can be
-// tested on both sides.
-bool FallingAlong(const float* depth, int w, int h, int qi, int qj, double a, double b)
-{
-  const int sx = std::signbit(a) ? -1 : 1;
-  const int sy = std::signbit(b) ? -1 : 1;
-  const double d00 = At(depth, w, h, qi, qj);
-  const double d10 = At(depth, w, h, qi + sx, qj);
-  const double d01 = At(depth, w, h, qi, qj + sy);
-  const double d11 = At(depth, w, h, qi + sx, qj + sy);
-  const double aa = std::abs(a);
-  const double ab = std::abs(b);
-  const double slope = aa * (d10 - d00) + ab * (d01 - d00);
-  if (slope != 0.0)
-  {
-    return slope > 0.0;
-  }
-  return aa * ab * (d11 - d10 - d01 + d00) > 0.0;
-}
-
-// The first-order term alone for a direction infinitesimally off an axis: (0+, b) falls if
-// dy > 0, or dy == 0 and dx > 0 on that side.
-bool FallingJustOffAxis(const float* depth, int w, int h, int qi, int qj, bool alongX,
-  int sign)
-{
-  const double d00 = At(depth, w, h, qi, qj);
-  for (int side : { -1, 1 })
-  {
-    const double along = alongX ? At(depth, w, h, qi + sign, qj) : At(depth, w, h, qi, qj + sign);
-    const double across = alongX ? At(depth, w, h, qi, qj + side) : At(depth, w, h, qi + side, qj);
-    if (along - d00 > 0.0 || (along - d00 == 0.0 && across - d00 > 0.0))
-    {
-      return true;
-    }
-  }
-  return false;
-}
-} // namespace
-
-bool IsFallingEdge(const float* depth, int w, int h, int pi, int pj, int qi, int qj)
-{
-  return FallingAlong(depth, w, h, qi, qj, qi - pi, qj - pj);
-}
-
-bool IsFallingEdgeNear(const float* depth, int w, int h, int pi, int pj, int qi, int qj)
-{
-  // Directions from every apex position in the square [pi - 1, pi + 1] x [pj - 1, pj + 1]
-  // (the cells whose bilinear lookups read texel p's ratio) toward q form a convex set; the
-  // falling condition is linear in the direction within a quadrant, so it holds for some
-  // direction of the set iff it holds for an extreme one: a corner direction, or an axis
-  // direction where the set crosses into another quadrant.
-  for (int cy : { -1, 1 })
-  {
-    for (int cx : { -1, 1 })
-    {
-      const double a = qi - (pi + cx);
-      const double b = qj - (pj + cy);
-      if ((a != 0.0 || b != 0.0) && FallingAlong(depth, w, h, qi, qj, a, b))
-      {
-        return true;
-      }
-    }
-  }
-  const int di = qi - pi;
-  const int dj = qj - pj;
-  if (std::abs(di) <= 1 && dj != 0 && FallingJustOffAxis(depth, w, h, qi, qj, false, dj > 0 ? 1 : -1))
-  {
-    return true;
-  }
-  if (std::abs(dj) <= 1 && di != 0 && FallingJustOffAxis(depth, w, h, qi, qj, true, di > 0 ? 1 : -1))
-  {
-    return true;
-  }
-  return false;
-}
 
 std::vector<float> ComputeConservativeConeMap(
   const float* depth, int w, int h, const ConeMapOptions& options)
@@ -1093,18 +608,6 @@ std::vector<float> ComputeConeMap(
 {
   return type == ConeType::Relaxed ? ComputeRelaxedConeMap(depth, w, h, options)
                                    : ComputeConservativeConeMap(depth, w, h, options);
-}
-
-std::vector<float> ComputeConservativeConeMapBruteForce(
-  const float* depth, int w, int h, const ConeMapOptions& options)
-{
-  return ComputeBruteForce(depth, w, h, options, false);
-}
-
-std::vector<float> ComputeRelaxedConeMapBruteForce(
-  const float* depth, int w, int h, const ConeMapOptions& options)
-{
-  return ComputeBruteForce(depth, w, h, options, true);
 }
 
 std::uint8_t EncodeConeRatio8(float ratio)
@@ -1141,68 +644,6 @@ float DecodeConeRatio8(std::uint8_t code)
   }
   const float x = static_cast<float>(code) / 255.0f;
   return x / (1.0f - x); // the same float arithmetic as the shader
-}
-
-bool MinDepthPyramidLevelSize(int w, int h, int level, int& lw, int& lh)
-{
-  if (w < 1 || h < 1 || level < 0)
-  {
-    return false;
-  }
-  lw = w + 1;
-  lh = h + 1;
-  for (int k = 0; k < level; ++k)
-  {
-    if (lw == 1 && lh == 1)
-    {
-      return false;
-    }
-    lw = std::max(1, lw / 2);
-    lh = std::max(1, lh / 2);
-  }
-  return true;
-}
-
-std::vector<std::vector<float>> ComputeMinDepthPyramid(const float* depth, int w, int h)
-{
-  std::vector<std::vector<float>> levels;
-  if (!depth || w < 1 || h < 1)
-  {
-    return levels;
-  }
-  int lw = w + 1;
-  int lh = h + 1;
-  std::vector<float> level0(static_cast<std::size_t>(lw) * lh);
-  for (int cj = 0; cj < lh; ++cj)
-  {
-    for (int ci = 0; ci < lw; ++ci)
-    {
-      level0[static_cast<std::size_t>(cj) * lw + ci] = std::min(
-        { At(depth, w, h, ci - 1, cj - 1), At(depth, w, h, ci, cj - 1), At(depth, w, h, ci - 1, cj),
-          At(depth, w, h, ci, cj) });
-    }
-  }
-  levels.push_back(std::move(level0));
-  while (lw > 1 || lh > 1)
-  {
-    const std::vector<float>& c = levels.back();
-    const int pw = std::max(1, lw / 2);
-    const int ph = std::max(1, lh / 2);
-    std::vector<float> p(static_cast<std::size_t>(pw) * ph, kNone);
-    for (int j = 0; j < lh; ++j)
-    {
-      for (int i = 0; i < lw; ++i)
-      {
-        const int pi = std::min(i / 2, pw - 1), pj = std::min(j / 2, ph - 1);
-        float& m = p[static_cast<std::size_t>(pj) * pw + pi];
-        m = std::min(m, c[static_cast<std::size_t>(j) * lw + i]);
-      }
-    }
-    levels.push_back(std::move(p));
-    lw = pw;
-    lh = ph;
-  }
-  return levels;
 }
 
 } // namespace mesolight

@@ -60,7 +60,7 @@
  *        relaxed cones, <= V |x - y| (V: spread of the gradients around X; a falling point
  *        has a non-negative slope along the ray, so the drop before it is bounded by how much
  *        the gradient varies: planes get no bound at all).
- *    Details and proofs in the .cxx. There is no empirical safety factor; the stored float
+ *    Details and proofs in ConeMapBounds.cxx. There is no empirical safety factor; the stored float
  *    is truncated toward zero (never wider than the bound).
  *    Cost: the fast search is a branch and bound over a min-depth pyramid of cells with
  *    per-octant minima over the cells that can fall in that octant (so that cells rising away
@@ -82,6 +82,9 @@
 
 #include "MesolightFiltersModule.h" // for the export macro only
 
+#include "MinDepthPyramid.h" // the min-depth pyramid (declared there)
+#include "Progress.h"
+
 #include <cstdint>
 #include <functional>
 #include <vector>
@@ -101,19 +104,16 @@ enum class ConeType
 struct ConeMapOptions
 {
   /**
-   * Parallel-for over rows: called with [rowBegin, rowEnd) and a body(rowBegin, rowEnd) that
-   * the hook must run over that whole range, split as it likes (e.g. vtkSMPTools::For). If
-   * empty, Threads std::threads are used.
+   * Rows run on mesolight::ParallelFor (vtkSMPTools). 1 computes on the calling thread only
+   * (benchmarks, tests); any other value uses all of vtkSMPTools' threads. The result does not
+   * depend on it.
    */
-  std::function<void(int rowBegin, int rowEnd, const std::function<void(int, int)>& body)>
-    ParallelFor;
-  /// Threads used when ParallelFor is empty; 0 = std::thread::hardware_concurrency().
   int Threads = 0;
   /**
    * Called from the calling thread with the fraction done in [0,1] between chunks of rows;
-   * returning false aborts and the function returns an empty vector.
+   * returning false aborts and the function returns an empty vector (Progress.h).
    */
-  std::function<bool(double)> Progress;
+  ProgressCallback Progress;
   /**
    * Default on: cones valid on the bilinear surface, for every apex position and every read of
    * the ratio with bilinear filtering (the cell bound of the file comment; provable, no safety
@@ -179,31 +179,6 @@ MESOLIGHTFILTERS_EXPORT bool IsFallingEdgeNear(
 MESOLIGHTFILTERS_EXPORT std::uint8_t EncodeConeRatio8(float ratio);
 /// Inverse of the 8-bit encoding: c' / (1 - c') with c' = code / 255 (255 -> infinity).
 MESOLIGHTFILTERS_EXPORT float DecodeConeRatio8(std::uint8_t code);
-
-/**
- * Min-depth pyramid for exact maximum-mipmap tracing (Tevs et al. 2008; our depth grows
- * downward, so their maximum height is our minimum depth).
- *
- * Level 0 has one value per CELL of the texel-centre grid, clamp-extension border included:
- * (w + 1) x (h + 1) values, row-major. Cell (ci, cj) covers grid x in [ci - 1, ci] and y in
- * [cj - 1, cj] (texel centres on the integers, x = u w - 0.5), i.e. the bilinear patch
- * between texels (ci - 1 .. ci, cj - 1 .. cj) with indices clamped into the image; cells 0
- * and w (rows 0 and h) are the clamp bands outside the outermost centres. Its value is the
- * minimum of the patch's 4 corner texels, which bounds the bilinear patch from above
- * (every point of the cell is at least that deep).
- *
- * Level k + 1 has max(1, W_k / 2) x max(1, H_k / 2) values (sizes halve rounding down, as a
- * complete OpenGL mipmap requires), each the minimum over its children 2i .. 2i + 1,
- * 2j .. 2j + 1; the last parent of a row or column also takes the odd child left over, so
- * child (i, j) belongs to parent (min(i / 2, W_{k+1} - 1), min(j / 2, H_{k+1} - 1)). The last
- * level is 1 x 1. Empty when w < 1 or h < 1. Level sizes: see MinDepthPyramidLevelSize().
- */
-MESOLIGHTFILTERS_EXPORT std::vector<std::vector<float>> ComputeMinDepthPyramid(
-  const float* depth, int w, int h);
-
-/// Size of pyramid level `level` for a w x h depth map: level 0 is (w + 1) x (h + 1), then
-/// halving rounded down (at least 1). Returns false if the level does not exist.
-MESOLIGHTFILTERS_EXPORT bool MinDepthPyramidLevelSize(int w, int h, int level, int& lw, int& lh);
 
 } // namespace mesolight
 

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "core/EnvironmentMaps.h"
 
+#include "MathConstants.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -9,7 +11,6 @@ namespace mesolight
 
 namespace
 {
-constexpr double Pi = EnvPi;
 
 double Dot(const double a[3], const double b[3])
 {
@@ -61,8 +62,8 @@ Frame MakeFrame(const ProbeView& view)
 void RowThetaRange(int j, int height, double& theta0, double& theta1)
 {
   const int fromTop = height - 1 - j;
-  theta0 = Pi * fromTop / height;
-  theta1 = Pi * (fromTop + 1) / height;
+  theta0 = Pi<double> * fromTop / height;
+  theta1 = Pi<double> * (fromTop + 1) / height;
 }
 
 /// Fills a W x H image, each pixel the average of samples x samples sub-pixel evaluations of
@@ -152,8 +153,8 @@ RgbImage LatLongToProbe(const RgbImage& map, int size, DirectionFromPoint direct
 //------------------------------------------------------------------------------
 void DirectionFromMapUV(double u, double v, double d[3])
 {
-  const double theta = Pi * v;
-  const double phi = 2.0 * Pi * u;
+  const double theta = Pi<double> * v;
+  const double phi = 2.0 * Pi<double> * u;
   const double s = std::sin(theta);
   d[0] = s * std::cos(phi);
   d[1] = s * std::sin(phi);
@@ -171,13 +172,13 @@ void MapUVFromDirection(const double d[3], double& u, double& v)
     return;
   }
   const double z = std::max(-1.0, std::min(1.0, d[2] / len));
-  v = std::acos(z) / Pi;
+  v = std::acos(z) / Pi<double>;
   double phi = std::atan2(d[1], d[0]);
   if (phi < 0.0)
   {
-    phi += 2.0 * Pi;
+    phi += 2.0 * Pi<double>;
   }
-  u = phi / (2.0 * Pi);
+  u = phi / (2.0 * Pi<double>);
   if (u >= 1.0)
   {
     u = 0.0;
@@ -190,7 +191,7 @@ double PixelSolidAngle(int j, int width, int height)
   double theta0 = 0.0;
   double theta1 = 0.0;
   RowThetaRange(j, height, theta0, theta1);
-  return (2.0 * Pi / width) * (std::cos(theta0) - std::cos(theta1));
+  return (2.0 * Pi<double> / width) * (std::cos(theta0) - std::cos(theta1));
 }
 
 //------------------------------------------------------------------------------
@@ -199,8 +200,8 @@ void PixelMoment(int i, int j, int width, int height, double m[3])
   double theta0 = 0.0;
   double theta1 = 0.0;
   RowThetaRange(j, height, theta0, theta1);
-  const double phi0 = 2.0 * Pi * i / width;
-  const double phi1 = 2.0 * Pi * (i + 1) / width;
+  const double phi0 = 2.0 * Pi<double> * i / width;
+  const double phi1 = 2.0 * Pi<double> * (i + 1) / width;
   // integral of sin^2 theta d theta, and of cos theta sin theta d theta.
   const double sin2 =
     0.5 * (theta1 - theta0) - 0.25 * (std::sin(2.0 * theta1) - std::sin(2.0 * theta0));
@@ -226,7 +227,7 @@ ExactIrradiance::ExactIrradiance(const RgbImage& map)
   {
     return;
   }
-  this->DeltaPhi = 2.0 * Pi / this->Width;
+  this->DeltaPhi = 2.0 * Pi<double> / this->Width;
   for (int j = 0; j < this->Height; ++j)
   {
     double m[3];
@@ -329,8 +330,8 @@ SH9 ProjectSH9(const RgbImage& map)
 
 void IrradianceSH9(const SH9& sh, const double n[3], double e[3])
 {
-  static const double A[9] = { Pi, 2.0 * Pi / 3.0, 2.0 * Pi / 3.0, 2.0 * Pi / 3.0, Pi / 4.0,
-    Pi / 4.0, Pi / 4.0, Pi / 4.0, Pi / 4.0 };
+  static const double A[9] = { Pi<double>, 2.0 * Pi<double> / 3.0, 2.0 * Pi<double> / 3.0, 2.0 * Pi<double> / 3.0, Pi<double> / 4.0,
+    Pi<double> / 4.0, Pi<double> / 4.0, Pi<double> / 4.0, Pi<double> / 4.0 };
   double y[9];
   EvaluateSHBasis(n, y);
   e[0] = e[1] = e[2] = 0.0;
@@ -407,7 +408,7 @@ void AngularMapPointFromDirection(const ProbeView& view, const double d[3], doub
   double n[3] = { d[0], d[1], d[2] };
   Normalize(n);
   const double cf = std::max(-1.0, std::min(1.0, Dot(n, f.F)));
-  const double r = std::acos(cf) / Pi;
+  const double r = std::acos(cf) / Pi<double>;
   const double x = Dot(n, f.R);
   const double y = Dot(n, f.U);
   const double s = std::sqrt(x * x + y * y);
@@ -429,7 +430,7 @@ bool DirectionFromAngularMapPoint(const ProbeView& view, double a, double b, dou
     return false;
   }
   const Frame f = MakeFrame(view);
-  const double angle = Pi * r;
+  const double angle = Pi<double> * r;
   const double c = std::cos(angle);
   const double s = r > 0.0 ? std::sin(angle) / r : 0.0;
   for (int k = 0; k < 3; ++k)

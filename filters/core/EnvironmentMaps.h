@@ -26,35 +26,15 @@
 
 #include "MesolightFiltersModule.h" // for the export macro only
 
+#include "MathConstants.h"
+#include "RgbImage.h"
+
 #include <array>
 #include <cstddef>
 #include <vector>
 
 namespace mesolight
 {
-
-constexpr double EnvPi = 3.14159265358979323846;
-
-/// An RGB float image, W x H, row-major, 3 floats per pixel, VTK row order (row 0 = bottom).
-struct RgbImage
-{
-  int Width = 0;
-  int Height = 0;
-  std::vector<float> Rgb; ///< 3 * Width * Height values
-
-  RgbImage() = default;
-  RgbImage(int w, int h)
-    : Width(w)
-    , Height(h)
-    , Rgb(static_cast<std::size_t>(w) * static_cast<std::size_t>(h) * 3, 0.0f)
-  {
-  }
-  float* Pixel(int i, int j) { return Rgb.data() + 3 * (static_cast<std::size_t>(j) * Width + i); }
-  const float* Pixel(int i, int j) const
-  {
-    return Rgb.data() + 3 * (static_cast<std::size_t>(j) * Width + i);
-  }
-};
 
 /// Luminance Y = 0.2125 R + 0.7154 G + 0.0721 B.
 inline double Luminance(double r, double g, double b)

@@ -1,53 +1,45 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "core/MedianCut.h"
 
+#include "MathConstants.h"
+#include "ParallelFor.h"
 #include "core/EnvironmentMaps.h"
 
 #include <algorithm>
 #include <cmath>
-#include <atomic>
 #include <memory>
 #include <numeric>
 #include <queue>
 #include <sstream>
-#include <thread>
+#include <thread> // hardware_concurrency() only: fixes the number of bands/blocks (no thread started)
 
 namespace mesolight
 {
 
 namespace
 {
-constexpr double Pi = EnvPi;
-
-/// Number of threads ParallelFor uses for n items.
-int ThreadsFor(int n)
+/// Number of row bands of the summed-area tables for n rows. The sums depend on where the
+/// bands start, so their number stays what it always was (the hardware threads, at most one
+/// per 16 rows), whatever runs them.
+int BandsFor(int n)
 {
   return std::max(1, std::min<int>(n / 16 + 1, static_cast<int>(std::thread::hardware_concurrency())));
 }
 
-/// Run fn(begin, end) over [0, n) on the hardware threads: thread t gets the contiguous band
-/// [n t / T, n (t + 1) / T).
+/// fn(begin, end) for the band [n t / T, n (t + 1) / T) of each t < T = BandsFor(n), on
+/// mesolight::ParallelFor.
 template <typename Fn>
-void ParallelFor(int n, Fn fn)
+void ForEachBand(int n, Fn fn)
 {
-  const int threads = ThreadsFor(n);
-  if (threads <= 1)
-  {
-    fn(0, n);
-    return;
-  }
-  std::vector<std::thread> pool;
-  pool.reserve(static_cast<size_t>(threads));
-  for (int t = 0; t < threads; ++t)
-  {
-    const int begin = static_cast<int>(static_cast<long long>(n) * t / threads);
-    const int end = static_cast<int>(static_cast<long long>(n) * (t + 1) / threads);
-    pool.emplace_back([=]() { fn(begin, end); });
-  }
-  for (auto& th : pool)
-  {
-    th.join();
-  }
+  const int bands = BandsFor(n);
+  ParallelFor(0, static_cast<std::size_t>(bands), 1, [&](std::size_t t0, std::size_t t1) {
+    for (std::size_t t = t0; t < t1; ++t)
+    {
+      const int begin = static_cast<int>(static_cast<long long>(n) * static_cast<long long>(t) / bands);
+      const int end = static_cast<int>(static_cast<long long>(n) * static_cast<long long>(t + 1) / bands);
+      fn(begin, end);
+    }
+  });
 }
 
 /// A (W+1) x (H+1) summed-area table in double; rows counted from the top of the map.
@@ -285,7 +277,7 @@ MedianCutStatus ComputeMedianCut(const float* pixels, int components, int width,
     error = os.str();
     return MedianCutStatus::Error;
   }
-  auto progress = [&](double f) { return !options.Progress || options.Progress(f); };
+  auto progress = [&](double f) { return ReportProgress(options.Progress, f); };
 
   const int w = width;
   const int h = height;
@@ -293,8 +285,8 @@ MedianCutStatus ComputeMedianCut(const float* pixels, int components, int width,
   cut.W = w;
   cut.H = h;
   cut.Variance = options.VarianceMinimization;
-  cut.DPhi = 2.0 * Pi / w;
-  cut.DTheta = Pi / h;
+  cut.DPhi = 2.0 * Pi<double> / w;
+  cut.DTheta = Pi<double> / h;
 
   // Per-row weights (rows from the top): pixel weight, moment factors.
   std::vector<double> rowWeight(static_cast<size_t>(h));
@@ -302,7 +294,7 @@ MedianCutStatus ComputeMedianCut(const float* pixels, int components, int width,
   std::vector<double> rowZ(static_cast<size_t>(h));
   std::vector<double> colC(static_cast<size_t>(w));
   std::vector<double> colS(static_cast<size_t>(w));
-  const double uniform = 4.0 * Pi / static_cast<double>(count);
+  const double uniform = 4.0 * Pi<double> / static_cast<double>(count);
   for (int y = 0; y < h; ++y)
   {
     const int j = h - 1 - y; // VTK row
@@ -311,14 +303,14 @@ MedianCutStatus ComputeMedianCut(const float* pixels, int components, int width,
       double m[3];
       PixelMoment(0, j, w, h, m);
       rowWeight[y] = PixelSolidAngle(j, w, h);
-      const double t0 = Pi * y / h;
-      const double t1 = Pi * (y + 1) / h;
+      const double t0 = Pi<double> * y / h;
+      const double t1 = Pi<double> * (y + 1) / h;
       rowS[y] = 0.5 * (t1 - t0) - 0.25 * (std::sin(2.0 * t1) - std::sin(2.0 * t0));
       rowZ[y] = m[2];
     }
     else
     {
-      const double theta = Pi * (y + 0.5) / h;
+      const double theta = Pi<double> * (y + 0.5) / h;
       rowWeight[y] = uniform;
       rowS[y] = uniform * std::sin(theta);
       rowZ[y] = uniform * std::cos(theta);
@@ -349,9 +341,9 @@ MedianCutStatus ComputeMedianCut(const float* pixels, int components, int width,
   }
   std::vector<long long> badPerRow(static_cast<size_t>(h), 0);
   std::vector<long long> firstBadPerRow(static_cast<size_t>(h), -1);
-  // Each thread builds a band of rows: per-row prefix sums plus the band's rows above, in
+  // Each task builds a band of rows: per-row prefix sums plus the band's rows above, in
   // one pass; the bands are then offset by the SAT row above them.
-  ParallelFor(h, [&](int begin, int end) {
+  ForEachBand(h, [&](int begin, int end) {
     for (int y = begin; y < end; ++y)
     {
       const int j = h - 1 - y;
@@ -434,7 +426,7 @@ MedianCutStatus ComputeMedianCut(const float* pixels, int components, int width,
     }
     return MedianCutStatus::Error;
   }
-  const int bands = ThreadsFor(h);
+  const int bands = BandsFor(h);
   for (int t = 1; t < bands; ++t)
   {
     const int begin = static_cast<int>(static_cast<long long>(h) * t / bands);
@@ -448,8 +440,9 @@ MedianCutStatus ComputeMedianCut(const float* pixels, int components, int width,
     for (Sat* table : tables)
     {
       const double* offset = table->Row(begin);
-      ParallelFor(end - begin, [&](int b, int e) {
-        table->AddOffsetRow(begin + 1 + b, begin + e, offset);
+      // Each row gets the same offset row: any split gives the same sums.
+      ParallelFor(0, static_cast<std::size_t>(end - begin), 16, [&](std::size_t b, std::size_t e) {
+        table->AddOffsetRow(begin + 1 + static_cast<int>(b), begin + static_cast<int>(e), offset);
       });
     }
   }
@@ -511,10 +504,9 @@ MedianCutStatus ComputeMedianCut(const float* pixels, int components, int width,
     const long long areaB = static_cast<long long>(done[b].X1 - done[b].X0) * (done[b].Y1 - done[b].Y0);
     return areaA > areaB;
   });
-  std::atomic<int> next(0);
-  const int workers = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
-  ParallelFor(std::min(regionCount, workers) * 16, [&](int, int) {
-    for (int slot = next++; slot < regionCount; slot = next++)
+  // One region per item, the largest first: each light is computed alone.
+  ParallelFor(0, static_cast<std::size_t>(regionCount), 1, [&](std::size_t s0, std::size_t s1) {
+    for (std::size_t slot = s0; slot < s1; ++slot)
     {
       const int k = order[slot];
       const Region& r = done[k];
@@ -577,8 +569,8 @@ MedianCutStatus ComputeMedianCut(const float* pixels, int components, int width,
       }
       light.Energy = energy;
       light.SolidAngle = options.SolidAngleWeighting
-        ? (2.0 * Pi * (r.X1 - r.X0) / w) *
-          (std::cos(Pi * r.Y0 / h) - std::cos(Pi * r.Y1 / h))
+        ? (2.0 * Pi<double> * (r.X1 - r.X0) / w) *
+          (std::cos(Pi<double> * r.Y0 / h) - std::cos(Pi<double> * r.Y1 / h))
         : solidAngle;
       light.Column0 = r.X0;
       light.Column1 = r.X1;

@@ -32,6 +32,8 @@
 
 #include "MesolightFiltersModule.h" // for the export macro only
 
+#include "Progress.h"
+
 #include <functional>
 #include <string>
 #include <vector>
@@ -50,8 +52,8 @@ struct MedianCutOptions
    * It is wrong (lights crowd toward the poles) and exists to show that it is.
    */
   bool SolidAngleWeighting = true;
-  /// Called with the fraction done in [0,1]; return false to abort.
-  std::function<bool(double)> Progress;
+  /// Called with the fraction done in [0,1]; return false to abort (Progress.h).
+  ProgressCallback Progress;
 };
 
 struct MedianCutLight

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "core/ProceduralEnvironments.h"
 
+#include "MathConstants.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -9,8 +11,7 @@ namespace mesolight
 
 namespace
 {
-constexpr double Pi = EnvPi;
-constexpr double Deg = Pi / 180.0;
+constexpr double Deg = Pi<double> / 180.0;
 
 void SkyRadiance(const SkyParameters& p, double elevation, double out[3])
 {
@@ -51,8 +52,8 @@ RgbImage MakeSkyMap(int width, int height, const SkyParameters& p)
   const double sunRadius = 0.5 * p.SunDiameter * Deg;
   const double cosSun = std::cos(sunRadius);
   // A pixel may touch the disc if its centre is within the radius + a pixel diagonal.
-  const double pixelAngle = std::max(2.0 * Pi / width, Pi / height) * 1.5;
-  const double cosNear = std::cos(std::min(Pi, sunRadius + pixelAngle));
+  const double pixelAngle = std::max(2.0 * Pi<double> / width, Pi<double> / height) * 1.5;
+  const double cosNear = std::cos(std::min(Pi<double>, sunRadius + pixelAngle));
   // Window rectangle in map coordinates (u may wrap).
   const double wu0 = (p.WindowAzimuth - 0.5 * p.WindowWidth) / 360.0;
   const double wu1 = (p.WindowAzimuth + 0.5 * p.WindowWidth) / 360.0;
@@ -62,7 +63,7 @@ RgbImage MakeSkyMap(int width, int height, const SkyParameters& p)
   for (int j = 0; j < height; ++j)
   {
     const double v = PixelCenterV(j, height);
-    const double elevation = 0.5 * Pi - Pi * v;
+    const double elevation = 0.5 * Pi<double> - Pi<double> * v;
     double sky[3];
     SkyRadiance(p, elevation, sky);
     const double pv0 = 1.0 - (j + 1.0) / height;

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "ProceduralHeightFields.h"
 
+#include "MathConstants.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -10,7 +12,6 @@ namespace mesolight
 
 namespace
 {
-constexpr float Pi = 3.14159265358979323846f;
 
 float Clamp01(float x)
 {
@@ -246,7 +247,7 @@ float SampleHeightField(
       const float fy = static_cast<float>(params.SineFrequency[1]);
       const float c = Checker(u, v);
       SetRGB(albedo, 0.8f * c, 0.8f * c, 0.8f * c);
-      return Clamp01(0.5f + 0.5f * std::sin(2.f * Pi * fx * u) * std::cos(2.f * Pi * fy * v));
+      return Clamp01(0.5f + 0.5f * std::sin(2.f * Pi<float> * fx * u) * std::cos(2.f * Pi<float> * fy * v));
     }
   }
 }

@@ -1,22 +1,14 @@
 #include "ParallelTiles.h"
 
+#include "ParallelFor.h"
+
 #include <algorithm>
 #include <atomic>
+#include <cstddef>
 #include <mutex>
-#include <thread>
-#include <vector>
 
 namespace mesolight
 {
-
-int ResolveThreadCount(int threads)
-{
-  if (threads > 0)
-  {
-    return threads;
-  }
-  return std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
-}
 
 bool ForEachTile(int width, int height, int tileSize, int threads,
   const std::function<void(const TileRange&)>& work, const ProgressCallback& progress)
@@ -29,49 +21,36 @@ bool ForEachTile(int width, int height, int tileSize, int threads,
   const int tilesX = (width + tileSize - 1) / tileSize;
   const int tilesY = (height + tileSize - 1) / tileSize;
   const int tileCount = tilesX * tilesY;
-  std::atomic<int> next{ 0 };
   std::atomic<int> done{ 0 };
   std::atomic<bool> aborted{ false };
   std::mutex progressMutex;
-  auto worker = [&]() {
-    for (;;)
-    {
-      if (aborted.load())
+  // One tile per item: a tile's pixels do not depend on which thread traces them.
+  ParallelFor(0, static_cast<std::size_t>(tileCount), 1,
+    [&](std::size_t first, std::size_t last) {
+      for (std::size_t index = first; index < last; ++index)
       {
-        return;
-      }
-      const int tile = next.fetch_add(1);
-      if (tile >= tileCount)
-      {
-        return;
-      }
-      const int tx = tile % tilesX;
-      const int ty = tile / tilesX;
-      const TileRange range{ tx * tileSize, ty * tileSize, std::min(width, (tx + 1) * tileSize),
-        std::min(height, (ty + 1) * tileSize) };
-      work(range);
-      const int finished = done.fetch_add(1) + 1;
-      if (progress)
-      {
-        std::lock_guard<std::mutex> lock(progressMutex);
-        if (!aborted.load() && !progress(static_cast<double>(finished) / tileCount))
+        if (aborted.load())
         {
-          aborted.store(true);
+          return;
+        }
+        const int tile = static_cast<int>(index);
+        const int tx = tile % tilesX;
+        const int ty = tile / tilesX;
+        const TileRange range{ tx * tileSize, ty * tileSize, std::min(width, (tx + 1) * tileSize),
+          std::min(height, (ty + 1) * tileSize) };
+        work(range);
+        const int finished = done.fetch_add(1) + 1;
+        if (progress)
+        {
+          std::lock_guard<std::mutex> lock(progressMutex);
+          if (!aborted.load() && !progress(static_cast<double>(finished) / tileCount))
+          {
+            aborted.store(true);
+          }
         }
       }
-    }
-  };
-  const int count = std::min(ResolveThreadCount(threads), tileCount);
-  std::vector<std::thread> pool;
-  for (int t = 1; t < count; ++t)
-  {
-    pool.emplace_back(worker);
-  }
-  worker();
-  for (std::thread& thread : pool)
-  {
-    thread.join();
-  }
+    },
+    threads);
   return !aborted.load();
 }
 

@@ -1,5 +1,9 @@
 #include "PathTracer.h"
 
+#include "MathConstants.h"
+#include "OrthonormalBasis.h"
+#include "core/EnvironmentMaps.h" // the lat-long lookup (MapUVFromDirection)
+
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -13,7 +17,6 @@ namespace mesolight
 
 namespace
 {
-constexpr float Pi = 3.14159265358979323846f;
 
 float Luminance(const glm::vec3& c)
 {
@@ -25,22 +28,11 @@ float MaxComponent(const glm::vec3& c)
   return std::max(c.x, std::max(c.y, c.z));
 }
 
-// Orthonormal basis around a unit normal without a fixed reference axis (Duff et al., "Building
-// an orthonormal basis, revisited", JCGT 2017): continuous except where n.z changes sign.
-void OrthonormalBasis(const glm::vec3& n, glm::vec3& b1, glm::vec3& b2)
-{
-  const float sign = std::copysign(1.0f, n.z);
-  const float a = -1.0f / (sign + n.z);
-  const float b = n.x * n.y * a;
-  b1 = glm::vec3(1.0f + sign * n.x * n.x * a, sign * b, -sign * n.x);
-  b2 = glm::vec3(b, sign + n.y * n.y * a, -n.y);
-}
-
 // Cosine-weighted direction around n (pdf cos / pi).
 glm::vec3 SampleCosine(const glm::vec3& n, float u1, float u2)
 {
   const float r = std::sqrt(u1);
-  const float phi = 2.0f * Pi * u2;
+  const float phi = 2.0f * Pi<float> * u2;
   glm::vec3 b1, b2;
   OrthonormalBasis(n, b1, b2);
   const float z = std::sqrt(std::max(0.0f, 1.0f - u1));
@@ -234,9 +226,9 @@ glm::vec3 PathTracer::SampleDirectLight(
   float weight = 1.0f;
   if (this->Parameters.Sampling == LightSampling::MultipleImportance)
   {
-    weight = PowerHeuristic(lightPdf, diffuseChoice * cosSurface / Pi);
+    weight = PowerHeuristic(lightPdf, diffuseChoice * cosSurface / Pi<float>);
   }
-  return kd / Pi * this->Scene.MaterialOf(triangle).Emission * (cosSurface * weight / lightPdf);
+  return kd / Pi<float> * this->Scene.MaterialOf(triangle).Emission * (cosSurface * weight / lightPdf);
 }
 
 bool PathTracer::Scatter(
@@ -266,7 +258,7 @@ bool PathTracer::Scatter(
     direction = SampleCosine(point.Normal, u1, u2);
     // f cos / pdf = (Kd / pi) cos / (choice cos / pi).
     state.Throughput *= kd / diffuseChoice;
-    state.LastPdf = diffuseChoice * std::max(0.0f, glm::dot(direction, point.Normal)) / Pi;
+    state.LastPdf = diffuseChoice * std::max(0.0f, glm::dot(direction, point.Normal)) / Pi<float>;
     state.LastSpecular = false;
   }
   else

@@ -11,8 +11,8 @@
 #define mesolight_PathTracer_h
 
 #include "EmbreeScene.h"
-#include "EnvironmentMaps.h" // RgbImage, the lat-long conventions and lookup
 #include "ParallelTiles.h"
+#include "RgbImage.h"
 #include "PinholeCamera.h"
 #include "RandomSequence.h"
 #include "TriangleScene.h"
@@ -50,7 +50,7 @@ struct PathTracerSettings
   int MaxDepth = 1000;
   // Ray offset from surfaces as a fraction of the scene's bounding-box diagonal.
   float RayEpsilon = 1e-5f;
-  int Threads = 0;    // 0: all hardware threads
+  int Threads = 0;    // 1: the calling thread only; otherwise all of vtkSMPTools' threads
   int TileSize = 16;  // pixels per tile side
 };
 

@@ -1,5 +1,7 @@
 #include "TextureMaps.h"
 
+#include "MathConstants.h"
+
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -54,7 +56,6 @@ glm::vec3 SampleTexture(const RgbImage& image, glm::vec2 st, TextureFilter filte
 
 namespace
 {
-constexpr float Pi = 3.14159265358979323846f;
 
 // Unit axis and the meridian made orthogonal to it; false when they are parallel or zero.
 bool SphereAxes(const glm::vec3& axis, const glm::vec3& meridian, glm::vec3& a, glm::vec3& m)
@@ -85,8 +86,8 @@ glm::vec2 SphereTextureCoordinates(const glm::vec3& unitNormal, const glm::vec3&
     m = glm::vec3(1.0f, 0.0f, 0.0f);
   }
   const glm::vec3 east = glm::cross(a, m); // 90 degrees counter-clockwise from the meridian
-  const float t = std::acos(glm::clamp(glm::dot(unitNormal, a), -1.0f, 1.0f)) / Pi;
-  float s = std::atan2(glm::dot(unitNormal, east), glm::dot(unitNormal, m)) / (2.0f * Pi);
+  const float t = std::acos(glm::clamp(glm::dot(unitNormal, a), -1.0f, 1.0f)) / Pi<float>;
+  float s = std::atan2(glm::dot(unitNormal, east), glm::dot(unitNormal, m)) / (2.0f * Pi<float>);
   if (s < 0.0f)
   {
     s += 1.0f;

@@ -4,7 +4,7 @@
 #ifndef mesolight_TextureMaps_h
 #define mesolight_TextureMaps_h
 
-#include "EnvironmentMaps.h" // RgbImage
+#include "RgbImage.h"
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>

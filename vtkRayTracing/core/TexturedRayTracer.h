@@ -14,7 +14,7 @@
 #define mesolight_TexturedRayTracer_h
 
 #include "EmbreeScene.h"
-#include "EnvironmentMaps.h" // RgbImage
+#include "RgbImage.h"
 #include "ParallelTiles.h"
 #include "PinholeCamera.h"
 #include "RandomSequence.h"
@@ -88,7 +88,7 @@ struct RayTracerSettings
   bool AdaptiveSupersampling = false;
   float AdaptiveThreshold = 0.1f; // largest channel difference to a neighbour before 3 x 3 samples
   bool Progressive = false;
-  int Threads = 0;
+  int Threads = 0; // 1: the calling thread only; otherwise all of vtkSMPTools' threads
   int TileSize = 16;
   float RayEpsilon = 1e-5f;  // ray offset, fraction of the scene's bounding-box diagonal
   std::uint64_t Seed = 0;    // of the distributed reflection rays

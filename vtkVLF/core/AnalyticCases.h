@@ -4,6 +4,7 @@
 #ifndef mesolight_vlf_AnalyticCases_h
 #define mesolight_vlf_AnalyticCases_h
 
+#include "MathConstants.h"
 #include "TriangleScene.h"
 
 #include <cmath>
@@ -40,10 +41,9 @@ inline TriangleScene MakeEmitterOverFloor(float side, float height, float floorS
 inline double CornerFormFactor(double a, double b, double h)
 {
   const double x = a / h, y = b / h;
-  const double pi = 3.14159265358979323846;
   return (x / std::sqrt(1.0 + x * x) * std::atan(y / std::sqrt(1.0 + x * x)) +
            y / std::sqrt(1.0 + y * y) * std::atan(x / std::sqrt(1.0 + y * y))) /
-    (2.0 * pi);
+    (2.0 * Pi<double>);
 }
 
 // Form factor from a differential area at horizontal offset (px, py) under a parallel square

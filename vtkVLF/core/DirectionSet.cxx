@@ -1,5 +1,7 @@
 #include "DirectionSet.h"
 
+#include "MathConstants.h"
+
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -14,7 +16,6 @@ namespace vlf
 
 namespace
 {
-constexpr double Pi = 3.14159265358979323846;
 
 // How far around the lattice square holding a direction Nearest looks (lattice steps before the
 // square's lower corner and after its upper corner). The map is equal-area but not conformal, so
@@ -37,7 +38,7 @@ glm::dvec2 DirectionSet::HemisphereToDiamond(const glm::dvec3& unit)
   const double rho2 = unit.x * unit.x + unit.y * unit.y;
   const double r = std::sqrt(rho2 / (1.0 + std::max(unit.z, 0.0)));
   const double phi = std::atan2(std::abs(unit.y), std::abs(unit.x)); // [0, pi/2]
-  const double ay = std::min(r * phi * (2.0 / Pi), r);
+  const double ay = std::min(r * phi * (2.0 / Pi<double>), r);
   const double ax = r - ay;
   return { std::copysign(ax, unit.x), std::copysign(ay, unit.y) };
 }
@@ -53,7 +54,7 @@ glm::dvec3 DirectionSet::DiamondToHemisphere(const glm::dvec2& diamond)
   }
   // Equal area: the L1 ring of radius r (area 4r dr) maps to the zone of height dz = 2r dr
   // (solid angle 4 pi r dr), and azimuth is linear along the ring.
-  const double phi = (Pi / 2.0) * std::min(ay / r, 1.0);
+  const double phi = (Pi<double> / 2.0) * std::min(ay / r, 1.0);
   const double z = 1.0 - r * r;
   const double s = r * std::sqrt(std::max(2.0 - r * r, 0.0));
   return { std::copysign(std::cos(phi) * s, diamond.x), std::copysign(std::sin(phi) * s, diamond.y),
@@ -121,7 +122,7 @@ DirectionSet::DirectionSet(int n)
   // diamond of area 2 holds 4 n^2 lattice triangles and maps onto the hemisphere, 2 pi), a third
   // of it per corner. Triangles are enumerated per quadrant as Interpolate() finds them.
   std::vector<double> weights(this->Directions.size(), 0.0);
-  const double third = Pi / (2.0 * n * n) / 3.0;
+  const double third = Pi<double> / (2.0 * n * n) / 3.0;
   const auto credit = [&](int i, int j) { weights[this->At(i, j).Index] += third; };
   for (const int sx : { 1, -1 })
   {

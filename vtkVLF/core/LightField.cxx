@@ -1,18 +1,19 @@
 #include "LightField.h"
 
+#include "MathConstants.h"
+#include "OrthonormalBasis.h"
+#include "ParallelFor.h"
+
 #include "EmbreeScene.h"
 
 #include <glm/geometric.hpp>
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <cstdio>
-#include <exception>
 #include <map>
-#include <mutex>
 #include <sstream>
-#include <thread>
+#include <thread> // hardware_concurrency() only: fixes the number of bands/blocks (no thread started)
 #include <tuple>
 
 namespace mesolight
@@ -32,35 +33,26 @@ float NextQueryStart(float t)
 {
   return t + std::max(1e-7f, 4e-7f * t);
 }
-constexpr float Pi = 3.14159265358979f;
 
+// The number of worker blocks follows the hardware threads (DefaultBlockCount); the energies
+// depend on it through the per-block sums, so it stays this count (no thread is started here).
 std::size_t HardwareThreads()
 {
   const unsigned n = std::thread::hardware_concurrency();
   return n == 0 ? 2 : n;
 }
 
-// Orthonormal frame around a unit vector (Duff et al., "Building an orthonormal basis,
-// revisited", JCGT 2017); d.z >= 0 for the hemisphere directions.
-void Frame(const glm::vec3& d, glm::vec3& u, glm::vec3& v)
-{
-  const float sign = std::copysign(1.0f, d.z);
-  const float a = -1.0f / (sign + d.z);
-  const float b = d.x * d.y * a;
-  u = glm::vec3(1.0f + sign * d.x * d.x * a, sign * b, -sign * d.x);
-  v = glm::vec3(b, sign + d.y * d.y * a, -d.y);
-}
-
-// Subfield k's frame: Frame() turned about d by a golden-ratio angle. The turn keeps lines off
+// Subfield k's frame: OrthonormalBasis() (Duff et al.; d.z >= 0 for the hemisphere
+// directions) turned about d by a golden-ratio angle. The turn keeps lines off
 // systematic alignments with the scene (an axis-aligned box's face diagonals lie in planes
 // that symmetric directions and an unturned grid hit exactly, where Embree may miss both
 // triangles of the shared edge); the [-1, 1]^2 grid covers the unit disk at any angle.
 void SubfieldFrame(std::size_t k, const glm::vec3& d, glm::vec3& u, glm::vec3& v)
 {
   glm::vec3 u0, v0;
-  Frame(d, u0, v0);
+  OrthonormalBasis(d, u0, v0);
   const double turns = 0.1 + static_cast<double>(k) * 0.6180339887498949;
-  const float angle = static_cast<float>(2.0 * 3.14159265358979323846 * (turns - std::floor(turns)));
+  const float angle = static_cast<float>(2.0 * Pi<double> * (turns - std::floor(turns)));
   u = std::cos(angle) * u0 + std::sin(angle) * v0;
   v = -std::sin(angle) * u0 + std::cos(angle) * v0;
 }
@@ -153,74 +145,25 @@ std::string Join(const std::vector<std::string>& items)
 }
 } // namespace
 
-void ThreadParallelFor(std::size_t count, const std::function<void(std::size_t, std::size_t)>& body)
-{
-  const std::size_t workers = std::min(count, HardwareThreads());
-  if (workers <= 1)
-  {
-    if (count > 0)
-    {
-      body(0, count);
-    }
-    return;
-  }
-  std::atomic<std::size_t> next{ 0 };
-  std::exception_ptr failure;
-  std::mutex failureMutex;
-  auto run = [&]() {
-    try
-    {
-      for (std::size_t i = next++; i < count; i = next++)
-      {
-        body(i, i + 1);
-      }
-    }
-    catch (...)
-    {
-      std::lock_guard<std::mutex> lock(failureMutex);
-      if (!failure)
-      {
-        failure = std::current_exception();
-      }
-      next = count;
-    }
-  };
-  std::vector<std::thread> threads;
-  for (std::size_t t = 1; t < workers; ++t)
-  {
-    threads.emplace_back(run);
-  }
-  run();
-  for (std::thread& t : threads)
-  {
-    t.join();
-  }
-  if (failure)
-  {
-    std::rethrow_exception(failure);
-  }
-}
-
 std::size_t DefaultBlockCount(std::size_t count)
 {
   return std::max<std::size_t>(1, std::min(count, 2 * HardwareThreads()));
 }
 
-void RunInBlocks(std::size_t count, std::size_t blocks, const ParallelFor& parallelFor,
-  const ProgressCallbacks& progress, double begin, double end,
-  const std::function<void(std::size_t block, std::size_t item)>& work)
+void RunInBlocks(std::size_t count, std::size_t blocks, const ProgressCallback& progress,
+  double begin, double end, const std::function<void(std::size_t block, std::size_t item)>& work)
 {
   blocks = std::max<std::size_t>(1, blocks);
   const std::size_t perBlock = 4; // items per block per round
   const std::size_t round = blocks * perBlock;
-  const ParallelFor& forEach = parallelFor ? parallelFor : ParallelFor(ThreadParallelFor);
   for (std::size_t start = 0; start < count; start += round)
   {
-    if (progress.AbortRequested && progress.AbortRequested())
+    const double done = static_cast<double>(start) / static_cast<double>(count);
+    if (!ReportProgress(progress, begin + (end - begin) * done))
     {
       throw AbortedError();
     }
-    forEach(blocks, [&](std::size_t b0, std::size_t b1) {
+    ParallelFor(0, blocks, 1, [&](std::size_t b0, std::size_t b1) {
       for (std::size_t b = b0; b < b1; ++b)
       {
         for (std::size_t q = 0; q < perBlock; ++q)
@@ -233,13 +176,8 @@ void RunInBlocks(std::size_t count, std::size_t blocks, const ParallelFor& paral
         }
       }
     });
-    if (progress.Progress)
-    {
-      const double done = static_cast<double>(std::min(count, start + round)) / static_cast<double>(count);
-      progress.Progress(begin + (end - begin) * done);
-    }
   }
-  if (progress.AbortRequested && progress.AbortRequested())
+  if (!ReportProgress(progress, end))
   {
     throw AbortedError();
   }
@@ -485,7 +423,7 @@ void LightField::Setup(const TriangleScene& scene, const LightFieldSettings& set
   }
   const std::size_t count = this->DirectionsPtr->Size();
   this->Subfields.assign(count, Subfield());
-  const float uniform = 2.0f * Pi / static_cast<float>(count);
+  const float uniform = 2.0f * Pi<float> / static_cast<float>(count);
   for (std::size_t k = 0; k < count; ++k)
   {
     Subfield& f = this->Subfields[k];
@@ -504,13 +442,12 @@ std::unique_ptr<LightField> LightField::CreateEmpty(
 }
 
 std::unique_ptr<LightField> LightField::Build(const TriangleScene& scene,
-  const LightFieldSettings& settings, const ParallelFor& parallelFor,
-  const ProgressCallbacks& progress)
+  const LightFieldSettings& settings, const ProgressCallback& progress)
 {
   std::unique_ptr<LightField> field = CreateEmpty(scene, settings);
   const EmbreeScene embree(field->NormalizedScene);
   const std::size_t count = field->Subfields.size();
-  RunInBlocks(count, DefaultBlockCount(count), parallelFor, progress, 0.0, 0.8,
+  RunInBlocks(count, DefaultBlockCount(count), progress, 0.0, 0.8,
     [&](std::size_t, std::size_t k) { field->TraceSubfield(k, embree); });
 
   // Shooting capacity of each texel (Propagation.h): the flux a unit diffuse radiance there
@@ -521,7 +458,7 @@ std::unique_ptr<LightField> LightField::Build(const TriangleScene& scene,
   std::vector<std::vector<double>> partial(blocks, std::vector<double>(texels, 0.0));
   const float cellArea = settings.CellSize() * settings.CellSize();
   const int n = settings.RaysPerSide;
-  RunInBlocks(count, blocks, parallelFor, progress, 0.8, 1.0, [&](std::size_t b, std::size_t k) {
+  RunInBlocks(count, blocks, progress, 0.8, 1.0, [&](std::size_t b, std::size_t k) {
     std::vector<Crossing> crossings;
     const Subfield& f = field->Subfields[k];
     for (int j = 0; j < n; ++j)

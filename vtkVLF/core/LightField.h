@@ -29,6 +29,7 @@
 #define mesolight_vlf_LightField_h
 
 #include "DirectionSet.h"
+#include "Progress.h"
 #include "TriangleScene.h"
 
 #include <glm/vec2.hpp>
@@ -49,23 +50,8 @@ class EmbreeScene;
 namespace vlf
 {
 
-// Runs body(begin, end) over disjoint sub-ranges covering [0, count), possibly concurrently, and
-// returns when all are done. The VTK wrapper passes vtkSMPTools::For; the default uses
-// std::thread (one worker per hardware thread).
-using ParallelFor =
-  std::function<void(std::size_t count, const std::function<void(std::size_t, std::size_t)>& body)>;
-void ThreadParallelFor(
-  std::size_t count, const std::function<void(std::size_t, std::size_t)>& body);
-
-// Progress in [0, 1] and a polled abort request; both optional.
-struct ProgressCallbacks
-{
-  std::function<void(double fraction)> Progress;
-  std::function<bool()> AbortRequested;
-};
-
-// Thrown when AbortRequested() returned true; the light field is then unusable (its last
-// snapshot is not).
+// Thrown when the progress callback (Progress.h) returned false; the light field is then
+// unusable (its last snapshot is not).
 class AbortedError : public std::runtime_error
 {
 public:
@@ -75,12 +61,13 @@ public:
   }
 };
 
-// Runs work(block, item) for every item in [0, count). Items are dealt out in rounds of
-// `blocks` concurrent workers; a worker's block index names a private buffer no other
-// concurrent worker touches. Between rounds (on the calling thread) progress goes from begin to
-// end and an abort request throws AbortedError.
-void RunInBlocks(std::size_t count, std::size_t blocks, const ParallelFor& parallelFor,
-  const ProgressCallbacks& progress, double begin, double end,
+// Runs work(block, item) for every item in [0, count) on mesolight::ParallelFor. Items are
+// dealt out in rounds of `blocks` concurrent workers, item start + b * 4 + q to block b whatever
+// the thread, so a block's private buffer (no other concurrent worker touches it) gets the same
+// items in the same order on any machine split. Before every round and at the end (on the
+// calling thread) progress gets a fraction from begin to end; false throws AbortedError.
+void RunInBlocks(std::size_t count, std::size_t blocks, const ProgressCallback& progress,
+  double begin, double end,
   const std::function<void(std::size_t block, std::size_t item)>& work);
 // Worker blocks used for `count` items: twice the hardware threads, at most count.
 std::size_t DefaultBlockCount(std::size_t count);
@@ -196,8 +183,7 @@ public:
   // lists, depths and texture capacities. Throws std::invalid_argument for bad settings or a
   // scene CheckScene rejects (no emitter, degenerate triangles) or with Kd + Ks > 1.
   static std::unique_ptr<LightField> Build(const TriangleScene& scene,
-    const LightFieldSettings& settings, const ParallelFor& parallelFor = ThreadParallelFor,
-    const ProgressCallbacks& progress = {});
+    const LightFieldSettings& settings, const ProgressCallback& progress = {});
 
   // The structure without subfield contents (for Snapshot): scene normalised, surfaces grouped,
   // directions and frames set, memory checked; maps, tile lists and textures left empty.

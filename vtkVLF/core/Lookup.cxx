@@ -1,5 +1,7 @@
 #include "Lookup.h"
 
+#include "MathConstants.h"
+
 #include <glm/geometric.hpp>
 
 #include <cmath>
@@ -11,7 +13,6 @@ namespace vlf
 
 namespace
 {
-constexpr float Pi = 3.14159265358979f;
 // Crossings closer than this to p along the line count as p's own surface.
 constexpr float SelfDepth = 1e-4f;
 
@@ -187,7 +188,7 @@ glm::vec3 Lookup::Irradiance(
   const glm::vec3& p, const glm::vec3& n, const GatherOptions& options, std::uint32_t ignore) const
 {
   const std::size_t count = this->Field.SubfieldCount();
-  const float uniform = 2.0f * Pi / static_cast<float>(count);
+  const float uniform = 2.0f * Pi<float> / static_cast<float>(count);
   glm::vec3 sum(0.0f);
   float total = 0.0f;
   for (std::size_t k = 0; k < count; ++k)
@@ -206,7 +207,7 @@ glm::vec3 Lookup::Irradiance(
   {
     return sum;
   }
-  return total > 0.0f ? sum * (Pi / total) : glm::vec3(0.0f);
+  return total > 0.0f ? sum * (Pi<float> / total) : glm::vec3(0.0f);
 }
 
 } // namespace vlf

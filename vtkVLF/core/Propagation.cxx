@@ -1,5 +1,7 @@
 #include "Propagation.h"
 
+#include "MathConstants.h"
+
 #include <glm/geometric.hpp>
 
 #include <chrono>
@@ -12,7 +14,6 @@ namespace vlf
 
 namespace
 {
-constexpr double Pi = 3.14159265358979323846;
 
 void Add(std::array<double, 3>& sum, const glm::vec3& value)
 {
@@ -177,7 +178,7 @@ LightField::IterationEnergy PropagateIteration(LightField& field, const Propagat
   {
     s.Reflected.assign(texels, glm::vec3(0.0f));
   }
-  RunInBlocks(count, blocks, options.Parallel, options.Callbacks, 0.0, 1.0,
+  RunInBlocks(count, blocks, options.Progress, 0.0, 1.0,
     [&](std::size_t b, std::size_t k) { ShootSubfield(field, k, states[b]); });
 
   LightField::IterationEnergy energy;
@@ -204,7 +205,7 @@ LightField::IterationEnergy PropagateIteration(LightField& field, const Propagat
   // flux exactly).
   for (const Surface& s : field.Surfaces())
   {
-    const float area = static_cast<float>(Pi) * s.TexelU * s.TexelV;
+    const float area = static_cast<float>(Pi<double>) * s.TexelU * s.TexelV;
     for (std::size_t t = s.TexelOffset; t < s.TexelOffset + s.TexelCount(); ++t)
     {
       const float normalizer =
@@ -236,13 +237,8 @@ void Propagate(LightField& field, int iterations, const PropagationOptions& opti
   for (int it = first; it < iterations; ++it)
   {
     PropagationOptions step = options;
-    if (options.Callbacks.Progress)
-    {
-      const double begin = static_cast<double>(it - first) / total;
-      step.Callbacks.Progress = [&, begin](double fraction) {
-        options.Callbacks.Progress(begin + fraction / total);
-      };
-    }
+    step.Progress = SubProgress(options.Progress, static_cast<double>(it - first) / total,
+      static_cast<double>(it - first + 1) / total);
     PropagateIteration(field, step);
     if (afterIteration)
     {

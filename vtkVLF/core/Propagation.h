@@ -43,8 +43,8 @@ enum class DiffuseNormalization
 struct PropagationOptions
 {
   DiffuseNormalization Normalization = DiffuseNormalization::DiscreteCapacity;
-  ParallelFor Parallel = ThreadParallelFor;
-  ProgressCallbacks Callbacks; // progress in [0, 1] over the whole call
+  // Progress in [0, 1] over the whole call; false aborts (AbortedError).
+  ProgressCallback Progress;
 };
 
 // One shooting iteration. Appends its energy record to field.EnergyLog and returns it.

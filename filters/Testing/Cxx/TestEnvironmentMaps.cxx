@@ -2,6 +2,7 @@
 // Lat-long conventions, solid angles, exact irradiance, SH9 and light-probe converters
 // (core/EnvironmentMaps.h) against analytic values and hand-derived picture positions.
 #include "core/EnvironmentMaps.h"
+#include "MathConstants.h"
 
 #include <gtest/gtest.h>
 
@@ -13,7 +14,6 @@ using mesolight::RgbImage;
 
 namespace
 {
-constexpr double Pi = 3.14159265358979323846;
 
 RgbImage Constant(int w, int h, float value)
 {
@@ -84,10 +84,10 @@ double DegreesFromPixel(int i, int j, int w, int h, const double d[3])
   // Written out independently of the library: v from the top, theta = pi v, phi = 2 pi u.
   const double u = (i + 0.5) / w;
   const double v = 1.0 - (j + 0.5) / h;
-  const double p[3] = { std::sin(Pi * v) * std::cos(2 * Pi * u),
-    std::sin(Pi * v) * std::sin(2 * Pi * u), std::cos(Pi * v) };
+  const double p[3] = { std::sin(mesolight::Pi<double> * v) * std::cos(2 * mesolight::Pi<double> * u),
+    std::sin(mesolight::Pi<double> * v) * std::sin(2 * mesolight::Pi<double> * u), std::cos(mesolight::Pi<double> * v) };
   const double c = p[0] * d[0] + p[1] * d[1] + p[2] * d[2];
-  return std::acos(std::max(-1.0, std::min(1.0, c))) * 180.0 / Pi;
+  return std::acos(std::max(-1.0, std::min(1.0, c))) * 180.0 / mesolight::Pi<double>;
 }
 } // namespace
 
@@ -137,7 +137,7 @@ TEST(EnvironmentMaps, SolidAnglesSumToFourPi)
         }
       }
     }
-    EXPECT_NEAR(sum, 4 * Pi, 1e-12);
+    EXPECT_NEAR(sum, 4 * mesolight::Pi<double>, 1e-12);
     EXPECT_NEAR(moment[0], 0.0, 1e-12);
     EXPECT_NEAR(moment[2], 0.0, 1e-12);
   }
@@ -157,8 +157,8 @@ TEST(EnvironmentMaps, ExactIrradianceAnalyticCases)
   {
     double e[3];
     uniform.Evaluate(n, e);
-    EXPECT_NEAR(e[0], Pi * l, 1e-4 * Pi * l); // furnace: pi L for every normal
-    EXPECT_NEAR(e[2], Pi * l, 1e-4 * Pi * l);
+    EXPECT_NEAR(e[0], mesolight::Pi<double> * l, 1e-4 * mesolight::Pi<double> * l); // furnace: pi L for every normal
+    EXPECT_NEAR(e[2], mesolight::Pi<double> * l, 1e-4 * mesolight::Pi<double> * l);
   }
   // L only on the upper hemisphere: E(up) = pi L, E(horizontal) = pi L / 2, E(down) = 0.
   RgbImage sky = Constant(w, h, 0.0f);
@@ -176,9 +176,9 @@ TEST(EnvironmentMaps, ExactIrradianceAnalyticCases)
   const double down[3] = { 0, 0, -1 };
   double e[3];
   upper.Evaluate(up, e);
-  EXPECT_NEAR(e[1], Pi * l, 1e-9);
+  EXPECT_NEAR(e[1], mesolight::Pi<double> * l, 1e-9);
   upper.Evaluate(side, e);
-  EXPECT_NEAR(e[1], 0.5 * Pi * l, 1e-3 * Pi * l);
+  EXPECT_NEAR(e[1], 0.5 * mesolight::Pi<double> * l, 1e-3 * mesolight::Pi<double> * l);
   upper.Evaluate(down, e);
   EXPECT_NEAR(e[1], 0.0, 1e-12);
 }
@@ -189,12 +189,12 @@ TEST(EnvironmentMaps, SH9UniformAndLinear)
   const double n[3] = { 0.6, 0.0, 0.8 };
   double e[3];
   mesolight::IrradianceSH9(sh, n, e);
-  EXPECT_NEAR(e[0], Pi, 1e-3);
+  EXPECT_NEAR(e[0], mesolight::Pi<double>, 1e-3);
   // L(d) = max(0, z) style maps are captured to a few percent at the pole.
   RgbImage sky(256, 128);
   for (int j = 0; j < 128; ++j)
   {
-    const double z = std::cos(Pi * mesolight::PixelCenterV(j, 128));
+    const double z = std::cos(mesolight::Pi<double> * mesolight::PixelCenterV(j, 128));
     for (int i = 0; i < 256; ++i)
     {
       float* p = sky.Pixel(i, j);

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Median cut (core/MedianCut.h): orientation, solid-angle weighting, furnace, counts.
 #include "core/EnvironmentMaps.h"
+#include "MathConstants.h"
 #include "core/MedianCut.h"
 #include "core/ProceduralEnvironments.h"
 
@@ -18,7 +19,6 @@ using mesolight::RgbImage;
 
 namespace
 {
-constexpr double Pi = 3.14159265358979323846;
 
 RgbImage Constant(int w, int h, float value)
 {
@@ -50,7 +50,7 @@ std::vector<MedianCutLight> Cut(const RgbImage& map, int n, bool variance = fals
 std::vector<std::array<double, 3>> Normals(int n)
 {
   std::vector<std::array<double, 3>> out;
-  const double golden = Pi * (3.0 - std::sqrt(5.0));
+  const double golden = mesolight::Pi<double> * (3.0 - std::sqrt(5.0));
   for (int k = 0; k < n; ++k)
   {
     const double z = 1.0 - (k + 0.5) * 2.0 / n;
@@ -93,7 +93,7 @@ double MeanError(const RgbImage& map, const std::vector<MedianCutLight>& lights,
 double AngleDegrees(const double a[3], const double b[3])
 {
   const double c = a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-  return std::acos(std::max(-1.0, std::min(1.0, c))) * 180.0 / Pi;
+  return std::acos(std::max(-1.0, std::min(1.0, c))) * 180.0 / mesolight::Pi<double>;
 }
 
 /// A dim map with three bright spots (5 degree radius) at the zenith, the +X horizon and the
@@ -109,8 +109,8 @@ RgbImage ThreeSpots(int w, int h)
     {
       const double u = (i + 0.5) / w;
       const double v = 1.0 - (j + 0.5) / h;
-      const double d[3] = { std::sin(Pi * v) * std::cos(2 * Pi * u),
-        std::sin(Pi * v) * std::sin(2 * Pi * u), std::cos(Pi * v) };
+      const double d[3] = { std::sin(mesolight::Pi<double> * v) * std::cos(2 * mesolight::Pi<double> * u),
+        std::sin(mesolight::Pi<double> * v) * std::sin(2 * mesolight::Pi<double> * u), std::cos(mesolight::Pi<double> * v) };
       float value = 0.01f;
       for (const auto& s : spots)
       {
@@ -160,8 +160,8 @@ double SpotError(
 /// The relief thesis' mapping: rows to the polar angle over pi / 2 instead of pi.
 void SeedDirection(const MedianCutLight& l, double d[3])
 {
-  const double theta = 0.5 * Pi * l.V;
-  const double phi = 2 * Pi * l.U;
+  const double theta = 0.5 * mesolight::Pi<double> * l.V;
+  const double phi = 2 * mesolight::Pi<double> * l.U;
   d[0] = std::sin(theta) * std::cos(phi);
   d[1] = std::sin(theta) * std::sin(phi);
   d[2] = std::cos(theta);
@@ -241,8 +241,8 @@ TEST(MedianCut, UniformMapIsSpreadByArea)
     polar += std::abs(light.Direction[2]) > 0.9 ? 1 : 0;
     upper += light.Direction[2] > 0.0 ? 1 : 0;
   }
-  EXPECT_NEAR(total[0], 4 * Pi * l, 1e-6 * 4 * Pi * l);
-  EXPECT_NEAR(total[2], 4 * Pi * l, 1e-6 * 4 * Pi * l);
+  EXPECT_NEAR(total[0], 4 * mesolight::Pi<double> * l, 1e-6 * 4 * mesolight::Pi<double> * l);
+  EXPECT_NEAR(total[2], 4 * mesolight::Pi<double> * l, 1e-6 * 4 * mesolight::Pi<double> * l);
   // |z| > 0.9 is 10% of the sphere.
   EXPECT_LE(polar, 10);
   EXPECT_EQ(upper, 32);
@@ -251,7 +251,7 @@ TEST(MedianCut, UniformMapIsSpreadByArea)
   // Equal solid angles: every region has 4 pi / 64 sr.
   for (const auto& light : lights)
   {
-    EXPECT_NEAR(light.SolidAngle, 4 * Pi / 64, 0.05 * 4 * Pi / 64);
+    EXPECT_NEAR(light.SolidAngle, 4 * mesolight::Pi<double> / 64, 0.05 * 4 * mesolight::Pi<double> / 64);
   }
 }
 
@@ -326,7 +326,7 @@ TEST(MedianCut, AnyCount)
                       l.Direction[2] * l.Direction[2]),
           1.0, 1e-9);
       }
-      EXPECT_NEAR(area, 4 * Pi, 1e-9);
+      EXPECT_NEAR(area, 4 * mesolight::Pi<double>, 1e-9);
       double check = 0.0;
       for (int j = 0; j < map.Height; ++j)
       {

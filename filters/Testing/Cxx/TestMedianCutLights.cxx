@@ -2,6 +2,7 @@
 // vtkMedianCutLights and vtkProceduralEnvironmentSource: outputs, file row order, errors,
 // CSV.
 #include "vtkMedianCutLights.h"
+#include "MathConstants.h"
 #include "vtkOIIOImageReader.h"
 #include "vtkProceduralEnvironmentSource.h"
 
@@ -29,7 +30,6 @@ using mesolight_test::MessageCapture;
 
 namespace
 {
-constexpr double Pi = 3.14159265358979323846;
 
 vtkSmartPointer<vtkImageData> Image(int w, int h, float value, int components = 3)
 {
@@ -46,7 +46,7 @@ vtkSmartPointer<vtkImageData> Image(int w, int h, float value, int components = 
 double Degrees(const double a[3], const double b[3])
 {
   const double c = a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-  return std::acos(std::max(-1.0, std::min(1.0, c))) * 180.0 / Pi;
+  return std::acos(std::max(-1.0, std::min(1.0, c))) * 180.0 / mesolight::Pi<double>;
 }
 } // namespace
 
@@ -73,7 +73,7 @@ TEST(MedianCutLights, OutputsOnTheSunSky)
   // The strongest light is the sun.
   double p[3];
   out->GetPoint(0, p);
-  const double sun[3] = { 0.0, std::cos(Pi / 6), std::sin(Pi / 6) };
+  const double sun[3] = { 0.0, std::cos(mesolight::Pi<double> / 6), std::sin(mesolight::Pi<double> / 6) };
   EXPECT_LT(Degrees(p, sun), 1.0);
   EXPECT_NEAR(uv->GetComponent(0, 0), 0.25, 0.01);
   EXPECT_NEAR(uv->GetComponent(0, 1), 1.0 / 3.0, 0.01);
@@ -82,7 +82,7 @@ TEST(MedianCutLights, OutputsOnTheSunSky)
   {
     area += solidAngle->GetComponent(k, 0);
   }
-  EXPECT_NEAR(area, 4 * Pi, 1e-4);
+  EXPECT_NEAR(area, 4 * mesolight::Pi<double>, 1e-4);
 
   // The light texture: N x 2, row 0 directions, row 1 irradiances.
   vtkImageData* texture = lights->GetLightTexture();
@@ -192,7 +192,7 @@ TEST(MedianCutLights, BadInput)
   fromBytes->Update();
   ASSERT_EQ(fromBytes->GetOutput()->GetNumberOfPoints(), 1);
   EXPECT_NEAR(fromBytes->GetOutput()->GetPointData()->GetArray("Irradiance")->GetComponent(0, 0),
-    4 * Pi, 1e-4);
+    4 * mesolight::Pi<double>, 1e-4);
 }
 
 TEST(MedianCutLights, Abort)

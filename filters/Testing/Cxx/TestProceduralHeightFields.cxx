@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Procedural depth maps (core/ProceduralHeightFields.h) and vtkProceduralReliefSource.
 #include "core/ProceduralHeightFields.h"
+#include "MathConstants.h"
 #include "vtkProceduralReliefSource.h"
 
 #include "MesolightTestUtilities.h"
@@ -179,14 +180,13 @@ TEST(ProceduralHeightFields, SineWaveAndFlatAreAnalytic)
   const int w = 40;
   const int h = 30;
   const Maps m = Generate(p, w, h);
-  const double pi = 3.14159265358979323846;
   for (int j = 0; j < h; ++j)
   {
     for (int i = 0; i < w; ++i)
     {
       const double u = (i + 0.5) / w;
       const double v = (j + 0.5) / h;
-      const double expected = 0.5 + 0.5 * std::sin(2 * pi * 2 * u) * std::cos(2 * pi * 3 * v);
+      const double expected = 0.5 + 0.5 * std::sin(2 * mesolight::Pi<double> * 2 * u) * std::cos(2 * mesolight::Pi<double> * 3 * v);
       ASSERT_NEAR(m.Depth[j * w + i], expected, 1e-5) << i << "," << j;
     }
   }

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Sobel gradient and relief-texture packing (core/SobelNormals.h) against analytic values.
 #include "core/SobelNormals.h"
+#include "MathConstants.h"
 
 #include <gtest/gtest.h>
 
@@ -12,20 +13,19 @@ using mesolight::BorderMode;
 
 namespace
 {
-constexpr double Pi = 3.14159265358979323846;
 
 // h(u, v) = 0.5 + 0.25 sin(2 pi u) cos(2 pi v) and its partial derivatives.
 double H(double u, double v)
 {
-  return 0.5 + 0.25 * std::sin(2 * Pi * u) * std::cos(2 * Pi * v);
+  return 0.5 + 0.25 * std::sin(2 * mesolight::Pi<double> * u) * std::cos(2 * mesolight::Pi<double> * v);
 }
 double DHdu(double u, double v)
 {
-  return 0.5 * Pi * std::cos(2 * Pi * u) * std::cos(2 * Pi * v);
+  return 0.5 * mesolight::Pi<double> * std::cos(2 * mesolight::Pi<double> * u) * std::cos(2 * mesolight::Pi<double> * v);
 }
 double DHdv(double u, double v)
 {
-  return -0.5 * Pi * std::sin(2 * Pi * u) * std::sin(2 * Pi * v);
+  return -0.5 * mesolight::Pi<double> * std::sin(2 * mesolight::Pi<double> * u) * std::sin(2 * mesolight::Pi<double> * v);
 }
 
 struct SampledMap

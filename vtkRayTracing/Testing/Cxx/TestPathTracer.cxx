@@ -4,6 +4,8 @@
 // BSDF sampling; negative tests (double-counted direct light, a missing 1/pi, a missing cosine
 // must fail the same checks); determinism; bad input.
 #include "EmbreeScene.h"
+#include "MathConstants.h"
+#include "core/EnvironmentMaps.h"
 #include "PathTracer.h"
 #include "TriangleScene.h"
 
@@ -27,7 +29,6 @@ using mesolight::SceneMaterial;
 using mesolight::SceneRay;
 using mesolight::TriangleScene;
 
-constexpr float Pi = 3.14159265358979323846f;
 
 // The cube [-1,1]^3 with every face pointing inward, all of one material.
 TriangleScene MakeClosedBox(const SceneMaterial& material)
@@ -54,7 +55,7 @@ glm::vec3 MeanRadianceFromCentre(const PathTracer& tracer, int count, std::uint6
   {
     RandomSequence rng(mesolight::SampleSeed(seed, 0, static_cast<std::uint64_t>(i)));
     const float z = 2.0f * rng.NextFloat() - 1.0f;
-    const float phi = 2.0f * Pi * rng.NextFloat();
+    const float phi = 2.0f * mesolight::Pi<float> * rng.NextFloat();
     const float r = std::sqrt(std::max(0.0f, 1.0f - z * z));
     SceneRay ray;
     ray.Origin = glm::vec3(0.1f, -0.2f, 0.05f);
@@ -178,7 +179,7 @@ mesolight::RgbImage CosineSky(int height)
   for (int j = 0; j < height; ++j)
   {
     const double v = mesolight::PixelCenterV(j, height);
-    const float value = static_cast<float>(std::max(0.0, std::cos(mesolight::EnvPi * v)));
+    const float value = static_cast<float>(std::max(0.0, std::cos(mesolight::Pi<double> * v)));
     for (int i = 0; i < 2 * height; ++i)
     {
       float* p = map.Pixel(i, j);
@@ -203,7 +204,7 @@ TEST(PathTracerEnvironment, DiffusePlaneUnderCosineSkyMatchesTheIntegral)
   // Negative: the same sky averaged without the cosine (rho * mean of cos over the hemisphere
   // = rho / 2), or the irradiance without 1/pi, are far outside that tolerance.
   EXPECT_GT(std::abs(albedo / 2.0f - expected), 0.05f * expected);
-  EXPECT_GT(std::abs(expected * Pi - expected), 0.05f * expected);
+  EXPECT_GT(std::abs(expected * mesolight::Pi<float> - expected), 0.05f * expected);
 }
 
 TEST(PathTracerEnvironment, RotatedEnvironmentFollowsWorldToMap)
@@ -316,7 +317,7 @@ TEST(PathTracer, DirectLightFromAnEmitterMatchesLambertsFormula)
   ASSERT_LT(scene.FaceNormal(2).z, 0.0f);
   const EmbreeScene embree(scene);
   const glm::vec3 p(0.3f, -0.2f, 0.0f);
-  const float expected = 0.5f / Pi * 10.0f * PolygonIrradiance(quad, p, glm::vec3(0, 0, 1));
+  const float expected = 0.5f / mesolight::Pi<float> * 10.0f * PolygonIrradiance(quad, p, glm::vec3(0, 0, 1));
   for (LightSampling sampling : { LightSampling::MultipleImportance, LightSampling::BsdfOnly })
   {
     PathTracerSettings settings;
@@ -341,7 +342,7 @@ TEST(PathTracer, DirectLightFromAnEmitterMatchesLambertsFormula)
       noCosine += cellArea * (d.z / glm::length(d)) / glm::dot(d, d);
     }
   }
-  const float wrong = static_cast<float>(0.5 / Pi * 10.0 * noCosine);
+  const float wrong = static_cast<float>(0.5 / mesolight::Pi<float> * 10.0 * noCosine);
   EXPECT_GT(std::abs(wrong - expected), 0.05f * expected);
 }
 
@@ -370,7 +371,7 @@ TEST(PathTracer, CornellBoxFloorCentreIsLitByDirectAndIndirectLight)
   // bound; the interreflections of the box add a fraction of it.
   const std::vector<glm::vec3> light = { { 343.0f, 548.7f, 227.0f }, { 343.0f, 548.7f, 332.0f },
     { 213.0f, 548.7f, 332.0f }, { 213.0f, 548.7f, 227.0f } };
-  const float direct = 0.725f / Pi * 17.0f * PolygonIrradiance(light, p, glm::vec3(0, 1, 0));
+  const float direct = 0.725f / mesolight::Pi<float> * 17.0f * PolygonIrradiance(light, p, glm::vec3(0, 1, 0));
   const glm::vec3 centre = tracer.DiffuseRadianceLeaving(floor, p, 4000, 1);
   EXPECT_GT(centre.x, direct);
   EXPECT_LT(centre.x, 2.0f * direct);

@@ -3,6 +3,7 @@
 // edge, bilinear vs nearest texture lookups, bump maps with a known slope, tangent frames on a
 // sphere (continuous where the seed's [1 0 0] x N breaks), adaptive supersampling and
 // progressive refinement (rays counted: no pixel traced twice), and bad input.
+#include "MathConstants.h"
 #include "TexturedRayTracer.h"
 
 #include <glm/geometric.hpp>
@@ -331,8 +332,8 @@ TEST(TextureMaps, SphereTangentFrameIsStableAndFollowsTheCoordinates)
   {
     for (int b = 0; b < 120; ++b)
     {
-      const float theta = 3.14159265f * a / 60.0f;
-      const float phi = 2.0f * 3.14159265f * b / 120.0f + 0.001f;
+      const float theta = mesolight::Pi<float> * a / 60.0f;
+      const float phi = 2.0f * mesolight::Pi<float> * b / 120.0f + 0.001f;
       const glm::vec3 n(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta));
       const auto frame = mesolight::SphereTangentFrame(n, axis, meridian);
       ASSERT_NEAR(glm::length(frame.Tangent), 1.0f, 1e-4f);

@@ -2,6 +2,8 @@
 // direction against brute force, interpolation weights, solid angles against Monte Carlo and
 // analytic integrals. Prints the solid-angle spread and lookup timings (docs/vlf.md).
 #include "DirectionSet.h"
+#include "MathConstants.h"
+#include "ParallelFor.h"
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
@@ -12,13 +14,11 @@
 #include <cstdio>
 #include <random>
 #include <stdexcept>
-#include <thread>
 #include <vector>
 
 namespace
 {
 using mesolight::vlf::DirectionSet;
-constexpr double Pi = 3.14159265358979323846;
 
 std::vector<glm::vec3> RandomDirections(std::size_t count, unsigned seed)
 {
@@ -38,14 +38,11 @@ std::vector<glm::vec3> RandomDirections(std::size_t count, unsigned seed)
   return directions;
 }
 
-// Runs body(begin, end) over [0, count) on two threads (the machine has two cores).
+// Runs body(begin, end) over [0, count) on mesolight::ParallelFor (every item is computed alone).
 template <typename Body>
 void ParallelFor(std::size_t count, Body body)
 {
-  const std::size_t half = count / 2;
-  std::thread other([&] { body(half, count); });
-  body(0, half);
-  other.join();
+  mesolight::ParallelFor(0, count, 1, body);
 }
 
 struct SolidAngleSpread
@@ -236,7 +233,7 @@ TEST_P(DirectionSetSizes, NearestAgreesWithBruteForce)
   std::vector<double> cells(set.Size(), 0.0);
   for (const std::size_t i : nearest)
   {
-    cells[i] += 2.0 * Pi / count;
+    cells[i] += 2.0 * mesolight::Pi<double> / count;
   }
   const SolidAngleSpread voronoi = Spread(cells);
   std::printf("[ figures  ] %zu directions: nearest-direction cells (Monte Carlo, 10^6 samples): "
@@ -306,11 +303,11 @@ TEST_P(DirectionSetSizes, SolidAnglesAgainstMonteCarloAndIntegrals)
     weights[i] = set.SolidAngle(i);
   }
   const SolidAngleSpread spread = Spread(weights);
-  EXPECT_NEAR(spread.Sum, 2.0 * Pi, 1e-5);
+  EXPECT_NEAR(spread.Sum, 2.0 * mesolight::Pi<double>, 1e-5);
   std::printf("[ figures  ] %zu directions: solid-angle weights min %.4g max %.4g mean %.4g "
               "stddev %.3g sr (max/min %.3f, stddev/mean %.2f%%), sum %.7f (2 pi = %.7f)\n",
     set.Size(), spread.Min, spread.Max, spread.Mean, spread.StdDev, spread.Max / spread.Min,
-    100.0 * spread.StdDev / spread.Mean, spread.Sum, 2.0 * Pi);
+    100.0 * spread.StdDev / spread.Mean, spread.Sum, 2.0 * mesolight::Pi<double>);
 
   const std::size_t count = 2000000;
   const std::vector<glm::vec3> samples = RandomDirections(count, 99u);
@@ -320,7 +317,7 @@ TEST_P(DirectionSetSizes, SolidAnglesAgainstMonteCarloAndIntegrals)
     const DirectionSet::Interpolation in = set.Interpolate(u);
     for (int k = 0; k < 3; ++k)
     {
-      estimate[in.Index[k]] += in.Weight[k] * (2.0 * Pi / count);
+      estimate[in.Index[k]] += in.Weight[k] * (2.0 * mesolight::Pi<double> / count);
     }
   }
   double sumSquares = 0.0, sumEstimate = 0.0;
@@ -333,7 +330,7 @@ TEST_P(DirectionSetSizes, SolidAnglesAgainstMonteCarloAndIntegrals)
   // Expected Monte Carlo noise: about 1/sqrt(samples per direction) (~3% for 8193 directions).
   const double samplesPerDirection = double(count) / set.Size();
   EXPECT_LT(rms, 2.0 / std::sqrt(samplesPerDirection)) << "rms relative error " << rms;
-  EXPECT_NEAR(sumEstimate, 2.0 * Pi, 1e-6);
+  EXPECT_NEAR(sumEstimate, 2.0 * mesolight::Pi<double>, 1e-6);
 
   // Quadrature of even functions over the hemisphere (the set stands for lines, so each direction
   // carries d and -d): integral of |z| = pi, z^2 = 2 pi / 3, x^2 y^2 = 2 pi / 15.
@@ -346,9 +343,9 @@ TEST_P(DirectionSetSizes, SolidAnglesAgainstMonteCarloAndIntegrals)
     integralX2Y2 += weights[i] * d.x * d.x * d.y * d.y;
   }
   const double tolerance = 2.0 / (set.Subdivisions() * set.Subdivisions());
-  EXPECT_NEAR(integralAbsZ / Pi, 1.0, tolerance);
-  EXPECT_NEAR(integralZ2 / (2.0 * Pi / 3.0), 1.0, tolerance);
-  EXPECT_NEAR(integralX2Y2 / (2.0 * Pi / 15.0), 1.0, 4.0 * tolerance);
+  EXPECT_NEAR(integralAbsZ / mesolight::Pi<double>, 1.0, tolerance);
+  EXPECT_NEAR(integralZ2 / (2.0 * mesolight::Pi<double> / 3.0), 1.0, tolerance);
+  EXPECT_NEAR(integralX2Y2 / (2.0 * mesolight::Pi<double> / 15.0), 1.0, 4.0 * tolerance);
   // Negative check: equal weights 2 pi / size (ignoring the variation) are measurably worse on
   // |z| at the smallest set.
   if (set.Size() == 513)
@@ -356,14 +353,14 @@ TEST_P(DirectionSetSizes, SolidAnglesAgainstMonteCarloAndIntegrals)
     double equal = 0.0;
     for (std::size_t i = 0; i < set.Size(); ++i)
     {
-      equal += (2.0 * Pi / set.Size()) * std::abs(set.Direction(i).z);
+      equal += (2.0 * mesolight::Pi<double> / set.Size()) * std::abs(set.Direction(i).z);
     }
-    EXPECT_GT(std::abs(equal / Pi - 1.0), std::abs(integralAbsZ / Pi - 1.0));
+    EXPECT_GT(std::abs(equal / mesolight::Pi<double> - 1.0), std::abs(integralAbsZ / mesolight::Pi<double> - 1.0));
   }
   std::printf("[ figures  ] %zu directions: quadrature relative errors |z| %.2e, z^2 %.2e, "
               "x^2y^2 %.2e; Monte Carlo rms %.2f%%\n",
-    set.Size(), integralAbsZ / Pi - 1.0, integralZ2 / (2.0 * Pi / 3.0) - 1.0,
-    integralX2Y2 / (2.0 * Pi / 15.0) - 1.0, 100.0 * rms);
+    set.Size(), integralAbsZ / mesolight::Pi<double> - 1.0, integralZ2 / (2.0 * mesolight::Pi<double> / 3.0) - 1.0,
+    integralX2Y2 / (2.0 * mesolight::Pi<double> / 15.0) - 1.0, 100.0 * rms);
 }
 
 TEST_P(DirectionSetSizes, LookupTimings)

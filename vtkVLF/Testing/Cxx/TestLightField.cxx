@@ -209,29 +209,36 @@ TEST(VLFLightField, DegenerateTrianglesAreIgnored)
   EXPECT_EQ(field->SurfaceOfTriangle(12), NoSurface);
 }
 
-TEST(VLFLightField, ParallelForCallbackIsUsedAndAbortStops)
+TEST(VLFLightField, ProgressIsMonotoneDeterministicAndAbortStops)
 {
   const TriangleScene cornell = MakeCornellBox();
-  std::size_t calls = 0;
-  ParallelFor serial = [&](std::size_t count, const std::function<void(std::size_t, std::size_t)>& body) {
-    ++calls;
-    body(0, count);
-  };
   double last = -1.0;
   bool monotone = true;
-  ProgressCallbacks progress;
-  progress.Progress = [&](double p) {
+  std::size_t calls = 0;
+  const ProgressCallback progress = [&](double p) {
+    ++calls;
     monotone = monotone && p >= last;
     last = p;
+    return true;
   };
-  LightField::Build(cornell, Small(), serial, progress);
-  EXPECT_GT(calls, 0u);
+  const std::unique_ptr<LightField> first = LightField::Build(cornell, Small(), progress);
+  EXPECT_GT(calls, 2u);
   EXPECT_TRUE(monotone);
   EXPECT_NEAR(last, 1.0, 1e-9);
+  // Work split over threads by vtkSMPTools: the same structure every time.
+  const std::unique_ptr<LightField> second = LightField::Build(cornell, Small());
+  EXPECT_EQ(first->Capacity, second->Capacity);
 
-  ProgressCallbacks abort;
-  abort.AbortRequested = [] { return true; };
-  EXPECT_THROW(LightField::Build(cornell, Small(), serial, abort), AbortedError);
+  // The first report that answers false stops the build.
+  std::size_t reports = 0;
+  const ProgressCallback abortAtOnce = [&](double) {
+    ++reports;
+    return false;
+  };
+  EXPECT_THROW(LightField::Build(cornell, Small(), abortAtOnce), AbortedError);
+  EXPECT_EQ(reports, 1u);
+  const ProgressCallback abortLater = [](double p) { return p < 0.5; };
+  EXPECT_THROW(LightField::Build(cornell, Small(), abortLater), AbortedError);
 }
 
 } // namespace

@@ -8,6 +8,7 @@
 //    factor, from the gathered field and from the propagated floor texture;
 //  - a perfect mirror reflects the emitter's radiance into the mirrored direction.
 #include "Lookup.h"
+#include "MathConstants.h"
 #include "Propagation.h"
 #include "VLFTestScenes.h"
 
@@ -22,7 +23,6 @@ namespace
 {
 using namespace mesolight;
 using namespace mesolight::vlf;
-constexpr double Pi = 3.14159265358979323846;
 
 glm::vec3 RandomUnit(std::mt19937& random)
 {
@@ -96,10 +96,10 @@ FurnaceResult RunFurnace(float albedo, int iterations, bool limit, DiffuseNormal
     const float margin = 1.0f - 1.5f * settings.CellSize() / half;
     const glm::vec3 interior = margin * half * glm::vec3(uniform(random), uniform(random), uniform(random));
     const glm::vec3 e = lookup.Irradiance(interior, RandomUnit(random), gather);
-    r.WorstGather = std::max(r.WorstGather, std::abs(e.x / Pi - expected) / expected);
+    r.WorstGather = std::max(r.WorstGather, std::abs(e.x / mesolight::Pi<double> - expected) / expected);
     const glm::vec3 anywhere = half * glm::vec3(uniform(random), uniform(random), uniform(random));
     const glm::vec3 near = lookup.Irradiance(anywhere, RandomUnit(random), gather);
-    r.WorstGatherAnywhere = std::max(r.WorstGatherAnywhere, std::abs(near.x / Pi - expected) / expected);
+    r.WorstGatherAnywhere = std::max(r.WorstGatherAnywhere, std::abs(near.x / mesolight::Pi<double> - expected) / expected);
   }
   return r;
 }
@@ -235,7 +235,7 @@ TEST(VLFPropagation, IrradianceUnderASquareEmitterMatchesTheFormFactor)
   double worstGather = 0.0, worstTexture = 0.0, worstNoWeights = 0.0;
   for (const float offset : { 0.0f, 0.25f, 0.5f, 0.8f })
   {
-    const double expected = le * Pi * vlftest::SquareFormFactor(side, height, offset, 0.3 * offset);
+    const double expected = le * mesolight::Pi<double> * vlftest::SquareFormFactor(side, height, offset, 0.3 * offset);
     const glm::vec3 world(offset, 0.3f * offset, 0.0f);
     const glm::vec3 p = (world - field->NormalizationCentre()) * scale;
     const glm::vec3 e = lookup.Irradiance(p, glm::vec3(0.0f, 0.0f, 1.0f), {}, floor);
@@ -243,7 +243,7 @@ TEST(VLFPropagation, IrradianceUnderASquareEmitterMatchesTheFormFactor)
     uniformWeights.SolidAngleWeights = false;
     const glm::vec3 eUniform = lookup.Irradiance(p, glm::vec3(0.0f, 0.0f, 1.0f), uniformWeights, floor);
     // The floor's diffuse radiance is rho / pi E.
-    const double textured = lookup.DiffuseRadiance(floor, p).x * Pi / albedo;
+    const double textured = lookup.DiffuseRadiance(floor, p).x * mesolight::Pi<double> / albedo;
     std::printf("[ form     ] offset %.2f: analytic E %.4f gathered %.4f (uniform weights %.4f) "
                 "texture %.4f\n",
       offset, expected, e.x, eUniform.x, textured);
@@ -264,7 +264,7 @@ TEST(VLFPropagation, AbortStopsAnIteration)
   settings.RaysPerSide = 16;
   std::unique_ptr<LightField> field = LightField::Build(MakeCornellBox(), settings);
   PropagationOptions options;
-  options.Callbacks.AbortRequested = [] { return true; };
+  options.Progress = [](double) { return false; };
   EXPECT_THROW(PropagateIteration(*field, options), AbortedError);
 }
 
