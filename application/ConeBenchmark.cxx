@@ -2,8 +2,8 @@
 #include "ConeBenchmark.h"
 
 #include "CommandLine.h"
-#include "core/ConeMaps.h"
-#include "core/ProceduralHeightFields.h"
+#include "ConeMaps.h"
+#include "ProceduralHeightFields.h"
 #include "HeightFieldTracer.h"
 
 #include <algorithm>

@@ -1,4 +1,4 @@
-// `mesolight bench cones`: speed and tightness of the cone-map generators (filters/core/ConeMaps.h)
+// `mesolight bench cones`: speed and tightness of the cone-map generators (filters/ReliefTextures/core/ConeMaps.h)
 // on procedural maps: seconds per map for the fast bilinear-safe searches (relaxed and
 // conservative), the brute-force oracle measured on a small map and extrapolated by its
 // complexity, and how wide the bilinear-safe cones are compared with per-texel-sample cones.

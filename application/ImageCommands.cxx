@@ -2,7 +2,7 @@
 
 #include "CommandLine.h"
 
-#include "core/EnvironmentMaps.h"
+#include "EnvironmentMaps.h"
 #include "vtkConeMapFilter.h"
 #include "vtkLightProbeToLatLong.h"
 #include "vtkOIIOImageReader.h"
@@ -150,7 +150,7 @@ int RunConeCommand(const std::vector<std::string>& args)
   cl.AddValue("--border", "MODE", "clamp or wrap (tiling maps)", "clamp");
   cl.AddFlag("--height", "the input stores height (white = high) rather than depth");
   cl.AddFlag("--normalize", "stretch the input's value range to [0, 1]");
-  cl.AddFlag("--seed8", "the relief thesis' 8-bit packing (cone as c / (1 + c)) instead of float");
+  cl.AddFlag("--8bit", "the relief thesis' 8-bit packing (cone as c / (1 + c)) instead of float");
   std::string error;
   double depthScale = 0.04;
   int exitCode = 0;
@@ -186,7 +186,7 @@ int RunConeCommand(const std::vector<std::string>& args)
   cones->SetNormalizeRange(cl.Has("--normalize"));
   cones->SetBorderMode(border == "wrap" ? 1 : 0);
   cones->SetConeType(type == "conservative" ? vtkConeMapFilter::CONSERVATIVE : vtkConeMapFilter::RELAXED);
-  cones->SetPacking(cl.Has("--seed8") ? vtkConeMapFilter::SEED_8BIT : vtkConeMapFilter::FLOAT);
+  cones->SetPacking(cl.Has("--8bit") ? vtkConeMapFilter::RATIO_8BIT : vtkConeMapFilter::FLOAT);
   const auto start = std::chrono::steady_clock::now();
   cones->Update();
   const double seconds =

@@ -1,11 +1,12 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "LightsCommand.h"
 
+#include "MathConstants.h"
 #include "CommandLine.h"
 
-#include "core/EnvironmentMaps.h"
-#include "core/MedianCut.h"
-#include "core/ProceduralEnvironments.h"
+#include "EnvironmentMaps.h"
+#include "MedianCut.h"
+#include "ProceduralEnvironments.h"
 #include "vtkMedianCutLights.h"
 #include "vtkOIIOImageReader.h"
 #include "vtkProceduralEnvironmentSource.h"
@@ -33,7 +34,6 @@ namespace mesolight
 
 namespace
 {
-constexpr double Pi = mesolight::Pi<double>;
 
 /// The built-in maps: "sky" (smooth sky over a dim ground) and "sun" (the same sky, a
 /// 2-degree sun and a bright window, as in the reference experiment).
@@ -104,7 +104,7 @@ std::vector<std::array<double, 3>> FibonacciNormals(int n)
 {
   std::vector<std::array<double, 3>> out;
   out.reserve(static_cast<size_t>(n));
-  const double golden = Pi * (3.0 - std::sqrt(5.0));
+  const double golden = Pi<double> * (3.0 - std::sqrt(5.0));
   for (int k = 0; k < n; ++k)
   {
     const double z = 1.0 - (k + 0.5) * 2.0 / n;

@@ -1,6 +1,6 @@
 // `mesolight lights` (environment map -> median cut lights as CSV) and `mesolight bench lights`
 // (accuracy of median cut and SH9 irradiance against exact integration, and timing).
-// Conventions: filters/core/EnvironmentMaps.h and docs/environment-maps.md.
+// Conventions: filters/Lighting/core/EnvironmentMaps.h and docs/environment-maps.md.
 #ifndef mesolight_LightsCommand_h
 #define mesolight_LightsCommand_h
 

@@ -4,6 +4,7 @@
 // (single and packets), and path-tracer samples per second on the Cornell box.
 #include "TraceCommand.h"
 
+#include "MathConstants.h"
 #include "CommandLine.h"
 
 #include "EmbreeScene.h"
@@ -29,7 +30,6 @@ namespace mesolight
 
 namespace
 {
-constexpr float Pi = 3.14159265358979323846f;
 
 // A latitude-longitude sphere of radius 1 with about `triangles` triangles, faces pointing in.
 TriangleScene MakeDenseSphere(int triangles)
@@ -41,10 +41,10 @@ TriangleScene MakeDenseSphere(int triangles)
   scene.AddMaterial(grey);
   for (int r = 0; r <= rings; ++r)
   {
-    const float theta = Pi * (0.02f + 0.96f * static_cast<float>(r) / rings); // open at the poles
+    const float theta = Pi<float> * (0.02f + 0.96f * static_cast<float>(r) / rings); // open at the poles
     for (int s = 0; s < segments; ++s)
     {
-      const float phi = 2.0f * Pi * static_cast<float>(s) / segments;
+      const float phi = 2.0f * Pi<float> * static_cast<float>(s) / segments;
       scene.Positions.emplace_back(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta));
     }
   }
@@ -78,7 +78,7 @@ glm::vec3 CosineAround(const glm::vec3& n, RandomSequence& rng)
   const float u1 = rng.NextFloat();
   const float u2 = rng.NextFloat();
   const float r = std::sqrt(u1);
-  const float phi = 2.0f * Pi * u2;
+  const float phi = 2.0f * Pi<float> * u2;
   const float sign = std::copysign(1.0f, n.z);
   const float a = -1.0f / (sign + n.z);
   const float b = n.x * n.y * a;

@@ -343,7 +343,7 @@ int RunTraceCommand(const std::vector<std::string>& args)
 {
   CommandLine cl("mesolight trace",
     "mesolight trace [options]\n\nRay traces a built-in scene on the CPU with Embree "
-    "(seed 004: texture-mapped\nmaterial channels, glossy reflection, adaptive supersampling, "
+    "(Ahern 1999: texture-mapped\nmaterial channels, glossy reflection, adaptive supersampling, "
     "progressive\nrefinement), or path traces the Cornell box.\n");
   cl.AddValue("--scene", "NAME", "spheres (textured spheres on a checker), ring (bump + roughness maps), "
                                  "cornell (path-traced reference)", "spheres");

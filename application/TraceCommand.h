@@ -1,4 +1,4 @@
-// `mesolight trace` (the Embree ray tracer of seed 004 on built-in scenes, and the path-traced
+// `mesolight trace` (the Embree ray tracer of Ahern 1999 on built-in scenes, and the path-traced
 // Cornell box) and `mesolight bench trace` (rays per second, path samples per second).
 #ifndef mesolight_TraceCommand_h
 #define mesolight_TraceCommand_h

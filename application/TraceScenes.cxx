@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "TraceScenes.h"
 
+#include "MathConstants.h"
 #include "vtkEmbreeRayTracer.h"
 
 #include <vtkActor.h>
@@ -26,7 +27,6 @@ namespace mesolight
 
 namespace
 {
-constexpr double Pi = 3.14159265358979323846;
 
 vtkSmartPointer<vtkImageData> NewRgbImage(int width, int height)
 {
@@ -119,13 +119,13 @@ vtkSmartPointer<vtkImageData> MakeGlobeImage(int height)
   auto image = NewRgbImage(width, height);
   for (int j = 0; j < height; ++j)
   {
-    const double latitude = Pi * ((j + 0.5) / height - 0.5);
+    const double latitude = Pi<double> * ((j + 0.5) / height - 0.5);
     for (int i = 0; i < width; ++i)
     {
-      const double longitude = 2.0 * Pi * (i + 0.5) / width;
+      const double longitude = 2.0 * Pi<double> * (i + 0.5) / width;
       const double land = std::sin(3.0 * longitude + 1.3 * std::sin(2.0 * latitude)) * std::cos(latitude) +
         0.6 * std::sin(5.0 * longitude - 2.0 * latitude) * std::cos(3.0 * latitude) - 0.25;
-      const bool ice = std::abs(latitude) > 0.42 * Pi;
+      const bool ice = std::abs(latitude) > 0.42 * Pi<double>;
       if (ice)
       {
         SetPixel(image, i, j, 0.95, 0.95, 0.97);
@@ -147,11 +147,11 @@ vtkSmartPointer<vtkImageData> MakeKnotBumpImage(int width, int height, double st
 {
   // Height: two families of raised sinusoidal bands crossing over and under each other.
   auto heightAt = [](double s, double t) {
-    const double a = 0.5 + 0.5 * std::cos(2.0 * Pi * (6.0 * s + 2.0 * t));
-    const double b = 0.5 + 0.5 * std::cos(2.0 * Pi * (6.0 * s - 2.0 * t));
+    const double a = 0.5 + 0.5 * std::cos(2.0 * Pi<double> * (6.0 * s + 2.0 * t));
+    const double b = 0.5 + 0.5 * std::cos(2.0 * Pi<double> * (6.0 * s - 2.0 * t));
     const double bandA = std::pow(a, 8.0);
     const double bandB = std::pow(b, 8.0);
-    const double over = std::sin(2.0 * Pi * 12.0 * s) > 0.0 ? 1.0 : 0.6; // over/under weave
+    const double over = std::sin(2.0 * Pi<double> * 12.0 * s) > 0.0 ? 1.0 : 0.6; // over/under weave
     return std::max(bandA * over, bandB * (1.6 - over));
   };
   auto image = NewRgbImage(width, height);
@@ -174,7 +174,7 @@ vtkSmartPointer<vtkImageData> MakeKnotBumpImage(int width, int height, double st
 
 bool BuildSpheresScene(vtkRenderer* renderer, vtkEmbreeRayTracer* tracer)
 {
-  // Seed 004 §1's picture: a checker ground (diffuse map); left sphere: the checker as
+  // Ahern 1999 §1's picture: a checker ground (diffuse map); left sphere: the checker as
   // shininess map (highlights of changing size); middle: the checker as specular map
   // (alternating reflectivity); right: a globe as ambient map.
   auto checker = MakeCheckerImage(256, 8, 0.05, 1.0);
@@ -225,7 +225,7 @@ bool BuildSpheresScene(vtkRenderer* renderer, vtkEmbreeRayTracer* tracer)
 
 bool BuildRingScene(vtkRenderer* renderer, vtkEmbreeRayTracer* tracer)
 {
-  // Seed 004 §5: a ring (a cylinder with smooth normals) whose knots exist only in its bump
+  // Ahern 1999 §5: a ring (a cylinder with smooth normals) whose knots exist only in its bump
   // map, with a roughness map, on a glossy floor whose roughness alternates (§2's picture).
   vtkNew<vtkCylinderSource> cylinder;
   cylinder->SetRadius(1.0);

@@ -1,4 +1,4 @@
-// Built-in scenes of `mesolight trace` (seed 004's pictures): three textured spheres on a
+// Built-in scenes of `mesolight trace` (Ahern 1999's pictures): three textured spheres on a
 // checker plane, and a bump- and roughness-mapped ring. Procedural textures, made in code.
 #ifndef mesolight_TraceScenes_h
 #define mesolight_TraceScenes_h

@@ -6,6 +6,7 @@
 
 #include "EmbreeScene.h"
 #include "LightField.h"
+#include "MathConstants.h"
 #include "ParallelFor.h"
 #include "Lookup.h"
 #include "ObjScene.h"
@@ -219,7 +220,7 @@ int Render(const std::vector<std::string>& args)
 {
   CommandLine cl("mesolight vlf render",
     "mesolight vlf render FIELD --out IMAGE.png [options]\n\n"
-    "Renders a light field's diffuse totals (the seed's progressive mode: per-surface "
+    "Renders a light field's diffuse totals (Wither's progressive mode: per-surface "
     "total diffuse\ntextures, bilinear) by casting a ray per pixel; mirror surfaces "
     "show the field's radiance\ntoward the eye (three-direction spherical "
     "interpolation).\n");
@@ -316,7 +317,7 @@ int Render(const std::vector<std::string>& args)
     }
     right = glm::normalize(right);
     const glm::vec3 trueUp = glm::cross(right, forward);
-    const float tanHalf = static_cast<float>(std::tan(0.5 * viewAngle * 3.14159265358979 / 180.0));
+    const float tanHalf = static_cast<float>(std::tan(0.5 * viewAngle * Pi<double> / 180.0));
     const float aspect = static_cast<float>(width) / static_cast<float>(height);
 
     const EmbreeScene embree(unit);

@@ -1,5 +1,5 @@
 // `mesolight vlf propagate|render` and `mesolight bench vlf`: the virtual light field (vtkVLF,
-// seed 002 §2.4) from the command line. docs/vlf.md has examples and measured figures.
+// Wither 2005 §2.4) from the command line. docs/vlf.md has examples and measured figures.
 #ifndef mesolight_VlfCommand_h
 #define mesolight_VlfCommand_h
 

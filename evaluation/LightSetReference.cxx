@@ -6,7 +6,7 @@
 #include "ImageCompare.h"
 #include "ReliefReference.h"
 
-#include "core/EnvironmentMaps.h"
+#include "EnvironmentMaps.h"
 
 #include <glm/geometric.hpp>
 #include <vtkDataArray.h>

@@ -347,7 +347,7 @@ int vtkEmbreeRayTracer::RequestData(vtkInformation*, vtkInformationVector**, vtk
           break;
         case ROUGHNESS_MAP:
           material.RoughnessMap = map;
-          material.Roughness = 1.0f; // roughness comes from the map (seed 004 §2)
+          material.Roughness = 1.0f; // roughness comes from the map (Ahern 1999 §2)
           break;
         default:
           break;

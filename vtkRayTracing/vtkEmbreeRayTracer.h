@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class vtkEmbreeRayTracer
- * @brief Ray traces the visible actors of a vtkRenderer on the CPU with Embree (seed 004).
+ * @brief Ray traces the visible actors of a vtkRenderer on the CPU with Embree (Ahern 1999).
  *
  * An image source (no inputs): set a renderer, update, and the output is a vtkImageData of
  * the renderer's view (unsigned char RGB point scalars "RGB", plus the linear colours as float
@@ -17,11 +17,11 @@
  *   the actor's x axis (the sphere source's poles lie on z).
  * - vtkProperty: ambient, diffuse and specular coefficients times their colours, specular
  *   power; NormalScale scales bump maps. Opacity is ignored. The specular colour is also the
- *   mirror reflectivity (seed 004 §1), so shiny actors reflect; Reflections turns that off.
+ *   mirror reflectivity (Ahern 1999 §1), so shiny actors reflect; Reflections turns that off.
  * - Material maps: the actor's vtkTexture is the diffuse map; SetMaterialMap adds a map per
  *   channel (diffuse, specular, ambient, shininess, bump, roughness) for an actor. A map
  *   multiplies the constant colour; shininess and roughness read the red channel (roughness
- *   comes only from a roughness map, as in the seed); bump maps tilt the normal by
+ *   comes only from a roughness map, as in Ahern); bump maps tilt the normal by
  *   (2 red - 1, 2 green - 1) x NormalScale along the texture's tangent and bitangent.
  * - Lights: every switched-on vtkLight (headlights, camera lights, scene lights; directional,
  *   positional, spot with cone angle, exponent and attenuation), colour = diffuse colour x
@@ -105,7 +105,7 @@ public:
   vtkBooleanMacro(AnalyticSpheres, bool);
 
   ///@{
-  /** Distributed rays per rough reflection at a primary hit (seed 004 used 40; default 16). */
+  /** Distributed rays per rough reflection at a primary hit (Ahern 1999 used 40; default 16). */
   vtkSetClampMacro(GlossySamples, int, 1, 1024);
   vtkGetMacro(GlossySamples, int);
   ///@}
@@ -136,7 +136,7 @@ public:
 
   ///@{
   /** Threads: 1 traces on the calling thread only, any other value on all of vtkSMPTools'
-   * threads (vtkSMPTools::Initialize sets how many); and the seed of the distributed rays. */
+   * threads (vtkSMPTools::Initialize sets how many); and Ahern of the distributed rays. */
   vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
   vtkGetMacro(NumberOfThreads, int);
   vtkSetMacro(Seed, vtkTypeUInt64);

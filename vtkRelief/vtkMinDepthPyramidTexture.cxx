@@ -6,7 +6,7 @@
 #include "vtkTextureObject.h"
 #include "vtk_glew.h"
 
-#include "ConeMaps.h" // Mesolight::Filters core: the min-depth pyramid
+#include "MinDepthPyramid.h" // Mesolight::ReliefTextures core
 
 #include <utility>
 
@@ -22,7 +22,7 @@ vtkMinDepthPyramidTexture::~vtkMinDepthPyramidTexture() = default;
 bool vtkMinDepthPyramidTexture::Upload(
   vtkOpenGLRenderWindow* renWin, const std::vector<float>& depth, int width, int height)
 {
-  // The min-depth pyramid (filters/core/ConeMaps.h): level sizes halve rounding down, a complete
+  // The min-depth pyramid (filters/ReliefTextures/core/MinDepthPyramid.h): level sizes halve rounding down, a complete
   // OpenGL mipmap, so the coarser levels upload as mip levels of one texture.
   const std::vector<std::vector<float>> levels =
     mesolight::ComputeMinDepthPyramid(depth.data(), width, height);

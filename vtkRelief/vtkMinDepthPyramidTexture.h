@@ -4,7 +4,7 @@
  *          MaximumMipmap method traverses.
  *
  * Level 0 is the relief texture's depth; each coarser level holds the minimum depth (the highest
- * surface) of the cells below it (mesolight::ComputeMinDepthPyramid, filters/core/ConeMaps.h).
+ * surface) of the cells below it (mesolight::ComputeMinDepthPyramid, filters/ReliefTextures/core/MinDepthPyramid.h).
  * Level sizes halve rounding down, a complete OpenGL mipmap, so all levels are mip levels of one
  * single-channel float texture (uploaded by hand: OpenGL would average, not take minima).
  */

@@ -4,12 +4,12 @@
  *          relief texture per fragment in tangent space.
  *
  * The relief texture (see vtkReliefTextureFilter) stores the tangent-space normal in RGB and the
- * depth in A (0 = the mesh surface, 1 = deepest), as in the relief thesis (seed 000, §4). For each
+ * depth in A (0 = the mesh surface, 1 = deepest), as in Méndez Fernández's thesis (§4). For each
  * fragment the mapper casts the view ray into the height field below the mesh, finds its first
  * intersection (linear search then a refinement step), and shades the hit point with every light
  * of the renderer, using the actor's vtkProperty (ambient, diffuse, specular, specular power) and
  * the actor's colour texture sampled at the displaced texture coordinate. Optionally it
- *  - marches toward each light for hard self-shadows (the same march, seed 000 §4.3),
+ *  - marches toward each light for hard self-shadows (the same march, Méndez Fernández's thesis §4.3),
  *  - discards fragments whose hit leaves the texture domain (silhouettes),
  *  - writes gl_FragDepth from the hit point so other geometry intersects the relief correctly.
  *

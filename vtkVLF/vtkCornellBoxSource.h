@@ -8,7 +8,7 @@
  * emitting radiance (17, 12, 4)) with the cell arrays "Diffuse", "Specular", "Emission",
  * "MaterialId" and field data "MaterialNames", as vtkLightFieldSceneReader gives for an OBJ file
  * (examples/data/cornell-box.obj is the same box). With NormalizeToUnitSphere on, the box is
- * translated and scaled into the unit sphere, as the light field assumes (seed 002 §2.4.1).
+ * translated and scaled into the unit sphere, as the light field assumes (Wither 2005 §2.4.1).
  */
 #ifndef vtkCornellBoxSource_h
 #define vtkCornellBoxSource_h

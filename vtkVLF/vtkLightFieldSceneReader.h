@@ -3,7 +3,7 @@
  * @class   vtkLightFieldSceneReader
  * @brief   reads a Wavefront OBJ + MTL scene into vtkPolyData with material cell arrays
  *
- * The light field's scene reader (seed 002 §2.4.2.1: an .obj with an .mtl of surface
+ * The light field's scene reader (Wither 2005 §2.4.2.1: an .obj with an .mtl of surface
  * properties). Reads with the core reader (vtkVLF/core/ObjScene.h: n-gons fan-triangulated,
  * negative indices, mtllib/usemtl, Kd/Ks/Ke/Ka/Ns) and outputs triangles with the cell arrays
  * "Diffuse", "Specular" (perfect specular), "Emission" (3 floats each) and "MaterialId", field

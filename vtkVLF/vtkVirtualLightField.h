@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkVirtualLightField
- * @brief   propagates a scene's light into a virtual light field (seed 002 §2.4)
+ * @brief   propagates a scene's light into a virtual light field (Wither 2005 §2.4)
  *
  * Input: a scene as vtkPolyData with the material cell arrays of vtkTriangleSceneConverter
  * ("Diffuse", "Specular", "Emission", "MaterialId"), e.g. from vtkCornellBoxSource or
@@ -11,7 +11,7 @@
  *
  * Output: the scene's triangles (world coordinates, material arrays kept) with the diffuse
  * radiance leaving each surface -- the per-surface total diffuse textures, the walkthrough's
- * progressive mode (seed §2.4.2.2.3) -- as cell data "Radiance" (mean over the triangle's corners
+ * progressive mode (Wither 2005 §2.4.2.2.3) -- as cell data "Radiance" (mean over the triangle's corners
  * and centre) and point data "Radiance" (at each vertex), 3 components, linear radiance.
  *
  * Memory is estimated before anything is allocated; above MemoryBudget the filter fails with a
@@ -95,7 +95,7 @@ public:
   const mesolight::vlf::LightField* GetLightField() const;
 
   /**
-   * Irradiance at a world point with a unit normal, gathered from the field (seed §3.6).
+   * Irradiance at a world point with a unit normal, gathered from the field (Wither 2005 §3.6).
    * False before a successful update.
    */
   bool ComputeIrradiance(const double point[3], const double normal[3], double irradiance[3]) const;

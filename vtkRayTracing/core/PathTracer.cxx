@@ -2,7 +2,7 @@
 
 #include "MathConstants.h"
 #include "OrthonormalBasis.h"
-#include "core/EnvironmentMaps.h" // the lat-long lookup (MapUVFromDirection)
+#include "EnvironmentMaps.h" // the lat-long lookup (MapUVFromDirection)
 
 #include <glm/geometric.hpp>
 
@@ -58,7 +58,7 @@ glm::vec3 EnvironmentLight::Radiance(const glm::vec3& d) const
   {
     return glm::vec3(0.0f);
   }
-  // The lat-long lookup of filters/core/EnvironmentMaps (as its ResampleLatLong does it).
+  // The lat-long lookup of filters/Lighting/core/EnvironmentMaps (as its ResampleLatLong does it).
   const glm::vec3 m = this->WorldToMap * d;
   const double direction[3] = { m.x, m.y, m.z };
   double u = 0.0, v = 0.0;

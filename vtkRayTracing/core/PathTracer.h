@@ -54,7 +54,7 @@ struct PathTracerSettings
   int TileSize = 16;  // pixels per tile side
 };
 
-// A lat-long environment (filters/core/EnvironmentMaps.h conventions, +Z up in map space),
+// A lat-long environment (filters/Lighting/core/EnvironmentMaps.h conventions, +Z up in map space),
 // radiance arriving from infinitely far away in direction -d for the map direction d.
 struct EnvironmentLight
 {

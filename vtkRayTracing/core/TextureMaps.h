@@ -1,4 +1,4 @@
-// Texture maps of the ray tracer (seed 004 §1): RGB float images looked up at texture
+// Texture maps of the ray tracer (Ahern 1999 §1): RGB float images looked up at texture
 // coordinates with repeat wrapping, nearest or bilinear; sphere texture coordinates from an
 // axis and a meridian; a tangent frame from texture-coordinate derivatives for bump mapping.
 #ifndef mesolight_TextureMaps_h
@@ -23,7 +23,7 @@ enum class TextureFilter
 // centre at (i + 0.5, j + 0.5); coordinates repeat outside [0, 1). An empty image reads white.
 glm::vec3 SampleTexture(const RgbImage& image, glm::vec2 st, TextureFilter filter);
 
-// Texture coordinates of a point on a sphere (seed 004 §1): t = angle from the axis / pi
+// Texture coordinates of a point on a sphere (Ahern 1999 §1): t = angle from the axis / pi
 // (0 at the pole the axis points to), s = angle around the axis from the meridian / (2 pi),
 // counter-clockwise seen from the axis' tip, in [0, 1). axis and meridian need not be unit or
 // orthogonal (the meridian is projected onto the equator plane).
@@ -49,10 +49,10 @@ TangentFrame SphereTangentFrame(
   const glm::vec3& unitNormal, const glm::vec3& axis, const glm::vec3& meridian);
 
 // Any orthonormal frame around N without a fixed reference axis (Duff et al., JCGT 2017): no
-// singularity where N crosses a coordinate axis (the seed's [1 0 0] x N has one).
+// singularity where N crosses a coordinate axis (Ahern's [1 0 0] x N has one).
 TangentFrame FrameAroundNormal(const glm::vec3& unitNormal);
 
-// The bump-mapped normal (seed 004 §1): the map's red and green, mapped from [0, 1] to
+// The bump-mapped normal (Ahern 1999 §1): the map's red and green, mapped from [0, 1] to
 // [-scale, scale] (0.5 = no tilt), tilt N toward T and B: N' = normalize(N + r T + g B).
 glm::vec3 BumpedNormal(const glm::vec3& unitNormal, const TangentFrame& frame, const glm::vec3& bump, float scale);
 

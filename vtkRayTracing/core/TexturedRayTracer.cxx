@@ -277,7 +277,7 @@ glm::vec3 TexturedRayTracer::ReflectedColour(
     ++counts.Secondary;
     return this->Trace(ray, depth + 1, rng, counts);
   }
-  // Seed 004 §2: rays D = R + s1 S + s2 T with s1, s2 uniform in [-roughness, roughness],
+  // Ahern 1999 §2: rays D = R + s1 S + s2 T with s1, s2 uniform in [-roughness, roughness],
   // weighted linearly by their angle to R (a cone), averaged. The frame around R has no fixed
   // reference axis. Deeper reflections take one such ray.
   const TangentFrame frame = FrameAroundNormal(mirror);
@@ -459,7 +459,7 @@ RgbImage TexturedRayTracer::Render(const PinholeCamera& camera, int width, int h
     out[1] = c.y;
     out[2] = c.z;
   };
-  // Progressive refinement (seed 004 §4): the pixel at the corner of each block of the current
+  // Progressive refinement (Ahern 1999 §4): the pixel at the corner of each block of the current
   // level is traced and fills its block; a pixel traced at a coarser level is never traced
   // again. Without it, one level of block size 1.
   int block = 1;
@@ -510,7 +510,7 @@ RgbImage TexturedRayTracer::Render(const PinholeCamera& camera, int width, int h
   }
   if (this->Parameters.AdaptiveSupersampling)
   {
-    // Seed 004 §3: pixels differing from a neighbour get a regular 3 x 3 grid of rays; the
+    // Ahern 1999 §3: pixels differing from a neighbour get a regular 3 x 3 grid of rays; the
     // centre ray is the pixel's first sample, reused.
     const std::vector<std::uint8_t> edges = EdgePixels(image, this->Parameters.AdaptiveThreshold);
     const bool finished = ForEachTile(width, height, this->Parameters.TileSize, this->Parameters.Threads,

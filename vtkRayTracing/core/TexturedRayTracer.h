@@ -1,9 +1,9 @@
-// TexturedRayTracer: the ray tracer of seed 004 on Embree (issue 6, items 1-4). Phong shading
+// TexturedRayTracer: the ray tracer of Ahern 1999 on Embree (issue 6, items 1-4). Phong shading
 // of triangles and analytic spheres lit by directional and positional (spot) lights with hard
 // shadows; every material channel may come from a texture map: diffuse colour, specular colour
-// (which is also the mirror reflectivity, seed 004 §1), ambient colour, shininess, bump (normal
+// (which is also the mirror reflectivity, Ahern 1999 §1), ambient colour, shininess, bump (normal
 // tilt) and roughness. Reflections recurse to a depth limit; rough surfaces reflect by
-// distributed rays around the mirror direction with conical weights (seed 004 §2). Adaptive
+// distributed rays around the mirror direction with conical weights (Ahern 1999 §2). Adaptive
 // supersampling (3 x 3 samples where a pixel differs from a neighbour, §3) and progressive
 // refinement (1 ray, 2 x 2, 4 x 4, ... blocks, no pixel traced twice, §4) are options.
 //

@@ -14,9 +14,9 @@
 namespace mesolight
 {
 
-// Wavefront MTL terms (seed 002 §2.1 uses Kd, Ks and emission): diffuse reflectance,
+// Wavefront MTL terms (Wither 2005 §2.1 uses Kd, Ks and emission): diffuse reflectance,
 // perfect-specular reflectance, emitted radiance. Glossy terms are for the ray tracer
-// (seed 004 §1): Phong shininess and a roughness in [0,1] that spreads reflected rays.
+// (Ahern 1999 §1): Phong shininess and a roughness in [0,1] that spreads reflected rays.
 struct SceneMaterial
 {
   std::string Name;
@@ -79,7 +79,7 @@ std::size_t RemoveDegenerateTriangles(TriangleScene& scene, float minimumArea = 
 bool SceneBounds(const TriangleScene& scene, glm::vec3& lower, glm::vec3& upper);
 
 // Translates and scales uniformly so the bounding sphere of the bounding box is the unit sphere
-// centred at the origin (seed 002 §2.4 assumes the scene inside the unit sphere). Returns the
+// centred at the origin (Wither 2005 §2.4 assumes the scene inside the unit sphere). Returns the
 // scale applied (1 for an empty scene). Emission is radiance, so it is not rescaled.
 float NormalizeToUnitSphere(TriangleScene& scene);
 

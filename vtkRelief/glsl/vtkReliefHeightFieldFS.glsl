@@ -1,6 +1,6 @@
 // Mesolight relief: height-field access shared by every method.
 //
-// Relief texture (seed 000, §4.1): tangent-space normal packed as (n+1)/2 in RGB, depth in A with
+// Relief texture (Méndez Fernández's thesis, §4.1): tangent-space normal packed as (n+1)/2 in RGB, depth in A with
 // 0 = the mesh surface and 1 = the deepest point. Texture space is (u, v, depth). A cone-packed
 // texture (vtkConeMapFilter, ML_CONE_PACKED) keeps the normal's x, y in RG and the cone ratio
 // (horizontal radius in texture widths per unit of depth) in B, as in the relief thesis.

@@ -1,4 +1,4 @@
-// Mesolight relief: an image-based light set (median-cut lights of an HDR environment, seed 000
+// Mesolight relief: an image-based light set (median-cut lights of an HDR environment, Méndez Fernández's thesis
 // §5), each light shading and self-shadowing the height field, which gives soft shadows.
 //
 // The light texture is N x 2: row 0 the unit directions toward the lights (world coordinates)

@@ -1,4 +1,4 @@
-// Mesolight relief: the march skeleton, written once for every method (seed 000, §4.1-4.2).
+// Mesolight relief: the march skeleton, written once for every method (Méndez Fernández's thesis, §4.1-4.2).
 //
 // A ray through the height field in texture space is p(t) = origin + t * span, t in [0, 1], with
 // p.z the depth of the ray. A view ray enters at the surface (origin.z = 0) and span.z = 1; a
@@ -54,7 +54,7 @@ float mlBinaryRefine(vec3 origin, vec3 span, float tAbove, float tBelow, int ste
   return 0.5 * (tAbove + tBelow);
 }
 
-// Interval mapping (Risser et al. 2006; seed eq. 3) and the secant method: intersect the ray with
+// Interval mapping (Risser et al. 2006; Méndez Fernández's thesis, eq. 3) and the secant method: intersect the ray with
 // the straight line through the height field at the bracket's ends, keep the half that still
 // brackets the crossing, repeat. One step of it is parallax occlusion mapping's refinement.
 float mlIntervalRefine(vec3 origin, vec3 span, float tAbove, float tBelow, int steps)
@@ -85,7 +85,7 @@ float mlIntervalRefine(vec3 origin, vec3 span, float tAbove, float tBelow, int s
   return t;
 }
 
-// Parallax with slope information (McGuire & McGuire 2005; seed §4.1.1 d): intersect the ray
+// Parallax with slope information (McGuire & McGuire 2005; Méndez Fernández's thesis §4.1.1 d): intersect the ray
 // with the tangent plane of the height field at the current estimate. Repeated, it is iterative
 // parallax mapping (Premecz 2006). Unsafe: it may converge to any intersection.
 float mlSlopeStep(vec3 origin, vec3 span, float t)
@@ -177,7 +177,7 @@ float mlTraceView(vec3 origin, vec3 span)
 #endif
 }
 
-// Hard self-shadow test (seed 000, §4.3): march from where the light ray enters the surface down
+// Hard self-shadow test (Méndez Fernández's thesis, §4.3): march from where the light ray enters the surface down
 // to the hit point; the hit is shadowed when the ray passes below the height field before it.
 // The work is proportional to the depth travelled, so shallow hits cost less; cone maps and the
 // min-depth pyramid skip empty space as they do for view rays.

@@ -1,8 +1,8 @@
-// DirectionSet: the directions of the virtual light field's parallel subfields (seed 002 §2.4.1.1),
+// DirectionSet: the directions of the virtual light field's parallel subfields (Wither 2005 §2.4.1.1),
 // uniformly spread over the upper hemisphere by triangular subdivision, with constant-time
-// nearest-direction and three-direction interpolation queries (seed 002 §2.4.1.3, §3.6).
+// nearest-direction and three-direction interpolation queries (Wither 2005 §2.4.1.3, §3.6).
 //
-// Construction. The seed subdivides a regular tetrahedron after Slater, "Constant time queries on
+// Construction. Wither subdivides a regular tetrahedron after Slater, "Constant time queries on
 // uniformly distributed points on a hemisphere" (JGT 7(1), 2002), and reports ~60% variation in
 // solid angle. Here the upper half of a regularly subdivided octahedron is used: the lattice points
 // (i, j), |i| + |j| <= n, of the diamond |x| + |y| <= 1 (Listing 6's midpoint subdivision of the

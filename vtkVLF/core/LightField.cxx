@@ -452,7 +452,7 @@ std::unique_ptr<LightField> LightField::Build(const TriangleScene& scene,
 
   // Shooting capacity of each texel (Propagation.h): the flux a unit diffuse radiance there
   // sends along all lines that leave it, sum over crossings of w_texel * cellArea * weight_k.
-  // It is the discrete counterpart of pi * texelArea (seed §3.6.3's total projected cell area).
+  // It is the discrete counterpart of pi * texelArea (Wither 2005 §3.6.3's total projected cell area).
   const std::size_t texels = field->TexelTotal;
   const std::size_t blocks = DefaultBlockCount(count);
   std::vector<std::vector<double>> partial(blocks, std::vector<double>(texels, 0.0));

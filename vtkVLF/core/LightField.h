@@ -1,4 +1,4 @@
-// LightField: the virtual light field's data structure (seed 002 §2.4.1), in plain C++ (GLM, no
+// LightField: the virtual light field's data structure (Wither 2005 §2.4.1), in plain C++ (GLM, no
 // VTK types).
 //
 // For each direction d_k of a DirectionSet a parallel subfield (PSF) of N x N lines parallel to
@@ -14,12 +14,12 @@
 // scenes never show back sides to light).
 //
 // Per tile the list of surfaces its lines cross, sorted by surface id (lookups binary-search it,
-// seed §2.4.2.2.2). Per surface per tile a radiance map of tileSide x tileSide cells: the
-// crossing's depth along the line (negative when the cell's line misses the surface: the seed's
+// Wither 2005 §2.4.2.2.2). Per surface per tile a radiance map of tileSide x tileSide cells: the
+// crossing's depth along the line (negative when the cell's line misses the surface: Wither's
 // visibility map), the radiance the surface has sent along the line so far (RGB), and, when the
 // scene has mirror surfaces, the perfect-specular radiance received but not yet sent.
 //
-// Per surface a total diffuse radiance texture for walkthrough (seed §2.4.2.2.3, progressive
+// Per surface a total diffuse radiance texture for walkthrough (Wither 2005 §2.4.2.2.3, progressive
 // mode): texels on the surface's plane in its own frame x = Origin + s AxisU + t AxisV, spanning
 // the bounding rectangle of its triangles; texel centres at ((a + 1/2) TexelU, (b + 1/2) TexelV).
 // Values are read and written with clamped bilinear weights. Beside the total, each texel keeps

@@ -1,16 +1,16 @@
-// Lookup: reading a propagated LightField (seed 002 §2.4.1.3, §3.6). All points and directions
+// Lookup: reading a propagated LightField (Wither 2005 §2.4.1.3, §3.6). All points and directions
 // are in the light field's unit-sphere coordinates (LightField::Scene()).
 //
 // Radiance leaving a surface point p in direction w: the subfield of the nearest direction to w
 // (DirectionSet::Nearest), the cell p projects to, the surface's radiance map there -- either
 // that one cell, or bilinear over the 2 x 2 cells of p's 8-neighbourhood that surround it (the
-// seed's 8-neighbour interpolation; cells whose line misses the surface are left out and the
+// 8-neighbour interpolation of Wither 2005; cells whose line misses the surface are left out and the
 // weights renormalised). DirectionInterpolation::Spherical does this for the three directions
 // of the subdivision triangle around w and blends them with DirectionSet::Interpolate's
-// spherical weights (the seed's RENDER_RAYTRACE mode).
+// spherical weights (Wither's RENDER_RAYTRACE mode).
 //
 // Irradiance at any point p with normal n (a static surface point, or a point of an object
-// that is not part of the field: the movable-object query of seed §3.6): for every direction
+// that is not part of the field: the movable-object query of Wither 2005 §3.6): for every direction
 // d_k, the radiance arriving at p from the side of n along the line of subfield k through p
 // (the nearest crossing beyond p that faces p; a back side or nothing gives 0; neighbouring
 // lines whose segment at p's depth is not open space -- behind a wall near p -- are left out
@@ -66,7 +66,7 @@ public:
     DirectionInterpolation directions = DirectionInterpolation::Spherical) const;
 
   // Diffuse radiance leaving the surface at p: its total diffuse texture, bilinear (the
-  // walkthrough's progressive mode, seed §2.4.2.2.3).
+  // walkthrough's progressive mode, Wither 2005 §2.4.2.2.3).
   glm::vec3 DiffuseRadiance(std::uint32_t surface, const glm::vec3& p) const;
 
   // Radiance arriving at p along subfield k's lines from the side `sense` (+1: from greater

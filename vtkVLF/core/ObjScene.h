@@ -1,9 +1,9 @@
-// Wavefront OBJ + MTL scenes for the virtual light field (seed 002 §2.4.2.1: the propagator reads
+// Wavefront OBJ + MTL scenes for the virtual light field (Wither 2005 §2.4.2.1: the propagator reads
 // a scene as *.obj with a *.mtl of surface properties). Reads into the shared TriangleScene and
 // writes one back (the built-in Cornell box as an example of the format).
 //
 // Read: v, vt, vn, f (n-gons fan-triangulated; negative indices count back from the last
-// definition), usemtl, mtllib; MTL newmtl, Kd (diffuse), Ks (perfect specular, seed 002 §2.1),
+// definition), usemtl, mtllib; MTL newmtl, Kd (diffuse), Ks (perfect specular, Wither 2005 §2.1),
 // Ke (emission), Ka, Ns, and the names of map_* textures (recorded, not loaded). Other statements
 // (o, g, s, illum, d, ...) are ignored. Errors throw ObjSceneError with "file:line: what";
 // a missing MTL file or material is a warning and gets a default grey material.

@@ -103,7 +103,7 @@ void ShootSubfield(LightField& field, std::size_t k, BlockState& state)
         {
           continue;
         }
-        // Perfect mirror: into the nearest direction of the mirrored one (seed §2.4.1.2).
+        // Perfect mirror: into the nearest direction of the mirrored one (Wither 2005 §2.4.1.2).
         const glm::vec3& normal = field.Surfaces()[receiver.Surface].Normal;
         const glm::vec3 travel = static_cast<float>(sense) * f.Direction;
         const glm::vec3 mirrored = travel - 2.0f * glm::dot(travel, normal) * normal;

@@ -1,5 +1,5 @@
 // Propagation: iterative shooting of diffuse and perfect-specular radiance along the parallel
-// subfields of a LightField (seed 002 §2.4.1.2), progressive-radiosity style.
+// subfields of a LightField (Wither 2005 §2.4.1.2), progressive-radiosity style.
 //
 // One iteration, for every subfield k and every line: each crossing whose front faces along the
 // line sends its unshot radiance (the unshot diffuse texture sampled bilinearly at the crossing,
@@ -16,7 +16,7 @@
 // After all subfields each texel turns its reflected flux into unshot diffuse radiance by
 // dividing by its shooting capacity C_t = sum over all lines leaving the texel of
 // (bilinear weight) h^2 w_k, the flux a unit radiance there sends in the next iteration. C_t is
-// the discrete counterpart of pi * (texel area) -- the seed's "total projected unit cell area"
+// the discrete counterpart of pi * (texel area) -- Wither's "total projected unit cell area"
 // normalisation (§3.6.3): the cell's projected area on the surface is the cosine term, the
 // solid angle weights the directions (§3.6.2). With it the flux sent next iteration equals the
 // reflected flux exactly, so every iteration conserves energy (IterationEnergy records it).

@@ -1,4 +1,4 @@
-// Snapshot: a light field on disk after each propagation iteration (seed 002 §2.4.2.1: the
+// Snapshot: a light field on disk after each propagation iteration (Wither 2005 §2.4.2.1: the
 // propagator writes its state after every iteration and can continue from it).
 //
 // Format (little-endian, version 1): a 48-byte header -- magic "MLVLFSNP", version, byte-order

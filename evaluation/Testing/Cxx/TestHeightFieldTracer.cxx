@@ -3,6 +3,7 @@
 
 #include "HeightFieldTracer.h"
 
+#include "MathConstants.h"
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -24,7 +25,6 @@ using mesolight::IntersectFirstBruteForce;
 using mesolight::RayHit;
 using mesolight::Visible;
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
@@ -244,8 +244,8 @@ TEST(IntersectFirst, FlatMapHitsAtTheConstantDepth)
   {
     const glm::dvec2 start = DrawUV(rng, uv, uv);
     const glm::dvec3 origin(start, d0(rng));
-    const double theta = unit(rng) * 89.0 * kPi / 180.0;
-    const glm::dvec3 dir = DownDirection(theta, unit(rng) * 2 * kPi);
+    const double theta = unit(rng) * 89.0 * mesolight::Pi<double> / 180.0;
+    const glm::dvec3 dir = DownDirection(theta, unit(rng) * 2 * mesolight::Pi<double>);
     const double tExpected = (c - origin.z) / dir.z;
     const double tMax = 2.0 * tExpected + 1.0;
     const std::optional<RayHit> hit = IntersectFirst(hf, origin, dir, tMax);
@@ -304,8 +304,8 @@ TEST(IntersectFirst, AgreesWithBruteForceOnRandomMapsForDownwardRays)
   {
     const glm::dvec3 origin(DrawUV(rng, uv, uv), 0.0);
     // Up to 89 degrees from vertical: the grazing rays are the hard ones.
-    const double theta = unit(rng) * 89.0 * kPi / 180.0;
-    const glm::dvec3 dir = DownDirection(theta, unit(rng) * 2 * kPi);
+    const double theta = unit(rng) * 89.0 * mesolight::Pi<double> / 180.0;
+    const glm::dvec3 dir = DownDirection(theta, unit(rng) * 2 * mesolight::Pi<double>);
     const double tMax = 1.05 / dir.z; // reaches below the deepest sample: must hit
     ASSERT_TRUE(IntersectFirst(hf, origin, dir, tMax));
     agree += CompareWithOracle(hf, origin, dir, tMax, 10000);
@@ -329,8 +329,8 @@ TEST(IntersectFirst, AgreesWithBruteForceForUpwardAndHorizontalRays)
     const double v = uv(rng);
     const glm::dvec3 origin(u, v, hf.DepthAt(u, v) - 0.01 - 0.3 * unit(rng));
     // Elevation above the horizontal in [0, 60] degrees; every 4th ray exactly horizontal.
-    const double elevation = n % 4 == 0 ? 0.0 : unit(rng) * 60.0 * kPi / 180.0;
-    const double phi = unit(rng) * 2 * kPi;
+    const double elevation = n % 4 == 0 ? 0.0 : unit(rng) * 60.0 * mesolight::Pi<double> / 180.0;
+    const double phi = unit(rng) * 2 * mesolight::Pi<double>;
     const glm::dvec3 dir(std::cos(elevation) * std::cos(phi), std::cos(elevation) * std::sin(phi),
       -std::sin(elevation));
     if (n % 4 == 0)
@@ -470,7 +470,7 @@ TEST(Visible, FloorInFrontOfAWall)
   const HeightField hf = WallField();
   const glm::dvec3 floorPoint(0.4, 0.5, 1.0);
   ASSERT_EQ(hf.DepthAt(floorPoint.x, floorPoint.y), 1.0);
-  const double low = 20.0 * kPi / 180.0;
+  const double low = 20.0 * mesolight::Pi<double> / 180.0;
   // Low light behind the wall: the ray rises only 0.36 in d per unit u and meets the wall face.
   EXPECT_FALSE(Visible(hf, floorPoint, { std::cos(low), 0.0, -std::sin(low) }));
   // Same elevation, light in front (away from the wall): nothing in the way.
@@ -522,8 +522,8 @@ TEST(Visible, AgreesWithBruteForceShadowRays)
   {
     const glm::dvec3 point(DrawUV(rng, uv, uv), 0.0);
     const glm::dvec3 onSurface(point.x, point.y, hf.DepthAt(point.x, point.y));
-    const double elevation = (1.0 + 80.0 * unit(rng)) * kPi / 180.0;
-    const double phi = unit(rng) * 2 * kPi;
+    const double elevation = (1.0 + 80.0 * unit(rng)) * mesolight::Pi<double> / 180.0;
+    const double phi = unit(rng) * 2 * mesolight::Pi<double>;
     const glm::dvec3 toLight(std::cos(elevation) * std::cos(phi),
       std::cos(elevation) * std::sin(phi), -std::sin(elevation));
     const bool visible = Visible(hf, onSurface, toLight, epsilon);

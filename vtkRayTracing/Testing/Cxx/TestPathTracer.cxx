@@ -5,7 +5,7 @@
 // must fail the same checks); determinism; bad input.
 #include "EmbreeScene.h"
 #include "MathConstants.h"
-#include "core/EnvironmentMaps.h"
+#include "EnvironmentMaps.h"
 #include "PathTracer.h"
 #include "TriangleScene.h"
 

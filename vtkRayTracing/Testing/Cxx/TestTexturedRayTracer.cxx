@@ -1,7 +1,7 @@
-// Tests of the seed-004 ray tracer core against analytic answers: Lambert shading of a sphere
+// Tests of the Ahern 1999 ray tracer core against analytic answers: Lambert shading of a sphere
 // under one directional light, shadows, mirrors and the recursion limit, glossy reflection of an
 // edge, bilinear vs nearest texture lookups, bump maps with a known slope, tangent frames on a
-// sphere (continuous where the seed's [1 0 0] x N breaks), adaptive supersampling and
+// sphere (continuous where Ahern's [1 0 0] x N breaks), adaptive supersampling and
 // progressive refinement (rays counted: no pixel traced twice), and bad input.
 #include "MathConstants.h"
 #include "TexturedRayTracer.h"
@@ -356,7 +356,7 @@ TEST(TextureMaps, SphereTangentFrameIsStableAndFollowsTheCoordinates)
     }
   }
   EXPECT_EQ(checked, 59 * 120);
-  // Negative: the seed's frame S = [1 0 0] x N collapses where N crosses the x axis, where the
+  // Negative: Ahern's frame S = [1 0 0] x N collapses where N crosses the x axis, where the
   // sphere frame (and the normal-only fallback) stays orthonormal.
   const glm::vec3 onXAxis(1.0f, 0.0f, 0.0f);
   EXPECT_LT(glm::length(glm::cross(glm::vec3(1, 0, 0), onXAxis)), 1e-6f);

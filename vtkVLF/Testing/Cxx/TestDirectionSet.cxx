@@ -1,4 +1,4 @@
-// Tests of the light field's direction set (seed 002 §2.4.1.1): counts, constant-time nearest
+// Tests of the light field's direction set (Wither 2005 §2.4.1.1): counts, constant-time nearest
 // direction against brute force, interpolation weights, solid angles against Monte Carlo and
 // analytic integrals. Prints the solid-angle spread and lookup timings (docs/vlf.md).
 #include "DirectionSet.h"

@@ -1,4 +1,4 @@
-// Tests of the light field structure (seed 002 §2.4.1): surface grouping, every line's crossings
+// Tests of the light field structure (Wither 2005 §2.4.1): surface grouping, every line's crossings
 // against brute-force intersection with all triangles, the memory estimate as an upper bound of
 // what is allocated, refusals (budget, bad settings, no emitter), lookups on the tile lists.
 #include "LightField.h"

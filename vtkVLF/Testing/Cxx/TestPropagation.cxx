@@ -1,4 +1,4 @@
-// Accuracy of propagation and lookup against analytic answers (seed 002 §2.4.1.2, §3.6):
+// Accuracy of propagation and lookup against analytic answers (Wither 2005 §2.4.1.2, §3.6):
 //  - furnace: a closed cube with uniform emission Le and albedo rho everywhere has radiance
 //    Le (1 + rho + ... + rho^K) after K iterations, Le / (1 - rho) in the limit; the textures,
 //    the radiance maps (radiance leaving in any direction) and the gathered irradiance agree;

@@ -1,4 +1,4 @@
-// Snapshots (seed 002 §2.4.2.1): exact round trip, resuming gives the same field as running
+// Snapshots (Wither 2005 §2.4.2.1): exact round trip, resuming gives the same field as running
 // straight through, atomic replacement, and clear errors (never a crash) for foreign, truncated
 // and corrupt files.
 #include "Propagation.h"

@@ -1,0 +1,80 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @class   vtkOIIOImageReader
+ * @brief   read any image format supported by OpenImageIO into vtkImageData
+ *
+ * vtkOIIOImageReader reads 8/16-bit PNG and TIFF, OpenEXR, Radiance HDR, JPEG and every
+ * other format OpenImageIO supports. Pixel types: uint8 -> VTK_UNSIGNED_CHAR,
+ * uint16 -> VTK_UNSIGNED_SHORT, anything else (half, float, double, other integers)
+ * -> VTK_FLOAT (OpenImageIO's conversion: integers become [0,1]). All channels are kept
+ * (1 to 4; only the first 4 of more, with a warning). Alpha is read as stored, never
+ * premultiplied, since Mesolight's relief textures keep the depth in A.
+ *
+ * Files store the top row first; VTK images start with the bottom row, so rows are
+ * flipped: file row 0 becomes image row H-1. The output has origin (0,0,0), spacing
+ * (1,1,1), extent [0, W-1, 0, H-1, 0, 0] and point scalars named "ImageScalars".
+ *
+ * Failures report vtkErrorMacro messages with the file name and OpenImageIO's error text,
+ * set ErrorCode (vtkErrorCode::NoFileNameError, FileNotFoundError, CannotOpenFileError,
+ * UnrecognizedFileTypeError, FileFormatError) and produce an empty image.
+ */
+#ifndef vtkOIIOImageReader_h
+#define vtkOIIOImageReader_h
+
+#include "MesolightImageIOModule.h" // For export macro
+#include "vtkImageAlgorithm.h"
+
+#include <string> // For std::string
+
+class MESOLIGHTIMAGEIO_EXPORT vtkOIIOImageReader : public vtkImageAlgorithm
+{
+public:
+  static vtkOIIOImageReader* New();
+  vtkTypeMacro(vtkOIIOImageReader, vtkImageAlgorithm)
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * Name of the file to read.
+   */
+  vtkSetStringMacro(FileName);
+  vtkGetStringMacro(FileName);
+  ///@}
+
+  /**
+   * True if fileName is an existing regular file that OpenImageIO can open as an image.
+   */
+  static bool CanReadFile(const char* fileName);
+
+  ///@{
+  /**
+   * Information about the last file read (valid after UpdateInformation()): width, height,
+   * number of channels in the file and the name of the OpenImageIO format ("png", ...).
+   */
+  vtkGetVector2Macro(ImageSize, int);
+  vtkGetMacro(NumberOfChannelsInFile, int);
+  const char* GetFormatName() const { return this->FormatName.c_str(); }
+  ///@}
+
+protected:
+  vtkOIIOImageReader();
+  ~vtkOIIOImageReader() override;
+
+  int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  char* FileName = nullptr;
+  int ImageSize[2] = { 0, 0 };
+  int NumberOfChannelsInFile = 0;
+  std::string FormatName;
+
+private:
+  vtkOIIOImageReader(const vtkOIIOImageReader&) = delete;
+  void operator=(const vtkOIIOImageReader&) = delete;
+
+  struct Header;
+  bool ReadHeader(Header& header);
+  static bool ProgressCallback(void* self, float portionDone);
+};
+
+#endif

@@ -1,0 +1,353 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "vtkMedianCutLights.h"
+#include "vtkWholeExtentRequest.h"
+
+#include "EnvironmentMaps.h"
+#include "MedianCut.h"
+#include "ScalarConversion.h"
+
+#include "vtkAlgorithm.h"
+#include "vtkCellArray.h"
+#include "vtkDataArray.h"
+#include "vtkDataObject.h"
+#include "vtkDataSetAttributes.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSMPTools.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <limits>
+#include <vector>
+
+vtkStandardNewMacro(vtkMedianCutLights);
+
+namespace
+{
+/// nComp-component tuples of type T -> RGB floats (radiance).
+template <typename T>
+void ToRgb(const T* data, vtkIdType n, int nComp, float* out)
+{
+  vtkSMPTools::For(0, n, [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType k = begin; k < end; ++k)
+    {
+      const T* t = data + k * nComp;
+      for (int c = 0; c < 3; ++c)
+      {
+        out[3 * k + c] = static_cast<float>(mesolight::ToUnitValue(t[c]));
+      }
+    }
+  });
+}
+}
+
+//------------------------------------------------------------------------------
+vtkMedianCutLights::vtkMedianCutLights()
+{
+  this->SetNumberOfOutputPorts(2);
+  this->SetInputArrayToProcess(
+    0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, vtkDataSetAttributes::SCALARS);
+}
+
+//------------------------------------------------------------------------------
+vtkImageData* vtkMedianCutLights::GetLightTexture()
+{
+  return vtkImageData::SafeDownCast(this->GetOutputDataObject(1));
+}
+
+//------------------------------------------------------------------------------
+int vtkMedianCutLights::FillInputPortInformation(int, vtkInformation* info)
+{
+  // Optional so that a missing input gets our own, explicit error message.
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkImageData");
+  info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkMedianCutLights::FillOutputPortInformation(int port, vtkInformation* info)
+{
+  info->Set(vtkDataObject::DATA_TYPE_NAME(), port == 1 ? "vtkImageData" : "vtkPolyData");
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkMedianCutLights::RequestInformation(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  if (inputVector[0]->GetNumberOfInformationObjects() < 1)
+  {
+    vtkErrorMacro("No input image: connect a lat-long environment map with "
+                  "SetInputConnection() or SetInputData().");
+    return 0;
+  }
+  const int n = std::max(1, this->NumberOfLights);
+  const int extent[6] = { 0, n - 1, 0, 1, 0, 0 };
+  const double origin[3] = { 0.0, 0.0, 0.0 };
+  const double spacing[3] = { 1.0, 1.0, 1.0 };
+  vtkInformation* texInfo = outputVector->GetInformationObject(1);
+  texInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent, 6);
+  texInfo->Set(vtkDataObject::ORIGIN(), origin, 3);
+  texInfo->Set(vtkDataObject::SPACING(), spacing, 3);
+  vtkDataObject::SetPointDataActiveScalarInfo(texInfo, VTK_FLOAT, 4);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkMedianCutLights::RequestUpdateExtent(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
+{
+  // The median cut needs the whole map.
+  mesolight::RequestWholeInputExtent(inputVector);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkMedianCutLights::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkImageData* input = vtkImageData::GetData(inputVector[0], 0);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  vtkImageData* texture = vtkImageData::GetData(outputVector, 1);
+  if (!output || !texture)
+  {
+    vtkErrorMacro("Missing output data objects.");
+    return 0;
+  }
+  output->Initialize();
+  texture->Initialize();
+  if (!input)
+  {
+    vtkErrorMacro("No input image: connect a lat-long environment map with "
+                  "SetInputConnection() or SetInputData().");
+    return 0;
+  }
+
+  int dims[3];
+  input->GetDimensions(dims);
+  if (input->GetNumberOfPoints() < 1 || dims[0] < 1 || dims[1] < 1 || dims[2] != 1)
+  {
+    vtkErrorMacro("The input must be a non-empty 2D lat-long image in the XY plane; got "
+                  "dimensions "
+      << dims[0] << " x " << dims[1] << " x " << dims[2] << ".");
+    return 0;
+  }
+  const int w = dims[0];
+  const int h = dims[1];
+  const vtkIdType n = input->GetNumberOfPoints();
+  vtkDataArray* scalars = this->GetInputArrayToProcess(0, inputVector);
+  if (!scalars)
+  {
+    vtkErrorMacro("The input image has no point scalars (or no array selected by "
+                  "SetInputArrayToProcess()) to read radiance from.");
+    return 0;
+  }
+  const int nComp = scalars->GetNumberOfComponents();
+  if (nComp < 3 || scalars->GetNumberOfTuples() != n)
+  {
+    vtkErrorMacro("The environment map \""
+      << (scalars->GetName() ? scalars->GetName() : "")
+      << "\" must have 3 or more components (RGB first) and one tuple per pixel; it has "
+      << nComp << " components and " << scalars->GetNumberOfTuples() << " tuples for " << n
+      << " pixels.");
+    return 0;
+  }
+  if (this->NumberOfLights < 1 || this->NumberOfLights > n)
+  {
+    vtkErrorMacro("NumberOfLights must be between 1 and the number of pixels ("
+      << n << "); it is " << this->NumberOfLights << ".");
+    return 0;
+  }
+  if (w != 2 * h)
+  {
+    vtkWarningMacro("The environment map is " << w << " x " << h
+                                              << " pixels, not 2:1; it is still read as a "
+                                                 "lat-long map (360 degrees across, 180 down), "
+                                                 "so its pixels are not square in angle.");
+  }
+
+  // 1. RGB floats; validate.
+  std::vector<float> rgb(static_cast<size_t>(n) * 3);
+  switch (scalars->GetDataType())
+  {
+    vtkTemplateMacro(
+      ToRgb(static_cast<const VTK_TT*>(scalars->GetVoidPointer(0)), n, nComp, rgb.data()));
+    default:
+      vtkErrorMacro("Unsupported input scalar type " << scalars->GetDataTypeAsString() << ".");
+      return 0;
+  }
+  vtkIdType nonFinite = 0;
+  vtkIdType firstNonFinite = -1;
+  vtkIdType negative = 0;
+  vtkIdType firstNegative = -1;
+  for (vtkIdType k = 0; k < 3 * n; ++k)
+  {
+    const float x = rgb[k];
+    if (!std::isfinite(x))
+    {
+      if (nonFinite++ == 0)
+      {
+        firstNonFinite = k / 3;
+      }
+    }
+    else if (x < 0.0f)
+    {
+      if (negative++ == 0)
+      {
+        firstNegative = k / 3;
+      }
+      rgb[k] = 0.0f;
+    }
+  }
+  if (nonFinite > 0)
+  {
+    vtkErrorMacro("The environment map contains "
+      << nonFinite << " NaN or infinite value(s) in " << 3 * n
+      << " RGB values; the first is at pixel (i=" << firstNonFinite % w
+      << ", j=" << firstNonFinite / w
+      << ", VTK row order). Fix the map (e.g. fill holes) before sampling lights.");
+    return 0;
+  }
+  if (negative > 0)
+  {
+    vtkWarningMacro("The environment map contains "
+      << negative << " negative value(s), the first at pixel (i=" << firstNegative % w
+      << ", j=" << firstNegative / w << "); they are clamped to 0.");
+  }
+  if (this->GetAbortExecute())
+  {
+    return 1;
+  }
+  this->UpdateProgress(0.1);
+
+  // 2. Median cut (core/MedianCut.h).
+  mesolight::MedianCutOptions options;
+  options.NumberOfLights = this->NumberOfLights;
+  options.VarianceMinimization = this->VarianceMinimization;
+  options.Progress = mesolight::AlgorithmProgress(this, 0.1, 0.9);
+  std::vector<mesolight::MedianCutLight> lights;
+  std::string error;
+  const mesolight::MedianCutStatus status =
+    mesolight::ComputeMedianCut(rgb.data(), 3, w, h, options, lights, error);
+  if (status == mesolight::MedianCutStatus::Aborted)
+  {
+    return 1;
+  }
+  if (status != mesolight::MedianCutStatus::Ok)
+  {
+    vtkErrorMacro("Median cut failed: " << error << ".");
+    return 0;
+  }
+
+  // 3. Outputs.
+  const vtkIdType count = static_cast<vtkIdType>(lights.size());
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(count);
+  vtkNew<vtkCellArray> verts;
+  vtkNew<vtkFloatArray> irradiance;
+  irradiance->SetName("Irradiance");
+  irradiance->SetNumberOfComponents(3);
+  irradiance->SetNumberOfTuples(count);
+  vtkNew<vtkFloatArray> uv;
+  uv->SetName("MapCoordinates");
+  uv->SetNumberOfComponents(2);
+  uv->SetNumberOfTuples(count);
+  vtkNew<vtkFloatArray> solidAngle;
+  solidAngle->SetName("SolidAngle");
+  solidAngle->SetNumberOfComponents(1);
+  solidAngle->SetNumberOfTuples(count);
+  vtkNew<vtkFloatArray> texels;
+  texels->SetName("Lights");
+  texels->SetNumberOfComponents(4);
+  texels->SetNumberOfTuples(2 * count);
+  for (vtkIdType k = 0; k < count; ++k)
+  {
+    const auto& l = lights[k];
+    points->SetPoint(k, l.Direction);
+    verts->InsertNextCell(1, &k);
+    irradiance->SetTuple3(k, l.Rgb[0], l.Rgb[1], l.Rgb[2]);
+    uv->SetTuple2(k, l.U, l.V);
+    solidAngle->SetValue(k, static_cast<float>(l.SolidAngle));
+    texels->SetTuple4(k, l.Direction[0], l.Direction[1], l.Direction[2], 0.0);
+    texels->SetTuple4(count + k, l.Rgb[0], l.Rgb[1], l.Rgb[2], l.SolidAngle);
+  }
+  output->SetPoints(points);
+  output->SetVerts(verts);
+  output->GetPointData()->AddArray(irradiance);
+  output->GetPointData()->AddArray(uv);
+  output->GetPointData()->AddArray(solidAngle);
+  output->GetPointData()->SetActiveScalars("Irradiance");
+
+  texture->SetExtent(0, static_cast<int>(count) - 1, 0, 1, 0, 0);
+  texture->SetOrigin(0.0, 0.0, 0.0);
+  texture->SetSpacing(1.0, 1.0, 1.0);
+  texture->GetPointData()->SetScalars(texels);
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+bool vtkMedianCutLights::WriteCsv(
+  vtkPolyData* lights, const std::string& fileName, std::string& error)
+{
+  if (!lights || !lights->GetPoints())
+  {
+    error = "no lights to write";
+    return false;
+  }
+  vtkDataArray* irradiance = lights->GetPointData()->GetArray("Irradiance");
+  vtkDataArray* uv = lights->GetPointData()->GetArray("MapCoordinates");
+  const vtkIdType n = lights->GetNumberOfPoints();
+  if (!irradiance || !uv || irradiance->GetNumberOfComponents() != 3 ||
+    uv->GetNumberOfComponents() != 2 || irradiance->GetNumberOfTuples() != n ||
+    uv->GetNumberOfTuples() != n)
+  {
+    error = "the lights lack the \"Irradiance\" (RGB) or \"MapCoordinates\" (u, v) point arrays";
+    return false;
+  }
+  std::ofstream out(fileName);
+  if (!out)
+  {
+    error = "cannot open " + fileName + " for writing";
+    return false;
+  }
+  out << std::setprecision(std::numeric_limits<float>::max_digits10);
+  out << "u,v,x,y,z,r,g,b\n";
+  for (vtkIdType k = 0; k < n; ++k)
+  {
+    double p[3];
+    lights->GetPoint(k, p);
+    const double* t = uv->GetTuple2(k);
+    const double u = t[0];
+    const double v = t[1];
+    const double* c = irradiance->GetTuple3(k);
+    out << u << ',' << v << ',' << p[0] << ',' << p[1] << ',' << p[2] << ',' << c[0] << ','
+        << c[1] << ',' << c[2] << '\n';
+  }
+  out.close();
+  if (!out)
+  {
+    error = "error while writing " + fileName;
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkMedianCutLights::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "NumberOfLights: " << this->NumberOfLights << "\n";
+  os << indent << "VarianceMinimization: " << (this->VarianceMinimization ? "On" : "Off")
+     << "\n";
+}

@@ -1,0 +1,216 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// vtkReliefTextureFilter: conversions, options, and errors on bad input.
+#include "SobelNormals.h"
+#include "vtkProceduralReliefSource.h"
+#include "vtkReliefTextureFilter.h"
+
+#include "MesolightTestUtilities.h"
+
+#include "vtkDataArray.h"
+#include "vtkFieldData.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtkUnsignedShortArray.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <vector>
+
+using mesolight_test::MessageCapture;
+
+namespace
+{
+template <typename ArrayT>
+vtkSmartPointer<vtkImageData> MakeImage(int w, int h, int nComp,
+  const std::vector<typename ArrayT::ValueType>& values)
+{
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(w, h, 1);
+  vtkNew<ArrayT> scalars;
+  scalars->SetNumberOfComponents(nComp);
+  scalars->SetNumberOfTuples(static_cast<vtkIdType>(w) * h);
+  for (size_t k = 0; k < values.size(); ++k)
+  {
+    scalars->SetValue(static_cast<vtkIdType>(k), values[k]);
+  }
+  image->GetPointData()->SetScalars(scalars);
+  return image;
+}
+
+vtkFloatArray* Relief(vtkReliefTextureFilter* filter)
+{
+  return vtkFloatArray::SafeDownCast(filter->GetOutput()->GetPointData()->GetScalars());
+}
+}
+
+TEST(vtkReliefTextureFilter, MatchesCoreAndStoresDepthScale)
+{
+  vtkNew<vtkProceduralReliefSource> source;
+  source->SetPatternToHemisphereTorus();
+  source->SetResolution(200, 150);
+  vtkNew<vtkReliefTextureFilter> filter;
+  filter->SetInputConnection(source->GetOutputPort(0));
+  filter->SetDepthScale(0.2);
+  filter->SetBorderModeToWrap();
+  filter->Update();
+
+  vtkFloatArray* relief = Relief(filter);
+  ASSERT_NE(relief, nullptr);
+  EXPECT_STREQ(relief->GetName(), "Relief");
+  EXPECT_EQ(relief->GetNumberOfComponents(), 4);
+  ASSERT_EQ(relief->GetNumberOfTuples(), 200 * 150);
+  int dims[3];
+  filter->GetOutput()->GetDimensions(dims);
+  EXPECT_EQ(dims[0], 200);
+  EXPECT_EQ(dims[1], 150);
+
+  vtkDataArray* scale = filter->GetOutput()->GetFieldData()->GetArray("MesolightDepthScale");
+  ASSERT_NE(scale, nullptr);
+  EXPECT_EQ(scale->GetDataType(), VTK_FLOAT);
+  EXPECT_EQ(scale->GetNumberOfTuples(), 1);
+  EXPECT_FLOAT_EQ(static_cast<float>(scale->GetComponent(0, 0)), 0.2f);
+
+  // The parallel VTK wrapper gives exactly the serial core result.
+  auto* depth = static_cast<float*>(
+    source->GetDepthOutput()->GetPointData()->GetScalars()->GetVoidPointer(0));
+  std::vector<float> expected(4 * 200 * 150);
+  mesolight::ComputeReliefTexture(depth, 200, 150, 0.2f, mesolight::BorderMode::Wrap, expected.data());
+  EXPECT_TRUE(std::equal(expected.begin(), expected.end(), relief->GetPointer(0)));
+}
+
+TEST(vtkReliefTextureFilter, IntegerInputsAreNormalised)
+{
+  vtkNew<vtkReliefTextureFilter> filter;
+  vtkNew<MessageCapture> capture; // these tiny images warn about 1-texel dimensions
+  capture->Watch(filter);
+  filter->SetInputData(MakeImage<vtkUnsignedCharArray>(2, 1, 1, { 51, 255 }));
+  filter->Update();
+  EXPECT_FLOAT_EQ(Relief(filter)->GetComponent(0, 3), 0.2f);
+  EXPECT_FLOAT_EQ(Relief(filter)->GetComponent(1, 3), 1.f);
+
+  filter->SetInputData(MakeImage<vtkUnsignedShortArray>(2, 1, 1, { 0, 65535 }));
+  filter->Update();
+  EXPECT_FLOAT_EQ(Relief(filter)->GetComponent(0, 3), 0.f);
+  EXPECT_FLOAT_EQ(Relief(filter)->GetComponent(1, 3), 1.f);
+
+  // RGB: luminance 0.2125 R + 0.7154 G + 0.0721 B; 2 components: the first one.
+  filter->SetInputData(MakeImage<vtkUnsignedCharArray>(1, 1, 3, { 255, 0, 0 }));
+  filter->Update();
+  EXPECT_NEAR(Relief(filter)->GetComponent(0, 3), 0.2125, 1e-6);
+  filter->SetInputData(MakeImage<vtkUnsignedCharArray>(1, 1, 2, { 0, 255 }));
+  filter->Update();
+  EXPECT_EQ(Relief(filter)->GetComponent(0, 3), 0.0);
+  EXPECT_TRUE(capture->Errors.empty()) << capture->AllErrors();
+}
+
+TEST(vtkReliefTextureFilter, InvertAndNormalize)
+{
+  vtkNew<vtkReliefTextureFilter> filter;
+  vtkNew<MessageCapture> capture;
+  capture->Watch(filter);
+
+  // Height map: white = high = depth 0.
+  filter->SetInputData(MakeImage<vtkFloatArray>(3, 1, 1, { 0.f, 0.25f, 1.f }));
+  filter->InvertInputOn();
+  filter->Update();
+  EXPECT_FLOAT_EQ(Relief(filter)->GetComponent(0, 3), 1.f);
+  EXPECT_FLOAT_EQ(Relief(filter)->GetComponent(1, 3), 0.75f);
+  EXPECT_FLOAT_EQ(Relief(filter)->GetComponent(2, 3), 0.f);
+  filter->InvertInputOff();
+
+  // Out-of-range floats: an error that points at NormalizeRange.
+  filter->SetInputData(MakeImage<vtkFloatArray>(3, 1, 1, { 10.f, 15.f, 20.f }));
+  filter->Update();
+  EXPECT_TRUE(capture->HasError("NormalizeRange")) << capture->AllErrors();
+  EXPECT_TRUE(capture->HasError("[10, 20]")) << capture->AllErrors();
+  EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), 0);
+
+  capture->Errors.clear();
+  filter->NormalizeRangeOn();
+  filter->Update();
+  EXPECT_TRUE(capture->Errors.empty()) << capture->AllErrors();
+  EXPECT_FLOAT_EQ(Relief(filter)->GetComponent(0, 3), 0.f);
+  EXPECT_FLOAT_EQ(Relief(filter)->GetComponent(1, 3), 0.5f);
+  EXPECT_FLOAT_EQ(Relief(filter)->GetComponent(2, 3), 1.f);
+}
+
+TEST(vtkReliefTextureFilter, NonFiniteValuesAreRejected)
+{
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  const float inf = std::numeric_limits<float>::infinity();
+  std::vector<float> values(4 * 3, 0.5f);
+  values[2 * 4 + 3] = nan; // texel (i=3, j=2)
+  values[2 * 4 + 1] = inf;
+  vtkNew<vtkReliefTextureFilter> filter;
+  vtkNew<MessageCapture> capture;
+  capture->Watch(filter);
+  filter->SetInputData(MakeImage<vtkFloatArray>(4, 3, 1, values));
+  filter->NormalizeRangeOn(); // must not hide NaNs
+  filter->Update();
+  ASSERT_FALSE(capture->Errors.empty());
+  EXPECT_TRUE(capture->HasError("2 NaN or infinite")) << capture->AllErrors();
+  EXPECT_TRUE(capture->HasError("(i=1, j=2)")) << capture->AllErrors();
+  EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), 0);
+}
+
+TEST(vtkReliefTextureFilter, EmptyAndMissingInput)
+{
+  vtkNew<vtkReliefTextureFilter> filter;
+  vtkNew<MessageCapture> capture;
+  capture->Watch(filter);
+  filter->Update();
+  EXPECT_TRUE(capture->HasError("No input")) << capture->AllErrors();
+
+  capture->Errors.clear();
+  vtkNew<vtkImageData> empty;
+  filter->SetInputData(empty);
+  filter->Update();
+  EXPECT_TRUE(capture->HasError("empty")) << capture->AllErrors();
+
+  capture->Errors.clear();
+  vtkNew<vtkImageData> noScalars;
+  noScalars->SetDimensions(4, 4, 1);
+  filter->SetInputData(noScalars);
+  filter->Update();
+  EXPECT_TRUE(capture->HasError("no point scalars")) << capture->AllErrors();
+
+  capture->Errors.clear();
+  vtkNew<vtkImageData> volume;
+  volume->SetDimensions(4, 4, 2);
+  volume->AllocateScalars(VTK_FLOAT, 1);
+  filter->SetInputData(volume);
+  filter->Update();
+  EXPECT_TRUE(capture->HasError("2D image")) << capture->AllErrors();
+}
+
+TEST(vtkReliefTextureFilter, DegenerateSizesWarnAndAreFlat)
+{
+  vtkNew<vtkReliefTextureFilter> filter;
+  vtkNew<MessageCapture> capture;
+  capture->Watch(filter);
+  filter->SetDepthScale(1.0);
+
+  filter->SetInputData(MakeImage<vtkFloatArray>(1, 1, 1, { 0.4f }));
+  filter->Update();
+  EXPECT_TRUE(capture->Errors.empty()) << capture->AllErrors();
+  EXPECT_TRUE(capture->HasWarning("1-texel")) << "expected a warning";
+  ASSERT_EQ(Relief(filter)->GetNumberOfTuples(), 1);
+  EXPECT_FLOAT_EQ(Relief(filter)->GetComponent(0, 0), 0.5f);
+  EXPECT_FLOAT_EQ(Relief(filter)->GetComponent(0, 1), 0.5f);
+  EXPECT_FLOAT_EQ(Relief(filter)->GetComponent(0, 2), 1.f);
+  EXPECT_FLOAT_EQ(Relief(filter)->GetComponent(0, 3), 0.4f);
+
+  // 1 x 4 column with a slope along j: x stays flat, y tilts.
+  capture->Warnings.clear();
+  filter->SetInputData(MakeImage<vtkFloatArray>(1, 4, 1, { 0.f, 0.1f, 0.2f, 0.3f }));
+  filter->Update();
+  EXPECT_TRUE(capture->HasWarning("flat along x"));
+  EXPECT_FLOAT_EQ(Relief(filter)->GetComponent(1, 0), 0.5f);
+  // Slope 0.1 per texel, W = 1, DepthScale 1: n = normalize(0, 0.1, 1).
+  EXPECT_NEAR(2 * Relief(filter)->GetComponent(1, 1) - 1, 0.1 / std::sqrt(1.01), 1e-6);
+}

@@ -1,0 +1,67 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @class   vtkAttachReliefTexture
+ * @brief   Attaches a relief texture (and optionally a light set) to a dataset as field data,
+ *          for relief mappers that only see the geometry (ParaView's Relief Surface).
+ *
+ * Input port 0: any vtkDataSet (the surface to draw; it needs point texture coordinates).
+ * Input port 1: the relief texture, a 4-component vtkImageData (vtkReliefTextureFilter or
+ * vtkConeMapFilter output). Input port 2 (optional): a light set, vtkMedianCutLights' N x 2
+ * light texture (its output port 1).
+ *
+ * The output is the input (shallow copy) with field data arrays
+ *  - "MesolightReliefTexture" (the texels, shared with the image) and
+ *    "MesolightReliefTextureSize" (width, height), "MesolightReliefTextureDepthScale" and
+ *    "MesolightReliefTextureConeType" when the image carries them;
+ *  - "MesolightLightSet" and "MesolightLightSetSize" when a light set is connected.
+ * GetAttachedReliefTexture() / GetAttachedLightSet() turn them back into images.
+ *
+ * Why field data: a ParaView representation has one input, and field data travels with every
+ * piece of a distributed dataset (each MPI rank draws its piece with the whole texture), through
+ * state files and pvbatch, where a second pipeline input of the representation would not.
+ * The images are requested whole whatever piece the surface is.
+ */
+#ifndef vtkAttachReliefTexture_h
+#define vtkAttachReliefTexture_h
+
+#include "MesolightReliefTexturesModule.h" // For export macro
+#include "vtkPassInputTypeAlgorithm.h"
+#include "vtkSmartPointer.h" // For the returned images
+
+class vtkAlgorithmOutput;
+class vtkDataObject;
+class vtkImageData;
+
+class MESOLIGHTRELIEFTEXTURES_EXPORT vtkAttachReliefTexture : public vtkPassInputTypeAlgorithm
+{
+public:
+  static vtkAttachReliefTexture* New();
+  vtkTypeMacro(vtkAttachReliefTexture, vtkPassInputTypeAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /** The relief texture (input port 1). */
+  void SetReliefTextureConnection(vtkAlgorithmOutput* output);
+  /** The light set (input port 2, optional). */
+  void SetLightSetConnection(vtkAlgorithmOutput* output);
+
+  /** The relief texture attached to a dataset's field data as an image; null if none. */
+  static vtkSmartPointer<vtkImageData> GetAttachedReliefTexture(vtkDataObject* data);
+  /** The light set attached to a dataset's field data as an image; null if none. */
+  static vtkSmartPointer<vtkImageData> GetAttachedLightSet(vtkDataObject* data);
+
+protected:
+  vtkAttachReliefTexture();
+  ~vtkAttachReliefTexture() override = default;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestUpdateExtent(vtkInformation* request, vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
+  int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
+
+private:
+  vtkAttachReliefTexture(const vtkAttachReliefTexture&) = delete;
+  void operator=(const vtkAttachReliefTexture&) = delete;
+};
+
+#endif

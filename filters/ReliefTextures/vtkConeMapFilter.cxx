@@ -1,0 +1,188 @@
+#include "vtkConeMapFilter.h"
+#include "vtkWholeExtentRequest.h"
+
+#include "ConeMaps.h"
+#include "vtkReliefTextureFilter.h"
+
+#include "vtkCommand.h"
+#include "vtkDataArray.h"
+#include "vtkFieldData.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkStringArray.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+vtkStandardNewMacro(vtkConeMapFilter);
+
+//------------------------------------------------------------------------------
+vtkConeMapFilter::vtkConeMapFilter() = default;
+
+//------------------------------------------------------------------------------
+int vtkConeMapFilter::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkImageData");
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkConeMapFilter::RequestInformation(
+  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  vtkDataObject::SetPointDataActiveScalarInfo(outputVector->GetInformationObject(0),
+    this->Packing == RATIO_8BIT ? VTK_UNSIGNED_CHAR : VTK_FLOAT, 4);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkConeMapFilter::RequestUpdateExtent(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
+{
+  // Cones see the whole map.
+  mesolight::RequestWholeInputExtent(inputVector);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkConeMapFilter::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkImageData* input = vtkImageData::GetData(inputVector[0]);
+  vtkImageData* output = vtkImageData::GetData(outputVector);
+  if (!input || input->GetNumberOfPoints() == 0 || !input->GetPointData()->GetScalars())
+  {
+    vtkErrorMacro(<< "No input image (or no scalars) to make a cone map of.");
+    return 0;
+  }
+
+  // Normals and depth exactly as the relief filter makes them (input conversion, NaN checks);
+  // a relief texture given as input keeps its depth channel.
+  vtkSmartPointer<vtkImageData> relief;
+  if (input->GetPointData()->GetScalars()->GetNumberOfComponents() == 4 &&
+    input->GetFieldData()->GetArray("MesolightDepthScale"))
+  {
+    relief = input;
+  }
+  else
+  {
+    vtkNew<vtkReliefTextureFilter> bake;
+    bake->SetInputData(input);
+    bake->SetDepthScale(this->DepthScale);
+    bake->SetBorderMode(this->BorderMode);
+    bake->SetInvertInput(this->InvertInput);
+    bake->SetNormalizeRange(this->NormalizeRange);
+    struct Forward : public vtkCommand
+    {
+      static Forward* New() { return new Forward; }
+      void Execute(vtkObject*, unsigned long, void* data) override
+      {
+        this->Errors += data ? static_cast<const char*>(data) : "";
+      }
+      std::string Errors;
+    };
+    vtkNew<Forward> errors;
+    bake->AddObserver(vtkCommand::ErrorEvent, errors);
+    bake->Update();
+    if (!errors->Errors.empty() || bake->GetOutput()->GetNumberOfPoints() == 0)
+    {
+      vtkErrorMacro(<< "Could not read the depth map: " << errors->Errors);
+      return 0;
+    }
+    relief = bake->GetOutput();
+  }
+
+  int dims[3];
+  relief->GetDimensions(dims);
+  const int w = dims[0], h = dims[1];
+  vtkDataArray* rgba = relief->GetPointData()->GetScalars();
+  const vtkIdType count = static_cast<vtkIdType>(w) * h;
+  // The 8-bit packing stores the depth rounded to 1/255: the cones must be valid for the surface
+  // the renderer will sample, so they are computed from that quantized depth.
+  auto byte = [](double x) {
+    return static_cast<unsigned char>(std::min(255.0, std::max(0.0, x * 255.0 + 0.5)));
+  };
+  std::vector<float> depth(static_cast<size_t>(count));
+  for (vtkIdType i = 0; i < count; ++i)
+  {
+    const double d = rgba->GetComponent(i, 3);
+    depth[static_cast<size_t>(i)] =
+      this->Packing == RATIO_8BIT ? static_cast<float>(byte(d) / 255.0) : static_cast<float>(d);
+  }
+
+  mesolight::ConeMapOptions options;
+  options.Progress = mesolight::AlgorithmProgress(this);
+  const std::vector<float> cones = mesolight::ComputeConeMap(
+    this->ConeType == CONSERVATIVE ? mesolight::ConeType::Conservative
+                                   : mesolight::ConeType::Relaxed,
+    depth.data(), w, h, options);
+  if (cones.empty())
+  {
+    if (!this->GetAbortExecute())
+    {
+      vtkErrorMacro(<< "Cone map computation failed.");
+    }
+    return this->GetAbortExecute() ? 1 : 0;
+  }
+
+  output->SetExtent(relief->GetExtent());
+  output->SetSpacing(relief->GetSpacing());
+  output->SetOrigin(relief->GetOrigin());
+  if (this->Packing == RATIO_8BIT)
+  {
+    vtkNew<vtkUnsignedCharArray> packed;
+    packed->SetName("ConeRelief");
+    packed->SetNumberOfComponents(4);
+    packed->SetNumberOfTuples(count);
+    for (vtkIdType i = 0; i < count; ++i)
+    {
+      packed->SetTypedComponent(i, 0, byte(rgba->GetComponent(i, 0)));
+      packed->SetTypedComponent(i, 1, byte(rgba->GetComponent(i, 1)));
+      packed->SetTypedComponent(i, 2, mesolight::EncodeConeRatio8(cones[static_cast<size_t>(i)]));
+      packed->SetTypedComponent(i, 3, byte(rgba->GetComponent(i, 3)));
+    }
+    output->GetPointData()->SetScalars(packed);
+  }
+  else
+  {
+    vtkNew<vtkFloatArray> packed;
+    packed->SetName("ConeRelief");
+    packed->SetNumberOfComponents(4);
+    packed->SetNumberOfTuples(count);
+    for (vtkIdType i = 0; i < count; ++i)
+    {
+      packed->SetTypedComponent(i, 0, static_cast<float>(rgba->GetComponent(i, 0)));
+      packed->SetTypedComponent(i, 1, static_cast<float>(rgba->GetComponent(i, 1)));
+      packed->SetTypedComponent(i, 2, cones[static_cast<size_t>(i)]);
+      packed->SetTypedComponent(i, 3, depth[static_cast<size_t>(i)]);
+    }
+    output->GetPointData()->SetScalars(packed);
+  }
+  output->GetFieldData()->PassData(relief->GetFieldData());
+  vtkNew<vtkStringArray> type;
+  type->SetName("MesolightConeType");
+  type->InsertNextValue(this->ConeType == CONSERVATIVE ? "conservative" : "relaxed");
+  output->GetFieldData()->AddArray(type);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkConeMapFilter::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "ConeType: " << (this->ConeType == CONSERVATIVE ? "Conservative" : "Relaxed")
+     << "\n";
+  os << indent << "Packing: " << (this->Packing == RATIO_8BIT ? "Ratio8Bit" : "Float") << "\n";
+  os << indent << "DepthScale: " << this->DepthScale << "\n";
+  os << indent << "BorderMode: " << this->BorderMode << "\n";
+  os << indent << "InvertInput: " << (this->InvertInput ? "On" : "Off") << "\n";
+  os << indent << "NormalizeRange: " << (this->NormalizeRange ? "On" : "Off") << "\n";
+}

@@ -1,0 +1,294 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "vtkReliefTextureFilter.h"
+#include "vtkWholeExtentRequest.h"
+
+#include "ScalarConversion.h"
+#include "SobelNormals.h"
+
+#include "vtkAlgorithm.h"
+#include "vtkDataArray.h"
+#include "vtkDataObject.h"
+#include "vtkDataSetAttributes.h"
+#include "vtkFieldData.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkSMPTools.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+vtkStandardNewMacro(vtkReliefTextureFilter);
+
+namespace
+{
+/// Convert nComp-component tuples of type T to one unit value per texel (double).
+template <typename T>
+void ToUnitDepth(const T* data, vtkIdType n, int nComp, double* out)
+{
+  vtkSMPTools::For(0, n, [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType k = begin; k < end; ++k)
+    {
+      const T* t = data + k * nComp;
+      if (nComp >= 3)
+      {
+        // Rec. 709 luminance, as in vtkImageLuminance.
+        out[k] = 0.2125 * mesolight::ToUnitValue(t[0]) + 0.7154 * mesolight::ToUnitValue(t[1]) +
+          0.0721 * mesolight::ToUnitValue(t[2]);
+      }
+      else
+      {
+        out[k] = mesolight::ToUnitValue(t[0]);
+      }
+    }
+  });
+}
+}
+
+//------------------------------------------------------------------------------
+vtkReliefTextureFilter::vtkReliefTextureFilter()
+{
+  this->SetInputArrayToProcess(
+    0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, vtkDataSetAttributes::SCALARS);
+}
+
+//------------------------------------------------------------------------------
+int vtkReliefTextureFilter::FillInputPortInformation(int port, vtkInformation* info)
+{
+  // Optional so that a missing input gets our own, explicit error message.
+  this->Superclass::FillInputPortInformation(port, info);
+  info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkReliefTextureFilter::RequestInformation(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  if (inputVector[0]->GetNumberOfInformationObjects() < 1)
+  {
+    vtkErrorMacro("No input image: connect a depth map with SetInputConnection() or "
+                  "SetInputData().");
+    return 0;
+  }
+  vtkDataObject::SetPointDataActiveScalarInfo(outputVector->GetInformationObject(0), VTK_FLOAT, 4);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkReliefTextureFilter::RequestUpdateExtent(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
+{
+  // The Sobel stencil and NormalizeRange need the whole image.
+  mesolight::RequestWholeInputExtent(inputVector);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkReliefTextureFilter::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkImageData* input = vtkImageData::GetData(inputVector[0], 0);
+  vtkImageData* output = vtkImageData::GetData(outputVector, 0);
+  if (!input)
+  {
+    vtkErrorMacro("No input image: connect a depth map with SetInputConnection() or "
+                  "SetInputData().");
+    return 0;
+  }
+  if (!output)
+  {
+    vtkErrorMacro("Missing output image.");
+    return 0;
+  }
+  output->Initialize();
+
+  int dims[3];
+  input->GetDimensions(dims);
+  if (input->GetNumberOfPoints() < 1 || dims[0] < 1 || dims[1] < 1 || dims[2] < 1)
+  {
+    vtkErrorMacro("The input image is empty: a depth map needs at least 1 x 1 texels.");
+    return 0;
+  }
+  if (dims[2] != 1)
+  {
+    vtkErrorMacro("The input must be a 2D image in the XY plane; got dimensions "
+      << dims[0] << " x " << dims[1] << " x " << dims[2] << ".");
+    return 0;
+  }
+  vtkDataArray* scalars = this->GetInputArrayToProcess(0, inputVector);
+  if (!scalars)
+  {
+    vtkErrorMacro("The input image has no point scalars (or no array selected by "
+                  "SetInputArrayToProcess()) to read depths from.");
+    return 0;
+  }
+  const int nComp = scalars->GetNumberOfComponents();
+  const vtkIdType n = input->GetNumberOfPoints();
+  if (nComp < 1 || nComp > 4 || scalars->GetNumberOfTuples() != n)
+  {
+    vtkErrorMacro("The input array \"" << (scalars->GetName() ? scalars->GetName() : "")
+                                       << "\" must have 1 to 4 components and one tuple per "
+                                          "texel; it has "
+                                       << nComp << " components and "
+                                       << scalars->GetNumberOfTuples() << " tuples for " << n
+                                       << " texels.");
+    return 0;
+  }
+  const int w = dims[0];
+  const int h = dims[1];
+
+  // 1. Stored values -> unit values.
+  std::vector<double> value(static_cast<size_t>(n));
+  switch (scalars->GetDataType())
+  {
+    vtkTemplateMacro(ToUnitDepth(
+      static_cast<const VTK_TT*>(scalars->GetVoidPointer(0)), n, nComp, value.data()));
+    default:
+      vtkErrorMacro("Unsupported input scalar type " << scalars->GetDataTypeAsString() << ".");
+      return 0;
+  }
+
+  // 2. Validate: NaN / Inf are data errors, never silently turned into normals.
+  vtkIdType nonFinite = 0;
+  vtkIdType firstNonFinite = -1;
+  double minValue = VTK_DOUBLE_MAX;
+  double maxValue = VTK_DOUBLE_MIN;
+  vtkIdType firstOutOfRange = -1;
+  vtkIdType outOfRange = 0;
+  constexpr double tolerance = 1e-6; // float round-off of data meant to be in [0,1]
+  for (vtkIdType k = 0; k < n; ++k)
+  {
+    const double x = value[k];
+    if (!std::isfinite(x))
+    {
+      if (nonFinite++ == 0)
+      {
+        firstNonFinite = k;
+      }
+      continue;
+    }
+    minValue = std::min(minValue, x);
+    maxValue = std::max(maxValue, x);
+    if (x < -tolerance || x > 1.0 + tolerance)
+    {
+      if (outOfRange++ == 0)
+      {
+        firstOutOfRange = k;
+      }
+    }
+  }
+  if (nonFinite > 0)
+  {
+    vtkErrorMacro("The input depth map contains "
+      << nonFinite << " NaN or infinite value(s) out of " << n << "; the first is at texel (i="
+      << firstNonFinite % w << ", j=" << firstNonFinite / w
+      << "). Fix the data (e.g. fill holes) before computing a relief texture.");
+    return 0;
+  }
+  if (outOfRange > 0 && !this->NormalizeRange)
+  {
+    vtkErrorMacro("The input depths must lie in [0,1] but range over ["
+      << minValue << ", " << maxValue << "] (" << outOfRange
+      << " texel(s) outside, the first at texel (i=" << firstOutOfRange % w
+      << ", j=" << firstOutOfRange / w
+      << ")). Enable NormalizeRange to rescale the input range to [0,1], or fix the data.");
+    return 0;
+  }
+  if (this->GetAbortExecute())
+  {
+    return 1;
+  }
+  this->UpdateProgress(0.1);
+
+  // 3. Unit values -> depth (0 top, 1 deepest).
+  std::vector<float> depth(static_cast<size_t>(n));
+  double offset = 0.0;
+  double scale = 1.0;
+  if (this->NormalizeRange)
+  {
+    if (maxValue > minValue)
+    {
+      offset = minValue;
+      scale = 1.0 / (maxValue - minValue);
+    }
+    else
+    {
+      vtkWarningMacro("NormalizeRange: the input is constant ("
+        << minValue << "); it is mapped to depth " << (this->InvertInput ? 1 : 0) << ".");
+      offset = minValue;
+      scale = 0.0;
+    }
+  }
+  const bool invert = this->InvertInput;
+  for (vtkIdType k = 0; k < n; ++k)
+  {
+    const double d = std::min(1.0, std::max(0.0, (value[k] - offset) * scale));
+    depth[k] = static_cast<float>(invert ? 1.0 - d : d);
+  }
+  value = std::vector<double>();
+
+  if (w == 1 || h == 1)
+  {
+    vtkWarningMacro("The depth map is " << w << " x " << h
+                                        << " texels: slopes cannot be estimated across a "
+                                           "1-texel dimension, so the normals are flat along "
+                                        << (w == 1 && h == 1 ? "both axes" : (w == 1 ? "x" : "y"))
+                                        << ".");
+  }
+
+  // 4. Sobel normals + packing (core/SobelNormals.h), rows in parallel; a few serial
+  // chunks report progress and honour aborts from this thread.
+  vtkNew<vtkFloatArray> relief;
+  relief->SetName("Relief");
+  relief->SetNumberOfComponents(4);
+  relief->SetNumberOfTuples(n);
+  float* rgba = relief->GetPointer(0);
+  const float depthScale = static_cast<float>(this->DepthScale);
+  const mesolight::BorderMode mode =
+    this->BorderMode == WRAP ? mesolight::BorderMode::Wrap : mesolight::BorderMode::Clamp;
+  const float* depthPtr = depth.data();
+  const int chunks = std::max(1, std::min(h, 16));
+  for (int c = 0; c < chunks; ++c)
+  {
+    if (this->GetAbortExecute())
+    {
+      return 1;
+    }
+    const int rowBegin = static_cast<int>(static_cast<long long>(h) * c / chunks);
+    const int rowEnd = static_cast<int>(static_cast<long long>(h) * (c + 1) / chunks);
+    vtkSMPTools::For(rowBegin, rowEnd, [&](vtkIdType begin, vtkIdType end) {
+      mesolight::ComputeReliefTextureRows(depthPtr, w, h, depthScale, mode,
+        static_cast<int>(begin), static_cast<int>(end), rgba);
+    });
+    this->UpdateProgress(0.1 + 0.9 * (c + 1) / chunks);
+  }
+
+  output->SetExtent(input->GetExtent());
+  output->SetOrigin(input->GetOrigin());
+  output->SetSpacing(input->GetSpacing());
+  output->GetPointData()->SetScalars(relief);
+
+  vtkNew<vtkFloatArray> scaleArray;
+  scaleArray->SetName("MesolightDepthScale");
+  scaleArray->SetNumberOfComponents(1);
+  scaleArray->SetNumberOfTuples(1);
+  scaleArray->SetValue(0, depthScale);
+  output->GetFieldData()->AddArray(scaleArray);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkReliefTextureFilter::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "DepthScale: " << this->DepthScale << "\n";
+  os << indent << "BorderMode: " << (this->BorderMode == WRAP ? "Wrap" : "Clamp") << "\n";
+  os << indent << "InvertInput: " << (this->InvertInput ? "On" : "Off") << "\n";
+  os << indent << "NormalizeRange: " << (this->NormalizeRange ? "On" : "Off") << "\n";
+}

@@ -1,0 +1,103 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @class   vtkReliefTextureFilter
+ * @brief   depth map -> relief texture (Sobel normals in RGB, depth in A)
+ *
+ * vtkReliefTextureFilter turns a 2D image into the relief texture used by Mesolight's
+ * relief mapper (as in Méndez Fernández's thesis §3.2, "Sobel operator", eq. 2):
+ * a float RGBA image, point scalars named "Relief", where RGB is the tangent-space normal
+ * packed to [0,1] as (n + 1) / 2 and A is the depth in [0,1] (0 = top, 1 = deepest).
+ * The normal is that of the surface z = -DepthScale * d(x, y), x = u in [0,1], computed
+ * from Sobel derivatives (see core/SobelNormals.h). The DepthScale used is stored in the
+ * output field data as a 1-tuple float array "MesolightDepthScale".
+ *
+ * Input: any scalar type. Unsigned integers are divided by the type maximum (uchar / 255,
+ * ushort / 65535); signed integers likewise, clamped to [0,1]; float and double are used
+ * as they are and must lie in [0,1] unless NormalizeRange is on. Images with 3 or 4
+ * components are converted to luminance 0.2125 R + 0.7154 G + 0.0721 B; with 2 components
+ * the first one is used. The input array is selected with SetInputArrayToProcess() and
+ * defaults to the point scalars.
+ *
+ * Errors (no output is produced): no input, an empty or non-2D image, NaN or infinite
+ * values, float depths outside [0,1] without NormalizeRange. An image one texel wide or
+ * high gets a warning: slopes cannot be estimated across it and that normal component is 0.
+ */
+#ifndef vtkReliefTextureFilter_h
+#define vtkReliefTextureFilter_h
+
+#include "MesolightReliefTexturesModule.h" // For export macro
+#include "vtkImageAlgorithm.h"
+
+class MESOLIGHTRELIEFTEXTURES_EXPORT vtkReliefTextureFilter : public vtkImageAlgorithm
+{
+public:
+  static vtkReliefTextureFilter* New();
+  vtkTypeMacro(vtkReliefTextureFilter, vtkImageAlgorithm)
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum BorderModes
+  {
+    CLAMP = 0,
+    WRAP = 1
+  };
+
+  ///@{
+  /**
+   * World depth of depth = 1 divided by the world width of the texture (dimensionless).
+   * Clamped to [0, 100]. Default is 0.05.
+   */
+  vtkSetClampMacro(DepthScale, double, 0.0, 100.0);
+  vtkGetMacro(DepthScale, double);
+  ///@}
+
+  ///@{
+  /**
+   * How the Sobel stencil addresses texels outside the image: CLAMP (one-sided differences
+   * at the borders, the default) or WRAP (periodic, for tileable textures).
+   */
+  vtkSetClampMacro(BorderMode, int, CLAMP, WRAP);
+  vtkGetMacro(BorderMode, int);
+  void SetBorderModeToClamp() { this->SetBorderMode(CLAMP); }
+  void SetBorderModeToWrap() { this->SetBorderMode(WRAP); }
+  ///@}
+
+  ///@{
+  /**
+   * When on, the input is a HEIGHT map (white = high) and depth = 1 - value.
+   * Applied after NormalizeRange. Default is off.
+   */
+  vtkSetMacro(InvertInput, bool);
+  vtkGetMacro(InvertInput, bool);
+  vtkBooleanMacro(InvertInput, bool);
+  ///@}
+
+  ///@{
+  /**
+   * When on, the input range [min, max] is rescaled to [0, 1] (a constant image becomes
+   * depth 0). Default is off.
+   */
+  vtkSetMacro(NormalizeRange, bool);
+  vtkGetMacro(NormalizeRange, bool);
+  vtkBooleanMacro(NormalizeRange, bool);
+  ///@}
+
+protected:
+  vtkReliefTextureFilter();
+  ~vtkReliefTextureFilter() override = default;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  double DepthScale = 0.05;
+  int BorderMode = CLAMP;
+  bool InvertInput = false;
+  bool NormalizeRange = false;
+
+private:
+  vtkReliefTextureFilter(const vtkReliefTextureFilter&) = delete;
+  void operator=(const vtkReliefTextureFilter&) = delete;
+};
+
+#endif
