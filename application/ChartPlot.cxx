@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "ChartPlot.h"
 
 #include <vtkAutoInit.h>
@@ -57,7 +58,8 @@ vtkSmartPointer<vtkTable> MakeTable(const ChartSeries& series, const ScatterChar
 } // namespace
 
 //------------------------------------------------------------------------------
-bool WriteScatterChartPng(const ScatterChart& chart, const std::string& fileName, std::string& error)
+bool WriteScatterChartPng(
+  const ScatterChart& chart, const std::string& fileName, std::string& error)
 {
   vtkNew<vtkContextView> view;
   view->GetRenderer()->SetBackground(1.0, 1.0, 1.0);

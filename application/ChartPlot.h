@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Scatter plots with VTK charts (vtkContextView + vtkChartXY), rendered offscreen to PNG.
 #ifndef mesolight_ChartPlot_h
 #define mesolight_ChartPlot_h
@@ -30,7 +31,8 @@ struct ScatterChart
 };
 
 /** Renders the chart offscreen and writes it as PNG; false with a message on failure. */
-bool WriteScatterChartPng(const ScatterChart& chart, const std::string& fileName, std::string& error);
+bool WriteScatterChartPng(
+  const ScatterChart& chart, const std::string& fileName, std::string& error);
 
 /**
  * Indices of the Pareto-optimal points when both x and y are minimized (no other point is at

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "CommandLine.h"
 
 #include <algorithm>
@@ -240,8 +241,8 @@ bool CommandLine::GetDoubleList(const std::string& name, double low, double high
   return true;
 }
 
-bool CommandLine::GetIntList(const std::string& name, int low, int high, std::vector<int>& values,
-  std::string& error) const
+bool CommandLine::GetIntList(
+  const std::string& name, int low, int high, std::vector<int>& values, std::string& error) const
 {
   std::vector<double> parsed;
   if (!this->GetDoubleList(name, low, high, parsed, error))

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // A small, strict command-line parser for the `mesolight` tool: every option is declared with
 // its help text, so `--help` documents exactly what is accepted and unknown options are errors.
 // Help and usage errors are written here once: a command gives its name and synopsis, and
@@ -54,8 +55,8 @@ public:
    * GetIntList), and there must be at least one; false with a message naming the option and the
    * item otherwise.
    */
-  bool GetIntList(const std::string& name, int low, int high, std::vector<int>& values,
-    std::string& error) const;
+  bool GetIntList(
+    const std::string& name, int low, int high, std::vector<int>& values, std::string& error) const;
   bool GetDoubleList(const std::string& name, double low, double high, std::vector<double>& values,
     std::string& error) const;
   /** An X,Y,Z-style value: exactly count finite numbers. False otherwise. */

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "CommandTable.h"
 
 #include <iomanip>
@@ -18,7 +19,8 @@ void PrintGroupHelp(std::ostream& os, const std::string& prefix, const std::vect
 }
 } // namespace
 
-void PrintCommandUsage(std::ostream& os, const std::string& prefix, const std::vector<Command>& table)
+void PrintCommandUsage(
+  std::ostream& os, const std::string& prefix, const std::vector<Command>& table)
 {
   for (const Command& command : table)
   {
@@ -46,8 +48,8 @@ void PrintCommandUsage(std::ostream& os, const std::string& prefix, const std::v
   }
 }
 
-int DispatchCommand(
-  const std::string& prefix, const std::vector<Command>& table, const std::vector<std::string>& args)
+int DispatchCommand(const std::string& prefix, const std::vector<Command>& table,
+  const std::vector<std::string>& args)
 {
   const Command* fallback = nullptr;
   for (const Command& command : table)
@@ -72,8 +74,9 @@ int DispatchCommand(
     PrintGroupHelp(std::cout, prefix, table);
     return args.empty() ? 2 : 0;
   }
-  std::cerr << prefix << ": unknown " << (prefix.find(' ') == std::string::npos ? "command" : "subcommand")
-            << " '" << args[0] << "'\n";
+  std::cerr << prefix << ": unknown "
+            << (prefix.find(' ') == std::string::npos ? "command" : "subcommand") << " '" << args[0]
+            << "'\n";
   PrintGroupHelp(std::cerr, prefix, table);
   return 2;
 }

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The `mesolight` tool's commands as one table: each command's name, usage, one-line summary and
 // handler, or a nested table (`mesolight bench <what>`, `mesolight vlf <what>`). Dispatch and the
 // top-level help are written once, here, from the table.
@@ -31,11 +32,12 @@ struct Command
  * "mesolight vlf"). Without a command word: the group's default command, else the group's usage
  * (exit 0 on --help / -h, 2 without arguments); an unknown word is a usage error (exit 2).
  */
-int DispatchCommand(
-  const std::string& prefix, const std::vector<Command>& table, const std::vector<std::string>& args);
+int DispatchCommand(const std::string& prefix, const std::vector<Command>& table,
+  const std::vector<std::string>& args);
 
 /** The usage lines and summaries of every command in table, in two columns. */
-void PrintCommandUsage(std::ostream& os, const std::string& prefix, const std::vector<Command>& table);
+void PrintCommandUsage(
+  std::ostream& os, const std::string& prefix, const std::vector<Command>& table);
 
 } // namespace mesolight
 

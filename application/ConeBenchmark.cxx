@@ -1,10 +1,11 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `mesolight bench cones` (see ConeBenchmark.h).
 #include "ConeBenchmark.h"
 
 #include "CommandLine.h"
 #include "ConeMaps.h"
-#include "ProceduralHeightFields.h"
 #include "HeightFieldTracer.h"
+#include "ProceduralHeightFields.h"
 
 #include <algorithm>
 #include <chrono>
@@ -119,8 +120,8 @@ Bracket ConeSearch(const HeightField& hf, const HeightField& cones, const glm::d
   return b;
 }
 
-double BinaryRefine(const HeightField& hf, const glm::dvec3& o, const glm::dvec3& span,
-  Bracket b, int steps)
+double BinaryRefine(
+  const HeightField& hf, const glm::dvec3& o, const glm::dvec3& span, Bracket b, int steps)
 {
   for (int i = 0; i < steps; ++i)
   {
@@ -179,20 +180,24 @@ void SteppingAnalysis(const std::vector<ReliefPattern>& patterns,
         for (size_t s = 0; s < k; ++s)
         {
           const int steps = stepCounts[s];
-          lin[s] += std::abs(BinaryRefine(hf, o, span, LinearSearch(hf, o, span, steps), refine) -
-                      hit->t) * toTexels;
+          lin[s] +=
+            std::abs(BinaryRefine(hf, o, span, LinearSearch(hf, o, span, steps), refine) - hit->t) *
+            toTexels;
           const Bracket b = ConeSearch(hf, cones, o, span, rate, steps, true);
           cone[s] += std::abs(BinaryRefine(hf, o, span, b, refine) - hit->t) * toTexels;
           beat[s] += b.ConeBeatFloor;
           tried[s] += b.Steps;
           sample[s] += std::abs(BinaryRefine(hf, o, span,
                                   ConeSearch(hf, sampleCones, o, span, rate, steps, true), refine) -
-                         hit->t) * toTexels;
+                         hit->t) *
+            toTexels;
         }
       }
-      out << "\n" << names[mi] << ", " << angle << " deg: mean hit error (texels) per search steps\n"
+      out << "\n"
+          << names[mi] << ", " << angle << " deg: mean hit error (texels) per search steps\n"
           << std::setw(8) << "steps" << std::setw(10) << "lin" << std::setw(10) << "cone"
-          << std::setw(13) << "cone/sample" << std::setw(8) << "beat" << "\n";
+          << std::setw(13) << "cone/sample" << std::setw(8) << "beat"
+          << "\n";
       for (size_t s = 0; s < k; ++s)
       {
         out << std::setw(8) << stepCounts[s] << std::setprecision(3) << std::setw(10)
@@ -289,18 +294,20 @@ int RunConeBenchmark(const std::vector<std::string>& args)
       return 1;
     }
     csv << std::fixed;
-    csv << "map,size,type,threads,seconds,cpu_seconds,oracle_seconds_extrapolated,speedup,median_ratio,"
+    csv << "map,size,type,threads,seconds,cpu_seconds,oracle_seconds_extrapolated,speedup,median_"
+           "ratio,"
            "clamped_fraction\n";
   }
   std::cout << std::fixed;
   std::cout << "cone maps: fast bilinear-safe search (" << threads << " threads, tolerance "
-            << tolerance << ") vs brute-force oracle (1 thread, timed at "
-            << oracleSize << "^2, extrapolated as (cells)^2)\n"
+            << tolerance << ") vs brute-force oracle (1 thread, timed at " << oracleSize
+            << "^2, extrapolated as (cells)^2)\n"
             << "hardware threads: " << std::thread::hardware_concurrency() << "\n\n";
   std::cout << std::left << std::setw(17) << "map" << std::setw(7) << "size" << std::setw(14)
-            << "type" << std::right << std::setw(10) << "seconds" << std::setw(10) << "cpu s" << std::setw(14) << "oracle s*"
-            << std::setw(11) << "speed-up" << std::setw(13) << "median c" << std::setw(10)
-            << "clamped" << "\n";
+            << "type" << std::right << std::setw(10) << "seconds" << std::setw(10) << "cpu s"
+            << std::setw(14) << "oracle s*" << std::setw(11) << "speed-up" << std::setw(13)
+            << "median c" << std::setw(10) << "clamped"
+            << "\n";
   for (size_t mi = 0; mi < patterns.size(); ++mi)
   {
     for (bool relaxed : { true, false })
@@ -332,26 +339,28 @@ int RunConeBenchmark(const std::vector<std::string>& args)
           std::cerr << "mesolight bench cones: generation failed\n";
           return 1;
         }
-        const double extrapolated = oracleSeconds * std::pow(std::pow(n + 1.0, 2.0) / oracleCells, 2.0);
+        const double extrapolated =
+          oracleSeconds * std::pow(std::pow(n + 1.0, 2.0) / oracleCells, 2.0);
         std::vector<double> values(cones.begin(), cones.end());
-        const double clamped = static_cast<double>(std::count(cones.begin(), cones.end(),
-                                 static_cast<float>(kConeMaxRatio))) /
+        const double clamped = static_cast<double>(std::count(
+                                 cones.begin(), cones.end(), static_cast<float>(kConeMaxRatio))) /
           static_cast<double>(cones.size());
         const double median = Quantile(values, 0.5);
         std::cout << std::left << std::setw(17) << mapNames[mi] << std::setw(7) << n
                   << std::setw(14) << (relaxed ? "relaxed" : "conservative") << std::right
-                  << std::setprecision(2) << std::setw(10) << seconds << std::setw(10)
-                  << cpuSeconds << std::setw(14)
-                  << std::setprecision(0) << extrapolated << std::setw(10) << std::setprecision(0)
-                  << extrapolated / seconds << "x" << std::setprecision(3) << std::setw(13)
-                  << median << std::setw(9) << std::setprecision(1) << 100.0 * clamped << "%\n"
+                  << std::setprecision(2) << std::setw(10) << seconds << std::setw(10) << cpuSeconds
+                  << std::setw(14) << std::setprecision(0) << extrapolated << std::setw(10)
+                  << std::setprecision(0) << extrapolated / seconds << "x" << std::setprecision(3)
+                  << std::setw(13) << median << std::setw(9) << std::setprecision(1)
+                  << 100.0 * clamped << "%\n"
                   << std::flush;
         if (csv)
         {
           csv << mapNames[mi] << "," << n << "," << (relaxed ? "relaxed" : "conservative") << ","
               << threads << "," << std::setprecision(3) << seconds << "," << cpuSeconds << ","
-              << std::setprecision(1) << extrapolated << "," << std::setprecision(1) << extrapolated / seconds << ","
-              << std::setprecision(5) << median << "," << std::setprecision(5) << clamped << "\n";
+              << std::setprecision(1) << extrapolated << "," << std::setprecision(1)
+              << extrapolated / seconds << "," << std::setprecision(5) << median << ","
+              << std::setprecision(5) << clamped << "\n";
         }
       }
       std::cout << std::left << std::setw(17) << mapNames[mi] << std::setw(7) << oracleSize
@@ -394,9 +403,8 @@ int RunConeBenchmark(const std::vector<std::string>& args)
         }
         std::cout << std::left << std::setw(17) << mapNames[mi] << std::setw(14)
                   << (t == 0 ? "safe/sample R" : "safe/sample C") << std::right
-                  << std::setprecision(3) << std::setw(12) << Quantile(ratios, 0.1)
-                  << std::setw(10) << Quantile(ratios, 0.5) << std::setw(10)
-                  << Quantile(ratios, 0.9) << "\n";
+                  << std::setprecision(3) << std::setw(12) << Quantile(ratios, 0.1) << std::setw(10)
+                  << Quantile(ratios, 0.5) << std::setw(10) << Quantile(ratios, 0.9) << "\n";
       }
       std::vector<double> rc;
       for (size_t k = 0; k < safeMaps[0].size(); ++k)
@@ -408,14 +416,14 @@ int RunConeBenchmark(const std::vector<std::string>& args)
       }
       std::cout << std::left << std::setw(17) << mapNames[mi] << std::setw(14) << "relaxed/cons"
                 << std::right << std::setprecision(3) << std::setw(12) << Quantile(rc, 0.1)
-                << std::setw(10) << Quantile(rc, 0.5) << std::setw(10) << Quantile(rc, 0.9)
-                << "\n"
+                << std::setw(10) << Quantile(rc, 0.5) << std::setw(10) << Quantile(rc, 0.9) << "\n"
                 << std::flush;
     }
   }
   if (steppingSize > 0)
   {
-    SteppingAnalysis(patterns, mapNames, steppingSize, depthScale, steppingRays, threads, std::cout);
+    SteppingAnalysis(
+      patterns, mapNames, steppingSize, depthScale, steppingRays, threads, std::cout);
   }
   return 0;
 }

@@ -1,7 +1,9 @@
-// `mesolight bench cones`: speed and tightness of the cone-map generators (filters/ReliefTextures/core/ConeMaps.h)
-// on procedural maps: seconds per map for the fast bilinear-safe searches (relaxed and
-// conservative), the brute-force oracle measured on a small map and extrapolated by its
-// complexity, and how wide the bilinear-safe cones are compared with per-texel-sample cones.
+// SPDX-License-Identifier: BSD-3-Clause
+// `mesolight bench cones`: speed and tightness of the cone-map generators
+// (filters/ReliefTextures/core/ConeMaps.h) on procedural maps: seconds per map for the fast
+// bilinear-safe searches (relaxed and conservative), the brute-force oracle measured on a small map
+// and extrapolated by its complexity, and how wide the bilinear-safe cones are compared with
+// per-texel-sample cones.
 #ifndef mesolight_ConeBenchmark_h
 #define mesolight_ConeBenchmark_h
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "ImageCommands.h"
 
 #include "CommandLine.h"
@@ -48,7 +49,8 @@ RgbImage ToRgb(vtkImageData* image)
   {
     for (int c = 0; c < 3; ++c)
     {
-      rgb.Rgb[3 * p + c] = static_cast<float>(values->GetComponent(p, std::min(c, values->GetNumberOfComponents() - 1)));
+      rgb.Rgb[3 * p + c] = static_cast<float>(
+        values->GetComponent(p, std::min(c, values->GetNumberOfComponents() - 1)));
     }
   }
   return rgb;
@@ -133,8 +135,8 @@ int RunBakeCommand(const std::vector<std::string>& args)
   }
   int dims[3];
   bake->GetOutput()->GetDimensions(dims);
-  std::cout << "wrote " << out << " (" << dims[0] << "x" << dims[1] << " relief texture, depth scale "
-            << depthScale << ")\n";
+  std::cout << "wrote " << out << " (" << dims[0] << "x" << dims[1]
+            << " relief texture, depth scale " << depthScale << ")\n";
   return 0;
 }
 
@@ -144,7 +146,8 @@ int RunConeCommand(const std::vector<std::string>& args)
     "mesolight cone DEPTH_IMAGE --out FILE.exr [options]\n\nBakes a cone-packed relief "
     "texture for cone stepping: R,G normal x, y packed (n+1)/2,\nB cone ratio "
     "(width / height), A depth (0 top .. 1 deepest).\n");
-  cl.AddValue("--out", "FILE", "cone map to write (.exr: float RGBA = normal x, y; cone ratio; depth)");
+  cl.AddValue(
+    "--out", "FILE", "cone map to write (.exr: float RGBA = normal x, y; cone ratio; depth)");
   cl.AddValue("--type", "TYPE", "relaxed or conservative", "relaxed");
   cl.AddValue("--depth-scale", "K", "relief depth as a fraction of the texture width", "0.04");
   cl.AddValue("--border", "MODE", "clamp or wrap (tiling maps)", "clamp");
@@ -185,7 +188,8 @@ int RunConeCommand(const std::vector<std::string>& args)
   cones->SetInvertInput(cl.Has("--height"));
   cones->SetNormalizeRange(cl.Has("--normalize"));
   cones->SetBorderMode(border == "wrap" ? 1 : 0);
-  cones->SetConeType(type == "conservative" ? vtkConeMapFilter::CONSERVATIVE : vtkConeMapFilter::RELAXED);
+  cones->SetConeType(
+    type == "conservative" ? vtkConeMapFilter::CONSERVATIVE : vtkConeMapFilter::RELAXED);
   cones->SetPacking(cl.Has("--8bit") ? vtkConeMapFilter::RATIO_8BIT : vtkConeMapFilter::FLOAT);
   const auto start = std::chrono::steady_clock::now();
   cones->Update();
@@ -206,8 +210,8 @@ int RunConeCommand(const std::vector<std::string>& args)
   }
   int dims[3];
   cones->GetOutput()->GetDimensions(dims);
-  std::cout << "wrote " << out << " (" << dims[0] << "x" << dims[1] << " " << type
-            << " cone map, " << seconds << " s)" << std::endl;
+  std::cout << "wrote " << out << " (" << dims[0] << "x" << dims[1] << " " << type << " cone map, "
+            << seconds << " s)" << std::endl;
   return 0;
 }
 
@@ -222,7 +226,8 @@ int RunProbeCommand(const std::vector<std::string>& args)
   cl.AddValue("--width", "W", "output width (height W/2); 0 = twice the probe size", "0");
   cl.AddValue("--forward", "X,Y,Z", "direction the probe camera looked in", "1,0,0");
   cl.AddValue("--up", "X,Y,Z", "up direction of the probe picture", "0,0,1");
-  cl.AddValue("--merge", "PROBE_B", "second view of the same probe (the relief thesis' two-view merge)");
+  cl.AddValue(
+    "--merge", "PROBE_B", "second view of the same probe (the relief thesis' two-view merge)");
   cl.AddValue("--merge-forward", "X,Y,Z", "direction the second view looked in", "0,1,0");
   cl.AddValue("--mask", "IMAGE", "lat-long mask C: result = A C + B (1 - C)");
   std::string error;
@@ -238,9 +243,10 @@ int RunProbeCommand(const std::vector<std::string>& args)
     return cl.UsageError(error);
   }
   const std::string type = cl.Get("--type");
-  if (cl.Positional().size() != 1 || !cl.Has("--out") || (type != "angular" && type != "mirror-ball") ||
-    !cl.GetDoubleVector("--forward", 3, forward) || !cl.GetDoubleVector("--up", 3, up) ||
-    !cl.GetDoubleVector("--merge-forward", 3, forwardB) || (cl.Has("--merge") != cl.Has("--mask")))
+  if (cl.Positional().size() != 1 || !cl.Has("--out") ||
+    (type != "angular" && type != "mirror-ball") || !cl.GetDoubleVector("--forward", 3, forward) ||
+    !cl.GetDoubleVector("--up", 3, up) || !cl.GetDoubleVector("--merge-forward", 3, forwardB) ||
+    (cl.Has("--merge") != cl.Has("--mask")))
   {
     std::cerr << "mesolight probe: usage: mesolight probe PROBE_IMAGE --out FILE.exr "
                  "[--type angular|mirror-ball] [--forward x,y,z] [--up x,y,z] "
@@ -255,7 +261,8 @@ int RunProbeCommand(const std::vector<std::string>& args)
       return cl.UsageError("--out must differ from the inputs");
     }
   }
-  auto convert = [&](const std::string& file, const double f[3]) -> vtkSmartPointer<vtkImageData> {
+  auto convert = [&](const std::string& file, const double f[3]) -> vtkSmartPointer<vtkImageData>
+  {
     vtkNew<vtkOIIOImageReader> reader;
     reader->SetFileName(file.c_str());
     vtkNew<vtkLightProbeToLatLong> toLatLong;
@@ -291,8 +298,8 @@ int RunProbeCommand(const std::vector<std::string>& args)
     maskReader->GetOutput()->GetDimensions(maskDims);
     if (!second || maskDims[0] != dims[0] || maskDims[1] != dims[1])
     {
-      std::cerr << "mesolight probe: the second view and the mask must convert to / be "
-                << dims[0] << "x" << dims[1] << "\n";
+      std::cerr << "mesolight probe: the second view and the mask must convert to / be " << dims[0]
+                << "x" << dims[1] << "\n";
       return 1;
     }
     vtkDataArray* maskValues = maskReader->GetOutput()->GetPointData()->GetScalars();
@@ -300,7 +307,8 @@ int RunProbeCommand(const std::vector<std::string>& args)
     std::vector<float> mask(static_cast<size_t>(dims[0]) * dims[1]);
     for (size_t p = 0; p < mask.size(); ++p)
     {
-      mask[p] = static_cast<float>(maskValues->GetComponent(static_cast<vtkIdType>(p), 0) * maskScale);
+      mask[p] =
+        static_cast<float>(maskValues->GetComponent(static_cast<vtkIdType>(p), 0) * maskScale);
     }
     const RgbImage merged = MergeWithMask(ToRgb(map), ToRgb(second), mask);
     std::copy(merged.Rgb.begin(), merged.Rgb.end(),

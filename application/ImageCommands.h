@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Image commands of the `mesolight` tool: `bake` (relief texture), `cone` (cone-packed relief
 // texture) and `probe` (light probe -> lat-long environment).
 #ifndef mesolight_ImageCommands_h

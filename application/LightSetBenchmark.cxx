@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "LightSetBenchmark.h"
 
 #include "CommandLine.h"
@@ -162,14 +163,16 @@ int RunLightSetBenchmark(const std::vector<std::string>& args)
     double DiffFull; // mean |difference| to the unskipped render, 8-bit levels (-1: n/a)
   };
   std::vector<Row> rows;
-  auto setLights = [&](int count) {
+  auto setLights = [&](int count)
+  {
     ReliefSceneOptions lo = o;
     lo.EnvironmentLights = count;
     vtkSmartPointer<vtkImageData> lights = MakeEnvironmentLights(lo, error);
     scene.Mapper->SetLightSetData(lights);
     return lights;
   };
-  auto measure = [&](const std::string& config, int count, const Frame* full) {
+  auto measure = [&](const std::string& config, int count, const Frame* full)
+  {
     const double ms = MedianFrameMs(window, frames);
     const Frame frame = CaptureFrame(window);
     rows.push_back({ config, count, ms, EnvironmentError(frame, reference, exposure),
@@ -212,12 +215,13 @@ int RunLightSetBenchmark(const std::vector<std::string>& args)
   measure("no self-shadowing (negative reference)", skipCount, &full);
   scene.Mapper->GetReliefProperty()->SelfShadowingOn();
 
-  // Relief vs relaxed cone stepping under many self-shadowing lights (the relief thesis' multi-light
-  // table: relaxed cone 1.8-1.9x relief's frame rate at 32-1024 lights, 10 linear or cone steps +
-  // 8 binary). Every light marches its shadow, with the method's search; each setting's time, its
-  // relief-texture samples per pixel, its error against the exact render of the same lights (the
-  // method's own error: hits and visibility), and against the Monte Carlo reference of the whole
-  // environment (which adds the light set's sampling error, the same for both methods).
+  // Relief vs relaxed cone stepping under many self-shadowing lights (the relief thesis'
+  // multi-light table: relaxed cone 1.8-1.9x relief's frame rate at 32-1024 lights, 10 linear or
+  // cone steps + 8 binary). Every light marches its shadow, with the method's search; each
+  // setting's time, its relief-texture samples per pixel, its error against the exact render of the
+  // same lights (the method's own error: hits and visibility), and against the Monte Carlo
+  // reference of the whole environment (which adds the light set's sampling error, the same for
+  // both methods).
   struct MethodRow
   {
     int Method;
@@ -282,16 +286,17 @@ int RunLightSetBenchmark(const std::vector<std::string>& args)
             << o.Width << "x" << o.Height << ", " << frames << " timed frames, median)\n"
             << "Error: mean relative error of the rendered radiance against a Monte Carlo "
                "reference\n(exact first hits and exact height-field visibility, "
-            << samples << " samples per pixel, " << reference.size() << " pixels, "
-            << std::fixed << std::setprecision(1) << referenceSeconds << " s).\n\n";
+            << samples << " samples per pixel, " << reference.size() << " pixels, " << std::fixed
+            << std::setprecision(1) << referenceSeconds << " s).\n\n";
   std::cout << std::left << std::setw(46) << "configuration" << std::right << std::setw(7)
             << "lights" << std::setw(11) << "ms/frame" << std::setw(11) << "error %"
-            << std::setw(13) << "vs full lvl" << "\n";
+            << std::setw(13) << "vs full lvl"
+            << "\n";
   for (const Row& r : rows)
   {
     std::cout << std::left << std::setw(46) << r.Config << std::right << std::setw(7) << r.Lights
-              << std::fixed << std::setprecision(1) << std::setw(11) << r.Ms
-              << std::setprecision(2) << std::setw(11) << r.ErrorMc << std::setw(13);
+              << std::fixed << std::setprecision(1) << std::setw(11) << r.Ms << std::setprecision(2)
+              << std::setw(11) << r.ErrorMc << std::setw(13);
     if (r.DiffFull >= 0.0)
     {
       std::cout << r.DiffFull;
@@ -317,9 +322,10 @@ int RunLightSetBenchmark(const std::vector<std::string>& args)
     }
     if (first && last && first != last)
     {
-      std::cout << "\n" << series << ": " << last->Lights << " lights take "
-                << std::setprecision(1) << last->Ms / first->Ms << "x the time of "
-                << first->Lights << " (the relief thesis: 29x from 32 to 1024).";
+      std::cout << "\n"
+                << series << ": " << last->Lights << " lights take " << std::setprecision(1)
+                << last->Ms / first->Ms << "x the time of " << first->Lights
+                << " (the relief thesis: 29x from 32 to 1024).";
     }
   }
   std::cout << "\n";
@@ -334,7 +340,8 @@ int RunLightSetBenchmark(const std::vector<std::string>& args)
               << " s), and against the Monte Carlo reference above.\n"
               << std::left << std::setw(16) << "method" << std::right << std::setw(7) << "steps"
               << std::setw(11) << "ms/frame" << std::setw(11) << "samples" << std::setw(11)
-              << "error %" << std::setw(11) << "vs MC %" << "\n";
+              << "error %" << std::setw(11) << "vs MC %"
+              << "\n";
     for (const MethodRow& r : methodRows)
     {
       std::cout << std::left << std::setw(16)
@@ -378,9 +385,9 @@ int RunLightSetBenchmark(const std::vector<std::string>& args)
       std::cout << "At equal error (each relief setting's error a target, " << msRatios.size()
                 << " targets): relief / relaxed cone = " << std::setprecision(2)
                 << msRatios[msRatios.size() / 2] << "x in ms/frame (range " << msRatios.front()
-                << " - " << msRatios.back() << "), "
-                << sampleRatios[sampleRatios.size() / 2] << "x in samples per pixel (range "
-                << sampleRatios.front() << " - " << sampleRatios.back()
+                << " - " << msRatios.back() << "), " << sampleRatios[sampleRatios.size() / 2]
+                << "x in samples per pixel (range " << sampleRatios.front() << " - "
+                << sampleRatios.back()
                 << ").\nThe relief thesis, 10 steps each at 32-1024 lights: 1.8-1.9x in frame "
                    "rate.\n";
     }

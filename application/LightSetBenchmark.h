@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `mesolight bench ibl`: a relief surface lit by median-cut light sets of an environment.
 // Frame time against the number of lights (one run for all counts, like the relief thesis'
 // table 1), the effect of each skip on time and error, the error of each light set against a

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "LightsCommand.h"
 
-#include "MathConstants.h"
 #include "CommandLine.h"
+#include "MathConstants.h"
 
 #include "EnvironmentMaps.h"
 #include "MedianCut.h"
@@ -213,8 +213,9 @@ int RunLightsCommand(const std::vector<std::string>& args)
     }
   }
   std::cout << "wrote " << file << " (" << count << " lights"
-            << (cl.Has("--variance") ? ", variance-minimizing" : "") << "; total sum L dOmega = "
-            << total[0] << ", " << total[1] << ", " << total[2] << ")\n";
+            << (cl.Has("--variance") ? ", variance-minimizing" : "")
+            << "; total sum L dOmega = " << total[0] << ", " << total[1] << ", " << total[2]
+            << ")\n";
   return 0;
 }
 
@@ -310,15 +311,16 @@ int RunLightsBenchmark(const std::vector<std::string>& args)
             << std::setw(7) << "lights" << std::setw(11) << "mean %" << std::setw(11) << "max %"
             << "\n";
   auto report = [&](const std::string& map, const RgbImage& image, const std::string& method,
-                  int lightCount, const ErrorStats& s) {
+                  int lightCount, const ErrorStats& s)
+  {
     std::cout << std::left << std::setw(20) << map << std::setw(18) << method << std::right
-              << std::setw(7) << lightCount << std::fixed << std::setprecision(3)
-              << std::setw(11) << 100.0 * s.Mean << std::setw(11) << 100.0 * s.Max << "\n"
+              << std::setw(7) << lightCount << std::fixed << std::setprecision(3) << std::setw(11)
+              << 100.0 * s.Mean << std::setw(11) << 100.0 * s.Max << "\n"
               << std::defaultfloat;
     if (csv)
     {
-      csv << map << ',' << image.Width << ',' << image.Height << ',' << method << ','
-          << lightCount << ',' << std::setprecision(6) << s.Mean << ',' << s.Max << '\n';
+      csv << map << ',' << image.Width << ',' << image.Height << ',' << method << ',' << lightCount
+          << ',' << std::setprecision(6) << s.Mean << ',' << s.Max << '\n';
     }
   };
 
@@ -326,14 +328,16 @@ int RunLightsBenchmark(const std::vector<std::string>& args)
   {
     const ExactIrradiance exact(map);
     std::vector<double> exactY(normals.size());
-    vtkSMPTools::For(0, static_cast<vtkIdType>(normals.size()), [&](vtkIdType b, vtkIdType e) {
-      for (vtkIdType k = b; k < e; ++k)
+    vtkSMPTools::For(0, static_cast<vtkIdType>(normals.size()),
+      [&](vtkIdType b, vtkIdType e)
       {
-        double irr[3];
-        exact.Evaluate(normals[k].data(), irr);
-        exactY[k] = Luminance(irr[0], irr[1], irr[2]);
-      }
-    });
+        for (vtkIdType k = b; k < e; ++k)
+        {
+          double irr[3];
+          exact.Evaluate(normals[k].data(), irr);
+          exactY[k] = Luminance(irr[0], irr[1], irr[2]);
+        }
+      });
     const SH9 sh = ProjectSH9(map);
     report(name, map, "SH9", 9,
       Compare(normals, exactY, [&](const double* n, double e[3]) { IrradianceSH9(sh, n, e); }));
@@ -380,9 +384,9 @@ int RunLightsBenchmark(const std::vector<std::string>& args)
         const auto t1 = std::chrono::steady_clock::now();
         best = std::min(best, std::chrono::duration<double, std::milli>(t1 - t0).count());
       }
-      std::cout << "median cut" << (variance ? " (variance)" : "") << " 4096x2048 -> 1024 lights: "
-                << std::fixed << std::setprecision(1) << best << " ms (best of " << repeats
-                << ")\n"
+      std::cout << "median cut" << (variance ? " (variance)" : "")
+                << " 4096x2048 -> 1024 lights: " << std::fixed << std::setprecision(1) << best
+                << " ms (best of " << repeats << ")\n"
                 << std::defaultfloat;
       if (csv)
       {

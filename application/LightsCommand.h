@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `mesolight lights` (environment map -> median cut lights as CSV) and `mesolight bench lights`
 // (accuracy of median cut and SH9 irradiance against exact integration, and timing).
 // Conventions: filters/Lighting/core/EnvironmentMaps.h and docs/environment-maps.md.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "ReliefBenchmark.h"
 
 #include "ImageCompare.h"
@@ -166,7 +167,8 @@ bool RunReliefBenchmark(const BenchmarkSettings& settings, std::ostream& out)
   out << std::left << std::setw(32) << "configuration" << std::right << std::setw(6) << "map"
       << std::setw(10) << "ms/frame" << std::setw(10) << "first ms" << std::setw(10) << "mean err"
       << std::setw(8) << "PSNR" << std::setw(10) << "silh. %" << std::setw(10) << "depth %"
-      << std::setw(10) << "GPU MB" << "\n";
+      << std::setw(10) << "GPU MB"
+      << "\n";
   for (const Row& r : rows)
   {
     out << std::left << std::setw(32) << r.Config << std::right << std::setw(6) << r.Resolution

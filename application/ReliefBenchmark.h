@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `mesolight bench`: frame time and error of each way to draw a height field, in one run.
 #ifndef mesolight_ReliefBenchmark_h
 #define mesolight_ReliefBenchmark_h

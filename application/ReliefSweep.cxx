@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "ReliefSweep.h"
 #include "ReliefSweepReport.h"
 
@@ -243,8 +244,8 @@ double ColorRmse(const ReliefReference& reference, const Frame& shaded, const Fr
 
 struct MapSource
 {
-  std::string Label;    // as shown in the table
-  std::string Pattern;  // procedural pattern, or empty
+  std::string Label;   // as shown in the table
+  std::string Pattern; // procedural pattern, or empty
   std::string DepthFile;
   std::string Note; // printed under the table
 };
@@ -275,7 +276,8 @@ bool PrepareFileMap(const ReliefSweepSettings& settings, const std::string& dire
   map.Label = "file(stone16)";
   map.DepthFile = file;
   map.Note = "the Stone pattern written to " + file +
-    " as a 16-bit PNG and read back through vtkOIIOImageReader (tests the file path, not real data)";
+    " as a 16-bit PNG and read back through vtkOIIOImageReader (tests the file path, not real "
+    "data)";
   out << "map 'file': no --depth-file given, so the Stone pattern was written to " << file
       << " as a 16-bit PNG and is read back through vtkOIIOImageReader: this row set tests the "
          "file path, not real data.\n";
@@ -390,7 +392,8 @@ bool RunReliefSweep(
       coneMaps[kind] = BuildConeMap(relief.ReliefTexture, kind, o.DepthScale, why);
       if (!coneMaps[kind])
       {
-        skipped.push_back(std::string(kind == vtkReliefProperty::RelaxedConeMap ? "relaxed" : "conservative") +
+        skipped.push_back(
+          std::string(kind == vtkReliefProperty::RelaxedConeMap ? "relaxed" : "conservative") +
           " cone map for " + map.Label + ": " + why);
       }
     }
@@ -410,9 +413,10 @@ bool RunReliefSweep(
         out << "bench relief: " << error << "\n";
         return false;
       }
-      out << "[" << map.Label << ", " << angle << " deg] CPU reference: "
-          << reference.CountCovered() << " covered of " << reference.CountFootprint()
-          << " footprint pixels in " << report::Fixed(reference.Seconds, 3) << " s\n"
+      out << "[" << map.Label << ", " << angle
+          << " deg] CPU reference: " << reference.CountCovered() << " covered of "
+          << reference.CountFootprint() << " footprint pixels in "
+          << report::Fixed(reference.Seconds, 3) << " s\n"
           << std::flush;
 
       for (int m : methods)

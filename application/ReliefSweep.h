@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `mesolight bench relief`: accuracy and speed of every relief method, measured per map, view
 // angle and step setting against exact references:
 //  - hit error (texels) and silhouettes against the CPU reference (ReliefReference.h),
@@ -76,8 +77,8 @@ struct ReliefSweepRow
  * Runs the sweep described by settings, printing progress, the table and the summary to out.
  * False (with a message on out) when a scene, a reference or an output file fails.
  */
-bool RunReliefSweep(
-  const ReliefSweepSettings& settings, std::ostream& out, std::vector<ReliefSweepRow>* rows = nullptr);
+bool RunReliefSweep(const ReliefSweepSettings& settings, std::ostream& out,
+  std::vector<ReliefSweepRow>* rows = nullptr);
 
 /**
  * `mesolight bench relief [options]`: args are the options after "relief". Returns the process

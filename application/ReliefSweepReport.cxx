@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "ReliefSweepReport.h"
 
 #include "ChartPlot.h"
@@ -25,11 +26,12 @@ std::string Fixed(double value, int precision)
 
 void PrintHeader(std::ostream& out)
 {
-  out << std::left << std::setw(16) << "map" << std::right << std::setw(6) << "angle" << "  "
-      << std::left << std::setw(22) << "method" << std::setw(9) << "steps" << std::right
-      << std::setw(9) << "ms/frame" << std::setw(9) << "samples" << std::setw(10) << "hit mean" << std::setw(9) << "hit p99"
-      << std::setw(8) << "silh %" << std::setw(8) << "RMSE" << std::setw(7) << "PSNR"
-      << std::setw(9) << "shadow %" << "\n";
+  out << std::left << std::setw(16) << "map" << std::right << std::setw(6) << "angle"
+      << "  " << std::left << std::setw(22) << "method" << std::setw(9) << "steps" << std::right
+      << std::setw(9) << "ms/frame" << std::setw(9) << "samples" << std::setw(10) << "hit mean"
+      << std::setw(9) << "hit p99" << std::setw(8) << "silh %" << std::setw(8) << "RMSE"
+      << std::setw(7) << "PSNR" << std::setw(9) << "shadow %"
+      << "\n";
 }
 
 void PrintRow(std::ostream& out, const ReliefSweepRow& r)
@@ -37,9 +39,10 @@ void PrintRow(std::ostream& out, const ReliefSweepRow& r)
   out << std::left << std::setw(16) << r.Map << std::right << std::setw(6) << Fixed(r.Angle, 0)
       << "  " << std::left << std::setw(22) << r.MethodName << std::setw(9) << r.Step.Label
       << std::right << std::setw(9) << Fixed(r.MedianMs, 1) << std::setw(9)
-      << Fixed(r.SamplesPerPixel, 1) << std::setw(10) << Fixed(r.HitMeanTexels, 3) << std::setw(9) << Fixed(r.HitP99Texels, 2) << std::setw(8)
-      << Fixed(r.SilhouetteMismatch, 2) << std::setw(8) << Fixed(r.ColorRmse, 2) << std::setw(7)
-      << Fixed(r.Psnr, 1) << std::setw(9) << Fixed(r.ShadowMismatch, 2) << "\n";
+      << Fixed(r.SamplesPerPixel, 1) << std::setw(10) << Fixed(r.HitMeanTexels, 3) << std::setw(9)
+      << Fixed(r.HitP99Texels, 2) << std::setw(8) << Fixed(r.SilhouetteMismatch, 2) << std::setw(8)
+      << Fixed(r.ColorRmse, 2) << std::setw(7) << Fixed(r.Psnr, 1) << std::setw(9)
+      << Fixed(r.ShadowMismatch, 2) << "\n";
 }
 
 bool WriteCsv(const std::string& file, const std::vector<ReliefSweepRow>& rows,
@@ -56,9 +59,9 @@ bool WriteCsv(const std::string& file, const std::vector<ReliefSweepRow>& rows,
     csv << '"' << r.Map << "\"," << r.Angle << ',' << r.MethodName << ',' << r.Step.LinearSteps
         << ',' << r.Step.RefinementSteps << ",\"" << r.Step.Label << "\"," << settings.Width << ','
         << settings.Height << ',' << settings.DepthScale << ',' << r.MedianMs << ',' << r.FirstMs
-        << ',' << r.SamplesPerPixel << ',' << r.HitMeanTexels << ',' << r.HitP99Texels << ',' << r.SilhouetteMismatch << ','
-        << r.ColorRmse << ',' << r.Psnr << ',' << r.ShadowMismatch << ',' << r.CoveredBoth << ','
-        << r.Footprint << "\n";
+        << ',' << r.SamplesPerPixel << ',' << r.HitMeanTexels << ',' << r.HitP99Texels << ','
+        << r.SilhouetteMismatch << ',' << r.ColorRmse << ',' << r.Psnr << ',' << r.ShadowMismatch
+        << ',' << r.CoveredBoth << ',' << r.Footprint << "\n";
   }
   return static_cast<bool>(csv);
 }
@@ -142,9 +145,9 @@ bool WritePlots(const ReliefSweepSettings& settings, const std::vector<ReliefSwe
       chart.Line.X.push_back(allX[i]);
       chart.Line.Y.push_back(allY[i]);
     }
-    const std::string file =
-      (std::filesystem::path(settings.PlotDirectory) / ("relief-sweep-view" + AngleTag(angle) + ".png"))
-        .string();
+    const std::string file = (std::filesystem::path(settings.PlotDirectory) /
+      ("relief-sweep-view" + AngleTag(angle) + ".png"))
+                               .string();
     std::string error;
     if (!WriteScatterChartPng(chart, file, error))
     {
@@ -165,16 +168,19 @@ namespace
 // relief-texture samples per pixel (what the march costs on any GPU, without llvmpipe's noise and
 // fixed per-frame cost). Targets of at most 0.1 texel (sub-texel accurate settings) are also
 // reported apart: that is where a renderer that must look right at grazing angles operates.
-void PrintConeVersusRelief(const ReliefSweepSettings& settings,
-  const std::vector<ReliefSweepRow>& rows, std::ostream& out)
+void PrintConeVersusRelief(
+  const ReliefSweepSettings& settings, const std::vector<ReliefSweepRow>& rows, std::ostream& out)
 {
   const double accurate = 0.1; // texels
-  auto median = [](std::vector<double> v) {
+  auto median = [](std::vector<double> v)
+  {
     std::sort(v.begin(), v.end());
     return v.empty() ? 0.0 : v[v.size() / 2];
   };
-  auto cell = [&median](const std::vector<double>& v) {
-    return v.empty() ? std::string("-") : Fixed(median(v), 2) + " (" + std::to_string(v.size()) + ")";
+  auto cell = [&median](const std::vector<double>& v)
+  {
+    return v.empty() ? std::string("-")
+                     : Fixed(median(v), 2) + " (" + std::to_string(v.size()) + ")";
   };
   std::vector<std::string> maps;
   for (const ReliefSweepRow& r : rows)
@@ -199,7 +205,8 @@ void PrintConeVersusRelief(const ReliefSweepSettings& settings,
       Ratios here;
       for (const ReliefSweepRow& target : rows)
       {
-        if (target.Method != vtkReliefProperty::Relief || target.Angle != angle || target.Map != map)
+        if (target.Method != vtkReliefProperty::Relief || target.Angle != angle ||
+          target.Map != map)
         {
           continue;
         }
@@ -207,9 +214,9 @@ void PrintConeVersusRelief(const ReliefSweepSettings& settings,
         const ReliefSweepRow* leanest[2] = { nullptr, nullptr };
         for (const ReliefSweepRow& r : rows)
         {
-          const int k = r.Method == vtkReliefProperty::Relief ? 0
+          const int k = r.Method == vtkReliefProperty::Relief  ? 0
             : r.Method == vtkReliefProperty::RelaxedConeBinary ? 1
-                                                             : -1;
+                                                               : -1;
           if (k < 0 || r.Map != map || r.Angle != angle || r.HitMeanTexels > target.HitMeanTexels)
           {
             continue;
@@ -263,7 +270,8 @@ void PrintConeVersusRelief(const ReliefSweepSettings& settings,
       << accurate << " texel\n"
       << "    " << std::left << std::setw(18) << "map" << std::right << std::setw(5) << "angle"
       << std::setw(16) << "ms" << std::setw(16) << "samples" << std::setw(16) << "accurate ms"
-      << std::setw(16) << "accurate samp." << "\n"
+      << std::setw(16) << "accurate samp."
+      << "\n"
       << table.str();
   for (const auto& entry : perAngle)
   {
@@ -278,8 +286,8 @@ void PrintConeVersusRelief(const ReliefSweepSettings& settings,
 }
 } // namespace
 
-void PrintSummary(const ReliefSweepSettings& settings, const std::vector<ReliefSweepRow>& rows,
-  std::ostream& out)
+void PrintSummary(
+  const ReliefSweepSettings& settings, const std::vector<ReliefSweepRow>& rows, std::ostream& out)
 {
   out << "\nSummary\n";
   PrintConeVersusRelief(settings, rows, out);

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The report of `mesolight bench relief` (ReliefSweep.h): the table, the CSV, one chart per view
 // angle, relaxed cones vs relief at equal error, and the summary. The run measures; this writes.
 #ifndef mesolight_ReliefSweepReport_h
@@ -33,8 +34,8 @@ bool WritePlots(const ReliefSweepSettings& settings, const std::vector<ReliefSwe
   const std::vector<std::string>& mapLabels, std::ostream& out);
 
 /** Best settings per method and angle, and relaxed cones vs relief at equal hit error. */
-void PrintSummary(const ReliefSweepSettings& settings, const std::vector<ReliefSweepRow>& rows,
-  std::ostream& out);
+void PrintSummary(
+  const ReliefSweepSettings& settings, const std::vector<ReliefSweepRow>& rows, std::ostream& out);
 
 } // namespace report
 } // namespace mesolight

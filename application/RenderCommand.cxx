@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "RenderCommand.h"
 
 #include "CommandLine.h"
@@ -30,7 +31,8 @@ namespace
 // Options shared by every command that builds the relief scene.
 void AddSceneOptions(CommandLine& cl)
 {
-  cl.AddValue("--pattern", "NAME", "procedural map: Bricks, Stone, HemisphereTorus, Flat, SineWave", "Bricks");
+  cl.AddValue("--pattern", "NAME", "procedural map: Bricks, Stone, HemisphereTorus, Flat, SineWave",
+    "Bricks");
   cl.AddValue("--depth-file", "IMAGE", "use this depth image (any OpenImageIO format) instead");
   cl.AddFlag("--height", "the depth image stores height (white = high) rather than depth");
   cl.AddValue("--resolution", "N", "texels per side of the procedural map", "512");
@@ -105,7 +107,6 @@ bool ReadSceneOptions(const CommandLine& cl, ReliefSceneOptions& o, std::string&
   return true;
 }
 
-
 // Interactive keys on top of the trackball camera; VTK's own keys keep working.
 class ReliefInteractorStyle : public vtkInteractorStyleTrackballCamera
 {
@@ -161,10 +162,9 @@ public:
     std::ostringstream text;
     vtkReliefProperty* p = this->Mapper->GetReliefProperty();
     text << "method " << vtkReliefProperty::GetMethodName(p->GetMethod()) << " [m]   steps "
-         << p->GetLinearSteps() << "+" << p->GetRefinementSteps()
-         << " [+/-]   depth " << p->GetDepthScale() << " [ [ ] ]\nshadows "
-         << (p->GetSelfShadowing() ? "on" : "off") << " [x]   silhouettes "
-         << (p->GetSilhouettes() ? "on" : "off") << " [o]   depth write "
+         << p->GetLinearSteps() << "+" << p->GetRefinementSteps() << " [+/-]   depth "
+         << p->GetDepthScale() << " [ [ ] ]\nshadows " << (p->GetSelfShadowing() ? "on" : "off")
+         << " [x]   silhouettes " << (p->GetSilhouettes() ? "on" : "off") << " [o]   depth write "
          << (p->GetWriteDepth() ? "on" : "off") << " [z]   quit [q]";
     this->Status->SetInput(text.str().c_str());
   }

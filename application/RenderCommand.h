@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The commands of the `mesolight` tool that draw the standard relief scene (ReliefScene.h):
 // `render` (a PNG, then an interactive window) and `bench` (relief vs the dense mesh).
 #ifndef mesolight_RenderCommand_h

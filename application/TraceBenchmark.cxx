@@ -4,8 +4,8 @@
 // (single and packets), and path-tracer samples per second on the Cornell box.
 #include "TraceCommand.h"
 
-#include "MathConstants.h"
 #include "CommandLine.h"
+#include "MathConstants.h"
 
 #include "EmbreeScene.h"
 #include "ParallelTiles.h"
@@ -41,11 +41,13 @@ TriangleScene MakeDenseSphere(int triangles)
   scene.AddMaterial(grey);
   for (int r = 0; r <= rings; ++r)
   {
-    const float theta = Pi<float> * (0.02f + 0.96f * static_cast<float>(r) / rings); // open at the poles
+    const float theta =
+      Pi<float> * (0.02f + 0.96f * static_cast<float>(r) / rings); // open at the poles
     for (int s = 0; s < segments; ++s)
     {
       const float phi = 2.0f * Pi<float> * static_cast<float>(s) / segments;
-      scene.Positions.emplace_back(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta));
+      scene.Positions.emplace_back(
+        std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta));
     }
   }
   for (int r = 0; r < rings; ++r)
@@ -109,20 +111,24 @@ int RunTraceBenchmark(const std::vector<std::string>& args)
     return exitCode; // --help printed, or a usage error reported
   }
   if (!cl.GetInt("--triangles", 8, 50000000, triangles, error) ||
-    !cl.GetInt("--size", 16, 8192, size, error) || !cl.GetInt("--threads", 1, 1024, threads, error) ||
+    !cl.GetInt("--size", 16, 8192, size, error) ||
+    !cl.GetInt("--threads", 1, 1024, threads, error) ||
     !cl.GetInt("--cornell-size", 8, 4096, cornellSize, error) ||
-    !cl.GetInt("--cornell-samples", 1, 65536, cornellSamples, error) || !cl.GetInt("--repeats", 1, 100, repeats, error))
+    !cl.GetInt("--cornell-samples", 1, 65536, cornellSamples, error) ||
+    !cl.GetInt("--repeats", 1, 100, repeats, error))
   {
     return cl.UsageError(error);
   }
 
-  auto best = [&](const std::function<void()>& run) {
+  auto best = [&](const std::function<void()>& run)
+  {
     double fastest = 1e30;
     for (int r = 0; r < repeats; ++r)
     {
       const auto start = std::chrono::steady_clock::now();
       run();
-      fastest = std::min(fastest, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+      fastest = std::min(
+        fastest, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     }
     return fastest;
   };
@@ -131,7 +137,8 @@ int RunTraceBenchmark(const std::vector<std::string>& args)
   const auto buildStart = std::chrono::steady_clock::now();
   const TriangleScene sphere = MakeDenseSphere(triangles);
   const EmbreeScene embree(sphere);
-  const double buildSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - buildStart).count();
+  const double buildSeconds =
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - buildStart).count();
   std::cout << "dense sphere: " << sphere.TriangleCount() << " triangles, built in " << std::fixed
             << std::setprecision(2) << buildSeconds << " s\n";
 
@@ -144,83 +151,99 @@ int RunTraceBenchmark(const std::vector<std::string>& args)
   const double primaryCount = static_cast<double>(size) * size;
   std::atomic<std::uint64_t> hits{ 0 };
 
-  const double single = best([&] {
-    ForEachTile(size, size, 16, threads, [&](const TileRange& tile) {
-      std::uint64_t local = 0;
-      for (int j = tile.Y0; j < tile.Y1; ++j)
-      {
-        for (int i = tile.X0; i < tile.X1; ++i)
+  const double single = best(
+    [&]
+    {
+      ForEachTile(size, size, 16, threads,
+        [&](const TileRange& tile)
         {
-          local += embree.Intersect(camera.Ray(i + 0.5f, j + 0.5f, size, size)).Hit();
-        }
-      }
-      hits += local;
+          std::uint64_t local = 0;
+          for (int j = tile.Y0; j < tile.Y1; ++j)
+          {
+            for (int i = tile.X0; i < tile.X1; ++i)
+            {
+              local += embree.Intersect(camera.Ray(i + 0.5f, j + 0.5f, size, size)).Hit();
+            }
+          }
+          hits += local;
+        });
     });
-  });
   rows.push_back({ "primary coherent, single rays", threads, primaryCount, single, "rays" });
 
   // Traces the rays of 4 x 4 pixel blocks as 16-ray packets; rayAt(i, j) gives pixel (i, j)'s ray.
-  auto tracePackets = [&](const std::function<SceneRay(int, int)>& rayAt) {
-    ForEachTile(size, size, 16, threads, [&](const TileRange& tile) {
-      SceneRay rays[16];
-      SceneHit result[16];
-      for (int j = tile.Y0; j < tile.Y1; j += 4)
+  auto tracePackets = [&](const std::function<SceneRay(int, int)>& rayAt)
+  {
+    ForEachTile(size, size, 16, threads,
+      [&](const TileRange& tile)
       {
-        for (int i = tile.X0; i < tile.X1; i += 4)
+        SceneRay rays[16];
+        SceneHit result[16];
+        for (int j = tile.Y0; j < tile.Y1; j += 4)
         {
-          int n = 0;
-          for (int b = 0; b < 4 && j + b < tile.Y1; ++b)
+          for (int i = tile.X0; i < tile.X1; i += 4)
           {
-            for (int a = 0; a < 4 && i + a < tile.X1; ++a)
+            int n = 0;
+            for (int b = 0; b < 4 && j + b < tile.Y1; ++b)
             {
-              rays[n++] = rayAt(i + a, j + b);
+              for (int a = 0; a < 4 && i + a < tile.X1; ++a)
+              {
+                rays[n++] = rayAt(i + a, j + b);
+              }
             }
+            embree.Intersect16(rays, result, n);
           }
-          embree.Intersect16(rays, result, n);
         }
-      }
-    });
+      });
   };
-  const double packets = best([&] {
-    tracePackets([&](int i, int j) { return camera.Ray(i + 0.5f, j + 0.5f, size, size); });
-  });
-  rows.push_back({ "primary coherent, 16-ray packets (4x4 pixels)", threads, primaryCount, packets, "rays" });
+  const double packets = best([&]
+    { tracePackets([&](int i, int j) { return camera.Ray(i + 0.5f, j + 0.5f, size, size); }); });
+  rows.push_back(
+    { "primary coherent, 16-ray packets (4x4 pixels)", threads, primaryCount, packets, "rays" });
 
   // Diffuse bounces from the primary hits: origins on the wall, cosine-distributed directions.
   std::vector<SceneRay> bounces(static_cast<std::size_t>(size) * size);
-  ForEachTile(size, size, 16, threads, [&](const TileRange& tile) {
-    for (int j = tile.Y0; j < tile.Y1; ++j)
+  ForEachTile(size, size, 16, threads,
+    [&](const TileRange& tile)
     {
-      for (int i = tile.X0; i < tile.X1; ++i)
-      {
-        const SceneRay ray = camera.Ray(i + 0.5f, j + 0.5f, size, size);
-        const SceneHit hit = embree.Intersect(ray);
-        RandomSequence rng(SampleSeed(7, static_cast<std::uint64_t>(j) * size + i, 0));
-        const glm::vec3 p = ray.Origin + (hit.Hit() ? hit.T : 1.0f) * ray.Direction;
-        const glm::vec3 n = -glm::normalize(p);
-        SceneRay bounce;
-        bounce.Origin = p + 1e-4f * n;
-        bounce.Direction = CosineAround(n, rng);
-        bounces[static_cast<std::size_t>(j) * size + i] = bounce;
-      }
-    }
-  });
-  const double incoherent = best([&] {
-    ForEachTile(size, size, 16, threads, [&](const TileRange& tile) {
       for (int j = tile.Y0; j < tile.Y1; ++j)
       {
         for (int i = tile.X0; i < tile.X1; ++i)
         {
-          embree.Intersect(bounces[static_cast<std::size_t>(j) * size + i]);
+          const SceneRay ray = camera.Ray(i + 0.5f, j + 0.5f, size, size);
+          const SceneHit hit = embree.Intersect(ray);
+          RandomSequence rng(SampleSeed(7, static_cast<std::uint64_t>(j) * size + i, 0));
+          const glm::vec3 p = ray.Origin + (hit.Hit() ? hit.T : 1.0f) * ray.Direction;
+          const glm::vec3 n = -glm::normalize(p);
+          SceneRay bounce;
+          bounce.Origin = p + 1e-4f * n;
+          bounce.Direction = CosineAround(n, rng);
+          bounces[static_cast<std::size_t>(j) * size + i] = bounce;
         }
       }
     });
-  });
-  rows.push_back({ "diffuse bounces incoherent, single rays", threads, primaryCount, incoherent, "rays" });
-  const double incoherentPackets = best([&] {
-    tracePackets([&](int i, int j) { return bounces[static_cast<std::size_t>(j) * size + i]; });
-  });
-  rows.push_back({ "diffuse bounces incoherent, 16-ray packets", threads, primaryCount, incoherentPackets, "rays" });
+  const double incoherent = best(
+    [&]
+    {
+      ForEachTile(size, size, 16, threads,
+        [&](const TileRange& tile)
+        {
+          for (int j = tile.Y0; j < tile.Y1; ++j)
+          {
+            for (int i = tile.X0; i < tile.X1; ++i)
+            {
+              embree.Intersect(bounces[static_cast<std::size_t>(j) * size + i]);
+            }
+          }
+        });
+    });
+  rows.push_back(
+    { "diffuse bounces incoherent, single rays", threads, primaryCount, incoherent, "rays" });
+  const double incoherentPackets = best(
+    [&] {
+      tracePackets([&](int i, int j) { return bounces[static_cast<std::size_t>(j) * size + i]; });
+    });
+  rows.push_back({ "diffuse bounces incoherent, 16-ray packets", threads, primaryCount,
+    incoherentPackets, "rays" });
 
   // Path tracer on the Cornell box.
   const TriangleScene box = MakeCornellBox();
@@ -230,25 +253,32 @@ int RunTraceBenchmark(const std::vector<std::string>& args)
     PathTracerSettings settings;
     settings.Threads = t;
     const PathTracer tracer(cornell, settings);
-    const double seconds = best([&] {
-      tracer.RenderImage(PinholeCamera(CornellCamera{}), cornellSize, cornellSize, cornellSamples, 1);
-    });
+    const double seconds = best(
+      [&]
+      {
+        tracer.RenderImage(
+          PinholeCamera(CornellCamera{}), cornellSize, cornellSize, cornellSamples, 1);
+      });
     rows.push_back({ "path tracer, Cornell box " + std::to_string(cornellSize) + "^2 x " +
-        std::to_string(cornellSamples) + " spp", t, static_cast<double>(cornellSize) * cornellSize * cornellSamples,
-      seconds, "paths" });
+        std::to_string(cornellSamples) + " spp",
+      t, static_cast<double>(cornellSize) * cornellSize * cornellSamples, seconds, "paths" });
     if (t == threads)
     {
       break;
     }
   }
 
-  std::cout << "\n" << std::left << std::setw(52) << "case" << std::right << std::setw(8) << "threads"
-            << std::setw(12) << "count" << std::setw(10) << "seconds" << std::setw(14) << "M per second" << "\n";
+  std::cout << "\n"
+            << std::left << std::setw(52) << "case" << std::right << std::setw(8) << "threads"
+            << std::setw(12) << "count" << std::setw(10) << "seconds" << std::setw(14)
+            << "M per second"
+            << "\n";
   for (const Row& row : rows)
   {
-    std::cout << std::left << std::setw(52) << row.Case << std::right << std::setw(8) << row.Threads << std::setw(12)
-              << std::setprecision(0) << row.Count << std::setw(10) << std::setprecision(3) << row.Seconds
-              << std::setw(14) << std::setprecision(2) << row.Count / row.Seconds / 1e6 << " " << row.Unit << "/s\n";
+    std::cout << std::left << std::setw(52) << row.Case << std::right << std::setw(8) << row.Threads
+              << std::setw(12) << std::setprecision(0) << row.Count << std::setw(10)
+              << std::setprecision(3) << row.Seconds << std::setw(14) << std::setprecision(2)
+              << row.Count / row.Seconds / 1e6 << " " << row.Unit << "/s\n";
   }
   if (cl.Has("--csv"))
   {
@@ -261,9 +291,9 @@ int RunTraceBenchmark(const std::vector<std::string>& args)
     csv << "case,threads,count,seconds,millions_per_second,unit,triangles\n";
     for (const Row& row : rows)
     {
-      csv << '"' << row.Case << "\"," << row.Threads << "," << std::setprecision(0) << row.Count << ","
-          << std::setprecision(4) << row.Seconds << "," << row.Count / row.Seconds / 1e6 << "," << row.Unit << ","
-          << sphere.TriangleCount() << "\n";
+      csv << '"' << row.Case << "\"," << row.Threads << "," << std::setprecision(0) << row.Count
+          << "," << std::setprecision(4) << row.Seconds << "," << row.Count / row.Seconds / 1e6
+          << "," << row.Unit << "," << sphere.TriangleCount() << "\n";
     }
     std::cout << "wrote " << cl.Get("--csv") << "\n";
   }

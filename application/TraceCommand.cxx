@@ -14,8 +14,8 @@
 #include "vtkOIIOImageWriter.h"
 
 #include <vtkCallbackCommand.h>
-#include <vtkDataArray.h>
 #include <vtkCamera.h>
+#include <vtkDataArray.h>
 #include <vtkFloatArray.h>
 #include <vtkImageActor.h>
 #include <vtkImageData.h>
@@ -56,8 +56,10 @@ vtkSmartPointer<vtkImageData> ToDisplayBytes(const RgbImage& image)
   auto* out = static_cast<unsigned char*>(bytes->GetScalarPointer());
   for (std::size_t v = 0; v < image.Rgb.size(); ++v)
   {
-    const float linear = std::min(1.0f, std::max(0.0f, std::isfinite(image.Rgb[v]) ? image.Rgb[v] : 0.0f));
-    const float encoded = linear <= 0.0031308f ? 12.92f * linear : 1.055f * std::pow(linear, 1.0f / 2.4f) - 0.055f;
+    const float linear =
+      std::min(1.0f, std::max(0.0f, std::isfinite(image.Rgb[v]) ? image.Rgb[v] : 0.0f));
+    const float encoded =
+      linear <= 0.0031308f ? 12.92f * linear : 1.055f * std::pow(linear, 1.0f / 2.4f) - 0.055f;
     out[v] = static_cast<unsigned char>(encoded * 255.0f + 0.5f);
   }
   return bytes;
@@ -97,7 +99,8 @@ struct ImageWindow
   {
     this->Shown->SetDimensions(width, height, 1);
     this->Shown->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
-    std::fill_n(static_cast<unsigned char*>(this->Shown->GetScalarPointer()), 3 * width * height, 0);
+    std::fill_n(
+      static_cast<unsigned char*>(this->Shown->GetScalarPointer()), 3 * width * height, 0);
     this->Actor->GetMapper()->SetInputData(this->Shown);
     this->Renderer->AddActor(this->Actor);
     this->Window->AddRenderer(this->Renderer);
@@ -134,7 +137,8 @@ bool WriteObj(const TriangleScene& scene, const std::string& objFile)
     return false;
   }
   const std::string mtlName = mtlFile.substr(mtlFile.find_last_of('/') + 1);
-  obj << "# Mesolight scene (millimetres, y up, faces counter-clockwise from the front)\nmtllib " << mtlName << "\n";
+  obj << "# Mesolight scene (millimetres, y up, faces counter-clockwise from the front)\nmtllib "
+      << mtlName << "\n";
   for (const glm::vec3& p : scene.Positions)
   {
     obj << "v " << p.x << " " << p.y << " " << p.z << "\n";
@@ -147,12 +151,13 @@ bool WriteObj(const TriangleScene& scene, const std::string& objFile)
       current = scene.MaterialIds[t];
       obj << "usemtl " << scene.Materials[current].Name << "\n";
     }
-    obj << "f " << scene.Triangles[t].x + 1 << " " << scene.Triangles[t].y + 1 << " " << scene.Triangles[t].z + 1 << "\n";
+    obj << "f " << scene.Triangles[t].x + 1 << " " << scene.Triangles[t].y + 1 << " "
+        << scene.Triangles[t].z + 1 << "\n";
   }
   for (const SceneMaterial& m : scene.Materials)
   {
-    mtl << "newmtl " << m.Name << "\nKd " << m.Diffuse.x << " " << m.Diffuse.y << " " << m.Diffuse.z << "\nKe "
-        << m.Emission.x << " " << m.Emission.y << " " << m.Emission.z << "\n";
+    mtl << "newmtl " << m.Name << "\nKd " << m.Diffuse.x << " " << m.Diffuse.y << " " << m.Diffuse.z
+        << "\nKe " << m.Emission.x << " " << m.Emission.y << " " << m.Emission.z << "\n";
   }
   return static_cast<bool>(obj) && static_cast<bool>(mtl);
 }
@@ -161,12 +166,13 @@ bool WriteObj(const TriangleScene& scene, const std::string& objFile)
 // light, block faces) over the pixels whose 3 x 3 neighbourhood sees only that quad, ours
 // against another renderer's linear image of the same view. True when every region with
 // enough pixels agrees within `tolerance` (relative, per channel, for channels above 0.02).
-bool CompareRegions(const TriangleScene& box, const RgbImage& ours, const RgbImage& theirs, double tolerance)
+bool CompareRegions(
+  const TriangleScene& box, const RgbImage& ours, const RgbImage& theirs, double tolerance)
 {
   if (ours.Width != theirs.Width || ours.Height != theirs.Height)
   {
-    std::cerr << "compare: image sizes differ (" << ours.Width << "x" << ours.Height << " vs " << theirs.Width << "x"
-              << theirs.Height << ")\n";
+    std::cerr << "compare: image sizes differ (" << ours.Width << "x" << ours.Height << " vs "
+              << theirs.Width << "x" << theirs.Height << ")\n";
     return false;
   }
   const EmbreeScene embree(box);
@@ -178,7 +184,8 @@ bool CompareRegions(const TriangleScene& box, const RgbImage& ours, const RgbIma
     for (int i = 0; i < w; ++i)
     {
       const SceneHit hit = embree.Intersect(camera.Ray(i + 0.5f, j + 0.5f, w, h));
-      region[static_cast<std::size_t>(j) * w + i] = hit.Hit() ? static_cast<int>(hit.Triangle / 2) : -1;
+      region[static_cast<std::size_t>(j) * w + i] =
+        hit.Hit() ? static_cast<int>(hit.Triangle / 2) : -1;
     }
   }
   const char* names[] = { "floor", "ceiling", "back wall", "red wall", "green wall", "light" };
@@ -209,8 +216,10 @@ bool CompareRegions(const TriangleScene& box, const RgbImage& ours, const RgbIma
     }
   }
   bool agree = true;
-  std::cout << std::left << std::setw(16) << "region" << std::right << std::setw(8) << "pixels" << std::setw(30)
-            << "mesolight (R G B)" << std::setw(30) << "other (R G B)" << std::setw(10) << "max err" << "\n";
+  std::cout << std::left << std::setw(16) << "region" << std::right << std::setw(8) << "pixels"
+            << std::setw(30) << "mesolight (R G B)" << std::setw(30) << "other (R G B)"
+            << std::setw(10) << "max err"
+            << "\n";
   for (const auto& entry : sums)
   {
     const int r = entry.first;
@@ -229,13 +238,17 @@ bool CompareRegions(const TriangleScene& box, const RgbImage& ours, const RgbIma
       }
     }
     agree = agree && worst <= tolerance;
-    const std::string name = r < 6 ? names[r] : (r < 11 ? "short block " : "tall block ") + std::to_string(r < 11 ? r - 5 : r - 10);
-    std::cout << std::left << std::setw(16) << name << std::right << std::setw(8) << counts[r] << std::fixed
-              << std::setprecision(4) << std::setw(10) << a.x << std::setw(10) << a.y << std::setw(10) << a.z
-              << std::setw(10) << b.x << std::setw(10) << b.y << std::setw(10) << b.z << std::setw(9)
-              << std::setprecision(1) << 100.0 * worst << "%\n";
+    const std::string name = r < 6
+      ? names[r]
+      : (r < 11 ? "short block " : "tall block ") + std::to_string(r < 11 ? r - 5 : r - 10);
+    std::cout << std::left << std::setw(16) << name << std::right << std::setw(8) << counts[r]
+              << std::fixed << std::setprecision(4) << std::setw(10) << a.x << std::setw(10) << a.y
+              << std::setw(10) << a.z << std::setw(10) << b.x << std::setw(10) << b.y
+              << std::setw(10) << b.z << std::setw(9) << std::setprecision(1) << 100.0 * worst
+              << "%\n";
   }
-  std::cout << (agree ? "regions agree" : "REGIONS DIFFER") << " (tolerance " << 100.0 * tolerance << "%)\n";
+  std::cout << (agree ? "regions agree" : "REGIONS DIFFER") << " (tolerance " << 100.0 * tolerance
+            << "%)\n";
   return agree;
 }
 
@@ -244,7 +257,8 @@ int TraceCornell(const CommandLine& cl, int width, int height, int threads, bool
   std::string error;
   int samples = 64;
   int seed = 1;
-  if (!cl.GetInt("--samples", 1, 1 << 20, samples, error) || !cl.GetInt("--seed", 0, 1 << 30, seed, error))
+  if (!cl.GetInt("--samples", 1, 1 << 20, samples, error) ||
+    !cl.GetInt("--seed", 0, 1 << 30, seed, error))
   {
     std::cerr << "mesolight trace: " << error << "\n";
     return 2;
@@ -273,10 +287,9 @@ int TraceCornell(const CommandLine& cl, int width, int height, int threads, bool
     std::cerr << "mesolight trace: path tracing failed\n";
     return 1;
   }
-  std::cout << "cornell: " << width << "x" << height << ", " << samples << " paths per pixel in " << std::fixed
-            << std::setprecision(2) << seconds << " s ("
-            << std::setprecision(3) << static_cast<double>(width) * height * samples / seconds / 1e6
-            << " M paths/s)\n";
+  std::cout << "cornell: " << width << "x" << height << ", " << samples << " paths per pixel in "
+            << std::fixed << std::setprecision(2) << seconds << " s (" << std::setprecision(3)
+            << static_cast<double>(width) * height * samples / seconds / 1e6 << " M paths/s)\n";
   auto bytes = ToDisplayBytes(image);
   const std::string out = cl.Get("--out");
   if (!WritePng(bytes, out))
@@ -304,7 +317,8 @@ int TraceCornell(const CommandLine& cl, int width, int height, int threads, bool
     vtkDataArray* values = other->GetPointData()->GetScalars();
     if (!values || dims[0] < 1 || values->GetNumberOfComponents() < 3)
     {
-      std::cerr << "mesolight trace: cannot read an RGB image from " << cl.Get("--compare-exr") << "\n";
+      std::cerr << "mesolight trace: cannot read an RGB image from " << cl.Get("--compare-exr")
+                << "\n";
       return 1;
     }
     RgbImage theirs(dims[0], dims[1]);
@@ -314,7 +328,8 @@ int TraceCornell(const CommandLine& cl, int width, int height, int threads, bool
       {
         for (int c = 0; c < 3; ++c)
         {
-          theirs.Pixel(i, j)[c] = static_cast<float>(values->GetComponent(static_cast<vtkIdType>(j) * dims[0] + i, c));
+          theirs.Pixel(i, j)[c] =
+            static_cast<float>(values->GetComponent(static_cast<vtkIdType>(j) * dims[0] + i, c));
         }
       }
     }
@@ -345,15 +360,20 @@ int RunTraceCommand(const std::vector<std::string>& args)
     "mesolight trace [options]\n\nRay traces a built-in scene on the CPU with Embree "
     "(Ahern 1999: texture-mapped\nmaterial channels, glossy reflection, adaptive supersampling, "
     "progressive\nrefinement), or path traces the Cornell box.\n");
-  cl.AddValue("--scene", "NAME", "spheres (textured spheres on a checker), ring (bump + roughness maps), "
-                                 "cornell (path-traced reference)", "spheres");
+  cl.AddValue("--scene", "NAME",
+    "spheres (textured spheres on a checker), ring (bump + roughness maps), "
+    "cornell (path-traced reference)",
+    "spheres");
   cl.AddValue("--width", "N", "image width in pixels", "640");
   cl.AddValue("--height", "N", "image height in pixels", "480");
   cl.AddValue("--samples", "N", "cornell: paths per pixel", "64");
   cl.AddValue("--seed", "N", "cornell: random seed of the paths", "1");
-  cl.AddFlag("--adaptive", "adaptive supersampling: 3x3 rays where a pixel differs from a neighbour");
-  cl.AddValue("--threshold", "X", "adaptive supersampling threshold (largest RGB difference, 0..1)", "0.1");
-  cl.AddFlag("--progressive", "progressive refinement: 1 ray, 2x2 blocks, 4x4 ... (shown as it happens)");
+  cl.AddFlag(
+    "--adaptive", "adaptive supersampling: 3x3 rays where a pixel differs from a neighbour");
+  cl.AddValue(
+    "--threshold", "X", "adaptive supersampling threshold (largest RGB difference, 0..1)", "0.1");
+  cl.AddFlag(
+    "--progressive", "progressive refinement: 1 ray, 2x2 blocks, 4x4 ... (shown as it happens)");
   cl.AddFlag("--nearest", "nearest texture lookups instead of bilinear");
   cl.AddValue("--glossy-samples", "N", "distributed rays per rough reflection", "16");
   cl.AddValue("--max-depth", "N", "reflection recursion limit", "5");
@@ -361,8 +381,9 @@ int RunTraceCommand(const std::vector<std::string>& args)
   cl.AddValue("--out", "FILE.png", "where to write the image", "mesolight-trace.png");
   cl.AddValue("--exr", "FILE.exr", "cornell: also write the linear radiance");
   cl.AddValue("--export-obj", "FILE.obj", "cornell: write the box as OBJ + MTL and stop");
-  cl.AddValue("--compare-exr", "FILE.exr", "cornell: compare mean radiance per wall with another renderer's "
-                                           "linear image of the same view (exit 1 when they differ)");
+  cl.AddValue("--compare-exr", "FILE.exr",
+    "cornell: compare mean radiance per wall with another renderer's "
+    "linear image of the same view (exit 1 when they differ)");
   cl.AddValue("--tolerance", "X", "relative tolerance of --compare-exr", "0.05");
   cl.AddFlag("--offscreen", "only write the image, never open a window");
   std::string error;
@@ -373,9 +394,12 @@ int RunTraceCommand(const std::vector<std::string>& args)
   }
   int width = 0, height = 0, glossy = 0, depth = 0, threads = 0;
   double threshold = 0.0;
-  if (!cl.GetInt("--width", 1, 16384, width, error) || !cl.GetInt("--height", 1, 16384, height, error) ||
-    !cl.GetInt("--glossy-samples", 1, 1024, glossy, error) || !cl.GetInt("--max-depth", 0, 64, depth, error) ||
-    !cl.GetInt("--threads", 0, 1024, threads, error) || !cl.GetDouble("--threshold", 0.0, 10.0, threshold, error))
+  if (!cl.GetInt("--width", 1, 16384, width, error) ||
+    !cl.GetInt("--height", 1, 16384, height, error) ||
+    !cl.GetInt("--glossy-samples", 1, 1024, glossy, error) ||
+    !cl.GetInt("--max-depth", 0, 64, depth, error) ||
+    !cl.GetInt("--threads", 0, 1024, threads, error) ||
+    !cl.GetDouble("--threshold", 0.0, 10.0, threshold, error))
   {
     return cl.UsageError(error);
   }
@@ -418,10 +442,12 @@ int RunTraceCommand(const std::vector<std::string>& args)
     window.reset(new ImageWindow(width, height, "mesolight trace"));
     window->Window->Render();
     refinement->SetClientData(window.get());
-    refinement->SetCallback([](vtkObject* caller, unsigned long, void* client, void*) {
-      auto* shown = static_cast<ImageWindow*>(client);
-      shown->Show(static_cast<vtkEmbreeRayTracer*>(caller)->GetPartialImage());
-    });
+    refinement->SetCallback(
+      [](vtkObject* caller, unsigned long, void* client, void*)
+      {
+        auto* shown = static_cast<ImageWindow*>(client);
+        shown->Show(static_cast<vtkEmbreeRayTracer*>(caller)->GetPartialImage());
+      });
     tracer->AddObserver(vtkEmbreeRayTracer::RefinementEvent, refinement);
   }
   const auto start = std::chrono::steady_clock::now();
@@ -435,11 +461,12 @@ int RunTraceCommand(const std::vector<std::string>& args)
     std::cerr << "mesolight trace: ray tracing failed\n";
     return 1;
   }
-  std::cout << sceneName << ": " << width << "x" << height << " in " << std::fixed << std::setprecision(2)
-            << seconds << " s; " << tracer->GetPrimaryRays() << " primary, " << tracer->GetShadowRays()
-            << " shadow, " << tracer->GetSecondaryRays() << " reflection rays; "
-            << tracer->GetSupersampledPixels() << " pixels supersampled; " << tracer->GetAnalyticSphereCount()
-            << " spheres, " << tracer->GetTriangleCount() << " triangles\n";
+  std::cout << sceneName << ": " << width << "x" << height << " in " << std::fixed
+            << std::setprecision(2) << seconds << " s; " << tracer->GetPrimaryRays() << " primary, "
+            << tracer->GetShadowRays() << " shadow, " << tracer->GetSecondaryRays()
+            << " reflection rays; " << tracer->GetSupersampledPixels() << " pixels supersampled; "
+            << tracer->GetAnalyticSphereCount() << " spheres, " << tracer->GetTriangleCount()
+            << " triangles\n";
   const std::string out = cl.Get("--out");
   // Only the RGB bytes go to the PNG.
   vtkNew<vtkImageData> bytes;

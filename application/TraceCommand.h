@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `mesolight trace` (the Embree ray tracer of Ahern 1999 on built-in scenes, and the path-traced
 // Cornell box) and `mesolight bench trace` (rays per second, path samples per second).
 #ifndef mesolight_TraceCommand_h

@@ -123,7 +123,8 @@ vtkSmartPointer<vtkImageData> MakeGlobeImage(int height)
     for (int i = 0; i < width; ++i)
     {
       const double longitude = 2.0 * Pi<double> * (i + 0.5) / width;
-      const double land = std::sin(3.0 * longitude + 1.3 * std::sin(2.0 * latitude)) * std::cos(latitude) +
+      const double land =
+        std::sin(3.0 * longitude + 1.3 * std::sin(2.0 * latitude)) * std::cos(latitude) +
         0.6 * std::sin(5.0 * longitude - 2.0 * latitude) * std::cos(3.0 * latitude) - 0.25;
       const bool ice = std::abs(latitude) > 0.42 * Pi<double>;
       if (ice)
@@ -146,7 +147,8 @@ vtkSmartPointer<vtkImageData> MakeGlobeImage(int height)
 vtkSmartPointer<vtkImageData> MakeKnotBumpImage(int width, int height, double strength)
 {
   // Height: two families of raised sinusoidal bands crossing over and under each other.
-  auto heightAt = [](double s, double t) {
+  auto heightAt = [](double s, double t)
+  {
     const double a = 0.5 + 0.5 * std::cos(2.0 * Pi<double> * (6.0 * s + 2.0 * t));
     const double b = 0.5 + 0.5 * std::cos(2.0 * Pi<double> * (6.0 * s - 2.0 * t));
     const double bandA = std::pow(a, 8.0);
@@ -163,10 +165,11 @@ vtkSmartPointer<vtkImageData> MakeKnotBumpImage(int width, int height, double st
     {
       const double s = (i + 0.5) * ds;
       const double t = (j + 0.5) * dt;
-      const double gs = (heightAt(s + ds, t) - heightAt(s - ds, t)) / (2.0 * width * ds) ;
+      const double gs = (heightAt(s + ds, t) - heightAt(s - ds, t)) / (2.0 * width * ds);
       const double gt = (heightAt(s, t + dt) - heightAt(s, t - dt)) / (2.0 * height * dt);
       // The normal of a height field tilts against the slope.
-      SetPixel(image, i, j, 0.5 - 0.5 * strength * gs * width / 64.0, 0.5 - 0.5 * strength * gt * height / 64.0, 1.0);
+      SetPixel(image, i, j, 0.5 - 0.5 * strength * gs * width / 64.0,
+        0.5 - 0.5 * strength * gt * height / 64.0, 1.0);
     }
   }
   return image;
@@ -191,7 +194,8 @@ bool BuildSpheresScene(vtkRenderer* renderer, vtkEmbreeRayTracer* tracer)
   left->GetProperty()->SetSpecular(0.6);
   left->GetProperty()->SetSpecularPower(200.0);
   renderer->AddActor(left);
-  tracer->SetMaterialMap(left, vtkEmbreeRayTracer::SHININESS_MAP, MakeCheckerImage(256, 8, 0.02, 1.0));
+  tracer->SetMaterialMap(
+    left, vtkEmbreeRayTracer::SHININESS_MAP, MakeCheckerImage(256, 8, 0.02, 1.0));
 
   auto middle = SphereActor(0.0, 1.0, 0.0, 1.0);
   middle->GetProperty()->SetDiffuseColor(0.1, 0.1, 0.12);
@@ -246,7 +250,8 @@ bool BuildRingScene(vtkRenderer* renderer, vtkEmbreeRayTracer* tracer)
   ring->GetProperty()->SetNormalScale(1.0);
   renderer->AddActor(ring);
   tracer->SetMaterialMap(ring, vtkEmbreeRayTracer::BUMP_MAP, MakeKnotBumpImage(512, 128, 1.0));
-  tracer->SetMaterialMap(ring, vtkEmbreeRayTracer::ROUGHNESS_MAP, MakeCheckerImage(64, 16, 0.0, 0.25));
+  tracer->SetMaterialMap(
+    ring, vtkEmbreeRayTracer::ROUGHNESS_MAP, MakeCheckerImage(64, 16, 0.0, 0.25));
 
   auto floor = GroundActor(5.0, 3.0);
   vtkNew<vtkTexture> wood;
@@ -256,7 +261,8 @@ bool BuildRingScene(vtkRenderer* renderer, vtkEmbreeRayTracer* tracer)
   floor->GetProperty()->SetSpecular(0.35);
   floor->GetProperty()->SetSpecularPower(30.0);
   renderer->AddActor(floor);
-  tracer->SetMaterialMap(floor, vtkEmbreeRayTracer::ROUGHNESS_MAP, MakeCheckerImage(256, 8, 0.0, 0.3));
+  tracer->SetMaterialMap(
+    floor, vtkEmbreeRayTracer::ROUGHNESS_MAP, MakeCheckerImage(256, 8, 0.0, 0.3));
 
   AddLight(renderer, -4.0, 6.0, 5.0, 0.7);
   AddLight(renderer, 5.0, 4.0, 3.0, 0.4);

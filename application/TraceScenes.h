@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Built-in scenes of `mesolight trace` (Ahern 1999's pictures): three textured spheres on a
 // checker plane, and a bump- and roughness-mapped ring. Procedural textures, made in code.
 #ifndef mesolight_TraceScenes_h

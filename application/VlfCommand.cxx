@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "VlfCommand.h"
 
 #include "AnalyticCases.h"
@@ -6,10 +7,10 @@
 
 #include "EmbreeScene.h"
 #include "LightField.h"
-#include "MathConstants.h"
-#include "ParallelFor.h"
 #include "Lookup.h"
+#include "MathConstants.h"
 #include "ObjScene.h"
+#include "ParallelFor.h"
 #include "PatchComparison.h"
 #include "PathTracer.h"
 #include "Propagation.h"
@@ -19,8 +20,8 @@
 #include <vtkImageData.h>
 #include <vtkNew.h>
 #include <vtkPNGWriter.h>
-#include <vtkUnsignedCharArray.h>
 #include <vtkPointData.h>
+#include <vtkUnsignedCharArray.h>
 
 #include <glm/geometric.hpp>
 
@@ -31,9 +32,9 @@
 #include <cstdlib>
 #include <fstream>
 #include <functional>
+#include <iostream>
 #include <map>
 #include <memory>
-#include <iostream>
 #include <sstream>
 
 namespace mesolight
@@ -72,12 +73,14 @@ void ResetPeakResident()
 ProgressCallback PrintedProgress(const std::string& what)
 {
   auto last = std::make_shared<int>(-1);
-  return [what, last](double fraction) {
+  return [what, last](double fraction)
+  {
     const int step = static_cast<int>(fraction * 10.0);
     if (step != *last)
     {
       *last = step;
-      std::cerr << "\r" << what << " " << step * 10 << "%" << (step >= 10 ? "\n" : "") << std::flush;
+      std::cerr << "\r" << what << " " << step * 10 << "%" << (step >= 10 ? "\n" : "")
+                << std::flush;
     }
     return true;
   };
@@ -105,8 +108,9 @@ int Propagate(const std::vector<std::string>& args)
   }
   int directions = 0, rays = 0, tiles = 0, iterations = 0;
   double budget = 0.0;
-  if (!cl.GetInt("--directions", 3, 1 << 26, directions, error) || !cl.GetInt("--rays", 1, 4096, rays, error) ||
-    !cl.GetInt("--tiles", 0, 4096, tiles, error) || !cl.GetInt("--iterations", 0, 10000, iterations, error) ||
+  if (!cl.GetInt("--directions", 3, 1 << 26, directions, error) ||
+    !cl.GetInt("--rays", 1, 4096, rays, error) || !cl.GetInt("--tiles", 0, 4096, tiles, error) ||
+    !cl.GetInt("--iterations", 0, 10000, iterations, error) ||
     !cl.GetDouble("--memory-budget", 1e-3, 1e6, budget, error))
   {
     return cl.UsageError(error);
@@ -133,8 +137,9 @@ int Propagate(const std::vector<std::string>& args)
   }
   if (vlf::FileExists(out) && !resume && !cl.Has("--force"))
   {
-    std::cerr << "mesolight vlf propagate: '" << out
-              << "' already holds a light field: add --resume to continue it or --force to replace it\n";
+    std::cerr
+      << "mesolight vlf propagate: '" << out
+      << "' already holds a light field: add --resume to continue it or --force to replace it\n";
     return 1;
   }
   if (resume && !vlf::FileExists(out))
@@ -173,8 +178,8 @@ int Propagate(const std::vector<std::string>& args)
           std::cerr << "mesolight vlf propagate: warning: " << w << "\n";
         }
         scene = std::move(read.Scene);
-        std::cout << "scene: " << cl.Positional()[0] << " (" << scene.TriangleCount() << " triangles, "
-                  << scene.Materials.size() << " materials)\n";
+        std::cout << "scene: " << cl.Positional()[0] << " (" << scene.TriangleCount()
+                  << " triangles, " << scene.Materials.size() << " materials)\n";
       }
       vlf::LightFieldSettings settings;
       settings.Directions = static_cast<std::size_t>(directions);
@@ -182,26 +187,29 @@ int Propagate(const std::vector<std::string>& args)
       settings.TilesPerSide = tiles > 0 ? tiles : std::max(1, rays / 8);
       settings.MemoryBudget = budgetBytes;
       const vlf::MemoryEstimate estimate = vlf::EstimateMemory(scene, settings);
-      std::cout << "light field: " << directions << " directions x " << rays << "x" << rays << " rays, "
-                << settings.TilesPerSide << "x" << settings.TilesPerSide << " tiles; memory up to "
-                << estimate.Describe() << "\n";
+      std::cout << "light field: " << directions << " directions x " << rays << "x" << rays
+                << " rays, " << settings.TilesPerSide << "x" << settings.TilesPerSide
+                << " tiles; memory up to " << estimate.Describe() << "\n";
       const Clock::time_point start = Clock::now();
       field = vlf::LightField::Build(scene, settings, PrintedProgress("tracing subfields"));
-      std::cout << "traced in " << Seconds(start) << " s, " << vlf::FormatBytes(field->AllocatedBytes())
-                << " allocated\n";
+      std::cout << "traced in " << Seconds(start) << " s, "
+                << vlf::FormatBytes(field->AllocatedBytes()) << " allocated\n";
     }
     vlf::PropagationOptions options;
     options.Progress = PrintedProgress("propagating");
-    vlf::Propagate(*field, iterations, options, [&](const vlf::LightField& f) {
-      vlf::WriteSnapshot(f, out);
-      const vlf::LightField::IterationEnergy& e = f.EnergyLog.back();
-      std::printf("iteration %d: %.2f s, shot %.4g, escaped %.4g, absorbed %.4g, left to shoot %.4g "
-                  "(energy balance error %.1e); wrote %s\n",
-        e.Iteration, e.Seconds, e.Shot[0] + e.Shot[1] + e.Shot[2],
-        e.Escaped[0] + e.Escaped[1] + e.Escaped[2], e.Absorbed[0] + e.Absorbed[1] + e.Absorbed[2],
-        e.Unshot[0] + e.Unshot[1] + e.Unshot[2], e.ConservationError(), out.c_str());
-      std::fflush(stdout);
-    });
+    vlf::Propagate(*field, iterations, options,
+      [&](const vlf::LightField& f)
+      {
+        vlf::WriteSnapshot(f, out);
+        const vlf::LightField::IterationEnergy& e = f.EnergyLog.back();
+        std::printf(
+          "iteration %d: %.2f s, shot %.4g, escaped %.4g, absorbed %.4g, left to shoot %.4g "
+          "(energy balance error %.1e); wrote %s\n",
+          e.Iteration, e.Seconds, e.Shot[0] + e.Shot[1] + e.Shot[2],
+          e.Escaped[0] + e.Escaped[1] + e.Escaped[2], e.Absorbed[0] + e.Absorbed[1] + e.Absorbed[2],
+          e.Unshot[0] + e.Unshot[1] + e.Unshot[2], e.ConservationError(), out.c_str());
+        std::fflush(stdout);
+      });
     if (field->IterationsDone >= iterations && !vlf::FileExists(out))
     {
       vlf::WriteSnapshot(*field, out); // zero iterations: the traced field
@@ -253,9 +261,11 @@ int Render(const std::vector<std::string>& args)
   {
     char x = 0;
     std::istringstream in(cl.Get("--size"));
-    if (!(in >> width >> x >> height) || x != 'x' || width < 1 || height < 1 || width > 16384 || height > 16384)
+    if (!(in >> width >> x >> height) || x != 'x' || width < 1 || height < 1 || width > 16384 ||
+      height > 16384)
     {
-      std::cerr << "mesolight vlf render: --size '" << cl.Get("--size") << "' is not WxH in [1, 16384]\n";
+      std::cerr << "mesolight vlf render: --size '" << cl.Get("--size")
+                << "' is not WxH in [1, 16384]\n";
       return 2;
     }
   }
@@ -271,7 +281,8 @@ int Render(const std::vector<std::string>& args)
     const TriangleScene& unit = field->Scene();
     glm::vec3 lower, upper;
     SceneBounds(unit, lower, upper);
-    const glm::vec3 worldLower = vlf::ToWorld(*field, lower), worldUpper = vlf::ToWorld(*field, upper);
+    const glm::vec3 worldLower = vlf::ToWorld(*field, lower),
+                    worldUpper = vlf::ToWorld(*field, upper);
     glm::vec3 eye, focal;
     double up[3] = { 0.0, 1.0, 0.0 };
     if (!cl.GetDoubleVector("--view-up", 3, up))
@@ -324,42 +335,46 @@ int Render(const std::vector<std::string>& args)
     const vlf::Lookup lookup(*field);
     std::vector<unsigned char> pixels(static_cast<std::size_t>(width) * height * 3);
     const Clock::time_point start = Clock::now();
-    ParallelFor(0, static_cast<std::size_t>(height), 1, [&](std::size_t r0, std::size_t r1) {
-      for (std::size_t row = r0; row < r1; ++row)
+    ParallelFor(0, static_cast<std::size_t>(height), 1,
+      [&](std::size_t r0, std::size_t r1)
       {
-        for (int column = 0; column < width; ++column)
+        for (std::size_t row = r0; row < r1; ++row)
         {
-          const float sx = (2.0f * (column + 0.5f) / width - 1.0f) * tanHalf * aspect;
-          const float sy = (2.0f * (row + 0.5f) / height - 1.0f) * tanHalf;
-          SceneRay ray;
-          ray.Origin = eyeUnit;
-          ray.Direction = glm::normalize(forward + sx * right + sy * trueUp);
-          const SceneHit hit = embree.Intersect(ray);
-          glm::vec3 radiance(0.0f);
-          if (hit.Hit())
+          for (int column = 0; column < width; ++column)
           {
-            const std::uint32_t s = field->SurfaceOfTriangle(hit.Triangle);
-            const glm::vec3 p = ray.Origin + hit.T * ray.Direction;
-            const SceneMaterial& m = unit.MaterialOf(hit.Triangle);
-            const bool front = s != vlf::NoSurface && glm::dot(field->Surfaces()[s].Normal, ray.Direction) < 0.0f;
-            if (front)
+            const float sx = (2.0f * (column + 0.5f) / width - 1.0f) * tanHalf * aspect;
+            const float sy = (2.0f * (row + 0.5f) / height - 1.0f) * tanHalf;
+            SceneRay ray;
+            ray.Origin = eyeUnit;
+            ray.Direction = glm::normalize(forward + sx * right + sy * trueUp);
+            const SceneHit hit = embree.Intersect(ray);
+            glm::vec3 radiance(0.0f);
+            if (hit.Hit())
             {
-              radiance = glm::length(m.Specular) > 0.0f
-                ? lookup.RadianceLeaving(s, p, -ray.Direction)
-                : lookup.DiffuseRadiance(s, p);
+              const std::uint32_t s = field->SurfaceOfTriangle(hit.Triangle);
+              const glm::vec3 p = ray.Origin + hit.T * ray.Direction;
+              const SceneMaterial& m = unit.MaterialOf(hit.Triangle);
+              const bool front =
+                s != vlf::NoSurface && glm::dot(field->Surfaces()[s].Normal, ray.Direction) < 0.0f;
+              if (front)
+              {
+                radiance = glm::length(m.Specular) > 0.0f
+                  ? lookup.RadianceLeaving(s, p, -ray.Direction)
+                  : lookup.DiffuseRadiance(s, p);
+              }
+            }
+            // Row 0 of a VTK image is the bottom row.
+            unsigned char* rgb = &pixels[(row * static_cast<std::size_t>(width) + column) * 3];
+            for (int c = 0; c < 3; ++c)
+            {
+              const double v = std::max(0.0, std::min(1.0, exposure * radiance[c]));
+              const double srgb =
+                v <= 0.0031308 ? 12.92 * v : 1.055 * std::pow(v, 1.0 / 2.4) - 0.055;
+              rgb[c] = static_cast<unsigned char>(std::lround(255.0 * srgb));
             }
           }
-          // Row 0 of a VTK image is the bottom row.
-          unsigned char* rgb = &pixels[(row * static_cast<std::size_t>(width) + column) * 3];
-          for (int c = 0; c < 3; ++c)
-          {
-            const double v = std::max(0.0, std::min(1.0, exposure * radiance[c]));
-            const double srgb = v <= 0.0031308 ? 12.92 * v : 1.055 * std::pow(v, 1.0 / 2.4) - 0.055;
-            rgb[c] = static_cast<unsigned char>(std::lround(255.0 * srgb));
-          }
         }
-      }
-    });
+      });
     vtkNew<vtkImageData> image;
     image->SetDimensions(width, height, 1);
     vtkNew<vtkUnsignedCharArray> colours;
@@ -408,9 +423,11 @@ vlf::ReferenceRadiance CornellReference(const TriangleScene& world)
   auto scene = std::make_shared<TriangleScene>(world);
   auto embree = std::make_shared<EmbreeScene>(*scene);
   auto tracer = std::make_shared<PathTracer>(*embree);
-  return [scene, embree, tracer](std::uint32_t triangle, const glm::vec3& point) {
+  return [scene, embree, tracer](std::uint32_t triangle, const glm::vec3& point)
+  {
     const std::uint64_t seed = (static_cast<std::uint64_t>(triangle) << 32) ^
-      std::hash<float>{}(point.x) ^ (std::hash<float>{}(point.y) << 1) ^ (std::hash<float>{}(point.z) << 2);
+      std::hash<float>{}(point.x) ^ (std::hash<float>{}(point.y) << 1) ^
+      (std::hash<float>{}(point.z) << 2);
     return tracer->DiffuseRadianceLeaving(triangle, point, 256, seed);
   };
 }
@@ -450,8 +467,9 @@ int RunVlfBenchmark(const std::vector<std::string>& args)
   std::printf("process resident memory before any light field: %s (VTK, Embree, TBB loaded)\n",
     vlf::FormatBytes(PeakResidentBytes()).c_str());
   std::ostringstream csv;
-  csv << "directions,rays,tiles,iteration,build_s,propagate_s,total_s,estimate_bytes,allocated_bytes,"
-         "peak_rss_bytes,energy_error,floor_mean_error,floor_rms_error,furnace_error,cornell_error\n";
+  csv
+    << "directions,rays,tiles,iteration,build_s,propagate_s,total_s,estimate_bytes,allocated_bytes,"
+       "peak_rss_bytes,energy_error,floor_mean_error,floor_rms_error,furnace_error,cornell_error\n";
   std::map<int, ChartSeries> timeSeries, errorSeries;
   std::printf("%10s %5s %5s %4s %9s %11s %9s %11s %11s %10s %9s %9s %9s\n", "directions", "rays",
     "tiles", "iter", "build s", "propagate s", "total s", "estimate", "peak RSS", "energy err",
@@ -495,21 +513,26 @@ int RunVlfBenchmark(const std::vector<std::string>& args)
             std::cout << r.Table();
           }
           const std::uint64_t peak = PeakResidentBytes();
-          rows.push_back({ it, e.ConservationError(), propagate, peak, field->AllocatedBytes(), cornellError });
+          rows.push_back(
+            { it, e.ConservationError(), propagate, peak, field->AllocatedBytes(), cornellError });
         }
         field.reset();
         // Accuracy at these settings on the analytic cases (small scenes, quick).
         double floorMean = 0.0, floorRms = 0.0, furnace = 0.0;
         {
           const float albedo = 0.5f, le = 2.0f;
-          std::unique_ptr<vlf::LightField> f = vlf::LightField::Build(vlf::MakeEmitterOverFloor(1.0f, 1.0f, 2.0f, albedo, le), settings);
+          std::unique_ptr<vlf::LightField> f = vlf::LightField::Build(
+            vlf::MakeEmitterOverFloor(1.0f, 1.0f, 2.0f, albedo, le), settings);
           vlf::Propagate(*f, 1);
           const TriangleScene& unit = f->Scene();
-          const vlf::PatchComparisonResult r = vlf::ComparePatches(*f,
-            [&](std::uint32_t t, const glm::vec3& w) {
+          const vlf::PatchComparisonResult r = vlf::ComparePatches(
+            *f,
+            [&](std::uint32_t t, const glm::vec3& w)
+            {
               return unit.MaterialOf(t).Emission.x > 0.0f
                 ? glm::vec3(le)
-                : glm::vec3(static_cast<float>(albedo * le * vlf::SquareFormFactor(1.0, 1.0, w.x, w.y)));
+                : glm::vec3(
+                    static_cast<float>(albedo * le * vlf::SquareFormFactor(1.0, 1.0, w.x, w.y)));
             },
             1000);
           floorMean = r.Patches[0].MeanError;
@@ -550,19 +573,22 @@ int RunVlfBenchmark(const std::vector<std::string>& args)
 
         for (const Row& row : rows)
         {
-          std::printf("%10d %5d %5d %4d %9.2f %11.2f %9.2f %11s %11s %10.1e %8.2f%% %8.2f%% %8.2f%%\n",
+          std::printf(
+            "%10d %5d %5d %4d %9.2f %11.2f %9.2f %11s %11s %10.1e %8.2f%% %8.2f%% %8.2f%%\n",
             directions, rays, settings.TilesPerSide, row.Iteration, build, row.Propagate,
             build + row.Propagate, vlf::FormatBytes(estimate.TotalBytes).c_str(),
             vlf::FormatBytes(row.Peak).c_str(), row.Energy, 100.0 * floorMean, 100.0 * floorRms,
             100.0 * furnace);
-          csv << directions << ',' << rays << ',' << settings.TilesPerSide << ',' << row.Iteration << ','
-              << build << ',' << row.Propagate << ',' << build + row.Propagate << ','
+          csv << directions << ',' << rays << ',' << settings.TilesPerSide << ',' << row.Iteration
+              << ',' << build << ',' << row.Propagate << ',' << build + row.Propagate << ','
               << estimate.TotalBytes << ',' << row.Allocated << ',' << row.Peak << ',' << row.Energy
-              << ',' << floorMean << ',' << floorRms << ',' << furnace << ',' << row.Cornell << '\n';
+              << ',' << floorMean << ',' << floorRms << ',' << furnace << ',' << row.Cornell
+              << '\n';
         }
         std::fflush(stdout);
         ChartSeries& t = timeSeries[directions];
-        t.Name = std::to_string(directions) + " directions, " + std::to_string(iterations) + " iterations";
+        t.Name =
+          std::to_string(directions) + " directions, " + std::to_string(iterations) + " iterations";
         t.X.push_back(rays);
         t.Y.push_back(build + propagate);
         ChartSeries& er = errorSeries[directions];
@@ -604,7 +630,8 @@ int RunVlfBenchmark(const std::vector<std::string>& args)
       chart.Points.push_back(s.second);
     }
     ScatterChart errors;
-    errors.Title = "Floor under a square emitter: RMS error of the diffuse radiance vs the form factor";
+    errors.Title =
+      "Floor under a square emitter: RMS error of the diffuse radiance vs the form factor";
     errors.XLabel = "rays per subfield side";
     errors.YLabel = "RMS relative error (%)";
     for (auto& s : errorSeries)
@@ -614,7 +641,8 @@ int RunVlfBenchmark(const std::vector<std::string>& args)
     const std::string errorPlot = plot.size() > 4 && plot.substr(plot.size() - 4) == ".png"
       ? plot.substr(0, plot.size() - 4) + "-error.png"
       : plot + "-error.png";
-    if (!WriteScatterChartPng(chart, plot, error) || !WriteScatterChartPng(errors, errorPlot, error))
+    if (!WriteScatterChartPng(chart, plot, error) ||
+      !WriteScatterChartPng(errors, errorPlot, error))
     {
       std::cerr << "mesolight bench vlf: " << error << "\n";
       return 1;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // `mesolight vlf propagate|render` and `mesolight bench vlf`: the virtual light field (vtkVLF,
 // Wither 2005 §2.4) from the command line. docs/vlf.md has examples and measured figures.
 #ifndef mesolight_VlfCommand_h

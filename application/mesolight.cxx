@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // mesolight: render, bake and benchmark relief surfaces from the command line. The commands are
 // one table (Commands() below: name, usage, summary, handler); `mesolight --help` is printed from
 // it, and `mesolight COMMAND --help` by each command's CommandLine.
@@ -6,8 +7,8 @@
 #include "ImageCommands.h"
 #include "LightSetBenchmark.h"
 #include "LightsCommand.h"
-#include "RenderCommand.h"
 #include "ReliefSweep.h"
+#include "RenderCommand.h"
 #include "TraceCommand.h"
 #include "VlfCommand.h"
 
@@ -41,11 +42,10 @@ public:
     }
     // Drop VTK's "ERROR: In <source file>, line N" prefix line; keep what it says.
     const size_t firstLineEnd = message.find('\n');
-    const bool hasLocation = message.compare(0, 10, "ERROR: In ") == 0 ||
-      message.compare(0, 12, "Warning: In ") == 0;
-    std::string body = hasLocation && firstLineEnd != std::string::npos
-      ? message.substr(firstLineEnd + 1)
-      : message;
+    const bool hasLocation =
+      message.compare(0, 10, "ERROR: In ") == 0 || message.compare(0, 12, "Warning: In ") == 0;
+    std::string body =
+      hasLocation && firstLineEnd != std::string::npos ? message.substr(firstLineEnd + 1) : message;
     while (!body.empty() && (body.back() == '\n' || body.back() == ' '))
     {
       body.pop_back();
@@ -73,17 +73,18 @@ const std::vector<mesolight::Command>& Commands()
   using namespace mesolight;
   static const std::vector<Command> commands = {
     { "render", "[options]", "render the default relief scene", RunRenderCommand, {} },
-    { "bake", "DEPTH_IMAGE --out RELIEF_IMAGE [options]", "bake a relief texture from a depth image",
-      RunBakeCommand, {} },
-    { "cone", "DEPTH_IMAGE --out FILE.exr [options]", "bake a cone-packed relief texture", RunConeCommand,
-      {} },
+    { "bake", "DEPTH_IMAGE --out RELIEF_IMAGE [options]",
+      "bake a relief texture from a depth image", RunBakeCommand, {} },
+    { "cone", "DEPTH_IMAGE --out FILE.exr [options]", "bake a cone-packed relief texture",
+      RunConeCommand, {} },
     { "probe", "PROBE_IMAGE --out FILE.exr",
-      "light probe (angular map, mirror ball, two-view\nmerge) -> lat-long environment", RunProbeCommand,
-      {} },
+      "light probe (angular map, mirror ball, two-view\nmerge) -> lat-long environment",
+      RunProbeCommand, {} },
     { "lights", "ENV_IMAGE --count N --out lights.csv", "median-cut lights of an HDR environment",
       RunLightsCommand, {} },
     { "trace", "[--scene spheres|ring|cornell] [options]",
-      "Embree ray tracer (textured material channels,\nglossy reflection, adaptive, progressive) or "
+      "Embree ray tracer (textured material channels,\nglossy reflection, adaptive, progressive) "
+      "or "
       "the\npath-traced Cornell box",
       RunTraceCommand, {} },
     { "vlf", "", "", nullptr,
@@ -96,7 +97,8 @@ const std::vector<mesolight::Command>& Commands()
       } },
     { "bench", "", "", nullptr,
       {
-        { "", "[options]", "time and error: relief vs the dense mesh", RunReliefBenchmarkCommand, {} },
+        { "", "[options]", "time and error: relief vs the dense mesh", RunReliefBenchmarkCommand,
+          {} },
         { "relief", "[options]",
           "every method x steps x view angle x map:\ntime vs exact hit error, CSV and plots",
           static_cast<int (*)(const std::vector<std::string>&)>(RunReliefSweep), {} },

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # Warning flags for Mesolight's own code (VTK's headers are system headers).
 # mesolight_target_warnings(<target or Namespace::Module>)
 function (mesolight_target_warnings name)

@@ -26,7 +26,8 @@ void ParallelFor(std::size_t begin, std::size_t end, std::size_t grain,
   // keep the first, rethrow it on the calling thread.
   std::exception_ptr failure;
   std::mutex failureMutex;
-  auto run = [&](vtkIdType b, vtkIdType e) {
+  auto run = [&](vtkIdType b, vtkIdType e)
+  {
     try
     {
       body(static_cast<std::size_t>(b), static_cast<std::size_t>(e));
@@ -40,8 +41,8 @@ void ParallelFor(std::size_t begin, std::size_t end, std::size_t grain,
       }
     }
   };
-  vtkSMPTools::For(static_cast<vtkIdType>(begin), static_cast<vtkIdType>(end),
-    static_cast<vtkIdType>(grain), run);
+  vtkSMPTools::For(
+    static_cast<vtkIdType>(begin), static_cast<vtkIdType>(end), static_cast<vtkIdType>(grain), run);
   if (failure)
   {
     std::rethrow_exception(failure);

@@ -46,7 +46,8 @@ inline ProgressCallback SubProgress(const ProgressCallback& whole, double begin,
 template <class Algorithm>
 ProgressCallback AlgorithmProgress(Algorithm* algorithm, double begin = 0.0, double end = 1.0)
 {
-  return [algorithm, begin, end](double fraction) {
+  return [algorithm, begin, end](double fraction)
+  {
     algorithm->UpdateProgress(begin + (end - begin) * fraction);
     return !algorithm->GetAbortExecute();
   };

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Filters of this module that need their whole input image (stencils, cones, light sampling,
 // writing a file) ask the pipeline for it the same way.
 #ifndef vtkWholeExtentRequest_h

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Captures a rendered frame (colour and depth) and compares two frames of the same view:
 // the error figures every relief test and benchmark reports.
 #ifndef mesolight_ImageCompare_h
@@ -34,12 +35,14 @@ MESOLIGHTEVALUATION_EXPORT Frame CaptureFrame(vtkRenderWindow* window);
 
 struct FrameDifference
 {
-  double MeanColorError = 0.0; // mean |difference| over RGB, in 8-bit levels, pixels covered in both
-  double RmsColorError = 0.0;  // RMSE in 8-bit levels
-  double Psnr = 0.0;           // dB, from RmsColorError
+  double MeanColorError =
+    0.0;                      // mean |difference| over RGB, in 8-bit levels, pixels covered in both
+  double RmsColorError = 0.0; // RMSE in 8-bit levels
+  double Psnr = 0.0;          // dB, from RmsColorError
   double SilhouetteMismatch = 0.0; // % of pixels covered in exactly one frame, of those in either
-  double MeanDepthError = 0.0;     // mean |eye depth difference| over pixels covered in both, world units
-  double DepthMismatch = 0.0;      // % of pixels covered in both whose eye depths differ by > tolerance
+  double MeanDepthError =
+    0.0; // mean |eye depth difference| over pixels covered in both, world units
+  double DepthMismatch = 0.0; // % of pixels covered in both whose eye depths differ by > tolerance
   long long CoveredBoth = 0;
 };
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "LightSetReference.h"
 
 #include "MathConstants.h"
@@ -54,10 +55,11 @@ EnvironmentSampler MakeSampler(vtkImageData* environment)
       const size_t p = static_cast<size_t>(j) * s.Width + i;
       for (int c = 0; c < 3; ++c)
       {
-        s.Radiance[3 * p + c] = static_cast<float>(values->GetComponent(static_cast<vtkIdType>(p), c));
+        s.Radiance[3 * p + c] =
+          static_cast<float>(values->GetComponent(static_cast<vtkIdType>(p), c));
       }
-      const double w = std::max(0.0,
-        Luminance(s.Radiance[3 * p], s.Radiance[3 * p + 1], s.Radiance[3 * p + 2]) * omega);
+      const double w = std::max(
+        0.0, Luminance(s.Radiance[3 * p], s.Radiance[3 * p + 1], s.Radiance[3 * p + 2]) * omega);
       s.Weights[p] = w;
       total += w;
       s.Cdf[p] = total;
@@ -77,11 +79,13 @@ glm::dvec3 SampleNormal(vtkDataArray* rgba, int w, int h, double u, double v)
   const double x = u * w - 0.5, y = v * h - 0.5;
   const int i0 = static_cast<int>(std::floor(x)), j0 = static_cast<int>(std::floor(y));
   const double fx = x - i0, fy = y - j0;
-  auto texel = [&](int i, int j) {
+  auto texel = [&](int i, int j)
+  {
     i = std::min(std::max(i, 0), w - 1);
     j = std::min(std::max(j, 0), h - 1);
     const vtkIdType id = static_cast<vtkIdType>(j) * w + i;
-    return glm::dvec3(rgba->GetComponent(id, 0), rgba->GetComponent(id, 1), rgba->GetComponent(id, 2));
+    return glm::dvec3(
+      rgba->GetComponent(id, 0), rgba->GetComponent(id, 1), rgba->GetComponent(id, 2));
   };
   return (texel(i0, j0) * (1 - fx) + texel(i0 + 1, j0) * fx) * (1 - fy) +
     (texel(i0, j0 + 1) * (1 - fx) + texel(i0 + 1, j0 + 1) * fx) * fy;
@@ -160,7 +164,8 @@ struct ReferenceSetup
     const double nz = std::max(nt.z, 1e-4);
     // Depth gradient from the baked normal (depth scale k), then the world normal of the
     // surface (u, aspect v, -k d): Pu x Pv.
-    const glm::dvec2 g(nt.x / (nz * this->DepthScale), nt.y * this->Aspect / (nz * this->DepthScale));
+    const glm::dvec2 g(
+      nt.x / (nz * this->DepthScale), nt.y * this->Aspect / (nz * this->DepthScale));
     return glm::normalize(
       glm::dvec3(this->DepthScale * this->Aspect * g.x, this->DepthScale * g.y, this->Aspect));
   }
@@ -176,15 +181,17 @@ struct ReferenceSetup
   void ForEachPixel(const ReliefReference& hits, std::vector<EnvironmentIrradianceSample>& samples,
     Irradiance irradiance) const
   {
-    vtkSMPTools::For(0, static_cast<vtkIdType>(samples.size()), [&](vtkIdType begin, vtkIdType end) {
-      for (vtkIdType s = begin; s < end; ++s)
+    vtkSMPTools::For(0, static_cast<vtkIdType>(samples.size()),
+      [&](vtkIdType begin, vtkIdType end)
       {
-        EnvironmentIrradianceSample& sample = samples[static_cast<size_t>(s)];
-        const size_t p = sample.Pixel;
-        const glm::dvec3 hit(hits.HitU[p], hits.HitV[p], hits.HitD[p]);
-        irradiance(sample, hit, this->WorldNormal(hit));
-      }
-    });
+        for (vtkIdType s = begin; s < end; ++s)
+        {
+          EnvironmentIrradianceSample& sample = samples[static_cast<size_t>(s)];
+          const size_t p = sample.Pixel;
+          const glm::dvec3 hit(hits.HitU[p], hits.HitV[p], hits.HitD[p]);
+          irradiance(sample, hit, this->WorldNormal(hit));
+        }
+      });
   }
 };
 
@@ -205,7 +212,8 @@ std::vector<EnvironmentIrradianceSample> ComputeEnvironmentReference(const Relie
   std::vector<EnvironmentIrradianceSample> samples = ReferenceSetup::Pixels(hits, maxPixels);
 
   setup.ForEachPixel(hits, samples,
-    [&](EnvironmentIrradianceSample& sample, const glm::dvec3& hit, const glm::dvec3& n) {
+    [&](EnvironmentIrradianceSample& sample, const glm::dvec3& hit, const glm::dvec3& n)
+    {
       std::mt19937 rng(static_cast<unsigned>(sample.Pixel) * 2654435761u + 17u);
       std::uniform_real_distribution<double> uniform(0.0, 1.0);
       for (int k = 0; k < samplesPerPixel; ++k)
@@ -264,7 +272,8 @@ std::vector<EnvironmentIrradianceSample> ComputeLightSetReference(const ReliefRe
   std::vector<EnvironmentIrradianceSample> samples = ReferenceSetup::Pixels(hits, maxPixels);
 
   setup.ForEachPixel(hits, samples,
-    [&](EnvironmentIrradianceSample& sample, const glm::dvec3& hit, const glm::dvec3& n) {
+    [&](EnvironmentIrradianceSample& sample, const glm::dvec3& hit, const glm::dvec3& n)
+    {
       for (int l = 0; l < count; ++l)
       {
         double d[3];

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Exact references for a relief surface lit by an environment or by a light set of it: the
 // irradiance at each reference pixel's exact hit (ReliefReference.h), shadowed by the exact
 // bilinear height field (HeightFieldTracer.h), and a render's error against it. `mesolight bench

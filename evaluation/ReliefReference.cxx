@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "ReliefReference.h"
 
 #include "HeightFieldTracer.h"
@@ -29,7 +30,8 @@ namespace mesolight
 //------------------------------------------------------------------------------
 void ReliefReference::HitPosition(size_t p, double position[3]) const
 {
-  const double aspect = this->TextureWidth > 0 ? double(this->TextureHeight) / this->TextureWidth : 1.0;
+  const double aspect =
+    this->TextureWidth > 0 ? double(this->TextureHeight) / this->TextureWidth : 1.0;
   position[0] = this->HitU[p];
   position[1] = this->HitV[p] * aspect;
   position[2] = -this->HitD[p] * this->DepthScale;
@@ -102,8 +104,7 @@ bool ComputeReliefReference(
     error = "reference: the depth scale must be positive";
     return false;
   }
-  vtkDataArray* scalars =
-    input.Relief ? input.Relief->GetPointData()->GetScalars() : nullptr;
+  vtkDataArray* scalars = input.Relief ? input.Relief->GetPointData()->GetScalars() : nullptr;
   int dims[3] = { 0, 0, 0 };
   if (input.Relief)
   {
@@ -167,80 +168,84 @@ bool ComputeReliefReference(
   const double vLow = 0.5 / th, vHigh = 1.0 - 0.5 / th;
   const HeightField& hf = *field;
 
-  const auto unproject = [&m](double x, double y, double z, glm::dvec3& out) {
+  const auto unproject = [&m](double x, double y, double z, glm::dvec3& out)
+  {
     const double in[4] = { x, y, z, 1.0 };
     double r[4];
     for (int row = 0; row < 4; ++row)
     {
-      r[row] = m[4 * row] * in[0] + m[4 * row + 1] * in[1] + m[4 * row + 2] * in[2] + m[4 * row + 3];
+      r[row] =
+        m[4 * row] * in[0] + m[4 * row + 1] * in[1] + m[4 * row + 2] * in[2] + m[4 * row + 3];
     }
     out = glm::dvec3(r[0], r[1], r[2]) / r[3];
   };
 
-  vtkSMPTools::For(0, H, [&](vtkIdType rowBegin, vtkIdType rowEnd) {
-    for (vtkIdType y = rowBegin; y < rowEnd; ++y)
+  vtkSMPTools::For(0, H,
+    [&](vtkIdType rowBegin, vtkIdType rowEnd)
     {
-      for (int x = 0; x < W; ++x)
+      for (vtkIdType y = rowBegin; y < rowEnd; ++y)
       {
-        const size_t p = size_t(y) * W + x;
-        const double nx = 2.0 * (x + 0.5) / W - 1.0;
-        const double ny = 2.0 * (y + 0.5) / H - 1.0;
-        glm::dvec3 front, back;
-        unproject(nx, ny, -1.0, front);
-        unproject(nx, ny, 1.0, back);
-        const glm::dvec3 dir = back - front;
-        if (!(dir.z < 0.0) || front.z < 0.0)
+        for (int x = 0; x < W; ++x)
         {
-          continue; // parallel to the wall, seen from behind, or the wall is clipped
+          const size_t p = size_t(y) * W + x;
+          const double nx = 2.0 * (x + 0.5) / W - 1.0;
+          const double ny = 2.0 * (y + 0.5) / H - 1.0;
+          glm::dvec3 front, back;
+          unproject(nx, ny, -1.0, front);
+          unproject(nx, ny, 1.0, back);
+          const glm::dvec3 dir = back - front;
+          if (!(dir.z < 0.0) || front.z < 0.0)
+          {
+            continue; // parallel to the wall, seen from behind, or the wall is clipped
+          }
+          const double tWall = -front.z / dir.z;
+          const double wx = front.x + tWall * dir.x;
+          const double wy = front.y + tWall * dir.y;
+          const double u0 = wx, v0 = wy / aspect;
+          if (u0 < uLow || u0 > uHigh || v0 < vLow || v0 > vHigh)
+          {
+            continue;
+          }
+          reference.State[p] = ReliefReference::Uncovered;
+          // Texture space: per unit of ray parameter the ray descends one full depth unit.
+          const glm::dvec3 q(dir.x, dir.y / aspect, -dir.z / s);
+          const glm::dvec3 span = q / q.z;
+          const auto hit = IntersectFirst(hf, glm::dvec3(u0, v0, 0.0), span, 2.0);
+          if (!hit)
+          {
+            continue; // cannot happen for depths in [0, 1]
+          }
+          const glm::dvec3& h = hit->point;
+          if (h.x < uLow || h.x > uHigh || h.y < vLow || h.y > vHigh)
+          {
+            continue; // silhouette: the hit leaves the mesh's texel-centre domain
+          }
+          reference.State[p] = ReliefReference::Covered;
+          reference.HitU[p] = h.x;
+          reference.HitV[p] = h.y;
+          reference.HitD[p] = h.z;
+          const double world[3] = { h.x, h.y * aspect, -h.z * s };
+          const double eyeZ =
+            view[8] * world[0] + view[9] * world[1] + view[10] * world[2] + view[11];
+          reference.EyeDepth[p] = -eyeZ;
+          if (!input.HasLight)
+          {
+            continue;
+          }
+          double l[3];
+          for (int i = 0; i < 3; ++i)
+          {
+            l[i] = input.LightPositional ? input.Light[i] - world[i] : input.Light[i];
+          }
+          // Normal of the bilinear surface (u, aspect v, -s d(u, v)): dP/du x dP/dv.
+          const glm::dvec2 g = hf.GradientAt(h.x, h.y);
+          const double n[3] = { s * aspect * g.x, s * g.y, aspect };
+          reference.FacesLight[p] = n[0] * l[0] + n[1] * l[1] + n[2] * l[2] > 0.0;
+          const glm::dvec3 toLight(l[0], l[1] / aspect, -l[2] / s);
+          reference.Unshadowed[p] = Visible(hf, h, toLight);
         }
-        const double tWall = -front.z / dir.z;
-        const double wx = front.x + tWall * dir.x;
-        const double wy = front.y + tWall * dir.y;
-        const double u0 = wx, v0 = wy / aspect;
-        if (u0 < uLow || u0 > uHigh || v0 < vLow || v0 > vHigh)
-        {
-          continue;
-        }
-        reference.State[p] = ReliefReference::Uncovered;
-        // Texture space: per unit of ray parameter the ray descends one full depth unit.
-        const glm::dvec3 q(dir.x, dir.y / aspect, -dir.z / s);
-        const glm::dvec3 span = q / q.z;
-        const auto hit = IntersectFirst(hf, glm::dvec3(u0, v0, 0.0), span, 2.0);
-        if (!hit)
-        {
-          continue; // cannot happen for depths in [0, 1]
-        }
-        const glm::dvec3& h = hit->point;
-        if (h.x < uLow || h.x > uHigh || h.y < vLow || h.y > vHigh)
-        {
-          continue; // silhouette: the hit leaves the mesh's texel-centre domain
-        }
-        reference.State[p] = ReliefReference::Covered;
-        reference.HitU[p] = h.x;
-        reference.HitV[p] = h.y;
-        reference.HitD[p] = h.z;
-        const double world[3] = { h.x, h.y * aspect, -h.z * s };
-        const double eyeZ =
-          view[8] * world[0] + view[9] * world[1] + view[10] * world[2] + view[11];
-        reference.EyeDepth[p] = -eyeZ;
-        if (!input.HasLight)
-        {
-          continue;
-        }
-        double l[3];
-        for (int i = 0; i < 3; ++i)
-        {
-          l[i] = input.LightPositional ? input.Light[i] - world[i] : input.Light[i];
-        }
-        // Normal of the bilinear surface (u, aspect v, -s d(u, v)): dP/du x dP/dv.
-        const glm::dvec2 g = hf.GradientAt(h.x, h.y);
-        const double n[3] = { s * aspect * g.x, s * g.y, aspect };
-        reference.FacesLight[p] = n[0] * l[0] + n[1] * l[1] + n[2] * l[2] > 0.0;
-        const glm::dvec3 toLight(l[0], l[1] / aspect, -l[2] / s);
-        reference.Unshadowed[p] = Visible(hf, h, toLight);
       }
-    }
-  });
+    });
   reference.Seconds =
     std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return true;
@@ -291,7 +296,8 @@ HitComparison CompareHits(const ReliefReference& reference, const Frame& hitU, c
       sum += e;
     }
     c.MeanTexels = sum / double(errors.size());
-    const size_t k = std::min(errors.size() - 1, size_t(std::ceil(0.99 * double(errors.size()))) - 1);
+    const size_t k =
+      std::min(errors.size() - 1, size_t(std::ceil(0.99 * double(errors.size()))) - 1);
     std::nth_element(errors.begin(), errors.begin() + std::ptrdiff_t(k), errors.end());
     c.P99Texels = errors[k];
     c.MaxTexels = *std::max_element(errors.begin() + std::ptrdiff_t(k), errors.end());

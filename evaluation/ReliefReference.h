@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The exact per-pixel answer of an ideal relief renderer, computed on the CPU.
 //
 // For a relief scene (a wall at z = 0 drawn by vtkReliefMapper, see ReliefScene.h) every pixel
@@ -34,7 +35,7 @@ struct ReliefSceneOptions;
 struct ReliefReferenceInput
 {
   vtkCamera* Camera = nullptr;
-  int Width = 0;  // window size in pixels
+  int Width = 0; // window size in pixels
   int Height = 0;
   vtkImageData* Relief = nullptr; // relief texture: depth in the last (4th) scalar component
   double DepthScale = 0.04;

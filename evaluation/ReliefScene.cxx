@@ -1,10 +1,11 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "ReliefScene.h"
 
 #include "vtkConeMapFilter.h"
 #include "vtkHeightFieldMeshFilter.h"
 #include "vtkMedianCutLights.h"
-#include "vtkProceduralEnvironmentSource.h"
 #include "vtkOIIOImageReader.h"
+#include "vtkProceduralEnvironmentSource.h"
 #include "vtkProceduralReliefSource.h"
 #include "vtkReliefMapper.h"
 #include "vtkReliefTextureFilter.h"
@@ -290,7 +291,8 @@ static void FillViewportWithWall(vtkCamera* camera, double height, double depthS
   }
   // Narrowing the vertical view angle by sy scales NDC by 1 / sy; the aspect ratio sx / sy maps
   // the horizontal extent to [-1, 1]; the window centre (in NDC of the new frustum) recentres.
-  const double halfAngle = std::atan(std::tan(vtkMath::RadiansFromDegrees(0.5 * camera->GetViewAngle())) * sy);
+  const double halfAngle =
+    std::atan(std::tan(vtkMath::RadiansFromDegrees(0.5 * camera->GetViewAngle())) * sy);
   camera->SetViewAngle(2.0 * vtkMath::DegreesFromRadians(halfAngle));
   camera->SetExplicitAspectRatio(sx / sy);
   camera->SetWindowCenter(0.5 * (lo[0] + hi[0]) / sx, 0.5 * (lo[1] + hi[1]) / sy);

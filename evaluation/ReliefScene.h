@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The default relief scene of the `mesolight` tool, and its independent reference.
 //
 // One description (ReliefSceneOptions) builds two renderings of the same height field:
@@ -49,7 +50,7 @@ struct ReliefSceneOptions
   // viewport: at grazing angles the wall is otherwise a thin strip of the frame, and a frame time
   // would measure mostly the fixed per-frame cost, not the march. Pixels are then not square.
   bool FillViewport = false;
-  int Lights = 2;            // 0: none; 1: key light; 2: key + fill
+  int Lights = 2; // 0: none; 1: key light; 2: key + fill
   // Image-based lighting: "" (none), "procedural:sky", "procedural:sun" or an HDR file; its
   // median-cut lights light the relief (vtkReliefMapper light set).
   std::string Environment;
@@ -64,8 +65,8 @@ struct ReliefScene
 {
   vtkSmartPointer<vtkRenderer> Renderer;
   vtkSmartPointer<vtkActor> Actor;
-  vtkSmartPointer<vtkReliefMapper> Mapper;          // null for the dense reference
-  vtkSmartPointer<vtkImageData> ReliefTexture;      // normal + depth, as uploaded
+  vtkSmartPointer<vtkReliefMapper> Mapper;     // null for the dense reference
+  vtkSmartPointer<vtkImageData> ReliefTexture; // normal + depth, as uploaded
   vtkSmartPointer<vtkTexture> Albedo;
   vtkSmartPointer<vtkImageData> LightSet; // median-cut lights of the environment, if any
 };

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Installs every Debian 12 package Mesolight needs to build, test and render headless.
 # Idempotent: packages already present are left alone; apt-get update runs at most once per call.
 set -euo pipefail

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # pvbatch with the Mesolight plugin: ParaView's Python modules from the local python3-paraview
 # copy (scripts/setup-paraview.sh) and the plugin auto-loaded through PV_PLUGIN_PATH.
 # Without a display it runs under Xvfb. Example:

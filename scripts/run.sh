@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # The main job: set up (packages, build), then render the default relief scene to
 # mesolight-render.png. With a display it also opens an interactive window; without one it
 # renders offscreen under Xvfb (Mesa llvmpipe). Extra arguments go to `mesolight render`.

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Sets up and builds the Mesolight ParaView plugin in ./build-paraview (a separate build tree:
 # ParaView 5.11 brings its own VTK 9.2 with the same VTK:: target names as the system VTK 9.1).
 # Idempotent: a second run only rebuilds what changed.

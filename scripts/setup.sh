@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Installs Mesolight's Debian packages (if missing), then configures and builds in ./build.
 # Idempotent: a second run only rebuilds what changed.
 #   MESOLIGHT_BUILD_DIR  build directory (default: <repo>/build)

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Sets up (packages, build) and runs the whole test suite. GL tests render with Mesa llvmpipe
 # under Xvfb (scripts/xvfb.sh). Extra arguments go to ctest (e.g. -R Relief, -L GL). Then builds
 # the ParaView plugin (scripts/setup-paraview.sh, ./build-paraview) and runs its pvbatch tests,

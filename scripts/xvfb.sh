@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Runs a command under a private Xvfb display (Mesa llvmpipe renders into it). Every offscreen
 # render here goes through this one wrapper.
 #

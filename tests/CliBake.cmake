@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # mesolight bake on a generated depth image: must write the relief texture, and must refuse to
 # overwrite its own input.
 file(REMOVE_RECURSE "${WORK}")

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # `mesolight bench relief` end to end on a tiny sweep: a procedural map and the 16-bit PNG file
 # path, two methods; the table's rows, the CSV and one chart per angle appear, and the relief
 # march is more accurate than plain texture mapping. Bad arguments exit with 2.

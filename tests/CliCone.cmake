@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # mesolight cone on a generated depth image writes a cone map and refuses to overwrite its input.
 file(REMOVE_RECURSE "${WORK}")
 file(MAKE_DIRECTORY "${WORK}")

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # mesolight lights: the CSV has the documented header and one row per light; bad input fails.
 file(REMOVE_RECURSE "${WORK}")
 file(MAKE_DIRECTORY "${WORK}")

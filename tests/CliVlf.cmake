@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # mesolight vlf: propagate the built-in Cornell box (tiny settings), resume it, render it; bad input
 # fails with nothing overwritten (a user's file next to the field is never replaced).
 file(REMOVE_RECURSE "${WORK}")

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # `cmake --install` must give a VTK C++ user modules to find_package and link: install this
 # build into a scratch prefix, then configure and build examples/cxx on its own against it.
 file(REMOVE_RECURSE "${WORK}")

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkCompositeReliefMapper (ParaView's path: a composite mapper drawing through
 // vtkCompositeMapperHelper2) against vtkReliefMapper: the same relief split into two blocks,
 // each carrying the relief texture as field data (vtkAttachReliefTexture), must render the
@@ -37,12 +38,14 @@ constexpr double DepthScale = 0.04;
 
 vtkSmartPointer<vtkImageData> BrickRelief()
 {
-  auto depth = test::MakeDepthMap(128, 128, [](double u, double v) {
-    // Rows of raised blocks with deep joints, enough relief for parallax and silhouettes.
-    const double bu = std::fmod(u * 4.0 + (std::fmod(v * 8.0, 2.0) < 1.0 ? 0.0 : 0.5), 1.0);
-    const double bv = std::fmod(v * 8.0, 1.0);
-    return (bu < 0.08 || bv < 0.15) ? 1.0 : 0.1;
-  });
+  auto depth = test::MakeDepthMap(128, 128,
+    [](double u, double v)
+    {
+      // Rows of raised blocks with deep joints, enough relief for parallax and silhouettes.
+      const double bu = std::fmod(u * 4.0 + (std::fmod(v * 8.0, 2.0) < 1.0 ? 0.0 : 0.5), 1.0);
+      const double bv = std::fmod(v * 8.0, 1.0);
+      return (bu < 0.08 || bv < 0.15) ? 1.0 : 0.1;
+    });
   return test::BakeRelief(depth, DepthScale);
 }
 
@@ -141,8 +144,8 @@ TEST(CompositeReliefMapper, TwoBlocksWithAttachedTexturesMatchTheReliefMapper)
 
   // The comparison can fail: the same blocks without the march differ clearly.
   composite->GetReliefProperty()->SetMethod(vtkReliefProperty::TextureMapping);
-  const FrameDifference flat = CompareFrames(
-    Render(composite, "composite-texture-mapping.png"), reference, 0.02 * DepthScale);
+  const FrameDifference flat =
+    CompareFrames(Render(composite, "composite-texture-mapping.png"), reference, 0.02 * DepthScale);
   EXPECT_GT(flat.MeanColorError, 2.0);
 }
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Many offscreen windows, one after another, in one process: what the GL tests and the CLI do.
 // Each window's X connection closes before the next one opens, so the X server sees its last
 // client leave every time. An Xvfb started without -noreset resets then, and a window that

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The GPU relief render against an independent reference of the same scene: the height field
 // as a dense displaced mesh (one vertex per texel, vtkHeightFieldMeshFilter) drawn by VTK's stock
 // mapper with the same camera, lights, normals and albedo. Self-shadowing is off on both sides
@@ -46,8 +47,8 @@ FrameDifference CompareWithDenseMesh(const ReliefSceneOptions& options, const st
   WritePng(frame, test::OutputPath(tag + "-relief.png").c_str());
   // Depth tolerance: 5% of the relief's world depth.
   const FrameDifference d = CompareFrames(frame, reference, 0.05 * options.DepthScale, &footprint);
-  std::cout << "[" << tag << "] mean colour error " << d.MeanColorError << " levels, PSNR " << d.Psnr
-            << " dB, silhouette mismatch " << d.SilhouetteMismatch << "%, depth mismatch "
+  std::cout << "[" << tag << "] mean colour error " << d.MeanColorError << " levels, PSNR "
+            << d.Psnr << " dB, silhouette mismatch " << d.SilhouetteMismatch << "%, depth mismatch "
             << d.DepthMismatch << "%, mean depth error " << d.MeanDepthError << std::endl;
   EXPECT_GT(d.CoveredBoth, options.Width * options.Height / 4) << "the wall should fill the view";
   return d;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Bad input reaches the user as a clear VTK error, never as a crash or garbage pixels.
 #include "ImageCompare.h"
 #include "ReliefScene.h"
@@ -113,9 +114,9 @@ TEST(ReliefBadInput, ReliefTextureWithoutFourComponentsIsAnError)
 
 TEST(ReliefBadInput, NaNDepthIsRejectedByTheBake)
 {
-  auto depth = test::MakeDepthMap(16, 16, [](double u, double v) {
-    return (u > 0.5 && v > 0.5) ? std::numeric_limits<double>::quiet_NaN() : 0.5;
-  });
+  auto depth = test::MakeDepthMap(16, 16,
+    [](double u, double v)
+    { return (u > 0.5 && v > 0.5) ? std::numeric_limits<double>::quiet_NaN() : 0.5; });
   vtkNew<vtkReliefTextureFilter> bake;
   bake->SetInputData(depth);
   vtkNew<test::MessageRecorder> messages;

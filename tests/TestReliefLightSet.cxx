@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkReliefMapper under an image-based light set: radiometry against the analytic furnace case,
 // soft self-shadows, and the skips (negligible lights, K shadowed lights) measured against the
 // unskipped render.
@@ -112,12 +113,10 @@ TEST(ReliefLightSet, UniformSkyFurnace)
 // lights must darken it, by about the fraction of the sky's cosine-weighted irradiance hidden.
 TEST(ReliefLightSet, PitFloorIsDarkenedBySelfShadowing)
 {
-  auto pit = test::BakeRelief(test::MakeDepthMap(128, 128,
-                                [](double u, double v) {
-                                  return (std::abs(u - 0.5) < 0.1 && std::abs(v - 0.5) < 0.1)
-                                    ? 1.0
-                                    : 0.0;
-                                }),
+  auto pit = test::BakeRelief(
+    test::MakeDepthMap(128, 128,
+      [](double u, double v)
+      { return (std::abs(u - 0.5) < 0.1 && std::abs(v - 0.5) < 0.1) ? 1.0 : 0.0; }),
     0.1);
   const Frame frame = RenderTopDown(pit, UniformSkyLights(256, 0.5), 1.0);
   const size_t centre = size_t(64) * 128 + 64;
@@ -136,8 +135,8 @@ namespace
 {
 // HemisphereTorus lit only by `lights` median-cut lights of the procedural sun and sky, as a white
 // Lambertian surface: the references' radiance is then albedo / pi x irradiance.
-bool BuildSunLitScene(int lights, int linearSteps, ReliefSceneOptions& o, ReliefScene& scene,
-  std::string& error)
+bool BuildSunLitScene(
+  int lights, int linearSteps, ReliefSceneOptions& o, ReliefScene& scene, std::string& error)
 {
   o.Pattern = "HemisphereTorus";
   o.Resolution = 128;
@@ -185,8 +184,8 @@ TEST(ReliefLightSet, MedianCutLightsAgainstMonteCarlo)
   ASSERT_TRUE(ComputeReliefReference(MakeReliefReferenceInput(scene, o), hits, error)) << error;
   auto environment = LoadEnvironment(o.Environment, error);
   ASSERT_TRUE(environment) << error;
-  const auto reference =
-    ComputeEnvironmentReference(hits, scene.ReliefTexture, environment, o.DepthScale, 800, 2048, true);
+  const auto reference = ComputeEnvironmentReference(
+    hits, scene.ReliefTexture, environment, o.DepthScale, 800, 2048, true);
   const double exposure = ExposureFor(reference);
   ASSERT_GT(exposure, 0.0);
   scene.Mapper->GetReliefProperty()->SetExposure(exposure);
@@ -195,7 +194,8 @@ TEST(ReliefLightSet, MedianCutLightsAgainstMonteCarlo)
   window->GetRenderers()->RemoveAllItems();
   window->SetSize(o.Width, o.Height);
   window->AddRenderer(scene.Renderer);
-  auto errorWith = [&](int lights, bool shadows) {
+  auto errorWith = [&](int lights, bool shadows)
+  {
     ReliefSceneOptions lo = o;
     lo.EnvironmentLights = lights;
     scene.Mapper->SetLightSetData(MakeEnvironmentLights(lo, error));
@@ -226,8 +226,7 @@ TEST(ReliefLightSet, LightSetRenderAgainstTheExactRenderOfTheSameLights)
   ASSERT_TRUE(BuildSunLitScene(32, 32, o, scene, error)) << error;
   vtkSmartPointer<vtkImageData> coneRelief;
   vtkSmartPointer<vtkTexture> albedo;
-  ASSERT_TRUE(
-    BuildReliefTextures(o, coneRelief, albedo, error, vtkReliefProperty::RelaxedConeMap))
+  ASSERT_TRUE(BuildReliefTextures(o, coneRelief, albedo, error, vtkReliefProperty::RelaxedConeMap))
     << error;
   ReliefReference hits;
   ASSERT_TRUE(ComputeReliefReference(MakeReliefReferenceInput(scene, o), hits, error)) << error;
@@ -256,8 +255,8 @@ TEST(ReliefLightSet, LightSetRenderAgainstTheExactRenderOfTheSameLights)
   scene.Mapper->SetReliefTextureData(coneRelief);
   scene.Mapper->GetReliefProperty()->SetMethod(vtkReliefProperty::RelaxedConeBinary);
   const double cone = EnvironmentError(CaptureFrame(window), coneReference, exposure);
-  std::cout << "[same lights] relief " << relief << "%, relaxed cone " << cone
-            << "%, no shadows " << unshadowed << "%" << std::endl;
+  std::cout << "[same lights] relief " << relief << "%, relaxed cone " << cone << "%, no shadows "
+            << unshadowed << "%" << std::endl;
   EXPECT_LT(relief, 1.0);
   EXPECT_LT(cone, 1.0);
   EXPECT_GT(unshadowed, 3.0 * relief);

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkReliefMapper on meshes other than a plane: tangents are generated, and a curved, tiled
 // surface renders without errors and with visible relief.
 #include "ImageCompare.h"

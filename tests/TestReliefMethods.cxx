@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Every intersection method against the exact CPU reference (ReliefReference: the bilinear height
 // field traced exactly by HeightFieldTracer). Safe and exact methods must find the first hit to
 // within a fraction of a texel; plain texture mapping must not (negative test); unsafe methods
@@ -84,14 +85,14 @@ INSTANTIATE_TEST_SUITE_P(Safe, ReliefMethodHits,
   ::testing::Values(MethodCase{ "relief", 32, 8, 55.0, 0.25 },
     MethodCase{ "interval", 32, 4, 55.0, 0.25 }, MethodCase{ "pom", 32, 0, 55.0, 0.5 },
     MethodCase{ "linear", 64, 0, 55.0, 1.0 }, MethodCase{ "max-mipmap", 128, 0, 55.0, 0.05 },
-    MethodCase{ "max-mipmap", 256, 0, 85.0, 0.5 },
-    MethodCase{ "relaxed-cone", 32, 8, 55.0, 0.25 },
+    MethodCase{ "max-mipmap", 256, 0, 85.0, 0.5 }, MethodCase{ "relaxed-cone", 32, 8, 55.0, 0.25 },
     MethodCase{ "relaxed-cone-interval", 32, 4, 55.0, 0.25 },
     MethodCase{ "cone", 32, 4, 55.0, 0.25 }));
 
 INSTANTIATE_TEST_SUITE_P(Unsafe, ReliefMethodHits,
   ::testing::Values(MethodCase{ "parallax", 1, 0, 55.0, -1.0 },
-    MethodCase{ "parallax-limit", 1, 0, 55.0, -1.0 }, MethodCase{ "parallax-slope", 1, 0, 55.0, -1.0 },
+    MethodCase{ "parallax-limit", 1, 0, 55.0, -1.0 },
+    MethodCase{ "parallax-slope", 1, 0, 55.0, -1.0 },
     MethodCase{ "iterative-parallax", 4, 0, 55.0, -1.0 }, MethodCase{ "binary", 1, 8, 55.0, -1.0 },
     MethodCase{ "secant", 1, 8, 55.0, -1.0 }));
 

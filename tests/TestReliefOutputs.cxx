@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkReliefMapper's measurement outputs decode to what they encode: on a flat map seen straight
 // down through a parallel camera, the hit coordinate of each pixel is the pixel's own position,
 // and the sample count is exactly what the march skeleton takes.
@@ -24,8 +25,8 @@ namespace
 using namespace mesolight;
 constexpr int Pixels = 256;
 
-Frame RenderTopDown(int output, double depth = 0.0,
-  const std::function<void(vtkReliefMapper*)>& configure = nullptr)
+Frame RenderTopDown(
+  int output, double depth = 0.0, const std::function<void(vtkReliefMapper*)>& configure = nullptr)
 {
   auto relief =
     test::BakeRelief(test::MakeDepthMap(64, 64, [depth](double, double) { return depth; }), 0.1);
@@ -84,14 +85,17 @@ TEST(ReliefOutputs, LightVisibilityIsWhiteUnderAnOverheadLight)
 // ceil(10 * 0.35) = 4 samples (it skips the hit itself). Texture mapping samples nothing.
 TEST(ReliefOutputs, SampleCountIsWhatTheMarchTakes)
 {
-  const auto count = [](const Frame& frame) {
+  const auto count = [](const Frame& frame)
+  {
     const size_t centre = size_t(Pixels / 2) * Pixels + Pixels / 2;
     int n = -1;
     EXPECT_TRUE(DecodeSampleCount(frame, centre, n));
     return n;
   };
-  const auto relief = [](bool shadows) {
-    return [shadows](vtkReliefMapper* m) {
+  const auto relief = [](bool shadows)
+  {
+    return [shadows](vtkReliefMapper* m)
+    {
       m->GetReliefProperty()->SetMethod(vtkReliefProperty::Relief);
       m->GetReliefProperty()->SetLinearSteps(10);
       m->GetReliefProperty()->SetRefinementSteps(4);
@@ -112,7 +116,8 @@ TEST(ReliefOutputs, SampleCountIsWhatTheMarchTakes)
 // per ray they took 15.0.
 TEST(ReliefOutputs, ConeShadowsSampleNoMoreThanReliefShadows)
 {
-  const auto shadowSamples = [](const char* method) {
+  const auto shadowSamples = [](const char* method)
+  {
     double withShadows = 0.0;
     for (bool shadows : { true, false })
     {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The CPU relief reference (ReliefReference: exact per-pixel ray / bilinear height field hits)
 // is checked twice: against the independent dense displaced mesh drawn by VTK's stock mapper
 // (depth buffer and coverage), and as the yardstick of the GPU march (decoded hit coordinates of
@@ -36,15 +37,16 @@ ReliefSceneOptions TestScene()
 
 struct DenseAgreement
 {
-  double DepthAgreement = 0.0;    // % of pixels covered by both within the tolerance
-  double CoverageMismatch = 0.0;  // % of footprint pixels covered by exactly one
+  double DepthAgreement = 0.0;   // % of pixels covered by both within the tolerance
+  double CoverageMismatch = 0.0; // % of footprint pixels covered by exactly one
   long long CoveredBoth = 0;
   long long Footprint = 0;
 };
 
 // The reference against a dense-mesh frame of the same camera: eye depth of every pixel covered
 // by both within 5% of the relief's world depth, and coverage inside the wall's footprint.
-DenseAgreement CompareWithDense(const ReliefReference& reference, const Frame& dense, double depthScale)
+DenseAgreement CompareWithDense(
+  const ReliefReference& reference, const Frame& dense, double depthScale)
 {
   DenseAgreement a;
   const double tolerance = 0.05 * depthScale;

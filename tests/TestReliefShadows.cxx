@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Self-shadowing against analytic shadows: a ridge of height h = DepthScale (in wall widths) on a
 // flat floor, lit by a directional light at elevation e across the ridge, seen from straight
 // above with a parallel camera. The ridge's shadow on the floor must start at the ridge's edge and
@@ -99,7 +100,8 @@ TEST(ReliefShadows, RidgeShadowHasTheAnalyticLength)
   for (double elevation : { 30.0, 50.0 })
   {
     const ShadowRun run = RenderRidgeShadow(elevation, true, 10, "ridge-shadow.png");
-    const double expectedEnd = RidgeHigh + DepthScale / std::tan(vtkMath::RadiansFromDegrees(elevation));
+    const double expectedEnd =
+      RidgeHigh + DepthScale / std::tan(vtkMath::RadiansFromDegrees(elevation));
     EXPECT_NEAR(run.Start, RidgeHigh, 0.01) << "elevation " << elevation;
     EXPECT_NEAR(run.End, expectedEnd, 0.02) << "elevation " << elevation;
   }

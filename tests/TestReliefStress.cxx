@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Numerical stress: grazing views up to 89.9 degrees, depth scales 0 and 10, 1x1, non-power-of-two,
 // flat, spike and 4096^2 maps. vtkReliefMapper's NonFiniteCheckOutput paints a fragment red when a
 // NaN or Inf arose anywhere on the way to its colour (hit, position, normal, colour), so "no red
@@ -128,11 +129,13 @@ TEST(ReliefStress, DegenerateAndSpikyMaps)
   };
   const Map maps[] = {
     { "1x1", 1, 1, [](double, double) { return 0.4; } },
-    { "37x23", 37, 23, [](double u, double v) { return 0.5 + 0.45 * std::sin(17 * u) * std::cos(11 * v); } },
+    { "37x23", 37, 23,
+      [](double u, double v) { return 0.5 + 0.45 * std::sin(17 * u) * std::cos(11 * v); } },
     { "flat-deep", 32, 32, [](double, double) { return 1.0; } },
     { "flat-top", 32, 32, [](double, double) { return 0.0; } },
     { "spike", 64, 64,
-      [](double u, double v) { return (std::abs(u - 0.5) < 0.008 && std::abs(v - 0.5) < 0.008) ? 0.0 : 1.0; } },
+      [](double u, double v)
+      { return (std::abs(u - 0.5) < 0.008 && std::abs(v - 0.5) < 0.008) ? 0.0 : 1.0; } },
     { "2x1", 2, 1, [](double u, double) { return u < 0.5 ? 0.0 : 1.0; } },
   };
   for (const Map& map : maps)

@@ -88,7 +88,8 @@ std::shared_ptr<const RgbImage> ToRgb(vtkImageData* image)
   int dims[3];
   image->GetDimensions(dims);
   vtkDataArray* scalars = image->GetPointData()->GetScalars();
-  if (!scalars || dims[0] < 1 || dims[1] < 1 || scalars->GetNumberOfTuples() < static_cast<vtkIdType>(dims[0]) * dims[1])
+  if (!scalars || dims[0] < 1 || dims[1] < 1 ||
+    scalars->GetNumberOfTuples() < static_cast<vtkIdType>(dims[0]) * dims[1])
   {
     return std::make_shared<RgbImage>(); // empty: the tracer warns and ignores it
   }
@@ -129,18 +130,19 @@ bool IsSimilarity(vtkMatrix4x4* m, float& scale)
   const float sy = glm::length(Column(m, 1));
   const float sz = glm::length(Column(m, 2));
   scale = sx;
-  const bool affine = m->GetElement(3, 0) == 0.0 && m->GetElement(3, 1) == 0.0 && m->GetElement(3, 2) == 0.0 &&
-    m->GetElement(3, 3) == 1.0;
+  const bool affine = m->GetElement(3, 0) == 0.0 && m->GetElement(3, 1) == 0.0 &&
+    m->GetElement(3, 2) == 0.0 && m->GetElement(3, 3) == 1.0;
   const bool orthogonal = std::abs(glm::dot(Column(m, 0), Column(m, 1))) < 1e-4f * sx * sy &&
     std::abs(glm::dot(Column(m, 1), Column(m, 2))) < 1e-4f * sy * sz &&
     std::abs(glm::dot(Column(m, 0), Column(m, 2))) < 1e-4f * sx * sz;
-  return affine && orthogonal && sx > 0.0f && std::abs(sx - sy) < 1e-4f * sx && std::abs(sx - sz) < 1e-4f * sx;
+  return affine && orthogonal && sx > 0.0f && std::abs(sx - sy) < 1e-4f * sx &&
+    std::abs(sx - sz) < 1e-4f * sx;
 }
 
 bool FullSphere(vtkSphereSource* source)
 {
-  return source->GetStartTheta() <= 0.0 && source->GetEndTheta() >= 360.0 && source->GetStartPhi() <= 0.0 &&
-    source->GetEndPhi() >= 180.0 && source->GetRadius() > 0.0;
+  return source->GetStartTheta() <= 0.0 && source->GetEndTheta() >= 360.0 &&
+    source->GetStartPhi() <= 0.0 && source->GetEndPhi() >= 180.0 && source->GetRadius() > 0.0;
 }
 } // namespace
 
@@ -176,13 +178,15 @@ void vtkEmbreeRayTracer::SetMaterialMap(vtkActor* actor, int channel, vtkImageDa
   }
   if (channel < 0 || channel >= NUMBER_OF_MATERIAL_CHANNELS)
   {
-    vtkErrorMacro("SetMaterialMap: channel " << channel << " is not one of DIFFUSE_MAP .. ROUGHNESS_MAP (0.."
+    vtkErrorMacro("SetMaterialMap: channel " << channel
+                                             << " is not one of DIFFUSE_MAP .. ROUGHNESS_MAP (0.."
                                              << NUMBER_OF_MATERIAL_CHANNELS - 1 << ")");
     return;
   }
   auto& maps = this->Impl->Maps;
   maps.erase(std::remove_if(maps.begin(), maps.end(),
-               [&](const Internals::MapEntry& e) { return !e.Actor || (e.Actor == actor && e.Channel == channel); }),
+               [&](const Internals::MapEntry& e)
+               { return !e.Actor || (e.Actor == actor && e.Channel == channel); }),
     maps.end());
   if (image)
   {
@@ -266,7 +270,8 @@ int vtkEmbreeRayTracer::RequestInformation(
   return 1;
 }
 
-int vtkEmbreeRayTracer::RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+int vtkEmbreeRayTracer::RequestData(
+  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
   vtkImageData* output = vtkImageData::GetData(outputVector);
   this->PrimaryRays = this->ShadowRays = this->SecondaryRays = this->SupersampledPixels = 0;
@@ -281,7 +286,8 @@ int vtkEmbreeRayTracer::RequestData(vtkInformation*, vtkInformationVector**, vtk
   int width = 0, height = 0;
   if (!this->ImageSize(width, height))
   {
-    vtkErrorMacro("No image size: set Width and Height, or give the renderer a render window with a size.");
+    vtkErrorMacro(
+      "No image size: set Width and Height, or give the renderer a render window with a size.");
     return 0;
   }
   vtkCamera* camera = renderer->GetActiveCamera();
@@ -301,9 +307,12 @@ int vtkEmbreeRayTracer::RequestData(vtkInformation*, vtkInformationVector**, vtk
     vtkProperty* property = actor->GetProperty();
     mesolight::TexturedMaterial material;
     material.Name = std::string("actor ") + std::to_string(scene.Materials.size());
-    material.Ambient = static_cast<float>(property->GetAmbient()) * Vec3(property->GetAmbientColor());
-    material.Diffuse = static_cast<float>(property->GetDiffuse()) * Vec3(property->GetDiffuseColor());
-    material.Specular = static_cast<float>(property->GetSpecular()) * Vec3(property->GetSpecularColor());
+    material.Ambient =
+      static_cast<float>(property->GetAmbient()) * Vec3(property->GetAmbientColor());
+    material.Diffuse =
+      static_cast<float>(property->GetDiffuse()) * Vec3(property->GetDiffuseColor());
+    material.Specular =
+      static_cast<float>(property->GetSpecular()) * Vec3(property->GetSpecularColor());
     material.SpecularPower = static_cast<float>(property->GetSpecularPower());
     material.BumpScale = static_cast<float>(property->GetNormalScale());
     if (vtkTexture* texture = actor->GetTexture())
@@ -359,7 +368,8 @@ int vtkEmbreeRayTracer::RequestData(vtkInformation*, vtkInformationVector**, vtk
     vtkMatrix4x4* matrix = actor->GetMatrix();
     auto* sphereSource = vtkSphereSource::SafeDownCast(mapper->GetInputAlgorithm());
     float scale = 1.0f;
-    if (this->AnalyticSpheres && sphereSource && FullSphere(sphereSource) && IsSimilarity(matrix, scale))
+    if (this->AnalyticSpheres && sphereSource && FullSphere(sphereSource) &&
+      IsSimilarity(matrix, scale))
     {
       mesolight::TexturedSphere sphere;
       sphere.Geometry.Center = Point(matrix, sphereSource->GetCenter());
@@ -377,7 +387,8 @@ int vtkEmbreeRayTracer::RequestData(vtkInformation*, vtkInformationVector**, vtk
     vtkPolyData* input = vtkPolyData::SafeDownCast(mapper->GetInputDataObject(0, 0));
     if (!input)
     {
-      vtkWarningMacro("Actor " << actor << ": the mapper's input is not vtkPolyData; it is not traced.");
+      vtkWarningMacro(
+        "Actor " << actor << ": the mapper's input is not vtkPolyData; it is not traced.");
       continue;
     }
     if (input->GetNumberOfPolys() + input->GetNumberOfStrips() == 0)
@@ -401,10 +412,12 @@ int vtkEmbreeRayTracer::RequestData(vtkInformation*, vtkInformationVector**, vtk
     {
       tcoords = nullptr;
     }
-    if (!tcoords && (material.DiffuseMap || material.SpecularMap || material.AmbientMap || material.ShininessMap ||
-                      material.BumpMap || material.RoughnessMap))
+    if (!tcoords &&
+      (material.DiffuseMap || material.SpecularMap || material.AmbientMap ||
+        material.ShininessMap || material.BumpMap || material.RoughnessMap))
     {
-      vtkWarningMacro("Actor " << actor << " has texture maps but no texture coordinates: they read at (0, 0).");
+      vtkWarningMacro(
+        "Actor " << actor << " has texture maps but no texture coordinates: they read at (0, 0).");
     }
     // Append with the scene's per-vertex attributes kept only when every actor has them:
     // meshes without normals get their own face normals, without texture coordinates (0, 0).
@@ -445,8 +458,8 @@ int vtkEmbreeRayTracer::RequestData(vtkInformation*, vtkInformationVector**, vtk
       {
         continue;
       }
-      out.Triangles.emplace_back(first + static_cast<std::uint32_t>(ids[0]), first + static_cast<std::uint32_t>(ids[1]),
-        first + static_cast<std::uint32_t>(ids[2]));
+      out.Triangles.emplace_back(first + static_cast<std::uint32_t>(ids[0]),
+        first + static_cast<std::uint32_t>(ids[1]), first + static_cast<std::uint32_t>(ids[2]));
       out.MaterialIds.push_back(materialId);
     }
   }
@@ -484,7 +497,8 @@ int vtkEmbreeRayTracer::RequestData(vtkInformation*, vtkInformationVector**, vtk
     if (!(glm::length(source.Direction) > 0.0f))
     {
       source.Direction = glm::vec3(0.0f, 0.0f, -1.0f);
-      vtkWarningMacro("Light " << light << " has its position at its focal point; it shines along -z.");
+      vtkWarningMacro(
+        "Light " << light << " has its position at its focal point; it shines along -z.");
     }
     source.Colour = static_cast<float>(light->GetIntensity()) * Vec3(light->GetDiffuseColor());
     source.ConeAngleDegrees = static_cast<float>(light->GetConeAngle());
@@ -510,7 +524,8 @@ int vtkEmbreeRayTracer::RequestData(vtkInformation*, vtkInformationVector**, vtk
   }
   if (!pinhole.Valid())
   {
-    vtkErrorMacro("The renderer's camera is degenerate (position at the focal point, or view up along the view).");
+    vtkErrorMacro("The renderer's camera is degenerate (position at the focal point, or view up "
+                  "along the view).");
     return 0;
   }
 
@@ -519,7 +534,8 @@ int vtkEmbreeRayTracer::RequestData(vtkInformation*, vtkInformationVector**, vtk
   settings.Shadows = this->Shadows;
   settings.Reflections = this->Reflections;
   settings.GlossySamples = this->GlossySamples;
-  settings.Filter = this->BilinearTextures ? mesolight::TextureFilter::Bilinear : mesolight::TextureFilter::Nearest;
+  settings.Filter =
+    this->BilinearTextures ? mesolight::TextureFilter::Bilinear : mesolight::TextureFilter::Nearest;
   settings.AdaptiveSupersampling = this->AdaptiveSupersampling;
   settings.AdaptiveThreshold = static_cast<float>(this->AdaptiveThreshold);
   settings.Progressive = this->Progressive;
@@ -543,7 +559,8 @@ int vtkEmbreeRayTracer::RequestData(vtkInformation*, vtkInformationVector**, vtk
   this->AnalyticSphereCount = static_cast<int>(tracer->Scene().Spheres.size());
   this->TriangleCount = static_cast<vtkIdType>(tracer->Scene().Mesh.TriangleCount());
 
-  auto fill = [width, height](vtkImageData* image, const RgbImage& rgb) {
+  auto fill = [width, height](vtkImageData* image, const RgbImage& rgb)
+  {
     image->SetDimensions(width, height, 1);
     vtkNew<vtkUnsignedCharArray> bytes;
     bytes->SetName("RGB");
@@ -558,7 +575,8 @@ int vtkEmbreeRayTracer::RequestData(vtkInformation*, vtkInformationVector**, vtk
       const float value = rgb.Rgb[v];
       radiance->SetValue(static_cast<vtkIdType>(v), value);
       const float clamped = std::isfinite(value) ? std::min(1.0f, std::max(0.0f, value)) : 0.0f;
-      bytes->SetValue(static_cast<vtkIdType>(v), static_cast<unsigned char>(clamped * 255.0f + 0.5f));
+      bytes->SetValue(
+        static_cast<vtkIdType>(v), static_cast<unsigned char>(clamped * 255.0f + 0.5f));
     }
     image->GetPointData()->SetScalars(bytes);
     image->GetPointData()->AddArray(radiance);
@@ -572,7 +590,8 @@ int vtkEmbreeRayTracer::RequestData(vtkInformation*, vtkInformationVector**, vtk
   int level = 0;
   const RgbImage image = tracer->Render(
     pinhole, width, height,
-    [&](const RgbImage& partial, int) {
+    [&](const RgbImage& partial, int)
+    {
       fill(this->Impl->Partial, partial);
       this->UpdateProgress(std::min(0.99, static_cast<double>(++level) / levels));
       this->InvokeEvent(RefinementEvent, nullptr);

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "vtkCompositeReliefMapper.h"
 
 #include "vtkAttachReliefTexture.h"
@@ -87,9 +88,8 @@ protected:
   // Draws each block's prepared copy (triangles, normals, tangents) and adds the attributes
   // the helper does not upload itself: tangents, and the relief texture coordinates (the
   // helper uploads "tcoord" only when the actor has a texture).
-  void AppendOneBufferObject(vtkRenderer* ren, vtkActor* actor,
-    vtkCompositeMapperHelperData* hdata, vtkIdType& voffset, std::vector<unsigned char>& colors,
-    std::vector<float>& norms) override
+  void AppendOneBufferObject(vtkRenderer* ren, vtkActor* actor, vtkCompositeMapperHelperData* hdata,
+    vtkIdType& voffset, std::vector<unsigned char>& colors, std::vector<float>& norms) override
   {
     vtkPolyData* source = hdata->Data;
     vtkPolyData* prepared = this->Shading()->GetGeometryCache()->Prepare(source);
@@ -138,7 +138,8 @@ protected:
     shaders[vtkShader::Fragment]->SetSource(fs);
   }
 
-  void SetMapperShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* actor) override
+  void SetMapperShaderParameters(
+    vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* actor) override
   {
     this->Superclass::SetMapperShaderParameters(cellBO, ren, actor);
     this->Shading()->SetShaderParameters(cellBO.Program, ren, actor);

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkCompositeReliefMapper
  * @brief   vtkReliefMapper's relief rendering as a vtkCompositePolyDataMapper2, for composite

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "vtkLightSetTexture.h"
 
 #include "vtkDataArray.h"
@@ -65,7 +66,8 @@ bool vtkLightSetTexture::Update(vtkOpenGLRenderWindow* renWin, vtkImageData* lig
       if (!std::isfinite(direction[c]) || !std::isfinite(light.Irradiance[c]) ||
         light.Irradiance[c] < 0.0f)
       {
-        vtkErrorMacro(<< "Light " << i << " of the light set has a non-finite direction or a "
+        vtkErrorMacro(<< "Light " << i
+                      << " of the light set has a non-finite direction or a "
                          "negative or non-finite irradiance.");
         return false;
       }
@@ -79,8 +81,8 @@ bool vtkLightSetTexture::Update(vtkOpenGLRenderWindow* renWin, vtkImageData* lig
     {
       light.Direction[c] = static_cast<float>(direction[c]);
     }
-    light.Luminance = 0.2125f * light.Irradiance[0] + 0.7154f * light.Irradiance[1] +
-      0.0721f * light.Irradiance[2];
+    light.Luminance =
+      0.2125f * light.Irradiance[0] + 0.7154f * light.Irradiance[1] + 0.0721f * light.Irradiance[2];
   }
   std::sort(sorted.begin(), sorted.end(),
     [](const Light& a, const Light& b) { return a.Luminance > b.Luminance; });

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkLightSetTexture
  * @brief   An image-based light set on the GPU, sorted strongest first, for relief shading.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "vtkMinDepthPyramidTexture.h"
 
 #include "vtkObjectFactory.h"
@@ -22,8 +23,9 @@ vtkMinDepthPyramidTexture::~vtkMinDepthPyramidTexture() = default;
 bool vtkMinDepthPyramidTexture::Upload(
   vtkOpenGLRenderWindow* renWin, const std::vector<float>& depth, int width, int height)
 {
-  // The min-depth pyramid (filters/ReliefTextures/core/MinDepthPyramid.h): level sizes halve rounding down, a complete
-  // OpenGL mipmap, so the coarser levels upload as mip levels of one texture.
+  // The min-depth pyramid (filters/ReliefTextures/core/MinDepthPyramid.h): level sizes halve
+  // rounding down, a complete OpenGL mipmap, so the coarser levels upload as mip levels of one
+  // texture.
   const std::vector<std::vector<float>> levels =
     mesolight::ComputeMinDepthPyramid(depth.data(), width, height);
   std::vector<std::pair<int, int>> sizes;

@@ -1,12 +1,14 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkMinDepthPyramidTexture
  * @brief   The min-depth (maximum-mipmap) pyramid of a relief texture on the GPU, which the
  *          MaximumMipmap method traverses.
  *
  * Level 0 is the relief texture's depth; each coarser level holds the minimum depth (the highest
- * surface) of the cells below it (mesolight::ComputeMinDepthPyramid, filters/ReliefTextures/core/MinDepthPyramid.h).
- * Level sizes halve rounding down, a complete OpenGL mipmap, so all levels are mip levels of one
- * single-channel float texture (uploaded by hand: OpenGL would average, not take minima).
+ * surface) of the cells below it (mesolight::ComputeMinDepthPyramid,
+ * filters/ReliefTextures/core/MinDepthPyramid.h). Level sizes halve rounding down, a complete
+ * OpenGL mipmap, so all levels are mip levels of one single-channel float texture (uploaded by
+ * hand: OpenGL would average, not take minima).
  */
 
 #ifndef vtkMinDepthPyramidTexture_h
@@ -33,7 +35,8 @@ public:
    * Builds and uploads the pyramid of a width x height depth image (row by row, depth in
    * [0, 1]). False (with an error) if the texture cannot be made.
    */
-  bool Upload(vtkOpenGLRenderWindow* renWin, const std::vector<float>& depth, int width, int height);
+  bool Upload(
+    vtkOpenGLRenderWindow* renWin, const std::vector<float>& depth, int width, int height);
 
   /** Marks the pyramid as not built (its relief texture changed). */
   void Reset() { this->NumberOfLevels = 0; }

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkReliefGeometryCache
  * @brief   The geometry a relief shader draws, prepared once per input polydata: triangles,

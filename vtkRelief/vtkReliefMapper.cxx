@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "vtkReliefMapper.h"
 
 #include "vtkAlgorithmOutput.h"
@@ -131,9 +132,8 @@ void vtkReliefMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* actor)
     vtkAlgorithmOutput* lightPort = this->GetInputConnection(2, 0);
     lightPort->GetProducer()->Update(lightPort->GetIndex());
   }
-  this->PreparedInput = this->CurrentInput
-    ? this->Shading->GetGeometryCache()->Prepare(this->CurrentInput)
-    : nullptr;
+  this->PreparedInput =
+    this->CurrentInput ? this->Shading->GetGeometryCache()->Prepare(this->CurrentInput) : nullptr;
   if (!this->PreparedInput)
   {
     return;

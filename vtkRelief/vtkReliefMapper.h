@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkReliefMapper
  * @brief   Renders a coarse mesh as if it carried a fine height field, by ray marching a
@@ -9,7 +10,8 @@
  * intersection (linear search then a refinement step), and shades the hit point with every light
  * of the renderer, using the actor's vtkProperty (ambient, diffuse, specular, specular power) and
  * the actor's colour texture sampled at the displaced texture coordinate. Optionally it
- *  - marches toward each light for hard self-shadows (the same march, Méndez Fernández's thesis §4.3),
+ *  - marches toward each light for hard self-shadows (the same march, Méndez Fernández's thesis
+ * §4.3),
  *  - discards fragments whose hit leaves the texture domain (silhouettes),
  *  - writes gl_FragDepth from the hit point so other geometry intersects the relief correctly.
  *
@@ -18,7 +20,8 @@
  * Several mappers can share one property (SetReliefProperty()), as actors share a vtkProperty.
  * Methods (one march skeleton, method-specific refinement), among them:
  *  - Relief: linear search + binary search (Policarpo et al. 2005; the thesis uses 10 + 8).
- *  - ParallaxOcclusion: linear search + one secant step between the last two samples (Tatarchuk 2006).
+ *  - ParallaxOcclusion: linear search + one secant step between the last two samples (Tatarchuk
+ * 2006).
  *  - SteepParallax: linear search only (McGuire & McGuire 2005).
  *  - TextureMapping: no march (plain texture and normal mapping); useful as a baseline.
  *

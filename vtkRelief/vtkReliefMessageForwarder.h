@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkReliefMessageForwarder
  * @brief   Passes the errors and warnings of the objects a relief mapper is built from on to

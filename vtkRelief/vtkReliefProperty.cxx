@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "vtkReliefProperty.h"
 
 #include "vtkMath.h"
@@ -87,7 +88,8 @@ void vtkReliefProperty::SetDepthScale(double depthScale)
 {
   if (std::isnan(depthScale))
   {
-    vtkErrorMacro(<< "SetDepthScale: NaN is not a depth scale; keeping " << this->DepthScale << ".");
+    vtkErrorMacro(<< "SetDepthScale: NaN is not a depth scale; keeping " << this->DepthScale
+                  << ".");
     return;
   }
   depthScale = vtkMath::ClampValue(depthScale, 0.0, 10.0);

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkReliefProperty
  * @brief   The settings of a relief surface: the height-field intersection method, its step

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "vtkReliefShaderSource.h"
 
 #include "vtkObjectFactory.h"
@@ -38,9 +39,9 @@ int RefinementKind(int method)
 std::string MethodDefines()
 {
   const char* const glslNames[] = { "ML_TEXTURE_MAPPING", "ML_BUMP", "ML_PARALLAX",
-    "ML_PARALLAX_OFFSET_LIMITING", "ML_PARALLAX_SLOPE", "ML_ITERATIVE_PARALLAX",
-    "ML_BINARY_SEARCH", "ML_SECANT", "ML_LINEAR_SEARCH", "ML_PARALLAX_OCCLUSION", "ML_RELIEF",
-    "ML_INTERVAL", "ML_RELAXED_CONE_BINARY", "ML_RELAXED_CONE_INTERVAL", "ML_CONSERVATIVE_CONE",
+    "ML_PARALLAX_OFFSET_LIMITING", "ML_PARALLAX_SLOPE", "ML_ITERATIVE_PARALLAX", "ML_BINARY_SEARCH",
+    "ML_SECANT", "ML_LINEAR_SEARCH", "ML_PARALLAX_OCCLUSION", "ML_RELIEF", "ML_INTERVAL",
+    "ML_RELAXED_CONE_BINARY", "ML_RELAXED_CONE_INTERVAL", "ML_CONSERVATIVE_CONE",
     "ML_MAXIMUM_MIPMAP" };
   static_assert(sizeof(glslNames) / sizeof(glslNames[0]) == vtkReliefProperty::NumberOfMethods,
     "one GLSL name per method");
@@ -100,7 +101,8 @@ void vtkReliefShaderSource::ReplaceValuesBefore(std::string& vs, std::string& fs
     "in vec3 tangentMC;\nuniform mat3 mlTangentMatrix;\nout vec3 mlTangentVC;\n"
     "in vec2 mlTCoordMC;\nout vec2 mlTCoordVC;\n//VTK::Normal::Dec");
   vtkShaderProgram::Substitute(vs, "//VTK::Normal::Impl",
-    "mlTangentVC = mlTangentMatrix * tangentMC;\n  mlTCoordVC = mlTCoordMC;\n  //VTK::Normal::Impl");
+    "mlTangentVC = mlTangentMatrix * tangentMC;\n  mlTCoordVC = mlTCoordMC;\n  "
+    "//VTK::Normal::Impl");
   vtkShaderProgram::Substitute(
     fs, "//VTK::CustomUniforms::Dec", "//VTK::CustomUniforms::Dec\n//MESOLIGHT::Dec");
   vtkShaderProgram::Substitute(

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkReliefShaderSource
  * @brief   The relief's edits of a VTK OpenGL mapper's shader sources, and the variant (the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "vtkReliefShading.h"
 
 #include "vtkActor.h"
@@ -161,8 +162,7 @@ void vtkReliefShading::SetShaderParameters(
     relief->GetBakedDepthScale() >= 0.0 ? relief->GetBakedDepthScale() : p->GetDepthScale();
   program->SetUniformf("mlGradientScale", baked > 0.0 ? static_cast<float>(1.0 / baked) : 0.0f);
   const int* size = relief->GetSize();
-  program->SetUniformf(
-    "mlTexelAspect", size[0] > 0 ? static_cast<float>(size[1]) / size[0] : 1.0f);
+  program->SetUniformf("mlTexelAspect", size[0] > 0 ? static_cast<float>(size[1]) / size[0] : 1.0f);
   program->SetUniformi("mlLinearSteps", p->GetLinearSteps());
   program->SetUniformi("mlRefinementSteps", p->GetRefinementSteps());
   program->SetUniformi("mlMinimumSteps", std::min(p->GetMinimumSteps(), p->GetLinearSteps()));

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkReliefShading
  * @brief   The relief drawing shared by vtkReliefMapper and vtkCompositeReliefMapper: composes
@@ -49,7 +50,8 @@ public:
   vtkTypeMacro(vtkReliefShading, vtkObject);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  /** Maximum number of VTK lights shaded per fragment; further lights are ignored with a warning. */
+  /** Maximum number of VTK lights shaded per fragment; further lights are ignored with a warning.
+   */
   static constexpr int MaximumNumberOfLights = 8;
 
   /** The prepared copies of the mapper's inputs. */
@@ -60,8 +62,8 @@ public:
    * the textures for a draw with these settings and this actor. False (with an error) if nothing
    * can be drawn.
    */
-  bool StartDraw(vtkOpenGLRenderWindow* renWin, vtkReliefProperty* property,
-    vtkImageData* relief, vtkImageData* lights, vtkActor* actor);
+  bool StartDraw(vtkOpenGLRenderWindow* renWin, vtkReliefProperty* property, vtkImageData* relief,
+    vtkImageData* lights, vtkActor* actor);
   /** Deactivates what StartDraw activated. */
   void FinishDraw();
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "vtkReliefTextureCache.h"
 
 #include "vtkAbstractArray.h"
@@ -136,9 +137,8 @@ bool vtkReliefTextureCache::Update(
     mipmaps ? vtkTextureObject::LinearMipmapLinear : vtkTextureObject::Linear);
   this->TextureObject->SetMagnificationFilter(vtkTextureObject::Linear);
   this->UploadedWithMipmaps = mipmaps;
-  if (!this->TextureObject->Create2DFromRaw(
-        static_cast<unsigned int>(dims[0]), static_cast<unsigned int>(dims[1]), 4, VTK_FLOAT,
-        texels.data()))
+  if (!this->TextureObject->Create2DFromRaw(static_cast<unsigned int>(dims[0]),
+        static_cast<unsigned int>(dims[1]), 4, VTK_FLOAT, texels.data()))
   {
     vtkErrorMacro(<< "Could not create a " << dims[0] << "x" << dims[1]
                   << " float RGBA texture (too large for this OpenGL implementation?).");

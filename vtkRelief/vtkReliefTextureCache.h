@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkReliefTextureCache
  * @brief   The relief texture on the GPU: uploaded when its image changes, with what the draw

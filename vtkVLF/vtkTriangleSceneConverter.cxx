@@ -50,11 +50,13 @@ glm::vec3 Colour(vtkDataArray* array, vtkIdType cell)
     return glm::vec3(static_cast<float>(array->GetComponent(cell, 0)));
   }
   return glm::vec3(static_cast<float>(array->GetComponent(cell, 0)),
-    static_cast<float>(array->GetComponent(cell, 1)), static_cast<float>(array->GetComponent(cell, 2)));
+    static_cast<float>(array->GetComponent(cell, 1)),
+    static_cast<float>(array->GetComponent(cell, 2)));
 }
 } // namespace
 
-void vtkTriangleSceneConverter::ToPolyData(const mesolight::TriangleScene& scene, vtkPolyData* output)
+void vtkTriangleSceneConverter::ToPolyData(
+  const mesolight::TriangleScene& scene, vtkPolyData* output)
 {
   output->Initialize();
   vtkNew<vtkPoints> points;
@@ -126,7 +128,8 @@ void vtkTriangleSceneConverter::ToPolyData(const mesolight::TriangleScene& scene
   }
 }
 
-vtkSmartPointer<vtkPolyData> vtkTriangleSceneConverter::ToPolyData(const mesolight::TriangleScene& scene)
+vtkSmartPointer<vtkPolyData> vtkTriangleSceneConverter::ToPolyData(
+  const mesolight::TriangleScene& scene)
 {
   auto output = vtkSmartPointer<vtkPolyData>::New();
   this->ToPolyData(scene, output);
@@ -137,7 +140,8 @@ bool vtkTriangleSceneConverter::ToTriangleScene(vtkPolyData* input, mesolight::T
 {
   scene = mesolight::TriangleScene();
   this->LastWarningCount = 0;
-  const auto warn = [this](const std::string& message) {
+  const auto warn = [this](const std::string& message)
+  {
     ++this->LastWarningCount;
     vtkWarningMacro(<< message);
   };
@@ -258,7 +262,8 @@ bool vtkTriangleSceneConverter::ToTriangleScene(vtkPolyData* input, mesolight::T
   vtkStringArray* names =
     vtkStringArray::SafeDownCast(triangles->GetFieldData()->GetAbstractArray(MaterialNamesName));
 
-  const mesolight::SceneMaterial grey = [] {
+  const mesolight::SceneMaterial grey = []
+  {
     mesolight::SceneMaterial m;
     m.Name = "default-grey";
     m.Diffuse = glm::vec3(0.5f);
@@ -301,7 +306,8 @@ bool vtkTriangleSceneConverter::ToTriangleScene(vtkPolyData* input, mesolight::T
         material = found->second;
         const mesolight::SceneMaterial& first = scene.Materials[material];
         if (!warnedDiffering &&
-          (first.Diffuse != m.Diffuse || first.Specular != m.Specular || first.Emission != m.Emission))
+          (first.Diffuse != m.Diffuse || first.Specular != m.Specular ||
+            first.Emission != m.Emission))
         {
           warn("cells with MaterialId " + std::to_string(id) +
             " have different colours: the first cell's are used");
@@ -350,7 +356,8 @@ bool vtkTriangleSceneConverter::ToTriangleScene(vtkPolyData* input, mesolight::T
   {
     for (vtkIdType v = 0; v < points->GetNumberOfPoints(); ++v)
     {
-      scene.TextureCoordinates.emplace_back(tcoords->GetComponent(v, 0), tcoords->GetComponent(v, 1));
+      scene.TextureCoordinates.emplace_back(
+        tcoords->GetComponent(v, 0), tcoords->GetComponent(v, 1));
     }
   }
 

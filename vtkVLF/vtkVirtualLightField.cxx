@@ -45,13 +45,15 @@ bool vtkVirtualLightField::ComputeIrradiance(
   {
     return false;
   }
-  const glm::vec3 n(static_cast<float>(normal[0]), static_cast<float>(normal[1]), static_cast<float>(normal[2]));
+  const glm::vec3 n(
+    static_cast<float>(normal[0]), static_cast<float>(normal[1]), static_cast<float>(normal[2]));
   if (!(glm::length(n) > 0.0f))
   {
     return false;
   }
   const glm::vec3 p = mesolight::vlf::ToUnit(*this->Field,
-    glm::vec3(static_cast<float>(point[0]), static_cast<float>(point[1]), static_cast<float>(point[2])));
+    glm::vec3(
+      static_cast<float>(point[0]), static_cast<float>(point[1]), static_cast<float>(point[2])));
   const glm::vec3 e = mesolight::vlf::Lookup(*this->Field).Irradiance(p, glm::normalize(n));
   for (int c = 0; c < 3; ++c)
   {
@@ -99,7 +101,8 @@ int vtkVirtualLightField::RequestData(
   const bool snapshots = !this->SnapshotFileName.empty();
   try
   {
-    if (snapshots && vlf::FileExists(this->SnapshotFileName) && !vlf::IsSnapshotFile(this->SnapshotFileName))
+    if (snapshots && vlf::FileExists(this->SnapshotFileName) &&
+      !vlf::IsSnapshotFile(this->SnapshotFileName))
     {
       vtkErrorMacro("'" << this->SnapshotFileName
                         << "' exists and is not a light field snapshot: it is left alone; choose "
@@ -114,16 +117,19 @@ int vtkVirtualLightField::RequestData(
     }
     else
     {
-      field = vlf::LightField::Build(scene, settings, mesolight::AlgorithmProgress(this, 0.0, buildShare));
+      field = vlf::LightField::Build(
+        scene, settings, mesolight::AlgorithmProgress(this, 0.0, buildShare));
     }
     vlf::PropagationOptions options;
     options.Progress = mesolight::AlgorithmProgress(this, buildShare, 1.0);
-    vlf::Propagate(*field, this->Iterations, options, [&](const vlf::LightField& f) {
-      if (snapshots)
+    vlf::Propagate(*field, this->Iterations, options,
+      [&](const vlf::LightField& f)
       {
-        vlf::WriteSnapshot(f, this->SnapshotFileName);
-      }
-    });
+        if (snapshots)
+        {
+          vlf::WriteSnapshot(f, this->SnapshotFileName);
+        }
+      });
     this->Field = std::move(field);
   }
   catch (const vlf::AbortedError&)
@@ -153,8 +159,8 @@ int vtkVirtualLightField::RequestData(
     for (int c = 0; c < 3; ++c)
     {
       const std::uint32_t original = unit.Triangles[t][c];
-      auto inserted = copyOf.emplace(std::make_pair(surface, original),
-        static_cast<std::uint32_t>(world.Positions.size()));
+      auto inserted = copyOf.emplace(
+        std::make_pair(surface, original), static_cast<std::uint32_t>(world.Positions.size()));
       if (inserted.second)
       {
         world.Positions.push_back(vlf::ToWorld(field, unit.Positions[original]));
@@ -187,8 +193,7 @@ int vtkVirtualLightField::RequestData(
     glm::vec3 mean(0.0f);
     if (s != vlf::NoSurface)
     {
-      const glm::vec3 centre =
-        (unit.Vertex(t, 0) + unit.Vertex(t, 1) + unit.Vertex(t, 2)) / 3.0f;
+      const glm::vec3 centre = (unit.Vertex(t, 0) + unit.Vertex(t, 1) + unit.Vertex(t, 2)) / 3.0f;
       mean = field.SampleTexture(field.TotalDiffuse, s, centre);
       for (int c = 0; c < 3; ++c)
       {
@@ -212,11 +217,15 @@ void vtkVirtualLightField::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Directions: " << this->Directions << "\n";
   os << indent << "RaysPerSide: " << this->RaysPerSide << "\n";
-  os << indent << "Tiles: " << this->Tiles << (this->Tiles == 0 ? " (RaysPerSide / 8)" : "") << "\n";
+  os << indent << "Tiles: " << this->Tiles << (this->Tiles == 0 ? " (RaysPerSide / 8)" : "")
+     << "\n";
   os << indent << "Iterations: " << this->Iterations << "\n";
   os << indent << "MemoryBudget: " << this->MemoryBudget << " bytes\n";
-  os << indent << "SnapshotFileName: " << (this->SnapshotFileName.empty() ? "(none)" : this->SnapshotFileName) << "\n";
+  os << indent
+     << "SnapshotFileName: " << (this->SnapshotFileName.empty() ? "(none)" : this->SnapshotFileName)
+     << "\n";
   os << indent << "ResumeFromSnapshot: " << this->ResumeFromSnapshot << "\n";
   os << indent << "LightField: "
-     << (this->Field ? std::to_string(this->Field->IterationsDone) + " iterations done" : "(none)") << "\n";
+     << (this->Field ? std::to_string(this->Field->IterationsDone) + " iterations done" : "(none)")
+     << "\n";
 }

@@ -11,8 +11,8 @@
  *
  * Output: the scene's triangles (world coordinates, material arrays kept) with the diffuse
  * radiance leaving each surface -- the per-surface total diffuse textures, the walkthrough's
- * progressive mode (Wither 2005 §2.4.2.2.3) -- as cell data "Radiance" (mean over the triangle's corners
- * and centre) and point data "Radiance" (at each vertex), 3 components, linear radiance.
+ * progressive mode (Wither 2005 §2.4.2.2.3) -- as cell data "Radiance" (mean over the triangle's
+ * corners and centre) and point data "Radiance" (at each vertex), 3 components, linear radiance.
  *
  * Memory is estimated before anything is allocated; above MemoryBudget the filter fails with a
  * message saying how much it would need. With a SnapshotFileName a snapshot is written after

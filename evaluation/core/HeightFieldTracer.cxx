@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "HeightFieldTracer.h"
 
 #include <algorithm>
@@ -84,7 +85,8 @@ public:
     , Rate(rate)
     , N(n)
     , Cell(static_cast<int>(std::clamp(std::floor(x0), -1.0, n - 1.0)))
-  {}
+  {
+  }
 
   bool InBand() const { return this->Cell < 0 || this->Cell >= this->N - 1; }
   int Lower() const { return std::clamp(this->Cell, 0, this->N - 1); }
@@ -197,8 +199,8 @@ double PolishRoot(const Quadratic& f, double lo, double hi, Contact contact, dou
 // Smallest s in [0, length] where f touches. Splitting at the stationary point -B / 2A makes each
 // piece monotone, so a sign test at a piece's end decides exactly whether it holds a root, and
 // tangential (double-root) contacts are not lost to a negative discriminant.
-std::optional<double> FirstContact(const Quadratic& f, double length, Contact contact, double ulp,
-  double tol)
+std::optional<double> FirstContact(
+  const Quadratic& f, double length, Contact contact, double ulp, double tol)
 {
   if (Touches(f(0.0), contact))
   {
@@ -379,14 +381,14 @@ glm::dvec2 HeightField::GradientAt(double u, double v) const
   return { ddx * this->W, ddy * this->H };
 }
 
-std::optional<RayHit> IntersectFirst(const HeightField& hf, const glm::dvec3& origin,
-  const glm::dvec3& dir, double tMax)
+std::optional<RayHit> IntersectFirst(
+  const HeightField& hf, const glm::dvec3& origin, const glm::dvec3& dir, double tMax)
 {
   return Trace(hf, origin, dir, tMax, Contact::OnOrBelow);
 }
 
-bool Visible(const HeightField& hf, const glm::dvec3& point, const glm::dvec3& toLight,
-  double epsilon)
+bool Visible(
+  const HeightField& hf, const glm::dvec3& point, const glm::dvec3& toLight, double epsilon)
 {
   if (!IsFinite(point) || !IsFinite(toLight) || !std::isfinite(epsilon) || !(toLight.z < 0.0))
   {
@@ -403,8 +405,8 @@ bool Visible(const HeightField& hf, const glm::dvec3& point, const glm::dvec3& t
   return !Trace(hf, start, dir, tTop, Contact::StrictlyBelow);
 }
 
-std::optional<RayHit> IntersectFirstBruteForce(const HeightField& hf, const glm::dvec3& origin,
-  const glm::dvec3& dir, double tMax, int samples)
+std::optional<RayHit> IntersectFirstBruteForce(
+  const HeightField& hf, const glm::dvec3& origin, const glm::dvec3& dir, double tMax, int samples)
 {
   if (samples < 1)
   {
@@ -415,9 +417,8 @@ std::optional<RayHit> IntersectFirstBruteForce(const HeightField& hf, const glm:
     return std::nullopt;
   }
   // Scalar arithmetic: the oracle runs ~10^7 times per test, often in unoptimized builds.
-  const auto below = [&](double t) {
-    return origin.z + t * dir.z >= hf.DepthAt(origin.x + t * dir.x, origin.y + t * dir.y);
-  };
+  const auto below = [&](double t)
+  { return origin.z + t * dir.z >= hf.DepthAt(origin.x + t * dir.x, origin.y + t * dir.y); };
   if (below(0.0))
   {
     return RayHit{ 0.0, origin };

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * HeightFieldTracer: the exact CPU reference that GPU ray-marched relief mapping is measured
  * against. Plain C++17 + GLM, no VTK types, so it unit-tests fast and reads like the math.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // RayTraceSpheres: ray trace an ordinary VTK scene on the CPU with Embree. A vtkSphereSource
 // actor (traced as an exact sphere) with a checker texture as its specular (reflectivity) map
 // stands on a plane lit by one positional light with shadows; adaptive supersampling smooths
@@ -67,7 +68,8 @@ int main(int argc, char* argv[])
     for (int i = 0; i < 128; ++i)
     {
       const unsigned char v = ((i / 16 + j / 16) % 2) ? 255 : 30;
-      texels[3 * (j * 128 + i) + 0] = texels[3 * (j * 128 + i) + 1] = texels[3 * (j * 128 + i) + 2] = v;
+      texels[3 * (j * 128 + i) + 0] = texels[3 * (j * 128 + i) + 1] =
+        texels[3 * (j * 128 + i) + 2] = v;
     }
   }
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The smallest complete Mesolight pipeline: a procedural depth map is baked into a relief
 // texture and drawn on a single quad by vtkReliefMapper, lit by one VTK light.
 //

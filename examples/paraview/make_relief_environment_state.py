@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Builds examples/relief-environment.pvsm: a stone relief on a square, lit only by the default
 procedural environment (a smooth sky) through 64 median-cut lights, shown with the Relief
 Surface representation. Run with the plugin's pvbatch (see docs/paraview.md):

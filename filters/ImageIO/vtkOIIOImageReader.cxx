@@ -158,8 +158,8 @@ bool vtkOIIOImageReader::ReadHeader(Header& header)
   if (!std::ifstream(path, std::ios::binary).is_open())
   {
     this->SetErrorCode(vtkErrorCode::CannotOpenFileError);
-    vtkErrorMacro("Cannot read image '" << this->FileName
-                                        << "': the file cannot be opened (permissions?).");
+    vtkErrorMacro(
+      "Cannot read image '" << this->FileName << "': the file cannot be opened (permissions?).");
     return false;
   }
 
@@ -179,9 +179,8 @@ bool vtkOIIOImageReader::ReadHeader(Header& header)
     else
     {
       this->SetErrorCode(vtkErrorCode::UnrecognizedFileTypeError);
-      vtkErrorMacro("Cannot read image '" << this->FileName
-                                          << "': unrecognized file type (OpenImageIO: "
-                                          << oiioError << ").");
+      vtkErrorMacro("Cannot read image '"
+        << this->FileName << "': unrecognized file type (OpenImageIO: " << oiioError << ").");
     }
     return false;
   }
@@ -191,9 +190,9 @@ bool vtkOIIOImageReader::ReadHeader(Header& header)
   if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0)
   {
     this->SetErrorCode(vtkErrorCode::FileFormatError);
-    vtkErrorMacro("Cannot read image '" << this->FileName << "': zero-sized image ("
-                                        << spec.width << " x " << spec.height << ", "
-                                        << spec.nchannels << " channels).");
+    vtkErrorMacro("Cannot read image '" << this->FileName << "': zero-sized image (" << spec.width
+                                        << " x " << spec.height << ", " << spec.nchannels
+                                        << " channels).");
     in->close();
     in->geterror();
     return false;
@@ -301,9 +300,8 @@ int vtkOIIOImageReader::RequestData(
   if (!in)
   {
     this->SetErrorCode(vtkErrorCode::FileFormatError);
-    vtkErrorMacro("Cannot read image '" << this->FileName
-                                        << "' (OpenImageIO: " << mesolight::OneLineMessage(OIIO::geterror())
-                                        << ").");
+    vtkErrorMacro("Cannot read image '" << this->FileName << "' (OpenImageIO: "
+                                        << mesolight::OneLineMessage(OIIO::geterror()) << ").");
     return 0;
   }
 
@@ -316,12 +314,12 @@ int vtkOIIOImageReader::RequestData(
 
   // File rows are top first, VTK rows bottom first: start at the last VTK row and walk
   // backwards with a negative scanline stride.
-  const OIIO::stride_t rowBytes = static_cast<OIIO::stride_t>(header.Width) *
-    header.Channels * static_cast<OIIO::stride_t>(header.Format.size());
+  const OIIO::stride_t rowBytes = static_cast<OIIO::stride_t>(header.Width) * header.Channels *
+    static_cast<OIIO::stride_t>(header.Format.size());
   auto* base = static_cast<unsigned char*>(scalars->GetVoidPointer(0));
   unsigned char* lastRow = base + static_cast<size_t>(rowBytes) * (header.Height - 1);
-  const bool ok = in->read_image(0, 0, 0, header.Channels, header.Format, lastRow,
-    OIIO::AutoStride, -rowBytes, OIIO::AutoStride, &vtkOIIOImageReader::ProgressCallback, this);
+  const bool ok = in->read_image(0, 0, 0, header.Channels, header.Format, lastRow, OIIO::AutoStride,
+    -rowBytes, OIIO::AutoStride, &vtkOIIOImageReader::ProgressCallback, this);
   const std::string oiioError = mesolight::OneLineMessage(in->geterror());
   in->close();
   in->geterror();

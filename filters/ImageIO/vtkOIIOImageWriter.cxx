@@ -76,7 +76,6 @@ void ConvertFlipTo(OIIO::TypeDesc format, const TIn* in, int w, int h, int nComp
   }
 }
 
-
 std::string UniqueSuffix()
 {
   static std::atomic<unsigned long> counter{ 0 };
@@ -182,8 +181,9 @@ bool vtkOIIOImageWriter::WriteImage(vtkImageData* input)
   if (input->GetNumberOfPoints() < 1 || !scalars || scalars->GetNumberOfTuples() < 1)
   {
     this->SetErrorCode(vtkErrorCode::UserError);
-    vtkErrorMacro("Cannot write '" << fileName << "': the input image is empty (no points or "
-                                                  "no point scalars).");
+    vtkErrorMacro("Cannot write '" << fileName
+                                   << "': the input image is empty (no points or "
+                                      "no point scalars).");
     return false;
   }
   if (dims[2] != 1)
@@ -197,8 +197,9 @@ bool vtkOIIOImageWriter::WriteImage(vtkImageData* input)
   if (nComp < 1 || nComp > 4 || scalars->GetNumberOfTuples() != input->GetNumberOfPoints())
   {
     this->SetErrorCode(vtkErrorCode::UserError);
-    vtkErrorMacro("Cannot write '" << fileName << "': 1 to 4 components per pixel are supported, "
-                                                  "the scalars have "
+    vtkErrorMacro("Cannot write '" << fileName
+                                   << "': 1 to 4 components per pixel are supported, "
+                                      "the scalars have "
                                    << nComp << ".");
     return false;
   }
@@ -232,9 +233,9 @@ bool vtkOIIOImageWriter::WriteImage(vtkImageData* input)
   if (!out)
   {
     this->SetErrorCode(vtkErrorCode::UnrecognizedFileTypeError);
-    vtkErrorMacro("Cannot write '" << fileName << "': unknown or unsupported file extension '"
-                                   << target.extension().string()
-                                   << "' (OpenImageIO: " << mesolight::OneLineMessage(OIIO::geterror()) << ").");
+    vtkErrorMacro("Cannot write '"
+      << fileName << "': unknown or unsupported file extension '" << target.extension().string()
+      << "' (OpenImageIO: " << mesolight::OneLineMessage(OIIO::geterror()) << ").");
     return false;
   }
   const std::string format = out->format_name();
@@ -261,19 +262,18 @@ bool vtkOIIOImageWriter::WriteImage(vtkImageData* input)
       break;
     case AUTO:
     default:
-      pixelType = floatFormat
-        ? OIIO::TypeDesc::FLOAT
-        : ((sixteenBitFormat && this->BitDepth > 8) ? OIIO::TypeDesc::UINT16 : OIIO::TypeDesc::UINT8);
+      pixelType = floatFormat ? OIIO::TypeDesc::FLOAT
+                              : ((sixteenBitFormat && this->BitDepth > 8) ? OIIO::TypeDesc::UINT16
+                                                                          : OIIO::TypeDesc::UINT8);
       break;
   }
 
   // Convert + flip to the file's top-row-first order.
-  std::vector<unsigned char> pixels(
-    static_cast<size_t>(w) * h * nComp * pixelType.size());
+  std::vector<unsigned char> pixels(static_cast<size_t>(w) * h * nComp * pixelType.size());
   switch (scalars->GetDataType())
   {
-    vtkTemplateMacro(ConvertFlipTo(pixelType, static_cast<const VTK_TT*>(scalars->GetVoidPointer(0)),
-      w, h, nComp, pixels.data()));
+    vtkTemplateMacro(ConvertFlipTo(pixelType,
+      static_cast<const VTK_TT*>(scalars->GetVoidPointer(0)), w, h, nComp, pixels.data()));
     default:
       this->SetErrorCode(vtkErrorCode::UserError);
       vtkErrorMacro("Cannot write '" << fileName << "': unsupported scalar type "
@@ -288,25 +288,28 @@ bool vtkOIIOImageWriter::WriteImage(vtkImageData* input)
   // Write next to the target, then rename: a failed write never leaves a broken file.
   const fs::path temporary = directory /
     ("." + target.stem().string() + ".tmp-" + UniqueSuffix() + target.extension().string());
-  const auto removeTemporary = [&temporary]() {
+  const auto removeTemporary = [&temporary]()
+  {
     std::error_code ignored;
     fs::remove(temporary, ignored);
   };
   if (!out->open(temporary.string(), spec))
   {
     this->SetErrorCode(vtkErrorCode::CannotOpenFileError);
-    vtkErrorMacro("Cannot write '" << fileName << "': cannot create a " << format << " file in '"
-                                   << directory.string()
-                                   << "' (OpenImageIO: " << mesolight::OneLineMessage(out->geterror()) << ").");
+    vtkErrorMacro("Cannot write '"
+      << fileName << "': cannot create a " << format << " file in '" << directory.string()
+      << "' (OpenImageIO: " << mesolight::OneLineMessage(out->geterror()) << ").");
     out.reset();
     removeTemporary();
     return false;
   }
   const bool written = out->write_image(pixelType, pixels.data(), OIIO::AutoStride,
     OIIO::AutoStride, OIIO::AutoStride, &vtkOIIOImageWriter::ProgressCallback, this);
-  const std::string writeError = written ? std::string() : mesolight::OneLineMessage(out->geterror());
+  const std::string writeError =
+    written ? std::string() : mesolight::OneLineMessage(out->geterror());
   const bool closed = out->close();
-  const std::string closeError = closed ? std::string() : mesolight::OneLineMessage(out->geterror());
+  const std::string closeError =
+    closed ? std::string() : mesolight::OneLineMessage(out->geterror());
   out.reset();
   if (this->GetAbortExecute())
   {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkLightProbeToLatLong
  * @brief   Light probe picture (angular map or mirror ball) -> latitude-longitude environment.

@@ -37,16 +37,18 @@ namespace
 template <typename T>
 void ToRgb(const T* data, vtkIdType n, int nComp, float* out)
 {
-  vtkSMPTools::For(0, n, [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType k = begin; k < end; ++k)
+  vtkSMPTools::For(0, n,
+    [&](vtkIdType begin, vtkIdType end)
     {
-      const T* t = data + k * nComp;
-      for (int c = 0; c < 3; ++c)
+      for (vtkIdType k = begin; k < end; ++k)
       {
-        out[3 * k + c] = static_cast<float>(mesolight::ToUnitValue(t[c]));
+        const T* t = data + k * nComp;
+        for (int c = 0; c < 3; ++c)
+        {
+          out[3 * k + c] = static_cast<float>(mesolight::ToUnitValue(t[c]));
+        }
       }
-    }
-  });
+    });
 }
 }
 
@@ -156,9 +158,8 @@ int vtkMedianCutLights::RequestData(
   {
     vtkErrorMacro("The environment map \""
       << (scalars->GetName() ? scalars->GetName() : "")
-      << "\" must have 3 or more components (RGB first) and one tuple per pixel; it has "
-      << nComp << " components and " << scalars->GetNumberOfTuples() << " tuples for " << n
-      << " pixels.");
+      << "\" must have 3 or more components (RGB first) and one tuple per pixel; it has " << nComp
+      << " components and " << scalars->GetNumberOfTuples() << " tuples for " << n << " pixels.");
     return 0;
   }
   if (this->NumberOfLights < 1 || this->NumberOfLights > n)
@@ -331,8 +332,8 @@ bool vtkMedianCutLights::WriteCsv(
     const double u = t[0];
     const double v = t[1];
     const double* c = irradiance->GetTuple3(k);
-    out << u << ',' << v << ',' << p[0] << ',' << p[1] << ',' << p[2] << ',' << c[0] << ','
-        << c[1] << ',' << c[2] << '\n';
+    out << u << ',' << v << ',' << p[0] << ',' << p[1] << ',' << p[2] << ',' << c[0] << ',' << c[1]
+        << ',' << c[2] << '\n';
   }
   out.close();
   if (!out)
@@ -348,6 +349,5 @@ void vtkMedianCutLights::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "NumberOfLights: " << this->NumberOfLights << "\n";
-  os << indent << "VarianceMinimization: " << (this->VarianceMinimization ? "On" : "Off")
-     << "\n";
+  os << indent << "VarianceMinimization: " << (this->VarianceMinimization ? "On" : "Off") << "\n";
 }

@@ -38,7 +38,8 @@ bool Attach(vtkImageData* image, const char* prefix, vtkFieldData* field)
   {
     return false;
   }
-  vtkSmartPointer<vtkDataArray> texels = vtkSmartPointer<vtkDataArray>::Take(scalars->NewInstance());
+  vtkSmartPointer<vtkDataArray> texels =
+    vtkSmartPointer<vtkDataArray>::Take(scalars->NewInstance());
   texels->ShallowCopy(scalars); // the same memory under our name
   texels->SetName(prefix);
   field->AddArray(texels);
@@ -51,7 +52,8 @@ bool Attach(vtkImageData* image, const char* prefix, vtkFieldData* field)
   {
     if (vtkAbstractArray* a = image->GetFieldData()->GetAbstractArray(name))
     {
-      vtkSmartPointer<vtkAbstractArray> copy = vtkSmartPointer<vtkAbstractArray>::Take(a->NewInstance());
+      vtkSmartPointer<vtkAbstractArray> copy =
+        vtkSmartPointer<vtkAbstractArray>::Take(a->NewInstance());
       copy->DeepCopy(a);
       copy->SetName((std::string(prefix) + (name + 9)).c_str()); // drop "Mesolight"
       field->AddArray(copy);
@@ -86,7 +88,8 @@ vtkSmartPointer<vtkImageData> Detach(vtkDataObject* data, const char* prefix)
   {
     if (vtkAbstractArray* a = field->GetAbstractArray((std::string(prefix) + (name + 9)).c_str()))
     {
-      vtkSmartPointer<vtkAbstractArray> copy = vtkSmartPointer<vtkAbstractArray>::Take(a->NewInstance());
+      vtkSmartPointer<vtkAbstractArray> copy =
+        vtkSmartPointer<vtkAbstractArray>::Take(a->NewInstance());
       copy->DeepCopy(a);
       copy->SetName(name);
       image->GetFieldData()->AddArray(copy);
@@ -168,8 +171,9 @@ int vtkAttachReliefTexture::RequestData(
 {
   vtkDataSet* input = vtkDataSet::GetData(inputVector[0], 0);
   vtkImageData* relief = vtkImageData::GetData(inputVector[1], 0);
-  vtkImageData* lights =
-    inputVector[2]->GetNumberOfInformationObjects() > 0 ? vtkImageData::GetData(inputVector[2], 0) : nullptr;
+  vtkImageData* lights = inputVector[2]->GetNumberOfInformationObjects() > 0
+    ? vtkImageData::GetData(inputVector[2], 0)
+    : nullptr;
   vtkDataSet* output = vtkDataSet::GetData(outputVector, 0);
   if (!input || !output)
   {

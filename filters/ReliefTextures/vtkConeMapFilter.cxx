@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "vtkConeMapFilter.h"
 #include "vtkWholeExtentRequest.h"
 
@@ -107,9 +108,8 @@ int vtkConeMapFilter::RequestData(
   const vtkIdType count = static_cast<vtkIdType>(w) * h;
   // The 8-bit packing stores the depth rounded to 1/255: the cones must be valid for the surface
   // the renderer will sample, so they are computed from that quantized depth.
-  auto byte = [](double x) {
-    return static_cast<unsigned char>(std::min(255.0, std::max(0.0, x * 255.0 + 0.5)));
-  };
+  auto byte = [](double x)
+  { return static_cast<unsigned char>(std::min(255.0, std::max(0.0, x * 255.0 + 0.5))); };
   std::vector<float> depth(static_cast<size_t>(count));
   for (vtkIdType i = 0; i < count; ++i)
   {
@@ -120,10 +120,10 @@ int vtkConeMapFilter::RequestData(
 
   mesolight::ConeMapOptions options;
   options.Progress = mesolight::AlgorithmProgress(this);
-  const std::vector<float> cones = mesolight::ComputeConeMap(
-    this->ConeType == CONSERVATIVE ? mesolight::ConeType::Conservative
-                                   : mesolight::ConeType::Relaxed,
-    depth.data(), w, h, options);
+  const std::vector<float> cones =
+    mesolight::ComputeConeMap(this->ConeType == CONSERVATIVE ? mesolight::ConeType::Conservative
+                                                             : mesolight::ConeType::Relaxed,
+      depth.data(), w, h, options);
   if (cones.empty())
   {
     if (!this->GetAbortExecute())

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkConeMapFilter
  * @brief   Depth map (or relief texture) -> cone-packed relief texture for cone stepping.
@@ -8,7 +9,8 @@
  * so relaxed cone stepping followed by a binary or interval search finds the first hit. Both are
  * provably valid on the bilinear surface the renderer samples, with ratios read bilinearly (no
  * safety factor). Cone ratios are horizontal radius (in texture widths) over depth. See
- * filters/ReliefTextures/core/ConeMaps.h for the definitions and the bound. Computed with vtkSMPTools.
+ * filters/ReliefTextures/core/ConeMaps.h for the definitions and the bound. Computed with
+ * vtkSMPTools.
  *
  * Input: a depth map, read exactly as vtkReliefTextureFilter reads it (the same options), or a
  * relief texture (4 components: depth in A).

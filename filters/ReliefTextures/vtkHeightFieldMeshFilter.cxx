@@ -30,18 +30,20 @@ namespace
 template <typename T>
 void ToUnitRGBA(const T* data, vtkIdType n, float* out)
 {
-  vtkSMPTools::For(0, 4 * n, [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType k = begin; k < end; ++k)
+  vtkSMPTools::For(0, 4 * n,
+    [&](vtkIdType begin, vtkIdType end)
     {
-      out[k] = static_cast<float>(mesolight::ToUnitValue(data[k]));
-    }
-  });
+      for (vtkIdType k = begin; k < end; ++k)
+      {
+        out[k] = static_cast<float>(mesolight::ToUnitValue(data[k]));
+      }
+    });
 }
 
 /// Serial chunks of a parallel loop over [0, n): progress + abort from the calling thread.
 template <typename Functor>
-bool ChunkedFor(vtkAlgorithm* self, vtkIdType n, double progressBegin, double progressEnd,
-  const Functor& functor)
+bool ChunkedFor(
+  vtkAlgorithm* self, vtkIdType n, double progressBegin, double progressEnd, const Functor& functor)
 {
   const vtkIdType chunks = std::max<vtkIdType>(1, std::min<vtkIdType>(n, 16));
   for (vtkIdType c = 0; c < chunks; ++c)
@@ -205,7 +207,8 @@ int vtkHeightFieldMeshFilter::RequestData(
   float* dep = depthArray->GetPointer(0);
   const float* texels = rgba.data();
   const double* origin = this->Origin;
-  const auto makePoints = [&](vtkIdType begin, vtkIdType end) {
+  const auto makePoints = [&](vtkIdType begin, vtkIdType end)
+  {
     for (vtkIdType k = begin; k < end; ++k)
     {
       const int i = static_cast<int>(k % w);
@@ -256,7 +259,8 @@ int vtkHeightFieldMeshFilter::RequestData(
   connectivity->SetNumberOfValues(6 * quads);
   vtkIdType* off = offsets->GetPointer(0);
   vtkIdType* conn = connectivity->GetPointer(0);
-  const auto makeTriangles = [&](vtkIdType begin, vtkIdType end) {
+  const auto makeTriangles = [&](vtkIdType begin, vtkIdType end)
+  {
     for (vtkIdType q = begin; q < end; ++q)
     {
       const vtkIdType i = q % quadsX;

@@ -22,8 +22,8 @@ vtkStandardNewMacro(vtkProceduralReliefSource);
 
 namespace
 {
-const char* const PatternNames[vtkProceduralReliefSource::NUMBER_OF_PATTERNS] = { "Bricks",
-  "Stone", "HemisphereTorus", "Flat", "SineWave" };
+const char* const PatternNames[vtkProceduralReliefSource::NUMBER_OF_PATTERNS] = { "Bricks", "Stone",
+  "HemisphereTorus", "Flat", "SineWave" };
 
 bool EqualsNoCase(const char* a, const char* b)
 {
@@ -163,10 +163,12 @@ int vtkProceduralReliefSource::RequestData(
   {
     const int rowBegin = static_cast<int>(static_cast<long long>(h) * c / chunks);
     const int rowEnd = static_cast<int>(static_cast<long long>(h) * (c + 1) / chunks);
-    vtkSMPTools::For(rowBegin, rowEnd, [&](vtkIdType begin, vtkIdType end) {
-      mesolight::GenerateHeightFieldRows(params, w, h, static_cast<int>(begin),
-        static_cast<int>(end), depthPtr, albedoPtr);
-    });
+    vtkSMPTools::For(rowBegin, rowEnd,
+      [&](vtkIdType begin, vtkIdType end)
+      {
+        mesolight::GenerateHeightFieldRows(
+          params, w, h, static_cast<int>(begin), static_cast<int>(end), depthPtr, albedoPtr);
+      });
     this->UpdateProgress(static_cast<double>(c + 1) / chunks);
   }
 

@@ -31,22 +31,24 @@ namespace
 template <typename T>
 void ToUnitDepth(const T* data, vtkIdType n, int nComp, double* out)
 {
-  vtkSMPTools::For(0, n, [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType k = begin; k < end; ++k)
+  vtkSMPTools::For(0, n,
+    [&](vtkIdType begin, vtkIdType end)
     {
-      const T* t = data + k * nComp;
-      if (nComp >= 3)
+      for (vtkIdType k = begin; k < end; ++k)
       {
-        // Rec. 709 luminance, as in vtkImageLuminance.
-        out[k] = 0.2125 * mesolight::ToUnitValue(t[0]) + 0.7154 * mesolight::ToUnitValue(t[1]) +
-          0.0721 * mesolight::ToUnitValue(t[2]);
+        const T* t = data + k * nComp;
+        if (nComp >= 3)
+        {
+          // Rec. 709 luminance, as in vtkImageLuminance.
+          out[k] = 0.2125 * mesolight::ToUnitValue(t[0]) + 0.7154 * mesolight::ToUnitValue(t[1]) +
+            0.0721 * mesolight::ToUnitValue(t[2]);
+        }
+        else
+        {
+          out[k] = mesolight::ToUnitValue(t[0]);
+        }
       }
-      else
-      {
-        out[k] = mesolight::ToUnitValue(t[0]);
-      }
-    }
-  });
+    });
 }
 }
 
@@ -147,8 +149,8 @@ int vtkReliefTextureFilter::RequestData(
   std::vector<double> value(static_cast<size_t>(n));
   switch (scalars->GetDataType())
   {
-    vtkTemplateMacro(ToUnitDepth(
-      static_cast<const VTK_TT*>(scalars->GetVoidPointer(0)), n, nComp, value.data()));
+    vtkTemplateMacro(
+      ToUnitDepth(static_cast<const VTK_TT*>(scalars->GetVoidPointer(0)), n, nComp, value.data()));
     default:
       vtkErrorMacro("Unsupported input scalar type " << scalars->GetDataTypeAsString() << ".");
       return 0;
@@ -186,8 +188,8 @@ int vtkReliefTextureFilter::RequestData(
   if (nonFinite > 0)
   {
     vtkErrorMacro("The input depth map contains "
-      << nonFinite << " NaN or infinite value(s) out of " << n << "; the first is at texel (i="
-      << firstNonFinite % w << ", j=" << firstNonFinite / w
+      << nonFinite << " NaN or infinite value(s) out of " << n
+      << "; the first is at texel (i=" << firstNonFinite % w << ", j=" << firstNonFinite / w
       << "). Fix the data (e.g. fill holes) before computing a relief texture.");
     return 0;
   }
@@ -262,10 +264,12 @@ int vtkReliefTextureFilter::RequestData(
     }
     const int rowBegin = static_cast<int>(static_cast<long long>(h) * c / chunks);
     const int rowEnd = static_cast<int>(static_cast<long long>(h) * (c + 1) / chunks);
-    vtkSMPTools::For(rowBegin, rowEnd, [&](vtkIdType begin, vtkIdType end) {
-      mesolight::ComputeReliefTextureRows(depthPtr, w, h, depthScale, mode,
-        static_cast<int>(begin), static_cast<int>(end), rgba);
-    });
+    vtkSMPTools::For(rowBegin, rowEnd,
+      [&](vtkIdType begin, vtkIdType end)
+      {
+        mesolight::ComputeReliefTextureRows(
+          depthPtr, w, h, depthScale, mode, static_cast<int>(begin), static_cast<int>(end), rgba);
+      });
     this->UpdateProgress(0.1 + 0.9 * (c + 1) / chunks);
   }
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "vtkReliefSurfaceRepresentation.h"
 
 #include "vtkCompositeReliefMapper.h"
@@ -31,7 +32,7 @@ vtkReliefProperty* vtkReliefSurfaceRepresentation::GetReliefProperty()
 }
 
 // Each proxy command sets the shared property and marks the representation modified.
-#define MESOLIGHT_FORWARD(Name, Type, PropertySetter)                                             \
+#define MESOLIGHT_FORWARD(Name, Type, PropertySetter)                                              \
   void vtkReliefSurfaceRepresentation::Set##Name(Type value)                                       \
   {                                                                                                \
     this->ReliefProperty->PropertySetter(value);                                                   \

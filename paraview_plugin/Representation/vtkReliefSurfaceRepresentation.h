@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkReliefSurfaceRepresentation
  * @brief   ParaView's "Relief Surface": a surface representation that draws polydata as relief

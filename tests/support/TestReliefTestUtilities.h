@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Shared helpers of the integration tests.
 #ifndef mesolight_TestReliefTestUtilities_h
 #define mesolight_TestReliefTestUtilities_h

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "EmbreeScene.h"
 
 #include <embree3/rtcore.h>
@@ -7,8 +8,8 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
-#include <utility>
 #include <string>
+#include <utility>
 
 namespace mesolight
 {
@@ -120,10 +121,13 @@ void SphereIntersect(const RTCIntersectFunctionNArguments* args)
       continue;
     }
     const unsigned n = args->N;
-    const glm::vec3 origin(RTCRayN_org_x(rays, n, i), RTCRayN_org_y(rays, n, i), RTCRayN_org_z(rays, n, i));
-    const glm::vec3 direction(RTCRayN_dir_x(rays, n, i), RTCRayN_dir_y(rays, n, i), RTCRayN_dir_z(rays, n, i));
+    const glm::vec3 origin(
+      RTCRayN_org_x(rays, n, i), RTCRayN_org_y(rays, n, i), RTCRayN_org_z(rays, n, i));
+    const glm::vec3 direction(
+      RTCRayN_dir_x(rays, n, i), RTCRayN_dir_y(rays, n, i), RTCRayN_dir_z(rays, n, i));
     float t = 0.0f;
-    if (!IntersectSphere(sphere, origin, direction, RTCRayN_tnear(rays, n, i), RTCRayN_tfar(rays, n, i), t))
+    if (!IntersectSphere(
+          sphere, origin, direction, RTCRayN_tnear(rays, n, i), RTCRayN_tfar(rays, n, i), t))
     {
       continue;
     }
@@ -152,10 +156,13 @@ void SphereOccluded(const RTCOccludedFunctionNArguments* args)
     }
     const unsigned n = args->N;
     RTCRayN* rays = args->ray;
-    const glm::vec3 origin(RTCRayN_org_x(rays, n, i), RTCRayN_org_y(rays, n, i), RTCRayN_org_z(rays, n, i));
-    const glm::vec3 direction(RTCRayN_dir_x(rays, n, i), RTCRayN_dir_y(rays, n, i), RTCRayN_dir_z(rays, n, i));
+    const glm::vec3 origin(
+      RTCRayN_org_x(rays, n, i), RTCRayN_org_y(rays, n, i), RTCRayN_org_z(rays, n, i));
+    const glm::vec3 direction(
+      RTCRayN_dir_x(rays, n, i), RTCRayN_dir_y(rays, n, i), RTCRayN_dir_z(rays, n, i));
     float t = 0.0f;
-    if (IntersectSphere(sphere, origin, direction, RTCRayN_tnear(rays, n, i), RTCRayN_tfar(rays, n, i), t))
+    if (IntersectSphere(
+          sphere, origin, direction, RTCRayN_tnear(rays, n, i), RTCRayN_tfar(rays, n, i), t))
     {
       RTCRayN_tfar(rays, n, i) = -std::numeric_limits<float>::infinity();
     }
@@ -205,10 +212,10 @@ void EmbreeScene::Build(const TriangleScene& scene)
   if (!scene.Triangles.empty())
   {
     RTCGeometry geometry = rtcNewGeometry(this->Impl->Device, RTC_GEOMETRY_TYPE_TRIANGLE);
-    auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0,
-      RTC_FORMAT_FLOAT3, 3 * sizeof(float), scene.Positions.size()));
-    auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0,
-      RTC_FORMAT_UINT3, 3 * sizeof(unsigned), scene.Triangles.size()));
+    auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX,
+      0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), scene.Positions.size()));
+    auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX,
+      0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), scene.Triangles.size()));
     if (!vertices || !indices)
     {
       const std::string why = DeviceError(this->Impl->Device);
@@ -272,7 +279,8 @@ SceneHit EmbreeScene::Intersect(const SceneRay& ray) const
   rayHit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
   rtcIntersect1(this->Impl->Scene, &context, &rayHit);
   SceneHit hit;
-  if (rayHit.hit.geomID != RTC_INVALID_GEOMETRY_ID && rayHit.hit.geomID == this->Impl->SphereGeometry)
+  if (rayHit.hit.geomID != RTC_INVALID_GEOMETRY_ID &&
+    rayHit.hit.geomID == this->Impl->SphereGeometry)
   {
     hit.Sphere = rayHit.hit.primID;
     hit.T = rayHit.ray.tfar;
@@ -330,7 +338,8 @@ void EmbreeScene::Intersect16(const SceneRay* rays, SceneHit* hits, int count) c
   for (int i = 0; i < count; ++i)
   {
     SceneHit hit;
-    if (packet.hit.geomID[i] != RTC_INVALID_GEOMETRY_ID && packet.hit.geomID[i] == this->Impl->SphereGeometry)
+    if (packet.hit.geomID[i] != RTC_INVALID_GEOMETRY_ID &&
+      packet.hit.geomID[i] == this->Impl->SphereGeometry)
     {
       hit.Sphere = packet.hit.primID[i];
       hit.T = packet.ray.tfar[i];

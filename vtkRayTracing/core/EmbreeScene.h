@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // EmbreeScene: a committed Embree 3 scene built from a TriangleScene, with single-ray and
 // 16-ray-packet queries. Shared by the ray tracer, the path tracer and the light field's
 // propagation (parallel rays suit packets; PLATFORM.md: 35 Mrays/s with 16-wide packets

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "ParallelTiles.h"
 
 #include "ParallelFor.h"
@@ -25,8 +26,10 @@ bool ForEachTile(int width, int height, int tileSize, int threads,
   std::atomic<bool> aborted{ false };
   std::mutex progressMutex;
   // One tile per item: a tile's pixels do not depend on which thread traces them.
-  ParallelFor(0, static_cast<std::size_t>(tileCount), 1,
-    [&](std::size_t first, std::size_t last) {
+  ParallelFor(
+    0, static_cast<std::size_t>(tileCount), 1,
+    [&](std::size_t first, std::size_t last)
+    {
       for (std::size_t index = first; index < last; ++index)
       {
         if (aborted.load())

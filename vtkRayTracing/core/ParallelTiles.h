@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // ParallelTiles: runs a function over the square tiles of an image on mesolight::ParallelFor,
 // with progress reports and abort. Shared by the path tracer and the ray tracer.
 #ifndef mesolight_ParallelTiles_h

@@ -1,8 +1,9 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "PathTracer.h"
 
+#include "EnvironmentMaps.h" // the lat-long lookup (MapUVFromDirection)
 #include "MathConstants.h"
 #include "OrthonormalBasis.h"
-#include "EnvironmentMaps.h" // the lat-long lookup (MapUVFromDirection)
 
 #include <glm/geometric.hpp>
 
@@ -113,8 +114,9 @@ PathTracer::PathTracer(const EmbreeScene& scene, const PathTracerSettings& setti
   if (settings.RouletteDepth < 0 || settings.MaxDepth < 1 || settings.MaxDepth > 100000 ||
     !(settings.RayEpsilon >= 0.0f && settings.RayEpsilon < 0.1f) || settings.TileSize < 1)
   {
-    throw std::invalid_argument("PathTracer: settings out of range (RouletteDepth >= 0, MaxDepth in "
-                                "[1, 100000], RayEpsilon in [0, 0.1), TileSize >= 1)");
+    throw std::invalid_argument(
+      "PathTracer: settings out of range (RouletteDepth >= 0, MaxDepth in "
+      "[1, 100000], RayEpsilon in [0, 0.1), TileSize >= 1)");
   }
   glm::vec3 lower, upper;
   SceneBounds(this->Scene, lower, upper);
@@ -228,7 +230,8 @@ glm::vec3 PathTracer::SampleDirectLight(
   {
     weight = PowerHeuristic(lightPdf, diffuseChoice * cosSurface / Pi<float>);
   }
-  return kd / Pi<float> * this->Scene.MaterialOf(triangle).Emission * (cosSurface * weight / lightPdf);
+  return kd / Pi<float> * this->Scene.MaterialOf(triangle).Emission *
+    (cosSurface * weight / lightPdf);
 }
 
 bool PathTracer::Scatter(
@@ -311,7 +314,8 @@ glm::vec3 PathTracer::Trace(PathState& state, RandomSequence& rng) const
       float weight = 1.0f;
       if (!state.LastSpecular && this->Parameters.Sampling == LightSampling::MultipleImportance)
       {
-        weight = PowerHeuristic(state.LastPdf, this->LightPdf(triangle, state.Ray.Origin, position));
+        weight =
+          PowerHeuristic(state.LastPdf, this->LightPdf(triangle, state.Ray.Origin, position));
       }
       state.Radiance += state.Throughput * emission * weight;
     }
@@ -370,9 +374,10 @@ RgbImage PathTracer::RenderImage(const PinholeCamera& camera, int width, int hei
     return RgbImage();
   }
   RgbImage image(width, height);
-  const bool finished = ForEachTile(width, height, this->Parameters.TileSize,
-    this->Parameters.Threads,
-    [&](const TileRange& tile) {
+  const bool finished = ForEachTile(
+    width, height, this->Parameters.TileSize, this->Parameters.Threads,
+    [&](const TileRange& tile)
+    {
       for (int j = tile.Y0; j < tile.Y1; ++j)
       {
         for (int i = tile.X0; i < tile.X1; ++i)

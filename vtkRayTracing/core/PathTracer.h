@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // PathTracer: the reference renderer of Mesolight (issue 6, item 5). Unidirectional path
 // tracing of a TriangleScene on Embree: diffuse (Kd) and perfect-specular (Ks) surfaces,
 // one-sided area emitters (Ke, front = counter-clockwise face), an optional lat-long
@@ -12,9 +13,9 @@
 
 #include "EmbreeScene.h"
 #include "ParallelTiles.h"
-#include "RgbImage.h"
 #include "PinholeCamera.h"
 #include "RandomSequence.h"
+#include "RgbImage.h"
 #include "TriangleScene.h"
 
 #include <glm/mat3x3.hpp>
@@ -50,8 +51,8 @@ struct PathTracerSettings
   int MaxDepth = 1000;
   // Ray offset from surfaces as a fraction of the scene's bounding-box diagonal.
   float RayEpsilon = 1e-5f;
-  int Threads = 0;    // 1: the calling thread only; otherwise all of vtkSMPTools' threads
-  int TileSize = 16;  // pixels per tile side
+  int Threads = 0;   // 1: the calling thread only; otherwise all of vtkSMPTools' threads
+  int TileSize = 16; // pixels per tile side
 };
 
 // A lat-long environment (filters/Lighting/core/EnvironmentMaps.h conventions, +Z up in map space),
@@ -105,7 +106,8 @@ private:
   glm::vec3 Trace(PathState& state, RandomSequence& rng) const;
   // Next-event estimation and the choice of the next direction at a surface point. Returns false
   // when the path ends.
-  bool Scatter(const SurfacePoint& point, bool diffuseOnly, PathState& state, RandomSequence& rng) const;
+  bool Scatter(
+    const SurfacePoint& point, bool diffuseOnly, PathState& state, RandomSequence& rng) const;
   glm::vec3 SampleDirectLight(
     const SurfacePoint& point, const glm::vec3& kd, float diffuseChoice, RandomSequence& rng) const;
   float LightPdf(std::uint32_t triangle, const glm::vec3& from, const glm::vec3& to) const;
@@ -114,10 +116,10 @@ private:
   const TriangleScene& Scene;
   PathTracerSettings Parameters;
   float Epsilon = 0.0f;
-  std::vector<glm::vec3> UnitNormals;     // per triangle (zero for degenerate ones)
-  std::vector<std::uint32_t> Emitters;    // emitter triangles
-  std::vector<float> EmitterCdf;          // cumulative selection probability, by power
-  std::vector<float> EmitterProbability;  // per triangle: selection probability (0: not an emitter)
+  std::vector<glm::vec3> UnitNormals;    // per triangle (zero for degenerate ones)
+  std::vector<std::uint32_t> Emitters;   // emitter triangles
+  std::vector<float> EmitterCdf;         // cumulative selection probability, by power
+  std::vector<float> EmitterProbability; // per triangle: selection probability (0: not an emitter)
   std::unique_ptr<EnvironmentLight> Environment;
 };
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // PinholeCamera: a perspective camera as VTK describes one (position, focal point, view up,
 // vertical view angle), generating primary rays for image pixels in VTK row order (row 0 at
 // the bottom), so traced images line up with what a vtkRenderer shows.

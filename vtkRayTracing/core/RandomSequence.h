@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // RandomSequence: a small counter-based random number generator (PCG32, O'Neill 2014) seeded
 // by hashing (seed, pixel, sample), so every pixel sample draws the same numbers whatever the
 // thread or tile order: images are reproducible bit for bit.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "TextureMaps.h"
 
 #include "MathConstants.h"
@@ -77,7 +78,8 @@ bool SphereAxes(const glm::vec3& axis, const glm::vec3& meridian, glm::vec3& a, 
 }
 } // namespace
 
-glm::vec2 SphereTextureCoordinates(const glm::vec3& unitNormal, const glm::vec3& axis, const glm::vec3& meridian)
+glm::vec2 SphereTextureCoordinates(
+  const glm::vec3& unitNormal, const glm::vec3& axis, const glm::vec3& meridian)
 {
   glm::vec3 a, m;
   if (!SphereAxes(axis, meridian, a, m))
@@ -104,7 +106,8 @@ TangentFrame FrameAroundNormal(const glm::vec3& n)
     glm::vec3(b, sign + n.y * n.y * a, -n.y) };
 }
 
-TangentFrame TriangleTangentFrame(const glm::vec3& normal, const glm::vec3 p[3], const glm::vec2 st[3])
+TangentFrame TriangleTangentFrame(
+  const glm::vec3& normal, const glm::vec3 p[3], const glm::vec2 st[3])
 {
   const glm::vec3 e1 = p[1] - p[0];
   const glm::vec3 e2 = p[2] - p[0];
@@ -134,7 +137,8 @@ TangentFrame TriangleTangentFrame(const glm::vec3& normal, const glm::vec3 p[3],
   return TangentFrame{ tangent, bitangent };
 }
 
-TangentFrame SphereTangentFrame(const glm::vec3& unitNormal, const glm::vec3& axis, const glm::vec3& meridian)
+TangentFrame SphereTangentFrame(
+  const glm::vec3& unitNormal, const glm::vec3& axis, const glm::vec3& meridian)
 {
   glm::vec3 a, m;
   if (!SphereAxes(axis, meridian, a, m))
@@ -153,7 +157,8 @@ TangentFrame SphereTangentFrame(const glm::vec3& unitNormal, const glm::vec3& ax
   return TangentFrame{ tangent, glm::cross(tangent, unitNormal) };
 }
 
-glm::vec3 BumpedNormal(const glm::vec3& n, const TangentFrame& frame, const glm::vec3& bump, float scale)
+glm::vec3 BumpedNormal(
+  const glm::vec3& n, const TangentFrame& frame, const glm::vec3& bump, float scale)
 {
   const float r = (2.0f * bump.x - 1.0f) * scale;
   const float g = (2.0f * bump.y - 1.0f) * scale;

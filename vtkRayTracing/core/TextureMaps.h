@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Texture maps of the ray tracer (Ahern 1999 §1): RGB float images looked up at texture
 // coordinates with repeat wrapping, nearest or bilinear; sphere texture coordinates from an
 // axis and a meridian; a tangent frame from texture-coordinate derivatives for bump mapping.
@@ -41,7 +42,8 @@ struct TangentFrame
 // From a triangle's positions and texture coordinates (dP/ds, dP/dt made orthogonal to N,
 // B = sign * N x T keeps the handedness of the texture). Falls back to FrameAroundNormal when
 // the texture coordinates are degenerate (collinear or repeated).
-TangentFrame TriangleTangentFrame(const glm::vec3& normal, const glm::vec3 p[3], const glm::vec2 st[3]);
+TangentFrame TriangleTangentFrame(
+  const glm::vec3& normal, const glm::vec3 p[3], const glm::vec2 st[3]);
 
 // On a sphere: T along the circles of latitude (increasing s), B toward increasing t; at the
 // poles, where s is undefined, falls back to FrameAroundNormal.
@@ -54,7 +56,8 @@ TangentFrame FrameAroundNormal(const glm::vec3& unitNormal);
 
 // The bump-mapped normal (Ahern 1999 §1): the map's red and green, mapped from [0, 1] to
 // [-scale, scale] (0.5 = no tilt), tilt N toward T and B: N' = normalize(N + r T + g B).
-glm::vec3 BumpedNormal(const glm::vec3& unitNormal, const TangentFrame& frame, const glm::vec3& bump, float scale);
+glm::vec3 BumpedNormal(
+  const glm::vec3& unitNormal, const TangentFrame& frame, const glm::vec3& bump, float scale);
 
 } // namespace mesolight
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "TexturedRayTracer.h"
 
 #include <glm/geometric.hpp>
@@ -40,30 +41,37 @@ float MaxComponent(const glm::vec3& v)
 bool UsableMap(const std::shared_ptr<const RgbImage>& map)
 {
   return map && map->Width > 0 && map->Height > 0 &&
-    map->Rgb.size() >= 3u * static_cast<std::size_t>(map->Width) * static_cast<std::size_t>(map->Height);
+    map->Rgb.size() >=
+    3u * static_cast<std::size_t>(map->Width) * static_cast<std::size_t>(map->Height);
 }
 
 std::string MaterialLabel(const TexturedMaterial& material, std::size_t index)
 {
-  return "material " + std::to_string(index) + (material.Name.empty() ? "" : " '" + material.Name + "'");
+  return "material " + std::to_string(index) +
+    (material.Name.empty() ? "" : " '" + material.Name + "'");
 }
 
 // Drops unusable maps with a warning; throws for values no shading can use.
-void CheckMaterial(TexturedMaterial& material, std::size_t index, std::vector<std::string>& warnings)
+void CheckMaterial(
+  TexturedMaterial& material, std::size_t index, std::vector<std::string>& warnings)
 {
   const std::string label = MaterialLabel(material, index);
-  if (!NonNegative(material.Ambient) || !NonNegative(material.Diffuse) || !NonNegative(material.Specular))
+  if (!NonNegative(material.Ambient) || !NonNegative(material.Diffuse) ||
+    !NonNegative(material.Specular))
   {
     throw std::invalid_argument(label + " has a negative or non-finite colour");
   }
   if (!std::isfinite(material.SpecularPower) || material.SpecularPower < 0.0f ||
-    !std::isfinite(material.Roughness) || material.Roughness < 0.0f || !std::isfinite(material.BumpScale))
+    !std::isfinite(material.Roughness) || material.Roughness < 0.0f ||
+    !std::isfinite(material.BumpScale))
   {
-    throw std::invalid_argument(label + " has a negative or non-finite specular power, roughness or bump scale");
+    throw std::invalid_argument(
+      label + " has a negative or non-finite specular power, roughness or bump scale");
   }
   if (material.Roughness > 1.0f)
   {
-    warnings.push_back(label + ": roughness " + std::to_string(material.Roughness) + " clamped to 1");
+    warnings.push_back(
+      label + ": roughness " + std::to_string(material.Roughness) + " clamped to 1");
     material.Roughness = 1.0f;
   }
   struct Channel
@@ -71,13 +79,15 @@ void CheckMaterial(TexturedMaterial& material, std::size_t index, std::vector<st
     std::shared_ptr<const RgbImage>* Map;
     const char* Name;
   };
-  for (const Channel& channel : { Channel{ &material.DiffuseMap, "diffuse" }, Channel{ &material.SpecularMap, "specular" },
-         Channel{ &material.AmbientMap, "ambient" }, Channel{ &material.ShininessMap, "shininess" },
-         Channel{ &material.BumpMap, "bump" }, Channel{ &material.RoughnessMap, "roughness" } })
+  for (const Channel& channel :
+    { Channel{ &material.DiffuseMap, "diffuse" }, Channel{ &material.SpecularMap, "specular" },
+      Channel{ &material.AmbientMap, "ambient" }, Channel{ &material.ShininessMap, "shininess" },
+      Channel{ &material.BumpMap, "bump" }, Channel{ &material.RoughnessMap, "roughness" } })
   {
     if (*channel.Map && !UsableMap(*channel.Map))
     {
-      warnings.push_back(label + ": the " + std::string(channel.Name) + " map is empty and is ignored");
+      warnings.push_back(
+        label + ": the " + std::string(channel.Name) + " map is empty and is ignored");
       channel.Map->reset();
     }
   }
@@ -100,11 +110,12 @@ TexturedRayTracer::TexturedRayTracer(TexturedScene scene, const RayTracerSetting
   , Parameters(settings)
 {
   if (settings.MaxDepth < 0 || settings.MaxDepth > 64 || settings.GlossySamples < 1 ||
-    settings.GlossySamples > 1024 || !(settings.AdaptiveThreshold >= 0.0f) || settings.TileSize < 1 ||
-    !(settings.RayEpsilon >= 0.0f && settings.RayEpsilon < 0.1f))
+    settings.GlossySamples > 1024 || !(settings.AdaptiveThreshold >= 0.0f) ||
+    settings.TileSize < 1 || !(settings.RayEpsilon >= 0.0f && settings.RayEpsilon < 0.1f))
   {
-    throw std::invalid_argument("ray tracer settings out of range (MaxDepth in [0, 64], GlossySamples in "
-                                "[1, 1024], AdaptiveThreshold >= 0, TileSize >= 1, RayEpsilon in [0, 0.1))");
+    throw std::invalid_argument(
+      "ray tracer settings out of range (MaxDepth in [0, 64], GlossySamples in "
+      "[1, 1024], AdaptiveThreshold >= 0, TileSize >= 1, RayEpsilon in [0, 0.1))");
   }
   TriangleScene& mesh = this->Data.Mesh;
   if (mesh.Triangles.empty() && this->Data.Spheres.empty())
@@ -136,8 +147,8 @@ TexturedRayTracer::TexturedRayTracer(TexturedScene scene, const RayTracerSetting
     }
     if (!mesh.Normals.empty() && mesh.Normals.size() != mesh.Positions.size())
     {
-      throw std::invalid_argument("the mesh has " + std::to_string(mesh.Normals.size()) + " normals for " +
-        std::to_string(mesh.Positions.size()) + " points");
+      throw std::invalid_argument("the mesh has " + std::to_string(mesh.Normals.size()) +
+        " normals for " + std::to_string(mesh.Positions.size()) + " points");
     }
     if (!mesh.TextureCoordinates.empty() && mesh.TextureCoordinates.size() != mesh.Positions.size())
     {
@@ -145,14 +156,16 @@ TexturedRayTracer::TexturedRayTracer(TexturedScene scene, const RayTracerSetting
         " texture coordinates for " + std::to_string(mesh.Positions.size()) + " points");
     }
     const SceneCheck check = CheckScene(mesh, false);
-    if (!check.Ok() && !(check.DegenerateTriangles == mesh.Triangles.size() && !this->Data.Spheres.empty()))
+    if (!check.Ok() &&
+      !(check.DegenerateTriangles == mesh.Triangles.size() && !this->Data.Spheres.empty()))
     {
       throw std::invalid_argument(check.Errors.front());
     }
     const std::size_t dropped = RemoveDegenerateTriangles(mesh);
     if (dropped > 0)
     {
-      this->Messages.push_back(std::to_string(dropped) + " degenerate (zero-area) triangles were dropped");
+      this->Messages.push_back(
+        std::to_string(dropped) + " degenerate (zero-area) triangles were dropped");
     }
   }
   std::vector<SceneSphere> spheres;
@@ -161,9 +174,11 @@ TexturedRayTracer::TexturedRayTracer(TexturedScene scene, const RayTracerSetting
   for (std::size_t s = 0; s < this->Data.Spheres.size(); ++s)
   {
     const TexturedSphere& sphere = this->Data.Spheres[s];
-    if (!Finite(sphere.Geometry.Center) || !std::isfinite(sphere.Geometry.Radius) || !(sphere.Geometry.Radius > 0.0f))
+    if (!Finite(sphere.Geometry.Center) || !std::isfinite(sphere.Geometry.Radius) ||
+      !(sphere.Geometry.Radius > 0.0f))
     {
-      throw std::invalid_argument("sphere " + std::to_string(s) + " has a non-finite centre or a radius <= 0");
+      throw std::invalid_argument(
+        "sphere " + std::to_string(s) + " has a non-finite centre or a radius <= 0");
     }
     if (sphere.Material >= this->Data.Materials.size())
     {
@@ -186,7 +201,8 @@ TexturedRayTracer::TexturedRayTracer(TexturedScene scene, const RayTracerSetting
   }
   if (this->Data.Lights.empty())
   {
-    this->Messages.emplace_back("the scene has no lights: only ambient colours and reflections show");
+    this->Messages.emplace_back(
+      "the scene has no lights: only ambient colours and reflections show");
   }
   this->Epsilon = settings.RayEpsilon * glm::length(upper - lower);
   this->Embree.reset(new EmbreeScene(this->Data.Mesh, std::move(spheres)));
@@ -194,7 +210,8 @@ TexturedRayTracer::TexturedRayTracer(TexturedScene scene, const RayTracerSetting
 
 TexturedRayTracer::~TexturedRayTracer() = default;
 
-TexturedRayTracer::Surface TexturedRayTracer::SurfaceAt(const SceneHit& hit, const SceneRay& ray) const
+TexturedRayTracer::Surface TexturedRayTracer::SurfaceAt(
+  const SceneHit& hit, const SceneRay& ray) const
 {
   Surface surface;
   surface.Incoming = glm::normalize(ray.Direction);
@@ -215,13 +232,15 @@ TexturedRayTracer::Surface TexturedRayTracer::SurfaceAt(const SceneHit& hit, con
     const std::uint32_t t = hit.Triangle;
     const glm::uvec3& corners = mesh.Triangles[t];
     const float w0 = 1.0f - hit.U - hit.V;
-    const glm::vec3 p[3] = { mesh.Positions[corners.x], mesh.Positions[corners.y], mesh.Positions[corners.z] };
+    const glm::vec3 p[3] = { mesh.Positions[corners.x], mesh.Positions[corners.y],
+      mesh.Positions[corners.z] };
     surface.Position = w0 * p[0] + hit.U * p[1] + hit.V * p[2];
     surface.GeometricNormal = glm::normalize(glm::cross(p[1] - p[0], p[2] - p[0]));
     surface.Normal = surface.GeometricNormal;
     if (!mesh.Normals.empty())
     {
-      const glm::vec3 n = w0 * mesh.Normals[corners.x] + hit.U * mesh.Normals[corners.y] + hit.V * mesh.Normals[corners.z];
+      const glm::vec3 n = w0 * mesh.Normals[corners.x] + hit.U * mesh.Normals[corners.y] +
+        hit.V * mesh.Normals[corners.z];
       const float length = glm::length(n);
       if (length > 0.0f && std::isfinite(length))
       {
@@ -234,8 +253,8 @@ TexturedRayTracer::Surface TexturedRayTracer::SurfaceAt(const SceneHit& hit, con
     }
     if (!mesh.TextureCoordinates.empty())
     {
-      const glm::vec2 st[3] = { mesh.TextureCoordinates[corners.x], mesh.TextureCoordinates[corners.y],
-        mesh.TextureCoordinates[corners.z] };
+      const glm::vec2 st[3] = { mesh.TextureCoordinates[corners.x],
+        mesh.TextureCoordinates[corners.y], mesh.TextureCoordinates[corners.z] };
       surface.TextureCoordinates = w0 * st[0] + hit.U * st[1] + hit.V * st[2];
       surface.Frame = TriangleTangentFrame(surface.Normal, p, st);
     }
@@ -267,7 +286,8 @@ glm::vec3 TexturedRayTracer::ReflectedColour(
   if (glm::dot(mirror, surface.GeometricNormal) <= 0.0f)
   {
     // A bumped normal can send the mirror ray into the surface: reflect about the true one.
-    mirror = incoming - 2.0f * glm::dot(incoming, surface.GeometricNormal) * surface.GeometricNormal;
+    mirror =
+      incoming - 2.0f * glm::dot(incoming, surface.GeometricNormal) * surface.GeometricNormal;
   }
   SceneRay ray;
   ray.Origin = surface.Position + this->Epsilon * surface.GeometricNormal;
@@ -304,7 +324,8 @@ glm::vec3 TexturedRayTracer::ReflectedColour(
   return weights > 0.0f ? sum / weights : this->Data.Background;
 }
 
-glm::vec3 TexturedRayTracer::Trace(const SceneRay& ray, int depth, RandomSequence& rng, RayCounts& counts) const
+glm::vec3 TexturedRayTracer::Trace(
+  const SceneRay& ray, int depth, RandomSequence& rng, RayCounts& counts) const
 {
   const SceneHit hit = this->Embree->Intersect(ray);
   if (!hit.Hit())
@@ -338,12 +359,13 @@ glm::vec3 TexturedRayTracer::Trace(const SceneRay& ray, int depth, RandomSequenc
   }
   if (material.RoughnessMap)
   {
-    roughness = glm::clamp(roughness * SampleTexture(*material.RoughnessMap, st, filter).x, 0.0f, 1.0f);
+    roughness =
+      glm::clamp(roughness * SampleTexture(*material.RoughnessMap, st, filter).x, 0.0f, 1.0f);
   }
   if (material.BumpMap)
   {
-    surface.Normal = BumpedNormal(surface.Normal, surface.Frame, SampleTexture(*material.BumpMap, st, filter),
-      material.BumpScale);
+    surface.Normal = BumpedNormal(surface.Normal, surface.Frame,
+      SampleTexture(*material.BumpMap, st, filter), material.BumpScale);
   }
   const glm::vec3 n = surface.Normal;
   const glm::vec3 toViewer = -surface.Incoming;
@@ -363,13 +385,14 @@ glm::vec3 TexturedRayTracer::Trace(const SceneRay& ray, int depth, RandomSequenc
         continue;
       }
       toLight = offset / distance;
-      const float attenuation =
-        light.Attenuation.x + light.Attenuation.y * distance + light.Attenuation.z * distance * distance;
+      const float attenuation = light.Attenuation.x + light.Attenuation.y * distance +
+        light.Attenuation.z * distance * distance;
       intensity /= std::max(attenuation, 1e-12f);
       if (light.ConeAngleDegrees < 90.0f)
       {
         const float axisLength = glm::length(light.Direction);
-        const float cosine = axisLength > 0.0f ? glm::dot(-toLight, light.Direction / axisLength) : 1.0f;
+        const float cosine =
+          axisLength > 0.0f ? glm::dot(-toLight, light.Direction / axisLength) : 1.0f;
         if (cosine < std::cos(glm::radians(light.ConeAngleDegrees)))
         {
           continue;
@@ -391,7 +414,8 @@ glm::vec3 TexturedRayTracer::Trace(const SceneRay& ray, int depth, RandomSequenc
       SceneRay shadow;
       shadow.Origin = origin;
       shadow.Direction = toLight;
-      shadow.TFar = std::isfinite(distance) ? distance - 2.0f * this->Epsilon : std::numeric_limits<float>::infinity();
+      shadow.TFar = std::isfinite(distance) ? distance - 2.0f * this->Epsilon
+                                            : std::numeric_limits<float>::infinity();
       ++counts.Shadow;
       if (this->Embree->Occluded(shadow))
       {
@@ -418,18 +442,20 @@ std::vector<std::uint8_t> TexturedRayTracer::EdgePixels(const RgbImage& image, f
   const int w = image.Width;
   const int h = image.Height;
   std::vector<std::uint8_t> edges(static_cast<std::size_t>(w) * static_cast<std::size_t>(h), 0);
-  auto differs = [&](int i, int j, int k, int l) {
+  auto differs = [&](int i, int j, int k, int l)
+  {
     const float* a = image.Pixel(i, j);
     const float* b = image.Pixel(k, l);
-    return std::abs(a[0] - b[0]) > threshold || std::abs(a[1] - b[1]) > threshold || std::abs(a[2] - b[2]) > threshold;
+    return std::abs(a[0] - b[0]) > threshold || std::abs(a[1] - b[1]) > threshold ||
+      std::abs(a[2] - b[2]) > threshold;
   };
   for (int j = 0; j < h; ++j)
   {
     for (int i = 0; i < w; ++i)
     {
-      edges[static_cast<std::size_t>(j) * w + i] = static_cast<std::uint8_t>((i > 0 && differs(i, j, i - 1, j)) ||
-        (i + 1 < w && differs(i, j, i + 1, j)) || (j > 0 && differs(i, j, i, j - 1)) ||
-        (j + 1 < h && differs(i, j, i, j + 1)));
+      edges[static_cast<std::size_t>(j) * w + i] = static_cast<std::uint8_t>(
+        (i > 0 && differs(i, j, i - 1, j)) || (i + 1 < w && differs(i, j, i + 1, j)) ||
+        (j > 0 && differs(i, j, i, j - 1)) || (j + 1 < h && differs(i, j, i, j + 1)));
     }
   }
   return edges;
@@ -446,15 +472,19 @@ RgbImage TexturedRayTracer::Render(const PinholeCamera& camera, int width, int h
   RgbImage image(width, height);
   std::mutex countsMutex;
   RayCounts total;
-  auto pixelIndex = [width](int i, int j) {
-    return static_cast<std::uint64_t>(j) * static_cast<std::uint64_t>(width) + static_cast<std::uint64_t>(i);
+  auto pixelIndex = [width](int i, int j)
+  {
+    return static_cast<std::uint64_t>(j) * static_cast<std::uint64_t>(width) +
+      static_cast<std::uint64_t>(i);
   };
-  auto traceSample = [&](int i, int j, float x, float y, std::uint64_t sample, RayCounts& counts) {
+  auto traceSample = [&](int i, int j, float x, float y, std::uint64_t sample, RayCounts& counts)
+  {
     RandomSequence rng(SampleSeed(this->Parameters.Seed, pixelIndex(i, j), sample));
     ++counts.Primary;
     return this->Trace(camera.Ray(x, y, width, height), 0, rng, counts);
   };
-  auto store = [](float* out, const glm::vec3& c) {
+  auto store = [](float* out, const glm::vec3& c)
+  {
     out[0] = c.x;
     out[1] = c.y;
     out[2] = c.z;
@@ -475,8 +505,10 @@ RgbImage TexturedRayTracer::Render(const PinholeCamera& camera, int width, int h
     const int columns = (width + size - 1) / size;
     const int rows = (height + size - 1) / size;
     const bool coarsest = size == block;
-    const bool finished = ForEachTile(columns, rows, this->Parameters.TileSize, this->Parameters.Threads,
-      [&](const TileRange& tile) {
+    const bool finished = ForEachTile(
+      columns, rows, this->Parameters.TileSize, this->Parameters.Threads,
+      [&](const TileRange& tile)
+      {
         RayCounts counts;
         for (int gj = tile.Y0; gj < tile.Y1; ++gj)
         {
@@ -513,8 +545,10 @@ RgbImage TexturedRayTracer::Render(const PinholeCamera& camera, int width, int h
     // Ahern 1999 §3: pixels differing from a neighbour get a regular 3 x 3 grid of rays; the
     // centre ray is the pixel's first sample, reused.
     const std::vector<std::uint8_t> edges = EdgePixels(image, this->Parameters.AdaptiveThreshold);
-    const bool finished = ForEachTile(width, height, this->Parameters.TileSize, this->Parameters.Threads,
-      [&](const TileRange& tile) {
+    const bool finished = ForEachTile(
+      width, height, this->Parameters.TileSize, this->Parameters.Threads,
+      [&](const TileRange& tile)
+      {
         RayCounts counts;
         for (int j = tile.Y0; j < tile.Y1; ++j)
         {
@@ -535,7 +569,8 @@ RgbImage TexturedRayTracer::Render(const PinholeCamera& camera, int width, int h
                 {
                   continue;
                 }
-                sum += traceSample(i, j, i + (a + 0.5f) / 3.0f, j + (b + 0.5f) / 3.0f, sample++, counts);
+                sum +=
+                  traceSample(i, j, i + (a + 0.5f) / 3.0f, j + (b + 0.5f) / 3.0f, sample++, counts);
               }
             }
             store(out, sum / 9.0f);

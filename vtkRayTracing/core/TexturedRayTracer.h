@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // TexturedRayTracer: the ray tracer of Ahern 1999 on Embree (issue 6, items 1-4). Phong shading
 // of triangles and analytic spheres lit by directional and positional (spot) lights with hard
 // shadows; every material channel may come from a texture map: diffuse colour, specular colour
@@ -14,10 +15,10 @@
 #define mesolight_TexturedRayTracer_h
 
 #include "EmbreeScene.h"
-#include "RgbImage.h"
 #include "ParallelTiles.h"
 #include "PinholeCamera.h"
 #include "RandomSequence.h"
+#include "RgbImage.h"
 #include "TextureMaps.h"
 #include "TriangleScene.h"
 
@@ -43,7 +44,8 @@ struct TexturedMaterial
   float SpecularPower = 1.0f; // Phong exponent (times the shininess map's red)
   float Roughness = 0.0f;     // 0 = mirror .. 1 = widest spread (times the roughness map's red)
   float BumpScale = 1.0f;     // tilt per unit of (2 x bump map value - 1)
-  std::shared_ptr<const RgbImage> DiffuseMap, SpecularMap, AmbientMap, ShininessMap, BumpMap, RoughnessMap;
+  std::shared_ptr<const RgbImage> DiffuseMap, SpecularMap, AmbientMap, ShininessMap, BumpMap,
+    RoughnessMap;
 };
 
 // An analytic sphere with its texture orientation: t from the axis pole, s from the meridian.
@@ -58,11 +60,11 @@ struct TexturedSphere
 struct SceneLightSource
 {
   bool Positional = false;
-  glm::vec3 Position{ 0.0f };             // positional lights
-  glm::vec3 Direction{ 0.0f, 0.0f, -1.0f }; // direction light travels (spot axis if positional)
-  glm::vec3 Colour{ 1.0f };               // colour x intensity
-  float ConeAngleDegrees = 180.0f;        // positional: spot half angle; >= 90 means no cone
-  float Exponent = 1.0f;                  // spot fall-off, cos^Exponent
+  glm::vec3 Position{ 0.0f };                // positional lights
+  glm::vec3 Direction{ 0.0f, 0.0f, -1.0f };  // direction light travels (spot axis if positional)
+  glm::vec3 Colour{ 1.0f };                  // colour x intensity
+  float ConeAngleDegrees = 180.0f;           // positional: spot half angle; >= 90 means no cone
+  float Exponent = 1.0f;                     // spot fall-off, cos^Exponent
   glm::vec3 Attenuation{ 1.0f, 0.0f, 0.0f }; // positional: 1 / (a0 + a1 d + a2 d^2)
   bool CastsShadows = true;
 };
@@ -80,18 +82,18 @@ struct TexturedScene
 
 struct RayTracerSettings
 {
-  int MaxDepth = 5;          // reflection recursion limit (0: no reflections), [0, 64]
+  int MaxDepth = 5; // reflection recursion limit (0: no reflections), [0, 64]
   bool Shadows = true;
   bool Reflections = true;
-  int GlossySamples = 16;    // distributed rays per rough reflection at a primary hit (seed: 40)
+  int GlossySamples = 16; // distributed rays per rough reflection at a primary hit (seed: 40)
   TextureFilter Filter = TextureFilter::Bilinear;
   bool AdaptiveSupersampling = false;
   float AdaptiveThreshold = 0.1f; // largest channel difference to a neighbour before 3 x 3 samples
   bool Progressive = false;
   int Threads = 0; // 1: the calling thread only; otherwise all of vtkSMPTools' threads
   int TileSize = 16;
-  float RayEpsilon = 1e-5f;  // ray offset, fraction of the scene's bounding-box diagonal
-  std::uint64_t Seed = 0;    // of the distributed reflection rays
+  float RayEpsilon = 1e-5f; // ray offset, fraction of the scene's bounding-box diagonal
+  std::uint64_t Seed = 0;   // of the distributed reflection rays
 };
 
 struct RayCounts

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "TriangleScene.h"
 
 #include <glm/geometric.hpp>
@@ -62,8 +63,8 @@ void TriangleScene::Append(const TriangleScene& other)
   }
   else
   {
-    this->TextureCoordinates.insert(
-      this->TextureCoordinates.end(), other.TextureCoordinates.begin(), other.TextureCoordinates.end());
+    this->TextureCoordinates.insert(this->TextureCoordinates.end(),
+      other.TextureCoordinates.begin(), other.TextureCoordinates.end());
   }
   this->Positions.insert(this->Positions.end(), other.Positions.begin(), other.Positions.end());
   this->Materials.insert(this->Materials.end(), other.Materials.begin(), other.Materials.end());
@@ -178,8 +179,8 @@ SceneCheck CheckScene(const TriangleScene& scene, bool requireEmitter, float min
   }
   else if (check.DegenerateTriangles > 0)
   {
-    check.Warnings.emplace_back(std::to_string(check.DegenerateTriangles) +
-      " degenerate (zero-area) triangles are ignored");
+    check.Warnings.emplace_back(
+      std::to_string(check.DegenerateTriangles) + " degenerate (zero-area) triangles are ignored");
   }
   for (const SceneMaterial& material : scene.Materials)
   {
@@ -258,7 +259,8 @@ std::vector<glm::vec3> Facing(std::vector<glm::vec3> quad, const glm::vec3& refe
   return quad;
 }
 
-void AddBlock(TriangleScene& scene, const std::vector<std::vector<glm::vec3>>& faces, std::uint32_t material)
+void AddBlock(
+  TriangleScene& scene, const std::vector<std::vector<glm::vec3>>& faces, std::uint32_t material)
 {
   glm::vec3 centre(0.0f);
   for (const auto& face : faces)
@@ -300,46 +302,56 @@ TriangleScene MakeCornellBox()
   const glm::vec3 room(278.0f, 274.4f, 279.6f);
   using Quad = std::vector<glm::vec3>;
   // Floor, ceiling, back wall, left (red, x = 550) and right (green, x = 0) walls.
-  scene.AddPolygon(Facing(Quad{ { 552.8f, 0.0f, 0.0f }, { 0.0f, 0.0f, 0.0f }, { 0.0f, 0.0f, 559.2f },
-                            { 549.6f, 0.0f, 559.2f } },
+  scene.AddPolygon(Facing(Quad{ { 552.8f, 0.0f, 0.0f }, { 0.0f, 0.0f, 0.0f },
+                            { 0.0f, 0.0f, 559.2f }, { 549.6f, 0.0f, 559.2f } },
                      room, true),
     whiteId);
-  scene.AddPolygon(Facing(Quad{ { 556.0f, 548.8f, 0.0f }, { 556.0f, 548.8f, 559.2f }, { 0.0f, 548.8f, 559.2f },
-                            { 0.0f, 548.8f, 0.0f } },
+  scene.AddPolygon(Facing(Quad{ { 556.0f, 548.8f, 0.0f }, { 556.0f, 548.8f, 559.2f },
+                            { 0.0f, 548.8f, 559.2f }, { 0.0f, 548.8f, 0.0f } },
                      room, true),
     whiteId);
-  scene.AddPolygon(Facing(Quad{ { 549.6f, 0.0f, 559.2f }, { 0.0f, 0.0f, 559.2f }, { 0.0f, 548.8f, 559.2f },
-                            { 556.0f, 548.8f, 559.2f } },
+  scene.AddPolygon(Facing(Quad{ { 549.6f, 0.0f, 559.2f }, { 0.0f, 0.0f, 559.2f },
+                            { 0.0f, 548.8f, 559.2f }, { 556.0f, 548.8f, 559.2f } },
                      room, true),
     whiteId);
-  scene.AddPolygon(Facing(Quad{ { 552.8f, 0.0f, 0.0f }, { 549.6f, 0.0f, 559.2f }, { 556.0f, 548.8f, 559.2f },
-                            { 556.0f, 548.8f, 0.0f } },
+  scene.AddPolygon(Facing(Quad{ { 552.8f, 0.0f, 0.0f }, { 549.6f, 0.0f, 559.2f },
+                            { 556.0f, 548.8f, 559.2f }, { 556.0f, 548.8f, 0.0f } },
                      room, true),
     redId);
-  scene.AddPolygon(Facing(Quad{ { 0.0f, 0.0f, 559.2f }, { 0.0f, 0.0f, 0.0f }, { 0.0f, 548.8f, 0.0f },
-                            { 0.0f, 548.8f, 559.2f } },
+  scene.AddPolygon(Facing(Quad{ { 0.0f, 0.0f, 559.2f }, { 0.0f, 0.0f, 0.0f },
+                            { 0.0f, 548.8f, 0.0f }, { 0.0f, 548.8f, 559.2f } },
                      room, true),
     greenId);
   // The light, facing down.
-  scene.AddPolygon(Facing(Quad{ { 343.0f, 548.7f, 227.0f }, { 343.0f, 548.7f, 332.0f }, { 213.0f, 548.7f, 332.0f },
-                            { 213.0f, 548.7f, 227.0f } },
+  scene.AddPolygon(Facing(Quad{ { 343.0f, 548.7f, 227.0f }, { 343.0f, 548.7f, 332.0f },
+                            { 213.0f, 548.7f, 332.0f }, { 213.0f, 548.7f, 227.0f } },
                      glm::vec3(278.0f, 0.0f, 279.5f), true),
     lightId);
   // Short block.
   AddBlock(scene,
-    { { { 130.0f, 165.0f, 65.0f }, { 82.0f, 165.0f, 225.0f }, { 240.0f, 165.0f, 272.0f }, { 290.0f, 165.0f, 114.0f } },
-      { { 290.0f, 0.0f, 114.0f }, { 290.0f, 165.0f, 114.0f }, { 240.0f, 165.0f, 272.0f }, { 240.0f, 0.0f, 272.0f } },
-      { { 130.0f, 0.0f, 65.0f }, { 130.0f, 165.0f, 65.0f }, { 290.0f, 165.0f, 114.0f }, { 290.0f, 0.0f, 114.0f } },
-      { { 82.0f, 0.0f, 225.0f }, { 82.0f, 165.0f, 225.0f }, { 130.0f, 165.0f, 65.0f }, { 130.0f, 0.0f, 65.0f } },
-      { { 240.0f, 0.0f, 272.0f }, { 240.0f, 165.0f, 272.0f }, { 82.0f, 165.0f, 225.0f }, { 82.0f, 0.0f, 225.0f } } },
+    { { { 130.0f, 165.0f, 65.0f }, { 82.0f, 165.0f, 225.0f }, { 240.0f, 165.0f, 272.0f },
+        { 290.0f, 165.0f, 114.0f } },
+      { { 290.0f, 0.0f, 114.0f }, { 290.0f, 165.0f, 114.0f }, { 240.0f, 165.0f, 272.0f },
+        { 240.0f, 0.0f, 272.0f } },
+      { { 130.0f, 0.0f, 65.0f }, { 130.0f, 165.0f, 65.0f }, { 290.0f, 165.0f, 114.0f },
+        { 290.0f, 0.0f, 114.0f } },
+      { { 82.0f, 0.0f, 225.0f }, { 82.0f, 165.0f, 225.0f }, { 130.0f, 165.0f, 65.0f },
+        { 130.0f, 0.0f, 65.0f } },
+      { { 240.0f, 0.0f, 272.0f }, { 240.0f, 165.0f, 272.0f }, { 82.0f, 165.0f, 225.0f },
+        { 82.0f, 0.0f, 225.0f } } },
     whiteId);
   // Tall block.
   AddBlock(scene,
-    { { { 423.0f, 330.0f, 247.0f }, { 265.0f, 330.0f, 296.0f }, { 314.0f, 330.0f, 456.0f }, { 472.0f, 330.0f, 406.0f } },
-      { { 423.0f, 0.0f, 247.0f }, { 423.0f, 330.0f, 247.0f }, { 472.0f, 330.0f, 406.0f }, { 472.0f, 0.0f, 406.0f } },
-      { { 472.0f, 0.0f, 406.0f }, { 472.0f, 330.0f, 406.0f }, { 314.0f, 330.0f, 456.0f }, { 314.0f, 0.0f, 456.0f } },
-      { { 314.0f, 0.0f, 456.0f }, { 314.0f, 330.0f, 456.0f }, { 265.0f, 330.0f, 296.0f }, { 265.0f, 0.0f, 296.0f } },
-      { { 265.0f, 0.0f, 296.0f }, { 265.0f, 330.0f, 296.0f }, { 423.0f, 330.0f, 247.0f }, { 423.0f, 0.0f, 247.0f } } },
+    { { { 423.0f, 330.0f, 247.0f }, { 265.0f, 330.0f, 296.0f }, { 314.0f, 330.0f, 456.0f },
+        { 472.0f, 330.0f, 406.0f } },
+      { { 423.0f, 0.0f, 247.0f }, { 423.0f, 330.0f, 247.0f }, { 472.0f, 330.0f, 406.0f },
+        { 472.0f, 0.0f, 406.0f } },
+      { { 472.0f, 0.0f, 406.0f }, { 472.0f, 330.0f, 406.0f }, { 314.0f, 330.0f, 456.0f },
+        { 314.0f, 0.0f, 456.0f } },
+      { { 314.0f, 0.0f, 456.0f }, { 314.0f, 330.0f, 456.0f }, { 265.0f, 330.0f, 296.0f },
+        { 265.0f, 0.0f, 296.0f } },
+      { { 265.0f, 0.0f, 296.0f }, { 265.0f, 330.0f, 296.0f }, { 423.0f, 330.0f, 247.0f },
+        { 423.0f, 0.0f, 247.0f } } },
     whiteId);
   return scene;
 }

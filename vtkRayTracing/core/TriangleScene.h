@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // TriangleScene: a static scene of triangles with per-triangle materials, in plain C++ (GLM, no
 // VTK types). Shared by the Embree ray tracer (its references) and the virtual light field
 // (vtkVLF), so both see the same geometry, materials and Cornell box.
@@ -20,12 +21,12 @@ namespace mesolight
 struct SceneMaterial
 {
   std::string Name;
-  glm::vec3 Diffuse{ 0.8f };   // Kd, albedo in [0,1]
-  glm::vec3 Specular{ 0.0f };  // Ks, perfect-mirror reflectance in [0,1]
-  glm::vec3 Emission{ 0.0f };  // Ke, emitted radiance (W sr^-1 m^-2, arbitrary units)
-  glm::vec3 Ambient{ 0.0f };   // Ka
-  float Shininess = 0.0f;      // Ns, Phong exponent
-  float Roughness = 0.0f;      // 0 mirror .. 1 very rough
+  glm::vec3 Diffuse{ 0.8f };  // Kd, albedo in [0,1]
+  glm::vec3 Specular{ 0.0f }; // Ks, perfect-mirror reflectance in [0,1]
+  glm::vec3 Emission{ 0.0f }; // Ke, emitted radiance (W sr^-1 m^-2, arbitrary units)
+  glm::vec3 Ambient{ 0.0f };  // Ka
+  float Shininess = 0.0f;     // Ns, Phong exponent
+  float Roughness = 0.0f;     // 0 mirror .. 1 very rough
 };
 
 struct TriangleScene

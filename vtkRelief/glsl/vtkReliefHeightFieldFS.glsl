@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Mesolight relief: height-field access shared by every method.
 //
 // Relief texture (Méndez Fernández's thesis, §4.1): tangent-space normal packed as (n+1)/2 in RGB, depth in A with

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
   // ---- Mesolight relief (vtkReliefMapper): march the height field below this fragment ----
   // Tangent frame scaled to texture units: dP/du and dP/dv from screen-space derivatives
   // (taken in uniform control flow above), the smooth tangent direction from the vertices.

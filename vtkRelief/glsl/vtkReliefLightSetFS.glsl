@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Mesolight relief: an image-based light set (median-cut lights of an HDR environment, Méndez Fernández's thesis
 // §5), each light shading and self-shadowing the height field, which gives soft shadows.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Mesolight relief: every VTK light of the renderer, shaded with the Phong model of VTK's own
 // vtkOpenGLPolyDataMapper (same attenuation, spot cone and reflect-based specular), so a relief
 // surface and a dense mesh of the same height field shade alike. Self-shadowing comes from the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Mesolight relief: the march skeleton, written once for every method (Méndez Fernández's thesis, §4.1-4.2).
 //
 // A ray through the height field in texture space is p(t) = origin + t * span, t in [0, 1], with

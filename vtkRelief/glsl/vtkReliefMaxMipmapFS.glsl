@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Mesolight relief: exact height-field tracing through a min-depth pyramid ("maximum mipmaps",
 // Tevs, Ihrke & Seidel, I3D 2008), for the bilinear surface the GPU samples.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Scenes with closed-form answers for the light field: a square emitter over a floor, whose
 // diffuse radiance is rho Le F(p) with F the point-to-square form factor (Howell's catalogue of
 // configuration factors, C-11). Used by the tests and by `mesolight bench vlf`.
@@ -18,7 +19,8 @@ namespace vlf
 // A square emitter of side `side` facing down at height `height` above the centre of a square
 // floor of side `floorSide` (z = 0, facing up) with albedo `albedo`. Emitter: radiance
 // `emission`, black.
-inline TriangleScene MakeEmitterOverFloor(float side, float height, float floorSide, float albedo, float emission)
+inline TriangleScene MakeEmitterOverFloor(
+  float side, float height, float floorSide, float albedo, float emission)
 {
   TriangleScene scene;
   SceneMaterial floor;
@@ -32,7 +34,8 @@ inline TriangleScene MakeEmitterOverFloor(float side, float height, float floorS
   const std::uint32_t lightId = scene.AddMaterial(light);
   const float f = 0.5f * floorSide, s = 0.5f * side;
   scene.AddPolygon({ { -f, -f, 0.0f }, { f, -f, 0.0f }, { f, f, 0.0f }, { -f, f, 0.0f } }, floorId);
-  scene.AddPolygon({ { -s, -s, height }, { -s, s, height }, { s, s, height }, { s, -s, height } }, lightId);
+  scene.AddPolygon(
+    { { -s, -s, height }, { -s, s, height }, { s, s, height }, { s, -s, height } }, lightId);
   return scene;
 }
 
@@ -52,12 +55,13 @@ inline double CornerFormFactor(double a, double b, double h)
 inline double SquareFormFactor(double side, double h, double px, double py)
 {
   const double s = 0.5 * side;
-  auto signedCorner = [&](double a, double b) {
+  auto signedCorner = [&](double a, double b)
+  {
     const double sa = a < 0 ? -1.0 : 1.0, sb = b < 0 ? -1.0 : 1.0;
     return sa * sb * CornerFormFactor(std::abs(a), std::abs(b), h);
   };
-  return signedCorner(s - px, s - py) + signedCorner(s + px, s - py) + signedCorner(s - px, s + py) +
-    signedCorner(s + px, s + py);
+  return signedCorner(s - px, s - py) + signedCorner(s + px, s - py) +
+    signedCorner(s - px, s + py) + signedCorner(s + px, s + py);
 }
 
 } // namespace vlf

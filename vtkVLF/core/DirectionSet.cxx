@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "DirectionSet.h"
 
 #include "MathConstants.h"
@@ -89,8 +90,8 @@ DirectionSet::DirectionSet(int n)
         d.z = 0.0; // exactly on the equator, so -d is exactly in the set's antipodal half
       }
       d = glm::normalize(d);
-      LatticePoint& point = this->Lattice[static_cast<std::size_t>(j + n) * side +
-        static_cast<std::size_t>(i + n)];
+      LatticePoint& point =
+        this->Lattice[static_cast<std::size_t>(j + n) * side + static_cast<std::size_t>(i + n)];
       point.Direction = glm::vec3(d);
       point.Index = static_cast<std::uint32_t>(this->Directions.size());
       point.Flipped = false;
@@ -109,8 +110,8 @@ DirectionSet::DirectionSet(int n)
         continue;
       }
       const LatticePoint& antipode = this->At(-i, -j);
-      LatticePoint& point = this->Lattice[static_cast<std::size_t>(j + n) * side +
-        static_cast<std::size_t>(i + n)];
+      LatticePoint& point =
+        this->Lattice[static_cast<std::size_t>(j + n) * side + static_cast<std::size_t>(i + n)];
       point.Direction = -antipode.Direction;
       point.Index = antipode.Index;
       point.Flipped = true;
@@ -159,8 +160,8 @@ DirectionSet DirectionSet::WithCount(std::size_t count)
       return DirectionSet(static_cast<int>(n));
     }
   }
-  throw std::invalid_argument("DirectionSet: " + std::to_string(count) +
-    " directions is not 2n^2+1 (use 513, 2049 or 8193)");
+  throw std::invalid_argument(
+    "DirectionSet: " + std::to_string(count) + " directions is not 2n^2+1 (use 513, 2049 or 8193)");
 }
 
 bool DirectionSet::ToUpperHemisphere(const glm::vec3& unit, glm::dvec3& upper)
@@ -193,7 +194,8 @@ std::size_t DirectionSet::Nearest(const glm::vec3& unit, bool* flipped) const
        ++j)
   {
     const int width = this->N - std::abs(j);
-    for (int i = std::max(i0 - NearestRing, -width); i <= std::min(i0 + 1 + NearestRing, width); ++i)
+    for (int i = std::max(i0 - NearestRing, -width); i <= std::min(i0 + 1 + NearestRing, width);
+         ++i)
     {
       const LatticePoint& point = this->At(i, j);
       const float d = glm::dot(point.Direction, uf);

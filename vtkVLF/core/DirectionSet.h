@@ -1,6 +1,8 @@
-// DirectionSet: the directions of the virtual light field's parallel subfields (Wither 2005 §2.4.1.1),
-// uniformly spread over the upper hemisphere by triangular subdivision, with constant-time
-// nearest-direction and three-direction interpolation queries (Wither 2005 §2.4.1.3, §3.6).
+// SPDX-License-Identifier: BSD-3-Clause
+// DirectionSet: the directions of the virtual light field's parallel subfields (Wither 2005
+// §2.4.1.1), uniformly spread over the upper hemisphere by triangular subdivision, with
+// constant-time nearest-direction and three-direction interpolation queries (Wither 2005 §2.4.1.3,
+// §3.6).
 //
 // Construction. Wither subdivides a regular tetrahedron after Slater, "Constant time queries on
 // uniformly distributed points on a hemisphere" (JGT 7(1), 2002), and reports ~60% variation in

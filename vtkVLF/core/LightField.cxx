@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "LightField.h"
 
 #include "MathConstants.h"
@@ -64,8 +65,9 @@ std::uint64_t MapCellBytes(bool specular)
 
 // Upper bound on the (tile, surface) pairs of every subfield: a surface can only occupy the
 // tiles holding cell centres inside the bounding boxes of its projected triangles.
-std::uint64_t CountTileSurfacePairs(const TriangleScene& scene, const std::vector<Surface>& surfaces,
-  const DirectionSet& directions, const LightFieldSettings& settings)
+std::uint64_t CountTileSurfacePairs(const TriangleScene& scene,
+  const std::vector<Surface>& surfaces, const DirectionSet& directions,
+  const LightFieldSettings& settings)
 {
   const int n = settings.RaysPerSide;
   const int m = settings.TilesPerSide;
@@ -86,7 +88,8 @@ std::uint64_t CountTileSurfacePairs(const TriangleScene& scene, const std::vecto
         for (int c = 0; c < 3; ++c)
         {
           const glm::vec3 p = scene.Vertex(t, c);
-          const float cell[2] = { (glm::dot(p, u) + 1.0f) / h - 0.5f, (glm::dot(p, v) + 1.0f) / h - 0.5f };
+          const float cell[2] = { (glm::dot(p, u) + 1.0f) / h - 0.5f,
+            (glm::dot(p, v) + 1.0f) / h - 0.5f };
           for (int a = 0; a < 2; ++a)
           {
             lo[a] = std::min(lo[a], cell[a]);
@@ -122,14 +125,15 @@ MemoryEstimate EstimateFor(const TriangleScene& scene, const std::vector<Surface
   }
   const std::uint64_t pairs = CountTileSurfacePairs(scene, surfaces, directions, settings);
   const std::uint64_t ts = static_cast<std::uint64_t>(settings.TileSide());
-  const std::uint64_t tiles = static_cast<std::uint64_t>(settings.TilesPerSide) * settings.TilesPerSide;
+  const std::uint64_t tiles =
+    static_cast<std::uint64_t>(settings.TilesPerSide) * settings.TilesPerSide;
   e.MapCells = pairs * ts * ts;
   e.MapBytes = e.MapCells * MapCellBytes(specular) + pairs * sizeof(TileEntry) +
     directions.Size() * ((tiles + 1) * sizeof(std::uint32_t) + sizeof(Subfield));
   const std::uint64_t blocks = DefaultBlockCount(directions.Size());
   // total + unshot + capacity, and one receive buffer per worker block during propagation.
-  e.TextureBytes = e.Texels * (2 * sizeof(glm::vec3) + sizeof(float)) +
-    blocks * e.Texels * sizeof(glm::vec3);
+  e.TextureBytes =
+    e.Texels * (2 * sizeof(glm::vec3) + sizeof(float)) + blocks * e.Texels * sizeof(glm::vec3);
   e.TotalBytes = e.MapBytes + e.TextureBytes;
   return e;
 }
@@ -163,19 +167,21 @@ void RunInBlocks(std::size_t count, std::size_t blocks, const ProgressCallback& 
     {
       throw AbortedError();
     }
-    ParallelFor(0, blocks, 1, [&](std::size_t b0, std::size_t b1) {
-      for (std::size_t b = b0; b < b1; ++b)
+    ParallelFor(0, blocks, 1,
+      [&](std::size_t b0, std::size_t b1)
       {
-        for (std::size_t q = 0; q < perBlock; ++q)
+        for (std::size_t b = b0; b < b1; ++b)
         {
-          const std::size_t item = start + b * perBlock + q;
-          if (item < count)
+          for (std::size_t q = 0; q < perBlock; ++q)
           {
-            work(b, item);
+            const std::size_t item = start + b * perBlock + q;
+            if (item < count)
+            {
+              work(b, item);
+            }
           }
         }
-      }
-    });
+      });
   }
   if (!ReportProgress(progress, end))
   {
@@ -192,8 +198,8 @@ std::string LightFieldSettings::Validate() const
   }
   else if (this->TilesPerSide < 1 || this->TilesPerSide > this->RaysPerSide)
   {
-    e << "tiles per side " << this->TilesPerSide << " is outside [1, rays per side = "
-      << this->RaysPerSide << "]";
+    e << "tiles per side " << this->TilesPerSide
+      << " is outside [1, rays per side = " << this->RaysPerSide << "]";
   }
   else if (this->RaysPerSide % this->TilesPerSide != 0)
   {
@@ -258,8 +264,8 @@ double LightField::IterationEnergy::ConservationError() const
 glm::vec2 Surface::TexelCoordinates(const glm::vec3& x) const
 {
   const glm::vec3 r = x - this->Origin;
-  return glm::vec2(glm::dot(r, this->AxisU) / this->TexelU - 0.5f,
-    glm::dot(r, this->AxisV) / this->TexelV - 0.5f);
+  return glm::vec2(
+    glm::dot(r, this->AxisU) / this->TexelU - 0.5f, glm::dot(r, this->AxisV) / this->TexelV - 0.5f);
 }
 
 glm::vec3 Surface::TexelCentre(int a, int b) const
@@ -367,7 +373,8 @@ MemoryEstimate EstimateMemory(const TriangleScene& scene, const LightFieldSettin
   return EstimateFor(unit, surfaces, directions, settings, specular);
 }
 
-void LightField::Setup(const TriangleScene& scene, const LightFieldSettings& settings, bool normalize)
+void LightField::Setup(
+  const TriangleScene& scene, const LightFieldSettings& settings, bool normalize)
 {
   const std::string problem = settings.Validate();
   if (!problem.empty())
@@ -414,8 +421,8 @@ void LightField::Setup(const TriangleScene& scene, const LightFieldSettings& set
   if (this->EstimateUsed.TotalBytes > settings.MemoryBudget)
   {
     std::ostringstream message;
-    message << "the light field would need up to " << this->EstimateUsed.Describe()
-            << " for " << settings.Directions << " directions x " << settings.RaysPerSide << "x"
+    message << "the light field would need up to " << this->EstimateUsed.Describe() << " for "
+            << settings.Directions << " directions x " << settings.RaysPerSide << "x"
             << settings.RaysPerSide << " rays, above the memory budget of "
             << FormatBytes(settings.MemoryBudget)
             << "; use fewer directions or rays per side, or raise the budget";
@@ -441,8 +448,8 @@ std::unique_ptr<LightField> LightField::CreateEmpty(
   return field;
 }
 
-std::unique_ptr<LightField> LightField::Build(const TriangleScene& scene,
-  const LightFieldSettings& settings, const ProgressCallback& progress)
+std::unique_ptr<LightField> LightField::Build(
+  const TriangleScene& scene, const LightFieldSettings& settings, const ProgressCallback& progress)
 {
   std::unique_ptr<LightField> field = CreateEmpty(scene, settings);
   const EmbreeScene embree(field->NormalizedScene);
@@ -452,36 +459,39 @@ std::unique_ptr<LightField> LightField::Build(const TriangleScene& scene,
 
   // Shooting capacity of each texel (Propagation.h): the flux a unit diffuse radiance there
   // sends along all lines that leave it, sum over crossings of w_texel * cellArea * weight_k.
-  // It is the discrete counterpart of pi * texelArea (Wither 2005 §3.6.3's total projected cell area).
+  // It is the discrete counterpart of pi * texelArea (Wither 2005 §3.6.3's total projected cell
+  // area).
   const std::size_t texels = field->TexelTotal;
   const std::size_t blocks = DefaultBlockCount(count);
   std::vector<std::vector<double>> partial(blocks, std::vector<double>(texels, 0.0));
   const float cellArea = settings.CellSize() * settings.CellSize();
   const int n = settings.RaysPerSide;
-  RunInBlocks(count, blocks, progress, 0.8, 1.0, [&](std::size_t b, std::size_t k) {
-    std::vector<Crossing> crossings;
-    const Subfield& f = field->Subfields[k];
-    for (int j = 0; j < n; ++j)
+  RunInBlocks(count, blocks, progress, 0.8, 1.0,
+    [&](std::size_t b, std::size_t k)
     {
-      for (int i = 0; i < n; ++i)
+      std::vector<Crossing> crossings;
+      const Subfield& f = field->Subfields[k];
+      for (int j = 0; j < n; ++j)
       {
-        field->LineCrossings(k, i, j, crossings);
-        for (const Crossing& c : crossings)
+        for (int i = 0; i < n; ++i)
         {
-          if (field->Orientation(k, c.Surface) == 0)
+          field->LineCrossings(k, i, j, crossings);
+          for (const Crossing& c : crossings)
           {
-            continue;
-          }
-          const TexelWeights w =
-            field->WeightsAt(c.Surface, field->PointOnLine(k, i, j, c.Depth));
-          for (int q = 0; q < 4; ++q)
-          {
-            partial[b][w.Texel[q]] += static_cast<double>(w.Weight[q] * cellArea * f.Weight);
+            if (field->Orientation(k, c.Surface) == 0)
+            {
+              continue;
+            }
+            const TexelWeights w =
+              field->WeightsAt(c.Surface, field->PointOnLine(k, i, j, c.Depth));
+            for (int q = 0; q < 4; ++q)
+            {
+              partial[b][w.Texel[q]] += static_cast<double>(w.Weight[q] * cellArea * f.Weight);
+            }
           }
         }
       }
-    }
-  });
+    });
   field->Capacity.assign(texels, 0.0f);
   for (std::size_t t = 0; t < texels; ++t)
   {
@@ -499,7 +509,8 @@ std::unique_ptr<LightField> LightField::Build(const TriangleScene& scene,
     const Surface& surface = field->SurfaceList[s];
     const glm::vec3 emission = field->NormalizedScene.Materials[surface.Material].Emission;
     std::fill(field->TotalDiffuse.begin() + static_cast<std::ptrdiff_t>(surface.TexelOffset),
-      field->TotalDiffuse.begin() + static_cast<std::ptrdiff_t>(surface.TexelOffset + surface.TexelCount()),
+      field->TotalDiffuse.begin() +
+        static_cast<std::ptrdiff_t>(surface.TexelOffset + surface.TexelCount()),
       emission);
   }
   field->UnshotDiffuse = field->TotalDiffuse;
@@ -574,9 +585,9 @@ void LightField::TraceSubfield(std::size_t k, const EmbreeScene& embree)
       }
     }
   }
-  std::sort(hits.begin(), hits.end(), [](const Hit& x, const Hit& y) {
-    return std::tie(x.Tile, x.Surface, x.Local) < std::tie(y.Tile, y.Surface, y.Local);
-  });
+  std::sort(hits.begin(), hits.end(),
+    [](const Hit& x, const Hit& y)
+    { return std::tie(x.Tile, x.Surface, x.Local) < std::tie(y.Tile, y.Surface, y.Local); });
   const std::size_t tiles = static_cast<std::size_t>(m) * m;
   f.TileStart.assign(tiles + 1, 0);
   f.Entries.clear();
@@ -628,7 +639,8 @@ glm::vec2 LightField::CellCoordinates(std::size_t k, const glm::vec3& p) const
 {
   const Subfield& f = this->Subfields[k];
   const float h = this->Config.CellSize();
-  return glm::vec2((glm::dot(p, f.AxisU) + 1.0f) / h - 0.5f, (glm::dot(p, f.AxisV) + 1.0f) / h - 0.5f);
+  return glm::vec2(
+    (glm::dot(p, f.AxisU) + 1.0f) / h - 0.5f, (glm::dot(p, f.AxisV) + 1.0f) / h - 0.5f);
 }
 
 float LightField::DepthOf(std::size_t k, const glm::vec3& p) const

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // LightField: the virtual light field's data structure (Wither 2005 §2.4.1), in plain C++ (GLM, no
 // VTK types).
 //
@@ -67,8 +68,7 @@ public:
 // items in the same order on any machine split. Before every round and at the end (on the
 // calling thread) progress gets a fraction from begin to end; false throws AbortedError.
 void RunInBlocks(std::size_t count, std::size_t blocks, const ProgressCallback& progress,
-  double begin, double end,
-  const std::function<void(std::size_t block, std::size_t item)>& work);
+  double begin, double end, const std::function<void(std::size_t block, std::size_t item)>& work);
 // Worker blocks used for `count` items: twice the hardware threads, at most count.
 std::size_t DefaultBlockCount(std::size_t count);
 
@@ -115,7 +115,8 @@ struct Surface
 
   std::size_t TexelCount() const
   {
-    return static_cast<std::size_t>(this->TextureWidth) * static_cast<std::size_t>(this->TextureHeight);
+    return static_cast<std::size_t>(this->TextureWidth) *
+      static_cast<std::size_t>(this->TextureHeight);
   }
   // Continuous texel coordinates of a point (texel centres at integers).
   glm::vec2 TexelCoordinates(const glm::vec3& x) const;
@@ -140,11 +141,11 @@ struct Subfield
   glm::vec3 Direction{ 0.0f, 0.0f, 1.0f };
   glm::vec3 AxisU{ 1.0f, 0.0f, 0.0f }; // cell i grows along AxisU, j along AxisV
   glm::vec3 AxisV{ 0.0f, 1.0f, 0.0f };
-  float Weight = 0.0f; // solid angle used in propagation and gathering (sr)
-  std::vector<std::uint32_t> TileStart; // m*m + 1 offsets into Entries
-  std::vector<TileEntry> Entries;       // per tile, sorted by surface
-  std::vector<float> Depth;             // per map cell: distance along the line, < 0 = no crossing
-  std::vector<glm::vec3> Radiance;      // per map cell: radiance sent along the line so far
+  float Weight = 0.0f;                   // solid angle used in propagation and gathering (sr)
+  std::vector<std::uint32_t> TileStart;  // m*m + 1 offsets into Entries
+  std::vector<TileEntry> Entries;        // per tile, sorted by surface
+  std::vector<float> Depth;              // per map cell: distance along the line, < 0 = no crossing
+  std::vector<glm::vec3> Radiance;       // per map cell: radiance sent along the line so far
   std::vector<glm::vec3> UnshotSpecular; // per map cell (empty without mirror surfaces)
 };
 
@@ -197,7 +198,10 @@ public:
   float NormalizationScale() const { return this->Scale; }
   glm::vec3 NormalizationCentre() const { return this->Centre; }
   const std::vector<Surface>& Surfaces() const { return this->SurfaceList; }
-  std::uint32_t SurfaceOfTriangle(std::size_t triangle) const { return this->TriangleSurface[triangle]; }
+  std::uint32_t SurfaceOfTriangle(std::size_t triangle) const
+  {
+    return this->TriangleSurface[triangle];
+  }
   const SceneMaterial& MaterialOf(std::uint32_t surface) const
   {
     return this->NormalizedScene.Materials[this->SurfaceList[surface].Material];
@@ -230,20 +234,20 @@ public:
   std::vector<glm::vec3> UnshotDiffuse;
   std::vector<float> Capacity;
   TexelWeights WeightsAt(std::uint32_t surface, const glm::vec3& x) const;
-  glm::vec3 SampleTexture(const std::vector<glm::vec3>& texture, std::uint32_t surface,
-    const glm::vec3& x) const;
+  glm::vec3 SampleTexture(
+    const std::vector<glm::vec3>& texture, std::uint32_t surface, const glm::vec3& x) const;
 
   // Propagation state (Propagation.h).
   int IterationsDone = 0;
   struct IterationEnergy
   {
     int Iteration = 0;
-    std::array<double, 3> Shot{};        // flux sent along lines this iteration
-    std::array<double, 3> Escaped{};     // left the scene
-    std::array<double, 3> Absorbed{};    // (1 - Kd - Ks) of what surfaces received
-    std::array<double, 3> BackFaces{};   // reached a back side
+    std::array<double, 3> Shot{};         // flux sent along lines this iteration
+    std::array<double, 3> Escaped{};      // left the scene
+    std::array<double, 3> Absorbed{};     // (1 - Kd - Ks) of what surfaces received
+    std::array<double, 3> BackFaces{};    // reached a back side
     std::array<double, 3> SpecularLost{}; // mirrored into a direction no line can carry
-    std::array<double, 3> Unshot{};      // reflected, to be sent next iteration
+    std::array<double, 3> Unshot{};       // reflected, to be sent next iteration
     double Seconds = 0.0;
     // |Shot - (Escaped + Absorbed + BackFaces + SpecularLost + Unshot)| / Shot, worst channel.
     double ConservationError() const;
@@ -256,7 +260,8 @@ private:
   LightField() = default;
   // normalize false: the scene already lies in the unit sphere (a snapshot's).
   void Setup(const TriangleScene& scene, const LightFieldSettings& settings, bool normalize);
-  friend std::unique_ptr<LightField> ReadSnapshot(const std::string& path, std::uint64_t memoryBudget);
+  friend std::unique_ptr<LightField> ReadSnapshot(
+    const std::string& path, std::uint64_t memoryBudget);
   void TraceSubfield(std::size_t k, const EmbreeScene& embree);
 
   LightFieldSettings Config;
@@ -277,8 +282,8 @@ constexpr std::uint32_t NoSurface = 0xffffffffu;
 
 // Groups a (unit-sphere) scene's triangles into planar one-material surfaces with texture
 // frames; triangleSurface gets each triangle's surface. Exposed for tests and the estimate.
-std::vector<Surface> GroupSurfaces(const TriangleScene& scene, float texelSize,
-  std::vector<std::uint32_t>& triangleSurface);
+std::vector<Surface> GroupSurfaces(
+  const TriangleScene& scene, float texelSize, std::vector<std::uint32_t>& triangleSurface);
 
 } // namespace vlf
 } // namespace mesolight

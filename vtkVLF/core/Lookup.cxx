@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "Lookup.h"
 
 #include "MathConstants.h"
@@ -40,10 +41,12 @@ int CellsAround(const glm::vec2& c, CellInterpolation mode, int (&i)[4], int (&j
 }
 } // namespace
 
-glm::vec3 Lookup::CellRadiance(std::size_t k, std::uint32_t s, std::size_t cell, const glm::vec3& x) const
+glm::vec3 Lookup::CellRadiance(
+  std::size_t k, std::uint32_t s, std::size_t cell, const glm::vec3& x) const
 {
   const Subfield& f = this->Field.GetSubfield(k);
-  glm::vec3 radiance = f.Radiance[cell] + this->Field.SampleTexture(this->Field.UnshotDiffuse, s, x);
+  glm::vec3 radiance =
+    f.Radiance[cell] + this->Field.SampleTexture(this->Field.UnshotDiffuse, s, x);
   if (!f.UnshotSpecular.empty())
   {
     radiance += f.UnshotSpecular[cell];
@@ -119,8 +122,8 @@ glm::vec3 Lookup::RadianceLeaving(std::uint32_t surface, const glm::vec3& p, con
   return weight > 0.0f ? sum / weight : this->DiffuseRadiance(surface, p);
 }
 
-glm::vec3 Lookup::IncidentRadiance(std::size_t k, int sense, const glm::vec3& p,
-  CellInterpolation cells, std::uint32_t ignore) const
+glm::vec3 Lookup::IncidentRadiance(
+  std::size_t k, int sense, const glm::vec3& p, CellInterpolation cells, std::uint32_t ignore) const
 {
   int is[4], js[4];
   float ws[4];

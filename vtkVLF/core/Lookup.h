@@ -1,11 +1,12 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Lookup: reading a propagated LightField (Wither 2005 §2.4.1.3, §3.6). All points and directions
 // are in the light field's unit-sphere coordinates (LightField::Scene()).
 //
 // Radiance leaving a surface point p in direction w: the subfield of the nearest direction to w
 // (DirectionSet::Nearest), the cell p projects to, the surface's radiance map there -- either
 // that one cell, or bilinear over the 2 x 2 cells of p's 8-neighbourhood that surround it (the
-// 8-neighbour interpolation of Wither 2005; cells whose line misses the surface are left out and the
-// weights renormalised). DirectionInterpolation::Spherical does this for the three directions
+// 8-neighbour interpolation of Wither 2005; cells whose line misses the surface are left out and
+// the weights renormalised). DirectionInterpolation::Spherical does this for the three directions
 // of the subdivision triangle around w and blends them with DirectionSet::Interpolate's
 // spherical weights (Wither's RENDER_RAYTRACE mode).
 //
@@ -24,7 +25,6 @@
 
 #include "LightField.h"
 
-
 namespace mesolight
 {
 namespace vlf
@@ -32,8 +32,8 @@ namespace vlf
 
 enum class CellInterpolation
 {
-  Nearest,  // the cell p projects to
-  Bilinear  // the 2 x 2 cells of p's 8-neighbourhood around p
+  Nearest, // the cell p projects to
+  Bilinear // the 2 x 2 cells of p's 8-neighbourhood around p
 };
 
 enum class DirectionInterpolation
@@ -89,7 +89,8 @@ private:
   // when no cell around p crosses s.
   bool SubfieldRadiance(std::size_t k, std::uint32_t s, const glm::vec3& p, CellInterpolation cells,
     glm::vec3& radiance) const;
-  glm::vec3 CellRadiance(std::size_t k, std::uint32_t s, std::size_t cell, const glm::vec3& x) const;
+  glm::vec3 CellRadiance(
+    std::size_t k, std::uint32_t s, std::size_t cell, const glm::vec3& x) const;
 
   const LightField& Field;
 };

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "ObjScene.h"
 
 #include <glm/geometric.hpp>
@@ -73,8 +74,8 @@ public:
       any = true;
       if (physical.find('\0') != std::string::npos)
       {
-        throw ObjSceneError(Location(this->Name, this->Physical) +
-          "binary data: this is not a text Wavefront file");
+        throw ObjSceneError(
+          Location(this->Name, this->Physical) + "binary data: this is not a text Wavefront file");
       }
       if (!physical.empty() && physical.back() == '\r')
       {
@@ -145,7 +146,8 @@ glm::vec3 ParseColour(const std::vector<std::string>& tokens, const std::string&
 {
   if (tokens.size() >= 2 && (tokens[1] == "spectral" || tokens[1] == "xyz"))
   {
-    throw ObjSceneError(where + "'" + tokens[0] + " " + tokens[1] + "' is not supported (give RGB)");
+    throw ObjSceneError(
+      where + "'" + tokens[0] + " " + tokens[1] + "' is not supported (give RGB)");
   }
   const std::vector<float> v = ParseFloats(tokens, 1, 3, where);
   // MTL: "Kd r" means grey r.
@@ -153,8 +155,8 @@ glm::vec3 ParseColour(const std::vector<std::string>& tokens, const std::string&
 }
 
 // Resolves a 1-based or negative OBJ index against `count` definitions so far.
-std::uint32_t ResolveIndex(const std::string& token, std::size_t count, const char* what,
-  const std::string& where)
+std::uint32_t ResolveIndex(
+  const std::string& token, std::size_t count, const char* what, const std::string& where)
 {
   long long value = 0;
   const auto result = std::from_chars(token.data(), token.data() + token.size(), value);
@@ -165,8 +167,8 @@ std::uint32_t ResolveIndex(const std::string& token, std::size_t count, const ch
   long long index = value > 0 ? value - 1 : static_cast<long long>(count) + value;
   if (value == 0 || index < 0 || index >= static_cast<long long>(count))
   {
-    throw ObjSceneError(where + "face refers to " + what + " " + token + " of " +
-      std::to_string(count));
+    throw ObjSceneError(
+      where + "face refers to " + what + " " + token + " of " + std::to_string(count));
   }
   return static_cast<std::uint32_t>(index);
 }
@@ -273,8 +275,8 @@ struct CornerHash
 {
   std::size_t operator()(const Corner& c) const
   {
-    return std::hash<long long>()((static_cast<long long>(c.Position) << 40) ^
-      ((c.TCoord + 1) << 20) ^ (c.Normal + 1));
+    return std::hash<long long>()(
+      (static_cast<long long>(c.Position) << 40) ^ ((c.TCoord + 1) << 20) ^ (c.Normal + 1));
   }
 };
 } // namespace
@@ -314,16 +316,17 @@ ObjSceneRead ParseObjScene(std::istream& obj, const std::string& name, const std
   std::vector<glm::vec3> positions;
   std::vector<glm::vec2> tcoords;
   std::vector<glm::vec3> normals;
-  std::vector<MtlMaterial> library;               // every material of every mtllib
+  std::vector<MtlMaterial> library;                  // every material of every mtllib
   std::map<std::string, std::uint32_t> usedMaterial; // name -> id in the scene
   std::uint32_t currentMaterial = 0;
   bool haveMaterial = false;
-  std::vector<std::array<Corner, 3>> faces;  // triangles, in OBJ indices
+  std::vector<std::array<Corner, 3>> faces; // triangles, in OBJ indices
   std::vector<std::uint32_t> faceMaterials;
   bool warnedLines = false;
   std::size_t recognised = 0;
 
-  const auto materialId = [&](const std::string& materialName, const std::string& where) {
+  const auto materialId = [&](const std::string& materialName, const std::string& where)
+  {
     const auto found = usedMaterial.find(materialName);
     if (found != usedMaterial.end())
     {
@@ -342,8 +345,8 @@ ObjSceneRead ParseObjScene(std::istream& obj, const std::string& name, const std
       SceneMaterial grey = DefaultGreyMaterial();
       if (!materialName.empty())
       {
-        read.Warnings.push_back(where + "material '" + materialName +
-          "' is not in any MTL file: default grey (Kd 0.5)");
+        read.Warnings.push_back(
+          where + "material '" + materialName + "' is not in any MTL file: default grey (Kd 0.5)");
         grey.Name = materialName;
       }
       id = read.Scene.AddMaterial(grey);
@@ -387,8 +390,8 @@ ObjSceneRead ParseObjScene(std::istream& obj, const std::string& name, const std
     {
       if (tokens.size() < 4)
       {
-        throw ObjSceneError(where + "a face needs at least 3 vertices, got " +
-          std::to_string(tokens.size() - 1));
+        throw ObjSceneError(
+          where + "a face needs at least 3 vertices, got " + std::to_string(tokens.size() - 1));
       }
       std::vector<Corner> corners;
       for (std::size_t k = 1; k < tokens.size(); ++k)
@@ -401,8 +404,8 @@ ObjSceneRead ParseObjScene(std::istream& obj, const std::string& name, const std
         c.Position = ResolveIndex(token.substr(0, slash1), positions.size(), "vertex", where);
         if (slash1 != std::string::npos)
         {
-          const std::string t = token.substr(slash1 + 1,
-            slash2 == std::string::npos ? std::string::npos : slash2 - slash1 - 1);
+          const std::string t = token.substr(
+            slash1 + 1, slash2 == std::string::npos ? std::string::npos : slash2 - slash1 - 1);
           if (!t.empty())
           {
             c.TCoord = ResolveIndex(t, tcoords.size(), "texture coordinate", where);
@@ -473,8 +476,9 @@ ObjSceneRead ParseObjScene(std::istream& obj, const std::string& name, const std
     }
     else if (recognised == 0 && number > 20)
     {
-      throw ObjSceneError(where + "no Wavefront OBJ statement in the first 20 lines: this is not "
-                                  "an OBJ file");
+      throw ObjSceneError(where +
+        "no Wavefront OBJ statement in the first 20 lines: this is not "
+        "an OBJ file");
     }
   }
   read.ObjVertices = positions.size();
@@ -560,7 +564,8 @@ ObjSceneRead ParseObjScene(std::istream& obj, const std::string& name, const std
   if (!options.RequireEmitter)
   {
     const bool emitter = std::any_of(scene.Materials.begin(), scene.Materials.end(),
-      [](const SceneMaterial& m) { return glm::any(glm::greaterThan(m.Emission, glm::vec3(0.0f))); });
+      [](const SceneMaterial& m)
+      { return glm::any(glm::greaterThan(m.Emission, glm::vec3(0.0f))); });
     if (!emitter)
     {
       read.Warnings.push_back(name + ": no emitter (no material with Ke > 0): the scene is dark");
@@ -634,8 +639,8 @@ std::string Numbers(std::initializer_list<float> values)
 }
 } // namespace
 
-void WriteObjScene(
-  const TriangleScene& scene, const std::string& objPath, bool overwrite, const std::string& comment)
+void WriteObjScene(const TriangleScene& scene, const std::string& objPath, bool overwrite,
+  const std::string& comment)
 {
   const std::string mtlPath = Stem(objPath) + ".mtl";
   const std::size_t slash = mtlPath.find_last_of('/');
@@ -683,8 +688,8 @@ void WriteObjScene(
   {
     out << "v" << Numbers({ p.x, p.y, p.z }) << "\n";
   }
-  const bool tcoords = scene.TextureCoordinates.size() == scene.Positions.size() &&
-    !scene.Positions.empty();
+  const bool tcoords =
+    scene.TextureCoordinates.size() == scene.Positions.size() && !scene.Positions.empty();
   const bool normals = scene.Normals.size() == scene.Positions.size() && !scene.Positions.empty();
   if (tcoords)
   {

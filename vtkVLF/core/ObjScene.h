@@ -1,6 +1,7 @@
-// Wavefront OBJ + MTL scenes for the virtual light field (Wither 2005 §2.4.2.1: the propagator reads
-// a scene as *.obj with a *.mtl of surface properties). Reads into the shared TriangleScene and
-// writes one back (the built-in Cornell box as an example of the format).
+// SPDX-License-Identifier: BSD-3-Clause
+// Wavefront OBJ + MTL scenes for the virtual light field (Wither 2005 §2.4.2.1: the propagator
+// reads a scene as *.obj with a *.mtl of surface properties). Reads into the shared TriangleScene
+// and writes one back (the built-in Cornell box as an example of the format).
 //
 // Read: v, vt, vn, f (n-gons fan-triangulated; negative indices count back from the last
 // definition), usemtl, mtllib; MTL newmtl, Kd (diffuse), Ks (perfect specular, Wither 2005 §2.1),
@@ -31,7 +32,7 @@ public:
 
 struct ObjReadOptions
 {
-  bool RequireEmitter = false;         // no material with Ke > 0 is an error
+  bool RequireEmitter = false;           // no material with Ke > 0 is an error
   bool RemoveDegenerateTriangles = true; // drop zero-area triangles (counted either way)
 };
 
@@ -42,10 +43,10 @@ struct ObjSceneRead
   std::vector<std::map<std::string, std::string>> TextureMaps;
   // Usable, but probably not what the user meant ("scene.obj:3: mtllib 'room.mtl' not found ...").
   std::vector<std::string> Warnings;
-  std::size_t ObjVertices = 0;        // v statements
-  std::size_t ObjFaces = 0;           // f statements (before triangulation)
+  std::size_t ObjVertices = 0;         // v statements
+  std::size_t ObjFaces = 0;            // f statements (before triangulation)
   std::size_t DegenerateTriangles = 0; // zero-area triangles found (removed if so asked)
-  std::size_t NonManifoldEdges = 0;   // edges (by OBJ vertex) shared by more than two triangles
+  std::size_t NonManifoldEdges = 0;    // edges (by OBJ vertex) shared by more than two triangles
 };
 
 // The default material for faces without a (known) material: grey, Kd 0.5.
@@ -53,7 +54,8 @@ SceneMaterial DefaultGreyMaterial();
 
 // Reads an OBJ file and the MTL files it names (relative to the OBJ's folder).
 ObjSceneRead ReadObjScene(const std::string& objPath, const ObjReadOptions& options = {});
-// The same from a stream; `name` prefixes messages, `directory` is where mtllib files are looked up.
+// The same from a stream; `name` prefixes messages, `directory` is where mtllib files are looked
+// up.
 ObjSceneRead ParseObjScene(std::istream& obj, const std::string& name, const std::string& directory,
   const ObjReadOptions& options = {});
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "PatchComparison.h"
 
 #include <glm/geometric.hpp>
@@ -56,7 +57,8 @@ PatchComparisonResult ComparePatches(
     throw std::invalid_argument("no reference radiance given");
   }
   const TriangleScene& scene = field.Scene();
-  const double worldArea = 1.0 / (static_cast<double>(field.NormalizationScale()) * field.NormalizationScale());
+  const double worldArea =
+    1.0 / (static_cast<double>(field.NormalizationScale()) * field.NormalizationScale());
   PatchComparisonResult result;
   double weightedError = 0.0, weightedArea = 0.0;
   for (std::uint32_t s = 0; s < field.Surfaces().size(); ++s)
@@ -65,7 +67,8 @@ PatchComparisonResult ComparePatches(
     const SceneMaterial& material = field.MaterialOf(s);
     PatchError patch;
     patch.Surface = s;
-    patch.Name = (material.Name.empty() ? "material " + std::to_string(surface.Material) : material.Name) +
+    patch.Name =
+      (material.Name.empty() ? "material " + std::to_string(surface.Material) : material.Name) +
       ", normal " + AxisName(surface.Normal);
     patch.Area = surface.Area * worldArea;
     double squaredError = 0.0;
@@ -112,7 +115,8 @@ PatchComparisonResult ComparePatches(
     patch.Field /= static_cast<float>(samples);
     patch.Reference /= static_cast<float>(samples);
     const double ref = Sum(patch.Reference);
-    patch.MeanError = ref > 0.0 ? std::abs(Sum(patch.Field) - ref) / ref : (Sum(patch.Field) > 0.0 ? 1.0 : 0.0);
+    patch.MeanError =
+      ref > 0.0 ? std::abs(Sum(patch.Field) - ref) / ref : (Sum(patch.Field) > 0.0 ? 1.0 : 0.0);
     patch.PointError = std::sqrt(squaredError / samples);
     const bool emitter = Sum(material.Emission) > 0.0;
     if (!emitter)
@@ -131,8 +135,8 @@ std::string PatchComparisonResult::Table() const
 {
   std::ostringstream out;
   char line[320];
-  std::snprintf(line, sizeof(line), "%-28s %10s %7s  %-26s %-26s %8s %8s\n", "patch", "area", "samples",
-    "field RGB", "reference RGB", "mean err", "rms err");
+  std::snprintf(line, sizeof(line), "%-28s %10s %7s  %-26s %-26s %8s %8s\n", "patch", "area",
+    "samples", "field RGB", "reference RGB", "mean err", "rms err");
   out << line;
   for (const PatchError& p : this->Patches)
   {
@@ -152,7 +156,8 @@ std::string PatchComparisonResult::Table() const
 std::string PatchComparisonResult::Csv() const
 {
   std::ostringstream out;
-  out << "patch,area,samples,field_r,field_g,field_b,reference_r,reference_g,reference_b,mean_error,rms_error\n";
+  out << "patch,area,samples,field_r,field_g,field_b,reference_r,reference_g,reference_b,mean_"
+         "error,rms_error\n";
   for (const PatchError& p : this->Patches)
   {
     out << '"' << p.Name << "\"," << p.Area << ',' << p.Samples << ',' << p.Field.x << ','

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // PatchComparison: the light field's diffuse radiance per patch (a planar surface: a Cornell box
 // wall, a block face, the light) against any reference -- the path tracer's
 // DiffuseRadianceLeaving (Le + Kd/pi * irradiance), an analytic formula, a constant.
@@ -27,13 +28,13 @@ using ReferenceRadiance =
 struct PatchError
 {
   std::uint32_t Surface = 0;
-  std::string Name;       // "white, normal +y" (material name and dominant normal axis)
-  double Area = 0.0;      // world units squared
+  std::string Name;  // "white, normal +y" (material name and dominant normal axis)
+  double Area = 0.0; // world units squared
   std::size_t Samples = 0;
   glm::vec3 Field{ 0.0f };     // mean diffuse radiance of the light field over the samples
   glm::vec3 Reference{ 0.0f }; // mean reference radiance
-  double MeanError = 0.0; // |sum_c (Field_c - Reference_c)| / sum_c Reference_c
-  double PointError = 0.0; // RMS over samples of the per-point relative error (summed channels)
+  double MeanError = 0.0;      // |sum_c (Field_c - Reference_c)| / sum_c Reference_c
+  double PointError = 0.0;     // RMS over samples of the per-point relative error (summed channels)
 };
 
 struct PatchComparisonResult

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "Propagation.h"
 
 #include "MathConstants.h"
@@ -99,7 +100,8 @@ void ShootSubfield(LightField& field, std::size_t k, BlockState& state)
           state.Reflected[w.Texel[t]] += w.Weight[t] * reflected;
         }
         Add(state.Energy.Absorbed, (glm::vec3(1.0f) - material.Diffuse - material.Specular) * flux);
-        if (material.Specular.x <= 0.0f && material.Specular.y <= 0.0f && material.Specular.z <= 0.0f)
+        if (material.Specular.x <= 0.0f && material.Specular.y <= 0.0f &&
+          material.Specular.z <= 0.0f)
         {
           continue;
         }
@@ -138,8 +140,9 @@ void ShootSubfield(LightField& field, std::size_t k, BlockState& state)
         {
           if (weights[t] > 0.0f)
           {
-            state.Specular.push_back({ static_cast<std::uint32_t>(target),
-              static_cast<std::size_t>(cells[t]), material.Specular * radiance * (scale * weights[t]) });
+            state.Specular.push_back(
+              { static_cast<std::uint32_t>(target), static_cast<std::size_t>(cells[t]),
+                material.Specular * radiance * (scale * weights[t]) });
           }
         }
       }

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Propagation: iterative shooting of diffuse and perfect-specular radiance along the parallel
 // subfields of a LightField (Wither 2005 §2.4.1.2), progressive-radiosity style.
 //
@@ -49,7 +50,8 @@ struct PropagationOptions
 
 // One shooting iteration. Appends its energy record to field.EnergyLog and returns it.
 // Throws AbortedError when aborted (the field is then inconsistent: reload the last snapshot).
-LightField::IterationEnergy PropagateIteration(LightField& field, const PropagationOptions& options = {});
+LightField::IterationEnergy PropagateIteration(
+  LightField& field, const PropagationOptions& options = {});
 
 // Iterates until field.IterationsDone == iterations (nothing when already there), calling
 // afterIteration (e.g. writing a snapshot) after each.

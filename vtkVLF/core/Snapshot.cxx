@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "Snapshot.h"
 
 #include <cerrno>
@@ -216,7 +217,10 @@ public:
       bytes -= take;
     }
   }
-  std::uint64_t BytesLeft() const { return this->Remaining + (this->Buffer.size() - this->Position); }
+  std::uint64_t BytesLeft() const
+  {
+    return this->Remaining + (this->Buffer.size() - this->Position);
+  }
   [[noreturn]] void Fail(const std::string& what) const
   {
     throw SnapshotError(Quoted(this->Path) + " is corrupt: " + what);
@@ -230,7 +234,8 @@ private:
     {
       this->Fail("it ends before its contents are complete");
     }
-    const std::size_t take = static_cast<std::size_t>(std::min<std::uint64_t>(BufferBytes, this->Remaining));
+    const std::size_t take =
+      static_cast<std::size_t>(std::min<std::uint64_t>(BufferBytes, this->Remaining));
     this->Buffer.resize(take);
     if (std::fread(this->Buffer.data(), 1, take, this->File) != take)
     {
@@ -380,7 +385,8 @@ void WriteSnapshot(const LightField& field, const std::string& path)
   {
     const std::string reason = std::strerror(errno);
     std::remove(temporary.c_str());
-    throw SnapshotError("cannot rename " + Quoted(temporary) + " to " + Quoted(path) + ": " + reason);
+    throw SnapshotError(
+      "cannot rename " + Quoted(temporary) + " to " + Quoted(path) + ": " + reason);
   }
 }
 
@@ -401,7 +407,8 @@ std::unique_ptr<LightField> ReadSnapshot(const std::string& path, std::uint64_t 
   const std::size_t headerRead = std::fread(&header, 1, sizeof(header), file);
   if (headerRead < 8 || std::memcmp(header.MagicBytes, Magic, 8) != 0)
   {
-    throw SnapshotError(Quoted(path) + " is not a Mesolight light field snapshot (no MLVLFSNP header)");
+    throw SnapshotError(
+      Quoted(path) + " is not a Mesolight light field snapshot (no MLVLFSNP header)");
   }
   if (headerRead < sizeof(header))
   {
@@ -480,7 +487,8 @@ std::unique_ptr<LightField> ReadSnapshot(const std::string& path, std::uint64_t 
   }
   for (const glm::uvec3& t : scene.Triangles)
   {
-    if (t.x >= scene.Positions.size() || t.y >= scene.Positions.size() || t.z >= scene.Positions.size())
+    if (t.x >= scene.Positions.size() || t.y >= scene.Positions.size() ||
+      t.z >= scene.Positions.size())
     {
       r.Fail("a triangle refers to a missing vertex");
     }
@@ -517,7 +525,8 @@ std::unique_ptr<LightField> ReadSnapshot(const std::string& path, std::uint64_t 
   r.Bytes(field->EnergyLog.data(), field->EnergyLog.size() * sizeof(LightField::IterationEnergy));
 
   const std::size_t tiles = static_cast<std::size_t>(settings.TilesPerSide) * settings.TilesPerSide;
-  const std::size_t cellsPerMap = static_cast<std::size_t>(settings.TileSide()) * settings.TileSide();
+  const std::size_t cellsPerMap =
+    static_cast<std::size_t>(settings.TileSide()) * settings.TileSide();
   const std::size_t surfaces = field->Surfaces().size();
   for (std::size_t k = 0; k < field->SubfieldCount(); ++k)
   {
@@ -550,7 +559,8 @@ std::unique_ptr<LightField> ReadSnapshot(const std::string& path, std::uint64_t 
     }
     r.Array(f.Depth, "depth cells", entries * cellsPerMap);
     r.Array(f.Radiance, "radiance cells", entries * cellsPerMap);
-    r.Array(f.UnshotSpecular, "unshot specular cells", field->HasSpecular() ? entries * cellsPerMap : 0);
+    r.Array(
+      f.UnshotSpecular, "unshot specular cells", field->HasSpecular() ? entries * cellsPerMap : 0);
   }
   if (r.BytesLeft() != 0)
   {

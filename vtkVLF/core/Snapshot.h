@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Snapshot: a light field on disk after each propagation iteration (Wither 2005 §2.4.2.1: the
 // propagator writes its state after every iteration and can continue from it).
 //

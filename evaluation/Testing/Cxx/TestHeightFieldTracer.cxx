@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Unit tests for mesolight::HeightFieldTracer, the exact reference for GPU relief marching.
 // Texture space is (u, v, d), d = depth, 0 = top; see HeightFieldTracer.h.
 
@@ -56,7 +57,7 @@ glm::dvec3 DownDirection(double theta, double phi)
 
 // Draws u, then v: function arguments have no evaluation order, so drawing both inside one
 // constructor call would give compiler-dependent rays.
-template<typename Rng, typename U, typename V>
+template <typename Rng, typename U, typename V>
 glm::dvec2 DrawUV(Rng& rng, U& u, V& v)
 {
   const double pu = u(rng);
@@ -78,10 +79,11 @@ void ExpectValidHit(const HeightField& hf, const glm::dvec3& origin, const glm::
 
 // A typical GPU linear search (N uniform steps) plus 8 bisection steps: used only to show that
 // the spike test can tell an exact method from a too-coarse one.
-std::optional<double> CoarseMarch(const HeightField& hf, const glm::dvec3& origin,
-  const glm::dvec3& dir, double tMax, int steps)
+std::optional<double> CoarseMarch(
+  const HeightField& hf, const glm::dvec3& origin, const glm::dvec3& dir, double tMax, int steps)
 {
-  const auto below = [&](double t) {
+  const auto below = [&](double t)
+  {
     const glm::dvec3 p = origin + t * dir;
     return p.z >= hf.DepthAt(p.x, p.y);
   };
@@ -105,8 +107,8 @@ std::optional<double> CoarseMarch(const HeightField& hf, const glm::dvec3& origi
 
 // Compares IntersectFirst with the brute-force oracle on one ray. Returns true when they agree to
 // 1e-6 in t; otherwise checks the first-hit property (the oracle may only be late or miss).
-bool CompareWithOracle(const HeightField& hf, const glm::dvec3& origin, const glm::dvec3& dir,
-  double tMax, int samples)
+bool CompareWithOracle(
+  const HeightField& hf, const glm::dvec3& origin, const glm::dvec3& dir, double tMax, int samples)
 {
   const std::optional<RayHit> exact = IntersectFirst(hf, origin, dir, tMax);
   const std::optional<RayHit> oracle = IntersectFirstBruteForce(hf, origin, dir, tMax, samples);
@@ -267,11 +269,9 @@ TEST(IntersectFirst, TiltedPlaneMatchesTheAnalyticHit)
 {
   // depth = 1/8 + u/2 + v/4; the texel values are exact in float on this 8 x 4 grid, and bilinear
   // interpolation reproduces a plane exactly between the texel centres.
-  const auto plane = [](double u, double v) {
-    return 0.125 + 0.5 * u + 0.25 * v;
-  };
-  const HeightField hf = MakeField(8, 4,
-    [&](int i, int j) { return static_cast<float>(plane((i + 0.5) / 8, (j + 0.5) / 4)); });
+  const auto plane = [](double u, double v) { return 0.125 + 0.5 * u + 0.25 * v; };
+  const HeightField hf = MakeField(
+    8, 4, [&](int i, int j) { return static_cast<float>(plane((i + 0.5) / 8, (j + 0.5) / 4)); });
   std::mt19937 rng(2);
   std::uniform_real_distribution<double> inU(0.07, 0.93), inV(0.13, 0.87);
   for (int n = 0; n < 1000; ++n)

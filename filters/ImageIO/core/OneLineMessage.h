@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Library messages (OpenImageIO's in particular) may span several lines; VTK error messages
 // read best as one.
 #ifndef mesolight_OneLineMessage_h

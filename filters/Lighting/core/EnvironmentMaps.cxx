@@ -103,21 +103,24 @@ RgbImage Supersample(int width, int height, int samples, Sample sample)
 
 /// Resample a square probe picture into a lat-long map with the given inverse mapping.
 template <typename PointFromDirection>
-RgbImage ProbeToLatLong(const RgbImage& probe, int width, int height, int samples,
-  PointFromDirection pointFromDirection)
+RgbImage ProbeToLatLong(
+  const RgbImage& probe, int width, int height, int samples, PointFromDirection pointFromDirection)
 {
   if (probe.Width < 1 || probe.Height < 1 || width < 1 || height < 1)
   {
     return RgbImage(std::max(0, width), std::max(0, height));
   }
-  return Supersample(width, height, samples, [&](double fx, double fy, float c[3]) {
-    double d[3];
-    DirectionFromMapUV(fx, 1.0 - fy, d); // v = 0 at the top row
-    double a = 0.0;
-    double b = 0.0;
-    pointFromDirection(d, a, b);
-    SampleBilinear(probe, (a + 1.0) * 0.5 * probe.Width, (b + 1.0) * 0.5 * probe.Height, false, c);
-  });
+  return Supersample(width, height, samples,
+    [&](double fx, double fy, float c[3])
+    {
+      double d[3];
+      DirectionFromMapUV(fx, 1.0 - fy, d); // v = 0 at the top row
+      double a = 0.0;
+      double b = 0.0;
+      pointFromDirection(d, a, b);
+      SampleBilinear(
+        probe, (a + 1.0) * 0.5 * probe.Width, (b + 1.0) * 0.5 * probe.Height, false, c);
+    });
 }
 
 /// Lat-long -> square probe picture with the given forward mapping (nearest-free: bilinear).
@@ -330,8 +333,9 @@ SH9 ProjectSH9(const RgbImage& map)
 
 void IrradianceSH9(const SH9& sh, const double n[3], double e[3])
 {
-  static const double A[9] = { Pi<double>, 2.0 * Pi<double> / 3.0, 2.0 * Pi<double> / 3.0, 2.0 * Pi<double> / 3.0, Pi<double> / 4.0,
-    Pi<double> / 4.0, Pi<double> / 4.0, Pi<double> / 4.0, Pi<double> / 4.0 };
+  static const double A[9] = { Pi<double>, 2.0 * Pi<double> / 3.0, 2.0 * Pi<double> / 3.0,
+    2.0 * Pi<double> / 3.0, Pi<double> / 4.0, Pi<double> / 4.0, Pi<double> / 4.0, Pi<double> / 4.0,
+    Pi<double> / 4.0 };
   double y[9];
   EvaluateSHBasis(n, y);
   e[0] = e[1] = e[2] = 0.0;
@@ -360,7 +364,8 @@ void SampleBilinear(const RgbImage& image, double x, double y, bool wrapX, float
   const double y0f = std::floor(fy);
   const double tx = fx - x0f;
   const double ty = fy - y0f;
-  auto column = [&](long long i) -> int {
+  auto column = [&](long long i) -> int
+  {
     if (wrapX)
     {
       long long m = i % w;
@@ -368,9 +373,8 @@ void SampleBilinear(const RgbImage& image, double x, double y, bool wrapX, float
     }
     return static_cast<int>(std::max(0LL, std::min<long long>(w - 1, i)));
   };
-  auto row = [&](long long j) -> int {
-    return static_cast<int>(std::max(0LL, std::min<long long>(h - 1, j)));
-  };
+  auto row = [&](long long j) -> int
+  { return static_cast<int>(std::max(0LL, std::min<long long>(h - 1, j))); };
   const long long xi = static_cast<long long>(x0f);
   const long long yi = static_cast<long long>(y0f);
   const int i0 = column(xi);
@@ -396,9 +400,9 @@ RgbImage ResampleLatLong(const RgbImage& map, int width, int height, int samples
   {
     return RgbImage(std::max(0, width), std::max(0, height));
   }
-  return Supersample(width, height, samples, [&](double fx, double fy, float c[3]) {
-    SampleBilinear(map, fx * map.Width, fy * map.Height, true, c);
-  });
+  return Supersample(width, height, samples,
+    [&](double fx, double fy, float c[3])
+    { SampleBilinear(map, fx * map.Width, fy * map.Height, true, c); });
 }
 
 //------------------------------------------------------------------------------
@@ -516,8 +520,8 @@ RgbImage LatLongToMirrorBall(const RgbImage& map, const ProbeView& view, int siz
 RgbImage MergeWithMask(const RgbImage& a, const RgbImage& b, const std::vector<float>& mask)
 {
   const size_t n = static_cast<size_t>(a.Width) * static_cast<size_t>(a.Height);
-  if (a.Width != b.Width || a.Height != b.Height || mask.size() != n ||
-    a.Rgb.size() != 3 * n || b.Rgb.size() != 3 * n)
+  if (a.Width != b.Width || a.Height != b.Height || mask.size() != n || a.Rgb.size() != 3 * n ||
+    b.Rgb.size() != 3 * n)
   {
     return RgbImage();
   }

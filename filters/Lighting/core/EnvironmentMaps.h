@@ -84,9 +84,9 @@ public:
 private:
   int Width;
   int Height;
-  std::vector<double> Radiance;                 // 3 W H, VTK row order
-  std::vector<double> RowZ, RowS;               // per row: z moment / Dphi, sin^2 integral
-  std::vector<double> ColC, ColS;               // per column: sin phi1 - sin phi0, cos phi0 - cos phi1
+  std::vector<double> Radiance;   // 3 W H, VTK row order
+  std::vector<double> RowZ, RowS; // per row: z moment / Dphi, sin^2 integral
+  std::vector<double> ColC, ColS; // per column: sin phi1 - sin phi0, cos phi0 - cos phi1
   double DeltaPhi = 0.0;
 };
 

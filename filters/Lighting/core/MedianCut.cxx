@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "MedianCut.h"
 
+#include "EnvironmentMaps.h"
 #include "MathConstants.h"
 #include "ParallelFor.h"
-#include "EnvironmentMaps.h"
 
 #include <algorithm>
 #include <cmath>
@@ -23,7 +23,8 @@ namespace
 /// per 16 rows), whatever runs them.
 int BandsFor(int n)
 {
-  return std::max(1, std::min<int>(n / 16 + 1, static_cast<int>(std::thread::hardware_concurrency())));
+  return std::max(
+    1, std::min<int>(n / 16 + 1, static_cast<int>(std::thread::hardware_concurrency())));
 }
 
 /// fn(begin, end) for the band [n t / T, n (t + 1) / T) of each t < T = BandsFor(n), on
@@ -32,14 +33,18 @@ template <typename Fn>
 void ForEachBand(int n, Fn fn)
 {
   const int bands = BandsFor(n);
-  ParallelFor(0, static_cast<std::size_t>(bands), 1, [&](std::size_t t0, std::size_t t1) {
-    for (std::size_t t = t0; t < t1; ++t)
+  ParallelFor(0, static_cast<std::size_t>(bands), 1,
+    [&](std::size_t t0, std::size_t t1)
     {
-      const int begin = static_cast<int>(static_cast<long long>(n) * static_cast<long long>(t) / bands);
-      const int end = static_cast<int>(static_cast<long long>(n) * static_cast<long long>(t + 1) / bands);
-      fn(begin, end);
-    }
-  });
+      for (std::size_t t = t0; t < t1; ++t)
+      {
+        const int begin =
+          static_cast<int>(static_cast<long long>(n) * static_cast<long long>(t) / bands);
+        const int end =
+          static_cast<int>(static_cast<long long>(n) * static_cast<long long>(t + 1) / bands);
+        fn(begin, end);
+      }
+    });
 }
 
 /// A (W+1) x (H+1) summed-area table in double; rows counted from the top of the map.
@@ -115,10 +120,10 @@ public:
   int W = 0;
   int H = 0;
   bool Variance = false;
-  Sat E;                  // e
-  Sat Ex, Exx, Ey, Eyy;   // e x, e x^2, e y, e y^2 (pixel-centre coordinates), variance mode
-  double DPhi = 0.0;      // 2 pi / W
-  double DTheta = 0.0;    // pi / H
+  Sat E;                // e
+  Sat Ex, Exx, Ey, Eyy; // e x, e x^2, e y, e y^2 (pixel-centre coordinates), variance mode
+  double DPhi = 0.0;    // 2 pi / W
+  double DTheta = 0.0;  // pi / H
 
   double SinThetaCentre(int y0, int y1) const { return std::sin(0.5 * (y0 + y1) * this->DTheta); }
 
@@ -168,8 +173,7 @@ public:
       double best = -1.0;
       for (int c = r.X0 + 1; c < r.X1; ++c)
       {
-        const double cost =
-          this->Inertia(r.X0, c, r.Y0, r.Y1) + this->Inertia(c, r.X1, r.Y0, r.Y1);
+        const double cost = this->Inertia(r.X0, c, r.Y0, r.Y1) + this->Inertia(c, r.X1, r.Y0, r.Y1);
         if (best < 0.0 || cost < best)
         {
           best = cost;
@@ -179,8 +183,7 @@ public:
       }
       for (int c = r.Y0 + 1; c < r.Y1; ++c)
       {
-        const double cost =
-          this->Inertia(r.X0, r.X1, r.Y0, c) + this->Inertia(r.X0, r.X1, c, r.Y1);
+        const double cost = this->Inertia(r.X0, r.X1, r.Y0, c) + this->Inertia(r.X0, r.X1, c, r.Y1);
         if (best < 0.0 || cost < best)
         {
           best = cost;
@@ -200,9 +203,8 @@ public:
       this->LongerSide(r, alongX);
       const int lo = alongX ? r.X0 + 1 : r.Y0 + 1;
       const int hi = alongX ? r.X1 - 1 : r.Y1 - 1;
-      auto below = [&](int c) {
-        return alongX ? this->E.Sum(r.X0, c, r.Y0, r.Y1) : this->E.Sum(r.X0, r.X1, r.Y0, c);
-      };
+      auto below = [&](int c)
+      { return alongX ? this->E.Sum(r.X0, c, r.Y0, r.Y1) : this->E.Sum(r.X0, r.X1, r.Y0, c); };
       if (!(r.Energy > 0.0))
       {
         at = alongX ? r.X0 + w / 2 : r.Y0 + h / 2;
@@ -272,8 +274,8 @@ MedianCutStatus ComputeMedianCut(const float* pixels, int components, int width,
   if (n < 1 || n > count)
   {
     std::ostringstream os;
-    os << "the number of lights must be between 1 and the number of pixels (" << count
-       << "); got " << n;
+    os << "the number of lights must be between 1 and the number of pixels (" << count << "); got "
+       << n;
     error = os.str();
     return MedianCutStatus::Error;
   }
@@ -343,69 +345,71 @@ MedianCutStatus ComputeMedianCut(const float* pixels, int components, int width,
   std::vector<long long> firstBadPerRow(static_cast<size_t>(h), -1);
   // Each task builds a band of rows: per-row prefix sums plus the band's rows above, in
   // one pass; the bands are then offset by the SAT row above them.
-  ForEachBand(h, [&](int begin, int end) {
-    for (int y = begin; y < end; ++y)
+  ForEachBand(h,
+    [&](int begin, int end)
     {
-      const int j = h - 1 - y;
-      const float* p = pixels + static_cast<size_t>(j) * w * components;
-      const bool above = y > begin;
-      double* e = cut.E.Row(y + 1);
-      const double* e0 = cut.E.Row(y);
-      double* ex = cut.Variance ? cut.Ex.Row(y + 1) : nullptr;
-      double* exx = cut.Variance ? cut.Exx.Row(y + 1) : nullptr;
-      double* ey = cut.Variance ? cut.Ey.Row(y + 1) : nullptr;
-      double* eyy = cut.Variance ? cut.Eyy.Row(y + 1) : nullptr;
-      const double* ex0 = cut.Variance ? cut.Ex.Row(y) : nullptr;
-      const double* exx0 = cut.Variance ? cut.Exx.Row(y) : nullptr;
-      const double* ey0 = cut.Variance ? cut.Ey.Row(y) : nullptr;
-      const double* eyy0 = cut.Variance ? cut.Eyy.Row(y) : nullptr;
-      const double weight = rowWeight[y];
-      const double yc = y + 0.5;
-      double run = 0.0;
-      double runX = 0.0;
-      double runXX = 0.0;
-      double runY = 0.0;
-      double runYY = 0.0;
-      for (int x = 0; x < w; ++x, p += components)
+      for (int y = begin; y < end; ++y)
       {
-        const double r = p[0];
-        const double g = p[1];
-        const double b = p[2];
-        if (!std::isfinite(r) || !std::isfinite(g) || !std::isfinite(b))
+        const int j = h - 1 - y;
+        const float* p = pixels + static_cast<size_t>(j) * w * components;
+        const bool above = y > begin;
+        double* e = cut.E.Row(y + 1);
+        const double* e0 = cut.E.Row(y);
+        double* ex = cut.Variance ? cut.Ex.Row(y + 1) : nullptr;
+        double* exx = cut.Variance ? cut.Exx.Row(y + 1) : nullptr;
+        double* ey = cut.Variance ? cut.Ey.Row(y + 1) : nullptr;
+        double* eyy = cut.Variance ? cut.Eyy.Row(y + 1) : nullptr;
+        const double* ex0 = cut.Variance ? cut.Ex.Row(y) : nullptr;
+        const double* exx0 = cut.Variance ? cut.Exx.Row(y) : nullptr;
+        const double* ey0 = cut.Variance ? cut.Ey.Row(y) : nullptr;
+        const double* eyy0 = cut.Variance ? cut.Eyy.Row(y) : nullptr;
+        const double weight = rowWeight[y];
+        const double yc = y + 0.5;
+        double run = 0.0;
+        double runX = 0.0;
+        double runXX = 0.0;
+        double runY = 0.0;
+        double runYY = 0.0;
+        for (int x = 0; x < w; ++x, p += components)
         {
-          if (badPerRow[y]++ == 0)
+          const double r = p[0];
+          const double g = p[1];
+          const double b = p[2];
+          if (!std::isfinite(r) || !std::isfinite(g) || !std::isfinite(b))
           {
-            firstBadPerRow[y] = x;
+            if (badPerRow[y]++ == 0)
+            {
+              firstBadPerRow[y] = x;
+            }
+            e[x + 1] = run + (above ? e0[x + 1] : 0.0);
+            if (ex)
+            {
+              ex[x + 1] = runX + (above ? ex0[x + 1] : 0.0);
+              exx[x + 1] = runXX + (above ? exx0[x + 1] : 0.0);
+              ey[x + 1] = runY + (above ? ey0[x + 1] : 0.0);
+              eyy[x + 1] = runYY + (above ? eyy0[x + 1] : 0.0);
+            }
+            continue;
           }
+          const double lum = Luminance(std::max(0.0, r), std::max(0.0, g), std::max(0.0, b));
+          const double v = lum * weight;
+          run += v;
           e[x + 1] = run + (above ? e0[x + 1] : 0.0);
           if (ex)
           {
+            const double xc = x + 0.5;
+            runX += v * xc;
+            runXX += v * xc * xc;
+            runY += v * yc;
+            runYY += v * yc * yc;
             ex[x + 1] = runX + (above ? ex0[x + 1] : 0.0);
             exx[x + 1] = runXX + (above ? exx0[x + 1] : 0.0);
             ey[x + 1] = runY + (above ? ey0[x + 1] : 0.0);
             eyy[x + 1] = runYY + (above ? eyy0[x + 1] : 0.0);
           }
-          continue;
-        }
-        const double lum = Luminance(std::max(0.0, r), std::max(0.0, g), std::max(0.0, b));
-        const double v = lum * weight;
-        run += v;
-        e[x + 1] = run + (above ? e0[x + 1] : 0.0);
-        if (ex)
-        {
-          const double xc = x + 0.5;
-          runX += v * xc;
-          runXX += v * xc * xc;
-          runY += v * yc;
-          runYY += v * yc * yc;
-          ex[x + 1] = runX + (above ? ex0[x + 1] : 0.0);
-          exx[x + 1] = runXX + (above ? exx0[x + 1] : 0.0);
-          ey[x + 1] = runY + (above ? ey0[x + 1] : 0.0);
-          eyy[x + 1] = runYY + (above ? eyy0[x + 1] : 0.0);
         }
       }
-    }
-  });
+    });
   long long bad = 0;
   for (int y = 0; y < h; ++y)
   {
@@ -418,8 +422,9 @@ MedianCutStatus ComputeMedianCut(const float* pixels, int components, int width,
       if (badPerRow[y] > 0)
       {
         std::ostringstream os;
-        os << "the map has " << bad << " NaN or infinite pixel value(s); the first is at pixel (i="
-           << firstBadPerRow[y] << ", j=" << h - 1 - y << ") (VTK row order)";
+        os << "the map has " << bad
+           << " NaN or infinite pixel value(s); the first is at pixel (i=" << firstBadPerRow[y]
+           << ", j=" << h - 1 - y << ") (VTK row order)";
         error = os.str();
         break;
       }
@@ -441,9 +446,10 @@ MedianCutStatus ComputeMedianCut(const float* pixels, int components, int width,
     {
       const double* offset = table->Row(begin);
       // Each row gets the same offset row: any split gives the same sums.
-      ParallelFor(0, static_cast<std::size_t>(end - begin), 16, [&](std::size_t b, std::size_t e) {
-        table->AddOffsetRow(begin + 1 + static_cast<int>(b), begin + static_cast<int>(e), offset);
-      });
+      ParallelFor(0, static_cast<std::size_t>(end - begin), 16,
+        [&](std::size_t b, std::size_t e) {
+          table->AddOffsetRow(begin + 1 + static_cast<int>(b), begin + static_cast<int>(e), offset);
+        });
     }
   }
   const double total = cut.E.Sum(0, w, 0, h);
@@ -499,89 +505,93 @@ MedianCutStatus ComputeMedianCut(const float* pixels, int components, int width,
   // magnitude, so fixed bands of regions would leave a thread idle).
   std::vector<int> order(static_cast<size_t>(regionCount));
   std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(), [&](int a, int b) {
-    const long long areaA = static_cast<long long>(done[a].X1 - done[a].X0) * (done[a].Y1 - done[a].Y0);
-    const long long areaB = static_cast<long long>(done[b].X1 - done[b].X0) * (done[b].Y1 - done[b].Y0);
-    return areaA > areaB;
-  });
-  // One region per item, the largest first: each light is computed alone.
-  ParallelFor(0, static_cast<std::size_t>(regionCount), 1, [&](std::size_t s0, std::size_t s1) {
-    for (std::size_t slot = s0; slot < s1; ++slot)
+  std::sort(order.begin(), order.end(),
+    [&](int a, int b)
     {
-      const int k = order[slot];
-      const Region& r = done[k];
-      double rgb[3] = { 0.0, 0.0, 0.0 };
-      double m[3] = { 0.0, 0.0, 0.0 };
-      double energy = 0.0;
-      double solidAngle = 0.0;
-      for (int y = r.Y0; y < r.Y1; ++y)
+      const long long areaA =
+        static_cast<long long>(done[a].X1 - done[a].X0) * (done[a].Y1 - done[a].Y0);
+      const long long areaB =
+        static_cast<long long>(done[b].X1 - done[b].X0) * (done[b].Y1 - done[b].Y0);
+      return areaA > areaB;
+    });
+  // One region per item, the largest first: each light is computed alone.
+  ParallelFor(0, static_cast<std::size_t>(regionCount), 1,
+    [&](std::size_t s0, std::size_t s1)
+    {
+      for (std::size_t slot = s0; slot < s1; ++slot)
       {
-        const int j = h - 1 - y;
-        const float* p = pixels + (static_cast<size_t>(j) * w + r.X0) * components;
-        double sr = 0.0;
-        double sg = 0.0;
-        double sb = 0.0;
-        double sy = 0.0;
-        double syc = 0.0;
-        double sys = 0.0;
-        for (int x = r.X0; x < r.X1; ++x, p += components)
+        const int k = order[slot];
+        const Region& r = done[k];
+        double rgb[3] = { 0.0, 0.0, 0.0 };
+        double m[3] = { 0.0, 0.0, 0.0 };
+        double energy = 0.0;
+        double solidAngle = 0.0;
+        for (int y = r.Y0; y < r.Y1; ++y)
         {
-          const double cr = std::max(0.0, static_cast<double>(p[0]));
-          const double cg = std::max(0.0, static_cast<double>(p[1]));
-          const double cb = std::max(0.0, static_cast<double>(p[2]));
-          const double lum = Luminance(cr, cg, cb);
-          sr += cr;
-          sg += cg;
-          sb += cb;
-          sy += lum;
-          syc += lum * colC[x];
-          sys += lum * colS[x];
+          const int j = h - 1 - y;
+          const float* p = pixels + (static_cast<size_t>(j) * w + r.X0) * components;
+          double sr = 0.0;
+          double sg = 0.0;
+          double sb = 0.0;
+          double sy = 0.0;
+          double syc = 0.0;
+          double sys = 0.0;
+          for (int x = r.X0; x < r.X1; ++x, p += components)
+          {
+            const double cr = std::max(0.0, static_cast<double>(p[0]));
+            const double cg = std::max(0.0, static_cast<double>(p[1]));
+            const double cb = std::max(0.0, static_cast<double>(p[2]));
+            const double lum = Luminance(cr, cg, cb);
+            sr += cr;
+            sg += cg;
+            sb += cb;
+            sy += lum;
+            syc += lum * colC[x];
+            sys += lum * colS[x];
+          }
+          const double weight = rowWeight[y];
+          rgb[0] += sr * weight;
+          rgb[1] += sg * weight;
+          rgb[2] += sb * weight;
+          energy += sy * weight;
+          solidAngle += weight * (r.X1 - r.X0);
+          m[0] += rowS[y] * syc;
+          m[1] += rowS[y] * sys;
+          m[2] += rowZ[y] * sy;
         }
-        const double weight = rowWeight[y];
-        rgb[0] += sr * weight;
-        rgb[1] += sg * weight;
-        rgb[2] += sb * weight;
-        energy += sy * weight;
-        solidAngle += weight * (r.X1 - r.X0);
-        m[0] += rowS[y] * syc;
-        m[1] += rowS[y] * sys;
-        m[2] += rowZ[y] * sy;
-      }
-      MedianCutLight& light = lights[k];
-      const double len = std::sqrt(m[0] * m[0] + m[1] * m[1] + m[2] * m[2]);
-      if (len > 1e-9 * std::max(energy, 1e-300) && len > 0.0)
-      {
+        MedianCutLight& light = lights[k];
+        const double len = std::sqrt(m[0] * m[0] + m[1] * m[1] + m[2] * m[2]);
+        if (len > 1e-9 * std::max(energy, 1e-300) && len > 0.0)
+        {
+          for (int c = 0; c < 3; ++c)
+          {
+            light.Direction[c] = m[c] / len;
+          }
+        }
+        else
+        {
+          // No preferred direction (e.g. the whole uniform sphere): the region's centre.
+          DirectionFromMapUV(0.5 * (r.X0 + r.X1) / w, 0.5 * (r.Y0 + r.Y1) / h, light.Direction);
+        }
+        MapUVFromDirection(light.Direction, light.U, light.V);
         for (int c = 0; c < 3; ++c)
         {
-          light.Direction[c] = m[c] / len;
+          light.Rgb[c] = rgb[c];
         }
+        light.Energy = energy;
+        light.SolidAngle = options.SolidAngleWeighting ? (2.0 * Pi<double> * (r.X1 - r.X0) / w) *
+            (std::cos(Pi<double> * r.Y0 / h) - std::cos(Pi<double> * r.Y1 / h))
+                                                       : solidAngle;
+        light.Column0 = r.X0;
+        light.Column1 = r.X1;
+        light.Row0 = r.Y0;
+        light.Row1 = r.Y1;
+        light.U0 = static_cast<double>(r.X0) / w;
+        light.U1 = static_cast<double>(r.X1) / w;
+        light.V0 = static_cast<double>(r.Y0) / h;
+        light.V1 = static_cast<double>(r.Y1) / h;
       }
-      else
-      {
-        // No preferred direction (e.g. the whole uniform sphere): the region's centre.
-        DirectionFromMapUV(
-          0.5 * (r.X0 + r.X1) / w, 0.5 * (r.Y0 + r.Y1) / h, light.Direction);
-      }
-      MapUVFromDirection(light.Direction, light.U, light.V);
-      for (int c = 0; c < 3; ++c)
-      {
-        light.Rgb[c] = rgb[c];
-      }
-      light.Energy = energy;
-      light.SolidAngle = options.SolidAngleWeighting
-        ? (2.0 * Pi<double> * (r.X1 - r.X0) / w) *
-          (std::cos(Pi<double> * r.Y0 / h) - std::cos(Pi<double> * r.Y1 / h))
-        : solidAngle;
-      light.Column0 = r.X0;
-      light.Column1 = r.X1;
-      light.Row0 = r.Y0;
-      light.Row1 = r.Y1;
-      light.U0 = static_cast<double>(r.X0) / w;
-      light.U1 = static_cast<double>(r.X1) / w;
-      light.V0 = static_cast<double>(r.Y0) / h;
-      light.V1 = static_cast<double>(r.Y1) / h;
-    }
-  });
+    });
   std::stable_sort(lights.begin(), lights.end(),
     [](const MedianCutLight& a, const MedianCutLight& b) { return a.Energy > b.Energy; });
   if (!progress(1.0))

@@ -60,7 +60,6 @@ bool CellMayFall(const CellCorners& c, const double (*g)[2], int n)
   return zero && c.Twist() != 0.0;
 }
 
-
 CellPairBounds::CellPairBounds(const float* depth, int w, int h, bool relaxed)
   : Depth(depth)
   , W(w)
@@ -221,8 +220,8 @@ std::vector<float> TexelsFromCells(const std::vector<double>& cells, int w, int 
     for (int i = 0; i < w; ++i)
     {
       const std::size_t c = static_cast<std::size_t>(j) * cw + i;
-      out[static_cast<std::size_t>(j) * w + i] = TruncateToFloat(
-        std::min({ cells[c], cells[c + 1], cells[c + cw], cells[c + cw + 1] }));
+      out[static_cast<std::size_t>(j) * w + i] =
+        TruncateToFloat(std::min({ cells[c], cells[c + 1], cells[c + cw], cells[c + cw + 1] }));
     }
   }
   return out;
@@ -259,8 +258,7 @@ bool FallingAlong(const float* depth, int w, int h, int qi, int qj, double a, do
 
 // The first-order term alone for a direction infinitesimally off an axis: (0+, b) falls if
 // dy > 0, or dy == 0 and dx > 0 on that side.
-bool FallingJustOffAxis(const float* depth, int w, int h, int qi, int qj, bool alongX,
-  int sign)
+bool FallingJustOffAxis(const float* depth, int w, int h, int qi, int qj, bool alongX, int sign)
 {
   const double d00 = At(depth, w, h, qi, qj);
   for (int side : { -1, 1 })
@@ -302,11 +300,13 @@ bool IsFallingEdgeNear(const float* depth, int w, int h, int pi, int pj, int qi,
   }
   const int di = qi - pi;
   const int dj = qj - pj;
-  if (std::abs(di) <= 1 && dj != 0 && FallingJustOffAxis(depth, w, h, qi, qj, false, dj > 0 ? 1 : -1))
+  if (std::abs(di) <= 1 && dj != 0 &&
+    FallingJustOffAxis(depth, w, h, qi, qj, false, dj > 0 ? 1 : -1))
   {
     return true;
   }
-  if (std::abs(dj) <= 1 && di != 0 && FallingJustOffAxis(depth, w, h, qi, qj, true, di > 0 ? 1 : -1))
+  if (std::abs(dj) <= 1 && di != 0 &&
+    FallingJustOffAxis(depth, w, h, qi, qj, true, di > 0 ? 1 : -1))
   {
     return true;
   }

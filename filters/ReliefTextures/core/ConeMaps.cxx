@@ -76,7 +76,8 @@ struct NodeChild
   int J;
 };
 template <class BoundFunction>
-int ChildrenNearestFirst(int w, int h, int ti, int tj, BoundFunction bound, NodeChild (&children)[4])
+int ChildrenNearestFirst(
+  int w, int h, int ti, int tj, BoundFunction bound, NodeChild (&children)[4])
 {
   int n = 0;
   for (int cj = 2 * tj; cj <= 2 * tj + 1 && cj < h; ++cj)
@@ -159,8 +160,10 @@ private:
     }
     const TileLevel& C = this->Levels[level - 1];
     NodeChild children[4];
-    const int n = ChildrenNearestFirst(C.W, C.H, ti, tj,
-      [&](int ci, int cj, double&) { return this->Bound(level - 1, ci, cj, pi, pj, dp); }, children);
+    const int n = ChildrenNearestFirst(
+      C.W, C.H, ti, tj,
+      [&](int ci, int cj, double&) { return this->Bound(level - 1, ci, cj, pi, pj, dp); },
+      children);
     for (int k = 0; k < n; ++k)
     {
       if (children[k].B >= best)
@@ -216,8 +219,10 @@ bool ForEachRow(const ConeMapOptions& options, int rows, double begin, double sp
   {
     const int rowBegin = static_cast<int>(static_cast<long long>(rows) * c / chunks);
     const int rowEnd = static_cast<int>(static_cast<long long>(rows) * (c + 1) / chunks);
-    ParallelFor(static_cast<std::size_t>(rowBegin), static_cast<std::size_t>(rowEnd), 1,
-      [&](std::size_t first, std::size_t last) {
+    ParallelFor(
+      static_cast<std::size_t>(rowBegin), static_cast<std::size_t>(rowEnd), 1,
+      [&](std::size_t first, std::size_t last)
+      {
         for (std::size_t r = first; r < last; ++r)
         {
           row(static_cast<int>(r));
@@ -237,8 +242,8 @@ bool ForEachRow(const ConeMapOptions& options, int rows, double begin, double sp
 // cell-pair bound it minimises, and why it holds, are in ConeMapBounds.
 //
 // Octant s of directions: angles [45 s, 45 (s + 1)] degrees, spanned by kOctant[s], [s + 1].
-constexpr double kOctant[9][2] = { { 1, 0 }, { 1, 1 }, { 0, 1 }, { -1, 1 }, { -1, 0 },
-  { -1, -1 }, { 0, -1 }, { 1, -1 }, { 1, 0 } };
+constexpr double kOctant[9][2] = { { 1, 0 }, { 1, 1 }, { 0, 1 }, { -1, 1 }, { -1, 0 }, { -1, -1 },
+  { 0, -1 }, { 1, -1 }, { 1, 0 } };
 
 // Monotone pseudo-angle of a non-zero vector in [0, 8): octant s covers [s, s + 1] (the octant
 // boundaries, multiples of 45 degrees, map to integers).
@@ -381,7 +386,8 @@ public:
     }
     const int top = static_cast<int>(this->Levels.size()) - 1;
     const float* rootMin = this->Levels[top].Min.data();
-    const double lowest = this->Relaxed ? *std::min_element(rootMin, rootMin + 8) : rootMin[kAllCells];
+    const double lowest =
+      this->Relaxed ? *std::min_element(rootMin, rootMin + 8) : rootMin[kAllCells];
     if (lowest < st.DX &&
       (kNearRing + 1 - std::sqrt(2.0)) / this->W / (st.DX - lowest) < st.Best * (1.0 + 1e-9))
     {
@@ -492,7 +498,8 @@ private:
     }
     const Level& C = this->Levels[level - 1];
     NodeChild children[4];
-    const int n = ChildrenNearestFirst(C.W, C.H, ti, tj,
+    const int n = ChildrenNearestFirst(
+      C.W, C.H, ti, tj,
       [&](int ci, int cj, double& gap) { return this->NodeBound(level - 1, ci, cj, st, gap); },
       children);
     // A node small against its distance is not opened: its bound (its shallowest candidate
@@ -536,12 +543,14 @@ std::vector<float> ComputeCellBound(
   {
     return {};
   }
-  const bool done = ForEachRow(options, ch, 0.02, 0.97, [&](int xj) {
-    for (int xi = 0; xi < cw; ++xi)
+  const bool done = ForEachRow(options, ch, 0.02, 0.97,
+    [&](int xj)
     {
-      cells[static_cast<std::size_t>(xj) * cw + xi] = search.Run(xi, xj);
-    }
-  });
+      for (int xi = 0; xi < cw; ++xi)
+      {
+        cells[static_cast<std::size_t>(xj) * cw + xi] = search.Run(xi, xj);
+      }
+    });
   if (!done)
   {
     return {};
@@ -572,12 +581,14 @@ std::vector<float> ComputeFast(
   const ConeSearch search(depth, w, h, relaxed, static_cast<double>(options.MaxRatio));
   std::vector<float> ratio(static_cast<std::size_t>(w) * h);
   float* out = ratio.data();
-  const bool done = ForEachRow(options, h, 0.0, 0.99, [&](int j) {
-    for (int i = 0; i < w; ++i)
+  const bool done = ForEachRow(options, h, 0.0, 0.99,
+    [&](int j)
     {
-      out[static_cast<std::size_t>(j) * w + i] = search.Run(i, j);
-    }
-  });
+      for (int i = 0; i < w; ++i)
+      {
+        out[static_cast<std::size_t>(j) * w + i] = search.Run(i, j);
+      }
+    });
   if (!done)
   {
     return {};

@@ -17,8 +17,8 @@ void AddMinPyramidLevels(std::vector<MinPyramidLevel>& levels, int channels, Pyr
     const MinPyramidLevel& c = levels.back();
     MinPyramidLevel p{ up ? (c.W + 1) / 2 : std::max(1, c.W / 2),
       up ? (c.H + 1) / 2 : std::max(1, c.H / 2), c.Size * 2, {} };
-    p.Min.assign(static_cast<std::size_t>(p.W) * p.H * channels,
-      std::numeric_limits<float>::infinity());
+    p.Min.assign(
+      static_cast<std::size_t>(p.W) * p.H * channels, std::numeric_limits<float>::infinity());
     for (int j = 0; j < c.H; ++j)
     {
       const int pj = std::min(j / 2, p.H - 1);
@@ -65,7 +65,8 @@ std::vector<std::vector<float>> ComputeMinDepthPyramid(const float* depth, int w
     return out;
   }
   // Texel (i, j) with indices clamped into the image (the clamp-extension border).
-  auto at = [&](int i, int j) {
+  auto at = [&](int i, int j)
+  {
     i = std::min(std::max(i, 0), w - 1);
     j = std::min(std::max(j, 0), h - 1);
     return depth[static_cast<std::size_t>(j) * w + i];

@@ -40,7 +40,8 @@ MESOLIGHTRELIEFTEXTURES_EXPORT std::vector<std::vector<float>> ComputeMinDepthPy
 
 /// Size of pyramid level `level` for a w x h depth map: level 0 is (w + 1) x (h + 1), then
 /// halving rounded down (at least 1). Returns false if the level does not exist.
-MESOLIGHTRELIEFTEXTURES_EXPORT bool MinDepthPyramidLevelSize(int w, int h, int level, int& lw, int& lh);
+MESOLIGHTRELIEFTEXTURES_EXPORT bool MinDepthPyramidLevelSize(
+  int w, int h, int level, int& lw, int& lh);
 
 /// One level of a min pyramid: W x H nodes of Channels floats each (node-major), a node
 /// covering Size x Size base elements. Used inside Mesolight::Filters (not exported).
@@ -66,7 +67,8 @@ enum class PyramidHalving
  * node the channel-wise minimum of its children (+infinity where none), children visited in
  * row-major order.
  */
-void AddMinPyramidLevels(std::vector<MinPyramidLevel>& levels, int channels, PyramidHalving halving);
+void AddMinPyramidLevels(
+  std::vector<MinPyramidLevel>& levels, int channels, PyramidHalving halving);
 
 } // namespace mesolight
 

@@ -107,8 +107,8 @@ float SampleBricks(const HeightFieldParameters& p, float u, float v, std::uint8_
   const float h1 = UnitFromHash(id);
   const float h2 = UnitFromHash(HashInt(id));
   const float tone = 0.85f + 0.3f * (grain - 0.5f);
-  SetRGB(albedo, (0.52f + 0.22f * h1) * tone, (0.22f + 0.10f * h2) * tone,
-    (0.15f + 0.06f * h2) * tone);
+  SetRGB(
+    albedo, (0.52f + 0.22f * h1) * tone, (0.22f + 0.10f * h2) * tone, (0.15f + 0.06f * h2) * tone);
   return Clamp01(d);
 }
 
@@ -223,8 +223,7 @@ float FractalNoise(float u, float v, int baseFrequency, int octaves, std::uint32
   return norm > 0.f ? sum / norm : 0.f;
 }
 
-float SampleHeightField(
-  const HeightFieldParameters& params, float u, float v, std::uint8_t* albedo)
+float SampleHeightField(const HeightFieldParameters& params, float u, float v, std::uint8_t* albedo)
 {
   switch (params.Pattern)
   {
@@ -247,7 +246,8 @@ float SampleHeightField(
       const float fy = static_cast<float>(params.SineFrequency[1]);
       const float c = Checker(u, v);
       SetRGB(albedo, 0.8f * c, 0.8f * c, 0.8f * c);
-      return Clamp01(0.5f + 0.5f * std::sin(2.f * Pi<float> * fx * u) * std::cos(2.f * Pi<float> * fy * v));
+      return Clamp01(
+        0.5f + 0.5f * std::sin(2.f * Pi<float> * fx * u) * std::cos(2.f * Pi<float> * fy * v));
     }
   }
 }

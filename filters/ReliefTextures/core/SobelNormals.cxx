@@ -36,17 +36,18 @@ Neighbours GetNeighbours(int i, int n, BorderMode mode)
 
 inline float At(const float* depth, int w, int i, int j)
 {
-  return depth[static_cast<std::size_t>(j) * static_cast<std::size_t>(w) + static_cast<std::size_t>(i)];
+  return depth[static_cast<std::size_t>(j) * static_cast<std::size_t>(w) +
+    static_cast<std::size_t>(i)];
 }
 
 /// Sobel gradient at one texel (Méndez Fernández's thesis §3.2, eq. 2).
-inline void SobelAt(const float* depth, int w, const Neighbours& ni, const Neighbours& nj,
-  int i, int j, float& gi, float& gj)
+inline void SobelAt(const float* depth, int w, const Neighbours& ni, const Neighbours& nj, int i,
+  int j, float& gi, float& gj)
 {
   if (ni.Distance > 0)
   {
-    const float plus =
-      At(depth, w, ni.Plus, nj.Minus) + 2.f * At(depth, w, ni.Plus, j) + At(depth, w, ni.Plus, nj.Plus);
+    const float plus = At(depth, w, ni.Plus, nj.Minus) + 2.f * At(depth, w, ni.Plus, j) +
+      At(depth, w, ni.Plus, nj.Plus);
     const float minus = At(depth, w, ni.Minus, nj.Minus) + 2.f * At(depth, w, ni.Minus, j) +
       At(depth, w, ni.Minus, nj.Plus);
     gi = (plus - minus) / (4.f * static_cast<float>(ni.Distance));
@@ -57,8 +58,8 @@ inline void SobelAt(const float* depth, int w, const Neighbours& ni, const Neigh
   }
   if (nj.Distance > 0)
   {
-    const float plus =
-      At(depth, w, ni.Minus, nj.Plus) + 2.f * At(depth, w, i, nj.Plus) + At(depth, w, ni.Plus, nj.Plus);
+    const float plus = At(depth, w, ni.Minus, nj.Plus) + 2.f * At(depth, w, i, nj.Plus) +
+      At(depth, w, ni.Plus, nj.Plus);
     const float minus = At(depth, w, ni.Minus, nj.Minus) + 2.f * At(depth, w, i, nj.Minus) +
       At(depth, w, ni.Plus, nj.Minus);
     gj = (plus - minus) / (4.f * static_cast<float>(nj.Distance));
@@ -70,8 +71,8 @@ inline void SobelAt(const float* depth, int w, const Neighbours& ni, const Neigh
 }
 } // namespace
 
-void ComputeSobelGradientRows(const float* depth, int w, int h, BorderMode mode, int rowBegin,
-  int rowEnd, float* gradOut)
+void ComputeSobelGradientRows(
+  const float* depth, int w, int h, BorderMode mode, int rowBegin, int rowEnd, float* gradOut)
 {
   if (!depth || !gradOut || w <= 0 || h <= 0)
   {
@@ -108,8 +109,8 @@ void NormalFromGradient(float gi, float gj, int w, float depthScale, float n[3])
   n[2] = invLen;
 }
 
-void ComputeReliefTextureRows(const float* depth, int w, int h, float depthScale,
-  BorderMode mode, int rowBegin, int rowEnd, float* rgbaOut)
+void ComputeReliefTextureRows(const float* depth, int w, int h, float depthScale, BorderMode mode,
+  int rowBegin, int rowEnd, float* rgbaOut)
 {
   if (!depth || !rgbaOut || w <= 0 || h <= 0)
   {

@@ -32,7 +32,8 @@ enum class BorderMode
 /**
  * Per-texel Sobel gradient (eq. 2 of the thesis, normalised to "depth units per texel"):
  *
- *   gi = [ (d(ip,j-1) + 2 d(ip,j) + d(ip,j+1)) - (d(im,j-1) + 2 d(im,j) + d(im,j+1)) ] / (4 (ip - im))
+ *   gi = [ (d(ip,j-1) + 2 d(ip,j) + d(ip,j+1)) - (d(im,j-1) + 2 d(im,j) + d(im,j+1)) ] / (4 (ip -
+ * im))
  *
  * where ip/im are the column indices actually used (i+1 and i-1 in the interior, so the
  * divisor is 8). In Clamp mode the indices are clamped, and dividing by the real distance
@@ -47,8 +48,8 @@ MESOLIGHTRELIEFTEXTURES_EXPORT void ComputeSobelGradient(
 
 /// Same as ComputeSobelGradient() but only for rows [rowBegin, rowEnd) (thread-parallel use).
 /// gradOut still points to the whole 2*w*h output.
-MESOLIGHTRELIEFTEXTURES_EXPORT void ComputeSobelGradientRows(const float* depth, int w, int h,
-  BorderMode mode, int rowBegin, int rowEnd, float* gradOut);
+MESOLIGHTRELIEFTEXTURES_EXPORT void ComputeSobelGradientRows(
+  const float* depth, int w, int h, BorderMode mode, int rowBegin, int rowEnd, float* gradOut);
 
 /// Tangent-space unit normal from a Sobel gradient (gi, gj in depth per texel) of a
 /// w-texel-wide map: n = normalize(k w gi, k w gj, 1).

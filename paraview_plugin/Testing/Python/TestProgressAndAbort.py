@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Long Mesolight filters report progress to ParaView's progress handler (what drives the GUI's
 progress bar) and can be aborted: a cone map aborted from a progress observer stops early and
 leaves an empty output."""

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The relief plane split across MPI ranks renders as in one process (IceT compositing).
 
 Run once serially with --write-reference REF.png, then under `mpiexec -n 2 pvbatch` with

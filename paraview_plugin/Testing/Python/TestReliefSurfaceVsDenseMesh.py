@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The Relief Surface representation against a dense displaced mesh drawn by ParaView's own
 Surface representation (independent reference), with negative checks: plain texture mapping
 (method 0: normal mapping, no march) and the flat plane as a plain Surface must both fail."""

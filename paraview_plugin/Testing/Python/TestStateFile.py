@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """examples/relief-environment.pvsm loads in pvbatch (after LoadPlugin) and renders a relief
 surface lit by the median-cut lights of the default environment: the relief covers much of the
 view, and it is lit by the light set (no light kit in that state), so switching the light set

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The virtual light field in ParaView: Mesolight Cornell Box -> Mesolight Virtual Light Field
 (513 directions, 32 x 32 rays) through the plugin's proxies, checked against expectations that do
 not come from the light field:

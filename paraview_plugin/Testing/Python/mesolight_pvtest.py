@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Shared pieces of the Mesolight plugin tests (pvbatch / pvpython).
 
 The scene mirrors tests/TestReliefAgainstDenseMesh.cxx: a procedural brick relief on the unit

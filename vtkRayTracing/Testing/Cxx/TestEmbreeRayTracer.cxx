@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Tests of vtkEmbreeRayTracer on ordinary VTK scenes (no window needed): an analytic sphere
 // (vtkSphereSource) under a vtkLight is Lambertian at the centre pixel, the triangulated
 // sphere agrees, shadows, actor textures with nearest and bilinear lookups, material maps,
@@ -6,9 +7,8 @@
 
 #include "vtkActor.h"
 #include "vtkCallbackCommand.h"
-#include "vtkCellArray.h"
-#include "vtkPoints.h"
 #include "vtkCamera.h"
+#include "vtkCellArray.h"
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
 #include "vtkImageData.h"
@@ -16,6 +16,7 @@
 #include "vtkNew.h"
 #include "vtkPlaneSource.h"
 #include "vtkPointData.h"
+#include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
@@ -133,11 +134,14 @@ TEST(vtkEmbreeRayTracer, AnalyticSphereIsLambertianAtTheCentrePixel)
   const float lambert = 0.8f * std::sqrt(0.5f);
   EXPECT_NEAR(rgb[0], lambert, 1e-4f);
   EXPECT_NEAR(rgb[1], 0.5f * lambert, 1e-4f);
-  auto* bytes = vtkUnsignedCharArray::SafeDownCast(scene.Tracer->GetOutput()->GetPointData()->GetScalars());
+  auto* bytes =
+    vtkUnsignedCharArray::SafeDownCast(scene.Tracer->GetOutput()->GetPointData()->GetScalars());
   ASSERT_NE(bytes, nullptr);
-  EXPECT_EQ(bytes->GetValue(3 * (15 * 41 + 20)), static_cast<unsigned char>(lambert * 255.0f + 0.5f));
+  EXPECT_EQ(
+    bytes->GetValue(3 * (15 * 41 + 20)), static_cast<unsigned char>(lambert * 255.0f + 0.5f));
   // A corner pixel shows the renderer's background.
-  EXPECT_NEAR(scene.Radiance(0, 0)[0], static_cast<float>(scene.Renderer->GetBackground()[0]), 1e-6f);
+  EXPECT_NEAR(
+    scene.Radiance(0, 0)[0], static_cast<float>(scene.Renderer->GetBackground()[0]), 1e-6f);
 
   // The same sphere as triangles: close to the analytic value at the centre.
   scene.Tracer->AnalyticSpheresOff();
@@ -239,13 +243,15 @@ TEST(vtkEmbreeRayTracer, ProgressiveRefinementFiresEventsAndTracesEachPixelOnce)
   int events = 0;
   vtkNew<vtkCallbackCommand> callback;
   callback->SetClientData(&events);
-  callback->SetCallback([](vtkObject* caller, unsigned long, void* client, void*) {
-    auto* tracer = static_cast<vtkEmbreeRayTracer*>(caller);
-    ++*static_cast<int*>(client);
-    int dims[3];
-    tracer->GetPartialImage()->GetDimensions(dims);
-    EXPECT_EQ(dims[0], 41);
-  });
+  callback->SetCallback(
+    [](vtkObject* caller, unsigned long, void* client, void*)
+    {
+      auto* tracer = static_cast<vtkEmbreeRayTracer*>(caller);
+      ++*static_cast<int*>(client);
+      int dims[3];
+      tracer->GetPartialImage()->GetDimensions(dims);
+      EXPECT_EQ(dims[0], 41);
+    });
   scene.Tracer->AddObserver(vtkEmbreeRayTracer::RefinementEvent, callback);
   scene.Tracer->Update();
   EXPECT_EQ(events, 7); // blocks of 64, 32, 16, 8, 4, 2, 1
@@ -275,7 +281,8 @@ TEST(vtkEmbreeRayTracer, BadInputGivesErrorsNotCrashes)
     plane->SetTexture(missing);
     scene.Tracer->SetMaterialMap(plane, 42, TwoByTwoImage()); // no such channel
     EXPECT_EQ(scene.Messages->Errors, 1);
-    scene.Tracer->SetMaterialMap(plane, vtkEmbreeRayTracer::BUMP_MAP, vtkNew<vtkImageData>()); // empty map
+    scene.Tracer->SetMaterialMap(
+      plane, vtkEmbreeRayTracer::BUMP_MAP, vtkNew<vtkImageData>()); // empty map
     scene.Tracer->Update();
     EXPECT_EQ(scene.Messages->Errors, 1) << scene.Messages->Last;
     EXPECT_GE(scene.Messages->Warnings, 2); // missing texture image, empty bump map

@@ -1,11 +1,12 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Tests of the reference path tracer against analytic answers: the furnace (a closed box with
 // uniform emission Le and albedo rho has radiance Le / (1 - rho) everywhere), a diffuse plane
 // under a uniform and a cosine sky, a mirror, agreement of next-event estimation with plain
 // BSDF sampling; negative tests (double-counted direct light, a missing 1/pi, a missing cosine
 // must fail the same checks); determinism; bad input.
 #include "EmbreeScene.h"
-#include "MathConstants.h"
 #include "EnvironmentMaps.h"
+#include "MathConstants.h"
 #include "PathTracer.h"
 #include "TriangleScene.h"
 
@@ -29,14 +30,13 @@ using mesolight::SceneMaterial;
 using mesolight::SceneRay;
 using mesolight::TriangleScene;
 
-
 // The cube [-1,1]^3 with every face pointing inward, all of one material.
 TriangleScene MakeClosedBox(const SceneMaterial& material)
 {
   TriangleScene scene;
   const auto id = scene.AddMaterial(material);
-  const glm::vec3 c[8] = { { -1, -1, -1 }, { 1, -1, -1 }, { 1, 1, -1 }, { -1, 1, -1 }, { -1, -1, 1 },
-    { 1, -1, 1 }, { 1, 1, 1 }, { -1, 1, 1 } };
+  const glm::vec3 c[8] = { { -1, -1, -1 }, { 1, -1, -1 }, { 1, 1, -1 }, { -1, 1, -1 },
+    { -1, -1, 1 }, { 1, -1, 1 }, { 1, 1, 1 }, { -1, 1, 1 } };
   // Counter-clockwise seen from inside.
   scene.AddPolygon({ c[0], c[1], c[2], c[3] }, id); // z = -1, normal +z
   scene.AddPolygon({ c[4], c[7], c[6], c[5] }, id); // z = +1, normal -z
@@ -92,16 +92,19 @@ TEST_P(Furnace, RadianceIsEmissionOverOneMinusAlbedo)
     EXPECT_NEAR(seen[c], expected, 0.015f * expected) << "channel " << c;
   }
   // Radiance leaving a wall point (what the light field compares with).
-  const glm::vec3 leaving = tracer.DiffuseRadianceLeaving(0, glm::vec3(0.3f, -0.4f, -1.0f), 20000, 2);
+  const glm::vec3 leaving =
+    tracer.DiffuseRadianceLeaving(0, glm::vec3(0.3f, -0.4f, -1.0f), 20000, 2);
   EXPECT_NEAR(leaving.x, expected, 0.015f * expected);
 }
 
 INSTANTIATE_TEST_SUITE_P(PathTracer, Furnace,
   ::testing::Values(FurnaceCase{ 0.5f, LightSampling::MultipleImportance },
-    FurnaceCase{ 0.8f, LightSampling::MultipleImportance }, FurnaceCase{ 0.5f, LightSampling::BsdfOnly }),
-  [](const ::testing::TestParamInfo<FurnaceCase>& param) {
-    return std::string(param.param.Sampling == LightSampling::BsdfOnly ? "Bsdf" : "Mis") + "Albedo" +
-      std::to_string(static_cast<int>(param.param.Albedo * 100.0f + 0.5f));
+    FurnaceCase{ 0.8f, LightSampling::MultipleImportance },
+    FurnaceCase{ 0.5f, LightSampling::BsdfOnly }),
+  [](const ::testing::TestParamInfo<FurnaceCase>& param)
+  {
+    return std::string(param.param.Sampling == LightSampling::BsdfOnly ? "Bsdf" : "Mis") +
+      "Albedo" + std::to_string(static_cast<int>(param.param.Albedo * 100.0f + 0.5f));
   });
 
 TEST(PathTracerNegative, DoubleCountedDirectLightFailsTheFurnace)
@@ -220,7 +223,8 @@ TEST(PathTracerEnvironment, RotatedEnvironmentFollowsWorldToMap)
   PathTracer tracer(embree);
   EnvironmentLight sky;
   sky.Map = CosineSky(128);
-  sky.WorldToMap = glm::mat3(glm::vec3(1, 0, 0), glm::vec3(0, 0, 1), glm::vec3(0, -1, 0)); // columns
+  sky.WorldToMap =
+    glm::mat3(glm::vec3(1, 0, 0), glm::vec3(0, 0, 1), glm::vec3(0, -1, 0)); // columns
   tracer.SetEnvironment(sky);
   const glm::vec3 leaving = tracer.DiffuseRadianceLeaving(0, glm::vec3(0.0f), 20000, 4);
   EXPECT_NEAR(leaving.x, 2.0f * albedo / 3.0f, 0.015f);
@@ -283,7 +287,8 @@ TEST(PathTracer, NextEventEstimationAgreesWithBsdfSampling)
 
 // Irradiance at p (normal n) from a uniformly emitting convex polygon of radiance 1 that is
 // entirely above p's horizon and unoccluded: Lambert's formula, E = 1/2 sum theta_i n.Gamma_i.
-float PolygonIrradiance(const std::vector<glm::vec3>& polygon, const glm::vec3& p, const glm::vec3& n)
+float PolygonIrradiance(
+  const std::vector<glm::vec3>& polygon, const glm::vec3& p, const glm::vec3& n)
 {
   float sum = 0.0f;
   for (std::size_t i = 0; i < polygon.size(); ++i)
@@ -317,7 +322,8 @@ TEST(PathTracer, DirectLightFromAnEmitterMatchesLambertsFormula)
   ASSERT_LT(scene.FaceNormal(2).z, 0.0f);
   const EmbreeScene embree(scene);
   const glm::vec3 p(0.3f, -0.2f, 0.0f);
-  const float expected = 0.5f / mesolight::Pi<float> * 10.0f * PolygonIrradiance(quad, p, glm::vec3(0, 0, 1));
+  const float expected =
+    0.5f / mesolight::Pi<float> * 10.0f * PolygonIrradiance(quad, p, glm::vec3(0, 0, 1));
   for (LightSampling sampling : { LightSampling::MultipleImportance, LightSampling::BsdfOnly })
   {
     PathTracerSettings settings;
@@ -371,7 +377,8 @@ TEST(PathTracer, CornellBoxFloorCentreIsLitByDirectAndIndirectLight)
   // bound; the interreflections of the box add a fraction of it.
   const std::vector<glm::vec3> light = { { 343.0f, 548.7f, 227.0f }, { 343.0f, 548.7f, 332.0f },
     { 213.0f, 548.7f, 332.0f }, { 213.0f, 548.7f, 227.0f } };
-  const float direct = 0.725f / mesolight::Pi<float> * 17.0f * PolygonIrradiance(light, p, glm::vec3(0, 1, 0));
+  const float direct =
+    0.725f / mesolight::Pi<float> * 17.0f * PolygonIrradiance(light, p, glm::vec3(0, 1, 0));
   const glm::vec3 centre = tracer.DiffuseRadianceLeaving(floor, p, 4000, 1);
   EXPECT_GT(centre.x, direct);
   EXPECT_LT(centre.x, 2.0f * direct);
@@ -415,10 +422,11 @@ TEST(PathTracer, BadInputIsRejected)
   mesolight::PinholeCamera degenerate;
   degenerate.FocalPoint = degenerate.Position;
   EXPECT_EQ(tracer.RenderImage(degenerate, 8, 8, 1).Width, 0);
-  EXPECT_EQ(tracer.RenderImage(mesolight::PinholeCamera{ mesolight::CornellCamera{} }, 0, 8, 1).Width, 0);
+  EXPECT_EQ(
+    tracer.RenderImage(mesolight::PinholeCamera{ mesolight::CornellCamera{} }, 0, 8, 1).Width, 0);
   // Abort from the progress callback: no image.
-  const auto aborted = tracer.RenderImage(
-    mesolight::PinholeCamera{ mesolight::CornellCamera{} }, 64, 64, 1, 0, [](double) { return false; });
+  const auto aborted = tracer.RenderImage(mesolight::PinholeCamera{ mesolight::CornellCamera{} },
+    64, 64, 1, 0, [](double) { return false; });
   EXPECT_EQ(aborted.Width, 0);
 }
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Tests of the Ahern 1999 ray tracer core against analytic answers: Lambert shading of a sphere
 // under one directional light, shadows, mirrors and the recursion limit, glossy reflection of an
 // edge, bilinear vs nearest texture lookups, bump maps with a known slope, tangent frames on a
@@ -51,17 +52,20 @@ void AddSquare(TexturedScene& scene, float r, float h, std::uint32_t material)
   auto& mesh = scene.Mesh;
   const auto first = static_cast<std::uint32_t>(mesh.Positions.size());
   const bool withTCoords = mesh.Positions.empty() || !mesh.TextureCoordinates.empty();
-  mesh.Positions.insert(mesh.Positions.end(), { { -r, -r, h }, { r, -r, h }, { r, r, h }, { -r, r, h } });
+  mesh.Positions.insert(
+    mesh.Positions.end(), { { -r, -r, h }, { r, -r, h }, { r, r, h }, { -r, r, h } });
   if (withTCoords)
   {
-    mesh.TextureCoordinates.insert(mesh.TextureCoordinates.end(), { { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 } });
+    mesh.TextureCoordinates.insert(
+      mesh.TextureCoordinates.end(), { { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 } });
   }
   mesh.Triangles.emplace_back(first, first + 1, first + 2);
   mesh.Triangles.emplace_back(first, first + 2, first + 3);
   mesh.MaterialIds.insert(mesh.MaterialIds.end(), { material, material });
 }
 
-glm::vec3 TraceOne(const TexturedRayTracer& tracer, const glm::vec3& origin, const glm::vec3& direction)
+glm::vec3 TraceOne(
+  const TexturedRayTracer& tracer, const glm::vec3& origin, const glm::vec3& direction)
 {
   RandomSequence rng(1);
   RayCounts counts;
@@ -74,8 +78,9 @@ glm::vec3 TraceOne(const TexturedRayTracer& tracer, const glm::vec3& origin, con
 TEST(EmbreeSpheres, AnalyticHitsInSingleRaysAndPackets)
 {
   mesolight::TriangleScene none;
-  const mesolight::EmbreeScene embree(none, { mesolight::SceneSphere{ glm::vec3(1.0f, 2.0f, 3.0f), 0.5f },
-                                              mesolight::SceneSphere{ glm::vec3(0.0f), -1.0f } });
+  const mesolight::EmbreeScene embree(none,
+    { mesolight::SceneSphere{ glm::vec3(1.0f, 2.0f, 3.0f), 0.5f },
+      mesolight::SceneSphere{ glm::vec3(0.0f), -1.0f } });
   SceneRay rays[16];
   mesolight::SceneHit packet[16];
   for (int i = 0; i < 16; ++i)
@@ -116,7 +121,8 @@ TEST(TexturedRayTracer, SphereUnderADirectionalLightIsLambertian)
   const glm::vec3 travel = glm::normalize(glm::vec3(-1.0f, 0.0f, -1.0f));
   scene.Lights.push_back(Sun(travel, glm::vec3(0.9f)));
   const TexturedRayTracer tracer(scene);
-  for (const glm::vec2 xy : { glm::vec2(0.0f, 0.0f), glm::vec2(0.5f, 0.2f), glm::vec2(-0.3f, 0.6f), glm::vec2(-0.8f, 0.1f) })
+  for (const glm::vec2 xy : { glm::vec2(0.0f, 0.0f), glm::vec2(0.5f, 0.2f), glm::vec2(-0.3f, 0.6f),
+         glm::vec2(-0.8f, 0.1f) })
   {
     const float z = std::sqrt(1.0f - glm::dot(xy, xy));
     const glm::vec3 n(xy.x, xy.y, z);
@@ -139,7 +145,8 @@ TEST(TexturedRayTracer, SphereUnderADirectionalLightIsLambertian)
     const float b = glm::dot(ray.Origin, ray.Direction);
     const float t = -b - std::sqrt(b * b - glm::dot(ray.Origin, ray.Origin) + 1.0f);
     const glm::vec3 n = glm::normalize(ray.Origin + t * ray.Direction);
-    EXPECT_NEAR(image.Pixel(pixel.x, pixel.y)[0], 0.9f * 0.8f * std::max(0.0f, glm::dot(n, -travel)), 1e-4f);
+    EXPECT_NEAR(
+      image.Pixel(pixel.x, pixel.y)[0], 0.9f * 0.8f * std::max(0.0f, glm::dot(n, -travel)), 1e-4f);
   }
   EXPECT_EQ(tracer.LastCounts().Primary, 41u * 31u);
 }
@@ -160,7 +167,8 @@ TEST(TexturedRayTracer, ShadowsAreCastAndCanBeSwitchedOff)
   RayTracerSettings noShadows;
   noShadows.Shadows = false;
   const TexturedRayTracer unshadowed(scene, noShadows);
-  EXPECT_NEAR(TraceOne(unshadowed, glm::vec3(0.5f, 0.0f, 0.5f), glm::vec3(0.1f, 0, -1)).x, 0.6f, 1e-5f);
+  EXPECT_NEAR(
+    TraceOne(unshadowed, glm::vec3(0.5f, 0.0f, 0.5f), glm::vec3(0.1f, 0, -1)).x, 0.6f, 1e-5f);
 }
 
 TEST(TexturedRayTracer, MirrorReflectsAKnownColourUpToTheDepthLimit)
@@ -169,7 +177,8 @@ TEST(TexturedRayTracer, MirrorReflectsAKnownColourUpToTheDepthLimit)
   TexturedMaterial mirror = Matte(glm::vec3(0.0f));
   mirror.Specular = glm::vec3(0.9f);
   scene.Materials.push_back(mirror);
-  scene.Materials.push_back(Matte(glm::vec3(0.0f), glm::vec3(0.2f, 0.4f, 0.6f))); // unlit: ambient only
+  scene.Materials.push_back(
+    Matte(glm::vec3(0.0f), glm::vec3(0.2f, 0.4f, 0.6f))); // unlit: ambient only
   AddSquare(scene, 10.0f, 0.0f, 0);
   TexturedSphere ball;
   ball.Geometry.Center = glm::vec3(2.0f, 0.0f, 2.0f);
@@ -182,12 +191,14 @@ TEST(TexturedRayTracer, MirrorReflectsAKnownColourUpToTheDepthLimit)
   EXPECT_NEAR(seen.x, 0.9f * 0.2f, 1e-5f);
   EXPECT_NEAR(seen.z, 0.9f * 0.6f, 1e-5f);
   // Aimed past the ball: the background.
-  EXPECT_NEAR(TraceOne(tracer, glm::vec3(-2.0f, 0.0f, 2.0f), glm::vec3(1, 3, -1)).y, 0.9f * 0.05f, 1e-5f);
+  EXPECT_NEAR(
+    TraceOne(tracer, glm::vec3(-2.0f, 0.0f, 2.0f), glm::vec3(1, 3, -1)).y, 0.9f * 0.05f, 1e-5f);
   // Negative: no recursion, no reflection.
   RayTracerSettings flat;
   flat.MaxDepth = 0;
   const TexturedRayTracer noReflections(scene, flat);
-  EXPECT_NEAR(TraceOne(noReflections, glm::vec3(-2.0f, 0.0f, 2.0f), glm::vec3(1, 0, -1)).x, 0.0f, 1e-6f);
+  EXPECT_NEAR(
+    TraceOne(noReflections, glm::vec3(-2.0f, 0.0f, 2.0f), glm::vec3(1, 0, -1)).x, 0.0f, 1e-6f);
 }
 
 TEST(TexturedRayTracer, RoughnessBlursAReflectedEdge)
@@ -195,7 +206,8 @@ TEST(TexturedRayTracer, RoughnessBlursAReflectedEdge)
   // A mirror floor and, above it, an ambient-white ceiling over x > 0 only (black elsewhere).
   // The mirror point whose reflection looks exactly at the ceiling's edge is 0 or 1 for a
   // perfect mirror; rough, the conical distribution straddles the edge: about one half.
-  auto makeScene = [](float roughness) {
+  auto makeScene = [](float roughness)
+  {
     TexturedScene scene;
     TexturedMaterial mirror = Matte(glm::vec3(0.0f));
     mirror.Specular = glm::vec3(1.0f);
@@ -205,7 +217,8 @@ TEST(TexturedRayTracer, RoughnessBlursAReflectedEdge)
     AddSquare(scene, 10.0f, 0.0f, 0);
     auto& mesh = scene.Mesh;
     const auto first = static_cast<std::uint32_t>(mesh.Positions.size());
-    mesh.Positions.insert(mesh.Positions.end(), { { 0, -10, 2 }, { 10, -10, 2 }, { 10, 10, 2 }, { 0, 10, 2 } });
+    mesh.Positions.insert(
+      mesh.Positions.end(), { { 0, -10, 2 }, { 10, -10, 2 }, { 10, 10, 2 }, { 0, 10, 2 } });
     mesh.TextureCoordinates.insert(mesh.TextureCoordinates.end(), 4, glm::vec2(0.0f));
     mesh.Triangles.emplace_back(first, first + 2, first + 1);
     mesh.Triangles.emplace_back(first, first + 3, first + 2);
@@ -297,11 +310,12 @@ TEST(TexturedRayTracer, BumpMapWithAKnownSlopeTiltsTheNormal)
   AddSquare(scene, 1.0f, 0.0f, 0);
   scene.Lights.push_back(Sun(glm::vec3(0, 0, -1)));
   const TexturedRayTracer tracer(scene);
-  EXPECT_NEAR(TraceOne(tracer, glm::vec3(0.2f, 0.1f, 1), glm::vec3(0, 0, -1)).x, 1.0f / std::sqrt(1.25f), 1e-5f);
+  EXPECT_NEAR(TraceOne(tracer, glm::vec3(0.2f, 0.1f, 1), glm::vec3(0, 0, -1)).x,
+    1.0f / std::sqrt(1.25f), 1e-5f);
   // A light from the side the normal tilts toward sees it brighter than one from the other side.
   TexturedScene left = scene, right = scene;
-  left.Lights = { Sun(glm::normalize(glm::vec3(-1, 0, -1))) };  // light arriving from +x
-  right.Lights = { Sun(glm::normalize(glm::vec3(1, 0, -1))) };  // from -x
+  left.Lights = { Sun(glm::normalize(glm::vec3(-1, 0, -1))) }; // light arriving from +x
+  right.Lights = { Sun(glm::normalize(glm::vec3(1, 0, -1))) }; // from -x
   const glm::vec3 n = glm::normalize(glm::vec3(0.5f, 0.0f, 1.0f));
   EXPECT_NEAR(TraceOne(TexturedRayTracer(left), glm::vec3(0, 0, 1), glm::vec3(0, 0, -1)).x,
     glm::dot(n, glm::normalize(glm::vec3(1, 0, 1))), 1e-5f);
@@ -334,15 +348,18 @@ TEST(TextureMaps, SphereTangentFrameIsStableAndFollowsTheCoordinates)
     {
       const float theta = mesolight::Pi<float> * a / 60.0f;
       const float phi = 2.0f * mesolight::Pi<float> * b / 120.0f + 0.001f;
-      const glm::vec3 n(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta));
+      const glm::vec3 n(
+        std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta));
       const auto frame = mesolight::SphereTangentFrame(n, axis, meridian);
       ASSERT_NEAR(glm::length(frame.Tangent), 1.0f, 1e-4f);
       ASSERT_NEAR(glm::dot(frame.Tangent, n), 0.0f, 1e-4f);
       ASSERT_NEAR(glm::dot(frame.Bitangent, n), 0.0f, 1e-4f);
       // Moving along T increases s, along B increases t (as the texture coordinates say).
       const glm::vec2 st = mesolight::SphereTextureCoordinates(n, axis, meridian);
-      const glm::vec2 alongT = mesolight::SphereTextureCoordinates(glm::normalize(n + h * frame.Tangent), axis, meridian);
-      const glm::vec2 alongB = mesolight::SphereTextureCoordinates(glm::normalize(n + h * frame.Bitangent), axis, meridian);
+      const glm::vec2 alongT =
+        mesolight::SphereTextureCoordinates(glm::normalize(n + h * frame.Tangent), axis, meridian);
+      const glm::vec2 alongB = mesolight::SphereTextureCoordinates(
+        glm::normalize(n + h * frame.Bitangent), axis, meridian);
       if (st.x > 0.01f && st.x < 0.99f)
       {
         EXPECT_GT(alongT.x, st.x);
@@ -351,7 +368,9 @@ TEST(TextureMaps, SphereTangentFrameIsStableAndFollowsTheCoordinates)
       EXPECT_GT(alongB.y, st.y);
       // Continuity: a neighbouring point's tangent is close.
       const glm::vec3 next = glm::normalize(n + 0.01f * frame.Bitangent);
-      EXPECT_GT(glm::dot(mesolight::SphereTangentFrame(next, axis, meridian).Tangent, frame.Tangent), 0.99f);
+      EXPECT_GT(
+        glm::dot(mesolight::SphereTangentFrame(next, axis, meridian).Tangent, frame.Tangent),
+        0.99f);
       ++checked;
     }
   }
@@ -360,13 +379,18 @@ TEST(TextureMaps, SphereTangentFrameIsStableAndFollowsTheCoordinates)
   // sphere frame (and the normal-only fallback) stays orthonormal.
   const glm::vec3 onXAxis(1.0f, 0.0f, 0.0f);
   EXPECT_LT(glm::length(glm::cross(glm::vec3(1, 0, 0), onXAxis)), 1e-6f);
-  EXPECT_NEAR(glm::length(mesolight::SphereTangentFrame(onXAxis, axis, meridian).Tangent), 1.0f, 1e-5f);
+  EXPECT_NEAR(
+    glm::length(mesolight::SphereTangentFrame(onXAxis, axis, meridian).Tangent), 1.0f, 1e-5f);
   EXPECT_NEAR(glm::length(mesolight::FrameAroundNormal(onXAxis).Tangent), 1.0f, 1e-5f);
   // Sphere coordinates: the meridian is s = 0, the axis pole t = 0, east s = 1/4.
-  EXPECT_NEAR(mesolight::SphereTextureCoordinates(glm::vec3(1, 0, 0), axis, meridian).x, 0.0f, 1e-6f);
-  EXPECT_NEAR(mesolight::SphereTextureCoordinates(glm::vec3(0, 1, 0), axis, meridian).x, 0.25f, 1e-6f);
-  EXPECT_NEAR(mesolight::SphereTextureCoordinates(glm::vec3(0, 0, 1), axis, meridian).y, 0.0f, 1e-6f);
-  EXPECT_NEAR(mesolight::SphereTextureCoordinates(glm::vec3(0, 0, -1), axis, meridian).y, 1.0f, 1e-6f);
+  EXPECT_NEAR(
+    mesolight::SphereTextureCoordinates(glm::vec3(1, 0, 0), axis, meridian).x, 0.0f, 1e-6f);
+  EXPECT_NEAR(
+    mesolight::SphereTextureCoordinates(glm::vec3(0, 1, 0), axis, meridian).x, 0.25f, 1e-6f);
+  EXPECT_NEAR(
+    mesolight::SphereTextureCoordinates(glm::vec3(0, 0, 1), axis, meridian).y, 0.0f, 1e-6f);
+  EXPECT_NEAR(
+    mesolight::SphereTextureCoordinates(glm::vec3(0, 0, -1), axis, meridian).y, 1.0f, 1e-6f);
 }
 
 // A lit sphere in front of a dark background: a scene with hard edges.
@@ -439,16 +463,18 @@ TEST(TexturedRayTracer, ProgressiveRefinementTracesEveryPixelOnce)
   const TexturedRayTracer plain(EdgeScene());
   std::vector<int> levels;
   std::uint64_t raysAtLevel2 = 0;
-  const RgbImage image = progressive.Render(FrontCamera(), 37, 23, [&](const RgbImage& partial, int block) {
-    levels.push_back(block);
-    if (block == 2)
+  const RgbImage image = progressive.Render(FrontCamera(), 37, 23,
+    [&](const RgbImage& partial, int block)
     {
-      // Every pixel of a 2 x 2 block shows the colour of its corner pixel.
-      EXPECT_EQ(partial.Pixel(3, 5)[0], partial.Pixel(2, 4)[0]);
-      raysAtLevel2 = 1;
-    }
-    return true;
-  });
+      levels.push_back(block);
+      if (block == 2)
+      {
+        // Every pixel of a 2 x 2 block shows the colour of its corner pixel.
+        EXPECT_EQ(partial.Pixel(3, 5)[0], partial.Pixel(2, 4)[0]);
+        raysAtLevel2 = 1;
+      }
+      return true;
+    });
   EXPECT_EQ(levels, (std::vector<int>{ 64, 32, 16, 8, 4, 2, 1 }));
   EXPECT_EQ(raysAtLevel2, 1u);
   EXPECT_EQ(progressive.LastCounts().Primary, 37u * 23u) << "no pixel traced twice";
@@ -456,7 +482,8 @@ TEST(TexturedRayTracer, ProgressiveRefinementTracesEveryPixelOnce)
   const RgbImage reference = plain.Render(FrontCamera(), 37, 23);
   EXPECT_EQ(image.Rgb, reference.Rgb);
   // Stopping from the callback returns no image.
-  const RgbImage stopped = progressive.Render(FrontCamera(), 37, 23, [](const RgbImage&, int block) { return block > 8; });
+  const RgbImage stopped =
+    progressive.Render(FrontCamera(), 37, 23, [](const RgbImage&, int block) { return block > 8; });
   EXPECT_EQ(stopped.Width, 0);
   EXPECT_LT(progressive.LastCounts().Primary, 37u * 23u);
 }

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Tests of the shared triangle scene and its Embree queries: the Cornell box against its
 // published data, scene checks on bad input, and Embree hits against analytic ray/plane
 // intersections (single rays and 16-ray packets agree).
@@ -125,7 +126,8 @@ TEST(EmbreeScene, HitsMatchAnalyticPlaneAndPacketsMatchSingleRays)
     const auto single = embree.Intersect(rays[i]);
     const glm::vec3 onPlane = rays[i].Origin + 2.0f * rays[i].Direction;
     const bool inside = std::abs(onPlane.x) < 1.0f && std::abs(onPlane.y) < 1.0f;
-    if (std::abs(std::abs(onPlane.x) - 1.0f) < 1e-4f || std::abs(std::abs(onPlane.y) - 1.0f) < 1e-4f)
+    if (std::abs(std::abs(onPlane.x) - 1.0f) < 1e-4f ||
+      std::abs(std::abs(onPlane.y) - 1.0f) < 1e-4f)
     {
       continue; // on the edge: either answer is right
     }

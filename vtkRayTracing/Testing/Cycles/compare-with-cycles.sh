@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: BSD-3-Clause
 # Compares mesolight's path-traced Cornell box with Blender Cycles: mean radiance per wall
 # region within a tolerance. Exits 77 (ctest SKIP_RETURN_CODE) when blender is not installed.
 #   compare-with-cycles.sh MESOLIGHT WORKDIR [SIZE] [SAMPLES] [TOLERANCE]

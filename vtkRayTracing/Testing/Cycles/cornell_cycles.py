@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # Renders Mesolight's Cornell box (an OBJ + MTL written by `mesolight trace --scene cornell
 # --export-obj`) with Blender Cycles, headless, to a linear float EXR of the same view as
 # mesolight's CornellCamera:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Unit tests for vtkReliefProperty: the one method-name table, and one property shared by
 // several mappers (no GPU needed).
 
@@ -84,8 +85,8 @@ TEST(ReliefProperty, RequiredConeMaps)
     vtkReliefProperty::RelaxedConeMap);
   EXPECT_EQ(vtkReliefProperty::GetRequiredConeMap(vtkReliefProperty::ConservativeCone),
     vtkReliefProperty::ConservativeConeMap);
-  EXPECT_EQ(vtkReliefProperty::GetRequiredConeMap(vtkReliefProperty::Relief),
-    vtkReliefProperty::NoConeMap);
+  EXPECT_EQ(
+    vtkReliefProperty::GetRequiredConeMap(vtkReliefProperty::Relief), vtkReliefProperty::NoConeMap);
   EXPECT_EQ(vtkReliefProperty::GetRequiredConeMap(vtkReliefProperty::MaximumMipmap),
     vtkReliefProperty::NoConeMap);
 }

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Tests of the light field's direction set (Wither 2005 §2.4.1.1): counts, constant-time nearest
 // direction against brute force, interpolation weights, solid angles against Monte Carlo and
 // analytic integrals. Prints the solid-angle spread and lookup timings (docs/vlf.md).
@@ -173,46 +174,50 @@ TEST_P(DirectionSetSizes, NearestAgreesWithBruteForce)
   std::vector<char> signOk(count);
   const auto start = std::chrono::steady_clock::now();
   std::vector<float> bruteForce(count, 0.0f); // max over k of |dot(u, d_k)|
-  ParallelFor(count / Block, [&](std::size_t beginBlock, std::size_t endBlock) {
-    // Blocks of samples against every direction: the inner loop over samples vectorizes.
-    for (std::size_t block = beginBlock; block < endBlock; ++block)
+  ParallelFor(count / Block,
+    [&](std::size_t beginBlock, std::size_t endBlock)
     {
-      float ux[Block], uy[Block], uz[Block], best[Block];
-      for (std::size_t b = 0; b < Block; ++b)
+      // Blocks of samples against every direction: the inner loop over samples vectorizes.
+      for (std::size_t block = beginBlock; block < endBlock; ++block)
       {
-        const glm::vec3& u = samples[block * Block + b];
-        ux[b] = u.x;
-        uy[b] = u.y;
-        uz[b] = u.z;
-        best[b] = 0.0f;
-      }
-      for (std::size_t k = 0; k < xs.size(); ++k)
-      {
+        float ux[Block], uy[Block], uz[Block], best[Block];
         for (std::size_t b = 0; b < Block; ++b)
         {
-          const float d = std::abs(xs[k] * ux[b] + ys[k] * uy[b] + zs[k] * uz[b]);
-          best[b] = d > best[b] ? d : best[b];
+          const glm::vec3& u = samples[block * Block + b];
+          ux[b] = u.x;
+          uy[b] = u.y;
+          uz[b] = u.z;
+          best[b] = 0.0f;
         }
+        for (std::size_t k = 0; k < xs.size(); ++k)
+        {
+          for (std::size_t b = 0; b < Block; ++b)
+          {
+            const float d = std::abs(xs[k] * ux[b] + ys[k] * uy[b] + zs[k] * uz[b]);
+            best[b] = d > best[b] ? d : best[b];
+          }
+        }
+        std::copy(best, best + Block, bruteForce.begin() + block * Block);
       }
-      std::copy(best, best + Block, bruteForce.begin() + block * Block);
-    }
-  });
-  ParallelFor(count, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t s = begin; s < end; ++s)
+    });
+  ParallelFor(count,
+    [&](std::size_t begin, std::size_t end)
     {
-      const glm::vec3& u = samples[s];
-      const float best = bruteForce[s];
-      bool flipped = false;
-      nearest[s] = set.Nearest(u, &flipped);
-      const float dot = glm::dot(set.Direction(nearest[s]), u);
-      errors[s] = best - std::abs(dot);
-      signOk[s] = std::abs(dot) < 1e-6f || ((dot < 0.0f) == flipped);
-      const DirectionSet::Interpolation in = set.Interpolate(u);
-      const int largest = static_cast<int>(
-        std::max_element(in.Weight.begin(), in.Weight.end()) - in.Weight.begin());
-      naiveErrors[s] = best - std::abs(glm::dot(set.Direction(in.Index[largest]), u));
-    }
-  });
+      for (std::size_t s = begin; s < end; ++s)
+      {
+        const glm::vec3& u = samples[s];
+        const float best = bruteForce[s];
+        bool flipped = false;
+        nearest[s] = set.Nearest(u, &flipped);
+        const float dot = glm::dot(set.Direction(nearest[s]), u);
+        errors[s] = best - std::abs(dot);
+        signOk[s] = std::abs(dot) < 1e-6f || ((dot < 0.0f) == flipped);
+        const DirectionSet::Interpolation in = set.Interpolate(u);
+        const int largest = static_cast<int>(
+          std::max_element(in.Weight.begin(), in.Weight.end()) - in.Weight.begin());
+        naiveErrors[s] = best - std::abs(glm::dot(set.Direction(in.Index[largest]), u));
+      }
+    });
   const double seconds =
     std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::size_t wrong = 0, wrongSign = 0, naiveWrong = 0;
@@ -229,7 +234,8 @@ TEST_P(DirectionSetSizes, NearestAgreesWithBruteForce)
   EXPECT_GT(naiveWrong, count / 1000) << "the largest interpolation weight is not the nearest";
 
   // Nearest-direction cells by Monte Carlo (a uniform sample lands in cell i with probability
-  // area_i / 4 pi; a cell is the union of +-d's regions: half of it is the per-direction solid angle).
+  // area_i / 4 pi; a cell is the union of +-d's regions: half of it is the per-direction solid
+  // angle).
   std::vector<double> cells(set.Size(), 0.0);
   for (const std::size_t i : nearest)
   {
@@ -275,7 +281,8 @@ TEST_P(DirectionSetSizes, InterpolationWeights)
       ASSERT_LT(in.Index[k], set.Size());
       ASSERT_GE(in.Weight[k], 0.0f);
       sum += in.Weight[k];
-      const glm::vec3 d = in.VertexFlipped[k] ? -set.Direction(in.Index[k]) : set.Direction(in.Index[k]);
+      const glm::vec3 d =
+        in.VertexFlipped[k] ? -set.Direction(in.Index[k]) : set.Direction(in.Index[k]);
       ASSERT_GT(glm::dot(d, u), std::cos(2.9f / n));
       blended += in.Weight[k] * d;
     }
@@ -355,11 +362,13 @@ TEST_P(DirectionSetSizes, SolidAnglesAgainstMonteCarloAndIntegrals)
     {
       equal += (2.0 * mesolight::Pi<double> / set.Size()) * std::abs(set.Direction(i).z);
     }
-    EXPECT_GT(std::abs(equal / mesolight::Pi<double> - 1.0), std::abs(integralAbsZ / mesolight::Pi<double> - 1.0));
+    EXPECT_GT(std::abs(equal / mesolight::Pi<double> - 1.0),
+      std::abs(integralAbsZ / mesolight::Pi<double> - 1.0));
   }
   std::printf("[ figures  ] %zu directions: quadrature relative errors |z| %.2e, z^2 %.2e, "
               "x^2y^2 %.2e; Monte Carlo rms %.2f%%\n",
-    set.Size(), integralAbsZ / mesolight::Pi<double> - 1.0, integralZ2 / (2.0 * mesolight::Pi<double> / 3.0) - 1.0,
+    set.Size(), integralAbsZ / mesolight::Pi<double> - 1.0,
+    integralZ2 / (2.0 * mesolight::Pi<double> / 3.0) - 1.0,
     integralX2Y2 / (2.0 * mesolight::Pi<double> / 15.0) - 1.0, 100.0 * rms);
 }
 
@@ -389,8 +398,7 @@ TEST_P(DirectionSetSizes, LookupTimings)
 }
 
 INSTANTIATE_TEST_SUITE_P(Sizes, DirectionSetSizes, ::testing::Values(16, 32, 64),
-  [](const ::testing::TestParamInfo<int>& param) {
-    return std::to_string(2 * param.param * param.param + 1);
-  });
+  [](const ::testing::TestParamInfo<int>& param)
+  { return std::to_string(2 * param.param * param.param + 1); });
 
 } // namespace

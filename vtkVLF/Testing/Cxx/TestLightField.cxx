@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Tests of the light field structure (Wither 2005 §2.4.1): surface grouping, every line's crossings
 // against brute-force intersection with all triangles, the memory estimate as an upper bound of
 // what is allocated, refusals (budget, bad settings, no emitter), lookups on the tile lists.
@@ -98,7 +99,8 @@ TEST(VLFLightField, CrossingsMatchBruteForce)
       for (int i = 0; i < n; ++i)
       {
         const float a = -1.0f + (i + 0.5f) * h, b = -1.0f + (j + 0.5f) * h;
-        const glm::dvec3 origin = glm::dvec3(a * f.AxisU + b * f.AxisV) - 1.01 * glm::dvec3(f.Direction);
+        const glm::dvec3 origin =
+          glm::dvec3(a * f.AxisU + b * f.AxisV) - 1.01 * glm::dvec3(f.Direction);
         // Brute force: every triangle; one crossing per surface (the nearest of its triangles).
         std::vector<std::pair<double, std::uint32_t>> expected;
         for (std::size_t t = 0; t < scene.TriangleCount(); ++t)
@@ -126,7 +128,8 @@ TEST(VLFLightField, CrossingsMatchBruteForce)
         {
           EXPECT_EQ(found[q].Surface, expected[q].second);
           EXPECT_NEAR(found[q].Depth, expected[q].first, 1e-4);
-          EXPECT_EQ(field->FindCell(k, i, j, found[q].Surface), static_cast<std::int64_t>(found[q].Cell));
+          EXPECT_EQ(
+            field->FindCell(k, i, j, found[q].Surface), static_cast<std::int64_t>(found[q].Cell));
         }
       }
     }
@@ -144,8 +147,8 @@ TEST(VLFLightField, EstimateBoundsTheAllocation)
   const MemoryEstimate estimate = EstimateMemory(cornell, settings);
   const std::unique_ptr<LightField> field = LightField::Build(cornell, settings);
   const std::uint64_t allocated = field->AllocatedBytes();
-  std::printf("[ estimate ] %s; allocated %s\n", estimate.Describe().c_str(),
-    FormatBytes(allocated).c_str());
+  std::printf(
+    "[ estimate ] %s; allocated %s\n", estimate.Describe().c_str(), FormatBytes(allocated).c_str());
   EXPECT_EQ(field->Estimate().TotalBytes, estimate.TotalBytes);
   EXPECT_LE(allocated, estimate.TotalBytes);
   EXPECT_GE(allocated, estimate.TotalBytes / 4); // a useful bound, not a wild one
@@ -166,7 +169,8 @@ TEST(VLFLightField, RejectsBadSettingsAndScenes)
   const TriangleScene cornell = MakeCornellBox();
   LightFieldSettings s = Small();
   s.RaysPerSide = 30;
-  EXPECT_NE(MessageOf([&] { LightField::Build(cornell, s); }).find("not a multiple"), std::string::npos);
+  EXPECT_NE(
+    MessageOf([&] { LightField::Build(cornell, s); }).find("not a multiple"), std::string::npos);
   s = Small();
   s.Directions = 500;
   EXPECT_THROW(LightField::Build(cornell, s), std::invalid_argument);
@@ -182,7 +186,8 @@ TEST(VLFLightField, RejectsBadSettingsAndScenes)
   {
     m.Emission = glm::vec3(0.0f);
   }
-  EXPECT_NE(MessageOf([&] { LightField::Build(dark, Small()); }).find("emitter"), std::string::npos);
+  EXPECT_NE(
+    MessageOf([&] { LightField::Build(dark, Small()); }).find("emitter"), std::string::npos);
 
   TriangleScene bright = cornell;
   bright.Materials[0].Specular = glm::vec3(0.5f);
@@ -215,7 +220,8 @@ TEST(VLFLightField, ProgressIsMonotoneDeterministicAndAbortStops)
   double last = -1.0;
   bool monotone = true;
   std::size_t calls = 0;
-  const ProgressCallback progress = [&](double p) {
+  const ProgressCallback progress = [&](double p)
+  {
     ++calls;
     monotone = monotone && p >= last;
     last = p;
@@ -231,7 +237,8 @@ TEST(VLFLightField, ProgressIsMonotoneDeterministicAndAbortStops)
 
   // The first report that answers false stops the build.
   std::size_t reports = 0;
-  const ProgressCallback abortAtOnce = [&](double) {
+  const ProgressCallback abortAtOnce = [&](double)
+  {
     ++reports;
     return false;
   };

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Tests of the Wavefront OBJ + MTL reader and writer: every supported statement, errors with
 // file:line, missing MTL and materials, scene checks (no emitter, degenerate and non-manifold
 // triangles), and the Cornell box written, read back and compared with the built-in one.
@@ -45,9 +46,10 @@ std::string ReadError(const std::string& path, const ObjReadOptions& options = {
   return "";
 }
 
-const char* const LampMtl = "newmtl lamp\nKd 0.1 0.2 0.3\nKe 5 4 3\n"
-                            "newmtl mirror # a comment\nKd 0\nKs 0.9 0.9 0.9\nNs 200\nKa 0.1 0.1 0.1\n"
-                            "illum 3\nmap_Kd -bm 1 textures/wood.png\nmap_Ks shiny.png\n";
+const char* const LampMtl =
+  "newmtl lamp\nKd 0.1 0.2 0.3\nKe 5 4 3\n"
+  "newmtl mirror # a comment\nKd 0\nKs 0.9 0.9 0.9\nNs 200\nKa 0.1 0.1 0.1\n"
+  "illum 3\nmap_Kd -bm 1 textures/wood.png\nmap_Ks shiny.png\n";
 
 TEST(ObjScene, ReadsEveryStatement)
 {
@@ -114,9 +116,8 @@ TEST(ObjScene, ErrorsNameFileAndLine)
   std::string path = WriteText("scene.obj", text);
   EXPECT_EQ(ReadError(path), path + ":12: face refers to vertex 40 of 11");
 
-  const auto errorOf = [&](const std::string& body) {
-    return ReadError(WriteText("bad.obj", vertices + body));
-  };
+  const auto errorOf = [&](const std::string& body)
+  { return ReadError(WriteText("bad.obj", vertices + body)); };
   const std::string bad = TempPath("bad.obj");
   EXPECT_EQ(errorOf("f 1 2 40\n"), bad + ":32: face refers to vertex 40 of 31");
   EXPECT_EQ(errorOf("f 1 2 0\n"), bad + ":32: face refers to vertex 0 of 31");
@@ -142,13 +143,16 @@ TEST(ObjScene, ErrorsNameFileAndLine)
     prose += "Lorem ipsum dolor sit amet\n";
   }
   EXPECT_EQ(ReadError(WriteText("prose.obj", prose)),
-    TempPath("prose.obj") + ":21: no Wavefront OBJ statement in the first 20 lines: this is not an "
-                            "OBJ file");
+    TempPath("prose.obj") +
+      ":21: no Wavefront OBJ statement in the first 20 lines: this is not an "
+      "OBJ file");
   // MTL errors name the MTL file and its line.
   WriteText("bad.mtl", "newmtl a\nKd 0.5 0.5 0.5\nKe 1 x 1\n");
-  EXPECT_EQ(errorOf("mtllib bad.mtl\nf 1 2 3\n"), TempPath("bad.mtl") + ":3: cannot read 'x' as a number");
+  EXPECT_EQ(
+    errorOf("mtllib bad.mtl\nf 1 2 3\n"), TempPath("bad.mtl") + ":3: cannot read 'x' as a number");
   WriteText("bad2.mtl", "Kd 0.5 0.5 0.5\n");
-  EXPECT_EQ(errorOf("mtllib bad2.mtl\nf 1 2 3\n"), TempPath("bad2.mtl") + ":1: 'Kd' before any newmtl");
+  EXPECT_EQ(
+    errorOf("mtllib bad2.mtl\nf 1 2 3\n"), TempPath("bad2.mtl") + ":1: 'Kd' before any newmtl");
   // A material with a negative colour is refused by the scene check.
   WriteText("negative.mtl", "newmtl a\nKd -0.5 0.5 0.5\n");
   EXPECT_EQ(errorOf("mtllib negative.mtl\nusemtl a\nf 1 2 3\n"),
@@ -157,16 +161,16 @@ TEST(ObjScene, ErrorsNameFileAndLine)
 
 TEST(ObjScene, MissingMtlGivesGreyAndAWarning)
 {
-  const std::string path = WriteText("missing.obj",
-    "mtllib nowhere.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl lamp\nf 1 2 3\n");
+  const std::string path = WriteText(
+    "missing.obj", "mtllib nowhere.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl lamp\nf 1 2 3\n");
   const ObjSceneRead read = ReadObjScene(path);
   ASSERT_EQ(read.Scene.Materials.size(), 1u);
   EXPECT_EQ(read.Scene.Materials[0].Diffuse, glm::vec3(0.5f));
   EXPECT_EQ(read.Scene.Materials[0].Name, "lamp");
   ASSERT_GE(read.Warnings.size(), 2u);
   EXPECT_NE(read.Warnings[0].find(path + ":1: mtllib 'nowhere.mtl' not found"), std::string::npos);
-  EXPECT_NE(read.Warnings[1].find(path + ":5: material 'lamp' is not in any MTL file"),
-    std::string::npos);
+  EXPECT_NE(
+    read.Warnings[1].find(path + ":5: material 'lamp' is not in any MTL file"), std::string::npos);
   // Faces before any usemtl get the default grey too, without a warning of their own.
   const ObjSceneRead plain =
     ReadObjScene(WriteText("plain.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"));
@@ -216,8 +220,8 @@ TEST(ObjScene, DegenerateAndNonManifoldTriangles)
   EXPECT_EQ(ReadError(WriteText("flat.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n")),
     TempPath("flat.obj") + ": every triangle of the scene is degenerate (zero area)");
   // A closed manifold (tetrahedron) has none.
-  EXPECT_EQ(mesolight::vlf::CountNonManifoldEdges(
-              { { 0, 1, 2 }, { 0, 3, 1 }, { 1, 3, 2 }, { 2, 3, 0 } }),
+  EXPECT_EQ(
+    mesolight::vlf::CountNonManifoldEdges({ { 0, 1, 2 }, { 0, 3, 1 }, { 1, 3, 2 }, { 2, 3, 0 } }),
     0u);
 }
 

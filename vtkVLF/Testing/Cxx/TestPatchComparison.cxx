@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The per-patch comparison (used against the path tracer for the Cornell box) checked against an
 // analytic reference: a floor under a square emitter has diffuse radiance rho Le F(x), F the
 // point-to-square form factor. A reference 10% off must show as a 10% error.
@@ -25,8 +26,10 @@ TEST(VLFPatchComparison, FloorUnderAnEmitterAgainstTheFormFactor)
     LightField::Build(vlftest::MakeEmitterOverFloor(1.0f, 1.0f, 2.0f, albedo, le), settings);
   Propagate(*field, 1);
   const TriangleScene& unit = field->Scene();
-  auto analytic = [&](double factor) {
-    return [&, factor](std::uint32_t triangle, const glm::vec3& world) {
+  auto analytic = [&](double factor)
+  {
+    return [&, factor](std::uint32_t triangle, const glm::vec3& world)
+    {
       if (unit.MaterialOf(triangle).Emission.x > 0.0f)
       {
         return glm::vec3(le);

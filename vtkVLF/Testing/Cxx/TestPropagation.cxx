@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Accuracy of propagation and lookup against analytic answers (Wither 2005 §2.4.1.2, §3.6):
 //  - furnace: a closed cube with uniform emission Le and albedo rho everywhere has radiance
 //    Le (1 + rho + ... + rho^K) after K iterations, Le / (1 - rho) in the limit; the textures,
@@ -37,16 +38,17 @@ glm::vec3 RandomUnit(std::mt19937& random)
 
 struct FurnaceResult
 {
-  double WorstTexel = 0.0;  // max relative error of the total textures vs the expectation
-  double WorstLookup = 0.0; // radiance leaving in random directions
-  double WorstGather = 0.0; // irradiance / pi at random interior points
+  double WorstTexel = 0.0;          // max relative error of the total textures vs the expectation
+  double WorstLookup = 0.0;         // radiance leaving in random directions
+  double WorstGather = 0.0;         // irradiance / pi at random interior points
   double WorstGatherAnywhere = 0.0; // the same including points near the walls
 };
 
 // Relative errors of a furnace cube after `iterations` against Le * sum_{i<=K} rho^i (or the
 // limit Le / (1 - rho) when `limit`).
-FurnaceResult RunFurnace(float albedo, int iterations, bool limit, DiffuseNormalization normalization,
-  const GatherOptions& gather = {}, bool solidAngleWeights = true)
+FurnaceResult RunFurnace(float albedo, int iterations, bool limit,
+  DiffuseNormalization normalization, const GatherOptions& gather = {},
+  bool solidAngleWeights = true)
 {
   const float le = 1.0f;
   LightFieldSettings settings;
@@ -78,8 +80,8 @@ FurnaceResult RunFurnace(float albedo, int iterations, bool limit, DiffuseNormal
     // A random point on a random face, a random direction into the cube.
     const std::uint32_t s = static_cast<std::uint32_t>(q % field->Surfaces().size());
     const Surface& surface = field->Surfaces()[s];
-    const glm::vec3 p = surface.Origin + (0.5f + 0.5f * uniform(random)) * surface.TexelU *
-        surface.TextureWidth * surface.AxisU +
+    const glm::vec3 p = surface.Origin +
+      (0.5f + 0.5f * uniform(random)) * surface.TexelU * surface.TextureWidth * surface.AxisU +
       (0.5f + 0.5f * uniform(random)) * surface.TexelV * surface.TextureHeight * surface.AxisV;
     glm::vec3 w = RandomUnit(random);
     if (glm::dot(w, surface.Normal) < 0.05f)
@@ -94,12 +96,15 @@ FurnaceResult RunFurnace(float albedo, int iterations, bool limit, DiffuseNormal
     // neighbouring lines that pass behind a wall, see Lookup.h), and any point.
     const float half = field->NormalizationScale(); // the cube's half side in the unit sphere
     const float margin = 1.0f - 1.5f * settings.CellSize() / half;
-    const glm::vec3 interior = margin * half * glm::vec3(uniform(random), uniform(random), uniform(random));
+    const glm::vec3 interior =
+      margin * half * glm::vec3(uniform(random), uniform(random), uniform(random));
     const glm::vec3 e = lookup.Irradiance(interior, RandomUnit(random), gather);
-    r.WorstGather = std::max(r.WorstGather, std::abs(e.x / mesolight::Pi<double> - expected) / expected);
+    r.WorstGather =
+      std::max(r.WorstGather, std::abs(e.x / mesolight::Pi<double> - expected) / expected);
     const glm::vec3 anywhere = half * glm::vec3(uniform(random), uniform(random), uniform(random));
     const glm::vec3 near = lookup.Irradiance(anywhere, RandomUnit(random), gather);
-    r.WorstGatherAnywhere = std::max(r.WorstGatherAnywhere, std::abs(near.x / mesolight::Pi<double> - expected) / expected);
+    r.WorstGatherAnywhere = std::max(
+      r.WorstGatherAnywhere, std::abs(near.x / mesolight::Pi<double> - expected) / expected);
   }
   return r;
 }
@@ -109,8 +114,9 @@ TEST(VLFPropagation, FurnaceMatchesTheGeometricSeries)
   // Every iteration adds exactly one term of the series: textures, radiance maps and the
   // gathered irradiance within 1e-4 of Le * sum_{i<=K} rho^i.
   const FurnaceResult r = RunFurnace(0.8f, 3, false, DiffuseNormalization::DiscreteCapacity);
-  std::printf("[ furnace  ] rho 0.8, 3 iterations vs partial sum: texel %.2e lookup %.2e gather %.2e "
-              "(near walls %.2e)\n",
+  std::printf(
+    "[ furnace  ] rho 0.8, 3 iterations vs partial sum: texel %.2e lookup %.2e gather %.2e "
+    "(near walls %.2e)\n",
     r.WorstTexel, r.WorstLookup, r.WorstGather, r.WorstGatherAnywhere);
   EXPECT_LT(r.WorstTexel, 1e-4);
   EXPECT_LT(r.WorstLookup, 1e-4);
@@ -123,8 +129,9 @@ TEST(VLFPropagation, FurnaceReachesTheLimitWithinOnePercent)
   // rho = 0.5: after 7 iterations the missing remainder is rho^8 / (1 - rho) Le = 0.4%: the
   // iterations alone (no analytic remainder) reach Le / (1 - rho) within 1%.
   const FurnaceResult r = RunFurnace(0.5f, 7, true, DiffuseNormalization::DiscreteCapacity);
-  std::printf("[ furnace  ] rho 0.5, 7 iterations vs Le/(1-rho): texel %.2e lookup %.2e gather %.2e "
-              "(near walls %.2e)\n",
+  std::printf(
+    "[ furnace  ] rho 0.5, 7 iterations vs Le/(1-rho): texel %.2e lookup %.2e gather %.2e "
+    "(near walls %.2e)\n",
     r.WorstTexel, r.WorstLookup, r.WorstGather, r.WorstGatherAnywhere);
   EXPECT_LT(r.WorstTexel, 0.01);
   EXPECT_LT(r.WorstLookup, 0.01);
@@ -148,7 +155,8 @@ TEST(VLFPropagation, GatherFailsWithoutTheCosineNormalization)
   GatherOptions plain;
   plain.ProjectedAreaNormalization = false;
   const FurnaceResult r = RunFurnace(0.8f, 3, false, DiffuseNormalization::DiscreteCapacity, plain);
-  std::printf("[ negative ] gather without the projected-area normalisation: error %.4f\n", r.WorstGather);
+  std::printf(
+    "[ negative ] gather without the projected-area normalisation: error %.4f\n", r.WorstGather);
   EXPECT_GT(r.WorstGather, 0.001);
 }
 
@@ -172,7 +180,8 @@ TEST(VLFPropagation, EveryIterationConservesEnergy)
       EXPECT_NEAR(e.Shot[c], previousUnshot[c], 1e-4 * previousUnshot[c]);
     }
     previousUnshot = e.Unshot;
-    std::printf("[ energy   ] iteration %d: shot %.4g escaped %.4g absorbed %.4g back %.4g unshot %.4g (error %.1e)\n",
+    std::printf("[ energy   ] iteration %d: shot %.4g escaped %.4g absorbed %.4g back %.4g unshot "
+                "%.4g (error %.1e)\n",
       e.Iteration, e.Shot[0], e.Escaped[0], e.Absorbed[0], e.BackFaces[0], e.Unshot[0],
       e.ConservationError());
   }
@@ -190,7 +199,9 @@ TEST(VLFPropagation, MirrorsConserveEnergyAndReflect)
   SceneMaterial grey;
   grey.Diffuse = glm::vec3(0.5f);
   const std::uint32_t greyId = scene.AddMaterial(grey);
-  scene.AddPolygon({ { -1.5f, -1.5f, 0.0f }, { -1.5f, 1.5f, 0.0f }, { -1.5f, 1.5f, 2.0f }, { -1.5f, -1.5f, 2.0f } }, greyId);
+  scene.AddPolygon({ { -1.5f, -1.5f, 0.0f }, { -1.5f, 1.5f, 0.0f }, { -1.5f, 1.5f, 2.0f },
+                     { -1.5f, -1.5f, 2.0f } },
+    greyId);
   LightFieldSettings settings;
   settings.Directions = 513;
   settings.RaysPerSide = 32;
@@ -235,13 +246,15 @@ TEST(VLFPropagation, IrradianceUnderASquareEmitterMatchesTheFormFactor)
   double worstGather = 0.0, worstTexture = 0.0, worstNoWeights = 0.0;
   for (const float offset : { 0.0f, 0.25f, 0.5f, 0.8f })
   {
-    const double expected = le * mesolight::Pi<double> * vlftest::SquareFormFactor(side, height, offset, 0.3 * offset);
+    const double expected =
+      le * mesolight::Pi<double> * vlftest::SquareFormFactor(side, height, offset, 0.3 * offset);
     const glm::vec3 world(offset, 0.3f * offset, 0.0f);
     const glm::vec3 p = (world - field->NormalizationCentre()) * scale;
     const glm::vec3 e = lookup.Irradiance(p, glm::vec3(0.0f, 0.0f, 1.0f), {}, floor);
     GatherOptions uniformWeights;
     uniformWeights.SolidAngleWeights = false;
-    const glm::vec3 eUniform = lookup.Irradiance(p, glm::vec3(0.0f, 0.0f, 1.0f), uniformWeights, floor);
+    const glm::vec3 eUniform =
+      lookup.Irradiance(p, glm::vec3(0.0f, 0.0f, 1.0f), uniformWeights, floor);
     // The floor's diffuse radiance is rho / pi E.
     const double textured = lookup.DiffuseRadiance(floor, p).x * mesolight::Pi<double> / albedo;
     std::printf("[ form     ] offset %.2f: analytic E %.4f gathered %.4f (uniform weights %.4f) "
@@ -251,7 +264,8 @@ TEST(VLFPropagation, IrradianceUnderASquareEmitterMatchesTheFormFactor)
     worstTexture = std::max(worstTexture, std::abs(textured - expected) / expected);
     worstNoWeights = std::max(worstNoWeights, std::abs(eUniform.x - expected) / expected);
   }
-  std::printf("[ form     ] worst relative error: gathered %.4f texture %.4f uniform weights %.4f\n",
+  std::printf(
+    "[ form     ] worst relative error: gathered %.4f texture %.4f uniform weights %.4f\n",
     worstGather, worstTexture, worstNoWeights);
   EXPECT_LT(worstGather, 0.05);
   EXPECT_LT(worstTexture, 0.05);

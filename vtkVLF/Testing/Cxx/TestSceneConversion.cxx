@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Tests of the VTK side of the light field's scenes: vtkTriangleSceneConverter (round trips,
 // foreign polydata, bad input), vtkLightFieldSceneReader (the committed Cornell box OBJ against
 // vtkCornellBoxSource, errors and warnings as VTK events) and vtkCornellBoxSource.
@@ -124,7 +125,8 @@ TEST(TriangleSceneConverter, ForeignPolyData)
   sphere->Update();
   TriangleScene scene;
   ASSERT_TRUE(converter->ToTriangleScene(sphere->GetOutput(), scene));
-  EXPECT_EQ(scene.TriangleCount(), static_cast<std::size_t>(sphere->GetOutput()->GetNumberOfPolys()));
+  EXPECT_EQ(
+    scene.TriangleCount(), static_cast<std::size_t>(sphere->GetOutput()->GetNumberOfPolys()));
   ASSERT_EQ(scene.Materials.size(), 1u);
   EXPECT_EQ(scene.Materials[0].Diffuse, glm::vec3(0.5f));
   EXPECT_EQ(scene.Materials[0].Emission, glm::vec3(0.0f));
@@ -194,7 +196,8 @@ TEST(TriangleSceneConverter, BadInput)
   EXPECT_TRUE(messages->AnyErrorContains("no polygons"));
 
   // A NaN point, a 2-component colour, a short array, a negative colour.
-  const auto triangle = [&] {
+  const auto triangle = [&]
+  {
     vtkNew<vtkPolyData> t;
     vtkNew<vtkPoints> p;
     p->InsertNextPoint(0, 0, 0);

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Snapshots (Wither 2005 §2.4.2.1): exact round trip, resuming gives the same field as running
 // straight through, atomic replacement, and clear errors (never a crash) for foreign, truncated
 // and corrupt files.
@@ -107,10 +108,13 @@ TEST(VLFSnapshot, ForeignTruncatedAndCorruptFilesGiveClearErrors)
   EXPECT_FALSE(IsSnapshotFile(path));
 
   // Cut at several places: the header, the settings, the middle, the last byte.
-  for (const std::size_t length : { std::size_t(20), std::size_t(60), good.size() / 2, good.size() - 1 })
+  for (const std::size_t length :
+    { std::size_t(20), std::size_t(60), good.size() / 2, good.size() - 1 })
   {
-    WriteBytes(path, std::vector<char>(good.begin(), good.begin() + static_cast<std::ptrdiff_t>(length)));
-    EXPECT_NE(ReadError(path).find("truncated"), std::string::npos) << "cut at " << length << ": " << ReadError(path);
+    WriteBytes(
+      path, std::vector<char>(good.begin(), good.begin() + static_cast<std::ptrdiff_t>(length)));
+    EXPECT_NE(ReadError(path).find("truncated"), std::string::npos)
+      << "cut at " << length << ": " << ReadError(path);
   }
 
   // Flip one byte at several places: header, counts, data.
@@ -122,7 +126,8 @@ TEST(VLFSnapshot, ForeignTruncatedAndCorruptFilesGiveClearErrors)
     WriteBytes(path, bad);
     const std::string message = ReadError(path);
     EXPECT_TRUE(message.find("corrupt") != std::string::npos ||
-      message.find("version") != std::string::npos || message.find("byte order") != std::string::npos ||
+      message.find("version") != std::string::npos ||
+      message.find("byte order") != std::string::npos ||
       message.find("truncated") != std::string::npos)
       << "flipped byte " << at << ": '" << message << "'";
   }

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkVirtualLightField: the Cornell box through the filter gives per-cell and per-point
 // "Radiance" (the light at its emission plus what it reflects, the walls lit), progress and
 // abort, a clear error over the memory budget, snapshots written / resumed / never over a
@@ -8,8 +9,8 @@
 #include "vtkCornellBoxSource.h"
 
 #include <vtkCell.h>
-#include <vtkCleanPolyData.h>
 #include <vtkCellData.h>
+#include <vtkCleanPolyData.h>
 #include <vtkCommand.h>
 #include <vtkDataArray.h>
 #include <vtkNew.h>
@@ -21,8 +22,8 @@
 #include <cstdio>
 #include <fstream>
 #include <sstream>
-#include <vector>
 #include <string>
+#include <vector>
 
 namespace
 {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Small scenes with known answers for the light field tests.
 #ifndef mesolight_VLFTestScenes_h
 #define mesolight_VLFTestScenes_h

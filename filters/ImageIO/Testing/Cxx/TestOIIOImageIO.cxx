@@ -113,7 +113,8 @@ void ExpectSameImage(vtkImageData* expected, vtkImageData* actual)
 void WriteBytes(const fs::path& file, const std::vector<unsigned char>& bytes)
 {
   std::ofstream out(file, std::ios::binary);
-  out.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+  out.write(
+    reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
 }
 
 std::vector<unsigned char> ReadBytes(const fs::path& file)
@@ -301,8 +302,8 @@ TEST(OIIOImageIO, ReaderReportsBadFiles)
   {
     // A PNG whose header announces a 0 x 4 image (valid signature and CRC).
     std::vector<unsigned char> png = { 0x89, 'P', 'N', 'G', 0x0d, 0x0a, 0x1a, 0x0a, // signature
-      0, 0, 0, 13, 'I', 'H', 'D', 'R', // IHDR chunk, 13 bytes
-      0, 0, 0, 0, 0, 0, 0, 4, 8, 0, 0, 0, 0 }; // width 0, height 4, 8-bit grey
+      0, 0, 0, 13, 'I', 'H', 'D', 'R',                    // IHDR chunk, 13 bytes
+      0, 0, 0, 0, 0, 0, 0, 4, 8, 0, 0, 0, 0 };            // width 0, height 4, 8-bit grey
     const std::uint32_t crc = Crc32(png.data() + 12, 17); // over type + data
     for (int s = 24; s >= 0; s -= 8)
     {
@@ -360,7 +361,8 @@ TEST(OIIOImageIO, WriterReportsErrorsAndNeverLeavesBrokenFiles)
   const fs::path dir = mesolight_test::TestDirectory();
   auto image = Pattern<vtkUnsignedCharArray>(8, 8, 3, 255);
 
-  const auto writeExpectingError = [&](vtkImageData* input, const fs::path& file) {
+  const auto writeExpectingError = [&](vtkImageData* input, const fs::path& file)
+  {
     vtkNew<vtkOIIOImageWriter> writer;
     vtkNew<MessageCapture> capture;
     capture->Watch(writer);
@@ -376,8 +378,8 @@ TEST(OIIOImageIO, WriterReportsErrorsAndNeverLeavesBrokenFiles)
   };
 
   EXPECT_EQ(writeExpectingError(nullptr, dir / "noinput.png"), vtkErrorCode::UserError);
-  EXPECT_EQ(writeExpectingError(image, dir / "image.unknownext"),
-    vtkErrorCode::UnrecognizedFileTypeError);
+  EXPECT_EQ(
+    writeExpectingError(image, dir / "image.unknownext"), vtkErrorCode::UnrecognizedFileTypeError);
   EXPECT_EQ(writeExpectingError(image, dir / "no_such_dir" / "image.png"),
     vtkErrorCode::CannotOpenFileError);
   WriteBytes(dir / "afile", { 1, 2, 3 });

@@ -43,8 +43,8 @@ void Brightest(const RgbImage& image, int& bi, int& bj)
       if (x > 0.5f * best)
       {
         double d[3];
-        mesolight::DirectionFromMapUV(mesolight::PixelCenterU(i, image.Width),
-          mesolight::PixelCenterV(j, image.Height), d);
+        mesolight::DirectionFromMapUV(
+          mesolight::PixelCenterU(i, image.Width), mesolight::PixelCenterV(j, image.Height), d);
         for (int c = 0; c < 3; ++c)
         {
           sum[c] += x * mesolight::PixelSolidAngle(j, image.Width, image.Height) * d[c];
@@ -84,8 +84,10 @@ double DegreesFromPixel(int i, int j, int w, int h, const double d[3])
   // Written out independently of the library: v from the top, theta = pi v, phi = 2 pi u.
   const double u = (i + 0.5) / w;
   const double v = 1.0 - (j + 0.5) / h;
-  const double p[3] = { std::sin(mesolight::Pi<double> * v) * std::cos(2 * mesolight::Pi<double> * u),
-    std::sin(mesolight::Pi<double> * v) * std::sin(2 * mesolight::Pi<double> * u), std::cos(mesolight::Pi<double> * v) };
+  const double p[3] = { std::sin(mesolight::Pi<double> * v) *
+      std::cos(2 * mesolight::Pi<double> * u),
+    std::sin(mesolight::Pi<double> * v) * std::sin(2 * mesolight::Pi<double> * u),
+    std::cos(mesolight::Pi<double> * v) };
   const double c = p[0] * d[0] + p[1] * d[1] + p[2] * d[2];
   return std::acos(std::max(-1.0, std::min(1.0, c))) * 180.0 / mesolight::Pi<double>;
 }
@@ -142,7 +144,8 @@ TEST(EnvironmentMaps, SolidAnglesSumToFourPi)
     EXPECT_NEAR(moment[2], 0.0, 1e-12);
   }
   // Rows near the poles are smaller than rows at the equator (the weighting matters).
-  EXPECT_LT(mesolight::PixelSolidAngle(255, 512, 256), 0.02 * mesolight::PixelSolidAngle(128, 512, 256));
+  EXPECT_LT(
+    mesolight::PixelSolidAngle(255, 512, 256), 0.02 * mesolight::PixelSolidAngle(128, 512, 256));
 }
 
 TEST(EnvironmentMaps, ExactIrradianceAnalyticCases)
@@ -151,13 +154,13 @@ TEST(EnvironmentMaps, ExactIrradianceAnalyticCases)
   const int h = 256;
   const float l = 2.0f;
   const mesolight::ExactIrradiance uniform(Constant(w, h, l));
-  const double normals[][3] = { { 0, 0, 1 }, { 1, 0, 0 }, { 0, -1, 0 },
-    { 0.48, 0.6, -0.64 } };
+  const double normals[][3] = { { 0, 0, 1 }, { 1, 0, 0 }, { 0, -1, 0 }, { 0.48, 0.6, -0.64 } };
   for (const auto& n : normals)
   {
     double e[3];
     uniform.Evaluate(n, e);
-    EXPECT_NEAR(e[0], mesolight::Pi<double> * l, 1e-4 * mesolight::Pi<double> * l); // furnace: pi L for every normal
+    EXPECT_NEAR(e[0], mesolight::Pi<double> * l,
+      1e-4 * mesolight::Pi<double> * l); // furnace: pi L for every normal
     EXPECT_NEAR(e[2], mesolight::Pi<double> * l, 1e-4 * mesolight::Pi<double> * l);
   }
   // L only on the upper hemisphere: E(up) = pi L, E(horizontal) = pi L / 2, E(down) = 0.
@@ -251,7 +254,8 @@ TEST(EnvironmentMaps, AngularMapToLatLong)
     for (int i = 0; i < w; ++i)
     {
       double d[3];
-      mesolight::DirectionFromMapUV(mesolight::PixelCenterU(i, w), mesolight::PixelCenterV(j, h), d);
+      mesolight::DirectionFromMapUV(
+        mesolight::PixelCenterU(i, w), mesolight::PixelCenterV(j, h), d);
       float* p = smooth.Pixel(i, j);
       p[0] = p[1] = p[2] = static_cast<float>(2.0 + d[0] + 0.5 * d[1] - 0.7 * d[2]);
     }

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkLightProbeToLatLong: a synthetic environment with bright spots at known directions, turned
 // into an angular map and a mirror ball by the core's inverse mappings, comes back with the
 // spots at the right lat-long pixels; a wrong probe frame must put them elsewhere.
@@ -58,7 +59,8 @@ double Radiance(vtkImageData* map, const double d[3])
   mesolight::MapUVFromDirection(d, u, v);
   const int i = std::min(dims[0] - 1, static_cast<int>(u * dims[0]));
   const int j = std::min(dims[1] - 1, static_cast<int>((1.0 - v) * dims[1])); // VTK row order
-  return map->GetPointData()->GetScalars()->GetComponent(static_cast<vtkIdType>(j) * dims[0] + i, 0);
+  return map->GetPointData()->GetScalars()->GetComponent(
+    static_cast<vtkIdType>(j) * dims[0] + i, 0);
 }
 } // namespace
 
@@ -103,9 +105,8 @@ TEST(LightProbeToLatLong, BadInputIsAnError)
   vtkNew<vtkLightProbeToLatLong> convert;
   convert->SetInputData(tiny);
   vtkNew<vtkCallbackCommand> silence; // the error is expected: keep it off the console
-  silence->SetCallback([](vtkObject*, unsigned long, void* clientData, void*) {
-    *static_cast<bool*>(clientData) = true;
-  });
+  silence->SetCallback([](vtkObject*, unsigned long, void* clientData, void*)
+    { *static_cast<bool*>(clientData) = true; });
   bool reported = false;
   silence->SetClientData(&reported);
   convert->AddObserver(vtkCommand::ErrorEvent, silence);

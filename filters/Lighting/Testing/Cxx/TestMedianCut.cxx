@@ -30,8 +30,8 @@ RgbImage Constant(int w, int h, float value)
   return map;
 }
 
-std::vector<MedianCutLight> Cut(const RgbImage& map, int n, bool variance = false,
-  bool weighted = true)
+std::vector<MedianCutLight> Cut(
+  const RgbImage& map, int n, bool variance = false, bool weighted = true)
 {
   MedianCutOptions options;
   options.NumberOfLights = n;
@@ -39,8 +39,8 @@ std::vector<MedianCutLight> Cut(const RgbImage& map, int n, bool variance = fals
   options.SolidAngleWeighting = weighted;
   std::vector<MedianCutLight> lights;
   std::string error;
-  EXPECT_EQ(mesolight::ComputeMedianCut(map.Rgb.data(), 3, map.Width, map.Height, options,
-              lights, error),
+  EXPECT_EQ(
+    mesolight::ComputeMedianCut(map.Rgb.data(), 3, map.Width, map.Height, options, lights, error),
     MedianCutStatus::Ok)
     << error;
   return lights;
@@ -61,7 +61,8 @@ std::vector<std::array<double, 3>> Normals(int n)
 }
 
 /// Mean relative irradiance error (luminance) of a light set against exact integration.
-double MeanError(const RgbImage& map, const std::vector<MedianCutLight>& lights, double* maxError = nullptr)
+double MeanError(
+  const RgbImage& map, const std::vector<MedianCutLight>& lights, double* maxError = nullptr)
 {
   const mesolight::ExactIrradiance exact(map);
   double sum = 0.0;
@@ -109,8 +110,10 @@ RgbImage ThreeSpots(int w, int h)
     {
       const double u = (i + 0.5) / w;
       const double v = 1.0 - (j + 0.5) / h;
-      const double d[3] = { std::sin(mesolight::Pi<double> * v) * std::cos(2 * mesolight::Pi<double> * u),
-        std::sin(mesolight::Pi<double> * v) * std::sin(2 * mesolight::Pi<double> * u), std::cos(mesolight::Pi<double> * v) };
+      const double d[3] = { std::sin(mesolight::Pi<double> * v) *
+          std::cos(2 * mesolight::Pi<double> * u),
+        std::sin(mesolight::Pi<double> * v) * std::sin(2 * mesolight::Pi<double> * u),
+        std::cos(mesolight::Pi<double> * v) };
       float value = 0.01f;
       for (const auto& s : spots)
       {
@@ -246,12 +249,13 @@ TEST(MedianCut, UniformMapIsSpreadByArea)
   // |z| > 0.9 is 10% of the sphere.
   EXPECT_LE(polar, 10);
   EXPECT_EQ(upper, 32);
-  EXPECT_LT(std::sqrt(first[0] * first[0] + first[1] * first[1] + first[2] * first[2]),
-    0.02 * total[0]);
+  EXPECT_LT(
+    std::sqrt(first[0] * first[0] + first[1] * first[1] + first[2] * first[2]), 0.02 * total[0]);
   // Equal solid angles: every region has 4 pi / 64 sr.
   for (const auto& light : lights)
   {
-    EXPECT_NEAR(light.SolidAngle, 4 * mesolight::Pi<double> / 64, 0.05 * 4 * mesolight::Pi<double> / 64);
+    EXPECT_NEAR(
+      light.SolidAngle, 4 * mesolight::Pi<double> / 64, 0.05 * 4 * mesolight::Pi<double> / 64);
   }
 }
 

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // vtkMedianCutLights and vtkProceduralEnvironmentSource: outputs, file row order, errors,
 // CSV.
-#include "vtkMedianCutLights.h"
 #include "MathConstants.h"
+#include "vtkMedianCutLights.h"
 #include "vtkOIIOImageReader.h"
 #include "vtkProceduralEnvironmentSource.h"
 
@@ -73,7 +73,8 @@ TEST(MedianCutLights, OutputsOnTheSunSky)
   // The strongest light is the sun.
   double p[3];
   out->GetPoint(0, p);
-  const double sun[3] = { 0.0, std::cos(mesolight::Pi<double> / 6), std::sin(mesolight::Pi<double> / 6) };
+  const double sun[3] = { 0.0, std::cos(mesolight::Pi<double> / 6),
+    std::sin(mesolight::Pi<double> / 6) };
   EXPECT_LT(Degrees(p, sun), 1.0);
   EXPECT_NEAR(uv->GetComponent(0, 0), 0.25, 0.01);
   EXPECT_NEAR(uv->GetComponent(0, 1), 1.0 / 3.0, 0.01);
@@ -136,15 +137,16 @@ TEST(MedianCutLights, FileRowOrderZenithOnTop)
 
 TEST(MedianCutLights, BadInput)
 {
-  auto expectError = [](vtkImageData* image, int count, const std::string& needle) {
+  auto expectError = [](vtkImageData* image, int count, const std::string& needle)
+  {
     vtkNew<vtkMedianCutLights> lights;
     vtkNew<MessageCapture> capture;
     capture->Watch(lights);
     lights->SetInputData(image);
     lights->SetNumberOfLights(count);
     lights->Update();
-    EXPECT_TRUE(capture->HasError(needle)) << "expected \"" << needle << "\", got: "
-                                           << capture->AllErrors();
+    EXPECT_TRUE(capture->HasError(needle))
+      << "expected \"" << needle << "\", got: " << capture->AllErrors();
     EXPECT_EQ(lights->GetOutput()->GetNumberOfPoints(), 0);
   };
   auto nan = Image(16, 8, 1.0f);
@@ -155,8 +157,9 @@ TEST(MedianCutLights, BadInput)
   expectError(nan, 4, "contains 2 NaN or infinite value(s)");
   expectError(nan, 4, "(i=5, j=2");
   expectError(Image(16, 8, 0.0f), 4, "no light");
-  expectError(Image(16, 8, 1.0f), 0, "NumberOfLights must be between 1 and the number of "
-                                     "pixels (128); it is 0");
+  expectError(Image(16, 8, 1.0f), 0,
+    "NumberOfLights must be between 1 and the number of "
+    "pixels (128); it is 0");
   expectError(Image(16, 8, 1.0f), 129, "it is 129");
   expectError(Image(16, 8, 1.0f, 1), 4, "3 or more components");
   {
@@ -202,9 +205,8 @@ TEST(MedianCutLights, Abort)
   lights->SetInputConnection(sky->GetOutputPort());
   // Abort from a progress observer, as a GUI would.
   vtkNew<vtkCallbackCommand> abort;
-  abort->SetCallback([](vtkObject* caller, unsigned long, void*, void*) {
-    static_cast<vtkAlgorithm*>(caller)->SetAbortExecute(1);
-  });
+  abort->SetCallback([](vtkObject* caller, unsigned long, void*, void*)
+    { static_cast<vtkAlgorithm*>(caller)->SetAbortExecute(1); });
   lights->AddObserver(vtkCommand::ProgressEvent, abort);
   lights->Update();
   EXPECT_EQ(lights->GetOutput()->GetNumberOfPoints(), 0);

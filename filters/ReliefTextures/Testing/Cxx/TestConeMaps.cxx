@@ -3,8 +3,8 @@
 // never passes the exact first hit (vtkRelief/core/HeightFieldTracer.h), the maps are not
 // needlessly narrow, the 8-bit encoding never widens a cone, and the min-depth pyramid bounds
 // the bilinear surface.
-#include "MathConstants.h"
 #include "ConeMaps.h"
+#include "MathConstants.h"
 
 #include "HeightFieldTracer.h"
 #include "vtkConeMapFilter.h"
@@ -55,7 +55,8 @@ std::vector<Map> TestMaps()
   std::vector<Map> maps;
   std::mt19937 rng(12345);
   std::uniform_real_distribution<double> uni(0.0, 1.0);
-  auto make = [&](const std::string& name, int w, int h, auto f) {
+  auto make = [&](const std::string& name, int w, int h, auto f)
+  {
     Map m{ name, w, h, std::vector<float>(static_cast<size_t>(w) * h) };
     for (int j = 0; j < h; ++j)
     {
@@ -73,28 +74,30 @@ std::vector<Map> TestMaps()
   {
     c = uni(rng);
   }
-  make("smooth24x17", 24, 17, [&](int i, int j) {
-    const double x = i / 23.0 * 4.0;
-    const double y = j / 16.0 * 4.0;
-    const int x0 = std::min(3, static_cast<int>(x));
-    const int y0 = std::min(3, static_cast<int>(y));
-    const double fx = x - x0;
-    const double fy = y - y0;
-    auto c = [&](int a, int b) { return coarse[static_cast<size_t>(b) * 5 + a]; };
-    return (1 - fy) * ((1 - fx) * c(x0, y0) + fx * c(x0 + 1, y0)) +
-      fy * ((1 - fx) * c(x0, y0 + 1) + fx * c(x0 + 1, y0 + 1));
-  });
-  make("spikes20", 20, 20, [&](int i, int j) {
-    return ((i * 7 + j * 3) % 11 == 0) ? 0.05 + 0.2 * uni(rng) : 0.9;
-  });
-  make("ridges18x22", 18, 22, [&](int i, int j) {
-    return (i % 6 == 2 || (i + j) % 9 == 0) ? 0.1 : 0.8 - 0.02 * j;
-  });
+  make("smooth24x17", 24, 17,
+    [&](int i, int j)
+    {
+      const double x = i / 23.0 * 4.0;
+      const double y = j / 16.0 * 4.0;
+      const int x0 = std::min(3, static_cast<int>(x));
+      const int y0 = std::min(3, static_cast<int>(y));
+      const double fx = x - x0;
+      const double fy = y - y0;
+      auto c = [&](int a, int b) { return coarse[static_cast<size_t>(b) * 5 + a]; };
+      return (1 - fy) * ((1 - fx) * c(x0, y0) + fx * c(x0 + 1, y0)) +
+        fy * ((1 - fx) * c(x0, y0 + 1) + fx * c(x0 + 1, y0 + 1));
+    });
+  make("spikes20", 20, 20,
+    [&](int i, int j) { return ((i * 7 + j * 3) % 11 == 0) ? 0.05 + 0.2 * uni(rng) : 0.9; });
+  make("ridges18x22", 18, 22,
+    [&](int i, int j) { return (i % 6 == 2 || (i + j) % 9 == 0) ? 0.1 : 0.8 - 0.02 * j; });
   make("steps20x16", 20, 16, [&](int i, int j) { return 0.2 * ((i + j / 3) / 4); });
-  make("pit16", 16, 16, [&](int i, int j) {
-    const double r = std::hypot(i - 7.3, j - 8.1);
-    return r < 4.0 ? 1.0 - 0.15 * r : 0.2;
-  });
+  make("pit16", 16, 16,
+    [&](int i, int j)
+    {
+      const double r = std::hypot(i - 7.3, j - 8.1);
+      return r < 4.0 ? 1.0 - 0.15 * r : 0.2;
+    });
   make("ramp17x13", 17, 13, [&](int i, int j) { return 0.03 * i + 0.05 * j; });
   return maps;
 }
@@ -109,7 +112,8 @@ double ConeStep(const HeightField& hf, const HeightField& cones, const glm::dvec
   const glm::dvec3& dir, double speed, int steps, int binarySteps, double& maxPenetration)
 {
   maxPenetration = 0.0;
-  auto gap = [&](double t) {
+  auto gap = [&](double t)
+  {
     const glm::dvec3 p = origin + t * dir;
     return p.z - hf.DepthAt(p.x, p.y); // >= 0: on or below
   };
@@ -145,15 +149,15 @@ double ConeStep(const HeightField& hf, const HeightField& cones, const glm::dvec
 struct PropertyResult
 {
   int Rays = 0;
-  int PastFirstHit = 0;   // stepping + binary search ended after the exact first hit
-  int WentBelow = 0;      // a stepping point was below the surface by more than the tolerance
+  int PastFirstHit = 0; // stepping + binary search ended after the exact first hit
+  int WentBelow = 0;    // a stepping point was below the surface by more than the tolerance
   std::string FirstFailure;
 };
 
 constexpr double kTolerance = 1e-4;
 
-PropertyResult CheckStepping(const Map& m, const std::vector<float>& ratios, double scale,
-  int rays, unsigned seed, bool conservative)
+PropertyResult CheckStepping(const Map& m, const std::vector<float>& ratios, double scale, int rays,
+  unsigned seed, bool conservative)
 {
   const HeightField hf(m.W, m.H, m.Depth);
   std::vector<float> scaled(ratios);
@@ -190,8 +194,8 @@ PropertyResult CheckStepping(const Map& m, const std::vector<float>& ratios, dou
     {
       std::ostringstream os;
       os << m.Name << ": ray from (" << origin.x << ", " << origin.y << ") angle " << angle
-         << " speed " << speed << ": stepping ended at t = " << t << ", first hit at "
-         << hit->t << ", penetration " << penetration;
+         << " speed " << speed << ": stepping ended at t = " << t << ", first hit at " << hit->t
+         << ", penetration " << penetration;
       result.FirstFailure = os.str();
     }
   }
@@ -568,8 +572,8 @@ TEST(ConeMaps, MinDepthPyramidBoundsTheBilinearSurface)
       EXPECT_EQ(pyramid[level].size(), static_cast<size_t>(lw) * lh) << m.Name << " " << level;
     }
     EXPECT_EQ(pyramid.back().size(), 1u);
-    EXPECT_FALSE(mesolight::MinDepthPyramidLevelSize(
-      m.W, m.H, static_cast<int>(pyramid.size()), lw, lh));
+    EXPECT_FALSE(
+      mesolight::MinDepthPyramidLevelSize(m.W, m.H, static_cast<int>(pyramid.size()), lw, lh));
     EXPECT_EQ(pyramid[0].size(), static_cast<size_t>(m.W + 1) * (m.H + 1));
     // Level 0: every cell's value <= the surface anywhere in the cell (dense samples, band
     // cells sampled half a texel beyond the outermost centres), and attained at a corner.
@@ -632,12 +636,13 @@ TEST(ConeMaps, ProgressAndAbort)
   const Map m = TestMaps()[2];
   std::vector<double> reported;
   ConeMapOptions options;
-  options.Progress = [&](double f) {
+  options.Progress = [&](double f)
+  {
     reported.push_back(f);
     return true;
   };
-  EXPECT_EQ(mesolight::ComputeRelaxedConeMap(m.Depth.data(), m.W, m.H, options).size(),
-    m.Depth.size());
+  EXPECT_EQ(
+    mesolight::ComputeRelaxedConeMap(m.Depth.data(), m.W, m.H, options).size(), m.Depth.size());
   ASSERT_GE(reported.size(), 2u);
   EXPECT_EQ(reported.front(), 0.0);
   EXPECT_EQ(reported.back(), 1.0);
@@ -696,7 +701,8 @@ TEST(vtkConeMapFilter, PacksTheCoreConesReportsProgressAndAborts)
   vtkDataArray* packed = out->GetPointData()->GetScalars();
   ASSERT_NE(packed, nullptr);
   ASSERT_EQ(packed->GetNumberOfComponents(), 4);
-  auto* type = vtkStringArray::SafeDownCast(out->GetFieldData()->GetAbstractArray("MesolightConeType"));
+  auto* type =
+    vtkStringArray::SafeDownCast(out->GetFieldData()->GetAbstractArray("MesolightConeType"));
   ASSERT_NE(type, nullptr);
   EXPECT_EQ(type->GetValue(0), "relaxed");
   // B is the core's relaxed cone map of the depth in A.

@@ -108,7 +108,7 @@ TEST(vtkHeightFieldMeshFilter, CustomPlaneFrame)
   p.Mesh->SetPoint2(1, 7, 3); // direction only: square texels make it 2 long
   vtkPolyData* mesh = p.Update();
   double x[3];
-  mesh->GetPoint(0, x); // u = v = 1/8
+  mesh->GetPoint(0, x);                         // u = v = 1/8
   EXPECT_NEAR(x[0], 1 + 0.3 * 0.5 * 2.0, 1e-6); // displaced along -N = +x by d*k*width
   EXPECT_NEAR(x[1], 2 + 2.0 / 8, 1e-6);
   EXPECT_NEAR(x[2], 3 + 2.0 / 8, 1e-6);

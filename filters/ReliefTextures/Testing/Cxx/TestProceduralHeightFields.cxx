@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Procedural depth maps (core/ProceduralHeightFields.h) and vtkProceduralReliefSource.
-#include "ProceduralHeightFields.h"
 #include "MathConstants.h"
+#include "ProceduralHeightFields.h"
 #include "vtkProceduralReliefSource.h"
 
 #include "MesolightTestUtilities.h"
@@ -124,13 +124,13 @@ TEST(ProceduralHeightFields, HemisphereIsResolutionIndependent)
 TEST(ProceduralHeightFields, HemisphereTorusShape)
 {
   const HeightFieldParameters p = WithPattern(ReliefPattern::HemisphereTorus);
-  EXPECT_FLOAT_EQ(mesolight::SampleHeightField(p, 0.02f, 0.02f, nullptr),
-    mesolight::HemisphereTorusBaseDepth);
+  EXPECT_FLOAT_EQ(
+    mesolight::SampleHeightField(p, 0.02f, 0.02f, nullptr), mesolight::HemisphereTorusBaseDepth);
   EXPECT_NEAR(mesolight::SampleHeightField(p, 0.28f, 0.5f, nullptr), 0.f, 1e-5); // apex
   // The torus ring: high on the ring, the base in the hole.
   EXPECT_LT(mesolight::SampleHeightField(p, 0.72f + 0.15f, 0.5f, nullptr), 0.6f);
-  EXPECT_FLOAT_EQ(mesolight::SampleHeightField(p, 0.72f, 0.5f, nullptr),
-    mesolight::HemisphereTorusBaseDepth);
+  EXPECT_FLOAT_EQ(
+    mesolight::SampleHeightField(p, 0.72f, 0.5f, nullptr), mesolight::HemisphereTorusBaseDepth);
 }
 
 TEST(ProceduralHeightFields, BricksHaveDeepMortar)
@@ -146,7 +146,7 @@ TEST(ProceduralHeightFields, BricksHaveDeepMortar)
   double bricks = 0;
   for (int k = 1; k < 8; ++k)
   {
-    const int jointRow = k * n / 8;       // centre v = (32k + 0.5)/256, inside the joint
+    const int jointRow = k * n / 8;          // centre v = (32k + 0.5)/256, inside the joint
     const int brickRow = k * n / 8 - n / 16; // mid-height of course k-1
     for (int i = 0; i < n; ++i)
     {
@@ -186,7 +186,9 @@ TEST(ProceduralHeightFields, SineWaveAndFlatAreAnalytic)
     {
       const double u = (i + 0.5) / w;
       const double v = (j + 0.5) / h;
-      const double expected = 0.5 + 0.5 * std::sin(2 * mesolight::Pi<double> * 2 * u) * std::cos(2 * mesolight::Pi<double> * 3 * v);
+      const double expected = 0.5 +
+        0.5 * std::sin(2 * mesolight::Pi<double> * 2 * u) *
+          std::cos(2 * mesolight::Pi<double> * 3 * v);
       ASSERT_NEAR(m.Depth[j * w + i], expected, 1e-5) << i << "," << j;
     }
   }

@@ -26,8 +26,8 @@ using mesolight_test::MessageCapture;
 namespace
 {
 template <typename ArrayT>
-vtkSmartPointer<vtkImageData> MakeImage(int w, int h, int nComp,
-  const std::vector<typename ArrayT::ValueType>& values)
+vtkSmartPointer<vtkImageData> MakeImage(
+  int w, int h, int nComp, const std::vector<typename ArrayT::ValueType>& values)
 {
   auto image = vtkSmartPointer<vtkImageData>::New();
   image->SetDimensions(w, h, 1);
@@ -76,10 +76,11 @@ TEST(vtkReliefTextureFilter, MatchesCoreAndStoresDepthScale)
   EXPECT_FLOAT_EQ(static_cast<float>(scale->GetComponent(0, 0)), 0.2f);
 
   // The parallel VTK wrapper gives exactly the serial core result.
-  auto* depth = static_cast<float*>(
-    source->GetDepthOutput()->GetPointData()->GetScalars()->GetVoidPointer(0));
+  auto* depth =
+    static_cast<float*>(source->GetDepthOutput()->GetPointData()->GetScalars()->GetVoidPointer(0));
   std::vector<float> expected(4 * 200 * 150);
-  mesolight::ComputeReliefTexture(depth, 200, 150, 0.2f, mesolight::BorderMode::Wrap, expected.data());
+  mesolight::ComputeReliefTexture(
+    depth, 200, 150, 0.2f, mesolight::BorderMode::Wrap, expected.data());
   EXPECT_TRUE(std::equal(expected.begin(), expected.end(), relief->GetPointer(0)));
 }
 

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Sobel gradient and relief-texture packing (core/SobelNormals.h) against analytic values.
-#include "SobelNormals.h"
 #include "MathConstants.h"
+#include "SobelNormals.h"
 
 #include <gtest/gtest.h>
 
@@ -17,15 +17,18 @@ namespace
 // h(u, v) = 0.5 + 0.25 sin(2 pi u) cos(2 pi v) and its partial derivatives.
 double H(double u, double v)
 {
-  return 0.5 + 0.25 * std::sin(2 * mesolight::Pi<double> * u) * std::cos(2 * mesolight::Pi<double> * v);
+  return 0.5 +
+    0.25 * std::sin(2 * mesolight::Pi<double> * u) * std::cos(2 * mesolight::Pi<double> * v);
 }
 double DHdu(double u, double v)
 {
-  return 0.5 * mesolight::Pi<double> * std::cos(2 * mesolight::Pi<double> * u) * std::cos(2 * mesolight::Pi<double> * v);
+  return 0.5 * mesolight::Pi<double> * std::cos(2 * mesolight::Pi<double> * u) *
+    std::cos(2 * mesolight::Pi<double> * v);
 }
 double DHdv(double u, double v)
 {
-  return -0.5 * mesolight::Pi<double> * std::sin(2 * mesolight::Pi<double> * u) * std::sin(2 * mesolight::Pi<double> * v);
+  return -0.5 * mesolight::Pi<double> * std::sin(2 * mesolight::Pi<double> * u) *
+    std::sin(2 * mesolight::Pi<double> * v);
 }
 
 struct SampledMap
@@ -93,8 +96,7 @@ TEST(SobelGradient, ClampMatchesAnalyticInterior)
     for (int i = 1; i < m.W - 1; ++i)
     {
       maxErr = std::max(maxErr, std::fabs(g[2 * (j * m.W + i)] * m.W - DHdu(m.U(i), m.V(j))));
-      maxErr =
-        std::max(maxErr, std::fabs(g[2 * (j * m.W + i) + 1] * m.Hgt - DHdv(m.U(i), m.V(j))));
+      maxErr = std::max(maxErr, std::fabs(g[2 * (j * m.W + i) + 1] * m.Hgt - DHdv(m.U(i), m.V(j))));
     }
   }
   EXPECT_LT(maxErr, TightTolerance);
@@ -283,7 +285,8 @@ TEST(ReliefTexture, RowRangesComposeToTheWholeImage)
   const SampledMap m = MakeSine(33, 17);
   std::vector<float> whole(4 * m.Depth.size());
   std::vector<float> pieces(4 * m.Depth.size(), -1.f);
-  mesolight::ComputeReliefTexture(m.Depth.data(), m.W, m.Hgt, 0.2f, BorderMode::Clamp, whole.data());
+  mesolight::ComputeReliefTexture(
+    m.Depth.data(), m.W, m.Hgt, 0.2f, BorderMode::Clamp, whole.data());
   for (int r = 0; r < m.Hgt; r += 5)
   {
     mesolight::ComputeReliefTextureRows(
