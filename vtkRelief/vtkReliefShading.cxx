@@ -49,6 +49,40 @@ void vtkReliefShading::SetMessageOwner(vtkObject* owner)
 }
 
 //------------------------------------------------------------------------------
+vtkReliefProperty* vtkReliefShading::GetReliefProperty()
+{
+  if (!this->ReliefProperty)
+  {
+    this->ReliefProperty = vtkSmartPointer<vtkReliefProperty>::New();
+    this->ReliefProperty->SetMessageOwner(this->Messages->GetOwner());
+  }
+  return this->ReliefProperty;
+}
+
+//------------------------------------------------------------------------------
+bool vtkReliefShading::SetReliefProperty(vtkReliefProperty* property)
+{
+  if (this->ReliefProperty == property)
+  {
+    return false;
+  }
+  this->ReliefProperty = property;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+vtkReliefProperty* vtkReliefShading::PeekReliefProperty()
+{
+  return this->ReliefProperty;
+}
+
+//------------------------------------------------------------------------------
+vtkMTimeType vtkReliefShading::GetReliefPropertyMTime()
+{
+  return this->ReliefProperty ? this->ReliefProperty->GetMTime() : 0;
+}
+
+//------------------------------------------------------------------------------
 vtkReliefGeometryCache* vtkReliefShading::GetGeometryCache()
 {
   return this->GeometryCache;
