@@ -259,14 +259,7 @@ void vtkCompositeReliefMapper::ReleaseGraphicsResources(vtkWindow* win)
 void vtkCompositeReliefMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  vtkReliefProperty* property = this->Shading->PeekReliefProperty();
-  os << indent << "ReliefProperty: " << property << "\n";
-  if (property)
-  {
-    property->PrintSelf(os, indent.GetNextIndent());
-  }
-  os << indent << "Shading:\n";
-  this->Shading->PrintSelf(os, indent.GetNextIndent());
+  this->Shading->PrintForMapper(os, indent);
   os << indent << "ReliefTextureData: " << this->ReliefTextureData.Get() << "\n";
   os << indent << "LightSetData: " << this->LightSetData.Get() << "\n";
 }

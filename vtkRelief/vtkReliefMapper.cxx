@@ -215,14 +215,7 @@ void vtkReliefMapper::ReleaseGraphicsResources(vtkWindow* win)
 void vtkReliefMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  vtkReliefProperty* property = this->Shading->PeekReliefProperty();
-  os << indent << "ReliefProperty: " << property << "\n";
-  if (property)
-  {
-    property->PrintSelf(os, indent.GetNextIndent());
-  }
-  os << indent << "Shading:\n";
-  this->Shading->PrintSelf(os, indent.GetNextIndent());
+  this->Shading->PrintForMapper(os, indent);
   os << indent << "LightSet: " << this->GetLightSet() << "\n";
   os << indent << "ReliefTexture: " << this->GetReliefTexture() << "\n";
 }

@@ -71,9 +71,15 @@ bool vtkReliefShading::SetReliefProperty(vtkReliefProperty* property)
 }
 
 //------------------------------------------------------------------------------
-vtkReliefProperty* vtkReliefShading::PeekReliefProperty()
+void vtkReliefShading::PrintForMapper(ostream& os, vtkIndent indent)
 {
-  return this->ReliefProperty;
+  os << indent << "ReliefProperty: " << this->ReliefProperty.Get() << "\n";
+  if (this->ReliefProperty)
+  {
+    this->ReliefProperty->PrintSelf(os, indent.GetNextIndent());
+  }
+  os << indent << "Shading:\n";
+  this->PrintSelf(os, indent.GetNextIndent());
 }
 
 //------------------------------------------------------------------------------

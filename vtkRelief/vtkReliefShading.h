@@ -60,13 +60,15 @@ public:
    * The mapper's settings, behind its GetReliefProperty/SetReliefProperty/GetMTime:
    * GetReliefProperty makes a new default property (reporting to the message owner) when there is
    * none; SetReliefProperty returns whether the property changed (the mapper is then modified);
-   * GetReliefPropertyMTime is 0 without a property. PeekReliefProperty makes none (for PrintSelf).
+   * GetReliefPropertyMTime is 0 without a property.
    */
   vtkReliefProperty* GetReliefProperty();
   bool SetReliefProperty(vtkReliefProperty* property);
-  vtkReliefProperty* PeekReliefProperty();
   vtkMTimeType GetReliefPropertyMTime();
   ///@}
+
+  /** The mapper's part of its PrintSelf: its relief property (if any), then this shading. */
+  void PrintForMapper(ostream& os, vtkIndent indent);
 
   /** The prepared copies of the mapper's inputs. */
   vtkReliefGeometryCache* GetGeometryCache();
