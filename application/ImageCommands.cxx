@@ -2,6 +2,7 @@
 #include "ImageCommands.h"
 
 #include "CommandLine.h"
+#include "Timing.h"
 
 #include "EnvironmentMaps.h"
 #include "vtkConeMapFilter.h"
@@ -193,8 +194,7 @@ int RunConeCommand(const std::vector<std::string>& args)
   cones->SetPacking(cl.Has("--8bit") ? vtkConeMapFilter::RATIO_8BIT : vtkConeMapFilter::FLOAT);
   const auto start = std::chrono::steady_clock::now();
   cones->Update();
-  const double seconds =
-    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double seconds = SecondsSince(start);
   if (cones->GetOutput()->GetNumberOfPoints() == 0)
   {
     std::cerr << "mesolight cone: could not make a cone map of " << in << "\n";

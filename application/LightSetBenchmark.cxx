@@ -7,6 +7,7 @@
 #include "MathConstants.h"
 #include "ReliefReference.h"
 #include "ReliefScene.h"
+#include "Timing.h"
 #include "vtkReliefMapper.h"
 
 #include <vtkActor.h>
@@ -142,8 +143,7 @@ int RunLightSetBenchmark(const std::vector<std::string>& args)
   const auto referenceStart = std::chrono::steady_clock::now();
   const std::vector<EnvironmentIrradianceSample> reference = ComputeEnvironmentReference(
     hits, scene.ReliefTexture, environment, o.DepthScale, 3000, samples, true);
-  const double referenceSeconds =
-    std::chrono::duration<double>(std::chrono::steady_clock::now() - referenceStart).count();
+  const double referenceSeconds = SecondsSince(referenceStart);
   // Exposure: the brightest reference pixel at about 200 of 255.
   double brightest = 0.0;
   for (const auto& s : reference)
@@ -248,8 +248,7 @@ int RunLightSetBenchmark(const std::vector<std::string>& args)
       ComputeLightSetReference(hits, scene.ReliefTexture, lights, o.DepthScale, 3000),
       ComputeLightSetReference(hits, coneRelief, lights, o.DepthScale, 3000)
     };
-    lightsReferenceSeconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    lightsReferenceSeconds = SecondsSince(start);
     if (lightsReference[0].empty() || lightsReference[1].empty())
     {
       std::cerr << "mesolight bench ibl: no pixel for the light-set reference (empty light set or "

@@ -107,6 +107,24 @@ bool ReadSceneOptions(const CommandLine& cl, ReliefSceneOptions& o, std::string&
   return true;
 }
 
+// The arguments of a command that takes the scene options (render, bench): false, with the exit
+// code, when --help was printed or the arguments are wrong.
+bool ParseSceneCommand(
+  CommandLine& cl, const std::vector<std::string>& args, ReliefSceneOptions& options, int& exitCode)
+{
+  if (!cl.ParseArguments(args, exitCode))
+  {
+    return false;
+  }
+  std::string error;
+  if (!ReadSceneOptions(cl, options, error))
+  {
+    exitCode = cl.UsageError(error);
+    return false;
+  }
+  return true;
+}
+
 // Interactive keys on top of the trackball camera; VTK's own keys keep working.
 class ReliefInteractorStyle : public vtkInteractorStyleTrackballCamera
 {
@@ -182,17 +200,13 @@ int RunRenderCommand(const std::vector<std::string>& args)
   AddSceneOptions(cl);
   cl.AddValue("--out", "FILE", "PNG to write", "mesolight-render.png");
   cl.AddFlag("--offscreen", "only write the PNG, never open a window");
-  std::string error;
   ReliefSceneOptions options;
   int exitCode = 0;
-  if (!cl.ParseArguments(args, exitCode))
+  if (!ParseSceneCommand(cl, args, options, exitCode))
   {
     return exitCode; // --help printed, or a usage error reported
   }
-  if (!ReadSceneOptions(cl, options, error))
-  {
-    return cl.UsageError(error);
-  }
+  std::string error;
   if (!cl.Positional().empty())
   {
     std::cerr << "mesolight render: unexpected argument '" << cl.Positional()[0] << "'\n";
@@ -265,17 +279,13 @@ int RunReliefBenchmarkCommand(const std::vector<std::string>& args)
   cl.AddValue("--sizes", "N,N,..", "relief map resolutions to measure", "512,1024");
   cl.AddValue("--frames", "N", "timed frames per configuration (median reported)", "20");
   cl.AddValue("--csv", "FILE", "also write the table as CSV");
-  std::string error;
   ReliefSceneOptions options;
   int exitCode = 0;
-  if (!cl.ParseArguments(args, exitCode))
+  if (!ParseSceneCommand(cl, args, options, exitCode))
   {
     return exitCode; // --help printed, or a usage error reported
   }
-  if (!ReadSceneOptions(cl, options, error))
-  {
-    return cl.UsageError(error);
-  }
+  std::string error;
   BenchmarkSettings settings;
   settings.Scene = options;
   if (!cl.GetInt("--frames", 1, 10000, settings.Frames, error))

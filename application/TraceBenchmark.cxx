@@ -6,6 +6,7 @@
 
 #include "CommandLine.h"
 #include "MathConstants.h"
+#include "Timing.h"
 
 #include "EmbreeScene.h"
 #include "ParallelTiles.h"
@@ -120,25 +121,11 @@ int RunTraceBenchmark(const std::vector<std::string>& args)
     return cl.UsageError(error);
   }
 
-  auto best = [&](const std::function<void()>& run)
-  {
-    double fastest = 1e30;
-    for (int r = 0; r < repeats; ++r)
-    {
-      const auto start = std::chrono::steady_clock::now();
-      run();
-      fastest = std::min(
-        fastest, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-    }
-    return fastest;
-  };
-
   std::vector<Row> rows;
   const auto buildStart = std::chrono::steady_clock::now();
   const TriangleScene sphere = MakeDenseSphere(triangles);
   const EmbreeScene embree(sphere);
-  const double buildSeconds =
-    std::chrono::duration<double>(std::chrono::steady_clock::now() - buildStart).count();
+  const double buildSeconds = SecondsSince(buildStart);
   std::cout << "dense sphere: " << sphere.TriangleCount() << " triangles, built in " << std::fixed
             << std::setprecision(2) << buildSeconds << " s\n";
 
@@ -151,7 +138,7 @@ int RunTraceBenchmark(const std::vector<std::string>& args)
   const double primaryCount = static_cast<double>(size) * size;
   std::atomic<std::uint64_t> hits{ 0 };
 
-  const double single = best(
+  const double single = FastestSeconds(repeats,
     [&]
     {
       ForEachTile(size, size, 16, threads,
@@ -195,7 +182,8 @@ int RunTraceBenchmark(const std::vector<std::string>& args)
         }
       });
   };
-  const double packets = best([&]
+  const double packets = FastestSeconds(repeats,
+    [&]
     { tracePackets([&](int i, int j) { return camera.Ray(i + 0.5f, j + 0.5f, size, size); }); });
   rows.push_back(
     { "primary coherent, 16-ray packets (4x4 pixels)", threads, primaryCount, packets, "rays" });
@@ -221,7 +209,7 @@ int RunTraceBenchmark(const std::vector<std::string>& args)
         }
       }
     });
-  const double incoherent = best(
+  const double incoherent = FastestSeconds(repeats,
     [&]
     {
       ForEachTile(size, size, 16, threads,
@@ -238,7 +226,7 @@ int RunTraceBenchmark(const std::vector<std::string>& args)
     });
   rows.push_back(
     { "diffuse bounces incoherent, single rays", threads, primaryCount, incoherent, "rays" });
-  const double incoherentPackets = best(
+  const double incoherentPackets = FastestSeconds(repeats,
     [&] {
       tracePackets([&](int i, int j) { return bounces[static_cast<std::size_t>(j) * size + i]; });
     });
@@ -253,7 +241,7 @@ int RunTraceBenchmark(const std::vector<std::string>& args)
     PathTracerSettings settings;
     settings.Threads = t;
     const PathTracer tracer(cornell, settings);
-    const double seconds = best(
+    const double seconds = FastestSeconds(repeats,
       [&]
       {
         tracer.RenderImage(

@@ -3,6 +3,7 @@
 
 #include "CommandLine.h"
 #include "ReliefScene.h" // HasDisplay
+#include "Timing.h"
 #include "TraceScenes.h"
 
 #include "EmbreeScene.h"
@@ -42,11 +43,6 @@ namespace mesolight
 
 namespace
 {
-double Seconds(std::chrono::steady_clock::time_point start)
-{
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
 // Linear radiance -> 8-bit with the sRGB transfer curve (clamped), for PNGs of the path tracer.
 vtkSmartPointer<vtkImageData> ToDisplayBytes(const RgbImage& image)
 {
@@ -281,7 +277,7 @@ int TraceCornell(const CommandLine& cl, int width, int height, int threads, bool
   const auto start = std::chrono::steady_clock::now();
   const RgbImage image = tracer.RenderImage(
     PinholeCamera(CornellCamera{}), width, height, samples, static_cast<std::uint64_t>(seed));
-  const double seconds = Seconds(start);
+  const double seconds = SecondsSince(start);
   if (image.Width == 0)
   {
     std::cerr << "mesolight trace: path tracing failed\n";
@@ -452,7 +448,7 @@ int RunTraceCommand(const std::vector<std::string>& args)
   }
   const auto start = std::chrono::steady_clock::now();
   tracer->Update();
-  const double seconds = Seconds(start);
+  const double seconds = SecondsSince(start);
   vtkImageData* image = tracer->GetOutput();
   int dims[3];
   image->GetDimensions(dims);

@@ -96,6 +96,16 @@ void AddLight(vtkRenderer* renderer, double x, double y, double z, double intens
   light->SetIntensity(intensity);
   renderer->AddLight(light);
 }
+
+// The scenes' camera: from (x, y, z) toward (fx, fy, fz), +y up, a 40 degree view angle.
+void LookAt(vtkRenderer* renderer, double x, double y, double z, double fx, double fy, double fz)
+{
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->SetPosition(x, y, z);
+  camera->SetFocalPoint(fx, fy, fz);
+  camera->SetViewUp(0.0, 1.0, 0.0);
+  camera->SetViewAngle(40.0);
+}
 } // namespace
 
 vtkSmartPointer<vtkImageData> MakeCheckerImage(int size, int squares, double dark, double light)
@@ -219,11 +229,7 @@ bool BuildSpheresScene(vtkRenderer* renderer, vtkEmbreeRayTracer* tracer)
   AddLight(renderer, -3.0, 10.0, 4.0, 0.3);
   AddLight(renderer, 3.0, 6.0, 10.0, 0.3);
   renderer->SetBackground(0.3, 0.4, 0.6);
-  vtkCamera* camera = renderer->GetActiveCamera();
-  camera->SetPosition(0.0, 3.2, 8.5);
-  camera->SetFocalPoint(0.0, 0.8, 0.0);
-  camera->SetViewUp(0.0, 1.0, 0.0);
-  camera->SetViewAngle(40.0);
+  LookAt(renderer, 0.0, 3.2, 8.5, 0.0, 0.8, 0.0);
   return true;
 }
 
@@ -267,11 +273,7 @@ bool BuildRingScene(vtkRenderer* renderer, vtkEmbreeRayTracer* tracer)
   AddLight(renderer, -4.0, 6.0, 5.0, 0.7);
   AddLight(renderer, 5.0, 4.0, 3.0, 0.4);
   renderer->SetBackground(0.15, 0.15, 0.2);
-  vtkCamera* camera = renderer->GetActiveCamera();
-  camera->SetPosition(0.0, 2.6, 4.2);
-  camera->SetFocalPoint(0.0, 0.3, 0.0);
-  camera->SetViewUp(0.0, 1.0, 0.0);
-  camera->SetViewAngle(40.0);
+  LookAt(renderer, 0.0, 2.6, 4.2, 0.0, 0.3, 0.0);
   return true;
 }
 

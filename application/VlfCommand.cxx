@@ -4,6 +4,7 @@
 #include "AnalyticCases.h"
 #include "ChartPlot.h"
 #include "CommandLine.h"
+#include "Timing.h"
 
 #include "EmbreeScene.h"
 #include "LightField.h"
@@ -43,11 +44,6 @@ namespace
 {
 namespace vlf = mesolight::vlf;
 using Clock = std::chrono::steady_clock;
-
-double Seconds(Clock::time_point since)
-{
-  return std::chrono::duration<double>(Clock::now() - since).count();
-}
 
 // Peak resident memory since the last reset (Linux: VmHWM; writing 5 to clear_refs resets it).
 std::uint64_t PeakResidentBytes()
@@ -192,7 +188,7 @@ int Propagate(const std::vector<std::string>& args)
                 << " tiles; memory up to " << estimate.Describe() << "\n";
       const Clock::time_point start = Clock::now();
       field = vlf::LightField::Build(scene, settings, PrintedProgress("tracing subfields"));
-      std::cout << "traced in " << Seconds(start) << " s, "
+      std::cout << "traced in " << SecondsSince(start) << " s, "
                 << vlf::FormatBytes(field->AllocatedBytes()) << " allocated\n";
     }
     vlf::PropagationOptions options;
@@ -391,7 +387,7 @@ int Render(const std::vector<std::string>& args)
       std::cerr << "mesolight vlf render: could not write '" << out << "'\n";
       return 1;
     }
-    std::cout << "wrote " << out << " (" << width << "x" << height << ", " << Seconds(start)
+    std::cout << "wrote " << out << " (" << width << "x" << height << ", " << SecondsSince(start)
               << " s, light field after " << field->IterationsDone << " iterations)\n";
   }
   catch (const std::exception& e)
@@ -498,7 +494,7 @@ int RunVlfBenchmark(const std::vector<std::string>& args)
         ResetPeakResident();
         const Clock::time_point start = Clock::now();
         std::unique_ptr<vlf::LightField> field = vlf::LightField::Build(cornell, settings);
-        const double build = Seconds(start);
+        const double build = SecondsSince(start);
         double propagate = 0.0;
         for (int it = 1; it <= iterations; ++it)
         {

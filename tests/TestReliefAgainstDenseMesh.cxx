@@ -3,6 +3,7 @@
 // as a dense displaced mesh (one vertex per texel, vtkHeightFieldMeshFilter) drawn by VTK's stock
 // mapper with the same camera, lights, normals and albedo. Self-shadowing is off on both sides
 // (the stock mapper has none); shadows are tested against exact visibility in TestReliefShadows.
+#include "DenseMeshTestScene.h"
 #include "ImageCompare.h"
 #include "ReliefScene.h"
 #include "TestReliefTestUtilities.h"
@@ -15,19 +16,6 @@
 namespace
 {
 using namespace mesolight;
-
-ReliefSceneOptions TestScene()
-{
-  ReliefSceneOptions o;
-  o.Pattern = "Bricks";
-  o.Resolution = 256;
-  o.Width = 400;
-  o.Height = 400;
-  o.DepthScale = 0.04;
-  o.SelfShadowing = false;
-  o.ViewDistance = 2.2; // the wall fills most of the view
-  return o;
-}
 
 // Renders the relief variant and the dense reference of the same options and compares them.
 FrameDifference CompareWithDenseMesh(const ReliefSceneOptions& options, const std::string& tag)
@@ -70,7 +58,7 @@ bool WithinTolerance(const FrameDifference& d)
 // mapper (same Phong model, lights and texture modulation).
 TEST(ReliefVsDenseMesh, FlatMapShadesLikeTheStockMapper)
 {
-  ReliefSceneOptions o = TestScene();
+  ReliefSceneOptions o = test::DenseMeshTestScene();
   o.Pattern = "Flat";
   const FrameDifference d = CompareWithDenseMesh(o, "flat");
   EXPECT_LT(d.MeanColorError, 1.0);
@@ -101,7 +89,7 @@ class ReliefMethodVsDenseMesh : public ::testing::TestWithParam<MethodCase>
 TEST_P(ReliefMethodVsDenseMesh, WithinTolerance)
 {
   const MethodCase c = GetParam();
-  ReliefSceneOptions o = TestScene();
+  ReliefSceneOptions o = test::DenseMeshTestScene();
   o.Method = c.Method;
   o.LinearSteps = c.Linear;
   o.RefinementSteps = c.Refine;
@@ -127,7 +115,7 @@ INSTANTIATE_TEST_SUITE_P(Methods, ReliefMethodVsDenseMesh,
 // Negative test: plain texture (and normal) mapping, no march, must fail the same comparison.
 TEST(ReliefVsDenseMesh, PlainTextureMappingFailsTheComparison)
 {
-  ReliefSceneOptions o = TestScene();
+  ReliefSceneOptions o = test::DenseMeshTestScene();
   o.Method = "texture";
   o.ViewAngle = 55.0;
   const FrameDifference d = CompareWithDenseMesh(o, "bricks-texture-view55");
@@ -139,7 +127,7 @@ TEST(ReliefVsDenseMesh, PlainTextureMappingFailsTheComparison)
 // must catch even though the colours match.
 TEST(ReliefVsDenseMesh, WithoutDepthWriteTheDepthCheckFails)
 {
-  ReliefSceneOptions o = TestScene();
+  ReliefSceneOptions o = test::DenseMeshTestScene();
   o.WriteDepth = false;
   o.ViewAngle = 55.0;
   const FrameDifference d = CompareWithDenseMesh(o, "bricks-relief-nodepth-view55");

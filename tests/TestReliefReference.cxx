@@ -3,6 +3,7 @@
 // is checked twice: against the independent dense displaced mesh drawn by VTK's stock mapper
 // (depth buffer and coverage), and as the yardstick of the GPU march (decoded hit coordinates of
 // vtkReliefMapper's HitUOutput / HitVOutput). Each check has a negative counterpart that must fail.
+#include "DenseMeshTestScene.h"
 #include "ImageCompare.h"
 #include "ReliefReference.h"
 #include "ReliefScene.h"
@@ -20,20 +21,6 @@
 namespace
 {
 using namespace mesolight;
-
-ReliefSceneOptions TestScene()
-{
-  ReliefSceneOptions o;
-  o.Pattern = "Bricks";
-  o.Resolution = 256;
-  o.Width = 400;
-  o.Height = 400;
-  o.DepthScale = 0.04;
-  o.SelfShadowing = false;
-  o.ViewAngle = 55.0;
-  o.ViewDistance = 2.2; // the wall fills most of the view
-  return o;
-}
 
 struct DenseAgreement
 {
@@ -112,7 +99,7 @@ class ReliefReferenceVsDenseMesh : public ::testing::TestWithParam<ReferenceCase
 TEST_P(ReliefReferenceVsDenseMesh, DepthAndCoverageAgree)
 {
   const ReferenceCase c = GetParam();
-  ReliefSceneOptions o = TestScene();
+  ReliefSceneOptions o = test::DenseMeshTestScene();
   o.Pattern = c.Pattern;
   o.DepthScale = c.DepthScale;
   o.ViewAngle = c.ViewAngle;
@@ -138,7 +125,7 @@ INSTANTIATE_TEST_SUITE_P(Scenes, ReliefReferenceVsDenseMesh,
 // Negative test: a reference traced with the wrong depth scale must fail the same comparison.
 TEST(ReliefReference, WrongDepthScaleDisagreesWithTheDenseMesh)
 {
-  ReliefSceneOptions o = TestScene();
+  ReliefSceneOptions o = test::DenseMeshTestScene();
   o.Pattern = "HemisphereTorus";
   o.DepthScale = 0.15;
   ReliefScene scene;
@@ -173,7 +160,7 @@ HitComparison GpuHitError(const ReliefSceneOptions& options, const std::string& 
 
 TEST(ReliefReference, GpuReliefHitsMatchTheReference)
 {
-  ReliefSceneOptions o = TestScene();
+  ReliefSceneOptions o = test::DenseMeshTestScene();
   o.Method = "relief";
   o.LinearSteps = 10;
   o.RefinementSteps = 8;
@@ -185,7 +172,7 @@ TEST(ReliefReference, GpuReliefHitsMatchTheReference)
 // Negative test: plain texture mapping (no march) hits the mesh surface, far from the exact hit.
 TEST(ReliefReference, PlainTextureMappingHitsAreFarOff)
 {
-  ReliefSceneOptions o = TestScene();
+  ReliefSceneOptions o = test::DenseMeshTestScene();
   o.Method = "texture";
   const HitComparison c = GpuHitError(o, "texture, 55 deg");
   EXPECT_GT(c.MeanTexels, 1.0) << "twice the 0.5 texel bound the relief march must meet";

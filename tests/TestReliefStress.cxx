@@ -71,6 +71,20 @@ StressResult Stress(ReliefSceneOptions o, vtkImageData* relief)
   return result;
 }
 
+// A stress scene: `method` with enough steps for it (max-mipmap counts iterations).
+ReliefSceneOptions StressOptions(
+  const char* pattern, int resolution, const char* method, double viewAngle, double depthScale)
+{
+  ReliefSceneOptions o;
+  o.Pattern = pattern;
+  o.Resolution = resolution;
+  o.Method = method;
+  o.LinearSteps = std::string(method) == "max-mipmap" ? 128 : 16;
+  o.ViewAngle = viewAngle;
+  o.DepthScale = depthScale;
+  return o;
+}
+
 const char* const StressMethods[] = { "relief", "pom", "interval", "linear", "parallax",
   "parallax-slope", "iterative-parallax", "binary", "secant", "max-mipmap", "bump" };
 } // namespace
@@ -81,14 +95,7 @@ TEST(ReliefStress, GrazingViewsUpTo89Point9Degrees)
   {
     for (double angle : { 80.0, 89.0, 89.9 })
     {
-      ReliefSceneOptions o;
-      o.Pattern = "Bricks";
-      o.Resolution = 128;
-      o.Method = method;
-      o.LinearSteps = std::string(method) == "max-mipmap" ? 128 : 16;
-      o.ViewAngle = angle;
-      o.DepthScale = 0.1;
-      const StressResult r = Stress(o, nullptr);
+      const StressResult r = Stress(StressOptions("Bricks", 128, method, angle, 0.1), nullptr);
       EXPECT_TRUE(r.Errors.empty()) << method << " " << angle << ": " << r.Errors;
       EXPECT_EQ(r.Red, 0) << method << " at " << angle << " degrees";
     }
@@ -101,14 +108,8 @@ TEST(ReliefStress, DepthScaleZeroAndVeryLarge)
   {
     for (double depthScale : { 0.0, 10.0 })
     {
-      ReliefSceneOptions o;
-      o.Pattern = "HemisphereTorus";
-      o.Resolution = 64;
-      o.Method = method;
-      o.LinearSteps = std::string(method) == "max-mipmap" ? 128 : 16;
-      o.DepthScale = depthScale;
-      o.ViewAngle = 60.0;
-      const StressResult r = Stress(o, nullptr);
+      const StressResult r =
+        Stress(StressOptions("HemisphereTorus", 64, method, 60.0, depthScale), nullptr);
       EXPECT_TRUE(r.Errors.empty()) << method << " " << depthScale << ": " << r.Errors;
       EXPECT_EQ(r.Red, 0) << method << " with depth scale " << depthScale;
       if (depthScale == 0.0)

@@ -230,20 +230,14 @@ void vtkCompositeReliefMapper::Render(vtkRenderer* ren, vtkActor* actor)
 //------------------------------------------------------------------------------
 vtkReliefProperty* vtkCompositeReliefMapper::GetReliefProperty()
 {
-  if (!this->ReliefProperty)
-  {
-    this->ReliefProperty = vtkSmartPointer<vtkReliefProperty>::New();
-    this->ReliefProperty->SetMessageOwner(this);
-  }
-  return this->ReliefProperty;
+  return this->Shading->GetReliefProperty();
 }
 
 //------------------------------------------------------------------------------
 void vtkCompositeReliefMapper::SetReliefProperty(vtkReliefProperty* property)
 {
-  if (this->ReliefProperty != property)
+  if (this->Shading->SetReliefProperty(property))
   {
-    this->ReliefProperty = property;
     this->Modified();
   }
 }
@@ -251,8 +245,7 @@ void vtkCompositeReliefMapper::SetReliefProperty(vtkReliefProperty* property)
 //------------------------------------------------------------------------------
 vtkMTimeType vtkCompositeReliefMapper::GetMTime()
 {
-  const vtkMTimeType own = this->Superclass::GetMTime();
-  return this->ReliefProperty ? std::max(own, this->ReliefProperty->GetMTime()) : own;
+  return std::max(this->Superclass::GetMTime(), this->Shading->GetReliefPropertyMTime());
 }
 
 //------------------------------------------------------------------------------
@@ -266,13 +259,7 @@ void vtkCompositeReliefMapper::ReleaseGraphicsResources(vtkWindow* win)
 void vtkCompositeReliefMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "ReliefProperty: " << this->ReliefProperty.Get() << "\n";
-  if (this->ReliefProperty)
-  {
-    this->ReliefProperty->PrintSelf(os, indent.GetNextIndent());
-  }
-  os << indent << "Shading:\n";
-  this->Shading->PrintSelf(os, indent.GetNextIndent());
+  this->Shading->PrintForMapper(os, indent);
   os << indent << "ReliefTextureData: " << this->ReliefTextureData.Get() << "\n";
   os << indent << "LightSetData: " << this->LightSetData.Get() << "\n";
 }

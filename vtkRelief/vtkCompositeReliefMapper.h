@@ -67,7 +67,6 @@ protected:
 
   vtkCompositeMapperHelper2* CreateHelper() override;
 
-  vtkSmartPointer<vtkReliefProperty> ReliefProperty;
   vtkNew<vtkReliefShading> Shading;
   vtkSmartPointer<vtkImageData> ReliefTextureData;
   vtkSmartPointer<vtkImageData> LightSetData;

@@ -47,20 +47,14 @@ int vtkReliefMapper::FillInputPortInformation(int port, vtkInformation* info)
 //------------------------------------------------------------------------------
 vtkReliefProperty* vtkReliefMapper::GetReliefProperty()
 {
-  if (!this->ReliefProperty)
-  {
-    this->ReliefProperty = vtkSmartPointer<vtkReliefProperty>::New();
-    this->ReliefProperty->SetMessageOwner(this);
-  }
-  return this->ReliefProperty;
+  return this->Shading->GetReliefProperty();
 }
 
 //------------------------------------------------------------------------------
 void vtkReliefMapper::SetReliefProperty(vtkReliefProperty* property)
 {
-  if (this->ReliefProperty != property)
+  if (this->Shading->SetReliefProperty(property))
   {
-    this->ReliefProperty = property;
     this->Modified();
   }
 }
@@ -68,8 +62,7 @@ void vtkReliefMapper::SetReliefProperty(vtkReliefProperty* property)
 //------------------------------------------------------------------------------
 vtkMTimeType vtkReliefMapper::GetMTime()
 {
-  const vtkMTimeType own = this->Superclass::GetMTime();
-  return this->ReliefProperty ? std::max(own, this->ReliefProperty->GetMTime()) : own;
+  return std::max(this->Superclass::GetMTime(), this->Shading->GetReliefPropertyMTime());
 }
 
 //------------------------------------------------------------------------------
@@ -222,13 +215,7 @@ void vtkReliefMapper::ReleaseGraphicsResources(vtkWindow* win)
 void vtkReliefMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "ReliefProperty: " << this->ReliefProperty.Get() << "\n";
-  if (this->ReliefProperty)
-  {
-    this->ReliefProperty->PrintSelf(os, indent.GetNextIndent());
-  }
-  os << indent << "Shading:\n";
-  this->Shading->PrintSelf(os, indent.GetNextIndent());
+  this->Shading->PrintForMapper(os, indent);
   os << indent << "LightSet: " << this->GetLightSet() << "\n";
   os << indent << "ReliefTexture: " << this->GetReliefTexture() << "\n";
 }

@@ -52,7 +52,6 @@
 #include "vtkOpenGLPolyDataMapper.h"
 #include "vtkPolyData.h"       // for GetPreparedInput
 #include "vtkReliefProperty.h" // for GetReliefProperty: callers set the relief through it
-#include "vtkSmartPointer.h"   // for ReliefProperty
 
 class vtkAlgorithmOutput;
 class vtkImageData;
@@ -119,7 +118,6 @@ protected:
     std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
   void SetMapperShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
 
-  vtkSmartPointer<vtkReliefProperty> ReliefProperty;
   vtkNew<vtkReliefShading> Shading;
   vtkPolyData* PreparedInput = nullptr;
   bool ReadyToDraw = false;

@@ -49,6 +49,46 @@ void vtkReliefShading::SetMessageOwner(vtkObject* owner)
 }
 
 //------------------------------------------------------------------------------
+vtkReliefProperty* vtkReliefShading::GetReliefProperty()
+{
+  if (!this->ReliefProperty)
+  {
+    this->ReliefProperty = vtkSmartPointer<vtkReliefProperty>::New();
+    this->ReliefProperty->SetMessageOwner(this->Messages->GetOwner());
+  }
+  return this->ReliefProperty;
+}
+
+//------------------------------------------------------------------------------
+bool vtkReliefShading::SetReliefProperty(vtkReliefProperty* property)
+{
+  if (this->ReliefProperty == property)
+  {
+    return false;
+  }
+  this->ReliefProperty = property;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkReliefShading::PrintForMapper(ostream& os, vtkIndent indent)
+{
+  os << indent << "ReliefProperty: " << this->ReliefProperty.Get() << "\n";
+  if (this->ReliefProperty)
+  {
+    this->ReliefProperty->PrintSelf(os, indent.GetNextIndent());
+  }
+  os << indent << "Shading:\n";
+  this->PrintSelf(os, indent.GetNextIndent());
+}
+
+//------------------------------------------------------------------------------
+vtkMTimeType vtkReliefShading::GetReliefPropertyMTime()
+{
+  return this->ReliefProperty ? this->ReliefProperty->GetMTime() : 0;
+}
+
+//------------------------------------------------------------------------------
 vtkReliefGeometryCache* vtkReliefShading::GetGeometryCache()
 {
   return this->GeometryCache;

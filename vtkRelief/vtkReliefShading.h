@@ -17,7 +17,8 @@
  *  - ShaderKeyChanged, ReplaceShaderValuesBefore/After: the shader edits
  *    (vtkReliefShaderSource);
  *  - SetShaderParameters: the uniforms of one draw.
- * The settings live in the mapper's vtkReliefProperty, which this class only reads.
+ * The settings are a vtkReliefProperty held here for the mapper (GetReliefProperty), which this
+ * class only reads.
  */
 
 #ifndef vtkReliefShading_h
@@ -53,6 +54,21 @@ public:
   /** Maximum number of VTK lights shaded per fragment; further lights are ignored with a warning.
    */
   static constexpr int MaximumNumberOfLights = 8;
+
+  ///@{
+  /**
+   * The mapper's settings, behind its GetReliefProperty/SetReliefProperty/GetMTime:
+   * GetReliefProperty makes a new default property (reporting to the message owner) when there is
+   * none; SetReliefProperty returns whether the property changed (the mapper is then modified);
+   * GetReliefPropertyMTime is 0 without a property.
+   */
+  vtkReliefProperty* GetReliefProperty();
+  bool SetReliefProperty(vtkReliefProperty* property);
+  vtkMTimeType GetReliefPropertyMTime();
+  ///@}
+
+  /** The mapper's part of its PrintSelf: its relief property (if any), then this shading. */
+  void PrintForMapper(ostream& os, vtkIndent indent);
 
   /** The prepared copies of the mapper's inputs. */
   vtkReliefGeometryCache* GetGeometryCache();
@@ -98,7 +114,8 @@ protected:
   vtkNew<vtkReliefShaderSource> ShaderSource;
   vtkNew<vtkReliefMessageForwarder> Messages;
 
-  vtkSmartPointer<vtkReliefProperty> Property; // the settings of the current draw
+  vtkSmartPointer<vtkReliefProperty> ReliefProperty; // the mapper's settings
+  vtkSmartPointer<vtkReliefProperty> Property;       // the settings of the current draw
   bool Drawing = false;
   bool PyramidActive = false;
   bool LightSetActive = false;

@@ -22,6 +22,17 @@ vtkStandardNewMacro(vtkProceduralEnvironmentSource);
 vtkProceduralEnvironmentSource::vtkProceduralEnvironmentSource()
 {
   this->SetNumberOfInputPorts(0);
+  const mesolight::SkyParameters defaults;
+  this->SunElevation = defaults.SunElevation;
+  this->SunAzimuth = defaults.SunAzimuth;
+  this->SunDiameter = defaults.SunDiameter;
+  this->SunIntensity = defaults.SunIntensity;
+  this->Window = defaults.Window;
+  this->WindowElevation = defaults.WindowElevation;
+  this->WindowAzimuth = defaults.WindowAzimuth;
+  this->WindowWidth = defaults.WindowWidth;
+  this->WindowHeight = defaults.WindowHeight;
+  this->WindowRadiance = defaults.WindowRadiance;
 }
 
 //------------------------------------------------------------------------------

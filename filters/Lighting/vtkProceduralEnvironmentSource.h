@@ -104,16 +104,17 @@ protected:
 
   int Map = SMOOTH_SKY;
   int Resolution[2] = { 512, 256 };
-  double SunElevation = 40.0;
-  double SunAzimuth = 30.0;
-  double SunDiameter = 2.0;
-  double SunIntensity = 10000.0;
-  bool Window = false;
-  double WindowElevation = 15.0;
-  double WindowAzimuth = 210.0;
-  double WindowWidth = 40.0;
-  double WindowHeight = 25.0;
-  double WindowRadiance = 5.0;
+  // The sun and window defaults are the core's (mesolight::SkyParameters), set by the constructor.
+  double SunElevation;
+  double SunAzimuth;
+  double SunDiameter;
+  double SunIntensity;
+  bool Window;
+  double WindowElevation;
+  double WindowAzimuth;
+  double WindowWidth;
+  double WindowHeight;
+  double WindowRadiance;
 
 private:
   vtkProceduralEnvironmentSource(const vtkProceduralEnvironmentSource&) = delete;

@@ -98,6 +98,23 @@ public:
     return any;
   }
 
+  // The next logical line that is not blank: its tokens, "name:line: " for messages and the
+  // physical line it starts on (the OBJ and MTL parsers' common loop head).
+  bool NextStatement(std::vector<std::string>& tokens, std::string& where, std::size_t& number)
+  {
+    std::string line;
+    while (this->Next(line, number))
+    {
+      tokens = Tokens(line);
+      if (!tokens.empty())
+      {
+        where = Location(this->Name, number);
+        return true;
+      }
+    }
+    return false;
+  }
+
 private:
   std::istream& Stream;
   std::string Name;
@@ -198,17 +215,12 @@ struct MtlMaterial
 void ParseMtl(std::istream& stream, const std::string& name, std::vector<MtlMaterial>& materials)
 {
   LineReader reader(stream, name);
-  std::string line;
+  std::vector<std::string> tokens;
+  std::string where;
   std::size_t number = 0;
   MtlMaterial* current = nullptr;
-  while (reader.Next(line, number))
+  while (reader.NextStatement(tokens, where, number))
   {
-    const std::vector<std::string> tokens = Tokens(line);
-    if (tokens.empty())
-    {
-      continue;
-    }
-    const std::string where = Location(name, number);
     const std::string& key = tokens[0];
     if (key == "newmtl")
     {
@@ -357,16 +369,11 @@ ObjSceneRead ParseObjScene(std::istream& obj, const std::string& name, const std
   };
 
   LineReader reader(obj, name);
-  std::string line;
+  std::vector<std::string> tokens;
+  std::string where;
   std::size_t number = 0;
-  while (reader.Next(line, number))
+  while (reader.NextStatement(tokens, where, number))
   {
-    const std::vector<std::string> tokens = Tokens(line);
-    if (tokens.empty())
-    {
-      continue;
-    }
-    const std::string where = Location(name, number);
     const std::string& key = tokens[0];
     if (key == "v")
     {

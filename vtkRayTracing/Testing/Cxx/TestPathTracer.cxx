@@ -65,6 +65,24 @@ glm::vec3 MeanRadianceFromCentre(const PathTracer& tracer, int count, std::uint6
   return glm::vec3(sum / static_cast<double>(count));
 }
 
+// The furnace: the closed box of one diffuse material of this albedo, emitting 1 everywhere.
+TriangleScene MakeFurnace(float albedo)
+{
+  SceneMaterial material;
+  material.Diffuse = glm::vec3(albedo);
+  material.Emission = glm::vec3(1.0f);
+  return MakeClosedBox(material);
+}
+
+// Mean radiance seen from the furnace's centre over `count` paths of a tracer with `settings`.
+glm::vec3 FurnaceReading(float albedo, const PathTracerSettings& settings, int count)
+{
+  const TriangleScene box = MakeFurnace(albedo);
+  const EmbreeScene embree(box);
+  const PathTracer tracer(embree, settings);
+  return MeanRadianceFromCentre(tracer, count, 1);
+}
+
 struct FurnaceCase
 {
   float Albedo;
@@ -77,10 +95,7 @@ class Furnace : public ::testing::TestWithParam<FurnaceCase>
 
 TEST_P(Furnace, RadianceIsEmissionOverOneMinusAlbedo)
 {
-  SceneMaterial material;
-  material.Diffuse = glm::vec3(GetParam().Albedo);
-  material.Emission = glm::vec3(1.0f);
-  const TriangleScene box = MakeClosedBox(material);
+  const TriangleScene box = MakeFurnace(GetParam().Albedo);
   const EmbreeScene embree(box);
   PathTracerSettings settings;
   settings.Sampling = GetParam().Sampling;
@@ -109,15 +124,9 @@ INSTANTIATE_TEST_SUITE_P(PathTracer, Furnace,
 
 TEST(PathTracerNegative, DoubleCountedDirectLightFailsTheFurnace)
 {
-  SceneMaterial material;
-  material.Diffuse = glm::vec3(0.5f);
-  material.Emission = glm::vec3(1.0f);
-  const TriangleScene box = MakeClosedBox(material);
-  const EmbreeScene embree(box);
   PathTracerSettings settings;
   settings.Sampling = LightSampling::DoubleCounted;
-  const PathTracer tracer(embree, settings);
-  const glm::vec3 seen = MeanRadianceFromCentre(tracer, 4000, 1);
+  const glm::vec3 seen = FurnaceReading(0.5f, settings, 4000);
   EXPECT_GT(std::abs(seen.x - 2.0f), 0.1f * 2.0f) << "double counting must not pass the furnace";
 }
 
@@ -125,16 +134,10 @@ TEST(PathTracerNegative, NoRussianRouletteCompensationWouldBias)
 {
   // Truncating paths at a small depth (no roulette) loses the tail of the Neumann series:
   // with rho = 0.8 and 3 bounces the furnace reads 1 + .8 + .64 + .512 = 2.95, not 5.
-  SceneMaterial material;
-  material.Diffuse = glm::vec3(0.8f);
-  material.Emission = glm::vec3(1.0f);
-  const TriangleScene box = MakeClosedBox(material);
-  const EmbreeScene embree(box);
   PathTracerSettings settings;
   settings.MaxDepth = 3;
   settings.RouletteDepth = 1000;
-  const PathTracer tracer(embree, settings);
-  const glm::vec3 seen = MeanRadianceFromCentre(tracer, 2000, 1);
+  const glm::vec3 seen = FurnaceReading(0.8f, settings, 2000);
   EXPECT_NEAR(seen.x, 2.952f, 0.03f);
   EXPECT_GT(std::abs(seen.x - 5.0f), 0.5f);
 }

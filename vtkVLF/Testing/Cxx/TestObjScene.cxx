@@ -3,6 +3,7 @@
 // file:line, missing MTL and materials, scene checks (no emitter, degenerate and non-manifold
 // triangles), and the Cornell box written, read back and compared with the built-in one.
 #include "ObjScene.h"
+#include "SceneTestUtilities.h"
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
@@ -11,6 +12,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <utility>
 
 namespace
 {
@@ -19,6 +21,7 @@ using mesolight::vlf::ObjReadOptions;
 using mesolight::vlf::ObjSceneError;
 using mesolight::vlf::ObjSceneRead;
 using mesolight::vlf::ReadObjScene;
+using mesolight::vlftest::ExpectSameScene;
 
 std::string TempPath(const std::string& name)
 {
@@ -95,19 +98,22 @@ TEST(ObjScene, ReadsEveryStatement)
   EXPECT_TRUE(read.Warnings.empty()) << read.Warnings.front();
 }
 
+// OBJ lines "v i i^2 1" for the first `count` vertices.
+std::string SquareVertices(int count)
+{
+  std::string lines;
+  for (int v = 0; v < count; ++v)
+  {
+    lines += "v " + std::to_string(v) + " " + std::to_string(v * v) + " 1\n";
+  }
+  return lines;
+}
+
 TEST(ObjScene, ErrorsNameFileAndLine)
 {
-  std::string vertices;
-  for (int v = 0; v < 31; ++v)
-  {
-    vertices += "v " + std::to_string(v) + " " + std::to_string(v * v) + " 1\n";
-  }
+  const std::string vertices = SquareVertices(31);
   // Line 12 of a file whose vertex 40 does not exist (31 vertices).
-  std::string text;
-  for (int v = 0; v < 11; ++v)
-  {
-    text += "v " + std::to_string(v) + " " + std::to_string(v * v) + " 1\n";
-  }
+  std::string text = SquareVertices(11);
   text += "f 1 2 40\n";
   for (int v = 11; v < 31; ++v)
   {
@@ -119,19 +125,26 @@ TEST(ObjScene, ErrorsNameFileAndLine)
   const auto errorOf = [&](const std::string& body)
   { return ReadError(WriteText("bad.obj", vertices + body)); };
   const std::string bad = TempPath("bad.obj");
-  EXPECT_EQ(errorOf("f 1 2 40\n"), bad + ":32: face refers to vertex 40 of 31");
-  EXPECT_EQ(errorOf("f 1 2 0\n"), bad + ":32: face refers to vertex 0 of 31");
-  EXPECT_EQ(errorOf("f 1 2 -32\n"), bad + ":32: face refers to vertex -32 of 31");
-  EXPECT_EQ(errorOf("f 1 2\n"), bad + ":32: a face needs at least 3 vertices, got 2");
-  EXPECT_EQ(errorOf("f 1 2 x\n"), bad + ":32: cannot read 'x' as a vertex index");
-  EXPECT_EQ(errorOf("f 1/5 2/5 3/5\n"), bad + ":32: face refers to texture coordinate 5 of 0");
-  EXPECT_EQ(errorOf("f 1//2 2//2 3//2\n"), bad + ":32: face refers to normal 2 of 0");
-  EXPECT_EQ(errorOf("v 1 2\n"), bad + ":32: 'v' needs 3 numbers, got 2");
-  EXPECT_EQ(errorOf("v 1 2 zz\n"), bad + ":32: cannot read 'zz' as a number");
-  EXPECT_EQ(errorOf("v 1 nan 3\n"), bad + ":32: 'nan' is not a finite number");
-  EXPECT_EQ(errorOf("v 1 1e39 3\n"), bad + ":32: cannot read '1e39' as a number");
-  EXPECT_EQ(errorOf("usemtl\n"), bad + ":32: usemtl needs a material name");
-  EXPECT_EQ(errorOf(""), bad + ": no faces");
+  // Each body after the 31 vertices (its statement on line 32) and the error it must give.
+  const std::pair<std::string, std::string> cases[] = {
+    { "f 1 2 40\n", ":32: face refers to vertex 40 of 31" },
+    { "f 1 2 0\n", ":32: face refers to vertex 0 of 31" },
+    { "f 1 2 -32\n", ":32: face refers to vertex -32 of 31" },
+    { "f 1 2\n", ":32: a face needs at least 3 vertices, got 2" },
+    { "f 1 2 x\n", ":32: cannot read 'x' as a vertex index" },
+    { "f 1/5 2/5 3/5\n", ":32: face refers to texture coordinate 5 of 0" },
+    { "f 1//2 2//2 3//2\n", ":32: face refers to normal 2 of 0" },
+    { "v 1 2\n", ":32: 'v' needs 3 numbers, got 2" },
+    { "v 1 2 zz\n", ":32: cannot read 'zz' as a number" },
+    { "v 1 nan 3\n", ":32: 'nan' is not a finite number" },
+    { "v 1 1e39 3\n", ":32: cannot read '1e39' as a number" },
+    { "usemtl\n", ":32: usemtl needs a material name" },
+    { "", ": no faces" },
+  };
+  for (const auto& c : cases)
+  {
+    EXPECT_EQ(errorOf(c.first), bad + c.second) << c.first;
+  }
   EXPECT_EQ(ReadError(TempPath("does-not-exist.obj")),
     TempPath("does-not-exist.obj") + ": cannot open the file");
   // Not an OBJ at all: binary data, or text without any OBJ statement.
@@ -223,25 +236,6 @@ TEST(ObjScene, DegenerateAndNonManifoldTriangles)
   EXPECT_EQ(
     mesolight::vlf::CountNonManifoldEdges({ { 0, 1, 2 }, { 0, 3, 1 }, { 1, 3, 2 }, { 2, 3, 0 } }),
     0u);
-}
-
-void ExpectSameScene(const TriangleScene& a, const TriangleScene& b)
-{
-  ASSERT_EQ(a.Positions.size(), b.Positions.size());
-  ASSERT_EQ(a.Triangles, b.Triangles);
-  ASSERT_EQ(a.MaterialIds, b.MaterialIds);
-  for (std::size_t v = 0; v < a.Positions.size(); ++v)
-  {
-    ASSERT_EQ(a.Positions[v], b.Positions[v]) << "vertex " << v; // bit-exact: 9 digits
-  }
-  ASSERT_EQ(a.Materials.size(), b.Materials.size());
-  for (std::size_t m = 0; m < a.Materials.size(); ++m)
-  {
-    EXPECT_EQ(a.Materials[m].Name, b.Materials[m].Name);
-    EXPECT_EQ(a.Materials[m].Diffuse, b.Materials[m].Diffuse);
-    EXPECT_EQ(a.Materials[m].Specular, b.Materials[m].Specular);
-    EXPECT_EQ(a.Materials[m].Emission, b.Materials[m].Emission);
-  }
 }
 
 TEST(ObjScene, CornellBoxRoundTripAndNoOverwrite)

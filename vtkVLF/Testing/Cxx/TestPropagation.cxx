@@ -109,15 +109,19 @@ FurnaceResult RunFurnace(float albedo, int iterations, bool limit,
   return r;
 }
 
+// One line of the furnace's worst relative errors, after `what` (the case and its yardstick).
+void PrintFurnace(const char* what, const FurnaceResult& r)
+{
+  std::printf("[ furnace  ] %s: texel %.2e lookup %.2e gather %.2e (near walls %.2e)\n", what,
+    r.WorstTexel, r.WorstLookup, r.WorstGather, r.WorstGatherAnywhere);
+}
+
 TEST(VLFPropagation, FurnaceMatchesTheGeometricSeries)
 {
   // Every iteration adds exactly one term of the series: textures, radiance maps and the
   // gathered irradiance within 1e-4 of Le * sum_{i<=K} rho^i.
   const FurnaceResult r = RunFurnace(0.8f, 3, false, DiffuseNormalization::DiscreteCapacity);
-  std::printf(
-    "[ furnace  ] rho 0.8, 3 iterations vs partial sum: texel %.2e lookup %.2e gather %.2e "
-    "(near walls %.2e)\n",
-    r.WorstTexel, r.WorstLookup, r.WorstGather, r.WorstGatherAnywhere);
+  PrintFurnace("rho 0.8, 3 iterations vs partial sum", r);
   EXPECT_LT(r.WorstTexel, 1e-4);
   EXPECT_LT(r.WorstLookup, 1e-4);
   EXPECT_LT(r.WorstGather, 1e-4);
@@ -129,10 +133,7 @@ TEST(VLFPropagation, FurnaceReachesTheLimitWithinOnePercent)
   // rho = 0.5: after 7 iterations the missing remainder is rho^8 / (1 - rho) Le = 0.4%: the
   // iterations alone (no analytic remainder) reach Le / (1 - rho) within 1%.
   const FurnaceResult r = RunFurnace(0.5f, 7, true, DiffuseNormalization::DiscreteCapacity);
-  std::printf(
-    "[ furnace  ] rho 0.5, 7 iterations vs Le/(1-rho): texel %.2e lookup %.2e gather %.2e "
-    "(near walls %.2e)\n",
-    r.WorstTexel, r.WorstLookup, r.WorstGather, r.WorstGatherAnywhere);
+  PrintFurnace("rho 0.5, 7 iterations vs Le/(1-rho)", r);
   EXPECT_LT(r.WorstTexel, 0.01);
   EXPECT_LT(r.WorstLookup, 0.01);
   EXPECT_LT(r.WorstGather, 0.01);

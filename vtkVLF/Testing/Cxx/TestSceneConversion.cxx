@@ -2,6 +2,7 @@
 // Tests of the VTK side of the light field's scenes: vtkTriangleSceneConverter (round trips,
 // foreign polydata, bad input), vtkLightFieldSceneReader (the committed Cornell box OBJ against
 // vtkCornellBoxSource, errors and warnings as VTK events) and vtkCornellBoxSource.
+#include "SceneTestUtilities.h"
 #include "TriangleScene.h"
 #include "vtkCornellBoxSource.h"
 #include "vtkLightFieldSceneReader.h"
@@ -31,6 +32,7 @@
 namespace
 {
 using mesolight::TriangleScene;
+using mesolight::vlftest::ExpectSameScene;
 
 // Collects the error and warning messages an object reports.
 class MessageCollector : public vtkCommand
@@ -64,21 +66,6 @@ private:
     return false;
   }
 };
-
-void ExpectSameScene(const TriangleScene& a, const TriangleScene& b)
-{
-  ASSERT_EQ(a.Positions, b.Positions);
-  ASSERT_EQ(a.Triangles, b.Triangles);
-  ASSERT_EQ(a.MaterialIds, b.MaterialIds);
-  ASSERT_EQ(a.Materials.size(), b.Materials.size());
-  for (std::size_t m = 0; m < a.Materials.size(); ++m)
-  {
-    EXPECT_EQ(a.Materials[m].Name, b.Materials[m].Name);
-    EXPECT_EQ(a.Materials[m].Diffuse, b.Materials[m].Diffuse);
-    EXPECT_EQ(a.Materials[m].Specular, b.Materials[m].Specular);
-    EXPECT_EQ(a.Materials[m].Emission, b.Materials[m].Emission);
-  }
-}
 
 std::string TempPath(const std::string& name)
 {

@@ -2,6 +2,7 @@
 // Lat-long conventions, solid angles, exact irradiance, SH9 and light-probe converters
 // (core/EnvironmentMaps.h) against analytic values and hand-derived picture positions.
 #include "EnvironmentMaps.h"
+#include "LightingTestMaps.h"
 #include "MathConstants.h"
 
 #include <gtest/gtest.h>
@@ -11,19 +12,10 @@
 #include <vector>
 
 using mesolight::RgbImage;
+using mesolight::test::Constant;
 
 namespace
 {
-
-RgbImage Constant(int w, int h, float value)
-{
-  RgbImage map(w, h);
-  for (float& x : map.Rgb)
-  {
-    x = value;
-  }
-  return map;
-}
 
 /// Pixel (i, j) nearest to the radiance-weighted mean direction of the pixels brighter than
 /// half the maximum (the centre of a bright spot).

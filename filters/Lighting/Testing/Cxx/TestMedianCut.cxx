@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Median cut (core/MedianCut.h): orientation, solid-angle weighting, furnace, counts.
 #include "EnvironmentMaps.h"
+#include "LightingTestMaps.h"
 #include "MathConstants.h"
 #include "MedianCut.h"
 #include "ProceduralEnvironments.h"
@@ -16,19 +17,10 @@ using mesolight::MedianCutLight;
 using mesolight::MedianCutOptions;
 using mesolight::MedianCutStatus;
 using mesolight::RgbImage;
+using mesolight::test::Constant;
 
 namespace
 {
-
-RgbImage Constant(int w, int h, float value)
-{
-  RgbImage map(w, h);
-  for (float& x : map.Rgb)
-  {
-    x = value;
-  }
-  return map;
-}
 
 std::vector<MedianCutLight> Cut(
   const RgbImage& map, int n, bool variance = false, bool weighted = true)
