@@ -1,0 +1,366 @@
+// vtkLightFieldActor in a VTK renderer (offscreen; run under Xvfb): every mode against the path
+// tracer rendering the same camera of the same scene, the negative tests (atlas upside down, no
+// alpha composite, reflections one bounce short), and occlusion with an ordinary actor.
+#include "vtkLightFieldActor.h"
+
+#include "WalkthroughImage.h"
+#include "WalkthroughTestFields.h"
+#include "WalkthroughTracer.h"
+
+#include "EmbreeScene.h"
+#include "PatchComparison.h"
+#include "PathTracer.h"
+#include "PinholeCamera.h"
+
+#include <vtkActor.h>
+#include <vtkCamera.h>
+#include <vtkNew.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkProperty.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+#include <vtkSphereSource.h>
+#include <vtkUnsignedCharArray.h>
+
+#include <gtest/gtest.h>
+
+#include <glm/geometric.hpp>
+
+#include <chrono>
+#include <cstdlib>
+#include <iomanip>
+#include <iostream>
+#include <map>
+
+namespace mesolight
+{
+namespace
+{
+using walkthroughtest::MirrorCornellField;
+
+constexpr int Size = 128;          // image side (pixels)
+constexpr int ReferenceSamples = 512; // path-traced samples per pixel
+constexpr float Exposure = 0.6f;
+
+struct Images
+{
+  std::vector<glm::vec3> Radiance; // decoded from the 8-bit display values
+  std::vector<glm::vec3> Display;  // display values in [0, 1]
+};
+
+// The scene's renderer: the actor alone (plus optional others), the Cornell camera.
+struct Viewer
+{
+  vtkNew<vtkRenderWindow> Window;
+  vtkNew<vtkRenderer> Renderer;
+  vtkNew<vtkLightFieldActor> Actor;
+
+  explicit Viewer(const vlf::LightField& field)
+  {
+    this->Window->SetOffScreenRendering(1);
+    this->Window->SetMultiSamples(0);
+    this->Window->SetSize(Size, Size);
+    this->Window->AddRenderer(this->Renderer);
+    this->Renderer->SetBackground(0.0, 0.0, 0.0);
+    this->Actor->SetLightField(&field);
+    this->Actor->SetExposure(Exposure);
+    this->Renderer->AddActor(this->Actor);
+    const CornellCamera c;
+    vtkCamera* camera = this->Renderer->GetActiveCamera();
+    camera->SetPosition(c.Position.x, c.Position.y, c.Position.z);
+    camera->SetFocalPoint(c.FocalPoint.x, c.FocalPoint.y, c.FocalPoint.z);
+    camera->SetViewUp(c.ViewUp.x, c.ViewUp.y, c.ViewUp.z);
+    camera->SetViewAngle(c.ViewAngleDegrees);
+    this->Renderer->ResetCameraClippingRange();
+  }
+
+  Images Grab()
+  {
+    vtkNew<vtkUnsignedCharArray> pixels;
+    this->Window->GetPixelData(0, 0, Size - 1, Size - 1, 1, pixels);
+    Images images;
+    images.Radiance.resize(static_cast<std::size_t>(Size) * Size);
+    images.Display.resize(images.Radiance.size());
+    for (std::size_t i = 0; i < images.Radiance.size(); ++i)
+    {
+      const glm::vec3 display(pixels->GetValue(3 * static_cast<vtkIdType>(i)) / 255.0f,
+        pixels->GetValue(3 * static_cast<vtkIdType>(i) + 1) / 255.0f,
+        pixels->GetValue(3 * static_cast<vtkIdType>(i) + 2) / 255.0f);
+      images.Display[i] = display;
+      images.Radiance[i] = vlf::InverseToneMap(display, Exposure, vlf::ToneMapOperator::Clamp);
+    }
+    return images;
+  }
+
+  Images Render(int mode)
+  {
+    this->Actor->SetRenderMode(mode);
+    this->Window->Render();
+    return this->Grab();
+  }
+};
+
+vlf::ViewFrame CornellView(const vlf::LightField& field)
+{
+  const CornellCamera c;
+  vlf::ViewFrame view;
+  vlf::ViewFrame::Make(vlf::ToUnit(field, c.Position), vlf::ToUnit(field, c.FocalPoint), c.ViewUp,
+    c.ViewAngleDegrees, Size, Size, view);
+  return view;
+}
+
+// The path-traced reference in display-quantised radiance (what an exact renderer would show
+// through the same 8-bit display), and the mask of pixels to compare: 1 diffuse, 2 mirror, 0
+// other (background, emitters, pixels the display clips).
+struct Reference
+{
+  std::vector<glm::vec3> Radiance;
+  std::vector<std::uint8_t> Mask;
+};
+
+const Reference& PathTracedReference(std::size_t directions)
+{
+  static std::map<std::size_t, Reference> cache;
+  Reference& ref = cache[directions];
+  if (!ref.Radiance.empty())
+  {
+    return ref;
+  }
+  const vlf::LightField& field = MirrorCornellField(directions);
+  const EmbreeScene embree(field.Scene());
+  const PathTracer tracer(embree);
+  const CornellCamera c;
+  PinholeCamera camera;
+  camera.Position = vlf::ToUnit(field, c.Position);
+  camera.FocalPoint = vlf::ToUnit(field, c.FocalPoint);
+  camera.ViewUp = c.ViewUp;
+  camera.ViewAngleDegrees = c.ViewAngleDegrees;
+  const auto start = std::chrono::steady_clock::now();
+  const RgbImage image = tracer.RenderImage(camera, Size, Size, ReferenceSamples, 1);
+  std::cout << "path-traced reference " << Size << "x" << Size << " at " << ReferenceSamples << " spp: "
+            << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << " s\n";
+  const vlf::WalkthroughTracer walk(field);
+  const std::vector<vlf::PixelClass> classes = walk.ClassifyView(CornellView(field));
+  ref.Radiance.resize(classes.size());
+  ref.Mask.assign(classes.size(), 0);
+  for (std::size_t i = 0; i < classes.size(); ++i)
+  {
+    const float* p = image.Rgb.data() + 3 * i;
+    glm::vec3 display = vlf::ToneMap(glm::vec3(p[0], p[1], p[2]), Exposure, vlf::ToneMapOperator::Clamp);
+    display = glm::round(display * 255.0f) / 255.0f;
+    ref.Radiance[i] = vlf::InverseToneMap(display, Exposure, vlf::ToneMapOperator::Clamp);
+    const bool clipped = std::max(display.x, std::max(display.y, display.z)) >= 1.0f;
+    if (!clipped && classes[i] == vlf::PixelClass::Diffuse)
+    {
+      ref.Mask[i] = 1;
+    }
+    else if (!clipped && classes[i] == vlf::PixelClass::Mirror)
+    {
+      ref.Mask[i] = 2;
+    }
+  }
+  return ref;
+}
+
+constexpr float Floor = 0.03f; // relative errors of pixels darker than this (RGB sum) use it
+
+struct ModeErrors
+{
+  vlf::ErrorStatistics Diffuse, Mirror;
+};
+
+ModeErrors Measure(const Images& images, const Reference& ref)
+{
+  return ModeErrors{ vlf::RelativeError(images.Radiance, ref.Radiance, ref.Mask, 1, Floor),
+    vlf::RelativeError(images.Radiance, ref.Radiance, ref.Mask, 2, Floor) };
+}
+
+void Print(std::size_t directions, const std::string& mode, const ModeErrors& e)
+{
+  std::cout << std::fixed << std::setprecision(4) << "errors " << directions << " " << std::setw(18) << std::left
+            << mode << std::right << " diffuse mean " << e.Diffuse.Mean << " p95 " << e.Diffuse.Percentile95
+            << " (" << e.Diffuse.Pixels << " px)  mirror mean " << e.Mirror.Mean << " p95 "
+            << e.Mirror.Percentile95 << " (" << e.Mirror.Pixels << " px)\n";
+}
+
+void ModesAgainstPathTracer(std::size_t directions)
+{
+  const vlf::LightField& field = MirrorCornellField(directions);
+  const Reference& ref = PathTracedReference(directions);
+  Viewer viewer(field);
+  ASSERT_TRUE(viewer.Actor->HasMirrors());
+
+  const ModeErrors raytrace = Measure(viewer.Render(vtkLightFieldActor::Raytrace), ref);
+  const ModeErrors moving = Measure(viewer.Render(vtkLightFieldActor::Progressive), ref);
+  EXPECT_FALSE(viewer.Actor->GetLastFrameConverged());
+  ASSERT_TRUE(viewer.Actor->WaitForTracedReflections(60.0));
+  const ModeErrors rest = Measure(viewer.Render(vtkLightFieldActor::Progressive), ref);
+  EXPECT_TRUE(viewer.Actor->GetLastFrameConverged());
+  const ModeErrors coherent = Measure(viewer.Render(vtkLightFieldActor::Coherent), ref);
+  Print(directions, "raytrace", raytrace);
+  Print(directions, "progressive-moving", moving);
+  Print(directions, "progressive-rest", rest);
+  Print(directions, "coherent", coherent);
+
+  // Negative tests: each must visibly fail.
+  viewer.Actor->SetFlipAtlasForTesting(true);
+  const ModeErrors flipped = Measure(viewer.Render(vtkLightFieldActor::Coherent), ref);
+  viewer.Actor->SetFlipAtlasForTesting(false);
+  viewer.Actor->SetOverwriteCompositeForTesting(true);
+  const ModeErrors overwrite = Measure(viewer.Render(vtkLightFieldActor::Coherent), ref);
+  viewer.Actor->SetOverwriteCompositeForTesting(false);
+  viewer.Actor->SetReflectionBouncesShortForTesting(1);
+  const ModeErrors shortBounce = Measure(viewer.Render(vtkLightFieldActor::Coherent), ref);
+  viewer.Actor->SetReflectionBouncesShortForTesting(0);
+  Print(directions, "neg:atlas-flipped", flipped);
+  Print(directions, "neg:no-alpha", overwrite);
+  Print(directions, "neg:one-short", shortBounce);
+
+  // Diffuse pixels: the GPU's textures (progressive/coherent) and the field lookup (raytrace).
+  EXPECT_LT(coherent.Diffuse.Mean, 0.12);
+  EXPECT_LT(raytrace.Diffuse.Mean, 0.15);
+  EXPECT_NEAR(rest.Diffuse.Mean, coherent.Diffuse.Mean, 0.005);
+  // Mirror pixels: coherent ~ progressive at rest < raytrace < progressive moving.
+  EXPECT_NEAR(coherent.Mirror.Mean, rest.Mirror.Mean, 0.01);
+  EXPECT_LT(rest.Mirror.Mean, raytrace.Mirror.Mean);
+  EXPECT_LT(raytrace.Mirror.Mean, moving.Mirror.Mean);
+  EXPECT_LT(coherent.Mirror.Mean, 0.2);
+  // Negative tests.
+  EXPECT_GT(flipped.Diffuse.Mean, coherent.Diffuse.Mean + 0.2);
+  EXPECT_GT(overwrite.Diffuse.Mean, coherent.Diffuse.Mean + 0.1);
+  EXPECT_GT(shortBounce.Mirror.Mean, 0.8);
+}
+
+TEST(Walkthrough, ModesAgainstPathTracer513)
+{
+  ModesAgainstPathTracer(513);
+}
+
+TEST(Walkthrough, ModesAgainstPathTracer2049)
+{
+  ModesAgainstPathTracer(2049);
+}
+
+TEST(Walkthrough, ModesAgainstPathTracer8193)
+{
+  if (!std::getenv("MESOLIGHT_WALKTHROUGH_8193"))
+  {
+    GTEST_SKIP() << "set MESOLIGHT_WALKTHROUGH_8193=1 (about a minute more)";
+  }
+  ModesAgainstPathTracer(8193);
+}
+
+// An ordinary actor (an unlit sphere) inside the box, partly hidden by the short block and partly
+// in front of the mirror block: in every mode its visible pixels are exactly those a ray cast of
+// the same scene plus the analytic sphere gives it.
+TEST(Walkthrough, OrdinaryActorOccludesAndIsOccludedInEveryMode)
+{
+  const vlf::LightField& field = MirrorCornellField(513);
+  Viewer viewer(field);
+  const glm::vec3 centre(250.0f, 150.0f, 230.0f);
+  const float radius = 80.0f;
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetCenter(centre.x, centre.y, centre.z);
+  sphere->SetRadius(radius);
+  sphere->SetThetaResolution(256);
+  sphere->SetPhiResolution(256);
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(sphere->GetOutputPort());
+  vtkNew<vtkActor> ball;
+  ball->SetMapper(mapper);
+  ball->GetProperty()->SetColor(1.0, 0.0, 1.0);
+  ball->GetProperty()->LightingOff();
+  viewer.Renderer->AddActor(ball);
+  viewer.Renderer->ResetCameraClippingRange();
+
+  // The ray-cast mask: the field's scene and the sphere (unit coordinates).
+  SceneSphere unitSphere;
+  unitSphere.Center = vlf::ToUnit(field, centre);
+  unitSphere.Radius = radius * field.NormalizationScale();
+  const EmbreeScene withSphere(field.Scene(), { unitSphere });
+  const vlf::ViewFrame view = CornellView(field);
+  std::vector<std::uint8_t> expected(static_cast<std::size_t>(Size) * Size, 0);
+  std::size_t visible = 0, hidden = 0, overMirror = 0;
+  const vlf::WalkthroughTracer walk(field);
+  const std::vector<vlf::PixelClass> classes = walk.ClassifyView(view);
+  for (int y = 0; y < Size; ++y)
+  {
+    for (int x = 0; x < Size; ++x)
+    {
+      const SceneRay ray = view.Ray(x + 0.5f, y + 0.5f);
+      const SceneHit hit = withSphere.Intersect(ray);
+      const std::size_t i = static_cast<std::size_t>(y) * Size + x;
+      // Sphere alone along this ray?
+      const glm::vec3 oc = ray.Origin - unitSphere.Center;
+      const float b = glm::dot(oc, ray.Direction);
+      const bool onSphere = b * b - (glm::dot(oc, oc) - unitSphere.Radius * unitSphere.Radius) > 0.0f;
+      if (hit.Sphere != SceneHit::None)
+      {
+        expected[i] = 1;
+        ++visible;
+        overMirror += classes[i] == vlf::PixelClass::Mirror ? 1 : 0;
+      }
+      else if (onSphere)
+      {
+        ++hidden;
+      }
+    }
+  }
+  std::cout << "sphere: " << visible << " visible pixels (" << overMirror << " in front of the mirror), "
+            << hidden << " hidden by the box\n";
+  ASSERT_GT(visible, 200u);
+  ASSERT_GT(hidden, 50u);
+  ASSERT_GT(overMirror, 20u);
+  for (int mode = vtkLightFieldActor::Geometry; mode <= vtkLightFieldActor::Coherent; ++mode)
+  {
+    const Images images = viewer.Render(mode);
+    std::size_t both = 0, onlyGL = 0, onlyRay = 0;
+    for (std::size_t i = 0; i < expected.size(); ++i)
+    {
+      const glm::vec3 d = images.Display[i];
+      const bool magenta = d.x > 0.99f && d.y < 0.01f && d.z > 0.99f;
+      both += magenta && expected[i] ? 1 : 0;
+      onlyGL += magenta && !expected[i] ? 1 : 0;
+      onlyRay += !magenta && expected[i] ? 1 : 0;
+    }
+    std::cout << "sphere mask, " << vtkLightFieldActor::GetRenderModeAsString(mode) << ": " << both
+              << " agree, " << onlyGL << " only drawn, " << onlyRay << " only ray cast\n";
+    // Tessellated vs analytic silhouette and pixel-centre sampling: a thin outline at most.
+    EXPECT_LE(onlyGL + onlyRay, visible / 50 + 8);
+  }
+}
+
+// Bad input: no crash, clear messages.
+TEST(Walkthrough, BadInputIsReportedNotCrashed)
+{
+  vtkNew<vtkLightFieldActor> actor;
+  EXPECT_FALSE(actor->LoadLightField("/nonexistent/field.vlf"));
+  EXPECT_NE(actor->GetLastError().find("field.vlf"), std::string::npos) << actor->GetLastError();
+  std::cout << "missing file: " << actor->GetLastError() << "\n";
+  // A renderer with the actor but no field, and a zero-size viewport: nothing drawn, no crash.
+  vtkNew<vtkRenderWindow> window;
+  window->SetOffScreenRendering(1);
+  window->SetSize(32, 32);
+  vtkNew<vtkRenderer> renderer;
+  renderer->SetViewport(0.0, 0.0, 0.0, 0.0);
+  window->AddRenderer(renderer);
+  renderer->AddActor(actor);
+  window->Render();
+  actor->SetLightField(&MirrorCornellField(513));
+  for (int mode = vtkLightFieldActor::Geometry; mode <= vtkLightFieldActor::Coherent; ++mode)
+  {
+    actor->SetRenderMode(mode);
+    window->Render();
+  }
+  // Camera inside the tall block: back faces everywhere (a warning, black pixels).
+  renderer->SetViewport(0.0, 0.0, 1.0, 1.0);
+  renderer->GetActiveCamera()->SetPosition(370.0, 150.0, 350.0);
+  renderer->GetActiveCamera()->SetFocalPoint(370.0, 150.0, 600.0);
+  renderer->ResetCameraClippingRange();
+  actor->SetRenderModeToRaytrace();
+  window->Render();
+  SUCCEED();
+}
+
+} // namespace
+} // namespace mesolight
