@@ -221,8 +221,9 @@ glm::vec3 WalkthroughTracer::MirrorRadiance(std::uint32_t s, const glm::vec3& p,
   switch (quality)
   {
     case SpecularQuality::Moving:
+      // One direction instead of three (nearest cells leave holes where a line just misses).
       return this->FieldLookup.RadianceLeaving(
-        s, p, toEye, CellInterpolation::Nearest, DirectionInterpolation::Nearest);
+        s, p, toEye, CellInterpolation::Bilinear, DirectionInterpolation::Nearest);
     case SpecularQuality::Raytrace:
       return this->FieldLookup.RadianceLeaving(
         s, p, toEye, CellInterpolation::Bilinear, DirectionInterpolation::Spherical);

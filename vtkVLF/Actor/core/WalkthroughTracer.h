@@ -4,7 +4,8 @@
 //   - raytrace (§2.4.2.2.2): the first hit's radiance leaving toward the eye, looked up in the
 //     field (three nearest directions with spherical weights, 8-neighbour cell interpolation);
 //   - progressive while the camera moves (§2.4.2.2.3): mirror pixels read the field in the
-//     reflected direction at low resolution (nearest direction, nearest cell): fast, blurry;
+//     reflected direction at low directional resolution (the nearest direction only, 8-neighbour
+//     cells): fast, blurry;
 //   - progressive at rest and coherent (§2.4.2.2.3-4): mirror pixels trace the reflection
 //     recursively to the first diffuse hit and read its total diffuse texture: sharp. Coherent
 //     traces 4 x 4 pixel tiles as 16-ray packets (Embree), primary and reflected rays alike.
@@ -80,7 +81,7 @@ enum class PixelClass : std::uint8_t
 
 enum class SpecularQuality
 {
-  Moving,   // field lookup, nearest direction and cell (progressive, camera moving)
+  Moving,   // field lookup, nearest direction, bilinear cells (progressive, camera moving)
   Raytrace, // field lookup, spherical three-direction + 8-neighbour interpolation
   Traced    // reflection traced to the first diffuse hit, its total texture (at rest, coherent)
 };

@@ -27,7 +27,10 @@
 #include <glm/geometric.hpp>
 
 #include <chrono>
+#include <cmath>
+#include <cstdio>
 #include <cstdlib>
+#include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <map>
@@ -38,8 +41,8 @@ namespace
 {
 using walkthroughtest::MirrorCornellField;
 
-constexpr int Size = 128;          // image side (pixels)
-constexpr int ReferenceSamples = 512; // path-traced samples per pixel
+constexpr int Size = 96;               // image side (pixels)
+constexpr int ReferenceSamples = 2048; // path-traced samples per pixel (the mirror's caustics are noisy)
 constexpr float Exposure = 0.6f;
 
 struct Images
@@ -116,7 +119,47 @@ struct Reference
 {
   std::vector<glm::vec3> Radiance;
   std::vector<std::uint8_t> Mask;
+  std::vector<glm::vec3> OtherSeed; // the same reference with another seed: the noise floor
 };
+
+// The path tracer's image of the camera, kept in the test directory between runs (the scene,
+// camera, size and samples are fixed; ctest runs every test in its own process).
+RgbImage CachedPathTrace(const PathTracer& tracer, const PinholeCamera& camera, std::uint64_t seed)
+{
+  const std::string path = std::string(MESOLIGHT_TEST_TEMP_DIR) + "/walkthrough-reference-" +
+    std::to_string(Size) + "-" + std::to_string(ReferenceSamples) + "-" + std::to_string(seed) + ".bin";
+  RgbImage image(Size, Size);
+  {
+    std::ifstream in(path, std::ios::binary);
+    if (in.read(reinterpret_cast<char*>(image.Rgb.data()), static_cast<std::streamsize>(image.Rgb.size() * sizeof(float))))
+    {
+      return image;
+    }
+  }
+  const auto start = std::chrono::steady_clock::now();
+  image = tracer.RenderImage(camera, Size, Size, ReferenceSamples, seed);
+  std::cout << "path-traced reference " << Size << "x" << Size << " at " << ReferenceSamples << " spp (seed "
+            << seed << "): " << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()
+            << " s\n";
+  std::ofstream out(path + ".tmp", std::ios::binary);
+  out.write(reinterpret_cast<const char*>(image.Rgb.data()), static_cast<std::streamsize>(image.Rgb.size() * sizeof(float)));
+  out.close();
+  std::rename((path + ".tmp").c_str(), path.c_str());
+  return image;
+}
+
+std::vector<glm::vec3> Quantised(const RgbImage& image)
+{
+  std::vector<glm::vec3> out(static_cast<std::size_t>(image.Width) * image.Height);
+  for (std::size_t i = 0; i < out.size(); ++i)
+  {
+    const float* p = image.Rgb.data() + 3 * i;
+    glm::vec3 display = vlf::ToneMap(glm::vec3(p[0], p[1], p[2]), Exposure, vlf::ToneMapOperator::Clamp);
+    display = glm::round(display * 255.0f) / 255.0f;
+    out[i] = vlf::InverseToneMap(display, Exposure, vlf::ToneMapOperator::Clamp);
+  }
+  return out;
+}
 
 const Reference& PathTracedReference(std::size_t directions)
 {
@@ -135,21 +178,16 @@ const Reference& PathTracedReference(std::size_t directions)
   camera.FocalPoint = vlf::ToUnit(field, c.FocalPoint);
   camera.ViewUp = c.ViewUp;
   camera.ViewAngleDegrees = c.ViewAngleDegrees;
-  const auto start = std::chrono::steady_clock::now();
-  const RgbImage image = tracer.RenderImage(camera, Size, Size, ReferenceSamples, 1);
-  std::cout << "path-traced reference " << Size << "x" << Size << " at " << ReferenceSamples << " spp: "
-            << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << " s\n";
+  const RgbImage image = CachedPathTrace(tracer, camera, 1);
   const vlf::WalkthroughTracer walk(field);
   const std::vector<vlf::PixelClass> classes = walk.ClassifyView(CornellView(field));
-  ref.Radiance.resize(classes.size());
+  ref.Radiance = Quantised(image);
+  ref.OtherSeed = Quantised(CachedPathTrace(tracer, camera, 2));
   ref.Mask.assign(classes.size(), 0);
   for (std::size_t i = 0; i < classes.size(); ++i)
   {
-    const float* p = image.Rgb.data() + 3 * i;
-    glm::vec3 display = vlf::ToneMap(glm::vec3(p[0], p[1], p[2]), Exposure, vlf::ToneMapOperator::Clamp);
-    display = glm::round(display * 255.0f) / 255.0f;
-    ref.Radiance[i] = vlf::InverseToneMap(display, Exposure, vlf::ToneMapOperator::Clamp);
-    const bool clipped = std::max(display.x, std::max(display.y, display.z)) >= 1.0f;
+    const glm::vec3 display = vlf::ToneMap(ref.Radiance[i], Exposure, vlf::ToneMapOperator::Clamp);
+    const bool clipped = std::max(display.x, std::max(display.y, display.z)) >= 0.999f;
     if (!clipped && classes[i] == vlf::PixelClass::Diffuse)
     {
       ref.Mask[i] = 1;
@@ -162,17 +200,62 @@ const Reference& PathTracedReference(std::size_t directions)
   return ref;
 }
 
+// MESOLIGHT_WALKTHROUGH_DUMP=DIR writes the compared images as PPM files (for inspection).
+void Dump(const std::string& name, const std::vector<glm::vec3>& radiance)
+{
+  const char* dir = std::getenv("MESOLIGHT_WALKTHROUGH_DUMP");
+  if (!dir)
+  {
+    return;
+  }
+  std::ofstream out(std::string(dir) + "/" + name + ".ppm", std::ios::binary);
+  out << "P6\n" << Size << " " << Size << "\n255\n";
+  for (int y = Size - 1; y >= 0; --y)
+  {
+    for (int x = 0; x < Size; ++x)
+    {
+      const glm::vec3 d = vlf::ToneMap(radiance[static_cast<std::size_t>(y) * Size + x], Exposure,
+        vlf::ToneMapOperator::Clamp);
+      for (int c = 0; c < 3; ++c)
+      {
+        out.put(static_cast<char>(std::lround(255.0f * d[c])));
+      }
+    }
+  }
+}
+
 constexpr float Floor = 0.03f; // relative errors of pixels darker than this (RGB sum) use it
 
 struct ModeErrors
 {
   vlf::ErrorStatistics Diffuse, Mirror;
+  double DiffuseBias = 0.0, MirrorBias = 0.0; // sum(image) / sum(reference) - 1
 };
 
-ModeErrors Measure(const Images& images, const Reference& ref)
+double Bias(const std::vector<glm::vec3>& image, const Reference& ref, std::uint8_t which)
 {
+  double a = 0.0, r = 0.0;
+  for (std::size_t i = 0; i < ref.Mask.size(); ++i)
+  {
+    if (ref.Mask[i] == which)
+    {
+      a += image[i].x + image[i].y + image[i].z;
+      r += ref.Radiance[i].x + ref.Radiance[i].y + ref.Radiance[i].z;
+    }
+  }
+  return r > 0.0 ? a / r - 1.0 : 0.0;
+}
+
+ModeErrors Measure(const Images& images, const Reference& ref, const std::string& name = "")
+{
+  if (!name.empty())
+  {
+    Dump(name, images.Radiance);
+    Dump("reference", ref.Radiance);
+  }
   return ModeErrors{ vlf::RelativeError(images.Radiance, ref.Radiance, ref.Mask, 1, Floor),
-    vlf::RelativeError(images.Radiance, ref.Radiance, ref.Mask, 2, Floor) };
+    vlf::RelativeError(images.Radiance, ref.Radiance, ref.Mask, 2, Floor), Bias(images.Radiance, ref, 1),
+    Bias(images.Radiance, ref, 2) };
 }
 
 void Print(std::size_t directions, const std::string& mode, const ModeErrors& e)
@@ -180,7 +263,8 @@ void Print(std::size_t directions, const std::string& mode, const ModeErrors& e)
   std::cout << std::fixed << std::setprecision(4) << "errors " << directions << " " << std::setw(18) << std::left
             << mode << std::right << " diffuse mean " << e.Diffuse.Mean << " p95 " << e.Diffuse.Percentile95
             << " (" << e.Diffuse.Pixels << " px)  mirror mean " << e.Mirror.Mean << " p95 "
-            << e.Mirror.Percentile95 << " (" << e.Mirror.Pixels << " px)\n";
+            << e.Mirror.Percentile95 << " (" << e.Mirror.Pixels << " px)  bias diffuse " << std::showpos
+            << e.DiffuseBias << " mirror " << e.MirrorBias << std::noshowpos << "\n";
 }
 
 void ModesAgainstPathTracer(std::size_t directions)
@@ -189,14 +273,19 @@ void ModesAgainstPathTracer(std::size_t directions)
   const Reference& ref = PathTracedReference(directions);
   Viewer viewer(field);
   ASSERT_TRUE(viewer.Actor->HasMirrors());
+  Images other;
+  other.Radiance = ref.OtherSeed;
+  const ModeErrors noise = Measure(other, ref);
+  Print(directions, "path-tracer-seed2", noise);
 
-  const ModeErrors raytrace = Measure(viewer.Render(vtkLightFieldActor::Raytrace), ref);
-  const ModeErrors moving = Measure(viewer.Render(vtkLightFieldActor::Progressive), ref);
+  const std::string tag = std::to_string(directions) + "-";
+  const ModeErrors raytrace = Measure(viewer.Render(vtkLightFieldActor::Raytrace), ref, tag + "raytrace");
+  const ModeErrors moving = Measure(viewer.Render(vtkLightFieldActor::Progressive), ref, tag + "moving");
   EXPECT_FALSE(viewer.Actor->GetLastFrameConverged());
   ASSERT_TRUE(viewer.Actor->WaitForTracedReflections(60.0));
-  const ModeErrors rest = Measure(viewer.Render(vtkLightFieldActor::Progressive), ref);
+  const ModeErrors rest = Measure(viewer.Render(vtkLightFieldActor::Progressive), ref, tag + "rest");
   EXPECT_TRUE(viewer.Actor->GetLastFrameConverged());
-  const ModeErrors coherent = Measure(viewer.Render(vtkLightFieldActor::Coherent), ref);
+  const ModeErrors coherent = Measure(viewer.Render(vtkLightFieldActor::Coherent), ref, tag + "coherent");
   Print(directions, "raytrace", raytrace);
   Print(directions, "progressive-moving", moving);
   Print(directions, "progressive-rest", rest);
@@ -216,19 +305,28 @@ void ModesAgainstPathTracer(std::size_t directions)
   Print(directions, "neg:no-alpha", overwrite);
   Print(directions, "neg:one-short", shortBounce);
 
-  // Diffuse pixels: the GPU's textures (progressive/coherent) and the field lookup (raytrace).
-  EXPECT_LT(coherent.Diffuse.Mean, 0.12);
-  EXPECT_LT(raytrace.Diffuse.Mean, 0.15);
+  // The per-pixel comparison is bounded below by the reference's own noise (two path-traced
+  // seeds differ by `noise`): every mode must stay within 1.5 x that floor, and its mean bias
+  // (the field's missing bounces and mirror losses) within 8%.
+  for (const ModeErrors* e : { &raytrace, &rest, &coherent })
+  {
+    EXPECT_LT(e->Diffuse.Mean, 1.5 * noise.Diffuse.Mean);
+    EXPECT_LT(std::abs(e->DiffuseBias), 0.08);
+  }
   EXPECT_NEAR(rest.Diffuse.Mean, coherent.Diffuse.Mean, 0.005);
   // Mirror pixels: coherent ~ progressive at rest < raytrace < progressive moving.
   EXPECT_NEAR(coherent.Mirror.Mean, rest.Mirror.Mean, 0.01);
   EXPECT_LT(rest.Mirror.Mean, raytrace.Mirror.Mean);
   EXPECT_LT(raytrace.Mirror.Mean, moving.Mirror.Mean);
-  EXPECT_LT(coherent.Mirror.Mean, 0.2);
-  // Negative tests.
-  EXPECT_GT(flipped.Diffuse.Mean, coherent.Diffuse.Mean + 0.2);
-  EXPECT_GT(overwrite.Diffuse.Mean, coherent.Diffuse.Mean + 0.1);
-  EXPECT_GT(shortBounce.Mirror.Mean, 0.8);
+  EXPECT_LT(coherent.Mirror.Mean, 1.5 * noise.Mirror.Mean);
+  EXPECT_LT(std::abs(coherent.MirrorBias), 0.08);
+  // Negative tests: the upside-down atlas puts other texels on every diffuse pixel; pasting the
+  // screen rectangle without alpha blackens the diffuse pixels around the mirror (the worst 5%
+  // are 100% off); stopping one bounce short leaves the Kd = 0 mirror black.
+  EXPECT_GT(flipped.Diffuse.Mean, coherent.Diffuse.Mean + 0.5);
+  EXPECT_GT(overwrite.Diffuse.Percentile95, coherent.Diffuse.Percentile95 + 0.3);
+  EXPECT_GT(overwrite.Diffuse.Mean, coherent.Diffuse.Mean + 0.03);
+  EXPECT_GT(shortBounce.Mirror.Mean, 0.9);
 }
 
 TEST(Walkthrough, ModesAgainstPathTracer513)
@@ -257,8 +355,8 @@ TEST(Walkthrough, OrdinaryActorOccludesAndIsOccludedInEveryMode)
 {
   const vlf::LightField& field = MirrorCornellField(513);
   Viewer viewer(field);
-  const glm::vec3 centre(250.0f, 150.0f, 230.0f);
-  const float radius = 80.0f;
+  const glm::vec3 centre(490.0f, 110.0f, 420.0f);
+  const float radius = 75.0f;
   vtkNew<vtkSphereSource> sphere;
   sphere->SetCenter(centre.x, centre.y, centre.z);
   sphere->SetRadius(radius);
@@ -308,7 +406,7 @@ TEST(Walkthrough, OrdinaryActorOccludesAndIsOccludedInEveryMode)
   }
   std::cout << "sphere: " << visible << " visible pixels (" << overMirror << " in front of the mirror), "
             << hidden << " hidden by the box\n";
-  ASSERT_GT(visible, 200u);
+  ASSERT_GT(visible, 150u);
   ASSERT_GT(hidden, 50u);
   ASSERT_GT(overMirror, 20u);
   for (int mode = vtkLightFieldActor::Geometry; mode <= vtkLightFieldActor::Coherent; ++mode)
