@@ -3,6 +3,7 @@
 #include "AnalyticCases.h"
 #include "ChartPlot.h"
 #include "CommandLine.h"
+#include "LightFieldViewCommand.h"
 
 #include "EmbreeScene.h"
 #include "LightField.h"
@@ -466,6 +467,7 @@ int RunVlfCommand(const std::vector<std::string>& args)
     std::cout << usage;
     return args.empty() ? 2 : 0;
   }
+  if (IsLightFieldViewCommand(args)) return RunLightFieldViewCommand(args); // vtkLightFieldActor
   const std::vector<std::string> rest(args.begin() + 1, args.end());
   if (args[0] == "propagate")
   {

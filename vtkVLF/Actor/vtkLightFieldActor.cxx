@@ -103,6 +103,9 @@ vtkLightFieldActor::vtkLightFieldActor()
 {
   vtkNew<vtkLightFieldMapper> mapper;
   this->SetMapper(mapper);
+  // Geometry mode: walls seen edge-on by the headlight would be black without some ambient.
+  this->GetProperty()->SetAmbient(0.35);
+  this->GetProperty()->SetDiffuse(0.65);
 }
 
 //------------------------------------------------------------------------------
@@ -246,6 +249,84 @@ bool vtkLightFieldActor::UseField(const mesolight::vlf::LightField* field)
 }
 
 //------------------------------------------------------------------------------
+mesolight::vlf::TraceOptions vtkLightFieldActor::CurrentTraceOptions() const
+{
+  vlf::TraceOptions options;
+  options.MaximumDepth = this->MaximumReflectionDepth;
+  options.BouncesShortForTesting = this->ReflectionBouncesShortForTesting;
+  return options;
+}
+
+//------------------------------------------------------------------------------
+void vtkLightFieldActor::TraceAtRest()
+{
+  Internals& impl = *this->Impl;
+  if (!impl.Tracer || !impl.HaveLastView || this->RenderMode != Progressive)
+  {
+    return;
+  }
+  const vlf::ViewFrame view = impl.LastView;
+  {
+    std::lock_guard<std::mutex> lock(impl.Mutex);
+    if ((impl.WorkerRunning && impl.WorkerView == view) || (impl.SharpReady && impl.SharpView == view))
+    {
+      return;
+    }
+  }
+  const vlf::PixelRect rect = impl.Tracer->MirrorRect(view);
+  if (rect.Empty())
+  {
+    std::lock_guard<std::mutex> lock(impl.Mutex);
+    impl.Sharp.clear();
+    impl.SharpRect = rect;
+    impl.SharpView = view;
+    impl.SharpReady = true;
+    return;
+  }
+  impl.StopWorker();
+  const unsigned generation = impl.Generation.load();
+  {
+    std::lock_guard<std::mutex> lock(impl.Mutex);
+    impl.WorkerRunning = true;
+    impl.WorkerView = view;
+  }
+  const vlf::TraceOptions options = this->CurrentTraceOptions();
+  const vlf::WalkthroughTracer* tracer = impl.Tracer.get();
+  Internals* self = &impl;
+  // One worker thread, row by row (Wither 2005 §2.4.2.2.3: the high-quality rendering
+  // progresses in another thread), abandoned between rows when the view changes.
+  impl.Worker = std::thread([self, tracer, view, rect, options, generation]() {
+    std::vector<float> image(rect.Pixels() * 4, 0.0f);
+    bool cancelled = false;
+    for (int row = rect.Y0; row < rect.Y1; ++row)
+    {
+      if (self->Generation.load() != generation)
+      {
+        cancelled = true;
+        break;
+      }
+      tracer->ShadeRows(view, rect, false, vlf::SpecularQuality::Traced, options, row, row + 1, image.data());
+    }
+    if (!cancelled)
+    {
+      vlf::WalkthroughTracer::DilateEdges(rect, image.data());
+    }
+    {
+      std::lock_guard<std::mutex> lock(self->Mutex);
+      if (!cancelled)
+      {
+        self->Sharp = std::move(image);
+        self->SharpRect = rect;
+        self->SharpView = view;
+        self->SharpReady = true;
+      }
+      self->WorkerRunning = false;
+    }
+    self->Done.notify_all();
+  });
+}
+
+//------------------------------------------------------------------------------
 bool vtkLightFieldActor::WaitForTracedReflections(double seconds)
 {
   Internals& impl = *this->Impl;
@@ -253,6 +334,8 @@ bool vtkLightFieldActor::WaitForTracedReflections(double seconds)
   {
     return true;
   }
+  // The caller waits: the camera rests, so trace the last view if nothing is doing so.
+  this->TraceAtRest();
   std::unique_lock<std::mutex> lock(impl.Mutex);
   impl.Done.wait_for(lock, std::chrono::duration<double>(seconds),
     [&] { return !impl.WorkerRunning; });
@@ -352,24 +435,25 @@ bool vtkLightFieldActor::PrepareFrame(vtkRenderer* renderer)
   impl.LastView = view;
   impl.HaveLastView = true;
 
-  vlf::TraceOptions options;
-  options.MaximumDepth = this->MaximumReflectionDepth;
-  options.BouncesShortForTesting = this->ReflectionBouncesShortForTesting;
+  const vlf::TraceOptions options = this->CurrentTraceOptions();
   const vlf::WalkthroughTracer& tracer = *impl.Tracer;
   const Clock::time_point start = Clock::now();
   std::atomic<std::size_t> valued{ 0 };
-
-  auto shadeRows = [&](const vlf::PixelRect& rect, bool all, vlf::SpecularQuality quality, float* out) {
-    vtkSMPTools::For(rect.Y0, rect.Y1, 8, [&](vtkIdType r0, vtkIdType r1) {
-      valued += tracer.ShadeRows(view, rect, all, quality, options, static_cast<int>(r0), static_cast<int>(r1), out);
-    });
+  // One parallel pass over 4 x 4 pixel tiles: primary rays in 16-ray packets.
+  auto shadeTiles = [&](const vlf::PixelRect& rect, bool all, vlf::SpecularQuality quality) {
+    impl.Screen.assign(rect.Pixels() * 4, 0.0f);
+    float* out = impl.Screen.data();
+    vtkSMPTools::For(0, static_cast<vtkIdType>(vlf::WalkthroughTracer::TileCount(rect)), 16,
+      [&](vtkIdType t0, vtkIdType t1) {
+        valued += tracer.ShadeTiles(view, rect, all, quality, options, static_cast<std::size_t>(t0),
+          static_cast<std::size_t>(t1), out);
+      });
   };
 
   if (this->RenderMode == Raytrace)
   {
     impl.Rect = vlf::PixelRect{ 0, 0, width, height };
-    impl.Screen.assign(impl.Rect.Pixels() * 4, 0.0f);
-    shadeRows(impl.Rect, true, vlf::SpecularQuality::Raytrace, impl.Screen.data());
+    shadeTiles(impl.Rect, true, vlf::SpecularQuality::Raytrace);
     impl.AllScreen = true;
     this->LastFrameConverged = true;
   }
@@ -384,14 +468,8 @@ bool vtkLightFieldActor::PrepareFrame(vtkRenderer* renderer)
     impl.Rect = tracer.MirrorRect(view);
     if (this->RenderMode == Coherent)
     {
-      impl.Screen.assign(impl.Rect.Pixels() * 4, 0.0f);
-      const vlf::PixelRect rect = impl.Rect;
-      vtkSMPTools::For(0, static_cast<vtkIdType>(vlf::WalkthroughTracer::TileCount(rect)), 16,
-        [&](vtkIdType t0, vtkIdType t1) {
-          valued += tracer.ShadeTiles(view, rect, options, static_cast<std::size_t>(t0),
-            static_cast<std::size_t>(t1), impl.Screen.data());
-        });
-      vlf::WalkthroughTracer::DilateEdges(rect, impl.Screen.data());
+      shadeTiles(impl.Rect, false, vlf::SpecularQuality::Traced);
+      vlf::WalkthroughTracer::DilateEdges(impl.Rect, impl.Screen.data());
       this->LastFrameConverged = true;
     }
     else
@@ -416,55 +494,18 @@ bool vtkLightFieldActor::PrepareFrame(vtkRenderer* renderer)
       }
       else
       {
-        // Moving: the blurry field lookup now; the sharp trace on the worker.
-        impl.Screen.assign(impl.Rect.Pixels() * 4, 0.0f);
-        shadeRows(impl.Rect, false, vlf::SpecularQuality::Moving, impl.Screen.data());
-        vlf::WalkthroughTracer::DilateEdges(impl.Rect, impl.Screen.data());
-        bool launch = newView;
+        // Moving: the blurry field lookup now. A new view cancels the worker's trace of the
+        // previous one; the view is traced once it rests (the same view rendered again, or
+        // WaitForTracedReflections).
+        if (newView)
         {
-          std::lock_guard<std::mutex> lock(impl.Mutex);
-          launch = launch || (!impl.WorkerRunning && !(impl.SharpReady && impl.SharpView == view));
+          ++impl.Generation;
         }
-        if (launch && !impl.Rect.Empty())
+        shadeTiles(impl.Rect, false, vlf::SpecularQuality::Moving);
+        vlf::WalkthroughTracer::DilateEdges(impl.Rect, impl.Screen.data());
+        if (!newView)
         {
-          impl.StopWorker();
-          const unsigned generation = impl.Generation.load();
-          {
-            std::lock_guard<std::mutex> lock(impl.Mutex);
-            impl.WorkerRunning = true;
-            impl.WorkerView = view;
-          }
-          const vlf::PixelRect rect = impl.Rect;
-          Internals* self = &impl;
-          impl.Worker = std::thread([self, &tracer, view, rect, options, generation]() {
-            std::vector<float> image(rect.Pixels() * 4, 0.0f);
-            bool cancelled = false;
-            for (int row = rect.Y0; row < rect.Y1; ++row)
-            {
-              if (self->Generation.load() != generation)
-              {
-                cancelled = true;
-                break;
-              }
-              tracer.ShadeRows(view, rect, false, vlf::SpecularQuality::Traced, options, row, row + 1, image.data());
-            }
-            if (!cancelled)
-            {
-              vlf::WalkthroughTracer::DilateEdges(rect, image.data());
-            }
-            {
-              std::lock_guard<std::mutex> lock(self->Mutex);
-              if (!cancelled)
-              {
-                self->Sharp = std::move(image);
-                self->SharpRect = rect;
-                self->SharpView = view;
-                self->SharpReady = true;
-              }
-              self->WorkerRunning = false;
-            }
-            self->Done.notify_all();
-          });
+          this->TraceAtRest();
         }
       }
     }

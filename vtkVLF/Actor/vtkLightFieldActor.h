@@ -46,6 +46,7 @@ namespace mesolight
 namespace vlf
 {
 class LightField;
+struct TraceOptions;
 }
 }
 class vtkPolyData;
@@ -118,9 +119,11 @@ public:
   bool HasMirrors() const;
 
   /**
-   * Progressive mode: blocks until the worker has traced the reflections of the last rendered
-   * view (or `seconds` passed) and returns whether they are ready; the next Render() shows them.
-   * True at once in the other modes.
+   * Progressive mode: the camera rests. Starts tracing the reflections of the last rendered view
+   * (if not done or under way), waits until they are ready or `seconds` passed, and returns
+   * whether they are ready; the next Render() shows them. With 0 seconds it only polls (and
+   * starts the trace). True at once in the other modes. Rendering the same view twice also
+   * starts the trace.
    */
   bool WaitForTracedReflections(double seconds = 60.0);
   /** The last frame showed traced (sharp) reflections for its view. */
@@ -167,6 +170,9 @@ private:
   void operator=(const vtkLightFieldActor&) = delete;
 
   bool UseField(const mesolight::vlf::LightField* field);
+  mesolight::vlf::TraceOptions CurrentTraceOptions() const;
+  // Starts the worker on the last view's reflections unless it has them or is on them.
+  void TraceAtRest();
 
   int RenderMode = Progressive;
   double Exposure = 1.0;

@@ -282,8 +282,9 @@ std::size_t WalkthroughTracer::TileCount(const PixelRect& rect)
   return static_cast<std::size_t>((rect.Width() + 3) / 4) * static_cast<std::size_t>((rect.Height() + 3) / 4);
 }
 
-std::size_t WalkthroughTracer::ShadeTiles(const ViewFrame& view, const PixelRect& rect,
-  const TraceOptions& options, std::size_t tileBegin, std::size_t tileEnd, float* out) const
+std::size_t WalkthroughTracer::ShadeTiles(const ViewFrame& view, const PixelRect& rect, bool allSurfaces,
+  SpecularQuality quality, const TraceOptions& options, std::size_t tileBegin, std::size_t tileEnd,
+  float* out) const
 {
   const int tilesX = (rect.Width() + 3) / 4;
   std::size_t valued = 0;
@@ -293,6 +294,8 @@ std::size_t WalkthroughTracer::ShadeTiles(const ViewFrame& view, const PixelRect
   SceneRay reflected[16];
   int reflectedSlot[16];
   glm::vec3 own[16], ks[16], traced[16];
+  TraceOptions rest = options;
+  rest.MaximumDepth = options.MaximumDepth - 1;
   for (std::size_t tile = tileBegin; tile < tileEnd; ++tile)
   {
     const int tx = static_cast<int>(tile % static_cast<std::size_t>(tilesX));
@@ -319,12 +322,23 @@ std::size_t WalkthroughTracer::ShadeTiles(const ViewFrame& view, const PixelRect
     {
       float* rgba = out + (static_cast<std::size_t>(rows[q] - rect.Y0) * rect.Width() + (columns[q] - rect.X0)) * 4;
       std::uint32_t s;
-      if (this->Classify(rays[q], hits[q], s) != PixelClass::Mirror)
+      const PixelClass c = this->Classify(rays[q], hits[q], s);
+      if (c == PixelClass::Background || c == PixelClass::BackFace || (!allSurfaces && c != PixelClass::Mirror))
       {
-        Store(rgba, glm::vec3(0.0f), 0.0f);
+        Store(rgba, glm::vec3(0.0f), allSurfaces && c == PixelClass::BackFace ? 1.0f : 0.0f);
         continue;
       }
       const glm::vec3 p = rays[q].Origin + hits[q].T * rays[q].Direction;
+      if (c != PixelClass::Mirror || quality != SpecularQuality::Traced)
+      {
+        Store(rgba,
+          c == PixelClass::Mirror ? this->MirrorRadiance(s, p, rays[q].Direction, quality, options)
+                                  : this->FieldLookup.RadianceLeaving(s, p, -rays[q].Direction,
+                                      CellInterpolation::Bilinear, DirectionInterpolation::Spherical),
+          1.0f);
+        ++valued;
+        continue;
+      }
       const glm::vec3 normal = this->LightFieldRef.Surfaces()[s].Normal;
       const glm::vec3 d = rays[q].Direction;
       reflected[m].Origin = p + this->Epsilon * normal;
@@ -334,8 +348,10 @@ std::size_t WalkthroughTracer::ShadeTiles(const ViewFrame& view, const PixelRect
       reflectedSlot[m] = q;
       ++m;
     }
-    TraceOptions rest = options;
-    rest.MaximumDepth = options.MaximumDepth - 1;
+    if (m == 0)
+    {
+      continue;
+    }
     this->TracedRadiance16(reflected, m, rest, traced);
     for (int r = 0; r < m; ++r)
     {

@@ -123,9 +123,11 @@ public:
   // without a value get alpha 0. Returns the pixels given a value.
   std::size_t ShadeRows(const ViewFrame& view, const PixelRect& rect, bool allSurfaces,
     SpecularQuality quality, const TraceOptions& options, int rowBegin, int rowEnd, float* out) const;
-  // Coherent pass over 4 x 4 tiles [tileBegin, tileEnd) of rect (mirror pixels, traced).
-  std::size_t ShadeTiles(const ViewFrame& view, const PixelRect& rect, const TraceOptions& options,
-    std::size_t tileBegin, std::size_t tileEnd, float* out) const;
+  // The same over 4 x 4 pixel tiles [tileBegin, tileEnd) of rect, primary rays as 16-ray
+  // packets; Traced reflections are packets too (the coherent mode, Wither 2005 §2.4.2.2.4).
+  std::size_t ShadeTiles(const ViewFrame& view, const PixelRect& rect, bool allSurfaces,
+    SpecularQuality quality, const TraceOptions& options, std::size_t tileBegin, std::size_t tileEnd,
+    float* out) const;
   static std::size_t TileCount(const PixelRect& rect);
   // Gives alpha-0 pixels next to valued ones their neighbour's value: rasterised mirror edge
   // fragments whose pixel-centre ray just missed the mirror still find a reflection.

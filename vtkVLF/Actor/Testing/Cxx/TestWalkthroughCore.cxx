@@ -107,7 +107,8 @@ TEST(LightFieldActorCore, PacketsTraceLikeSingleRaysAndOneBounceShortFails)
   std::vector<float> rows(rect.Pixels() * 4), tiles(rect.Pixels() * 4), shortRows(rect.Pixels() * 4);
   vlf::TraceOptions options;
   tracer.ShadeRows(view, rect, false, vlf::SpecularQuality::Traced, options, rect.Y0, rect.Y1, rows.data());
-  tracer.ShadeTiles(view, rect, options, 0, vlf::WalkthroughTracer::TileCount(rect), tiles.data());
+  tracer.ShadeTiles(view, rect, false, vlf::SpecularQuality::Traced, options, 0,
+    vlf::WalkthroughTracer::TileCount(rect), tiles.data());
   vlf::TraceOptions shortOptions;
   shortOptions.BouncesShortForTesting = 1;
   tracer.ShadeRows(view, rect, false, vlf::SpecularQuality::Traced, shortOptions, rect.Y0, rect.Y1, shortRows.data());
