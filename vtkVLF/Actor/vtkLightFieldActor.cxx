@@ -268,7 +268,8 @@ void vtkLightFieldActor::TraceAtRest()
   const vlf::ViewFrame view = impl.LastView;
   {
     std::lock_guard<std::mutex> lock(impl.Mutex);
-    if ((impl.WorkerRunning && impl.WorkerView == view) || (impl.SharpReady && impl.SharpView == view))
+    if ((impl.WorkerRunning && impl.WorkerView == view && impl.WorkerKey == this->TraceKey()) ||
+      (impl.SharpReady && impl.SharpView == view && impl.SharpKey == this->TraceKey()))
     {
       return;
     }
@@ -280,6 +281,7 @@ void vtkLightFieldActor::TraceAtRest()
     impl.Sharp.clear();
     impl.SharpRect = rect;
     impl.SharpView = view;
+    impl.SharpKey = this->TraceKey();
     impl.SharpReady = true;
     return;
   }
@@ -289,13 +291,15 @@ void vtkLightFieldActor::TraceAtRest()
     std::lock_guard<std::mutex> lock(impl.Mutex);
     impl.WorkerRunning = true;
     impl.WorkerView = view;
+    impl.WorkerKey = this->TraceKey();
   }
   const vlf::TraceOptions options = this->CurrentTraceOptions();
+  const int key = this->TraceKey();
   const vlf::WalkthroughTracer* tracer = impl.Tracer.get();
   Internals* self = &impl;
   // One worker thread, row by row (Wither 2005 §2.4.2.2.3: the high-quality rendering
   // progresses in another thread), abandoned between rows when the view changes.
-  impl.Worker = std::thread([self, tracer, view, rect, options, generation]() {
+  impl.Worker = std::thread([self, tracer, view, rect, options, generation, key]() {
     std::vector<float> image(rect.Pixels() * 4, 0.0f);
     bool cancelled = false;
     for (int row = rect.Y0; row < rect.Y1; ++row)
@@ -318,6 +322,7 @@ void vtkLightFieldActor::TraceAtRest()
         self->Sharp = std::move(image);
         self->SharpRect = rect;
         self->SharpView = view;
+        self->SharpKey = key;
         self->SharpReady = true;
       }
       self->WorkerRunning = false;
@@ -339,7 +344,8 @@ bool vtkLightFieldActor::WaitForTracedReflections(double seconds)
   std::unique_lock<std::mutex> lock(impl.Mutex);
   impl.Done.wait_for(lock, std::chrono::duration<double>(seconds),
     [&] { return !impl.WorkerRunning; });
-  return impl.HaveLastView && impl.SharpReady && impl.SharpView == impl.LastView;
+  return impl.HaveLastView && impl.SharpReady && impl.SharpView == impl.LastView &&
+    impl.SharpKey == this->TraceKey();
 }
 
 //------------------------------------------------------------------------------
@@ -477,7 +483,7 @@ bool vtkLightFieldActor::PrepareFrame(vtkRenderer* renderer)
       bool sharp = false;
       {
         std::lock_guard<std::mutex> lock(impl.Mutex);
-        sharp = impl.SharpReady && impl.SharpView == view;
+        sharp = impl.SharpReady && impl.SharpView == view && impl.SharpKey == this->TraceKey();
         if (sharp)
         {
           impl.Screen = impl.Sharp;

@@ -171,6 +171,8 @@ private:
 
   bool UseField(const mesolight::vlf::LightField* field);
   mesolight::vlf::TraceOptions CurrentTraceOptions() const;
+  // Identifies the trace options: traced reflections of other options are not reused.
+  int TraceKey() const { return this->MaximumReflectionDepth * 16 + this->ReflectionBouncesShortForTesting; }
   // Starts the worker on the last view's reflections unless it has them or is on them.
   void TraceAtRest();
 

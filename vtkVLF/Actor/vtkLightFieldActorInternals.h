@@ -44,7 +44,9 @@ struct vtkLightFieldActor::Internals
   std::condition_variable Done;
   bool WorkerRunning = false;
   mesolight::vlf::ViewFrame WorkerView;
+  int WorkerKey = 0; // trace options the worker uses (vtkLightFieldActor::TraceKey)
   bool SharpReady = false;
+  int SharpKey = 0;
   mesolight::vlf::ViewFrame SharpView;
   mesolight::vlf::PixelRect SharpRect;
   std::vector<float> Sharp;

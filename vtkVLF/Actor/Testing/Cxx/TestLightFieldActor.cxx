@@ -13,6 +13,10 @@
 #include "PinholeCamera.h"
 
 #include <vtkActor.h>
+#include <vtkPlaneSource.h>
+#include <vtkProceduralReliefSource.h>
+#include <vtkReliefMapper.h>
+#include <vtkReliefTextureFilter.h>
 #include <vtkCamera.h>
 #include <vtkNew.h>
 #include <vtkPolyDataMapper.h>
@@ -93,6 +97,21 @@ struct Viewer
       images.Radiance[i] = vlf::InverseToneMap(display, Exposure, vlf::ToneMapOperator::Clamp);
     }
     return images;
+  }
+
+  // Another camera (world coordinates) and the ray-cast frame matching it.
+  vlf::ViewFrame SetCamera(const vlf::LightField& field, const glm::vec3& eye, const glm::vec3& focal, float angle)
+  {
+    vtkCamera* camera = this->Renderer->GetActiveCamera();
+    camera->SetPosition(eye.x, eye.y, eye.z);
+    camera->SetFocalPoint(focal.x, focal.y, focal.z);
+    camera->SetViewUp(0.0, 1.0, 0.0);
+    camera->SetViewAngle(angle);
+    this->Renderer->ResetCameraClippingRange();
+    vlf::ViewFrame view;
+    vlf::ViewFrame::Make(vlf::ToUnit(field, eye), vlf::ToUnit(field, focal), glm::vec3(0.0f, 1.0f, 0.0f), angle,
+      Size, Size, view);
+    return view;
   }
 
   Images Render(int mode)
@@ -348,10 +367,94 @@ TEST(Walkthrough, ModesAgainstPathTracer8193)
   ModesAgainstPathTracer(8193);
 }
 
-// An ordinary actor (an unlit sphere) inside the box, partly hidden by the short block and partly
-// in front of the mirror block: in every mode its visible pixels are exactly those a ray cast of
-// the same scene plus the analytic sphere gives it.
-TEST(Walkthrough, OrdinaryActorOccludesAndIsOccludedInEveryMode)
+// The tall block in front of the mirror wall hides exactly its pixels of it (a camera inside the
+// box looking at the mirror across the block): the pixels the actor
+// draws as mirror (found by comparing with reflections one bounce short, which leave the Kd = 0
+// mirror black) are exactly the ray cast's visible mirror pixels, in the coherent and the
+// progressive (at rest) modes.
+TEST(Walkthrough, DiffuseBoxInFrontOfMirrorHidesExactlyItsPixels)
+{
+  const vlf::LightField& field = MirrorCornellField(513);
+  // Ray-cast masks: visible mirror pixels, and mirror pixels a block hides (the mirror alone
+  // would be hit there).
+  TriangleScene mirrorOnly;
+  mirrorOnly.Materials = field.Scene().Materials;
+  for (std::size_t t = 0; t < field.Scene().TriangleCount(); ++t)
+  {
+    if (glm::length(field.Scene().MaterialOf(t).Specular) > 0.0f)
+    {
+      mirrorOnly.Positions.push_back(field.Scene().Vertex(t, 0));
+      mirrorOnly.Positions.push_back(field.Scene().Vertex(t, 1));
+      mirrorOnly.Positions.push_back(field.Scene().Vertex(t, 2));
+      const auto n = static_cast<std::uint32_t>(mirrorOnly.Positions.size());
+      mirrorOnly.Triangles.emplace_back(n - 3, n - 2, n - 1);
+      mirrorOnly.MaterialIds.push_back(field.Scene().MaterialIds[t]);
+    }
+  }
+  const EmbreeScene mirrorScene(mirrorOnly);
+  Viewer viewer(field);
+  const vlf::ViewFrame view =
+    viewer.SetCamera(field, glm::vec3(60.0f, 220.0f, 330.0f), glm::vec3(550.0f, 150.0f, 350.0f), 60.0f);
+  const vlf::WalkthroughTracer walk(field);
+  const std::vector<vlf::PixelClass> classes = walk.ClassifyView(view);
+  // Mirror pixels reflecting the box's open front stay black either way: count the lit ones.
+  std::vector<float> traced(static_cast<std::size_t>(Size) * Size * 4);
+  walk.ShadeRows(view, vlf::PixelRect{ 0, 0, Size, Size }, false, vlf::SpecularQuality::Traced, vlf::TraceOptions{},
+    0, Size, traced.data());
+  std::vector<std::uint8_t> lit(classes.size(), 0);
+  std::size_t visible = 0, hidden = 0, litCount = 0;
+  for (int y = 0; y < Size; ++y)
+  {
+    for (int x = 0; x < Size; ++x)
+    {
+      const std::size_t i = static_cast<std::size_t>(y) * Size + x;
+      const bool mirror = classes[i] == vlf::PixelClass::Mirror;
+      const glm::vec3 display = vlf::ToneMap(glm::vec3(traced[4 * i], traced[4 * i + 1], traced[4 * i + 2]),
+        Exposure, vlf::ToneMapOperator::Clamp);
+      lit[i] = mirror && std::max(display.x, std::max(display.y, display.z)) * 255.0f > 0.5f ? 1 : 0;
+      litCount += lit[i];
+      visible += mirror ? 1 : 0;
+      hidden += !mirror && mirrorScene.Intersect(view.Ray(x + 0.5f, y + 0.5f)).Hit() ? 1 : 0;
+    }
+  }
+  for (const int mode : { vtkLightFieldActor::Coherent, vtkLightFieldActor::Progressive })
+  {
+    viewer.Actor->SetRenderMode(mode);
+    viewer.Window->Render();
+    viewer.Actor->WaitForTracedReflections(60.0);
+    const Images full = viewer.Render(mode);
+    Dump(std::string("hides-") + vtkLightFieldActor::GetRenderModeAsString(mode), full.Radiance);
+    viewer.Actor->SetReflectionBouncesShortForTesting(1);
+    viewer.Window->Render();
+    viewer.Actor->WaitForTracedReflections(60.0);
+    const Images cut = viewer.Render(mode);
+    viewer.Actor->SetReflectionBouncesShortForTesting(0);
+    std::size_t drawn = 0, both = 0, drawnOffMirror = 0;
+    for (std::size_t i = 0; i < classes.size(); ++i)
+    {
+      const bool mirrorDrawn = full.Display[i] != cut.Display[i];
+      drawn += mirrorDrawn ? 1 : 0;
+      both += mirrorDrawn && lit[i] ? 1 : 0;
+      drawnOffMirror += mirrorDrawn && classes[i] != vlf::PixelClass::Mirror ? 1 : 0;
+    }
+    std::cout << vtkLightFieldActor::GetRenderModeAsString(mode) << ": lit mirror pixels drawn " << drawn
+              << ", ray cast " << litCount << " (" << both << " in both; " << visible
+              << " visible mirror pixels in all), " << drawnOffMirror << " drawn off the mirror; " << hidden
+              << " mirror pixels hidden by the block\n";
+    EXPECT_GT(hidden, 100u);
+    EXPECT_EQ(drawnOffMirror, 0u);
+    // Pixels within a display level of black may round either way.
+    EXPECT_LE(litCount - both, litCount / 100 + 2);
+    EXPECT_LE(drawn - both, litCount / 100 + 2);
+  }
+}
+
+// An ordinary actor (an unlit sphere) and a relief surface (vtkReliefMapper, flat relief at
+// depth 0 so its true surface is its quad) inside the box: the sphere partly hidden by the tall
+// block, both partly in front of the mirror wall, the sphere partly in front of the relief. In
+// every mode the pixels each shows are exactly those a ray cast of the field's scene plus the
+// analytic sphere and the quad gives it.
+TEST(Walkthrough, OrdinaryActorAndReliefSurfaceOccludeCorrectlyInEveryMode)
 {
   const vlf::LightField& field = MirrorCornellField(513);
   Viewer viewer(field);
@@ -369,62 +472,105 @@ TEST(Walkthrough, OrdinaryActorOccludesAndIsOccludedInEveryMode)
   ball->GetProperty()->SetColor(1.0, 0.0, 1.0);
   ball->GetProperty()->LightingOff();
   viewer.Renderer->AddActor(ball);
+
+  // The relief: a quad parallel to the mirror wall, 10 mm in front of it, through the sphere.
+  const glm::vec3 origin(540.0f, 30.0f, 150.0f), edgeZ(0.0f, 0.0f, 300.0f), edgeY(0.0f, 200.0f, 0.0f);
+  vtkNew<vtkPlaneSource> plane;
+  plane->SetOrigin(origin.x, origin.y, origin.z);
+  plane->SetPoint1(origin.x + edgeZ.x, origin.y + edgeZ.y, origin.z + edgeZ.z);
+  plane->SetPoint2(origin.x + edgeY.x, origin.y + edgeY.y, origin.z + edgeY.z);
+  vtkNew<vtkProceduralReliefSource> depth;
+  depth->SetPatternToFlat();
+  depth->SetFlatDepth(0.0);
+  vtkNew<vtkReliefTextureFilter> relief;
+  relief->SetInputConnection(depth->GetOutputPort());
+  vtkNew<vtkReliefMapper> reliefMapper;
+  reliefMapper->SetInputConnection(plane->GetOutputPort());
+  reliefMapper->SetReliefTextureConnection(relief->GetOutputPort());
+  vtkNew<vtkActor> wall;
+  wall->SetMapper(reliefMapper);
+  // Ambient only: the relief's VTK-compatible lighting then gives exactly this colour.
+  wall->GetProperty()->SetAmbientColor(0.0, 1.0, 1.0);
+  wall->GetProperty()->SetAmbient(1.0);
+  wall->GetProperty()->SetDiffuse(0.0);
+  wall->GetProperty()->SetSpecular(0.0);
+  viewer.Renderer->AddActor(wall);
   viewer.Renderer->ResetCameraClippingRange();
 
-  // The ray-cast mask: the field's scene and the sphere (unit coordinates).
+  // The ray-cast masks: the field's scene, the analytic sphere and the quad (unit coordinates).
+  TriangleScene scene = field.Scene();
+  SceneMaterial quadMaterial;
+  quadMaterial.Name = "relief";
+  const std::uint32_t quadId = scene.AddMaterial(quadMaterial);
+  const std::size_t quadFirst = scene.TriangleCount();
+  scene.AddPolygon({ vlf::ToUnit(field, origin), vlf::ToUnit(field, origin + edgeZ),
+                     vlf::ToUnit(field, origin + edgeZ + edgeY), vlf::ToUnit(field, origin + edgeY) },
+    quadId);
   SceneSphere unitSphere;
   unitSphere.Center = vlf::ToUnit(field, centre);
   unitSphere.Radius = radius * field.NormalizationScale();
-  const EmbreeScene withSphere(field.Scene(), { unitSphere });
+  const EmbreeScene everything(scene, { unitSphere });
+  const EmbreeScene withoutSphere(scene);
   const vlf::ViewFrame view = CornellView(field);
-  std::vector<std::uint8_t> expected(static_cast<std::size_t>(Size) * Size, 0);
-  std::size_t visible = 0, hidden = 0, overMirror = 0;
   const vlf::WalkthroughTracer walk(field);
   const std::vector<vlf::PixelClass> classes = walk.ClassifyView(view);
+  std::vector<std::uint8_t> expected(static_cast<std::size_t>(Size) * Size, 0); // 1 sphere, 2 relief
+  std::size_t sphereVisible = 0, sphereHidden = 0, reliefVisible = 0, overMirror = 0, sphereOverRelief = 0;
   for (int y = 0; y < Size; ++y)
   {
     for (int x = 0; x < Size; ++x)
     {
       const SceneRay ray = view.Ray(x + 0.5f, y + 0.5f);
-      const SceneHit hit = withSphere.Intersect(ray);
+      const SceneHit hit = everything.Intersect(ray);
       const std::size_t i = static_cast<std::size_t>(y) * Size + x;
-      // Sphere alone along this ray?
       const glm::vec3 oc = ray.Origin - unitSphere.Center;
       const float b = glm::dot(oc, ray.Direction);
       const bool onSphere = b * b - (glm::dot(oc, oc) - unitSphere.Radius * unitSphere.Radius) > 0.0f;
+      const SceneHit behind = withoutSphere.Intersect(ray);
+      const bool reliefBehind = behind.Triangle != SceneHit::None && behind.Triangle >= quadFirst;
       if (hit.Sphere != SceneHit::None)
       {
         expected[i] = 1;
-        ++visible;
-        overMirror += classes[i] == vlf::PixelClass::Mirror ? 1 : 0;
+        ++sphereVisible;
+        sphereOverRelief += reliefBehind ? 1 : 0;
+      }
+      else if (hit.Triangle != SceneHit::None && hit.Triangle >= quadFirst)
+      {
+        expected[i] = 2;
+        ++reliefVisible;
       }
       else if (onSphere)
       {
-        ++hidden;
+        ++sphereHidden;
       }
+      overMirror += expected[i] != 0 && classes[i] == vlf::PixelClass::Mirror ? 1 : 0;
     }
   }
-  std::cout << "sphere: " << visible << " visible pixels (" << overMirror << " in front of the mirror), "
-            << hidden << " hidden by the box\n";
-  ASSERT_GT(visible, 100u);
-  ASSERT_GT(hidden, 50u);
-  ASSERT_GT(overMirror, 20u);
+  std::cout << "sphere: " << sphereVisible << " visible pixels (" << sphereOverRelief << " in front of the relief), "
+            << sphereHidden << " hidden by the box; relief: " << reliefVisible << " visible; " << overMirror
+            << " of them in front of the mirror\n";
+  ASSERT_GT(sphereVisible, 100u);
+  ASSERT_GT(sphereHidden, 50u);
+  ASSERT_GT(reliefVisible, 100u);
+  ASSERT_GT(sphereOverRelief, 20u);
+  ASSERT_GT(overMirror, 100u);
   for (int mode = vtkLightFieldActor::Geometry; mode <= vtkLightFieldActor::Coherent; ++mode)
   {
     const Images images = viewer.Render(mode);
-    std::size_t both = 0, onlyGL = 0, onlyRay = 0;
+    std::size_t agree = 0, wrong = 0;
     for (std::size_t i = 0; i < expected.size(); ++i)
     {
       const glm::vec3 d = images.Display[i];
       const bool magenta = d.x > 0.99f && d.y < 0.01f && d.z > 0.99f;
-      both += magenta && expected[i] ? 1 : 0;
-      onlyGL += magenta && !expected[i] ? 1 : 0;
-      onlyRay += !magenta && expected[i] ? 1 : 0;
+      const bool cyan = d.x < 0.01f && d.y > 0.99f && d.z > 0.99f;
+      const std::uint8_t seen = magenta ? 1 : (cyan ? 2 : 0);
+      agree += seen == expected[i] && seen != 0 ? 1 : 0;
+      wrong += seen != expected[i] ? 1 : 0;
     }
-    std::cout << "sphere mask, " << vtkLightFieldActor::GetRenderModeAsString(mode) << ": " << both
-              << " agree, " << onlyGL << " only drawn, " << onlyRay << " only ray cast\n";
+    std::cout << "sphere and relief masks, " << vtkLightFieldActor::GetRenderModeAsString(mode) << ": " << agree
+              << " pixels agree, " << wrong << " differ\n";
     // Tessellated vs analytic silhouette and pixel-centre sampling: a thin outline at most.
-    EXPECT_LE(onlyGL + onlyRay, visible / 50 + 8);
+    EXPECT_LE(wrong, (sphereVisible + reliefVisible) / 50 + 8);
   }
 }
 
