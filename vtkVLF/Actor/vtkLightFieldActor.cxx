@@ -339,6 +339,10 @@ bool vtkLightFieldActor::WaitForTracedReflections(double seconds)
   {
     return true;
   }
+  if (!impl.HaveLastView || !impl.Tracer)
+  {
+    return true; // no view (no field, zero-size viewport): nothing to trace
+  }
   // The caller waits: the camera rests, so trace the last view if nothing is doing so.
   this->TraceAtRest();
   std::unique_lock<std::mutex> lock(impl.Mutex);
@@ -384,6 +388,7 @@ bool vtkLightFieldActor::PrepareFrame(vtkRenderer* renderer)
   vtkCamera* camera = renderer->GetActiveCamera();
   if (width < 1 || height < 1 || !camera)
   {
+    impl.HaveLastView = false;
     return true; // a zero-size viewport: nothing to compute, nothing drawn from the screen
   }
   if (camera->GetParallelProjection())
@@ -394,6 +399,7 @@ bool vtkLightFieldActor::PrepareFrame(vtkRenderer* renderer)
                          "raytrace pixels show only the diffuse textures under parallel projection");
       impl.WarnedParallel = true;
     }
+    impl.HaveLastView = false;
     return true;
   }
   double position[3], focal[3], up[3];
@@ -414,6 +420,7 @@ bool vtkLightFieldActor::PrepareFrame(vtkRenderer* renderer)
   {
     vtkWarningMacro(<< "the camera does not define a view (position on the focal point or view up "
                        "along the view direction): nothing traced");
+    impl.HaveLastView = false;
     return true;
   }
   if (!impl.HaveLastView || view != impl.LastView)

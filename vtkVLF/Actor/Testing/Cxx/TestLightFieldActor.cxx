@@ -11,8 +11,11 @@
 #include "PatchComparison.h"
 #include "PathTracer.h"
 #include "PinholeCamera.h"
+#include "Snapshot.h"
 
 #include <vtkActor.h>
+#include <vtkCallbackCommand.h>
+#include <vtkCommand.h>
 #include <vtkPlaneSource.h>
 #include <vtkProceduralReliefSource.h>
 #include <vtkReliefMapper.h>
@@ -37,6 +40,7 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <iterator>
 #include <map>
 
 namespace mesolight
@@ -574,13 +578,50 @@ TEST(Walkthrough, OrdinaryActorAndReliefSurfaceOccludeCorrectlyInEveryMode)
   }
 }
 
-// Bad input: no crash, clear messages.
+// Collects the warnings and errors an object reports.
+struct MessageLog
+{
+  std::string Text;
+  vtkNew<vtkCallbackCommand> Command;
+  explicit MessageLog(vtkObject* object)
+  {
+    this->Command->SetClientData(this);
+    this->Command->SetCallback([](vtkObject*, unsigned long, void* self, void* message) {
+      static_cast<MessageLog*>(self)->Text += static_cast<const char*>(message);
+    });
+    object->AddObserver(vtkCommand::WarningEvent, this->Command);
+    object->AddObserver(vtkCommand::ErrorEvent, this->Command);
+  }
+};
+
+// Bad input: clear messages, never a crash.
 TEST(Walkthrough, BadInputIsReportedNotCrashed)
 {
   vtkNew<vtkLightFieldActor> actor;
+  MessageLog log(actor);
+  // Missing, foreign and truncated field files.
   EXPECT_FALSE(actor->LoadLightField("/nonexistent/field.vlf"));
-  EXPECT_NE(actor->GetLastError().find("field.vlf"), std::string::npos) << actor->GetLastError();
   std::cout << "missing file: " << actor->GetLastError() << "\n";
+  EXPECT_NE(actor->GetLastError().find("field.vlf"), std::string::npos) << actor->GetLastError();
+  const std::string dir = MESOLIGHT_TEST_TEMP_DIR;
+  {
+    std::ofstream foreign(dir + "/foreign.vlf");
+    foreign << "v 0 0 0\nf 1 2 3\n";
+  }
+  EXPECT_FALSE(actor->LoadLightField(dir + "/foreign.vlf"));
+  std::cout << "foreign file: " << actor->GetLastError() << "\n";
+  EXPECT_NE(actor->GetLastError().find("not a Mesolight light field snapshot"), std::string::npos);
+  vlf::WriteSnapshot(walkthroughtest::DiffuseCornellField(), dir + "/diffuse.vlf");
+  {
+    std::ifstream in(dir + "/diffuse.vlf", std::ios::binary);
+    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::ofstream out(dir + "/truncated.vlf", std::ios::binary);
+    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size() / 2));
+  }
+  EXPECT_FALSE(actor->LoadLightField(dir + "/truncated.vlf"));
+  std::cout << "truncated file: " << actor->GetLastError() << "\n";
+  EXPECT_NE(actor->GetLastError().find("truncated"), std::string::npos);
+
   // A renderer with the actor but no field, and a zero-size viewport: nothing drawn, no crash.
   vtkNew<vtkRenderWindow> window;
   window->SetOffScreenRendering(1);
@@ -595,15 +636,26 @@ TEST(Walkthrough, BadInputIsReportedNotCrashed)
   {
     actor->SetRenderMode(mode);
     window->Render();
+    EXPECT_TRUE(actor->WaitForTracedReflections(10.0));
   }
-  // Camera inside the tall block: back faces everywhere (a warning, black pixels).
+  // A field without mirrors in a mirror mode: a warning, the diffuse textures.
   renderer->SetViewport(0.0, 0.0, 1.0, 1.0);
+  log.Text.clear();
+  EXPECT_TRUE(actor->LoadLightField(dir + "/diffuse.vlf"));
+  actor->SetRenderModeToCoherent();
+  window->Render();
+  std::cout << "no mirrors: " << log.Text;
+  EXPECT_NE(log.Text.find("no mirror surfaces"), std::string::npos) << log.Text;
+  // Camera inside the tall block: back faces everywhere (a warning, black pixels).
+  log.Text.clear();
+  actor->SetLightField(&MirrorCornellField(513));
   renderer->GetActiveCamera()->SetPosition(370.0, 150.0, 350.0);
   renderer->GetActiveCamera()->SetFocalPoint(370.0, 150.0, 600.0);
   renderer->ResetCameraClippingRange();
   actor->SetRenderModeToRaytrace();
   window->Render();
-  SUCCEED();
+  std::cout << "camera in a wall: " << log.Text;
+  EXPECT_NE(log.Text.find("inside a wall"), std::string::npos) << log.Text;
 }
 
 } // namespace
