@@ -5,7 +5,7 @@
 //     field (three nearest directions with spherical weights, 8-neighbour cell interpolation);
 //   - progressive while the camera moves (§2.4.2.2.3): mirror pixels read the field in the
 //     reflected direction at low directional resolution (the nearest direction only, 8-neighbour
-//     cells): fast, blurry;
+//     cells, one lookup per 2 x 2 pixel block): fast, blurry;
 //   - progressive at rest and coherent (§2.4.2.2.3-4): mirror pixels trace the reflection
 //     recursively to the first diffuse hit and read its total diffuse texture: sharp. Coherent
 //     traces 4 x 4 pixel tiles as 16-ray packets (Embree), primary and reflected rays alike.
