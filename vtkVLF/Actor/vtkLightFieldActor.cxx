@@ -332,6 +332,37 @@ void vtkLightFieldActor::TraceAtRest()
 }
 
 //------------------------------------------------------------------------------
+void vtkLightFieldActor::RefreshField()
+{
+  if (!this->Filter)
+  {
+    return;
+  }
+  this->Filter->Update();
+  if (this->Filter->GetLightField() != this->Impl->Field)
+  {
+    this->UseField(this->Filter->GetLightField());
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkLightFieldActor::Render(vtkRenderer* ren, vtkMapper* mapper)
+{
+  // Before the mapper looks at its input: a field that appeared since the last frame brings the
+  // scene polydata the mapper draws.
+  this->RefreshField();
+  this->Superclass::Render(ren, mapper);
+}
+
+//------------------------------------------------------------------------------
+double* vtkLightFieldActor::GetBounds()
+{
+  // The renderer culls by bounds before anything draws: a filter's field must be there first.
+  this->RefreshField();
+  return this->Superclass::GetBounds();
+}
+
+//------------------------------------------------------------------------------
 bool vtkLightFieldActor::WaitForTracedReflections(double seconds)
 {
   Internals& impl = *this->Impl;
@@ -371,10 +402,7 @@ bool vtkLightFieldActor::PrepareFrame(vtkRenderer* renderer)
   this->LastSpecularSeconds = 0.0;
   this->LastScreenPixels = 0;
   this->LastFrameConverged = false;
-  if (this->Filter && this->Filter->GetLightField() != impl.Field)
-  {
-    this->UseField(this->Filter->GetLightField());
-  }
+  this->RefreshField();
   if (!impl.Field || !impl.Tracer)
   {
     return false;

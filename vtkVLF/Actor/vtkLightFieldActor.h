@@ -60,6 +60,13 @@ public:
   vtkTypeMacro(vtkLightFieldActor, vtkOpenGLActor);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
+  ///@{
+  /** Bring the field up to date (a filter's update) before culling and drawing use the scene. */
+  void Render(vtkRenderer* ren, vtkMapper* mapper) override;
+  using Superclass::GetBounds;
+  double* GetBounds() override;
+  ///@}
+
   enum RenderModes
   {
     Geometry = 0,
@@ -105,7 +112,7 @@ public:
    * vtkVirtualLightField). nullptr clears it.
    */
   void SetLightField(const mesolight::vlf::LightField* field);
-  /** Shows the field of a vtkVirtualLightField (taken at each render after its update). */
+  /** Shows the field of a vtkVirtualLightField (updated, and its field taken, at each render). */
   void SetLightFieldFilter(vtkVirtualLightField* filter);
   /**
    * Reads a field snapshot (`mesolight vlf propagate --out FILE`). False, with the reason in
@@ -170,6 +177,7 @@ private:
   void operator=(const vtkLightFieldActor&) = delete;
 
   bool UseField(const mesolight::vlf::LightField* field);
+  void RefreshField(); // updates the filter, takes its field when it changed
   mesolight::vlf::TraceOptions CurrentTraceOptions() const;
   // Identifies the trace options: traced reflections of other options are not reused.
   int TraceKey() const { return this->MaximumReflectionDepth * 16 + this->ReflectionBouncesShortForTesting; }

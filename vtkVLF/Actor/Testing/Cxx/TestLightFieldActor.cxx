@@ -3,6 +3,9 @@
 // alpha composite, reflections one bounce short), and occlusion with an ordinary actor.
 #include "vtkLightFieldActor.h"
 
+#include "vtkCornellBoxSource.h"
+#include "vtkVirtualLightField.h"
+
 #include "WalkthroughImage.h"
 #include "WalkthroughTestFields.h"
 #include "WalkthroughTracer.h"
@@ -573,6 +576,34 @@ TEST(Walkthrough, OrdinaryActorAndReliefSurfaceOccludeCorrectlyInEveryMode)
     // Tessellated vs analytic silhouette and pixel-centre sampling: a thin outline at most.
     EXPECT_LE(wrong, (sphereVisible + reliefVisible) / 50 + 8);
   }
+}
+
+// The field straight from a vtkVirtualLightField that nobody updated: the actor updates it at
+// render time and shows it (the same pixels as the same field set directly).
+TEST(Walkthrough, FieldFromTheVirtualLightFieldFilter)
+{
+  vtkNew<vtkCornellBoxSource> box;
+  vtkNew<vtkVirtualLightField> filter;
+  filter->SetInputConnection(box->GetOutputPort());
+  filter->SetDirections(513);
+  filter->SetRaysPerSide(16);
+  filter->SetIterations(2);
+  const vlf::LightField& any = MirrorCornellField(513);
+  Viewer viewer(any);
+  viewer.Actor->SetLightFieldFilter(filter);
+  const Images fromFilter = viewer.Render(vtkLightFieldActor::Progressive);
+  ASSERT_NE(viewer.Actor->GetLightField(), nullptr);
+  EXPECT_EQ(viewer.Actor->GetLightField(), filter->GetLightField());
+  std::size_t lit = 0;
+  for (const glm::vec3& d : fromFilter.Display)
+  {
+    lit += d.x + d.y + d.z > 0.05f ? 1 : 0;
+  }
+  std::cout << "field from the filter: " << lit << " of " << fromFilter.Display.size() << " pixels lit\n";
+  EXPECT_GT(lit, fromFilter.Display.size() * 3 / 4);
+  viewer.Actor->SetLightField(filter->GetLightField());
+  const Images direct = viewer.Render(vtkLightFieldActor::Progressive);
+  EXPECT_EQ(direct.Display, fromFilter.Display);
 }
 
 // Collects the warnings and errors an object reports.
