@@ -606,6 +606,38 @@ TEST(Walkthrough, FieldFromTheVirtualLightFieldFilter)
   EXPECT_EQ(direct.Display, fromFilter.Display);
 }
 
+// A renderer in the right half of a window (its viewport does not start at the window's
+// origin): the screen-space values land on the same pixels as in a window of its own.
+TEST(Walkthrough, ViewportOffsetInTheWindow)
+{
+  const vlf::LightField& field = MirrorCornellField(513);
+  Viewer alone(field);
+  Viewer half(field);
+  half.Window->SetSize(2 * Size, Size);
+  half.Renderer->SetViewport(0.5, 0.0, 1.0, 1.0);
+  for (const int mode : { vtkLightFieldActor::Raytrace, vtkLightFieldActor::Coherent })
+  {
+    const Images expected = alone.Render(mode);
+    half.Actor->SetRenderMode(mode);
+    half.Window->Render();
+    vtkNew<vtkUnsignedCharArray> pixels;
+    half.Window->GetPixelData(Size, 0, 2 * Size - 1, Size - 1, 1, pixels);
+    std::size_t differ = 0;
+    for (std::size_t i = 0; i < expected.Display.size(); ++i)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        const int got = pixels->GetValue(3 * static_cast<vtkIdType>(i) + c);
+        const int want = static_cast<int>(std::lround(255.0f * expected.Display[i][c]));
+        differ += got != want ? 1 : 0;
+      }
+    }
+    std::cout << vtkLightFieldActor::GetRenderModeAsString(mode) << " in the right half: " << differ
+              << " channel values differ\n";
+    EXPECT_EQ(differ, 0u);
+  }
+}
+
 // Collects the warnings and errors an object reports.
 struct MessageLog
 {
