@@ -382,6 +382,7 @@ int View(const std::vector<std::string>& args)
   cl.AddValue("--frames", "N", "render N frames (turning the camera 2 degrees each) and exit: a "
                                "non-interactive check", "0");
   cl.AddFlag("--offscreen", "no window (with --frames)");
+  cl.AddValue("--keys", "KEYS", "with --frames: press these keys, one before each frame (a check of the key bindings)");
   cl.AddFlag("--help", "show this help");
   std::string error;
   if (!cl.Parse(args, error))
@@ -436,21 +437,6 @@ int View(const std::vector<std::string>& args)
   state.Actor = actor;
   state.Window = window;
   state.Text = text;
-  if (frames > 0)
-  {
-    window->SetOffScreenRendering(cl.Has("--offscreen") ? 1 : 0);
-    double total = 0.0;
-    for (int f = 0; f < frames; ++f)
-    {
-      state.Render();
-      total += state.LastFrameSeconds;
-      renderer->GetActiveCamera()->Azimuth(2.0);
-      renderer->ResetCameraClippingRange();
-    }
-    std::cout << "rendered " << frames << " frames, mode " << vtkLightFieldActor::GetRenderModeAsString(actor->GetRenderMode())
-              << ", mean " << 1000.0 * total / frames << " ms per frame\n";
-    return 0;
-  }
   vtkNew<vtkRenderWindowInteractor> interactor;
   interactor->SetRenderWindow(window);
   vtkNew<vtkInteractorStyleTrackballCamera> style;
@@ -460,6 +446,29 @@ int View(const std::vector<std::string>& args)
   keys->SetClientData(&state);
   state.Keys = keys;
   interactor->AddObserver(vtkCommand::CharEvent, keys, 1.0);
+  if (frames > 0)
+  {
+    window->SetOffScreenRendering(cl.Has("--offscreen") ? 1 : 0);
+    const std::string pressed = cl.Get("--keys");
+    double total = 0.0;
+    for (int f = 0; f < frames; ++f)
+    {
+      if (static_cast<std::size_t>(f) < pressed.size())
+      {
+        interactor->SetKeyCode(pressed[static_cast<std::size_t>(f)]);
+        interactor->InvokeEvent(vtkCommand::CharEvent, nullptr);
+      }
+      state.Render();
+      total += state.LastFrameSeconds;
+      renderer->GetActiveCamera()->Azimuth(2.0);
+      renderer->ResetCameraClippingRange();
+    }
+    std::cout << "rendered " << frames << " frames, mode " << vtkLightFieldActor::GetRenderModeAsString(actor->GetRenderMode())
+              << ", exposure " << actor->GetExposure() << ", tone map "
+              << (actor->GetToneMap() == vtkLightFieldActor::Reinhard ? "reinhard" : "clamp") << ", reflection depth "
+              << actor->GetMaximumReflectionDepth() << ", mean " << 1000.0 * total / frames << " ms per frame\n";
+    return 0;
+  }
   vtkNew<vtkCallbackCommand> timer;
   timer->SetCallback(OnTimer);
   timer->SetClientData(&state);
