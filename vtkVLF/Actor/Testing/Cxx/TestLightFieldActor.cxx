@@ -19,6 +19,7 @@
 #include <vtkActor.h>
 #include <vtkCallbackCommand.h>
 #include <vtkCommand.h>
+#include <vtkFloatArray.h>
 #include <vtkPlaneSource.h>
 #include <vtkProceduralReliefSource.h>
 #include <vtkReliefMapper.h>
@@ -571,8 +572,35 @@ TEST(Walkthrough, OrdinaryActorAndReliefSurfaceOccludeCorrectlyInEveryMode)
       agree += seen == expected[i] && seen != 0 ? 1 : 0;
       wrong += seen != expected[i] ? 1 : 0;
     }
+    // Depth: the z-buffer's eye distance against the ray cast's (scene, sphere and quad alike).
+    vtkNew<vtkFloatArray> z;
+    viewer.Window->GetZbufferData(0, 0, Size - 1, Size - 1, z);
+    double clip[2];
+    viewer.Renderer->GetActiveCamera()->GetClippingRange(clip);
+    double worstDepth = 0.0;
+    std::size_t depthPixels = 0;
+    for (int y = 0; y < Size; ++y)
+    {
+      for (int x = 0; x < Size; ++x)
+      {
+        const SceneRay ray = view.Ray(x + 0.5f, y + 0.5f);
+        const SceneHit hit = everything.Intersect(ray);
+        if (!hit.Hit())
+        {
+          continue;
+        }
+        const std::size_t i = static_cast<std::size_t>(y) * Size + x;
+        const double ndc = 2.0 * z->GetValue(static_cast<vtkIdType>(i)) - 1.0;
+        const double eye = 2.0 * clip[0] * clip[1] / (clip[1] + clip[0] - ndc * (clip[1] - clip[0]));
+        const double cast = hit.T * glm::dot(ray.Direction, view.Forward) / field.NormalizationScale();
+        worstDepth = std::max(worstDepth, std::abs(eye - cast) / cast);
+        ++depthPixels;
+      }
+    }
     std::cout << "sphere and relief masks, " << vtkLightFieldActor::GetRenderModeAsString(mode) << ": " << agree
-              << " pixels agree, " << wrong << " differ\n";
+              << " pixels agree, " << wrong << " differ; depth of " << depthPixels
+              << " pixels vs the ray cast: worst relative difference " << worstDepth << "\n";
+    EXPECT_LT(worstDepth, 5e-4);
     // Tessellated vs analytic silhouette and pixel-centre sampling: a thin outline at most.
     EXPECT_LE(wrong, (sphereVisible + reliefVisible) / 50 + 8);
   }
