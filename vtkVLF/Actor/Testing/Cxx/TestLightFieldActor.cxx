@@ -13,6 +13,7 @@
 #include "EmbreeScene.h"
 #include "PatchComparison.h"
 #include "PathTracer.h"
+#include "Lookup.h"
 #include "PinholeCamera.h"
 #include "Snapshot.h"
 
@@ -151,9 +152,10 @@ struct Reference
 
 // The path tracer's image of the camera, kept in the test directory between runs (the scene,
 // camera, size and samples are fixed; ctest runs every test in its own process).
-RgbImage CachedPathTrace(const PathTracer& tracer, const PinholeCamera& camera, std::uint64_t seed)
+RgbImage CachedPathTrace(
+  const std::string& name, const PathTracer& tracer, const PinholeCamera& camera, std::uint64_t seed)
 {
-  const std::string path = std::string(MESOLIGHT_TEST_TEMP_DIR) + "/walkthrough-reference-" +
+  const std::string path = std::string(MESOLIGHT_TEST_TEMP_DIR) + "/walkthrough-reference-" + name + "-" +
     std::to_string(Size) + "-" + std::to_string(ReferenceSamples) + "-" + std::to_string(seed) + ".bin";
   RgbImage image(Size, Size);
   {
@@ -188,15 +190,15 @@ std::vector<glm::vec3> Quantised(const RgbImage& image)
   return out;
 }
 
-const Reference& PathTracedReference(std::size_t directions)
+// `name` identifies the scene (the same for every direction count of it).
+const Reference& PathTracedReference(const vlf::LightField& field, const std::string& name)
 {
-  static std::map<std::size_t, Reference> cache;
-  Reference& ref = cache[directions];
+  static std::map<std::string, Reference> cache;
+  Reference& ref = cache[name];
   if (!ref.Radiance.empty())
   {
     return ref;
   }
-  const vlf::LightField& field = MirrorCornellField(directions);
   const EmbreeScene embree(field.Scene());
   const PathTracer tracer(embree);
   const CornellCamera c;
@@ -205,11 +207,11 @@ const Reference& PathTracedReference(std::size_t directions)
   camera.FocalPoint = vlf::ToUnit(field, c.FocalPoint);
   camera.ViewUp = c.ViewUp;
   camera.ViewAngleDegrees = c.ViewAngleDegrees;
-  const RgbImage image = CachedPathTrace(tracer, camera, 1);
+  const RgbImage image = CachedPathTrace(name, tracer, camera, 1);
   const vlf::WalkthroughTracer walk(field);
   const std::vector<vlf::PixelClass> classes = walk.ClassifyView(CornellView(field));
   ref.Radiance = Quantised(image);
-  ref.OtherSeed = Quantised(CachedPathTrace(tracer, camera, 2));
+  ref.OtherSeed = Quantised(CachedPathTrace(name, tracer, camera, 2));
   ref.Mask.assign(classes.size(), 0);
   for (std::size_t i = 0; i < classes.size(); ++i)
   {
@@ -297,7 +299,7 @@ void Print(std::size_t directions, const std::string& mode, const ModeErrors& e)
 void ModesAgainstPathTracer(std::size_t directions)
 {
   const vlf::LightField& field = MirrorCornellField(directions);
-  const Reference& ref = PathTracedReference(directions);
+  const Reference& ref = PathTracedReference(field, "mirror");
   Viewer viewer(field);
   ASSERT_TRUE(viewer.Actor->HasMirrors());
   Images other;
@@ -370,6 +372,66 @@ TEST(Walkthrough, ModesAgainstPathTracer2049)
 TEST(Walkthrough, ModesAgainstPathTracer8193)
 {
   ModesAgainstPathTracer(8193);
+}
+
+// The plain Cornell box (no mirror), 2049 directions, 10 iterations. First the display path
+// alone: the GL image equals the CPU model of the draw (field texture at the primary hit, tone
+// map, 8 bits). Then both texture and raytrace modes against the path tracer: what remains is
+// the field's own error (texture noise of 32 rays per side, and a bias).
+TEST(Walkthrough, PlainCornellBoxAgainstPathTracer)
+{
+  const vlf::LightField& field = walkthroughtest::PlainCornellField(2049);
+  const Reference& ref = PathTracedReference(field, "plain");
+  Viewer viewer(field);
+  Images other;
+  other.Radiance = ref.OtherSeed;
+  const ModeErrors noise = Measure(other, ref);
+  const ModeErrors coherent = Measure(viewer.Render(vtkLightFieldActor::Coherent), ref, "plain-coherent");
+  const ModeErrors raytrace = Measure(viewer.Render(vtkLightFieldActor::Raytrace), ref, "plain-raytrace");
+  {
+    // The GL image against the CPU model of the same draw (texture at the primary hit, tone map,
+    // round to 8 bits): the display path's own bias, in display levels.
+    const Images gl = viewer.Render(vtkLightFieldActor::Coherent);
+    const vlf::ViewFrame view = CornellView(field);
+    const vlf::WalkthroughTracer walk(field);
+    const vlf::Lookup lookup(field);
+    double signedLevels = 0.0, worstLevels = 0.0;
+    std::size_t n = 0;
+    for (int y = 0; y < Size; ++y)
+    {
+      for (int x = 0; x < Size; ++x)
+      {
+        const SceneRay ray = view.Ray(x + 0.5f, y + 0.5f);
+        const SceneHit hit = walk.Embree().Intersect(ray);
+        std::uint32_t surface;
+        if (walk.Classify(ray, hit, surface) != vlf::PixelClass::Diffuse)
+        {
+          continue;
+        }
+        const glm::vec3 cpu = vlf::ToneMap(lookup.DiffuseRadiance(surface, ray.Origin + hit.T * ray.Direction),
+          Exposure, vlf::ToneMapOperator::Clamp);
+        const glm::vec3 d = gl.Display[static_cast<std::size_t>(y) * Size + x];
+        for (int c = 0; c < 3; ++c)
+        {
+          const double levels = 255.0 * d[c] - std::round(255.0 * cpu[c]);
+          signedLevels += levels;
+          worstLevels = std::max(worstLevels, std::abs(levels));
+          ++n;
+        }
+      }
+    }
+    std::cout << "GL display vs the CPU model: mean signed difference " << signedLevels / n << " levels, worst "
+              << worstLevels << " over " << n / 3 << " diffuse pixels\n";
+    EXPECT_LT(std::abs(signedLevels / n), 0.01);
+    EXPECT_LE(worstLevels, 1.0);
+  }
+  Print(2049, "plain:path-tracer-seed2", noise);
+  Print(2049, "plain:coherent", coherent);
+  Print(2049, "plain:raytrace", raytrace);
+  EXPECT_LT(coherent.Diffuse.Mean, 0.12);
+  EXPECT_LT(raytrace.Diffuse.Mean, 0.14);
+  EXPECT_LT(std::abs(coherent.DiffuseBias), 0.06);
+  EXPECT_LT(std::abs(raytrace.DiffuseBias), 0.06);
 }
 
 // The tall block in front of the mirror wall hides exactly its pixels of it (a camera inside the

@@ -33,6 +33,23 @@ inline const vlf::LightField& MirrorCornellField(std::size_t directions)
   return *field;
 }
 
+// The plain Cornell box with the mirror fields' settings.
+inline const vlf::LightField& PlainCornellField(std::size_t directions)
+{
+  static std::map<std::size_t, std::unique_ptr<vlf::LightField>> fields;
+  std::unique_ptr<vlf::LightField>& field = fields[directions];
+  if (!field)
+  {
+    vlf::LightFieldSettings settings;
+    settings.Directions = directions;
+    settings.RaysPerSide = 32;
+    settings.TilesPerSide = 4;
+    field = vlf::LightField::Build(MakeCornellBox(), settings);
+    vlf::Propagate(*field, 10);
+  }
+  return *field;
+}
+
 inline const vlf::LightField& DiffuseCornellField()
 {
   static std::unique_ptr<vlf::LightField> field;
