@@ -42,6 +42,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
@@ -744,6 +745,31 @@ struct MessageLog
   }
 };
 
+// A copy of a snapshot claiming another format version, with a valid header checksum (the
+// header's 64-bit multiply-xorshift hash of vtkVLF/core/Snapshot.cxx, over its first 40 bytes).
+void WriteOtherVersion(const std::string& from, const std::string& to, std::uint32_t version)
+{
+  std::ifstream in(from, std::ios::binary);
+  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  ASSERT_GT(bytes.size(), 48u);
+  std::memcpy(&bytes[8], &version, 4);
+  std::uint64_t state = 0x243F6A8885A308D3ULL;
+  for (int q = 0; q < 40; q += 8)
+  {
+    std::uint64_t word;
+    std::memcpy(&word, &bytes[static_cast<std::size_t>(q)], 8);
+    state = (state ^ word) * 0x9E3779B97F4A7C15ULL;
+    state ^= state >> 29;
+  }
+  std::uint64_t h = state ^ (40ULL * 0xff51afd7ed558ccdULL);
+  h ^= h >> 33;
+  h *= 0xc4ceb9fe1a85ec53ULL;
+  h ^= h >> 33;
+  std::memcpy(&bytes[40], &h, 8);
+  std::ofstream out(to, std::ios::binary);
+  out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+}
+
 // Bad input: clear messages, never a crash.
 TEST(Walkthrough, BadInputIsReportedNotCrashed)
 {
@@ -771,6 +797,10 @@ TEST(Walkthrough, BadInputIsReportedNotCrashed)
   EXPECT_FALSE(actor->LoadLightField(dir + "/truncated.vlf"));
   std::cout << "truncated file: " << actor->GetLastError() << "\n";
   EXPECT_NE(actor->GetLastError().find("truncated"), std::string::npos);
+  WriteOtherVersion(dir + "/diffuse.vlf", dir + "/version99.vlf", 99);
+  EXPECT_FALSE(actor->LoadLightField(dir + "/version99.vlf"));
+  std::cout << "other version: " << actor->GetLastError() << "\n";
+  EXPECT_NE(actor->GetLastError().find("snapshot version 99"), std::string::npos) << actor->GetLastError();
 
   // A renderer with the actor but no field, and a zero-size viewport: nothing drawn, no crash.
   vtkNew<vtkRenderWindow> window;
