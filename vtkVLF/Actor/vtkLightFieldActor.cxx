@@ -466,7 +466,10 @@ bool vtkLightFieldActor::PrepareFrame(vtkRenderer* renderer)
         ++back;
       }
     }
-    if (back >= 5)
+    // Once per stay behind the surfaces, not once per frame of a moving camera.
+    const bool warn = back >= 5 && !impl.WarnedInsideWall;
+    impl.WarnedInsideWall = back >= 5;
+    if (warn)
     {
       vtkWarningMacro(<< "the camera sees the back of the light field's surfaces (is it inside a wall?): "
                          "the field is one-sided, so they show black");

@@ -55,6 +55,7 @@ struct vtkLightFieldActor::Internals
   bool HaveLastView = false;
   bool WarnedNoMirrors = false;
   bool WarnedParallel = false;
+  bool WarnedInsideWall = false;
 
   void StopWorker()
   {
