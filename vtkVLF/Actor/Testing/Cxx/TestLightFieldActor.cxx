@@ -36,6 +36,8 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <glm/geometric.hpp>
 
 #include <chrono>
@@ -171,10 +173,12 @@ RgbImage CachedPathTrace(
   std::cout << "path-traced reference " << Size << "x" << Size << " at " << ReferenceSamples << " spp (seed "
             << seed << "): " << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()
             << " s\n";
-  std::ofstream out(path + ".tmp", std::ios::binary);
+  // Written aside and renamed: tests running in parallel never read a half-written file.
+  const std::string temporary = path + ".tmp-" + std::to_string(::getpid());
+  std::ofstream out(temporary, std::ios::binary);
   out.write(reinterpret_cast<const char*>(image.Rgb.data()), static_cast<std::streamsize>(image.Rgb.size() * sizeof(float)));
   out.close();
-  std::rename((path + ".tmp").c_str(), path.c_str());
+  std::rename(temporary.c_str(), path.c_str());
   return image;
 }
 
