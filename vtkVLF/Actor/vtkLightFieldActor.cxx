@@ -7,7 +7,9 @@
 #include "PatchComparison.h" // ToWorld / ToUnit
 #include "Snapshot.h"
 
+#include "vtkAlgorithm.h"
 #include "vtkCamera.h"
+#include "vtkDataObject.h"
 #include "vtkCellArray.h"
 #include "vtkFloatArray.h"
 #include "vtkMath.h"
@@ -97,6 +99,31 @@ vtkSmartPointer<vtkPolyData> MakeScene(const vlf::LightField& field, const vlf::
 }
 } // namespace
 
+namespace
+{
+// Latest modification of an algorithm, its input data and everything upstream: what decides
+// whether an Update() executes.
+vtkMTimeType UpstreamModifiedTime(vtkAlgorithm* algorithm)
+{
+  vtkMTimeType time = algorithm->GetMTime();
+  for (int port = 0; port < algorithm->GetNumberOfInputPorts(); ++port)
+  {
+    for (int c = 0; c < algorithm->GetNumberOfInputConnections(port); ++c)
+    {
+      if (vtkAlgorithm* producer = algorithm->GetInputAlgorithm(port, c))
+      {
+        time = std::max(time, UpstreamModifiedTime(producer));
+      }
+      if (vtkDataObject* data = algorithm->GetInputDataObject(port, c))
+      {
+        time = std::max(time, data->GetMTime());
+      }
+    }
+  }
+  return time;
+}
+} // namespace
+
 //------------------------------------------------------------------------------
 vtkLightFieldActor::vtkLightFieldActor()
   : Impl(new Internals)
@@ -164,6 +191,8 @@ void vtkLightFieldActor::SetLightFieldFilter(vtkVirtualLightField* filter)
   this->Impl->StopWorker();
   this->Impl->Owned.reset();
   this->Filter = filter;
+  this->FilterUpstreamTime = 0;
+  this->FilterOutputTime = 0;
   this->UseField(filter ? filter->GetLightField() : nullptr);
 }
 
@@ -338,9 +367,20 @@ void vtkLightFieldActor::RefreshField()
   {
     return;
   }
-  this->Filter->Update();
-  if (this->Filter->GetLightField() != this->Impl->Field)
+  // A filter that will execute again frees the field the progressive worker may be reading:
+  // stop the worker first (only then, so a settled pipeline never cancels a trace).
+  const vtkMTimeType upstream = UpstreamModifiedTime(this->Filter);
+  if (upstream > this->FilterUpstreamTime)
   {
+    this->Impl->StopWorker();
+  }
+  this->Filter->Update();
+  this->FilterUpstreamTime = upstream;
+  // A new field may sit at the old one's address: its output's time says it was rebuilt.
+  const vtkMTimeType output = this->Filter->GetOutputDataObject(0) ? this->Filter->GetOutputDataObject(0)->GetMTime() : 0;
+  if (this->Filter->GetLightField() != this->Impl->Field || output != this->FilterOutputTime)
+  {
+    this->FilterOutputTime = output;
     this->UseField(this->Filter->GetLightField());
   }
 }

@@ -197,6 +197,8 @@ private:
   vtkIdType LastScreenPixels = 0;
   std::string LastError;
   vtkSmartPointer<vtkVirtualLightField> Filter;
+  vtkMTimeType FilterUpstreamTime = 0; // the filter's upstream modification at its last update
+  vtkMTimeType FilterOutputTime = 0;   // its output's modification when its field was taken
   std::unique_ptr<Internals> Impl;
 };
 

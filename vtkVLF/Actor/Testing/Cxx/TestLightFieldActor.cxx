@@ -4,6 +4,7 @@
 #include "vtkLightFieldActor.h"
 
 #include "vtkCornellBoxSource.h"
+#include "vtkTriangleSceneConverter.h"
 #include "vtkVirtualLightField.h"
 
 #include "WalkthroughImage.h"
@@ -699,6 +700,22 @@ TEST(Walkthrough, FieldFromTheVirtualLightFieldFilter)
   viewer.Actor->SetLightField(filter->GetLightField());
   const Images direct = viewer.Render(vtkLightFieldActor::Progressive);
   EXPECT_EQ(direct.Display, fromFilter.Display);
+
+  // The mirror box through the filter; the filter changes while the worker traces the mirror:
+  // the actor stops the worker before the filter frees the field, then traces the new one.
+  vtkNew<vtkTriangleSceneConverter> converter;
+  filter->SetInputData(converter->ToPolyData(MakeCornellBoxWithMirror()));
+  viewer.Actor->SetLightFieldFilter(filter);
+  viewer.Render(vtkLightFieldActor::Progressive);
+  viewer.Render(vtkLightFieldActor::Progressive); // the same view: the worker starts
+  filter->SetIterations(3);
+  viewer.Render(vtkLightFieldActor::Progressive);
+  // (The new field may reuse the old one's address: the actor must notice all the same.)
+  EXPECT_EQ(viewer.Actor->GetLightField()->IterationsDone, 3);
+  EXPECT_TRUE(viewer.Actor->HasMirrors());
+  ASSERT_TRUE(viewer.Actor->WaitForTracedReflections(60.0));
+  viewer.Render(vtkLightFieldActor::Progressive);
+  EXPECT_TRUE(viewer.Actor->GetLastFrameConverged());
 }
 
 // A renderer in the right half of a window (its viewport does not start at the window's
