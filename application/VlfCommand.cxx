@@ -4,6 +4,7 @@
 #include "AnalyticCases.h"
 #include "ChartPlot.h"
 #include "CommandLine.h"
+#include "LightFieldViewCommand.h"
 #include "Timing.h"
 
 #include "EmbreeScene.h"
@@ -407,6 +408,11 @@ int RunVlfPropagate(const std::vector<std::string>& args)
 
 int RunVlfRender(const std::vector<std::string>& args)
 {
+  // With --mode the image goes through vtkLightFieldActor; without, this CPU reference renders it.
+  if (std::find(args.begin(), args.end(), "--mode") != args.end())
+  {
+    return RunLightFieldRender(args);
+  }
   return Render(args);
 }
 

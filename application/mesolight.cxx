@@ -5,6 +5,7 @@
 #include "CommandTable.h"
 #include "ConeBenchmark.h"
 #include "ImageCommands.h"
+#include "LightFieldViewCommand.h"
 #include "LightSetBenchmark.h"
 #include "LightsCommand.h"
 #include "ReliefSweep.h"
@@ -92,8 +93,14 @@ const std::vector<mesolight::Command>& Commands()
         { "propagate", "[SCENE.obj] --out FIELD [options]",
           "propagate a virtual light field (built-in\nCornell box without SCENE)", RunVlfPropagate,
           {} },
-        { "render", "FIELD --out IMAGE.png", "render a light field's diffuse totals", RunVlfRender,
-          {} },
+        { "render", "FIELD --out IMAGE.png [--mode MODE]",
+          "render a light field: its diffuse totals on the\nCPU, or through vtkLightFieldActor "
+          "with "
+          "--mode",
+          RunVlfRender, {} },
+        { "view", "FIELD [options]",
+          "walk through a light field in a window\n(vtkLightFieldActor, four modes)",
+          RunLightFieldView, {} },
       } },
     { "bench", "", "", nullptr,
       {
@@ -112,6 +119,9 @@ const std::vector<mesolight::Command>& Commands()
         { "trace", "[options]", "rays/s (coherent vs incoherent), path samples/s",
           RunTraceBenchmark, {} },
         { "vlf", "[options]", "light field time, memory and accuracy sweep", RunVlfBenchmark, {} },
+        { "walkthrough", "[FIELD] [options]",
+          "light field walkthrough: frame time per mode and\nstage (vtkLightFieldActor)",
+          RunWalkthroughBenchmark, {} },
       } },
     { "help", "[COMMAND]", "this text, or one command's options", RunHelp, {} },
   };

@@ -356,4 +356,24 @@ TriangleScene MakeCornellBox()
   return scene;
 }
 
+TriangleScene MakeCornellBoxWithMirror()
+{
+  TriangleScene scene = MakeCornellBox();
+  SceneMaterial mirror;
+  mirror.Name = "mirror";
+  mirror.Diffuse = glm::vec3(0.0f);
+  mirror.Specular = glm::vec3(0.9f);
+  const std::uint32_t mirrorId = scene.AddMaterial(mirror);
+  // The red wall becomes the mirror: seen from the camera it reflects the room (a mirror
+  // facing the camera would mostly show the box's open front, i.e. nothing).
+  for (std::size_t t = 0; t < scene.TriangleCount(); ++t)
+  {
+    if (scene.Materials[scene.MaterialIds[t]].Name == "red")
+    {
+      scene.MaterialIds[t] = mirrorId;
+    }
+  }
+  return scene;
+}
+
 } // namespace mesolight

@@ -93,6 +93,10 @@ float NormalizeToUnitSphere(TriangleScene& scene);
 // 17/12/4). The light quad sits 0.1 mm below the ceiling so the two never coincide. All faces
 // point into the room (blocks: outward).
 TriangleScene MakeCornellBox();
+// The Cornell box with a mirror wall: the red (left, x = 550) wall perfect-specular (Ks 0.9,
+// Kd 0), the walkthrough's mirror test scene (Wither 2005 §2.4.2.2: specular surfaces seen
+// through the light field). Same geometry, triangle order and camera as MakeCornellBox.
+TriangleScene MakeCornellBoxWithMirror();
 struct CornellCamera
 {
   glm::vec3 Position{ 278.0f, 273.0f, -800.0f };

@@ -1,0 +1,93 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "WalkthroughImage.h"
+
+#include <glm/common.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace mesolight
+{
+namespace vlf
+{
+
+float EncodeSrgb(float v)
+{
+  v = std::min(std::max(v, 0.0f), 1.0f);
+  return v <= 0.0031308f ? 12.92f * v : 1.055f * std::pow(v, 1.0f / 2.4f) - 0.055f;
+}
+
+float DecodeSrgb(float e)
+{
+  e = std::min(std::max(e, 0.0f), 1.0f);
+  return e <= 0.04045f ? e / 12.92f : std::pow((e + 0.055f) / 1.055f, 2.4f);
+}
+
+glm::vec3 ToneMap(const glm::vec3& radiance, float exposure, ToneMapOperator op)
+{
+  glm::vec3 out;
+  for (int c = 0; c < 3; ++c)
+  {
+    float v = std::max(0.0f, exposure * radiance[c]);
+    if (op == ToneMapOperator::Reinhard)
+    {
+      v = v / (1.0f + v);
+    }
+    out[c] = EncodeSrgb(v);
+  }
+  return out;
+}
+
+glm::vec3 InverseToneMap(const glm::vec3& display, float exposure, ToneMapOperator op)
+{
+  glm::vec3 out;
+  for (int c = 0; c < 3; ++c)
+  {
+    float v = DecodeSrgb(display[c]);
+    if (op == ToneMapOperator::Reinhard)
+    {
+      v = v < 1.0f ? v / (1.0f - v) : 1e6f;
+    }
+    out[c] = exposure > 0.0f ? v / exposure : 0.0f;
+  }
+  return out;
+}
+
+ErrorStatistics RelativeError(const std::vector<glm::vec3>& image,
+  const std::vector<glm::vec3>& reference, const std::vector<std::uint8_t>& mask,
+  std::uint8_t which, float floor)
+{
+  std::vector<double> errors;
+  const std::size_t n = std::min(image.size(), std::min(reference.size(), mask.size()));
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    if (mask[i] != which)
+    {
+      continue;
+    }
+    const glm::vec3 d = glm::abs(image[i] - reference[i]);
+    const float r = reference[i].x + reference[i].y + reference[i].z;
+    errors.push_back(
+      static_cast<double>(d.x + d.y + d.z) / static_cast<double>(std::max(r, floor)));
+  }
+  ErrorStatistics stats;
+  stats.Pixels = errors.size();
+  if (errors.empty())
+  {
+    return stats;
+  }
+  double sum = 0.0;
+  for (double e : errors)
+  {
+    sum += e;
+  }
+  stats.Mean = sum / static_cast<double>(errors.size());
+  const std::size_t k = std::min(
+    errors.size() - 1, static_cast<std::size_t>(0.95 * static_cast<double>(errors.size())));
+  std::nth_element(errors.begin(), errors.begin() + static_cast<std::ptrdiff_t>(k), errors.end());
+  stats.Percentile95 = errors[k];
+  return stats;
+}
+
+} // namespace vlf
+} // namespace mesolight

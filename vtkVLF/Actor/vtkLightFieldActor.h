@@ -1,0 +1,209 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @class   vtkLightFieldActor
+ * @brief   a propagated virtual light field walked through inside a VTK renderer
+ *
+ * The walkthrough of Wither 2005 §2.4.2.2 as an actor that lives beside ordinary actors and
+ * relief surfaces in one renderer. It takes a propagated field (SetLightField,
+ * SetLightFieldFilter with a vtkVirtualLightField, or LoadLightField from a snapshot file) and
+ * draws the field's scene triangles (world coordinates) with its own mapper
+ * (vtkLightFieldMapper) in one of four modes:
+ *
+ * - Geometry (§2.4.2.2.1): the triangles with plain VTK shading, coloured by their Kd.
+ * - Raytrace (§2.4.2.2.2): per pixel, the first hit's radiance leaving toward the eye, looked up
+ *   in the field (three nearest directions with spherical weights, 8-neighbour cells), computed
+ *   on the CPU (Embree, mesolight::ParallelFor over tiles) and shown through a screen-space
+ * texture.
+ * - Progressive (§2.4.2.2.3): diffuse surfaces drawn by the GPU from one texture atlas of all
+ *   total diffuse textures (uploaded once, bilinear, gutters so no seams). Mirror pixels (Ks > 0)
+ *   are filled by a field lookup in the reflected direction (nearest direction and cell) while
+ *   the view changes, and replaced by reflections traced to the first diffuse hit (its texture)
+ *   once a worker thread has finished them for the current view.
+ * - Coherent (§2.4.2.2.4): progressive with the reflections traced at once, as 16-ray Embree
+ *   packets over 4 x 4 pixel tiles on all cores.
+ *
+ * Mirror and raytrace values reach the GPU as a float texture over the screen rectangle the
+ * mirrors cover, read by the actor's fragments at gl_FragCoord: the depth test therefore decides
+ * occlusion against every other actor, and the composite is by alpha (only fragments of mirror
+ * surfaces take the screen value where it has one). Exposure and tone mapping (clamp or
+ * Reinhard, then sRGB) are applied in GLSL to every radiance mode.
+ *
+ * The scene is static: the actor's own transform must stay the identity (the field is baked in
+ * world coordinates). A movable object is meant to join the same Embree scene as an instanced
+ * geometry (mesolight::vlf::WalkthroughTracer) and the same passes.
+ */
+#ifndef vtkLightFieldActor_h
+#define vtkLightFieldActor_h
+
+#include "MesolightLightFieldActorModule.h" // For export macro
+#include "vtkOpenGLActor.h"
+#include "vtkSmartPointer.h" // For vtkSmartPointer
+
+#include <memory> // For std::unique_ptr
+#include <string> // For std::string
+
+namespace mesolight
+{
+namespace vlf
+{
+class LightField;
+struct TraceOptions;
+}
+}
+class vtkPolyData;
+class vtkRenderer;
+class vtkVirtualLightField;
+
+class MESOLIGHTLIGHTFIELDACTOR_EXPORT vtkLightFieldActor : public vtkOpenGLActor
+{
+public:
+  static vtkLightFieldActor* New();
+  vtkTypeMacro(vtkLightFieldActor, vtkOpenGLActor);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /** Bring the field up to date (a filter's update) before culling and drawing use the scene. */
+  void Render(vtkRenderer* ren, vtkMapper* mapper) override;
+  using Superclass::GetBounds;
+  double* GetBounds() override;
+  ///@}
+
+  enum RenderModes
+  {
+    Geometry = 0,
+    Raytrace = 1,
+    Progressive = 2,
+    Coherent = 3
+  };
+  ///@{
+  /** Display mode (default Progressive). */
+  vtkSetClampMacro(RenderMode, int, Geometry, Coherent);
+  vtkGetMacro(RenderMode, int);
+  void SetRenderModeToGeometry() { this->SetRenderMode(Geometry); }
+  void SetRenderModeToRaytrace() { this->SetRenderMode(Raytrace); }
+  void SetRenderModeToProgressive() { this->SetRenderMode(Progressive); }
+  void SetRenderModeToCoherent() { this->SetRenderMode(Coherent); }
+  /** "geometry", "raytrace", "progressive", "coherent". */
+  static const char* GetRenderModeAsString(int mode);
+  /** The mode of a name above, or -1. */
+  static int GetRenderModeFromString(const std::string& name);
+  ///@}
+
+  enum ToneMaps
+  {
+    Clamp = 0,
+    Reinhard = 1
+  };
+  ///@{
+  /** Radiance scale before tone mapping (default 1) and the operator (default Clamp). */
+  vtkSetClampMacro(Exposure, double, 0.0, 1e9);
+  vtkGetMacro(Exposure, double);
+  vtkSetClampMacro(ToneMap, int, Clamp, Reinhard);
+  vtkGetMacro(ToneMap, int);
+  ///@}
+
+  ///@{
+  /** Mirror bounces followed by traced reflections (default 8). */
+  vtkSetClampMacro(MaximumReflectionDepth, int, 1, 64);
+  vtkGetMacro(MaximumReflectionDepth, int);
+  ///@}
+
+  /**
+   * The field to show, borrowed: it must outlive the actor's use of it (e.g. held by a
+   * vtkVirtualLightField). nullptr clears it.
+   */
+  void SetLightField(const mesolight::vlf::LightField* field);
+  /** Shows the field of a vtkVirtualLightField (updated, and its field taken, at each render). */
+  void SetLightFieldFilter(vtkVirtualLightField* filter);
+  /**
+   * Reads a field snapshot (`mesolight vlf propagate --out FILE`). False, with the reason in
+   * GetLastError() (missing, foreign, truncated or other-version file), on failure.
+   */
+  bool LoadLightField(const std::string& fileName);
+  const mesolight::vlf::LightField* GetLightField() const;
+  /** Why the last LoadLightField or field setup failed ("" when it did not). */
+  const std::string& GetLastError() const { return this->LastError; }
+  /** True when the field has surfaces with Ks > 0. */
+  bool HasMirrors() const;
+
+  /**
+   * Progressive mode: the camera rests. Starts tracing the reflections of the last rendered view
+   * (if not done or under way), waits until they are ready or `seconds` passed, and returns
+   * whether they are ready; the next Render() shows them. With 0 seconds it only polls (and
+   * starts the trace). True at once in the other modes. Rendering the same view twice also
+   * starts the trace.
+   */
+  bool WaitForTracedReflections(double seconds = 60.0);
+  /** The last frame showed traced (sharp) reflections for its view. */
+  bool GetLastFrameConverged() const { return this->LastFrameConverged; }
+
+  ///@{
+  /** Figures of the last frame: CPU seconds of the screen-space pass, texture upload seconds,
+   * pixels given a screen value, and the screen rectangle (x0, y0, x1, y1, viewport pixels). */
+  double GetLastSpecularSeconds() const { return this->LastSpecularSeconds; }
+  double GetLastUploadSeconds() const { return this->LastUploadSeconds; }
+  vtkIdType GetLastScreenPixels() const { return this->LastScreenPixels; }
+  void GetLastScreenRect(int rect[4]) const;
+  ///@}
+
+  ///@{
+  /**
+   * Negative tests only: upload the atlas upside down; paste the screen rectangle over every
+   * fragment in it without alpha; trace reflections this many bounces short.
+   */
+  vtkSetMacro(FlipAtlasForTesting, bool);
+  vtkGetMacro(FlipAtlasForTesting, bool);
+  vtkSetMacro(OverwriteCompositeForTesting, bool);
+  vtkGetMacro(OverwriteCompositeForTesting, bool);
+  vtkSetClampMacro(ReflectionBouncesShortForTesting, int, 0, 8);
+  vtkGetMacro(ReflectionBouncesShortForTesting, int);
+  ///@}
+
+  ///@{
+  /** Used by vtkLightFieldMapper while drawing. */
+  struct Internals;
+  Internals* GetInternals() { return this->Impl.get(); }
+  /** Updates the field (filter input), atlas and screen image for the renderer's view; false
+   * when there is nothing to draw in a radiance mode (no field). */
+  bool PrepareFrame(vtkRenderer* renderer);
+  void SetLastUploadSeconds(double s) { this->LastUploadSeconds = s; }
+  ///@}
+
+protected:
+  vtkLightFieldActor();
+  ~vtkLightFieldActor() override;
+
+private:
+  vtkLightFieldActor(const vtkLightFieldActor&) = delete;
+  void operator=(const vtkLightFieldActor&) = delete;
+
+  bool UseField(const mesolight::vlf::LightField* field);
+  void RefreshField(); // updates the filter, takes its field when it changed
+  mesolight::vlf::TraceOptions CurrentTraceOptions() const;
+  // Identifies the trace options: traced reflections of other options are not reused.
+  int TraceKey() const
+  {
+    return this->MaximumReflectionDepth * 16 + this->ReflectionBouncesShortForTesting;
+  }
+  // Starts the worker on the last view's reflections unless it has them or is on them.
+  void TraceAtRest();
+
+  int RenderMode = Progressive;
+  double Exposure = 1.0;
+  int ToneMap = Clamp;
+  int MaximumReflectionDepth = 8;
+  bool FlipAtlasForTesting = false;
+  bool OverwriteCompositeForTesting = false;
+  int ReflectionBouncesShortForTesting = 0;
+  bool LastFrameConverged = false;
+  double LastSpecularSeconds = 0.0;
+  double LastUploadSeconds = 0.0;
+  vtkIdType LastScreenPixels = 0;
+  std::string LastError;
+  vtkSmartPointer<vtkVirtualLightField> Filter;
+  vtkMTimeType FilterUpstreamTime = 0; // the filter's upstream modification at its last update
+  vtkMTimeType FilterOutputTime = 0;   // its output's modification when its field was taken
+  std::unique_ptr<Internals> Impl;
+};
+
+#endif

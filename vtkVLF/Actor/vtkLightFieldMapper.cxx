@@ -1,0 +1,235 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "vtkLightFieldMapper.h"
+
+#include "vtkLightFieldActor.h"
+#include "vtkLightFieldActorInternals.h"
+#include "vtkLightFieldFS.h"
+
+#include "vtkDataObject.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLHelper.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+
+#include <chrono>
+
+vtkStandardNewMacro(vtkLightFieldMapper);
+
+//------------------------------------------------------------------------------
+vtkLightFieldMapper::vtkLightFieldMapper()
+{
+  // Our own attribute: VTK uploads "tcoord" only when the actor has a texture.
+  this->MapDataArrayToVertexAttribute(
+    "mlAtlasTC", GetAtlasCoordinatesName(), vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
+}
+
+//------------------------------------------------------------------------------
+vtkLightFieldMapper::~vtkLightFieldMapper() = default;
+
+//------------------------------------------------------------------------------
+bool vtkLightFieldMapper::UploadAtlas(vtkRenderer* ren, vtkActor* act)
+{
+  vtkLightFieldActor* actor = vtkLightFieldActor::SafeDownCast(act);
+  vtkLightFieldActor::Internals* impl = actor->GetInternals();
+  vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+  if (!impl->Atlas || !window)
+  {
+    return false;
+  }
+  if (this->AtlasTexture && this->AtlasTexture->GetHandle() != 0 &&
+    this->AtlasTexture->GetContext() == window && this->AtlasVersion == impl->AtlasVersion &&
+    this->AtlasFlipped == actor->GetFlipAtlasForTesting())
+  {
+    return true; // uploaded once per field
+  }
+  if (!this->AtlasTexture)
+  {
+    this->AtlasTexture = vtkSmartPointer<vtkTextureObject>::New();
+  }
+  this->AtlasTexture->SetContext(window);
+  this->AtlasTexture->SetMinificationFilter(vtkTextureObject::Linear);
+  this->AtlasTexture->SetMagnificationFilter(vtkTextureObject::Linear);
+  this->AtlasTexture->SetWrapS(vtkTextureObject::ClampToEdge);
+  this->AtlasTexture->SetWrapT(vtkTextureObject::ClampToEdge);
+  const mesolight::vlf::TextureAtlas& atlas = *impl->Atlas;
+  std::vector<float> flipped;
+  const float* data = atlas.Pixels().data();
+  if (actor->GetFlipAtlasForTesting())
+  {
+    flipped = atlas.FlippedPixels();
+    data = flipped.data();
+  }
+  if (!this->AtlasTexture->Create2DFromRaw(static_cast<unsigned int>(atlas.Width()),
+        static_cast<unsigned int>(atlas.Height()), 4, VTK_FLOAT, const_cast<float*>(data)))
+  {
+    vtkErrorMacro(<< "could not upload the light field's " << atlas.Width() << "x" << atlas.Height()
+                  << " texture atlas");
+    return false;
+  }
+  this->AtlasVersion = impl->AtlasVersion;
+  this->AtlasFlipped = actor->GetFlipAtlasForTesting();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkLightFieldMapper::UploadScreen(vtkRenderer* ren, vtkActor* act)
+{
+  vtkLightFieldActor* actor = vtkLightFieldActor::SafeDownCast(act);
+  vtkLightFieldActor::Internals* impl = actor->GetInternals();
+  vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+  if (!window)
+  {
+    return false;
+  }
+  if (!this->ScreenTexture)
+  {
+    this->ScreenTexture = vtkSmartPointer<vtkTextureObject>::New();
+  }
+  this->ScreenTexture->SetContext(window);
+  this->ScreenTexture->SetMinificationFilter(vtkTextureObject::Nearest);
+  this->ScreenTexture->SetMagnificationFilter(vtkTextureObject::Nearest);
+  this->ScreenTexture->SetWrapS(vtkTextureObject::ClampToEdge);
+  this->ScreenTexture->SetWrapT(vtkTextureObject::ClampToEdge);
+  const bool have =
+    impl->ScreenValid && !impl->Rect.Empty() && impl->Screen.size() == impl->Rect.Pixels() * 4;
+  float none[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
+  const unsigned int w = have ? static_cast<unsigned int>(impl->Rect.Width()) : 1u;
+  const unsigned int h = have ? static_cast<unsigned int>(impl->Rect.Height()) : 1u;
+  float* data = have ? impl->Screen.data() : none;
+  if (!this->ScreenTexture->Create2DFromRaw(w, h, 4, VTK_FLOAT, data))
+  {
+    vtkErrorMacro(<< "could not upload the " << w << "x" << h << " screen-space radiance texture");
+    return false;
+  }
+  this->ScreenOrigin[0] = have ? impl->Origin[0] : 0;
+  this->ScreenOrigin[1] = have ? impl->Origin[1] : 0;
+  this->ScreenSize[0] = have ? static_cast<int>(w) : 0;
+  this->ScreenSize[1] = have ? static_cast<int>(h) : 0;
+  this->AllScreen = impl->AllScreen;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkLightFieldMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* act)
+{
+  this->Radiance = false;
+  vtkLightFieldActor* actor = vtkLightFieldActor::SafeDownCast(act);
+  if (actor && actor->PrepareFrame(ren) && actor->GetRenderMode() != vtkLightFieldActor::Geometry)
+  {
+    const auto start = std::chrono::steady_clock::now();
+    this->Radiance = this->UploadAtlas(ren, act) && this->UploadScreen(ren, act);
+    actor->SetLastUploadSeconds(
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    this->Exposure = static_cast<float>(actor->GetExposure());
+    this->ToneMap = actor->GetToneMap();
+    this->Overwrite = actor->GetOverwriteCompositeForTesting();
+  }
+  // Geometry mode colours by Kd; the radiance modes by nothing VTK knows.
+  if (this->ScalarVisibility == (this->Radiance ? 1 : 0))
+  {
+    this->SetScalarVisibility(!this->Radiance);
+  }
+  if (this->Radiance)
+  {
+    this->AtlasTexture->Activate();
+    this->ScreenTexture->Activate();
+  }
+  this->Superclass::RenderPieceStart(ren, act);
+}
+
+//------------------------------------------------------------------------------
+void vtkLightFieldMapper::RenderPieceFinish(vtkRenderer* ren, vtkActor* act)
+{
+  this->Superclass::RenderPieceFinish(ren, act);
+  if (this->Radiance)
+  {
+    this->ScreenTexture->Deactivate();
+    this->AtlasTexture->Deactivate();
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkLightFieldMapper::GetNeedToRebuildShaders(
+  vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act)
+{
+  const auto built = this->BuiltRadiance.find(&cellBO);
+  const bool changed = built == this->BuiltRadiance.end() || built->second != this->Radiance;
+  return this->Superclass::GetNeedToRebuildShaders(cellBO, ren, act) || changed;
+}
+
+//------------------------------------------------------------------------------
+void vtkLightFieldMapper::ReplaceShaderValues(
+  std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act)
+{
+  this->BuiltRadiance[this->LastBoundBO] = this->Radiance;
+  if (!this->Radiance)
+  {
+    this->Superclass::ReplaceShaderValues(shaders, ren, act);
+    return;
+  }
+  std::string vs = shaders[vtkShader::Vertex]->GetSource();
+  std::string fs = shaders[vtkShader::Fragment]->GetSource();
+  vtkShaderProgram::Substitute(
+    vs, "//VTK::Normal::Dec", "in vec2 mlAtlasTC;\nout vec2 mlAtlasTCVC;\n//VTK::Normal::Dec");
+  vtkShaderProgram::Substitute(
+    vs, "//VTK::Normal::Impl", "mlAtlasTCVC = mlAtlasTC;\n  //VTK::Normal::Impl");
+  vtkShaderProgram::Substitute(fs, "//VTK::CustomUniforms::Dec",
+    std::string("//VTK::CustomUniforms::Dec\n") + vtkLightFieldFS);
+  // VTK's lighting gives way to the field's radiance.
+  vtkShaderProgram::Substitute(fs, "//VTK::Light::Impl", "//MESOLIGHT::LightField::Impl");
+  shaders[vtkShader::Vertex]->SetSource(vs);
+  shaders[vtkShader::Fragment]->SetSource(fs);
+  this->Superclass::ReplaceShaderValues(shaders, ren, act);
+  fs = shaders[vtkShader::Fragment]->GetSource();
+  vtkShaderProgram::Substitute(fs, "//MESOLIGHT::LightField::Impl",
+    "gl_FragData[0] = vec4(mlDisplay(mlRadiance()), opacity);");
+  shaders[vtkShader::Fragment]->SetSource(fs);
+}
+
+//------------------------------------------------------------------------------
+void vtkLightFieldMapper::SetMapperShaderParameters(
+  vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act)
+{
+  this->Superclass::SetMapperShaderParameters(cellBO, ren, act);
+  if (!this->Radiance || !cellBO.Program)
+  {
+    return;
+  }
+  vtkShaderProgram* program = cellBO.Program;
+  program->SetUniformi("mlAtlas", this->AtlasTexture->GetTextureUnit());
+  program->SetUniformi("mlScreen", this->ScreenTexture->GetTextureUnit());
+  program->SetUniform2i("mlScreenOrigin", this->ScreenOrigin);
+  program->SetUniform2i("mlScreenSize", this->ScreenSize);
+  program->SetUniformf("mlExposure", this->Exposure);
+  program->SetUniformi("mlToneMap", this->ToneMap);
+  program->SetUniformi("mlAllScreen", this->AllScreen ? 1 : 0);
+  program->SetUniformi("mlOverwrite", this->Overwrite ? 1 : 0);
+}
+
+//------------------------------------------------------------------------------
+void vtkLightFieldMapper::ReleaseGraphicsResources(vtkWindow* window)
+{
+  if (this->AtlasTexture)
+  {
+    this->AtlasTexture->ReleaseGraphicsResources(window);
+  }
+  if (this->ScreenTexture)
+  {
+    this->ScreenTexture->ReleaseGraphicsResources(window);
+  }
+  this->AtlasVersion = 0;
+  this->BuiltRadiance.clear();
+  this->Superclass::ReleaseGraphicsResources(window);
+}
+
+//------------------------------------------------------------------------------
+void vtkLightFieldMapper::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Radiance: " << this->Radiance << "\n";
+  os << indent << "ScreenOrigin: " << this->ScreenOrigin[0] << ", " << this->ScreenOrigin[1]
+     << "\n";
+  os << indent << "ScreenSize: " << this->ScreenSize[0] << "x" << this->ScreenSize[1] << "\n";
+}
