@@ -264,6 +264,27 @@ bool CommandLine::GetIntList(
   return true;
 }
 
+bool CommandLine::GetSize(
+  const std::string& name, int low, int high, int& width, int& height, std::string& error) const
+{
+  const std::string text = this->Get(name);
+  const size_t x = text.find('x');
+  char* end1 = nullptr;
+  char* end2 = nullptr;
+  const long w = x == std::string::npos ? 0 : std::strtol(text.c_str(), &end1, 10);
+  const long h = x == std::string::npos ? 0 : std::strtol(text.c_str() + x + 1, &end2, 10);
+  if (x == std::string::npos || x == 0 || end1 != text.c_str() + x ||
+    end2 == text.c_str() + x + 1 || *end2 != '\0' || w < low || h < low || w > high || h > high)
+  {
+    error = "option " + name + ": '" + text + "' is not WxH with " + std::to_string(low) +
+      " <= W, H <= " + std::to_string(high);
+    return false;
+  }
+  width = static_cast<int>(w);
+  height = static_cast<int>(h);
+  return true;
+}
+
 bool CommandLine::GetDoubleVector(const std::string& name, size_t count, double* values) const
 {
   std::vector<double> list;

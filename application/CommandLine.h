@@ -59,6 +59,12 @@ public:
     const std::string& name, int low, int high, std::vector<int>& values, std::string& error) const;
   bool GetDoubleList(const std::string& name, double low, double high, std::vector<double>& values,
     std::string& error) const;
+  /**
+   * A WxH value ("800x600") with both sides whole numbers in [low, high]; false with a message
+   * naming the option otherwise.
+   */
+  bool GetSize(
+    const std::string& name, int low, int high, int& width, int& height, std::string& error) const;
   /** An X,Y,Z-style value: exactly count finite numbers. False otherwise. */
   bool GetDoubleVector(const std::string& name, size_t count, double* values) const;
   /** The items of a comma-separated list, spaces around them and empty items dropped. */

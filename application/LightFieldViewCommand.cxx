@@ -3,6 +3,7 @@
 
 #include "ChartPlot.h"
 #include "CommandLine.h"
+#include "LightFieldCamera.h"
 #include "Timing.h"
 
 #include "vtkLightFieldActor.h"
@@ -45,23 +46,11 @@ namespace
 namespace vlf = mesolight::vlf;
 using Clock = std::chrono::steady_clock;
 
-bool ParseSize(const std::string& text, int& width, int& height)
-{
-  char x = 0;
-  std::istringstream in(text);
-  return (in >> width >> x >> height) && x == 'x' && width >= 1 && height >= 1 && width <= 16384 &&
-    height <= 16384 && in.peek() == std::char_traits<char>::eof();
-}
-
 void AddViewOptions(CommandLine& cl)
 {
   cl.AddValue("--mode", "MODE", "geometry, raytrace, progressive or coherent", "progressive");
   cl.AddValue("--size", "WxH", "window size in pixels", "800x800");
-  cl.AddValue("--camera", "X,Y,Z,FX,FY,FZ",
-    "camera position and focal point in scene coordinates (default: the Cornell box camera for "
-    "the Cornell box, else a view of the whole scene along +z)");
-  cl.AddValue("--view-up", "X,Y,Z", "camera up direction", "0,1,0");
-  cl.AddValue("--view-angle", "DEG", "vertical field of view", "39.3077");
+  AddLightFieldCameraOptions(cl);
   cl.AddValue("--exposure", "X", "radiance scale before tone mapping", "1");
   cl.AddValue("--tone-map", "OP", "clamp or reinhard", "clamp");
   cl.AddValue("--reflection-depth", "N", "mirror bounces traced", "8");
@@ -78,12 +67,12 @@ bool ConfigureView(const CommandLine& cl, vtkLightFieldActor* actor, vtkRenderer
               << "' is not geometry, raytrace, progressive or coherent\n";
     return false;
   }
-  if (!ParseSize(cl.Get("--size"), width, height))
+  std::string error;
+  if (!cl.GetSize("--size", 1, 16384, width, height, error))
   {
-    std::cerr << command << ": --size '" << cl.Get("--size") << "' is not WxH in [1, 16384]\n";
+    std::cerr << command << ": " << error << "\n";
     return false;
   }
-  std::string error;
   double exposure = 1.0, angle = 39.3077;
   int depth = 8;
   if (!cl.GetDouble("--exposure", 0.0, 1e9, exposure, error) ||
@@ -106,45 +95,11 @@ bool ConfigureView(const CommandLine& cl, vtkLightFieldActor* actor, vtkRenderer
   actor->SetMaximumReflectionDepth(depth);
 
   double up[3] = { 0.0, 1.0, 0.0 };
-  if (!cl.GetDoubleVector("--view-up", 3, up))
-  {
-    std::cerr << command << ": --view-up needs X,Y,Z\n";
-    return false;
-  }
-  const vlf::LightField& field = *actor->GetLightField();
-  glm::vec3 lower, upper;
-  SceneBounds(field.Scene(), lower, upper);
-  const glm::vec3 worldLower = vlf::ToWorld(field, lower), worldUpper = vlf::ToWorld(field, upper);
   glm::vec3 eye, focal;
-  if (cl.Has("--camera"))
+  if (!ReadLightFieldCamera(cl, *actor->GetLightField(), eye, focal, up, error))
   {
-    double c[6];
-    if (!cl.GetDoubleVector("--camera", 6, c))
-    {
-      std::cerr << command << ": --camera needs X,Y,Z,FX,FY,FZ\n";
-      return false;
-    }
-    eye = glm::vec3(c[0], c[1], c[2]);
-    focal = glm::vec3(c[3], c[4], c[5]);
-  }
-  else
-  {
-    const TriangleScene cornell = MakeCornellBox();
-    glm::vec3 cl0, cu0;
-    SceneBounds(cornell, cl0, cu0);
-    if (glm::length(cl0 - worldLower) + glm::length(cu0 - worldUpper) < 1.0f)
-    {
-      const CornellCamera camera;
-      eye = camera.Position;
-      focal = camera.FocalPoint;
-    }
-    else
-    {
-      const glm::vec3 centre = 0.5f * (worldLower + worldUpper);
-      const float radius = 0.5f * glm::length(worldUpper - worldLower);
-      focal = centre;
-      eye = centre - glm::vec3(0.0f, 0.0f, 2.2f * radius);
-    }
+    std::cerr << command << ": " << error << "\n";
+    return false;
   }
   const glm::vec3 forward = focal - eye;
   if (!(glm::length(forward) > 0.0f) ||
@@ -179,6 +134,37 @@ bool WritePng(vtkRenderWindow* window, const std::string& out)
   return writer->GetErrorCode() == 0;
 }
 
+// The light field actor of FIELD (the command's one positional argument) in a renderer and a
+// window set up by the view options.
+struct WalkthroughWindow
+{
+  vtkNew<vtkLightFieldActor> Actor;
+  vtkNew<vtkRenderer> Renderer;
+  vtkNew<vtkRenderWindow> Window;
+};
+
+// 0 when the window is ready, else the command's exit code (the message is printed).
+int OpenWalkthrough(
+  const CommandLine& cl, const char* command, bool offscreen, WalkthroughWindow& walkthrough)
+{
+  if (!walkthrough.Actor->LoadLightField(cl.Positional()[0]))
+  {
+    std::cerr << command << ": " << walkthrough.Actor->GetLastError() << "\n";
+    return 1;
+  }
+  walkthrough.Window->SetOffScreenRendering(offscreen ? 1 : 0);
+  walkthrough.Window->SetMultiSamples(0);
+  walkthrough.Window->AddRenderer(walkthrough.Renderer);
+  walkthrough.Renderer->AddActor(walkthrough.Actor);
+  int width = 0, height = 0;
+  if (!ConfigureView(cl, walkthrough.Actor, walkthrough.Renderer, command, width, height))
+  {
+    return 2;
+  }
+  walkthrough.Window->SetSize(width, height);
+  return 0;
+}
+
 int Render(const std::vector<std::string>& args)
 {
   const char* command = "mesolight vlf render";
@@ -209,23 +195,13 @@ int Render(const std::vector<std::string>& args)
     std::cerr << command << ": '" << out << "' exists; add --force to replace it\n";
     return 1;
   }
-  vtkNew<vtkLightFieldActor> actor;
-  if (!actor->LoadLightField(cl.Positional()[0]))
+  WalkthroughWindow walkthrough;
+  if (const int status = OpenWalkthrough(cl, command, true, walkthrough))
   {
-    std::cerr << command << ": " << actor->GetLastError() << "\n";
-    return 1;
+    return status;
   }
-  vtkNew<vtkRenderer> renderer;
-  vtkNew<vtkRenderWindow> window;
-  window->SetOffScreenRendering(1);
-  window->SetMultiSamples(0);
-  window->AddRenderer(renderer);
-  renderer->AddActor(actor);
-  int width = 0, height = 0;
-  if (!ConfigureView(cl, actor, renderer, command, width, height))
-  {
-    return 2;
-  }
+  vtkLightFieldActor* actor = walkthrough.Actor;
+  vtkRenderWindow* window = walkthrough.Window;
   if ((actor->GetRenderMode() == vtkLightFieldActor::Progressive ||
         actor->GetRenderMode() == vtkLightFieldActor::Coherent) &&
     !actor->HasMirrors())
@@ -233,7 +209,6 @@ int Render(const std::vector<std::string>& args)
     std::cout << "note: the light field has no mirror surfaces; " << cl.Get("--mode")
               << " shows its diffuse textures\n";
   }
-  window->SetSize(width, height);
   const Clock::time_point start = Clock::now();
   window->Render();
   if (actor->GetRenderMode() == vtkLightFieldActor::Progressive && !cl.Has("--moving"))
@@ -251,9 +226,9 @@ int Render(const std::vector<std::string>& args)
     std::cerr << command << ": could not write '" << out << "'\n";
     return 1;
   }
-  std::cout << "wrote " << out << " (" << width << "x" << height << ", mode " << cl.Get("--mode")
-            << ", " << seconds << " s, " << actor->GetLastScreenPixels()
-            << " pixels from the CPU pass)\n";
+  std::cout << "wrote " << out << " (" << window->GetSize()[0] << "x" << window->GetSize()[1]
+            << ", mode " << cl.Get("--mode") << ", " << seconds << " s, "
+            << actor->GetLastScreenPixels() << " pixels from the CPU pass)\n";
   return 0;
 }
 
@@ -379,24 +354,15 @@ int View(const std::vector<std::string>& args)
     std::cerr << command << ": " << error << "\n";
     return 2;
   }
-  vtkNew<vtkLightFieldActor> actor;
-  if (!actor->LoadLightField(cl.Positional()[0]))
+  WalkthroughWindow walkthrough;
+  if (const int status = OpenWalkthrough(cl, command, false, walkthrough))
   {
-    std::cerr << command << ": " << actor->GetLastError() << "\n";
-    return 1;
+    return status;
   }
-  vtkNew<vtkRenderer> renderer;
-  vtkNew<vtkRenderWindow> window;
-  window->SetMultiSamples(0);
-  window->AddRenderer(renderer);
+  vtkLightFieldActor* actor = walkthrough.Actor;
+  vtkRenderer* renderer = walkthrough.Renderer;
+  vtkRenderWindow* window = walkthrough.Window;
   window->SetWindowName("mesolight vlf view");
-  renderer->AddActor(actor);
-  int width = 0, height = 0;
-  if (!ConfigureView(cl, actor, renderer, command, width, height))
-  {
-    return 2;
-  }
-  window->SetSize(width, height);
   vtkNew<vtkTextActor> text;
   text->GetTextProperty()->SetFontSize(14);
   text->SetDisplayPosition(8, 8);
@@ -549,10 +515,9 @@ int Bench(const std::vector<std::string>& args)
   }
   std::string error;
   int width = 0, height = 0, frames = 0, directions = 0, rays = 0, iterations = 0;
-  if (!ParseSize(cl.Get("--size"), width, height))
+  if (!cl.GetSize("--size", 1, 16384, width, height, error))
   {
-    std::cerr << command << ": --size '" << cl.Get("--size") << "' is not WxH\n";
-    return 2;
+    return cl.UsageError(error);
   }
   if (!cl.GetInt("--frames", 1, 100000, frames, error) ||
     !cl.GetInt("--directions", 5, 1 << 20, directions, error) ||
@@ -575,8 +540,9 @@ int Bench(const std::vector<std::string>& args)
       mirrorField = BenchField(MakeCornellBoxWithMirror(), directions, rays, iterations);
     }
     diffuseField = BenchField(MakeCornellBox(), directions, rays, iterations);
-    std::cout << "fields ready in " << SecondsSince(start) << " s (" << mirrorField->Directions().Size()
-              << " directions, " << mirrorField->Settings().RaysPerSide << " rays per side)\n";
+    std::cout << "fields ready in " << SecondsSince(start) << " s ("
+              << mirrorField->Directions().Size() << " directions, "
+              << mirrorField->Settings().RaysPerSide << " rays per side)\n";
   }
   catch (const std::exception& e)
   {

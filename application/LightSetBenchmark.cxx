@@ -106,15 +106,9 @@ int RunLightSetBenchmark(const std::vector<std::string>& args)
   o.RefinementSteps = 8;
   o.Environment = cl.Get("--environment");
   o.EnvironmentLights = counts.front();
+  if (!cl.GetSize("--size", 16, 8192, o.Width, o.Height, error))
   {
-    const std::string size = cl.Get("--size");
-    char x = 0;
-    std::istringstream in(size);
-    if (!(in >> o.Width >> x >> o.Height) || x != 'x' || o.Width < 16 || o.Height < 16)
-    {
-      std::cerr << "mesolight bench ibl: bad --size " << size << "\n";
-      return 2;
-    }
+    return cl.UsageError(error);
   }
 
   ReliefScene scene;

@@ -591,20 +591,10 @@ int RunReliefSweep(const std::vector<std::string>& args)
       return cl.UsageError("--angles: '90' is not an angle in [0, 90)");
     }
   }
-  const std::string size = cl.Get("--size");
-  const size_t x = size.find('x');
-  char* end1 = nullptr;
-  char* end2 = nullptr;
-  const long w = x == std::string::npos ? 0 : std::strtol(size.c_str(), &end1, 10);
-  const long h = x == std::string::npos ? 0 : std::strtol(size.c_str() + x + 1, &end2, 10);
-  if (x == std::string::npos || end1 != size.c_str() + x || *end2 != '\0' || w < 16 || h < 16 ||
-    w > 8192 || h > 8192)
+  if (!cl.GetSize("--size", 16, 8192, settings.Width, settings.Height, error))
   {
-    std::cerr << "mesolight bench relief: --size: '" << size << "' is not WxH (16 to 8192)\n";
-    return 2;
+    return cl.UsageError(error);
   }
-  settings.Width = int(w);
-  settings.Height = int(h);
   if (!cl.GetInt("--frames", 1, 1000, settings.Frames, error) ||
     !cl.GetInt("--resolution", 2, 8192, settings.Resolution, error) ||
     !cl.GetDouble("--depth-scale", 1e-4, 10.0, settings.DepthScale, error))

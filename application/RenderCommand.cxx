@@ -93,18 +93,7 @@ bool ReadSceneOptions(const CommandLine& cl, ReliefSceneOptions& o, std::string&
   {
     o.LinearSteps = 128; // an iteration budget for the pyramid traversal, not linear steps
   }
-  const std::string size = cl.Get("--size");
-  int w = 0, h = 0;
-  char x = 0;
-  std::istringstream in(size);
-  if (!(in >> w >> x >> h) || x != 'x' || w < 16 || h < 16 || w > 8192 || h > 8192)
-  {
-    error = "option --size: '" + size + "' is not WxH with 16 <= W, H <= 8192";
-    return false;
-  }
-  o.Width = w;
-  o.Height = h;
-  return true;
+  return cl.GetSize("--size", 16, 8192, o.Width, o.Height, error);
 }
 
 // The arguments of a command that takes the scene options (render, bench): false, with the exit

@@ -4,6 +4,7 @@
 #include "AnalyticCases.h"
 #include "ChartPlot.h"
 #include "CommandLine.h"
+#include "LightFieldCamera.h"
 #include "LightFieldViewCommand.h"
 #include "Timing.h"
 
@@ -231,11 +232,7 @@ int Render(const std::vector<std::string>& args)
     "interpolation).\n");
   cl.AddValue("--out", "IMAGE.png", "where to write the image (required)");
   cl.AddValue("--size", "WxH", "image size in pixels", "512x512");
-  cl.AddValue("--camera", "X,Y,Z,FX,FY,FZ",
-    "camera position and focal point in scene coordinates (default: the Cornell box camera for "
-    "the Cornell box, else a view of the whole scene along +z)");
-  cl.AddValue("--view-up", "X,Y,Z", "camera up direction", "0,1,0");
-  cl.AddValue("--view-angle", "DEG", "vertical field of view", "39.3077");
+  AddLightFieldCameraOptions(cl);
   cl.AddValue("--exposure", "X", "radiance scale before the sRGB curve", "1");
   cl.AddFlag("--force", "replace an existing IMAGE.png");
   std::string error;
@@ -255,16 +252,9 @@ int Render(const std::vector<std::string>& args)
     return 1;
   }
   int width = 0, height = 0;
+  if (!cl.GetSize("--size", 1, 16384, width, height, error))
   {
-    char x = 0;
-    std::istringstream in(cl.Get("--size"));
-    if (!(in >> width >> x >> height) || x != 'x' || width < 1 || height < 1 || width > 16384 ||
-      height > 16384)
-    {
-      std::cerr << "mesolight vlf render: --size '" << cl.Get("--size")
-                << "' is not WxH in [1, 16384]\n";
-      return 2;
-    }
+    return cl.UsageError(error);
   }
   double viewAngle = 0.0, exposure = 0.0;
   if (!cl.GetDouble("--view-angle", 1.0, 179.0, viewAngle, error) ||
@@ -276,44 +266,11 @@ int Render(const std::vector<std::string>& args)
   {
     const std::unique_ptr<vlf::LightField> field = vlf::ReadSnapshot(cl.Positional()[0]);
     const TriangleScene& unit = field->Scene();
-    glm::vec3 lower, upper;
-    SceneBounds(unit, lower, upper);
-    const glm::vec3 worldLower = vlf::ToWorld(*field, lower),
-                    worldUpper = vlf::ToWorld(*field, upper);
     glm::vec3 eye, focal;
     double up[3] = { 0.0, 1.0, 0.0 };
-    if (!cl.GetDoubleVector("--view-up", 3, up))
+    if (!ReadLightFieldCamera(cl, *field, eye, focal, up, error))
     {
-      return cl.UsageError("--view-up needs X,Y,Z");
-    }
-    if (cl.Has("--camera"))
-    {
-      double c[6];
-      if (!cl.GetDoubleVector("--camera", 6, c))
-      {
-        return cl.UsageError("--camera needs X,Y,Z,FX,FY,FZ");
-      }
-      eye = glm::vec3(c[0], c[1], c[2]);
-      focal = glm::vec3(c[3], c[4], c[5]);
-    }
-    else
-    {
-      const TriangleScene cornell = MakeCornellBox();
-      glm::vec3 cl0, cu0;
-      SceneBounds(cornell, cl0, cu0);
-      if (glm::length(cl0 - worldLower) + glm::length(cu0 - worldUpper) < 1.0f)
-      {
-        const CornellCamera camera;
-        eye = camera.Position;
-        focal = camera.FocalPoint;
-      }
-      else
-      {
-        const glm::vec3 centre = 0.5f * (worldLower + worldUpper);
-        const float radius = 0.5f * glm::length(worldUpper - worldLower);
-        focal = centre;
-        eye = centre - glm::vec3(0.0f, 0.0f, 2.2f * radius);
-      }
+      return cl.UsageError(error);
     }
     // Camera frame in the field's unit-sphere coordinates.
     const glm::vec3 eyeUnit = vlf::ToUnit(*field, eye);

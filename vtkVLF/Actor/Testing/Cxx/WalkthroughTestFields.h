@@ -16,9 +16,11 @@ namespace mesolight
 namespace walkthroughtest
 {
 
-// Settings of the test fields: 32 x 32 lines per subfield in 4 x 4 tiles, 10 iterations (the
-// Cornell box keeps ~9% of its light beyond 4 bounces; 10 leave ~1%).
-inline const vlf::LightField& MirrorCornellField(std::size_t directions)
+// A Cornell box field built once per scene and direction count with the test settings: 32 x 32
+// lines per subfield in 4 x 4 tiles, 10 iterations (the Cornell box keeps ~9% of its light beyond
+// 4 bounces; 10 leave ~1%).
+template <TriangleScene (*MakeScene)()>
+const vlf::LightField& CachedCornellField(std::size_t directions)
 {
   static std::map<std::size_t, std::unique_ptr<vlf::LightField>> fields;
   std::unique_ptr<vlf::LightField>& field = fields[directions];
@@ -28,27 +30,21 @@ inline const vlf::LightField& MirrorCornellField(std::size_t directions)
     settings.Directions = directions;
     settings.RaysPerSide = 32;
     settings.TilesPerSide = 4;
-    field = vlf::LightField::Build(MakeCornellBoxWithMirror(), settings);
+    field = vlf::LightField::Build(MakeScene(), settings);
     vlf::Propagate(*field, 10);
   }
   return *field;
 }
 
+inline const vlf::LightField& MirrorCornellField(std::size_t directions)
+{
+  return CachedCornellField<MakeCornellBoxWithMirror>(directions);
+}
+
 // The plain Cornell box with the mirror fields' settings.
 inline const vlf::LightField& PlainCornellField(std::size_t directions)
 {
-  static std::map<std::size_t, std::unique_ptr<vlf::LightField>> fields;
-  std::unique_ptr<vlf::LightField>& field = fields[directions];
-  if (!field)
-  {
-    vlf::LightFieldSettings settings;
-    settings.Directions = directions;
-    settings.RaysPerSide = 32;
-    settings.TilesPerSide = 4;
-    field = vlf::LightField::Build(MakeCornellBox(), settings);
-    vlf::Propagate(*field, 10);
-  }
-  return *field;
+  return CachedCornellField<MakeCornellBox>(directions);
 }
 
 inline const vlf::LightField& DiffuseCornellField()
