@@ -1,0 +1,169 @@
+# SPDX-License-Identifier: BSD-3-Clause
+"""The Light Field representation: Mesolight Cornell Box -> Mesolight Virtual Light Field, shown
+the way Apply shows it (no representation chosen by the script), against an independent
+reference of the same field and camera: `mesolight vlf render` (the main build's CPU renderer:
+one Embree ray per pixel, the field's total diffuse texture at the hit, exposure, clamp, sRGB).
+
+- Apply gives the "Light Field" representation (the filter's Representation hint);
+- Clamp tone mapping at exposure 4 matches `vlf render --exposure 4`;
+- the default (exposure 1, Reinhard) matches `vlf render --exposure 1` decoded and Reinhard
+  tone-mapped in numpy (over pixels the reference does not saturate), and is neither a dark
+  box nor saturated;
+- must fail: the old way (Surface coloured by cell Radiance, Map Scalars off: linear values, no
+  tone mapping, one colour per triangle), colouring by a wrong array (cell Diffuse), and the
+  Light Field representation at twice the exposure.
+
+Pixels compared: covered in both images and away from edges (the reference's 3 x 3
+neighbourhood spans at most 16 levels), since a rasteriser and a ray caster disagree on which
+surface an edge pixel shows.
+"""
+import os
+import subprocess
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import mesolight_pvtest as t  # noqa: E402
+import numpy as np  # noqa: E402
+import paraview.simple as pvs  # noqa: E402
+
+SIZE = 300
+EYE, FOCAL, VIEW_ANGLE = [278.0, 273.0, -800.0], [278.0, 273.0, 0.0], 39.3077
+MAX_MEAN_ERROR = 2.0  # 8-bit levels over the compared pixels
+
+t.load_plugin()
+failures = []
+
+
+def check(ok, message):
+    print(("ok:     " if ok else "FAILED: ") + message)
+    if not ok:
+        failures.append(message)
+
+
+out = t.output_dir()
+snapshot = os.path.join(out, "pv-light-field.vlf")
+if os.path.exists(snapshot):
+    os.remove(snapshot)  # ours from an earlier run: start over
+box = pvs.MesolightCornellBox()
+field = pvs.MesolightVirtualLightField(Input=box, Directions=513, RaysPerSide=32, Iterations=4,
+                                       SnapshotFileName=snapshot)
+
+view = pvs.CreateView("RenderView")
+view.ViewSize = [SIZE, SIZE]
+view.OrientationAxesVisibility = 0
+view.UseColorPaletteForBackground = 0
+view.Background = [0.0, 0.0, 0.0]  # the reference's misses are black
+view.UseFXAA = 0
+view.CameraPosition, view.CameraFocalPoint = EYE, FOCAL
+view.CameraViewUp = [0.0, 1.0, 0.0]
+view.CameraViewAngle = VIEW_ANGLE
+
+display = pvs.Show(field, view)  # what Apply does
+print("representation on Apply: %s" % display.Representation)
+check(display.Representation == "Light Field", "Apply shows the Light Field representation")
+
+
+def capture(name):
+    pvs.Render(view)
+    path = os.path.join(out, name)
+    pvs.SaveScreenshot(path, view, ImageResolution=[SIZE, SIZE], TransparentBackground=0)
+    return t.capture_file(path)
+
+
+def reference(exposure):
+    tool = os.environ.get("MESOLIGHT_TOOL", "")
+    path = os.path.join(out, "pv-light-field-reference-%g.png" % exposure)
+    command = [tool, "vlf", "render", snapshot, "--out", path, "--force",
+               "--size", "%dx%d" % (SIZE, SIZE), "--view-angle", str(VIEW_ANGLE),
+               "--camera", ",".join(str(v) for v in EYE + FOCAL), "--exposure", str(exposure)]
+    print(" ".join(command))
+    subprocess.run(command, check=True)
+    return t.capture_file(path)
+
+
+def srgb_decode(levels):
+    c = levels / 255.0
+    return np.where(c <= 0.04045, c / 12.92, ((c + 0.055) / 1.055) ** 2.4)
+
+
+def srgb_encode(v):
+    v = np.clip(v, 0.0, 1.0)
+    return 255.0 * np.where(v <= 0.0031308, 12.92 * v, 1.055 * v ** (1 / 2.4) - 0.055)
+
+
+def compared_pixels(ref, extra=None):
+    padded = np.pad(ref, ((1, 1), (1, 1), (0, 0)), mode="edge")
+    shifts = [padded[1 + dy:1 + dy + SIZE, 1 + dx:1 + dx + SIZE]
+              for dy in (-1, 0, 1) for dx in (-1, 0, 1)]
+    spread = (np.max(shifts, axis=0) - np.min(shifts, axis=0)).max(axis=2)
+    mask = (spread <= 16) & (ref.max(axis=2) > 0)
+    return mask if extra is None else mask & extra
+
+
+def mean_error(image, ref, mask):
+    covered = mask & (image.max(axis=2) > 0)
+    missing = 100.0 * float((mask & ~covered).sum()) / max(1, int(mask.sum()))
+    error = float(np.abs(image[mask].astype(float) - ref[mask]).mean())
+    return error, missing
+
+
+def matches(label, image, ref, mask):
+    error, missing = mean_error(image, ref, mask)
+    print("%s: mean error %.2f levels over %d pixels (%.1f%% of them background here)"
+          % (label, error, int(mask.sum()), missing))
+    return error <= MAX_MEAN_ERROR and missing < 1.0
+
+
+# --- default display: exposure 1, Reinhard ----------------------------------------------------
+default = capture("pv-light-field-default.png")
+ref1 = reference(1.0)
+unsaturated = ref1.max(axis=2) < 255
+reinhard = srgb_decode(ref1.astype(float))
+reinhard = np.rint(srgb_encode(reinhard / (1.0 + reinhard)))
+mask = compared_pixels(ref1, unsaturated)
+check(matches("default (Reinhard, exposure 1) vs reference", default, reinhard, mask),
+      "the default display matches the CPU reference, Reinhard tone-mapped (<= %g levels)"
+      % MAX_MEAN_ERROR)
+box_pixels = default.max(axis=2) > 0
+mean_level = float(default[box_pixels].mean())
+saturated = 100.0 * float((default[box_pixels] >= 254).any(axis=1).mean())
+print("default: mean level %.1f, %.2f%% of covered pixels have a saturated channel"
+      % (mean_level, saturated))
+check(40 <= mean_level <= 200 and saturated < 5.0,
+      "the default display is neither a dark box nor saturated")
+
+# --- clamp at exposure 4 against vlf render --exposure 4 -------------------------------------
+display.LightFieldToneMapping = "Clamp"
+display.LightFieldExposure = 4.0
+clamp4 = capture("pv-light-field-clamp4.png")
+ref4 = reference(4.0)
+mask4 = compared_pixels(ref4)
+check(matches("clamp, exposure 4 vs reference", clamp4, ref4, mask4),
+      "clamp at exposure 4 matches `mesolight vlf render --exposure 4`")
+
+# --- negative tests ----------------------------------------------------------------------------
+display.LightFieldExposure = 8.0
+doubled = capture("pv-light-field-clamp8.png")
+check(not matches("negative: exposure 8 vs the exposure-4 reference", doubled, ref4, mask4),
+      "negative: twice the exposure fails")
+
+display.LightFieldToneMapping = "Reinhard"
+display.LightFieldExposure = 1.0
+display.SetRepresentationType("Surface")
+pvs.ColorBy(display, ("CELLS", "Radiance"))
+display.MapScalars = 0
+display.Ambient, display.Diffuse = 1.0, 0.0
+old = capture("pv-light-field-old-way.png")
+check(not matches("negative: Surface coloured by cell Radiance (Map Scalars off)",
+                  old, reinhard, mask),
+      "negative: the old way (linear Radiance as colours) fails")
+pvs.ColorBy(display, ("CELLS", "Diffuse"))
+display.MapScalars = 0
+wrong = capture("pv-light-field-wrong-array.png")
+check(not matches("negative: Surface coloured by cell Diffuse", wrong, reinhard, mask),
+      "negative: colouring by a wrong array fails")
+
+if failures:
+    print("FAILED: " + "; ".join(failures))
+    sys.exit(1)
+print("OK")
