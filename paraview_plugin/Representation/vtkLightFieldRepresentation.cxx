@@ -27,6 +27,14 @@ void vtkLightFieldRepresentation::SetExposure(double exposure)
 }
 
 //------------------------------------------------------------------------------
+void vtkLightFieldRepresentation::SetAutoExposure(bool on)
+{
+  static_cast<vtkCompositeLightFieldMapper*>(this->Mapper)->SetAutoExposure(on);
+  static_cast<vtkCompositeLightFieldMapper*>(this->LODMapper)->SetAutoExposure(on);
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
 void vtkLightFieldRepresentation::SetToneMapping(int mode)
 {
   static_cast<vtkCompositeLightFieldMapper*>(this->Mapper)->SetToneMap(mode);

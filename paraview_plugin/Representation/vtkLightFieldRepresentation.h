@@ -28,6 +28,7 @@ public:
   /** Radiance scale before tone mapping; 0 clamp, 1 Reinhard (vtkCompositeLightFieldMapper). */
   void SetExposure(double exposure);
   void SetToneMapping(int mode);
+  void SetAutoExposure(bool on);
   ///@}
 
 protected:

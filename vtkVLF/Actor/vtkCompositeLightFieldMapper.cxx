@@ -21,6 +21,7 @@
 
 #include "vtkCompositeMapperHelper2.h"
 
+#include <cmath>
 #include <map>
 #include <string>
 #include <vector>
@@ -132,7 +133,7 @@ protected:
     program->SetUniformi("mlScreen", unit); // no screen-space pass: never read (size 0)
     program->SetUniform2i("mlScreenOrigin", none);
     program->SetUniform2i("mlScreenSize", none);
-    program->SetUniformf("mlExposure", static_cast<float>(this->Owner()->GetExposure()));
+    program->SetUniformf("mlExposure", static_cast<float>(this->Owner()->GetEffectiveExposure()));
     program->SetUniformi("mlToneMap", this->Owner()->GetToneMap());
     program->SetUniformi("mlAllScreen", 0);
     program->SetUniformi("mlOverwrite", 0);
@@ -200,6 +201,21 @@ void vtkCompositeLightFieldMapper::Render(vtkRenderer* ren, vtkActor* actor)
     auto* poly = vtkPolyData::SafeDownCast(block);
     anyCells = anyCells || (poly && poly->GetNumberOfCells() > 0);
   }
+  this->EffectiveExposure = this->Exposure;
+  if (this->CurrentAtlas && this->AutoExposure)
+  {
+    if (this->KeyAtlas != this->CurrentAtlas || this->KeyTime != this->CurrentAtlas->GetMTime())
+    {
+      this->AtlasLogAverage = LogAverageLuminance(
+        this->CurrentAtlas->GetPointer(0), this->CurrentAtlas->GetNumberOfTuples());
+      this->KeyAtlas = this->CurrentAtlas;
+      this->KeyTime = this->CurrentAtlas->GetMTime();
+    }
+    if (this->AtlasLogAverage > 0.0)
+    {
+      this->EffectiveExposure = this->Exposure * 0.18 / this->AtlasLogAverage;
+    }
+  }
   if (!this->CurrentAtlas && anyCells && !this->WarnedNoAtlas)
   {
     vtkWarningMacro("The input carries no light field atlas (field data '"
@@ -208,6 +224,24 @@ void vtkCompositeLightFieldMapper::Render(vtkRenderer* ren, vtkActor* actor)
     this->WarnedNoAtlas = true;
   }
   this->Superclass::Render(ren, actor);
+}
+
+//------------------------------------------------------------------------------
+double vtkCompositeLightFieldMapper::LogAverageLuminance(const float* rgba, vtkIdType texels)
+{
+  double sum = 0.0;
+  vtkIdType count = 0;
+  for (vtkIdType i = 0; i < texels; ++i)
+  {
+    const float* p = rgba + 4 * i;
+    const double y = 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2];
+    if (y > 0.0 && std::isfinite(y))
+    {
+      sum += std::log(y);
+      ++count;
+    }
+  }
+  return count > 0 ? std::exp(sum / static_cast<double>(count)) : 0.0;
 }
 
 //------------------------------------------------------------------------------
@@ -263,6 +297,8 @@ void vtkCompositeLightFieldMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Exposure: " << this->Exposure << "\n";
+  os << indent << "AutoExposure: " << this->AutoExposure << "\n";
+  os << indent << "EffectiveExposure: " << this->EffectiveExposure << "\n";
   os << indent << "ToneMap: " << (this->ToneMap == Reinhard ? "Reinhard" : "Clamp") << "\n";
   os << indent << "Atlas: " << this->CurrentAtlasSize[0] << "x" << this->CurrentAtlasSize[1]
      << (this->CurrentAtlas ? "" : " (none)") << "\n";

@@ -40,10 +40,31 @@ public:
   };
 
   ///@{
-  /** Radiance scale before tone mapping (default 1). */
+  /** Radiance scale before tone mapping (default 1); with AutoExposure a factor on its scale. */
   vtkSetClampMacro(Exposure, double, 0.0, 1e9);
   vtkGetMacro(Exposure, double);
   ///@}
+
+  ///@{
+  /**
+   * Scale the radiance so that the atlas' log-average luminance becomes the middle grey 0.18
+   * (the key value of Reinhard et al.'s photographic tone reproduction), times Exposure: a
+   * scene in any radiance units shows neither dark nor saturated. The average runs over the
+   * atlas' lit texels, so it does not change with the view. Default off (Exposure alone).
+   */
+  vtkSetMacro(AutoExposure, bool);
+  vtkGetMacro(AutoExposure, bool);
+  vtkBooleanMacro(AutoExposure, bool);
+  ///@}
+
+  /** The exposure the last render used (Exposure, times the automatic scale when on). */
+  vtkGetMacro(EffectiveExposure, double);
+
+  /**
+   * Log-average luminance (Rec. 709 weights) of the atlas' texels with positive luminance: the
+   * automatic exposure is 0.18 / this. 0 when there are none.
+   */
+  static double LogAverageLuminance(const float* rgba, vtkIdType texels);
 
   ///@{
   /** Clamp or Reinhard x / (1 + x) before the sRGB curve (default Reinhard). */
@@ -66,6 +87,11 @@ protected:
   bool PrepareAtlas(vtkRenderer* ren);
 
   double Exposure = 1.0;
+  bool AutoExposure = false;
+  double EffectiveExposure = 1.0;
+  double AtlasLogAverage = 0.0; // of KeyAtlas at KeyTime
+  vtkFloatArray* KeyAtlas = nullptr;
+  vtkMTimeType KeyTime = 0;
   int ToneMap = Reinhard;
   vtkSmartPointer<vtkFloatArray> CurrentAtlas;
   int CurrentAtlasSize[2] = { 0, 0 };

@@ -4,14 +4,16 @@ the way Apply shows it (no representation chosen by the script), against an inde
 reference of the same field and camera: `mesolight vlf render` (the main build's CPU renderer:
 one Embree ray per pixel, the field's total diffuse texture at the hit, exposure, clamp, sRGB).
 
-- Apply gives the "Light Field" representation (the filter's Representation hint);
-- Clamp tone mapping at exposure 4 matches `vlf render --exposure 4`;
-- the default (exposure 1, Reinhard) matches `vlf render --exposure 1` decoded and Reinhard
-  tone-mapped in numpy (over pixels the reference does not saturate), and is neither a dark
-  box nor saturated;
+- Apply gives the "Light Field" representation (the filter's RepresentationType hint);
+- the default (automatic exposure k = 0.18 / log-average luminance of the atlas texels,
+  computed here in numpy from the output's field data; Reinhard) matches `vlf render --exposure
+  k` decoded and Reinhard tone-mapped in numpy (where that saturates, `--exposure k/64` decoded
+  and scaled by 64), and is neither a dark box nor saturated;
+- Clamp tone mapping at exposure 4, automatic exposure off, matches `vlf render --exposure 4`;
 - must fail: the old way (Surface coloured by cell Radiance, Map Scalars off: linear values, no
-  tone mapping, one colour per triangle), colouring by a wrong array (cell Diffuse), and the
-  Light Field representation at twice the exposure.
+  tone mapping, one colour per triangle), colouring by a wrong array (cell Diffuse), the Light
+  Field representation at twice the exposure, and Reinhard without the automatic exposure
+  (exposure 1: the dark box, mean level 54).
 
 Pixels compared: covered in both images and away from edges (the reference's 3 x 3
 neighbourhood spans at most 16 levels), since a rasteriser and a ray caster disagree on which
@@ -25,6 +27,8 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import mesolight_pvtest as t  # noqa: E402
 import numpy as np  # noqa: E402
 import paraview.simple as pvs  # noqa: E402
+from paraview import servermanager  # noqa: E402
+from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: E402
 
 SIZE = 300
 EYE, FOCAL, VIEW_ANGLE = [278.0, 273.0, -800.0], [278.0, 273.0, 0.0], 39.3077
@@ -114,25 +118,40 @@ def matches(label, image, ref, mask):
     return error <= MAX_MEAN_ERROR and missing < 1.0
 
 
-# --- default display: exposure 1, Reinhard ----------------------------------------------------
+# --- default display: automatic exposure, Reinhard --------------------------------------------
+data = servermanager.Fetch(field)
+atlas = vtk_to_numpy(data.GetFieldData().GetArray("LightFieldAtlas")).astype(np.float64)
+luminance = atlas[:, :3] @ np.array([0.2126, 0.7152, 0.0722])
+key = 0.18 / np.exp(np.log(luminance[luminance > 0]).mean())
+print("atlas %s x %s texels; automatic exposure 0.18 / log-average luminance = %.4f"
+      % tuple(vtk_to_numpy(data.GetFieldData().GetArray("LightFieldAtlasSize")).tolist() + [key]))
 default = capture("pv-light-field-default.png")
-ref1 = reference(1.0)
-unsaturated = ref1.max(axis=2) < 255
-reinhard = srgb_decode(ref1.astype(float))
-reinhard = np.rint(srgb_encode(reinhard / (1.0 + reinhard)))
-mask = compared_pixels(ref1, unsaturated)
-check(matches("default (Reinhard, exposure 1) vs reference", default, reinhard, mask),
+ref_k, ref_dim = reference(key), reference(key / 64.0)
+linear = np.where(ref_k < 255, srgb_decode(ref_k.astype(float)),
+                  64.0 * srgb_decode(ref_dim.astype(float)))
+reinhard = np.rint(srgb_encode(linear / (1.0 + linear)))
+mask = compared_pixels(reinhard, ref_dim.max(axis=2) < 255)
+check(matches("default (automatic exposure, Reinhard) vs reference", default, reinhard, mask),
       "the default display matches the CPU reference, Reinhard tone-mapped (<= %g levels)"
       % MAX_MEAN_ERROR)
-box_pixels = default.max(axis=2) > 0
-mean_level = float(default[box_pixels].mean())
-saturated = 100.0 * float((default[box_pixels] >= 254).any(axis=1).mean())
-print("default: mean level %.1f, %.2f%% of covered pixels have a saturated channel"
-      % (mean_level, saturated))
-check(40 <= mean_level <= 200 and saturated < 5.0,
+
+
+def dark_or_saturated(image, label):
+    covered = image.max(axis=2) > 0
+    level = float(image[covered].mean())
+    saturated = 100.0 * float((image[covered] >= 254).any(axis=1).mean())
+    print("%s: mean level %.1f, %.2f%% of covered pixels have a saturated channel"
+          % (label, level, saturated))
+    return not (80 <= level <= 200 and saturated < 5.0)
+
+
+check(not dark_or_saturated(default, "default"),
       "the default display is neither a dark box nor saturated")
+state = os.path.join(out, "pv-light-field.pvsm")
+pvs.SaveState(state)
 
 # --- clamp at exposure 4 against vlf render --exposure 4 -------------------------------------
+display.LightFieldAutoExposure = 0
 display.LightFieldToneMapping = "Clamp"
 display.LightFieldExposure = 4.0
 clamp4 = capture("pv-light-field-clamp4.png")
@@ -149,6 +168,10 @@ check(not matches("negative: exposure 8 vs the exposure-4 reference", doubled, r
 
 display.LightFieldToneMapping = "Reinhard"
 display.LightFieldExposure = 1.0
+fixed = capture("pv-light-field-exposure1.png")
+check(not matches("negative: Reinhard at exposure 1 without automatic exposure", fixed, reinhard,
+                  mask) and dark_or_saturated(fixed, "exposure 1 without automatic exposure"),
+      "negative: Reinhard without the automatic exposure fails (a dark box)")
 display.SetRepresentationType("Surface")
 pvs.ColorBy(display, ("CELLS", "Radiance"))
 display.MapScalars = 0
@@ -162,6 +185,20 @@ display.MapScalars = 0
 wrong = capture("pv-light-field-wrong-array.png")
 check(not matches("negative: Surface coloured by cell Diffuse", wrong, reinhard, mask),
       "negative: colouring by a wrong array fails")
+
+# --- a state file brings the display back (the atlas travels with the data) -----------------
+pvs.ResetSession()
+t.load_plugin()
+pvs.LoadState(state)
+view = pvs.GetActiveViewOrCreate("RenderView")
+view.ViewSize = [SIZE, SIZE]
+types = sorted(r.GetProperty("Representation").GetData() for r in view.Representations
+               if r.GetProperty("Visibility") and r.Visibility)
+print("after loading the state: visible representations %s" % types)
+restored = capture("pv-light-field-state.png")
+same = matches("state file vs reference", restored, reinhard, mask)
+check(types == ["Light Field"] and same,
+      "the saved state shows the Light Field display again")
 
 if failures:
     print("FAILED: " + "; ".join(failures))
