@@ -181,6 +181,9 @@ int vtkVirtualLightField::RequestData(
     }
   }
   converter->ToPolyData(world, output);
+  // No active scalars: a display (ParaView's on Apply) would otherwise colour by Diffuse instead
+  // of showing the light.
+  output->GetCellData()->SetActiveAttribute(-1, vtkDataSetAttributes::SCALARS);
   const vtkIdType triangles = static_cast<vtkIdType>(world.TriangleCount());
   vtkNew<vtkFloatArray> cellRadiance;
   cellRadiance->SetName("Radiance");

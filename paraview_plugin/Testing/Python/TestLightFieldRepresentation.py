@@ -65,6 +65,8 @@ view.CameraViewAngle = VIEW_ANGLE
 display = pvs.Show(field, view)  # what Apply does
 print("representation on Apply: %s" % display.Representation)
 check(display.Representation == "Light Field", "Apply shows the Light Field representation")
+print("colour array on Apply: %s" % display.ColorArrayName)
+check(not display.ColorArrayName[1], "Apply colours by no array (no colour map, no legend)")
 
 
 def capture(name):
