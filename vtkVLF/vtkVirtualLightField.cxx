@@ -20,6 +20,7 @@
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
 
 #include <glm/geometric.hpp>
 
@@ -77,6 +78,14 @@ int vtkVirtualLightField::RequestData(
   {
     vtkErrorMacro("No input scene.");
     return 0;
+  }
+  // In parallel (ParaView under MPI) a rank may hold no part of the scene: its piece is empty,
+  // not an error. The field is propagated where the scene is.
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  if (input->GetNumberOfCells() == 0 &&
+    outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()) > 1)
+  {
+    return 1;
   }
   vtkNew<vtkTriangleSceneConverter> converter;
   mesolight::TriangleScene scene;

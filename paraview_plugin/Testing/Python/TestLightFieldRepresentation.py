@@ -189,8 +189,7 @@ check(not matches("negative: Surface coloured by cell Diffuse", wrong, reinhard,
       "negative: colouring by a wrong array fails")
 
 # --- a state file brings the display back (the atlas travels with the data) -----------------
-pvs.ResetSession()
-t.load_plugin()
+pvs.ResetSession()  # the plugin stays loaded in this process (loading it again is an error)
 pvs.LoadState(state)
 view = pvs.GetActiveViewOrCreate("RenderView")
 view.ViewSize = [SIZE, SIZE]
