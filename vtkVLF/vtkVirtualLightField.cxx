@@ -6,20 +6,25 @@
 #include "PatchComparison.h"
 #include "Propagation.h"
 #include "Snapshot.h"
+#include "TextureAtlas.h"
 #include "TriangleScene.h"
 #include "vtkTriangleSceneConverter.h"
 
 #include "vtkCellData.h"
+#include "vtkFieldData.h"
 #include "vtkFloatArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkIntArray.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <map>
 #include <utility>
 
@@ -73,6 +78,14 @@ int vtkVirtualLightField::RequestData(
   {
     vtkErrorMacro("No input scene.");
     return 0;
+  }
+  // In parallel (ParaView under MPI) a rank may hold no part of the scene: its piece is empty,
+  // not an error. The field is propagated where the scene is.
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  if (input->GetNumberOfCells() == 0 &&
+    outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()) > 1)
+  {
+    return 1;
   }
   vtkNew<vtkTriangleSceneConverter> converter;
   mesolight::TriangleScene scene;
@@ -177,6 +190,9 @@ int vtkVirtualLightField::RequestData(
     }
   }
   converter->ToPolyData(world, output);
+  // No active scalars: a display (ParaView's on Apply) would otherwise colour by Diffuse instead
+  // of showing the light.
+  output->GetCellData()->SetActiveAttribute(-1, vtkDataSetAttributes::SCALARS);
   const vtkIdType triangles = static_cast<vtkIdType>(world.TriangleCount());
   vtkNew<vtkFloatArray> cellRadiance;
   cellRadiance->SetName("Radiance");
@@ -209,7 +225,75 @@ int vtkVirtualLightField::RequestData(
   }
   output->GetCellData()->AddArray(cellRadiance);
   output->GetPointData()->AddArray(pointRadiance);
+
+  // The total diffuse textures whole, for drawing them per pixel (bilinear, no seams: the
+  // atlas' gutters), and each vertex's place in them. Every vertex belongs to one surface.
+  try
+  {
+    const vlf::TextureAtlas atlas(field);
+    vtkNew<vtkFloatArray> pixels;
+    pixels->SetName(GetAtlasName());
+    pixels->SetNumberOfComponents(4);
+    pixels->SetNumberOfTuples(static_cast<vtkIdType>(atlas.Width()) * atlas.Height());
+    std::copy(atlas.Pixels().begin(), atlas.Pixels().end(), pixels->GetPointer(0));
+    vtkNew<vtkIntArray> size;
+    size->SetName(GetAtlasSizeName());
+    size->SetNumberOfValues(2);
+    size->SetValue(0, atlas.Width());
+    size->SetValue(1, atlas.Height());
+    vtkNew<vtkFloatArray> coordinates;
+    coordinates->SetName(GetAtlasCoordinatesName());
+    coordinates->SetNumberOfComponents(2);
+    coordinates->SetNumberOfTuples(static_cast<vtkIdType>(world.Positions.size()));
+    coordinates->Fill(0.0);
+    for (std::size_t t = 0; t < unit.TriangleCount(); ++t)
+    {
+      const std::uint32_t s = field.SurfaceOfTriangle(t);
+      if (s == vlf::NoSurface)
+      {
+        continue;
+      }
+      for (int c = 0; c < 3; ++c)
+      {
+        const glm::vec2 tc = atlas.TextureCoordinates(s, unit.Vertex(t, c));
+        coordinates->SetTypedTuple(static_cast<vtkIdType>(world.Triangles[t][c]), &tc[0]);
+      }
+    }
+    output->GetFieldData()->AddArray(pixels);
+    output->GetFieldData()->AddArray(size);
+    output->GetPointData()->AddArray(coordinates);
+  }
+  catch (const std::exception& e)
+  {
+    vtkWarningMacro(<< "No radiance atlas in the output (" << e.what()
+                    << "): the Light Field representation cannot draw it.");
+  }
   return 1;
+}
+
+vtkFloatArray* vtkVirtualLightField::GetAttachedAtlas(vtkDataObject* data, int size[2])
+{
+  vtkFieldData* fields = data ? data->GetFieldData() : nullptr;
+  if (!fields)
+  {
+    return nullptr;
+  }
+  auto* pixels = vtkFloatArray::SafeDownCast(fields->GetAbstractArray(GetAtlasName()));
+  vtkDataArray* dimensions =
+    vtkArrayDownCast<vtkDataArray>(fields->GetAbstractArray(GetAtlasSizeName()));
+  if (!pixels || !dimensions || pixels->GetNumberOfComponents() != 4 ||
+    dimensions->GetNumberOfValues() != 2)
+  {
+    return nullptr;
+  }
+  size[0] = static_cast<int>(dimensions->GetComponent(0, 0));
+  size[1] = static_cast<int>(dimensions->GetComponent(1, 0));
+  if (size[0] < 1 || size[1] < 1 ||
+    static_cast<vtkIdType>(size[0]) * size[1] != pixels->GetNumberOfTuples())
+  {
+    return nullptr;
+  }
+  return pixels;
 }
 
 void vtkVirtualLightField::PrintSelf(ostream& os, vtkIndent indent)

@@ -13,6 +13,11 @@
  * radiance leaving each surface -- the per-surface total diffuse textures, the walkthrough's
  * progressive mode (Wither 2005 §2.4.2.2.3) -- as cell data "Radiance" (mean over the triangle's
  * corners and centre) and point data "Radiance" (at each vertex), 3 components, linear radiance.
+ * The same textures also travel whole, for drawing them per pixel (ParaView's "Light Field"
+ * representation, vtkCompositeLightFieldMapper): the field's TextureAtlas as field data
+ * (GetAtlasName(): RGBA floats, row 0 = v near 0; GetAtlasSizeName(): width and height) and each
+ * vertex's atlas coordinates as point data (GetAtlasCoordinatesName(), 2 components). Field
+ * data travels with every piece and into state files.
  *
  * Memory is estimated before anything is allocated; above MemoryBudget the filter fails with a
  * message saying how much it would need. With a SnapshotFileName a snapshot is written after
@@ -32,6 +37,8 @@
 
 #include <memory> // For std::unique_ptr
 #include <string> // For std::string
+
+class vtkFloatArray;
 
 namespace mesolight
 {
@@ -99,6 +106,19 @@ public:
    * False before a successful update.
    */
   bool ComputeIrradiance(const double point[3], const double normal[3], double irradiance[3]) const;
+
+  ///@{
+  /** Names of the output's atlas arrays (see the class description). */
+  static const char* GetAtlasName() { return "LightFieldAtlas"; }
+  static const char* GetAtlasSizeName() { return "LightFieldAtlasSize"; }
+  static const char* GetAtlasCoordinatesName() { return "LightFieldAtlasTC"; }
+  ///@}
+
+  /**
+   * The atlas a light field output carries (null when it has none or the arrays do not agree);
+   * size receives its width and height.
+   */
+  static vtkFloatArray* GetAttachedAtlas(vtkDataObject* data, int size[2]);
 
   /** Bytes the last update's field needs (its memory estimate), 0 before. */
   vtkTypeInt64 GetEstimatedBytes() const;

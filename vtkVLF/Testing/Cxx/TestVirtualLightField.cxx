@@ -2,7 +2,8 @@
 // vtkVirtualLightField: the Cornell box through the filter gives per-cell and per-point
 // "Radiance" (the light at its emission plus what it reflects, the walls lit), progress and
 // abort, a clear error over the memory budget, snapshots written / resumed / never over a
-// foreign file, the irradiance query, PrintSelf.
+// foreign file, the irradiance query, PrintSelf; the radiance atlas it attaches for drawing
+// (bilinear at each vertex's atlas coordinates = the vertex's Radiance); an empty parallel piece.
 #include "vtkVirtualLightField.h"
 
 #include "LightField.h"
@@ -13,14 +14,20 @@
 #include <vtkCleanPolyData.h>
 #include <vtkCommand.h>
 #include <vtkDataArray.h>
+#include <vtkExecutive.h>
+#include <vtkFieldData.h>
+#include <vtkFloatArray.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <iostream>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -60,6 +67,84 @@ void SmallSettings(vtkVirtualLightField* filter)
   filter->SetDirections(33);
   filter->SetRaysPerSide(16);
   filter->SetIterations(2);
+}
+
+// The atlas travels with the output: GL's bilinear lookup (texel centres at (i + 1/2) / size,
+// clamped) at each vertex's atlas coordinates gives that vertex's point Radiance, which the
+// filter samples from the field itself. Upside down it does not.
+TEST(VLFVirtualLightField, AttachedAtlasGivesThePointRadiance)
+{
+  vtkNew<vtkCornellBoxSource> box;
+  vtkNew<vtkVirtualLightField> filter;
+  filter->SetInputConnection(box->GetOutputPort());
+  SmallSettings(filter);
+  filter->Update();
+  vtkPolyData* out = filter->GetOutput();
+  int size[2] = { 0, 0 };
+  vtkFloatArray* atlas = vtkVirtualLightField::GetAttachedAtlas(out, size);
+  ASSERT_NE(atlas, nullptr);
+  EXPECT_EQ(out->GetCellData()->GetScalars(), nullptr); // displays colour by no array
+  vtkDataArray* tc = out->GetPointData()->GetArray(vtkVirtualLightField::GetAtlasCoordinatesName());
+  vtkDataArray* radiance = out->GetPointData()->GetArray("Radiance");
+  ASSERT_NE(tc, nullptr);
+  ASSERT_EQ(tc->GetNumberOfComponents(), 2);
+  const auto sample = [&](double u, double v, int c, bool flip)
+  {
+    const double x = u * size[0] - 0.5, y = v * size[1] - 0.5;
+    const double fx = std::floor(x), fy = std::floor(y);
+    double sum = 0.0;
+    for (int q = 0; q < 4; ++q)
+    {
+      const int dx = q & 1, dy = q >> 1;
+      const int ix = std::clamp(static_cast<int>(fx) + dx, 0, size[0] - 1);
+      int iy = std::clamp(static_cast<int>(fy) + dy, 0, size[1] - 1);
+      iy = flip ? size[1] - 1 - iy : iy;
+      const double w = (dx ? x - fx : 1.0 - (x - fx)) * (dy ? y - fy : 1.0 - (y - fy));
+      sum += w * atlas->GetComponent(static_cast<vtkIdType>(iy) * size[0] + ix, c);
+    }
+    return sum;
+  };
+  double worst = 0.0, worstFlipped = 0.0;
+  for (vtkIdType p = 0; p < out->GetNumberOfPoints(); ++p)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      const double want = radiance->GetComponent(p, c);
+      const double scale = std::max(1e-3, want);
+      const double u = tc->GetComponent(p, 0), v = tc->GetComponent(p, 1);
+      worst = std::max(worst, std::abs(sample(u, v, c, false) - want) / scale);
+      worstFlipped = std::max(worstFlipped, std::abs(sample(u, v, c, true) - want) / scale);
+    }
+  }
+  std::cout << "atlas " << size[0] << "x" << size[1] << ": worst relative difference at the "
+            << out->GetNumberOfPoints() << " vertices " << worst << ", upside down " << worstFlipped
+            << "\n";
+  EXPECT_LT(worst, 1e-4);
+  EXPECT_GT(worstFlipped, 0.1);
+
+  // Arrays that do not agree are no atlas.
+  vtkNew<vtkPolyData> broken;
+  broken->DeepCopy(out);
+  broken->GetFieldData()->RemoveArray(vtkVirtualLightField::GetAtlasSizeName());
+  EXPECT_EQ(vtkVirtualLightField::GetAttachedAtlas(broken, size), nullptr);
+}
+
+// An empty input: an error alone, an empty piece (no error) as one of several pieces.
+TEST(VLFVirtualLightField, EmptyPieceInParallel)
+{
+  vtkNew<vtkPolyData> empty;
+  vtkNew<vtkVirtualLightField> filter;
+  filter->SetInputData(empty);
+  SmallSettings(filter);
+  vtkNew<Messages> messages;
+  filter->AddObserver(vtkCommand::ErrorEvent, messages);
+  filter->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, messages);
+  filter->UpdatePiece(1, 2, 0);
+  EXPECT_EQ(messages->Text, "");
+  EXPECT_EQ(filter->GetOutput()->GetNumberOfCells(), 0);
+  filter->Modified();
+  filter->UpdatePiece(0, 1, 0);
+  EXPECT_NE(messages->Text.find("cannot be used as a light field scene"), std::string::npos);
 }
 
 TEST(VLFVirtualLightField, CornellBoxRadiance)

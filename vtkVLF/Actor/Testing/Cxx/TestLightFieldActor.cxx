@@ -3,6 +3,11 @@
 // tracer rendering the same camera of the same scene, the negative tests (atlas upside down, no
 // alpha composite, reflections one bounce short), and occlusion with an ordinary actor.
 #include "vtkLightFieldActor.h"
+#include "vtkVersionMacros.h"
+#if VTK_VERSION_NUMBER < VTK_VERSION_CHECK(9, 3, 0)
+#include "vtkCompositeLightFieldMapper.h"
+#include <vtkMultiBlockDataSet.h>
+#endif
 
 #include "vtkCornellBoxSource.h"
 #include "vtkTriangleSceneConverter.h"
@@ -744,6 +749,69 @@ TEST(Walkthrough, FieldFromTheVirtualLightFieldFilter)
   viewer.Render(vtkLightFieldActor::Progressive);
   EXPECT_TRUE(viewer.Actor->GetLastFrameConverged());
 }
+
+#if VTK_VERSION_NUMBER < VTK_VERSION_CHECK(9, 3, 0)
+// vtkCompositeLightFieldMapper (ParaView's Light Field representation) draws the filter's
+// output, which carries its atlas as field data, exactly as the actor's progressive mode draws
+// the diffuse Cornell box: same shader, same atlas. Also as a block of a multiblock (what
+// ParaView hands it). Must fail: another exposure.
+TEST(Walkthrough, CompositeMapperDrawsTheFilterOutputAsTheActor)
+{
+  vtkNew<vtkCornellBoxSource> box;
+  vtkNew<vtkVirtualLightField> filter;
+  filter->SetInputConnection(box->GetOutputPort());
+  filter->SetDirections(513);
+  filter->SetRaysPerSide(16);
+  filter->SetIterations(2);
+  filter->Update();
+  ASSERT_NE(filter->GetLightField(), nullptr);
+  Viewer viewer(*filter->GetLightField());
+  const Images expected = viewer.Render(vtkLightFieldActor::Progressive);
+
+  vtkNew<vtkMultiBlockDataSet> blocks;
+  blocks->SetNumberOfBlocks(1);
+  blocks->SetBlock(0, filter->GetOutput());
+  for (const bool composite : { false, true })
+  {
+    vtkNew<vtkCompositeLightFieldMapper> mapper;
+    if (composite)
+    {
+      mapper->SetInputDataObject(blocks);
+    }
+    else
+    {
+      mapper->SetInputConnection(filter->GetOutputPort());
+    }
+    mapper->SetToneMap(vtkCompositeLightFieldMapper::Clamp);
+    vtkNew<vtkActor> actor;
+    actor->SetMapper(mapper);
+    viewer.Renderer->RemoveActor(viewer.Actor);
+    viewer.Renderer->AddActor(actor);
+    const auto differing = [&](double exposure)
+    {
+      mapper->SetExposure(exposure);
+      viewer.Window->Render();
+      const Images got = viewer.Grab();
+      std::size_t differ = 0;
+      for (std::size_t i = 0; i < expected.Display.size(); ++i)
+      {
+        const glm::vec3 d = glm::abs(got.Display[i] - expected.Display[i]) * 255.0f;
+        differ += std::max(d.x, std::max(d.y, d.z)) > 1.5f ? 1 : 0;
+      }
+      return differ;
+    };
+    const std::size_t same = differing(Exposure);
+    const std::size_t other = differing(2.0 * Exposure);
+    std::cout << (composite ? "multiblock" : "polydata") << ": " << same << " of "
+              << expected.Display.size() << " pixels differ by more than 1 level from the "
+              << "actor's progressive image; at twice the exposure " << other << "\n";
+    EXPECT_LE(same, expected.Display.size() / 200);
+    EXPECT_GT(other, expected.Display.size() / 2);
+    viewer.Renderer->RemoveActor(actor);
+    viewer.Renderer->AddActor(viewer.Actor);
+  }
+}
+#endif
 
 // A renderer in the right half of a window (its viewport does not start at the window's
 // origin): the screen-space values land on the same pixels as in a window of its own.

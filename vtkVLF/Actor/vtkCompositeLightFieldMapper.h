@@ -1,0 +1,110 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @class   vtkCompositeLightFieldMapper
+ * @brief   draws vtkVirtualLightField's output with its total diffuse radiance per pixel, as a
+ *          vtkCompositePolyDataMapper2 (what ParaView's geometry representations draw through)
+ *
+ * The walkthrough's progressive-mode diffuse shading (Wither 2005 §2.4.2.2.3; docs/walkthrough.md)
+ * for data that carries its light field with it: the radiance atlas comes from the first block's
+ * field data and the atlas coordinates from its point data (vtkVirtualLightField::GetAttachedAtlas,
+ * GetAtlasCoordinatesName), so every MPI rank draws its piece with the whole atlas. The fragment
+ * code is vtkLightFieldMapper's (glsl/vtkLightFieldFS.glsl: the atlas bilinear, no seams thanks to
+ * its gutters; then exposure, clamp or Reinhard, sRGB) without the screen-space pass, so mirrors
+ * show their diffuse part only. VTK's lighting is replaced; blocks without an atlas are drawn the
+ * ordinary way (with a warning).
+ *
+ * Only for VTK < 9.3, where vtkCompositePolyDataMapper2 draws through vtkCompositeMapperHelper2.
+ */
+#ifndef vtkCompositeLightFieldMapper_h
+#define vtkCompositeLightFieldMapper_h
+
+#include "MesolightLightFieldActorModule.h" // For export macro
+#include "vtkCompositePolyDataMapper2.h"
+#include "vtkSmartPointer.h" // For vtkSmartPointer
+
+class vtkFloatArray;
+class vtkTextureObject;
+
+class MESOLIGHTLIGHTFIELDACTOR_EXPORT vtkCompositeLightFieldMapper
+  : public vtkCompositePolyDataMapper2
+{
+public:
+  static vtkCompositeLightFieldMapper* New();
+  vtkTypeMacro(vtkCompositeLightFieldMapper, vtkCompositePolyDataMapper2);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum ToneMapType
+  {
+    Clamp = 0,
+    Reinhard = 1
+  };
+
+  ///@{
+  /** Radiance scale before tone mapping (default 1); with AutoExposure a factor on its scale. */
+  vtkSetClampMacro(Exposure, double, 0.0, 1e9);
+  vtkGetMacro(Exposure, double);
+  ///@}
+
+  ///@{
+  /**
+   * Scale the radiance so that the atlas' log-average luminance becomes the middle grey 0.18
+   * (the key value of Reinhard et al.'s photographic tone reproduction), times Exposure: a
+   * scene in any radiance units shows neither dark nor saturated. The average runs over the
+   * atlas' lit texels, so it does not change with the view. Default off (Exposure alone).
+   */
+  vtkSetMacro(AutoExposure, bool);
+  vtkGetMacro(AutoExposure, bool);
+  vtkBooleanMacro(AutoExposure, bool);
+  ///@}
+
+  /** The exposure the last render used (Exposure, times the automatic scale when on). */
+  vtkGetMacro(EffectiveExposure, double);
+
+  /**
+   * Log-average luminance (Rec. 709 weights) of the atlas' texels with positive luminance: the
+   * automatic exposure is 0.18 / this. 0 when there are none.
+   */
+  static double LogAverageLuminance(const float* rgba, vtkIdType texels);
+
+  ///@{
+  /** Clamp or Reinhard x / (1 + x) before the sRGB curve (default Reinhard). */
+  vtkSetClampMacro(ToneMap, int, Clamp, Reinhard);
+  vtkGetMacro(ToneMap, int);
+  ///@}
+
+  /** Finds this render's atlas in the input, then draws the blocks. */
+  void Render(vtkRenderer* ren, vtkActor* actor) override;
+
+  void ReleaseGraphicsResources(vtkWindow* win) override;
+
+protected:
+  vtkCompositeLightFieldMapper();
+  ~vtkCompositeLightFieldMapper() override;
+
+  vtkCompositeMapperHelper2* CreateHelper() override;
+
+  /** Uploads the current atlas when it changed; false when there is none. */
+  bool PrepareAtlas(vtkRenderer* ren);
+
+  double Exposure = 1.0;
+  bool AutoExposure = false;
+  double EffectiveExposure = 1.0;
+  double AtlasLogAverage = 0.0; // of KeyAtlas at KeyTime
+  vtkFloatArray* KeyAtlas = nullptr;
+  vtkMTimeType KeyTime = 0;
+  int ToneMap = Reinhard;
+  vtkSmartPointer<vtkFloatArray> CurrentAtlas;
+  int CurrentAtlasSize[2] = { 0, 0 };
+  vtkSmartPointer<vtkTextureObject> AtlasTexture;
+  vtkFloatArray* UploadedAtlas = nullptr; // identity and time of what AtlasTexture holds
+  vtkMTimeType UploadedTime = 0;
+  bool WarnedNoAtlas = false;
+
+  friend class vtkCompositeLightFieldMapperHelper;
+
+private:
+  vtkCompositeLightFieldMapper(const vtkCompositeLightFieldMapper&) = delete;
+  void operator=(const vtkCompositeLightFieldMapper&) = delete;
+};
+
+#endif
