@@ -290,3 +290,26 @@ TEST(ProceduralEnvironmentSource, SunAtItsDirection)
   EXPECT_TRUE(bj == 127 || bj == 128) << bj;
   EXPECT_GT(top, 5 * bottom); // sky (blue) on top in VTK row order, ground at row 0
 }
+
+// Above MemoryBudget the median cut is refused before anything is allocated: 256 x 128 pixels at
+// 28 bytes (RGB floats, one summed-area table, energies) need 896 KiB.
+TEST(MedianCutLights, MemoryBudgetRefusesBeforeAllocating)
+{
+  vtkNew<vtkProceduralEnvironmentSource> sky;
+  sky->SetResolution(256, 128);
+  vtkNew<vtkMedianCutLights> lights;
+  lights->SetInputConnection(sky->GetOutputPort());
+  lights->SetNumberOfLights(8);
+  lights->SetMemoryBudget(512 * 1024);
+  vtkNew<MessageCapture> capture;
+  capture->Watch(lights);
+  lights->Update();
+  EXPECT_TRUE(capture->HasError("256 x 128 environment needs about 896 KiB"))
+    << capture->AllErrors();
+  EXPECT_EQ(lights->GetOutput()->GetNumberOfPoints(), 0);
+  lights->SetMemoryBudget(1024 * 1024);
+  capture->Errors.clear();
+  lights->Update();
+  EXPECT_TRUE(capture->Errors.empty()) << capture->AllErrors();
+  EXPECT_EQ(lights->GetOutput()->GetNumberOfPoints(), 8);
+}
