@@ -3,6 +3,7 @@
 
 #include "ChartPlot.h"
 #include "CommandLine.h"
+#include "OutputFile.h"
 #include "Timing.h"
 
 #include "vtkLightFieldActor.h"
@@ -204,6 +205,12 @@ int Render(const std::vector<std::string>& args)
     return 2;
   }
   const std::string out = cl.Get("--out");
+  const std::string problem = CheckOutputFile(out, { cl.Positional()[0] });
+  if (!problem.empty())
+  {
+    std::cerr << command << ": --out: " << problem << "\n";
+    return 2;
+  }
   if (vlf::FileExists(out) && !cl.Has("--force"))
   {
     std::cerr << command << ": '" << out << "' exists; add --force to replace it\n";
@@ -575,8 +582,9 @@ int Bench(const std::vector<std::string>& args)
       mirrorField = BenchField(MakeCornellBoxWithMirror(), directions, rays, iterations);
     }
     diffuseField = BenchField(MakeCornellBox(), directions, rays, iterations);
-    std::cout << "fields ready in " << SecondsSince(start) << " s (" << mirrorField->Directions().Size()
-              << " directions, " << mirrorField->Settings().RaysPerSide << " rays per side)\n";
+    std::cout << "fields ready in " << SecondsSince(start) << " s ("
+              << mirrorField->Directions().Size() << " directions, "
+              << mirrorField->Settings().RaysPerSide << " rays per side)\n";
   }
   catch (const std::exception& e)
   {
