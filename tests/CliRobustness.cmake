@@ -1,0 +1,93 @@
+# SPDX-License-Identifier: BSD-3-Clause
+# An adversarial user's findings (issue 17): degenerate inputs end with an error, never a crash; no
+# command overwrites its input (by name or through a symbolic or hard link) or writes anything
+# before every option is checked; writers' failures are reported; memory budgets refuse early.
+include("${CMAKE_CURRENT_LIST_DIR}/CliDepthImage.cmake")
+cli_depth_image(48x48) # ${WORK}/depth.png, also used as an "environment" and as a user's file
+
+# Runs `mesolight ARGN`; the exit code must be exactly CODE (a crash is a signal name, not a
+# number) and stderr must contain NEEDLE.
+function (cli_expect code needle)
+  execute_process(COMMAND "${CLI}" ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out
+                  ERROR_VARIABLE err)
+  if (NOT "${rc}" STREQUAL "${code}")
+    message(FATAL_ERROR "mesolight ${ARGN}: exit '${rc}', expected ${code}\n${out}\n${err}")
+  endif ()
+  string(FIND "${err}" "${needle}" at)
+  if (at EQUAL -1)
+    message(FATAL_ERROR "mesolight ${ARGN}: stderr lacks '${needle}':\n${err}")
+  endif ()
+  set(last_stdout "${out}" PARENT_SCOPE)
+endfunction ()
+
+# FILE must still have the content it had when cli_remember(FILE) was called.
+function (cli_remember file)
+  file(SHA256 "${file}" hash)
+  set(hash_${file} "${hash}" PARENT_SCOPE)
+endfunction ()
+function (cli_expect_unchanged file)
+  file(SHA256 "${file}" hash)
+  if (NOT hash STREQUAL "${hash_${file}}")
+    message(FATAL_ERROR "${file} was overwritten")
+  endif ()
+endfunction ()
+
+# 1. Degenerate relief walls: a clear error (exit 1), no SIGSEGV.
+cli_expect(1 "at least 2x2" render --offscreen --size 32x32 --resolution 1 --out "${WORK}/r1.png")
+
+# 2. Inputs are never outputs, through links too; checked before any work.
+set(user "${WORK}/depth.png")
+cli_remember("${user}")
+cli_expect(2 "would overwrite" lights "${user}" --count 4 --out "${user}")
+file(CREATE_LINK "${user}" "${WORK}/symbolic.csv" SYMBOLIC)
+cli_expect(2 "would overwrite" lights "${user}" --count 4 --out "${WORK}/symbolic.csv")
+file(CREATE_LINK "${user}" "${WORK}/hard.csv")
+cli_expect(2 "would overwrite" lights "${user}" --count 4 --out "${WORK}/hard.csv")
+cli_expect(2 "would overwrite"
+  render --offscreen --size 32x32 --resolution 16 --environment "${user}" --out "${user}")
+cli_expect(2 "would overwrite" bake "${user}" --out "${WORK}/hard.csv")
+cli_expect_unchanged("${user}")
+
+execute_process(COMMAND "${CLI}" vlf propagate --out "${WORK}/field.vlf" --directions 33 --rays 8
+                        --iterations 1 RESULT_VARIABLE rc OUTPUT_QUIET ERROR_VARIABLE err)
+if (NOT rc EQUAL 0)
+  message(FATAL_ERROR "vlf propagate failed (rc ${rc}): ${err}")
+endif ()
+cli_remember("${WORK}/field.vlf")
+cli_expect(2 "would overwrite"
+  vlf render "${WORK}/field.vlf" --out "${WORK}/field.vlf" --force --size 16x16)
+cli_expect(2 "would overwrite"
+  vlf render "${WORK}/field.vlf" --mode geometry --out "${WORK}/field.vlf" --force --size 16x16)
+cli_expect_unchanged("${WORK}/field.vlf")
+
+# 3. Every option is checked before anything is written.
+file(WRITE "${WORK}/t.png" "a user's file")
+cli_remember("${WORK}/t.png")
+cli_expect(2 "--tolerance"
+  trace --offscreen --scene cornell --width 8 --height 8 --samples 1 --tolerance nan
+  --out "${WORK}/t.png")
+cli_expect_unchanged("${WORK}/t.png")
+cli_expect(2 "needs a value" lights procedural:sky --count= --out "${WORK}/l.csv")
+cli_expect(2 "needs a value" render --offscreen --depth-scale= --out "${WORK}/d.png")
+if (EXISTS "${WORK}/l.csv" OR EXISTS "${WORK}/d.png")
+  message(FATAL_ERROR "an empty option value was taken as the default")
+endif ()
+
+# 4. Missing directories are reported up front, and a writer's failure is never "wrote".
+cli_expect(2 "does not exist" bake "${user}" --out "${WORK}/no-such-dir/relief.png")
+cli_expect(2 "does not exist" vlf propagate --out "${WORK}/no-such-dir/f.vlf" --directions 33
+  --rays 8 --iterations 1)
+cli_expect(2 "does not exist" trace --offscreen --scene cornell --width 8 --height 8 --samples 1
+  --out "${WORK}/c.png" --exr "${WORK}/no-such-dir/c.exr")
+if (EXISTS "${WORK}/c.png")
+  message(FATAL_ERROR "trace wrote its PNG before finding --exr unwritable")
+endif ()
+
+# 5. Memory budgets refuse before allocating, with the size needed (exit 1, no abort).
+cli_expect(1 "needs about" bake "${user}" --out "${WORK}/relief.exr" --memory-budget 0.00001)
+cli_expect(1 "needs about" cone "${user}" --out "${WORK}/cone.exr" --memory-budget 0.00001)
+cli_expect(1 "needs about"
+  lights procedural:sky --resolution 64 --count 4 --out "${WORK}/l.csv" --memory-budget 0.00001)
+
+# 6. A cone map in an integer format says how many ratios it clamps.
+cli_expect(0 "clamped to 1" cone "${user}" --out "${WORK}/cone.png")
