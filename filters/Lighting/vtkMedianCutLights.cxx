@@ -283,6 +283,22 @@ int vtkMedianCutLights::Execute(
     return 0;
   }
 
+  // The lights are shaded in single precision (light texture, GLSL): sums and products of
+  // irradiances near FLT_MAX overflow to Inf and render black. Keep a wide margin below it.
+  constexpr double brightest = 1e30;
+  double total = 0.0;
+  for (const mesolight::MedianCutLight& light : lights)
+  {
+    total += light.Rgb[0] + light.Rgb[1] + light.Rgb[2];
+  }
+  if (!(total <= brightest))
+  {
+    vtkErrorMacro("The environment's total irradiance ("
+      << total << ") is beyond what single-precision shading can sum (" << brightest
+      << "); scale the map down (its exposure) before sampling lights.");
+    return 0;
+  }
+
   // 3. Outputs.
   const vtkIdType count = static_cast<vtkIdType>(lights.size());
   vtkNew<vtkPoints> points;

@@ -313,3 +313,28 @@ TEST(MedianCutLights, MemoryBudgetRefusesBeforeAllocating)
   EXPECT_TRUE(capture->Errors.empty()) << capture->AllErrors();
   EXPECT_EQ(lights->GetOutput()->GetNumberOfPoints(), 8);
 }
+
+// Finite values near FLT_MAX overflow single-precision shading (a black wall): refused with an
+// error; a bright but summable map still gives lights.
+TEST(MedianCutLights, EnvironmentsTooBrightToShadeAreRefused)
+{
+  for (const float value : { 3e38f, 1e30f })
+  {
+    vtkNew<vtkMedianCutLights> lights;
+    vtkNew<MessageCapture> capture;
+    capture->Watch(lights);
+    lights->SetInputData(Image(16, 8, value));
+    lights->SetNumberOfLights(4);
+    lights->Update();
+    EXPECT_TRUE(capture->HasError("single-precision shading")) << value << capture->AllErrors();
+    EXPECT_EQ(lights->GetOutput()->GetNumberOfPoints(), 0);
+  }
+  vtkNew<vtkMedianCutLights> lights;
+  vtkNew<MessageCapture> capture;
+  capture->Watch(lights);
+  lights->SetInputData(Image(16, 8, 1e20f));
+  lights->SetNumberOfLights(4);
+  lights->Update();
+  EXPECT_TRUE(capture->Errors.empty()) << capture->AllErrors();
+  EXPECT_EQ(lights->GetOutput()->GetNumberOfPoints(), 4);
+}
