@@ -91,3 +91,37 @@ cli_expect(1 "needs about"
 
 # 6. A cone map in an integer format says how many ratios it clamps.
 cli_expect(0 "clamped to 1" cone "${user}" --out "${WORK}/cone.png")
+
+# 7. probe --merge: a 16-bit mask of 0.5 blends the two views (it was read as 32768, not 0.5).
+# The total irradiance (one median-cut light) is linear in the map, so a blend's lies strictly
+# between the two views' (the mask was clamped to 1: the first view only).
+execute_process(COMMAND "${CLI}" render --offscreen --size 48x48 --resolution 32 --lights 0
+                        --out "${WORK}/second.png" RESULT_VARIABLE rc OUTPUT_QUIET)
+string(REPEAT "32768 " 64 row)
+string(REPEAT "${row}\n" 32 rows)
+file(WRITE "${WORK}/mask16.pgm" "P2\n64 32\n65535\n${rows}")
+function (cli_total_red name)
+  cli_expect(0 "" lights "${WORK}/${name}.exr" --count 1 --out "${WORK}/${name}.csv")
+  file(STRINGS "${WORK}/${name}.csv" rows)
+  list(GET rows 1 row)
+  string(REPLACE "," ";" row "${row}")
+  list(GET row 5 red)
+  set(red_${name} "${red}" PARENT_SCOPE)
+endfunction ()
+cli_expect(0 "" probe "${user}" --width 64 --out "${WORK}/first.exr")
+cli_expect(0 "" probe "${WORK}/second.png" --width 64 --out "${WORK}/second.exr")
+cli_expect(0 "" probe "${user}" --merge "${WORK}/second.png" --mask "${WORK}/mask16.pgm"
+  --width 64 --out "${WORK}/merged.exr")
+cli_total_red(first)
+cli_total_red(second)
+cli_total_red(merged)
+if (red_first LESS red_second)
+  set(low ${red_first})
+  set(high ${red_second})
+else ()
+  set(low ${red_second})
+  set(high ${red_first})
+endif ()
+if (NOT (red_merged GREATER low AND red_merged LESS high)) # strictly: not one view only
+  message(FATAL_ERROR "a 16-bit mask of 0.5 gave ${red_merged}, not between ${low} and ${high}")
+endif ()
