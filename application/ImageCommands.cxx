@@ -256,6 +256,7 @@ int RunProbeCommand(const std::vector<std::string>& args)
     "--merge", "PROBE_B", "second view of the same probe (the relief thesis' two-view merge)");
   cl.AddValue("--merge-forward", "X,Y,Z", "direction the second view looked in", "0,1,0");
   cl.AddValue("--mask", "IMAGE", "lat-long mask C: result = A C + B (1 - C)");
+  cl.AddValue("--memory-budget", "GIB", "refuse maps needing more memory (0: all there is)", "0");
   std::string error;
   int width = 0;
   double forward[3], up[3], forwardB[3];
@@ -264,7 +265,9 @@ int RunProbeCommand(const std::vector<std::string>& args)
   {
     return exitCode; // --help printed, or a usage error reported
   }
-  if (!cl.GetInt("--width", 0, 32768, width, error))
+  double budget = 0.0;
+  if (!cl.GetInt("--width", 0, 32768, width, error) ||
+    !cl.GetDouble("--memory-budget", 0.0, 1e6, budget, error))
   {
     return cl.UsageError(error);
   }
@@ -295,6 +298,7 @@ int RunProbeCommand(const std::vector<std::string>& args)
     toLatLong->SetProbeType(type == "mirror-ball" ? vtkLightProbeToLatLong::MIRROR_BALL
                                                   : vtkLightProbeToLatLong::ANGULAR_MAP);
     toLatLong->SetOutputWidth(width);
+    toLatLong->SetMemoryBudget(static_cast<vtkTypeInt64>(budget * 1073741824.0));
     toLatLong->SetForward(const_cast<double*>(f));
     toLatLong->SetUp(up);
     toLatLong->Update();

@@ -125,3 +125,7 @@ endif ()
 if (NOT (red_merged GREATER low AND red_merged LESS high)) # strictly: not one view only
   message(FATAL_ERROR "a 16-bit mask of 0.5 gave ${red_merged}, not between ${low} and ${high}")
 endif ()
+
+# 8. probe estimates its memory before converting (--width 32768 needed 12.8 GB unannounced).
+cli_expect(1 "needs about" probe "${user}" --width 32768 --out "${WORK}/huge.exr"
+  --memory-budget 1)
