@@ -127,6 +127,12 @@ bool CommandLine::Parse(const std::vector<std::string>& args, std::string& error
         }
         value = args[++i];
       }
+      if (value.empty())
+      {
+        // An empty value ("--count ''") would otherwise silently mean the default.
+        error = "option " + name + " needs a value (" + it->second.Meta + "), not an empty one";
+        return false;
+      }
       this->Values[name] = value;
     }
     else

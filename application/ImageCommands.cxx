@@ -2,6 +2,7 @@
 #include "ImageCommands.h"
 
 #include "CommandLine.h"
+#include "OutputFile.h"
 #include "Timing.h"
 
 #include "EnvironmentMaps.h"
@@ -19,24 +20,14 @@
 #include <vtkSmartPointer.h>
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <iostream>
 #include <string>
-#include <sys/stat.h>
 #include <vector>
 
 namespace mesolight
 {
-
-bool SameFile(const std::string& a, const std::string& b)
-{
-  struct stat sa, sb;
-  if (stat(a.c_str(), &sa) != 0 || stat(b.c_str(), &sb) != 0)
-  {
-    return false;
-  }
-  return sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
-}
 
 namespace
 {
@@ -70,6 +61,7 @@ int RunBakeCommand(const std::vector<std::string>& args)
   cl.AddFlag("--height", "the input stores height (white = high) rather than depth");
   cl.AddFlag("--normalize", "stretch the input's value range to [0, 1]");
   cl.AddValue("--bits", "N", "8 or 16 bits per channel for PNG/TIFF output", "8");
+  cl.AddValue("--memory-budget", "GIB", "refuse images needing more memory (0: all there is)", "0");
   std::string error;
   int exitCode = 0;
   if (!cl.ParseArguments(args, exitCode))
@@ -84,8 +76,10 @@ int RunBakeCommand(const std::vector<std::string>& args)
   const std::string out = cl.Get("--out");
   double depthScale = 0.04;
   int bits = 8;
+  double budget = 0.0;
   if (!cl.GetDouble("--depth-scale", 0.0, 100.0, depthScale, error) ||
-    !cl.GetInt("--bits", 8, 16, bits, error))
+    !cl.GetInt("--bits", 8, 16, bits, error) ||
+    !cl.GetDouble("--memory-budget", 0.0, 1e6, budget, error))
   {
     return cl.UsageError(error);
   }
@@ -98,9 +92,10 @@ int RunBakeCommand(const std::vector<std::string>& args)
   {
     return cl.UsageError("--border must be clamp or wrap");
   }
-  if (out == in || SameFile(out, in))
+  const std::string problem = CheckOutputFile(out, { in });
+  if (!problem.empty())
   {
-    return cl.UsageError("--out must differ from the input");
+    return cl.UsageError("--out: " + problem);
   }
 
   vtkNew<vtkOIIOImageReader> reader;
@@ -110,6 +105,7 @@ int RunBakeCommand(const std::vector<std::string>& args)
   bake->SetDepthScale(depthScale);
   bake->SetInvertInput(cl.Has("--height"));
   bake->SetNormalizeRange(cl.Has("--normalize"));
+  bake->SetMemoryBudget(static_cast<vtkTypeInt64>(budget * 1073741824.0));
   if (border == "wrap")
   {
     bake->SetBorderModeToWrap();
@@ -155,6 +151,7 @@ int RunConeCommand(const std::vector<std::string>& args)
   cl.AddFlag("--height", "the input stores height (white = high) rather than depth");
   cl.AddFlag("--normalize", "stretch the input's value range to [0, 1]");
   cl.AddFlag("--8bit", "the relief thesis' 8-bit packing (cone as c / (1 + c)) instead of float");
+  cl.AddValue("--memory-budget", "GIB", "refuse images needing more memory (0: all there is)", "0");
   std::string error;
   double depthScale = 0.04;
   int exitCode = 0;
@@ -162,7 +159,9 @@ int RunConeCommand(const std::vector<std::string>& args)
   {
     return exitCode; // --help printed, or a usage error reported
   }
-  if (!cl.GetDouble("--depth-scale", 0.0, 100.0, depthScale, error))
+  double budget = 0.0;
+  if (!cl.GetDouble("--depth-scale", 0.0, 100.0, depthScale, error) ||
+    !cl.GetDouble("--memory-budget", 0.0, 1e6, budget, error))
   {
     return cl.UsageError(error);
   }
@@ -177,9 +176,10 @@ int RunConeCommand(const std::vector<std::string>& args)
   }
   const std::string in = cl.Positional()[0];
   const std::string out = cl.Get("--out");
-  if (out == in || SameFile(out, in))
+  const std::string problem = CheckOutputFile(out, { in });
+  if (!problem.empty())
   {
-    return cl.UsageError("--out must differ from the input");
+    return cl.UsageError("--out: " + problem);
   }
   vtkNew<vtkOIIOImageReader> reader;
   reader->SetFileName(in.c_str());
@@ -188,6 +188,7 @@ int RunConeCommand(const std::vector<std::string>& args)
   cones->SetDepthScale(depthScale);
   cones->SetInvertInput(cl.Has("--height"));
   cones->SetNormalizeRange(cl.Has("--normalize"));
+  cones->SetMemoryBudget(static_cast<vtkTypeInt64>(budget * 1073741824.0));
   cones->SetBorderMode(border == "wrap" ? 1 : 0);
   cones->SetConeType(
     type == "conservative" ? vtkConeMapFilter::CONSERVATIVE : vtkConeMapFilter::RELAXED);
@@ -199,6 +200,31 @@ int RunConeCommand(const std::vector<std::string>& args)
   {
     std::cerr << "mesolight cone: could not make a cone map of " << in << "\n";
     return 1;
+  }
+  {
+    // Integer formats (PNG, TIFF...) store [0, 1]: float-packed cone ratios above 1 are clamped
+    // there (narrower cones: still valid, but slower stepping). Say so, and what keeps them.
+    std::string extension = out.substr(std::min(out.size(), out.find_last_of('.') + 1));
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+      [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    vtkDataArray* packed = cones->GetOutput()->GetPointData()->GetScalars();
+    if (!cl.Has("--8bit") && extension != "exr" && extension != "hdr" && packed)
+    {
+      vtkIdType clamped = 0;
+      double largest = 0.0;
+      for (vtkIdType i = 0; i < packed->GetNumberOfTuples(); ++i)
+      {
+        const double ratio = packed->GetComponent(i, 2);
+        clamped += ratio > 1.0 ? 1 : 0;
+        largest = std::max(largest, ratio);
+      }
+      if (clamped > 0)
+      {
+        std::cerr << "mesolight cone: warning: " << clamped << " of " << packed->GetNumberOfTuples()
+                  << " cone ratios exceed 1 (up to " << largest << ") and are clamped to 1 in '"
+                  << out << "'; write .exr to keep them, or use --8bit\n";
+      }
+    }
   }
   vtkNew<vtkOIIOImageWriter> writer;
   writer->SetInputConnection(cones->GetOutputPort());
@@ -230,6 +256,7 @@ int RunProbeCommand(const std::vector<std::string>& args)
     "--merge", "PROBE_B", "second view of the same probe (the relief thesis' two-view merge)");
   cl.AddValue("--merge-forward", "X,Y,Z", "direction the second view looked in", "0,1,0");
   cl.AddValue("--mask", "IMAGE", "lat-long mask C: result = A C + B (1 - C)");
+  cl.AddValue("--memory-budget", "GIB", "refuse maps needing more memory (0: all there is)", "0");
   std::string error;
   int width = 0;
   double forward[3], up[3], forwardB[3];
@@ -238,7 +265,9 @@ int RunProbeCommand(const std::vector<std::string>& args)
   {
     return exitCode; // --help printed, or a usage error reported
   }
-  if (!cl.GetInt("--width", 0, 32768, width, error))
+  double budget = 0.0;
+  if (!cl.GetInt("--width", 0, 32768, width, error) ||
+    !cl.GetDouble("--memory-budget", 0.0, 1e6, budget, error))
   {
     return cl.UsageError(error);
   }
@@ -254,12 +283,11 @@ int RunProbeCommand(const std::vector<std::string>& args)
     return 2;
   }
   const std::string out = cl.Get("--out");
-  for (const std::string& in : { cl.Positional()[0], cl.Get("--merge"), cl.Get("--mask") })
+  const std::string problem =
+    CheckOutputFile(out, { cl.Positional()[0], cl.Get("--merge"), cl.Get("--mask") });
+  if (!problem.empty())
   {
-    if (!in.empty() && (in == out || SameFile(in, out)))
-    {
-      return cl.UsageError("--out must differ from the inputs");
-    }
+    return cl.UsageError("--out: " + problem);
   }
   auto convert = [&](const std::string& file, const double f[3]) -> vtkSmartPointer<vtkImageData>
   {
@@ -270,6 +298,7 @@ int RunProbeCommand(const std::vector<std::string>& args)
     toLatLong->SetProbeType(type == "mirror-ball" ? vtkLightProbeToLatLong::MIRROR_BALL
                                                   : vtkLightProbeToLatLong::ANGULAR_MAP);
     toLatLong->SetOutputWidth(width);
+    toLatLong->SetMemoryBudget(static_cast<vtkTypeInt64>(budget * 1073741824.0));
     toLatLong->SetForward(const_cast<double*>(f));
     toLatLong->SetUp(up);
     toLatLong->Update();
@@ -303,7 +332,10 @@ int RunProbeCommand(const std::vector<std::string>& args)
       return 1;
     }
     vtkDataArray* maskValues = maskReader->GetOutput()->GetPointData()->GetScalars();
-    const double maskScale = maskValues->GetDataType() == VTK_UNSIGNED_CHAR ? 1.0 / 255.0 : 1.0;
+    // Integer masks mean [0, type max] -> [0, 1] (8- and 16-bit PNG/TIFF); float ones are as is.
+    const double maskScale = maskValues->GetDataType() == VTK_UNSIGNED_CHAR ? 1.0 / 255.0
+      : maskValues->GetDataType() == VTK_UNSIGNED_SHORT                     ? 1.0 / 65535.0
+                                                                            : 1.0;
     std::vector<float> mask(static_cast<size_t>(dims[0]) * dims[1]);
     for (size_t p = 0; p < mask.size(); ++p)
     {

@@ -19,9 +19,6 @@ int RunConeCommand(const std::vector<std::string>& args);
 /** mesolight probe PROBE_IMAGE --out FILE.exr [options]; `args` excludes "probe". */
 int RunProbeCommand(const std::vector<std::string>& args);
 
-/** Whether two paths name the same existing file (so an output would overwrite an input). */
-bool SameFile(const std::string& a, const std::string& b);
-
 } // namespace mesolight
 
 #endif

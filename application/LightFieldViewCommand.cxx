@@ -4,6 +4,7 @@
 #include "ChartPlot.h"
 #include "CommandLine.h"
 #include "LightFieldCamera.h"
+#include "OutputFile.h"
 #include "Timing.h"
 
 #include "vtkLightFieldActor.h"
@@ -190,6 +191,12 @@ int Render(const std::vector<std::string>& args)
     return 2;
   }
   const std::string out = cl.Get("--out");
+  const std::string problem = CheckOutputFile(out, { cl.Positional()[0] });
+  if (!problem.empty())
+  {
+    std::cerr << command << ": --out: " << problem << "\n";
+    return 2;
+  }
   if (vlf::FileExists(out) && !cl.Has("--force"))
   {
     std::cerr << command << ": '" << out << "' exists; add --force to replace it\n";

@@ -2,6 +2,7 @@
 #include "LightsCommand.h"
 
 #include "CommandLine.h"
+#include "OutputFile.h"
 #include "MathConstants.h"
 #include "Timing.h"
 
@@ -161,6 +162,7 @@ int RunLightsCommand(const std::vector<std::string>& args)
   cl.AddValue("--count", "N", "number of lights (any N >= 1)", "64");
   cl.AddFlag("--variance", "variance-minimizing cuts (Viriyothai & Debevec 2009)");
   cl.AddValue("--resolution", "H", "height of procedural maps (width 2H)", "512");
+  cl.AddValue("--memory-budget", "GIB", "refuse maps needing more memory (0: all there is)", "0");
   std::string error;
   int exitCode = 0;
   if (!cl.ParseArguments(args, exitCode))
@@ -175,12 +177,20 @@ int RunLightsCommand(const std::vector<std::string>& args)
   }
   int count = 64;
   int height = 512;
+  double budget = 0.0;
   if (!cl.GetInt("--count", 1, 1 << 26, count, error) ||
-    !cl.GetInt("--resolution", 2, 8192, height, error))
+    !cl.GetInt("--resolution", 2, 8192, height, error) ||
+    !cl.GetDouble("--memory-budget", 0.0, 1e6, budget, error))
   {
     return cl.UsageError(error);
   }
   const std::string in = cl.Positional()[0];
+  const std::string file = cl.Get("--out");
+  const std::string problem = CheckOutputFile(file, { in });
+  if (!problem.empty())
+  {
+    return cl.UsageError("--out: " + problem);
+  }
   vtkSmartPointer<vtkAlgorithm> source = MapSource(in, height, error);
   if (!source)
   {
@@ -190,6 +200,7 @@ int RunLightsCommand(const std::vector<std::string>& args)
   lights->SetInputConnection(source->GetOutputPort());
   lights->SetNumberOfLights(count);
   lights->SetVarianceMinimization(cl.Has("--variance"));
+  lights->SetMemoryBudget(static_cast<vtkTypeInt64>(budget * 1073741824.0));
   // Errors from any stage are reported by VTK on stderr; the exit code tells the caller.
   lights->Update();
   vtkPolyData* out = lights->GetOutput();
@@ -198,7 +209,6 @@ int RunLightsCommand(const std::vector<std::string>& args)
     std::cerr << "mesolight lights: could not compute " << count << " lights from " << in << "\n";
     return 1;
   }
-  const std::string file = cl.Get("--out");
   if (!vtkMedianCutLights::WriteCsv(out, file, error))
   {
     std::cerr << "mesolight lights: " << error << "\n";

@@ -4,6 +4,7 @@
 #include "CommandLine.h"
 #include "ImageCommands.h"
 #include "ImageCompare.h"
+#include "OutputFile.h"
 #include "ReliefBenchmark.h"
 #include "ReliefScene.h"
 #include "vtkReliefMapper.h"
@@ -202,10 +203,10 @@ int RunRenderCommand(const std::vector<std::string>& args)
     return 2;
   }
   const std::string out = cl.Get("--out");
-  if (!options.DepthFile.empty() && SameFile(out, options.DepthFile))
+  const std::string problem = CheckOutputFile(out, { options.DepthFile, options.Environment });
+  if (!problem.empty())
   {
-    std::cerr << "mesolight render: --out would overwrite the input " << options.DepthFile << "\n";
-    return 2;
+    return cl.UsageError("--out: " + problem);
   }
 
   ReliefScene scene;
@@ -286,6 +287,15 @@ int RunReliefBenchmarkCommand(const std::vector<std::string>& args)
     return cl.UsageError(error);
   }
   settings.CsvFile = cl.Get("--csv");
+  if (cl.Has("--csv"))
+  {
+    const std::string problem =
+      CheckOutputFile(settings.CsvFile, { options.DepthFile, options.Environment });
+    if (!problem.empty())
+    {
+      return cl.UsageError("--csv: " + problem);
+    }
+  }
   return RunReliefBenchmark(settings, std::cout) ? 0 : 1;
 }
 

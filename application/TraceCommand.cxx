@@ -2,6 +2,7 @@
 #include "TraceCommand.h"
 
 #include "CommandLine.h"
+#include "OutputFile.h"
 #include "ReliefScene.h" // HasDisplay
 #include "Timing.h"
 #include "TraceScenes.h"
@@ -299,7 +300,11 @@ int TraceCornell(const CommandLine& cl, int width, int height, int threads, bool
     vtkNew<vtkOIIOImageWriter> writer;
     writer->SetInputData(ToFloatImage(image));
     writer->SetFileName(cl.Get("--exr").c_str());
-    writer->Write();
+    if (!writer->Write())
+    {
+      std::cerr << "mesolight trace: cannot write " << cl.Get("--exr") << "\n";
+      return 1;
+    }
     std::cout << "wrote " << cl.Get("--exr") << " (linear radiance)\n";
   }
   if (cl.Has("--compare-exr"))
@@ -398,6 +403,33 @@ int RunTraceCommand(const std::vector<std::string>& args)
     !cl.GetDouble("--threshold", 0.0, 10.0, threshold, error))
   {
     return cl.UsageError(error);
+  }
+  // Every option and every output is checked before anything is traced or written.
+  int samples = 64, seed = 1;
+  double tolerance = 0.05;
+  if (!cl.GetInt("--samples", 1, 1 << 20, samples, error) ||
+    !cl.GetInt("--seed", 0, 1 << 30, seed, error) ||
+    !cl.GetDouble("--tolerance", 0.0, 10.0, tolerance, error))
+  {
+    return cl.UsageError(error);
+  }
+  const std::string compare = cl.Get("--compare-exr");
+  std::string problem;
+  if (cl.Has("--export-obj"))
+  {
+    problem = CheckOutputFile(cl.Get("--export-obj"), { compare });
+  }
+  else
+  {
+    problem = CheckOutputFile(cl.Get("--out"), { compare, cl.Get("--exr") });
+    if (problem.empty() && cl.Has("--exr"))
+    {
+      problem = CheckOutputFile(cl.Get("--exr"), { compare, cl.Get("--out") });
+    }
+  }
+  if (!problem.empty())
+  {
+    return cl.UsageError(problem);
   }
   const std::string sceneName = cl.Get("--scene");
   const bool interactive = !cl.Has("--offscreen") && HasDisplay();

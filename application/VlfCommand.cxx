@@ -6,6 +6,7 @@
 #include "CommandLine.h"
 #include "LightFieldCamera.h"
 #include "LightFieldViewCommand.h"
+#include "OutputFile.h"
 #include "Timing.h"
 
 #include "EmbreeScene.h"
@@ -121,6 +122,19 @@ int Propagate(const std::vector<std::string>& args)
   if (cl.Positional().size() > 1)
   {
     return cl.UsageError("one scene at most");
+  }
+  {
+    // The scene (and its .mtl) is read, FIELD rewritten after every iteration: check it first.
+    std::vector<std::string> inputs(cl.Positional());
+    if (!inputs.empty() && inputs[0].size() > 4)
+    {
+      inputs.push_back(inputs[0].substr(0, inputs[0].size() - 4) + ".mtl");
+    }
+    const std::string problem = CheckOutputFile(out, inputs);
+    if (!problem.empty())
+    {
+      return cl.UsageError("--out: " + problem);
+    }
   }
   const bool resume = cl.Has("--resume");
   if (resume && cl.Has("--force"))
@@ -246,6 +260,11 @@ int Render(const std::vector<std::string>& args)
     return cl.UsageError("give one FIELD and --out IMAGE.png");
   }
   const std::string out = cl.Get("--out");
+  const std::string problem = CheckOutputFile(out, { cl.Positional()[0] });
+  if (!problem.empty())
+  {
+    return cl.UsageError("--out: " + problem);
+  }
   if (vlf::FileExists(out) && !cl.Has("--force"))
   {
     std::cerr << "mesolight vlf render: '" << out << "' exists; add --force to replace it\n";

@@ -32,6 +32,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <sstream>
+#include <string>
 
 namespace mesolight
 {
@@ -89,6 +90,10 @@ vtkSmartPointer<vtkPolyData> MakeWall(vtkImageData* relief)
   auto wall = vtkSmartPointer<vtkPolyData>::New();
   wall->DeepCopy(plane->GetOutput());
   vtkDataArray* tcoords = wall->GetPointData()->GetTCoords();
+  if (!tcoords)
+  {
+    return nullptr; // a degenerate plane: BuildReliefTextures refuses such textures first
+  }
   for (vtkIdType i = 0; i < tcoords->GetNumberOfTuples(); ++i)
   {
     tcoords->SetComponent(i, 0, du + tcoords->GetComponent(i, 0) * (1.0 - 2.0 * du));
@@ -173,6 +178,15 @@ bool BuildReliefTextures(const ReliefSceneOptions& options, vtkSmartPointer<vtkI
     bake->GetOutput()->GetNumberOfPoints() == 0)
   {
     error = errors->Messages.empty() ? "could not bake the relief texture" : errors->Messages;
+    return false;
+  }
+  int dims[3];
+  bake->GetOutput()->GetDimensions(dims);
+  if (dims[0] < 2 || dims[1] < 2)
+  {
+    // The wall spans the texel centres: one texel across leaves a plane of zero width.
+    error = "the relief texture is " + std::to_string(dims[0]) + "x" + std::to_string(dims[1]) +
+      " texels; a relief wall needs at least 2x2";
     return false;
   }
   relief = vtkSmartPointer<vtkImageData>::New();
@@ -369,8 +383,14 @@ bool BuildReliefScene(const ReliefSceneOptions& options, ReliefScene& scene, std
   {
     return false;
   }
+  vtkSmartPointer<vtkPolyData> wall = MakeWall(scene.ReliefTexture);
+  if (!wall)
+  {
+    error = "could not build the wall for the relief texture";
+    return false;
+  }
   scene.Mapper = vtkSmartPointer<vtkReliefMapper>::New();
-  scene.Mapper->SetInputData(MakeWall(scene.ReliefTexture));
+  scene.Mapper->SetInputData(wall);
   scene.Mapper->SetReliefTextureData(scene.ReliefTexture);
   if (!scene.Mapper->GetReliefProperty()->SetMethodByName(options.Method.c_str()))
   {

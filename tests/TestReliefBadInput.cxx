@@ -4,6 +4,7 @@
 #include "ReliefScene.h"
 #include "TestReliefTestUtilities.h"
 #include "vtkOIIOImageReader.h"
+#include "vtkOIIOImageWriter.h"
 #include "vtkReliefMapper.h"
 #include "vtkReliefTextureFilter.h"
 
@@ -218,4 +219,56 @@ TEST(ReliefBadInput, UnreadableFilesAreErrors)
     EXPECT_FALSE(messages->Errors.empty()) << file;
     EXPECT_NE(messages->Errors.find(file), std::string::npos) << "the message names the file";
   }
+}
+
+// A depth image one texel wide or high leaves the wall (spanning texel centres) without area: the
+// scene builder reports it instead of crashing on a plane without texture coordinates.
+TEST(ReliefBadInput, DegenerateDepthImagesAreSceneErrors)
+{
+  const int sizes[][2] = { { 1, 1 }, { 1, 7 }, { 7, 1 } };
+  for (const auto& size : sizes)
+  {
+    const std::string file = test::OutputPath(
+      "degenerate-" + std::to_string(size[0]) + "x" + std::to_string(size[1]) + ".png");
+    vtkNew<vtkOIIOImageWriter> writer;
+    writer->SetInputData(test::MakeDepthMap(size[0], size[1], [](double, double) { return 0.5; }));
+    writer->SetFileName(file.c_str());
+    writer->Write();
+    ReliefSceneOptions options;
+    options.DepthFile = file;
+    ReliefScene scene;
+    std::string error;
+    EXPECT_FALSE(BuildReliefScene(options, scene, error)) << file;
+    EXPECT_NE(error.find("at least 2x2"), std::string::npos) << error;
+  }
+  ReliefSceneOptions procedural;
+  procedural.Resolution = 1;
+  ReliefScene scene;
+  std::string error;
+  EXPECT_FALSE(BuildReliefScene(procedural, scene, error));
+  EXPECT_NE(error.find("at least 2x2"), std::string::npos) << error;
+  procedural.Resolution = 2; // the smallest wall still builds
+  EXPECT_TRUE(BuildReliefScene(procedural, scene, error)) << error;
+}
+
+// A degenerate vtkPlaneSource outputs an empty mesh, without texture coordinates: the mapper
+// draws nothing and does not crash.
+TEST(ReliefBadInput, DegeneratePlaneDrawsNothing)
+{
+  vtkNew<vtkPlaneSource> plane;
+  plane->SetOrigin(0.5, 0.5, 0.0);
+  plane->SetPoint1(0.5, 0.5, 0.0);
+  plane->SetPoint2(0.5, 1.0, 0.0);
+  vtkNew<test::MessageRecorder> planeMessages; // the source's own complaint is expected
+  planeMessages->Watch(plane);
+  plane->Update();
+  auto mesh = vtkSmartPointer<vtkPolyData>::New();
+  mesh->DeepCopy(plane->GetOutput());
+  vtkNew<vtkReliefMapper> mapper;
+  mapper->SetReliefTextureData(SmallRelief());
+  vtkNew<test::MessageRecorder> messages;
+  messages->Watch(mapper);
+  const Frame frame = DrawWithRelief(mapper, mesh);
+  EXPECT_EQ(mesh->GetNumberOfPoints(), 0);
+  EXPECT_EQ(CoveredPixels(frame), 0);
 }

@@ -3,6 +3,7 @@
 #include "vtkWholeExtentRequest.h"
 
 #include "EnvironmentMaps.h"
+#include "MemoryBudget.h"
 
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
@@ -16,6 +17,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <string>
 
 vtkStandardNewMacro(vtkLightProbeToLatLong);
 
@@ -76,6 +79,18 @@ int vtkLightProbeToLatLong::RequestData(
                     << " pixel square from its lower left corner.");
   }
   const int size = std::min(dims[0], dims[1]);
+  {
+    // The probe as floats, the lat-long map and its VTK copy: 12 bytes per pixel each.
+    const std::uint64_t w = static_cast<std::uint64_t>(OutputWidthFor(this->OutputWidth, size));
+    const std::string memory = mesolight::CheckMemoryBudget(
+      "A " + std::to_string(w) + " x " + std::to_string(w / 2) + " lat-long map",
+      12 * (static_cast<std::uint64_t>(size) * size + 2 * w * (w / 2)), this->MemoryBudget);
+    if (!memory.empty())
+    {
+      vtkErrorMacro(<< memory << ".");
+      return 0;
+    }
+  }
   mesolight::RgbImage probe(size, size);
   long long nonFinite = 0;
   for (int j = 0; j < size; ++j)
@@ -90,6 +105,10 @@ int vtkLightProbeToLatLong::RequestData(
         if (scalars->GetDataType() == VTK_UNSIGNED_CHAR)
         {
           value /= 255.0;
+        }
+        else if (scalars->GetDataType() == VTK_UNSIGNED_SHORT)
+        {
+          value /= 65535.0; // 16-bit PNG/TIFF probes mean [0, 1] too
         }
         if (!std::isfinite(value))
         {
@@ -144,6 +163,7 @@ void vtkLightProbeToLatLong::PrintSelf(ostream& os, vtkIndent indent)
      << "\n";
   os << indent << "OutputWidth: " << this->OutputWidth << "\n";
   os << indent << "Samples: " << this->Samples << "\n";
+  os << indent << "MemoryBudget: " << this->MemoryBudget << "\n";
   os << indent << "Forward: " << this->Forward[0] << " " << this->Forward[1] << " "
      << this->Forward[2] << "\n";
   os << indent << "Up: " << this->Up[0] << " " << this->Up[1] << " " << this->Up[2] << "\n";

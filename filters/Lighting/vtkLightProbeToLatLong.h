@@ -49,6 +49,16 @@ public:
   vtkSetVector3Macro(Up, double);
   vtkGetVector3Macro(Up, double);
 
+  ///@{
+  /**
+   * Memory budget in bytes: the probe, the map and its copy are estimated before allocating, and
+   * the filter fails with the size needed when that is more. 0 (default): the memory the process
+   * can get (its cgroup limit, else the physical memory).
+   */
+  vtkSetClampMacro(MemoryBudget, vtkTypeInt64, 0, VTK_TYPE_INT64_MAX);
+  vtkGetMacro(MemoryBudget, vtkTypeInt64);
+  ///@}
+
 protected:
   vtkLightProbeToLatLong() = default;
   ~vtkLightProbeToLatLong() override = default;
@@ -60,6 +70,7 @@ protected:
   int ProbeType = ANGULAR_MAP;
   int OutputWidth = 0;
   int Samples = 2;
+  vtkTypeInt64 MemoryBudget = 0;
   double Forward[3] = { 1.0, 0.0, 0.0 };
   double Up[3] = { 0.0, 0.0, 1.0 };
 

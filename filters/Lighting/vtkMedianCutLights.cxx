@@ -4,6 +4,7 @@
 
 #include "EnvironmentMaps.h"
 #include "MedianCut.h"
+#include "MemoryBudget.h"
 #include "ScalarConversion.h"
 
 #include "vtkAlgorithm.h"
@@ -23,10 +24,13 @@
 #include "vtkSMPTools.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <fstream>
 #include <iomanip>
 #include <limits>
+#include <new>
 #include <vector>
 
 vtkStandardNewMacro(vtkMedianCutLights);
@@ -117,6 +121,22 @@ int vtkMedianCutLights::RequestUpdateExtent(
 int vtkMedianCutLights::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
+  try
+  {
+    return this->Execute(inputVector, outputVector);
+  }
+  catch (const std::bad_alloc&)
+  {
+    vtkErrorMacro("Out of memory (std::bad_alloc) for this input; set MemoryBudget to be told "
+                  "before allocating how much it needs, or use a smaller input.");
+    return 0;
+  }
+}
+
+//------------------------------------------------------------------------------
+int vtkMedianCutLights::Execute(
+  vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
   vtkImageData* input = vtkImageData::GetData(inputVector[0], 0);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   vtkImageData* texture = vtkImageData::GetData(outputVector, 1);
@@ -174,6 +194,20 @@ int vtkMedianCutLights::RequestData(
                                               << " pixels, not 2:1; it is still read as a "
                                                  "lat-long map (360 degrees across, 180 down), "
                                                  "so its pixels are not square in angle.");
+  }
+
+  {
+    // Per pixel: RGB floats, and the median cut's summed-area tables (double; five with
+    // variance minimization) and per-pixel energy.
+    const std::string memory = mesolight::CheckMemoryBudget(
+      "Median cut of a " + std::to_string(w) + " x " + std::to_string(h) + " environment",
+      static_cast<std::uint64_t>(n) * (12 + 8 * (this->VarianceMinimization ? 5 : 1) + 8),
+      this->MemoryBudget);
+    if (!memory.empty())
+    {
+      vtkErrorMacro(<< memory << ".");
+      return 0;
+    }
   }
 
   // 1. RGB floats; validate.
@@ -246,6 +280,22 @@ int vtkMedianCutLights::RequestData(
   if (status != mesolight::MedianCutStatus::Ok)
   {
     vtkErrorMacro("Median cut failed: " << error << ".");
+    return 0;
+  }
+
+  // The lights are shaded in single precision (light texture, GLSL): sums and products of
+  // irradiances near FLT_MAX overflow to Inf and render black. Keep a wide margin below it.
+  constexpr double brightest = 1e30;
+  double total = 0.0;
+  for (const mesolight::MedianCutLight& light : lights)
+  {
+    total += light.Rgb[0] + light.Rgb[1] + light.Rgb[2];
+  }
+  if (!(total <= brightest))
+  {
+    vtkErrorMacro("The environment's total irradiance ("
+      << total << ") is beyond what single-precision shading can sum (" << brightest
+      << "); scale the map down (its exposure) before sampling lights.");
     return 0;
   }
 
@@ -350,4 +400,5 @@ void vtkMedianCutLights::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "NumberOfLights: " << this->NumberOfLights << "\n";
   os << indent << "VarianceMinimization: " << (this->VarianceMinimization ? "On" : "Off") << "\n";
+  os << indent << "MemoryBudget: " << this->MemoryBudget << "\n";
 }

@@ -82,6 +82,17 @@ public:
    */
   static bool WriteCsv(vtkPolyData* lights, const std::string& fileName, std::string& error);
 
+  ///@{
+  /**
+   * Memory budget in bytes. The filter estimates its working memory before allocating it and
+   * fails with an error giving the size it needs when that is more than the budget (a
+   * std::bad_alloc that still happens becomes an error too, never an abort). 0 (default): the
+   * memory the process can get (its cgroup limit, else the physical memory).
+   */
+  vtkSetClampMacro(MemoryBudget, vtkTypeInt64, 0, VTK_TYPE_INT64_MAX);
+  vtkGetMacro(MemoryBudget, vtkTypeInt64);
+  ///@}
+
 protected:
   vtkMedianCutLights();
   ~vtkMedianCutLights() override = default;
@@ -94,8 +105,12 @@ protected:
 
   int NumberOfLights = 64;
   bool VarianceMinimization = false;
+  vtkTypeInt64 MemoryBudget = 0;
 
 private:
+  // RequestData without the std::bad_alloc guard.
+  int Execute(vtkInformationVector** inputVector, vtkInformationVector* outputVector);
+
   vtkMedianCutLights(const vtkMedianCutLights&) = delete;
   void operator=(const vtkMedianCutLights&) = delete;
 };

@@ -3,6 +3,7 @@
 #include "vtkWholeExtentRequest.h"
 
 #include "ConeMaps.h"
+#include "MemoryBudget.h"
 #include "vtkReliefTextureFilter.h"
 
 #include "vtkCommand.h"
@@ -20,6 +21,8 @@
 #include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
+#include <cstdint>
+#include <new>
 #include <string>
 #include <vector>
 
@@ -57,6 +60,22 @@ int vtkConeMapFilter::RequestUpdateExtent(
 int vtkConeMapFilter::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
+  try
+  {
+    return this->Execute(inputVector, outputVector);
+  }
+  catch (const std::bad_alloc&)
+  {
+    vtkErrorMacro("Out of memory (std::bad_alloc) for this input; set MemoryBudget to be told "
+                  "before allocating how much it needs, or use a smaller input.");
+    return 0;
+  }
+}
+
+//------------------------------------------------------------------------------
+int vtkConeMapFilter::Execute(
+  vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
   vtkImageData* input = vtkImageData::GetData(inputVector[0]);
   vtkImageData* output = vtkImageData::GetData(outputVector);
   if (!input || input->GetNumberOfPoints() == 0 || !input->GetPointData()->GetScalars())
@@ -65,6 +84,24 @@ int vtkConeMapFilter::RequestData(
     return 0;
   }
 
+  {
+    // Per texel: the relief bake (unless given), depths and cone ratios (float), the cell bounds
+    // (double) and tile pyramid of the cone search, and the RGBA float output.
+    const bool bakes = !(input->GetPointData()->GetScalars()->GetNumberOfComponents() == 4 &&
+      input->GetFieldData()->GetArray("MesolightDepthScale"));
+    int inputDims[3];
+    input->GetDimensions(inputDims);
+    const std::string memory = mesolight::CheckMemoryBudget(
+      "A " + std::to_string(inputDims[0]) + " x " + std::to_string(inputDims[1]) + " cone map",
+      static_cast<std::uint64_t>(input->GetNumberOfPoints()) *
+        ((bakes ? 16 : 0) + 4 + 4 + 8 + 16 + 16),
+      this->MemoryBudget);
+    if (!memory.empty())
+    {
+      vtkErrorMacro(<< memory << ".");
+      return 0;
+    }
+  }
   // Normals and depth exactly as the relief filter makes them (input conversion, NaN checks);
   // a relief texture given as input keeps its depth channel.
   vtkSmartPointer<vtkImageData> relief;
@@ -81,6 +118,7 @@ int vtkConeMapFilter::RequestData(
     bake->SetBorderMode(this->BorderMode);
     bake->SetInvertInput(this->InvertInput);
     bake->SetNormalizeRange(this->NormalizeRange);
+    bake->SetMemoryBudget(this->MemoryBudget);
     struct Forward : public vtkCommand
     {
       static Forward* New() { return new Forward; }
@@ -185,4 +223,5 @@ void vtkConeMapFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "BorderMode: " << this->BorderMode << "\n";
   os << indent << "InvertInput: " << (this->InvertInput ? "On" : "Off") << "\n";
   os << indent << "NormalizeRange: " << (this->NormalizeRange ? "On" : "Off") << "\n";
+  os << indent << "MemoryBudget: " << this->MemoryBudget << "\n";
 }

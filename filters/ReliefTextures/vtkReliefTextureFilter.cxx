@@ -2,6 +2,7 @@
 #include "vtkReliefTextureFilter.h"
 #include "vtkWholeExtentRequest.h"
 
+#include "MemoryBudget.h"
 #include "ScalarConversion.h"
 #include "SobelNormals.h"
 
@@ -21,6 +22,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <new>
+#include <string>
 #include <vector>
 
 vtkStandardNewMacro(vtkReliefTextureFilter);
@@ -95,6 +99,22 @@ int vtkReliefTextureFilter::RequestUpdateExtent(
 int vtkReliefTextureFilter::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
+  try
+  {
+    return this->Execute(inputVector, outputVector);
+  }
+  catch (const std::bad_alloc&)
+  {
+    vtkErrorMacro("Out of memory (std::bad_alloc) for this input; set MemoryBudget to be told "
+                  "before allocating how much it needs, or use a smaller input.");
+    return 0;
+  }
+}
+
+//------------------------------------------------------------------------------
+int vtkReliefTextureFilter::Execute(
+  vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
   vtkImageData* input = vtkImageData::GetData(inputVector[0], 0);
   vtkImageData* output = vtkImageData::GetData(outputVector, 0);
   if (!input)
@@ -144,6 +164,15 @@ int vtkReliefTextureFilter::RequestData(
   }
   const int w = dims[0];
   const int h = dims[1];
+  // Peak working memory per texel: unit values (double), depths (float), the RGBA float output.
+  const std::string memory = mesolight::CheckMemoryBudget(
+    "A " + std::to_string(w) + " x " + std::to_string(h) + " relief texture",
+    static_cast<std::uint64_t>(n) * (8 + 4 + 16), this->MemoryBudget);
+  if (!memory.empty())
+  {
+    vtkErrorMacro(<< memory << ".");
+    return 0;
+  }
 
   // 1. Stored values -> unit values.
   std::vector<double> value(static_cast<size_t>(n));
@@ -295,4 +324,5 @@ void vtkReliefTextureFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "BorderMode: " << (this->BorderMode == WRAP ? "Wrap" : "Clamp") << "\n";
   os << indent << "InvertInput: " << (this->InvertInput ? "On" : "Off") << "\n";
   os << indent << "NormalizeRange: " << (this->NormalizeRange ? "On" : "Off") << "\n";
+  os << indent << "MemoryBudget: " << this->MemoryBudget << "\n";
 }

@@ -81,6 +81,17 @@ public:
   vtkBooleanMacro(NormalizeRange, bool);
   ///@}
 
+  ///@{
+  /**
+   * Memory budget in bytes. The filter estimates its working memory before allocating it and
+   * fails with an error giving the size it needs when that is more than the budget (a
+   * std::bad_alloc that still happens becomes an error too, never an abort). 0 (default): the
+   * memory the process can get (its cgroup limit, else the physical memory).
+   */
+  vtkSetClampMacro(MemoryBudget, vtkTypeInt64, 0, VTK_TYPE_INT64_MAX);
+  vtkGetMacro(MemoryBudget, vtkTypeInt64);
+  ///@}
+
 protected:
   vtkReliefTextureFilter();
   ~vtkReliefTextureFilter() override = default;
@@ -94,8 +105,12 @@ protected:
   int BorderMode = CLAMP;
   bool InvertInput = false;
   bool NormalizeRange = false;
+  vtkTypeInt64 MemoryBudget = 0;
 
 private:
+  // RequestData without the std::bad_alloc guard.
+  int Execute(vtkInformationVector** inputVector, vtkInformationVector* outputVector);
+
   vtkReliefTextureFilter(const vtkReliefTextureFilter&) = delete;
   void operator=(const vtkReliefTextureFilter&) = delete;
 };

@@ -1,10 +1,14 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "Snapshot.h"
 
+#include <algorithm>
 #include <cerrno>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <dirent.h>
 #include <fcntl.h>
+#include <signal.h>
 #include <sys/stat.h>
 #include <type_traits>
 #include <unistd.h>
@@ -336,12 +340,68 @@ bool IsSnapshotFile(const std::string& path)
   return ok;
 }
 
+namespace
+{
+// A write killed between creating PATH.tmp-PID and renaming it leaves that file behind (as large
+// as the field). Remove such leftovers of processes that no longer run: only names of exactly
+// that form, and only files that are empty or start with the snapshot magic.
+void RemoveStaleTemporaries(const std::string& path)
+{
+  const std::size_t slash = path.find_last_of('/');
+  const std::string directory = slash == std::string::npos ? "." : path.substr(0, slash + 1);
+  const std::string prefix = (slash == std::string::npos ? path : path.substr(slash + 1)) + ".tmp-";
+  DIR* listing = ::opendir(directory.c_str());
+  if (!listing)
+  {
+    return;
+  }
+  while (const dirent* entry = ::readdir(listing))
+  {
+    const std::string name = entry->d_name;
+    if (name.size() <= prefix.size() || name.compare(0, prefix.size(), prefix) != 0 ||
+      name.find_first_not_of("0123456789", prefix.size()) != std::string::npos ||
+      name.size() - prefix.size() > 9)
+    {
+      continue;
+    }
+    const long pid = std::stol(name.substr(prefix.size()));
+    if (pid == static_cast<long>(::getpid()) ||
+      (pid > 0 && (::kill(static_cast<pid_t>(pid), 0) == 0 || errno != ESRCH)))
+    {
+      continue; // ours, or a process that may still be writing it
+    }
+    const std::string file = (slash == std::string::npos ? "" : directory) + name;
+    struct stat info;
+    if (::lstat(file.c_str(), &info) != 0 || !S_ISREG(info.st_mode))
+    {
+      continue;
+    }
+    bool ours = info.st_size == 0;
+    if (!ours)
+    {
+      if (std::FILE* in = std::fopen(file.c_str(), "rb"))
+      {
+        char magic[8] = {};
+        ours = std::fread(magic, 1, 8, in) == 8 && std::memcmp(magic, Magic, 8) == 0;
+        std::fclose(in);
+      }
+    }
+    if (ours)
+    {
+      std::remove(file.c_str());
+    }
+  }
+  ::closedir(listing);
+}
+} // namespace
+
 void WriteSnapshot(const LightField& field, const std::string& path)
 {
   if (path.empty())
   {
     throw SnapshotError("no snapshot file name given");
   }
+  RemoveStaleTemporaries(path);
   const std::string temporary = path + ".tmp-" + std::to_string(static_cast<long>(::getpid()));
   std::FILE* file = std::fopen(temporary.c_str(), "wb");
   if (!file)
@@ -569,6 +629,25 @@ std::unique_ptr<LightField> ReadSnapshot(const std::string& path, std::uint64_t 
   if (r.Hash.Value() != header.PayloadChecksum)
   {
     throw SnapshotError(Quoted(path) + " is corrupt: its checksum does not match its contents");
+  }
+  // A valid checksum says the bytes are what was written, not that they are numbers: a field
+  // with NaN or infinite radiance would render blank, or resume as "shot nan" and be saved.
+  const auto finite = [](const float* values, std::size_t count)
+  { return std::all_of(values, values + count, [](float x) { return std::isfinite(x); }); };
+  const auto finiteVectors = [&](const std::vector<glm::vec3>& values)
+  { return values.empty() || finite(&values[0].x, 3 * values.size()); };
+  bool ok = finiteVectors(field->TotalDiffuse) && finiteVectors(field->UnshotDiffuse) &&
+    finite(field->Capacity.data(), field->Capacity.size());
+  for (std::size_t k = 0; ok && k < field->SubfieldCount(); ++k)
+  {
+    const Subfield& f = field->GetSubfield(k);
+    ok = finite(f.Depth.data(), f.Depth.size()) && finiteVectors(f.Radiance) &&
+      finiteVectors(f.UnshotSpecular);
+  }
+  if (!ok)
+  {
+    throw SnapshotError(
+      Quoted(path) + " holds NaN or infinite values: it is not a usable light field");
   }
   return field;
 }

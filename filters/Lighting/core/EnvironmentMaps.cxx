@@ -2,6 +2,7 @@
 #include "EnvironmentMaps.h"
 
 #include "MathConstants.h"
+#include "ParallelFor.h"
 
 #include <algorithm>
 #include <cmath>
@@ -74,30 +75,35 @@ RgbImage Supersample(int width, int height, int samples, Sample sample)
   RgbImage out(std::max(0, width), std::max(0, height));
   samples = std::max(1, samples);
   const double inv = 1.0 / (samples * samples);
-  for (int j = 0; j < height; ++j)
-  {
-    for (int i = 0; i < width; ++i)
+  // Rows are independent (each pixel written once): the same image however they are split.
+  ParallelFor(0, static_cast<std::size_t>(std::max(0, height)), 1,
+    [&](std::size_t rowBegin, std::size_t rowEnd)
     {
-      double sum[3] = { 0.0, 0.0, 0.0 };
-      for (int sj = 0; sj < samples; ++sj)
+      for (int j = static_cast<int>(rowBegin); j < static_cast<int>(rowEnd); ++j)
       {
-        for (int si = 0; si < samples; ++si)
+        for (int i = 0; i < width; ++i)
         {
-          float c[3];
-          sample((i + (si + 0.5) / samples) / width, (j + (sj + 0.5) / samples) / height, c);
+          double sum[3] = { 0.0, 0.0, 0.0 };
+          for (int sj = 0; sj < samples; ++sj)
+          {
+            for (int si = 0; si < samples; ++si)
+            {
+              float c[3];
+              sample((i + (si + 0.5) / samples) / width, (j + (sj + 0.5) / samples) / height, c);
+              for (int k = 0; k < 3; ++k)
+              {
+                sum[k] += c[k];
+              }
+            }
+          }
+          float* p = out.Pixel(i, j);
           for (int k = 0; k < 3; ++k)
           {
-            sum[k] += c[k];
+            p[k] = static_cast<float>(sum[k] * inv);
           }
         }
       }
-      float* p = out.Pixel(i, j);
-      for (int k = 0; k < 3; ++k)
-      {
-        p[k] = static_cast<float>(sum[k] * inv);
-      }
-    }
-  }
+    });
   return out;
 }
 

@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <fstream>
 #include <iterator>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -150,3 +151,52 @@ TEST(VLFSnapshot, AFailedWriteLeavesThePreviousFile)
 }
 
 } // namespace
+
+// A write killed before its rename leaves FIELD.tmp-PID behind; the next write of FIELD removes
+// such leftovers of processes that are gone, and nothing else.
+TEST(VLFSnapshot, StaleTemporariesOfDeadWritersAreRemoved)
+{
+  const std::string path = TempPath("stale.vlf");
+  WriteSnapshot(*SmallCornell(1), path);
+  const std::vector<char> snapshot = ReadBytes(path);
+  // PIDs above Linux's largest pid_max (2^22) name no process.
+  const std::string stale = path + ".tmp-999999999";
+  const std::string staleEmpty = path + ".tmp-999999998";
+  const std::string foreign = path + ".tmp-999999997";           // not a snapshot: kept
+  const std::string other = TempPath("other.vlf.tmp-999999996"); // another field's: kept
+  const std::string alive = path + ".tmp-1";                     // init is running: kept
+  WriteBytes(stale, std::vector<char>(snapshot.begin(), snapshot.begin() + snapshot.size() / 2));
+  WriteBytes(staleEmpty, {});
+  WriteBytes(foreign, { 'h', 'e', 'l', 'l', 'o', ' ', 'w', 'o', 'r', 'l', 'd' });
+  WriteBytes(other, snapshot);
+  WriteBytes(alive, snapshot);
+  WriteSnapshot(*SmallCornell(1), path);
+  auto exists = [](const std::string& file) { return std::ifstream(file).good(); };
+  EXPECT_FALSE(exists(stale));
+  EXPECT_FALSE(exists(staleEmpty));
+  EXPECT_TRUE(exists(foreign));
+  EXPECT_TRUE(exists(other));
+  EXPECT_TRUE(exists(alive));
+  for (const std::string& file : { foreign, other, alive })
+  {
+    std::remove(file.c_str());
+  }
+}
+
+// A field of NaNs with a valid checksum is refused on reading, not rendered blank or resumed.
+TEST(VLFSnapshot, NonFiniteValuesAreRefused)
+{
+  const std::string path = TempPath("nan.vlf");
+  std::unique_ptr<LightField> field = SmallCornell(1);
+  ASSERT_FALSE(field->GetSubfield(0).Radiance.empty());
+  field->GetSubfield(0).Radiance[0].y = std::numeric_limits<float>::quiet_NaN();
+  WriteSnapshot(*field, path);
+  EXPECT_NE(ReadError(path).find("NaN or infinite"), std::string::npos) << ReadError(path);
+  field = SmallCornell(1);
+  field->TotalDiffuse[0].x = std::numeric_limits<float>::infinity();
+  WriteSnapshot(*field, path);
+  EXPECT_NE(ReadError(path).find("NaN or infinite"), std::string::npos) << ReadError(path);
+  WriteSnapshot(*SmallCornell(1), path);
+  EXPECT_EQ(ReadError(path), "");
+  std::remove(path.c_str());
+}

@@ -7,6 +7,7 @@
 
 #include "vtkCallbackCommand.h"
 #include "vtkCommand.h"
+#include "vtkDataArray.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
@@ -15,6 +16,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 
 namespace
 {
@@ -112,5 +114,52 @@ TEST(LightProbeToLatLong, BadInputIsAnError)
   convert->AddObserver(vtkCommand::ErrorEvent, silence);
   convert->Update();
   EXPECT_TRUE(reported);
+  EXPECT_EQ(convert->GetOutput()->GetNumberOfPoints(), 0);
+}
+
+// A 16-bit probe means [0, 1] as an 8-bit one does (it was read as 0..65535); the memory is
+// estimated before converting: over MemoryBudget the filter refuses with the size needed.
+TEST(LightProbeToLatLong, SixteenBitProbesAndMemoryBudget)
+{
+  auto probe = [](int type, double value)
+  {
+    auto image = vtkSmartPointer<vtkImageData>::New();
+    image->SetDimensions(8, 8, 1);
+    image->AllocateScalars(type, 3);
+    vtkDataArray* values = image->GetPointData()->GetScalars();
+    for (vtkIdType k = 0; k < values->GetNumberOfValues(); ++k)
+    {
+      values->SetComponent(k / 3, static_cast<int>(k % 3), value);
+    }
+    return image;
+  };
+  double results[2] = { 0.0, 0.0 };
+  const int types[2] = { VTK_UNSIGNED_CHAR, VTK_UNSIGNED_SHORT };
+  const double half[2] = { 255.0, 65535.0 };
+  for (int t = 0; t < 2; ++t)
+  {
+    vtkNew<vtkLightProbeToLatLong> convert;
+    convert->SetInputData(probe(types[t], half[t]));
+    convert->SetOutputWidth(16);
+    convert->Update();
+    ASSERT_EQ(convert->GetOutput()->GetNumberOfPoints(), 16 * 8);
+    results[t] = convert->GetOutput()->GetPointData()->GetScalars()->GetComponent(0, 0);
+  }
+  EXPECT_NEAR(results[0], 1.0, 1e-6);
+  EXPECT_NEAR(results[1], 1.0, 1e-6);
+
+  vtkNew<vtkLightProbeToLatLong> convert;
+  convert->SetInputData(probe(VTK_UNSIGNED_CHAR, 255.0));
+  convert->SetOutputWidth(4096); // 4096 x 2048: 192 MiB with its copy
+  convert->SetMemoryBudget(64 << 20);
+  std::string errors;
+  vtkNew<vtkCallbackCommand> capture;
+  capture->SetCallback([](vtkObject*, unsigned long, void* clientData, void* callData)
+    { *static_cast<std::string*>(clientData) += static_cast<const char*>(callData); });
+  capture->SetClientData(&errors);
+  convert->AddObserver(vtkCommand::ErrorEvent, capture);
+  convert->Update();
+  EXPECT_NE(errors.find("4096 x 2048 lat-long map needs about 192 MiB"), std::string::npos)
+    << errors;
   EXPECT_EQ(convert->GetOutput()->GetNumberOfPoints(), 0);
 }

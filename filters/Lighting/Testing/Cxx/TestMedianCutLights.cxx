@@ -290,3 +290,51 @@ TEST(ProceduralEnvironmentSource, SunAtItsDirection)
   EXPECT_TRUE(bj == 127 || bj == 128) << bj;
   EXPECT_GT(top, 5 * bottom); // sky (blue) on top in VTK row order, ground at row 0
 }
+
+// Above MemoryBudget the median cut is refused before anything is allocated: 256 x 128 pixels at
+// 28 bytes (RGB floats, one summed-area table, energies) need 896 KiB.
+TEST(MedianCutLights, MemoryBudgetRefusesBeforeAllocating)
+{
+  vtkNew<vtkProceduralEnvironmentSource> sky;
+  sky->SetResolution(256, 128);
+  vtkNew<vtkMedianCutLights> lights;
+  lights->SetInputConnection(sky->GetOutputPort());
+  lights->SetNumberOfLights(8);
+  lights->SetMemoryBudget(512 * 1024);
+  vtkNew<MessageCapture> capture;
+  capture->Watch(lights);
+  lights->Update();
+  EXPECT_TRUE(capture->HasError("256 x 128 environment needs about 896 KiB"))
+    << capture->AllErrors();
+  EXPECT_EQ(lights->GetOutput()->GetNumberOfPoints(), 0);
+  lights->SetMemoryBudget(1024 * 1024);
+  capture->Errors.clear();
+  lights->Update();
+  EXPECT_TRUE(capture->Errors.empty()) << capture->AllErrors();
+  EXPECT_EQ(lights->GetOutput()->GetNumberOfPoints(), 8);
+}
+
+// Finite values near FLT_MAX overflow single-precision shading (a black wall): refused with an
+// error; a bright but summable map still gives lights.
+TEST(MedianCutLights, EnvironmentsTooBrightToShadeAreRefused)
+{
+  for (const float value : { 3e38f, 1e30f })
+  {
+    vtkNew<vtkMedianCutLights> lights;
+    vtkNew<MessageCapture> capture;
+    capture->Watch(lights);
+    lights->SetInputData(Image(16, 8, value));
+    lights->SetNumberOfLights(4);
+    lights->Update();
+    EXPECT_TRUE(capture->HasError("single-precision shading")) << value << capture->AllErrors();
+    EXPECT_EQ(lights->GetOutput()->GetNumberOfPoints(), 0);
+  }
+  vtkNew<vtkMedianCutLights> lights;
+  vtkNew<MessageCapture> capture;
+  capture->Watch(lights);
+  lights->SetInputData(Image(16, 8, 1e20f));
+  lights->SetNumberOfLights(4);
+  lights->Update();
+  EXPECT_TRUE(capture->Errors.empty()) << capture->AllErrors();
+  EXPECT_EQ(lights->GetOutput()->GetNumberOfPoints(), 4);
+}

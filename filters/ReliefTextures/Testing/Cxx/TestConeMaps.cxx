@@ -18,6 +18,8 @@
 #include "vtkPointData.h"
 #include "vtkStringArray.h"
 
+#include "MesolightTestUtilities.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -746,4 +748,25 @@ TEST(vtkConeMapFilter, PacksTheCoreConesReportsProgressAndAborts)
   filter->Update();
   EXPECT_LT(progress.back(), 1.0);
   EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), 0);
+}
+
+// Above MemoryBudget the cone map is refused before anything is allocated, with the size needed.
+TEST(vtkConeMapFilter, MemoryBudgetRefusesBeforeAllocating)
+{
+  vtkNew<vtkProceduralReliefSource> source;
+  source->SetResolution(64, 64);
+  vtkNew<vtkConeMapFilter> filter;
+  filter->SetInputConnection(source->GetOutputPort(0));
+  filter->SetMemoryBudget(4096);
+  vtkNew<mesolight_test::MessageCapture> capture;
+  capture->Watch(filter);
+  filter->Update();
+  EXPECT_TRUE(capture->HasError("64 x 64 cone map needs about")) << capture->AllErrors();
+  EXPECT_TRUE(capture->HasError("budget of 4 KiB")) << capture->AllErrors();
+  EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), 0);
+  filter->SetMemoryBudget(0); // the machine's memory: plenty
+  capture->Errors.clear();
+  filter->Update();
+  EXPECT_TRUE(capture->Errors.empty()) << capture->AllErrors();
+  EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), 64 * 64);
 }

@@ -215,3 +215,24 @@ TEST(vtkReliefTextureFilter, DegenerateSizesWarnAndAreFlat)
   // Slope 0.1 per texel, W = 1, DepthScale 1: n = normalize(0, 0.1, 1).
   EXPECT_NEAR(2 * Relief(filter)->GetComponent(1, 1) - 1, 0.1 / std::sqrt(1.01), 1e-6);
 }
+
+// The working memory is estimated before allocating: above MemoryBudget the filter refuses with
+// the size it needs (28 bytes per texel: 64 x 32 texels need 56 KiB) instead of allocating.
+TEST(vtkReliefTextureFilter, MemoryBudgetRefusesBeforeAllocating)
+{
+  vtkNew<vtkReliefTextureFilter> filter;
+  vtkNew<MessageCapture> capture;
+  capture->Watch(filter);
+  filter->SetInputData(MakeImage<vtkFloatArray>(64, 32, 1, std::vector<float>(64 * 32, 0.5f)));
+  filter->SetMemoryBudget(50 * 1024);
+  filter->Update();
+  EXPECT_TRUE(capture->HasError("64 x 32 relief texture needs about 56 KiB"))
+    << capture->AllErrors();
+  EXPECT_TRUE(capture->HasError("budget of 50 KiB")) << capture->AllErrors();
+  EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), 0);
+  filter->SetMemoryBudget(64 * 1024);
+  capture->Errors.clear();
+  filter->Update();
+  EXPECT_TRUE(capture->Errors.empty()) << capture->AllErrors();
+  EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), 64 * 32);
+}

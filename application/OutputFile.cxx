@@ -1,0 +1,71 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "OutputFile.h"
+
+#include <sys/stat.h>
+#include <unistd.h>
+
+namespace mesolight
+{
+
+bool SameFile(const std::string& a, const std::string& b)
+{
+  struct stat sa, sb;
+  if (stat(a.c_str(), &sa) != 0 || stat(b.c_str(), &sb) != 0)
+  {
+    return false;
+  }
+  return sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
+}
+
+std::string CheckOutputFile(const std::string& out, const std::vector<std::string>& inputs)
+{
+  if (out.empty())
+  {
+    return "the output file name is empty";
+  }
+  for (const std::string& in : inputs)
+  {
+    if (!in.empty() && (in == out || SameFile(in, out)))
+    {
+      return "'" + out + "' would overwrite '" + in + "', which this command reads or writes";
+    }
+  }
+  // A dangling symbolic link would be written through to its target: refuse to guess.
+  struct stat link;
+  if (lstat(out.c_str(), &link) == 0 && S_ISLNK(link.st_mode))
+  {
+    struct stat target;
+    if (stat(out.c_str(), &target) != 0)
+    {
+      return "'" + out + "' is a dangling symbolic link";
+    }
+  }
+  struct stat existing;
+  if (stat(out.c_str(), &existing) == 0)
+  {
+    if (!S_ISREG(existing.st_mode))
+    {
+      return "'" + out + "' exists and is not a regular file";
+    }
+    if (access(out.c_str(), W_OK) != 0)
+    {
+      return "'" + out + "' is not writable";
+    }
+    return "";
+  }
+  const size_t slash = out.find_last_of('/');
+  const std::string directory =
+    slash == std::string::npos ? "." : (slash == 0 ? "/" : out.substr(0, slash));
+  struct stat dir;
+  if (stat(directory.c_str(), &dir) != 0 || !S_ISDIR(dir.st_mode))
+  {
+    return "the directory '" + directory + "' of '" + out + "' does not exist";
+  }
+  if (access(directory.c_str(), W_OK | X_OK) != 0)
+  {
+    return "the directory '" + directory + "' of '" + out + "' is not writable";
+  }
+  return "";
+}
+
+} // namespace mesolight

@@ -1,0 +1,26 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The one check every `mesolight` command makes on a file it is about to write, before any work:
+// a user's input is never overwritten (not by the same name, nor through a symbolic or hard
+// link), and a missing or read-only directory is reported up front instead of after a long run.
+#ifndef mesolight_OutputFile_h
+#define mesolight_OutputFile_h
+
+#include <string>
+#include <vector>
+
+namespace mesolight
+{
+
+/** Whether two paths name the same existing file (device and inode, so through links too). */
+bool SameFile(const std::string& a, const std::string& b);
+
+/**
+ * Returns "" when `out` may be written, else why not (one line naming the file): `out` is empty,
+ * equals one of `inputs` (empty entries are ignored; pass the command's other outputs too), its
+ * directory is missing or not writable, or it exists and is not a writable regular file.
+ */
+std::string CheckOutputFile(const std::string& out, const std::vector<std::string>& inputs);
+
+} // namespace mesolight
+
+#endif
