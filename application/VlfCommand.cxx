@@ -19,6 +19,7 @@
 #include "PathTracer.h"
 #include "Propagation.h"
 #include "Snapshot.h"
+#include "TextureComparison.h"
 #include "TriangleScene.h"
 
 #include <vtkImageData.h>
@@ -99,6 +100,9 @@ int Propagate(const std::vector<std::string>& args)
   cl.AddValue("--memory-budget", "GIB", "refuse fields needing more memory than this", "4");
   cl.AddFlag("--resume", "continue the propagation stored in FIELD");
   cl.AddFlag("--force", "replace an existing light field FIELD (never any other file)");
+  cl.AddFlag("--filter",
+    "write the diffuse totals smoothed by an edge-keeping (bilateral) "
+    "filter against mottling; not with --resume");
   std::string error;
   int exitCode = 0;
   if (!cl.ParseArguments(args, exitCode))
@@ -140,6 +144,12 @@ int Propagate(const std::vector<std::string>& args)
   if (resume && cl.Has("--force"))
   {
     return cl.UsageError("--resume and --force exclude each other");
+  }
+  // A filtered snapshot's totals are no longer sums of what was shot, so they cannot be continued.
+  const bool filter = cl.Has("--filter");
+  if (resume && filter)
+  {
+    return cl.UsageError("--resume and --filter exclude each other");
   }
   if (vlf::FileExists(out) && !vlf::IsSnapshotFile(out))
   {
@@ -212,7 +222,18 @@ int Propagate(const std::vector<std::string>& args)
     vlf::Propagate(*field, iterations, options,
       [&](const vlf::LightField& f)
       {
-        vlf::WriteSnapshot(f, out);
+        if (filter)
+        {
+          // The snapshot gets the filtered totals; the propagation goes on with the raw ones.
+          const std::vector<glm::vec3> raw = f.TotalDiffuse;
+          vlf::FilterTotalDiffuse(*field, vlf::TextureFilterSettings());
+          vlf::WriteSnapshot(f, out);
+          field->TotalDiffuse = raw;
+        }
+        else
+        {
+          vlf::WriteSnapshot(f, out);
+        }
         const vlf::LightField::IterationEnergy& e = f.EnergyLog.back();
         std::printf(
           "iteration %d: %.2f s, shot %.4g, escaped %.4g, absorbed %.4g, left to shoot %.4g "
@@ -410,6 +431,105 @@ vlf::ReferenceRadiance CornellReference(const TriangleScene& world)
   };
 }
 
+// Path-traced reference at every texel centre of the Cornell box field, `samples` paths each; the
+// seed depends on the texel and `seed`, so two seeds give two independent references.
+std::vector<glm::vec3> CornellTexelReference(const TriangleScene& world,
+  const vlf::LightField& field, const std::vector<vlf::TexelPoint>& texels, int samples,
+  std::uint64_t seed)
+{
+  EmbreeScene embree(world);
+  PathTracer tracer(embree);
+  std::vector<glm::vec3> out(texels.size());
+  ParallelFor(0, texels.size(), 16,
+    [&](std::size_t begin, std::size_t end)
+    {
+      for (std::size_t i = begin; i < end; ++i)
+      {
+        out[i] = tracer.DiffuseRadianceLeaving(texels[i].Triangle,
+          vlf::ToWorld(field, texels[i].Unit), samples, seed * 0x9e3779b97f4a7c15ull + i);
+      }
+    });
+  return out;
+}
+
+// bench vlf --texels: per-texel error of the Cornell box's total diffuse textures against the
+// path tracer, filter off and on, with propagation time.
+int TexelSweep(const std::vector<int>& directionList, const std::vector<int>& rayList,
+  int iterations, int samples, const vlf::TextureFilterSettings& filter, const std::string& csvPath)
+{
+  std::ostringstream csv;
+  csv
+    << "directions,rays,filter,texels,propagate_s,filter_s,mean_error,p95_error,"
+       "contrast_mean_error,contrast_p95_error,reference_noise_p95,reference_noise_contrast_p95\n";
+  std::printf("%10s %5s %6s %7s %11s %8s %8s %8s %9s %9s %10s %10s\n", "directions", "rays",
+    "filter", "texels", "propagate s", "filter s", "mean", "p95", "contr mean", "contr p95",
+    "ref p95", "ref contr");
+  const TriangleScene cornell = MakeCornellBox();
+  for (const int directions : directionList)
+  {
+    for (const int rays : rayList)
+    {
+      vlf::LightFieldSettings settings;
+      settings.Directions = static_cast<std::size_t>(directions);
+      settings.RaysPerSide = rays;
+      settings.TilesPerSide = std::max(1, rays / 8);
+      std::unique_ptr<vlf::LightField> field = vlf::LightField::Build(cornell, settings);
+      double propagate = 0.0;
+      for (int it = 0; it < iterations; ++it)
+      {
+        propagate += vlf::PropagateIteration(*field).Seconds;
+      }
+      const std::vector<vlf::TexelPoint> texels = vlf::SurfaceTexels(*field);
+      const std::vector<glm::vec3> reference =
+        CornellTexelReference(cornell, *field, texels, samples, 1);
+      // The reference's own noise: a second, independent reference against the first (the
+      // difference of two estimates, so sqrt(2) times one estimate's noise).
+      const std::vector<glm::vec3> second =
+        CornellTexelReference(cornell, *field, texels, samples, 2);
+      const vlf::TexelError noise = vlf::CompareTexels(*field, texels, second, reference);
+      for (int on = 0; on < 2; ++on)
+      {
+        double filterSeconds = 0.0;
+        if (on)
+        {
+          const Clock::time_point start = Clock::now();
+          vlf::FilterTotalDiffuse(*field, filter);
+          filterSeconds = SecondsSince(start);
+        }
+        const vlf::TexelError e =
+          vlf::CompareTexels(*field, texels, vlf::FieldAtTexels(*field, texels), reference);
+        std::printf(
+          "%10d %5d %6s %7zu %11.2f %8.3f %7.2f%% %7.2f%% %8.2f%% %8.2f%% %9.2f%% %9.2f%%\n",
+          directions, rays, on ? "on" : "off", e.Texels, propagate, filterSeconds, 100.0 * e.Mean,
+          100.0 * e.P95, 100.0 * e.ContrastMean, 100.0 * e.ContrastP95, 100.0 * noise.P95,
+          100.0 * noise.ContrastP95);
+        std::fflush(stdout);
+        csv << directions << ',' << rays << ',' << (on ? "on" : "off") << ',' << e.Texels << ','
+            << propagate << ',' << filterSeconds << ',' << e.Mean << ',' << e.P95 << ','
+            << e.ContrastMean << ',' << e.ContrastP95 << ',' << noise.P95 << ','
+            << noise.ContrastP95 << '\n';
+      }
+    }
+  }
+  if (!csvPath.empty())
+  {
+    if (vlf::FileExists(csvPath))
+    {
+      std::cerr << "mesolight bench vlf: '" << csvPath << "' exists; it is left alone\n";
+      return 1;
+    }
+    std::ofstream file(csvPath);
+    file << csv.str();
+    if (!file)
+    {
+      std::cerr << "mesolight bench vlf: could not write " << csvPath << "\n";
+      return 1;
+    }
+    std::cout << "wrote " << csvPath << "\n";
+  }
+  return 0;
+}
+
 } // namespace
 
 int RunVlfBenchmark(const std::vector<std::string>& args)
@@ -425,6 +545,12 @@ int RunVlfBenchmark(const std::vector<std::string>& args)
   cl.AddValue("--memory-budget", "GIB", "skip configurations needing more", "6");
   cl.AddValue("--csv", "FILE", "write the rows as CSV");
   cl.AddValue("--plot", "FILE.png", "plot time vs rays (and FILE-error.png: error vs rays)");
+  cl.AddFlag("--texels",
+    "instead: per-texel error of the Cornell box's diffuse textures vs the "
+    "path tracer, texture filter off and on");
+  cl.AddValue("--samples", "N", "--texels: path-traced samples per texel", "1024");
+  cl.AddValue("--filter-radius", "R", "--texels: filter window (2R+1)^2 texels", "2");
+  cl.AddValue("--filter-range", "S", "--texels: filter range sigma (relative difference)", "0.25");
   std::string error;
   int exitCode = 0;
   if (!cl.ParseArguments(args, exitCode))
@@ -440,6 +566,28 @@ int RunVlfBenchmark(const std::vector<std::string>& args)
     !cl.GetDouble("--memory-budget", 1e-3, 1e6, budget, error))
   {
     return cl.UsageError(error);
+  }
+  if (cl.Has("--texels"))
+  {
+    int samples = 0;
+    vlf::TextureFilterSettings filter;
+    double range = 0.0;
+    if (!cl.GetInt("--samples", 1, 1 << 20, samples, error) ||
+      !cl.GetInt("--filter-radius", 1, 64, filter.Radius, error) ||
+      !cl.GetDouble("--filter-range", 0.0, 1e6, range, error))
+    {
+      return cl.UsageError(error);
+    }
+    filter.RangeSigma = static_cast<float>(range);
+    try
+    {
+      return TexelSweep(directionList, rayList, iterations, samples, filter, cl.Get("--csv"));
+    }
+    catch (const std::exception& ex)
+    {
+      std::cerr << "mesolight bench vlf: " << ex.what() << "\n";
+      return 1;
+    }
   }
   ResetPeakResident();
   std::printf("process resident memory before any light field: %s (VTK, Embree, TBB loaded)\n",
