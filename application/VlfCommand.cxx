@@ -46,6 +46,16 @@ namespace mesolight
 {
 namespace
 {
+// The field of one sweep configuration: `directions` x `rays`^2 lines in (rays / 8)^2 tiles.
+vlf::LightFieldSettings SweepSettings(int directions, int rays)
+{
+  vlf::LightFieldSettings settings;
+  settings.Directions = static_cast<std::size_t>(directions);
+  settings.RaysPerSide = rays;
+  settings.TilesPerSide = std::max(1, rays / 8);
+  return settings;
+}
+
 namespace vlf = mesolight::vlf;
 using Clock = std::chrono::steady_clock;
 
@@ -469,10 +479,7 @@ int TexelSweep(const std::vector<int>& directionList, const std::vector<int>& ra
   {
     for (const int rays : rayList)
     {
-      vlf::LightFieldSettings settings;
-      settings.Directions = static_cast<std::size_t>(directions);
-      settings.RaysPerSide = rays;
-      settings.TilesPerSide = std::max(1, rays / 8);
+      vlf::LightFieldSettings settings = SweepSettings(directions, rays);
       std::unique_ptr<vlf::LightField> field = vlf::LightField::Build(cornell, settings);
       double propagate = 0.0;
       for (int it = 0; it < iterations; ++it)
@@ -604,10 +611,7 @@ int RunVlfBenchmark(const std::vector<std::string>& args)
   {
     for (const int rays : rayList)
     {
-      vlf::LightFieldSettings settings;
-      settings.Directions = static_cast<std::size_t>(directions);
-      settings.RaysPerSide = rays;
-      settings.TilesPerSide = std::max(1, rays / 8);
+      vlf::LightFieldSettings settings = SweepSettings(directions, rays);
       settings.MemoryBudget = static_cast<std::uint64_t>(budget * 1073741824.0);
       try
       {

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkMedianCutLights.h"
+#include "vtkOutOfMemory.h"
 #include "vtkWholeExtentRequest.h"
 
 #include "EnvironmentMaps.h"
@@ -121,16 +122,8 @@ int vtkMedianCutLights::RequestUpdateExtent(
 int vtkMedianCutLights::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  try
-  {
-    return this->Execute(inputVector, outputVector);
-  }
-  catch (const std::bad_alloc&)
-  {
-    vtkErrorMacro("Out of memory (std::bad_alloc) for this input; set MemoryBudget to be told "
-                  "before allocating how much it needs, or use a smaller input.");
-    return 0;
-  }
+  return mesolight::ExecuteReportingOutOfMemory(
+    this, [&]() { return this->Execute(inputVector, outputVector); });
 }
 
 //------------------------------------------------------------------------------

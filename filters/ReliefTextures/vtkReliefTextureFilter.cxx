@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkReliefTextureFilter.h"
+#include "vtkOutOfMemory.h"
 #include "vtkWholeExtentRequest.h"
 
 #include "MemoryBudget.h"
@@ -99,16 +100,8 @@ int vtkReliefTextureFilter::RequestUpdateExtent(
 int vtkReliefTextureFilter::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  try
-  {
-    return this->Execute(inputVector, outputVector);
-  }
-  catch (const std::bad_alloc&)
-  {
-    vtkErrorMacro("Out of memory (std::bad_alloc) for this input; set MemoryBudget to be told "
-                  "before allocating how much it needs, or use a smaller input.");
-    return 0;
-  }
+  return mesolight::ExecuteReportingOutOfMemory(
+    this, [&]() { return this->Execute(inputVector, outputVector); });
 }
 
 //------------------------------------------------------------------------------

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkCompositeLightFieldMapper.h"
 
-#include "vtkLightFieldFS.h"
+#include "vtkLightFieldMapper.h"
 #include "vtkVirtualLightField.h"
 
 #include "vtkCompositeDataIterator.h"
@@ -99,23 +99,8 @@ protected:
       this->Superclass::ReplaceShaderValues(shaders, ren, actor);
       return;
     }
-    // The same edits as vtkLightFieldMapper: VTK's lighting gives way to the field's radiance.
-    std::string vs = shaders[vtkShader::Vertex]->GetSource();
-    std::string fs = shaders[vtkShader::Fragment]->GetSource();
-    vtkShaderProgram::Substitute(
-      vs, "//VTK::Normal::Dec", "in vec2 mlAtlasTC;\nout vec2 mlAtlasTCVC;\n//VTK::Normal::Dec");
-    vtkShaderProgram::Substitute(
-      vs, "//VTK::Normal::Impl", "mlAtlasTCVC = mlAtlasTC;\n  //VTK::Normal::Impl");
-    vtkShaderProgram::Substitute(fs, "//VTK::CustomUniforms::Dec",
-      std::string("//VTK::CustomUniforms::Dec\n") + vtkLightFieldFS);
-    vtkShaderProgram::Substitute(fs, "//VTK::Light::Impl", "//MESOLIGHT::LightField::Impl");
-    shaders[vtkShader::Vertex]->SetSource(vs);
-    shaders[vtkShader::Fragment]->SetSource(fs);
-    this->Superclass::ReplaceShaderValues(shaders, ren, actor);
-    fs = shaders[vtkShader::Fragment]->GetSource();
-    vtkShaderProgram::Substitute(fs, "//MESOLIGHT::LightField::Impl",
-      "gl_FragData[0] = vec4(mlDisplay(mlRadiance()), opacity);");
-    shaders[vtkShader::Fragment]->SetSource(fs);
+    vtkLightFieldMapper::ReplaceRadianceShaderValues(
+      shaders, [&]() { this->Superclass::ReplaceShaderValues(shaders, ren, actor); });
   }
 
   void SetMapperShaderParameters(
@@ -126,17 +111,12 @@ protected:
     {
       return;
     }
-    vtkShaderProgram* program = cellBO.Program;
-    const int unit = this->Owner()->AtlasTexture->GetTextureUnit();
-    const int none[2] = { 0, 0 };
-    program->SetUniformi("mlAtlas", unit);
-    program->SetUniformi("mlScreen", unit); // no screen-space pass: never read (size 0)
-    program->SetUniform2i("mlScreenOrigin", none);
-    program->SetUniform2i("mlScreenSize", none);
-    program->SetUniformf("mlExposure", static_cast<float>(this->Owner()->GetEffectiveExposure()));
-    program->SetUniformi("mlToneMap", this->Owner()->GetToneMap());
-    program->SetUniformi("mlAllScreen", 0);
-    program->SetUniformi("mlOverwrite", 0);
+    vtkLightFieldMapper::RadianceUniforms uniforms;
+    uniforms.AtlasUnit = this->Owner()->AtlasTexture->GetTextureUnit();
+    uniforms.ScreenUnit = uniforms.AtlasUnit; // no screen-space pass: never read (size 0)
+    uniforms.Exposure = static_cast<float>(this->Owner()->GetEffectiveExposure());
+    uniforms.ToneMap = this->Owner()->GetToneMap();
+    vtkLightFieldMapper::SetRadianceUniforms(cellBO.Program, uniforms);
   }
 
   void ReleaseGraphicsResources(vtkWindow* window) override

@@ -169,6 +169,35 @@ void vtkLightFieldMapper::ReplaceShaderValues(
     this->Superclass::ReplaceShaderValues(shaders, ren, act);
     return;
   }
+  ReplaceRadianceShaderValues(
+    shaders, [&]() { this->Superclass::ReplaceShaderValues(shaders, ren, act); });
+}
+
+//------------------------------------------------------------------------------
+void vtkLightFieldMapper::SetMapperShaderParameters(
+  vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act)
+{
+  this->Superclass::SetMapperShaderParameters(cellBO, ren, act);
+  if (!this->Radiance || !cellBO.Program)
+  {
+    return;
+  }
+  RadianceUniforms uniforms;
+  uniforms.AtlasUnit = this->AtlasTexture->GetTextureUnit();
+  uniforms.ScreenUnit = this->ScreenTexture->GetTextureUnit();
+  std::copy(this->ScreenOrigin, this->ScreenOrigin + 2, uniforms.ScreenOrigin);
+  std::copy(this->ScreenSize, this->ScreenSize + 2, uniforms.ScreenSize);
+  uniforms.Exposure = this->Exposure;
+  uniforms.ToneMap = this->ToneMap;
+  uniforms.AllScreen = this->AllScreen;
+  uniforms.Overwrite = this->Overwrite;
+  SetRadianceUniforms(cellBO.Program, uniforms);
+}
+
+//------------------------------------------------------------------------------
+void vtkLightFieldMapper::ReplaceRadianceShaderValues(
+  std::map<vtkShader::Type, vtkShader*>& shaders, const std::function<void()>& superclass)
+{
   std::string vs = shaders[vtkShader::Vertex]->GetSource();
   std::string fs = shaders[vtkShader::Fragment]->GetSource();
   vtkShaderProgram::Substitute(
@@ -181,7 +210,7 @@ void vtkLightFieldMapper::ReplaceShaderValues(
   vtkShaderProgram::Substitute(fs, "//VTK::Light::Impl", "//MESOLIGHT::LightField::Impl");
   shaders[vtkShader::Vertex]->SetSource(vs);
   shaders[vtkShader::Fragment]->SetSource(fs);
-  this->Superclass::ReplaceShaderValues(shaders, ren, act);
+  superclass();
   fs = shaders[vtkShader::Fragment]->GetSource();
   vtkShaderProgram::Substitute(fs, "//MESOLIGHT::LightField::Impl",
     "gl_FragData[0] = vec4(mlDisplay(mlRadiance()), opacity);");
@@ -189,23 +218,17 @@ void vtkLightFieldMapper::ReplaceShaderValues(
 }
 
 //------------------------------------------------------------------------------
-void vtkLightFieldMapper::SetMapperShaderParameters(
-  vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act)
+void vtkLightFieldMapper::SetRadianceUniforms(
+  vtkShaderProgram* program, const RadianceUniforms& uniforms)
 {
-  this->Superclass::SetMapperShaderParameters(cellBO, ren, act);
-  if (!this->Radiance || !cellBO.Program)
-  {
-    return;
-  }
-  vtkShaderProgram* program = cellBO.Program;
-  program->SetUniformi("mlAtlas", this->AtlasTexture->GetTextureUnit());
-  program->SetUniformi("mlScreen", this->ScreenTexture->GetTextureUnit());
-  program->SetUniform2i("mlScreenOrigin", this->ScreenOrigin);
-  program->SetUniform2i("mlScreenSize", this->ScreenSize);
-  program->SetUniformf("mlExposure", this->Exposure);
-  program->SetUniformi("mlToneMap", this->ToneMap);
-  program->SetUniformi("mlAllScreen", this->AllScreen ? 1 : 0);
-  program->SetUniformi("mlOverwrite", this->Overwrite ? 1 : 0);
+  program->SetUniformi("mlAtlas", uniforms.AtlasUnit);
+  program->SetUniformi("mlScreen", uniforms.ScreenUnit);
+  program->SetUniform2i("mlScreenOrigin", uniforms.ScreenOrigin);
+  program->SetUniform2i("mlScreenSize", uniforms.ScreenSize);
+  program->SetUniformf("mlExposure", uniforms.Exposure);
+  program->SetUniformi("mlToneMap", uniforms.ToneMap);
+  program->SetUniformi("mlAllScreen", uniforms.AllScreen ? 1 : 0);
+  program->SetUniformi("mlOverwrite", uniforms.Overwrite ? 1 : 0);
 }
 
 //------------------------------------------------------------------------------

@@ -17,8 +17,10 @@
 #include "vtkOpenGLPolyDataMapper.h"
 #include "vtkSmartPointer.h" // For vtkSmartPointer
 
-#include <map> // For std::map
+#include <functional> // For std::function
+#include <map>        // For std::map
 
+class vtkShaderProgram;
 class vtkTextureObject;
 
 class MESOLIGHTLIGHTFIELDACTOR_EXPORT vtkLightFieldMapper : public vtkOpenGLPolyDataMapper
@@ -32,6 +34,28 @@ public:
   static const char* GetAtlasCoordinatesName() { return "mlAtlasTC"; }
 
   void ReleaseGraphicsResources(vtkWindow* window) override;
+
+  ///@{
+  /**
+   * The radiance shading written once for this mapper and vtkCompositeLightFieldMapper's helper:
+   * the shader edits around the superclass' own (`superclass` fills VTK's tags; VTK's lighting
+   * gives way to the field's radiance), and the uniforms of one draw.
+   */
+  static void ReplaceRadianceShaderValues(
+    std::map<vtkShader::Type, vtkShader*>& shaders, const std::function<void()>& superclass);
+  struct RadianceUniforms
+  {
+    int AtlasUnit = 0;
+    int ScreenUnit = 0;
+    int ScreenOrigin[2] = { 0, 0 };
+    int ScreenSize[2] = { 0, 0 }; // 0 x 0: no screen-space values
+    float Exposure = 1.0f;
+    int ToneMap = 0;
+    bool AllScreen = false;
+    bool Overwrite = false;
+  };
+  static void SetRadianceUniforms(vtkShaderProgram* program, const RadianceUniforms& uniforms);
+  ///@}
 
 protected:
   vtkLightFieldMapper();

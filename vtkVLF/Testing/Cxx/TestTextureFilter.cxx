@@ -30,7 +30,7 @@ std::vector<glm::vec3> PathTraced(const TriangleScene& world, const LightField& 
   return ReferenceAtTexels(field, texels,
     [&](std::uint32_t triangle, const glm::vec3& point)
     {
-      // The seed from the point itself, so the reference needs no per-texel state.
+      // Random numbers keyed by the point itself, so the reference needs no per-texel state.
       const std::uint64_t key = (static_cast<std::uint64_t>(triangle) << 40) ^
         static_cast<std::uint64_t>(std::llround(point.x * 4096.0f + 1e6)) * 1000003ull ^
         static_cast<std::uint64_t>(std::llround(point.y * 4096.0f + 1e6)) * 998244353ull ^
