@@ -225,7 +225,7 @@ int Propagate(const std::vector<std::string>& args)
       const Clock::time_point start = Clock::now();
       field = vlf::LightField::Build(scene, settings, PrintedProgress("tracing subfields"));
       std::cout << "traced in " << SecondsSince(start) << " s, "
-                << vlf::FormatBytes(field->AllocatedBytes()) << " allocated\n";
+                << FormatBytes(field->AllocatedBytes()) << " allocated\n";
     }
     vlf::PropagationOptions options;
     options.Progress = PrintedProgress("propagating");
@@ -598,7 +598,7 @@ int RunVlfBenchmark(const std::vector<std::string>& args)
   }
   ResetPeakResident();
   std::printf("process resident memory before any light field: %s (VTK, Embree, TBB loaded)\n",
-    vlf::FormatBytes(PeakResidentBytes()).c_str());
+    FormatBytes(PeakResidentBytes()).c_str());
   std::ostringstream csv;
   csv
     << "directions,rays,tiles,iteration,build_s,propagate_s,total_s,estimate_bytes,allocated_bytes,"
@@ -706,8 +706,8 @@ int RunVlfBenchmark(const std::vector<std::string>& args)
           std::printf(
             "%10d %5d %5d %4d %9.2f %11.2f %9.2f %11s %11s %10.1e %8.2f%% %8.2f%% %8.2f%%\n",
             directions, rays, settings.TilesPerSide, row.Iteration, build, row.Propagate,
-            build + row.Propagate, vlf::FormatBytes(estimate.TotalBytes).c_str(),
-            vlf::FormatBytes(row.Peak).c_str(), row.Energy, 100.0 * floorMean, 100.0 * floorRms,
+            build + row.Propagate, FormatBytes(estimate.TotalBytes).c_str(),
+            FormatBytes(row.Peak).c_str(), row.Energy, 100.0 * floorMean, 100.0 * floorRms,
             100.0 * furnace);
           csv << directions << ',' << rays << ',' << settings.TilesPerSide << ',' << row.Iteration
               << ',' << build << ',' << row.Propagate << ',' << build + row.Propagate << ','

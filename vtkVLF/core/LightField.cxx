@@ -218,21 +218,6 @@ std::string LightFieldSettings::Validate() const
   return e.str();
 }
 
-std::string FormatBytes(std::uint64_t bytes)
-{
-  const char* units[] = { "B", "KiB", "MiB", "GiB", "TiB" };
-  double value = static_cast<double>(bytes);
-  int unit = 0;
-  while (value >= 1024.0 && unit < 4)
-  {
-    value /= 1024.0;
-    ++unit;
-  }
-  char text[64];
-  std::snprintf(text, sizeof(text), unit == 0 ? "%.0f %s" : "%.2f %s", value, units[unit]);
-  return text;
-}
-
 std::string MemoryEstimate::Describe() const
 {
   std::ostringstream out;

@@ -31,6 +31,7 @@
 
 #include "DirectionSet.h"
 #include "Progress.h"
+#include "MemoryBudget.h" // FormatBytes
 #include "TriangleScene.h"
 
 #include <glm/vec2.hpp>
@@ -173,7 +174,6 @@ struct MemoryEstimate
 // for unusable settings or an empty scene.
 MemoryEstimate EstimateMemory(const TriangleScene& scene, const LightFieldSettings& settings);
 
-std::string FormatBytes(std::uint64_t bytes); // "3.5 GiB", "12 MiB", "512 B"
 
 class LightField
 {
