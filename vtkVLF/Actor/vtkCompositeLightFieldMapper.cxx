@@ -238,18 +238,8 @@ bool vtkCompositeLightFieldMapper::PrepareAtlas(vtkRenderer* ren)
   {
     return true; // uploaded once per field
   }
-  if (!this->AtlasTexture)
-  {
-    this->AtlasTexture = vtkSmartPointer<vtkTextureObject>::New();
-  }
-  this->AtlasTexture->SetContext(window);
-  this->AtlasTexture->SetMinificationFilter(vtkTextureObject::Linear);
-  this->AtlasTexture->SetMagnificationFilter(vtkTextureObject::Linear);
-  this->AtlasTexture->SetWrapS(vtkTextureObject::ClampToEdge);
-  this->AtlasTexture->SetWrapT(vtkTextureObject::ClampToEdge);
-  if (!this->AtlasTexture->Create2DFromRaw(static_cast<unsigned int>(this->CurrentAtlasSize[0]),
-        static_cast<unsigned int>(this->CurrentAtlasSize[1]), 4, VTK_FLOAT,
-        this->CurrentAtlas->GetPointer(0)))
+  if (!vtkLightFieldMapper::UploadAtlasTexture(this->AtlasTexture, window,
+        this->CurrentAtlasSize[0], this->CurrentAtlasSize[1], this->CurrentAtlas->GetPointer(0)))
   {
     vtkErrorMacro(<< "could not upload the light field's " << this->CurrentAtlasSize[0] << "x"
                   << this->CurrentAtlasSize[1] << " texture atlas");

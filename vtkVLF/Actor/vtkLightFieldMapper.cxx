@@ -44,15 +44,6 @@ bool vtkLightFieldMapper::UploadAtlas(vtkRenderer* ren, vtkActor* act)
   {
     return true; // uploaded once per field
   }
-  if (!this->AtlasTexture)
-  {
-    this->AtlasTexture = vtkSmartPointer<vtkTextureObject>::New();
-  }
-  this->AtlasTexture->SetContext(window);
-  this->AtlasTexture->SetMinificationFilter(vtkTextureObject::Linear);
-  this->AtlasTexture->SetMagnificationFilter(vtkTextureObject::Linear);
-  this->AtlasTexture->SetWrapS(vtkTextureObject::ClampToEdge);
-  this->AtlasTexture->SetWrapT(vtkTextureObject::ClampToEdge);
   const mesolight::vlf::TextureAtlas& atlas = *impl->Atlas;
   std::vector<float> flipped;
   const float* data = atlas.Pixels().data();
@@ -61,8 +52,7 @@ bool vtkLightFieldMapper::UploadAtlas(vtkRenderer* ren, vtkActor* act)
     flipped = atlas.FlippedPixels();
     data = flipped.data();
   }
-  if (!this->AtlasTexture->Create2DFromRaw(static_cast<unsigned int>(atlas.Width()),
-        static_cast<unsigned int>(atlas.Height()), 4, VTK_FLOAT, const_cast<float*>(data)))
+  if (!UploadAtlasTexture(this->AtlasTexture, window, atlas.Width(), atlas.Height(), data))
   {
     vtkErrorMacro(<< "could not upload the light field's " << atlas.Width() << "x" << atlas.Height()
                   << " texture atlas");
@@ -192,6 +182,24 @@ void vtkLightFieldMapper::SetMapperShaderParameters(
   uniforms.AllScreen = this->AllScreen;
   uniforms.Overwrite = this->Overwrite;
   SetRadianceUniforms(cellBO.Program, uniforms);
+}
+
+//------------------------------------------------------------------------------
+bool vtkLightFieldMapper::UploadAtlasTexture(vtkSmartPointer<vtkTextureObject>& texture,
+  vtkOpenGLRenderWindow* window, int width, int height, const float* rgba)
+{
+  if (!texture)
+  {
+    texture = vtkSmartPointer<vtkTextureObject>::New();
+  }
+  texture->SetContext(window);
+  // Bilinear and clamped: with each surface's 1-texel gutter this equals the field's own lookup.
+  texture->SetMinificationFilter(vtkTextureObject::Linear);
+  texture->SetMagnificationFilter(vtkTextureObject::Linear);
+  texture->SetWrapS(vtkTextureObject::ClampToEdge);
+  texture->SetWrapT(vtkTextureObject::ClampToEdge);
+  return texture->Create2DFromRaw(static_cast<unsigned int>(width),
+    static_cast<unsigned int>(height), 4, VTK_FLOAT, const_cast<float*>(rgba));
 }
 
 //------------------------------------------------------------------------------

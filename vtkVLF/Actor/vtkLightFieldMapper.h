@@ -20,6 +20,7 @@
 #include <functional> // For std::function
 #include <map>        // For std::map
 
+class vtkOpenGLRenderWindow;
 class vtkShaderProgram;
 class vtkTextureObject;
 
@@ -55,6 +56,9 @@ public:
     bool Overwrite = false;
   };
   static void SetRadianceUniforms(vtkShaderProgram* program, const RadianceUniforms& uniforms);
+  /** Uploads an RGBA float atlas (creating the texture if needed); false if the upload failed. */
+  static bool UploadAtlasTexture(vtkSmartPointer<vtkTextureObject>& texture,
+    vtkOpenGLRenderWindow* window, int width, int height, const float* rgba);
   ///@}
 
 protected:
