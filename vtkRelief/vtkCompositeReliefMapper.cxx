@@ -4,6 +4,7 @@
 #include "vtkAttachReliefTexture.h"
 #include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
+#include "vtkDataObjectLeaves.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkObjectFactory.h"
@@ -199,20 +200,7 @@ void vtkCompositeReliefMapper::Render(vtkRenderer* ren, vtkActor* actor)
   this->CurrentReliefTexture = this->ReliefTextureData;
   this->CurrentLightSet = this->LightSetData;
   vtkDataObject* input = this->GetInputDataObject(0, 0);
-  std::vector<vtkDataObject*> blocks;
-  if (auto* composite = vtkCompositeDataSet::SafeDownCast(input))
-  {
-    vtkSmartPointer<vtkCompositeDataIterator> it;
-    it.TakeReference(composite->NewIterator());
-    for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
-    {
-      blocks.push_back(it->GetCurrentDataObject());
-    }
-  }
-  else if (input)
-  {
-    blocks.push_back(input);
-  }
+  const std::vector<vtkDataObject*> blocks = mesolight::DataObjectLeaves(input);
   for (vtkDataObject* block : blocks)
   {
     if (!this->CurrentReliefTexture)

@@ -6,6 +6,7 @@
 
 #include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
+#include "vtkDataObjectLeaves.h"
 #include "vtkFloatArray.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLHelper.h"
@@ -153,20 +154,7 @@ void vtkCompositeLightFieldMapper::Render(vtkRenderer* ren, vtkActor* actor)
 {
   this->CurrentAtlas = nullptr;
   vtkDataObject* input = this->GetInputDataObject(0, 0);
-  std::vector<vtkDataObject*> blocks;
-  if (auto* composite = vtkCompositeDataSet::SafeDownCast(input))
-  {
-    vtkSmartPointer<vtkCompositeDataIterator> it;
-    it.TakeReference(composite->NewIterator());
-    for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
-    {
-      blocks.push_back(it->GetCurrentDataObject());
-    }
-  }
-  else if (input)
-  {
-    blocks.push_back(input);
-  }
+  const std::vector<vtkDataObject*> blocks = mesolight::DataObjectLeaves(input);
   for (vtkDataObject* block : blocks)
   {
     if (!this->CurrentAtlas)
