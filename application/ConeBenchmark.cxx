@@ -5,6 +5,7 @@
 #include "CommandLine.h"
 #include "ConeMaps.h"
 #include "HeightFieldTracer.h"
+#include "OutputFile.h"
 #include "ProceduralHeightFields.h"
 
 #include <algorithm>
@@ -256,6 +257,10 @@ int RunConeBenchmark(const std::vector<std::string>& args)
   if (!cl.ParseArguments(args, exitCode))
   {
     return exitCode; // --help printed, or a usage error reported
+  }
+  if (const std::string problem = CheckOutputOptions(cl, { "--csv" }, {}); !problem.empty())
+  {
+    return cl.UsageError(problem);
   }
   if (!cl.GetInt("--threads", 1, 256, threads, error) ||
     !cl.GetInt("--oracle-size", 2, 512, oracleSize, error) ||

@@ -520,6 +520,11 @@ int Bench(const std::vector<std::string>& args)
   {
     return exitCode; // --help printed, or a usage error reported
   }
+  if (const std::string problem = CheckOutputOptions(cl, { "--csv", "--plot" }, cl.Positional());
+      !problem.empty())
+  {
+    return cl.UsageError(problem);
+  }
   std::string error;
   int width = 0, height = 0, frames = 0, directions = 0, rays = 0, iterations = 0;
   if (!cl.GetSize("--size", 1, 16384, width, height, error))

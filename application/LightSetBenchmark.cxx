@@ -5,6 +5,7 @@
 #include "ImageCompare.h"
 #include "LightSetReference.h"
 #include "MathConstants.h"
+#include "OutputFile.h"
 #include "ReliefReference.h"
 #include "ReliefScene.h"
 #include "Timing.h"
@@ -82,6 +83,11 @@ int RunLightSetBenchmark(const std::vector<std::string>& args)
   if (!cl.ParseArguments(args, exitCode))
   {
     return exitCode; // --help printed, or a usage error reported
+  }
+  if (const std::string problem = CheckOutputOptions(cl, { "--csv" }, { cl.Get("--environment") });
+      !problem.empty())
+  {
+    return cl.UsageError(problem);
   }
   if (!cl.GetInt("--frames", 1, 1000, frames, error) ||
     !cl.GetInt("--samples", 16, 1 << 20, samples, error) ||

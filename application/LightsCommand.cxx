@@ -2,8 +2,8 @@
 #include "LightsCommand.h"
 
 #include "CommandLine.h"
-#include "OutputFile.h"
 #include "MathConstants.h"
+#include "OutputFile.h"
 #include "Timing.h"
 
 #include "EnvironmentMaps.h"
@@ -253,6 +253,10 @@ int RunLightsBenchmark(const std::vector<std::string>& args)
   if (!cl.ParseArguments(args, exitCode))
   {
     return exitCode; // --help printed, or a usage error reported
+  }
+  if (const std::string problem = CheckOutputOptions(cl, { "--csv" }, {}); !problem.empty())
+  {
+    return cl.UsageError(problem);
   }
   std::vector<int> counts;
   int normalCount = 2000;

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "OutputFile.h"
 
+#include "CommandLine.h"
+
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -64,6 +66,32 @@ std::string CheckOutputFile(const std::string& out, const std::vector<std::strin
   if (access(directory.c_str(), W_OK | X_OK) != 0)
   {
     return "the directory '" + directory + "' of '" + out + "' is not writable";
+  }
+  return "";
+}
+
+std::string CheckOutputOptions(
+  const CommandLine& cl, const std::vector<std::string>& names, std::vector<std::string> inputs)
+{
+  for (const std::string& name : names)
+  {
+    if (!cl.Has(name))
+    {
+      continue;
+    }
+    std::vector<std::string> others = inputs; // what it may not overwrite: inputs, other outputs
+    for (const std::string& other : names)
+    {
+      if (other != name && cl.Has(other))
+      {
+        others.push_back(cl.Get(other));
+      }
+    }
+    const std::string problem = CheckOutputFile(cl.Get(name), others);
+    if (!problem.empty())
+    {
+      return name + ": " + problem;
+    }
   }
   return "";
 }

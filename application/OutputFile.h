@@ -21,6 +21,14 @@ bool SameFile(const std::string& a, const std::string& b);
  */
 std::string CheckOutputFile(const std::string& out, const std::vector<std::string>& inputs);
 
+class CommandLine;
+/**
+ * CheckOutputFile for each of the output options `names` the command was given, against the
+ * inputs and the command's other outputs; "" when all may be written, else "--csv: why".
+ */
+std::string CheckOutputOptions(
+  const CommandLine& cl, const std::vector<std::string>& names, std::vector<std::string> inputs);
+
 } // namespace mesolight
 
 #endif

@@ -4,6 +4,7 @@
 
 #include "CommandLine.h"
 #include "ImageCompare.h"
+#include "OutputFile.h"
 #include "ReliefReference.h"
 #include "ReliefScene.h"
 #include "vtkOIIOImageWriter.h"
@@ -571,6 +572,11 @@ int RunReliefSweep(const std::vector<std::string>& args)
   if (!cl.ParseArguments(args, exitCode))
   {
     return exitCode; // --help printed, or a usage error reported
+  }
+  if (const std::string problem = CheckOutputOptions(cl, { "--csv" }, { cl.Get("--depth-file") });
+      !problem.empty())
+  {
+    return cl.UsageError(problem);
   }
   if (!cl.Positional().empty())
   {

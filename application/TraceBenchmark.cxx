@@ -6,6 +6,7 @@
 
 #include "CommandLine.h"
 #include "MathConstants.h"
+#include "OutputFile.h"
 #include "Timing.h"
 
 #include "EmbreeScene.h"
@@ -110,6 +111,10 @@ int RunTraceBenchmark(const std::vector<std::string>& args)
   if (!cl.ParseArguments(args, exitCode))
   {
     return exitCode; // --help printed, or a usage error reported
+  }
+  if (const std::string problem = CheckOutputOptions(cl, { "--csv" }, {}); !problem.empty())
+  {
+    return cl.UsageError(problem);
   }
   if (!cl.GetInt("--triangles", 8, 50000000, triangles, error) ||
     !cl.GetInt("--size", 16, 8192, size, error) ||

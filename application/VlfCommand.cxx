@@ -564,6 +564,11 @@ int RunVlfBenchmark(const std::vector<std::string>& args)
   {
     return exitCode; // --help printed, or a usage error reported
   }
+  if (const std::string problem = CheckOutputOptions(cl, { "--csv", "--plot" }, {});
+      !problem.empty())
+  {
+    return cl.UsageError(problem);
+  }
   std::vector<int> directionList, rayList;
   int iterations = 0;
   double budget = 0.0;
