@@ -1,0 +1,237 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "ObjectMesh.h"
+
+#include "LightField.h"
+#include "MathConstants.h"
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/mat3x3.hpp>
+#include <glm/matrix.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace mesolight
+{
+namespace vlf
+{
+
+namespace
+{
+bool Finite(const glm::vec3& v)
+{
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+}
+
+//------------------------------------------------------------------------------
+std::string ObjectMesh::Validate() const
+{
+  if (this->Triangles.empty())
+  {
+    return "the object has no triangles";
+  }
+  if (!this->Normals.empty() && this->Normals.size() != this->Points.size())
+  {
+    return "the object has " + std::to_string(this->Normals.size()) + " normals for " +
+      std::to_string(this->Points.size()) + " points";
+  }
+  for (const glm::vec3& p : this->Points)
+  {
+    if (!Finite(p))
+    {
+      return "the object has a point that is not a finite number";
+    }
+  }
+  for (const glm::uvec3& t : this->Triangles)
+  {
+    if (std::max({ t.x, t.y, t.z }) >= this->Points.size())
+    {
+      return "a triangle of the object refers to point " +
+        std::to_string(std::max({ t.x, t.y, t.z })) + " of " + std::to_string(this->Points.size());
+    }
+  }
+  if (!Finite(this->Kd) || std::min({ this->Kd.x, this->Kd.y, this->Kd.z }) < 0.0f ||
+    std::max({ this->Kd.x, this->Kd.y, this->Kd.z }) > 1.0f)
+  {
+    return "the object's diffuse reflectance must lie in [0, 1]";
+  }
+  if (this->DegenerateTriangleCount() == this->Triangles.size())
+  {
+    return "every triangle of the object has zero area";
+  }
+  return {};
+}
+
+//------------------------------------------------------------------------------
+void ObjectMesh::ComputeNormals()
+{
+  this->Normals.assign(this->Points.size(), glm::vec3(0.0f));
+  for (const glm::uvec3& t : this->Triangles)
+  {
+    if (std::max({ t.x, t.y, t.z }) >= this->Points.size())
+    {
+      continue;
+    }
+    // The cross product's length is twice the area: an area-weighted sum.
+    const glm::vec3 n =
+      glm::cross(this->Points[t.y] - this->Points[t.x], this->Points[t.z] - this->Points[t.x]);
+    if (!Finite(n))
+    {
+      continue;
+    }
+    this->Normals[t.x] += n;
+    this->Normals[t.y] += n;
+    this->Normals[t.z] += n;
+  }
+  for (glm::vec3& n : this->Normals)
+  {
+    const float length = glm::length(n);
+    n = length > 0.0f ? n / length : glm::vec3(0.0f, 0.0f, 1.0f);
+  }
+}
+
+//------------------------------------------------------------------------------
+std::size_t ObjectMesh::DegenerateTriangleCount() const
+{
+  glm::vec3 lower, upper;
+  this->Bounds(lower, upper);
+  const float size = glm::length(upper - lower);
+  // Relative to the object's size: a triangle whose doubled area is below this is a sliver.
+  const float threshold = 1e-12f * size * size;
+  std::size_t count = 0;
+  for (const glm::uvec3& t : this->Triangles)
+  {
+    if (std::max({ t.x, t.y, t.z }) >= this->Points.size())
+    {
+      ++count;
+      continue;
+    }
+    const glm::vec3 n =
+      glm::cross(this->Points[t.y] - this->Points[t.x], this->Points[t.z] - this->Points[t.x]);
+    count += !(glm::length(n) > threshold);
+  }
+  return count;
+}
+
+//------------------------------------------------------------------------------
+void ObjectMesh::Bounds(glm::vec3& lower, glm::vec3& upper) const
+{
+  if (this->Points.empty())
+  {
+    lower = upper = glm::vec3(0.0f);
+    return;
+  }
+  lower = glm::vec3(std::numeric_limits<float>::max());
+  upper = -lower;
+  for (const glm::vec3& p : this->Points)
+  {
+    lower = glm::min(lower, p);
+    upper = glm::max(upper, p);
+  }
+}
+
+//------------------------------------------------------------------------------
+glm::mat4 WorldToUnitSphere(const LightField& field)
+{
+  const float scale = field.NormalizationScale();
+  return glm::translate(
+    glm::scale(glm::mat4(1.0f), glm::vec3(scale)), -field.NormalizationCentre());
+}
+
+//------------------------------------------------------------------------------
+ObjectMesh TransformMesh(const ObjectMesh& mesh, const glm::mat4& transform)
+{
+  ObjectMesh out;
+  out.Triangles = mesh.Triangles;
+  out.Kd = mesh.Kd;
+  out.Points.reserve(mesh.Points.size());
+  for (const glm::vec3& p : mesh.Points)
+  {
+    out.Points.emplace_back(transform * glm::vec4(p, 1.0f));
+  }
+  const glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(transform)));
+  out.Normals.reserve(mesh.Normals.size());
+  for (const glm::vec3& n : mesh.Normals)
+  {
+    const glm::vec3 m = normalMatrix * n;
+    const float length = glm::length(m);
+    out.Normals.push_back(length > 0.0f ? m / length : n);
+  }
+  return out;
+}
+
+//------------------------------------------------------------------------------
+ObjectMesh MakeSphere(float radius, int rings, int segments)
+{
+  rings = std::max(rings, 2);
+  segments = std::max(segments, 3);
+  ObjectMesh mesh;
+  const float pi = Pi<float>;
+  for (int r = 0; r <= rings; ++r)
+  {
+    const float theta = pi * static_cast<float>(r) / static_cast<float>(rings);
+    for (int s = 0; s <= segments; ++s)
+    {
+      const float phi = 2.0f * pi * static_cast<float>(s) / static_cast<float>(segments);
+      const glm::vec3 n(
+        std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta));
+      mesh.Points.push_back(radius * n);
+      mesh.Normals.push_back(n);
+    }
+  }
+  const unsigned row = static_cast<unsigned>(segments + 1);
+  for (unsigned r = 0; r < static_cast<unsigned>(rings); ++r)
+  {
+    for (unsigned s = 0; s < static_cast<unsigned>(segments); ++s)
+    {
+      const unsigned a = r * row + s, b = a + 1, c = a + row, d = c + 1;
+      if (r != 0)
+      {
+        mesh.Triangles.emplace_back(a, c, b); // outward: theta grows toward -Z
+      }
+      if (r + 1 != static_cast<unsigned>(rings))
+      {
+        mesh.Triangles.emplace_back(b, c, d);
+      }
+    }
+  }
+  return mesh;
+}
+
+//------------------------------------------------------------------------------
+ObjectMesh MakeCube(float side)
+{
+  ObjectMesh mesh;
+  const float h = 0.5f * side;
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    for (int sign = -1; sign <= 1; sign += 2)
+    {
+      glm::vec3 n(0.0f);
+      n[axis] = static_cast<float>(sign);
+      glm::vec3 u(0.0f), v(0.0f);
+      u[(axis + 1) % 3] = 1.0f;
+      v[(axis + 2) % 3] = 1.0f;
+      if (sign < 0)
+      {
+        std::swap(u, v); // keep u x v = n: counter-clockwise seen from outside
+      }
+      const unsigned first = static_cast<unsigned>(mesh.Points.size());
+      const glm::vec3 centre = h * n;
+      mesh.Points.push_back(centre - h * u - h * v);
+      mesh.Points.push_back(centre + h * u - h * v);
+      mesh.Points.push_back(centre + h * u + h * v);
+      mesh.Points.push_back(centre - h * u + h * v);
+      mesh.Normals.insert(mesh.Normals.end(), 4, n);
+      mesh.Triangles.emplace_back(first, first + 1, first + 2);
+      mesh.Triangles.emplace_back(first, first + 2, first + 3);
+    }
+  }
+  return mesh;
+}
+
+} // namespace vlf
+} // namespace mesolight
