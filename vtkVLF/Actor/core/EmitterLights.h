@@ -1,0 +1,51 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// EmitterLights: ordinary point lights that approximate a light field's emitters, so a movable
+// object can be shaded by plain (VTK/OpenGL) lighting. Wither 2005 ("Interactive dynamic objects
+// in a virtual light field", §3.5) placed such lights by hand and lists estimating them from the
+// field as future work; here each emitting surface becomes one light at its centroid, facing
+// along its normal, with the radiant intensity Le x area (cosine lobe), and the field's mean
+// radiance gives an ambient term for the indirect light. Plain C++ (GLM, no VTK types);
+// positions are in the field's unit sphere.
+#ifndef mesolight_vlf_EmitterLights_h
+#define mesolight_vlf_EmitterLights_h
+
+#include <glm/vec3.hpp>
+
+#include <cstdint>
+#include <vector>
+
+namespace mesolight
+{
+namespace vlf
+{
+class LightField;
+
+struct EmitterLight
+{
+  std::uint32_t Surface = 0;            // the field surface it stands for
+  glm::vec3 Position{ 0.0f };           // area-weighted centroid of the surface
+  glm::vec3 Normal{ 0.0f, 0.0f, 1.0f }; // emitting (front) side
+  glm::vec3 Radiance{ 0.0f };           // Le
+  double Area = 0.0;                    // unit-sphere units
+  // Radiant intensity along the normal, Le x Area; at angle theta it is that times cos theta.
+  glm::vec3 Intensity() const { return this->Radiance * static_cast<float>(this->Area); }
+};
+
+struct LightApproximation
+{
+  std::vector<EmitterLight> Lights; // brightest first
+  glm::vec3 Ambient{ 0.0f };        // mean radiance of the non-emitting surfaces' textures
+};
+
+LightApproximation EstimateEmitterLights(const LightField& field);
+
+// Radiance a diffuse point (position p, unit normal n, reflectance kd) leaves under the
+// approximation: sum over lights of kd/pi x I cos(theta_light) cos(theta_p) / d^2, plus kd x
+// Ambient (the ambient term is a radiance, so kd/pi x pi L). No shadows.
+glm::vec3 ShadeWithLights(
+  const LightApproximation& lights, const glm::vec3& p, const glm::vec3& n, const glm::vec3& kd);
+
+} // namespace vlf
+} // namespace mesolight
+
+#endif
