@@ -129,3 +129,20 @@ endif ()
 # 8. probe estimates its memory before converting (--width 32768 needed 12.8 GB unannounced).
 cli_expect(1 "needs about" probe "${user}" --width 32768 --out "${WORK}/huge.exr"
   --memory-budget 1)
+
+# 9. A light field that could never shoot (every direction along the emitter, or the room shrunk
+# below a line cell by one far triangle) is refused before propagating, not saved dark.
+cli_expect(1 "so few directions" vlf propagate --out "${WORK}/three.vlf" --directions 3 --rays 8)
+file(READ "${CMAKE_CURRENT_LIST_DIR}/../examples/data/cornell-box.obj" room)
+string(REPLACE "mtllib cornell-box.mtl" "mtllib ${CMAKE_CURRENT_LIST_DIR}/../examples/data/cornell-box.mtl" room "${room}")
+string(REGEX MATCHALL "\nv " vertices "${room}")
+list(LENGTH vertices count)
+math(EXPR a "${count} + 1")
+math(EXPR b "${count} + 2")
+math(EXPR c "${count} + 3")
+file(WRITE "${WORK}/far.obj"
+  "${room}\nv 1000000 0 0\nv 1001000 0 0\nv 1000000 1000 0\nf ${a} ${b} ${c}\n")
+cli_expect(1 "smaller than a line cell" vlf propagate "${WORK}/far.obj" --out "${WORK}/far.vlf")
+if (EXISTS "${WORK}/three.vlf" OR EXISTS "${WORK}/far.vlf")
+  message(FATAL_ERROR "a field that shoots nothing was written")
+endif ()

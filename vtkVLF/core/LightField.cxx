@@ -499,6 +499,38 @@ std::unique_ptr<LightField> LightField::Build(
       emission);
   }
   field->UnshotDiffuse = field->TotalDiffuse;
+  // An emitter no line leaves (every direction parallel to it, or it is smaller than a cell, as
+  // when one far vertex shrinks the rest of the scene) shoots nothing: the field would stay dark
+  // however long it propagates, so say so now.
+  double emitterCapacity = 0.0;
+  for (const Surface& surface : field->SurfaceList)
+  {
+    const glm::vec3 emission = field->NormalizedScene.Materials[surface.Material].Emission;
+    if (emission.x + emission.y + emission.z > 0.0f)
+    {
+      for (std::size_t t = 0; t < surface.TexelCount(); ++t)
+      {
+        emitterCapacity += field->Capacity[surface.TexelOffset + t];
+      }
+    }
+  }
+  if (!(emitterCapacity > 0.0))
+  {
+    std::ostringstream e;
+    e << "no line of the light field leaves an emitter (" << settings.Directions << " directions x "
+      << settings.RaysPerSide << "x" << settings.RaysPerSide
+      << " rays), so nothing would ever be shot: ";
+    if (settings.Directions < 33)
+    {
+      e << "so few directions may all lie along the emitters; use more (e.g. 513)";
+    }
+    else
+    {
+      e << "the emitters are smaller than a line cell once the scene is scaled into the unit "
+           "sphere; check the scene for triangles far from the rest, or use more rays";
+    }
+    throw std::invalid_argument(e.str());
+  }
   return field;
 }
 
