@@ -8,6 +8,7 @@
 #include "TraceScenes.h"
 
 #include "EmbreeScene.h"
+#include "ObjScene.h"
 #include "PathTracer.h"
 #include "TexturedRayTracer.h"
 #include "TriangleScene.h"
@@ -123,42 +124,6 @@ struct ImageWindow
   }
 };
 
-// The scene as Wavefront OBJ + MTL (Kd, Ke), for other renderers (the Cycles comparison).
-bool WriteObj(const TriangleScene& scene, const std::string& objFile)
-{
-  const std::string mtlFile = objFile.substr(0, objFile.find_last_of('.')) + ".mtl";
-  std::ofstream obj(objFile);
-  std::ofstream mtl(mtlFile);
-  if (!obj || !mtl)
-  {
-    return false;
-  }
-  const std::string mtlName = mtlFile.substr(mtlFile.find_last_of('/') + 1);
-  obj << "# Mesolight scene (millimetres, y up, faces counter-clockwise from the front)\nmtllib "
-      << mtlName << "\n";
-  for (const glm::vec3& p : scene.Positions)
-  {
-    obj << "v " << p.x << " " << p.y << " " << p.z << "\n";
-  }
-  std::uint32_t current = SceneHit::None;
-  for (std::size_t t = 0; t < scene.TriangleCount(); ++t)
-  {
-    if (scene.MaterialIds[t] != current)
-    {
-      current = scene.MaterialIds[t];
-      obj << "usemtl " << scene.Materials[current].Name << "\n";
-    }
-    obj << "f " << scene.Triangles[t].x + 1 << " " << scene.Triangles[t].y + 1 << " "
-        << scene.Triangles[t].z + 1 << "\n";
-  }
-  for (const SceneMaterial& m : scene.Materials)
-  {
-    mtl << "newmtl " << m.Name << "\nKd " << m.Diffuse.x << " " << m.Diffuse.y << " " << m.Diffuse.z
-        << "\nKe " << m.Emission.x << " " << m.Emission.y << " " << m.Emission.z << "\n";
-  }
-  return static_cast<bool>(obj) && static_cast<bool>(mtl);
-}
-
 // Mean radiance per Cornell-box quad (two triangles each: floor, ceiling, back, red, green,
 // light, block faces) over the pixels whose 3 x 3 neighbourhood sees only that quad, ours
 // against another renderer's linear image of the same view. True when every region with
@@ -263,9 +228,16 @@ int TraceCornell(const CommandLine& cl, int width, int height, int threads, bool
   const TriangleScene box = MakeCornellBox();
   if (cl.Has("--export-obj"))
   {
-    if (!WriteObj(box, cl.Get("--export-obj")))
+    // The project's one OBJ writer (temporary files renamed into place, nothing overwritten),
+    // read by other renderers (the Cycles comparison).
+    try
     {
-      std::cerr << "mesolight trace: cannot write " << cl.Get("--export-obj") << "\n";
+      mesolight::vlf::WriteObjScene(box, cl.Get("--export-obj"), false,
+        "Mesolight's Cornell box (millimetres, y up, faces counter-clockwise from the front)");
+    }
+    catch (const std::exception& e)
+    {
+      std::cerr << "mesolight trace: " << e.what() << "\n";
       return 1;
     }
     std::cout << "wrote " << cl.Get("--export-obj") << " and its .mtl\n";
@@ -417,7 +389,12 @@ int RunTraceCommand(const std::vector<std::string>& args)
   std::string problem;
   if (cl.Has("--export-obj"))
   {
-    problem = CheckOutputFile(cl.Get("--export-obj"), { compare });
+    const std::string obj = cl.Get("--export-obj");
+    problem = CheckOutputFile(obj, { compare });
+    if (problem.empty()) // the .mtl written beside it
+    {
+      problem = CheckOutputFile(mesolight::vlf::MaterialFileOf(obj), { compare, obj });
+    }
   }
   else
   {

@@ -146,3 +146,15 @@ cli_expect(1 "smaller than a line cell" vlf propagate "${WORK}/far.obj" --out "$
 if (EXISTS "${WORK}/three.vlf" OR EXISTS "${WORK}/far.vlf")
   message(FATAL_ERROR "a field that shoots nothing was written")
 endif ()
+
+# 10. trace --export-obj writes the .mtl beside the .obj through the one OBJ writer: a user's
+# .mtl of that name is never replaced.
+file(WRITE "${WORK}/users.mtl" "newmtl mine\n")
+cli_remember("${WORK}/users.mtl")
+cli_expect(1 "users.mtl: exists" trace --scene cornell --export-obj "${WORK}/users.obj")
+cli_expect_unchanged("${WORK}/users.mtl")
+cli_expect(0 "" trace --scene cornell --export-obj "${WORK}/box.obj")
+file(STRINGS "${WORK}/box.mtl" emitters REGEX "^Ke [1-9]")
+if (NOT emitters)
+  message(FATAL_ERROR "box.mtl has no emitter")
+endif ()

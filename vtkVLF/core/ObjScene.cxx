@@ -646,10 +646,15 @@ std::string Numbers(std::initializer_list<float> values)
 }
 } // namespace
 
+std::string MaterialFileOf(const std::string& objPath)
+{
+  return Stem(objPath) + ".mtl";
+}
+
 void WriteObjScene(const TriangleScene& scene, const std::string& objPath, bool overwrite,
   const std::string& comment)
 {
-  const std::string mtlPath = Stem(objPath) + ".mtl";
+  const std::string mtlPath = MaterialFileOf(objPath);
   const std::size_t slash = mtlPath.find_last_of('/');
   const std::string mtlName = slash == std::string::npos ? mtlPath : mtlPath.substr(slash + 1);
   if (!overwrite)

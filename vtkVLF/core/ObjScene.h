@@ -62,6 +62,9 @@ ObjSceneRead ParseObjScene(std::istream& obj, const std::string& name, const std
 // Undirected edges, by vertex index, used by more than two triangles.
 std::size_t CountNonManifoldEdges(const std::vector<glm::uvec3>& triangles);
 
+// The .mtl WriteObjScene writes beside objPath: the same path with its extension replaced.
+std::string MaterialFileOf(const std::string& objPath);
+
 // Writes `scene` as OBJ + MTL: objPath and the .mtl beside it (same stem), each through a
 // temporary file renamed into place. Existing files are not overwritten unless `overwrite`;
 // throws ObjSceneError. Numbers are written as the shortest text that reads back as the same float.
