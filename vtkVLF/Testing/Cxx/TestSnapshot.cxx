@@ -7,12 +7,19 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
+#include <csignal>
 #include <cstdio>
 #include <fstream>
 #include <iterator>
 #include <limits>
 #include <string>
+#include <thread>
 #include <vector>
+
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 namespace
 {
@@ -199,4 +206,78 @@ TEST(VLFSnapshot, NonFiniteValuesAreRefused)
   WriteSnapshot(*SmallCornell(1), path);
   EXPECT_EQ(ReadError(path), "");
   std::remove(path.c_str());
+}
+
+// kill -9 during a snapshot write (what a user's Ctrl-C or an OOM killer does to `mesolight vlf
+// propagate`): the file on disk stays the previous complete snapshot, resuming from it gives the
+// field of an uninterrupted run bit for bit, and the next write removes the dead writer's
+// temporary file. The writer is a forked child running the propagation loop of the command
+// (Propagate with a snapshot after every iteration); the parent kills it the moment its
+// temporary file appears.
+TEST(VLFSnapshot, KilledDuringAWriteResumesToTheSameField)
+{
+  const std::string path = TempPath("killed.vlf");
+  std::remove(path.c_str());
+  LightFieldSettings settings;
+  settings.Directions = 513; // a snapshot of several MB: its write takes a while
+  settings.RaysPerSide = 32;
+  settings.TilesPerSide = 4;
+  const int iterations = 40;
+  const pid_t child = ::fork(); // before this process starts any thread pool
+  ASSERT_GE(child, 0);
+  if (child == 0)
+  {
+    try
+    {
+      std::unique_ptr<LightField> field = LightField::Build(MakeCornellBox(), settings);
+      Propagate(*field, iterations, {}, [&](const LightField& f) { WriteSnapshot(f, path); });
+    }
+    catch (...)
+    {
+    }
+    std::_Exit(0);
+  }
+  const std::string temporary = path + ".tmp-" + std::to_string(static_cast<long>(child));
+  auto exists = [](const std::string& file)
+  {
+    struct stat info;
+    return ::stat(file.c_str(), &info) == 0;
+  };
+  // Wait for a write after the first complete snapshot, then kill in the middle of it.
+  bool killedWriting = false;
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(5);
+  while (std::chrono::steady_clock::now() < deadline)
+  {
+    if (exists(path) && exists(temporary))
+    {
+      ::kill(child, SIGKILL);
+      killedWriting = exists(temporary);
+      break;
+    }
+    int status = 0;
+    if (::waitpid(child, &status, WNOHANG) == child)
+    {
+      break; // finished without being caught writing (should not happen: 40 writes)
+    }
+  }
+  ::kill(child, SIGKILL);
+  ::waitpid(child, nullptr, 0);
+  ASSERT_TRUE(killedWriting) << "the writer was never caught during a snapshot write";
+  EXPECT_TRUE(exists(temporary));
+
+  // What is on disk is a complete snapshot of some iteration; resume it one iteration further.
+  std::unique_ptr<LightField> resumed;
+  ASSERT_NO_THROW(resumed = ReadSnapshot(path));
+  const int done = resumed->IterationsDone;
+  ASSERT_GE(done, 1);
+  ASSERT_LT(done, iterations);
+  std::printf("[ figures  ] killed during the write of iteration %d's snapshot (%d done on disk)\n",
+    done + 1, done);
+  Propagate(*resumed, done + 1);
+  WriteSnapshot(*resumed, path);
+  EXPECT_FALSE(exists(temporary)) << "the killed writer's temporary file was left behind";
+
+  std::unique_ptr<LightField> straight = LightField::Build(MakeCornellBox(), settings);
+  Propagate(*straight, done + 1);
+  ExpectSameField(*straight, *ReadSnapshot(path));
 }
