@@ -19,4 +19,21 @@ if [ "${MESOLIGHT_SKIP_PARAVIEW:-0}" != "1" ]; then
     ctest --test-dir "${MESOLIGHT_PARAVIEW_BUILD_DIR:-$here/build-paraview}" --output-on-failure \
     --timeout 600 || status=$?
 fi
+
+# CI shows the end of this script's output: repeat there which tests failed, with the end of what
+# each printed (ctest's logs keep all of it).
+if [ "$status" -ne 0 ]; then
+  for dir in "$build" "${MESOLIGHT_PARAVIEW_BUILD_DIR:-$here/build-paraview}"; do
+    failed="$dir/Testing/Temporary/LastTestsFailed.log"
+    [ -s "$failed" ] || continue
+    echo "==== failed in $dir:"
+    cat "$failed"
+    while IFS=: read -r _ name; do
+      echo "==== last lines of $name:"
+      awk -v t="Test: $name" '!on && substr($0, length($0) - length(t) + 1) == t {on = 1}
+        on {print} on && /^Test time =/ {exit}' \
+        "$dir/Testing/Temporary/LastTest.log" | tail -n 40
+    done < "$failed"
+  done
+fi
 exit $status
