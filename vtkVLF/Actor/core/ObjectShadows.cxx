@@ -500,5 +500,65 @@ glm::vec3 ObjectShadows::Shade(
   return glm::max(glm::vec3(0.0f), total - kd / Pi<float> * lost);
 }
 
+//------------------------------------------------------------------------------
+ShadowGpuData PackShadowsForGpu(const ObjectShadows& shadows)
+{
+  ShadowGpuData out;
+  const ShadowSettings& c = shadows.Settings();
+  out.Mode = static_cast<int>(c.Mode);
+  out.Params = glm::vec4(c.DepthBias, c.BlendAlpha, static_cast<float>(c.PcfKernel),
+    c.RemoveBackProjection ? 1.0f : 0.0f);
+  if (shadows.Empty())
+  {
+    out.Mode = 0;
+    return out;
+  }
+  // The emitters (strongest first) whose maps and samples fit.
+  std::vector<std::uint32_t> maps;
+  for (std::size_t e = 0; e < shadows.Emitters().size(); ++e)
+  {
+    const ShadowEmitter& emitter = shadows.Emitters()[e];
+    const std::vector<std::uint32_t>& own = shadows.MapsOf(e);
+    if (out.EmitterCount >= GpuShadowEmitters ||
+      maps.size() + own.size() > static_cast<std::size_t>(GpuShadowMaps) ||
+      out.Samples.size() + emitter.Samples.size() > static_cast<std::size_t>(GpuShadowSamples))
+    {
+      break;
+    }
+    const float firstMap = own.size() > 1 ? static_cast<float>(maps.size() + 1) : -1.0f;
+    out.EmitterIndex.emplace_back(static_cast<float>(out.Samples.size()),
+      static_cast<float>(emitter.Samples.size()), static_cast<float>(maps.size()), firstMap);
+    out.EmitterRadiance.emplace_back(emitter.Light.Radiance, emitter.PowerWeight);
+    out.EmitterNormal.emplace_back(emitter.Light.Normal, 0.0f);
+    out.Samples.insert(out.Samples.end(), emitter.Samples.begin(), emitter.Samples.end());
+    maps.insert(maps.end(), own.begin(), own.end());
+    ++out.EmitterCount;
+  }
+  const int res = c.Resolution;
+  const int count = static_cast<int>(maps.size());
+  out.Resolution = res;
+  out.Columns = std::max(1, static_cast<int>(std::ceil(std::sqrt(static_cast<double>(count)))));
+  const int rows = (count + out.Columns - 1) / out.Columns;
+  out.Width = out.Columns * res;
+  out.Height = rows * res;
+  out.Depth.assign(static_cast<std::size_t>(out.Width) * out.Height, ShadowMap::EmptyDepth);
+  for (int m = 0; m < count; ++m)
+  {
+    const ShadowMap& map = shadows.Maps()[maps[m]];
+    const int x0 = (m % out.Columns) * res, y0 = (m / out.Columns) * res;
+    for (int y = 0; y < res; ++y)
+    {
+      std::copy(map.Depth.begin() + static_cast<std::ptrdiff_t>(y) * res,
+        map.Depth.begin() + static_cast<std::ptrdiff_t>(y + 1) * res,
+        out.Depth.begin() + static_cast<std::ptrdiff_t>(y0 + y) * out.Width + x0);
+    }
+    out.MapPosition.emplace_back(map.Position, map.TanHalfAngle);
+    out.MapAxisX.emplace_back(map.AxisX, map.Near);
+    out.MapAxisY.emplace_back(map.AxisY, 0.0f);
+    out.MapAxisZ.emplace_back(map.AxisZ, map.Far);
+  }
+  return out;
+}
+
 } // namespace vlf
 } // namespace mesolight

@@ -137,6 +137,8 @@ public:
   const std::vector<ShadowEmitter>& Emitters() const { return this->EmitterList; }
   const std::vector<ShadowMap>& Maps() const { return this->MapList; }
   bool Empty() const { return this->MapList.empty(); }
+  // Emitter e's maps: its centroid's first, then (Soft) one per sample, consecutive.
+  const std::vector<std::uint32_t>& MapsOf(std::size_t e) const { return this->EmitterMaps[e]; }
   double FillSeconds() const { return this->Seconds; } // the last Build's placement and fill
 
   // Per emitter e: the fraction of its direct light the object blocks at p under the settings'
@@ -159,6 +161,22 @@ private:
   std::vector<std::vector<std::uint32_t>> EmitterMaps; // per emitter: its maps
   double Seconds = 0.0;
 };
+
+// What glsl/vtkLightFieldShadowFS.glsl reads: every map as a tile of one float image
+// (Columns tiles a row), and its uniform arrays. Emitters whose maps or samples would not fit
+// the shader's arrays (the weakest) are left out.
+struct ShadowGpuData
+{
+  int Mode = 0; // ShadowMode as int
+  int Resolution = 0, Columns = 1, Width = 0, Height = 0;
+  std::vector<float> Depth; // Width x Height, row 0 first
+  int EmitterCount = 0;
+  glm::vec4 Params{ 0.0f };                                         // bias, alpha, kernel, removal
+  std::vector<glm::vec4> MapPosition, MapAxisX, MapAxisY, MapAxisZ; // see the shader
+  std::vector<glm::vec4> EmitterRadiance, EmitterNormal, EmitterIndex, Samples;
+};
+constexpr int GpuShadowMaps = 40, GpuShadowEmitters = 8, GpuShadowSamples = 128;
+ShadowGpuData PackShadowsForGpu(const ObjectShadows& shadows);
 
 // Places a map at `light` for the object (its bounding sphere) and rasterises it. False when
 // the object has no triangles. A light inside the bounding sphere gets a wide (80 degree half
