@@ -9,6 +9,7 @@
 
 #include "EmbreeScene.h"
 #include "Lookup.h"
+#include "MathConstants.h"
 #include "ParallelFor.h"
 #include "PatchComparison.h"
 #include "PathTracer.h"
@@ -160,6 +161,86 @@ TEST(ShadowMapCore, BackProjectionRemovedAndPresentWithoutRemoval)
       EXPECT_EQ(away, 0.0f);
     }
   }
+}
+
+TEST(ShadowMapCore, SeveralEmittersEachCastTheirOwnShadow)
+{
+  // The Cornell box with a second, weaker ceiling light (a third of the main one's power) over
+  // the back-left corner and a third one too weak to matter; the cube hangs under the second.
+  TriangleScene scene = MakeCornellBox();
+  for (const float le : { 5.0f, 0.02f })
+  {
+    SceneMaterial light;
+    light.Name = "extra light";
+    light.Diffuse = glm::vec3(0.78f);
+    light.Emission = glm::vec3(le);
+    const float x = le > 1.0f ? 50.0f : 400.0f;
+    scene.AddPolygon({ { x, 548.7f, 400.0f }, { x + 100.0f, 548.7f, 400.0f },
+                       { x + 100.0f, 548.7f, 500.0f }, { x, 548.7f, 500.0f } },
+      scene.AddMaterial(light));
+  }
+  vlf::LightFieldSettings fieldSettings;
+  fieldSettings.Directions = 33;
+  fieldSettings.RaysPerSide = 8;
+  fieldSettings.TilesPerSide = 2;
+  const std::unique_ptr<vlf::LightField> field = vlf::LightField::CreateEmpty(scene, fieldSettings);
+  vlf::ShadowSettings settings;
+  std::vector<vlf::ShadowEmitter> emitters = vlf::SignificantEmitters(*field, settings);
+  ASSERT_EQ(emitters.size(), 2u); // the third is below MinimumPowerFraction
+  const float main = 11.0f * 130.0f * 105.0f, second = 5.0f * 100.0f * 100.0f;
+  EXPECT_NEAR(emitters[0].PowerWeight, main / (main + second), 0.01f);
+  EXPECT_NEAR(emitters[1].PowerWeight, second / (main + second), 0.01f);
+  for (const vlf::ShadowEmitter& e : emitters)
+  {
+    ASSERT_EQ(e.Samples.size(), 9u);
+    float area = 0.0f;
+    for (const glm::vec4& sample : e.Samples)
+    {
+      EXPECT_NEAR(glm::dot(glm::vec3(sample) - e.Light.Position, e.Light.Normal), 0.0f, 1e-5f);
+      area += sample.w;
+    }
+    EXPECT_NEAR(area, static_cast<float>(e.Light.Area), 1e-6f);
+  }
+  // The second light's samples lie on its quad (world x in [50, 150], z in [400, 500]).
+  for (const glm::vec4& sample : emitters[1].Samples)
+  {
+    const glm::vec3 world = vlf::ToWorld(*field, glm::vec3(sample));
+    EXPECT_TRUE(world.x > 50.0f && world.x < 150.0f && world.z > 400.0f && world.z < 500.0f)
+      << world.x << ", " << world.z;
+  }
+  settings.MaximumEmitters = 1;
+  EXPECT_EQ(vlf::SignificantEmitters(*field, settings).size(), 1u);
+  settings.MaximumEmitters = 4;
+
+  const vlf::ObjectMesh cube =
+    vlf::TransformMesh(vlf::TransformMesh(vlf::MakeCube(60.0f),
+                         glm::translate(glm::mat4(1.0f), glm::vec3(100.0f, 400.0f, 450.0f))),
+      vlf::WorldToUnitSphere(*field));
+  const glm::vec3 p = vlf::ToUnit(*field, glm::vec3(100.0f, 0.0f, 450.0f));
+  const glm::vec3 up(0.0f, 1.0f, 0.0f), kd(0.7f), total(1.0f);
+  for (const ShadowMode mode : { ShadowMode::Field, ShadowMode::Soft })
+  {
+    settings.Mode = mode;
+    vlf::ObjectShadows shadows;
+    ASSERT_EQ(shadows.Build(*field, cube, settings), "");
+    EXPECT_EQ(shadows.Maps().size(), mode == ShadowMode::Soft ? 20u : 2u);
+    EXPECT_EQ(shadows.BlockedFraction(0, p, up), 0.0f); // the main light sees p
+    EXPECT_GT(shadows.BlockedFraction(1, p, up), mode == ShadowMode::Soft ? 0.7f : 0.99f);
+    // Only the second light's direct light is lost.
+    const glm::vec3 lost =
+      kd / Pi<float> * shadows.BlockedFraction(1, p, up) * shadows.DirectIrradiance(1, p, up);
+    const glm::vec3 shaded = shadows.Shade(total, p, up, kd);
+    EXPECT_NEAR(shaded.x, total.x - lost.x, 1e-3f * lost.x + 1e-6f);
+    EXPECT_LT(shaded.x, total.x);
+    // Both emitters' maps fit the shader's arrays.
+    const vlf::ShadowGpuData gpu = vlf::PackShadowsForGpu(shadows);
+    EXPECT_EQ(gpu.EmitterCount, 2);
+    EXPECT_EQ(gpu.MapPosition.size(), shadows.Maps().size());
+  }
+  settings.Mode = ShadowMode::Black;
+  vlf::ObjectShadows black;
+  ASSERT_EQ(black.Build(*field, cube, settings), "");
+  EXPECT_NEAR(black.Visibility(p, up), 1.0f - emitters[1].PowerWeight, 1e-5f);
 }
 
 namespace
