@@ -280,6 +280,10 @@ bool vtkLightFieldActor::UseField(const mesolight::vlf::LightField* field)
     }
   }
   ++impl.AtlasVersion;
+  if (this->ShadowData)
+  {
+    this->ShadowData->Dirty = true; // the maps belong to the field's emitters and unit sphere
+  }
   vtkLightFieldMapper* mapper = vtkLightFieldMapper::SafeDownCast(this->Mapper);
   if (mapper)
   {

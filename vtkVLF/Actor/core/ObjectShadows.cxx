@@ -488,13 +488,21 @@ glm::vec3 ObjectShadows::Shade(
       {
         const float b = ShadowMapBlocked(
           this->MapList[maps[i + 1]], p, n, 1, c.DepthBias, c.RemoveBackProjection);
-        lost += b *
-          SampleIrradiance(emitter.Light.Radiance, emitter.Light.Normal, emitter.Samples[i], p, n);
+        if (b > 0.0f) // lit receivers (most) skip the irradiance
+        {
+          lost += b *
+            SampleIrradiance(
+              emitter.Light.Radiance, emitter.Light.Normal, emitter.Samples[i], p, n);
+        }
       }
     }
     else
     {
-      lost += this->BlockedFraction(e, p, n) * this->DirectIrradiance(e, p, n);
+      const float b = this->BlockedFraction(e, p, n);
+      if (b > 0.0f)
+      {
+        lost += b * this->DirectIrradiance(e, p, n);
+      }
     }
   }
   return glm::max(glm::vec3(0.0f), total - kd / Pi<float> * lost);

@@ -118,17 +118,25 @@ vec3 mlShadowed(vec3 total)
     {
       for (int i = 0; i < count; ++i)
       {
-        lost += mlShadowTap(firstMap + i, p, n, 1) * mlShadowSampleIrradiance(e, first + i, p, n);
+        float b = mlShadowTap(firstMap + i, p, n, 1);
+        if (b > 0.0) // lit fragments (most) skip the irradiance
+        {
+          lost += b * mlShadowSampleIrradiance(e, first + i, p, n);
+        }
       }
     }
     else
     {
-      vec3 direct = vec3(0.0);
-      for (int i = 0; i < count; ++i)
+      float b = mlShadowTap(int(mlShadowEmitterIndex[e].z), p, n, kernel);
+      if (b > 0.0)
       {
-        direct += mlShadowSampleIrradiance(e, first + i, p, n);
+        vec3 direct = vec3(0.0);
+        for (int i = 0; i < count; ++i)
+        {
+          direct += mlShadowSampleIrradiance(e, first + i, p, n);
+        }
+        lost += b * direct;
       }
-      lost += mlShadowTap(int(mlShadowEmitterIndex[e].z), p, n, kernel) * direct;
     }
   }
   return max(vec3(0.0), total - mlShadowKdVC / 3.14159265358979 * lost);

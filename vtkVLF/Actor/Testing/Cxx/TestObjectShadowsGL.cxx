@@ -128,3 +128,51 @@ TEST(ShadowMapGL, GpuAndRaytraceDarkeningMatchCore)
 
 } // namespace walkthroughtest
 } // namespace mesolight
+
+namespace mesolight
+{
+namespace walkthroughtest
+{
+// The GPU's cost of the shadow lookup: frames of a 512 x 512 progressive view (the camera
+// rests) with and without the shadow, per mode (a figure; Mesa's software rasteriser on a
+// shared machine, so only the differences mean something).
+TEST(ShadowMapGL, FrameCost)
+{
+  const vlf::LightField& field = MirrorCornellField(513);
+  Viewer viewer(field);
+  viewer.Window->SetSize(512, 512);
+  viewer.SetCamera(
+    field, glm::vec3(440.0f, 350.0f, -150.0f), glm::vec3(440.0f, 0.0f, 120.0f), 40.0f);
+  const vlf::ObjectMesh cube =
+    vlf::TransformMesh(vlf::TransformMesh(vlf::MakeCube(90.0f),
+                         glm::translate(glm::mat4(1.0f), glm::vec3(400.0f, 120.0f, 150.0f))),
+      vlf::WorldToUnitSphere(field));
+  viewer.Actor->SetShadowCasterForTesting(&cube);
+  viewer.Actor->SetRenderModeToProgressive();
+  auto frameSeconds = [&]()
+  {
+    viewer.Window->Render(); // uploads, shader build
+    viewer.Window->Render();
+    const auto start = std::chrono::steady_clock::now();
+    constexpr int frames = 4;
+    for (int f = 0; f < frames; ++f)
+    {
+      viewer.Window->Render();
+    }
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() / frames;
+  };
+  viewer.Actor->SetShadowMapResolution(256);
+  for (const int mode : { vtkLightFieldActor::ShadowNone, vtkLightFieldActor::ShadowField,
+         vtkLightFieldActor::ShadowPCF, vtkLightFieldActor::ShadowSoft })
+  {
+    viewer.Actor->SetShadowMode(mode);
+    const double seconds = frameSeconds();
+    EXPECT_GT(seconds, 0.0);
+    std::printf("[ figures  ] GPU (Mesa llvmpipe) 512x512 progressive frame, shadows %s 256^2: "
+                "%.2f ms\n",
+      vtkLightFieldActor::GetShadowModeAsString(mode), 1e3 * seconds);
+  }
+}
+
+} // namespace walkthroughtest
+} // namespace mesolight
