@@ -120,10 +120,17 @@ TEST(ShadowMapGL, GpuAndRaytraceDarkeningMatchCore)
       EXPECT_EQ(agreeWithout, 0u);
     }
   }
-  // The caster removed: no shadow.
+  // A broken caster is named, casts nothing and crashes nothing; removed: no shadow.
+  vlf::ObjectMesh broken = cube;
+  broken.Points[0].x = std::nanf("");
+  viewer.Actor->SetShadowCasterForTesting(&broken);
+  viewer.Render(vtkLightFieldActor::Progressive);
+  EXPECT_EQ(viewer.Actor->GetObjectShadows(), nullptr);
+  EXPECT_NE(viewer.Actor->GetShadowProblem().find("finite"), std::string::npos);
   viewer.Actor->SetShadowCasterForTesting(nullptr);
   viewer.Render(vtkLightFieldActor::Progressive);
   EXPECT_EQ(viewer.Actor->GetObjectShadows(), nullptr);
+  EXPECT_EQ(viewer.Actor->GetShadowProblem(), "");
 }
 
 } // namespace walkthroughtest
