@@ -232,6 +232,8 @@ TEST(ShadowMapCore, SeveralEmittersEachCastTheirOwnShadow)
     const glm::vec3 shaded = shadows.Shade(total, p, up, kd);
     EXPECT_NEAR(shaded.x, total.x - lost.x, 1e-3f * lost.x + 1e-6f);
     EXPECT_LT(shaded.x, total.x);
+    // A field darker than the blocked direct light (its own error) gives 0, never less.
+    EXPECT_EQ(shadows.Shade(0.5f * lost, p, up, kd), glm::vec3(0.0f));
     // Both emitters' maps fit the shader's arrays.
     const vlf::ShadowGpuData gpu = vlf::PackShadowsForGpu(shadows);
     EXPECT_EQ(gpu.EmitterCount, 2);
