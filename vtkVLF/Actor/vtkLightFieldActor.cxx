@@ -2,6 +2,7 @@
 #include "vtkLightFieldActor.h"
 
 #include "vtkLightFieldActorInternals.h"
+#include "vtkLightFieldActorShadows.h"
 #include "vtkLightFieldMapper.h"
 
 #include "PatchComparison.h" // ToWorld / ToUnit
@@ -57,6 +58,17 @@ vtkSmartPointer<vtkPolyData> MakeScene(const vlf::LightField& field, const vlf::
   vtkNew<vtkUnsignedCharArray> colours;
   colours->SetName("GeometryColour");
   colours->SetNumberOfComponents(3);
+  // Shadows of the movable object: each receiver's unit-sphere point, normal and Kd
+  // (vtkLightFieldShadowFS.glsl).
+  vtkNew<vtkFloatArray> shadowPoints;
+  shadowPoints->SetName("mlShadowPoint");
+  shadowPoints->SetNumberOfComponents(3);
+  vtkNew<vtkFloatArray> shadowNormals;
+  shadowNormals->SetName("mlShadowNormal");
+  shadowNormals->SetNumberOfComponents(3);
+  vtkNew<vtkFloatArray> shadowKd;
+  shadowKd->SetName("mlShadowKd");
+  shadowKd->SetNumberOfComponents(3);
   vtkNew<vtkCellArray> polys;
   for (std::size_t t = 0; t < scene.TriangleCount(); ++t)
   {
@@ -85,6 +97,9 @@ vtkSmartPointer<vtkPolyData> MakeScene(const vlf::LightField& field, const vlf::
       const glm::vec2 tc = atlas.TextureCoordinates(s, unit);
       tcoords->InsertNextTuple2(tc.x, tc.y);
       normals->InsertNextTuple3(n.x, n.y, n.z);
+      shadowPoints->InsertNextTuple3(unit.x, unit.y, unit.z);
+      shadowNormals->InsertNextTuple3(n.x, n.y, n.z);
+      shadowKd->InsertNextTuple3(m.Diffuse.x, m.Diffuse.y, m.Diffuse.z);
       colours->InsertNextTuple3(std::lround(255.0f * std::min(1.0f, colour.x)),
         std::lround(255.0f * std::min(1.0f, colour.y)),
         std::lround(255.0f * std::min(1.0f, colour.z)));
@@ -97,6 +112,9 @@ vtkSmartPointer<vtkPolyData> MakeScene(const vlf::LightField& field, const vlf::
   poly->GetPointData()->SetNormals(normals);
   poly->GetPointData()->SetScalars(colours);
   poly->GetPointData()->AddArray(tcoords);
+  poly->GetPointData()->AddArray(shadowPoints);
+  poly->GetPointData()->AddArray(shadowNormals);
+  poly->GetPointData()->AddArray(shadowKd);
   return poly;
 }
 } // namespace
@@ -262,6 +280,10 @@ bool vtkLightFieldActor::UseField(const mesolight::vlf::LightField* field)
     }
   }
   ++impl.AtlasVersion;
+  if (this->ShadowData)
+  {
+    this->ShadowData->Dirty = true; // the maps belong to the field's emitters and unit sphere
+  }
   vtkLightFieldMapper* mapper = vtkLightFieldMapper::SafeDownCast(this->Mapper);
   if (mapper)
   {
@@ -457,6 +479,7 @@ bool vtkLightFieldActor::PrepareFrame(vtkRenderer* renderer)
   {
     return true;
   }
+  this->PrepareShadows(); // the movable object's shadow maps, if it moved or settings changed
   int width = 0, height = 0, x0 = 0, y0 = 0;
   renderer->GetTiledSizeAndOrigin(&width, &height, &x0, &y0);
   vtkCamera* camera = renderer->GetActiveCamera();
@@ -547,6 +570,7 @@ bool vtkLightFieldActor::PrepareFrame(vtkRenderer* renderer)
   {
     impl.Rect = vlf::PixelRect{ 0, 0, width, height };
     shadeTiles(impl.Rect, true, vlf::SpecularQuality::Raytrace);
+    this->ApplyShadowsToScreen();
     impl.AllScreen = true;
     this->LastFrameConverged = true;
   }
@@ -613,6 +637,232 @@ bool vtkLightFieldActor::PrepareFrame(vtkRenderer* renderer)
 }
 
 //------------------------------------------------------------------------------
+// Shadows of the movable object (vtkLightFieldActorShadows.h, core/ObjectShadows.h).
+//------------------------------------------------------------------------------
+vtkLightFieldActor::ShadowState& vtkLightFieldActor::Shadows()
+{
+  if (!this->ShadowData)
+  {
+    this->ShadowData.reset(new ShadowState);
+  }
+  return *this->ShadowData;
+}
+
+vtkLightFieldActor::ShadowState* vtkLightFieldActor::GetShadowState()
+{
+  return &this->Shadows();
+}
+
+namespace
+{
+template <typename T>
+void SetShadowSetting(
+  vtkLightFieldActor* self, vtkLightFieldActor::ShadowState& state, T& setting, T value)
+{
+  if (setting != value)
+  {
+    setting = value;
+    state.Dirty = true;
+    self->Modified();
+  }
+}
+} // namespace
+
+void vtkLightFieldActor::SetShadowMode(int mode)
+{
+  SetShadowSetting(this, this->Shadows(), this->Shadows().Settings.Mode,
+    static_cast<vlf::ShadowMode>(std::min(std::max(mode, 0), 5)));
+}
+
+int vtkLightFieldActor::GetShadowMode() const
+{
+  return this->ShadowData ? static_cast<int>(this->ShadowData->Settings.Mode) : ShadowField;
+}
+
+const char* vtkLightFieldActor::GetShadowModeAsString(int mode)
+{
+  return vlf::ShadowModeName(static_cast<vlf::ShadowMode>(mode));
+}
+
+int vtkLightFieldActor::GetShadowModeFromString(const std::string& name)
+{
+  vlf::ShadowMode mode;
+  return vlf::ShadowModeFromName(name, mode) ? static_cast<int>(mode) : -1;
+}
+
+void vtkLightFieldActor::SetShadowMapResolution(int texels)
+{
+  SetShadowSetting(this, this->Shadows(), this->Shadows().Settings.Resolution,
+    std::min(std::max(texels, 16), 4096));
+}
+
+int vtkLightFieldActor::GetShadowMapResolution() const
+{
+  return this->ShadowData ? this->ShadowData->Settings.Resolution
+                          : vlf::ShadowSettings().Resolution;
+}
+
+void vtkLightFieldActor::SetShadowEmitterCount(int count)
+{
+  SetShadowSetting(this, this->Shadows(), this->Shadows().Settings.MaximumEmitters,
+    std::min(std::max(count, 1), 8));
+}
+
+int vtkLightFieldActor::GetShadowEmitterCount() const
+{
+  return this->ShadowData ? this->ShadowData->Settings.MaximumEmitters
+                          : vlf::ShadowSettings().MaximumEmitters;
+}
+
+void vtkLightFieldActor::SetShadowAreaSamples(int perSide)
+{
+  SetShadowSetting(
+    this, this->Shadows(), this->Shadows().Settings.AreaSamples, std::min(std::max(perSide, 1), 4));
+}
+
+int vtkLightFieldActor::GetShadowAreaSamples() const
+{
+  return this->ShadowData ? this->ShadowData->Settings.AreaSamples
+                          : vlf::ShadowSettings().AreaSamples;
+}
+
+void vtkLightFieldActor::SetShadowPCFKernel(int texels)
+{
+  const int k = std::min(std::max(texels, 1), 9);
+  SetShadowSetting(
+    this, this->Shadows(), this->Shadows().Settings.PcfKernel, k % 2 == 0 ? k + 1 : k);
+}
+
+int vtkLightFieldActor::GetShadowPCFKernel() const
+{
+  return this->ShadowData ? this->ShadowData->Settings.PcfKernel : vlf::ShadowSettings().PcfKernel;
+}
+
+void vtkLightFieldActor::SetShadowBackProjectionRemoval(bool remove)
+{
+  SetShadowSetting(this, this->Shadows(), this->Shadows().Settings.RemoveBackProjection, remove);
+}
+
+bool vtkLightFieldActor::GetShadowBackProjectionRemoval() const
+{
+  return !this->ShadowData || this->ShadowData->Settings.RemoveBackProjection;
+}
+
+void vtkLightFieldActor::SetShadowCasterForTesting(const mesolight::vlf::ObjectMesh* unitMesh)
+{
+  if (unitMesh)
+  {
+    this->UpdateObjectShadows(*unitMesh);
+  }
+  else
+  {
+    this->ClearObjectShadows();
+  }
+}
+
+void vtkLightFieldActor::UpdateObjectShadows(const mesolight::vlf::ObjectMesh& unitMesh)
+{
+  ShadowState& state = this->Shadows();
+  state.Caster.reset(new vlf::ObjectMesh(unitMesh));
+  state.Dirty = true;
+  this->Modified();
+}
+
+void vtkLightFieldActor::ClearObjectShadows()
+{
+  ShadowState& state = this->Shadows();
+  state.Caster.reset();
+  state.Dirty = true;
+  this->Modified();
+}
+
+const mesolight::vlf::ObjectShadows* vtkLightFieldActor::GetObjectShadows() const
+{
+  return this->ShadowData && !this->ShadowData->Shadows.Empty() ? &this->ShadowData->Shadows
+                                                                : nullptr;
+}
+
+std::string vtkLightFieldActor::GetShadowProblem() const
+{
+  return this->ShadowData ? this->ShadowData->Problem : std::string();
+}
+
+double vtkLightFieldActor::GetLastShadowSeconds() const
+{
+  return this->ShadowData ? this->ShadowData->Shadows.FillSeconds() : 0.0;
+}
+
+void vtkLightFieldActor::PrepareShadows()
+{
+  ShadowState& state = this->Shadows();
+  const vlf::LightField* field = this->Impl->Field;
+  if (!state.Dirty && state.BuiltFor == field)
+  {
+    return;
+  }
+  state.Dirty = false;
+  state.BuiltFor = field;
+  state.Shadows.Clear();
+  state.Gpu = vlf::ShadowGpuData();
+  const std::string before = state.Problem;
+  state.Problem.clear();
+  if (field && state.Caster && state.Settings.Mode != vlf::ShadowMode::None)
+  {
+    state.Problem = state.Shadows.Build(*field, *state.Caster, state.Settings);
+    state.Gpu = vlf::PackShadowsForGpu(state.Shadows);
+    if (!state.Problem.empty() && state.Problem != before)
+    {
+      vtkWarningMacro(<< "the movable object casts no shadow: " << state.Problem);
+    }
+  }
+  ++state.Version;
+}
+
+void vtkLightFieldActor::ApplyShadowsToScreen()
+{
+  Internals& impl = *this->Impl;
+  ShadowState& state = this->Shadows();
+  if (!state.Active() || !impl.Tracer || !impl.Field || impl.Rect.Empty() || !impl.HaveLastView ||
+    impl.Screen.size() != impl.Rect.Pixels() * 4)
+  {
+    return;
+  }
+  // Raytrace mode's CPU pixels: the same darkening as the GPU's on the diffuse surfaces.
+  const vlf::ViewFrame view = impl.LastView;
+  const vlf::PixelRect rect = impl.Rect;
+  const vlf::LightField& field = *impl.Field;
+  const vlf::WalkthroughTracer& tracer = *impl.Tracer;
+  const vlf::ObjectShadows& shadows = state.Shadows;
+  float* screen = impl.Screen.data();
+  mesolight::ParallelFor(static_cast<std::size_t>(rect.Y0), static_cast<std::size_t>(rect.Y1), 4,
+    [&](std::size_t r0, std::size_t r1)
+    {
+      for (int row = static_cast<int>(r0); row < static_cast<int>(r1); ++row)
+      {
+        for (int column = rect.X0; column < rect.X1; ++column)
+        {
+          const mesolight::SceneRay ray =
+            view.Ray(static_cast<float>(column) + 0.5f, static_cast<float>(row) + 0.5f);
+          const mesolight::SceneHit hit = tracer.Embree().Intersect(ray);
+          std::uint32_t s;
+          if (tracer.Classify(ray, hit, s) != vlf::PixelClass::Diffuse)
+          {
+            continue;
+          }
+          float* rgba = screen +
+            (static_cast<std::size_t>(row - rect.Y0) * rect.Width() + (column - rect.X0)) * 4;
+          const glm::vec3 shaded =
+            shadows.Shade(glm::vec3(rgba[0], rgba[1], rgba[2]), ray.Origin + hit.T * ray.Direction,
+              field.Surfaces()[s].Normal, field.MaterialOf(s).Diffuse);
+          rgba[0] = shaded.x;
+          rgba[1] = shaded.y;
+          rgba[2] = shaded.z;
+        }
+      }
+    });
+}
+
+//------------------------------------------------------------------------------
 void vtkLightFieldActor::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
@@ -627,5 +877,10 @@ void vtkLightFieldActor::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "FlipAtlasForTesting: " << this->FlipAtlasForTesting << "\n";
   os << indent << "OverwriteCompositeForTesting: " << this->OverwriteCompositeForTesting << "\n";
   os << indent << "ReflectionBouncesShortForTesting: " << this->ReflectionBouncesShortForTesting
+     << "\n";
+  os << indent << "ShadowMode: " << GetShadowModeAsString(this->GetShadowMode()) << "\n";
+  os << indent << "ShadowMapResolution: " << this->GetShadowMapResolution() << "\n";
+  os << indent
+     << "ShadowCaster: " << (this->ShadowData && this->ShadowData->Caster ? "set" : "(none)")
      << "\n";
 }

@@ -50,6 +50,14 @@ class LightField;
 struct TraceOptions;
 }
 }
+namespace mesolight
+{
+namespace vlf
+{
+struct ObjectMesh;
+class ObjectShadows;
+}
+}
 class vtkPolyData;
 class vtkRenderer;
 class vtkVirtualLightField;
@@ -160,6 +168,59 @@ public:
   ///@}
 
   ///@{
+  /**
+   * Shadows of the movable object on the scene (Wither 2005 ch. 4; the algorithm and its modes:
+   * mesolight::vlf::ObjectShadows in core/ObjectShadows.h). Shadow maps from the field's
+   * significant emitters (at most ShadowEmitterCount, default 4), each placed at the emitter
+   * and fitted to the object, ShadowMapResolution texels a side (default 256). Modes: None;
+   * Black and Blend (Wither's fixed alpha 0.5) darken the radiance; Field (default) removes
+   * the direct light the object blocks and keeps the field's indirect light; PCF filters
+   * ShadowPCFKernel x ShadowPCFKernel texels (default 3); Soft samples each emitter's area by
+   * ShadowAreaSamples^2 points (default 3 x 3), a map each. Drawn on the GPU in the progressive
+   * and coherent modes, applied to the CPU's diffuse pixels in raytrace mode.
+   */
+  enum ShadowModes
+  {
+    ShadowNone = 0,
+    ShadowBlack = 1,
+    ShadowBlend = 2,
+    ShadowField = 3,
+    ShadowPCF = 4,
+    ShadowSoft = 5
+  };
+  void SetShadowMode(int mode);
+  int GetShadowMode() const;
+  /** "none", "black", "blend", "field", "pcf", "soft"; FromString gives -1 for others. */
+  static const char* GetShadowModeAsString(int mode);
+  static int GetShadowModeFromString(const std::string& name);
+  void SetShadowMapResolution(int texels); // clamped to [16, 4096]
+  int GetShadowMapResolution() const;
+  void SetShadowEmitterCount(int count); // clamped to [1, 8]
+  int GetShadowEmitterCount() const;
+  void SetShadowAreaSamples(int perSide); // clamped to [1, 4]
+  int GetShadowAreaSamples() const;
+  void SetShadowPCFKernel(int texels); // odd, clamped to [1, 9]
+  int GetShadowPCFKernel() const;
+  /** Negative tests only: false shadows receivers behind the light or facing away from it. */
+  void SetShadowBackProjectionRemoval(bool remove);
+  bool GetShadowBackProjectionRemoval() const;
+  /**
+   * Testing (until the movable object is set through the actor): the object that casts
+   * shadows, a triangle mesh in the field's unit sphere (mesolight::vlf::TransformMesh with
+   * WorldToUnitSphere), copied; nullptr removes it.
+   */
+  void SetShadowCasterForTesting(const mesolight::vlf::ObjectMesh* unitMesh);
+  /** The maps of the last frame (nullptr when no object casts shadows). */
+  const mesolight::vlf::ObjectShadows* GetObjectShadows() const;
+  /** Why the object casts no shadow ("" when it does or there is no object). */
+  std::string GetShadowProblem() const;
+  /** CPU seconds of the last rebuild of the maps (placement and fill). */
+  double GetLastShadowSeconds() const;
+  struct ShadowState;
+  ShadowState* GetShadowState();
+  ///@}
+
+  ///@{
   /** Used by vtkLightFieldMapper while drawing. */
   struct Internals;
   Internals* GetInternals() { return this->Impl.get(); }
@@ -187,6 +248,16 @@ private:
   }
   // Starts the worker on the last view's reflections unless it has them or is on them.
   void TraceAtRest();
+
+  // Shadows of the movable object: the caster (unit sphere) changed or went away; the maps
+  // are rebuilt by PrepareShadows at the next frame. ApplyShadowsToScreen darkens raytrace
+  // mode's diffuse pixels.
+  void UpdateObjectShadows(const mesolight::vlf::ObjectMesh& unitMesh);
+  void ClearObjectShadows();
+  void PrepareShadows();
+  void ApplyShadowsToScreen();
+  ShadowState& Shadows();
+  std::unique_ptr<ShadowState> ShadowData;
 
   int RenderMode = Progressive;
   double Exposure = 1.0;

@@ -3,7 +3,9 @@
 
 #include "vtkLightFieldActor.h"
 #include "vtkLightFieldActorInternals.h"
+#include "vtkLightFieldActorShadows.h"
 #include "vtkLightFieldFS.h"
+#include "vtkLightFieldShadowFS.h"
 
 #include "vtkDataObject.h"
 #include "vtkObjectFactory.h"
@@ -23,6 +25,14 @@ vtkLightFieldMapper::vtkLightFieldMapper()
   // Our own attribute: VTK uploads "tcoord" only when the actor has a texture.
   this->MapDataArrayToVertexAttribute(
     "mlAtlasTC", GetAtlasCoordinatesName(), vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
+  // Shadows of the movable object: each receiver's unit-sphere point, normal and Kd
+  // (vtkLightFieldActor's scene; not VTK's vertexMC, which VTK may shift and scale).
+  this->MapDataArrayToVertexAttribute(
+    "mlShadowPoint", "mlShadowPoint", vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
+  this->MapDataArrayToVertexAttribute(
+    "mlShadowNormal", "mlShadowNormal", vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
+  this->MapDataArrayToVertexAttribute(
+    "mlShadowKd", "mlShadowKd", vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
 }
 
 //------------------------------------------------------------------------------
@@ -121,10 +131,15 @@ void vtkLightFieldMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* act)
   {
     this->SetScalarVisibility(!this->Radiance);
   }
+  this->Shadowing = this->Radiance && this->UploadShadows(ren, act);
   if (this->Radiance)
   {
     this->AtlasTexture->Activate();
     this->ScreenTexture->Activate();
+  }
+  if (this->Shadowing)
+  {
+    this->ShadowTexture->Activate();
   }
   this->Superclass::RenderPieceStart(ren, act);
 }
@@ -133,6 +148,10 @@ void vtkLightFieldMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* act)
 void vtkLightFieldMapper::RenderPieceFinish(vtkRenderer* ren, vtkActor* act)
 {
   this->Superclass::RenderPieceFinish(ren, act);
+  if (this->Shadowing)
+  {
+    this->ShadowTexture->Deactivate();
+  }
   if (this->Radiance)
   {
     this->ScreenTexture->Deactivate();
@@ -182,6 +201,7 @@ void vtkLightFieldMapper::SetMapperShaderParameters(
   uniforms.AllScreen = this->AllScreen;
   uniforms.Overwrite = this->Overwrite;
   SetRadianceUniforms(cellBO.Program, uniforms);
+  this->SetShadowUniforms(cellBO.Program, act);
 }
 
 //------------------------------------------------------------------------------
@@ -212,8 +232,17 @@ void vtkLightFieldMapper::ReplaceRadianceShaderValues(
     vs, "//VTK::Normal::Dec", "in vec2 mlAtlasTC;\nout vec2 mlAtlasTCVC;\n//VTK::Normal::Dec");
   vtkShaderProgram::Substitute(
     vs, "//VTK::Normal::Impl", "mlAtlasTCVC = mlAtlasTC;\n  //VTK::Normal::Impl");
+  // Shadows of the movable object: the receiver's unit-sphere point, normal and Kd for
+  // vtkLightFieldShadowFS.glsl.
+  vtkShaderProgram::Substitute(vs, "//VTK::Normal::Dec",
+    "in vec3 mlShadowPoint;\nin vec3 mlShadowNormal;\nin vec3 mlShadowKd;\n"
+    "out vec3 mlShadowPointVC;\n"
+    "out vec3 mlShadowNormalVC;\nout vec3 mlShadowKdVC;\n//VTK::Normal::Dec");
+  vtkShaderProgram::Substitute(vs, "//VTK::Normal::Impl",
+    "mlShadowPointVC = mlShadowPoint;\n  mlShadowNormalVC = mlShadowNormal;\n"
+    "  mlShadowKdVC = mlShadowKd;\n  //VTK::Normal::Impl");
   vtkShaderProgram::Substitute(fs, "//VTK::CustomUniforms::Dec",
-    std::string("//VTK::CustomUniforms::Dec\n") + vtkLightFieldFS);
+    std::string("//VTK::CustomUniforms::Dec\n") + vtkLightFieldShadowFS + vtkLightFieldFS);
   // VTK's lighting gives way to the field's radiance.
   vtkShaderProgram::Substitute(fs, "//VTK::Light::Impl", "//MESOLIGHT::LightField::Impl");
   shaders[vtkShader::Vertex]->SetSource(vs);
@@ -250,9 +279,86 @@ void vtkLightFieldMapper::ReleaseGraphicsResources(vtkWindow* window)
   {
     this->ScreenTexture->ReleaseGraphicsResources(window);
   }
+  if (this->ShadowTexture)
+  {
+    this->ShadowTexture->ReleaseGraphicsResources(window);
+  }
+  this->ShadowVersion = 0;
   this->AtlasVersion = 0;
   this->BuiltRadiance.clear();
   this->Superclass::ReleaseGraphicsResources(window);
+}
+
+//------------------------------------------------------------------------------
+bool vtkLightFieldMapper::UploadShadows(vtkRenderer* ren, vtkActor* act)
+{
+  vtkLightFieldActor* actor = vtkLightFieldActor::SafeDownCast(act);
+  vtkLightFieldActor::ShadowState* state = actor ? actor->GetShadowState() : nullptr;
+  vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+  if (!state || !state->Active() || !window)
+  {
+    return false;
+  }
+  if (this->ShadowTexture && this->ShadowTexture->GetHandle() != 0 &&
+    this->ShadowTexture->GetContext() == window && this->ShadowVersion == state->Version)
+  {
+    return true; // uploaded once per rebuild of the maps
+  }
+  if (!this->ShadowTexture)
+  {
+    this->ShadowTexture = vtkSmartPointer<vtkTextureObject>::New();
+  }
+  this->ShadowTexture->SetContext(window);
+  // Read with texelFetch: no filtering, the shader compares depths per texel.
+  this->ShadowTexture->SetMinificationFilter(vtkTextureObject::Nearest);
+  this->ShadowTexture->SetMagnificationFilter(vtkTextureObject::Nearest);
+  this->ShadowTexture->SetWrapS(vtkTextureObject::ClampToEdge);
+  this->ShadowTexture->SetWrapT(vtkTextureObject::ClampToEdge);
+  const mesolight::vlf::ShadowGpuData& gpu = state->Gpu;
+  if (!this->ShadowTexture->Create2DFromRaw(static_cast<unsigned int>(gpu.Width),
+        static_cast<unsigned int>(gpu.Height), 1, VTK_FLOAT, const_cast<float*>(gpu.Depth.data())))
+  {
+    vtkErrorMacro(<< "could not upload the " << gpu.Width << "x" << gpu.Height
+                  << " shadow map texture: the object casts no shadow");
+    return false;
+  }
+  this->ShadowVersion = state->Version;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkLightFieldMapper::SetShadowUniforms(vtkShaderProgram* program, vtkActor* act)
+{
+  vtkLightFieldActor* actor = vtkLightFieldActor::SafeDownCast(act);
+  vtkLightFieldActor::ShadowState* state = actor ? actor->GetShadowState() : nullptr;
+  if (!this->Shadowing || !state)
+  {
+    program->SetUniformi("mlShadowMode", 0);
+    program->SetUniformi("mlShadowEmitterCount", 0);
+    return;
+  }
+  const mesolight::vlf::ShadowGpuData& gpu = state->Gpu;
+  program->SetUniformi("mlShadowMode", gpu.Mode);
+  program->SetUniformi("mlShadowDepth", this->ShadowTexture->GetTextureUnit());
+  program->SetUniformi("mlShadowColumns", gpu.Columns);
+  program->SetUniformi("mlShadowResolution", gpu.Resolution);
+  program->SetUniformi("mlShadowEmitterCount", gpu.EmitterCount);
+  program->SetUniform4f("mlShadowParams", &gpu.Params.x);
+  auto arrays = [&](const char* name, const std::vector<glm::vec4>& values)
+  {
+    if (!values.empty())
+    {
+      program->SetUniform4fv(name, static_cast<int>(values.size()), &values[0].x);
+    }
+  };
+  arrays("mlShadowMapPosition", gpu.MapPosition);
+  arrays("mlShadowMapAxisX", gpu.MapAxisX);
+  arrays("mlShadowMapAxisY", gpu.MapAxisY);
+  arrays("mlShadowMapAxisZ", gpu.MapAxisZ);
+  arrays("mlShadowEmitterRadiance", gpu.EmitterRadiance);
+  arrays("mlShadowEmitterNormal", gpu.EmitterNormal);
+  arrays("mlShadowEmitterIndex", gpu.EmitterIndex);
+  arrays("mlShadowSample", gpu.Samples);
 }
 
 //------------------------------------------------------------------------------

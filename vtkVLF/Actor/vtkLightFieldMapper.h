@@ -77,6 +77,16 @@ private:
   void operator=(const vtkLightFieldMapper&) = delete;
 
   bool UploadAtlas(vtkRenderer* ren, vtkActor* act);
+
+  ///@{
+  /** Shadows of the movable object (vtkLightFieldActor::SetShadowMode): the maps' texture,
+   * uploaded when the actor rebuilds them, and their uniforms (mode 0 when there are none). */
+  bool UploadShadows(vtkRenderer* ren, vtkActor* act);
+  void SetShadowUniforms(vtkShaderProgram* program, vtkActor* act);
+  vtkSmartPointer<vtkTextureObject> ShadowTexture;
+  unsigned long ShadowVersion = 0;
+  bool Shadowing = false; // this draw reads ShadowTexture
+  ///@}
   bool UploadScreen(vtkRenderer* ren, vtkActor* act);
 
   bool Radiance = false;                     // this draw replaces VTK's lighting

@@ -48,5 +48,6 @@ vec3 mlRadiance()
   }
   // Mirror fragments (and all fragments in raytrace) take the screen value where it has one.
   float weight = (mlAllScreen == 1 || atlas.a > 0.5) ? step(0.25, screen.a) : 0.0;
-  return mix(atlas.rgb, screen.rgb, weight);
+  // The movable object's shadow darkens the diffuse value (vtkLightFieldShadowFS.glsl).
+  return mix(mlShadowed(atlas.rgb), screen.rgb, weight);
 }

@@ -1,0 +1,492 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Shadows of a movable object (ObjectShadows, Wither 2005 ch. 4): map placement and fill against
+// analytic depths, back projection removed (and present with the removal off), and the floor of
+// the Cornell box under a cube against the path tracer with the cube in the scene (the field is
+// propagated without it): mean relative error per mode, field-derived darkening best; the cost
+// of filling and looking up maps per resolution. `ctest -R ShadowMap`.
+#include "ObjectShadows.h"
+#include "WalkthroughTestFields.h"
+
+#include "EmbreeScene.h"
+#include "Lookup.h"
+#include "MathConstants.h"
+#include "ParallelFor.h"
+#include "PatchComparison.h"
+#include "PathTracer.h"
+
+#include <gtest/gtest.h>
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <memory>
+
+namespace mesolight
+{
+namespace
+{
+using vlf::ShadowMode;
+
+// A one-sample emitter at `position` facing `normal` (for synthetic set-ups).
+vlf::ShadowEmitter PointEmitter(const glm::vec3& position, const glm::vec3& normal)
+{
+  vlf::ShadowEmitter emitter;
+  emitter.Light.Position = position;
+  emitter.Light.Normal = normal;
+  emitter.Light.Radiance = glm::vec3(1.0f);
+  emitter.Light.Area = 1e-3;
+  emitter.Samples.emplace_back(position, 1e-3f);
+  return emitter;
+}
+
+float Mean(const glm::vec3& v)
+{
+  return (v.x + v.y + v.z) / 3.0f;
+}
+
+// The Cornell box test cube (millimetres): side 90, centred 120 above the floor in the free
+// front-right quarter, so its shadow falls on open floor.
+const glm::vec3 CubeCentre(400.0f, 120.0f, 150.0f);
+constexpr float CubeSide = 90.0f;
+
+vlf::ObjectMesh WorldCube()
+{
+  return vlf::TransformMesh(vlf::MakeCube(CubeSide), glm::translate(glm::mat4(1.0f), CubeCentre));
+}
+} // namespace
+
+TEST(ShadowMapCore, PlacementFitsTheObjectAndDepthsAreExact)
+{
+  // A unit-sphere-sized set-up: a cube of side 0.2 at the origin, a light 0.8 above it.
+  const vlf::ObjectMesh cube = vlf::MakeCube(0.2f);
+  vlf::ShadowSettings settings;
+  settings.Resolution = 128;
+  vlf::ObjectShadows shadows;
+  ASSERT_EQ(
+    shadows.Build(
+      { PointEmitter(glm::vec3(0.0f, 0.8f, 0.0f), glm::vec3(0.0f, -1.0f, 0.0f)) }, cube, settings),
+    "");
+  ASSERT_EQ(shadows.Maps().size(), 1u);
+  const vlf::ShadowMap& map = shadows.Maps()[0];
+  EXPECT_NEAR(glm::length(map.AxisZ - glm::vec3(0.0f, -1.0f, 0.0f)), 0.0f, 1e-6f);
+  // Frustum tangent to the bounding sphere (radius 0.1 sqrt 3), planes around it.
+  const float r = 0.1f * std::sqrt(3.0f);
+  EXPECT_NEAR(map.Near, 0.8f - r, 2e-3f);
+  EXPECT_NEAR(map.Far, 0.8f + r, 1e-5f);
+  // Every covered texel holds the top face's depth (0.7) or the sides' (larger); the centre
+  // texel exactly 0.7; the covered fraction matches the top face's projected square.
+  const int res = map.Resolution;
+  EXPECT_NEAR(map.Depth[(res / 2) * res + res / 2], 0.7f, 1e-5f);
+  int covered = 0;
+  for (const float d : map.Depth)
+  {
+    if (d < vlf::ShadowMap::EmptyDepth)
+    {
+      ++covered;
+      EXPECT_GE(d, 0.7f - 1e-5f);
+      EXPECT_LE(d, 0.9f + 1e-5f);
+    }
+  }
+  // The footprint is the top face's square (the nearest, so the widest, at depth 0.7): half
+  // side 0.1 / 0.7 / tan.
+  const float half = 0.1f / 0.7f / map.TanHalfAngle;
+  const float expected = half * half * res * res;
+  EXPECT_NEAR(covered / expected, 1.0f, 0.05f);
+  // A point under the cube is blocked, one beside it is not.
+  EXPECT_EQ(vlf::ShadowMapBlocked(
+              map, glm::vec3(0.0f, -0.5f, 0.0f), glm::vec3(0, 1, 0), 1, settings.DepthBias, true),
+    1.0f);
+  EXPECT_EQ(vlf::ShadowMapBlocked(
+              map, glm::vec3(0.5f, -0.5f, 0.0f), glm::vec3(0, 1, 0), 1, settings.DepthBias, true),
+    0.0f);
+  // The cube's own top face (a receiver touching the caster) is not self-shadowed.
+  EXPECT_EQ(vlf::ShadowMapBlocked(
+              map, glm::vec3(0.0f, 0.1f, 0.0f), glm::vec3(0, 1, 0), 1, settings.DepthBias, true),
+    0.0f);
+  // Bad settings and meshes are named, never used.
+  settings.Resolution = 8;
+  EXPECT_NE(
+    shadows
+      .Build({ PointEmitter(glm::vec3(0.0f, 0.8f, 0.0f), glm::vec3(0, -1, 0)) }, cube, settings)
+      .find("resolution 8"),
+    std::string::npos);
+  EXPECT_TRUE(shadows.Empty());
+  settings.Resolution = 64;
+  EXPECT_NE(shadows.Build(std::vector<vlf::ShadowEmitter>(), cube, settings).find("no emitter"),
+    std::string::npos);
+  EXPECT_NE(shadows
+              .Build({ PointEmitter(glm::vec3(0.0f, 0.8f, 0.0f), glm::vec3(0, -1, 0)) },
+                vlf::ObjectMesh(), settings)
+              .find("no triangles"),
+    std::string::npos);
+  EXPECT_EQ(shadows.Shade(
+              glm::vec3(1.0f), glm::vec3(0.0f, -0.5f, 0.0f), glm::vec3(0, 1, 0), glm::vec3(0.5f)),
+    glm::vec3(1.0f));
+}
+
+TEST(ShadowMapCore, BackProjectionRemovedAndPresentWithoutRemoval)
+{
+  // Light at the origin facing down, a cube below it. Receivers: under the cube facing the light
+  // (a real shadow), behind the light facing it (the object's image mirrored through the centre
+  // of projection), under the cube facing away from the light.
+  const vlf::ObjectMesh cube = vlf::TransformMesh(
+    vlf::MakeCube(0.2f), glm::translate(glm::mat4(1.0f), glm::vec3(0, -0.4f, 0)));
+  const std::vector<vlf::ShadowEmitter> light = { PointEmitter(
+    glm::vec3(0.0f), glm::vec3(0, -1, 0)) };
+  const glm::vec3 up(0, 1, 0), down(0, -1, 0);
+  for (const bool removal : { true, false })
+  {
+    vlf::ShadowSettings settings;
+    settings.Mode = ShadowMode::Black;
+    settings.RemoveBackProjection = removal;
+    vlf::ObjectShadows shadows;
+    ASSERT_EQ(shadows.Build(light, cube, settings), "");
+    SCOPED_TRACE(removal ? "removal on" : "removal off");
+    EXPECT_EQ(shadows.Visibility(glm::vec3(0.0f, -0.8f, 0.0f), up), 0.0f); // real shadow
+    const float behind = shadows.Visibility(glm::vec3(0.0f, 0.5f, 0.0f), down);
+    const float away = shadows.Visibility(glm::vec3(0.0f, -0.8f, 0.0f), down);
+    if (removal)
+    {
+      EXPECT_EQ(behind, 1.0f) << "a receiver behind the light is shadowed";
+      EXPECT_EQ(away, 1.0f) << "a receiver facing away from the light is shadowed";
+    }
+    else
+    {
+      // Negative test: without the removal the plain depth test shadows both.
+      EXPECT_EQ(behind, 0.0f);
+      EXPECT_EQ(away, 0.0f);
+    }
+  }
+}
+
+TEST(ShadowMapCore, SeveralEmittersEachCastTheirOwnShadow)
+{
+  // The Cornell box with a second, weaker ceiling light (a third of the main one's power) over
+  // the back-left corner and a third one too weak to matter; the cube hangs under the second.
+  TriangleScene scene = MakeCornellBox();
+  for (const float le : { 5.0f, 0.02f })
+  {
+    SceneMaterial light;
+    light.Name = "extra light";
+    light.Diffuse = glm::vec3(0.78f);
+    light.Emission = glm::vec3(le);
+    const float x = le > 1.0f ? 50.0f : 400.0f;
+    scene.AddPolygon({ { x, 548.7f, 400.0f }, { x + 100.0f, 548.7f, 400.0f },
+                       { x + 100.0f, 548.7f, 500.0f }, { x, 548.7f, 500.0f } },
+      scene.AddMaterial(light));
+  }
+  vlf::LightFieldSettings fieldSettings;
+  fieldSettings.Directions = 33;
+  fieldSettings.RaysPerSide = 8;
+  fieldSettings.TilesPerSide = 2;
+  const std::unique_ptr<vlf::LightField> field = vlf::LightField::CreateEmpty(scene, fieldSettings);
+  vlf::ShadowSettings settings;
+  std::vector<vlf::ShadowEmitter> emitters = vlf::SignificantEmitters(*field, settings);
+  ASSERT_EQ(emitters.size(), 2u); // the third is below MinimumPowerFraction
+  const float main = 11.0f * 130.0f * 105.0f, second = 5.0f * 100.0f * 100.0f;
+  EXPECT_NEAR(emitters[0].PowerWeight, main / (main + second), 0.01f);
+  EXPECT_NEAR(emitters[1].PowerWeight, second / (main + second), 0.01f);
+  for (const vlf::ShadowEmitter& e : emitters)
+  {
+    ASSERT_EQ(e.Samples.size(), 9u);
+    float area = 0.0f;
+    for (const glm::vec4& sample : e.Samples)
+    {
+      EXPECT_NEAR(glm::dot(glm::vec3(sample) - e.Light.Position, e.Light.Normal), 0.0f, 1e-5f);
+      area += sample.w;
+    }
+    EXPECT_NEAR(area, static_cast<float>(e.Light.Area), 1e-6f);
+  }
+  // The second light's samples lie on its quad (world x in [50, 150], z in [400, 500]).
+  for (const glm::vec4& sample : emitters[1].Samples)
+  {
+    const glm::vec3 world = vlf::ToWorld(*field, glm::vec3(sample));
+    EXPECT_TRUE(world.x > 50.0f && world.x < 150.0f && world.z > 400.0f && world.z < 500.0f)
+      << world.x << ", " << world.z;
+  }
+  settings.MaximumEmitters = 1;
+  EXPECT_EQ(vlf::SignificantEmitters(*field, settings).size(), 1u);
+  settings.MaximumEmitters = 4;
+
+  const vlf::ObjectMesh cube =
+    vlf::TransformMesh(vlf::TransformMesh(vlf::MakeCube(60.0f),
+                         glm::translate(glm::mat4(1.0f), glm::vec3(100.0f, 400.0f, 450.0f))),
+      vlf::WorldToUnitSphere(*field));
+  const glm::vec3 p = vlf::ToUnit(*field, glm::vec3(100.0f, 0.0f, 450.0f));
+  const glm::vec3 up(0.0f, 1.0f, 0.0f), kd(0.7f), total(1.0f);
+  for (const ShadowMode mode : { ShadowMode::Field, ShadowMode::Soft })
+  {
+    settings.Mode = mode;
+    vlf::ObjectShadows shadows;
+    ASSERT_EQ(shadows.Build(*field, cube, settings), "");
+    EXPECT_EQ(shadows.Maps().size(), mode == ShadowMode::Soft ? 20u : 2u);
+    EXPECT_EQ(shadows.BlockedFraction(0, p, up), 0.0f); // the main light sees p
+    EXPECT_GT(shadows.BlockedFraction(1, p, up), mode == ShadowMode::Soft ? 0.7f : 0.99f);
+    // Only the second light's direct light is lost.
+    const glm::vec3 lost =
+      kd / Pi<float> * shadows.BlockedFraction(1, p, up) * shadows.DirectIrradiance(1, p, up);
+    const glm::vec3 shaded = shadows.Shade(total, p, up, kd);
+    EXPECT_NEAR(shaded.x, total.x - lost.x, 1e-3f * lost.x + 1e-6f);
+    EXPECT_LT(shaded.x, total.x);
+    // A field darker than the blocked direct light (its own error) gives 0, never less.
+    EXPECT_EQ(shadows.Shade(0.5f * lost, p, up, kd), glm::vec3(0.0f));
+    // Both emitters' maps fit the shader's arrays.
+    const vlf::ShadowGpuData gpu = vlf::PackShadowsForGpu(shadows);
+    EXPECT_EQ(gpu.EmitterCount, 2);
+    EXPECT_EQ(gpu.MapPosition.size(), shadows.Maps().size());
+  }
+  settings.Mode = ShadowMode::Black;
+  vlf::ObjectShadows black;
+  ASSERT_EQ(black.Build(*field, cube, settings), "");
+  EXPECT_NEAR(black.Visibility(p, up), 1.0f - emitters[1].PowerWeight, 1e-5f);
+}
+
+namespace
+{
+struct FloorReceivers
+{
+  std::vector<glm::vec3> World, Unit;
+  std::vector<glm::vec3> Reference; // path tracer, cube in the scene
+  std::vector<glm::vec3> Field;     // the field's diffuse radiance (propagated without the cube)
+  std::uint32_t Surface = 0;
+  glm::vec3 Kd{ 0.0f };
+};
+
+// An n x n grid of floor points around the cube's shadow, their path-traced radiance with the
+// cube in the scene (cached per process) and the field's.
+const FloorReceivers& Receivers(const vlf::LightField& field)
+{
+  static std::unique_ptr<FloorReceivers> cached;
+  if (cached)
+  {
+    return *cached;
+  }
+  cached.reset(new FloorReceivers);
+  FloorReceivers& r = *cached;
+  TriangleScene scene = MakeCornellBox();
+  const std::size_t floorTriangles = scene.TriangleCount();
+  const vlf::ObjectMesh cube = WorldCube();
+  SceneMaterial material;
+  material.Name = "object";
+  material.Diffuse = cube.Kd;
+  const std::uint32_t id = scene.AddMaterial(material);
+  for (const glm::uvec3& t : cube.Triangles)
+  {
+    scene.AddPolygon({ cube.Points[t.x], cube.Points[t.y], cube.Points[t.z] }, id);
+  }
+  const EmbreeScene embree(scene);
+  const PathTracer tracer(embree);
+  constexpr int n = 14;
+  for (int b = 0; b < n; ++b)
+  {
+    for (int a = 0; a < n; ++a)
+    {
+      const glm::vec3 p(340.0f + 200.0f * (a + 0.5f) / n, 0.0f, 10.0f + 200.0f * (b + 0.5f) / n);
+      // The floor triangle under p (the box's floor: y = 0, facing up).
+      std::size_t triangle = floorTriangles;
+      for (std::size_t t = 0; t < floorTriangles; ++t)
+      {
+        const glm::vec3 fn = glm::normalize(scene.FaceNormal(t));
+        if (fn.y < 0.99f || std::abs(scene.Vertex(t, 0).y) > 1.0f)
+        {
+          continue;
+        }
+        const glm::vec3 v0 = scene.Vertex(t, 0), v1 = scene.Vertex(t, 1), v2 = scene.Vertex(t, 2);
+        const float w0 = glm::dot(glm::cross(v2 - v1, p - v1), fn);
+        const float w1 = glm::dot(glm::cross(v0 - v2, p - v2), fn);
+        const float w2 = glm::dot(glm::cross(v1 - v0, p - v0), fn);
+        if (w0 >= 0.0f && w1 >= 0.0f && w2 >= 0.0f)
+        {
+          triangle = t;
+          break;
+        }
+      }
+      if (triangle == floorTriangles)
+      {
+        ADD_FAILURE() << "no floor under " << p.x << ", " << p.z;
+        continue;
+      }
+      r.Surface = field.SurfaceOfTriangle(triangle);
+      r.World.push_back(p);
+      r.Unit.push_back(vlf::ToUnit(field, p));
+    }
+  }
+  r.Kd = field.MaterialOf(r.Surface).Diffuse;
+  r.Reference.resize(r.World.size());
+  r.Field.resize(r.World.size());
+  const vlf::Lookup lookup(field);
+  for (std::size_t i = 0; i < r.World.size(); ++i)
+  {
+    r.Field[i] = lookup.DiffuseRadiance(r.Surface, r.Unit[i]);
+  }
+  // The floor triangle of each point again inside the tracer (DiffuseRadianceLeaving wants one).
+  ParallelFor(0, r.World.size(), 1,
+    [&](std::size_t i0, std::size_t i1)
+    {
+      for (std::size_t i = i0; i < i1; ++i)
+      {
+        std::size_t triangle = 0;
+        for (std::size_t t = 0; t < floorTriangles; ++t)
+        {
+          if (field.SurfaceOfTriangle(t) == r.Surface)
+          {
+            triangle = t;
+            break;
+          }
+        }
+        r.Reference[i] = tracer.DiffuseRadianceLeaving(
+          static_cast<std::uint32_t>(triangle), r.World[i], 4096, 1000 + i);
+      }
+    });
+  return r;
+}
+
+struct ModeError
+{
+  double All = 0.0, Shadowed = 0.0, Lit = 0.0;
+  int ShadowedCount = 0;
+};
+
+// Mean relative error (mean of RGB) over all receivers and over those the soft shadow touches.
+ModeError Errors(
+  const FloorReceivers& r, const vlf::ObjectShadows& shadows, const vlf::ObjectShadows& soft)
+{
+  ModeError e;
+  const glm::vec3 up(0.0f, 1.0f, 0.0f);
+  for (std::size_t i = 0; i < r.Unit.size(); ++i)
+  {
+    const glm::vec3 shaded = shadows.Shade(r.Field[i], r.Unit[i], up, r.Kd);
+    const double error = std::abs(Mean(shaded) - Mean(r.Reference[i])) / Mean(r.Reference[i]);
+    e.All += error;
+    if (soft.BlockedFraction(0, r.Unit[i], up) > 0.0f)
+    {
+      e.Shadowed += error;
+      ++e.ShadowedCount;
+    }
+    else
+    {
+      e.Lit += error;
+    }
+  }
+  e.All /= static_cast<double>(r.Unit.size());
+  e.Shadowed /= std::max(1, e.ShadowedCount);
+  e.Lit /= std::max(1, static_cast<int>(r.Unit.size()) - e.ShadowedCount);
+  return e;
+}
+} // namespace
+
+TEST(ShadowMapCore, FloorAgainstPathTracerFieldDerivedBest)
+{
+  // 2049 directions: at 513 the small light reaches each floor texel along a handful of
+  // directions, and that aliasing (about 10% in the lit floor) is what the field-derived
+  // subtraction leaves in the umbra.
+  const vlf::LightField& field = walkthroughtest::PlainCornellField(2049);
+  const FloorReceivers& r = Receivers(field);
+  ASSERT_EQ(r.World.size(), 14u * 14u);
+  const vlf::ObjectMesh cube = vlf::TransformMesh(WorldCube(), vlf::WorldToUnitSphere(field));
+  vlf::ShadowSettings softSettings;
+  softSettings.Mode = ShadowMode::Soft;
+  vlf::ObjectShadows soft;
+  ASSERT_EQ(soft.Build(field, cube, softSettings), "");
+  ASSERT_EQ(soft.Emitters().size(), 1u); // the Cornell box has one light
+  EXPECT_EQ(soft.Emitters()[0].Samples.size(), 9u);
+
+  const ShadowMode modes[] = { ShadowMode::None, ShadowMode::Black, ShadowMode::Blend,
+    ShadowMode::Field, ShadowMode::PCF, ShadowMode::Soft };
+  std::map<int, ModeError> at256;
+  for (const int resolution : { 128, 256, 512, 1024 })
+  {
+    for (const ShadowMode mode : modes)
+    {
+      vlf::ShadowSettings settings;
+      settings.Mode = mode;
+      settings.Resolution = resolution;
+      vlf::ObjectShadows shadows;
+      ASSERT_EQ(shadows.Build(field, cube, settings), "");
+      const ModeError e = Errors(r, shadows, soft);
+      if (resolution == 256)
+      {
+        at256[static_cast<int>(mode)] = e;
+      }
+      std::printf("[ figures  ] shadows %-5s %4d^2: mean relative error %.1f%% over %zu floor "
+                  "points, %.1f%% over the %d in or near the shadow\n",
+        vlf::ShadowModeName(mode), resolution, 100.0 * e.All, r.Unit.size(), 100.0 * e.Shadowed,
+        e.ShadowedCount);
+    }
+  }
+  // The field's own error on the lit floor sets the floor of every mode's error.
+  const ModeError none = at256[static_cast<int>(ShadowMode::None)];
+  const ModeError black = at256[static_cast<int>(ShadowMode::Black)];
+  const ModeError blend = at256[static_cast<int>(ShadowMode::Blend)];
+  const ModeError fieldDerived = at256[static_cast<int>(ShadowMode::Field)];
+  const ModeError pcf = at256[static_cast<int>(ShadowMode::PCF)];
+  const ModeError softError = at256[static_cast<int>(ShadowMode::Soft)];
+  std::printf("[ figures  ] shadows: the field's own error on the %d lit floor points (no shadow "
+              "there): %.1f%%\n",
+    static_cast<int>(r.Unit.size()) - none.ShadowedCount, 100.0 * none.Lit);
+  EXPECT_GT(fieldDerived.ShadowedCount, 40);
+  EXPECT_LT(fieldDerived.All, blend.All);
+  EXPECT_LT(fieldDerived.All, black.All);
+  EXPECT_LT(fieldDerived.All, none.All);
+  EXPECT_LT(fieldDerived.Shadowed, blend.Shadowed);
+  EXPECT_LT(fieldDerived.Shadowed, black.Shadowed);
+  // The penumbra: filtering and the area samples do better than the hard edge.
+  EXPECT_LT(softError.All, fieldDerived.All);
+  EXPECT_LT(pcf.All, blend.All);
+}
+
+TEST(ShadowMapCore, CostPerResolution)
+{
+  const vlf::LightField& field = walkthroughtest::PlainCornellField(2049);
+  const vlf::ObjectMesh sphere =
+    vlf::TransformMesh(vlf::TransformMesh(vlf::MakeSphere(0.5f * CubeSide, 24, 48),
+                         glm::translate(glm::mat4(1.0f), CubeCentre)),
+      vlf::WorldToUnitSphere(field));
+  // Receivers: a grid over the floor's unit-sphere bounds.
+  const glm::vec3 lower = vlf::ToUnit(field, glm::vec3(0.0f, 0.0f, 0.0f));
+  const glm::vec3 upper = vlf::ToUnit(field, glm::vec3(550.0f, 0.0f, 550.0f));
+  std::vector<glm::vec3> points;
+  for (int b = 0; b < 256; ++b)
+  {
+    for (int a = 0; a < 256; ++a)
+    {
+      points.push_back(glm::vec3(lower.x + (upper.x - lower.x) * (a + 0.5f) / 256.0f, lower.y,
+        lower.z + (upper.z - lower.z) * (b + 0.5f) / 256.0f));
+    }
+  }
+  for (const int resolution : { 128, 256, 512, 1024 })
+  {
+    for (const ShadowMode mode : { ShadowMode::Field, ShadowMode::PCF, ShadowMode::Soft })
+    {
+      vlf::ShadowSettings settings;
+      settings.Mode = mode;
+      settings.Resolution = resolution;
+      vlf::ObjectShadows shadows;
+      double fill = 1e30;
+      for (int repeat = 0; repeat < 3; ++repeat) // best of three, one thread
+      {
+        ASSERT_EQ(shadows.Build(field, sphere, settings, 1), "");
+        fill = std::min(fill, shadows.FillSeconds());
+      }
+      const auto start = std::chrono::steady_clock::now();
+      glm::vec3 sum(0.0f);
+      for (const glm::vec3& p : points)
+      {
+        sum += shadows.Shade(glm::vec3(1.0f), p, glm::vec3(0.0f, 1.0f, 0.0f), glm::vec3(0.7f));
+      }
+      const double lookup =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      EXPECT_LT(Mean(sum), static_cast<float>(points.size())); // some receivers are shadowed
+      std::printf("[ figures  ] shadow maps %-5s %4d^2: %zu map(s) of a %zu-triangle sphere "
+                  "filled in %.2f ms (one thread); lookup %.0f ns per receiver\n",
+        vlf::ShadowModeName(mode), resolution, shadows.Maps().size(), sphere.Triangles.size(),
+        1e3 * fill, 1e9 * lookup / points.size());
+    }
+  }
+}
+
+} // namespace mesolight

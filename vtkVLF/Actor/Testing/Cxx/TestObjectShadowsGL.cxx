@@ -1,0 +1,185 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Shadows of the movable object drawn by vtkLightFieldActor: the GPU's darkening
+// (glsl/vtkLightFieldShadowFS.glsl) in progressive mode, and the CPU pass in raytrace mode,
+// match the core's (ObjectShadows::Shade) on the Cornell box floor pixel by pixel, per mode; the
+// same pixels without the shadow do not. `ctest -R ShadowMap` (needs scripts/xvfb.sh).
+#include "WalkthroughTestViewer.h"
+
+#include "ObjectMesh.h"
+#include "ObjectShadows.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace mesolight
+{
+namespace walkthroughtest
+{
+namespace
+{
+struct FloorPixel
+{
+  std::size_t Index;
+  glm::vec3 Point, Normal, Kd;
+};
+
+// Pixels of the view that show the floor (diffuse, facing up) and their points.
+std::vector<FloorPixel> FloorPixels(const vlf::LightField& field, const vlf::ViewFrame& view)
+{
+  const vlf::WalkthroughTracer tracer(field);
+  std::vector<FloorPixel> out;
+  for (int row = 0; row < Size; ++row)
+  {
+    for (int column = 0; column < Size; ++column)
+    {
+      const SceneRay ray =
+        view.Ray(static_cast<float>(column) + 0.5f, static_cast<float>(row) + 0.5f);
+      const SceneHit hit = tracer.Embree().Intersect(ray);
+      std::uint32_t s;
+      if (tracer.Classify(ray, hit, s) != vlf::PixelClass::Diffuse ||
+        field.Surfaces()[s].Normal.y < 0.99f)
+      {
+        continue;
+      }
+      out.push_back(
+        { static_cast<std::size_t>(row) * Size + column, ray.Origin + hit.T * ray.Direction,
+          field.Surfaces()[s].Normal, field.MaterialOf(s).Diffuse });
+    }
+  }
+  return out;
+}
+
+// Display levels (0-255) between two radiances through the test's tone map.
+float LevelDifference(const glm::vec3& a, const glm::vec3& b)
+{
+  const glm::vec3 da = vlf::ToneMap(a, Exposure, vlf::ToneMapOperator::Clamp);
+  const glm::vec3 db = vlf::ToneMap(b, Exposure, vlf::ToneMapOperator::Clamp);
+  const glm::vec3 d = glm::abs(da - db) * 255.0f;
+  return std::max(d.x, std::max(d.y, d.z));
+}
+} // namespace
+
+TEST(ShadowMapGL, GpuAndRaytraceDarkeningMatchCore)
+{
+  const vlf::LightField& field = MirrorCornellField(513);
+  Viewer viewer(field);
+  // Looking down at the front-right floor, where the cube's shadow falls.
+  const vlf::ViewFrame view = viewer.SetCamera(
+    field, glm::vec3(440.0f, 350.0f, -150.0f), glm::vec3(440.0f, 0.0f, 120.0f), 40.0f);
+  const std::vector<FloorPixel> floor = FloorPixels(field, view);
+  ASSERT_GT(floor.size(), 2000u);
+  const vlf::ObjectMesh cube =
+    vlf::TransformMesh(vlf::TransformMesh(vlf::MakeCube(90.0f),
+                         glm::translate(glm::mat4(1.0f), glm::vec3(400.0f, 120.0f, 150.0f))),
+      vlf::WorldToUnitSphere(field));
+  viewer.Actor->SetShadowCasterForTesting(&cube);
+  viewer.Actor->SetShadowMapResolution(256);
+
+  for (const int renderMode : { vtkLightFieldActor::Progressive, vtkLightFieldActor::Raytrace })
+  {
+    viewer.Actor->SetShadowMode(vtkLightFieldActor::ShadowNone);
+    const Images unshadowed = viewer.Render(renderMode);
+    EXPECT_EQ(viewer.Actor->GetObjectShadows(), nullptr);
+    for (const int mode : { vtkLightFieldActor::ShadowBlack, vtkLightFieldActor::ShadowBlend,
+           vtkLightFieldActor::ShadowField, vtkLightFieldActor::ShadowPCF,
+           vtkLightFieldActor::ShadowSoft })
+    {
+      viewer.Actor->SetShadowMode(mode);
+      const Images shadowed = viewer.Render(renderMode);
+      const vlf::ObjectShadows* shadows = viewer.Actor->GetObjectShadows();
+      ASSERT_NE(shadows, nullptr) << viewer.Actor->GetShadowProblem();
+      std::size_t agree = 0, darkened = 0, agreeWithout = 0;
+      double levels = 0.0;
+      for (const FloorPixel& f : floor)
+      {
+        const glm::vec3 base = unshadowed.Radiance[f.Index];
+        if (std::max(base.x, std::max(base.y, base.z)) * Exposure >= 0.98f)
+        {
+          continue; // clipped by the display: nothing to compare
+        }
+        const glm::vec3 expected = shadows->Shade(base, f.Point, f.Normal, f.Kd);
+        const float difference = LevelDifference(shadowed.Radiance[f.Index], expected);
+        levels += difference;
+        agree += difference <= 2.5f ? 1 : 0;
+        if (LevelDifference(expected, base) > 6.0f)
+        {
+          ++darkened;
+          // Negative: the unshadowed pixel is not what the core asks for there.
+          agreeWithout += LevelDifference(base, expected) <= 2.5f ? 1 : 0;
+        }
+      }
+      const double fraction = static_cast<double>(agree) / static_cast<double>(floor.size());
+      std::printf("[ figures  ] %s mode, shadows %s: %.1f%% of %zu floor pixels within 2.5 "
+                  "display levels of the core (mean %.2f levels), %zu pixels darkened; maps "
+                  "filled in %.2f ms\n",
+        vtkLightFieldActor::GetRenderModeAsString(renderMode),
+        vtkLightFieldActor::GetShadowModeAsString(mode), 100.0 * fraction, floor.size(),
+        levels / static_cast<double>(floor.size()), darkened,
+        1e3 * viewer.Actor->GetLastShadowSeconds());
+      EXPECT_GT(darkened, 150u) << "the shadow should cover part of the floor";
+      EXPECT_GE(fraction, 0.98);
+      EXPECT_EQ(agreeWithout, 0u);
+    }
+  }
+  // A broken caster is named, casts nothing and crashes nothing; removed: no shadow.
+  vlf::ObjectMesh broken = cube;
+  broken.Points[0].x = std::nanf("");
+  viewer.Actor->SetShadowCasterForTesting(&broken);
+  viewer.Render(vtkLightFieldActor::Progressive);
+  EXPECT_EQ(viewer.Actor->GetObjectShadows(), nullptr);
+  EXPECT_NE(viewer.Actor->GetShadowProblem().find("finite"), std::string::npos);
+  viewer.Actor->SetShadowCasterForTesting(nullptr);
+  viewer.Render(vtkLightFieldActor::Progressive);
+  EXPECT_EQ(viewer.Actor->GetObjectShadows(), nullptr);
+  EXPECT_EQ(viewer.Actor->GetShadowProblem(), "");
+}
+
+} // namespace walkthroughtest
+} // namespace mesolight
+
+namespace mesolight
+{
+namespace walkthroughtest
+{
+// The GPU's cost of the shadow lookup: frames of a 512 x 512 progressive view (the camera
+// rests) with and without the shadow, per mode (a figure; Mesa's software rasteriser on a
+// shared machine, so only the differences mean something).
+TEST(ShadowMapGL, FrameCost)
+{
+  const vlf::LightField& field = MirrorCornellField(513);
+  Viewer viewer(field);
+  viewer.Window->SetSize(512, 512);
+  viewer.SetCamera(
+    field, glm::vec3(440.0f, 350.0f, -150.0f), glm::vec3(440.0f, 0.0f, 120.0f), 40.0f);
+  const vlf::ObjectMesh cube =
+    vlf::TransformMesh(vlf::TransformMesh(vlf::MakeCube(90.0f),
+                         glm::translate(glm::mat4(1.0f), glm::vec3(400.0f, 120.0f, 150.0f))),
+      vlf::WorldToUnitSphere(field));
+  viewer.Actor->SetShadowCasterForTesting(&cube);
+  viewer.Actor->SetRenderModeToProgressive();
+  auto frameSeconds = [&]()
+  {
+    viewer.Window->Render(); // uploads, shader build
+    viewer.Window->Render();
+    const auto start = std::chrono::steady_clock::now();
+    constexpr int frames = 4;
+    for (int f = 0; f < frames; ++f)
+    {
+      viewer.Window->Render();
+    }
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() / frames;
+  };
+  viewer.Actor->SetShadowMapResolution(256);
+  for (const int mode : { vtkLightFieldActor::ShadowNone, vtkLightFieldActor::ShadowField,
+         vtkLightFieldActor::ShadowPCF, vtkLightFieldActor::ShadowSoft })
+  {
+    viewer.Actor->SetShadowMode(mode);
+    const double seconds = frameSeconds();
+    EXPECT_GT(seconds, 0.0);
+    std::printf("[ figures  ] GPU (Mesa llvmpipe) 512x512 progressive frame, shadows %s 256^2: "
+                "%.2f ms\n",
+      vtkLightFieldActor::GetShadowModeAsString(mode), 1e3 * seconds);
+  }
+}
+
+} // namespace walkthroughtest
+} // namespace mesolight

@@ -1,0 +1,572 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "ObjectShadows.h"
+
+#include "LightField.h"
+#include "MathConstants.h"
+#include "OrthonormalBasis.h"
+#include "ParallelFor.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+namespace mesolight
+{
+namespace vlf
+{
+
+namespace
+{
+constexpr const char* ModeNames[] = { "none", "black", "blend", "field", "pcf", "soft" };
+
+float Mean(const glm::vec3& v)
+{
+  return (v.x + v.y + v.z) / 3.0f;
+}
+
+// Twice the signed area of (a, b, c) in the map's pixel plane.
+float Edge(const glm::vec2& a, const glm::vec2& b, const glm::vec2& c)
+{
+  return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+}
+} // namespace
+
+//------------------------------------------------------------------------------
+const char* ShadowModeName(ShadowMode mode)
+{
+  const int m = static_cast<int>(mode);
+  return m >= 0 && m <= 5 ? ModeNames[m] : "unknown";
+}
+
+//------------------------------------------------------------------------------
+bool ShadowModeFromName(const std::string& name, ShadowMode& mode)
+{
+  for (int m = 0; m <= 5; ++m)
+  {
+    if (name == ModeNames[m])
+    {
+      mode = static_cast<ShadowMode>(m);
+      return true;
+    }
+  }
+  return false;
+}
+
+//------------------------------------------------------------------------------
+std::string ShadowSettings::Validate() const
+{
+  if (this->Resolution < 16 || this->Resolution > 4096)
+  {
+    return "shadow map resolution " + std::to_string(this->Resolution) + " is not in [16, 4096]";
+  }
+  if (this->MaximumEmitters < 1 || this->MaximumEmitters > 8)
+  {
+    return "shadow emitter count " + std::to_string(this->MaximumEmitters) + " is not in [1, 8]";
+  }
+  if (this->AreaSamples < 1 || this->AreaSamples > 4)
+  {
+    return "shadow area samples " + std::to_string(this->AreaSamples) + " is not in [1, 4]";
+  }
+  if (this->PcfKernel < 1 || this->PcfKernel > 9 || this->PcfKernel % 2 == 0)
+  {
+    return "PCF kernel " + std::to_string(this->PcfKernel) + " is not an odd number in [1, 9]";
+  }
+  if (!(this->BlendAlpha >= 0.0f && this->BlendAlpha <= 1.0f))
+  {
+    return "shadow blend alpha is not in [0, 1]";
+  }
+  if (!(this->DepthBias >= 0.0f) || !(this->MinimumPowerFraction >= 0.0f))
+  {
+    return "shadow depth bias and minimum power fraction must not be negative";
+  }
+  return std::string();
+}
+
+//------------------------------------------------------------------------------
+float ShadowMapBlocked(const ShadowMap& map, const glm::vec3& p, const glm::vec3& n, int kernel,
+  float bias, bool removeBackProjection)
+{
+  if (map.Resolution < 1)
+  {
+    return 0.0f;
+  }
+  const glm::vec3 d = p - map.Position;
+  const float ez = glm::dot(d, map.AxisZ);
+  // Back projection (Wither 2005 ch. 4): a receiver facing away from the light gets none of its
+  // direct light to lose, and one behind the near plane (behind the light) would see the
+  // object's image mirrored through the centre of projection.
+  if (removeBackProjection && (glm::dot(n, -d) <= 0.0f || ez < map.Near))
+  {
+    return 0.0f;
+  }
+  if (ez == 0.0f)
+  {
+    return 0.0f; // on the light's plane: projects to infinity
+  }
+  const float scale = 1.0f / (ez * map.TanHalfAngle);
+  const float fx = (glm::dot(d, map.AxisX) * scale * 0.5f + 0.5f) * map.Resolution;
+  const float fy = (glm::dot(d, map.AxisY) * scale * 0.5f + 0.5f) * map.Resolution;
+  const float limit = 2.0f * map.Resolution;
+  if (!(std::abs(fx) < limit && std::abs(fy) < limit))
+  {
+    return 0.0f; // far outside (or not finite)
+  }
+  const int ix = static_cast<int>(std::floor(fx)), iy = static_cast<int>(std::floor(fy));
+  const int half = kernel / 2;
+  const float inverse = 1.0f / ez; // a plain depth test: negative (behind) is "farther"
+  int blocked = 0;
+  for (int y = iy - half; y <= iy + half; ++y)
+  {
+    for (int x = ix - half; x <= ix + half; ++x)
+    {
+      if (x < 0 || y < 0 || x >= map.Resolution || y >= map.Resolution)
+      {
+        continue; // outside the frustum the object covers nothing
+      }
+      const float depth = map.Depth[static_cast<std::size_t>(y) * map.Resolution + x];
+      if (depth < ShadowMap::EmptyDepth && inverse < 1.0f / (depth * (1.0f + 1e-4f) + bias))
+      {
+        ++blocked;
+      }
+    }
+  }
+  return static_cast<float>(blocked) / static_cast<float>(kernel * kernel);
+}
+
+//------------------------------------------------------------------------------
+glm::vec3 SampleIrradiance(const glm::vec3& le, const glm::vec3& ne, const glm::vec4& sample,
+  const glm::vec3& p, const glm::vec3& n)
+{
+  const glm::vec3 toLight = glm::vec3(sample) - p;
+  const float d2 = glm::dot(toLight, toLight);
+  if (!(d2 > 0.0f))
+  {
+    return glm::vec3(0.0f);
+  }
+  const glm::vec3 w = toLight / std::sqrt(d2);
+  const float cosLight = std::max(0.0f, -glm::dot(ne, w));
+  const float cosReceiver = std::max(0.0f, glm::dot(n, w));
+  return le * (sample.w * cosLight * cosReceiver / d2);
+}
+
+//------------------------------------------------------------------------------
+std::vector<ShadowEmitter> SignificantEmitters(
+  const LightField& field, const ShadowSettings& settings)
+{
+  std::vector<ShadowEmitter> out;
+  const LightApproximation lights = EstimateEmitterLights(field); // brightest first
+  const TriangleScene& scene = field.Scene();
+  const float strongest = lights.Lights.empty() ? 0.0f : Mean(lights.Lights[0].Intensity());
+  float total = 0.0f;
+  for (const EmitterLight& light : lights.Lights)
+  {
+    const float power = Mean(light.Intensity());
+    if (static_cast<int>(out.size()) >= settings.MaximumEmitters ||
+      !(power > 0.0f && power >= settings.MinimumPowerFraction * strongest))
+    {
+      break;
+    }
+    ShadowEmitter emitter;
+    emitter.Light = light;
+    emitter.PowerWeight = power;
+    total += power;
+    // g x g stratified points: the cell centres of the surface's bounding rectangle (its own
+    // frame) that lie on one of its triangles, each standing for an equal share of the area.
+    const Surface& surface = field.Surfaces()[light.Surface];
+    auto uv = [&](const glm::vec3& x)
+    {
+      return glm::vec2(
+        glm::dot(x - surface.Origin, surface.AxisU), glm::dot(x - surface.Origin, surface.AxisV));
+    };
+    glm::vec2 lower(1e30f), upper(-1e30f);
+    for (const std::uint32_t t : surface.Triangles)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        lower = glm::min(lower, uv(scene.Vertex(t, c)));
+        upper = glm::max(upper, uv(scene.Vertex(t, c)));
+      }
+    }
+    const int g = settings.AreaSamples;
+    std::vector<glm::vec3> points;
+    for (int b = 0; b < g && !surface.Triangles.empty(); ++b)
+    {
+      for (int a = 0; a < g; ++a)
+      {
+        const glm::vec2 q = lower + (upper - lower) * glm::vec2((a + 0.5f) / g, (b + 0.5f) / g);
+        for (const std::uint32_t t : surface.Triangles)
+        {
+          const glm::vec2 p0 = uv(scene.Vertex(t, 0)), p1 = uv(scene.Vertex(t, 1)),
+                          p2 = uv(scene.Vertex(t, 2));
+          const float area = Edge(p0, p1, p2);
+          if (area == 0.0f)
+          {
+            continue;
+          }
+          const float w0 = Edge(p1, p2, q) / area, w1 = Edge(p2, p0, q) / area,
+                      w2 = Edge(p0, p1, q) / area;
+          if (w0 >= 0.0f && w1 >= 0.0f && w2 >= 0.0f)
+          {
+            points.push_back(surface.Origin + q.x * surface.AxisU + q.y * surface.AxisV);
+            break;
+          }
+        }
+      }
+    }
+    if (points.empty())
+    {
+      points.push_back(light.Position);
+    }
+    const float share = static_cast<float>(light.Area / static_cast<double>(points.size()));
+    for (const glm::vec3& q : points)
+    {
+      emitter.Samples.emplace_back(q, share);
+    }
+    out.push_back(std::move(emitter));
+  }
+  for (ShadowEmitter& emitter : out)
+  {
+    emitter.PowerWeight /= total;
+  }
+  return out;
+}
+
+//------------------------------------------------------------------------------
+bool FillShadowMap(ShadowMap& map, const glm::vec3& light, const ObjectMesh& object,
+  const glm::vec3& centre, float radius, int resolution)
+{
+  map.Position = light;
+  map.Resolution = resolution;
+  map.Depth.assign(static_cast<std::size_t>(resolution) * resolution, ShadowMap::EmptyDepth);
+  if (object.Triangles.empty())
+  {
+    return false;
+  }
+  glm::vec3 axis = centre - light;
+  const float distance = glm::length(axis);
+  axis = distance > 0.0f ? axis / distance : glm::vec3(0.0f, 0.0f, 1.0f);
+  map.AxisZ = axis;
+  OrthonormalBasis(axis, map.AxisX, map.AxisY);
+  if (distance > radius * 1.001f)
+  {
+    // The frustum tangent to the bounding sphere (a little wider, so its silhouette triangles
+    // stay inside); every sphere point has an eye depth in [d - r, d + r].
+    const float s = radius / distance;
+    map.TanHalfAngle = 1.01f * s / std::sqrt(1.0f - s * s);
+    map.Near = 0.999f * (distance - radius);
+  }
+  else
+  {
+    map.TanHalfAngle = std::tan(80.0f * Pi<float> / 180.0f);
+    map.Near = 1e-4f * std::max(radius, 1e-3f);
+  }
+  map.Far = distance + radius;
+
+  const float res = static_cast<float>(resolution);
+  for (const glm::uvec3& t : object.Triangles)
+  {
+    glm::vec2 s[3];
+    float inverseDepth[3];
+    bool usable = true;
+    for (int c = 0; c < 3; ++c)
+    {
+      const glm::vec3 d = object.Points[t[c]] - light;
+      const float z = glm::dot(d, map.AxisZ);
+      if (!(z >= map.Near))
+      {
+        usable = false; // crosses the near plane (a light inside the object's bounds)
+        break;
+      }
+      const float scale = 1.0f / (z * map.TanHalfAngle);
+      s[c] = glm::vec2((glm::dot(d, map.AxisX) * scale * 0.5f + 0.5f) * res,
+        (glm::dot(d, map.AxisY) * scale * 0.5f + 0.5f) * res);
+      inverseDepth[c] = 1.0f / z;
+    }
+    if (!usable)
+    {
+      continue;
+    }
+    const float area = Edge(s[0], s[1], s[2]);
+    if (!(std::abs(area) > 1e-12f))
+    {
+      continue;
+    }
+    const glm::vec2 lower = glm::min(s[0], glm::min(s[1], s[2]));
+    const glm::vec2 upper = glm::max(s[0], glm::max(s[1], s[2]));
+    const int x0 = std::max(0, static_cast<int>(std::ceil(lower.x - 0.5f)));
+    const int y0 = std::max(0, static_cast<int>(std::ceil(lower.y - 0.5f)));
+    const int x1 = std::min(resolution - 1, static_cast<int>(std::floor(upper.x - 0.5f)));
+    const int y1 = std::min(resolution - 1, static_cast<int>(std::floor(upper.y - 0.5f)));
+    for (int y = y0; y <= y1; ++y)
+    {
+      for (int x = x0; x <= x1; ++x)
+      {
+        // Texel centres inside either winding (both faces cast shadows); 1/z is linear in the
+        // image plane, so its barycentric blend is the perspective-correct depth.
+        const glm::vec2 q(x + 0.5f, y + 0.5f);
+        const float w0 = Edge(s[1], s[2], q) / area, w1 = Edge(s[2], s[0], q) / area,
+                    w2 = Edge(s[0], s[1], q) / area;
+        if (w0 < 0.0f || w1 < 0.0f || w2 < 0.0f)
+        {
+          continue;
+        }
+        const float z = 1.0f / (w0 * inverseDepth[0] + w1 * inverseDepth[1] + w2 * inverseDepth[2]);
+        float& texel = map.Depth[static_cast<std::size_t>(y) * resolution + x];
+        texel = std::min(texel, z);
+      }
+    }
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void ObjectShadows::Clear()
+{
+  this->EmitterList.clear();
+  this->MapList.clear();
+  this->EmitterMaps.clear();
+  this->Seconds = 0.0;
+}
+
+//------------------------------------------------------------------------------
+std::string ObjectShadows::Build(
+  const LightField& field, const ObjectMesh& object, const ShadowSettings& settings, int threads)
+{
+  this->Clear();
+  const std::string problem = settings.Validate();
+  if (!problem.empty())
+  {
+    return problem;
+  }
+  return this->Build(SignificantEmitters(field, settings), object, settings, threads);
+}
+
+//------------------------------------------------------------------------------
+std::string ObjectShadows::Build(const std::vector<ShadowEmitter>& emitters,
+  const ObjectMesh& object, const ShadowSettings& settings, int threads)
+{
+  const auto start = std::chrono::steady_clock::now();
+  this->Clear();
+  std::string problem = settings.Validate();
+  if (problem.empty())
+  {
+    problem = object.Validate(); // degenerate triangles among others: the rasteriser skips them
+  }
+  if (problem.empty() && emitters.empty())
+  {
+    problem = "the light field has no emitter to cast shadows from";
+  }
+  if (!problem.empty())
+  {
+    return problem;
+  }
+  this->Config = settings;
+  this->EmitterList = emitters;
+  glm::vec3 lower, upper;
+  object.Bounds(lower, upper);
+  const glm::vec3 centre = 0.5f * (lower + upper);
+  float radius = 0.0f;
+  for (const glm::vec3& p : object.Points)
+  {
+    radius = std::max(radius, glm::length(p - centre));
+  }
+  radius = std::max(radius, 1e-6f);
+  // Per emitter its centroid's map first (Black, Blend, Field, PCF), then in Soft mode one map
+  // per sample point.
+  std::vector<glm::vec3> lights;
+  this->EmitterMaps.resize(emitters.size());
+  for (std::size_t e = 0; e < emitters.size(); ++e)
+  {
+    this->EmitterMaps[e].push_back(static_cast<std::uint32_t>(lights.size()));
+    lights.push_back(emitters[e].Light.Position);
+    if (settings.Mode == ShadowMode::Soft)
+    {
+      for (const glm::vec4& s : emitters[e].Samples)
+      {
+        this->EmitterMaps[e].push_back(static_cast<std::uint32_t>(lights.size()));
+        lights.push_back(glm::vec3(s));
+      }
+    }
+  }
+  this->MapList.resize(lights.size());
+  for (std::size_t e = 0; e < emitters.size(); ++e)
+  {
+    for (const std::uint32_t m : this->EmitterMaps[e])
+    {
+      this->MapList[m].Emitter = static_cast<std::uint32_t>(e);
+    }
+  }
+  ParallelFor(
+    0, lights.size(), 1,
+    [&](std::size_t m0, std::size_t m1)
+    {
+      for (std::size_t m = m0; m < m1; ++m)
+      {
+        FillShadowMap(this->MapList[m], lights[m], object, centre, radius, settings.Resolution);
+      }
+    },
+    threads);
+  this->Seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return std::string();
+}
+
+//------------------------------------------------------------------------------
+glm::vec3 ObjectShadows::DirectIrradiance(
+  std::size_t e, const glm::vec3& p, const glm::vec3& n) const
+{
+  const ShadowEmitter& emitter = this->EmitterList[e];
+  glm::vec3 sum(0.0f);
+  for (const glm::vec4& s : emitter.Samples)
+  {
+    sum += SampleIrradiance(emitter.Light.Radiance, emitter.Light.Normal, s, p, n);
+  }
+  return sum;
+}
+
+//------------------------------------------------------------------------------
+float ObjectShadows::BlockedFraction(std::size_t e, const glm::vec3& p, const glm::vec3& n) const
+{
+  const ShadowSettings& c = this->Config;
+  const std::vector<std::uint32_t>& maps = this->EmitterMaps[e];
+  if (c.Mode == ShadowMode::Soft && maps.size() > 1)
+  {
+    const ShadowEmitter& emitter = this->EmitterList[e];
+    float blocked = 0.0f, weight = 0.0f;
+    for (std::size_t i = 0; i < emitter.Samples.size(); ++i)
+    {
+      const float w = Mean(
+        SampleIrradiance(emitter.Light.Radiance, emitter.Light.Normal, emitter.Samples[i], p, n));
+      blocked += w *
+        ShadowMapBlocked(this->MapList[maps[i + 1]], p, n, 1, c.DepthBias, c.RemoveBackProjection);
+      weight += w;
+    }
+    return weight > 0.0f ? blocked / weight : 0.0f;
+  }
+  const int kernel = c.Mode == ShadowMode::PCF ? c.PcfKernel : 1;
+  return ShadowMapBlocked(
+    this->MapList[maps[0]], p, n, kernel, c.DepthBias, c.RemoveBackProjection);
+}
+
+//------------------------------------------------------------------------------
+float ObjectShadows::Visibility(const glm::vec3& p, const glm::vec3& n) const
+{
+  float blocked = 0.0f;
+  for (std::size_t e = 0; e < this->EmitterList.size(); ++e)
+  {
+    blocked += this->EmitterList[e].PowerWeight *
+      ShadowMapBlocked(this->MapList[this->EmitterMaps[e][0]], p, n, 1, this->Config.DepthBias,
+        this->Config.RemoveBackProjection);
+  }
+  return std::max(0.0f, 1.0f - blocked);
+}
+
+//------------------------------------------------------------------------------
+glm::vec3 ObjectShadows::Shade(
+  const glm::vec3& total, const glm::vec3& p, const glm::vec3& n, const glm::vec3& kd) const
+{
+  const ShadowSettings& c = this->Config;
+  if (this->EmitterList.empty() || c.Mode == ShadowMode::None)
+  {
+    return total;
+  }
+  if (c.Mode == ShadowMode::Black || c.Mode == ShadowMode::Blend)
+  {
+    const float alpha = c.Mode == ShadowMode::Black ? 1.0f : c.BlendAlpha;
+    return total * (1.0f - alpha * (1.0f - this->Visibility(p, n)));
+  }
+  // Field, PCF, Soft: the direct light the object blocks, from the emitters' samples.
+  glm::vec3 lost(0.0f);
+  for (std::size_t e = 0; e < this->EmitterList.size(); ++e)
+  {
+    const ShadowEmitter& emitter = this->EmitterList[e];
+    const std::vector<std::uint32_t>& maps = this->EmitterMaps[e];
+    if (c.Mode == ShadowMode::Soft && maps.size() > 1)
+    {
+      for (std::size_t i = 0; i < emitter.Samples.size(); ++i)
+      {
+        const float b = ShadowMapBlocked(
+          this->MapList[maps[i + 1]], p, n, 1, c.DepthBias, c.RemoveBackProjection);
+        if (b > 0.0f) // lit receivers (most) skip the irradiance
+        {
+          lost += b *
+            SampleIrradiance(
+              emitter.Light.Radiance, emitter.Light.Normal, emitter.Samples[i], p, n);
+        }
+      }
+    }
+    else
+    {
+      const float b = this->BlockedFraction(e, p, n);
+      if (b > 0.0f)
+      {
+        lost += b * this->DirectIrradiance(e, p, n);
+      }
+    }
+  }
+  return glm::max(glm::vec3(0.0f), total - kd / Pi<float> * lost);
+}
+
+//------------------------------------------------------------------------------
+ShadowGpuData PackShadowsForGpu(const ObjectShadows& shadows)
+{
+  ShadowGpuData out;
+  const ShadowSettings& c = shadows.Settings();
+  out.Mode = static_cast<int>(c.Mode);
+  out.Params = glm::vec4(c.DepthBias, c.BlendAlpha, static_cast<float>(c.PcfKernel),
+    c.RemoveBackProjection ? 1.0f : 0.0f);
+  if (shadows.Empty())
+  {
+    out.Mode = 0;
+    return out;
+  }
+  // The emitters (strongest first) whose maps and samples fit.
+  std::vector<std::uint32_t> maps;
+  for (std::size_t e = 0; e < shadows.Emitters().size(); ++e)
+  {
+    const ShadowEmitter& emitter = shadows.Emitters()[e];
+    const std::vector<std::uint32_t>& own = shadows.MapsOf(e);
+    if (out.EmitterCount >= GpuShadowEmitters ||
+      maps.size() + own.size() > static_cast<std::size_t>(GpuShadowMaps) ||
+      out.Samples.size() + emitter.Samples.size() > static_cast<std::size_t>(GpuShadowSamples))
+    {
+      break;
+    }
+    const float firstMap = own.size() > 1 ? static_cast<float>(maps.size() + 1) : -1.0f;
+    out.EmitterIndex.emplace_back(static_cast<float>(out.Samples.size()),
+      static_cast<float>(emitter.Samples.size()), static_cast<float>(maps.size()), firstMap);
+    out.EmitterRadiance.emplace_back(emitter.Light.Radiance, emitter.PowerWeight);
+    out.EmitterNormal.emplace_back(emitter.Light.Normal, 0.0f);
+    out.Samples.insert(out.Samples.end(), emitter.Samples.begin(), emitter.Samples.end());
+    maps.insert(maps.end(), own.begin(), own.end());
+    ++out.EmitterCount;
+  }
+  const int res = c.Resolution;
+  const int count = static_cast<int>(maps.size());
+  out.Resolution = res;
+  out.Columns = std::max(1, static_cast<int>(std::ceil(std::sqrt(static_cast<double>(count)))));
+  const int rows = (count + out.Columns - 1) / out.Columns;
+  out.Width = out.Columns * res;
+  out.Height = rows * res;
+  out.Depth.assign(static_cast<std::size_t>(out.Width) * out.Height, ShadowMap::EmptyDepth);
+  for (int m = 0; m < count; ++m)
+  {
+    const ShadowMap& map = shadows.Maps()[maps[m]];
+    const int x0 = (m % out.Columns) * res, y0 = (m / out.Columns) * res;
+    for (int y = 0; y < res; ++y)
+    {
+      std::copy(map.Depth.begin() + static_cast<std::ptrdiff_t>(y) * res,
+        map.Depth.begin() + static_cast<std::ptrdiff_t>(y + 1) * res,
+        out.Depth.begin() + static_cast<std::ptrdiff_t>(y0 + y) * out.Width + x0);
+    }
+    out.MapPosition.emplace_back(map.Position, map.TanHalfAngle);
+    out.MapAxisX.emplace_back(map.AxisX, map.Near);
+    out.MapAxisY.emplace_back(map.AxisY, 0.0f);
+    out.MapAxisZ.emplace_back(map.AxisZ, map.Far);
+  }
+  return out;
+}
+
+} // namespace vlf
+} // namespace mesolight
