@@ -8,6 +8,11 @@
 #include "Timing.h"
 
 #include "vtkLightFieldActor.h"
+#include "vtkLightFieldObjectMapper.h"
+
+#include "ObjScene.h"
+#include "ObjectGatherer.h"
+#include "ObjectMesh.h"
 
 #include "LightField.h"
 #include "PatchComparison.h"
@@ -15,13 +20,20 @@
 #include "Snapshot.h"
 #include "TriangleScene.h"
 
+#include <vtkActor.h>
 #include <vtkCallbackCommand.h>
 #include <vtkCamera.h>
+#include <vtkCellArray.h>
 #include <vtkCommand.h>
+#include <vtkFloatArray.h>
 #include <vtkInteractorStyleTrackballCamera.h>
 #include <vtkNew.h>
 #include <vtkOpenGLRenderWindow.h>
 #include <vtkPNGWriter.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkProperty.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderWindowInteractor.h>
 #include <vtkRenderer.h>
@@ -32,8 +44,10 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
@@ -166,6 +180,284 @@ int OpenWalkthrough(
   return 0;
 }
 
+// --- The movable object (--object ...) ---------------------------------------------------------
+
+void AddObjectOptions(CommandLine& cl)
+{
+  cl.AddValue("--object", "OBJECT",
+    "a movable object in the field: sphere, cube (side 1, scaled to a fifth of the field) or "
+    "FILE.obj (its own units)");
+  cl.AddValue("--object-transform", "T",
+    "tx,ty,tz[,rx,ry,rz[,s]]: the object's position (world units), orientation (degrees, as "
+    "vtkProp3D::SetOrientation) and scale; default: the field's centre");
+  cl.AddValue(
+    "--object-colour", "R,G,B", "the object's diffuse reflectance, each in [0, 1]", "0.7,0.7,0.7");
+  cl.AddValue("--shading", "S", "the object's shading: flat, lights or gather", "gather");
+  cl.AddValue(
+    "--subdivision", "N", "midpoint subdivision levels of the gathered object (0-3)", "0");
+}
+
+struct ObjectPlacement
+{
+  double Position[3] = { 0.0, 0.0, 0.0 };
+  double Orientation[3] = { 0.0, 0.0, 0.0 };
+  double Scale = 1.0;
+};
+
+// "tx,ty,tz[,rx,ry,rz[,s]]" over the defaults in `placement`; "" or why not.
+std::string ParsePlacement(const std::string& text, ObjectPlacement& placement)
+{
+  std::vector<double> values;
+  std::stringstream in(text);
+  std::string item;
+  while (std::getline(in, item, ','))
+  {
+    char* end = nullptr;
+    const double v = std::strtod(item.c_str(), &end);
+    if (item.empty() || end == item.c_str() || *end != '\0' || !std::isfinite(v))
+    {
+      return "'" + item + "' is not a finite number";
+    }
+    values.push_back(v);
+  }
+  if (values.size() != 3 && values.size() != 6 && values.size() != 7)
+  {
+    return "give tx,ty,tz or tx,ty,tz,rx,ry,rz or tx,ty,tz,rx,ry,rz,s (" +
+      std::to_string(values.size()) + " numbers given)";
+  }
+  std::copy(values.begin(), values.begin() + 3, placement.Position);
+  if (values.size() >= 6)
+  {
+    std::copy(values.begin() + 3, values.begin() + 6, placement.Orientation);
+  }
+  if (values.size() == 7)
+  {
+    if (!(values[6] > 0.0))
+    {
+      return "the scale must be positive";
+    }
+    placement.Scale = values[6];
+  }
+  return {};
+}
+
+void ApplyPlacement(vtkActor* object, const ObjectPlacement& p)
+{
+  object->SetPosition(p.Position[0], p.Position[1], p.Position[2]);
+  object->SetOrientation(p.Orientation[0], p.Orientation[1], p.Orientation[2]);
+  object->SetScale(p.Scale);
+}
+
+// The object's polydata of --object (sphere, cube or an OBJ file's triangles).
+vtkSmartPointer<vtkPolyData> ObjectPolyData(const vlf::ObjectMesh& mesh)
+{
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToFloat();
+  for (const glm::vec3& p : mesh.Points)
+  {
+    points->InsertNextPoint(p.x, p.y, p.z);
+  }
+  vtkNew<vtkCellArray> polys;
+  for (const glm::uvec3& t : mesh.Triangles)
+  {
+    const vtkIdType ids[3] = { t.x, t.y, t.z };
+    polys->InsertNextCell(3, ids);
+  }
+  auto poly = vtkSmartPointer<vtkPolyData>::New();
+  poly->SetPoints(points);
+  poly->SetPolys(polys);
+  if (mesh.Normals.size() == mesh.Points.size())
+  {
+    vtkNew<vtkFloatArray> normals;
+    normals->SetName("Normals");
+    normals->SetNumberOfComponents(3);
+    for (const glm::vec3& n : mesh.Normals)
+    {
+      normals->InsertNextTuple3(n.x, n.y, n.z);
+    }
+    poly->GetPointData()->SetNormals(normals);
+  }
+  return poly;
+}
+
+// The object of the command line in the walkthrough's renderer.
+struct MovableObject
+{
+  vtkNew<vtkActor> Actor;
+  vtkNew<vtkLightFieldObjectMapper> Mapper;
+  bool Active = false;
+  ObjectPlacement Placement; // the one --object-transform (or the default) gave
+  double Step = 1.0;         // world units per key press (a twentieth of the field)
+};
+
+// 0 when set up (or no --object), else the command's exit code (the message is printed).
+// `inputs` gathers the files read, so no output overwrites them.
+int SetUpObject(const CommandLine& cl, const char* command, WalkthroughWindow& walkthrough,
+  MovableObject& object, std::vector<std::string>* inputs = nullptr)
+{
+  if (!cl.Has("--object"))
+  {
+    for (const char* option : { "--object-transform", "--path" })
+    {
+      if (cl.Has(option))
+      {
+        std::cerr << command << ": " << option << " needs --object\n";
+        return 2;
+      }
+    }
+    return 0;
+  }
+  std::string error;
+  int subdivision = 0;
+  if (!cl.GetInt("--subdivision", 0, 3, subdivision, error))
+  {
+    std::cerr << command << ": " << error << "\n";
+    return 2;
+  }
+  const int shading = vtkLightFieldObjectMapper::GetShadingFromString(cl.Get("--shading"));
+  if (shading < 0)
+  {
+    std::cerr << command << ": --shading '" << cl.Get("--shading")
+              << "' is not flat, lights or gather\n";
+    return 2;
+  }
+  double colour[3] = { 0.7, 0.7, 0.7 };
+  {
+    std::vector<double> values;
+    if (!cl.GetDoubleList("--object-colour", 0.0, 1.0, values, error) || values.size() != 3)
+    {
+      std::cerr << command << ": --object-colour: "
+                << (error.empty() ? "give three values R,G,B in [0, 1]" : error) << "\n";
+      return 2;
+    }
+    std::copy(values.begin(), values.end(), colour);
+  }
+  double bounds[6];
+  walkthrough.Actor->GetBounds(bounds);
+  const double extent =
+    std::max(bounds[1] - bounds[0], std::max(bounds[3] - bounds[2], bounds[5] - bounds[4]));
+  const std::string name = cl.Get("--object");
+  vlf::ObjectMesh mesh;
+  ObjectPlacement placement;
+  for (int a = 0; a < 3; ++a)
+  {
+    placement.Position[a] = 0.5 * (bounds[2 * a] + bounds[2 * a + 1]);
+  }
+  if (name == "sphere" || name == "cube")
+  {
+    mesh = name == "sphere" ? vlf::MakeSphere(0.5f, 16, 32) : vlf::MakeCube(1.0f);
+    placement.Scale = 0.2 * extent;
+  }
+  else
+  {
+    if (!vlf::FileExists(name))
+    {
+      std::cerr << command << ": --object '" << name
+                << "' is not sphere, cube or an existing .obj file\n";
+      return 2;
+    }
+    try
+    {
+      const vlf::ObjSceneRead read = vlf::ReadObjScene(name);
+      mesh.Points = read.Scene.Positions;
+      mesh.Triangles.assign(read.Scene.Triangles.begin(), read.Scene.Triangles.end());
+    }
+    catch (const std::exception& e)
+    {
+      std::cerr << command << ": --object: " << e.what() << "\n";
+      return 1;
+    }
+    if (inputs)
+    {
+      inputs->push_back(name);
+    }
+  }
+  // Bad meshes are refused here with one line (the actor would refuse them too).
+  const std::string problem = mesh.Validate();
+  if (!problem.empty())
+  {
+    std::cerr << command << ": --object '" << name << "': " << problem << "\n";
+    return 1;
+  }
+  if (cl.Has("--object-transform"))
+  {
+    error = ParsePlacement(cl.Get("--object-transform"), placement);
+    if (!error.empty())
+    {
+      std::cerr << command << ": --object-transform: " << error << "\n";
+      return 2;
+    }
+  }
+  object.Mapper->SetInputData(ObjectPolyData(mesh));
+  object.Mapper->SetLightFieldActor(walkthrough.Actor);
+  object.Mapper->SetShading(shading);
+  object.Mapper->SetSubdivision(subdivision);
+  object.Actor->SetMapper(object.Mapper);
+  object.Actor->GetProperty()->SetDiffuseColor(colour);
+  object.Actor->GetProperty()->SetDiffuse(1.0);
+  object.Placement = placement;
+  object.Step = extent > 0.0 ? extent / 20.0 : 1.0;
+  ApplyPlacement(object.Actor, placement);
+  walkthrough.Actor->SetMovableObject(object.Actor);
+  walkthrough.Actor->SetObjectSubdivision(subdivision);
+  walkthrough.Renderer->AddActor(object.Actor);
+  walkthrough.Renderer->ResetCameraClippingRange();
+  object.Active = true;
+  return 0;
+}
+
+// --path FILE: one placement per line ("tx,ty,tz[,rx,ry,rz[,s]]"; '#' comments and a header
+// line of names are skipped); rows without a scale keep `base`'s.
+bool ReadPath(const std::string& file, const ObjectPlacement& base,
+  std::vector<ObjectPlacement>& path, std::string& error)
+{
+  std::ifstream in(file);
+  if (!in)
+  {
+    error = "cannot read '" + file + "'";
+    return false;
+  }
+  std::string line;
+  int number = 0;
+  while (std::getline(in, line))
+  {
+    ++number;
+    line.erase(0, line.find_first_not_of(" \t\r"));
+    line.erase(line.find_last_not_of(" \t\r") + 1);
+    if (line.empty() || line[0] == '#' || (number == 1 && std::isalpha(line[0])))
+    {
+      continue;
+    }
+    ObjectPlacement p = base;
+    const std::string why = ParsePlacement(line, p);
+    if (!why.empty())
+    {
+      error = file + ":" + std::to_string(number) + ": " + why;
+      return false;
+    }
+    path.push_back(p);
+  }
+  if (path.empty())
+  {
+    error = "'" + file + "' holds no placement";
+    return false;
+  }
+  return true;
+}
+
+// One line on the object after a frame: timings and anything wrong with its placement.
+void PrintObjectNote(vtkLightFieldActor* actor, const MovableObject& object)
+{
+  if (!object.Active)
+  {
+    return;
+  }
+  if (!actor->GetLastObjectProblem().empty())
+  {
+    std::cout << "note: " << actor->GetLastObjectProblem() << "\n";
+  }
+}
+
 int Render(const std::vector<std::string>& args)
 {
   const char* command = "mesolight vlf render";
@@ -180,6 +472,7 @@ int Render(const std::vector<std::string>& args)
     "progressive: write the frame shown while the camera moves (field lookups "
     "on mirrors), not the converged one");
   cl.AddFlag("--force", "replace an existing IMAGE.png");
+  AddObjectOptions(cl);
   int exitCode = 0;
   if (!cl.ParseArguments(args, exitCode))
   {
@@ -191,7 +484,12 @@ int Render(const std::vector<std::string>& args)
     return 2;
   }
   const std::string out = cl.Get("--out");
-  const std::string problem = CheckOutputFile(out, { cl.Positional()[0] });
+  std::vector<std::string> inputs{ cl.Positional()[0] };
+  if (cl.Has("--object") && cl.Get("--object") != "sphere" && cl.Get("--object") != "cube")
+  {
+    inputs.push_back(cl.Get("--object"));
+  }
+  const std::string problem = CheckOutputFile(out, inputs);
   if (!problem.empty())
   {
     std::cerr << command << ": --out: " << problem << "\n";
@@ -204,6 +502,11 @@ int Render(const std::vector<std::string>& args)
   }
   WalkthroughWindow walkthrough;
   if (const int status = OpenWalkthrough(cl, command, true, walkthrough))
+  {
+    return status;
+  }
+  MovableObject object;
+  if (const int status = SetUpObject(cl, command, walkthrough, object))
   {
     return status;
   }
@@ -236,6 +539,14 @@ int Render(const std::vector<std::string>& args)
   std::cout << "wrote " << out << " (" << window->GetSize()[0] << "x" << window->GetSize()[1]
             << ", mode " << cl.Get("--mode") << ", " << seconds << " s, "
             << actor->GetLastScreenPixels() << " pixels from the CPU pass)\n";
+  if (object.Active)
+  {
+    PrintObjectNote(actor, object);
+    std::cout << "object: " << cl.Get("--object") << ", shading " << cl.Get("--shading")
+              << ", gather " << 1000.0 * actor->GetLastGatherSeconds() << " ms, "
+              << (actor->GetShadedObject() ? actor->GetShadedObject()->Mesh.Points.size() : 0)
+              << " points\n";
+  }
   return 0;
 }
 
@@ -246,6 +557,7 @@ struct ViewerState
   vtkRenderWindow* Window = nullptr;
   vtkTextActor* Text = nullptr;
   vtkCommand* Keys = nullptr;
+  MovableObject* Object = nullptr;
   double LastFrameSeconds = 0.0;
   Clock::time_point LastRender = Clock::now();
   void UpdateText()
@@ -258,7 +570,11 @@ struct ViewerState
       << "  depth " << this->Actor->GetMaximumReflectionDepth() << "  " << std::setprecision(1)
       << 1000.0 * this->LastFrameSeconds << " ms"
       << (this->Actor->GetLastFrameConverged() ? "" : "  (refining)")
-      << "\n1-4/m mode  +/- exposure  t tone map  [ ] reflection depth  q quit";
+      << "\n1-4/m mode  +/- exposure  t tone map  [ ] reflection depth  q quit"
+      << (this->Object && this->Object->Active ? "\nobject: j/l x  k/i y  u/o z  y turn  (gather " +
+               std::to_string(static_cast<int>(1000.0 * this->Actor->GetLastGatherSeconds())) +
+               " ms)"
+                                               : std::string());
     this->Text->SetInput(s.str().c_str());
   }
   void Render()
@@ -308,6 +624,42 @@ void OnChar(vtkObject* caller, unsigned long, void* clientData, void*)
     default:
       handled = false;
   }
+  if (!handled && state->Object && state->Object->Active)
+  {
+    // The movable object: a twentieth of the field per press along world x, y, z; 15 degrees
+    // about its own y axis.
+    vtkActor* object = state->Object->Actor;
+    const double step = state->Object->Step;
+    double* p = object->GetPosition();
+    const double position[3] = { p[0], p[1], p[2] };
+    handled = true;
+    switch (key)
+    {
+      case 'j':
+        object->SetPosition(position[0] - step, position[1], position[2]);
+        break;
+      case 'l':
+        object->SetPosition(position[0] + step, position[1], position[2]);
+        break;
+      case 'k':
+        object->SetPosition(position[0], position[1] - step, position[2]);
+        break;
+      case 'i':
+        object->SetPosition(position[0], position[1] + step, position[2]);
+        break;
+      case 'u':
+        object->SetPosition(position[0], position[1], position[2] - step);
+        break;
+      case 'o':
+        object->SetPosition(position[0], position[1], position[2] + step);
+        break;
+      case 'y':
+        object->RotateY(15.0);
+        break;
+      default:
+        handled = false;
+    }
+  }
   if (handled)
   {
     // Keep the trackball style from acting on the same key (e.g. '3' toggles stereo there).
@@ -337,8 +689,13 @@ int View(const std::vector<std::string>& args)
     "Walks through a light field in a VTK window (vtkLightFieldActor). Mouse: rotate "
     "(left), pan\n(middle), zoom (right/wheel). Keys: 1-4 or m mode (geometry, raytrace, "
     "progressive,\ncoherent), +/- exposure, t tone map (clamp/Reinhard), [ ] reflection "
-    "depth, q quit.\n");
+    "depth, q quit.\nWith --object: j/l move it along x, k/i along y, u/o along z (a twentieth "
+    "of the field per press),\ny turns it 15 degrees about its y axis.\n");
   AddViewOptions(cl);
+  AddObjectOptions(cl);
+  cl.AddValue("--path", "FILE.csv",
+    "with --object and --frames: the object's placement per frame, one 'tx,ty,tz[,rx,ry,rz[,s]]' "
+    "a line (repeated when shorter; the camera stays still)");
   cl.AddValue("--frames", "N",
     "render N frames (turning the camera 2 degrees each) and exit: a non-interactive check", "0");
   cl.AddFlag("--offscreen", "no window (with --frames)");
@@ -366,6 +723,17 @@ int View(const std::vector<std::string>& args)
   {
     return status;
   }
+  MovableObject object;
+  if (const int status = SetUpObject(cl, command, walkthrough, object))
+  {
+    return status;
+  }
+  std::vector<ObjectPlacement> path;
+  if (cl.Has("--path") && !ReadPath(cl.Get("--path"), object.Placement, path, error))
+  {
+    std::cerr << command << ": --path: " << error << "\n";
+    return 1;
+  }
   vtkLightFieldActor* actor = walkthrough.Actor;
   vtkRenderer* renderer = walkthrough.Renderer;
   vtkRenderWindow* window = walkthrough.Window;
@@ -378,6 +746,7 @@ int View(const std::vector<std::string>& args)
   state.Actor = actor;
   state.Window = window;
   state.Text = text;
+  state.Object = &object;
   vtkNew<vtkRenderWindowInteractor> interactor;
   interactor->SetRenderWindow(window);
   vtkNew<vtkInteractorStyleTrackballCamera> style;
@@ -391,7 +760,7 @@ int View(const std::vector<std::string>& args)
   {
     window->SetOffScreenRendering(cl.Has("--offscreen") ? 1 : 0);
     const std::string pressed = cl.Get("--keys");
-    double total = 0.0;
+    double total = 0.0, gather = 0.0, update = 0.0;
     for (int f = 0; f < frames; ++f)
     {
       if (static_cast<std::size_t>(f) < pressed.size())
@@ -399,10 +768,31 @@ int View(const std::vector<std::string>& args)
         interactor->SetKeyCode(pressed[static_cast<std::size_t>(f)]);
         interactor->InvokeEvent(vtkCommand::CharEvent, nullptr);
       }
+      if (!path.empty())
+      {
+        ApplyPlacement(object.Actor, path[static_cast<std::size_t>(f) % path.size()]);
+      }
       state.Render();
       total += state.LastFrameSeconds;
-      renderer->GetActiveCamera()->Azimuth(2.0);
+      gather += actor->GetLastObjectSeconds() > 0.0 ? actor->GetLastGatherSeconds() : 0.0;
+      update += actor->GetLastObjectSeconds();
+      if (path.empty())
+      {
+        renderer->GetActiveCamera()->Azimuth(2.0);
+      }
       renderer->ResetCameraClippingRange();
+    }
+    if (object.Active)
+    {
+      PrintObjectNote(actor, object);
+      const double* position = object.Actor->GetPosition();
+      std::cout << std::fixed << std::setprecision(2) << "object at " << position[0] << ","
+                << position[1] << "," << position[2] << "; per frame: object update "
+                << 1000.0 * update / frames << " ms, of which gathering "
+                << 1000.0 * gather / frames << " ms ("
+                << (actor->GetShadedObject() ? actor->GetShadedObject()->Mesh.Points.size() : 0)
+                << " points)\n"
+                << std::defaultfloat;
     }
     std::cout << "rendered " << frames << " frames, mode "
               << vtkLightFieldActor::GetRenderModeAsString(actor->GetRenderMode()) << ", exposure "
