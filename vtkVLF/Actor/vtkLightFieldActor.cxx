@@ -775,17 +775,22 @@ bool vtkLightFieldActor::UpdateMovableObject()
   const Clock::time_point start = Clock::now();
   this->RefreshField();
   vtkActor* object = impl.Object;
-  auto fail = [&](const std::string& why)
+  // Takes the object out of the tracer (the mesh stays read: a later placement may work).
+  auto drop = [&]()
   {
-    if (impl.ObjectUsable || impl.ObjectPlaced)
+    if (impl.ObjectPlaced || impl.Gathered || impl.Tracer->HasObject())
     {
       impl.StopWorker();
       impl.Tracer->ClearObject();
-      impl.ObjectUsable = false;
       impl.ObjectPlaced = false;
+      impl.Gathered = false;
       impl.TracedMesh = 0;
       ++impl.ObjectVersion;
     }
+  };
+  auto fail = [&](const std::string& why)
+  {
+    drop();
     this->LastObjectProblem = why;
     if (impl.ObjectProblemWarned != why)
     {
@@ -794,8 +799,16 @@ bool vtkLightFieldActor::UpdateMovableObject()
     }
     return false;
   };
-  if (!object || !impl.Field || !impl.Tracer)
+  if (!impl.Field || !impl.Tracer)
   {
+    return false;
+  }
+  if (!object)
+  {
+    // None set, or the actor was deleted (held weakly): nothing of it may stay in the tracer.
+    drop();
+    impl.ObjectUsable = false;
+    this->LastObjectProblem.clear();
     return false;
   }
   vtkMapper* mapper = object->GetMapper();
@@ -821,6 +834,7 @@ bool vtkLightFieldActor::UpdateMovableObject()
     impl.ObjectModel = ReadObjectMesh(data, object);
     ++impl.ObjectMeshVersion;
     impl.ObjectUsable = false;
+    impl.ObjectProblemWarned.clear();
     const std::string problem = impl.ObjectModel.Validate();
     if (!problem.empty())
     {
