@@ -761,6 +761,8 @@ int View(const std::vector<std::string>& args)
     window->SetOffScreenRendering(cl.Has("--offscreen") ? 1 : 0);
     const std::string pressed = cl.Get("--keys");
     double total = 0.0, gather = 0.0, update = 0.0;
+    int updates = 0;
+    unsigned long version = actor->GetObjectVersion();
     for (int f = 0; f < frames; ++f)
     {
       if (static_cast<std::size_t>(f) < pressed.size())
@@ -774,8 +776,14 @@ int View(const std::vector<std::string>& args)
       }
       state.Render();
       total += state.LastFrameSeconds;
-      gather += actor->GetLastObjectSeconds() > 0.0 ? actor->GetLastGatherSeconds() : 0.0;
-      update += actor->GetLastObjectSeconds();
+      if (actor->GetObjectVersion() != version)
+      {
+        // The object moved (or changed) in this frame: one placement and one gather.
+        version = actor->GetObjectVersion();
+        gather += actor->GetLastGatherSeconds();
+        update += actor->GetLastObjectSeconds();
+        ++updates;
+      }
       if (path.empty())
       {
         renderer->GetActiveCamera()->Azimuth(2.0);
@@ -786,13 +794,14 @@ int View(const std::vector<std::string>& args)
     {
       PrintObjectNote(actor, object);
       const double* position = object.Actor->GetPosition();
-      std::cout << std::fixed << std::setprecision(2) << "object at " << position[0] << ","
-                << position[1] << "," << position[2] << "; per frame: object update "
-                << 1000.0 * update / frames << " ms, of which gathering "
-                << 1000.0 * gather / frames << " ms ("
-                << (actor->GetShadedObject() ? actor->GetShadedObject()->Mesh.Points.size() : 0)
-                << " points)\n"
-                << std::defaultfloat;
+      std::ostringstream line;
+      line << std::fixed << std::setprecision(2) << "object at " << position[0] << ","
+           << position[1] << "," << position[2] << "; moved in " << updates << " of " << frames
+           << " frames; per move: object update " << 1000.0 * update / std::max(1, updates)
+           << " ms, of which gathering " << 1000.0 * gather / std::max(1, updates) << " ms ("
+           << (actor->GetShadedObject() ? actor->GetShadedObject()->Mesh.Points.size() : 0)
+           << " points)\n";
+      std::cout << line.str();
     }
     std::cout << "rendered " << frames << " frames, mode "
               << vtkLightFieldActor::GetRenderModeAsString(actor->GetRenderMode()) << ", exposure "

@@ -861,8 +861,7 @@ bool vtkLightFieldActor::UpdateMovableObject()
   if (impl.ObjectPlaced && placement == impl.ObjectPlacement && !meshChanged &&
     ignore == impl.ObjectIgnored)
   {
-    this->LastObjectSeconds = 0.0;
-    return true;
+    return true; // the figures stay those of the last update that did work
   }
   const vlf::ObjectMesh unit = vlf::TransformMesh(impl.ObjectModel, placement);
   const std::string unitProblem = unit.Validate();

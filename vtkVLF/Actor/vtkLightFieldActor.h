@@ -201,7 +201,8 @@ public:
    * wall, degenerate. */
   const std::string& GetLastObjectProblem() const { return this->LastObjectProblem; }
   ///@{
-  /** Seconds of the last object update (placement and instance) and of its last gather. */
+  /** Seconds of the last object update that did work (placement, gather, instance; see
+   * GetObjectVersion for whether one happened) and of its gather alone. */
   double GetLastObjectSeconds() const { return this->LastObjectSeconds; }
   double GetLastGatherSeconds() const { return this->LastGatherSeconds; }
   ///@}
