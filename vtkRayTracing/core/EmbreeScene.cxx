@@ -19,8 +19,18 @@ struct EmbreeScene::Internals
   RTCDevice Device = nullptr;
   RTCScene Scene = nullptr;
   unsigned SphereGeometry = RTC_INVALID_GEOMETRY_ID;
+  unsigned TriangleGeometry = RTC_INVALID_GEOMETRY_ID;
+  // With an object: the static geometries move into StaticScene, instanced once (identity) in
+  // Scene beside the object's instance, so a commit of Scene after a move rebuilds only the
+  // top level over two instances (Embree rebuilds every BVH of a scene it commits).
+  RTCScene StaticScene = nullptr;
+  unsigned StaticInstance = RTC_INVALID_GEOMETRY_ID;
   RTCScene ObjectScene = nullptr; // the instanced object's own triangles
   unsigned ObjectInstance = RTC_INVALID_GEOMETRY_ID;
+  bool IsObject(unsigned instance) const
+  {
+    return instance != RTC_INVALID_GEOMETRY_ID && instance == this->ObjectInstance;
+  }
 };
 
 namespace
@@ -239,7 +249,7 @@ void EmbreeScene::Build(const TriangleScene& scene)
       indices[3 * t + 2] = scene.Triangles[t].z;
     }
     rtcCommitGeometry(geometry);
-    rtcAttachGeometry(this->Impl->Scene, geometry);
+    this->Impl->TriangleGeometry = rtcAttachGeometry(this->Impl->Scene, geometry);
     rtcReleaseGeometry(geometry);
   }
   if (!this->SphereList.empty())
@@ -270,6 +280,10 @@ EmbreeScene::~EmbreeScene()
   if (this->Impl->ObjectScene)
   {
     rtcReleaseScene(this->Impl->ObjectScene);
+  }
+  if (this->Impl->StaticScene)
+  {
+    rtcReleaseScene(this->Impl->StaticScene);
   }
   rtcReleaseScene(this->Impl->Scene);
   rtcReleaseDevice(this->Impl->Device);
@@ -314,6 +328,30 @@ void EmbreeScene::SetObject(
   rtcReleaseGeometry(geometry);
   rtcCommitScene(object);
 
+  if (!this->Impl->StaticScene)
+  {
+    // Once: the static geometries (same ids) into their own scene, built once more here.
+    RTCScene statics = rtcNewScene(device);
+    rtcSetSceneBuildQuality(statics, RTC_BUILD_QUALITY_HIGH);
+    for (const unsigned id : { this->Impl->TriangleGeometry, this->Impl->SphereGeometry })
+    {
+      if (id != RTC_INVALID_GEOMETRY_ID)
+      {
+        rtcAttachGeometryByID(statics, rtcGetGeometry(this->Impl->Scene, id), id);
+        rtcDetachGeometry(this->Impl->Scene, id);
+      }
+    }
+    rtcCommitScene(statics);
+    RTCGeometry identity = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_INSTANCE);
+    rtcSetGeometryInstancedScene(identity, statics);
+    rtcSetGeometryTimeStepCount(identity, 1);
+    const glm::mat4 one(1.0f);
+    rtcSetGeometryTransform(identity, 0, RTC_FORMAT_FLOAT4X4_COLUMN_MAJOR, &one[0][0]);
+    rtcCommitGeometry(identity);
+    this->Impl->StaticInstance = rtcAttachGeometry(this->Impl->Scene, identity);
+    rtcReleaseGeometry(identity);
+    this->Impl->StaticScene = statics;
+  }
   RTCGeometry instance = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_INSTANCE);
   rtcSetGeometryInstancedScene(instance, object);
   rtcSetGeometryTimeStepCount(instance, 1);
@@ -375,8 +413,7 @@ SceneHit EmbreeScene::Intersect(const SceneRay& ray) const
   rayHit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
   rtcIntersect1(this->Impl->Scene, &context, &rayHit);
   SceneHit hit;
-  if (rayHit.hit.geomID != RTC_INVALID_GEOMETRY_ID &&
-    rayHit.hit.instID[0] != RTC_INVALID_GEOMETRY_ID)
+  if (rayHit.hit.geomID != RTC_INVALID_GEOMETRY_ID && this->Impl->IsObject(rayHit.hit.instID[0]))
   {
     hit.ObjectTriangle = rayHit.hit.primID;
     hit.T = rayHit.ray.tfar;
@@ -443,7 +480,7 @@ void EmbreeScene::Intersect16(const SceneRay* rays, SceneHit* hits, int count) c
   {
     SceneHit hit;
     if (packet.hit.geomID[i] != RTC_INVALID_GEOMETRY_ID &&
-      packet.hit.instID[0][i] != RTC_INVALID_GEOMETRY_ID)
+      this->Impl->IsObject(packet.hit.instID[0][i]))
     {
       hit.ObjectTriangle = packet.hit.primID[i];
       hit.T = packet.ray.tfar[i];

@@ -74,8 +74,11 @@ public:
   ///@{
   // A movable object (Wither 2005, "Interactive dynamic objects in a virtual light field"):
   // its triangles in their own model coordinates become a separate Embree scene, joined to
-  // this one as a single instanced geometry. Moving it changes only the instance transform
-  // (SetObjectTransform), so the static triangles' BVH is never rebuilt. Hits on it report
+  // this one as a single instanced geometry. The first SetObject moves the static geometries
+  // into a scene of their own, instanced once (built once more, then never again; their rays
+  // pass one instance level more). Moving the object changes only its instance transform
+  // (SetObjectTransform): the commit rebuilds the top level over two instances, never the
+  // static BVH. Hits on it report
   // SceneHit::ObjectTriangle. Not thread-safe against queries running at the same time:
   // callers stop their tracing threads first. SetObject throws std::runtime_error when Embree
   // fails; degenerate triangles are kept and never hit.
