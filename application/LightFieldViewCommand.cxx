@@ -760,7 +760,7 @@ int View(const std::vector<std::string>& args)
   {
     window->SetOffScreenRendering(cl.Has("--offscreen") ? 1 : 0);
     const std::string pressed = cl.Get("--keys");
-    double total = 0.0, gather = 0.0, update = 0.0;
+    double total = 0.0, gather = 0.0, update = 0.0, still = 0.0;
     int updates = 0;
     unsigned long version = actor->GetObjectVersion();
     for (int f = 0; f < frames; ++f)
@@ -776,7 +776,11 @@ int View(const std::vector<std::string>& args)
       }
       state.Render();
       total += state.LastFrameSeconds;
-      if (actor->GetObjectVersion() != version)
+      if (actor->GetObjectVersion() == version)
+      {
+        still += state.LastFrameSeconds;
+      }
+      else
       {
         // The object moved (or changed) in this frame: one placement and one gather.
         version = actor->GetObjectVersion();
@@ -800,7 +804,8 @@ int View(const std::vector<std::string>& args)
            << " frames; per move: object update " << 1000.0 * update / std::max(1, updates)
            << " ms, of which gathering " << 1000.0 * gather / std::max(1, updates) << " ms ("
            << (actor->GetShadedObject() ? actor->GetShadedObject()->Mesh.Points.size() : 0)
-           << " points)\n";
+           << " points); frames without a move " << 1000.0 * still / std::max(1, frames - updates)
+           << " ms\n";
       std::cout << line.str();
     }
     std::cout << "rendered " << frames << " frames, mode "
