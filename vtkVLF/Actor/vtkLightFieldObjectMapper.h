@@ -22,7 +22,10 @@
  * vtkOpenGLPolyDataMapper would draw it.
  *
  * The scene actor is held weakly (vtkWeakPointer): the scene actor holds the object weakly too,
- * so neither keeps the other alive.
+ * so neither keeps the other alive. A scene actor without an object takes the first actor this
+ * mapper draws as its object; an actor that is not the scene actor's object is drawn plainly
+ * (with a warning). The shaded copy is drawn by an internal mapper and actor, so hardware
+ * picking does not report the user's actor.
  */
 #ifndef vtkLightFieldObjectMapper_h
 #define vtkLightFieldObjectMapper_h
