@@ -584,7 +584,16 @@ struct ViewerState
     this->Window->Render();
     this->LastFrameSeconds = SecondsSince(start);
     this->LastRender = Clock::now();
+    if (this->Record && this->Object && this->Object->Active)
+    {
+      // One placement per rendered frame: `--path` plays it back.
+      const double* p = this->Object->Actor->GetPosition();
+      const double* r = this->Object->Actor->GetOrientation();
+      *this->Record << p[0] << "," << p[1] << "," << p[2] << "," << r[0] << "," << r[1] << ","
+                    << r[2] << "," << this->Object->Actor->GetScale()[0] << "\n";
+    }
   }
+  std::ofstream* Record = nullptr;
 };
 
 void OnChar(vtkObject* caller, unsigned long, void* clientData, void*)
@@ -696,6 +705,8 @@ int View(const std::vector<std::string>& args)
   cl.AddValue("--path", "FILE.csv",
     "with --object and --frames: the object's placement per frame, one 'tx,ty,tz[,rx,ry,rz[,s]]' "
     "a line (repeated when shorter; the camera stays still)");
+  cl.AddValue("--record-path", "FILE.csv",
+    "with --object: write the object's placement at every rendered frame (for --path)");
   cl.AddValue("--frames", "N",
     "render N frames (turning the camera 2 degrees each) and exit: a non-interactive check", "0");
   cl.AddFlag("--offscreen", "no window (with --frames)");
@@ -734,6 +745,33 @@ int View(const std::vector<std::string>& args)
     std::cerr << command << ": --path: " << error << "\n";
     return 1;
   }
+  std::ofstream record;
+  if (cl.Has("--record-path"))
+  {
+    std::vector<std::string> inputs{ cl.Positional()[0] };
+    for (const char* option : { "--object", "--path" })
+    {
+      if (cl.Has(option))
+      {
+        inputs.push_back(cl.Get(option));
+      }
+    }
+    std::string problem = CheckOutputFile(cl.Get("--record-path"), inputs);
+    if (problem.empty() && vlf::FileExists(cl.Get("--record-path")))
+    {
+      problem = "'" + cl.Get("--record-path") + "' exists; a recorded path is never replaced";
+    }
+    if (!object.Active || !problem.empty())
+    {
+      std::cerr << command
+                << ": --record-path: " << (object.Active ? problem : std::string("needs --object"))
+                << "\n";
+      return 2;
+    }
+    record.open(cl.Get("--record-path"));
+    record << "# tx,ty,tz,rx,ry,rz,s per frame (mesolight vlf view --record-path)\n";
+    record << std::setprecision(9);
+  }
   vtkLightFieldActor* actor = walkthrough.Actor;
   vtkRenderer* renderer = walkthrough.Renderer;
   vtkRenderWindow* window = walkthrough.Window;
@@ -747,6 +785,7 @@ int View(const std::vector<std::string>& args)
   state.Window = window;
   state.Text = text;
   state.Object = &object;
+  state.Record = record.is_open() ? &record : nullptr;
   vtkNew<vtkRenderWindowInteractor> interactor;
   interactor->SetRenderWindow(window);
   vtkNew<vtkInteractorStyleTrackballCamera> style;
