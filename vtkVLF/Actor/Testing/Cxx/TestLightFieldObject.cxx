@@ -12,6 +12,7 @@
 #include "vtkLightFieldActorInternals.h"
 #include "vtkLightFieldObjectMapper.h"
 
+#include "EmitterLights.h"
 #include "ObjectGatherer.h"
 #include "ObjectMesh.h"
 
@@ -494,6 +495,34 @@ TEST(LightFieldObject, BadObjectsAreReportedNotCrashed)
   // The scene actor as its own object is refused.
   actor->SetMovableObject(actor);
   EXPECT_EQ(actor->GetMovableObject(), viewer.Object.GetPointer());
+}
+
+TEST(LightFieldObject, EmitterlessFieldIsRefusedBeforeAnyObject)
+{
+  // An emitter-less field never reaches the actor: building one is refused with a message, so
+  // the object's lights and gathered shading always have a lit field (the mapper still warns
+  // and shows the ambient term should an approximation come back without lights).
+  TriangleScene dark = MakeCornellBox();
+  for (SceneMaterial& m : dark.Materials)
+  {
+    m.Emission = glm::vec3(0.0f);
+  }
+  vlf::LightFieldSettings settings;
+  settings.Directions = 33;
+  settings.RaysPerSide = 8;
+  settings.TilesPerSide = 1;
+  try
+  {
+    vlf::LightField::Build(dark, settings);
+    FAIL() << "an emitter-less field was built";
+  }
+  catch (const std::exception& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("no emitter"), std::string::npos) << e.what();
+  }
+  // The lit field's estimate has lights (what the lights shading uses).
+  const vlf::LightApproximation lights = vlf::EstimateEmitterLights(MirrorCornellField(513));
+  EXPECT_FALSE(lights.Lights.empty());
 }
 
 } // namespace
