@@ -200,12 +200,10 @@ public:
   /** Why the object is not shown or looks wrong ("" when fine): outside the field, through a
    * wall, degenerate. */
   const std::string& GetLastObjectProblem() const { return this->LastObjectProblem; }
-  ///@{
   /** Seconds of the last object update that did work (placement, gather, instance; see
    * GetObjectVersion for whether one happened) and of its gather alone. */
   double GetLastObjectSeconds() const { return this->LastObjectSeconds; }
   double GetLastGatherSeconds() const { return this->LastGatherSeconds; }
-  ///@}
   /** Negative tests only: keep the object out of the tracer (no occlusion, no reflection). */
   vtkSetMacro(IgnoreObjectForTesting, bool);
   vtkGetMacro(IgnoreObjectForTesting, bool);
