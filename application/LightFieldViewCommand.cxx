@@ -4,10 +4,17 @@
 #include "ChartPlot.h"
 #include "CommandLine.h"
 #include "LightFieldCamera.h"
+#include "LightFieldObjectOptions.h"
 #include "OutputFile.h"
 #include "Timing.h"
 
 #include "vtkLightFieldActor.h"
+#include "vtkLightFieldObjectMapper.h"
+
+#include "ObjScene.h"
+#include "ObjectGatherer.h"
+#include "ObjectMesh.h"
+#include "ObjectShadows.h"
 
 #include "LightField.h"
 #include "PatchComparison.h"
@@ -15,13 +22,20 @@
 #include "Snapshot.h"
 #include "TriangleScene.h"
 
+#include <vtkActor.h>
 #include <vtkCallbackCommand.h>
 #include <vtkCamera.h>
+#include <vtkCellArray.h>
 #include <vtkCommand.h>
+#include <vtkFloatArray.h>
 #include <vtkInteractorStyleTrackballCamera.h>
 #include <vtkNew.h>
 #include <vtkOpenGLRenderWindow.h>
 #include <vtkPNGWriter.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkProperty.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderWindowInteractor.h>
 #include <vtkRenderer.h>
@@ -32,8 +46,10 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
@@ -180,6 +196,7 @@ int Render(const std::vector<std::string>& args)
     "progressive: write the frame shown while the camera moves (field lookups "
     "on mirrors), not the converged one");
   cl.AddFlag("--force", "replace an existing IMAGE.png");
+  AddObjectOptions(cl);
   int exitCode = 0;
   if (!cl.ParseArguments(args, exitCode))
   {
@@ -191,7 +208,12 @@ int Render(const std::vector<std::string>& args)
     return 2;
   }
   const std::string out = cl.Get("--out");
-  const std::string problem = CheckOutputFile(out, { cl.Positional()[0] });
+  std::vector<std::string> inputs{ cl.Positional()[0] };
+  if (cl.Has("--object") && cl.Get("--object") != "sphere" && cl.Get("--object") != "cube")
+  {
+    inputs.push_back(cl.Get("--object"));
+  }
+  const std::string problem = CheckOutputFile(out, inputs);
   if (!problem.empty())
   {
     std::cerr << command << ": --out: " << problem << "\n";
@@ -204,6 +226,11 @@ int Render(const std::vector<std::string>& args)
   }
   WalkthroughWindow walkthrough;
   if (const int status = OpenWalkthrough(cl, command, true, walkthrough))
+  {
+    return status;
+  }
+  MovableObject object;
+  if (const int status = SetUpObject(cl, command, walkthrough.Actor, walkthrough.Renderer, object))
   {
     return status;
   }
@@ -236,6 +263,24 @@ int Render(const std::vector<std::string>& args)
   std::cout << "wrote " << out << " (" << window->GetSize()[0] << "x" << window->GetSize()[1]
             << ", mode " << cl.Get("--mode") << ", " << seconds << " s, "
             << actor->GetLastScreenPixels() << " pixels from the CPU pass)\n";
+  if (object.Active)
+  {
+    PrintObjectNote(actor, object);
+    std::cout << "object: " << cl.Get("--object") << ", shading " << cl.Get("--shading")
+              << ", gather " << 1000.0 * actor->GetLastGatherSeconds() << " ms, "
+              << (actor->GetShadedObject() ? actor->GetShadedObject()->Mesh.Points.size() : 0)
+              << " points, shadows " << cl.Get("--shadows");
+    if (const mesolight::vlf::ObjectShadows* shadows = actor->GetObjectShadows())
+    {
+      std::cout << " (" << shadows->Maps().size() << " maps, "
+                << 1000.0 * actor->GetLastShadowSeconds() << " ms)";
+    }
+    else if (!actor->GetShadowProblem().empty())
+    {
+      std::cout << " (none: " << actor->GetShadowProblem() << ")";
+    }
+    std::cout << "\n";
+  }
   return 0;
 }
 
@@ -246,6 +291,7 @@ struct ViewerState
   vtkRenderWindow* Window = nullptr;
   vtkTextActor* Text = nullptr;
   vtkCommand* Keys = nullptr;
+  MovableObject* Object = nullptr;
   double LastFrameSeconds = 0.0;
   Clock::time_point LastRender = Clock::now();
   void UpdateText()
@@ -258,7 +304,11 @@ struct ViewerState
       << "  depth " << this->Actor->GetMaximumReflectionDepth() << "  " << std::setprecision(1)
       << 1000.0 * this->LastFrameSeconds << " ms"
       << (this->Actor->GetLastFrameConverged() ? "" : "  (refining)")
-      << "\n1-4/m mode  +/- exposure  t tone map  [ ] reflection depth  q quit";
+      << "\n1-4/m mode  +/- exposure  t tone map  [ ] reflection depth  q quit"
+      << (this->Object && this->Object->Active ? "\nobject: j/l x  k/i y  u/o z  y turn  (gather " +
+               std::to_string(static_cast<int>(1000.0 * this->Actor->GetLastGatherSeconds())) +
+               " ms)"
+                                               : std::string());
     this->Text->SetInput(s.str().c_str());
   }
   void Render()
@@ -268,7 +318,16 @@ struct ViewerState
     this->Window->Render();
     this->LastFrameSeconds = SecondsSince(start);
     this->LastRender = Clock::now();
+    if (this->Record && this->Object && this->Object->Active)
+    {
+      // One placement per rendered frame: `--path` plays it back.
+      const double* p = this->Object->Actor->GetPosition();
+      const double* r = this->Object->Actor->GetOrientation();
+      *this->Record << p[0] << "," << p[1] << "," << p[2] << "," << r[0] << "," << r[1] << ","
+                    << r[2] << "," << this->Object->Actor->GetScale()[0] << "\n";
+    }
   }
+  std::ofstream* Record = nullptr;
 };
 
 void OnChar(vtkObject* caller, unsigned long, void* clientData, void*)
@@ -308,6 +367,42 @@ void OnChar(vtkObject* caller, unsigned long, void* clientData, void*)
     default:
       handled = false;
   }
+  if (!handled && state->Object && state->Object->Active)
+  {
+    // The movable object: a twentieth of the field per press along world x, y, z; 15 degrees
+    // about its own y axis.
+    vtkActor* object = state->Object->Actor;
+    const double step = state->Object->Step;
+    double* p = object->GetPosition();
+    const double position[3] = { p[0], p[1], p[2] };
+    handled = true;
+    switch (key)
+    {
+      case 'j':
+        object->SetPosition(position[0] - step, position[1], position[2]);
+        break;
+      case 'l':
+        object->SetPosition(position[0] + step, position[1], position[2]);
+        break;
+      case 'k':
+        object->SetPosition(position[0], position[1] - step, position[2]);
+        break;
+      case 'i':
+        object->SetPosition(position[0], position[1] + step, position[2]);
+        break;
+      case 'u':
+        object->SetPosition(position[0], position[1], position[2] - step);
+        break;
+      case 'o':
+        object->SetPosition(position[0], position[1], position[2] + step);
+        break;
+      case 'y':
+        object->RotateY(15.0);
+        break;
+      default:
+        handled = false;
+    }
+  }
   if (handled)
   {
     // Keep the trackball style from acting on the same key (e.g. '3' toggles stereo there).
@@ -337,8 +432,15 @@ int View(const std::vector<std::string>& args)
     "Walks through a light field in a VTK window (vtkLightFieldActor). Mouse: rotate "
     "(left), pan\n(middle), zoom (right/wheel). Keys: 1-4 or m mode (geometry, raytrace, "
     "progressive,\ncoherent), +/- exposure, t tone map (clamp/Reinhard), [ ] reflection "
-    "depth, q quit.\n");
+    "depth, q quit.\nWith --object: j/l move it along x, k/i along y, u/o along z (a twentieth "
+    "of the field per press),\ny turns it 15 degrees about its y axis.\n");
   AddViewOptions(cl);
+  AddObjectOptions(cl);
+  cl.AddValue("--path", "FILE.csv",
+    "with --object and --frames: the object's placement per frame, one 'tx,ty,tz[,rx,ry,rz[,s]]' "
+    "a line (repeated when shorter; the camera stays still)");
+  cl.AddValue("--record-path", "FILE.csv",
+    "with --object: write the object's placement at every rendered frame (for --path)");
   cl.AddValue("--frames", "N",
     "render N frames (turning the camera 2 degrees each) and exit: a non-interactive check", "0");
   cl.AddFlag("--offscreen", "no window (with --frames)");
@@ -366,6 +468,44 @@ int View(const std::vector<std::string>& args)
   {
     return status;
   }
+  MovableObject object;
+  if (const int status = SetUpObject(cl, command, walkthrough.Actor, walkthrough.Renderer, object))
+  {
+    return status;
+  }
+  std::vector<ObjectPlacement> path;
+  if (cl.Has("--path") && !ReadPath(cl.Get("--path"), object.Placement, path, error))
+  {
+    std::cerr << command << ": --path: " << error << "\n";
+    return 1;
+  }
+  std::ofstream record;
+  if (cl.Has("--record-path"))
+  {
+    std::vector<std::string> inputs{ cl.Positional()[0] };
+    for (const char* option : { "--object", "--path" })
+    {
+      if (cl.Has(option))
+      {
+        inputs.push_back(cl.Get(option));
+      }
+    }
+    std::string problem = CheckOutputFile(cl.Get("--record-path"), inputs);
+    if (problem.empty() && vlf::FileExists(cl.Get("--record-path")))
+    {
+      problem = "'" + cl.Get("--record-path") + "' exists; a recorded path is never replaced";
+    }
+    if (!object.Active || !problem.empty())
+    {
+      std::cerr << command
+                << ": --record-path: " << (object.Active ? problem : std::string("needs --object"))
+                << "\n";
+      return 2;
+    }
+    record.open(cl.Get("--record-path"));
+    record << "# tx,ty,tz,rx,ry,rz,s per frame (mesolight vlf view --record-path)\n";
+    record << std::setprecision(9);
+  }
   vtkLightFieldActor* actor = walkthrough.Actor;
   vtkRenderer* renderer = walkthrough.Renderer;
   vtkRenderWindow* window = walkthrough.Window;
@@ -378,6 +518,8 @@ int View(const std::vector<std::string>& args)
   state.Actor = actor;
   state.Window = window;
   state.Text = text;
+  state.Object = &object;
+  state.Record = record.is_open() ? &record : nullptr;
   vtkNew<vtkRenderWindowInteractor> interactor;
   interactor->SetRenderWindow(window);
   vtkNew<vtkInteractorStyleTrackballCamera> style;
@@ -391,7 +533,9 @@ int View(const std::vector<std::string>& args)
   {
     window->SetOffScreenRendering(cl.Has("--offscreen") ? 1 : 0);
     const std::string pressed = cl.Get("--keys");
-    double total = 0.0;
+    double total = 0.0, gather = 0.0, update = 0.0, still = 0.0;
+    int updates = 0;
+    unsigned long version = actor->GetObjectVersion();
     for (int f = 0; f < frames; ++f)
     {
       if (static_cast<std::size_t>(f) < pressed.size())
@@ -399,10 +543,43 @@ int View(const std::vector<std::string>& args)
         interactor->SetKeyCode(pressed[static_cast<std::size_t>(f)]);
         interactor->InvokeEvent(vtkCommand::CharEvent, nullptr);
       }
+      if (!path.empty())
+      {
+        ApplyPlacement(object.Actor, path[static_cast<std::size_t>(f) % path.size()]);
+      }
       state.Render();
       total += state.LastFrameSeconds;
-      renderer->GetActiveCamera()->Azimuth(2.0);
+      if (actor->GetObjectVersion() == version)
+      {
+        still += state.LastFrameSeconds;
+      }
+      else
+      {
+        // The object moved (or changed) in this frame: one placement and one gather.
+        version = actor->GetObjectVersion();
+        gather += actor->GetLastGatherSeconds();
+        update += actor->GetLastObjectSeconds();
+        ++updates;
+      }
+      if (path.empty())
+      {
+        renderer->GetActiveCamera()->Azimuth(2.0);
+      }
       renderer->ResetCameraClippingRange();
+    }
+    if (object.Active)
+    {
+      PrintObjectNote(actor, object);
+      const double* position = object.Actor->GetPosition();
+      std::ostringstream line;
+      line << std::fixed << std::setprecision(2) << "object at " << position[0] << ","
+           << position[1] << "," << position[2] << "; moved in " << updates << " of " << frames
+           << " frames; per move: object update " << 1000.0 * update / std::max(1, updates)
+           << " ms, of which gathering " << 1000.0 * gather / std::max(1, updates) << " ms ("
+           << (actor->GetShadedObject() ? actor->GetShadedObject()->Mesh.Points.size() : 0)
+           << " points); frames without a move " << 1000.0 * still / std::max(1, frames - updates)
+           << " ms\n";
+      std::cout << line.str();
     }
     std::cout << "rendered " << frames << " frames, mode "
               << vtkLightFieldActor::GetRenderModeAsString(actor->GetRenderMode()) << ", exposure "
@@ -423,303 +600,6 @@ int View(const std::vector<std::string>& args)
   return 0;
 }
 
-// --- Benchmark ---------------------------------------------------------------------------------
-
-struct BenchRow
-{
-  std::string Mode;
-  int Frames = 0;
-  double FrameMs = 0.0;
-  double SpecularMs = 0.0;
-  double UploadMs = 0.0;
-  double Coverage = 0.0; // fraction of the view given a CPU (screen-space) value
-  double GoalMs = 0.0;   // frame time goal (convergence time for progressive-rest)
-  std::string Goal;
-  double DrawMs() const
-  {
-    const double ms = this->FrameMs - this->SpecularMs - this->UploadMs;
-    return ms > 1e-6 ? ms : 0.0;
-  }
-  bool Met() const { return this->FrameMs <= this->GoalMs; }
-};
-
-std::unique_ptr<vlf::LightField> BenchField(
-  const TriangleScene& scene, int directions, int rays, int iterations)
-{
-  vlf::LightFieldSettings settings;
-  settings.Directions = static_cast<std::size_t>(directions);
-  settings.RaysPerSide = rays;
-  settings.TilesPerSide = std::max(1, rays / 8);
-  std::unique_ptr<vlf::LightField> field = vlf::LightField::Build(scene, settings);
-  vlf::Propagate(*field, iterations);
-  return field;
-}
-
-void WaitForGpu(vtkRenderWindow* window)
-{
-  if (vtkOpenGLRenderWindow* gl = vtkOpenGLRenderWindow::SafeDownCast(window))
-  {
-    gl->WaitForCompletion();
-  }
-}
-
-// Renders `frames` frames turning the camera a little each (every frame a new view: the
-// progressive mode never rests), after two warm-up frames.
-BenchRow TimeFrames(vtkRenderWindow* window, vtkRenderer* renderer, vtkLightFieldActor* actor,
-  int mode, int frames, const std::string& name)
-{
-  actor->SetRenderMode(mode);
-  vtkCamera* camera = renderer->GetActiveCamera();
-  BenchRow row;
-  row.Mode = name;
-  const int* size = window->GetSize();
-  const double pixels = static_cast<double>(size[0]) * size[1];
-  for (int f = -2; f < frames; ++f)
-  {
-    camera->Azimuth(f % 2 ? 0.25 : -0.125);
-    renderer->ResetCameraClippingRange();
-    const Clock::time_point start = Clock::now();
-    window->Render();
-    WaitForGpu(window);
-    const double ms = 1000.0 * SecondsSince(start);
-    if (f < 0)
-    {
-      continue;
-    }
-    row.FrameMs += ms;
-    row.SpecularMs += 1000.0 * actor->GetLastSpecularSeconds();
-    row.UploadMs += 1000.0 * actor->GetLastUploadSeconds();
-    row.Coverage += static_cast<double>(actor->GetLastScreenPixels()) / pixels;
-    ++row.Frames;
-  }
-  row.FrameMs /= row.Frames;
-  row.SpecularMs /= row.Frames;
-  row.UploadMs /= row.Frames;
-  row.Coverage /= row.Frames;
-  return row;
-}
-
-int Bench(const std::vector<std::string>& args)
-{
-  const char* command = "mesolight bench walkthrough";
-  CommandLine cl(command,
-    "mesolight bench walkthrough [FIELD] [options]\n\n"
-    "Frame time of every walkthrough mode (vtkLightFieldActor) in an offscreen window: "
-    "the Cornell box\nwith a mirror wall (or FIELD) and the plain Cornell box for the "
-    "diffuse-only row, split into\nstages (CPU screen-space pass, texture upload, draw "
-    "and composite).\n");
-  cl.AddValue("--size", "WxH", "window size", "800x800");
-  cl.AddValue("--frames", "N", "frames timed per mode (raytrace and rest: at most 5)", "30");
-  cl.AddValue("--directions", "N", "directions of the built-in fields", "2049");
-  cl.AddValue("--rays", "N", "rays per subfield side", "32");
-  cl.AddValue("--iterations", "K", "propagation iterations", "6");
-  cl.AddValue("--csv", "FILE", "write the table as CSV");
-  cl.AddValue("--plot", "FILE.png", "write a chart of the stages (VTK charts)");
-  int exitCode = 0;
-  if (!cl.ParseArguments(args, exitCode))
-  {
-    return exitCode; // --help printed, or a usage error reported
-  }
-  if (const std::string problem = CheckOutputOptions(cl, { "--csv", "--plot" }, cl.Positional());
-      !problem.empty())
-  {
-    return cl.UsageError(problem);
-  }
-  std::string error;
-  int width = 0, height = 0, frames = 0, directions = 0, rays = 0, iterations = 0;
-  if (!cl.GetSize("--size", 1, 16384, width, height, error))
-  {
-    return cl.UsageError(error);
-  }
-  if (!cl.GetInt("--frames", 1, 100000, frames, error) ||
-    !cl.GetInt("--directions", 5, 1 << 20, directions, error) ||
-    !cl.GetInt("--rays", 4, 4096, rays, error) ||
-    !cl.GetInt("--iterations", 1, 1000, iterations, error))
-  {
-    std::cerr << command << ": " << error << "\n";
-    return 2;
-  }
-  std::unique_ptr<vlf::LightField> mirrorField, diffuseField;
-  try
-  {
-    const Clock::time_point start = Clock::now();
-    if (cl.Positional().size() == 1)
-    {
-      mirrorField = vlf::ReadSnapshot(cl.Positional()[0]);
-    }
-    else
-    {
-      mirrorField = BenchField(MakeCornellBoxWithMirror(), directions, rays, iterations);
-    }
-    diffuseField = BenchField(MakeCornellBox(), directions, rays, iterations);
-    std::cout << "fields ready in " << SecondsSince(start) << " s ("
-              << mirrorField->Directions().Size() << " directions, "
-              << mirrorField->Settings().RaysPerSide << " rays per side)\n";
-  }
-  catch (const std::exception& e)
-  {
-    std::cerr << command << ": " << e.what() << "\n";
-    return 1;
-  }
-  const std::size_t fieldDirections = mirrorField->Directions().Size();
-  vtkNew<vtkRenderWindow> window;
-  window->SetOffScreenRendering(1);
-  window->SetMultiSamples(0);
-  window->SetSize(width, height);
-  vtkNew<vtkRenderer> renderer;
-  window->AddRenderer(renderer);
-  vtkNew<vtkLightFieldActor> actor;
-  actor->SetLightField(mirrorField.get());
-  renderer->AddActor(actor);
-  auto resetCamera = [&]()
-  {
-    const CornellCamera c;
-    vtkCamera* camera = renderer->GetActiveCamera();
-    camera->SetPosition(c.Position.x, c.Position.y, c.Position.z);
-    camera->SetFocalPoint(c.FocalPoint.x, c.FocalPoint.y, c.FocalPoint.z);
-    camera->SetViewUp(c.ViewUp.x, c.ViewUp.y, c.ViewUp.z);
-    camera->SetViewAngle(c.ViewAngleDegrees);
-    renderer->ResetCameraClippingRange();
-  };
-  std::vector<BenchRow> rows;
-  resetCamera();
-  rows.push_back(
-    TimeFrames(window, renderer, actor, vtkLightFieldActor::Geometry, frames, "geometry"));
-  rows.back().GoalMs = 1000.0 / 30.0;
-  rows.back().Goal = ">= 30 fps";
-  actor->SetLightField(diffuseField.get());
-  resetCamera();
-  rows.push_back(
-    TimeFrames(window, renderer, actor, vtkLightFieldActor::Progressive, frames, "diffuse-only"));
-  rows.back().GoalMs = 1000.0 / 30.0;
-  rows.back().Goal = ">= 30 fps";
-  actor->SetLightField(mirrorField.get());
-  resetCamera();
-  rows.push_back(TimeFrames(
-    window, renderer, actor, vtkLightFieldActor::Raytrace, std::min(frames, 5), "raytrace"));
-  rows.back().GoalMs = 1000.0;
-  rows.back().Goal = ">= 1 fps";
-  resetCamera();
-  rows.push_back(TimeFrames(
-    window, renderer, actor, vtkLightFieldActor::Progressive, frames, "progressive-moving"));
-  rows.back().GoalMs = 50.0;
-  rows.back().Goal = ">= 20 fps";
-  resetCamera();
-  rows.push_back(
-    TimeFrames(window, renderer, actor, vtkLightFieldActor::Coherent, frames, "coherent"));
-  rows.back().GoalMs = 50.0;
-  rows.back().Goal = ">= 20 fps";
-  {
-    // At rest: from the first frame of a new view to the frame showing its traced reflections.
-    BenchRow rest;
-    rest.Mode = "progressive-rest";
-    resetCamera();
-    actor->SetRenderMode(vtkLightFieldActor::Progressive);
-    const int views = std::min(frames, 5);
-    for (int v = 0; v < views; ++v)
-    {
-      renderer->GetActiveCamera()->Azimuth(0.5);
-      renderer->ResetCameraClippingRange();
-      const Clock::time_point start = Clock::now();
-      window->Render();
-      actor->WaitForTracedReflections(60.0);
-      window->Render();
-      WaitForGpu(window);
-      rest.FrameMs += 1000.0 * SecondsSince(start);
-      rest.UploadMs += 1000.0 * actor->GetLastUploadSeconds();
-      rest.Coverage +=
-        static_cast<double>(actor->GetLastScreenPixels()) / (static_cast<double>(width) * height);
-      ++rest.Frames;
-    }
-    rest.FrameMs /= rest.Frames;
-    rest.UploadMs /= rest.Frames;
-    rest.Coverage /= rest.Frames;
-    rest.SpecularMs = std::max(0.0, rest.FrameMs - rest.UploadMs); // the worker's trace dominates
-    rest.GoalMs = 1000.0;
-    rest.Goal = "converges <= 1 s";
-    rows.push_back(rest);
-  }
-
-  // Stages: static diffuse = the diffuse-only row's draw (same shader and geometry, no screen
-  // values); specular viewport = CPU pass + upload; composite = what a mode's draw adds to that.
-  const double staticDiffuseMs = rows[1].DrawMs();
-  std::cout << std::fixed << std::setprecision(2);
-  std::cout << "\n"
-            << width << "x" << height << ", " << fieldDirections
-            << " directions; ms per frame (progressive-rest: ms to converge)\n";
-  std::cout
-    << "mode                 frames  frame ms     fps  specular ms  upload ms  draw+composite ms  "
-       "(composite over static diffuse)  CPU-pass coverage  goal\n";
-  for (const BenchRow& r : rows)
-  {
-    std::cout << std::left << std::setw(20) << r.Mode << std::right << std::setw(7) << r.Frames
-              << std::setw(10) << r.FrameMs << std::setw(8) << 1000.0 / r.FrameMs << std::setw(13)
-              << r.SpecularMs << std::setw(11) << r.UploadMs << std::setw(19) << r.DrawMs()
-              << std::setw(33)
-              << (r.Mode == "progressive-rest" ? 0.0 : r.DrawMs() - staticDiffuseMs)
-              << std::setw(17) << 100.0 * r.Coverage << "%  " << r.Goal
-              << (r.Met() ? " (met)" : " (NOT met)") << "\n";
-  }
-  if (cl.Has("--csv"))
-  {
-    std::ofstream csv(cl.Get("--csv"));
-    csv << "mode,frames,frame_ms,fps,specular_ms,upload_ms,draw_composite_ms,static_diffuse_ms,"
-           "composite_ms,"
-           "cpu_pass_coverage,goal,met,width,height,directions\n";
-    for (const BenchRow& r : rows)
-    {
-      csv << r.Mode << "," << r.Frames << "," << r.FrameMs << "," << 1000.0 / r.FrameMs << ","
-          << r.SpecularMs << "," << r.UploadMs << "," << r.DrawMs() << "," << staticDiffuseMs << ","
-          << (r.Mode == "progressive-rest" ? 0.0 : r.DrawMs() - staticDiffuseMs) << ","
-          << r.Coverage << "," << r.Goal << "," << (r.Met() ? 1 : 0) << "," << width << ","
-          << height << "," << fieldDirections << "\n";
-    }
-    if (!csv)
-    {
-      std::cerr << command << ": could not write '" << cl.Get("--csv") << "'\n";
-      return 1;
-    }
-    std::cout << "wrote " << cl.Get("--csv") << "\n";
-  }
-  if (cl.Has("--plot"))
-  {
-    ScatterChart chart;
-    chart.Title = "Light field walkthrough, " + std::to_string(width) + "x" +
-      std::to_string(height) + ", " + std::to_string(fieldDirections) +
-      " directions\n(0 geometry, 1 diffuse-only, 2 raytrace, 3 progressive-moving, 4 coherent, "
-      "5 progressive-rest: time to converge)";
-    chart.XLabel = "mode";
-    chart.YLabel = "milliseconds (log scale)";
-    chart.LogY = true;
-    chart.YFloor = 0.01;
-    ChartSeries frame{ "frame", {}, {} }, specular{ "CPU screen pass", {}, {} },
-      upload{ "texture upload", {}, {} }, draw{ "draw + composite", {}, {} };
-    chart.Line.Name = "goal";
-    for (std::size_t i = 0; i < rows.size(); ++i)
-    {
-      const double x = static_cast<double>(i);
-      frame.X.push_back(x);
-      frame.Y.push_back(rows[i].FrameMs);
-      specular.X.push_back(x);
-      specular.Y.push_back(rows[i].SpecularMs);
-      upload.X.push_back(x);
-      upload.Y.push_back(rows[i].UploadMs);
-      draw.X.push_back(x);
-      draw.Y.push_back(rows[i].DrawMs());
-      chart.Line.X.push_back(x);
-      chart.Line.Y.push_back(rows[i].GoalMs);
-    }
-    chart.Points = { frame, specular, upload, draw };
-    if (!WriteScatterChartPng(chart, cl.Get("--plot"), error))
-    {
-      std::cerr << command << ": " << error << "\n";
-      return 1;
-    }
-    std::cout << "wrote " << cl.Get("--plot") << "\n";
-  }
-  return 0;
-}
-
 } // namespace
 
 int RunLightFieldView(const std::vector<std::string>& args)
@@ -730,11 +610,6 @@ int RunLightFieldView(const std::vector<std::string>& args)
 int RunLightFieldRender(const std::vector<std::string>& args)
 {
   return Render(args);
-}
-
-int RunWalkthroughBenchmark(const std::vector<std::string>& args)
-{
-  return Bench(args);
 }
 
 } // namespace mesolight

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// `mesolight vlf view`, `mesolight vlf render --mode` and `mesolight bench walkthrough`: the light
+// `mesolight vlf view` and `mesolight vlf render --mode`: the light
 // field walkthrough through vtkLightFieldActor (Wither 2005 §2.4.2.2). docs/walkthrough.md has
 // examples and measured figures. `mesolight vlf render` without --mode stays the CPU reference in
 // VlfCommand.cxx.
@@ -15,8 +15,6 @@ namespace mesolight
 int RunLightFieldView(const std::vector<std::string>& args);
 /** mesolight vlf render FIELD --mode geometry|raytrace|progressive|coherent --out F.png [...] */
 int RunLightFieldRender(const std::vector<std::string>& args);
-/** mesolight bench walkthrough [FIELD] [--size 800x800] [--frames N] [--csv F] [--plot F.png] */
-int RunWalkthroughBenchmark(const std::vector<std::string>& args);
 } // namespace mesolight
 
 #endif

@@ -12,6 +12,7 @@
 #include "RenderCommand.h"
 #include "TraceCommand.h"
 #include "VlfCommand.h"
+#include "WalkthroughBenchmark.h"
 
 #include <vtkLogger.h>
 #include <vtkNew.h>

@@ -19,6 +19,18 @@ struct EmbreeScene::Internals
   RTCDevice Device = nullptr;
   RTCScene Scene = nullptr;
   unsigned SphereGeometry = RTC_INVALID_GEOMETRY_ID;
+  unsigned TriangleGeometry = RTC_INVALID_GEOMETRY_ID;
+  // With an object: the static geometries move into StaticScene, instanced once (identity) in
+  // Scene beside the object's instance, so a commit of Scene after a move rebuilds only the
+  // top level over two instances (Embree rebuilds every BVH of a scene it commits).
+  RTCScene StaticScene = nullptr;
+  unsigned StaticInstance = RTC_INVALID_GEOMETRY_ID;
+  RTCScene ObjectScene = nullptr; // the instanced object's own triangles
+  unsigned ObjectInstance = RTC_INVALID_GEOMETRY_ID;
+  bool IsObject(unsigned instance) const
+  {
+    return instance != RTC_INVALID_GEOMETRY_ID && instance == this->ObjectInstance;
+  }
 };
 
 namespace
@@ -237,7 +249,7 @@ void EmbreeScene::Build(const TriangleScene& scene)
       indices[3 * t + 2] = scene.Triangles[t].z;
     }
     rtcCommitGeometry(geometry);
-    rtcAttachGeometry(this->Impl->Scene, geometry);
+    this->Impl->TriangleGeometry = rtcAttachGeometry(this->Impl->Scene, geometry);
     rtcReleaseGeometry(geometry);
   }
   if (!this->SphereList.empty())
@@ -265,8 +277,130 @@ void EmbreeScene::Build(const TriangleScene& scene)
 
 EmbreeScene::~EmbreeScene()
 {
+  if (this->Impl->ObjectScene)
+  {
+    rtcReleaseScene(this->Impl->ObjectScene);
+  }
+  if (this->Impl->StaticScene)
+  {
+    rtcReleaseScene(this->Impl->StaticScene);
+  }
   rtcReleaseScene(this->Impl->Scene);
   rtcReleaseDevice(this->Impl->Device);
+}
+
+void EmbreeScene::SetObject(
+  const std::vector<glm::vec3>& points, const std::vector<glm::uvec3>& triangles)
+{
+  this->ClearObject();
+  if (points.empty() || triangles.empty())
+  {
+    return;
+  }
+  RTCDevice device = this->Impl->Device;
+  RTCScene object = rtcNewScene(device);
+  RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+  auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
+    geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), points.size()));
+  auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
+    geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), triangles.size()));
+  if (!vertices || !indices)
+  {
+    const std::string why = DeviceError(device);
+    rtcReleaseGeometry(geometry);
+    rtcReleaseScene(object);
+    throw std::runtime_error("Embree: cannot allocate the object's buffers (" + why + ")");
+  }
+  for (std::size_t v = 0; v < points.size(); ++v)
+  {
+    vertices[3 * v + 0] = points[v].x;
+    vertices[3 * v + 1] = points[v].y;
+    vertices[3 * v + 2] = points[v].z;
+  }
+  for (std::size_t t = 0; t < triangles.size(); ++t)
+  {
+    indices[3 * t + 0] = triangles[t].x;
+    indices[3 * t + 1] = triangles[t].y;
+    indices[3 * t + 2] = triangles[t].z;
+  }
+  rtcCommitGeometry(geometry);
+  rtcAttachGeometry(object, geometry);
+  rtcReleaseGeometry(geometry);
+  rtcCommitScene(object);
+
+  if (!this->Impl->StaticScene)
+  {
+    // Once: the static geometries (same ids) into their own scene, built once more here.
+    RTCScene statics = rtcNewScene(device);
+    rtcSetSceneBuildQuality(statics, RTC_BUILD_QUALITY_HIGH);
+    for (const unsigned id : { this->Impl->TriangleGeometry, this->Impl->SphereGeometry })
+    {
+      if (id != RTC_INVALID_GEOMETRY_ID)
+      {
+        rtcAttachGeometryByID(statics, rtcGetGeometry(this->Impl->Scene, id), id);
+        rtcDetachGeometry(this->Impl->Scene, id);
+      }
+    }
+    rtcCommitScene(statics);
+    RTCGeometry identity = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_INSTANCE);
+    rtcSetGeometryInstancedScene(identity, statics);
+    rtcSetGeometryTimeStepCount(identity, 1);
+    const glm::mat4 one(1.0f);
+    rtcSetGeometryTransform(identity, 0, RTC_FORMAT_FLOAT4X4_COLUMN_MAJOR, &one[0][0]);
+    rtcCommitGeometry(identity);
+    this->Impl->StaticInstance = rtcAttachGeometry(this->Impl->Scene, identity);
+    rtcReleaseGeometry(identity);
+    this->Impl->StaticScene = statics;
+  }
+  RTCGeometry instance = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_INSTANCE);
+  rtcSetGeometryInstancedScene(instance, object);
+  rtcSetGeometryTimeStepCount(instance, 1);
+  const glm::mat4 identity(1.0f);
+  rtcSetGeometryTransform(instance, 0, RTC_FORMAT_FLOAT4X4_COLUMN_MAJOR, &identity[0][0]);
+  rtcCommitGeometry(instance);
+  this->Impl->ObjectInstance = rtcAttachGeometry(this->Impl->Scene, instance);
+  rtcReleaseGeometry(instance);
+  this->Impl->ObjectScene = object;
+  rtcCommitScene(this->Impl->Scene);
+  if (rtcGetDeviceError(device) != RTC_ERROR_NONE)
+  {
+    const std::string why = DeviceError(device);
+    this->ClearObject();
+    throw std::runtime_error("Embree: cannot build the object (" + why + ")");
+  }
+}
+
+void EmbreeScene::SetObjectTransform(const glm::mat4& objectToScene)
+{
+  if (!this->HasObject())
+  {
+    return;
+  }
+  RTCGeometry instance = rtcGetGeometry(this->Impl->Scene, this->Impl->ObjectInstance);
+  // glm stores columns contiguously: Embree's column-major 4 x 4 layout.
+  rtcSetGeometryTransform(instance, 0, RTC_FORMAT_FLOAT4X4_COLUMN_MAJOR, &objectToScene[0][0]);
+  rtcCommitGeometry(instance);
+  rtcCommitScene(this->Impl->Scene);
+}
+
+void EmbreeScene::ClearObject()
+{
+  if (this->Impl->ObjectInstance != RTC_INVALID_GEOMETRY_ID)
+  {
+    rtcDetachGeometry(this->Impl->Scene, this->Impl->ObjectInstance);
+    this->Impl->ObjectInstance = RTC_INVALID_GEOMETRY_ID;
+    rtcCommitScene(this->Impl->Scene);
+  }
+  if (this->Impl->ObjectScene)
+  {
+    rtcReleaseScene(this->Impl->ObjectScene);
+    this->Impl->ObjectScene = nullptr;
+  }
+}
+
+bool EmbreeScene::HasObject() const
+{
+  return this->Impl->ObjectInstance != RTC_INVALID_GEOMETRY_ID;
 }
 
 SceneHit EmbreeScene::Intersect(const SceneRay& ray) const
@@ -279,7 +413,14 @@ SceneHit EmbreeScene::Intersect(const SceneRay& ray) const
   rayHit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
   rtcIntersect1(this->Impl->Scene, &context, &rayHit);
   SceneHit hit;
-  if (rayHit.hit.geomID != RTC_INVALID_GEOMETRY_ID &&
+  if (rayHit.hit.geomID != RTC_INVALID_GEOMETRY_ID && this->Impl->IsObject(rayHit.hit.instID[0]))
+  {
+    hit.ObjectTriangle = rayHit.hit.primID;
+    hit.T = rayHit.ray.tfar;
+    hit.U = rayHit.hit.u;
+    hit.V = rayHit.hit.v;
+  }
+  else if (rayHit.hit.geomID != RTC_INVALID_GEOMETRY_ID &&
     rayHit.hit.geomID == this->Impl->SphereGeometry)
   {
     hit.Sphere = rayHit.hit.primID;
@@ -339,6 +480,14 @@ void EmbreeScene::Intersect16(const SceneRay* rays, SceneHit* hits, int count) c
   {
     SceneHit hit;
     if (packet.hit.geomID[i] != RTC_INVALID_GEOMETRY_ID &&
+      this->Impl->IsObject(packet.hit.instID[0][i]))
+    {
+      hit.ObjectTriangle = packet.hit.primID[i];
+      hit.T = packet.ray.tfar[i];
+      hit.U = packet.hit.u[i];
+      hit.V = packet.hit.v[i];
+    }
+    else if (packet.hit.geomID[i] != RTC_INVALID_GEOMETRY_ID &&
       packet.hit.geomID[i] == this->Impl->SphereGeometry)
     {
       hit.Sphere = packet.hit.primID[i];

@@ -8,6 +8,7 @@
 
 #include "TriangleScene.h"
 
+#include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
 #include <cstdint>
@@ -34,7 +35,13 @@ struct SceneHit
   float U = 0.0f, V = 0.0f; // barycentrics: point = (1-U-V) v0 + U v1 + V v2
   // Index into the scene's analytic spheres when a sphere was hit (Triangle is None then).
   std::uint32_t Sphere = None;
-  bool Hit() const { return this->Triangle != None || this->Sphere != None; }
+  // Index into the instanced object's triangles (SetObject) when the object was hit (Triangle
+  // and Sphere are None then); U and V are the barycentrics on that triangle.
+  std::uint32_t ObjectTriangle = None;
+  bool Hit() const
+  {
+    return this->Triangle != None || this->Sphere != None || this->ObjectTriangle != None;
+  }
 };
 
 // An analytic sphere, intersected exactly (Embree user geometry) rather than tessellated.
@@ -63,6 +70,24 @@ public:
   bool Occluded(const SceneRay& ray) const;
   // Nearest hits of up to 16 rays (count <= 16) traced as one coherent packet. Thread-safe.
   void Intersect16(const SceneRay* rays, SceneHit* hits, int count) const;
+
+  ///@{
+  // A movable object (Wither 2005, "Interactive dynamic objects in a virtual light field"):
+  // its triangles in their own model coordinates become a separate Embree scene, joined to
+  // this one as a single instanced geometry. The first SetObject moves the static geometries
+  // into a scene of their own, instanced once (built once more, then never again; their rays
+  // pass one instance level more). Moving the object changes only its instance transform
+  // (SetObjectTransform): the commit rebuilds the top level over two instances, never the
+  // static BVH. Hits on it report
+  // SceneHit::ObjectTriangle. Not thread-safe against queries running at the same time:
+  // callers stop their tracing threads first. SetObject throws std::runtime_error when Embree
+  // fails; degenerate triangles are kept and never hit.
+  void SetObject(const std::vector<glm::vec3>& points, const std::vector<glm::uvec3>& triangles);
+  // Model -> scene coordinates of the object (an affine matrix).
+  void SetObjectTransform(const glm::mat4& objectToScene);
+  void ClearObject();
+  bool HasObject() const;
+  ///@}
 
   const TriangleScene& Scene() const { return *this->Triangles; }
   const std::vector<SceneSphere>& Spheres() const { return this->SphereList; }

@@ -8,23 +8,29 @@
 #include "PatchComparison.h" // ToWorld / ToUnit
 #include "Snapshot.h"
 
+#include "vtkActor.h"
 #include "vtkAlgorithm.h"
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
+#include "vtkDataArray.h"
 #include "vtkDataObject.h"
 #include "vtkFloatArray.h"
+#include "vtkMapper.h"
 #include "vtkMath.h"
+#include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkProperty.h"
 #include "vtkRenderer.h"
+#include "vtkTriangleFilter.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkVirtualLightField.h"
 
 #include "ParallelFor.h"
 
 #include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
 
 #include <algorithm>
 #include <chrono>
@@ -37,10 +43,6 @@ vtkStandardNewMacro(vtkLightFieldActor);
 namespace
 {
 using Clock = std::chrono::steady_clock;
-double SecondsSince(Clock::time_point t)
-{
-  return std::chrono::duration<double>(Clock::now() - t).count();
-}
 
 // The field's scene in world coordinates, three points per triangle (each carries its own
 // surface's atlas coordinates), face normals, Kd colours for the geometry mode.
@@ -260,6 +262,7 @@ bool vtkLightFieldActor::UseField(const mesolight::vlf::LightField* field)
   impl.SharpReady = false;
   impl.HaveLastView = false;
   impl.WarnedNoMirrors = false;
+  impl.ForgetObjectState(); // the new tracer has no object yet
   this->LastError.clear();
   if (field)
   {
@@ -347,7 +350,7 @@ void vtkLightFieldActor::TraceAtRest()
     impl.WorkerKey = this->TraceKey();
   }
   const vlf::TraceOptions options = this->CurrentTraceOptions();
-  const int key = this->TraceKey();
+  const std::uint64_t key = this->TraceKey();
   const vlf::WalkthroughTracer* tracer = impl.Tracer.get();
   Internals* self = &impl;
   // One worker thread, row by row (Wither 2005 §2.4.2.2.3: the high-quality rendering
@@ -475,6 +478,11 @@ bool vtkLightFieldActor::PrepareFrame(vtkRenderer* renderer)
   {
     return false;
   }
+  // The movable object first: the screen pass below traces it where it stands now. A moved
+  // object is a change like a moved camera (progressive: blurry now, sharp once at rest).
+  this->UpdateMovableObject();
+  const bool objectMoved = impl.ObjectVersion != impl.ObjectVersionAtLastFrame;
+  impl.ObjectVersionAtLastFrame = impl.ObjectVersion;
   if (this->RenderMode == Geometry)
   {
     return true;
@@ -615,13 +623,13 @@ bool vtkLightFieldActor::PrepareFrame(vtkRenderer* renderer)
         // Moving: the blurry field lookup now. A new view cancels the worker's trace of the
         // previous one; the view is traced once it rests (the same view rendered again, or
         // WaitForTracedReflections).
-        if (newView)
+        if (newView || objectMoved)
         {
           ++impl.Generation;
         }
         shadeTiles(impl.Rect, false, vlf::SpecularQuality::Moving);
         vlf::WalkthroughTracer::DilateEdges(impl.Rect, impl.Screen.data());
-        if (!newView)
+        if (!newView && !objectMoved)
         {
           this->TraceAtRest();
         }
@@ -634,232 +642,6 @@ bool vtkLightFieldActor::PrepareFrame(vtkRenderer* renderer)
   impl.Origin[1] = y0 + impl.Rect.Y0;
   impl.ScreenValid = true;
   return true;
-}
-
-//------------------------------------------------------------------------------
-// Shadows of the movable object (vtkLightFieldActorShadows.h, core/ObjectShadows.h).
-//------------------------------------------------------------------------------
-vtkLightFieldActor::ShadowState& vtkLightFieldActor::Shadows()
-{
-  if (!this->ShadowData)
-  {
-    this->ShadowData.reset(new ShadowState);
-  }
-  return *this->ShadowData;
-}
-
-vtkLightFieldActor::ShadowState* vtkLightFieldActor::GetShadowState()
-{
-  return &this->Shadows();
-}
-
-namespace
-{
-template <typename T>
-void SetShadowSetting(
-  vtkLightFieldActor* self, vtkLightFieldActor::ShadowState& state, T& setting, T value)
-{
-  if (setting != value)
-  {
-    setting = value;
-    state.Dirty = true;
-    self->Modified();
-  }
-}
-} // namespace
-
-void vtkLightFieldActor::SetShadowMode(int mode)
-{
-  SetShadowSetting(this, this->Shadows(), this->Shadows().Settings.Mode,
-    static_cast<vlf::ShadowMode>(std::min(std::max(mode, 0), 5)));
-}
-
-int vtkLightFieldActor::GetShadowMode() const
-{
-  return this->ShadowData ? static_cast<int>(this->ShadowData->Settings.Mode) : ShadowField;
-}
-
-const char* vtkLightFieldActor::GetShadowModeAsString(int mode)
-{
-  return vlf::ShadowModeName(static_cast<vlf::ShadowMode>(mode));
-}
-
-int vtkLightFieldActor::GetShadowModeFromString(const std::string& name)
-{
-  vlf::ShadowMode mode;
-  return vlf::ShadowModeFromName(name, mode) ? static_cast<int>(mode) : -1;
-}
-
-void vtkLightFieldActor::SetShadowMapResolution(int texels)
-{
-  SetShadowSetting(this, this->Shadows(), this->Shadows().Settings.Resolution,
-    std::min(std::max(texels, 16), 4096));
-}
-
-int vtkLightFieldActor::GetShadowMapResolution() const
-{
-  return this->ShadowData ? this->ShadowData->Settings.Resolution
-                          : vlf::ShadowSettings().Resolution;
-}
-
-void vtkLightFieldActor::SetShadowEmitterCount(int count)
-{
-  SetShadowSetting(this, this->Shadows(), this->Shadows().Settings.MaximumEmitters,
-    std::min(std::max(count, 1), 8));
-}
-
-int vtkLightFieldActor::GetShadowEmitterCount() const
-{
-  return this->ShadowData ? this->ShadowData->Settings.MaximumEmitters
-                          : vlf::ShadowSettings().MaximumEmitters;
-}
-
-void vtkLightFieldActor::SetShadowAreaSamples(int perSide)
-{
-  SetShadowSetting(
-    this, this->Shadows(), this->Shadows().Settings.AreaSamples, std::min(std::max(perSide, 1), 4));
-}
-
-int vtkLightFieldActor::GetShadowAreaSamples() const
-{
-  return this->ShadowData ? this->ShadowData->Settings.AreaSamples
-                          : vlf::ShadowSettings().AreaSamples;
-}
-
-void vtkLightFieldActor::SetShadowPCFKernel(int texels)
-{
-  const int k = std::min(std::max(texels, 1), 9);
-  SetShadowSetting(
-    this, this->Shadows(), this->Shadows().Settings.PcfKernel, k % 2 == 0 ? k + 1 : k);
-}
-
-int vtkLightFieldActor::GetShadowPCFKernel() const
-{
-  return this->ShadowData ? this->ShadowData->Settings.PcfKernel : vlf::ShadowSettings().PcfKernel;
-}
-
-void vtkLightFieldActor::SetShadowBackProjectionRemoval(bool remove)
-{
-  SetShadowSetting(this, this->Shadows(), this->Shadows().Settings.RemoveBackProjection, remove);
-}
-
-bool vtkLightFieldActor::GetShadowBackProjectionRemoval() const
-{
-  return !this->ShadowData || this->ShadowData->Settings.RemoveBackProjection;
-}
-
-void vtkLightFieldActor::SetShadowCasterForTesting(const mesolight::vlf::ObjectMesh* unitMesh)
-{
-  if (unitMesh)
-  {
-    this->UpdateObjectShadows(*unitMesh);
-  }
-  else
-  {
-    this->ClearObjectShadows();
-  }
-}
-
-void vtkLightFieldActor::UpdateObjectShadows(const mesolight::vlf::ObjectMesh& unitMesh)
-{
-  ShadowState& state = this->Shadows();
-  state.Caster.reset(new vlf::ObjectMesh(unitMesh));
-  state.Dirty = true;
-  this->Modified();
-}
-
-void vtkLightFieldActor::ClearObjectShadows()
-{
-  ShadowState& state = this->Shadows();
-  state.Caster.reset();
-  state.Dirty = true;
-  this->Modified();
-}
-
-const mesolight::vlf::ObjectShadows* vtkLightFieldActor::GetObjectShadows() const
-{
-  return this->ShadowData && !this->ShadowData->Shadows.Empty() ? &this->ShadowData->Shadows
-                                                                : nullptr;
-}
-
-std::string vtkLightFieldActor::GetShadowProblem() const
-{
-  return this->ShadowData ? this->ShadowData->Problem : std::string();
-}
-
-double vtkLightFieldActor::GetLastShadowSeconds() const
-{
-  return this->ShadowData ? this->ShadowData->Shadows.FillSeconds() : 0.0;
-}
-
-void vtkLightFieldActor::PrepareShadows()
-{
-  ShadowState& state = this->Shadows();
-  const vlf::LightField* field = this->Impl->Field;
-  if (!state.Dirty && state.BuiltFor == field)
-  {
-    return;
-  }
-  state.Dirty = false;
-  state.BuiltFor = field;
-  state.Shadows.Clear();
-  state.Gpu = vlf::ShadowGpuData();
-  const std::string before = state.Problem;
-  state.Problem.clear();
-  if (field && state.Caster && state.Settings.Mode != vlf::ShadowMode::None)
-  {
-    state.Problem = state.Shadows.Build(*field, *state.Caster, state.Settings);
-    state.Gpu = vlf::PackShadowsForGpu(state.Shadows);
-    if (!state.Problem.empty() && state.Problem != before)
-    {
-      vtkWarningMacro(<< "the movable object casts no shadow: " << state.Problem);
-    }
-  }
-  ++state.Version;
-}
-
-void vtkLightFieldActor::ApplyShadowsToScreen()
-{
-  Internals& impl = *this->Impl;
-  ShadowState& state = this->Shadows();
-  if (!state.Active() || !impl.Tracer || !impl.Field || impl.Rect.Empty() || !impl.HaveLastView ||
-    impl.Screen.size() != impl.Rect.Pixels() * 4)
-  {
-    return;
-  }
-  // Raytrace mode's CPU pixels: the same darkening as the GPU's on the diffuse surfaces.
-  const vlf::ViewFrame view = impl.LastView;
-  const vlf::PixelRect rect = impl.Rect;
-  const vlf::LightField& field = *impl.Field;
-  const vlf::WalkthroughTracer& tracer = *impl.Tracer;
-  const vlf::ObjectShadows& shadows = state.Shadows;
-  float* screen = impl.Screen.data();
-  mesolight::ParallelFor(static_cast<std::size_t>(rect.Y0), static_cast<std::size_t>(rect.Y1), 4,
-    [&](std::size_t r0, std::size_t r1)
-    {
-      for (int row = static_cast<int>(r0); row < static_cast<int>(r1); ++row)
-      {
-        for (int column = rect.X0; column < rect.X1; ++column)
-        {
-          const mesolight::SceneRay ray =
-            view.Ray(static_cast<float>(column) + 0.5f, static_cast<float>(row) + 0.5f);
-          const mesolight::SceneHit hit = tracer.Embree().Intersect(ray);
-          std::uint32_t s;
-          if (tracer.Classify(ray, hit, s) != vlf::PixelClass::Diffuse)
-          {
-            continue;
-          }
-          float* rgba = screen +
-            (static_cast<std::size_t>(row - rect.Y0) * rect.Width() + (column - rect.X0)) * 4;
-          const glm::vec3 shaded =
-            shadows.Shade(glm::vec3(rgba[0], rgba[1], rgba[2]), ray.Origin + hit.T * ray.Direction,
-              field.Surfaces()[s].Normal, field.MaterialOf(s).Diffuse);
-          rgba[0] = shaded.x;
-          rgba[1] = shaded.y;
-          rgba[2] = shaded.z;
-        }
-      }
-    });
 }
 
 //------------------------------------------------------------------------------
@@ -878,6 +660,9 @@ void vtkLightFieldActor::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "OverwriteCompositeForTesting: " << this->OverwriteCompositeForTesting << "\n";
   os << indent << "ReflectionBouncesShortForTesting: " << this->ReflectionBouncesShortForTesting
      << "\n";
+  os << indent << "MovableObject: " << static_cast<void*>(this->Impl->Object.GetPointer()) << "\n";
+  os << indent << "ObjectSubdivision: " << this->ObjectSubdivision << "\n";
+  os << indent << "IgnoreObjectForTesting: " << this->IgnoreObjectForTesting << "\n";
   os << indent << "ShadowMode: " << GetShadowModeAsString(this->GetShadowMode()) << "\n";
   os << indent << "ShadowMapResolution: " << this->GetShadowMapResolution() << "\n";
   os << indent

@@ -29,8 +29,13 @@
  * Reinhard, then sRGB) are applied in GLSL to every radiance mode.
  *
  * The scene is static: the actor's own transform must stay the identity (the field is baked in
- * world coordinates). A movable object is meant to join the same Embree scene as an instanced
- * geometry (mesolight::vlf::WalkthroughTracer) and the same passes.
+ * world coordinates). One movable object (Wither 2005, "Interactive dynamic objects in a virtual
+ * light field") can be placed in it: SetMovableObject(an ordinary vtkActor). Each frame the
+ * actor reads that actor's polydata and matrix, places the object in the field and in the
+ * tracer's Embree scene as an instanced geometry (only its transform changes when it moves),
+ * gathers the field's light at its points when it moved (mesolight::vlf::ObjectGatherer), and
+ * then every radiance mode shows it occluding mirror pixels and reflected in mirrors. The object
+ * is drawn by its own actor; vtkLightFieldObjectMapper shades it from the field.
  */
 #ifndef vtkLightFieldActor_h
 #define vtkLightFieldActor_h
@@ -39,14 +44,17 @@
 #include "vtkOpenGLActor.h"
 #include "vtkSmartPointer.h" // For vtkSmartPointer
 
-#include <memory> // For std::unique_ptr
-#include <string> // For std::string
+#include <cstdint> // For std::uint64_t
+#include <memory>  // For std::unique_ptr
+#include <string>  // For std::string
 
 namespace mesolight
 {
 namespace vlf
 {
 class LightField;
+struct LightApproximation;
+struct ShadedObject;
 struct TraceOptions;
 }
 }
@@ -58,6 +66,7 @@ struct ObjectMesh;
 class ObjectShadows;
 }
 }
+class vtkActor;
 class vtkPolyData;
 class vtkRenderer;
 class vtkVirtualLightField;
@@ -169,6 +178,47 @@ public:
 
   ///@{
   /**
+   * The movable object: an ordinary actor of the same renderer (any mapper whose input is
+   * vtkPolyData; polygons and strips are triangulated, missing normals computed). Its matrix
+   * (position, orientation, scale, user matrix) places it; its property's diffuse colour is its
+   * reflectance. nullptr removes it. Held weakly (vtkWeakPointer): the renderer or the caller
+   * owns it, and vtkLightFieldObjectMapper on it holds this actor weakly too, so neither keeps
+   * the other alive (no reference cycle). One object at a time.
+   */
+  void SetMovableObject(vtkActor* object);
+  vtkActor* GetMovableObject();
+  /** Midpoint subdivision levels (0-3) of the object's gathering (GatherSettings::Subdivision);
+   * vtkLightFieldObjectMapper sets it. Default 0. */
+  vtkSetClampMacro(ObjectSubdivision, int, 0, 3);
+  vtkGetMacro(ObjectSubdivision, int);
+  /**
+   * Brings the object up to date for the current field: rereads its polydata when its MTime
+   * changed, places it, updates the tracer's instance and gathers its shading when anything
+   * moved. Cheap when nothing changed (PrepareFrame and vtkLightFieldObjectMapper both call it;
+   * one gather per change). False when there is no usable object (none set, no field, or a
+   * mesh the checks refuse: then GetLastObjectProblem() says why).
+   */
+  bool UpdateMovableObject();
+  /** The object as last gathered (unit-sphere mesh with per-point radiance), or nullptr. */
+  const mesolight::vlf::ShadedObject* GetShadedObject() const;
+  /** Point lights estimated from the field's emitters (computed once per field), or nullptr. */
+  const mesolight::vlf::LightApproximation* GetEmitterLights();
+  /** Bumped whenever the object's mesh, placement or shading changed. */
+  unsigned long GetObjectVersion() const;
+  /** Why the object is not shown or looks wrong ("" when fine): outside the field, through a
+   * wall, degenerate. */
+  const std::string& GetLastObjectProblem() const { return this->LastObjectProblem; }
+  /** Seconds of the last object update that did work (placement, gather, instance; see
+   * GetObjectVersion for whether one happened) and of its gather alone. */
+  double GetLastObjectSeconds() const { return this->LastObjectSeconds; }
+  double GetLastGatherSeconds() const { return this->LastGatherSeconds; }
+  /** Negative tests only: keep the object out of the tracer (no occlusion, no reflection). */
+  vtkSetMacro(IgnoreObjectForTesting, bool);
+  vtkGetMacro(IgnoreObjectForTesting, bool);
+  ///@}
+
+  ///@{
+  /**
    * Shadows of the movable object on the scene (Wither 2005 ch. 4; the algorithm and its modes:
    * mesolight::vlf::ObjectShadows in core/ObjectShadows.h). Shadow maps from the field's
    * significant emitters (at most ShadowEmitterCount, default 4), each placed at the emitter
@@ -241,10 +291,13 @@ private:
   bool UseField(const mesolight::vlf::LightField* field);
   void RefreshField(); // updates the filter, takes its field when it changed
   mesolight::vlf::TraceOptions CurrentTraceOptions() const;
-  // Identifies the trace options: traced reflections of other options are not reused.
-  int TraceKey() const
+  // Identifies the trace options and the object's state: traced reflections of other options
+  // or of another placement of the object are not reused.
+  std::uint64_t TraceKey() const
   {
-    return this->MaximumReflectionDepth * 16 + this->ReflectionBouncesShortForTesting;
+    return (static_cast<std::uint64_t>(this->GetObjectVersion()) << 16) +
+      static_cast<std::uint64_t>(
+        this->MaximumReflectionDepth * 16 + this->ReflectionBouncesShortForTesting);
   }
   // Starts the worker on the last view's reflections unless it has them or is on them.
   void TraceAtRest();
@@ -266,6 +319,11 @@ private:
   bool FlipAtlasForTesting = false;
   bool OverwriteCompositeForTesting = false;
   int ReflectionBouncesShortForTesting = 0;
+  int ObjectSubdivision = 0;
+  bool IgnoreObjectForTesting = false;
+  std::string LastObjectProblem;
+  double LastObjectSeconds = 0.0;
+  double LastGatherSeconds = 0.0;
   bool LastFrameConverged = false;
   double LastSpecularSeconds = 0.0;
   double LastUploadSeconds = 0.0;

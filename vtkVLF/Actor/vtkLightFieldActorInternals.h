@@ -6,19 +6,31 @@
 
 #include "vtkLightFieldActor.h"
 
+#include "EmitterLights.h"
 #include "LightField.h"
+#include "ObjectGatherer.h"
+#include "ObjectMesh.h"
 #include "TextureAtlas.h"
 #include "WalkthroughTracer.h"
 
+#include "vtkActor.h"
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
+#include "vtkWeakPointer.h"
 
 #include <atomic>
+#include <chrono>
 #include <condition_variable>
 #include <memory>
 #include <mutex>
 #include <thread>
 #include <vector>
+
+// Seconds since t: the figures vtkLightFieldActor's GetLast*Seconds report.
+inline double SecondsSince(std::chrono::steady_clock::time_point t)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
 
 struct vtkLightFieldActor::Internals
 {
@@ -44,9 +56,9 @@ struct vtkLightFieldActor::Internals
   std::condition_variable Done;
   bool WorkerRunning = false;
   mesolight::vlf::ViewFrame WorkerView;
-  int WorkerKey = 0; // trace options the worker uses (vtkLightFieldActor::TraceKey)
+  std::uint64_t WorkerKey = 0; // trace options the worker uses (vtkLightFieldActor::TraceKey)
   bool SharpReady = false;
-  int SharpKey = 0;
+  std::uint64_t SharpKey = 0;
   mesolight::vlf::ViewFrame SharpView;
   mesolight::vlf::PixelRect SharpRect;
   std::vector<float> Sharp;
@@ -56,6 +68,42 @@ struct vtkLightFieldActor::Internals
   bool WarnedNoMirrors = false;
   bool WarnedParallel = false;
   bool WarnedInsideWall = false;
+
+  // The movable object (vtkLightFieldActor::SetMovableObject): its actor (weak), its mesh in
+  // model coordinates as last read, its placement (model -> unit sphere), its gathered shading.
+  vtkWeakPointer<vtkActor> Object;
+  vtkPolyData* ObjectData = nullptr; // identity only, never dereferenced after it changes
+  vtkMTimeType ObjectDataTime = 0;
+  mesolight::vlf::ObjectMesh ObjectModel;
+  unsigned long ObjectMeshVersion = 0; // bumped when ObjectModel is reread
+  bool ObjectUsable = false;
+  bool ObjectPlaced = false;
+  glm::mat4 ObjectPlacement{ 1.0f };
+  int ObjectGatherSubdivision = -1;
+  unsigned long ObjectGatherMesh = 0;
+  bool ObjectIgnored = false;
+  unsigned long TracedMesh = 0; // (mesh version, subdivision) the tracer's instance holds
+  int TracedSubdivision = -1;
+  unsigned long ObjectVersion = 1;
+  unsigned long ObjectVersionAtLastFrame = 0;
+  std::unique_ptr<mesolight::vlf::ObjectGatherer> Gatherer;
+  bool Gathered = false;
+  std::unique_ptr<mesolight::vlf::LightApproximation> Lights;
+  std::string ObjectProblemWarned;
+  void ForgetObjectState()
+  {
+    this->ObjectData = nullptr;
+    this->ObjectDataTime = 0;
+    this->ObjectUsable = false;
+    this->ObjectPlaced = false;
+    this->ObjectGatherSubdivision = -1;
+    this->TracedMesh = 0;
+    this->TracedSubdivision = -1;
+    this->Gatherer.reset();
+    this->Gathered = false;
+    this->Lights.reset();
+    ++this->ObjectVersion;
+  }
 
   void StopWorker()
   {

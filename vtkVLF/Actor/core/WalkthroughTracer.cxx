@@ -4,8 +4,11 @@
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
+#include <glm/matrix.hpp>
+
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace mesolight
 {
@@ -90,10 +93,121 @@ WalkthroughTracer::WalkthroughTracer(const LightField& field)
 
 WalkthroughTracer::~WalkthroughTracer() = default;
 
+void WalkthroughTracer::SetObject(const ObjectMesh& model)
+{
+  const std::string problem = model.Validate();
+  if (!problem.empty())
+  {
+    throw std::invalid_argument(problem);
+  }
+  this->ClearObject();
+  this->Scene->SetObject(model.Points, model.Triangles);
+  this->ObjectModel = model;
+  this->ObjectSet = true;
+  this->SetObjectPlacement(this->Placement);
+}
+
+void WalkthroughTracer::SetObjectPlacement(const glm::mat4& modelToUnit)
+{
+  this->Placement = modelToUnit;
+  if (!this->ObjectSet)
+  {
+    return;
+  }
+  this->Scene->SetObjectTransform(modelToUnit);
+  glm::vec3 lower, upper;
+  this->ObjectModel.Bounds(lower, upper);
+  const glm::vec3 centre = 0.5f * (lower + upper);
+  this->ObjectCentre = glm::vec3(modelToUnit * glm::vec4(centre, 1.0f));
+  // The largest column length bounds how far the matrix stretches any direction.
+  const float stretch = std::max(glm::length(glm::vec3(modelToUnit[0])),
+    std::max(glm::length(glm::vec3(modelToUnit[1])), glm::length(glm::vec3(modelToUnit[2]))));
+  this->ObjectRadius = 1.001f * std::sqrt(3.0f) * stretch * 0.5f * MaxComponent(upper - lower);
+}
+
+void WalkthroughTracer::SetObjectRadiance(std::vector<glm::vec3> radiance)
+{
+  this->ObjectRadianceValues = std::move(radiance);
+}
+
+void WalkthroughTracer::ClearObject()
+{
+  this->Scene->ClearObject();
+  this->ObjectSet = false;
+  this->ObjectModel = ObjectMesh{};
+  this->ObjectRadianceValues.clear();
+  this->ObjectRadius = 0.0f;
+}
+
+glm::vec3 WalkthroughTracer::ObjectRadiance(const SceneHit& hit) const
+{
+  if (hit.ObjectTriangle == SceneHit::None ||
+    hit.ObjectTriangle >= this->ObjectModel.Triangles.size() ||
+    this->ObjectRadianceValues.size() != this->ObjectModel.Points.size())
+  {
+    return glm::vec3(0.0f);
+  }
+  const glm::uvec3 t = this->ObjectModel.Triangles[hit.ObjectTriangle];
+  // Gouraud: the same interpolation the object's own mapper draws with.
+  return (1.0f - hit.U - hit.V) * this->ObjectRadianceValues[t.x] +
+    hit.U * this->ObjectRadianceValues[t.y] + hit.V * this->ObjectRadianceValues[t.z];
+}
+
+bool WalkthroughTracer::ReflectionHitsObject(const SceneRay& reflected, glm::vec3& radiance) const
+{
+  if (!this->ObjectSet)
+  {
+    return false;
+  }
+  // Most reflected rays miss the object's bounding sphere: no Embree query for them.
+  const glm::vec3 d = glm::normalize(reflected.Direction);
+  const glm::vec3 f = this->ObjectCentre - reflected.Origin;
+  const float along = glm::dot(f, d);
+  const float r2 = this->ObjectRadius * this->ObjectRadius;
+  if (glm::dot(f, f) - along * along > r2 || (along < 0.0f && glm::dot(f, f) > r2))
+  {
+    return false;
+  }
+  const SceneHit hit = this->Scene->Intersect(reflected);
+  if (hit.ObjectTriangle == SceneHit::None)
+  {
+    return false;
+  }
+  radiance = this->ObjectRadiance(hit);
+  return true;
+}
+
+bool WalkthroughTracer::ObjectReflection(
+  std::uint32_t s, const glm::vec3& p, const glm::vec3& d, glm::vec3& radiance) const
+{
+  if (!this->ObjectSet)
+  {
+    return false;
+  }
+  // The field has no object: its reflection is found by one ray from the mirror point.
+  const glm::vec3 n = this->LightFieldRef.Surfaces()[s].Normal;
+  const glm::vec3 dn = glm::normalize(d);
+  SceneRay reflected;
+  reflected.Origin = p + this->Epsilon * n;
+  reflected.Direction = dn - 2.0f * glm::dot(dn, n) * n;
+  glm::vec3 object;
+  if (!this->ReflectionHitsObject(reflected, object))
+  {
+    return false;
+  }
+  radiance =
+    this->FieldLookup.DiffuseRadiance(s, p) + this->LightFieldRef.MaterialOf(s).Specular * object;
+  return true;
+}
+
 PixelClass WalkthroughTracer::Classify(
   const SceneRay& ray, const SceneHit& hit, std::uint32_t& surface) const
 {
   surface = NoSurface;
+  if (hit.ObjectTriangle != SceneHit::None)
+  {
+    return PixelClass::Object;
+  }
   if (hit.Triangle == SceneHit::None)
   {
     return PixelClass::Background;
@@ -126,7 +240,15 @@ glm::vec3 WalkthroughTracer::RaytraceRadiance(const SceneRay& ray) const
   {
     return glm::vec3(0.0f);
   }
+  if (c == PixelClass::Object)
+  {
+    return this->ObjectRadiance(hit);
+  }
   const glm::vec3 p = ray.Origin + hit.T * ray.Direction;
+  if (c == PixelClass::Mirror)
+  {
+    return this->MirrorRadiance(s, p, ray.Direction, SpecularQuality::Raytrace, TraceOptions{});
+  }
   return this->FieldLookup.RadianceLeaving(s, p, -glm::normalize(ray.Direction),
     CellInterpolation::Bilinear, DirectionInterpolation::Spherical);
 }
@@ -143,6 +265,11 @@ glm::vec3 WalkthroughTracer::TracedRadiance(
     const PixelClass c = this->Classify(ray, hit, s);
     if (c == PixelClass::Background || c == PixelClass::BackFace)
     {
+      break;
+    }
+    if (c == PixelClass::Object)
+    {
+      sum += throughput * this->ObjectRadiance(hit);
       break;
     }
     const glm::vec3 p = ray.Origin + hit.T * ray.Direction;
@@ -195,6 +322,11 @@ void WalkthroughTracer::TracedRadiance16(
       {
         continue;
       }
+      if (c == PixelClass::Object)
+      {
+        out[slot[q]] += throughput[q] * this->ObjectRadiance(hits[q]);
+        continue;
+      }
       const glm::vec3 p = active[q].Origin + hits[q].T * active[q].Direction;
       if (c != PixelClass::Mirror)
       {
@@ -224,6 +356,11 @@ glm::vec3 WalkthroughTracer::MirrorRadiance(std::uint32_t s, const glm::vec3& p,
   SpecularQuality quality, const TraceOptions& options) const
 {
   const glm::vec3 toEye = -glm::normalize(d);
+  glm::vec3 object;
+  if (quality != SpecularQuality::Traced && this->ObjectReflection(s, p, d, object))
+  {
+    return object;
+  }
   switch (quality)
   {
     case SpecularQuality::Moving:
@@ -266,9 +403,10 @@ std::size_t WalkthroughTracer::ShadeRows(const ViewFrame& view, const PixelRect&
       const SceneHit hit = this->Scene->Intersect(ray);
       std::uint32_t s;
       const PixelClass c = this->Classify(ray, hit, s);
-      if (c == PixelClass::Background || c == PixelClass::BackFace ||
+      if (c == PixelClass::Background || c == PixelClass::BackFace || c == PixelClass::Object ||
         (!allSurfaces && c != PixelClass::Mirror))
       {
+        // The object occludes: no screen value, so its own actor's fragment shows.
         Store(rgba, glm::vec3(0.0f), allSurfaces && c == PixelClass::BackFace ? 1.0f : 0.0f);
         continue;
       }
@@ -338,7 +476,7 @@ std::size_t WalkthroughTracer::ShadeTiles(const ViewFrame& view, const PixelRect
         (static_cast<std::size_t>(rows[q] - rect.Y0) * rect.Width() + (columns[q] - rect.X0)) * 4;
       std::uint32_t s;
       const PixelClass c = this->Classify(rays[q], hits[q], s);
-      if (c == PixelClass::Background || c == PixelClass::BackFace ||
+      if (c == PixelClass::Background || c == PixelClass::BackFace || c == PixelClass::Object ||
         (!allSurfaces && c != PixelClass::Mirror))
       {
         Store(rgba, glm::vec3(0.0f), allSurfaces && c == PixelClass::BackFace ? 1.0f : 0.0f);
@@ -349,11 +487,20 @@ std::size_t WalkthroughTracer::ShadeTiles(const ViewFrame& view, const PixelRect
       {
         // While the camera moves one lookup serves each 2 x 2 pixel block of one surface (the
         // mode is blurry by design; this quarters its cost).
+        glm::vec3 object;
+        if (this->ObjectReflection(s, p, rays[q].Direction, object))
+        {
+          Store(rgba, object, 1.0f); // per pixel: the object's outline stays sharp
+          ++valued;
+          continue;
+        }
         const int block = ((rows[q] - rect.Y0) / 2 % 2) * 2 + (columns[q] - rect.X0) / 2 % 2;
         if (blockSurface[block] != s)
         {
           blockSurface[block] = s;
-          blockValue[block] = this->MirrorRadiance(s, p, rays[q].Direction, quality, options);
+          blockValue[block] =
+            this->FieldLookup.RadianceLeaving(s, p, -glm::normalize(rays[q].Direction),
+              CellInterpolation::Bilinear, DirectionInterpolation::Nearest);
         }
         Store(rgba, blockValue[block], 1.0f);
         ++valued;

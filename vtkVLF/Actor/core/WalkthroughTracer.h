@@ -16,16 +16,23 @@
 //
 // Everything is in the field's unit-sphere coordinates (LightField::Scene()). Pixel (i, j)
 // covers [i, i+1) x [j, j+1), row 0 at the bottom (VTK and gl_FragCoord). The hit queries go
-// through one EmbreeScene so that a movable object can later be added to the same scene as an
-// instanced geometry (its hits would then carry a geometry id and a transform) without changing
-// the per-pixel code.
+// through one EmbreeScene, which may hold a movable object (Wither 2005, "Interactive dynamic
+// objects in a virtual light field") as an instanced geometry: SetObject gives its mesh (model
+// coordinates), SetObjectPlacement its model -> unit sphere transform (only the instance moves,
+// the static BVH stays), SetObjectRadiance the radiance leaving each of its points (gathered).
+// Primary rays that hit it first give no screen value (its own actor draws it); reflected rays
+// that hit it return its radiance, interpolated from its points: at every bounce of traced
+// reflections, and at the first bounce of the field-lookup qualities (Moving, Raytrace), whose
+// field knows nothing of the object.
 #ifndef mesolight_vlf_WalkthroughTracer_h
 #define mesolight_vlf_WalkthroughTracer_h
 
 #include "EmbreeScene.h"
 #include "LightField.h"
 #include "Lookup.h"
+#include "ObjectMesh.h"
 
+#include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
 #include <cstdint>
@@ -77,7 +84,8 @@ enum class PixelClass : std::uint8_t
   Diffuse = 1,    // front side of a surface without Ks
   Mirror = 2,     // front side of a surface with Ks > 0
   Emitter = 3,    // front side of an emitting surface
-  BackFace = 4    // a surface's back side (one-sided field: black), e.g. the eye inside a wall
+  BackFace = 4,   // a surface's back side (one-sided field: black), e.g. the eye inside a wall
+  Object = 5      // the movable object (SetObject)
 };
 
 enum class SpecularQuality
@@ -105,6 +113,23 @@ public:
   const EmbreeScene& Embree() const { return *this->Scene; }
   bool IsMirrorSurface(std::uint32_t surface) const { return this->Mirror[surface] != 0; }
   bool HasMirrors() const { return this->MirrorCount > 0; }
+
+  ///@{
+  // The movable object. Not thread-safe against shading running at the same time (callers stop
+  // their workers first). SetObject throws std::invalid_argument for a mesh
+  // ObjectMesh::Validate rejects and std::runtime_error when Embree fails; it clears the
+  // radiance (black until SetObjectRadiance). The radiance has one value per point of the mesh
+  // (other sizes: black).
+  void SetObject(const ObjectMesh& model);
+  void SetObjectPlacement(const glm::mat4& modelToUnit);
+  void SetObjectRadiance(std::vector<glm::vec3> radiance);
+  void ClearObject();
+  bool HasObject() const { return this->ObjectSet; }
+  const ObjectMesh& Object() const { return this->ObjectModel; }
+  const glm::mat4& ObjectPlacement() const { return this->Placement; }
+  // Radiance leaving the object at a hit on it (hit.ObjectTriangle set).
+  glm::vec3 ObjectRadiance(const SceneHit& hit) const;
+  ///@}
 
   // Class of a primary hit; surface is set for the front/back of a surface.
   PixelClass Classify(const SceneRay& ray, const SceneHit& hit, std::uint32_t& surface) const;
@@ -150,6 +175,20 @@ private:
   std::vector<std::uint8_t> Mirror; // per surface
   std::size_t MirrorCount = 0;
   float Epsilon = 1e-4f; // ray offset off a mirror (unit sphere)
+
+  bool ObjectSet = false;
+  ObjectMesh ObjectModel;
+  std::vector<glm::vec3> ObjectRadianceValues;
+  glm::mat4 Placement{ 1.0f };
+  glm::vec3 ObjectCentre{ 0.0f }; // bounding sphere in the unit sphere (cheap ray rejection)
+  float ObjectRadius = 0.0f;
+  // The reflected ray from a mirror point: true, with the object's radiance, when the object
+  // is the first thing it hits (field-lookup qualities).
+  bool ReflectionHitsObject(const SceneRay& reflected, glm::vec3& radiance) const;
+  // Mirror point p of surface s seen along d: true, with the mirror's radiance (its diffuse
+  // part plus Ks x the object's), when the reflection hits the object first.
+  bool ObjectReflection(
+    std::uint32_t s, const glm::vec3& p, const glm::vec3& d, glm::vec3& radiance) const;
 };
 
 } // namespace vlf

@@ -1,0 +1,308 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "LightFieldObjectOptions.h"
+
+#include "CommandLine.h"
+#include "OutputFile.h"
+
+#include "vtkLightFieldActor.h"
+
+#include "ObjScene.h"
+#include "ObjectGatherer.h"
+#include "ObjectMesh.h"
+
+#include "LightField.h"
+#include "PatchComparison.h"
+#include "Snapshot.h" // FileExists
+#include "TriangleScene.h"
+
+#include <vtkCellArray.h>
+#include <vtkFloatArray.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkProperty.h>
+#include <vtkRenderer.h>
+#include <vtkSmartPointer.h>
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+namespace mesolight
+{
+namespace vlf = mesolight::vlf;
+
+void AddObjectOptions(CommandLine& cl)
+{
+  cl.AddValue("--object", "OBJECT",
+    "a movable object in the field: sphere, cube (side 1, scaled to a fifth of the field) or "
+    "FILE.obj (its own units)");
+  cl.AddValue("--object-transform", "T",
+    "tx,ty,tz[,rx,ry,rz[,s]]: the object's position (world units), orientation (degrees, as "
+    "vtkProp3D::SetOrientation) and scale; default: the field's centre");
+  cl.AddValue(
+    "--object-colour", "R,G,B", "the object's diffuse reflectance, each in [0, 1]", "0.7,0.7,0.7");
+  cl.AddValue("--shading", "S", "the object's shading: flat, lights or gather", "gather");
+  cl.AddValue("--shadows", "MODE",
+    "the object's shadows on the scene: none, black, blend (fixed alpha 0.5), field (the "
+    "direct light it blocks), pcf or soft",
+    "field");
+  cl.AddValue(
+    "--subdivision", "N", "midpoint subdivision levels of the gathered object (0-3)", "0");
+}
+
+std::string ParsePlacement(const std::string& text, ObjectPlacement& placement)
+{
+  std::vector<double> values;
+  std::stringstream in(text);
+  std::string item;
+  while (std::getline(in, item, ','))
+  {
+    char* end = nullptr;
+    const double v = std::strtod(item.c_str(), &end);
+    if (item.empty() || end == item.c_str() || *end != '\0' || !std::isfinite(v))
+    {
+      return "'" + item + "' is not a finite number";
+    }
+    values.push_back(v);
+  }
+  if (values.size() != 3 && values.size() != 6 && values.size() != 7)
+  {
+    return "give tx,ty,tz or tx,ty,tz,rx,ry,rz or tx,ty,tz,rx,ry,rz,s (" +
+      std::to_string(values.size()) + " numbers given)";
+  }
+  std::copy(values.begin(), values.begin() + 3, placement.Position);
+  if (values.size() >= 6)
+  {
+    std::copy(values.begin() + 3, values.begin() + 6, placement.Orientation);
+  }
+  if (values.size() == 7)
+  {
+    if (!(values[6] > 0.0))
+    {
+      return "the scale must be positive";
+    }
+    placement.Scale = values[6];
+  }
+  return {};
+}
+
+void ApplyPlacement(vtkActor* object, const ObjectPlacement& p)
+{
+  object->SetPosition(p.Position[0], p.Position[1], p.Position[2]);
+  object->SetOrientation(p.Orientation[0], p.Orientation[1], p.Orientation[2]);
+  object->SetScale(p.Scale);
+}
+
+namespace
+{
+// The object's polydata of --object (sphere, cube or an OBJ file's triangles).
+vtkSmartPointer<vtkPolyData> ObjectPolyData(const vlf::ObjectMesh& mesh)
+{
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToFloat();
+  for (const glm::vec3& p : mesh.Points)
+  {
+    points->InsertNextPoint(p.x, p.y, p.z);
+  }
+  vtkNew<vtkCellArray> polys;
+  for (const glm::uvec3& t : mesh.Triangles)
+  {
+    const vtkIdType ids[3] = { t.x, t.y, t.z };
+    polys->InsertNextCell(3, ids);
+  }
+  auto poly = vtkSmartPointer<vtkPolyData>::New();
+  poly->SetPoints(points);
+  poly->SetPolys(polys);
+  if (mesh.Normals.size() == mesh.Points.size())
+  {
+    vtkNew<vtkFloatArray> normals;
+    normals->SetName("Normals");
+    normals->SetNumberOfComponents(3);
+    for (const glm::vec3& n : mesh.Normals)
+    {
+      normals->InsertNextTuple3(n.x, n.y, n.z);
+    }
+    poly->GetPointData()->SetNormals(normals);
+  }
+  return poly;
+}
+} // namespace
+
+int SetUpObject(const CommandLine& cl, const char* command, vtkLightFieldActor* scene,
+  vtkRenderer* renderer, MovableObject& object, std::vector<std::string>* inputs)
+{
+  if (!cl.Has("--object"))
+  {
+    for (const char* option : { "--object-transform", "--path" })
+    {
+      if (cl.Has(option))
+      {
+        std::cerr << command << ": " << option << " needs --object\n";
+        return 2;
+      }
+    }
+    return 0;
+  }
+  std::string error;
+  int subdivision = 0;
+  if (!cl.GetInt("--subdivision", 0, 3, subdivision, error))
+  {
+    std::cerr << command << ": " << error << "\n";
+    return 2;
+  }
+  const int shading = vtkLightFieldObjectMapper::GetShadingFromString(cl.Get("--shading"));
+  if (shading < 0)
+  {
+    std::cerr << command << ": --shading '" << cl.Get("--shading")
+              << "' is not flat, lights or gather\n";
+    return 2;
+  }
+  const int shadows = vtkLightFieldActor::GetShadowModeFromString(cl.Get("--shadows"));
+  if (shadows < 0)
+  {
+    std::cerr << command << ": --shadows '" << cl.Get("--shadows")
+              << "' is not none, black, blend, field, pcf or soft\n";
+    return 2;
+  }
+  double colour[3] = { 0.7, 0.7, 0.7 };
+  {
+    std::vector<double> values;
+    if (!cl.GetDoubleList("--object-colour", 0.0, 1.0, values, error) || values.size() != 3)
+    {
+      std::cerr << command << ": --object-colour: "
+                << (error.empty() ? "give three values R,G,B in [0, 1]" : error) << "\n";
+      return 2;
+    }
+    std::copy(values.begin(), values.end(), colour);
+  }
+  double bounds[6];
+  scene->GetBounds(bounds);
+  const double extent =
+    std::max(bounds[1] - bounds[0], std::max(bounds[3] - bounds[2], bounds[5] - bounds[4]));
+  const std::string name = cl.Get("--object");
+  vlf::ObjectMesh mesh;
+  ObjectPlacement placement;
+  for (int a = 0; a < 3; ++a)
+  {
+    placement.Position[a] = 0.5 * (bounds[2 * a] + bounds[2 * a + 1]);
+  }
+  if (name == "sphere" || name == "cube")
+  {
+    mesh = name == "sphere" ? vlf::MakeSphere(0.5f, 16, 32) : vlf::MakeCube(1.0f);
+    placement.Scale = 0.2 * extent;
+  }
+  else
+  {
+    if (!vlf::FileExists(name))
+    {
+      std::cerr << command << ": --object '" << name
+                << "' is not sphere, cube or an existing .obj file\n";
+      return 2;
+    }
+    try
+    {
+      const vlf::ObjSceneRead read = vlf::ReadObjScene(name);
+      mesh.Points = read.Scene.Positions;
+      mesh.Triangles.assign(read.Scene.Triangles.begin(), read.Scene.Triangles.end());
+    }
+    catch (const std::exception& e)
+    {
+      std::cerr << command << ": --object: " << e.what() << "\n";
+      return 1;
+    }
+    if (inputs)
+    {
+      inputs->push_back(name);
+    }
+  }
+  // Bad meshes are refused here with one line (the actor would refuse them too).
+  const std::string problem = mesh.Validate();
+  if (!problem.empty())
+  {
+    std::cerr << command << ": --object '" << name << "': " << problem << "\n";
+    return 1;
+  }
+  if (cl.Has("--object-transform"))
+  {
+    error = ParsePlacement(cl.Get("--object-transform"), placement);
+    if (!error.empty())
+    {
+      std::cerr << command << ": --object-transform: " << error << "\n";
+      return 2;
+    }
+  }
+  object.Mapper->SetInputData(ObjectPolyData(mesh));
+  object.Mapper->SetLightFieldActor(scene);
+  object.Mapper->SetShading(shading);
+  scene->SetShadowMode(shadows);
+  object.Mapper->SetSubdivision(subdivision);
+  object.Actor->SetMapper(object.Mapper);
+  object.Actor->GetProperty()->SetDiffuseColor(colour);
+  object.Actor->GetProperty()->SetDiffuse(1.0);
+  object.Placement = placement;
+  object.Step = extent > 0.0 ? extent / 20.0 : 1.0;
+  ApplyPlacement(object.Actor, placement);
+  scene->SetMovableObject(object.Actor);
+  scene->SetObjectSubdivision(subdivision);
+  renderer->AddActor(object.Actor);
+  renderer->ResetCameraClippingRange();
+  object.Active = true;
+  return 0;
+}
+
+bool ReadPath(const std::string& file, const ObjectPlacement& base,
+  std::vector<ObjectPlacement>& path, std::string& error)
+{
+  std::ifstream in(file);
+  if (!in)
+  {
+    error = "cannot read '" + file + "'";
+    return false;
+  }
+  std::string line;
+  int number = 0;
+  while (std::getline(in, line))
+  {
+    ++number;
+    line.erase(0, line.find_first_not_of(" \t\r"));
+    line.erase(line.find_last_not_of(" \t\r") + 1);
+    if (line.empty() || line[0] == '#' || (number == 1 && std::isalpha(line[0])))
+    {
+      continue;
+    }
+    ObjectPlacement p = base;
+    const std::string why = ParsePlacement(line, p);
+    if (!why.empty())
+    {
+      error = file + ":" + std::to_string(number) + ": " + why;
+      return false;
+    }
+    path.push_back(p);
+  }
+  if (path.empty())
+  {
+    error = "'" + file + "' holds no placement";
+    return false;
+  }
+  return true;
+}
+
+void PrintObjectNote(vtkLightFieldActor* actor, const MovableObject& object)
+{
+  if (!object.Active)
+  {
+    return;
+  }
+  if (!actor->GetLastObjectProblem().empty())
+  {
+    std::cout << "note: " << actor->GetLastObjectProblem() << "\n";
+  }
+}
+
+} // namespace mesolight
