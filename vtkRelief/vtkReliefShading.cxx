@@ -196,10 +196,13 @@ void vtkReliefShading::SetShaderParameters(
   vtkReliefProperty* p = this->Property;
   vtkReliefTextureCache* relief = this->ReliefTexture;
   program->SetUniformi("mlReliefTexture", relief->GetTextureObject()->GetTextureUnit());
-  program->SetUniformf("mlDepthScale", static_cast<float>(p->GetDepthScale()));
+  const bool hasBaked = relief->GetBakedDepthScale() >= 0.0;
+  const double depthScale = hasBaked && p->GetUseTextureDepthScale()
+    ? std::min(relief->GetBakedDepthScale(), 10.0)
+    : p->GetDepthScale();
+  program->SetUniformf("mlDepthScale", static_cast<float>(depthScale));
   // Normals baked with another depth scale are rescaled through the depth gradient.
-  const double baked =
-    relief->GetBakedDepthScale() >= 0.0 ? relief->GetBakedDepthScale() : p->GetDepthScale();
+  const double baked = hasBaked ? relief->GetBakedDepthScale() : depthScale;
   program->SetUniformf("mlGradientScale", baked > 0.0 ? static_cast<float>(1.0 / baked) : 0.0f);
   const int* size = relief->GetSize();
   program->SetUniformf("mlTexelAspect", size[0] > 0 ? static_cast<float>(size[1]) / size[0] : 1.0f);
