@@ -31,13 +31,16 @@ CASES = {
     "SelfShadowing": ({}, {"SelfShadowing": 0}),
     "Silhouettes": ({}, {"Silhouettes": 0}),
     "WriteDepth": ({}, {"WriteDepth": 0}),
-    "RepeatTexture": ({}, {"RepeatTexture": 1}),
+    # Rays that leave the texture at its edges: a pattern deep at the border (Stone), deep.
+    "RepeatTexture": ({"source.Pattern": "Stone", "OverrideDepthScale": 1,
+                       "ReliefDepthScale": 0.3}, {"RepeatTexture": 1}),
     # A 1024^2 stone texture over a few hundred pixels: minified, so mip levels matter.
     "LevelOfDetail": ({"source.Pattern": "Stone", "source.Resolution": [1024, 1024]},
                       {"LevelOfDetail": 1}),
     "Exposure": ({}, {"Exposure": 0.5}),
     "ToneMapping": ({}, {"ToneMapping": 0}),
-    "LightSetThreshold": ({}, {"LightSetThreshold": 0.5}),
+    # Median cut gives lights of about equal energy: only a threshold near 1 skips some.
+    "LightSetThreshold": ({}, {"LightSetThreshold": 0.99}),
     "ShadowedLights": ({}, {"ShadowedLights": 1}),
 }
 
@@ -72,7 +75,9 @@ def main():
         saved = {}
         for key, value in list(pre.items()) + list(change.items()):
             target, prop = (p["depth"], key[7:]) if key.startswith("source.") else (display, key)
-            saved.setdefault((id(target), prop), (target, prop, target.GetPropertyValue(prop)))
+            value = target.GetPropertyValue(prop)  # the live property: keep a copy
+            value = value.GetData() if hasattr(value, "GetData") else value
+            saved.setdefault((id(target), prop), (target, prop, value))
         for key, value in pre.items():
             target, prop = (p["depth"], key[7:]) if key.startswith("source.") else (display, key)
             setattr(target, prop, value)
