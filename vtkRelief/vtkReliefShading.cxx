@@ -102,8 +102,9 @@ bool vtkReliefShading::StartDraw(vtkOpenGLRenderWindow* renWin, vtkReliefPropert
   this->Property = property;
   if (!relief)
   {
-    vtkErrorMacro(<< "No relief texture: give the mapper the output of vtkReliefTextureFilter "
-                     "(or attach it to the polydata with vtkAttachReliefTexture).");
+    vtkErrorMacro(<< "No relief texture. In ParaView: apply Mesolight Attach Relief Texture to "
+                     "this surface, with Mesolight Relief Texture's output as its Relief "
+                     "Texture input. In VTK: give the mapper vtkReliefTextureFilter's output.");
     return false;
   }
   const int method = property->GetMethod();
@@ -117,7 +118,10 @@ bool vtkReliefShading::StartDraw(vtkOpenGLRenderWindow* renWin, vtkReliefPropert
   if (requiredCones != vtkReliefProperty::NoConeMap && !this->ReliefTexture->GetConePacked())
   {
     vtkErrorMacro(<< "Method '" << vtkReliefProperty::GetMethodName(method)
-                  << "' needs a relief texture with cone ratios: use vtkConeMapFilter's output.");
+                  << "' needs a relief texture with cone ratios. In ParaView: apply Mesolight "
+                     "Cone Map to the depth image and connect its output as Attach Relief "
+                     "Texture's Relief Texture (or pick a method without cones). In VTK: use "
+                     "vtkConeMapFilter's output.");
     return false;
   }
   if (requiredCones == vtkReliefProperty::ConservativeConeMap &&
@@ -304,7 +308,7 @@ void vtkReliefShading::SetLightUniforms(vtkShaderProgram* program, vtkRenderer* 
       if (!this->WarnedTooManyLights)
       {
         vtkWarningMacro(<< "More than " << MaximumNumberOfLights
-                        << " lights are switched on; vtkReliefMapper shades the first "
+                        << " lights are switched on; the relief surface shades the first "
                         << MaximumNumberOfLights << ".");
         this->WarnedTooManyLights = true;
       }
