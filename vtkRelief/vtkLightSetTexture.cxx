@@ -44,7 +44,9 @@ bool vtkLightSetTexture::Update(vtkOpenGLRenderWindow* renWin, vtkImageData* lig
   if (!values || dims[1] != 2 || dims[0] < 1 || values->GetNumberOfComponents() < 3)
   {
     vtkErrorMacro(<< "The light set must be an N x 2 image with 3 or 4 components (row 0 "
-                     "directions, row 1 irradiance), as vtkMedianCutLights makes it.");
+                     "directions, row 1 irradiance). In ParaView: connect Mesolight Median Cut "
+                     "Lights' second output (LightTexture) as Attach Relief Texture's Light Set. "
+                     "In VTK: vtkMedianCutLights' output port 1.");
     return false;
   }
   // Sorted by luminance, strongest first, so the shader can stop at the first negligible light.

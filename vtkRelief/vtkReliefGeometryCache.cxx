@@ -115,13 +115,15 @@ vtkPolyData* vtkReliefGeometryCache::Prepare(vtkPolyData* input)
   if (!tcoords || tcoords->GetNumberOfComponents() < 2)
   {
     vtkErrorMacro(<< "The input has no point texture coordinates (2 components). A relief surface "
-                     "is addressed by texture coordinates: give the mesh tcoords, e.g. with "
-                     "vtkTextureMapToPlane or from the mesh file.");
+                     "is addressed by texture coordinates: in ParaView apply Texture Map to "
+                     "Plane (or Texture Map to Cylinder/Sphere) to the surface first; in VTK "
+                     "use vtkTextureMapToPlane, or tcoords from the mesh file.");
     return nullptr;
   }
   if (input->GetNumberOfPolys() + input->GetNumberOfStrips() == 0)
   {
-    vtkErrorMacro(<< "The input has no polygons; vtkReliefMapper draws surfaces only.");
+    vtkErrorMacro(<< "The input has no polygons: a relief is drawn on surfaces only (in "
+                     "ParaView, apply Extract Surface first).");
     return nullptr;
   }
   for (vtkIdType i = 0; i < tcoords->GetNumberOfTuples(); ++i)

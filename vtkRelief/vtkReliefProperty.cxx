@@ -125,6 +125,7 @@ void vtkReliefProperty::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LinearSteps: " << this->LinearSteps << "\n";
   os << indent << "RefinementSteps: " << this->RefinementSteps << "\n";
   os << indent << "DepthScale: " << this->DepthScale << "\n";
+  os << indent << "UseTextureDepthScale: " << (this->UseTextureDepthScale ? "On" : "Off") << "\n";
   os << indent << "SelfShadowing: " << (this->SelfShadowing ? "On" : "Off") << "\n";
   os << indent << "Silhouettes: " << (this->Silhouettes ? "On" : "Off") << "\n";
   os << indent << "WriteDepth: " << (this->WriteDepth ? "On" : "Off") << "\n";

@@ -163,6 +163,17 @@ public:
   ///@}
 
   ///@{
+  /**
+   * Use the depth scale the relief texture was baked with (its field array
+   * "MesolightDepthScale") instead of DepthScale, so the bake is the one source of truth;
+   * DepthScale still applies to textures that carry none. Default off (DepthScale wins).
+   */
+  vtkSetMacro(UseTextureDepthScale, bool);
+  vtkGetMacro(UseTextureDepthScale, bool);
+  vtkBooleanMacro(UseTextureDepthScale, bool);
+  ///@}
+
+  ///@{
   /** Hard self-shadowing toward each light by marching the height field. Default on. */
   vtkSetMacro(SelfShadowing, bool);
   vtkGetMacro(SelfShadowing, bool);
@@ -250,6 +261,7 @@ protected:
   int LinearSteps = 10;
   int RefinementSteps = 8;
   double DepthScale = 0.05;
+  bool UseTextureDepthScale = false;
   bool SelfShadowing = true;
   bool Silhouettes = true;
   bool WriteDepth = true;

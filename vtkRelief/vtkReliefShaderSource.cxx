@@ -192,8 +192,8 @@ void vtkReliefShaderSource::ReplaceValuesAfter(std::string& fs, const void* cell
     "  vec2 mlDUVdx = dFdx(mlTCoordVC);\n"
     "  vec2 mlDUVdy = dFdy(mlTCoordVC);" +
       std::string(p->GetLevelOfDetail()
-          ? "\n  mlMarchLod = max(0.0, log2(max(length(mlDUVdx * mlTextureSize), "
-            "length(mlDUVdy * mlTextureSize))));"
+          ? "\n  mlMarchLod = max(0.0, 0.5 * log2(abs(mlDUVdx.x * mlDUVdy.y - mlDUVdx.y * "
+            "mlDUVdy.x) * mlTextureSize.x * mlTextureSize.y));"
           : ""));
   vtkShaderProgram::Substitute(fs, "//MESOLIGHT::Relief::Impl", vtkReliefImplFS);
 

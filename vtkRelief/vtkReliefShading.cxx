@@ -102,8 +102,9 @@ bool vtkReliefShading::StartDraw(vtkOpenGLRenderWindow* renWin, vtkReliefPropert
   this->Property = property;
   if (!relief)
   {
-    vtkErrorMacro(<< "No relief texture: give the mapper the output of vtkReliefTextureFilter "
-                     "(or attach it to the polydata with vtkAttachReliefTexture).");
+    vtkErrorMacro(<< "No relief texture. In ParaView: apply Mesolight Attach Relief Texture to "
+                     "this surface, with Mesolight Relief Texture's output as its Relief "
+                     "Texture input. In VTK: give the mapper vtkReliefTextureFilter's output.");
     return false;
   }
   const int method = property->GetMethod();
@@ -117,7 +118,10 @@ bool vtkReliefShading::StartDraw(vtkOpenGLRenderWindow* renWin, vtkReliefPropert
   if (requiredCones != vtkReliefProperty::NoConeMap && !this->ReliefTexture->GetConePacked())
   {
     vtkErrorMacro(<< "Method '" << vtkReliefProperty::GetMethodName(method)
-                  << "' needs a relief texture with cone ratios: use vtkConeMapFilter's output.");
+                  << "' needs a relief texture with cone ratios. In ParaView: apply Mesolight "
+                     "Cone Map to the depth image and connect its output as Attach Relief "
+                     "Texture's Relief Texture (or pick a method without cones). In VTK: use "
+                     "vtkConeMapFilter's output.");
     return false;
   }
   if (requiredCones == vtkReliefProperty::ConservativeConeMap &&
@@ -196,10 +200,13 @@ void vtkReliefShading::SetShaderParameters(
   vtkReliefProperty* p = this->Property;
   vtkReliefTextureCache* relief = this->ReliefTexture;
   program->SetUniformi("mlReliefTexture", relief->GetTextureObject()->GetTextureUnit());
-  program->SetUniformf("mlDepthScale", static_cast<float>(p->GetDepthScale()));
+  const bool hasBaked = relief->GetBakedDepthScale() >= 0.0;
+  const double depthScale = hasBaked && p->GetUseTextureDepthScale()
+    ? std::min(relief->GetBakedDepthScale(), 10.0)
+    : p->GetDepthScale();
+  program->SetUniformf("mlDepthScale", static_cast<float>(depthScale));
   // Normals baked with another depth scale are rescaled through the depth gradient.
-  const double baked =
-    relief->GetBakedDepthScale() >= 0.0 ? relief->GetBakedDepthScale() : p->GetDepthScale();
+  const double baked = hasBaked ? relief->GetBakedDepthScale() : depthScale;
   program->SetUniformf("mlGradientScale", baked > 0.0 ? static_cast<float>(1.0 / baked) : 0.0f);
   const int* size = relief->GetSize();
   program->SetUniformf("mlTexelAspect", size[0] > 0 ? static_cast<float>(size[1]) / size[0] : 1.0f);
@@ -301,7 +308,7 @@ void vtkReliefShading::SetLightUniforms(vtkShaderProgram* program, vtkRenderer* 
       if (!this->WarnedTooManyLights)
       {
         vtkWarningMacro(<< "More than " << MaximumNumberOfLights
-                        << " lights are switched on; vtkReliefMapper shades the first "
+                        << " lights are switched on; the relief surface shades the first "
                         << MaximumNumberOfLights << ".");
         this->WarnedTooManyLights = true;
       }

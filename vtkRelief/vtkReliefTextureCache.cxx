@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkReliefTextureCache.h"
 
+#include "vtk_glew.h"
+
 #include "vtkAbstractArray.h"
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
@@ -8,6 +10,7 @@
 #include "vtkMath.h"
 #include "vtkMinDepthPyramidTexture.h"
 #include "vtkObjectFactory.h"
+#include "vtkOpenGLError.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkPointData.h"
 #include "vtkReliefProperty.h"
@@ -136,6 +139,15 @@ bool vtkReliefTextureCache::Update(
   this->TextureObject->SetMinificationFilter(
     mipmaps ? vtkTextureObject::LinearMipmapLinear : vtkTextureObject::Linear);
   this->TextureObject->SetMagnificationFilter(vtkTextureObject::Linear);
+  // vtkTextureObject's MaxLevel defaults to 0, which clamps every lookup to the base level
+  // whatever the filter and textureLod ask for: open it to the whole mip chain.
+  int levels = 1;
+  while ((std::max(dims[0], dims[1]) >> levels) > 0)
+  {
+    ++levels;
+  }
+  this->TextureObject->SetBaseLevel(0);
+  this->TextureObject->SetMaxLevel(mipmaps ? levels - 1 : 0);
   this->UploadedWithMipmaps = mipmaps;
   if (!this->TextureObject->Create2DFromRaw(static_cast<unsigned int>(dims[0]),
         static_cast<unsigned int>(dims[1]), 4, VTK_FLOAT, texels.data()))
@@ -143,6 +155,15 @@ bool vtkReliefTextureCache::Update(
     vtkErrorMacro(<< "Could not create a " << dims[0] << "x" << dims[1]
                   << " float RGBA texture (too large for this OpenGL implementation?).");
     return false;
+  }
+  if (mipmaps)
+  {
+    // Create2DFromRaw uploads level 0 only (VTK 9.1 and 9.2 generate mipmaps for cube maps
+    // alone, whatever SetGenerateMipmap says); the coarser levels are made here.
+    this->TextureObject->Activate();
+    glGenerateMipmap(GL_TEXTURE_2D);
+    this->TextureObject->Deactivate();
+    vtkOpenGLCheckErrorMacro("failed generating the relief texture's mipmaps");
   }
   this->Size[0] = dims[0];
   this->Size[1] = dims[1];

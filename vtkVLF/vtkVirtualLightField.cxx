@@ -33,6 +33,19 @@ vtkStandardNewMacro(vtkVirtualLightField);
 vtkVirtualLightField::vtkVirtualLightField() = default;
 vtkVirtualLightField::~vtkVirtualLightField() = default;
 
+void vtkVirtualLightField::SetMemoryBudgetMiB(double mebibytes)
+{
+  constexpr double bytesPerMiB = 1048576.0;
+  // 2^63 bytes is 2^43 MiB: clamp there so the conversion never overflows.
+  const double clamped = mebibytes > 0.0 ? std::min(mebibytes, 8.0e12) : 0.0;
+  this->SetMemoryBudget(static_cast<vtkTypeInt64>(clamped * bytesPerMiB));
+}
+
+double vtkVirtualLightField::GetMemoryBudgetMiB()
+{
+  return static_cast<double>(this->MemoryBudget) / 1048576.0;
+}
+
 const mesolight::vlf::LightField* vtkVirtualLightField::GetLightField() const
 {
   return this->Field.get();

@@ -86,6 +86,15 @@ public:
   ///@}
 
   ///@{
+  /**
+   * The same budget in MiB (2^20 bytes), for ParaView's panel: it has no widget for 64-bit
+   * integer properties, and MiB keep the values in 32-bit range. Negative or NaN is 0.
+   */
+  void SetMemoryBudgetMiB(double mebibytes);
+  double GetMemoryBudgetMiB();
+  ///@}
+
+  ///@{
   /** Snapshot written after every iteration (none when empty). */
   vtkSetStdStringFromCharMacro(SnapshotFileName);
   vtkGetCharFromStdStringMacro(SnapshotFileName);

@@ -187,13 +187,15 @@ int vtkAttachReliefTexture::RequestData(
   if (!Attach(relief, ReliefPrefix, field))
   {
     vtkErrorMacro(<< "The relief texture (input port 1) must be a non-empty 2D image with point "
-                     "scalars, as vtkReliefTextureFilter makes it.");
+                     "scalars: connect Mesolight Relief Texture's (or Cone Map's) output as the "
+                     "Relief Texture input (VTK: vtkReliefTextureFilter's output).");
     return 0;
   }
   if (lights && !Attach(lights, LightSetPrefix, field))
   {
-    vtkErrorMacro(<< "The light set (input port 2) must be a 2D image with point scalars, as "
-                     "vtkMedianCutLights makes it (output port 1).");
+    vtkErrorMacro(<< "The light set (input port 2) must be a 2D image with point scalars: "
+                     "connect Mesolight Median Cut Lights' second output (LightTexture) as the "
+                     "Light Set input (VTK: vtkMedianCutLights' output port 1).");
     return 0;
   }
   this->UpdateProgress(1.0);

@@ -22,6 +22,8 @@ vtkReliefSurfaceRepresentation::vtkReliefSurfaceRepresentation()
   this->ReliefProperty->SetMessageOwner(mapper);
   this->Mapper = mapper;
   this->LODMapper = lodMapper;
+  // The relief texture's bake is the one source of truth unless the user overrides it.
+  this->ReliefProperty->SetUseTextureDepthScale(true);
   this->SetupDefaults();
 }
 
@@ -55,6 +57,13 @@ MESOLIGHT_FORWARD(ToneMapping, bool, SetToneMapping)
 MESOLIGHT_FORWARD(LightSetThreshold, double, SetLightSetThreshold)
 MESOLIGHT_FORWARD(ShadowedLights, int, SetShadowedLights)
 #undef MESOLIGHT_FORWARD
+
+//------------------------------------------------------------------------------
+void vtkReliefSurfaceRepresentation::SetOverrideDepthScale(bool on)
+{
+  this->ReliefProperty->SetUseTextureDepthScale(!on);
+  this->Modified();
+}
 
 //------------------------------------------------------------------------------
 void vtkReliefSurfaceRepresentation::PrintSelf(ostream& os, vtkIndent indent)

@@ -36,6 +36,8 @@ public:
   void SetAdaptiveSteps(bool on);
   void SetMinimumSteps(int steps);
   void SetReliefDepthScale(double scale);
+  /** Off (the default): the depth scale the relief texture was baked with; on: ReliefDepthScale. */
+  void SetOverrideDepthScale(bool on);
   void SetSelfShadowing(bool on);
   void SetSilhouettes(bool on);
   void SetWriteDepth(bool on);

@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
+# Runs a Python script inside the real ParaView GUI: `paraview --script=SCRIPT --exit`, as a
+# user's session would (the plugin auto-loaded through PV_PLUGIN_PATH, ParaView's Python from
+# PYTHONPATH), with a private HOME whose ParaView settings file turns off the splash screen and
+# the welcome dialog (GeneralSettings.ShowSplashScreen / ShowWelcomeDialog, read from
+# ~/.config/ParaView/ParaView<version>.ini by ParaView 5.11's client). The script writes "OK"
+# or its failures to $MESOLIGHT_GUI_RESULT: `paraview --script` runs it through
+# vtkPythonInterpreter::RunSimpleString and exits 0 whatever happened, so a missing "OK" (an
+# exception, a crash, a dialog that blocked) is the failure this wrapper reports.
+#   run-gui-test.sh SCRIPT.py [paraview options...]     (needs DISPLAY: scripts/xvfb.sh)
+set -euo pipefail
+script="$1"
+shift
+version="$(paraview --version 2>/dev/null | sed -n 's/.*version \([0-9.]*\).*/\1/p' | head -1)"
+version="${version:-5.11.0}"
+home="$(mktemp -d "${TMPDIR:-/tmp}/mesolight-gui-home.XXXXXX")"
+trap 'rm -rf "$home"' EXIT
+mkdir -p "$home/.config/ParaView"
+cat > "$home/.config/ParaView/ParaView$version.ini" <<INI
+[General]
+GeneralSettings.ShowSplashScreen=false
+GeneralSettings.ShowWelcomeDialog=false
+INI
+result="$home/result.txt"
+# The scripts' shared module beside them (paraview --script defines no __file__).
+export PYTHONPATH="$(cd "$(dirname "$script")" && pwd)${PYTHONPATH:+:$PYTHONPATH}"
+status=0
+HOME="$home" XDG_CONFIG_HOME="$home/.config" XDG_RUNTIME_DIR="$home" \
+  MESOLIGHT_GUI_RESULT="$result" timeout 600 paraview --script="$script" --exit "$@" || status=$?
+if [ -f "$result" ] && [ "$(head -1 "$result")" = "OK" ]; then
+  echo "GUI test passed: $(basename "$script")"
+  exit 0
+fi
+echo "GUI test failed: $(basename "$script") (paraview exit status $status)" >&2
+if [ -f "$result" ]; then cat "$result" >&2; else echo "no result written" >&2; fi
+exit 1
