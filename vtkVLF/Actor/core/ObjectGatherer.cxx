@@ -173,6 +173,10 @@ struct LineCache
   struct Window
   {
     int I0 = 0, J0 = 0, Width = 0, Height = 0;
+    // LightField::CellCoordinates and DepthOf inlined: c = (p . U + 1) / h - 1/2,
+    // depth = p . D + start.
+    glm::vec3 U{ 0.0f }, V{ 0.0f }, D{ 0.0f };
+    float InverseCell = 1.0f, DepthStart = 0.0f;
     std::vector<std::uint32_t> Start; // Width * Height + 1 offsets into Entries
     std::vector<Entry> Entries;
   };
@@ -235,14 +239,19 @@ struct LineCache
           w.Start.push_back(static_cast<std::uint32_t>(w.Entries.size()));
           w.Width = width;
           w.Height = height;
+          w.U = f.AxisU;
+          w.V = f.AxisV;
+          w.D = f.Direction;
+          w.InverseCell = 1.0f / field.Settings().CellSize();
+          w.DepthStart = field.DepthOf(k, glm::vec3(0.0f));
         }
       },
       threads);
   }
 
   // Lookup::IncidentRadiance through the window; false when p's cells are not in it.
-  bool Incident(const LightField& field, std::size_t k, int sense, const glm::vec3& p,
-    CellInterpolation cells, glm::vec3& out) const
+  bool Incident(
+    std::size_t k, int sense, const glm::vec3& p, CellInterpolation cells, glm::vec3& out) const
   {
     const Window& w = this->Windows[k];
     if (w.Width == 0)
@@ -251,8 +260,10 @@ struct LineCache
     }
     int is[4], js[4];
     float ws[4];
-    const int count = CellsAround(field.CellCoordinates(k, p), cells, is, js, ws);
-    const float depth = field.DepthOf(k, p);
+    const glm::vec2 coordinates((glm::dot(p, w.U) + 1.0f) * w.InverseCell - 0.5f,
+      (glm::dot(p, w.V) + 1.0f) * w.InverseCell - 0.5f);
+    const int count = CellsAround(coordinates, cells, is, js, ws);
+    const float depth = glm::dot(p, w.D) + w.DepthStart;
     glm::vec3 sum(0.0f), fallback(0.0f);
     float weight = 0.0f, fallbackWeight = -1.0f;
     for (int q = 0; q < count; ++q)
@@ -638,8 +649,7 @@ const ShadedObject& ObjectGatherer::Gather(
         const float weight = scale * std::abs(c);
         const int sense = c > 0.0f ? 1 : -1;
         glm::vec3 incident;
-        if (lines.Windows.empty() ||
-          !lines.Incident(this->Field, k, sense, p[v], options.Cells, incident))
+        if (lines.Windows.empty() || !lines.Incident(k, sense, p[v], options.Cells, incident))
         {
           incident = lookup.IncidentRadiance(
             k, sense, p[v], options.Cells, NoSurface, options.SceneOcclusion);
