@@ -23,6 +23,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <ctime>
 #include <fstream>
 #include <iostream>
@@ -109,6 +110,10 @@ int RunGatherBenchmark(const std::vector<std::string>& args)
       !problem.empty())
   {
     return cl.UsageError(problem);
+  }
+  if (cl.Has("--plot") && !std::getenv("DISPLAY"))
+  {
+    return cl.UsageError("--plot: VTK charts need a display (run under scripts/xvfb.sh)");
   }
   std::string error;
   std::vector<int> directionList, levels;
