@@ -58,13 +58,13 @@ with open(obj, "w") as f:
         for y in (-1, 1):
             for z in (-1, 1):
                 f.write("v %d %d %d\n" % (x, y, z))
-    # Vertex index = 1 + 4 (x > 0) + 2 (y > 0) + (z > 0); every face seen from inside is
-    # counter-clockwise (fronts face the centre).
+    # Vertex index = 1 + 4 (x > 0) + 2 (y > 0) + (z > 0); the faces below are counter-clockwise
+    # seen from outside, so written reversed: fronts face the centre.
     faces = [(1, 2, 4, 3), (5, 7, 8, 6),   # x = -1, x = +1
              (1, 5, 6, 2), (3, 4, 8, 7),   # y = -1, y = +1
              (1, 3, 7, 5), (2, 6, 8, 4)]   # z = -1, z = +1
     for face in faces:
-        f.write("f %d %d %d %d\n" % face)
+        f.write("f %d %d %d %d\n" % tuple(reversed(face)))
 
 reader = pvs.MesolightOBJSceneReader(FileName=obj)
 sphere = pvs.Sphere(Center=[0.1, -0.05, 0.0], Radius=0.3, ThetaResolution=16, PhiResolution=10)
@@ -72,7 +72,7 @@ expected = math.pi * (1.0 + 0.5 + 0.25 + 0.125)
 for iterations, should_pass in ((3, True), (1, False)):
     field = pvs.MesolightVirtualLightField(Input=reader, Directions=513, RaysPerSide=24,
                                            Iterations=iterations)
-    gather = pvs.MesolightLightFieldGather(Input=sphere, LightField=field)
+    gather = pvs.LightFieldGather(Input=sphere, LightField=field)
     points, e, radiance, normals = arrays(gather)
     if e is None:
         check(False, "furnace: the output has Irradiance and Radiance")
@@ -100,7 +100,7 @@ box = pvs.MesolightCornellBox()
 field = pvs.MesolightVirtualLightField(Input=box, Directions=513, RaysPerSide=32, Iterations=3)
 ball = pvs.Sphere(Center=[200.0, 300.0, 150.0], Radius=60.0, ThetaResolution=24,
                   PhiResolution=12)
-gather = pvs.MesolightLightFieldGather(Input=ball, LightField=field)
+gather = pvs.LightFieldGather(Input=ball, LightField=field)
 points, e, radiance, normals = arrays(gather)
 check(e is not None and normals is not None and np.all(np.isfinite(e)) and e.shape[1] == 3,
       "Cornell sphere: finite RGB Irradiance at every point")
@@ -119,7 +119,7 @@ if e is not None and normals is not None:
 
 # --- Bad input ------------------------------------------------------------------------------
 plane = pvs.Plane()
-bad = pvs.MesolightLightFieldGather(Input=ball, LightField=plane)
+bad = pvs.LightFieldGather(Input=ball, LightField=plane)
 from vtkmodules.vtkCommonCore import vtkOutputWindow, vtkStringOutputWindow  # noqa: E402
 messages = vtkStringOutputWindow()
 previous = vtkOutputWindow.GetInstance()
