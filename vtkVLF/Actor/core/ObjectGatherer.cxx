@@ -625,11 +625,13 @@ const ShadedObject& ObjectGatherer::Gather(
   constexpr std::size_t chunk = 64;
   auto gatherChunk = [&](const std::uint32_t* points, std::size_t count)
   {
-    glm::vec3 p[chunk], sum[chunk];
+    glm::vec3 p[chunk], normal[chunk], sum[chunk];
     float total[chunk];
+    const bool windows = !lines.Windows.empty();
     for (std::size_t v = 0; v < count; ++v)
     {
       p[v] = placed(shaded.Mesh.Points[points[v]]);
+      normal[v] = shaded.Mesh.Normals[points[v]];
       sum[v] = glm::vec3(0.0f);
       total[v] = 0.0f;
     }
@@ -641,7 +643,7 @@ const ShadedObject& ObjectGatherer::Gather(
         (options.SolidAngleWeights ? set.SolidAngle(k) : uniform) * multipliers[q];
       for (std::size_t v = 0; v < count; ++v)
       {
-        const float c = glm::dot(d, shaded.Mesh.Normals[points[v]]);
+        const float c = glm::dot(d, normal[v]);
         if (c == 0.0f)
         {
           continue;
@@ -649,7 +651,7 @@ const ShadedObject& ObjectGatherer::Gather(
         const float weight = scale * std::abs(c);
         const int sense = c > 0.0f ? 1 : -1;
         glm::vec3 incident;
-        if (lines.Windows.empty() || !lines.Incident(k, sense, p[v], options.Cells, incident))
+        if (!windows || !lines.Incident(k, sense, p[v], options.Cells, incident))
         {
           incident = lookup.IncidentRadiance(
             k, sense, p[v], options.Cells, NoSurface, options.SceneOcclusion);
