@@ -292,6 +292,29 @@ TEST(ObjectGatherer, BadInputNeverCrashes)
       EXPECT_TRUE(std::isfinite(e.x) && e.x >= 0.0f);
     }
   }
+  // Through a wall: a sphere centred on the floor plane, half of it outside the box (inside the
+  // field's sphere): finite, non-negative values; the top, inside and facing the light, is
+  // brighter than the bottom below the floor (which sees the floor's back or nothing: dark).
+  const ShadedObject& wall =
+    gatherer.Gather(TestSphere(), Placement(field, glm::vec3(278.0f, 0.0f, 280.0f)), settings);
+  double above = 0.0, below = 0.0;
+  int aboveCount = 0, belowCount = 0;
+  for (std::size_t i = 0; i < wall.Mesh.Points.size(); ++i)
+  {
+    const glm::vec3& e = wall.Irradiance[i];
+    EXPECT_TRUE(std::isfinite(e.x) && e.x >= 0.0f && std::isfinite(e.y) && std::isfinite(e.z));
+    if (wall.Mesh.Normals[i].y > 0.5f)
+    {
+      above += e.x;
+      ++aboveCount;
+    }
+    else if (wall.Mesh.Normals[i].y < -0.5f)
+    {
+      below += e.x;
+      ++belowCount;
+    }
+  }
+  EXPECT_GT(above / aboveCount, 2.0 * below / belowCount);
   // Unusable settings and placements are refused with a message, not a crash.
   settings.Subdivision = 4;
   EXPECT_THROW(gatherer.Gather(TestSphere(), Placement(field), settings), std::invalid_argument);
