@@ -12,6 +12,7 @@
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataNormals.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkVirtualLightField.h"
 
 #include "LightField.h"
@@ -66,6 +67,31 @@ int vtkLightFieldGatherFilter::FillInputPortInformation(int port, vtkInformation
 {
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
   (void)port;
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkLightFieldGatherFilter::RequestUpdateExtent(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkInformation* out = outputVector->GetInformationObject(0);
+  vtkInformation* surface = inputVector[0]->GetInformationObject(0);
+  if (surface)
+  {
+    // The surface: the piece asked of this filter.
+    surface->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(),
+      out->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()));
+    surface->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(),
+      out->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()));
+    surface->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(),
+      out->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS()));
+  }
+  if (vtkInformation* field = inputVector[1]->GetInformationObject(0))
+  {
+    field->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), 0);
+    field->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), 1);
+    field->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
+  }
   return 1;
 }
 

@@ -10,7 +10,9 @@
  * the nearest vtkVirtualLightField upstream of input 1 (GetLightField(), after that filter has
  * run), walking through pass-through filters such as ParaView's post filter. In ParaView's
  * builtin and client/server modes the filter and its producer share the server process, so this
- * works there too; with several MPI ranks each rank gathers its piece from its own field.
+ * works there too. With several MPI ranks the filter asks input 1 for the whole scene on every
+ * rank (a surface piece sees all of the scene), so each rank propagates the whole field and
+ * gathers its own piece of the surface (the field's work is repeated per rank).
  *
  * Output: the input (with the computed normals as its point normals when it had none) and
  * point arrays "Irradiance" (the irradiance E gathered at each point
@@ -70,6 +72,9 @@ protected:
   ~vtkLightFieldGatherFilter() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
+  // Asks input 1 for the whole scene (piece 0 of 1) on every rank: a surface piece sees all of
+  // the scene, so every rank needs the whole field.
+  int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
 private:
