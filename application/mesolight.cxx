@@ -4,6 +4,7 @@
 // it, and `mesolight COMMAND --help` by each command's CommandLine.
 #include "CommandTable.h"
 #include "ConeBenchmark.h"
+#include "GatherBenchmark.h"
 #include "ImageCommands.h"
 #include "LightFieldViewCommand.h"
 #include "LightSetBenchmark.h"
@@ -123,6 +124,10 @@ const std::vector<mesolight::Command>& Commands()
         { "walkthrough", "[FIELD] [options]",
           "light field walkthrough: frame time per mode and\nstage (vtkLightFieldActor)",
           RunWalkthroughBenchmark, {} },
+        { "gather", "[FIELD] [options]",
+          "a movable object's gathered irradiance: us per\nvertex, cache hits, error vs the path "
+          "tracer",
+          RunGatherBenchmark, {} },
       } },
     { "help", "[COMMAND]", "this text, or one command's options", RunHelp, {} },
   };

@@ -350,6 +350,22 @@ glm::vec3 PathTracer::DiffuseRadianceLeaving(
     throw std::invalid_argument(
       "DiffuseRadianceLeaving: triangle " + std::to_string(triangle) + " is degenerate");
   }
+  return this->DiffuseRadianceLeaving(triangle, point, normal, samples, seed);
+}
+
+glm::vec3 PathTracer::DiffuseRadianceLeaving(
+  std::uint32_t triangle, glm::vec3 point, glm::vec3 normal, int samples, std::uint64_t seed) const
+{
+  const float length = glm::length(normal);
+  if (triangle >= this->Scene.TriangleCount() || samples < 1 || !(length > 0.0f) ||
+    !std::isfinite(length))
+  {
+    throw std::invalid_argument("DiffuseRadianceLeaving: triangle " + std::to_string(triangle) +
+      " of " + std::to_string(this->Scene.TriangleCount()) + ", " + std::to_string(samples) +
+      " samples, a normal of length " + std::to_string(length) +
+      " (need a valid triangle, samples >= 1 and a nonzero normal)");
+  }
+  normal /= length;
   glm::vec3 sum(0.0f);
   for (int s = 0; s < samples; ++s)
   {

@@ -90,6 +90,11 @@ public:
   // `seed`. This is what the light field's per-patch radiance is compared with.
   glm::vec3 DiffuseRadianceLeaving(
     std::uint32_t triangle, glm::vec3 point, int samples, std::uint64_t seed) const;
+  // The same with a given unit shading normal instead of the triangle's own (the smooth normal
+  // at a vertex of a tessellated object); the triangle gives Kd and Le. Throws
+  // std::invalid_argument for a normal that is not finite and nonzero.
+  glm::vec3 DiffuseRadianceLeaving(std::uint32_t triangle, glm::vec3 point, glm::vec3 normal,
+    int samples, std::uint64_t seed) const;
 
   // Linear float RGB image, VTK row order (row 0 bottom), samplesPerPixel jittered samples per
   // pixel averaged. Returns an empty image (Width 0) when progress aborts or the arguments are

@@ -122,8 +122,8 @@ glm::vec3 Lookup::RadianceLeaving(std::uint32_t surface, const glm::vec3& p, con
   return weight > 0.0f ? sum / weight : this->DiffuseRadiance(surface, p);
 }
 
-glm::vec3 Lookup::IncidentRadiance(
-  std::size_t k, int sense, const glm::vec3& p, CellInterpolation cells, std::uint32_t ignore) const
+glm::vec3 Lookup::IncidentRadiance(std::size_t k, int sense, const glm::vec3& p,
+  CellInterpolation cells, std::uint32_t ignore, bool occlusion) const
 {
   int is[4], js[4];
   float ws[4];
@@ -161,7 +161,27 @@ glm::vec3 Lookup::IncidentRadiance(
     }
     const Crossing* sender = sense > 0 ? after : before;
     glm::vec3 radiance(0.0f); // nothing (light leaves the scene) or a back side: no light
-    if (sender && this->Field.Orientation(k, sender->Surface) == -sense)
+    if (!occlusion)
+    {
+      // Negative tests only: the brightest crossing on p's side that faces p, however far.
+      float brightest = -1.0f;
+      for (const Crossing& c : crossings)
+      {
+        const bool beyond = sense > 0 ? c.Depth > depth + SelfDepth : c.Depth < depth - SelfDepth;
+        if (c.Surface == ignore || !beyond || this->Field.Orientation(k, c.Surface) != -sense)
+        {
+          continue;
+        }
+        const glm::vec3 x = this->Field.PointOnLine(k, is[q], js[q], c.Depth);
+        const glm::vec3 value = this->CellRadiance(k, c.Surface, c.Cell, x);
+        if (value.x + value.y + value.z > brightest)
+        {
+          brightest = value.x + value.y + value.z;
+          radiance = value;
+        }
+      }
+    }
+    else if (sender && this->Field.Orientation(k, sender->Surface) == -sense)
     {
       const glm::vec3 x = this->Field.PointOnLine(k, is[q], js[q], sender->Depth);
       radiance = this->CellRadiance(k, sender->Surface, sender->Cell, x);
@@ -204,7 +224,9 @@ glm::vec3 Lookup::Irradiance(
     const float weight =
       (options.SolidAngleWeights ? this->Field.Directions().SolidAngle(k) : uniform) * std::abs(c);
     total += weight;
-    sum += weight * this->IncidentRadiance(k, c > 0.0f ? 1 : -1, p, options.Cells, ignore);
+    sum += weight *
+      this->IncidentRadiance(
+        k, c > 0.0f ? 1 : -1, p, options.Cells, ignore, options.SceneOcclusion);
   }
   if (!options.ProjectedAreaNormalization)
   {

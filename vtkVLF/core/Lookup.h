@@ -49,6 +49,10 @@ struct GatherOptions
   // normalisation by the discrete projected cell area (plain sum of w_k |cos| L).
   bool SolidAngleWeights = true;
   bool ProjectedAreaNormalization = true;
+  // Negative tests only: false makes the scene's surfaces transparent to each other -- along
+  // every line the brightest crossing beyond p that faces p sends its light, not the nearest
+  // one, so emitters shine through blocks and walls that should shadow p.
+  bool SceneOcclusion = true;
 };
 
 class Lookup
@@ -71,8 +75,10 @@ public:
 
   // Radiance arriving at p along subfield k's lines from the side `sense` (+1: from greater
   // depth, i.e. from p + t d_k), ignoring crossings of `ignore` (the surface p lies on).
+  // occlusion false: see GatherOptions::SceneOcclusion (negative tests only).
   glm::vec3 IncidentRadiance(std::size_t k, int sense, const glm::vec3& p,
-    CellInterpolation cells = CellInterpolation::Bilinear, std::uint32_t ignore = NoSurface) const;
+    CellInterpolation cells = CellInterpolation::Bilinear, std::uint32_t ignore = NoSurface,
+    bool occlusion = true) const;
 
   // Irradiance at p with unit normal n (see above). `ignore` as for IncidentRadiance.
   glm::vec3 Irradiance(const glm::vec3& p, const glm::vec3& n, const GatherOptions& options = {},

@@ -7,14 +7,66 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <cmath>
+#include <vector>
 
 namespace mesolight
 {
 namespace vlf
 {
 
+namespace
+{
+// Sutherland-Hodgman: the part of a convex polygon (2D) with coordinate `axis` on the side
+// `keepBelow` ? <= limit : >= limit.
+std::vector<glm::dvec2> ClipPolygon(
+  const std::vector<glm::dvec2>& polygon, int axis, double limit, bool keepBelow)
+{
+  std::vector<glm::dvec2> out;
+  const std::size_t n = polygon.size();
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    const glm::dvec2& a = polygon[i];
+    const glm::dvec2& b = polygon[(i + 1) % n];
+    const bool inA = keepBelow ? a[axis] <= limit : a[axis] >= limit;
+    const bool inB = keepBelow ? b[axis] <= limit : b[axis] >= limit;
+    if (inA)
+    {
+      out.push_back(a);
+    }
+    if (inA != inB)
+    {
+      const double t = (limit - a[axis]) / (b[axis] - a[axis]);
+      out.push_back(a + t * (b - a));
+    }
+  }
+  return out;
+}
+
+// Area and area-weighted centroid sum (centroid x area) of a 2D polygon.
+void PolygonMoments(const std::vector<glm::dvec2>& polygon, double& area, glm::dvec2& moment)
+{
+  area = 0.0;
+  moment = glm::dvec2(0.0);
+  for (std::size_t i = 1; i + 1 < polygon.size(); ++i)
+  {
+    const glm::dvec2 e1 = polygon[i] - polygon[0], e2 = polygon[i + 1] - polygon[0];
+    const double a = 0.5 * std::abs(e1.x * e2.y - e1.y * e2.x);
+    area += a;
+    moment += a * (polygon[0] + polygon[i] + polygon[i + 1]) / 3.0;
+  }
+}
+} // namespace
+
 //------------------------------------------------------------------------------
 LightApproximation EstimateEmitterLights(const LightField& field)
+{
+  return EstimateEmitterLights(field, EmitterLightOptions());
+}
+
+//------------------------------------------------------------------------------
+LightApproximation EstimateEmitterLights(
+  const LightField& field, const EmitterLightOptions& options)
 {
   LightApproximation out;
   const TriangleScene& scene = field.Scene();
@@ -57,7 +109,71 @@ LightApproximation EstimateEmitterLights(const LightField& field)
       continue;
     }
     light.Position = glm::vec3(centroid / light.Area);
-    out.Lights.push_back(light);
+    // Splitting: the emitter's triangles in its plane's (u, v) frame.
+    const double distance = glm::length(glm::dvec3(light.Position - options.ReferencePoint));
+    glm::dvec2 lower(1e300), upper(-1e300);
+    std::vector<std::vector<glm::dvec2>> flat;
+    for (const std::uint32_t t : surface.Triangles)
+    {
+      std::vector<glm::dvec2> corners;
+      for (int c = 0; c < 3; ++c)
+      {
+        const glm::dvec3 x(scene.Vertex(t, c) - surface.Origin);
+        const glm::dvec2 uv(
+          glm::dot(x, glm::dvec3(surface.AxisU)), glm::dot(x, glm::dvec3(surface.AxisV)));
+        corners.push_back(uv);
+        lower = glm::min(lower, uv);
+        upper = glm::max(upper, uv);
+      }
+      flat.push_back(corners);
+    }
+    const double limit = std::max(1e-12, static_cast<double>(options.SplitRatio) * distance);
+    const int maxSplit = std::max(1, options.MaxSplit);
+    const int nu = options.Split
+      ? std::min(maxSplit, std::max(1, static_cast<int>(std::ceil((upper.x - lower.x) / limit))))
+      : 1;
+    const int nv = options.Split
+      ? std::min(maxSplit, std::max(1, static_cast<int>(std::ceil((upper.y - lower.y) / limit))))
+      : 1;
+    if (nu * nv == 1)
+    {
+      out.Lights.push_back(light);
+      continue;
+    }
+    for (int a = 0; a < nu; ++a)
+    {
+      for (int b = 0; b < nv; ++b)
+      {
+        const double u0 = lower.x + (upper.x - lower.x) * a / nu;
+        const double u1 = lower.x + (upper.x - lower.x) * (a + 1) / nu;
+        const double v0 = lower.y + (upper.y - lower.y) * b / nv;
+        const double v1 = lower.y + (upper.y - lower.y) * (b + 1) / nv;
+        double pieceArea = 0.0;
+        glm::dvec2 moment(0.0);
+        for (const std::vector<glm::dvec2>& triangle : flat)
+        {
+          std::vector<glm::dvec2> part = ClipPolygon(triangle, 0, u0, false);
+          part = ClipPolygon(part, 0, u1, true);
+          part = ClipPolygon(part, 1, v0, false);
+          part = ClipPolygon(part, 1, v1, true);
+          double partArea = 0.0;
+          glm::dvec2 partMoment(0.0);
+          PolygonMoments(part, partArea, partMoment);
+          pieceArea += partArea;
+          moment += partMoment;
+        }
+        if (!(pieceArea > 0.0))
+        {
+          continue;
+        }
+        EmitterLight piece = light;
+        const glm::dvec2 uv = moment / pieceArea;
+        piece.Position = glm::vec3(glm::dvec3(surface.Origin) + uv.x * glm::dvec3(surface.AxisU) +
+          uv.y * glm::dvec3(surface.AxisV));
+        piece.Area = pieceArea;
+        out.Lights.push_back(piece);
+      }
+    }
   }
   std::sort(out.Lights.begin(), out.Lights.end(),
     [](const EmitterLight& a, const EmitterLight& b)

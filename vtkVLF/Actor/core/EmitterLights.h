@@ -39,6 +39,21 @@ struct LightApproximation
 
 LightApproximation EstimateEmitterLights(const LightField& field);
 
+// Splitting large emitters: a point light is a good stand-in for an area emitter only far from
+// it (the inverse-square law holds beyond a few emitter sizes). With Split, an emitter whose
+// side exceeds SplitRatio x its distance to ReferencePoint (the object's centre, unit sphere) is
+// cut into a grid of up to MaxSplit x MaxSplit rectangles of its plane, each a light at the
+// centroid of the emitter's part inside it (triangles clipped exactly), with that part's area.
+struct EmitterLightOptions
+{
+  bool Split = false;
+  glm::vec3 ReferencePoint{ 0.0f };
+  float SplitRatio = 0.5f;
+  int MaxSplit = 4;
+};
+LightApproximation EstimateEmitterLights(
+  const LightField& field, const EmitterLightOptions& options);
+
 // Radiance a diffuse point (position p, unit normal n, reflectance kd) leaves under the
 // approximation: sum over lights of kd/pi x I cos(theta_light) cos(theta_p) / d^2, plus kd x
 // Ambient (the ambient term is a radiance, so kd/pi x pi L). No shadows.

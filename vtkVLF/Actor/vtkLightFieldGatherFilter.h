@@ -1,0 +1,89 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @class   vtkLightFieldGatherFilter
+ * @brief   shades any surface by the irradiance a virtual light field gathers at its points
+ *
+ * Input 0: any vtkPolyData with polygons (other datasets: Extract Surface first); its point
+ * normals are used when it has them, else computed (vtkPolyDataNormals, no splitting, so the
+ * points stay the input's). Input 1 (SetLightFieldConnection): the output of a
+ * vtkVirtualLightField. The field itself does not travel with the data: the filter takes it from
+ * the nearest vtkVirtualLightField upstream of input 1 (GetLightField(), after that filter has
+ * run), walking through pass-through filters such as ParaView's post filter. In ParaView's
+ * builtin and client/server modes the filter and its producer share the server process, so this
+ * works there too. With several MPI ranks the filter asks input 1 for the whole scene on every
+ * rank (a surface piece sees all of the scene), so each rank propagates the whole field and
+ * gathers its own piece of the surface (the field's work is repeated per rank).
+ *
+ * Output: the input (with the computed normals as its point normals when it had none) and
+ * point arrays "Irradiance" (the irradiance E gathered at each point
+ * with its normal, Wither 2005 §3.6: every direction's lines through the point, solid-angle
+ * weights, projected-area normalisation) and "Radiance" (Reflectance / pi x E, the radiance
+ * a diffuse surface of that reflectance leaves there), 3-component float, in the field's
+ * radiance units, world coordinates. The surface is not part of the propagated field: it
+ * receives the scene's light, shadows and colour bleeding, but casts nothing onto the scene.
+ *
+ * Points outside the field's bounding sphere are gathered on its boundary (a warning gives how
+ * many); GetOutsidePoints() tells after an update. Progress goes through UpdateProgress;
+ * AbortExecute stops between batches of points (the output is then empty).
+ */
+#ifndef vtkLightFieldGatherFilter_h
+#define vtkLightFieldGatherFilter_h
+
+#include "MesolightLightFieldActorModule.h" // For export macro
+#include "vtkPolyDataAlgorithm.h"
+
+class MESOLIGHTLIGHTFIELDACTOR_EXPORT vtkLightFieldGatherFilter : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkLightFieldGatherFilter* New();
+  vtkTypeMacro(vtkLightFieldGatherFilter, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /** The light field: the output of a vtkVirtualLightField (input port 1). */
+  void SetLightFieldConnection(vtkAlgorithmOutput* output);
+
+  ///@{
+  /** Diffuse reflectance (RGB in [0, 1]) of the surface for "Radiance" (default 0.7). */
+  vtkSetVector3Macro(Reflectance, double);
+  vtkGetVector3Macro(Reflectance, double);
+  ///@}
+
+  enum DirectionSets
+  {
+    ALL_DIRECTIONS = 0,
+    HALF_DIRECTIONS = 1,
+    IMPORTANCE_DIRECTIONS = 2
+  };
+  ///@{
+  /**
+   * Which of the field's directions every point gathers along: all (default), every other
+   * (half the time), or half of them drawn by the radiance the field carries along each
+   * direction (importance sampling).
+   */
+  vtkSetClampMacro(DirectionSet, int, ALL_DIRECTIONS, IMPORTANCE_DIRECTIONS);
+  vtkGetMacro(DirectionSet, int);
+  ///@}
+
+  /** Points of the last update outside the field's bounding sphere. */
+  vtkGetMacro(OutsidePoints, vtkIdType);
+
+protected:
+  vtkLightFieldGatherFilter();
+  ~vtkLightFieldGatherFilter() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  // Asks input 1 for the whole scene (piece 0 of 1) on every rank: a surface piece sees all of
+  // the scene, so every rank needs the whole field.
+  int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+private:
+  vtkLightFieldGatherFilter(const vtkLightFieldGatherFilter&) = delete;
+  void operator=(const vtkLightFieldGatherFilter&) = delete;
+
+  double Reflectance[3] = { 0.7, 0.7, 0.7 };
+  int DirectionSet = ALL_DIRECTIONS;
+  vtkIdType OutsidePoints = 0;
+};
+
+#endif
