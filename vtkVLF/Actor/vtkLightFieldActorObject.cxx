@@ -285,7 +285,9 @@ bool vtkLightFieldActor::UpdateMovableObject()
   settings.Subdivision = this->ObjectSubdivision;
   try
   {
-    impl.Gatherer->Gather(unit, settings);
+    // The model-space overload: the subdivision is kept while the object only moves, and the
+    // gatherer's cache re-gathers only the points that moved.
+    impl.Gatherer->Gather(impl.ObjectModel, placement, settings);
   }
   catch (const std::exception& e)
   {
