@@ -12,13 +12,7 @@ namespace mesolight
 namespace vlf
 {
 
-namespace
-{
-// Crossings closer than this to p along the line count as p's own surface.
-constexpr float SelfDepth = 1e-4f;
-
-// The cells around continuous cell coordinates c and their weights: one cell, or the bilinear
-// 2 x 2 (of the 3 x 3 neighbourhood) surrounding c.
+//------------------------------------------------------------------------------
 int CellsAround(const glm::vec2& c, CellInterpolation mode, int (&i)[4], int (&j)[4], float (&w)[4])
 {
   if (mode == CellInterpolation::Nearest)
@@ -39,7 +33,6 @@ int CellsAround(const glm::vec2& c, CellInterpolation mode, int (&i)[4], int (&j
   }
   return 4;
 }
-} // namespace
 
 glm::vec3 Lookup::CellRadiance(
   std::size_t k, std::uint32_t s, std::size_t cell, const glm::vec3& x) const

@@ -42,6 +42,15 @@ enum class DirectionInterpolation
   Spherical // the three directions around w, spherical interpolation weights
 };
 
+// Crossings closer than this to a point along a line count as the point's own surface.
+constexpr float SelfDepth = 1e-4f;
+
+// The cells around continuous cell coordinates c (LightField::CellCoordinates) and their
+// weights: one cell (Nearest), or the bilinear 2 x 2 of the 3 x 3 neighbourhood surrounding c.
+// Returns how many were written.
+int CellsAround(
+  const glm::vec2& c, CellInterpolation mode, int (&i)[4], int (&j)[4], float (&w)[4]);
+
 struct GatherOptions
 {
   CellInterpolation Cells = CellInterpolation::Bilinear;

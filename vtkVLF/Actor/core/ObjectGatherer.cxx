@@ -133,31 +133,6 @@ ObjectMesh SubdivideOnce(const ObjectMesh& mesh)
 // Batches between progress reports (and abort checks).
 constexpr std::size_t ProgressBatch = 2048;
 
-// As Lookup.cxx: crossings this close to p along the line count as p's own surface.
-constexpr float SelfDepth = 1e-4f;
-
-// As Lookup.cxx: the cells around continuous cell coordinates and their weights.
-int CellsAround(const glm::vec2& c, CellInterpolation mode, int (&i)[4], int (&j)[4], float (&w)[4])
-{
-  if (mode == CellInterpolation::Nearest)
-  {
-    i[0] = static_cast<int>(std::lround(c.x));
-    j[0] = static_cast<int>(std::lround(c.y));
-    w[0] = 1.0f;
-    return 1;
-  }
-  const float fi = std::floor(c.x), fj = std::floor(c.y);
-  const float ai = c.x - fi, aj = c.y - fj;
-  for (int q = 0; q < 4; ++q)
-  {
-    const int di = q & 1, dj = q >> 1;
-    i[q] = static_cast<int>(fi) + di;
-    j[q] = static_cast<int>(fj) + dj;
-    w[q] = (di ? ai : 1.0f - ai) * (dj ? aj : 1.0f - aj);
-  }
-  return 4;
-}
-
 // The object's lines: for every direction, the crossings of the lines of the small window of
 // cells the object's points project to, each with its sending orientation and the radiance it
 // sends (Lookup's CellRadiance), read from the field once per Gather instead of once per vertex.
