@@ -99,9 +99,6 @@ void ApplyPlacement(vtkActor* object, const ObjectPlacement& p)
   object->SetScale(p.Scale);
 }
 
-namespace
-{
-// The object's polydata of --object (sphere, cube or an OBJ file's triangles).
 vtkSmartPointer<vtkPolyData> ObjectPolyData(const vlf::ObjectMesh& mesh)
 {
   vtkNew<vtkPoints> points;
@@ -132,7 +129,6 @@ vtkSmartPointer<vtkPolyData> ObjectPolyData(const vlf::ObjectMesh& mesh)
   }
   return poly;
 }
-} // namespace
 
 int SetUpObject(const CommandLine& cl, const char* command, vtkLightFieldActor* scene,
   vtkRenderer* renderer, MovableObject& object, std::vector<std::string>* inputs)

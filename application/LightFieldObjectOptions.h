@@ -10,12 +10,22 @@
 
 #include <vtkActor.h>
 #include <vtkNew.h>
+#include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
 
 #include <string>
 #include <vector>
 
 class vtkLightFieldActor;
 class vtkRenderer;
+
+namespace mesolight
+{
+namespace vlf
+{
+struct ObjectMesh;
+}
+}
 
 namespace mesolight
 {
@@ -30,6 +40,9 @@ struct ObjectPlacement
   double Orientation[3] = { 0.0, 0.0, 0.0 };
   double Scale = 1.0;
 };
+
+// The polydata of an object mesh (points, triangles, normals when it has them).
+vtkSmartPointer<vtkPolyData> ObjectPolyData(const mesolight::vlf::ObjectMesh& mesh);
 
 // "tx,ty,tz[,rx,ry,rz[,s]]" over the defaults in `placement`; "" or why not.
 std::string ParsePlacement(const std::string& text, ObjectPlacement& placement);

@@ -79,26 +79,6 @@ struct BenchRow
   bool Met() const { return this->FrameMs <= this->GoalMs; }
 };
 
-std::unique_ptr<vlf::LightField> BenchField(
-  const TriangleScene& scene, int directions, int rays, int iterations)
-{
-  vlf::LightFieldSettings settings;
-  settings.Directions = static_cast<std::size_t>(directions);
-  settings.RaysPerSide = rays;
-  settings.TilesPerSide = std::max(1, rays / 8);
-  std::unique_ptr<vlf::LightField> field = vlf::LightField::Build(scene, settings);
-  vlf::Propagate(*field, iterations);
-  return field;
-}
-
-void WaitForGpu(vtkRenderWindow* window)
-{
-  if (vtkOpenGLRenderWindow* gl = vtkOpenGLRenderWindow::SafeDownCast(window))
-  {
-    gl->WaitForCompletion();
-  }
-}
-
 // Renders `frames` frames turning the camera a little each (every frame a new view: the
 // progressive mode never rests), after two warm-up frames.
 BenchRow TimeFrames(vtkRenderWindow* window, vtkRenderer* renderer, vtkLightFieldActor* actor,
@@ -357,6 +337,26 @@ int Bench(const std::vector<std::string>& args)
 }
 
 } // namespace
+
+std::unique_ptr<vlf::LightField> BenchField(
+  const TriangleScene& scene, int directions, int rays, int iterations)
+{
+  vlf::LightFieldSettings settings;
+  settings.Directions = static_cast<std::size_t>(directions);
+  settings.RaysPerSide = rays;
+  settings.TilesPerSide = std::max(1, rays / 8);
+  std::unique_ptr<vlf::LightField> field = vlf::LightField::Build(scene, settings);
+  vlf::Propagate(*field, iterations);
+  return field;
+}
+
+void WaitForGpu(vtkRenderWindow* window)
+{
+  if (vtkOpenGLRenderWindow* gl = vtkOpenGLRenderWindow::SafeDownCast(window))
+  {
+    gl->WaitForCompletion();
+  }
+}
 
 int RunWalkthroughBenchmark(const std::vector<std::string>& args)
 {

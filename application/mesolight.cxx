@@ -9,6 +9,7 @@
 #include "LightFieldViewCommand.h"
 #include "LightSetBenchmark.h"
 #include "LightsCommand.h"
+#include "ObjectBenchmark.h"
 #include "ReliefSweep.h"
 #include "RenderCommand.h"
 #include "TraceCommand.h"
@@ -128,6 +129,9 @@ const std::vector<mesolight::Command>& Commands()
           "a movable object's gathered irradiance: us per\nvertex, cache hits, error vs the path "
           "tracer",
           RunGatherBenchmark, {} },
+        { "object", "[FIELD] [options]",
+          "a movable object in the walkthrough: frame time\nper stage, directions and subdivision",
+          RunObjectBenchmark, {} },
       } },
     { "help", "[COMMAND]", "this text, or one command's options", RunHelp, {} },
   };
