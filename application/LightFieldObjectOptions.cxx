@@ -54,6 +54,8 @@ void AddObjectOptions(CommandLine& cl)
     "field");
   cl.AddValue(
     "--subdivision", "N", "midpoint subdivision levels of the gathered object (0-3)", "0");
+  cl.AddValue("--gather-directions", "SET",
+    "directions the gather reads: all, half or importance (half, by the field's radiance)", "all");
 }
 
 std::string ParsePlacement(const std::string& text, ObjectPlacement& placement)
@@ -159,6 +161,14 @@ int SetUpObject(const CommandLine& cl, const char* command, vtkLightFieldActor* 
               << "' is not flat, lights or gather\n";
     return 2;
   }
+  const std::string directionSet = cl.Get("--gather-directions");
+  const int gatherDirections = vtkLightFieldActor::GetGatherDirectionsFromString(directionSet);
+  if (gatherDirections < 0)
+  {
+    std::cerr << command << ": --gather-directions '" << directionSet
+              << "' is not all, half or importance\n";
+    return 2;
+  }
   const int shadows = vtkLightFieldActor::GetShadowModeFromString(cl.Get("--shadows"));
   if (shadows < 0)
   {
@@ -236,6 +246,7 @@ int SetUpObject(const CommandLine& cl, const char* command, vtkLightFieldActor* 
   object.Mapper->SetInputData(ObjectPolyData(mesh));
   object.Mapper->SetLightFieldActor(scene);
   object.Mapper->SetShading(shading);
+  object.Mapper->SetGatherDirections(gatherDirections);
   scene->SetShadowMode(shadows);
   object.Mapper->SetSubdivision(subdivision);
   object.Actor->SetMapper(object.Mapper);
@@ -246,6 +257,7 @@ int SetUpObject(const CommandLine& cl, const char* command, vtkLightFieldActor* 
   ApplyPlacement(object.Actor, placement);
   scene->SetMovableObject(object.Actor);
   scene->SetObjectSubdivision(subdivision);
+  scene->SetObjectGatherDirections(gatherDirections);
   renderer->AddActor(object.Actor);
   renderer->ResetCameraClippingRange();
   object.Active = true;

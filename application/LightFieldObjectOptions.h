@@ -31,7 +31,8 @@ namespace mesolight
 {
 class CommandLine;
 
-// --object, --object-transform, --object-colour, --shading, --shadows, --subdivision.
+// --object, --object-transform, --object-colour, --shading, --shadows, --subdivision,
+// --gather-directions.
 void AddObjectOptions(CommandLine& cl);
 
 struct ObjectPlacement

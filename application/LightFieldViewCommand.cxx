@@ -269,7 +269,12 @@ int Render(const std::vector<std::string>& args)
     std::cout << "object: " << cl.Get("--object") << ", shading " << cl.Get("--shading")
               << ", gather " << 1000.0 * actor->GetLastGatherSeconds() << " ms, "
               << (actor->GetShadedObject() ? actor->GetShadedObject()->Mesh.Points.size() : 0)
-              << " points, shadows " << cl.Get("--shadows");
+              << " points";
+    if (actor->GetShadedObject())
+    {
+      std::cout << " over " << actor->GetShadedObject()->DirectionsUsed << " directions";
+    }
+    std::cout << ", shadows " << cl.Get("--shadows");
     if (const mesolight::vlf::ObjectShadows* shadows = actor->GetObjectShadows())
     {
       std::cout << " (" << shadows->Maps().size() << " maps, "

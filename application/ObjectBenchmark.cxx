@@ -10,8 +10,8 @@
 #include "vtkLightFieldActor.h"
 #include "vtkLightFieldObjectMapper.h"
 
-#include "ObjectGatherer.h"
 #include "LightField.h"
+#include "ObjectGatherer.h"
 #include "ObjectMesh.h"
 #include "Snapshot.h"
 
@@ -86,6 +86,7 @@ int Bench(const std::vector<std::string>& args)
   cl.AddValue("--directions", "N,N,..", "direction counts of the built-in fields", "513,2049");
   cl.AddValue("--subdivisions", "L,L,..", "subdivision levels of the gathered object", "0,1,2,3");
   cl.AddValue("--points", "N", "points of the sphere before subdivision (about)", "1000");
+  cl.AddValue("--gather-directions", "SET", "all, half or importance", "all");
   cl.AddValue("--mode", "MODE", "walkthrough mode: progressive or coherent", "coherent");
   cl.AddValue("--shadows", "MODE", "none, black, blend, field, pcf or soft", "field");
   cl.AddValue("--rays", "N", "rays per subfield side", "32");
@@ -125,6 +126,13 @@ int Bench(const std::vector<std::string>& args)
   {
     return cl.UsageError(
       "--shadows '" + cl.Get("--shadows") + "' is not none, black, blend, field, pcf or soft");
+  }
+  const std::string directionSet = cl.Get("--gather-directions");
+  const int gatherDirections = vtkLightFieldActor::GetGatherDirectionsFromString(directionSet);
+  if (gatherDirections < 0)
+  {
+    return cl.UsageError(
+      "--gather-directions '" + directionSet + "' is not all, half or importance");
   }
   if (cl.Positional().size() > 1)
   {
@@ -172,6 +180,7 @@ int Bench(const std::vector<std::string>& args)
     shading->SetInputData(ObjectPolyData(sphere));
     shading->SetLightFieldActor(scene);
     shading->SetShadingToGather();
+    shading->SetGatherDirections(gatherDirections);
     object->SetMapper(shading);
     object->GetProperty()->SetDiffuseColor(0.7, 0.7, 0.7);
     scene->SetMovableObject(object);
@@ -229,7 +238,8 @@ int Bench(const std::vector<std::string>& args)
 
   std::cout << std::fixed << std::setprecision(2) << "\n"
             << width << "x" << height << ", " << cl.Get("--mode") << ", shadows "
-            << cl.Get("--shadows") << ", the object moving every frame; ms per frame\n"
+            << cl.Get("--shadows") << ", gather directions " << directionSet
+            << ", the object moving every frame; ms per frame\n"
             << "directions  subdiv   points  frame ms     fps  object ms  (gather ms)  shadow ms  "
                "specular ms  upload ms  draw+other ms  re-gathered\n";
   for (const ObjectRow& r : rows)

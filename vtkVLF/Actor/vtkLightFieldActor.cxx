@@ -662,6 +662,7 @@ void vtkLightFieldActor::PrintSelf(ostream& os, vtkIndent indent)
      << "\n";
   os << indent << "MovableObject: " << static_cast<void*>(this->Impl->Object.GetPointer()) << "\n";
   os << indent << "ObjectSubdivision: " << this->ObjectSubdivision << "\n";
+  os << indent << "ObjectGatherDirections: " << this->ObjectGatherDirections << "\n";
   os << indent << "IgnoreObjectForTesting: " << this->IgnoreObjectForTesting << "\n";
   os << indent << "ShadowMode: " << GetShadowModeAsString(this->GetShadowMode()) << "\n";
   os << indent << "ShadowMapResolution: " << this->GetShadowMapResolution() << "\n";

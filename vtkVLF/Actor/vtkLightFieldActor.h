@@ -191,6 +191,20 @@ public:
    * vtkLightFieldObjectMapper sets it. Default 0. */
   vtkSetClampMacro(ObjectSubdivision, int, 0, 3);
   vtkGetMacro(ObjectSubdivision, int);
+  /** The directions the object's gather reads (GatherSettings::Directions): AllDirections
+   * (default), HalfDirections (every other one) or ImportanceDirections (half, drawn by the
+   * field's radiance): about half the cost at a few tenths of a point more error
+   * (docs/vlf.md). vtkLightFieldObjectMapper sets it. */
+  enum GatherDirectionSets
+  {
+    AllDirections = 0,
+    HalfDirections = 1,
+    ImportanceDirections = 2
+  };
+  vtkSetClampMacro(ObjectGatherDirections, int, AllDirections, ImportanceDirections);
+  vtkGetMacro(ObjectGatherDirections, int);
+  /** The set of a name "all", "half" or "importance", or -1. */
+  static int GetGatherDirectionsFromString(const std::string& name);
   /**
    * Brings the object up to date for the current field: rereads its polydata when its MTime
    * changed, places it, updates the tracer's instance and gathers its shading when anything
@@ -320,6 +334,7 @@ private:
   bool OverwriteCompositeForTesting = false;
   int ReflectionBouncesShortForTesting = 0;
   int ObjectSubdivision = 0;
+  int ObjectGatherDirections = AllDirections;
   bool IgnoreObjectForTesting = false;
   std::string LastObjectProblem;
   double LastObjectSeconds = 0.0;

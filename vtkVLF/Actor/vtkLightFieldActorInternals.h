@@ -80,6 +80,7 @@ struct vtkLightFieldActor::Internals
   bool ObjectPlaced = false;
   glm::mat4 ObjectPlacement{ 1.0f };
   int ObjectGatherSubdivision = -1;
+  int ObjectGatherDirections = -1;
   unsigned long ObjectGatherMesh = 0;
   bool ObjectIgnored = false;
   unsigned long TracedMesh = 0; // (mesh version, subdivision) the tracer's instance holds
@@ -97,6 +98,7 @@ struct vtkLightFieldActor::Internals
     this->ObjectUsable = false;
     this->ObjectPlaced = false;
     this->ObjectGatherSubdivision = -1;
+    this->ObjectGatherDirections = -1;
     this->TracedMesh = 0;
     this->TracedSubdivision = -1;
     this->Gatherer.reset();

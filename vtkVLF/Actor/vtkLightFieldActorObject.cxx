@@ -112,6 +112,15 @@ glm::mat4 ToGlm(vtkMatrix4x4* m)
 } // namespace
 
 //------------------------------------------------------------------------------
+int vtkLightFieldActor::GetGatherDirectionsFromString(const std::string& name)
+{
+  return name == "all"     ? AllDirections
+    : name == "half"       ? HalfDirections
+    : name == "importance" ? ImportanceDirections
+                           : -1;
+}
+
+//------------------------------------------------------------------------------
 void vtkLightFieldActor::SetMovableObject(vtkActor* object)
 {
   Internals& impl = *this->Impl;
@@ -261,7 +270,8 @@ bool vtkLightFieldActor::UpdateMovableObject()
   const glm::mat4 placement = vlf::WorldToUnitSphere(*impl.Field) * ToGlm(object->GetMatrix());
   const bool ignore = this->IgnoreObjectForTesting;
   const bool meshChanged = impl.ObjectGatherMesh != impl.ObjectMeshVersion ||
-    impl.ObjectGatherSubdivision != this->ObjectSubdivision;
+    impl.ObjectGatherSubdivision != this->ObjectSubdivision ||
+    impl.ObjectGatherDirections != this->ObjectGatherDirections;
   if (impl.ObjectPlaced && placement == impl.ObjectPlacement && !meshChanged &&
     ignore == impl.ObjectIgnored)
   {
@@ -283,6 +293,10 @@ bool vtkLightFieldActor::UpdateMovableObject()
   const std::chrono::steady_clock::time_point gatherStart = std::chrono::steady_clock::now();
   vlf::GatherSettings settings;
   settings.Subdivision = this->ObjectSubdivision;
+  settings.Directions = this->ObjectGatherDirections == HalfDirections
+    ? vlf::DirectionSampling::Half
+    : this->ObjectGatherDirections == ImportanceDirections ? vlf::DirectionSampling::Importance
+                                                           : vlf::DirectionSampling::All;
   try
   {
     // The model-space overload: the subdivision is kept while the object only moves, and the
@@ -333,6 +347,7 @@ bool vtkLightFieldActor::UpdateMovableObject()
   this->UpdateObjectShadows(unit); // the maps follow at this frame's PrepareShadows
   impl.ObjectGatherMesh = impl.ObjectMeshVersion;
   impl.ObjectGatherSubdivision = this->ObjectSubdivision;
+  impl.ObjectGatherDirections = this->ObjectGatherDirections;
   impl.ObjectIgnored = ignore;
   ++impl.ObjectVersion;
 

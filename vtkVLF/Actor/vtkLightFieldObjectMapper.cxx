@@ -123,6 +123,7 @@ bool vtkLightFieldObjectMapper::UpdateShadedMesh(vtkActor* act)
   if (this->Shading == Gather)
   {
     scene->SetObjectSubdivision(this->Subdivision);
+    scene->SetObjectGatherDirections(this->GatherDirections);
   }
   if (!scene->UpdateMovableObject())
   {
@@ -237,5 +238,6 @@ void vtkLightFieldObjectMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LightFieldActor: " << static_cast<void*>(this->Scene.GetPointer()) << "\n";
   os << indent << "Shading: " << GetShadingAsString(this->Shading) << "\n";
   os << indent << "Subdivision: " << this->Subdivision << "\n";
+  os << indent << "GatherDirections: " << this->GatherDirections << "\n";
   os << indent << "LastShadingSeconds: " << this->LastShadingSeconds << "\n";
 }

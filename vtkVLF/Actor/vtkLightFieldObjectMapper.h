@@ -31,6 +31,7 @@
 #define vtkLightFieldObjectMapper_h
 
 #include "MesolightLightFieldActorModule.h" // For export macro
+#include "vtkLightFieldActor.h"             // For GatherDirectionSets
 #include "vtkNew.h"                         // For vtkNew
 #include "vtkOpenGLPolyDataMapper.h"
 #include "vtkWeakPointer.h" // For vtkWeakPointer
@@ -38,7 +39,6 @@
 #include <string> // For std::string
 
 class vtkActor;
-class vtkLightFieldActor;
 class vtkPolyData;
 
 class MESOLIGHTLIGHTFIELDACTOR_EXPORT vtkLightFieldObjectMapper : public vtkOpenGLPolyDataMapper
@@ -75,6 +75,10 @@ public:
   /** Midpoint subdivision levels (0-3) of the gathered object (Gather shading; default 0). */
   vtkSetClampMacro(Subdivision, int, 0, 3);
   vtkGetMacro(Subdivision, int);
+  /** Gather: the directions read (vtkLightFieldActor::GatherDirectionSets; default all). */
+  vtkSetClampMacro(GatherDirections, int, vtkLightFieldActor::AllDirections,
+    vtkLightFieldActor::ImportanceDirections);
+  vtkGetMacro(GatherDirections, int);
   ///@}
 
   /** The mesh last drawn: world coordinates, per-point display colours ("ObjectColour"). */
@@ -100,6 +104,7 @@ private:
   vtkWeakPointer<vtkLightFieldActor> Scene;
   int Shading = Gather;
   int Subdivision = 0;
+  int GatherDirections = vtkLightFieldActor::AllDirections;
   double LastShadingSeconds = 0.0;
   std::string ShadedKey;
   bool WarnedForeign = false;
