@@ -114,7 +114,8 @@ TEST_P(ReliefReferenceVsDenseMesh, DepthAndCoverageAgree)
   EXPECT_GT(a.CoveredBoth, o.Width * o.Height / 20) << "at 85 deg the wall is a thin band";
   EXPECT_GE(a.DepthAgreement, 99.0);
   EXPECT_LE(a.CoverageMismatch, 1.0);
-  EXPECT_LT(reference.Seconds, 2.0) << "400x400 pixels should trace well under two seconds";
+  // The time is printed above, not asserted: speed belongs to the benchmarks, and a loaded
+  // machine must not fail a correctness test.
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, ReliefReferenceVsDenseMesh,
