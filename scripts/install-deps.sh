@@ -10,7 +10,7 @@ PACKAGES=(
   libopenimageio-dev openimageio-tools libopenexr-dev
   libglm-dev
   libembree-dev
-  blender-data
+  blender-data blender
   googletest libgtest-dev libgmock-dev
   xvfb xauth mesa-utils libgl1-mesa-dri
 )

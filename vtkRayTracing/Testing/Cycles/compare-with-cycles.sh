@@ -15,6 +15,8 @@ if ! command -v blender >/dev/null 2>&1; then
 fi
 here="$(cd "$(dirname "$0")" && pwd)"
 mkdir -p "$workdir"
+# The export never replaces a file: clear the previous run's.
+rm -f "$workdir/cornell.obj" "$workdir/cornell.mtl"
 "$mesolight" trace --scene cornell --export-obj "$workdir/cornell.obj"
 blender -b --factory-startup --python "$here/cornell_cycles.py" -- \
   "$workdir/cornell.obj" "$workdir/cycles.exr" "$size" "$size" "$samples"
