@@ -4,6 +4,7 @@
 #include "AnalyticCases.h"
 #include "ChartPlot.h"
 #include "CommandLine.h"
+#include "CornellRegions.h"
 #include "LightFieldCamera.h"
 #include "LightFieldViewCommand.h"
 #include "OutputFile.h"
@@ -279,6 +280,11 @@ int Render(const std::vector<std::string>& args)
   cl.AddValue("--size", "WxH", "image size in pixels", "512x512");
   AddLightFieldCameraOptions(cl);
   cl.AddValue("--exposure", "X", "radiance scale before the sRGB curve", "1");
+  cl.AddValue("--exr", "FILE.exr", "also write the linear radiance");
+  cl.AddValue("--compare-exr", "FILE.exr",
+    "built-in Cornell box field: compare per region with another renderer's linear image of the "
+    "Cornell camera (e.g. Blender Cycles)");
+  cl.AddValue("--tolerance", "X", "relative tolerance of --compare-exr", "0.1");
   cl.AddFlag("--force", "replace an existing IMAGE.png");
   std::string error;
   int exitCode = 0;
@@ -291,7 +297,12 @@ int Render(const std::vector<std::string>& args)
     return cl.UsageError("give one FIELD and --out IMAGE.png");
   }
   const std::string out = cl.Get("--out");
-  const std::string problem = CheckOutputFile(out, { cl.Positional()[0] });
+  std::string problem = CheckOutputFile(out, { cl.Positional()[0], cl.Get("--compare-exr") });
+  if (problem.empty() && cl.Has("--exr"))
+  {
+    problem =
+      CheckOutputFile(cl.Get("--exr"), { cl.Positional()[0], cl.Get("--compare-exr"), out });
+  }
   if (!problem.empty())
   {
     return cl.UsageError("--out: " + problem);
@@ -306,9 +317,10 @@ int Render(const std::vector<std::string>& args)
   {
     return cl.UsageError(error);
   }
-  double viewAngle = 0.0, exposure = 0.0;
+  double viewAngle = 0.0, exposure = 0.0, tolerance = 0.1;
   if (!cl.GetDouble("--view-angle", 1.0, 179.0, viewAngle, error) ||
-    !cl.GetDouble("--exposure", 0.0, 1e9, exposure, error))
+    !cl.GetDouble("--exposure", 0.0, 1e9, exposure, error) ||
+    !cl.GetDouble("--tolerance", 0.0, 10.0, tolerance, error))
   {
     return cl.UsageError(error);
   }
@@ -338,6 +350,7 @@ int Render(const std::vector<std::string>& args)
     const EmbreeScene embree(unit);
     const vlf::Lookup lookup(*field);
     std::vector<unsigned char> pixels(static_cast<std::size_t>(width) * height * 3);
+    RgbImage linear(width, height);
     const Clock::time_point start = Clock::now();
     ParallelFor(0, static_cast<std::size_t>(height), 1,
       [&](std::size_t r0, std::size_t r1)
@@ -368,6 +381,11 @@ int Render(const std::vector<std::string>& args)
               }
             }
             // Row 0 of a VTK image is the bottom row.
+            float* value = linear.Pixel(column, static_cast<int>(row));
+            for (int c = 0; c < 3; ++c)
+            {
+              value[c] = radiance[c];
+            }
             unsigned char* rgb = &pixels[(row * static_cast<std::size_t>(width) + column) * 3];
             for (int c = 0; c < 3; ++c)
             {
@@ -397,6 +415,34 @@ int Render(const std::vector<std::string>& args)
     }
     std::cout << "wrote " << out << " (" << width << "x" << height << ", " << SecondsSince(start)
               << " s, light field after " << field->IterationsDone << " iterations)\n";
+    if (cl.Has("--exr"))
+    {
+      if (!WriteLinearImage(linear, cl.Get("--exr"), error))
+      {
+        std::cerr << "mesolight vlf render: " << error << "\n";
+        return 1;
+      }
+      std::cout << "wrote " << cl.Get("--exr") << " (linear radiance)\n";
+    }
+    if (cl.Has("--compare-exr"))
+    {
+      const TriangleScene box = MakeCornellBox();
+      RgbImage theirs;
+      if (field->Scene().TriangleCount() != box.TriangleCount())
+      {
+        std::cerr << "mesolight vlf render: --compare-exr compares the built-in Cornell box only\n";
+        return 2;
+      }
+      if (!ReadLinearImage(cl.Get("--compare-exr"), theirs, error))
+      {
+        std::cerr << "mesolight vlf render: " << error << "\n";
+        return 1;
+      }
+      if (!CompareCornellRegions(box, linear, theirs, tolerance))
+      {
+        return 1;
+      }
+    }
   }
   catch (const std::exception& e)
   {
