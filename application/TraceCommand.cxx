@@ -14,13 +14,9 @@
 #include "TexturedRayTracer.h"
 #include "TriangleScene.h"
 #include "vtkEmbreeRayTracer.h"
-#include "vtkOIIOImageReader.h"
-#include "vtkOIIOImageWriter.h"
 
 #include <vtkCallbackCommand.h>
 #include <vtkCamera.h>
-#include <vtkDataArray.h>
-#include <vtkFloatArray.h>
 #include <vtkImageActor.h>
 #include <vtkImageData.h>
 #include <vtkImageMapper3D.h>
@@ -39,7 +35,6 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
-#include <map>
 
 namespace mesolight
 {
