@@ -7,6 +7,8 @@
 #include "PatchComparison.h" // ToWorld
 #include "TriangleScene.h"
 
+#include <vtkCamera.h>
+
 #include <glm/geometric.hpp>
 
 namespace mesolight
@@ -61,6 +63,16 @@ bool ReadLightFieldCamera(const CommandLine& cl, const vlf::LightField& field, g
     eye = centre - glm::vec3(0.0f, 0.0f, 2.2f * radius);
   }
   return true;
+}
+
+//------------------------------------------------------------------------------
+void SetCornellCamera(vtkCamera* camera)
+{
+  const CornellCamera c;
+  camera->SetPosition(c.Position.x, c.Position.y, c.Position.z);
+  camera->SetFocalPoint(c.FocalPoint.x, c.FocalPoint.y, c.FocalPoint.z);
+  camera->SetViewUp(c.ViewUp.x, c.ViewUp.y, c.ViewUp.z);
+  camera->SetViewAngle(c.ViewAngleDegrees);
 }
 
 } // namespace mesolight

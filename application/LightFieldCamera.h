@@ -9,6 +9,8 @@
 
 #include <string>
 
+class vtkCamera;
+
 namespace mesolight
 {
 class CommandLine;
@@ -27,6 +29,10 @@ void AddLightFieldCameraOptions(CommandLine& cl);
  */
 bool ReadLightFieldCamera(const CommandLine& cl, const vlf::LightField& field, glm::vec3& eye,
   glm::vec3& focal, double up[3], std::string& error);
+
+/** Puts the published Cornell box camera (CornellCamera: position, focal point, view up and
+ * angle) on a VTK camera, as the benchmarks view the built-in boxes. */
+void SetCornellCamera(vtkCamera* camera);
 
 } // namespace mesolight
 

@@ -3,6 +3,7 @@
 
 #include "ChartPlot.h"
 #include "CommandLine.h"
+#include "LightFieldCamera.h"
 #include "LightFieldObjectOptions.h"
 #include "OutputFile.h"
 #include "WalkthroughBenchmark.h"
@@ -185,12 +186,7 @@ int Bench(const std::vector<std::string>& args)
     object->GetProperty()->SetDiffuseColor(0.7, 0.7, 0.7);
     scene->SetMovableObject(object);
     renderer->AddActor(object);
-    const CornellCamera c;
-    vtkCamera* camera = renderer->GetActiveCamera();
-    camera->SetPosition(c.Position.x, c.Position.y, c.Position.z);
-    camera->SetFocalPoint(c.FocalPoint.x, c.FocalPoint.y, c.FocalPoint.z);
-    camera->SetViewUp(c.ViewUp.x, c.ViewUp.y, c.ViewUp.z);
-    camera->SetViewAngle(c.ViewAngleDegrees);
+    SetCornellCamera(renderer->GetActiveCamera());
     for (const int level : subdivisions)
     {
       shading->SetSubdivision(level);

@@ -189,12 +189,7 @@ int Bench(const std::vector<std::string>& args)
   renderer->AddActor(actor);
   auto resetCamera = [&]()
   {
-    const CornellCamera c;
-    vtkCamera* camera = renderer->GetActiveCamera();
-    camera->SetPosition(c.Position.x, c.Position.y, c.Position.z);
-    camera->SetFocalPoint(c.FocalPoint.x, c.FocalPoint.y, c.FocalPoint.z);
-    camera->SetViewUp(c.ViewUp.x, c.ViewUp.y, c.ViewUp.z);
-    camera->SetViewAngle(c.ViewAngleDegrees);
+    SetCornellCamera(renderer->GetActiveCamera());
     renderer->ResetCameraClippingRange();
   };
   std::vector<BenchRow> rows;

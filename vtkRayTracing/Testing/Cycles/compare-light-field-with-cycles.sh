@@ -6,23 +6,9 @@
 # differ. Exits 77 (ctest SKIP_RETURN_CODE) when blender is not installed.
 #   compare-light-field-with-cycles.sh MESOLIGHT WORKDIR [SIZE] [SAMPLES] [TOLERANCE]
 set -eu
-mesolight="$1"
-workdir="$2"
-size="${3:-96}"
-samples="${4:-256}"
-tolerance="${5:-0.05}"
-if ! command -v blender >/dev/null 2>&1; then
-  echo "blender is not installed: skipping the Cycles comparison"
-  exit 77
-fi
-here="$(cd "$(dirname "$0")" && pwd)"
-mkdir -p "$workdir"
-# Nothing here replaces a file (the OBJ writer, vlf propagate and vlf render refuse to): clear
-# the previous run's.
-rm -f "$workdir/cornell.obj" "$workdir/cornell.mtl" "$workdir"/field*.vlf "$workdir"/field*.png
-"$mesolight" trace --scene cornell --export-obj "$workdir/cornell.obj"
-blender -b --factory-startup --python "$here/cornell_cycles.py" -- \
-  "$workdir/cornell.obj" "$workdir/cycles.exr" "$size" "$size" "$samples"
+. "$(cd "$(dirname "$0")" && pwd)/cycles-reference.sh"
+# vlf propagate and vlf render never replace a file either.
+rm -f "$workdir"/field*.vlf "$workdir"/field*.png
 "$mesolight" vlf propagate --out "$workdir/field.vlf" --directions 2049 --rays 32 --iterations 10
 "$mesolight" vlf render "$workdir/field.vlf" --size "${size}x${size}" --out "$workdir/field.png" \
   --compare-exr "$workdir/cycles.exr" --tolerance "$tolerance"
