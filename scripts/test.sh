@@ -10,30 +10,52 @@ build="${MESOLIGHT_BUILD_DIR:-$here/build}"
 bash "$here/scripts/setup.sh"
 
 status=0
+# Each ctest's output is kept (tee) so that the end of this script can repeat why it failed: a
+# ctest that stops before running tests (a test list that cannot be read) names no failed test.
+main_log="$build/Testing/ctest-output.log"
+paraview_build="${MESOLIGHT_PARAVIEW_BUILD_DIR:-$here/build-paraview}"
+paraview_log="$paraview_build/Testing/ctest-output.log"
+rm -f "$build/Testing/Temporary/LastTestsFailed.log"
+mkdir -p "$build/Testing"
+main_status=0
 bash "$here/scripts/xvfb.sh" \
-  ctest --test-dir "$build" --output-on-failure --timeout 600 "$@" || status=$?
+  ctest --test-dir "$build" --output-on-failure --timeout 600 "$@" 2>&1 | tee "$main_log" ||
+  main_status=$?
+[ "$main_status" -eq 0 ] || status=$main_status
 
+paraview_status=skipped
 if [ "${MESOLIGHT_SKIP_PARAVIEW:-0}" != "1" ]; then
   bash "$here/scripts/setup-paraview.sh"
+  rm -f "$paraview_build/Testing/Temporary/LastTestsFailed.log"
+  mkdir -p "$paraview_build/Testing"
+  paraview_status=0
   bash "$here/scripts/xvfb.sh" \
-    ctest --test-dir "${MESOLIGHT_PARAVIEW_BUILD_DIR:-$here/build-paraview}" --output-on-failure \
-    --timeout 600 || status=$?
+    ctest --test-dir "$paraview_build" --output-on-failure --timeout 600 2>&1 |
+    tee "$paraview_log" || paraview_status=$?
+  [ "$paraview_status" -eq 0 ] || status=$paraview_status
 fi
 
 # CI shows the end of this script's output: repeat there which tests failed, with the end of what
-# each printed (ctest's logs keep all of it).
-if [ "$status" -ne 0 ]; then
-  for dir in "$build" "${MESOLIGHT_PARAVIEW_BUILD_DIR:-$here/build-paraview}"; do
-    failed="$dir/Testing/Temporary/LastTestsFailed.log"
-    [ -s "$failed" ] || continue
-    echo "==== failed in $dir:"
-    cat "$failed"
-    while IFS=: read -r _ name; do
-      echo "==== last lines of $name:"
-      awk -v t="Test: $name" '!on && substr($0, length($0) - length(t) + 1) == t {on = 1}
-        on {print} on && /^Test time =/ {exit}' \
-        "$dir/Testing/Temporary/LastTest.log" | tail -n 40
-    done < "$failed"
-  done
-fi
+# each printed (ctest's logs keep all of it), or, when ctest named no failed test, its errors.
+echo "[mesolight] main tests: exit $main_status; ParaView plugin tests: exit $paraview_status"
+report() { # report <build dir> <exit status of its ctest>
+  local dir="$1" code="$2" failed="$1/Testing/Temporary/LastTestsFailed.log"
+  [ "$code" != 0 ] && [ "$code" != skipped ] || return 0
+  if [ ! -s "$failed" ]; then
+    echo "==== ctest in $dir named no failed test; what it reported:"
+    grep -n -A8 "CMake Error\|Errors while running\|No tests were found" \
+      "$dir/Testing/ctest-output.log" | head -n 60 || tail -n 30 "$dir/Testing/ctest-output.log"
+    return 0
+  fi
+  echo "==== failed in $dir:"
+  cat "$failed"
+  while IFS=: read -r _ name; do
+    echo "==== last lines of $name:"
+    awk -v t="Test: $name" '!on && substr($0, length($0) - length(t) + 1) == t {on = 1}
+      on {print} on && /^Test time =/ {exit}' \
+      "$dir/Testing/Temporary/LastTest.log" | tail -n 40
+  done < "$failed"
+}
+report "$build" "$main_status"
+report "$paraview_build" "$paraview_status"
 exit $status
