@@ -6,7 +6,9 @@
 #include "ImageCompare.h"
 #include "ReliefScene.h"
 #include "TestReliefTestUtilities.h"
+#include "vtkConeMapFilter.h"
 #include "vtkReliefMapper.h"
+#include "vtkReliefProperty.h"
 
 #include <vtkImageData.h>
 #include <vtkRendererCollection.h>
@@ -45,7 +47,25 @@ StressResult Stress(ReliefSceneOptions o, vtkImageData* relief)
   }
   if (relief)
   {
-    scene.Mapper->SetReliefTextureData(relief);
+    // Cone methods step by the cone map of the same relief, baked as the tool and ParaView do.
+    const int coneMap =
+      vtkReliefProperty::GetRequiredConeMap(vtkReliefProperty::GetMethodFromName(o.Method.c_str()));
+    if (coneMap != vtkReliefProperty::NoConeMap)
+    {
+      vtkNew<vtkConeMapFilter> cones;
+      cones->SetInputData(relief);
+      cones->SetDepthScale(o.DepthScale);
+      if (coneMap == vtkReliefProperty::ConservativeConeMap)
+      {
+        cones->SetConeTypeToConservative();
+      }
+      cones->Update();
+      scene.Mapper->SetReliefTextureData(cones->GetOutput());
+    }
+    else
+    {
+      scene.Mapper->SetReliefTextureData(relief);
+    }
   }
   vtkNew<test::MessageRecorder> messages;
   messages->Watch(scene.Mapper);
@@ -85,8 +105,13 @@ ReliefSceneOptions StressOptions(
   return o;
 }
 
+// Every method the mapper has but plain texture mapping.
 const char* const StressMethods[] = { "relief", "pom", "interval", "linear", "parallax",
-  "parallax-slope", "iterative-parallax", "binary", "secant", "max-mipmap", "bump" };
+  "parallax-limit", "parallax-slope", "iterative-parallax", "binary", "secant", "max-mipmap",
+  "bump", "relaxed-cone", "relaxed-cone-interval", "cone" };
+static_assert(
+  sizeof(StressMethods) / sizeof(StressMethods[0]) == vtkReliefProperty::NumberOfMethods - 1,
+  "the stress tests cover every method but texture");
 } // namespace
 
 TEST(ReliefStress, GrazingViewsUpTo89Point9Degrees)
