@@ -8,7 +8,16 @@
 #include "ReliefScene.h"
 #include "TestReliefTestUtilities.h"
 
+#include "vtkReliefMapper.h"
+
+#include <vtkLight.h>
+#include <vtkNew.h>
+#include <vtkProperty.h>
+#include <vtkRenderer.h>
+
 #include <gtest/gtest.h>
+
+#include <functional>
 
 #include <iostream>
 #include <sstream>
@@ -18,13 +27,20 @@ namespace
 using namespace mesolight;
 
 // Renders the relief variant and the dense reference of the same options and compares them.
-FrameDifference CompareWithDenseMesh(const ReliefSceneOptions& options, const std::string& tag)
+// `lights`, when given, replaces the lights of both scenes.
+FrameDifference CompareWithDenseMesh(const ReliefSceneOptions& options, const std::string& tag,
+  const std::function<void(vtkRenderer*)>& lights = {})
 {
   std::string error;
   ReliefScene dense, relief, coarse;
   EXPECT_TRUE(BuildDenseReferenceScene(options, dense, error)) << error;
   EXPECT_TRUE(BuildReliefScene(options, relief, error)) << error;
   EXPECT_TRUE(BuildTexturedPlaneScene(options, coarse, error)) << error;
+  if (lights)
+  {
+    lights(dense.Renderer);
+    lights(relief.Renderer);
+  }
   auto coarseWindow = MakeOffscreenWindow(options, coarse.Renderer);
   const Frame footprint = CaptureFrame(coarseWindow);
   auto denseWindow = MakeOffscreenWindow(options, dense.Renderer);
@@ -133,4 +149,101 @@ TEST(ReliefVsDenseMesh, WithoutDepthWriteTheDepthCheckFails)
   const FrameDifference d = CompareWithDenseMesh(o, "bricks-relief-nodepth-view55");
   EXPECT_LE(d.MeanColorError, MaxMeanColorError);
   EXPECT_GT(d.DepthMismatch, MaxDepthMismatch);
+}
+
+namespace
+{
+// Lamps instead of the default directional key and fill: a positional point light with
+// quadratic attenuation and a spot light (cone and exponent), scene lights in front of the wall
+// (the wall spans x 0..1, y 0..height at z = 0, relief below z = 0).
+// The stock mapper shades the dense mesh per fragment too (Phong interpolation). Intensities keep
+// the sum of the lights below 1: the relief modulates its albedo texture as VTK does for a
+// textured actor (lighting clamped to 1, then times the texture) while the dense mesh carries the
+// albedo as vertex colours (no clamp before the product), so only a saturated sum differs.
+void UseLamps(vtkRenderer* renderer)
+{
+  for (int i = 0; i < renderer->GetActors()->GetNumberOfItems(); ++i)
+  {
+    auto* actor = static_cast<vtkActor*>(renderer->GetActors()->GetItemAsObject(i));
+    if (!vtkReliefMapper::SafeDownCast(actor->GetMapper()))
+    {
+      actor->GetProperty()->SetInterpolationToPhong();
+    }
+  }
+  renderer->RemoveAllLights();
+  vtkNew<vtkLight> lamp;
+  lamp->SetLightTypeToSceneLight();
+  lamp->SetPositional(true);
+  lamp->SetConeAngle(180.0); // a point light
+  lamp->SetPosition(0.25, 0.35, 0.45);
+  lamp->SetFocalPoint(0.25, 0.35, 0.0);
+  lamp->SetAttenuationValues(0.5, 0.5, 2.0);
+  lamp->SetIntensity(0.5);
+  renderer->AddLight(lamp);
+  vtkNew<vtkLight> spot;
+  spot->SetLightTypeToSceneLight();
+  spot->SetPositional(true);
+  spot->SetConeAngle(25.0);
+  spot->SetExponent(6.0);
+  spot->SetPosition(0.9, 0.2, 0.7);
+  spot->SetFocalPoint(0.6, 0.55, 0.0);
+  spot->SetColor(1.0, 0.9, 0.7);
+  spot->SetIntensity(0.45);
+  renderer->AddLight(spot);
+}
+} // namespace
+
+// Point and spot lights (VTK's attenuation and spot cone): with no depth the relief must shade as
+// the stock mapper does, and with depth stay within the comparison's tolerances. Must fail: the
+// relief lit by the default lights against the dense mesh under the lamps.
+TEST(ReliefVsDenseMesh, PointAndSpotLights)
+{
+  ReliefSceneOptions o = test::DenseMeshTestScene();
+  o.Pattern = "Flat";
+  const FrameDifference flat = CompareWithDenseMesh(o, "flat-lamps", UseLamps);
+  EXPECT_LT(flat.MeanColorError, 0.1); // measured 0.001 levels
+  o.Pattern = "Bricks";
+  const FrameDifference bricks = CompareWithDenseMesh(o, "bricks-lamps", UseLamps);
+  EXPECT_TRUE(WithinTolerance(bricks))
+    << bricks.MeanColorError << " levels, " << bricks.SilhouetteMismatch << "% silhouettes, "
+    << bricks.DepthMismatch << "% depth";
+  const auto lampsOnTheMeshOnly = [](vtkRenderer* renderer)
+  {
+    if (renderer->GetActors()->GetNumberOfItems() > 0 &&
+      !vtkReliefMapper::SafeDownCast(
+        static_cast<vtkActor*>(renderer->GetActors()->GetItemAsObject(0))->GetMapper()))
+    {
+      UseLamps(renderer);
+    }
+  };
+  const FrameDifference wrong = CompareWithDenseMesh(o, "bricks-lamps-wrong", lampsOnTheMeshOnly);
+  EXPECT_GT(wrong.MeanColorError, 3.0 * MaxMeanColorError);
+}
+
+// More VTK lights than the relief shader holds (8, as VTK's own shaders): a warning saying so,
+// once, and the first 8 are used -- never a silent drop.
+TEST(ReliefVsDenseMesh, MoreLightsThanTheShaderHoldsWarns)
+{
+  ReliefSceneOptions o = test::DenseMeshTestScene();
+  o.Width = o.Height = 64;
+  std::string error;
+  ReliefScene relief;
+  ASSERT_TRUE(BuildReliefScene(o, relief, error)) << error;
+  for (int i = 0; i < 10; ++i)
+  {
+    vtkNew<vtkLight> light;
+    light->SetLightTypeToSceneLight();
+    light->SetPosition(0.1 * i, 0.5, 1.0);
+    light->SetFocalPoint(0.5, 0.5, 0.0);
+    light->SetIntensity(0.1);
+    relief.Renderer->AddLight(light);
+  }
+  vtkNew<test::MessageRecorder> messages;
+  messages->Watch(relief.Mapper);
+  auto window = MakeOffscreenWindow(o, relief.Renderer);
+  CaptureFrame(window);
+  CaptureFrame(window);
+  EXPECT_NE(messages->Warnings.find("More than 8"), std::string::npos) << messages->Warnings;
+  EXPECT_EQ(messages->Warnings.find("More than 8"), messages->Warnings.rfind("More than 8"))
+    << "warned more than once: " << messages->Warnings;
 }
