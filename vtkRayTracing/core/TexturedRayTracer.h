@@ -85,7 +85,7 @@ struct RayTracerSettings
   int MaxDepth = 5; // reflection recursion limit (0: no reflections), [0, 64]
   bool Shadows = true;
   bool Reflections = true;
-  int GlossySamples = 16; // distributed rays per rough reflection at a primary hit (seed: 40)
+  int GlossySamples = 16; // distributed rays per rough reflection at a primary hit (Ahern: 40)
   TextureFilter Filter = TextureFilter::Bilinear;
   bool AdaptiveSupersampling = false;
   float AdaptiveThreshold = 0.1f; // largest channel difference to a neighbour before 3 x 3 samples

@@ -234,6 +234,33 @@ TEST(vtkEmbreeRayTracer, ActorTextureIsSampledNearestOrBilinear)
   EXPECT_GT(std::abs(nearest - mean), 0.05f);
 }
 
+// The actor's own texture is its diffuse map, lit: under a sun along the view the centre pixel
+// is Kd x diffuse colour x the texture's bilinear mean there; without the texture (negative)
+// it is Kd x diffuse colour.
+TEST(vtkEmbreeRayTracer, ActorTextureIsTheLitDiffuseMap)
+{
+  for (const bool textured : { true, false })
+  {
+    Scene scene;
+    vtkActor* plane = scene.AddPlane(1.0, 0.0);
+    plane->GetProperty()->SetAmbient(0.0);
+    plane->GetProperty()->SetDiffuse(0.8);
+    plane->GetProperty()->SetDiffuseColor(1.0, 1.0, 1.0);
+    if (textured)
+    {
+      vtkNew<vtkTexture> texture;
+      texture->SetInputData(TwoByTwoImage());
+      plane->SetTexture(texture);
+    }
+    scene.Renderer->AutomaticLightCreationOff();
+    scene.AddSun(0.0, 0.0, 1.0);
+    scene.Tracer->Update();
+    ASSERT_EQ(scene.Messages->Errors, 0) << scene.Messages->Last;
+    const float mean = (0.0f + 1.0f + 64.0f / 255.0f + 128.0f / 255.0f) / 4.0f;
+    EXPECT_NEAR(scene.Radiance(20, 15)[0], 0.8f * (textured ? mean : 1.0f), 2e-3f) << textured;
+  }
+}
+
 TEST(vtkEmbreeRayTracer, ProgressiveRefinementFiresEventsAndTracesEachPixelOnce)
 {
   Scene scene;

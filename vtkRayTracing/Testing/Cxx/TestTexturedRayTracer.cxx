@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
 #include <memory>
 #include <stdexcept>
 
@@ -546,3 +547,140 @@ TEST(TexturedRayTracer, BadInputIsReportedNotCrashed)
 }
 
 } // namespace
+
+// Each material map multiplies its channel where the ray hits (Ahern 1999's texture-mapped
+// material channels), checked at the four texel centres of TwoByTwo() (0, 1, 0.25, 0.5) on a
+// square seen straight from above; without the map the same expectations fail (negative).
+TEST(TexturedRayTracer, EachMaterialMapScalesItsChannel)
+{
+  // (x, y) of the texel centres on AddSquare(scene, 1, 0, ...), and the map's value there.
+  const glm::vec2 centres[4] = { { -0.5f, -0.5f }, { 0.5f, -0.5f }, { -0.5f, 0.5f },
+    { 0.5f, 0.5f } };
+  const float values[4] = { 0.0f, 1.0f, 0.25f, 0.5f };
+  const auto map = std::make_shared<RgbImage>(TwoByTwo());
+  RayTracerSettings settings;
+  settings.Filter = TextureFilter::Nearest;
+  settings.Reflections = false;
+  // The light of the Phong terms: straight down for diffuse and specular, oblique for shininess
+  // (then the reflected light meets the view at cos = c < 1 and the term is c^power).
+  const glm::vec3 oblique = glm::normalize(glm::vec3(-0.3f, 0.0f, -1.0f));
+  const glm::vec3 toLight = -oblique;
+  const float c = glm::dot(2.0f * toLight.z * glm::vec3(0, 0, 1) - toLight, glm::vec3(0, 0, 1));
+  struct Channel
+  {
+    const char* Name;
+    std::function<void(TexturedMaterial&, bool)> Set; // bool: with the map
+    glm::vec3 Light;
+    std::function<float(float)> Expected; // of the map value
+  };
+  const Channel channels[] = {
+    { "diffuse",
+      [&](TexturedMaterial& m, bool with)
+      {
+        m.Diffuse = glm::vec3(1.0f);
+        m.DiffuseMap = with ? map : nullptr;
+      },
+      glm::vec3(0, 0, -1), [](float v) { return v; } },
+    { "specular",
+      [&](TexturedMaterial& m, bool with)
+      {
+        m.Diffuse = glm::vec3(0.0f);
+        m.Specular = glm::vec3(1.0f);
+        m.SpecularMap = with ? map : nullptr;
+      },
+      glm::vec3(0, 0, -1), [](float v) { return v; } },
+    { "shininess",
+      [&](TexturedMaterial& m, bool with)
+      {
+        m.Diffuse = glm::vec3(0.0f);
+        m.Specular = glm::vec3(1.0f);
+        m.SpecularPower = 8.0f;
+        m.ShininessMap = with ? map : nullptr;
+      },
+      oblique, [&](float v) { return std::pow(c, 8.0f * v); } },
+  };
+  for (const Channel& channel : channels)
+  {
+    for (const bool with : { true, false })
+    {
+      TexturedScene scene;
+      TexturedMaterial material;
+      channel.Set(material, with);
+      scene.Materials.push_back(material);
+      scene.Lights.push_back(Sun(channel.Light));
+      AddSquare(scene, 1.0f, 0.0f, 0);
+      const TexturedRayTracer tracer(scene, settings);
+      int matches = 0;
+      for (int k = 0; k < 4; ++k)
+      {
+        const glm::vec3 at(centres[k], 1.0f);
+        const float seen = TraceOne(tracer, at, glm::vec3(0, 0, -1)).x;
+        const bool match = std::abs(seen - channel.Expected(values[k])) < 1e-4f;
+        matches += match ? 1 : 0;
+        if (with)
+        {
+          EXPECT_TRUE(match) << channel.Name << " at texel " << k << ": " << seen << " vs "
+                             << channel.Expected(values[k]);
+        }
+      }
+      if (!with)
+      {
+        EXPECT_LT(matches, 4) << channel.Name << ": the map's values without the map";
+      }
+    }
+  }
+}
+
+// The roughness map scales the roughness where the mirror is hit: a mirror point whose
+// reflection looks at a ceiling's edge is sharp (0 or 1) where the map is 0 and blurred (about
+// one half) where it is 1; without the map both are blurred.
+TEST(TexturedRayTracer, RoughnessMapScalesTheRoughness)
+{
+  // The mirror floor [-10, 10]^2 carries TwoByTwo(): value 0 for x < 0, 1 for x > 0 (y < 0).
+  auto makeScene = [](float edge, bool withMap)
+  {
+    TexturedScene scene;
+    TexturedMaterial mirror = Matte(glm::vec3(0.0f));
+    mirror.Specular = glm::vec3(1.0f);
+    mirror.Roughness = 0.3f;
+    if (withMap)
+    {
+      mirror.RoughnessMap = std::make_shared<RgbImage>(TwoByTwo());
+    }
+    scene.Materials.push_back(mirror);
+    scene.Materials.push_back(Matte(glm::vec3(0.0f), glm::vec3(1.0f)));
+    AddSquare(scene, 10.0f, 0.0f, 0);
+    auto& mesh = scene.Mesh; // an ambient-white ceiling at z = 2 over x > edge
+    const auto first = static_cast<std::uint32_t>(mesh.Positions.size());
+    mesh.Positions.insert(
+      mesh.Positions.end(), { { edge, -10, 2 }, { 10, -10, 2 }, { 10, 10, 2 }, { edge, 10, 2 } });
+    mesh.TextureCoordinates.insert(mesh.TextureCoordinates.end(), 4, glm::vec2(0.0f));
+    mesh.Triangles.emplace_back(first, first + 2, first + 1);
+    mesh.Triangles.emplace_back(first, first + 3, first + 2);
+    mesh.MaterialIds.insert(mesh.MaterialIds.end(), { 1, 1 });
+    return scene;
+  };
+  RayTracerSettings settings;
+  settings.GlossySamples = 400;
+  settings.Filter = TextureFilter::Nearest;
+  // From (e - 1, -5, 1) along (1/3, 0, -1): the mirror at x = e - 2/3, the ceiling's edge at e.
+  const glm::vec3 direction(1.0f / 3.0f, 0.0f, -1.0f);
+  for (const bool withMap : { true, false })
+  {
+    const TexturedRayTracer smoothSide(makeScene(-2.0f, withMap), settings); // mirror x = -8/3
+    const TexturedRayTracer roughSide(makeScene(2.0f, withMap), settings);   // mirror x = 4/3
+    const float atZero = TraceOne(smoothSide, glm::vec3(-3.0f, -5.0f, 1.0f), direction).x;
+    const float atOne = TraceOne(roughSide, glm::vec3(1.0f, -5.0f, 1.0f), direction).x;
+    EXPECT_GT(atOne, 0.3f) << withMap;
+    EXPECT_LT(atOne, 0.7f) << withMap;
+    if (withMap)
+    {
+      EXPECT_TRUE(atZero < 1e-5f || atZero > 1.0f - 1e-5f) << atZero;
+    }
+    else
+    {
+      EXPECT_GT(atZero, 0.3f); // negative: without the map the mirror is rough everywhere
+      EXPECT_LT(atZero, 0.7f);
+    }
+  }
+}
