@@ -7,6 +7,7 @@
 #include "ReliefReference.h"
 #include "ReliefScene.h"
 #include "TestReliefTestUtilities.h"
+#include "vtkMedianCutLights.h"
 #include "vtkReliefMapper.h"
 
 #include <vtkCamera.h>
@@ -324,4 +325,87 @@ TEST(ReliefLightSet, SkipsCostFewerSamplesWithinTheirError)
   EXPECT_LT(threshold.Error, all.Error + 0.2);
   EXPECT_LT(shadowed.Error, all.Error + 4.0);
   EXPECT_LT(shadowed.Error, 0.8 * unshadowed.Error);
+}
+
+namespace
+{
+// A lat-long environment of `width` x width/2 float RGB texels: `sky` everywhere, plus `sun` at
+// one texel (when > 0) and a relative ripple of `ripple` (deterministic).
+vtkSmartPointer<vtkImageData> MakeEnvironment(int width, double sky, double sun, double ripple)
+{
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(width, width / 2, 1);
+  image->AllocateScalars(VTK_FLOAT, 3);
+  auto* values = static_cast<float*>(image->GetScalarPointer());
+  const int n = width * (width / 2);
+  for (int p = 0; p < n; ++p)
+  {
+    const double r = sky * (1.0 + ripple * std::sin(12.9898 * p));
+    values[3 * p] = values[3 * p + 1] = values[3 * p + 2] = static_cast<float>(r);
+  }
+  if (sun > 0.0)
+  {
+    const int p = (width / 2) * (3 * width / 8) + width / 3; // high in the sky
+    values[3 * p] = values[3 * p + 1] = values[3 * p + 2] = static_cast<float>(sun);
+  }
+  return image;
+}
+} // namespace
+
+// HDR extremes in the light-set path: a 1e6 sun in a 1e-3 sky (9 orders of magnitude), and 1024
+// nearly equal lights of a uniform sky. No NaN or Inf reaches the framebuffer, and the render
+// stays within its usual error of the exact render of the same lights.
+TEST(ReliefLightSet, HdrExtremesStayFiniteAndAccurate)
+{
+  ReliefSceneOptions o;
+  std::string error;
+  ReliefScene scene;
+  ASSERT_TRUE(BuildSunLitScene(16, 32, o, scene, error)) << error;
+  ReliefReference hits;
+  ASSERT_TRUE(ComputeReliefReference(MakeReliefReferenceInput(scene, o), hits, error)) << error;
+  auto window = MakeOffscreenWindow(o, scene.Renderer);
+  vtkReliefProperty* settings = scene.Mapper->GetReliefProperty();
+  struct Case
+  {
+    const char* Name;
+    vtkSmartPointer<vtkImageData> Environment;
+    int Lights;
+  };
+  const Case cases[] = { { "1e6 sun in a 1e-3 sky", MakeEnvironment(256, 1e-3, 1e6, 0.0), 64 },
+    { "1024 nearly equal lights", MakeEnvironment(256, 1.0, 0.0, 1e-6), 1024 } };
+  for (const Case& c : cases)
+  {
+    vtkNew<vtkMedianCutLights> cut;
+    cut->SetInputData(c.Environment);
+    cut->SetNumberOfLights(c.Lights);
+    cut->Update();
+    vtkImageData* lights = cut->GetLightTexture();
+    ASSERT_NE(lights, nullptr) << c.Name;
+    scene.Mapper->SetLightSetData(lights);
+    const auto reference =
+      ComputeLightSetReference(hits, scene.ReliefTexture, lights, o.DepthScale, 800);
+    ASSERT_FALSE(reference.empty()) << c.Name;
+    const double exposure = ExposureFor(reference);
+    ASSERT_GT(exposure, 0.0) << c.Name;
+    ASSERT_TRUE(std::isfinite(exposure)) << c.Name;
+    settings->SetExposure(exposure);
+    settings->SetOutput(vtkReliefProperty::NonFiniteCheckOutput);
+    const Frame check = CaptureFrame(window);
+    long long red = 0, covered = 0;
+    for (size_t p = 0; p < check.Depth.size(); ++p)
+    {
+      if (check.Covered(p))
+      {
+        ++covered;
+        red += check.Rgb[3 * p] > 128 && check.Rgb[3 * p + 1] < 128 ? 1 : 0;
+      }
+    }
+    settings->SetOutput(vtkReliefProperty::ShadedOutput);
+    const double e = EnvironmentError(CaptureFrame(window), reference, exposure);
+    std::cout << "[hdr] " << c.Name << ": " << red << " non-finite of " << covered << " pixels, "
+              << e << "% error vs the exact render of the same lights\n";
+    EXPECT_GT(covered, 1000) << c.Name;
+    EXPECT_EQ(red, 0) << c.Name;
+    EXPECT_LT(e, 1.0) << c.Name;
+  }
 }
