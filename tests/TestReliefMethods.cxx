@@ -150,3 +150,53 @@ TEST(ReliefMethodHits, UnsafeMethodsBoundsAndOrdering)
     }
   }
 }
+
+// Adaptive step counts (Tatarchuk 2006: the count blends from --linear-steps at grazing views
+// to the minimum head-on by the view cosine): head-on they take fewer relief-texture samples
+// (13 vs 35 measured) within a small extra hit error; at 75 degrees they keep most steps and
+// the fixed count's accuracy.
+TEST(ReliefMethodHits, AdaptiveStepsSaveSamplesHeadOnWithinTheError)
+{
+  auto measure = [](double angle, bool adaptive, int linear)
+  {
+    ReliefSceneOptions o;
+    o.Pattern = "HemisphereTorus";
+    o.Resolution = 256;
+    o.Width = o.Height = 320;
+    o.DepthScale = 0.12;
+    o.ViewAngle = angle;
+    o.ViewDistance = 2.2;
+    o.Method = "relief";
+    o.LinearSteps = linear;
+    o.RefinementSteps = 8;
+    o.SelfShadowing = false;
+    o.AdaptiveSteps = adaptive;
+    std::string error;
+    ReliefScene scene;
+    EXPECT_TRUE(BuildReliefScene(o, scene, error)) << error;
+    auto window = MakeOffscreenWindow(o, scene.Renderer);
+    vtkReliefProperty* settings = scene.Mapper->GetReliefProperty();
+    settings->SetOutput(vtkReliefProperty::HitUOutput);
+    const Frame hitU = CaptureFrame(window);
+    settings->SetOutput(vtkReliefProperty::HitVOutput);
+    const Frame hitV = CaptureFrame(window);
+    settings->SetOutput(vtkReliefProperty::SampleCountOutput);
+    const double samples = MeanSampleCount(CaptureFrame(window));
+    ReliefReference reference;
+    EXPECT_TRUE(ComputeReliefReference(MakeReliefReferenceInput(scene, o), reference, error))
+      << error;
+    const double texels = CompareHits(reference, hitU, hitV).MeanTexels;
+    std::cout << "[adaptive " << adaptive << " " << linear << " steps @" << angle << "] " << samples
+              << " samples per pixel, hit error " << texels << " texels\n";
+    return std::make_pair(samples, texels);
+  };
+  const auto fixedHeadOn = measure(10.0, false, 32);
+  const auto adaptiveHeadOn = measure(10.0, true, 32);
+  EXPECT_LT(adaptiveHeadOn.first, 0.8 * fixedHeadOn.first);
+  EXPECT_LT(adaptiveHeadOn.second, fixedHeadOn.second + 0.1);
+  const auto fixedGrazing = measure(75.0, false, 32);
+  const auto adaptiveGrazing = measure(75.0, true, 32);
+  // The count follows mix(linear, minimum, cos): at 75 degrees it keeps most steps.
+  EXPECT_GT(adaptiveGrazing.first, 0.7 * fixedGrazing.first);
+  EXPECT_LT(adaptiveGrazing.second, fixedGrazing.second + 0.05);
+}
