@@ -1,12 +1,11 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Level of detail and aliasing: a 1024^2 stone relief drawn at 160 x 120, where each pixel
 // covers several texels, is compared with the same view rendered at 8 x 8 samples per pixel and
-// box-filtered (the supersampled reference), with and without marching the mip level of the pixel
-// footprint. Level of detail must change the frame (it changed nothing while the relief texture
-// had one mip level: vtkTextureObject's MaxLevel 0, no mipmaps made by Create2DFromRaw). Measured
-// (docs/paraview.md): it does not bring the frame closer to the reference -- the mean of the
-// shading over a pixel is not the shading of the mean height field, and the averaged depth loses
-// the dark cracks that the supersampled frame keeps -- so the test bounds that cost.
+// box-filtered (the supersampled reference), with and without level of detail. Level of detail
+// marches level 0 and reads the shading normal at the pixel footprint's mip level (less one):
+// it must bring the frame closer to the reference (measured 2.31 vs 3.28 levels). The earlier
+// design, marching the averaged height field, made it worse (3.80): averaged depth fills the
+// dark cracks the supersampled frame keeps (docs/relief-methods.md).
 #include "ImageCompare.h"
 #include "ReliefScene.h"
 
@@ -124,8 +123,6 @@ TEST(ReliefLevelOfDetail, ChangesTheFrameAgainstTheSupersampledReference)
   }
   ASSERT_GT(with.Pixels, Width * Height / 8) << "the relief should fill much of the view";
   EXPECT_GT(differing, 100) << "level of detail should change the frame";
-  // What level of detail costs in accuracy against the reference stays bounded (measured 3.8
-  // levels with it, 3.3 without); a broken mip chain (black or garbage levels) is far outside.
-  EXPECT_LT(with.Mean, 1.5 * without.Mean) << "level of detail should not wreck the frame";
+  EXPECT_LT(with.Mean, 0.85 * without.Mean) << "level of detail should reduce the aliasing";
   EXPECT_LT(without.Mean, 8.0) << "the base-level march should be close to the reference";
 }

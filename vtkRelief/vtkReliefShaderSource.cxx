@@ -192,7 +192,9 @@ void vtkReliefShaderSource::ReplaceValuesAfter(std::string& fs, const void* cell
     "  vec2 mlDUVdx = dFdx(mlTCoordVC);\n"
     "  vec2 mlDUVdy = dFdy(mlTCoordVC);" +
       std::string(p->GetLevelOfDetail()
-          ? "\n  mlMarchLod = max(0.0, 0.5 * log2(abs(mlDUVdx.x * mlDUVdy.y - mlDUVdx.y * "
+          // Footprint area -> level; one level finer than the area's, as trilinear filtering
+          // blends in the next coarser level (measured best of -2..0 on Stone and Bricks).
+          ? "\n  mlShadeLod = max(0.0, -1.0 + 0.5 * log2(abs(mlDUVdx.x * mlDUVdy.y - mlDUVdx.y * "
             "mlDUVdy.x) * mlTextureSize.x * mlTextureSize.y));"
           : ""));
   vtkShaderProgram::Substitute(fs, "//MESOLIGHT::Relief::Impl", vtkReliefImplFS);

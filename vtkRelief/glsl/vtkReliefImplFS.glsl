@@ -52,7 +52,9 @@
     }
 #endif
 #if ML_METHOD != ML_TEXTURE_MAPPING
+    mlMarchLod = mlShadeLod; // the shading normal at the footprint's level (level of detail)
     vec2 g = mlDepthGradient(mlHit.xy);
+    mlMarchLod = 0.0; // shadows march level 0 again
     vec3 pu = dPdu - mlN * (worldDepth * g.x);
     vec3 pv = dPdv - mlN * (worldDepth * g.y);
     mlShadingNormal = normalize(cross(pu, pv) * handedness);
