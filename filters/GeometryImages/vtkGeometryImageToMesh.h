@@ -30,10 +30,12 @@
 #include <string> // For ToGeometryImage
 
 class vtkImageData;
+#ifndef __VTK_WRAP__
 namespace mesolight
 {
 struct GeometryImage;
 }
+#endif
 
 class MESOLIGHTGEOMETRYIMAGES_EXPORT vtkGeometryImageToMesh : public vtkPolyDataAlgorithm
 {
@@ -66,20 +68,21 @@ public:
   /** The optional normal image (input port 1). */
   void SetNormalImageConnection(vtkAlgorithmOutput* output);
 
+#ifndef __VTK_WRAP__
   /**
    * The positions (and normals, from normalImage or a "Normals" array of image) of a VTK image
-   * as a core geometry image. False with a message for unusable input.
+   * as a core geometry image. False with a message for unusable input. (C++ only.)
    */
   static bool ToGeometryImage(vtkImageData* image, vtkImageData* normalImage,
     mesolight::GeometryImage& geometry, std::string& error);
+#endif
 
 protected:
   vtkGeometryImageToMesh();
   ~vtkGeometryImageToMesh() override = default;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
-  int RequestUpdateExtent(
-    vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   int Stride = 20;
