@@ -35,8 +35,23 @@ public:
     const glm::dvec3 extent = hi - this->Lo;
     const double largest = std::max({ extent.x, extent.y, extent.z, 1e-12 });
     // About one cell per triangle over a surface: cells of the triangles' typical size.
-    const double cell =
-      largest / std::max(1.0, std::sqrt(static_cast<double>(triangles.size()) / 2.0));
+    double cell = largest / std::max(1.0, std::sqrt(static_cast<double>(triangles.size()) / 2.0));
+    // A surface filling its box (a closed model) would ask for far more cells than triangles:
+    // at most about four cells per triangle.
+    const double budget = 4.0 * std::max<size_t>(1, triangles.size());
+    const auto cells = [&](double c)
+    {
+      double n = 1.0;
+      for (int a = 0; a < 3; ++a)
+      {
+        n *= std::max(1.0, std::ceil(extent[a] / c));
+      }
+      return n;
+    };
+    if (cells(cell) > budget)
+    {
+      cell *= std::cbrt(cells(cell) / budget);
+    }
     for (int a = 0; a < 3; ++a)
     {
       this->Dims[a] = std::clamp(static_cast<int>(std::ceil(extent[a] / cell)), 1, 256);

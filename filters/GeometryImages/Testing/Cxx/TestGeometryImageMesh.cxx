@@ -335,3 +335,50 @@ TEST(GeometryImageMesh, DisplacementMovesAlongTheNormalByDepthTimesScale)
   EXPECT_FALSE(DisplaceGeometryImage(cylinder, std::vector<float>(10), 0.04, displaced, error));
   EXPECT_NE(error.find("one per pixel"), std::string::npos) << error;
 }
+
+// The grid-accelerated Hausdorff distance against brute force (every pixel to every triangle, every
+// sample to every full-resolution triangle).
+TEST(GeometryImageMesh, HausdorffMatchesBruteForce)
+{
+  for (GeometrySurface s : { GeometrySurface::SpherePatch, GeometrySurface::Bump })
+  {
+    const GeometryImage image = MakeGeometryImage(s, 41, 29);
+    GeometryImageMesh coarse, full;
+    std::string error;
+    ASSERT_TRUE(SampleAdaptive(image, 0.01, coarse, error)) << error;
+    ASSERT_TRUE(SampleRegular(image, 1, full, error)) << error;
+    const auto nearest = [](const GeometryImageMesh& m, const glm::dvec3& p)
+    {
+      double best = std::numeric_limits<double>::infinity();
+      for (const glm::ivec3& t : m.Triangles)
+      {
+        best =
+          std::min(best, PointTriangleDistance(p, m.Points[t[0]], m.Points[t[1]], m.Points[t[2]]));
+      }
+      return best;
+    };
+    double imageToMesh = 0.0, meshToImage = 0.0;
+    for (const glm::dvec3& p : image.Positions)
+    {
+      imageToMesh = std::max(imageToMesh, nearest(coarse, p));
+    }
+    const int n = 4;
+    for (const glm::ivec3& t : coarse.Triangles)
+    {
+      for (int a = 0; a <= n; ++a)
+      {
+        for (int b = 0; a + b <= n; ++b)
+        {
+          const double wa = static_cast<double>(a) / n, wb = static_cast<double>(b) / n;
+          const glm::dvec3 p = wa * coarse.Points[t[0]] + wb * coarse.Points[t[1]] +
+            (1.0 - wa - wb) * coarse.Points[t[2]];
+          meshToImage = std::max(meshToImage, nearest(full, p));
+        }
+      }
+    }
+    const HausdorffDistance d = MeasureHausdorff(image, coarse, n);
+    EXPECT_NEAR(d.ImageToMesh, imageToMesh, 1e-12) << GeometrySurfaceName(s);
+    EXPECT_NEAR(d.MeshToImage, meshToImage, 1e-12) << GeometrySurfaceName(s);
+    EXPECT_GT(imageToMesh, 0.0);
+  }
+}
