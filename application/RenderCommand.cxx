@@ -245,8 +245,8 @@ int RunRenderCommand(const std::vector<std::string>& args)
   cl.AddValue("--out", "FILE", "PNG to write", "mesolight-render.png");
   cl.AddFlag("--offscreen", "only write the PNG, never open a window");
   cl.AddValue("--geometry-image", "FILE",
-    "draw the relief on a geometry image's coarse mesh (RGB = XYZ,\nfloat EXR/TIFF; or "
-    "procedural:cylinder|sphere|plane|wave|bump)");
+    "relief on a geometry image's mesh: RGB = XYZ image or "
+    "procedural:cylinder|sphere|plane|wave|bump");
   cl.AddValue("--stride", "K", "geometry image: a vertex every K pixels", "20");
   cl.AddValue("--tolerance", "T", "geometry image: adaptive, to T world units (not with --stride)");
   cl.AddValue("--color", "IMAGE", "geometry image: albedo in its parameterization");
