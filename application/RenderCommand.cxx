@@ -2,6 +2,7 @@
 #include "RenderCommand.h"
 
 #include "CommandLine.h"
+#include "GeometryImageScene.h"
 #include "ImageCommands.h"
 #include "ImageCompare.h"
 #include "OutputFile.h"
@@ -13,6 +14,7 @@
 #include <vtkInteractorStyleTrackballCamera.h>
 #include <vtkNew.h>
 #include <vtkObjectFactory.h>
+#include <vtkPolyData.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderWindowInteractor.h>
 #include <vtkRenderer.h>
@@ -178,6 +180,58 @@ public:
   }
 };
 vtkStandardNewMacro(ReliefInteractorStyle);
+
+// `render --geometry-image FILE [--stride K | --tolerance T] [--color IMAGE]`: the relief on the
+// coarse mesh of a geometry image (GeometryImageScene.h). False with a message (usage: exit 2).
+bool BuildGeometryImageRender(const CommandLine& cl, const ReliefSceneOptions& relief,
+  ReliefScene& scene, std::string& error, int& exitCode)
+{
+  exitCode = 2;
+  const bool geometry = cl.Has("--geometry-image");
+  for (const char* option : { "--stride", "--tolerance", "--color" })
+  {
+    if (cl.Has(option) && !geometry)
+    {
+      error = std::string(option) + " needs --geometry-image";
+      return false;
+    }
+  }
+  if (cl.Has("--stride") && cl.Has("--tolerance"))
+  {
+    error = "--stride and --tolerance exclude each other (regular or adaptive sampling)";
+    return false;
+  }
+  GeometryImageSceneOptions o;
+  o.Relief = relief;
+  o.GeometryImage = cl.Get("--geometry-image");
+  o.ColorFile = cl.Get("--color");
+  if (!cl.GetInt("--stride", 1, 1 << 20, o.Stride, error) ||
+    !cl.GetDouble("--tolerance", 0.0, 1e30, o.Tolerance, error))
+  {
+    return false;
+  }
+  if (cl.Has("--tolerance") && !(o.Tolerance > 0.0))
+  {
+    error = "--tolerance must be a positive world distance";
+    return false;
+  }
+  exitCode = 1;
+  vtkSmartPointer<vtkPolyData> mesh;
+  if (!BuildGeometryImageReliefScene(o, scene, error, &mesh))
+  {
+    return false;
+  }
+  std::cout << o.GeometryImage << ": " << mesh->GetNumberOfPolys() << " triangles (";
+  if (o.Tolerance > 0.0)
+  {
+    std::cout << "tolerance " << o.Tolerance << ")" << std::endl;
+  }
+  else
+  {
+    std::cout << "stride " << o.Stride << ")" << std::endl;
+  }
+  return true;
+}
 } // namespace
 
 int RunRenderCommand(const std::vector<std::string>& args)
@@ -190,6 +244,12 @@ int RunRenderCommand(const std::vector<std::string>& args)
   AddSceneOptions(cl);
   cl.AddValue("--out", "FILE", "PNG to write", "mesolight-render.png");
   cl.AddFlag("--offscreen", "only write the PNG, never open a window");
+  cl.AddValue("--geometry-image", "FILE",
+    "relief on a geometry image's mesh: RGB = XYZ image or "
+    "procedural:cylinder|sphere|plane|wave|bump");
+  cl.AddValue("--stride", "K", "geometry image: a vertex every K pixels", "20");
+  cl.AddValue("--tolerance", "T", "geometry image: adaptive, to T world units (not with --stride)");
+  cl.AddValue("--color", "IMAGE", "geometry image: albedo in its parameterization");
   ReliefSceneOptions options;
   int exitCode = 0;
   if (!ParseSceneCommand(cl, args, options, exitCode))
@@ -203,14 +263,24 @@ int RunRenderCommand(const std::vector<std::string>& args)
     return 2;
   }
   const std::string out = cl.Get("--out");
-  const std::string problem = CheckOutputFile(out, { options.DepthFile, options.Environment });
+  const std::string problem = CheckOutputFile(
+    out, { options.DepthFile, options.Environment, cl.Get("--geometry-image"), cl.Get("--color") });
   if (!problem.empty())
   {
     return cl.UsageError("--out: " + problem);
   }
 
   ReliefScene scene;
-  if (!BuildReliefScene(options, scene, error))
+  if (cl.Has("--geometry-image") || cl.Has("--stride") || cl.Has("--tolerance") ||
+    cl.Has("--color"))
+  {
+    if (!BuildGeometryImageRender(cl, options, scene, error, exitCode))
+    {
+      return exitCode == 2 ? cl.UsageError(error)
+                           : (std::cerr << "mesolight render: " << error << "\n", exitCode);
+    }
+  }
+  else if (!BuildReliefScene(options, scene, error))
   {
     std::cerr << "mesolight render: " << error << "\n";
     return 1;

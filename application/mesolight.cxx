@@ -5,6 +5,7 @@
 #include "CommandTable.h"
 #include "ConeBenchmark.h"
 #include "GatherBenchmark.h"
+#include "GeometryImageBenchmark.h"
 #include "ImageCommands.h"
 #include "LightFieldViewCommand.h"
 #include "LightSetBenchmark.h"
@@ -132,6 +133,9 @@ const std::vector<mesolight::Command>& Commands()
         { "object", "[FIELD] [options]",
           "a movable object in the walkthrough: frame time\nper stage, directions and subdivision",
           RunObjectBenchmark, {} },
+        { "geometry-image", "[options]",
+          "geometry images: triangles vs Hausdorff distance\nand image error, stride vs adaptive",
+          RunGeometryImageBenchmark, {} },
       } },
     { "help", "[COMMAND]", "this text, or one command's options", RunHelp, {} },
   };

@@ -1,0 +1,265 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "GeometryImageScene.h"
+
+#include "GeometryImageMesh.h"
+#include "ProceduralGeometryImages.h"
+#include "vtkGeometryImageSource.h"
+#include "vtkGeometryImageToMesh.h"
+#include "vtkOIIOImageReader.h"
+
+#include <vtkActor.h>
+#include <vtkCamera.h>
+#include <vtkCommand.h>
+#include <vtkDataArray.h>
+#include <vtkFloatArray.h>
+#include <vtkMapper.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkRenderer.h>
+#include <vtkTexture.h>
+
+namespace mesolight
+{
+namespace
+{
+// Collects the VTK error messages of a pipeline, without VTK's location line.
+class Errors : public vtkCommand
+{
+public:
+  static Errors* New() { return new Errors; }
+  void Execute(vtkObject*, unsigned long, void* callData) override
+  {
+    std::string text = callData ? static_cast<const char*>(callData) : "";
+    const size_t lineEnd = text.find('\n');
+    if (text.compare(0, 10, "ERROR: In ") == 0 && lineEnd != std::string::npos)
+    {
+      text = text.substr(lineEnd + 1);
+    }
+    while (!text.empty() && (text.back() == '\n' || text.back() == ' '))
+    {
+      text.pop_back();
+    }
+    this->Messages += (this->Messages.empty() ? "" : "; ") + text;
+  }
+  std::string Messages;
+};
+
+const std::string Procedural = "procedural:";
+
+bool IsProcedural(const std::string& spec)
+{
+  return spec.compare(0, Procedural.size(), Procedural) == 0;
+}
+
+// Replaces the standard scene's wall by mesh; a geometry image file gets a camera on its bounds
+// (the procedural surfaces are framed like the wall, so the standard camera fits them).
+void UseMesh(const GeometryImageSceneOptions& options, ReliefScene& scene, vtkPolyData* mesh)
+{
+  scene.Actor->GetMapper()->SetInputDataObject(mesh);
+  if (!IsProcedural(options.GeometryImage))
+  {
+    scene.Renderer->ResetCamera(mesh->GetBounds());
+  }
+}
+
+bool ApplyColour(const GeometryImageSceneOptions& options, ReliefScene& scene, std::string& error)
+{
+  if (options.ColorFile.empty())
+  {
+    return true;
+  }
+  vtkNew<Errors> errors;
+  vtkNew<vtkOIIOImageReader> reader;
+  reader->AddObserver(vtkCommand::ErrorEvent, errors);
+  reader->SetFileName(options.ColorFile.c_str());
+  reader->Update();
+  if (!errors->Messages.empty() || reader->GetOutput()->GetNumberOfPoints() == 0)
+  {
+    error = "cannot read the colour image '" + options.ColorFile + "'" +
+      (errors->Messages.empty() ? "" : ": " + errors->Messages);
+    return false;
+  }
+  vtkNew<vtkImageData> colour;
+  colour->DeepCopy(reader->GetOutput());
+  scene.Albedo->SetInputData(colour);
+  return true;
+}
+
+bool PrepareGeometry(const GeometryImageSceneOptions& options, const ReliefScene& scene,
+  vtkSmartPointer<vtkImageData>& geometry, std::string& error)
+{
+  int dims[3] = { options.Relief.Resolution, options.Relief.Resolution, 1 };
+  if (scene.ReliefTexture)
+  {
+    scene.ReliefTexture->GetDimensions(dims); // procedural surfaces: texel for texel
+  }
+  geometry = LoadGeometryImage(options.GeometryImage, dims[0], error);
+  return geometry != nullptr;
+}
+} // namespace
+
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkImageData> LoadGeometryImage(
+  const std::string& spec, int resolution, std::string& error)
+{
+  vtkNew<Errors> errors;
+  vtkSmartPointer<vtkImageData> image;
+  if (IsProcedural(spec))
+  {
+    vtkNew<vtkGeometryImageSource> source;
+    source->AddObserver(vtkCommand::ErrorEvent, errors);
+    if (!source->SetSurfaceByName(spec.substr(Procedural.size()).c_str()))
+    {
+      error = "unknown procedural geometry image '" + spec +
+        "' (procedural:" + GeometrySurfaceNames() + ")";
+      return nullptr;
+    }
+    source->SetResolution(resolution, resolution);
+    source->Update();
+    image = source->GetOutput();
+  }
+  else
+  {
+    vtkNew<vtkOIIOImageReader> reader;
+    reader->AddObserver(vtkCommand::ErrorEvent, errors);
+    reader->SetFileName(spec.c_str());
+    reader->Update();
+    image = reader->GetOutput();
+  }
+  if (!errors->Messages.empty() || !image || image->GetNumberOfPoints() == 0)
+  {
+    error = "cannot read the geometry image '" + spec + "'" +
+      (errors->Messages.empty() ? "" : ": " + errors->Messages);
+    return nullptr;
+  }
+  auto copy = vtkSmartPointer<vtkImageData>::New();
+  copy->DeepCopy(image);
+  return copy;
+}
+
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkPolyData> MakeGeometryImageMesh(
+  const GeometryImageSceneOptions& options, vtkImageData* geometry, std::string& error)
+{
+  vtkNew<Errors> errors;
+  vtkNew<vtkGeometryImageToMesh> mesher;
+  mesher->AddObserver(vtkCommand::ErrorEvent, errors);
+  mesher->SetInputData(geometry);
+  mesher->SetStride(options.Stride);
+  mesher->SetTolerance(options.Tolerance);
+  mesher->Update();
+  if (!errors->Messages.empty() || mesher->GetOutput()->GetNumberOfPolys() == 0)
+  {
+    error = errors->Messages.empty() ? "the geometry image gave no triangles" : errors->Messages;
+    return nullptr;
+  }
+  auto mesh = vtkSmartPointer<vtkPolyData>::New();
+  mesh->DeepCopy(mesher->GetOutput());
+  return mesh;
+}
+
+//------------------------------------------------------------------------------
+bool BuildGeometryImageReliefScene(const GeometryImageSceneOptions& options, ReliefScene& scene,
+  std::string& error, vtkSmartPointer<vtkPolyData>* meshOut)
+{
+  vtkSmartPointer<vtkImageData> geometry;
+  if (!BuildReliefScene(options.Relief, scene, error) ||
+    !PrepareGeometry(options, scene, geometry, error) || !ApplyColour(options, scene, error))
+  {
+    return false;
+  }
+  vtkSmartPointer<vtkPolyData> mesh = MakeGeometryImageMesh(options, geometry, error);
+  if (!mesh)
+  {
+    return false;
+  }
+  // The geometry image's borders are the texture's: silhouettes cut the relief there.
+  UseMesh(options, scene, mesh);
+  if (meshOut)
+  {
+    *meshOut = mesh;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool BuildGeometryImageDenseScene(
+  const GeometryImageSceneOptions& options, ReliefScene& scene, std::string& error)
+{
+  vtkSmartPointer<vtkImageData> geometry;
+  if (!BuildDenseReferenceScene(options.Relief, scene, error) ||
+    !PrepareGeometry(options, scene, geometry, error) || !ApplyColour(options, scene, error))
+  {
+    return false;
+  }
+  GeometryImage surface;
+  if (!vtkGeometryImageToMesh::ToGeometryImage(geometry, nullptr, surface, error))
+  {
+    return false;
+  }
+  // Depth per pixel: the relief texture's A channel, texel for texel.
+  int dims[3];
+  scene.ReliefTexture->GetDimensions(dims);
+  vtkDataArray* relief = scene.ReliefTexture->GetPointData()->GetScalars();
+  if (dims[0] != surface.Width || dims[1] != surface.Height || !relief ||
+    relief->GetNumberOfComponents() != 4)
+  {
+    error = "the dense reference needs a depth map of the geometry image's size (" +
+      std::to_string(surface.Width) + " x " + std::to_string(surface.Height) + "), got " +
+      std::to_string(dims[0]) + " x " + std::to_string(dims[1]);
+    return false;
+  }
+  std::vector<float> depth(surface.Positions.size());
+  for (size_t k = 0; k < depth.size(); ++k)
+  {
+    depth[k] = static_cast<float>(relief->GetComponent(static_cast<vtkIdType>(k), 3));
+  }
+  GeometryImage displaced;
+  if (!DisplaceGeometryImage(surface, depth, options.Relief.DepthScale, displaced, error))
+  {
+    return false;
+  }
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(displaced.Width, displaced.Height, 1);
+  vtkNew<vtkFloatArray> positions;
+  positions->SetNumberOfComponents(3);
+  positions->SetNumberOfTuples(static_cast<vtkIdType>(displaced.Positions.size()));
+  for (size_t k = 0; k < displaced.Positions.size(); ++k)
+  {
+    const glm::dvec3& p = displaced.Positions[k];
+    positions->SetTuple3(static_cast<vtkIdType>(k), p.x, p.y, p.z);
+  }
+  image->GetPointData()->SetScalars(positions);
+  // One vertex per pixel; normals of the displaced geometry itself.
+  GeometryImageSceneOptions dense = options;
+  dense.Stride = 1;
+  dense.Tolerance = 0.0;
+  vtkSmartPointer<vtkPolyData> mesh = MakeGeometryImageMesh(dense, image, error);
+  if (!mesh)
+  {
+    return false;
+  }
+  UseMesh(options, scene, mesh);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool BuildGeometryImageTexturedScene(
+  const GeometryImageSceneOptions& options, ReliefScene& scene, std::string& error)
+{
+  vtkSmartPointer<vtkImageData> geometry;
+  if (!BuildTexturedPlaneScene(options.Relief, scene, error) ||
+    !PrepareGeometry(options, scene, geometry, error) || !ApplyColour(options, scene, error))
+  {
+    return false;
+  }
+  vtkSmartPointer<vtkPolyData> mesh = MakeGeometryImageMesh(options, geometry, error);
+  if (!mesh)
+  {
+    return false;
+  }
+  UseMesh(options, scene, mesh);
+  return true;
+}
+
+} // namespace mesolight

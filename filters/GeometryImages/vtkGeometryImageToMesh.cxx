@@ -1,0 +1,213 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "vtkGeometryImageToMesh.h"
+
+#include "GeometryImageMesh.h"
+#include "Progress.h"
+#include "vtkWholeExtentRequest.h"
+
+#include "vtkCellArray.h"
+#include "vtkDataArray.h"
+#include "vtkFloatArray.h"
+#include "vtkIdTypeArray.h"
+#include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+
+#include <sstream>
+
+vtkStandardNewMacro(vtkGeometryImageToMesh);
+
+//------------------------------------------------------------------------------
+vtkGeometryImageToMesh::vtkGeometryImageToMesh()
+{
+  this->SetNumberOfInputPorts(2);
+}
+
+//------------------------------------------------------------------------------
+void vtkGeometryImageToMesh::SetNormalImageConnection(vtkAlgorithmOutput* output)
+{
+  this->SetInputConnection(1, output);
+}
+
+//------------------------------------------------------------------------------
+int vtkGeometryImageToMesh::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkImageData");
+  // Port 0 is optional too, so that a missing input gets our own, explicit error message.
+  info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkGeometryImageToMesh::RequestUpdateExtent(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
+{
+  // Each image whole, whatever its size: a normal image of another size gets our message.
+  mesolight::RequestWholeInputExtent(inputVector, 0);
+  mesolight::RequestWholeInputExtent(inputVector, 1);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+bool vtkGeometryImageToMesh::ToGeometryImage(vtkImageData* image, vtkImageData* normalImage,
+  mesolight::GeometryImage& geometry, std::string& error)
+{
+  if (!image)
+  {
+    error = "no geometry image: connect an image whose pixels are XYZ positions";
+    return false;
+  }
+  int dims[3];
+  image->GetDimensions(dims);
+  if (image->GetNumberOfPoints() < 1 || dims[2] != 1)
+  {
+    std::ostringstream s;
+    s << "the geometry image must be a 2D image; got " << dims[0] << " x " << dims[1] << " x "
+      << dims[2] << " pixels";
+    error = s.str();
+    return false;
+  }
+  vtkDataArray* positions = image->GetPointData()->GetScalars();
+  if (!positions || positions->GetNumberOfComponents() != 3)
+  {
+    std::ostringstream s;
+    s << "a geometry image needs 3 components per pixel (XYZ); got "
+      << (positions ? positions->GetNumberOfComponents() : 0)
+      << " (a colour or depth image is not a geometry image)";
+    error = s.str();
+    return false;
+  }
+  vtkDataArray* normals = nullptr;
+  if (normalImage)
+  {
+    int ndims[3];
+    normalImage->GetDimensions(ndims);
+    normals = normalImage->GetPointData()->GetScalars();
+    if (ndims[0] != dims[0] || ndims[1] != dims[1] || ndims[2] != 1 || !normals ||
+      normals->GetNumberOfComponents() != 3)
+    {
+      std::ostringstream s;
+      s << "the normal image must have 3 components and the geometry image's size (" << dims[0]
+        << " x " << dims[1] << "); got " << ndims[0] << " x " << ndims[1] << " with "
+        << (normals ? normals->GetNumberOfComponents() : 0) << " component(s)";
+      error = s.str();
+      return false;
+    }
+  }
+  else if (vtkDataArray* own = image->GetPointData()->GetArray("Normals"))
+  {
+    normals = own->GetNumberOfComponents() == 3 && own != positions ? own : nullptr;
+  }
+  geometry = mesolight::GeometryImage();
+  geometry.Width = dims[0];
+  geometry.Height = dims[1];
+  const vtkIdType n = image->GetNumberOfPoints();
+  geometry.Positions.resize(static_cast<size_t>(n));
+  if (normals)
+  {
+    geometry.Normals.resize(static_cast<size_t>(n));
+  }
+  for (vtkIdType k = 0; k < n; ++k)
+  {
+    double p[3];
+    positions->GetTuple(k, p);
+    geometry.Positions[k] = glm::dvec3(p[0], p[1], p[2]);
+    if (normals)
+    {
+      normals->GetTuple(k, p);
+      geometry.Normals[k] = glm::dvec3(p[0], p[1], p[2]);
+    }
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+int vtkGeometryImageToMesh::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkImageData* input = vtkImageData::GetData(inputVector[0], 0);
+  vtkImageData* normalInput = vtkImageData::GetData(inputVector[1], 0);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  if (!output)
+  {
+    vtkErrorMacro("Missing output.");
+    return 0;
+  }
+  mesolight::GeometryImage geometry;
+  std::string error;
+  if (!ToGeometryImage(input, normalInput, geometry, error))
+  {
+    vtkErrorMacro(<< "Cannot mesh the geometry image: " << error << ".");
+    return 0;
+  }
+  mesolight::GeometryImageMesh mesh;
+  const mesolight::ProgressCallback progress = mesolight::AlgorithmProgress(this);
+  const bool ok = this->Tolerance > 0.0
+    ? mesolight::SampleAdaptive(
+        geometry, this->Tolerance, mesh, error, progress, this->MaximumCellSize)
+    : mesolight::SampleRegular(geometry, this->Stride, mesh, error, progress);
+  if (!ok)
+  {
+    vtkErrorMacro(<< "Cannot mesh the geometry image: " << error << ".");
+    return 0;
+  }
+  if (this->GetAbortExecute())
+  {
+    return 1;
+  }
+
+  const vtkIdType np = static_cast<vtkIdType>(mesh.Points.size());
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToFloat();
+  points->SetNumberOfPoints(np);
+  vtkNew<vtkFloatArray> normals;
+  normals->SetName("Normals");
+  normals->SetNumberOfComponents(3);
+  normals->SetNumberOfTuples(np);
+  vtkNew<vtkFloatArray> tcoords;
+  tcoords->SetName("TCoords");
+  tcoords->SetNumberOfComponents(2);
+  tcoords->SetNumberOfTuples(np);
+  for (vtkIdType k = 0; k < np; ++k)
+  {
+    const glm::dvec3& p = mesh.Points[k];
+    const glm::dvec3& nrm = mesh.Normals[k];
+    points->SetPoint(k, p.x, p.y, p.z);
+    normals->SetTuple3(k, nrm.x, nrm.y, nrm.z);
+    tcoords->SetTuple2(k, mesh.TCoords[k].x, mesh.TCoords[k].y);
+  }
+  const vtkIdType nt = static_cast<vtkIdType>(mesh.Triangles.size());
+  vtkNew<vtkIdTypeArray> offsets;
+  offsets->SetNumberOfValues(nt + 1);
+  vtkNew<vtkIdTypeArray> connectivity;
+  connectivity->SetNumberOfValues(3 * nt);
+  for (vtkIdType t = 0; t < nt; ++t)
+  {
+    offsets->SetValue(t, 3 * t);
+    for (int c = 0; c < 3; ++c)
+    {
+      connectivity->SetValue(3 * t + c, mesh.Triangles[t][c]);
+    }
+  }
+  offsets->SetValue(nt, 3 * nt);
+  vtkNew<vtkCellArray> polys;
+  polys->SetData(offsets, connectivity);
+  output->SetPoints(points);
+  output->SetPolys(polys);
+  output->GetPointData()->SetNormals(normals);
+  output->GetPointData()->SetTCoords(tcoords);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkGeometryImageToMesh::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Stride: " << this->Stride << "\n";
+  os << indent << "Tolerance: " << this->Tolerance << "\n";
+  os << indent << "MaximumCellSize: " << this->MaximumCellSize << "\n";
+}
