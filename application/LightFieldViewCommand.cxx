@@ -5,6 +5,7 @@
 #include "CommandLine.h"
 #include "LightFieldCamera.h"
 #include "LightFieldObjectOptions.h"
+#include "ObjectDragStyle.h"
 #include "OutputFile.h"
 #include "Timing.h"
 
@@ -28,7 +29,6 @@
 #include <vtkCellArray.h>
 #include <vtkCommand.h>
 #include <vtkFloatArray.h>
-#include <vtkInteractorStyleTrackballCamera.h>
 #include <vtkNew.h>
 #include <vtkOpenGLRenderWindow.h>
 #include <vtkPNGWriter.h>
@@ -429,6 +429,23 @@ void OnTimer(vtkObject*, unsigned long, void* clientData, void*)
   }
 }
 
+// A left-button drag from the object's projected centre by (dx, dy) pixels, as the mouse sends it.
+void DragObject(vtkRenderWindowInteractor* interactor, vtkRenderer* renderer, vtkActor* object,
+  double dx, double dy)
+{
+  const double* centre = object->GetCenter();
+  renderer->SetWorldPoint(centre[0], centre[1], centre[2], 1.0);
+  renderer->WorldToDisplay();
+  const double* display = renderer->GetDisplayPoint();
+  const int x = static_cast<int>(display[0] + 0.5);
+  const int y = static_cast<int>(display[1] + 0.5);
+  interactor->SetEventInformation(x, y);
+  interactor->InvokeEvent(vtkCommand::LeftButtonPressEvent, nullptr);
+  interactor->SetEventInformation(x + static_cast<int>(dx), y + static_cast<int>(dy));
+  interactor->InvokeEvent(vtkCommand::MouseMoveEvent, nullptr);
+  interactor->InvokeEvent(vtkCommand::LeftButtonReleaseEvent, nullptr);
+}
+
 int View(const std::vector<std::string>& args)
 {
   const char* command = "mesolight vlf view";
@@ -437,8 +454,9 @@ int View(const std::vector<std::string>& args)
     "Walks through a light field in a VTK window (vtkLightFieldActor). Mouse: rotate "
     "(left), pan\n(middle), zoom (right/wheel). Keys: 1-4 or m mode (geometry, raytrace, "
     "progressive,\ncoherent), +/- exposure, t tone map (clamp/Reinhard), [ ] reflection "
-    "depth, q quit.\nWith --object: j/l move it along x, k/i along y, u/o along z (a twentieth "
-    "of the field per press),\ny turns it 15 degrees about its y axis.\n");
+    "depth, q quit.\nWith --object: drag it with the left button (in the view plane); j/l move "
+    "it along x, k/i along y,\nu/o along z (a twentieth of the field per press), y turns it 15 "
+    "degrees about its y axis.\n");
   AddViewOptions(cl);
   AddObjectOptions(cl);
   cl.AddValue("--path", "FILE.csv",
@@ -451,6 +469,9 @@ int View(const std::vector<std::string>& args)
   cl.AddFlag("--offscreen", "no window (with --frames)");
   cl.AddValue("--keys", "KEYS",
     "with --frames: press these keys, one before each frame (a check of the key bindings)");
+  cl.AddValue("--drag", "DX,DY",
+    "with --object and --frames: drag the object with the left button from its centre by DX,DY "
+    "pixels after the first frame (a check of the mouse binding)");
   int exitCode = 0;
   if (!cl.ParseArguments(args, exitCode))
   {
@@ -466,6 +487,16 @@ int View(const std::vector<std::string>& args)
   if (!cl.GetInt("--frames", 0, 100000, frames, error))
   {
     std::cerr << command << ": " << error << "\n";
+    return 2;
+  }
+  std::vector<double> drag;
+  if (cl.Has("--drag") &&
+    (!cl.GetDoubleList("--drag", -1e4, 1e4, drag, error) || drag.size() != 2 ||
+      !cl.Has("--object") || frames < 2))
+  {
+    std::cerr << command << ": --drag: "
+              << (error.empty() ? "give DX,DY with --object and --frames 2 or more" : error)
+              << "\n";
     return 2;
   }
   WalkthroughWindow walkthrough;
@@ -527,7 +558,8 @@ int View(const std::vector<std::string>& args)
   state.Record = record.is_open() ? &record : nullptr;
   vtkNew<vtkRenderWindowInteractor> interactor;
   interactor->SetRenderWindow(window);
-  vtkNew<vtkInteractorStyleTrackballCamera> style;
+  vtkNew<ObjectDragStyle> style; // left drag on the object moves it; elsewhere the camera
+  style->SetObject(object.Active ? static_cast<vtkActor*>(object.Actor) : nullptr);
   interactor->SetInteractorStyle(style);
   vtkNew<vtkCallbackCommand> keys;
   keys->SetCallback(OnChar);
@@ -551,6 +583,10 @@ int View(const std::vector<std::string>& args)
       if (!path.empty())
       {
         ApplyPlacement(object.Actor, path[static_cast<std::size_t>(f) % path.size()]);
+      }
+      if (f == 1 && !drag.empty())
+      {
+        DragObject(interactor, renderer, object.Actor, drag[0], drag[1]);
       }
       state.Render();
       total += state.LastFrameSeconds;
