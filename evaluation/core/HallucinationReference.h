@@ -33,8 +33,9 @@ struct HallucinationPhotoSettings
 {
   float ReliefDepthTexels = 8.0f; // world depth of depth 1, in texel widths
   float SkyRadiance = 1.0f;
-  int DiffuseSamples = 32; // per pixel
-  int FlashSamples = 8;    // per pixel
+  // Samples per pixel, the same jittered positions in every photograph (as a camera on a tripod
+  // integrates each pixel over the same area in both shots).
+  int Samples = 32;
   float FlashSizeTexels = 2.0f;
   std::uint64_t Seed = 1;
 };
