@@ -5,6 +5,7 @@
 #include "CommandTable.h"
 #include "ConeBenchmark.h"
 #include "GatherBenchmark.h"
+#include "HallucinateCommand.h"
 #include "ImageCommands.h"
 #include "LightFieldViewCommand.h"
 #include "LightSetBenchmark.h"
@@ -132,7 +133,13 @@ const std::vector<mesolight::Command>& Commands()
         { "object", "[FIELD] [options]",
           "a movable object in the walkthrough: frame time\nper stage, directions and subdivision",
           RunObjectBenchmark, {} },
+        { "hallucinate", "[options]",
+          "depth hallucination against path-traced\nphotographs of known height fields",
+          RunHallucinationBenchmark, {} },
       } },
+    { "hallucinate", "DIFFUSE FLASH --albedo A.exr --depth D.exr",
+      "depth hallucination: albedo and depth from a\ndiffuse and a flash photograph",
+      RunHallucinateCommand, {} },
     { "help", "[COMMAND]", "this text, or one command's options", RunHelp, {} },
   };
   return commands;
