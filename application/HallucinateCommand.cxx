@@ -331,6 +331,9 @@ int RunHallucinationBenchmark(const std::vector<std::string>& args)
       std::cerr << "mesolight bench hallucinate: " << label << ": " << result.Message << "\n";
       return 1;
     }
+    // The same photographs without the card: a uniform flash assumed.
+    const HallucinationResult uncalibrated =
+      HallucinateDepth(shots.Diffuse, shots.Flash, nullptr, settings);
     std::vector<float> truth(depth);
     for (float& d : truth)
     {
@@ -350,8 +353,8 @@ int RunHallucinationBenchmark(const std::vector<std::string>& args)
     {
       const char* Method;
       const std::vector<float>* Estimate;
-    } methods[] = { { "model", &result.Depth }, { "inverted-brightness", &brightness },
-      { "dark-is-deep-shading", &darkIsDeep } };
+    } methods[] = { { "model", &result.Depth }, { "model-without-card", &uncalibrated.Depth },
+      { "inverted-brightness", &brightness }, { "dark-is-deep-shading", &darkIsDeep } };
     for (const auto& method : methods)
     {
       const DepthAgreement a = CompareDepth(*method.Estimate, truth, w, h, 4);

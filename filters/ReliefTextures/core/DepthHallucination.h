@@ -18,7 +18,8 @@
  *  3. Depth from shading, scale by scale. Layers L_0 = S, L_k = Gaussian(S, sigma_k) with
  *     sigma_k = BaseSigma * 2^(k-1), k = 1..Layers. In layer k the ratio r = L_{k-1} / L_k
  *     compares a point with its surround at that scale:
- *       - r < 1 (darker than its surround): a valley. Under a uniform sky a point at the bottom
+ *       - r < 1 (darker than its surround): a valley ("dark is deep" under diffuse light:
+ *         Langer & Zucker, "Shape-from-shading on a cloudy day"). A point at the bottom
  *         of a pit whose opening subtends the half-angle a sees the sky fraction sin^2 a
  *         (the visible aperture), so a = asin(sqrt(r)) and a pit of radius sigma_k is
  *         sigma_k * cot(a) = sigma_k * sqrt((1 - r) / r) deep.
@@ -29,12 +30,16 @@
  *     the output is that depth stretched to [0, 1] (0 = highest point, 1 = deepest, the
  *     project's convention) and its range in texels (DepthRangeTexels).
  *
- * Where this simplifies the paper: the paper fitted its per-layer weights to a perceptual study
- * and splits layers with a bilateral filter; here the layers are Gaussian, every layer has weight
- * 1 (the sigma_k factor of each layer is what makes coarse layers count more) and the hill and
- * valley laws are the two closed forms above. It is an approximation by design: shading cannot
- * tell absolute depth nor very low frequencies, and where the flash pair is wrong (albedo not
- * removed) dark paint reads as deep. docs/hallucination.md measures how far it gets.
+ * Where this departs from the paper: it follows the paper's structure (albedo from the flash
+ * pair, shading, scale layers treated as hills or valleys, summed, a user depth scale), written
+ * from its description, not from its code; the paper's own layer weights and filters are not
+ * reproduced. Here the layers are Gaussian, every layer has weight 1 (the sigma_k factor is what
+ * makes coarse layers count more), and the hill and valley laws are the two closed forms above.
+ * The flash-pair albedo also carries what the flash measures besides albedo: the cosine of the
+ * surface to the flash and light bounced between walls (measured in docs/hallucination.md).
+ * It is an approximation by design: shading cannot tell absolute depth nor very low
+ * frequencies, the deepest useful layer must match the largest features (Layers), and where the
+ * albedo is not removed dark paint reads as deep. docs/hallucination.md measures how far it gets.
  */
 #ifndef mesolight_DepthHallucination_h
 #define mesolight_DepthHallucination_h
