@@ -217,29 +217,41 @@ HallucinationResult HallucinateDepth(const RgbImage& diffuse, const RgbImage& fl
   const int w = diffuse.Width, h = diffuse.Height;
   const std::size_t n = static_cast<std::size_t>(w) * static_cast<std::size_t>(h);
 
-  // The flash must add light: count the pixels where it takes light away, beyond noise.
-  double flashOnly = 0.0;
+  // The flash must add light: on average (else it did not fire, or the images are swapped), and
+  // nearly everywhere (pixels darker in the flash image beyond noise are counted).
+  double flashOnly = 0.0, diffuseMean = 0.0;
   for (std::size_t p = 0; p < n; ++p)
   {
     flashOnly += Luminance(&flash.Rgb[3 * p]) - Luminance(&diffuse.Rgb[3 * p]);
+    diffuseMean += Luminance(&diffuse.Rgb[3 * p]);
   }
   flashOnly /= static_cast<double>(n);
+  diffuseMean /= static_cast<double>(n);
+  if (flashOnly < 0.0)
+  {
+    return Failure(HallucinationStatus::FlashDarker,
+      "The flash image is darker than the diffuse one: were the two swapped?");
+  }
+  if (!(flashOnly > 1e-3 * diffuseMean))
+  {
+    return Failure(HallucinationStatus::FlashDarker,
+      "The flash image is not brighter than the diffuse one: did the flash fire?");
+  }
   std::size_t darker = 0;
   for (std::size_t p = 0; p < n; ++p)
   {
     const double difference = Luminance(&flash.Rgb[3 * p]) - Luminance(&diffuse.Rgb[3 * p]);
-    if (difference < -settings.DarkerTolerance * std::max(0.0, flashOnly) || difference <= 0.0)
+    if (difference < -settings.DarkerTolerance * flashOnly)
     {
       ++darker;
     }
   }
-  if (!(flashOnly > 0.0) ||
-    static_cast<double>(darker) > settings.MaximumDarkerFraction * static_cast<double>(n))
+  if (static_cast<double>(darker) > settings.MaximumDarkerFraction * static_cast<double>(n))
   {
     std::ostringstream message;
-    message << "The flash image is darker than (or as dark as) the diffuse one in "
+    message << "The flash image is darker than the diffuse one in "
             << static_cast<int>(std::lround(100.0 * static_cast<double>(darker) / n))
-            << "% of the pixels: were the two swapped, or did the flash not fire?";
+            << "% of the pixels: were the two swapped, or did the light change between them?";
     return Failure(HallucinationStatus::FlashDarker, message.str());
   }
 

@@ -8,6 +8,7 @@
 
 #include "MesolightTestUtilities.h"
 
+#include "vtkCommand.h"
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
@@ -213,6 +214,21 @@ TEST(DepthHallucination, BadInputIsReported)
   // A flash that did not fire.
   result = HallucinateDepth(pair.Diffuse, pair.Diffuse, nullptr);
   EXPECT_EQ(result.Status, HallucinationStatus::FlashDarker);
+  EXPECT_NE(result.Message.find("not brighter"), std::string::npos) << result.Message;
+  // The light changed between the shots: a fifth of the flash image darker than the diffuse one.
+  RgbImage changed = pair.Flash;
+  std::fill(changed.Rgb.begin(), changed.Rgb.begin() + changed.Rgb.size() / 5, 0.0f);
+  result = HallucinateDepth(pair.Diffuse, changed, nullptr);
+  EXPECT_EQ(result.Status, HallucinationStatus::FlashDarker);
+  EXPECT_NE(result.Message.find("darker than the diffuse one in 20%"), std::string::npos)
+    << result.Message;
+  // Noise: a few pixels slightly darker are accepted.
+  RgbImage noisy = pair.Flash;
+  for (std::size_t k = 0; k < noisy.Rgb.size(); k += 3 * 50)
+  {
+    std::fill(noisy.Rgb.begin() + k, noisy.Rgb.begin() + k + 3, pair.Diffuse.Rgb[k] * 0.99f);
+  }
+  EXPECT_TRUE(HallucinateDepth(pair.Diffuse, noisy, nullptr).Ok());
   RgbImage broken = pair.Flash;
   broken.Pixel(3, 4)[1] = std::numeric_limits<float>::quiet_NaN();
   result = HallucinateDepth(pair.Diffuse, broken, nullptr);
@@ -268,6 +284,28 @@ TEST(DepthHallucinationFilter, OutputsAndErrors)
   grey->Update();
   ASSERT_EQ(grey->GetAlbedoOutput()->GetNumberOfPoints(), N * N);
   EXPECT_NEAR(grey->GetAlbedoOutput()->GetPointData()->GetScalars()->GetComponent(7, 2), 0.4, 1e-6);
+
+  // Abort from a progress observer: empty outputs, no error.
+  {
+    vtkNew<vtkDepthHallucinationFilter> aborted;
+    vtkNew<MessageCapture> messages;
+    messages->Watch(aborted);
+    aborted->SetInputData(0, ToImage(pair.Diffuse));
+    aborted->SetInputData(1, ToImage(pair.Flash));
+    struct AbortAtFirstProgress : public vtkCommand
+    {
+      static AbortAtFirstProgress* New() { return new AbortAtFirstProgress; }
+      void Execute(vtkObject* caller, unsigned long, void*) override
+      {
+        static_cast<vtkAlgorithm*>(caller)->SetAbortExecute(1);
+      }
+    };
+    vtkNew<AbortAtFirstProgress> abort;
+    aborted->AddObserver(vtkCommand::ProgressEvent, abort);
+    aborted->Update();
+    EXPECT_EQ(aborted->GetDepthOutput()->GetNumberOfPoints(), 0);
+    EXPECT_TRUE(messages->Errors.empty()) << messages->AllErrors();
+  }
 
   // Errors: sizes, a flash darker than the diffuse photograph, NaN, empty.
   const auto expectError = [](vtkImageData* diffuse, vtkImageData* flash, const char* needle)
