@@ -57,7 +57,7 @@ else:
     difference = np.abs(depth - cli).max()
     albedo_difference = np.abs(albedo - values(read(cli_albedo))).max()
     correlation = np.corrcoef(depth, truth.reshape(-1))[0, 1]
-    scale = hallucination.GetClientSideObject().GetDepthOutput().GetFieldData().GetArray(
+    scale = hallucination.GetClientSideObject().GetOutputDataObject(1).GetFieldData().GetArray(
         "MesolightDepthScale")
     print("depth vs mesolight hallucinate: max difference %.3g; albedo %.3g; correlation with "
           "the true depth %.3f; MesolightDepthScale %s" % (difference, albedo_difference,
