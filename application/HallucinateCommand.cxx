@@ -343,9 +343,9 @@ int RunHallucinationBenchmark(const std::vector<std::string>& args)
     std::vector<float> brightness(depth.size()), darkIsDeep(depth.size());
     for (std::size_t p = 0; p < depth.size(); ++p)
     {
-      const float t = Luminance(&shots.TrueAlbedo.Rgb[3 * p]);
-      albedoError += std::abs(Luminance(&result.Albedo.Rgb[3 * p]) - t) / t;
-      brightness[p] = -Luminance(&shots.Diffuse.Rgb[3 * p]);
+      const float t = RgbLuminance(&shots.TrueAlbedo.Rgb[3 * p]);
+      albedoError += std::abs(RgbLuminance(&result.Albedo.Rgb[3 * p]) - t) / t;
+      brightness[p] = -RgbLuminance(&shots.Diffuse.Rgb[3 * p]);
       darkIsDeep[p] = -result.Shading[p];
     }
     albedoError /= static_cast<double>(depth.size());

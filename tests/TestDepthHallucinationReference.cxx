@@ -132,7 +132,7 @@ std::vector<float> InvertedBrightness(const RgbImage& image)
   std::vector<float> d(static_cast<std::size_t>(image.Width) * image.Height);
   for (std::size_t p = 0; p < d.size(); ++p)
   {
-    d[p] = -Luminance(&image.Rgb[3 * p]);
+    d[p] = -RgbLuminance(&image.Rgb[3 * p]);
   }
   return d;
 }
@@ -243,13 +243,13 @@ TEST_P(HallucinationReference, AlbedoAgainstTruth)
     const std::size_t n = c.TrueDepth.size();
     for (std::size_t p = 0; p < n; ++p)
     {
-      const float truth = Luminance(&c.Photos.TrueAlbedo.Rgb[3 * p]);
+      const float truth = RgbLuminance(&c.Photos.TrueAlbedo.Rgb[3 * p]);
       relative += std::abs(estimate(p) - truth) / truth;
     }
     return relative / static_cast<double>(n);
   };
   const double flashPair =
-    error([&](std::size_t p) { return Luminance(&c.Result.Albedo.Rgb[3 * p]); });
+    error([&](std::size_t p) { return RgbLuminance(&c.Result.Albedo.Rgb[3 * p]); });
   std::cout << "hallucination " << expected.Map << " albedo mean relative error " << flashPair
             << "\n";
   // Measured: Bricks 0.167 (deep mortar joints), Stone 0.047, HemisphereTorus 0.028, terrain
@@ -258,8 +258,10 @@ TEST_P(HallucinationReference, AlbedoAgainstTruth)
   EXPECT_LE(flashPair, threshold);
   // Negative: the flash photograph over the card without removing the overcast light in it.
   const double flashOnly = error(
-    [&](std::size_t p) {
-      return Luminance(&c.Photos.Flash.Rgb[3 * p]) / Luminance(&c.Photos.Calibration.Rgb[3 * p]);
+    [&](std::size_t p)
+    {
+      return RgbLuminance(&c.Photos.Flash.Rgb[3 * p]) /
+        RgbLuminance(&c.Photos.Calibration.Rgb[3 * p]);
     });
   std::cout << "hallucination " << expected.Map << " albedo without subtracting I_d " << flashOnly
             << "\n";

@@ -156,18 +156,18 @@ HallucinationPhotographs RenderHallucinationPhotographs(const std::vector<float>
   HallucinationPhotographs photos;
   const TriangleScene surface = HeightFieldScene(depth, w, h, albedo, settings.ReliefDepthTexels);
   const EnvironmentLight sky = OvercastSky(settings.SkyRadiance);
-  photos.Diffuse = Render(
-    surface, &sky, w, h, settings.Samples, settings.Seed, SubProgress(progress, 0, 0.6));
+  photos.Diffuse =
+    Render(surface, &sky, w, h, settings.Samples, settings.Seed, SubProgress(progress, 0, 0.6));
   TriangleScene flashScene = surface;
   AddFlash(flashScene, w, h, settings);
-  const RgbImage flashOnly = Render(flashScene, nullptr, w, h, settings.Samples,
-    settings.Seed, SubProgress(progress, 0.6, 0.9));
+  const RgbImage flashOnly = Render(
+    flashScene, nullptr, w, h, settings.Samples, settings.Seed, SubProgress(progress, 0.6, 0.9));
   // The white card: the flat map (depth 0), albedo 1.
   TriangleScene card = HeightFieldScene(std::vector<float>(static_cast<std::size_t>(w) * h, 0.0f),
     w, h, std::vector<glm::vec3>(static_cast<std::size_t>(w) * h, glm::vec3(1.0f)), 0.0f);
   AddFlash(card, w, h, settings);
-  photos.Calibration = Render(
-    card, nullptr, w, h, settings.Samples, settings.Seed, SubProgress(progress, 0.9, 1.0));
+  photos.Calibration =
+    Render(card, nullptr, w, h, settings.Samples, settings.Seed, SubProgress(progress, 0.9, 1.0));
   if (photos.Diffuse.Width == 0 || flashOnly.Width == 0 || photos.Calibration.Width == 0)
   {
     return {};

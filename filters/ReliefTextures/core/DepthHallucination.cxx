@@ -49,7 +49,7 @@ float Percentile(std::vector<float> values, double q)
 } // namespace
 
 //------------------------------------------------------------------------------
-std::vector<float> GaussianBlur(
+std::vector<float> GaussianBlurClamped(
   const std::vector<float>& image, int w, int h, float sigma, int threads)
 {
   if (!(sigma > 0.0f) || w <= 0 || h <= 0)
@@ -139,7 +139,7 @@ std::vector<float> DepthFromShading(const std::vector<float>& shading, int w, in
     }
     const float sigma = settings.BaseSigma * std::ldexp(1.0f, k - 1);
     // Each layer blurs the shading itself (not the previous layer), so sigma_k is exact.
-    std::vector<float> layer = GaussianBlur(floored, w, h, sigma, settings.Threads);
+    std::vector<float> layer = GaussianBlurClamped(floored, w, h, sigma, settings.Threads);
     ParallelFor(
       0, n, 4096,
       [&](std::size_t begin, std::size_t end)
@@ -222,8 +222,8 @@ HallucinationResult HallucinateDepth(const RgbImage& diffuse, const RgbImage& fl
   double flashOnly = 0.0, diffuseMean = 0.0;
   for (std::size_t p = 0; p < n; ++p)
   {
-    flashOnly += Luminance(&flash.Rgb[3 * p]) - Luminance(&diffuse.Rgb[3 * p]);
-    diffuseMean += Luminance(&diffuse.Rgb[3 * p]);
+    flashOnly += RgbLuminance(&flash.Rgb[3 * p]) - RgbLuminance(&diffuse.Rgb[3 * p]);
+    diffuseMean += RgbLuminance(&diffuse.Rgb[3 * p]);
   }
   flashOnly /= static_cast<double>(n);
   diffuseMean /= static_cast<double>(n);
@@ -240,7 +240,7 @@ HallucinationResult HallucinateDepth(const RgbImage& diffuse, const RgbImage& fl
   std::size_t darker = 0;
   for (std::size_t p = 0; p < n; ++p)
   {
-    const double difference = Luminance(&flash.Rgb[3 * p]) - Luminance(&diffuse.Rgb[3 * p]);
+    const double difference = RgbLuminance(&flash.Rgb[3 * p]) - RgbLuminance(&diffuse.Rgb[3 * p]);
     if (difference < -settings.DarkerTolerance * flashOnly)
     {
       ++darker;
@@ -284,7 +284,7 @@ HallucinationResult HallucinateDepth(const RgbImage& diffuse, const RgbImage& fl
   std::vector<float> albedoLuminance(n);
   for (std::size_t p = 0; p < n; ++p)
   {
-    albedoLuminance[p] = Luminance(&result.Albedo.Rgb[3 * p]);
+    albedoLuminance[p] = RgbLuminance(&result.Albedo.Rgb[3 * p]);
   }
   const float albedoFloor = 1e-3f * Percentile(albedoLuminance, 0.995);
   result.Shading.assign(n, -1.0f);
@@ -294,7 +294,7 @@ HallucinationResult HallucinateDepth(const RgbImage& diffuse, const RgbImage& fl
   {
     if (albedoLuminance[p] > albedoFloor)
     {
-      result.Shading[p] = std::max(0.0f, Luminance(&diffuse.Rgb[3 * p])) / albedoLuminance[p];
+      result.Shading[p] = std::max(0.0f, RgbLuminance(&diffuse.Rgb[3 * p])) / albedoLuminance[p];
       valid.push_back(result.Shading[p]);
     }
   }

@@ -93,7 +93,7 @@ struct HallucinationResult
 };
 
 /// Rec. 709 luminance of a linear RGB pixel.
-inline float Luminance(const float* rgb)
+inline float RgbLuminance(const float* rgb)
 {
   return 0.2126f * rgb[0] + 0.7152f * rgb[1] + 0.0722f * rgb[2];
 }
@@ -117,7 +117,7 @@ MESOLIGHTRELIEFTEXTURES_EXPORT std::vector<float> DepthFromShading(
   const ProgressCallback& progress = {});
 
 /// Gaussian blur (separable, clamped border) of a w x h image; sigma <= 0 copies.
-MESOLIGHTRELIEFTEXTURES_EXPORT std::vector<float> GaussianBlur(
+MESOLIGHTRELIEFTEXTURES_EXPORT std::vector<float> GaussianBlurClamped(
   const std::vector<float>& image, int w, int h, float sigma, int threads = 0);
 
 } // namespace mesolight
