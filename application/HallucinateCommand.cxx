@@ -334,6 +334,15 @@ int RunHallucinationBenchmark(const std::vector<std::string>& args)
     // The same photographs without the card: a uniform flash assumed.
     const HallucinationResult uncalibrated =
       HallucinateDepth(shots.Diffuse, shots.Flash, nullptr, settings);
+    // An ideal flash that measures the albedo alone (no cosine to the flash, no interreflection):
+    // what the model makes of the true shading.
+    RgbImage idealFlash = shots.Diffuse;
+    for (std::size_t k = 0; k < idealFlash.Rgb.size(); ++k)
+    {
+      idealFlash.Rgb[k] += shots.TrueAlbedo.Rgb[k];
+    }
+    const HallucinationResult ideal =
+      HallucinateDepth(shots.Diffuse, idealFlash, nullptr, settings);
     std::vector<float> truth(depth);
     for (float& d : truth)
     {
@@ -354,7 +363,8 @@ int RunHallucinationBenchmark(const std::vector<std::string>& args)
       const char* Method;
       const std::vector<float>* Estimate;
     } methods[] = { { "model", &result.Depth }, { "model-without-card", &uncalibrated.Depth },
-      { "inverted-brightness", &brightness }, { "dark-is-deep-shading", &darkIsDeep } };
+      { "model-true-albedo", &ideal.Depth }, { "inverted-brightness", &brightness },
+      { "dark-is-deep-shading", &darkIsDeep } };
     for (const auto& method : methods)
     {
       const DepthAgreement a = CompareDepth(*method.Estimate, truth, w, h, 4);

@@ -36,7 +36,8 @@
  * reproduced. Here the layers are Gaussian, every layer has weight 1 (the sigma_k factor is what
  * makes coarse layers count more), and the hill and valley laws are the two closed forms above.
  * The flash-pair albedo also carries what the flash measures besides albedo: the cosine of the
- * surface to the flash and light bounced between walls (measured in docs/hallucination.md).
+ * surface to the flash and light bounced between walls; dividing by it brightens slopes, which
+ * the hill law reads (with the true albedo instead the model does worse: docs/hallucination.md).
  * It is an approximation by design: shading cannot tell absolute depth nor very low
  * frequencies, the deepest useful layer must match the largest features (Layers), and where the
  * albedo is not removed dark paint reads as deep. docs/hallucination.md measures how far it gets.
