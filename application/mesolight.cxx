@@ -6,6 +6,7 @@
 #include "ConeBenchmark.h"
 #include "GatherBenchmark.h"
 #include "GeometryImageBenchmark.h"
+#include "HallucinateCommand.h"
 #include "ImageCommands.h"
 #include "LightFieldViewCommand.h"
 #include "LightSetBenchmark.h"
@@ -136,7 +137,13 @@ const std::vector<mesolight::Command>& Commands()
         { "geometry-image", "[options]",
           "geometry images: triangles vs Hausdorff distance\nand image error, stride vs adaptive",
           RunGeometryImageBenchmark, {} },
+        { "hallucinate", "[options]",
+          "depth hallucination against path-traced\nphotographs of known height fields",
+          RunHallucinationBenchmark, {} },
       } },
+    { "hallucinate", "DIFFUSE FLASH --albedo A.exr --depth D.exr",
+      "depth hallucination: albedo and depth from a\ndiffuse and a flash photograph",
+      RunHallucinateCommand, {} },
     { "help", "[COMMAND]", "this text, or one command's options", RunHelp, {} },
   };
   return commands;

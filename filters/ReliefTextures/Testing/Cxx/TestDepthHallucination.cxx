@@ -1,0 +1,328 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Depth hallucination (core DepthHallucination and vtkDepthHallucinationFilter) on synthetic
+// photographs: the albedo is exactly (I_f - I_d) / I_c, a bump comes out as a hill and a pit as
+// a valley, and bad input gives one clear error. The path-traced reference is
+// tests/TestDepthHallucinationReference.cxx.
+#include "DepthHallucination.h"
+#include "vtkDepthHallucinationFilter.h"
+
+#include "MesolightTestUtilities.h"
+
+#include "vtkCommand.h"
+#include "vtkDataArray.h"
+#include "vtkFieldData.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkSmartPointer.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <vector>
+
+using mesolight_test::MessageCapture;
+
+namespace
+{
+using namespace mesolight;
+constexpr int N = 64;
+
+RgbImage Fill(int w, int h, const std::function<void(int, int, float*)>& pixel)
+{
+  RgbImage image(w, h);
+  for (int j = 0; j < h; ++j)
+  {
+    for (int i = 0; i < w; ++i)
+    {
+      pixel(i, j, image.Pixel(i, j));
+    }
+  }
+  return image;
+}
+
+// A surface of albedo `albedo(i, j)` and overcast shading `shading(i, j)`, photographed with a
+// uniform flash of strength 1 (I_f = I_d + albedo).
+struct Pair
+{
+  RgbImage Diffuse, Flash;
+};
+Pair Photograph(
+  const std::function<float(int, int)>& shading,
+  const std::function<float(int, int, int)>& albedo = [](int, int, int) { return 0.5f; })
+{
+  Pair pair;
+  pair.Diffuse = Fill(N, N,
+    [&](int i, int j, float* rgb)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        rgb[c] = albedo(i, j, c) * shading(i, j);
+      }
+    });
+  pair.Flash = Fill(N, N,
+    [&](int i, int j, float* rgb)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        rgb[c] = albedo(i, j, c) * (shading(i, j) + 1.0f);
+      }
+    });
+  return pair;
+}
+
+float Radius(int i, int j)
+{
+  return std::hypot(i + 0.5f - 0.5f * N, j + 0.5f - 0.5f * N);
+}
+
+float DepthAt(const HallucinationResult& result, int i, int j)
+{
+  return result.Depth[static_cast<std::size_t>(j) * N + i];
+}
+
+vtkSmartPointer<vtkImageData> ToImage(const RgbImage& rgb)
+{
+  vtkNew<vtkFloatArray> values;
+  values->SetNumberOfComponents(3);
+  values->SetNumberOfTuples(static_cast<vtkIdType>(rgb.Width) * rgb.Height);
+  std::copy(rgb.Rgb.begin(), rgb.Rgb.end(), values->GetPointer(0));
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(rgb.Width, rgb.Height, 1);
+  image->GetPointData()->SetScalars(values);
+  return image;
+}
+} // namespace
+
+TEST(DepthHallucination, AlbedoIsFlashOnlyOverCalibration)
+{
+  // A flash that falls off toward the corners, a coloured albedo, any shading.
+  const auto falloff = [](int i, int j)
+  { return 2.0f / (1.0f + 1e-3f * Radius(i, j) * Radius(i, j)); };
+  const auto albedo = [](int i, int j, int c)
+  { return 0.1f + 0.8f * ((i * 7 + j * 3 + c) % 10) / 10.0f; };
+  const auto shading = [](int i, int) { return 0.3f + 0.7f * i / N; };
+  const RgbImage diffuse = Fill(N, N,
+    [&](int i, int j, float* rgb)
+    {
+      for (int c = 0; c < 3; ++c)
+        rgb[c] = albedo(i, j, c) * shading(i, j);
+    });
+  const RgbImage flash = Fill(N, N,
+    [&](int i, int j, float* rgb)
+    {
+      for (int c = 0; c < 3; ++c)
+        rgb[c] = diffuse.Pixel(i, j)[c] + albedo(i, j, c) * falloff(i, j);
+    });
+  const RgbImage card = Fill(N, N,
+    [&](int i, int j, float* rgb)
+    {
+      for (int c = 0; c < 3; ++c)
+        rgb[c] = falloff(i, j);
+    });
+  const HallucinationResult result = HallucinateDepth(diffuse, flash, &card);
+  ASSERT_TRUE(result.Ok()) << result.Message;
+  const HallucinationResult uncalibrated = HallucinateDepth(diffuse, flash, nullptr);
+  ASSERT_TRUE(uncalibrated.Ok()) << uncalibrated.Message;
+  double worst = 0.0, worstUncalibrated = 0.0;
+  for (int j = 0; j < N; ++j)
+  {
+    for (int i = 0; i < N; ++i)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        worst = std::max(
+          worst, static_cast<double>(std::abs(result.Albedo.Pixel(i, j)[c] - albedo(i, j, c))));
+        // Without the card the flash is taken as uniform: the albedo keeps the fall-off.
+        worstUncalibrated = std::max(worstUncalibrated,
+          static_cast<double>(std::abs(
+            uncalibrated.Albedo.Pixel(i, j)[c] - (flash.Pixel(i, j)[c] - diffuse.Pixel(i, j)[c]))));
+      }
+    }
+  }
+  EXPECT_LT(worst, 1e-5);
+  EXPECT_LT(worstUncalibrated, 1e-6);
+  // The shading is the albedo-free diffuse light, 1 at its most open point.
+  EXPECT_NEAR(result.Shading[N - 1], 1.0f, 0.02f);
+  EXPECT_NEAR(result.Shading[0] / result.Shading[N - 1], 0.3f + 0.7f * 0.0f, 0.05f);
+}
+
+TEST(DepthHallucination, PitComesOutAsValley)
+{
+  // A pit: its floor sees a narrower aperture of sky, so it is darker; the albedo is a stripe
+  // pattern that the flash pair must remove.
+  const Pair pair = Photograph([](int i, int j)
+    { return 1.0f - 0.6f * std::exp(-0.5f * std::pow(Radius(i, j) / 4.0f, 2.0f)); },
+    [](int i, int, int) { return (i / 4) % 2 ? 0.8f : 0.2f; });
+  const HallucinationResult result = HallucinateDepth(pair.Diffuse, pair.Flash, nullptr);
+  ASSERT_TRUE(result.Ok()) << result.Message;
+  EXPECT_GT(DepthAt(result, N / 2, N / 2), 0.9f); // the deepest point
+  EXPECT_LT(DepthAt(result, 4, N / 2), DepthAt(result, N / 2, N / 2) - 0.5f);
+  EXPECT_GT(result.DepthRangeTexels, 1.0f);
+}
+
+TEST(DepthHallucination, BumpComesOutAsHill)
+{
+  // A Gaussian bump (sigma 6 texels, 8 high) under the overcast sky, unoccluded: a plane tilted
+  // by t sees (1 + cos t) / 2 of the sky. The flash at the camera lights it by cos t, so the
+  // flash-only image is albedo * cos t (what a real flash pair gives).
+  const auto cosine = [](int i, int j)
+  {
+    const float r = Radius(i, j), s = 6.0f, height = 8.0f;
+    const float slope = height * r / (s * s) * std::exp(-0.5f * r * r / (s * s));
+    return 1.0f / std::sqrt(1.0f + slope * slope);
+  };
+  constexpr float Albedo = 0.5f;
+  const RgbImage diffuse = Fill(N, N,
+    [&](int i, int j, float* rgb)
+    { std::fill(rgb, rgb + 3, Albedo * 0.5f * (1.0f + cosine(i, j))); });
+  const RgbImage flash = Fill(N, N,
+    [&](int i, int j, float* rgb)
+    { std::fill(rgb, rgb + 3, diffuse.Pixel(i, j)[0] + Albedo * cosine(i, j)); });
+  const HallucinationResult result = HallucinateDepth(diffuse, flash, nullptr);
+  ASSERT_TRUE(result.Ok()) << result.Message;
+  const float top = DepthAt(result, N / 2, N / 2), far = DepthAt(result, 2, 2);
+  EXPECT_LT(top, far - 0.5f) << "the top of the bump must be higher than the plane";
+  // The highest point is on the bump (within two sigma of its centre).
+  const auto highest = std::min_element(result.Depth.begin(), result.Depth.end());
+  const int p = static_cast<int>(highest - result.Depth.begin());
+  EXPECT_LT(Radius(p % N, p / N), 12.0f);
+  // Negative: without the hill law (valleys by aperture only) the bump reads as a depression.
+  HallucinationSettings valleysOnly;
+  valleysOnly.HillWeight = 0.0f;
+  const HallucinationResult noHills = HallucinateDepth(diffuse, flash, nullptr, valleysOnly);
+  ASSERT_TRUE(noHills.Ok()) << noHills.Message;
+  EXPECT_GT(DepthAt(noHills, N / 2, N / 2), DepthAt(noHills, 2, 2));
+}
+
+TEST(DepthHallucination, BadInputIsReported)
+{
+  const Pair pair = Photograph([](int, int) { return 0.5f; });
+  const RgbImage small(N / 2, N);
+  HallucinationResult result = HallucinateDepth(pair.Diffuse, small, nullptr);
+  EXPECT_EQ(result.Status, HallucinationStatus::SizeMismatch);
+  EXPECT_NE(result.Message.find("differ in size"), std::string::npos) << result.Message;
+  // Swapped photographs: the "flash" image is the darker one.
+  result = HallucinateDepth(pair.Flash, pair.Diffuse, nullptr);
+  EXPECT_EQ(result.Status, HallucinationStatus::FlashDarker);
+  EXPECT_NE(result.Message.find("darker"), std::string::npos) << result.Message;
+  // A flash that did not fire.
+  result = HallucinateDepth(pair.Diffuse, pair.Diffuse, nullptr);
+  EXPECT_EQ(result.Status, HallucinationStatus::FlashDarker);
+  EXPECT_NE(result.Message.find("not brighter"), std::string::npos) << result.Message;
+  // The light changed between the shots: a fifth of the flash image darker than the diffuse one.
+  RgbImage changed = pair.Flash;
+  std::fill(changed.Rgb.begin(), changed.Rgb.begin() + changed.Rgb.size() / 5, 0.0f);
+  result = HallucinateDepth(pair.Diffuse, changed, nullptr);
+  EXPECT_EQ(result.Status, HallucinationStatus::FlashDarker);
+  EXPECT_NE(result.Message.find("darker than the diffuse one in 20%"), std::string::npos)
+    << result.Message;
+  // Noise: a few pixels slightly darker are accepted.
+  RgbImage noisy = pair.Flash;
+  for (std::size_t k = 0; k < noisy.Rgb.size(); k += 3 * 50)
+  {
+    std::fill(noisy.Rgb.begin() + k, noisy.Rgb.begin() + k + 3, pair.Diffuse.Rgb[k] * 0.99f);
+  }
+  EXPECT_TRUE(HallucinateDepth(pair.Diffuse, noisy, nullptr).Ok());
+  RgbImage broken = pair.Flash;
+  broken.Pixel(3, 4)[1] = std::numeric_limits<float>::quiet_NaN();
+  result = HallucinateDepth(pair.Diffuse, broken, nullptr);
+  EXPECT_EQ(result.Status, HallucinationStatus::NonFinite);
+  EXPECT_NE(result.Message.find("NaN"), std::string::npos) << result.Message;
+  result = HallucinateDepth(RgbImage(), pair.Flash, nullptr);
+  EXPECT_EQ(result.Status, HallucinationStatus::EmptyImage);
+  const RgbImage card(N, N + 1);
+  result = HallucinateDepth(pair.Diffuse, pair.Flash, &card);
+  EXPECT_EQ(result.Status, HallucinationStatus::SizeMismatch);
+  EXPECT_NE(result.Message.find("calibration"), std::string::npos) << result.Message;
+  // Progress that stops the work.
+  result = HallucinateDepth(pair.Diffuse, pair.Flash, nullptr, {}, [](double) { return false; });
+  EXPECT_EQ(result.Status, HallucinationStatus::Aborted);
+}
+
+TEST(DepthHallucinationFilter, OutputsAndErrors)
+{
+  const Pair pair = Photograph([](int i, int j)
+    { return 1.0f - 0.6f * std::exp(-0.5f * std::pow(Radius(i, j) / 4.0f, 2.0f)); });
+  vtkNew<vtkDepthHallucinationFilter> filter;
+  filter->SetInputData(0, ToImage(pair.Diffuse));
+  filter->SetInputData(1, ToImage(pair.Flash));
+  filter->Update();
+  vtkImageData* albedo = filter->GetAlbedoOutput();
+  vtkImageData* depth = filter->GetDepthOutput();
+  ASSERT_EQ(albedo->GetNumberOfPoints(), N * N);
+  ASSERT_EQ(depth->GetNumberOfPoints(), N * N);
+  EXPECT_EQ(albedo->GetPointData()->GetScalars()->GetNumberOfComponents(), 3);
+  EXPECT_EQ(depth->GetPointData()->GetScalars()->GetDataType(), VTK_FLOAT);
+  EXPECT_NEAR(albedo->GetPointData()->GetScalars()->GetComponent(0, 1), 0.5, 1e-6);
+  const double centre = depth->GetPointData()->GetScalars()->GetComponent(N / 2 * N + N / 2, 0);
+  EXPECT_GT(centre, 0.9);
+  ASSERT_NE(depth->GetFieldData()->GetArray("MesolightDepthScale"), nullptr);
+  EXPECT_NEAR(depth->GetFieldData()->GetArray("MesolightDepthScale")->GetTuple1(0),
+    filter->GetDepthRangeTexels() / N, 1e-9);
+
+  // 8-bit input scales to [0, 1].
+  const auto bytes = [](unsigned char value)
+  {
+    vtkNew<vtkUnsignedCharArray> values;
+    values->SetNumberOfComponents(1);
+    values->SetNumberOfTuples(N * N);
+    values->FillValue(value);
+    auto image = vtkSmartPointer<vtkImageData>::New();
+    image->SetDimensions(N, N, 1);
+    image->GetPointData()->SetScalars(values);
+    return image;
+  };
+  vtkNew<vtkDepthHallucinationFilter> grey;
+  grey->SetInputData(0, bytes(50));
+  grey->SetInputData(1, bytes(152));
+  grey->Update();
+  ASSERT_EQ(grey->GetAlbedoOutput()->GetNumberOfPoints(), N * N);
+  EXPECT_NEAR(grey->GetAlbedoOutput()->GetPointData()->GetScalars()->GetComponent(7, 2), 0.4, 1e-6);
+
+  // Abort from a progress observer: empty outputs, no error.
+  {
+    vtkNew<vtkDepthHallucinationFilter> aborted;
+    vtkNew<MessageCapture> messages;
+    messages->Watch(aborted);
+    aborted->SetInputData(0, ToImage(pair.Diffuse));
+    aborted->SetInputData(1, ToImage(pair.Flash));
+    struct AbortAtFirstProgress : public vtkCommand
+    {
+      static AbortAtFirstProgress* New() { return new AbortAtFirstProgress; }
+      void Execute(vtkObject* caller, unsigned long, void*) override
+      {
+        static_cast<vtkAlgorithm*>(caller)->SetAbortExecute(1);
+      }
+    };
+    vtkNew<AbortAtFirstProgress> abort;
+    aborted->AddObserver(vtkCommand::ProgressEvent, abort);
+    aborted->Update();
+    EXPECT_EQ(aborted->GetDepthOutput()->GetNumberOfPoints(), 0);
+    EXPECT_TRUE(messages->Errors.empty()) << messages->AllErrors();
+  }
+
+  // Errors: sizes, a flash darker than the diffuse photograph, NaN, empty.
+  const auto expectError = [](vtkImageData* diffuse, vtkImageData* flash, const char* needle)
+  {
+    vtkNew<vtkDepthHallucinationFilter> bad;
+    vtkNew<MessageCapture> messages;
+    messages->Watch(bad);
+    bad->SetInputData(0, diffuse);
+    bad->SetInputData(1, flash);
+    bad->Update();
+    EXPECT_TRUE(messages->HasError(needle)) << messages->AllErrors();
+    EXPECT_EQ(bad->GetDepthOutput()->GetNumberOfPoints(), 0);
+  };
+  expectError(ToImage(pair.Diffuse), ToImage(RgbImage(N, N / 2)), "differ in size");
+  expectError(ToImage(pair.Flash), ToImage(pair.Diffuse), "darker");
+  RgbImage broken = pair.Diffuse;
+  broken.Pixel(0, 0)[0] = std::numeric_limits<float>::infinity();
+  expectError(ToImage(broken), ToImage(pair.Flash), "NaN or infinite");
+  expectError(vtkNew<vtkImageData>(), ToImage(pair.Flash), "empty");
+}

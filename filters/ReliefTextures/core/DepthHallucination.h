@@ -1,0 +1,126 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @file DepthHallucination.h
+ * @brief Depth hallucination (plain C++17, no VTK types): a diffuse-lit and a flash-lit
+ *        photograph of a surface -> albedo and a plausible depth map.
+ *
+ * After Glencross, Ward, Melendez, Jay, Liu, Hubbard, "A perceptually validated model for
+ * surface depth hallucination" (SIGGRAPH 2008), used as the depth source of Méndez Fernández's
+ * thesis (ch. 3). What is implemented, step by step:
+ *
+ *  1. Albedo. The flash photograph is taken under the same overcast light plus a flash at the
+ *     camera, so I_f - I_d is the flash alone; a flash at the camera sees no shadows and lights
+ *     every point about equally, so it is albedo times the flash's fall-off, which a photograph
+ *     of a white card under the flash (I_c) measures: albedo = (I_f - I_d) / I_c, per channel.
+ *     Without a card I_c = 1 (a uniform flash; the albedo is then known up to a scale).
+ *  2. Shading. S = lum(I_d) / lum(albedo): the overcast irradiance, normalised so that its
+ *     99.5th percentile (the most open, upward-facing points) is 1.
+ *  3. Depth from shading, scale by scale. Layers L_0 = S, L_k = Gaussian(S, sigma_k) with
+ *     sigma_k = BaseSigma * 2^(k-1), k = 1..Layers. In layer k the ratio r = L_{k-1} / L_k
+ *     compares a point with its surround at that scale:
+ *       - r < 1 (darker than its surround): a valley ("dark is deep" under diffuse light:
+ *         Langer & Zucker, "Shape-from-shading on a cloudy day"). A point at the bottom
+ *         of a pit whose opening subtends the half-angle a sees the sky fraction sin^2 a
+ *         (the visible aperture), so a = asin(sqrt(r)) and a pit of radius sigma_k is
+ *         sigma_k * cot(a) = sigma_k * sqrt((1 - r) / r) deep.
+ *       - r > 1 (brighter than its surround): a hill. Its surround is darker because it faces
+ *         away from the zenith: a plane tilted by t sees (1 + cos t) / 2 of the sky, so
+ *         cos t = 2 / r - 1 and the hill rises sigma_k * tan(t) over the distance sigma_k.
+ *     depth = DepthScale * sum_k (ValleyWeight * valley_k - HillWeight * hill_k), in texels;
+ *     the output is that depth stretched to [0, 1] (0 = highest point, 1 = deepest, the
+ *     project's convention) and its range in texels (DepthRangeTexels).
+ *
+ * Where this departs from the paper: it follows the paper's structure (albedo from the flash
+ * pair, shading, scale layers treated as hills or valleys, summed, a user depth scale), written
+ * from its description, not from its code; the paper's own layer weights and filters are not
+ * reproduced. Here the layers are Gaussian, every layer has weight 1 (the sigma_k factor is what
+ * makes coarse layers count more), and the hill and valley laws are the two closed forms above.
+ * The flash-pair albedo also carries what the flash measures besides albedo: the cosine of the
+ * surface to the flash and light bounced between walls; dividing by it brightens slopes, which
+ * the hill law reads (with the true albedo instead the model does worse: docs/hallucination.md).
+ * It is an approximation by design: shading cannot tell absolute depth nor very low
+ * frequencies, the deepest useful layer must match the largest features (Layers), and where the
+ * albedo is not removed dark paint reads as deep. docs/hallucination.md measures how far it gets.
+ */
+#ifndef mesolight_DepthHallucination_h
+#define mesolight_DepthHallucination_h
+
+#include "MesolightReliefTexturesModule.h" // for the export macro only
+
+#include "Progress.h"
+#include "RgbImage.h"
+
+#include <string>
+#include <vector>
+
+namespace mesolight
+{
+
+struct HallucinationSettings
+{
+  int Layers = 5;            ///< scale layers (1..12); sigma up to 16 texels
+  float BaseSigma = 1.0f;    ///< sigma of the first layer, texels; doubles per layer
+  float DepthScale = 1.0f;   ///< the user's depth scale: multiplies the model's depth
+  float ValleyWeight = 1.0f; ///< weight of the aperture (valley) law
+  float HillWeight = 1.0f;   ///< weight of the orientation (hill) law
+  /// A pixel whose flash luminance is below its diffuse luminance by more than this fraction
+  /// of the mean flash-only luminance counts as "flash darker" (photographs are noisy).
+  float DarkerTolerance = 0.05f;
+  /// More than this fraction of "flash darker" pixels is an error (images swapped, flash off).
+  float MaximumDarkerFraction = 0.1f;
+  int Threads = 0; ///< 1: the calling thread only; otherwise ParallelFor's threads
+};
+
+enum class HallucinationStatus
+{
+  Ok = 0,
+  EmptyImage,
+  SizeMismatch,
+  NonFinite,
+  FlashDarker,
+  BadSettings,
+  Aborted
+};
+
+struct HallucinationResult
+{
+  HallucinationStatus Status = HallucinationStatus::Ok;
+  std::string Message;           ///< one sentence when Status != Ok
+  RgbImage Albedo;               ///< (I_f - I_d) / I_c, linear, per channel
+  std::vector<float> Shading;    ///< S, normalised (1 = open, upward-facing)
+  std::vector<float> Depth;      ///< w x h, 0 = highest point, 1 = deepest
+  float DepthRangeTexels = 0.0f; ///< the model's depth of Depth = 1, in texel widths
+  bool Ok() const { return this->Status == HallucinationStatus::Ok; }
+};
+
+/// Rec. 709 luminance of a linear RGB pixel.
+inline float RgbLuminance(const float* rgb)
+{
+  return 0.2126f * rgb[0] + 0.7152f * rgb[1] + 0.0722f * rgb[2];
+}
+
+/**
+ * The whole filter: albedo, shading and depth. `calibration` may be null (a uniform flash).
+ * Errors (Status, Message): an empty image, images of different sizes, a NaN or infinite pixel,
+ * a flash image darker than the diffuse one, settings out of range; Aborted when `progress`
+ * returns false.
+ */
+MESOLIGHTRELIEFTEXTURES_EXPORT HallucinationResult HallucinateDepth(const RgbImage& diffuse,
+  const RgbImage& flash, const RgbImage* calibration, const HallucinationSettings& settings = {},
+  const ProgressCallback& progress = {});
+
+/**
+ * Step 3 alone: the model depth in texels (not normalised; larger = deeper) of a shading image
+ * (w x h, 1 = open sky). Empty when progress aborts. Exposed for tests and the benchmark.
+ */
+MESOLIGHTRELIEFTEXTURES_EXPORT std::vector<float> DepthFromShading(
+  const std::vector<float>& shading, int w, int h, const HallucinationSettings& settings = {},
+  const ProgressCallback& progress = {});
+
+/// Gaussian blur (separable, clamped border) of a w x h image; sigma <= 0 copies.
+MESOLIGHTRELIEFTEXTURES_EXPORT std::vector<float> GaussianBlurClamped(
+  const std::vector<float>& image, int w, int h, float sigma, int threads = 0);
+
+} // namespace mesolight
+
+#endif
