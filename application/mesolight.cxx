@@ -7,6 +7,7 @@
 #include "GatherBenchmark.h"
 #include "ImageCommands.h"
 #include "LightFieldViewCommand.h"
+#include "LightSetActorsBenchmark.h"
 #include "LightSetBenchmark.h"
 #include "LightsCommand.h"
 #include "ObjectBenchmark.h"
@@ -132,6 +133,9 @@ const std::vector<mesolight::Command>& Commands()
         { "object", "[FIELD] [options]",
           "a movable object in the walkthrough: frame time\nper stage, directions and subdivision",
           RunObjectBenchmark, {} },
+        { "light-set-actors", "[options]",
+          "VTK actors lit by a light set: error vs K,\nshadows, frame time",
+          RunLightSetActorsBenchmark, {} },
       } },
     { "help", "[COMMAND]", "this text, or one command's options", RunHelp, {} },
   };
