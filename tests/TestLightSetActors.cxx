@@ -214,14 +214,17 @@ TEST(LightSetActors, ShadowsUnderSunAgainstExactLightSet)
     (std::filesystem::path(MESOLIGHT_TEST_TEMP_DIR) / "light-set-actors-plane-exact.png")
       .string()
       .c_str());
+  // 16 lights with shadow maps: the sun's pixels and the brightest sky lights (4.8% here; 8
+  // lights give 7.9%, docs/light-set-actors.md).
   LightSetActorsVariant variant;
-  variant.DirectionalLights = 8;
+  variant.DirectionalLights = 16;
   variant.Shadows = true;
-  const LightSetActorsError shadowed = Measure(scene, variant, reference, "plane-K8-shadows");
+  const LightSetActorsError shadowed = Measure(scene, variant, reference, "plane-K16-shadows");
   LightSetActorsVariant unshadowed = variant;
   unshadowed.Shadows = false;
-  const LightSetActorsError plain = Measure(scene, unshadowed, reference, "plane-K8-noshadows");
-  EXPECT_LT(shadowed.Mean, 0.08);
+  const LightSetActorsError plain = Measure(scene, unshadowed, reference, "plane-K16-noshadows");
+  EXPECT_LT(shadowed.Mean, 0.07);
+  EXPECT_LT(shadowed.P95, 0.35);
   // Negative: without shadow maps the sphere's shadow is missing.
   EXPECT_GT(plain.Mean, shadowed.Mean + 0.05);
 }

@@ -18,6 +18,7 @@
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkProperty.h"
+#include "vtkRenderPass.h"
 #include "vtkRenderPassCollection.h"
 #include "vtkRenderer.h"
 #include "vtkSequencePass.h"
@@ -65,6 +66,7 @@ struct vtkLightSetLighting::Internals
   std::vector<vtkSmartPointer<vtkLight>> AddedLights;
   std::vector<vtkWeakPointer<vtkActor>> Actors;
   vtkSmartPointer<vtkCallbackCommand> Callback;
+  vtkWeakPointer<vtkRenderPass> Pass; // the shadow pass Apply set (cleared only if still set)
   float Coefficients[9][3] = {};
 
   void Detach()
@@ -240,8 +242,9 @@ bool vtkLightSetLighting::Apply(vtkRenderer* renderer)
     vtkNew<vtkCameraPass> camera;
     camera->SetDelegatePass(sequence);
     renderer->SetPass(camera);
+    in.Pass = camera.Get();
   }
-  else if (vtkCameraPass::SafeDownCast(renderer->GetPass()))
+  else if (in.Pass && renderer->GetPass() == in.Pass)
   {
     renderer->SetPass(nullptr);
   }

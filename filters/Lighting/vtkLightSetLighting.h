@@ -18,8 +18,11 @@
  *    colour, so colour textures and scalars are lit too); or a constant (their average over all
  *    normals); or nothing;
  *  - with Shadows on, the renderer draws with vtkShadowMapPass: every directional light casts a
- *    shadow map (VTK 9.1 bakes directional lights with a parallel light camera fitted to the
- *    scene). The remainder casts no shadow.
+ *    shadow map (vtkShadowMapBakerPass bakes directional lights as well as spot lights). The
+ *    remainder casts no shadow. Apply() then sets the renderer's render pass (a vtkCameraPass
+ *    over the baker and the shadow pass, as VTK's own shadow example does), replacing one the
+ *    renderer had; that pass draws opaque geometry only (lights + opaque pass), no translucent
+ *    props, volumes or overlays. Apply() with Shadows off removes the pass it set.
  * Why this split and how good it is against the path tracer: docs/light-set-actors.md.
  *
  * Apply() replaces the renderer's lights (automatic light creation is turned off) and injects
