@@ -9,6 +9,8 @@
 #include "LightSetActorsScene.h"
 #include "LightSetSplit.h"
 #include "vtkLightSetLighting.h"
+#include "vtkLightSetReader.h"
+#include "vtkMedianCutLights.h"
 
 #include "MesolightTestUtilities.h"
 
@@ -24,6 +26,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <iostream>
 #include <string>
@@ -227,4 +230,55 @@ TEST(LightSetActors, ShadowsUnderSunAgainstExactLightSet)
   EXPECT_LT(shadowed.P95, 0.35);
   // Negative: without shadow maps the sphere's shadow is missing.
   EXPECT_GT(plain.Mean, shadowed.Mean + 0.05);
+}
+
+TEST(LightSetActors, LightsCsvReadBackLightsTheSame)
+{
+  // The light set through `mesolight lights`' CSV and vtkLightSetReader gives the same lighting
+  // (model and rendered frame) as the median cut's own output.
+  LightSetActorsOptions options;
+  options.Environment = "procedural:sun";
+  options.Size = 96;
+  LightSetActorsScene scene = Build(options);
+  const std::string csv =
+    (std::filesystem::path(MESOLIGHT_TEST_TEMP_DIR) / "light-set-actors-readback.csv").string();
+  std::filesystem::remove(csv);
+  std::string error;
+  ASSERT_TRUE(vtkMedianCutLights::WriteCsv(scene.Lights, csv, error)) << error;
+  vtkNew<vtkLightSetReader> reader;
+  reader->SetFileName(csv.c_str());
+  reader->Update();
+  ASSERT_EQ(reader->GetOutput()->GetNumberOfPoints(), scene.Lights->GetNumberOfPoints());
+
+  vtkNew<vtkLightSetLighting> fromFilter;
+  fromFilter->SetLightSet(scene.Lights);
+  vtkNew<vtkLightSetLighting> fromCsv;
+  fromCsv->SetLightSet(reader->GetOutput());
+  const std::array<std::array<double, 3>, 2> normals = { { { 0.0, 0.0, 1.0 },
+    { 0.6, -0.8, 0.0 } } };
+  for (const auto& normal : normals)
+  {
+    double a[3], b[3];
+    ASSERT_TRUE(fromFilter->EvaluateIrradiance(normal.data(), a));
+    ASSERT_TRUE(fromCsv->EvaluateIrradiance(normal.data(), b));
+    for (int c = 0; c < 3; ++c)
+    {
+      EXPECT_NEAR(a[c], b[c], 1e-6 * std::abs(a[c]) + 1e-12);
+    }
+  }
+
+  LightSetActorsVariant variant;
+  variant.DirectionalLights = 8;
+  const mesolight::Frame original =
+    mesolight::CaptureFrame(mesolight::MakeLightSetActorsView(scene, variant, error).Window);
+  scene.Lights = reader->GetOutput();
+  const mesolight::Frame readBack =
+    mesolight::CaptureFrame(mesolight::MakeLightSetActorsView(scene, variant, error).Window);
+  ASSERT_EQ(original.Rgb.size(), readBack.Rgb.size());
+  int largest = 0;
+  for (size_t k = 0; k < original.Rgb.size(); ++k)
+  {
+    largest = std::max(largest, std::abs(int(original.Rgb[k]) - int(readBack.Rgb[k])));
+  }
+  EXPECT_LE(largest, 1);
 }
