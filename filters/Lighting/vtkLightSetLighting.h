@@ -5,9 +5,9 @@
  *
  * vtkLightSetLighting takes a light set (output port 0 of vtkMedianCutLights or
  * vtkLightSetReader: one vertex per light at its unit direction, point data "Irradiance")
- * and applies it to a vtkRenderer, so that surfaces drawn by VTK's own mappers
- * (vtkPolyDataMapper, vtkCompositePolyDataMapper2, ParaView's surfaces) are lit by the same
- * environment as relief surfaces:
+ * and applies it to a vtkRenderer, so that surfaces drawn by VTK's own OpenGL polydata mappers
+ * (measured with vtkPolyDataMapper; its OpenGL subclasses get the same shader edit) are lit by
+ * the same environment as relief surfaces:
  *  - the NumberOfDirectionalLights lights of largest luminance become directional scene
  *    vtkLights (SetPositional(false)) whose colour x intensity is Exposure x Irradiance / pi, so
  *    a white Lambertian surface (Diffuse 1, DiffuseColor 1) shows Exposure x albedo / pi x E,
