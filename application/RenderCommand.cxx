@@ -61,6 +61,7 @@ void AddSceneOptions(CommandLine& cl)
   cl.AddValue("--environment", "SPEC",
     "light also by an environment: procedural:sky, procedural:sun or a lat-long HDR file");
   cl.AddValue("--env-lights", "N", "median-cut lights of the environment", "128");
+  cl.AddValue("--lights-csv", "FILE", "light also by a light set written by `mesolight lights`");
   cl.AddValue("--exposure", "X", "scale of the environment lighting", "1");
   cl.AddFlag("--tone-map", "Reinhard tone mapping of the environment-lit colour");
   cl.AddValue("--light-elevation", "DEG", "key light elevation above the wall", "35");
@@ -77,6 +78,12 @@ bool ReadSceneOptions(const CommandLine& cl, ReliefSceneOptions& o, std::string&
   o.WriteDepth = !cl.Has("--no-depth-write");
   o.AdaptiveSteps = cl.Has("--adaptive-steps");
   o.Environment = cl.Get("--environment");
+  o.LightsCsv = cl.Get("--lights-csv");
+  if (!o.Environment.empty() && !o.LightsCsv.empty())
+  {
+    error = "--environment and --lights-csv: give one light set, not both";
+    return false;
+  }
   o.ToneMapping = cl.Has("--tone-map");
   o.LevelOfDetail = cl.Has("--level-of-detail");
   if (!cl.GetInt("--resolution", 1, 16384, o.Resolution, error) ||
@@ -263,8 +270,9 @@ int RunRenderCommand(const std::vector<std::string>& args)
     return 2;
   }
   const std::string out = cl.Get("--out");
-  const std::string problem = CheckOutputFile(
-    out, { options.DepthFile, options.Environment, cl.Get("--geometry-image"), cl.Get("--color") });
+  const std::string problem = CheckOutputFile(out,
+    { options.DepthFile, options.Environment, options.LightsCsv, cl.Get("--geometry-image"),
+      cl.Get("--color") });
   if (!problem.empty())
   {
     return cl.UsageError("--out: " + problem);

@@ -9,6 +9,7 @@
 #include "HallucinateCommand.h"
 #include "ImageCommands.h"
 #include "LightFieldViewCommand.h"
+#include "LightSetActorsBenchmark.h"
 #include "LightSetBenchmark.h"
 #include "LightsCommand.h"
 #include "ObjectBenchmark.h"
@@ -140,6 +141,9 @@ const std::vector<mesolight::Command>& Commands()
         { "hallucinate", "[options]",
           "depth hallucination against path-traced\nphotographs of known height fields",
           RunHallucinationBenchmark, {} },
+        { "light-set-actors", "[options]",
+          "VTK actors lit by a light set: error vs K,\nshadows, frame time",
+          RunLightSetActorsBenchmark, {} },
       } },
     { "hallucinate", "DIFFUSE FLASH --albedo A.exr --depth D.exr",
       "depth hallucination: albedo and depth from a\ndiffuse and a flash photograph",

@@ -3,6 +3,7 @@
 
 #include "vtkConeMapFilter.h"
 #include "vtkHeightFieldMeshFilter.h"
+#include "vtkLightSetReader.h"
 #include "vtkMedianCutLights.h"
 #include "vtkOIIOImageReader.h"
 #include "vtkProceduralEnvironmentSource.h"
@@ -13,6 +14,7 @@
 #include <vtkActor.h>
 #include <vtkCamera.h>
 #include <vtkCommand.h>
+#include <vtkExecutive.h>
 #include <vtkImageData.h>
 #include <vtkLight.h>
 #include <vtkMapper.h>
@@ -414,6 +416,24 @@ bool BuildReliefScene(const ReliefSceneOptions& options, ReliefScene& scene, std
     {
       return false;
     }
+    scene.Mapper->SetLightSetData(scene.LightSet);
+  }
+  else if (!options.LightsCsv.empty())
+  {
+    vtkNew<ErrorCollector> errors;
+    vtkNew<vtkLightSetReader> reader;
+    reader->AddObserver(vtkCommand::ErrorEvent, errors);
+    vtkNew<ErrorCollector> executiveNoise; // the executive's "returned failure" follow-up
+    reader->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, executiveNoise);
+    reader->SetFileName(options.LightsCsv.c_str());
+    reader->Update();
+    if (!errors->Messages.empty() || reader->GetOutput()->GetNumberOfPoints() == 0)
+    {
+      error = errors->Messages.empty() ? "could not read " + options.LightsCsv : errors->Messages;
+      return false;
+    }
+    scene.LightSet = vtkSmartPointer<vtkImageData>::New();
+    scene.LightSet->DeepCopy(reader->GetLightTexture());
     scene.Mapper->SetLightSetData(scene.LightSet);
   }
 

@@ -55,6 +55,8 @@ struct ReliefSceneOptions
   // median-cut lights light the relief (vtkReliefMapper light set).
   std::string Environment;
   int EnvironmentLights = 128;
+  // A light set written by `mesolight lights` (CSV, vtkLightSetReader) instead of Environment.
+  std::string LightsCsv;
   double Exposure = 1.0;
   bool ToneMapping = false;
   double LightElevation = 35.0; // key light elevation above the wall, degrees

@@ -292,8 +292,6 @@ void ExactIrradiance::Evaluate(const double n[3], double e[3]) const
 }
 
 //------------------------------------------------------------------------------
-namespace
-{
 void EvaluateSHBasis(const double d[3], double y[9])
 {
   const double x = d[0];
@@ -308,7 +306,6 @@ void EvaluateSHBasis(const double d[3], double y[9])
   y[6] = 0.315392 * (3.0 * z * z - 1.0);
   y[7] = 1.092548 * x * z;
   y[8] = 0.546274 * (x * x - yy * yy);
-}
 }
 
 SH9 ProjectSH9(const RgbImage& map)

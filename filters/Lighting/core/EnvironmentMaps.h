@@ -101,6 +101,8 @@ struct SH9
   std::array<std::array<double, 3>, 9> L{};
 };
 MESOLIGHTLIGHTING_EXPORT SH9 ProjectSH9(const RgbImage& map);
+/// The 9 real SH basis functions at a unit direction d, in the order of SH9.
+MESOLIGHTLIGHTING_EXPORT void EvaluateSHBasis(const double d[3], double y[9]);
 /// E(n) = sum_lm A_l L_lm Y_lm(n), A0 = pi, A1 = 2 pi / 3, A2 = pi / 4.
 MESOLIGHTLIGHTING_EXPORT void IrradianceSH9(const SH9& sh, const double n[3], double e[3]);
 
