@@ -321,6 +321,20 @@ void WritePayload(Writer& w, const LightField& field)
 }
 } // namespace
 
+std::string SnapshotFileWithPayload(const std::string& payload)
+{
+  Header header{};
+  std::memcpy(header.MagicBytes, Magic, 8);
+  header.Version = SnapshotVersion;
+  header.ByteOrder = ByteOrderMark;
+  header.PayloadBytes = payload.size();
+  Checksum hash;
+  hash.Update(reinterpret_cast<const unsigned char*>(payload.data()), payload.size());
+  header.PayloadChecksum = hash.Value();
+  header.HeaderChecksum = HeaderChecksum(header);
+  return std::string(reinterpret_cast<const char*>(&header), sizeof(header)) + payload;
+}
+
 bool FileExists(const std::string& path)
 {
   struct stat info;
