@@ -52,5 +52,10 @@ for target in "${targets[@]}"; do
     find "$artifacts" -type f | sed 's/^/  input: /'
   fi
 done
+# A target that crashed (or a merge child) exits without removing its scratch directory
+# (fuzz/FuzzSupport.h): remove those of processes that are gone.
+for dir in "${TMPDIR:-/tmp}"/mesolight-fuzz-*; do
+  [ -d "$dir" ] && ! kill -0 "${dir##*-}" 2> /dev/null && rm -rf "$dir"
+done
 printf '[fuzz] %s\n' "${summary[@]}"
 exit "$status"
