@@ -27,11 +27,8 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
-#include <fstream>
 #include <iostream>
-#include <sstream>
 
 namespace mesolight
 {
@@ -56,42 +53,6 @@ void AddObjectOptions(CommandLine& cl)
     "--subdivision", "N", "midpoint subdivision levels of the gathered object (0-3)", "0");
   cl.AddValue("--gather-directions", "SET",
     "directions the gather reads: all, half or importance (half, by the field's radiance)", "all");
-}
-
-std::string ParsePlacement(const std::string& text, ObjectPlacement& placement)
-{
-  std::vector<double> values;
-  std::stringstream in(text);
-  std::string item;
-  while (std::getline(in, item, ','))
-  {
-    char* end = nullptr;
-    const double v = std::strtod(item.c_str(), &end);
-    if (item.empty() || end == item.c_str() || *end != '\0' || !std::isfinite(v))
-    {
-      return "'" + item + "' is not a finite number";
-    }
-    values.push_back(v);
-  }
-  if (values.size() != 3 && values.size() != 6 && values.size() != 7)
-  {
-    return "give tx,ty,tz or tx,ty,tz,rx,ry,rz or tx,ty,tz,rx,ry,rz,s (" +
-      std::to_string(values.size()) + " numbers given)";
-  }
-  std::copy(values.begin(), values.begin() + 3, placement.Position);
-  if (values.size() >= 6)
-  {
-    std::copy(values.begin() + 3, values.begin() + 6, placement.Orientation);
-  }
-  if (values.size() == 7)
-  {
-    if (!(values[6] > 0.0))
-    {
-      return "the scale must be positive";
-    }
-    placement.Scale = values[6];
-  }
-  return {};
 }
 
 void ApplyPlacement(vtkActor* object, const ObjectPlacement& p)
@@ -262,43 +223,6 @@ int SetUpObject(const CommandLine& cl, const char* command, vtkLightFieldActor* 
   renderer->ResetCameraClippingRange();
   object.Active = true;
   return 0;
-}
-
-bool ReadPath(const std::string& file, const ObjectPlacement& base,
-  std::vector<ObjectPlacement>& path, std::string& error)
-{
-  std::ifstream in(file);
-  if (!in)
-  {
-    error = "cannot read '" + file + "'";
-    return false;
-  }
-  std::string line;
-  int number = 0;
-  while (std::getline(in, line))
-  {
-    ++number;
-    line.erase(0, line.find_first_not_of(" \t\r"));
-    line.erase(line.find_last_not_of(" \t\r") + 1);
-    if (line.empty() || line[0] == '#' || (number == 1 && std::isalpha(line[0])))
-    {
-      continue;
-    }
-    ObjectPlacement p = base;
-    const std::string why = ParsePlacement(line, p);
-    if (!why.empty())
-    {
-      error = file + ":" + std::to_string(number) + ": " + why;
-      return false;
-    }
-    path.push_back(p);
-  }
-  if (path.empty())
-  {
-    error = "'" + file + "' holds no placement";
-    return false;
-  }
-  return true;
 }
 
 void PrintObjectNote(vtkLightFieldActor* actor, const MovableObject& object)

@@ -6,6 +6,7 @@
 #ifndef mesolight_LightFieldObjectOptions_h
 #define mesolight_LightFieldObjectOptions_h
 
+#include "ObjectPath.h" // ObjectPlacement, ParsePlacement, ReadPath
 #include "vtkLightFieldObjectMapper.h"
 
 #include <vtkActor.h>
@@ -35,18 +36,9 @@ class CommandLine;
 // --gather-directions.
 void AddObjectOptions(CommandLine& cl);
 
-struct ObjectPlacement
-{
-  double Position[3] = { 0.0, 0.0, 0.0 };
-  double Orientation[3] = { 0.0, 0.0, 0.0 };
-  double Scale = 1.0;
-};
-
 // The polydata of an object mesh (points, triangles, normals when it has them).
 vtkSmartPointer<vtkPolyData> ObjectPolyData(const mesolight::vlf::ObjectMesh& mesh);
 
-// "tx,ty,tz[,rx,ry,rz[,s]]" over the defaults in `placement`; "" or why not.
-std::string ParsePlacement(const std::string& text, ObjectPlacement& placement);
 void ApplyPlacement(vtkActor* object, const ObjectPlacement& p);
 
 // The object of the command line in the walkthrough's renderer.
@@ -63,11 +55,6 @@ struct MovableObject
 // `inputs` gathers the files read, so no output overwrites them.
 int SetUpObject(const CommandLine& cl, const char* command, vtkLightFieldActor* scene,
   vtkRenderer* renderer, MovableObject& object, std::vector<std::string>* inputs = nullptr);
-
-// --path FILE: one placement per line ("tx,ty,tz[,rx,ry,rz[,s]]"; '#' comments and a header
-// line of names are skipped); rows without a scale keep `base`'s.
-bool ReadPath(const std::string& file, const ObjectPlacement& base,
-  std::vector<ObjectPlacement>& path, std::string& error);
 
 // One line on the object after a frame: timings and anything wrong with its placement.
 void PrintObjectNote(vtkLightFieldActor* actor, const MovableObject& object);

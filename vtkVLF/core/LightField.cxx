@@ -320,8 +320,18 @@ std::vector<Surface> GroupSurfaces(
     }
     const float extentU = std::max(hi[0] - lo[0], 1e-6f);
     const float extentV = std::max(hi[1] - lo[1], 1e-6f);
-    s.TextureWidth = std::max(1, static_cast<int>(std::ceil(extentU / texelSize - 1e-3f)));
-    s.TextureHeight = std::max(1, static_cast<int>(std::ceil(extentV / texelSize - 1e-3f)));
+    // Sides in double: a scene far larger than the texel (a corrupt snapshot's scene is not
+    // normalized) must be refused, not overflow int (found by fuzz/snapshot.cxx).
+    const double sideU = std::ceil(static_cast<double>(extentU / texelSize) - 1e-3);
+    const double sideV = std::ceil(static_cast<double>(extentV / texelSize) - 1e-3);
+    if (!(sideU <= MaxTextureSide) || !(sideV <= MaxTextureSide))
+    {
+      throw std::invalid_argument("a surface of the scene would need a texture of " +
+        std::to_string(sideU) + " x " + std::to_string(sideV) + " texels (at most " +
+        std::to_string(MaxTextureSide) + " per side)");
+    }
+    s.TextureWidth = std::max(1, static_cast<int>(sideU));
+    s.TextureHeight = std::max(1, static_cast<int>(sideV));
     s.TexelU = extentU / static_cast<float>(s.TextureWidth);
     s.TexelV = extentV / static_cast<float>(s.TextureHeight);
     // Origin on the plane at the rectangle's lower corner.
@@ -392,6 +402,18 @@ void LightField::Setup(
     SceneBounds(scene, lower, upper);
     this->Centre = 0.5f * (lower + upper);
     this->Scale = NormalizeToUnitSphere(this->NormalizedScene);
+  }
+  // The direction set (its lattice holds about two points per direction) and the subfields are
+  // allocated before the full estimate below: refuse a count whose share alone exceeds the budget
+  // (a corrupt snapshot's count; a 2n^2+1 count up to n = 4096 is otherwise valid).
+  const std::uint64_t perDirection = sizeof(Subfield) + 2 * sizeof(glm::vec3) + sizeof(double) +
+    (static_cast<std::uint64_t>(settings.TilesPerSide) * settings.TilesPerSide + 1) *
+      sizeof(std::uint32_t);
+  if (settings.Directions > settings.MemoryBudget / perDirection)
+  {
+    throw MemoryBudgetError("the light field's " + std::to_string(settings.Directions) +
+      " directions alone would need more than the memory budget of " +
+      FormatBytes(settings.MemoryBudget) + "; use fewer directions, or raise the budget");
   }
   this->DirectionsPtr.reset(new DirectionSet(DirectionSet::WithCount(settings.Directions)));
   const float texel = settings.TexelSize > 0.0f ? settings.TexelSize : settings.CellSize();

@@ -30,8 +30,8 @@
 #define mesolight_vlf_LightField_h
 
 #include "DirectionSet.h"
-#include "Progress.h"
 #include "MemoryBudget.h" // FormatBytes
+#include "Progress.h"
 #include "TriangleScene.h"
 
 #include <glm/vec2.hpp>
@@ -174,7 +174,6 @@ struct MemoryEstimate
 // for unusable settings or an empty scene.
 MemoryEstimate EstimateMemory(const TriangleScene& scene, const LightFieldSettings& settings);
 
-
 class LightField
 {
 public:
@@ -280,8 +279,14 @@ private:
 // Surface index of degenerate triangles (they belong to no surface).
 constexpr std::uint32_t NoSurface = 0xffffffffu;
 
+// The largest texture side of a surface: a unit-sphere scene at the smallest texel size (1e-4)
+// needs at most 20000.
+constexpr int MaxTextureSide = 1 << 16;
+
 // Groups a (unit-sphere) scene's triangles into planar one-material surfaces with texture
 // frames; triangleSurface gets each triangle's surface. Exposed for tests and the estimate.
+// Throws std::invalid_argument when a surface would need more than MaxTextureSide texels per side
+// (a scene not normalized to the unit sphere).
 std::vector<Surface> GroupSurfaces(
   const TriangleScene& scene, float texelSize, std::vector<std::uint32_t>& triangleSurface);
 

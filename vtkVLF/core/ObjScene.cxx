@@ -9,6 +9,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <unordered_map>
@@ -456,6 +457,15 @@ ObjSceneRead ParseObjScene(std::istream& obj, const std::string& name, const std
       for (std::size_t k = 1; k < tokens.size(); ++k)
       {
         const std::string path = JoinPath(directory, tokens[k]);
+        // Only regular files: a scene naming /dev/zero (or /dev/stdin, a FIFO) would read one
+        // endless line into memory (or wait forever).
+        std::error_code ec;
+        if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec))
+        {
+          read.Warnings.push_back(where + "mtllib '" + tokens[k] +
+            "' is not a regular file: ignored, its materials get the default grey (Kd 0.5)");
+          continue;
+        }
         std::ifstream mtl(path, std::ios::binary);
         if (!mtl)
         {

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "Snapshot.h"
 
+#include <glm/geometric.hpp>
+
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
@@ -321,6 +323,20 @@ void WritePayload(Writer& w, const LightField& field)
 }
 } // namespace
 
+std::string SnapshotFileWithPayload(const std::string& payload)
+{
+  Header header{};
+  std::memcpy(header.MagicBytes, Magic, 8);
+  header.Version = SnapshotVersion;
+  header.ByteOrder = ByteOrderMark;
+  header.PayloadBytes = payload.size();
+  Checksum hash;
+  hash.Update(reinterpret_cast<const unsigned char*>(payload.data()), payload.size());
+  header.PayloadChecksum = hash.Value();
+  header.HeaderChecksum = HeaderChecksum(header);
+  return std::string(reinterpret_cast<const char*>(&header), sizeof(header)) + payload;
+}
+
 bool FileExists(const std::string& path)
 {
   struct stat info;
@@ -513,14 +529,25 @@ std::unique_ptr<LightField> ReadSnapshot(const std::string& path, std::uint64_t 
   settings.TexelSize = r.Value<float>();
   settings.MemoryBudget = r.Value<std::uint64_t>();
   settings.UseSolidAngleWeights = r.Value<std::uint8_t>() != 0;
-  if (memoryBudget > 0)
-  {
-    settings.MemoryBudget = memoryBudget;
-  }
+  // The stored budget is what the field was built with; read back, it is only a number in the
+  // file: never trust more than this machine has (a corrupt one would let Setup allocate anything).
+  settings.MemoryBudget = memoryBudget > 0
+    ? memoryBudget
+    : std::min<std::uint64_t>(settings.MemoryBudget, AvailableMemory());
   const std::string problem = settings.Validate();
   if (!problem.empty())
   {
     r.Fail("its settings are invalid: " + problem);
+  }
+  // Every subfield stores at least its tile offsets and five array counts: a direction count the
+  // bytes left cannot hold is corrupt, refused before the directions are set up.
+  const std::uint64_t subfieldBytes = 5 * sizeof(std::uint64_t) +
+    (static_cast<std::uint64_t>(settings.TilesPerSide) * settings.TilesPerSide + 1) *
+      sizeof(std::uint32_t);
+  if (settings.Directions > r.BytesLeft() / subfieldBytes)
+  {
+    r.Fail("its direction count " + std::to_string(settings.Directions) +
+      " does not fit in the bytes left");
   }
   const int iterations = r.Value<std::int32_t>();
   if (iterations < 0 || iterations > 1000000)
@@ -540,6 +567,16 @@ std::unique_ptr<LightField> ReadSnapshot(const std::string& path, std::uint64_t 
   r.Bytes(scene.Normals.data(), scene.Normals.size() * sizeof(glm::vec3));
   scene.TextureCoordinates.resize(r.Count(sizeof(glm::vec2), "texture coordinate"));
   r.Bytes(scene.TextureCoordinates.data(), scene.TextureCoordinates.size() * sizeof(glm::vec2));
+  // The scene of a snapshot is the normalized one (bounding box half-diagonal 1): a vertex far
+  // outside asks for absurd texture sizes (found by fuzz/snapshot.cxx).
+  for (const glm::vec3& p : scene.Positions)
+  {
+    if (!(glm::dot(p, p) <= 1.01f))
+    {
+      r.Fail("its scene is not normalized to the unit sphere (a vertex at " + std::to_string(p.x) +
+        ", " + std::to_string(p.y) + ", " + std::to_string(p.z) + ")");
+    }
+  }
   const std::uint64_t materials = r.Count(48, "material");
   for (std::uint64_t q = 0; q < materials; ++q)
   {

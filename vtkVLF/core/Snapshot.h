@@ -45,6 +45,11 @@ void WriteSnapshot(const LightField& field, const std::string& path);
 // MemoryBudgetError when the field does not fit the budget.
 std::unique_ptr<LightField> ReadSnapshot(const std::string& path, std::uint64_t memoryBudget = 0);
 
+// A snapshot file around any payload: the header with matching checksums, then `payload`. For
+// tests and the fuzz target (fuzz/snapshot.cxx), which reach the payload's checks past the
+// checksums.
+std::string SnapshotFileWithPayload(const std::string& payload);
+
 // True when the file exists and starts with the snapshot magic (cheap: reads 8 bytes).
 bool IsSnapshotFile(const std::string& path);
 bool FileExists(const std::string& path);

@@ -191,6 +191,21 @@ TEST(ObjScene, MissingMtlGivesGreyAndAWarning)
   EXPECT_EQ(plain.Scene.Materials[0].Name, "default-grey");
 }
 
+// An MTL that is a device or a FIFO is not read: /dev/zero is one endless line (memory without
+// bound), /dev/stdin waits forever.
+TEST(ObjScene, MtllibOfADeviceIsIgnored)
+{
+  const std::string path =
+    WriteText("device.obj", "mtllib /dev/zero\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl lamp\nf 1 2 3\n");
+  const ObjSceneRead read = ReadObjScene(path);
+  ASSERT_EQ(read.Scene.Materials.size(), 1u);
+  EXPECT_EQ(read.Scene.Materials[0].Diffuse, glm::vec3(0.5f));
+  ASSERT_FALSE(read.Warnings.empty());
+  EXPECT_NE(
+    read.Warnings[0].find(path + ":1: mtllib '/dev/zero' is not a regular file"), std::string::npos)
+    << read.Warnings[0];
+}
+
 TEST(ObjScene, NoEmitter)
 {
   const std::string path = WriteText("dark.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
