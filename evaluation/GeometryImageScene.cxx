@@ -82,6 +82,9 @@ bool ApplyColour(const GeometryImageSceneOptions& options, ReliefScene& scene, s
   vtkNew<vtkImageData> colour;
   colour->DeepCopy(reader->GetOutput());
   scene.Albedo->SetInputData(colour);
+  // Float images (EXR albedo from depth hallucination) are colours in [0, 1], not scalars to
+  // map through a lookup table, which is what vtkTexture does with them by default.
+  scene.Albedo->SetColorModeToDirectScalars();
   return true;
 }
 

@@ -10,10 +10,15 @@
 #include "ImageCompare.h"
 #include "TestReliefTestUtilities.h"
 
+#include <vtkImageData.h>
+#include <vtkNew.h>
 #include <vtkPolyData.h>
+
+#include "vtkOIIOImageWriter.h"
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <iostream>
 
 namespace
@@ -148,4 +153,52 @@ TEST(GeometryImageRelief, AStrideTooCoarseForTheCurvatureFails)
   const FrameDifference d = Compare(o, Variant::Relief, "cylinder32");
   EXPECT_FALSE(WithinTolerance(d));
   EXPECT_GT(d.DepthMismatch, 3.0 * MaxDepthMismatch);
+}
+
+// A float colour image (an EXR albedo, as depth hallucination writes) shows as its colours: a
+// constant (0.1, 0.15, 0.9) albedo makes the lit model blue. vtkTexture maps float scalars
+// through a lookup table unless told to use them directly: before, this model came out red.
+TEST(GeometryImageRelief, FloatColourImageShowsItsColours)
+{
+  vtkNew<vtkImageData> albedo;
+  albedo->SetDimensions(4, 4, 1);
+  albedo->AllocateScalars(VTK_FLOAT, 3);
+  auto* values = static_cast<float*>(albedo->GetScalarPointer());
+  for (int p = 0; p < 16; ++p)
+  {
+    values[3 * p] = 0.1f;
+    values[3 * p + 1] = 0.15f;
+    values[3 * p + 2] = 0.9f;
+  }
+  const std::string file = test::OutputPath("geometry-image-float-albedo.exr");
+  std::remove(file.c_str());
+  vtkNew<vtkOIIOImageWriter> writer;
+  writer->SetInputData(albedo);
+  writer->SetFileName(file.c_str());
+  writer->Write();
+  GeometryImageSceneOptions o = Scene("cylinder");
+  o.ColorFile = file;
+  std::string error;
+  ReliefScene scene;
+  ASSERT_TRUE(BuildGeometryImageReliefScene(o, scene, error)) << error;
+  auto window = MakeOffscreenWindow(o.Relief, scene.Renderer);
+  const Frame frame = CaptureFrame(window);
+  double sum[3] = { 0.0, 0.0, 0.0 };
+  long long covered = 0;
+  for (size_t p = 0; p < frame.Depth.size(); ++p)
+  {
+    if (frame.Covered(p))
+    {
+      ++covered;
+      for (int c = 0; c < 3; ++c)
+      {
+        sum[c] += frame.Rgb[3 * p + c];
+      }
+    }
+  }
+  ASSERT_GT(covered, 1000);
+  std::cout << "mean colour " << sum[0] / covered << ", " << sum[1] / covered << ", "
+            << sum[2] / covered << std::endl;
+  EXPECT_GT(sum[2], 3.0 * sum[0]);
+  EXPECT_GT(sum[2], 3.0 * sum[1]);
 }

@@ -8,7 +8,7 @@
 //  3. a geometry image (Gu et al. 2002; here a procedural cylinder) becomes a coarse macro mesh
 //     whose texture coordinates map the textures texel for texel (vtkGeometryImageToMesh);
 //  4. vtkReliefMapper draws the fine depth on the coarse mesh, with the albedo as its colour,
-//     lit by 64 median-cut lights of a sky (vtkMedianCutLights) with soft self-shadows.
+//     lit by 64 median-cut lights of a sun and sky (vtkMedianCutLights) with soft self-shadows.
 //
 //   PhotographsToRelitModel DIFFUSE FLASH [out.png]
 //
@@ -73,6 +73,8 @@ int main(int argc, char* argv[])
 
   // 4. The relief on the mesh, coloured by the albedo, lit by a sky's median-cut lights.
   vtkNew<vtkProceduralEnvironmentSource> sky;
+  sky->SetMapToSunSky(); // a low sun: soft relief shadows
+  sky->SetSunElevation(25.0);
   vtkNew<vtkMedianCutLights> lights;
   lights->SetInputConnection(sky->GetOutputPort());
   lights->SetNumberOfLights(64);
@@ -84,9 +86,11 @@ int main(int argc, char* argv[])
   settings->SetDepthScale(depthScale);
   settings->SetMethodToRelief();
   settings->ToneMappingOn();
+  settings->SetExposure(1.5);
   vtkNew<vtkTexture> albedo;
   albedo->SetInputConnection(hallucination->GetOutputPort(0));
   albedo->InterpolateOn();
+  albedo->SetColorModeToDirectScalars(); // float RGB in [0, 1]: colours, not scalars to map
   vtkNew<vtkActor> model;
   model->SetMapper(mapper);
   model->SetTexture(albedo);
