@@ -36,21 +36,17 @@ struct Timing
   double MedianMs = 0.0;
 };
 
+// The median frame time after a warm-up frame (shader compilation, uploads); each frame waits
+// for the GPU.
 double MedianFrameMs(vtkRenderWindow* window, int frames)
 {
-  using Clock = std::chrono::steady_clock;
-  window->Render(); // warm-up: shader compilation, uploads
-  window->WaitForCompletion();
-  std::vector<double> times;
-  for (int i = 0; i < frames; ++i)
+  const auto frame = [window]()
   {
-    const auto t = Clock::now();
     window->Render();
     window->WaitForCompletion();
-    times.push_back(std::chrono::duration<double, std::milli>(Clock::now() - t).count());
-  }
-  std::nth_element(times.begin(), times.begin() + times.size() / 2, times.end());
-  return times[times.size() / 2];
+  };
+  frame();
+  return MedianMilliseconds(frames, frame);
 }
 
 } // namespace

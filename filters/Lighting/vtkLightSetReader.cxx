@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkLightSetReader.h"
 
+#include "LightSetData.h"
+
 #include "vtkCellArray.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
@@ -194,49 +196,21 @@ int vtkLightSetReader::RequestData(
     vtkErrorMacro("No light set was read (see the previous error).");
     return 0;
   }
-  const vtkIdType count = static_cast<vtkIdType>(this->Values.size() / 8);
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  points->SetNumberOfPoints(count);
-  vtkNew<vtkCellArray> verts;
-  vtkNew<vtkFloatArray> irradiance;
-  irradiance->SetName("Irradiance");
-  irradiance->SetNumberOfComponents(3);
-  irradiance->SetNumberOfTuples(count);
-  vtkNew<vtkFloatArray> uv;
-  uv->SetName("MapCoordinates");
-  uv->SetNumberOfComponents(2);
-  uv->SetNumberOfTuples(count);
-  vtkNew<vtkFloatArray> solidAngle;
-  solidAngle->SetName("SolidAngle");
-  solidAngle->SetNumberOfComponents(1);
-  solidAngle->SetNumberOfTuples(count);
-  vtkNew<vtkFloatArray> texels;
-  texels->SetName("Lights");
-  texels->SetNumberOfComponents(4);
-  texels->SetNumberOfTuples(2 * count);
-  for (vtkIdType k = 0; k < count; ++k)
+  // The CSV's rows (u, v, x, y, z, r, g, b) as the median cut's lights; a CSV has no solid angles.
+  std::vector<mesolight::MedianCutLight> lights(this->Values.size() / 8);
+  for (std::size_t k = 0; k < lights.size(); ++k)
   {
     const double* v = this->Values.data() + 8 * k;
-    points->SetPoint(k, v + 2);
-    verts->InsertNextCell(1, &k);
-    uv->SetTuple2(k, v[0], v[1]);
-    irradiance->SetTuple3(k, v[5], v[6], v[7]);
-    solidAngle->SetValue(k, 0.0f);
-    texels->SetTuple4(k, v[2], v[3], v[4], 0.0);
-    texels->SetTuple4(count + k, v[5], v[6], v[7], 0.0);
+    mesolight::MedianCutLight& light = lights[k];
+    light.U = v[0];
+    light.V = v[1];
+    for (int c = 0; c < 3; ++c)
+    {
+      light.Direction[c] = v[2 + c];
+      light.Rgb[c] = v[5 + c];
+    }
   }
-  output->SetPoints(points);
-  output->SetVerts(verts);
-  output->GetPointData()->AddArray(irradiance);
-  output->GetPointData()->AddArray(uv);
-  output->GetPointData()->AddArray(solidAngle);
-  output->GetPointData()->SetActiveScalars("Irradiance");
-
-  texture->SetExtent(0, static_cast<int>(count) - 1, 0, 1, 0, 0);
-  texture->SetOrigin(0.0, 0.0, 0.0);
-  texture->SetSpacing(1.0, 1.0, 1.0);
-  texture->GetPointData()->SetScalars(texels);
+  mesolight::FillLightSetData(lights, output, texture);
   return 1;
 }
 
