@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkLightSetReader.h"
 
+#include "LightSetCsv.h"
 #include "LightSetData.h"
 
 #include "vtkCellArray.h"
@@ -15,42 +16,10 @@
 #include "vtkPolyData.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 
-#include <cerrno>
-#include <cmath>
-#include <cstdlib>
+#include <filesystem>
 #include <fstream>
-#include <sstream>
 
 vtkStandardNewMacro(vtkLightSetReader);
-
-namespace
-{
-std::string Trim(const std::string& s)
-{
-  const char* space = " \t\r\n";
-  const size_t first = s.find_first_not_of(space);
-  if (first == std::string::npos)
-  {
-    return std::string();
-  }
-  const size_t last = s.find_last_not_of(space);
-  return s.substr(first, last - first + 1);
-}
-
-// The whole field as a finite double, or false.
-bool ParseNumber(const std::string& field, double& value)
-{
-  const std::string text = Trim(field);
-  if (text.empty())
-  {
-    return false;
-  }
-  char* end = nullptr;
-  errno = 0;
-  value = std::strtod(text.c_str(), &end);
-  return end == text.c_str() + text.size() && errno != ERANGE && std::isfinite(value);
-}
-} // namespace
 
 //------------------------------------------------------------------------------
 vtkLightSetReader::vtkLightSetReader()
@@ -82,85 +51,22 @@ bool vtkLightSetReader::ParseCsv(
     error = "no light-set file name given";
     return false;
   }
+  // Regular files only: a device such as /dev/zero never ends a line, /dev/stdin waits.
+  std::error_code code;
+  if (!std::filesystem::is_regular_file(fileName, code))
+  {
+    error = std::filesystem::exists(fileName, code)
+      ? fileName + " is not a regular file (a light set is a CSV file)"
+      : "cannot open the light set " + fileName;
+    return false;
+  }
   std::ifstream in(fileName);
   if (!in)
   {
     error = "cannot open the light set " + fileName;
     return false;
   }
-  std::string line;
-  if (!std::getline(in, line) || Trim(line).empty())
-  {
-    error = fileName + " is empty (expected the header \"u,v,x,y,z,r,g,b\" and one row per light)";
-    return false;
-  }
-  if (Trim(line) != "u,v,x,y,z,r,g,b")
-  {
-    error = fileName + ", line 1: the header is \"" + Trim(line).substr(0, 80) +
-      "\", expected \"u,v,x,y,z,r,g,b\" (a light set written by mesolight lights)";
-    return false;
-  }
-  static const char* names[8] = { "u", "v", "x", "y", "z", "r", "g", "b" };
-  long lineNumber = 1;
-  while (std::getline(in, line))
-  {
-    ++lineNumber;
-    if (Trim(line).empty())
-    {
-      continue;
-    }
-    std::vector<std::string> fields;
-    std::stringstream row(line);
-    std::string field;
-    while (std::getline(row, field, ','))
-    {
-      fields.push_back(field);
-    }
-    if (!line.empty() && line.back() == ',')
-    {
-      fields.emplace_back();
-    }
-    const std::string where = fileName + ", line " + std::to_string(lineNumber) + ": ";
-    if (fields.size() != 8)
-    {
-      error = where + std::to_string(fields.size()) + " fields, expected 8 (u,v,x,y,z,r,g,b)";
-      return false;
-    }
-    double v[8];
-    for (int k = 0; k < 8; ++k)
-    {
-      if (!ParseNumber(fields[k], v[k]))
-      {
-        error = where + "the " + names[k] + " field \"" + Trim(fields[k]).substr(0, 40) +
-          "\" is not a finite number";
-        return false;
-      }
-    }
-    const double length = std::sqrt(v[2] * v[2] + v[3] * v[3] + v[4] * v[4]);
-    if (std::abs(length - 1.0) > 1e-3)
-    {
-      error = where + "the direction (x, y, z) has length " + std::to_string(length) +
-        ", expected a unit vector";
-      return false;
-    }
-    if (v[5] < 0.0 || v[6] < 0.0 || v[7] < 0.0)
-    {
-      error = where + "negative irradiance (r, g, b)";
-      return false;
-    }
-    values.insert(values.end(), v, v + 8);
-  }
-  if (in.bad())
-  {
-    error = "error while reading " + fileName;
-    return false;
-  }
-  if (values.empty())
-  {
-    error = fileName + " has a header but no lights";
-    return false;
-  }
-  return true;
+  return mesolight::ParseLightSetCsv(in, fileName, values, error);
 }
 
 //------------------------------------------------------------------------------

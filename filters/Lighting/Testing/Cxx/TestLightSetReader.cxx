@@ -221,4 +221,9 @@ TEST(LightsCsv, MalformedFilesFailWithAClearError)
     garbage[i] = static_cast<char>((i * 7919) & 0xff);
   }
   EXPECT_TRUE(FailsWith(WriteText(dir, "garbage.csv", garbage), "line 1: the header"));
+  // A row with no end: refused at the line limit, never read into memory whole; a device (a
+  // file that never ends a line) is not opened at all.
+  EXPECT_TRUE(FailsWith(WriteText(dir, "endless.csv", h + std::string(100000, '1')),
+    "line 2: longer than 4096 characters"));
+  EXPECT_TRUE(FailsWith("/dev/zero", "is not a regular file"));
 }
