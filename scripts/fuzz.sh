@@ -14,7 +14,7 @@ seconds="${1:-60}"
 shift || true
 build="${MESOLIGHT_FUZZ_BUILD_DIR:-$here/build-fuzz}"
 targets=("$@")
-[ "${#targets[@]}" -gt 0 ] || targets=(obj_scene snapshot command_line object_path)
+[ "${#targets[@]}" -gt 0 ] || targets=(obj_scene snapshot command_line object_path lights_csv)
 
 launcher=()
 command -v ccache > /dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
