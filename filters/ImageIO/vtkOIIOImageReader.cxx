@@ -39,11 +39,13 @@ struct vtkOIIOImageReader::Header
 namespace
 {
 /// Configuration hints: keep alpha as stored (A is the depth of relief textures, it must
-/// not be multiplied into RGB).
+/// not be multiplied into RGB); RAW photographs in linear light (the raw plugin's default is
+/// sRGB-encoded, which would bend the shading that depth hallucination reads).
 OIIO::ImageSpec ReadConfig()
 {
   OIIO::ImageSpec config;
   config.attribute("oiio:UnassociatedAlpha", 1);
+  config.attribute("raw:ColorSpace", "linear");
   return config;
 }
 
