@@ -3,7 +3,7 @@
 (examples/data/photographs: overcast and flash, path-traced by `mesolight bench hallucinate
 --maps Stone --size 96 --photos DIR`) to a relit model. Depth hallucination gives the depth map,
 the Relief Texture filter bakes it, a cylinder's geometry image becomes the coarse mesh, and the
-relief on it is lit only by 64 median-cut lights of the built-in sun and sky (Relief Surface
+relief on it, coloured by the hallucinated albedo, is lit only by 64 median-cut lights of the built-in sun and sky (Relief Surface
 representation), with soft self-shadows. Run with the plugin's pvbatch (see docs/paraview.md):
 
     scripts/pvbatch.sh examples/paraview/make_photographs_to_model_state.py [OUT.pvsm] [OUT.png]
@@ -40,7 +40,8 @@ sky = pvs.MesolightProceduralEnvironment(registrationName="Sun and sky", Map=1, 
 lights = pvs.MesolightMedianCutLights(registrationName="Median cut lights", Input=sky,
                                       NumberOfLights=64)
 attached = pvs.MesolightAttachReliefTexture(registrationName="Relief model", Input=mesh,
-                                            ReliefTexture=relief)
+                                            ReliefTexture=relief,
+                                            ColorTexture=pvs.OutputPort(hallucination, 0))
 attached.LightSet = pvs.OutputPort(lights, 1)
 
 view = pvs.GetActiveViewOrCreate("RenderView")

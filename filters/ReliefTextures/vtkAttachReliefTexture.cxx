@@ -23,6 +23,7 @@ namespace
 // <prefix><name without "Mesolight">.
 const char* const ReliefPrefix = "MesolightReliefTexture";
 const char* const LightSetPrefix = "MesolightLightSet";
+const char* const ColorPrefix = "MesolightColorTexture";
 const char* const ImageFieldArrays[] = { "MesolightDepthScale", "MesolightConeType" };
 
 // Adds image's scalars (shared, not copied) and size under prefix; false if it has none.
@@ -102,7 +103,7 @@ vtkSmartPointer<vtkImageData> Detach(vtkDataObject* data, const char* prefix)
 //------------------------------------------------------------------------------
 vtkAttachReliefTexture::vtkAttachReliefTexture()
 {
-  this->SetNumberOfInputPorts(3);
+  this->SetNumberOfInputPorts(4);
 }
 
 //------------------------------------------------------------------------------
@@ -118,6 +119,12 @@ void vtkAttachReliefTexture::SetLightSetConnection(vtkAlgorithmOutput* output)
 }
 
 //------------------------------------------------------------------------------
+void vtkAttachReliefTexture::SetColorTextureConnection(vtkAlgorithmOutput* output)
+{
+  this->SetInputConnection(3, output);
+}
+
+//------------------------------------------------------------------------------
 vtkSmartPointer<vtkImageData> vtkAttachReliefTexture::GetAttachedReliefTexture(vtkDataObject* data)
 {
   return Detach(data, ReliefPrefix);
@@ -130,6 +137,12 @@ vtkSmartPointer<vtkImageData> vtkAttachReliefTexture::GetAttachedLightSet(vtkDat
 }
 
 //------------------------------------------------------------------------------
+vtkSmartPointer<vtkImageData> vtkAttachReliefTexture::GetAttachedColorTexture(vtkDataObject* data)
+{
+  return Detach(data, ColorPrefix);
+}
+
+//------------------------------------------------------------------------------
 int vtkAttachReliefTexture::FillInputPortInformation(int port, vtkInformation* info)
 {
   if (port == 0)
@@ -138,7 +151,7 @@ int vtkAttachReliefTexture::FillInputPortInformation(int port, vtkInformation* i
     return 1;
   }
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkImageData");
-  if (port == 2)
+  if (port >= 2)
   {
     info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
   }
@@ -153,7 +166,8 @@ int vtkAttachReliefTexture::RequestUpdateExtent(
   this->Superclass::RequestUpdateExtent(request, inputVector, outputVector);
   mesolight::RequestWholeInputExtent(inputVector, 1);
   mesolight::RequestWholeInputExtent(inputVector, 2);
-  for (int port = 1; port < 3; ++port)
+  mesolight::RequestWholeInputExtent(inputVector, 3);
+  for (int port = 1; port < 4; ++port)
   {
     if (inputVector[port]->GetNumberOfInformationObjects() > 0)
     {
@@ -173,6 +187,9 @@ int vtkAttachReliefTexture::RequestData(
   vtkImageData* relief = vtkImageData::GetData(inputVector[1], 0);
   vtkImageData* lights = inputVector[2]->GetNumberOfInformationObjects() > 0
     ? vtkImageData::GetData(inputVector[2], 0)
+    : nullptr;
+  vtkImageData* color = inputVector[3]->GetNumberOfInformationObjects() > 0
+    ? vtkImageData::GetData(inputVector[3], 0)
     : nullptr;
   vtkDataSet* output = vtkDataSet::GetData(outputVector, 0);
   if (!input || !output)
@@ -196,6 +213,13 @@ int vtkAttachReliefTexture::RequestData(
     vtkErrorMacro(<< "The light set (input port 2) must be a 2D image with point scalars: "
                      "connect Mesolight Median Cut Lights' second output (LightTexture) as the "
                      "Light Set input (VTK: vtkMedianCutLights' output port 1).");
+    return 0;
+  }
+  if (color && !Attach(color, ColorPrefix, field))
+  {
+    vtkErrorMacro(<< "The colour texture (input port 3) must be a non-empty 2D image with point "
+                     "scalars in the relief texture's coordinates, e.g. Mesolight Depth "
+                     "Hallucination's Albedo output.");
     return 0;
   }
   this->UpdateProgress(1.0);

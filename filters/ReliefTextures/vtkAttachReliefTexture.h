@@ -7,14 +7,19 @@
  * Input port 0: any vtkDataSet (the surface to draw; it needs point texture coordinates).
  * Input port 1: the relief texture, a 4-component vtkImageData (vtkReliefTextureFilter or
  * vtkConeMapFilter output). Input port 2 (optional): a light set, vtkMedianCutLights' N x 2
- * light texture (its output port 1).
+ * light texture (its output port 1). Input port 3 (optional): a colour (albedo) image in the same
+ * texture coordinates, e.g. vtkDepthHallucinationFilter's albedo.
  *
  * The output is the input (shallow copy) with field data arrays
  *  - "MesolightReliefTexture" (the texels, shared with the image) and
  *    "MesolightReliefTextureSize" (width, height), "MesolightReliefTextureDepthScale" and
  *    "MesolightReliefTextureConeType" when the image carries them;
- *  - "MesolightLightSet" and "MesolightLightSetSize" when a light set is connected.
- * GetAttachedReliefTexture() / GetAttachedLightSet() turn them back into images.
+ *  - "MesolightLightSet" and "MesolightLightSetSize" when a light set is connected;
+ *  - "MesolightColorTexture" and "MesolightColorTextureSize" when a colour image is connected
+ *    (ParaView's Relief Surface representation uses it as the actor's texture unless the user
+ *    chose a Texture).
+ * GetAttachedReliefTexture() / GetAttachedLightSet() / GetAttachedColorTexture() turn them back
+ * into images.
  *
  * Why field data: a ParaView representation has one input, and field data travels with every
  * piece of a distributed dataset (each MPI rank draws its piece with the whole texture), through
@@ -44,10 +49,16 @@ public:
   /** The light set (input port 2, optional). */
   void SetLightSetConnection(vtkAlgorithmOutput* output);
 
+  /** The colour (albedo) image (input port 3, optional). */
+  void SetColorTextureConnection(vtkAlgorithmOutput* output);
+
   /** The relief texture attached to a dataset's field data as an image; null if none. */
   static vtkSmartPointer<vtkImageData> GetAttachedReliefTexture(vtkDataObject* data);
   /** The light set attached to a dataset's field data as an image; null if none. */
   static vtkSmartPointer<vtkImageData> GetAttachedLightSet(vtkDataObject* data);
+
+  /** The colour image attached to a dataset's field data as an image; null if none. */
+  static vtkSmartPointer<vtkImageData> GetAttachedColorTexture(vtkDataObject* data);
 
 protected:
   vtkAttachReliefTexture();

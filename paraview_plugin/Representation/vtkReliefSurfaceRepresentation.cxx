@@ -1,8 +1,14 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkReliefSurfaceRepresentation.h"
 
+#include "vtkAttachReliefTexture.h"
 #include "vtkCompositeReliefMapper.h"
+#include "vtkDataObjectLeaves.h"
+#include "vtkImageData.h"
 #include "vtkObjectFactory.h"
+#include "vtkPVLODActor.h"
+#include "vtkPVView.h"
+#include "vtkPointData.h"
 #include "vtkReliefProperty.h"
 
 vtkStandardNewMacro(vtkReliefSurfaceRepresentation);
@@ -24,7 +30,68 @@ vtkReliefSurfaceRepresentation::vtkReliefSurfaceRepresentation()
   this->LODMapper = lodMapper;
   // The relief texture's bake is the one source of truth unless the user overrides it.
   this->ReliefProperty->SetUseTextureDepthScale(true);
+  // Float albedos (EXR) are colours, not scalars to map through a lookup table.
+  this->AttachedColorTexture->SetColorModeToDirectScalars();
+  this->AttachedColorTexture->InterpolateOn();
+  this->AttachedColorTexture->MipmapOn();
   this->SetupDefaults();
+}
+
+//------------------------------------------------------------------------------
+void vtkReliefSurfaceRepresentation::SetTexture(vtkTexture* texture)
+{
+  this->UserTexture = texture;
+  this->Superclass::SetTexture(texture);
+}
+
+//------------------------------------------------------------------------------
+int vtkReliefSurfaceRepresentation::ProcessViewRequest(
+  vtkInformationRequestKey* requestType, vtkInformation* inInfo, vtkInformation* outInfo)
+{
+  if (!this->Superclass::ProcessViewRequest(requestType, inInfo, outInfo))
+  {
+    return 0;
+  }
+  if (requestType == vtkPVView::REQUEST_RENDER())
+  {
+    this->UpdateAttachedColorTexture();
+  }
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkReliefSurfaceRepresentation::UpdateAttachedColorTexture()
+{
+  if (this->UserTexture)
+  {
+    return;
+  }
+  vtkSmartPointer<vtkImageData> color;
+  for (vtkDataObject* leaf : mesolight::DataObjectLeaves(this->Mapper->GetInputDataObject(0, 0)))
+  {
+    if ((color = vtkAttachReliefTexture::GetAttachedColorTexture(leaf)))
+    {
+      break;
+    }
+  }
+  if (!color)
+  {
+    if (this->Actor->GetTexture() == this->AttachedColorTexture)
+    {
+      this->Actor->SetTexture(nullptr);
+    }
+    return;
+  }
+  // Re-upload only when the texels changed: the detached image shares the field array.
+  auto* shown = vtkImageData::SafeDownCast(this->AttachedColorTexture->GetInput());
+  if (!shown || shown->GetPointData()->GetScalars() != color->GetPointData()->GetScalars())
+  {
+    this->AttachedColorTexture->SetInputData(color);
+  }
+  if (this->Actor->GetTexture() != this->AttachedColorTexture)
+  {
+    this->Actor->SetTexture(this->AttachedColorTexture);
+  }
 }
 
 //------------------------------------------------------------------------------

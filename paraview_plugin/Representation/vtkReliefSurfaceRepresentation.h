@@ -7,6 +7,9 @@
  * The relief texture and the optional light set come with the data, attached as field data by
  * vtkAttachReliefTexture ("Attach Relief Texture" filter), so every MPI rank draws its piece
  * with the whole texture and writes the relief's depth, which IceT composites.
+ * A colour image attached the same way (Attach Relief Texture's Color Texture input, e.g. the
+ * albedo of Depth Hallucination) becomes the actor's texture, unless the user chose a Texture:
+ * ParaView's own texture property only takes images its readers load, and those read no EXR.
  * The mapper and the LOD mapper share one vtkReliefProperty (GetReliefProperty()); the setters
  * below are the ParaView proxy's commands (MesolightRelief.xml), each setting that property.
  */
@@ -16,7 +19,8 @@
 
 #include "MesolightParaViewReliefModule.h" // for export macro
 #include "vtkGeometryRepresentationWithFaces.h"
-#include "vtkNew.h" // for ReliefProperty
+#include "vtkNew.h"     // for ReliefProperty
+#include "vtkTexture.h" // for vtkNew<vtkTexture>
 
 class vtkReliefProperty;
 
@@ -52,11 +56,23 @@ public:
   /** The relief settings of both the mapper and the LOD mapper. */
   vtkReliefProperty* GetReliefProperty();
 
+  /** The user's Texture; it wins over an attached colour texture. */
+  void SetTexture(vtkTexture* texture) override;
+
+  /** On render requests: the attached colour texture becomes the actor's texture. */
+  int ProcessViewRequest(vtkInformationRequestKey* requestType, vtkInformation* inInfo,
+    vtkInformation* outInfo) override;
+
 protected:
   vtkReliefSurfaceRepresentation();
   ~vtkReliefSurfaceRepresentation() override = default;
 
   vtkNew<vtkReliefProperty> ReliefProperty;
+  vtkNew<vtkTexture> AttachedColorTexture;
+  vtkTexture* UserTexture = nullptr; // not owned: the superclass' actor holds it
+
+  /** Shows the colour image attached to the mapper's input, or removes the one shown. */
+  void UpdateAttachedColorTexture();
 
 private:
   vtkReliefSurfaceRepresentation(const vtkReliefSurfaceRepresentation&) = delete;

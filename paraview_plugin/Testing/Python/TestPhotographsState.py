@@ -3,7 +3,8 @@
 a geometry image's macro mesh, lit by median-cut lights) loads in pvbatch from this checkout's
 photographs (data_directory) and renders the relief model: it covers much of the view, the light
 set lights it (exposure 0 must darken it), and the hallucinated depth shows (a relief flattened to
-depth 0 must change the image)."""
+depth 0 must change the image), and the hallucinated albedo colours it (the stone is warm: taking
+the Color Texture input away must make the model bluer, by about the albedo's own red/blue ratio)."""
 import os
 import sys
 
@@ -36,6 +37,34 @@ def shot(name):
 lit = shot("pv-photographs-state.png")
 background = lit[2, 2]
 covered = np.any(np.abs(lit.astype(int) - background.astype(int)) > 8, axis=2)
+
+
+def red_over_blue(image):
+    pixels = image[covered].astype(float)
+    return pixels[:, 0].mean() / max(pixels[:, 2].mean(), 1.0)
+
+
+albedo = model.ColorTexture
+model.ColorTexture = []
+uncoloured = shot("pv-photographs-state-no-albedo.png")
+model.ColorTexture = albedo
+
+
+def attached(name):
+    model.UpdatePipeline()
+    return any(model.FieldData.GetArray(i).Name == name
+               for i in range(model.FieldData.GetNumberOfArrays()))
+
+
+# Emptying an optional input disconnects it (null_on_empty): before, the filter kept the old one.
+lights = model.LightSet
+model.LightSet = []
+if attached("MesolightLightSet"):
+    failures.append("emptying Light Set should detach the light set")
+model.LightSet = lights
+if not attached("MesolightLightSet") or not attached("MesolightColorTexture"):
+    failures.append("the light set and albedo should be attached again")
+colour_gain = red_over_blue(lit) / red_over_blue(uncoloured) if covered.any() else 0.0
 display.OverrideDepthScale = 1
 display.ReliefDepthScale = 0.0
 flat = shot("pv-photographs-state-flat.png")
@@ -53,6 +82,10 @@ if coverage < 20.0:
     failures.append("the model should cover much of the view")
 if brightness < dark_brightness + 30.0:
     failures.append("the light set should light the model")
+print("red/blue of the model with the albedo over without: %.3f (the photographs' mean red/blue: "
+      "1.34)" % colour_gain)
+if colour_gain < 1.12:
+    failures.append("the hallucinated albedo should colour the model (Color Texture input)")
 if relief_change < 2.0:
     failures.append("the hallucinated relief should show")
 if failures:
