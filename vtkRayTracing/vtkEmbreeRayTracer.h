@@ -136,7 +136,8 @@ public:
 
   ///@{
   /** Threads: 1 traces on the calling thread only, any other value on all of vtkSMPTools'
-   * threads (vtkSMPTools::Initialize sets how many); and Ahern of the distributed rays. */
+   * threads (vtkSMPTools::Initialize sets how many). Seed: the random-number stream of the
+   * distributed rays (the same value gives the same image). */
   vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
   vtkGetMacro(NumberOfThreads, int);
   vtkSetMacro(Seed, vtkTypeUInt64);
