@@ -12,6 +12,7 @@
 #include "OutputFile.h"
 #include "Timing.h"
 
+#include "IrradianceVolume.h"
 #include "LightField.h"
 #include "ObjectGatherer.h"
 #include "ObjectReference.h"
@@ -88,6 +89,9 @@ int RunGatherBenchmark(const std::vector<std::string>& args)
   cl.AddValue("--subdivisions", "L,L,..", "subdivision levels (0-3)", "0,1,2,3");
   cl.AddValue("--rings", "N", "the sphere's rings (2N segments)", "8");
   cl.AddValue("--sets", "S,S,..", "direction sets: all, half, importance", "all,half,importance");
+  cl.AddValue("--volumes", "R,R,..",
+    "irradiance volumes of R points along the longest side, each a row (set volumeR); 0: none",
+    "0");
   cl.AddValue("--repeats", "R", "fastest of R runs per timing", "3");
   cl.AddValue("--path", "N", "steps of the cache path (0: none)", "10");
   cl.AddFlag("--error", "also the error against the path tracer (slow)");
@@ -129,6 +133,17 @@ int RunGatherBenchmark(const std::vector<std::string>& args)
     !cl.GetInt("--points", 1, 1 << 20, points, error))
   {
     return cl.UsageError(error);
+  }
+  std::vector<int> volumeResolutions;
+  if (!cl.GetIntList("--volumes", 0, 128, volumeResolutions, error))
+  {
+    return cl.UsageError(error);
+  }
+  volumeResolutions.erase(
+    std::remove(volumeResolutions.begin(), volumeResolutions.end(), 0), volumeResolutions.end());
+  if (std::count(volumeResolutions.begin(), volumeResolutions.end(), 1) > 0)
+  {
+    return cl.UsageError("--volumes: 1 is not a grid (use 2-128)");
   }
   std::vector<vlf::DirectionSampling> sets;
   for (const std::string& name : cl.GetStringList("--sets"))
@@ -187,13 +202,38 @@ int RunGatherBenchmark(const std::vector<std::string>& args)
       const glm::mat4 placement = Placement(*field, fieldPath.empty(), radius);
       vlf::ObjectMesh sphere = vlf::MakeSphere(radius, rings, 2 * rings);
       std::map<int, vlf::ObjectReference> references;
+      std::map<int, std::unique_ptr<vlf::IrradianceVolume>> volumes;
+      for (const int resolution : volumeResolutions)
+      {
+        vlf::IrradianceVolumeSettings volumeSettings;
+        volumeSettings.Resolution = resolution;
+        auto& volume = volumes[resolution];
+        volume = std::make_unique<vlf::IrradianceVolume>(*field, volumeSettings);
+        std::printf("irradiance volume %d (%d x %d x %d points, %zu valid, %zu normals): built in "
+                    "%.2f s on all threads\n",
+          resolution, volume->Dimensions()[0], volume->Dimensions()[1], volume->Dimensions()[2],
+          volume->ValidPointCount(), volume->NormalCount(), volume->BuildSeconds());
+      }
       for (const int level : levels)
       {
+        // One row per direction set, then one per irradiance volume (set "volumeR").
+        std::vector<std::pair<vlf::DirectionSampling, int>> rows;
         for (const vlf::DirectionSampling set : sets)
         {
+          rows.emplace_back(set, 0);
+        }
+        for (const int resolution : volumeResolutions)
+        {
+          rows.emplace_back(vlf::DirectionSampling::All, resolution);
+        }
+        for (const auto& [set, volumeRow] : rows)
+        {
+          const std::string setName =
+            volumeRow > 0 ? "volume" + std::to_string(volumeRow) : std::string(SamplingName(set));
           vlf::GatherSettings settings;
           settings.Subdivision = level;
           settings.Directions = set;
+          settings.Volume = volumeRow > 0 ? volumes[volumeRow].get() : nullptr;
           settings.UseCache = false;
           vlf::ObjectGatherer gatherer(*field);
           settings.Threads = 1;
@@ -225,20 +265,19 @@ int RunGatherBenchmark(const std::vector<std::string>& args)
             }
             const double e = vlf::MeanRelativeError(shaded.Radiance, found->second);
             errorText = std::to_string(e);
-            ChartSeries& series = errorSeries[std::string(SamplingName(set)) + ", subdivision " +
-              std::to_string(level)];
-            series.Name = std::string(SamplingName(set)) + ", subdivision " + std::to_string(level);
+            ChartSeries& series = errorSeries[setName + ", subdivision " + std::to_string(level)];
+            series.Name = setName + ", subdivision " + std::to_string(level);
             series.X.push_back(count);
             series.Y.push_back(100.0 * e);
           }
           std::printf("%10d %5d %8zu %10s %6zu %14.1f %14.1f %14.1f %10s\n", count, level,
-            shaded.GatheredPoints, SamplingName(set), shaded.DirectionsUsed, 1e6 * cpu / n,
+            shaded.GatheredPoints, setName.c_str(), shaded.DirectionsUsed, 1e6 * cpu / n,
             1e6 * wall / n, 1e6 * all / n, errorText.c_str());
           std::fflush(stdout);
-          csv << count << "," << level << "," << shaded.GatheredPoints << "," << SamplingName(set)
-              << "," << shaded.DirectionsUsed << "," << 1e6 * cpu / n << "," << 1e6 * wall / n
-              << "," << 1e6 * all / n << "," << errorText << ",\n";
-          if (set == vlf::DirectionSampling::All)
+          csv << count << "," << level << "," << shaded.GatheredPoints << "," << setName << ","
+              << shaded.DirectionsUsed << "," << 1e6 * cpu / n << "," << 1e6 * wall / n << ","
+              << 1e6 * all / n << "," << errorText << ",\n";
+          if (set == vlf::DirectionSampling::All && volumeRow == 0)
           {
             ChartSeries& series = timeSeries["subdivision " + std::to_string(level)];
             series.Name = "subdivision " + std::to_string(level) + " (" +

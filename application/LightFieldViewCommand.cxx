@@ -270,7 +270,12 @@ int Render(const std::vector<std::string>& args)
               << ", gather " << 1000.0 * actor->GetLastGatherSeconds() << " ms, "
               << (actor->GetShadedObject() ? actor->GetShadedObject()->Mesh.Points.size() : 0)
               << " points";
-    if (actor->GetShadedObject())
+    if (actor->GetObjectIrradianceVolume() > 0)
+    {
+      std::cout << " from an irradiance volume of " << actor->GetObjectIrradianceVolume()
+                << " points a side";
+    }
+    else if (actor->GetShadedObject())
     {
       std::cout << " over " << actor->GetShadedObject()->DirectionsUsed << " directions";
     }

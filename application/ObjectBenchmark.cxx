@@ -88,6 +88,10 @@ int Bench(const std::vector<std::string>& args)
   cl.AddValue("--subdivisions", "L,L,..", "subdivision levels of the gathered object", "0,1,2,3");
   cl.AddValue("--points", "N", "points of the sphere before subdivision (about)", "1000");
   cl.AddValue("--gather-directions", "SET", "all, half or importance", "all");
+  cl.AddValue("--gather-volume", "N",
+    "0: gather at every vertex; N (2-128): an irradiance volume of N points (built in the "
+    "warm-up frames)",
+    "0");
   cl.AddValue("--mode", "MODE", "walkthrough mode: progressive or coherent", "coherent");
   cl.AddValue("--shadows", "MODE", "none, black, blend, field, pcf or soft", "field");
   cl.AddValue("--rays", "N", "rays per subfield side", "32");
@@ -134,6 +138,11 @@ int Bench(const std::vector<std::string>& args)
   {
     return cl.UsageError(
       "--gather-directions '" + directionSet + "' is not all, half or importance");
+  }
+  int gatherVolume = 0;
+  if (!cl.GetInt("--gather-volume", 0, 128, gatherVolume, error) || gatherVolume == 1)
+  {
+    return cl.UsageError(error.empty() ? "--gather-volume 1 is not a grid: use 0 or 2-128" : error);
   }
   if (cl.Positional().size() > 1)
   {
@@ -182,6 +191,7 @@ int Bench(const std::vector<std::string>& args)
     shading->SetLightFieldActor(scene);
     shading->SetShadingToGather();
     shading->SetGatherDirections(gatherDirections);
+    scene->SetObjectIrradianceVolume(gatherVolume);
     object->SetMapper(shading);
     object->GetProperty()->SetDiffuseColor(0.7, 0.7, 0.7);
     scene->SetMovableObject(object);

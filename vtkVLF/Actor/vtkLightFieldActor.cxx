@@ -263,6 +263,8 @@ bool vtkLightFieldActor::UseField(const mesolight::vlf::LightField* field)
   impl.HaveLastView = false;
   impl.WarnedNoMirrors = false;
   impl.ForgetObjectState(); // the new tracer has no object yet
+  impl.Volume.reset();      // it was the old field's
+  impl.VolumeField = nullptr;
   this->LastError.clear();
   if (field)
   {
@@ -663,6 +665,7 @@ void vtkLightFieldActor::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MovableObject: " << static_cast<void*>(this->Impl->Object.GetPointer()) << "\n";
   os << indent << "ObjectSubdivision: " << this->ObjectSubdivision << "\n";
   os << indent << "ObjectGatherDirections: " << this->ObjectGatherDirections << "\n";
+  os << indent << "ObjectIrradianceVolume: " << this->ObjectIrradianceVolume << "\n";
   os << indent << "IgnoreObjectForTesting: " << this->IgnoreObjectForTesting << "\n";
   os << indent << "ShadowMode: " << GetShadowModeAsString(this->GetShadowMode()) << "\n";
   os << indent << "ShadowMapResolution: " << this->GetShadowMapResolution() << "\n";

@@ -205,6 +205,13 @@ public:
   vtkGetMacro(ObjectGatherDirections, int);
   /** The set of a name "all", "half" or "importance", or -1. */
   static int GetGatherDirectionsFromString(const std::string& name);
+  /** The object's irradiance from a precomputed irradiance volume (mesolight::vlf::
+   * IrradianceVolume): 0 (default) gathers at every vertex along the directions; N >= 2 reads
+   * a volume of N grid points along the scene's longest side instead, built once per field
+   * (seconds) and then about a microsecond per vertex, at a few points more error near
+   * surfaces (docs/walkthrough.md). */
+  vtkSetClampMacro(ObjectIrradianceVolume, int, 0, 128);
+  vtkGetMacro(ObjectIrradianceVolume, int);
   /**
    * Brings the object up to date for the current field: rereads its polydata when its MTime
    * changed, places it, updates the tracer's instance and gathers its shading when anything
@@ -335,6 +342,7 @@ private:
   int ReflectionBouncesShortForTesting = 0;
   int ObjectSubdivision = 0;
   int ObjectGatherDirections = AllDirections;
+  int ObjectIrradianceVolume = 0;
   bool IgnoreObjectForTesting = false;
   std::string LastObjectProblem;
   double LastObjectSeconds = 0.0;

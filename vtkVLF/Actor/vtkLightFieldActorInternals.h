@@ -7,6 +7,7 @@
 #include "vtkLightFieldActor.h"
 
 #include "EmitterLights.h"
+#include "IrradianceVolume.h"
 #include "LightField.h"
 #include "ObjectGatherer.h"
 #include "ObjectMesh.h"
@@ -81,6 +82,7 @@ struct vtkLightFieldActor::Internals
   glm::mat4 ObjectPlacement{ 1.0f };
   int ObjectGatherSubdivision = -1;
   int ObjectGatherDirections = -1;
+  int ObjectGatherVolume = -1;
   unsigned long ObjectGatherMesh = 0;
   bool ObjectIgnored = false;
   unsigned long TracedMesh = 0; // (mesh version, subdivision) the tracer's instance holds
@@ -89,6 +91,10 @@ struct vtkLightFieldActor::Internals
   unsigned long ObjectVersionAtLastFrame = 0;
   std::unique_ptr<mesolight::vlf::ObjectGatherer> Gatherer;
   bool Gathered = false;
+  // The irradiance volume of ObjectIrradianceVolume, for the field it was built from.
+  std::unique_ptr<mesolight::vlf::IrradianceVolume> Volume;
+  const mesolight::vlf::LightField* VolumeField = nullptr;
+  int VolumeResolution = 0;
   std::unique_ptr<mesolight::vlf::LightApproximation> Lights;
   std::string ObjectProblemWarned;
   void ForgetObjectState()
@@ -99,6 +105,7 @@ struct vtkLightFieldActor::Internals
     this->ObjectPlaced = false;
     this->ObjectGatherSubdivision = -1;
     this->ObjectGatherDirections = -1;
+    this->ObjectGatherVolume = -1;
     this->TracedMesh = 0;
     this->TracedSubdivision = -1;
     this->Gatherer.reset();

@@ -271,7 +271,8 @@ bool vtkLightFieldActor::UpdateMovableObject()
   const bool ignore = this->IgnoreObjectForTesting;
   const bool meshChanged = impl.ObjectGatherMesh != impl.ObjectMeshVersion ||
     impl.ObjectGatherSubdivision != this->ObjectSubdivision ||
-    impl.ObjectGatherDirections != this->ObjectGatherDirections;
+    impl.ObjectGatherDirections != this->ObjectGatherDirections ||
+    impl.ObjectGatherVolume != this->ObjectIrradianceVolume;
   if (impl.ObjectPlaced && placement == impl.ObjectPlacement && !meshChanged &&
     ignore == impl.ObjectIgnored)
   {
@@ -299,6 +300,20 @@ bool vtkLightFieldActor::UpdateMovableObject()
                                                            : vlf::DirectionSampling::All;
   try
   {
+    if (this->ObjectIrradianceVolume > 0)
+    {
+      if (!impl.Volume || impl.VolumeField != impl.Field ||
+        impl.VolumeResolution != this->ObjectIrradianceVolume)
+      {
+        impl.Volume.reset();
+        vlf::IrradianceVolumeSettings volume;
+        volume.Resolution = this->ObjectIrradianceVolume;
+        impl.Volume.reset(new vlf::IrradianceVolume(*impl.Field, volume));
+        impl.VolumeField = impl.Field;
+        impl.VolumeResolution = this->ObjectIrradianceVolume;
+      }
+      settings.Volume = impl.Volume.get();
+    }
     // The model-space overload: the subdivision is kept while the object only moves, and the
     // gatherer's cache re-gathers only the points that moved.
     impl.Gatherer->Gather(impl.ObjectModel, placement, settings);
@@ -348,6 +363,7 @@ bool vtkLightFieldActor::UpdateMovableObject()
   impl.ObjectGatherMesh = impl.ObjectMeshVersion;
   impl.ObjectGatherSubdivision = this->ObjectSubdivision;
   impl.ObjectGatherDirections = this->ObjectGatherDirections;
+  impl.ObjectGatherVolume = this->ObjectIrradianceVolume;
   impl.ObjectIgnored = ignore;
   ++impl.ObjectVersion;
 

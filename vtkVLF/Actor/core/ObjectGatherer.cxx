@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "ObjectGatherer.h"
 
+#include "IrradianceVolume.h"
+
 #include "MathConstants.h"
 #include "ParallelFor.h"
 
@@ -503,6 +505,7 @@ const ShadedObject& ObjectGatherer::Gather(
   HashValue(key, settings.Lookup.SceneOcclusion);
   HashValue(key, settings.Directions);
   HashValue(key, settings.ImportanceFraction);
+  HashValue(key, reinterpret_cast<std::uintptr_t>(settings.Volume));
   if (!settings.UseCache || key != this->CacheKey || this->CachedValid.size() != n)
   {
     this->CachedValid.assign(n, 0);
@@ -563,7 +566,7 @@ const ShadedObject& ObjectGatherer::Gather(
   std::vector<std::uint32_t> directions;
   std::vector<float> multipliers;
   this->DirectionsFor(settings, directions, multipliers);
-  shaded.DirectionsUsed = directions.size();
+  shaded.DirectionsUsed = settings.Volume ? 0 : directions.size();
   const Lookup lookup(this->Field);
   const GatherOptions& options = settings.Lookup;
   const float uniform = 2.0f * Pi<float> / static_cast<float>(this->Field.SubfieldCount());
@@ -577,7 +580,7 @@ const ShadedObject& ObjectGatherer::Gather(
   // move are cheaper through the lookup). The occlusion switch of the negative tests uses the
   // lookup.
   LineCache lines;
-  if (options.SceneOcclusion && !todo.empty())
+  if (options.SceneOcclusion && !todo.empty() && !settings.Volume)
   {
     glm::vec3 lower(std::numeric_limits<float>::max()), upper(-lower);
     for (const std::uint32_t i : todo)
@@ -609,6 +612,18 @@ const ShadedObject& ObjectGatherer::Gather(
       normal[v] = shaded.Mesh.Normals[points[v]];
       sum[v] = glm::vec3(0.0f);
       total[v] = 0.0f;
+    }
+    if (settings.Volume) // the precomputed irradiance instead of the directions
+    {
+      for (std::size_t v = 0; v < count; ++v)
+      {
+        const std::uint32_t i = points[v];
+        shaded.Irradiance[i] = settings.Volume->Irradiance(p[v], normal[v]);
+        this->CachedPositions[i] = shaded.Mesh.Points[i];
+        this->CachedNormals[i] = shaded.Mesh.Normals[i];
+        this->CachedValid[i] = 1;
+      }
+      return;
     }
     for (std::size_t q = 0; q < directions.size(); ++q)
     {

@@ -42,6 +42,8 @@ namespace mesolight
 namespace vlf
 {
 
+class IrradianceVolume;
+
 // Which of the field's directions a vertex gathers along.
 enum class DirectionSampling
 {
@@ -77,6 +79,11 @@ struct GatherSettings
   bool SkipBackFacing = false;
   glm::vec3 Eye{ 0.0f };
   bool ReflectionsNeedBackFaces = false;
+
+  // Optional: irradiance read from a precomputed IrradianceVolume of the same field (a
+  // trilinear spherical-harmonic lookup per point) instead of gathered along the directions;
+  // Directions and the Lookup options then play no part. Not owned.
+  const IrradianceVolume* Volume = nullptr;
 
   int Threads = 0; // 1: the calling thread only (timings); else all of ParallelFor's threads
   ProgressCallback Progress; // between batches of points; false stops with AbortedError
