@@ -9,16 +9,16 @@
  *   MesolightLightSet that Attach Relief Texture adds), else 0. The panel's GenericDecorators
  *   show Exposure, Tone Mapping, Light Set Threshold and Shadowed Lights only then (ParaView's
  *   decorators test properties of the representation proxy, not the data's field arrays).
- * - The first time the relief is the only visible data of a render view left in 2D interaction,
- *   the view goes to 3D and its camera is reset. ParaView 5.11 chooses the mode in
- *   pqRenderView::updateInteractionMode, called by pqApplyBehavior::showData only while the
- *   applied output is the only visible data: 2D when its bounds are flat along an axis. In the
- *   README pipeline that is the Plane's Apply; at Attach Relief Texture's Apply the plane is
- *   still visible (replace_input hides it afterwards), so the rule never sees the relief, which
- *   has depth. This applies ParaView's rule for non-flat data at that moment, once per
- *   representation, only with Edit > Settings > Render View > Default Interaction Mode on
- *   Automatic, and never for a representation loaded from a state file (its saved camera and
- *   mode stand).
+ * - At the first update that shows the relief, if it is then the only visible data of a render
+ *   view left in 2D interaction, the view goes to 3D and its camera is reset. ParaView 5.11
+ *   chooses the mode in pqRenderView::updateInteractionMode, called by
+ *   pqApplyBehavior::showData only while the applied output is the only visible data: 2D when
+ *   its bounds are flat along an axis. In the README pipeline that is the Plane's Apply; at
+ *   Attach Relief Texture's Apply the plane is still visible (replace_input hides it
+ *   afterwards), so the rule never sees the relief, which has depth. This applies ParaView's
+ *   rule for non-flat data at that moment, once per representation, only with Edit > Settings >
+ *   Render View > Default Interaction Mode on Automatic, and never for a representation loaded
+ *   from a state file (its saved camera and mode stand).
  */
 
 #ifndef vtkSMReliefSurfaceRepresentationProxy_h
