@@ -17,9 +17,8 @@ else:
     p = g.readme_pipeline(view, lights=(step == 3))
     display = pvs.GetDisplayProperties(p["attached"], view)
     if step == 3:
-        # The user's click on the "2D" button: 3D interaction, perspective, an oblique view.
-        view.InteractionMode = "3D"
-        view.CameraParallelProjection = 0
+        # The view is in 3D interaction after the pipeline (the relief's proxy class); the user
+        # orbits to an oblique view.
         view.CameraPosition = [0.0, -1.25, 0.9]
         view.CameraFocalPoint = [0.0, 0.0, -0.05]
         view.CameraViewUp = [0.0, 0.0, 1.0]

@@ -24,7 +24,11 @@ DELIBERATE = {
         "information about the last read (Python: GetPropertyValue)",
     ("MesolightOBJSceneReader", "DegenerateTriangles"):
         "information about the last read (Python: GetPropertyValue)",
+    ("MesolightReliefSurfaceRepresentation", "LightSetAttached"):
+        "set from the data by the proxy class; the panel's decorators read it",
 }
+# ReliefSurfaceRepresentationProxy: a representation with its own client-side proxy class.
+REPRESENTATION_TAGS = ("RepresentationProxy", "ReliefSurfaceRepresentationProxy")
 PANEL_TYPES = ("IntVectorProperty", "DoubleVectorProperty", "StringVectorProperty")
 
 
@@ -46,7 +50,7 @@ def main():
         exposed = exposed_representation_properties(root)
         for group in root.iter("ProxyGroup"):
             for proxy in group:
-                if proxy.tag not in ("SourceProxy", "RepresentationProxy", "Proxy"):
+                if proxy.tag not in ("SourceProxy", "Proxy") + REPRESENTATION_TAGS:
                     continue
                 pname = proxy.get("name")
                 prototype = pxm.SMProxyManager.GetPrototypeProxy(group.get("name"), pname)
@@ -77,7 +81,7 @@ def main():
                         failures.append("%s: information-only, not in the panel" % where)
                     if prop.get("panel_visibility") == "never":
                         failures.append("%s: panel_visibility never, undocumented" % where)
-                    if proxy.tag == "RepresentationProxy" and name not in exposed:
+                    if proxy.tag in REPRESENTATION_TAGS and name not in exposed:
                         failures.append("%s: not exposed to the geometry representation" % where)
     print("%d properties checked" % counted)
     if counted < 50:

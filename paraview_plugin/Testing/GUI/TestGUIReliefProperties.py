@@ -48,8 +48,11 @@ CASES = {
 def representation_properties():
     xml_dir = os.environ["MESOLIGHT_PLUGIN_XML_DIR"]
     root = ET.parse(os.path.join(xml_dir, "MesolightRelief.xml")).getroot()
-    proxy = root.find(".//RepresentationProxy[@name='MesolightReliefSurfaceRepresentation']")
-    return [e.get("name") for e in proxy if e.get("name") and e.tag.endswith("Property")]
+    proxy = root.find(".//ReliefSurfaceRepresentationProxy"
+                      "[@name='MesolightReliefSurfaceRepresentation']")
+    # LightSetAttached (panel_visibility never) is set from the data, not by the user.
+    return [e.get("name") for e in proxy if e.get("name") and e.tag.endswith("Property")
+            and e.get("panel_visibility") != "never"]
 
 
 def main():

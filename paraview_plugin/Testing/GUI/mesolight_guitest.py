@@ -9,7 +9,8 @@ with the same server-manager controller it uses: every output port shown by
 ShowInPreferredView (which honours the proxy's <View> and <RepresentationType> hints), the
 camera reset when the data is the only visible one, the interaction mode chosen as
 pqRenderView::updateInteractionMode chooses it (2D for data with a flat bounding box), and the
-inputs hidden as the <Visibility replace_input> hint says.
+inputs hidden as the <Visibility replace_input> hint says. TestGUIApplyButton.xml clicks the real
+Apply button instead.
 """
 import os
 import sys
@@ -79,10 +80,9 @@ def _update_interaction_mode(view, source, port):
         view.InteractionMode = "3D"
         return
     axis = flat[0]
-    width = max(extents) or 2985.0
     focal = [(bounds[2 * i] + bounds[2 * i + 1]) / 2 for i in range(3)]
     position = list(focal)
-    position[axis] = focal[axis] + 3.35 * width
+    position[axis] = focal[axis] + 10000  # ParaView 5.11.0 (5.11.2: 3.35 x the widest extent)
     up = [0.0, 0.0, 0.0]
     up[(axis + 2) % 3] = 1.0
     view.CameraFocalPoint = focal

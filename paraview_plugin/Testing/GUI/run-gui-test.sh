@@ -8,7 +8,10 @@
 # or its failures to $MESOLIGHT_GUI_RESULT: `paraview --script` runs it through
 # vtkPythonInterpreter::RunSimpleString and exits 0 whatever happened, so a missing "OK" (an
 # exception, a crash, a dialog that blocked) is the failure this wrapper reports.
-#   run-gui-test.sh SCRIPT.py [paraview options...]     (needs DISPLAY: scripts/xvfb.sh)
+# SCRIPT.xml is a QtTesting event file played by `paraview --test-script=SCRIPT.xml --exit` (it
+# clicks the real Apply button; mesolight_xmltest.py's finish() writes the result): then a
+# failed event or pqcheck (paraview's exit status) is a failure too.
+#   run-gui-test.sh SCRIPT.py|SCRIPT.xml [paraview options...]   (needs DISPLAY: scripts/xvfb.sh)
 set -euo pipefail
 script="$1"
 shift
@@ -26,8 +29,15 @@ result="$home/result.txt"
 # The scripts' shared module beside them (paraview --script defines no __file__).
 export PYTHONPATH="$(cd "$(dirname "$script")" && pwd)${PYTHONPATH:+:$PYTHONPATH}"
 status=0
+run=(--script="$script")
+case "$script" in *.xml) run=(--test-script="$script") ;; esac
 HOME="$home" XDG_CONFIG_HOME="$home/.config" XDG_RUNTIME_DIR="$home" \
-  MESOLIGHT_GUI_RESULT="$result" timeout 600 paraview --script="$script" --exit "$@" || status=$?
+  MESOLIGHT_GUI_RESULT="$result" timeout 600 paraview "${run[@]}" --exit "$@" || status=$?
+if [[ "$script" == *.xml && $status -ne 0 ]]; then
+  echo "GUI test failed: $(basename "$script") (a test event failed: paraview exit status $status)" >&2
+  [ -f "$result" ] && cat "$result" >&2
+  exit 1
+fi
 if [ -f "$result" ] && [ "$(head -1 "$result")" = "OK" ]; then
   echo "GUI test passed: $(basename "$script")"
   exit 0

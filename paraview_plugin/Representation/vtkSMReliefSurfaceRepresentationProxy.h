@@ -1,0 +1,62 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @class   vtkSMReliefSurfaceRepresentationProxy
+ * @brief   The server-manager (client-side) proxy of the Relief Surface representation: what the
+ *          GUI needs from it that proxy XML cannot say, without Qt.
+ *
+ * After every update of a view showing it (ViewUpdated):
+ * - LightSetAttached becomes 1 when the shown data carries a light set (the field array
+ *   MesolightLightSet that Attach Relief Texture adds), else 0. The panel's GenericDecorators
+ *   show Exposure, Tone Mapping, Light Set Threshold and Shadowed Lights only then (ParaView's
+ *   decorators test properties of the representation proxy, not the data's field arrays).
+ * - At the first update that shows the relief, if it is then the only visible data of a render
+ *   view left in 2D interaction, the view goes to 3D and its camera is reset. ParaView 5.11
+ *   chooses the mode in pqRenderView::updateInteractionMode, called by
+ *   pqApplyBehavior::showData only while the applied output is the only visible data: 2D when
+ *   its bounds are flat along an axis. In the README pipeline that is the Plane's Apply; at
+ *   Attach Relief Texture's Apply the plane is still visible (replace_input hides it
+ *   afterwards), so the rule never sees the relief, which has depth. This applies ParaView's
+ *   rule for non-flat data at that moment, once per representation, only with Edit > Settings >
+ *   Render View > Default Interaction Mode on Automatic, and never for a representation loaded
+ *   from a state file (its saved camera and mode stand).
+ */
+
+#ifndef vtkSMReliefSurfaceRepresentationProxy_h
+#define vtkSMReliefSurfaceRepresentationProxy_h
+
+#include "MesolightParaViewReliefModule.h" // for export macro
+#include "vtkSMRepresentationProxy.h"
+
+class MESOLIGHTPARAVIEWRELIEF_EXPORT vtkSMReliefSurfaceRepresentationProxy
+  : public vtkSMRepresentationProxy
+{
+public:
+  static vtkSMReliefSurfaceRepresentationProxy* New();
+  vtkTypeMacro(vtkSMReliefSurfaceRepresentationProxy, vtkSMRepresentationProxy);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /** Updates LightSetAttached and, once, the view's interaction mode (see the class comment). */
+  void ViewUpdated(vtkSMProxy* view) override;
+
+  /** The field array whose presence means a light set is attached. */
+  static const char* LightSetArrayName() { return "MesolightLightSet"; }
+
+protected:
+  vtkSMReliefSurfaceRepresentationProxy();
+  ~vtkSMReliefSurfaceRepresentationProxy() override = default;
+
+  /** Notes whether the proxy is being created by loading a state file. */
+  void CreateVTKObjects() override;
+
+private:
+  vtkSMReliefSurfaceRepresentationProxy(const vtkSMReliefSurfaceRepresentationProxy&) = delete;
+  void operator=(const vtkSMReliefSurfaceRepresentationProxy&) = delete;
+
+  void UpdateLightSetAttached(vtkSMProxy* composite);
+  void UpdateInteractionMode(vtkSMProxy* composite, vtkSMProxy* view);
+
+  bool LoadedFromState = false;
+  bool InteractionModeChecked = false;
+};
+
+#endif
