@@ -59,8 +59,15 @@ const char* SamplingName(vlf::DirectionSampling s)
 // The object of the benchmark: in the built-in Cornell box the test sphere (radius 40 mm,
 // 130 mm below the ceiling in front of the tall block); in another field a sphere of radius
 // 0.08 (unit-sphere units) at its centre.
-glm::mat4 Placement(const vlf::LightField& field, bool cornell, float& radius)
+glm::mat4 Placement(const vlf::LightField& field, bool cornell, float& radius, bool bracket)
 {
+  if (cornell && bracket)
+  {
+    // The concave bracket of the self-occlusion test, in the free front-right part of the box.
+    radius = 60.0f;
+    return vlf::WorldToUnitSphere(field) *
+      glm::translate(glm::mat4(1.0f), glm::vec3(420.0f, 300.0f, 130.0f));
+  }
   if (cornell)
   {
     radius = 40.0f;
@@ -93,6 +100,10 @@ int RunGatherBenchmark(const std::vector<std::string>& args)
   cl.AddFlag("--error", "also the error against the path tracer (slow)");
   cl.AddValue("--samples", "N", "--error: paths per vertex", "8192");
   cl.AddValue("--points", "N", "--error: vertices compared", "64");
+  cl.AddValue("--object", "sphere|bracket",
+    "the sphere, or a concave bracket (120 x 100 mm, bars 20 mm; 'radius' = half its width)",
+    "sphere");
+  cl.AddValue("--self-occlusion", "on,off", "the object's own occlusion (GatherSettings)", "on");
   cl.AddValue("--csv", "FILE", "write the rows as CSV");
   cl.AddValue(
     "--plot", "FILE.png", "plot us per vertex vs directions (FILE-error.png too with --error)");
@@ -151,11 +162,26 @@ int RunGatherBenchmark(const std::vector<std::string>& args)
     }
   }
   const bool withError = cl.Has("--error");
+  const std::string objectName = cl.Get("--object");
+  if (objectName != "sphere" && objectName != "bracket")
+  {
+    return cl.UsageError("--object: '" + objectName + "' is not sphere or bracket");
+  }
+  const bool bracket = objectName == "bracket";
+  std::vector<bool> selfOcclusion;
+  for (const std::string& name : cl.GetStringList("--self-occlusion"))
+  {
+    if (name != "on" && name != "off")
+    {
+      return cl.UsageError("--self-occlusion: '" + name + "' is not on or off");
+    }
+    selfOcclusion.push_back(name == "on");
+  }
 
   std::ostringstream csv;
-  csv
-    << "directions,subdivision,vertices,set,directions_used,us_per_vertex_1thread_cpu,"
-       "us_per_vertex_1thread_wall,us_per_vertex_all_threads,mean_relative_error,cache_hit_rate\n";
+  csv << "directions,subdivision,vertices,set,directions_used,us_per_vertex_1thread_cpu,"
+         "us_per_vertex_1thread_wall,us_per_vertex_all_threads,mean_relative_error,cache_hit_rate,"
+         "object,self_occlusion,self_facing_vertices\n";
   std::map<std::string, ChartSeries> timeSeries, errorSeries;
   std::printf("%10s %5s %8s %10s %6s %14s %14s %14s %10s\n", "directions", "level", "vertices",
     "set", "used", "us/v 1 thr cpu", "us/v 1 thr wall", "us/v all thr", "error");
@@ -184,69 +210,82 @@ int RunGatherBenchmark(const std::vector<std::string>& args)
       }
       const auto count = static_cast<int>(field->SubfieldCount());
       float radius = 0.0f;
-      const glm::mat4 placement = Placement(*field, fieldPath.empty(), radius);
-      vlf::ObjectMesh sphere = vlf::MakeSphere(radius, rings, 2 * rings);
+      const glm::mat4 placement = Placement(*field, fieldPath.empty(), radius, bracket);
+      vlf::ObjectMesh sphere = bracket
+        ? vlf::MakeBracket(2.0f * radius, 5.0f / 3.0f * radius, radius / 3.0f, 2.0f * radius)
+        : vlf::MakeSphere(radius, rings, 2 * rings);
       std::map<int, vlf::ObjectReference> references;
       for (const int level : levels)
       {
-        for (const vlf::DirectionSampling set : sets)
-        {
-          vlf::GatherSettings settings;
-          settings.Subdivision = level;
-          settings.Directions = set;
-          settings.UseCache = false;
-          vlf::ObjectGatherer gatherer(*field);
-          settings.Threads = 1;
-          double cpu = 1e30;
-          const double wall = FastestSeconds(repeats,
-            [&]
-            {
-              const double start = ThreadCpuSeconds();
-              gatherer.Gather(sphere, placement, settings);
-              cpu = std::min(cpu, ThreadCpuSeconds() - start);
-            });
-          settings.Threads = 0;
-          const double all =
-            FastestSeconds(repeats, [&] { gatherer.Gather(sphere, placement, settings); });
-          const vlf::ShadedObject& shaded = gatherer.Result();
-          const double n = static_cast<double>(shaded.GatheredPoints);
-          std::string errorText = "";
-          if (withError)
+        for (const bool self : selfOcclusion)
+          for (const vlf::DirectionSampling set : sets)
           {
-            auto found = references.find(level);
-            if (found == references.end())
+            vlf::GatherSettings settings;
+            settings.ObjectOcclusion = self;
+            settings.Subdivision = level;
+            settings.Directions = set;
+            settings.UseCache = false;
+            vlf::ObjectGatherer gatherer(*field);
+            settings.Threads = 1;
+            double cpu = 1e30;
+            const double wall = FastestSeconds(repeats,
+              [&]
+              {
+                const double start = ThreadCpuSeconds();
+                gatherer.Gather(sphere, placement, settings);
+                cpu = std::min(cpu, ThreadCpuSeconds() - start);
+              });
+            settings.Threads = 0;
+            const double all =
+              FastestSeconds(repeats, [&] { gatherer.Gather(sphere, placement, settings); });
+            const vlf::ShadedObject& shaded = gatherer.Result();
+            const double n = static_cast<double>(shaded.GatheredPoints);
+            std::string errorText = "";
+            if (withError)
             {
-              vlf::ObjectReferenceSettings reference;
-              reference.Samples = samples;
-              reference.MaxPoints = static_cast<std::size_t>(points);
-              found =
-                references.emplace(level, vlf::TraceObjectReference(*field, shaded.Mesh, reference))
-                  .first;
+              auto found = references.find(level);
+              if (found == references.end())
+              {
+                vlf::ObjectReferenceSettings reference;
+                reference.Samples = samples;
+                reference.MaxPoints = static_cast<std::size_t>(points);
+                found = references
+                          .emplace(level, vlf::TraceObjectReference(*field, shaded.Mesh, reference))
+                          .first;
+              }
+              const double e = vlf::MeanRelativeError(shaded.Radiance, found->second);
+              errorText = std::to_string(e);
+              const std::string name = std::string(SamplingName(set)) + ", subdivision " +
+                std::to_string(level) + (self ? "" : ", no self-occlusion");
+              ChartSeries& series = errorSeries[name];
+              series.Name = name;
+              series.X.push_back(count);
+              series.Y.push_back(100.0 * e);
             }
-            const double e = vlf::MeanRelativeError(shaded.Radiance, found->second);
-            errorText = std::to_string(e);
-            ChartSeries& series = errorSeries[std::string(SamplingName(set)) + ", subdivision " +
-              std::to_string(level)];
-            series.Name = std::string(SamplingName(set)) + ", subdivision " + std::to_string(level);
-            series.X.push_back(count);
-            series.Y.push_back(100.0 * e);
+            std::printf("%10d %5d %8zu %10s %6zu %14.1f %14.1f %14.1f %10s\n", count, level,
+              shaded.GatheredPoints, SamplingName(set), shaded.DirectionsUsed, 1e6 * cpu / n,
+              1e6 * wall / n, 1e6 * all / n, errorText.c_str());
+            std::fflush(stdout);
+            csv << count << "," << level << "," << shaded.GatheredPoints << "," << SamplingName(set)
+                << "," << shaded.DirectionsUsed << "," << 1e6 * cpu / n << "," << 1e6 * wall / n
+                << "," << 1e6 * all / n << "," << errorText << ",," << objectName << ","
+                << (self ? "on" : "off") << "," << shaded.SelfFacingPoints << "\n";
+            if (self && selfOcclusion.size() > 1)
+            {
+              std::printf(
+                "%10s %5s %8s %10s self-occlusion: %zu vertices face the object, %zu rays "
+                "blocked\n",
+                "", "", "", "", shaded.SelfFacingPoints, shaded.SelfBlockedRays);
+            }
+            if (set == vlf::DirectionSampling::All && self == selfOcclusion.front())
+            {
+              ChartSeries& series = timeSeries["subdivision " + std::to_string(level)];
+              series.Name = "subdivision " + std::to_string(level) + " (" +
+                std::to_string(shaded.GatheredPoints) + " vertices)";
+              series.X.push_back(count);
+              series.Y.push_back(1e6 * cpu / n);
+            }
           }
-          std::printf("%10d %5d %8zu %10s %6zu %14.1f %14.1f %14.1f %10s\n", count, level,
-            shaded.GatheredPoints, SamplingName(set), shaded.DirectionsUsed, 1e6 * cpu / n,
-            1e6 * wall / n, 1e6 * all / n, errorText.c_str());
-          std::fflush(stdout);
-          csv << count << "," << level << "," << shaded.GatheredPoints << "," << SamplingName(set)
-              << "," << shaded.DirectionsUsed << "," << 1e6 * cpu / n << "," << 1e6 * wall / n
-              << "," << 1e6 * all / n << "," << errorText << ",\n";
-          if (set == vlf::DirectionSampling::All)
-          {
-            ChartSeries& series = timeSeries["subdivision " + std::to_string(level)];
-            series.Name = "subdivision " + std::to_string(level) + " (" +
-              std::to_string(shaded.GatheredPoints) + " vertices)";
-            series.X.push_back(count);
-            series.Y.push_back(1e6 * cpu / n);
-          }
-        }
       }
       // The cache along a short path: each step moves the sphere by 0.15 field cells and turns it
       // by 0.02 rad about its axis; the points that moved less than the tolerances keep their
@@ -283,7 +322,7 @@ int RunGatherBenchmark(const std::vector<std::string>& args)
             << ",path," << gatherer.Result().DirectionsUsed << ",,,"
             << 1e6 * seconds / (pathSteps + 1) /
             static_cast<double>(gatherer.Result().Mesh.Points.size())
-            << ",," << rate << "\n";
+            << ",," << rate << "," << objectName << ",on,\n";
       }
     }
   }
