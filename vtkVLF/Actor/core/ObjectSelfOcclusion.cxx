@@ -18,6 +18,9 @@ namespace
 {
 // Of the object's bounding radius: shallower dents count as flat (the header).
 constexpr float ConcavityTolerance = 0.05f;
+// The tangent-plane test reads at most this many input points (evenly strided): it costs
+// O(points) per gathered point, which a large surface (a ParaView dataset) cannot afford.
+constexpr std::size_t MaximumHorizonPoints = 4096;
 }
 
 ObjectSelfOcclusion::ObjectSelfOcclusion() = default;
@@ -57,14 +60,20 @@ void ObjectSelfOcclusion::Place(const glm::mat4& modelToUnit)
 {
   this->UnitToModel = glm::inverse(modelToUnit);
   this->DirectionToModel = glm::mat3(this->UnitToModel);
-  this->PlacedPoints.resize(this->InputPoints.size());
+  this->PlacedPoints.clear();
+  const std::size_t n = this->InputPoints.size();
+  const std::size_t kept = std::min(n, MaximumHorizonPoints);
   glm::vec3 lower(0.0f), upper(0.0f);
-  for (std::size_t i = 0; i < this->InputPoints.size(); ++i)
+  for (std::size_t i = 0; i < n; ++i)
   {
     const glm::vec3 p = glm::vec3(modelToUnit * glm::vec4(this->InputPoints[i], 1.0f));
-    this->PlacedPoints[i] = p;
     lower = i == 0 ? p : glm::min(lower, p);
     upper = i == 0 ? p : glm::max(upper, p);
+  }
+  for (std::size_t k = 0; k < kept; ++k)
+  {
+    const std::size_t i = k * n / kept;
+    this->PlacedPoints.push_back(glm::vec3(modelToUnit * glm::vec4(this->InputPoints[i], 1.0f)));
   }
   this->Centre = 0.5f * (lower + upper);
   this->Radius = 0.5f * glm::length(upper - lower);
