@@ -218,6 +218,7 @@ int RunGatherBenchmark(const std::vector<std::string>& args)
       for (const int level : levels)
       {
         for (const bool self : selfOcclusion)
+        {
           for (const vlf::DirectionSampling set : sets)
           {
             vlf::GatherSettings settings;
@@ -286,6 +287,7 @@ int RunGatherBenchmark(const std::vector<std::string>& args)
               series.Y.push_back(1e6 * cpu / n);
             }
           }
+        }
       }
       // The cache along a short path: each step moves the sphere by 0.15 field cells and turns it
       // by 0.02 rad about its axis; the points that moved less than the tolerances keep their
