@@ -60,8 +60,15 @@ const char* SamplingName(vlf::DirectionSampling s)
 // The object of the benchmark: in the built-in Cornell box the test sphere (radius 40 mm,
 // 130 mm below the ceiling in front of the tall block); in another field a sphere of radius
 // 0.08 (unit-sphere units) at its centre.
-glm::mat4 Placement(const vlf::LightField& field, bool cornell, float& radius)
+glm::mat4 Placement(const vlf::LightField& field, bool cornell, float& radius, bool bracket)
 {
+  if (cornell && bracket)
+  {
+    // The concave bracket of the self-occlusion test, in the free front-right part of the box.
+    radius = 60.0f;
+    return vlf::WorldToUnitSphere(field) *
+      glm::translate(glm::mat4(1.0f), glm::vec3(420.0f, 300.0f, 130.0f));
+  }
   if (cornell)
   {
     radius = 40.0f;
@@ -97,6 +104,10 @@ int RunGatherBenchmark(const std::vector<std::string>& args)
   cl.AddFlag("--error", "also the error against the path tracer (slow)");
   cl.AddValue("--samples", "N", "--error: paths per vertex", "8192");
   cl.AddValue("--points", "N", "--error: vertices compared", "64");
+  cl.AddValue("--object", "sphere|bracket",
+    "the sphere, or a concave bracket (120 x 100 mm, bars 20 mm; 'radius' = half its width)",
+    "sphere");
+  cl.AddValue("--self-occlusion", "on,off", "the object's own occlusion (GatherSettings)", "on");
   cl.AddValue("--csv", "FILE", "write the rows as CSV");
   cl.AddValue(
     "--plot", "FILE.png", "plot us per vertex vs directions (FILE-error.png too with --error)");
@@ -166,11 +177,26 @@ int RunGatherBenchmark(const std::vector<std::string>& args)
     }
   }
   const bool withError = cl.Has("--error");
+  const std::string objectName = cl.Get("--object");
+  if (objectName != "sphere" && objectName != "bracket")
+  {
+    return cl.UsageError("--object: '" + objectName + "' is not sphere or bracket");
+  }
+  const bool bracket = objectName == "bracket";
+  std::vector<bool> selfOcclusion;
+  for (const std::string& name : cl.GetStringList("--self-occlusion"))
+  {
+    if (name != "on" && name != "off")
+    {
+      return cl.UsageError("--self-occlusion: '" + name + "' is not on or off");
+    }
+    selfOcclusion.push_back(name == "on");
+  }
 
   std::ostringstream csv;
-  csv
-    << "directions,subdivision,vertices,set,directions_used,us_per_vertex_1thread_cpu,"
-       "us_per_vertex_1thread_wall,us_per_vertex_all_threads,mean_relative_error,cache_hit_rate\n";
+  csv << "directions,subdivision,vertices,set,directions_used,us_per_vertex_1thread_cpu,"
+         "us_per_vertex_1thread_wall,us_per_vertex_all_threads,mean_relative_error,cache_hit_rate,"
+         "object,self_occlusion,self_facing_vertices\n";
   std::map<std::string, ChartSeries> timeSeries, errorSeries;
   std::printf("%10s %5s %8s %10s %6s %14s %14s %14s %10s\n", "directions", "level", "vertices",
     "set", "used", "us/v 1 thr cpu", "us/v 1 thr wall", "us/v all thr", "error");
@@ -199,8 +225,10 @@ int RunGatherBenchmark(const std::vector<std::string>& args)
       }
       const auto count = static_cast<int>(field->SubfieldCount());
       float radius = 0.0f;
-      const glm::mat4 placement = Placement(*field, fieldPath.empty(), radius);
-      vlf::ObjectMesh sphere = vlf::MakeSphere(radius, rings, 2 * rings);
+      const glm::mat4 placement = Placement(*field, fieldPath.empty(), radius, bracket);
+      vlf::ObjectMesh sphere = bracket
+        ? vlf::MakeBracket(2.0f * radius, 5.0f / 3.0f * radius, radius / 3.0f, 2.0f * radius)
+        : vlf::MakeSphere(radius, rings, 2 * rings);
       std::map<int, vlf::ObjectReference> references;
       std::map<int, std::unique_ptr<vlf::IrradianceVolume>> volumes;
       for (const int resolution : volumeResolutions)
@@ -214,76 +242,91 @@ int RunGatherBenchmark(const std::vector<std::string>& args)
           resolution, volume->Dimensions()[0], volume->Dimensions()[1], volume->Dimensions()[2],
           volume->ValidPointCount(), volume->NormalCount(), volume->BuildSeconds());
       }
+      // One row per direction set, then one per irradiance volume (set "volumeR").
+      std::vector<std::pair<vlf::DirectionSampling, int>> rows;
+      for (const vlf::DirectionSampling set : sets)
+      {
+        rows.emplace_back(set, 0);
+      }
+      for (const int resolution : volumeResolutions)
+      {
+        rows.emplace_back(vlf::DirectionSampling::All, resolution);
+      }
       for (const int level : levels)
       {
-        // One row per direction set, then one per irradiance volume (set "volumeR").
-        std::vector<std::pair<vlf::DirectionSampling, int>> rows;
-        for (const vlf::DirectionSampling set : sets)
+        for (const bool self : selfOcclusion)
         {
-          rows.emplace_back(set, 0);
-        }
-        for (const int resolution : volumeResolutions)
-        {
-          rows.emplace_back(vlf::DirectionSampling::All, resolution);
-        }
-        for (const auto& [set, volumeRow] : rows)
-        {
-          const std::string setName =
-            volumeRow > 0 ? "volume" + std::to_string(volumeRow) : std::string(SamplingName(set));
-          vlf::GatherSettings settings;
-          settings.Subdivision = level;
-          settings.Directions = set;
-          settings.Volume = volumeRow > 0 ? volumes[volumeRow].get() : nullptr;
-          settings.UseCache = false;
-          vlf::ObjectGatherer gatherer(*field);
-          settings.Threads = 1;
-          double cpu = 1e30;
-          const double wall = FastestSeconds(repeats,
-            [&]
-            {
-              const double start = ThreadCpuSeconds();
-              gatherer.Gather(sphere, placement, settings);
-              cpu = std::min(cpu, ThreadCpuSeconds() - start);
-            });
-          settings.Threads = 0;
-          const double all =
-            FastestSeconds(repeats, [&] { gatherer.Gather(sphere, placement, settings); });
-          const vlf::ShadedObject& shaded = gatherer.Result();
-          const double n = static_cast<double>(shaded.GatheredPoints);
-          std::string errorText = "";
-          if (withError)
+          for (const auto& [set, volumeRow] : rows)
           {
-            auto found = references.find(level);
-            if (found == references.end())
+            const std::string setName =
+              volumeRow > 0 ? "volume" + std::to_string(volumeRow) : std::string(SamplingName(set));
+            vlf::GatherSettings settings;
+            settings.ObjectOcclusion = self;
+            settings.Subdivision = level;
+            settings.Directions = set;
+            settings.Volume = volumeRow > 0 ? volumes[volumeRow].get() : nullptr;
+            settings.UseCache = false;
+            vlf::ObjectGatherer gatherer(*field);
+            settings.Threads = 1;
+            double cpu = 1e30;
+            const double wall = FastestSeconds(repeats,
+              [&]
+              {
+                const double start = ThreadCpuSeconds();
+                gatherer.Gather(sphere, placement, settings);
+                cpu = std::min(cpu, ThreadCpuSeconds() - start);
+              });
+            settings.Threads = 0;
+            const double all =
+              FastestSeconds(repeats, [&] { gatherer.Gather(sphere, placement, settings); });
+            const vlf::ShadedObject& shaded = gatherer.Result();
+            const double n = static_cast<double>(shaded.GatheredPoints);
+            std::string errorText = "";
+            if (withError)
             {
-              vlf::ObjectReferenceSettings reference;
-              reference.Samples = samples;
-              reference.MaxPoints = static_cast<std::size_t>(points);
-              found =
-                references.emplace(level, vlf::TraceObjectReference(*field, shaded.Mesh, reference))
-                  .first;
+              auto found = references.find(level);
+              if (found == references.end())
+              {
+                vlf::ObjectReferenceSettings reference;
+                reference.Samples = samples;
+                reference.MaxPoints = static_cast<std::size_t>(points);
+                found = references
+                          .emplace(level, vlf::TraceObjectReference(*field, shaded.Mesh, reference))
+                          .first;
+              }
+              const double e = vlf::MeanRelativeError(shaded.Radiance, found->second);
+              errorText = std::to_string(e);
+              const std::string name = setName + ", subdivision " + std::to_string(level) +
+                (self ? "" : ", no self-occlusion");
+              ChartSeries& series = errorSeries[name];
+              series.Name = name;
+              series.X.push_back(count);
+              series.Y.push_back(100.0 * e);
             }
-            const double e = vlf::MeanRelativeError(shaded.Radiance, found->second);
-            errorText = std::to_string(e);
-            ChartSeries& series = errorSeries[setName + ", subdivision " + std::to_string(level)];
-            series.Name = setName + ", subdivision " + std::to_string(level);
-            series.X.push_back(count);
-            series.Y.push_back(100.0 * e);
-          }
-          std::printf("%10d %5d %8zu %10s %6zu %14.1f %14.1f %14.1f %10s\n", count, level,
-            shaded.GatheredPoints, setName.c_str(), shaded.DirectionsUsed, 1e6 * cpu / n,
-            1e6 * wall / n, 1e6 * all / n, errorText.c_str());
-          std::fflush(stdout);
-          csv << count << "," << level << "," << shaded.GatheredPoints << "," << setName << ","
-              << shaded.DirectionsUsed << "," << 1e6 * cpu / n << "," << 1e6 * wall / n << ","
-              << 1e6 * all / n << "," << errorText << ",\n";
-          if (set == vlf::DirectionSampling::All && volumeRow == 0)
-          {
-            ChartSeries& series = timeSeries["subdivision " + std::to_string(level)];
-            series.Name = "subdivision " + std::to_string(level) + " (" +
-              std::to_string(shaded.GatheredPoints) + " vertices)";
-            series.X.push_back(count);
-            series.Y.push_back(1e6 * cpu / n);
+            std::printf("%10d %5d %8zu %10s %6zu %14.1f %14.1f %14.1f %10s\n", count, level,
+              shaded.GatheredPoints, setName.c_str(), shaded.DirectionsUsed, 1e6 * cpu / n,
+              1e6 * wall / n, 1e6 * all / n, errorText.c_str());
+            std::fflush(stdout);
+            csv << count << "," << level << "," << shaded.GatheredPoints << "," << setName << ","
+                << shaded.DirectionsUsed << "," << 1e6 * cpu / n << "," << 1e6 * wall / n << ","
+                << 1e6 * all / n << "," << errorText << ",," << objectName << ","
+                << (self ? "on" : "off") << "," << shaded.SelfFacingPoints << "\n";
+            if (self && selfOcclusion.size() > 1)
+            {
+              std::printf(
+                "%10s %5s %8s %10s self-occlusion: %zu vertices face the object, %zu rays "
+                "blocked\n",
+                "", "", "", "", shaded.SelfFacingPoints, shaded.SelfBlockedRays);
+            }
+            if (set == vlf::DirectionSampling::All && volumeRow == 0 &&
+              self == selfOcclusion.front())
+            {
+              ChartSeries& series = timeSeries["subdivision " + std::to_string(level)];
+              series.Name = "subdivision " + std::to_string(level) + " (" +
+                std::to_string(shaded.GatheredPoints) + " vertices)";
+              series.X.push_back(count);
+              series.Y.push_back(1e6 * cpu / n);
+            }
           }
         }
       }
@@ -322,7 +365,7 @@ int RunGatherBenchmark(const std::vector<std::string>& args)
             << ",path," << gatherer.Result().DirectionsUsed << ",,,"
             << 1e6 * seconds / (pathSteps + 1) /
             static_cast<double>(gatherer.Result().Mesh.Points.size())
-            << ",," << rate << "\n";
+            << ",," << rate << "," << objectName << ",on,\n";
       }
     }
   }

@@ -278,6 +278,11 @@ int Render(const std::vector<std::string>& args)
     else if (actor->GetShadedObject())
     {
       std::cout << " over " << actor->GetShadedObject()->DirectionsUsed << " directions";
+      if (const std::size_t facing = actor->GetShadedObject()->SelfFacingPoints)
+      {
+        // A concave object: these points' directions were tested against the object itself.
+        std::cout << " (" << facing << " face the object itself)";
+      }
     }
     std::cout << ", shadows " << cl.Get("--shadows");
     if (const mesolight::vlf::ObjectShadows* shadows = actor->GetObjectShadows())

@@ -312,14 +312,9 @@ private:
   bool UseField(const mesolight::vlf::LightField* field);
   void RefreshField(); // updates the filter, takes its field when it changed
   mesolight::vlf::TraceOptions CurrentTraceOptions() const;
-  // Identifies the trace options and the object's state: traced reflections of other options
-  // or of another placement of the object are not reused.
-  std::uint64_t TraceKey() const
-  {
-    return (static_cast<std::uint64_t>(this->GetObjectVersion()) << 16) +
-      static_cast<std::uint64_t>(
-        this->MaximumReflectionDepth * 16 + this->ReflectionBouncesShortForTesting);
-  }
+  // Identifies the trace options, the object's state and its shadows (in
+  // vtkLightFieldActorShadows.cxx).
+  std::uint64_t TraceKey() const;
   // Starts the worker on the last view's reflections unless it has them or is on them.
   void TraceAtRest();
 

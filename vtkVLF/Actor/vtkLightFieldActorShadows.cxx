@@ -173,10 +173,24 @@ double vtkLightFieldActor::GetLastShadowSeconds() const
 void vtkLightFieldActor::PrepareShadows()
 {
   ShadowState& state = this->Shadows();
-  const vlf::LightField* field = this->Impl->Field;
+  Internals& impl = *this->Impl;
+  const vlf::LightField* field = impl.Field;
+  // The tracer darkens the diffuse points its mirrors show by the same maps (a new field makes
+  // a new tracer: hand them over again).
+  const vlf::ObjectShadows* shown = state.Shadows.Empty() ? nullptr : &state.Shadows;
   if (!state.Dirty && state.BuiltFor == field)
   {
+    if (impl.Tracer && impl.Tracer->Shadows() != shown)
+    {
+      impl.StopWorker();
+      impl.Tracer->SetShadows(shown);
+    }
     return;
+  }
+  impl.StopWorker(); // the worker's reflections may be reading the maps rebuilt here
+  if (impl.Tracer)
+  {
+    impl.Tracer->SetShadows(nullptr);
   }
   state.Dirty = false;
   state.BuiltFor = field;
@@ -194,6 +208,20 @@ void vtkLightFieldActor::PrepareShadows()
     }
   }
   ++state.Version;
+  if (impl.Tracer && !state.Shadows.Empty())
+  {
+    impl.Tracer->SetShadows(&state.Shadows);
+  }
+}
+
+std::uint64_t vtkLightFieldActor::TraceKey() const
+{
+  // Traced reflections of other options, of another placement of the object or of other
+  // shadows (the mirrors show them) are not reused.
+  const std::uint64_t shadows = this->ShadowData ? this->ShadowData->Version : 0;
+  return (shadows << 40) + (static_cast<std::uint64_t>(this->GetObjectVersion()) << 16) +
+    static_cast<std::uint64_t>(
+      this->MaximumReflectionDepth * 16 + this->ReflectionBouncesShortForTesting);
 }
 
 void vtkLightFieldActor::ApplyShadowsToScreen()

@@ -2,6 +2,8 @@
 #include "ObjectGatherer.h"
 
 #include "IrradianceVolume.h"
+#include "ObjectLineCache.h"
+#include "ObjectSelfOcclusion.h"
 
 #include "MathConstants.h"
 #include "ParallelFor.h"
@@ -10,6 +12,7 @@
 #include <glm/matrix.hpp>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -135,162 +138,6 @@ ObjectMesh SubdivideOnce(const ObjectMesh& mesh)
 // Batches between progress reports (and abort checks).
 constexpr std::size_t ProgressBatch = 2048;
 
-// The object's lines: for every direction, the crossings of the lines of the small window of
-// cells the object's points project to, each with its sending orientation and the radiance it
-// sends (Lookup's CellRadiance), read from the field once per Gather instead of once per vertex.
-// Lookups through it give exactly Lookup::IncidentRadiance's values (the test compares them).
-struct LineCache
-{
-  struct Entry
-  {
-    float Depth;
-    int Orientation; // of the surface along the direction (LightField::Orientation)
-    glm::vec3 Radiance;
-  };
-  struct Window
-  {
-    int I0 = 0, J0 = 0, Width = 0, Height = 0;
-    // LightField::CellCoordinates and DepthOf inlined: c = (p . U + 1) / h - 1/2,
-    // depth = p . D + start.
-    glm::vec3 U{ 0.0f }, V{ 0.0f }, D{ 0.0f };
-    float InverseCell = 1.0f, DepthStart = 0.0f;
-    std::vector<std::uint32_t> Start; // Width * Height + 1 offsets into Entries
-    std::vector<Entry> Entries;
-  };
-  std::vector<Window> Windows; // per direction (Width 0: not cached, use the lookup)
-
-  // Limits the memory for objects that cover much of the field.
-  static constexpr int MaxLines = 400;
-
-  void Build(const LightField& field, const std::vector<std::uint32_t>& directions,
-    const glm::vec3& lower, const glm::vec3& upper, int threads)
-  {
-    this->Windows.assign(field.SubfieldCount(), Window());
-    ParallelFor(
-      0, directions.size(), 4,
-      [&](std::size_t begin, std::size_t end)
-      {
-        std::vector<Crossing> crossings;
-        for (std::size_t q = begin; q < end; ++q)
-        {
-          const std::uint32_t k = directions[q];
-          glm::vec2 cmin(std::numeric_limits<float>::max()), cmax(-cmin);
-          for (int corner = 0; corner < 8; ++corner)
-          {
-            const glm::vec3 x((corner & 1) ? upper.x : lower.x, (corner & 2) ? upper.y : lower.y,
-              (corner & 4) ? upper.z : lower.z);
-            const glm::vec2 c = field.CellCoordinates(k, x);
-            cmin = glm::min(cmin, c);
-            cmax = glm::max(cmax, c);
-          }
-          Window& w = this->Windows[k];
-          w.I0 = static_cast<int>(std::floor(cmin.x)) - 1;
-          w.J0 = static_cast<int>(std::floor(cmin.y)) - 1;
-          const int width = static_cast<int>(std::floor(cmax.x)) + 2 - w.I0 + 1;
-          const int height = static_cast<int>(std::floor(cmax.y)) + 2 - w.J0 + 1;
-          if (width * height > MaxLines)
-          {
-            continue;
-          }
-          const Subfield& f = field.GetSubfield(k);
-          w.Start.reserve(static_cast<std::size_t>(width * height) + 1);
-          for (int b = 0; b < height; ++b)
-          {
-            for (int a = 0; a < width; ++a)
-            {
-              w.Start.push_back(static_cast<std::uint32_t>(w.Entries.size()));
-              field.LineCrossings(k, w.I0 + a, w.J0 + b, crossings);
-              for (const Crossing& c : crossings)
-              {
-                const glm::vec3 x = field.PointOnLine(k, w.I0 + a, w.J0 + b, c.Depth);
-                glm::vec3 radiance =
-                  f.Radiance[c.Cell] + field.SampleTexture(field.UnshotDiffuse, c.Surface, x);
-                if (!f.UnshotSpecular.empty())
-                {
-                  radiance += f.UnshotSpecular[c.Cell];
-                }
-                w.Entries.push_back({ c.Depth, field.Orientation(k, c.Surface), radiance });
-              }
-            }
-          }
-          w.Start.push_back(static_cast<std::uint32_t>(w.Entries.size()));
-          w.Width = width;
-          w.Height = height;
-          w.U = f.AxisU;
-          w.V = f.AxisV;
-          w.D = f.Direction;
-          w.InverseCell = 1.0f / field.Settings().CellSize();
-          w.DepthStart = field.DepthOf(k, glm::vec3(0.0f));
-        }
-      },
-      threads);
-  }
-
-  // Lookup::IncidentRadiance through the window; false when p's cells are not in it.
-  bool Incident(
-    std::size_t k, int sense, const glm::vec3& p, CellInterpolation cells, glm::vec3& out) const
-  {
-    const Window& w = this->Windows[k];
-    if (w.Width == 0)
-    {
-      return false;
-    }
-    int is[4], js[4];
-    float ws[4];
-    const glm::vec2 coordinates((glm::dot(p, w.U) + 1.0f) * w.InverseCell - 0.5f,
-      (glm::dot(p, w.V) + 1.0f) * w.InverseCell - 0.5f);
-    const int count = CellsAround(coordinates, cells, is, js, ws);
-    const float depth = glm::dot(p, w.D) + w.DepthStart;
-    glm::vec3 sum(0.0f), fallback(0.0f);
-    float weight = 0.0f, fallbackWeight = -1.0f;
-    for (int q = 0; q < count; ++q)
-    {
-      if (ws[q] <= 0.0f)
-      {
-        continue;
-      }
-      const int a = is[q] - w.I0, b = js[q] - w.J0;
-      if (a < 0 || b < 0 || a >= w.Width || b >= w.Height)
-      {
-        return false;
-      }
-      const std::size_t line = static_cast<std::size_t>(b) * w.Width + a;
-      const Entry* first = w.Entries.data() + w.Start[line];
-      const Entry* last = w.Entries.data() + w.Start[line + 1];
-      const Entry* before = nullptr;
-      const Entry* after = nullptr;
-      for (const Entry* e = first; e != last; ++e)
-      {
-        if (e->Depth < depth - SelfDepth)
-        {
-          before = e;
-        }
-        else if (e->Depth > depth + SelfDepth)
-        {
-          after = e;
-          break;
-        }
-      }
-      const Entry* sender = sense > 0 ? after : before;
-      const glm::vec3 radiance =
-        sender && sender->Orientation == -sense ? sender->Radiance : glm::vec3(0.0f);
-      const bool open =
-        (!before || before->Orientation > 0) && (!after || after->Orientation < 0) && first != last;
-      if (open)
-      {
-        sum += ws[q] * radiance;
-        weight += ws[q];
-      }
-      else if (ws[q] > fallbackWeight)
-      {
-        fallback = radiance;
-        fallbackWeight = ws[q];
-      }
-    }
-    out = weight > 0.0f ? sum / weight : fallback;
-    return true;
-  }
-};
 } // namespace
 
 //------------------------------------------------------------------------------
@@ -309,6 +156,10 @@ std::string GatherSettings::Validate() const
   {
     return "the cache tolerances must be finite and >= 0";
   }
+  if (this->ObjectInterreflections < 0 || this->ObjectInterreflections > 8)
+  {
+    return "the object's inter-reflection iterations must lie in [0, 8]";
+  }
   if (this->SkipBackFacing && !Finite(this->Eye))
   {
     return "the eye for skipping back faces is not a finite point";
@@ -319,8 +170,11 @@ std::string GatherSettings::Validate() const
 //------------------------------------------------------------------------------
 ObjectGatherer::ObjectGatherer(const LightField& field)
   : Field(field)
+  , Self(new ObjectSelfOcclusion)
 {
 }
+
+ObjectGatherer::~ObjectGatherer() = default;
 
 //------------------------------------------------------------------------------
 void ObjectGatherer::Invalidate()
@@ -332,6 +186,7 @@ void ObjectGatherer::Invalidate()
   this->CachedNormals.clear();
   this->CachedValid.clear();
   this->CacheKey = 0;
+  this->Self->Clear();
 }
 
 //------------------------------------------------------------------------------
@@ -489,7 +344,18 @@ const ShadedObject& ObjectGatherer::Gather(
     this->Model = Subdivide(modelMesh, settings.Subdivision);
     this->ModelHash = hash;
     this->ModelLevels = settings.Subdivision;
+    this->InputPoints = modelMesh.Points;
   }
+  if (settings.ObjectOcclusion && !settings.Volume)
+  {
+    std::uint64_t selfKey = hash;
+    HashValue(selfKey, settings.Subdivision);
+    this->Self->Prepare(this->Model, this->InputPoints, selfKey);
+    this->Self->Place(modelToUnit);
+  }
+  // The irradiance volume holds the field's light only: no rays against the object there.
+  const ObjectSelfOcclusion* self =
+    settings.ObjectOcclusion && !settings.Volume ? this->Self.get() : nullptr;
   this->Model.Kd = modelMesh.Kd;
   ShadedObject& shaded = this->Shaded;
   shaded.Mesh = TransformMesh(this->Model, modelToUnit);
@@ -506,6 +372,8 @@ const ShadedObject& ObjectGatherer::Gather(
   HashValue(key, settings.Directions);
   HashValue(key, settings.ImportanceFraction);
   HashValue(key, reinterpret_cast<std::uintptr_t>(settings.Volume));
+  HashValue(key, settings.ObjectOcclusion);
+  HashValue(key, settings.ObjectInterreflections);
   if (!settings.UseCache || key != this->CacheKey || this->CachedValid.size() != n)
   {
     this->CachedValid.assign(n, 0);
@@ -601,17 +469,47 @@ const ShadedObject& ObjectGatherer::Gather(
   // the cache while the chunk's points read it (point-major reads every window once per point,
   // and at 2049 directions the windows no longer fit in the cache).
   constexpr std::size_t chunk = 64;
+  auto normalised = [&](const glm::vec3& sum, float total)
+  {
+    return !options.ProjectedAreaNormalization
+      ? sum
+      : (total > 0.0f ? sum * (Pi<float> / total) : glm::vec3(0.0f));
+  };
+  // The object's own occlusion: per point that faces part of the object, the directions it
+  // blocks (the hit and the direction's weight), the field's part and the weights' total.
+  struct Blocked
+  {
+    std::uint32_t Triangle;
+    float U, V, Weight;
+  };
+  std::vector<std::vector<Blocked>> blocked;
+  std::vector<glm::vec3> fieldSum;
+  std::vector<float> weightTotal;
+  std::atomic<std::size_t> selfFacing{ 0 }, selfBlocked{ 0 };
+  if (self)
+  {
+    blocked.resize(n);
+    fieldSum.assign(n, glm::vec3(0.0f));
+    weightTotal.assign(n, 0.0f);
+  }
   auto gatherChunk = [&](const std::uint32_t* points, std::size_t count)
   {
     glm::vec3 p[chunk], normal[chunk], sum[chunk];
     float total[chunk];
     const bool windows = !lines.Windows.empty();
+    std::uint32_t facing[chunk]; // chunk slots of the points that face part of the object
+    std::size_t facingCount = 0;
     for (std::size_t v = 0; v < count; ++v)
     {
       p[v] = placed(shaded.Mesh.Points[points[v]]);
       normal[v] = shaded.Mesh.Normals[points[v]];
       sum[v] = glm::vec3(0.0f);
       total[v] = 0.0f;
+      if (self && self->SeesItself(shaded.Mesh.Points[points[v]], normal[v]))
+      {
+        facing[facingCount++] = static_cast<std::uint32_t>(v);
+        blocked[points[v]].clear();
+      }
     }
     if (settings.Volume) // the precomputed irradiance instead of the directions
     {
@@ -625,16 +523,60 @@ const ShadedObject& ObjectGatherer::Gather(
       }
       return;
     }
+    selfFacing += facingCount;
+    std::uint8_t isBlocked[chunk] = {};
+    std::size_t blockedRays = 0;
     for (std::size_t q = 0; q < directions.size(); ++q)
     {
       const std::uint32_t k = directions[q];
       const glm::vec3 d = this->Field.GetSubfield(k).Direction;
       const float scale =
         (options.SolidAngleWeights ? set.SolidAngle(k) : uniform) * multipliers[q];
+      // Rays of this direction from the points facing the object, 16 to a packet.
+      for (std::size_t f = 0; f < facingCount; f += 16)
+      {
+        glm::vec3 origins[16], normals[16], along[16];
+        ObjectSelfHit hits[16];
+        int slots[16], m = 0;
+        for (std::size_t g = f; g < std::min(facingCount, f + 16); ++g)
+        {
+          const std::uint32_t v = facing[g];
+          const float c = glm::dot(d, normal[v]);
+          isBlocked[v] = 0;
+          if (c == 0.0f)
+          {
+            continue;
+          }
+          origins[m] = shaded.Mesh.Points[points[v]];
+          normals[m] = normal[v];
+          along[m] = c > 0.0f ? d : -d;
+          slots[m++] = static_cast<int>(v);
+        }
+        if (m == 0)
+        {
+          continue;
+        }
+        self->Trace16(origins, normals, along, m, hits);
+        for (int r = 0; r < m; ++r)
+        {
+          if (hits[r].Triangle == ObjectSelfHit::None)
+          {
+            continue;
+          }
+          const int v = slots[r];
+          isBlocked[v] = 1;
+          const float weight = scale * std::abs(glm::dot(d, normal[v]));
+          // The inside of the object (a back face) sends nothing: no triangle to read.
+          blocked[points[v]].push_back({ hits[r].Front ? hits[r].Triangle : ObjectSelfHit::None,
+            hits[r].U, hits[r].V, weight });
+          total[v] += weight;
+          ++blockedRays;
+        }
+      }
       for (std::size_t v = 0; v < count; ++v)
       {
         const float c = glm::dot(d, normal[v]);
-        if (c == 0.0f)
+        if (c == 0.0f || isBlocked[v])
         {
           continue;
         }
@@ -649,13 +591,22 @@ const ShadedObject& ObjectGatherer::Gather(
         total[v] += weight;
         sum[v] += weight * incident;
       }
+      for (std::size_t g = 0; g < facingCount; ++g)
+      {
+        isBlocked[facing[g]] = 0;
+      }
     }
+    selfBlocked += blockedRays;
     for (std::size_t v = 0; v < count; ++v)
     {
       const std::uint32_t i = points[v];
-      shaded.Irradiance[i] = !options.ProjectedAreaNormalization
-        ? sum[v]
-        : (total[v] > 0.0f ? sum[v] * (Pi<float> / total[v]) : glm::vec3(0.0f));
+      // Blocked directions send nothing yet: the iterations below add the object's radiance.
+      shaded.Irradiance[i] = normalised(sum[v], total[v]);
+      if (self)
+      {
+        fieldSum[i] = sum[v];
+        weightTotal[i] = total[v];
+      }
       this->CachedPositions[i] = shaded.Mesh.Points[i];
       this->CachedNormals[i] = shaded.Mesh.Normals[i];
       this->CachedValid[i] = 1;
@@ -686,7 +637,57 @@ const ShadedObject& ObjectGatherer::Gather(
   }
   ReportProgress(settings.Progress, 1.0);
   shaded.GatheredPoints = todo.size();
+  shaded.SelfFacingPoints = selfFacing;
+  shaded.SelfBlockedRays = selfBlocked;
   const glm::vec3 albedo = shaded.Mesh.Kd / Pi<float>;
+  // The object's inter-reflection: Jacobi iterations of E = field part + sum over the blocked
+  // directions of the radiance leaving the object at their hits (Gouraud, from the last
+  // iterate; cached points keep theirs).
+  if (self && shaded.SelfBlockedRays > 0)
+  {
+    std::vector<std::uint32_t> facingPoints;
+    for (const std::uint32_t i : todo)
+    {
+      if (!blocked[i].empty())
+      {
+        facingPoints.push_back(i);
+      }
+    }
+    std::vector<glm::vec3> radiance(n), next(facingPoints.size());
+    for (int iteration = 0; iteration < settings.ObjectInterreflections; ++iteration)
+    {
+      for (std::size_t i = 0; i < n; ++i)
+      {
+        radiance[i] = albedo * shaded.Irradiance[i];
+      }
+      ParallelFor(
+        0, facingPoints.size(), 64,
+        [&](std::size_t begin, std::size_t end)
+        {
+          for (std::size_t f = begin; f < end; ++f)
+          {
+            const std::uint32_t i = facingPoints[f];
+            glm::vec3 sum = fieldSum[i];
+            for (const Blocked& b : blocked[i])
+            {
+              if (b.Triangle == ObjectSelfHit::None)
+              {
+                continue;
+              }
+              const glm::uvec3 t = shaded.Mesh.Triangles[b.Triangle];
+              sum += b.Weight *
+                ((1.0f - b.U - b.V) * radiance[t.x] + b.U * radiance[t.y] + b.V * radiance[t.z]);
+            }
+            next[f] = normalised(sum, weightTotal[i]);
+          }
+        },
+        settings.Threads);
+      for (std::size_t f = 0; f < facingPoints.size(); ++f)
+      {
+        shaded.Irradiance[facingPoints[f]] = next[f];
+      }
+    }
+  }
   for (std::size_t i = 0; i < n; ++i)
   {
     shaded.Radiance[i] = albedo * shaded.Irradiance[i];

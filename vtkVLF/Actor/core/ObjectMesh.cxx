@@ -233,5 +233,53 @@ ObjectMesh MakeCube(float side)
   return mesh;
 }
 
+ObjectMesh MakeBracket(float width, float height, float thickness, float depth)
+{
+  ObjectMesh mesh;
+  // The C profile, counter-clockwise seen from +z, centred on the origin.
+  const float w = width, h = height, t = thickness;
+  const glm::vec2 profile[8] = { { 0, 0 }, { w, 0 }, { w, t }, { t, t }, { t, h - t }, { w, h - t },
+    { w, h }, { 0, h } };
+  const glm::vec2 centre(0.5f * w, 0.5f * h);
+  const float z = 0.5f * depth;
+  auto at = [&](int corner, float zz) { return glm::vec3(profile[corner] - centre, zz); };
+  // The sides: one quad per profile edge, flat normals (right of the edge: outside).
+  for (int e = 0; e < 8; ++e)
+  {
+    const int a = e, b = (e + 1) % 8;
+    const glm::vec2 edge = profile[b] - profile[a];
+    const glm::vec3 n = glm::normalize(glm::vec3(edge.y, -edge.x, 0.0f));
+    const unsigned first = static_cast<unsigned>(mesh.Points.size());
+    mesh.Points.insert(mesh.Points.end(), { at(a, -z), at(b, -z), at(b, z), at(a, z) });
+    mesh.Normals.insert(mesh.Normals.end(), 4, n);
+    mesh.Triangles.emplace_back(first, first + 1, first + 2);
+    mesh.Triangles.emplace_back(first, first + 2, first + 3);
+  }
+  // The caps: the concave octagon as six triangles (no T-junctions).
+  static const int caps[6][3] = { { 0, 1, 2 }, { 0, 2, 3 }, { 0, 3, 4 }, { 0, 4, 7 }, { 7, 4, 5 },
+    { 7, 5, 6 } };
+  for (int side = -1; side <= 1; side += 2)
+  {
+    const unsigned first = static_cast<unsigned>(mesh.Points.size());
+    for (int corner = 0; corner < 8; ++corner)
+    {
+      mesh.Points.push_back(at(corner, static_cast<float>(side) * z));
+      mesh.Normals.emplace_back(0.0f, 0.0f, static_cast<float>(side));
+    }
+    for (const auto& c : caps)
+    {
+      if (side > 0)
+      {
+        mesh.Triangles.emplace_back(first + c[0], first + c[1], first + c[2]);
+      }
+      else
+      {
+        mesh.Triangles.emplace_back(first + c[0], first + c[2], first + c[1]);
+      }
+    }
+  }
+  return mesh;
+}
+
 } // namespace vlf
 } // namespace mesolight

@@ -54,6 +54,10 @@ ObjectMesh TransformMesh(const ObjectMesh& mesh, const glm::mat4& transform);
 // benchmarks and `mesolight vlf render --object sphere|cube`.
 ObjectMesh MakeSphere(float radius, int rings, int segments);
 ObjectMesh MakeCube(float side);
+// A concave object: a C-shaped bracket (a profile of width x height, bars `thickness` thick, open
+// toward +x) extruded `depth` along z, centred on the origin, flat normals per face: its bottom
+// bar's upper face lies under the top bar (the object's own overhang).
+ObjectMesh MakeBracket(float width, float height, float thickness, float depth);
 
 } // namespace vlf
 } // namespace mesolight

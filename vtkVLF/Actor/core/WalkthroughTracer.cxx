@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "WalkthroughTracer.h"
 
+#include "ObjectShadows.h"
+
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
@@ -89,6 +91,39 @@ WalkthroughTracer::WalkthroughTracer(const LightField& field)
       ++this->MirrorCount;
     }
   }
+  // A mirror with another mirror's vertex in front of its plane may reflect into it: only
+  // those reflections follow the chain for the object beyond the first bounce.
+  this->MirrorFacesMirror.assign(field.Surfaces().size(), 0);
+  const TriangleScene& scene = field.Scene();
+  std::vector<glm::vec3> onPlane(field.Surfaces().size(), glm::vec3(0.0f));
+  std::vector<std::uint8_t> havePoint(field.Surfaces().size(), 0);
+  for (std::size_t t = 0; t < scene.TriangleCount(); ++t)
+  {
+    const std::uint32_t s = field.SurfaceOfTriangle(t);
+    if (s != NoSurface && this->Mirror[s] && !havePoint[s])
+    {
+      onPlane[s] = scene.Vertex(t, 0);
+      havePoint[s] = 1;
+    }
+  }
+  for (std::size_t t = 0; t < scene.TriangleCount(); ++t)
+  {
+    const std::uint32_t other = field.SurfaceOfTriangle(t);
+    if (other == NoSurface || !this->Mirror[other])
+    {
+      continue;
+    }
+    for (std::uint32_t s = 0; s < field.Surfaces().size(); ++s)
+    {
+      for (int corner = 0; corner < 3 && havePoint[s] && s != other; ++corner)
+      {
+        if (glm::dot(field.Surfaces()[s].Normal, scene.Vertex(t, corner) - onPlane[s]) > 1e-5f)
+        {
+          this->MirrorFacesMirror[s] = 1;
+        }
+      }
+    }
+  }
 }
 
 WalkthroughTracer::~WalkthroughTracer() = default;
@@ -153,51 +188,101 @@ glm::vec3 WalkthroughTracer::ObjectRadiance(const SceneHit& hit) const
     hit.U * this->ObjectRadianceValues[t.y] + hit.V * this->ObjectRadianceValues[t.z];
 }
 
-bool WalkthroughTracer::ReflectionHitsObject(const SceneRay& reflected, glm::vec3& radiance) const
+bool WalkthroughTracer::MayHitObject(const SceneRay& ray) const
 {
-  if (!this->ObjectSet)
-  {
-    return false;
-  }
   // Most reflected rays miss the object's bounding sphere: no Embree query for them.
-  const glm::vec3 d = glm::normalize(reflected.Direction);
-  const glm::vec3 f = this->ObjectCentre - reflected.Origin;
+  const glm::vec3 d = glm::normalize(ray.Direction);
+  const glm::vec3 f = this->ObjectCentre - ray.Origin;
   const float along = glm::dot(f, d);
   const float r2 = this->ObjectRadius * this->ObjectRadius;
-  if (glm::dot(f, f) - along * along > r2 || (along < 0.0f && glm::dot(f, f) > r2))
-  {
-    return false;
-  }
-  const SceneHit hit = this->Scene->Intersect(reflected);
-  if (hit.ObjectTriangle == SceneHit::None)
-  {
-    return false;
-  }
-  radiance = this->ObjectRadiance(hit);
-  return true;
+  return !(glm::dot(f, f) - along * along > r2 || (along < 0.0f && glm::dot(f, f) > r2));
 }
 
-bool WalkthroughTracer::ObjectReflection(
-  std::uint32_t s, const glm::vec3& p, const glm::vec3& d, glm::vec3& radiance) const
+glm::vec3 WalkthroughTracer::ShadedDiffuse(std::uint32_t s, const glm::vec3& p) const
 {
-  if (!this->ObjectSet)
+  const glm::vec3 total = this->FieldLookup.DiffuseRadiance(s, p);
+  if (!this->ShadowsRef || this->ShadowsRef->Empty())
   {
-    return false;
+    return total;
   }
-  // The field has no object: its reflection is found by one ray from the mirror point.
-  const glm::vec3 n = this->LightFieldRef.Surfaces()[s].Normal;
-  const glm::vec3 dn = glm::normalize(d);
-  SceneRay reflected;
-  reflected.Origin = p + this->Epsilon * n;
-  reflected.Direction = dn - 2.0f * glm::dot(dn, n) * n;
-  glm::vec3 object;
-  if (!this->ReflectionHitsObject(reflected, object))
+  return this->ShadowsRef->Shade(
+    total, p, this->LightFieldRef.Surfaces()[s].Normal, this->LightFieldRef.MaterialOf(s).Diffuse);
+}
+
+glm::vec3 WalkthroughTracer::MirrorChain::Apply(const glm::vec3& field) const
+{
+  switch (this->End)
   {
-    return false;
+    case Object:
+      return this->Own + this->Throughput * this->Value;
+    case Shadow:
+      return glm::max(glm::vec3(0.0f), field - this->Throughput * this->Value);
+    case Field:
+    default:
+      return field;
   }
-  radiance =
-    this->FieldLookup.DiffuseRadiance(s, p) + this->LightFieldRef.MaterialOf(s).Specular * object;
-  return true;
+}
+
+WalkthroughTracer::MirrorChain WalkthroughTracer::FollowMirrorChain(
+  std::uint32_t s, glm::vec3 p, glm::vec3 d, const TraceOptions& options) const
+{
+  MirrorChain chain;
+  const bool shadows = this->ShadowsRef && !this->ShadowsRef->Empty();
+  if (!this->ObjectSet && !shadows)
+  {
+    return chain;
+  }
+  glm::vec3 throughput(1.0f);
+  for (int depth = 0; depth < std::max(1, options.MaximumDepth); ++depth)
+  {
+    const glm::vec3 n = this->LightFieldRef.Surfaces()[s].Normal;
+    chain.Own += throughput * this->ShadedDiffuse(s, p);
+    throughput *= this->LightFieldRef.MaterialOf(s).Specular;
+    const glm::vec3 dn = glm::normalize(d);
+    SceneRay reflected;
+    reflected.Origin = p + this->Epsilon * n;
+    reflected.Direction = dn - 2.0f * glm::dot(dn, n) * n;
+    const bool deeper = !this->IgnoreDeeperObjectForTesting;
+    const bool object = this->ObjectSet && this->MayHitObject(reflected);
+    if (!object && !shadows && !(deeper && this->ObjectSet && this->MirrorFacesMirror[s]))
+    {
+      return MirrorChain{}; // nothing the field does not know along this reflection
+    }
+    const SceneHit hit = this->Scene->Intersect(reflected);
+    std::uint32_t next;
+    const PixelClass c = this->Classify(reflected, hit, next);
+    if (c == PixelClass::Object)
+    {
+      chain.End = MirrorChain::Object;
+      chain.Throughput = throughput;
+      chain.Value = this->ObjectRadiance(hit);
+      return chain;
+    }
+    const glm::vec3 q = reflected.Origin + hit.T * reflected.Direction;
+    if (c == PixelClass::Mirror && deeper)
+    {
+      s = next;
+      p = q;
+      d = reflected.Direction;
+      continue;
+    }
+    if (c == PixelClass::Diffuse && shadows)
+    {
+      // The field's value at the mirror holds this point's unshadowed light: take off what the
+      // object's shadow takes off there.
+      const glm::vec3 lost =
+        this->FieldLookup.DiffuseRadiance(next, q) - this->ShadedDiffuse(next, q);
+      if (MaxComponent(lost) > 0.0f)
+      {
+        chain.End = MirrorChain::Shadow;
+        chain.Throughput = throughput;
+        chain.Value = lost;
+        return chain;
+      }
+    }
+    return MirrorChain{};
+  }
+  return MirrorChain{};
 }
 
 PixelClass WalkthroughTracer::Classify(
@@ -277,12 +362,12 @@ glm::vec3 WalkthroughTracer::TracedRadiance(
     {
       if (options.BouncesShortForTesting <= 0)
       {
-        sum += throughput * this->FieldLookup.DiffuseRadiance(s, p);
+        sum += throughput * this->ShadedDiffuse(s, p);
       }
       break;
     }
     // A mirror: its own diffuse part, then the perfect reflection.
-    sum += throughput * this->FieldLookup.DiffuseRadiance(s, p);
+    sum += throughput * this->ShadedDiffuse(s, p);
     const glm::vec3 n = this->LightFieldRef.Surfaces()[s].Normal;
     throughput *= this->LightFieldRef.MaterialOf(s).Specular;
     const glm::vec3 d = glm::normalize(ray.Direction);
@@ -332,11 +417,11 @@ void WalkthroughTracer::TracedRadiance16(
       {
         if (options.BouncesShortForTesting <= 0)
         {
-          out[slot[q]] += throughput[q] * this->FieldLookup.DiffuseRadiance(s, p);
+          out[slot[q]] += throughput[q] * this->ShadedDiffuse(s, p);
         }
         continue;
       }
-      out[slot[q]] += throughput[q] * this->FieldLookup.DiffuseRadiance(s, p);
+      out[slot[q]] += throughput[q] * this->ShadedDiffuse(s, p);
       const glm::vec3 normal = this->LightFieldRef.Surfaces()[s].Normal;
       const glm::vec3 d = glm::normalize(active[q].Direction);
       SceneRay reflected;
@@ -356,20 +441,24 @@ glm::vec3 WalkthroughTracer::MirrorRadiance(std::uint32_t s, const glm::vec3& p,
   SpecularQuality quality, const TraceOptions& options) const
 {
   const glm::vec3 toEye = -glm::normalize(d);
-  glm::vec3 object;
-  if (quality != SpecularQuality::Traced && this->ObjectReflection(s, p, d, object))
+  MirrorChain chain;
+  if (quality != SpecularQuality::Traced)
   {
-    return object;
+    chain = this->FollowMirrorChain(s, p, d, options);
+    if (chain.End == MirrorChain::Object)
+    {
+      return chain.Apply(glm::vec3(0.0f));
+    }
   }
   switch (quality)
   {
     case SpecularQuality::Moving:
       // One direction instead of three (nearest cells leave holes where a line just misses).
-      return this->FieldLookup.RadianceLeaving(
-        s, p, toEye, CellInterpolation::Bilinear, DirectionInterpolation::Nearest);
+      return chain.Apply(this->FieldLookup.RadianceLeaving(
+        s, p, toEye, CellInterpolation::Bilinear, DirectionInterpolation::Nearest));
     case SpecularQuality::Raytrace:
-      return this->FieldLookup.RadianceLeaving(
-        s, p, toEye, CellInterpolation::Bilinear, DirectionInterpolation::Spherical);
+      return chain.Apply(this->FieldLookup.RadianceLeaving(
+        s, p, toEye, CellInterpolation::Bilinear, DirectionInterpolation::Spherical));
     case SpecularQuality::Traced:
     default:
     {
@@ -380,7 +469,7 @@ glm::vec3 WalkthroughTracer::MirrorRadiance(std::uint32_t s, const glm::vec3& p,
       reflected.Direction = dn - 2.0f * glm::dot(dn, n) * n;
       TraceOptions rest = options;
       rest.MaximumDepth = options.MaximumDepth - 1;
-      const glm::vec3 own = this->FieldLookup.DiffuseRadiance(s, p);
+      const glm::vec3 own = this->ShadedDiffuse(s, p);
       return own +
         this->LightFieldRef.MaterialOf(s).Specular * this->TracedRadiance(reflected, rest);
     }
@@ -487,10 +576,10 @@ std::size_t WalkthroughTracer::ShadeTiles(const ViewFrame& view, const PixelRect
       {
         // While the camera moves one lookup serves each 2 x 2 pixel block of one surface (the
         // mode is blurry by design; this quarters its cost).
-        glm::vec3 object;
-        if (this->ObjectReflection(s, p, rays[q].Direction, object))
+        const MirrorChain chain = this->FollowMirrorChain(s, p, rays[q].Direction, options);
+        if (chain.End == MirrorChain::Object)
         {
-          Store(rgba, object, 1.0f); // per pixel: the object's outline stays sharp
+          Store(rgba, chain.Apply(glm::vec3(0.0f)), 1.0f); // per pixel: a sharp outline
           ++valued;
           continue;
         }
@@ -502,7 +591,7 @@ std::size_t WalkthroughTracer::ShadeTiles(const ViewFrame& view, const PixelRect
             this->FieldLookup.RadianceLeaving(s, p, -glm::normalize(rays[q].Direction),
               CellInterpolation::Bilinear, DirectionInterpolation::Nearest);
         }
-        Store(rgba, blockValue[block], 1.0f);
+        Store(rgba, chain.Apply(blockValue[block]), 1.0f); // the shadow per pixel too
         ++valued;
         continue;
       }
@@ -521,7 +610,7 @@ std::size_t WalkthroughTracer::ShadeTiles(const ViewFrame& view, const PixelRect
       const glm::vec3 d = rays[q].Direction;
       reflected[m].Origin = p + this->Epsilon * normal;
       reflected[m].Direction = d - 2.0f * glm::dot(d, normal) * normal;
-      own[m] = this->FieldLookup.DiffuseRadiance(s, p);
+      own[m] = this->ShadedDiffuse(s, p);
       ks[m] = this->LightFieldRef.MaterialOf(s).Specular;
       reflectedSlot[m] = q;
       ++m;

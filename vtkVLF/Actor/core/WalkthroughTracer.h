@@ -22,8 +22,13 @@
 // the static BVH stays), SetObjectRadiance the radiance leaving each of its points (gathered).
 // Primary rays that hit it first give no screen value (its own actor draws it); reflected rays
 // that hit it return its radiance, interpolated from its points: at every bounce of traced
-// reflections, and at the first bounce of the field-lookup qualities (Moving, Raytrace), whose
-// field knows nothing of the object.
+// reflections, and at every bounce of the field-lookup qualities (Moving, Raytrace), whose field
+// knows nothing of the object: there the mirror chain is followed by rays (only when a reflected
+// ray can reach the object's bounding sphere or another mirror) and the field value is kept when
+// the chain never meets the object. SetShadows gives the object's shadows (ObjectShadows): a
+// diffuse surface seen in a mirror is darkened at the point the mirror ray lands on by the same
+// ObjectShadows::Shade the raytrace mode applies to directly seen pixels (and the GPU's twin
+// glsl/vtkLightFieldShadowFS.glsl to the progressive and coherent modes' diffuse pixels).
 #ifndef mesolight_vlf_WalkthroughTracer_h
 #define mesolight_vlf_WalkthroughTracer_h
 
@@ -103,6 +108,8 @@ struct TraceOptions
   int BouncesShortForTesting = 0;
 };
 
+class ObjectShadows;
+
 class WalkthroughTracer
 {
 public:
@@ -129,6 +136,15 @@ public:
   const glm::mat4& ObjectPlacement() const { return this->Placement; }
   // Radiance leaving the object at a hit on it (hit.ObjectTriangle set).
   glm::vec3 ObjectRadiance(const SceneHit& hit) const;
+  ///@}
+
+  ///@{
+  // The object's shadows on the diffuse surfaces seen in mirrors (not owned; nullptr: none).
+  // Not thread-safe against shading running at the same time, like SetObject.
+  void SetShadows(const ObjectShadows* shadows) { this->ShadowsRef = shadows; }
+  const ObjectShadows* Shadows() const { return this->ShadowsRef; }
+  // The total diffuse radiance of surface s at p, darkened by the object's shadow when set.
+  glm::vec3 ShadedDiffuse(std::uint32_t s, const glm::vec3& p) const;
   ///@}
 
   // Class of a primary hit; surface is set for the front/back of a surface.
@@ -175,20 +191,41 @@ private:
   std::vector<std::uint8_t> Mirror; // per surface
   std::size_t MirrorCount = 0;
   float Epsilon = 1e-4f; // ray offset off a mirror (unit sphere)
+  bool IgnoreDeeperObjectForTesting = false;
 
+public:
+  // Negative tests only: the field-lookup qualities look for the object at the first mirror
+  // bounce only (what they did before the mirror chain was followed).
+  void SetFirstBounceObjectOnlyForTesting(bool on) { this->IgnoreDeeperObjectForTesting = on; }
+
+private:
   bool ObjectSet = false;
   ObjectMesh ObjectModel;
   std::vector<glm::vec3> ObjectRadianceValues;
   glm::mat4 Placement{ 1.0f };
   glm::vec3 ObjectCentre{ 0.0f }; // bounding sphere in the unit sphere (cheap ray rejection)
   float ObjectRadius = 0.0f;
-  // The reflected ray from a mirror point: true, with the object's radiance, when the object
-  // is the first thing it hits (field-lookup qualities).
-  bool ReflectionHitsObject(const SceneRay& reflected, glm::vec3& radiance) const;
-  // Mirror point p of surface s seen along d: true, with the mirror's radiance (its diffuse
-  // part plus Ks x the object's), when the reflection hits the object first.
-  bool ObjectReflection(
-    std::uint32_t s, const glm::vec3& p, const glm::vec3& d, glm::vec3& radiance) const;
+  const ObjectShadows* ShadowsRef = nullptr;
+  std::vector<std::uint8_t> MirrorFacesMirror; // per mirror surface: another mirror in front
+  // True when the ray may reach the object (its bounding sphere).
+  bool MayHitObject(const SceneRay& ray) const;
+  // What the field-lookup qualities must correct at mirror point p of surface s seen along d:
+  // the mirror chain from p meets the object (Object: the mirror's radiance is Own + Throughput
+  // x Value) or ends on a diffuse point the object shadows (Shadow: the field's mirror value
+  // loses Throughput x Value); Field: keep the field's value.
+  struct MirrorChain
+  {
+    enum Kind
+    {
+      Field,
+      Object,
+      Shadow
+    } End = Field;
+    glm::vec3 Own{ 0.0f }, Throughput{ 1.0f }, Value{ 0.0f };
+    glm::vec3 Apply(const glm::vec3& field) const;
+  };
+  MirrorChain FollowMirrorChain(
+    std::uint32_t s, glm::vec3 p, glm::vec3 d, const TraceOptions& options) const;
 };
 
 } // namespace vlf

@@ -133,6 +133,106 @@ TEST(ShadowMapGL, GpuAndRaytraceDarkeningMatchCore)
   EXPECT_EQ(viewer.Actor->GetShadowProblem(), "");
 }
 
+// The shadow seen in the mirror wall: the mirror pixels whose reflection lands on the shadowed
+// floor are darkened (on the CPU, ObjectShadows::Shade at the landing point) by the ratio the
+// GPU darkens the directly seen floor there (glsl/vtkLightFieldShadowFS.glsl), coherent and
+// raytrace modes; without the shadow the mirror keeps the floor's full light (the negative case).
+TEST(ShadowMapGL, ShadowSeenInTheMirrorMatchesTheDirectlySeenFloor)
+{
+  const vlf::LightField& field = MirrorCornellField(513);
+  Viewer viewer(field);
+  const vlf::ObjectMesh cube =
+    vlf::TransformMesh(vlf::TransformMesh(vlf::MakeCube(90.0f),
+                         glm::translate(glm::mat4(1.0f), glm::vec3(400.0f, 130.0f, 140.0f))),
+      vlf::WorldToUnitSphere(field));
+  viewer.Actor->SetShadowCasterForTesting(&cube);
+  // The floor under the cube seen directly (the GPU's darkening), with and without the shadow.
+  const vlf::ViewFrame floorView = viewer.SetCamera(
+    field, glm::vec3(440.0f, 350.0f, -150.0f), glm::vec3(440.0f, 0.0f, 120.0f), 40.0f);
+  viewer.Actor->SetShadowMode(vtkLightFieldActor::ShadowNone);
+  const Images floorLit = viewer.Render(vtkLightFieldActor::Progressive);
+  viewer.Actor->SetShadowMode(vtkLightFieldActor::ShadowField);
+  const Images floorShadowed = viewer.Render(vtkLightFieldActor::Progressive);
+  // The same floor seen in the mirror wall (x = 550).
+  const vlf::ViewFrame mirrorView = viewer.SetCamera(
+    field, glm::vec3(150.0f, 280.0f, 30.0f), glm::vec3(662.0f, 0.0f, 96.0f), 50.0f);
+  const vlf::WalkthroughTracer tracer(field);
+  const float halfWidth = floorView.TanHalfHeight;
+  auto sum = [](const glm::vec3& v) { return v.x + v.y + v.z; };
+  for (const int mode : { vtkLightFieldActor::Coherent, vtkLightFieldActor::Raytrace })
+  {
+    viewer.Actor->SetShadowMode(vtkLightFieldActor::ShadowNone);
+    const Images mirrorLit = viewer.Render(mode);
+    viewer.Actor->SetShadowMode(vtkLightFieldActor::ShadowField);
+    const Images mirrorShadowed = viewer.Render(mode);
+    std::size_t count = 0;
+    double error = 0.0, errorWithout = 0.0;
+    for (int row = 0; row < Size; ++row)
+    {
+      for (int column = 0; column < Size; ++column)
+      {
+        // Where the mirror pixel's reflection lands (the ray cast), and the floor view's pixel
+        // that sees that point directly.
+        const SceneRay ray = mirrorView.Ray(column + 0.5f, row + 0.5f);
+        const SceneHit hit = tracer.Embree().Intersect(ray);
+        std::uint32_t s;
+        if (tracer.Classify(ray, hit, s) != vlf::PixelClass::Mirror)
+        {
+          continue;
+        }
+        const glm::vec3 n = field.Surfaces()[s].Normal;
+        const glm::vec3 d = glm::normalize(ray.Direction);
+        SceneRay reflected;
+        reflected.Origin = ray.Origin + hit.T * ray.Direction + 1e-4f * n;
+        reflected.Direction = d - 2.0f * glm::dot(d, n) * n;
+        const SceneHit landing = tracer.Embree().Intersect(reflected);
+        if (tracer.Classify(reflected, landing, s) != vlf::PixelClass::Diffuse ||
+          field.Surfaces()[s].Normal.y < 0.99f)
+        {
+          continue;
+        }
+        const glm::vec3 q = reflected.Origin + landing.T * reflected.Direction;
+        const glm::vec3 r = q - floorView.Eye;
+        const float z = glm::dot(r, floorView.Forward);
+        const int x = static_cast<int>(
+          std::floor((glm::dot(r, floorView.Right) / z / halfWidth + 1.0f) * 0.5f * Size));
+        const int y = static_cast<int>(std::floor(
+          (glm::dot(r, floorView.Up) / z / floorView.TanHalfHeight + 1.0f) * 0.5f * Size));
+        if (x < 0 || y < 0 || x >= Size || y >= Size)
+        {
+          continue;
+        }
+        const std::size_t f = static_cast<std::size_t>(y) * Size + x;
+        const std::size_t m = static_cast<std::size_t>(row) * Size + column;
+        const glm::vec3 lit = floorLit.Radiance[f], mirrorBase = mirrorLit.Radiance[m];
+        if (std::max(lit.x, std::max(lit.y, lit.z)) * Exposure >= 0.98f || sum(lit) < 0.05f ||
+          std::max(mirrorBase.x, std::max(mirrorBase.y, mirrorBase.z)) * Exposure >= 0.98f ||
+          sum(mirrorBase) < 0.05f)
+        {
+          continue; // clipped or too dark for 8-bit ratios
+        }
+        const float floorRatio = sum(floorShadowed.Radiance[f]) / sum(lit);
+        if (!(floorRatio < 0.7f))
+        {
+          continue;
+        }
+        error += std::abs(sum(mirrorShadowed.Radiance[m]) / sum(mirrorBase) - floorRatio);
+        errorWithout += std::abs(1.0f - floorRatio);
+        ++count;
+      }
+    }
+    std::printf("[ figures  ] %s mode: %zu mirror pixels show the shadowed floor; mean |mirror "
+                "darkening - floor darkening| %.3f (without the shadow in the mirror %.3f)\n",
+      vtkLightFieldActor::GetRenderModeAsString(mode), count, error / count, errorWithout / count);
+    ASSERT_GT(count, 40u);
+    // Coherent reads the landing point's texture; raytrace keeps the field's mirror value and
+    // loses Ks x the floor's loss, so its ratio carries the field's error there.
+    const double bound = mode == vtkLightFieldActor::Coherent ? 0.1 : 0.2;
+    EXPECT_LT(error / count, bound);
+    EXPECT_GT(errorWithout / count, bound);
+  }
+}
+
 } // namespace walkthroughtest
 } // namespace mesolight
 
