@@ -24,6 +24,10 @@ DELIBERATE = {
         "information about the last read (Python: GetPropertyValue)",
     ("MesolightOBJSceneReader", "DegenerateTriangles"):
         "information about the last read (Python: GetPropertyValue)",
+    ("MesolightLightFieldGather", "FieldPropagations"):
+        "information about the last update (Python: GetPropertyValue)",
+    ("MesolightLightFieldGather", "FieldBroadcasts"):
+        "information about the last update (Python: GetPropertyValue)",
 }
 PANEL_TYPES = ("IntVectorProperty", "DoubleVectorProperty", "StringVectorProperty")
 
