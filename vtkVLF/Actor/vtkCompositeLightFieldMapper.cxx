@@ -86,9 +86,13 @@ protected:
     this->Radiance = owner->VertexRadiance ? VertexRadiance
       : owner->PrepareAtlas(ren)           ? Atlas
                                            : Ordinary;
-    if (this->Radiance == Atlas)
+    if (this->Radiance == VertexRadiance && !owner->PrepareBlankTexture(ren))
     {
-      owner->AtlasTexture->Activate();
+      this->Radiance = Ordinary;
+    }
+    if (this->Radiance != Ordinary)
+    {
+      this->Texture(owner)->Activate();
     }
     this->Shadowing = this->Radiance == Atlas && owner->PrepareShadowTexture(ren);
     if (this->Shadowing)
@@ -105,10 +109,17 @@ protected:
     {
       this->Owner()->Shadows->Texture->Deactivate();
     }
-    if (this->Radiance == Atlas)
+    if (this->Radiance != Ordinary)
     {
-      this->Owner()->AtlasTexture->Deactivate();
+      this->Texture(this->Owner())->Deactivate();
     }
+  }
+
+  // The draw's 2D texture: the atlas, or for a gathered surface a blank one, so that every
+  // sampler of the shared fragment code points at a 2D texture (none is read).
+  vtkTextureObject* Texture(vtkCompositeLightFieldMapper* owner) const
+  {
+    return this->Radiance == Atlas ? owner->AtlasTexture.Get() : owner->BlankTexture.Get();
   }
 
   // The atlas coordinates are our own attribute: the helper uploads "tcoord" only when the
@@ -176,14 +187,14 @@ protected:
     vtkCompositeLightFieldMapper* owner = this->Owner();
     vtkLightFieldMapper::RadianceUniforms uniforms;
     // A gathered surface reads no atlas (unit 0 is never sampled).
-    uniforms.AtlasUnit = this->Radiance == Atlas ? owner->AtlasTexture->GetTextureUnit() : 0;
+    uniforms.AtlasUnit = this->Texture(owner)->GetTextureUnit();
     uniforms.ScreenUnit = uniforms.AtlasUnit; // no screen-space pass: never read (size 0)
     uniforms.Exposure = static_cast<float>(owner->GetEffectiveExposure());
     uniforms.ToneMap = owner->GetToneMap();
     vtkLightFieldMapper::SetRadianceUniforms(cellBO.Program, uniforms);
     vtkLightFieldMapper::SetShadowUniforms(cellBO.Program,
       this->Shadowing ? &owner->Shadows->Gpu : nullptr,
-      this->Shadowing ? owner->Shadows->Texture->GetTextureUnit() : 0);
+      this->Shadowing ? owner->Shadows->Texture->GetTextureUnit() : uniforms.AtlasUnit);
   }
 
   void ReleaseGraphicsResources(vtkWindow* window) override
@@ -334,6 +345,23 @@ void vtkCompositeLightFieldMapper::PrepareShadows()
 }
 
 //------------------------------------------------------------------------------
+bool vtkCompositeLightFieldMapper::PrepareBlankTexture(vtkRenderer* ren)
+{
+  vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+  if (!window)
+  {
+    return false;
+  }
+  if (this->BlankTexture && this->BlankTexture->GetHandle() != 0 &&
+    this->BlankTexture->GetContext() == window)
+  {
+    return true;
+  }
+  const float blank[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
+  return vtkLightFieldMapper::UploadAtlasTexture(this->BlankTexture, window, 1, 1, blank);
+}
+
+//------------------------------------------------------------------------------
 bool vtkCompositeLightFieldMapper::PrepareShadowTexture(vtkRenderer* ren)
 {
   ShadowData& d = *this->Shadows;
@@ -480,6 +508,10 @@ void vtkCompositeLightFieldMapper::ReleaseGraphicsResources(vtkWindow* win)
   if (this->Shadows->Texture)
   {
     this->Shadows->Texture->ReleaseGraphicsResources(win);
+  }
+  if (this->BlankTexture)
+  {
+    this->BlankTexture->ReleaseGraphicsResources(win);
   }
   this->Shadows->UploadedVersion = 0;
   this->UploadedAtlas = nullptr;

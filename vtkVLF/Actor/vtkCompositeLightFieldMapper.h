@@ -128,6 +128,9 @@ protected:
   void PrepareShadows();
   /** Uploads the maps when they changed; false when there are none to draw. */
   bool PrepareShadowTexture(vtkRenderer* ren);
+  /** A 1 x 1 texture the samplers of a gathered surface's draw point at. */
+  bool PrepareBlankTexture(vtkRenderer* ren);
+  vtkSmartPointer<vtkTextureObject> BlankTexture;
 
   bool VertexRadiance = false; // the input is a gathered surface: per-vertex Radiance
   int ShadowMode = 3;

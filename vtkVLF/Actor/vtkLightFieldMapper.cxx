@@ -330,7 +330,7 @@ void vtkLightFieldMapper::SetShadowUniforms(vtkShaderProgram* program, vtkActor*
   vtkLightFieldActor* actor = vtkLightFieldActor::SafeDownCast(act);
   vtkLightFieldActor::ShadowState* state = actor ? actor->GetShadowState() : nullptr;
   SetShadowUniforms(program, this->Shadowing && state ? &state->Gpu : nullptr,
-    this->Shadowing ? this->ShadowTexture->GetTextureUnit() : 0);
+    this->Shadowing ? this->ShadowTexture->GetTextureUnit() : this->AtlasTexture->GetTextureUnit());
 }
 
 //------------------------------------------------------------------------------
@@ -355,6 +355,9 @@ bool vtkLightFieldMapper::UploadShadowTexture(vtkSmartPointer<vtkTextureObject>&
 void vtkLightFieldMapper::SetShadowUniforms(
   vtkShaderProgram* program, const mesolight::vlf::ShadowGpuData* gpu, int textureUnit)
 {
+  // Always a unit holding a 2D texture: a sampler left on a unit another draw has since given a
+  // buffer texture makes the draw an invalid operation, even unread.
+  program->SetUniformi("mlShadowDepth", textureUnit);
   if (!gpu)
   {
     program->SetUniformi("mlShadowMode", 0);
@@ -362,7 +365,6 @@ void vtkLightFieldMapper::SetShadowUniforms(
     return;
   }
   program->SetUniformi("mlShadowMode", gpu->Mode);
-  program->SetUniformi("mlShadowDepth", textureUnit);
   program->SetUniformi("mlShadowColumns", gpu->Columns);
   program->SetUniformi("mlShadowResolution", gpu->Resolution);
   program->SetUniformi("mlShadowEmitterCount", gpu->EmitterCount);

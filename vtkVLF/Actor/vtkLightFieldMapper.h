@@ -73,7 +73,7 @@ public:
    * The movable object's shadow maps (glsl/vtkLightFieldShadowFS.glsl), written once for this
    * mapper and vtkCompositeLightFieldMapper: uploads the maps' depth tiles (creating the texture
    * if needed; false if the upload failed), and sets the shadow uniforms of one draw (gpu null:
-   * no shadows).
+   * no shadows; textureUnit then any unit holding a 2D texture, e.g. the atlas').
    */
   static bool UploadShadowTexture(vtkSmartPointer<vtkTextureObject>& texture,
     vtkOpenGLRenderWindow* window, const mesolight::vlf::ShadowGpuData& gpu);
