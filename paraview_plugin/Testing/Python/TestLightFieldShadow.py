@@ -13,6 +13,7 @@ inside the Cornell box's field, the gather output as the field display's Shadow 
   must darken by at least 20%.
 - Negative: without a caster the same region keeps its radiance (ratio 1 within 0.02); the
   Black and Blend modes (fixed darkening) must miss the field-derived reference.
+- A saved state brings the Shadow Caster back with its shadow.
 """
 import os
 import subprocess
@@ -196,6 +197,23 @@ scene.LightFieldShadowMode = "None"
 image = capture("pv-shadow-mode-none.png")
 r_off = ratio(image, unshadowed)
 check(abs(r_off - 1.0) <= 0.005, "Shadow Mode None with a caster: no darkening (%.4f)" % r_off)
+
+# --- a state file keeps the caster ---------------------------------------------------------------
+scene.LightFieldShadowMode = "Field"
+state = os.path.join(out, "pv-shadow.pvsm")
+pvs.SaveState(state)
+pvs.ResetSession()  # the plugin stays loaded in this process
+pvs.LoadState(state)
+view = pvs.GetActiveViewOrCreate("RenderView")
+view.ViewSize = [SIZE, SIZE]
+casters = [r.GetProperty("ShadowCaster") for r in view.Representations
+           if r.GetProperty("ShadowCaster") is not None and r.GetProperty("ShadowCaster").GetData()]
+restored = capture("pv-shadow-state.png")
+r_state = ratio(restored, unshadowed)
+print("state reloaded: %d display(s) with a Shadow Caster, %.4f left in the shadow"
+      % (len(casters), r_state))
+check(len(casters) == 1 and abs(r_state - r_pv) <= 0.005,
+      "the saved state brings the Shadow Caster and its shadow back (%.4f)" % r_state)
 
 if failures:
     print("%d check(s) failed" % len(failures))
