@@ -80,6 +80,25 @@ bool vtkVirtualLightField::ComputeIrradiance(
   return true;
 }
 
+int vtkVirtualLightField::RequestUpdateExtent(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkInformation* out = outputVector->GetInformationObject(0);
+  vtkInformation* in = inputVector[0]->GetInformationObject(0);
+  if (!in)
+  {
+    return 1;
+  }
+  // Piece 0 propagates the whole scene (a split scene would give each rank a wrong field).
+  const bool first = out->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()) == 0;
+  in->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(),
+    first ? 0 : out->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()));
+  in->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(),
+    first ? 1 : out->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()));
+  in->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
+  return 1;
+}
+
 int vtkVirtualLightField::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
@@ -92,11 +111,13 @@ int vtkVirtualLightField::RequestData(
     vtkErrorMacro("No input scene.");
     return 0;
   }
-  // In parallel (ParaView under MPI) a rank may hold no part of the scene: its piece is empty,
-  // not an error. The field is propagated where the scene is.
+  // In parallel (ParaView under MPI) piece 0 (rank 0) gets the whole scene and makes the field
+  // once; the other pieces are empty, not an error (Light Field Gather broadcasts the field).
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
-  if (input->GetNumberOfCells() == 0 &&
-    outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()) > 1)
+  const int pieces = outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES());
+  if (pieces > 1 &&
+    (outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()) > 0 ||
+      input->GetNumberOfCells() == 0))
   {
     return 1;
   }
@@ -157,6 +178,7 @@ int vtkVirtualLightField::RequestData(
         }
       });
     this->Field = std::move(field);
+    ++this->PropagationCount;
   }
   catch (const vlf::AbortedError&)
   {
@@ -238,6 +260,41 @@ int vtkVirtualLightField::RequestData(
   }
   output->GetCellData()->AddArray(cellRadiance);
   output->GetPointData()->AddArray(pointRadiance);
+
+  // Shadow receivers (vtkCompositeLightFieldMapper): each vertex's unit-sphere point and its
+  // surface's normal and reflectance, what vtkLightFieldShadowFS.glsl reads per fragment.
+  const vtkIdType vertices = static_cast<vtkIdType>(world.Positions.size());
+  vtkNew<vtkFloatArray> receiverPoint, receiverNormal, receiverDiffuse;
+  receiverPoint->SetName(GetReceiverPointName());
+  receiverNormal->SetName(GetReceiverNormalName());
+  receiverDiffuse->SetName(GetReceiverDiffuseName());
+  for (vtkFloatArray* array : { receiverPoint.Get(), receiverNormal.Get(), receiverDiffuse.Get() })
+  {
+    array->SetNumberOfComponents(3);
+    array->SetNumberOfTuples(vertices);
+    array->Fill(0.0);
+  }
+  for (std::size_t t = 0; t < unit.TriangleCount(); ++t)
+  {
+    const std::uint32_t s = field.SurfaceOfTriangle(t);
+    if (s == vlf::NoSurface)
+    {
+      continue;
+    }
+    const glm::vec3 n = field.Surfaces()[s].Normal;
+    const glm::vec3 kd = field.MaterialOf(s).Diffuse;
+    for (int c = 0; c < 3; ++c)
+    {
+      const vtkIdType id = static_cast<vtkIdType>(world.Triangles[t][c]);
+      const glm::vec3 p = unit.Vertex(t, c);
+      receiverPoint->SetTypedTuple(id, &p[0]);
+      receiverNormal->SetTypedTuple(id, &n[0]);
+      receiverDiffuse->SetTypedTuple(id, &kd[0]);
+    }
+  }
+  output->GetPointData()->AddArray(receiverPoint);
+  output->GetPointData()->AddArray(receiverNormal);
+  output->GetPointData()->AddArray(receiverDiffuse);
 
   // The total diffuse textures whole, for drawing them per pixel (bilinear, no seams: the
   // atlas' gutters), and each vertex's place in them. Every vertex belongs to one surface.
@@ -322,6 +379,7 @@ void vtkVirtualLightField::PrintSelf(ostream& os, vtkIndent indent)
      << "SnapshotFileName: " << (this->SnapshotFileName.empty() ? "(none)" : this->SnapshotFileName)
      << "\n";
   os << indent << "ResumeFromSnapshot: " << this->ResumeFromSnapshot << "\n";
+  os << indent << "PropagationCount: " << this->PropagationCount << "\n";
   os << indent << "LightField: "
      << (this->Field ? std::to_string(this->Field->IterationsDone) + " iterations done" : "(none)")
      << "\n";

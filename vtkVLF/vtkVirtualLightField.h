@@ -17,7 +17,10 @@
  * representation, vtkCompositeLightFieldMapper): the field's TextureAtlas as field data
  * (GetAtlasName(): RGBA floats, row 0 = v near 0; GetAtlasSizeName(): width and height) and each
  * vertex's atlas coordinates as point data (GetAtlasCoordinatesName(), 2 components). Field
- * data travels with every piece and into state files.
+ * data travels with every piece and into state files. For the shadows a movable object casts on
+ * the scene (vtkCompositeLightFieldMapper), each vertex also carries its place in the field's
+ * unit sphere, its surface's normal and reflectance (GetReceiverPointName(),
+ * GetReceiverNormalName(), GetReceiverDiffuseName(): 3 components each).
  *
  * Memory is estimated before anything is allocated; above MemoryBudget the filter fails with a
  * message saying how much it would need. With a SnapshotFileName a snapshot is written after
@@ -25,6 +28,10 @@
  * read and propagation continues from it up to Iterations. The filter refuses to replace a file
  * that is not a light field snapshot. Progress goes through UpdateProgress; AbortExecute stops
  * between rounds of subfields.
+ *
+ * Under MPI (pieces > 1) only piece 0 propagates, from the whole scene (its input is asked for
+ * piece 0 of 1); the other pieces are empty and have no field (vtkLightFieldGatherFilter
+ * broadcasts rank 0's).
  *
  * After an update, GetLightField() gives the field for lookups (mesolight::vlf::Lookup), and
  * ComputeIrradiance() the irradiance at any world point and normal (the movable-object query).
@@ -121,7 +128,17 @@ public:
   static const char* GetAtlasName() { return "LightFieldAtlas"; }
   static const char* GetAtlasSizeName() { return "LightFieldAtlasSize"; }
   static const char* GetAtlasCoordinatesName() { return "LightFieldAtlasTC"; }
+  static const char* GetReceiverPointName() { return "LightFieldUnitPoint"; }
+  static const char* GetReceiverNormalName() { return "LightFieldNormal"; }
+  static const char* GetReceiverDiffuseName() { return "LightFieldDiffuse"; }
   ///@}
+
+  /**
+   * Fields this instance has built or read since it was created (each update that makes a field
+   * counts one): how tests check that, under MPI, one rank propagates and the others receive
+   * the field (vtkLightFieldGatherFilter).
+   */
+  vtkGetMacro(PropagationCount, int);
 
   /**
    * The atlas a light field output carries (null when it has none or the arrays do not agree);
@@ -136,6 +153,9 @@ protected:
   vtkVirtualLightField();
   ~vtkVirtualLightField() override;
 
+  // Piece 0 asks its input for the whole scene; the other pieces pass the request on and make
+  // no field (their output is empty).
+  int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
 private:
@@ -149,6 +169,7 @@ private:
   vtkTypeInt64 MemoryBudget = vtkTypeInt64(4) << 30;
   std::string SnapshotFileName;
   bool ResumeFromSnapshot = false;
+  int PropagationCount = 0;
   std::unique_ptr<mesolight::vlf::LightField> Field;
 };
 

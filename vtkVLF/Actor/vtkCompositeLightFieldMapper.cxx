@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkCompositeLightFieldMapper.h"
 
+#include "vtkLightFieldGatherFilter.h"
 #include "vtkLightFieldMapper.h"
 #include "vtkVirtualLightField.h"
 
@@ -22,10 +23,36 @@
 
 #include "vtkCompositeMapperHelper2.h"
 
+#include "vtkCellArray.h"
+#include "vtkFieldData.h"
+#include "vtkIdList.h"
+
+#include "ObjectMesh.h"
+#include "ObjectShadows.h"
+#include "WalkthroughImage.h"
+
 #include <cmath>
 #include <map>
 #include <string>
 #include <vector>
+
+// The movable object's shadow maps: vtkLightFieldActor's (vtkLightFieldActorShadows.h) built
+// from the emitters the caster carries instead of the field itself.
+struct vtkCompositeLightFieldMapper::ShadowData
+{
+  vtkSmartPointer<vtkPolyData> Caster;
+  const void* BuiltCaster = nullptr;
+  vtkMTimeType BuiltTime = 0;
+  int BuiltMode = -1;
+  int BuiltResolution = -1;
+  mesolight::vlf::ObjectShadows Maps;
+  mesolight::vlf::ShadowGpuData Gpu;
+  unsigned long Version = 0;
+  unsigned long UploadedVersion = 0;
+  vtkSmartPointer<vtkTextureObject> Texture;
+  std::string Problem;
+  bool Active() const { return this->Gpu.Mode != 0 && this->Gpu.EmitterCount > 0; }
+};
 
 //==============================================================================
 // The helper that draws the blocks: vtkLightFieldMapper's shader edits, with the parent's atlas.
@@ -44,12 +71,33 @@ protected:
     return static_cast<vtkCompositeLightFieldMapper*>(this->Parent);
   }
 
+  // 0: VTK's own shading; 1: the atlas (the scene, shadows); 2: per-vertex Radiance (a
+  // gathered surface).
+  enum Variant
+  {
+    Ordinary = 0,
+    Atlas = 1,
+    VertexRadiance = 2
+  };
+
   void RenderPieceStart(vtkRenderer* ren, vtkActor* actor) override
   {
-    this->Radiance = this->Owner()->PrepareAtlas(ren);
-    if (this->Radiance)
+    vtkCompositeLightFieldMapper* owner = this->Owner();
+    this->Radiance = owner->VertexRadiance ? VertexRadiance
+      : owner->PrepareAtlas(ren)           ? Atlas
+                                           : Ordinary;
+    if (this->Radiance == VertexRadiance && !owner->PrepareBlankTexture(ren))
     {
-      this->Owner()->AtlasTexture->Activate();
+      this->Radiance = Ordinary;
+    }
+    if (this->Radiance != Ordinary)
+    {
+      this->Texture(owner)->Activate();
+    }
+    this->Shadowing = this->Radiance == Atlas && owner->PrepareShadowTexture(ren);
+    if (this->Shadowing)
+    {
+      owner->Shadows->Texture->Activate();
     }
     this->Superclass::RenderPieceStart(ren, actor);
   }
@@ -57,10 +105,21 @@ protected:
   void RenderPieceFinish(vtkRenderer* ren, vtkActor* actor) override
   {
     this->Superclass::RenderPieceFinish(ren, actor);
-    if (this->Radiance)
+    if (this->Shadowing)
     {
-      this->Owner()->AtlasTexture->Deactivate();
+      this->Owner()->Shadows->Texture->Deactivate();
     }
+    if (this->Radiance != Ordinary)
+    {
+      this->Texture(this->Owner())->Deactivate();
+    }
+  }
+
+  // The draw's 2D texture: the atlas, or for a gathered surface a blank one, so that every
+  // sampler of the shared fragment code points at a 2D texture (none is read).
+  vtkTextureObject* Texture(vtkCompositeLightFieldMapper* owner) const
+  {
+    return this->Radiance == Atlas ? owner->AtlasTexture.Get() : owner->BlankTexture.Get();
   }
 
   // The atlas coordinates are our own attribute: the helper uploads "tcoord" only when the
@@ -69,18 +128,30 @@ protected:
     vtkIdType& voffset, std::vector<unsigned char>& colors, std::vector<float>& norms) override
   {
     this->Superclass::AppendOneBufferObject(ren, actor, hdata, voffset, colors, norms);
-    vtkDataArray* tcoords =
-      hdata->Data->GetPointData()->GetArray(vtkVirtualLightField::GetAtlasCoordinatesName());
-    if (!tcoords || tcoords->GetNumberOfComponents() != 2)
+    vtkPointData* pd = hdata->Data->GetPointData();
+    auto append = [&](const char* attribute, const char* name, int components)
     {
-      return;
-    }
-    vtkIdType offset = 0;
-    vtkIdType total = 0;
-    // Reused blocks (the superclass found their vertices already uploaded) keep ours too.
-    if (!this->VBOs->ArrayExists("mlAtlasTC", tcoords, offset, total) || offset != voffset)
+      vtkDataArray* array = pd->GetArray(name);
+      if (!array || array->GetNumberOfComponents() != components)
+      {
+        return;
+      }
+      vtkIdType offset = 0;
+      vtkIdType total = 0;
+      // Reused blocks (the superclass found their vertices already uploaded) keep ours too.
+      if (!this->VBOs->ArrayExists(attribute, array, offset, total) || offset != voffset)
+      {
+        this->VBOs->AppendDataArray(attribute, array, VTK_FLOAT);
+      }
+    };
+    append("mlAtlasTC", vtkVirtualLightField::GetAtlasCoordinatesName(), 2);
+    // Shadow receivers (glsl/vtkLightFieldShadowFS.glsl): unit-sphere point, normal, Kd.
+    append("mlShadowPoint", vtkVirtualLightField::GetReceiverPointName(), 3);
+    append("mlShadowNormal", vtkVirtualLightField::GetReceiverNormalName(), 3);
+    append("mlShadowKd", vtkVirtualLightField::GetReceiverDiffuseName(), 3);
+    if (this->Owner()->VertexRadiance)
     {
-      this->VBOs->AppendDataArray("mlAtlasTC", tcoords, VTK_FLOAT);
+      append("mlVertexRadiance", "Radiance", 3);
     }
   }
 
@@ -95,29 +166,35 @@ protected:
     std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* actor) override
   {
     this->BuiltRadiance[this->LastBoundBO] = this->Radiance;
-    if (!this->Radiance)
+    if (this->Radiance == Ordinary)
     {
       this->Superclass::ReplaceShaderValues(shaders, ren, actor);
       return;
     }
     vtkLightFieldMapper::ReplaceRadianceShaderValues(
-      shaders, [&]() { this->Superclass::ReplaceShaderValues(shaders, ren, actor); });
+      shaders, [&]() { this->Superclass::ReplaceShaderValues(shaders, ren, actor); },
+      this->Radiance == VertexRadiance);
   }
 
   void SetMapperShaderParameters(
     vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* actor) override
   {
     this->Superclass::SetMapperShaderParameters(cellBO, ren, actor);
-    if (!this->Radiance || !cellBO.Program)
+    if (this->Radiance == Ordinary || !cellBO.Program)
     {
       return;
     }
+    vtkCompositeLightFieldMapper* owner = this->Owner();
     vtkLightFieldMapper::RadianceUniforms uniforms;
-    uniforms.AtlasUnit = this->Owner()->AtlasTexture->GetTextureUnit();
+    // A gathered surface reads no atlas (unit 0 is never sampled).
+    uniforms.AtlasUnit = this->Texture(owner)->GetTextureUnit();
     uniforms.ScreenUnit = uniforms.AtlasUnit; // no screen-space pass: never read (size 0)
-    uniforms.Exposure = static_cast<float>(this->Owner()->GetEffectiveExposure());
-    uniforms.ToneMap = this->Owner()->GetToneMap();
+    uniforms.Exposure = static_cast<float>(owner->GetEffectiveExposure());
+    uniforms.ToneMap = owner->GetToneMap();
     vtkLightFieldMapper::SetRadianceUniforms(cellBO.Program, uniforms);
+    vtkLightFieldMapper::SetShadowUniforms(cellBO.Program,
+      this->Shadowing ? &owner->Shadows->Gpu : nullptr,
+      this->Shadowing ? owner->Shadows->Texture->GetTextureUnit() : uniforms.AtlasUnit);
   }
 
   void ReleaseGraphicsResources(vtkWindow* window) override
@@ -126,8 +203,9 @@ protected:
     this->Superclass::ReleaseGraphicsResources(window);
   }
 
-  bool Radiance = false;                     // this draw replaces VTK's lighting
-  std::map<const void*, bool> BuiltRadiance; // per cellBO: the variant its shader was built for
+  int Radiance = Ordinary;                  // this draw's variant
+  bool Shadowing = false;                   // this draw reads the shadow maps
+  std::map<const void*, int> BuiltRadiance; // per cellBO: the variant its shader was built for
 
 private:
   vtkCompositeLightFieldMapperHelper(const vtkCompositeLightFieldMapperHelper&) = delete;
@@ -140,8 +218,173 @@ vtkStandardNewMacro(vtkCompositeLightFieldMapperHelper);
 vtkStandardNewMacro(vtkCompositeLightFieldMapper);
 
 //------------------------------------------------------------------------------
-vtkCompositeLightFieldMapper::vtkCompositeLightFieldMapper() = default;
+vtkCompositeLightFieldMapper::vtkCompositeLightFieldMapper()
+  : Shadows(new ShadowData)
+{
+}
+
 vtkCompositeLightFieldMapper::~vtkCompositeLightFieldMapper() = default;
+
+//------------------------------------------------------------------------------
+void vtkCompositeLightFieldMapper::SetShadowCaster(vtkPolyData* caster)
+{
+  if (this->Shadows->Caster != caster)
+  {
+    this->Shadows->Caster = caster;
+    this->Modified();
+  }
+}
+
+vtkPolyData* vtkCompositeLightFieldMapper::GetShadowCaster()
+{
+  return this->Shadows->Caster;
+}
+
+void vtkCompositeLightFieldMapper::SetShadowMode(int mode)
+{
+  mode = std::min(std::max(mode, 0), 5);
+  if (mode != this->ShadowMode)
+  {
+    this->ShadowMode = mode;
+    this->Modified();
+  }
+}
+
+void vtkCompositeLightFieldMapper::SetShadowMapResolution(int texels)
+{
+  texels = std::min(std::max(texels, 16), 4096);
+  if (texels != this->ShadowMapResolution)
+  {
+    this->ShadowMapResolution = texels;
+    this->Modified();
+  }
+}
+
+const char* vtkCompositeLightFieldMapper::GetShadowProblem()
+{
+  return this->Shadows->Problem.c_str();
+}
+
+//------------------------------------------------------------------------------
+void vtkCompositeLightFieldMapper::PrepareShadows()
+{
+  namespace vlf = mesolight::vlf;
+  ShadowData& d = *this->Shadows;
+  vtkPolyData* caster = this->ShadowMode != 0 ? d.Caster.Get() : nullptr;
+  if (caster == d.BuiltCaster && (!caster || caster->GetMTime() == d.BuiltTime) &&
+    this->ShadowMode == d.BuiltMode && this->ShadowMapResolution == d.BuiltResolution)
+  {
+    return;
+  }
+  d.BuiltCaster = caster;
+  d.BuiltTime = caster ? caster->GetMTime() : 0;
+  d.BuiltMode = this->ShadowMode;
+  d.BuiltResolution = this->ShadowMapResolution;
+  d.Maps.Clear();
+  d.Gpu = vlf::ShadowGpuData();
+  ++d.Version;
+  const std::string before = d.Problem;
+  d.Problem.clear();
+  if (!caster)
+  {
+    return;
+  }
+  vtkFieldData* fields = caster->GetFieldData();
+  vtkFloatArray* packed = vtkFloatArray::SafeDownCast(
+    fields ? fields->GetAbstractArray(vtkLightFieldGatherFilter::GetEmittersName()) : nullptr);
+  vtkDataArray* normalisation = vtkArrayDownCast<vtkDataArray>(
+    fields ? fields->GetAbstractArray(vtkLightFieldGatherFilter::GetToUnitSphereName()) : nullptr);
+  std::vector<vlf::ShadowEmitter> emitters;
+  if (!packed || !normalisation || normalisation->GetNumberOfValues() != 4 ||
+    !vlf::UnpackEmitters(
+      packed->GetPointer(0), static_cast<std::size_t>(packed->GetNumberOfValues()), emitters))
+  {
+    d.Problem = "the Shadow Caster carries no light field emitters: connect the output of Light "
+                "Field Gather (or a filter after it) as the Shadow Caster";
+  }
+  else if (caster->GetNumberOfPolys() == 0 || caster->GetNumberOfPoints() == 0)
+  {
+    d.Problem = "the Shadow Caster has no polygons";
+  }
+  if (d.Problem.empty())
+  {
+    const double scale = normalisation->GetComponent(3, 0);
+    const double centre[3] = { normalisation->GetComponent(0, 0), normalisation->GetComponent(1, 0),
+      normalisation->GetComponent(2, 0) };
+    vlf::ObjectMesh mesh;
+    mesh.Points.reserve(static_cast<std::size_t>(caster->GetNumberOfPoints()));
+    for (vtkIdType i = 0; i < caster->GetNumberOfPoints(); ++i)
+    {
+      double p[3];
+      caster->GetPoint(i, p);
+      mesh.Points.emplace_back(static_cast<float>((p[0] - centre[0]) * scale),
+        static_cast<float>((p[1] - centre[1]) * scale),
+        static_cast<float>((p[2] - centre[2]) * scale));
+    }
+    vtkNew<vtkIdList> ids;
+    vtkCellArray* polys = caster->GetPolys();
+    for (polys->InitTraversal(); polys->GetNextCell(ids);)
+    {
+      for (vtkIdType k = 1; k + 1 < ids->GetNumberOfIds(); ++k)
+      {
+        mesh.Triangles.emplace_back(static_cast<unsigned>(ids->GetId(0)),
+          static_cast<unsigned>(ids->GetId(k)), static_cast<unsigned>(ids->GetId(k + 1)));
+      }
+    }
+    mesh.ComputeNormals();
+    vlf::ShadowSettings settings;
+    settings.Mode = static_cast<vlf::ShadowMode>(this->ShadowMode);
+    settings.Resolution = this->ShadowMapResolution;
+    d.Problem = d.Maps.Build(emitters, mesh, settings);
+    d.Gpu = vlf::PackShadowsForGpu(d.Maps);
+  }
+  if (!d.Problem.empty() && d.Problem != before)
+  {
+    vtkWarningMacro(<< "the Shadow Caster casts no shadow: " << d.Problem << ".");
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkCompositeLightFieldMapper::PrepareBlankTexture(vtkRenderer* ren)
+{
+  vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+  if (!window)
+  {
+    return false;
+  }
+  if (this->BlankTexture && this->BlankTexture->GetHandle() != 0 &&
+    this->BlankTexture->GetContext() == window)
+  {
+    return true;
+  }
+  const float blank[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
+  return vtkLightFieldMapper::UploadAtlasTexture(this->BlankTexture, window, 1, 1, blank);
+}
+
+//------------------------------------------------------------------------------
+bool vtkCompositeLightFieldMapper::PrepareShadowTexture(vtkRenderer* ren)
+{
+  ShadowData& d = *this->Shadows;
+  vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+  if (!d.Active() || !window)
+  {
+    return false;
+  }
+  if (d.Texture && d.Texture->GetHandle() != 0 && d.Texture->GetContext() == window &&
+    d.UploadedVersion == d.Version)
+  {
+    return true; // uploaded once per rebuild of the maps
+  }
+  if (!vtkLightFieldMapper::UploadShadowTexture(d.Texture, window, d.Gpu))
+  {
+    vtkErrorMacro(<< "could not upload the " << d.Gpu.Width << "x" << d.Gpu.Height
+                  << " shadow map texture: the object casts no shadow");
+    d.UploadedVersion = 0;
+    return false;
+  }
+  d.UploadedVersion = d.Version;
+  return true;
+}
 
 //------------------------------------------------------------------------------
 vtkCompositeMapperHelper2* vtkCompositeLightFieldMapper::CreateHelper()
@@ -162,12 +405,31 @@ void vtkCompositeLightFieldMapper::Render(vtkRenderer* ren, vtkActor* actor)
       this->CurrentAtlas = vtkVirtualLightField::GetAttachedAtlas(block, this->CurrentAtlasSize);
     }
   }
-  // An empty piece (an MPI rank without cells) has nothing to warn about.
+  // An empty piece (an MPI rank without cells) has nothing to warn about. A surface shaded by
+  // Light Field Gather (no atlas, per-vertex Radiance, the field's log-average luminance) is
+  // drawn with its own radiance.
   bool anyCells = false;
+  double gatheredLogAverage = -1.0;
   for (vtkDataObject* block : blocks)
   {
     auto* poly = vtkPolyData::SafeDownCast(block);
     anyCells = anyCells || (poly && poly->GetNumberOfCells() > 0);
+    vtkDataArray* average = poly && poly->GetFieldData()
+      ? vtkArrayDownCast<vtkDataArray>(
+          poly->GetFieldData()->GetAbstractArray(vtkLightFieldGatherFilter::GetLogAverageName()))
+      : nullptr;
+    vtkDataArray* radiance = poly ? poly->GetPointData()->GetArray("Radiance") : nullptr;
+    if (average && average->GetNumberOfValues() == 1 && radiance &&
+      radiance->GetNumberOfComponents() == 3)
+    {
+      gatheredLogAverage = average->GetComponent(0, 0);
+    }
+  }
+  const bool vertexRadiance = !this->CurrentAtlas && gatheredLogAverage >= 0.0;
+  if (vertexRadiance != this->VertexRadiance)
+  {
+    this->VertexRadiance = vertexRadiance;
+    this->Modified(); // the blocks' buffers gain or lose the radiance attribute
   }
   this->EffectiveExposure = this->Exposure;
   if (this->CurrentAtlas && this->AutoExposure)
@@ -184,7 +446,15 @@ void vtkCompositeLightFieldMapper::Render(vtkRenderer* ren, vtkActor* actor)
       this->EffectiveExposure = this->Exposure * 0.18 / this->AtlasLogAverage;
     }
   }
-  if (!this->CurrentAtlas && anyCells && !this->WarnedNoAtlas)
+  else if (this->VertexRadiance && this->AutoExposure && gatheredLogAverage > 0.0)
+  {
+    this->EffectiveExposure = this->Exposure * 0.18 / gatheredLogAverage;
+  }
+  if (this->CurrentAtlas)
+  {
+    this->PrepareShadows();
+  }
+  if (!this->CurrentAtlas && !this->VertexRadiance && anyCells && !this->WarnedNoAtlas)
   {
     vtkWarningMacro("The input carries no light field atlas (field data '"
       << vtkVirtualLightField::GetAtlasName() << "' of Virtual Light Field's output): drawn "
@@ -197,19 +467,8 @@ void vtkCompositeLightFieldMapper::Render(vtkRenderer* ren, vtkActor* actor)
 //------------------------------------------------------------------------------
 double vtkCompositeLightFieldMapper::LogAverageLuminance(const float* rgba, vtkIdType texels)
 {
-  double sum = 0.0;
-  vtkIdType count = 0;
-  for (vtkIdType i = 0; i < texels; ++i)
-  {
-    const float* p = rgba + 4 * i;
-    const double y = 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2];
-    if (y > 0.0 && std::isfinite(y))
-    {
-      sum += std::log(y);
-      ++count;
-    }
-  }
-  return count > 0 ? std::exp(sum / static_cast<double>(count)) : 0.0;
+  return mesolight::vlf::LogAverageLuminance(
+    rgba, static_cast<std::size_t>(std::max<vtkIdType>(0, texels)));
 }
 
 //------------------------------------------------------------------------------
@@ -246,6 +505,15 @@ void vtkCompositeLightFieldMapper::ReleaseGraphicsResources(vtkWindow* win)
   {
     this->AtlasTexture->ReleaseGraphicsResources(win);
   }
+  if (this->Shadows->Texture)
+  {
+    this->Shadows->Texture->ReleaseGraphicsResources(win);
+  }
+  if (this->BlankTexture)
+  {
+    this->BlankTexture->ReleaseGraphicsResources(win);
+  }
+  this->Shadows->UploadedVersion = 0;
   this->UploadedAtlas = nullptr;
   this->Superclass::ReleaseGraphicsResources(win);
 }
@@ -260,4 +528,8 @@ void vtkCompositeLightFieldMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ToneMap: " << (this->ToneMap == Reinhard ? "Reinhard" : "Clamp") << "\n";
   os << indent << "Atlas: " << this->CurrentAtlasSize[0] << "x" << this->CurrentAtlasSize[1]
      << (this->CurrentAtlas ? "" : " (none)") << "\n";
+  os << indent << "VertexRadiance: " << this->VertexRadiance << "\n";
+  os << indent << "ShadowMode: " << this->ShadowMode << "\n";
+  os << indent << "ShadowMapResolution: " << this->ShadowMapResolution << "\n";
+  os << indent << "ShadowCaster: " << (this->Shadows->Caster ? "set" : "(none)") << "\n";
 }

@@ -13,6 +13,18 @@
  * show their diffuse part only. VTK's lighting is replaced; blocks without an atlas are drawn the
  * ordinary way (with a warning).
  *
+ * Surfaces shaded by vtkLightFieldGatherFilter (no atlas, a point array "Radiance" and the
+ * field's log-average luminance as field data) are drawn with their per-vertex radiance through
+ * the same exposure, tone mapping and sRGB, automatic exposure from the field's log-average: a
+ * gathered object looks like the scene it sits in, without a colour map.
+ *
+ * Shadows of a movable object (SetShadowCaster: Light Field Gather's output, in world
+ * coordinates, whose field data carries the field's emitters and normalisation) darken the
+ * scene by vtkLightFieldActor's code: the maps of mesolight::vlf::ObjectShadows, packed by
+ * PackShadowsForGpu, read per fragment by glsl/vtkLightFieldShadowFS.glsl at each receiver's
+ * unit-sphere point, normal and reflectance (vtkVirtualLightField's receiver arrays).
+ * ShadowMode as vtkLightFieldActor::SetShadowMode (default field-derived).
+ *
  * Only for VTK < 9.3, where vtkCompositePolyDataMapper2 draws through vtkCompositeMapperHelper2.
  */
 #ifndef vtkCompositeLightFieldMapper_h
@@ -22,7 +34,10 @@
 #include "vtkCompositePolyDataMapper2.h"
 #include "vtkSmartPointer.h" // For vtkSmartPointer
 
+#include <memory> // For std::unique_ptr
+
 class vtkFloatArray;
+class vtkPolyData;
 class vtkTextureObject;
 
 class MESOLIGHTLIGHTFIELDACTOR_EXPORT vtkCompositeLightFieldMapper
@@ -72,6 +87,30 @@ public:
   vtkGetMacro(ToneMap, int);
   ///@}
 
+  ///@{
+  /**
+   * The movable object whose shadow darkens the scene (nullptr: none): Light Field Gather's
+   * output, world coordinates. Kept by reference; its modification time rebuilds the maps.
+   */
+  void SetShadowCaster(vtkPolyData* caster);
+  vtkPolyData* GetShadowCaster();
+  ///@}
+
+  ///@{
+  /** vtkLightFieldActor::ShadowModes (0 none ... 5 soft; default 3, field-derived). */
+  void SetShadowMode(int mode);
+  vtkGetMacro(ShadowMode, int);
+  ///@}
+
+  ///@{
+  /** Texels per shadow map side, [16, 4096] (default 256). */
+  void SetShadowMapResolution(int texels);
+  vtkGetMacro(ShadowMapResolution, int);
+  ///@}
+
+  /** Why the last render drew no shadow although a caster was set ("" when it did). */
+  const char* GetShadowProblem();
+
   /** Finds this render's atlas in the input, then draws the blocks. */
   void Render(vtkRenderer* ren, vtkActor* actor) override;
 
@@ -85,6 +124,19 @@ protected:
 
   /** Uploads the current atlas when it changed; false when there is none. */
   bool PrepareAtlas(vtkRenderer* ren);
+  /** Builds the shadow maps when the caster or settings changed (CPU). */
+  void PrepareShadows();
+  /** Uploads the maps when they changed; false when there are none to draw. */
+  bool PrepareShadowTexture(vtkRenderer* ren);
+  /** A 1 x 1 texture the samplers of a gathered surface's draw point at. */
+  bool PrepareBlankTexture(vtkRenderer* ren);
+  vtkSmartPointer<vtkTextureObject> BlankTexture;
+
+  bool VertexRadiance = false; // the input is a gathered surface: per-vertex Radiance
+  int ShadowMode = 3;
+  int ShadowMapResolution = 256;
+  struct ShadowData;
+  std::unique_ptr<ShadowData> Shadows;
 
   double Exposure = 1.0;
   bool AutoExposure = false;

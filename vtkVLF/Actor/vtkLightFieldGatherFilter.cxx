@@ -3,10 +3,14 @@
 
 #include "vtkAlgorithmOutput.h"
 #include "vtkCellArray.h"
+#include "vtkCommunicator.h"
 #include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
 #include "vtkFloatArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkMultiProcessController.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
@@ -17,11 +21,23 @@
 
 #include "LightField.h"
 #include "ObjectGatherer.h"
+#include "ObjectShadows.h"
 #include "Progress.h"
+#include "Snapshot.h"
+#include "TextureAtlas.h"
+#include "WalkthroughImage.h"
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <iterator>
 #include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <unistd.h>
 
 vtkStandardNewMacro(vtkLightFieldGatherFilter);
 
@@ -44,6 +60,15 @@ vtkVirtualLightField* FindLightField(vtkAlgorithm* algorithm)
     algorithm = algorithm->GetInputAlgorithm(0, 0);
   }
   return nullptr;
+}
+
+// A file name of this process' own in the temporary directory (the field travels between ranks
+// as snapshot bytes, written and read by the snapshot code).
+std::string TemporarySnapshotName(int rank)
+{
+  const char* directory = std::getenv("TMPDIR");
+  return std::string(directory && *directory ? directory : "/tmp") + "/mesolight-field-" +
+    std::to_string(static_cast<long>(::getpid())) + "-" + std::to_string(rank) + ".vlf";
 }
 } // namespace
 
@@ -88,11 +113,142 @@ int vtkLightFieldGatherFilter::RequestUpdateExtent(
   }
   if (vtkInformation* field = inputVector[1]->GetInformationObject(0))
   {
-    field->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), 0);
-    field->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), 1);
+    // The piece the field's own display asks for: the field is made once, on rank 0
+    // (vtkVirtualLightField propagates for piece 0 only), and not made again for this filter.
+    field->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(),
+      out->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()));
+    field->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(),
+      out->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()));
     field->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
   }
   return 1;
+}
+
+//------------------------------------------------------------------------------
+namespace
+{
+// What the Light Field representation needs of the field to draw this surface's shadow on the
+// scene and to expose it like the scene (see the header).
+void AttachShadowCasterData(const mesolight::vlf::LightField& field, vtkPolyData* output)
+{
+  namespace vlf = mesolight::vlf;
+  const std::vector<float> packed =
+    vlf::PackEmitters(vlf::SignificantEmitters(field, vlf::ShadowSettings()));
+  vtkNew<vtkFloatArray> emitters;
+  emitters->SetName(vtkLightFieldGatherFilter::GetEmittersName());
+  emitters->SetNumberOfValues(static_cast<vtkIdType>(packed.size()));
+  std::copy(packed.begin(), packed.end(), emitters->GetPointer(0));
+  vtkNew<vtkDoubleArray> normalisation;
+  normalisation->SetName(vtkLightFieldGatherFilter::GetToUnitSphereName());
+  const glm::vec3 centre = field.NormalizationCentre();
+  for (const double v : { static_cast<double>(centre.x), static_cast<double>(centre.y),
+         static_cast<double>(centre.z), static_cast<double>(field.NormalizationScale()) })
+  {
+    normalisation->InsertNextValue(v);
+  }
+  vtkNew<vtkDoubleArray> logAverage;
+  logAverage->SetName(vtkLightFieldGatherFilter::GetLogAverageName());
+  double average = 0.0;
+  try
+  {
+    const vlf::TextureAtlas atlas(field);
+    average = vlf::LogAverageLuminance(atlas.Pixels().data(), atlas.Pixels().size() / 4);
+  }
+  catch (const std::exception&)
+  {
+    average = 0.0; // no atlas: the representation falls back to its Exposure alone
+  }
+  logAverage->InsertNextValue(average);
+  output->GetFieldData()->AddArray(emitters);
+  output->GetFieldData()->AddArray(normalisation);
+  output->GetFieldData()->AddArray(logAverage);
+}
+} // namespace
+
+//------------------------------------------------------------------------------
+const mesolight::vlf::LightField* vtkLightFieldGatherFilter::AcquireField(vtkAlgorithm* input)
+{
+  namespace vlf = mesolight::vlf;
+  vtkVirtualLightField* producer = FindLightField(input);
+  const vlf::LightField* own = producer ? producer->GetLightField() : nullptr;
+  int count = producer ? producer->GetPropagationCount() : 0;
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  const int ranks = controller ? controller->GetNumberOfProcesses() : 1;
+  if (ranks < 2)
+  {
+    this->FieldPropagations = count;
+    return own;
+  }
+  // Every rank reaches this point (nothing above returns early), so the collectives match.
+  int total = 0;
+  controller->AllReduce(&count, &total, 1, vtkCommunicator::SUM_OP);
+  this->FieldPropagations = total;
+  const int rank = controller->GetLocalProcessId();
+  // Rank 0 sends [bytes, version]: bytes -1 = no field there, 0 = the one sent before.
+  vtkIdType header[2] = { -1, 0 };
+  std::vector<char> bytes;
+  if (rank == 0 && own)
+  {
+    header[1] = producer->GetPropagationCount();
+    if (producer == this->SentProducer && header[1] == this->SentVersion)
+    {
+      header[0] = 0;
+    }
+    else
+    {
+      const std::string file = TemporarySnapshotName(rank);
+      try
+      {
+        vlf::WriteSnapshot(*own, file);
+        std::ifstream in(file, std::ios::binary);
+        bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+      }
+      catch (const std::exception& e)
+      {
+        vtkErrorMacro(
+          "Light Field Gather cannot send the light field to the other ranks: " << e.what());
+        bytes.clear();
+      }
+      std::remove(file.c_str());
+      header[0] = bytes.empty() ? -1 : static_cast<vtkIdType>(bytes.size());
+      this->SentProducer = header[0] > 0 ? producer : nullptr;
+      this->SentVersion = static_cast<int>(header[1]);
+    }
+  }
+  controller->Broadcast(header, 2, 0);
+  if (header[0] > 0)
+  {
+    bytes.resize(static_cast<std::size_t>(header[0]));
+    controller->Broadcast(bytes.data(), header[0], 0);
+    ++this->FieldBroadcasts;
+  }
+  if (rank == 0)
+  {
+    return own;
+  }
+  if (header[0] < 0)
+  {
+    this->Received.reset();
+  }
+  else if (header[0] > 0)
+  {
+    const std::string file = TemporarySnapshotName(rank);
+    try
+    {
+      {
+        std::ofstream out(file, std::ios::binary | std::ios::trunc);
+        out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+      }
+      this->Received = vlf::ReadSnapshot(file);
+    }
+    catch (const std::exception& e)
+    {
+      vtkErrorMacro("Light Field Gather cannot read the light field rank 0 sent: " << e.what());
+      this->Received.reset();
+    }
+    std::remove(file.c_str());
+  }
+  return this->Received.get();
 }
 
 //------------------------------------------------------------------------------
@@ -109,12 +265,16 @@ int vtkLightFieldGatherFilter::RequestData(
     return 0;
   }
   output->ShallowCopy(input);
+  // First, on every rank: the field (broadcast from rank 0 under MPI, a collective step).
+  const vlf::LightField* field = AcquireField(this->GetInputAlgorithm(1, 0));
+  if (field)
+  {
+    AttachShadowCasterData(*field, output); // every piece, empty ones too
+  }
   if (input->GetNumberOfPoints() == 0)
   {
     return 1; // an empty piece (e.g. another rank's): nothing to gather
   }
-  vtkVirtualLightField* producer = FindLightField(this->GetInputAlgorithm(1, 0));
-  const vlf::LightField* field = producer ? producer->GetLightField() : nullptr;
   if (!field)
   {
     vtkErrorMacro("Light Field Gather needs the output of a Virtual Light Field filter that has "
@@ -207,7 +367,8 @@ int vtkLightFieldGatherFilter::RequestData(
     }
     output->GetPointData()->AddArray(irradiance);
     output->GetPointData()->AddArray(radiance);
-    output->GetPointData()->SetActiveScalars("Radiance");
+    // No active scalars: ParaView shows the output as Light Field (its radiance exposed and
+    // tone-mapped like the scene) rather than through a colour map.
     this->OutsidePoints = static_cast<vtkIdType>(shaded.OutsidePoints);
     if (shaded.OutsidePoints > 0)
     {
@@ -238,4 +399,6 @@ void vtkLightFieldGatherFilter::PrintSelf(ostream& os, vtkIndent indent)
      << this->Reflectance[2] << "\n";
   os << indent << "DirectionSet: " << this->DirectionSet << "\n";
   os << indent << "OutsidePoints: " << this->OutsidePoints << "\n";
+  os << indent << "FieldPropagations: " << this->FieldPropagations << "\n";
+  os << indent << "FieldBroadcasts: " << this->FieldBroadcasts << "\n";
 }

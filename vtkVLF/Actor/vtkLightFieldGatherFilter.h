@@ -10,9 +10,12 @@
  * the nearest vtkVirtualLightField upstream of input 1 (GetLightField(), after that filter has
  * run), walking through pass-through filters such as ParaView's post filter. In ParaView's
  * builtin and client/server modes the filter and its producer share the server process, so this
- * works there too. With several MPI ranks the filter asks input 1 for the whole scene on every
- * rank (a surface piece sees all of the scene), so each rank propagates the whole field and
- * gathers its own piece of the surface (the field's work is repeated per rank).
+ * works there too. With several MPI ranks (vtkMultiProcessController's global controller) the
+ * field is made once: input 1 is asked for the same piece as this filter's output, so the
+ * vtkVirtualLightField of rank 0 (which asks its input for the whole scene) propagates it or
+ * reads its snapshot and the other ranks make none; rank 0 then broadcasts it (as snapshot bytes;
+ * again only when it changed) and every rank gathers only its own piece of the surface. A
+ * surface piece sees all of the scene's light.
  *
  * Output: the input (with the computed normals as its point normals when it had none) and
  * point arrays "Irradiance" (the irradiance E gathered at each point
@@ -20,7 +23,13 @@
  * weights, projected-area normalisation) and "Radiance" (Reflectance / pi x E, the radiance
  * a diffuse surface of that reflectance leaves there), 3-component float, in the field's
  * radiance units, world coordinates. The surface is not part of the propagated field: it
- * receives the scene's light, shadows and colour bleeding, but casts nothing onto the scene.
+ * receives the scene's light, shadows and colour bleeding, but casts nothing onto the field
+ * itself. Its shadow on the scene is drawn by ParaView's Light Field representation, whose
+ * Shadow Caster input this output can be: for that the output's field data carries the field's
+ * significant emitters (GetEmittersName(), mesolight::vlf::PackEmitters), the world -> unit
+ * sphere normalisation (GetToUnitSphereName(): centre x, y, z, scale) and the field's log-average
+ * luminance (GetLogAverageName(), the scene's automatic exposure, so the surface drawn as
+ * Light Field is exposed like the scene).
  *
  * Points outside the field's bounding sphere are gathered on its boundary (a warning gives how
  * many); GetOutsidePoints() tells after an update. Progress goes through UpdateProgress;
@@ -31,6 +40,16 @@
 
 #include "MesolightLightFieldActorModule.h" // For export macro
 #include "vtkPolyDataAlgorithm.h"
+
+#include <memory> // For std::unique_ptr
+
+namespace mesolight
+{
+namespace vlf
+{
+class LightField;
+}
+}
 
 class MESOLIGHTLIGHTFIELDACTOR_EXPORT vtkLightFieldGatherFilter : public vtkPolyDataAlgorithm
 {
@@ -67,13 +86,29 @@ public:
   /** Points of the last update outside the field's bounding sphere. */
   vtkGetMacro(OutsidePoints, vtkIdType);
 
+  /**
+   * Fields the Virtual Light Field producers of all ranks have made so far (each rank's
+   * vtkVirtualLightField::GetPropagationCount(), summed over ranks at the last update): 1 after
+   * the first update of a new field, whatever the number of ranks.
+   */
+  vtkGetMacro(FieldPropagations, int);
+  /** Times rank 0 has sent the field to the other ranks (0 in a serial run). */
+  vtkGetMacro(FieldBroadcasts, int);
+
+  ///@{
+  /** Names of the output's field data arrays (see the class description). */
+  static const char* GetEmittersName() { return "LightFieldEmitters"; }
+  static const char* GetToUnitSphereName() { return "LightFieldToUnitSphere"; }
+  static const char* GetLogAverageName() { return "LightFieldLogAverage"; }
+  ///@}
+
 protected:
   vtkLightFieldGatherFilter();
   ~vtkLightFieldGatherFilter() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
-  // Asks input 1 for the whole scene (piece 0 of 1) on every rank: a surface piece sees all of
-  // the scene, so every rank needs the whole field.
+  // Asks input 1 for this output's piece: rank 0's field filter makes the whole field, the
+  // others none (it is broadcast).
   int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
@@ -84,6 +119,14 @@ private:
   double Reflectance[3] = { 0.7, 0.7, 0.7 };
   int DirectionSet = ALL_DIRECTIONS;
   vtkIdType OutsidePoints = 0;
+  int FieldPropagations = 0;
+  int FieldBroadcasts = 0;
+
+  // The field on this rank: the producer's (rank 0, serial runs) or the one received.
+  const mesolight::vlf::LightField* AcquireField(vtkAlgorithm* producer);
+  std::unique_ptr<mesolight::vlf::LightField> Received;
+  const void* SentProducer = nullptr; // rank 0: the producer and version last broadcast
+  int SentVersion = -1;
 };
 
 #endif

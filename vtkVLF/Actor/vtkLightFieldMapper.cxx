@@ -224,7 +224,8 @@ bool vtkLightFieldMapper::UploadAtlasTexture(vtkSmartPointer<vtkTextureObject>& 
 
 //------------------------------------------------------------------------------
 void vtkLightFieldMapper::ReplaceRadianceShaderValues(
-  std::map<vtkShader::Type, vtkShader*>& shaders, const std::function<void()>& superclass)
+  std::map<vtkShader::Type, vtkShader*>& shaders, const std::function<void()>& superclass,
+  bool vertexRadiance)
 {
   std::string vs = shaders[vtkShader::Vertex]->GetSource();
   std::string fs = shaders[vtkShader::Fragment]->GetSource();
@@ -241,8 +242,16 @@ void vtkLightFieldMapper::ReplaceRadianceShaderValues(
   vtkShaderProgram::Substitute(vs, "//VTK::Normal::Impl",
     "mlShadowPointVC = mlShadowPoint;\n  mlShadowNormalVC = mlShadowNormal;\n"
     "  mlShadowKdVC = mlShadowKd;\n  //VTK::Normal::Impl");
+  if (vertexRadiance)
+  {
+    vtkShaderProgram::Substitute(vs, "//VTK::Normal::Dec",
+      "in vec3 mlVertexRadiance;\nout vec3 mlVertexRadianceVC;\n//VTK::Normal::Dec");
+    vtkShaderProgram::Substitute(
+      vs, "//VTK::Normal::Impl", "mlVertexRadianceVC = mlVertexRadiance;\n  //VTK::Normal::Impl");
+  }
   vtkShaderProgram::Substitute(fs, "//VTK::CustomUniforms::Dec",
-    std::string("//VTK::CustomUniforms::Dec\n") + vtkLightFieldShadowFS + vtkLightFieldFS);
+    std::string("//VTK::CustomUniforms::Dec\n") + vtkLightFieldShadowFS + vtkLightFieldFS +
+      (vertexRadiance ? "in vec3 mlVertexRadianceVC;\n" : ""));
   // VTK's lighting gives way to the field's radiance.
   vtkShaderProgram::Substitute(fs, "//VTK::Light::Impl", "//MESOLIGHT::LightField::Impl");
   shaders[vtkShader::Vertex]->SetSource(vs);
@@ -250,7 +259,8 @@ void vtkLightFieldMapper::ReplaceRadianceShaderValues(
   superclass();
   fs = shaders[vtkShader::Fragment]->GetSource();
   vtkShaderProgram::Substitute(fs, "//MESOLIGHT::LightField::Impl",
-    "gl_FragData[0] = vec4(mlDisplay(mlRadiance()), opacity);");
+    vertexRadiance ? "gl_FragData[0] = vec4(mlDisplay(mlVertexRadianceVC), opacity);"
+                   : "gl_FragData[0] = vec4(mlDisplay(mlRadiance()), opacity);");
   shaders[vtkShader::Fragment]->SetSource(fs);
 }
 
@@ -304,21 +314,9 @@ bool vtkLightFieldMapper::UploadShadows(vtkRenderer* ren, vtkActor* act)
   {
     return true; // uploaded once per rebuild of the maps
   }
-  if (!this->ShadowTexture)
+  if (!UploadShadowTexture(this->ShadowTexture, window, state->Gpu))
   {
-    this->ShadowTexture = vtkSmartPointer<vtkTextureObject>::New();
-  }
-  this->ShadowTexture->SetContext(window);
-  // Read with texelFetch: no filtering, the shader compares depths per texel.
-  this->ShadowTexture->SetMinificationFilter(vtkTextureObject::Nearest);
-  this->ShadowTexture->SetMagnificationFilter(vtkTextureObject::Nearest);
-  this->ShadowTexture->SetWrapS(vtkTextureObject::ClampToEdge);
-  this->ShadowTexture->SetWrapT(vtkTextureObject::ClampToEdge);
-  const mesolight::vlf::ShadowGpuData& gpu = state->Gpu;
-  if (!this->ShadowTexture->Create2DFromRaw(static_cast<unsigned int>(gpu.Width),
-        static_cast<unsigned int>(gpu.Height), 1, VTK_FLOAT, const_cast<float*>(gpu.Depth.data())))
-  {
-    vtkErrorMacro(<< "could not upload the " << gpu.Width << "x" << gpu.Height
+    vtkErrorMacro(<< "could not upload the " << state->Gpu.Width << "x" << state->Gpu.Height
                   << " shadow map texture: the object casts no shadow");
     return false;
   }
@@ -331,19 +329,46 @@ void vtkLightFieldMapper::SetShadowUniforms(vtkShaderProgram* program, vtkActor*
 {
   vtkLightFieldActor* actor = vtkLightFieldActor::SafeDownCast(act);
   vtkLightFieldActor::ShadowState* state = actor ? actor->GetShadowState() : nullptr;
-  if (!this->Shadowing || !state)
+  SetShadowUniforms(program, this->Shadowing && state ? &state->Gpu : nullptr,
+    this->Shadowing ? this->ShadowTexture->GetTextureUnit() : this->AtlasTexture->GetTextureUnit());
+}
+
+//------------------------------------------------------------------------------
+bool vtkLightFieldMapper::UploadShadowTexture(vtkSmartPointer<vtkTextureObject>& texture,
+  vtkOpenGLRenderWindow* window, const mesolight::vlf::ShadowGpuData& gpu)
+{
+  if (!texture)
+  {
+    texture = vtkSmartPointer<vtkTextureObject>::New();
+  }
+  texture->SetContext(window);
+  // Read with texelFetch: no filtering, the shader compares depths per texel.
+  texture->SetMinificationFilter(vtkTextureObject::Nearest);
+  texture->SetMagnificationFilter(vtkTextureObject::Nearest);
+  texture->SetWrapS(vtkTextureObject::ClampToEdge);
+  texture->SetWrapT(vtkTextureObject::ClampToEdge);
+  return texture->Create2DFromRaw(static_cast<unsigned int>(gpu.Width),
+    static_cast<unsigned int>(gpu.Height), 1, VTK_FLOAT, const_cast<float*>(gpu.Depth.data()));
+}
+
+//------------------------------------------------------------------------------
+void vtkLightFieldMapper::SetShadowUniforms(
+  vtkShaderProgram* program, const mesolight::vlf::ShadowGpuData* gpu, int textureUnit)
+{
+  // Always a unit holding a 2D texture: a sampler left on a unit another draw has since given a
+  // buffer texture makes the draw an invalid operation, even unread.
+  program->SetUniformi("mlShadowDepth", textureUnit);
+  if (!gpu)
   {
     program->SetUniformi("mlShadowMode", 0);
     program->SetUniformi("mlShadowEmitterCount", 0);
     return;
   }
-  const mesolight::vlf::ShadowGpuData& gpu = state->Gpu;
-  program->SetUniformi("mlShadowMode", gpu.Mode);
-  program->SetUniformi("mlShadowDepth", this->ShadowTexture->GetTextureUnit());
-  program->SetUniformi("mlShadowColumns", gpu.Columns);
-  program->SetUniformi("mlShadowResolution", gpu.Resolution);
-  program->SetUniformi("mlShadowEmitterCount", gpu.EmitterCount);
-  program->SetUniform4f("mlShadowParams", &gpu.Params.x);
+  program->SetUniformi("mlShadowMode", gpu->Mode);
+  program->SetUniformi("mlShadowColumns", gpu->Columns);
+  program->SetUniformi("mlShadowResolution", gpu->Resolution);
+  program->SetUniformi("mlShadowEmitterCount", gpu->EmitterCount);
+  program->SetUniform4f("mlShadowParams", &gpu->Params.x);
   auto arrays = [&](const char* name, const std::vector<glm::vec4>& values)
   {
     if (!values.empty())
@@ -351,14 +376,14 @@ void vtkLightFieldMapper::SetShadowUniforms(vtkShaderProgram* program, vtkActor*
       program->SetUniform4fv(name, static_cast<int>(values.size()), &values[0].x);
     }
   };
-  arrays("mlShadowMapPosition", gpu.MapPosition);
-  arrays("mlShadowMapAxisX", gpu.MapAxisX);
-  arrays("mlShadowMapAxisY", gpu.MapAxisY);
-  arrays("mlShadowMapAxisZ", gpu.MapAxisZ);
-  arrays("mlShadowEmitterRadiance", gpu.EmitterRadiance);
-  arrays("mlShadowEmitterNormal", gpu.EmitterNormal);
-  arrays("mlShadowEmitterIndex", gpu.EmitterIndex);
-  arrays("mlShadowSample", gpu.Samples);
+  arrays("mlShadowMapPosition", gpu->MapPosition);
+  arrays("mlShadowMapAxisX", gpu->MapAxisX);
+  arrays("mlShadowMapAxisY", gpu->MapAxisY);
+  arrays("mlShadowMapAxisZ", gpu->MapAxisZ);
+  arrays("mlShadowEmitterRadiance", gpu->EmitterRadiance);
+  arrays("mlShadowEmitterNormal", gpu->EmitterNormal);
+  arrays("mlShadowEmitterIndex", gpu->EmitterIndex);
+  arrays("mlShadowSample", gpu->Samples);
 }
 
 //------------------------------------------------------------------------------

@@ -20,6 +20,14 @@
 #include <functional> // For std::function
 #include <map>        // For std::map
 
+namespace mesolight
+{
+namespace vlf
+{
+struct ShadowGpuData;
+}
+}
+
 class vtkOpenGLRenderWindow;
 class vtkShaderProgram;
 class vtkTextureObject;
@@ -40,10 +48,12 @@ public:
   /**
    * The radiance shading written once for this mapper and vtkCompositeLightFieldMapper's helper:
    * the shader edits around the superclass' own (`superclass` fills VTK's tags; VTK's lighting
-   * gives way to the field's radiance), and the uniforms of one draw.
+   * gives way to the field's radiance; vertexRadiance: the per-vertex attribute mlVertexRadiance
+   * instead of the atlas, for surfaces shaded by Light Field Gather), and the uniforms of one
+   * draw.
    */
-  static void ReplaceRadianceShaderValues(
-    std::map<vtkShader::Type, vtkShader*>& shaders, const std::function<void()>& superclass);
+  static void ReplaceRadianceShaderValues(std::map<vtkShader::Type, vtkShader*>& shaders,
+    const std::function<void()>& superclass, bool vertexRadiance = false);
   struct RadianceUniforms
   {
     int AtlasUnit = 0;
@@ -59,6 +69,16 @@ public:
   /** Uploads an RGBA float atlas (creating the texture if needed); false if the upload failed. */
   static bool UploadAtlasTexture(vtkSmartPointer<vtkTextureObject>& texture,
     vtkOpenGLRenderWindow* window, int width, int height, const float* rgba);
+  /**
+   * The movable object's shadow maps (glsl/vtkLightFieldShadowFS.glsl), written once for this
+   * mapper and vtkCompositeLightFieldMapper: uploads the maps' depth tiles (creating the texture
+   * if needed; false if the upload failed), and sets the shadow uniforms of one draw (gpu null:
+   * no shadows; textureUnit then any unit holding a 2D texture, e.g. the atlas').
+   */
+  static bool UploadShadowTexture(vtkSmartPointer<vtkTextureObject>& texture,
+    vtkOpenGLRenderWindow* window, const mesolight::vlf::ShadowGpuData& gpu);
+  static void SetShadowUniforms(
+    vtkShaderProgram* program, const mesolight::vlf::ShadowGpuData* gpu, int textureUnit);
   ///@}
 
 protected:

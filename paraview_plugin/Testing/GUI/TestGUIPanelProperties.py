@@ -26,6 +26,10 @@ DELIBERATE = {
         "information about the last read (Python: GetPropertyValue)",
     ("MesolightReliefSurfaceRepresentation", "LightSetAttached"):
         "set from the data by the proxy class; the panel's decorators read it",
+    ("MesolightLightFieldGather", "FieldPropagations"):
+        "information about the last update (Python: GetPropertyValue)",
+    ("MesolightLightFieldGather", "FieldBroadcasts"):
+        "information about the last update (Python: GetPropertyValue)",
 }
 # ReliefSurfaceRepresentationProxy: a representation with its own client-side proxy class.
 REPRESENTATION_TAGS = ("RepresentationProxy", "ReliefSurfaceRepresentationProxy")

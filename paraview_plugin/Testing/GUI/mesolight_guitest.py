@@ -105,15 +105,24 @@ def apply(source, view=None):
         if len(visible_data_representations(view)) == 1:
             view.ResetCamera(False)
             _update_interaction_mode(view, source, port)
-        if source.GetProperty("Input") is not None and _replace_input(source) > 0:
-            for name in ("Input", "ReliefTexture", "LightSet"):
+        replace = _replace_input(source) if source.GetProperty("Input") is not None else 0
+        if replace > 0:
+            for name in ("Input", "ReliefTexture", "LightSet", "LightField"):
                 prop = source.GetProperty(name)
                 if prop is None:
                     continue
                 for i in range(len(prop)):
                     inp = prop[i]
-                    if inp is not None:
-                        controller.Hide(inp.SMProxy, inp.Port, view.SMProxy)
+                    if inp is None:
+                        continue
+                    if replace == 2:
+                        # pqApplyBehavior::hideInputIfRequired: only inputs shown as an opaque
+                        # Surface.
+                        shown = pvs.GetDisplayProperties(getattr(inp, "Proxy", inp), view)
+                        if (shown.Representation not in ("Surface", "Surface With Edges")
+                                or shown.Opacity < 1.0):
+                            continue
+                    controller.Hide(inp.SMProxy, inp.Port, view.SMProxy)
     pvs.SetActiveSource(source)
     pvs.Render(view)
 

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <iterator>
 
 namespace mesolight
 {
@@ -231,6 +232,65 @@ std::vector<ShadowEmitter> SignificantEmitters(
     emitter.PowerWeight /= total;
   }
   return out;
+}
+
+//------------------------------------------------------------------------------
+std::vector<float> PackEmitters(const std::vector<ShadowEmitter>& emitters)
+{
+  std::vector<float> out;
+  for (const ShadowEmitter& e : emitters)
+  {
+    const EmitterLight& l = e.Light;
+    const float head[] = { static_cast<float>(l.Surface), l.Position.x, l.Position.y, l.Position.z,
+      l.Normal.x, l.Normal.y, l.Normal.z, l.Radiance.x, l.Radiance.y, l.Radiance.z,
+      static_cast<float>(l.Area), e.PowerWeight, static_cast<float>(e.Samples.size()) };
+    out.insert(out.end(), std::begin(head), std::end(head));
+    for (const glm::vec4& s : e.Samples)
+    {
+      out.insert(out.end(), { s.x, s.y, s.z, s.w });
+    }
+  }
+  return out;
+}
+
+//------------------------------------------------------------------------------
+bool UnpackEmitters(const float* values, std::size_t count, std::vector<ShadowEmitter>& emitters)
+{
+  constexpr std::size_t head = 13;
+  emitters.clear();
+  std::size_t i = 0;
+  while (i < count)
+  {
+    if (count - i < head)
+    {
+      emitters.clear();
+      return false;
+    }
+    const float* v = values + i;
+    const float samples = v[12];
+    if (!(samples >= 0.0f && samples <= 4096.0f) || v[0] < 0.0f ||
+      (count - i - head) / 4 < static_cast<std::size_t>(samples))
+    {
+      emitters.clear();
+      return false;
+    }
+    ShadowEmitter e;
+    e.Light.Surface = static_cast<std::uint32_t>(v[0]);
+    e.Light.Position = glm::vec3(v[1], v[2], v[3]);
+    e.Light.Normal = glm::vec3(v[4], v[5], v[6]);
+    e.Light.Radiance = glm::vec3(v[7], v[8], v[9]);
+    e.Light.Area = v[10];
+    e.PowerWeight = v[11];
+    const std::size_t n = static_cast<std::size_t>(samples);
+    for (std::size_t k = 0; k < n; ++k)
+    {
+      const float* s = v + head + 4 * k;
+      e.Samples.emplace_back(s[0], s[1], s[2], s[3]);
+    }
+    emitters.push_back(std::move(e));
+    i += head + 4 * n;
+  }
+  return true;
 }
 
 //------------------------------------------------------------------------------

@@ -178,6 +178,14 @@ struct ShadowGpuData
 constexpr int GpuShadowMaps = 40, GpuShadowEmitters = 8, GpuShadowSamples = 128;
 ShadowGpuData PackShadowsForGpu(const ObjectShadows& shadows);
 
+// The emitters flattened to floats and back, so they can travel with a dataset (ParaView's Light
+// Field Gather puts them in its output's field data for the Light Field representation's
+// shadows): per emitter Surface, Position, Normal, Radiance, Area, PowerWeight, the sample count,
+// then its samples (4 floats each). Unpack returns false (and leaves `emitters` empty) for a
+// malformed list.
+std::vector<float> PackEmitters(const std::vector<ShadowEmitter>& emitters);
+bool UnpackEmitters(const float* values, std::size_t count, std::vector<ShadowEmitter>& emitters);
+
 // Places a map at `light` for the object (its bounding sphere) and rasterises it. False when
 // the object has no triangles. A light inside the bounding sphere gets a wide (80 degree half
 // angle) frustum and triangles crossing its near plane are skipped.

@@ -89,5 +89,22 @@ ErrorStatistics RelativeError(const std::vector<glm::vec3>& image,
   return stats;
 }
 
+double LogAverageLuminance(const float* rgba, std::size_t texels)
+{
+  double sum = 0.0;
+  std::size_t count = 0;
+  for (std::size_t i = 0; i < texels; ++i)
+  {
+    const float* p = rgba + 4 * i;
+    const double y = 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2];
+    if (y > 0.0 && std::isfinite(y))
+    {
+      sum += std::log(y);
+      ++count;
+    }
+  }
+  return count > 0 ? std::exp(sum / static_cast<double>(count)) : 0.0;
+}
+
 } // namespace vlf
 } // namespace mesolight

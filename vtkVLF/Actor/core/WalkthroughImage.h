@@ -29,6 +29,12 @@ glm::vec3 InverseToneMap(const glm::vec3& display, float exposure, ToneMapOperat
 float EncodeSrgb(float linear);
 float DecodeSrgb(float encoded);
 
+// Log-average luminance (Rec. 709 weights) of the RGBA texels with positive, finite luminance,
+// 0 when there are none: the automatic exposure 0.18 / this (Reinhard et al., "Photographic tone
+// reproduction for digital images") of ParaView's Light Field representation, for the scene's
+// atlas and for surfaces shaded by Light Field Gather alike.
+double LogAverageLuminance(const float* rgba, std::size_t texels);
+
 struct ErrorStatistics
 {
   std::size_t Pixels = 0;

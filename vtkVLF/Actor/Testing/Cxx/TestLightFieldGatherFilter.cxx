@@ -6,14 +6,21 @@
 #include "vtkLightFieldGatherFilter.h"
 
 #include "vtkCallbackCommand.h"
+#include "vtkCellData.h"
 #include "vtkCommand.h"
 #include "vtkCornellBoxSource.h"
 #include "vtkDataArray.h"
+#include "vtkFieldData.h"
+#include "vtkFloatArray.h"
+#include "vtkIdList.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkSphereSource.h"
 #include "vtkVirtualLightField.h"
+
+#include "ObjectShadows.h"
+#include "WalkthroughImage.h"
 
 #include <gtest/gtest.h>
 
@@ -115,6 +122,84 @@ TEST(LightFieldGatherFilter, MatchesTheFieldsOwnLookup)
   p.gather->Update();
   EXPECT_NEAR(p.gather->GetOutput()->GetPointData()->GetArray("Radiance")->GetComponent(3, 1),
     0.5 * before, 1e-5);
+}
+
+// What ParaView's Light Field representation needs to draw the gathered surface's shadow and
+// to expose it like the scene: the field's emitters, its normalisation and log-average luminance
+// on the gather's output; each scene vertex's unit-sphere point, normal and Kd on the field's.
+TEST(LightFieldGatherFilter, CarriesWhatTheShadowCasterNeeds)
+{
+  namespace vlf = mesolight::vlf;
+  Pipeline p;
+  p.gather->Update();
+  vtkFieldData* fields = p.gather->GetOutput()->GetFieldData();
+  auto* packed = vtkFloatArray::SafeDownCast(
+    fields->GetAbstractArray(vtkLightFieldGatherFilter::GetEmittersName()));
+  ASSERT_NE(packed, nullptr);
+  std::vector<vlf::ShadowEmitter> emitters;
+  ASSERT_TRUE(vlf::UnpackEmitters(
+    packed->GetPointer(0), static_cast<std::size_t>(packed->GetNumberOfValues()), emitters));
+  ASSERT_EQ(emitters.size(), 1u); // the Cornell box's one light, Le = (17, 12, 4)
+  EXPECT_NEAR(emitters[0].Light.Radiance.x, 17.0f, 1e-4f);
+  EXPECT_NEAR(emitters[0].Light.Radiance.z, 4.0f, 1e-4f);
+  EXPECT_EQ(emitters[0].Samples.size(), 9u);
+
+  // The normalisation maps the scene's vertices onto the field's own unit-sphere points.
+  vtkDataArray* toUnit = vtkArrayDownCast<vtkDataArray>(
+    fields->GetAbstractArray(vtkLightFieldGatherFilter::GetToUnitSphereName()));
+  ASSERT_NE(toUnit, nullptr);
+  ASSERT_EQ(toUnit->GetNumberOfValues(), 4);
+  vtkPolyData* scene = p.field->GetOutput();
+  vtkDataArray* unit =
+    scene->GetPointData()->GetArray(vtkVirtualLightField::GetReceiverPointName());
+  vtkDataArray* normal =
+    scene->GetPointData()->GetArray(vtkVirtualLightField::GetReceiverNormalName());
+  vtkDataArray* kd =
+    scene->GetPointData()->GetArray(vtkVirtualLightField::GetReceiverDiffuseName());
+  ASSERT_TRUE(unit && normal && kd);
+  double worst = 0.0;
+  for (vtkIdType i = 0; i < scene->GetNumberOfPoints(); ++i)
+  {
+    const double* x = scene->GetPoint(i);
+    for (int c = 0; c < 3; ++c)
+    {
+      const double mapped = (x[c] - toUnit->GetComponent(c, 0)) * toUnit->GetComponent(3, 0);
+      worst = std::max(worst, std::abs(mapped - unit->GetComponent(i, c)));
+    }
+    const double n[3] = { normal->GetComponent(i, 0), normal->GetComponent(i, 1),
+      normal->GetComponent(i, 2) };
+    EXPECT_NEAR(n[0] * n[0] + n[1] * n[1] + n[2] * n[2], 1.0, 1e-4);
+  }
+  EXPECT_LT(worst, 1e-5);
+  // Each vertex's Kd is its triangle's Diffuse (vertices are per surface).
+  vtkDataArray* diffuse = scene->GetCellData()->GetArray("Diffuse");
+  ASSERT_NE(diffuse, nullptr);
+  vtkNew<vtkIdList> ids;
+  scene->GetCellPoints(0, ids);
+  for (int c = 0; c < 3; ++c)
+  {
+    EXPECT_NEAR(kd->GetComponent(ids->GetId(0), c), diffuse->GetComponent(0, c), 1e-6);
+  }
+
+  // The log-average is the one the scene's automatic exposure uses.
+  vtkDataArray* average = vtkArrayDownCast<vtkDataArray>(
+    fields->GetAbstractArray(vtkLightFieldGatherFilter::GetLogAverageName()));
+  int size[2];
+  vtkFloatArray* atlas = vtkVirtualLightField::GetAttachedAtlas(scene, size);
+  ASSERT_TRUE(average && atlas);
+  EXPECT_GT(average->GetComponent(0, 0), 0.0);
+  EXPECT_NEAR(average->GetComponent(0, 0),
+    vlf::LogAverageLuminance(
+      atlas->GetPointer(0), static_cast<std::size_t>(atlas->GetNumberOfTuples())),
+    1e-9);
+
+  // One field, made once: a new reflectance gathers again without propagating again.
+  EXPECT_EQ(p.gather->GetFieldPropagations(), 1);
+  p.gather->SetReflectance(0.5, 0.5, 0.5);
+  p.gather->Update();
+  EXPECT_EQ(p.field->GetPropagationCount(), 1);
+  EXPECT_EQ(p.gather->GetFieldPropagations(), 1);
+  EXPECT_EQ(p.gather->GetFieldBroadcasts(), 0); // one process
 }
 
 TEST(LightFieldGatherFilter, ComputesMissingNormals)

@@ -208,6 +208,26 @@ TEST(ShadowMapCore, SeveralEmittersEachCastTheirOwnShadow)
     EXPECT_TRUE(world.x > 50.0f && world.x < 150.0f && world.z > 400.0f && world.z < 500.0f)
       << world.x << ", " << world.z;
   }
+  // Packed into floats (ParaView's Light Field Gather puts them in its output for the Light
+  // Field representation's shadows) and back: the same emitters; a cut list is refused.
+  const std::vector<float> packed = vlf::PackEmitters(emitters);
+  std::vector<vlf::ShadowEmitter> unpacked;
+  ASSERT_TRUE(vlf::UnpackEmitters(packed.data(), packed.size(), unpacked));
+  ASSERT_EQ(unpacked.size(), emitters.size());
+  for (std::size_t e = 0; e < emitters.size(); ++e)
+  {
+    EXPECT_EQ(unpacked[e].Light.Surface, emitters[e].Light.Surface);
+    EXPECT_EQ(unpacked[e].Light.Position, emitters[e].Light.Position);
+    EXPECT_EQ(unpacked[e].Light.Normal, emitters[e].Light.Normal);
+    EXPECT_EQ(unpacked[e].Light.Radiance, emitters[e].Light.Radiance);
+    EXPECT_FLOAT_EQ(
+      static_cast<float>(unpacked[e].Light.Area), static_cast<float>(emitters[e].Light.Area));
+    EXPECT_EQ(unpacked[e].PowerWeight, emitters[e].PowerWeight);
+    EXPECT_EQ(unpacked[e].Samples, emitters[e].Samples);
+  }
+  EXPECT_FALSE(vlf::UnpackEmitters(packed.data(), packed.size() - 1, unpacked));
+  EXPECT_TRUE(unpacked.empty());
+  EXPECT_FALSE(vlf::UnpackEmitters(packed.data(), 5, unpacked));
   settings.MaximumEmitters = 1;
   EXPECT_EQ(vlf::SignificantEmitters(*field, settings).size(), 1u);
   settings.MaximumEmitters = 4;
