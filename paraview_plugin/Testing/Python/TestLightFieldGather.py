@@ -24,13 +24,7 @@ from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: E402
 
 t.load_plugin()
 failures = []
-
-
-def check(ok, message):
-    print(("ok:     " if ok else "FAILED: ") + message)
-    if not ok:
-        failures.append(message)
-
+check = t.checker(failures)
 
 def arrays(proxy):
     proxy.UpdatePipeline()

@@ -28,13 +28,7 @@ args, _ = parser.parse_known_args()
 
 t.load_plugin()
 failures = []
-
-
-def check(ok, message):
-    print(("ok:     " if ok else "FAILED: ") + message)
-    if not ok:
-        failures.append(message)
-
+check = t.checker(failures)
 
 ranks = servermanager.ActiveConnection.GetNumberOfDataPartitions()
 print("ranks: %d" % ranks)

@@ -36,13 +36,7 @@ MAX_RATIO_ERROR = 0.05
 
 t.load_plugin()
 failures = []
-
-
-def check(ok, message):
-    print(("ok:     " if ok else "FAILED: ") + message)
-    if not ok:
-        failures.append(message)
-
+check = t.checker(failures)
 
 out = t.output_dir()
 snapshot = os.path.join(out, "pv-shadow-field.vlf")

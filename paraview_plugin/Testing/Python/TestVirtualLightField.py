@@ -37,13 +37,7 @@ LIGHT_EMISSION = np.array([17.0, 12.0, 4.0])
 
 t.load_plugin()
 failures = []
-
-
-def check(ok, message):
-    print(("ok:     " if ok else "FAILED: ") + message)
-    if not ok:
-        failures.append(message)
-
+check = t.checker(failures)
 
 # Progress reaches the session's progress handler (the GUI's progress bar).
 handler = servermanager.ActiveConnection.Session.GetProgressHandler()

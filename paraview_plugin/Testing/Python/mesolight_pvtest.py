@@ -129,3 +129,12 @@ def output_dir():
     out = os.environ.get("MESOLIGHT_TEST_OUTPUT", ".")
     os.makedirs(out, exist_ok=True)
     return out
+
+
+def checker(failures):
+    """check(ok, message): prints the message as ok or FAILED and collects the failures."""
+    def check(ok, message):
+        print(("ok:     " if ok else "FAILED: ") + message)
+        if not ok:
+            failures.append(message)
+    return check
