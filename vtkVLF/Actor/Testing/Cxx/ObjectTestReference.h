@@ -29,12 +29,11 @@ enum Mask : std::uint8_t
   Mirror = 3          // a mirror reflecting something else
 };
 
-// Per-pixel masks (row 0 at the bottom) of `unitObject` (already in the unit sphere) in `field`.
-inline std::vector<std::uint8_t> ReferenceMasks(
-  const vlf::LightField& field, const vlf::ObjectMesh& unitObject, const vlf::ViewFrame& view)
+// The field's static triangles followed by the object's (placed in the unit sphere), as one plain
+// scene: triangle indices below field.Scene().TriangleCount() are the field's.
+inline TriangleScene MergedScene(const vlf::LightField& field, const vlf::ObjectMesh& unitObject)
 {
   TriangleScene merged = field.Scene();
-  const std::size_t staticTriangles = merged.TriangleCount();
   const auto base = static_cast<std::uint32_t>(merged.Positions.size());
   const auto material = static_cast<std::uint32_t>(merged.Materials.size());
   merged.Materials.push_back(SceneMaterial{});
@@ -45,10 +44,18 @@ inline std::vector<std::uint8_t> ReferenceMasks(
     merged.Triangles.emplace_back(t.x + base, t.y + base, t.z + base);
     merged.MaterialIds.push_back(material);
   }
-  // Attributes other than positions would no longer match: the reference needs none.
+  // Attributes other than positions would no longer match: the references need none.
   merged.Normals.clear();
   merged.TextureCoordinates.clear();
-  const EmbreeScene embree(merged);
+  return merged;
+}
+
+// Per-pixel masks (row 0 at the bottom) of `unitObject` (already in the unit sphere) in `field`.
+inline std::vector<std::uint8_t> ReferenceMasks(
+  const vlf::LightField& field, const vlf::ObjectMesh& unitObject, const vlf::ViewFrame& view)
+{
+  const std::size_t staticTriangles = field.Scene().TriangleCount();
+  const EmbreeScene embree(MergedScene(field, unitObject));
   std::vector<std::uint8_t> masks(static_cast<std::size_t>(view.Width) * view.Height, Other);
   for (int y = 0; y < view.Height; ++y)
   {

@@ -11,6 +11,7 @@
 //   shader applies to diffuse fragments).
 // Negative tests: the object looked for at the first bounce only, the shadows switched off.
 #include "ObjectShadows.h"
+#include "ObjectTestReference.h"
 #include "WalkthroughTestFields.h"
 
 #include "EmbreeScene.h"
@@ -89,21 +90,8 @@ struct Landing
 std::vector<Landing> CastReference(
   const vlf::LightField& field, const vlf::ObjectMesh& unitObject, const vlf::ViewFrame& view)
 {
-  TriangleScene merged = field.Scene();
-  const std::size_t staticTriangles = merged.TriangleCount();
-  const auto base = static_cast<std::uint32_t>(merged.Positions.size());
-  const auto material = static_cast<std::uint32_t>(merged.Materials.size());
-  merged.Materials.push_back(SceneMaterial{});
-  merged.Positions.insert(
-    merged.Positions.end(), unitObject.Points.begin(), unitObject.Points.end());
-  for (const glm::uvec3& t : unitObject.Triangles)
-  {
-    merged.Triangles.emplace_back(t.x + base, t.y + base, t.z + base);
-    merged.MaterialIds.push_back(material);
-  }
-  merged.Normals.clear();
-  merged.TextureCoordinates.clear();
-  const EmbreeScene embree(merged);
+  const std::size_t staticTriangles = field.Scene().TriangleCount();
+  const EmbreeScene embree(objecttest::MergedScene(field, unitObject));
   std::vector<Landing> out(static_cast<std::size_t>(view.Width) * view.Height);
   for (int y = 0; y < view.Height; ++y)
   {
