@@ -137,6 +137,7 @@ int vtkOIIOImageReader::RequestData(
     return 0;
   }
   output->Initialize();
+  this->NumberOfNonFiniteValues = 0;
 
   // Re-read the header: the file may have changed since RequestInformation.
   mesolight::ImageFileInfo header;
@@ -173,16 +174,12 @@ int vtkOIIOImageReader::RequestData(
     output->Initialize();
     return 0;
   }
+  // NaN is how geometry images mark holes: counted for the consumers that refuse it, not warned.
   if (header.Type == mesolight::ImageSampleType::Float)
   {
-    const std::size_t count = static_cast<std::size_t>(header.ByteSize() / sizeof(float));
-    const std::size_t bad = mesolight::CountNonFiniteSamples(
-      static_cast<const float*>(scalars->GetVoidPointer(0)), count);
-    if (bad > 0)
-    {
-      vtkWarningMacro("Image '" << this->FileName << "': " << bad << " of " << count
-                                << " values are NaN or infinite.");
-    }
+    this->NumberOfNonFiniteValues = static_cast<vtkIdType>(
+      mesolight::CountNonFiniteSamples(static_cast<const float*>(scalars->GetVoidPointer(0)),
+        static_cast<std::size_t>(header.ByteSize() / sizeof(float))));
   }
   return 1;
 }
@@ -196,4 +193,5 @@ void vtkOIIOImageReader::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfChannelsInFile: " << this->NumberOfChannelsInFile << "\n";
   os << indent << "FormatName: " << this->FormatName << "\n";
   os << indent << "MemoryBudget: " << this->MemoryBudget << "\n";
+  os << indent << "NumberOfNonFiniteValues: " << this->NumberOfNonFiniteValues << "\n";
 }

@@ -15,8 +15,9 @@
  * (1,1,1), extent [0, W-1, 0, H-1, 0, 0] and point scalars named "ImageScalars".
  *
  * The checks (mesolight::ReadImageFileInfo, core/ImageFile.h) refuse missing, empty, corrupt,
- * zero-sized and volume images and pixels beyond MemoryBudget before allocating them; float
- * pixels that are NaN or infinite are read with a warning that counts them.
+ * zero-sized and volume images and pixels beyond MemoryBudget before allocating them. NaN and
+ * infinite float values are read as stored (geometry images mark holes with NaN) and counted:
+ * GetNumberOfNonFiniteValues().
  *
  * Failures report vtkErrorMacro messages with the file name and OpenImageIO's error text,
  * set ErrorCode (vtkErrorCode::NoFileNameError, FileNotFoundError, CannotOpenFileError,
@@ -71,6 +72,8 @@ public:
    */
   vtkGetVector2Macro(ImageSize, int);
   vtkGetMacro(NumberOfChannelsInFile, int);
+  /** NaN or infinite values in the pixels last read (float images only; valid after Update()). */
+  vtkGetMacro(NumberOfNonFiniteValues, vtkIdType);
   const char* GetFormatName() const { return this->FormatName.c_str(); }
   ///@}
 
@@ -86,6 +89,7 @@ protected:
   int NumberOfChannelsInFile = 0;
   std::string FormatName;
   vtkTypeInt64 MemoryBudget = 0;
+  vtkIdType NumberOfNonFiniteValues = 0;
 
 private:
   vtkOIIOImageReader(const vtkOIIOImageReader&) = delete;
