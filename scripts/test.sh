@@ -3,7 +3,11 @@
 # Sets up (packages, build) and runs the whole test suite. GL tests render with Mesa llvmpipe
 # under Xvfb (scripts/xvfb.sh). Extra arguments go to ctest (e.g. -R Relief, -L GL). Then builds
 # the ParaView plugin (scripts/setup-paraview.sh, ./build-paraview) and runs its pvbatch tests,
-# serial and MPI; MESOLIGHT_SKIP_PARAVIEW=1 skips that part.
+# serial and MPI; MESOLIGHT_SKIP_PARAVIEW=1 skips that part. Then the sanitizer stage
+# (docs/fuzzing.md): the algorithm cores' unit tests and the fuzz corpus replays built with
+# AddressSanitizer + UndefinedBehaviorSanitizer without VTK (scripts/sanitize-cores.sh), and every
+# libFuzzer target for MESOLIGHT_CI_FUZZ_SECONDS (default 10) each (scripts/fuzz.sh);
+# MESOLIGHT_SKIP_SANITIZE=1 skips it.
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${MESOLIGHT_BUILD_DIR:-$here/build}"
@@ -35,9 +39,27 @@ if [ "${MESOLIGHT_SKIP_PARAVIEW:-0}" != "1" ]; then
   [ "$paraview_status" -eq 0 ] || status=$paraview_status
 fi
 
+sanitize_status=skipped
+fuzz_status=skipped
+sanitize_build="${MESOLIGHT_SANITIZE_CORES_BUILD_DIR:-$here/build-sanitize-cores}"
+sanitize_log="$sanitize_build/stage.log"
+fuzz_log="${MESOLIGHT_FUZZ_BUILD_DIR:-$here/build-fuzz}/stage.log"
+if [ "${MESOLIGHT_SKIP_SANITIZE:-0}" != "1" ]; then
+  mkdir -p "$(dirname "$sanitize_log")" "$(dirname "$fuzz_log")"
+  sanitize_status=0
+  bash "$here/scripts/sanitize-cores.sh" 2>&1 |
+    tee "$sanitize_log" || sanitize_status=$?
+  [ "$sanitize_status" -eq 0 ] || status=$sanitize_status
+  fuzz_status=0
+  bash "$here/scripts/fuzz.sh" "${MESOLIGHT_CI_FUZZ_SECONDS:-10}" 2>&1 |
+    tee "$fuzz_log" || fuzz_status=$?
+  [ "$fuzz_status" -eq 0 ] || status=$fuzz_status
+fi
+
 # CI shows the end of this script's output: repeat there which tests failed, with the end of what
 # each printed (ctest's logs keep all of it), or, when ctest named no failed test, its errors.
-echo "[mesolight] main tests: exit $main_status; ParaView plugin tests: exit $paraview_status"
+echo "[mesolight] main tests: exit $main_status; ParaView plugin tests: exit $paraview_status;" \
+  "sanitizers (cores, replays): exit $sanitize_status; fuzzing: exit $fuzz_status"
 report() { # report <build dir> <exit status of its ctest>
   local dir="$1" code="$2" failed="$1/Testing/Temporary/LastTestsFailed.log"
   [ "$code" != 0 ] && [ "$code" != skipped ] || return 0
@@ -58,4 +80,13 @@ report() { # report <build dir> <exit status of its ctest>
 }
 report "$build" "$main_status"
 report "$paraview_build" "$paraview_status"
+if [ "$sanitize_status" != 0 ] && [ "$sanitize_status" != skipped ]; then
+  echo "==== sanitizer stage (log: $sanitize_log):"
+  grep -E "SUMMARY: |runtime error|The following tests FAILED|^\s+[0-9]+ - |error:" \
+    "$sanitize_log" | head -n 40 || tail -n 30 "$sanitize_log"
+fi
+if [ "$fuzz_status" != 0 ] && [ "$fuzz_status" != skipped ]; then
+  echo "==== fuzzing (log: $fuzz_log):"
+  grep -E "^\[fuzz\]|input: |ERROR|error:" "$fuzz_log" | tail -n 40
+fi
 exit $status

@@ -14,6 +14,11 @@
  * flipped: file row 0 becomes image row H-1. The output has origin (0,0,0), spacing
  * (1,1,1), extent [0, W-1, 0, H-1, 0, 0] and point scalars named "ImageScalars".
  *
+ * The checks (mesolight::ReadImageFileInfo, core/ImageFile.h) refuse missing, empty, corrupt,
+ * zero-sized and volume images and pixels beyond MemoryBudget before allocating them. NaN and
+ * infinite float values are read as stored (geometry images mark holes with NaN) and counted:
+ * GetNumberOfNonFiniteValues().
+ *
  * Failures report vtkErrorMacro messages with the file name and OpenImageIO's error text,
  * set ErrorCode (vtkErrorCode::NoFileNameError, FileNotFoundError, CannotOpenFileError,
  * UnrecognizedFileTypeError, FileFormatError) and produce an empty image.
@@ -25,6 +30,11 @@
 #include "vtkImageAlgorithm.h"
 
 #include <string> // For std::string
+
+namespace mesolight
+{
+struct ImageFileInfo;
+}
 
 class MESOLIGHTIMAGEIO_EXPORT vtkOIIOImageReader : public vtkImageAlgorithm
 {
@@ -48,11 +58,22 @@ public:
 
   ///@{
   /**
+   * Bytes the pixels may take (0, the default: the machine's memory, the cgroup limit when one
+   * is set). A larger image is refused before anything is allocated, with the size it needs.
+   */
+  vtkSetMacro(MemoryBudget, vtkTypeInt64);
+  vtkGetMacro(MemoryBudget, vtkTypeInt64);
+  ///@}
+
+  ///@{
+  /**
    * Information about the last file read (valid after UpdateInformation()): width, height,
    * number of channels in the file and the name of the OpenImageIO format ("png", ...).
    */
   vtkGetVector2Macro(ImageSize, int);
   vtkGetMacro(NumberOfChannelsInFile, int);
+  /** NaN or infinite values in the pixels last read (float images only; valid after Update()). */
+  vtkGetMacro(NumberOfNonFiniteValues, vtkIdType);
   const char* GetFormatName() const { return this->FormatName.c_str(); }
   ///@}
 
@@ -67,14 +88,14 @@ protected:
   int ImageSize[2] = { 0, 0 };
   int NumberOfChannelsInFile = 0;
   std::string FormatName;
+  vtkTypeInt64 MemoryBudget = 0;
+  vtkIdType NumberOfNonFiniteValues = 0;
 
 private:
   vtkOIIOImageReader(const vtkOIIOImageReader&) = delete;
   void operator=(const vtkOIIOImageReader&) = delete;
 
-  struct Header;
-  bool ReadHeader(Header& header);
-  static bool ProgressCallback(void* self, float portionDone);
+  bool ReadHeader(mesolight::ImageFileInfo& header);
 };
 
 #endif

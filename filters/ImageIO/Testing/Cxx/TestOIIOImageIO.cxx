@@ -17,6 +17,7 @@
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
@@ -409,4 +410,30 @@ TEST(OIIOImageIO, WriterReportsErrorsAndNeverLeavesBrokenFiles)
     EXPECT_EQ(entry.path().filename().string().find(".tmp-"), std::string::npos)
       << "temporary file left behind: " << entry.path();
   }
+}
+
+TEST(OIIOImageIO, ReaderRefusesPixelsBeyondItsBudgetAndCountsNonFiniteValues)
+{
+  const fs::path dir = mesolight_test::TestDirectory();
+  auto image = Pattern<vtkFloatArray>(16, 8, 1, 1.0);
+  image->GetPointData()->GetScalars()->SetComponent(3, 0, std::nan(""));
+  image->GetPointData()->GetScalars()->SetComponent(5, 0, -HUGE_VAL);
+  ASSERT_TRUE(Write(image, dir / "budget.tif", vtkOIIOImageWriter::FLOAT));
+
+  vtkNew<vtkOIIOImageReader> reader;
+  reader->SetFileName((dir / "budget.tif").string().c_str());
+  // A float TIFF: the pixels are all the budget counts (an OpenEXR also counts its line buffers).
+  reader->SetMemoryBudget(16 * 8 * 4); // exactly the pixels
+  reader->Update();
+  EXPECT_EQ(reader->GetErrorCode(), vtkErrorCode::NoError);
+  EXPECT_EQ(reader->GetOutput()->GetNumberOfPoints(), 16 * 8);
+  EXPECT_EQ(reader->GetNumberOfNonFiniteValues(), 2);
+
+  vtkNew<MessageCapture> capture;
+  capture->Watch(reader);
+  reader->SetMemoryBudget(16 * 8 * 4 - 1);
+  reader->Update();
+  EXPECT_EQ(reader->GetOutput()->GetNumberOfPoints(), 0);
+  EXPECT_TRUE(capture->HasError("16 x 8 pixels")) << capture->AllErrors();
+  EXPECT_TRUE(capture->HasError("more than the")) << capture->AllErrors();
 }

@@ -1,0 +1,298 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The checks of core/ImageFile (behind vtkOIIOImageReader), one test per check, without VTK: also
+// built by the cores-only sanitizer stage (tests/cores). Files are written with OpenImageIO or by
+// hand (a PFM header is a line of text).
+#include "ImageFile.h"
+
+#include <OpenImageIO/imageio.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <string>
+#include <unistd.h>
+#include <vector>
+
+namespace fs = std::filesystem;
+using mesolight::ImageFileInfo;
+using mesolight::ImageFileStatus;
+using mesolight::ImageSampleType;
+
+namespace
+{
+fs::path TempDir(const std::string& name)
+{
+  const fs::path dir = fs::path(MESOLIGHT_TEST_TEMP_DIR) / ("ImageFile-" + name);
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+/// Writes a width x height float image with `channels` channels, value = index.
+bool WriteFloat(
+  const fs::path& file, int width, int height, int channels, std::vector<float> values = {})
+{
+  if (values.empty())
+  {
+    values.resize(static_cast<std::size_t>(width) * height * channels);
+    for (std::size_t i = 0; i < values.size(); ++i)
+    {
+      values[i] = static_cast<float>(i);
+    }
+  }
+  auto out = OIIO::ImageOutput::create(file.string());
+  if (!out)
+  {
+    OIIO::geterror();
+    return false;
+  }
+  const OIIO::ImageSpec spec(width, height, channels, OIIO::TypeDesc::FLOAT);
+  const bool ok = out->open(file.string(), spec) &&
+    out->write_image(OIIO::TypeDesc::FLOAT, values.data()) && out->close();
+  out->geterror();
+  return ok;
+}
+
+void WriteBytes(const fs::path& file, const std::string& bytes)
+{
+  std::ofstream(file, std::ios::binary) << bytes;
+}
+
+ImageFileStatus Info(
+  const fs::path& file, ImageFileInfo& info, std::string& message, std::int64_t budget = 0)
+{
+  return mesolight::ReadImageFileInfo(file.string(), budget, info, message);
+}
+}
+
+TEST(ImageFile, MissingEmptyAndDirectoryPathsAreRefused)
+{
+  const fs::path dir = TempDir("paths");
+  ImageFileInfo info;
+  std::string message;
+  EXPECT_EQ(Info("", info, message), ImageFileStatus::NoFileName);
+  EXPECT_EQ(Info(dir / "none.png", info, message), ImageFileStatus::FileNotFound);
+  EXPECT_NE(message.find("file not found"), std::string::npos) << message;
+  EXPECT_EQ(Info(dir, info, message), ImageFileStatus::CannotOpen);
+  EXPECT_NE(message.find("directory"), std::string::npos) << message;
+  WriteBytes(dir / "empty.png", "");
+  EXPECT_EQ(Info(dir / "empty.png", info, message), ImageFileStatus::FileFormat);
+  EXPECT_NE(message.find("empty (0 bytes)"), std::string::npos) << message;
+}
+
+TEST(ImageFile, UnreadableFileIsRefused)
+{
+  if (::geteuid() == 0)
+  {
+    GTEST_SKIP() << "root reads files without read permission";
+  }
+  const fs::path dir = TempDir("unreadable");
+  ASSERT_TRUE(WriteFloat(dir / "a.exr", 2, 2, 1));
+  fs::permissions(dir / "a.exr", fs::perms::none);
+  ImageFileInfo info;
+  std::string message;
+  EXPECT_EQ(Info(dir / "a.exr", info, message), ImageFileStatus::CannotOpen) << message;
+  fs::permissions(dir / "a.exr", fs::perms::owner_all);
+}
+
+TEST(ImageFile, CorruptAndUnknownFilesAreRefusedWithOpenImageIOsReason)
+{
+  const fs::path dir = TempDir("corrupt");
+  WriteBytes(dir / "bad.png", "this is not a PNG file at all");
+  WriteBytes(dir / "bad.mesolight-unknown", "nor is this anything");
+  ImageFileInfo info;
+  std::string message;
+  EXPECT_EQ(Info(dir / "bad.png", info, message), ImageFileStatus::FileFormat);
+  EXPECT_NE(message.find("OpenImageIO:"), std::string::npos) << message;
+  EXPECT_EQ(Info(dir / "bad.mesolight-unknown", info, message), ImageFileStatus::UnrecognizedType);
+  EXPECT_NE(message.find("unrecognized file type"), std::string::npos) << message;
+}
+
+TEST(ImageFile, ZeroSizeAndNoChannelsAreRefused)
+{
+  ImageFileInfo info;
+  std::string message;
+  for (const auto& size : { std::vector<int>{ 0, 4, 3 }, { 4, 0, 3 }, { 4, 4, 0 }, { -1, 4, 3 } })
+  {
+    EXPECT_EQ(mesolight::CheckImageHeader(
+                "x.png", size[0], size[1], 1, size[2], ImageSampleType::UInt8, 0, info, message),
+      ImageFileStatus::FileFormat);
+    EXPECT_NE(message.find("zero-sized image"), std::string::npos) << message;
+  }
+  // The same check accepts a 1 x 1 image of one channel.
+  EXPECT_EQ(
+    mesolight::CheckImageHeader("x.png", 1, 1, 1, 1, ImageSampleType::UInt8, 0, info, message),
+    ImageFileStatus::Ok);
+}
+
+TEST(ImageFile, VolumesAreRefused)
+{
+  ImageFileInfo info;
+  std::string message;
+  EXPECT_EQ(
+    mesolight::CheckImageHeader("v.tif", 4, 4, 3, 1, ImageSampleType::Float, 0, info, message),
+    ImageFileStatus::FileFormat);
+  EXPECT_NE(message.find("volume images (depth 3)"), std::string::npos) << message;
+}
+
+TEST(ImageFile, AtMostFourChannelsAreRead)
+{
+  ImageFileInfo info;
+  std::string message;
+  ASSERT_EQ(
+    mesolight::CheckImageHeader("c.exr", 2, 3, 1, 7, ImageSampleType::Float, 0, info, message),
+    ImageFileStatus::Ok);
+  EXPECT_EQ(info.FileChannels, 7);
+  EXPECT_EQ(info.Channels, 4);
+  EXPECT_EQ(info.ByteSize(), 2u * 3u * 4u * 4u);
+
+  const fs::path dir = TempDir("channels");
+  ASSERT_TRUE(WriteFloat(dir / "six.exr", 3, 2, 6));
+  ASSERT_EQ(Info(dir / "six.exr", info, message), ImageFileStatus::Ok) << message;
+  EXPECT_EQ(info.FileChannels, 6);
+  EXPECT_EQ(info.Channels, 4);
+  std::vector<float> pixels(3 * 2 * 4);
+  ASSERT_EQ(
+    mesolight::ReadImageFilePixels((dir / "six.exr").string(), info, pixels.data(), message),
+    ImageFileStatus::Ok)
+    << message;
+  // Bottom row first: pixel (0, 1) of the file, channels 0..3 of 6.
+  EXPECT_EQ(pixels[0], 18.f);
+  EXPECT_EQ(pixels[3], 21.f);
+}
+
+TEST(ImageFile, AbsurdDimensionsAreRefusedBeforeAllocating)
+{
+  // A PFM header claiming 100000 x 100000 RGB floats (120 GB) and no pixels: 20 bytes.
+  const fs::path dir = TempDir("absurd");
+  WriteBytes(dir / "huge.pfm", "PF\n100000 100000\n-1.0\n");
+  ImageFileInfo info;
+  std::string message;
+  EXPECT_EQ(
+    Info(dir / "huge.pfm", info, message, std::int64_t(1) << 30), ImageFileStatus::TooLarge);
+  EXPECT_NE(message.find("100000 x 100000"), std::string::npos) << message;
+  EXPECT_EQ(info.ByteSize(), 0u); // nothing to allocate on a refusal
+
+  // The budget decides: 2 x 2 RGB floats (48 bytes) fit 64 bytes, not 32.
+  EXPECT_EQ(
+    mesolight::CheckImageHeader("s.exr", 2, 2, 1, 3, ImageSampleType::Float, 64, info, message),
+    ImageFileStatus::Ok);
+  EXPECT_EQ(
+    mesolight::CheckImageHeader("s.exr", 2, 2, 1, 3, ImageSampleType::Float, 32, info, message),
+    ImageFileStatus::TooLarge);
+  // Sides near 2^31 do not overflow the size.
+  EXPECT_EQ(mesolight::CheckImageHeader("m.exr", std::numeric_limits<int>::max(),
+              std::numeric_limits<int>::max(), 1, 4, ImageSampleType::Float, 0, info, message),
+    ImageFileStatus::TooLarge);
+}
+
+TEST(ImageFile, TruncatedPixelsAreRefused)
+{
+  const fs::path dir = TempDir("truncated");
+  // OpenImageIO reads PFM but does not write it: header and little-endian floats by hand.
+  std::string pfm = "PF\n64 64\n-1.0\n";
+  pfm += std::string(64 * 64 * 3 * sizeof(float), '\0');
+  WriteBytes(dir / "t.pfm", pfm);
+  ImageFileInfo info;
+  std::string message;
+  const std::uintmax_t size = fs::file_size(dir / "t.pfm");
+  fs::resize_file(dir / "t.pfm", size / 2);
+  ASSERT_EQ(Info(dir / "t.pfm", info, message), ImageFileStatus::Ok) << message;
+  std::vector<float> pixels(static_cast<std::size_t>(info.ByteSize() / 4));
+  EXPECT_EQ(mesolight::ReadImageFilePixels((dir / "t.pfm").string(), info, pixels.data(), message),
+    ImageFileStatus::FileFormat);
+  EXPECT_NE(message.find("truncated or corrupt"), std::string::npos) << message;
+}
+
+TEST(ImageFile, AFileThatChangedAfterItsHeaderIsRefused)
+{
+  const fs::path dir = TempDir("changed");
+  ASSERT_TRUE(WriteFloat(dir / "c.exr", 4, 4, 1));
+  ImageFileInfo info;
+  std::string message;
+  ASSERT_EQ(Info(dir / "c.exr", info, message), ImageFileStatus::Ok) << message;
+  std::vector<float> pixels(16);
+  // Unchanged, it reads; grown to 64 x 64 it would write past the 16 floats.
+  EXPECT_EQ(mesolight::ReadImageFilePixels((dir / "c.exr").string(), info, pixels.data(), message),
+    ImageFileStatus::Ok);
+  ASSERT_TRUE(WriteFloat(dir / "c.exr", 64, 64, 1));
+  EXPECT_EQ(mesolight::ReadImageFilePixels((dir / "c.exr").string(), info, pixels.data(), message),
+    ImageFileStatus::FileFormat);
+  EXPECT_NE(message.find("changed while it was read"), std::string::npos) << message;
+}
+
+TEST(ImageFile, NonFiniteSamplesAreCounted)
+{
+  const fs::path dir = TempDir("nonfinite");
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  const float inf = std::numeric_limits<float>::infinity();
+  ASSERT_TRUE(WriteFloat(dir / "n.exr", 2, 2, 1, { 1.f, nan, -inf, 3e38f }));
+  ImageFileInfo info;
+  std::string message;
+  ASSERT_EQ(Info(dir / "n.exr", info, message), ImageFileStatus::Ok) << message;
+  std::vector<float> pixels(4);
+  ASSERT_EQ(mesolight::ReadImageFilePixels((dir / "n.exr").string(), info, pixels.data(), message),
+    ImageFileStatus::Ok);
+  EXPECT_EQ(mesolight::CountNonFiniteSamples(pixels.data(), pixels.size()), 2u);
+  const float finite[3] = { 0.f, -1.f, 3e38f };
+  EXPECT_EQ(mesolight::CountNonFiniteSamples(finite, 3), 0u);
+}
+
+TEST(ImageFile, StoppingThroughProgressReadsNothingFurther)
+{
+  const fs::path dir = TempDir("abort");
+  ASSERT_TRUE(WriteFloat(dir / "a.exr", 8, 300, 1));
+  ImageFileInfo info;
+  std::string message;
+  ASSERT_EQ(Info(dir / "a.exr", info, message), ImageFileStatus::Ok) << message;
+  std::vector<float> pixels(8 * 300);
+  bool aborted = false;
+  EXPECT_EQ(mesolight::ReadImageFilePixels((dir / "a.exr").string(), info, pixels.data(), message,
+              [](float) { return true; }, &aborted),
+    ImageFileStatus::Ok);
+  EXPECT_TRUE(aborted);
+}
+
+TEST(ImageFile, OpenExrAttributesLargerThanTheFileAreRefused)
+{
+  // Found by the image_file fuzz target: OpenEXR allocated the 1.8 GB an attribute of a 600-byte
+  // file claimed (fuzz/corpus/image_file/crash-exr-attribute-claims-1.8GB).
+  const fs::path dir = TempDir("exr");
+  std::string bytes("\x76\x2f\x31\x01\x02\x00\x00\x00", 8);
+  bytes += std::string("comments\0string\0", 16);
+  bytes += std::string("\x00\x00\x00\x70", 4); // 1.8 GB of comment
+  bytes += "short";
+  WriteBytes(dir / "claims.exr", bytes);
+  ImageFileInfo info;
+  std::string message;
+  EXPECT_EQ(Info(dir / "claims.exr", info, message), ImageFileStatus::FileFormat);
+  EXPECT_NE(message.find("attribute 'comments' claims 1879048192 bytes"), std::string::npos)
+    << message;
+  // Under another name too (OpenImageIO tries every reader).
+  fs::rename(dir / "claims.exr", dir / "claims.bin");
+  EXPECT_EQ(Info(dir / "claims.bin", info, message), ImageFileStatus::FileFormat) << message;
+
+  // A data window of 2^31 scanlines in a 100-byte file: OpenEXR would allocate its offset table
+  // and line buffers before OpenImageIO gives us the size (the fuzz target's
+  // crash-exr-data-window-16M-wide took seconds of allocating and clearing).
+  std::string window("\x76\x2f\x31\x01\x02\x00\x00\x00", 8);
+  window += std::string("dataWindow\0box2i\0\x10\0\0\0", 21);
+  const std::int32_t box[4] = { 0, 0, 3, std::numeric_limits<std::int32_t>::max() - 1 };
+  window.append(reinterpret_cast<const char*>(box), 16);
+  window += std::string(64, '\0');
+  WriteBytes(dir / "window.exr", window);
+  EXPECT_EQ(
+    Info(dir / "window.exr", info, message, std::int64_t(1) << 30), ImageFileStatus::TooLarge);
+  EXPECT_NE(message.find("OpenEXR data window (4 x 2147483647)"), std::string::npos) << message;
+
+  // A valid file passes the same walk, within a budget of its size but not below it: 3 x 5 x 2
+  // floats and ZIP's 16-line chunks (the walk's estimate: 3 x 16 x 8 = 384 bytes).
+  ASSERT_TRUE(WriteFloat(dir / "valid.exr", 3, 5, 2));
+  EXPECT_EQ(Info(dir / "valid.exr", info, message), ImageFileStatus::Ok) << message;
+  EXPECT_EQ(Info(dir / "valid.exr", info, message, 384), ImageFileStatus::Ok) << message;
+  EXPECT_EQ(Info(dir / "valid.exr", info, message, 383), ImageFileStatus::TooLarge) << message;
+}

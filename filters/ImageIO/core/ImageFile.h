@@ -1,0 +1,99 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @file ImageFile.h
+ * @brief Opening an image file through OpenImageIO and refusing bad ones (plain C++17).
+ *
+ * What vtkOIIOImageReader (and so every image the `mesolight` tool reads: depth maps,
+ * photographs, environments, masks) does before and while reading pixels, without VTK types, so
+ * that unit tests and the `image_file` fuzz target (fuzz/image_file.cxx) reach every check:
+ * a missing, unreadable, empty or directory path; a file OpenImageIO cannot open (corrupt, or of
+ * no known type); a zero-sized image or one without channels; a volume (depth > 1); pixels whose
+ * size exceeds the memory budget, refused before anything is allocated; a file that changed
+ * between the header and the pixels; truncated pixel data. Each refusal is a status and one
+ * sentence naming the file.
+ */
+#ifndef mesolight_ImageFile_h
+#define mesolight_ImageFile_h
+
+#include "MesolightImageIOModule.h" // for the export macro
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <string>
+
+namespace mesolight
+{
+
+/** How samples are read: 8-bit and 16-bit files stay integers, everything else becomes float. */
+enum class ImageSampleType
+{
+  UInt8,
+  UInt16,
+  Float
+};
+
+/** Why a file was refused (vtkOIIOImageReader maps these to vtkErrorCode values). */
+enum class ImageFileStatus
+{
+  Ok,
+  NoFileName,
+  FileNotFound,
+  CannotOpen,       // a directory, no permission
+  UnrecognizedType, // OpenImageIO knows neither the extension nor the contents
+  FileFormat,       // corrupt, zero-sized, a volume, truncated, changed while reading
+  TooLarge          // the pixels would exceed the memory budget
+};
+
+/** What the header says, as it will be read. */
+struct MESOLIGHTIMAGEIO_EXPORT ImageFileInfo
+{
+  int Width = 0;
+  int Height = 0;
+  int FileChannels = 0; // channels in the file
+  int Channels = 0;     // channels read: min(FileChannels, 4)
+  ImageSampleType Type = ImageSampleType::Float;
+  std::string FormatName; // OpenImageIO's name: "png", "openexr", ...
+
+  /** 1, 2 or 4 bytes. */
+  std::size_t SampleSize() const;
+  /** Width * Height * Channels * SampleSize(), computed without overflow. */
+  std::uint64_t ByteSize() const;
+};
+
+/**
+ * The checks of a header, as OpenImageIO's ImageSpec gives it (ReadImageFileInfo calls this):
+ * refuses a zero size or no channels, a volume (depth > 1), and pixels beyond `memoryBudget`
+ * (bytes; 0: the machine's memory); keeps at most 4 channels. Fills `info` when accepted.
+ */
+MESOLIGHTIMAGEIO_EXPORT ImageFileStatus CheckImageHeader(const std::string& path, int width,
+  int height, int depth, int channels, ImageSampleType type, std::int64_t memoryBudget,
+  ImageFileInfo& info, std::string& message);
+
+/**
+ * Opens `path` and checks its header. `memoryBudget`: bytes the pixels may take (0: the
+ * machine's memory, see EffectiveMemoryBudget). On a refusal `message` is one sentence that
+ * starts "Cannot read image '<path>'".
+ */
+MESOLIGHTIMAGEIO_EXPORT ImageFileStatus ReadImageFileInfo(
+  const std::string& path, std::int64_t memoryBudget, ImageFileInfo& info, std::string& message);
+
+/**
+ * Reads the pixels of `path`, whose header `info` is (from ReadImageFileInfo), into `pixels`
+ * (info.ByteSize() bytes), bottom row first (VTK's order; files store the top row first),
+ * interleaved channels. progress(portion done) may return true to stop: then `aborted` is set and
+ * Ok returned. A file whose header no longer matches `info` is refused.
+ */
+MESOLIGHTIMAGEIO_EXPORT ImageFileStatus ReadImageFilePixels(const std::string& path,
+  const ImageFileInfo& info, void* pixels, std::string& message,
+  const std::function<bool(float)>& progress = {}, bool* aborted = nullptr);
+
+/** True when `path` is a regular file OpenImageIO opens as a non-empty image. */
+MESOLIGHTIMAGEIO_EXPORT bool CanReadImageFile(const std::string& path);
+
+/** The number of NaN or infinite values among `count` floats. */
+MESOLIGHTIMAGEIO_EXPORT std::size_t CountNonFiniteSamples(const float* samples, std::size_t count);
+
+} // namespace mesolight
+
+#endif
