@@ -81,16 +81,6 @@ def reference(exposure):
     return t.capture_file(path)
 
 
-def srgb_decode(levels):
-    c = levels / 255.0
-    return np.where(c <= 0.04045, c / 12.92, ((c + 0.055) / 1.055) ** 2.4)
-
-
-def srgb_encode(v):
-    v = np.clip(v, 0.0, 1.0)
-    return 255.0 * np.where(v <= 0.0031308, 12.92 * v, 1.055 * v ** (1 / 2.4) - 0.055)
-
-
 def compared_pixels(ref, extra=None):
     padded = np.pad(ref, ((1, 1), (1, 1), (0, 0)), mode="edge")
     shifts = [padded[1 + dy:1 + dy + SIZE, 1 + dx:1 + dx + SIZE]
@@ -123,9 +113,9 @@ print("atlas %s x %s texels; automatic exposure 0.18 / log-average luminance = %
       % tuple(vtk_to_numpy(data.GetFieldData().GetArray("LightFieldAtlasSize")).tolist() + [key]))
 default = capture("pv-light-field-default.png")
 ref_k, ref_dim = reference(key), reference(key / 64.0)
-linear = np.where(ref_k < 255, srgb_decode(ref_k.astype(float)),
-                  64.0 * srgb_decode(ref_dim.astype(float)))
-reinhard = np.rint(srgb_encode(linear / (1.0 + linear)))
+linear = np.where(ref_k < 255, t.srgb_decode(ref_k.astype(float)),
+                  64.0 * t.srgb_decode(ref_dim.astype(float)))
+reinhard = np.rint(t.srgb_encode(linear / (1.0 + linear)))
 mask = compared_pixels(reinhard, ref_dim.max(axis=2) < 255)
 check(matches("default (automatic exposure, Reinhard) vs reference", default, reinhard, mask),
       "the default display matches the CPU reference, Reinhard tone-mapped (<= %g levels)"

@@ -75,16 +75,6 @@ def capture(name):
     return t.capture_file(path).astype(np.float64)
 
 
-def srgb_decode(levels):
-    c = levels / 255.0
-    return np.where(c <= 0.04045, c / 12.92, ((c + 0.055) / 1.055) ** 2.4)
-
-
-def srgb_encode(v):
-    v = np.clip(v, 0.0, 1.0)
-    return 255.0 * np.where(v <= 0.0031308, 12.92 * v, 1.055 * v ** (1 / 2.4) - 0.055)
-
-
 # --- the object as Apply shows it: the scene's automatic exposure, Reinhard -------------------
 default = capture("pv-shadow-default.png")
 scene.Visibility = 0
@@ -101,7 +91,7 @@ normals = vtk_to_numpy(gathered.GetPointData().GetNormals()).astype(np.float64)
 points = vtk_to_numpy(gathered.GetPoints().GetData()).astype(np.float64)
 facing = np.einsum("ij,ij->i", normals, np.array(EYE) - points) > 0
 v = key * radiance[facing]
-expected = srgb_encode(v / (1.0 + v)).mean()
+expected = t.srgb_encode(v / (1.0 + v)).mean()
 level = alone[covered].mean()
 print("object: %d pixels, mean display level %.1f; its camera-facing vertices' Radiance x %.3f "
       "(the scene's automatic exposure), Reinhard, sRGB: mean %.1f" % (int(covered.sum()), level,
@@ -141,7 +131,7 @@ def reference(shadows):
 
 
 def linear(image):
-    return srgb_decode(image) / EXPOSURE
+    return t.srgb_decode(image) / EXPOSURE
 
 
 ref_none, ref_field = reference("none"), reference("field")

@@ -138,3 +138,15 @@ def checker(failures):
         if not ok:
             failures.append(message)
     return check
+
+
+def srgb_decode(levels):
+    """8-bit sRGB levels to linear values (IEC 61966-2-1)."""
+    c = np.asarray(levels, dtype=np.float64) / 255.0
+    return np.where(c <= 0.04045, c / 12.92, ((c + 0.055) / 1.055) ** 2.4)
+
+
+def srgb_encode(v):
+    """Linear values to 8-bit sRGB levels (unrounded)."""
+    v = np.clip(v, 0.0, 1.0)
+    return 255.0 * np.where(v <= 0.0031308, 12.92 * v, 1.055 * v ** (1 / 2.4) - 0.055)
