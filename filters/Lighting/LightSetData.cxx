@@ -2,12 +2,15 @@
 #include "LightSetData.h"
 
 #include "vtkCellArray.h"
+#include "vtkDataObject.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
+#include "vtkInformation.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
 
 namespace mesolight
 {
@@ -58,6 +61,18 @@ void FillLightSetData(
   texture->SetOrigin(0.0, 0.0, 0.0);
   texture->SetSpacing(1.0, 1.0, 1.0);
   texture->GetPointData()->SetScalars(texels);
+}
+
+//------------------------------------------------------------------------------
+void SetLightTextureInformation(vtkInformation* textureInfo, int lights)
+{
+  const int extent[6] = { 0, lights - 1, 0, 1, 0, 0 };
+  const double origin[3] = { 0.0, 0.0, 0.0 };
+  const double spacing[3] = { 1.0, 1.0, 1.0 };
+  textureInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent, 6);
+  textureInfo->Set(vtkDataObject::ORIGIN(), origin, 3);
+  textureInfo->Set(vtkDataObject::SPACING(), spacing, 3);
+  vtkDataObject::SetPointDataActiveScalarInfo(textureInfo, VTK_FLOAT, 4);
 }
 
 } // namespace mesolight

@@ -12,6 +12,7 @@
 #include <vector>
 
 class vtkImageData;
+class vtkInformation;
 class vtkPolyData;
 
 namespace mesolight
@@ -19,6 +20,9 @@ namespace mesolight
 
 void FillLightSetData(
   const std::vector<MedianCutLight>& lights, vtkPolyData* output, vtkImageData* texture);
+
+/** RequestInformation of output port 1: the whole extent and scalars of an N x 2 light texture. */
+void SetLightTextureInformation(vtkInformation* textureInfo, int lights);
 
 } // namespace mesolight
 

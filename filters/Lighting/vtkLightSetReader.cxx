@@ -80,14 +80,7 @@ int vtkLightSetReader::RequestInformation(
     return 0;
   }
   const int n = static_cast<int>(this->Values.size() / 8);
-  const int extent[6] = { 0, n - 1, 0, 1, 0, 0 };
-  const double origin[3] = { 0.0, 0.0, 0.0 };
-  const double spacing[3] = { 1.0, 1.0, 1.0 };
-  vtkInformation* texInfo = outputVector->GetInformationObject(1);
-  texInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent, 6);
-  texInfo->Set(vtkDataObject::ORIGIN(), origin, 3);
-  texInfo->Set(vtkDataObject::SPACING(), spacing, 3);
-  vtkDataObject::SetPointDataActiveScalarInfo(texInfo, VTK_FLOAT, 4);
+  mesolight::SetLightTextureInformation(outputVector->GetInformationObject(1), n);
   return 1;
 }
 

@@ -99,14 +99,7 @@ int vtkMedianCutLights::RequestInformation(
     return 0;
   }
   const int n = std::max(1, this->NumberOfLights);
-  const int extent[6] = { 0, n - 1, 0, 1, 0, 0 };
-  const double origin[3] = { 0.0, 0.0, 0.0 };
-  const double spacing[3] = { 1.0, 1.0, 1.0 };
-  vtkInformation* texInfo = outputVector->GetInformationObject(1);
-  texInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent, 6);
-  texInfo->Set(vtkDataObject::ORIGIN(), origin, 3);
-  texInfo->Set(vtkDataObject::SPACING(), spacing, 3);
-  vtkDataObject::SetPointDataActiveScalarInfo(texInfo, VTK_FLOAT, 4);
+  mesolight::SetLightTextureInformation(outputVector->GetInformationObject(1), n);
   return 1;
 }
 
