@@ -186,7 +186,7 @@ int SetUpObject(const CommandLine& cl, const char* command, vtkLightFieldActor* 
     }
     try
     {
-      const vlf::ObjSceneRead read = vlf::ReadObjScene(name);
+      const mesolight::ObjSceneRead read = mesolight::ReadObjScene(name);
       mesh.Points = read.Scene.Positions;
       mesh.Triangles.assign(read.Scene.Triangles.begin(), read.Scene.Triangles.end());
     }

@@ -126,7 +126,7 @@ int TraceCornell(const CommandLine& cl, int width, int height, int threads, bool
     // read by other renderers (the Cycles comparison).
     try
     {
-      mesolight::vlf::WriteObjScene(box, cl.Get("--export-obj"), false,
+      mesolight::WriteObjScene(box, cl.Get("--export-obj"), false,
         "Mesolight's Cornell box (millimetres, y up, faces counter-clockwise from the front)");
     }
     catch (const std::exception& e)
@@ -265,7 +265,7 @@ int RunTraceCommand(const std::vector<std::string>& args)
     problem = CheckOutputFile(obj, { compare });
     if (problem.empty()) // the .mtl written beside it
     {
-      problem = CheckOutputFile(mesolight::vlf::MaterialFileOf(obj), { compare, obj });
+      problem = CheckOutputFile(mesolight::MaterialFileOf(obj), { compare, obj });
     }
   }
   else

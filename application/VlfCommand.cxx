@@ -205,7 +205,7 @@ int Propagate(const std::vector<std::string>& args)
       }
       else
       {
-        vlf::ObjSceneRead read = vlf::ReadObjScene(cl.Positional()[0]);
+        mesolight::ObjSceneRead read = mesolight::ReadObjScene(cl.Positional()[0]);
         for (const std::string& w : read.Warnings)
         {
           std::cerr << "mesolight vlf propagate: warning: " << w << "\n";

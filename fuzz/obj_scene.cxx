@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// Fuzz target: the OBJ/MTL scene reader (vtkVLF/core/ObjScene), as `mesolight vlf propagate
-// SCENE.obj`, `vlf render --object FILE.obj` and vtkLightFieldSceneReader use it.
+// Fuzz target: the OBJ/MTL scene reader (vtkScene/core/ObjScene), as `mesolight vlf propagate
+// SCENE.obj`, `vlf render --object FILE.obj` and vtkOBJSceneReader use it.
 //
 // Input: the OBJ text, optionally followed by a NUL byte and the text of "scene.mtl", which is
 // written beside it (so `mtllib scene.mtl` reaches the MTL parser). Any outcome but a scene or
@@ -34,14 +34,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   std::istringstream obj(std::string(text, objBytes));
   for (const bool strict : { false, true })
   {
-    vlf::ObjReadOptions options;
+    mesolight::ObjReadOptions options;
     options.RequireEmitter = strict;
     options.RemoveDegenerateTriangles = !strict;
     try
     {
       obj.clear();
       obj.seekg(0);
-      const vlf::ObjSceneRead read = vlf::ParseObjScene(obj, "fuzz.obj", directory, options);
+      const mesolight::ObjSceneRead read = mesolight::ParseObjScene(obj, "fuzz.obj", directory, options);
       // What a reader of the result relies on: every index in range.
       const TriangleScene& scene = read.Scene;
       for (std::size_t t = 0; t < scene.Triangles.size(); ++t)
@@ -59,7 +59,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         }
       }
     }
-    catch (const vlf::ObjSceneError&)
+    catch (const mesolight::ObjSceneError&)
     {
     }
   }

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// Fuzz target: the light-field snapshot reader (vtkVLF/core/Snapshot: the .vlf files of `mesolight
+// Fuzz target: the light-field snapshot reader (vtkVLF/LightField/core/Snapshot: the .vlf files of `mesolight
 // vlf propagate`, read by `vlf render`, `vlf view`, `--resume`, vtkLightFieldActor and
 // vtkVirtualLightField).
 //

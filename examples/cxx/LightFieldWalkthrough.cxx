@@ -25,7 +25,7 @@
 int main(int argc, char* argv[])
 {
   // The scene: the published Cornell box in millimetres (any OBJ/MTL scene works as well, read
-  // by vtkLightFieldSceneReader).
+  // by vtkOBJSceneReader).
   vtkNew<vtkCornellBoxSource> box;
 
   // The light field: 513 directions, 32 x 32 rays a side, 4 shooting iterations (a few seconds

@@ -10,7 +10,7 @@
  * draws its piece with the whole atlas, and state files need nothing more. The Virtual Light
  * Field proxy names this representation as its default (a Representation hint), so Apply shows
  * the radiance as colours; Light Field Gather's output too (its per-vertex radiance, exposed
- * like the scene). The setters are the proxy's commands (MesolightVLF.xml).
+ * like the scene). The setters are the proxy's commands (MesolightLightField.xml).
  *
  * Input port 1 (optional, the proxy's "Shadow Caster"): the movable object, Light Field
  * Gather's output (its field data carries the field's emitters). Its pieces are gathered from

@@ -5,7 +5,7 @@
  *
  * Input: a scene as vtkPolyData with the material cell arrays of vtkTriangleSceneConverter
  * ("Diffuse", "Specular", "Emission", "MaterialId"), e.g. from vtkCornellBoxSource or
- * vtkLightFieldSceneReader. The filter builds the light field (Directions parallel subfields of
+ * vtkOBJSceneReader. The filter builds the light field (Directions parallel subfields of
  * RaysPerSide x RaysPerSide lines in Tiles x Tiles tiles, mesolight::vlf::LightField) and runs
  * Iterations shooting iterations (mesolight::vlf::Propagate) on vtkSMPTools threads.
  *
@@ -39,7 +39,7 @@
 #ifndef vtkVirtualLightField_h
 #define vtkVirtualLightField_h
 
-#include "MesolightVLFModule.h" // For export macro
+#include "MesolightLightFieldModule.h" // For export macro
 #include "vtkPolyDataAlgorithm.h"
 
 #include <memory> // For std::unique_ptr
@@ -55,7 +55,7 @@ class LightField;
 }
 }
 
-class MESOLIGHTVLF_EXPORT vtkVirtualLightField : public vtkPolyDataAlgorithm
+class MESOLIGHTLIGHTFIELD_EXPORT vtkVirtualLightField : public vtkPolyDataAlgorithm
 {
 public:
   static vtkVirtualLightField* New();

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // TriangleScene: a static scene of triangles with per-triangle materials, in plain C++ (GLM, no
-// VTK types). Shared by the Embree ray tracer (its references) and the virtual light field
-// (vtkVLF), so both see the same geometry, materials and Cornell box.
+// VTK types): the one scene model of Mesolight (Mesolight::Scene). The Embree ray tracer (its
+// references) and the virtual light field both read it, so both see the same geometry, materials
+// and Cornell box.
 #ifndef mesolight_TriangleScene_h
 #define mesolight_TriangleScene_h
 

@@ -3,20 +3,20 @@
  * @class   vtkCornellBoxSource
  * @brief   the Cornell box (published dimensions and colours) as vtkPolyData with materials
  *
- * The light field's default scene: mesolight::MakeCornellBox() (vtkRayTracing/core/TriangleScene.h;
+ * The light field's default scene: mesolight::MakeCornellBox() (vtkScene/core/TriangleScene.h;
  * https://www.graphics.cornell.edu/online/box/data.html: millimetres, y up, the ceiling light
  * emitting radiance (17, 12, 4)) with the cell arrays "Diffuse", "Specular", "Emission",
- * "MaterialId" and field data "MaterialNames", as vtkLightFieldSceneReader gives for an OBJ file
+ * "MaterialId" and field data "MaterialNames", as vtkOBJSceneReader gives for an OBJ file
  * (examples/data/cornell-box.obj is the same box). With NormalizeToUnitSphere on, the box is
  * translated and scaled into the unit sphere, as the light field assumes (Wither 2005 §2.4.1).
  */
 #ifndef vtkCornellBoxSource_h
 #define vtkCornellBoxSource_h
 
-#include "MesolightVLFModule.h" // For export macro
+#include "MesolightSceneModule.h" // For export macro
 #include "vtkPolyDataAlgorithm.h"
 
-class MESOLIGHTVLF_EXPORT vtkCornellBoxSource : public vtkPolyDataAlgorithm
+class MESOLIGHTSCENE_EXPORT vtkCornellBoxSource : public vtkPolyDataAlgorithm
 {
 public:
   static vtkCornellBoxSource* New();

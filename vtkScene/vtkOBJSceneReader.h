@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /**
- * @class   vtkLightFieldSceneReader
+ * @class   vtkOBJSceneReader
  * @brief   reads a Wavefront OBJ + MTL scene into vtkPolyData with material cell arrays
  *
  * The light field's scene reader (Wither 2005 §2.4.2.1: an .obj with an .mtl of surface
- * properties). Reads with the core reader (vtkVLF/core/ObjScene.h: n-gons fan-triangulated,
+ * properties). Reads with the core reader (vtkScene/core/ObjScene.h: n-gons fan-triangulated,
  * negative indices, mtllib/usemtl, Kd/Ks/Ke/Ka/Ns) and outputs triangles with the cell arrays
  * "Diffuse", "Specular" (perfect specular), "Emission" (3 floats each) and "MaterialId", field
  * data "MaterialNames", and point normals / texture coordinates when every face has them (see
@@ -15,20 +15,20 @@
  * degenerate or non-manifold triangles are vtkWarningMacro messages. GetNonManifoldEdges(),
  * GetDegenerateTriangles() and GetWarnings() give the figures of the last read.
  */
-#ifndef vtkLightFieldSceneReader_h
-#define vtkLightFieldSceneReader_h
+#ifndef vtkOBJSceneReader_h
+#define vtkOBJSceneReader_h
 
-#include "MesolightVLFModule.h" // For export macro
+#include "MesolightSceneModule.h" // For export macro
 #include "vtkPolyDataAlgorithm.h"
 
 #include <string> // For the file name
 #include <vector> // For the warnings
 
-class MESOLIGHTVLF_EXPORT vtkLightFieldSceneReader : public vtkPolyDataAlgorithm
+class MESOLIGHTSCENE_EXPORT vtkOBJSceneReader : public vtkPolyDataAlgorithm
 {
 public:
-  static vtkLightFieldSceneReader* New();
-  vtkTypeMacro(vtkLightFieldSceneReader, vtkPolyDataAlgorithm);
+  static vtkOBJSceneReader* New();
+  vtkTypeMacro(vtkOBJSceneReader, vtkPolyDataAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
@@ -68,14 +68,14 @@ public:
   ///@}
 
 protected:
-  vtkLightFieldSceneReader();
-  ~vtkLightFieldSceneReader() override = default;
+  vtkOBJSceneReader();
+  ~vtkOBJSceneReader() override = default;
 
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
 private:
-  vtkLightFieldSceneReader(const vtkLightFieldSceneReader&) = delete;
-  void operator=(const vtkLightFieldSceneReader&) = delete;
+  vtkOBJSceneReader(const vtkOBJSceneReader&) = delete;
+  void operator=(const vtkOBJSceneReader&) = delete;
 
   std::string FileName;
   bool RequireEmitter = false;

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "vtkLightFieldSceneReader.h"
+#include "vtkOBJSceneReader.h"
 
 #include "ObjScene.h"
 #include "vtkTriangleSceneConverter.h"
@@ -10,14 +10,14 @@
 #include "vtkObjectFactory.h"
 #include "vtkPolyData.h"
 
-vtkStandardNewMacro(vtkLightFieldSceneReader);
+vtkStandardNewMacro(vtkOBJSceneReader);
 
-vtkLightFieldSceneReader::vtkLightFieldSceneReader()
+vtkOBJSceneReader::vtkOBJSceneReader()
 {
   this->SetNumberOfInputPorts(0);
 }
 
-int vtkLightFieldSceneReader::RequestData(
+int vtkOBJSceneReader::RequestData(
   vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
@@ -30,13 +30,13 @@ int vtkLightFieldSceneReader::RequestData(
     vtkErrorMacro(<< "no FileName: set the .obj file to read");
     return 0;
   }
-  mesolight::vlf::ObjReadOptions options;
+  mesolight::ObjReadOptions options;
   options.RequireEmitter = this->RequireEmitter;
   options.RemoveDegenerateTriangles = this->RemoveDegenerateTriangles;
-  mesolight::vlf::ObjSceneRead read;
+  mesolight::ObjSceneRead read;
   try
   {
-    read = mesolight::vlf::ReadObjScene(this->FileName, options);
+    read = mesolight::ReadObjScene(this->FileName, options);
   }
   catch (const std::exception& error) // ObjSceneError, or std::bad_alloc on absurd files
   {
@@ -57,7 +57,7 @@ int vtkLightFieldSceneReader::RequestData(
   return 1;
 }
 
-void vtkLightFieldSceneReader::PrintSelf(ostream& os, vtkIndent indent)
+void vtkOBJSceneReader::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "FileName: " << this->FileName << "\n";

@@ -3,7 +3,7 @@
  * @class   vtkTriangleSceneConverter
  * @brief   vtkPolyData with material cell arrays <-> mesolight::TriangleScene
  *
- * The light field's scenes (mesolight::TriangleScene, vtkRayTracing/core/TriangleScene.h) as
+ * The light field's scenes (mesolight::TriangleScene, vtkScene/core/TriangleScene.h) as
  * vtkPolyData: triangles, and per cell the material arrays
  *  - "Diffuse" (3 floats, Kd), "Specular" (3, Ks, perfect specular), "Emission" (3, Ke,
  *    emitted radiance), "MaterialId" (int, index into the scene's materials),
@@ -21,7 +21,7 @@
 #ifndef vtkTriangleSceneConverter_h
 #define vtkTriangleSceneConverter_h
 
-#include "MesolightVLFModule.h" // For export macro
+#include "MesolightSceneModule.h" // For export macro
 #include "vtkObject.h"
 #include "vtkSmartPointer.h" // For ToPolyData
 
@@ -31,7 +31,7 @@ namespace mesolight
 struct TriangleScene;
 }
 
-class MESOLIGHTVLF_EXPORT vtkTriangleSceneConverter : public vtkObject
+class MESOLIGHTSCENE_EXPORT vtkTriangleSceneConverter : public vtkObject
 {
 public:
   static vtkTriangleSceneConverter* New();

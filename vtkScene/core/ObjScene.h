@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// Wavefront OBJ + MTL scenes for the virtual light field (Wither 2005 §2.4.2.1: the propagator
-// reads a scene as *.obj with a *.mtl of surface properties). Reads into the shared TriangleScene
+// Wavefront OBJ + MTL scenes, the scene files of the light field and the ray tracer (Wither 2005
+// §2.4.2.1: the propagator reads a scene as *.obj with a *.mtl of surface properties). Reads into the shared TriangleScene
 // and writes one back (the built-in Cornell box as an example of the format).
 //
 // Read: v, vt, vn, f (n-gons fan-triangulated; negative indices count back from the last
@@ -8,8 +8,8 @@
 // Ke (emission), Ka, Ns, and the names of map_* textures (recorded, not loaded). Other statements
 // (o, g, s, illum, d, ...) are ignored. Errors throw ObjSceneError with "file:line: what";
 // a missing MTL file or material is a warning and gets a default grey material.
-#ifndef mesolight_vlf_ObjScene_h
-#define mesolight_vlf_ObjScene_h
+#ifndef mesolight_ObjScene_h
+#define mesolight_ObjScene_h
 
 #include "TriangleScene.h"
 
@@ -20,8 +20,6 @@
 #include <vector>
 
 namespace mesolight
-{
-namespace vlf
 {
 
 class ObjSceneError : public std::runtime_error
@@ -71,7 +69,6 @@ std::string MaterialFileOf(const std::string& objPath);
 void WriteObjScene(const TriangleScene& scene, const std::string& objPath, bool overwrite = false,
   const std::string& comment = "");
 
-} // namespace vlf
 } // namespace mesolight
 
 #endif

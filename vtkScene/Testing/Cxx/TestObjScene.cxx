@@ -17,15 +17,15 @@
 namespace
 {
 using mesolight::TriangleScene;
-using mesolight::vlf::ObjReadOptions;
-using mesolight::vlf::ObjSceneError;
-using mesolight::vlf::ObjSceneRead;
-using mesolight::vlf::ReadObjScene;
+using mesolight::ObjReadOptions;
+using mesolight::ObjSceneError;
+using mesolight::ObjSceneRead;
+using mesolight::ReadObjScene;
 using mesolight::vlftest::ExpectSameScene;
 
 std::string TempPath(const std::string& name)
 {
-  return std::string(MESOLIGHT_VLF_TEST_TEMP_DIR) + "/" + name;
+  return std::string(MESOLIGHT_TEST_TEMP_DIR) + "/" + name;
 }
 
 std::string WriteText(const std::string& name, const std::string& text)
@@ -249,7 +249,7 @@ TEST(ObjScene, DegenerateAndNonManifoldTriangles)
     TempPath("flat.obj") + ": every triangle of the scene is degenerate (zero area)");
   // A closed manifold (tetrahedron) has none.
   EXPECT_EQ(
-    mesolight::vlf::CountNonManifoldEdges({ { 0, 1, 2 }, { 0, 3, 1 }, { 1, 3, 2 }, { 2, 3, 0 } }),
+    mesolight::CountNonManifoldEdges({ { 0, 1, 2 }, { 0, 3, 1 }, { 1, 3, 2 }, { 2, 3, 0 } }),
     0u);
 }
 
@@ -259,7 +259,7 @@ TEST(ObjScene, CornellBoxRoundTripAndNoOverwrite)
   const std::string path = TempPath("cornell-roundtrip.obj");
   std::remove(path.c_str());
   std::remove(TempPath("cornell-roundtrip.mtl").c_str());
-  mesolight::vlf::WriteObjScene(box, path, false, "The Cornell box");
+  mesolight::WriteObjScene(box, path, false, "The Cornell box");
   ObjReadOptions strict;
   strict.RequireEmitter = true;
   const ObjSceneRead read = ReadObjScene(path, strict);
@@ -268,12 +268,12 @@ TEST(ObjScene, CornellBoxRoundTripAndNoOverwrite)
   // A second write refuses and leaves the file alone.
   std::ifstream before(path);
   const std::string original((std::istreambuf_iterator<char>(before)), {});
-  EXPECT_THROW(mesolight::vlf::WriteObjScene(TriangleScene(box), path), ObjSceneError);
+  EXPECT_THROW(mesolight::WriteObjScene(TriangleScene(box), path), ObjSceneError);
   std::ifstream after(path);
   EXPECT_EQ(original, std::string((std::istreambuf_iterator<char>(after)), {}));
-  EXPECT_NO_THROW(mesolight::vlf::WriteObjScene(box, path, true));
+  EXPECT_NO_THROW(mesolight::WriteObjScene(box, path, true));
   // Writing into a folder that does not exist fails cleanly.
-  EXPECT_THROW(mesolight::vlf::WriteObjScene(box, TempPath("no/such/dir/box.obj")), ObjSceneError);
+  EXPECT_THROW(mesolight::WriteObjScene(box, TempPath("no/such/dir/box.obj")), ObjSceneError);
 }
 
 // The committed example data (examples/data/cornell-box.obj/.mtl) is the built-in box.

@@ -16,8 +16,6 @@
 
 namespace mesolight
 {
-namespace vlf
-{
 
 namespace
 {
@@ -752,5 +750,4 @@ void WriteObjScene(const TriangleScene& scene, const std::string& objPath, bool 
   WriteAtomically(objPath, out.str());
 }
 
-} // namespace vlf
 } // namespace mesolight

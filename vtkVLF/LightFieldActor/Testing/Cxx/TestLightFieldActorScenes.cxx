@@ -405,7 +405,7 @@ struct MessageLog
 };
 
 // A copy of a snapshot claiming another format version, with a valid header checksum (the
-// header's 64-bit multiply-xorshift hash of vtkVLF/core/Snapshot.cxx, over its first 40 bytes).
+// header's 64-bit multiply-xorshift hash of vtkVLF/LightField/core/Snapshot.cxx, over its first 40 bytes).
 void WriteOtherVersion(const std::string& from, const std::string& to, std::uint32_t version)
 {
   std::ifstream in(from, std::ios::binary);

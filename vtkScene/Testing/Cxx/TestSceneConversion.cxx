@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Tests of the VTK side of the light field's scenes: vtkTriangleSceneConverter (round trips,
-// foreign polydata, bad input), vtkLightFieldSceneReader (the committed Cornell box OBJ against
+// foreign polydata, bad input), vtkOBJSceneReader (the committed Cornell box OBJ against
 // vtkCornellBoxSource, errors and warnings as VTK events) and vtkCornellBoxSource.
 #include "SceneTestUtilities.h"
 #include "TriangleScene.h"
 #include "vtkCornellBoxSource.h"
-#include "vtkLightFieldSceneReader.h"
+#include "vtkOBJSceneReader.h"
 #include "vtkTriangleSceneConverter.h"
 
 #include "vtkCellData.h"
@@ -69,7 +69,7 @@ private:
 
 std::string TempPath(const std::string& name)
 {
-  return std::string(MESOLIGHT_VLF_TEST_TEMP_DIR) + "/" + name;
+  return std::string(MESOLIGHT_TEST_TEMP_DIR) + "/" + name;
 }
 
 TEST(TriangleSceneConverter, CornellBoxRoundTrip)
@@ -230,7 +230,7 @@ TEST(TriangleSceneConverter, BadInput)
 
 TEST(LightFieldSceneReader, CornellBoxObjMatchesSource)
 {
-  vtkNew<vtkLightFieldSceneReader> reader;
+  vtkNew<vtkOBJSceneReader> reader;
   vtkNew<MessageCollector> messages;
   messages->Watch(reader);
   reader->SetFileName(MESOLIGHT_SOURCE_DIR "/examples/data/cornell-box.obj");
@@ -266,7 +266,7 @@ TEST(LightFieldSceneReader, CornellBoxObjMatchesSource)
 
 TEST(LightFieldSceneReader, ErrorsAndWarnings)
 {
-  vtkNew<vtkLightFieldSceneReader> reader;
+  vtkNew<vtkOBJSceneReader> reader;
   vtkNew<MessageCollector> messages;
   messages->Watch(reader);
   // Quiet the executive's "algorithm returned failure" reports about the reader.
