@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // `mesolight bench gather`: the cost of shading a movable object by gathering the light field's
-// irradiance at its vertices (ObjectGatherer, Wither 2005 §3.6; issue 14, 5c): microseconds per
+// irradiance at its vertices (ObjectGatherer, Wither 2005 §3.6): microseconds per
 // vertex on one thread (its CPU time, so other load on a shared machine does not count, and wall
 // time) and on all threads, per direction count, subdivision level and direction set; the
 // per-vertex cache's hit rate along a short path; with --error, the mean relative error of the

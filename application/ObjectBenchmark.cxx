@@ -257,7 +257,7 @@ int Bench(const std::vector<std::string>& args)
               << std::setw(15) << r.OtherMs() << std::setw(12) << 100.0 * r.GatheredFraction
               << "%\n";
   }
-  std::cout << "goal (issue 14): >= 15 frames/s with a moving ~1000-point object gathered at "
+  std::cout << "goal: >= 15 frames/s with a moving ~1000-point object gathered at "
                "2049 directions, coherent mode\n";
   if (cl.Has("--csv"))
   {

@@ -161,7 +161,7 @@ bool WritePlots(const ReliefSweepSettings& settings, const std::vector<ReliefSwe
 
 namespace
 {
-// Relaxed cones vs relief at equal mean hit error (issue target: >= 2x). Each relief
+// Relaxed cones vs relief at equal mean hit error (the goal: >= 2x faster). Each relief
 // configuration's mean hit error E is a target; for each method take its fastest configuration
 // (same map and angle) with mean hit error <= E: both Pareto fronts read at E, the minimum over
 // noisy timings taken on both sides alike. Cost is measured twice: llvmpipe ms/frame, and

@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: BSD-3-Clause
-# Every `mesolight bench` command and `mesolight probe` on tiny sizes (issue 17: they ran, but
-# nothing asserted their outputs): each exits 0 and writes its CSV with the documented header
+# Every `mesolight bench` command and `mesolight probe` on tiny sizes (running is not enough: the
+# outputs are asserted): each exits 0 and writes its CSV with the documented header
 # and the expected rows, the charts where asked, and one sanity relation per command.
 cmake_minimum_required(VERSION 3.16) # quoted strings in if() are strings (CMP0054)
 file(REMOVE_RECURSE "${WORK}")

@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: BSD-3-Clause
-# An adversarial user's findings (issue 17): degenerate inputs end with an error, never a crash; no
+# What an adversarial user tried: degenerate inputs end with an error, never a crash; no
 # command overwrites its input (by name or through a symbolic or hard link) or writes anything
 # before every option is checked; writers' failures are reported; memory budgets refuse early.
 include("${CMAKE_CURRENT_LIST_DIR}/CliDepthImage.cmake")

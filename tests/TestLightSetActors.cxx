@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// Issue 15 item 4: ordinary VTK actors (vtkPolyDataMapper) lit by a light set through
+// Ordinary VTK actors (vtkPolyDataMapper) lit by a light set through
 // vtkLightSetLighting, measured per pixel against independent references on a white Lambertian
 // sphere (alone, and above a plane for shadows): the path tracer under the procedural sky, the
 // exact irradiance of the sun-and-sky map, and the exact light set with Embree visibility.

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// PathTracer: the reference renderer of Mesolight (issue 6, item 5). Unidirectional path
+// PathTracer: the reference renderer of Mesolight (the others are measured against it). Path
 // tracing of a TriangleScene on Embree: diffuse (Kd) and perfect-specular (Ks) surfaces,
 // one-sided area emitters (Ke, front = counter-clockwise face), an optional lat-long
 // environment, next-event estimation on emitter triangles combined with cosine-weighted BSDF

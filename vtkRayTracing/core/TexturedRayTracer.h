@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// TexturedRayTracer: the ray tracer of Ahern 1999 on Embree (issue 6, items 1-4). Phong shading
+// TexturedRayTracer: the ray tracer of Ahern 1999 (§1-4) on Embree. Phong shading
 // of triangles and analytic spheres lit by directional and positional (spot) lights with hard
 // shadows; every material channel may come from a texture map: diffuse colour, specular colour
 // (which is also the mirror reflectivity, Ahern 1999 §1), ambient colour, shininess, bump (normal

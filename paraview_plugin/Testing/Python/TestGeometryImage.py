@@ -1,10 +1,11 @@
 # SPDX-License-Identifier: BSD-3-Clause
-"""Mesolight Geometry Image To Mesh in ParaView (issue 15): a cylinder written as a geometry image
-(Mesolight Geometry Image) sampled every 16 pixels gives 2 x 8 x 8 triangles with Normals and
-texture coordinates at texel centres; adaptive sampling of a bump needs fewer triangles than the
-full resolution; NaN holes drop triangles; the mesh shown as a Relief Surface draws the relief
-(differs from the plain surface); a depth image (one component) is refused with a message. The
-comparison against the dense displaced mesh runs in the main build (ctest -R GeometryImage)."""
+"""Mesolight Geometry Image To Mesh in ParaView (Gu et al. 2002): a cylinder written as a
+geometry image (Mesolight Geometry Image) sampled every 16 pixels gives 2 x 8 x 8 triangles with
+Normals and texture coordinates at texel centres; adaptive sampling of a bump needs fewer
+triangles than the full resolution; NaN holes drop triangles; the mesh shown as a Relief Surface
+draws the relief (differs from the plain surface); a depth image (one component) is refused with
+a message. The comparison against the dense displaced mesh runs in the main build
+(ctest -R GeometryImage)."""
 import os
 import sys
 

@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: BSD-3-Clause
-"""Light Field Gather in ParaView (issue 14, item 6), through the plugin's proxies:
+"""Light Field Gather in ParaView (Wither 2005 §3.6), through the plugin's proxies:
 
 - furnace: a closed cube emitting Le = 1 with albedo 0.5 everywhere (an OBJ + MTL written here,
   read by the Mesolight OBJ Scene Reader), 3 iterations: the radiance everywhere inside is

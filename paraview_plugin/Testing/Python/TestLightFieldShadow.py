@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: BSD-3-Clause
-"""A movable object in ParaView (issue 14, item 6): Sphere -> Transform -> Light Field Gather
+"""A movable object in ParaView (Wither 2005 ch. 3-4): Sphere -> Transform -> Light Field Gather
 inside the Cornell box's field, the gather output as the field display's Shadow Caster.
 
 - Apply of Light Field Gather shows the Light Field representation, coloured by no array: the

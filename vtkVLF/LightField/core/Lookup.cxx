@@ -123,8 +123,9 @@ glm::vec3 Lookup::IncidentRadiance(std::size_t k, int sense, const glm::vec3& p,
   const int count = CellsAround(this->Field.CellCoordinates(k, p), cells, is, js, ws);
   const float depth = this->Field.DepthOf(k, p);
   thread_local std::vector<Crossing> crossings;
-  glm::vec3 sum(0.0f), fallback(0.0f);
-  float weight = 0.0f, fallbackWeight = -1.0f;
+  auto orientationOf = [&](const Crossing& c) { return this->Field.Orientation(k, c.Surface); };
+  auto ignored = [&](const Crossing& c) { return c.Surface == ignore; };
+  IncidentBlend blend;
   for (int q = 0; q < count; ++q)
   {
     if (ws[q] <= 0.0f)
@@ -132,27 +133,9 @@ glm::vec3 Lookup::IncidentRadiance(std::size_t k, int sense, const glm::vec3& p,
       continue;
     }
     this->Field.LineCrossings(k, is[q], js[q], crossings);
-    // The crossings just before and after p's depth bound the segment of this line that p's
-    // neighbourhood lies in.
-    const Crossing* before = nullptr;
-    const Crossing* after = nullptr;
-    for (const Crossing& c : crossings)
-    {
-      if (c.Surface == ignore)
-      {
-        continue;
-      }
-      if (c.Depth < depth - SelfDepth)
-      {
-        before = &c;
-      }
-      else if (c.Depth > depth + SelfDepth)
-      {
-        after = &c;
-        break;
-      }
-    }
-    const Crossing* sender = sense > 0 ? after : before;
+    const Crossing* first = crossings.data();
+    const SegmentAroundPoint<Crossing> segment =
+      FindSegment(first, first + crossings.size(), depth, sense, orientationOf, ignored);
     glm::vec3 radiance(0.0f); // nothing (light leaves the scene) or a back side: no light
     if (!occlusion)
     {
@@ -161,7 +144,7 @@ glm::vec3 Lookup::IncidentRadiance(std::size_t k, int sense, const glm::vec3& p,
       for (const Crossing& c : crossings)
       {
         const bool beyond = sense > 0 ? c.Depth > depth + SelfDepth : c.Depth < depth - SelfDepth;
-        if (c.Surface == ignore || !beyond || this->Field.Orientation(k, c.Surface) != -sense)
+        if (c.Surface == ignore || !beyond || orientationOf(c) != -sense)
         {
           continue;
         }
@@ -174,30 +157,15 @@ glm::vec3 Lookup::IncidentRadiance(std::size_t k, int sense, const glm::vec3& p,
         }
       }
     }
-    else if (sender && this->Field.Orientation(k, sender->Surface) == -sense)
+    else if (segment.Sender)
     {
-      const glm::vec3 x = this->Field.PointOnLine(k, is[q], js[q], sender->Depth);
-      radiance = this->CellRadiance(k, sender->Surface, sender->Cell, x);
+      const Crossing& sender = *segment.Sender;
+      const glm::vec3 x = this->Field.PointOnLine(k, is[q], js[q], sender.Depth);
+      radiance = this->CellRadiance(k, sender.Surface, sender.Cell, x);
     }
-    // A neighbouring line tells about p only when its segment is open space like p's: both
-    // bounds face into it. Near a wall a neighbour may already be behind the wall at p's
-    // depth, or pass beside a wall parallel to it crossing nothing at all; it is left out and
-    // the others renormalised (counting it would darken points near walls).
-    const bool open = (!before || this->Field.Orientation(k, before->Surface) > 0) &&
-      (!after || this->Field.Orientation(k, after->Surface) < 0) && !crossings.empty();
-    if (open)
-    {
-      sum += ws[q] * radiance;
-      weight += ws[q];
-    }
-    else if (ws[q] > fallbackWeight)
-    {
-      fallback = radiance;
-      fallbackWeight = ws[q];
-    }
+    blend.Add(ws[q], radiance, segment.Open);
   }
-  // No open segment around p (p behind a one-sided surface): the nearest line as it is.
-  return weight > 0.0f ? sum / weight : fallback;
+  return blend.Result();
 }
 
 glm::vec3 Lookup::Irradiance(

@@ -52,6 +52,85 @@ constexpr float SelfDepth = 1e-4f;
 int CellsAround(
   const glm::vec2& c, CellInterpolation mode, int (&i)[4], int (&j)[4], float (&w)[4]);
 
+// The open-segment rule of Lookup::IncidentRadiance, written once: the lookup applies it to the
+// field's crossings (Crossing), the object gatherer's line cache (ObjectLineCache.h) to its own
+// copy of them. One line of p's neighbourhood, its crossings [first, last) by increasing depth
+// (T has a Depth; orientationOf(c) is LightField::Orientation of c's surface; skip(c) true leaves
+// c out, as IncidentRadiance's `ignore` does):
+template <typename T>
+struct SegmentAroundPoint
+{
+  // The crossings just before and after p's depth (beyond SelfDepth): they bound the segment of
+  // this line that p's neighbourhood lies in (nullptr: none on that side).
+  const T* Before = nullptr;
+  const T* After = nullptr;
+  // The bound on p's side `sense` (+1: greater depth) when it faces p; nullptr when there is none
+  // (light leaves the scene) or it shows p its back side: no light from this line.
+  const T* Sender = nullptr;
+  // A neighbouring line tells about p only when its segment is open space like p's: both bounds
+  // face into it. Near a wall a neighbour may already be behind the wall at p's depth, or pass
+  // beside a wall parallel to it crossing nothing at all; such a line is left out of the blend
+  // and the others renormalised (counting it would darken points near walls).
+  bool Open = false;
+};
+
+template <typename T, typename OrientationOf, typename Skip>
+SegmentAroundPoint<T> FindSegment(
+  const T* first, const T* last, float depth, int sense, OrientationOf orientationOf, Skip skip)
+{
+  SegmentAroundPoint<T> segment;
+  for (const T* c = first; c != last; ++c)
+  {
+    if (skip(*c))
+    {
+      continue;
+    }
+    if (c->Depth < depth - SelfDepth)
+    {
+      segment.Before = c;
+    }
+    else if (c->Depth > depth + SelfDepth)
+    {
+      segment.After = c;
+      break;
+    }
+  }
+  const T* sender = sense > 0 ? segment.After : segment.Before;
+  segment.Sender = sender && orientationOf(*sender) == -sense ? sender : nullptr;
+  segment.Open = (!segment.Before || orientationOf(*segment.Before) > 0) &&
+    (!segment.After || orientationOf(*segment.After) < 0) && first != last;
+  return segment;
+}
+
+// The blend of the lines around p (IncidentRadiance's): the open lines by their weights,
+// renormalised; with no open line around p (p behind a one-sided surface), the heaviest line as
+// it is.
+class IncidentBlend
+{
+public:
+  void Add(float weight, const glm::vec3& radiance, bool open)
+  {
+    if (open)
+    {
+      this->Sum += weight * radiance;
+      this->Weight += weight;
+    }
+    else if (weight > this->FallbackWeight)
+    {
+      this->Fallback = radiance;
+      this->FallbackWeight = weight;
+    }
+  }
+  glm::vec3 Result() const
+  {
+    return this->Weight > 0.0f ? this->Sum / this->Weight : this->Fallback;
+  }
+
+private:
+  glm::vec3 Sum{ 0.0f }, Fallback{ 0.0f };
+  float Weight = 0.0f, FallbackWeight = -1.0f;
+};
+
 struct GatherOptions
 {
   CellInterpolation Cells = CellInterpolation::Bilinear;

@@ -126,8 +126,10 @@ struct LineCache
       (glm::dot(p, w.V) + 1.0f) * w.InverseCell - 0.5f);
     const int count = CellsAround(coordinates, cells, is, js, ws);
     const float depth = glm::dot(p, w.D) + w.DepthStart;
-    glm::vec3 sum(0.0f), fallback(0.0f);
-    float weight = 0.0f, fallbackWeight = -1.0f;
+    // Lookup's open-segment rule (FindSegment, IncidentBlend) on the cached crossings.
+    auto orientationOf = [](const Entry& e) { return e.Orientation; };
+    auto ignored = [](const Entry&) { return false; };
+    IncidentBlend blend;
     for (int q = 0; q < count; ++q)
     {
       if (ws[q] <= 0.0f)
@@ -140,39 +142,11 @@ struct LineCache
         return false;
       }
       const std::size_t line = static_cast<std::size_t>(b) * w.Width + a;
-      const Entry* first = w.Entries.data() + w.Start[line];
-      const Entry* last = w.Entries.data() + w.Start[line + 1];
-      const Entry* before = nullptr;
-      const Entry* after = nullptr;
-      for (const Entry* e = first; e != last; ++e)
-      {
-        if (e->Depth < depth - SelfDepth)
-        {
-          before = e;
-        }
-        else if (e->Depth > depth + SelfDepth)
-        {
-          after = e;
-          break;
-        }
-      }
-      const Entry* sender = sense > 0 ? after : before;
-      const glm::vec3 radiance =
-        sender && sender->Orientation == -sense ? sender->Radiance : glm::vec3(0.0f);
-      const bool open =
-        (!before || before->Orientation > 0) && (!after || after->Orientation < 0) && first != last;
-      if (open)
-      {
-        sum += ws[q] * radiance;
-        weight += ws[q];
-      }
-      else if (ws[q] > fallbackWeight)
-      {
-        fallback = radiance;
-        fallbackWeight = ws[q];
-      }
+      const SegmentAroundPoint<Entry> segment = FindSegment(w.Entries.data() + w.Start[line],
+        w.Entries.data() + w.Start[line + 1], depth, sense, orientationOf, ignored);
+      blend.Add(ws[q], segment.Sender ? segment.Sender->Radiance : glm::vec3(0.0f), segment.Open);
     }
-    out = weight > 0.0f ? sum / weight : fallback;
+    out = blend.Result();
     return true;
   }
 };

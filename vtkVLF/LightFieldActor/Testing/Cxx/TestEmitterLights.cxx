@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// EmitterLights (issue 14, 5b): the light estimated from the Cornell box's field against the
+// EmitterLights (Wither 2005 ch. 4): the light estimated from the Cornell box's field against the
 // published box (the light 130 x 105 mm at y = 548.7, centre (278, 548.7, 279.5), Le (17, 12, 4),
 // facing down), several emitters sorted by power, large emitters split near the object (their
 // irradiance against the exact integral over the rectangle), and the ambient term.

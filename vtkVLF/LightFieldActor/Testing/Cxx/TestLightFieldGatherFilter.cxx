@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// vtkLightFieldGatherFilter (issue 14, 6): a sphere inside the Cornell box's field gets the
+// vtkLightFieldGatherFilter (Wither 2005 §3.6): a sphere inside the Cornell box's field gets the
 // irradiance vtkVirtualLightField's own ComputeIrradiance gives at each point (an independent
 // path: Lookup::Irradiance point by point), with computed normals when it has none; bad input
 // is reported, never a crash.

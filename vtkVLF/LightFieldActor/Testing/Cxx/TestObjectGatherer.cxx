@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// ObjectGatherer (issue 14, 5c): subdivision, the per-vertex cache, back faces, bad input, and the
+// ObjectGatherer (Wither §3.6): subdivision, the per-vertex cache, back faces, bad input, and the
 // gathered shading of a sphere floating in the Cornell box against the path tracer with the
 // sphere in place (ObjectReference.h), per subdivision level and direction count, with the
 // negative tests (no solid-angle weights, no projected-area normalisation, no occlusion).

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// The movable object's own occlusion in its gathered light (ObjectSelfOcclusion.h, issue 14):
+// The movable object's own occlusion in its gathered light (ObjectSelfOcclusion.h):
 // a concave bracket gathered from the Cornell box's field against the path tracer with the
 // bracket in place (ObjectReference.h, which knows the bracket blocks its own light), with the
 // occlusion off as the negative test; convex objects cast no ray and keep their values.

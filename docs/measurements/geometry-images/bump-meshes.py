@@ -1,7 +1,8 @@
 # SPDX-License-Identifier: BSD-3-Clause
 # The bump geometry image (256^2) sampled every 12 pixels and adaptively to 0.002, drawn with edges
-# (docs/geometry-images.md). Run: scripts/pvbatch.sh docs/geometry-images/bump-meshes.py; then
-# oiiotool mesh-regular.png mesh-adaptive.png --mosaic 2x1 -o bump-regular-vs-adaptive-mesh.png
+# (docs/geometry-images.md). Run:
+#   scripts/pvbatch.sh docs/measurements/geometry-images/bump-meshes.py
+# then oiiotool mesh-regular.png mesh-adaptive.png --mosaic 2x1 -o bump-regular-vs-adaptive-mesh.png
 import paraview.simple as pvs
 pvs._DisableFirstRenderCameraReset()
 bump = pvs.MesolightGeometryImage(Surface=4, Resolution=[256, 256])
