@@ -10,6 +10,7 @@
 #include "Timing.h"
 
 #include "vtkLightFieldActor.h"
+#include "vtkLightFieldActorCore.h"
 #include "vtkLightFieldObjectMapper.h"
 
 #include "ObjScene.h"
@@ -113,7 +114,8 @@ bool ConfigureView(const CommandLine& cl, vtkLightFieldActor* actor, vtkRenderer
 
   double up[3] = { 0.0, 1.0, 0.0 };
   glm::vec3 eye, focal;
-  if (!ReadLightFieldCamera(cl, *actor->GetLightField(), eye, focal, up, error))
+  if (!ReadLightFieldCamera(
+        cl, *vtkLightFieldActorCore::GetLightField(actor), eye, focal, up, error))
   {
     std::cerr << command << ": " << error << "\n";
     return false;
@@ -266,26 +268,27 @@ int Render(const std::vector<std::string>& args)
   if (object.Active)
   {
     PrintObjectNote(actor, object);
+    const mesolight::vlf::ShadedObject* shaded = vtkLightFieldActorCore::GetShadedObject(actor);
     std::cout << "object: " << cl.Get("--object") << ", shading " << cl.Get("--shading")
               << ", gather " << 1000.0 * actor->GetLastGatherSeconds() << " ms, "
-              << (actor->GetShadedObject() ? actor->GetShadedObject()->Mesh.Points.size() : 0)
-              << " points";
+              << (shaded ? shaded->Mesh.Points.size() : 0) << " points";
     if (actor->GetObjectIrradianceVolume() > 0)
     {
       std::cout << " from an irradiance volume of " << actor->GetObjectIrradianceVolume()
                 << " points a side";
     }
-    else if (actor->GetShadedObject())
+    else if (shaded)
     {
-      std::cout << " over " << actor->GetShadedObject()->DirectionsUsed << " directions";
-      if (const std::size_t facing = actor->GetShadedObject()->SelfFacingPoints)
+      std::cout << " over " << shaded->DirectionsUsed << " directions";
+      if (const std::size_t facing = shaded->SelfFacingPoints)
       {
         // A concave object: these points' directions were tested against the object itself.
         std::cout << " (" << facing << " face the object itself)";
       }
     }
     std::cout << ", shadows " << cl.Get("--shadows");
-    if (const mesolight::vlf::ObjectShadows* shadows = actor->GetObjectShadows())
+    if (const mesolight::vlf::ObjectShadows* shadows =
+          vtkLightFieldActorCore::GetObjectShadows(actor))
     {
       std::cout << " (" << shadows->Maps().size() << " maps, "
                 << 1000.0 * actor->GetLastShadowSeconds() << " ms)";
@@ -627,7 +630,9 @@ int View(const std::vector<std::string>& args)
            << position[1] << "," << position[2] << "; moved in " << updates << " of " << frames
            << " frames; per move: object update " << 1000.0 * update / std::max(1, updates)
            << " ms, of which gathering " << 1000.0 * gather / std::max(1, updates) << " ms ("
-           << (actor->GetShadedObject() ? actor->GetShadedObject()->Mesh.Points.size() : 0)
+           << (vtkLightFieldActorCore::GetShadedObject(actor)
+                  ? vtkLightFieldActorCore::GetShadedObject(actor)->Mesh.Points.size()
+                  : 0)
            << " points); frames without a move " << 1000.0 * still / std::max(1, frames - updates)
            << " ms\n";
       std::cout << line.str();

@@ -9,6 +9,7 @@
 #include "WalkthroughBenchmark.h"
 
 #include "vtkLightFieldActor.h"
+#include "vtkLightFieldActorCore.h"
 #include "vtkLightFieldObjectMapper.h"
 
 #include "LightField.h"
@@ -181,7 +182,7 @@ int Bench(const std::vector<std::string>& args)
     vtkNew<vtkRenderer> renderer;
     window->AddRenderer(renderer);
     vtkNew<vtkLightFieldActor> scene;
-    scene->SetLightField(field.get());
+    vtkLightFieldActorCore::SetLightField(scene, field.get());
     scene->SetRenderMode(mode);
     scene->SetShadowMode(shadows);
     renderer->AddActor(scene);
@@ -215,7 +216,7 @@ int Bench(const std::vector<std::string>& args)
         {
           continue;
         }
-        const vlf::ShadedObject* shaded = scene->GetShadedObject();
+        const vlf::ShadedObject* shaded = vtkLightFieldActorCore::GetShadedObject(scene);
         if (!shaded)
         {
           std::cerr << command << ": the object was not shaded: " << scene->GetLastObjectProblem()

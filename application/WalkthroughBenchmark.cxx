@@ -8,6 +8,7 @@
 #include "Timing.h"
 
 #include "vtkLightFieldActor.h"
+#include "vtkLightFieldActorCore.h"
 #include "vtkLightFieldObjectMapper.h"
 
 #include "ObjScene.h"
@@ -185,7 +186,7 @@ int Bench(const std::vector<std::string>& args)
   vtkNew<vtkRenderer> renderer;
   window->AddRenderer(renderer);
   vtkNew<vtkLightFieldActor> actor;
-  actor->SetLightField(mirrorField.get());
+  vtkLightFieldActorCore::SetLightField(actor, mirrorField.get());
   renderer->AddActor(actor);
   auto resetCamera = [&]()
   {
@@ -198,13 +199,13 @@ int Bench(const std::vector<std::string>& args)
     TimeFrames(window, renderer, actor, vtkLightFieldActor::Geometry, frames, "geometry"));
   rows.back().GoalMs = 1000.0 / 30.0;
   rows.back().Goal = ">= 30 fps";
-  actor->SetLightField(diffuseField.get());
+  vtkLightFieldActorCore::SetLightField(actor, diffuseField.get());
   resetCamera();
   rows.push_back(
     TimeFrames(window, renderer, actor, vtkLightFieldActor::Progressive, frames, "diffuse-only"));
   rows.back().GoalMs = 1000.0 / 30.0;
   rows.back().Goal = ">= 30 fps";
-  actor->SetLightField(mirrorField.get());
+  vtkLightFieldActorCore::SetLightField(actor, mirrorField.get());
   resetCamera();
   rows.push_back(TimeFrames(
     window, renderer, actor, vtkLightFieldActor::Raytrace, std::min(frames, 5), "raytrace"));

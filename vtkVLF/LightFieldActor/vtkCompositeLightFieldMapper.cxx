@@ -36,7 +36,7 @@
 #include <string>
 #include <vector>
 
-// The movable object's shadow maps: vtkLightFieldActor's (vtkLightFieldActorShadows.h) built
+// The movable object's shadow maps: as vtkLightFieldActor's (vtkLightFieldObjectShadows.h), built
 // from the emitters the caster carries instead of the field itself.
 struct vtkCompositeLightFieldMapper::ShadowData
 {

@@ -4,8 +4,9 @@
  * @brief   a propagated virtual light field walked through inside a VTK renderer
  *
  * The walkthrough of Wither 2005 §2.4.2.2 as an actor that lives beside ordinary actors and
- * relief surfaces in one renderer. It takes a propagated field (SetLightField,
- * SetLightFieldFilter with a vtkVirtualLightField, or LoadLightField from a snapshot file) and
+ * relief surfaces in one renderer. It takes a propagated field (SetLightFieldFilter with a
+ * vtkVirtualLightField, or LoadLightField from a snapshot file; code built in this tree may lend
+ * it a field directly through vtkLightFieldActorCore) and
  * draws the field's scene triangles (world coordinates) with its own mapper
  * (vtkLightFieldMapper) in one of four modes:
  *
@@ -42,32 +43,13 @@
 
 #include "MesolightLightFieldActorModule.h" // For export macro
 #include "vtkOpenGLActor.h"
-#include "vtkSmartPointer.h" // For vtkSmartPointer
 
+#include <cstddef> // For std::size_t
 #include <cstdint> // For std::uint64_t
 #include <memory>  // For std::unique_ptr
 #include <string>  // For std::string
 
-namespace mesolight
-{
-namespace vlf
-{
-class LightField;
-struct LightApproximation;
-struct ShadedObject;
-struct TraceOptions;
-}
-}
-namespace mesolight
-{
-namespace vlf
-{
-struct ObjectMesh;
-class ObjectShadows;
-}
-}
 class vtkActor;
-class vtkPolyData;
 class vtkRenderer;
 class vtkVirtualLightField;
 
@@ -125,11 +107,6 @@ public:
   vtkGetMacro(MaximumReflectionDepth, int);
   ///@}
 
-  /**
-   * The field to show, borrowed: it must outlive the actor's use of it (e.g. held by a
-   * vtkVirtualLightField). nullptr clears it.
-   */
-  void SetLightField(const mesolight::vlf::LightField* field);
   /** Shows the field of a vtkVirtualLightField (updated, and its field taken, at each render). */
   void SetLightFieldFilter(vtkVirtualLightField* filter);
   /**
@@ -137,7 +114,6 @@ public:
    * GetLastError() (missing, foreign, truncated or other-version file), on failure.
    */
   bool LoadLightField(const std::string& fileName);
-  const mesolight::vlf::LightField* GetLightField() const;
   /** Why the last LoadLightField or field setup failed ("" when it did not). */
   const std::string& GetLastError() const { return this->LastError; }
   /** True when the field has surfaces with Ks > 0. */
@@ -161,19 +137,6 @@ public:
   double GetLastUploadSeconds() const { return this->LastUploadSeconds; }
   vtkIdType GetLastScreenPixels() const { return this->LastScreenPixels; }
   void GetLastScreenRect(int rect[4]) const;
-  ///@}
-
-  ///@{
-  /**
-   * Negative tests only: upload the atlas upside down; paste the screen rectangle over every
-   * fragment in it without alpha; trace reflections this many bounces short.
-   */
-  vtkSetMacro(FlipAtlasForTesting, bool);
-  vtkGetMacro(FlipAtlasForTesting, bool);
-  vtkSetMacro(OverwriteCompositeForTesting, bool);
-  vtkGetMacro(OverwriteCompositeForTesting, bool);
-  vtkSetClampMacro(ReflectionBouncesShortForTesting, int, 0, 8);
-  vtkGetMacro(ReflectionBouncesShortForTesting, int);
   ///@}
 
   ///@{
@@ -220,22 +183,15 @@ public:
    * mesh the checks refuse: then GetLastObjectProblem() says why).
    */
   bool UpdateMovableObject();
-  /** The object as last gathered (unit-sphere mesh with per-point radiance), or nullptr. */
-  const mesolight::vlf::ShadedObject* GetShadedObject() const;
-  /** Point lights estimated from the field's emitters (computed once per field), or nullptr. */
-  const mesolight::vlf::LightApproximation* GetEmitterLights();
   /** Bumped whenever the object's mesh, placement or shading changed. */
   unsigned long GetObjectVersion() const;
   /** Why the object is not shown or looks wrong ("" when fine): outside the field, through a
    * wall, degenerate. */
-  const std::string& GetLastObjectProblem() const { return this->LastObjectProblem; }
+  const std::string& GetLastObjectProblem() const;
   /** Seconds of the last object update that did work (placement, gather, instance; see
    * GetObjectVersion for whether one happened) and of its gather alone. */
-  double GetLastObjectSeconds() const { return this->LastObjectSeconds; }
-  double GetLastGatherSeconds() const { return this->LastGatherSeconds; }
-  /** Negative tests only: keep the object out of the tracer (no occlusion, no reflection). */
-  vtkSetMacro(IgnoreObjectForTesting, bool);
-  vtkGetMacro(IgnoreObjectForTesting, bool);
+  double GetLastObjectSeconds() const;
+  double GetLastGatherSeconds() const;
   ///@}
 
   ///@{
@@ -272,33 +228,10 @@ public:
   int GetShadowAreaSamples() const;
   void SetShadowPCFKernel(int texels); // odd, clamped to [1, 9]
   int GetShadowPCFKernel() const;
-  /** Negative tests only: false shadows receivers behind the light or facing away from it. */
-  void SetShadowBackProjectionRemoval(bool remove);
-  bool GetShadowBackProjectionRemoval() const;
-  /**
-   * Testing (until the movable object is set through the actor): the object that casts
-   * shadows, a triangle mesh in the field's unit sphere (mesolight::vlf::TransformMesh with
-   * WorldToUnitSphere), copied; nullptr removes it.
-   */
-  void SetShadowCasterForTesting(const mesolight::vlf::ObjectMesh* unitMesh);
-  /** The maps of the last frame (nullptr when no object casts shadows). */
-  const mesolight::vlf::ObjectShadows* GetObjectShadows() const;
   /** Why the object casts no shadow ("" when it does or there is no object). */
   std::string GetShadowProblem() const;
   /** CPU seconds of the last rebuild of the maps (placement and fill). */
   double GetLastShadowSeconds() const;
-  struct ShadowState;
-  ShadowState* GetShadowState();
-  ///@}
-
-  ///@{
-  /** Used by vtkLightFieldMapper while drawing. */
-  struct Internals;
-  Internals* GetInternals() { return this->Impl.get(); }
-  /** Updates the field (filter input), atlas and screen image for the renderer's view; false
-   * when there is nothing to draw in a radiance mode (no field). */
-  bool PrepareFrame(vtkRenderer* renderer);
-  void SetLastUploadSeconds(double s) { this->LastUploadSeconds = s; }
   ///@}
 
 protected:
@@ -309,47 +242,37 @@ private:
   vtkLightFieldActor(const vtkLightFieldActor&) = delete;
   void operator=(const vtkLightFieldActor&) = delete;
 
-  bool UseField(const mesolight::vlf::LightField* field);
+  // The core objects (field, shaded object, maps) and the frame for code built in this tree
+  // (vtkLightFieldActorCore.h), and the negative tests' hooks (vtkLightFieldActorTesting.h):
+  // neither header is installed.
+  friend class vtkLightFieldActorCore;
+  friend class vtkLightFieldActorTesting;
+
   void RefreshField(); // updates the filter, takes its field when it changed
-  mesolight::vlf::TraceOptions CurrentTraceOptions() const;
-  // Identifies the trace options, the object's state and its shadows (in
-  // vtkLightFieldActorShadows.cxx).
-  std::uint64_t TraceKey() const;
+  // Updates the field, the object, its shadows and the screen image for the renderer's view;
+  // false when there is nothing to draw in a radiance mode (no field).
+  bool PrepareFrame(vtkRenderer* renderer);
+  // The screen image of each radiance mode; each returns the pixels given a value.
+  std::size_t ShadeRaytrace();
+  std::size_t ShadeMirrors(bool objectMoved);
   // Starts the worker on the last view's reflections unless it has them or is on them.
   void TraceAtRest();
-
-  // Shadows of the movable object: the caster (unit sphere) changed or went away; the maps
-  // are rebuilt by PrepareShadows at the next frame. ApplyShadowsToScreen darkens raytrace
-  // mode's diffuse pixels.
-  void UpdateObjectShadows(const mesolight::vlf::ObjectMesh& unitMesh);
-  void ClearObjectShadows();
-  void PrepareShadows();
-  void ApplyShadowsToScreen();
-  ShadowState& Shadows();
-  std::unique_ptr<ShadowState> ShadowData;
+  // Identifies the trace options, the object's state and its shadows.
+  std::uint64_t TraceKey() const;
 
   int RenderMode = Progressive;
   double Exposure = 1.0;
   int ToneMap = Clamp;
   int MaximumReflectionDepth = 8;
-  bool FlipAtlasForTesting = false;
-  bool OverwriteCompositeForTesting = false;
-  int ReflectionBouncesShortForTesting = 0;
   int ObjectSubdivision = 0;
   int ObjectGatherDirections = AllDirections;
   int ObjectIrradianceVolume = 0;
-  bool IgnoreObjectForTesting = false;
-  std::string LastObjectProblem;
-  double LastObjectSeconds = 0.0;
-  double LastGatherSeconds = 0.0;
   bool LastFrameConverged = false;
   double LastSpecularSeconds = 0.0;
   double LastUploadSeconds = 0.0;
   vtkIdType LastScreenPixels = 0;
   std::string LastError;
-  vtkSmartPointer<vtkVirtualLightField> Filter;
-  vtkMTimeType FilterUpstreamTime = 0; // the filter's upstream modification at its last update
-  vtkMTimeType FilterOutputTime = 0;   // its output's modification when its field was taken
+  struct Internals; // the parts the actor is composed of (vtkLightFieldActorInternals.h)
   std::unique_ptr<Internals> Impl;
 };
 

@@ -2,10 +2,12 @@
 #include "vtkLightFieldMapper.h"
 
 #include "vtkLightFieldActor.h"
+#include "vtkLightFieldActorCore.h"
 #include "vtkLightFieldActorInternals.h"
-#include "vtkLightFieldActorShadows.h"
 #include "vtkLightFieldFS.h"
 #include "vtkLightFieldShadowFS.h"
+
+#include "TextureAtlas.h"
 
 #include "vtkDataObject.h"
 #include "vtkObjectFactory.h"
@@ -42,22 +44,22 @@ vtkLightFieldMapper::~vtkLightFieldMapper() = default;
 bool vtkLightFieldMapper::UploadAtlas(vtkRenderer* ren, vtkActor* act)
 {
   vtkLightFieldActor* actor = vtkLightFieldActor::SafeDownCast(act);
-  vtkLightFieldActor::Internals* impl = actor->GetInternals();
+  const auto& impl = vtkLightFieldActorCore::GetInternals(actor);
   vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
-  if (!impl->Atlas || !window)
+  if (!impl.Scene.GetAtlas() || !window)
   {
     return false;
   }
   if (this->AtlasTexture && this->AtlasTexture->GetHandle() != 0 &&
-    this->AtlasTexture->GetContext() == window && this->AtlasVersion == impl->AtlasVersion &&
-    this->AtlasFlipped == actor->GetFlipAtlasForTesting())
+    this->AtlasTexture->GetContext() == window &&
+    this->AtlasVersion == impl.Scene.GetAtlasVersion() && this->AtlasFlipped == impl.FlipAtlas)
   {
     return true; // uploaded once per field
   }
-  const mesolight::vlf::TextureAtlas& atlas = *impl->Atlas;
+  const mesolight::vlf::TextureAtlas& atlas = *impl.Scene.GetAtlas();
   std::vector<float> flipped;
   const float* data = atlas.Pixels().data();
-  if (actor->GetFlipAtlasForTesting())
+  if (impl.FlipAtlas)
   {
     flipped = atlas.FlippedPixels();
     data = flipped.data();
@@ -68,8 +70,8 @@ bool vtkLightFieldMapper::UploadAtlas(vtkRenderer* ren, vtkActor* act)
                   << " texture atlas");
     return false;
   }
-  this->AtlasVersion = impl->AtlasVersion;
-  this->AtlasFlipped = actor->GetFlipAtlasForTesting();
+  this->AtlasVersion = impl.Scene.GetAtlasVersion();
+  this->AtlasFlipped = impl.FlipAtlas;
   return true;
 }
 
@@ -77,7 +79,7 @@ bool vtkLightFieldMapper::UploadAtlas(vtkRenderer* ren, vtkActor* act)
 bool vtkLightFieldMapper::UploadScreen(vtkRenderer* ren, vtkActor* act)
 {
   vtkLightFieldActor* actor = vtkLightFieldActor::SafeDownCast(act);
-  vtkLightFieldActor::Internals* impl = actor->GetInternals();
+  auto& screen = vtkLightFieldActorCore::GetInternals(actor).Screen;
   vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
   if (!window)
   {
@@ -92,22 +94,23 @@ bool vtkLightFieldMapper::UploadScreen(vtkRenderer* ren, vtkActor* act)
   this->ScreenTexture->SetMagnificationFilter(vtkTextureObject::Nearest);
   this->ScreenTexture->SetWrapS(vtkTextureObject::ClampToEdge);
   this->ScreenTexture->SetWrapT(vtkTextureObject::ClampToEdge);
+  const mesolight::vlf::PixelRect& rect = screen.GetRect();
   const bool have =
-    impl->ScreenValid && !impl->Rect.Empty() && impl->Screen.size() == impl->Rect.Pixels() * 4;
+    screen.IsValid() && !rect.Empty() && screen.GetPixels().size() == rect.Pixels() * 4;
   float none[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
-  const unsigned int w = have ? static_cast<unsigned int>(impl->Rect.Width()) : 1u;
-  const unsigned int h = have ? static_cast<unsigned int>(impl->Rect.Height()) : 1u;
-  float* data = have ? impl->Screen.data() : none;
+  const unsigned int w = have ? static_cast<unsigned int>(rect.Width()) : 1u;
+  const unsigned int h = have ? static_cast<unsigned int>(rect.Height()) : 1u;
+  float* data = have ? screen.GetPixels().data() : none;
   if (!this->ScreenTexture->Create2DFromRaw(w, h, 4, VTK_FLOAT, data))
   {
     vtkErrorMacro(<< "could not upload the " << w << "x" << h << " screen-space radiance texture");
     return false;
   }
-  this->ScreenOrigin[0] = have ? impl->Origin[0] : 0;
-  this->ScreenOrigin[1] = have ? impl->Origin[1] : 0;
+  this->ScreenOrigin[0] = have ? screen.GetOrigin()[0] : 0;
+  this->ScreenOrigin[1] = have ? screen.GetOrigin()[1] : 0;
   this->ScreenSize[0] = have ? static_cast<int>(w) : 0;
   this->ScreenSize[1] = have ? static_cast<int>(h) : 0;
-  this->AllScreen = impl->AllScreen;
+  this->AllScreen = screen.IsAllScreen();
   return true;
 }
 
@@ -116,15 +119,16 @@ void vtkLightFieldMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* act)
 {
   this->Radiance = false;
   vtkLightFieldActor* actor = vtkLightFieldActor::SafeDownCast(act);
-  if (actor && actor->PrepareFrame(ren) && actor->GetRenderMode() != vtkLightFieldActor::Geometry)
+  if (actor && vtkLightFieldActorCore::PrepareFrame(actor, ren) &&
+    actor->GetRenderMode() != vtkLightFieldActor::Geometry)
   {
     const auto start = std::chrono::steady_clock::now();
     this->Radiance = this->UploadAtlas(ren, act) && this->UploadScreen(ren, act);
-    actor->SetLastUploadSeconds(
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    vtkLightFieldActorCore::SetLastUploadSeconds(
+      actor, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     this->Exposure = static_cast<float>(actor->GetExposure());
     this->ToneMap = actor->GetToneMap();
-    this->Overwrite = actor->GetOverwriteCompositeForTesting();
+    this->Overwrite = vtkLightFieldActorCore::GetInternals(actor).OverwriteComposite;
   }
   // Geometry mode colours by Kd; the radiance modes by nothing VTK knows.
   if (this->ScalarVisibility == (this->Radiance ? 1 : 0))
@@ -303,24 +307,26 @@ void vtkLightFieldMapper::ReleaseGraphicsResources(vtkWindow* window)
 bool vtkLightFieldMapper::UploadShadows(vtkRenderer* ren, vtkActor* act)
 {
   vtkLightFieldActor* actor = vtkLightFieldActor::SafeDownCast(act);
-  vtkLightFieldActor::ShadowState* state = actor ? actor->GetShadowState() : nullptr;
+  const vtkLightFieldObjectShadows* shadows =
+    actor ? &vtkLightFieldActorCore::GetInternals(actor).Shadows : nullptr;
   vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
-  if (!state || !state->Active() || !window)
+  if (!shadows || !shadows->Active() || !window)
   {
     return false;
   }
   if (this->ShadowTexture && this->ShadowTexture->GetHandle() != 0 &&
-    this->ShadowTexture->GetContext() == window && this->ShadowVersion == state->Version)
+    this->ShadowTexture->GetContext() == window && this->ShadowVersion == shadows->GetVersion())
   {
     return true; // uploaded once per rebuild of the maps
   }
-  if (!UploadShadowTexture(this->ShadowTexture, window, state->Gpu))
+  const mesolight::vlf::ShadowGpuData& gpu = shadows->GetGpu();
+  if (!UploadShadowTexture(this->ShadowTexture, window, gpu))
   {
-    vtkErrorMacro(<< "could not upload the " << state->Gpu.Width << "x" << state->Gpu.Height
+    vtkErrorMacro(<< "could not upload the " << gpu.Width << "x" << gpu.Height
                   << " shadow map texture: the object casts no shadow");
     return false;
   }
-  this->ShadowVersion = state->Version;
+  this->ShadowVersion = shadows->GetVersion();
   return true;
 }
 
@@ -328,8 +334,9 @@ bool vtkLightFieldMapper::UploadShadows(vtkRenderer* ren, vtkActor* act)
 void vtkLightFieldMapper::SetShadowUniforms(vtkShaderProgram* program, vtkActor* act)
 {
   vtkLightFieldActor* actor = vtkLightFieldActor::SafeDownCast(act);
-  vtkLightFieldActor::ShadowState* state = actor ? actor->GetShadowState() : nullptr;
-  SetShadowUniforms(program, this->Shadowing && state ? &state->Gpu : nullptr,
+  const vtkLightFieldObjectShadows* shadows =
+    actor ? &vtkLightFieldActorCore::GetInternals(actor).Shadows : nullptr;
+  SetShadowUniforms(program, this->Shadowing && shadows ? &shadows->GetGpu() : nullptr,
     this->Shadowing ? this->ShadowTexture->GetTextureUnit() : this->AtlasTexture->GetTextureUnit());
 }
 

@@ -2,6 +2,7 @@
 #include "vtkLightFieldObjectMapper.h"
 
 #include "vtkLightFieldActor.h"
+#include "vtkLightFieldActorCore.h"
 
 #include "EmitterLights.h"
 #include "ObjectGatherer.h"
@@ -129,8 +130,8 @@ bool vtkLightFieldObjectMapper::UpdateShadedMesh(vtkActor* act)
   {
     return false;
   }
-  const vlf::ShadedObject* shaded = scene->GetShadedObject();
-  const vlf::LightField* field = scene->GetLightField();
+  const vlf::ShadedObject* shaded = vtkLightFieldActorCore::GetShadedObject(scene);
+  const vlf::LightField* field = vtkLightFieldActorCore::GetLightField(scene);
   if (!shaded || !field)
   {
     return false;
@@ -147,7 +148,7 @@ bool vtkLightFieldObjectMapper::UpdateShadedMesh(vtkActor* act)
   }
   const auto start = std::chrono::steady_clock::now();
   const vlf::LightApproximation* lights =
-    this->Shading == Lights ? scene->GetEmitterLights() : nullptr;
+    this->Shading == Lights ? vtkLightFieldActorCore::GetEmitterLights(scene) : nullptr;
   if (lights && lights->Lights.empty() && !this->WarnedNoEmitters)
   {
     vtkWarningMacro(<< "the light field has no emitters: the object's lights shading shows only "

@@ -447,7 +447,7 @@ const ShadedObject& ObjectGatherer::Gather(
   // The object's lines, read once when enough points need them (a few points after a small
   // move are cheaper through the lookup). The occlusion switch of the negative tests uses the
   // lookup.
-  LineCache lines;
+  ObjectLineCache lines;
   if (options.SceneOcclusion && !todo.empty() && !settings.Volume)
   {
     glm::vec3 lower(std::numeric_limits<float>::max()), upper(-lower);

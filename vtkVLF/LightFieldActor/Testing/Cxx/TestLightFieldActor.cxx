@@ -40,15 +40,15 @@ void ModesAgainstPathTracer(std::size_t directions)
   Print(directions, "coherent", coherent);
 
   // Negative tests: each must visibly fail.
-  viewer.Actor->SetFlipAtlasForTesting(true);
+  vtkLightFieldActorTesting::SetFlipAtlas(viewer.Actor, true);
   const ModeErrors flipped = Measure(viewer.Render(vtkLightFieldActor::Coherent), ref);
-  viewer.Actor->SetFlipAtlasForTesting(false);
-  viewer.Actor->SetOverwriteCompositeForTesting(true);
+  vtkLightFieldActorTesting::SetFlipAtlas(viewer.Actor, false);
+  vtkLightFieldActorTesting::SetOverwriteComposite(viewer.Actor, true);
   const ModeErrors overwrite = Measure(viewer.Render(vtkLightFieldActor::Coherent), ref);
-  viewer.Actor->SetOverwriteCompositeForTesting(false);
-  viewer.Actor->SetReflectionBouncesShortForTesting(1);
+  vtkLightFieldActorTesting::SetOverwriteComposite(viewer.Actor, false);
+  vtkLightFieldActorTesting::SetReflectionBouncesShort(viewer.Actor, 1);
   const ModeErrors shortBounce = Measure(viewer.Render(vtkLightFieldActor::Coherent), ref);
-  viewer.Actor->SetReflectionBouncesShortForTesting(0);
+  vtkLightFieldActorTesting::SetReflectionBouncesShort(viewer.Actor, 0);
   Print(directions, "neg:atlas-flipped", flipped);
   Print(directions, "neg:no-alpha", overwrite);
   Print(directions, "neg:one-short", shortBounce);

@@ -64,11 +64,11 @@ TEST(Walkthrough, DiffuseBoxInFrontOfMirrorHidesExactlyItsPixels)
     viewer.Actor->WaitForTracedReflections(60.0);
     const Images full = viewer.Render(mode);
     Dump(std::string("hides-") + vtkLightFieldActor::GetRenderModeAsString(mode), full.Radiance);
-    viewer.Actor->SetReflectionBouncesShortForTesting(1);
+    vtkLightFieldActorTesting::SetReflectionBouncesShort(viewer.Actor, 1);
     viewer.Window->Render();
     viewer.Actor->WaitForTracedReflections(60.0);
     const Images cut = viewer.Render(mode);
-    viewer.Actor->SetReflectionBouncesShortForTesting(0);
+    vtkLightFieldActorTesting::SetReflectionBouncesShort(viewer.Actor, 0);
     std::size_t drawn = 0, both = 0, drawnOffMirror = 0;
     for (std::size_t i = 0; i < classes.size(); ++i)
     {
@@ -263,8 +263,8 @@ TEST(Walkthrough, FieldFromTheVirtualLightFieldFilter)
   Viewer viewer(any);
   viewer.Actor->SetLightFieldFilter(filter);
   const Images fromFilter = viewer.Render(vtkLightFieldActor::Progressive);
-  ASSERT_NE(viewer.Actor->GetLightField(), nullptr);
-  EXPECT_EQ(viewer.Actor->GetLightField(), filter->GetLightField());
+  ASSERT_NE(vtkLightFieldActorCore::GetLightField(viewer.Actor), nullptr);
+  EXPECT_EQ(vtkLightFieldActorCore::GetLightField(viewer.Actor), filter->GetLightField());
   std::size_t lit = 0;
   for (const glm::vec3& d : fromFilter.Display)
   {
@@ -273,7 +273,7 @@ TEST(Walkthrough, FieldFromTheVirtualLightFieldFilter)
   std::cout << "field from the filter: " << lit << " of " << fromFilter.Display.size()
             << " pixels lit\n";
   EXPECT_GT(lit, fromFilter.Display.size() * 3 / 4);
-  viewer.Actor->SetLightField(filter->GetLightField());
+  vtkLightFieldActorCore::SetLightField(viewer.Actor, filter->GetLightField());
   const Images direct = viewer.Render(vtkLightFieldActor::Progressive);
   EXPECT_EQ(direct.Display, fromFilter.Display);
 
@@ -287,7 +287,7 @@ TEST(Walkthrough, FieldFromTheVirtualLightFieldFilter)
   filter->SetIterations(3);
   viewer.Render(vtkLightFieldActor::Progressive);
   // (The new field may reuse the old one's address: the actor must notice all the same.)
-  EXPECT_EQ(viewer.Actor->GetLightField()->IterationsDone, 3);
+  EXPECT_EQ(vtkLightFieldActorCore::GetLightField(viewer.Actor)->IterationsDone, 3);
   EXPECT_TRUE(viewer.Actor->HasMirrors());
   ASSERT_TRUE(viewer.Actor->WaitForTracedReflections(60.0));
   viewer.Render(vtkLightFieldActor::Progressive);
@@ -471,7 +471,7 @@ TEST(Walkthrough, BadInputIsReportedNotCrashed)
   window->AddRenderer(renderer);
   renderer->AddActor(actor);
   window->Render();
-  actor->SetLightField(&MirrorCornellField(513));
+  vtkLightFieldActorCore::SetLightField(actor, &MirrorCornellField(513));
   for (int mode = vtkLightFieldActor::Geometry; mode <= vtkLightFieldActor::Coherent; ++mode)
   {
     actor->SetRenderMode(mode);
@@ -488,7 +488,7 @@ TEST(Walkthrough, BadInputIsReportedNotCrashed)
   EXPECT_NE(log.Text.find("no mirror surfaces"), std::string::npos) << log.Text;
   // Camera inside the tall block: back faces everywhere (a warning, black pixels).
   log.Text.clear();
-  actor->SetLightField(&MirrorCornellField(513));
+  vtkLightFieldActorCore::SetLightField(actor, &MirrorCornellField(513));
   renderer->GetActiveCamera()->SetPosition(370.0, 150.0, 350.0);
   renderer->GetActiveCamera()->SetFocalPoint(370.0, 150.0, 600.0);
   renderer->ResetCameraClippingRange();

@@ -148,13 +148,15 @@ struct ObjectViewer
   // Alpha of the actor's screen image at a viewport pixel (0 outside its rectangle).
   float ScreenAlpha(int x, int y)
   {
-    const vtkLightFieldActor::Internals* impl = this->View.Actor->GetInternals();
-    const vlf::PixelRect& r = impl->Rect;
-    if (!impl->ScreenValid || x < r.X0 || y < r.Y0 || x >= r.X1 || y >= r.Y1)
+    vtkLightFieldScreenImage& screen =
+      vtkLightFieldActorCore::GetInternals(this->View.Actor).Screen;
+    const vlf::PixelRect& r = screen.GetRect();
+    if (!screen.IsValid() || x < r.X0 || y < r.Y0 || x >= r.X1 || y >= r.Y1)
     {
       return 0.0f;
     }
-    return impl->Screen[4 * (static_cast<std::size_t>(y - r.Y0) * r.Width() + (x - r.X0)) + 3];
+    return screen
+      .GetPixels()[4 * (static_cast<std::size_t>(y - r.Y0) * r.Width() + (x - r.X0)) + 3];
   }
 };
 
@@ -219,7 +221,7 @@ TEST(LightFieldObject, OcclusionAndReflectionMasksInEveryMode)
     vlf::WalkthroughTracer(field).ClassifyView(CornellView(field));
   for (const bool ignore : { false, true })
   {
-    viewer.View.Actor->SetIgnoreObjectForTesting(ignore);
+    vtkLightFieldActorTesting::SetIgnoreObject(viewer.View.Actor, ignore);
     for (const glm::vec3& place : { AboveBlock, BeforeMirror })
     {
       viewer.Place(place);
@@ -407,7 +409,7 @@ TEST(LightFieldObject, ShadingLevelsShareOneGatherAndKeepTheInput)
     }
   }
   // One gather for the frame, shared: the actor's result is what the gather mode drew.
-  const vlf::ShadedObject* shaded = viewer.View.Actor->GetShadedObject();
+  const vlf::ShadedObject* shaded = vtkLightFieldActorCore::GetShadedObject(viewer.View.Actor);
   ASSERT_NE(shaded, nullptr);
   EXPECT_EQ(static_cast<std::size_t>(viewer.Mapper->GetShadedMesh()->GetNumberOfPoints()),
     shaded->Mesh.Points.size());
@@ -433,13 +435,13 @@ TEST(LightFieldObject, WeakReferencesNoCycle)
     EXPECT_EQ(viewer.Actor->GetReferenceCount(), before);
     viewer.Renderer->AddActor(object);
     viewer.Render(vtkLightFieldActor::Coherent);
-    EXPECT_NE(viewer.Actor->GetShadedObject(), nullptr);
+    EXPECT_NE(vtkLightFieldActorCore::GetShadedObject(viewer.Actor), nullptr);
     viewer.Renderer->RemoveActor(object);
   }
   // The object is gone: the scene actor forgets it and renders on.
   EXPECT_EQ(viewer.Actor->GetMovableObject(), nullptr);
   viewer.Render(vtkLightFieldActor::Coherent);
-  EXPECT_EQ(viewer.Actor->GetShadedObject(), nullptr);
+  EXPECT_EQ(vtkLightFieldActorCore::GetShadedObject(viewer.Actor), nullptr);
   EXPECT_EQ(viewer.Actor->GetReferenceCount(), before);
 }
 
@@ -484,14 +486,14 @@ TEST(LightFieldObject, BadObjectsAreReportedNotCrashed)
   viewer.View.Render(vtkLightFieldActor::Raytrace);
   EXPECT_NE(actor->GetLastObjectProblem().find("no triangles"), std::string::npos)
     << actor->GetLastObjectProblem();
-  EXPECT_EQ(actor->GetShadedObject(), nullptr);
+  EXPECT_EQ(vtkLightFieldActorCore::GetShadedObject(actor), nullptr);
   viewer.Mapper->SetInputData(viewer.Input);
   viewer.Object->SetScale(0.0);
   viewer.View.Render(vtkLightFieldActor::Progressive);
   EXPECT_FALSE(actor->GetLastObjectProblem().empty());
   viewer.Object->SetScale(110.0);
   viewer.View.Render(vtkLightFieldActor::Coherent);
-  EXPECT_NE(actor->GetShadedObject(), nullptr);
+  EXPECT_NE(vtkLightFieldActorCore::GetShadedObject(actor), nullptr);
   // The scene actor as its own object is refused.
   actor->SetMovableObject(actor);
   EXPECT_EQ(actor->GetMovableObject(), viewer.Object.GetPointer());

@@ -71,21 +71,21 @@ TEST(ShadowMapGL, GpuAndRaytraceDarkeningMatchCore)
     vlf::TransformMesh(vlf::TransformMesh(vlf::MakeCube(90.0f),
                          glm::translate(glm::mat4(1.0f), glm::vec3(400.0f, 120.0f, 150.0f))),
       vlf::WorldToUnitSphere(field));
-  viewer.Actor->SetShadowCasterForTesting(&cube);
+  vtkLightFieldActorTesting::SetShadowCaster(viewer.Actor, &cube);
   viewer.Actor->SetShadowMapResolution(256);
 
   for (const int renderMode : { vtkLightFieldActor::Progressive, vtkLightFieldActor::Raytrace })
   {
     viewer.Actor->SetShadowMode(vtkLightFieldActor::ShadowNone);
     const Images unshadowed = viewer.Render(renderMode);
-    EXPECT_EQ(viewer.Actor->GetObjectShadows(), nullptr);
+    EXPECT_EQ(vtkLightFieldActorCore::GetObjectShadows(viewer.Actor), nullptr);
     for (const int mode : { vtkLightFieldActor::ShadowBlack, vtkLightFieldActor::ShadowBlend,
            vtkLightFieldActor::ShadowField, vtkLightFieldActor::ShadowPCF,
            vtkLightFieldActor::ShadowSoft })
     {
       viewer.Actor->SetShadowMode(mode);
       const Images shadowed = viewer.Render(renderMode);
-      const vlf::ObjectShadows* shadows = viewer.Actor->GetObjectShadows();
+      const vlf::ObjectShadows* shadows = vtkLightFieldActorCore::GetObjectShadows(viewer.Actor);
       ASSERT_NE(shadows, nullptr) << viewer.Actor->GetShadowProblem();
       std::size_t agree = 0, darkened = 0, agreeWithout = 0;
       double levels = 0.0;
@@ -123,13 +123,13 @@ TEST(ShadowMapGL, GpuAndRaytraceDarkeningMatchCore)
   // A broken caster is named, casts nothing and crashes nothing; removed: no shadow.
   vlf::ObjectMesh broken = cube;
   broken.Points[0].x = std::nanf("");
-  viewer.Actor->SetShadowCasterForTesting(&broken);
+  vtkLightFieldActorTesting::SetShadowCaster(viewer.Actor, &broken);
   viewer.Render(vtkLightFieldActor::Progressive);
-  EXPECT_EQ(viewer.Actor->GetObjectShadows(), nullptr);
+  EXPECT_EQ(vtkLightFieldActorCore::GetObjectShadows(viewer.Actor), nullptr);
   EXPECT_NE(viewer.Actor->GetShadowProblem().find("finite"), std::string::npos);
-  viewer.Actor->SetShadowCasterForTesting(nullptr);
+  vtkLightFieldActorTesting::SetShadowCaster(viewer.Actor, nullptr);
   viewer.Render(vtkLightFieldActor::Progressive);
-  EXPECT_EQ(viewer.Actor->GetObjectShadows(), nullptr);
+  EXPECT_EQ(vtkLightFieldActorCore::GetObjectShadows(viewer.Actor), nullptr);
   EXPECT_EQ(viewer.Actor->GetShadowProblem(), "");
 }
 
@@ -145,7 +145,7 @@ TEST(ShadowMapGL, ShadowSeenInTheMirrorMatchesTheDirectlySeenFloor)
     vlf::TransformMesh(vlf::TransformMesh(vlf::MakeCube(90.0f),
                          glm::translate(glm::mat4(1.0f), glm::vec3(400.0f, 130.0f, 140.0f))),
       vlf::WorldToUnitSphere(field));
-  viewer.Actor->SetShadowCasterForTesting(&cube);
+  vtkLightFieldActorTesting::SetShadowCaster(viewer.Actor, &cube);
   // The floor under the cube seen directly (the GPU's darkening), with and without the shadow.
   const vlf::ViewFrame floorView = viewer.SetCamera(
     field, glm::vec3(440.0f, 350.0f, -150.0f), glm::vec3(440.0f, 0.0f, 120.0f), 40.0f);
@@ -254,7 +254,7 @@ TEST(ShadowMapGL, FrameCost)
     vlf::TransformMesh(vlf::TransformMesh(vlf::MakeCube(90.0f),
                          glm::translate(glm::mat4(1.0f), glm::vec3(400.0f, 120.0f, 150.0f))),
       vlf::WorldToUnitSphere(field));
-  viewer.Actor->SetShadowCasterForTesting(&cube);
+  vtkLightFieldActorTesting::SetShadowCaster(viewer.Actor, &cube);
   viewer.Actor->SetRenderModeToProgressive();
   auto frameSeconds = [&]()
   {

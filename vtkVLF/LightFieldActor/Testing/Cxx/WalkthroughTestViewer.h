@@ -6,6 +6,8 @@
 #define WalkthroughTestViewer_h
 
 #include "vtkLightFieldActor.h"
+#include "vtkLightFieldActorCore.h"    // the field lent, the core objects read
+#include "vtkLightFieldActorTesting.h" // the negative tests' hooks
 #include "vtkVersionMacros.h"
 #if VTK_VERSION_NUMBER < VTK_VERSION_CHECK(9, 3, 0)
 #include "vtkCompositeLightFieldMapper.h"
@@ -91,7 +93,7 @@ struct Viewer
     this->Window->SetSize(Size, Size);
     this->Window->AddRenderer(this->Renderer);
     this->Renderer->SetBackground(0.0, 0.0, 0.0);
-    this->Actor->SetLightField(&field);
+    vtkLightFieldActorCore::SetLightField(this->Actor, &field);
     this->Actor->SetExposure(Exposure);
     this->Renderer->AddActor(this->Actor);
     const CornellCamera c;

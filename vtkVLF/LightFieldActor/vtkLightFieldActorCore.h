@@ -1,0 +1,53 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @class   vtkLightFieldActorCore
+ * @brief   vtkLightFieldActor's mesolight::vlf core objects, for code built in this tree
+ *
+ * Private to Mesolight::LightFieldActor (header not installed: the core types' headers are not
+ * either). The mesolight tool, the tests and the module's mappers lend the actor a field and read
+ * what it computed: the field, the movable object as gathered, the emitters' point lights, the
+ * shadow maps; vtkLightFieldMapper prepares each frame and reads its parts here.
+ */
+#ifndef vtkLightFieldActorCore_h
+#define vtkLightFieldActorCore_h
+
+#include "vtkLightFieldActor.h"
+
+namespace mesolight
+{
+namespace vlf
+{
+class LightField;
+class ObjectShadows;
+struct LightApproximation;
+struct ShadedObject;
+}
+}
+class vtkRenderer;
+
+class vtkLightFieldActorCore
+{
+public:
+  /**
+   * The field to show, borrowed: it must outlive the actor's use of it (e.g. held by a
+   * vtkVirtualLightField). nullptr clears it.
+   */
+  static void SetLightField(vtkLightFieldActor* actor, const mesolight::vlf::LightField* field);
+  static const mesolight::vlf::LightField* GetLightField(const vtkLightFieldActor* actor);
+  /** The object as last gathered (unit-sphere mesh with per-point radiance), or nullptr. */
+  static const mesolight::vlf::ShadedObject* GetShadedObject(const vtkLightFieldActor* actor);
+  /** Point lights estimated from the field's emitters (computed once per field), or nullptr. */
+  static const mesolight::vlf::LightApproximation* GetEmitterLights(vtkLightFieldActor* actor);
+  /** The shadow maps of the last frame (nullptr when no object casts shadows). */
+  static const mesolight::vlf::ObjectShadows* GetObjectShadows(const vtkLightFieldActor* actor);
+
+  ///@{
+  /** For vtkLightFieldMapper: prepares the frame (false when a radiance mode has nothing to
+   * draw), then reads its parts; reports the upload's seconds. */
+  static bool PrepareFrame(vtkLightFieldActor* actor, vtkRenderer* renderer);
+  static vtkLightFieldActor::Internals& GetInternals(vtkLightFieldActor* actor);
+  static void SetLastUploadSeconds(vtkLightFieldActor* actor, double seconds);
+  ///@}
+};
+
+#endif
