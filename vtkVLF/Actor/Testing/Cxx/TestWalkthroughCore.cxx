@@ -226,7 +226,7 @@ TEST(LightFieldActorCore, DisplayTransform)
 {
   EXPECT_FLOAT_EQ(ToSRGB(0.002f), 12.92f * 0.002f);
   EXPECT_NEAR(ToSRGB(0.5), 1.055 * std::pow(0.5, 1.0 / 2.4) - 0.055, 1e-15);
-  EXPECT_EQ(ToSRGB(2.0f), 1.0f);
+  EXPECT_FLOAT_EQ(ToSRGB(2.0f), 1.0f); // 1.055 - 0.055: 1 within rounding
   EXPECT_EQ(ToSRGB(-1.0), 0.0);
   for (double v : { 0.0, 0.001, 0.04, 0.2, 0.7, 1.0 })
   {
