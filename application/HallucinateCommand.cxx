@@ -8,6 +8,7 @@
 #include "DepthHallucination.h"
 #include "HallucinationReference.h"
 #include "ProceduralHeightFields.h"
+#include "VTKMessage.h"
 #include "vtkDepthHallucinationFilter.h"
 #include "vtkOIIOImageReader.h"
 #include "vtkOIIOImageWriter.h"
@@ -40,17 +41,7 @@ struct ErrorText : public vtkCommand
   static ErrorText* New() { return new ErrorText; }
   void Execute(vtkObject*, unsigned long, void* data) override
   {
-    std::string text = data ? static_cast<const char*>(data) : "";
-    // vtkErrorMacro text is "ERROR: In FILE, line N\nCLASS (ADDRESS): message": keep the message.
-    const std::size_t colon = text.find("): ");
-    if (colon != std::string::npos)
-    {
-      text = text.substr(colon + 3);
-    }
-    while (!text.empty() && (text.back() == '\n' || text.back() == ' '))
-    {
-      text.pop_back();
-    }
+    const std::string text = CleanVTKMessage(data ? static_cast<const char*>(data) : "");
     if (this->Text.empty())
     {
       this->Text = text;

@@ -3,6 +3,7 @@
 
 #include "CommandLine.h"
 #include "CornellRegions.h"
+#include "DisplayTransform.h"
 #include "OutputFile.h"
 #include "ReliefScene.h" // HasDisplay
 #include "Timing.h"
@@ -52,9 +53,7 @@ vtkSmartPointer<vtkImageData> ToDisplayBytes(const RgbImage& image)
   {
     const float linear =
       std::min(1.0f, std::max(0.0f, std::isfinite(image.Rgb[v]) ? image.Rgb[v] : 0.0f));
-    const float encoded =
-      linear <= 0.0031308f ? 12.92f * linear : 1.055f * std::pow(linear, 1.0f / 2.4f) - 0.055f;
-    out[v] = static_cast<unsigned char>(encoded * 255.0f + 0.5f);
+    out[v] = static_cast<unsigned char>(ToSRGB(linear) * 255.0f + 0.5f);
   }
   return bytes;
 }

@@ -5,6 +5,7 @@
 #include "ChartPlot.h"
 #include "CommandLine.h"
 #include "CornellRegions.h"
+#include "DisplayTransform.h"
 #include "LightFieldCamera.h"
 #include "LightFieldViewCommand.h"
 #include "OutputFile.h"
@@ -351,6 +352,8 @@ int Render(const std::vector<std::string>& args)
     const vlf::Lookup lookup(*field);
     std::vector<unsigned char> pixels(static_cast<std::size_t>(width) * height * 3);
     RgbImage linear(width, height);
+    // Exposure, clamp and sRGB: the light field actor's default display (vtkLightFieldActor).
+    const DisplayTransform display{ exposure, ToneMapOperator::Clamp, true };
     const Clock::time_point start = Clock::now();
     ParallelFor(0, static_cast<std::size_t>(height), 1,
       [&](std::size_t r0, std::size_t r1)
@@ -389,10 +392,8 @@ int Render(const std::vector<std::string>& args)
             unsigned char* rgb = &pixels[(row * static_cast<std::size_t>(width) + column) * 3];
             for (int c = 0; c < 3; ++c)
             {
-              const double v = std::max(0.0, std::min(1.0, exposure * radiance[c]));
-              const double srgb =
-                v <= 0.0031308 ? 12.92 * v : 1.055 * std::pow(v, 1.0 / 2.4) - 0.055;
-              rgb[c] = static_cast<unsigned char>(std::lround(255.0 * srgb));
+              rgb[c] = static_cast<unsigned char>(
+                std::lround(255.0 * ApplyDisplayTransform<double>(display, radiance[c])));
             }
           }
         }

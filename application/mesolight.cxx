@@ -16,6 +16,7 @@
 #include "ReliefSweep.h"
 #include "RenderCommand.h"
 #include "TraceCommand.h"
+#include "VTKMessage.h"
 #include "VlfCommand.h"
 #include "WalkthroughBenchmark.h"
 
@@ -47,17 +48,7 @@ public:
     {
       return;
     }
-    // Drop VTK's "ERROR: In <source file>, line N" prefix line; keep what it says.
-    const size_t firstLineEnd = message.find('\n');
-    const bool hasLocation =
-      message.compare(0, 10, "ERROR: In ") == 0 || message.compare(0, 12, "Warning: In ") == 0;
-    std::string body =
-      hasLocation && firstLineEnd != std::string::npos ? message.substr(firstLineEnd + 1) : message;
-    while (!body.empty() && (body.back() == '\n' || body.back() == ' '))
-    {
-      body.pop_back();
-    }
-    std::cerr << "mesolight: " << body << "\n";
+    std::cerr << "mesolight: " << mesolight::CleanVTKMessage(message) << "\n";
   }
 };
 vtkStandardNewMacro(ConsoleOutputWindow);

@@ -3,6 +3,7 @@
 
 #include "GeometryImageMesh.h"
 #include "ProceduralGeometryImages.h"
+#include "VTKMessage.h"
 #include "vtkGeometryImageSource.h"
 #include "vtkGeometryImageToMesh.h"
 #include "vtkOIIOImageReader.h"
@@ -29,16 +30,7 @@ public:
   static Errors* New() { return new Errors; }
   void Execute(vtkObject*, unsigned long, void* callData) override
   {
-    std::string text = callData ? static_cast<const char*>(callData) : "";
-    const size_t lineEnd = text.find('\n');
-    if (text.compare(0, 10, "ERROR: In ") == 0 && lineEnd != std::string::npos)
-    {
-      text = text.substr(lineEnd + 1);
-    }
-    while (!text.empty() && (text.back() == '\n' || text.back() == ' '))
-    {
-      text.pop_back();
-    }
+    const std::string text = CleanVTKMessage(callData ? static_cast<const char*>(callData) : "");
     this->Messages += (this->Messages.empty() ? "" : "; ") + text;
   }
   std::string Messages;

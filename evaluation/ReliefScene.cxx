@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "ReliefScene.h"
 
+#include "VTKMessage.h"
 #include "vtkConeMapFilter.h"
 #include "vtkHeightFieldMeshFilter.h"
 #include "vtkLightSetReader.h"
@@ -51,17 +52,7 @@ public:
     {
       return;
     }
-    // Keep what the message says, without VTK's "ERROR: In <file>, line N" location line.
-    std::string text = static_cast<const char*>(callData);
-    const size_t lineEnd = text.find('\n');
-    if (text.compare(0, 10, "ERROR: In ") == 0 && lineEnd != std::string::npos)
-    {
-      text = text.substr(lineEnd + 1);
-    }
-    while (!text.empty() && (text.back() == '\n' || text.back() == ' '))
-    {
-      text.pop_back();
-    }
+    const std::string text = CleanVTKMessage(static_cast<const char*>(callData));
     this->Messages += (this->Messages.empty() ? "" : "; ") + text;
   }
   std::string Messages;

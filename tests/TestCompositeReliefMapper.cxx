@@ -128,10 +128,10 @@ TEST(CompositeReliefMapper, TwoBlocksWithAttachedTexturesMatchTheReliefMapper)
   vtkNew<vtkCompositeReliefMapper> composite;
   composite->SetInputDataObject(blocks);
   composite->GetReliefProperty()->SetDepthScale(DepthScale);
-  vtkNew<test::MessageRecorder> messages;
+  vtkNew<mesolight_test::MessageCapture> messages;
   messages->Watch(composite);
   const Frame frame = Render(composite, "composite-two-blocks.png");
-  EXPECT_TRUE(messages->Errors.empty()) << messages->Errors;
+  EXPECT_TRUE(messages->Errors.empty()) << messages->AllErrors();
 
   const FrameDifference d = CompareFrames(frame, reference, 0.02 * DepthScale);
   std::cout << "composite vs plain: mean colour error " << d.MeanColorError
@@ -156,8 +156,8 @@ TEST(CompositeReliefMapper, BlocksWithoutReliefTextureAreAnError)
   blocks->SetBlock(0, Strip(0.0, 1.0));
   vtkNew<vtkCompositeReliefMapper> composite;
   composite->SetInputDataObject(blocks);
-  vtkNew<test::MessageRecorder> messages;
+  vtkNew<mesolight_test::MessageCapture> messages;
   messages->Watch(composite);
   Render(composite, "composite-no-texture.png");
-  EXPECT_NE(messages->Errors.find("No relief texture"), std::string::npos) << messages->Errors;
+  EXPECT_TRUE(messages->HasError("No relief texture")) << messages->AllErrors();
 }

@@ -238,12 +238,13 @@ TEST(ReliefVsDenseMesh, MoreLightsThanTheShaderHoldsWarns)
     light->SetIntensity(0.1);
     relief.Renderer->AddLight(light);
   }
-  vtkNew<test::MessageRecorder> messages;
+  vtkNew<mesolight_test::MessageCapture> messages;
   messages->Watch(relief.Mapper);
   auto window = MakeOffscreenWindow(o, relief.Renderer);
   CaptureFrame(window);
   CaptureFrame(window);
-  EXPECT_NE(messages->Warnings.find("More than 8"), std::string::npos) << messages->Warnings;
-  EXPECT_EQ(messages->Warnings.find("More than 8"), messages->Warnings.rfind("More than 8"))
-    << "warned more than once: " << messages->Warnings;
+  EXPECT_TRUE(messages->HasWarning("More than 8")) << messages->AllWarnings();
+  const std::string warnings = messages->AllWarnings();
+  EXPECT_EQ(warnings.find("More than 8"), warnings.rfind("More than 8"))
+    << "warned more than once: " << warnings;
 }

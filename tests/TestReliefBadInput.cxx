@@ -86,20 +86,20 @@ TEST(ReliefBadInput, MissingTextureCoordinatesIsAnError)
   mesh->GetPointData()->SetTCoords(nullptr);
   vtkNew<vtkReliefMapper> mapper;
   mapper->SetReliefTextureData(SmallRelief());
-  vtkNew<test::MessageRecorder> messages;
+  vtkNew<mesolight_test::MessageCapture> messages;
   messages->Watch(mapper);
   const Frame frame = DrawWithRelief(mapper, mesh);
-  EXPECT_NE(messages->Errors.find("texture coordinates"), std::string::npos) << messages->Errors;
+  EXPECT_TRUE(messages->HasError("texture coordinates")) << messages->AllErrors();
   EXPECT_EQ(CoveredPixels(frame), 0);
 }
 
 TEST(ReliefBadInput, MissingReliefTextureIsAnError)
 {
   vtkNew<vtkReliefMapper> mapper;
-  vtkNew<test::MessageRecorder> messages;
+  vtkNew<mesolight_test::MessageCapture> messages;
   messages->Watch(mapper);
   DrawWithRelief(mapper, PlaneWithTCoords());
-  EXPECT_NE(messages->Errors.find("No relief texture"), std::string::npos) << messages->Errors;
+  EXPECT_TRUE(messages->HasError("No relief texture")) << messages->AllErrors();
 }
 
 TEST(ReliefBadInput, ReliefTextureWithoutFourComponentsIsAnError)
@@ -107,10 +107,10 @@ TEST(ReliefBadInput, ReliefTextureWithoutFourComponentsIsAnError)
   auto depthOnly = test::MakeDepthMap(8, 8, [](double, double) { return 0.5; });
   vtkNew<vtkReliefMapper> mapper;
   mapper->SetReliefTextureData(depthOnly);
-  vtkNew<test::MessageRecorder> messages;
+  vtkNew<mesolight_test::MessageCapture> messages;
   messages->Watch(mapper);
   DrawWithRelief(mapper, PlaneWithTCoords());
-  EXPECT_NE(messages->Errors.find("4 components"), std::string::npos) << messages->Errors;
+  EXPECT_TRUE(messages->HasError("4 components")) << messages->AllErrors();
 }
 
 TEST(ReliefBadInput, NaNDepthIsRejectedByTheBake)
@@ -120,7 +120,7 @@ TEST(ReliefBadInput, NaNDepthIsRejectedByTheBake)
     { return (u > 0.5 && v > 0.5) ? std::numeric_limits<double>::quiet_NaN() : 0.5; });
   vtkNew<vtkReliefTextureFilter> bake;
   bake->SetInputData(depth);
-  vtkNew<test::MessageRecorder> messages;
+  vtkNew<mesolight_test::MessageCapture> messages;
   messages->Watch(bake);
   bake->Update();
   EXPECT_FALSE(messages->Errors.empty());
@@ -132,10 +132,10 @@ TEST(ReliefBadInput, NaNInTheReliefTextureIsRejectedByTheMapper)
   relief->GetPointData()->GetScalars()->SetComponent(5, 3, std::nan(""));
   vtkNew<vtkReliefMapper> mapper;
   mapper->SetReliefTextureData(relief);
-  vtkNew<test::MessageRecorder> messages;
+  vtkNew<mesolight_test::MessageCapture> messages;
   messages->Watch(mapper);
   const Frame frame = DrawWithRelief(mapper, PlaneWithTCoords());
-  EXPECT_NE(messages->Errors.find("non-finite"), std::string::npos) << messages->Errors;
+  EXPECT_TRUE(messages->HasError("non-finite")) << messages->AllErrors();
   EXPECT_EQ(CoveredPixels(frame), 0);
 }
 
@@ -144,17 +144,17 @@ TEST(ReliefBadInput, OneByOneDepthMapRendersFlat)
   auto depth = test::MakeDepthMap(1, 1, [](double, double) { return 0.3; });
   vtkNew<vtkReliefTextureFilter> bake;
   bake->SetInputData(depth);
-  vtkNew<test::MessageRecorder> bakeMessages;
+  vtkNew<mesolight_test::MessageCapture> bakeMessages;
   bakeMessages->Watch(bake);
   bake->Update();
-  EXPECT_TRUE(bakeMessages->Errors.empty()) << bakeMessages->Errors;
+  EXPECT_TRUE(bakeMessages->Errors.empty()) << bakeMessages->AllErrors();
   EXPECT_FALSE(bakeMessages->Warnings.empty()) << "a 1x1 map should be flagged";
   vtkNew<vtkReliefMapper> mapper;
   mapper->SetReliefTextureConnection(bake->GetOutputPort());
-  vtkNew<test::MessageRecorder> messages;
+  vtkNew<mesolight_test::MessageCapture> messages;
   messages->Watch(mapper);
   const Frame frame = DrawWithRelief(mapper, PlaneWithTCoords());
-  EXPECT_TRUE(messages->Errors.empty()) << messages->Errors;
+  EXPECT_TRUE(messages->Errors.empty()) << messages->AllErrors();
   EXPECT_GT(CoveredPixels(frame), 100);
 }
 
@@ -186,10 +186,10 @@ TEST(ReliefBadInput, DegenerateTrianglesRenderWithoutErrors)
   mesh->GetPointData()->SetTCoords(tcoords);
   vtkNew<vtkReliefMapper> mapper;
   mapper->SetReliefTextureData(SmallRelief());
-  vtkNew<test::MessageRecorder> messages;
+  vtkNew<mesolight_test::MessageCapture> messages;
   messages->Watch(mapper);
   const Frame frame = DrawWithRelief(mapper, mesh);
-  EXPECT_TRUE(messages->Errors.empty()) << messages->Errors;
+  EXPECT_TRUE(messages->Errors.empty()) << messages->AllErrors();
   EXPECT_GT(CoveredPixels(frame), 100);
   vtkDataArray* tangents = mapper->GetPreparedInput()->GetPointData()->GetTangents();
   ASSERT_NE(tangents, nullptr);
@@ -213,11 +213,11 @@ TEST(ReliefBadInput, UnreadableFilesAreErrors)
   {
     vtkNew<vtkOIIOImageReader> reader;
     reader->SetFileName(file.c_str());
-    vtkNew<test::MessageRecorder> messages;
+    vtkNew<mesolight_test::MessageCapture> messages;
     messages->Watch(reader);
     reader->Update();
     EXPECT_FALSE(messages->Errors.empty()) << file;
-    EXPECT_NE(messages->Errors.find(file), std::string::npos) << "the message names the file";
+    EXPECT_TRUE(messages->HasError(file)) << "the message names the file";
   }
 }
 
@@ -259,14 +259,14 @@ TEST(ReliefBadInput, DegeneratePlaneDrawsNothing)
   plane->SetOrigin(0.5, 0.5, 0.0);
   plane->SetPoint1(0.5, 0.5, 0.0);
   plane->SetPoint2(0.5, 1.0, 0.0);
-  vtkNew<test::MessageRecorder> planeMessages; // the source's own complaint is expected
+  vtkNew<mesolight_test::MessageCapture> planeMessages; // the source's own complaint is expected
   planeMessages->Watch(plane);
   plane->Update();
   auto mesh = vtkSmartPointer<vtkPolyData>::New();
   mesh->DeepCopy(plane->GetOutput());
   vtkNew<vtkReliefMapper> mapper;
   mapper->SetReliefTextureData(SmallRelief());
-  vtkNew<test::MessageRecorder> messages;
+  vtkNew<mesolight_test::MessageCapture> messages;
   messages->Watch(mapper);
   const Frame frame = DrawWithRelief(mapper, mesh);
   EXPECT_EQ(mesh->GetNumberOfPoints(), 0);

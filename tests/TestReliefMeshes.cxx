@@ -23,7 +23,8 @@ namespace
 {
 using namespace mesolight;
 
-Frame RenderSphere(double depthScale, vtkReliefMapper* mapper, test::MessageRecorder* messages)
+Frame RenderSphere(
+  double depthScale, vtkReliefMapper* mapper, mesolight_test::MessageCapture* messages)
 {
   vtkNew<vtkProceduralReliefSource> source;
   source->SetPatternToBricks();
@@ -64,11 +65,11 @@ Frame RenderSphere(double depthScale, vtkReliefMapper* mapper, test::MessageReco
 TEST(ReliefMeshes, TexturedSphereGetsTangentsAndShowsRelief)
 {
   vtkNew<vtkReliefMapper> flatMapper, reliefMapper;
-  vtkNew<test::MessageRecorder> messages;
+  vtkNew<mesolight_test::MessageCapture> messages;
   const Frame flat = RenderSphere(0.0, flatMapper, messages);
   const Frame relief = RenderSphere(0.03, reliefMapper, messages);
   WritePng(relief, test::OutputPath("sphere-relief.png").c_str());
-  EXPECT_TRUE(messages->Errors.empty()) << messages->Errors;
+  EXPECT_TRUE(messages->Errors.empty()) << messages->AllErrors();
   ASSERT_NE(reliefMapper->GetPreparedInput(), nullptr);
   EXPECT_NE(reliefMapper->GetPreparedInput()->GetPointData()->GetTangents(), nullptr);
   long long covered = 0;

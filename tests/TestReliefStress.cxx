@@ -67,7 +67,7 @@ StressResult Stress(ReliefSceneOptions o, vtkImageData* relief)
       scene.Mapper->SetReliefTextureData(relief);
     }
   }
-  vtkNew<test::MessageRecorder> messages;
+  vtkNew<mesolight_test::MessageCapture> messages;
   messages->Watch(scene.Mapper);
   scene.Mapper->GetReliefProperty()->SetOutput(vtkReliefProperty::NonFiniteCheckOutput);
   // One window for all cases: each X window costs the server resources, and a test process
@@ -87,7 +87,7 @@ StressResult Stress(ReliefSceneOptions o, vtkImageData* relief)
     const unsigned char* c = &frame.Rgb[3 * p];
     result.Red += (c[0] > 128 && c[1] < 128) ? 1 : 0;
   }
-  result.Errors = messages->Errors;
+  result.Errors = messages->AllErrors();
   return result;
 }
 
@@ -206,12 +206,12 @@ TEST(ReliefStress, Map4096Squared)
 TEST(ReliefStress, NaNDepthScaleIsRefused)
 {
   vtkNew<vtkReliefMapper> mapper;
-  vtkNew<test::MessageRecorder> messages;
+  vtkNew<mesolight_test::MessageCapture> messages;
   messages->Watch(mapper);
   mapper->GetReliefProperty()->SetDepthScale(0.2);
   mapper->GetReliefProperty()->SetDepthScale(std::nan(""));
   EXPECT_EQ(mapper->GetReliefProperty()->GetDepthScale(), 0.2);
-  EXPECT_NE(messages->Errors.find("NaN"), std::string::npos);
+  EXPECT_TRUE(messages->HasError("NaN"));
   mapper->GetReliefProperty()->SetDepthScale(1e300);
   EXPECT_EQ(mapper->GetReliefProperty()->GetDepthScale(), 10.0);
 }

@@ -5,6 +5,7 @@
 
 #include "ConeMaps.h"
 #include "MemoryBudget.h"
+#include "VTKMessage.h"
 #include "vtkReliefTextureFilter.h"
 
 #include "vtkCommand.h"
@@ -117,7 +118,8 @@ int vtkConeMapFilter::Execute(
       static Forward* New() { return new Forward; }
       void Execute(vtkObject*, unsigned long, void* data) override
       {
-        this->Errors += data ? static_cast<const char*>(data) : "";
+        // The inner filter's own sentence, not its location line and address.
+        this->Errors += mesolight::CleanVTKMessage(data ? static_cast<const char*>(data) : "");
       }
       std::string Errors;
     };

@@ -21,25 +21,6 @@ namespace mesolight
 namespace test
 {
 
-void MessageRecorder::Execute(vtkObject*, unsigned long event, void* callData)
-{
-  const std::string text = callData ? static_cast<const char*>(callData) : "";
-  if (event == vtkCommand::ErrorEvent)
-  {
-    this->Errors += text;
-  }
-  else
-  {
-    this->Warnings += text;
-  }
-}
-
-void MessageRecorder::Watch(vtkObject* object)
-{
-  object->AddObserver(vtkCommand::ErrorEvent, this);
-  object->AddObserver(vtkCommand::WarningEvent, this);
-}
-
 vtkSmartPointer<vtkImageData> MakeDepthMap(
   int width, int height, const std::function<double(double, double)>& depth)
 {

@@ -3,7 +3,8 @@
 #ifndef mesolight_TestReliefTestUtilities_h
 #define mesolight_TestReliefTestUtilities_h
 
-#include <vtkCommand.h>
+#include "MessageCapture.h" // mesolight_test::MessageCapture: errors and warnings of a test
+
 #include <vtkSmartPointer.h>
 
 #include <functional>
@@ -11,7 +12,6 @@
 
 class vtkActor;
 class vtkImageData;
-class vtkObject;
 class vtkReliefMapper;
 class vtkRenderer;
 
@@ -19,18 +19,6 @@ namespace mesolight
 {
 namespace test
 {
-
-/** Records error and warning events of the objects it observes. */
-class MessageRecorder : public vtkCommand
-{
-public:
-  static MessageRecorder* New() { return new MessageRecorder; }
-  void Execute(vtkObject* caller, unsigned long event, void* callData) override;
-  /** Observes errors and warnings of object (and keeps them from the console). */
-  void Watch(vtkObject* object);
-  std::string Errors;
-  std::string Warnings;
-};
 
 /** A depth map sampled at texel centres from depth(u, v) in [0,1]. */
 vtkSmartPointer<vtkImageData> MakeDepthMap(

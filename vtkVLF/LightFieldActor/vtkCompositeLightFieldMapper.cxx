@@ -36,6 +36,13 @@
 #include <string>
 #include <vector>
 
+// mlToneMap (glsl/vtkLightFieldFS.glsl) takes this ToneMap as the actor's: the same values.
+static_assert(
+  vtkCompositeLightFieldMapper::Clamp == static_cast<int>(mesolight::ToneMapOperator::Clamp) &&
+    vtkCompositeLightFieldMapper::Reinhard ==
+      static_cast<int>(mesolight::ToneMapOperator::Reinhard),
+  "vtkCompositeLightFieldMapper's tone maps and mesolight::ToneMapOperator share their values");
+
 // The movable object's shadow maps: as vtkLightFieldActor's (vtkLightFieldObjectShadows.h), built
 // from the emitters the caster carries instead of the field itself.
 struct vtkCompositeLightFieldMapper::ShadowData

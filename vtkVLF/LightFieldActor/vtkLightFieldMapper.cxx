@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkLightFieldMapper.h"
 
+#include "DisplayTransform.h"
 #include "vtkLightFieldActor.h"
 #include "vtkLightFieldActorCore.h"
 #include "vtkLightFieldActorInternals.h"
@@ -18,6 +19,11 @@
 #include "vtkTextureObject.h"
 
 #include <chrono>
+
+// mlToneMap takes the actor's ToneMap, which the CPU paths read as mesolight::ToneMapOperator.
+static_assert(vtkLightFieldActor::Clamp == static_cast<int>(mesolight::ToneMapOperator::Clamp) &&
+    vtkLightFieldActor::Reinhard == static_cast<int>(mesolight::ToneMapOperator::Reinhard),
+  "vtkLightFieldActor's tone maps and mesolight::ToneMapOperator share their values");
 
 vtkStandardNewMacro(vtkLightFieldMapper);
 

@@ -25,6 +25,8 @@
 #include "vtkTexture.h"
 #include "vtkUnsignedCharArray.h"
 
+#include "MessageCapture.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -32,33 +34,17 @@
 
 namespace
 {
-// Counts error and warning events and keeps the last message.
-class MessageCounter : public vtkCommand
-{
-public:
-  static MessageCounter* New() { return new MessageCounter; }
-  void Execute(vtkObject*, unsigned long event, void* data) override
-  {
-    (event == vtkCommand::ErrorEvent ? this->Errors : this->Warnings) += 1;
-    this->Last = data ? static_cast<const char*>(data) : "";
-  }
-  int Errors = 0;
-  int Warnings = 0;
-  std::string Last;
-};
-
 struct Scene
 {
   vtkNew<vtkRenderer> Renderer;
   vtkNew<vtkEmbreeRayTracer> Tracer;
-  vtkNew<MessageCounter> Messages;
+  vtkNew<mesolight_test::MessageCapture> Messages;
   Scene()
   {
     this->Tracer->SetRenderer(this->Renderer);
     this->Tracer->SetWidth(41);
     this->Tracer->SetHeight(31);
-    this->Tracer->AddObserver(vtkCommand::ErrorEvent, this->Messages);
-    this->Tracer->AddObserver(vtkCommand::WarningEvent, this->Messages);
+    this->Messages->Watch(this->Tracer);
     vtkCamera* camera = this->Renderer->GetActiveCamera();
     camera->SetPosition(0.0, 0.0, 5.0);
     camera->SetFocalPoint(0.0, 0.0, 0.0);
@@ -121,7 +107,7 @@ TEST(vtkEmbreeRayTracer, AnalyticSphereIsLambertianAtTheCentrePixel)
   scene.AddSphere();
   scene.AddSun(1.0, 0.0, 1.0); // light travelling along (-1, 0, -1)
   scene.Tracer->Update();
-  ASSERT_EQ(scene.Messages->Errors, 0) << scene.Messages->Last;
+  ASSERT_TRUE(scene.Messages->Errors.empty()) << scene.Messages->AllErrors();
   EXPECT_EQ(scene.Tracer->GetAnalyticSphereCount(), 1);
   EXPECT_EQ(scene.Tracer->GetTriangleCount(), 0);
   int dims[3];
@@ -164,7 +150,7 @@ TEST(vtkEmbreeRayTracer, SphereShadowsThePlaneBehindIt)
   scene.Renderer->GetActiveCamera()->SetPosition(0.0, -4.0, 4.0);
   scene.Renderer->GetActiveCamera()->SetFocalPoint(0.0, 0.6, 0.0);
   scene.Tracer->Update();
-  ASSERT_EQ(scene.Messages->Errors, 0) << scene.Messages->Last;
+  ASSERT_TRUE(scene.Messages->Errors.empty()) << scene.Messages->AllErrors();
   // Find a pixel on the plane just beyond the sphere: it should hold either ambient only
   // (shadowed) or ambient + diffuse (lit); both must occur, and the shadow must vanish
   // without shadows.
@@ -222,7 +208,7 @@ TEST(vtkEmbreeRayTracer, ActorTextureIsSampledNearestOrBilinear)
   // Ambient maps show the texture unlit: use the texture as the ambient map as well.
   scene.Tracer->SetMaterialMap(plane, vtkEmbreeRayTracer::AMBIENT_MAP, TwoByTwoImage());
   scene.Tracer->Update();
-  ASSERT_EQ(scene.Messages->Errors, 0) << scene.Messages->Last;
+  ASSERT_TRUE(scene.Messages->Errors.empty()) << scene.Messages->AllErrors();
   // The centre pixel looks at (0, 0, 0): (s, t) = (0.5, 0.5), the mean of the four texels.
   const float mean = (0.0f + 1.0f + 64.0f / 255.0f + 128.0f / 255.0f) / 4.0f;
   EXPECT_NEAR(scene.Radiance(20, 15)[0], mean, 2e-3f);
@@ -255,7 +241,7 @@ TEST(vtkEmbreeRayTracer, ActorTextureIsTheLitDiffuseMap)
     scene.Renderer->AutomaticLightCreationOff();
     scene.AddSun(0.0, 0.0, 1.0);
     scene.Tracer->Update();
-    ASSERT_EQ(scene.Messages->Errors, 0) << scene.Messages->Last;
+    ASSERT_TRUE(scene.Messages->Errors.empty()) << scene.Messages->AllErrors();
     const float mean = (0.0f + 1.0f + 64.0f / 255.0f + 128.0f / 255.0f) / 4.0f;
     EXPECT_NEAR(scene.Radiance(20, 15)[0], 0.8f * (textured ? mean : 1.0f), 2e-3f) << textured;
   }
@@ -289,17 +275,17 @@ TEST(vtkEmbreeRayTracer, BadInputGivesErrorsNotCrashes)
 {
   {
     vtkNew<vtkEmbreeRayTracer> tracer;
-    vtkNew<MessageCounter> messages;
-    tracer->AddObserver(vtkCommand::ErrorEvent, messages);
+    vtkNew<mesolight_test::MessageCapture> messages;
+    messages->Watch(tracer);
     tracer->Update(); // no renderer
-    EXPECT_GE(messages->Errors, 1);
-    EXPECT_NE(messages->Last.find("No renderer"), std::string::npos);
+    EXPECT_FALSE(messages->Errors.empty());
+    EXPECT_TRUE(messages->HasError("No renderer"));
   }
   {
     Scene empty;
     empty.Tracer->Update();
-    EXPECT_GE(empty.Messages->Errors, 1);
-    EXPECT_NE(empty.Messages->Last.find("empty"), std::string::npos) << empty.Messages->Last;
+    EXPECT_FALSE(empty.Messages->Errors.empty());
+    EXPECT_TRUE(empty.Messages->HasError("empty")) << empty.Messages->AllErrors();
   }
   {
     Scene scene;
@@ -307,12 +293,12 @@ TEST(vtkEmbreeRayTracer, BadInputGivesErrorsNotCrashes)
     vtkNew<vtkTexture> missing; // a texture without an image
     plane->SetTexture(missing);
     scene.Tracer->SetMaterialMap(plane, 42, TwoByTwoImage()); // no such channel
-    EXPECT_EQ(scene.Messages->Errors, 1);
+    EXPECT_EQ(scene.Messages->Errors.size(), 1u);
     scene.Tracer->SetMaterialMap(
       plane, vtkEmbreeRayTracer::BUMP_MAP, vtkNew<vtkImageData>()); // empty map
     scene.Tracer->Update();
-    EXPECT_EQ(scene.Messages->Errors, 1) << scene.Messages->Last;
-    EXPECT_GE(scene.Messages->Warnings, 2); // missing texture image, empty bump map
+    EXPECT_EQ(scene.Messages->Errors.size(), 1u) << scene.Messages->AllErrors();
+    EXPECT_GE(scene.Messages->Warnings.size(), 2u); // missing texture image, empty bump map
   }
   {
     // Degenerate triangles only: nothing to trace.
@@ -333,8 +319,8 @@ TEST(vtkEmbreeRayTracer, BadInputGivesErrorsNotCrashes)
     actor->SetMapper(mapper);
     scene.Renderer->AddActor(actor);
     scene.Tracer->Update();
-    EXPECT_GE(scene.Messages->Errors, 1);
-    EXPECT_NE(scene.Messages->Last.find("degenerate"), std::string::npos) << scene.Messages->Last;
+    EXPECT_FALSE(scene.Messages->Errors.empty());
+    EXPECT_TRUE(scene.Messages->HasError("degenerate")) << scene.Messages->AllErrors();
   }
   {
     // A degenerate camera.
@@ -342,7 +328,7 @@ TEST(vtkEmbreeRayTracer, BadInputGivesErrorsNotCrashes)
     scene.AddSphere();
     scene.Renderer->GetActiveCamera()->SetViewUp(0.0, 0.0, 1.0);
     scene.Tracer->Update();
-    EXPECT_GE(scene.Messages->Errors, 1);
+    EXPECT_FALSE(scene.Messages->Errors.empty());
   }
 }
 

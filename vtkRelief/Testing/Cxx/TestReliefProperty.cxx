@@ -2,10 +2,11 @@
 // Unit tests for vtkReliefProperty: the one method-name table, and one property shared by
 // several mappers (no GPU needed).
 
+#include "MessageCapture.h"
+#include "VTKMessage.h"
 #include "vtkReliefMapper.h"
 #include "vtkReliefProperty.h"
 
-#include <vtkCommand.h>
 #include <vtkNew.h>
 #include <vtkSmartPointer.h>
 #include <vtkVersionMacros.h>
@@ -18,21 +19,6 @@
 
 #include <cmath>
 #include <string>
-
-namespace
-{
-// Collects the error texts an object's observers receive.
-class ErrorRecorder : public vtkCommand
-{
-public:
-  static ErrorRecorder* New() { return new ErrorRecorder; }
-  void Execute(vtkObject*, unsigned long, void* callData) override
-  {
-    this->Errors += callData ? static_cast<const char*>(callData) : "";
-  }
-  std::string Errors;
-};
-} // namespace
 
 TEST(ReliefProperty, MethodNamesRoundTrip)
 {
@@ -161,12 +147,16 @@ TEST(ReliefProperty, SharedByReliefAndCompositeMappers)
 TEST(ReliefProperty, ErrorsReachTheObserversOfTheMapperThatMadeIt)
 {
   vtkNew<vtkReliefMapper> mapper;
-  vtkNew<ErrorRecorder> errors;
-  mapper->AddObserver(vtkCommand::ErrorEvent, errors);
+  vtkNew<mesolight_test::MessageCapture> errors;
+  errors->Watch(mapper);
   mapper->GetReliefProperty()->SetDepthScale(0.2);
   mapper->GetReliefProperty()->SetDepthScale(std::nan(""));
   EXPECT_EQ(mapper->GetReliefProperty()->GetDepthScale(), 0.2);
-  EXPECT_NE(errors->Errors.find("NaN"), std::string::npos) << errors->Errors;
+  ASSERT_EQ(errors->Errors.size(), 1u) << errors->AllErrors();
+  // What a user is shown of it: VTK's location line and object prefix dropped.
+  EXPECT_EQ(mesolight::CleanVTKMessage(errors->Errors[0]),
+    "SetDepthScale: NaN is not a depth scale; keeping 0.2.");
+  EXPECT_EQ(mesolight::CleanVTKMessage("plain text\n\n"), "plain text");
 
   // The owner is not referenced: a property outliving its mapper has none.
   vtkSmartPointer<vtkReliefProperty> kept = mapper->GetReliefProperty();

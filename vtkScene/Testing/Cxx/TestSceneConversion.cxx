@@ -2,6 +2,7 @@
 // Tests of the VTK side of the light field's scenes: vtkTriangleSceneConverter (round trips,
 // foreign polydata, bad input), vtkOBJSceneReader (the committed Cornell box OBJ against
 // vtkCornellBoxSource, errors and warnings as VTK events) and vtkCornellBoxSource.
+#include "MessageCapture.h"
 #include "SceneTestUtilities.h"
 #include "TriangleScene.h"
 #include "vtkCornellBoxSource.h"
@@ -33,39 +34,7 @@ namespace
 {
 using mesolight::TriangleScene;
 using mesolight::vlftest::ExpectSameScene;
-
-// Collects the error and warning messages an object reports.
-class MessageCollector : public vtkCommand
-{
-public:
-  static MessageCollector* New() { return new MessageCollector; }
-  void Execute(vtkObject*, unsigned long event, void* data) override
-  {
-    const std::string text = data ? static_cast<const char*>(data) : "";
-    (event == vtkCommand::ErrorEvent ? this->Errors : this->Warnings).push_back(text);
-  }
-  void Watch(vtkObject* object)
-  {
-    object->AddObserver(vtkCommand::ErrorEvent, this);
-    object->AddObserver(vtkCommand::WarningEvent, this);
-  }
-  bool AnyErrorContains(const std::string& part) const { return Contains(this->Errors, part); }
-  bool AnyWarningContains(const std::string& part) const { return Contains(this->Warnings, part); }
-  std::vector<std::string> Errors, Warnings;
-
-private:
-  static bool Contains(const std::vector<std::string>& messages, const std::string& part)
-  {
-    for (const std::string& m : messages)
-    {
-      if (m.find(part) != std::string::npos)
-      {
-        return true;
-      }
-    }
-    return false;
-  }
-};
+using mesolight_test::MessageCapture;
 
 std::string TempPath(const std::string& name)
 {
@@ -76,7 +45,7 @@ TEST(TriangleSceneConverter, CornellBoxRoundTrip)
 {
   const TriangleScene box = mesolight::MakeCornellBox();
   vtkNew<vtkTriangleSceneConverter> converter;
-  vtkNew<MessageCollector> messages;
+  vtkNew<MessageCapture> messages;
   messages->Watch(converter);
   const vtkSmartPointer<vtkPolyData> polyData = converter->ToPolyData(box);
   ASSERT_EQ(polyData->GetNumberOfCells(), static_cast<vtkIdType>(box.TriangleCount()));
@@ -105,7 +74,7 @@ TEST(TriangleSceneConverter, CornellBoxRoundTrip)
 TEST(TriangleSceneConverter, ForeignPolyData)
 {
   vtkNew<vtkTriangleSceneConverter> converter;
-  vtkNew<MessageCollector> messages;
+  vtkNew<MessageCapture> messages;
   messages->Watch(converter);
   // A sphere without material arrays: default grey material, with a warning.
   vtkNew<vtkSphereSource> sphere;
@@ -118,7 +87,7 @@ TEST(TriangleSceneConverter, ForeignPolyData)
   EXPECT_EQ(scene.Materials[0].Diffuse, glm::vec3(0.5f));
   EXPECT_EQ(scene.Materials[0].Emission, glm::vec3(0.0f));
   EXPECT_EQ(scene.Normals.size(), scene.Positions.size()); // the sphere's point normals
-  EXPECT_TRUE(messages->AnyWarningContains("no cell array Diffuse, Specular, Emission"));
+  EXPECT_TRUE(messages->HasWarning("no cell array Diffuse, Specular, Emission"));
   EXPECT_TRUE(messages->Errors.empty());
 
   // Quads are triangulated (a warning); a 1-component Diffuse is grey; without MaterialId, cells
@@ -144,8 +113,8 @@ TEST(TriangleSceneConverter, ForeignPolyData)
   quads->GetCellData()->AddArray(emission);
   ASSERT_TRUE(converter->ToTriangleScene(quads, scene));
   EXPECT_EQ(scene.TriangleCount(), 12u);
-  EXPECT_TRUE(messages->AnyWarningContains("6 polygons/strips triangulated into 12 triangles"));
-  EXPECT_TRUE(messages->AnyWarningContains("no cell array Specular"));
+  EXPECT_TRUE(messages->HasWarning("6 polygons/strips triangulated into 12 triangles"));
+  EXPECT_TRUE(messages->HasWarning("no cell array Specular"));
   ASSERT_EQ(scene.Materials.size(), 3u); // emitting 0.25, plain 0.25, plain 0.75
   EXPECT_EQ(scene.MaterialOf(0).Diffuse, glm::vec3(0.25f));
   EXPECT_EQ(scene.MaterialOf(0).Emission, glm::vec3(1.0f, 0.0f, 0.0f));
@@ -161,13 +130,13 @@ TEST(TriangleSceneConverter, ForeignPolyData)
 TEST(TriangleSceneConverter, BadInput)
 {
   vtkNew<vtkTriangleSceneConverter> converter;
-  vtkNew<MessageCollector> messages;
+  vtkNew<MessageCapture> messages;
   messages->Watch(converter);
   TriangleScene scene;
   EXPECT_FALSE(converter->ToTriangleScene(nullptr, scene));
   vtkNew<vtkPolyData> empty;
   EXPECT_FALSE(converter->ToTriangleScene(empty, scene));
-  EXPECT_TRUE(messages->AnyErrorContains("no points or no cells"));
+  EXPECT_TRUE(messages->HasError("no points or no cells"));
 
   // Only lines: nothing to light.
   vtkNew<vtkPolyData> lines;
@@ -180,7 +149,7 @@ TEST(TriangleSceneConverter, BadInput)
   const vtkIdType line[2] = { 0, 1 };
   lines->InsertNextCell(VTK_LINE, 2, line);
   EXPECT_FALSE(converter->ToTriangleScene(lines, scene));
-  EXPECT_TRUE(messages->AnyErrorContains("no polygons"));
+  EXPECT_TRUE(messages->HasError("no polygons"));
 
   // A NaN point, a 2-component colour, a short array, a negative colour.
   const auto triangle = [&]
@@ -199,7 +168,7 @@ TEST(TriangleSceneConverter, BadInput)
   vtkSmartPointer<vtkPolyData> nan = triangle();
   nan->GetPoints()->SetPoint(1, std::nan(""), 0, 0);
   EXPECT_FALSE(converter->ToTriangleScene(nan, scene));
-  EXPECT_TRUE(messages->AnyErrorContains("not finite"));
+  EXPECT_TRUE(messages->HasError("not finite"));
   EXPECT_TRUE(scene.Triangles.empty());
 
   vtkSmartPointer<vtkPolyData> twoComponents = triangle();
@@ -209,7 +178,7 @@ TEST(TriangleSceneConverter, BadInput)
   rg->InsertNextTuple2(0.5, 0.5);
   twoComponents->GetCellData()->AddArray(rg);
   EXPECT_FALSE(converter->ToTriangleScene(twoComponents, scene));
-  EXPECT_TRUE(messages->AnyErrorContains("'Diffuse' has 2 components"));
+  EXPECT_TRUE(messages->HasError("'Diffuse' has 2 components"));
 
   vtkSmartPointer<vtkPolyData> shortArray = triangle();
   vtkNew<vtkFloatArray> none;
@@ -217,7 +186,7 @@ TEST(TriangleSceneConverter, BadInput)
   none->SetNumberOfComponents(3);
   shortArray->GetCellData()->AddArray(none);
   EXPECT_FALSE(converter->ToTriangleScene(shortArray, scene));
-  EXPECT_TRUE(messages->AnyErrorContains("'Emission' has 0 values for 1 cells"));
+  EXPECT_TRUE(messages->HasError("'Emission' has 0 values for 1 cells"));
 
   vtkSmartPointer<vtkPolyData> negative = triangle();
   vtkNew<vtkFloatArray> minus;
@@ -225,13 +194,13 @@ TEST(TriangleSceneConverter, BadInput)
   minus->InsertNextValue(-1.0f);
   negative->GetCellData()->AddArray(minus);
   EXPECT_FALSE(converter->ToTriangleScene(negative, scene));
-  EXPECT_TRUE(messages->AnyErrorContains("negative value"));
+  EXPECT_TRUE(messages->HasError("negative value"));
 }
 
 TEST(LightFieldSceneReader, CornellBoxObjMatchesSource)
 {
   vtkNew<vtkOBJSceneReader> reader;
-  vtkNew<MessageCollector> messages;
+  vtkNew<MessageCapture> messages;
   messages->Watch(reader);
   reader->SetFileName(MESOLIGHT_SOURCE_DIR "/examples/data/cornell-box.obj");
   reader->RequireEmitterOn();
@@ -267,24 +236,24 @@ TEST(LightFieldSceneReader, CornellBoxObjMatchesSource)
 TEST(LightFieldSceneReader, ErrorsAndWarnings)
 {
   vtkNew<vtkOBJSceneReader> reader;
-  vtkNew<MessageCollector> messages;
+  vtkNew<MessageCapture> messages;
   messages->Watch(reader);
   // Quiet the executive's "algorithm returned failure" reports about the reader.
   reader->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, messages);
   reader->Update();
-  EXPECT_TRUE(messages->AnyErrorContains("no FileName"));
+  EXPECT_TRUE(messages->HasError("no FileName"));
 
   const std::string missing = TempPath("no-such-scene.obj");
   reader->SetFileName(missing.c_str());
   reader->Update();
-  EXPECT_TRUE(messages->AnyErrorContains(missing + ": cannot open the file"));
+  EXPECT_TRUE(messages->HasError(missing + ": cannot open the file"));
   EXPECT_EQ(reader->GetOutput()->GetNumberOfCells(), 0);
 
   const std::string corrupt = TempPath("corrupt.obj");
   std::ofstream(corrupt) << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n";
   reader->SetFileName(corrupt.c_str());
   reader->Update();
-  EXPECT_TRUE(messages->AnyErrorContains(corrupt + ":4: face refers to vertex 4 of 3"));
+  EXPECT_TRUE(messages->HasError(corrupt + ":4: face refers to vertex 4 of 3"));
   EXPECT_EQ(reader->GetOutput()->GetNumberOfCells(), 0);
 
   // Missing MTL and no emitter: warnings, grey output.
@@ -295,15 +264,15 @@ TEST(LightFieldSceneReader, ErrorsAndWarnings)
   reader->SetFileName(grey.c_str());
   reader->Update();
   EXPECT_TRUE(messages->Errors.empty());
-  EXPECT_TRUE(messages->AnyWarningContains("mtllib 'gone.mtl' not found"));
-  EXPECT_TRUE(messages->AnyWarningContains("no emitter"));
+  EXPECT_TRUE(messages->HasWarning("mtllib 'gone.mtl' not found"));
+  EXPECT_TRUE(messages->HasWarning("no emitter"));
   EXPECT_EQ(reader->GetWarnings().size(), 3u);
   ASSERT_EQ(reader->GetOutput()->GetNumberOfCells(), 2);
   EXPECT_EQ(reader->GetOutput()->GetCellData()->GetArray("Diffuse")->GetComponent(1, 2), 0.5);
   // RequireEmitter turns the last warning into an error.
   reader->RequireEmitterOn();
   reader->Update();
-  EXPECT_TRUE(messages->AnyErrorContains("no emitter"));
+  EXPECT_TRUE(messages->HasError("no emitter"));
   EXPECT_EQ(reader->GetOutput()->GetNumberOfCells(), 0);
 }
 

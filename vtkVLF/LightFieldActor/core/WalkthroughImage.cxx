@@ -11,44 +11,24 @@ namespace mesolight
 namespace vlf
 {
 
-float EncodeSrgb(float v)
-{
-  v = std::min(std::max(v, 0.0f), 1.0f);
-  return v <= 0.0031308f ? 12.92f * v : 1.055f * std::pow(v, 1.0f / 2.4f) - 0.055f;
-}
-
-float DecodeSrgb(float e)
-{
-  e = std::min(std::max(e, 0.0f), 1.0f);
-  return e <= 0.04045f ? e / 12.92f : std::pow((e + 0.055f) / 1.055f, 2.4f);
-}
-
 glm::vec3 ToneMap(const glm::vec3& radiance, float exposure, ToneMapOperator op)
 {
+  const DisplayTransform transform{ exposure, op, true };
   glm::vec3 out;
   for (int c = 0; c < 3; ++c)
   {
-    float v = std::max(0.0f, exposure * radiance[c]);
-    if (op == ToneMapOperator::Reinhard)
-    {
-      v = v / (1.0f + v);
-    }
-    out[c] = EncodeSrgb(v);
+    out[c] = ApplyDisplayTransform(transform, radiance[c]);
   }
   return out;
 }
 
 glm::vec3 InverseToneMap(const glm::vec3& display, float exposure, ToneMapOperator op)
 {
+  const DisplayTransform transform{ exposure, op, true };
   glm::vec3 out;
   for (int c = 0; c < 3; ++c)
   {
-    float v = DecodeSrgb(display[c]);
-    if (op == ToneMapOperator::Reinhard)
-    {
-      v = v < 1.0f ? v / (1.0f - v) : 1e6f;
-    }
-    out[c] = exposure > 0.0f ? v / exposure : 0.0f;
+    out[c] = InvertDisplayTransform(transform, display[c]);
   }
   return out;
 }

@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// WalkthroughImage: the display transform shared by every walkthrough mode (exposure, tone
-// mapping, sRGB encoding; glsl/vtkLightFieldFS.glsl is its GPU twin) and the per-pixel error
-// measures the tests and benchmark compare modes with. Plain C++ (GLM, no VTK types).
+// WalkthroughImage: the display transform of every walkthrough mode on RGB (common/
+// DisplayTransform.h per channel; glsl/vtkLightFieldFS.glsl is its GPU twin) and the per-pixel
+// error measures the tests and benchmark compare modes with. Plain C++ (GLM, no VTK types).
 #ifndef mesolight_vlf_WalkthroughImage_h
 #define mesolight_vlf_WalkthroughImage_h
+
+#include "DisplayTransform.h"
 
 #include <glm/vec3.hpp>
 
@@ -16,18 +18,12 @@ namespace mesolight
 namespace vlf
 {
 
-enum class ToneMapOperator
-{
-  Clamp = 0,   // exposure x radiance, clamped to [0, 1]
-  Reinhard = 1 // v / (1 + v) of v = exposure x radiance
-};
+using mesolight::ToneMapOperator;
 
 // Display value in [0, 1] (sRGB-encoded) of a linear radiance.
 glm::vec3 ToneMap(const glm::vec3& radiance, float exposure, ToneMapOperator op);
 // Linear radiance of a display value (the inverse; 1 maps to the clipping point for Clamp).
 glm::vec3 InverseToneMap(const glm::vec3& display, float exposure, ToneMapOperator op);
-float EncodeSrgb(float linear);
-float DecodeSrgb(float encoded);
 
 // Log-average luminance (Rec. 709 weights) of the RGBA texels with positive, finite luminance,
 // 0 when there are none: the automatic exposure 0.18 / this (Reinhard et al., "Photographic tone

@@ -7,8 +7,8 @@
 //             > 0 where it holds a value: mirror reflections (progressive, coherent) or every
 //             pixel (raytrace).
 // The depth test has already decided visibility, so other actors hide and are hidden by these
-// fragments exactly. Exposure and tone mapping (WalkthroughImage.h's twin) are shared by all
-// modes that show radiance.
+// fragments exactly. Exposure and tone mapping (the twin of common/DisplayTransform.h) are shared
+// by all modes that show radiance.
 
 uniform sampler2D mlAtlas;
 uniform sampler2D mlScreen;

@@ -3,10 +3,9 @@
 // into an angular map and a mirror ball by the core's inverse mappings, comes back with the
 // spots at the right lat-long pixels; a wrong probe frame must put them elsewhere.
 #include "EnvironmentMaps.h"
+#include "MessageCapture.h"
 #include "vtkLightProbeToLatLong.h"
 
-#include "vtkCallbackCommand.h"
-#include "vtkCommand.h"
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
@@ -20,6 +19,8 @@
 
 namespace
 {
+using mesolight_test::MessageCapture;
+
 // A dark map with two bright spots: the zenith and the +Y horizon.
 mesolight::RgbImage SpotMap(int w, int h)
 {
@@ -106,14 +107,10 @@ TEST(LightProbeToLatLong, BadInputIsAnError)
   tiny->AllocateScalars(VTK_FLOAT, 3);
   vtkNew<vtkLightProbeToLatLong> convert;
   convert->SetInputData(tiny);
-  vtkNew<vtkCallbackCommand> silence; // the error is expected: keep it off the console
-  silence->SetCallback([](vtkObject*, unsigned long, void* clientData, void*)
-    { *static_cast<bool*>(clientData) = true; });
-  bool reported = false;
-  silence->SetClientData(&reported);
-  convert->AddObserver(vtkCommand::ErrorEvent, silence);
+  vtkNew<MessageCapture> messages; // the error is expected: keep it off the console
+  messages->Watch(convert);
   convert->Update();
-  EXPECT_TRUE(reported);
+  EXPECT_FALSE(messages->Errors.empty());
   EXPECT_EQ(convert->GetOutput()->GetNumberOfPoints(), 0);
 }
 
@@ -152,14 +149,10 @@ TEST(LightProbeToLatLong, SixteenBitProbesAndMemoryBudget)
   convert->SetInputData(probe(VTK_UNSIGNED_CHAR, 255.0));
   convert->SetOutputWidth(4096); // 4096 x 2048: 192 MiB with its copy
   convert->SetMemoryBudget(64 << 20);
-  std::string errors;
-  vtkNew<vtkCallbackCommand> capture;
-  capture->SetCallback([](vtkObject*, unsigned long, void* clientData, void* callData)
-    { *static_cast<std::string*>(clientData) += static_cast<const char*>(callData); });
-  capture->SetClientData(&errors);
-  convert->AddObserver(vtkCommand::ErrorEvent, capture);
+  vtkNew<MessageCapture> messages;
+  messages->Watch(convert);
   convert->Update();
-  EXPECT_NE(errors.find("4096 x 2048 lat-long map needs about 192 MiB"), std::string::npos)
-    << errors;
+  EXPECT_TRUE(messages->HasError("4096 x 2048 lat-long map needs about 192 MiB"))
+    << messages->AllErrors();
   EXPECT_EQ(convert->GetOutput()->GetNumberOfPoints(), 0);
 }

@@ -7,6 +7,7 @@
 #include "vtkVirtualLightField.h"
 
 #include "LightField.h"
+#include "MessageCapture.h"
 #include "vtkCornellBoxSource.h"
 
 #include <vtkCell.h>
@@ -34,24 +35,21 @@
 
 namespace
 {
-class Messages : public vtkCommand
+using mesolight_test::MessageCapture;
+
+// Counts progress events; aborts its filter at the AbortAt-th.
+class ProgressCounter : public vtkCommand
 {
 public:
-  static Messages* New() { return new Messages; }
-  void Execute(vtkObject*, unsigned long event, void* data) override
+  static ProgressCounter* New() { return new ProgressCounter; }
+  void Execute(vtkObject*, unsigned long, void*) override
   {
-    if (event == vtkCommand::ProgressEvent)
+    ++this->ProgressEvents;
+    if (this->AbortAt >= 0 && this->ProgressEvents >= this->AbortAt && this->Filter)
     {
-      ++this->ProgressEvents;
-      if (this->AbortAt >= 0 && this->ProgressEvents >= this->AbortAt && this->Filter)
-      {
-        this->Filter->SetAbortExecute(1);
-      }
-      return;
+      this->Filter->SetAbortExecute(1);
     }
-    this->Text += data ? static_cast<const char*>(data) : "";
   }
-  std::string Text;
   int ProgressEvents = 0;
   int AbortAt = -1;
   vtkAlgorithm* Filter = nullptr;
@@ -136,15 +134,15 @@ TEST(VLFVirtualLightField, EmptyPieceInParallel)
   vtkNew<vtkVirtualLightField> filter;
   filter->SetInputData(empty);
   SmallSettings(filter);
-  vtkNew<Messages> messages;
-  filter->AddObserver(vtkCommand::ErrorEvent, messages);
+  vtkNew<MessageCapture> messages;
+  messages->Watch(filter);
   filter->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, messages);
   filter->UpdatePiece(1, 2, 0);
-  EXPECT_EQ(messages->Text, "");
+  EXPECT_TRUE(messages->Errors.empty()) << messages->AllErrors();
   EXPECT_EQ(filter->GetOutput()->GetNumberOfCells(), 0);
   filter->Modified();
   filter->UpdatePiece(0, 1, 0);
-  EXPECT_NE(messages->Text.find("cannot be used as a light field scene"), std::string::npos);
+  EXPECT_TRUE(messages->HasError("cannot be used as a light field scene"));
 }
 
 TEST(VLFVirtualLightField, CornellBoxRadiance)
@@ -156,13 +154,13 @@ TEST(VLFVirtualLightField, CornellBoxRadiance)
   vtkNew<vtkVirtualLightField> filter;
   filter->SetInputConnection(merged->GetOutputPort());
   SmallSettings(filter);
-  vtkNew<Messages> messages;
-  filter->AddObserver(vtkCommand::ProgressEvent, messages);
+  vtkNew<ProgressCounter> progress;
+  filter->AddObserver(vtkCommand::ProgressEvent, progress);
   filter->Update();
   vtkPolyData* out = filter->GetOutput();
   ASSERT_NE(filter->GetLightField(), nullptr);
   EXPECT_EQ(filter->GetLightField()->IterationsDone, 2);
-  EXPECT_GT(messages->ProgressEvents, 2);
+  EXPECT_GT(progress->ProgressEvents, 2);
   vtkDataArray* cells = out->GetCellData()->GetArray("Radiance");
   vtkDataArray* points = out->GetPointData()->GetArray("Radiance");
   ASSERT_NE(cells, nullptr);
@@ -223,13 +221,13 @@ TEST(VLFVirtualLightField, BudgetAbortAndSnapshots)
   vtkNew<vtkVirtualLightField> filter;
   filter->SetInputConnection(box->GetOutputPort());
   SmallSettings(filter);
-  vtkNew<Messages> messages;
-  filter->AddObserver(vtkCommand::ErrorEvent, messages);
-  filter->AddObserver(vtkCommand::WarningEvent, messages);
+  vtkNew<MessageCapture> messages;
+  messages->Watch(filter);
 
   filter->SetMemoryBudget(4096);
   filter->Update();
-  EXPECT_NE(messages->Text.find("memory budget"), std::string::npos) << messages->Text;
+  EXPECT_TRUE(messages->HasError("memory budget") || messages->HasWarning("memory budget"))
+    << messages->AllErrors() << messages->AllWarnings();
   EXPECT_EQ(filter->GetLightField(), nullptr);
   filter->SetMemoryBudget(vtkTypeInt64(1) << 30);
 
@@ -239,10 +237,12 @@ TEST(VLFVirtualLightField, BudgetAbortAndSnapshots)
     std::ofstream out(foreign);
     out << "precious";
   }
-  messages->Text.clear();
+  messages->Clear();
   filter->SetSnapshotFileName(foreign.c_str());
   filter->Update();
-  EXPECT_NE(messages->Text.find("not a light field snapshot"), std::string::npos) << messages->Text;
+  EXPECT_TRUE(messages->HasError("not a light field snapshot") ||
+    messages->HasWarning("not a light field snapshot"))
+    << messages->AllErrors() << messages->AllWarnings();
   std::ifstream in(foreign);
   std::string content;
   in >> content;
@@ -265,14 +265,15 @@ TEST(VLFVirtualLightField, BudgetAbortAndSnapshots)
   vtkNew<vtkVirtualLightField> aborted;
   aborted->SetInputConnection(box->GetOutputPort());
   SmallSettings(aborted);
-  vtkNew<Messages> stopper;
+  vtkNew<ProgressCounter> stopper;
   stopper->AbortAt = 2;
   stopper->Filter = aborted;
   aborted->AddObserver(vtkCommand::ProgressEvent, stopper);
-  aborted->AddObserver(vtkCommand::WarningEvent, stopper);
+  vtkNew<MessageCapture> abortMessages;
+  abortMessages->Watch(aborted);
   aborted->Update();
   EXPECT_EQ(aborted->GetLightField(), nullptr);
-  EXPECT_NE(stopper->Text.find("aborted"), std::string::npos);
+  EXPECT_TRUE(abortMessages->HasWarning("aborted")) << abortMessages->AllWarnings();
 }
 
 } // namespace

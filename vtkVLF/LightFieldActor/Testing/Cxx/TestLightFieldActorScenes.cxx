@@ -2,6 +2,7 @@
 // vtkLightFieldActor beside other actors (offscreen; run under Xvfb): occlusion of mirror pixels,
 // ordinary actors and relief surfaces composed in every mode, the field from the filter and the
 // composite mapper, viewports, and bad input.
+#include "MessageCapture.h"
 #include "WalkthroughTestViewer.h"
 
 namespace mesolight
@@ -389,21 +390,6 @@ TEST(Walkthrough, ViewportOffsetInTheWindow)
   }
 }
 
-// Collects the warnings and errors an object reports.
-struct MessageLog
-{
-  std::string Text;
-  vtkNew<vtkCallbackCommand> Command;
-  explicit MessageLog(vtkObject* object)
-  {
-    this->Command->SetClientData(this);
-    this->Command->SetCallback([](vtkObject*, unsigned long, void* self, void* message)
-      { static_cast<MessageLog*>(self)->Text += static_cast<const char*>(message); });
-    object->AddObserver(vtkCommand::WarningEvent, this->Command);
-    object->AddObserver(vtkCommand::ErrorEvent, this->Command);
-  }
-};
-
 // A copy of a snapshot claiming another format version, with a valid header checksum (the
 // header's 64-bit multiply-xorshift hash of vtkVLF/LightField/core/Snapshot.cxx, over its first 40 bytes).
 void WriteOtherVersion(const std::string& from, const std::string& to, std::uint32_t version)
@@ -433,7 +419,8 @@ void WriteOtherVersion(const std::string& from, const std::string& to, std::uint
 TEST(Walkthrough, BadInputIsReportedNotCrashed)
 {
   vtkNew<vtkLightFieldActor> actor;
-  MessageLog log(actor);
+  vtkNew<mesolight_test::MessageCapture> log;
+  log->Watch(actor);
   // Missing, foreign and truncated field files.
   EXPECT_FALSE(actor->LoadLightField("/nonexistent/field.vlf"));
   std::cout << "missing file: " << actor->GetLastError() << "\n";
@@ -480,22 +467,22 @@ TEST(Walkthrough, BadInputIsReportedNotCrashed)
   }
   // A field without mirrors in a mirror mode: a warning, the diffuse textures.
   renderer->SetViewport(0.0, 0.0, 1.0, 1.0);
-  log.Text.clear();
+  log->Clear();
   EXPECT_TRUE(actor->LoadLightField(dir + "/diffuse.vlf"));
   actor->SetRenderModeToCoherent();
   window->Render();
-  std::cout << "no mirrors: " << log.Text;
-  EXPECT_NE(log.Text.find("no mirror surfaces"), std::string::npos) << log.Text;
+  std::cout << "no mirrors: " << log->AllWarnings();
+  EXPECT_TRUE(log->HasWarning("no mirror surfaces")) << log->AllWarnings();
   // Camera inside the tall block: back faces everywhere (a warning, black pixels).
-  log.Text.clear();
+  log->Clear();
   vtkLightFieldActorCore::SetLightField(actor, &MirrorCornellField(513));
   renderer->GetActiveCamera()->SetPosition(370.0, 150.0, 350.0);
   renderer->GetActiveCamera()->SetFocalPoint(370.0, 150.0, 600.0);
   renderer->ResetCameraClippingRange();
   actor->SetRenderModeToRaytrace();
   window->Render();
-  std::cout << "camera in a wall: " << log.Text;
-  EXPECT_NE(log.Text.find("inside a wall"), std::string::npos) << log.Text;
+  std::cout << "camera in a wall: " << log->AllWarnings();
+  EXPECT_TRUE(log->HasWarning("inside a wall")) << log->AllWarnings();
 }
 
 } // namespace

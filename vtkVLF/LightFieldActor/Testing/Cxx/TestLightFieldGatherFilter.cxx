@@ -19,6 +19,7 @@
 #include "vtkSphereSource.h"
 #include "vtkVirtualLightField.h"
 
+#include "MessageCapture.h"
 #include "ObjectShadows.h"
 #include "WalkthroughImage.h"
 
@@ -30,25 +31,13 @@
 
 namespace
 {
-class Messages : public vtkCommand
-{
-public:
-  static Messages* New() { return new Messages; }
-  void Execute(vtkObject*, unsigned long event, void* data) override
-  {
-    (event == vtkCommand::ErrorEvent ? this->Errors : this->Warnings)
-      .emplace_back(data ? static_cast<const char*>(data) : "");
-  }
-  std::vector<std::string> Errors, Warnings;
-};
-
 struct Pipeline
 {
   vtkNew<vtkCornellBoxSource> box;
   vtkNew<vtkVirtualLightField> field;
   vtkNew<vtkSphereSource> sphere;
   vtkNew<vtkLightFieldGatherFilter> gather;
-  vtkNew<Messages> messages;
+  vtkNew<mesolight_test::MessageCapture> messages;
   Pipeline()
   {
     field->SetInputConnection(box->GetOutputPort());
@@ -61,8 +50,7 @@ struct Pipeline
     sphere->SetPhiResolution(8);
     gather->SetInputConnection(sphere->GetOutputPort());
     gather->SetLightFieldConnection(field->GetOutputPort());
-    gather->AddObserver(vtkCommand::ErrorEvent, messages);
-    gather->AddObserver(vtkCommand::WarningEvent, messages);
+    messages->Watch(gather);
   }
 };
 

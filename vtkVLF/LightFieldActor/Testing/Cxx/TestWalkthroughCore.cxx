@@ -2,6 +2,7 @@
 // The walkthrough's plain C++ cores: the texture atlas reproduces the field's textures (no seams,
 // orientation matters), traced reflections (single rays = packets; one bounce short fails),
 // mirror rectangles and tone mapping.
+#include "DisplayTransform.h"
 #include "TextureAtlas.h"
 #include "WalkthroughImage.h"
 #include "WalkthroughTestFields.h"
@@ -15,6 +16,7 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <iostream>
 #include <random>
 
@@ -216,6 +218,28 @@ TEST(LightFieldActorCore, ToneMapInverts)
     }
   }
   EXPECT_FLOAT_EQ(vlf::ToneMap(glm::vec3(4.0f), 1.0f, vlf::ToneMapOperator::Clamp).x, 1.0f);
+}
+
+// common/DisplayTransform.h, the one C++ display transform: the sRGB curve of IEC 61966-2-1 at
+// both precisions, its inverse, and the transform without sRGB (as relief light sets show it).
+TEST(LightFieldActorCore, DisplayTransform)
+{
+  EXPECT_FLOAT_EQ(ToSRGB(0.002f), 12.92f * 0.002f);
+  EXPECT_NEAR(ToSRGB(0.5), 1.055 * std::pow(0.5, 1.0 / 2.4) - 0.055, 1e-15);
+  EXPECT_FLOAT_EQ(ToSRGB(2.0f), 1.0f); // 1.055 - 0.055: 1 within rounding
+  EXPECT_EQ(ToSRGB(-1.0), 0.0);
+  for (double v : { 0.0, 0.001, 0.04, 0.2, 0.7, 1.0 })
+  {
+    EXPECT_NEAR(FromSRGB(ToSRGB(v)), v, 1e-12);
+  }
+  DisplayTransform linear;
+  linear.Exposure = 2.0;
+  linear.EncodeSRGB = false;
+  EXPECT_EQ(ApplyDisplayTransform(linear, 0.25), 0.5);
+  EXPECT_EQ(ApplyDisplayTransform(linear, 3.0), 1.0);
+  linear.ToneMap = ToneMapOperator::Reinhard;
+  EXPECT_EQ(ApplyDisplayTransform(linear, 0.5), 0.5);
+  EXPECT_NEAR(InvertDisplayTransform(linear, 0.5), 0.5, 1e-15);
 }
 
 TEST(LightFieldActorCore, RelativeErrorStatistics)
