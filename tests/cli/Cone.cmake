@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: BSD-3-Clause
 # mesolight cone on a generated depth image writes a cone map and refuses to overwrite its input.
-include("${CMAKE_CURRENT_LIST_DIR}/CliDepthImage.cmake")
+include("${CMAKE_CURRENT_LIST_DIR}/RunTool.cmake")
 cli_depth_image(48x48)
 foreach (type relaxed conservative)
   execute_process(COMMAND "${CLI}" cone "${WORK}/depth.png" --type ${type}

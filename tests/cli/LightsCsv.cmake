@@ -1,8 +1,8 @@
 # SPDX-License-Identifier: BSD-3-Clause
 # The lights CSV read back by the tool: `mesolight lights` writes it, `mesolight render
 # --lights-csv` lights the relief with it; a malformed CSV or two light sets fail with one line.
-file(REMOVE_RECURSE "${WORK}")
-file(MAKE_DIRECTORY "${WORK}")
+include("${CMAKE_CURRENT_LIST_DIR}/RunTool.cmake")
+cli_fresh_work()
 execute_process(COMMAND "${CLI}" lights procedural:sun --count 32 --out "${WORK}/lights.csv"
                 RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 if (NOT rc EQUAL 0)

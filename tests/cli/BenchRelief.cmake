@@ -3,8 +3,8 @@
 # path, two methods; the table's rows, the CSV and one chart per angle appear, and the relief
 # march is more accurate than plain texture mapping. Bad arguments exit with 2.
 cmake_minimum_required(VERSION 3.16) # quoted strings in if() are strings (CMP0054)
-file(REMOVE_RECURSE "${WORK}")
-file(MAKE_DIRECTORY "${WORK}")
+include("${CMAKE_CURRENT_LIST_DIR}/RunTool.cmake")
+cli_fresh_work()
 execute_process(COMMAND "${CLI}" bench relief --maps Bricks,file --angles 60 --size 160x160
                         --frames 1 --resolution 128 --methods texture,relief
                         --csv "${WORK}/sweep.csv" --plots "${WORK}"

@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: BSD-3-Clause
 # mesolight lights: the CSV has the documented header and one row per light; bad input fails.
-file(REMOVE_RECURSE "${WORK}")
-file(MAKE_DIRECTORY "${WORK}")
+include("${CMAKE_CURRENT_LIST_DIR}/RunTool.cmake")
+cli_fresh_work()
 execute_process(COMMAND "${CLI}" lights procedural:sun --count 16 --out "${WORK}/lights.csv"
                 RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 if (NOT rc EQUAL 0)

@@ -1,8 +1,8 @@
 # SPDX-License-Identifier: BSD-3-Clause
 # `mesolight bench light-set-actors` on a tiny sweep: it runs, prints the table and writes one CSV
 # row per configuration; the K = 2 + SH9 sphere beats VTK's headlight against the exact reference.
-file(REMOVE_RECURSE "${WORK}")
-file(MAKE_DIRECTORY "${WORK}")
+include("${CMAKE_CURRENT_LIST_DIR}/RunTool.cmake")
+cli_fresh_work()
 execute_process(COMMAND "${CLI}" bench light-set-actors --counts 2 --lights 64 --size 48
                         --samples 4 --frames 1 --frame-size 64 --shadow-map 256
                         --csv "${WORK}/bench.csv"
