@@ -2,15 +2,25 @@
 # How every GoogleTest executable registers its tests with CTest: one place, one policy.
 include(GoogleTest)
 
-# mesolight_discover_tests(<target> [<test property> <value>]...)
+# mesolight_discover_tests(<target> <area> [<test property> <value>]...)
+#
+# Each test is named <area>.<suite>.<case>: <area> is the module the program tests (Relief,
+# LightField, LightFieldActor, Scene, RayTracing, Lighting, ...), so `ctest -R '^LightField\.'` runs
+# one module's tests; the GoogleTest suite and case names are the program's own (what
+# --gtest_filter selects). The tool's tests are cli.* (tests/cli), the fuzz corpus replays fuzz.*,
+# the installed package's install.*, the cores-only build's cores.*.
 #
 # The test list is read when ctest starts (PRE_TEST), so building needs no display and no run of
 # the test programs. Listing loads every library a program links (VTK, Embree, OpenImageIO, TBB);
 # on a machine whose disk cache is cold that took 21 s here for one program, far past CMake's 5 s
 # default, and a listing that times out stops ctest before it runs any test (exit code 8, with
 # no test named as failed). Hence the long discovery timeout.
-function(mesolight_discover_tests target)
+function(mesolight_discover_tests target area)
+  if (NOT area MATCHES "^[A-Z][A-Za-z]+$")
+    message(FATAL_ERROR "mesolight_discover_tests(${target}): '${area}' is not a module's name")
+  endif ()
   gtest_discover_tests(${target}
+    TEST_PREFIX "${area}."
     DISCOVERY_MODE PRE_TEST
     DISCOVERY_TIMEOUT 300
     PROPERTIES ${ARGN})
