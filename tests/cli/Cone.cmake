@@ -3,11 +3,9 @@
 include("${CMAKE_CURRENT_LIST_DIR}/RunTool.cmake")
 cli_depth_image(48x48)
 foreach (type relaxed conservative)
-  execute_process(COMMAND "${CLI}" cone "${WORK}/depth.png" --type ${type}
-                          --out "${WORK}/cone-${type}.exr"
-                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if (NOT rc EQUAL 0 OR NOT EXISTS "${WORK}/cone-${type}.exr")
-    message(FATAL_ERROR "cone ${type} failed (rc ${rc}): ${out} ${err}")
+  cli_run(TRUE cone "${WORK}/depth.png" --type ${type} --out "${WORK}/cone-${type}.exr")
+  if (NOT EXISTS "${WORK}/cone-${type}.exr")
+    message(FATAL_ERROR "cone ${type} wrote no cone map: ${last_output}")
   endif ()
 endforeach ()
 cli_expect_failure("cone overwrote its own input" cone "${WORK}/depth.png" --out "${WORK}/depth.png")

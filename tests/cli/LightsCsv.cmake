@@ -3,35 +3,26 @@
 # --lights-csv` lights the relief with it; a malformed CSV or two light sets fail with one line.
 include("${CMAKE_CURRENT_LIST_DIR}/RunTool.cmake")
 cli_fresh_work()
-execute_process(COMMAND "${CLI}" lights procedural:sun --count 32 --out "${WORK}/lights.csv"
-                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-if (NOT rc EQUAL 0)
-  message(FATAL_ERROR "lights failed (rc ${rc}): ${out} ${err}")
-endif ()
-execute_process(COMMAND "${CLI}" render --offscreen --size 96x96 --resolution 64 --lights 0
-                        --lights-csv "${WORK}/lights.csv" --out "${WORK}/from-csv.png"
-                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-if (NOT rc EQUAL 0 OR NOT EXISTS "${WORK}/from-csv.png")
-  message(FATAL_ERROR "render --lights-csv failed (rc ${rc}): ${out} ${err}")
+cli_run(TRUE lights procedural:sun --count 32 --out "${WORK}/lights.csv")
+cli_run(TRUE render --offscreen --size 96x96 --resolution 64 --lights 0
+        --lights-csv "${WORK}/lights.csv" --out "${WORK}/from-csv.png")
+if (NOT EXISTS "${WORK}/from-csv.png")
+  message(FATAL_ERROR "render --lights-csv wrote no image: ${last_output}")
 endif ()
 file(WRITE "${WORK}/bad.csv" "x,y,z,r,g,b\n0,0,1,1,1,1\n")
-execute_process(COMMAND "${CLI}" render --offscreen --size 96x96 --resolution 64 --lights 0
-                        --lights-csv "${WORK}/bad.csv" --out "${WORK}/bad.png"
-                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-if (rc EQUAL 0 OR NOT err MATCHES "line 1: the header" OR EXISTS "${WORK}/bad.png")
-  message(FATAL_ERROR "a malformed CSV was not reported (rc ${rc}): ${err}")
+cli_execute(render --offscreen --size 96x96 --resolution 64 --lights 0
+            --lights-csv "${WORK}/bad.csv" --out "${WORK}/bad.png")
+if (cli_rc EQUAL 0 OR NOT cli_stderr MATCHES "line 1: the header" OR EXISTS "${WORK}/bad.png")
+  message(FATAL_ERROR "a malformed CSV was not reported (rc ${cli_rc}): ${cli_stderr}")
 endif ()
-execute_process(COMMAND "${CLI}" render --offscreen --environment procedural:sun
-                        --lights-csv "${WORK}/lights.csv" --out "${WORK}/both.png"
-                RESULT_VARIABLE rc OUTPUT_QUIET ERROR_VARIABLE err)
-if (NOT rc EQUAL 2 OR NOT err MATCHES "give one light set")
-  message(FATAL_ERROR "--environment with --lights-csv was accepted (rc ${rc}): ${err}")
+cli_execute(render --offscreen --environment procedural:sun --lights-csv "${WORK}/lights.csv"
+            --out "${WORK}/both.png")
+if (NOT cli_rc EQUAL 2 OR NOT cli_stderr MATCHES "give one light set")
+  message(FATAL_ERROR "--environment with --lights-csv was accepted (rc ${cli_rc}): ${cli_stderr}")
 endif ()
 # The CSV is an input: render never writes over it.
-execute_process(COMMAND "${CLI}" render --offscreen --lights-csv "${WORK}/lights.csv"
-                        --out "${WORK}/lights.csv"
-                RESULT_VARIABLE rc OUTPUT_QUIET ERROR_QUIET)
+cli_execute(render --offscreen --lights-csv "${WORK}/lights.csv" --out "${WORK}/lights.csv")
 file(STRINGS "${WORK}/lights.csv" lines LIMIT_COUNT 1)
-if (rc EQUAL 0 OR NOT lines STREQUAL "u,v,x,y,z,r,g,b")
-  message(FATAL_ERROR "render --out overwrote the light set (rc ${rc})")
+if (cli_rc EQUAL 0 OR NOT lines STREQUAL "u,v,x,y,z,r,g,b")
+  message(FATAL_ERROR "render --out overwrote the light set (rc ${cli_rc})")
 endif ()

@@ -33,11 +33,7 @@ cli_expect_error(2 "would overwrite"
 cli_expect_error(2 "would overwrite" bake "${user}" --out "${WORK}/hard.csv")
 cli_expect_unchanged("${user}")
 
-execute_process(COMMAND "${CLI}" vlf propagate --out "${WORK}/field.vlf" --directions 33 --rays 8
-                        --iterations 1 RESULT_VARIABLE rc OUTPUT_QUIET ERROR_VARIABLE err)
-if (NOT rc EQUAL 0)
-  message(FATAL_ERROR "vlf propagate failed (rc ${rc}): ${err}")
-endif ()
+cli_run(TRUE vlf propagate --out "${WORK}/field.vlf" --directions 33 --rays 8 --iterations 1)
 cli_remember("${WORK}/field.vlf")
 cli_expect_error(2 "would overwrite"
   vlf render "${WORK}/field.vlf" --out "${WORK}/field.vlf" --force --size 16x16)
@@ -80,8 +76,7 @@ cli_expect_error(0 "clamped to 1" cone "${user}" --out "${WORK}/cone.png")
 # 7. probe --merge: a 16-bit mask of 0.5 blends the two views (it was read as 32768, not 0.5).
 # The total irradiance (one median-cut light) is linear in the map, so a blend's lies strictly
 # between the two views' (the mask was clamped to 1: the first view only).
-execute_process(COMMAND "${CLI}" render --offscreen --size 48x48 --resolution 32 --lights 0
-                        --out "${WORK}/second.png" RESULT_VARIABLE rc OUTPUT_QUIET)
+cli_execute(render --offscreen --size 48x48 --resolution 32 --lights 0 --out "${WORK}/second.png")
 string(REPEAT "32768 " 64 row)
 string(REPEAT "${row}\n" 32 rows)
 file(WRITE "${WORK}/mask16.pgm" "P2\n64 32\n65535\n${rows}")

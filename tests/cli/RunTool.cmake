@@ -81,9 +81,8 @@ endfunction ()
 # by `mesolight render` (the input of the commands that read a depth image: bake, cone).
 function (cli_depth_image size)
   cli_fresh_work()
-  execute_process(COMMAND "${CLI}" render --offscreen --size ${size} --resolution 32
-                          --out "${WORK}/depth.png" RESULT_VARIABLE rc OUTPUT_QUIET)
-  if (NOT rc EQUAL 0)
-    message(FATAL_ERROR "could not make an input image (rc ${rc})")
+  cli_execute(render --offscreen --size ${size} --resolution 32 --out "${WORK}/depth.png")
+  if (NOT cli_rc EQUAL 0)
+    message(FATAL_ERROR "could not make an input image (rc ${cli_rc}): ${cli_stderr}")
   endif ()
 endfunction ()
