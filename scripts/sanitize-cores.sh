@@ -4,7 +4,7 @@
 # their unit tests that need no VTK and the fuzz corpus replays with AddressSanitizer +
 # UndefinedBehaviorSanitizer in ./build-sanitize-cores (-DMESOLIGHT_CORES_ONLY=ON: no VTK, a few
 # minutes cold where the whole suite under the sanitizers, scripts/sanitize.sh, takes about 40) and
-# runs them. Extra arguments go to ctest (e.g. -R VLF). Any sanitizer report fails its test.
+# runs them. Extra arguments go to ctest (e.g. -R LightField). Any sanitizer report fails its test.
 #   MESOLIGHT_SANITIZE_CORES_BUILD_DIR   build directory (default: ./build-sanitize-cores)
 #   MESOLIGHT_JOBS                       build jobs (default: nproc)
 #   MESOLIGHT_SANITIZE_CORES_SLOW=1      also run the tests labelled slow (about 13 minutes more)

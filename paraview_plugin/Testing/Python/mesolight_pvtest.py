@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """Shared pieces of the Mesolight plugin tests (pvbatch / pvpython).
 
-The scene mirrors tests/TestReliefAgainstDenseMesh.cxx: a procedural brick relief on the unit
+The scene mirrors vtkRelief/Testing/Cxx/TestReliefAgainstDenseMesh.cxx: a procedural brick relief on the unit
 square, drawn by the Relief Surface representation, against an independent reference: the same
 height field as a dense displaced mesh (one vertex per texel, Mesolight Height Field Mesh) drawn
 by ParaView's ordinary Surface representation, with the same camera, lights and colour.
@@ -19,7 +19,7 @@ import numpy as np
 SIZE = [400, 400]
 BACKGROUND = [1.0, 0.0, 1.0]  # magenta: never a grey of the white surface
 DEPTH_SCALE = 0.04
-# Thresholds (as in tests/TestReliefAgainstDenseMesh.cxx): met by a correct first-hit march,
+# Thresholds (as in vtkRelief/Testing/Cxx/TestReliefAgainstDenseMesh.cxx): met by a correct first-hit march,
 # missed by far by plain texture mapping or a flat surface.
 MAX_MEAN_COLOR_ERROR = 3.0      # 8-bit levels, over pixels covered in both images
 MAX_SILHOUETTE_MISMATCH = 1.0   # percent of the footprint covered by only one image

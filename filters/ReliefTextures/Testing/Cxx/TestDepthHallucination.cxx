@@ -2,7 +2,7 @@
 // Depth hallucination (core DepthHallucination and vtkDepthHallucinationFilter) on synthetic
 // photographs: the albedo is exactly (I_f - I_d) / I_c, a bump comes out as a hill and a pit as
 // a valley, and bad input gives one clear error. The path-traced reference is
-// tests/TestDepthHallucinationReference.cxx.
+// filters/ReliefTextures/Testing/Cxx/TestDepthHallucinationReference.cxx.
 #include "DepthHallucination.h"
 #include "vtkDepthHallucinationFilter.h"
 

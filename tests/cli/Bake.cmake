@@ -1,12 +1,11 @@
 # SPDX-License-Identifier: BSD-3-Clause
 # mesolight bake on a generated depth image: must write the relief texture, and must refuse to
 # overwrite its own input.
-include("${CMAKE_CURRENT_LIST_DIR}/CliDepthImage.cmake")
+include("${CMAKE_CURRENT_LIST_DIR}/RunTool.cmake")
 cli_depth_image(64x64)
-execute_process(COMMAND "${CLI}" bake "${WORK}/depth.png" --out "${WORK}/relief.exr"
-                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-if (NOT rc EQUAL 0 OR NOT EXISTS "${WORK}/relief.exr")
-  message(FATAL_ERROR "bake failed (rc ${rc}): ${out} ${err}")
+cli_run(TRUE bake "${WORK}/depth.png" --out "${WORK}/relief.exr")
+if (NOT EXISTS "${WORK}/relief.exr")
+  message(FATAL_ERROR "bake wrote no relief texture: ${last_output}")
 endif ()
 file(SIZE "${WORK}/depth.png" before)
 cli_expect_failure("bake overwrote its own input"

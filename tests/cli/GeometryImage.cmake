@@ -2,22 +2,9 @@
 # `mesolight render --geometry-image` as a user runs it: a float EXR geometry image (a plane,
 # RGB = XYZ) with a NaN hole made by oiiotool, regular and adaptive sampling, a colour image, the
 # procedural surfaces, and bad input with clear messages.
-file(REMOVE_RECURSE "${WORK}")
-file(MAKE_DIRECTORY "${WORK}")
+include("${CMAKE_CURRENT_LIST_DIR}/RunTool.cmake")
+cli_fresh_work()
 set(common --offscreen --size 96x96 --resolution 64)
-
-# Runs `mesolight ARGN`; the exit code must be CODE and stdout + stderr must contain NEEDLE.
-function (cli_expect code needle)
-  execute_process(COMMAND "${CLI}" ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out
-                  ERROR_VARIABLE err)
-  if (NOT "${rc}" STREQUAL "${code}")
-    message(FATAL_ERROR "mesolight ${ARGN}: exit '${rc}', expected ${code}\n${out}\n${err}")
-  endif ()
-  string(FIND "${out}${err}" "${needle}" at)
-  if (at EQUAL -1)
-    message(FATAL_ERROR "mesolight ${ARGN}: output lacks '${needle}':\n${out}\n${err}")
-  endif ()
-endfunction ()
 
 # The procedural surfaces need no data.
 cli_expect(0 "procedural:cylinder: 128 triangles (stride 8)" render ${common}

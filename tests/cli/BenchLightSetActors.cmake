@@ -1,15 +1,10 @@
 # SPDX-License-Identifier: BSD-3-Clause
 # `mesolight bench light-set-actors` on a tiny sweep: it runs, prints the table and writes one CSV
 # row per configuration; the K = 2 + SH9 sphere beats VTK's headlight against the exact reference.
-file(REMOVE_RECURSE "${WORK}")
-file(MAKE_DIRECTORY "${WORK}")
-execute_process(COMMAND "${CLI}" bench light-set-actors --counts 2 --lights 64 --size 48
-                        --samples 4 --frames 1 --frame-size 64 --shadow-map 256
-                        --csv "${WORK}/bench.csv"
-                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-if (NOT rc EQUAL 0)
-  message(FATAL_ERROR "bench light-set-actors failed (rc ${rc}): ${out} ${err}")
-endif ()
+include("${CMAKE_CURRENT_LIST_DIR}/RunTool.cmake")
+cli_fresh_work()
+cli_run(TRUE bench light-set-actors --counts 2 --lights 64 --size 48 --samples 4 --frames 1
+        --frame-size 64 --shadow-map 256 --csv "${WORK}/bench.csv")
 file(STRINGS "${WORK}/bench.csv" lines)
 list(LENGTH lines count)
 list(GET lines 0 header)

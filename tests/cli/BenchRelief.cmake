@@ -3,15 +3,13 @@
 # path, two methods; the table's rows, the CSV and one chart per angle appear, and the relief
 # march is more accurate than plain texture mapping. Bad arguments exit with 2.
 cmake_minimum_required(VERSION 3.16) # quoted strings in if() are strings (CMP0054)
-file(REMOVE_RECURSE "${WORK}")
-file(MAKE_DIRECTORY "${WORK}")
-execute_process(COMMAND "${CLI}" bench relief --maps Bricks,file --angles 60 --size 160x160
-                        --frames 1 --resolution 128 --methods texture,relief
-                        --csv "${WORK}/sweep.csv" --plots "${WORK}"
-                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-message("${out}")
-if (NOT rc EQUAL 0)
-  message(FATAL_ERROR "bench relief failed (rc ${rc}): ${err}")
+include("${CMAKE_CURRENT_LIST_DIR}/RunTool.cmake")
+cli_fresh_work()
+cli_execute(bench relief --maps Bricks,file --angles 60 --size 160x160 --frames 1
+            --resolution 128 --methods texture,relief --csv "${WORK}/sweep.csv" --plots "${WORK}")
+message("${cli_stdout}")
+if (NOT cli_rc EQUAL 0)
+  message(FATAL_ERROR "bench relief failed (rc ${cli_rc}): ${cli_stderr}")
 endif ()
 foreach (file sweep-stone-16bit.png relief-sweep-view60.png sweep.csv)
   if (NOT EXISTS "${WORK}/${file}")
@@ -94,8 +92,8 @@ foreach (map Bricks file\(stone16\))
 endforeach ()
 
 foreach (bad "--methods;no-such-method" "--size;12")
-  execute_process(COMMAND "${CLI}" bench relief ${bad} RESULT_VARIABLE rc OUTPUT_QUIET ERROR_QUIET)
-  if (NOT rc EQUAL 2)
-    message(FATAL_ERROR "bench relief ${bad} exited with ${rc}, not 2")
+  cli_execute(bench relief ${bad})
+  if (NOT cli_rc EQUAL 2)
+    message(FATAL_ERROR "bench relief ${bad} exited with ${cli_rc}, not 2")
   endif ()
 endforeach ()

@@ -3,24 +3,15 @@
 # known height field, `hallucinate` turns them into albedo and depth; bad input (swapped
 # photographs, different sizes, an output over an input, a missing file) fails with one clear
 # line and writes nothing.
-file(REMOVE_RECURSE "${WORK}")
-file(MAKE_DIRECTORY "${WORK}")
-function (run expect_success)
-  execute_process(COMMAND "${CLI}" ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if (expect_success AND NOT rc EQUAL 0)
-    message(FATAL_ERROR "'${ARGN}' failed (rc ${rc}): ${out} ${err}")
-  elseif (NOT expect_success AND rc EQUAL 0)
-    message(FATAL_ERROR "'${ARGN}' was accepted: ${out} ${err}")
-  endif ()
-  set(last_output "${out}${err}" PARENT_SCOPE)
-endfunction ()
+include("${CMAKE_CURRENT_LIST_DIR}/RunTool.cmake")
+cli_fresh_work()
 
-run(TRUE bench hallucinate --maps HemisphereTorus --size 48 --samples 8 --photos "${WORK}"
+cli_run(TRUE bench hallucinate --maps HemisphereTorus --size 48 --samples 8 --photos "${WORK}"
     --csv "${WORK}/bench.csv")
 if (NOT last_output MATCHES "HemisphereTorus +model")
   message(FATAL_ERROR "bench hallucinate printed no figures: ${last_output}")
 endif ()
-run(TRUE bench hallucinate --maps Stone --size 32 --samples 4 --photos "${WORK}")
+cli_run(TRUE bench hallucinate --maps Stone --size 32 --samples 4 --photos "${WORK}")
 set(d "${WORK}/HemisphereTorus-diffuse.exr")
 set(f "${WORK}/HemisphereTorus-flash.exr")
 set(c "${WORK}/HemisphereTorus-calibration.exr")
@@ -30,34 +21,34 @@ foreach (file IN ITEMS "${d}" "${f}" "${c}" "${WORK}/HemisphereTorus-true-depth.
   endif ()
 endforeach ()
 
-run(TRUE hallucinate "${d}" "${f}" --calibration "${c}" --albedo "${WORK}/albedo.exr"
+cli_run(TRUE hallucinate "${d}" "${f}" --calibration "${c}" --albedo "${WORK}/albedo.exr"
     --depth "${WORK}/depth.exr")
 if (NOT EXISTS "${WORK}/albedo.exr" OR NOT EXISTS "${WORK}/depth.exr"
     OR NOT last_output MATCHES "depth-scale")
   message(FATAL_ERROR "hallucinate wrote no albedo or depth: ${last_output}")
 endif ()
 # Without the card: a uniform flash, said so.
-run(TRUE hallucinate "${d}" "${f}" --depth "${WORK}/depth-uniform.exr")
+cli_run(TRUE hallucinate "${d}" "${f}" --depth "${WORK}/depth-uniform.exr")
 if (NOT last_output MATCHES "uniform flash")
   message(FATAL_ERROR "no note of the uniform flash: ${last_output}")
 endif ()
 
-run(FALSE hallucinate "${f}" "${d}" --depth "${WORK}/swapped.exr")
+cli_run(FALSE hallucinate "${f}" "${d}" --depth "${WORK}/swapped.exr")
 if (NOT last_output MATCHES "darker" OR EXISTS "${WORK}/swapped.exr")
   message(FATAL_ERROR "swapped photographs: ${last_output}")
 endif ()
-run(FALSE hallucinate "${d}" "${WORK}/Stone-flash.exr" --depth "${WORK}/sizes.exr")
+cli_run(FALSE hallucinate "${d}" "${WORK}/Stone-flash.exr" --depth "${WORK}/sizes.exr")
 if (NOT last_output MATCHES "differ in size" OR EXISTS "${WORK}/sizes.exr")
   message(FATAL_ERROR "photographs of different sizes: ${last_output}")
 endif ()
 file(SIZE "${f}" before)
-run(FALSE hallucinate "${d}" "${f}" --depth "${f}")
+cli_run(FALSE hallucinate "${d}" "${f}" --depth "${f}")
 file(SIZE "${f}" after)
 if (NOT before EQUAL after OR NOT last_output MATCHES "would overwrite")
   message(FATAL_ERROR "the depth went over the flash photograph: ${last_output}")
 endif ()
-run(FALSE hallucinate "${WORK}/missing.exr" "${f}" --depth "${WORK}/missing-depth.exr")
+cli_run(FALSE hallucinate "${WORK}/missing.exr" "${f}" --depth "${WORK}/missing-depth.exr")
 if (NOT last_output MATCHES "cannot read the diffuse photograph")
   message(FATAL_ERROR "missing file: ${last_output}")
 endif ()
-run(FALSE hallucinate "${d}" "${f}")
+cli_run(FALSE hallucinate "${d}" "${f}")

@@ -3,18 +3,17 @@
 # outputs are asserted): each exits 0 and writes its CSV with the documented header
 # and the expected rows, the charts where asked, and one sanity relation per command.
 cmake_minimum_required(VERSION 3.16) # quoted strings in if() are strings (CMP0054)
-file(REMOVE_RECURSE "${WORK}")
-file(MAKE_DIRECTORY "${WORK}")
+include("${CMAKE_CURRENT_LIST_DIR}/RunTool.cmake")
+cli_fresh_work()
 
 # run(<name> <args>...): runs the tool, fails the test on a non-zero exit.
 function (run name)
-  execute_process(COMMAND "${CLI}" ${ARGN}
-                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  file(WRITE "${WORK}/${name}.log" "${out}\n${err}")
-  if (NOT rc EQUAL 0)
-    message(FATAL_ERROR "mesolight ${ARGN} failed (rc ${rc}):\n${out}\n${err}")
+  cli_execute(${ARGN})
+  file(WRITE "${WORK}/${name}.log" "${cli_stdout}\n${cli_stderr}")
+  if (NOT cli_rc EQUAL 0)
+    message(FATAL_ERROR "mesolight ${ARGN} failed (rc ${cli_rc}):\n${cli_stdout}\n${cli_stderr}")
   endif ()
-  set(output "${out}" PARENT_SCOPE)
+  set(output "${cli_stdout}" PARENT_SCOPE)
 endfunction ()
 
 # check_csv(<file> <header> <minimum data rows>): the header line and the row count.

@@ -2,23 +2,8 @@
 # What an adversarial user tried: degenerate inputs end with an error, never a crash; no
 # command overwrites its input (by name or through a symbolic or hard link) or writes anything
 # before every option is checked; writers' failures are reported; memory budgets refuse early.
-include("${CMAKE_CURRENT_LIST_DIR}/CliDepthImage.cmake")
+include("${CMAKE_CURRENT_LIST_DIR}/RunTool.cmake")
 cli_depth_image(48x48) # ${WORK}/depth.png, also used as an "environment" and as a user's file
-
-# Runs `mesolight ARGN`; the exit code must be exactly CODE (a crash is a signal name, not a
-# number) and stderr must contain NEEDLE.
-function (cli_expect code needle)
-  execute_process(COMMAND "${CLI}" ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out
-                  ERROR_VARIABLE err)
-  if (NOT "${rc}" STREQUAL "${code}")
-    message(FATAL_ERROR "mesolight ${ARGN}: exit '${rc}', expected ${code}\n${out}\n${err}")
-  endif ()
-  string(FIND "${err}" "${needle}" at)
-  if (at EQUAL -1)
-    message(FATAL_ERROR "mesolight ${ARGN}: stderr lacks '${needle}':\n${err}")
-  endif ()
-  set(last_stdout "${out}" PARENT_SCOPE)
-endfunction ()
 
 # FILE must still have the content it had when cli_remember(FILE) was called.
 function (cli_remember file)
@@ -33,84 +18,79 @@ function (cli_expect_unchanged file)
 endfunction ()
 
 # 1. Degenerate relief walls: a clear error (exit 1), no SIGSEGV.
-cli_expect(1 "at least 2x2" render --offscreen --size 32x32 --resolution 1 --out "${WORK}/r1.png")
+cli_expect_error(1 "at least 2x2" render --offscreen --size 32x32 --resolution 1 --out "${WORK}/r1.png")
 
 # 2. Inputs are never outputs, through links too; checked before any work.
 set(user "${WORK}/depth.png")
 cli_remember("${user}")
-cli_expect(2 "would overwrite" lights "${user}" --count 4 --out "${user}")
+cli_expect_error(2 "would overwrite" lights "${user}" --count 4 --out "${user}")
 file(CREATE_LINK "${user}" "${WORK}/symbolic.csv" SYMBOLIC)
-cli_expect(2 "would overwrite" lights "${user}" --count 4 --out "${WORK}/symbolic.csv")
+cli_expect_error(2 "would overwrite" lights "${user}" --count 4 --out "${WORK}/symbolic.csv")
 file(CREATE_LINK "${user}" "${WORK}/hard.csv")
-cli_expect(2 "would overwrite" lights "${user}" --count 4 --out "${WORK}/hard.csv")
-cli_expect(2 "would overwrite"
+cli_expect_error(2 "would overwrite" lights "${user}" --count 4 --out "${WORK}/hard.csv")
+cli_expect_error(2 "would overwrite"
   render --offscreen --size 32x32 --resolution 16 --environment "${user}" --out "${user}")
-cli_expect(2 "would overwrite" bake "${user}" --out "${WORK}/hard.csv")
+cli_expect_error(2 "would overwrite" bake "${user}" --out "${WORK}/hard.csv")
 cli_expect_unchanged("${user}")
 
-execute_process(COMMAND "${CLI}" vlf propagate --out "${WORK}/field.vlf" --directions 33 --rays 8
-                        --iterations 1 RESULT_VARIABLE rc OUTPUT_QUIET ERROR_VARIABLE err)
-if (NOT rc EQUAL 0)
-  message(FATAL_ERROR "vlf propagate failed (rc ${rc}): ${err}")
-endif ()
+cli_run(TRUE vlf propagate --out "${WORK}/field.vlf" --directions 33 --rays 8 --iterations 1)
 cli_remember("${WORK}/field.vlf")
-cli_expect(2 "would overwrite"
+cli_expect_error(2 "would overwrite"
   vlf render "${WORK}/field.vlf" --out "${WORK}/field.vlf" --force --size 16x16)
-cli_expect(2 "would overwrite"
+cli_expect_error(2 "would overwrite"
   vlf render "${WORK}/field.vlf" --mode geometry --out "${WORK}/field.vlf" --force --size 16x16)
 cli_expect_unchanged("${WORK}/field.vlf")
 
 # 3. Every option is checked before anything is written.
 file(WRITE "${WORK}/t.png" "a user's file")
 cli_remember("${WORK}/t.png")
-cli_expect(2 "--tolerance"
+cli_expect_error(2 "--tolerance"
   trace --offscreen --scene cornell --width 8 --height 8 --samples 1 --tolerance nan
   --out "${WORK}/t.png")
 cli_expect_unchanged("${WORK}/t.png")
-cli_expect(2 "needs a value" lights procedural:sky --count= --out "${WORK}/l.csv")
-cli_expect(2 "needs a value" render --offscreen --depth-scale= --out "${WORK}/d.png")
+cli_expect_error(2 "needs a value" lights procedural:sky --count= --out "${WORK}/l.csv")
+cli_expect_error(2 "needs a value" render --offscreen --depth-scale= --out "${WORK}/d.png")
 if (EXISTS "${WORK}/l.csv" OR EXISTS "${WORK}/d.png")
   message(FATAL_ERROR "an empty option value was taken as the default")
 endif ()
 
 # 4. Missing directories are reported up front, and a writer's failure is never "wrote".
-cli_expect(2 "does not exist" bake "${user}" --out "${WORK}/no-such-dir/relief.png")
-cli_expect(2 "does not exist" vlf propagate --out "${WORK}/no-such-dir/f.vlf" --directions 33
+cli_expect_error(2 "does not exist" bake "${user}" --out "${WORK}/no-such-dir/relief.png")
+cli_expect_error(2 "does not exist" vlf propagate --out "${WORK}/no-such-dir/f.vlf" --directions 33
   --rays 8 --iterations 1)
-cli_expect(2 "does not exist" trace --offscreen --scene cornell --width 8 --height 8 --samples 1
+cli_expect_error(2 "does not exist" trace --offscreen --scene cornell --width 8 --height 8 --samples 1
   --out "${WORK}/c.png" --exr "${WORK}/no-such-dir/c.exr")
 if (EXISTS "${WORK}/c.png")
   message(FATAL_ERROR "trace wrote its PNG before finding --exr unwritable")
 endif ()
 
 # 5. Memory budgets refuse before allocating, with the size needed (exit 1, no abort).
-cli_expect(1 "needs about" bake "${user}" --out "${WORK}/relief.exr" --memory-budget 0.00001)
-cli_expect(1 "needs about" cone "${user}" --out "${WORK}/cone.exr" --memory-budget 0.00001)
-cli_expect(1 "needs about"
+cli_expect_error(1 "needs about" bake "${user}" --out "${WORK}/relief.exr" --memory-budget 0.00001)
+cli_expect_error(1 "needs about" cone "${user}" --out "${WORK}/cone.exr" --memory-budget 0.00001)
+cli_expect_error(1 "needs about"
   lights procedural:sky --resolution 64 --count 4 --out "${WORK}/l.csv" --memory-budget 0.00001)
 
 # 6. A cone map in an integer format says how many ratios it clamps.
-cli_expect(0 "clamped to 1" cone "${user}" --out "${WORK}/cone.png")
+cli_expect_error(0 "clamped to 1" cone "${user}" --out "${WORK}/cone.png")
 
 # 7. probe --merge: a 16-bit mask of 0.5 blends the two views (it was read as 32768, not 0.5).
 # The total irradiance (one median-cut light) is linear in the map, so a blend's lies strictly
 # between the two views' (the mask was clamped to 1: the first view only).
-execute_process(COMMAND "${CLI}" render --offscreen --size 48x48 --resolution 32 --lights 0
-                        --out "${WORK}/second.png" RESULT_VARIABLE rc OUTPUT_QUIET)
+cli_execute(render --offscreen --size 48x48 --resolution 32 --lights 0 --out "${WORK}/second.png")
 string(REPEAT "32768 " 64 row)
 string(REPEAT "${row}\n" 32 rows)
 file(WRITE "${WORK}/mask16.pgm" "P2\n64 32\n65535\n${rows}")
 function (cli_total_red name)
-  cli_expect(0 "" lights "${WORK}/${name}.exr" --count 1 --out "${WORK}/${name}.csv")
+  cli_expect_error(0 "" lights "${WORK}/${name}.exr" --count 1 --out "${WORK}/${name}.csv")
   file(STRINGS "${WORK}/${name}.csv" rows)
   list(GET rows 1 row)
   string(REPLACE "," ";" row "${row}")
   list(GET row 5 red)
   set(red_${name} "${red}" PARENT_SCOPE)
 endfunction ()
-cli_expect(0 "" probe "${user}" --width 64 --out "${WORK}/first.exr")
-cli_expect(0 "" probe "${WORK}/second.png" --width 64 --out "${WORK}/second.exr")
-cli_expect(0 "" probe "${user}" --merge "${WORK}/second.png" --mask "${WORK}/mask16.pgm"
+cli_expect_error(0 "" probe "${user}" --width 64 --out "${WORK}/first.exr")
+cli_expect_error(0 "" probe "${WORK}/second.png" --width 64 --out "${WORK}/second.exr")
+cli_expect_error(0 "" probe "${user}" --merge "${WORK}/second.png" --mask "${WORK}/mask16.pgm"
   --width 64 --out "${WORK}/merged.exr")
 cli_total_red(first)
 cli_total_red(second)
@@ -127,14 +107,14 @@ if (NOT (red_merged GREATER low AND red_merged LESS high)) # strictly: not one v
 endif ()
 
 # 8. probe estimates its memory before converting (--width 32768 needed 12.8 GB unannounced).
-cli_expect(1 "needs about" probe "${user}" --width 32768 --out "${WORK}/huge.exr"
+cli_expect_error(1 "needs about" probe "${user}" --width 32768 --out "${WORK}/huge.exr"
   --memory-budget 1)
 
 # 9. A light field that could never shoot (every direction along the emitter, or the room shrunk
 # below a line cell by one far triangle) is refused before propagating, not saved dark.
-cli_expect(1 "so few directions" vlf propagate --out "${WORK}/three.vlf" --directions 3 --rays 8)
-file(READ "${CMAKE_CURRENT_LIST_DIR}/../examples/data/cornell-box.obj" room)
-string(REPLACE "mtllib cornell-box.mtl" "mtllib ${CMAKE_CURRENT_LIST_DIR}/../examples/data/cornell-box.mtl" room "${room}")
+cli_expect_error(1 "so few directions" vlf propagate --out "${WORK}/three.vlf" --directions 3 --rays 8)
+file(READ "${CMAKE_CURRENT_LIST_DIR}/../../examples/data/cornell-box.obj" room)
+string(REPLACE "mtllib cornell-box.mtl" "mtllib ${CMAKE_CURRENT_LIST_DIR}/../../examples/data/cornell-box.mtl" room "${room}")
 string(REGEX MATCHALL "\nv " vertices "${room}")
 list(LENGTH vertices count)
 math(EXPR a "${count} + 1")
@@ -142,7 +122,7 @@ math(EXPR b "${count} + 2")
 math(EXPR c "${count} + 3")
 file(WRITE "${WORK}/far.obj"
   "${room}\nv 1000000 0 0\nv 1001000 0 0\nv 1000000 1000 0\nf ${a} ${b} ${c}\n")
-cli_expect(1 "smaller than a line cell" vlf propagate "${WORK}/far.obj" --out "${WORK}/far.vlf")
+cli_expect_error(1 "smaller than a line cell" vlf propagate "${WORK}/far.obj" --out "${WORK}/far.vlf")
 if (EXISTS "${WORK}/three.vlf" OR EXISTS "${WORK}/far.vlf")
   message(FATAL_ERROR "a field that shoots nothing was written")
 endif ()
@@ -151,9 +131,9 @@ endif ()
 # .mtl of that name is never replaced.
 file(WRITE "${WORK}/users.mtl" "newmtl mine\n")
 cli_remember("${WORK}/users.mtl")
-cli_expect(1 "users.mtl: exists" trace --scene cornell --export-obj "${WORK}/users.obj")
+cli_expect_error(1 "users.mtl: exists" trace --scene cornell --export-obj "${WORK}/users.obj")
 cli_expect_unchanged("${WORK}/users.mtl")
-cli_expect(0 "" trace --scene cornell --export-obj "${WORK}/box.obj")
+cli_expect_error(0 "" trace --scene cornell --export-obj "${WORK}/box.obj")
 file(STRINGS "${WORK}/box.mtl" emitters REGEX "^Ke [1-9]")
 if (NOT emitters)
   message(FATAL_ERROR "box.mtl has no emitter")
