@@ -70,7 +70,7 @@ vtkSmartPointer<vtkPolyData> ObjectPolyData(const vlf::ObjectMesh& mesh)
 {
   vtkNew<vtkPoints> points;
   points->SetDataTypeToFloat();
-  for (const glm::vec3& p : mesh.Points)
+  for (const glm::vec3& p : mesh.Positions)
   {
     points->InsertNextPoint(p.x, p.y, p.z);
   }
@@ -83,7 +83,7 @@ vtkSmartPointer<vtkPolyData> ObjectPolyData(const vlf::ObjectMesh& mesh)
   auto poly = vtkSmartPointer<vtkPolyData>::New();
   poly->SetPoints(points);
   poly->SetPolys(polys);
-  if (mesh.Normals.size() == mesh.Points.size())
+  if (mesh.Normals.size() == mesh.Positions.size())
   {
     vtkNew<vtkFloatArray> normals;
     normals->SetName("Normals");
@@ -187,7 +187,7 @@ int SetUpObject(const CommandLine& cl, const char* command, vtkLightFieldActor* 
     try
     {
       const mesolight::ObjSceneRead read = mesolight::ReadObjScene(name);
-      mesh.Points = read.Scene.Positions;
+      mesh.Positions = read.Scene.Positions;
       mesh.Triangles.assign(read.Scene.Triangles.begin(), read.Scene.Triangles.end());
     }
     catch (const std::exception& e)

@@ -313,14 +313,14 @@ int vtkLightFieldGatherFilter::RequestData(
 
   vlf::ObjectMesh mesh;
   const vtkIdType n = input->GetNumberOfPoints();
-  mesh.Points.resize(static_cast<std::size_t>(n));
+  mesh.Positions.resize(static_cast<std::size_t>(n));
   mesh.Normals.resize(static_cast<std::size_t>(n));
   for (vtkIdType i = 0; i < n; ++i)
   {
     double p[3], m[3];
     input->GetPoint(i, p);
     normals->GetTuple(i, m);
-    mesh.Points[i] = glm::vec3(p[0], p[1], p[2]);
+    mesh.Positions[i] = glm::vec3(p[0], p[1], p[2]);
     mesh.Normals[i] = glm::vec3(m[0], m[1], m[2]);
   }
   // Polygons as fans (only the normals repair and the placement checks use the triangles).
@@ -336,7 +336,7 @@ int vtkLightFieldGatherFilter::RequestData(
   }
   for (int c = 0; c < 3; ++c)
   {
-    mesh.Kd[c] = static_cast<float>(std::min(1.0, std::max(0.0, this->Reflectance[c])));
+    mesh.Diffuse[c] = static_cast<float>(std::min(1.0, std::max(0.0, this->Reflectance[c])));
   }
 
   vlf::GatherSettings settings;

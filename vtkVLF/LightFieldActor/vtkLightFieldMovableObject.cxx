@@ -57,12 +57,12 @@ vlf::ObjectMesh ReadObjectMesh(vtkPolyData* input, vtkActor* object)
   {
     return mesh;
   }
-  mesh.Points.resize(static_cast<std::size_t>(output->GetNumberOfPoints()));
+  mesh.Positions.resize(static_cast<std::size_t>(output->GetNumberOfPoints()));
   for (vtkIdType i = 0; i < output->GetNumberOfPoints(); ++i)
   {
     double p[3];
     output->GetPoint(i, p);
-    mesh.Points[static_cast<std::size_t>(i)] = glm::vec3(p[0], p[1], p[2]);
+    mesh.Positions[static_cast<std::size_t>(i)] = glm::vec3(p[0], p[1], p[2]);
   }
   vtkCellArray* polys = output->GetPolys();
   const vtkIdType* ids = nullptr;
@@ -80,7 +80,7 @@ vlf::ObjectMesh ReadObjectMesh(vtkPolyData* input, vtkActor* object)
     normals->GetNumberOfTuples() == output->GetNumberOfPoints();
   if (useNormals)
   {
-    mesh.Normals.resize(mesh.Points.size());
+    mesh.Normals.resize(mesh.Positions.size());
     for (vtkIdType i = 0; i < output->GetNumberOfPoints() && useNormals; ++i)
     {
       double v[3];
@@ -100,7 +100,7 @@ vlf::ObjectMesh ReadObjectMesh(vtkPolyData* input, vtkActor* object)
   const double k = object->GetProperty()->GetDiffuse();
   for (int c = 0; c < 3; ++c)
   {
-    mesh.Kd[c] = static_cast<float>(std::min(1.0, std::max(0.0, kd[c] * k)));
+    mesh.Diffuse[c] = static_cast<float>(std::min(1.0, std::max(0.0, kd[c] * k)));
   }
   return mesh;
 }
@@ -392,10 +392,10 @@ void vtkLightFieldMovableObject::Trace(
   // or the subdivision changed; a move changes its transform only.
   const vlf::ShadedObject& shaded = this->Gatherer->Result();
   if (this->TracedMesh != this->MeshVersion || this->TracedSubdivision != settings.Subdivision ||
-    tracer.Object().Points.size() != shaded.Mesh.Points.size())
+    tracer.Object().Positions.size() != shaded.Mesh.Positions.size())
   {
     vlf::ObjectMesh model =
-      settings.Subdivision == 0 && shaded.Mesh.Points.size() == this->Model.Points.size()
+      settings.Subdivision == 0 && shaded.Mesh.Positions.size() == this->Model.Positions.size()
       ? this->Model
       : vlf::TransformMesh(shaded.Mesh, glm::inverse(placement));
     tracer.SetObject(model);
@@ -411,7 +411,7 @@ std::string vtkLightFieldMovableObject::Check(
   const vlf::ObjectMesh& unit, const vlf::WalkthroughTracer& tracer)
 {
   // Outside the field's unit sphere nothing gathered is meaningful.
-  for (const glm::vec3& p : unit.Points)
+  for (const glm::vec3& p : unit.Positions)
   {
     if (glm::length(p) > 1.0f)
     {
@@ -423,12 +423,12 @@ std::string vtkLightFieldMovableObject::Check(
   glm::vec3 lower, upper;
   unit.Bounds(lower, upper);
   const glm::vec3 centre = 0.5f * (lower + upper);
-  const std::size_t step = std::max<std::size_t>(1, unit.Points.size() / 256);
-  for (std::size_t i = 0; i < unit.Points.size(); i += step)
+  const std::size_t step = std::max<std::size_t>(1, unit.Positions.size() / 256);
+  for (std::size_t i = 0; i < unit.Positions.size(); i += step)
   {
     mesolight::SceneRay ray;
     ray.Origin = centre;
-    ray.Direction = unit.Points[i] - centre;
+    ray.Direction = unit.Positions[i] - centre;
     ray.TFar = 0.999f;
     if (glm::length(ray.Direction) > 0.0f &&
       tracer.Embree().Intersect(ray).Triangle != mesolight::SceneHit::None)
