@@ -15,7 +15,7 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkProperty.h"
-#include "vtkTriangleFilter.h"
+#include "vtkTriangleSceneConverter.h"
 
 #include "IrradianceVolume.h"
 #include "LightField.h"
@@ -44,52 +44,15 @@ double SecondsSince(Clock::time_point t)
 // area-weighted ones), and its reflectance from the property's diffuse colour.
 vlf::ObjectMesh ReadObjectMesh(vtkPolyData* input, vtkActor* object)
 {
-  vtkNew<vtkPolyData> shallow;
-  shallow->ShallowCopy(input); // the filter below never touches the user's polydata
-  vtkNew<vtkTriangleFilter> triangles;
-  triangles->SetInputData(shallow);
-  triangles->PassVertsOff();
-  triangles->PassLinesOff();
-  triangles->Update();
-  vtkPolyData* output = triangles->GetOutput();
   vlf::ObjectMesh mesh;
-  if (!output->GetPoints())
+  vtkTriangleSceneConverter::ToTriangleMesh(input, mesh);
+  mesh.TextureCoordinates.clear(); // the object is shaded per point, untextured
+  bool useNormals = !mesh.Normals.empty();
+  for (glm::vec3& normal : mesh.Normals)
   {
-    return mesh;
-  }
-  mesh.Positions.resize(static_cast<std::size_t>(output->GetNumberOfPoints()));
-  for (vtkIdType i = 0; i < output->GetNumberOfPoints(); ++i)
-  {
-    double p[3];
-    output->GetPoint(i, p);
-    mesh.Positions[static_cast<std::size_t>(i)] = glm::vec3(p[0], p[1], p[2]);
-  }
-  vtkCellArray* polys = output->GetPolys();
-  const vtkIdType* ids = nullptr;
-  vtkIdType n = 0;
-  for (polys->InitTraversal(); polys->GetNextCell(n, ids);)
-  {
-    if (n == 3)
-    {
-      mesh.Triangles.emplace_back(static_cast<unsigned>(ids[0]), static_cast<unsigned>(ids[1]),
-        static_cast<unsigned>(ids[2]));
-    }
-  }
-  vtkDataArray* normals = output->GetPointData()->GetNormals();
-  bool useNormals = normals && normals->GetNumberOfComponents() == 3 &&
-    normals->GetNumberOfTuples() == output->GetNumberOfPoints();
-  if (useNormals)
-  {
-    mesh.Normals.resize(mesh.Positions.size());
-    for (vtkIdType i = 0; i < output->GetNumberOfPoints() && useNormals; ++i)
-    {
-      double v[3];
-      normals->GetTuple(i, v);
-      const glm::vec3 nv(v[0], v[1], v[2]);
-      const float length = glm::length(nv);
-      useNormals = std::isfinite(length) && length > 0.0f;
-      mesh.Normals[static_cast<std::size_t>(i)] = useNormals ? nv / length : nv;
-    }
+    const float length = glm::length(normal);
+    useNormals = useNormals && std::isfinite(length) && length > 0.0f;
+    normal = useNormals ? normal / length : normal;
   }
   if (!useNormals)
   {
