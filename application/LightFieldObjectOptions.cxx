@@ -5,6 +5,7 @@
 #include "OutputFile.h"
 
 #include "vtkLightFieldActor.h"
+#include "vtkTriangleSceneConverter.h"
 
 #include "ObjScene.h"
 #include "ObjectGatherer.h"
@@ -15,10 +16,6 @@
 #include "Snapshot.h" // FileExists
 #include "TriangleScene.h"
 
-#include <vtkCellArray.h>
-#include <vtkFloatArray.h>
-#include <vtkPointData.h>
-#include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkProperty.h>
 #include <vtkRenderer.h>
@@ -68,33 +65,7 @@ void ApplyPlacement(vtkActor* object, const ObjectPlacement& p)
 
 vtkSmartPointer<vtkPolyData> ObjectPolyData(const vlf::ObjectMesh& mesh)
 {
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToFloat();
-  for (const glm::vec3& p : mesh.Points)
-  {
-    points->InsertNextPoint(p.x, p.y, p.z);
-  }
-  vtkNew<vtkCellArray> polys;
-  for (const glm::uvec3& t : mesh.Triangles)
-  {
-    const vtkIdType ids[3] = { t.x, t.y, t.z };
-    polys->InsertNextCell(3, ids);
-  }
-  auto poly = vtkSmartPointer<vtkPolyData>::New();
-  poly->SetPoints(points);
-  poly->SetPolys(polys);
-  if (mesh.Normals.size() == mesh.Points.size())
-  {
-    vtkNew<vtkFloatArray> normals;
-    normals->SetName("Normals");
-    normals->SetNumberOfComponents(3);
-    for (const glm::vec3& n : mesh.Normals)
-    {
-      normals->InsertNextTuple3(n.x, n.y, n.z);
-    }
-    poly->GetPointData()->SetNormals(normals);
-  }
-  return poly;
+  return vtkTriangleSceneConverter::MeshToPolyData(mesh);
 }
 
 int SetUpObject(const CommandLine& cl, const char* command, vtkLightFieldActor* scene,
@@ -187,7 +158,7 @@ int SetUpObject(const CommandLine& cl, const char* command, vtkLightFieldActor* 
     try
     {
       const mesolight::ObjSceneRead read = mesolight::ReadObjScene(name);
-      mesh.Points = read.Scene.Positions;
+      mesh.Positions = read.Scene.Positions;
       mesh.Triangles.assign(read.Scene.Triangles.begin(), read.Scene.Triangles.end());
     }
     catch (const std::exception& e)

@@ -271,7 +271,7 @@ int Render(const std::vector<std::string>& args)
     const mesolight::vlf::ShadedObject* shaded = vtkLightFieldActorCore::GetShadedObject(actor);
     std::cout << "object: " << cl.Get("--object") << ", shading " << cl.Get("--shading")
               << ", gather " << 1000.0 * actor->GetLastGatherSeconds() << " ms, "
-              << (shaded ? shaded->Mesh.Points.size() : 0) << " points";
+              << (shaded ? shaded->Mesh.Positions.size() : 0) << " points";
     if (actor->GetObjectIrradianceVolume() > 0)
     {
       std::cout << " from an irradiance volume of " << actor->GetObjectIrradianceVolume()
@@ -631,7 +631,7 @@ int View(const std::vector<std::string>& args)
            << " frames; per move: object update " << 1000.0 * update / std::max(1, updates)
            << " ms, of which gathering " << 1000.0 * gather / std::max(1, updates) << " ms ("
            << (vtkLightFieldActorCore::GetShadedObject(actor)
-                  ? vtkLightFieldActorCore::GetShadedObject(actor)->Mesh.Points.size()
+                  ? vtkLightFieldActorCore::GetShadedObject(actor)->Mesh.Positions.size()
                   : 0)
            << " points); frames without a move " << 1000.0 * still / std::max(1, frames - updates)
            << " ms\n";

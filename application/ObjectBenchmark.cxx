@@ -223,7 +223,7 @@ int Bench(const std::vector<std::string>& args)
                     << "\n";
           return 1;
         }
-        row.Points = shaded->Mesh.Points.size();
+        row.Points = shaded->Mesh.Positions.size();
         row.GatheredFraction +=
           static_cast<double>(shaded->GatheredPoints) / std::max<std::size_t>(1, row.Points);
         row.FrameMs += ms;

@@ -14,6 +14,7 @@
 #include "vtkLightSetLighting.h"
 #include "vtkMedianCutLights.h"
 #include "vtkProceduralEnvironmentSource.h"
+#include "vtkTriangleSceneConverter.h"
 
 #include <vtkActor.h>
 #include <vtkAppendPolyData.h>
@@ -112,27 +113,12 @@ TriangleScene ToTriangles(const LightSetActorsScene& scene)
   SceneMaterial material;
   material.Diffuse = glm::vec3(static_cast<float>(scene.Options.Albedo));
   const auto id = t.AddMaterial(material);
-  vtkPolyData* g = scene.Geometry;
-  vtkDataArray* normals = g->GetPointData()->GetNormals();
-  for (vtkIdType k = 0; k < g->GetNumberOfPoints(); ++k)
+  vtkTriangleSceneConverter::ToTriangleMesh(scene.Geometry, t);
+  for (glm::vec3& n : t.Normals)
   {
-    double p[3];
-    g->GetPoint(k, p);
-    t.Positions.emplace_back(p[0], p[1], p[2]);
-    const double* n = normals->GetTuple3(k);
-    t.Normals.push_back(glm::normalize(glm::vec3(n[0], n[1], n[2])));
+    n = glm::normalize(n);
   }
-  vtkCellArray* polys = g->GetPolys();
-  vtkIdType count = 0;
-  const vtkIdType* ids = nullptr;
-  for (polys->InitTraversal(); polys->GetNextCell(count, ids);)
-  {
-    if (count == 3)
-    {
-      t.Triangles.emplace_back(ids[0], ids[1], ids[2]);
-      t.MaterialIds.push_back(id);
-    }
-  }
+  t.MaterialIds.assign(t.Triangles.size(), id);
   return t;
 }
 

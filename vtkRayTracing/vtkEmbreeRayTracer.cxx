@@ -26,7 +26,7 @@
 #include "vtkSphereSource.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkTexture.h"
-#include "vtkTriangleFilter.h"
+#include "vtkTriangleSceneConverter.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkWeakPointer.h"
 
@@ -399,19 +399,10 @@ int vtkEmbreeRayTracer::RequestData(
       }
       continue;
     }
-    vtkNew<vtkTriangleFilter> triangles;
-    triangles->SetInputData(input);
-    triangles->PassVertsOff();
-    triangles->PassLinesOff();
-    triangles->Update();
-    vtkPolyData* mesh = triangles->GetOutput();
-    vtkPoints* points = mesh->GetPoints();
-    vtkDataArray* normals = mesh->GetPointData()->GetNormals();
-    vtkDataArray* tcoords = mesh->GetPointData()->GetTCoords();
-    if (tcoords && tcoords->GetNumberOfComponents() < 2)
-    {
-      tcoords = nullptr;
-    }
+    mesolight::TriangleMesh mesh;
+    vtkTriangleSceneConverter::ToTriangleMesh(input, mesh);
+    const bool normals = !mesh.Normals.empty();
+    const bool tcoords = !mesh.TextureCoordinates.empty();
     if (!tcoords &&
       (material.DiffuseMap || material.SpecularMap || material.AmbientMap ||
         material.ShininessMap || material.BumpMap || material.RoughnessMap))
@@ -426,40 +417,25 @@ int vtkEmbreeRayTracer::RequestData(
     vtkNew<vtkMatrix4x4> normalMatrix;
     vtkMatrix4x4::Invert(matrix, normalMatrix);
     normalMatrix->Transpose();
-    for (vtkIdType p = 0; p < mesh->GetNumberOfPoints(); ++p)
+    for (std::size_t p = 0; p < mesh.Positions.size(); ++p)
     {
-      out.Positions.push_back(Point(matrix, points->GetPoint(p)));
+      const glm::vec3& position = mesh.Positions[p];
+      const double point[3] = { position.x, position.y, position.z };
+      out.Positions.push_back(Point(matrix, point));
       glm::vec3 n(0.0f);
       if (normals)
       {
-        double in[4] = { 0, 0, 0, 0 };
-        normals->GetTuple(p, in);
-        in[3] = 0.0;
+        const double in[4] = { mesh.Normals[p].x, mesh.Normals[p].y, mesh.Normals[p].z, 0.0 };
         double transformed[4];
         normalMatrix->MultiplyPoint(in, transformed);
         n = glm::vec3(transformed[0], transformed[1], transformed[2]);
       }
       out.Normals.push_back(n);
-      glm::vec2 st(0.0f);
-      if (tcoords)
-      {
-        st = glm::vec2(tcoords->GetComponent(p, 0), tcoords->GetComponent(p, 1));
-      }
-      out.TextureCoordinates.push_back(st);
+      out.TextureCoordinates.push_back(tcoords ? mesh.TextureCoordinates[p] : glm::vec2(0.0f));
     }
-    vtkCellArray* polys = mesh->GetPolys();
-    vtkIdType count = 0;
-    const vtkIdType* ids = nullptr;
-    auto cells = vtk::TakeSmartPointer(polys->NewIterator());
-    for (cells->GoToFirstCell(); !cells->IsDoneWithTraversal(); cells->GoToNextCell())
+    for (const glm::uvec3& t : mesh.Triangles)
     {
-      cells->GetCurrentCell(count, ids);
-      if (count != 3)
-      {
-        continue;
-      }
-      out.Triangles.emplace_back(first + static_cast<std::uint32_t>(ids[0]),
-        first + static_cast<std::uint32_t>(ids[1]), first + static_cast<std::uint32_t>(ids[2]));
+      out.Triangles.push_back(t + glm::uvec3(first));
       out.MaterialIds.push_back(materialId);
     }
   }

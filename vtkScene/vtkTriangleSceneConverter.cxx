@@ -53,23 +53,160 @@ glm::vec3 Colour(vtkDataArray* array, vtkIdType cell)
     static_cast<float>(array->GetComponent(cell, 1)),
     static_cast<float>(array->GetComponent(cell, 2)));
 }
+
+// The triangles of `input`: the input itself when it has only triangles, else polygons and
+// strips triangulated (vtkTriangleFilter on a shallow copy: the user's data is not touched),
+// vertex and line cells dropped. NonTriangles and Others count what was converted or dropped.
+struct Triangles
+{
+  vtkSmartPointer<vtkPolyData> Mesh;
+  vtkIdType NonTriangles = 0;
+  vtkIdType Others = 0;
+};
+Triangles Triangulate(vtkPolyData* input)
+{
+  Triangles out;
+  out.Mesh = input;
+  out.Others = input->GetNumberOfVerts() + input->GetNumberOfLines();
+  out.NonTriangles = input->GetNumberOfStrips();
+  auto iterator = vtk::TakeSmartPointer(input->GetPolys()->NewIterator());
+  for (iterator->GoToFirstCell(); !iterator->IsDoneWithTraversal(); iterator->GoToNextCell())
+  {
+    vtkIdType size;
+    const vtkIdType* ids;
+    iterator->GetCurrentCell(size, ids);
+    out.NonTriangles += size != 3;
+  }
+  if (out.Others > 0 || out.NonTriangles > 0)
+  {
+    vtkNew<vtkPolyData> shallow;
+    shallow->ShallowCopy(input);
+    vtkNew<vtkTriangleFilter> triangulate;
+    triangulate->PassVertsOff();
+    triangulate->PassLinesOff();
+    triangulate->SetInputData(shallow);
+    triangulate->Update();
+    out.Mesh = triangulate->GetOutput();
+  }
+  return out;
+}
+
+// Points, triangles, and the point normals (3 components, one per point) and texture
+// coordinates (2 or more components) when `triangles` has them, as they are: no checks.
+void CopyGeometry(vtkPolyData* triangles, mesolight::TriangleMesh& mesh)
+{
+  const vtkIdType count = triangles->GetNumberOfPoints();
+  mesh.Positions.resize(static_cast<std::size_t>(count));
+  for (vtkIdType v = 0; v < count; ++v)
+  {
+    double p[3];
+    triangles->GetPoint(v, p);
+    mesh.Positions[static_cast<std::size_t>(v)] = glm::vec3(p[0], p[1], p[2]);
+  }
+  auto iterator = vtk::TakeSmartPointer(triangles->GetPolys()->NewIterator());
+  for (iterator->GoToFirstCell(); !iterator->IsDoneWithTraversal(); iterator->GoToNextCell())
+  {
+    vtkIdType size;
+    const vtkIdType* ids;
+    iterator->GetCurrentCell(size, ids);
+    if (size == 3)
+    {
+      mesh.Triangles.emplace_back(ids[0], ids[1], ids[2]);
+    }
+  }
+  vtkDataArray* normals = triangles->GetPointData()->GetNormals();
+  if (normals && normals->GetNumberOfComponents() == 3 && normals->GetNumberOfTuples() == count)
+  {
+    for (vtkIdType v = 0; v < count; ++v)
+    {
+      double n[3];
+      normals->GetTuple(v, n);
+      mesh.Normals.emplace_back(n[0], n[1], n[2]);
+    }
+  }
+  vtkDataArray* tcoords = triangles->GetPointData()->GetTCoords();
+  if (tcoords && tcoords->GetNumberOfComponents() >= 2 && tcoords->GetNumberOfTuples() == count)
+  {
+    for (vtkIdType v = 0; v < count; ++v)
+    {
+      mesh.TextureCoordinates.emplace_back(
+        tcoords->GetComponent(v, 0), tcoords->GetComponent(v, 1));
+    }
+  }
+}
 } // namespace
 
-void vtkTriangleSceneConverter::ToPolyData(
-  const mesolight::TriangleScene& scene, vtkPolyData* output)
+void vtkTriangleSceneConverter::MeshToPolyData(
+  const mesolight::TriangleMesh& mesh, vtkPolyData* output)
 {
   output->Initialize();
   vtkNew<vtkPoints> points;
   points->SetDataTypeToFloat();
-  points->SetNumberOfPoints(static_cast<vtkIdType>(scene.Positions.size()));
-  for (std::size_t v = 0; v < scene.Positions.size(); ++v)
+  points->SetNumberOfPoints(static_cast<vtkIdType>(mesh.Positions.size()));
+  for (std::size_t v = 0; v < mesh.Positions.size(); ++v)
   {
-    const glm::vec3& p = scene.Positions[v];
+    const glm::vec3& p = mesh.Positions[v];
     points->SetPoint(static_cast<vtkIdType>(v), p.x, p.y, p.z);
   }
-  const auto cells = static_cast<vtkIdType>(scene.Triangles.size());
+  const auto cells = static_cast<vtkIdType>(mesh.Triangles.size());
   vtkNew<vtkCellArray> polys;
   polys->AllocateExact(cells, 3 * cells);
+  for (const glm::uvec3& triangle : mesh.Triangles)
+  {
+    const vtkIdType ids[3] = { triangle[0], triangle[1], triangle[2] };
+    polys->InsertNextCell(3, ids);
+  }
+  output->SetPoints(points);
+  output->SetPolys(polys);
+  if (!mesh.Positions.empty() && mesh.Normals.size() == mesh.Positions.size())
+  {
+    vtkNew<vtkFloatArray> normals;
+    normals->SetName("Normals");
+    normals->SetNumberOfComponents(3);
+    normals->SetNumberOfTuples(points->GetNumberOfPoints());
+    for (std::size_t v = 0; v < mesh.Normals.size(); ++v)
+    {
+      normals->SetTypedTuple(static_cast<vtkIdType>(v), &mesh.Normals[v][0]);
+    }
+    output->GetPointData()->SetNormals(normals);
+  }
+  if (!mesh.Positions.empty() && mesh.TextureCoordinates.size() == mesh.Positions.size())
+  {
+    vtkNew<vtkFloatArray> tcoords;
+    tcoords->SetName("TextureCoordinates");
+    tcoords->SetNumberOfComponents(2);
+    tcoords->SetNumberOfTuples(points->GetNumberOfPoints());
+    for (std::size_t v = 0; v < mesh.TextureCoordinates.size(); ++v)
+    {
+      tcoords->SetTypedTuple(static_cast<vtkIdType>(v), &mesh.TextureCoordinates[v][0]);
+    }
+    output->GetPointData()->SetTCoords(tcoords);
+  }
+}
+
+vtkSmartPointer<vtkPolyData> vtkTriangleSceneConverter::MeshToPolyData(
+  const mesolight::TriangleMesh& mesh)
+{
+  auto output = vtkSmartPointer<vtkPolyData>::New();
+  MeshToPolyData(mesh, output);
+  return output;
+}
+
+void vtkTriangleSceneConverter::ToTriangleMesh(vtkPolyData* input, mesolight::TriangleMesh& mesh)
+{
+  mesh = mesolight::TriangleMesh();
+  if (input == nullptr || input->GetNumberOfPoints() == 0)
+  {
+    return;
+  }
+  CopyGeometry(Triangulate(input).Mesh, mesh);
+}
+
+void vtkTriangleSceneConverter::ToPolyData(
+  const mesolight::TriangleScene& scene, vtkPolyData* output)
+{
+  MeshToPolyData(scene, output);
+  const auto cells = static_cast<vtkIdType>(scene.Triangles.size());
   auto diffuse = ColourArray(DiffuseName, cells);
   auto specular = ColourArray(SpecularName, cells);
   auto emission = ColourArray(EmissionName, cells);
@@ -78,9 +215,6 @@ void vtkTriangleSceneConverter::ToPolyData(
   materialIds->SetNumberOfTuples(cells);
   for (vtkIdType t = 0; t < cells; ++t)
   {
-    const glm::uvec3& triangle = scene.Triangles[static_cast<std::size_t>(t)];
-    const vtkIdType ids[3] = { triangle[0], triangle[1], triangle[2] };
-    polys->InsertNextCell(3, ids);
     const std::uint32_t id = scene.MaterialIds[static_cast<std::size_t>(t)];
     const mesolight::SceneMaterial& m = scene.Materials[id];
     diffuse->SetTypedTuple(t, &m.Diffuse[0]);
@@ -88,8 +222,6 @@ void vtkTriangleSceneConverter::ToPolyData(
     emission->SetTypedTuple(t, &m.Emission[0]);
     materialIds->SetValue(t, static_cast<int>(id));
   }
-  output->SetPoints(points);
-  output->SetPolys(polys);
   output->GetCellData()->AddArray(diffuse);
   output->GetCellData()->AddArray(specular);
   output->GetCellData()->AddArray(emission);
@@ -102,30 +234,6 @@ void vtkTriangleSceneConverter::ToPolyData(
     names->InsertNextValue(m.Name);
   }
   output->GetFieldData()->AddArray(names);
-  if (!scene.Positions.empty() && scene.Normals.size() == scene.Positions.size())
-  {
-    vtkNew<vtkFloatArray> normals;
-    normals->SetName("Normals");
-    normals->SetNumberOfComponents(3);
-    normals->SetNumberOfTuples(points->GetNumberOfPoints());
-    for (std::size_t v = 0; v < scene.Normals.size(); ++v)
-    {
-      normals->SetTypedTuple(static_cast<vtkIdType>(v), &scene.Normals[v][0]);
-    }
-    output->GetPointData()->SetNormals(normals);
-  }
-  if (!scene.Positions.empty() && scene.TextureCoordinates.size() == scene.Positions.size())
-  {
-    vtkNew<vtkFloatArray> tcoords;
-    tcoords->SetName("TextureCoordinates");
-    tcoords->SetNumberOfComponents(2);
-    tcoords->SetNumberOfTuples(points->GetNumberOfPoints());
-    for (std::size_t v = 0; v < scene.TextureCoordinates.size(); ++v)
-    {
-      tcoords->SetTypedTuple(static_cast<vtkIdType>(v), &scene.TextureCoordinates[v][0]);
-    }
-    output->GetPointData()->SetTCoords(tcoords);
-  }
 }
 
 vtkSmartPointer<vtkPolyData> vtkTriangleSceneConverter::ToPolyData(
@@ -152,36 +260,20 @@ bool vtkTriangleSceneConverter::ToTriangleScene(vtkPolyData* input, mesolight::T
   }
 
   // Triangles only: polygons and strips are triangulated, vertices and lines dropped.
-  vtkSmartPointer<vtkPolyData> triangles = input;
-  const vtkIdType others = input->GetNumberOfVerts() + input->GetNumberOfLines();
-  vtkIdType nonTriangles = input->GetNumberOfStrips();
+  const Triangles triangulated = Triangulate(input);
+  vtkPolyData* triangles = triangulated.Mesh;
+  if (triangulated.Others > 0 || triangulated.NonTriangles > 0)
   {
-    auto iterator = vtk::TakeSmartPointer(input->GetPolys()->NewIterator());
-    for (iterator->GoToFirstCell(); !iterator->IsDoneWithTraversal(); iterator->GoToNextCell())
-    {
-      vtkIdType size;
-      const vtkIdType* ids;
-      iterator->GetCurrentCell(size, ids);
-      nonTriangles += size != 3;
-    }
-  }
-  if (others > 0 || nonTriangles > 0)
-  {
-    vtkNew<vtkTriangleFilter> triangulate;
-    triangulate->PassVertsOff();
-    triangulate->PassLinesOff();
-    triangulate->SetInputData(input);
-    triangulate->Update();
-    triangles = triangulate->GetOutput();
     std::ostringstream message;
-    if (nonTriangles > 0)
+    if (triangulated.NonTriangles > 0)
     {
-      message << nonTriangles << " polygons/strips triangulated into "
+      message << triangulated.NonTriangles << " polygons/strips triangulated into "
               << triangles->GetNumberOfPolys() << " triangles in all";
     }
-    if (others > 0)
+    if (triangulated.Others > 0)
     {
-      message << (nonTriangles > 0 ? "; " : "") << others << " vertex/line cells ignored";
+      message << (triangulated.NonTriangles > 0 ? "; " : "") << triangulated.Others
+              << " vertex/line cells ignored";
     }
     warn(message.str());
   }
@@ -192,24 +284,7 @@ bool vtkTriangleSceneConverter::ToTriangleScene(vtkPolyData* input, mesolight::T
     return false;
   }
 
-  vtkPoints* points = triangles->GetPoints();
-  scene.Positions.resize(static_cast<std::size_t>(points->GetNumberOfPoints()));
-  for (vtkIdType v = 0; v < points->GetNumberOfPoints(); ++v)
-  {
-    double p[3];
-    points->GetPoint(v, p);
-    scene.Positions[static_cast<std::size_t>(v)] = glm::vec3(p[0], p[1], p[2]);
-  }
-  {
-    auto iterator = vtk::TakeSmartPointer(triangles->GetPolys()->NewIterator());
-    for (iterator->GoToFirstCell(); !iterator->IsDoneWithTraversal(); iterator->GoToNextCell())
-    {
-      vtkIdType size;
-      const vtkIdType* ids;
-      iterator->GetCurrentCell(size, ids);
-      scene.Triangles.emplace_back(ids[0], ids[1], ids[2]);
-    }
-  }
+  CopyGeometry(triangles, scene);
   // Triangles come after vertex and line cells in the cell data (none after the triangulation).
   const vtkIdType firstPoly = triangles->GetNumberOfVerts() + triangles->GetNumberOfLines();
 
@@ -339,26 +414,6 @@ bool vtkTriangleSceneConverter::ToTriangleScene(vtkPolyData* input, mesolight::T
       }
     }
     scene.MaterialIds.push_back(material);
-  }
-
-  vtkDataArray* normals = triangles->GetPointData()->GetNormals();
-  if (normals && normals->GetNumberOfComponents() == 3)
-  {
-    for (vtkIdType v = 0; v < points->GetNumberOfPoints(); ++v)
-    {
-      double n[3];
-      normals->GetTuple(v, n);
-      scene.Normals.emplace_back(n[0], n[1], n[2]);
-    }
-  }
-  vtkDataArray* tcoords = triangles->GetPointData()->GetTCoords();
-  if (tcoords && tcoords->GetNumberOfComponents() >= 2)
-  {
-    for (vtkIdType v = 0; v < points->GetNumberOfPoints(); ++v)
-    {
-      scene.TextureCoordinates.emplace_back(
-        tcoords->GetComponent(v, 0), tcoords->GetComponent(v, 1));
-    }
   }
 
   const mesolight::SceneCheck check = mesolight::CheckScene(scene, false);

@@ -1,7 +1,12 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkTriangleSceneConverter
- * @brief   vtkPolyData with material cell arrays <-> mesolight::TriangleScene
+ * @brief   vtkPolyData <-> mesolight::TriangleMesh and TriangleScene: the one converter each way
+ *
+ * Every Mesolight class that turns polydata into a mesh of its cores, or a mesh back into
+ * polydata, goes through here: MeshToPolyData / ToTriangleMesh for the geometry alone (points,
+ * triangles, point normals, texture coordinates), ToPolyData / ToTriangleScene for a scene with
+ * its materials.
  *
  * The light field's scenes (mesolight::TriangleScene, vtkScene/core/TriangleScene.h) as
  * vtkPolyData: triangles, and per cell the material arrays
@@ -28,6 +33,7 @@
 class vtkPolyData;
 namespace mesolight
 {
+struct TriangleMesh;
 struct TriangleScene;
 }
 
@@ -37,6 +43,22 @@ public:
   static vtkTriangleSceneConverter* New();
   vtkTypeMacro(vtkTriangleSceneConverter, vtkObject);
   void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /**
+   * The mesh's geometry as vtkPolyData, into `output` (replacing its contents): float points,
+   * the triangles, and point data "Normals" and "TextureCoordinates" when the mesh has one per
+   * point.
+   */
+  static void MeshToPolyData(const mesolight::TriangleMesh& mesh, vtkPolyData* output);
+  static vtkSmartPointer<vtkPolyData> MeshToPolyData(const mesolight::TriangleMesh& mesh);
+
+  /**
+   * The geometry of `input` as a triangle mesh, as it is (no checks: the caller validates):
+   * polygons and strips triangulated (on a copy; `input` is not touched), vertex and line cells
+   * dropped; point normals (3 components) and texture coordinates (the first two components)
+   * copied when there is one per point. Empty for a null or empty input.
+   */
+  static void ToTriangleMesh(vtkPolyData* input, mesolight::TriangleMesh& mesh);
 
   /**
    * The scene as vtkPolyData with the material arrays above, into `output` (replacing its

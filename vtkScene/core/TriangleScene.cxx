@@ -10,13 +10,13 @@
 namespace mesolight
 {
 
-glm::vec3 TriangleScene::FaceNormal(std::size_t triangle) const
+glm::vec3 TriangleMesh::FaceNormal(std::size_t triangle) const
 {
   const glm::vec3 a = this->Vertex(triangle, 0);
   return glm::cross(this->Vertex(triangle, 1) - a, this->Vertex(triangle, 2) - a);
 }
 
-float TriangleScene::Area(std::size_t triangle) const
+float TriangleMesh::Area(std::size_t triangle) const
 {
   return 0.5f * glm::length(this->FaceNormal(triangle));
 }

@@ -30,12 +30,14 @@ struct SceneMaterial
   float Roughness = 0.0f;     // 0 mirror .. 1 very rough
 };
 
-struct TriangleScene
+// The geometry every Mesolight triangle mesh has, written once: points, triangles indexing them
+// (counter-clockwise seen from the front) and optional per-point attributes. A scene adds
+// per-triangle materials (TriangleScene); the light field's movable object one reflectance for
+// the whole object (vlf::ObjectMesh).
+struct TriangleMesh
 {
   std::vector<glm::vec3> Positions;
-  std::vector<glm::uvec3> Triangles;      // indices into Positions
-  std::vector<std::uint32_t> MaterialIds; // one per triangle, index into Materials
-  std::vector<SceneMaterial> Materials;
+  std::vector<glm::uvec3> Triangles; // indices into Positions
   // Optional per-vertex attributes (empty, or one per position).
   std::vector<glm::vec3> Normals;
   std::vector<glm::vec2> TextureCoordinates;
@@ -49,6 +51,13 @@ struct TriangleScene
   // its length is twice the triangle's area.
   glm::vec3 FaceNormal(std::size_t triangle) const;
   float Area(std::size_t triangle) const;
+};
+
+struct TriangleScene : TriangleMesh
+{
+  std::vector<std::uint32_t> MaterialIds; // one per triangle, index into Materials
+  std::vector<SceneMaterial> Materials;
+
   const SceneMaterial& MaterialOf(std::size_t triangle) const
   {
     return this->Materials[this->MaterialIds[triangle]];

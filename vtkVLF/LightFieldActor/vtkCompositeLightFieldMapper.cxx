@@ -319,12 +319,12 @@ void vtkCompositeLightFieldMapper::PrepareShadows()
     const double centre[3] = { normalisation->GetComponent(0, 0), normalisation->GetComponent(1, 0),
       normalisation->GetComponent(2, 0) };
     vlf::ObjectMesh mesh;
-    mesh.Points.reserve(static_cast<std::size_t>(caster->GetNumberOfPoints()));
+    mesh.Positions.reserve(static_cast<std::size_t>(caster->GetNumberOfPoints()));
     for (vtkIdType i = 0; i < caster->GetNumberOfPoints(); ++i)
     {
       double p[3];
       caster->GetPoint(i, p);
-      mesh.Points.emplace_back(static_cast<float>((p[0] - centre[0]) * scale),
+      mesh.Positions.emplace_back(static_cast<float>((p[0] - centre[0]) * scale),
         static_cast<float>((p[1] - centre[1]) * scale),
         static_cast<float>((p[2] - centre[2]) * scale));
     }

@@ -17,6 +17,7 @@
 #include "vtkPolyData.h"
 #include "vtkPolyDataNormals.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkTriangleSceneConverter.h"
 #include "vtkVirtualLightField.h"
 
 #include "LightField.h"
@@ -311,32 +312,22 @@ int vtkLightFieldGatherFilter::RequestData(
     output->GetPointData()->SetNormals(normals); // what the irradiance was gathered with
   }
 
-  vlf::ObjectMesh mesh;
+  // The surface's points and triangles (only the normals repair and the placement checks use
+  // the triangles), gathered with the normals above.
   const vtkIdType n = input->GetNumberOfPoints();
-  mesh.Points.resize(static_cast<std::size_t>(n));
-  mesh.Normals.resize(static_cast<std::size_t>(n));
+  vlf::ObjectMesh mesh;
+  vtkTriangleSceneConverter::ToTriangleMesh(input, mesh);
+  mesh.TextureCoordinates.clear();
+  mesh.Normals.resize(mesh.Positions.size());
   for (vtkIdType i = 0; i < n; ++i)
   {
-    double p[3], m[3];
-    input->GetPoint(i, p);
+    double m[3];
     normals->GetTuple(i, m);
-    mesh.Points[i] = glm::vec3(p[0], p[1], p[2]);
     mesh.Normals[i] = glm::vec3(m[0], m[1], m[2]);
-  }
-  // Polygons as fans (only the normals repair and the placement checks use the triangles).
-  vtkCellArray* polys = input->GetPolys();
-  vtkNew<vtkIdList> ids;
-  for (polys->InitTraversal(); polys->GetNextCell(ids);)
-  {
-    for (vtkIdType k = 1; k + 1 < ids->GetNumberOfIds(); ++k)
-    {
-      mesh.Triangles.emplace_back(static_cast<unsigned>(ids->GetId(0)),
-        static_cast<unsigned>(ids->GetId(k)), static_cast<unsigned>(ids->GetId(k + 1)));
-    }
   }
   for (int c = 0; c < 3; ++c)
   {
-    mesh.Kd[c] = static_cast<float>(std::min(1.0, std::max(0.0, this->Reflectance[c])));
+    mesh.Diffuse[c] = static_cast<float>(std::min(1.0, std::max(0.0, this->Reflectance[c])));
   }
 
   vlf::GatherSettings settings;

@@ -15,7 +15,7 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkProperty.h"
-#include "vtkTriangleFilter.h"
+#include "vtkTriangleSceneConverter.h"
 
 #include "IrradianceVolume.h"
 #include "LightField.h"
@@ -44,52 +44,15 @@ double SecondsSince(Clock::time_point t)
 // area-weighted ones), and its reflectance from the property's diffuse colour.
 vlf::ObjectMesh ReadObjectMesh(vtkPolyData* input, vtkActor* object)
 {
-  vtkNew<vtkPolyData> shallow;
-  shallow->ShallowCopy(input); // the filter below never touches the user's polydata
-  vtkNew<vtkTriangleFilter> triangles;
-  triangles->SetInputData(shallow);
-  triangles->PassVertsOff();
-  triangles->PassLinesOff();
-  triangles->Update();
-  vtkPolyData* output = triangles->GetOutput();
   vlf::ObjectMesh mesh;
-  if (!output->GetPoints())
+  vtkTriangleSceneConverter::ToTriangleMesh(input, mesh);
+  mesh.TextureCoordinates.clear(); // the object is shaded per point, untextured
+  bool useNormals = !mesh.Normals.empty();
+  for (glm::vec3& normal : mesh.Normals)
   {
-    return mesh;
-  }
-  mesh.Points.resize(static_cast<std::size_t>(output->GetNumberOfPoints()));
-  for (vtkIdType i = 0; i < output->GetNumberOfPoints(); ++i)
-  {
-    double p[3];
-    output->GetPoint(i, p);
-    mesh.Points[static_cast<std::size_t>(i)] = glm::vec3(p[0], p[1], p[2]);
-  }
-  vtkCellArray* polys = output->GetPolys();
-  const vtkIdType* ids = nullptr;
-  vtkIdType n = 0;
-  for (polys->InitTraversal(); polys->GetNextCell(n, ids);)
-  {
-    if (n == 3)
-    {
-      mesh.Triangles.emplace_back(static_cast<unsigned>(ids[0]), static_cast<unsigned>(ids[1]),
-        static_cast<unsigned>(ids[2]));
-    }
-  }
-  vtkDataArray* normals = output->GetPointData()->GetNormals();
-  bool useNormals = normals && normals->GetNumberOfComponents() == 3 &&
-    normals->GetNumberOfTuples() == output->GetNumberOfPoints();
-  if (useNormals)
-  {
-    mesh.Normals.resize(mesh.Points.size());
-    for (vtkIdType i = 0; i < output->GetNumberOfPoints() && useNormals; ++i)
-    {
-      double v[3];
-      normals->GetTuple(i, v);
-      const glm::vec3 nv(v[0], v[1], v[2]);
-      const float length = glm::length(nv);
-      useNormals = std::isfinite(length) && length > 0.0f;
-      mesh.Normals[static_cast<std::size_t>(i)] = useNormals ? nv / length : nv;
-    }
+    const float length = glm::length(normal);
+    useNormals = useNormals && std::isfinite(length) && length > 0.0f;
+    normal = useNormals ? normal / length : normal;
   }
   if (!useNormals)
   {
@@ -100,7 +63,7 @@ vlf::ObjectMesh ReadObjectMesh(vtkPolyData* input, vtkActor* object)
   const double k = object->GetProperty()->GetDiffuse();
   for (int c = 0; c < 3; ++c)
   {
-    mesh.Kd[c] = static_cast<float>(std::min(1.0, std::max(0.0, kd[c] * k)));
+    mesh.Diffuse[c] = static_cast<float>(std::min(1.0, std::max(0.0, kd[c] * k)));
   }
   return mesh;
 }
@@ -392,10 +355,10 @@ void vtkLightFieldMovableObject::Trace(
   // or the subdivision changed; a move changes its transform only.
   const vlf::ShadedObject& shaded = this->Gatherer->Result();
   if (this->TracedMesh != this->MeshVersion || this->TracedSubdivision != settings.Subdivision ||
-    tracer.Object().Points.size() != shaded.Mesh.Points.size())
+    tracer.Object().Positions.size() != shaded.Mesh.Positions.size())
   {
     vlf::ObjectMesh model =
-      settings.Subdivision == 0 && shaded.Mesh.Points.size() == this->Model.Points.size()
+      settings.Subdivision == 0 && shaded.Mesh.Positions.size() == this->Model.Positions.size()
       ? this->Model
       : vlf::TransformMesh(shaded.Mesh, glm::inverse(placement));
     tracer.SetObject(model);
@@ -411,7 +374,7 @@ std::string vtkLightFieldMovableObject::Check(
   const vlf::ObjectMesh& unit, const vlf::WalkthroughTracer& tracer)
 {
   // Outside the field's unit sphere nothing gathered is meaningful.
-  for (const glm::vec3& p : unit.Points)
+  for (const glm::vec3& p : unit.Positions)
   {
     if (glm::length(p) > 1.0f)
     {
@@ -423,12 +386,12 @@ std::string vtkLightFieldMovableObject::Check(
   glm::vec3 lower, upper;
   unit.Bounds(lower, upper);
   const glm::vec3 centre = 0.5f * (lower + upper);
-  const std::size_t step = std::max<std::size_t>(1, unit.Points.size() / 256);
-  for (std::size_t i = 0; i < unit.Points.size(); i += step)
+  const std::size_t step = std::max<std::size_t>(1, unit.Positions.size() / 256);
+  for (std::size_t i = 0; i < unit.Positions.size(); i += step)
   {
     mesolight::SceneRay ray;
     ray.Origin = centre;
-    ray.Direction = unit.Points[i] - centre;
+    ray.Direction = unit.Positions[i] - centre;
     ray.TFar = 0.999f;
     if (glm::length(ray.Direction) > 0.0f &&
       tracer.Embree().Intersect(ray).Triangle != mesolight::SceneHit::None)

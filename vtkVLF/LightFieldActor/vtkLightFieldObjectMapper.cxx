@@ -162,14 +162,14 @@ bool vtkLightFieldObjectMapper::UpdateShadedMesh(vtkActor* act)
   const vlf::ObjectMesh& mesh = shaded->Mesh;
   vtkNew<vtkPoints> points;
   points->SetDataTypeToFloat();
-  points->SetNumberOfPoints(static_cast<vtkIdType>(mesh.Points.size()));
+  points->SetNumberOfPoints(static_cast<vtkIdType>(mesh.Positions.size()));
   vtkNew<vtkUnsignedCharArray> colours;
   colours->SetName("ObjectColour");
   colours->SetNumberOfComponents(3);
-  colours->SetNumberOfTuples(static_cast<vtkIdType>(mesh.Points.size()));
-  for (std::size_t i = 0; i < mesh.Points.size(); ++i)
+  colours->SetNumberOfTuples(static_cast<vtkIdType>(mesh.Positions.size()));
+  for (std::size_t i = 0; i < mesh.Positions.size(); ++i)
   {
-    const glm::vec3 world = vlf::ToWorld(*field, mesh.Points[i]);
+    const glm::vec3 world = vlf::ToWorld(*field, mesh.Positions[i]);
     points->SetPoint(static_cast<vtkIdType>(i), world.x, world.y, world.z);
     glm::vec3 display(flat[0], flat[1], flat[2]);
     if (this->Shading == Gather && i < shaded->Radiance.size())
@@ -180,7 +180,7 @@ bool vtkLightFieldObjectMapper::UpdateShadedMesh(vtkActor* act)
     {
       const glm::vec3 n = i < mesh.Normals.size() ? mesh.Normals[i] : glm::vec3(0, 0, 1);
       display =
-        vlf::ToneMap(vlf::ShadeWithLights(*lights, mesh.Points[i], n, mesh.Kd), exposure, op);
+        vlf::ToneMap(vlf::ShadeWithLights(*lights, mesh.Positions[i], n, mesh.Diffuse), exposure, op);
     }
     for (int c = 0; c < 3; ++c)
     {

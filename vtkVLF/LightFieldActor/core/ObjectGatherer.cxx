@@ -62,7 +62,7 @@ void HashValue(std::uint64_t& h, const T& value)
 // by the area-weighted normal of its triangles, the rest renormalised.
 void RepairNormals(ObjectMesh& mesh)
 {
-  if (mesh.Normals.size() != mesh.Points.size())
+  if (mesh.Normals.size() != mesh.Positions.size())
   {
     mesh.ComputeNormals();
     return;
@@ -92,8 +92,8 @@ void RepairNormals(ObjectMesh& mesh)
 ObjectMesh SubdivideOnce(const ObjectMesh& mesh)
 {
   ObjectMesh out;
-  out.Kd = mesh.Kd;
-  out.Points = mesh.Points;
+  out.Diffuse = mesh.Diffuse;
+  out.Positions = mesh.Positions;
   out.Normals = mesh.Normals;
   out.Triangles.reserve(mesh.Triangles.size() * 4);
   std::unordered_map<std::uint64_t, std::uint32_t> midpoints;
@@ -101,7 +101,7 @@ ObjectMesh SubdivideOnce(const ObjectMesh& mesh)
   for (const glm::uvec3& t : mesh.Triangles)
   {
     const glm::vec3 face =
-      glm::cross(mesh.Points[t.y] - mesh.Points[t.x], mesh.Points[t.z] - mesh.Points[t.x]);
+      glm::cross(mesh.Positions[t.y] - mesh.Positions[t.x], mesh.Positions[t.z] - mesh.Positions[t.x]);
     std::uint32_t mid[3];
     for (int e = 0; e < 3; ++e)
     {
@@ -113,8 +113,8 @@ ObjectMesh SubdivideOnce(const ObjectMesh& mesh)
         mid[e] = found->second;
         continue;
       }
-      const auto index = static_cast<std::uint32_t>(out.Points.size());
-      out.Points.push_back(0.5f * (mesh.Points[a] + mesh.Points[b]));
+      const auto index = static_cast<std::uint32_t>(out.Positions.size());
+      out.Positions.push_back(0.5f * (mesh.Positions[a] + mesh.Positions[b]));
       glm::vec3 n = mesh.Normals[a] + mesh.Normals[b];
       float length = glm::length(n);
       if (!(length > 1e-6f))
@@ -335,16 +335,16 @@ const ShadedObject& ObjectGatherer::Gather(
   // only, so a mesh handed over already moved (the unit-mesh overload) keeps its cache too.
   std::uint64_t topology = 1469598103934665603ull;
   HashVector(topology, modelMesh.Triangles);
-  HashValue(topology, modelMesh.Points.size());
+  HashValue(topology, modelMesh.Positions.size());
   std::uint64_t hash = topology;
-  HashVector(hash, modelMesh.Points);
+  HashVector(hash, modelMesh.Positions);
   HashVector(hash, modelMesh.Normals);
   if (hash != this->ModelHash || settings.Subdivision != this->ModelLevels)
   {
     this->Model = Subdivide(modelMesh, settings.Subdivision);
     this->ModelHash = hash;
     this->ModelLevels = settings.Subdivision;
-    this->InputPoints = modelMesh.Points;
+    this->InputPoints = modelMesh.Positions;
   }
   if (settings.ObjectOcclusion && !settings.Volume)
   {
@@ -356,11 +356,11 @@ const ShadedObject& ObjectGatherer::Gather(
   // The irradiance volume holds the field's light only: no rays against the object there.
   const ObjectSelfOcclusion* self =
     settings.ObjectOcclusion && !settings.Volume ? this->Self.get() : nullptr;
-  this->Model.Kd = modelMesh.Kd;
+  this->Model.Diffuse = modelMesh.Diffuse;
   ShadedObject& shaded = this->Shaded;
   shaded.Mesh = TransformMesh(this->Model, modelToUnit);
   shaded.DegenerateTriangles = shaded.Mesh.DegenerateTriangleCount();
-  const std::size_t n = shaded.Mesh.Points.size();
+  const std::size_t n = shaded.Mesh.Positions.size();
 
   // Settings that change the gathered values invalidate the whole cache.
   std::uint64_t key = topology;
@@ -392,8 +392,8 @@ const ShadedObject& ObjectGatherer::Gather(
     std::fill(needed.begin(), needed.end(), 0);
     for (const glm::uvec3& t : shaded.Mesh.Triangles)
     {
-      const glm::vec3 a = shaded.Mesh.Points[t.x], b = shaded.Mesh.Points[t.y],
-                      c = shaded.Mesh.Points[t.z];
+      const glm::vec3 a = shaded.Mesh.Positions[t.x], b = shaded.Mesh.Positions[t.y],
+                      c = shaded.Mesh.Positions[t.z];
       const glm::vec3 face = glm::cross(b - a, c - a);
       if (glm::dot(face, settings.Eye - (a + b + c) / 3.0f) > 0.0f)
       {
@@ -411,7 +411,7 @@ const ShadedObject& ObjectGatherer::Gather(
   shaded.CachedPoints = shaded.SkippedPoints = shaded.OutsidePoints = 0;
   for (std::size_t i = 0; i < n; ++i)
   {
-    const glm::vec3& p = shaded.Mesh.Points[i];
+    const glm::vec3& p = shaded.Mesh.Positions[i];
     if (glm::dot(p, p) > 1.0f)
     {
       ++shaded.OutsidePoints;
@@ -453,7 +453,7 @@ const ShadedObject& ObjectGatherer::Gather(
     glm::vec3 lower(std::numeric_limits<float>::max()), upper(-lower);
     for (const std::uint32_t i : todo)
     {
-      const glm::vec3 p = placed(shaded.Mesh.Points[i]);
+      const glm::vec3 p = placed(shaded.Mesh.Positions[i]);
       lower = glm::min(lower, p);
       upper = glm::max(upper, p);
     }
@@ -501,11 +501,11 @@ const ShadedObject& ObjectGatherer::Gather(
     std::size_t facingCount = 0;
     for (std::size_t v = 0; v < count; ++v)
     {
-      p[v] = placed(shaded.Mesh.Points[points[v]]);
+      p[v] = placed(shaded.Mesh.Positions[points[v]]);
       normal[v] = shaded.Mesh.Normals[points[v]];
       sum[v] = glm::vec3(0.0f);
       total[v] = 0.0f;
-      if (self && self->SeesItself(shaded.Mesh.Points[points[v]], normal[v]))
+      if (self && self->SeesItself(shaded.Mesh.Positions[points[v]], normal[v]))
       {
         facing[facingCount++] = static_cast<std::uint32_t>(v);
         blocked[points[v]].clear();
@@ -517,7 +517,7 @@ const ShadedObject& ObjectGatherer::Gather(
       {
         const std::uint32_t i = points[v];
         shaded.Irradiance[i] = settings.Volume->Irradiance(p[v], normal[v]);
-        this->CachedPositions[i] = shaded.Mesh.Points[i];
+        this->CachedPositions[i] = shaded.Mesh.Positions[i];
         this->CachedNormals[i] = shaded.Mesh.Normals[i];
         this->CachedValid[i] = 1;
       }
@@ -547,7 +547,7 @@ const ShadedObject& ObjectGatherer::Gather(
           {
             continue;
           }
-          origins[m] = shaded.Mesh.Points[points[v]];
+          origins[m] = shaded.Mesh.Positions[points[v]];
           normals[m] = normal[v];
           along[m] = c > 0.0f ? d : -d;
           slots[m++] = static_cast<int>(v);
@@ -607,7 +607,7 @@ const ShadedObject& ObjectGatherer::Gather(
         fieldSum[i] = sum[v];
         weightTotal[i] = total[v];
       }
-      this->CachedPositions[i] = shaded.Mesh.Points[i];
+      this->CachedPositions[i] = shaded.Mesh.Positions[i];
       this->CachedNormals[i] = shaded.Mesh.Normals[i];
       this->CachedValid[i] = 1;
     }
@@ -639,7 +639,7 @@ const ShadedObject& ObjectGatherer::Gather(
   shaded.GatheredPoints = todo.size();
   shaded.SelfFacingPoints = selfFacing;
   shaded.SelfBlockedRays = selfBlocked;
-  const glm::vec3 albedo = shaded.Mesh.Kd / Pi<float>;
+  const glm::vec3 albedo = shaded.Mesh.Diffuse / Pi<float>;
   // The object's inter-reflection: Jacobi iterations of E = field part + sum over the blocked
   // directions of the radiance leaving the object at their hits (Gouraud, from the last
   // iterate; cached points keep theirs).

@@ -33,12 +33,12 @@ std::string ObjectMesh::Validate() const
   {
     return "the object has no triangles";
   }
-  if (!this->Normals.empty() && this->Normals.size() != this->Points.size())
+  if (!this->Normals.empty() && this->Normals.size() != this->Positions.size())
   {
     return "the object has " + std::to_string(this->Normals.size()) + " normals for " +
-      std::to_string(this->Points.size()) + " points";
+      std::to_string(this->Positions.size()) + " points";
   }
-  for (const glm::vec3& p : this->Points)
+  for (const glm::vec3& p : this->Positions)
   {
     if (!Finite(p))
     {
@@ -47,14 +47,14 @@ std::string ObjectMesh::Validate() const
   }
   for (const glm::uvec3& t : this->Triangles)
   {
-    if (std::max({ t.x, t.y, t.z }) >= this->Points.size())
+    if (std::max({ t.x, t.y, t.z }) >= this->Positions.size())
     {
       return "a triangle of the object refers to point " +
-        std::to_string(std::max({ t.x, t.y, t.z })) + " of " + std::to_string(this->Points.size());
+        std::to_string(std::max({ t.x, t.y, t.z })) + " of " + std::to_string(this->Positions.size());
     }
   }
-  if (!Finite(this->Kd) || std::min({ this->Kd.x, this->Kd.y, this->Kd.z }) < 0.0f ||
-    std::max({ this->Kd.x, this->Kd.y, this->Kd.z }) > 1.0f)
+  if (!Finite(this->Diffuse) || std::min({ this->Diffuse.x, this->Diffuse.y, this->Diffuse.z }) < 0.0f ||
+    std::max({ this->Diffuse.x, this->Diffuse.y, this->Diffuse.z }) > 1.0f)
   {
     return "the object's diffuse reflectance must lie in [0, 1]";
   }
@@ -68,16 +68,16 @@ std::string ObjectMesh::Validate() const
 //------------------------------------------------------------------------------
 void ObjectMesh::ComputeNormals()
 {
-  this->Normals.assign(this->Points.size(), glm::vec3(0.0f));
+  this->Normals.assign(this->Positions.size(), glm::vec3(0.0f));
   for (const glm::uvec3& t : this->Triangles)
   {
-    if (std::max({ t.x, t.y, t.z }) >= this->Points.size())
+    if (std::max({ t.x, t.y, t.z }) >= this->Positions.size())
     {
       continue;
     }
     // The cross product's length is twice the area: an area-weighted sum.
     const glm::vec3 n =
-      glm::cross(this->Points[t.y] - this->Points[t.x], this->Points[t.z] - this->Points[t.x]);
+      glm::cross(this->Positions[t.y] - this->Positions[t.x], this->Positions[t.z] - this->Positions[t.x]);
     if (!Finite(n))
     {
       continue;
@@ -104,13 +104,13 @@ std::size_t ObjectMesh::DegenerateTriangleCount() const
   std::size_t count = 0;
   for (const glm::uvec3& t : this->Triangles)
   {
-    if (std::max({ t.x, t.y, t.z }) >= this->Points.size())
+    if (std::max({ t.x, t.y, t.z }) >= this->Positions.size())
     {
       ++count;
       continue;
     }
     const glm::vec3 n =
-      glm::cross(this->Points[t.y] - this->Points[t.x], this->Points[t.z] - this->Points[t.x]);
+      glm::cross(this->Positions[t.y] - this->Positions[t.x], this->Positions[t.z] - this->Positions[t.x]);
     count += !(glm::length(n) > threshold);
   }
   return count;
@@ -119,14 +119,14 @@ std::size_t ObjectMesh::DegenerateTriangleCount() const
 //------------------------------------------------------------------------------
 void ObjectMesh::Bounds(glm::vec3& lower, glm::vec3& upper) const
 {
-  if (this->Points.empty())
+  if (this->Positions.empty())
   {
     lower = upper = glm::vec3(0.0f);
     return;
   }
   lower = glm::vec3(std::numeric_limits<float>::max());
   upper = -lower;
-  for (const glm::vec3& p : this->Points)
+  for (const glm::vec3& p : this->Positions)
   {
     lower = glm::min(lower, p);
     upper = glm::max(upper, p);
@@ -146,11 +146,11 @@ ObjectMesh TransformMesh(const ObjectMesh& mesh, const glm::mat4& transform)
 {
   ObjectMesh out;
   out.Triangles = mesh.Triangles;
-  out.Kd = mesh.Kd;
-  out.Points.reserve(mesh.Points.size());
-  for (const glm::vec3& p : mesh.Points)
+  out.Diffuse = mesh.Diffuse;
+  out.Positions.reserve(mesh.Positions.size());
+  for (const glm::vec3& p : mesh.Positions)
   {
-    out.Points.emplace_back(transform * glm::vec4(p, 1.0f));
+    out.Positions.emplace_back(transform * glm::vec4(p, 1.0f));
   }
   const glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(transform)));
   out.Normals.reserve(mesh.Normals.size());
@@ -178,7 +178,7 @@ ObjectMesh MakeSphere(float radius, int rings, int segments)
       const float phi = 2.0f * pi * static_cast<float>(s) / static_cast<float>(segments);
       const glm::vec3 n(
         std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta));
-      mesh.Points.push_back(radius * n);
+      mesh.Positions.push_back(radius * n);
       mesh.Normals.push_back(n);
     }
   }
@@ -219,12 +219,12 @@ ObjectMesh MakeCube(float side)
       {
         std::swap(u, v); // keep u x v = n: counter-clockwise seen from outside
       }
-      const unsigned first = static_cast<unsigned>(mesh.Points.size());
+      const unsigned first = static_cast<unsigned>(mesh.Positions.size());
       const glm::vec3 centre = h * n;
-      mesh.Points.push_back(centre - h * u - h * v);
-      mesh.Points.push_back(centre + h * u - h * v);
-      mesh.Points.push_back(centre + h * u + h * v);
-      mesh.Points.push_back(centre - h * u + h * v);
+      mesh.Positions.push_back(centre - h * u - h * v);
+      mesh.Positions.push_back(centre + h * u - h * v);
+      mesh.Positions.push_back(centre + h * u + h * v);
+      mesh.Positions.push_back(centre - h * u + h * v);
       mesh.Normals.insert(mesh.Normals.end(), 4, n);
       mesh.Triangles.emplace_back(first, first + 1, first + 2);
       mesh.Triangles.emplace_back(first, first + 2, first + 3);
@@ -249,8 +249,8 @@ ObjectMesh MakeBracket(float width, float height, float thickness, float depth)
     const int a = e, b = (e + 1) % 8;
     const glm::vec2 edge = profile[b] - profile[a];
     const glm::vec3 n = glm::normalize(glm::vec3(edge.y, -edge.x, 0.0f));
-    const unsigned first = static_cast<unsigned>(mesh.Points.size());
-    mesh.Points.insert(mesh.Points.end(), { at(a, -z), at(b, -z), at(b, z), at(a, z) });
+    const unsigned first = static_cast<unsigned>(mesh.Positions.size());
+    mesh.Positions.insert(mesh.Positions.end(), { at(a, -z), at(b, -z), at(b, z), at(a, z) });
     mesh.Normals.insert(mesh.Normals.end(), 4, n);
     mesh.Triangles.emplace_back(first, first + 1, first + 2);
     mesh.Triangles.emplace_back(first, first + 2, first + 3);
@@ -260,10 +260,10 @@ ObjectMesh MakeBracket(float width, float height, float thickness, float depth)
     { 7, 5, 6 } };
   for (int side = -1; side <= 1; side += 2)
   {
-    const unsigned first = static_cast<unsigned>(mesh.Points.size());
+    const unsigned first = static_cast<unsigned>(mesh.Positions.size());
     for (int corner = 0; corner < 8; ++corner)
     {
-      mesh.Points.push_back(at(corner, static_cast<float>(side) * z));
+      mesh.Positions.push_back(at(corner, static_cast<float>(side) * z));
       mesh.Normals.emplace_back(0.0f, 0.0f, static_cast<float>(side));
     }
     for (const auto& c : caps)

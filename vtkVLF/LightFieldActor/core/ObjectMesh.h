@@ -10,6 +10,8 @@
 #ifndef mesolight_vlf_ObjectMesh_h
 #define mesolight_vlf_ObjectMesh_h
 
+#include "TriangleScene.h" // TriangleMesh
+
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
@@ -23,15 +25,15 @@ namespace vlf
 {
 class LightField;
 
-struct ObjectMesh
+// The object's geometry is the scene model's TriangleMesh (Normals: unit, one per point;
+// ComputeNormals fills them; no texture coordinates are used); its material is one diffuse
+// reflectance for the whole object.
+struct ObjectMesh : TriangleMesh
 {
-  std::vector<glm::vec3> Points;
-  std::vector<glm::vec3> Normals; // unit, one per point (ComputeNormals fills them)
-  std::vector<glm::uvec3> Triangles;
-  glm::vec3 Kd{ 0.7f }; // diffuse reflectance of the whole object
+  glm::vec3 Diffuse{ 0.7f }; // Kd, diffuse reflectance of the whole object in [0, 1]
 
   // Empty when usable, else what is wrong (no triangles, an index out of range, a non-finite
-  // point, Kd outside [0, 1], a normal count that does not match the points).
+  // point, Diffuse outside [0, 1], a normal count that does not match the points).
   std::string Validate() const;
   // Area-weighted vertex normals from the triangles (counter-clockwise = outside); degenerate
   // triangles add nothing; a point no triangle gives a direction gets +Z.
@@ -46,7 +48,7 @@ struct ObjectMesh
 glm::mat4 WorldToUnitSphere(const LightField& field);
 
 // The mesh with its points moved by `transform` and its normals by the inverse transpose of
-// its upper 3 x 3 (renormalised). Triangles and Kd are copied.
+// its upper 3 x 3 (renormalised). Triangles and Diffuse are copied.
 ObjectMesh TransformMesh(const ObjectMesh& mesh, const glm::mat4& transform);
 
 // A UV sphere (rings x segments quads split into triangles, poles as fans) and an axis-aligned

@@ -24,16 +24,16 @@ ObjectReference TraceObjectReference(
   TriangleScene object;
   SceneMaterial material;
   material.Name = "object";
-  material.Diffuse = unitMesh.Kd;
+  material.Diffuse = unitMesh.Diffuse;
   object.AddMaterial(material);
-  object.Positions = unitMesh.Points;
+  object.Positions = unitMesh.Positions;
   // Each point's triangle (for Kd): the first non-degenerate one that uses it.
   constexpr std::uint32_t none = std::numeric_limits<std::uint32_t>::max();
-  std::vector<std::uint32_t> triangleOf(unitMesh.Points.size(), none);
+  std::vector<std::uint32_t> triangleOf(unitMesh.Positions.size(), none);
   for (const glm::uvec3& t : unitMesh.Triangles)
   {
     const glm::vec3 n = glm::cross(
-      unitMesh.Points[t.y] - unitMesh.Points[t.x], unitMesh.Points[t.z] - unitMesh.Points[t.x]);
+      unitMesh.Positions[t.y] - unitMesh.Positions[t.x], unitMesh.Positions[t.z] - unitMesh.Positions[t.x]);
     if (!(glm::length(n) > 1e-12f))
     {
       continue;
@@ -55,7 +55,7 @@ ObjectReference TraceObjectReference(
 
   ObjectReference reference;
   std::vector<std::uint32_t> usable;
-  for (std::uint32_t i = 0; i < unitMesh.Points.size(); ++i)
+  for (std::uint32_t i = 0; i < unitMesh.Positions.size(); ++i)
   {
     if (triangleOf[i] != none && i < unitMesh.Normals.size())
     {
@@ -74,7 +74,7 @@ ObjectReference TraceObjectReference(
       for (std::size_t q = begin; q < end; ++q)
       {
         const std::uint32_t i = reference.Points[q];
-        reference.Radiance[q] = tracer.DiffuseRadianceLeaving(triangleOf[i], unitMesh.Points[i],
+        reference.Radiance[q] = tracer.DiffuseRadianceLeaving(triangleOf[i], unitMesh.Positions[i],
           unitMesh.Normals[i], settings.Samples, settings.Seed + i);
       }
     });

@@ -47,7 +47,7 @@ void ObjectSelfOcclusion::Prepare(
   SceneMaterial material;
   material.Name = "object";
   this->Mesh->AddMaterial(material);
-  this->Mesh->Positions = model.Points;
+  this->Mesh->Positions = model.Positions;
   this->Mesh->Triangles = model.Triangles;
   this->Mesh->MaterialIds.assign(model.Triangles.size(), 0);
   this->Scene.reset(new EmbreeScene(*this->Mesh));

@@ -332,7 +332,7 @@ bool FillShadowMap(ShadowMap& map, const glm::vec3& light, const ObjectMesh& obj
     bool usable = true;
     for (int c = 0; c < 3; ++c)
     {
-      const glm::vec3 d = object.Points[t[c]] - light;
+      const glm::vec3 d = object.Positions[t[c]] - light;
       const float z = glm::dot(d, map.AxisZ);
       if (!(z >= map.Near))
       {
@@ -428,7 +428,7 @@ std::string ObjectShadows::Build(const std::vector<ShadowEmitter>& emitters,
   object.Bounds(lower, upper);
   const glm::vec3 centre = 0.5f * (lower + upper);
   float radius = 0.0f;
-  for (const glm::vec3& p : object.Points)
+  for (const glm::vec3& p : object.Positions)
   {
     radius = std::max(radius, glm::length(p - centre));
   }

@@ -136,7 +136,7 @@ void WalkthroughTracer::SetObject(const ObjectMesh& model)
     throw std::invalid_argument(problem);
   }
   this->ClearObject();
-  this->Scene->SetObject(model.Points, model.Triangles);
+  this->Scene->SetObject(model.Positions, model.Triangles);
   this->ObjectModel = model;
   this->ObjectSet = true;
   this->SetObjectPlacement(this->Placement);
@@ -178,7 +178,7 @@ glm::vec3 WalkthroughTracer::ObjectRadiance(const SceneHit& hit) const
 {
   if (hit.ObjectTriangle == SceneHit::None ||
     hit.ObjectTriangle >= this->ObjectModel.Triangles.size() ||
-    this->ObjectRadianceValues.size() != this->ObjectModel.Points.size())
+    this->ObjectRadianceValues.size() != this->ObjectModel.Positions.size())
   {
     return glm::vec3(0.0f);
   }

@@ -38,7 +38,7 @@ inline TriangleScene MergedScene(const vlf::LightField& field, const vlf::Object
   const auto material = static_cast<std::uint32_t>(merged.Materials.size());
   merged.Materials.push_back(SceneMaterial{});
   merged.Positions.insert(
-    merged.Positions.end(), unitObject.Points.begin(), unitObject.Points.end());
+    merged.Positions.end(), unitObject.Positions.begin(), unitObject.Positions.end());
   for (const glm::uvec3& t : unitObject.Triangles)
   {
     merged.Triangles.emplace_back(t.x + base, t.y + base, t.z + base);

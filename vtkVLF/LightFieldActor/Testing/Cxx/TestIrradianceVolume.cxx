@@ -26,7 +26,7 @@ namespace
 ObjectMesh TestSphere(float radius)
 {
   ObjectMesh sphere = MakeSphere(radius, 8, 16);
-  sphere.Kd = glm::vec3(0.7f);
+  sphere.Diffuse = glm::vec3(0.7f);
   return sphere;
 }
 

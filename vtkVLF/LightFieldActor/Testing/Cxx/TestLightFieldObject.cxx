@@ -33,7 +33,7 @@ using namespace objecttest;
 vtkSmartPointer<vtkPolyData> ToPolyData(const vlf::ObjectMesh& mesh, bool normals)
 {
   vtkNew<vtkPoints> points;
-  for (const glm::vec3& p : mesh.Points)
+  for (const glm::vec3& p : mesh.Positions)
   {
     points->InsertNextPoint(p.x, p.y, p.z);
   }
@@ -412,7 +412,7 @@ TEST(LightFieldObject, ShadingLevelsShareOneGatherAndKeepTheInput)
   const vlf::ShadedObject* shaded = vtkLightFieldActorCore::GetShadedObject(viewer.View.Actor);
   ASSERT_NE(shaded, nullptr);
   EXPECT_EQ(static_cast<std::size_t>(viewer.Mapper->GetShadedMesh()->GetNumberOfPoints()),
-    shaded->Mesh.Points.size());
+    shaded->Mesh.Positions.size());
   EXPECT_EQ(viewer.Input->GetMTime(), inputTime);
   EXPECT_EQ(viewer.Input->GetPointData()->GetNumberOfArrays(), inputArrays);
   EXPECT_EQ(viewer.Input->GetNumberOfPoints(), inputPoints);

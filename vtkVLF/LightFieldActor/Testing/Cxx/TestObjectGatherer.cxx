@@ -35,7 +35,7 @@ const glm::vec3 SphereCentre(400.0f, 420.0f, 150.0f);
 ObjectMesh TestSphere(float radius = SphereRadius)
 {
   ObjectMesh sphere = MakeSphere(radius, 8, 16);
-  sphere.Kd = glm::vec3(0.7f);
+  sphere.Diffuse = glm::vec3(0.7f);
   return sphere;
 }
 
@@ -115,11 +115,11 @@ TEST(ObjectGatherer, SubdivisionSplitsSharedEdgesOnce)
   const ObjectMesh once = ObjectGatherer::Subdivide(cube, 1);
   EXPECT_EQ(once.Triangles.size(), 4 * cube.Triangles.size());
   // One new point per distinct edge: a shared edge is split once.
-  EXPECT_EQ(once.Points.size(), cube.Points.size() + edges);
+  EXPECT_EQ(once.Positions.size(), cube.Positions.size() + edges);
   // The original points keep their indices and places.
-  for (std::size_t i = 0; i < cube.Points.size(); ++i)
+  for (std::size_t i = 0; i < cube.Positions.size(); ++i)
   {
-    EXPECT_EQ(once.Points[i], cube.Points[i]);
+    EXPECT_EQ(once.Positions[i], cube.Positions[i]);
   }
   // A sphere: new normals are the renormalised mean of their edge's normals, all unit.
   const ObjectMesh sphere = MakeSphere(1.0f, 6, 12);
@@ -132,7 +132,7 @@ TEST(ObjectGatherer, SubdivisionSplitsSharedEdgesOnce)
   // Each face's triangles keep its orientation (outward).
   for (const glm::uvec3& t : three.Triangles)
   {
-    const glm::vec3 a = three.Points[t.x], b = three.Points[t.y], c = three.Points[t.z];
+    const glm::vec3 a = three.Positions[t.x], b = three.Positions[t.y], c = three.Positions[t.z];
     const glm::vec3 n = glm::cross(b - a, c - a);
     if (glm::length(n) > 1e-9f)
     {
@@ -144,11 +144,11 @@ TEST(ObjectGatherer, SubdivisionSplitsSharedEdgesOnce)
   const ObjectMesh sphereOnce = ObjectGatherer::Subdivide(sphere, 1);
   const glm::uvec3 t = sphere.Triangles[20];
   const glm::vec3 expected = glm::normalize(sphere.Normals[t.x] + sphere.Normals[t.y]);
-  const glm::vec3 mid = 0.5f * (sphere.Points[t.x] + sphere.Points[t.y]);
+  const glm::vec3 mid = 0.5f * (sphere.Positions[t.x] + sphere.Positions[t.y]);
   bool found = false;
-  for (std::size_t i = sphere.Points.size(); i < sphereOnce.Points.size(); ++i)
+  for (std::size_t i = sphere.Positions.size(); i < sphereOnce.Positions.size(); ++i)
   {
-    if (glm::length(sphereOnce.Points[i] - mid) < 1e-6f)
+    if (glm::length(sphereOnce.Positions[i] - mid) < 1e-6f)
     {
       EXPECT_LT(glm::length(sphereOnce.Normals[i] - expected), 1e-5f);
       found = true;
@@ -164,9 +164,9 @@ TEST(ObjectGatherer, AllDirectionsMatchTheLookupAndHalfHalvesTheWork)
   GatherSettings settings;
   const ShadedObject& shaded = gatherer.Gather(TestSphere(), Placement(field), settings);
   const Lookup lookup(field);
-  for (std::size_t i = 0; i < shaded.Mesh.Points.size(); i += 7)
+  for (std::size_t i = 0; i < shaded.Mesh.Positions.size(); i += 7)
   {
-    const glm::vec3 e = lookup.Irradiance(shaded.Mesh.Points[i], shaded.Mesh.Normals[i]);
+    const glm::vec3 e = lookup.Irradiance(shaded.Mesh.Positions[i], shaded.Mesh.Normals[i]);
     EXPECT_LT(glm::length(e - shaded.Irradiance[i]), 1e-4f * (1.0f + glm::length(e)));
     EXPECT_LT(glm::length(shaded.Radiance[i] - 0.7f / Pi<float> * shaded.Irradiance[i]), 1e-5f);
   }
@@ -190,7 +190,7 @@ TEST(ObjectGatherer, CacheRegathersOnlyWhatMoved)
   GatherSettings settings;
   settings.Subdivision = 1;
   const ObjectMesh sphere = TestSphere();
-  const std::size_t n = gatherer.Gather(sphere, Placement(field), settings).Mesh.Points.size();
+  const std::size_t n = gatherer.Gather(sphere, Placement(field), settings).Mesh.Positions.size();
   EXPECT_EQ(gatherer.Result().GatheredPoints, n);
   // A step of a tenth of a field cell: everything kept.
   const float cellMm = field.Settings().CellSize() / field.NormalizationScale();
@@ -238,7 +238,7 @@ TEST(ObjectGatherer, BackFacesAreSkippedUnlessReflectionsNeedThem)
   const glm::vec4 eye = WorldToUnitSphere(field) * glm::vec4(278.0f, 273.0f, -800.0f, 1.0f);
   settings.Eye = glm::vec3(eye);
   const ShadedObject& front = gatherer.Gather(TestSphere(), Placement(field), settings);
-  const std::size_t n = front.Mesh.Points.size();
+  const std::size_t n = front.Mesh.Positions.size();
   std::printf("[ figures  ] back faces: %zu of %zu points skipped\n", front.SkippedPoints, n);
   EXPECT_GT(front.SkippedPoints, n / 3);
   EXPECT_LT(front.SkippedPoints, 2 * n / 3);
@@ -268,7 +268,7 @@ TEST(ObjectGatherer, BadInputNeverCrashes)
   settings.Subdivision = 2;
   const ShadedObject& shaded = gatherer.Gather(mesh, Placement(field), settings);
   EXPECT_GT(shaded.DegenerateTriangles, 0u);
-  for (std::size_t i = 0; i < shaded.Mesh.Points.size(); ++i)
+  for (std::size_t i = 0; i < shaded.Mesh.Positions.size(); ++i)
   {
     EXPECT_TRUE(std::isfinite(shaded.Irradiance[i].x));
     EXPECT_NEAR(glm::length(shaded.Mesh.Normals[i]), 1.0f, 1e-4f);
@@ -299,7 +299,7 @@ TEST(ObjectGatherer, BadInputNeverCrashes)
     gatherer.Gather(TestSphere(), Placement(field, glm::vec3(278.0f, 0.0f, 280.0f)), settings);
   double above = 0.0, below = 0.0;
   int aboveCount = 0, belowCount = 0;
-  for (std::size_t i = 0; i < wall.Mesh.Points.size(); ++i)
+  for (std::size_t i = 0; i < wall.Mesh.Positions.size(); ++i)
   {
     const glm::vec3& e = wall.Irradiance[i];
     EXPECT_TRUE(std::isfinite(e.x) && e.x >= 0.0f && std::isfinite(e.y) && std::isfinite(e.z));

@@ -21,7 +21,7 @@ void ExpectClosedAndOutward(const ObjectMesh& mesh, double volume, double tolera
   double enclosed = 0.0;
   for (const glm::uvec3& t : mesh.Triangles)
   {
-    const glm::vec3 a = mesh.Points[t.x], b = mesh.Points[t.y], c = mesh.Points[t.z];
+    const glm::vec3 a = mesh.Positions[t.x], b = mesh.Positions[t.y], c = mesh.Positions[t.z];
     const glm::vec3 n = glm::cross(b - a, c - a);
     EXPECT_GT(glm::dot(n, (a + b + c) / 3.0f), 0.0f);
     enclosed += glm::dot(a, glm::cross(b, c)) / 6.0;
@@ -31,7 +31,7 @@ void ExpectClosedAndOutward(const ObjectMesh& mesh, double volume, double tolera
   {
     for (int k = 0; k < 3; ++k)
     {
-      EXPECT_GT(glm::dot(mesh.Normals[t[k]], mesh.Points[t[k]]), 0.0f);
+      EXPECT_GT(glm::dot(mesh.Normals[t[k]], mesh.Positions[t[k]]), 0.0f);
     }
   }
 }
@@ -52,14 +52,14 @@ TEST(ObjectMesh, NormalsFollowRotationNotScale)
   m = glm::rotate(m, 0.5f * float(M_PI), glm::vec3(0.0f, 0.0f, 1.0f));
   m = glm::scale(m, glm::vec3(4.0f, 1.0f, 1.0f));
   const ObjectMesh moved = TransformMesh(cube, m);
-  for (std::size_t i = 0; i < cube.Points.size(); ++i)
+  for (std::size_t i = 0; i < cube.Positions.size(); ++i)
   {
     EXPECT_NEAR(glm::length(moved.Normals[i]), 1.0f, 1e-5f);
     // The face normal +X turns to +Y, +Y to -X; the non-uniform scale leaves them unit axes.
     const glm::vec3 expected(-cube.Normals[i].y, cube.Normals[i].x, cube.Normals[i].z);
     EXPECT_NEAR(glm::length(moved.Normals[i] - expected), 0.0f, 1e-5f);
   }
-  EXPECT_NEAR(moved.Points[0].x, 5.0f + 0.5f, 1e-5f);
+  EXPECT_NEAR(moved.Positions[0].x, 5.0f + 0.5f, 1e-5f);
 }
 
 TEST(ObjectMesh, BadMeshesAreNamed)
@@ -70,10 +70,10 @@ TEST(ObjectMesh, BadMeshesAreNamed)
   outOfRange.Triangles[0].x = 100;
   EXPECT_NE(outOfRange.Validate().find("refers to point 100"), std::string::npos);
   ObjectMesh nan = MakeCube(1.0f);
-  nan.Points[3].y = std::nanf("");
+  nan.Positions[3].y = std::nanf("");
   EXPECT_NE(nan.Validate().find("finite"), std::string::npos);
   ObjectMesh flat;
-  flat.Points = { glm::vec3(0.0f), glm::vec3(1.0f, 0.0f, 0.0f), glm::vec3(2.0f, 0.0f, 0.0f) };
+  flat.Positions = { glm::vec3(0.0f), glm::vec3(1.0f, 0.0f, 0.0f), glm::vec3(2.0f, 0.0f, 0.0f) };
   flat.Triangles = { glm::uvec3(0, 1, 2) };
   EXPECT_EQ(flat.DegenerateTriangleCount(), 1u);
   EXPECT_NE(flat.Validate().find("zero area"), std::string::npos);

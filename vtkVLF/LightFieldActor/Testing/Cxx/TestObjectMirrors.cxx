@@ -222,7 +222,7 @@ TEST(ObjectMirrors, ObjectInTheSecondReflectionInEveryQuality)
   tracer.SetObject(sphere);
   tracer.SetObjectPlacement(placement);
   tracer.SetObjectRadiance(
-    std::vector<glm::vec3>(sphere.Points.size(), glm::vec3(ObjectRed, 0, 0)));
+    std::vector<glm::vec3>(sphere.Positions.size(), glm::vec3(ObjectRed, 0, 0)));
   for (const bool firstBounceOnly : { false, true })
   {
     tracer.SetFirstBounceObjectOnlyForTesting(firstBounceOnly);
@@ -299,7 +299,7 @@ TEST(ObjectMirrors, ShadowOnTheFloorSeenInTheMirror)
   vlf::WalkthroughTracer tracer(field);
   tracer.SetObject(cube);
   tracer.SetObjectPlacement(placement);
-  tracer.SetObjectRadiance(std::vector<glm::vec3>(cube.Points.size(), glm::vec3(0.5f)));
+  tracer.SetObjectRadiance(std::vector<glm::vec3>(cube.Positions.size(), glm::vec3(0.5f)));
   const vlf::Lookup lookup(field);
   for (const Quality& q : Qualities)
   {

@@ -30,7 +30,7 @@ const glm::vec3 BracketCentre(420.0f, 300.0f, 130.0f);
 ObjectMesh Bracket()
 {
   ObjectMesh mesh = MakeBracket(120.0f, 100.0f, 20.0f, 120.0f);
-  mesh.Kd = glm::vec3(0.7f);
+  mesh.Diffuse = glm::vec3(0.7f);
   return mesh;
 }
 
@@ -81,7 +81,7 @@ TEST(ObjectSelfOcclusion, RaysHitTheOverhangAndConvexPointsCastNone)
 {
   const ObjectMesh bracket = Bracket();
   ObjectSelfOcclusion self;
-  self.Prepare(bracket, bracket.Points, 1);
+  self.Prepare(bracket, bracket.Positions, 1);
   self.Place(glm::mat4(1.0f));
   // The bottom bar's upper face (y = -30) under the top bar's underside (y = 30).
   const glm::vec3 p(12.0f, -30.0f, 5.0f), up(0.0f, 1.0f, 0.0f);
@@ -93,7 +93,7 @@ TEST(ObjectSelfOcclusion, RaysHitTheOverhangAndConvexPointsCastNone)
   self.Trace16(origins, normals, directions, 3, hits);
   ASSERT_NE(hits[0].Triangle, ObjectSelfHit::None); // the top bar's underside
   const glm::uvec3 t = bracket.Triangles[hits[0].Triangle];
-  EXPECT_NEAR(bracket.Points[t.x].y, 30.0f, 1e-4f);
+  EXPECT_NEAR(bracket.Positions[t.x].y, 30.0f, 1e-4f);
   EXPECT_EQ(bracket.Normals[t.x], -up);
   EXPECT_EQ(hits[1].Triangle, ObjectSelfHit::None); // out through the opening
   EXPECT_NE(hits[2].Triangle, ObjectSelfHit::None); // the back bar
@@ -152,13 +152,13 @@ TEST(ObjectSelfOcclusion, ConcaveBracketAgainstThePathTracer)
   traced.MaxPoints = 160;
   const ObjectReference reference = TraceObjectReference(field, mesh.Mesh, traced);
   ObjectSelfOcclusion self;
-  self.Prepare(mesh.Mesh, mesh.Mesh.Points, 1);
+  self.Prepare(mesh.Mesh, mesh.Mesh.Positions, 1);
   self.Place(glm::mat4(1.0f));
-  std::vector<std::uint8_t> inside(mesh.Mesh.Points.size(), 0);
+  std::vector<std::uint8_t> inside(mesh.Mesh.Positions.size(), 0);
   std::size_t insideReference = 0;
   for (std::size_t i = 0; i < inside.size(); ++i)
   {
-    inside[i] = self.SeesItself(mesh.Mesh.Points[i], mesh.Mesh.Normals[i]) ? 1 : 0;
+    inside[i] = self.SeesItself(mesh.Mesh.Positions[i], mesh.Mesh.Normals[i]) ? 1 : 0;
   }
   for (const std::uint32_t i : reference.Points)
   {

@@ -292,11 +292,11 @@ const FloorReceivers& Receivers(const vlf::LightField& field)
   const vlf::ObjectMesh cube = WorldCube();
   SceneMaterial material;
   material.Name = "object";
-  material.Diffuse = cube.Kd;
+  material.Diffuse = cube.Diffuse;
   const std::uint32_t id = scene.AddMaterial(material);
   for (const glm::uvec3& t : cube.Triangles)
   {
-    scene.AddPolygon({ cube.Points[t.x], cube.Points[t.y], cube.Points[t.z] }, id);
+    scene.AddPolygon({ cube.Positions[t.x], cube.Positions[t.y], cube.Positions[t.z] }, id);
   }
   const EmbreeScene embree(scene);
   const PathTracer tracer(embree);

@@ -122,7 +122,7 @@ TEST(ShadowMapGL, GpuAndRaytraceDarkeningMatchCore)
   }
   // A broken caster is named, casts nothing and crashes nothing; removed: no shadow.
   vlf::ObjectMesh broken = cube;
-  broken.Points[0].x = std::nanf("");
+  broken.Positions[0].x = std::nanf("");
   vtkLightFieldActorTesting::SetShadowCaster(viewer.Actor, &broken);
   viewer.Render(vtkLightFieldActor::Progressive);
   EXPECT_EQ(vtkLightFieldActorCore::GetObjectShadows(viewer.Actor), nullptr);

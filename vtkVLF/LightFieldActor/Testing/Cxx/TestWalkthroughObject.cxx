@@ -38,7 +38,7 @@ TEST(WalkthroughObject, EmbreeInstanceHitsMovesAndClears)
   ray.Origin = glm::vec3(0.0f, 0.0f, 10.0f);
   ray.Direction = glm::vec3(0.0f, 0.0f, -1.0f);
   EXPECT_EQ(scene.Intersect(ray).Triangle, 0u); // the static triangle only
-  scene.SetObject(cube.Points, cube.Triangles);
+  scene.SetObject(cube.Positions, cube.Triangles);
   ASSERT_TRUE(scene.HasObject());
   SceneHit hit = scene.Intersect(ray);
   EXPECT_NE(hit.ObjectTriangle, SceneHit::None);
@@ -47,7 +47,7 @@ TEST(WalkthroughObject, EmbreeInstanceHitsMovesAndClears)
   // The barycentrics give the hit point on the object's own triangle.
   const glm::uvec3 t = cube.Triangles[hit.ObjectTriangle];
   const glm::vec3 p =
-    (1.0f - hit.U - hit.V) * cube.Points[t.x] + hit.U * cube.Points[t.y] + hit.V * cube.Points[t.z];
+    (1.0f - hit.U - hit.V) * cube.Positions[t.x] + hit.U * cube.Positions[t.y] + hit.V * cube.Positions[t.z];
   EXPECT_NEAR(p.x, 0.0f, 1e-4f);
   EXPECT_NEAR(p.y, 0.0f, 1e-4f);
   EXPECT_NEAR(p.z, 0.5f, 1e-4f);
@@ -115,7 +115,7 @@ TEST(WalkthroughObject, MovingTheInstanceDoesNotRebuildTheStaticScene)
   EmbreeScene scene(grid);
   const double build = std::chrono::duration<double>(Clock::now() - start).count();
   const vlf::ObjectMesh sphere = vlf::MakeSphere(0.05f, 16, 32);
-  scene.SetObject(sphere.Points, sphere.Triangles);
+  scene.SetObject(sphere.Positions, sphere.Triangles);
   const int moves = 20;
   start = Clock::now();
   for (int m = 0; m < moves; ++m)
@@ -226,7 +226,7 @@ TEST(WalkthroughObject, TracerMasksAgainstRayCastInEveryQuality)
     tracer.SetObject(sphere);
     tracer.SetObjectPlacement(placement);
     tracer.SetObjectRadiance(
-      std::vector<glm::vec3>(sphere.Points.size(), glm::vec3(ObjectRed, 0.0f, 0.0f)));
+      std::vector<glm::vec3>(sphere.Positions.size(), glm::vec3(ObjectRed, 0.0f, 0.0f)));
     for (const bool withObject : { true, false })
     {
       if (!withObject)
@@ -302,7 +302,7 @@ TEST(WalkthroughObject, ReflectionRadianceInterpolatesTheObjectsPoints)
   // height of the hit point (linear along every triangle).
   const vlf::ObjectMesh unit = vlf::TransformMesh(sphere, placement);
   std::vector<glm::vec3> radiance;
-  for (const glm::vec3& p : unit.Points)
+  for (const glm::vec3& p : unit.Positions)
   {
     radiance.emplace_back(p.y + 2.0f);
   }
@@ -355,7 +355,7 @@ TEST(WalkthroughObject, BadObjectsAreRefused)
   const vlf::LightField& field = MirrorCornellField(513);
   vlf::WalkthroughTracer tracer(field);
   vlf::ObjectMesh flat;
-  flat.Points = { { 0, 0, 0 }, { 1, 0, 0 }, { 2, 0, 0 } };
+  flat.Positions = { { 0, 0, 0 }, { 1, 0, 0 }, { 2, 0, 0 } };
   flat.Triangles = { { 0, 1, 2 } };
   EXPECT_THROW(tracer.SetObject(flat), std::invalid_argument);
   EXPECT_THROW(tracer.SetObject(vlf::ObjectMesh{}), std::invalid_argument);
