@@ -11,6 +11,7 @@
 
 #include "vtkLightFieldActorInternals.h"
 #include "vtkLightFieldObjectMapper.h"
+#include "vtkTriangleSceneConverter.h"
 
 #include "EmitterLights.h"
 #include "ObjectGatherer.h"
@@ -32,29 +33,10 @@ using namespace objecttest;
 
 vtkSmartPointer<vtkPolyData> ToPolyData(const vlf::ObjectMesh& mesh, bool normals)
 {
-  vtkNew<vtkPoints> points;
-  for (const glm::vec3& p : mesh.Positions)
+  auto poly = vtkTriangleSceneConverter::MeshToPolyData(mesh);
+  if (!normals)
   {
-    points->InsertNextPoint(p.x, p.y, p.z);
-  }
-  vtkNew<vtkCellArray> polys;
-  for (const glm::uvec3& t : mesh.Triangles)
-  {
-    const vtkIdType ids[3] = { t.x, t.y, t.z };
-    polys->InsertNextCell(3, ids);
-  }
-  auto poly = vtkSmartPointer<vtkPolyData>::New();
-  poly->SetPoints(points);
-  poly->SetPolys(polys);
-  if (normals)
-  {
-    vtkNew<vtkFloatArray> n;
-    n->SetNumberOfComponents(3);
-    for (const glm::vec3& v : mesh.Normals)
-    {
-      n->InsertNextTuple3(v.x, v.y, v.z);
-    }
-    poly->GetPointData()->SetNormals(n);
+    poly->GetPointData()->SetNormals(nullptr);
   }
   return poly;
 }
