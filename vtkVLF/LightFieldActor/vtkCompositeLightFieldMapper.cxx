@@ -3,6 +3,7 @@
 
 #include "vtkLightFieldGatherFilter.h"
 #include "vtkLightFieldMapper.h"
+#include "vtkLightFieldShading.h"
 #include "vtkVirtualLightField.h"
 
 #include "vtkCompositeDataIterator.h"
@@ -178,7 +179,7 @@ protected:
       this->Superclass::ReplaceShaderValues(shaders, ren, actor);
       return;
     }
-    vtkLightFieldMapper::ReplaceRadianceShaderValues(
+    vtkLightFieldShading::ReplaceRadianceShaderValues(
       shaders, [&]() { this->Superclass::ReplaceShaderValues(shaders, ren, actor); },
       this->Radiance == VertexRadiance);
   }
@@ -192,14 +193,14 @@ protected:
       return;
     }
     vtkCompositeLightFieldMapper* owner = this->Owner();
-    vtkLightFieldMapper::RadianceUniforms uniforms;
+    vtkLightFieldShading::RadianceUniforms uniforms;
     // A gathered surface reads no atlas (unit 0 is never sampled).
     uniforms.AtlasUnit = this->Texture(owner)->GetTextureUnit();
     uniforms.ScreenUnit = uniforms.AtlasUnit; // no screen-space pass: never read (size 0)
     uniforms.Exposure = static_cast<float>(owner->GetEffectiveExposure());
     uniforms.ToneMap = owner->GetToneMap();
-    vtkLightFieldMapper::SetRadianceUniforms(cellBO.Program, uniforms);
-    vtkLightFieldMapper::SetShadowUniforms(cellBO.Program,
+    vtkLightFieldShading::SetRadianceUniforms(cellBO.Program, uniforms);
+    vtkLightFieldShading::SetShadowUniforms(cellBO.Program,
       this->Shadowing ? &owner->Shadows->Gpu : nullptr,
       this->Shadowing ? owner->Shadows->Texture->GetTextureUnit() : uniforms.AtlasUnit);
   }
@@ -365,7 +366,7 @@ bool vtkCompositeLightFieldMapper::PrepareBlankTexture(vtkRenderer* ren)
     return true;
   }
   const float blank[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
-  return vtkLightFieldMapper::UploadAtlasTexture(this->BlankTexture, window, 1, 1, blank);
+  return vtkLightFieldShading::UploadAtlasTexture(this->BlankTexture, window, 1, 1, blank);
 }
 
 //------------------------------------------------------------------------------
@@ -382,7 +383,7 @@ bool vtkCompositeLightFieldMapper::PrepareShadowTexture(vtkRenderer* ren)
   {
     return true; // uploaded once per rebuild of the maps
   }
-  if (!vtkLightFieldMapper::UploadShadowTexture(d.Texture, window, d.Gpu))
+  if (!vtkLightFieldShading::UploadShadowTexture(d.Texture, window, d.Gpu))
   {
     vtkErrorMacro(<< "could not upload the " << d.Gpu.Width << "x" << d.Gpu.Height
                   << " shadow map texture: the object casts no shadow");
@@ -492,7 +493,7 @@ bool vtkCompositeLightFieldMapper::PrepareAtlas(vtkRenderer* ren)
   {
     return true; // uploaded once per field
   }
-  if (!vtkLightFieldMapper::UploadAtlasTexture(this->AtlasTexture, window,
+  if (!vtkLightFieldShading::UploadAtlasTexture(this->AtlasTexture, window,
         this->CurrentAtlasSize[0], this->CurrentAtlasSize[1], this->CurrentAtlas->GetPointer(0)))
   {
     vtkErrorMacro(<< "could not upload the light field's " << this->CurrentAtlasSize[0] << "x"

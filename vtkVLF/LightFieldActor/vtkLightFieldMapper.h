@@ -8,7 +8,8 @@
  * radiance modes replace VTK's lighting by glsl/vtkLightFieldFS.glsl: the texture atlas of total
  * diffuse radiance (uploaded once per field, bilinear) at the per-vertex atlas coordinates, and
  * the actor's screen-space image (uploaded per frame, only the rectangle it covers) at
- * gl_FragCoord, composited by alpha on mirror fragments, then exposure and tone mapping.
+ * gl_FragCoord, composited by alpha on mirror fragments, then exposure and tone mapping. The
+ * shader edits and uniforms are vtkLightFieldShading's, shared with vtkCompositeLightFieldMapper.
  */
 #ifndef vtkLightFieldMapper_h
 #define vtkLightFieldMapper_h
@@ -17,16 +18,7 @@
 #include "vtkOpenGLPolyDataMapper.h"
 #include "vtkSmartPointer.h" // For vtkSmartPointer
 
-#include <functional> // For std::function
-#include <map>        // For std::map
-
-namespace mesolight
-{
-namespace vlf
-{
-struct ShadowGpuData;
-}
-}
+#include <map> // For std::map
 
 class vtkOpenGLRenderWindow;
 class vtkShaderProgram;
@@ -44,42 +36,6 @@ public:
 
   void ReleaseGraphicsResources(vtkWindow* window) override;
 
-  ///@{
-  /**
-   * The radiance shading written once for this mapper and vtkCompositeLightFieldMapper's helper:
-   * the shader edits around the superclass' own (`superclass` fills VTK's tags; VTK's lighting
-   * gives way to the field's radiance; vertexRadiance: the per-vertex attribute mlVertexRadiance
-   * instead of the atlas, for surfaces shaded by Light Field Gather), and the uniforms of one
-   * draw.
-   */
-  static void ReplaceRadianceShaderValues(std::map<vtkShader::Type, vtkShader*>& shaders,
-    const std::function<void()>& superclass, bool vertexRadiance = false);
-  struct RadianceUniforms
-  {
-    int AtlasUnit = 0;
-    int ScreenUnit = 0;
-    int ScreenOrigin[2] = { 0, 0 };
-    int ScreenSize[2] = { 0, 0 }; // 0 x 0: no screen-space values
-    float Exposure = 1.0f;
-    int ToneMap = 0;
-    bool AllScreen = false;
-    bool Overwrite = false;
-  };
-  static void SetRadianceUniforms(vtkShaderProgram* program, const RadianceUniforms& uniforms);
-  /** Uploads an RGBA float atlas (creating the texture if needed); false if the upload failed. */
-  static bool UploadAtlasTexture(vtkSmartPointer<vtkTextureObject>& texture,
-    vtkOpenGLRenderWindow* window, int width, int height, const float* rgba);
-  /**
-   * The movable object's shadow maps (glsl/vtkLightFieldShadowFS.glsl), written once for this
-   * mapper and vtkCompositeLightFieldMapper: uploads the maps' depth tiles (creating the texture
-   * if needed; false if the upload failed), and sets the shadow uniforms of one draw (gpu null:
-   * no shadows; textureUnit then any unit holding a 2D texture, e.g. the atlas').
-   */
-  static bool UploadShadowTexture(vtkSmartPointer<vtkTextureObject>& texture,
-    vtkOpenGLRenderWindow* window, const mesolight::vlf::ShadowGpuData& gpu);
-  static void SetShadowUniforms(
-    vtkShaderProgram* program, const mesolight::vlf::ShadowGpuData* gpu, int textureUnit);
-  ///@}
 
 protected:
   vtkLightFieldMapper();
