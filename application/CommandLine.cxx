@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "CommandLine.h"
 
+#include <cctype>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -148,8 +150,64 @@ bool CommandLine::Parse(const std::vector<std::string>& args, std::string& error
   return true;
 }
 
+namespace
+{
+// The options of the command being run, as VTK property names ("--memory-budget" ->
+// "MemoryBudget"), for NameOwnOptions.
+std::vector<std::pair<std::string, std::string>>& PropertyOptions()
+{
+  static std::vector<std::pair<std::string, std::string>> options;
+  return options;
+}
+
+std::string PropertyName(const std::string& option)
+{
+  std::string name;
+  bool upper = true;
+  for (std::size_t i = option.find_first_not_of('-'); i < option.size(); ++i)
+  {
+    if (option[i] == '-')
+    {
+      upper = true;
+      continue;
+    }
+    name.push_back(upper ? static_cast<char>(std::toupper(static_cast<unsigned char>(option[i])))
+                         : option[i]);
+    upper = false;
+  }
+  return name;
+}
+} // namespace
+
+std::string NameOwnOptions(const std::string& message)
+{
+  std::string text = message;
+  for (const auto& entry : PropertyOptions())
+  {
+    const std::string from = "set " + entry.first;
+    std::size_t at = text.find(from);
+    while (at != std::string::npos)
+    {
+      const std::size_t end = at + from.size();
+      if (end < text.size() && std::isalnum(static_cast<unsigned char>(text[end])))
+      {
+        at = text.find(from, end); // a longer property name: not this option
+        continue;
+      }
+      text.replace(at + 4, entry.first.size(), entry.second);
+      at = text.find(from, at + 4 + entry.second.size());
+    }
+  }
+  return text;
+}
+
 bool CommandLine::ParseArguments(const std::vector<std::string>& args, int& status)
 {
+  PropertyOptions().clear();
+  for (const std::string& option : this->Order)
+  {
+    PropertyOptions().emplace_back(PropertyName(option), option);
+  }
   if (this->Options.count("--help") == 0)
   {
     this->AddFlag("--help", "show this help");

@@ -89,6 +89,13 @@ private:
   std::vector<std::string> PositionalArgs;
 };
 
+/**
+ * A VTK message as the tool shows it: "set Property" (a filter's advice, e.g. "set MemoryBudget")
+ * becomes "set --property" when the command last parsed declares that option, so the message
+ * names what the user can type.
+ */
+std::string NameOwnOptions(const std::string& message);
+
 } // namespace mesolight
 
 #endif

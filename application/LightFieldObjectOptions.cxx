@@ -27,9 +27,24 @@
 #include <cmath>
 #include <iostream>
 
+#include <sys/stat.h>
+
 namespace mesolight
 {
 namespace vlf = mesolight::vlf;
+
+namespace
+{
+// An object farther than this many field sizes from the origin has vertices whose products
+// (areas, normals) overflow single precision.
+constexpr double MaximumObjectReach = 1e15;
+
+bool IsDirectory(const std::string& path)
+{
+  struct stat info;
+  return ::stat(path.c_str(), &info) == 0 && S_ISDIR(info.st_mode);
+}
+} // namespace
 
 void AddObjectOptions(CommandLine& cl)
 {
@@ -73,7 +88,9 @@ int SetUpObject(const CommandLine& cl, const char* command, vtkLightFieldActor* 
 {
   if (!cl.Has("--object"))
   {
-    for (const char* option : { "--object-transform", "--path" })
+    // Every object option: without an object they would be silently ignored.
+    for (const char* option : { "--object-transform", "--object-colour", "--shading",
+           "--shadows", "--subdivision", "--gather-directions", "--gather-volume", "--path" })
     {
       if (cl.Has(option))
       {
@@ -149,6 +166,11 @@ int SetUpObject(const CommandLine& cl, const char* command, vtkLightFieldActor* 
   }
   else
   {
+    if (IsDirectory(name))
+    {
+      std::cerr << command << ": --object '" << name << "' is a directory, not an .obj file\n";
+      return 2;
+    }
     if (!vlf::FileExists(name))
     {
       std::cerr << command << ": --object '" << name
@@ -184,6 +206,28 @@ int SetUpObject(const CommandLine& cl, const char* command, vtkLightFieldActor* 
     if (!error.empty())
     {
       std::cerr << command << ": --object-transform: " << error << "\n";
+      return 2;
+    }
+  }
+  {
+    // The object's farthest vertex, in field extents: beyond single precision's range its areas
+    // and normals overflow (reported as zero area, rendered black), so refuse the transform.
+    double radius = 0.0;
+    for (const glm::vec3& p : mesh.Positions)
+    {
+      radius = std::max(radius, static_cast<double>(glm::length(p)));
+    }
+    const double reach = std::sqrt(placement.Position[0] * placement.Position[0] +
+                           placement.Position[1] * placement.Position[1] +
+                           placement.Position[2] * placement.Position[2]) +
+      placement.Scale * radius;
+    const double limit = MaximumObjectReach * std::max(extent, 1e-30);
+    if (!(reach <= limit))
+    {
+      std::cerr << command << ": --object-transform is out of range: the object would reach "
+                << reach << " world units from the origin, more than " << limit << " ("
+                << MaximumObjectReach << " times the field's size " << extent
+                << ", beyond single precision)\n";
       return 2;
     }
   }

@@ -194,6 +194,29 @@ int Propagate(const std::vector<std::string>& args)
         return 2;
       }
       field = vlf::ReadSnapshot(out, budgetBytes);
+      // A resumed field keeps the settings it was traced with: other values given here would be
+      // silently ignored, so they are refused, naming both.
+      const vlf::LightFieldSettings& stored = field->Settings();
+      const int storedRays = stored.RaysPerSide;
+      const int givenRays = cl.Has("--rays") ? rays : storedRays;
+      const struct
+      {
+        const char* Option;
+        long long Given;
+        long long Stored;
+      } checks[] = { { "--directions", directions, static_cast<long long>(stored.Directions) },
+        { "--rays", rays, storedRays },
+        { "--tiles", tiles > 0 ? tiles : std::max(1, givenRays / 8), stored.TilesPerSide } };
+      for (const auto& check : checks)
+      {
+        if (cl.Has(check.Option) && check.Given != check.Stored)
+        {
+          return cl.UsageError(std::string("--resume: ") + check.Option + " " +
+            cl.Get(check.Option) + " differs from the " + std::to_string(check.Stored) +
+            " stored in '" + out + "' (a resumed field keeps its settings: leave out " +
+            check.Option + ", or start over with --force)");
+        }
+      }
       std::cout << "resuming '" << out << "' after " << field->IterationsDone << " iterations\n";
     }
     else
@@ -466,6 +489,19 @@ int RunVlfRender(const std::vector<std::string>& args)
   if (std::find(args.begin(), args.end(), "--mode") != args.end())
   {
     return RunLightFieldRender(args);
+  }
+  // The help shows both renderers: the walkthrough's options (--mode, --object, ...) are found
+  // from here, not only once --mode is given.
+  if (std::find(args.begin(), args.end(), "--help") != args.end())
+  {
+    const int status = Render(args);
+    if (status == 0)
+    {
+      std::cout << "\nWith --mode:\n\n";
+      std::cout.flush();
+      return RunLightFieldRender({ "--help" });
+    }
+    return status;
   }
   return Render(args);
 }

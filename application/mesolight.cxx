@@ -2,6 +2,7 @@
 // mesolight: render, bake and benchmark relief surfaces from the command line. The commands are
 // one table (Commands() below: name, usage, summary, handler); `mesolight --help` is printed from
 // it, and `mesolight COMMAND --help` by each command's CommandLine.
+#include "CommandLine.h"
 #include "CommandTable.h"
 #include "ConeBenchmark.h"
 #include "GatherBenchmark.h"
@@ -48,7 +49,8 @@ public:
     {
       return;
     }
-    std::cerr << "mesolight: " << mesolight::CleanVTKMessage(message) << "\n";
+    std::cerr << "mesolight: " << mesolight::NameOwnOptions(mesolight::CleanVTKMessage(message))
+              << "\n";
   }
 };
 vtkStandardNewMacro(ConsoleOutputWindow);

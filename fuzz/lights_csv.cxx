@@ -2,12 +2,14 @@
 // Fuzz target: the lights CSV read back (filters/Lighting/core/LightSetCsv, behind
 // vtkLightSetReader and `mesolight render --lights-csv`).
 //
-// Input: the file's text. A light set accepted must hold whole lights of finite numbers, unit
-// directions and no negative irradiance; a refusal must say why. Anything else aborts.
+// Input: the file's text. A light set accepted must hold whole lights of finite numbers within
+// single precision, unit directions and no negative irradiance; a refusal must say why, in
+// printable ASCII (no raw file bytes echoed). Anything else aborts.
 #include "LightSetCsv.h"
 
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <cstdlib>
 #include <sstream>
 #include <string>
@@ -25,6 +27,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     {
       std::abort();
     }
+    for (const char c : error)
+    {
+      const auto byte = static_cast<unsigned char>(c);
+      if (byte < 0x20 || byte >= 0x7f)
+      {
+        std::abort();
+      }
+    }
     return 0;
   }
   if (values.empty() || values.size() % 8 != 0)
@@ -36,7 +46,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const double* v = values.data() + k;
     for (int c = 0; c < 8; ++c)
     {
-      if (!std::isfinite(v[c]))
+      if (!std::isfinite(v[c]) ||
+        std::abs(v[c]) > static_cast<double>(std::numeric_limits<float>::max()))
       {
         std::abort();
       }

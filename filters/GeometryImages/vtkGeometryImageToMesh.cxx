@@ -17,6 +17,11 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
 #include <sstream>
 
 vtkStandardNewMacro(vtkGeometryImageToMesh);
@@ -125,6 +130,55 @@ bool vtkGeometryImageToMesh::ToGeometryImage(vtkImageData* image, vtkImageData* 
   return true;
 }
 
+namespace
+{
+// The output and the renderer are single precision: a mesh none of whose triangles has a finite,
+// non-zero area there (constant or collinear positions, or positions so small or large that the
+// areas underflow or overflow) renders nothing. "" when some triangle is usable, else why not.
+std::string DegenerateMeshProblem(const mesolight::GeometryImageMesh& mesh)
+{
+  glm::dvec3 lower(std::numeric_limits<double>::max());
+  glm::dvec3 upper(-std::numeric_limits<double>::max());
+  for (const glm::ivec3& t : mesh.Triangles)
+  {
+    const glm::vec3 a(mesh.Points[t[0]]), b(mesh.Points[t[1]]), c(mesh.Points[t[2]]);
+    const glm::vec3 n = glm::cross(b - a, c - a);
+    // The cross product itself (area squared would underflow at far larger sizes).
+    if (std::isfinite(n.x) && std::isfinite(n.y) && std::isfinite(n.z) &&
+      (n.x != 0.0f || n.y != 0.0f || n.z != 0.0f))
+    {
+      return std::string();
+    }
+    for (int k = 0; k < 3; ++k)
+    {
+      lower = glm::min(lower, mesh.Points[t[k]]);
+      upper = glm::max(upper, mesh.Points[t[k]]);
+    }
+  }
+  const glm::dvec3 size = upper - lower;
+  const double extent = std::max({ size.x, size.y, size.z });
+  std::ostringstream why;
+  why << "every triangle has zero or non-finite area in single precision: ";
+  if (!(extent > 0.0))
+  {
+    why << "all its positions are the same point";
+  }
+  else if (extent > 1e18 || !std::isfinite(static_cast<float>(extent)))
+  {
+    why << "its positions span " << extent << " units, too large (at most about 1e18)";
+  }
+  else if (extent < 1e-18)
+  {
+    why << "its positions span " << extent << " units, too small (at least about 1e-18)";
+  }
+  else
+  {
+    why << "its positions are collinear";
+  }
+  return why.str();
+}
+} // namespace
+
 //------------------------------------------------------------------------------
 int vtkGeometryImageToMesh::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
@@ -158,6 +212,15 @@ int vtkGeometryImageToMesh::RequestData(
   if (this->GetAbortExecute())
   {
     return 1;
+  }
+  if (!mesh.Triangles.empty())
+  {
+    error = DegenerateMeshProblem(mesh);
+    if (!error.empty())
+    {
+      vtkErrorMacro(<< "Cannot mesh the geometry image: " << error << ".");
+      return 0;
+    }
   }
 
   const vtkIdType np = static_cast<vtkIdType>(mesh.Points.size());

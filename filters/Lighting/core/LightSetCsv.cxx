@@ -3,7 +3,9 @@
 
 #include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
+#include <limits>
 #include <sstream>
 
 namespace mesolight
@@ -20,6 +22,32 @@ std::string Trim(const std::string& s)
   }
   const size_t last = s.find_last_not_of(space);
   return s.substr(first, last - first + 1);
+}
+
+// Text from the file as it may be shown on a terminal: bytes that are not printable ASCII
+// (a binary file, a stray control character) as \xNN, so a message never echoes them raw.
+std::string Printable(const std::string& text, std::size_t limit)
+{
+  std::string shown;
+  for (std::size_t i = 0; i < text.size() && i < limit; ++i)
+  {
+    const unsigned char c = static_cast<unsigned char>(text[i]);
+    if (c >= 0x20 && c < 0x7f)
+    {
+      shown.push_back(static_cast<char>(c));
+    }
+    else
+    {
+      char escaped[8];
+      std::snprintf(escaped, sizeof(escaped), "\\x%02X", static_cast<unsigned>(c));
+      shown += escaped;
+    }
+  }
+  if (text.size() > limit)
+  {
+    shown += "...";
+  }
+  return shown;
 }
 
 // The whole field as a finite double, or false.
@@ -70,14 +98,21 @@ bool ParseLightSetCsv(
     error = name + " is empty (expected the header \"u,v,x,y,z,r,g,b\" and one row per light)";
     return false;
   }
+  // A UTF-8 byte order mark (spreadsheets write one) is not part of the header.
+  static const std::string byteOrderMark = "\xEF\xBB\xBF";
+  if (line.compare(0, byteOrderMark.size(), byteOrderMark) == 0)
+  {
+    line.erase(0, byteOrderMark.size());
+  }
   if (Trim(line) != "u,v,x,y,z,r,g,b")
   {
-    error = name + ", line 1: the header is \"" + Trim(line).substr(0, 80) +
+    error = name + ", line 1: the header is \"" + Printable(Trim(line), 80) +
       "\", expected \"u,v,x,y,z,r,g,b\" (a light set written by mesolight lights)";
     return false;
   }
   static const char* names[8] = { "u", "v", "x", "y", "z", "r", "g", "b" };
   long lineNumber = 1;
+  double total[3] = { 0.0, 0.0, 0.0 };
   while (readLine())
   {
     ++lineNumber;
@@ -113,8 +148,16 @@ bool ParseLightSetCsv(
     {
       if (!ParseNumber(fields[k], v[k]))
       {
-        error = where + "the " + names[k] + " field \"" + Trim(fields[k]).substr(0, 40) +
+        error = where + "the " + names[k] + " field \"" + Printable(Trim(fields[k]), 40) +
           "\" is not a finite number";
+        return false;
+      }
+      // The lights are single precision from here on (point data, the light texture, the
+      // shaders): a larger value becomes infinity there and the whole relief goes black.
+      if (std::abs(v[k]) > static_cast<double>(std::numeric_limits<float>::max()))
+      {
+        error = where + "the " + names[k] + " field \"" + Printable(Trim(fields[k]), 40) +
+          "\" is outside single precision (magnitude at most 3.4e38)";
         return false;
       }
     }
@@ -129,6 +172,18 @@ bool ParseLightSetCsv(
     {
       error = where + "negative irradiance (r, g, b)";
       return false;
+    }
+    // The renderer sums the lights in single precision: the total of each channel must stay
+    // finite too.
+    for (int c = 5; c < 8; ++c)
+    {
+      total[c - 5] += v[c];
+      if (total[c - 5] > static_cast<double>(std::numeric_limits<float>::max()))
+      {
+        error = where + "the total " + names[c] +
+          " irradiance of the lights so far exceeds single precision (3.4e38)";
+        return false;
+      }
     }
     values.insert(values.end(), v, v + 8);
   }

@@ -18,8 +18,11 @@ constexpr std::size_t MaximumLightSetCsvLine = 4096;
 
 /**
  * Parses the CSV from `in` (`name` only names it in messages): 8 finite numbers per light
- * appended to `values`, each direction of unit length (within 1e-3), no negative irradiance,
- * at least one light. False with a one-line message (file and line named) on any error.
+ * appended to `values`, each within single precision (the renderer's), each direction of unit
+ * length (within 1e-3), no negative irradiance, each channel's total irradiance within single
+ * precision, at least one light. A UTF-8 byte order mark before the header is skipped. False
+ * with a one-line message (file, line and field named; file bytes that are not printable ASCII
+ * shown as \xNN) on any error.
  */
 bool ParseLightSetCsv(
   std::istream& in, const std::string& name, std::vector<double>& values, std::string& error);

@@ -556,6 +556,17 @@ std::unique_ptr<LightField> ReadSnapshot(const std::string& path, std::uint64_t 
   }
   const float scale = r.Value<float>();
   const glm::vec3 centre = r.Value<glm::vec3>();
+  // world = centre + unit / scale: a NaN, infinite or non-positive normalisation puts the scene
+  // nowhere, and every command would blame the camera, the object or the placement instead.
+  if (!(std::isfinite(scale) && scale > 0.0f))
+  {
+    r.Fail("its normalisation scale " + std::to_string(scale) + " is not a positive number");
+  }
+  if (!(std::isfinite(centre.x) && std::isfinite(centre.y) && std::isfinite(centre.z)))
+  {
+    r.Fail("its normalisation centre (" + std::to_string(centre.x) + ", " +
+      std::to_string(centre.y) + ", " + std::to_string(centre.z) + ") is not finite");
+  }
 
   TriangleScene scene;
   scene.Positions.resize(r.Count(sizeof(glm::vec3), "position"));
@@ -685,6 +696,23 @@ std::unique_ptr<LightField> ReadSnapshot(const std::string& path, std::uint64_t 
   {
     throw SnapshotError(
       Quoted(path) + " holds NaN or infinite values: it is not a usable light field");
+  }
+  // Radiance is a sum of non-negative terms: a negative one is not light (it renders black).
+  const auto nonNegative = [](const std::vector<glm::vec3>& values)
+  {
+    return std::all_of(values.begin(), values.end(),
+      [](const glm::vec3& x) { return x.x >= 0.0f && x.y >= 0.0f && x.z >= 0.0f; });
+  };
+  ok = nonNegative(field->TotalDiffuse) && nonNegative(field->UnshotDiffuse);
+  for (std::size_t k = 0; ok && k < field->SubfieldCount(); ++k)
+  {
+    const Subfield& f = field->GetSubfield(k);
+    ok = nonNegative(f.Radiance) && nonNegative(f.UnshotSpecular);
+  }
+  if (!ok)
+  {
+    throw SnapshotError(
+      Quoted(path) + " holds negative radiance: it is not a usable light field");
   }
   return field;
 }

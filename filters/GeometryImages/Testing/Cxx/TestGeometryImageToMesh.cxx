@@ -12,11 +12,13 @@
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
+#include <string>
 
 using mesolight_test::MessageCapture;
 
@@ -141,4 +143,86 @@ TEST(GeometryImageToMesh, BadInputGivesAClearError)
   mesh->SetInputData(1, wrongNormals);
   mesh->Update();
   EXPECT_TRUE(messages->HasError("normal image must have")) << messages->AllErrors();
+}
+
+namespace
+{
+// A 16 x 16 geometry image whose pixel (i, j) is at f(i, j).
+template <class F>
+vtkSmartPointer<vtkImageData> GeometryImageOf(F&& f)
+{
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(16, 16, 1);
+  image->AllocateScalars(VTK_FLOAT, 3);
+  vtkDataArray* scalars = image->GetPointData()->GetScalars();
+  for (int j = 0; j < 16; ++j)
+  {
+    for (int i = 0; i < 16; ++i)
+    {
+      double p[3];
+      f(i, j, p);
+      scalars->SetTuple(j * 16 + i, p);
+    }
+  }
+  return image;
+}
+
+// Meshes `image` at stride 3 and adaptively; true when both fail with `needle` and no triangles.
+::testing::AssertionResult RefusedWith(vtkImageData* image, const std::string& needle)
+{
+  for (const double tolerance : { 0.0, 1e-3 })
+  {
+    vtkNew<MessageCapture> messages;
+    vtkNew<vtkGeometryImageToMesh> mesh;
+    messages->Watch(mesh);
+    mesh->SetInputData(image);
+    mesh->SetStride(3);
+    mesh->SetTolerance(tolerance);
+    mesh->Update();
+    if (!messages->HasError(needle) || mesh->GetOutput()->GetNumberOfPolys() != 0)
+    {
+      return ::testing::AssertionFailure()
+        << "tolerance " << tolerance << ": " << mesh->GetOutput()->GetNumberOfPolys()
+        << " triangles, errors: " << messages->AllErrors();
+    }
+  }
+  return ::testing::AssertionSuccess();
+}
+} // namespace
+
+// Geometry images whose triangles all have zero (or overflowing) area in single precision gave
+// "N triangles" and a background-only render with exit 0: now a clear error.
+TEST(GeometryImageToMesh, DegenerateGeometryImagesAreRefused)
+{
+  EXPECT_TRUE(RefusedWith(GeometryImageOf([](int, int, double* p) { p[0] = p[1] = p[2] = 0.5; }),
+    "all its positions are the same point"));
+  EXPECT_TRUE(RefusedWith(
+    GeometryImageOf([](int i, int, double* p) { p[0] = p[1] = p[2] = i; }), "collinear"));
+  for (const double scale : { 1e-30, 1e30, 2e37 })
+  {
+    EXPECT_TRUE(RefusedWith(GeometryImageOf(
+                              [scale](int i, int j, double* p)
+                              {
+                                p[0] = scale * i;
+                                p[1] = scale * j;
+                                p[2] = 0.0;
+                              }),
+      scale < 1.0 ? "too small" : "too large"))
+      << scale;
+  }
+  // The same plane at ordinary and at large but representable scales still meshes.
+  for (const double scale : { 1e-12, 1.0, 1e12 })
+  {
+    vtkNew<vtkGeometryImageToMesh> mesh;
+    mesh->SetInputData(GeometryImageOf(
+      [scale](int i, int j, double* p)
+      {
+        p[0] = scale * i;
+        p[1] = scale * j;
+        p[2] = 0.0;
+      }));
+    mesh->SetStride(3);
+    mesh->Update();
+    EXPECT_EQ(mesh->GetOutput()->GetNumberOfPolys(), 2 * 5 * 5) << scale;
+  }
 }

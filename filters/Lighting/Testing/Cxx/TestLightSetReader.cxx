@@ -227,3 +227,60 @@ TEST(LightsCsv, MalformedFilesFailWithAClearError)
     "line 2: longer than 4096 characters"));
   EXPECT_TRUE(FailsWith("/dev/zero", "is not a regular file"));
 }
+
+// Irradiance the renderer cannot hold (its lights are single precision) is refused with the line
+// and field, rather than accepted and turned into infinity that blacks out the relief.
+TEST(LightsCsv, ValuesOutsideSinglePrecisionAreRefused)
+{
+  const auto dir = mesolight_test::TestDirectory();
+  const std::string h = Header;
+  EXPECT_TRUE(FailsWith(WriteText(dir, "1e39.csv", h + GoodRow + "0.25,0.5,0,1,0,1e39,2,3\n"),
+    "line 3: the r field \"1e39\" is outside single precision"));
+  EXPECT_TRUE(FailsWith(WriteText(dir, "3.5e38.csv", h + "0.25,0.5,0,1,0,1,3.5e38,3\n"),
+    "line 2: the g field \"3.5e38\" is outside single precision"));
+  EXPECT_TRUE(FailsWith(WriteText(dir, "u.csv", h + "1e39,0.5,0,1,0,1,2,3\n"),
+    "the u field \"1e39\" is outside single precision"));
+  // Each light representable, their sum not.
+  EXPECT_TRUE(FailsWith(
+    WriteText(dir, "sum.csv", h + "0.25,0.5,0,1,0,1,2,3e38\n0.5,0.5,0,1,0,1,2,3e38\n"),
+    "line 3: the total b irradiance"));
+  // The largest float itself is still a light.
+  const std::string largest = WriteText(dir, "largest.csv", h + "0.25,0.5,0,1,0,3.4e38,2,3\n");
+  vtkNew<vtkLightSetReader> reader;
+  reader->SetFileName(largest.c_str());
+  reader->Update();
+  EXPECT_EQ(reader->GetOutput()->GetNumberOfPoints(), 1);
+}
+
+// Spreadsheets start a CSV with a UTF-8 byte order mark: skipped, not reported as a bad header.
+TEST(LightsCsv, ByteOrderMarkIsSkipped)
+{
+  const auto dir = mesolight_test::TestDirectory();
+  const std::string file =
+    WriteText(dir, "bom.csv", std::string("\xEF\xBB\xBF") + Header + GoodRow);
+  vtkNew<vtkLightSetReader> reader;
+  vtkNew<MessageCapture> messages;
+  messages->Watch(reader);
+  reader->SetFileName(file.c_str());
+  reader->Update();
+  EXPECT_EQ(reader->GetOutput()->GetNumberOfPoints(), 1) << messages->AllErrors();
+}
+
+// A binary file's bytes are shown escaped in the message, never echoed raw to a terminal.
+TEST(LightsCsv, BinaryBytesAreNotEchoed)
+{
+  const auto dir = mesolight_test::TestDirectory();
+  const std::string file = WriteText(dir, "binary.csv", std::string("\x1B[2J\x89PNG\x07,v\n"));
+  vtkNew<vtkLightSetReader> reader;
+  vtkNew<MessageCapture> messages;
+  messages->Watch(reader);
+  reader->SetFileName(file.c_str());
+  reader->Update();
+  ASSERT_TRUE(messages->HasError("line 1: the header is \"\\x1B[2J\\x89PNG\\x07,v\""))
+    << messages->AllErrors();
+  for (const char c : messages->AllErrors())
+  {
+    const auto byte = static_cast<unsigned char>(c);
+    EXPECT_TRUE(byte == '\n' || (byte >= 0x20 && byte < 0x7f)) << "raw byte " << int(byte);
+  }
+}

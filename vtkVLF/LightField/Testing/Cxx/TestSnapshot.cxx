@@ -208,6 +208,22 @@ TEST(VLFSnapshot, NonFiniteValuesAreRefused)
   std::remove(path.c_str());
 }
 
+// Radiance is never negative: a field holding some (checksums valid) rendered black with exit 0.
+TEST(VLFSnapshot, NegativeRadianceIsRefused)
+{
+  const std::string path = TempPath("negative.vlf");
+  std::unique_ptr<LightField> field = SmallCornell(1);
+  field->TotalDiffuse[0].y = -0.5f;
+  WriteSnapshot(*field, path);
+  EXPECT_NE(ReadError(path).find("holds negative radiance"), std::string::npos) << ReadError(path);
+  field = SmallCornell(1);
+  ASSERT_FALSE(field->GetSubfield(0).Radiance.empty());
+  field->GetSubfield(0).Radiance[0].z = -1.0f;
+  WriteSnapshot(*field, path);
+  EXPECT_NE(ReadError(path).find("holds negative radiance"), std::string::npos) << ReadError(path);
+  std::remove(path.c_str());
+}
+
 // kill -9 during a snapshot write (what a user's Ctrl-C or an OOM killer does to `mesolight vlf
 // propagate`): the file on disk stays the previous complete snapshot, resuming from it gives the
 // field of an uninterrupted run bit for bit, and the next write removes the dead writer's

@@ -26,6 +26,8 @@ using namespace mesolight::vlf;
 // (i32), scale (f32), centre (3 x f32), then the position count (u64) and the positions.
 constexpr std::size_t DirectionsAt = 0;
 constexpr std::size_t BudgetAt = 20;
+constexpr std::size_t ScaleAt = 33;
+constexpr std::size_t CentreAt = 37;
 constexpr std::size_t FirstPositionAt = 57;
 
 std::string TempPath(const std::string& name)
@@ -95,6 +97,31 @@ TEST(VLFSnapshotCorrupt, ASceneOutsideTheUnitSphereIsRefused)
   Put(payload, FirstPositionAt, 1.0e6f);
   const std::string error = ReadError(payload);
   EXPECT_NE(error.find("not normalized to the unit sphere"), std::string::npos) << error;
+}
+
+// A NaN normalisation scale or centre (checksums valid) put the scene nowhere: every command then
+// benchmarked empty frames or blamed the object, the placement or the camera.
+TEST(VLFSnapshotCorrupt, ANonFiniteNormalisationIsRefused)
+{
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  std::string payload = SmallPayload();
+  Put(payload, ScaleAt, nan);
+  std::string error = ReadError(payload);
+  EXPECT_NE(error.find("normalisation scale nan is not a positive number"), std::string::npos)
+    << error;
+  payload = SmallPayload();
+  Put(payload, ScaleAt, 0.0f);
+  error = ReadError(payload);
+  EXPECT_NE(error.find("normalisation scale 0.000000 is not a positive"), std::string::npos)
+    << error;
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    payload = SmallPayload();
+    Put(payload, CentreAt + 4 * axis, axis == 1 ? std::numeric_limits<float>::infinity() : nan);
+    error = ReadError(payload);
+    EXPECT_NE(error.find("normalisation centre"), std::string::npos) << axis << ": " << error;
+    EXPECT_NE(error.find("is not finite"), std::string::npos) << axis << ": " << error;
+  }
 }
 
 // A valid-looking 2n^2+1 direction count (n = 4096, 33554433 directions, a 1.3 GB direction

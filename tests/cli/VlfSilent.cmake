@@ -1,0 +1,51 @@
+# SPDX-License-Identifier: BSD-3-Clause
+# mesolight vlf: options that used to be silently ignored or blamed on the wrong cause (exit 0 or
+# a misleading message) are clear errors naming the option: --resume with other settings than
+# the stored ones, object options without --object, a directory as --object, an object transform
+# beyond single precision; and `vlf render --help` lists the walkthrough's options.
+include("${CMAKE_CURRENT_LIST_DIR}/RunTool.cmake")
+cli_fresh_work()
+set(field "${WORK}/cornell.vlf")
+cli_run(TRUE vlf propagate --directions 33 --rays 16 --iterations 1 --out "${field}")
+
+# --resume keeps the stored settings: other values are refused, naming both.
+cli_expect_error(2 "--resume: --directions 129 differs from the 33 stored in"
+  vlf propagate --resume --iterations 2 --directions 129 --out "${field}")
+cli_expect_error(2 "--resume: --rays 32 differs from the 16 stored in"
+  vlf propagate --resume --iterations 2 --rays 32 --out "${field}")
+cli_expect_error(2 "--resume: --tiles 1 differs from the 2 stored in"
+  vlf propagate --resume --iterations 2 --tiles 1 --out "${field}")
+# The same values (or none) resume.
+cli_run(TRUE vlf propagate --resume --iterations 2 --directions 33 --rays 16 --tiles 2
+        --out "${field}")
+
+# Object options without --object would be ignored.
+foreach (option IN ITEMS "--shading;flat" "--shadows;none" "--subdivision;2"
+                         "--object-colour;1,0,0" "--gather-directions;half" "--gather-volume;4")
+  list(GET option 0 name)
+  cli_expect_error(2 "${name} needs --object"
+    vlf render "${field}" --mode coherent --size 32x32 ${option} --out "${WORK}/never.png")
+endforeach ()
+if (EXISTS "${WORK}/never.png")
+  message(FATAL_ERROR "an image was written with an object option but no object")
+endif ()
+
+# A directory is not "an object with no faces".
+cli_expect_error(2 "--object '${WORK}' is a directory"
+  vlf render "${field}" --mode coherent --size 32x32 --object "${WORK}" --out "${WORK}/never.png")
+# A transform beyond single precision is out of range, not "zero area".
+cli_expect_error(2 "--object-transform is out of range"
+  vlf render "${field}" --mode coherent --size 32x32 --object sphere
+  --object-transform 300,300,300,0,0,0,1e30 --out "${WORK}/never.png")
+cli_expect_error(2 "--object-transform is out of range"
+  vlf render "${field}" --mode coherent --size 32x32 --object sphere
+  --object-transform 1e30,0,0 --out "${WORK}/never.png")
+
+# The help without --mode shows the walkthrough's options too.
+cli_run(TRUE vlf render --help)
+foreach (option IN ITEMS --mode --object --shading --shadows --subdivision --exposure --compare-exr)
+  string(FIND "${last_output}" "${option}" at)
+  if (at EQUAL -1)
+    message(FATAL_ERROR "vlf render --help does not list ${option}:\n${last_output}")
+  endif ()
+endforeach ()
