@@ -548,8 +548,8 @@ TEST(ObjectGatherer, IrradianceAppliesSolidAngleWeightsAndNormalisation)
       normalisationEffect = std::max(normalisationEffect, relative(expected, weighted));
     }
   }
-  std::printf("[ figures  ] 2049 directions: solid angles %.3e to %.3e sr (ratio %.3f); 16 sphere points: "
-              " Irradiance vs the weighted formula %.2e, vs the unweighted one %.2e; "
+  std::printf("[ figures  ] 2049 directions: solid angles %.3e to %.3e sr (ratio %.3f); 16 "
+              "sphere points: Irradiance vs the weighted formula %.2e, vs the unweighted one %.2e; "
               "weights change it by up to %.2e, the normalisation by %.2e\n",
     lowest, highest, highest / lowest, worst, worstUnweighted, weightsEffect,
     normalisationEffect);
