@@ -408,4 +408,21 @@ TEST(ReliefLightSet, HdrExtremesStayFiniteAndAccurate)
     EXPECT_EQ(red, 0) << c.Name;
     EXPECT_LT(e, 1.0) << c.Name;
   }
+  // The detector fires in the light-set path too. Non-finite lights are refused before drawing
+  // (vtkLightSetTexture), so the NaN is handed to the shader as the material's diffuse colour,
+  // which every light's contribution is multiplied by: the fragments must show red.
+  scene.Actor->GetProperty()->SetDiffuseColor(std::nan(""), std::nan(""), std::nan(""));
+  settings->SetOutput(vtkReliefProperty::NonFiniteCheckOutput);
+  const Frame check = CaptureFrame(window);
+  long long red = 0, covered = 0;
+  for (size_t p = 0; p < check.Depth.size(); ++p)
+  {
+    if (check.Covered(p))
+    {
+      ++covered;
+      red += check.Rgb[3 * p] > 128 && check.Rgb[3 * p + 1] < 128 ? 1 : 0;
+    }
+  }
+  std::cout << "[hdr] NaN diffuse colour: " << red << " non-finite of " << covered << " pixels\n";
+  EXPECT_GT(red, covered / 2);
 }

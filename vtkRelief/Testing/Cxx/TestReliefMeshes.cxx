@@ -18,6 +18,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <iostream>
 
 namespace
 {
@@ -78,6 +79,36 @@ TEST(ReliefMeshes, TexturedSphereGetsTangentsAndShowsRelief)
     covered += relief.Covered(p) ? 1 : 0;
   }
   EXPECT_GT(covered, 200 * 200 / 5); // the sphere fills about a quarter of the view
-  // The relief (mortar recessed, self-shadowed) must visibly change the image.
-  EXPECT_GT(CompareFrames(flat, relief, 1e30).MeanColorError, 3.0);
+  // The relief (mortar recessed, self-shadowed) must change the image the way mortar does: it
+  // darkens a band of pixels (the mortar lines and their shadows) and brightens few, so the lit
+  // sphere's mean level drops. Any change at all (noise, a shift, a blank sphere) does not pass.
+  const double difference = CompareFrames(flat, relief, 1e30).MeanColorError;
+  long long darker = 0, brighter = 0, both = 0;
+  double flatSum = 0.0, reliefSum = 0.0;
+  for (size_t p = 0; p < relief.Depth.size(); ++p)
+  {
+    if (!relief.Covered(p) || !flat.Covered(p))
+    {
+      continue;
+    }
+    ++both;
+    const int f = flat.Rgb[3 * p] + flat.Rgb[3 * p + 1] + flat.Rgb[3 * p + 2];
+    const int r = relief.Rgb[3 * p] + relief.Rgb[3 * p + 1] + relief.Rgb[3 * p + 2];
+    flatSum += f;
+    reliefSum += r;
+    darker += r < f - 30 ? 1 : 0;
+    brighter += r > f + 30 ? 1 : 0;
+  }
+  const double darkerFraction = static_cast<double>(darker) / both;
+  const double brighterFraction = static_cast<double>(brighter) / both;
+  std::cout << "sphere: mean colour difference " << difference << " levels; of " << both
+            << " pixels " << 100.0 * darkerFraction << "% darker, " << 100.0 * brighterFraction
+            << "% brighter; mean level " << flatSum / (3.0 * both) << " flat, "
+            << reliefSum / (3.0 * both) << " relief\n";
+  EXPECT_GT(difference, 3.0);
+  // Measured: 31% darker, 14% brighter, mean level 0.88 x the flat sphere's.
+  EXPECT_GT(darkerFraction, 0.15);
+  EXPECT_LT(darkerFraction, 0.5);
+  EXPECT_LT(brighterFraction, 0.25);
+  EXPECT_LT(reliefSum, 0.95 * flatSum);
 }

@@ -2,7 +2,7 @@
 // Every intersection method against the exact CPU reference (ReliefReference: the bilinear height
 // field traced exactly by HeightFieldTracer). Safe and exact methods must find the first hit to
 // within a fraction of a texel; plain texture mapping must not (negative test); unsafe methods
-// are measured and printed.
+// within bounds measured per pattern.
 #include "ImageCompare.h"
 #include "ReliefReference.h"
 #include "ReliefScene.h"
@@ -25,7 +25,8 @@ struct MethodCase
   int Linear;
   int Refine;
   double ViewAngle;
-  double MaxMeanTexels; // < 0: measured only
+  double MaxMeanTexels;          // bound on the mean hit error (texels); < 0: measured only
+  double MaxMeanTexelsBricks = -1; // on the Bricks pattern, when it differs (< 0: the same)
 };
 
 void PrintTo(const MethodCase& c, std::ostream* os)
@@ -76,9 +77,12 @@ TEST_P(ReliefMethodHits, AgainstExactReference)
   for (const char* pattern : { "HemisphereTorus", "Bricks" })
   {
     const HitComparison hits = MeasureHits(c, pattern);
-    if (c.MaxMeanTexels >= 0.0)
+    const bool bricks = std::string(pattern) == "Bricks";
+    const double bound =
+      bricks && c.MaxMeanTexelsBricks >= 0.0 ? c.MaxMeanTexelsBricks : c.MaxMeanTexels;
+    if (bound >= 0.0)
     {
-      EXPECT_LE(hits.MeanTexels, c.MaxMeanTexels) << pattern;
+      EXPECT_LE(hits.MeanTexels, bound) << pattern;
     }
   }
 }
@@ -91,12 +95,18 @@ INSTANTIATE_TEST_SUITE_P(Safe, ReliefMethodHits,
     MethodCase{ "relaxed-cone-interval", 32, 4, 55.0, 0.25 },
     MethodCase{ "cone", 32, 4, 55.0, 0.25 }));
 
+// The unsafe methods have no guarantee, but each reaches a known accuracy on each pattern at 55
+// degrees; the bounds are about 1.5 x what they reach (measured, HemisphereTorus / Bricks:
+// parallax 4.2 / 6.7, parallax-limit 12.8 / 4.7, parallax-slope 3.6 / 6.6, iterative-parallax
+// 0.82 / 3.6, binary 0.095 / 5.6, secant 0.20 / 1.6 texels), so a regression that loses one's
+// accuracy fails. Plain texture mapping (no offset; 31.6 / 5.1 texels, measured as a case here)
+// fails every one of them on HemisphereTorus (on Bricks, whose offsets are small, secant's).
 INSTANTIATE_TEST_SUITE_P(Unsafe, ReliefMethodHits,
-  ::testing::Values(MethodCase{ "parallax", 1, 0, 55.0, -1.0 },
-    MethodCase{ "parallax-limit", 1, 0, 55.0, -1.0 },
-    MethodCase{ "parallax-slope", 1, 0, 55.0, -1.0 },
-    MethodCase{ "iterative-parallax", 4, 0, 55.0, -1.0 }, MethodCase{ "binary", 1, 8, 55.0, -1.0 },
-    MethodCase{ "secant", 1, 8, 55.0, -1.0 }));
+  ::testing::Values(MethodCase{ "parallax", 1, 0, 55.0, 6.5, 10.0 },
+    MethodCase{ "parallax-limit", 1, 0, 55.0, 19.0, 7.0 },
+    MethodCase{ "parallax-slope", 1, 0, 55.0, 5.5, 10.0 },
+    MethodCase{ "iterative-parallax", 4, 0, 55.0, 1.5, 5.5 },
+    MethodCase{ "binary", 1, 8, 55.0, 0.25, 8.5 }, MethodCase{ "secant", 1, 8, 55.0, 0.4, 2.5 }));
 
 // Negative test: without a march the hit stays where the ray enters the mesh.
 TEST(ReliefMethodHitsNegative, TextureMappingMissesTheFirstHit)

@@ -11,6 +11,7 @@
 #include "vtkReliefProperty.h"
 
 #include <vtkImageData.h>
+#include <vtkProperty.h>
 #include <vtkRendererCollection.h>
 
 #include <gtest/gtest.h>
@@ -18,6 +19,7 @@
 #include <cmath>
 #include <functional>
 #include <iostream>
+#include <limits>
 #include <sstream>
 
 namespace
@@ -33,7 +35,8 @@ struct StressResult
 
 // Renders the wall with the given relief texture (or the options' pattern when null) and counts
 // red (non-finite) and covered pixels.
-StressResult Stress(ReliefSceneOptions o, vtkImageData* relief)
+StressResult Stress(ReliefSceneOptions o, vtkImageData* relief,
+  const std::function<void(ReliefScene&)>& tamper = {})
 {
   o.Width = o.Height = 160;
   o.ViewDistance = 2.2;
@@ -66,6 +69,10 @@ StressResult Stress(ReliefSceneOptions o, vtkImageData* relief)
     {
       scene.Mapper->SetReliefTextureData(relief);
     }
+  }
+  if (tamper)
+  {
+    tamper(scene);
   }
   vtkNew<mesolight_test::MessageCapture> messages;
   messages->Watch(scene.Mapper);
@@ -179,6 +186,41 @@ TEST(ReliefStress, DegenerateAndSpikyMaps)
       const StressResult r = Stress(o, relief);
       EXPECT_TRUE(r.Errors.empty()) << map.Name << " " << method << ": " << r.Errors;
       EXPECT_EQ(r.Red, 0) << map.Name << " " << method;
+    }
+  }
+}
+
+// The detector the tests above rely on fires. The inputs a NaN could come from are refused before
+// drawing (relief texels, texture coordinates, light sets, depth scales: tried), so it is handed
+// to the shader as the material's diffuse colour, which a light set's shading multiplies (under
+// VTK's own lights the check runs before VTK's lighting code): every fragment must show red.
+TEST(ReliefStress, NonFiniteCheckSeesANaNOrInfColour)
+{
+  for (const double bad : { std::nan(""), std::numeric_limits<double>::infinity() })
+  {
+    for (const char* method : { "relief", "pom" })
+    {
+      ReliefSceneOptions o;
+      o.Pattern = "HemisphereTorus";
+      o.Resolution = 64;
+      o.Method = method;
+      o.LinearSteps = 16;
+      o.DepthScale = 0.1;
+      o.ViewAngle = 30.0;
+      o.Environment = "procedural:sky";
+      o.EnvironmentLights = 32;
+      const StressResult r = Stress(o, nullptr,
+        [bad](ReliefScene& scene)
+        {
+          // Without the albedo texture: its clamp(colour, 0, 1) may turn a NaN into a number
+          // before the check (GLSL leaves clamp of NaN undefined).
+          scene.Actor->SetTexture(nullptr);
+          scene.Actor->GetProperty()->SetDiffuseColor(bad, bad, bad);
+        });
+      std::cout << "[diffuse colour " << bad << "] " << method << ": " << r.Red << " red of "
+                << r.Covered << " pixels\n";
+      EXPECT_GT(r.Covered, 1000) << method;
+      EXPECT_GT(r.Red, r.Covered / 2) << bad << " " << method;
     }
   }
 }

@@ -178,7 +178,8 @@ bool DirectionSet::ToUpperHemisphere(const glm::vec3& unit, glm::dvec3& upper)
   return negated;
 }
 
-std::size_t DirectionSet::Nearest(const glm::vec3& unit, bool* flipped) const
+std::size_t DirectionSet::Nearest(
+  const glm::vec3& unit, bool* flipped, std::size_t* examined) const
 {
   glm::dvec3 u;
   const bool negated = ToUpperHemisphere(unit, u);
@@ -190,6 +191,7 @@ std::size_t DirectionSet::Nearest(const glm::vec3& unit, bool* flipped) const
   const glm::vec3 uf(u);
   float best = -2.0f;
   const LatticePoint* bestPoint = nullptr;
+  std::size_t compared = 0;
   for (int j = std::max(j0 - NearestRing, -this->N); j <= std::min(j0 + 1 + NearestRing, this->N);
        ++j)
   {
@@ -199,6 +201,7 @@ std::size_t DirectionSet::Nearest(const glm::vec3& unit, bool* flipped) const
     {
       const LatticePoint& point = this->At(i, j);
       const float d = glm::dot(point.Direction, uf);
+      ++compared;
       if (d > best)
       {
         best = d;
@@ -213,6 +216,10 @@ std::size_t DirectionSet::Nearest(const glm::vec3& unit, bool* flipped) const
   if (flipped)
   {
     *flipped = bestPoint->Flipped != negated;
+  }
+  if (examined)
+  {
+    *examined = compared;
   }
   return bestPoint->Index;
 }

@@ -58,7 +58,10 @@ public:
   // caller reads subfield i backwards). This is exactly "unit was in the lower hemisphere and was
   // negated", except within half a lattice cell of the equator, where the exact answer may be
   // the antipode of a kept equator direction.
-  std::size_t Nearest(const glm::vec3& unit, bool* flipped = nullptr) const;
+  // `examined`, when given, receives the number of lattice points compared (at most 16 for any
+  // set size: what makes the lookup O(1), checked by the tests).
+  std::size_t Nearest(
+    const glm::vec3& unit, bool* flipped = nullptr, std::size_t* examined = nullptr) const;
 
   struct Interpolation
   {

@@ -8,6 +8,8 @@
 
 #include "LightField.h"
 #include "MessageCapture.h"
+#include "Propagation.h"
+#include "TriangleScene.h"
 #include "vtkCornellBoxSource.h"
 
 #include <vtkCell.h>
@@ -21,6 +23,7 @@
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
+#include <vtkSMPTools.h>
 
 #include <gtest/gtest.h>
 
@@ -29,6 +32,7 @@
 #include <cstdio>
 #include <fstream>
 #include <iostream>
+#include <memory>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -277,3 +281,38 @@ TEST(VLFVirtualLightField, BudgetAbortAndSnapshots)
 }
 
 } // namespace
+
+// The field does not depend on how many threads vtkSMPTools runs: the work is split into a fixed
+// number of blocks whose sums are combined in a fixed order (RunInBlocks), so one thread and
+// four give the same energies bit for bit, iteration by iteration.
+TEST(VLFVirtualLightField, SameFieldForOneAndFourSMPThreads)
+{
+  using namespace mesolight::vlf;
+  LightFieldSettings settings;
+  settings.Directions = 513;
+  settings.RaysPerSide = 8;
+  settings.TilesPerSide = 2;
+  auto propagate = [&settings](int threads)
+  {
+    vtkSMPTools::Initialize(threads);
+    std::unique_ptr<LightField> field = LightField::Build(mesolight::MakeCornellBox(), settings);
+    Propagate(*field, 3);
+    return field;
+  };
+  const std::unique_ptr<LightField> one = propagate(1);
+  const std::unique_ptr<LightField> four = propagate(4);
+  std::cout << "vtkSMPTools backend " << vtkSMPTools::GetBackend() << ", "
+            << vtkSMPTools::GetEstimatedNumberOfThreads() << " threads for the second field\n";
+  vtkSMPTools::Initialize(0);
+  ASSERT_EQ(one->EnergyLog.size(), four->EnergyLog.size());
+  for (std::size_t i = 0; i < one->EnergyLog.size(); ++i)
+  {
+    const LightField::IterationEnergy& a = one->EnergyLog[i];
+    const LightField::IterationEnergy& b = four->EnergyLog[i];
+    EXPECT_EQ(a.Shot, b.Shot) << "iteration " << i;
+    EXPECT_EQ(a.Escaped, b.Escaped) << "iteration " << i;
+    EXPECT_EQ(a.Absorbed, b.Absorbed) << "iteration " << i;
+    EXPECT_EQ(a.BackFaces, b.BackFaces) << "iteration " << i;
+    EXPECT_EQ(a.Unshot, b.Unshot) << "iteration " << i;
+  }
+}

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// vtkLightFieldActor in a VTK renderer (offscreen; run under Xvfb): every mode against the path
+// vtkLightFieldActor in a VTK renderer (offscreen; run under Xvfb): the field modes (raytrace,
+// progressive, coherent; the geometry mode draws Kd colours, not the field) against the path
 // tracer rendering the same camera of the same scene, and the negative tests (atlas upside down,
 // no alpha composite, reflections one bounce short). Occlusion, composition and bad input are in
 // TestLightFieldActorScenes.cxx.

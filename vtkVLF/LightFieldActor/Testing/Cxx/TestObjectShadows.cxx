@@ -19,11 +19,13 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <map>
 #include <memory>
+#include <vector>
 
 namespace mesolight
 {
@@ -478,6 +480,13 @@ TEST(ShadowMapCore, CostPerResolution)
         lower.z + (upper.z - lower.z) * (b + 0.5f) / 256.0f));
     }
   }
+  struct ShadowFigures
+  {
+    int Resolution;
+    ShadowMode Mode;
+    double Darkness, Area;
+  };
+  std::vector<ShadowFigures> results;
   for (const int resolution : { 128, 256, 512, 1024 })
   {
     for (const ShadowMode mode : { ShadowMode::Field, ShadowMode::PCF, ShadowMode::Soft })
@@ -494,17 +503,55 @@ TEST(ShadowMapCore, CostPerResolution)
       }
       const auto start = std::chrono::steady_clock::now();
       glm::vec3 sum(0.0f);
-      for (const glm::vec3& p : points)
+      std::vector<float> shade(points.size());
+      for (std::size_t i = 0; i < points.size(); ++i)
       {
-        sum += shadows.Shade(glm::vec3(1.0f), p, glm::vec3(0.0f, 1.0f, 0.0f), glm::vec3(0.7f));
+        const glm::vec3 s =
+          shadows.Shade(glm::vec3(1.0f), points[i], glm::vec3(0.0f, 1.0f, 0.0f), glm::vec3(0.7f));
+        shade[i] = Mean(s);
+        sum += s;
       }
       const double lookup =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      EXPECT_LT(Mean(sum), static_cast<float>(points.size())); // some receivers are shadowed
+      // The timings are figures; what is checked is that every resolution and mode darkens the
+      // same floor: the shadow's darkness (1 - mean shade; the emitter's direct share of a total
+      // of 1) and its area (receivers darkened by 1% or more) within a margin of the finest hard
+      // map's.
+      const double darkness = 1.0 - Mean(sum) / static_cast<double>(points.size());
+      const double area = static_cast<double>(std::count_if(shade.begin(), shade.end(),
+                            [](float v) { return v < 0.99f; })) /
+        static_cast<double>(points.size());
       std::printf("[ figures  ] shadow maps %-5s %4d^2: %zu map(s) of a %zu-triangle sphere "
-                  "filled in %.2f ms (one thread); lookup %.0f ns per receiver\n",
+                  "filled in %.2f ms (one thread); lookup %.0f ns per receiver; darkness %.4f, "
+                  "area %.4f\n",
         vlf::ShadowModeName(mode), resolution, shadows.Maps().size(), sphere.Triangles.size(),
-        1e3 * fill, 1e9 * lookup / points.size());
+        1e3 * fill, 1e9 * lookup / points.size(), darkness, area);
+      results.push_back({ resolution, mode, darkness, area });
+    }
+  }
+  const ShadowFigures* finest = nullptr;
+  for (const ShadowFigures& r : results)
+  {
+    finest = r.Resolution == 1024 && r.Mode == ShadowMode::Field ? &r : finest;
+  }
+  ASSERT_NE(finest, nullptr);
+  EXPECT_GT(finest->Darkness, 0.001);
+  EXPECT_GT(finest->Area, 0.01);
+  // Measured: darkness 0.0030 everywhere; area 0.038 (field, PCF), 0.053 (soft: its penumbra
+  // reaches further).
+  for (const ShadowFigures& r : results)
+  {
+    EXPECT_NEAR(r.Darkness, finest->Darkness, 0.1 * finest->Darkness)
+      << vlf::ShadowModeName(r.Mode) << " " << r.Resolution;
+    if (r.Mode == ShadowMode::Soft)
+    {
+      EXPECT_GT(r.Area, finest->Area) << r.Resolution;
+      EXPECT_LT(r.Area, 1.6 * finest->Area) << r.Resolution;
+    }
+    else
+    {
+      EXPECT_NEAR(r.Area, finest->Area, 0.1 * finest->Area)
+        << vlf::ShadowModeName(r.Mode) << " " << r.Resolution;
     }
   }
 }

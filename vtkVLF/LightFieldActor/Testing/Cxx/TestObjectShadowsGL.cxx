@@ -10,6 +10,12 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <vtkUnsignedCharArray.h>
+
+#include <cstddef>
+#include <cstdio>
+#include <vector>
+
 namespace mesolight
 {
 namespace walkthroughtest
@@ -241,8 +247,8 @@ namespace mesolight
 namespace walkthroughtest
 {
 // The GPU's cost of the shadow lookup: frames of a 512 x 512 progressive view (the camera
-// rests) with and without the shadow, per mode (a figure; Mesa's software rasteriser on a
-// shared machine, so only the differences mean something).
+// rests) with and without the shadow, per mode (figures; Mesa's software rasteriser on a shared
+// machine, so only the differences mean something), and the shadow those frames drew.
 TEST(ShadowMapGL, FrameCost)
 {
   const vlf::LightField& field = MirrorCornellField(513);
@@ -269,15 +275,46 @@ TEST(ShadowMapGL, FrameCost)
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() / frames;
   };
   viewer.Actor->SetShadowMapResolution(256);
+  // The times are figures. What is checked is that the timed frames drew the shadow: each mode's
+  // last frame darkens pixels of the shadow-free frame and brightens (almost) none.
+  auto grab = [&]()
+  {
+    vtkNew<vtkUnsignedCharArray> pixels;
+    viewer.Window->GetPixelData(0, 0, 511, 511, 1, pixels);
+    std::vector<int> levels(static_cast<std::size_t>(512) * 512);
+    for (std::size_t i = 0; i < levels.size(); ++i)
+    {
+      const vtkIdType v = 3 * static_cast<vtkIdType>(i);
+      levels[i] = pixels->GetValue(v) + pixels->GetValue(v + 1) + pixels->GetValue(v + 2);
+    }
+    return levels;
+  };
+  std::vector<int> unshadowed;
   for (const int mode : { vtkLightFieldActor::ShadowNone, vtkLightFieldActor::ShadowField,
          vtkLightFieldActor::ShadowPCF, vtkLightFieldActor::ShadowSoft })
   {
     viewer.Actor->SetShadowMode(mode);
     const double seconds = frameSeconds();
-    EXPECT_GT(seconds, 0.0);
+    const std::vector<int> frame = grab();
+    std::size_t darker = 0, brighter = 0;
+    if (unshadowed.empty())
+    {
+      unshadowed = frame;
+    }
+    for (std::size_t i = 0; i < frame.size(); ++i)
+    {
+      const int d = frame[i] - unshadowed[i]; // three channels, levels of 255
+      darker += d < -12 ? 1 : 0;
+      brighter += d > 12 ? 1 : 0;
+    }
     std::printf("[ figures  ] GPU (Mesa llvmpipe) 512x512 progressive frame, shadows %s 256^2: "
-                "%.2f ms\n",
-      vtkLightFieldActor::GetShadowModeAsString(mode), 1e3 * seconds);
+                "%.2f ms; %zu pixels darker, %zu brighter than without shadows\n",
+      vtkLightFieldActor::GetShadowModeAsString(mode), 1e3 * seconds, darker, brighter);
+    if (mode != vtkLightFieldActor::ShadowNone)
+    {
+      EXPECT_GT(darker, 25000u) << vtkLightFieldActor::GetShadowModeAsString(mode); // 49-68 k
+      EXPECT_LT(brighter, darker / 20) << vtkLightFieldActor::GetShadowModeAsString(mode);
+    }
   }
 }
 

@@ -163,8 +163,8 @@ TEST(LightFieldActorCore, PacketsTraceLikeSingleRaysAndOneBounceShortFails)
   EXPECT_EQ(shortBright, 0u); // Kd 0 mirrors: without the last segment they are black
 }
 
-// Where the mirror box's light goes (informational: the walkthrough tests see the field about 5%
-// darker than the path tracer on diffuse pixels in every mode).
+// Where the mirror box's light goes (the walkthrough tests see the field about 5% darker than the
+// path tracer on diffuse pixels in every field mode): conserved per iteration, the losses bounded.
 TEST(LightFieldActorCore, MirrorFieldEnergyBudget)
 {
   for (const std::size_t directions : { std::size_t(513), std::size_t(2049) })
@@ -187,14 +187,26 @@ TEST(LightFieldActorCore, MirrorFieldEnergyBudget)
     {
       unshot += field.EnergyLog.back().Unshot[c];
     }
-    const double emitted = shot - (field.EnergyLog.size() > 1 ? 0.0 : 0.0);
+    const double emitted = shot;
     std::cout << directions << " directions, " << field.EnergyLog.size()
               << " iterations: of all flux shot, "
               << "specular lost " << 100.0 * lost / emitted << "%, back faces "
               << 100.0 * back / emitted << "%, escaped " << 100.0 * escaped / emitted
               << "%, absorbed " << 100.0 * absorbed / emitted
               << "%; unshot after the last iteration " << 100.0 * unshot / emitted << "%\n";
-    EXPECT_GT(shot, 0.0);
+    // Every iteration accounts for what it shot (escaped + absorbed + back faces + specular
+    // lost + unshot), and the mirrors' losses stay the small share measured (a regression in
+    // the specular transfer shows up here before the pictures).
+    for (const auto& e : field.EnergyLog)
+    {
+      EXPECT_LT(e.ConservationError(), 1e-3) << "iteration " << e.Iteration;
+    }
+    // Measured (513 / 2049 directions): absorbed 28.2%, escaped 16.8%, back faces 0.31 /
+    // 0.29%, specular lost 0.014 / 0.020% of all flux shot.
+    EXPECT_NEAR(absorbed / emitted, 0.282, 0.03);
+    EXPECT_NEAR(escaped / emitted, 0.168, 0.02);
+    EXPECT_LT(back / emitted, 0.006);
+    EXPECT_LT(lost / emitted, 0.0005);
   }
 }
 
