@@ -4,13 +4,13 @@
 //
 // Input: the file's text. A light set accepted must hold whole lights of finite numbers within
 // single precision, unit directions and no negative irradiance; a refusal must say why, in
-// printable ASCII (no raw file bytes echoed). Anything else aborts.
+// printable ASCII (no raw file bytes echoed) in a LightSetCsvError. Anything else aborts.
 #include "LightSetCsv.h"
 
 #include <cmath>
 #include <cstdint>
-#include <limits>
 #include <cstdlib>
+#include <limits>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -20,9 +20,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::string text(reinterpret_cast<const char*>(data), size);
   std::istringstream in(text);
   std::vector<double> values;
-  std::string error;
-  if (!mesolight::ParseLightSetCsv(in, "fuzz.csv", values, error))
+  try
   {
+    values = mesolight::ParseLightSetCsv(in, "fuzz.csv");
+  }
+  catch (const mesolight::LightSetCsvError& e)
+  {
+    // The refusal expected for bad input; any other exception escapes and aborts.
+    const std::string error = e.what();
     if (error.empty())
     {
       std::abort();

@@ -66,7 +66,16 @@ bool vtkLightSetReader::ParseCsv(
     error = "cannot open the light set " + fileName;
     return false;
   }
-  return mesolight::ParseLightSetCsv(in, fileName, values, error);
+  try
+  {
+    values = mesolight::ParseLightSetCsv(in, fileName);
+  }
+  catch (const mesolight::LightSetCsvError& e)
+  {
+    error = e.what();
+    return false;
+  }
+  return true;
 }
 
 //------------------------------------------------------------------------------

@@ -65,10 +65,9 @@ bool ParseNumber(const std::string& field, double& value)
 }
 } // namespace
 
-bool ParseLightSetCsv(
-  std::istream& in, const std::string& name, std::vector<double>& values, std::string& error)
+std::vector<double> ParseLightSetCsv(std::istream& in, const std::string& name)
 {
-  values.clear();
+  std::vector<double> values;
   std::string line;
   // getline with a bound: a file with no line ends (a device, a binary file) must not be read
   // into memory whole.
@@ -95,8 +94,8 @@ bool ParseLightSetCsv(
   };
   if (!readLine() || Trim(line).empty())
   {
-    error = name + " is empty (expected the header \"u,v,x,y,z,r,g,b\" and one row per light)";
-    return false;
+    throw LightSetCsvError(
+      name + " is empty (expected the header \"u,v,x,y,z,r,g,b\" and one row per light)");
   }
   // A UTF-8 byte order mark (spreadsheets write one) is not part of the header.
   static const std::string byteOrderMark = "\xEF\xBB\xBF";
@@ -106,9 +105,8 @@ bool ParseLightSetCsv(
   }
   if (Trim(line) != "u,v,x,y,z,r,g,b")
   {
-    error = name + ", line 1: the header is \"" + Printable(Trim(line), 80) +
-      "\", expected \"u,v,x,y,z,r,g,b\" (a light set written by mesolight lights)";
-    return false;
+    throw LightSetCsvError(name + ", line 1: the header is \"" + Printable(Trim(line), 80) +
+      "\", expected \"u,v,x,y,z,r,g,b\" (a light set written by mesolight lights)");
   }
   static const char* names[8] = { "u", "v", "x", "y", "z", "r", "g", "b" };
   long lineNumber = 1;
@@ -119,9 +117,8 @@ bool ParseLightSetCsv(
     const std::string where = name + ", line " + std::to_string(lineNumber) + ": ";
     if (line.size() > MaximumLightSetCsvLine)
     {
-      error = where + "longer than " + std::to_string(MaximumLightSetCsvLine) +
-        " characters (not a lights CSV?)";
-      return false;
+      throw LightSetCsvError(where + "longer than " + std::to_string(MaximumLightSetCsvLine) +
+        " characters (not a lights CSV?)");
     }
     if (Trim(line).empty())
     {
@@ -140,38 +137,35 @@ bool ParseLightSetCsv(
     }
     if (fields.size() != 8)
     {
-      error = where + std::to_string(fields.size()) + " fields, expected 8 (u,v,x,y,z,r,g,b)";
-      return false;
+      throw LightSetCsvError(
+        where + std::to_string(fields.size()) + " fields, expected 8 (u,v,x,y,z,r,g,b)");
     }
     double v[8];
     for (int k = 0; k < 8; ++k)
     {
       if (!ParseNumber(fields[k], v[k]))
       {
-        error = where + "the " + names[k] + " field \"" + Printable(Trim(fields[k]), 40) +
-          "\" is not a finite number";
-        return false;
+        throw LightSetCsvError(where + "the " + names[k] + " field \"" +
+          Printable(Trim(fields[k]), 40) + "\" is not a finite number");
       }
       // The lights are single precision from here on (point data, the light texture, the
       // shaders): a larger value becomes infinity there and the whole relief goes black.
       if (std::abs(v[k]) > static_cast<double>(std::numeric_limits<float>::max()))
       {
-        error = where + "the " + names[k] + " field \"" + Printable(Trim(fields[k]), 40) +
-          "\" is outside single precision (magnitude at most 3.4e38)";
-        return false;
+        throw LightSetCsvError(where + "the " + names[k] + " field \"" +
+          Printable(Trim(fields[k]), 40) +
+          "\" is outside single precision (magnitude at most 3.4e38)");
       }
     }
     const double length = std::sqrt(v[2] * v[2] + v[3] * v[3] + v[4] * v[4]);
     if (std::abs(length - 1.0) > 1e-3)
     {
-      error = where + "the direction (x, y, z) has length " + std::to_string(length) +
-        ", expected a unit vector";
-      return false;
+      throw LightSetCsvError(where + "the direction (x, y, z) has length " +
+        std::to_string(length) + ", expected a unit vector");
     }
     if (v[5] < 0.0 || v[6] < 0.0 || v[7] < 0.0)
     {
-      error = where + "negative irradiance (r, g, b)";
-      return false;
+      throw LightSetCsvError(where + "negative irradiance (r, g, b)");
     }
     // The renderer sums the lights in single precision: the total of each channel must stay
     // finite too.
@@ -180,24 +174,21 @@ bool ParseLightSetCsv(
       total[c - 5] += v[c];
       if (total[c - 5] > static_cast<double>(std::numeric_limits<float>::max()))
       {
-        error = where + "the total " + names[c] +
-          " irradiance of the lights so far exceeds single precision (3.4e38)";
-        return false;
+        throw LightSetCsvError(where + "the total " + names[c] +
+          " irradiance of the lights so far exceeds single precision (3.4e38)");
       }
     }
     values.insert(values.end(), v, v + 8);
   }
   if (in.bad())
   {
-    error = "error while reading " + name;
-    return false;
+    throw LightSetCsvError("error while reading " + name);
   }
   if (values.empty())
   {
-    error = name + " has a header but no lights";
-    return false;
+    throw LightSetCsvError(name + " has a header but no lights");
   }
-  return true;
+  return values;
 }
 
 } // namespace mesolight
