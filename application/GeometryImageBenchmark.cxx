@@ -72,10 +72,13 @@ public:
   bool Start(std::string& error)
   {
     GeometrySurface surface;
-    if (!GeometrySurfaceFromName(this->SurfaceName, surface))
+    try
     {
-      error =
-        std::string("unknown surface '") + this->SurfaceName + "' (" + GeometrySurfaceNames() + ")";
+      surface = GeometrySurfaceFromName(this->SurfaceName);
+    }
+    catch (const std::invalid_argument& e)
+    {
+      error = e.what();
       return false;
     }
     this->Scene.GeometryImage = "procedural:" + this->SurfaceName;
@@ -109,16 +112,19 @@ public:
     row.Stride = stride;
     row.Tolerance = tolerance;
     GeometryImageMesh mesh;
-    bool ok = true;
-    row.MeshMs = 1000.0 *
-      FastestSeconds(3,
-        [&]
-        {
-          ok = stride > 0 ? SampleRegular(this->Image, stride, mesh, error)
-                          : SampleAdaptive(this->Image, tolerance, mesh, error);
-        });
-    if (!ok)
+    try
     {
+      row.MeshMs = 1000.0 *
+        FastestSeconds(3,
+          [&]
+          {
+            mesh = stride > 0 ? SampleRegular(this->Image, stride)
+                              : SampleAdaptive(this->Image, tolerance);
+          });
+    }
+    catch (const GeometryImageMeshError& e)
+    {
+      error = e.what();
       return nullptr;
     }
     row.Triangles = mesh.Triangles.size();

@@ -15,6 +15,8 @@
 #include <cmath>
 #include <limits>
 
+#include <stdexcept>
+
 vtkStandardNewMacro(vtkGeometryImageSource);
 
 //------------------------------------------------------------------------------
@@ -26,12 +28,18 @@ vtkGeometryImageSource::vtkGeometryImageSource()
 //------------------------------------------------------------------------------
 bool vtkGeometryImageSource::SetSurfaceByName(const char* name)
 {
-  mesolight::GeometrySurface surface;
-  if (!name || !mesolight::GeometrySurfaceFromName(name, surface))
+  if (!name)
   {
     return false;
   }
-  this->SetSurface(static_cast<int>(surface));
+  try
+  {
+    this->SetSurface(static_cast<int>(mesolight::GeometrySurfaceFromName(name)));
+  }
+  catch (const std::invalid_argument&)
+  {
+    return false; // the caller names the accepted surfaces
+  }
   return true;
 }
 

@@ -200,13 +200,15 @@ int vtkGeometryImageToMesh::RequestData(
   }
   mesolight::GeometryImageMesh mesh;
   const mesolight::ProgressCallback progress = mesolight::AlgorithmProgress(this);
-  const bool ok = this->Tolerance > 0.0
-    ? mesolight::SampleAdaptive(
-        geometry, this->Tolerance, mesh, error, progress, this->MaximumCellSize)
-    : mesolight::SampleRegular(geometry, this->Stride, mesh, error, progress);
-  if (!ok)
+  try
   {
-    vtkErrorMacro(<< "Cannot mesh the geometry image: " << error << ".");
+    mesh = this->Tolerance > 0.0
+      ? mesolight::SampleAdaptive(geometry, this->Tolerance, progress, this->MaximumCellSize)
+      : mesolight::SampleRegular(geometry, this->Stride, progress);
+  }
+  catch (const mesolight::GeometryImageMeshError& e)
+  {
+    vtkErrorMacro(<< "Cannot mesh the geometry image: " << e.what() << ".");
     return 0;
   }
   if (this->GetAbortExecute())

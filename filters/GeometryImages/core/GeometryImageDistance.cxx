@@ -191,8 +191,18 @@ HausdorffDistance MeasureHausdorff(const GeometryImage& image, const GeometryIma
 {
   HausdorffDistance result;
   GeometryImageMesh full;
-  std::string error;
-  if (mesh.Triangles.empty() || !SampleRegular(image, 1, full, error))
+  try
+  {
+    if (!mesh.Triangles.empty())
+    {
+      full = SampleRegular(image, 1);
+    }
+  }
+  catch (const GeometryImageMeshError&)
+  {
+    // No reference mesh: the distance is infinite (below).
+  }
+  if (full.Triangles.empty())
   {
     result.ImageToMesh = result.MeshToImage = result.Hausdorff =
       std::numeric_limits<double>::infinity();

@@ -33,28 +33,27 @@ size_t GeometryImage::CountValid() const
 
 namespace
 {
-bool CheckImage(const GeometryImage& image, std::string& error)
+// Throws GeometryImageMeshError when the image cannot be meshed at all.
+void CheckImage(const GeometryImage& image)
 {
   if (image.Width < 2 || image.Height < 2)
   {
     std::ostringstream s;
     s << "the geometry image is " << image.Width << " x " << image.Height
       << " pixels; a mesh needs at least 2 x 2";
-    error = s.str();
-    return false;
+    throw GeometryImageMeshError(s.str());
   }
   const size_t n = static_cast<size_t>(image.Width) * image.Height;
   if (image.Positions.size() != n || (!image.Normals.empty() && image.Normals.size() != n))
   {
-    error = "the geometry image's position or normal array does not have W x H entries";
-    return false;
+    throw GeometryImageMeshError(
+      "the geometry image's position or normal array does not have W x H entries");
   }
   if (image.CountValid() == 0)
   {
-    error = "every pixel of the geometry image is empty (NaN): nothing to mesh";
-    return false;
+    throw GeometryImageMeshError(
+      "every pixel of the geometry image is empty (NaN): nothing to mesh");
   }
-  return true;
 }
 
 // Counts empty pixels in any rectangle in O(1) (summed-area table).
@@ -345,22 +344,19 @@ std::vector<glm::dvec3> GeometryNormals(const GeometryImage& image)
 }
 
 //------------------------------------------------------------------------------
-bool SampleRegular(const GeometryImage& image, int stride, GeometryImageMesh& mesh,
-  std::string& error, const ProgressCallback& progress)
+GeometryImageMesh SampleRegular(
+  const GeometryImage& image, int stride, const ProgressCallback& progress)
 {
-  if (!CheckImage(image, error))
-  {
-    return false;
-  }
+  CheckImage(image);
   const int limit = std::max(image.Width, image.Height) - 1;
   if (stride < 1 || stride > limit)
   {
     std::ostringstream s;
     s << "stride " << stride << " is outside 1.." << limit << " for a " << image.Width << " x "
       << image.Height << " geometry image";
-    error = s.str();
-    return false;
+    throw GeometryImageMeshError(s.str());
   }
+  GeometryImageMesh mesh;
   const auto samples = [stride](int n)
   {
     std::vector<int> s;
@@ -393,30 +389,27 @@ bool SampleRegular(const GeometryImage& image, int stride, GeometryImageMesh& me
     }
     if (!ReportProgress(progress, static_cast<double>(b + 1) / (ys.size() - 1)))
     {
-      return true;
+      return mesh;
     }
   }
   if (mesh.Triangles.empty())
   {
-    error = "no quad of the geometry image is free of empty (NaN) pixels at this stride";
-    return false;
+    throw GeometryImageMeshError(
+      "no quad of the geometry image is free of empty (NaN) pixels at this stride");
   }
-  return true;
+  return mesh;
 }
 
 //------------------------------------------------------------------------------
-bool SampleAdaptive(const GeometryImage& image, double tolerance, GeometryImageMesh& mesh,
-  std::string& error, const ProgressCallback& progress, int maxCell)
+GeometryImageMesh SampleAdaptive(
+  const GeometryImage& image, double tolerance, const ProgressCallback& progress, int maxCell)
 {
-  if (!CheckImage(image, error))
-  {
-    return false;
-  }
+  CheckImage(image);
   if (!(tolerance > 0.0) || !std::isfinite(tolerance))
   {
-    error = "the tolerance must be a positive world distance";
-    return false;
+    throw GeometryImageMeshError("the tolerance must be a positive world distance");
   }
+  GeometryImageMesh mesh;
   const int extent = std::max(image.Width, image.Height) - 1;
   int size = 1;
   while (size * 2 <= extent && (maxCell <= 0 || size * 2 <= maxCell))
@@ -467,7 +460,7 @@ bool SampleAdaptive(const GeometryImage& image, double tolerance, GeometryImageM
       done += static_cast<size_t>(c.X1 - c.X0) * (c.Y1 - c.Y0);
       if (!ReportProgress(progress, 0.8 * std::min(1.0, static_cast<double>(done) / total)))
       {
-        return true;
+        return mesh;
       }
     }
   }
@@ -517,7 +510,7 @@ bool SampleAdaptive(const GeometryImage& image, double tolerance, GeometryImageM
     leaves.swap(next);
     if (!ReportProgress(progress, 0.8 + 0.1 * std::min(1.0, (pass + 1) / 8.0)))
     {
-      return true;
+      return mesh;
     }
   }
 
@@ -533,10 +526,9 @@ bool SampleAdaptive(const GeometryImage& image, double tolerance, GeometryImageM
   ReportProgress(progress, 1.0);
   if (mesh.Triangles.empty())
   {
-    error = "no cell of the geometry image is free of empty (NaN) pixels";
-    return false;
+    throw GeometryImageMeshError("no cell of the geometry image is free of empty (NaN) pixels");
   }
-  return true;
+  return mesh;
 }
 
 //------------------------------------------------------------------------------

@@ -22,6 +22,7 @@
 
 #include <glm/glm.hpp>
 
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -60,17 +61,24 @@ struct MESOLIGHTGEOMETRYIMAGES_EXPORT GeometryImageMesh
   size_t SkippedQuads = 0; // quads (regular) or cells (adaptive) dropped for empty pixels
 };
 
+/** A geometry image that cannot be meshed; what() is one sentence for the user. */
+class MESOLIGHTGEOMETRYIMAGES_EXPORT GeometryImageMeshError : public std::runtime_error
+{
+public:
+  using std::runtime_error::runtime_error;
+};
+
 /**
  * Samples every stride-th pixel in each direction, the last row and column always included (so
  * the whole image is covered), two triangles per quad split along the shorter diagonal,
  * counter-clockwise in (i, j). A quad is dropped when any pixel of its block (corners and
  * inside) is empty, so that no triangle bridges a hole. Normals: the normal image at the sampled
- * pixel when present, else the geometry's (central differences at full resolution). Returns
- * false with a message for bad input (empty image, stride < 1 or larger than the image, sizes
- * that disagree, no finite pixel).
+ * pixel when present, else the geometry's (central differences at full resolution). Throws
+ * GeometryImageMeshError for bad input (empty image, stride < 1 or larger than the image, sizes
+ * that disagree, no finite pixel). When progress asks to stop, returns the mesh built so far.
  */
-MESOLIGHTGEOMETRYIMAGES_EXPORT bool SampleRegular(const GeometryImage& image, int stride,
-  GeometryImageMesh& mesh, std::string& error, const ProgressCallback& progress = {});
+MESOLIGHTGEOMETRYIMAGES_EXPORT GeometryImageMesh SampleRegular(
+  const GeometryImage& image, int stride, const ProgressCallback& progress = {});
 
 /**
  * Adaptive sampling: a quadtree over the pixel grid, from square cells of maxCell pixels
@@ -80,11 +88,11 @@ MESOLIGHTGEOMETRYIMAGES_EXPORT bool SampleRegular(const GeometryImage& image, in
  * through the finer cells' corners on their sides (thin cells are zipped between their long
  * sides), so the mesh has no T-junctions and no cracks; a cell's final triangulation is checked
  * against the tolerance again and split further when it misses. Every pixel is then within
- * tolerance of its own cell's triangles, an upper bound of its distance to the mesh.
+ * tolerance of its own cell's triangles, an upper bound of its distance to the mesh. Throws
+ * GeometryImageMeshError as SampleRegular does, and for a tolerance that is not positive.
  */
-MESOLIGHTGEOMETRYIMAGES_EXPORT bool SampleAdaptive(const GeometryImage& image, double tolerance,
-  GeometryImageMesh& mesh, std::string& error, const ProgressCallback& progress = {},
-  int maxCell = 0);
+MESOLIGHTGEOMETRYIMAGES_EXPORT GeometryImageMesh SampleAdaptive(const GeometryImage& image,
+  double tolerance, const ProgressCallback& progress = {}, int maxCell = 0);
 
 /** Per-pixel unit normals of the geometry (central differences, one-sided at borders and next
  *  to empty pixels; oriented as dP/di x dP/dj). Zero where no neighbour is usable. */

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <sstream>
+#include <stdexcept>
 
 namespace mesolight
 {
@@ -24,18 +25,18 @@ glm::dvec3 HeightNormal(double dzdu, double dzdv)
 } // namespace
 
 //------------------------------------------------------------------------------
-bool GeometrySurfaceFromName(const std::string& name, GeometrySurface& surface)
+GeometrySurface GeometrySurfaceFromName(const std::string& name)
 {
   for (GeometrySurface s : { GeometrySurface::Plane, GeometrySurface::Cylinder,
          GeometrySurface::SpherePatch, GeometrySurface::Wave, GeometrySurface::Bump })
   {
     if (name == GeometrySurfaceName(s))
     {
-      surface = s;
-      return true;
+      return s;
     }
   }
-  return false;
+  throw std::invalid_argument(
+    "unknown surface '" + name + "' (" + std::string(GeometrySurfaceNames()) + ")");
 }
 
 //------------------------------------------------------------------------------

@@ -30,9 +30,9 @@ enum class GeometrySurface
   Bump         // a plane with one Gaussian bump: flat almost everywhere, bent in the middle
 };
 
-/** "plane", "cylinder", "sphere", "wave", "bump"; false for other names. */
-MESOLIGHTGEOMETRYIMAGES_EXPORT bool GeometrySurfaceFromName(
-  const std::string& name, GeometrySurface& surface);
+/** "plane", "cylinder", "sphere", "wave", "bump"; std::invalid_argument naming the accepted
+ *  names for any other. */
+MESOLIGHTGEOMETRYIMAGES_EXPORT GeometrySurface GeometrySurfaceFromName(const std::string& name);
 MESOLIGHTGEOMETRYIMAGES_EXPORT const char* GeometrySurfaceName(GeometrySurface surface);
 /** The names GeometrySurfaceFromName accepts, separated by '|'. */
 MESOLIGHTGEOMETRYIMAGES_EXPORT const char* GeometrySurfaceNames();

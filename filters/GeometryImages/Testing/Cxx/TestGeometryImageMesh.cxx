@@ -107,8 +107,7 @@ TEST(GeometryImageMesh, PlaneIsExactAtEveryStride)
   for (int stride : { 1, 4, 16, 64 })
   {
     GeometryImageMesh mesh;
-    std::string error;
-    ASSERT_TRUE(SampleRegular(plane, stride, mesh, error)) << error;
+    ASSERT_NO_THROW(mesh = SampleRegular(plane, stride));
     const HausdorffDistance d = MeasureHausdorff(plane, mesh);
     EXPECT_LT(d.Hausdorff, 1e-12) << "stride " << stride;
     for (size_t p = 0; p < mesh.Points.size(); ++p)
@@ -125,8 +124,7 @@ TEST(GeometryImageMesh, CylinderVerticesAreTheSurfaceAtTheirPixels)
   const int w = 96, h = 40;
   const GeometryImage cylinder = MakeGeometryImage(GeometrySurface::Cylinder, w, h);
   GeometryImageMesh mesh;
-  std::string error;
-  ASSERT_TRUE(SampleRegular(cylinder, 7, mesh, error)) << error;
+  ASSERT_NO_THROW(mesh = SampleRegular(cylinder, 7));
   const double r = 1.5 / Pi<double>; // arc length 1 over 120 degrees
   for (size_t p = 0; p < mesh.Points.size(); ++p)
   {
@@ -151,8 +149,7 @@ TEST(GeometryImageMesh, CylinderChordErrorIsTheSagitta)
   for (int stride : { 4, 8, 16 })
   {
     GeometryImageMesh mesh;
-    std::string error;
-    ASSERT_TRUE(SampleRegular(cylinder, stride, mesh, error)) << error;
+    ASSERT_NO_THROW(mesh = SampleRegular(cylinder, stride));
     const HausdorffDistance d = MeasureHausdorff(cylinder, mesh);
     const double sagitta = r * (1.0 - std::cos(0.5 * stride * dphi));
     EXPECT_NEAR(d.ImageToMesh, sagitta, 1e-3 * sagitta) << "stride " << stride;
@@ -165,8 +162,7 @@ TEST(GeometryImageMesh, StrideCoversTheWholeImage)
   const int w = 50, h = 37, stride = 8;
   const GeometryImage wave = MakeGeometryImage(GeometrySurface::Wave, w, h);
   GeometryImageMesh mesh;
-  std::string error;
-  ASSERT_TRUE(SampleRegular(wave, stride, mesh, error)) << error;
+  ASSERT_NO_THROW(mesh = SampleRegular(wave, stride));
   const int quadsX = (w - 2) / stride + 1, quadsY = (h - 2) / stride + 1; // ceil((n-1)/k)
   EXPECT_EQ(mesh.Triangles.size(), static_cast<size_t>(2 * quadsX * quadsY));
   EXPECT_EQ(mesh.Points.size(), static_cast<size_t>((quadsX + 1) * (quadsY + 1)));
@@ -178,8 +174,7 @@ TEST(GeometryImageMesh, TextureCoordinatesMapTexelForTexel)
   const int w = 37, h = 23;
   const GeometryImage sphere = MakeGeometryImage(GeometrySurface::SpherePatch, w, h);
   GeometryImageMesh mesh;
-  std::string error;
-  ASSERT_TRUE(SampleRegular(sphere, 3, mesh, error)) << error;
+  ASSERT_NO_THROW(mesh = SampleRegular(sphere, 3));
   EXPECT_LT(TexelForTexelError(mesh, w, h, mesh.TCoords), 1e-9);
   // Negative: the pixel-corner convention i / W and the end-to-end one i / (W - 1) blend
   // neighbouring texels and must fail the same check.
@@ -200,12 +195,11 @@ TEST(GeometryImageMesh, NaNHolesDropTheirQuads)
   const double nan = std::numeric_limits<double>::quiet_NaN();
   plane.Positions[plane.Index(10, 12)] = glm::dvec3(nan);
   GeometryImageMesh full, coarse;
-  std::string error;
-  ASSERT_TRUE(SampleRegular(plane, 1, full, error)) << error;
+  ASSERT_NO_THROW(full = SampleRegular(plane, 1));
   EXPECT_EQ(full.Triangles.size(), static_cast<size_t>(2 * (32 * 32 - 4)));
   EXPECT_EQ(full.SkippedQuads, 4u);
   // At stride 8 the empty pixel is inside a quad (not a corner): that quad is dropped too.
-  ASSERT_TRUE(SampleRegular(plane, 8, coarse, error)) << error;
+  ASSERT_NO_THROW(coarse = SampleRegular(plane, 8));
   EXPECT_EQ(coarse.Triangles.size(), static_cast<size_t>(2 * (16 - 1)));
   for (const GeometryImageMesh* m : { &full, &coarse })
   {
@@ -215,7 +209,7 @@ TEST(GeometryImageMesh, NaNHolesDropTheirQuads)
     }
   }
   GeometryImageMesh adaptive;
-  ASSERT_TRUE(SampleAdaptive(plane, 1e-3, adaptive, error)) << error;
+  ASSERT_NO_THROW(adaptive = SampleAdaptive(plane, 1e-3));
   EXPECT_EQ(adaptive.SkippedQuads, 4u); // refined down to the four pixel quads around the hole
   for (const auto& [edge, count] : EdgeUse(adaptive))
   {
@@ -226,26 +220,38 @@ TEST(GeometryImageMesh, NaNHolesDropTheirQuads)
 TEST(GeometryImageMesh, BadInputIsRefusedWithAMessage)
 {
   const GeometryImage plane = MakeGeometryImage(GeometrySurface::Plane, 20, 10);
-  GeometryImageMesh mesh;
-  std::string error;
-  EXPECT_FALSE(SampleRegular(plane, 0, mesh, error));
+  // The message of the GeometryImageMeshError `sample` throws, or "" when it throws none.
+  const auto refusal = [](const auto& sample) -> std::string
+  {
+    try
+    {
+      sample();
+    }
+    catch (const GeometryImageMeshError& e)
+    {
+      return e.what();
+    }
+    return std::string();
+  };
+  std::string error = refusal([&] { SampleRegular(plane, 0); });
   EXPECT_NE(error.find("stride 0"), std::string::npos) << error;
-  EXPECT_FALSE(SampleRegular(plane, 20, mesh, error));
+  error = refusal([&] { SampleRegular(plane, 20); });
   EXPECT_NE(error.find("1..19"), std::string::npos) << error;
-  EXPECT_TRUE(SampleRegular(plane, 19, mesh, error)) << error;
+  GeometryImageMesh mesh;
+  ASSERT_NO_THROW(mesh = SampleRegular(plane, 19));
   EXPECT_EQ(mesh.Triangles.size(), 2u);
-  EXPECT_FALSE(SampleAdaptive(plane, 0.0, mesh, error));
+  error = refusal([&] { SampleAdaptive(plane, 0.0); });
   EXPECT_NE(error.find("tolerance"), std::string::npos) << error;
   GeometryImage empty = plane;
   for (glm::dvec3& p : empty.Positions)
   {
     p = glm::dvec3(std::numeric_limits<double>::quiet_NaN());
   }
-  EXPECT_FALSE(SampleRegular(empty, 4, mesh, error));
+  error = refusal([&] { SampleRegular(empty, 4); });
   EXPECT_NE(error.find("empty"), std::string::npos) << error;
-  EXPECT_FALSE(SampleAdaptive(empty, 0.01, mesh, error));
+  EXPECT_FALSE(refusal([&] { SampleAdaptive(empty, 0.01); }).empty());
   const GeometryImage line = MakeGeometryImage(GeometrySurface::Plane, 20, 1);
-  EXPECT_FALSE(SampleRegular(line, 1, mesh, error));
+  error = refusal([&] { SampleRegular(line, 1); });
   EXPECT_NE(error.find("2 x 2"), std::string::npos) << error;
 }
 
@@ -260,8 +266,7 @@ TEST(GeometryImageMesh, AdaptiveMeshesHaveNoCracks)
       for (double tolerance : { 0.01, 0.002 })
       {
         GeometryImageMesh mesh;
-        std::string error;
-        ASSERT_TRUE(SampleAdaptive(image, tolerance, mesh, error)) << error;
+        ASSERT_NO_THROW(mesh = SampleAdaptive(image, tolerance));
         SCOPED_TRACE(std::string(GeometrySurfaceName(s)) + " " + std::to_string(w) + " tol " +
           std::to_string(tolerance));
         ExpectWatertight(mesh, w, 71);
@@ -278,8 +283,7 @@ TEST(GeometryImageMesh, AdaptiveHausdorffStaysWithinTheToleranceAndFallsWithIt)
   for (double tolerance : { 0.02, 0.01, 0.005, 0.0025, 0.00125 })
   {
     GeometryImageMesh mesh;
-    std::string error;
-    ASSERT_TRUE(SampleAdaptive(bump, tolerance, mesh, error)) << error;
+    ASSERT_NO_THROW(mesh = SampleAdaptive(bump, tolerance));
     const HausdorffDistance d = MeasureHausdorff(bump, mesh);
     std::cout << "tolerance " << tolerance << ": " << mesh.Triangles.size() << " triangles, "
               << "Hausdorff " << d.Hausdorff << " (image to mesh " << d.ImageToMesh
@@ -299,11 +303,10 @@ TEST(GeometryImageMesh, AdaptiveBeatsTheRegularStrideOnABump)
 {
   const GeometryImage bump = MakeGeometryImage(GeometrySurface::Bump, 129, 129);
   GeometryImageMesh regular;
-  std::string error;
-  ASSERT_TRUE(SampleRegular(bump, 8, regular, error)) << error;
+  ASSERT_NO_THROW(regular = SampleRegular(bump, 8));
   const HausdorffDistance r = MeasureHausdorff(bump, regular);
   GeometryImageMesh adaptive;
-  ASSERT_TRUE(SampleAdaptive(bump, r.Hausdorff, adaptive, error)) << error;
+  ASSERT_NO_THROW(adaptive = SampleAdaptive(bump, r.Hausdorff));
   const HausdorffDistance a = MeasureHausdorff(bump, adaptive);
   std::cout << "regular stride 8: " << regular.Triangles.size() << " triangles, Hausdorff "
             << r.Hausdorff << "; adaptive: " << adaptive.Triangles.size() << " triangles, "
@@ -344,9 +347,8 @@ TEST(GeometryImageMesh, HausdorffMatchesBruteForce)
   {
     const GeometryImage image = MakeGeometryImage(s, 41, 29);
     GeometryImageMesh coarse, full;
-    std::string error;
-    ASSERT_TRUE(SampleAdaptive(image, 0.01, coarse, error)) << error;
-    ASSERT_TRUE(SampleRegular(image, 1, full, error)) << error;
+    ASSERT_NO_THROW(coarse = SampleAdaptive(image, 0.01));
+    ASSERT_NO_THROW(full = SampleRegular(image, 1));
     const auto nearest = [](const GeometryImageMesh& m, const glm::dvec3& p)
     {
       double best = std::numeric_limits<double>::infinity();
