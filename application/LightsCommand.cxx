@@ -368,10 +368,13 @@ int RunLightsBenchmark(const std::vector<std::string>& args)
         options.NumberOfLights = n;
         options.VarianceMinimization = variance;
         std::vector<MedianCutLight> lights;
-        if (ComputeMedianCut(map.Rgb.data(), 3, map.Width, map.Height, options, lights, error) !=
-          MedianCutStatus::Ok)
+        try
         {
-          std::cerr << "mesolight bench lights: " << name << ": " << error << "\n";
+          lights = ComputeMedianCut(map.Rgb.data(), 3, map.Width, map.Height, options);
+        }
+        catch (const MedianCutError& e)
+        {
+          std::cerr << "mesolight bench lights: " << name << ": " << e.what() << "\n";
           return 1;
         }
         report(name, map, variance ? "median-cut-var" : "median-cut", n,
@@ -394,8 +397,8 @@ int RunLightsBenchmark(const std::vector<std::string>& args)
         FastestSeconds(repeats,
           [&]
           {
-            std::vector<MedianCutLight> lights;
-            ComputeMedianCut(big.Rgb.data(), 3, big.Width, big.Height, options, lights, error);
+            const std::vector<MedianCutLight> lights =
+              ComputeMedianCut(big.Rgb.data(), 3, big.Width, big.Height, options);
           });
       std::cout << "median cut" << (variance ? " (variance)" : "")
                 << " 4096x2048 -> 1024 lights: " << std::fixed << std::setprecision(1) << best

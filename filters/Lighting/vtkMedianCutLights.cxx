@@ -257,16 +257,17 @@ int vtkMedianCutLights::Execute(
   options.VarianceMinimization = this->VarianceMinimization;
   options.Progress = mesolight::AlgorithmProgress(this, 0.1, 0.9);
   std::vector<mesolight::MedianCutLight> lights;
-  std::string error;
-  const mesolight::MedianCutStatus status =
-    mesolight::ComputeMedianCut(rgb.data(), 3, w, h, options, lights, error);
-  if (status == mesolight::MedianCutStatus::Aborted)
+  try
   {
-    return 1;
+    lights = mesolight::ComputeMedianCut(rgb.data(), 3, w, h, options);
   }
-  if (status != mesolight::MedianCutStatus::Ok)
+  catch (const mesolight::MedianCutAbortedError&)
   {
-    vtkErrorMacro("Median cut failed: " << error << ".");
+    return 1; // an abort is not an error: empty output
+  }
+  catch (const mesolight::MedianCutError& e)
+  {
+    vtkErrorMacro("Median cut failed: " << e.what() << ".");
     return 0;
   }
 

@@ -259,16 +259,14 @@ public:
 } // namespace
 
 //------------------------------------------------------------------------------
-MedianCutStatus ComputeMedianCut(const float* pixels, int components, int width, int height,
-  const MedianCutOptions& options, std::vector<MedianCutLight>& lights, std::string& error)
+std::vector<MedianCutLight> ComputeMedianCut(
+  const float* pixels, int components, int width, int height, const MedianCutOptions& options)
 {
-  lights.clear();
-  error.clear();
+  std::vector<MedianCutLight> lights;
   const long long count = static_cast<long long>(width) * static_cast<long long>(height);
   if (!pixels || width < 1 || height < 1 || components < 3)
   {
-    error = "median cut needs a non-empty map with at least 3 components (RGB)";
-    return MedianCutStatus::Error;
+    throw MedianCutError("median cut needs a non-empty map with at least 3 components (RGB)");
   }
   const int n = options.NumberOfLights;
   if (n < 1 || n > count)
@@ -276,8 +274,7 @@ MedianCutStatus ComputeMedianCut(const float* pixels, int components, int width,
     std::ostringstream os;
     os << "the number of lights must be between 1 and the number of pixels (" << count << "); got "
        << n;
-    error = os.str();
-    return MedianCutStatus::Error;
+    throw MedianCutError(os.str());
   }
   auto progress = [&](double f) { return ReportProgress(options.Progress, f); };
 
@@ -425,11 +422,9 @@ MedianCutStatus ComputeMedianCut(const float* pixels, int components, int width,
         os << "the map has " << bad
            << " NaN or infinite pixel value(s); the first is at pixel (i=" << firstBadPerRow[y]
            << ", j=" << h - 1 - y << ") (VTK row order)";
-        error = os.str();
-        break;
+        throw MedianCutError(os.str());
       }
     }
-    return MedianCutStatus::Error;
   }
   const int bands = BandsFor(h);
   for (int t = 1; t < bands; ++t)
@@ -455,12 +450,11 @@ MedianCutStatus ComputeMedianCut(const float* pixels, int components, int width,
   const double total = cut.E.Sum(0, w, 0, h);
   if (!(total > 0.0))
   {
-    error = "the map has no light: every pixel is black (or negative)";
-    return MedianCutStatus::Error;
+    throw MedianCutError("the map has no light: every pixel is black (or negative)");
   }
   if (!progress(0.3))
   {
-    return MedianCutStatus::Aborted;
+    throw MedianCutAbortedError();
   }
 
   // 2. Split regions, the highest priority first.
@@ -485,7 +479,7 @@ MedianCutStatus ComputeMedianCut(const float* pixels, int components, int width,
     ++regions;
     if ((regions & 63) == 0 && !progress(0.3 + 0.5 * regions / n))
     {
-      return MedianCutStatus::Aborted;
+      throw MedianCutAbortedError();
     }
   }
   while (!queue.empty())
@@ -495,7 +489,7 @@ MedianCutStatus ComputeMedianCut(const float* pixels, int components, int width,
   }
   if (!progress(0.8))
   {
-    return MedianCutStatus::Aborted;
+    throw MedianCutAbortedError();
   }
 
   // 3. One light per region: colour, energy centroid, solid angle.
@@ -596,9 +590,9 @@ MedianCutStatus ComputeMedianCut(const float* pixels, int components, int width,
     [](const MedianCutLight& a, const MedianCutLight& b) { return a.Energy > b.Energy; });
   if (!progress(1.0))
   {
-    return MedianCutStatus::Aborted;
+    throw MedianCutAbortedError();
   }
-  return MedianCutStatus::Ok;
+  return lights;
 }
 
 //------------------------------------------------------------------------------

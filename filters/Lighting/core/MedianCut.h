@@ -35,6 +35,7 @@
 #include "Progress.h"
 
 #include <functional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -76,11 +77,21 @@ struct MedianCutLight
   double V1 = 0.0;
 };
 
-enum class MedianCutStatus
+/** Bad input for the median cut; what() is one sentence for the user. */
+class MESOLIGHTLIGHTING_EXPORT MedianCutError : public std::runtime_error
 {
-  Ok,
-  Aborted,
-  Error
+public:
+  using std::runtime_error::runtime_error;
+};
+
+/** Thrown when MedianCutOptions::Progress returned false: not an error, the caller stops. */
+class MESOLIGHTLIGHTING_EXPORT MedianCutAbortedError : public std::runtime_error
+{
+public:
+  MedianCutAbortedError()
+    : std::runtime_error("median cut aborted")
+  {
+  }
 };
 
 /**
@@ -88,13 +99,13 @@ enum class MedianCutStatus
  *
  * @param pixels     width * height pixels of `components` (>= 3) floats, RGB first, VTK row
  *                   order (row 0 = bottom). Negative values count as 0; NaN/Inf are errors.
- * @param lights     NumberOfLights lights, sorted by decreasing Energy.
- * @return Ok; Aborted when Progress returned false; Error with a message (bad sizes, count
- *         0 or above the pixel count, non-finite pixels, a map without light).
+ * @return NumberOfLights lights, sorted by decreasing Energy.
+ * @throws MedianCutAbortedError when Progress returned false; MedianCutError with a message for
+ *         bad input (bad sizes, count 0 or above the pixel count, non-finite pixels, a map
+ *         without light).
  */
-MESOLIGHTLIGHTING_EXPORT MedianCutStatus ComputeMedianCut(const float* pixels, int components,
-  int width, int height, const MedianCutOptions& options, std::vector<MedianCutLight>& lights,
-  std::string& error);
+MESOLIGHTLIGHTING_EXPORT std::vector<MedianCutLight> ComputeMedianCut(
+  const float* pixels, int components, int width, int height, const MedianCutOptions& options);
 
 /// Irradiance of a light set at normal n: sum Rgb max(0, n.Direction).
 MESOLIGHTLIGHTING_EXPORT void IrradianceFromLights(

@@ -15,7 +15,6 @@
 
 using mesolight::MedianCutLight;
 using mesolight::MedianCutOptions;
-using mesolight::MedianCutStatus;
 using mesolight::RgbImage;
 using mesolight::test::Constant;
 
@@ -30,11 +29,8 @@ std::vector<MedianCutLight> Cut(
   options.VarianceMinimization = variance;
   options.SolidAngleWeighting = weighted;
   std::vector<MedianCutLight> lights;
-  std::string error;
-  EXPECT_EQ(
-    mesolight::ComputeMedianCut(map.Rgb.data(), 3, map.Width, map.Height, options, lights, error),
-    MedianCutStatus::Ok)
-    << error;
+  EXPECT_NO_THROW(
+    lights = mesolight::ComputeMedianCut(map.Rgb.data(), 3, map.Width, map.Height, options));
   return lights;
 }
 
@@ -343,26 +339,33 @@ TEST(MedianCut, BadInput)
 {
   RgbImage map = Constant(16, 8, 1.0f);
   MedianCutOptions options;
-  std::vector<MedianCutLight> lights;
-  std::string error;
+  // The message of the MedianCutError thrown for `image`, or "" when none is.
+  const auto refusal = [&options](const RgbImage& image) -> std::string
+  {
+    try
+    {
+      mesolight::ComputeMedianCut(image.Rgb.data(), 3, image.Width, image.Height, options);
+    }
+    catch (const mesolight::MedianCutError& e)
+    {
+      return e.what();
+    }
+    return std::string();
+  };
   options.NumberOfLights = 0;
-  EXPECT_EQ(mesolight::ComputeMedianCut(map.Rgb.data(), 3, 16, 8, options, lights, error),
-    MedianCutStatus::Error);
+  EXPECT_FALSE(refusal(map).empty());
   options.NumberOfLights = 129;
-  EXPECT_EQ(mesolight::ComputeMedianCut(map.Rgb.data(), 3, 16, 8, options, lights, error),
-    MedianCutStatus::Error);
+  EXPECT_FALSE(refusal(map).empty());
   options.NumberOfLights = 4;
   map.Pixel(3, 2)[1] = std::nanf("");
-  EXPECT_EQ(mesolight::ComputeMedianCut(map.Rgb.data(), 3, 16, 8, options, lights, error),
-    MedianCutStatus::Error);
+  std::string error = refusal(map);
   EXPECT_NE(error.find("i=3, j=2"), std::string::npos) << error;
   const RgbImage black = Constant(16, 8, 0.0f);
-  EXPECT_EQ(mesolight::ComputeMedianCut(black.Rgb.data(), 3, 16, 8, options, lights, error),
-    MedianCutStatus::Error);
-  EXPECT_NE(error.find("no light"), std::string::npos);
-  // Abort.
+  error = refusal(black);
+  EXPECT_NE(error.find("no light"), std::string::npos) << error;
+  // Abort: its own exception, not a MedianCutError.
   options.Progress = [](double) { return false; };
   const RgbImage ok = Constant(16, 8, 1.0f);
-  EXPECT_EQ(mesolight::ComputeMedianCut(ok.Rgb.data(), 3, 16, 8, options, lights, error),
-    MedianCutStatus::Aborted);
+  EXPECT_THROW(mesolight::ComputeMedianCut(ok.Rgb.data(), 3, 16, 8, options),
+    mesolight::MedianCutAbortedError);
 }
