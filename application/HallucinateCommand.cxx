@@ -314,26 +314,28 @@ int RunHallucinationBenchmark(const std::vector<std::string>& args)
     HallucinationSettings settings;
     settings.Layers = layers;
     start = std::chrono::steady_clock::now();
-    const HallucinationResult result =
-      HallucinateDepth(shots.Diffuse, shots.Flash, &shots.Calibration, settings);
-    const double filterSeconds = SecondsSince(start);
-    if (!result.Ok())
+    HallucinationResult result, uncalibrated, ideal;
+    double filterSeconds = 0.0;
+    try
     {
-      std::cerr << "mesolight bench hallucinate: " << label << ": " << result.Message << "\n";
+      result = HallucinateDepth(shots.Diffuse, shots.Flash, &shots.Calibration, settings);
+      filterSeconds = SecondsSince(start);
+      // The same photographs without the card: a uniform flash assumed.
+      uncalibrated = HallucinateDepth(shots.Diffuse, shots.Flash, nullptr, settings);
+      // An ideal flash that measures the albedo alone (no cosine to the flash, no
+      // interreflection): what the model makes of the true shading.
+      RgbImage idealFlash = shots.Diffuse;
+      for (std::size_t k = 0; k < idealFlash.Rgb.size(); ++k)
+      {
+        idealFlash.Rgb[k] += shots.TrueAlbedo.Rgb[k];
+      }
+      ideal = HallucinateDepth(shots.Diffuse, idealFlash, nullptr, settings);
+    }
+    catch (const HallucinationError& e)
+    {
+      std::cerr << "mesolight bench hallucinate: " << label << ": " << e.what() << "\n";
       return 1;
     }
-    // The same photographs without the card: a uniform flash assumed.
-    const HallucinationResult uncalibrated =
-      HallucinateDepth(shots.Diffuse, shots.Flash, nullptr, settings);
-    // An ideal flash that measures the albedo alone (no cosine to the flash, no interreflection):
-    // what the model makes of the true shading.
-    RgbImage idealFlash = shots.Diffuse;
-    for (std::size_t k = 0; k < idealFlash.Rgb.size(); ++k)
-    {
-      idealFlash.Rgb[k] += shots.TrueAlbedo.Rgb[k];
-    }
-    const HallucinationResult ideal =
-      HallucinateDepth(shots.Diffuse, idealFlash, nullptr, settings);
     std::vector<float> truth(depth);
     for (float& d : truth)
     {

@@ -5,10 +5,11 @@
  *
  * A core takes a ProgressCallback, calls it with the fraction done in [0, 1] (non-decreasing)
  * and stops when it returns false: it then returns its "aborted" result (an empty image or map)
- * or throws its module's aborted error (MedianCutAbortedError, vlf::AbortedError). An empty
- * callback never aborts. Callers that own only part of the work hand on SubProgress(whole, begin,
- * end); VTK filters hand on AlgorithmProgress(this), which maps the fraction to UpdateProgress and
- * GetAbortExecute (the abort flag VTK 9.1 and ParaView 5.11's VTK both have).
+ * or throws its module's aborted error (MedianCutAbortedError, HallucinationAbortedError,
+ * vlf::AbortedError). An empty callback never aborts. Callers that own only part of the work hand
+ * on SubProgress(whole, begin, end); VTK filters hand on AlgorithmProgress(this), which maps the
+ * fraction to UpdateProgress and GetAbortExecute (the abort flag VTK 9.1 and ParaView 5.11's VTK
+ * both have).
  */
 #ifndef mesolight_Progress_h
 #define mesolight_Progress_h

@@ -160,15 +160,19 @@ int vtkDepthHallucinationFilter::RequestData(
   settings.DepthScale = static_cast<float>(this->DepthScale);
   settings.ValleyWeight = static_cast<float>(this->ValleyWeight);
   settings.HillWeight = static_cast<float>(this->HillWeight);
-  const mesolight::HallucinationResult result = mesolight::HallucinateDepth(diffuse, flash,
-    calibrationIn ? &calibration : nullptr, settings, mesolight::AlgorithmProgress(this));
-  if (!result.Ok())
+  mesolight::HallucinationResult result;
+  try
   {
-    if (result.Status == mesolight::HallucinationStatus::Aborted)
-    {
-      return 1; // the user stopped it: empty outputs, no error
-    }
-    vtkErrorMacro(<< result.Message);
+    result = mesolight::HallucinateDepth(diffuse, flash, calibrationIn ? &calibration : nullptr,
+      settings, mesolight::AlgorithmProgress(this));
+  }
+  catch (const mesolight::HallucinationAbortedError&)
+  {
+    return 1; // the user stopped it: empty outputs, no error
+  }
+  catch (const mesolight::HallucinationError& e)
+  {
+    vtkErrorMacro(<< e.what());
     return 0;
   }
   this->DepthRangeTexels = result.DepthRangeTexels;

@@ -16,12 +16,9 @@ namespace
 // infinitely deep one).
 constexpr float Floor = 1e-3f;
 
-HallucinationResult Failure(HallucinationStatus status, const std::string& message)
+[[noreturn]] void Fail(HallucinationStatus reason, const std::string& message)
 {
-  HallucinationResult result;
-  result.Status = status;
-  result.Message = message;
-  return result;
+  throw HallucinationError(reason, message);
 }
 
 bool AllFinite(const RgbImage& image)
@@ -186,7 +183,7 @@ HallucinationResult HallucinateDepth(const RgbImage& diffuse, const RgbImage& fl
   };
   if (empty(diffuse) || empty(flash) || (calibration && empty(*calibration)))
   {
-    return Failure(HallucinationStatus::EmptyImage,
+    Fail(HallucinationStatus::EmptyImage,
       std::string("The ") +
         (empty(diffuse) ? "diffuse" : (empty(flash) ? "flash" : "calibration")) +
         " image is empty.");
@@ -195,14 +192,14 @@ HallucinationResult HallucinateDepth(const RgbImage& diffuse, const RgbImage& fl
     (calibration && (calibration->Width != diffuse.Width || calibration->Height != diffuse.Height)))
   {
     const bool flashDiffers = flash.Width != diffuse.Width || flash.Height != diffuse.Height;
-    return Failure(HallucinationStatus::SizeMismatch,
+    Fail(HallucinationStatus::SizeMismatch,
       "The photographs differ in size: diffuse " + SizeOf(diffuse) + ", " +
         (flashDiffers ? "flash " + SizeOf(flash) : "calibration " + SizeOf(*calibration)) +
         " (they must show the same view, pixel for pixel).");
   }
   if (!AllFinite(diffuse) || !AllFinite(flash) || (calibration && !AllFinite(*calibration)))
   {
-    return Failure(HallucinationStatus::NonFinite,
+    Fail(HallucinationStatus::NonFinite,
       std::string("The ") +
         (!AllFinite(diffuse) ? "diffuse" : (!AllFinite(flash) ? "flash" : "calibration")) +
         " image has NaN or infinite pixels.");
@@ -211,7 +208,7 @@ HallucinationResult HallucinateDepth(const RgbImage& diffuse, const RgbImage& fl
     !(settings.DepthScale > 0.0f) || !(settings.ValleyWeight >= 0.0f) ||
     !(settings.HillWeight >= 0.0f) || !std::isfinite(settings.DepthScale))
   {
-    return Failure(HallucinationStatus::BadSettings,
+    Fail(HallucinationStatus::BadSettings,
       "Settings out of range (layers 1..12, base sigma > 0, depth scale > 0, weights >= 0).");
   }
   const int w = diffuse.Width, h = diffuse.Height;
@@ -229,12 +226,12 @@ HallucinationResult HallucinateDepth(const RgbImage& diffuse, const RgbImage& fl
   diffuseMean /= static_cast<double>(n);
   if (flashOnly < 0.0)
   {
-    return Failure(HallucinationStatus::FlashDarker,
+    Fail(HallucinationStatus::FlashDarker,
       "The flash image is darker than the diffuse one: were the two swapped?");
   }
   if (!(flashOnly > 1e-3 * diffuseMean))
   {
-    return Failure(HallucinationStatus::FlashDarker,
+    Fail(HallucinationStatus::FlashDarker,
       "The flash image is not brighter than the diffuse one: did the flash fire?");
   }
   std::size_t darker = 0;
@@ -252,7 +249,7 @@ HallucinationResult HallucinateDepth(const RgbImage& diffuse, const RgbImage& fl
     message << "The flash image is darker than the diffuse one in "
             << static_cast<int>(std::lround(100.0 * static_cast<double>(darker) / n))
             << "% of the pixels: were the two swapped, or did the light change between them?";
-    return Failure(HallucinationStatus::FlashDarker, message.str());
+    Fail(HallucinationStatus::FlashDarker, message.str());
   }
 
   HallucinationResult result;
@@ -264,7 +261,7 @@ HallucinationResult HallucinateDepth(const RgbImage& diffuse, const RgbImage& fl
     calibrationMax = *std::max_element(calibration->Rgb.begin(), calibration->Rgb.end());
     if (!(calibrationMax > 0.0f))
     {
-      return Failure(HallucinationStatus::EmptyImage,
+      Fail(HallucinationStatus::EmptyImage,
         "The calibration image is black (the flash did not fire).");
     }
   }
@@ -276,7 +273,7 @@ HallucinationResult HallucinateDepth(const RgbImage& diffuse, const RgbImage& fl
   }
   if (!ReportProgress(progress, 0.05))
   {
-    return Failure(HallucinationStatus::Aborted, "Aborted.");
+    throw HallucinationAbortedError();
   }
 
   // 2. Shading = lum(I_d) / lum(albedo), 1 at the 99.5th percentile. A black albedo carries no
@@ -309,7 +306,7 @@ HallucinationResult HallucinateDepth(const RgbImage& diffuse, const RgbImage& fl
     DepthFromShading(result.Shading, w, h, settings, SubProgress(progress, 0.1, 1.0));
   if (depth.empty())
   {
-    return Failure(HallucinationStatus::Aborted, "Aborted.");
+    throw HallucinationAbortedError();
   }
   const auto range = std::minmax_element(depth.begin(), depth.end());
   const float lowest = *range.first;

@@ -50,6 +50,7 @@
 #include "Progress.h"
 #include "RgbImage.h"
 
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -71,26 +72,47 @@ struct HallucinationSettings
   int Threads = 0; ///< 1: the calling thread only; otherwise ParallelFor's threads
 };
 
+/// Why HallucinateDepth refused its input (HallucinationError::GetReason).
 enum class HallucinationStatus
 {
-  Ok = 0,
   EmptyImage,
   SizeMismatch,
   NonFinite,
   FlashDarker,
-  BadSettings,
-  Aborted
+  BadSettings
+};
+
+/// Input HallucinateDepth refuses; what() is one sentence for the user.
+class MESOLIGHTRELIEFTEXTURES_EXPORT HallucinationError : public std::runtime_error
+{
+public:
+  HallucinationError(HallucinationStatus reason, const std::string& message)
+    : std::runtime_error(message)
+    , Reason(reason)
+  {
+  }
+  HallucinationStatus GetReason() const { return this->Reason; }
+
+private:
+  HallucinationStatus Reason;
+};
+
+/// Thrown when the progress callback returned false: not an error, the caller stops.
+class MESOLIGHTRELIEFTEXTURES_EXPORT HallucinationAbortedError : public std::runtime_error
+{
+public:
+  HallucinationAbortedError()
+    : std::runtime_error("Aborted.")
+  {
+  }
 };
 
 struct HallucinationResult
 {
-  HallucinationStatus Status = HallucinationStatus::Ok;
-  std::string Message;           ///< one sentence when Status != Ok
   RgbImage Albedo;               ///< (I_f - I_d) / I_c, linear, per channel
   std::vector<float> Shading;    ///< S, normalised (1 = open, upward-facing)
   std::vector<float> Depth;      ///< w x h, 0 = highest point, 1 = deepest
   float DepthRangeTexels = 0.0f; ///< the model's depth of Depth = 1, in texel widths
-  bool Ok() const { return this->Status == HallucinationStatus::Ok; }
 };
 
 /// Rec. 709 luminance of a linear RGB pixel.
@@ -101,9 +123,9 @@ inline float RgbLuminance(const float* rgb)
 
 /**
  * The whole filter: albedo, shading and depth. `calibration` may be null (a uniform flash).
- * Errors (Status, Message): an empty image, images of different sizes, a NaN or infinite pixel,
- * a flash image darker than the diffuse one, settings out of range; Aborted when `progress`
- * returns false.
+ * Throws HallucinationError (its reason and a message) for an empty image, images of different
+ * sizes, a NaN or infinite pixel, a flash image darker than the diffuse one, settings out of
+ * range; HallucinationAbortedError when `progress` returns false.
  */
 MESOLIGHTRELIEFTEXTURES_EXPORT HallucinationResult HallucinateDepth(const RgbImage& diffuse,
   const RgbImage& flash, const RgbImage* calibration, const HallucinationSettings& settings = {},

@@ -125,10 +125,10 @@ TEST(DepthHallucination, AlbedoIsFlashOnlyOverCalibration)
       for (int c = 0; c < 3; ++c)
         rgb[c] = falloff(i, j);
     });
-  const HallucinationResult result = HallucinateDepth(diffuse, flash, &card);
-  ASSERT_TRUE(result.Ok()) << result.Message;
-  const HallucinationResult uncalibrated = HallucinateDepth(diffuse, flash, nullptr);
-  ASSERT_TRUE(uncalibrated.Ok()) << uncalibrated.Message;
+  HallucinationResult result;
+  ASSERT_NO_THROW(result = HallucinateDepth(diffuse, flash, &card));
+  HallucinationResult uncalibrated;
+  ASSERT_NO_THROW(uncalibrated = HallucinateDepth(diffuse, flash, nullptr));
   double worst = 0.0, worstUncalibrated = 0.0;
   for (int j = 0; j < N; ++j)
   {
@@ -159,8 +159,8 @@ TEST(DepthHallucination, PitComesOutAsValley)
   const Pair pair = Photograph([](int i, int j)
     { return 1.0f - 0.6f * std::exp(-0.5f * std::pow(Radius(i, j) / 4.0f, 2.0f)); },
     [](int i, int, int) { return (i / 4) % 2 ? 0.8f : 0.2f; });
-  const HallucinationResult result = HallucinateDepth(pair.Diffuse, pair.Flash, nullptr);
-  ASSERT_TRUE(result.Ok()) << result.Message;
+  HallucinationResult result;
+  ASSERT_NO_THROW(result = HallucinateDepth(pair.Diffuse, pair.Flash, nullptr));
   EXPECT_GT(DepthAt(result, N / 2, N / 2), 0.9f); // the deepest point
   EXPECT_LT(DepthAt(result, 4, N / 2), DepthAt(result, N / 2, N / 2) - 0.5f);
   EXPECT_GT(result.DepthRangeTexels, 1.0f);
@@ -184,8 +184,8 @@ TEST(DepthHallucination, BumpComesOutAsHill)
   const RgbImage flash = Fill(N, N,
     [&](int i, int j, float* rgb)
     { std::fill(rgb, rgb + 3, diffuse.Pixel(i, j)[0] + Albedo * cosine(i, j)); });
-  const HallucinationResult result = HallucinateDepth(diffuse, flash, nullptr);
-  ASSERT_TRUE(result.Ok()) << result.Message;
+  HallucinationResult result;
+  ASSERT_NO_THROW(result = HallucinateDepth(diffuse, flash, nullptr));
   const float top = DepthAt(result, N / 2, N / 2), far = DepthAt(result, 2, 2);
   EXPECT_LT(top, far - 0.5f) << "the top of the bump must be higher than the plane";
   // The highest point is on the bump (within two sigma of its centre).
@@ -195,31 +195,51 @@ TEST(DepthHallucination, BumpComesOutAsHill)
   // Negative: without the hill law (valleys by aperture only) the bump reads as a depression.
   HallucinationSettings valleysOnly;
   valleysOnly.HillWeight = 0.0f;
-  const HallucinationResult noHills = HallucinateDepth(diffuse, flash, nullptr, valleysOnly);
-  ASSERT_TRUE(noHills.Ok()) << noHills.Message;
+  HallucinationResult noHills;
+  ASSERT_NO_THROW(noHills = HallucinateDepth(diffuse, flash, nullptr, valleysOnly));
   EXPECT_GT(DepthAt(noHills, N / 2, N / 2), DepthAt(noHills, 2, 2));
 }
 
 TEST(DepthHallucination, BadInputIsReported)
 {
   const Pair pair = Photograph([](int, int) { return 0.5f; });
+  // The reason and message of the HallucinationError HallucinateDepth throws.
+  struct Refusal
+  {
+    HallucinationStatus Reason = HallucinationStatus::BadSettings;
+    std::string Message; // empty when nothing was thrown
+  };
+  const auto refusal = [](const RgbImage& diffuse, const RgbImage& flash, const RgbImage* card)
+  {
+    Refusal r;
+    try
+    {
+      HallucinateDepth(diffuse, flash, card);
+    }
+    catch (const HallucinationError& e)
+    {
+      r.Reason = e.GetReason();
+      r.Message = e.what();
+    }
+    return r;
+  };
   const RgbImage small(N / 2, N);
-  HallucinationResult result = HallucinateDepth(pair.Diffuse, small, nullptr);
-  EXPECT_EQ(result.Status, HallucinationStatus::SizeMismatch);
+  Refusal result = refusal(pair.Diffuse, small, nullptr);
+  EXPECT_EQ(result.Reason, HallucinationStatus::SizeMismatch);
   EXPECT_NE(result.Message.find("differ in size"), std::string::npos) << result.Message;
   // Swapped photographs: the "flash" image is the darker one.
-  result = HallucinateDepth(pair.Flash, pair.Diffuse, nullptr);
-  EXPECT_EQ(result.Status, HallucinationStatus::FlashDarker);
+  result = refusal(pair.Flash, pair.Diffuse, nullptr);
+  EXPECT_EQ(result.Reason, HallucinationStatus::FlashDarker);
   EXPECT_NE(result.Message.find("darker"), std::string::npos) << result.Message;
   // A flash that did not fire.
-  result = HallucinateDepth(pair.Diffuse, pair.Diffuse, nullptr);
-  EXPECT_EQ(result.Status, HallucinationStatus::FlashDarker);
+  result = refusal(pair.Diffuse, pair.Diffuse, nullptr);
+  EXPECT_EQ(result.Reason, HallucinationStatus::FlashDarker);
   EXPECT_NE(result.Message.find("not brighter"), std::string::npos) << result.Message;
   // The light changed between the shots: a fifth of the flash image darker than the diffuse one.
   RgbImage changed = pair.Flash;
   std::fill(changed.Rgb.begin(), changed.Rgb.begin() + changed.Rgb.size() / 5, 0.0f);
-  result = HallucinateDepth(pair.Diffuse, changed, nullptr);
-  EXPECT_EQ(result.Status, HallucinationStatus::FlashDarker);
+  result = refusal(pair.Diffuse, changed, nullptr);
+  EXPECT_EQ(result.Reason, HallucinationStatus::FlashDarker);
   EXPECT_NE(result.Message.find("darker than the diffuse one in 20%"), std::string::npos)
     << result.Message;
   // Noise: a few pixels slightly darker are accepted.
@@ -228,21 +248,23 @@ TEST(DepthHallucination, BadInputIsReported)
   {
     std::fill(noisy.Rgb.begin() + k, noisy.Rgb.begin() + k + 3, pair.Diffuse.Rgb[k] * 0.99f);
   }
-  EXPECT_TRUE(HallucinateDepth(pair.Diffuse, noisy, nullptr).Ok());
+  EXPECT_NO_THROW(HallucinateDepth(pair.Diffuse, noisy, nullptr));
   RgbImage broken = pair.Flash;
   broken.Pixel(3, 4)[1] = std::numeric_limits<float>::quiet_NaN();
-  result = HallucinateDepth(pair.Diffuse, broken, nullptr);
-  EXPECT_EQ(result.Status, HallucinationStatus::NonFinite);
+  result = refusal(pair.Diffuse, broken, nullptr);
+  EXPECT_EQ(result.Reason, HallucinationStatus::NonFinite);
   EXPECT_NE(result.Message.find("NaN"), std::string::npos) << result.Message;
-  result = HallucinateDepth(RgbImage(), pair.Flash, nullptr);
-  EXPECT_EQ(result.Status, HallucinationStatus::EmptyImage);
+  result = refusal(RgbImage(), pair.Flash, nullptr);
+  EXPECT_EQ(result.Reason, HallucinationStatus::EmptyImage);
+  EXPECT_FALSE(result.Message.empty());
   const RgbImage card(N, N + 1);
-  result = HallucinateDepth(pair.Diffuse, pair.Flash, &card);
-  EXPECT_EQ(result.Status, HallucinationStatus::SizeMismatch);
+  result = refusal(pair.Diffuse, pair.Flash, &card);
+  EXPECT_EQ(result.Reason, HallucinationStatus::SizeMismatch);
   EXPECT_NE(result.Message.find("calibration"), std::string::npos) << result.Message;
-  // Progress that stops the work.
-  result = HallucinateDepth(pair.Diffuse, pair.Flash, nullptr, {}, [](double) { return false; });
-  EXPECT_EQ(result.Status, HallucinationStatus::Aborted);
+  // Progress that stops the work: its own exception, not a HallucinationError.
+  EXPECT_THROW(
+    HallucinateDepth(pair.Diffuse, pair.Flash, nullptr, {}, [](double) { return false; }),
+    HallucinationAbortedError);
 }
 
 TEST(DepthHallucinationFilter, OutputsAndErrors)
