@@ -12,6 +12,7 @@ PACKAGES=(
   libembree-dev
   blender-data blender
   googletest libgtest-dev libgmock-dev
+  clang libclang-rt-dev  # the fuzz stage of scripts/test.sh: clang and its libFuzzer runtime
   xvfb xauth mesa-utils libgl1-mesa-dri
 )
 
