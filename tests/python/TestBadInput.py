@@ -1,0 +1,99 @@
+# SPDX-License-Identifier: BSD-3-Clause
+"""Bad input from Python gives a VTK error that an observer catches, never a crash, and the
+pipeline goes on: each case must raise at least one ErrorEvent naming the problem and leave an
+empty output; a good input afterwards must work again. A case that raised no error (a silent
+wrong result) fails the test.
+"""
+import os
+import sys
+import tempfile
+
+import numpy as np
+from vtkmodules.util.numpy_support import numpy_to_vtk
+from vtkmodules.vtkCommonCore import VTK_STRING, vtkCommand
+from vtkmodules.vtkCommonDataModel import vtkImageData
+
+from mesolight import (vtkConeMapFilter, vtkMedianCutLights, vtkOIIOImageReader,
+                       vtkProceduralEnvironmentSource)
+
+
+class ErrorRecorder:
+    """An ErrorEvent observer: VTK then reports to it instead of the output window."""
+
+    # VTK passes the message as call data to an observer that says which type it wants.
+    CallDataType = VTK_STRING
+
+    def __init__(self, *objects):
+        self.messages = []
+        for obj in objects:
+            obj.AddObserver(vtkCommand.ErrorEvent, self)
+
+    def __call__(self, caller, event, message=None):
+        self.messages.append(str(message) if message is not None else "")
+
+
+def image(width, height, values):
+    data = vtkImageData()
+    data.SetDimensions(width, height, 1)
+    data.GetPointData().SetScalars(numpy_to_vtk(values.reshape(-1, values.shape[-1]), deep=True))
+    return data
+
+
+def expect_error(name, algorithm, pattern, output_size):
+    errors = ErrorRecorder(algorithm, algorithm.GetExecutive())
+    algorithm.Update()
+    size = output_size(algorithm)
+    matched = [m for m in errors.messages if pattern.lower() in m.lower()]
+    lines = [line.strip() for m in matched for line in m.splitlines()
+             if pattern.lower() in line.lower()]
+    print(f"{name}: {len(errors.messages)} error(s), output size {size}: "
+          f"{lines[0] if lines else '(none)'}")
+    if not matched:
+        print(f"  FAIL: no error mentioning '{pattern}'")
+        return False
+    if size != 0:
+        print("  FAIL: an output despite the error")
+        return False
+    return True
+
+
+def main():
+    ok = True
+    points = lambda a: a.GetOutput().GetNumberOfPoints()  # noqa: E731
+
+    # An all-black environment: no light to cut.
+    lights = vtkMedianCutLights()
+    lights.SetInputData(image(64, 32, np.zeros((32, 64, 3), np.float32)))
+    ok &= expect_error("black environment", lights, "no light", points)
+
+    # NaN pixels are named, not propagated into the lights.
+    nan_map = np.ones((32, 64, 3), np.float32)
+    nan_map[5, 7] = np.nan
+    lights.SetInputData(image(64, 32, nan_map))
+    ok &= expect_error("NaN environment", lights, "NaN", points)
+
+    # A file that does not exist.
+    reader = vtkOIIOImageReader()
+    reader.SetFileName(os.path.join(tempfile.gettempdir(), "mesolight-no-such-file.exr"))
+    ok &= expect_error("missing file", reader, "no-such-file", points)
+
+    # A cone map filter without an input.
+    cones = vtkConeMapFilter()
+    ok &= expect_error("no input", cones, "input", points)
+
+    # The same filter goes on working with a good input.
+    sky = vtkProceduralEnvironmentSource()
+    sky.SetResolution(64, 32)
+    lights.SetInputConnection(sky.GetOutputPort())
+    lights.SetNumberOfLights(8)
+    errors = ErrorRecorder(lights)
+    lights.Update()
+    good = points(lights) == 8 and not errors.messages
+    print(f"good input afterwards: {points(lights)} lights, {len(errors.messages)} errors")
+    ok &= good
+    print("OK" if ok else "FAILED")
+    return 0 if ok else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())
