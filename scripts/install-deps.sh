@@ -7,6 +7,7 @@ set -euo pipefail
 PACKAGES=(
   build-essential cmake ninja-build pkg-config
   libvtk9-dev
+  python3-vtk9 python3-dev python3-numpy  # the Python wrapping, its examples and tests
   libopenimageio-dev openimageio-tools libopenexr-dev
   libglm-dev
   libembree-dev
