@@ -35,7 +35,7 @@ def main():
     moved = pvs.Transform(Input=sphere)
     moved.Transform.Translate = [170.0, 290.0, 160.0]
     g.apply(moved, view)
-    gather = pvs.LightFieldGather(Input=moved, LightField=field)
+    gather = pvs.MesolightLightFieldGather(Input=moved, LightField=field)
     g.apply(gather, view)
     scene = pvs.GetDisplayProperties(field, view)
     obj = pvs.GetDisplayProperties(gather, view)
