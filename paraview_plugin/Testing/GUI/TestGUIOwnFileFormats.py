@@ -60,8 +60,10 @@ def main():
     own.write_files()
     view = g.gui_view()
     readers = {}
-    for depth_file in ("depth16.png", "depth.tif", "depth.exr"):
-        for name, steps in ORDERS.items():
+    # Each format once, the orders alternating (the suite's time: about 13 s a run here).
+    orders = list(ORDERS.items())
+    for k, depth_file in enumerate(("depth16.png", "depth.tif", "depth.exr")):
+        for name, steps in [orders[k % len(orders)]]:
             made = run_order(view, depth_file, steps)
             readers[depth_file] = made["depth"].GetXMLLabel()
             readers["sky.hdr"] = made["sky"].GetXMLLabel()
