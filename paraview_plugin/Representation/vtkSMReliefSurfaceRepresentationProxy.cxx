@@ -2,16 +2,24 @@
 #include "vtkSMReliefSurfaceRepresentationProxy.h"
 
 #include "vtkDataObject.h"
+#include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPVDataInformation.h"
 #include "vtkPVRenderView.h"
 #include "vtkPVRenderViewSettings.h"
+#include "vtkSMInputProperty.h"
+#include "vtkSMParaViewPipelineControllerWithRendering.h"
 #include "vtkSMPropertyHelper.h"
+#include "vtkSMPropertyIterator.h"
+#include "vtkSMProxyManager.h"
 #include "vtkSMRenderViewProxy.h"
 #include "vtkSMSessionProxyManager.h"
 #include "vtkSMSourceProxy.h"
+#include "vtkSMViewProxy.h"
+#include "vtkSmartPointer.h"
 
 #include <cstring>
+#include <vector>
 
 vtkStandardNewMacro(vtkSMReliefSurfaceRepresentationProxy);
 
@@ -45,6 +53,39 @@ int VisibleDataRepresentations(vtkSMProxy* view)
   }
   return count;
 }
+
+// Every source upstream of `start` (through all its input properties, recursively).
+std::vector<vtkSMSourceProxy*> UpstreamSources(vtkSMSourceProxy* start)
+{
+  std::vector<vtkSMSourceProxy*> found;
+  std::vector<vtkSMProxy*> pending{ start };
+  std::set<vtkSMProxy*> visited{ start };
+  while (!pending.empty())
+  {
+    vtkSMProxy* proxy = pending.back();
+    pending.pop_back();
+    vtkSmartPointer<vtkSMPropertyIterator> it;
+    it.TakeReference(proxy->NewPropertyIterator());
+    for (it->Begin(); !it->IsAtEnd(); it->Next())
+    {
+      auto* input = vtkSMInputProperty::SafeDownCast(it->GetProperty());
+      if (!input)
+      {
+        continue;
+      }
+      for (unsigned int i = 0; i < input->GetNumberOfProxies(); ++i)
+      {
+        auto* producer = vtkSMSourceProxy::SafeDownCast(input->GetProxy(i));
+        if (producer && visited.insert(producer).second)
+        {
+          found.push_back(producer);
+          pending.push_back(producer);
+        }
+      }
+    }
+  }
+  return found;
+}
 } // namespace
 
 //------------------------------------------------------------------------------
@@ -71,7 +112,55 @@ void vtkSMReliefSurfaceRepresentationProxy::ViewUpdated(vtkSMProxy* view)
     return;
   }
   this->UpdateLightSetAttached(composite);
-  this->UpdateInteractionMode(composite, view);
+  const bool hidden = this->HideUpstreamImages(composite, view);
+  this->UpdateInteractionMode(composite, view, hidden);
+}
+
+//------------------------------------------------------------------------------
+bool vtkSMReliefSurfaceRepresentationProxy::HideUpstreamImages(
+  vtkSMProxy* composite, vtkSMProxy* view)
+{
+  auto* viewProxy = vtkSMViewProxy::SafeDownCast(view);
+  if (!viewProxy || !ShownAsRelief(composite) || !composite->GetProperty("Input"))
+  {
+    return false;
+  }
+  auto* relief = vtkSMSourceProxy::SafeDownCast(vtkSMPropertyHelper(composite, "Input").GetAsProxy(0));
+  if (!relief)
+  {
+    return false;
+  }
+  // Only the GUI's Apply hides inputs (see the class comment); a state file's visibility stands
+  // for what is upstream when it is loaded.
+  vtkSMProxyManager* manager = vtkSMProxyManager::GetProxyManager();
+  const bool act = manager && manager->GetUndoStackBuilder() &&
+    !(this->LoadedFromState && !this->InteractionModeChecked);
+  bool hidden = false;
+  vtkNew<vtkSMParaViewPipelineControllerWithRendering> controller;
+  for (vtkSMSourceProxy* source : UpstreamSources(relief))
+  {
+    for (unsigned int port = 0; port < source->GetNumberOfOutputPorts(); ++port)
+    {
+      const auto key = std::make_pair(source->GetGlobalID(), static_cast<int>(port));
+      if (!this->UpstreamPortsSeen.insert(key).second || !act)
+      {
+        continue;
+      }
+      vtkSMProxy* shown = viewProxy->FindRepresentation(source, static_cast<int>(port));
+      if (!shown || !shown->GetProperty("Visibility") ||
+        vtkSMPropertyHelper(shown, "Visibility").GetAsInt() != 1)
+      {
+        continue;
+      }
+      vtkPVDataInformation* info = source->GetDataInformation(port);
+      if (info && info->DataSetTypeIsA("vtkImageData"))
+      {
+        controller->Hide(source, static_cast<int>(port), viewProxy);
+        hidden = true;
+      }
+    }
+  }
+  return hidden;
 }
 
 //------------------------------------------------------------------------------
@@ -100,29 +189,38 @@ void vtkSMReliefSurfaceRepresentationProxy::UpdateLightSetAttached(vtkSMProxy* c
 
 //------------------------------------------------------------------------------
 void vtkSMReliefSurfaceRepresentationProxy::UpdateInteractionMode(
-  vtkSMProxy* composite, vtkSMProxy* view)
+  vtkSMProxy* composite, vtkSMProxy* view, bool imagesHidden)
 {
   auto* renderView = vtkSMRenderViewProxy::SafeDownCast(view);
-  if (this->InteractionModeChecked || !renderView || !ShownAsRelief(composite))
+  if (!renderView || !ShownAsRelief(composite))
   {
     return;
   }
-  // Decided once, at the first update that shows the relief: a mode the user picks later stays.
+  // Decided at the first update that shows the relief (a mode the user picks later stays), and
+  // again only when images were hidden for it (the view framed them, not the relief).
+  const bool first = !this->InteractionModeChecked;
   this->InteractionModeChecked = true;
-  if (this->LoadedFromState || !view->GetProperty("InteractionMode") ||
-    vtkPVRenderViewSettings::GetInstance()->GetDefaultInteractionMode() !=
-      vtkPVRenderViewSettings::AUTOMATIC ||
-    vtkSMPropertyHelper(view, "InteractionMode").GetAsInt() !=
-      vtkPVRenderView::INTERACTION_MODE_2D ||
+  if ((!first && !imagesHidden) || (first && this->LoadedFromState) ||
     VisibleDataRepresentations(view) != 1)
   {
     return;
   }
-  vtkSMPropertyHelper(view, "InteractionMode").Set(vtkPVRenderView::INTERACTION_MODE_3D);
-  view->UpdateProperty("InteractionMode", 1);
-  // The 2D rule put the camera far along the flat axis for a parallel projection; frame the
-  // relief for the perspective one, as ParaView resets the camera for the only visible data.
-  renderView->ResetCamera();
+  bool reset = imagesHidden;
+  if (view->GetProperty("InteractionMode") &&
+    vtkPVRenderViewSettings::GetInstance()->GetDefaultInteractionMode() ==
+      vtkPVRenderViewSettings::AUTOMATIC &&
+    vtkSMPropertyHelper(view, "InteractionMode").GetAsInt() == vtkPVRenderView::INTERACTION_MODE_2D)
+  {
+    vtkSMPropertyHelper(view, "InteractionMode").Set(vtkPVRenderView::INTERACTION_MODE_3D);
+    view->UpdateProperty("InteractionMode", 1);
+    reset = true;
+  }
+  if (reset)
+  {
+    // The 2D rule put the camera far along the flat axis for a parallel projection, or the camera
+    // framed the images: frame the relief, as ParaView resets the camera for the only visible data.
+    renderView->ResetCamera();
+  }
 }
 
 //------------------------------------------------------------------------------

@@ -19,6 +19,16 @@
  *   rule for non-flat data at that moment, once per representation, only with Edit > Settings >
  *   Render View > Default Interaction Mode on Automatic, and never for a representation loaded
  *   from a state file (its saved camera and mode stand).
+ * - In the GUI, the images the relief is made from are hidden in that view: every image output
+ *   upstream of the relief (the depth image and the environment, whatever reader opened them,
+ *   shown as a Slice by their own Apply) that is visible when it first becomes upstream.
+ *   ParaView's replace_input hint hides only a filter's direct inputs (the Plane, Relief
+ *   Texture), so a user's own depth image, two steps up, stayed on screen 512 units wide with
+ *   the unit relief a dot in its corner; likewise the environment when a light set is attached
+ *   later. Then, if the relief is the only visible data, the view is framed (and set to 3D as
+ *   above). Each image is hidden once: shown again with the eye icon it stays. Only in the GUI
+ *   (the application keeps an undo stack, vtkSMProxyManager::GetUndoStackBuilder), where Apply
+ *   hides inputs; a Python Show() hides nothing, so neither does this. Not for state files.
  */
 
 #ifndef vtkSMReliefSurfaceRepresentationProxy_h
@@ -26,6 +36,9 @@
 
 #include "MesolightParaViewReliefModule.h" // for export macro
 #include "vtkSMRepresentationProxy.h"
+
+#include <set>     // for std::set
+#include <utility> // for std::pair
 
 class MESOLIGHTPARAVIEWRELIEF_EXPORT vtkSMReliefSurfaceRepresentationProxy
   : public vtkSMRepresentationProxy
@@ -53,10 +66,14 @@ private:
   void operator=(const vtkSMReliefSurfaceRepresentationProxy&) = delete;
 
   void UpdateLightSetAttached(vtkSMProxy* composite);
-  void UpdateInteractionMode(vtkSMProxy* composite, vtkSMProxy* view);
+  /** Hides newly upstream visible images (see the class comment); true if it hid any. */
+  bool HideUpstreamImages(vtkSMProxy* composite, vtkSMProxy* view);
+  void UpdateInteractionMode(vtkSMProxy* composite, vtkSMProxy* view, bool imagesHidden);
 
   bool LoadedFromState = false;
   bool InteractionModeChecked = false;
+  // Upstream output ports already considered (source proxy global id, port).
+  std::set<std::pair<vtkTypeUInt32, int>> UpstreamPortsSeen;
 };
 
 #endif

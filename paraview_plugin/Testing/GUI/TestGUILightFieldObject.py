@@ -3,6 +3,7 @@
 applies it: Cornell Box -> Virtual Light Field; Sphere -> Transform (Translate) -> Light Field
 Gather (Light Field = the field). Then the field display's Shadow Caster is set to the gather.
 
+- Apply of the field shows it as Light Field without the Diffuse array or a legend;
 - Apply of the gather shows it as Light Field (no colour array) and keeps the scene shown (its
   replace_input="2" hint hides only the Transform, shown as Surface);
 - with the Shadow Caster the scene loses light under the object: more than MIN_SHADOW_PIXELS
@@ -30,12 +31,23 @@ def main():
     g.apply(box, view)
     field = pvs.MesolightVirtualLightField(Input=box)
     g.apply(field, view)
+    # The scene's radiance, not its Diffuse array (the data's active scalars): no colour array,
+    # no legend (before vtkSMLightFieldRepresentationProxy: Diffuse, "Diffuse Magnitude").
+    shown_field = pvs.GetDisplayProperties(field, view)
+    bars = [r for r in view.Representations
+            if r.GetXMLName() == "ScalarBarWidgetRepresentation" and r.Visibility]
+    print("Virtual Light Field shown as %r, colour array %r, %d legends"
+          % (shown_field.Representation, shown_field.ColorArrayName[1], len(bars)))
+    if shown_field.Representation != "Light Field" or shown_field.ColorArrayName[1] or bars:
+        failures.append("Apply should show the field as Light Field without a colour array or "
+                        "legend (%r, %r, %d legends)" % (shown_field.Representation,
+                                                        shown_field.ColorArrayName[1], len(bars)))
     sphere = pvs.Sphere(Radius=55.0, ThetaResolution=32, PhiResolution=16)
     g.apply(sphere, view)
     moved = pvs.Transform(Input=sphere)
     moved.Transform.Translate = [170.0, 290.0, 160.0]
     g.apply(moved, view)
-    gather = pvs.LightFieldGather(Input=moved, LightField=field)
+    gather = pvs.MesolightLightFieldGather(Input=moved, LightField=field)
     g.apply(gather, view)
     scene = pvs.GetDisplayProperties(field, view)
     obj = pvs.GetDisplayProperties(gather, view)

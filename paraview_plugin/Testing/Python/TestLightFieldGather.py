@@ -66,7 +66,7 @@ expected = math.pi * (1.0 + 0.5 + 0.25 + 0.125)
 for iterations, should_pass in ((3, True), (1, False)):
     field = pvs.MesolightVirtualLightField(Input=reader, Directions=513, RaysPerSide=24,
                                            Iterations=iterations)
-    gather = pvs.LightFieldGather(Input=sphere, LightField=field)
+    gather = pvs.MesolightLightFieldGather(Input=sphere, LightField=field)
     points, e, radiance, normals = arrays(gather)
     if e is None:
         check(False, "furnace: the output has Irradiance and Radiance")
@@ -94,7 +94,7 @@ box = pvs.MesolightCornellBox()
 field = pvs.MesolightVirtualLightField(Input=box, Directions=513, RaysPerSide=32, Iterations=3)
 ball = pvs.Sphere(Center=[200.0, 300.0, 150.0], Radius=60.0, ThetaResolution=24,
                   PhiResolution=12)
-gather = pvs.LightFieldGather(Input=ball, LightField=field)
+gather = pvs.MesolightLightFieldGather(Input=ball, LightField=field)
 points, e, radiance, normals = arrays(gather)
 check(e is not None and normals is not None and np.all(np.isfinite(e)) and e.shape[1] == 3,
       "Cornell sphere: finite RGB Irradiance at every point")
@@ -113,7 +113,7 @@ if e is not None and normals is not None:
 
 # --- Bad input ------------------------------------------------------------------------------
 plane = pvs.Plane()
-bad = pvs.LightFieldGather(Input=ball, LightField=plane)
+bad = pvs.MesolightLightFieldGather(Input=ball, LightField=plane)
 from vtkmodules.vtkCommonCore import vtkOutputWindow, vtkStringOutputWindow  # noqa: E402
 messages = vtkStringOutputWindow()
 previous = vtkOutputWindow.GetInstance()

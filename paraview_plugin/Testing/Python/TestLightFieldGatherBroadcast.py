@@ -36,7 +36,7 @@ box = pvs.MesolightCornellBox()
 field = pvs.MesolightVirtualLightField(Input=box, Directions=513, RaysPerSide=24, Iterations=3)
 ball = pvs.Sphere(Center=[278.0, 250.0, 280.0], Radius=60.0, ThetaResolution=24,
                   PhiResolution=12)
-gather = pvs.LightFieldGather(Input=ball, LightField=field)
+gather = pvs.MesolightLightFieldGather(Input=ball, LightField=field)
 
 
 def counters():

@@ -48,7 +48,7 @@ field = pvs.MesolightVirtualLightField(Input=box, Directions=513, RaysPerSide=32
 sphere = pvs.Sphere(Center=[0.0, 0.0, 0.0], Radius=RADIUS, ThetaResolution=32, PhiResolution=16)
 moved = pvs.Transform(Input=sphere)
 moved.Transform.Translate = CENTRE
-gather = pvs.LightFieldGather(Input=moved, LightField=field)
+gather = pvs.MesolightLightFieldGather(Input=moved, LightField=field)
 
 view = pvs.CreateView("RenderView")
 view.ViewSize = [SIZE, SIZE]
