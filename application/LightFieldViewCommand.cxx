@@ -94,7 +94,7 @@ bool ConfigureView(const CommandLine& cl, vtkLightFieldActor* actor, vtkRenderer
   double exposure = 1.0, angle = 39.3077;
   int depth = 8;
   if (!cl.GetDouble("--exposure", 0.0, 1e9, exposure, error) ||
-    !cl.GetDouble("--view-angle", 1.0, 179.0, angle, error) ||
+    !ReadViewAngle(cl, angle, error) ||
     !cl.GetInt("--reflection-depth", 1, 64, depth, error))
   {
     std::cerr << command << ": " << error << "\n";
