@@ -7,9 +7,12 @@
 # Reports, over the pixels Cycles sees lit (luminance above 1e-3 of the image's mean):
 # - the per-pixel relative error of luminance |ours - cycles| / cycles, each the mean of its two
 #   renders: mean and 95th percentile;
-# - each renderer's relative noise: the RMS over pixels of (X1 - X2) / 2 / cycles, the standard
-#   deviation of the two-render mean (independent seeds), and the error expected from noise
+# - each renderer's relative noise: the RMS over pixels of (X1 - X2) / 2 / m, the standard
+#   deviation of the two-render mean (independent seeds), m the mean of all four renders (not
+#   one renderer's own mean, which is small exactly where its own samples came out small), and the error expected from noise
 #   alone, sqrt(2 / pi) * sqrt(s_ours^2 + s_cycles^2) (mean |difference| of two Gaussians);
+# - the same relative error over 4 x 4 pixel blocks (their mean luminance; blocks all lit), where
+#   noise is 4 times smaller and a bias (a wrong emitter unit, camera or material) stays;
 # - the time each would take to reach 1% relative noise, noise ~ 1 / sqrt(time).
 # Appends one row to CSV (a header first when the file is new).
 import os
@@ -41,10 +44,19 @@ cycles = 0.5 * (c1 + c2)
 ours = 0.5 * (o1 + o2)
 lit = cycles > 1e-3 * cycles.mean()
 relative = np.abs(ours[lit] - cycles[lit]) / cycles[lit]
-noise_cycles = np.sqrt(np.mean((0.5 * (c1[lit] - c2[lit]) / cycles[lit]) ** 2))
-noise_ours = np.sqrt(np.mean((0.5 * (o1[lit] - o2[lit]) / cycles[lit]) ** 2))
+both = 0.5 * (cycles + ours)
+noise_cycles = np.sqrt(np.mean((0.5 * (c1[lit] - c2[lit]) / both[lit]) ** 2))
+noise_ours = np.sqrt(np.mean((0.5 * (o1[lit] - o2[lit]) / both[lit]) ** 2))
 expected = np.sqrt(2.0 / np.pi) * np.sqrt(noise_cycles ** 2 + noise_ours ** 2)
 bias = ours[lit].sum() / cycles[lit].sum() - 1.0
+def blocks(image, size=4):
+    h, w = (image.shape[0] // size) * size, (image.shape[1] // size) * size
+    return image[:h, :w].reshape(h // size, size, w // size, size).mean(axis=(1, 3))
+
+
+block_lit = blocks(lit.astype(np.float64)) == 1.0
+cycles_blocks, ours_blocks = blocks(cycles)[block_lit], blocks(ours)[block_lit]
+block_relative = np.abs(ours_blocks - cycles_blocks) / cycles_blocks
 target = 0.01
 t_cycles = cycles_seconds * (noise_cycles / target) ** 2
 t_ours = ours_seconds * (noise_ours / target) ** 2
@@ -55,6 +67,8 @@ row = {
     "mean_rel_error": "%.4f" % relative.mean(),
     "p95_rel_error": "%.4f" % np.percentile(relative, 95),
     "expected_from_noise": "%.4f" % expected,
+    "block4_mean_rel_error": "%.4f" % block_relative.mean(),
+    "block4_p95_rel_error": "%.4f" % np.percentile(block_relative, 95),
     "overall_bias": "%.4f" % bias,
     "cycles_seconds": "%.1f" % cycles_seconds,
     "cycles_noise": "%.4f" % noise_cycles,

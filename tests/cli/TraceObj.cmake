@@ -9,6 +9,7 @@
 #   --camera), so the up vector and the row order are both checked.
 # - Bad input: a missing file, a malformed camera, a NaN or out-of-range field of view, a camera
 #   without a frame, a scene without emitter, a view up given twice, the EXR over the scene file.
+# PART (furnace, camera or bad_input) picks one, so that each is its own cli.trace.* test.
 include("${CMAKE_CURRENT_LIST_DIR}/RunTool.cmake")
 cli_fresh_work()
 
@@ -21,9 +22,18 @@ f 1 5 6 2\nf 4 3 7 8\nf 1 2 3 4\nf 5 8 7 6\nf 1 4 8 5\nf 2 6 7 3
 ")
 set(_inside --camera 0.5,0.5,0.1,0.5,0.5,0.9 --fov 90 --width 24 --height 24 --samples 16)
 
-# The mean of the first channel of an EXR in thousandths (CMake's arithmetic is integer).
+# The mean of the first channel of an EXR in thousandths (CMake's arithmetic is integer); an
+# optional third argument cuts a window first (oiiotool geometry WxH+X+Y, rows from the top).
 function (exr_mean_milli image out)
-  execute_process(COMMAND "${OIIOTOOL}" ${ARGN} --stats "${image}"
+  if (ARGC GREATER 2)
+    execute_process(COMMAND "${OIIOTOOL}" "${image}" --cut "${ARGV2}" -o "${WORK}/cut.exr"
+      RESULT_VARIABLE rc ERROR_VARIABLE err)
+    if (NOT rc EQUAL 0)
+      message(FATAL_ERROR "oiiotool cannot cut ${image}: ${err}")
+    endif ()
+    set(image "${WORK}/cut.exr")
+  endif ()
+  execute_process(COMMAND "${OIIOTOOL}" --stats "${image}"
     RESULT_VARIABLE rc OUTPUT_VARIABLE stats ERROR_VARIABLE err)
   if (NOT rc EQUAL 0 OR NOT stats MATCHES "Stats Avg: +([0-9]+)\\.([0-9]+)")
     message(FATAL_ERROR "oiiotool cannot read ${image}: ${err}${stats}")
@@ -48,6 +58,7 @@ function (furnace_agrees image out)
   endif ()
 endfunction ()
 
+if (PART STREQUAL "furnace")
 cli_expect(0 "wrote ${WORK}/furnace.exr (linear radiance)" trace --scene "${WORK}/furnace.obj"
   ${_inside} --offscreen --out "${WORK}/furnace.png" --exr "${WORK}/furnace.exr")
 furnace_agrees("${WORK}/furnace.exr" _ok)
@@ -61,6 +72,9 @@ if (_ok)
   message(FATAL_ERROR "paths cut after one bounce pass the furnace check: it cannot fail")
 endif ()
 
+endif ()
+
+if (PART STREQUAL "camera")
 # An emitter facing the camera, above the view axis: the camera at z = 0 looks along +z.
 file(WRITE "${WORK}/above.mtl" "newmtl lamp\nKd 0 0 0\nKe 1 1 1\n")
 file(WRITE "${WORK}/above.obj" "mtllib above.mtl\nv -1 0.2 2\nv -1 1 2\nv 1 1 2\nv 1 0.2 2
@@ -70,8 +84,8 @@ foreach (_up IN ITEMS 1 -1)
     --fov 60 --width 16 --height 16 --samples 4 --offscreen --out "${WORK}/above${_up}.png"
     --exr "${WORK}/above${_up}.exr")
   # oiiotool's first rows are the image's top.
-  exr_mean_milli("${WORK}/above${_up}.exr" _top --cut 16x8+0+0)
-  exr_mean_milli("${WORK}/above${_up}.exr" _bottom --cut 16x8+0+8)
+  exr_mean_milli("${WORK}/above${_up}.exr" _top 16x8+0+0)
+  exr_mean_milli("${WORK}/above${_up}.exr" _bottom 16x8+0+8)
   message("view up ${_up}: top half ${_top}/1000, bottom half ${_bottom}/1000")
   if (_up EQUAL 1 AND NOT (_top GREATER 300 AND _bottom EQUAL 0))
     message(FATAL_ERROR "view up +y: the emitter above the axis is not in the top half")
@@ -80,6 +94,9 @@ foreach (_up IN ITEMS 1 -1)
   endif ()
 endforeach ()
 
+endif ()
+
+if (PART STREQUAL "bad_input")
 # Bad input: exit code and a message naming the problem, nothing written.
 set(_never --offscreen --out "${WORK}/never.png" --exr "${WORK}/never.exr")
 cli_expect_error(1 "cannot open" trace --scene "${WORK}/missing.obj" ${_never})
@@ -101,7 +118,7 @@ cli_expect_error(2 "give the view up once" trace --scene "${WORK}/furnace.obj"
   --camera 0,0,0,0,0,1,0,1,0 --view-up 0,1,0 ${_never})
 file(WRITE "${WORK}/dark.obj" "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n")
 cli_expect_error(1 "no emitter" trace --scene "${WORK}/dark.obj" ${_never})
-cli_expect_error(2 "--exr" trace --scene "${WORK}/furnace.obj" --offscreen
+cli_expect_error(2 "would overwrite" trace --scene "${WORK}/furnace.obj" --offscreen
   --out "${WORK}/never.png" --exr "${WORK}/furnace.obj")
 cli_expect_error(2 "--scene cornell only" trace --scene "${WORK}/furnace.obj"
   --compare-exr "${WORK}/furnace.exr" ${_never})
@@ -110,3 +127,4 @@ foreach (_file IN ITEMS never.png never.exr)
     message(FATAL_ERROR "bad input wrote ${_file}")
   endif ()
 endforeach ()
+endif ()
