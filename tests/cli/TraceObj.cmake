@@ -59,72 +59,70 @@ function (furnace_agrees image out)
 endfunction ()
 
 if (PART STREQUAL "furnace")
-cli_expect(0 "wrote ${WORK}/furnace.exr (linear radiance)" trace --scene "${WORK}/furnace.obj"
-  ${_inside} --offscreen --out "${WORK}/furnace.png" --exr "${WORK}/furnace.exr")
-furnace_agrees("${WORK}/furnace.exr" _ok)
-if (NOT _ok)
-  message(FATAL_ERROR "the furnace does not read Le / (1 - a) = 2")
-endif ()
-cli_expect(0 "wrote" trace --scene "${WORK}/furnace.obj" ${_inside} --bounces 1 --offscreen
-  --out "${WORK}/truncated.png" --exr "${WORK}/truncated.exr")
-furnace_agrees("${WORK}/truncated.exr" _ok)
-if (_ok)
-  message(FATAL_ERROR "paths cut after one bounce pass the furnace check: it cannot fail")
-endif ()
-
+  cli_expect(0 "wrote ${WORK}/furnace.exr (linear radiance)" trace --scene "${WORK}/furnace.obj"
+    ${_inside} --offscreen --out "${WORK}/furnace.png" --exr "${WORK}/furnace.exr")
+  furnace_agrees("${WORK}/furnace.exr" _ok)
+  if (NOT _ok)
+    message(FATAL_ERROR "the furnace does not read Le / (1 - a) = 2")
+  endif ()
+  cli_expect(0 "wrote" trace --scene "${WORK}/furnace.obj" ${_inside} --bounces 1 --offscreen
+    --out "${WORK}/truncated.png" --exr "${WORK}/truncated.exr")
+  furnace_agrees("${WORK}/truncated.exr" _ok)
+  if (_ok)
+    message(FATAL_ERROR "paths cut after one bounce pass the furnace check: it cannot fail")
+  endif ()
 endif ()
 
 if (PART STREQUAL "camera")
-# An emitter facing the camera, above the view axis: the camera at z = 0 looks along +z.
-file(WRITE "${WORK}/above.mtl" "newmtl lamp\nKd 0 0 0\nKe 1 1 1\n")
-file(WRITE "${WORK}/above.obj" "mtllib above.mtl\nv -1 0.2 2\nv -1 1 2\nv 1 1 2\nv 1 0.2 2
+  # An emitter facing the camera, above the view axis: the camera at z = 0 looks along +z.
+  file(WRITE "${WORK}/above.mtl" "newmtl lamp\nKd 0 0 0\nKe 1 1 1\n")
+  file(WRITE "${WORK}/above.obj" "mtllib above.mtl\nv -1 0.2 2\nv -1 1 2\nv 1 1 2\nv 1 0.2 2
 usemtl lamp\nf 1 2 3 4\n")
-foreach (_up IN ITEMS 1 -1)
-  cli_expect(0 "wrote" trace --scene "${WORK}/above.obj" --camera 0,0,0,0,0,1,0,${_up},0
-    --fov 60 --width 16 --height 16 --samples 4 --offscreen --out "${WORK}/above${_up}.png"
-    --exr "${WORK}/above${_up}.exr")
-  # oiiotool's first rows are the image's top.
-  exr_mean_milli("${WORK}/above${_up}.exr" _top 16x8+0+0)
-  exr_mean_milli("${WORK}/above${_up}.exr" _bottom 16x8+0+8)
-  message("view up ${_up}: top half ${_top}/1000, bottom half ${_bottom}/1000")
-  if (_up EQUAL 1 AND NOT (_top GREATER 300 AND _bottom EQUAL 0))
-    message(FATAL_ERROR "view up +y: the emitter above the axis is not in the top half")
-  elseif (_up EQUAL -1 AND NOT (_bottom GREATER 300 AND _top EQUAL 0))
-    message(FATAL_ERROR "view up -y: the emitter above the axis is not in the bottom half")
-  endif ()
-endforeach ()
-
+  foreach (_up IN ITEMS 1 -1)
+    cli_expect(0 "wrote" trace --scene "${WORK}/above.obj" --camera 0,0,0,0,0,1,0,${_up},0
+      --fov 60 --width 16 --height 16 --samples 4 --offscreen --out "${WORK}/above${_up}.png"
+      --exr "${WORK}/above${_up}.exr")
+    # oiiotool's first rows are the image's top.
+    exr_mean_milli("${WORK}/above${_up}.exr" _top 16x8+0+0)
+    exr_mean_milli("${WORK}/above${_up}.exr" _bottom 16x8+0+8)
+    message("view up ${_up}: top half ${_top}/1000, bottom half ${_bottom}/1000")
+    if (_up EQUAL 1 AND NOT (_top GREATER 300 AND _bottom EQUAL 0))
+      message(FATAL_ERROR "view up +y: the emitter above the axis is not in the top half")
+    elseif (_up EQUAL -1 AND NOT (_bottom GREATER 300 AND _top EQUAL 0))
+      message(FATAL_ERROR "view up -y: the emitter above the axis is not in the bottom half")
+    endif ()
+  endforeach ()
 endif ()
 
 if (PART STREQUAL "bad_input")
-# Bad input: exit code and a message naming the problem, nothing written.
-set(_never --offscreen --out "${WORK}/never.png" --exr "${WORK}/never.exr")
-cli_expect_error(1 "cannot open" trace --scene "${WORK}/missing.obj" ${_never})
-cli_expect_error(2 "--camera needs X,Y,Z,FX,FY,FZ" trace --scene "${WORK}/furnace.obj"
-  --camera 1,2,3 ${_never})
-cli_expect_error(2 "--camera needs" trace --scene "${WORK}/furnace.obj"
-  --camera 0,0,0,a,b,c ${_never})
-cli_expect_error(2 "--camera needs" trace --scene "${WORK}/furnace.obj"
-  --camera 0,0,0,0,0,nan ${_never})
-cli_expect_error(2 "--fov: 'nan' is not a number" trace --scene "${WORK}/furnace.obj"
-  --fov nan ${_never})
-cli_expect_error(2 "--fov: 180 is outside [1, 179]" trace --scene "${WORK}/furnace.obj"
-  --fov 180 ${_never})
-cli_expect_error(2 "distinct position and focal point" trace --scene "${WORK}/furnace.obj"
-  --camera 1,1,1,1,1,1 ${_never})
-cli_expect_error(2 "not parallel to the view direction" trace --scene "${WORK}/furnace.obj"
-  --camera 0,0,0,0,1,0 ${_never})
-cli_expect_error(2 "give the view up once" trace --scene "${WORK}/furnace.obj"
-  --camera 0,0,0,0,0,1,0,1,0 --view-up 0,1,0 ${_never})
-file(WRITE "${WORK}/dark.obj" "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n")
-cli_expect_error(1 "no emitter" trace --scene "${WORK}/dark.obj" ${_never})
-cli_expect_error(2 "would overwrite" trace --scene "${WORK}/furnace.obj" --offscreen
-  --out "${WORK}/never.png" --exr "${WORK}/furnace.obj")
-cli_expect_error(2 "--scene cornell only" trace --scene "${WORK}/furnace.obj"
-  --compare-exr "${WORK}/furnace.exr" ${_never})
-foreach (_file IN ITEMS never.png never.exr)
-  if (EXISTS "${WORK}/${_file}")
-    message(FATAL_ERROR "bad input wrote ${_file}")
-  endif ()
-endforeach ()
+  # Bad input: exit code and a message naming the problem, nothing written.
+  set(_never --offscreen --out "${WORK}/never.png" --exr "${WORK}/never.exr")
+  cli_expect_error(1 "cannot open" trace --scene "${WORK}/missing.obj" ${_never})
+  cli_expect_error(2 "--camera needs X,Y,Z,FX,FY,FZ" trace --scene "${WORK}/furnace.obj"
+    --camera 1,2,3 ${_never})
+  cli_expect_error(2 "--camera needs" trace --scene "${WORK}/furnace.obj"
+    --camera 0,0,0,a,b,c ${_never})
+  cli_expect_error(2 "--camera needs" trace --scene "${WORK}/furnace.obj"
+    --camera 0,0,0,0,0,nan ${_never})
+  cli_expect_error(2 "--fov: 'nan' is not a number" trace --scene "${WORK}/furnace.obj"
+    --fov nan ${_never})
+  cli_expect_error(2 "--fov: 180 is outside [1, 179]" trace --scene "${WORK}/furnace.obj"
+    --fov 180 ${_never})
+  cli_expect_error(2 "distinct position and focal point" trace --scene "${WORK}/furnace.obj"
+    --camera 1,1,1,1,1,1 ${_never})
+  cli_expect_error(2 "not parallel to the view direction" trace --scene "${WORK}/furnace.obj"
+    --camera 0,0,0,0,1,0 ${_never})
+  cli_expect_error(2 "give the view up once" trace --scene "${WORK}/furnace.obj"
+    --camera 0,0,0,0,0,1,0,1,0 --view-up 0,1,0 ${_never})
+  file(WRITE "${WORK}/dark.obj" "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n")
+  cli_expect_error(1 "no emitter" trace --scene "${WORK}/dark.obj" ${_never})
+  cli_expect_error(2 "would overwrite" trace --scene "${WORK}/furnace.obj" --offscreen
+    --out "${WORK}/never.png" --exr "${WORK}/furnace.obj")
+  cli_expect_error(2 "--scene cornell only" trace --scene "${WORK}/furnace.obj"
+    --compare-exr "${WORK}/furnace.exr" ${_never})
+  foreach (_file IN ITEMS never.png never.exr)
+    if (EXISTS "${WORK}/${_file}")
+      message(FATAL_ERROR "bad input wrote ${_file}")
+    endif ()
+  endforeach ()
 endif ()
