@@ -298,6 +298,16 @@ int RunTraceCommand(const std::vector<std::string>& args)
     }
     return TraceObjScene(cl, width, height, threads);
   }
+  // The walkthrough camera and the path length belong to OBJ scenes; the built-in scenes have
+  // their own cameras (the Cornell box's is the published one its comparisons assume).
+  for (const char* objOnly : { "--camera", "--view-up", "--fov", "--view-angle", "--bounces" })
+  {
+    if (cl.Has(objOnly))
+    {
+      return cl.UsageError(std::string(objOnly) + " applies to --scene FILE.obj only; the '" +
+        sceneName + "' scene has its own camera");
+    }
+  }
   if (sceneName == "cornell")
   {
     return TraceCornell(cl, width, height, threads, interactive);

@@ -120,6 +120,10 @@ if (PART STREQUAL "bad_input")
     --out "${WORK}/never.png" --exr "${WORK}/furnace.obj")
   cli_expect_error(2 "--scene cornell only" trace --scene "${WORK}/furnace.obj"
     --compare-exr "${WORK}/furnace.exr" ${_never})
+  cli_expect_error(2 "--camera applies to --scene FILE.obj only" trace --scene cornell
+    --camera 0,0,0,0,0,1 ${_never})
+  cli_expect_error(2 "--fov applies to --scene FILE.obj only" trace --scene spheres --fov 30
+    ${_never})
   foreach (_file IN ITEMS never.png never.exr)
     if (EXISTS "${WORK}/${_file}")
       message(FATAL_ERROR "bad input wrote ${_file}")
