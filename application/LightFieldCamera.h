@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// The camera options every light-field command shares (`vlf render` on the CPU and through
-// vtkLightFieldActor, `vlf view`): --camera X,Y,Z,FX,FY,FZ and --view-up X,Y,Z in world
-// coordinates, and the default view when --camera is not given.
+// The camera options every walkthrough command shares (`vlf render` on the CPU and through
+// vtkLightFieldActor, `vlf view`, and the path tracer's `trace --scene FILE.obj`):
+// --camera X,Y,Z,FX,FY,FZ[,UX,UY,UZ] and --view-up X,Y,Z in world coordinates, --fov (or
+// --view-angle) the vertical field of view in degrees, and the default view when --camera is not
+// given. One parser, so that a camera string gives the same view in every renderer.
 #ifndef mesolight_LightFieldCamera_h
 #define mesolight_LightFieldCamera_h
 
@@ -19,16 +21,26 @@ namespace vlf
 class LightField;
 }
 
-/** Declares --camera, --view-up and --view-angle. */
+/** Declares --camera, --view-up, --fov and --view-angle. */
 void AddLightFieldCameraOptions(CommandLine& cl);
 
 /**
- * Reads --camera and --view-up for a field. Without --camera: the published Cornell box camera
- * when the field's scene is the Cornell box, else a view of the whole scene along +z. False with
- * a message in error when a value is malformed.
+ * Reads --camera and --view-up for a scene of the given world bounds. Without --camera: the
+ * published Cornell box camera when the bounds are the Cornell box's, else a view of the whole
+ * scene along +z. Values seven to nine of --camera is the view up (then --view-up must not
+ * be given too). False with a message in error when a value is malformed, the position equals
+ * the focal point, or the view up is parallel to the view direction.
  */
+bool ReadCameraOptions(const CommandLine& cl, const glm::vec3& worldLower,
+  const glm::vec3& worldUpper, glm::vec3& eye, glm::vec3& focal, double up[3], std::string& error);
+
+/** ReadCameraOptions for a light field's scene. */
 bool ReadLightFieldCamera(const CommandLine& cl, const vlf::LightField& field, glm::vec3& eye,
   glm::vec3& focal, double up[3], std::string& error);
+
+/** The vertical field of view in degrees from --fov or --view-angle (default 39.3077, the
+ * Cornell camera's); both given and different is an error, as is a value outside [1, 179]. */
+bool ReadViewAngle(const CommandLine& cl, double& degrees, std::string& error);
 
 /** Puts the published Cornell box camera (CornellCamera: position, focal point, view up and
  * angle) on a VTK camera, as the benchmarks view the built-in boxes. */

@@ -2,12 +2,14 @@
 #include "LightFieldViewCommand.h"
 
 #include "ChartPlot.h"
+#include "CornellRegions.h" // WriteLinearImage
 #include "CommandLine.h"
 #include "LightFieldCamera.h"
 #include "LightFieldObjectOptions.h"
 #include "ObjectDragStyle.h"
 #include "OutputFile.h"
 #include "Timing.h"
+#include "WalkthroughExr.h"
 
 #include "vtkLightFieldActor.h"
 #include "vtkLightFieldActorCore.h"
@@ -94,7 +96,7 @@ bool ConfigureView(const CommandLine& cl, vtkLightFieldActor* actor, vtkRenderer
   double exposure = 1.0, angle = 39.3077;
   int depth = 8;
   if (!cl.GetDouble("--exposure", 0.0, 1e9, exposure, error) ||
-    !cl.GetDouble("--view-angle", 1.0, 179.0, angle, error) ||
+    !ReadViewAngle(cl, angle, error) ||
     !cl.GetInt("--reflection-depth", 1, 64, depth, error))
   {
     std::cerr << command << ": " << error << "\n";
@@ -197,6 +199,9 @@ int Render(const std::vector<std::string>& args)
   cl.AddFlag("--moving",
     "progressive: write the frame shown while the camera moves (field lookups "
     "on mirrors), not the converged one");
+  cl.AddValue("--exr", "FILE.exr",
+    "also write the frame's linear radiance (recovered by exposure bracketing: independent of "
+    "--exposure and --tone-map)");
   cl.AddFlag("--force", "replace an existing IMAGE.png");
   AddObjectOptions(cl);
   int exitCode = 0;
@@ -220,6 +225,17 @@ int Render(const std::vector<std::string>& args)
   {
     std::cerr << command << ": --out: " << problem << "\n";
     return 2;
+  }
+  if (cl.Has("--exr"))
+  {
+    std::vector<std::string> others = inputs;
+    others.push_back(out);
+    const std::string exrProblem = CheckOutputFile(cl.Get("--exr"), others);
+    if (!exrProblem.empty())
+    {
+      std::cerr << command << ": --exr: " << exrProblem << "\n";
+      return 2;
+    }
   }
   if (vlf::FileExists(out) && !cl.Has("--force"))
   {
@@ -265,6 +281,22 @@ int Render(const std::vector<std::string>& args)
   std::cout << "wrote " << out << " (" << window->GetSize()[0] << "x" << window->GetSize()[1]
             << ", mode " << cl.Get("--mode") << ", " << seconds << " s, "
             << actor->GetLastScreenPixels() << " pixels from the CPU pass)\n";
+  if (cl.Has("--exr"))
+  {
+    RgbImage radiance;
+    std::string error;
+    if (!CaptureWalkthroughRadiance(actor, window, radiance, error) ||
+      !WriteLinearImage(radiance, cl.Get("--exr"), error))
+    {
+      std::cerr << command << ": " << error << "\n";
+      return 1;
+    }
+    std::cout << "wrote " << cl.Get("--exr")
+              << (actor->GetRenderMode() == vtkLightFieldActor::Geometry
+                     ? " (linear colour: the geometry mode draws materials under VTK lights, not "
+                       "radiance)\n"
+                     : " (linear radiance)\n");
+  }
   if (object.Active)
   {
     PrintObjectNote(actor, object);

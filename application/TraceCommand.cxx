@@ -7,6 +7,7 @@
 #include "OutputFile.h"
 #include "ReliefScene.h" // HasDisplay
 #include "Timing.h"
+#include "TraceObjScene.h"
 #include "TraceScenes.h"
 
 #include "EmbreeScene.h"
@@ -203,15 +204,17 @@ int RunTraceCommand(const std::vector<std::string>& args)
   CommandLine cl("mesolight trace",
     "mesolight trace [options]\n\nRay traces a built-in scene on the CPU with Embree "
     "(Ahern 1999: texture-mapped\nmaterial channels, glossy reflection, adaptive supersampling, "
-    "progressive\nrefinement), or path traces the Cornell box.\n");
+    "progressive\nrefinement), or path traces the Cornell box or any OBJ + MTL scene (Kd, Ks, "
+    "emitters from Ke)\nfrom a walkthrough camera (the same --camera and --fov as `vlf render`) "
+    "to linear EXR.\n");
   cl.AddValue("--scene", "NAME",
     "spheres (textured spheres on a checker), ring (bump + roughness maps), "
-    "cornell (path-traced reference)",
+    "cornell (path-traced reference), or FILE.obj (path traced, with its .mtl)",
     "spheres");
   cl.AddValue("--width", "N", "image width in pixels", "640");
   cl.AddValue("--height", "N", "image height in pixels", "480");
-  cl.AddValue("--samples", "N", "cornell: paths per pixel", "64");
-  cl.AddValue("--seed", "N", "cornell: random seed of the paths", "1");
+  cl.AddValue("--samples", "N", "cornell, FILE.obj: paths per pixel", "64");
+  cl.AddValue("--seed", "N", "cornell, FILE.obj: random seed of the paths", "1");
   cl.AddFlag(
     "--adaptive", "adaptive supersampling: 3x3 rays where a pixel differs from a neighbour");
   cl.AddValue(
@@ -223,7 +226,8 @@ int RunTraceCommand(const std::vector<std::string>& args)
   cl.AddValue("--max-depth", "N", "reflection recursion limit", "5");
   cl.AddValue("--threads", "N", "worker threads (0: all cores)", "0");
   cl.AddValue("--out", "FILE.png", "where to write the image", "mesolight-trace.png");
-  cl.AddValue("--exr", "FILE.exr", "cornell: also write the linear radiance");
+  cl.AddValue("--exr", "FILE.exr", "cornell, FILE.obj: also write the linear radiance");
+  AddTraceObjOptions(cl);
   cl.AddValue("--export-obj", "FILE.obj", "cornell: write the box as OBJ + MTL and stop");
   cl.AddValue("--compare-exr", "FILE.exr",
     "cornell: compare mean radiance per wall with another renderer's "
@@ -269,10 +273,15 @@ int RunTraceCommand(const std::vector<std::string>& args)
   }
   else
   {
-    problem = CheckOutputFile(cl.Get("--out"), { compare, cl.Get("--exr") });
+    // An OBJ scene and its material file are inputs the outputs must not replace.
+    const std::string sceneFile = IsObjSceneName(cl.Get("--scene")) ? cl.Get("--scene") : "";
+    const std::string materialFile = sceneFile.empty() ? "" : MaterialFileOf(sceneFile);
+    problem =
+      CheckOutputFile(cl.Get("--out"), { compare, cl.Get("--exr"), sceneFile, materialFile });
     if (problem.empty() && cl.Has("--exr"))
     {
-      problem = CheckOutputFile(cl.Get("--exr"), { compare, cl.Get("--out") });
+      problem =
+        CheckOutputFile(cl.Get("--exr"), { compare, cl.Get("--out"), sceneFile, materialFile });
     }
   }
   if (!problem.empty())
@@ -281,6 +290,24 @@ int RunTraceCommand(const std::vector<std::string>& args)
   }
   const std::string sceneName = cl.Get("--scene");
   const bool interactive = !cl.Has("--offscreen") && HasDisplay();
+  if (IsObjSceneName(sceneName))
+  {
+    if (cl.Has("--export-obj") || cl.Has("--compare-exr"))
+    {
+      return cl.UsageError("--export-obj and --compare-exr are for --scene cornell only");
+    }
+    return TraceObjScene(cl, width, height, threads);
+  }
+  // The walkthrough camera and the path length belong to OBJ scenes; the built-in scenes have
+  // their own cameras (the Cornell box's is the published one its comparisons assume).
+  for (const char* objOnly : { "--camera", "--view-up", "--fov", "--view-angle", "--bounces" })
+  {
+    if (cl.Has(objOnly))
+    {
+      return cl.UsageError(std::string(objOnly) + " applies to --scene FILE.obj only; the '" +
+        sceneName + "' scene has its own camera");
+    }
+  }
   if (sceneName == "cornell")
   {
     return TraceCornell(cl, width, height, threads, interactive);
@@ -297,7 +324,8 @@ int RunTraceCommand(const std::vector<std::string>& args)
   }
   else
   {
-    std::cerr << "mesolight trace: unknown scene '" << sceneName << "' (spheres, ring, cornell)\n";
+    std::cerr << "mesolight trace: unknown scene '" << sceneName
+              << "' (spheres, ring, cornell, or an OBJ file FILE.obj)\n";
     return 2;
   }
   tracer->SetRenderer(scene);

@@ -342,7 +342,7 @@ int Render(const std::vector<std::string>& args)
     return cl.UsageError(error);
   }
   double viewAngle = 0.0, exposure = 0.0, tolerance = 0.1;
-  if (!cl.GetDouble("--view-angle", 1.0, 179.0, viewAngle, error) ||
+  if (!ReadViewAngle(cl, viewAngle, error) ||
     !cl.GetDouble("--exposure", 0.0, 1e9, exposure, error) ||
     !cl.GetDouble("--tolerance", 0.0, 10.0, tolerance, error))
   {

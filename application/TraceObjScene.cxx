@@ -1,0 +1,153 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "TraceObjScene.h"
+
+#include "CommandLine.h"
+#include "CornellRegions.h" // WriteLinearImage
+#include "DisplayTransform.h"
+#include "LightFieldCamera.h"
+#include "OutputFile.h"
+#include "Timing.h"
+
+#include "EmbreeScene.h"
+#include "ObjScene.h"
+#include "PathTracer.h"
+#include "PinholeCamera.h"
+
+#include <vtkImageData.h>
+#include <vtkNew.h>
+#include <vtkPNGWriter.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <iomanip>
+#include <iostream>
+
+namespace mesolight
+{
+
+bool IsObjSceneName(const std::string& scene)
+{
+  if (scene.size() < 4)
+  {
+    return false;
+  }
+  std::string tail = scene.substr(scene.size() - 4);
+  std::transform(tail.begin(), tail.end(), tail.begin(),
+    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return tail == ".obj";
+}
+
+void AddTraceObjOptions(CommandLine& cl)
+{
+  AddLightFieldCameraOptions(cl);
+  cl.AddValue("--bounces", "N",
+    "FILE.obj: most bounces of a path (Russian roulette ends most paths long before)", "1000");
+}
+
+int TraceObjScene(const CommandLine& cl, int width, int height, int threads)
+{
+  const char* command = "mesolight trace";
+  std::string error;
+  int samples = 64, seed = 1, bounces = 1000;
+  double fov = 39.3077;
+  if (!cl.GetInt("--samples", 1, 1 << 20, samples, error) ||
+    !cl.GetInt("--seed", 0, 1 << 30, seed, error) ||
+    !cl.GetInt("--bounces", 1, 100000, bounces, error) || !ReadViewAngle(cl, fov, error))
+  {
+    return cl.UsageError(error);
+  }
+  const std::string path = cl.Get("--scene");
+  ObjSceneRead read;
+  try
+  {
+    ObjReadOptions options;
+    options.RequireEmitter = true; // without an emitter every pixel is black
+    read = ReadObjScene(path, options);
+  }
+  catch (const std::exception& e)
+  {
+    std::cerr << command << ": " << e.what() << "\n";
+    return 1;
+  }
+  for (const std::string& warning : read.Warnings)
+  {
+    std::cerr << command << ": warning: " << warning << "\n";
+  }
+  glm::vec3 lower, upper, eye, focal;
+  double up[3] = { 0.0, 1.0, 0.0 };
+  if (!SceneBounds(read.Scene, lower, upper))
+  {
+    std::cerr << command << ": " << path << " has no triangles\n";
+    return 1;
+  }
+  if (!ReadCameraOptions(cl, lower, upper, eye, focal, up, error))
+  {
+    return cl.UsageError(error);
+  }
+  PinholeCamera camera;
+  camera.Position = eye;
+  camera.FocalPoint = focal;
+  camera.ViewUp = glm::vec3(up[0], up[1], up[2]);
+  camera.ViewAngleDegrees = static_cast<float>(fov);
+  try
+  {
+    const EmbreeScene embree(read.Scene);
+    PathTracerSettings settings;
+    settings.Threads = threads;
+    settings.MaxDepth = bounces;
+    const PathTracer tracer(embree, settings);
+    const auto start = std::chrono::steady_clock::now();
+    const RgbImage image =
+      tracer.RenderImage(camera, width, height, samples, static_cast<std::uint64_t>(seed));
+    const double seconds = SecondsSince(start);
+    if (image.Width == 0)
+    {
+      std::cerr << command << ": path tracing failed\n";
+      return 1;
+    }
+    std::cout << path << ": " << read.Scene.TriangleCount() << " triangles, "
+              << tracer.EmitterCount() << " emitter triangles; " << width << "x" << height << ", "
+              << samples << " paths per pixel in " << std::fixed << std::setprecision(2)
+              << seconds << " s (" << std::setprecision(3)
+              << static_cast<double>(width) * height * samples / seconds / 1e6 << " M paths/s)\n";
+    // The PNG: exposure 1, clamp, sRGB (the light field's default display).
+    vtkNew<vtkImageData> bytes;
+    bytes->SetDimensions(width, height, 1);
+    bytes->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+    auto* out = static_cast<unsigned char*>(bytes->GetScalarPointer());
+    for (std::size_t v = 0; v < image.Rgb.size(); ++v)
+    {
+      const float linear =
+        std::min(1.0f, std::max(0.0f, std::isfinite(image.Rgb[v]) ? image.Rgb[v] : 0.0f));
+      out[v] = static_cast<unsigned char>(ToSRGB(linear) * 255.0f + 0.5f);
+    }
+    vtkNew<vtkPNGWriter> writer;
+    writer->SetInputData(bytes);
+    writer->SetFileName(cl.Get("--out").c_str());
+    writer->Write();
+    if (writer->GetErrorCode() != 0)
+    {
+      std::cerr << command << ": cannot write " << cl.Get("--out") << "\n";
+      return 1;
+    }
+    std::cout << "wrote " << cl.Get("--out") << "\n";
+    if (cl.Has("--exr"))
+    {
+      if (!WriteLinearImage(image, cl.Get("--exr"), error))
+      {
+        std::cerr << command << ": " << error << "\n";
+        return 1;
+      }
+      std::cout << "wrote " << cl.Get("--exr") << " (linear radiance)\n";
+    }
+  }
+  catch (const std::exception& e)
+  {
+    std::cerr << command << ": " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}
+
+} // namespace mesolight
