@@ -63,6 +63,7 @@ Frame RenderTopDown(vtkImageData* relief, vtkImageData* lights, double exposure)
     mapper->SetLightSetData(lights);
   }
   mapper->GetReliefProperty()->SetExposure(exposure);
+  mapper->GetReliefProperty()->ToneMappingOff(); // linear shading, compared with radiance
   vtkNew<vtkRenderer> renderer;
   renderer->AutomaticLightCreationOff(); // the light set only
   renderer->AddActor(actor);
