@@ -14,7 +14,7 @@
  *  2. Start with the whole map as one region; repeatedly take the region with the most
  *     energy (plain) or the largest energy-weighted angular variance (VarianceMinimization)
  *     from a priority queue and cut it in two, until there are NumberOfLights regions (any
- *     count >= 1, not only powers of two). Regions of one pixel are never cut.
+ *     count >= 1, not only powers of two). Regions of one pixel (cell) are never cut.
  *  3. Plain cuts: along the region's longer side measured in angle (the width is scaled by
  *     sin(theta) = cos(latitude) at the region's centre), at the column/row that splits the
  *     energy most evenly (binary search on the SAT).
