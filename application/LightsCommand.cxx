@@ -29,6 +29,7 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <map>
 #include <sstream>
 
 namespace mesolight
@@ -160,7 +161,9 @@ int RunLightsCommand(const std::vector<std::string>& args)
     "+X, u = 0.25 toward +Y); r,g,b = irradiance at normal incidence.\n");
   cl.AddValue("--out", "FILE.csv", "where to write the lights (header u,v,x,y,z,r,g,b)");
   cl.AddValue("--count", "N", "number of lights (any N >= 1)", "64");
-  cl.AddFlag("--variance", "variance-minimizing cuts (Viriyothai & Debevec 2009)");
+  cl.AddFlag("--variance",
+    "variance-minimizing cuts (Viriyothai & Debevec 2009), the default: kept for scripts");
+  cl.AddFlag("--plain", "even-energy cuts of the most energetic region (Debevec 2005) instead");
   cl.AddValue("--resolution", "H", "height of procedural maps (width 2H)", "512");
   cl.AddValue("--memory-budget", "GIB", "refuse maps needing more memory (0: all there is)", "0");
   std::string error;
@@ -172,8 +175,12 @@ int RunLightsCommand(const std::vector<std::string>& args)
   if (cl.Positional().size() != 1 || !cl.Has("--out"))
   {
     std::cerr << "mesolight lights: usage: mesolight lights ENV_IMAGE --out lights.csv "
-                 "[--count N] [--variance]\n";
+                 "[--count N] [--plain]\n";
     return 2;
+  }
+  if (cl.Has("--plain") && cl.Has("--variance"))
+  {
+    return cl.UsageError("--plain and --variance exclude each other");
   }
   int count = 64;
   int height = 512;
@@ -199,7 +206,7 @@ int RunLightsCommand(const std::vector<std::string>& args)
   vtkNew<vtkMedianCutLights> lights;
   lights->SetInputConnection(source->GetOutputPort());
   lights->SetNumberOfLights(count);
-  lights->SetVarianceMinimization(cl.Has("--variance"));
+  lights->SetVarianceMinimization(!cl.Has("--plain"));
   lights->SetMemoryBudget(static_cast<vtkTypeInt64>(budget * 1073741824.0));
   // Errors from any stage are reported by VTK on stderr; the exit code tells the caller.
   lights->Update();
@@ -224,7 +231,7 @@ int RunLightsCommand(const std::vector<std::string>& args)
     }
   }
   std::cout << "wrote " << file << " (" << count << " lights"
-            << (cl.Has("--variance") ? ", variance-minimizing" : "")
+            << (cl.Has("--plain") ? ", even-energy cuts" : ", variance-minimizing")
             << "; total sum L dOmega = " << total[0] << ", " << total[1] << ", " << total[2]
             << ")\n";
   return 0;
@@ -239,8 +246,8 @@ int RunLightsBenchmark(const std::vector<std::string>& args)
     "variance-minimizing) and from 9 spherical\nharmonics (Ramamoorthi & Hanrahan "
     "2001), against exact numerical integration\nover the map, for the procedural "
     "SmoothSky and SunSky (2-degree sun + window)\nmaps and Blender's CC0 studio-light "
-    "HDRIs when installed (package blender-data);\nthen the median cut time for "
-    "4096x2048 -> 1024 lights.\n");
+    "HDRIs when installed (package blender-data);\nthe same maps at 4096x2048 at the "
+    "default count, the worst real map per cut,\nthen the median cut times for 4096x2048.\n");
   cl.AddValue("--counts", "N,N,..", "light counts", "16,32,64,128,256,512,1024");
   cl.AddValue("--normals", "N", "Fibonacci-sphere normals for the irradiance error", "2000");
   cl.AddValue("--resolution", "H", "height of the procedural maps (width 2H)", "512");
@@ -248,6 +255,9 @@ int RunLightsBenchmark(const std::vector<std::string>& args)
   cl.AddValue("--blender-dir", "DIR", "directory of lat-long EXR studio lights",
     "/usr/share/blender/datafiles/studiolights/world");
   cl.AddValue("--timing-repeats", "N", "median cut runs on 4096x2048 (best is reported)", "5");
+  cl.AddValue("--timing-counts", "N,N,..", "light counts timed on 4096x2048", "64,1024");
+  cl.AddValue("--large-normals", "N",
+    "normals for the maps at 4096x2048 at the default count (0: skip them)", "200");
   std::string error;
   int exitCode = 0;
   if (!cl.ParseArguments(args, exitCode))
@@ -262,10 +272,14 @@ int RunLightsBenchmark(const std::vector<std::string>& args)
   int normalCount = 2000;
   int height = 512;
   int repeats = 5;
+  std::vector<int> timingCounts;
+  int largeNormalCount = 200;
   if (!cl.GetIntList("--counts", 1, 1000000, counts, error) ||
     !cl.GetInt("--normals", 10, 1000000, normalCount, error) ||
     !cl.GetInt("--resolution", 8, 8192, height, error) ||
-    !cl.GetInt("--timing-repeats", 0, 1000, repeats, error))
+    !cl.GetInt("--timing-repeats", 0, 1000, repeats, error) ||
+    !cl.GetIntList("--timing-counts", 1, 1000000, timingCounts, error) ||
+    !cl.GetInt("--large-normals", 0, 1000000, largeNormalCount, error))
   {
     return cl.UsageError(error);
   }
@@ -307,7 +321,6 @@ int RunLightsBenchmark(const std::vector<std::string>& args)
               << ": install blender-data for the 8 CC0 HDRIs; measuring procedural maps only)\n";
   }
 
-  const auto normals = FibonacciNormals(normalCount);
   std::ofstream csv;
   if (cl.Has("--csv"))
   {
@@ -319,16 +332,22 @@ int RunLightsBenchmark(const std::vector<std::string>& args)
     }
     csv << "map,width,height,method,lights,mean_rel_error,max_rel_error\n";
   }
-  std::cout << "Unoccluded diffuse irradiance (luminance), relative error vs exact integration "
-               "over "
-            << normalCount << " normals\n";
-  std::cout << std::left << std::setw(20) << "map" << std::setw(18) << "method" << std::right
-            << std::setw(7) << "lights" << std::setw(11) << "mean %" << std::setw(11) << "max %"
-            << "\n";
+  auto header = [](int normals)
+  {
+    std::cout << "Unoccluded diffuse irradiance (luminance), relative error vs exact integration "
+                 "over "
+              << normals << " normals\n";
+    std::cout << std::left << std::setw(22) << "map" << std::setw(18) << "method" << std::right
+              << std::setw(7) << "lights" << std::setw(11) << "mean %" << std::setw(11) << "max %"
+              << "\n";
+  };
+  // The worst mean error of each method at the default light count, over the real maps.
+  const MedianCutOptions defaults;
+  std::map<std::string, std::pair<std::string, double>> worst;
   auto report = [&](const std::string& map, const RgbImage& image, const std::string& method,
                   int lightCount, const ErrorStats& s)
   {
-    std::cout << std::left << std::setw(20) << map << std::setw(18) << method << std::right
+    std::cout << std::left << std::setw(22) << map << std::setw(18) << method << std::right
               << std::setw(7) << lightCount << std::fixed << std::setprecision(3) << std::setw(11)
               << 100.0 * s.Mean << std::setw(11) << 100.0 * s.Max << "\n"
               << std::defaultfloat;
@@ -337,9 +356,17 @@ int RunLightsBenchmark(const std::vector<std::string>& args)
       csv << map << ',' << image.Width << ',' << image.Height << ',' << method << ',' << lightCount
           << ',' << std::setprecision(6) << s.Mean << ',' << s.Max << '\n';
     }
+    if (lightCount == defaults.NumberOfLights && map.compare(0, 8, "blender/") == 0)
+    {
+      auto& w = worst[method];
+      if (s.Mean > w.second)
+      {
+        w = { map + " " + std::to_string(image.Width) + "x" + std::to_string(image.Height),
+          s.Mean };
+      }
+    }
   };
-
-  for (const auto& [name, map] : maps)
+  auto exactLuminance = [](const RgbImage& map, const std::vector<std::array<double, 3>>& normals)
   {
     const ExactIrradiance exact(map);
     std::vector<double> exactY(normals.size());
@@ -353,12 +380,16 @@ int RunLightsBenchmark(const std::vector<std::string>& args)
           exactY[k] = Luminance(irr[0], irr[1], irr[2]);
         }
       });
-    const SH9 sh = ProjectSH9(map);
-    report(name, map, "SH9", 9,
-      Compare(normals, exactY, [&](const double* n, double e[3]) { IrradianceSH9(sh, n, e); }));
+    return exactY;
+  };
+  // Both cuts of `map` at each count; false after a median cut error.
+  auto measure = [&](const std::string& name, const RgbImage& map,
+                   const std::vector<std::array<double, 3>>& normals,
+                   const std::vector<double>& exactY, const std::vector<int>& lightCounts)
+  {
     for (bool variance : { false, true })
     {
-      for (int n : counts)
+      for (int n : lightCounts)
       {
         if (static_cast<long long>(n) > static_cast<long long>(map.Width) * map.Height)
         {
@@ -375,39 +406,96 @@ int RunLightsBenchmark(const std::vector<std::string>& args)
         catch (const MedianCutError& e)
         {
           std::cerr << "mesolight bench lights: " << name << ": " << e.what() << "\n";
-          return 1;
+          return false;
         }
         report(name, map, variance ? "median-cut-var" : "median-cut", n,
           Compare(normals, exactY,
             [&](const double* m, double e[3]) { IrradianceFromLights(lights, m, e); }));
       }
     }
+    return true;
+  };
+
+  const auto normals = FibonacciNormals(normalCount);
+  header(normalCount);
+  for (const auto& [name, map] : maps)
+  {
+    const std::vector<double> exactY = exactLuminance(map, normals);
+    const SH9 sh = ProjectSH9(map);
+    report(name, map, "SH9", 9,
+      Compare(normals, exactY, [&](const double* n, double e[3]) { IrradianceSH9(sh, n, e); }));
+    if (!measure(name, map, normals, exactY, counts))
+    {
+      return 1;
+    }
   }
 
-  // Timing: 4096 x 2048 -> 1024 lights (the SunSky map).
+  // The same maps at 4096 x 2048 (the real ones resampled bilinearly), at the default count:
+  // the size the timing below uses, where the variance cut's moment tables are coarser than
+  // the map (MedianCut.h).
+  if (largeNormalCount > 0)
+  {
+    const auto largeNormals = FibonacciNormals(largeNormalCount);
+    std::cout << "\n4096x2048 maps, " << defaults.NumberOfLights << " lights (the default count)\n";
+    header(largeNormalCount);
+    for (const auto& [name, map] : maps)
+    {
+      const RgbImage large = name.compare(0, 8, "blender/") == 0
+        ? ResampleLatLong(map, 4096, 2048, 1)
+        : MakeSkyMap(4096, 2048, ProceduralParameters(name == "SunSky" ? "sun" : "sky"));
+      if (!measure(name, large, largeNormals, exactLuminance(large, largeNormals),
+            { defaults.NumberOfLights }))
+      {
+        return 1;
+      }
+    }
+  }
+
+  const std::string defaultMethod = defaults.VarianceMinimization ? "median-cut-var" : "median-cut";
+  std::cout << "\nWorst real map at " << defaults.NumberOfLights
+            << " lights (mean error; the default cut is " << defaultMethod << "):\n";
+  for (const auto& [method, w] : worst)
+  {
+    std::cout << "  " << std::left << std::setw(16) << method << std::right << w.first << ": "
+              << std::fixed << std::setprecision(3) << 100.0 * w.second << " %"
+              << (method == defaultMethod ? "  (default)" : "") << "\n"
+              << std::defaultfloat;
+  }
+
+  // Timing: 4096 x 2048 (the SunSky map) -> each timing count, both cuts and the default.
   if (repeats > 0)
   {
     const RgbImage big = MakeSkyMap(4096, 2048, ProceduralParameters("sun"));
-    for (bool variance : { false, true })
+    for (int n : timingCounts)
     {
-      MedianCutOptions options;
-      options.NumberOfLights = 1024;
-      options.VarianceMinimization = variance;
-      const double best = 1000.0 *
-        FastestSeconds(repeats,
-          [&]
-          {
-            const std::vector<MedianCutLight> lights =
-              ComputeMedianCut(big.Rgb.data(), 3, big.Width, big.Height, options);
-          });
-      std::cout << "median cut" << (variance ? " (variance)" : "")
-                << " 4096x2048 -> 1024 lights: " << std::fixed << std::setprecision(1) << best
-                << " ms (best of " << repeats << ")\n"
-                << std::defaultfloat;
-      if (csv)
+      double plainMs = 0.0;
+      for (bool variance : { false, true })
       {
-        csv << "timing-4096x2048," << big.Width << ',' << big.Height << ','
-            << (variance ? "median-cut-var-ms" : "median-cut-ms") << ",1024," << best << ",\n";
+        MedianCutOptions options;
+        options.NumberOfLights = n;
+        options.VarianceMinimization = variance;
+        const double best = 1000.0 *
+          FastestSeconds(repeats,
+            [&]
+            {
+              const std::vector<MedianCutLight> lights =
+                ComputeMedianCut(big.Rgb.data(), 3, big.Width, big.Height, options);
+            });
+        plainMs = variance ? plainMs : best;
+        std::cout << "median cut" << (variance ? " (variance)" : "") << " 4096x2048 -> " << n
+                  << " lights: " << std::fixed << std::setprecision(1) << best << " ms (best of "
+                  << repeats << ")";
+        if (variance)
+        {
+          std::cout << ", " << std::setprecision(2) << best / plainMs << "x the plain cut's";
+        }
+        std::cout << "\n" << std::defaultfloat;
+        if (csv)
+        {
+          csv << "timing-4096x2048," << big.Width << ',' << big.Height << ','
+              << (variance ? "median-cut-var-ms" : "median-cut-ms") << "," << n << "," << best
+              << ",\n";
+        }
       }
     }
   }

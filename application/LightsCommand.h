@@ -12,7 +12,7 @@ namespace mesolight
 {
 
 /**
- * mesolight lights ENV_IMAGE --out lights.csv [--count N] [--variance] [--resolution H]
+ * mesolight lights ENV_IMAGE --out lights.csv [--count N] [--plain] [--resolution H]
  * ENV_IMAGE is a lat-long image file (EXR, HDR, ...) or procedural:sky / procedural:sun.
  * Writes a CSV with the header u,v,x,y,z,r,g,b. Returns 0 on success, 1 on failure, 2 on
  * bad arguments. `args` excludes the word "lights".

@@ -33,6 +33,15 @@ struct DisplayTransform
   bool EncodeSRGB = true;
 };
 
+// Light-set shading of relief surfaces (vtkReliefProperty's defaults, which ParaView's Relief
+// Surface representation repeats): a median-cut light set carries the environment's whole
+// irradiance (its lights' colours sum to the map's integral of L dOmega), and the view's own
+// lights add to it, so a first image at exposure 1 shades well above 1 and, clamped, blows out
+// (about a quarter of a sky-lit relief at 250+ of 255). Reinhard's x / (1 + x) keeps it below
+// white and leaves dim values nearly linear. No sRGB: relief colours go to the framebuffer as
+// VTK's own actors' do.
+inline constexpr DisplayTransform ReliefLightSetDisplay{ 1.0, ToneMapOperator::Reinhard, false };
+
 // The sRGB transfer curve of IEC 61966-2-1, on values clamped to [0, 1].
 template <typename T>
 T ToSRGB(T linear)

@@ -254,6 +254,7 @@ vtkSmartPointer<vtkImageData> MakeEnvironmentLights(
   cut->AddObserver(vtkCommand::ErrorEvent, errors);
   cut->SetInputData(map);
   cut->SetNumberOfLights(options.EnvironmentLights);
+  cut->SetVarianceMinimization(options.EnvironmentVarianceCuts);
   cut->Update();
   if (!errors->Messages.empty() || !cut->GetLightTexture())
   {

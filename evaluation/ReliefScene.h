@@ -55,6 +55,7 @@ struct ReliefSceneOptions
   // median-cut lights light the relief (vtkReliefMapper light set).
   std::string Environment;
   int EnvironmentLights = 128;
+  bool EnvironmentVarianceCuts = true; // vtkMedianCutLights' default; false: even-energy cuts
   // A light set written by `mesolight lights` (CSV, vtkLightSetReader) instead of Environment.
   std::string LightsCsv;
   double Exposure = 1.0;

@@ -90,6 +90,8 @@ public:
    * image (vtkMedianCutLights' light texture), row 0 the unit directions toward the lights in
    * world coordinates, row 1 the irradiance each delivers at normal incidence (RGB). Each light
    * shades (Lambertian, albedo / pi) and self-shadows the height field. Input port 2.
+   * Lit by the environment only: renderer->AutomaticLightCreationOff(), or VTK adds a headlight
+   * at the first render of a renderer without lights.
    */
   void SetLightSetData(vtkImageData* lights);
   void SetLightSetConnection(vtkAlgorithmOutput* output);

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkReliefProperty.h"
 
+#include "DisplayTransform.h"
 #include "vtkMath.h"
 #include "vtkObjectFactory.h"
 #include "vtkReliefMessageForwarder.h"
@@ -20,7 +21,11 @@ static_assert(sizeof(MethodNames) / sizeof(MethodNames[0]) == vtkReliefProperty:
 } // namespace
 
 //------------------------------------------------------------------------------
-vtkReliefProperty::vtkReliefProperty() = default;
+vtkReliefProperty::vtkReliefProperty()
+  : Exposure(mesolight::ReliefLightSetDisplay.Exposure)
+  , ToneMapping(mesolight::ReliefLightSetDisplay.ToneMap == mesolight::ToneMapOperator::Reinhard)
+{
+}
 
 //------------------------------------------------------------------------------
 vtkReliefProperty::~vtkReliefProperty() = default;

@@ -212,7 +212,14 @@ public:
   ///@}
 
   ///@{
-  /** Scale of the light-set shading (default 1) and Reinhard tone mapping (default off). */
+  /**
+   * Light-set shading: Exposure scales it (default 1) before Reinhard's x / (1 + x) when
+   * ToneMapping is on (the default, as in ParaView). Why on: a light set carries the
+   * environment's whole irradiance and the renderer's lights add to it, so at exposure 1 a
+   * sky-lit surface shades above 1 and, clamped, about a quarter of it is white; tone mapped,
+   * the first image is exposed. The defaults are mesolight::ReliefLightSetDisplay
+   * (common/DisplayTransform.h). Off: the shading is clamped (for measurements in radiance).
+   */
   vtkSetClampMacro(Exposure, double, 0.0, 1e6);
   vtkGetMacro(Exposure, double);
   vtkSetMacro(ToneMapping, bool);
@@ -271,8 +278,8 @@ protected:
   bool AdaptiveSteps = false;
   int MinimumSteps = 4;
   bool LevelOfDetail = false;
-  double Exposure = 1.0;
-  bool ToneMapping = false;
+  double Exposure;  // mesolight::ReliefLightSetDisplay, set in the constructor
+  bool ToneMapping; // idem
   double LightSetThreshold = 0.0;
   int ShadowedLights = 0;
   bool ShadowCulling = true;

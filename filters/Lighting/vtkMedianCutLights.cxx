@@ -185,7 +185,7 @@ int vtkMedianCutLights::Execute(
 
   {
     // Per pixel: RGB floats, and the median cut's summed-area tables (double; five with
-    // variance minimization) and per-pixel energy.
+    // variance minimization, over cells of k x k pixels: a bound) and per-pixel energy.
     const std::string memory = mesolight::CheckMemoryBudget(
       "Median cut of a " + std::to_string(w) + " x " + std::to_string(h) + " environment",
       static_cast<std::uint64_t>(n) * (12 + 8 * (this->VarianceMinimization ? 5 : 1) + 8),

@@ -65,7 +65,10 @@ public:
   ///@{
   /**
    * Variance-minimizing cuts (Viriyothai & Debevec 2009) and variance-ordered splitting
-   * instead of even-energy cuts of the most energetic region. Default is off.
+   * instead of even-energy cuts of the most energetic region. Default is on: at the default
+   * 64 lights the mean irradiance error is 0.17-0.68% on Blender's eight HDRs against
+   * 0.98-2.08% for even-energy cuts, in about the same time (mesolight bench lights,
+   * docs/ibl.md).
    */
   vtkSetMacro(VarianceMinimization, bool);
   vtkGetMacro(VarianceMinimization, bool);
@@ -104,7 +107,7 @@ protected:
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   int NumberOfLights = 64;
-  bool VarianceMinimization = false;
+  bool VarianceMinimization = true;
   vtkTypeInt64 MemoryBudget = 0;
 
 private:

@@ -14,14 +14,17 @@
  *  2. Start with the whole map as one region; repeatedly take the region with the most
  *     energy (plain) or the largest energy-weighted angular variance (VarianceMinimization)
  *     from a priority queue and cut it in two, until there are NumberOfLights regions (any
- *     count >= 1, not only powers of two). Regions of one pixel are never cut.
+ *     count >= 1, not only powers of two). Regions of one pixel (cell) are never cut.
  *  3. Plain cuts: along the region's longer side measured in angle (the width is scaled by
  *     sin(theta) = cos(latitude) at the region's centre), at the column/row that splits the
  *     energy most evenly (binary search on the SAT).
  *     Variance-minimizing cuts: among all columns and rows of the region, the cut that
  *     minimizes the sum of the two halves' energy-weighted angular variances
  *     sum e |p - p_mean|^2, p = (phi sin(theta_centre), theta) (SATs of e, e x, e x^2, e y,
- *     e y^2).
+ *     e y^2). They cut on a grid of cells of k x k pixels, k the largest that keeps at least
+ *     1024 x 512 cells and 16 cells per light (k = 1 up to 2047 pixels wide, 4 at 4096 x
+ *     2048): the five tables at full resolution cost 4.5x the plain cut's time there, and
+ *     the lights (step 4) are still integrated over the pixels.
  *  4. One light per region, at the region's energy centroid on the sphere: the direction of
  *     sum Y m_pixel (m the exact pixel moment, core/EnvironmentMaps.h PixelMoment); its
  *     colour is sum L dOmega over the region (RGB): the irradiance it delivers at normal
@@ -45,8 +48,10 @@ namespace mesolight
 struct MedianCutOptions
 {
   int NumberOfLights = 64;
-  /// Variance-minimizing cuts and variance-ordered splitting (Viriyothai & Debevec 2009).
-  bool VarianceMinimization = false;
+  /// Variance-minimizing cuts and variance-ordered splitting (Viriyothai & Debevec 2009); the
+  /// default, as it keeps the irradiance error of real maps under 1% at 64 lights (plain
+  /// cuts: up to 2.1%). False: even-energy cuts of the most energetic region (Debevec 2005).
+  bool VarianceMinimization = true;
   /**
    * Test/benchmark switch: false reproduces the thesis' unweighted variant, where every
    * pixel counts as the same solid angle 4 pi / (W H) (energies, colours and centroids).
