@@ -49,3 +49,13 @@ foreach (option IN ITEMS --mode --object --shading --shadows --subdivision --exp
     message(FATAL_ERROR "vlf render --help does not list ${option}:\n${last_output}")
   endif ()
 endforeach ()
+
+# An --exr that would overwrite the field is labelled --exr, not --out.
+cli_expect_error(2 "--exr: '${field}' would overwrite"
+  vlf render "${field}" --size 32x32 --out "${WORK}/never.png" --exr "${field}")
+
+# An object a million units beside the field rendered all black with no message (the clipping
+# range, holding both, clipped the field away): refused naming the option.
+cli_expect_error(2 "--object-transform puts the object"
+  vlf render "${field}" --mode coherent --size 32x32 --object sphere
+  --object-transform 1e6,1e6,1e6 --out "${WORK}/never.png")
