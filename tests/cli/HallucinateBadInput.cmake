@@ -3,7 +3,7 @@
 # photograph and 1x1 photographs (flat depth), both weights 0 (flat depth), a calibration card
 # black in half the view (albedo up to 4444). Each is now one clear line, exit 1 or 2, and no
 # file. Absurd --layers for the photograph's size are refused naming the option; the progress is
-# printed.
+# printed; a flat depth (a uniform photograph) is written with a warning.
 include("${CMAKE_CURRENT_LIST_DIR}/RunTool.cmake")
 if (NOT OIIOTOOL)
   message(STATUS "oiiotool not found: nothing to replay")
@@ -46,6 +46,11 @@ string(FIND "${last_stderr}" "use --layers 6 or fewer" at)
 if (at EQUAL -1)
   message(FATAL_ERROR "the layers refusal names no limit: ${last_stderr}")
 endif ()
+# A uniformly lit, uniform surface has no depth to find: written, but said so.
+make(grey --pattern constant:color=0.3,0.3,0.3 16x16 3)
+make(greyflash --pattern constant:color=0.8,0.8,0.8 16x16 3)
+cli_expect_error(0 "warning: the depth is flat"
+  hallucinate "${WORK}/grey.exr" "${WORK}/greyflash.exr" --depth "${WORK}/grey-depth.exr")
 foreach (file IN ITEMS negative-depth dot-depth flat albedo layers)
   if (EXISTS "${WORK}/${file}.exr")
     message(FATAL_ERROR "a refused run wrote ${file}.exr")
