@@ -206,8 +206,7 @@ int RunHallucinateCommand(const std::vector<std::string>& args)
     {
       // Progress on stderr in steps of 10%.
       int& last = *static_cast<int*>(clientData);
-      const int step =
-        static_cast<int>(10.0 * static_cast<vtkAlgorithm*>(caller)->GetProgress());
+      const int step = static_cast<int>(10.0 * static_cast<vtkAlgorithm*>(caller)->GetProgress());
       if (step > last)
       {
         last = step;

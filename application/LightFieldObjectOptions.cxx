@@ -237,8 +237,8 @@ int SetUpObject(const CommandLine& cl, const char* command, vtkLightFieldActor* 
     double gap = 0.0;
     for (int a = 0; a < 3; ++a)
     {
-      const double outside = std::max(bounds[2 * a] - placement.Position[a],
-        placement.Position[a] - bounds[2 * a + 1]);
+      const double outside =
+        std::max(bounds[2 * a] - placement.Position[a], placement.Position[a] - bounds[2 * a + 1]);
       gap += outside > 0.0 ? outside * outside : 0.0;
     }
     gap = std::sqrt(gap) - placement.Scale * radius;

@@ -138,8 +138,7 @@ bool vtkReliefShading::StartDraw(vtkOpenGLRenderWindow* renWin, vtkReliefPropert
   // uploads it, where no check in the shader can see it: refused before drawing, like the relief
   // texels. Checked once per image and modification.
   vtkImageData* albedo = actor->GetTexture() ? actor->GetTexture()->GetInput() : nullptr;
-  vtkDataArray* albedoTexels =
-    albedo ? albedo->GetPointData()->GetScalars() : nullptr;
+  vtkDataArray* albedoTexels = albedo ? albedo->GetPointData()->GetScalars() : nullptr;
   if (albedoTexels && albedoTexels->GetDataType() != VTK_UNSIGNED_CHAR &&
     (albedo != this->CheckedAlbedo || albedo->GetMTime() != this->CheckedAlbedoTime))
   {

@@ -374,7 +374,8 @@ HallucinationResult HallucinateDepth(const RgbImage& diffuse, const RgbImage& fl
   {
     const RgbImage* Image;
     const char* Role;
-  } photographs[] = { { &diffuse, "diffuse" }, { &flash, "flash" }, { calibration, "calibration" } };
+  } photographs[] = { { &diffuse, "diffuse" }, { &flash, "flash" },
+    { calibration, "calibration" } };
   for (const auto& photograph : photographs)
   {
     const double fraction = photograph.Image ? negativeFraction(*photograph.Image) : 0.0;
@@ -435,7 +436,8 @@ HallucinationResult HallucinateDepth(const RgbImage& diffuse, const RgbImage& fl
   float cardFloor = 1.0f;
   if (calibration)
   {
-    const float calibrationMax = *std::max_element(calibration->Rgb.begin(), calibration->Rgb.end());
+    const float calibrationMax =
+      *std::max_element(calibration->Rgb.begin(), calibration->Rgb.end());
     if (!(calibrationMax > 0.0f))
     {
       Fail(HallucinationStatus::EmptyImage,
@@ -448,8 +450,8 @@ HallucinationResult HallucinateDepth(const RgbImage& diffuse, const RgbImage& fl
     }
     const float bright = Percentile(cardLuminance, 0.995);
     cardFloor = 0.02f * (bright > 0.0f ? bright : calibrationMax);
-    const auto dark = static_cast<std::size_t>(std::count_if(cardLuminance.begin(),
-      cardLuminance.end(), [cardFloor](float l) { return l < cardFloor; }));
+    const auto dark = static_cast<std::size_t>(std::count_if(
+      cardLuminance.begin(), cardLuminance.end(), [cardFloor](float l) { return l < cardFloor; }));
     if (static_cast<double>(dark) > 0.01 * static_cast<double>(n))
     {
       std::ostringstream message;

@@ -82,9 +82,9 @@ enum class HallucinationStatus
   NonFinite,
   FlashDarker,
   BadSettings,
-  TooSmall,     ///< fewer than MinimumSide pixels across: no surround to compare with
+  TooSmall,      ///< fewer than MinimumSide pixels across: no surround to compare with
   NegativeLight, ///< a photograph negative in many pixels (not linear light)
-  DarkCard      ///< a calibration card dark in part of the view (albedo would blow up)
+  DarkCard       ///< a calibration card dark in part of the view (albedo would blow up)
 };
 
 /// The smallest photograph side HallucinateDepth accepts: the first layer compares a pixel with

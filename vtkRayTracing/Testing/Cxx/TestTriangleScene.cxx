@@ -10,8 +10,8 @@
 
 #include <cmath>
 #include <iostream>
-#include <string>
 #include <random>
+#include <string>
 
 namespace
 {
