@@ -13,6 +13,8 @@
 #include "vtkOIIOImageReader.h"
 #include "vtkOIIOImageWriter.h"
 
+#include <vtkAlgorithm.h>
+#include <vtkCallbackCommand.h>
 #include <vtkCommand.h>
 #include <vtkDataArray.h>
 #include <vtkFloatArray.h>
@@ -21,6 +23,7 @@
 #include <vtkPointData.h>
 #include <vtkSmartPointer.h>
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -108,6 +111,11 @@ int RunHallucinateCommand(const std::vector<std::string>& args)
   {
     return cl.UsageError(error);
   }
+  if (!(hill > 0.0) && !(valley > 0.0))
+  {
+    return cl.UsageError(
+      "--hill-weight and --valley-weight are both 0: the depth would be flat (give either > 0)");
+  }
   const std::string diffuseFile = cl.Positional()[0], flashFile = cl.Positional()[1];
   const std::string calibrationFile = cl.Get("--calibration");
   const std::string problem =
@@ -161,9 +169,61 @@ int RunHallucinateCommand(const std::vector<std::string>& args)
   filter->SetNumberOfLayers(layers);
   filter->SetHillWeight(hill);
   filter->SetValleyWeight(valley);
+  {
+    int size[3];
+    diffuse->GetDimensions(size);
+    const int longest = std::max(size[0], size[1]);
+    // The coarsest layer's sigma (2^(layers - 1) texels) beyond the photograph's longer side
+    // compares every pixel with the mean of the whole photograph, as the layer before did.
+    if (std::min(size[0], size[1]) >= HallucinationMinimumSide && (1 << (layers - 1)) > longest)
+    {
+      int most = 1;
+      while ((1 << most) <= longest && most < 12)
+      {
+        ++most;
+      }
+      return cl.UsageError("--layers " + std::to_string(layers) + " on a " +
+        std::to_string(size[0]) + "x" + std::to_string(size[1]) + " photograph: the coarsest " +
+        "layer's sigma, " + std::to_string(1 << (layers - 1)) +
+        " texels, exceeds the photograph; use --layers " + std::to_string(most) + " or fewer");
+    }
+    // A per-pixel part (checks, albedo, shading) and a part per multiply-add of the blurs
+    // (HallucinationWork), measured on a loaded 2-core machine, so rather an upper estimate
+    // (docs/measurements/hallucination/hallucination-cost.csv: 2048^2 in 1.8 s with 1 layer,
+    // 10 s with 5).
+    constexpr double SecondsPerPixel = 3.5e-7, SecondsPerWork = 5e-9;
+    const double estimate = SecondsPerPixel * size[0] * size[1] +
+      SecondsPerWork * HallucinationWork(size[0], size[1], layers);
+    if (estimate > 2.0)
+    {
+      std::cerr << "hallucinating " << size[0] << "x" << size[1] << ", " << layers
+                << " layers: about " << std::setprecision(2) << estimate << " s\n";
+    }
+  }
+  vtkNew<vtkCallbackCommand> progress;
+  progress->SetCallback(
+    [](vtkObject* caller, unsigned long, void* clientData, void*)
+    {
+      // Progress on stderr in steps of 10%.
+      int& last = *static_cast<int*>(clientData);
+      const int step = static_cast<int>(10.0 * static_cast<vtkAlgorithm*>(caller)->GetProgress());
+      if (step > last)
+      {
+        last = step;
+        std::cerr << "\rhallucinating " << step * 10 << "%" << (step >= 10 ? "\n" : "")
+                  << std::flush;
+      }
+    });
+  int lastStep = -1;
+  progress->SetClientData(&lastStep);
+  filter->AddObserver(vtkCommand::ProgressEvent, progress);
   const auto start = std::chrono::steady_clock::now();
   filter->Update();
   const double seconds = SecondsSince(start);
+  if (lastStep >= 0 && lastStep < 10)
+  {
+    std::cerr << "\n";
+  }
   if (!errors->Text.empty() || filter->GetDepthOutput()->GetNumberOfPoints() == 0)
   {
     std::cerr << "mesolight hallucinate: "
@@ -184,6 +244,11 @@ int RunHallucinateCommand(const std::vector<std::string>& args)
   }
   std::cout << "hallucinated " << dims[0] << "x" << dims[1] << " in " << std::setprecision(3)
             << seconds << " s" << (calibration ? "" : " (uniform flash: no --calibration)") << "\n";
+  if (!(filter->GetDepthRangeTexels() > 0.0))
+  {
+    std::cerr << "mesolight hallucinate: warning: the depth is flat (the diffuse photograph's "
+                 "shading is uniform once the albedo is divided out)\n";
+  }
   if (cl.Has("--albedo"))
   {
     std::cout << "wrote " << cl.Get("--albedo") << " (albedo)\n";

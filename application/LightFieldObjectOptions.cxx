@@ -38,6 +38,8 @@ namespace
 // An object farther than this many field sizes from the origin has vertices whose products
 // (areas, normals) overflow single precision.
 constexpr double MaximumObjectReach = 1e15;
+// An object this many field sizes outside the field is refused: nothing lights it there.
+constexpr double MaximumObjectGap = 10.0;
 
 bool IsDirectory(const std::string& path)
 {
@@ -228,6 +230,23 @@ int SetUpObject(const CommandLine& cl, const char* command, vtkLightFieldActor* 
                 << reach << " world units from the origin, more than " << limit << " ("
                 << MaximumObjectReach << " times the field's size " << extent
                 << ", beyond single precision)\n";
+      return 2;
+    }
+    // Far outside the field (1e6 beside a 555 box) the field has no light for the object, and
+    // the view's clipping range, which holds both, clipped the whole field away: a black image.
+    double gap = 0.0;
+    for (int a = 0; a < 3; ++a)
+    {
+      const double outside =
+        std::max(bounds[2 * a] - placement.Position[a], placement.Position[a] - bounds[2 * a + 1]);
+      gap += outside > 0.0 ? outside * outside : 0.0;
+    }
+    gap = std::sqrt(gap) - placement.Scale * radius;
+    if (gap > MaximumObjectGap * extent)
+    {
+      std::cerr << command << ": --object-transform puts the object " << gap
+                << " world units outside the light field, more than " << MaximumObjectGap
+                << " times its size " << extent << " (no light there to shade it with)\n";
       return 2;
     }
   }

@@ -321,15 +321,12 @@ int Render(const std::vector<std::string>& args)
     return cl.UsageError("give one FIELD and --out IMAGE.png");
   }
   const std::string out = cl.Get("--out");
-  std::string problem = CheckOutputFile(out, { cl.Positional()[0], cl.Get("--compare-exr") });
-  if (problem.empty() && cl.Has("--exr"))
-  {
-    problem =
-      CheckOutputFile(cl.Get("--exr"), { cl.Positional()[0], cl.Get("--compare-exr"), out });
-  }
+  // Each output checked against the inputs and the other output, the message naming its option.
+  const std::string problem =
+    CheckOutputOptions(cl, { "--out", "--exr" }, { cl.Positional()[0], cl.Get("--compare-exr") });
   if (!problem.empty())
   {
-    return cl.UsageError("--out: " + problem);
+    return cl.UsageError(problem);
   }
   if (vlf::FileExists(out) && !cl.Has("--force"))
   {

@@ -27,6 +27,7 @@
 #include <vtkOutputWindow.h>
 
 #include <iostream>
+#include <new>
 #include <string>
 #include <vector>
 
@@ -170,5 +171,17 @@ int main(int argc, char* argv[])
     PrintUsage(std::cout);
     return args.empty() ? 2 : 0;
   }
-  return mesolight::DispatchCommand("mesolight", Commands(), args);
+  try
+  {
+    return mesolight::DispatchCommand("mesolight", Commands(), args);
+  }
+  catch (const std::bad_alloc&)
+  {
+    // An allocation no memory estimate foresaw (an image source, a reader): one line and exit 1,
+    // not "terminate called" and an abort.
+    std::cerr << "mesolight " << args[0]
+              << ": out of memory (std::bad_alloc); use a smaller input or a larger memory limit"
+                 " (ulimit -v, the container's)\n";
+    return 1;
+  }
 }

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
+#include <sys/resource.h>
 #include <unistd.h>
 
 namespace mesolight
@@ -39,6 +40,19 @@ std::uint64_t AvailableMemory()
     {
       memory = std::min(memory, limit);
     }
+  }
+  // A virtual-memory limit (ulimit -v, RLIMIT_AS) bounds what may still be mapped: the limit
+  // less the address space this process already maps (/proc/self/statm's first field, pages).
+  struct rlimit limit = {};
+  if (::getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY)
+  {
+    std::uint64_t mappedPages = 0;
+    std::ifstream statm("/proc/self/statm");
+    statm >> mappedPages;
+    const std::uint64_t mapped =
+      mappedPages * static_cast<std::uint64_t>(pageSize > 0 ? pageSize : 4096);
+    const auto cap = static_cast<std::uint64_t>(limit.rlim_cur);
+    memory = std::min(memory, cap > mapped ? cap - mapped : 0);
   }
   return memory;
 }

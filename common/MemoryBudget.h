@@ -19,7 +19,10 @@
 namespace mesolight
 {
 
-/** Bytes this process may use: the cgroup (v2 or v1) memory limit if set, else physical RAM. */
+/**
+ * Bytes this process may use: the cgroup (v2 or v1) memory limit if set, else physical RAM; no
+ * more than a virtual-memory limit (ulimit -v) leaves beyond what the process already maps.
+ */
 MESOLIGHTCOMMON_EXPORT std::uint64_t AvailableMemory();
 
 /** The budget a filter applies: `budget` bytes when > 0, else AvailableMemory(). */

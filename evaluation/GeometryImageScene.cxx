@@ -19,6 +19,9 @@
 #include <vtkRenderer.h>
 #include <vtkTexture.h>
 
+#include <cmath>
+#include <string>
+
 namespace mesolight
 {
 namespace
@@ -70,6 +73,25 @@ bool ApplyColour(const GeometryImageSceneOptions& options, ReliefScene& scene, s
     error = "cannot read the colour image '" + options.ColorFile + "'" +
       (errors->Messages.empty() ? "" : ": " + errors->Messages);
     return false;
+  }
+  // A NaN or infinite texel would reach the screen as black or not at all (the texture upload
+  // converts it), so it is refused by position (the reader puts the top row last).
+  vtkDataArray* texels = reader->GetOutput()->GetPointData()->GetScalars();
+  int dims[3];
+  reader->GetOutput()->GetDimensions(dims);
+  for (vtkIdType t = 0; texels && t < texels->GetNumberOfTuples(); ++t)
+  {
+    for (int c = 0; c < texels->GetNumberOfComponents(); ++c)
+    {
+      if (!std::isfinite(texels->GetComponent(t, c)))
+      {
+        error = "the colour image '" + options.ColorFile + "' has a NaN or infinite value at " +
+          "texel (" + std::to_string(t % dims[0]) + ", " +
+          std::to_string(dims[1] - 1 - t / dims[0]) + ") (column, row from the top), channel " +
+          std::to_string(c) + "; it would render black";
+        return false;
+      }
+    }
   }
   vtkNew<vtkImageData> colour;
   colour->DeepCopy(reader->GetOutput());

@@ -3,6 +3,7 @@
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
+#include "vtkDataArray.h"
 #include "vtkImageData.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
@@ -12,6 +13,7 @@
 #include "vtkMinDepthPyramidTexture.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderWindow.h"
+#include "vtkPointData.h"
 #include "vtkProperty.h"
 #include "vtkReliefGeometryCache.h"
 #include "vtkReliefMessageForwarder.h"
@@ -20,9 +22,11 @@
 #include "vtkReliefTextureCache.h"
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
+#include "vtkTexture.h"
 #include "vtkTextureObject.h"
 
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 vtkStandardNewMacro(vtkReliefShading);
@@ -129,6 +133,31 @@ bool vtkReliefShading::StartDraw(vtkOpenGLRenderWindow* renWin, vtkReliefPropert
   {
     vtkWarningMacro(<< "Conservative cone stepping with relaxed cones may step through the "
                        "surface; bake conservative cones for method 'cone'.");
+  }
+  // A NaN or Inf texel of the albedo texture is turned into a number (often 0, black) when VTK
+  // uploads it, where no check in the shader can see it: refused before drawing, like the relief
+  // texels. Checked once per image and modification.
+  vtkImageData* albedo = actor->GetTexture() ? actor->GetTexture()->GetInput() : nullptr;
+  vtkDataArray* albedoTexels = albedo ? albedo->GetPointData()->GetScalars() : nullptr;
+  if (albedoTexels && albedoTexels->GetDataType() != VTK_UNSIGNED_CHAR &&
+    (albedo != this->CheckedAlbedo || albedo->GetMTime() != this->CheckedAlbedoTime))
+  {
+    const vtkIdType count = albedoTexels->GetNumberOfTuples();
+    const int components = albedoTexels->GetNumberOfComponents();
+    for (vtkIdType t = 0; t < count; ++t)
+    {
+      for (int c = 0; c < components; ++c)
+      {
+        if (!std::isfinite(albedoTexels->GetComponent(t, c)))
+        {
+          vtkErrorMacro(<< "The albedo texture has a non-finite value at texel " << t
+                        << " (component " << c << "); NaN or Inf cannot be rendered.");
+          return false;
+        }
+      }
+    }
+    this->CheckedAlbedo = albedo;
+    this->CheckedAlbedoTime = albedo->GetMTime();
   }
   this->ShaderSource->Configure(property, actor->GetTexture() != nullptr,
     this->ReliefTexture->GetConePacked(), this->LightSet->GetHasLightSet());

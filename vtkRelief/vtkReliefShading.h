@@ -120,6 +120,9 @@ protected:
   bool PyramidActive = false;
   bool LightSetActive = false;
   bool WarnedTooManyLights = false;
+  // The albedo texture image last checked for NaN/Inf texels, and when (its MTime).
+  vtkImageData* CheckedAlbedo = nullptr;
+  vtkMTimeType CheckedAlbedoTime = 0;
 
 private:
   vtkReliefShading(const vtkReliefShading&) = delete;

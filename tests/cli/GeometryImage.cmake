@@ -41,6 +41,12 @@ if (OIIOTOOL)
     -o "${WORK}/grey.exr")
   cli_expect(1 "needs 3 components per pixel" render ${common}
     --geometry-image "${WORK}/grey.exr" --out "${WORK}/never.png")
+  # A colour image with one NaN texel rendered that texel black, silently: refused by position.
+  execute_process(COMMAND "${OIIOTOOL}" --pattern constant:color=0.8,0.6,0.4 16x16 3 -d float
+    --box:color=nan,nan,nan:fill=1 5,7,5,7 -o "${WORK}/nan-colour.exr")
+  cli_expect(1 "has a NaN or infinite value at texel (5, 7) (column, row from the top), channel 0" render ${common}
+    --geometry-image "${WORK}/plane.exr" --stride 8 --color "${WORK}/nan-colour.exr"
+    --out "${WORK}/never.png")
 endif ()
 
 cli_expect(2 "exclude each other" render ${common} --geometry-image procedural:plane --stride 4

@@ -49,3 +49,27 @@ foreach (option IN ITEMS --mode --object --shading --shadows --subdivision --exp
     message(FATAL_ERROR "vlf render --help does not list ${option}:\n${last_output}")
   endif ()
 endforeach ()
+
+# An --exr that would overwrite the field is labelled --exr, not --out.
+cli_expect_error(2 "--exr: '${field}' would overwrite"
+  vlf render "${field}" --size 32x32 --out "${WORK}/never.png" --exr "${field}")
+
+# An object a million units beside the field rendered all black with no message (the clipping
+# range, holding both, clipped the field away): refused naming the option.
+cli_expect_error(2 "--object-transform puts the object"
+  vlf render "${field}" --mode coherent --size 32x32 --object sphere
+  --object-transform 1e6,1e6,1e6 --out "${WORK}/never.png")
+
+set(data "${CMAKE_CURRENT_LIST_DIR}/../../examples/data")
+# Triangles 3000 mm beside the Cornell box: the field, scaled to the whole bounding box, had 730
+# texels fall to 19 and the image darken by half, with exit 0 and no word. Now a warning.
+configure_file("${data}/cornell-box.mtl" "${WORK}/cornell-box.mtl" COPYONLY)
+file(READ "${data}/cornell-box.obj" obj)
+file(WRITE "${WORK}/far.obj" "${obj}\nv 3000 0 0\nv 3050 0 0\nv 3000 50 0\nf -3 -2 -1\n")
+cli_expect_error(0 "times the size of the box holding 98% of its surface area"
+  vlf propagate "${WORK}/far.obj" --directions 33 --rays 16 --iterations 1 --out "${WORK}/far.vlf")
+cli_execute(vlf propagate "${data}/cornell-box.obj" --directions 33 --rays 16
+  --iterations 1 --out "${WORK}/near.vlf")
+if (cli_stderr MATCHES "bounding box is")
+  message(FATAL_ERROR "the plain Cornell box was warned about: ${cli_stderr}")
+endif ()

@@ -90,6 +90,11 @@
   gl_FragData[0].rgb = gl_FragData[0].rgb / (1.0 + gl_FragData[0].rgb); // Reinhard
 #endif
 #endif
+#if ML_OUTPUT == 4
+  // Checked before the albedo texture's clamp, which may turn a NaN into a number (GLSL leaves
+  // clamp of NaN undefined) and would hide it from the check below.
+  bool mlBadColour = any(isnan(gl_FragData[0])) || any(isinf(gl_FragData[0]));
+#endif
 #ifdef ML_ALBEDO_SAMPLER
   gl_FragData[0] = clamp(gl_FragData[0], 0.0, 1.0) *
     textureGrad(ML_ALBEDO_SAMPLER, mlHit.xy, mlDUVdx, mlDUVdy);
@@ -98,7 +103,7 @@
   // Red where anything on the way to the colour was NaN or Inf (stress tests), else green.
   bool mlBad = any(isnan(mlHit)) || any(isinf(mlHit)) || any(isnan(mlHitPos)) ||
     any(isinf(mlHitPos)) || any(isnan(mlShadingNormal)) || any(isnan(gl_FragData[0])) ||
-    any(isinf(gl_FragData[0]));
+    any(isinf(gl_FragData[0])) || mlBadColour;
   gl_FragData[0] = mlBad ? vec4(1.0, 0.0, 0.0, 1.0) : vec4(0.0, 1.0, 0.0, 1.0);
 #elif ML_OUTPUT == 5
   // Relief-texture samples this fragment took, shading and shadows of every light included, as

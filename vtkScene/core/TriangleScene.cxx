@@ -5,7 +5,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
+#include <utility>
 
 namespace mesolight
 {
@@ -205,7 +207,72 @@ SceneCheck CheckScene(const TriangleScene& scene, bool requireEmitter, float min
   {
     check.Errors.emplace_back("the scene has no emitter (no material with emission Ke > 0)");
   }
+  const float spread = FarGeometryRatio(scene);
+  if (spread > FarGeometryWarningRatio)
+  {
+    char text[64];
+    std::snprintf(text, sizeof(text), "%.1f", static_cast<double>(spread));
+    check.Warnings.emplace_back(std::string("the scene's bounding box is ") + text +
+      " times the size of the box holding 98% of its surface area: a few far triangles make a "
+      "light field (scaled to the whole box) coarser and darker for the rest; remove them if "
+      "they are not meant to be there");
+  }
   return check;
+}
+
+float FarGeometryRatio(const TriangleScene& scene)
+{
+  // Per axis, the area-weighted 1st percentile of the triangles' lowest coordinates and the 99th
+  // of their highest: the box most of the surface lies in (a single large quad spans all of it),
+  // which a few small stray triangles do not move.
+  glm::vec3 lower, upper;
+  if (!SceneBounds(scene, lower, upper))
+  {
+    return 1.0f;
+  }
+  std::vector<std::pair<float, float>> lows, highs; // (coordinate, area)
+  glm::vec3 low(0.0f), high(0.0f);
+  for (int a = 0; a < 3; ++a)
+  {
+    lows.clear();
+    highs.clear();
+    double total = 0.0;
+    for (std::size_t t = 0; t < scene.Triangles.size(); ++t)
+    {
+      const float area = scene.Area(t);
+      if (std::isfinite(area) && area > 0.0f)
+      {
+        const float c0 = scene.Vertex(t, 0)[a], c1 = scene.Vertex(t, 1)[a],
+                    c2 = scene.Vertex(t, 2)[a];
+        lows.emplace_back(std::min({ c0, c1, c2 }), area);
+        highs.emplace_back(-std::max({ c0, c1, c2 }), area);
+        total += area;
+      }
+    }
+    if (!(total > 0.0))
+    {
+      return 1.0f;
+    }
+    const auto percentile = [total](std::vector<std::pair<float, float>>& values)
+    {
+      std::sort(values.begin(), values.end());
+      double sum = 0.0;
+      for (const auto& entry : values)
+      {
+        sum += entry.second;
+        if (sum >= 0.01 * total)
+        {
+          return entry.first;
+        }
+      }
+      return values.back().first;
+    };
+    low[a] = percentile(lows);
+    high[a] = -percentile(highs);
+  }
+  const float bulk = glm::length(high - low);
+  const float whole = glm::length(upper - lower);
+  return bulk > 0.0f ? whole / bulk : 1.0f;
 }
 
 std::size_t RemoveDegenerateTriangles(TriangleScene& scene, float minimumArea)

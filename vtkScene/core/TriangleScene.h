@@ -83,6 +83,14 @@ struct SceneCheck
 };
 SceneCheck CheckScene(const TriangleScene& scene, bool requireEmitter, float minimumArea = 1e-12f);
 
+// How many times the scene's bounding-box diagonal exceeds that of the box holding 98% of its
+// surface area (per axis, area-weighted 1st and 99th percentiles of the triangles' extents); 1 for
+// an empty scene. The light field scales the whole box into the unit sphere, so a few far
+// triangles leave the rest that many times fewer lines across (the Cornell box with a triangle
+// 3000 mm beside it: 3.3). CheckScene warns above FarGeometryWarningRatio.
+float FarGeometryRatio(const TriangleScene& scene);
+constexpr float FarGeometryWarningRatio = 2.5f;
+
 // Drops degenerate triangles (see CheckScene); returns how many were dropped.
 std::size_t RemoveDegenerateTriangles(TriangleScene& scene, float minimumArea = 1e-12f);
 

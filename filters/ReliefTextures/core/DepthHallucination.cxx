@@ -115,6 +115,138 @@ std::vector<float> GaussianBlurClamped(
 }
 
 //------------------------------------------------------------------------------
+int HallucinationBlurFactor(float sigma)
+{
+  // Coarse sigma at least 8 texels: bilinear interpolation of a Gaussian that wide errs by a few
+  // 1e-3 of its amplitude; sigma up to 16 (the default five layers) stays exact.
+  int factor = 1;
+  while (sigma > 16.0f && sigma / static_cast<float>(2 * factor) >= 8.0f)
+  {
+    factor *= 2;
+  }
+  return factor;
+}
+
+//------------------------------------------------------------------------------
+std::vector<float> GaussianBlurPyramid(
+  const std::vector<float>& image, int w, int h, float sigma, int threads)
+{
+  const int f = HallucinationBlurFactor(sigma);
+  if (f == 1 || w <= 0 || h <= 0)
+  {
+    return GaussianBlurClamped(image, w, h, sigma, threads);
+  }
+  // Burt & Adelson, "The Laplacian pyramid as a compact image code": a wide blur is computed on
+  // a copy reduced f times (f x f block means), then interpolated back bilinearly. The block
+  // means add a variance of about f^2 / 12 and the interpolation f^2 / 6 (texels^2), which the
+  // coarse sigma leaves out. The reduced copy extends `pad` blocks beyond the photograph, made of
+  // the clamped photograph (as the fine blur extends it), so the border is blurred as the exact
+  // blur does it, not as the border of the reduced copy.
+  const float ratio = sigma / static_cast<float>(f);
+  const float coarseSigma = std::sqrt(ratio * ratio - 0.25f);
+  const int pad = static_cast<int>(std::ceil(3.0f * coarseSigma)) + 1;
+  const int cw = (w + f - 1) / f + 2 * pad, ch = (h + f - 1) / f + 2 * pad;
+  const std::size_t W = static_cast<std::size_t>(w), CW = static_cast<std::size_t>(cw);
+  // Rows first: each fine row reduced to cw block means.
+  std::vector<float> rows(static_cast<std::size_t>(h) * CW);
+  ParallelFor(
+    0, static_cast<std::size_t>(h), 8,
+    [&](std::size_t begin, std::size_t end)
+    {
+      for (std::size_t j = begin; j < end; ++j)
+      {
+        const float* src = image.data() + j * W;
+        for (int ci = 0; ci < cw; ++ci)
+        {
+          const int first = (ci - pad) * f;
+          double sum = 0.0;
+          if (first + f <= 0 || first >= w)
+          {
+            sum = static_cast<double>(src[first < 0 ? 0 : w - 1]) * f;
+          }
+          else
+          {
+            for (int di = 0; di < f; ++di)
+            {
+              sum += src[std::clamp(first + di, 0, w - 1)];
+            }
+          }
+          rows[j * CW + static_cast<std::size_t>(ci)] = static_cast<float>(sum / f);
+        }
+      }
+    },
+    threads);
+  std::vector<float> coarse(static_cast<std::size_t>(ch) * CW);
+  for (int cj = 0; cj < ch; ++cj)
+  {
+    for (int ci = 0; ci < cw; ++ci)
+    {
+      double sum = 0.0;
+      for (int dj = 0; dj < f; ++dj)
+      {
+        const int j = std::clamp((cj - pad) * f + dj, 0, h - 1);
+        sum += rows[static_cast<std::size_t>(j) * CW + static_cast<std::size_t>(ci)];
+      }
+      coarse[static_cast<std::size_t>(cj) * CW + static_cast<std::size_t>(ci)] =
+        static_cast<float>(sum / f);
+    }
+  }
+  const std::vector<float> blurred = GaussianBlurClamped(coarse, cw, ch, coarseSigma, threads);
+  std::vector<float> out(image.size());
+  // Fine texel i lies at coarse coordinate (i - (f - 1) / 2) / f + pad (block centres at
+  // integers); the padding keeps it inside the reduced copy.
+  const auto locate = [f, pad](int i, int n, int& i0, int& i1, float& t)
+  {
+    const float x = std::clamp(
+      (static_cast<float>(i) - 0.5f * static_cast<float>(f - 1)) / static_cast<float>(f) +
+        static_cast<float>(pad),
+      0.0f, static_cast<float>(n - 1));
+    i0 = std::min(static_cast<int>(x), n - 1);
+    i1 = std::min(i0 + 1, n - 1);
+    t = x - static_cast<float>(i0);
+  };
+  ParallelFor(
+    0, static_cast<std::size_t>(h), 8,
+    [&](std::size_t begin, std::size_t end)
+    {
+      for (std::size_t j = begin; j < end; ++j)
+      {
+        int j0 = 0, j1 = 0, i0 = 0, i1 = 0;
+        float tj = 0.0f, ti = 0.0f;
+        locate(static_cast<int>(j), ch, j0, j1, tj);
+        const float* r0 = blurred.data() + static_cast<std::size_t>(j0) * CW;
+        const float* r1 = blurred.data() + static_cast<std::size_t>(j1) * CW;
+        for (int i = 0; i < w; ++i)
+        {
+          locate(i, cw, i0, i1, ti);
+          const float top = r0[i0] + ti * (r0[i1] - r0[i0]);
+          const float bottom = r1[i0] + ti * (r1[i1] - r1[i0]);
+          out[j * W + static_cast<std::size_t>(i)] = top + tj * (bottom - top);
+        }
+      }
+    },
+    threads);
+  return out;
+}
+
+//------------------------------------------------------------------------------
+double HallucinationWork(int w, int h, int layers, float baseSigma)
+{
+  // Multiply-adds of the blurs (two passes of 2 radius + 1 taps over the blurred image) plus the
+  // per-pixel work of each layer (block means, interpolation, the hill and valley laws).
+  const double n = static_cast<double>(w) * static_cast<double>(h);
+  double work = 0.0;
+  for (int k = 1; k <= layers; ++k)
+  {
+    const float sigma = baseSigma * std::ldexp(1.0f, k - 1);
+    const int f = HallucinationBlurFactor(sigma);
+    const double radius = std::max(1.0, std::ceil(3.0 * sigma / f));
+    work += 2.0 * (2.0 * radius + 1.0) * n / (static_cast<double>(f) * f) + 8.0 * n;
+  }
+  return work;
+}
+
+//------------------------------------------------------------------------------
 std::vector<float> DepthFromShading(const std::vector<float>& shading, int w, int h,
   const HallucinationSettings& settings, const ProgressCallback& progress)
 {
@@ -135,8 +267,10 @@ std::vector<float> DepthFromShading(const std::vector<float>& shading, int w, in
       return {};
     }
     const float sigma = settings.BaseSigma * std::ldexp(1.0f, k - 1);
-    // Each layer blurs the shading itself (not the previous layer), so sigma_k is exact.
-    std::vector<float> layer = GaussianBlurClamped(floored, w, h, sigma, settings.Threads);
+    // Each layer blurs the shading itself (not the previous layer), so sigma_k does not drift;
+    // layers wider than 16 texels are blurred on a reduced copy (the cost of each layer is then
+    // about the same instead of doubling).
+    std::vector<float> layer = GaussianBlurPyramid(floored, w, h, sigma, settings.Threads);
     ParallelFor(
       0, n, 4096,
       [&](std::size_t begin, std::size_t end)
@@ -211,8 +345,50 @@ HallucinationResult HallucinateDepth(const RgbImage& diffuse, const RgbImage& fl
     Fail(HallucinationStatus::BadSettings,
       "Settings out of range (layers 1..12, base sigma > 0, depth scale > 0, weights >= 0).");
   }
+  if (!(settings.ValleyWeight > 0.0f) && !(settings.HillWeight > 0.0f))
+  {
+    Fail(HallucinationStatus::BadSettings,
+      "The hill and valley weights are both 0: the depth would be flat.");
+  }
   const int w = diffuse.Width, h = diffuse.Height;
   const std::size_t n = static_cast<std::size_t>(w) * static_cast<std::size_t>(h);
+  if (std::min(w, h) < HallucinationMinimumSide)
+  {
+    Fail(HallucinationStatus::TooSmall,
+      "The photographs are " + SizeOf(diffuse) + ": depth from shading compares each pixel with " +
+        "its surround, which needs at least " + std::to_string(HallucinationMinimumSide) + "x" +
+        std::to_string(HallucinationMinimumSide) + " pixels.");
+  }
+  // Linear photographs are not negative beyond noise (a black level subtracted twice, or a
+  // difference image, is): the shading of a negative pixel would be taken as black.
+  const auto negativeFraction = [n](const RgbImage& image)
+  {
+    std::size_t negative = 0;
+    for (std::size_t p = 0; p < n; ++p)
+    {
+      negative += RgbLuminance(&image.Rgb[3 * p]) < 0.0f ? 1 : 0;
+    }
+    return static_cast<double>(negative) / static_cast<double>(n);
+  };
+  const struct
+  {
+    const RgbImage* Image;
+    const char* Role;
+  } photographs[] = { { &diffuse, "diffuse" }, { &flash, "flash" },
+    { calibration, "calibration" } };
+  for (const auto& photograph : photographs)
+  {
+    const double fraction = photograph.Image ? negativeFraction(*photograph.Image) : 0.0;
+    if (fraction > static_cast<double>(settings.MaximumDarkerFraction))
+    {
+      std::ostringstream message;
+      message << "The " << photograph.Role << " photograph is negative in "
+              << std::max(1L, std::lround(100.0 * fraction))
+              << "% of the pixels: photographs must be linear light, >= 0 (was a black level "
+                 "subtracted twice?).";
+      Fail(HallucinationStatus::NegativeLight, message.str());
+    }
+  }
 
   // The flash must add light: on average (else it did not fire, or the images are swapped), and
   // nearly everywhere (pixels darker in the flash image beyond noise are counted).
@@ -253,22 +429,43 @@ HallucinationResult HallucinateDepth(const RgbImage& diffuse, const RgbImage& fl
   }
 
   HallucinationResult result;
-  // 1. Albedo = (I_f - I_d) / I_c; a calibration pixel at or below 0 would divide by nothing, so
-  // the card is floored at 1e-4 of its brightest value.
-  float calibrationMax = 1.0f;
+  // 1. Albedo = (I_f - I_d) / I_c. The card measures the flash's fall-off, which is smooth: a
+  // card dark in part of the view (it did not fill the frame, or was shadowed) would divide the
+  // flash light there by almost nothing (albedos in the thousands), so it is refused beyond 1% of
+  // the pixels, and the card is floored at 2% of its bright level (the 99.5th percentile).
+  float cardFloor = 1.0f;
   if (calibration)
   {
-    calibrationMax = *std::max_element(calibration->Rgb.begin(), calibration->Rgb.end());
+    const float calibrationMax =
+      *std::max_element(calibration->Rgb.begin(), calibration->Rgb.end());
     if (!(calibrationMax > 0.0f))
     {
       Fail(HallucinationStatus::EmptyImage,
         "The calibration image is black (the flash did not fire).");
     }
+    std::vector<float> cardLuminance(n);
+    for (std::size_t p = 0; p < n; ++p)
+    {
+      cardLuminance[p] = RgbLuminance(&calibration->Rgb[3 * p]);
+    }
+    const float bright = Percentile(cardLuminance, 0.995);
+    cardFloor = 0.02f * (bright > 0.0f ? bright : calibrationMax);
+    const auto dark = static_cast<std::size_t>(std::count_if(
+      cardLuminance.begin(), cardLuminance.end(), [cardFloor](float l) { return l < cardFloor; }));
+    if (static_cast<double>(dark) > 0.01 * static_cast<double>(n))
+    {
+      std::ostringstream message;
+      message << "The calibration card is darker than 2% of its bright level in "
+              << std::max(1L, std::lround(100.0 * static_cast<double>(dark) / n))
+              << "% of the pixels: it must fill the view and be lit by the flash (else the "
+                 "albedo there is divided by almost nothing).";
+      Fail(HallucinationStatus::DarkCard, message.str());
+    }
   }
   result.Albedo = RgbImage(w, h);
   for (std::size_t i = 0; i < 3 * n; ++i)
   {
-    const float card = calibration ? std::max(1e-4f * calibrationMax, calibration->Rgb[i]) : 1.0f;
+    const float card = calibration ? std::max(cardFloor, calibration->Rgb[i]) : 1.0f;
     result.Albedo.Rgb[i] = std::max(0.0f, flash.Rgb[i] - diffuse.Rgb[i]) / card;
   }
   if (!ReportProgress(progress, 0.05))

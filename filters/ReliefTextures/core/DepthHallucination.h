@@ -33,7 +33,9 @@
  * Where this departs from the paper: it follows the paper's structure (albedo from the flash
  * pair, shading, scale layers treated as hills or valleys, summed, a user depth scale), written
  * from its description, not from its code; the paper's own layer weights and filters are not
- * reproduced. Here the layers are Gaussian, every layer has weight 1 (the sigma_k factor is what
+ * reproduced. Here the layers are Gaussian (wider than 16 texels: blurred on a reduced copy,
+ * GaussianBlurPyramid, so that a layer costs about the same at every sigma), every layer has
+ * weight 1 (the sigma_k factor is what
  * makes coarse layers count more), and the hill and valley laws are the two closed forms above.
  * The flash-pair albedo also carries what the flash measures besides albedo: the cosine of the
  * surface to the flash and light bounced between walls; dividing by it brightens slopes, which
@@ -79,8 +81,15 @@ enum class HallucinationStatus
   SizeMismatch,
   NonFinite,
   FlashDarker,
-  BadSettings
+  BadSettings,
+  TooSmall,      ///< fewer than MinimumSide pixels across: no surround to compare with
+  NegativeLight, ///< a photograph negative in many pixels (not linear light)
+  DarkCard       ///< a calibration card dark in part of the view (albedo would blow up)
 };
+
+/// The smallest photograph side HallucinateDepth accepts: the first layer compares a pixel with
+/// a surround of sigma 1 texel, which needs a few pixels on either side.
+constexpr int HallucinationMinimumSide = 4;
 
 /// Input HallucinateDepth refuses; what() is one sentence for the user.
 class MESOLIGHTRELIEFTEXTURES_EXPORT HallucinationError : public std::runtime_error
@@ -124,8 +133,11 @@ inline float RgbLuminance(const float* rgb)
 /**
  * The whole filter: albedo, shading and depth. `calibration` may be null (a uniform flash).
  * Throws HallucinationError (its reason and a message) for an empty image, images of different
- * sizes, a NaN or infinite pixel, a flash image darker than the diffuse one, settings out of
- * range; HallucinationAbortedError when `progress` returns false.
+ * sizes, photographs smaller than HallucinationMinimumSide, a NaN or infinite pixel, a
+ * photograph negative in more than MaximumDarkerFraction of its pixels, a flash image darker
+ * than the diffuse one, a card darker than 2% of its brightest in more than 1% of the view,
+ * settings out of range (both weights 0 included: the depth would be flat);
+ * HallucinationAbortedError when `progress` returns false.
  */
 MESOLIGHTRELIEFTEXTURES_EXPORT HallucinationResult HallucinateDepth(const RgbImage& diffuse,
   const RgbImage& flash, const RgbImage* calibration, const HallucinationSettings& settings = {},
@@ -142,6 +154,21 @@ MESOLIGHTRELIEFTEXTURES_EXPORT std::vector<float> DepthFromShading(
 /// Gaussian blur (separable, clamped border) of a w x h image; sigma <= 0 copies.
 MESOLIGHTRELIEFTEXTURES_EXPORT std::vector<float> GaussianBlurClamped(
   const std::vector<float>& image, int w, int h, float sigma, int threads = 0);
+
+/// How many times the layer of this sigma is reduced before blurring (1: blurred directly,
+/// exactly; sigma above 16 texels: a power of two leaving a coarse sigma of 8..16 texels).
+MESOLIGHTRELIEFTEXTURES_EXPORT int HallucinationBlurFactor(float sigma);
+
+/// The blur DepthFromShading uses: GaussianBlurClamped for sigma up to 16 texels; wider, the
+/// same blur on a copy reduced HallucinationBlurFactor(sigma) times and interpolated back
+/// (within about 1% of the image's range of the exact blur; cost independent of sigma).
+MESOLIGHTRELIEFTEXTURES_EXPORT std::vector<float> GaussianBlurPyramid(
+  const std::vector<float>& image, int w, int h, float sigma, int threads = 0);
+
+/// The model of DepthFromShading's cost: multiply-adds for a w x h shading and `layers` layers
+/// (the tool turns it into an estimate of seconds before starting).
+MESOLIGHTRELIEFTEXTURES_EXPORT double HallucinationWork(
+  int w, int h, int layers, float baseSigma = 1.0f);
 
 } // namespace mesolight
 

@@ -21,6 +21,7 @@
 #include <vtkPolyData.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
+#include <vtkTexture.h>
 
 #include <gtest/gtest.h>
 
@@ -33,11 +34,12 @@ namespace
 using namespace mesolight;
 
 // Draws polydata with a relief mapper in a small offscreen window; returns the frame.
-Frame DrawWithRelief(vtkReliefMapper* mapper, vtkPolyData* mesh)
+Frame DrawWithRelief(vtkReliefMapper* mapper, vtkPolyData* mesh, vtkTexture* albedo = nullptr)
 {
   mapper->SetInputData(mesh);
   vtkNew<vtkActor> actor;
   actor->SetMapper(mapper);
+  actor->SetTexture(albedo);
   vtkNew<vtkRenderer> renderer;
   renderer->AddActor(actor);
   vtkNew<vtkLight> light;
@@ -137,6 +139,45 @@ TEST(ReliefBadInput, NaNInTheReliefTextureIsRejectedByTheMapper)
   const Frame frame = DrawWithRelief(mapper, PlaneWithTCoords());
   EXPECT_TRUE(messages->HasError("non-finite")) << messages->AllErrors();
   EXPECT_EQ(CoveredPixels(frame), 0);
+}
+
+// A NaN texel of a float albedo texture became a number (black) in VTK's upload, where the
+// shader's NaN/Inf check cannot see it: the mapper refuses it, naming the texel.
+TEST(ReliefBadInput, NaNInTheAlbedoTextureIsRejectedByTheMapper)
+{
+  for (const bool bad : { false, true })
+  {
+    vtkNew<vtkFloatArray> texels;
+    texels->SetNumberOfComponents(3);
+    texels->SetNumberOfTuples(16);
+    texels->FillValue(0.5f);
+    if (bad)
+    {
+      texels->SetComponent(6, 1, std::nan(""));
+    }
+    vtkNew<vtkImageData> image;
+    image->SetDimensions(4, 4, 1);
+    image->GetPointData()->SetScalars(texels);
+    vtkNew<vtkTexture> albedo;
+    albedo->SetInputData(image);
+    albedo->SetColorModeToDirectScalars();
+    vtkNew<vtkReliefMapper> mapper;
+    mapper->SetReliefTextureData(SmallRelief());
+    vtkNew<mesolight_test::MessageCapture> messages;
+    messages->Watch(mapper);
+    const Frame frame = DrawWithRelief(mapper, PlaneWithTCoords(), albedo);
+    if (bad)
+    {
+      EXPECT_TRUE(messages->HasError("albedo texture has a non-finite value at texel 6"))
+        << messages->AllErrors();
+      EXPECT_EQ(CoveredPixels(frame), 0);
+    }
+    else
+    {
+      EXPECT_TRUE(messages->Errors.empty()) << messages->AllErrors();
+      EXPECT_GT(CoveredPixels(frame), 100);
+    }
+  }
 }
 
 TEST(ReliefBadInput, OneByOneDepthMapRendersFlat)
