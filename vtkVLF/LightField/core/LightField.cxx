@@ -784,7 +784,7 @@ std::ptrdiff_t LightField::Receiver(
     return LineEscapes;
   }
   return this->Orientation(k, line[static_cast<std::size_t>(r)].Surface) == -sense ? r
-                                                                                  : LineBlocked;
+                                                                                   : LineBlocked;
 }
 
 TexelWeights LightField::WeightsAt(std::uint32_t surface, const glm::vec3& x) const

@@ -250,9 +250,9 @@ public:
   struct IterationEnergy
   {
     int Iteration = 0;
-    std::array<double, 3> Shot{};         // flux sent along lines this iteration
-    std::array<double, 3> Escaped{};      // left the scene
-    std::array<double, 3> Absorbed{};     // (1 - Kd - Ks) of what surfaces received
+    std::array<double, 3> Shot{};     // flux sent along lines this iteration
+    std::array<double, 3> Escaped{};  // left the scene
+    std::array<double, 3> Absorbed{}; // (1 - Kd - Ks) of what surfaces received
     // Always zero since blocked crossings (Receiver) shoot nothing; kept for the snapshot format.
     std::array<double, 3> BackFaces{};
     std::array<double, 3> SpecularLost{}; // mirrored into a direction no line can carry

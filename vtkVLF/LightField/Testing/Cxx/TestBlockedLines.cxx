@@ -10,6 +10,8 @@
 //    them;
 //  - the energy balance closes with no back-face term: emitted = absorbed + escaped + unshot;
 //  - the tolerance stop reaches the tolerance and stops there; a fixed count does not.
+#include "EmbreeScene.h"
+#include "PathTracer.h"
 #include "Propagation.h"
 #include "VLFTestScenes.h"
 
@@ -56,8 +58,8 @@ void AddCutPlane(TriangleScene& scene, std::vector<float> us, std::vector<float>
     for (std::size_t b = 0; b + 1 < vs.size(); ++b)
     {
       const float cu = 0.5f * (us[a] + us[a + 1]), cv = 0.5f * (vs[b] + vs[b + 1]);
-      if (std::any_of(holes.begin(), holes.end(),
-            [&](const Footprint& h) { return h.Contains(cu, cv); }))
+      if (std::any_of(
+            holes.begin(), holes.end(), [&](const Footprint& h) { return h.Contains(cu, cv); }))
       {
         continue;
       }
@@ -155,8 +157,8 @@ LightFieldSettings SmallSettings()
 
 // Mean diffuse radiance (channels summed) of the field at world points, each on the surface of
 // the scene triangle nearest in plane (the caller gives points on the surfaces).
-double MeanRadiance(const LightField& field, const std::vector<glm::vec3>& points,
-  const glm::vec3& normal)
+double MeanRadiance(
+  const LightField& field, const std::vector<glm::vec3>& points, const glm::vec3& normal)
 {
   double sum = 0.0;
   for (const glm::vec3& world : points)
@@ -206,8 +208,8 @@ std::vector<Region> BoxRoomRegions(const std::vector<Footprint>& boxes)
     {
       const float x = -1.975f + 0.05f * static_cast<float>(a);
       const float y = -1.975f + 0.05f * static_cast<float>(b);
-      if (std::none_of(boxes.begin(), boxes.end(),
-            [&](const Footprint& f) { return f.Contains(x, y); }))
+      if (std::none_of(
+            boxes.begin(), boxes.end(), [&](const Footprint& f) { return f.Contains(x, y); }))
       {
         regions[0].Points.push_back({ x, y, 0.0f });
       }
@@ -259,8 +261,8 @@ TEST(VLFBlockedLines, FloorUnderBoxesMatchesTheFloorCutOutUnderThem)
     std::unique_ptr<LightField> b = LightField::Build(cut.Scene, SmallSettings());
     Propagate(*a, 3);
     Propagate(*b, 3);
-    const double worst = WorstRegionDifference(closed ? "closed boxes" : "open-bottom boxes", *a,
-      *b, BoxRoomRegions(whole.Boxes));
+    const double worst = WorstRegionDifference(
+      closed ? "closed boxes" : "open-bottom boxes", *a, *b, BoxRoomRegions(whole.Boxes));
     // The same lines leave every visible point in both scenes: equal to float summation order.
     EXPECT_LT(worst, 2e-3) << (closed ? "closed boxes" : "open-bottom boxes");
   }
@@ -323,19 +325,13 @@ TriangleScene MakeRibbedCorridor(bool cut, std::vector<Footprint>& ribs)
   return scene;
 }
 
-TEST(VLFBlockedLines, RibsAgainstCorridorWallsMatchTheWallsCutBehindThem)
+// The wall y = -1 within 0.3 of a rib (beside it, on the side toward the light or away) and
+// elsewhere (between the ribs), the floor outside the ribs, the ribs' faces toward the light.
+std::vector<Region> CorridorRegions(const std::vector<Footprint>& ribs)
 {
-  std::vector<Footprint> ribs;
-  const TriangleScene whole = MakeRibbedCorridor(false, ribs);
-  const TriangleScene cut = MakeRibbedCorridor(true, ribs);
-  std::unique_ptr<LightField> a = LightField::Build(whole, SmallSettings());
-  std::unique_ptr<LightField> b = LightField::Build(cut, SmallSettings());
-  Propagate(*a, 4);
-  Propagate(*b, 4);
-  // The wall y = -1 within 0.3 of a rib (beside it) and elsewhere (between the ribs), the floor
-  // outside the ribs, the ribs' faces toward the light.
-  std::vector<Region> regions(4);
-  regions[0] = { "wall beside the ribs", { 0.0f, 1.0f, 0.0f }, {} };
+  std::vector<Region> regions(5);
+  regions[0] = { "wall beside the ribs, toward the light", { 0.0f, 1.0f, 0.0f }, {} };
+  regions[4] = { "wall beside the ribs, away from the light", { 0.0f, 1.0f, 0.0f }, {} };
   regions[1] = { "wall between the ribs", { 0.0f, 1.0f, 0.0f }, {} };
   regions[2] = { "floor", { 0.0f, 0.0f, 1.0f }, {} };
   regions[3] = { "ribs toward the light", { 1.0f, 0.0f, 0.0f }, {} };
@@ -343,11 +339,16 @@ TEST(VLFBlockedLines, RibsAgainstCorridorWallsMatchTheWallsCutBehindThem)
   {
     const float x = -3.9875f + 0.025f * static_cast<float>(i);
     float nearest = 1e9f;
-    bool behind = false;
+    bool behind = false, lightSide = false;
     for (const Footprint& r : ribs)
     {
       behind = behind || (x > r.X0 && x < r.X1);
-      nearest = std::min(nearest, std::min(std::abs(x - r.X0), std::abs(x - r.X1)));
+      const float d = std::min(std::abs(x - r.X0), std::abs(x - r.X1));
+      if (d < nearest)
+      {
+        nearest = d;
+        lightSide = x > r.X1;
+      }
     }
     if (behind || x < -3.5f || x > 3.5f)
     {
@@ -356,7 +357,7 @@ TEST(VLFBlockedLines, RibsAgainstCorridorWallsMatchTheWallsCutBehindThem)
     for (int j = 0; j < 10; ++j)
     {
       const float z = 0.125f + 0.25f * static_cast<float>(j);
-      (nearest < 0.3f ? regions[0] : regions[1]).Points.push_back({ x, -1.0f, z });
+      (nearest < 0.3f ? regions[lightSide ? 0 : 4] : regions[1]).Points.push_back({ x, -1.0f, z });
       regions[2].Points.push_back({ x, -0.7f + 0.15f * static_cast<float>(j), 0.0f });
     }
   }
@@ -368,6 +369,19 @@ TEST(VLFBlockedLines, RibsAgainstCorridorWallsMatchTheWallsCutBehindThem)
         0.125f + 0.25f * static_cast<float>(j) });
     }
   }
+  return regions;
+}
+
+TEST(VLFBlockedLines, RibsAgainstCorridorWallsMatchTheWallsCutBehindThem)
+{
+  std::vector<Footprint> ribs;
+  const TriangleScene whole = MakeRibbedCorridor(false, ribs);
+  const TriangleScene cut = MakeRibbedCorridor(true, ribs);
+  std::unique_ptr<LightField> a = LightField::Build(whole, SmallSettings());
+  std::unique_ptr<LightField> b = LightField::Build(cut, SmallSettings());
+  Propagate(*a, 4);
+  Propagate(*b, 4);
+  const std::vector<Region> regions = CorridorRegions(ribs);
   const double worst = WorstRegionDifference("ribbed corridor", *a, *b, regions);
   // Measured: the wall beside the ribs -14% before, -0.35% with blocked lines left out; the other
   // regions -2% before, -0.1% after. The residual is not explained yet (the cut scene's frames
@@ -453,6 +467,61 @@ TEST(VLFBlockedLines, ToleranceStopReachesTheToleranceAndStops)
   EXPECT_TRUE(PropagateToTolerance(*fixed, tolerance, 100));
   EXPECT_EQ(fixed->IterationsDone, field->IterationsDone > 5 ? field->IterationsDone : 5);
   EXPECT_THROW(PropagateToTolerance(*fixed, 0.0, 10), std::invalid_argument);
+}
+
+// Measurement (not run by ctest): the corridor with the walls cut behind the ribs, propagated to a
+// 0.2% tolerance at 513 directions, per region against the path tracer (256 paths per point).
+// Run: MesolightLightFieldCoreTests --gtest_also_run_disabled_tests --gtest_filter='*Disabled*'
+TEST(VLFBlockedLines, DISABLED_CorridorAgainstThePathTracer)
+{
+  std::vector<Footprint> ribs;
+  for (const bool cut : { true, false })
+  {
+    const TriangleScene scene = MakeRibbedCorridor(cut, ribs);
+    LightFieldSettings settings;
+    settings.Directions = 513;
+    settings.RaysPerSide = 32;
+    settings.TilesPerSide = 4;
+    std::unique_ptr<LightField> field = LightField::Build(scene, settings);
+    PropagateToTolerance(*field, 0.002, 100);
+    const EmbreeScene embree(scene);
+    const PathTracer tracer(embree);
+    for (const Region& r : CorridorRegions(ribs))
+    {
+      double traced = 0.0;
+      std::vector<glm::vec3> used;
+      for (std::size_t i = 0; i < r.Points.size(); i += 4)
+      {
+        const glm::vec3& p = r.Points[i];
+        for (std::uint32_t t = 0; t < scene.TriangleCount(); ++t)
+        {
+          const glm::vec3 a = scene.Vertex(t, 0), b = scene.Vertex(t, 1), c = scene.Vertex(t, 2);
+          const glm::vec3 n = glm::cross(b - a, c - a);
+          if (glm::dot(glm::normalize(n), r.Normal) < 0.99f ||
+            std::abs(glm::dot(glm::normalize(n), p - a)) > 1e-5f)
+          {
+            continue;
+          }
+          const float w0 = glm::dot(glm::cross(b - p, c - p), n);
+          const float w1 = glm::dot(glm::cross(c - p, a - p), n);
+          const float w2 = glm::dot(glm::cross(a - p, b - p), n);
+          if (w0 >= 0.0f && w1 >= 0.0f && w2 >= 0.0f)
+          {
+            const glm::vec3 l = tracer.DiffuseRadianceLeaving(t, p, 256, 977 * i + 13);
+            traced += static_cast<double>(l.x + l.y + l.z);
+            used.push_back(p);
+            break;
+          }
+        }
+      }
+      traced /= static_cast<double>(used.size());
+      const double mine = MeanRadiance(*field, used, r.Normal);
+      std::printf("[ traced   ] %s corridor (%d iterations), %s: field %.5g path tracer %.5g "
+                  "(%+.2f%%)\n",
+        cut ? "cut" : "whole", field->IterationsDone, r.Name.c_str(), mine, traced,
+        100.0 * (mine / traced - 1.0));
+    }
+  }
 }
 
 } // namespace
