@@ -767,24 +767,34 @@ int LightField::Orientation(std::size_t k, std::uint32_t surface) const
 std::ptrdiff_t LightField::Receiver(
   std::size_t k, const std::vector<Crossing>& line, std::size_t q) const
 {
-  // Coincident faces (depths equal to float precision of the repeated Embree queries) bound no
-  // space that light could cross; a line grazing an edge within this distance is a negligible
-  // share of the lines.
+  // Crossings at the same depth (to float precision of the repeated Embree queries) are
+  // coincident faces: a box's bottom on a floor, a zero-thickness two-sided panel, a light on a
+  // ceiling. Light passes them by: the sender steps over its own coincident faces, and of the
+  // receiving group the face turned toward the sender receives. The solid behind a contact then
+  // shows as a back side (a floor under a box sees the box top's inside).
   constexpr float Coincident = 1e-5f;
-  const float depth = line[q].Depth;
-  if ((q > 0 && depth - line[q - 1].Depth < Coincident) ||
-    (q + 1 < line.size() && line[q + 1].Depth - depth < Coincident))
-  {
-    return LineBlocked;
-  }
   const int sense = this->Orientation(k, line[q].Surface);
-  const std::ptrdiff_t r = static_cast<std::ptrdiff_t>(q) + sense;
-  if (r < 0 || r >= static_cast<std::ptrdiff_t>(line.size()))
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(line.size());
+  auto at = [&](std::ptrdiff_t r) { return line[static_cast<std::size_t>(r)]; };
+  std::ptrdiff_t r = static_cast<std::ptrdiff_t>(q) + sense;
+  while (r >= 0 && r < n && std::abs(at(r).Depth - line[q].Depth) < Coincident)
+  {
+    r += sense;
+  }
+  if (r < 0 || r >= n)
   {
     return LineEscapes;
   }
-  return this->Orientation(k, line[static_cast<std::size_t>(r)].Surface) == -sense ? r
-                                                                                   : LineBlocked;
+  const float depth = at(r).Depth;
+  for (std::ptrdiff_t g = r; g >= 0 && g < n && std::abs(at(g).Depth - depth) < Coincident;
+       g += sense)
+  {
+    if (this->Orientation(k, at(g).Surface) == -sense)
+    {
+      return g;
+    }
+  }
+  return LineBlocked;
 }
 
 TexelWeights LightField::WeightsAt(std::uint32_t surface, const glm::vec3& x) const

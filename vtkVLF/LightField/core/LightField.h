@@ -228,10 +228,11 @@ public:
   int Orientation(std::size_t k, std::uint32_t surface) const;
   // Where crossing q of a line (LineCrossings of subfield k) sends its light along the line: the
   // index of the receiving crossing, LineEscapes when the line leaves the scene, or LineBlocked
-  // when the segment it would light lies inside a solid: the next crossing is a back side (a box
-  // standing on a floor), or a crossing lies at the same depth (coincident faces, such as a box's
-  // bottom on the floor). A blocked crossing is not part of what the surface shows: it neither
-  // shoots nor counts in the texel's capacity (Propagation.h).
+  // when the segment it would light lies inside a solid: the next crossing is a back side (the
+  // floor under a box sees the inside of its top). Coincident faces (a closed box's bottom on the
+  // floor, a two-sided panel, a light on a ceiling) are stepped over, and of a coincident group
+  // the face turned toward the sender receives. A blocked crossing is not part of what the
+  // surface shows: it neither shoots nor counts in the texel's capacity (Propagation.h).
   static constexpr std::ptrdiff_t LineEscapes = -1;
   static constexpr std::ptrdiff_t LineBlocked = -2;
   std::ptrdiff_t Receiver(std::size_t k, const std::vector<Crossing>& line, std::size_t q) const;

@@ -389,6 +389,81 @@ TEST(VLFBlockedLines, RibsAgainstCorridorWallsMatchTheWallsCutBehindThem)
   EXPECT_LT(worst, 0.01);
 }
 
+// Coincident faces that are not a contact: a zero-thickness two-sided panel (two coincident
+// quads, fronts opposite) and a light on the ceiling's plane (no hole under it) shine about as
+// when they stand 1 cm apart (the line order among equal depths is arbitrary; blocking every
+// coincident crossing would leave the panel black). Measured: emitted flux -13%, panel -12%,
+// floor -6%; before (lines into back sides counted) the panel was -22% / -13%. What remains is
+// the tracing: of two coincident triangles Embree reports one per line (the next query starts
+// past the hit), so the light or one panel face misses some of its lines. Not fixed yet.
+TEST(VLFBlockedLines, CoincidentPanelAndLightShineLikeSeparatedOnes)
+{
+  auto makeScene = [](float gap)
+  {
+    TriangleScene scene;
+    SceneMaterial white;
+    white.Diffuse = glm::vec3(0.7f);
+    SceneMaterial light;
+    light.Diffuse = glm::vec3(0.0f);
+    light.Emission = glm::vec3(10.0f);
+    const std::uint32_t whiteId = scene.AddMaterial(white);
+    const std::uint32_t lightId = scene.AddMaterial(light);
+    vlftest::AddBox(
+      scene, glm::vec3(-2.0f, -2.0f, 0.0f), glm::vec3(2.0f, 2.0f, 2.5f), whiteId, true);
+    // The light, facing down, on the ceiling (gap 0) or just below it.
+    scene.AddPolygon({ { -0.5f, -1.5f, 2.5f - gap }, { -0.5f, -0.5f, 2.5f - gap },
+                       { 0.5f, -0.5f, 2.5f - gap }, { 0.5f, -1.5f, 2.5f - gap } },
+      lightId);
+    // The panel on x = 0 (and x = gap), y in [0, 1.5], z in [0.2, 2]: one face toward -x, one +x.
+    scene.AddPolygon(
+      { { 0.0f, 0.0f, 0.2f }, { 0.0f, 0.0f, 2.0f }, { 0.0f, 1.5f, 2.0f }, { 0.0f, 1.5f, 0.2f } },
+      whiteId);
+    scene.AddPolygon(
+      { { gap, 0.0f, 0.2f }, { gap, 1.5f, 0.2f }, { gap, 1.5f, 2.0f }, { gap, 0.0f, 2.0f } },
+      whiteId);
+    return scene;
+  };
+  std::unique_ptr<LightField> touching = LightField::Build(makeScene(0.0f), SmallSettings());
+  std::unique_ptr<LightField> apart = LightField::Build(makeScene(0.01f), SmallSettings());
+  const double emittedTouching = UnshotFlux(*touching)[0], emittedApart = UnshotFlux(*apart)[0];
+  std::printf("[ coincide ] emitted flux: light on the ceiling %.5g, 1 cm below %.5g\n",
+    emittedTouching, emittedApart);
+  EXPECT_NEAR(emittedTouching, emittedApart, 0.15 * emittedApart);
+  Propagate(*touching, 3);
+  Propagate(*apart, 3);
+  std::vector<Region> regions(3);
+  regions[0] = { "panel toward -x", { -1.0f, 0.0f, 0.0f }, {} };
+  regions[1] = { "panel toward +x", { 1.0f, 0.0f, 0.0f }, {} };
+  regions[2] = { "floor", { 0.0f, 0.0f, 1.0f }, {} };
+  for (int a = 0; a < 20; ++a)
+  {
+    for (int b = 0; b < 20; ++b)
+    {
+      const float u = (static_cast<float>(a) + 0.5f) / 20.0f;
+      const float v = (static_cast<float>(b) + 0.5f) / 20.0f;
+      regions[0].Points.push_back({ 0.0f, 1.5f * u, 0.2f + 1.8f * v });
+      regions[1].Points.push_back({ 0.0f, 1.5f * u, 0.2f + 1.8f * v });
+      regions[2].Points.push_back({ -2.0f + 4.0f * u, -2.0f + 4.0f * v, 0.0f });
+    }
+  }
+  // The +x face of the separated panel lies at x = 0.01: sample it there.
+  std::vector<Region> apartRegions = regions;
+  for (glm::vec3& p : apartRegions[1].Points)
+  {
+    p.x = 0.01f;
+  }
+  double worst = 0.0;
+  for (std::size_t r = 0; r < regions.size(); ++r)
+  {
+    const double a = MeanRadiance(*touching, regions[r].Points, regions[r].Normal);
+    const double b = MeanRadiance(*apart, apartRegions[r].Points, regions[r].Normal);
+    std::printf("[ coincide ] %s: coincident %.5g, 1 cm apart %.5g (%+.2f%%)\n",
+      regions[r].Name.c_str(), a, b, 100.0 * (a / b - 1.0));
+    worst = std::max(worst, std::abs(a / b - 1.0));
+  }
+  EXPECT_LT(worst, 0.15);
+}
+
 TEST(VLFBlockedLines, EnergyBalancesWithoutABackFaceTerm)
 {
   const struct
