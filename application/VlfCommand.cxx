@@ -108,7 +108,11 @@ int Propagate(const std::vector<std::string>& args)
   cl.AddValue("--directions", "N", "directions: 2n^2+1, e.g. 513, 2049, 8193", "513");
   cl.AddValue("--rays", "N", "lines per subfield side", "32");
   cl.AddValue("--tiles", "M", "tiles per subfield side (0 = rays / 8)", "0");
-  cl.AddValue("--iterations", "K", "shooting iterations (in total, when resuming)", "4");
+  cl.AddValue("--tolerance", "X",
+    "shoot until at most this share of the emitted flux is left unshot", "0.01");
+  cl.AddValue("--max-iterations", "K", "most iterations --tolerance may take (in total)", "100");
+  cl.AddValue("--iterations", "K",
+    "instead of --tolerance: exactly K shooting iterations (in total, when resuming)");
   cl.AddValue("--memory-budget", "GIB", "refuse fields needing more memory than this", "4");
   cl.AddFlag("--resume", "continue the propagation stored in FIELD");
   cl.AddFlag("--force", "replace an existing light field FIELD (never any other file)");
@@ -121,14 +125,20 @@ int Propagate(const std::vector<std::string>& args)
   {
     return exitCode; // --help printed, or a usage error reported
   }
-  int directions = 0, rays = 0, tiles = 0, iterations = 0;
-  double budget = 0.0;
+  int directions = 0, rays = 0, tiles = 0, iterations = -1, maxIterations = 0;
+  double budget = 0.0, tolerance = 0.0;
   if (!cl.GetInt("--directions", 3, 1 << 26, directions, error) ||
     !cl.GetInt("--rays", 1, 4096, rays, error) || !cl.GetInt("--tiles", 0, 4096, tiles, error) ||
-    !cl.GetInt("--iterations", 0, 10000, iterations, error) ||
+    (cl.Has("--iterations") && !cl.GetInt("--iterations", 0, 10000, iterations, error)) ||
+    !cl.GetDouble("--tolerance", 1e-9, 0.999, tolerance, error) ||
+    !cl.GetInt("--max-iterations", 1, 10000, maxIterations, error) ||
     !cl.GetDouble("--memory-budget", 1e-3, 1e6, budget, error))
   {
     return cl.UsageError(error);
+  }
+  if (cl.Has("--iterations") && (cl.Has("--tolerance") || cl.Has("--max-iterations")))
+  {
+    return cl.UsageError("--iterations (a fixed count) excludes --tolerance and --max-iterations");
   }
   const std::string out = cl.Get("--out");
   if (out.empty())
@@ -253,32 +263,45 @@ int Propagate(const std::vector<std::string>& args)
                 << FormatBytes(field->AllocatedBytes()) << " allocated\n";
     }
     vlf::PropagationOptions options;
-    options.Progress = PrintedProgress("propagating");
-    vlf::Propagate(*field, iterations, options,
-      [&](const vlf::LightField& f)
+    options.Progress = PrintedProgress(iterations < 0 ? "toward the tolerance" : "propagating");
+    char toleranceText[32] = "none: fixed count";
+    if (iterations < 0)
+      std::snprintf(toleranceText, sizeof(toleranceText), "%g%%", 100.0 * tolerance);
+    const auto afterIteration = [&](const vlf::LightField& f)
+    {
+      if (filter)
       {
-        if (filter)
-        {
-          // The snapshot gets the filtered totals; the propagation goes on with the raw ones.
-          const std::vector<glm::vec3> raw = f.TotalDiffuse;
-          vlf::FilterTotalDiffuse(*field, vlf::TextureFilterSettings());
-          vlf::WriteSnapshot(f, out);
-          field->TotalDiffuse = raw;
-        }
-        else
-        {
-          vlf::WriteSnapshot(f, out);
-        }
-        const vlf::LightField::IterationEnergy& e = f.EnergyLog.back();
-        std::printf(
-          "iteration %d: %.2f s, shot %.4g, escaped %.4g, absorbed %.4g, left to shoot %.4g "
-          "(energy balance error %.1e); wrote %s\n",
-          e.Iteration, e.Seconds, e.Shot[0] + e.Shot[1] + e.Shot[2],
-          e.Escaped[0] + e.Escaped[1] + e.Escaped[2], e.Absorbed[0] + e.Absorbed[1] + e.Absorbed[2],
-          e.Unshot[0] + e.Unshot[1] + e.Unshot[2], e.ConservationError(), out.c_str());
-        std::fflush(stdout);
-      });
-    if (field->IterationsDone >= iterations && !vlf::FileExists(out))
+        // The snapshot gets the filtered totals; the propagation goes on with the raw ones.
+        const std::vector<glm::vec3> raw = f.TotalDiffuse;
+        vlf::FilterTotalDiffuse(*field, vlf::TextureFilterSettings());
+        vlf::WriteSnapshot(f, out);
+        field->TotalDiffuse = raw;
+      }
+      else
+      {
+        vlf::WriteSnapshot(f, out);
+      }
+      const vlf::LightField::IterationEnergy& e = f.EnergyLog.back();
+      std::printf(
+        "iteration %d: %.2f s, shot %.4g, escaped %.4g, absorbed %.4g, left to shoot %.4g "
+        "= %.2f%% of the emitted (tolerance %s) (energy balance error %.1e); wrote %s\n",
+        e.Iteration, e.Seconds, e.Shot[0] + e.Shot[1] + e.Shot[2],
+        e.Escaped[0] + e.Escaped[1] + e.Escaped[2], e.Absorbed[0] + e.Absorbed[1] + e.Absorbed[2],
+        e.Unshot[0] + e.Unshot[1] + e.Unshot[2], 100.0 * vlf::UnshotFraction(f), toleranceText,
+        e.ConservationError(), out.c_str());
+      std::fflush(stdout);
+    };
+    if (iterations >= 0)
+    {
+      vlf::Propagate(*field, iterations, options, afterIteration);
+    }
+    else if (!vlf::PropagateToTolerance(*field, tolerance, maxIterations, options, afterIteration))
+    {
+      std::cerr << "mesolight vlf propagate: warning: " << 100.0 * vlf::UnshotFraction(*field)
+                << "% of the emitted flux is still unshot after " << maxIterations
+                << " iterations (--max-iterations)\n";
+    }
+    if (!vlf::FileExists(out))
     {
       vlf::WriteSnapshot(*field, out); // zero iterations: the traced field
     }

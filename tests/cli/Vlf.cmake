@@ -10,6 +10,14 @@ cli_run(TRUE vlf propagate --iterations 2 --resume --out "${field}")
 if (NOT last_output MATCHES "iteration 2:")
   message(FATAL_ERROR "resume did not run iteration 2: ${last_output}")
 endif ()
+# By default propagation runs until at most --tolerance of the emitted flux is left unshot, and
+# says so per iteration; a fixed --iterations excludes it.
+cli_run(TRUE vlf propagate --directions 33 --rays 16 --tolerance 0.05 --out "${WORK}/tolerance.vlf")
+if (NOT last_output MATCHES "of the emitted \\(tolerance 5%\\)" OR NOT last_output MATCHES "iteration 2:")
+  message(FATAL_ERROR "no progress toward the tolerance reported: ${last_output}")
+endif ()
+cli_run(FALSE vlf propagate --directions 33 --rays 16 --iterations 2 --tolerance 0.05
+  --out "${WORK}/both.vlf")
 # --filter writes smoothed totals (a different field from the same propagation); it cannot resume.
 cli_run(TRUE vlf propagate --directions 33 --rays 16 --iterations 2 --out "${WORK}/raw.vlf")
 cli_run(TRUE vlf propagate --directions 33 --rays 16 --iterations 2 --filter --out "${WORK}/smooth.vlf")

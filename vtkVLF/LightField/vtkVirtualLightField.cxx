@@ -128,9 +128,19 @@ int vtkVirtualLightField::RequestData(
     vtkErrorMacro("The input cannot be used as a light field scene (see the converter's message).");
     return 0;
   }
-  if (this->Iterations < 0 || this->Iterations > 10000)
+  if (this->Iterations < -1 || this->Iterations > 10000)
   {
-    vtkErrorMacro("Iterations " << this->Iterations << " is outside [0, 10000].");
+    vtkErrorMacro("Iterations " << this->Iterations
+                                << " is outside [-1, 10000] (-1: until ConvergenceTolerance).");
+    return 0;
+  }
+  if (this->Iterations < 0 &&
+    (!(this->ConvergenceTolerance > 0.0 && this->ConvergenceTolerance < 1.0) ||
+      this->MaxIterations < 1 || this->MaxIterations > 10000))
+  {
+    vtkErrorMacro("ConvergenceTolerance (" << this->ConvergenceTolerance
+                                           << ") must be in (0, 1) and MaxIterations ("
+                                           << this->MaxIterations << ") in [1, 10000].");
     return 0;
   }
   if (this->Directions < 1 || this->MemoryBudget <= 0)
@@ -169,14 +179,24 @@ int vtkVirtualLightField::RequestData(
     }
     vlf::PropagationOptions options;
     options.Progress = mesolight::AlgorithmProgress(this, buildShare, 1.0);
-    vlf::Propagate(*field, this->Iterations, options,
-      [&](const vlf::LightField& f)
+    const auto afterIteration = [&](const vlf::LightField& f)
+    {
+      if (snapshots)
       {
-        if (snapshots)
-        {
-          vlf::WriteSnapshot(f, this->SnapshotFileName);
-        }
-      });
+        vlf::WriteSnapshot(f, this->SnapshotFileName);
+      }
+    };
+    if (this->Iterations >= 0)
+    {
+      vlf::Propagate(*field, this->Iterations, options, afterIteration);
+    }
+    else if (!vlf::PropagateToTolerance(
+               *field, this->ConvergenceTolerance, this->MaxIterations, options, afterIteration))
+    {
+      vtkWarningMacro("The light field still holds "
+        << 100.0 * vlf::UnshotFraction(*field) << "% of its emitted flux unshot after "
+        << this->MaxIterations << " iterations (MaxIterations).");
+    }
     this->Field = std::move(field);
     ++this->PropagationCount;
   }
@@ -374,6 +394,8 @@ void vtkVirtualLightField::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Tiles: " << this->Tiles << (this->Tiles == 0 ? " (RaysPerSide / 8)" : "")
      << "\n";
   os << indent << "Iterations: " << this->Iterations << "\n";
+  os << indent << "ConvergenceTolerance: " << this->ConvergenceTolerance << "\n";
+  os << indent << "MaxIterations: " << this->MaxIterations << "\n";
   os << indent << "MemoryBudget: " << this->MemoryBudget << " bytes\n";
   os << indent
      << "SnapshotFileName: " << (this->SnapshotFileName.empty() ? "(none)" : this->SnapshotFileName)

@@ -6,8 +6,10 @@
  * Input: a scene as vtkPolyData with the material cell arrays of vtkTriangleSceneConverter
  * ("Diffuse", "Specular", "Emission", "MaterialId"), e.g. from vtkCornellBoxSource or
  * vtkOBJSceneReader. The filter builds the light field (Directions parallel subfields of
- * RaysPerSide x RaysPerSide lines in Tiles x Tiles tiles, mesolight::vlf::LightField) and runs
- * Iterations shooting iterations (mesolight::vlf::Propagate) on vtkSMPTools threads.
+ * RaysPerSide x RaysPerSide lines in Tiles x Tiles tiles, mesolight::vlf::LightField) and shoots
+ * until at most ConvergenceTolerance of the emitted flux is left unshot
+ * (mesolight::vlf::PropagateToTolerance), or a fixed count of Iterations when that is 0 or more,
+ * on vtkSMPTools threads.
  *
  * Output: the scene's triangles (world coordinates, material arrays kept) with the diffuse
  * radiance leaving each surface -- the per-surface total diffuse textures, the walkthrough's
@@ -25,9 +27,9 @@
  * Memory is estimated before anything is allocated; above MemoryBudget the filter fails with a
  * message saying how much it would need. With a SnapshotFileName a snapshot is written after
  * every iteration (atomically); with ResumeFromSnapshot an existing snapshot of that name is
- * read and propagation continues from it up to Iterations. The filter refuses to replace a file
- * that is not a light field snapshot. Progress goes through UpdateProgress; AbortExecute stops
- * between rounds of subfields.
+ * read and propagation continues from it (to the tolerance, or up to Iterations). The filter
+ * refuses to replace a file that is not a light field snapshot. Progress goes through
+ * UpdateProgress; AbortExecute stops between rounds of subfields.
  *
  * Under MPI (pieces > 1) only piece 0 propagates, from the whole scene (its input is asked for
  * piece 0 of 1); the other pieces are empty and have no field (vtkLightFieldGatherFilter
@@ -81,9 +83,22 @@ public:
   ///@}
 
   ///@{
-  /** Shooting iterations (default 4). */
+  /**
+   * Shooting iterations: -1 (default) iterates until at most ConvergenceTolerance of the emitted
+   * flux is left unshot (at most MaxIterations); 0 or more is that fixed count.
+   */
   vtkSetMacro(Iterations, int);
   vtkGetMacro(Iterations, int);
+  ///@}
+  ///@{
+  /** Share of the emitted flux left unshot at which propagation stops (default 0.01). */
+  vtkSetMacro(ConvergenceTolerance, double);
+  vtkGetMacro(ConvergenceTolerance, double);
+  ///@}
+  ///@{
+  /** Most iterations the tolerance may take (default 100): a safety cap. */
+  vtkSetMacro(MaxIterations, int);
+  vtkGetMacro(MaxIterations, int);
   ///@}
 
   ///@{
@@ -165,7 +180,9 @@ private:
   int Directions = 513;
   int RaysPerSide = 32;
   int Tiles = 0;
-  int Iterations = 4;
+  int Iterations = -1;
+  double ConvergenceTolerance = 0.01; // mesolight::vlf::DefaultTolerance
+  int MaxIterations = 100;            // mesolight::vlf::DefaultMaxIterations
   vtkTypeInt64 MemoryBudget = vtkTypeInt64(4) << 30;
   std::string SnapshotFileName;
   bool ResumeFromSnapshot = false;

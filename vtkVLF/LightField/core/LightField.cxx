@@ -465,7 +465,8 @@ std::unique_ptr<LightField> LightField::Build(
     [&](std::size_t, std::size_t k) { field->TraceSubfield(k, embree); });
 
   // Shooting capacity of each texel (Propagation.h): the flux a unit diffuse radiance there
-  // sends along all lines that leave it, sum over crossings of w_texel * cellArea * weight_k.
+  // sends along all lines that leave it into the scene (not into a solid: Receiver), sum over
+  // those crossings of w_texel * cellArea * weight_k.
   // It is the discrete counterpart of pi * texelArea (Wither 2005 §3.6.3's total projected cell
   // area).
   const std::size_t texels = field->TexelTotal;
@@ -483,17 +484,21 @@ std::unique_ptr<LightField> LightField::Build(
         for (int i = 0; i < n; ++i)
         {
           field->LineCrossings(k, i, j, crossings);
-          for (const Crossing& c : crossings)
+          for (std::size_t q = 0; q < crossings.size(); ++q)
           {
-            if (field->Orientation(k, c.Surface) == 0)
+            // A line from the texel into a solid (or a coincident face) carries nothing the
+            // surface shows: counting it would dilute the visible part's radiance.
+            const Crossing& c = crossings[q];
+            if (field->Orientation(k, c.Surface) == 0 ||
+              field->Receiver(k, crossings, q) == LightField::LineBlocked)
             {
               continue;
             }
             const TexelWeights w =
               field->WeightsAt(c.Surface, field->PointOnLine(k, i, j, c.Depth));
-            for (int q = 0; q < 4; ++q)
+            for (int t = 0; t < 4; ++t)
             {
-              partial[b][w.Texel[q]] += static_cast<double>(w.Weight[q] * cellArea * f.Weight);
+              partial[b][w.Texel[t]] += static_cast<double>(w.Weight[t] * cellArea * f.Weight);
             }
           }
         }
@@ -757,6 +762,39 @@ int LightField::Orientation(std::size_t k, std::uint32_t surface) const
 {
   const float c = glm::dot(this->SurfaceList[surface].Normal, this->Subfields[k].Direction);
   return c > 0.0f ? 1 : (c < 0.0f ? -1 : 0);
+}
+
+std::ptrdiff_t LightField::Receiver(
+  std::size_t k, const std::vector<Crossing>& line, std::size_t q) const
+{
+  // Crossings at the same depth (to float precision of the repeated Embree queries) are
+  // coincident faces: a box's bottom on a floor, a zero-thickness two-sided panel, a light on a
+  // ceiling. Light passes them by: the sender steps over its own coincident faces, and of the
+  // receiving group the face turned toward the sender receives. The solid behind a contact then
+  // shows as a back side (a floor under a box sees the box top's inside).
+  constexpr float Coincident = 1e-5f;
+  const int sense = this->Orientation(k, line[q].Surface);
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(line.size());
+  auto at = [&](std::ptrdiff_t r) { return line[static_cast<std::size_t>(r)]; };
+  std::ptrdiff_t r = static_cast<std::ptrdiff_t>(q) + sense;
+  while (r >= 0 && r < n && std::abs(at(r).Depth - line[q].Depth) < Coincident)
+  {
+    r += sense;
+  }
+  if (r < 0 || r >= n)
+  {
+    return LineEscapes;
+  }
+  const float depth = at(r).Depth;
+  for (std::ptrdiff_t g = r; g >= 0 && g < n && std::abs(at(g).Depth - depth) < Coincident;
+       g += sense)
+  {
+    if (this->Orientation(k, at(g).Surface) == -sense)
+    {
+      return g;
+    }
+  }
+  return LineBlocked;
 }
 
 TexelWeights LightField::WeightsAt(std::uint32_t surface, const glm::vec3& x) const

@@ -226,6 +226,16 @@ public:
   // Which way surface s sends light along subfield k's lines: +1 toward greater depth
   // (its front faces +d_k), -1 toward smaller depth, 0 when it lies along the lines.
   int Orientation(std::size_t k, std::uint32_t surface) const;
+  // Where crossing q of a line (LineCrossings of subfield k) sends its light along the line: the
+  // index of the receiving crossing, LineEscapes when the line leaves the scene, or LineBlocked
+  // when the segment it would light lies inside a solid: the next crossing is a back side (the
+  // floor under a box sees the inside of its top). Coincident faces (a closed box's bottom on the
+  // floor, a two-sided panel, a light on a ceiling) are stepped over, and of a coincident group
+  // the face turned toward the sender receives. A blocked crossing is not part of what the
+  // surface shows: it neither shoots nor counts in the texel's capacity (Propagation.h).
+  static constexpr std::ptrdiff_t LineEscapes = -1;
+  static constexpr std::ptrdiff_t LineBlocked = -2;
+  std::ptrdiff_t Receiver(std::size_t k, const std::vector<Crossing>& line, std::size_t q) const;
 
   // Total diffuse textures (radiance leaving diffusely), unshot diffuse radiance and the
   // shooting capacity (Propagation.h), all indexed by Surface::TexelOffset + b * width + a.
@@ -241,10 +251,11 @@ public:
   struct IterationEnergy
   {
     int Iteration = 0;
-    std::array<double, 3> Shot{};         // flux sent along lines this iteration
-    std::array<double, 3> Escaped{};      // left the scene
-    std::array<double, 3> Absorbed{};     // (1 - Kd - Ks) of what surfaces received
-    std::array<double, 3> BackFaces{};    // reached a back side
+    std::array<double, 3> Shot{};     // flux sent along lines this iteration
+    std::array<double, 3> Escaped{};  // left the scene
+    std::array<double, 3> Absorbed{}; // (1 - Kd - Ks) of what surfaces received
+    // Always zero since blocked crossings (Receiver) shoot nothing; kept for the snapshot format.
+    std::array<double, 3> BackFaces{};
     std::array<double, 3> SpecularLost{}; // mirrored into a direction no line can carry
     std::array<double, 3> Unshot{};       // reflected, to be sent next iteration
     double Seconds = 0.0;

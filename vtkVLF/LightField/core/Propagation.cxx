@@ -5,8 +5,10 @@
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <stdexcept>
 
 namespace mesolight
 {
@@ -65,6 +67,20 @@ void ShootSubfield(LightField& field, std::size_t k, BlockState& state)
       {
         const Crossing& sender = crossings[q];
         const int sense = field.Orientation(k, sender.Surface);
+        const std::ptrdiff_t r = field.Receiver(k, crossings, q);
+        if (r == LightField::LineBlocked)
+        {
+          // Not part of the visible surface (its capacity leaves it out): nothing is shot into a
+          // solid. Mirrored light deposited here has no way out: it is lost to the mirror.
+          if (specular)
+          {
+            const glm::vec3 lost = f.UnshotSpecular[sender.Cell] * fluxPerRadiance;
+            f.UnshotSpecular[sender.Cell] = glm::vec3(0.0f);
+            Add(state.Energy.Shot, lost);
+            Add(state.Energy.SpecularLost, lost);
+          }
+          continue;
+        }
         glm::vec3 radiance = field.SampleTexture(
           field.UnshotDiffuse, sender.Surface, field.PointOnLine(k, i, j, sender.Depth));
         if (specular)
@@ -79,18 +95,12 @@ void ShootSubfield(LightField& field, std::size_t k, BlockState& state)
         f.Radiance[sender.Cell] += radiance;
         const glm::vec3 flux = radiance * fluxPerRadiance;
         Add(state.Energy.Shot, flux);
-        const std::ptrdiff_t r = static_cast<std::ptrdiff_t>(q) + sense;
-        if (r < 0 || r >= static_cast<std::ptrdiff_t>(crossings.size()))
+        if (r == LightField::LineEscapes)
         {
           Add(state.Energy.Escaped, flux);
           continue;
         }
         const Crossing& receiver = crossings[static_cast<std::size_t>(r)];
-        if (field.Orientation(k, receiver.Surface) != -sense)
-        {
-          Add(state.Energy.BackFaces, flux);
-          continue;
-        }
         const SceneMaterial& material = field.MaterialOf(receiver.Surface);
         const glm::vec3 x = field.PointOnLine(k, i, j, receiver.Depth);
         const glm::vec3 reflected = material.Diffuse * flux;
@@ -248,6 +258,55 @@ void Propagate(LightField& field, int iterations, const PropagationOptions& opti
       afterIteration(field);
     }
   }
+}
+
+double UnshotFraction(const LightField& field)
+{
+  const std::array<double, 3> emitted =
+    field.EnergyLog.empty() ? UnshotFlux(field) : field.EnergyLog.front().Shot;
+  const std::array<double, 3> unshot =
+    field.EnergyLog.empty() ? emitted : field.EnergyLog.back().Unshot;
+  const double total = emitted[0] + emitted[1] + emitted[2];
+  return total > 0.0 ? (unshot[0] + unshot[1] + unshot[2]) / total : 0.0;
+}
+
+bool PropagateToTolerance(LightField& field, double tolerance, int maxIterations,
+  const PropagationOptions& options, const std::function<void(const LightField&)>& afterIteration)
+{
+  if (!(tolerance > 0.0))
+  {
+    throw std::invalid_argument("the propagation's tolerance must be positive");
+  }
+  // Share of the way from everything unshot (1) to the tolerance, on a log scale.
+  auto progressOf = [&](int done, double fraction)
+  {
+    const double toward = fraction >= 1.0 ? 0.0 : std::log(fraction) / std::log(tolerance);
+    const double cap = maxIterations > 0 ? static_cast<double>(done) / maxIterations : 1.0;
+    return std::min(1.0, std::max({ 0.0, toward, cap }));
+  };
+  double fraction = UnshotFraction(field);
+  double reported = 0.0, lastStep = 0.0;
+  while (fraction > tolerance && field.IterationsDone < maxIterations)
+  {
+    // This iteration's share of the bar: what the last one achieved, at least 1/8 of the rest.
+    const double begin = std::max(reported, progressOf(field.IterationsDone, fraction));
+    const double end = std::min(1.0, begin + std::max(lastStep, (1.0 - begin) / 8.0));
+    PropagationOptions step = options;
+    step.Progress = SubProgress(options.Progress, begin, end);
+    PropagateIteration(field, step);
+    if (afterIteration)
+    {
+      afterIteration(field);
+    }
+    fraction = UnshotFraction(field);
+    lastStep = std::max(0.0, progressOf(field.IterationsDone, fraction) - begin);
+    reported = end;
+  }
+  if (options.Progress && !options.Progress(1.0))
+  {
+    throw AbortedError();
+  }
+  return fraction <= tolerance;
 }
 
 } // namespace vlf

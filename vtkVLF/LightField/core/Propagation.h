@@ -12,10 +12,13 @@
 //   - Ks times the radiance goes to the nearest direction k' of the mirrored direction, into the
 //     lines of subfield k' around the crossing (bilinear over the cells that cross the same
 //     surface), scaled by w_k / w_k' so the flux is kept;
-//   - the rest, (1 - Kd - Ks) Phi, is absorbed. Flux reaching a back side is absorbed, flux
-//     whose line leaves the scene escapes.
+//   - the rest, (1 - Kd - Ks) Phi, is absorbed; flux whose line leaves the scene escapes.
+// A crossing whose line runs into a solid (the next crossing is a back side, or a coincident
+// face: LightField::Receiver) sends nothing and is no part of the texel's capacity: the part of
+// a floor under a box is not seen, and its lines would otherwise dilute the visible part's
+// radiance and lose the flux shot into the box.
 // After all subfields each texel turns its reflected flux into unshot diffuse radiance by
-// dividing by its shooting capacity C_t = sum over all lines leaving the texel of
+// dividing by its shooting capacity C_t = sum over the lines leaving the texel into the scene of
 // (bilinear weight) h^2 w_k, the flux a unit radiance there sends in the next iteration. C_t is
 // the discrete counterpart of pi * (texel area) -- Wither's "total projected unit cell area"
 // normalisation (§3.6.3): the cell's projected area on the surface is the cosine term, the
@@ -60,6 +63,24 @@ void Propagate(LightField& field, int iterations, const PropagationOptions& opti
 
 // Total flux of the unshot radiance (diffuse and specular): what the next iteration sends.
 std::array<double, 3> UnshotFlux(const LightField& field);
+
+// The unshot flux over the emitted flux (what the first iteration shoots), channels summed: the
+// share of the light not yet propagated (before the reflections it will still make).
+double UnshotFraction(const LightField& field);
+
+// The default stop rule: iterate until at most 1% of the emitted flux is left unshot (a fixed
+// count of 4 left 9% on the Cornell box and 27% in rooms lit indirectly), at most 100 iterations.
+constexpr double DefaultTolerance = 0.01;
+constexpr int DefaultMaxIterations = 100;
+
+// Iterates until UnshotFraction(field) <= tolerance (tolerance > 0), at most maxIterations in
+// total (a cap: mirrors facing each other keep light long), calling afterIteration after each.
+// Progress after each iteration is how far the unshot fraction has come toward the tolerance
+// on a log scale (or the share of the cap, if larger). Returns whether the tolerance was
+// reached. Throws std::invalid_argument for tolerance <= 0.
+bool PropagateToTolerance(LightField& field, double tolerance, int maxIterations,
+  const PropagationOptions& options = {},
+  const std::function<void(const LightField&)>& afterIteration = {});
 
 } // namespace vlf
 } // namespace mesolight

@@ -316,3 +316,34 @@ TEST(VLFVirtualLightField, SameFieldForOneAndFourSMPThreads)
     EXPECT_EQ(a.Unshot, b.Unshot) << "iteration " << i;
   }
 }
+
+// By default the filter shoots until at most ConvergenceTolerance of the emitted flux is left
+// unshot; a fixed Iterations count still overrides it; a tolerance outside (0, 1) is refused.
+TEST(VLFVirtualLightField, DefaultStopsAtTheTolerance)
+{
+  vtkNew<vtkCornellBoxSource> box;
+  vtkNew<vtkVirtualLightField> filter;
+  filter->SetInputConnection(box->GetOutputPort());
+  filter->SetDirections(33);
+  filter->SetRaysPerSide(16);
+  EXPECT_EQ(filter->GetIterations(), -1);
+  filter->SetConvergenceTolerance(0.05);
+  filter->Update();
+  ASSERT_NE(filter->GetLightField(), nullptr);
+  const mesolight::vlf::LightField& field = *filter->GetLightField();
+  std::cout << "tolerance 0.05: " << field.IterationsDone << " iterations, unshot "
+            << mesolight::vlf::UnshotFraction(field) << "\n";
+  EXPECT_LE(mesolight::vlf::UnshotFraction(field), 0.05);
+  EXPECT_GT(field.IterationsDone, 1);
+  filter->SetIterations(1);
+  filter->Update();
+  ASSERT_NE(filter->GetLightField(), nullptr);
+  EXPECT_EQ(filter->GetLightField()->IterationsDone, 1);
+  EXPECT_GT(mesolight::vlf::UnshotFraction(*filter->GetLightField()), 0.05);
+  filter->SetIterations(-1);
+  filter->SetConvergenceTolerance(0.0);
+  vtkNew<MessageCapture> messages;
+  messages->Watch(filter);
+  filter->Update();
+  EXPECT_TRUE(messages->HasError("ConvergenceTolerance")) << messages->AllErrors();
+}
