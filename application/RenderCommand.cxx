@@ -63,7 +63,10 @@ void AddSceneOptions(CommandLine& cl)
   cl.AddValue("--env-lights", "N", "median-cut lights of the environment", "128");
   cl.AddValue("--lights-csv", "FILE", "light also by a light set written by `mesolight lights`");
   cl.AddValue("--exposure", "X", "scale of the environment lighting", "1");
-  cl.AddFlag("--tone-map", "Reinhard tone mapping of the environment-lit colour");
+  // On by default, as vtkReliefProperty and ParaView have it: a light set carries the whole
+  // environment's irradiance, so clamped shading blows out a first image.
+  cl.AddFlag("--tone-map", "Reinhard tone mapping of the environment-lit colour (the default)");
+  cl.AddFlag("--no-tone-map", "clamp the environment-lit colour instead of tone mapping it");
   cl.AddValue("--light-elevation", "DEG", "key light elevation above the wall", "35");
 }
 
@@ -84,7 +87,12 @@ bool ReadSceneOptions(const CommandLine& cl, ReliefSceneOptions& o, std::string&
     error = "--environment and --lights-csv: give one light set, not both";
     return false;
   }
-  o.ToneMapping = cl.Has("--tone-map");
+  if (cl.Has("--tone-map") && cl.Has("--no-tone-map"))
+  {
+    error = "--tone-map and --no-tone-map: give one";
+    return false;
+  }
+  o.ToneMapping = !cl.Has("--no-tone-map");
   o.LevelOfDetail = cl.Has("--level-of-detail");
   if (!cl.GetInt("--resolution", 1, 16384, o.Resolution, error) ||
     !cl.GetDouble("--depth-scale", 0.0, 10.0, o.DepthScale, error) ||
