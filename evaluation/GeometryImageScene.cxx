@@ -210,8 +210,13 @@ bool BuildGeometryImageDenseScene(
     depth[k] = static_cast<float>(relief->GetComponent(static_cast<vtkIdType>(k), 3));
   }
   GeometryImage displaced;
-  if (!DisplaceGeometryImage(surface, depth, options.Relief.DepthScale, displaced, error))
+  try
   {
+    displaced = DisplaceGeometryImage(surface, depth, options.Relief.DepthScale);
+  }
+  catch (const GeometryImageMeshError& e)
+  {
+    error = e.what();
     return false;
   }
   vtkNew<vtkImageData> image;
