@@ -8,6 +8,7 @@
 #include "ObjectDragStyle.h"
 #include "OutputFile.h"
 #include "Timing.h"
+#include "vtkMessageCollector.h"
 
 #include "vtkLightFieldActor.h"
 #include "vtkLightFieldActorCore.h"
@@ -154,10 +155,13 @@ bool WritePng(vtkRenderWindow* window, const std::string& out)
 }
 
 // The light field actor of FIELD (the command's one positional argument) in a renderer and a
-// window set up by the view options.
+// window set up by the view options. The actor's messages are the command's own: its errors on
+// stderr, its warnings (an object outside the field or through a wall, no mirrors) as notes,
+// each once, when they happen.
 struct WalkthroughWindow
 {
   vtkNew<vtkLightFieldActor> Actor;
+  vtkNew<MessageCollector> Messages;
   vtkNew<vtkRenderer> Renderer;
   vtkNew<vtkRenderWindow> Window;
 };
@@ -166,10 +170,21 @@ struct WalkthroughWindow
 int OpenWalkthrough(
   const CommandLine& cl, const char* command, bool offscreen, WalkthroughWindow& walkthrough)
 {
+  walkthrough.Messages->OnMessage = [command](bool error, const std::string& text)
+  {
+    if (error)
+    {
+      std::cerr << command << ": " << text << "\n";
+    }
+    else
+    {
+      std::cout << "note: " << text << "\n";
+    }
+  };
+  walkthrough.Messages->Watch(walkthrough.Actor);
   if (!walkthrough.Actor->LoadLightField(cl.Positional()[0]))
   {
-    std::cerr << command << ": " << walkthrough.Actor->GetLastError() << "\n";
-    return 1;
+    return 1; // the actor's error is printed
   }
   walkthrough.Window->SetOffScreenRendering(offscreen ? 1 : 0);
   walkthrough.Window->SetMultiSamples(0);
@@ -238,13 +253,6 @@ int Render(const std::vector<std::string>& args)
   }
   vtkLightFieldActor* actor = walkthrough.Actor;
   vtkRenderWindow* window = walkthrough.Window;
-  if ((actor->GetRenderMode() == vtkLightFieldActor::Progressive ||
-        actor->GetRenderMode() == vtkLightFieldActor::Coherent) &&
-    !actor->HasMirrors())
-  {
-    std::cout << "note: the light field has no mirror surfaces; " << cl.Get("--mode")
-              << " shows its diffuse textures\n";
-  }
   const Clock::time_point start = Clock::now();
   window->Render();
   if (actor->GetRenderMode() == vtkLightFieldActor::Progressive && !cl.Has("--moving"))
@@ -267,7 +275,6 @@ int Render(const std::vector<std::string>& args)
             << actor->GetLastScreenPixels() << " pixels from the CPU pass)\n";
   if (object.Active)
   {
-    PrintObjectNote(actor, object);
     const mesolight::vlf::ShadedObject* shaded = vtkLightFieldActorCore::GetShadedObject(actor);
     std::cout << "object: " << cl.Get("--object") << ", shading " << cl.Get("--shading")
               << ", gather " << 1000.0 * actor->GetLastGatherSeconds() << " ms, "
@@ -623,7 +630,6 @@ int View(const std::vector<std::string>& args)
     }
     if (object.Active)
     {
-      PrintObjectNote(actor, object);
       const double* position = object.Actor->GetPosition();
       std::ostringstream line;
       line << std::fixed << std::setprecision(2) << "object at " << position[0] << ","
