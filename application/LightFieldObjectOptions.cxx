@@ -91,8 +91,8 @@ int SetUpObject(const CommandLine& cl, const char* command, vtkLightFieldActor* 
   if (!cl.Has("--object"))
   {
     // Every object option: without an object they would be silently ignored.
-    for (const char* option : { "--object-transform", "--object-colour", "--shading",
-           "--shadows", "--subdivision", "--gather-directions", "--gather-volume", "--path" })
+    for (const char* option : { "--object-transform", "--object-colour", "--shading", "--shadows",
+           "--subdivision", "--gather-directions", "--gather-volume", "--path" })
     {
       if (cl.Has(option))
       {
@@ -270,18 +270,6 @@ int SetUpObject(const CommandLine& cl, const char* command, vtkLightFieldActor* 
   renderer->ResetCameraClippingRange();
   object.Active = true;
   return 0;
-}
-
-void PrintObjectNote(vtkLightFieldActor* actor, const MovableObject& object)
-{
-  if (!object.Active)
-  {
-    return;
-  }
-  if (!actor->GetLastObjectProblem().empty())
-  {
-    std::cout << "note: " << actor->GetLastObjectProblem() << "\n";
-  }
 }
 
 } // namespace mesolight

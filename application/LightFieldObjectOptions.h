@@ -56,9 +56,6 @@ struct MovableObject
 int SetUpObject(const CommandLine& cl, const char* command, vtkLightFieldActor* scene,
   vtkRenderer* renderer, MovableObject& object, std::vector<std::string>* inputs = nullptr);
 
-// One line on the object after a frame: timings and anything wrong with its placement.
-void PrintObjectNote(vtkLightFieldActor* actor, const MovableObject& object);
-
 } // namespace mesolight
 
 #endif

@@ -10,6 +10,7 @@
 #include "OutputFile.h"
 #include "Timing.h"
 #include "WalkthroughExr.h"
+#include "vtkMessageCollector.h"
 
 #include "vtkLightFieldActor.h"
 #include "vtkLightFieldActorCore.h"
@@ -156,10 +157,13 @@ bool WritePng(vtkRenderWindow* window, const std::string& out)
 }
 
 // The light field actor of FIELD (the command's one positional argument) in a renderer and a
-// window set up by the view options.
+// window set up by the view options. The actor's messages are the command's own: its errors on
+// stderr, its warnings (an object outside the field or through a wall, no mirrors) as notes,
+// each once, when they happen.
 struct WalkthroughWindow
 {
   vtkNew<vtkLightFieldActor> Actor;
+  vtkNew<MessageCollector> Messages;
   vtkNew<vtkRenderer> Renderer;
   vtkNew<vtkRenderWindow> Window;
 };
@@ -168,10 +172,21 @@ struct WalkthroughWindow
 int OpenWalkthrough(
   const CommandLine& cl, const char* command, bool offscreen, WalkthroughWindow& walkthrough)
 {
+  walkthrough.Messages->OnMessage = [command](bool error, const std::string& text)
+  {
+    if (error)
+    {
+      std::cerr << command << ": " << text << "\n";
+    }
+    else
+    {
+      std::cout << "note: " << text << "\n";
+    }
+  };
+  walkthrough.Messages->Watch(walkthrough.Actor);
   if (!walkthrough.Actor->LoadLightField(cl.Positional()[0]))
   {
-    std::cerr << command << ": " << walkthrough.Actor->GetLastError() << "\n";
-    return 1;
+    return 1; // the actor's error is printed
   }
   walkthrough.Window->SetOffScreenRendering(offscreen ? 1 : 0);
   walkthrough.Window->SetMultiSamples(0);
@@ -254,13 +269,6 @@ int Render(const std::vector<std::string>& args)
   }
   vtkLightFieldActor* actor = walkthrough.Actor;
   vtkRenderWindow* window = walkthrough.Window;
-  if ((actor->GetRenderMode() == vtkLightFieldActor::Progressive ||
-        actor->GetRenderMode() == vtkLightFieldActor::Coherent) &&
-    !actor->HasMirrors())
-  {
-    std::cout << "note: the light field has no mirror surfaces; " << cl.Get("--mode")
-              << " shows its diffuse textures\n";
-  }
   const Clock::time_point start = Clock::now();
   window->Render();
   if (actor->GetRenderMode() == vtkLightFieldActor::Progressive && !cl.Has("--moving"))
@@ -299,7 +307,6 @@ int Render(const std::vector<std::string>& args)
   }
   if (object.Active)
   {
-    PrintObjectNote(actor, object);
     const mesolight::vlf::ShadedObject* shaded = vtkLightFieldActorCore::GetShadedObject(actor);
     std::cout << "object: " << cl.Get("--object") << ", shading " << cl.Get("--shading")
               << ", gather " << 1000.0 * actor->GetLastGatherSeconds() << " ms, "
@@ -655,7 +662,6 @@ int View(const std::vector<std::string>& args)
     }
     if (object.Active)
     {
-      PrintObjectNote(actor, object);
       const double* position = object.Actor->GetPosition();
       std::ostringstream line;
       line << std::fixed << std::setprecision(2) << "object at " << position[0] << ","

@@ -7,6 +7,7 @@
 #include "LightFieldObjectOptions.h"
 #include "OutputFile.h"
 #include "WalkthroughBenchmark.h"
+#include "vtkMessageCollector.h"
 
 #include "vtkLightFieldActor.h"
 #include "vtkLightFieldActorCore.h"
@@ -182,6 +183,8 @@ int Bench(const std::vector<std::string>& args)
     vtkNew<vtkRenderer> renderer;
     window->AddRenderer(renderer);
     vtkNew<vtkLightFieldActor> scene;
+    vtkNew<MessageCollector> errors; // why the object was not shaded, should it not be
+    scene->AddObserver(vtkCommand::ErrorEvent, errors);
     vtkLightFieldActorCore::SetLightField(scene, field.get());
     scene->SetRenderMode(mode);
     scene->SetShadowMode(shadows);
@@ -219,7 +222,8 @@ int Bench(const std::vector<std::string>& args)
         const vlf::ShadedObject* shaded = vtkLightFieldActorCore::GetShadedObject(scene);
         if (!shaded)
         {
-          std::cerr << command << ": the object was not shaded: " << scene->GetLastObjectProblem()
+          std::cerr << command << ": the object was not shaded: "
+                    << (errors->Errors.empty() ? "no reason reported" : errors->Errors.back())
                     << "\n";
           return 1;
         }

@@ -3,9 +3,10 @@
 
 #include "GeometryImageMesh.h"
 #include "ProceduralGeometryImages.h"
-#include "VTKMessage.h"
 #include "vtkGeometryImageSource.h"
 #include "vtkGeometryImageToMesh.h"
+#include "vtkGeometryImageToMeshCore.h"
+#include "vtkMessageCollector.h"
 #include "vtkOIIOImageReader.h"
 
 #include <vtkActor.h>
@@ -26,19 +27,6 @@ namespace mesolight
 {
 namespace
 {
-// Collects the VTK error messages of a pipeline, without VTK's location line.
-class Errors : public vtkCommand
-{
-public:
-  static Errors* New() { return new Errors; }
-  void Execute(vtkObject*, unsigned long, void* callData) override
-  {
-    const std::string text = CleanVTKMessage(callData ? static_cast<const char*>(callData) : "");
-    this->Messages += (this->Messages.empty() ? "" : "; ") + text;
-  }
-  std::string Messages;
-};
-
 const std::string Procedural = "procedural:";
 
 bool IsProcedural(const std::string& spec)
@@ -63,15 +51,15 @@ bool ApplyColour(const GeometryImageSceneOptions& options, ReliefScene& scene, s
   {
     return true;
   }
-  vtkNew<Errors> errors;
+  vtkNew<MessageCollector> errors;
   vtkNew<vtkOIIOImageReader> reader;
   reader->AddObserver(vtkCommand::ErrorEvent, errors);
   reader->SetFileName(options.ColorFile.c_str());
   reader->Update();
-  if (!errors->Messages.empty() || reader->GetOutput()->GetNumberOfPoints() == 0)
+  if (!errors->Errors.empty() || reader->GetOutput()->GetNumberOfPoints() == 0)
   {
     error = "cannot read the colour image '" + options.ColorFile + "'" +
-      (errors->Messages.empty() ? "" : ": " + errors->Messages);
+      (errors->Errors.empty() ? "" : ": " + errors->ErrorText());
     return false;
   }
   // A NaN or infinite texel would reach the screen as black or not at all (the texture upload
@@ -119,7 +107,7 @@ bool PrepareGeometry(const GeometryImageSceneOptions& options, const ReliefScene
 vtkSmartPointer<vtkImageData> LoadGeometryImage(
   const std::string& spec, int resolution, std::string& error)
 {
-  vtkNew<Errors> errors;
+  vtkNew<MessageCollector> errors;
   vtkSmartPointer<vtkImageData> image;
   if (IsProcedural(spec))
   {
@@ -143,10 +131,10 @@ vtkSmartPointer<vtkImageData> LoadGeometryImage(
     reader->Update();
     image = reader->GetOutput();
   }
-  if (!errors->Messages.empty() || !image || image->GetNumberOfPoints() == 0)
+  if (!errors->Errors.empty() || !image || image->GetNumberOfPoints() == 0)
   {
     error = "cannot read the geometry image '" + spec + "'" +
-      (errors->Messages.empty() ? "" : ": " + errors->Messages);
+      (errors->Errors.empty() ? "" : ": " + errors->ErrorText());
     return nullptr;
   }
   auto copy = vtkSmartPointer<vtkImageData>::New();
@@ -158,16 +146,16 @@ vtkSmartPointer<vtkImageData> LoadGeometryImage(
 vtkSmartPointer<vtkPolyData> MakeGeometryImageMesh(
   const GeometryImageSceneOptions& options, vtkImageData* geometry, std::string& error)
 {
-  vtkNew<Errors> errors;
+  vtkNew<MessageCollector> errors;
   vtkNew<vtkGeometryImageToMesh> mesher;
   mesher->AddObserver(vtkCommand::ErrorEvent, errors);
   mesher->SetInputData(geometry);
   mesher->SetStride(options.Stride);
   mesher->SetTolerance(options.Tolerance);
   mesher->Update();
-  if (!errors->Messages.empty() || mesher->GetOutput()->GetNumberOfPolys() == 0)
+  if (!errors->Errors.empty() || mesher->GetOutput()->GetNumberOfPolys() == 0)
   {
-    error = errors->Messages.empty() ? "the geometry image gave no triangles" : errors->Messages;
+    error = errors->Errors.empty() ? "the geometry image gave no triangles" : errors->ErrorText();
     return nullptr;
   }
   auto mesh = vtkSmartPointer<vtkPolyData>::New();
@@ -210,7 +198,7 @@ bool BuildGeometryImageDenseScene(
     return false;
   }
   GeometryImage surface;
-  if (!vtkGeometryImageToMesh::ToGeometryImage(geometry, nullptr, surface, error))
+  if (!vtkGeometryImageToMeshCore::ToGeometryImage(geometry, nullptr, surface, error))
   {
     return false;
   }
@@ -232,8 +220,13 @@ bool BuildGeometryImageDenseScene(
     depth[k] = static_cast<float>(relief->GetComponent(static_cast<vtkIdType>(k), 3));
   }
   GeometryImage displaced;
-  if (!DisplaceGeometryImage(surface, depth, options.Relief.DepthScale, displaced, error))
+  try
   {
+    displaced = DisplaceGeometryImage(surface, depth, options.Relief.DepthScale);
+  }
+  catch (const GeometryImageMeshError& e)
+  {
+    error = e.what();
     return false;
   }
   vtkNew<vtkImageData> image;

@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "ReliefScene.h"
 
-#include "VTKMessage.h"
 #include "vtkConeMapFilter.h"
 #include "vtkHeightFieldMeshFilter.h"
 #include "vtkLightSetReader.h"
 #include "vtkMedianCutLights.h"
+#include "vtkMessageCollector.h"
 #include "vtkOIIOImageReader.h"
 #include "vtkProceduralEnvironmentSource.h"
 #include "vtkProceduralReliefSource.h"
@@ -41,23 +41,6 @@ namespace mesolight
 {
 namespace
 {
-// Collects VTK error messages of one pipeline so the tool can report them as its own.
-class ErrorCollector : public vtkCommand
-{
-public:
-  static ErrorCollector* New() { return new ErrorCollector; }
-  void Execute(vtkObject*, unsigned long, void* callData) override
-  {
-    if (!callData)
-    {
-      return;
-    }
-    const std::string text = CleanVTKMessage(static_cast<const char*>(callData));
-    this->Messages += (this->Messages.empty() ? "" : "; ") + text;
-  }
-  std::string Messages;
-};
-
 // The wall spans [0,1] x [0, H/W] in the z = 0 plane, facing +z.
 double WallHeight(vtkImageData* relief)
 {
@@ -124,7 +107,7 @@ void ApplyMaterial(vtkActor* actor)
 bool BuildReliefTextures(const ReliefSceneOptions& options, vtkSmartPointer<vtkImageData>& relief,
   vtkSmartPointer<vtkTexture>& albedo, std::string& error, int coneMap)
 {
-  vtkNew<ErrorCollector> errors;
+  vtkNew<MessageCollector> errors;
   vtkNew<vtkReliefTextureFilter> bake;
   bake->AddObserver(vtkCommand::ErrorEvent, errors);
   bake->SetDepthScale(options.DepthScale);
@@ -167,10 +150,9 @@ bool BuildReliefTextures(const ReliefSceneOptions& options, vtkSmartPointer<vtkI
     albedo->SetInputData(albedoImage);
   }
   bake->Update();
-  if (!errors->Messages.empty() || !bake->GetOutput() ||
-    bake->GetOutput()->GetNumberOfPoints() == 0)
+  if (!errors->Errors.empty() || !bake->GetOutput() || bake->GetOutput()->GetNumberOfPoints() == 0)
   {
-    error = errors->Messages.empty() ? "could not bake the relief texture" : errors->Messages;
+    error = errors->Errors.empty() ? "could not bake the relief texture" : errors->ErrorText();
     return false;
   }
   int dims[3];
@@ -199,9 +181,9 @@ bool BuildReliefTextures(const ReliefSceneOptions& options, vtkSmartPointer<vtkI
       cones->SetConeTypeToRelaxed();
     }
     cones->Update();
-    if (!errors->Messages.empty())
+    if (!errors->Errors.empty())
     {
-      error = errors->Messages;
+      error = errors->ErrorText();
       return false;
     }
     relief = vtkSmartPointer<vtkImageData>::New();
@@ -213,7 +195,7 @@ bool BuildReliefTextures(const ReliefSceneOptions& options, vtkSmartPointer<vtkI
 //------------------------------------------------------------------------------
 vtkSmartPointer<vtkImageData> LoadEnvironment(const std::string& spec, std::string& error)
 {
-  vtkNew<ErrorCollector> errors;
+  vtkNew<MessageCollector> errors;
   auto map = vtkSmartPointer<vtkImageData>::New();
   if (spec == "procedural:sky" || spec == "procedural:sun")
   {
@@ -231,9 +213,9 @@ vtkSmartPointer<vtkImageData> LoadEnvironment(const std::string& spec, std::stri
   reader->AddObserver(vtkCommand::ErrorEvent, errors);
   reader->SetFileName(spec.c_str());
   reader->Update();
-  if (!errors->Messages.empty() || reader->GetOutput()->GetNumberOfPoints() == 0)
+  if (!errors->Errors.empty() || reader->GetOutput()->GetNumberOfPoints() == 0)
   {
-    error = errors->Messages.empty() ? "could not read the environment " + spec : errors->Messages;
+    error = errors->Errors.empty() ? "could not read the environment " + spec : errors->ErrorText();
     return nullptr;
   }
   map->DeepCopy(reader->GetOutput());
@@ -249,16 +231,16 @@ vtkSmartPointer<vtkImageData> MakeEnvironmentLights(
   {
     return nullptr;
   }
-  vtkNew<ErrorCollector> errors;
+  vtkNew<MessageCollector> errors;
   vtkNew<vtkMedianCutLights> cut;
   cut->AddObserver(vtkCommand::ErrorEvent, errors);
   cut->SetInputData(map);
   cut->SetNumberOfLights(options.EnvironmentLights);
   cut->SetVarianceMinimization(options.EnvironmentVarianceCuts);
   cut->Update();
-  if (!errors->Messages.empty() || !cut->GetLightTexture())
+  if (!errors->Errors.empty() || !cut->GetLightTexture())
   {
-    error = errors->Messages.empty() ? "median cut failed" : errors->Messages;
+    error = errors->Errors.empty() ? "median cut failed" : errors->ErrorText();
     return nullptr;
   }
   auto lights = vtkSmartPointer<vtkImageData>::New();
@@ -412,16 +394,16 @@ bool BuildReliefScene(const ReliefSceneOptions& options, ReliefScene& scene, std
   }
   else if (!options.LightsCsv.empty())
   {
-    vtkNew<ErrorCollector> errors;
+    vtkNew<MessageCollector> errors;
     vtkNew<vtkLightSetReader> reader;
     reader->AddObserver(vtkCommand::ErrorEvent, errors);
-    vtkNew<ErrorCollector> executiveNoise; // the executive's "returned failure" follow-up
+    vtkNew<MessageCollector> executiveNoise; // the executive's "returned failure" follow-up
     reader->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, executiveNoise);
     reader->SetFileName(options.LightsCsv.c_str());
     reader->Update();
-    if (!errors->Messages.empty() || reader->GetOutput()->GetNumberOfPoints() == 0)
+    if (!errors->Errors.empty() || reader->GetOutput()->GetNumberOfPoints() == 0)
     {
-      error = errors->Messages.empty() ? "could not read " + options.LightsCsv : errors->Messages;
+      error = errors->Errors.empty() ? "could not read " + options.LightsCsv : errors->ErrorText();
       return false;
     }
     scene.LightSet = vtkSmartPointer<vtkImageData>::New();

@@ -7,7 +7,8 @@
 // which makes OpenImageIO try every reader), then the file's bytes, written to the scratch
 // directory. A header accepted must describe 1 to 4 channels of a positive size within the
 // 64 MiB budget; its pixels are then read into a buffer of exactly that size (AddressSanitizer
-// catches a write past it); a refusal must say why, naming the file. Anything else aborts.
+// catches a write past it); a refusal (ImageFileError, the one exception bad input may raise)
+// must say why, naming the file. Anything else aborts.
 #include "FuzzSupport.h"
 #include "ImageFile.h"
 
@@ -23,17 +24,12 @@ namespace
 const char* const Extensions[] = { ".png", ".exr", ".hdr", ".pfm", ".tif", ".jpg", "" };
 constexpr std::int64_t Budget = 64 << 20;
 
-bool Refused(mesolight::ImageFileStatus status, const std::string& message, const std::string& path)
+void CheckRefusal(const mesolight::ImageFileError& error, const std::string& path)
 {
-  if (status == mesolight::ImageFileStatus::Ok)
-  {
-    return false;
-  }
-  if (message.find(path) == std::string::npos)
+  if (std::string(error.what()).find(path) == std::string::npos)
   {
     std::abort(); // a refusal names the file
   }
-  return true;
 }
 }
 
@@ -58,11 +54,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     return 0;
   }
   mesolight::ImageFileInfo info;
-  std::string message;
-  const mesolight::ImageFileStatus status =
-    mesolight::ReadImageFileInfo(path, Budget, info, message);
-  if (Refused(status, message, path))
+  try
   {
+    info = mesolight::ReadImageFileInfo(path, Budget);
+  }
+  catch (const mesolight::ImageFileError& e)
+  {
+    CheckRefusal(e, path);
     return 0;
   }
   if (info.Width <= 0 || info.Height <= 0 || info.Channels < 1 || info.Channels > 4 ||
@@ -72,10 +70,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     std::abort();
   }
   std::vector<unsigned char> pixels(static_cast<std::size_t>(info.ByteSize()));
-  const mesolight::ImageFileStatus read =
-    mesolight::ReadImageFilePixels(path, info, pixels.data(), message);
-  if (Refused(read, message, path))
+  try
   {
+    mesolight::ReadImageFilePixels(path, info, pixels.data());
+  }
+  catch (const mesolight::ImageFileError& e)
+  {
+    CheckRefusal(e, path);
     return 0;
   }
   if (info.Type == mesolight::ImageSampleType::Float)

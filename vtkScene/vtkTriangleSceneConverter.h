@@ -22,6 +22,9 @@
  * Diffuse/Specular/Emission do). Errors (no triangles, non-finite points, arrays of the wrong
  * size, negative colours) go through vtkErrorMacro and return false; warnings through
  * vtkWarningMacro (observe vtkCommand::ErrorEvent / WarningEvent to catch them).
+ *
+ * For code built in this tree (the ray tracer, the light field, the tool, the tests): the header
+ * is not installed, since its signatures name the core types, whose headers are not either.
  */
 #ifndef vtkTriangleSceneConverter_h
 #define vtkTriangleSceneConverter_h

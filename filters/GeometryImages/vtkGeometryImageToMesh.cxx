@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkGeometryImageToMesh.h"
+#include "vtkGeometryImageToMeshCore.h"
 
 #include "GeometryImageMesh.h"
 #include "Progress.h"
@@ -58,7 +59,7 @@ int vtkGeometryImageToMesh::RequestUpdateExtent(
 }
 
 //------------------------------------------------------------------------------
-bool vtkGeometryImageToMesh::ToGeometryImage(vtkImageData* image, vtkImageData* normalImage,
+bool vtkGeometryImageToMeshCore::ToGeometryImage(vtkImageData* image, vtkImageData* normalImage,
   mesolight::GeometryImage& geometry, std::string& error)
 {
   if (!image)
@@ -193,7 +194,7 @@ int vtkGeometryImageToMesh::RequestData(
   }
   mesolight::GeometryImage geometry;
   std::string error;
-  if (!ToGeometryImage(input, normalInput, geometry, error))
+  if (!vtkGeometryImageToMeshCore::ToGeometryImage(input, normalInput, geometry, error))
   {
     vtkErrorMacro(<< "Cannot mesh the geometry image: " << error << ".");
     return 0;

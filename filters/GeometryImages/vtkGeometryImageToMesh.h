@@ -27,15 +27,7 @@
 #include "MesolightGeometryImagesModule.h" // For export macro
 #include "vtkPolyDataAlgorithm.h"
 
-#include <string> // For ToGeometryImage
-
 class vtkImageData;
-#ifndef __VTK_WRAP__
-namespace mesolight
-{
-struct GeometryImage;
-}
-#endif
 
 class MESOLIGHTGEOMETRYIMAGES_EXPORT vtkGeometryImageToMesh : public vtkPolyDataAlgorithm
 {
@@ -67,15 +59,6 @@ public:
 
   /** The optional normal image (input port 1). */
   void SetNormalImageConnection(vtkAlgorithmOutput* output);
-
-#ifndef __VTK_WRAP__
-  /**
-   * The positions (and normals, from normalImage or a "Normals" array of image) of a VTK image
-   * as a core geometry image. False with a message for unusable input. (C++ only.)
-   */
-  static bool ToGeometryImage(vtkImageData* image, vtkImageData* normalImage,
-    mesolight::GeometryImage& geometry, std::string& error);
-#endif
 
 protected:
   vtkGeometryImageToMesh();

@@ -24,8 +24,6 @@ unsigned long VTKErrorCode(mesolight::ImageFileStatus status)
 {
   switch (status)
   {
-    case mesolight::ImageFileStatus::Ok:
-      return vtkErrorCode::NoError;
     case mesolight::ImageFileStatus::NoFileName:
       return vtkErrorCode::NoFileNameError;
     case mesolight::ImageFileStatus::FileNotFound:
@@ -75,13 +73,14 @@ bool vtkOIIOImageReader::CanReadFile(const char* fileName)
 //------------------------------------------------------------------------------
 bool vtkOIIOImageReader::ReadHeader(mesolight::ImageFileInfo& header)
 {
-  std::string message;
-  const mesolight::ImageFileStatus status = mesolight::ReadImageFileInfo(
-    this->FileName ? this->FileName : "", this->MemoryBudget, header, message);
-  if (status != mesolight::ImageFileStatus::Ok)
+  try
   {
-    this->SetErrorCode(VTKErrorCode(status));
-    vtkErrorMacro(<< message);
+    header = mesolight::ReadImageFileInfo(this->FileName ? this->FileName : "", this->MemoryBudget);
+  }
+  catch (const mesolight::ImageFileError& e)
+  {
+    this->SetErrorCode(VTKErrorCode(e.GetReason()));
+    vtkErrorMacro(<< e.what());
     return false;
   }
   return true;
@@ -152,27 +151,30 @@ int vtkOIIOImageReader::RequestData(
   vtkDataArray* scalars = output->GetPointData()->GetScalars();
   scalars->SetName("ImageScalars");
 
-  std::string message;
-  bool aborted = false;
-  const mesolight::ImageFileStatus status = mesolight::ReadImageFilePixels(
-    this->FileName, header, scalars->GetVoidPointer(0), message,
-    [this](float portionDone)
+  bool complete = false;
+  try
+  {
+    complete = mesolight::ReadImageFilePixels(this->FileName, header, scalars->GetVoidPointer(0),
+      [this](float portionDone)
+      {
+        this->UpdateProgress(portionDone);
+        return this->GetAbortExecute() != 0;
+      });
+  }
+  catch (const mesolight::ImageFileError& e)
+  {
+    if (!this->GetAbortExecute())
     {
-      this->UpdateProgress(portionDone);
-      return this->GetAbortExecute() != 0;
-    },
-    &aborted);
-  if (aborted || this->GetAbortExecute())
+      this->SetErrorCode(VTKErrorCode(e.GetReason()));
+      vtkErrorMacro(<< e.what());
+      output->Initialize();
+      return 0;
+    }
+  }
+  if (!complete || this->GetAbortExecute())
   {
     output->Initialize();
     return 1;
-  }
-  if (status != mesolight::ImageFileStatus::Ok)
-  {
-    this->SetErrorCode(VTKErrorCode(status));
-    vtkErrorMacro(<< message);
-    output->Initialize();
-    return 0;
   }
   // NaN is how geometry images mark holes: counted for the consumers that refuse it, not warned.
   if (header.Type == mesolight::ImageSampleType::Float)

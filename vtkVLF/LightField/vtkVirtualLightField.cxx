@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkVirtualLightField.h"
+#include "vtkVirtualLightFieldCore.h"
 
 #include "LightField.h"
 #include "Lookup.h"
@@ -46,9 +47,10 @@ double vtkVirtualLightField::GetMemoryBudgetMiB()
   return static_cast<double>(this->MemoryBudget) / 1048576.0;
 }
 
-const mesolight::vlf::LightField* vtkVirtualLightField::GetLightField() const
+const mesolight::vlf::LightField* vtkVirtualLightFieldCore::GetLightField(
+  const vtkVirtualLightField* filter)
 {
-  return this->Field.get();
+  return filter ? filter->Field.get() : nullptr;
 }
 
 vtkTypeInt64 vtkVirtualLightField::GetEstimatedBytes() const

@@ -35,8 +35,10 @@
  * piece 0 of 1); the other pieces are empty and have no field (vtkLightFieldGatherFilter
  * broadcasts rank 0's).
  *
- * After an update, GetLightField() gives the field for lookups (mesolight::vlf::Lookup), and
- * ComputeIrradiance() the irradiance at any world point and normal (the movable-object query).
+ * After an update, ComputeIrradiance() gives the irradiance at any world point and normal (the
+ * movable-object query). Code built in this tree reaches the field itself (for lookups,
+ * mesolight::vlf::Lookup) through vtkVirtualLightFieldCore, whose header is not installed, as
+ * the field's is not.
  */
 #ifndef vtkVirtualLightField_h
 #define vtkVirtualLightField_h
@@ -129,9 +131,6 @@ public:
   vtkBooleanMacro(ResumeFromSnapshot, bool);
   ///@}
 
-  /** The field of the last successful update (nullptr before). */
-  const mesolight::vlf::LightField* GetLightField() const;
-
   /**
    * Irradiance at a world point with a unit normal, gathered from the field (Wither 2005 §3.6).
    * False before a successful update.
@@ -176,6 +175,7 @@ protected:
 private:
   vtkVirtualLightField(const vtkVirtualLightField&) = delete;
   void operator=(const vtkVirtualLightField&) = delete;
+  friend class vtkVirtualLightFieldCore;
 
   int Directions = 513;
   int RaysPerSide = 32;

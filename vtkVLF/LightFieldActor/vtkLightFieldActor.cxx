@@ -93,10 +93,11 @@ bool vtkLightFieldActor::LoadLightField(const std::string& fileName)
 {
   Internals& impl = *this->Impl;
   impl.Worker.Stop();
-  const vlf::LightField* field = impl.Input.Load(fileName, this->LastError);
+  std::string error;
+  const vlf::LightField* field = impl.Input.Load(fileName, error);
   if (!field)
   {
-    vtkErrorMacro(<< this->LastError);
+    vtkErrorMacro(<< error);
     return false;
   }
   return impl.UseField(*this, field);
@@ -118,10 +119,10 @@ bool vtkLightFieldActor::Internals::UseField(
   this->View.Forget();
   this->WarnedNoMirrors = false;
   this->Object.ForgetField(); // the new tracer has no object yet; the volume was the old field's
-  actor.LastError.clear();
-  if (!this->Scene.Build(field, actor.LastError))
+  std::string error;
+  if (!this->Scene.Build(field, error))
   {
-    vtkErrorWithObjectMacro(&actor, << actor.LastError);
+    vtkErrorWithObjectMacro(&actor, << error);
   }
   this->Shadows.Invalidate(); // the maps belong to the field's emitters and unit sphere
   if (vtkLightFieldMapper* mapper = vtkLightFieldMapper::SafeDownCast(actor.GetMapper()))
@@ -386,12 +387,6 @@ bool vtkLightFieldActor::UpdateMovableObject()
 unsigned long vtkLightFieldActor::GetObjectVersion() const
 {
   return this->Impl->Object.GetVersion();
-}
-
-//------------------------------------------------------------------------------
-const std::string& vtkLightFieldActor::GetLastObjectProblem() const
-{
-  return this->Impl->Object.GetProblem();
 }
 
 //------------------------------------------------------------------------------

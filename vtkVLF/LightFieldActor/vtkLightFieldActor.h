@@ -110,12 +110,11 @@ public:
   /** Shows the field of a vtkVirtualLightField (updated, and its field taken, at each render). */
   void SetLightFieldFilter(vtkVirtualLightField* filter);
   /**
-   * Reads a field snapshot (`mesolight vlf propagate --out FILE`). False, with the reason in
-   * GetLastError() (missing, foreign, truncated or other-version file), on failure.
+   * Reads a field snapshot (`mesolight vlf propagate --out FILE`). False on failure, reported
+   * with vtkErrorMacro (missing, foreign, truncated or other-version file, a field that cannot
+   * be shown): observe ErrorEvent to show it as the program's own message.
    */
   bool LoadLightField(const std::string& fileName);
-  /** Why the last LoadLightField or field setup failed ("" when it did not). */
-  const std::string& GetLastError() const { return this->LastError; }
   /** True when the field has surfaces with Ks > 0. */
   bool HasMirrors() const;
 
@@ -180,14 +179,13 @@ public:
    * changed, places it, updates the tracer's instance and gathers its shading when anything
    * moved. Cheap when nothing changed (PrepareFrame and vtkLightFieldObjectMapper both call it;
    * one gather per change). False when there is no usable object (none set, no field, or a
-   * mesh the checks refuse: then GetLastObjectProblem() says why).
+   * mesh the checks refuse: reported with vtkErrorMacro). A usable object that is placed
+   * outside the field or through a wall is reported with vtkWarningMacro; each problem once,
+   * until the object or its problem changes.
    */
   bool UpdateMovableObject();
   /** Bumped whenever the object's mesh, placement or shading changed. */
   unsigned long GetObjectVersion() const;
-  /** Why the object is not shown or looks wrong ("" when fine): outside the field, through a
-   * wall, degenerate. */
-  const std::string& GetLastObjectProblem() const;
   /** Seconds of the last object update that did work (placement, gather, instance; see
    * GetObjectVersion for whether one happened) and of its gather alone. */
   double GetLastObjectSeconds() const;
@@ -271,7 +269,6 @@ private:
   double LastSpecularSeconds = 0.0;
   double LastUploadSeconds = 0.0;
   vtkIdType LastScreenPixels = 0;
-  std::string LastError;
   struct Internals; // the parts the actor is composed of (vtkLightFieldActorInternals.h)
   std::unique_ptr<Internals> Impl;
 };

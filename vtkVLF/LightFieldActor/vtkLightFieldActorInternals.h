@@ -28,7 +28,7 @@ struct vtkLightFieldActor::Internals
   }
 
   // Shows a field (nullptr: none): rebuilds what is drawn and traced from it, forgets what
-  // belonged to the old one. False (with actor.LastError) when it cannot be shown.
+  // belonged to the old one. False (reported with vtkErrorMacro) when it cannot be shown.
   bool UseField(vtkLightFieldActor& actor, const mesolight::vlf::LightField* field);
   // Stops the worker: it reads the field, the tracer, the object's instance and the maps.
   std::function<void()> StopReaders()

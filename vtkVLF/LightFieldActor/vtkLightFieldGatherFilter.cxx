@@ -18,7 +18,7 @@
 #include "vtkPolyDataNormals.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkTriangleSceneConverter.h"
-#include "vtkVirtualLightField.h"
+#include "vtkVirtualLightFieldCore.h"
 
 #include "LightField.h"
 #include "ObjectGatherer.h"
@@ -171,7 +171,8 @@ const mesolight::vlf::LightField* vtkLightFieldGatherFilter::AcquireField(vtkAlg
 {
   namespace vlf = mesolight::vlf;
   vtkVirtualLightField* producer = FindLightField(input);
-  const vlf::LightField* own = producer ? producer->GetLightField() : nullptr;
+  const vlf::LightField* own =
+    producer ? vtkVirtualLightFieldCore::GetLightField(producer) : nullptr;
   int count = producer ? producer->GetPropagationCount() : 0;
   vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
   const int ranks = controller ? controller->GetNumberOfProcesses() : 1;

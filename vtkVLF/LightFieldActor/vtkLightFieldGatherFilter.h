@@ -7,7 +7,7 @@
  * normals are used when it has them, else computed (vtkPolyDataNormals, no splitting, so the
  * points stay the input's). Input 1 (SetLightFieldConnection): the output of a
  * vtkVirtualLightField. The field itself does not travel with the data: the filter takes it from
- * the nearest vtkVirtualLightField upstream of input 1 (GetLightField(), after that filter has
+ * the nearest vtkVirtualLightField upstream of input 1 (after that filter has
  * run), walking through pass-through filters such as ParaView's post filter. In ParaView's
  * builtin and client/server modes the filter and its producer share the server process, so this
  * works there too. With several MPI ranks (vtkMultiProcessController's global controller) the

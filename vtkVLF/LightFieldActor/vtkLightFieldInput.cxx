@@ -3,7 +3,7 @@
 
 #include "vtkAlgorithm.h"
 #include "vtkDataObject.h"
-#include "vtkVirtualLightField.h"
+#include "vtkVirtualLightFieldCore.h"
 
 #include "LightField.h"
 #include "Snapshot.h"
@@ -107,7 +107,8 @@ bool vtkLightFieldInput::Refresh(
   this->FilterUpstreamTime = upstream;
   const vtkMTimeType output =
     this->Filter->GetOutputDataObject(0) ? this->Filter->GetOutputDataObject(0)->GetMTime() : 0;
-  if (this->Filter->GetLightField() != shown || output != this->FilterOutputTime)
+  if (vtkVirtualLightFieldCore::GetLightField(this->Filter) != shown ||
+    output != this->FilterOutputTime)
   {
     this->FilterOutputTime = output;
     return true;
@@ -118,5 +119,5 @@ bool vtkLightFieldInput::Refresh(
 //------------------------------------------------------------------------------
 const mesolight::vlf::LightField* vtkLightFieldInput::GetFilterField() const
 {
-  return this->Filter ? this->Filter->GetLightField() : nullptr;
+  return vtkVirtualLightFieldCore::GetLightField(this->Filter);
 }

@@ -96,7 +96,6 @@ void vtkLightFieldMovableObject::SetActor(vtkActor* object)
 {
   this->Object = object;
   this->Forget();
-  this->Problem.clear();
   this->ProblemWarned.clear();
 }
 
@@ -160,7 +159,6 @@ bool vtkLightFieldMovableObject::Fail(const std::string& why, vlf::WalkthroughTr
   vtkLightFieldObjectShadows& shadows, const std::function<void()>& stopReaders)
 {
   this->Drop(tracer, shadows, stopReaders);
-  this->Problem = why;
   if (this->ProblemWarned != why)
   {
     vtkErrorWithObjectMacro(this->Owner, << why);
@@ -186,7 +184,6 @@ bool vtkLightFieldMovableObject::Update(const vlf::LightField* field,
     // None set, or the actor was deleted (held weakly): nothing of it may stay in the tracer.
     this->Drop(*tracer, shadows, stopReaders);
     this->Usable = false;
-    this->Problem.clear();
     return false;
   }
   vtkMapper* mapper = object->GetMapper();
@@ -262,12 +259,12 @@ bool vtkLightFieldMovableObject::Update(const vlf::LightField* field,
   ++this->Version;
 
   // 5. Checks a user wants to hear about (the object is still shown).
-  this->Problem = Check(unit, *tracer);
-  if (!this->Problem.empty() && this->ProblemWarned != this->Problem)
+  const std::string warning = Check(unit, *tracer);
+  if (!warning.empty() && this->ProblemWarned != warning)
   {
-    vtkWarningWithObjectMacro(this->Owner, << this->Problem);
+    vtkWarningWithObjectMacro(this->Owner, << warning);
   }
-  this->ProblemWarned = this->Problem;
+  this->ProblemWarned = warning;
   this->LastSeconds = SecondsSince(start);
   return true;
 }

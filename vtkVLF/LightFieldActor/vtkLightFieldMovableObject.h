@@ -85,7 +85,6 @@ public:
   unsigned long GetVersion() const { return this->Version; }
   /** Whether the version changed since the last call (a frame's question: did it move?). */
   bool ChangedSinceLastFrame();
-  const std::string& GetProblem() const { return this->Problem; }
   double GetLastSeconds() const { return this->LastSeconds; }
   double GetLastGatherSeconds() const { return this->LastGatherSeconds; }
 
@@ -133,8 +132,7 @@ private:
   std::unique_ptr<mesolight::vlf::IrradianceVolume> Volume;
   const mesolight::vlf::LightField* VolumeField = nullptr;
   int VolumeResolution = 0;
-  std::string Problem;
-  std::string ProblemWarned;
+  std::string ProblemWarned; // reported once, until the object or its problem changes
   double LastSeconds = 0.0;
   double LastGatherSeconds = 0.0;
 };

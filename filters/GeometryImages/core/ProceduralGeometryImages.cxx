@@ -138,25 +138,23 @@ GeometryImage MakeGeometryImage(GeometrySurface surface, int width, int height)
 }
 
 //------------------------------------------------------------------------------
-bool DisplaceGeometryImage(const GeometryImage& surface, const std::vector<float>& depth,
-  double depthScale, GeometryImage& displaced, std::string& error)
+GeometryImage DisplaceGeometryImage(
+  const GeometryImage& surface, const std::vector<float>& depth, double depthScale)
 {
   const size_t n = static_cast<size_t>(surface.Width) * surface.Height;
   if (surface.Width < 2 || surface.Height < 2 || surface.Positions.size() != n)
   {
-    error = "the geometry image must be at least 2 x 2 pixels";
-    return false;
+    throw GeometryImageMeshError("the geometry image must be at least 2 x 2 pixels");
   }
   if (depth.size() != n)
   {
     std::ostringstream s;
     s << "the depth map has " << depth.size() << " values; the " << surface.Width << " x "
       << surface.Height << " geometry image needs one per pixel";
-    error = s.str();
-    return false;
+    throw GeometryImageMeshError(s.str());
   }
   const std::vector<glm::dvec3> geometric = GeometryNormals(surface);
-  displaced = GeometryImage();
+  GeometryImage displaced;
   displaced.Width = surface.Width;
   displaced.Height = surface.Height;
   displaced.Positions = surface.Positions;
@@ -200,7 +198,7 @@ bool DisplaceGeometryImage(const GeometryImage& surface, const std::vector<float
       displaced.Positions[k] -= normal * (static_cast<double>(depth[k]) * depthScale * su);
     }
   }
-  return true;
+  return displaced;
 }
 
 } // namespace mesolight

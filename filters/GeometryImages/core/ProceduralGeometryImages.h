@@ -51,10 +51,11 @@ MESOLIGHTGEOMETRYIMAGES_EXPORT GeometryImage MakeGeometryImage(
  * depth 1 over the world length of one u unit; |dP/du| by central differences at full
  * resolution). depth holds W x H values in [0, 1] in the image's pixel order (a depth map of the
  * same size: texel for texel). N: the image's normals, else the geometry's. Empty pixels stay
- * empty. Its stride-1 mesh (SampleRegular) is the reference mesh.
+ * empty. Its stride-1 mesh (SampleRegular) is the reference mesh. Throws GeometryImageMeshError
+ * for an image smaller than 2 x 2 or a depth map of another size.
  */
-MESOLIGHTGEOMETRYIMAGES_EXPORT bool DisplaceGeometryImage(const GeometryImage& surface,
-  const std::vector<float>& depth, double depthScale, GeometryImage& displaced, std::string& error);
+MESOLIGHTGEOMETRYIMAGES_EXPORT GeometryImage DisplaceGeometryImage(
+  const GeometryImage& surface, const std::vector<float>& depth, double depthScale);
 
 } // namespace mesolight
 

@@ -69,10 +69,9 @@ bool IsKnownExtension(const fs::path& path)
   return false;
 }
 
-ImageFileStatus Refuse(ImageFileStatus status, std::string& message, const std::string& text)
+[[noreturn]] void Refuse(ImageFileStatus reason, const std::string& message)
 {
-  message = text;
-  return status;
+  throw ImageFileError(reason, message);
 }
 
 /// Closes an input and drops its pending error text (OpenImageIO keeps it per thread otherwise).
@@ -95,11 +94,11 @@ ImageSampleType SampleType(const OIIO::TypeDesc& format)
   }
 }
 
-ImageFileStatus CheckSpec(const std::string& path, const OIIO::ImageSpec& spec,
-  std::int64_t memoryBudget, ImageFileInfo& info, std::string& message)
+ImageFileInfo CheckSpec(
+  const std::string& path, const OIIO::ImageSpec& spec, std::int64_t memoryBudget)
 {
   return CheckImageHeader(path, spec.width, spec.height, spec.depth, spec.nchannels,
-    SampleType(spec.format), memoryBudget, info, message);
+    SampleType(spec.format), memoryBudget);
 }
 
 /// Little-endian 32-bit integer at `bytes`.
@@ -245,39 +244,34 @@ std::string CheckOpenExrHeaders(const std::string& path, std::int64_t memoryBudg
   return std::string();
 }
 
-/// Opens `path` with OpenImageIO, or says why it cannot.
-std::unique_ptr<OIIO::ImageInput> Open(
-  const std::string& path, std::int64_t memoryBudget, ImageFileStatus& status, std::string& message)
+/// Opens `path` with OpenImageIO, or throws why it cannot.
+std::unique_ptr<OIIO::ImageInput> Open(const std::string& path, std::int64_t memoryBudget)
 {
   bool tooLarge = false;
   const std::string exr = CheckOpenExrHeaders(path, memoryBudget, tooLarge);
   if (!exr.empty())
   {
-    status = tooLarge
-      ? Refuse(ImageFileStatus::TooLarge, message, "Cannot read image '" + path + "': " + exr)
-      : Refuse(ImageFileStatus::FileFormat, message,
-          "Cannot read image '" + path + "': not a valid OpenEXR file: " + exr + ".");
-    return nullptr;
+    if (tooLarge)
+    {
+      Refuse(ImageFileStatus::TooLarge, "Cannot read image '" + path + "': " + exr);
+    }
+    Refuse(ImageFileStatus::FileFormat,
+      "Cannot read image '" + path + "': not a valid OpenEXR file: " + exr + ".");
   }
   const OIIO::ImageSpec config = ReadConfig();
   auto in = OIIO::ImageInput::open(path, &config);
-  status = ImageFileStatus::Ok;
   if (!in)
   {
     const std::string oiioError = OneLineMessage(OIIO::geterror());
     if (IsKnownExtension(fs::path(path)))
     {
-      status = Refuse(ImageFileStatus::FileFormat, message,
+      Refuse(ImageFileStatus::FileFormat,
         "Cannot read image '" + path +
           "': not a valid image of the format its extension names, or corrupt (OpenImageIO: " +
           oiioError + ").");
     }
-    else
-    {
-      status = Refuse(ImageFileStatus::UnrecognizedType, message,
-        "Cannot read image '" + path + "': unrecognized file type (OpenImageIO: " + oiioError +
-          ").");
-    }
+    Refuse(ImageFileStatus::UnrecognizedType,
+      "Cannot read image '" + path + "': unrecognized file type (OpenImageIO: " + oiioError + ").");
   }
   return in;
 }
@@ -314,9 +308,8 @@ std::uint64_t ImageFileInfo::ByteSize() const
 }
 
 //------------------------------------------------------------------------------
-ImageFileStatus CheckImageHeader(const std::string& path, int width, int height, int depth,
-  int channels, ImageSampleType type, std::int64_t memoryBudget, ImageFileInfo& info,
-  std::string& message)
+ImageFileInfo CheckImageHeader(const std::string& path, int width, int height, int depth,
+  int channels, ImageSampleType type, std::int64_t memoryBudget)
 {
   const std::string prefix = "Cannot read image '" + path + "': ";
   if (width <= 0 || height <= 0 || channels <= 0)
@@ -324,13 +317,14 @@ ImageFileStatus CheckImageHeader(const std::string& path, int width, int height,
     std::ostringstream text;
     text << prefix << "zero-sized image (" << width << " x " << height << ", " << channels
          << " channels).";
-    return Refuse(ImageFileStatus::FileFormat, message, text.str());
+    Refuse(ImageFileStatus::FileFormat, text.str());
   }
   if (depth > 1)
   {
-    return Refuse(ImageFileStatus::FileFormat, message,
+    Refuse(ImageFileStatus::FileFormat,
       prefix + "volume images (depth " + std::to_string(depth) + ") are not supported.");
   }
+  ImageFileInfo info;
   info.Width = width;
   info.Height = height;
   info.FileChannels = channels;
@@ -343,21 +337,17 @@ ImageFileStatus CheckImageHeader(const std::string& path, int width, int height,
   const std::string budget = CheckMemoryBudget(what.str(), info.ByteSize(), memoryBudget);
   if (!budget.empty())
   {
-    return Refuse(ImageFileStatus::TooLarge, message, prefix + budget);
+    Refuse(ImageFileStatus::TooLarge, prefix + budget);
   }
-  return ImageFileStatus::Ok;
+  return info;
 }
 
 //------------------------------------------------------------------------------
-ImageFileStatus ReadImageFileInfo(
-  const std::string& path, std::int64_t memoryBudget, ImageFileInfo& info, std::string& message)
+ImageFileInfo ReadImageFileInfo(const std::string& path, std::int64_t memoryBudget)
 {
-  info = ImageFileInfo();
-  message.clear();
   if (path.empty())
   {
-    return Refuse(
-      ImageFileStatus::NoFileName, message, "No FileName set: call SetFileName() before reading.");
+    Refuse(ImageFileStatus::NoFileName, "No FileName set: call SetFileName() before reading.");
   }
   const std::string prefix = "Cannot read image '" + path + "': ";
   const fs::path file(path);
@@ -365,63 +355,56 @@ ImageFileStatus ReadImageFileInfo(
   const fs::file_status status = fs::status(file, ec);
   if (!fs::exists(status))
   {
-    return Refuse(ImageFileStatus::FileNotFound, message, prefix + "file not found.");
+    Refuse(ImageFileStatus::FileNotFound, prefix + "file not found.");
   }
   if (fs::is_directory(status))
   {
-    return Refuse(ImageFileStatus::CannotOpen, message, prefix + "it is a directory, not a file.");
+    Refuse(ImageFileStatus::CannotOpen, prefix + "it is a directory, not a file.");
   }
   if (fs::is_regular_file(status) && fs::file_size(file, ec) == 0 && !ec)
   {
-    return Refuse(ImageFileStatus::FileFormat, message, prefix + "the file is empty (0 bytes).");
+    Refuse(ImageFileStatus::FileFormat, prefix + "the file is empty (0 bytes).");
   }
   if (!std::ifstream(file, std::ios::binary).is_open())
   {
-    return Refuse(
-      ImageFileStatus::CannotOpen, message, prefix + "the file cannot be opened (permissions?).");
+    Refuse(ImageFileStatus::CannotOpen, prefix + "the file cannot be opened (permissions?).");
   }
-  ImageFileStatus openStatus = ImageFileStatus::Ok;
-  auto in = Open(path, memoryBudget, openStatus, message);
-  if (!in)
+  auto in = Open(path, memoryBudget);
+  ImageFileInfo info;
+  try
   {
-    return openStatus;
+    info = CheckSpec(path, in->spec(), memoryBudget);
   }
-  const ImageFileStatus result = CheckSpec(path, in->spec(), memoryBudget, info, message);
+  catch (const ImageFileError&)
+  {
+    Close(*in);
+    throw;
+  }
   info.FormatName = in->format_name();
   Close(*in);
-  if (result != ImageFileStatus::Ok)
-  {
-    const std::string format = info.FormatName;
-    info = ImageFileInfo();
-    info.FormatName = format;
-  }
-  return result;
+  return info;
 }
 
 //------------------------------------------------------------------------------
-ImageFileStatus ReadImageFilePixels(const std::string& path, const ImageFileInfo& info,
-  void* pixels, std::string& message, const std::function<bool(float)>& progress, bool* aborted)
+bool ReadImageFilePixels(const std::string& path, const ImageFileInfo& info, void* pixels,
+  const std::function<bool(float)>& progress)
 {
-  message.clear();
-  if (aborted)
-  {
-    *aborted = false;
-  }
-  ImageFileStatus status = ImageFileStatus::Ok;
-  auto in = Open(path, 0, status, message);
-  if (!in)
-  {
-    return status;
-  }
+  auto in = Open(path, 0);
   // The file may have changed since its header was read: never write past `pixels`.
-  ImageFileInfo now;
-  status = CheckSpec(path, in->spec(), 0, now, message);
-  if (status != ImageFileStatus::Ok || now.Width != info.Width || now.Height != info.Height ||
-    now.Channels != info.Channels || now.Type != info.Type || info.Width <= 0 || info.Height <= 0 ||
-    !pixels)
+  bool changed = true;
+  try
+  {
+    const ImageFileInfo now = CheckSpec(path, in->spec(), 0);
+    changed = now.Width != info.Width || now.Height != info.Height ||
+      now.Channels != info.Channels || now.Type != info.Type;
+  }
+  catch (const ImageFileError&)
+  {
+  }
+  if (changed || info.Width <= 0 || info.Height <= 0 || !pixels)
   {
     Close(*in);
-    return Refuse(ImageFileStatus::FileFormat, message,
+    Refuse(ImageFileStatus::FileFormat,
       "Cannot read image '" + path + "': the file changed while it was read.");
   }
   const OIIO::TypeDesc format = info.Type == ImageSampleType::UInt8 ? OIIO::TypeDesc::UINT8
@@ -443,19 +426,15 @@ ImageFileStatus ReadImageFilePixels(const std::string& path, const ImageFileInfo
   Close(*in);
   if (stopped)
   {
-    if (aborted)
-    {
-      *aborted = true;
-    }
-    return ImageFileStatus::Ok;
+    return false;
   }
   if (!ok)
   {
-    return Refuse(ImageFileStatus::FileFormat, message,
+    Refuse(ImageFileStatus::FileFormat,
       "Cannot read the pixels of image '" + path +
         "': the file is truncated or corrupt (OpenImageIO: " + oiioError + ").");
   }
-  return ImageFileStatus::Ok;
+  return true;
 }
 
 //------------------------------------------------------------------------------

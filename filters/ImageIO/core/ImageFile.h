@@ -9,8 +9,8 @@
  * a missing, unreadable, empty or directory path; a file OpenImageIO cannot open (corrupt, or of
  * no known type); a zero-sized image or one without channels; a volume (depth > 1); pixels whose
  * size exceeds the memory budget, refused before anything is allocated; a file that changed
- * between the header and the pixels; truncated pixel data. Each refusal is a status and one
- * sentence naming the file.
+ * between the header and the pixels; truncated pixel data. Each refusal throws ImageFileError: its
+ * reason (which vtkOIIOImageReader maps to a vtkErrorCode) and one sentence naming the file.
  */
 #ifndef mesolight_ImageFile_h
 #define mesolight_ImageFile_h
@@ -20,6 +20,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <stdexcept>
 #include <string>
 
 namespace mesolight
@@ -33,16 +34,31 @@ enum class ImageSampleType
   Float
 };
 
-/** Why a file was refused (vtkOIIOImageReader maps these to vtkErrorCode values). */
+/** Why a file was refused (ImageFileError::GetReason; vtkOIIOImageReader maps these to
+ *  vtkErrorCode values). */
 enum class ImageFileStatus
 {
-  Ok,
   NoFileName,
   FileNotFound,
   CannotOpen,       // a directory, no permission
   UnrecognizedType, // OpenImageIO knows neither the extension nor the contents
   FileFormat,       // corrupt, zero-sized, a volume, truncated, changed while reading
   TooLarge          // the pixels would exceed the memory budget
+};
+
+/** A refused file; what() is one sentence for the user that names the file. */
+class MESOLIGHTIMAGEIO_EXPORT ImageFileError : public std::runtime_error
+{
+public:
+  ImageFileError(ImageFileStatus reason, const std::string& message)
+    : std::runtime_error(message)
+    , Reason(reason)
+  {
+  }
+  ImageFileStatus GetReason() const { return this->Reason; }
+
+private:
+  ImageFileStatus Reason;
 };
 
 /** What the header says, as it will be read. */
@@ -64,29 +80,30 @@ struct MESOLIGHTIMAGEIO_EXPORT ImageFileInfo
 /**
  * The checks of a header, as OpenImageIO's ImageSpec gives it (ReadImageFileInfo calls this):
  * refuses a zero size or no channels, a volume (depth > 1), and pixels beyond `memoryBudget`
- * (bytes; 0: the machine's memory); keeps at most 4 channels. Fills `info` when accepted.
+ * (bytes; 0: the machine's memory); keeps at most 4 channels. Returns the header as it will be
+ * read (FormatName empty); throws ImageFileError (FileFormat, TooLarge) when refused.
  */
-MESOLIGHTIMAGEIO_EXPORT ImageFileStatus CheckImageHeader(const std::string& path, int width,
-  int height, int depth, int channels, ImageSampleType type, std::int64_t memoryBudget,
-  ImageFileInfo& info, std::string& message);
+MESOLIGHTIMAGEIO_EXPORT ImageFileInfo CheckImageHeader(const std::string& path, int width,
+  int height, int depth, int channels, ImageSampleType type, std::int64_t memoryBudget);
 
 /**
  * Opens `path` and checks its header. `memoryBudget`: bytes the pixels may take (0: the
- * machine's memory, see EffectiveMemoryBudget). On a refusal `message` is one sentence that
- * starts "Cannot read image '<path>'".
+ * machine's memory, see EffectiveMemoryBudget). Throws ImageFileError on a refusal, whose
+ * what() starts "Cannot read image '<path>'" (or says that no file name was given).
  */
-MESOLIGHTIMAGEIO_EXPORT ImageFileStatus ReadImageFileInfo(
-  const std::string& path, std::int64_t memoryBudget, ImageFileInfo& info, std::string& message);
+MESOLIGHTIMAGEIO_EXPORT ImageFileInfo ReadImageFileInfo(
+  const std::string& path, std::int64_t memoryBudget);
 
 /**
  * Reads the pixels of `path`, whose header `info` is (from ReadImageFileInfo), into `pixels`
  * (info.ByteSize() bytes), bottom row first (VTK's order; files store the top row first),
- * interleaved channels. progress(portion done) may return true to stop: then `aborted` is set and
- * Ok returned. A file whose header no longer matches `info` is refused.
+ * interleaved channels. progress(portion done) may return true to stop: then returns false
+ * (the pixels are incomplete), else true. Throws ImageFileError (FileFormat) for a file whose
+ * header no longer matches `info` or whose pixels are truncated or corrupt, and as
+ * ReadImageFileInfo for a file that no longer opens.
  */
-MESOLIGHTIMAGEIO_EXPORT ImageFileStatus ReadImageFilePixels(const std::string& path,
-  const ImageFileInfo& info, void* pixels, std::string& message,
-  const std::function<bool(float)>& progress = {}, bool* aborted = nullptr);
+MESOLIGHTIMAGEIO_EXPORT bool ReadImageFilePixels(const std::string& path, const ImageFileInfo& info,
+  void* pixels, const std::function<bool(float)>& progress = {});
 
 /** True when `path` is a regular file OpenImageIO opens as a non-empty image. */
 MESOLIGHTIMAGEIO_EXPORT bool CanReadImageFile(const std::string& path);

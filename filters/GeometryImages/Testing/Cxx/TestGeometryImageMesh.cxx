@@ -99,6 +99,20 @@ void ExpectWatertight(const GeometryImageMesh& mesh, int w, int h)
   EXPECT_GT(interior, 0);
   EXPECT_GT(border, 0);
 }
+/// The message of the GeometryImageMeshError `call` throws, or "" when it throws none.
+template <typename Call>
+std::string Refusal(const Call& call)
+{
+  try
+  {
+    call();
+  }
+  catch (const GeometryImageMeshError& e)
+  {
+    return e.what();
+  }
+  return std::string();
+}
 } // namespace
 
 TEST(GeometryImageMesh, PlaneIsExactAtEveryStride)
@@ -220,38 +234,25 @@ TEST(GeometryImageMesh, NaNHolesDropTheirQuads)
 TEST(GeometryImageMesh, BadInputIsRefusedWithAMessage)
 {
   const GeometryImage plane = MakeGeometryImage(GeometrySurface::Plane, 20, 10);
-  // The message of the GeometryImageMeshError `sample` throws, or "" when it throws none.
-  const auto refusal = [](const auto& sample) -> std::string
-  {
-    try
-    {
-      sample();
-    }
-    catch (const GeometryImageMeshError& e)
-    {
-      return e.what();
-    }
-    return std::string();
-  };
-  std::string error = refusal([&] { SampleRegular(plane, 0); });
+  std::string error = Refusal([&] { SampleRegular(plane, 0); });
   EXPECT_NE(error.find("stride 0"), std::string::npos) << error;
-  error = refusal([&] { SampleRegular(plane, 20); });
+  error = Refusal([&] { SampleRegular(plane, 20); });
   EXPECT_NE(error.find("1..19"), std::string::npos) << error;
   GeometryImageMesh mesh;
   ASSERT_NO_THROW(mesh = SampleRegular(plane, 19));
   EXPECT_EQ(mesh.Triangles.size(), 2u);
-  error = refusal([&] { SampleAdaptive(plane, 0.0); });
+  error = Refusal([&] { SampleAdaptive(plane, 0.0); });
   EXPECT_NE(error.find("tolerance"), std::string::npos) << error;
   GeometryImage empty = plane;
   for (glm::dvec3& p : empty.Positions)
   {
     p = glm::dvec3(std::numeric_limits<double>::quiet_NaN());
   }
-  error = refusal([&] { SampleRegular(empty, 4); });
+  error = Refusal([&] { SampleRegular(empty, 4); });
   EXPECT_NE(error.find("empty"), std::string::npos) << error;
-  EXPECT_FALSE(refusal([&] { SampleAdaptive(empty, 0.01); }).empty());
+  EXPECT_FALSE(Refusal([&] { SampleAdaptive(empty, 0.01); }).empty());
   const GeometryImage line = MakeGeometryImage(GeometrySurface::Plane, 20, 1);
-  error = refusal([&] { SampleRegular(line, 1); });
+  error = Refusal([&] { SampleRegular(line, 1); });
   EXPECT_NE(error.find("2 x 2"), std::string::npos) << error;
 }
 
@@ -320,9 +321,7 @@ TEST(GeometryImageMesh, DisplacementMovesAlongTheNormalByDepthTimesScale)
   const int w = 64, h = 32;
   const GeometryImage cylinder = MakeGeometryImage(GeometrySurface::Cylinder, w, h);
   std::vector<float> depth(static_cast<size_t>(w) * h, 0.5f);
-  GeometryImage displaced;
-  std::string error;
-  ASSERT_TRUE(DisplaceGeometryImage(cylinder, depth, 0.04, displaced, error)) << error;
+  const GeometryImage displaced = DisplaceGeometryImage(cylinder, depth, 0.04);
   const double r = 1.5 / Pi<double>;
   // |dP/du| is 1 (arc length 1); the central difference of the chord is sin(x)/x short of it.
   const double x = 2.0 * Pi<double> / 3.0 / w;
@@ -335,7 +334,8 @@ TEST(GeometryImageMesh, DisplacementMovesAlongTheNormalByDepthTimesScale)
       EXPECT_NEAR(std::hypot(p.x - 0.5, p.z + r), expected, 1e-12);
     }
   }
-  EXPECT_FALSE(DisplaceGeometryImage(cylinder, std::vector<float>(10), 0.04, displaced, error));
+  const std::string error =
+    Refusal([&] { DisplaceGeometryImage(cylinder, std::vector<float>(10), 0.04); });
   EXPECT_NE(error.find("one per pixel"), std::string::npos) << error;
 }
 

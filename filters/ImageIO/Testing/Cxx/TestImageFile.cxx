@@ -13,11 +13,14 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <optional>
+#include <stdexcept>
 #include <string>
 #include <unistd.h>
 #include <vector>
 
 namespace fs = std::filesystem;
+using mesolight::ImageFileError;
 using mesolight::ImageFileInfo;
 using mesolight::ImageFileStatus;
 using mesolight::ImageSampleType;
@@ -62,10 +65,51 @@ void WriteBytes(const fs::path& file, const std::string& bytes)
   std::ofstream(file, std::ios::binary) << bytes;
 }
 
-ImageFileStatus Info(
+/// What a call of the core gave: nothing when it accepted, else the ImageFileError's reason,
+/// with its what() in `message`.
+using Outcome = std::optional<ImageFileStatus>;
+const Outcome Accepted = std::nullopt;
+
+template <typename Call>
+Outcome Refusal(std::string& message, const Call& call)
+{
+  message.clear();
+  try
+  {
+    call();
+    return Accepted;
+  }
+  catch (const ImageFileError& e)
+  {
+    message = e.what();
+    return e.GetReason();
+  }
+}
+
+Outcome Info(
   const fs::path& file, ImageFileInfo& info, std::string& message, std::int64_t budget = 0)
 {
-  return mesolight::ReadImageFileInfo(file.string(), budget, info, message);
+  return Refusal(message, [&] { info = mesolight::ReadImageFileInfo(file.string(), budget); });
+}
+
+Outcome Header(const std::string& path, int width, int height, int depth, int channels,
+  ImageSampleType type, std::int64_t budget, ImageFileInfo& info, std::string& message)
+{
+  return Refusal(message,
+    [&]
+    { info = mesolight::CheckImageHeader(path, width, height, depth, channels, type, budget); });
+}
+
+Outcome Pixels(const fs::path& file, const ImageFileInfo& info, void* pixels, std::string& message)
+{
+  return Refusal(message,
+    [&]
+    {
+      if (!mesolight::ReadImageFilePixels(file.string(), info, pixels))
+      {
+        throw std::logic_error("stopped without a progress callback");
+      }
+    });
 }
 }
 
@@ -118,23 +162,20 @@ TEST(ImageFile, ZeroSizeAndNoChannelsAreRefused)
   std::string message;
   for (const auto& size : { std::vector<int>{ 0, 4, 3 }, { 4, 0, 3 }, { 4, 4, 0 }, { -1, 4, 3 } })
   {
-    EXPECT_EQ(mesolight::CheckImageHeader(
-                "x.png", size[0], size[1], 1, size[2], ImageSampleType::UInt8, 0, info, message),
+    EXPECT_EQ(
+      Header("x.png", size[0], size[1], 1, size[2], ImageSampleType::UInt8, 0, info, message),
       ImageFileStatus::FileFormat);
     EXPECT_NE(message.find("zero-sized image"), std::string::npos) << message;
   }
   // The same check accepts a 1 x 1 image of one channel.
-  EXPECT_EQ(
-    mesolight::CheckImageHeader("x.png", 1, 1, 1, 1, ImageSampleType::UInt8, 0, info, message),
-    ImageFileStatus::Ok);
+  EXPECT_EQ(Header("x.png", 1, 1, 1, 1, ImageSampleType::UInt8, 0, info, message), Accepted);
 }
 
 TEST(ImageFile, VolumesAreRefused)
 {
   ImageFileInfo info;
   std::string message;
-  EXPECT_EQ(
-    mesolight::CheckImageHeader("v.tif", 4, 4, 3, 1, ImageSampleType::Float, 0, info, message),
+  EXPECT_EQ(Header("v.tif", 4, 4, 3, 1, ImageSampleType::Float, 0, info, message),
     ImageFileStatus::FileFormat);
   EXPECT_NE(message.find("volume images (depth 3)"), std::string::npos) << message;
 }
@@ -143,23 +184,18 @@ TEST(ImageFile, AtMostFourChannelsAreRead)
 {
   ImageFileInfo info;
   std::string message;
-  ASSERT_EQ(
-    mesolight::CheckImageHeader("c.exr", 2, 3, 1, 7, ImageSampleType::Float, 0, info, message),
-    ImageFileStatus::Ok);
+  ASSERT_EQ(Header("c.exr", 2, 3, 1, 7, ImageSampleType::Float, 0, info, message), Accepted);
   EXPECT_EQ(info.FileChannels, 7);
   EXPECT_EQ(info.Channels, 4);
   EXPECT_EQ(info.ByteSize(), 2u * 3u * 4u * 4u);
 
   const fs::path dir = TempDir("channels");
   ASSERT_TRUE(WriteFloat(dir / "six.exr", 3, 2, 6));
-  ASSERT_EQ(Info(dir / "six.exr", info, message), ImageFileStatus::Ok) << message;
+  ASSERT_EQ(Info(dir / "six.exr", info, message), Accepted) << message;
   EXPECT_EQ(info.FileChannels, 6);
   EXPECT_EQ(info.Channels, 4);
   std::vector<float> pixels(3 * 2 * 4);
-  ASSERT_EQ(
-    mesolight::ReadImageFilePixels((dir / "six.exr").string(), info, pixels.data(), message),
-    ImageFileStatus::Ok)
-    << message;
+  ASSERT_EQ(Pixels(dir / "six.exr", info, pixels.data(), message), Accepted) << message;
   // Bottom row first: pixel (0, 1) of the file, channels 0..3 of 6.
   EXPECT_EQ(pixels[0], 18.f);
   EXPECT_EQ(pixels[3], 21.f);
@@ -175,18 +211,14 @@ TEST(ImageFile, AbsurdDimensionsAreRefusedBeforeAllocating)
   EXPECT_EQ(
     Info(dir / "huge.pfm", info, message, std::int64_t(1) << 30), ImageFileStatus::TooLarge);
   EXPECT_NE(message.find("100000 x 100000"), std::string::npos) << message;
-  EXPECT_EQ(info.ByteSize(), 0u); // nothing to allocate on a refusal
 
   // The budget decides: 2 x 2 RGB floats (48 bytes) fit 64 bytes, not 32.
-  EXPECT_EQ(
-    mesolight::CheckImageHeader("s.exr", 2, 2, 1, 3, ImageSampleType::Float, 64, info, message),
-    ImageFileStatus::Ok);
-  EXPECT_EQ(
-    mesolight::CheckImageHeader("s.exr", 2, 2, 1, 3, ImageSampleType::Float, 32, info, message),
+  EXPECT_EQ(Header("s.exr", 2, 2, 1, 3, ImageSampleType::Float, 64, info, message), Accepted);
+  EXPECT_EQ(Header("s.exr", 2, 2, 1, 3, ImageSampleType::Float, 32, info, message),
     ImageFileStatus::TooLarge);
   // Sides near 2^31 do not overflow the size.
-  EXPECT_EQ(mesolight::CheckImageHeader("m.exr", std::numeric_limits<int>::max(),
-              std::numeric_limits<int>::max(), 1, 4, ImageSampleType::Float, 0, info, message),
+  EXPECT_EQ(Header("m.exr", std::numeric_limits<int>::max(), std::numeric_limits<int>::max(), 1, 4,
+              ImageSampleType::Float, 0, info, message),
     ImageFileStatus::TooLarge);
 }
 
@@ -201,10 +233,9 @@ TEST(ImageFile, TruncatedPixelsAreRefused)
   std::string message;
   const std::uintmax_t size = fs::file_size(dir / "t.pfm");
   fs::resize_file(dir / "t.pfm", size / 2);
-  ASSERT_EQ(Info(dir / "t.pfm", info, message), ImageFileStatus::Ok) << message;
+  ASSERT_EQ(Info(dir / "t.pfm", info, message), Accepted) << message;
   std::vector<float> pixels(static_cast<std::size_t>(info.ByteSize() / 4));
-  EXPECT_EQ(mesolight::ReadImageFilePixels((dir / "t.pfm").string(), info, pixels.data(), message),
-    ImageFileStatus::FileFormat);
+  EXPECT_EQ(Pixels(dir / "t.pfm", info, pixels.data(), message), ImageFileStatus::FileFormat);
   EXPECT_NE(message.find("truncated or corrupt"), std::string::npos) << message;
 }
 
@@ -214,14 +245,12 @@ TEST(ImageFile, AFileThatChangedAfterItsHeaderIsRefused)
   ASSERT_TRUE(WriteFloat(dir / "c.exr", 4, 4, 1));
   ImageFileInfo info;
   std::string message;
-  ASSERT_EQ(Info(dir / "c.exr", info, message), ImageFileStatus::Ok) << message;
+  ASSERT_EQ(Info(dir / "c.exr", info, message), Accepted) << message;
   std::vector<float> pixels(16);
   // Unchanged, it reads; grown to 64 x 64 it would write past the 16 floats.
-  EXPECT_EQ(mesolight::ReadImageFilePixels((dir / "c.exr").string(), info, pixels.data(), message),
-    ImageFileStatus::Ok);
+  EXPECT_EQ(Pixels(dir / "c.exr", info, pixels.data(), message), Accepted);
   ASSERT_TRUE(WriteFloat(dir / "c.exr", 64, 64, 1));
-  EXPECT_EQ(mesolight::ReadImageFilePixels((dir / "c.exr").string(), info, pixels.data(), message),
-    ImageFileStatus::FileFormat);
+  EXPECT_EQ(Pixels(dir / "c.exr", info, pixels.data(), message), ImageFileStatus::FileFormat);
   EXPECT_NE(message.find("changed while it was read"), std::string::npos) << message;
 }
 
@@ -233,10 +262,9 @@ TEST(ImageFile, NonFiniteSamplesAreCounted)
   ASSERT_TRUE(WriteFloat(dir / "n.exr", 2, 2, 1, { 1.f, nan, -inf, 3e38f }));
   ImageFileInfo info;
   std::string message;
-  ASSERT_EQ(Info(dir / "n.exr", info, message), ImageFileStatus::Ok) << message;
+  ASSERT_EQ(Info(dir / "n.exr", info, message), Accepted) << message;
   std::vector<float> pixels(4);
-  ASSERT_EQ(mesolight::ReadImageFilePixels((dir / "n.exr").string(), info, pixels.data(), message),
-    ImageFileStatus::Ok);
+  ASSERT_EQ(Pixels(dir / "n.exr", info, pixels.data(), message), Accepted);
   EXPECT_EQ(mesolight::CountNonFiniteSamples(pixels.data(), pixels.size()), 2u);
   const float finite[3] = { 0.f, -1.f, 3e38f };
   EXPECT_EQ(mesolight::CountNonFiniteSamples(finite, 3), 0u);
@@ -248,13 +276,13 @@ TEST(ImageFile, StoppingThroughProgressReadsNothingFurther)
   ASSERT_TRUE(WriteFloat(dir / "a.exr", 8, 300, 1));
   ImageFileInfo info;
   std::string message;
-  ASSERT_EQ(Info(dir / "a.exr", info, message), ImageFileStatus::Ok) << message;
+  ASSERT_EQ(Info(dir / "a.exr", info, message), Accepted) << message;
   std::vector<float> pixels(8 * 300);
-  bool aborted = false;
-  EXPECT_EQ(mesolight::ReadImageFilePixels((dir / "a.exr").string(), info, pixels.data(), message,
-              [](float) { return true; }, &aborted),
-    ImageFileStatus::Ok);
-  EXPECT_TRUE(aborted);
+  // Not a refusal: false, the pixels incomplete.
+  EXPECT_FALSE(mesolight::ReadImageFilePixels(
+    (dir / "a.exr").string(), info, pixels.data(), [](float) { return true; }));
+  EXPECT_TRUE(mesolight::ReadImageFilePixels(
+    (dir / "a.exr").string(), info, pixels.data(), [](float) { return false; }));
 }
 
 TEST(ImageFile, OpenExrAttributesLargerThanTheFileAreRefused)
@@ -292,7 +320,7 @@ TEST(ImageFile, OpenExrAttributesLargerThanTheFileAreRefused)
   // A valid file passes the same walk, within a budget of its size but not below it: 3 x 5 x 2
   // floats and ZIP's 16-line chunks (the walk's estimate: 3 x 16 x 8 = 384 bytes).
   ASSERT_TRUE(WriteFloat(dir / "valid.exr", 3, 5, 2));
-  EXPECT_EQ(Info(dir / "valid.exr", info, message), ImageFileStatus::Ok) << message;
-  EXPECT_EQ(Info(dir / "valid.exr", info, message, 384), ImageFileStatus::Ok) << message;
+  EXPECT_EQ(Info(dir / "valid.exr", info, message), Accepted) << message;
+  EXPECT_EQ(Info(dir / "valid.exr", info, message, 384), Accepted) << message;
   EXPECT_EQ(Info(dir / "valid.exr", info, message, 383), ImageFileStatus::TooLarge) << message;
 }

@@ -4,7 +4,7 @@
 // abort, a clear error over the memory budget, snapshots written / resumed / never over a
 // foreign file, the irradiance query, PrintSelf; the radiance atlas it attaches for drawing
 // (bilinear at each vertex's atlas coordinates = the vertex's Radiance); an empty parallel piece.
-#include "vtkVirtualLightField.h"
+#include "vtkVirtualLightFieldCore.h"
 
 #include "LightField.h"
 #include "MessageCapture.h"
@@ -162,8 +162,8 @@ TEST(VLFVirtualLightField, CornellBoxRadiance)
   filter->AddObserver(vtkCommand::ProgressEvent, progress);
   filter->Update();
   vtkPolyData* out = filter->GetOutput();
-  ASSERT_NE(filter->GetLightField(), nullptr);
-  EXPECT_EQ(filter->GetLightField()->IterationsDone, 2);
+  ASSERT_NE(vtkVirtualLightFieldCore::GetLightField(filter), nullptr);
+  EXPECT_EQ(vtkVirtualLightFieldCore::GetLightField(filter)->IterationsDone, 2);
   EXPECT_GT(progress->ProgressEvents, 2);
   vtkDataArray* cells = out->GetCellData()->GetArray("Radiance");
   vtkDataArray* points = out->GetPointData()->GetArray("Radiance");
@@ -232,7 +232,7 @@ TEST(VLFVirtualLightField, BudgetAbortAndSnapshots)
   filter->Update();
   EXPECT_TRUE(messages->HasError("memory budget") || messages->HasWarning("memory budget"))
     << messages->AllErrors() << messages->AllWarnings();
-  EXPECT_EQ(filter->GetLightField(), nullptr);
+  EXPECT_EQ(vtkVirtualLightFieldCore::GetLightField(filter), nullptr);
   filter->SetMemoryBudget(vtkTypeInt64(1) << 30);
 
   // A file the user made is never replaced.
@@ -257,13 +257,13 @@ TEST(VLFVirtualLightField, BudgetAbortAndSnapshots)
   std::remove(snapshot.c_str());
   filter->SetSnapshotFileName(snapshot.c_str());
   filter->Update();
-  ASSERT_NE(filter->GetLightField(), nullptr);
+  ASSERT_NE(vtkVirtualLightFieldCore::GetLightField(filter), nullptr);
   filter->SetResumeFromSnapshot(true);
   filter->SetIterations(3);
   filter->Update();
-  ASSERT_NE(filter->GetLightField(), nullptr);
-  EXPECT_EQ(filter->GetLightField()->IterationsDone, 3);
-  EXPECT_EQ(filter->GetLightField()->EnergyLog.size(), 3u);
+  ASSERT_NE(vtkVirtualLightFieldCore::GetLightField(filter), nullptr);
+  EXPECT_EQ(vtkVirtualLightFieldCore::GetLightField(filter)->IterationsDone, 3);
+  EXPECT_EQ(vtkVirtualLightFieldCore::GetLightField(filter)->EnergyLog.size(), 3u);
 
   // Abort from a progress observer.
   vtkNew<vtkVirtualLightField> aborted;
@@ -276,7 +276,7 @@ TEST(VLFVirtualLightField, BudgetAbortAndSnapshots)
   vtkNew<MessageCapture> abortMessages;
   abortMessages->Watch(aborted);
   aborted->Update();
-  EXPECT_EQ(aborted->GetLightField(), nullptr);
+  EXPECT_EQ(vtkVirtualLightFieldCore::GetLightField(aborted), nullptr);
   EXPECT_TRUE(abortMessages->HasWarning("aborted")) << abortMessages->AllWarnings();
 }
 

@@ -6,6 +6,7 @@
 // tracer (a testing flag) the masks fail. The actor's matrix moves it in the image and
 // invalidates the traced reflections; vtkLightFieldObjectMapper's three shadings; weak
 // references; bad objects reported, never a crash.
+#include "MessageCapture.h"
 #include "ObjectTestReference.h"
 #include "WalkthroughTestViewer.h"
 
@@ -432,18 +433,20 @@ TEST(LightFieldObject, BadObjectsAreReportedNotCrashed)
   const vlf::LightField& field = MirrorCornellField(513);
   ObjectViewer viewer(field);
   vtkLightFieldActor* actor = viewer.View.Actor;
-  // Outside the field, and through a wall: shown, with a message.
+  vtkNew<mesolight_test::MessageCapture> log;
+  log->Watch(actor);
+  // Outside the field, and through a wall: shown, with a warning.
   viewer.Place(glm::vec3(278.0f, 273.0f, -2000.0f));
   viewer.View.Render(vtkLightFieldActor::Coherent);
-  EXPECT_NE(actor->GetLastObjectProblem().find("outside"), std::string::npos)
-    << actor->GetLastObjectProblem();
+  EXPECT_TRUE(log->HasWarning("outside")) << log->AllWarnings();
+  log->Clear();
   viewer.Place(glm::vec3(550.0f, 273.0f, 280.0f));
   viewer.View.Render(vtkLightFieldActor::Coherent);
-  EXPECT_NE(actor->GetLastObjectProblem().find("intersects"), std::string::npos)
-    << actor->GetLastObjectProblem();
+  EXPECT_TRUE(log->HasWarning("intersects")) << log->AllWarnings();
+  log->Clear();
   viewer.Place(AboveBlock);
   viewer.View.Render(vtkLightFieldActor::Coherent);
-  EXPECT_EQ(actor->GetLastObjectProblem(), "");
+  EXPECT_EQ(log->AllWarnings() + log->AllErrors(), "");
   // No normals: computed (the same image as with them).
   const Images withNormals = viewer.View.Render(vtkLightFieldActor::Coherent);
   viewer.Mapper->SetInputData(ToPolyData(viewer.Sphere, false));
@@ -465,14 +468,15 @@ TEST(LightFieldObject, BadObjectsAreReportedNotCrashed)
   lines->SetPoints(points);
   lines->SetLines(cells);
   viewer.Mapper->SetInputData(lines);
+  log->Clear();
   viewer.View.Render(vtkLightFieldActor::Raytrace);
-  EXPECT_NE(actor->GetLastObjectProblem().find("no triangles"), std::string::npos)
-    << actor->GetLastObjectProblem();
+  EXPECT_TRUE(log->HasError("no triangles")) << log->AllErrors();
   EXPECT_EQ(vtkLightFieldActorCore::GetShadedObject(actor), nullptr);
   viewer.Mapper->SetInputData(viewer.Input);
   viewer.Object->SetScale(0.0);
+  log->Clear();
   viewer.View.Render(vtkLightFieldActor::Progressive);
-  EXPECT_FALSE(actor->GetLastObjectProblem().empty());
+  EXPECT_TRUE(log->HasError("movable object")) << log->AllErrors();
   viewer.Object->SetScale(110.0);
   viewer.View.Render(vtkLightFieldActor::Coherent);
   EXPECT_NE(vtkLightFieldActorCore::GetShadedObject(actor), nullptr);
