@@ -23,6 +23,7 @@
 #include "Snapshot.h"
 #include "TextureComparison.h"
 #include "TriangleScene.h"
+#include "vtkLightFieldReducer.h"
 
 #include <vtkImageData.h>
 #include <vtkNew.h>
@@ -182,6 +183,15 @@ int Propagate(const std::vector<std::string>& args)
     return 1;
   }
   const std::uint64_t budgetBytes = static_cast<std::uint64_t>(budget * 1073741824.0);
+  // Under mpiexec (vtkMPIController, mesolight.cxx) the directions are split among the ranks
+  // (Distribution.h); rank 0 prints and writes FIELD. One rank is the serial path.
+  vlf::ControllerReducer reducer;
+  const bool distributed = reducer.Size() > 1;
+  const bool root = reducer.Rank() == 0;
+  if (!root)
+  {
+    std::cout.setstate(std::ios::failbit); // one rank speaks; errors are agreed, rank 0 prints
+  }
   try
   {
     std::unique_ptr<vlf::LightField> field;
@@ -193,7 +203,21 @@ int Propagate(const std::vector<std::string>& args)
                   << "'; do not name a scene\n";
         return 2;
       }
-      field = vlf::ReadSnapshot(out, budgetBytes);
+      if (distributed)
+      {
+        // Every rank reads FIELD, whatever the rank count it was written with, then keeps its
+        // own directions' maps.
+        vlf::Agree(reducer,
+          [&]()
+          {
+            field = vlf::ReadSnapshot(out, budgetBytes);
+            vlf::KeepOwnedSubfields(*field, reducer);
+          });
+      }
+      else
+      {
+        field = vlf::ReadSnapshot(out, budgetBytes);
+      }
       // A resumed field keeps the settings it was traced with: other values given here would be
       // silently ignored, so they are refused, naming both.
       const vlf::LightFieldSettings& stored = field->Settings();
@@ -227,6 +251,17 @@ int Propagate(const std::vector<std::string>& args)
         scene = MakeCornellBox();
         std::cout << "scene: the built-in Cornell box\n";
       }
+      else if (distributed)
+      {
+        vlf::Agree(reducer,
+          [&]()
+          {
+            mesolight::ObjSceneRead read = mesolight::ReadObjScene(cl.Positional()[0]);
+            scene = std::move(read.Scene);
+          });
+        std::cout << "scene: " << cl.Positional()[0] << " (" << scene.TriangleCount()
+                  << " triangles, " << scene.Materials.size() << " materials)\n";
+      }
       else
       {
         mesolight::ObjSceneRead read = mesolight::ReadObjScene(cl.Positional()[0]);
@@ -243,17 +278,42 @@ int Propagate(const std::vector<std::string>& args)
       settings.RaysPerSide = rays;
       settings.TilesPerSide = tiles > 0 ? tiles : std::max(1, rays / 8);
       settings.MemoryBudget = budgetBytes;
-      const vlf::MemoryEstimate estimate = vlf::EstimateMemory(scene, settings);
+      const vlf::MemoryEstimate estimate = distributed ? vlf::MemoryEstimate()
+                                                       : vlf::EstimateMemory(scene, settings);
       std::cout << "light field: " << directions << " directions x " << rays << "x" << rays
                 << " rays, " << settings.TilesPerSide << "x" << settings.TilesPerSide
-                << " tiles; memory up to " << estimate.Describe() << "\n";
+                << " tiles";
+      if (distributed)
+      {
+        std::cout << ", directions split over " << reducer.Size() << " MPI ranks\n";
+      }
+      else
+      {
+        std::cout << "; memory up to " << estimate.Describe() << "\n";
+      }
       const Clock::time_point start = Clock::now();
-      field = vlf::LightField::Build(scene, settings, PrintedProgress("tracing subfields"));
+      field = vlf::LightField::Build(scene, settings,
+        root ? PrintedProgress("tracing subfields") : ProgressCallback(),
+        distributed ? &reducer : nullptr);
       std::cout << "traced in " << SecondsSince(start) << " s, "
                 << FormatBytes(field->AllocatedBytes()) << " allocated\n";
     }
     vlf::PropagationOptions options;
-    options.Progress = PrintedProgress("propagating");
+    options.Progress = root ? PrintedProgress("propagating") : ProgressCallback();
+    options.Reduce = distributed ? &reducer : nullptr;
+    bool written = false;
+    const auto write = [&](const vlf::LightField& f)
+    {
+      if (distributed)
+      {
+        vlf::WriteDistributedSnapshot(*field, out, reducer);
+      }
+      else
+      {
+        vlf::WriteSnapshot(f, out);
+      }
+      written = true;
+    };
     vlf::Propagate(*field, iterations, options,
       [&](const vlf::LightField& f)
       {
@@ -262,14 +322,18 @@ int Propagate(const std::vector<std::string>& args)
           // The snapshot gets the filtered totals; the propagation goes on with the raw ones.
           const std::vector<glm::vec3> raw = f.TotalDiffuse;
           vlf::FilterTotalDiffuse(*field, vlf::TextureFilterSettings());
-          vlf::WriteSnapshot(f, out);
+          write(f);
           field->TotalDiffuse = raw;
         }
         else
         {
-          vlf::WriteSnapshot(f, out);
+          write(f);
         }
         const vlf::LightField::IterationEnergy& e = f.EnergyLog.back();
+        if (!root)
+        {
+          return;
+        }
         std::printf(
           "iteration %d: %.2f s, shot %.4g, escaped %.4g, absorbed %.4g, left to shoot %.4g "
           "(energy balance error %.1e); wrote %s\n",
@@ -278,11 +342,28 @@ int Propagate(const std::vector<std::string>& args)
           e.Unshot[0] + e.Unshot[1] + e.Unshot[2], e.ConservationError(), out.c_str());
         std::fflush(stdout);
       });
-    if (field->IterationsDone >= iterations && !vlf::FileExists(out))
+    // (Decided alike on every rank: a file test could race with rank 0's write.)
+    if (field->IterationsDone >= iterations &&
+      (distributed ? !written && !resume : !vlf::FileExists(out)))
     {
-      vlf::WriteSnapshot(*field, out); // zero iterations: the traced field
+      write(*field); // zero iterations: the traced field
+    }
+    if (distributed)
+    {
+      std::cout << "MPI: " << reducer.Size() << " ranks, "
+                << FormatBytes(vlf::ReducedBytesPerIteration(*field))
+                << " summed per rank and iteration; rank 0 holds "
+                << FormatBytes(field->AllocatedBytes()) << "\n";
     }
     std::cout << "light field '" << out << "': " << field->IterationsDone << " iterations\n";
+  }
+  catch (const vlf::DistributedError& e)
+  {
+    if (root) // every rank has the same agreed message
+    {
+      std::cerr << "mesolight vlf propagate: " << e.what() << "\n";
+    }
+    return 1;
   }
   catch (const std::exception& e)
   {

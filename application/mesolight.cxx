@@ -22,10 +22,13 @@
 #include "WalkthroughBenchmark.h"
 
 #include <vtkLogger.h>
+#include <vtkMPIController.h>
 #include <vtkNew.h>
 #include <vtkObjectFactory.h>
+#include <vtkSmartPointer.h>
 #include <vtkOutputWindow.h>
 
+#include <cstdlib>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -164,11 +167,30 @@ int main(int argc, char* argv[])
   vtkNew<ConsoleOutputWindow> console;
   vtkOutputWindow::SetInstance(console);
   vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF); // messages go through the console window
+  // Started by mpiexec (Open MPI, MPICH/PMI): MPI for the distributed light field
+  // (`vlf propagate`); otherwise MPI is not touched.
+  vtkSmartPointer<vtkMPIController> mpi;
+  if (std::getenv("OMPI_COMM_WORLD_SIZE") || std::getenv("PMI_SIZE") || std::getenv("PMIX_RANK"))
+  {
+    mpi = vtkSmartPointer<vtkMPIController>::New();
+    mpi->Initialize(&argc, &argv);
+    vtkMultiProcessController::SetGlobalController(mpi);
+  }
   const std::vector<std::string> args(argv + 1, argv + argc);
+  int status = 0;
   if (args.empty() || args[0] == "--help" || args[0] == "-h")
   {
     PrintUsage(std::cout);
-    return args.empty() ? 2 : 0;
+    status = args.empty() ? 2 : 0;
   }
-  return mesolight::DispatchCommand("mesolight", Commands(), args);
+  else
+  {
+    status = mesolight::DispatchCommand("mesolight", Commands(), args);
+  }
+  if (mpi)
+  {
+    vtkMultiProcessController::SetGlobalController(nullptr);
+    mpi->Finalize();
+  }
+  return status;
 }
