@@ -246,21 +246,23 @@ int Propagate(const std::vector<std::string>& args)
     else
     {
       TriangleScene scene;
-      if (cl.Positional().empty())
+      if (distributed)
       {
-        scene = MakeCornellBox();
-        std::cout << "scene: the built-in Cornell box\n";
-      }
-      else if (distributed)
-      {
+        // Agreed: a rank that cannot read the scene stops every rank, with its message.
         vlf::Agree(reducer,
           [&]()
           {
-            mesolight::ObjSceneRead read = mesolight::ReadObjScene(cl.Positional()[0]);
-            scene = std::move(read.Scene);
+            scene = cl.Positional().empty() ? MakeCornellBox()
+                                            : mesolight::ReadObjScene(cl.Positional()[0]).Scene;
           });
-        std::cout << "scene: " << cl.Positional()[0] << " (" << scene.TriangleCount()
-                  << " triangles, " << scene.Materials.size() << " materials)\n";
+        std::cout << "scene: "
+                  << (cl.Positional().empty() ? "the built-in Cornell box" : cl.Positional()[0])
+                  << " (" << scene.TriangleCount() << " triangles)\n";
+      }
+      else if (cl.Positional().empty())
+      {
+        scene = MakeCornellBox();
+        std::cout << "scene: the built-in Cornell box\n";
       }
       else
       {

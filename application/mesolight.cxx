@@ -4,6 +4,7 @@
 // it, and `mesolight COMMAND --help` by each command's CommandLine.
 #include "CommandLine.h"
 #include "CommandTable.h"
+#include "Distribution.h"
 #include "ConeBenchmark.h"
 #include "GatherBenchmark.h"
 #include "GeometryImageBenchmark.h"
@@ -22,6 +23,7 @@
 #include "WalkthroughBenchmark.h"
 
 #include <vtkLogger.h>
+#include <vtkMPI.h> // MPI_Abort
 #include <vtkMPIController.h>
 #include <vtkNew.h>
 #include <vtkObjectFactory.h>
@@ -186,6 +188,13 @@ int main(int argc, char* argv[])
   else
   {
     status = mesolight::DispatchCommand("mesolight", Commands(), args);
+  }
+  if (mpi && status != 0 && mpi->GetNumberOfProcesses() > 1 &&
+    !mesolight::vlf::FailureWasAgreed())
+  {
+    // This rank failed alone (e.g. a usage error in an mpiexec line giving the ranks different
+    // options): the others may wait for it in a collective call, so the job ends here.
+    MPI_Abort(MPI_COMM_WORLD, status);
   }
   if (mpi)
   {

@@ -6,6 +6,7 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstring>
 #include <numeric>
@@ -19,6 +20,7 @@ namespace
 {
 
 constexpr std::size_t EnergyValues = 15; // Shot, Escaped, Absorbed, BackFaces, SpecularLost
+std::atomic<bool> Agreed{ false };
 
 template <typename T>
 void PackVector(std::string& out, const std::vector<T>& v)
@@ -135,6 +137,7 @@ void AgreeOnFailure(Reducer& reducer, std::exception_ptr failure)
     return;
   }
   const int root = static_cast<int>(first - failed.begin());
+  Agreed = true;
   // The first byte says whether it was an abort (kept as AbortedError on every rank).
   std::string message;
   if (root == reducer.Rank())
@@ -171,6 +174,11 @@ void AgreeOnFailure(Reducer& reducer, std::exception_ptr failure)
   }
   throw DistributedError("rank " + std::to_string(root) + " of " +
     std::to_string(reducer.Size()) + ": " + (message.empty() ? "failed" : message.substr(1)));
+}
+
+bool FailureWasAgreed()
+{
+  return Agreed;
 }
 
 void Agree(Reducer& reducer, const std::function<void()>& step)

@@ -92,6 +92,10 @@ std::vector<double> DirectionCosts(const LightField& field);
 void Agree(Reducer& reducer, const std::function<void()>& step);
 // The same for a failure already caught (nullptr = none).
 void AgreeOnFailure(Reducer& reducer, std::exception_ptr failure);
+// Whether an agreed failure has been thrown in this process (every rank knows it then). A
+// program ending with an error no other rank knows of must abort the job (MPI_Abort), or the
+// others wait for it forever.
+bool FailureWasAgreed();
 
 // The reduction of one iteration: the reflected flux per texel and the energy record summed over
 // the ranks (the hook Propagation.cxx calls once per iteration).
