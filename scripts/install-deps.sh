@@ -7,6 +7,7 @@ set -euo pipefail
 PACKAGES=(
   build-essential cmake ninja-build pkg-config
   libvtk9-dev
+  mpi-default-dev mpi-default-bin  # the distributed light field: MPI headers, mpiexec
   libopenimageio-dev openimageio-tools libopenexr-dev
   libglm-dev
   libembree-dev

@@ -111,6 +111,7 @@ int vtkVirtualLightField::RequestData(
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
   this->Field.reset();
+  this->DirectionsPropagated = 0;
   if (!input)
   {
     vtkErrorMacro("No input scene.");
@@ -186,6 +187,7 @@ int vtkVirtualLightField::RequestData(
           vlf::WriteSnapshot(f, this->SnapshotFileName);
         }
       });
+    this->DirectionsPropagated = static_cast<int>(field->SubfieldCount());
     this->Field = std::move(field);
     ++this->PropagationCount;
   }
@@ -441,6 +443,10 @@ int vtkVirtualLightField::RequestDistributedData(vtkPolyData* input, vtkPolyData
           vlf::WriteDistributedSnapshot(*field, this->SnapshotFileName, reducer);
         }
       });
+    for (std::size_t k = 0; k < field->SubfieldCount(); ++k)
+    {
+      this->DirectionsPropagated += field->OwnsSubfield(k) ? 1 : 0;
+    }
     // Downstream (lookups, vtkLightFieldGatherFilter's broadcast) reads rank 0's whole field.
     vlf::GatherSubfieldsToRoot(*field, reducer);
   }

@@ -130,6 +130,12 @@ public:
   vtkBooleanMacro(DistributeDirections, bool);
   ///@}
 
+  /**
+   * Directions whose subfields this process shot in the last update: all of them in one process,
+   * its share under MPI with DistributeDirections, 0 on a rank that did not propagate.
+   */
+  vtkGetMacro(DirectionsPropagated, int);
+
   /** The field of the last successful update (nullptr before). */
   const mesolight::vlf::LightField* GetLightField() const;
 
@@ -192,6 +198,7 @@ private:
 
   bool ResumeFromSnapshot = false;
   bool DistributeDirections = true;
+  int DirectionsPropagated = 0;
   int PropagationCount = 0;
   std::unique_ptr<mesolight::vlf::LightField> Field;
 };
