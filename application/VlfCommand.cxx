@@ -26,6 +26,7 @@
 #include "vtkLightFieldReducer.h"
 
 #include <vtkImageData.h>
+#include <vtkMultiProcessController.h>
 #include <vtkNew.h>
 #include <vtkPNGWriter.h>
 #include <vtkPointData.h>
@@ -350,12 +351,13 @@ int Propagate(const std::vector<std::string>& args)
     {
       write(*field); // zero iterations: the traced field
     }
-    if (distributed)
+    if (vtkMultiProcessController::GetGlobalController()) // under mpiexec, even one rank
     {
-      std::cout << "MPI: " << reducer.Size() << " ranks, "
-                << FormatBytes(vlf::ReducedBytesPerIteration(*field))
-                << " summed per rank and iteration; rank 0 holds "
-                << FormatBytes(field->AllocatedBytes()) << "\n";
+      const std::uint64_t reduced = distributed ? vlf::ReducedBytesPerIteration(*field) : 0;
+      std::cout << "MPI: " << reducer.Size() << " ranks, " << reduced << " bytes ("
+                << FormatBytes(reduced) << ") summed per rank and iteration; rank 0 holds "
+                << field->AllocatedBytes() << " bytes (" << FormatBytes(field->AllocatedBytes())
+                << ")\n";
     }
     std::cout << "light field '" << out << "': " << field->IterationsDone << " iterations\n";
   }
