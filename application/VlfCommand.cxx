@@ -281,11 +281,10 @@ int Propagate(const std::vector<std::string>& args)
       settings.RaysPerSide = rays;
       settings.TilesPerSide = tiles > 0 ? tiles : std::max(1, rays / 8);
       settings.MemoryBudget = budgetBytes;
-      const vlf::MemoryEstimate estimate = distributed ? vlf::MemoryEstimate()
-                                                       : vlf::EstimateMemory(scene, settings);
+      const vlf::MemoryEstimate estimate =
+        distributed ? vlf::MemoryEstimate() : vlf::EstimateMemory(scene, settings);
       std::cout << "light field: " << directions << " directions x " << rays << "x" << rays
-                << " rays, " << settings.TilesPerSide << "x" << settings.TilesPerSide
-                << " tiles";
+                << " rays, " << settings.TilesPerSide << "x" << settings.TilesPerSide << " tiles";
       if (distributed)
       {
         std::cout << ", directions split over " << reducer.Size() << " MPI ranks\n";

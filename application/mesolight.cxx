@@ -4,8 +4,8 @@
 // it, and `mesolight COMMAND --help` by each command's CommandLine.
 #include "CommandLine.h"
 #include "CommandTable.h"
-#include "Distribution.h"
 #include "ConeBenchmark.h"
+#include "Distribution.h"
 #include "GatherBenchmark.h"
 #include "GeometryImageBenchmark.h"
 #include "HallucinateCommand.h"
@@ -27,8 +27,8 @@
 #include <vtkMPIController.h>
 #include <vtkNew.h>
 #include <vtkObjectFactory.h>
-#include <vtkSmartPointer.h>
 #include <vtkOutputWindow.h>
+#include <vtkSmartPointer.h>
 
 #include <cstdlib>
 #include <iostream>
@@ -189,8 +189,7 @@ int main(int argc, char* argv[])
   {
     status = mesolight::DispatchCommand("mesolight", Commands(), args);
   }
-  if (mpi && status != 0 && mpi->GetNumberOfProcesses() > 1 &&
-    !mesolight::vlf::FailureWasAgreed())
+  if (mpi && status != 0 && mpi->GetNumberOfProcesses() > 1 && !mesolight::vlf::FailureWasAgreed())
   {
     // This rank failed alone (e.g. a usage error in an mpiexec line giving the ranks different
     // options): the others may wait for it in a collective call, so the job ends here.

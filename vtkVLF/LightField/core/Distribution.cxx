@@ -172,8 +172,8 @@ void AgreeOnFailure(Reducer& reducer, std::exception_ptr failure)
   {
     throw DistributedError(message.substr(1));
   }
-  throw DistributedError("rank " + std::to_string(root) + " of " +
-    std::to_string(reducer.Size()) + ": " + (message.empty() ? "failed" : message.substr(1)));
+  throw DistributedError("rank " + std::to_string(root) + " of " + std::to_string(reducer.Size()) +
+    ": " + (message.empty() ? "failed" : message.substr(1)));
 }
 
 bool FailureWasAgreed()

@@ -532,9 +532,17 @@ std::unique_ptr<LightField> LightField::Build(const TriangleScene& scene,
   std::vector<std::vector<double>> partial(blocks, std::vector<double>(texels, 0.0));
   const float cellArea = settings.CellSize() * settings.CellSize();
   const int n = settings.RaysPerSide;
-  try
+  // Distributed: an abort here is left to the first agreed step after (propagation's).
+  ProgressCallback capacityProgress = progress;
+  if (distributed && progress)
   {
-  RunInBlocks(count, blocks, progress, 0.8, 1.0,
+    capacityProgress = [progress](double f)
+    {
+      progress(f);
+      return true;
+    };
+  }
+  RunInBlocks(count, blocks, capacityProgress, 0.8, 1.0,
     [&](std::size_t b, std::size_t k)
     {
       if (!field->OwnsSubfield(k))
@@ -564,19 +572,6 @@ std::unique_ptr<LightField> LightField::Build(const TriangleScene& scene,
         }
       }
     });
-  }
-  catch (...)
-  {
-    failure = std::current_exception();
-  }
-  if (distributed)
-  {
-    AgreeOnFailure(*reducer, failure);
-  }
-  else if (failure)
-  {
-    std::rethrow_exception(failure);
-  }
   field->Capacity.assign(texels, 0.0f);
   for (std::size_t t = 0; t < texels; ++t)
   {

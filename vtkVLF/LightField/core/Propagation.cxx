@@ -6,8 +6,8 @@
 #include <glm/geometric.hpp>
 
 #include <chrono>
-#include <exception>
 #include <cmath>
+#include <exception>
 
 namespace mesolight
 {

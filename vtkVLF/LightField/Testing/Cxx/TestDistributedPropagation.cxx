@@ -50,8 +50,8 @@ vlf::LightFieldSettings SmallSettings()
   return s;
 }
 
-// Largest relative difference over every texel and channel; values below floor (a thousandth of
-// the brightest texel) are compared against the floor.
+// Largest relative difference over every texel and channel (a texel below a billionth of the
+// brightest is compared against that floor, so that two zeros agree).
 double WorstRelative(const std::vector<glm::vec3>& a, const std::vector<glm::vec3>& b)
 {
   if (a.size() != b.size())
@@ -63,7 +63,7 @@ double WorstRelative(const std::vector<glm::vec3>& a, const std::vector<glm::vec
   {
     brightest = std::max({ brightest, v.x, v.y, v.z });
   }
-  const double floor = 1e-3 * static_cast<double>(brightest);
+  const double floor = 1e-9 * static_cast<double>(brightest);
   double worst = 0.0;
   for (std::size_t t = 0; t < a.size(); ++t)
   {
@@ -99,8 +99,8 @@ int Equal(vtkMultiProcessController* controller, const std::string& dir)
   reducer.SumInPlace(held.data(), held.size());
   Check(std::all_of(held.begin(), held.end(), [](double h) { return h == 1.0; }),
     "every direction owned by exactly one rank");
-  Check(WorstRelative(
-          std::vector<glm::vec3>(serial->Capacity.size()), std::vector<glm::vec3>()) > 1.0,
+  Check(
+    WorstRelative(std::vector<glm::vec3>(serial->Capacity.size()), std::vector<glm::vec3>()) > 1.0,
     "the comparison sees a size mismatch");
   for (std::size_t t = 0; t < field->Capacity.size(); ++t)
   {
@@ -146,8 +146,8 @@ int Equal(vtkMultiProcessController* controller, const std::string& dir)
   {
     Check(read->GetSubfield(k).Depth == serial->GetSubfield(k).Depth,
       "snapshot depths of direction " + std::to_string(k));
-    worstMap =
-      std::max(worstMap, WorstRelative(read->GetSubfield(k).Radiance, serial->GetSubfield(k).Radiance));
+    worstMap = std::max(
+      worstMap, WorstRelative(read->GetSubfield(k).Radiance, serial->GetSubfield(k).Radiance));
   }
   Check(worstMap <= 1e-5, "snapshot radiance maps (worst " + std::to_string(worstMap) + ")");
 
@@ -165,8 +165,8 @@ int Equal(vtkMultiProcessController* controller, const std::string& dir)
 }
 
 // Runs step on every rank, expecting every rank to throw an error whose message contains want.
-void ExpectAgreedFailure(const std::function<void()>& step, const std::string& want,
-  const std::string& what)
+void ExpectAgreedFailure(
+  const std::function<void()>& step, const std::string& want, const std::string& what)
 {
   try
   {
@@ -215,7 +215,8 @@ int Fail(vtkMultiProcessController* controller)
   options.Reduce = &reducer;
   vlf::Propagate(*field, 1, options);
   options.Progress = [&](double) { return Rank != last; };
-  ExpectAgreedFailure([&]() { vlf::Propagate(*field, 2, options); }, "aborted", "abort on one rank");
+  ExpectAgreedFailure(
+    [&]() { vlf::Propagate(*field, 2, options); }, "aborted", "abort on one rank");
   return Failures;
 }
 
