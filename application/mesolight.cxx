@@ -169,16 +169,19 @@ int main(int argc, char* argv[])
   vtkNew<ConsoleOutputWindow> console;
   vtkOutputWindow::SetInstance(console);
   vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF); // messages go through the console window
-  // Started by mpiexec (Open MPI, MPICH/PMI): MPI for the distributed light field
-  // (`vlf propagate`); otherwise MPI is not touched.
+  const std::vector<std::string> args(argv + 1, argv + argc);
+  // Started by mpiexec (Open MPI, MPICH/PMI) for the one command that uses MPI, `vlf propagate`
+  // (the distributed light field); otherwise MPI is not touched -- a tool run by an MPI rank
+  // (e.g. `vlf render` from a pvbatch script under mpiexec) inherits the launcher's variables but
+  // is no rank of the job.
   vtkSmartPointer<vtkMPIController> mpi;
-  if (std::getenv("OMPI_COMM_WORLD_SIZE") || std::getenv("PMI_SIZE") || std::getenv("PMIX_RANK"))
+  if (args.size() >= 2 && args[0] == "vlf" && args[1] == "propagate" &&
+    (std::getenv("OMPI_COMM_WORLD_SIZE") || std::getenv("PMI_SIZE") || std::getenv("PMIX_RANK")))
   {
     mpi = vtkSmartPointer<vtkMPIController>::New();
     mpi->Initialize(&argc, &argv);
     vtkMultiProcessController::SetGlobalController(mpi);
   }
-  const std::vector<std::string> args(argv + 1, argv + argc);
   int status = 0;
   if (args.empty() || args[0] == "--help" || args[0] == "-h")
   {
