@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "Distribution.h"
 
+#include "Lookup.h"
+#include "ParallelFor.h"
 #include "Snapshot.h"
 
 #include <glm/geometric.hpp>
@@ -222,6 +224,36 @@ std::uint64_t ReducedBytesPerIteration(const LightField& field)
 {
   return static_cast<std::uint64_t>(field.TexelCount()) * sizeof(glm::vec3) +
     EnergyValues * sizeof(double);
+}
+
+std::vector<glm::vec3> GatherIrradiance(const LightField& field,
+  const std::vector<glm::vec3>& points, const std::vector<glm::vec3>& normals, Reducer& reducer)
+{
+  if (points.size() != normals.size())
+  {
+    throw std::invalid_argument("GatherIrradiance: as many normals as points are needed");
+  }
+  std::vector<glm::vec3> irradiance(points.size(), glm::vec3(0.0f));
+  std::exception_ptr failure;
+  try
+  {
+    const Lookup lookup(field);
+    ParallelFor(0, points.size(), 0,
+      [&](std::size_t begin, std::size_t end)
+      {
+        for (std::size_t i = begin; i < end; ++i)
+        {
+          irradiance[i] = lookup.Irradiance(points[i], glm::normalize(normals[i]));
+        }
+      });
+  }
+  catch (...)
+  {
+    failure = std::current_exception();
+  }
+  AgreeOnFailure(reducer, failure);
+  reducer.SumInPlace(reinterpret_cast<float*>(irradiance.data()), 3 * irradiance.size());
+  return irradiance;
 }
 
 void KeepOwnedSubfields(LightField& field, Reducer& reducer)

@@ -15,6 +15,8 @@
 // texels, whatever the direction count (an allreduce moves about twice that per rank).
 // The result equals the serial field up to the order of the float sums (the serial path sums
 // its worker blocks in another order).
+// Gathering at points (a movable object, Light Field Gather) is a sum over directions too: each
+// rank sums its own, one reduction (GatherIrradiance).
 // Mirrors (perfect specular) move radiance between directions, so they would need an exchange
 // between the owners of two directions: a distributed field refuses scenes with mirrors for now.
 //
@@ -103,6 +105,12 @@ void ReduceIteration(
   Reducer& reducer, std::vector<glm::vec3>& reflected, LightField::IterationEnergy& energy);
 // Bytes one rank contributes to ReduceIteration.
 std::uint64_t ReducedBytesPerIteration(const LightField& field);
+
+// Irradiance at points with unit normals gathered from a distributed field (Lookup::Irradiance
+// with default GatherOptions): each rank gathers every point from its own directions, one sum
+// over the ranks (12 bytes per point) gives every rank the whole. Collective.
+std::vector<glm::vec3> GatherIrradiance(const LightField& field,
+  const std::vector<glm::vec3>& points, const std::vector<glm::vec3>& normals, Reducer& reducer);
 
 // A field read whole (a snapshot) split among the ranks: keeps this rank's maps, frees the others.
 void KeepOwnedSubfields(LightField& field, Reducer& reducer);

@@ -3,20 +3,24 @@
 // `mpiexec -n N` (ctest runs it at 1, 2 and 3 ranks). Every rank also propagates the serial field
 // itself (the reference, independent of any reduction) and compares every texel.
 //
-//   TestDistributedPropagation equal DIR   distributed == serial (textures, energy, snapshot);
-//                                          the same without the reduction must differ
+//   TestDistributedPropagation equal DIR   distributed == serial (textures, energy, snapshot,
+//                                          gathered irradiance); without the reductions they
+//                                          must differ
 //   TestDistributedPropagation fail        one rank's memory budget refused, one rank aborting:
 //                                          every rank stops with the failing rank's message
 //   TestDistributedPropagation compare A B two snapshots' total diffuse textures equal (1e-5)
 // Exit 0 when every check holds on this rank.
 #include "Distribution.h"
 #include "LightField.h"
+#include "Lookup.h"
 #include "Propagation.h"
 #include "Snapshot.h"
 #include "TriangleScene.h"
 #include "vtkLightFieldReducer.h"
 
 #include <vtkMPIController.h>
+
+#include <glm/geometric.hpp>
 #include <vtkNew.h>
 
 #include <algorithm>
@@ -150,6 +154,33 @@ int Equal(vtkMultiProcessController* controller, const std::string& dir)
       worstMap, WorstRelative(read->GetSubfield(k).Radiance, serial->GetSubfield(k).Radiance));
   }
   Check(worstMap <= 1e-5, "snapshot radiance maps (worst " + std::to_string(worstMap) + ")");
+
+  // Gathering (a movable object's points): the ranks' sums over their directions, reduced, equal
+  // the serial gather over every direction; without the reduction a rank has its share only.
+  std::vector<glm::vec3> points, normals;
+  for (int i = 0; i < 64; ++i)
+  {
+    const float a = 0.1f * static_cast<float>(i);
+    points.emplace_back(
+      0.4f * std::cos(a), -0.3f + 0.01f * static_cast<float>(i), 0.4f * std::sin(a));
+    normals.push_back(glm::normalize(glm::vec3(std::sin(3.0f * a), std::cos(a), 0.5f)));
+  }
+  const std::vector<glm::vec3> gathered = vlf::GatherIrradiance(*field, points, normals, reducer);
+  std::vector<glm::vec3> reference, partial;
+  const vlf::Lookup serialLookup(*serial), ownLookup(*field);
+  for (std::size_t i = 0; i < points.size(); ++i)
+  {
+    reference.push_back(serialLookup.Irradiance(points[i], normals[i]));
+    partial.push_back(ownLookup.Irradiance(points[i], normals[i]));
+  }
+  const double worstGather = WorstRelative(gathered, reference);
+  std::printf("rank %d of %d: gather at %zu points, worst relative difference %.3g\n", Rank, ranks,
+    points.size(), worstGather);
+  Check(worstGather <= 1e-5, "the reduced gather equals the serial gather");
+  if (ranks > 1)
+  {
+    Check(WorstRelative(partial, reference) > 1e-2, "a rank's own directions alone differ");
+  }
 
   // Negative case: without the reduction each rank has only its share of the light.
   if (ranks > 1)
