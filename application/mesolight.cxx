@@ -5,6 +5,7 @@
 #include "CommandLine.h"
 #include "CommandTable.h"
 #include "ConeBenchmark.h"
+#include "Distribution.h"
 #include "GatherBenchmark.h"
 #include "GeometryImageBenchmark.h"
 #include "HallucinateCommand.h"
@@ -22,10 +23,14 @@
 #include "WalkthroughBenchmark.h"
 
 #include <vtkLogger.h>
+#include <vtkMPI.h> // MPI_Abort
+#include <vtkMPIController.h>
 #include <vtkNew.h>
 #include <vtkObjectFactory.h>
 #include <vtkOutputWindow.h>
+#include <vtkSmartPointer.h>
 
+#include <cstdlib>
 #include <iostream>
 #include <new>
 #include <string>
@@ -166,22 +171,50 @@ int main(int argc, char* argv[])
   vtkOutputWindow::SetInstance(console);
   vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF); // messages go through the console window
   const std::vector<std::string> args(argv + 1, argv + argc);
+  // Started by mpiexec (Open MPI, MPICH/PMI) for the one command that uses MPI, `vlf propagate`
+  // (the distributed light field); otherwise MPI is not touched -- a tool run by an MPI rank
+  // (e.g. `vlf render` from a pvbatch script under mpiexec) inherits the launcher's variables but
+  // is no rank of the job.
+  vtkSmartPointer<vtkMPIController> mpi;
+  if (args.size() >= 2 && args[0] == "vlf" && args[1] == "propagate" &&
+    (std::getenv("OMPI_COMM_WORLD_SIZE") || std::getenv("PMI_SIZE") || std::getenv("PMIX_RANK")))
+  {
+    mpi = vtkSmartPointer<vtkMPIController>::New();
+    mpi->Initialize(&argc, &argv);
+    vtkMultiProcessController::SetGlobalController(mpi);
+  }
+  int status = 0;
   if (args.empty() || args[0] == "--help" || args[0] == "-h")
   {
     PrintUsage(std::cout);
-    return args.empty() ? 2 : 0;
+    status = args.empty() ? 2 : 0;
   }
-  try
+  else
   {
-    return mesolight::DispatchCommand("mesolight", Commands(), args);
+    try
+    {
+      status = mesolight::DispatchCommand("mesolight", Commands(), args);
+    }
+    catch (const std::bad_alloc&)
+    {
+      // An allocation no memory estimate foresaw (an image source, a reader): one line and exit
+      // 1, not "terminate called" and an abort.
+      std::cerr << "mesolight " << args[0]
+                << ": out of memory (std::bad_alloc); use a smaller input or a larger memory limit"
+                   " (ulimit -v, the container's)\n";
+      status = 1;
+    }
   }
-  catch (const std::bad_alloc&)
+  if (mpi && status != 0 && mpi->GetNumberOfProcesses() > 1 && !mesolight::vlf::FailureWasAgreed())
   {
-    // An allocation no memory estimate foresaw (an image source, a reader): one line and exit 1,
-    // not "terminate called" and an abort.
-    std::cerr << "mesolight " << args[0]
-              << ": out of memory (std::bad_alloc); use a smaller input or a larger memory limit"
-                 " (ulimit -v, the container's)\n";
-    return 1;
+    // This rank failed alone (e.g. a usage error in an mpiexec line giving the ranks different
+    // options): the others may wait for it in a collective call, so the job ends here.
+    MPI_Abort(MPI_COMM_WORLD, status);
   }
+  if (mpi)
+  {
+    vtkMultiProcessController::SetGlobalController(nullptr);
+    mpi->Finalize();
+  }
+  return status;
 }

@@ -8,6 +8,7 @@ PACKAGES=(
   build-essential cmake ninja-build pkg-config
   libvtk9-dev
   python3-vtk9 python3-dev python3-numpy  # the Python wrapping, its examples and tests
+  mpi-default-dev mpi-default-bin  # the distributed light field: MPI headers, mpiexec
   libopenimageio-dev openimageio-tools libopenexr-dev
   libglm-dev
   libembree-dev

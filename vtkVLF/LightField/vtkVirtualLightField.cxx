@@ -2,6 +2,7 @@
 #include "vtkVirtualLightField.h"
 #include "vtkVirtualLightFieldCore.h"
 
+#include "Distribution.h"
 #include "LightField.h"
 #include "Lookup.h"
 #include "PatchComparison.h"
@@ -9,6 +10,7 @@
 #include "Snapshot.h"
 #include "TextureAtlas.h"
 #include "TriangleScene.h"
+#include "vtkLightFieldReducer.h"
 #include "vtkTriangleSceneConverter.h"
 
 #include "vtkCellData.h"
@@ -17,6 +19,7 @@
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkIntArray.h"
+#include "vtkMultiProcessController.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
@@ -91,8 +94,10 @@ int vtkVirtualLightField::RequestUpdateExtent(
   {
     return 1;
   }
-  // Piece 0 propagates the whole scene (a split scene would give each rank a wrong field).
-  const bool first = out->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()) == 0;
+  // Piece 0 propagates the whole scene (a split scene would give each rank a wrong field); with
+  // the directions distributed every rank needs the whole scene.
+  const bool first = out->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()) == 0 ||
+    this->Distributed(out->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()));
   in->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(),
     first ? 0 : out->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()));
   in->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(),
@@ -108,6 +113,7 @@ int vtkVirtualLightField::RequestData(
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
   this->Field.reset();
+  this->DirectionsPropagated = 0;
   if (!input)
   {
     vtkErrorMacro("No input scene.");
@@ -117,6 +123,10 @@ int vtkVirtualLightField::RequestData(
   // once; the other pieces are empty, not an error (Light Field Gather broadcasts the field).
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
   const int pieces = outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES());
+  if (this->Distributed(pieces))
+  {
+    return this->RequestDistributedData(input, output);
+  }
   if (pieces > 1 &&
     (outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()) > 0 ||
       input->GetNumberOfCells() == 0))
@@ -199,6 +209,7 @@ int vtkVirtualLightField::RequestData(
         << 100.0 * vlf::UnshotFraction(*field) << "% of its emitted flux unshot after "
         << this->MaxIterations << " iterations (MaxIterations).");
     }
+    this->DirectionsPropagated = static_cast<int>(field->SubfieldCount());
     this->Field = std::move(field);
     ++this->PropagationCount;
   }
@@ -213,6 +224,12 @@ int vtkVirtualLightField::RequestData(
     return 0;
   }
 
+  return this->FillOutput(converter, output);
+}
+
+int vtkVirtualLightField::FillOutput(vtkTriangleSceneConverter* converter, vtkPolyData* output)
+{
+  namespace vlf = mesolight::vlf;
   // Output: the scene in world coordinates with the diffuse radiance leaving each surface.
   const vlf::LightField& field = *this->Field;
   const mesolight::TriangleScene& unit = field.Scene();
@@ -363,6 +380,136 @@ int vtkVirtualLightField::RequestData(
   return 1;
 }
 
+bool vtkVirtualLightField::Distributed(int pieces) const
+{
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  return this->DistributeDirections && pieces > 1 && controller &&
+    controller->GetNumberOfProcesses() > 1;
+}
+
+int vtkVirtualLightField::RequestDistributedData(vtkPolyData* input, vtkPolyData* output)
+{
+  namespace vlf = mesolight::vlf;
+  // Every rank runs every step below; a step that fails on one rank is agreed (Distribution.h),
+  // so every rank reports the failing rank's message instead of waiting for it.
+  vlf::ControllerReducer reducer;
+  vtkNew<vtkTriangleSceneConverter> converter;
+  mesolight::TriangleScene scene;
+  vlf::LightFieldSettings settings;
+  const bool snapshots = !this->SnapshotFileName.empty();
+  std::unique_ptr<vlf::LightField> field;
+  try
+  {
+    double resume = 0.0;
+    vlf::Agree(reducer,
+      [&]()
+      {
+        if (input->GetNumberOfCells() == 0 || !converter->ToTriangleScene(input, scene))
+        {
+          throw std::invalid_argument(
+            "the input cannot be used as a light field scene (see the converter's message)");
+        }
+        if (this->Iterations < -1 || this->Iterations > 10000)
+        {
+          throw std::invalid_argument("Iterations " + std::to_string(this->Iterations) +
+            " is outside [-1 (until the tolerance), 10000]");
+        }
+        if (this->Iterations < 0 &&
+          (!(this->ConvergenceTolerance > 0.0 && this->ConvergenceTolerance < 1.0) ||
+            this->MaxIterations < 1 || this->MaxIterations > 10000))
+        {
+          throw std::invalid_argument("ConvergenceTolerance must be in (0, 1) and MaxIterations "
+                                      "in [1, 10000]");
+        }
+        if (this->Directions < 1 || this->MemoryBudget <= 0)
+        {
+          throw std::invalid_argument("Directions and MemoryBudget must be positive");
+        }
+        settings.Directions = static_cast<std::size_t>(this->Directions);
+        settings.RaysPerSide = this->RaysPerSide;
+        settings.TilesPerSide = this->Tiles > 0 ? this->Tiles : std::max(1, this->RaysPerSide / 8);
+        settings.MemoryBudget = static_cast<std::uint64_t>(this->MemoryBudget);
+        if (snapshots && vlf::FileExists(this->SnapshotFileName) &&
+          !vlf::IsSnapshotFile(this->SnapshotFileName))
+        {
+          throw std::invalid_argument("'" + this->SnapshotFileName +
+            "' exists and is not a light field snapshot: it is left alone; choose another "
+            "SnapshotFileName");
+        }
+        resume = snapshots && this->ResumeFromSnapshot && vlf::FileExists(this->SnapshotFileName)
+          ? 1.0
+          : 0.0;
+      });
+    reducer.SumInPlace(&resume, 1); // every rank decides alike
+    if (resume > 0.0 && resume < static_cast<double>(reducer.Size()))
+    {
+      throw vlf::DistributedError(
+        "'" + this->SnapshotFileName + "' is visible to some ranks only: resume needs it on all");
+    }
+    const double buildShare = 0.3;
+    if (resume > 0.0)
+    {
+      vlf::Agree(reducer,
+        [&]()
+        {
+          field = vlf::ReadSnapshot(this->SnapshotFileName, settings.MemoryBudget);
+          vlf::KeepOwnedSubfields(*field, reducer);
+        });
+    }
+    else
+    {
+      field = vlf::LightField::Build(
+        scene, settings, mesolight::AlgorithmProgress(this, 0.0, buildShare), &reducer);
+    }
+    vlf::PropagationOptions options;
+    options.Progress = mesolight::AlgorithmProgress(this, buildShare, 1.0);
+    options.Reduce = &reducer;
+    const auto afterIteration = [&](const vlf::LightField&)
+    {
+      if (snapshots)
+      {
+        vlf::WriteDistributedSnapshot(*field, this->SnapshotFileName, reducer);
+      }
+    };
+    if (this->Iterations >= 0)
+    {
+      vlf::Propagate(*field, this->Iterations, options, afterIteration);
+    }
+    // Every rank stops alike: the unshot flux is summed over the ranks each iteration.
+    else if (!vlf::PropagateToTolerance(*field, this->ConvergenceTolerance, this->MaxIterations,
+               options, afterIteration) &&
+      reducer.Rank() == 0)
+    {
+      vtkWarningMacro("The light field still holds "
+        << 100.0 * vlf::UnshotFraction(*field) << "% of its emitted flux unshot after "
+        << this->MaxIterations << " iterations (MaxIterations).");
+    }
+    for (std::size_t k = 0; k < field->SubfieldCount(); ++k)
+    {
+      this->DirectionsPropagated += field->OwnsSubfield(k) ? 1 : 0;
+    }
+    // Downstream (lookups, vtkLightFieldGatherFilter's broadcast) reads rank 0's whole field.
+    vlf::GatherSubfieldsToRoot(*field, reducer);
+  }
+  catch (const vlf::AbortedError&)
+  {
+    vtkWarningMacro("Light field propagation aborted.");
+    return 0;
+  }
+  catch (const std::exception& e)
+  {
+    vtkErrorMacro(<< e.what());
+    return 0;
+  }
+  if (reducer.Rank() != 0)
+  {
+    return 1; // an empty piece, as without the split
+  }
+  this->Field = std::move(field);
+  ++this->PropagationCount;
+  return this->FillOutput(converter, output);
+}
+
 vtkFloatArray* vtkVirtualLightField::GetAttachedAtlas(vtkDataObject* data, int size[2])
 {
   vtkFieldData* fields = data ? data->GetFieldData() : nullptr;
@@ -403,6 +550,7 @@ void vtkVirtualLightField::PrintSelf(ostream& os, vtkIndent indent)
      << "SnapshotFileName: " << (this->SnapshotFileName.empty() ? "(none)" : this->SnapshotFileName)
      << "\n";
   os << indent << "ResumeFromSnapshot: " << this->ResumeFromSnapshot << "\n";
+  os << indent << "DistributeDirections: " << this->DistributeDirections << "\n";
   os << indent << "PropagationCount: " << this->PropagationCount << "\n";
   os << indent << "LightField: "
      << (this->Field ? std::to_string(this->Field->IterationsDone) + " iterations done" : "(none)")

@@ -31,9 +31,14 @@
  * refuses to replace a file that is not a light field snapshot. Progress goes through
  * UpdateProgress; AbortExecute stops between rounds of subfields.
  *
- * Under MPI (pieces > 1) only piece 0 propagates, from the whole scene (its input is asked for
- * piece 0 of 1); the other pieces are empty and have no field (vtkLightFieldGatherFilter
- * broadcasts rank 0's).
+ * Under MPI (pieces > 1, vtkMultiProcessController's global controller, e.g. `mpiexec -n N
+ * pvbatch`) every rank gets the whole scene and the directions are split between the ranks
+ * (DistributeDirections, mesolight::vlf Distribution.h): each traces and shoots its share, one
+ * sum per iteration gives every rank the whole diffuse textures, and rank 0 then collects the
+ * directions' maps, so that, as in one process, piece 0 holds the complete field and the output;
+ * the other pieces are empty and have no field (vtkLightFieldGatherFilter broadcasts rank 0's).
+ * Snapshots are written by rank 0, receiving the other ranks' maps one direction at a time.
+ * With DistributeDirections off, rank 0 alone propagates (the other ranks wait).
  *
  * After an update, ComputeIrradiance() gives the irradiance at any world point and normal (the
  * movable-object query). Code built in this tree reaches the field itself (for lookups,
@@ -50,6 +55,7 @@
 #include <string> // For std::string
 
 class vtkFloatArray;
+class vtkTriangleSceneConverter;
 
 namespace mesolight
 {
@@ -131,6 +137,22 @@ public:
   vtkBooleanMacro(ResumeFromSnapshot, bool);
   ///@}
 
+  ///@{
+  /**
+   * Under MPI, split the directions between the ranks (default on); off: rank 0 propagates
+   * alone. One rank is the serial path either way.
+   */
+  vtkSetMacro(DistributeDirections, bool);
+  vtkGetMacro(DistributeDirections, bool);
+  vtkBooleanMacro(DistributeDirections, bool);
+  ///@}
+
+  /**
+   * Directions whose subfields this process shot in the last update: all of them in one process,
+   * its share under MPI with DistributeDirections, 0 on a rank that did not propagate.
+   */
+  vtkGetMacro(DirectionsPropagated, int);
+
   /**
    * Irradiance at a world point with a unit normal, gathered from the field (Wither 2005 §3.6).
    * False before a successful update.
@@ -185,7 +207,15 @@ private:
   int MaxIterations = 100;            // mesolight::vlf::DefaultMaxIterations
   vtkTypeInt64 MemoryBudget = vtkTypeInt64(4) << 30;
   std::string SnapshotFileName;
+  // Under MPI with the directions split (see the class description).
+  bool Distributed(int pieces) const;
+  int RequestDistributedData(vtkPolyData* input, vtkPolyData* output);
+  // The output from this->Field.
+  int FillOutput(vtkTriangleSceneConverter* converter, vtkPolyData* output);
+
   bool ResumeFromSnapshot = false;
+  bool DistributeDirections = true;
+  int DirectionsPropagated = 0;
   int PropagationCount = 0;
   std::unique_ptr<mesolight::vlf::LightField> Field;
 };

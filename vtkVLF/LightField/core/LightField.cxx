@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "LightField.h"
 
+#include "Distribution.h"
+
 #include "MathConstants.h"
 #include "OrthonormalBasis.h"
 #include "ParallelFor.h"
@@ -425,7 +427,10 @@ void LightField::Setup(
   }
   this->EstimateUsed = EstimateFor(
     this->NormalizedScene, this->SurfaceList, *this->DirectionsPtr, settings, this->AnySpecular);
-  if (this->EstimateUsed.TotalBytes > settings.MemoryBudget)
+  // A distributed field holds about 1/ranks of the maps on each rank (Distribution.h).
+  if (this->EstimateUsed.TotalBytes - this->EstimateUsed.MapBytes +
+      this->EstimateUsed.MapBytes / this->BudgetShareRanks >
+    settings.MemoryBudget)
   {
     std::ostringstream message;
     message << "the light field would need up to " << this->EstimateUsed.Describe() << " for "
@@ -458,11 +463,65 @@ std::unique_ptr<LightField> LightField::CreateEmpty(
 std::unique_ptr<LightField> LightField::Build(
   const TriangleScene& scene, const LightFieldSettings& settings, const ProgressCallback& progress)
 {
-  std::unique_ptr<LightField> field = CreateEmpty(scene, settings);
+  return Build(scene, settings, progress, nullptr);
+}
+
+std::unique_ptr<LightField> LightField::Build(const TriangleScene& scene,
+  const LightFieldSettings& settings, const ProgressCallback& progress, Reducer* reducer)
+{
+  std::unique_ptr<LightField> field(new LightField());
+  const bool distributed = reducer && reducer->Size() > 1;
+  if (distributed)
+  {
+    field->BudgetShareRanks = static_cast<std::size_t>(reducer->Size());
+    Agree(*reducer,
+      [&]()
+      {
+        field->Setup(scene, settings, /*normalize=*/true);
+        if (field->AnySpecular)
+        {
+          throw std::invalid_argument("the scene has mirror surfaces, which move light between "
+                                      "directions held by different ranks: a distributed light "
+                                      "field does not support them yet; run on one rank");
+        }
+        const std::vector<std::uint32_t> owner = BalanceDirections(*field, reducer->Size());
+        field->OwnedSubfields.assign(owner.size(), 0);
+        for (std::size_t k = 0; k < owner.size(); ++k)
+        {
+          field->OwnedSubfields[k] = owner[k] == static_cast<std::uint32_t>(reducer->Rank());
+        }
+      });
+  }
+  else
+  {
+    field->Setup(scene, settings, /*normalize=*/true);
+  }
   const EmbreeScene embree(field->NormalizedScene);
   const std::size_t count = field->Subfields.size();
-  RunInBlocks(count, DefaultBlockCount(count), progress, 0.0, 0.8,
-    [&](std::size_t, std::size_t k) { field->TraceSubfield(k, embree); });
+  std::exception_ptr failure;
+  try
+  {
+    RunInBlocks(count, DefaultBlockCount(count), progress, 0.0, 0.8,
+      [&](std::size_t, std::size_t k)
+      {
+        if (field->OwnsSubfield(k))
+        {
+          field->TraceSubfield(k, embree);
+        }
+      });
+  }
+  catch (...)
+  {
+    failure = std::current_exception();
+  }
+  if (distributed)
+  {
+    AgreeOnFailure(*reducer, failure);
+  }
+  else if (failure)
+  {
+    std::rethrow_exception(failure);
+  }
 
   // Shooting capacity of each texel (Propagation.h): the flux a unit diffuse radiance there
   // sends along all lines that leave it into the scene (not into a solid: Receiver), sum over
@@ -474,9 +533,23 @@ std::unique_ptr<LightField> LightField::Build(
   std::vector<std::vector<double>> partial(blocks, std::vector<double>(texels, 0.0));
   const float cellArea = settings.CellSize() * settings.CellSize();
   const int n = settings.RaysPerSide;
-  RunInBlocks(count, blocks, progress, 0.8, 1.0,
+  // Distributed: an abort here is left to the first agreed step after (propagation's).
+  ProgressCallback capacityProgress = progress;
+  if (distributed && progress)
+  {
+    capacityProgress = [progress](double f)
+    {
+      progress(f);
+      return true;
+    };
+  }
+  RunInBlocks(count, blocks, capacityProgress, 0.8, 1.0,
     [&](std::size_t b, std::size_t k)
     {
+      if (!field->OwnsSubfield(k))
+      {
+        return;
+      }
       std::vector<Crossing> crossings;
       const Subfield& f = field->Subfields[k];
       for (int j = 0; j < n; ++j)
@@ -512,7 +585,15 @@ std::unique_ptr<LightField> LightField::Build(
     {
       sum += p[t];
     }
-    field->Capacity[t] = static_cast<float>(sum);
+    partial[0][t] = sum;
+  }
+  if (distributed)
+  {
+    reducer->SumInPlace(partial[0].data(), texels); // every direction's lines, all ranks
+  }
+  for (std::size_t t = 0; t < texels; ++t)
+  {
+    field->Capacity[t] = static_cast<float>(partial[0][t]);
   }
   // Emitters shoot first: before iteration 1 the unshot radiance is the emission.
   field->TotalDiffuse.assign(texels, glm::vec3(0.0f));

@@ -174,6 +174,8 @@ struct MemoryEstimate
 // for unusable settings or an empty scene.
 MemoryEstimate EstimateMemory(const TriangleScene& scene, const LightFieldSettings& settings);
 
+class Reducer; // Distribution.h
+
 class LightField
 {
 public:
@@ -184,6 +186,12 @@ public:
   // scene CheckScene rejects (no emitter, degenerate triangles) or with Kd + Ks > 1.
   static std::unique_ptr<LightField> Build(const TriangleScene& scene,
     const LightFieldSettings& settings, const ProgressCallback& progress = {});
+  // Distributed (Distribution.h): with a reducer of several ranks, traces only this rank's share
+  // of the directions (BalanceDirections), sums the texel capacities over the ranks, and checks
+  // the budget against this rank's share of the maps; failures are agreed between the ranks.
+  // Throws std::invalid_argument for a scene with mirrors (not distributed yet).
+  static std::unique_ptr<LightField> Build(const TriangleScene& scene,
+    const LightFieldSettings& settings, const ProgressCallback& progress, Reducer* reducer);
 
   // The structure without subfield contents (for Snapshot): scene normalised, surfaces grouped,
   // directions and frames set, memory checked; maps, tile lists and textures left empty.
@@ -210,6 +218,12 @@ public:
   std::uint64_t AllocatedBytes() const; // what the maps and textures hold now
 
   std::size_t SubfieldCount() const { return this->Subfields.size(); }
+  // Whether this process holds subfield k's maps (all when OwnedSubfields is empty: serial).
+  bool OwnsSubfield(std::size_t k) const
+  {
+    return this->OwnedSubfields.empty() || this->OwnedSubfields[k] != 0;
+  }
+  std::vector<std::uint8_t> OwnedSubfields; // per direction, 1 = held here (Distribution.h)
   const Subfield& GetSubfield(std::size_t k) const { return this->Subfields[k]; }
   Subfield& GetSubfield(std::size_t k) { return this->Subfields[k]; }
 
@@ -270,6 +284,7 @@ private:
   LightField() = default;
   // normalize false: the scene already lies in the unit sphere (a snapshot's).
   void Setup(const TriangleScene& scene, const LightFieldSettings& settings, bool normalize);
+  std::size_t BudgetShareRanks = 1; // Setup checks the budget against maps / this (Distribution.h)
   friend std::unique_ptr<LightField> ReadSnapshot(
     const std::string& path, std::uint64_t memoryBudget);
   void TraceSubfield(std::size_t k, const EmbreeScene& embree);

@@ -185,6 +185,10 @@ glm::vec3 Lookup::Irradiance(
     const float weight =
       (options.SolidAngleWeights ? this->Field.Directions().SolidAngle(k) : uniform) * std::abs(c);
     total += weight;
+    if (!this->Field.OwnsSubfield(k))
+    {
+      continue; // a distributed field: the owner adds it (the result is additive over the ranks)
+    }
     sum += weight *
       this->IncidentRadiance(
         k, c > 0.0f ? 1 : -1, p, options.Cells, ignore, options.SceneOcclusion);

@@ -169,7 +169,9 @@ public:
     CellInterpolation cells = CellInterpolation::Bilinear, std::uint32_t ignore = NoSurface,
     bool occlusion = true) const;
 
-  // Irradiance at p with unit normal n (see above). `ignore` as for IncidentRadiance.
+  // Irradiance at p with unit normal n (see above). `ignore` as for IncidentRadiance. On a
+  // distributed field (Distribution.h) the sum covers this rank's directions only, normalised
+  // over all directions, so the ranks' results add up to the whole (GatherIrradiance).
   glm::vec3 Irradiance(const glm::vec3& p, const glm::vec3& n, const GatherOptions& options = {},
     std::uint32_t ignore = NoSurface) const;
 

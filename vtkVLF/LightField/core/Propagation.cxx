@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <exception>
 #include <stdexcept>
 
 namespace mesolight
@@ -191,8 +192,30 @@ LightField::IterationEnergy PropagateIteration(LightField& field, const Propagat
   {
     s.Reflected.assign(texels, glm::vec3(0.0f));
   }
-  RunInBlocks(count, blocks, options.Progress, 0.0, 1.0,
-    [&](std::size_t b, std::size_t k) { ShootSubfield(field, k, states[b]); });
+  std::exception_ptr failure;
+  try
+  {
+    RunInBlocks(count, blocks, options.Progress, 0.0, 1.0,
+      [&](std::size_t b, std::size_t k)
+      {
+        if (field.OwnsSubfield(k))
+        {
+          ShootSubfield(field, k, states[b]);
+        }
+      });
+  }
+  catch (...)
+  {
+    failure = std::current_exception();
+  }
+  if (options.Reduce)
+  {
+    AgreeOnFailure(*options.Reduce, failure); // no rank waits for one that stopped
+  }
+  else if (failure)
+  {
+    std::rethrow_exception(failure);
+  }
 
   LightField::IterationEnergy energy;
   energy.Iteration = field.IterationsDone + 1;
@@ -213,6 +236,10 @@ LightField::IterationEnergy PropagateIteration(LightField& field, const Propagat
       }
       states[b].Reflected = std::vector<glm::vec3>();
     }
+  }
+  if (options.Reduce)
+  {
+    ReduceIteration(*options.Reduce, reflected, energy); // the one exchange per iteration
   }
   // Reflected flux -> unshot diffuse radiance (see the header: the discrete capacity keeps the
   // flux exactly).

@@ -29,6 +29,7 @@
 #ifndef mesolight_vlf_Propagation_h
 #define mesolight_vlf_Propagation_h
 
+#include "Distribution.h"
 #include "LightField.h"
 
 #include <functional>
@@ -49,6 +50,9 @@ struct PropagationOptions
   DiffuseNormalization Normalization = DiffuseNormalization::DiscreteCapacity;
   // Progress in [0, 1] over the whole call; false aborts (AbortedError).
   ProgressCallback Progress;
+  // Distributed field (Distribution.h): shoots only the subfields this rank owns, then sums the
+  // reflected flux over the ranks once per iteration. nullptr = one process.
+  Reducer* Reduce = nullptr;
 };
 
 // One shooting iteration. Appends its energy record to field.EnergyLog and returns it.

@@ -282,7 +282,8 @@ SceneMaterial ReadMaterial(Reader& r)
   return m;
 }
 
-void WritePayload(Writer& w, const LightField& field)
+void WritePayload(Writer& w, const LightField& field,
+  const std::function<const Subfield&(std::size_t k)>& subfieldOf)
 {
   const LightFieldSettings& s = field.Settings();
   w.Value(static_cast<std::uint64_t>(s.Directions));
@@ -313,7 +314,7 @@ void WritePayload(Writer& w, const LightField& field)
   w.Array(field.EnergyLog);
   for (std::size_t k = 0; k < field.SubfieldCount(); ++k)
   {
-    const Subfield& f = field.GetSubfield(k);
+    const Subfield& f = subfieldOf ? subfieldOf(k) : field.GetSubfield(k);
     w.Array(f.TileStart);
     w.Array(f.Entries);
     w.Array(f.Depth);
@@ -413,6 +414,12 @@ void RemoveStaleTemporaries(const std::string& path)
 
 void WriteSnapshot(const LightField& field, const std::string& path)
 {
+  WriteSnapshot(field, path, {});
+}
+
+void WriteSnapshot(const LightField& field, const std::string& path,
+  const std::function<const Subfield&(std::size_t k)>& subfieldOf)
+{
   if (path.empty())
   {
     throw SnapshotError("no snapshot file name given");
@@ -435,7 +442,7 @@ void WriteSnapshot(const LightField& field, const std::string& path)
       throw SnapshotError("cannot write " + Quoted(temporary) + ": " + std::strerror(errno));
     }
     Writer writer(temporary, file);
-    WritePayload(writer, field);
+    WritePayload(writer, field, subfieldOf);
     writer.Flush();
     header.PayloadBytes = writer.Written;
     header.PayloadChecksum = writer.Hash.Value();

@@ -19,6 +19,7 @@
 
 #include "LightField.h"
 
+#include <functional>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -39,6 +40,10 @@ constexpr std::uint32_t SnapshotVersion = 1;
 // Writes atomically (see above). Throws SnapshotError when the file cannot be written (the
 // previous file, if any, is left untouched).
 void WriteSnapshot(const LightField& field, const std::string& path);
+// The same with subfield k's maps taken from subfieldOf(k), asked for in ascending k, one at a
+// time (a distributed field's rank 0 receives the others' maps this way: Distribution.h).
+void WriteSnapshot(const LightField& field, const std::string& path,
+  const std::function<const Subfield&(std::size_t k)>& subfieldOf);
 
 // Reads a snapshot. memoryBudget (bytes, 0 = the one stored) is checked before allocating.
 // Throws SnapshotError for a missing, foreign, truncated, corrupt or incompatible file, and

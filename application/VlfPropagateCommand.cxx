@@ -1,0 +1,365 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// `mesolight vlf propagate`: the light field of a scene, written after every iteration; under
+// mpiexec its directions split over the ranks (Distribution.h).
+#include "VlfCommand.h"
+
+#include "CommandLine.h"
+#include "OutputFile.h"
+#include "Timing.h"
+
+#include "Distribution.h"
+#include "LightField.h"
+#include "MemoryBudget.h"
+#include "ObjScene.h"
+#include "Propagation.h"
+#include "Snapshot.h"
+#include "TextureComparison.h"
+#include "TriangleScene.h"
+#include "vtkLightFieldReducer.h"
+
+#include <vtkMultiProcessController.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace mesolight
+{
+namespace
+{
+namespace vlf = mesolight::vlf;
+using Clock = std::chrono::steady_clock;
+
+// Progress on stderr in steps of 10%.
+ProgressCallback PrintedProgress(const std::string& what)
+{
+  auto last = std::make_shared<int>(-1);
+  return [what, last](double fraction)
+  {
+    const int step = static_cast<int>(fraction * 10.0);
+    if (step != *last)
+    {
+      *last = step;
+      std::cerr << "\r" << what << " " << step * 10 << "%" << (step >= 10 ? "\n" : "")
+                << std::flush;
+    }
+    return true;
+  };
+}
+
+int Propagate(const std::vector<std::string>& args)
+{
+  CommandLine cl("mesolight vlf propagate",
+    "mesolight vlf propagate [SCENE.obj] --out FIELD [options]\n\n"
+    "Propagates the scene's light (the built-in Cornell box without SCENE) into a "
+    "virtual light field,\nwriting FIELD after every iteration.\n");
+  cl.AddValue("--out", "FIELD", "light field snapshot to write after every iteration (required)");
+  cl.AddValue("--directions", "N", "directions: 2n^2+1, e.g. 513, 2049, 8193", "513");
+  cl.AddValue("--rays", "N", "lines per subfield side", "32");
+  cl.AddValue("--tiles", "M", "tiles per subfield side (0 = rays / 8)", "0");
+  cl.AddValue("--tolerance", "X",
+    "shoot until at most this share of the emitted flux is left unshot", "0.01");
+  cl.AddValue("--max-iterations", "K", "most iterations --tolerance may take (in total)", "100");
+  cl.AddValue("--iterations", "K",
+    "instead of --tolerance: exactly K shooting iterations (in total, when resuming)");
+  cl.AddValue("--memory-budget", "GIB", "refuse fields needing more memory than this", "4");
+  cl.AddFlag("--resume", "continue the propagation stored in FIELD");
+  cl.AddFlag("--force", "replace an existing light field FIELD (never any other file)");
+  cl.AddFlag("--filter",
+    "write the diffuse totals smoothed by an edge-keeping (bilateral) "
+    "filter against mottling; not with --resume");
+  std::string error;
+  int exitCode = 0;
+  if (!cl.ParseArguments(args, exitCode))
+  {
+    return exitCode; // --help printed, or a usage error reported
+  }
+  int directions = 0, rays = 0, tiles = 0, iterations = -1, maxIterations = 0;
+  double budget = 0.0, tolerance = 0.0;
+  if (!cl.GetInt("--directions", 3, 1 << 26, directions, error) ||
+    !cl.GetInt("--rays", 1, 4096, rays, error) || !cl.GetInt("--tiles", 0, 4096, tiles, error) ||
+    (cl.Has("--iterations") && !cl.GetInt("--iterations", 0, 10000, iterations, error)) ||
+    !cl.GetDouble("--tolerance", 1e-9, 0.999, tolerance, error) ||
+    !cl.GetInt("--max-iterations", 1, 10000, maxIterations, error) ||
+    !cl.GetDouble("--memory-budget", 1e-3, 1e6, budget, error))
+  {
+    return cl.UsageError(error);
+  }
+  if (cl.Has("--iterations") && (cl.Has("--tolerance") || cl.Has("--max-iterations")))
+  {
+    return cl.UsageError("--iterations (a fixed count) excludes --tolerance and --max-iterations");
+  }
+  const std::string out = cl.Get("--out");
+  if (out.empty())
+  {
+    return cl.UsageError("--out FIELD is required");
+  }
+  if (cl.Positional().size() > 1)
+  {
+    return cl.UsageError("one scene at most");
+  }
+  {
+    // The scene (and its .mtl) is read, FIELD rewritten after every iteration: check it first.
+    std::vector<std::string> inputs(cl.Positional());
+    if (!inputs.empty() && inputs[0].size() > 4)
+    {
+      inputs.push_back(inputs[0].substr(0, inputs[0].size() - 4) + ".mtl");
+    }
+    const std::string problem = CheckOutputFile(out, inputs);
+    if (!problem.empty())
+    {
+      return cl.UsageError("--out: " + problem);
+    }
+  }
+  const bool resume = cl.Has("--resume");
+  if (resume && cl.Has("--force"))
+  {
+    return cl.UsageError("--resume and --force exclude each other");
+  }
+  // A filtered snapshot's totals are no longer sums of what was shot, so they cannot be continued.
+  const bool filter = cl.Has("--filter");
+  if (resume && filter)
+  {
+    return cl.UsageError("--resume and --filter exclude each other");
+  }
+  if (vlf::FileExists(out) && !vlf::IsSnapshotFile(out))
+  {
+    std::cerr << "mesolight vlf propagate: '" << out
+              << "' exists and is not a light field: it is left alone, choose another --out\n";
+    return 1;
+  }
+  if (vlf::FileExists(out) && !resume && !cl.Has("--force"))
+  {
+    std::cerr
+      << "mesolight vlf propagate: '" << out
+      << "' already holds a light field: add --resume to continue it or --force to replace it\n";
+    return 1;
+  }
+  if (resume && !vlf::FileExists(out))
+  {
+    std::cerr << "mesolight vlf propagate: --resume: '" << out << "' does not exist\n";
+    return 1;
+  }
+  const std::uint64_t budgetBytes = static_cast<std::uint64_t>(budget * 1073741824.0);
+  // Under mpiexec (vtkMPIController, mesolight.cxx) the directions are split among the ranks
+  // (Distribution.h); rank 0 prints and writes FIELD. One rank is the serial path.
+  vlf::ControllerReducer reducer;
+  const bool distributed = reducer.Size() > 1;
+  const bool root = reducer.Rank() == 0;
+  if (!root)
+  {
+    std::cout.setstate(std::ios::failbit); // one rank speaks; errors are agreed, rank 0 prints
+  }
+  try
+  {
+    std::unique_ptr<vlf::LightField> field;
+    if (resume)
+    {
+      if (!cl.Positional().empty())
+      {
+        std::cerr << "mesolight vlf propagate: --resume takes the scene and settings from '" << out
+                  << "'; do not name a scene\n";
+        return 2;
+      }
+      if (distributed)
+      {
+        // Every rank reads FIELD, whatever the rank count it was written with, then keeps its
+        // own directions' maps.
+        vlf::Agree(reducer,
+          [&]()
+          {
+            field = vlf::ReadSnapshot(out, budgetBytes);
+            vlf::KeepOwnedSubfields(*field, reducer);
+          });
+      }
+      else
+      {
+        field = vlf::ReadSnapshot(out, budgetBytes);
+      }
+      // A resumed field keeps the settings it was traced with: other values given here would be
+      // silently ignored, so they are refused, naming both.
+      const vlf::LightFieldSettings& stored = field->Settings();
+      const int storedRays = stored.RaysPerSide;
+      const int givenRays = cl.Has("--rays") ? rays : storedRays;
+      const struct
+      {
+        const char* Option;
+        long long Given;
+        long long Stored;
+      } checks[] = { { "--directions", directions, static_cast<long long>(stored.Directions) },
+        { "--rays", rays, storedRays },
+        { "--tiles", tiles > 0 ? tiles : std::max(1, givenRays / 8), stored.TilesPerSide } };
+      for (const auto& check : checks)
+      {
+        if (cl.Has(check.Option) && check.Given != check.Stored)
+        {
+          return cl.UsageError(std::string("--resume: ") + check.Option + " " +
+            cl.Get(check.Option) + " differs from the " + std::to_string(check.Stored) +
+            " stored in '" + out + "' (a resumed field keeps its settings: leave out " +
+            check.Option + ", or start over with --force)");
+        }
+      }
+      std::cout << "resuming '" << out << "' after " << field->IterationsDone << " iterations\n";
+    }
+    else
+    {
+      TriangleScene scene;
+      if (distributed)
+      {
+        // Agreed: a rank that cannot read the scene stops every rank, with its message.
+        vlf::Agree(reducer,
+          [&]()
+          {
+            scene = cl.Positional().empty() ? MakeCornellBox()
+                                            : mesolight::ReadObjScene(cl.Positional()[0]).Scene;
+          });
+        std::cout << "scene: "
+                  << (cl.Positional().empty() ? "the built-in Cornell box" : cl.Positional()[0])
+                  << " (" << scene.TriangleCount() << " triangles)\n";
+      }
+      else if (cl.Positional().empty())
+      {
+        scene = MakeCornellBox();
+        std::cout << "scene: the built-in Cornell box\n";
+      }
+      else
+      {
+        mesolight::ObjSceneRead read = mesolight::ReadObjScene(cl.Positional()[0]);
+        for (const std::string& w : read.Warnings)
+        {
+          std::cerr << "mesolight vlf propagate: warning: " << w << "\n";
+        }
+        scene = std::move(read.Scene);
+        std::cout << "scene: " << cl.Positional()[0] << " (" << scene.TriangleCount()
+                  << " triangles, " << scene.Materials.size() << " materials)\n";
+      }
+      vlf::LightFieldSettings settings;
+      settings.Directions = static_cast<std::size_t>(directions);
+      settings.RaysPerSide = rays;
+      settings.TilesPerSide = tiles > 0 ? tiles : std::max(1, rays / 8);
+      settings.MemoryBudget = budgetBytes;
+      const vlf::MemoryEstimate estimate =
+        distributed ? vlf::MemoryEstimate() : vlf::EstimateMemory(scene, settings);
+      std::cout << "light field: " << directions << " directions x " << rays << "x" << rays
+                << " rays, " << settings.TilesPerSide << "x" << settings.TilesPerSide << " tiles";
+      if (distributed)
+      {
+        std::cout << ", directions split over " << reducer.Size() << " MPI ranks\n";
+      }
+      else
+      {
+        std::cout << "; memory up to " << estimate.Describe() << "\n";
+      }
+      const Clock::time_point start = Clock::now();
+      field = vlf::LightField::Build(scene, settings,
+        root ? PrintedProgress("tracing subfields") : ProgressCallback(),
+        distributed ? &reducer : nullptr);
+      std::cout << "traced in " << SecondsSince(start) << " s, "
+                << FormatBytes(field->AllocatedBytes()) << " allocated\n";
+    }
+    vlf::PropagationOptions options;
+    options.Progress = root
+      ? PrintedProgress(iterations < 0 ? "toward the tolerance" : "propagating")
+      : ProgressCallback();
+    options.Reduce = distributed ? &reducer : nullptr;
+    bool written = false;
+    const auto write = [&](const vlf::LightField& f)
+    {
+      if (distributed)
+      {
+        vlf::WriteDistributedSnapshot(*field, out, reducer);
+      }
+      else
+      {
+        vlf::WriteSnapshot(f, out);
+      }
+      written = true;
+    };
+    char toleranceText[32] = "none: fixed count";
+    if (iterations < 0)
+    {
+      std::snprintf(toleranceText, sizeof(toleranceText), "%g%%", 100.0 * tolerance);
+    }
+    const auto afterIteration = [&](const vlf::LightField& f)
+      {
+        if (filter)
+        {
+          // The snapshot gets the filtered totals; the propagation goes on with the raw ones.
+          const std::vector<glm::vec3> raw = f.TotalDiffuse;
+          vlf::FilterTotalDiffuse(*field, vlf::TextureFilterSettings());
+          write(f);
+          field->TotalDiffuse = raw;
+        }
+        else
+        {
+          write(f);
+        }
+        const vlf::LightField::IterationEnergy& e = f.EnergyLog.back();
+        if (!root)
+        {
+          return;
+        }
+        std::printf(
+          "iteration %d: %.2f s, shot %.4g, escaped %.4g, absorbed %.4g, left to shoot %.4g "
+          "= %.2f%% of the emitted (tolerance %s) (energy balance error %.1e); wrote %s\n",
+          e.Iteration, e.Seconds, e.Shot[0] + e.Shot[1] + e.Shot[2],
+          e.Escaped[0] + e.Escaped[1] + e.Escaped[2], e.Absorbed[0] + e.Absorbed[1] + e.Absorbed[2],
+          e.Unshot[0] + e.Unshot[1] + e.Unshot[2], 100.0 * vlf::UnshotFraction(f), toleranceText,
+          e.ConservationError(), out.c_str());
+        std::fflush(stdout);
+      };
+    if (iterations >= 0)
+    {
+      vlf::Propagate(*field, iterations, options, afterIteration);
+    }
+    // (Every rank decides alike: the unshot fraction is summed over the ranks.)
+    else if (!vlf::PropagateToTolerance(*field, tolerance, maxIterations, options, afterIteration) &&
+      root)
+    {
+      std::cerr << "mesolight vlf propagate: warning: " << 100.0 * vlf::UnshotFraction(*field)
+                << "% of the emitted flux is still unshot after " << maxIterations
+                << " iterations (--max-iterations)\n";
+    }
+    // (Decided alike on every rank: a file test could race with rank 0's write.)
+    if (distributed ? !written && !resume : !vlf::FileExists(out))
+    {
+      write(*field); // zero iterations: the traced field
+    }
+    if (vtkMultiProcessController::GetGlobalController()) // under mpiexec, even one rank
+    {
+      const std::uint64_t reduced = distributed ? vlf::ReducedBytesPerIteration(*field) : 0;
+      std::cout << "MPI: " << reducer.Size() << " ranks, " << reduced << " bytes ("
+                << FormatBytes(reduced) << ") summed per rank and iteration; rank 0 holds "
+                << field->AllocatedBytes() << " bytes (" << FormatBytes(field->AllocatedBytes())
+                << ")\n";
+    }
+    std::cout << "light field '" << out << "': " << field->IterationsDone << " iterations\n";
+  }
+  catch (const vlf::DistributedError& e)
+  {
+    if (root) // every rank has the same agreed message
+    {
+      std::cerr << "mesolight vlf propagate: " << e.what() << "\n";
+    }
+    return 1;
+  }
+  catch (const std::exception& e)
+  {
+    std::cerr << "mesolight vlf propagate: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}
+
+} // namespace
+
+int RunVlfPropagate(const std::vector<std::string>& args)
+{
+  return Propagate(args);
+}
+
+} // namespace mesolight

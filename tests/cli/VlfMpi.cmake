@@ -1,0 +1,72 @@
+# SPDX-License-Identifier: BSD-3-Clause
+# `mpiexec -n N mesolight vlf propagate`: the directions split over N ranks give the serial field
+# (every texel of the total diffuse textures within 1e-5, compared by COMPARE, the distributed
+# test program), a field resumes on another rank count to the same field, and a rank that fails
+# (a scene it cannot read, a budget it refuses) stops every rank with that rank's message.
+include("${CMAKE_CURRENT_LIST_DIR}/RunTool.cmake")
+cli_fresh_work()
+set(ENV{OMPI_ALLOW_RUN_AS_ROOT} 1)
+set(ENV{OMPI_ALLOW_RUN_AS_ROOT_CONFIRM} 1)
+set(ENV{OMPI_MCA_rmaps_base_oversubscribe} 1)
+set(small --directions 129 --rays 16)
+
+function (mpi_run expect_success)
+  execute_process(COMMAND "${MPIEXEC}" ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out
+    ERROR_VARIABLE err TIMEOUT 30)
+  if (rc MATCHES "timeout")
+    message(FATAL_ERROR "'${ARGN}' hung (${rc}): ${out} ${err}")
+  elseif (expect_success AND NOT rc EQUAL 0)
+    message(FATAL_ERROR "'${ARGN}' failed (rc ${rc}): ${out} ${err}")
+  elseif (NOT expect_success AND rc EQUAL 0)
+    message(FATAL_ERROR "'${ARGN}' was accepted: ${out} ${err}")
+  endif ()
+  set(last_output "${out}${err}" PARENT_SCOPE)
+endfunction ()
+
+function (same_field a b expect_same)
+  execute_process(COMMAND "${COMPARE}" compare "${a}" "${b}" RESULT_VARIABLE rc
+    OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if (expect_same AND NOT rc EQUAL 0)
+    message(FATAL_ERROR "${a} and ${b} differ: ${out} ${err}")
+  elseif (NOT expect_same AND rc EQUAL 0)
+    message(FATAL_ERROR "${a} and ${b} compare equal, which they are not: ${out}")
+  endif ()
+endfunction ()
+
+cli_run(TRUE vlf propagate ${small} --iterations 3 --out "${WORK}/serial.vlf")
+cli_run(TRUE vlf propagate ${small} --iterations 2 --out "${WORK}/two.vlf")
+same_field("${WORK}/serial.vlf" "${WORK}/two.vlf" FALSE) # the comparison can fail
+foreach (ranks IN ITEMS 2) # 3 ranks: the resume below
+  mpi_run(TRUE -n ${ranks} "${CLI}" vlf propagate ${small} --iterations 3
+    --out "${WORK}/ranks-${ranks}.vlf")
+  if (NOT last_output MATCHES "split over ${ranks} MPI ranks")
+    message(FATAL_ERROR "not distributed over ${ranks} ranks: ${last_output}")
+  endif ()
+  same_field("${WORK}/serial.vlf" "${WORK}/ranks-${ranks}.vlf" TRUE)
+endforeach ()
+# Written by 2 ranks, resumed by 3 (every rank reads it and keeps its share).
+mpi_run(TRUE -n 2 "${CLI}" vlf propagate ${small} --iterations 2 --out "${WORK}/resumed.vlf")
+mpi_run(TRUE -n 3 "${CLI}" vlf propagate --resume --iterations 3 --out "${WORK}/resumed.vlf")
+same_field("${WORK}/serial.vlf" "${WORK}/resumed.vlf" TRUE)
+# One rank fails: every rank stops (no hang: the timeout), the message names the rank.
+set(obj "${PROJECT_SOURCE_DIR}/examples/data/cornell-box.obj")
+mpi_run(FALSE -n 1 "${CLI}" vlf propagate "${obj}" ${small} --out "${WORK}/bad.vlf"
+  : -n 1 "${CLI}" vlf propagate "${WORK}/missing.obj" ${small} --out "${WORK}/bad.vlf")
+if (NOT last_output MATCHES "rank 1 of 2: .*missing.obj")
+  message(FATAL_ERROR "no message naming the failing rank and its scene: ${last_output}")
+endif ()
+mpi_run(FALSE -n 1 "${CLI}" vlf propagate ${small} --out "${WORK}/budget.vlf"
+  : -n 1 "${CLI}" vlf propagate ${small} --memory-budget 0.001 --out "${WORK}/budget.vlf")
+if (NOT last_output MATCHES "rank 1 of 2: .*memory budget")
+  message(FATAL_ERROR "no memory budget message naming the rank: ${last_output}")
+endif ()
+# Mirrors are not distributed yet: refused clearly.
+mpi_run(FALSE -n 2 "${CLI}" vlf propagate "${PROJECT_SOURCE_DIR}/examples/data/cornell-box-mirror.obj"
+  ${small} --out "${WORK}/mirror.vlf")
+if (NOT last_output MATCHES "mirror")
+  message(FATAL_ERROR "no message about mirrors: ${last_output}")
+endif ()
+# A usage error on one rank only (different options per rank) ends the job instead of leaving
+# the others waiting.
+mpi_run(FALSE -n 1 "${CLI}" vlf propagate ${small} --out "${WORK}/usage.vlf"
+  : -n 1 "${CLI}" vlf propagate ${small} --memory-budget 0.00001 --out "${WORK}/usage.vlf")

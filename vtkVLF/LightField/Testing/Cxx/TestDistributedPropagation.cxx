@@ -1,0 +1,300 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The distributed light field (Distribution.h) against the serial one, run under
+// `mpiexec -n N` (ctest runs it at 1, 2 and 3 ranks). Every rank also propagates the serial field
+// itself (the reference, independent of any reduction) and compares every texel.
+//
+//   TestDistributedPropagation equal DIR   distributed == serial (textures, energy, snapshot,
+//                                          gathered irradiance); without the reductions they
+//                                          must differ
+//   TestDistributedPropagation fail        one rank's memory budget refused, one rank aborting:
+//                                          every rank stops with the failing rank's message
+//   TestDistributedPropagation compare A B two snapshots' total diffuse textures equal (1e-5)
+// Exit 0 when every check holds on this rank.
+#include "Distribution.h"
+#include "LightField.h"
+#include "Lookup.h"
+#include "Propagation.h"
+#include "Snapshot.h"
+#include "TriangleScene.h"
+#include "vtkLightFieldReducer.h"
+
+#include <vtkMPIController.h>
+
+#include <glm/geometric.hpp>
+#include <vtkNew.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <string>
+
+namespace
+{
+namespace vlf = mesolight::vlf;
+
+int Failures = 0;
+int Rank = 0;
+
+void Check(bool ok, const std::string& what)
+{
+  if (!ok)
+  {
+    ++Failures;
+    std::cerr << "rank " << Rank << ": FAILED: " << what << "\n";
+  }
+}
+
+vlf::LightFieldSettings SmallSettings()
+{
+  vlf::LightFieldSettings s;
+  s.Directions = 129; // 2 * 8^2 + 1
+  s.RaysPerSide = 16;
+  s.TilesPerSide = 2;
+  return s;
+}
+
+// Largest relative difference over every texel and channel (a texel below a billionth of the
+// brightest is compared against that floor, so that two zeros agree).
+double WorstRelative(const std::vector<glm::vec3>& a, const std::vector<glm::vec3>& b)
+{
+  if (a.size() != b.size())
+  {
+    return 1e30;
+  }
+  float brightest = 0.0f;
+  for (const glm::vec3& v : a)
+  {
+    brightest = std::max({ brightest, v.x, v.y, v.z });
+  }
+  const double floor = 1e-9 * static_cast<double>(brightest);
+  double worst = 0.0;
+  for (std::size_t t = 0; t < a.size(); ++t)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      const double x = a[t][c], y = b[t][c];
+      worst = std::max(worst, std::abs(x - y) / std::max({ std::abs(x), std::abs(y), floor }));
+    }
+  }
+  return worst;
+}
+
+int Equal(vtkMultiProcessController* controller, const std::string& dir)
+{
+  vlf::ControllerReducer reducer(controller);
+  const int ranks = reducer.Size();
+  const mesolight::TriangleScene scene = mesolight::MakeCornellBox();
+  const int iterations = 3;
+  std::unique_ptr<vlf::LightField> serial = vlf::LightField::Build(scene, SmallSettings());
+  vlf::Propagate(*serial, iterations);
+
+  std::unique_ptr<vlf::LightField> field =
+    vlf::LightField::Build(scene, SmallSettings(), {}, &reducer);
+  // This rank traced its share only; together the ranks traced every direction once.
+  std::vector<double> held(field->SubfieldCount(), 0.0);
+  for (std::size_t k = 0; k < field->SubfieldCount(); ++k)
+  {
+    const bool owns = field->OwnsSubfield(k);
+    held[k] = owns ? 1.0 : 0.0;
+    Check(owns == !field->GetSubfield(k).TileStart.empty(),
+      "direction " + std::to_string(k) + ": maps held iff owned");
+  }
+  reducer.SumInPlace(held.data(), held.size());
+  Check(std::all_of(held.begin(), held.end(), [](double h) { return h == 1.0; }),
+    "every direction owned by exactly one rank");
+  Check(
+    WorstRelative(std::vector<glm::vec3>(serial->Capacity.size()), std::vector<glm::vec3>()) > 1.0,
+    "the comparison sees a size mismatch");
+  for (std::size_t t = 0; t < field->Capacity.size(); ++t)
+  {
+    const float a = field->Capacity[t], b = serial->Capacity[t];
+    if (std::abs(a - b) > 1e-5f * std::max(std::abs(a), std::abs(b)))
+    {
+      Check(false, "capacity of texel " + std::to_string(t));
+      break;
+    }
+  }
+  // Balance: the estimated cost of each rank's share within 5% of the mean (129 directions).
+  const std::vector<double> cost = vlf::DirectionCosts(*field);
+  double mine = 0.0, total = 0.0;
+  for (std::size_t k = 0; k < cost.size(); ++k)
+  {
+    total += cost[k];
+    mine += field->OwnsSubfield(k) ? cost[k] : 0.0;
+  }
+  Check(std::abs(mine - total / ranks) <= 0.05 * total / ranks,
+    "balanced share: " + std::to_string(mine) + " of " + std::to_string(total));
+
+  vlf::PropagationOptions options;
+  options.Reduce = &reducer;
+  const std::string snapshot = dir + "/distributed-" + std::to_string(ranks) + ".vlf";
+  vlf::Propagate(*field, iterations, options,
+    [&](const vlf::LightField&) { vlf::WriteDistributedSnapshot(*field, snapshot, reducer); });
+  const double worst = WorstRelative(field->TotalDiffuse, serial->TotalDiffuse);
+  std::printf("rank %d of %d: worst relative texel difference %.3g (unshot %.3g)\n", Rank, ranks,
+    worst, WorstRelative(field->UnshotDiffuse, serial->UnshotDiffuse));
+  Check(worst <= 1e-5, "total diffuse equals the serial field within 1e-5");
+  Check(WorstRelative(field->UnshotDiffuse, serial->UnshotDiffuse) <= 1e-5, "unshot diffuse");
+  for (int c = 0; c < 3; ++c)
+  {
+    const double a = field->EnergyLog.back().Shot[c], b = serial->EnergyLog.back().Shot[c];
+    Check(std::abs(a - b) <= 1e-5 * std::abs(b), "energy shot in the last iteration");
+  }
+  // The snapshot rank 0 wrote holds every direction's maps, equal to the serial field's.
+  controller->Barrier();
+  std::unique_ptr<vlf::LightField> read = vlf::ReadSnapshot(snapshot);
+  Check(WorstRelative(read->TotalDiffuse, serial->TotalDiffuse) <= 1e-5, "snapshot textures");
+  double worstMap = 0.0;
+  for (std::size_t k = 0; k < read->SubfieldCount(); ++k)
+  {
+    Check(read->GetSubfield(k).Depth == serial->GetSubfield(k).Depth,
+      "snapshot depths of direction " + std::to_string(k));
+    worstMap = std::max(
+      worstMap, WorstRelative(read->GetSubfield(k).Radiance, serial->GetSubfield(k).Radiance));
+  }
+  Check(worstMap <= 1e-5, "snapshot radiance maps (worst " + std::to_string(worstMap) + ")");
+
+  // Gathering (a movable object's points): the ranks' sums over their directions, reduced, equal
+  // the serial gather over every direction; without the reduction a rank has its share only.
+  std::vector<glm::vec3> points, normals;
+  for (int i = 0; i < 64; ++i)
+  {
+    const float a = 0.1f * static_cast<float>(i);
+    points.emplace_back(
+      0.4f * std::cos(a), -0.3f + 0.01f * static_cast<float>(i), 0.4f * std::sin(a));
+    normals.push_back(glm::normalize(glm::vec3(std::sin(3.0f * a), std::cos(a), 0.5f)));
+  }
+  const std::vector<glm::vec3> gathered = vlf::GatherIrradiance(*field, points, normals, reducer);
+  std::vector<glm::vec3> reference, partial;
+  const vlf::Lookup serialLookup(*serial), ownLookup(*field);
+  for (std::size_t i = 0; i < points.size(); ++i)
+  {
+    reference.push_back(serialLookup.Irradiance(points[i], normals[i]));
+    partial.push_back(ownLookup.Irradiance(points[i], normals[i]));
+  }
+  const double worstGather = WorstRelative(gathered, reference);
+  std::printf("rank %d of %d: gather at %zu points, worst relative difference %.3g\n", Rank, ranks,
+    points.size(), worstGather);
+  Check(worstGather <= 1e-5, "the reduced gather equals the serial gather");
+  if (ranks > 1)
+  {
+    Check(WorstRelative(partial, reference) > 1e-2, "a rank's own directions alone differ");
+  }
+
+  // Negative case: without the reduction each rank has only its share of the light.
+  if (ranks > 1)
+  {
+    std::unique_ptr<vlf::LightField> alone =
+      vlf::LightField::Build(scene, SmallSettings(), {}, &reducer);
+    vlf::PropagationOptions none; // no Reduce: each rank shoots its directions only
+    vlf::Propagate(*alone, iterations, none);
+    Check(WorstRelative(alone->TotalDiffuse, serial->TotalDiffuse) > 1e-2,
+      "without the reduction the field differs (the comparison can fail)");
+  }
+  return Failures;
+}
+
+// Runs step on every rank, expecting every rank to throw an error whose message contains want.
+void ExpectAgreedFailure(
+  const std::function<void()>& step, const std::string& want, const std::string& what)
+{
+  try
+  {
+    step();
+    Check(false, what + ": no error");
+  }
+  catch (const std::exception& e)
+  {
+    std::printf("rank %d: %s: %s\n", Rank, what.c_str(), e.what());
+    Check(std::string(e.what()).find(want) != std::string::npos,
+      what + ": the message names '" + want + "'");
+  }
+}
+
+int Fail(vtkMultiProcessController* controller)
+{
+  vlf::ControllerReducer reducer(controller);
+  const int ranks = reducer.Size();
+  const mesolight::TriangleScene scene = mesolight::MakeCornellBox();
+  const int last = ranks - 1;
+  // The last rank's budget is refused; the others would go on and wait in the capacity sum.
+  vlf::LightFieldSettings settings = SmallSettings();
+  if (Rank == last)
+  {
+    settings.MemoryBudget = 1 << 16;
+  }
+  const std::string rankName = ranks > 1 ? "rank " + std::to_string(last) + " of " : "";
+  ExpectAgreedFailure([&]() { vlf::LightField::Build(scene, settings, {}, &reducer); },
+    rankName + (ranks > 1 ? std::to_string(ranks) + ": " : "") + "the light field would need",
+    "memory budget refused on one rank");
+  // A bad scene on one rank (no emitter).
+  mesolight::TriangleScene dark = scene;
+  if (Rank == last)
+  {
+    for (mesolight::SceneMaterial& m : dark.Materials)
+    {
+      m.Emission = glm::vec3(0.0f);
+    }
+  }
+  ExpectAgreedFailure([&]() { vlf::LightField::Build(dark, SmallSettings(), {}, &reducer); },
+    "emitter", "a scene without an emitter on one rank");
+  // One rank aborts during the second iteration: every rank stops (AbortedError).
+  std::unique_ptr<vlf::LightField> field =
+    vlf::LightField::Build(scene, SmallSettings(), {}, &reducer);
+  vlf::PropagationOptions options;
+  options.Reduce = &reducer;
+  vlf::Propagate(*field, 1, options);
+  options.Progress = [&](double) { return Rank != last; };
+  ExpectAgreedFailure(
+    [&]() { vlf::Propagate(*field, 2, options); }, "aborted", "abort on one rank");
+  return Failures;
+}
+
+int Compare(const std::string& a, const std::string& b)
+{
+  const double worst =
+    WorstRelative(vlf::ReadSnapshot(a)->TotalDiffuse, vlf::ReadSnapshot(b)->TotalDiffuse);
+  std::printf("worst relative texel difference %.3g\n", worst);
+  Check(worst <= 1e-5, a + " and " + b + " differ");
+  return Failures;
+}
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  vtkNew<vtkMPIController> controller;
+  controller->Initialize(&argc, &argv);
+  vtkMultiProcessController::SetGlobalController(controller);
+  Rank = controller->GetLocalProcessId();
+  const std::string mode = argc > 1 ? argv[1] : "";
+  int failures = 0;
+  try
+  {
+    if (mode == "equal" && argc == 3)
+    {
+      failures = Equal(controller, argv[2]);
+    }
+    else if (mode == "fail")
+    {
+      failures = Fail(controller);
+    }
+    else if (mode == "compare" && argc == 4)
+    {
+      failures = Compare(argv[2], argv[3]);
+    }
+    else
+    {
+      std::cerr << "usage: TestDistributedPropagation equal DIR | fail | compare A B\n";
+      failures = 1;
+    }
+  }
+  catch (const std::exception& e)
+  {
+    std::cerr << "rank " << Rank << ": unexpected error: " << e.what() << "\n";
+    failures = 1;
+  }
+  vtkMultiProcessController::SetGlobalController(nullptr);
+  controller->Finalize();
+  return failures == 0 ? 0 : 1;
+}
