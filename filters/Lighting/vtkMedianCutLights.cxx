@@ -20,6 +20,7 @@
 #include "vtkInformationVector.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
+#include "vtkCellData.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
@@ -154,6 +155,15 @@ int vtkMedianCutLights::Execute(
   const int h = dims[1];
   const vtkIdType n = input->GetNumberOfPoints();
   vtkDataArray* scalars = this->GetInputArrayToProcess(0, inputVector);
+  if (!scalars && input->GetCellData()->GetScalars())
+  {
+    // ParaView's GDAL Raster Reader gives pixels as cells.
+    vtkErrorMacro("The environment map carries its pixels as cell data (as ParaView's GDAL "
+                  "Raster Reader gives them); radiance is read from point scalars: open the file "
+                  "with the Mesolight Image Reader or ParaView's HDR Reader, or apply Cell Data to "
+                  "Point Data first.");
+    return 0;
+  }
   if (!scalars)
   {
     vtkErrorMacro("The input image has no point scalars (or no array selected by "

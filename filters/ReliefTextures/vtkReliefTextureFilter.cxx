@@ -17,6 +17,7 @@
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkObjectFactory.h"
+#include "vtkCellData.h"
 #include "vtkPointData.h"
 #include "vtkSMPTools.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
@@ -137,6 +138,15 @@ int vtkReliefTextureFilter::Execute(
     return 0;
   }
   vtkDataArray* scalars = this->GetInputArrayToProcess(0, inputVector);
+  if (!scalars && input->GetCellData()->GetScalars())
+  {
+    // ParaView's GDAL Raster Reader (offered for .png and .tif) gives pixels as cells.
+    vtkErrorMacro("The input image carries its pixels as cell data (as ParaView's GDAL Raster "
+                  "Reader gives them); depths are read from point scalars: open the file with the "
+                  "PNG or TIFF Series Reader or the Mesolight Image Reader, or apply Cell Data to "
+                  "Point Data first.");
+    return 0;
+  }
   if (!scalars)
   {
     vtkErrorMacro("The input image has no point scalars (or no array selected by "

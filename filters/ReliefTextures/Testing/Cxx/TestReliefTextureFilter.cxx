@@ -8,6 +8,7 @@
 
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
+#include "vtkCellData.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
@@ -179,6 +180,19 @@ TEST(vtkReliefTextureFilter, EmptyAndMissingInput)
   filter->SetInputData(noScalars);
   filter->Update();
   EXPECT_TRUE(capture->HasError("no point scalars")) << capture->AllErrors();
+
+  // Pixels as cells (ParaView's GDAL Raster Reader): named, with what to do instead.
+  capture->Errors.clear();
+  vtkNew<vtkImageData> cellPixels;
+  cellPixels->SetDimensions(5, 5, 1);
+  vtkNew<vtkFloatArray> cellDepth;
+  cellDepth->SetNumberOfTuples(cellPixels->GetNumberOfCells());
+  cellDepth->FillValue(0.5f);
+  cellPixels->GetCellData()->SetScalars(cellDepth);
+  filter->SetInputData(cellPixels);
+  filter->Update();
+  EXPECT_TRUE(capture->HasError("as cell data")) << capture->AllErrors();
+  EXPECT_TRUE(capture->HasError("Cell Data to Point Data")) << capture->AllErrors();
 
   capture->Errors.clear();
   vtkNew<vtkImageData> volume;
