@@ -29,10 +29,32 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <functional>
 #include <map>
 #include <utility>
 
 vtkStandardNewMacro(vtkVirtualLightField);
+
+namespace
+{
+// A fixed count of iterations (iterations >= 0) or until the tolerance; the share of the emitted
+// flux still unshot when MaxIterations stopped it first, else 0. Under MPI every rank decides
+// alike: the unshot flux is summed over the ranks each iteration.
+double PropagateAsConfigured(mesolight::vlf::LightField& field, int iterations, double tolerance,
+  int maxIterations, const mesolight::vlf::PropagationOptions& options,
+  const std::function<void(const mesolight::vlf::LightField&)>& afterIteration)
+{
+  namespace vlf = mesolight::vlf;
+  if (iterations >= 0)
+  {
+    vlf::Propagate(field, iterations, options, afterIteration);
+    return 0.0;
+  }
+  return vlf::PropagateToTolerance(field, tolerance, maxIterations, options, afterIteration)
+    ? 0.0
+    : vlf::UnshotFraction(field);
+}
+} // namespace
 
 vtkVirtualLightField::vtkVirtualLightField() = default;
 vtkVirtualLightField::~vtkVirtualLightField() = default;
@@ -198,16 +220,14 @@ int vtkVirtualLightField::RequestData(
         vlf::WriteSnapshot(f, this->SnapshotFileName);
       }
     };
-    if (this->Iterations >= 0)
+    const double unshot = PropagateAsConfigured(*field, this->Iterations,
+      this->ConvergenceTolerance, this->MaxIterations, options, afterIteration);
+    if (unshot > 0.0)
     {
-      vlf::Propagate(*field, this->Iterations, options, afterIteration);
-    }
-    else if (!vlf::PropagateToTolerance(
-               *field, this->ConvergenceTolerance, this->MaxIterations, options, afterIteration))
-    {
-      vtkWarningMacro("The light field still holds "
-        << 100.0 * vlf::UnshotFraction(*field) << "% of its emitted flux unshot after "
-        << this->MaxIterations << " iterations (MaxIterations).");
+      vtkWarningMacro("The light field still holds " << 100.0 * unshot
+                                                     << "% of its emitted flux unshot after "
+                                                     << this->MaxIterations
+                                                     << " iterations (MaxIterations).");
     }
     this->DirectionsPropagated = static_cast<int>(field->SubfieldCount());
     this->Field = std::move(field);
@@ -471,18 +491,14 @@ int vtkVirtualLightField::RequestDistributedData(vtkPolyData* input, vtkPolyData
         vlf::WriteDistributedSnapshot(*field, this->SnapshotFileName, reducer);
       }
     };
-    if (this->Iterations >= 0)
+    const double unshot = PropagateAsConfigured(*field, this->Iterations,
+      this->ConvergenceTolerance, this->MaxIterations, options, afterIteration);
+    if (unshot > 0.0 && reducer.Rank() == 0)
     {
-      vlf::Propagate(*field, this->Iterations, options, afterIteration);
-    }
-    // Every rank stops alike: the unshot flux is summed over the ranks each iteration.
-    else if (!vlf::PropagateToTolerance(*field, this->ConvergenceTolerance, this->MaxIterations,
-               options, afterIteration) &&
-      reducer.Rank() == 0)
-    {
-      vtkWarningMacro("The light field still holds "
-        << 100.0 * vlf::UnshotFraction(*field) << "% of its emitted flux unshot after "
-        << this->MaxIterations << " iterations (MaxIterations).");
+      vtkWarningMacro("The light field still holds " << 100.0 * unshot
+                                                     << "% of its emitted flux unshot after "
+                                                     << this->MaxIterations
+                                                     << " iterations (MaxIterations).");
     }
     for (std::size_t k = 0; k < field->SubfieldCount(); ++k)
     {
