@@ -8,8 +8,8 @@
 #include "DepthHallucination.h"
 #include "HallucinationReference.h"
 #include "ProceduralHeightFields.h"
-#include "VTKMessage.h"
 #include "vtkDepthHallucinationFilter.h"
+#include "vtkMessageCollector.h"
 #include "vtkOIIOImageReader.h"
 #include "vtkOIIOImageWriter.h"
 
@@ -37,22 +37,6 @@ namespace mesolight
 {
 namespace
 {
-// Collects the error messages of an algorithm, so the tool prints one line instead of VTK's
-// multi-line report.
-struct ErrorText : public vtkCommand
-{
-  static ErrorText* New() { return new ErrorText; }
-  void Execute(vtkObject*, unsigned long, void* data) override
-  {
-    const std::string text = CleanVTKMessage(data ? static_cast<const char*>(data) : "");
-    if (this->Text.empty())
-    {
-      this->Text = text;
-    }
-  }
-  std::string Text;
-};
-
 vtkSmartPointer<vtkImageData> ToImage(const float* values, int w, int h, int components)
 {
   vtkNew<vtkFloatArray> array;
@@ -128,7 +112,7 @@ int RunHallucinateCommand(const std::vector<std::string>& args)
   // Read each photograph, one line per failure.
   const auto read = [](const std::string& file, const char* role)
   {
-    vtkNew<ErrorText> errors;
+    vtkNew<MessageCollector> errors; // errors only: warnings go to the console
     auto reader = vtkSmartPointer<vtkOIIOImageReader>::New();
     reader->AddObserver(vtkCommand::ErrorEvent, errors);
     reader->SetFileName(file.c_str());
@@ -137,7 +121,7 @@ int RunHallucinateCommand(const std::vector<std::string>& args)
     if (reader->GetErrorCode() != 0 || image->GetNumberOfPoints() == 0)
     {
       std::cerr << "mesolight hallucinate: cannot read the " << role << " photograph " << file
-                << (errors->Text.empty() ? "" : ": " + errors->Text) << "\n";
+                << (errors->Errors.empty() ? "" : ": " + errors->ErrorText()) << "\n";
       return vtkSmartPointer<vtkImageData>();
     }
     if (image->GetPointData()->GetScalars()->GetDataType() == VTK_UNSIGNED_CHAR)
@@ -157,7 +141,7 @@ int RunHallucinateCommand(const std::vector<std::string>& args)
   }
 
   vtkNew<vtkDepthHallucinationFilter> filter;
-  vtkNew<ErrorText> errors;
+  vtkNew<MessageCollector> errors; // errors only: warnings go to the console
   filter->AddObserver(vtkCommand::ErrorEvent, errors);
   filter->SetInputData(0, diffuse);
   filter->SetInputData(1, flash);
@@ -224,10 +208,11 @@ int RunHallucinateCommand(const std::vector<std::string>& args)
   {
     std::cerr << "\n";
   }
-  if (!errors->Text.empty() || filter->GetDepthOutput()->GetNumberOfPoints() == 0)
+  if (!errors->Errors.empty() || filter->GetDepthOutput()->GetNumberOfPoints() == 0)
   {
     std::cerr << "mesolight hallucinate: "
-              << (errors->Text.empty() ? std::string("the filter failed") : errors->Text) << "\n";
+              << (errors->Errors.empty() ? std::string("the filter failed") : errors->ErrorText())
+              << "\n";
     return 1;
   }
   int dims[3];
