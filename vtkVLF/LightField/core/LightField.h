@@ -52,6 +52,9 @@ class EmbreeScene;
 namespace vlf
 {
 
+/** Lines start this far behind the centre: the scene lies within the unit sphere. */
+constexpr float LineStart = 1.01f;
+
 // Thrown when the progress callback (Progress.h) returned false; the light field is then
 // unusable (its last snapshot is not).
 class AbortedError : public std::runtime_error
