@@ -9,18 +9,6 @@
 include("${CMAKE_CURRENT_LIST_DIR}/RunTool.cmake")
 cli_fresh_work()
 
-# A channel's figure of `oiiotool --stats` (Avg or Max, first channel) in thousandths.
-function (exr_stat_milli image what out)
-  execute_process(COMMAND "${OIIOTOOL}" --stats "${image}"
-    RESULT_VARIABLE rc OUTPUT_VARIABLE stats ERROR_VARIABLE err)
-  if (NOT rc EQUAL 0 OR NOT stats MATCHES "Stats ${what}: +([0-9]+)\\.([0-9]+)")
-    message(FATAL_ERROR "oiiotool cannot read ${image}: ${err}${stats}")
-  endif ()
-  string(SUBSTRING "${CMAKE_MATCH_2}000" 0 3 fraction)
-  math(EXPR milli "${CMAKE_MATCH_1} * 1000 + 1${fraction} - 1000")
-  set(${out} ${milli} PARENT_SCOPE)
-endfunction ()
-
 cli_expect(0 "wrote ${WORK}/cpu.exr (linear radiance)" vlf render "${FIELD}" --size 48x48
   --out "${WORK}/cpu.png" --exr "${WORK}/cpu.exr")
 exr_stat_milli("${WORK}/cpu.exr" Avg _reference)
