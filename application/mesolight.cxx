@@ -7,6 +7,7 @@
 #include "ConeBenchmark.h"
 #include "Distribution.h"
 #include "GatherBenchmark.h"
+#include "VlfStorageBenchmark.h"
 #include "GeometryImageBenchmark.h"
 #include "HallucinateCommand.h"
 #include "ImageCommands.h"
@@ -131,6 +132,9 @@ const std::vector<mesolight::Command>& Commands()
           "a movable object's gathered irradiance: us per\nvertex, cache hits, error vs the path "
           "tracer",
           RunGatherBenchmark, {} },
+        { "vlf-storage", "[SCENE.obj ...] [options]",
+          "light field storage: memory and file size,\ndense float vs sparse shared-exponent, its error",
+          RunVlfStorageBenchmark, {} },
         { "object", "[FIELD] [options]",
           "a movable object in the walkthrough: frame time\nper stage, directions and subdivision",
           RunObjectBenchmark, {} },

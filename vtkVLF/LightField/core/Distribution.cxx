@@ -61,9 +61,10 @@ void FreeMaps(Subfield& f)
 {
   std::vector<std::uint32_t>().swap(f.TileStart);
   std::vector<TileEntry>().swap(f.Entries);
+  f.Cells.Clear();
   std::vector<float>().swap(f.Depth);
-  std::vector<glm::vec3>().swap(f.Radiance);
-  std::vector<glm::vec3>().swap(f.UnshotSpecular);
+  f.Radiance.clear();
+  f.UnshotSpecular.clear();
 }
 } // namespace
 
@@ -285,9 +286,10 @@ std::string PackSubfield(const Subfield& f)
   std::string out;
   PackVector(out, f.TileStart);
   PackVector(out, f.Entries);
+  f.Cells.Pack(out);
   PackVector(out, f.Depth);
-  PackVector(out, f.Radiance);
-  PackVector(out, f.UnshotSpecular);
+  f.Radiance.Pack(out);
+  f.UnshotSpecular.Pack(out);
   return out;
 }
 
@@ -296,9 +298,10 @@ void UnpackSubfield(const std::string& bytes, Subfield& f)
   std::size_t at = 0;
   UnpackVector(bytes, at, f.TileStart);
   UnpackVector(bytes, at, f.Entries);
+  f.Cells.Unpack(bytes, at);
   UnpackVector(bytes, at, f.Depth);
-  UnpackVector(bytes, at, f.Radiance);
-  UnpackVector(bytes, at, f.UnshotSpecular);
+  f.Radiance.Unpack(bytes, at);
+  f.UnshotSpecular.Unpack(bytes, at);
 }
 
 namespace

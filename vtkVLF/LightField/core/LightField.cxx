@@ -128,7 +128,10 @@ MemoryEstimate EstimateFor(const TriangleScene& scene, const std::vector<Surface
   const std::uint64_t tiles =
     static_cast<std::uint64_t>(settings.TilesPerSide) * settings.TilesPerSide;
   e.MapCells = pairs * ts * ts;
+  // Every cell a crossing (an upper bound: the maps are sparse, RadianceStorage.h), with the
+  // cell index's mask and rank words.
   e.MapBytes = e.MapCells * MapCellBytes(specular) + pairs * sizeof(TileEntry) +
+    pairs * CellIndex::WordsPerMap(ts * ts) * (sizeof(std::uint64_t) + sizeof(std::uint32_t)) +
     directions.Size() * ((tiles + 1) * sizeof(std::uint32_t) + sizeof(Subfield));
   const std::uint64_t blocks = DefaultBlockCount(directions.Size());
   // total + unshot + capacity, and one receive buffer per worker block during propagation.
@@ -727,12 +730,12 @@ void LightField::TraceSubfield(std::size_t k, const EmbreeScene& embree)
     f.TileStart[t + 1] += f.TileStart[t];
   }
   const std::size_t cellsPerMap = static_cast<std::size_t>(ts) * ts;
-  f.Depth.assign(f.Entries.size() * cellsPerMap, -1.0f);
-  f.Radiance.assign(f.Entries.size() * cellsPerMap, glm::vec3(0.0f));
-  if (this->AnySpecular)
-  {
-    f.UnshotSpecular.assign(f.Entries.size() * cellsPerMap, glm::vec3(0.0f));
-  }
+  // The hits are sorted by map then cell: the cells in ascending order, and so the slots. A
+  // cell holds one crossing (a line crosses a plane once; a hit on a shared edge may repeat it).
+  std::vector<std::size_t> occupied;
+  occupied.reserve(hits.size());
+  f.Depth.clear();
+  f.Depth.reserve(hits.size());
   std::size_t map = 0;
   for (std::size_t q = 0; q < hits.size(); ++q)
   {
@@ -740,7 +743,21 @@ void LightField::TraceSubfield(std::size_t k, const EmbreeScene& embree)
     {
       ++map;
     }
-    f.Depth[map * cellsPerMap + hits[q].Local] = hits[q].Depth;
+    const std::size_t cell = map * cellsPerMap + hits[q].Local;
+    if (!occupied.empty() && occupied.back() == cell)
+    {
+      f.Depth.back() = hits[q].Depth;
+      continue;
+    }
+    occupied.push_back(cell);
+    f.Depth.push_back(hits[q].Depth);
+  }
+  f.Cells.Build(f.Entries.size(), cellsPerMap, occupied);
+  f.Radiance.assign(occupied.size(), glm::vec3(0.0f));
+  f.UnshotSpecular.clear();
+  if (this->AnySpecular)
+  {
+    f.UnshotSpecular.assign(occupied.size(), glm::vec3(0.0f));
   }
 }
 
@@ -749,13 +766,27 @@ std::uint64_t LightField::AllocatedBytes() const
   std::uint64_t bytes = 0;
   for (const Subfield& f : this->Subfields)
   {
-    bytes += f.Depth.capacity() * sizeof(float) + f.Radiance.capacity() * sizeof(glm::vec3) +
-      f.UnshotSpecular.capacity() * sizeof(glm::vec3) + f.Entries.capacity() * sizeof(TileEntry) +
+    bytes += f.Depth.capacity() * sizeof(float) + f.Radiance.Bytes() + f.UnshotSpecular.Bytes() +
+      f.Cells.Bytes() + f.Entries.capacity() * sizeof(TileEntry) +
       f.TileStart.capacity() * sizeof(std::uint32_t) + sizeof(Subfield);
   }
   bytes += (this->TotalDiffuse.capacity() + this->UnshotDiffuse.capacity()) * sizeof(glm::vec3) +
     this->Capacity.capacity() * sizeof(float);
   return bytes;
+}
+
+void LightField::CompactRadiance()
+{
+  ParallelFor(0, this->Subfields.size(), 1,
+    [this](std::size_t k0, std::size_t k1)
+    {
+      for (std::size_t k = k0; k < k1; ++k)
+      {
+        this->Subfields[k].Radiance.MakeCompact();
+        this->Subfields[k].UnshotSpecular.MakeCompact();
+        this->Subfields[k].Depth.shrink_to_fit();
+      }
+    });
 }
 
 } // namespace vlf

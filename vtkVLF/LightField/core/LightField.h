@@ -18,7 +18,9 @@
 // Wither 2005 §2.4.2.2.2). Per surface per tile a radiance map of tileSide x tileSide cells: the
 // crossing's depth along the line (negative when the cell's line misses the surface: Wither's
 // visibility map), the radiance the surface has sent along the line so far (RGB), and, when the
-// scene has mirror surfaces, the perfect-specular radiance received but not yet sent.
+// scene has mirror surfaces, the perfect-specular radiance received but not yet sent. Only the
+// cells whose line crosses the surface are stored, the radiance in a shared exponent once
+// propagated (RadianceStorage.h).
 //
 // Per surface a total diffuse radiance texture for walkthrough (Wither 2005 §2.4.2.2.3, progressive
 // mode): texels on the surface's plane in its own frame x = Origin + s AxisU + t AxisV, spanning
@@ -32,6 +34,7 @@
 #include "DirectionSet.h"
 #include "MemoryBudget.h" // FormatBytes
 #include "Progress.h"
+#include "RadianceStorage.h"
 #include "TriangleScene.h"
 
 #include <glm/vec2.hpp>
@@ -148,9 +151,12 @@ struct Subfield
   float Weight = 0.0f;                   // solid angle used in propagation and gathering (sr)
   std::vector<std::uint32_t> TileStart;  // m*m + 1 offsets into Entries
   std::vector<TileEntry> Entries;        // per tile, sorted by surface
-  std::vector<float> Depth;              // per map cell: distance along the line, < 0 = no crossing
-  std::vector<glm::vec3> Radiance;       // per map cell: radiance sent along the line so far
-  std::vector<glm::vec3> UnshotSpecular; // per map cell (empty without mirror surfaces)
+  // The maps' cells are sparse (RadianceStorage.h): Cells says which hold a crossing and gives
+  // each its slot, the index into the per-crossing arrays below.
+  CellIndex Cells;
+  std::vector<float> Depth;      // per crossing: distance along the line (>= 0)
+  RadianceArray Radiance;        // per crossing: radiance sent along the line so far
+  RadianceArray UnshotSpecular;  // per crossing (empty without mirror surfaces)
 };
 
 // One surface crossing of a line.
@@ -158,7 +164,7 @@ struct Crossing
 {
   std::uint32_t Surface = 0;
   float Depth = 0.0f;
-  std::size_t Cell = 0; // index into the subfield's per-map-cell arrays
+  std::size_t Cell = 0; // slot: index into the subfield's per-crossing arrays
 };
 
 struct MemoryEstimate
@@ -219,6 +225,9 @@ public:
   bool HasSpecular() const { return this->AnySpecular; }
   const MemoryEstimate& Estimate() const { return this->EstimateUsed; }
   std::uint64_t AllocatedBytes() const; // what the maps and textures hold now
+  // The radiance maps to their compact form (RadianceStorage.h): propagation's float
+  // accumulators become shared-exponent words. The next propagation turns them back.
+  void CompactRadiance();
 
   std::size_t SubfieldCount() const { return this->Subfields.size(); }
   // Whether this process holds subfield k's maps (all when OwnedSubfields is empty: serial).
@@ -236,7 +245,7 @@ public:
   float DepthOf(std::size_t k, const glm::vec3& p) const;
   // Point where line (i, j) of subfield k is at the given depth.
   glm::vec3 PointOnLine(std::size_t k, int i, int j, float depth) const;
-  // Map cell of surface s on line (i, j) of subfield k, or -1 when the line misses it.
+  // Slot (Crossing::Cell) of surface s on line (i, j) of subfield k, or -1 when the line misses it.
   std::int64_t FindCell(std::size_t k, int i, int j, std::uint32_t surface) const;
   // The crossings of line (i, j) of subfield k ordered by depth (out is cleared first).
   void LineCrossings(std::size_t k, int i, int j, std::vector<Crossing>& out) const;

@@ -58,9 +58,7 @@ std::int64_t LightField::FindCell(std::size_t k, int i, int j, std::uint32_t sur
   {
     return -1;
   }
-  const std::size_t cell = static_cast<std::size_t>(found->Map) * ts * ts +
-    static_cast<std::size_t>((j % ts) * ts + i % ts);
-  return f.Depth[cell] >= 0.0f ? static_cast<std::int64_t>(cell) : -1;
+  return f.Cells.Slot(found->Map, static_cast<std::size_t>((j % ts) * ts + i % ts));
 }
 
 void LightField::LineCrossings(std::size_t k, int i, int j, std::vector<Crossing>& out) const
@@ -75,14 +73,13 @@ void LightField::LineCrossings(std::size_t k, int i, int j, std::vector<Crossing
   const int ts = this->Config.TileSide();
   const std::size_t tile = static_cast<std::size_t>((j / ts) * this->Config.TilesPerSide + i / ts);
   const std::size_t local = static_cast<std::size_t>((j % ts) * ts + i % ts);
-  const std::size_t cellsPerMap = static_cast<std::size_t>(ts) * ts;
   for (std::uint32_t e = f.TileStart[tile]; e < f.TileStart[tile + 1]; ++e)
   {
-    const std::size_t cell = static_cast<std::size_t>(f.Entries[e].Map) * cellsPerMap + local;
-    const float depth = f.Depth[cell];
-    if (depth >= 0.0f)
+    const std::int64_t slot = f.Cells.Slot(f.Entries[e].Map, local);
+    if (slot >= 0)
     {
-      Crossing c{ f.Entries[e].Surface, depth, cell };
+      const std::size_t cell = static_cast<std::size_t>(slot);
+      Crossing c{ f.Entries[e].Surface, f.Depth[cell], cell };
       // Insertion sort: a line crosses few surfaces.
       out.push_back(c);
       for (std::size_t q = out.size() - 1; q > 0 && out[q - 1].Depth > out[q].Depth; --q)

@@ -86,7 +86,7 @@ void ShootSubfield(LightField& field, std::size_t k, BlockState& state)
           field.UnshotDiffuse, sender.Surface, field.PointOnLine(k, i, j, sender.Depth));
         if (specular)
         {
-          radiance += f.UnshotSpecular[sender.Cell];
+          radiance += glm::vec3(f.UnshotSpecular[sender.Cell]);
           f.UnshotSpecular[sender.Cell] = glm::vec3(0.0f);
         }
         if (radiance.x <= 0.0f && radiance.y <= 0.0f && radiance.z <= 0.0f)
@@ -285,6 +285,7 @@ void Propagate(LightField& field, int iterations, const PropagationOptions& opti
       afterIteration(field);
     }
   }
+  field.CompactRadiance(); // the stored field is compact (RadianceStorage.h)
 }
 
 double UnshotFraction(const LightField& field)
@@ -329,6 +330,7 @@ bool PropagateToTolerance(LightField& field, double tolerance, int maxIterations
     lastStep = std::max(0.0, progressOf(field.IterationsDone, fraction) - begin);
     reported = end;
   }
+  field.CompactRadiance(); // the stored field is compact (RadianceStorage.h)
   if (options.Progress && !options.Progress(1.0))
   {
     throw AbortedError();

@@ -282,8 +282,39 @@ SceneMaterial ReadMaterial(Reader& r)
   return m;
 }
 
+// Version 1's maps: every cell of every map, depth -1 where no line crosses, float radiance.
+void WriteDenseMaps(Writer& w, const LightField& field, const Subfield& f)
+{
+  const std::size_t ts = static_cast<std::size_t>(field.Settings().TileSide());
+  const std::size_t cellsPerMap = ts * ts;
+  const std::size_t cells = f.Entries.size() * cellsPerMap;
+  std::vector<float> depth(cells, -1.0f);
+  std::vector<glm::vec3> radiance(cells, glm::vec3(0.0f));
+  std::vector<glm::vec3> unshot(f.UnshotSpecular.empty() ? 0 : cells, glm::vec3(0.0f));
+  for (std::size_t map = 0; map < f.Entries.size(); ++map)
+  {
+    for (std::size_t local = 0; local < cellsPerMap; ++local)
+    {
+      const std::int64_t slot = f.Cells.Slot(map, local);
+      if (slot >= 0)
+      {
+        const std::size_t c = map * cellsPerMap + local;
+        depth[c] = f.Depth[static_cast<std::size_t>(slot)];
+        radiance[c] = f.Radiance[static_cast<std::size_t>(slot)];
+        if (!unshot.empty())
+        {
+          unshot[c] = f.UnshotSpecular[static_cast<std::size_t>(slot)];
+        }
+      }
+    }
+  }
+  w.Array(depth);
+  w.Array(radiance);
+  w.Array(unshot);
+}
+
 void WritePayload(Writer& w, const LightField& field,
-  const std::function<const Subfield&(std::size_t k)>& subfieldOf)
+  const std::function<const Subfield&(std::size_t k)>& subfieldOf, std::uint32_t version)
 {
   const LightFieldSettings& s = field.Settings();
   w.Value(static_cast<std::uint64_t>(s.Directions));
@@ -317,9 +348,19 @@ void WritePayload(Writer& w, const LightField& field,
     const Subfield& f = subfieldOf ? subfieldOf(k) : field.GetSubfield(k);
     w.Array(f.TileStart);
     w.Array(f.Entries);
+    if (version == DenseSnapshotVersion)
+    {
+      WriteDenseMaps(w, field, f);
+      continue;
+    }
+    w.Array(f.Cells.Words());
     w.Array(f.Depth);
-    w.Array(f.Radiance);
-    w.Array(f.UnshotSpecular);
+    for (const RadianceArray* radiance : { &f.Radiance, &f.UnshotSpecular })
+    {
+      const RadianceArray::CompactForm form = radiance->Compacted();
+      w.Value(form.Exponent);
+      w.Array(form.Words);
+    }
   }
 }
 } // namespace
@@ -420,6 +461,16 @@ void WriteSnapshot(const LightField& field, const std::string& path)
 void WriteSnapshot(const LightField& field, const std::string& path,
   const std::function<const Subfield&(std::size_t k)>& subfieldOf)
 {
+  WriteSnapshotVersion(field, path, SnapshotVersion, subfieldOf);
+}
+
+void WriteSnapshotVersion(const LightField& field, const std::string& path, std::uint32_t version,
+  const std::function<const Subfield&(std::size_t k)>& subfieldOf)
+{
+  if (version != SnapshotVersion && version != DenseSnapshotVersion)
+  {
+    throw SnapshotError("cannot write snapshot version " + std::to_string(version));
+  }
   if (path.empty())
   {
     throw SnapshotError("no snapshot file name given");
@@ -435,14 +486,14 @@ void WriteSnapshot(const LightField& field, const std::string& path,
   {
     Header header{};
     std::memcpy(header.MagicBytes, Magic, 8);
-    header.Version = SnapshotVersion;
+    header.Version = version;
     header.ByteOrder = ByteOrderMark;
     if (std::fwrite(&header, sizeof(header), 1, file) != 1)
     {
       throw SnapshotError("cannot write " + Quoted(temporary) + ": " + std::strerror(errno));
     }
     Writer writer(temporary, file);
-    WritePayload(writer, field, subfieldOf);
+    WritePayload(writer, field, subfieldOf, version);
     writer.Flush();
     header.PayloadBytes = writer.Written;
     header.PayloadChecksum = writer.Hash.Value();
@@ -472,6 +523,72 @@ void WriteSnapshot(const LightField& field, const std::string& path,
       "cannot rename " + Quoted(temporary) + " to " + Quoted(path) + ": " + reason);
   }
 }
+
+namespace
+{
+void ReadCompactRadiance(
+  Reader& r, RadianceArray& radiance, const char* what, std::uint64_t expected)
+{
+  const std::int32_t exponent = r.Value<std::int32_t>();
+  std::vector<std::uint32_t> words;
+  r.Array(words, what, expected);
+  if (!radiance.AssignCompact(exponent, std::move(words)))
+  {
+    r.Fail("its radiance exponent " + std::to_string(exponent) + " is out of range");
+  }
+}
+
+// Version 1 stored every map cell (depth < 0: no crossing) and float radiance; read one
+// subfield's maps and keep them the way this version does (sparse, compact).
+void ReadDenseMaps(Reader& r, Subfield& f, std::size_t k, std::uint64_t entries,
+  std::size_t cellsPerMap, bool specular)
+{
+  std::vector<float> depth;
+  std::vector<glm::vec3> radiance, unshot;
+  r.Array(depth, "depth cells", entries * cellsPerMap);
+  r.Array(radiance, "radiance cells", entries * cellsPerMap);
+  r.Array(unshot, "unshot specular cells", specular ? entries * cellsPerMap : 0);
+  const auto usable = [](const glm::vec3& x)
+  {
+    return std::isfinite(x.x) && std::isfinite(x.y) && std::isfinite(x.z) && x.x >= 0.0f &&
+      x.y >= 0.0f && x.z >= 0.0f;
+  };
+  std::vector<std::size_t> occupied;
+  for (std::size_t c = 0; c < depth.size(); ++c)
+  {
+    if (!std::isfinite(depth[c]))
+    {
+      r.Fail("a depth of subfield " + std::to_string(k) + " is not finite");
+    }
+    if (!usable(radiance[c]) || (!unshot.empty() && !usable(unshot[c])))
+    {
+      r.Fail("subfield " + std::to_string(k) + " holds negative, NaN or infinite radiance");
+    }
+    if (depth[c] >= 0.0f)
+    {
+      occupied.push_back(c);
+    }
+  }
+  f.Cells.Build(entries, cellsPerMap, occupied);
+  f.Depth.resize(occupied.size());
+  f.Radiance.assign(occupied.size(), glm::vec3(0.0f));
+  if (specular)
+  {
+    f.UnshotSpecular.assign(occupied.size(), glm::vec3(0.0f));
+  }
+  for (std::size_t q = 0; q < occupied.size(); ++q)
+  {
+    f.Depth[q] = depth[occupied[q]];
+    f.Radiance[q] = radiance[occupied[q]];
+    if (specular)
+    {
+      f.UnshotSpecular[q] = unshot[occupied[q]];
+    }
+  }
+  f.Radiance.MakeCompact();
+  f.UnshotSpecular.MakeCompact();
+}
+} // namespace
 
 std::unique_ptr<LightField> ReadSnapshot(const std::string& path, std::uint64_t memoryBudget)
 {
@@ -505,11 +622,13 @@ std::unique_ptr<LightField> ReadSnapshot(const std::string& path, std::uint64_t 
   {
     throw SnapshotError(Quoted(path) + " was written on a machine of the other byte order");
   }
-  if (header.Version != SnapshotVersion)
+  if (header.Version != SnapshotVersion && header.Version != DenseSnapshotVersion)
   {
     throw SnapshotError(Quoted(path) + " is snapshot version " + std::to_string(header.Version) +
-      "; this build reads version " + std::to_string(SnapshotVersion));
+      "; this build reads versions " + std::to_string(DenseSnapshotVersion) + " and " +
+      std::to_string(SnapshotVersion) + ": propagate the field again with this build");
   }
+  const bool dense = header.Version == DenseSnapshotVersion;
   struct stat info;
   if (::fstat(::fileno(file), &info) != 0)
   {
@@ -672,10 +791,22 @@ std::unique_ptr<LightField> ReadSnapshot(const std::string& path, std::uint64_t 
         }
       }
     }
-    r.Array(f.Depth, "depth cells", entries * cellsPerMap);
-    r.Array(f.Radiance, "radiance cells", entries * cellsPerMap);
-    r.Array(
-      f.UnshotSpecular, "unshot specular cells", field->HasSpecular() ? entries * cellsPerMap : 0);
+    if (dense)
+    {
+      ReadDenseMaps(r, f, k, entries, cellsPerMap, field->HasSpecular());
+      continue;
+    }
+    std::vector<std::uint64_t> words;
+    r.Array(words, "cell mask words", entries * CellIndex::WordsPerMap(cellsPerMap));
+    if (!f.Cells.Assign(entries, cellsPerMap, std::move(words)))
+    {
+      r.Fail("the cell masks of subfield " + std::to_string(k) + " are inconsistent");
+    }
+    const std::size_t slots = f.Cells.Slots();
+    r.Array(f.Depth, "crossing depths", slots);
+    ReadCompactRadiance(r, f.Radiance, "radiance words", slots);
+    ReadCompactRadiance(
+      r, f.UnshotSpecular, "unshot specular words", field->HasSpecular() ? slots : 0);
   }
   if (r.BytesLeft() != 0)
   {
@@ -687,6 +818,7 @@ std::unique_ptr<LightField> ReadSnapshot(const std::string& path, std::uint64_t 
   }
   // A valid checksum says the bytes are what was written, not that they are numbers: a field
   // with NaN or infinite radiance would render blank, or resume as "shot nan" and be saved.
+  // (Shared-exponent words are finite and non-negative whatever their bits.)
   const auto finite = [](const float* values, std::size_t count)
   { return std::all_of(values, values + count, [](float x) { return std::isfinite(x); }); };
   const auto finiteVectors = [&](const std::vector<glm::vec3>& values)
@@ -696,13 +828,21 @@ std::unique_ptr<LightField> ReadSnapshot(const std::string& path, std::uint64_t 
   for (std::size_t k = 0; ok && k < field->SubfieldCount(); ++k)
   {
     const Subfield& f = field->GetSubfield(k);
-    ok = finite(f.Depth.data(), f.Depth.size()) && finiteVectors(f.Radiance) &&
-      finiteVectors(f.UnshotSpecular);
+    ok = finite(f.Depth.data(), f.Depth.size());
   }
   if (!ok)
   {
     throw SnapshotError(
       Quoted(path) + " holds NaN or infinite values: it is not a usable light field");
+  }
+  for (std::size_t k = 0; k < field->SubfieldCount(); ++k)
+  {
+    const Subfield& f = field->GetSubfield(k);
+    if (!std::all_of(f.Depth.begin(), f.Depth.end(), [](float d) { return d >= 0.0f; }))
+    {
+      throw SnapshotError(Quoted(path) + " is corrupt: a crossing of subfield " +
+        std::to_string(k) + " has a negative depth");
+    }
   }
   // Radiance is a sum of non-negative terms: a negative one is not light (it renders black).
   const auto nonNegative = [](const std::vector<glm::vec3>& values)
@@ -710,13 +850,7 @@ std::unique_ptr<LightField> ReadSnapshot(const std::string& path, std::uint64_t 
     return std::all_of(values.begin(), values.end(),
       [](const glm::vec3& x) { return x.x >= 0.0f && x.y >= 0.0f && x.z >= 0.0f; });
   };
-  ok = nonNegative(field->TotalDiffuse) && nonNegative(field->UnshotDiffuse);
-  for (std::size_t k = 0; ok && k < field->SubfieldCount(); ++k)
-  {
-    const Subfield& f = field->GetSubfield(k);
-    ok = nonNegative(f.Radiance) && nonNegative(f.UnshotSpecular);
-  }
-  if (!ok)
+  if (!nonNegative(field->TotalDiffuse) || !nonNegative(field->UnshotDiffuse))
   {
     throw SnapshotError(
       Quoted(path) + " holds negative radiance: it is not a usable light field");

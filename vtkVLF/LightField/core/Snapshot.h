@@ -2,10 +2,10 @@
 // Snapshot: a light field on disk after each propagation iteration (Wither 2005 §2.4.2.1: the
 // propagator writes its state after every iteration and can continue from it).
 //
-// Format (little-endian, version 1): a 48-byte header -- magic "MLVLFSNP", version, byte-order
+// Format (little-endian, version 2): a 48-byte header -- magic "MLVLFSNP", version, byte-order
 // mark, payload size, payload checksum, header checksum -- then the payload: settings,
 // iterations done, the (unit-sphere) scene with its materials, the diffuse textures, the energy
-// log and every subfield's tile lists and maps. Surfaces and directions are rebuilt from the
+// log and every subfield's tile lists and maps (below). Surfaces and directions are rebuilt from the
 // scene and settings on reading. The checksum is a 64-bit multiply-xorshift hash of the payload
 // words.
 //
@@ -35,7 +35,11 @@ public:
   using std::runtime_error::runtime_error;
 };
 
-constexpr std::uint32_t SnapshotVersion = 1;
+// Version 2 stores the maps sparse and compact (RadianceStorage.h): per subfield the cell mask
+// words, the crossings' depths and the radiance as shared-exponent words with their power-of-two
+// scale. Version 1 (every map cell, float radiance) is still read, into the compact form.
+constexpr std::uint32_t SnapshotVersion = 2;
+constexpr std::uint32_t DenseSnapshotVersion = 1;
 
 // Writes atomically (see above). Throws SnapshotError when the file cannot be written (the
 // previous file, if any, is left untouched).
@@ -44,6 +48,11 @@ void WriteSnapshot(const LightField& field, const std::string& path);
 // time (a distributed field's rank 0 receives the others' maps this way: Distribution.h).
 void WriteSnapshot(const LightField& field, const std::string& path,
   const std::function<const Subfield&(std::size_t k)>& subfieldOf);
+
+// The same in an older layout: version DenseSnapshotVersion writes what builds before version 2
+// wrote (for the tests of reading old files and `mesolight bench vlf-storage`).
+void WriteSnapshotVersion(const LightField& field, const std::string& path, std::uint32_t version,
+  const std::function<const Subfield&(std::size_t k)>& subfieldOf = {});
 
 // Reads a snapshot. memoryBudget (bytes, 0 = the one stored) is checked before allocating.
 // Throws SnapshotError for a missing, foreign, truncated, corrupt or incompatible file, and

@@ -151,7 +151,8 @@ int Equal(vtkMultiProcessController* controller, const std::string& dir)
     Check(read->GetSubfield(k).Depth == serial->GetSubfield(k).Depth,
       "snapshot depths of direction " + std::to_string(k));
     worstMap = std::max(
-      worstMap, WorstRelative(read->GetSubfield(k).Radiance, serial->GetSubfield(k).Radiance));
+      worstMap, WorstRelative(read->GetSubfield(k).Radiance.ToVector(),
+        serial->GetSubfield(k).Radiance.ToVector()));
   }
   Check(worstMap <= 1e-5, "snapshot radiance maps (worst " + std::to_string(worstMap) + ")");
 
