@@ -62,7 +62,7 @@ void FreeMaps(Subfield& f)
   std::vector<std::uint32_t>().swap(f.TileStart);
   std::vector<TileEntry>().swap(f.Entries);
   f.Cells.Clear();
-  std::vector<float>().swap(f.Depth);
+  f.Depth.Clear();
   f.Radiance.clear();
   f.UnshotSpecular.clear();
 }
@@ -287,7 +287,7 @@ std::string PackSubfield(const Subfield& f)
   PackVector(out, f.TileStart);
   PackVector(out, f.Entries);
   f.Cells.Pack(out);
-  PackVector(out, f.Depth);
+  f.Depth.Pack(out);
   f.Radiance.Pack(out);
   f.UnshotSpecular.Pack(out);
   return out;
@@ -299,7 +299,7 @@ void UnpackSubfield(const std::string& bytes, Subfield& f)
   UnpackVector(bytes, at, f.TileStart);
   UnpackVector(bytes, at, f.Entries);
   f.Cells.Unpack(bytes, at);
-  UnpackVector(bytes, at, f.Depth);
+  f.Depth.Unpack(bytes, at);
   f.Radiance.Unpack(bytes, at);
   f.UnshotSpecular.Unpack(bytes, at);
 }

@@ -65,10 +65,15 @@ std::uint64_t MapCellBytes(bool specular)
 
 // Upper bound on the (tile, surface) pairs of every subfield: a surface can only occupy the
 // tiles holding cell centres inside the bounding boxes of its projected triangles.
+// crossings: an upper bound on the crossings (the maps are sparse, RadianceStorage.h): per
+// projected triangle, the lattice points of a convex region of area A and perimeter P (in
+// cells) are at most A + P + 1.
 std::uint64_t CountTileSurfacePairs(const TriangleScene& scene,
   const std::vector<Surface>& surfaces, const DirectionSet& directions,
-  const LightFieldSettings& settings)
+  const LightFieldSettings& settings, std::uint64_t& crossings)
 {
+  crossings = 0;
+  double crossingBound = 0.0;
   const int n = settings.RaysPerSide;
   const int m = settings.TilesPerSide;
   const int ts = settings.TileSide();
@@ -85,6 +90,7 @@ std::uint64_t CountTileSurfacePairs(const TriangleScene& scene,
       for (std::uint32_t t : surface.Triangles)
       {
         float lo[2] = { 1e30f, 1e30f }, hi[2] = { -1e30f, -1e30f };
+        double corner[3][2];
         for (int c = 0; c < 3; ++c)
         {
           const glm::vec3 p = scene.Vertex(t, c);
@@ -94,8 +100,19 @@ std::uint64_t CountTileSurfacePairs(const TriangleScene& scene,
           {
             lo[a] = std::min(lo[a], cell[a]);
             hi[a] = std::max(hi[a], cell[a]);
+            corner[c][a] = cell[a];
           }
         }
+        double perimeter = 0.0;
+        for (int c = 0; c < 3; ++c)
+        {
+          perimeter += std::hypot(corner[(c + 1) % 3][0] - corner[c][0],
+            corner[(c + 1) % 3][1] - corner[c][1]);
+        }
+        const double area = 0.5 *
+          std::abs((corner[1][0] - corner[0][0]) * (corner[2][1] - corner[0][1]) -
+            (corner[2][0] - corner[0][0]) * (corner[1][1] - corner[0][1]));
+        crossingBound += area + perimeter + 1.0;
         const int i0 = std::max(0, static_cast<int>(std::ceil(lo[0] - 1e-3f)));
         const int i1 = std::min(n - 1, static_cast<int>(std::floor(hi[0] + 1e-3f)));
         const int j0 = std::max(0, static_cast<int>(std::ceil(lo[1] - 1e-3f)));
@@ -111,6 +128,7 @@ std::uint64_t CountTileSurfacePairs(const TriangleScene& scene,
       pairs += static_cast<std::uint64_t>(std::count(marked.begin(), marked.end(), 1));
     }
   }
+  crossings = static_cast<std::uint64_t>(std::ceil(crossingBound));
   return pairs;
 }
 
@@ -123,14 +141,17 @@ MemoryEstimate EstimateFor(const TriangleScene& scene, const std::vector<Surface
   {
     e.Texels += s.TexelCount();
   }
-  const std::uint64_t pairs = CountTileSurfacePairs(scene, surfaces, directions, settings);
+  std::uint64_t crossings = 0;
+  const std::uint64_t pairs =
+    CountTileSurfacePairs(scene, surfaces, directions, settings, crossings);
   const std::uint64_t ts = static_cast<std::uint64_t>(settings.TileSide());
   const std::uint64_t tiles =
     static_cast<std::uint64_t>(settings.TilesPerSide) * settings.TilesPerSide;
   e.MapCells = pairs * ts * ts;
-  // Every cell a crossing (an upper bound: the maps are sparse, RadianceStorage.h), with the
-  // cell index's mask and rank words.
-  e.MapBytes = e.MapCells * MapCellBytes(specular) + pairs * sizeof(TileEntry) +
+  // Per crossing at most a depth and float radiance (while propagating), per map its cell
+  // index's mask and rank words and its depth start.
+  e.MapBytes = std::min(e.MapCells, crossings) * MapCellBytes(specular) +
+    pairs * (sizeof(TileEntry) + sizeof(std::uint32_t)) +
     pairs * CellIndex::WordsPerMap(ts * ts) * (sizeof(std::uint64_t) + sizeof(std::uint32_t)) +
     directions.Size() * ((tiles + 1) * sizeof(std::uint32_t) + sizeof(Subfield));
   const std::uint64_t blocks = DefaultBlockCount(directions.Size());
@@ -733,9 +754,10 @@ void LightField::TraceSubfield(std::size_t k, const EmbreeScene& embree)
   // The hits are sorted by map then cell: the cells in ascending order, and so the slots. A
   // cell holds one crossing (a line crosses a plane once; a hit on a shared edge may repeat it).
   std::vector<std::size_t> occupied;
+  std::vector<float> depth;
+  std::vector<std::uint32_t> mapOf;
+  std::vector<std::int32_t> lineI, lineJ;
   occupied.reserve(hits.size());
-  f.Depth.clear();
-  f.Depth.reserve(hits.size());
   std::size_t map = 0;
   for (std::size_t q = 0; q < hits.size(); ++q)
   {
@@ -746,13 +768,39 @@ void LightField::TraceSubfield(std::size_t k, const EmbreeScene& embree)
     const std::size_t cell = map * cellsPerMap + hits[q].Local;
     if (!occupied.empty() && occupied.back() == cell)
     {
-      f.Depth.back() = hits[q].Depth;
+      depth.back() = hits[q].Depth;
       continue;
     }
     occupied.push_back(cell);
-    f.Depth.push_back(hits[q].Depth);
+    depth.push_back(hits[q].Depth);
+    mapOf.push_back(static_cast<std::uint32_t>(map));
+    lineI.push_back(static_cast<std::int32_t>((hits[q].Tile % m) * ts + hits[q].Local % ts));
+    lineJ.push_back(static_cast<std::int32_t>((hits[q].Tile / m) * ts + hits[q].Local / ts));
   }
   f.Cells.Build(f.Entries.size(), cellsPerMap, occupied);
+  // Depths: none for maps whose crossings lie on their surface's plane (CrossingDepths).
+  std::vector<std::uint8_t> offPlane(f.Entries.size(), 0);
+  for (std::size_t q = 0; q < occupied.size(); ++q)
+  {
+    const float plane = this->PlaneDepth(k, lineI[q], lineJ[q], f.Entries[mapOf[q]].Surface);
+    if (!(std::abs(plane - depth[q]) <= PlaneDepthTolerance))
+    {
+      offPlane[mapOf[q]] = 1;
+    }
+  }
+  f.Depth.Clear();
+  f.Depth.Start.assign(f.Entries.size(), CrossingDepths::FromPlane);
+  for (std::size_t e = 0; e < f.Entries.size(); ++e)
+  {
+    if (offPlane[e])
+    {
+      f.Depth.Start[e] = static_cast<std::uint32_t>(f.Depth.Values.size());
+      const std::size_t first = f.Cells.MapFirstSlot(e);
+      f.Depth.Values.insert(f.Depth.Values.end(), depth.begin() + static_cast<std::ptrdiff_t>(first),
+        depth.begin() + static_cast<std::ptrdiff_t>(first + f.Cells.MapSlots(e)));
+    }
+  }
+  f.Depth.Values.shrink_to_fit();
   f.Radiance.assign(occupied.size(), glm::vec3(0.0f));
   f.UnshotSpecular.clear();
   if (this->AnySpecular)
@@ -766,7 +814,7 @@ std::uint64_t LightField::AllocatedBytes() const
   std::uint64_t bytes = 0;
   for (const Subfield& f : this->Subfields)
   {
-    bytes += f.Depth.capacity() * sizeof(float) + f.Radiance.Bytes() + f.UnshotSpecular.Bytes() +
+    bytes += f.Depth.Bytes() + f.Radiance.Bytes() + f.UnshotSpecular.Bytes() +
       f.Cells.Bytes() + f.Entries.capacity() * sizeof(TileEntry) +
       f.TileStart.capacity() * sizeof(std::uint32_t) + sizeof(Subfield);
   }
@@ -784,7 +832,6 @@ void LightField::CompactRadiance()
       {
         this->Subfields[k].Radiance.MakeCompact();
         this->Subfields[k].UnshotSpecular.MakeCompact();
-        this->Subfields[k].Depth.shrink_to_fit();
       }
     });
 }

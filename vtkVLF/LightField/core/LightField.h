@@ -154,7 +154,7 @@ struct Subfield
   // The maps' cells are sparse (RadianceStorage.h): Cells says which hold a crossing and gives
   // each its slot, the index into the per-crossing arrays below.
   CellIndex Cells;
-  std::vector<float> Depth;      // per crossing: distance along the line (>= 0)
+  CrossingDepths Depth;          // per crossing: distance along the line (LightField::CrossingDepth)
   RadianceArray Radiance;        // per crossing: radiance sent along the line so far
   RadianceArray UnshotSpecular;  // per crossing (empty without mirror surfaces)
 };
@@ -245,6 +245,11 @@ public:
   float DepthOf(std::size_t k, const glm::vec3& p) const;
   // Point where line (i, j) of subfield k is at the given depth.
   glm::vec3 PointOnLine(std::size_t k, int i, int j, float depth) const;
+  // Depth of the crossing in slot `slot` of map `map` (surface s, line (i, j)) of subfield k:
+  // stored, or where the line meets the surface's plane (CrossingDepths).
+  float CrossingDepth(
+    std::size_t k, int i, int j, std::size_t map, std::uint32_t surface, std::size_t slot) const;
+  float PlaneDepth(std::size_t k, int i, int j, std::uint32_t surface) const;
   // Slot (Crossing::Cell) of surface s on line (i, j) of subfield k, or -1 when the line misses it.
   std::int64_t FindCell(std::size_t k, int i, int j, std::uint32_t surface) const;
   // The crossings of line (i, j) of subfield k ordered by depth (out is cleared first).

@@ -36,6 +36,27 @@ glm::vec3 LightField::PointOnLine(std::size_t k, int i, int j, float depth) cons
   return a * f.AxisU + b * f.AxisV + (depth - LineStart) * f.Direction;
 }
 
+float LightField::PlaneDepth(std::size_t k, int i, int j, std::uint32_t surface) const
+{
+  // The line o + t d, o = a u + b v - LineStart d, meets dot(n, x) = offset at t.
+  const Subfield& f = this->Subfields[k];
+  const Surface& s = this->SurfaceList[surface];
+  const float h = this->Config.CellSize();
+  const float a = -1.0f + (static_cast<float>(i) + 0.5f) * h;
+  const float b = -1.0f + (static_cast<float>(j) + 0.5f) * h;
+  const float nd = glm::dot(s.Normal, f.Direction);
+  return (s.Offset - a * glm::dot(s.Normal, f.AxisU) - b * glm::dot(s.Normal, f.AxisV)) / nd +
+    LineStart;
+}
+
+float LightField::CrossingDepth(
+  std::size_t k, int i, int j, std::size_t map, std::uint32_t surface, std::size_t slot) const
+{
+  const Subfield& f = this->Subfields[k];
+  return f.Depth.FollowsPlane(map) ? this->PlaneDepth(k, i, j, surface)
+                                   : f.Depth.Stored(map, slot - f.Cells.MapFirstSlot(map));
+}
+
 std::int64_t LightField::FindCell(std::size_t k, int i, int j, std::uint32_t surface) const
 {
   const int n = this->Config.RaysPerSide;
@@ -79,7 +100,8 @@ void LightField::LineCrossings(std::size_t k, int i, int j, std::vector<Crossing
     if (slot >= 0)
     {
       const std::size_t cell = static_cast<std::size_t>(slot);
-      Crossing c{ f.Entries[e].Surface, f.Depth[cell], cell };
+      Crossing c{ f.Entries[e].Surface,
+        this->CrossingDepth(k, i, j, f.Entries[e].Map, f.Entries[e].Surface, cell), cell };
       // Insertion sort: a line crosses few surfaces.
       out.push_back(c);
       for (std::size_t q = out.size() - 1; q > 0 && out[q - 1].Depth > out[q].Depth; --q)

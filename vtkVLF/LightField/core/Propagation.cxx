@@ -280,12 +280,17 @@ void Propagate(LightField& field, int iterations, const PropagationOptions& opti
     step.Progress = SubProgress(options.Progress, static_cast<double>(it - first) / total,
       static_cast<double>(it - first + 1) / total);
     PropagateIteration(field, step);
+    if (it + 1 == iterations)
+    {
+      field.CompactRadiance(); // the stored field is compact (RadianceStorage.h), its last
+                               // snapshot too; earlier ones keep float to resume exactly
+    }
     if (afterIteration)
     {
       afterIteration(field);
     }
   }
-  field.CompactRadiance(); // the stored field is compact (RadianceStorage.h)
+  field.CompactRadiance();
 }
 
 double UnshotFraction(const LightField& field)
@@ -322,15 +327,19 @@ bool PropagateToTolerance(LightField& field, double tolerance, int maxIterations
     PropagationOptions step = options;
     step.Progress = SubProgress(options.Progress, begin, end);
     PropagateIteration(field, step);
+    fraction = UnshotFraction(field);
+    if (fraction <= tolerance || field.IterationsDone >= maxIterations)
+    {
+      field.CompactRadiance(); // as in Propagate: the last snapshot compact
+    }
     if (afterIteration)
     {
       afterIteration(field);
     }
-    fraction = UnshotFraction(field);
     lastStep = std::max(0.0, progressOf(field.IterationsDone, fraction) - begin);
     reported = end;
   }
-  field.CompactRadiance(); // the stored field is compact (RadianceStorage.h)
+  field.CompactRadiance();
   if (options.Progress && !options.Progress(1.0))
   {
     throw AbortedError();

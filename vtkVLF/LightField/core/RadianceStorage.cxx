@@ -188,6 +188,36 @@ void CellIndex::Unpack(const std::string& in, std::size_t& at)
   }
 }
 
+void CrossingDepths::Clear()
+{
+  std::vector<std::uint32_t>().swap(this->Start);
+  std::vector<float>().swap(this->Values);
+}
+
+std::uint64_t CrossingDepths::Bytes() const
+{
+  return this->Start.capacity() * sizeof(std::uint32_t) + this->Values.capacity() * sizeof(float);
+}
+
+void CrossingDepths::Pack(std::string& out) const
+{
+  PackArray(out, this->Start);
+  PackArray(out, this->Values);
+}
+
+void CrossingDepths::Unpack(const std::string& in, std::size_t& at)
+{
+  this->Start = UnpackArray<std::uint32_t>(in, at);
+  this->Values = UnpackArray<float>(in, at);
+  for (const std::uint32_t start : this->Start)
+  {
+    if (start != FromPlane && start > this->Values.size())
+    {
+      throw std::runtime_error("a subfield message holds inconsistent depths");
+    }
+  }
+}
+
 void RadianceArray::assign(std::size_t n, const glm::vec3& value)
 {
   std::vector<std::uint32_t>().swap(this->Packed);

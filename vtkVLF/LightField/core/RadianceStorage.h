@@ -19,8 +19,10 @@
 // rounding at every step would lose each addition smaller than half a step of the 9-bit
 // mantissa (late bounces onto bright cells) and bias the field dark. So a RadianceArray is
 // either full float (Accumulating: while propagating) or compact, and turns itself back to float
-// at the first write. Propagate and PropagateToTolerance compact the field when they end; a
-// snapshot stores the compact form and is loaded compact.
+// at the first write. Propagate and PropagateToTolerance compact the field after their last
+// iteration (before its snapshot). A snapshot stores each array as it is held: the last one
+// compact, and loaded compact; those of earlier iterations float, so that resuming from them
+// gives the field of an uninterrupted run bit for bit.
 #ifndef mesolight_vlf_RadianceStorage_h
 #define mesolight_vlf_RadianceStorage_h
 
@@ -76,6 +78,13 @@ public:
     return static_cast<std::int64_t>(this->Rank[w]) + __builtin_popcountll(word & (bit - 1));
   }
   std::size_t Slots() const { return this->Occupied; }
+  // Slot of the map's first crossing (its crossings are the next consecutive slots).
+  std::size_t MapFirstSlot(std::size_t map) const { return this->Rank[map * this->PerMap]; }
+  std::size_t MapSlots(std::size_t map) const
+  {
+    return (map + 1 < this->MapCount ? this->Rank[(map + 1) * this->PerMap] : this->Occupied) -
+      this->Rank[map * this->PerMap];
+  }
   std::size_t Maps() const { return this->MapCount; }
   std::size_t CellsPerMap() const { return this->Cells; }
   const std::vector<std::uint64_t>& Words() const { return this->Mask; }
@@ -99,6 +108,34 @@ private:
   std::size_t Occupied = 0;
   std::vector<std::uint64_t> Mask;
   std::vector<std::uint32_t> Rank; // crossings before each word
+};
+
+// Depth of each crossing along its line. Surfaces are planar, so where a line crosses one follows
+// from the plane (LightField::PlaneDepth): a map whose traced crossings all lie within
+// PlaneDepthTolerance of it stores no depth; the others (triangles a little off their surface's
+// plane) store a float per crossing.
+constexpr float PlaneDepthTolerance = 1e-6f; // a tenth of the coincident-face distance
+class CrossingDepths
+{
+public:
+  static constexpr std::uint32_t FromPlane = 0xffffffffu;
+  bool FollowsPlane(std::size_t map) const { return this->Start[map] == FromPlane; }
+  // Stored depth of the crossing `index` of the map (its slot minus the map's first).
+  float Stored(std::size_t map, std::size_t index) const
+  {
+    return this->Values[this->Start[map] + index];
+  }
+  std::vector<std::uint32_t> Start; // per map: its first stored depth, or FromPlane
+  std::vector<float> Values;
+
+  void Clear();
+  std::uint64_t Bytes() const;
+  void Pack(std::string& out) const;
+  void Unpack(const std::string& in, std::size_t& at); // throws std::runtime_error
+  bool operator==(const CrossingDepths& other) const
+  {
+    return this->Start == other.Start && this->Values == other.Values;
+  }
 };
 
 // Radiance per crossing (slot), full float or compact (see above).

@@ -227,6 +227,7 @@ public:
   {
     return this->Remaining + (this->Buffer.size() - this->Position);
   }
+  std::string QuotedPath() const { return Quoted(this->Path); }
   [[noreturn]] void Fail(const std::string& what) const
   {
     throw SnapshotError(Quoted(this->Path) + " is corrupt: " + what);
@@ -282,8 +283,23 @@ SceneMaterial ReadMaterial(Reader& r)
   return m;
 }
 
+// Depth of crossing `slot` of map `map` of f (subfield k of the field, its maps possibly received
+// from another rank): stored or from the plane (CrossingDepths).
+float DepthOf(const LightField& field, const Subfield& f, std::size_t k, std::size_t tile,
+  std::size_t map, std::size_t local, std::size_t slot)
+{
+  if (!f.Depth.FollowsPlane(map))
+  {
+    return f.Depth.Stored(map, slot - f.Cells.MapFirstSlot(map));
+  }
+  const std::size_t m = static_cast<std::size_t>(field.Settings().TilesPerSide);
+  const std::size_t ts = static_cast<std::size_t>(field.Settings().TileSide());
+  return field.PlaneDepth(k, static_cast<int>((tile % m) * ts + local % ts),
+    static_cast<int>((tile / m) * ts + local / ts), f.Entries[map].Surface);
+}
+
 // Version 1's maps: every cell of every map, depth -1 where no line crosses, float radiance.
-void WriteDenseMaps(Writer& w, const LightField& field, const Subfield& f)
+void WriteDenseMaps(Writer& w, const LightField& field, const Subfield& f, std::size_t k)
 {
   const std::size_t ts = static_cast<std::size_t>(field.Settings().TileSide());
   const std::size_t cellsPerMap = ts * ts;
@@ -291,19 +307,25 @@ void WriteDenseMaps(Writer& w, const LightField& field, const Subfield& f)
   std::vector<float> depth(cells, -1.0f);
   std::vector<glm::vec3> radiance(cells, glm::vec3(0.0f));
   std::vector<glm::vec3> unshot(f.UnshotSpecular.empty() ? 0 : cells, glm::vec3(0.0f));
-  for (std::size_t map = 0; map < f.Entries.size(); ++map)
+  for (std::size_t t = 0; t + 1 < f.TileStart.size(); ++t)
   {
-    for (std::size_t local = 0; local < cellsPerMap; ++local)
+    for (std::size_t e = f.TileStart[t]; e < f.TileStart[t + 1]; ++e)
     {
-      const std::int64_t slot = f.Cells.Slot(map, local);
-      if (slot >= 0)
+      const std::size_t map = f.Entries[e].Map;
+      for (std::size_t local = 0; local < cellsPerMap; ++local)
       {
+        const std::int64_t found = f.Cells.Slot(map, local);
+        if (found < 0)
+        {
+          continue;
+        }
+        const std::size_t slot = static_cast<std::size_t>(found);
         const std::size_t c = map * cellsPerMap + local;
-        depth[c] = f.Depth[static_cast<std::size_t>(slot)];
-        radiance[c] = f.Radiance[static_cast<std::size_t>(slot)];
+        depth[c] = DepthOf(field, f, k, t, map, local, slot);
+        radiance[c] = f.Radiance[slot];
         if (!unshot.empty())
         {
-          unshot[c] = f.UnshotSpecular[static_cast<std::size_t>(slot)];
+          unshot[c] = f.UnshotSpecular[slot];
         }
       }
     }
@@ -350,16 +372,31 @@ void WritePayload(Writer& w, const LightField& field,
     w.Array(f.Entries);
     if (version == DenseSnapshotVersion)
     {
-      WriteDenseMaps(w, field, f);
+      WriteDenseMaps(w, field, f, k);
       continue;
     }
     w.Array(f.Cells.Words());
-    w.Array(f.Depth);
+    std::vector<std::uint8_t> followsPlane(f.Entries.size());
+    for (std::size_t e = 0; e < followsPlane.size(); ++e)
+    {
+      followsPlane[e] = f.Depth.FollowsPlane(e) ? 1 : 0;
+    }
+    w.Array(followsPlane);
+    w.Array(f.Depth.Values);
+    // As held: float while propagating (resuming continues bit for bit), else compact.
     for (const RadianceArray* radiance : { &f.Radiance, &f.UnshotSpecular })
     {
-      const RadianceArray::CompactForm form = radiance->Compacted();
-      w.Value(form.Exponent);
-      w.Array(form.Words);
+      w.Value(static_cast<std::uint8_t>(radiance->IsCompact() ? 1 : 0));
+      if (radiance->IsCompact())
+      {
+        const RadianceArray::CompactForm form = radiance->Compacted();
+        w.Value(form.Exponent);
+        w.Array(form.Words);
+      }
+      else
+      {
+        w.Array(radiance->ToVector());
+      }
     }
   }
 }
@@ -529,6 +566,30 @@ namespace
 void ReadCompactRadiance(
   Reader& r, RadianceArray& radiance, const char* what, std::uint64_t expected)
 {
+  const std::uint8_t form = r.Value<std::uint8_t>();
+  if (form > 1)
+  {
+    r.Fail(std::string("its ") + what + " have an unknown form " + std::to_string(form));
+  }
+  if (form == 0)
+  {
+    std::vector<glm::vec3> values;
+    r.Array(values, what, expected);
+    for (const glm::vec3& x : values)
+    {
+      if (!(std::isfinite(x.x) && std::isfinite(x.y) && std::isfinite(x.z)))
+      {
+        throw SnapshotError(r.QuotedPath() + " holds NaN or infinite values: it is not a usable light field");
+      }
+      if (x.x < 0.0f || x.y < 0.0f || x.z < 0.0f)
+      {
+        throw SnapshotError(r.QuotedPath() + " holds negative radiance: it is not a usable light field");
+      }
+    }
+    radiance.assign(0, glm::vec3(0.0f));
+    radiance.Floats() = std::move(values);
+    return;
+  }
   const std::int32_t exponent = r.Value<std::int32_t>();
   std::vector<std::uint32_t> words;
   r.Array(words, what, expected);
@@ -570,7 +631,14 @@ void ReadDenseMaps(Reader& r, Subfield& f, std::size_t k, std::uint64_t entries,
     }
   }
   f.Cells.Build(entries, cellsPerMap, occupied);
-  f.Depth.resize(occupied.size());
+  // Every map's depths kept as stored (the plane test is the tracer's: TraceSubfield).
+  f.Depth.Clear();
+  f.Depth.Start.resize(entries);
+  for (std::size_t e = 0; e < entries; ++e)
+  {
+    f.Depth.Start[e] = static_cast<std::uint32_t>(f.Cells.MapFirstSlot(e));
+  }
+  f.Depth.Values.resize(occupied.size());
   f.Radiance.assign(occupied.size(), glm::vec3(0.0f));
   if (specular)
   {
@@ -578,7 +646,7 @@ void ReadDenseMaps(Reader& r, Subfield& f, std::size_t k, std::uint64_t entries,
   }
   for (std::size_t q = 0; q < occupied.size(); ++q)
   {
-    f.Depth[q] = depth[occupied[q]];
+    f.Depth.Values[q] = depth[occupied[q]];
     f.Radiance[q] = radiance[occupied[q]];
     if (specular)
     {
@@ -803,7 +871,24 @@ std::unique_ptr<LightField> ReadSnapshot(const std::string& path, std::uint64_t 
       r.Fail("the cell masks of subfield " + std::to_string(k) + " are inconsistent");
     }
     const std::size_t slots = f.Cells.Slots();
-    r.Array(f.Depth, "crossing depths", slots);
+    std::vector<std::uint8_t> followsPlane;
+    r.Array(followsPlane, "depth flags", entries);
+    f.Depth.Clear();
+    f.Depth.Start.assign(entries, CrossingDepths::FromPlane);
+    std::uint64_t stored = 0;
+    for (std::size_t e = 0; e < entries; ++e)
+    {
+      if (followsPlane[e] > 1)
+      {
+        r.Fail("a depth flag of subfield " + std::to_string(k) + " is corrupt");
+      }
+      if (!followsPlane[e])
+      {
+        f.Depth.Start[e] = static_cast<std::uint32_t>(stored);
+        stored += f.Cells.MapSlots(e);
+      }
+    }
+    r.Array(f.Depth.Values, "crossing depths", stored);
     ReadCompactRadiance(r, f.Radiance, "radiance words", slots);
     ReadCompactRadiance(
       r, f.UnshotSpecular, "unshot specular words", field->HasSpecular() ? slots : 0);
@@ -828,7 +913,7 @@ std::unique_ptr<LightField> ReadSnapshot(const std::string& path, std::uint64_t 
   for (std::size_t k = 0; ok && k < field->SubfieldCount(); ++k)
   {
     const Subfield& f = field->GetSubfield(k);
-    ok = finite(f.Depth.data(), f.Depth.size());
+    ok = finite(f.Depth.Values.data(), f.Depth.Values.size());
   }
   if (!ok)
   {
@@ -838,7 +923,8 @@ std::unique_ptr<LightField> ReadSnapshot(const std::string& path, std::uint64_t 
   for (std::size_t k = 0; k < field->SubfieldCount(); ++k)
   {
     const Subfield& f = field->GetSubfield(k);
-    if (!std::all_of(f.Depth.begin(), f.Depth.end(), [](float d) { return d >= 0.0f; }))
+    if (!std::all_of(
+          f.Depth.Values.begin(), f.Depth.Values.end(), [](float d) { return d >= 0.0f; }))
     {
       throw SnapshotError(Quoted(path) + " is corrupt: a crossing of subfield " +
         std::to_string(k) + " has a negative depth");

@@ -216,13 +216,10 @@ const std::vector<double>& ObjectGatherer::DirectionImportance() const
       {
         const Subfield& f = this->Field.GetSubfield(k);
         double sum = 0.0;
-        for (std::size_t c = 0; c < f.Radiance.size(); ++c)
+        for (std::size_t c = 0; c < f.Radiance.size(); ++c) // one per crossing
         {
-          if (c < f.Depth.size() && f.Depth[c] >= 0.0f)
-          {
-            const glm::vec3& r = f.Radiance[c];
-            sum += 0.2125 * r.x + 0.7154 * r.y + 0.0721 * r.z;
-          }
+          const glm::vec3 r = f.Radiance[c];
+          sum += 0.2125 * r.x + 0.7154 * r.y + 0.0721 * r.z;
         }
         importance[k] = std::max(0.0, sum);
       }

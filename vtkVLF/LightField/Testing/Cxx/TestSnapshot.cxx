@@ -5,9 +5,13 @@
 #include "Propagation.h"
 #include "Snapshot.h"
 
+#include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <cstring>
 #include <csignal>
 #include <cstdio>
 #include <fstream>
@@ -78,7 +82,7 @@ void ExpectSameField(const LightField& a, const LightField& b)
   EXPECT_EQ(a.Scene().Positions, b.Scene().Positions);
   for (std::size_t k = 0; k < a.SubfieldCount(); ++k)
   {
-    EXPECT_EQ(a.GetSubfield(k).Depth, b.GetSubfield(k).Depth);
+    EXPECT_TRUE(a.GetSubfield(k).Depth == b.GetSubfield(k).Depth);
     EXPECT_EQ(a.GetSubfield(k).Radiance, b.GetSubfield(k).Radiance);
   }
 }
@@ -87,7 +91,11 @@ TEST(VLFSnapshot, RoundTripsExactlyAndResumes)
 {
   const std::string path = TempPath("roundtrip.vlf");
   std::remove(path.c_str());
-  const std::unique_ptr<LightField> two = SmallCornell(2);
+  // A snapshot taken while propagating (the float radiance of iteration 2 of 3).
+  std::unique_ptr<LightField> two = SmallCornell(0);
+  PropagateIteration(*two);
+  PropagateIteration(*two);
+  ASSERT_FALSE(two->GetSubfield(0).Radiance.IsCompact());
   WriteSnapshot(*two, path);
   EXPECT_TRUE(IsSnapshotFile(path));
   EXPECT_FALSE(FileExists(path + ".tmp-" + std::to_string(static_cast<long>(::getpid()))));
@@ -100,6 +108,67 @@ TEST(VLFSnapshot, RoundTripsExactlyAndResumes)
   Propagate(*loaded, 3);
   const std::unique_ptr<LightField> three = SmallCornell(3);
   ExpectSameField(*three, *loaded);
+
+  // A propagated field is compact, and its snapshot reads back the same words.
+  ASSERT_TRUE(three->GetSubfield(0).Radiance.IsCompact());
+  WriteSnapshot(*three, path);
+  const std::unique_ptr<LightField> reread = ReadSnapshot(path);
+  ASSERT_TRUE(reread->GetSubfield(0).Radiance.IsCompact());
+  ExpectSameField(*three, *reread);
+}
+
+// Version 1 files (every map cell, float radiance) load into the sparse compact form; the
+// radiance the lookups see is the float one within the shared exponent's rounding.
+TEST(VLFSnapshot, VersionOneFilesStillLoad)
+{
+  const std::string path = TempPath("version1.vlf");
+  std::unique_ptr<LightField> field = SmallCornell(0);
+  PropagateIteration(*field);
+  PropagateIteration(*field);
+  WriteSnapshotVersion(*field, path, DenseSnapshotVersion);
+  const std::vector<char> bytes = ReadBytes(path);
+  std::uint32_t version = 0;
+  std::memcpy(&version, bytes.data() + 8, sizeof(version));
+  ASSERT_EQ(version, 1u);
+  const std::unique_ptr<LightField> loaded = ReadSnapshot(path);
+  ASSERT_EQ(loaded->SubfieldCount(), field->SubfieldCount());
+  EXPECT_EQ(loaded->TotalDiffuse, field->TotalDiffuse);
+  std::size_t crossings = 0;
+  for (std::size_t k = 0; k < field->SubfieldCount(); ++k)
+  {
+    const Subfield& a = field->GetSubfield(k);
+    const Subfield& b = loaded->GetSubfield(k);
+    ASSERT_TRUE(b.Radiance.IsCompact());
+    EXPECT_TRUE(a.Cells == b.Cells);
+    // Version 1 stored every depth; they are those the plane gives, or the stored ones.
+    std::vector<Crossing> ca, cb;
+    const int lines = a.TileStart.empty() ? 0 : 16;
+    for (int j = 0; j < lines; ++j)
+    {
+      for (int i = 0; i < lines; ++i)
+      {
+        field->LineCrossings(k, i, j, ca);
+        loaded->LineCrossings(k, i, j, cb);
+        ASSERT_EQ(ca.size(), cb.size());
+        for (std::size_t q = 0; q < ca.size(); ++q)
+        {
+          EXPECT_EQ(ca[q].Surface, cb[q].Surface);
+          EXPECT_EQ(ca[q].Cell, cb[q].Cell);
+          EXPECT_NEAR(ca[q].Depth, cb[q].Depth, 1e-6f);
+        }
+      }
+    }
+    ASSERT_EQ(a.Radiance.size(), b.Radiance.size());
+    for (std::size_t q = 0; q < a.Radiance.size(); ++q)
+    {
+      const glm::vec3 x = a.Radiance[q], y = b.Radiance[q];
+      const float bound = 1.002f * std::ldexp(std::max({ x.x, x.y, x.z }), -9) + 1e-9f;
+      ASSERT_LE(glm::length(x - y), std::sqrt(3.0f) * bound) << k << " " << q;
+    }
+    crossings += a.Radiance.size();
+  }
+  EXPECT_GT(crossings, 1000u);
+  std::remove(path.c_str());
 }
 
 TEST(VLFSnapshot, ForeignTruncatedAndCorruptFilesGiveClearErrors)
@@ -190,19 +259,27 @@ TEST(VLFSnapshot, StaleTemporariesOfDeadWritersAreRemoved)
   }
 }
 
-// A field of NaNs with a valid checksum is refused on reading, not rendered blank or resumed.
+// A field of NaNs with a valid checksum is refused on reading, not rendered blank or resumed
+// (float radiance: a snapshot taken while propagating).
 TEST(VLFSnapshot, NonFiniteValuesAreRefused)
 {
   const std::string path = TempPath("nan.vlf");
-  std::unique_ptr<LightField> field = SmallCornell(1);
+  std::unique_ptr<LightField> field = SmallCornell(0);
+  PropagateIteration(*field);
   ASSERT_FALSE(field->GetSubfield(0).Radiance.empty());
-  field->GetSubfield(0).Radiance[0].y = std::numeric_limits<float>::quiet_NaN();
+  field->GetSubfield(0).Radiance.Floats()[0].y = std::numeric_limits<float>::quiet_NaN();
   WriteSnapshot(*field, path);
   EXPECT_NE(ReadError(path).find("NaN or infinite"), std::string::npos) << ReadError(path);
   field = SmallCornell(1);
   field->TotalDiffuse[0].x = std::numeric_limits<float>::infinity();
   WriteSnapshot(*field, path);
   EXPECT_NE(ReadError(path).find("NaN or infinite"), std::string::npos) << ReadError(path);
+  // The same in a version 1 file.
+  field = SmallCornell(1);
+  field->GetSubfield(0).Radiance[0] = glm::vec3(std::numeric_limits<float>::quiet_NaN());
+  WriteSnapshotVersion(*field, path, DenseSnapshotVersion);
+  EXPECT_NE(ReadError(path).find("NaN or infinite radiance"), std::string::npos)
+    << ReadError(path);
   WriteSnapshot(*SmallCornell(1), path);
   EXPECT_EQ(ReadError(path), "");
   std::remove(path.c_str());
@@ -216,9 +293,10 @@ TEST(VLFSnapshot, NegativeRadianceIsRefused)
   field->TotalDiffuse[0].y = -0.5f;
   WriteSnapshot(*field, path);
   EXPECT_NE(ReadError(path).find("holds negative radiance"), std::string::npos) << ReadError(path);
-  field = SmallCornell(1);
+  field = SmallCornell(0);
+  PropagateIteration(*field);
   ASSERT_FALSE(field->GetSubfield(0).Radiance.empty());
-  field->GetSubfield(0).Radiance[0].z = -1.0f;
+  field->GetSubfield(0).Radiance.Floats()[0].z = -1.0f;
   WriteSnapshot(*field, path);
   EXPECT_NE(ReadError(path).find("holds negative radiance"), std::string::npos) << ReadError(path);
   std::remove(path.c_str());

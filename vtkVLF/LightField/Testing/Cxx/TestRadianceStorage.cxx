@@ -1,0 +1,136 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The light field's map storage (RadianceStorage.h): shared-exponent radiance within its
+// analytic bound (every channel within 2^-9 of the largest, round to nearest), the cell index's
+// slots against a brute-force count, and the float/compact array's behaviour.
+#include "RadianceStorage.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+namespace
+{
+using namespace mesolight::vlf;
+
+// |decoded - value| per channel over the largest channel (the format's error measure).
+double WorstError(const glm::vec3& value, const glm::vec3& decoded)
+{
+  const float largest = std::max({ value.x, value.y, value.z });
+  double worst = 0.0;
+  for (int c = 0; c < 3; ++c)
+  {
+    worst = std::max(worst, std::abs(static_cast<double>(decoded[c]) - value[c]) / largest);
+  }
+  return worst;
+}
+
+TEST(VLFRadianceStorage, Rgb9e5IsWithinItsBound)
+{
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+  std::uniform_real_distribution<float> exponent(-14.0f, 15.0f);
+  double worst = 0.0;
+  for (int i = 0; i < 200000; ++i)
+  {
+    const float scale = std::exp2(exponent(rng));
+    const glm::vec3 v(unit(rng) * scale, unit(rng) * scale, unit(rng) * scale);
+    if (std::max({ v.x, v.y, v.z }) < std::ldexp(1.0f, -14))
+    {
+      continue;
+    }
+    worst = std::max(worst, WorstError(v, DecodeRgb9e5(EncodeRgb9e5(v))));
+  }
+  // 2^-9 (half a step of a 9-bit mantissa in [256, 512), times 512 / 511.5 when rounding
+  // carries into the exponent).
+  EXPECT_LE(worst, std::ldexp(1.0, -9) * 512.0 / 511.5);
+  // The bound is tight: half of it fails (a test that can fail), and a 8-bit mantissa's would.
+  EXPECT_GT(worst, std::ldexp(1.0, -10));
+  // Exact values: small integers, powers of two, zero; negatives, NaN clamp to 0, huge to max.
+  EXPECT_EQ(DecodeRgb9e5(EncodeRgb9e5(glm::vec3(1.0f, 0.5f, 0.25f))), glm::vec3(1.0f, 0.5f, 0.25f));
+  EXPECT_EQ(DecodeRgb9e5(EncodeRgb9e5(glm::vec3(17.0f, 12.0f, 4.0f))), glm::vec3(17.0f, 12.0f, 4.0f));
+  EXPECT_EQ(EncodeRgb9e5(glm::vec3(0.0f)), 0u);
+  EXPECT_EQ(DecodeRgb9e5(EncodeRgb9e5(glm::vec3(-1.0f, NAN, 2.0f))), glm::vec3(0.0f, 0.0f, 2.0f));
+  EXPECT_EQ(DecodeRgb9e5(EncodeRgb9e5(glm::vec3(1e9f))), glm::vec3(MaxRgb9e5));
+}
+
+TEST(VLFRadianceStorage, ArraysScaleToAnyRangeAndTurnFloatOnWrite)
+{
+  for (const float scale : { 1e-25f, 1e-6f, 1.0f, 3e4f, 1e6f, 1e20f })
+  {
+    RadianceArray a;
+    a.assign(4, glm::vec3(0.0f));
+    a[0] = glm::vec3(1.0f, 0.3f, 0.02f) * scale;
+    a[1] = glm::vec3(0.5f) * scale;
+    a[3] = glm::vec3(1e-6f, 2e-6f, 0.0f) * scale; // far below the largest: may become 0
+    const std::vector<glm::vec3> before = a.ToVector();
+    a.MakeCompact();
+    ASSERT_TRUE(a.IsCompact());
+    EXPECT_EQ(a.Bytes(), 4 * sizeof(std::uint32_t));
+    for (std::size_t i = 0; i < 3; ++i)
+    {
+      const float largest = std::max({ before[i].x, before[i].y, before[i].z });
+      for (int c = 0; c < 3; ++c)
+      {
+        EXPECT_LE(std::abs(a[i][c] - before[i][c]), std::ldexp(largest, -9) * 1.001f)
+          << scale << " " << i;
+      }
+    }
+    EXPECT_EQ(static_cast<const RadianceArray&>(a)[2], glm::vec3(0.0f));
+    // Writing turns it to float, from the compact values.
+    const glm::vec3 kept = static_cast<const RadianceArray&>(a)[1];
+    a[0] += glm::vec3(scale);
+    EXPECT_FALSE(a.IsCompact());
+    EXPECT_EQ(static_cast<const RadianceArray&>(a)[1], kept);
+    // Pack / unpack keeps the form and the values.
+    std::string message;
+    a.MakeCompact();
+    a.Pack(message);
+    RadianceArray b;
+    std::size_t at = 0;
+    b.Unpack(message, at);
+    EXPECT_EQ(at, message.size());
+    EXPECT_TRUE(b.IsCompact());
+    EXPECT_TRUE(a == b);
+  }
+}
+
+TEST(VLFRadianceStorage, CellIndexSlotsMatchABruteForceCount)
+{
+  std::mt19937 rng(3);
+  for (const std::size_t cellsPerMap : { std::size_t(16), std::size_t(64), std::size_t(100),
+         std::size_t(256) })
+  {
+    const std::size_t maps = 37;
+    std::vector<std::size_t> occupied;
+    std::vector<std::int64_t> expected(maps * cellsPerMap, -1);
+    for (std::size_t c = 0; c < maps * cellsPerMap; ++c)
+    {
+      if (rng() % 5 == 0)
+      {
+        expected[c] = static_cast<std::int64_t>(occupied.size());
+        occupied.push_back(c);
+      }
+    }
+    CellIndex index;
+    index.Build(maps, cellsPerMap, occupied);
+    EXPECT_EQ(index.Slots(), occupied.size());
+    for (std::size_t c = 0; c < maps * cellsPerMap; ++c)
+    {
+      ASSERT_EQ(index.Slot(c / cellsPerMap, c % cellsPerMap), expected[c]) << cellsPerMap << " " << c;
+    }
+    CellIndex copy;
+    EXPECT_TRUE(copy.Assign(maps, cellsPerMap, index.Words()));
+    EXPECT_TRUE(copy == index);
+    EXPECT_FALSE(copy.Assign(maps + 1, cellsPerMap, index.Words())); // wrong count
+    if (cellsPerMap % 64 != 0)
+    {
+      std::vector<std::uint64_t> words = index.Words();
+      words.back() |= std::uint64_t(1) << 63; // a bit beyond the map's last cell
+      EXPECT_FALSE(copy.Assign(maps, cellsPerMap, words));
+    }
+  }
+}
+
+} // namespace
