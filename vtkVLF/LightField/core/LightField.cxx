@@ -58,9 +58,11 @@ void SubfieldFrame(std::size_t k, const glm::vec3& d, glm::vec3& u, glm::vec3& v
   v = -std::sin(angle) * u0 + std::cos(angle) * v0;
 }
 
+// Per crossing: its depth (when off its surface's plane) and, with mirrors, float radiance and
+// unshot specular radiance (without, the radiance follows from the textures: SentRadiance).
 std::uint64_t MapCellBytes(bool specular)
 {
-  return sizeof(float) + sizeof(glm::vec3) + (specular ? sizeof(glm::vec3) : 0);
+  return sizeof(float) + (specular ? 2 * sizeof(glm::vec3) : 0);
 }
 
 // Upper bound on the (tile, surface) pairs of every subfield: a surface can only occupy the
@@ -801,10 +803,11 @@ void LightField::TraceSubfield(std::size_t k, const EmbreeScene& embree)
     }
   }
   f.Depth.Values.shrink_to_fit();
-  f.Radiance.assign(occupied.size(), glm::vec3(0.0f));
+  f.Radiance.clear();
   f.UnshotSpecular.clear();
-  if (this->AnySpecular)
+  if (this->AnySpecular) // else the radiance follows from the textures (SentRadiance)
   {
+    f.Radiance.assign(occupied.size(), glm::vec3(0.0f));
     f.UnshotSpecular.assign(occupied.size(), glm::vec3(0.0f));
   }
 }

@@ -155,7 +155,8 @@ struct Subfield
   // each its slot, the index into the per-crossing arrays below.
   CellIndex Cells;
   CrossingDepths Depth;          // per crossing: distance along the line (LightField::CrossingDepth)
-  RadianceArray Radiance;        // per crossing: radiance sent along the line so far
+  RadianceArray Radiance;        // per crossing: radiance sent along the line so far (only in
+                                 // scenes with mirrors: LightField::SentRadiance)
   RadianceArray UnshotSpecular;  // per crossing (empty without mirror surfaces)
 };
 
@@ -250,6 +251,13 @@ public:
   float CrossingDepth(
     std::size_t k, int i, int j, std::size_t map, std::uint32_t surface, std::size_t slot) const;
   float PlaneDepth(std::size_t k, int i, int j, std::uint32_t surface) const;
+  // Radiance the crossing in slot `slot` (surface s, line (i, j)) of subfield k has sent along
+  // its line so far. Stored (Subfield::Radiance) in a scene with mirrors; without, every surface
+  // sends the same radiance along every line, its diffuse texture at the crossing, so what it
+  // has sent is the total diffuse texture less its unshot part there (exactly the sum the
+  // propagation shot; crossings whose line runs into a solid, which shoot nothing, read it too).
+  // Nothing is stored then: the maps hold visibility only.
+  glm::vec3 SentRadiance(std::size_t k, int i, int j, std::uint32_t surface, std::size_t slot) const;
   // Slot (Crossing::Cell) of surface s on line (i, j) of subfield k, or -1 when the line misses it.
   std::int64_t FindCell(std::size_t k, int i, int j, std::uint32_t surface) const;
   // The crossings of line (i, j) of subfield k ordered by depth (out is cleared first).

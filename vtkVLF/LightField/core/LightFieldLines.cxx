@@ -57,6 +57,24 @@ float LightField::CrossingDepth(
                                    : f.Depth.Stored(map, slot - f.Cells.MapFirstSlot(map));
 }
 
+glm::vec3 LightField::SentRadiance(
+  std::size_t k, int i, int j, std::uint32_t surface, std::size_t slot) const
+{
+  const Subfield& f = this->Subfields[k];
+  if (!f.Radiance.empty())
+  {
+    return f.Radiance[slot];
+  }
+  const glm::vec3 x = this->PointOnLine(k, i, j, this->PlaneDepth(k, i, j, surface));
+  const TexelWeights w = this->WeightsAt(surface, x);
+  glm::vec3 sent(0.0f);
+  for (int t = 0; t < 4; ++t)
+  {
+    sent += w.Weight[t] * (this->TotalDiffuse[w.Texel[t]] - this->UnshotDiffuse[w.Texel[t]]);
+  }
+  return glm::max(sent, glm::vec3(0.0f));
+}
+
 std::int64_t LightField::FindCell(std::size_t k, int i, int j, std::uint32_t surface) const
 {
   const int n = this->Config.RaysPerSide;

@@ -35,11 +35,11 @@ int CellsAround(const glm::vec2& c, CellInterpolation mode, int (&i)[4], int (&j
 }
 
 glm::vec3 Lookup::CellRadiance(
-  std::size_t k, std::uint32_t s, std::size_t cell, const glm::vec3& x) const
+  std::size_t k, int i, int j, std::uint32_t s, std::size_t cell, const glm::vec3& x) const
 {
   const Subfield& f = this->Field.GetSubfield(k);
-  glm::vec3 radiance =
-    f.Radiance[cell] + this->Field.SampleTexture(this->Field.UnshotDiffuse, s, x);
+  glm::vec3 radiance = this->Field.SentRadiance(k, i, j, s, cell) +
+    this->Field.SampleTexture(this->Field.UnshotDiffuse, s, x);
   if (!f.UnshotSpecular.empty())
   {
     radiance += f.UnshotSpecular[cell];
@@ -64,7 +64,7 @@ bool Lookup::SubfieldRadiance(std::size_t k, std::uint32_t s, const glm::vec3& p
     const std::int64_t cell = this->Field.FindCell(k, is[q], js[q], s);
     if (cell >= 0)
     {
-      sum += ws[q] * this->CellRadiance(k, s, static_cast<std::size_t>(cell), p);
+      sum += ws[q] * this->CellRadiance(k, is[q], js[q], s, static_cast<std::size_t>(cell), p);
       weight += ws[q];
     }
   }
@@ -149,7 +149,7 @@ glm::vec3 Lookup::IncidentRadiance(std::size_t k, int sense, const glm::vec3& p,
           continue;
         }
         const glm::vec3 x = this->Field.PointOnLine(k, is[q], js[q], c.Depth);
-        const glm::vec3 value = this->CellRadiance(k, c.Surface, c.Cell, x);
+        const glm::vec3 value = this->CellRadiance(k, is[q], js[q], c.Surface, c.Cell, x);
         if (value.x + value.y + value.z > brightest)
         {
           brightest = value.x + value.y + value.z;
@@ -161,7 +161,7 @@ glm::vec3 Lookup::IncidentRadiance(std::size_t k, int sense, const glm::vec3& p,
     {
       const Crossing& sender = *segment.Sender;
       const glm::vec3 x = this->Field.PointOnLine(k, is[q], js[q], sender.Depth);
-      radiance = this->CellRadiance(k, sender.Surface, sender.Cell, x);
+      radiance = this->CellRadiance(k, is[q], js[q], sender.Surface, sender.Cell, x);
     }
     blend.Add(ws[q], radiance, segment.Open);
   }

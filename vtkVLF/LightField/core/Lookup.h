@@ -187,7 +187,7 @@ private:
   bool SubfieldRadiance(std::size_t k, std::uint32_t s, const glm::vec3& p, CellInterpolation cells,
     glm::vec3& radiance) const;
   glm::vec3 CellRadiance(
-    std::size_t k, std::uint32_t s, std::size_t cell, const glm::vec3& x) const;
+    std::size_t k, int i, int j, std::uint32_t s, std::size_t cell, const glm::vec3& x) const;
 
   const LightField& Field;
 };

@@ -93,7 +93,10 @@ void ShootSubfield(LightField& field, std::size_t k, BlockState& state)
         {
           continue;
         }
-        f.Radiance[sender.Cell] += radiance;
+        if (specular) // else LightField::SentRadiance derives it from the textures
+        {
+          f.Radiance[sender.Cell] += radiance;
+        }
         const glm::vec3 flux = radiance * fluxPerRadiance;
         Add(state.Energy.Shot, flux);
         if (r == LightField::LineEscapes)

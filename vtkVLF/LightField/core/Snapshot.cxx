@@ -322,7 +322,12 @@ void WriteDenseMaps(Writer& w, const LightField& field, const Subfield& f, std::
         const std::size_t slot = static_cast<std::size_t>(found);
         const std::size_t c = map * cellsPerMap + local;
         depth[c] = DepthOf(field, f, k, t, map, local, slot);
-        radiance[c] = f.Radiance[slot];
+        const std::size_t m = static_cast<std::size_t>(field.Settings().TilesPerSide);
+        radiance[c] = !f.Radiance.empty() ? glm::vec3(f.Radiance[slot])
+                                          : field.SentRadiance(k,
+                                              static_cast<int>((t % m) * ts + local % ts),
+                                              static_cast<int>((t / m) * ts + local / ts),
+                                              f.Entries[map].Surface, slot);
         if (!unshot.empty())
         {
           unshot[c] = f.UnshotSpecular[slot];
@@ -639,17 +644,21 @@ void ReadDenseMaps(Reader& r, Subfield& f, std::size_t k, std::uint64_t entries,
     f.Depth.Start[e] = static_cast<std::uint32_t>(f.Cells.MapFirstSlot(e));
   }
   f.Depth.Values.resize(occupied.size());
-  f.Radiance.assign(occupied.size(), glm::vec3(0.0f));
+  // Without mirrors the radiance follows from the textures (LightField::SentRadiance): the
+  // stored one is that same sum, not kept.
+  f.Radiance.clear();
+  f.UnshotSpecular.clear();
   if (specular)
   {
+    f.Radiance.assign(occupied.size(), glm::vec3(0.0f));
     f.UnshotSpecular.assign(occupied.size(), glm::vec3(0.0f));
   }
   for (std::size_t q = 0; q < occupied.size(); ++q)
   {
     f.Depth.Values[q] = depth[occupied[q]];
-    f.Radiance[q] = radiance[occupied[q]];
     if (specular)
     {
+      f.Radiance[q] = radiance[occupied[q]];
       f.UnshotSpecular[q] = unshot[occupied[q]];
     }
   }
@@ -889,7 +898,7 @@ std::unique_ptr<LightField> ReadSnapshot(const std::string& path, std::uint64_t 
       }
     }
     r.Array(f.Depth.Values, "crossing depths", stored);
-    ReadCompactRadiance(r, f.Radiance, "radiance words", slots);
+    ReadCompactRadiance(r, f.Radiance, "radiance words", field->HasSpecular() ? slots : 0);
     ReadCompactRadiance(
       r, f.UnshotSpecular, "unshot specular words", field->HasSpecular() ? slots : 0);
   }

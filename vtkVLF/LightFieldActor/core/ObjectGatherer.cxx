@@ -216,10 +216,20 @@ const std::vector<double>& ObjectGatherer::DirectionImportance() const
       {
         const Subfield& f = this->Field.GetSubfield(k);
         double sum = 0.0;
-        for (std::size_t c = 0; c < f.Radiance.size(); ++c) // one per crossing
+        // Every crossing's sent radiance (LightField::SentRadiance: stored or from the textures).
+        const int n = this->Field.Settings().RaysPerSide;
+        std::vector<Crossing> crossings;
+        for (int j = 0; j < n && !f.TileStart.empty(); ++j)
         {
-          const glm::vec3 r = f.Radiance[c];
-          sum += 0.2125 * r.x + 0.7154 * r.y + 0.0721 * r.z;
+          for (int i = 0; i < n; ++i)
+          {
+            this->Field.LineCrossings(k, i, j, crossings);
+            for (const Crossing& c : crossings)
+            {
+              const glm::vec3 r = this->Field.SentRadiance(k, i, j, c.Surface, c.Cell);
+              sum += 0.2125 * r.x + 0.7154 * r.y + 0.0721 * r.z;
+            }
+          }
         }
         importance[k] = std::max(0.0, sum);
       }

@@ -55,8 +55,8 @@ void ObjectLineCache::Build(const LightField& field, const std::vector<std::uint
             for (const Crossing& c : crossings)
             {
               const glm::vec3 x = field.PointOnLine(k, w.I0 + a, w.J0 + b, c.Depth);
-              glm::vec3 radiance =
-                f.Radiance[c.Cell] + field.SampleTexture(field.UnshotDiffuse, c.Surface, x);
+              glm::vec3 radiance = field.SentRadiance(k, w.I0 + a, w.J0 + b, c.Surface, c.Cell) +
+                field.SampleTexture(field.UnshotDiffuse, c.Surface, x);
               if (!f.UnshotSpecular.empty())
               {
                 radiance += f.UnshotSpecular[c.Cell];

@@ -151,7 +151,9 @@ TEST(VLFLightField, EstimateBoundsTheAllocation)
     "[ estimate ] %s; allocated %s\n", estimate.Describe().c_str(), FormatBytes(allocated).c_str());
   EXPECT_EQ(field->Estimate().TotalBytes, estimate.TotalBytes);
   EXPECT_LE(allocated, estimate.TotalBytes);
-  EXPECT_GE(allocated, estimate.TotalBytes / 4); // a useful bound, not a wild one
+  // A useful bound, not a wild one: it counts a depth per crossing, which maps on their
+  // surface's plane (all of the box's) do not store (RadianceStorage.h).
+  EXPECT_GE(allocated, estimate.TotalBytes / 5);
 }
 
 TEST(VLFLightField, RefusesOverBudgetBeforeAllocating)

@@ -1,18 +1,24 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The light field's map storage (RadianceStorage.h): shared-exponent radiance within its
 // analytic bound (every channel within 2^-9 of the largest, round to nearest), the cell index's
-// slots against a brute-force count, and the float/compact array's behaviour.
+// slots against a brute-force count, the float/compact array's behaviour, and the identity
+// LightField::SentRadiance relies on without mirrors (what a diffuse crossing has sent is its
+// total diffuse texture less the unshot part).
+#include "Propagation.h"
 #include "RadianceStorage.h"
 
+#include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <cmath>
 #include <random>
 
 namespace
 {
 using namespace mesolight::vlf;
+using mesolight::MakeCornellBoxWithMirror;
 
 // |decoded - value| per channel over the largest channel (the format's error measure).
 double WorstError(const glm::vec3& value, const glm::vec3& decoded)
@@ -131,6 +137,65 @@ TEST(VLFRadianceStorage, CellIndexSlotsMatchABruteForceCount)
       EXPECT_FALSE(copy.Assign(maps, cellsPerMap, words));
     }
   }
+}
+
+// In the box with a mirror the maps store what every crossing has sent (float, while
+// propagating): for diffuse surfaces it is the textures' total less unshot at the crossing, the
+// radiance SentRadiance gives without mirrors. The total alone (negative case) is not.
+TEST(VLFRadianceStorage, DiffuseSentRadianceIsTheTexturesTotalLessUnshot)
+{
+  LightFieldSettings settings;
+  settings.Directions = 33;
+  settings.RaysPerSide = 16;
+  settings.TilesPerSide = 4;
+  std::unique_ptr<LightField> field = LightField::Build(MakeCornellBoxWithMirror(), settings);
+  for (int it = 0; it < 3; ++it)
+  {
+    PropagateIteration(*field);
+  }
+  double worst = 0.0, worstTotal = 0.0;
+  std::size_t compared = 0;
+  std::vector<Crossing> line;
+  for (std::size_t k = 0; k < field->SubfieldCount(); ++k)
+  {
+    const Subfield& f = field->GetSubfield(k);
+    ASSERT_FALSE(f.Radiance.IsCompact());
+    for (int j = 0; j < settings.RaysPerSide; ++j)
+    {
+      for (int i = 0; i < settings.RaysPerSide; ++i)
+      {
+        field->LineCrossings(k, i, j, line);
+        for (std::size_t q = 0; q < line.size(); ++q)
+        {
+          const Crossing& c = line[q];
+          const glm::vec3 ks = field->MaterialOf(c.Surface).Specular;
+          if (ks.x + ks.y + ks.z > 0.0f ||
+            field->Receiver(k, line, q) == LightField::LineBlocked)
+          {
+            continue;
+          }
+          const glm::vec3 stored = f.Radiance[c.Cell];
+          const double size = static_cast<double>(stored.x) + stored.y + stored.z;
+          if (!(size > 1e-3))
+          {
+            continue;
+          }
+          const glm::vec3 x = field->PointOnLine(k, i, j, c.Depth);
+          const glm::vec3 total = field->SampleTexture(field->TotalDiffuse, c.Surface, x);
+          const glm::vec3 sent = total - field->SampleTexture(field->UnshotDiffuse, c.Surface, x);
+          const glm::vec3 d = glm::abs(sent - stored), dt = glm::abs(total - stored);
+          worst = std::max(worst, (static_cast<double>(d.x) + d.y + d.z) / size);
+          worstTotal = std::max(worstTotal, (static_cast<double>(dt.x) + dt.y + dt.z) / size);
+          ++compared;
+        }
+      }
+    }
+  }
+  std::printf("[ sent     ] %zu diffuse crossings: worst %.2e (the total alone %.2e)\n", compared,
+    worst, worstTotal);
+  EXPECT_GT(compared, 1000u);
+  EXPECT_LT(worst, 1e-4);
+  EXPECT_GT(worstTotal, 1e-2);
 }
 
 } // namespace

@@ -35,13 +35,14 @@ std::string TempPath(const std::string& name)
   return std::string(MESOLIGHT_TEST_TEMP_DIR) + "/" + name;
 }
 
-std::unique_ptr<LightField> SmallCornell(int iterations)
+// mirror: the box with a mirror, whose maps store their radiance (LightField::SentRadiance).
+std::unique_ptr<LightField> SmallCornell(int iterations, bool mirror = false)
 {
   LightFieldSettings settings;
   settings.Directions = 33;
   settings.RaysPerSide = 16;
   settings.TilesPerSide = 4;
-  std::unique_ptr<LightField> field = LightField::Build(MakeCornellBox(), settings);
+  std::unique_ptr<LightField> field = LightField::Build(mirror ? MakeCornellBoxWithMirror() : MakeCornellBox(), settings);
   Propagate(*field, iterations);
   return field;
 }
@@ -92,7 +93,7 @@ TEST(VLFSnapshot, RoundTripsExactlyAndResumes)
   const std::string path = TempPath("roundtrip.vlf");
   std::remove(path.c_str());
   // A snapshot taken while propagating (the float radiance of iteration 2 of 3).
-  std::unique_ptr<LightField> two = SmallCornell(0);
+  std::unique_ptr<LightField> two = SmallCornell(0, true);
   PropagateIteration(*two);
   PropagateIteration(*two);
   ASSERT_FALSE(two->GetSubfield(0).Radiance.IsCompact());
@@ -106,7 +107,7 @@ TEST(VLFSnapshot, RoundTripsExactlyAndResumes)
 
   // Resume: two iterations, a snapshot, one more == three straight through.
   Propagate(*loaded, 3);
-  const std::unique_ptr<LightField> three = SmallCornell(3);
+  const std::unique_ptr<LightField> three = SmallCornell(3, true);
   ExpectSameField(*three, *loaded);
 
   // A propagated field is compact, and its snapshot reads back the same words.
@@ -122,7 +123,7 @@ TEST(VLFSnapshot, RoundTripsExactlyAndResumes)
 TEST(VLFSnapshot, VersionOneFilesStillLoad)
 {
   const std::string path = TempPath("version1.vlf");
-  std::unique_ptr<LightField> field = SmallCornell(0);
+  std::unique_ptr<LightField> field = SmallCornell(0, true);
   PropagateIteration(*field);
   PropagateIteration(*field);
   WriteSnapshotVersion(*field, path, DenseSnapshotVersion);
@@ -264,7 +265,7 @@ TEST(VLFSnapshot, StaleTemporariesOfDeadWritersAreRemoved)
 TEST(VLFSnapshot, NonFiniteValuesAreRefused)
 {
   const std::string path = TempPath("nan.vlf");
-  std::unique_ptr<LightField> field = SmallCornell(0);
+  std::unique_ptr<LightField> field = SmallCornell(0, true);
   PropagateIteration(*field);
   ASSERT_FALSE(field->GetSubfield(0).Radiance.empty());
   field->GetSubfield(0).Radiance.Floats()[0].y = std::numeric_limits<float>::quiet_NaN();
@@ -275,7 +276,7 @@ TEST(VLFSnapshot, NonFiniteValuesAreRefused)
   WriteSnapshot(*field, path);
   EXPECT_NE(ReadError(path).find("NaN or infinite"), std::string::npos) << ReadError(path);
   // The same in a version 1 file.
-  field = SmallCornell(1);
+  field = SmallCornell(1, true);
   field->GetSubfield(0).Radiance[0] = glm::vec3(std::numeric_limits<float>::quiet_NaN());
   WriteSnapshotVersion(*field, path, DenseSnapshotVersion);
   EXPECT_NE(ReadError(path).find("NaN or infinite radiance"), std::string::npos)
@@ -293,7 +294,7 @@ TEST(VLFSnapshot, NegativeRadianceIsRefused)
   field->TotalDiffuse[0].y = -0.5f;
   WriteSnapshot(*field, path);
   EXPECT_NE(ReadError(path).find("holds negative radiance"), std::string::npos) << ReadError(path);
-  field = SmallCornell(0);
+  field = SmallCornell(0, true);
   PropagateIteration(*field);
   ASSERT_FALSE(field->GetSubfield(0).Radiance.empty());
   field->GetSubfield(0).Radiance.Floats()[0].z = -1.0f;
