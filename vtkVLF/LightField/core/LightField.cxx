@@ -752,39 +752,66 @@ void LightField::TraceSubfield(std::size_t k, const EmbreeScene& embree)
   {
     f.TileStart[t + 1] += f.TileStart[t];
   }
+  // Maps numbered mirrors first: their crossings take the first slots, the only ones whose
+  // radiance is stored (SpecularSlots, SentRadiance).
+  std::uint32_t next = 0;
+  for (int pass = 0; pass < 2; ++pass)
+  {
+    for (TileEntry& e : f.Entries)
+    {
+      if (this->StoresRadiance(e.Surface) == (pass == 0))
+      {
+        e.Map = next++;
+      }
+    }
+  }
   const std::size_t cellsPerMap = static_cast<std::size_t>(ts) * ts;
-  // The hits are sorted by map then cell: the cells in ascending order, and so the slots. A
-  // cell holds one crossing (a line crosses a plane once; a hit on a shared edge may repeat it).
-  std::vector<std::size_t> occupied;
-  std::vector<float> depth;
-  std::vector<std::uint32_t> mapOf;
-  std::vector<std::int32_t> lineI, lineJ;
-  occupied.reserve(hits.size());
-  std::size_t map = 0;
+  // One crossing per cell (a line crosses a plane once; a hit on a shared edge may repeat it),
+  // in slot order: by map, then cell.
+  struct Found
+  {
+    std::size_t Cell;
+    float Depth;
+    std::uint32_t Surface;
+    std::int32_t I, J;
+  };
+  std::vector<Found> found;
+  found.reserve(hits.size());
+  std::size_t entry = 0;
   for (std::size_t q = 0; q < hits.size(); ++q)
   {
     if (q > 0 && (hits[q].Tile != hits[q - 1].Tile || hits[q].Surface != hits[q - 1].Surface))
     {
-      ++map;
+      ++entry;
     }
-    const std::size_t cell = map * cellsPerMap + hits[q].Local;
-    if (!occupied.empty() && occupied.back() == cell)
+    const std::size_t cell = f.Entries[entry].Map * cellsPerMap + hits[q].Local;
+    if (q > 0 && hits[q].Tile == hits[q - 1].Tile && hits[q].Surface == hits[q - 1].Surface &&
+      hits[q].Local == hits[q - 1].Local)
     {
-      depth.back() = hits[q].Depth;
+      found.back().Depth = hits[q].Depth;
       continue;
     }
-    occupied.push_back(cell);
-    depth.push_back(hits[q].Depth);
-    mapOf.push_back(static_cast<std::uint32_t>(map));
-    lineI.push_back(static_cast<std::int32_t>((hits[q].Tile % m) * ts + hits[q].Local % ts));
-    lineJ.push_back(static_cast<std::int32_t>((hits[q].Tile / m) * ts + hits[q].Local / ts));
+    found.push_back({ cell, hits[q].Depth, hits[q].Surface,
+      static_cast<std::int32_t>((hits[q].Tile % m) * ts + hits[q].Local % ts),
+      static_cast<std::int32_t>((hits[q].Tile / m) * ts + hits[q].Local / ts) });
+  }
+  std::sort(found.begin(), found.end(),
+    [](const Found& x, const Found& y) { return x.Cell < y.Cell; });
+  std::vector<std::size_t> occupied(found.size());
+  std::vector<float> depth(found.size());
+  std::vector<std::uint32_t> mapOf(found.size());
+  for (std::size_t q = 0; q < found.size(); ++q)
+  {
+    occupied[q] = found[q].Cell;
+    depth[q] = found[q].Depth;
+    mapOf[q] = static_cast<std::uint32_t>(found[q].Cell / cellsPerMap);
   }
   f.Cells.Build(f.Entries.size(), cellsPerMap, occupied);
   // Depths: none for maps whose crossings lie on their surface's plane (CrossingDepths).
   std::vector<std::uint8_t> offPlane(f.Entries.size(), 0);
   for (std::size_t q = 0; q < occupied.size(); ++q)
   {
-    const float plane = this->PlaneDepth(k, lineI[q], lineJ[q], f.Entries[mapOf[q]].Surface);
+    const float plane = this->PlaneDepth(k, found[q].I, found[q].J, found[q].Surface);
     if (!(std::abs(plane - depth[q]) <= PlaneDepthTolerance))
     {
       offPlane[mapOf[q]] = 1;
@@ -803,13 +830,9 @@ void LightField::TraceSubfield(std::size_t k, const EmbreeScene& embree)
     }
   }
   f.Depth.Values.shrink_to_fit();
-  f.Radiance.clear();
-  f.UnshotSpecular.clear();
-  if (this->AnySpecular) // else the radiance follows from the textures (SentRadiance)
-  {
-    f.Radiance.assign(occupied.size(), glm::vec3(0.0f));
-    f.UnshotSpecular.assign(occupied.size(), glm::vec3(0.0f));
-  }
+  // Radiance of the mirrors' crossings only: the others' follows from the textures.
+  f.Radiance.assign(this->SpecularSlots(f), glm::vec3(0.0f));
+  f.UnshotSpecular.assign(this->SpecularSlots(f), glm::vec3(0.0f));
 }
 
 std::uint64_t LightField::AllocatedBytes() const
@@ -837,6 +860,22 @@ void LightField::CompactRadiance()
         this->Subfields[k].UnshotSpecular.MakeCompact();
       }
     });
+}
+
+bool LightField::StoresRadiance(std::uint32_t surface) const
+{
+  const glm::vec3& ks = this->MaterialOf(surface).Specular;
+  return ks.x > 0.0f || ks.y > 0.0f || ks.z > 0.0f;
+}
+
+std::size_t LightField::SpecularSlots(const Subfield& f) const
+{
+  std::size_t maps = 0;
+  for (const TileEntry& e : f.Entries)
+  {
+    maps += this->StoresRadiance(e.Surface) ? 1 : 0;
+  }
+  return maps < f.Cells.Maps() ? f.Cells.MapFirstSlot(maps) : f.Cells.Slots();
 }
 
 } // namespace vlf

@@ -155,9 +155,9 @@ struct Subfield
   // each its slot, the index into the per-crossing arrays below.
   CellIndex Cells;
   CrossingDepths Depth;          // per crossing: distance along the line (LightField::CrossingDepth)
-  RadianceArray Radiance;        // per crossing: radiance sent along the line so far (only in
-                                 // scenes with mirrors: LightField::SentRadiance)
-  RadianceArray UnshotSpecular;  // per crossing (empty without mirror surfaces)
+  RadianceArray Radiance;        // per mirror crossing (the first slots): radiance sent along
+                                 // the line so far (LightField::SentRadiance)
+  RadianceArray UnshotSpecular;  // per mirror crossing (empty without mirror surfaces)
 };
 
 // One surface crossing of a line.
@@ -258,6 +258,12 @@ public:
   // propagation shot; crossings whose line runs into a solid, which shoot nothing, read it too).
   // Nothing is stored then: the maps hold visibility only.
   glm::vec3 SentRadiance(std::size_t k, int i, int j, std::uint32_t surface, std::size_t slot) const;
+  // Whether crossings of the surface store their radiance: those of mirrors (Ks > 0), whose
+  // radiance depends on the direction. Their maps are numbered first (TileEntry::Map), so their
+  // crossings hold the first slots: SpecularSlots of them, the length of Subfield::Radiance and
+  // UnshotSpecular.
+  bool StoresRadiance(std::uint32_t surface) const;
+  std::size_t SpecularSlots(const Subfield& f) const;
   // Slot (Crossing::Cell) of surface s on line (i, j) of subfield k, or -1 when the line misses it.
   std::int64_t FindCell(std::size_t k, int i, int j, std::uint32_t surface) const;
   // The crossings of line (i, j) of subfield k ordered by depth (out is cleared first).

@@ -61,7 +61,7 @@ glm::vec3 LightField::SentRadiance(
   std::size_t k, int i, int j, std::uint32_t surface, std::size_t slot) const
 {
   const Subfield& f = this->Subfields[k];
-  if (!f.Radiance.empty())
+  if (slot < f.Radiance.size())
   {
     return f.Radiance[slot];
   }

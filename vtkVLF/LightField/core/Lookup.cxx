@@ -40,7 +40,7 @@ glm::vec3 Lookup::CellRadiance(
   const Subfield& f = this->Field.GetSubfield(k);
   glm::vec3 radiance = this->Field.SentRadiance(k, i, j, s, cell) +
     this->Field.SampleTexture(this->Field.UnshotDiffuse, s, x);
-  if (!f.UnshotSpecular.empty())
+  if (cell < f.UnshotSpecular.size()) // a mirror's crossing
   {
     radiance += f.UnshotSpecular[cell];
   }

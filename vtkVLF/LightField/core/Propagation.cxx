@@ -56,7 +56,6 @@ void ShootSubfield(LightField& field, std::size_t k, BlockState& state)
   const int n = settings.RaysPerSide;
   Subfield& f = field.GetSubfield(k);
   const float fluxPerRadiance = settings.CellSize() * settings.CellSize() * f.Weight;
-  const bool specular = field.HasSpecular();
   const DirectionSet& directions = field.Directions();
   std::vector<Crossing> crossings;
   for (int j = 0; j < n; ++j)
@@ -73,7 +72,7 @@ void ShootSubfield(LightField& field, std::size_t k, BlockState& state)
         {
           // Not part of the visible surface (its capacity leaves it out): nothing is shot into a
           // solid. Mirrored light deposited here has no way out: it is lost to the mirror.
-          if (specular)
+          if (sender.Cell < f.UnshotSpecular.size()) // a mirror's crossing
           {
             const glm::vec3 lost = f.UnshotSpecular[sender.Cell] * fluxPerRadiance;
             f.UnshotSpecular[sender.Cell] = glm::vec3(0.0f);
@@ -84,7 +83,8 @@ void ShootSubfield(LightField& field, std::size_t k, BlockState& state)
         }
         glm::vec3 radiance = field.SampleTexture(
           field.UnshotDiffuse, sender.Surface, field.PointOnLine(k, i, j, sender.Depth));
-        if (specular)
+        const bool mirror = sender.Cell < f.Radiance.size(); // its radiance is stored
+        if (mirror)
         {
           radiance += glm::vec3(f.UnshotSpecular[sender.Cell]);
           f.UnshotSpecular[sender.Cell] = glm::vec3(0.0f);
@@ -93,7 +93,7 @@ void ShootSubfield(LightField& field, std::size_t k, BlockState& state)
         {
           continue;
         }
-        if (specular) // else LightField::SentRadiance derives it from the textures
+        if (mirror) // else LightField::SentRadiance derives it from the textures
         {
           f.Radiance[sender.Cell] += radiance;
         }

@@ -286,7 +286,7 @@ SceneMaterial ReadMaterial(Reader& r)
 // Depth of crossing `slot` of map `map` of f (subfield k of the field, its maps possibly received
 // from another rank): stored or from the plane (CrossingDepths).
 float DepthOf(const LightField& field, const Subfield& f, std::size_t k, std::size_t tile,
-  std::size_t map, std::size_t local, std::size_t slot)
+  std::size_t map, std::uint32_t surface, std::size_t local, std::size_t slot)
 {
   if (!f.Depth.FollowsPlane(map))
   {
@@ -295,7 +295,7 @@ float DepthOf(const LightField& field, const Subfield& f, std::size_t k, std::si
   const std::size_t m = static_cast<std::size_t>(field.Settings().TilesPerSide);
   const std::size_t ts = static_cast<std::size_t>(field.Settings().TileSide());
   return field.PlaneDepth(k, static_cast<int>((tile % m) * ts + local % ts),
-    static_cast<int>((tile / m) * ts + local / ts), f.Entries[map].Surface);
+    static_cast<int>((tile / m) * ts + local / ts), surface);
 }
 
 // Version 1's maps: every cell of every map, depth -1 where no line crosses, float radiance.
@@ -306,7 +306,7 @@ void WriteDenseMaps(Writer& w, const LightField& field, const Subfield& f, std::
   const std::size_t cells = f.Entries.size() * cellsPerMap;
   std::vector<float> depth(cells, -1.0f);
   std::vector<glm::vec3> radiance(cells, glm::vec3(0.0f));
-  std::vector<glm::vec3> unshot(f.UnshotSpecular.empty() ? 0 : cells, glm::vec3(0.0f));
+  std::vector<glm::vec3> unshot(field.HasSpecular() ? cells : 0, glm::vec3(0.0f));
   for (std::size_t t = 0; t + 1 < f.TileStart.size(); ++t)
   {
     for (std::size_t e = f.TileStart[t]; e < f.TileStart[t + 1]; ++e)
@@ -321,14 +321,15 @@ void WriteDenseMaps(Writer& w, const LightField& field, const Subfield& f, std::
         }
         const std::size_t slot = static_cast<std::size_t>(found);
         const std::size_t c = map * cellsPerMap + local;
-        depth[c] = DepthOf(field, f, k, t, map, local, slot);
+        const std::uint32_t surface = f.Entries[e].Surface;
+        depth[c] = DepthOf(field, f, k, t, map, surface, local, slot);
         const std::size_t m = static_cast<std::size_t>(field.Settings().TilesPerSide);
-        radiance[c] = !f.Radiance.empty() ? glm::vec3(f.Radiance[slot])
-                                          : field.SentRadiance(k,
-                                              static_cast<int>((t % m) * ts + local % ts),
-                                              static_cast<int>((t / m) * ts + local / ts),
-                                              f.Entries[map].Surface, slot);
-        if (!unshot.empty())
+        radiance[c] = slot < f.Radiance.size() ? glm::vec3(f.Radiance[slot])
+                                               : field.SentRadiance(k,
+                                                   static_cast<int>((t % m) * ts + local % ts),
+                                                   static_cast<int>((t / m) * ts + local / ts),
+                                                   surface, slot);
+        if (!unshot.empty() && slot < f.UnshotSpecular.size())
         {
           unshot[c] = f.UnshotSpecular[slot];
         }
@@ -605,10 +606,12 @@ void ReadCompactRadiance(
 }
 
 // Version 1 stored every map cell (depth < 0: no crossing) and float radiance; read one
-// subfield's maps and keep them the way this version does (sparse, compact).
-void ReadDenseMaps(Reader& r, Subfield& f, std::size_t k, std::uint64_t entries,
-  std::size_t cellsPerMap, bool specular)
+// subfield's maps and keep them the way this version does (sparse, mirrors' maps first and only
+// their radiance, compact).
+void ReadDenseMaps(Reader& r, const LightField& field, Subfield& f, std::size_t k,
+  std::uint64_t entries, std::size_t cellsPerMap)
 {
+  const bool specular = field.HasSpecular();
   std::vector<float> depth;
   std::vector<glm::vec3> radiance, unshot;
   r.Array(depth, "depth cells", entries * cellsPerMap);
@@ -619,7 +622,27 @@ void ReadDenseMaps(Reader& r, Subfield& f, std::size_t k, std::uint64_t entries,
     return std::isfinite(x.x) && std::isfinite(x.y) && std::isfinite(x.z) && x.x >= 0.0f &&
       x.y >= 0.0f && x.z >= 0.0f;
   };
-  std::vector<std::size_t> occupied;
+  // New map numbers: mirrors first (LightField::StoresRadiance), each group in entry order.
+  std::vector<std::uint32_t> renumber(entries, 0);
+  std::vector<std::uint8_t> seen(entries, 0);
+  std::uint32_t next = 0;
+  for (int pass = 0; pass < 2; ++pass)
+  {
+    for (TileEntry& e : f.Entries)
+    {
+      if (field.StoresRadiance(e.Surface) == (pass == 0))
+      {
+        if (seen[e.Map])
+        {
+          r.Fail("two tile entries of subfield " + std::to_string(k) + " share a map");
+        }
+        seen[e.Map] = 1;
+        renumber[e.Map] = next;
+        e.Map = next++;
+      }
+    }
+  }
+  std::vector<std::pair<std::size_t, std::size_t>> cells; // new cell, old cell
   for (std::size_t c = 0; c < depth.size(); ++c)
   {
     if (!std::isfinite(depth[c]))
@@ -632,8 +655,14 @@ void ReadDenseMaps(Reader& r, Subfield& f, std::size_t k, std::uint64_t entries,
     }
     if (depth[c] >= 0.0f)
     {
-      occupied.push_back(c);
+      cells.emplace_back(renumber[c / cellsPerMap] * cellsPerMap + c % cellsPerMap, c);
     }
+  }
+  std::sort(cells.begin(), cells.end());
+  std::vector<std::size_t> occupied(cells.size());
+  for (std::size_t q = 0; q < cells.size(); ++q)
+  {
+    occupied[q] = cells[q].first;
   }
   f.Cells.Build(entries, cellsPerMap, occupied);
   // Every map's depths kept as stored (the plane test is the tracer's: TraceSubfield).
@@ -643,23 +672,17 @@ void ReadDenseMaps(Reader& r, Subfield& f, std::size_t k, std::uint64_t entries,
   {
     f.Depth.Start[e] = static_cast<std::uint32_t>(f.Cells.MapFirstSlot(e));
   }
-  f.Depth.Values.resize(occupied.size());
-  // Without mirrors the radiance follows from the textures (LightField::SentRadiance): the
-  // stored one is that same sum, not kept.
-  f.Radiance.clear();
-  f.UnshotSpecular.clear();
-  if (specular)
+  f.Depth.Values.resize(cells.size());
+  const std::size_t stored = field.SpecularSlots(f);
+  f.Radiance.assign(stored, glm::vec3(0.0f));
+  f.UnshotSpecular.assign(stored, glm::vec3(0.0f));
+  for (std::size_t q = 0; q < cells.size(); ++q)
   {
-    f.Radiance.assign(occupied.size(), glm::vec3(0.0f));
-    f.UnshotSpecular.assign(occupied.size(), glm::vec3(0.0f));
-  }
-  for (std::size_t q = 0; q < occupied.size(); ++q)
-  {
-    f.Depth.Values[q] = depth[occupied[q]];
-    if (specular)
+    f.Depth.Values[q] = depth[cells[q].second];
+    if (q < stored)
     {
-      f.Radiance[q] = radiance[occupied[q]];
-      f.UnshotSpecular[q] = unshot[occupied[q]];
+      f.Radiance[q] = radiance[cells[q].second];
+      f.UnshotSpecular[q] = unshot[cells[q].second];
     }
   }
   f.Radiance.MakeCompact();
@@ -870,7 +893,7 @@ std::unique_ptr<LightField> ReadSnapshot(const std::string& path, std::uint64_t 
     }
     if (dense)
     {
-      ReadDenseMaps(r, f, k, entries, cellsPerMap, field->HasSpecular());
+      ReadDenseMaps(r, *field, f, k, entries, cellsPerMap);
       continue;
     }
     std::vector<std::uint64_t> words;
@@ -879,7 +902,6 @@ std::unique_ptr<LightField> ReadSnapshot(const std::string& path, std::uint64_t 
     {
       r.Fail("the cell masks of subfield " + std::to_string(k) + " are inconsistent");
     }
-    const std::size_t slots = f.Cells.Slots();
     std::vector<std::uint8_t> followsPlane;
     r.Array(followsPlane, "depth flags", entries);
     f.Depth.Clear();
@@ -898,9 +920,23 @@ std::unique_ptr<LightField> ReadSnapshot(const std::string& path, std::uint64_t 
       }
     }
     r.Array(f.Depth.Values, "crossing depths", stored);
-    ReadCompactRadiance(r, f.Radiance, "radiance words", field->HasSpecular() ? slots : 0);
-    ReadCompactRadiance(
-      r, f.UnshotSpecular, "unshot specular words", field->HasSpecular() ? slots : 0);
+    // The mirrors' maps are numbered first (LightField::StoresRadiance): their crossings'
+    // radiance is stored, the others' follows from the textures.
+    std::size_t mirrorMaps = 0;
+    for (const TileEntry& e : f.Entries)
+    {
+      mirrorMaps += field->StoresRadiance(e.Surface) ? 1 : 0;
+    }
+    for (const TileEntry& e : f.Entries)
+    {
+      if (field->StoresRadiance(e.Surface) != (e.Map < mirrorMaps))
+      {
+        r.Fail("the maps of subfield " + std::to_string(k) + " are not numbered mirrors first");
+      }
+    }
+    const std::size_t mirrorSlots = field->SpecularSlots(f);
+    ReadCompactRadiance(r, f.Radiance, "radiance words", mirrorSlots);
+    ReadCompactRadiance(r, f.UnshotSpecular, "unshot specular words", mirrorSlots);
   }
   if (r.BytesLeft() != 0)
   {

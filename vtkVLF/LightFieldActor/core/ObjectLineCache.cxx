@@ -57,7 +57,7 @@ void ObjectLineCache::Build(const LightField& field, const std::vector<std::uint
               const glm::vec3 x = field.PointOnLine(k, w.I0 + a, w.J0 + b, c.Depth);
               glm::vec3 radiance = field.SentRadiance(k, w.I0 + a, w.J0 + b, c.Surface, c.Cell) +
                 field.SampleTexture(field.UnshotDiffuse, c.Surface, x);
-              if (!f.UnshotSpecular.empty())
+              if (c.Cell < f.UnshotSpecular.size()) // a mirror's crossing
               {
                 radiance += f.UnshotSpecular[c.Cell];
               }
