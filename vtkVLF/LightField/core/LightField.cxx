@@ -833,6 +833,7 @@ void LightField::TraceSubfield(std::size_t k, const EmbreeScene& embree)
   // Radiance of the mirrors' crossings only: the others' follows from the textures.
   f.Radiance.assign(this->SpecularSlots(f), glm::vec3(0.0f));
   f.UnshotSpecular.assign(this->SpecularSlots(f), glm::vec3(0.0f));
+  this->MarkBlocked(k);
 }
 
 std::uint64_t LightField::AllocatedBytes() const

@@ -255,7 +255,7 @@ public:
   // its line so far. Stored (Subfield::Radiance) in a scene with mirrors; without, every surface
   // sends the same radiance along every line, its diffuse texture at the crossing, so what it
   // has sent is the total diffuse texture less its unshot part there (exactly the sum the
-  // propagation shot; crossings whose line runs into a solid, which shoot nothing, read it too).
+  // propagation shot; 0 for crossings whose line runs into a solid, which shoot nothing).
   // Nothing is stored then: the maps hold visibility only.
   glm::vec3 SentRadiance(std::size_t k, int i, int j, std::uint32_t surface, std::size_t slot) const;
   // Whether crossings of the surface store their radiance: those of mirrors (Ks > 0), whose
@@ -263,6 +263,9 @@ public:
   // crossings hold the first slots: SpecularSlots of them, the length of Subfield::Radiance and
   // UnshotSpecular.
   bool StoresRadiance(std::uint32_t surface) const;
+  // Marks subfield k's crossings whose line runs into a solid (Receiver: LineBlocked) in its
+  // cell index: they send nothing (SentRadiance 0). Build and ReadSnapshot call it.
+  void MarkBlocked(std::size_t k);
   std::size_t SpecularSlots(const Subfield& f) const;
   // Slot (Crossing::Cell) of surface s on line (i, j) of subfield k, or -1 when the line misses it.
   std::int64_t FindCell(std::size_t k, int i, int j, std::uint32_t surface) const;

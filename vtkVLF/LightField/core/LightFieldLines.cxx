@@ -65,6 +65,10 @@ glm::vec3 LightField::SentRadiance(
   {
     return f.Radiance[slot];
   }
+  if (f.Cells.Blocked(slot))
+  {
+    return glm::vec3(0.0f);
+  }
   const glm::vec3 x = this->PointOnLine(k, i, j, this->PlaneDepth(k, i, j, surface));
   const TexelWeights w = this->WeightsAt(surface, x);
   glm::vec3 sent(0.0f);
@@ -73,6 +77,26 @@ glm::vec3 LightField::SentRadiance(
     sent += w.Weight[t] * (this->TotalDiffuse[w.Texel[t]] - this->UnshotDiffuse[w.Texel[t]]);
   }
   return glm::max(sent, glm::vec3(0.0f));
+}
+
+void LightField::MarkBlocked(std::size_t k)
+{
+  const int n = this->Config.RaysPerSide;
+  std::vector<Crossing> line;
+  for (int j = 0; j < n; ++j)
+  {
+    for (int i = 0; i < n; ++i)
+    {
+      this->LineCrossings(k, i, j, line);
+      for (std::size_t q = 0; q < line.size(); ++q)
+      {
+        if (this->Receiver(k, line, q) == LineBlocked)
+        {
+          this->Subfields[k].Cells.SetBlocked(line[q].Cell);
+        }
+      }
+    }
+  }
 }
 
 std::int64_t LightField::FindCell(std::size_t k, int i, int j, std::uint32_t surface) const

@@ -99,6 +99,7 @@ void CellIndex::Build(
     const std::size_t map = cell / cellsPerMap, local = cell % cellsPerMap;
     this->Mask[map * this->PerMap + (local >> 6)] |= std::uint64_t(1) << (local & 63);
   }
+  this->BlockedBits.clear();
   this->Count();
 }
 
@@ -134,6 +135,7 @@ bool CellIndex::Assign(std::size_t maps, std::size_t cellsPerMap, std::vector<st
   this->Cells = cellsPerMap;
   this->PerMap = perMap;
   this->Mask = std::move(words);
+  this->BlockedBits.clear();
   this->Count();
   return true;
 }
@@ -161,7 +163,7 @@ void CellIndex::Count()
 
 std::uint64_t CellIndex::Bytes() const
 {
-  return this->Mask.capacity() * sizeof(std::uint64_t) +
+  return (this->Mask.capacity() + this->BlockedBits.capacity()) * sizeof(std::uint64_t) +
     this->Rank.capacity() * sizeof(std::uint32_t);
 }
 

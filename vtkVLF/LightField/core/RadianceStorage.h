@@ -95,6 +95,22 @@ public:
   // Throws std::runtime_error for a truncated or inconsistent message.
   void Unpack(const std::string& in, std::size_t& at);
 
+  // Crossings whose line runs into a solid (LightField::Receiver): they send nothing. Found from
+  // the geometry (LightField::MarkBlocked), neither packed nor stored.
+  void SetBlocked(std::size_t slot)
+  {
+    if (this->BlockedBits.size() * 64 < this->Occupied)
+    {
+      this->BlockedBits.assign((this->Occupied + 63) / 64, 0);
+    }
+    this->BlockedBits[slot >> 6] |= std::uint64_t(1) << (slot & 63);
+  }
+  bool Blocked(std::size_t slot) const
+  {
+    return (slot >> 6) < this->BlockedBits.size() &&
+      (this->BlockedBits[slot >> 6] >> (slot & 63) & 1) != 0;
+  }
+
   bool operator==(const CellIndex& other) const
   {
     return this->Cells == other.Cells && this->Mask == other.Mask;
@@ -108,6 +124,7 @@ private:
   std::size_t Occupied = 0;
   std::vector<std::uint64_t> Mask;
   std::vector<std::uint32_t> Rank; // crossings before each word
+  std::vector<std::uint64_t> BlockedBits;
 };
 
 // Depth of each crossing along its line. Surfaces are planar, so where a line crosses one follows

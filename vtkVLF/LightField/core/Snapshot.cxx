@@ -986,6 +986,10 @@ std::unique_ptr<LightField> ReadSnapshot(const std::string& path, std::uint64_t 
     throw SnapshotError(
       Quoted(path) + " holds negative radiance: it is not a usable light field");
   }
+  for (std::size_t k = 0; k < field->SubfieldCount(); ++k)
+  {
+    field->MarkBlocked(k); // not stored: it follows from the geometry
+  }
   return field;
 }
 

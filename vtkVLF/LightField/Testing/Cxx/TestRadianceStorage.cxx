@@ -155,6 +155,7 @@ TEST(VLFRadianceStorage, DiffuseSentRadianceIsWhatTheIterationsShot)
     int I, J;
     Crossing C;
     glm::vec3 Point;
+    bool Blocked;
     glm::vec3 Shot{ 0.0f };
   };
   std::vector<Line> lines;
@@ -168,10 +169,8 @@ TEST(VLFRadianceStorage, DiffuseSentRadianceIsWhatTheIterationsShot)
         field->LineCrossings(k, i, j, line);
         for (std::size_t q = 0; q < line.size(); ++q)
         {
-          if (field->Receiver(k, line, q) != LightField::LineBlocked)
-          {
-            lines.push_back({ k, i, j, line[q], field->PointOnLine(k, i, j, line[q].Depth) });
-          }
+          lines.push_back({ k, i, j, line[q], field->PointOnLine(k, i, j, line[q].Depth),
+            field->Receiver(k, line, q) == LightField::LineBlocked });
         }
       }
     }
@@ -180,14 +179,23 @@ TEST(VLFRadianceStorage, DiffuseSentRadianceIsWhatTheIterationsShot)
   {
     for (Line& l : lines)
     {
-      l.Shot += field->SampleTexture(field->UnshotDiffuse, l.C.Surface, l.Point);
+      if (!l.Blocked) // runs into a solid: shoots nothing (Propagation.h)
+      {
+        l.Shot += field->SampleTexture(field->UnshotDiffuse, l.C.Surface, l.Point);
+      }
     }
     PropagateIteration(*field);
   }
   double worst = 0.0, worstTotal = 0.0;
-  std::size_t compared = 0;
+  std::size_t compared = 0, blocked = 0;
   for (const Line& l : lines)
   {
+    if (l.Blocked)
+    {
+      EXPECT_EQ(field->SentRadiance(l.K, l.I, l.J, l.C.Surface, l.C.Cell), glm::vec3(0.0f));
+      ++blocked;
+      continue;
+    }
     const double size = static_cast<double>(l.Shot.x) + l.Shot.y + l.Shot.z;
     if (!(size > 1e-3))
     {
@@ -200,8 +208,9 @@ TEST(VLFRadianceStorage, DiffuseSentRadianceIsWhatTheIterationsShot)
     worstTotal = std::max(worstTotal, (static_cast<double>(dt.x) + dt.y + dt.z) / size);
     ++compared;
   }
-  std::printf("[ sent     ] %zu diffuse crossings: worst %.2e (the total alone %.2e)\n", compared,
-    worst, worstTotal);
+  std::printf("[ sent     ] %zu diffuse crossings: worst %.2e (the total alone %.2e); %zu blocked\n",
+    compared, worst, worstTotal, blocked);
+  EXPECT_GT(blocked, 10u); // the floor under the blocks
   EXPECT_EQ(field->GetSubfield(0).Radiance.size(), 0u); // nothing stored without mirrors
   EXPECT_GT(compared, 1000u);
   EXPECT_LT(worst, 1e-4);
