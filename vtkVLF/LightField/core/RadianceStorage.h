@@ -1,28 +1,38 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // RadianceStorage: how a LightField keeps its radiance maps in memory, in plain C++ (GLM, no VTK).
+// Measured with `mesolight bench vlf-storage` (docs/vlf.md, "Storage"): a few percent of the
+// dense float maps of Wither 2005 §2.4.1, the same lookups.
 //
 // Sparse cells. Most cells of most radiance maps hold no crossing: a tile's map of a surface
-// covers the tile's whole square but the surface's projection only a part of it (measured on the
-// Cornell box: `mesolight bench vlf-storage`, docs/vlf-storage.md). CellIndex keeps one bit per map
-// cell (crossing or not) and, per 64-bit word, how many crossings come before it; a crossing's
-// slot -- its index into the per-crossing arrays (depth, radiance) -- is that count plus the set
-// bits below it in its word (one popcount).
+// covers the tile's whole square but the surface's projection only a part of it (a quarter to a
+// half of the cells on the Cornell box). CellIndex keeps one bit per map cell (crossing or not)
+// and, per 64-bit word, how many crossings come before it; a crossing's slot -- its index into
+// the per-crossing arrays -- is that count plus the set bits below it in its word (a popcount).
 //
-// Shared-exponent radiance. A stored radiance is RGB9E5 (Ward, "Real Pixels", Graphics Gems II
-// 1991, as the shared-exponent texture format of EXT_texture_shared_exponent): three 9-bit
-// mantissas and one 5-bit exponent in 32 bits instead of 96. Every channel is within
-// 2^-9 max(r, g, b) of its value (round to nearest). A RadianceArray scales its values by a power
-// of two (Exponent) so that its largest value sits at the top of the format's range: any
-// emission is representable, and values more than 2^29 below the largest become zero.
+// Depths from the planes. Surfaces are planar: where a line crosses one follows from its plane.
+// Only maps whose traced crossings lie off it (CrossingDepths) store their depths.
 //
-// Propagation adds to the radiance of every crossing once per iteration; shared-exponent
+// Radiance from the textures. Without mirrors, a surface sends the same radiance along every
+// line, its diffuse texture at the crossing: what a crossing has sent is its surface's total
+// diffuse texture less the unshot part there (LightField::SentRadiance), nothing to store. A
+// mirror's radiance depends on the direction: the mirrors' maps are numbered first, so their
+// crossings hold the first slots, and only they store radiance (and unshot specular radiance).
+//
+// Shared-exponent radiance. That stored radiance is RGB9E5 (Ward, "Real Pixels", Graphics Gems
+// II 1991, in the layout of EXT_texture_shared_exponent) once propagated: three 9-bit mantissas
+// and one 5-bit exponent in 32 bits instead of 96. Every channel is within 2^-9 max(r, g, b) of
+// its value (round to nearest). A RadianceArray scales its values by a power of two (Exponent)
+// so that its largest value sits at the top of the format's range: any emission is
+// representable, and values more than 2^29 below the largest become zero.
+//
+// Propagation adds to the radiance of every mirror crossing once per iteration; shared-exponent
 // rounding at every step would lose each addition smaller than half a step of the 9-bit
 // mantissa (late bounces onto bright cells) and bias the field dark. So a RadianceArray is
-// either full float (Accumulating: while propagating) or compact, and turns itself back to float
-// at the first write. Propagate and PropagateToTolerance compact the field after their last
-// iteration (before its snapshot). A snapshot stores each array as it is held: the last one
-// compact, and loaded compact; those of earlier iterations float, so that resuming from them
-// gives the field of an uninterrupted run bit for bit.
+// either full float (while propagating) or compact, and turns itself back to float at the first
+// write. Propagate and PropagateToTolerance compact the field after their last iteration (before
+// its snapshot). A snapshot stores each array as it is held: the last one compact, and loaded
+// compact; those of earlier iterations float, so that resuming from them gives the field of an
+// uninterrupted run bit for bit.
 #ifndef mesolight_vlf_RadianceStorage_h
 #define mesolight_vlf_RadianceStorage_h
 
