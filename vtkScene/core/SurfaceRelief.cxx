@@ -171,8 +171,8 @@ struct EdgeLine
   double Sign = 1.0;
   double Distance(const Point2& p) const
   {
-    return this->Sign * ((this->B.x - this->A.x) * (p.y - this->A.y) -
-                          (this->B.y - this->A.y) * (p.x - this->A.x));
+    return this->Sign *
+      ((this->B.x - this->A.x) * (p.y - this->A.y) - (this->B.y - this->A.y) * (p.x - this->A.x));
   }
 };
 
@@ -269,7 +269,8 @@ std::size_t FindCell(const std::vector<double>& lines, double x)
 {
   // The cell [lines[k], lines[k + 1]] holding x, clamped to the valid cells.
   const auto it = std::upper_bound(lines.begin(), lines.end(), x);
-  const std::size_t k = static_cast<std::size_t>(std::max<std::ptrdiff_t>(0, it - lines.begin() - 1));
+  const std::size_t k =
+    static_cast<std::size_t>(std::max<std::ptrdiff_t>(0, it - lines.begin() - 1));
   return std::min(k, lines.size() - 2);
 }
 } // namespace
@@ -362,8 +363,7 @@ SurfaceReliefResult DisplaceSurface(const TriangleScene& scene,
   {
     throw SurfaceReliefError(name + " has no area");
   }
-  const std::vector<double> linesU =
-    GridLines(lower.x, upper.x, depth.Width, settings.Subdivision);
+  const std::vector<double> linesU = GridLines(lower.x, upper.x, depth.Width, settings.Subdivision);
   const std::vector<double> linesV =
     GridLines(lower.y, upper.y, depth.Height, settings.Subdivision);
 

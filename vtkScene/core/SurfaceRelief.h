@@ -60,9 +60,9 @@ struct DepthMap
  */
 struct SurfacePlane
 {
-  glm::vec3 Origin{ 0.0f }; // texture coordinate (0, 0)
-  glm::vec3 AxisU{ 1.0f, 0.0f, 0.0f }; // world vector from u = 0 to u = 1
-  glm::vec3 AxisV{ 0.0f, 1.0f, 0.0f }; // world vector from v = 0 to v = 1
+  glm::vec3 Origin{ 0.0f };             // texture coordinate (0, 0)
+  glm::vec3 AxisU{ 1.0f, 0.0f, 0.0f };  // world vector from u = 0 to u = 1
+  glm::vec3 AxisV{ 0.0f, 1.0f, 0.0f };  // world vector from v = 0 to v = 1
   glm::vec3 Normal{ 0.0f, 0.0f, 1.0f }; // unit; the side the surface's triangles face
 
   /** The plane-rule texture coordinate of a point of the plane. */
@@ -107,8 +107,8 @@ struct SurfaceReliefResult
  * the undisplaced boundary down to the displaced one, facing into the relief, so that no light
  * passes between the relief and the neighbouring surfaces. The new triangles keep the material of
  * the triangle they come from (and its SurfaceIds entry); the other triangles keep their order
- * and the new ones come after them. Throws SurfaceReliefError for a surface SurfacePlaneOf refuses or a depth map that
- * is empty, not Width x Height, or has depths outside [0, 1].
+ * and the new ones come after them. Throws SurfaceReliefError for a surface SurfacePlaneOf refuses
+ * or a depth map that is empty, not Width x Height, or has depths outside [0, 1].
  */
 SurfaceReliefResult DisplaceSurface(const TriangleScene& scene,
   const std::vector<std::size_t>& triangles, const DepthMap& depth,

@@ -43,8 +43,8 @@ DepthMap LinearMap()
   {
     for (int i = 0; i < MapWidth; ++i)
     {
-      map.Depth.push_back(static_cast<float>(
-        LinearDepth(i / (MapWidth - 1.0), j / (MapHeight - 1.0))));
+      map.Depth.push_back(
+        static_cast<float>(LinearDepth(i / (MapWidth - 1.0), j / (MapHeight - 1.0))));
     }
   }
   return map;
@@ -63,8 +63,8 @@ TriangleScene Panel()
 {
   TriangleScene scene;
   const std::uint32_t white = scene.AddMaterial({});
-  scene.AddPolygon({ { 0.0f, 0.0f, 0.0f }, { 3.0f, 0.0f, 0.0f }, { 3.0f, 2.0f, 0.0f },
-                     { 0.0f, 2.0f, 0.0f } },
+  scene.AddPolygon(
+    { { 0.0f, 0.0f, 0.0f }, { 3.0f, 0.0f, 0.0f }, { 3.0f, 2.0f, 0.0f }, { 0.0f, 2.0f, 0.0f } },
     white, scene.AddSurface("panel"));
   scene.AddPolygon({ { 5.0f, 0.0f, 1.0f }, { 6.0f, 0.0f, 1.0f }, { 6.0f, 1.0f, 1.0f } }, white);
   return scene;
@@ -113,8 +113,8 @@ TEST(SurfaceRelief, VerticesAtTheDepthMapsHeights)
   // The unnamed triangle is kept, first; every new triangle is the panel's.
   EXPECT_EQ(r.Scene.SurfaceIds[0], TriangleScene::NoSurface);
   EXPECT_EQ(r.Scene.TriangleCount(), 1 + r.SurfaceTriangles + r.SideTriangles);
-  EXPECT_EQ(mesolight::SurfaceTriangles(r.Scene, "panel").size(),
-    r.SurfaceTriangles + r.SideTriangles);
+  EXPECT_EQ(
+    mesolight::SurfaceTriangles(r.Scene, "panel").size(), r.SurfaceTriangles + r.SideTriangles);
   // (W + 1) x (H + 1) grid cells (texel centres and borders), those on the diagonal split.
   EXPECT_GE(r.SurfaceTriangles, 2u * (MapWidth + 1) * (MapHeight + 1));
   std::size_t texelCentres = 0, checked = 0;
@@ -180,8 +180,7 @@ TEST(SurfaceRelief, CornellBackWallClosedAndAreaKept)
   {
     for (int i = 0; i < map.Width; ++i)
     {
-      map.Depth.push_back(
-        static_cast<float>(0.5 + 0.45 * std::sin(0.7 * i) * std::cos(0.9 * j)));
+      map.Depth.push_back(static_cast<float>(0.5 + 0.45 * std::sin(0.7 * i) * std::cos(0.9 * j)));
     }
   }
   SurfaceReliefSettings settings;
