@@ -28,8 +28,9 @@ void AddTraceReliefOptions(CommandLine& cl)
     "FILE.obj, cornell: a relief on a named planar surface, traced as a dense displaced mesh "
     "(one vertex per texel, sides closed)");
   cl.AddValue("--relief-depth-scale", "K",
-    "world depth of depth 1 / world width of the relief's texture (vtkReliefProperty's units)",
-    "0.04");
+    "world depth of depth 1 / world width of the relief's texture (vtkReliefProperty's units "
+    "and default)",
+    "0.05");
   cl.AddFlag("--relief-height", "the relief image stores height (white = high), not depth");
   cl.AddValue("--relief-subdivision", "N", "grid lines of the dense mesh per texel", "1");
   cl.AddValue("--relief-mask", "FILE.exr",
@@ -90,7 +91,7 @@ bool ApplyTraceRelief(
     error = "--relief takes SURFACE=DEPTH_IMAGE (e.g. back=bricks.png), not '" + spec + "'";
     return false;
   }
-  double scale = 0.04;
+  double scale = 0.05;
   int subdivision = 1;
   if (!cl.GetDouble("--relief-depth-scale", 0.0, 100.0, scale, error) ||
     !cl.GetInt("--relief-subdivision", 1, 16, subdivision, error))

@@ -19,7 +19,7 @@
 # is installed, its brick height map (wicked/highqualitybrickz.jpg, inverted to depth); skipped
 # when absent. Settings through the environment (defaults in brackets): DIRECTIONS [2049], RAYS
 # [32] (the field), SIZE [256] (square images), SAMPLES [1024] (paths per pixel of the
-# reference), DEPTH_SCALE [0.04], CAMERA [278,273,-800,278,273,0, the published Cornell camera],
+# reference), DEPTH_SCALE [0.05], CAMERA [278,273,-800,278,273,0, the published Cornell camera],
 # FOV [39.3077], CSV_DIR [docs/measurements/vlf-relief under the source tree].
 #
 # The light-field side's options are those of `mesolight vlf render --relief`: FIELD_MODE
@@ -35,7 +35,7 @@ directions="${DIRECTIONS:-2049}"
 rays="${RAYS:-32}"
 size="${SIZE:-256}"
 samples="${SAMPLES:-1024}"
-scale="${DEPTH_SCALE:-0.04}"
+scale="${DEPTH_SCALE:-0.05}"
 camera="${CAMERA:-278,273,-800,278,273,0}"
 fov="${FOV:-39.3077}"
 csv_dir="${CSV_DIR:-$source_dir/docs/measurements/vlf-relief}"

@@ -107,14 +107,10 @@ SurfacePlane SurfacePlaneOf(const TriangleMesh& mesh, const std::vector<std::siz
       }
     }
   }
-  // V: world up projected into the plane (world +z for a nearly horizontal surface), U = V x N.
-  glm::dvec3 up(0.0, 1.0, 0.0);
+  // V: world up projected into the plane (world +z for a surface within about 25 degrees of
+  // horizontal), U = V x N.
+  const glm::dvec3 up = std::abs(n.y) < 0.9 ? glm::dvec3(0.0, 1.0, 0.0) : glm::dvec3(0.0, 0.0, 1.0);
   glm::dvec3 v = up - glm::dot(up, n) * n;
-  if (glm::length(v) < 0.1)
-  {
-    up = glm::dvec3(0.0, 0.0, 1.0);
-    v = up - glm::dot(up, n) * n;
-  }
   v = glm::normalize(v);
   const glm::dvec3 u = glm::cross(v, n);
   double uMin = std::numeric_limits<double>::max(), vMin = uMin;

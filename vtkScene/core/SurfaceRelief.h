@@ -55,8 +55,9 @@ struct DepthMap
  * The plane of a planar surface and the texture frame of the rule used when the surface has no
  * texture coordinates of its own: the depth image stretched once over the surface's bounding
  * rectangle in its plane, upright. V points along world +y projected into the plane (along +z
- * for a surface within about 6 degrees of horizontal), U = V x N, so that (U, V, N) is
- * right-handed and the image is seen unmirrored from the side the surface faces.
+ * when |N.y| >= 0.9, a surface within about 25 degrees of horizontal), U = V x N, so that
+ * (U, V, N) is right-handed and the image is seen unmirrored from the side the surface faces.
+ * `vlf render --relief` frames its reliefs by the same rule (application/VlfRelief.cxx).
  */
 struct SurfacePlane
 {

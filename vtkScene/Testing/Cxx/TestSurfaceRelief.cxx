@@ -242,6 +242,47 @@ TEST(SurfaceRelief, CornellBackWallClosedAndAreaKept)
   EXPECT_TRUE(check.Ok());
 }
 
+TEST(SurfaceRelief, PlaneRuleOnFloorAndTilt)
+{
+  // The floor faces +y: V is world +z projected (|N.y| >= 0.9), U = V x N = -x, the whole floor.
+  const TriangleScene box = mesolight::MakeCornellBox();
+  const mesolight::SurfacePlane floor =
+    mesolight::SurfacePlaneOf(box, mesolight::SurfaceTriangles(box, "floor"), "floor");
+  EXPECT_NEAR(floor.Normal.y, 1.0f, 1e-6f);
+  EXPECT_NEAR(glm::distance(glm::normalize(floor.AxisV), glm::vec3(0.0f, 0.0f, 1.0f)), 0.0f, 1e-6f);
+  EXPECT_NEAR(
+    glm::distance(glm::normalize(floor.AxisU), glm::vec3(-1.0f, 0.0f, 0.0f)), 0.0f, 1e-6f);
+  EXPECT_NEAR(glm::length(floor.AxisU), 552.8f, 1e-3f);
+  EXPECT_NEAR(glm::length(floor.AxisV), 559.2f, 1e-3f);
+  // Its corners map to the bounding rectangle's corners.
+  const glm::vec2 corner = floor.TextureCoordinate(glm::vec3(552.8f, 0.0f, 0.0f));
+  EXPECT_NEAR(corner.x, 0.0f, 1e-6f);
+  EXPECT_NEAR(corner.y, 0.0f, 1e-6f);
+  // A ramp 20 degrees from horizontal (|N.y| = 0.94) is framed like the floor; one 30 degrees
+  // from it (|N.y| = 0.87) like a wall, V up the slope.
+  for (const double degrees : { 20.0, 30.0 })
+  {
+    const float c = static_cast<float>(std::cos(degrees * 3.14159265358979 / 180.0));
+    const float s = static_cast<float>(std::sin(degrees * 3.14159265358979 / 180.0));
+    TriangleScene ramp;
+    ramp.AddPolygon(
+      { { 0.0f, 0.0f, 0.0f }, { 1.0f, 0.0f, 0.0f }, { 1.0f, s, -c }, { 0.0f, s, -c } },
+      ramp.AddMaterial({}));
+    const mesolight::SurfacePlane plane = mesolight::SurfacePlaneOf(ramp, { 0, 1 }, "ramp");
+    EXPECT_NEAR(plane.Normal.y, c, 1e-5f);
+    const glm::vec3 v = glm::normalize(plane.AxisV);
+    if (degrees < 25.0)
+    {
+      EXPECT_GT(v.z, 0.9f) << degrees;
+    }
+    else
+    {
+      EXPECT_GT(v.y, 0.4f) << degrees;
+      EXPECT_LT(v.z, 0.0f) << degrees;
+    }
+  }
+}
+
 TEST(SurfaceRelief, ConstantDepthSideWallsArea)
 {
   // A constant depth c sinks the whole panel by c K width; the side walls are the perimeter times
