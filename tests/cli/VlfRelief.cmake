@@ -1,0 +1,53 @@
+# SPDX-License-Identifier: BSD-3-Clause
+# `vlf render FIELD --relief SURFACE=DEPTH_IMAGE`: named surfaces of the field's scene drawn as
+# reliefs lit by the field (application/VlfRelief.h). A relief of depth 0 is the flat wall again:
+# the image's mean is the plain render's within 10% (the relief's direct light is integrated from
+# emitter samples, the field's from its lines); a relief with depth shows it (the mean moves, its
+# valleys are shadowed); --mode progressive draws the same; bad input gets clear errors.
+include("${CMAKE_CURRENT_LIST_DIR}/RunTool.cmake")
+cli_fresh_work()
+
+cli_run(TRUE vlf propagate --directions 129 --rays 16 --iterations 3 --out "${WORK}/box.vlf")
+# Depth images as ASCII PGM: all 0, and vertical grooves (every other 4 columns 255).
+set(_zero "P2\n8 8\n255\n")
+set(_grooves "P2\n8 8\n255\n")
+foreach (_row RANGE 7)
+  string(APPEND _zero "0 0 0 0 0 0 0 0\n")
+  string(APPEND _grooves "0 0 0 0 255 255 255 255\n")
+endforeach ()
+file(WRITE "${WORK}/zero.pgm" "${_zero}")
+file(WRITE "${WORK}/grooves.pgm" "${_grooves}")
+
+cli_run(TRUE vlf render "${WORK}/box.vlf" --size 48x48 --out "${WORK}/flat.png"
+  --exr "${WORK}/flat.exr")
+cli_run(TRUE vlf render "${WORK}/box.vlf" --size 48x48 --relief back=${WORK}/zero.pgm
+  --relief floor=${WORK}/zero.pgm --out "${WORK}/zero.png" --exr "${WORK}/zero.exr")
+cli_run(TRUE vlf render "${WORK}/box.vlf" --mode progressive --size 48x48
+  --relief back=${WORK}/grooves.pgm --relief floor=${WORK}/grooves.pgm --relief-depth-scale 0.1
+  --out "${WORK}/grooves.png" --exr "${WORK}/grooves.exr")
+exr_stat_milli("${WORK}/flat.exr" Avg _flat)
+exr_stat_milli("${WORK}/zero.exr" Avg _zero)
+exr_stat_milli("${WORK}/grooves.exr" Avg _grooves)
+message("mean red: flat ${_flat}/1000, relief of depth 0 ${_zero}/1000, grooves ${_grooves}/1000")
+math(EXPR _off "100 * (${_zero} - ${_flat})")
+math(EXPR _allowed "10 * ${_flat}")
+if (_off GREATER _allowed OR _off LESS -${_allowed})
+  message(FATAL_ERROR "a relief of depth 0 is not the flat wall within 10%")
+endif ()
+if (_grooves EQUAL _zero)
+  message(FATAL_ERROR "a relief with depth looks like the flat wall")
+endif ()
+
+# Bad input.
+cli_expect_error(2 "its surfaces are: floor, ceiling, back, left, right, light, short, tall"
+  vlf render "${WORK}/box.vlf" --relief wall=${WORK}/zero.pgm --out "${WORK}/never.png")
+cli_expect_error(2 "Cannot read image" vlf render "${WORK}/box.vlf"
+  --relief back=${WORK}/missing.png --out "${WORK}/never.png")
+cli_expect_error(2 "is not planar" vlf render "${WORK}/box.vlf" --relief tall=${WORK}/zero.pgm
+  --out "${WORK}/never.png")
+cli_expect_error(2 "give SURFACE=DEPTH_IMAGE" vlf render "${WORK}/box.vlf" --relief back
+  --out "${WORK}/never.png")
+cli_expect_error(2 "--relief draws with --mode progressive" vlf render "${WORK}/box.vlf"
+  --mode coherent --relief back=${WORK}/zero.pgm --out "${WORK}/never.png")
+cli_expect_error(2 "--out" vlf render "${WORK}/box.vlf" --relief back=${WORK}/zero.pgm
+  --out "${WORK}/zero.pgm" --force)
