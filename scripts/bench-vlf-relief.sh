@@ -1,17 +1,20 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: BSD-3-Clause
 # A relief lit by the light field, measured against the truth: the Cornell box with a relief on
-# its back wall, rendered
-#   - by the light field (`vlf render FIELD --relief back=DEPTH --exr`, the method),
-#   - by the path tracer on the dense displaced mesh of the same relief, same camera (`trace
-#     --scene cornell --relief back=DEPTH --exr`, the reference; twice, with other random paths,
-#     so the reference's own noise is printed beside the errors), with the relief's pixel mask,
-#   - and the two negative cases: the relief lit by the flat wall's field value, and by
-#     hand-placed VTK lights,
-# then `mesolight bench vlf-relief` prints the mean relative error per relief pixel of each, the
-# goal (<= 8% at 2049 directions, >= 2x better than both negatives) and the cost ratio of a
-# relief pixel lit by the field vs one lit by a VTK light with shadows, and appends the rows to
-# docs/measurements/vlf-relief/vlf-relief.csv with a plot per map.
+# its back wall, from one camera,
+#   - path traced on the dense displaced mesh of the relief (`trace --scene cornell --relief
+#     back=DEPTH --exr`, the reference), twice with other random paths so that the reference's
+#     own noise is printed beside the errors, with the relief's pixel mask (--relief-mask);
+#   - the flat wall path traced and drawn by the field without a relief, over the same pixels:
+#     the field's own error there, which the relief inherits;
+#   - `vlf render --relief back=DEPTH --exr` (the method as a user runs it);
+#   - `bench vlf-relief FIELD --relief ...`: the relief's pixels rendered in-process, on the same
+#     rays, lit by the field (the method), by the flat wall's field value and by one light of the
+#     lamp's power with shadows (the negative cases), each timed: the mean relative error per
+#     relief pixel against the reference, the goal (<= 8% at 2049 directions, >= 2x better than
+#     both negative cases) and the cost of a relief pixel lit by the field vs by one light.
+# Rows are appended to docs/measurements/relief-against-path-tracer/relief-against-path-tracer.csv
+# with a plot per map.
 #
 #   scripts/bench-vlf-relief.sh MESOLIGHT_BINARY OUTDIR
 #
@@ -19,13 +22,9 @@
 # is installed, its brick height map (wicked/highqualitybrickz.jpg, inverted to depth); skipped
 # when absent. Settings through the environment (defaults in brackets): DIRECTIONS [2049], RAYS
 # [32] (the field), SIZE [256] (square images), SAMPLES [1024] (paths per pixel of the
-# reference), DEPTH_SCALE [0.05], CAMERA [278,273,-800,278,273,0, the published Cornell camera],
-# FOV [39.3077], CSV_DIR [docs/measurements/vlf-relief under the source tree].
-#
-# The light-field side's options are those of `mesolight vlf render --relief`: FIELD_MODE
-# [unset: the command's default], FLAT_OPTION [--relief-lighting flat] for the first negative
-# case and VTK_LIGHTS_OPTION [--relief-lighting vtk-light] for the second; a step whose command
-# fails (e.g. an option that renderer does not have) is reported and left out of the comparison.
+# references), DEPTH_SCALE [0.05], CAMERA [278,273,-800,278,273,0, the published Cornell camera],
+# FOV [39.3077], CSV_DIR [docs/measurements/relief-against-path-tracer in the source tree].
+# References already in OUTDIR are reused (they are the slow part).
 set -u
 bin="$(realpath "$1")"
 out="$2"
@@ -38,11 +37,7 @@ samples="${SAMPLES:-1024}"
 scale="${DEPTH_SCALE:-0.05}"
 camera="${CAMERA:-278,273,-800,278,273,0}"
 fov="${FOV:-39.3077}"
-csv_dir="${CSV_DIR:-$source_dir/docs/measurements/vlf-relief}"
-flat_option="${FLAT_OPTION:---relief-lighting flat}"
-vtk_option="${VTK_LIGHTS_OPTION:---relief-lighting vtk-light}"
-mode_option=()
-if [ -n "${FIELD_MODE:-}" ]; then mode_option=(--mode "$FIELD_MODE"); fi
+csv_dir="${CSV_DIR:-$source_dir/docs/measurements/relief-against-path-tracer}"
 mkdir -p "$out/input" "$csv_dir"
 cd "$out"
 log() { echo "+ $*" >> commands.txt; }
@@ -54,7 +49,7 @@ timed() {
   start=$(date +%s.%N)
   if "$@" > "$name.log" 2>&1; then
     end=$(date +%s.%N)
-    echo "$end - $start" | bc -l
+    awk -v a="$start" -v b="$end" 'BEGIN { printf "%.2f\n", b - a }'
   else
     echo "step '$name' failed (see $out/$name.log):" >&2
     tail -3 "$name.log" >&2
@@ -113,45 +108,50 @@ for entry in "${maps[@]}"; do
   depth="${entry#*:}"
   relief=(--relief "back=$depth" --relief-depth-scale "$scale")
   echo "== $name"
-  t_ref=$(timed "$name-reference" "$bin" trace --scene cornell "${relief[@]}" "${view[@]}" \
-    --width "$size" --height "$size" --samples "$samples" --seed 1 --offscreen \
-    --out "$name-reference.png" --exr "$name-reference.exr" --relief-mask "$name-mask.exr")
-  t_ref2=$(timed "$name-reference-2" "$bin" trace --scene cornell "${relief[@]}" "${view[@]}" \
-    --width "$size" --height "$size" --samples "$samples" --seed 2 --offscreen \
-    --out "$name-reference-2.png" --exr "$name-reference-2.exr")
-  echo "reference: $t_ref s, second reference: $t_ref2 s ($samples paths per pixel)"
-  if [ "$t_ref" = FAILED ] || [ "$t_ref2" = FAILED ]; then status=1; continue; fi
-  images=()
-  times=()
-  # The method and the negative cases; each kept only if its renderer ran.
-  for variant in field flat vtk-light; do
-    extra=()
-    case $variant in
-      flat) read -r -a extra <<< "$flat_option" ;;
-      vtk-light) read -r -a extra <<< "$vtk_option" ;;
-    esac
-    t=$(timed "$name-$variant" "$bin" vlf render "$field" "${mode_option[@]}" "${relief[@]}" \
-      "${extra[@]}" "${view[@]}" --size "${size}x${size}" --out "$name-$variant.png" \
-      --exr "$name-$variant.exr" --force)
-    if [ "$t" != FAILED ]; then
-      images+=("$variant=$name-$variant.exr")
-      times+=("$variant=$t")
-    elif [ "$variant" = field ]; then
-      status=1
-    fi
-  done
-  if [ ${#images[@]} -eq 0 ]; then
-    echo "no light-field rendering of $name: only the reference and the mask were made"
-    continue
+  # References already in OUTDIR (same settings) are reused: they are the slow part.
+  if [ -f "$name-reference.exr" ] && [ -f "$name-reference-2.exr" ] && [ -f "$name-mask.exr" ]; then
+    echo "reusing $out/$name-reference*.exr and $name-mask.exr"
+  else
+    t_ref=$(timed "$name-reference" "$bin" trace --scene cornell "${relief[@]}" "${view[@]}" \
+      --width "$size" --height "$size" --samples "$samples" --seed 1 --offscreen \
+      --out "$name-reference.png" --exr "$name-reference.exr" --relief-mask "$name-mask.exr")
+    t_ref2=$(timed "$name-reference-2" "$bin" trace --scene cornell "${relief[@]}" "${view[@]}" \
+      --width "$size" --height "$size" --samples "$samples" --seed 2 --offscreen \
+      --out "$name-reference-2.png" --exr "$name-reference-2.exr")
+    echo "reference: $t_ref s, second reference: $t_ref2 s ($samples paths per pixel)"
+    if [ "$t_ref" = FAILED ] || [ "$t_ref2" = FAILED ]; then status=1; continue; fi
   fi
-  joined_images=$(IFS=,; echo "${images[*]}")
-  joined_times=$(IFS=,; echo "${times[*]}")
+  # The method as a user runs it: its frame time is the renderer's own figure.
+  t=$(timed "$name-field" "$bin" vlf render "$field" "${relief[@]}" "${view[@]}" \
+    --size "${size}x${size}" --out "$name-field.png" --exr "$name-field.exr" --force)
+  if [ "$t" = FAILED ]; then status=1; continue; fi
+  frame=$(sed -n 's/.*x[0-9]*, \([0-9.]*\) s, light field.*/\1/p' "$name-field.log")
+  echo "vlf render --relief: ${frame:-?} s per ${size}x${size} frame"
   log "$bin" bench vlf-relief ...
-  "$bin" bench vlf-relief --reference "$name-reference.exr" --reference-2 "$name-reference-2.exr" \
-    --mask "$name-mask.exr" --images "$joined_images" --times "$joined_times" \
-    --cost-pair field,vtk-light --label "cornell-back-$name-$directions" \
-    --csv "$csv_dir/vlf-relief.csv" --plot "$csv_dir/vlf-relief-$name.png" | tee "$name-bench.log"
+  "$bin" bench vlf-relief "$field" "${relief[@]}" "${view[@]}" \
+    --reference "$name-reference.exr" --reference-2 "$name-reference-2.exr" \
+    --mask "$name-mask.exr" --images "vlf-render=$name-field.exr" --times "vlf-render=${frame:-0}" \
+    --label "cornell-back-$name-$directions-$samples" --write-images "$name" \
+    --csv "$csv_dir/relief-against-path-tracer.csv" \
+    --plot "$csv_dir/relief-against-path-tracer-$name.png" | tee "$name-bench.log"
   [ "${PIPESTATUS[0]}" -eq 0 ] || status=1
 done
+# The field's own error on the flat wall (no relief) over the first map's relief pixels.
+first="${maps[0]%%:*}"
+if [ -f "$first-mask.exr" ]; then
+  if [ ! -f flat-reference.exr ]; then
+    timed flat-reference "$bin" trace --scene cornell "${view[@]}" --width "$size" \
+      --height "$size" --samples "$samples" --seed 1 --offscreen --out flat-reference.png \
+      --exr flat-reference.exr > /dev/null
+  fi
+  timed flat-field "$bin" vlf render "$field" "${view[@]}" --size "${size}x${size}" \
+    --out flat-field.png --exr flat-field.exr --force > /dev/null
+  if [ -f flat-reference.exr ] && [ -f flat-field.exr ]; then
+    echo "== the flat wall (no relief), over the $first relief's pixels"
+    "$bin" bench vlf-relief --reference flat-reference.exr --mask "$first-mask.exr" \
+      --images "flat-wall-field=flat-field.exr" --label "cornell-back-flat-$directions-$samples" \
+      --csv "$csv_dir/relief-against-path-tracer.csv" | tee flat-bench.log
+  fi
+fi
 echo "commands in $out/commands.txt"
 exit $status
