@@ -127,13 +127,15 @@ for entry in "${maps[@]}"; do
   if [ "$t" = FAILED ]; then status=1; continue; fi
   frame=$(sed -n 's/.*x[0-9]*, \([0-9.]*\) s, light field.*/\1/p' "$name-field.log")
   echo "vlf render --relief: ${frame:-?} s per ${size}x${size} frame"
-  log "$bin" bench vlf-relief ...
-  "$bin" bench vlf-relief "$field" "${relief[@]}" "${view[@]}" \
-    --reference "$name-reference.exr" --reference-2 "$name-reference-2.exr" \
-    --mask "$name-mask.exr" --images "vlf-render=$name-field.exr" --times "vlf-render=${frame:-0}" \
-    --label "cornell-back-$name-$directions-$samples" --write-images "$name" \
-    --csv "$csv_dir/relief-against-path-tracer.csv" \
-    --plot "$csv_dir/relief-against-path-tracer-$name.png" | tee "$name-bench.log"
+  bench=(bench vlf-relief "$field" "${relief[@]}" "${view[@]}"
+    --reference "$name-reference.exr" --reference-2 "$name-reference-2.exr"
+    --mask "$name-mask.exr" --images "vlf-render=$name-field.exr" --times "vlf-render=${frame:-0}"
+    --label "cornell-back-$name-$directions-$samples" --write-images "$name"
+    --csv "$csv_dir/relief-against-path-tracer.csv"
+    --plot "$csv_dir/relief-against-path-tracer-$name.png")
+  log "$bin" "${bench[@]}"
+  # Under scripts/xvfb.sh: the plot is drawn by VTK's charts, which need a display.
+  bash "$here/xvfb.sh" "$bin" "${bench[@]}" | tee "$name-bench.log"
   [ "${PIPESTATUS[0]}" -eq 0 ] || status=1
 done
 # The field's own error on the flat wall (no relief) over the first map's relief pixels.
@@ -148,9 +150,11 @@ if [ -f "$first-mask.exr" ]; then
     --out flat-field.png --exr flat-field.exr --force > /dev/null
   if [ -f flat-reference.exr ] && [ -f flat-field.exr ]; then
     echo "== the flat wall (no relief), over the $first relief's pixels"
-    "$bin" bench vlf-relief --reference flat-reference.exr --mask "$first-mask.exr" \
-      --images "flat-wall-field=flat-field.exr" --label "cornell-back-flat-$directions-$samples" \
-      --csv "$csv_dir/relief-against-path-tracer.csv" | tee flat-bench.log
+    bench=(bench vlf-relief --reference flat-reference.exr --mask "$first-mask.exr"
+      --images "flat-wall-field=flat-field.exr" --label "cornell-back-flat-$directions-$samples"
+      --csv "$csv_dir/relief-against-path-tracer.csv")
+    log "$bin" "${bench[@]}"
+    "$bin" "${bench[@]}" | tee flat-bench.log
   fi
 fi
 echo "commands in $out/commands.txt"
