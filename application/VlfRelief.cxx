@@ -33,8 +33,8 @@ std::string Quoted(const std::string& text)
 // The texture frame of a planar surface: from its texture coordinates when the scene has them
 // (one affine map of the plane), else from its plane (u along the plane's horizontal, v up it,
 // the bounding rectangle of its points mapped to [0, 1]^2).
-ReliefFrame SurfaceFrame(const TriangleScene& scene, const std::vector<std::size_t>& triangles,
-  const std::string& name)
+ReliefFrame SurfaceFrame(
+  const TriangleScene& scene, const std::vector<std::size_t>& triangles, const std::string& name)
 {
   glm::dvec3 normal(0.0);
   for (const std::size_t t : triangles)
@@ -55,8 +55,8 @@ ReliefFrame SurfaceFrame(const TriangleScene& scene, const std::vector<std::size
       off = std::max(off, std::abs(glm::dot(normal, glm::dvec3(scene.Vertex(t, c)) - p0)));
     }
   }
-  const bool tcoords = scene.TextureCoordinates.size() == scene.Positions.size() &&
-    !scene.TextureCoordinates.empty();
+  const bool tcoords =
+    scene.TextureCoordinates.size() == scene.Positions.size() && !scene.TextureCoordinates.empty();
   if (off > PlaneTolerance)
   {
     std::ostringstream message;
@@ -303,8 +303,8 @@ bool ReliefRadiance(
   {
     return false;
   }
-  radiance = relief.Emission +
-    relief.Albedo * glm::vec3((shade->Indirect + shade->Direct) / Pi<double>);
+  radiance =
+    relief.Emission + relief.Albedo * glm::vec3((shade->Indirect + shade->Direct) / Pi<double>);
   return true;
 }
 

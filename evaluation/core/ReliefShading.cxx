@@ -111,8 +111,7 @@ std::optional<ReliefShade> ShadeReliefRay(const HeightField& hf, const ReliefFra
   shade.Texture = hit->point;
   const double u = hit->point.x, v = hit->point.y, d = std::max(0.0, hit->point.z);
   shade.Point = frame.Point(u, v, d);
-  shade.Normal =
-    normal == ReliefNormal::Perturbed ? ReliefNormalAt(hf, frame, u, v) : frame.Normal;
+  shade.Normal = normal == ReliefNormal::Perturbed ? ReliefNormalAt(hf, frame, u, v) : frame.Normal;
   shade.Indirect = ProbeIrradiance(lighting, u, v, shade.Normal);
   const double w = frame.WorldDepth();
   for (const ReliefEmitterSample& e : lighting.Emitters)
@@ -138,7 +137,8 @@ std::optional<ReliefShade> ShadeReliefRay(const HeightField& hf, const ReliefFra
       continue;
     }
     // The rest of the scene, from where the ray to the light leaves the relief's slab.
-    if (lighting.SceneVisible && !lighting.SceneVisible(shade.Point + (d * w / rise) * l, e.Position))
+    if (lighting.SceneVisible &&
+      !lighting.SceneVisible(shade.Point + (d * w / rise) * l, e.Position))
     {
       continue;
     }

@@ -82,18 +82,20 @@ struct ReliefShade
 };
 
 /** The perturbed unit normal of the displaced surface at (u, v) (front side). */
-MESOLIGHTEVALUATION_EXPORT glm::dvec3 ReliefNormalAt(const HeightField& hf, const ReliefFrame& frame, double u, double v);
+MESOLIGHTEVALUATION_EXPORT glm::dvec3 ReliefNormalAt(
+  const HeightField& hf, const ReliefFrame& frame, double u, double v);
 
 /** The SH irradiance of the probes at (u, v) for unit normal n, clamped at 0. */
-MESOLIGHTEVALUATION_EXPORT glm::dvec3 ProbeIrradiance(const ReliefLighting& lighting, double u, double v, const glm::dvec3& n);
+MESOLIGHTEVALUATION_EXPORT glm::dvec3 ProbeIrradiance(
+  const ReliefLighting& lighting, double u, double v, const glm::dvec3& n);
 
 /**
  * The relief seen along the world ray origin + t dir: its first hit (exact, IntersectFirst) and
  * the irradiance there. nullopt when the ray does not reach the front of the macro plane.
  */
-MESOLIGHTEVALUATION_EXPORT std::optional<ReliefShade> ShadeReliefRay(const HeightField& hf, const ReliefFrame& frame,
-  const ReliefLighting& lighting, const glm::dvec3& origin, const glm::dvec3& dir,
-  ReliefNormal normal = ReliefNormal::Perturbed);
+MESOLIGHTEVALUATION_EXPORT std::optional<ReliefShade> ShadeReliefRay(const HeightField& hf,
+  const ReliefFrame& frame, const ReliefLighting& lighting, const glm::dvec3& origin,
+  const glm::dvec3& dir, ReliefNormal normal = ReliefNormal::Perturbed);
 
 } // namespace mesolight
 

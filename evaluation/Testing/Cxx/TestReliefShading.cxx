@@ -123,15 +123,14 @@ double WorstIndirectError(ReliefNormal normal, double* slope = nullptr)
     for (int x = 0; x < 24; ++x)
     {
       const glm::dvec3 target((x + 0.5) / 24.0, (y + 0.5) / 24.0, 0.0);
-      const auto shade = mesolight::ShadeReliefRay(
-        hf, frame, lighting, eye, glm::normalize(target - eye), normal);
+      const auto shade =
+        mesolight::ShadeReliefRay(hf, frame, lighting, eye, glm::normalize(target - eye), normal);
       if (!shade)
       {
         continue;
       }
       // The reference is always at the displaced surface's true normal.
-      const glm::dvec3 n =
-        mesolight::ReliefNormalAt(hf, frame, shade->Texture.x, shade->Texture.y);
+      const glm::dvec3 n = mesolight::ReliefNormalAt(hf, frame, shade->Texture.x, shade->Texture.y);
       steepest = std::max(steepest, std::acos(std::min(1.0, n.z)));
       const glm::dvec3 exact = ExactIrradiance(environment, n);
       const double sum = exact.x + exact.y + exact.z;
@@ -150,8 +149,8 @@ TEST(ReliefShading, ShIrradianceAtThePerturbedNormalMatchesExactIntegration)
 {
   double steepest = 0.0;
   const double error = WorstIndirectError(ReliefNormal::Perturbed, &steepest);
-  std::cout << "SH9 at the perturbed normal: worst relative error " << error
-            << " (steepest slope " << steepest * 180.0 / mesolight::Pi<double> << " degrees)\n";
+  std::cout << "SH9 at the perturbed normal: worst relative error " << error << " (steepest slope "
+            << steepest * 180.0 / mesolight::Pi<double> << " degrees)\n";
   EXPECT_GT(steepest, 0.5); // the relief has slopes steeper than about 30 degrees
   EXPECT_LT(error, 0.03);
 }
@@ -199,8 +198,8 @@ TEST(ReliefShading, DirectOnAFlatReliefIsThePointLightLaw)
   EXPECT_NEAR(shade->Point.z, 0.0, 1e-12);
   // The scene's visibility callback is asked, from the macro surface to the light.
   lighting.SceneVisible = [](const glm::dvec3&, const glm::dvec3&) { return false; };
-  EXPECT_EQ(mesolight::ShadeReliefRay(flat, frame, lighting, eye, glm::dvec3(-0.1, 0.05, -1.0))
-              ->Direct.x,
+  EXPECT_EQ(
+    mesolight::ShadeReliefRay(flat, frame, lighting, eye, glm::dvec3(-0.1, 0.05, -1.0))->Direct.x,
     0.0);
 }
 
