@@ -82,3 +82,12 @@ cli_expect(0 "wrote ${WORK}/room.exr" vlf render "${WORK}/room.vlf" --size 32x32
 cli_expect_error(2 "are not one affine map of its plane" vlf render "${WORK}/bent.vlf"
   --size 32x32 --camera 0.5,0.5,0.05,0.5,0.5,1 --relief back=${WORK}/grooves.pgm
   --out "${WORK}/never.png")
+
+# The committed mirror box names its surfaces too; its mirror wall is refused (reliefs are
+# diffuse), its back wall is drawn.
+cli_run(TRUE vlf propagate "${DATA}/cornell-box-mirror.obj" --directions 33 --rays 16
+  --iterations 2 --out "${WORK}/mirror.vlf")
+cli_expect_error(2 "is a mirror" vlf render "${WORK}/mirror.vlf" --size 16x16
+  --relief left=${WORK}/zero.pgm --out "${WORK}/never.png")
+cli_run(TRUE vlf render "${WORK}/mirror.vlf" --size 16x16 --relief back=${WORK}/grooves.pgm
+  --out "${WORK}/mirror.png")
