@@ -215,8 +215,8 @@ int Render(const std::vector<std::string>& args)
                 s != vlf::NoSurface && glm::dot(field->Surfaces()[s].Normal, ray.Direction) < 0.0f;
               const int relief = reliefOf[hit.Triangle];
               if (front && relief >= 0 &&
-                ReliefRadiance(reliefs[static_cast<std::size_t>(relief)], ray.Origin,
-                  ray.Direction, radiance))
+                ReliefRadiance(
+                  reliefs[static_cast<std::size_t>(relief)], ray.Origin, ray.Direction, radiance))
               {
                 // drawn by the relief
               }
@@ -298,7 +298,6 @@ int Render(const std::vector<std::string>& args)
 }
 
 } // namespace
-
 
 int RunVlfRender(const std::vector<std::string>& args)
 {

@@ -47,8 +47,8 @@ struct FieldRelief
 
 struct FieldReliefOptions
 {
-  double DepthScale = 0.05; // vtkReliefProperty's default
-  int Probes = 8;           // SH9 probes per side of the texture
+  double DepthScale = 0.05;      // vtkReliefProperty's default
+  int Probes = 8;                // SH9 probes per side of the texture
   int EmitterSamplesPerSide = 4; // per emitter triangle: n x n stratified samples
 };
 

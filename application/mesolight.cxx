@@ -102,7 +102,7 @@ const std::vector<mesolight::Command>& Commands()
         { "render", "FIELD --out IMAGE.png [--mode MODE]",
           "render a light field: its diffuse totals on the\nCPU, or through vtkLightFieldActor "
           "with "
-          "--mode",
+          "--mode;\nnamed surfaces as reliefs with --relief",
           RunVlfRender, {} },
         { "view", "FIELD [options]",
           "walk through a light field in a window\n(vtkLightFieldActor, four modes)",

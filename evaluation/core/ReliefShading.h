@@ -61,6 +61,11 @@ struct ReliefLighting
   int ProbesV = 1;
   std::vector<SH9> Probes;
   std::vector<ReliefEmitterSample> Emitters;
+  // The relief's own occlusion of the indirect light: the SH irradiance is scaled by the visible
+  // share of the SH radiance over this many fixed cosine-distributed directions around the
+  // normal, each marched through the height field (a valley sees less of the room than a crest).
+  // 0 leaves the indirect light unoccluded (the SH irradiance alone).
+  int OcclusionDirections = 32;
   // Optional: whether the segment from a point on the macro surface to an emitter sample is
   // free of the rest of the scene (true when not given).
   std::function<bool(const glm::dvec3& from, const glm::dvec3& to)> SceneVisible;
@@ -74,26 +79,33 @@ enum class ReliefNormal
 
 struct ReliefShade
 {
-  glm::dvec3 Texture{ 0.0 };  // (u, v, d) of the hit
-  glm::dvec3 Point{ 0.0 };    // world
-  glm::dvec3 Normal{ 0.0 };   // the shading normal (perturbed or flat)
-  glm::dvec3 Indirect{ 0.0 }; // irradiance from the SH probes at Normal, clamped at 0
-  glm::dvec3 Direct{ 0.0 };   // irradiance from the emitter samples, relief-shadowed
+  glm::dvec3 Texture{ 0.0 };    // (u, v, d) of the hit
+  glm::dvec3 Point{ 0.0 };      // world
+  glm::dvec3 Normal{ 0.0 };     // the shading normal (perturbed or flat)
+  glm::dvec3 Indirect{ 0.0 };   // irradiance from the SH probes at Normal, clamped at 0, occluded
+  double IndirectVisible = 1.0; // the visible share applied to it
+  glm::dvec3 Direct{ 0.0 };     // irradiance from the emitter samples, relief-shadowed
 };
 
 /** The perturbed unit normal of the displaced surface at (u, v) (front side). */
-MESOLIGHTEVALUATION_EXPORT glm::dvec3 ReliefNormalAt(const HeightField& hf, const ReliefFrame& frame, double u, double v);
+MESOLIGHTEVALUATION_EXPORT glm::dvec3 ReliefNormalAt(
+  const HeightField& hf, const ReliefFrame& frame, double u, double v);
+
+/** The SH radiance of the probes at (u, v) arriving from unit direction w, clamped at 0. */
+MESOLIGHTEVALUATION_EXPORT glm::dvec3 ProbeRadiance(
+  const ReliefLighting& lighting, double u, double v, const glm::dvec3& w);
 
 /** The SH irradiance of the probes at (u, v) for unit normal n, clamped at 0. */
-MESOLIGHTEVALUATION_EXPORT glm::dvec3 ProbeIrradiance(const ReliefLighting& lighting, double u, double v, const glm::dvec3& n);
+MESOLIGHTEVALUATION_EXPORT glm::dvec3 ProbeIrradiance(
+  const ReliefLighting& lighting, double u, double v, const glm::dvec3& n);
 
 /**
  * The relief seen along the world ray origin + t dir: its first hit (exact, IntersectFirst) and
  * the irradiance there. nullopt when the ray does not reach the front of the macro plane.
  */
-MESOLIGHTEVALUATION_EXPORT std::optional<ReliefShade> ShadeReliefRay(const HeightField& hf, const ReliefFrame& frame,
-  const ReliefLighting& lighting, const glm::dvec3& origin, const glm::dvec3& dir,
-  ReliefNormal normal = ReliefNormal::Perturbed);
+MESOLIGHTEVALUATION_EXPORT std::optional<ReliefShade> ShadeReliefRay(const HeightField& hf,
+  const ReliefFrame& frame, const ReliefLighting& lighting, const glm::dvec3& origin,
+  const glm::dvec3& dir, ReliefNormal normal = ReliefNormal::Perturbed);
 
 } // namespace mesolight
 

@@ -51,3 +51,43 @@ cli_expect_error(2 "--relief draws with --mode progressive" vlf render "${WORK}/
   --mode coherent --relief back=${WORK}/zero.pgm --out "${WORK}/never.png")
 cli_expect_error(2 "--out" vlf render "${WORK}/box.vlf" --relief back=${WORK}/zero.pgm
   --out "${WORK}/zero.pgm" --force)
+
+# A scene of its own (OBJ with `g` names and texture coordinates): the back wall's `vt` give the
+# relief's texture frame; texture coordinates that are not one affine map of the plane are refused.
+function (write_room path back_vt)
+  file(WRITE "${WORK}/room.mtl" "newmtl white\nKd 0.7 0.7 0.7\nnewmtl lamp\nKd 0.5 0.5 0.5\nKe 10 10 10\n")
+  file(WRITE "${path}" "mtllib room.mtl\n"
+    "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
+    "v 0.4 0.99 0.4\nv 0.6 0.99 0.4\nv 0.6 0.99 0.6\nv 0.4 0.99 0.6\n"
+    "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n${back_vt}"
+    "usemtl white\n"
+    "g floor\nf 1/1 5/2 6/3 2/4\n"
+    "g ceiling\nf 4/1 3/2 7/3 8/4\n"
+    "g back\nf 5/5 8/6 7/7 6/8\n"
+    "g front\nf 1/1 2/2 3/3 4/4\n"
+    "g left\nf 1/1 4/2 8/3 5/4\n"
+    "g right\nf 2/1 6/2 7/3 3/4\n"
+    "usemtl lamp\ng lamp\nf 9/1 10/2 11/3 12/4\n")
+endfunction ()
+# Back wall vertices 5 (0,0,1), 8 (0,1,1), 7 (1,1,1), 6 (1,0,1): vt = (x, y) is affine.
+write_room("${WORK}/room.obj" "vt 0 0\nvt 0 1\nvt 1 1\nvt 1 0\n")
+write_room("${WORK}/bent.obj" "vt 0 0\nvt 0 1\nvt 1 1\nvt 1 0.5\n")
+foreach (_room IN ITEMS room bent)
+  cli_run(TRUE vlf propagate "${WORK}/${_room}.obj" --directions 33 --rays 16 --iterations 2
+    --out "${WORK}/${_room}.vlf")
+endforeach ()
+cli_expect(0 "wrote ${WORK}/room.exr" vlf render "${WORK}/room.vlf" --size 32x32
+  --camera 0.5,0.5,0.05,0.5,0.5,1 --relief back=${WORK}/grooves.pgm --out "${WORK}/room.png"
+  --exr "${WORK}/room.exr")
+cli_expect_error(2 "are not one affine map of its plane" vlf render "${WORK}/bent.vlf"
+  --size 32x32 --camera 0.5,0.5,0.05,0.5,0.5,1 --relief back=${WORK}/grooves.pgm
+  --out "${WORK}/never.png")
+
+# The committed mirror box names its surfaces too; its mirror wall is refused (reliefs are
+# diffuse), its back wall is drawn.
+cli_run(TRUE vlf propagate "${DATA}/cornell-box-mirror.obj" --directions 33 --rays 16
+  --iterations 2 --out "${WORK}/mirror.vlf")
+cli_expect_error(2 "is a mirror" vlf render "${WORK}/mirror.vlf" --size 16x16
+  --relief left=${WORK}/zero.pgm --out "${WORK}/never.png")
+cli_run(TRUE vlf render "${WORK}/mirror.vlf" --size 16x16 --relief back=${WORK}/grooves.pgm
+  --out "${WORK}/mirror.png")

@@ -496,14 +496,13 @@ ObjSceneRead ParseObjScene(std::istream& obj, const std::string& name, const std
       {
         surface += (k > 1 ? " " : "") + tokens[k];
       }
-      currentSurface =
-        surface.empty() ? TriangleScene::NoSurface : read.Scene.AddSurface(surface);
+      currentSurface = surface.empty() ? TriangleScene::NoSurface : read.Scene.AddSurface(surface);
       anySurface = anySurface || !surface.empty();
       ++recognised;
     }
-    else if (key == "s" || key == "vp" || key == "mg" ||
-      key == "usemap" || key == "maplib" || key == "bevel" || key == "shadow_obj" ||
-      key == "trace_obj" || key == "lod" || key == "c_interp" || key == "d_interp")
+    else if (key == "s" || key == "vp" || key == "mg" || key == "usemap" || key == "maplib" ||
+      key == "bevel" || key == "shadow_obj" || key == "trace_obj" || key == "lod" ||
+      key == "c_interp" || key == "d_interp")
     {
       ++recognised;
     }

@@ -156,9 +156,8 @@ std::vector<std::size_t> SurfaceTriangles(const TriangleScene& scene, const std:
   }
   if (triangles.empty())
   {
-    throw SceneSurfaceError("the scene has no surface named '" + name +
-      "'; its surfaces are: " + SurfaceNameList(scene) +
-      " (OBJ files name surfaces with `g` or `o` statements)");
+    throw SceneSurfaceError("the scene has no surface named '" + name + "'; its surfaces are: " +
+      SurfaceNameList(scene) + " (OBJ files name surfaces with `g` or `o` statements)");
   }
   return triangles;
 }

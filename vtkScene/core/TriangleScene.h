@@ -137,9 +137,9 @@ float NormalizeToUnitSphere(TriangleScene& scene);
 // The Cornell box as published by the Cornell Program of Computer Graphics
 // (https://www.graphics.cornell.edu/online/box/data.html): floor, ceiling, back, red left and
 // green right walls, a short and a tall block, the ceiling light; surfaces named `floor`,
-// `ceiling`, `back`, `left` (red), `right` (green), `short`, `tall` and `light`. Millimetres, y up, camera at
-// (278, 273, -800) looking along +z with a 39.3 degree field of view (35 mm focal length on a
-// 25 mm film). The published reflectance spectra are given as the RGB values commonly used by
+// `ceiling`, `back`, `left` (red), `right` (green), `short`, `tall` and `light`. Millimetres, y up,
+// camera at (278, 273, -800) looking along +z with a 39.3 degree field of view (35 mm focal length
+// on a 25 mm film). The published reflectance spectra are given as the RGB values commonly used by
 // renderers (white 0.725/0.71/0.68, red 0.63/0.065/0.05, green 0.14/0.45/0.091; light radiance
 // 17/12/4). The light quad sits 0.1 mm below the ceiling so the two never coincide. All faces
 // point into the room (blocks: outward).

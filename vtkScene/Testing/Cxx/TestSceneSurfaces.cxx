@@ -140,8 +140,8 @@ TEST(SceneSurfaces, RemovingDegenerateTrianglesKeepsTheNames)
 TEST(SceneSurfaces, ObjGroupsAndObjectsNameSurfaces)
 {
   std::istringstream obj("v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"
-                         "f 1 2 3\n"          // before any name: unnamed
-                         "o crate\nf 1 3 4\n" // object name
+                         "f 1 2 3\n"                // before any name: unnamed
+                         "o crate\nf 1 3 4\n"       // object name
                          "g wall left\nf 1 2 3 4\n" // several groups: joined
                          "g\nf 2 3 4\n"             // bare g: unnamed again
                          "g crate\nf 1 2 4\n");     // a name met again: the same surface

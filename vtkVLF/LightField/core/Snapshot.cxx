@@ -751,8 +751,7 @@ std::unique_ptr<LightField> ReadSnapshot(const std::string& path, std::uint64_t 
   }
   if (!ok)
   {
-    throw SnapshotError(
-      Quoted(path) + " holds negative radiance: it is not a usable light field");
+    throw SnapshotError(Quoted(path) + " holds negative radiance: it is not a usable light field");
   }
   return field;
 }

@@ -6,9 +6,9 @@
 // mark, payload size, payload checksum, header checksum -- then the payload: settings,
 // iterations done, the (unit-sphere) scene with its materials, the diffuse textures, the energy
 // log and every subfield's tile lists and maps; since version 2 the scene's surface names
-// (TriangleScene::SurfaceNames, SurfaceIds) after the maps. Version 1 files still read (unnamed). Surfaces and directions are rebuilt from the
-// scene and settings on reading. The checksum is a 64-bit multiply-xorshift hash of the payload
-// words.
+// (TriangleScene::SurfaceNames, SurfaceIds) after the maps. Version 1 files still read (unnamed).
+// Surfaces and directions are rebuilt from the scene and settings on reading. The checksum is a
+// 64-bit multiply-xorshift hash of the payload words.
 //
 // Writing goes to "<path>.tmp-<pid>" in the same directory, is flushed to disk (fsync), then
 // renamed over <path>: a kill at any moment leaves either the previous snapshot or the new one.

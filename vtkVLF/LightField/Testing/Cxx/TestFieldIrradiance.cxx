@@ -102,7 +102,8 @@ TEST(FieldIrradiance, Sh9MatchesExactIntegrationOfTheIndirectField)
               << " of the largest irradiance " << largest << "\n";
     EXPECT_GT(largest, 0.1f) << name;
     // The indirect light of a diffuse room is smooth: SH9 keeps it within a few percent
-    // (Ramamoorthi and Hanrahan: under 3% on average for typical lighting); measured here: 1.4-1.8%.
+    // (Ramamoorthi and Hanrahan: under 3% on average for typical lighting); measured
+    // here: 1.4-1.8%.
     EXPECT_LT(worst / largest, 0.03f) << name;
   }
 }
