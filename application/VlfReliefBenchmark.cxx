@@ -68,8 +68,9 @@ struct ReliefRay
 //  - one-light: one light where the lamp is, of the lamp's power, with the relief's
 //    self-shadowing and the scene's occlusion, no indirect light (a hand-placed VTK light with
 //    shadows);
-//  - flat-normal: the field's lighting at the wall's normal instead of the relief's (shown, not
-//    required to lose by the margin).
+//  - field-unoccluded: the method without the relief's occlusion of its indirect light, and
+//    flat-normal: the field's lighting at the wall's normal instead of the relief's (both shown,
+//    not required to lose by the margin).
 struct InProcess
 {
   std::vector<Row> Rows;
@@ -122,7 +123,8 @@ InProcess RenderInProcess(
 
   // The one light: the emitters' area-weighted centre, their power, facing as they face.
   FieldRelief oneLight = relief;
-  oneLight.Lighting.Probes.clear(); // no indirect light
+  oneLight.Lighting.Probes.clear();          // no indirect light,
+  oneLight.Lighting.OcclusionDirections = 0; // so nothing to occlude
   {
     ReliefEmitterSample lamp;
     glm::dvec3 centre(0.0), normal(0.0), power(0.0);
@@ -239,6 +241,15 @@ InProcess RenderInProcess(
     {
       glm::vec3 radiance;
       return ReliefRadiance(oneLight, r.Origin, r.Direction, radiance) ? radiance : glm::vec3(0.0f);
+    });
+  // The method without the relief's occlusion of its indirect light (shown).
+  FieldRelief unoccluded = relief;
+  unoccluded.Lighting.OcclusionDirections = 0;
+  render("field-unoccluded", false,
+    [&](const ReliefRay& r)
+    {
+      glm::vec3 radiance;
+      return ReliefRadiance(unoccluded, r.Origin, r.Direction, radiance) ? radiance : flatWall(r);
     });
   render("flat-normal", false,
     [&](const ReliefRay& r)

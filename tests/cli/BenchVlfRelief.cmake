@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: BSD-3-Clause
 # `mesolight bench vlf-relief`: a relief lit by a small light field against the path-traced dense
 # mesh of the same relief (`trace --relief ... --relief-mask`), end to end at small sizes. The
-# run prints the relief's pixel count, the four renderings' errors and the cost ratio, and
+# run prints the relief's pixel count, the five renderings' errors and the cost ratio, and
 # writes one CSV row per rendering; the negative case without indirect light (one-light) must
 # be worse than the field even at these settings (the comparison can fail); bad input is refused.
 include("${CMAKE_CURRENT_LIST_DIR}/RunTool.cmake")
@@ -35,8 +35,8 @@ if (NOT cli_stdout MATCHES "cost: a relief pixel lit by the field / by one light
 endif ()
 file(STRINGS "${WORK}/rows.csv" _rows)
 list(LENGTH _rows _count)
-if (NOT _count EQUAL 5)
-  message(FATAL_ERROR "expected a header and 4 rows in rows.csv, got ${_count}: ${_rows}")
+if (NOT _count EQUAL 6)
+  message(FATAL_ERROR "expected a header and 5 rows in rows.csv, got ${_count}: ${_rows}")
 endif ()
 # mean_relative_error (4th column) of field and one-light, in thousandths.
 foreach (_row IN LISTS _rows)

@@ -173,7 +173,7 @@ g far\nf 5 8 7 6
     --relief "window=${WORK}/depth.png" ${_never})
   cli_expect_error(1 "is not planar" trace --scene "${WORK}/relief.obj"
     --relief "box=${WORK}/depth.png" ${_never})
-  cli_expect_error(1 "is not planar" trace --scene cornell --relief "left=${WORK}/depth.png"
+  cli_expect_error(1 "is not planar" trace --scene cornell --relief "tall=${WORK}/depth.png"
     ${_never})
   cli_expect_error(1 "takes SURFACE=DEPTH_IMAGE" trace --scene cornell --relief back ${_never})
   cli_expect_error(1 "missing.png" trace --scene cornell --relief "back=${WORK}/missing.png"

@@ -87,7 +87,7 @@ SurfacePlane SurfacePlaneOf(const TriangleMesh& mesh, const std::vector<std::siz
   {
     const glm::dvec3 face(mesh.FaceNormal(t));
     const double faceLength = glm::length(face);
-    if (faceLength > 0.0 && glm::dot(face / faceLength, n) < 0.9999)
+    if (faceLength > 0.0 && glm::dot(face / faceLength, n) < 0.5)
     {
       std::ostringstream message;
       message << name << " is not planar: triangle " << t
