@@ -553,7 +553,8 @@ int RunVlfReliefBenchmark(const std::vector<std::string>& args)
               << std::setprecision(2) << costRatio << " (same run, same rays; goal <= " << costGoal
               << ")\n";
   }
-  std::cout << (pass ? "PASS" : "FAIL") << ": " << rows[0].Name << " within " << goal
+  std::cout << std::defaultfloat << std::setprecision(6) << (pass ? "PASS" : "FAIL") << ": "
+            << rows[0].Name << " within " << goal
             << " mean relative error and every negative case at least " << margin << "x worse\n";
   if (inProcess && cl.Has("--write-images"))
   {
