@@ -10,6 +10,7 @@
 #include "LightFieldViewCommand.h"
 #include "OutputFile.h"
 #include "Timing.h"
+#include "VlfRelief.h"
 
 #include "EmbreeScene.h"
 #include "LightField.h"
@@ -99,6 +100,12 @@ int Render(const std::vector<std::string>& args)
     "Cornell camera (e.g. Blender Cycles)");
   cl.AddValue("--tolerance", "X", "relative tolerance of --compare-exr", "0.1");
   cl.AddFlag("--force", "replace an existing IMAGE.png");
+  cl.AddValue("--relief", "SURFACE=DEPTH_IMAGE",
+    "repeatable: draw the named surface of the field's scene as a relief (depth image, 0 = top, "
+    "1 = deepest) lit per pixel by the field: indirect light as SH9 at the relief's perturbed "
+    "normal, direct light from the field's emitters with the relief's self-shadowing");
+  cl.AddValue("--relief-depth-scale", "K",
+    "world depth of depth 1 over the world width of the relief's texture", "0.05");
   std::string error;
   int exitCode = 0;
   if (!cl.ParseArguments(args, exitCode))
@@ -111,8 +118,16 @@ int Render(const std::vector<std::string>& args)
   }
   const std::string out = cl.Get("--out");
   // Each output checked against the inputs and the other output, the message naming its option.
-  const std::string problem =
-    CheckOutputOptions(cl, { "--out", "--exr" }, { cl.Positional()[0], cl.Get("--compare-exr") });
+  std::vector<std::string> inputs{ cl.Positional()[0], cl.Get("--compare-exr") };
+  for (const std::string& item : cl.GetAll("--relief"))
+  {
+    const std::size_t equals = item.find('=');
+    if (equals != std::string::npos)
+    {
+      inputs.push_back(item.substr(equals + 1));
+    }
+  }
+  const std::string problem = CheckOutputOptions(cl, { "--out", "--exr" }, inputs);
   if (!problem.empty())
   {
     return cl.UsageError(problem);
@@ -128,9 +143,11 @@ int Render(const std::vector<std::string>& args)
     return cl.UsageError(error);
   }
   double viewAngle = 0.0, exposure = 0.0, tolerance = 0.1;
+  FieldReliefOptions reliefOptions;
   if (!ReadViewAngle(cl, viewAngle, error) ||
     !cl.GetDouble("--exposure", 0.0, 1e9, exposure, error) ||
-    !cl.GetDouble("--tolerance", 0.0, 10.0, tolerance, error))
+    !cl.GetDouble("--tolerance", 0.0, 10.0, tolerance, error) ||
+    !cl.GetDouble("--relief-depth-scale", 0.0, 10.0, reliefOptions.DepthScale, error))
   {
     return cl.UsageError(error);
   }
@@ -159,6 +176,17 @@ int Render(const std::vector<std::string>& args)
 
     const EmbreeScene embree(unit);
     const vlf::Lookup lookup(*field);
+    std::vector<FieldRelief> reliefs;
+    try
+    {
+      reliefs = SetUpFieldReliefs(*field, embree, cl.GetAll("--relief"), reliefOptions);
+    }
+    catch (const ReliefSetupError& e)
+    {
+      std::cerr << "mesolight vlf render: " << e.what() << "\n";
+      return 2;
+    }
+    const std::vector<int> reliefOf = ReliefOfTriangle(*field, reliefs);
     std::vector<unsigned char> pixels(static_cast<std::size_t>(width) * height * 3);
     RgbImage linear(width, height);
     // Exposure, clamp and sRGB: the light field actor's default display (vtkLightFieldActor).
@@ -185,7 +213,14 @@ int Render(const std::vector<std::string>& args)
               const SceneMaterial& m = unit.MaterialOf(hit.Triangle);
               const bool front =
                 s != vlf::NoSurface && glm::dot(field->Surfaces()[s].Normal, ray.Direction) < 0.0f;
-              if (front)
+              const int relief = reliefOf[hit.Triangle];
+              if (front && relief >= 0 &&
+                ReliefRadiance(
+                  reliefs[static_cast<std::size_t>(relief)], ray.Origin, ray.Direction, radiance))
+              {
+                // drawn by the relief
+              }
+              else if (front)
               {
                 radiance = glm::length(m.Specular) > 0.0f
                   ? lookup.RadianceLeaving(s, p, -ray.Direction)
@@ -264,11 +299,28 @@ int Render(const std::vector<std::string>& args)
 
 } // namespace
 
-
 int RunVlfRender(const std::vector<std::string>& args)
 {
+  // Relief surfaces are drawn by this CPU renderer (the walkthrough's GL relief is not built
+  // yet): it shows the progressive mode's diffuse totals, so --mode progressive is accepted.
+  const auto mode = std::find(args.begin(), args.end(), "--mode");
+  const bool relief = std::any_of(args.begin(), args.end(),
+    [](const std::string& a) { return a == "--relief" || a.rfind("--relief=", 0) == 0; });
+  if (relief && mode != args.end())
+  {
+    if (mode + 1 == args.end() || *(mode + 1) != "progressive")
+    {
+      std::cerr << "mesolight vlf render: --relief draws with --mode progressive (or no --mode) "
+                   "so far, not --mode "
+                << (mode + 1 == args.end() ? std::string("(none)") : *(mode + 1)) << "\n";
+      return 2;
+    }
+    std::vector<std::string> rest(args.begin(), mode);
+    rest.insert(rest.end(), mode + 2, args.end());
+    return Render(rest);
+  }
   // With --mode the image goes through vtkLightFieldActor; without, this CPU reference renders it.
-  if (std::find(args.begin(), args.end(), "--mode") != args.end())
+  if (mode != args.end())
   {
     return RunLightFieldRender(args);
   }

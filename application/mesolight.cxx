@@ -20,6 +20,7 @@
 #include "TraceCommand.h"
 #include "VTKMessage.h"
 #include "VlfCommand.h"
+#include "VlfReliefBenchmark.h"
 #include "WalkthroughBenchmark.h"
 
 #include <vtkLogger.h>
@@ -101,7 +102,7 @@ const std::vector<mesolight::Command>& Commands()
         { "render", "FIELD --out IMAGE.png [--mode MODE]",
           "render a light field: its diffuse totals on the\nCPU, or through vtkLightFieldActor "
           "with "
-          "--mode",
+          "--mode;\nnamed surfaces as reliefs with --relief",
           RunVlfRender, {} },
         { "view", "FIELD [options]",
           "walk through a light field in a window\n(vtkLightFieldActor, four modes)",
@@ -124,6 +125,9 @@ const std::vector<mesolight::Command>& Commands()
         { "trace", "[options]", "rays/s (coherent vs incoherent), path samples/s",
           RunTraceBenchmark, {} },
         { "vlf", "[options]", "light field time, memory and accuracy sweep", RunVlfBenchmark, {} },
+        { "vlf-relief", "--reference REF.exr --mask M.exr --images ..",
+          "a relief lit by the light field vs the path-traced\ndense mesh; negative cases, cost",
+          RunVlfReliefBenchmark, {} },
         { "walkthrough", "[FIELD] [options]",
           "light field walkthrough: frame time per mode and\nstage (vtkLightFieldActor)",
           RunWalkthroughBenchmark, {} },

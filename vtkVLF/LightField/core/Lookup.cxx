@@ -3,6 +3,7 @@
 
 #include "MathConstants.h"
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include <cmath>
@@ -116,7 +117,7 @@ glm::vec3 Lookup::RadianceLeaving(std::uint32_t surface, const glm::vec3& p, con
 }
 
 glm::vec3 Lookup::IncidentRadiance(std::size_t k, int sense, const glm::vec3& p,
-  CellInterpolation cells, std::uint32_t ignore, bool occlusion) const
+  CellInterpolation cells, std::uint32_t ignore, bool occlusion, bool emission) const
 {
   int is[4], js[4];
   float ws[4];
@@ -162,6 +163,10 @@ glm::vec3 Lookup::IncidentRadiance(std::size_t k, int sense, const glm::vec3& p,
       const Crossing& sender = *segment.Sender;
       const glm::vec3 x = this->Field.PointOnLine(k, is[q], js[q], sender.Depth);
       radiance = this->CellRadiance(k, sender.Surface, sender.Cell, x);
+      if (!emission)
+      {
+        radiance = glm::max(radiance - this->Field.MaterialOf(sender.Surface).Emission, 0.0f);
+      }
     }
     blend.Add(ws[q], radiance, segment.Open);
   }

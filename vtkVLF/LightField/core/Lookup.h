@@ -164,10 +164,12 @@ public:
 
   // Radiance arriving at p along subfield k's lines from the side `sense` (+1: from greater
   // depth, i.e. from p + t d_k), ignoring crossings of `ignore` (the surface p lies on).
-  // occlusion false: see GatherOptions::SceneOcclusion (negative tests only).
+  // occlusion false: see GatherOptions::SceneOcclusion (negative tests only). emission false:
+  // the sender's own emitted radiance (its material's Ke) is left out, so only light it reflects
+  // arrives -- the indirect part, for a caller that integrates the emitters itself.
   glm::vec3 IncidentRadiance(std::size_t k, int sense, const glm::vec3& p,
     CellInterpolation cells = CellInterpolation::Bilinear, std::uint32_t ignore = NoSurface,
-    bool occlusion = true) const;
+    bool occlusion = true, bool emission = true) const;
 
   // Irradiance at p with unit normal n (see above). `ignore` as for IncidentRadiance. On a
   // distributed field (Distribution.h) the sum covers this rank's directions only, normalised

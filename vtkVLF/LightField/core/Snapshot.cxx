@@ -321,6 +321,13 @@ void WritePayload(Writer& w, const LightField& field,
     w.Array(f.Radiance);
     w.Array(f.UnshotSpecular);
   }
+  // Version 2: the surface names, last so a version 1 payload is a prefix of the layout.
+  w.Array(scene.SurfaceIds);
+  w.Value(static_cast<std::uint64_t>(scene.SurfaceNames.size()));
+  for (const std::string& name : scene.SurfaceNames)
+  {
+    w.String(name);
+  }
 }
 } // namespace
 
@@ -505,10 +512,11 @@ std::unique_ptr<LightField> ReadSnapshot(const std::string& path, std::uint64_t 
   {
     throw SnapshotError(Quoted(path) + " was written on a machine of the other byte order");
   }
-  if (header.Version != SnapshotVersion)
+  if (header.Version < OldestSnapshotVersion || header.Version > SnapshotVersion)
   {
     throw SnapshotError(Quoted(path) + " is snapshot version " + std::to_string(header.Version) +
-      "; this build reads version " + std::to_string(SnapshotVersion));
+      "; this build reads versions " + std::to_string(OldestSnapshotVersion) + " to " +
+      std::to_string(SnapshotVersion));
   }
   struct stat info;
   if (::fstat(::fileno(file), &info) != 0)
@@ -677,6 +685,31 @@ std::unique_ptr<LightField> ReadSnapshot(const std::string& path, std::uint64_t 
     r.Array(
       f.UnshotSpecular, "unshot specular cells", field->HasSpecular() ? entries * cellsPerMap : 0);
   }
+  if (header.Version >= 2)
+  {
+    TriangleScene& named = field->NormalizedScene;
+    const std::uint64_t ids = r.Count(sizeof(std::uint32_t), "surface id");
+    if (ids != 0 && ids != named.Triangles.size())
+    {
+      r.Fail("it holds " + std::to_string(ids) + " surface ids for " +
+        std::to_string(named.Triangles.size()) + " triangles");
+    }
+    named.SurfaceIds.resize(ids);
+    r.Bytes(named.SurfaceIds.data(), ids * sizeof(std::uint32_t));
+    const std::uint64_t names = r.Count(8, "surface name");
+    named.SurfaceNames.clear();
+    for (std::uint64_t q = 0; q < names; ++q)
+    {
+      named.SurfaceNames.push_back(r.String("surface name"));
+    }
+    for (const std::uint32_t id : named.SurfaceIds)
+    {
+      if (id != TriangleScene::NoSurface && id >= names)
+      {
+        r.Fail("a triangle refers to a missing surface name");
+      }
+    }
+  }
   if (r.BytesLeft() != 0)
   {
     r.Fail(std::to_string(r.BytesLeft()) + " bytes are left over after its contents");
@@ -718,8 +751,7 @@ std::unique_ptr<LightField> ReadSnapshot(const std::string& path, std::uint64_t 
   }
   if (!ok)
   {
-    throw SnapshotError(
-      Quoted(path) + " holds negative radiance: it is not a usable light field");
+    throw SnapshotError(Quoted(path) + " holds negative radiance: it is not a usable light field");
   }
   return field;
 }

@@ -5,9 +5,10 @@
 // Format (little-endian, version 1): a 48-byte header -- magic "MLVLFSNP", version, byte-order
 // mark, payload size, payload checksum, header checksum -- then the payload: settings,
 // iterations done, the (unit-sphere) scene with its materials, the diffuse textures, the energy
-// log and every subfield's tile lists and maps. Surfaces and directions are rebuilt from the
-// scene and settings on reading. The checksum is a 64-bit multiply-xorshift hash of the payload
-// words.
+// log and every subfield's tile lists and maps; since version 2 the scene's surface names
+// (TriangleScene::SurfaceNames, SurfaceIds) after the maps. Version 1 files still read (unnamed).
+// Surfaces and directions are rebuilt from the scene and settings on reading. The checksum is a
+// 64-bit multiply-xorshift hash of the payload words.
 //
 // Writing goes to "<path>.tmp-<pid>" in the same directory, is flushed to disk (fsync), then
 // renamed over <path>: a kill at any moment leaves either the previous snapshot or the new one.
@@ -35,7 +36,8 @@ public:
   using std::runtime_error::runtime_error;
 };
 
-constexpr std::uint32_t SnapshotVersion = 1;
+constexpr std::uint32_t SnapshotVersion = 2;
+constexpr std::uint32_t OldestSnapshotVersion = 1; // still read
 
 // Writes atomically (see above). Throws SnapshotError when the file cannot be written (the
 // previous file, if any, is left untouched).
