@@ -117,8 +117,8 @@ int vtkLightFieldGatherFilter::RequestUpdateExtent(
   }
   if (vtkInformation* field = inputVector[1]->GetInformationObject(0))
   {
-    // The piece the field's own display asks for: the field is made once, on rank 0
-    // (vtkVirtualLightField propagates for piece 0 only), and not made again for this filter.
+    // The piece the field's own display asks for: the field is made once (all ranks together,
+    // or on rank 0 with DistributeDirections off) and not made again for this filter.
     field->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(),
       out->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()));
     field->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(),
@@ -278,7 +278,8 @@ int vtkLightFieldGatherFilter::RequestData(
     return 0;
   }
   output->ShallowCopy(input);
-  // First, on every rank: the field (broadcast from rank 0 under MPI, a collective step).
+  // First, on every rank: the field (under MPI a collective step: each rank's share of a
+  // distributed field, or rank 0's whole field broadcast).
   this->FieldDistributed = false;
   const vlf::LightField* field = AcquireField(this->GetInputAlgorithm(1, 0));
   if (field)

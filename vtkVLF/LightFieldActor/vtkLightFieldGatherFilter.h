@@ -114,8 +114,8 @@ protected:
   ~vtkLightFieldGatherFilter() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
-  // Asks input 1 for this output's piece: rank 0's field filter makes the whole field, the
-  // others none (it is broadcast).
+  // Asks input 1 for this output's piece: the field filters make the field once (all ranks
+  // together, or rank 0 alone with DistributeDirections off).
   int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
@@ -134,7 +134,8 @@ private:
   // description. Collective.
   int GatherDistributed(const mesolight::vlf::LightField& field, vtkPolyData* input,
     vtkPolyData* output);
-  // The field on this rank: the producer's (rank 0, serial runs) or the one received.
+  // The field on this rank: the producer's (serial runs, rank 0, every rank's share when
+  // distributed: FieldDistributed) or the one received.
   const mesolight::vlf::LightField* AcquireField(vtkAlgorithm* producer);
   std::unique_ptr<mesolight::vlf::LightField> Received;
   const void* SentProducer = nullptr; // rank 0: the producer and version last broadcast
