@@ -192,10 +192,7 @@ void ShootSubfield(LightField& field, std::size_t k, BlockState& state)
     }
   }
 }
-} // namespace
 
-namespace
-{
 // Adds the flux of the unshot specular radiance this process holds to `flux`.
 void AddUnshotSpecularFlux(const LightField& field, std::array<double, 3>& flux)
 {
