@@ -12,6 +12,7 @@
 #include "Timing.h"
 #include "VlfRelief.h"
 
+#include "Distribution.h"
 #include "EmbreeScene.h"
 #include "LightField.h"
 #include "Lookup.h"
@@ -24,8 +25,10 @@
 #include "Snapshot.h"
 #include "TextureComparison.h"
 #include "TriangleScene.h"
+#include "vtkLightFieldReducer.h"
 
 #include <vtkImageData.h>
+#include <vtkMultiProcessController.h>
 #include <vtkNew.h>
 #include <vtkPNGWriter.h>
 #include <vtkPointData.h>
@@ -89,7 +92,10 @@ int Render(const std::vector<std::string>& args)
     "Renders a light field's diffuse totals (Wither's progressive mode: per-surface "
     "total diffuse\ntextures, bilinear) by casting a ray per pixel; mirror surfaces "
     "show the field's radiance\ntoward the eye (three-direction spherical "
-    "interpolation).\n");
+    "interpolation).\n"
+    "Under mpiexec -n N the ranks split the image's rows and the field's directions: a "
+    "mirror pixel\nasks the owners of the directions around its view (vlf::RadianceLeaving); "
+    "rank 0 writes.\n");
   cl.AddValue("--out", "IMAGE.png", "where to write the image (required)");
   cl.AddValue("--size", "WxH", "image size in pixels", "512x512");
   AddLightFieldCameraOptions(cl);
@@ -151,9 +157,30 @@ int Render(const std::vector<std::string>& args)
   {
     return cl.UsageError(error);
   }
+  // Under mpiexec every rank reads the field and keeps its own directions (Distribution.h).
+  vlf::ControllerReducer reducer;
+  const bool distributed = reducer.Size() > 1;
+  const bool root = reducer.Rank() == 0;
+  if (distributed && !cl.GetAll("--relief").empty())
+  {
+    // A relief pixel integrates the incident radiance over every direction at its point; on a
+    // distributed field each rank holds only its own directions.
+    if (root)
+    {
+      std::cerr << "mesolight vlf render: --relief needs the whole field on one process: run it "
+                   "without mpiexec (the field file is the same)\n";
+    }
+    return 2;
+  }
   try
   {
-    const std::unique_ptr<vlf::LightField> field = vlf::ReadSnapshot(cl.Positional()[0]);
+    std::unique_ptr<vlf::LightField> field;
+    vlf::Agree(reducer,
+      [&]()
+      {
+        field = vlf::ReadSnapshot(cl.Positional()[0]);
+        vlf::KeepOwnedSubfields(*field, reducer);
+      });
     const TriangleScene& unit = field->Scene();
     glm::vec3 eye, focal;
     double up[3] = { 0.0, 1.0, 0.0 };
@@ -192,7 +219,17 @@ int Render(const std::vector<std::string>& args)
     // Exposure, clamp and sRGB: the light field actor's default display (vtkLightFieldActor).
     const DisplayTransform display{ exposure, ToneMapOperator::Clamp, true };
     const Clock::time_point start = Clock::now();
-    ParallelFor(0, static_cast<std::size_t>(height), 1,
+    const std::uint64_t bytesBefore = reducer.BytesContributed();
+    // This rank's rows; mirror pixels are looked up afterwards, all together (their directions
+    // may be held by other ranks).
+    const std::size_t firstRow = static_cast<std::size_t>(height) *
+      static_cast<std::size_t>(reducer.Rank()) / static_cast<std::size_t>(reducer.Size());
+    const std::size_t lastRow = static_cast<std::size_t>(height) *
+      static_cast<std::size_t>(reducer.Rank() + 1) / static_cast<std::size_t>(reducer.Size());
+    std::vector<std::uint32_t> mirrorPixel(static_cast<std::size_t>(width) * height, 0xffffffffu);
+    std::vector<std::vector<std::pair<std::size_t, vlf::RadianceQuery>>> mirrorsOfRow(
+      static_cast<std::size_t>(height));
+    ParallelFor(firstRow, lastRow, 1,
       [&](std::size_t r0, std::size_t r1)
       {
         for (std::size_t row = r0; row < r1; ++row)
@@ -220,11 +257,18 @@ int Render(const std::vector<std::string>& args)
               {
                 // drawn by the relief
               }
+              else if (front && glm::length(m.Specular) > 0.0f)
+              {
+                vlf::RadianceQuery query;
+                query.Surface = s;
+                query.Point = p;
+                query.Toward = -ray.Direction;
+                mirrorsOfRow[row].emplace_back(
+                  row * static_cast<std::size_t>(width) + static_cast<std::size_t>(column), query);
+              }
               else if (front)
               {
-                radiance = glm::length(m.Specular) > 0.0f
-                  ? lookup.RadianceLeaving(s, p, -ray.Direction)
-                  : lookup.DiffuseRadiance(s, p);
+                radiance = lookup.DiffuseRadiance(s, p);
               }
             }
             // Row 0 of a VTK image is the bottom row.
@@ -233,15 +277,73 @@ int Render(const std::vector<std::string>& args)
             {
               value[c] = radiance[c];
             }
-            unsigned char* rgb = &pixels[(row * static_cast<std::size_t>(width) + column) * 3];
-            for (int c = 0; c < 3; ++c)
-            {
-              rgb[c] = static_cast<unsigned char>(
-                std::lround(255.0 * ApplyDisplayTransform<double>(display, radiance[c])));
-            }
           }
         }
       });
+    // The mirrors: every rank's pixels answered by the owners of their directions.
+    std::vector<vlf::RadianceQuery> queries;
+    std::vector<std::size_t> queryPixel;
+    for (const auto& rowQueries : mirrorsOfRow)
+    {
+      for (const auto& q : rowQueries)
+      {
+        queryPixel.push_back(q.first);
+        queries.push_back(q.second);
+      }
+    }
+    const Clock::time_point lookupStart = Clock::now();
+    const std::uint64_t lookupBytesBefore = reducer.BytesContributed();
+    const std::vector<glm::vec3> mirrored = vlf::RadianceLeaving(*field, queries, reducer);
+    const double lookupSeconds = SecondsSince(lookupStart);
+    std::uint64_t lookupBytes = reducer.BytesContributed() - lookupBytesBefore;
+    for (std::size_t q = 0; q < queries.size(); ++q)
+    {
+      float* value = linear.Pixel(static_cast<int>(queryPixel[q] % static_cast<std::size_t>(width)),
+        static_cast<int>(queryPixel[q] / static_cast<std::size_t>(width)));
+      for (int c = 0; c < 3; ++c)
+      {
+        value[c] = mirrored[q][c];
+      }
+    }
+    // Every rank's rows onto every rank (the others' rows are zero here): one sum.
+    if (distributed)
+    {
+      reducer.SumInPlace(linear.Rgb.data(), linear.Rgb.size());
+    }
+    const double frameSeconds = SecondsSince(start);
+    std::uint64_t frameBytes = reducer.BytesContributed() - bytesBefore;
+    double mirrorPixels = static_cast<double>(queries.size());
+    if (distributed)
+    {
+      double totals[3] = { static_cast<double>(frameBytes), mirrorPixels,
+        static_cast<double>(lookupBytes) };
+      reducer.SumInPlace(totals, 3);
+      frameBytes = static_cast<std::uint64_t>(totals[0]);
+      mirrorPixels = totals[1];
+      lookupBytes = static_cast<std::uint64_t>(totals[2]);
+    }
+    for (std::size_t i = 0; i < pixels.size() / 3; ++i)
+    {
+      const float* value = linear.Pixel(static_cast<int>(i % static_cast<std::size_t>(width)),
+        static_cast<int>(i / static_cast<std::size_t>(width)));
+      for (int c = 0; c < 3; ++c)
+      {
+        pixels[3 * i + c] = static_cast<unsigned char>(
+          std::lround(255.0 * ApplyDisplayTransform<double>(display, value[c])));
+      }
+    }
+    if (!root)
+    {
+      return 0; // rank 0 writes
+    }
+    if (vtkMultiProcessController::GetGlobalController()) // under mpiexec, even one rank
+    {
+      std::cout << "MPI: " << reducer.Size() << " ranks, frame " << frameSeconds
+                << " s (mirror lookups " << lookupSeconds << " s on rank 0), "
+                << static_cast<std::uint64_t>(mirrorPixels) << " mirror pixels; sent by all ranks: "
+                << lookupBytes << " bytes for the lookups, " << frameBytes - lookupBytes
+                << " bytes for the image sum\n";
+    }
     vtkNew<vtkImageData> image;
     image->SetDimensions(width, height, 1);
     vtkNew<vtkUnsignedCharArray> colours;

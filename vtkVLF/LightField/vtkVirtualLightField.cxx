@@ -13,9 +13,11 @@
 #include "vtkLightFieldReducer.h"
 #include "vtkTriangleSceneConverter.h"
 
+#include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
+#include "vtkIdList.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkIntArray.h"
@@ -23,6 +25,7 @@
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
+#include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 
@@ -32,6 +35,7 @@
 #include <functional>
 #include <map>
 #include <utility>
+#include <vector>
 
 vtkStandardNewMacro(vtkVirtualLightField);
 
@@ -86,9 +90,9 @@ vtkTypeInt64 vtkVirtualLightField::GetEstimatedBytes() const
 bool vtkVirtualLightField::ComputeIrradiance(
   const double point[3], const double normal[3], double irradiance[3]) const
 {
-  if (!this->Field)
+  if (!this->Field || !this->Field->OwnedSubfields.empty())
   {
-    return false;
+    return false; // none, or distributed: this rank holds part of the directions
   }
   const glm::vec3 n(
     static_cast<float>(normal[0]), static_cast<float>(normal[1]), static_cast<float>(normal[2]));
@@ -147,7 +151,13 @@ int vtkVirtualLightField::RequestData(
   const int pieces = outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES());
   if (this->Distributed(pieces))
   {
-    return this->RequestDistributedData(input, output);
+    const int result = this->RequestDistributedData(input, output);
+    if (result && output->GetNumberOfCells() > 0)
+    {
+      KeepPiece(output,
+        outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()), pieces);
+    }
+    return result;
   }
   if (pieces > 1 &&
     (outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()) > 0 ||
@@ -504,8 +514,8 @@ int vtkVirtualLightField::RequestDistributedData(vtkPolyData* input, vtkPolyData
     {
       this->DirectionsPropagated += field->OwnsSubfield(k) ? 1 : 0;
     }
-    // Downstream (lookups, vtkLightFieldGatherFilter's broadcast) reads rank 0's whole field.
-    vlf::GatherSubfieldsToRoot(*field, reducer);
+    // Every rank keeps its own directions' maps: downstream asks their owners (Distribution.h:
+    // the gather's sum, the mirrors' lookups); the diffuse textures are whole on every rank.
   }
   catch (const vlf::AbortedError&)
   {
@@ -517,13 +527,47 @@ int vtkVirtualLightField::RequestDistributedData(vtkPolyData* input, vtkPolyData
     vtkErrorMacro(<< e.what());
     return 0;
   }
-  if (reducer.Rank() != 0)
-  {
-    return 1; // an empty piece, as without the split
-  }
   this->Field = std::move(field);
   ++this->PropagationCount;
   return this->FillOutput(converter, output);
+}
+
+void vtkVirtualLightField::KeepPiece(vtkPolyData* output, int piece, int pieces)
+{
+  vtkCellArray* polys = output->GetPolys();
+  const vtkIdType cells = polys ? polys->GetNumberOfCells() : 0;
+  if (pieces <= 1 || cells == 0 || output->GetNumberOfCells() != cells)
+  {
+    return; // the output is triangles only (FillOutput); anything else stays whole
+  }
+  const vtkIdType first = cells * piece / pieces, last = cells * (piece + 1) / pieces;
+  vtkNew<vtkPolyData> part;
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkCellArray> kept;
+  part->GetPointData()->CopyAllocate(output->GetPointData());
+  part->GetCellData()->CopyAllocate(output->GetCellData());
+  std::vector<vtkIdType> newId(static_cast<std::size_t>(output->GetNumberOfPoints()), -1);
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType c = first; c < last; ++c)
+  {
+    polys->GetCellAtId(c, ids);
+    for (vtkIdType q = 0; q < ids->GetNumberOfIds(); ++q)
+    {
+      vtkIdType& id = newId[static_cast<std::size_t>(ids->GetId(q))];
+      if (id < 0)
+      {
+        id = points->InsertNextPoint(output->GetPoint(ids->GetId(q)));
+        part->GetPointData()->CopyData(output->GetPointData(), ids->GetId(q), id);
+      }
+      ids->SetId(q, id);
+    }
+    const vtkIdType cell = kept->InsertNextCell(ids);
+    part->GetCellData()->CopyData(output->GetCellData(), c, cell);
+  }
+  part->SetPoints(points);
+  part->SetPolys(kept);
+  part->GetFieldData()->ShallowCopy(output->GetFieldData());
+  output->ShallowCopy(part);
 }
 
 vtkFloatArray* vtkVirtualLightField::GetAttachedAtlas(vtkDataObject* data, int size[2])

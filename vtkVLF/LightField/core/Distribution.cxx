@@ -256,17 +256,82 @@ std::vector<glm::vec3> GatherIrradiance(const LightField& field,
   return irradiance;
 }
 
+std::vector<glm::vec3> RadianceLeaving(const LightField& field,
+  const std::vector<RadianceQuery>& queries, Reducer& reducer, CellInterpolation cells,
+  DirectionInterpolation directions)
+{
+  const Lookup lookup(field);
+  const int ranks = reducer.Size(), rank = reducer.Rank();
+  // Every rank's queries, in rank order (one broadcast per rank).
+  std::vector<RadianceQuery> all;
+  std::size_t first = 0; // this rank's first query in `all`
+  if (ranks <= 1)
+  {
+    all = queries;
+  }
+  else
+  {
+    for (int r = 0; r < ranks; ++r)
+    {
+      std::string bytes;
+      if (r == rank)
+      {
+        first = all.size();
+        bytes.assign(reinterpret_cast<const char*>(queries.data()),
+          queries.size() * sizeof(RadianceQuery));
+      }
+      reducer.Broadcast(bytes, r);
+      const std::size_t count = bytes.size() / sizeof(RadianceQuery);
+      const std::size_t at = all.size();
+      all.resize(at + count);
+      if (count > 0)
+      {
+        std::memcpy(static_cast<void*>(all.data() + at), bytes.data(),
+          count * sizeof(RadianceQuery));
+      }
+    }
+  }
+  std::vector<glm::vec4> share(all.size(), glm::vec4(0.0f));
+  std::exception_ptr failure;
+  try
+  {
+    ParallelFor(0, all.size(), 0,
+      [&](std::size_t begin, std::size_t end)
+      {
+        for (std::size_t i = begin; i < end; ++i)
+        {
+          if (all[i].Surface >= field.Surfaces().size())
+          {
+            throw std::invalid_argument("RadianceLeaving: surface " +
+              std::to_string(all[i].Surface) + " is not one of the light field's");
+          }
+          share[i] = lookup.RadianceLeavingShare(
+            all[i].Surface, all[i].Point, all[i].Toward, cells, directions);
+        }
+      });
+  }
+  catch (...)
+  {
+    failure = std::current_exception();
+  }
+  AgreeOnFailure(reducer, failure);
+  static_assert(sizeof(glm::vec4) == 4 * sizeof(float), "packed vec4");
+  reducer.SumInPlace(reinterpret_cast<float*>(share.data()), 4 * share.size());
+  std::vector<glm::vec3> radiance(queries.size());
+  for (std::size_t i = 0; i < queries.size(); ++i)
+  {
+    const glm::vec4& s = share[first + i];
+    radiance[i] = s.w > 0.0f ? glm::vec3(s) / s.w
+                             : lookup.DiffuseRadiance(queries[i].Surface, queries[i].Point);
+  }
+  return radiance;
+}
+
 void KeepOwnedSubfields(LightField& field, Reducer& reducer)
 {
   if (reducer.Size() <= 1)
   {
     return;
-  }
-  if (field.HasSpecular())
-  {
-    throw std::invalid_argument("the light field has mirror surfaces, which move light between "
-                                "directions held by different ranks: a distributed light field "
-                                "does not support them yet; run on one rank");
   }
   const std::vector<std::uint32_t> owner = BalanceDirections(field, reducer.Size());
   field.OwnedSubfields.assign(owner.size(), 0);

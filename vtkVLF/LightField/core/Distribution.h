@@ -17,8 +17,11 @@
 // its worker blocks in another order).
 // Gathering at points (a movable object, Light Field Gather) is a sum over directions too: each
 // rank sums its own, one reduction (GatherIrradiance).
-// Mirrors (perfect specular) move radiance between directions, so they would need an exchange
-// between the owners of two directions: a distributed field refuses scenes with mirrors for now.
+// Mirrors (perfect specular) move radiance between directions: a line of one rank's direction
+// that meets a mirror sends the mirrored radiance to the owner of the mirrored direction, which
+// finds its cells (Propagation.cxx, one exchange between every pair of ranks per iteration, 36
+// bytes per mirrored line); the unshot specular flux is summed so that every rank stops alike.
+// Looking a mirror up (RadianceLeaving below) asks the owners of the directions around the view.
 //
 // Failures. A rank that throws while others wait in a collective call would hang them, so every
 // step that can fail on one rank only (reading the scene, the memory budget, an abort) is run
@@ -28,6 +31,7 @@
 #define mesolight_vlf_Distribution_h
 
 #include "LightField.h"
+#include "Lookup.h" // CellInterpolation, DirectionInterpolation
 
 #include <cstddef>
 #include <cstdint>
@@ -111,6 +115,23 @@ std::uint64_t ReducedBytesPerIteration(const LightField& field);
 // over the ranks (12 bytes per point) gives every rank the whole. Collective.
 std::vector<glm::vec3> GatherIrradiance(const LightField& field,
   const std::vector<glm::vec3>& points, const std::vector<glm::vec3>& normals, Reducer& reducer);
+
+// Radiance leaving a surface point toward a direction (Lookup::RadianceLeaving: the mirrors'
+// lookup), asked of a distributed field. The owner of a direction answers for it: every rank's
+// queries go to every rank (one broadcast per rank, 28 bytes a query), each rank answers all of
+// them from its own directions (Lookup::RadianceLeavingShare: a weighted sum and its weight), and
+// one sum over the ranks (16 bytes a query) completes every answer; each rank gets the answers to
+// its own queries, which may differ from the other ranks' (a split image) or be none. Collective.
+struct RadianceQuery
+{
+  std::uint32_t Surface = 0;
+  glm::vec3 Point{ 0.0f };  // on the surface, unit-sphere coordinates
+  glm::vec3 Toward{ 0.0f }; // unit direction the radiance leaves in
+};
+std::vector<glm::vec3> RadianceLeaving(const LightField& field,
+  const std::vector<RadianceQuery>& queries, Reducer& reducer,
+  CellInterpolation cells = CellInterpolation::Bilinear,
+  DirectionInterpolation directions = DirectionInterpolation::Spherical);
 
 // A field read whole (a snapshot) split among the ranks: keeps this rank's maps, frees the others.
 void KeepOwnedSubfields(LightField& field, Reducer& reducer);

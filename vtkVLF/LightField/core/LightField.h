@@ -192,7 +192,6 @@ public:
   // Distributed (Distribution.h): with a reducer of several ranks, traces only this rank's share
   // of the directions (BalanceDirections), sums the texel capacities over the ranks, and checks
   // the budget against this rank's share of the maps; failures are agreed between the ranks.
-  // Throws std::invalid_argument for a scene with mirrors (not distributed yet).
   static std::unique_ptr<LightField> Build(const TriangleScene& scene,
     const LightFieldSettings& settings, const ProgressCallback& progress, Reducer* reducer);
 

@@ -116,6 +116,40 @@ glm::vec3 Lookup::RadianceLeaving(std::uint32_t surface, const glm::vec3& p, con
   return weight > 0.0f ? sum / weight : this->DiffuseRadiance(surface, p);
 }
 
+glm::vec4 Lookup::RadianceLeavingShare(std::uint32_t surface, const glm::vec3& p,
+  const glm::vec3& w, CellInterpolation cells, DirectionInterpolation directions) const
+{
+  const DirectionSet& set = this->Field.Directions();
+  glm::vec3 sum(0.0f);
+  float weight = 0.0f;
+  if (directions == DirectionInterpolation::Nearest)
+  {
+    bool flipped = false;
+    const std::size_t k = set.Nearest(w, &flipped);
+    glm::vec3 value;
+    if (this->Field.OwnsSubfield(k) && this->Field.Orientation(k, surface) == (flipped ? -1 : 1) &&
+      this->SubfieldRadiance(k, surface, p, cells, value))
+    {
+      return glm::vec4(value, 1.0f);
+    }
+    return glm::vec4(0.0f);
+  }
+  const DirectionSet::Interpolation blend = set.Interpolate(w);
+  for (int v = 0; v < 3; ++v)
+  {
+    const std::size_t k = blend.Index[v];
+    glm::vec3 value;
+    if (blend.Weight[v] > 0.0f && this->Field.OwnsSubfield(k) &&
+      this->Field.Orientation(k, surface) == (blend.VertexFlipped[v] ? -1 : 1) &&
+      this->SubfieldRadiance(k, surface, p, cells, value))
+    {
+      sum += blend.Weight[v] * value;
+      weight += blend.Weight[v];
+    }
+  }
+  return glm::vec4(sum, weight);
+}
+
 glm::vec3 Lookup::IncidentRadiance(std::size_t k, int sense, const glm::vec3& p,
   CellInterpolation cells, std::uint32_t ignore, bool occlusion, bool emission) const
 {

@@ -26,6 +26,8 @@
 
 #include "LightField.h"
 
+#include <glm/vec4.hpp>
+
 namespace mesolight
 {
 namespace vlf
@@ -155,6 +157,14 @@ public:
   // Radiance leaving surface `surface` at p (on it) toward unit direction w (front side).
   // Directions the field cannot resolve (grazing) fall back to the diffuse texture.
   glm::vec3 RadianceLeaving(std::uint32_t surface, const glm::vec3& p, const glm::vec3& w,
+    CellInterpolation cells = CellInterpolation::Bilinear,
+    DirectionInterpolation directions = DirectionInterpolation::Spherical) const;
+
+  // On a distributed field (Distribution.h), this process' share of RadianceLeaving: the
+  // weighted sum of the radiance of the directions it holds (xyz) and their weight (w). Summed
+  // over the ranks, xyz / w is RadianceLeaving (the diffuse texture where w is 0):
+  // vlf::RadianceLeaving in Distribution.h. On a whole field xyz / w is RadianceLeaving itself.
+  glm::vec4 RadianceLeavingShare(std::uint32_t surface, const glm::vec3& p, const glm::vec3& w,
     CellInterpolation cells = CellInterpolation::Bilinear,
     DirectionInterpolation directions = DirectionInterpolation::Spherical) const;
 
