@@ -119,10 +119,13 @@ void KeepOwnedSubfields(LightField& field, Reducer& reducer);
 std::string PackSubfield(const Subfield& f);
 void UnpackSubfield(const std::string& bytes, Subfield& f);
 
-// Writes the snapshot of a distributed field: rank 0 writes, receiving each subfield it does not
-// own from its owner just when the file needs it (one subfield in memory at a time); the others
-// send theirs. Collective; failures agreed (every rank throws when the write failed).
-void WriteDistributedSnapshot(LightField& field, const std::string& path, Reducer& reducer);
+// Writes the snapshot of a distributed field: rank 0 writes, taking each subfield it does not
+// own from its owner just when the file needs it; the others send theirs in batches of a few MiB
+// (rank 0 holds at most one batch per rank, 64 MiB in all, and the subfield being written).
+// Collective; failures agreed (every rank throws when the write failed). batchBytes: 0 = that
+// default; any other value the batch size (tests).
+void WriteDistributedSnapshot(
+  LightField& field, const std::string& path, Reducer& reducer, std::size_t batchBytes = 0);
 // Gives rank 0 every subfield's maps (rank 0 then holds the complete field, as a serial one; the
 // others keep their share). Collective.
 void GatherSubfieldsToRoot(LightField& field, Reducer& reducer);

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The distributed light field (Distribution.h) against the serial one, run under
-// `mpiexec -n N` (ctest runs it at 1, 2 and 3 ranks). Every rank also propagates the serial field
-// itself (the reference, independent of any reduction) and compares every texel.
+// `mpiexec -n N` (ctest runs it at 1, 2, 3, 4 and 8 ranks). Every rank also propagates the serial
+// field itself (the reference, independent of any reduction) and compares every texel.
 //
 //   TestDistributedPropagation equal DIR   distributed == serial (textures, energy, snapshot,
 //                                          gathered irradiance); without the reductions they
@@ -129,8 +129,15 @@ int Equal(vtkMultiProcessController* controller, const std::string& dir)
   vlf::PropagationOptions options;
   options.Reduce = &reducer;
   const std::string snapshot = dir + "/distributed-" + std::to_string(ranks) + ".vlf";
+  // Snapshot batches: the default (everything in one here), one subfield each, and several
+  // subfields each (the last, which is read back below).
+  const std::size_t batches[] = { 0, 1, 20000 };
   vlf::Propagate(*field, iterations, options,
-    [&](const vlf::LightField&) { vlf::WriteDistributedSnapshot(*field, snapshot, reducer); });
+    [&](const vlf::LightField& f)
+    {
+      vlf::WriteDistributedSnapshot(
+        *field, snapshot, reducer, batches[static_cast<std::size_t>(f.IterationsDone - 1) % 3]);
+    });
   const double worst = WorstRelative(field->TotalDiffuse, serial->TotalDiffuse);
   std::printf("rank %d of %d: worst relative texel difference %.3g (unshot %.3g)\n", Rank, ranks,
     worst, WorstRelative(field->UnshotDiffuse, serial->UnshotDiffuse));
