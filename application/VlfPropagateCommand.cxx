@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// `mesolight vlf propagate`: the light field of a scene, written after every iteration; under
-// mpiexec its directions split over the ranks (Distribution.h).
+// `mesolight vlf propagate`: the light field of a scene, written after every iteration (or every
+// K-th); under mpiexec its directions split over the ranks (Distribution.h).
 #include "VlfCommand.h"
 
 #include "CommandLine.h"
@@ -65,6 +65,14 @@ void KillIfAsked(int iteration, int rank)
   }
 }
 
+// CPU seconds of this process (every thread).
+double ProcessCpuSeconds()
+{
+  timespec t{};
+  ::clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
 // The reducer with a clock: this rank's seconds inside collective calls (waiting for the slowest
 // rank, then the transfer), which --rank-report splits from the work of each phase.
 class TimedReducer : public vlf::Reducer
@@ -78,38 +86,50 @@ public:
   int Size() const override { return this->Inner.Size(); }
   void SumInPlace(float* data, std::size_t n) override
   {
-    const Clock::time_point start = Clock::now();
+    const Timer timer(*this);
     this->Inner.SumInPlace(data, n);
-    this->Seconds += SecondsSince(start);
   }
   void SumInPlace(double* data, std::size_t n) override
   {
-    const Clock::time_point start = Clock::now();
+    const Timer timer(*this);
     this->Inner.SumInPlace(data, n);
-    this->Seconds += SecondsSince(start);
   }
   void Broadcast(std::string& bytes, int root) override
   {
-    const Clock::time_point start = Clock::now();
+    const Timer timer(*this);
     this->Inner.Broadcast(bytes, root);
-    this->Seconds += SecondsSince(start);
   }
   void Send(const std::string& bytes, int to) override
   {
-    const Clock::time_point start = Clock::now();
+    const Timer timer(*this);
     this->Inner.Send(bytes, to);
-    this->Seconds += SecondsSince(start);
   }
   std::string Receive(int from) override
   {
-    const Clock::time_point start = Clock::now();
-    std::string bytes = this->Inner.Receive(from);
-    this->Seconds += SecondsSince(start);
-    return bytes;
+    const Timer timer(*this);
+    return this->Inner.Receive(from);
   }
-  double Seconds = 0.0;
+  double Seconds = 0.0;    // wall clock inside MPI calls
+  double CpuSeconds = 0.0; // CPU inside them: Open MPI polls while it waits
 
 private:
+  struct Timer
+  {
+    explicit Timer(TimedReducer& owner)
+      : Owner(owner)
+      , Start(Clock::now())
+      , Cpu(ProcessCpuSeconds())
+    {
+    }
+    ~Timer()
+    {
+      this->Owner.Seconds += SecondsSince(this->Start);
+      this->Owner.CpuSeconds += ProcessCpuSeconds() - this->Cpu;
+    }
+    TimedReducer& Owner;
+    Clock::time_point Start;
+    double Cpu;
+  };
   vlf::Reducer& Inner;
 };
 
@@ -163,6 +183,10 @@ int Propagate(const std::vector<std::string>& args)
   cl.AddValue("--iterations", "K",
     "instead of --tolerance: exactly K shooting iterations (in total, when resuming)");
   cl.AddValue("--memory-budget", "GIB", "refuse fields needing more memory than this", "4");
+  cl.AddValue("--snapshot-every", "K",
+    "write FIELD after every K-th iteration (and the last) instead of after each: a run killed "
+    "in between resumes from the last one written",
+    "1");
   cl.AddFlag("--resume", "continue the propagation stored in FIELD");
   cl.AddFlag("--force", "replace an existing light field FIELD (never any other file)");
   cl.AddFlag("--rank-report",
@@ -177,13 +201,14 @@ int Propagate(const std::vector<std::string>& args)
   {
     return exitCode; // --help printed, or a usage error reported
   }
-  int directions = 0, rays = 0, tiles = 0, iterations = -1, maxIterations = 0;
+  int directions = 0, rays = 0, tiles = 0, iterations = -1, maxIterations = 0, snapshotEvery = 1;
   double budget = 0.0, tolerance = 0.0;
   if (!cl.GetInt("--directions", 3, 1 << 26, directions, error) ||
     !cl.GetInt("--rays", 1, 4096, rays, error) || !cl.GetInt("--tiles", 0, 4096, tiles, error) ||
     (cl.Has("--iterations") && !cl.GetInt("--iterations", 0, 10000, iterations, error)) ||
     !cl.GetDouble("--tolerance", 1e-9, 0.999, tolerance, error) ||
     !cl.GetInt("--max-iterations", 1, 10000, maxIterations, error) ||
+    !cl.GetInt("--snapshot-every", 1, 10000, snapshotEvery, error) ||
     !cl.GetDouble("--memory-budget", 1e-3, 1e6, budget, error))
   {
     return cl.UsageError(error);
@@ -262,6 +287,16 @@ int Propagate(const std::vector<std::string>& args)
   const bool rankReport = cl.Has("--rank-report");
   double traceSeconds = 0.0, traceCollective = 0.0, iterationSeconds = 0.0, writeSeconds = 0.0,
          writeCollective = 0.0, writeTotal = 0.0;
+  // CPU seconds of the iterations (the shooting, excluding snapshot writes), and of those inside
+  // MPI calls: the rest is this rank's work, which an idle machine turns into wall time.
+  double iterationCpu = 0.0, iterationMpiCpu = 0.0, cpuMark = 0.0, mpiCpuMark = 0.0;
+  const auto peakRss = []()
+  {
+    rusage usage{};
+    ::getrusage(RUSAGE_SELF, &usage);
+    return 1024.0 * static_cast<double>(usage.ru_maxrss); // Linux: KiB
+  };
+  double tracedPeakRss = 0.0; // after tracing (or reading) the field, before propagating
   if (!root)
   {
     std::cout.setstate(std::ios::failbit); // one rank speaks; errors are agreed, rank 0 prints
@@ -387,7 +422,10 @@ int Propagate(const std::vector<std::string>& args)
       ? PrintedProgress(iterations < 0 ? "toward the tolerance" : "propagating")
       : ProgressCallback();
     options.Reduce = distributed ? &reducer : nullptr;
-    bool written = false;
+    int writtenIteration = resume ? field->IterationsDone : -1; // what FIELD holds
+    tracedPeakRss = peakRss();
+    cpuMark = ProcessCpuSeconds();
+    mpiCpuMark = reducer.CpuSeconds;
     const auto write = [&](const vlf::LightField& f)
     {
       const Clock::time_point writeStart = Clock::now();
@@ -403,14 +441,9 @@ int Propagate(const std::vector<std::string>& args)
       writeSeconds = SecondsSince(writeStart); // the last write (a serial part of each iteration)
       writeTotal += writeSeconds;
       writeCollective += reducer.Seconds - collectiveBefore;
-      written = true;
+      writtenIteration = f.IterationsDone;
     };
-    char toleranceText[32] = "none: fixed count";
-    if (iterations < 0)
-    {
-      std::snprintf(toleranceText, sizeof(toleranceText), "%g%%", 100.0 * tolerance);
-    }
-    const auto afterIteration = [&](const vlf::LightField& f)
+    const auto snapshot = [&](const vlf::LightField& f)
     {
       if (filter)
       {
@@ -424,21 +457,42 @@ int Propagate(const std::vector<std::string>& args)
       {
         write(f);
       }
+    };
+    char toleranceText[32] = "none: fixed count";
+    if (iterations < 0)
+    {
+      std::snprintf(toleranceText, sizeof(toleranceText), "%g%%", 100.0 * tolerance);
+    }
+    const auto afterIteration = [&](const vlf::LightField& f)
+    {
+      iterationCpu += ProcessCpuSeconds() - cpuMark;
+      iterationMpiCpu += reducer.CpuSeconds - mpiCpuMark;
       const vlf::LightField::IterationEnergy& e = f.EnergyLog.back();
+      const bool due = e.Iteration % snapshotEvery == 0;
+      if (due)
+      {
+        snapshot(f);
+      }
       iterationSeconds += e.Seconds;
       if (root)
       {
+        char took[32];
+        std::snprintf(took, sizeof(took), " in %.2f s", writeSeconds);
+        const std::string written = due
+          ? "wrote " + out + took
+          : "not written (--snapshot-every " + std::to_string(snapshotEvery) + ")";
         std::printf(
           "iteration %d: %.2f s, shot %.4g, escaped %.4g, absorbed %.4g, left to shoot %.4g "
-          "= %.2f%% of the emitted (tolerance %s) (energy balance error %.1e); wrote %s in %.2f "
-          "s\n",
+          "= %.2f%% of the emitted (tolerance %s) (energy balance error %.1e); %s\n",
           e.Iteration, e.Seconds, e.Shot[0] + e.Shot[1] + e.Shot[2],
           e.Escaped[0] + e.Escaped[1] + e.Escaped[2], e.Absorbed[0] + e.Absorbed[1] + e.Absorbed[2],
           e.Unshot[0] + e.Unshot[1] + e.Unshot[2], 100.0 * vlf::UnshotFraction(f), toleranceText,
-          e.ConservationError(), out.c_str(), writeSeconds);
+          e.ConservationError(), written.c_str());
         std::fflush(stdout);
       }
       KillIfAsked(e.Iteration, reducer.Rank());
+      cpuMark = ProcessCpuSeconds();
+      mpiCpuMark = reducer.CpuSeconds;
     };
     if (iterations >= 0)
     {
@@ -453,10 +507,11 @@ int Propagate(const std::vector<std::string>& args)
                 << "% of the emitted flux is still unshot after " << maxIterations
                 << " iterations (--max-iterations)\n";
     }
+    // The last iteration (with --snapshot-every), or with zero iterations the traced field.
     // (Decided alike on every rank: a file test could race with rank 0's write.)
-    if (distributed ? !written && !resume : !vlf::FileExists(out))
+    if (writtenIteration != field->IterationsDone)
     {
-      write(*field); // zero iterations: the traced field
+      snapshot(*field);
     }
     if (vtkMultiProcessController::GetGlobalController()) // under mpiexec, even one rank
     {
@@ -469,7 +524,7 @@ int Propagate(const std::vector<std::string>& args)
     if (rankReport)
     {
       // One row per rank, summed onto every rank (each fills its own), printed by rank 0.
-      constexpr std::size_t columns = 11;
+      constexpr std::size_t columns = 14;
       std::vector<double> rows(columns * static_cast<std::size_t>(reducer.Size()), 0.0);
       rusage usage{};
       ::getrusage(RUSAGE_SELF, &usage);
@@ -482,9 +537,10 @@ int Propagate(const std::vector<std::string>& args)
       }
       const double collective = reducer.Seconds;
       const double mine[columns] = { traceSeconds, traceCollective, iterationSeconds,
-        collective - traceCollective - writeCollective, writeTotal, writeCollective, cpu,
-        1024.0 * static_cast<double>(usage.ru_maxrss), static_cast<double>(field->AllocatedBytes()),
-        static_cast<double>(owned), static_cast<double>(controllerReducer.BytesContributed()) };
+        collective - traceCollective - writeCollective, writeTotal, writeCollective, cpu, peakRss(),
+        static_cast<double>(field->AllocatedBytes()), static_cast<double>(owned),
+        static_cast<double>(controllerReducer.BytesContributed()), iterationCpu, iterationMpiCpu,
+        tracedPeakRss };
       std::copy(
         mine, mine + columns, rows.begin() + columns * static_cast<std::size_t>(reducer.Rank()));
       reducer.SumInPlace(rows.data(), rows.size());
@@ -493,8 +549,10 @@ int Propagate(const std::vector<std::string>& args)
         const double* v = rows.data() + columns * static_cast<std::size_t>(r);
         std::printf("rank %d: trace %.3f s (in MPI %.3f s), iterations %.3f s (in MPI %.3f s), "
                     "snapshot writes %.3f s (in MPI %.3f s), cpu %.3f s, peak RSS %.0f bytes, "
-                    "holds %.0f bytes, %.0f directions, sent %.0f bytes\n",
-          r, v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7], v[8], v[9], v[10]);
+                    "holds %.0f bytes, %.0f directions, sent %.0f bytes, iteration cpu %.3f s "
+                    "(in MPI %.3f s), peak RSS after trace %.0f bytes\n",
+          r, v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7], v[8], v[9], v[10], v[11], v[12],
+          v[13]);
       }
       std::fflush(stdout);
     }

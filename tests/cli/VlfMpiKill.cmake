@@ -5,7 +5,8 @@
 # timeout), the file holds the complete iteration 2, and resuming it on the same or another rank
 # count gives the field of an uninterrupted run (every texel within 1e-5, compared by COMPARE).
 # A writer killed in the middle of a write leaves FIELD.tmp-PID behind and FIELD whole: a
-# truncated temporary is never read, and a truncated FIELD is refused by every rank.
+# truncated temporary is never read, and a truncated FIELD is refused by every rank. With
+# --snapshot-every 2 a run killed after iteration 3 resumes from iteration 2.
 include("${CMAKE_CURRENT_LIST_DIR}/RunTool.cmake")
 cli_fresh_work()
 set(ENV{OMPI_ALLOW_RUN_AS_ROOT} 1)
@@ -85,6 +86,17 @@ resume_equals("${WORK}/all.vlf" 2 all-on-2.vlf)
 file(COPY_FILE "${WORK}/all.vlf" "${WORK}/all-on-1.vlf")
 cli_run(TRUE vlf propagate --resume --iterations 4 --out "${WORK}/all-on-1.vlf")
 same_field("${WORK}/straight.vlf" "${WORK}/all-on-1.vlf" TRUE)
+
+# With --snapshot-every 2, every rank killed after iteration 3 (not written): FIELD holds
+# iteration 2, and resumes from it to the same field.
+set(ENV{MESOLIGHT_TEST_KILL_AFTER} "3:all")
+mpi_run(FALSE -n 2 "${CLI}" vlf propagate ${small} --iterations 4 --snapshot-every 2
+  --out "${WORK}/every.vlf")
+unset(ENV{MESOLIGHT_TEST_KILL_AFTER})
+if (NOT last_output MATCHES "iteration 3: [^\n]*not written")
+  message(FATAL_ERROR "iteration 3 was written although --snapshot-every 2: ${last_output}")
+endif ()
+resume_equals("${WORK}/every.vlf" 3 every-on-3.vlf)
 
 # A writer killed during its write: FIELD.tmp-PID is a truncated snapshot (of iteration 3 here),
 # FIELD the complete previous one. Resuming reads FIELD (iteration 2) and removes the dead
