@@ -314,14 +314,9 @@ int Propagate(const std::vector<std::string>& args)
       }
       if (distributed)
       {
-        // Every rank reads FIELD, whatever the rank count it was written with, then keeps its
-        // own directions' maps.
-        vlf::Agree(reducer,
-          [&]()
-          {
-            field = vlf::ReadSnapshot(out, budgetBytes);
-            vlf::KeepOwnedSubfields(*field, reducer);
-          });
+        // Every rank reads FIELD, whatever the rank count it was written with, keeping its own
+        // directions' maps only (the others' are read, checked and dropped one at a time).
+        vlf::Agree(reducer, [&]() { field = vlf::ReadOwnedSubfields(out, budgetBytes, reducer); });
       }
       else
       {

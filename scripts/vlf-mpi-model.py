@@ -23,6 +23,10 @@ LINK_BYTES_PER_S = 10e9  # beta: one rank's link
 REDUCE_BYTES_PER_TEXEL = 12  # 3 floats (Distribution.h), plus 120 bytes per iteration
 IMBALANCE_RATIO = 2.0  # costliest direction over the mean (greedy split: the last one placed)
 BATCH_BYTES = 8 << 20  # a sender's snapshot batch (Distribution.cxx)
+TEXTURE_BYTES_PER_TEXEL = 2 * 12 + 4  # total and unshot diffuse, capacity
+BLOCK_BYTES_PER_TEXEL = 12  # one reflected-flux buffer per worker block, every rank
+BLOCKS_HERE = 4  # worker blocks: 2 x the hardware threads (LightField.cxx), 2 cores here
+BLOCKS_CLUSTER_NODE = 128  # the same on a 64-core cluster node, whatever the ranks per node
 
 
 def load(directory):
@@ -48,7 +52,9 @@ def fit(rows):
     two_work = statistics.median(col(two, "max_rank_iteration_work_cpu_s"))
     maps = statistics.median(col(one, "max_rank_held_bytes"))
     shared = statistics.median(
-        [float(r["max_rank_peak_rss_bytes"]) - float(r["max_rank_held_bytes"]) for r in one + two])
+        [float(r["max_rank_peak_rss_bytes"]) - float(r["max_rank_held_bytes"]) for r in one])
+    shared_two = statistics.median(
+        [float(r["max_rank_peak_rss_bytes"]) - float(r["max_rank_held_bytes"]) for r in two])
     write_one = min(col(one, "writes_s")) / iterations
     write_two = min(col(two, "writes_s")) / iterations
     reduced = statistics.median(col(two, "reduced_bytes_per_iteration"))
@@ -63,7 +69,10 @@ def fit(rows):
         "two_rank_work_ratio": two_work / (shoot_cpu / 2),
         "trace_s_per_direction": min(col(one, "trace_s")) / d,
         "maps_and_textures_bytes": maps,
+        # peak RSS less the maps and textures held: the process (VTK, Embree, MPI, the scene)
         "shared_bytes_per_rank": shared,
+        # the same at 2 ranks: plus MPI's shared-memory buffers and the snapshot batches
+        "shared_bytes_per_rank_two_ranks": shared_two,
         "texels": (reduced - 120) / REDUCE_BYTES_PER_TEXEL,
         "write_bytes_per_s": maps / write_one,
         "distributed_write_s": write_two,
@@ -76,7 +85,7 @@ def predict(p, ranks, scale, directions):
     box's surface area at the same sampling density: crossings, map cells and texels all grow with
     the area; the directions stay."""
     per_dir = p["shoot_s_per_direction"] * scale
-    owned = math.ceil(directions / ranks)
+    owned = max(1, math.ceil(directions / ranks))
     # Greedy split: the ranks' loads differ by at most one direction's cost.
     compute = per_dir * min(owned, directions / ranks + IMBALANCE_RATIO) if ranks > 1 else per_dir * directions
     texels = p["texels"] * scale
@@ -88,8 +97,15 @@ def predict(p, ranks, scale, directions):
     maps = p["maps_and_textures_bytes"] * scale * directions / p["directions"]
     # Rank 0 writes the whole field every iteration, receiving (P-1)/P of it through its link.
     write = maps / p["write_bytes_per_s"] + (maps * (ranks - 1) / ranks / LINK_BYTES_PER_S if ranks > 1 else 0.0)
-    memory = p["shared_bytes_per_rank"] + maps / ranks + (BATCH_BYTES if ranks > 1 else 0)
+    # Every rank: the process, the textures and the worker blocks' buffers for every texel (the
+    # Cornell box's are inside the measured shared part; a larger scene adds its texels), its
+    # share of the maps, a snapshot batch; rank 0 one batch per sender (64 MiB at most).
+    extra_texels = texels - p["texels"]
+    base = p["shared_bytes_per_rank"] if ranks == 1 else p["shared_bytes_per_rank_two_ranks"]
+    per_texel = TEXTURE_BYTES_PER_TEXEL + BLOCKS_HERE * BLOCK_BYTES_PER_TEXEL
+    memory = base + extra_texels * per_texel + (maps - p["texels"] * TEXTURE_BYTES_PER_TEXEL * scale) / ranks
     memory_rank0 = memory + (min(64 << 20, (ranks - 1) * BATCH_BYTES) if ranks > 1 else 0)
+    memory_node64 = memory + texels * (BLOCKS_CLUSTER_NODE - BLOCKS_HERE) * BLOCK_BYTES_PER_TEXEL
     return {
         "ranks": ranks,
         "area_scale": scale,
@@ -103,18 +119,21 @@ def predict(p, ranks, scale, directions):
         "reduced_bytes_per_rank": bytes_reduced,
         "memory_per_rank_bytes": memory,
         "memory_rank0_bytes": memory_rank0,
+        "memory_per_rank_on_64_core_node_bytes": memory_node64,
+        "directions_per_rank": directions / ranks,
     }
 
 
 def crossover(p, scale, directions, what):
     """Smallest power-of-two rank count at which `what` (allreduce or snapshot) costs more than
-    the shooting."""
-    for e in range(0, 21):
+    the shooting (searched to 2^24 ranks, past one direction per rank: the model then keeps one
+    direction's time)."""
+    for e in range(0, 25):
         q = predict(p, 2**e, scale, directions)
         other = q["allreduce_s"] if what == "allreduce" else q["snapshot_write_s"]
         if other > q["compute_s"]:
             return 2**e
-    return None
+    return "none below 2^24"
 
 
 def svg(directory, rows, predictions, p):
@@ -156,7 +175,6 @@ def svg(directory, rows, predictions, p):
         out.append(f'<line x1="{x - 5}" y1="{yw}" x2="{x + 65}" y2="{yw}" stroke="black" stroke-dasharray="4"/>')
         out.append(f'<text x="{x + 30}" y="{y0 + 16}" text-anchor="middle">{label}</text>')
     for i, (name, colour) in enumerate(zip(names + ["wall (mpiexec)"], colours + ["black"])):
-        out.append(f'<rect x="{x0 + 10}" y="{y0 + 28 + 0 * i}" width="0" height="0"/>')
         out.append(f'<rect x="{x0 + i * 130 - 60}" y="{y0 + 30}" width="10" height="10" fill="{colour}"/>')
         out.append(f'<text x="{x0 + i * 130 - 46}" y="{y0 + 39}">{name}</text>')
     # Right: predicted seconds per iteration against ranks (log-log), per area scale, with and

@@ -280,6 +280,33 @@ void KeepOwnedSubfields(LightField& field, Reducer& reducer)
   }
 }
 
+std::unique_ptr<LightField> ReadOwnedSubfields(
+  const std::string& path, std::uint64_t memoryBudget, const Reducer& reducer)
+{
+  if (reducer.Size() <= 1)
+  {
+    return ReadSnapshot(path, memoryBudget);
+  }
+  const int ranks = reducer.Size();
+  const std::uint32_t rank = static_cast<std::uint32_t>(reducer.Rank());
+  return ReadSnapshot(path, memoryBudget, static_cast<std::size_t>(ranks),
+    [&](LightField& field)
+    {
+      if (field.HasSpecular())
+      {
+        throw std::invalid_argument(
+          "the light field has mirror surfaces, which move light between directions held by "
+          "different ranks: a distributed light field does not support them yet; run on one rank");
+      }
+      const std::vector<std::uint32_t> owner = BalanceDirections(field, ranks);
+      field.OwnedSubfields.assign(owner.size(), 0);
+      for (std::size_t k = 0; k < owner.size(); ++k)
+      {
+        field.OwnedSubfields[k] = owner[k] == rank;
+      }
+    });
+}
+
 std::string PackSubfield(const Subfield& f)
 {
   std::string out;

@@ -33,6 +33,7 @@
 #include <cstdint>
 #include <exception>
 #include <functional>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -114,6 +115,12 @@ std::vector<glm::vec3> GatherIrradiance(const LightField& field,
 
 // A field read whole (a snapshot) split among the ranks: keeps this rank's maps, frees the others.
 void KeepOwnedSubfields(LightField& field, Reducer& reducer);
+// A snapshot read by one rank of a distributed field (written by any number of ranks): only this
+// rank's maps are kept, the others read, checked and dropped one at a time (ReadSnapshot), so
+// that a resuming rank's memory is its share, not the whole field. Not collective (no message),
+// but a failure must be agreed (Agree) by the caller like any step that can fail on one rank.
+std::unique_ptr<LightField> ReadOwnedSubfields(
+  const std::string& path, std::uint64_t memoryBudget, const Reducer& reducer);
 
 // Subfield k's maps as bytes and back (snapshots and gathers of a distributed field).
 std::string PackSubfield(const Subfield& f);

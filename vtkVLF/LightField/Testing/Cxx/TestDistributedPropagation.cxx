@@ -161,6 +161,24 @@ int Equal(vtkMultiProcessController* controller, const std::string& dir)
       worstMap, WorstRelative(read->GetSubfield(k).Radiance, serial->GetSubfield(k).Radiance));
   }
   Check(worstMap <= 1e-5, "snapshot radiance maps (worst " + std::to_string(worstMap) + ")");
+  // Read as a resuming rank does: its own maps only, equal to the serial ones, the others empty.
+  std::unique_ptr<vlf::LightField> share = vlf::ReadOwnedSubfields(snapshot, 0, reducer);
+  Check(WorstRelative(share->TotalDiffuse, serial->TotalDiffuse) <= 1e-5, "share's textures");
+  for (std::size_t k = 0; k < share->SubfieldCount(); ++k)
+  {
+    const bool owns = field->OwnsSubfield(k);
+    Check(share->OwnsSubfield(k) == owns, "the share owns what the split gives this rank");
+    Check(owns ? share->GetSubfield(k).Radiance == read->GetSubfield(k).Radiance &&
+          share->GetSubfield(k).Depth == read->GetSubfield(k).Depth
+               : share->GetSubfield(k).Radiance.empty() && share->GetSubfield(k).Depth.empty(),
+      "the share's maps of direction " + std::to_string(k) + " (held iff owned)");
+  }
+  if (ranks > 1)
+  {
+    Check(2 * share->AllocatedBytes() < read->AllocatedBytes() + read->AllocatedBytes() / ranks,
+      "a share holds about 1/" + std::to_string(ranks) + " of the field: " +
+        std::to_string(share->AllocatedBytes()) + " of " + std::to_string(read->AllocatedBytes()));
+  }
 
   // Gathering (a movable object's points): the ranks' sums over their directions, reduced, equal
   // the serial gather over every direction; without the reduction a rank has its share only.
