@@ -28,7 +28,7 @@ mkdir -p "$out"
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
 runs="$out/vlf-mpi-runs.csv" speedup="$out/vlf-mpi-speedup.csv"
-echo "round,ranks,threads_per_rank,directions,rays,iterations,wall_s,trace_s,iterations_s,writes_s,iterations_in_mpi_s,max_rank_iteration_work_cpu_s,max_rank_cpu_s,sum_rank_cpu_s,max_rank_peak_rss_bytes,rank0_peak_rss_bytes,max_rank_held_bytes,reduced_bytes_per_iteration,max_rank_sent_bytes,rank0_peak_rss_after_trace_bytes" > "$runs"
+echo "round,ranks,threads_per_rank,directions,rays,iterations,wall_s,trace_s,iterations_s,writes_s,iterations_in_mpi_s,max_rank_iteration_work_cpu_s,max_rank_cpu_s,sum_rank_cpu_s,max_rank_peak_rss_bytes,rank0_peak_rss_bytes,max_rank_held_bytes,reduced_bytes_per_iteration,max_rank_sent_bytes,rank0_peak_rss_after_trace_bytes,snapshot_every" > "$runs"
 echo "round,directions,iterations_speedup,trace_and_iterations_speedup,wall_speedup,iteration_work_cpu_speedup" > "$speedup"
 # The largest of column $1 over the rank-report lines of a log.
 largest() { grep '^rank [0-9]*: trace' "$2" | awk -v c="$1" '{print $c}' | sort -g | tail -1; }
@@ -58,9 +58,9 @@ for round in $(seq 1 "$repeats"); do
     rss0=$(grep '^rank 0: trace' "$log" | awk '{print $30}')
     rss0_trace=$(grep '^rank 0: trace' "$log" | awk '{print $52}')
     reduced=$(sed -n 's/^MPI: [0-9]* ranks, \([0-9]*\) bytes.*/\1/p' "$log")
-    printf "%s,%s,%s,%s,%s,%s,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%s,%s,%s,%s,%s,%s\n" "$round" \
+    printf "%s,%s,%s,%s,%s,%s,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%s,%s,%s,%s,%s,%s,%s\n" "$round" \
       "$ranks" "$threads" "$directions" "$rays" "$iterations" "$seconds" "$trace" "$iter" "$writes" \
-      "$iter_mpi" "$own_cpu" "$cpu_max" "$cpu_sum" "$rss" "$rss0" "$held" "$reduced" "$sent" "$rss0_trace" | tee -a "$runs"
+      "$iter_mpi" "$own_cpu" "$cpu_max" "$cpu_sum" "$rss" "$rss0" "$held" "$reduced" "$sent" "$rss0_trace" "$every" | tee -a "$runs"
     it[$run]=$iter ti[$run]=$(echo "$trace + $iter" | bc -l) wall[$run]=$seconds wk[$run]=$own_cpu
   done
   printf "%s,%s,%.3f,%.3f,%.3f,%.3f\n" "$round" "$directions" \

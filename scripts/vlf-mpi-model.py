@@ -55,8 +55,10 @@ def fit(rows):
         [float(r["max_rank_peak_rss_bytes"]) - float(r["max_rank_held_bytes"]) for r in one])
     shared_two = statistics.median(
         [float(r["max_rank_peak_rss_bytes"]) - float(r["max_rank_held_bytes"]) for r in two])
-    write_one = min(col(one, "writes_s")) / iterations
-    write_two = min(col(two, "writes_s")) / iterations
+    every = int(one[0].get("snapshot_every") or 1)
+    writes = -(-iterations // every)  # after every `every`-th iteration and the last
+    write_one = min(col(one, "writes_s")) / writes
+    write_two = min(col(two, "writes_s")) / writes
     reduced = statistics.median(col(two, "reduced_bytes_per_iteration"))
     return {
         "directions": d,
