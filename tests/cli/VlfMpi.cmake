@@ -42,6 +42,10 @@ foreach (ranks IN ITEMS 2) # 3 ranks: the resume below
   if (NOT last_output MATCHES "split over ${ranks} MPI ranks")
     message(FATAL_ERROR "not distributed over ${ranks} ranks: ${last_output}")
   endif ()
+  # Ranks on one machine split its cores (VTK_SMP_MAX_THREADS unset here).
+  if (NOT DEFINED ENV{VTK_SMP_MAX_THREADS} AND NOT last_output MATCHES "[0-9]+ threads? per rank")
+    message(FATAL_ERROR "no thread count per rank: ${last_output}")
+  endif ()
   same_field("${WORK}/serial.vlf" "${WORK}/ranks-${ranks}.vlf" TRUE)
 endforeach ()
 # Written by 2 ranks, resumed by 3 (every rank reads it and keeps its share).

@@ -37,6 +37,7 @@
 #include <cstdint>
 #include <exception>
 #include <functional>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -135,15 +136,24 @@ std::vector<glm::vec3> RadianceLeaving(const LightField& field,
 
 // A field read whole (a snapshot) split among the ranks: keeps this rank's maps, frees the others.
 void KeepOwnedSubfields(LightField& field, Reducer& reducer);
+// A snapshot read by one rank of a distributed field (written by any number of ranks): only this
+// rank's maps are kept, the others read, checked and dropped one at a time (ReadSnapshot), so
+// that a resuming rank's memory is its share, not the whole field. Not collective (no message),
+// but a failure must be agreed (Agree) by the caller like any step that can fail on one rank.
+std::unique_ptr<LightField> ReadOwnedSubfields(
+  const std::string& path, std::uint64_t memoryBudget, const Reducer& reducer);
 
 // Subfield k's maps as bytes and back (snapshots and gathers of a distributed field).
 std::string PackSubfield(const Subfield& f);
 void UnpackSubfield(const std::string& bytes, Subfield& f);
 
-// Writes the snapshot of a distributed field: rank 0 writes, receiving each subfield it does not
-// own from its owner just when the file needs it (one subfield in memory at a time); the others
-// send theirs. Collective; failures agreed (every rank throws when the write failed).
-void WriteDistributedSnapshot(LightField& field, const std::string& path, Reducer& reducer);
+// Writes the snapshot of a distributed field: rank 0 writes, taking each subfield it does not
+// own from its owner just when the file needs it; the others send theirs in batches of a few MiB
+// (rank 0 holds at most one batch per rank, 64 MiB in all, and the subfield being written).
+// Collective; failures agreed (every rank throws when the write failed). batchBytes: 0 = that
+// default; any other value the batch size (tests).
+void WriteDistributedSnapshot(
+  LightField& field, const std::string& path, Reducer& reducer, std::size_t batchBytes = 0);
 // Gives rank 0 every subfield's maps (rank 0 then holds the complete field, as a serial one; the
 // others keep their share). Collective.
 void GatherSubfieldsToRoot(LightField& field, Reducer& reducer);

@@ -289,6 +289,9 @@ private:
   std::size_t BudgetShareRanks = 1; // Setup checks the budget against maps / this (Distribution.h)
   friend std::unique_ptr<LightField> ReadSnapshot(
     const std::string& path, std::uint64_t memoryBudget);
+  friend std::unique_ptr<LightField> ReadSnapshot(const std::string& path,
+    std::uint64_t memoryBudget, std::size_t shareRanks,
+    const std::function<void(LightField&)>& share);
   void TraceSubfield(std::size_t k, const EmbreeScene& embree);
 
   LightFieldSettings Config;

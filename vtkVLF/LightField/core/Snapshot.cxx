@@ -417,6 +417,21 @@ void RemoveStaleTemporaries(const std::string& path)
   }
   ::closedir(listing);
 }
+
+// A subfield's cells are numbers, and its radiance is light (finite, non-negative): what
+// ReadSnapshot checks of every map, here for one it reads and drops.
+bool CellsUsable(const Subfield& f)
+{
+  const auto finite = [](float x) { return std::isfinite(x); };
+  const auto light = [](const glm::vec3& x)
+  {
+    return std::isfinite(x.x) && std::isfinite(x.y) && std::isfinite(x.z) && x.x >= 0.0f &&
+      x.y >= 0.0f && x.z >= 0.0f;
+  };
+  return std::all_of(f.Depth.begin(), f.Depth.end(), finite) &&
+    std::all_of(f.Radiance.begin(), f.Radiance.end(), light) &&
+    std::all_of(f.UnshotSpecular.begin(), f.UnshotSpecular.end(), light);
+}
 } // namespace
 
 void WriteSnapshot(const LightField& field, const std::string& path)
@@ -481,6 +496,12 @@ void WriteSnapshot(const LightField& field, const std::string& path,
 }
 
 std::unique_ptr<LightField> ReadSnapshot(const std::string& path, std::uint64_t memoryBudget)
+{
+  return ReadSnapshot(path, memoryBudget, 1, {});
+}
+
+std::unique_ptr<LightField> ReadSnapshot(const std::string& path, std::uint64_t memoryBudget,
+  std::size_t shareRanks, const std::function<void(LightField&)>& share)
 {
   std::FILE* file = std::fopen(path.c_str(), "rb");
   if (!file)
@@ -625,6 +646,7 @@ std::unique_ptr<LightField> ReadSnapshot(const std::string& path, std::uint64_t 
   }
 
   std::unique_ptr<LightField> field(new LightField());
+  field->BudgetShareRanks = std::max<std::size_t>(1, shareRanks);
   try
   {
     field->Setup(scene, settings, /*normalize=*/false);
@@ -640,6 +662,10 @@ std::unique_ptr<LightField> ReadSnapshot(const std::string& path, std::uint64_t 
   field->Scale = scale;
   field->Centre = centre;
   field->IterationsDone = iterations;
+  if (share)
+  {
+    share(*field);
+  }
   const std::size_t texels = field->TexelCount();
   r.Array(field->TotalDiffuse, "total texels", texels);
   r.Array(field->UnshotDiffuse, "unshot texels", texels);
@@ -651,9 +677,14 @@ std::unique_ptr<LightField> ReadSnapshot(const std::string& path, std::uint64_t 
   const std::size_t cellsPerMap =
     static_cast<std::size_t>(settings.TileSide()) * settings.TileSide();
   const std::size_t surfaces = field->Surfaces().size();
+  // A subfield this process does not keep is read into `dropped`, checked like the others and
+  // emptied (the finite and sign checks below see only the kept ones).
+  Subfield dropped;
+  bool droppedOk = true;
   for (std::size_t k = 0; k < field->SubfieldCount(); ++k)
   {
-    Subfield& f = field->GetSubfield(k);
+    const bool keep = field->OwnsSubfield(k);
+    Subfield& f = keep ? field->GetSubfield(k) : dropped;
     r.Array(f.TileStart, "tile offsets", tiles + 1);
     const std::uint64_t entries = r.Count(sizeof(TileEntry), "tile entry");
     if (f.TileStart[0] != 0 || f.TileStart[tiles] != entries)
@@ -684,6 +715,15 @@ std::unique_ptr<LightField> ReadSnapshot(const std::string& path, std::uint64_t 
     r.Array(f.Radiance, "radiance cells", entries * cellsPerMap);
     r.Array(
       f.UnshotSpecular, "unshot specular cells", field->HasSpecular() ? entries * cellsPerMap : 0);
+    if (!keep)
+    {
+      droppedOk = droppedOk && CellsUsable(dropped);
+      dropped.TileStart.clear();
+      dropped.Entries.clear();
+      dropped.Depth.clear();
+      dropped.Radiance.clear();
+      dropped.UnshotSpecular.clear();
+    }
   }
   if (header.Version >= 2)
   {
@@ -724,8 +764,8 @@ std::unique_ptr<LightField> ReadSnapshot(const std::string& path, std::uint64_t 
   { return std::all_of(values, values + count, [](float x) { return std::isfinite(x); }); };
   const auto finiteVectors = [&](const std::vector<glm::vec3>& values)
   { return values.empty() || finite(&values[0].x, 3 * values.size()); };
-  bool ok = finiteVectors(field->TotalDiffuse) && finiteVectors(field->UnshotDiffuse) &&
-    finite(field->Capacity.data(), field->Capacity.size());
+  bool ok = droppedOk && finiteVectors(field->TotalDiffuse) &&
+    finiteVectors(field->UnshotDiffuse) && finite(field->Capacity.data(), field->Capacity.size());
   for (std::size_t k = 0; ok && k < field->SubfieldCount(); ++k)
   {
     const Subfield& f = field->GetSubfield(k);

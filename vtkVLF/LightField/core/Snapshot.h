@@ -51,6 +51,13 @@ void WriteSnapshot(const LightField& field, const std::string& path,
 // Throws SnapshotError for a missing, foreign, truncated, corrupt or incompatible file, and
 // MemoryBudgetError when the field does not fit the budget.
 std::unique_ptr<LightField> ReadSnapshot(const std::string& path, std::uint64_t memoryBudget = 0);
+// The same keeping the maps of some subfields only: share(field), called once the field's
+// structure is built and before any map is read, sets field.OwnedSubfields; the maps of the
+// others are read, checked (checksum, finite, non-negative) and dropped one at a time, so that a
+// rank resuming its share of a distributed field never holds the whole (Distribution.h). The
+// memory budget is checked against the maps / shareRanks.
+std::unique_ptr<LightField> ReadSnapshot(const std::string& path, std::uint64_t memoryBudget,
+  std::size_t shareRanks, const std::function<void(LightField&)>& share);
 
 // A snapshot file around any payload: the header with matching checksums, then `payload`. For
 // tests and the fuzz target (fuzz/snapshot.cxx), which reach the payload's checks past the

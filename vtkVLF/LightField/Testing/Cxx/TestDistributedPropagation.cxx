@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The distributed light field (Distribution.h) against the serial one, run under
-// `mpiexec -n N` (ctest runs it at 1, 2 and 3 ranks). Every rank also propagates the serial field
-// itself (the reference, independent of any reduction) and compares every texel.
+// `mpiexec -n N` (ctest runs it at 1, 2, 3, 4 and 8 ranks). Every rank also propagates the serial
+// field itself (the reference, independent of any reduction) and compares every texel.
 //
 //   TestDistributedPropagation equal DIR   distributed == serial (textures, energy, snapshot,
 //                                          gathered irradiance); without the reductions they
@@ -136,8 +136,15 @@ int Equal(vtkMultiProcessController* controller, const std::string& dir)
   vlf::PropagationOptions options;
   options.Reduce = &reducer;
   const std::string snapshot = dir + "/distributed-" + std::to_string(ranks) + ".vlf";
+  // Snapshot batches: the default (everything in one here), one subfield each, and several
+  // subfields each (the last, which is read back below).
+  const std::size_t batches[] = { 0, 1, 20000 };
   vlf::Propagate(*field, iterations, options,
-    [&](const vlf::LightField&) { vlf::WriteDistributedSnapshot(*field, snapshot, reducer); });
+    [&](const vlf::LightField& f)
+    {
+      vlf::WriteDistributedSnapshot(
+        *field, snapshot, reducer, batches[static_cast<std::size_t>(f.IterationsDone - 1) % 3]);
+    });
   const double worst = WorstRelative(field->TotalDiffuse, serial->TotalDiffuse);
   std::printf("rank %d of %d: worst relative texel difference %.3g (unshot %.3g)\n", Rank, ranks,
     worst, WorstRelative(field->UnshotDiffuse, serial->UnshotDiffuse));
@@ -161,6 +168,24 @@ int Equal(vtkMultiProcessController* controller, const std::string& dir)
       worstMap, WorstRelative(read->GetSubfield(k).Radiance, serial->GetSubfield(k).Radiance));
   }
   Check(worstMap <= 1e-5, "snapshot radiance maps (worst " + std::to_string(worstMap) + ")");
+  // Read as a resuming rank does: its own maps only, equal to the serial ones, the others empty.
+  std::unique_ptr<vlf::LightField> share = vlf::ReadOwnedSubfields(snapshot, 0, reducer);
+  Check(WorstRelative(share->TotalDiffuse, serial->TotalDiffuse) <= 1e-5, "share's textures");
+  for (std::size_t k = 0; k < share->SubfieldCount(); ++k)
+  {
+    const bool owns = field->OwnsSubfield(k);
+    Check(share->OwnsSubfield(k) == owns, "the share owns what the split gives this rank");
+    Check(owns ? share->GetSubfield(k).Radiance == read->GetSubfield(k).Radiance &&
+          share->GetSubfield(k).Depth == read->GetSubfield(k).Depth
+               : share->GetSubfield(k).Radiance.empty() && share->GetSubfield(k).Depth.empty(),
+      "the share's maps of direction " + std::to_string(k) + " (held iff owned)");
+  }
+  if (ranks > 1)
+  {
+    Check(2 * share->AllocatedBytes() < read->AllocatedBytes() + read->AllocatedBytes() / ranks,
+      "a share holds about 1/" + std::to_string(ranks) + " of the field: " +
+        std::to_string(share->AllocatedBytes()) + " of " + std::to_string(read->AllocatedBytes()));
+  }
 
   // Gathering (a movable object's points): the ranks' sums over their directions, reduced, equal
   // the serial gather over every direction; without the reduction a rank has its share only.
