@@ -19,6 +19,7 @@
 #include "RenderCommand.h"
 #include "TraceCommand.h"
 #include "VTKMessage.h"
+#include "VlfAccuracyBenchmark.h"
 #include "VlfCommand.h"
 #include "WalkthroughBenchmark.h"
 
@@ -124,6 +125,9 @@ const std::vector<mesolight::Command>& Commands()
         { "trace", "[options]", "rays/s (coherent vs incoherent), path samples/s",
           RunTraceBenchmark, {} },
         { "vlf", "[options]", "light field time, memory and accuracy sweep", RunVlfBenchmark, {} },
+        { "vlf-accuracy", "[options]",
+          "light field vs path tracer per pixel on five\nscenes: error, time, memory per setting",
+          RunVlfAccuracyBenchmark, {} },
         { "walkthrough", "[FIELD] [options]",
           "light field walkthrough: frame time per mode and\nstage (vtkLightFieldActor)",
           RunWalkthroughBenchmark, {} },
