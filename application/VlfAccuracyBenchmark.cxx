@@ -289,8 +289,9 @@ int RunVlfAccuracyBenchmark(const std::vector<std::string>& args)
     "per scene: auto, KxN (K directions, N lines per side) or KxNtF (texel F x the cell side)",
     "513x32,auto");
   cl.AddFlag("--full", "sweep more settings: 513x32,513x64,2049x32,2049x64,2049x64t0.5,auto,2049x96");
-  cl.AddValue("--size", "WxH", "compared image size", "96x96");
-  cl.AddValue("--samples", "N", "path-tracer paths per pixel of the reference (two halves)", "512");
+  cl.AddValue("--size", "WxH", "compared image size", "64x64");
+  cl.AddValue("--samples", "N",
+    "path-tracer paths per pixel of the reference (two halves; cached, so paid once)", "8192");
   cl.AddValue("--cache", "DIR", "where references are kept between runs", "vlf-accuracy-cache");
   cl.AddValue("--memory-budget", "GIB", "the fields' memory budget (auto uses half of it)", "4");
   cl.AddValue("--csv", "FILE", "write one row per scene, setting and filter");

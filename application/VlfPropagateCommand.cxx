@@ -60,9 +60,9 @@ int Propagate(const std::vector<std::string>& args)
     "virtual light field,\nwriting FIELD after every iteration.\n");
   cl.AddValue("--out", "FIELD", "light field snapshot to write after every iteration (required)");
   cl.AddValue("--directions", "N",
-    "directions: 2n^2+1, e.g. 513, 2049, 8193; auto: from the lines per side", "513");
+    "directions: 2n^2+1, e.g. 513, 2049, 8193; auto: from the lines per side", "auto");
   cl.AddValue("--rays", "N",
-    "lines per subfield side; auto: from the scene's small features, time and memory", "32");
+    "lines per subfield side; auto: from the scene's small features, time and memory", "auto");
   cl.AddValue("--tiles", "M", "tiles per subfield side (0 = rays / 8)", "0");
   cl.AddValue("--tolerance", "X",
     "shoot until at most this share of the emitted flux is left unshot", "0.01");

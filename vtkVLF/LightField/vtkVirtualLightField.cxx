@@ -560,8 +560,10 @@ vtkFloatArray* vtkVirtualLightField::GetAttachedAtlas(vtkDataObject* data, int s
 void vtkVirtualLightField::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Directions: " << this->Directions << "\n";
-  os << indent << "RaysPerSide: " << this->RaysPerSide << "\n";
+  os << indent << "Directions: " << this->Directions << (this->Directions == 0 ? " (automatic)" : "")
+     << "\n";
+  os << indent << "RaysPerSide: " << this->RaysPerSide
+     << (this->RaysPerSide == 0 ? " (automatic)" : "") << "\n";
   os << indent << "Tiles: " << this->Tiles << (this->Tiles == 0 ? " (RaysPerSide / 8)" : "")
      << "\n";
   os << indent << "Iterations: " << this->Iterations << "\n";

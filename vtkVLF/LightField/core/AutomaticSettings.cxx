@@ -95,26 +95,38 @@ AutomaticChoice ChooseAutomaticSettings(const TriangleScene& scene, const Automa
     wanted = static_cast<int>(std::min<double>(hi, std::ceil(n / 8.0) * 8.0));
   }
   choice.WantedRaysPerSide = wanted;
-  int rays = std::max(lo, wanted);
-  choice.Limit = wanted <= lo ? "minimum" : "features";
-  for (; rays > lo; rays -= 8)
+  const int preferred = std::min(hi, std::max(lo, limits.PreferredRaysPerSide / 8 * 8));
+  int rays = std::max(preferred, wanted);
+  choice.Limit = wanted <= preferred ? "the preferred minimum" : "features";
+  // From the most lines down: at each N first its own directions, then, where memory refused
+  // them, 513 (on the boxes of the benchmark 513 x 64 beat 2049 x 32 when memory allowed
+  // neither 2049 x 64 nor more).
+  LightFieldSettings chosen = SettingsFor(lo, limits.MemoryBudget);
+  bool found = false;
+  for (; rays >= lo && !found; rays -= 8)
   {
-    const LightFieldSettings s = SettingsFor(rays, limits.MemoryBudget);
-    if (static_cast<std::uint64_t>(s.Directions) * rays * rays > limits.MaxLines)
+    LightFieldSettings s = SettingsFor(rays, limits.MemoryBudget);
+    for (const std::size_t directions : { s.Directions, std::size_t(513) })
     {
-      choice.Limit = "line cap";
-      continue;
+      s.Directions = directions;
+      if (static_cast<std::uint64_t>(directions) * rays * rays > limits.MaxLines)
+      {
+        choice.Limit = "line cap";
+        break; // fewer lines per side, not fewer directions (513 only where memory asks)
+      }
+      const MemoryEstimate e = EstimateMemory(scene, s);
+      if (static_cast<double>(e.TotalBytes) >
+        limits.BudgetShare * static_cast<double>(limits.MemoryBudget))
+      {
+        choice.Limit = "memory budget";
+        continue;
+      }
+      chosen = s;
+      found = true;
+      break;
     }
-    const MemoryEstimate e = EstimateMemory(scene, s);
-    if (static_cast<double>(e.TotalBytes) >
-      limits.BudgetShare * static_cast<double>(limits.MemoryBudget))
-    {
-      choice.Limit = "memory budget";
-      continue;
-    }
-    break;
   }
-  choice.Settings = SettingsFor(rays, limits.MemoryBudget);
+  choice.Settings = chosen;
   return choice;
 }
 
@@ -139,7 +151,9 @@ AutomaticChoice ResolveAutomaticSettings(
   }
   if (s.Directions == 0)
   {
-    s.Directions = AutomaticDirections(s.RaysPerSide);
+    // Both automatic: the choice's (513 where memory asked); lines given: theirs.
+    s.Directions = requested.RaysPerSide == 0 ? choice.Settings.Directions
+                                               : AutomaticDirections(s.RaysPerSide);
   }
   if (s.TilesPerSide == 0)
   {

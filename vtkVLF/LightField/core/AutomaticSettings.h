@@ -4,20 +4,20 @@
 //
 // A face narrower than the line spacing h is crossed by a line of a given direction only by
 // chance, so what it receives is a lottery over the directions (Wither 2005 §3.6: the field's
-// error falls with the number of lines through a patch). The line count per face and
-// direction grows as (width / h)^2, so h follows the scene's small features: the width of a
-// triangle (its smallest altitude, 2 area / longest edge), area-weighted, at the 10th percentile
-// (a few slivers do not decide). h is the feature width over LinesPerFeature, and the line count
-// per side N = 2 / h in the field's unit sphere, rounded up to a multiple of 8 (tiles of 8 x 8).
+// error falls with the number of lines through a patch), and few directions leave bands and
+// round splats around small lights. Measured per pixel against the path tracer on the five
+// scenes of `mesolight bench vlf-accuracy` (docs/measurements/vlf/accuracy/), 2049 directions x
+// 64 x 64 lines gave about half the error of 513 x 32 x 32 on every scene, at about 10 times the
+// time and memory; so that is the least the automatic choice takes when the budget allows.
 //
-// Time and memory grow with the number of lines K N^2 (the maps hold one cell per line and
-// surface crossed), so N is then limited by MaxLines and by the memory budget (EstimateMemory
-// within BudgetShare of it). The directions follow N: a line spacing refined without more
-// directions leaves the angular sampling as coarse as before (bands and round splats around
-// small lights, whose light then reaches a receiver along few directions), so K grows with N
-// (513 up to 32 lines per side, 2049 from 48, 8193 from 128, when the line cap allows).
-// The texels stay the cell side: a texel receives about K/2 lines per cell area, and a smaller
-// texel is crossed by fewer of them (noisier, measured by `mesolight bench vlf-accuracy`).
+// Beyond it the scene's small features ask for more: the width of a triangle (its smallest
+// altitude, 2 area / longest edge), area-weighted, at the 10th percentile (a few slivers do not
+// decide); two lines across it per direction: N = diameter * 2 / width, a multiple of 8 (tiles
+// of 8 x 8 cells). Time and memory grow with the lines K N^2 (the maps hold one cell per line
+// and surface crossed), so N is limited by MaxLines and by the memory budget (EstimateMemory
+// within BudgetShare of it): from the most lines down, each N with its own directions
+// (AutomaticDirections), and with 513 where the memory budget refused those. The texels stay the cell side: half of it gave no better
+// error on the boxes (a texel is crossed by a quarter of the lines, noisier).
 #ifndef mesolight_vlf_AutomaticSettings_h
 #define mesolight_vlf_AutomaticSettings_h
 
@@ -36,6 +36,10 @@ struct AutomaticLimits
   std::uint64_t MemoryBudget = std::uint64_t(4) << 30; // bytes; the settings' budget
   double BudgetShare = 0.5;                             // of the budget the estimate may use
   std::uint64_t MaxLines = std::uint64_t(2049) * 64 * 64; // K N^2, time's proxy
+  // Lines per side for any scene when the budget allows (with 2049 directions): on the five
+  // scenes of `mesolight bench vlf-accuracy` 2049 x 64 x 64 halved the error of 513 x 32 x 32
+  // where the small features alone asked for no more. Below it only for memory, to MinRaysPerSide.
+  int PreferredRaysPerSide = 64;
   int MinRaysPerSide = 32;
   int MaxRaysPerSide = 256;
   double LinesPerFeature = 2.0; // lines across the small-feature width, per direction

@@ -4,7 +4,7 @@
 //    0.707) and twenty 1 x 0.01 strips on it (widths 0.01, 17% of the area): the area-weighted
 //    10th percentile is the strips' width. Without the strips (the negative) it is the emitter's.
 // 2. The strips ask for many lines; the line cap and a small memory budget each bring the choice
-//    down, and say so; the floor alone gets the minimum. Given values are kept as given.
+//    down, and say so; the floor alone gets the preferred 2049 x 64 x 64. Given values are kept.
 #include "AutomaticSettings.h"
 
 #include <gtest/gtest.h>
@@ -70,20 +70,36 @@ TEST(VLFAutomaticSettings, FeaturesAskCapsLimit)
   EXPECT_LE(static_cast<std::uint64_t>(c.Settings.Directions) * c.Settings.RaysPerSide *
       c.Settings.RaysPerSide,
     AutomaticLimits().MaxLines);
-  EXPECT_GE(c.Settings.RaysPerSide, 64);
+  // The line cap lowers the lines per side, never the directions.
+  EXPECT_EQ(c.Settings.RaysPerSide, 64);
+  EXPECT_EQ(c.Settings.Directions, 2049u);
+
+  // A budget between what 513 and 2049 directions at 64 lines need: 513 x 64 (memory lowers the
+  // directions first at the same lines).
+  LightFieldSettings at64 = c.Settings;
+  const std::uint64_t many = EstimateMemory(strips, at64).TotalBytes;
+  at64.Directions = 513;
+  const std::uint64_t few = EstimateMemory(strips, at64).TotalBytes;
+  ASSERT_LT(few, many);
+  limits = AutomaticLimits();
+  limits.MemoryBudget = few + many; // BudgetShare 0.5: the estimate may use (few + many) / 2
+  c = ChooseAutomaticSettings(strips, limits);
+  EXPECT_EQ(c.Limit, "memory budget") << c.Describe();
+  EXPECT_EQ(c.Settings.RaysPerSide, 64);
+  EXPECT_EQ(c.Settings.Directions, 513u);
 
   limits = AutomaticLimits();
-  limits.MemoryBudget = std::uint64_t(8) << 20; // 8 MiB: only the minimum fits (or not even it)
+  limits.MemoryBudget = std::uint64_t(8) << 20; // 8 MiB: only the minimum fits
   c = ChooseAutomaticSettings(strips, limits);
   EXPECT_EQ(c.Limit, "memory budget") << c.Describe();
   EXPECT_EQ(c.Settings.RaysPerSide, 32);
   EXPECT_EQ(c.Settings.Directions, 513u);
 
-  // The negative: big faces only ask for nothing beyond the minimum.
+  // The negative: big faces ask for nothing beyond the preferred lines.
   c = ChooseAutomaticSettings(Strips(false));
-  EXPECT_EQ(c.Limit, "minimum") << c.Describe();
-  EXPECT_EQ(c.Settings.RaysPerSide, 32);
-  EXPECT_EQ(c.Settings.Directions, 513u);
+  EXPECT_EQ(c.Limit, "the preferred minimum") << c.Describe();
+  EXPECT_EQ(c.Settings.RaysPerSide, 64);
+  EXPECT_EQ(c.Settings.Directions, 2049u);
 
   EXPECT_THROW(ChooseAutomaticSettings(TriangleScene()), std::invalid_argument);
 }
