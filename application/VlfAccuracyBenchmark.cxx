@@ -119,8 +119,8 @@ double Sum3(const float* v)
 
 struct PixelError
 {
-  std::size_t Pixels = 0;      // lit pixels compared
-  double Mean = 0.0;           // mean |field - ref| / ref
+  std::size_t Pixels = 0; // lit pixels compared
+  double Mean = 0.0;      // mean |field - ref| / ref
   double P95 = 0.0;
   double Black = 0.0;          // share of lit pixels where the field is below 10% of ref
   double ReferenceNoise = 0.0; // mean |a - b| / (a + b): the reference's own relative error
@@ -132,15 +132,16 @@ double Percentile(std::vector<double> v, double q)
   {
     return 0.0;
   }
-  const std::size_t k = std::min(v.size() - 1, static_cast<std::size_t>(q * static_cast<double>(v.size())));
+  const std::size_t k =
+    std::min(v.size() - 1, static_cast<std::size_t>(q * static_cast<double>(v.size())));
   std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(k), v.end());
   return v[k];
 }
 
 // Lit pixels: reference above 1% of the mean over the compared pixels (shadows so deep that a
 // relative error means nothing are left out; black-where-lit counts the rest).
-PixelError Compare(const std::vector<PixelHit>& hits, const RgbImage& field, const RgbImage& a,
-  const RgbImage& b)
+PixelError Compare(
+  const std::vector<PixelHit>& hits, const RgbImage& field, const RgbImage& a, const RgbImage& b)
 {
   double mean = 0.0;
   std::size_t n = 0;
@@ -284,11 +285,13 @@ int RunVlfAccuracyBenchmark(const std::vector<std::string>& args)
     "a room lit\nindirectly, a ribbed corridor, thin panels near walls, the Cornell box), per "
     "resolution setting:\npropagation time, memory, field size, mean / p95 relative error, "
     "black-where-lit pixels,\nwithout and with the bilateral texture filter.\n");
-  cl.AddValue("--scenes", "LIST", "boxes,room,corridor,thin,cornell", "boxes,room,corridor,thin,cornell");
+  cl.AddValue(
+    "--scenes", "LIST", "boxes,room,corridor,thin,cornell", "boxes,room,corridor,thin,cornell");
   cl.AddValue("--settings", "LIST",
     "per scene: auto, KxN (K directions, N lines per side) or KxNtF (texel F x the cell side)",
     "513x32,auto");
-  cl.AddFlag("--full", "sweep more settings: 513x32,513x64,2049x32,2049x64,2049x64t0.5,auto,2049x96");
+  cl.AddFlag(
+    "--full", "sweep more settings: 513x32,513x64,2049x32,2049x64,2049x64t0.5,auto,2049x96");
   cl.AddValue("--size", "WxH", "compared image size", "64x64");
   cl.AddValue("--samples", "N",
     "path-tracer paths per pixel of the reference (two halves; cached, so paid once)", "8192");
@@ -346,8 +349,8 @@ int RunVlfAccuracyBenchmark(const std::vector<std::string>& args)
     }
     const EmbreeScene embree(s.Scene);
     const std::vector<PixelHit> hits = PrimaryHits(s, embree, width, height);
-    std::printf("# %s: %s, %zu triangles\n", name.c_str(), s.Description.c_str(),
-      s.Scene.TriangleCount());
+    std::printf(
+      "# %s: %s, %zu triangles\n", name.c_str(), s.Description.c_str(), s.Scene.TriangleCount());
     std::fflush(stdout);
     RgbImage a, b;
     const std::string key = cache + "/" + name + "-" + SceneDigest(s) + "-" +
@@ -362,7 +365,8 @@ int RunVlfAccuracyBenchmark(const std::vector<std::string>& args)
       b = ReferenceHalf(s, embree, hits, width, height, samples / 2, 2);
       std::printf("# %s: path-traced reference, %d paths per pixel, %.1f s (cached in %s-*.exr)\n",
         name.c_str(), samples, SecondsSince(start), key.c_str());
-      if (!WriteLinearImage(a, key + "-a.exr", error) || !WriteLinearImage(b, key + "-b.exr", error))
+      if (!WriteLinearImage(a, key + "-a.exr", error) ||
+        !WriteLinearImage(b, key + "-b.exr", error))
       {
         std::cerr << "mesolight bench vlf-accuracy: " << error << "\n";
       }
@@ -404,8 +408,8 @@ int RunVlfAccuracyBenchmark(const std::vector<std::string>& args)
           const PixelError e = Compare(hits, image, a, b);
           if (!cl.Get("--images").empty())
           {
-            const std::string base = cl.Get("--images") + "/" + name + "-" + text +
-              (filtered ? "-filtered" : "");
+            const std::string base =
+              cl.Get("--images") + "/" + name + "-" + text + (filtered ? "-filtered" : "");
             WriteLinearImage(image, base + ".exr", error);
           }
           std::printf("%-9s %-12s %6zu %4d %8.3f %9.3g %7d %7.1f %8s %9s %5.1f%% %6.1f%% %5.2f%% "
@@ -417,12 +421,11 @@ int RunVlfAccuracyBenchmark(const std::vector<std::string>& args)
           std::fflush(stdout);
           csv << name << ',' << text << ',' << settings.Directions << ',' << settings.RaysPerSide
               << ',' << settings.TilesPerSide << ',' << texelWorld << ',' << lines << ','
-              << field->Surfaces().size() << ',' << field->TexelCount() << ','
-              << estimate.MapCells << ',' << field->IterationsDone << ',' << build << ','
-              << propagate << ',' << build + propagate << ',' << allocated << ','
-              << estimate.TotalBytes << ',' << (filtered ? "bilateral" : "none") << ','
-              << e.Pixels << ',' << e.Mean << ',' << e.P95 << ',' << e.Black << ','
-              << e.ReferenceNoise << '\n';
+              << field->Surfaces().size() << ',' << field->TexelCount() << ',' << estimate.MapCells
+              << ',' << field->IterationsDone << ',' << build << ',' << propagate << ','
+              << build + propagate << ',' << allocated << ',' << estimate.TotalBytes << ','
+              << (filtered ? "bilateral" : "none") << ',' << e.Pixels << ',' << e.Mean << ','
+              << e.P95 << ',' << e.Black << ',' << e.ReferenceNoise << '\n';
           if (filtered == 0)
           {
             ChartSeries& cs = series[name];
@@ -461,7 +464,8 @@ int RunVlfAccuracyBenchmark(const std::vector<std::string>& args)
   if (!cl.Get("--plot").empty())
   {
     ScatterChart chart;
-    chart.Title = "Light field vs path tracer: mean per-pixel relative error vs build + propagation time";
+    chart.Title =
+      "Light field vs path tracer: mean per-pixel relative error vs build + propagation time";
     chart.XLabel = "build + propagation seconds";
     chart.YLabel = "mean relative error per pixel (%)";
     chart.LogY = true;

@@ -63,7 +63,8 @@ void Box(TriangleScene& scene, glm::vec3 lower, glm::vec3 upper, std::uint32_t m
   const glm::vec3 size = upper - lower;
   const glm::vec3 ex(std::cos(r), 0.0f, -std::sin(r)), ez(std::sin(r), 0.0f, std::cos(r));
   const glm::vec3 centre = 0.5f * (lower + upper);
-  const glm::vec3 o = glm::vec3(centre.x, lower.y, centre.z) - 0.5f * size.x * ex - 0.5f * size.z * ez;
+  const glm::vec3 o =
+    glm::vec3(centre.x, lower.y, centre.z) - 0.5f * size.x * ex - 0.5f * size.z * ez;
   // ec is the vertical edge, so "bottom" is the face at y = lower.y.
   Slab(scene, o, size.x * ex, size.z * ez, glm::vec3(0.0f, size.y, 0.0f), material, false, bottom);
 }
@@ -89,8 +90,7 @@ AccuracyScene Boxes()
   const std::uint32_t colours[3] = { t.AddMaterial(Diffuse("white", glm::vec3(0.8f))),
     t.AddMaterial(Diffuse("orange", glm::vec3(0.7f, 0.4f, 0.15f))),
     t.AddMaterial(Diffuse("blue", glm::vec3(0.2f, 0.3f, 0.65f))) };
-  const std::uint32_t lamp =
-    t.AddMaterial(Diffuse("lamp", glm::vec3(0.8f), glm::vec3(8.0f)));
+  const std::uint32_t lamp = t.AddMaterial(Diffuse("lamp", glm::vec3(0.8f), glm::vec3(8.0f)));
   Quad(t, { -5, 0, -5 }, { 5, 0, -5 }, { 5, 0, 5 }, { -5, 0, 5 }, { 0, 1, 0 }, floor);
   for (int i = 0; i < 30; ++i)
   {
@@ -98,9 +98,11 @@ AccuracyScene Boxes()
     {
       const float side = 0.08f + 0.12f * Hash(i, j, 1);
       const float height = 0.04f + 0.3f * Hash(i, j, 2);
-      const float x = -4.35f + 0.3f * static_cast<float>(i), z = -4.35f + 0.3f * static_cast<float>(j);
-      Box(t, { x - 0.5f * side, 0.0f, z - 0.5f * side }, { x + 0.5f * side, height, z + 0.5f * side },
-        colours[(i + 2 * j) % 3], 90.0f * Hash(i, j, 3), false);
+      const float x = -4.35f + 0.3f * static_cast<float>(i),
+                  z = -4.35f + 0.3f * static_cast<float>(j);
+      Box(t, { x - 0.5f * side, 0.0f, z - 0.5f * side },
+        { x + 0.5f * side, height, z + 0.5f * side }, colours[(i + 2 * j) % 3],
+        90.0f * Hash(i, j, 3), false);
     }
   }
   Quad(t, { -1, 3.5f, -1 }, { 1, 3.5f, -1 }, { 1, 3.5f, 1 }, { -1, 3.5f, 1 }, { 0, -1, 0 }, lamp);
@@ -114,7 +116,8 @@ AccuracyScene Room()
 {
   AccuracyScene s;
   s.Name = "room";
-  s.Description = "a furnished room lit indirectly by an uplight on a wardrobe (thin shelves, tilted panel)";
+  s.Description =
+    "a furnished room lit indirectly by an uplight on a wardrobe (thin shelves, tilted panel)";
   TriangleScene& t = s.Scene;
   const std::uint32_t white = t.AddMaterial(Diffuse("white", glm::vec3(0.75f)));
   const std::uint32_t floor = t.AddMaterial(Diffuse("floor", { 0.55f, 0.42f, 0.3f }));
@@ -276,7 +279,8 @@ AccuracyScene MakeAccuracyScene(const std::string& name)
   {
     return Cornell();
   }
-  throw std::invalid_argument("unknown scene '" + name + "' (boxes, room, corridor, thin, cornell)");
+  throw std::invalid_argument(
+    "unknown scene '" + name + "' (boxes, room, corridor, thin, cornell)");
 }
 
 } // namespace mesolight

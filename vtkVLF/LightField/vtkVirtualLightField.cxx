@@ -560,8 +560,8 @@ vtkFloatArray* vtkVirtualLightField::GetAttachedAtlas(vtkDataObject* data, int s
 void vtkVirtualLightField::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Directions: " << this->Directions << (this->Directions == 0 ? " (automatic)" : "")
-     << "\n";
+  os << indent << "Directions: " << this->Directions
+     << (this->Directions == 0 ? " (automatic)" : "") << "\n";
   os << indent << "RaysPerSide: " << this->RaysPerSide
      << (this->RaysPerSide == 0 ? " (automatic)" : "") << "\n";
   os << indent << "Tiles: " << this->Tiles << (this->Tiles == 0 ? " (RaysPerSide / 8)" : "")

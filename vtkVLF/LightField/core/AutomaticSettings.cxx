@@ -47,8 +47,7 @@ float SmallFeatureWidth(const TriangleScene& scene)
   {
     const glm::vec3 a = scene.Vertex(t, 0), b = scene.Vertex(t, 1), c = scene.Vertex(t, 2);
     const double area = 0.5 * static_cast<double>(glm::length(glm::cross(b - a, c - a)));
-    const float longest =
-      std::max({ glm::length(b - a), glm::length(c - b), glm::length(a - c) });
+    const float longest = std::max({ glm::length(b - a), glm::length(c - b), glm::length(a - c) });
     if (!(area > 0.0) || !(longest > 0.0f))
     {
       continue;
@@ -152,8 +151,8 @@ AutomaticChoice ResolveAutomaticSettings(
   if (s.Directions == 0)
   {
     // Both automatic: the choice's (513 where memory asked); lines given: theirs.
-    s.Directions = requested.RaysPerSide == 0 ? choice.Settings.Directions
-                                               : AutomaticDirections(s.RaysPerSide);
+    s.Directions =
+      requested.RaysPerSide == 0 ? choice.Settings.Directions : AutomaticDirections(s.RaysPerSide);
   }
   if (s.TilesPerSide == 0)
   {

@@ -7,8 +7,8 @@
 // error falls with the number of lines through a patch), and few directions leave bands and
 // round splats around small lights. Measured per pixel against the path tracer on the five
 // scenes of `mesolight bench vlf-accuracy` (docs/measurements/vlf/accuracy/), 2049 directions x
-// 64 x 64 lines gave about half the error of 513 x 32 x 32 on every scene, at about 10 times the
-// time and memory; so that is the least the automatic choice takes when the budget allows.
+// 64 x 64 lines gave 0.4-0.7 times the mean error of 513 x 32 x 32 on every scene, at 4-15 times
+// the time and memory; so that is the least the automatic choice takes when the budget allows.
 //
 // Beyond it the scene's small features ask for more: the width of a triangle (its smallest
 // altitude, 2 area / longest edge), area-weighted, at the 10th percentile (a few slivers do not
@@ -16,8 +16,9 @@
 // of 8 x 8 cells). Time and memory grow with the lines K N^2 (the maps hold one cell per line
 // and surface crossed), so N is limited by MaxLines and by the memory budget (EstimateMemory
 // within BudgetShare of it): from the most lines down, each N with its own directions
-// (AutomaticDirections), and with 513 where the memory budget refused those. The texels stay the cell side: half of it gave no better
-// error on the boxes (a texel is crossed by a quarter of the lines, noisier).
+// (AutomaticDirections), and with 513 where the memory budget refused those. The texels stay the
+// cell side: half of it gave no better error on the boxes (a texel is crossed by a quarter of the
+// lines, noisier).
 #ifndef mesolight_vlf_AutomaticSettings_h
 #define mesolight_vlf_AutomaticSettings_h
 
@@ -33,12 +34,13 @@ namespace vlf
 
 struct AutomaticLimits
 {
-  std::uint64_t MemoryBudget = std::uint64_t(4) << 30; // bytes; the settings' budget
-  double BudgetShare = 0.5;                             // of the budget the estimate may use
+  std::uint64_t MemoryBudget = std::uint64_t(4) << 30;    // bytes; the settings' budget
+  double BudgetShare = 0.5;                               // of the budget the estimate may use
   std::uint64_t MaxLines = std::uint64_t(2049) * 64 * 64; // K N^2, time's proxy
   // Lines per side for any scene when the budget allows (with 2049 directions): on the five
-  // scenes of `mesolight bench vlf-accuracy` 2049 x 64 x 64 halved the error of 513 x 32 x 32
-  // where the small features alone asked for no more. Below it only for memory, to MinRaysPerSide.
+  // scenes of `mesolight bench vlf-accuracy` 2049 x 64 x 64 cut the error of 513 x 32 x 32 by
+  // 30-60% where the small features alone asked for no more. Below it only for memory, to
+  // MinRaysPerSide.
   int PreferredRaysPerSide = 64;
   int MinRaysPerSide = 32;
   int MaxRaysPerSide = 256;
@@ -48,10 +50,10 @@ struct AutomaticLimits
 struct AutomaticChoice
 {
   LightFieldSettings Settings;
-  float SceneDiameter = 0.0f; // world units: the bounding box's diagonal
-  float FeatureWidth = 0.0f;  // world units: area-weighted 10th percentile of triangle widths
-  int WantedRaysPerSide = 0;  // what the features ask for, before the caps
-  std::string Limit;          // "features", "line cap", "memory budget" or "minimum"
+  float SceneDiameter = 0.0f;   // world units: the bounding box's diagonal
+  float FeatureWidth = 0.0f;    // world units: area-weighted 10th percentile of triangle widths
+  int WantedRaysPerSide = 0;    // what the features ask for, before the caps
+  std::string Limit;            // "features", "line cap", "memory budget" or "minimum"
   std::string Describe() const; // "2049 directions x 64 x 64 lines (features 0.1 m ask 296; ...)"
 };
 

@@ -33,7 +33,8 @@ TriangleScene Strips(bool withStrips)
   for (int i = 0; withStrips && i < 20; ++i)
   {
     const float y = 0.025f + 0.05f * static_cast<float>(i);
-    scene.AddPolygon({ { 0, y, 0.01f }, { 1, y, 0.01f }, { 1, y + 0.01f, 0.01f }, { 0, y + 0.01f, 0.01f } }, g);
+    scene.AddPolygon(
+      { { 0, y, 0.01f }, { 1, y, 0.01f }, { 1, y + 0.01f, 0.01f }, { 0, y + 0.01f, 0.01f } }, g);
   }
   return scene;
 }
@@ -55,7 +56,8 @@ TEST(VLFAutomaticSettings, FeaturesAskCapsLimit)
   AutomaticLimits limits;
   limits.MaxLines = std::uint64_t(1) << 40; // no line cap
   limits.MaxRaysPerSide = 4096;
-  limits.MemoryBudget = std::uint64_t(1) << 40; // nor a memory limit (the estimate allocates nothing)
+  limits.MemoryBudget = std::uint64_t(1)
+    << 40; // nor a memory limit (the estimate allocates nothing)
   AutomaticChoice c = ChooseAutomaticSettings(strips, limits);
   // diameter sqrt(1 + 1 + 0.25) = 1.5, 2 lines per 0.01: 300, rounded up to a multiple of 8.
   EXPECT_EQ(c.WantedRaysPerSide, 304) << c.Describe();
