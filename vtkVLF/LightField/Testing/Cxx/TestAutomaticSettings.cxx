@@ -67,27 +67,27 @@ TEST(VLFAutomaticSettings, FeaturesAskCapsLimit)
   EXPECT_EQ(c.Settings.TilesPerSide, 38);
   EXPECT_TRUE(c.Settings.Validate().empty());
 
-  c = ChooseAutomaticSettings(strips); // default line cap: 2049 x 64^2
+  c = ChooseAutomaticSettings(strips); // default line cap: 2049 x 96^2
   EXPECT_EQ(c.Limit, "line cap") << c.Describe();
   EXPECT_LE(static_cast<std::uint64_t>(c.Settings.Directions) * c.Settings.RaysPerSide *
       c.Settings.RaysPerSide,
     AutomaticLimits().MaxLines);
   // The line cap lowers the lines per side, never the directions.
-  EXPECT_EQ(c.Settings.RaysPerSide, 64);
+  EXPECT_EQ(c.Settings.RaysPerSide, 96);
   EXPECT_EQ(c.Settings.Directions, 2049u);
 
-  // A budget between what 513 and 2049 directions at 64 lines need: 513 x 64 (memory lowers the
+  // A budget between what 513 and 2049 directions at 96 lines need: 513 x 96 (memory lowers the
   // directions first at the same lines).
-  LightFieldSettings at64 = c.Settings;
-  const std::uint64_t many = EstimateMemory(strips, at64).TotalBytes;
-  at64.Directions = 513;
-  const std::uint64_t few = EstimateMemory(strips, at64).TotalBytes;
+  LightFieldSettings at96 = c.Settings;
+  const std::uint64_t many = EstimateMemory(strips, at96).TotalBytes;
+  at96.Directions = 513;
+  const std::uint64_t few = EstimateMemory(strips, at96).TotalBytes;
   ASSERT_LT(few, many);
   limits = AutomaticLimits();
   limits.MemoryBudget = few + many; // BudgetShare 0.5: the estimate may use (few + many) / 2
   c = ChooseAutomaticSettings(strips, limits);
   EXPECT_EQ(c.Limit, "memory budget") << c.Describe();
-  EXPECT_EQ(c.Settings.RaysPerSide, 64);
+  EXPECT_EQ(c.Settings.RaysPerSide, 96);
   EXPECT_EQ(c.Settings.Directions, 513u);
 
   limits = AutomaticLimits();
