@@ -382,6 +382,7 @@ int RunVlfAccuracyBenchmark(const std::vector<std::string>& args)
       if (!note.empty())
       {
         std::printf("# %s auto: %s\n", name.c_str(), note.c_str());
+        std::fflush(stdout);
       }
       try
       {

@@ -102,6 +102,9 @@ AutomaticChoice ChooseAutomaticSettings(const TriangleScene& scene, const Automa
   // neither 2049 x 64 nor more).
   LightFieldSettings chosen = SettingsFor(lo, limits.MemoryBudget);
   bool found = false;
+  MemoryEstimate first; // the first exact estimate, scaled to screen the others
+  int firstRays = 0;
+  double firstLines = 0.0;
   for (; rays >= lo && !found; rays -= 8)
   {
     LightFieldSettings s = SettingsFor(rays, limits.MemoryBudget);
@@ -113,9 +116,30 @@ AutomaticChoice ChooseAutomaticSettings(const TriangleScene& scene, const Automa
         choice.Limit = "line cap";
         break; // fewer lines per side, not fewer directions (513 only where memory asks)
       }
+      // An estimate costs directions x triangles (long for a large scene), so candidates are
+      // screened by scaling the first one -- maps grow as K N^2, textures as N^2 -- and only
+      // those predicted to fit are estimated exactly.
+      const double share = limits.BudgetShare * static_cast<double>(limits.MemoryBudget);
+      if (first.TotalBytes > 0)
+      {
+        const double lines = static_cast<double>(directions) * rays * rays;
+        const double side = static_cast<double>(rays) / firstRays;
+        const double predicted = static_cast<double>(first.MapBytes) * lines / firstLines +
+          static_cast<double>(first.TextureBytes) * side * side;
+        if (predicted > 1.25 * share)
+        {
+          choice.Limit = "memory budget";
+          continue;
+        }
+      }
       const MemoryEstimate e = EstimateMemory(scene, s);
-      if (static_cast<double>(e.TotalBytes) >
-        limits.BudgetShare * static_cast<double>(limits.MemoryBudget))
+      if (first.TotalBytes == 0)
+      {
+        first = e;
+        firstRays = rays;
+        firstLines = static_cast<double>(directions) * rays * rays;
+      }
+      if (static_cast<double>(e.TotalBytes) > share)
       {
         choice.Limit = "memory budget";
         continue;
