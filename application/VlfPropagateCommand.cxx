@@ -7,6 +7,7 @@
 #include "OutputFile.h"
 #include "Timing.h"
 
+#include "AutomaticSettings.h"
 #include "Distribution.h"
 #include "LightField.h"
 #include "MemoryBudget.h"
@@ -174,8 +175,10 @@ int Propagate(const std::vector<std::string>& args)
     "Propagates the scene's light (the built-in Cornell box without SCENE) into a "
     "virtual light field,\nwriting FIELD after every iteration.\n");
   cl.AddValue("--out", "FIELD", "light field snapshot to write after every iteration (required)");
-  cl.AddValue("--directions", "N", "directions: 2n^2+1, e.g. 513, 2049, 8193", "513");
-  cl.AddValue("--rays", "N", "lines per subfield side", "32");
+  cl.AddValue("--directions", "N",
+    "directions: 2n^2+1, e.g. 513, 2049, 8193; auto: from the lines per side", "auto");
+  cl.AddValue("--rays", "N",
+    "lines per subfield side; auto: from the scene's small features, time and memory", "auto");
   cl.AddValue("--tiles", "M", "tiles per subfield side (0 = rays / 8)", "0");
   cl.AddValue("--tolerance", "X",
     "shoot until at most this share of the emitted flux is left unshot", "0.01");
@@ -203,8 +206,11 @@ int Propagate(const std::vector<std::string>& args)
   }
   int directions = 0, rays = 0, tiles = 0, iterations = -1, maxIterations = 0, snapshotEvery = 1;
   double budget = 0.0, tolerance = 0.0;
-  if (!cl.GetInt("--directions", 3, 1 << 26, directions, error) ||
-    !cl.GetInt("--rays", 1, 4096, rays, error) || !cl.GetInt("--tiles", 0, 4096, tiles, error) ||
+  // "auto" is 0: vlf::ResolveAutomaticSettings chooses once the scene is read.
+  const auto getCount = [&](const char* name, int low, int high, int& value)
+  { return cl.Get(name) == "auto" ? (value = 0, true) : cl.GetInt(name, low, high, value, error); };
+  if (!getCount("--directions", 3, 1 << 26, directions) || !getCount("--rays", 1, 4096, rays) ||
+    !cl.GetInt("--tiles", 0, 4096, tiles, error) ||
     (cl.Has("--iterations") && !cl.GetInt("--iterations", 0, 10000, iterations, error)) ||
     !cl.GetDouble("--tolerance", 1e-9, 0.999, tolerance, error) ||
     !cl.GetInt("--max-iterations", 1, 10000, maxIterations, error) ||
@@ -326,7 +332,7 @@ int Propagate(const std::vector<std::string>& args)
       // silently ignored, so they are refused, naming both.
       const vlf::LightFieldSettings& stored = field->Settings();
       const int storedRays = stored.RaysPerSide;
-      const int givenRays = cl.Has("--rays") ? rays : storedRays;
+      const int givenRays = cl.Has("--rays") && rays > 0 ? rays : storedRays;
       const struct
       {
         const char* Option;
@@ -337,7 +343,7 @@ int Propagate(const std::vector<std::string>& args)
         { "--tiles", tiles > 0 ? tiles : std::max(1, givenRays / 8), stored.TilesPerSide } };
       for (const auto& check : checks)
       {
-        if (cl.Has(check.Option) && check.Given != check.Stored)
+        if (cl.Has(check.Option) && cl.Get(check.Option) != "auto" && check.Given != check.Stored)
         {
           return cl.UsageError(std::string("--resume: ") + check.Option + " " +
             cl.Get(check.Option) + " differs from the " + std::to_string(check.Stored) +
@@ -383,12 +389,19 @@ int Propagate(const std::vector<std::string>& args)
       vlf::LightFieldSettings settings;
       settings.Directions = static_cast<std::size_t>(directions);
       settings.RaysPerSide = rays;
-      settings.TilesPerSide = tiles > 0 ? tiles : std::max(1, rays / 8);
+      settings.TilesPerSide = tiles;
       settings.MemoryBudget = budgetBytes;
+      const vlf::AutomaticChoice choice = vlf::ResolveAutomaticSettings(scene, settings);
+      settings = choice.Settings;
+      if (rays == 0)
+      {
+        std::cout << "automatic resolution: " << choice.Describe() << "\n";
+      }
       const vlf::MemoryEstimate estimate =
         distributed ? vlf::MemoryEstimate() : vlf::EstimateMemory(scene, settings);
-      std::cout << "light field: " << directions << " directions x " << rays << "x" << rays
-                << " rays, " << settings.TilesPerSide << "x" << settings.TilesPerSide << " tiles";
+      std::cout << "light field: " << settings.Directions << " directions x "
+                << settings.RaysPerSide << "x" << settings.RaysPerSide << " rays, "
+                << settings.TilesPerSide << "x" << settings.TilesPerSide << " tiles";
       if (distributed)
       {
         std::cout << ", directions split over " << reducer.Size() << " MPI ranks";

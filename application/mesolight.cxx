@@ -19,6 +19,7 @@
 #include "RenderCommand.h"
 #include "TraceCommand.h"
 #include "VTKMessage.h"
+#include "VlfAccuracyBenchmark.h"
 #include "VlfCommand.h"
 #include "VlfReliefBenchmark.h"
 #include "WalkthroughBenchmark.h"
@@ -128,6 +129,9 @@ const std::vector<mesolight::Command>& Commands()
         { "trace", "[options]", "rays/s (coherent vs incoherent), path samples/s",
           RunTraceBenchmark, {} },
         { "vlf", "[options]", "light field time, memory and accuracy sweep", RunVlfBenchmark, {} },
+        { "vlf-accuracy", "[options]",
+          "light field vs path tracer per pixel on five\nscenes: error, time, memory per setting",
+          RunVlfAccuracyBenchmark, {} },
         { "vlf-relief", "--reference REF.exr --mask M.exr --images ..",
           "a relief lit by the light field vs the path-traced\ndense mesh; negative cases, cost",
           RunVlfReliefBenchmark, {} },

@@ -2,6 +2,7 @@
 #include "vtkVirtualLightField.h"
 #include "vtkVirtualLightFieldCore.h"
 
+#include "AutomaticSettings.h"
 #include "Distribution.h"
 #include "LightField.h"
 #include "Lookup.h"
@@ -187,16 +188,17 @@ int vtkVirtualLightField::RequestData(
                                            << this->MaxIterations << ") in [1, 10000].");
     return 0;
   }
-  if (this->Directions < 1 || this->MemoryBudget <= 0)
+  if (this->Directions < 0 || this->RaysPerSide < 0 || this->MemoryBudget <= 0)
   {
-    vtkErrorMacro("Directions (" << this->Directions << ") and MemoryBudget (" << this->MemoryBudget
-                                 << ") must be positive.");
+    vtkErrorMacro("Directions (" << this->Directions << ") and RaysPerSide (" << this->RaysPerSide
+                                 << ") must be positive or 0 (automatic), MemoryBudget ("
+                                 << this->MemoryBudget << ") positive.");
     return 0;
   }
   vlf::LightFieldSettings settings;
   settings.Directions = static_cast<std::size_t>(this->Directions);
   settings.RaysPerSide = this->RaysPerSide;
-  settings.TilesPerSide = this->Tiles > 0 ? this->Tiles : std::max(1, this->RaysPerSide / 8);
+  settings.TilesPerSide = this->Tiles;
   settings.MemoryBudget = static_cast<std::uint64_t>(this->MemoryBudget);
 
   const bool snapshots = !this->SnapshotFileName.empty();
@@ -218,6 +220,7 @@ int vtkVirtualLightField::RequestData(
     }
     else
     {
+      settings = vlf::ResolveAutomaticSettings(scene, settings).Settings;
       field = vlf::LightField::Build(
         scene, settings, mesolight::AlgorithmProgress(this, 0.0, buildShare));
     }
@@ -451,14 +454,17 @@ int vtkVirtualLightField::RequestDistributedData(vtkPolyData* input, vtkPolyData
           throw std::invalid_argument("ConvergenceTolerance must be in (0, 1) and MaxIterations "
                                       "in [1, 10000]");
         }
-        if (this->Directions < 1 || this->MemoryBudget <= 0)
+        if (this->Directions < 0 || this->RaysPerSide < 0 || this->MemoryBudget <= 0)
         {
-          throw std::invalid_argument("Directions and MemoryBudget must be positive");
+          throw std::invalid_argument("Directions and RaysPerSide must be positive or 0 "
+                                      "(automatic), MemoryBudget positive");
         }
         settings.Directions = static_cast<std::size_t>(this->Directions);
         settings.RaysPerSide = this->RaysPerSide;
-        settings.TilesPerSide = this->Tiles > 0 ? this->Tiles : std::max(1, this->RaysPerSide / 8);
+        settings.TilesPerSide = this->Tiles;
         settings.MemoryBudget = static_cast<std::uint64_t>(this->MemoryBudget);
+        // Every rank has the whole scene here and chooses alike.
+        settings = vlf::ResolveAutomaticSettings(scene, settings).Settings;
         if (snapshots && vlf::FileExists(this->SnapshotFileName) &&
           !vlf::IsSnapshotFile(this->SnapshotFileName))
         {
@@ -598,8 +604,10 @@ vtkFloatArray* vtkVirtualLightField::GetAttachedAtlas(vtkDataObject* data, int s
 void vtkVirtualLightField::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Directions: " << this->Directions << "\n";
-  os << indent << "RaysPerSide: " << this->RaysPerSide << "\n";
+  os << indent << "Directions: " << this->Directions
+     << (this->Directions == 0 ? " (automatic)" : "") << "\n";
+  os << indent << "RaysPerSide: " << this->RaysPerSide
+     << (this->RaysPerSide == 0 ? " (automatic)" : "") << "\n";
   os << indent << "Tiles: " << this->Tiles << (this->Tiles == 0 ? " (RaysPerSide / 8)" : "")
      << "\n";
   os << indent << "Iterations: " << this->Iterations << "\n";

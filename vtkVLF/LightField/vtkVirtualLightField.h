@@ -76,13 +76,19 @@ public:
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
-  /** Directions of the subfields: 2 n^2 + 1 (513, 2049, 8193; default 513). */
+  /**
+   * Directions of the subfields: 2 n^2 + 1 (513, 2049, 8193), or 0 (default): automatic, from the
+   * lines per side (mesolight::vlf::ResolveAutomaticSettings, AutomaticSettings.h).
+   */
   vtkSetMacro(Directions, int);
   vtkGetMacro(Directions, int);
   ///@}
 
   ///@{
-  /** Lines per subfield side (default 32). */
+  /**
+   * Lines per subfield side, or 0 (default): automatic, from the scene's small features within a
+   * line count and MemoryBudget (2049 x 64 x 64 when the scene asks for no more and it fits).
+   */
   vtkSetMacro(RaysPerSide, int);
   vtkGetMacro(RaysPerSide, int);
   ///@}
@@ -203,8 +209,8 @@ private:
   void operator=(const vtkVirtualLightField&) = delete;
   friend class vtkVirtualLightFieldCore;
 
-  int Directions = 513;
-  int RaysPerSide = 32;
+  int Directions = 0;  // automatic
+  int RaysPerSide = 0; // automatic
   int Tiles = 0;
   int Iterations = -1;
   double ConvergenceTolerance = 0.01; // mesolight::vlf::DefaultTolerance
