@@ -81,7 +81,11 @@ float mlTraceMaxMipmap(vec3 origin, vec3 span, int maxIterations)
 {
   ivec2 cells0 = ivec2(mlTextureSize) + 1;
   int top = mlPyramidLevels - 1;
-  int level = top;
+  // Start near the bottom: a view ray enters at depth 0, where the coarse cells' minimum is
+  // (nearly) 0 on real maps, so starting at the top only descends again. Measured on real height
+  // maps at 45 and 85 degrees (docs/relief-methods.md): level 1 takes 15-25% fewer samples than the
+  // top and never more than levels 3 or 5.
+  int level = min(1, top);
   float t = 0.0;
   vec2 dx = span.xy * mlTextureSize;
   // Past a cell boundary by a thousandth of a cell, so float rounding cannot keep the ray in it.
@@ -93,7 +97,7 @@ float mlTraceMaxMipmap(vec3 origin, vec3 span, int maxIterations)
     ivec2 k0 = clamp(ivec2(floor(x)) + 1, ivec2(0), cells0 - 1);
     int scale = 1 << level;
     ivec2 sizeL = ivec2(mlPyramidSizes[2 * level], mlPyramidSizes[2 * level + 1]);
-    ivec2 kL = min(k0 / scale, sizeL - 1);
+    ivec2 kL = min(k0 >> level, sizeL - 1); // k0 >= 0: a shift, not a (scalarised) division
     // The cell's extent in cell space; first and last cells reach to infinity (clamp extension).
     vec2 lo = vec2(kL * scale) - 1.0;
     vec2 hi = vec2((kL + 1) * scale) - 1.0;
@@ -108,9 +112,16 @@ float mlTraceMaxMipmap(vec3 origin, vec3 span, int maxIterations)
     float zExit = origin.z + tExit * span.z;
     if (zExit < minDepth && span.z > 0.0 || max(p.z, zExit) < minDepth)
     {
-      // Above everything in this cell: skip it, and look wider next time.
+      // Above everything in this cell: skip it; look wider only when the ray also leaves the
+      // parent cell (Tevs, Ihrke & Seidel 2008): inside the same parent the coarser cell was
+      // already found too deep, and going up would only come down again.
       t = tExit + nudge;
-      level = min(level + 1, top);
+      vec2 xNext = (origin.xy + t * span.xy) * mlTextureSize - 0.5;
+      ivec2 kNext = min(clamp(ivec2(floor(xNext)) + 1, ivec2(0), cells0 - 1) >> level, sizeL - 1);
+      if (any(notEqual(kNext >> 1, kL >> 1)))
+      {
+        level = min(level + 1, top);
+      }
     }
     else if (level > 0)
     {
