@@ -344,7 +344,7 @@ int Bench(const std::vector<std::string>& args)
     chart.Title = "Light field walkthrough, " + std::to_string(width) + "x" +
       std::to_string(height) + ", " + std::to_string(fieldDirections) +
       " directions\n(0 geometry, 1 diffuse-only, 2 raytrace, 3 progressive-moving, 4 coherent, "
-      "5 progressive-rest: time to converge, 6 diffuse-only with the shadow code, 7 geometry "
+      "\n5 progressive-rest: time to converge, 6 diffuse-only with the shadow code, 7 geometry "
       "again)";
     chart.XLabel = "mode";
     chart.YLabel = "milliseconds (log scale)";
