@@ -303,16 +303,16 @@ int Bench(const std::vector<std::string>& args)
   {
     const double geometryMs = 0.5 * (rows[0].FrameMs + geometryAgain.FrameMs);
     std::cout << "diffuse walkthrough frame / geometry frame (mean of the two geometry rows): "
-              << rows[1].FrameMs / geometryMs << " (goal <= 2); with the shadow code compiled in: "
-              << before.FrameMs / geometryMs << "\n";
+              << rows[1].FrameMs / geometryMs
+              << " (goal <= 2); with the shadow code compiled in: " << before.FrameMs / geometryMs
+              << "\n";
     for (const BenchRow& r : rows)
     {
       if (r.Mode == "progressive-moving" || r.Mode == "coherent")
       {
         std::cout << r.Mode << ": CPU pass " << r.PassUsPerPixel(windowPixels)
-                  << " us per mirror pixel (" << r.SpecularMs << " ms over "
-                  << std::setprecision(0) << r.Coverage * windowPixels << std::setprecision(2)
-                  << " pixels)\n";
+                  << " us per mirror pixel (" << r.SpecularMs << " ms over " << std::setprecision(0)
+                  << r.Coverage * windowPixels << std::setprecision(2) << " pixels)\n";
       }
     }
   }
@@ -328,8 +328,7 @@ int Bench(const std::vector<std::string>& args)
           << r.SpecularMs << "," << r.UploadMs << "," << r.DrawMs() << "," << staticDiffuseMs << ","
           << (r.Mode == "progressive-rest" ? 0.0 : r.DrawMs() - staticDiffuseMs) << ","
           << r.Coverage << "," << r.PassUsPerPixel(windowPixels) << "," << r.Goal << ","
-          << (r.Met() ? 1 : 0) << "," << width << ","
-          << height << "," << fieldDirections << "\n";
+          << (r.Met() ? 1 : 0) << "," << width << "," << height << "," << fieldDirections << "\n";
     }
     if (!csv)
     {

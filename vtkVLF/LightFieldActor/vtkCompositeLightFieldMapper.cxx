@@ -166,7 +166,8 @@ protected:
   bool GetNeedToRebuildShaders(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* actor) override
   {
     const auto built = this->BuiltRadiance.find(&cellBO);
-    const bool changed = built == this->BuiltRadiance.end() || built->second != this->ShaderVariant();
+    const bool changed =
+      built == this->BuiltRadiance.end() || built->second != this->ShaderVariant();
     return this->Superclass::GetNeedToRebuildShaders(cellBO, ren, actor) || changed;
   }
 

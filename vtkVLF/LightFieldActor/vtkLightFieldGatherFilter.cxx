@@ -171,8 +171,8 @@ void AttachShadowCasterData(const mesolight::vlf::LightField& field, vtkPolyData
   {
     double p[3];
     output->GetPoint(i, p);
-    unit.Positions.push_back(vlf::ToUnit(
-      field, glm::vec3(static_cast<float>(p[0]), static_cast<float>(p[1]), static_cast<float>(p[2]))));
+    unit.Positions.push_back(vlf::ToUnit(field,
+      glm::vec3(static_cast<float>(p[0]), static_cast<float>(p[1]), static_cast<float>(p[2]))));
   }
   vtkNew<vtkDoubleArray> ambient;
   ambient->SetName(vtkLightFieldGatherFilter::GetAmbientName());

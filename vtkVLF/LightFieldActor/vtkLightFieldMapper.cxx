@@ -69,7 +69,8 @@ bool vtkLightFieldMapper::UploadAtlas(vtkRenderer* ren, vtkActor* act)
     flipped = atlas.FlippedPixels();
     data = flipped.data();
   }
-  if (!vtkLightFieldShading::UploadAtlasTexture(this->AtlasTexture, window, atlas.Width(), atlas.Height(), data))
+  if (!vtkLightFieldShading::UploadAtlasTexture(
+        this->AtlasTexture, window, atlas.Width(), atlas.Height(), data))
   {
     vtkErrorMacro(<< "could not upload the light field's " << atlas.Width() << "x" << atlas.Height()
                   << " texture atlas");
@@ -141,8 +142,7 @@ void vtkLightFieldMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* act)
     this->SetScalarVisibility(!this->Radiance);
   }
   this->Shadowing = this->Radiance && this->UploadShadows(ren, act);
-  this->ShadowCodeAlways =
-    actor && vtkLightFieldActorCore::GetInternals(actor).ShadowCodeAlways;
+  this->ShadowCodeAlways = actor && vtkLightFieldActorCore::GetInternals(actor).ShadowCodeAlways;
   if (this->Radiance)
   {
     this->AtlasTexture->Activate();

@@ -36,7 +36,6 @@ public:
 
   void ReleaseGraphicsResources(vtkWindow* window) override;
 
-
 protected:
   vtkLightFieldMapper();
   ~vtkLightFieldMapper() override;

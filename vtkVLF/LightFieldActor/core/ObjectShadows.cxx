@@ -666,8 +666,8 @@ namespace
 {
 // Nearest triangle of the field's scene along a ray beyond tMin (Moller, Trumbore 1997): the
 // triangle index or SIZE_MAX. A scan over every triangle, once per emitter and placement.
-std::size_t FirstHit(const TriangleScene& scene, const glm::vec3& origin, const glm::vec3& direction,
-  float tMin, float& tHit)
+std::size_t FirstHit(const TriangleScene& scene, const glm::vec3& origin,
+  const glm::vec3& direction, float tMin, float& tHit)
 {
   std::size_t best = SIZE_MAX;
   tHit = std::numeric_limits<float>::max();

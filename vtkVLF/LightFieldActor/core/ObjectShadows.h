@@ -196,7 +196,7 @@ struct ShadowGpuData
   int Resolution = 0, Columns = 1, Width = 0, Height = 0;
   std::vector<float> Depth; // Width x Height, row 0 first
   int EmitterCount = 0;
-  glm::vec4 Params{ 0.0f };                                         // bias, alpha, kernel, removal
+  glm::vec4 Params{ 0.0f };  // bias, alpha, kernel, removal
   glm::vec4 Ambient{ 0.0f }; // rgb the ambient radiance A, w 1 when known (ratio), else 0
   std::vector<glm::vec4> MapPosition, MapAxisX, MapAxisY, MapAxisZ; // see the shader
   std::vector<glm::vec4> EmitterRadiance, EmitterNormal, EmitterIndex, Samples;
