@@ -7,7 +7,8 @@ for every ParaView user (a filter that chose its resolution automatically would 
 fixed one instead). For each SourceProxy whose class the `mesolight` package has, each
 Int/DoubleVectorProperty with a Set command, a matching Get and one default value: the XML's
 default must equal what a new instance returns. Prints every property checked; exits 1 listing
-the mismatches.
+the mismatches, when nothing was checked, or when the negative case (the light field filter's
+XML with its Directions default changed) goes unnoticed.
 
     scripts/python.sh tests/python/TestPluginDefaults.py paraview_plugin/Plugin/*.xml
 """
@@ -56,5 +57,31 @@ def main(paths):
     return 0 if checked > 0 else 1
 
 
+def negative_case(directory):
+    """The check must notice a wrong default: the filter's XML with Directions' default changed."""
+    import os
+    import re
+    source = None
+    for path in sys.argv[1:]:
+        text = open(path).read()
+        if 'class="vtkVirtualLightField"' in text:
+            source = text
+    if source is None:
+        return True  # no light field XML given: nothing to break
+    broken = re.sub(r'(name="Directions" command="SetDirections"[^>]*default_values=")\d+"',
+                    r'\g<1>2049"', source, count=1)
+    path = os.path.join(directory, "broken.xml")
+    with open(path, "w") as out:
+        out.write(broken)
+    failed = main([path]) == 1
+    print("negative case (Directions default 2049 in the XML): %s" % ("caught" if failed else "MISSED"))
+    return failed
+
+
 if __name__ == "__main__":
-    sys.exit(main(sys.argv[1:]))
+    import tempfile
+    status = main(sys.argv[1:])
+    with tempfile.TemporaryDirectory() as work:
+        if not negative_case(work):
+            status = 1
+    sys.exit(status)
