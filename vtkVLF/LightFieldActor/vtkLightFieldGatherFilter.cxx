@@ -26,6 +26,7 @@
 #include "LightField.h"
 #include "ObjectGatherer.h"
 #include "ObjectShadows.h"
+#include "PatchComparison.h" // ToUnit
 #include "Progress.h"
 #include "Snapshot.h"
 #include "TextureAtlas.h"
@@ -136,8 +137,9 @@ namespace
 void AttachShadowCasterData(const mesolight::vlf::LightField& field, vtkPolyData* output)
 {
   namespace vlf = mesolight::vlf;
-  const std::vector<float> packed =
-    vlf::PackEmitters(vlf::SignificantEmitters(field, vlf::ShadowSettings()));
+  const std::vector<vlf::ShadowEmitter> significant =
+    vlf::SignificantEmitters(field, vlf::ShadowSettings());
+  const std::vector<float> packed = vlf::PackEmitters(significant);
   vtkNew<vtkFloatArray> emitters;
   emitters->SetName(vtkLightFieldGatherFilter::GetEmittersName());
   emitters->SetNumberOfValues(static_cast<vtkIdType>(packed.size()));
@@ -163,6 +165,26 @@ void AttachShadowCasterData(const mesolight::vlf::LightField& field, vtkPolyData
     average = 0.0; // no atlas: the representation falls back to its Exposure alone
   }
   logAverage->InsertNextValue(average);
+  // The shadows' indirect term where this surface's shadow falls
+  // (mesolight::vlf::ObjectShadows::SetAmbient, EstimateShadowIndirect): its points in the unit
+  // sphere are all the estimate reads of it.
+  vlf::ObjectMesh unit;
+  unit.Positions.reserve(static_cast<std::size_t>(output->GetNumberOfPoints()));
+  for (vtkIdType i = 0; i < output->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    output->GetPoint(i, p);
+    unit.Positions.push_back(vlf::ToUnit(field,
+      glm::vec3(static_cast<float>(p[0]), static_cast<float>(p[1]), static_cast<float>(p[2]))));
+  }
+  vtkNew<vtkDoubleArray> ambient;
+  ambient->SetName(vtkLightFieldGatherFilter::GetAmbientName());
+  const glm::vec3 a = vlf::EstimateShadowIndirect(field, significant, unit);
+  for (const float v : { a.x, a.y, a.z })
+  {
+    ambient->InsertNextValue(static_cast<double>(v));
+  }
+  output->GetFieldData()->AddArray(ambient);
   output->GetFieldData()->AddArray(emitters);
   output->GetFieldData()->AddArray(normalisation);
   output->GetFieldData()->AddArray(logAverage);

@@ -32,7 +32,9 @@
  * significant emitters (GetEmittersName(), mesolight::vlf::PackEmitters), the world -> unit
  * sphere normalisation (GetToUnitSphereName(): centre x, y, z, scale) and the field's log-average
  * luminance (GetLogAverageName(), the scene's automatic exposure, so the surface drawn as
- * Light Field is exposed like the scene).
+ * Light Field is exposed like the scene) and the field's indirect light where this surface's
+ * shadow falls (GetAmbientName(), RGB per unit reflectance, mesolight::vlf::EstimateShadowIndirect:
+ * the shadows' ObjectShadows::SetAmbient).
  *
  * Points outside the field's bounding sphere are gathered on its boundary (a warning gives how
  * many); GetOutsidePoints() tells after an update. Progress goes through UpdateProgress;
@@ -107,6 +109,7 @@ public:
   static const char* GetEmittersName() { return "LightFieldEmitters"; }
   static const char* GetToUnitSphereName() { return "LightFieldToUnitSphere"; }
   static const char* GetLogAverageName() { return "LightFieldLogAverage"; }
+  static const char* GetAmbientName() { return "LightFieldAmbient"; }
   ///@}
 
 protected:
