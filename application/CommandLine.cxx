@@ -136,6 +136,7 @@ bool CommandLine::Parse(const std::vector<std::string>& args, std::string& error
         return false;
       }
       this->Values[name] = value;
+      this->AllValues[name].push_back(value);
     }
     else
     {
@@ -243,6 +244,12 @@ void CommandLine::PrintHelp(std::ostream& os) const
 bool CommandLine::Has(const std::string& name) const
 {
   return this->Values.count(name) > 0;
+}
+
+std::vector<std::string> CommandLine::GetAll(const std::string& name) const
+{
+  const auto it = this->AllValues.find(name);
+  return it != this->AllValues.end() ? it->second : std::vector<std::string>();
 }
 
 std::string CommandLine::Get(const std::string& name) const

@@ -69,6 +69,8 @@ public:
   bool GetDoubleVector(const std::string& name, size_t count, double* values) const;
   /** The items of a comma-separated list, spaces around them and empty items dropped. */
   std::vector<std::string> GetStringList(const std::string& name) const;
+  /** Every value a repeatable option was given, in order (Get gives the last). */
+  std::vector<std::string> GetAll(const std::string& name) const;
   const std::vector<std::string>& Positional() const { return this->PositionalArgs; }
 
   void PrintOptions(std::ostream& os) const;
@@ -86,6 +88,7 @@ private:
   std::vector<std::string> Order;
   std::map<std::string, Option> Options;
   std::map<std::string, std::string> Values;
+  std::map<std::string, std::vector<std::string>> AllValues;
   std::vector<std::string> PositionalArgs;
 };
 

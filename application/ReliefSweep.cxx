@@ -251,16 +251,22 @@ struct MapSource
   std::string Note; // printed under the table
 };
 
-// The "file" map: the user's depth file, or the Stone pattern written as a 16-bit PNG.
-bool PrepareFileMap(const ReliefSweepSettings& settings, const std::string& directory,
-  MapSource& map, std::ostream& out)
+// The "file" maps: one per depth file, or the Stone pattern written as a 16-bit PNG.
+bool PrepareFileMaps(const ReliefSweepSettings& settings, const std::string& directory,
+  std::vector<MapSource>& maps, std::ostream& out)
 {
-  if (!settings.DepthFile.empty())
+  if (!settings.DepthFiles.empty())
   {
-    map.Label = "file:" + std::filesystem::path(settings.DepthFile).filename().string();
-    map.DepthFile = settings.DepthFile;
+    for (const std::string& depthFile : settings.DepthFiles)
+    {
+      MapSource map;
+      map.Label = std::filesystem::path(depthFile).stem().string();
+      map.DepthFile = depthFile;
+      maps.push_back(map);
+    }
     return true;
   }
+  MapSource map;
   const std::string file = (std::filesystem::path(directory) / "sweep-stone-16bit.png").string();
   vtkNew<vtkProceduralReliefSource> stone;
   stone->SetPatternToStone();
@@ -282,8 +288,12 @@ bool PrepareFileMap(const ReliefSweepSettings& settings, const std::string& dire
   out << "map 'file': no --depth-file given, so the Stone pattern was written to " << file
       << " as a 16-bit PNG and is read back through vtkOIIOImageReader: this row set tests the "
          "file path, not real data.\n";
+  maps.push_back(map);
   return true;
 }
+
+// The method "default" in the method list.
+constexpr int DefaultSettings = -1;
 } // namespace
 
 //------------------------------------------------------------------------------
@@ -301,8 +311,9 @@ bool RunReliefSweep(
   }
   for (const std::string& name : settings.Methods)
   {
-    const int m = vtkReliefProperty::GetMethodFromName(name.c_str());
-    if (m < 0)
+    const int m =
+      name == "default" ? DefaultSettings : vtkReliefProperty::GetMethodFromName(name.c_str());
+    if (m < 0 && m != DefaultSettings)
     {
       out << "bench relief: unknown method '" << name << "'\n";
       return false;
@@ -332,19 +343,17 @@ bool RunReliefSweep(
   std::vector<MapSource> maps;
   for (const std::string& name : settings.Maps)
   {
-    MapSource map;
     if (name == "file")
     {
-      if (!PrepareFileMap(settings, directory, map, out))
+      if (!PrepareFileMaps(settings, directory, maps, out))
       {
         return false;
       }
+      continue;
     }
-    else
-    {
-      map.Label = name;
-      map.Pattern = name;
-    }
+    MapSource map;
+    map.Label = name;
+    map.Pattern = name;
     maps.push_back(map);
   }
 
@@ -367,6 +376,7 @@ bool RunReliefSweep(
     ReliefSceneOptions o;
     o.Pattern = map.Pattern.empty() ? "Bricks" : map.Pattern;
     o.DepthFile = map.DepthFile;
+    o.DepthFileIsHeight = settings.DepthFilesAreHeight && !settings.DepthFiles.empty();
     o.Resolution = settings.Resolution;
     o.DepthScale = settings.DepthScale;
     o.Width = settings.Width;
@@ -382,9 +392,11 @@ bool RunReliefSweep(
     }
     // Cone maps, once per map, for the cone methods requested.
     std::map<int, vtkSmartPointer<vtkImageData>> coneMaps;
+    vtkNew<vtkReliefProperty> defaults; // an untouched property: the "default" row's settings
     for (int m : methods)
     {
-      const int kind = vtkReliefProperty::GetRequiredConeMap(m);
+      const int kind =
+        vtkReliefProperty::GetRequiredConeMap(m == DefaultSettings ? defaults->GetMethod() : m);
       if (kind == vtkReliefProperty::NoConeMap || coneMaps.count(kind))
       {
         continue;
@@ -420,8 +432,10 @@ bool RunReliefSweep(
           << report::Fixed(reference.Seconds, 3) << " s\n"
           << std::flush;
 
-      for (int m : methods)
+      for (int listed : methods)
       {
+        const bool isDefault = listed == DefaultSettings;
+        const int m = isDefault ? defaults->GetMethod() : listed;
         const int kind = vtkReliefProperty::GetRequiredConeMap(m);
         if (kind != vtkReliefProperty::NoConeMap && !coneMaps[kind])
         {
@@ -431,7 +445,14 @@ bool RunReliefSweep(
           kind == vtkReliefProperty::NoConeMap ? relief.ReliefTexture.Get() : coneMaps[kind].Get());
         mapper->GetReliefProperty()->SetMethod(m);
         std::vector<ReliefSweepStep> steps = ReliefSweepStepsFor(m);
-        if (!settings.Steps.empty() && UsesSearchSteps(m))
+        if (isDefault)
+        {
+          steps = { { defaults->GetLinearSteps(), defaults->GetRefinementSteps(),
+            std::string(vtkReliefProperty::GetMethodName(m)) + " " +
+              std::to_string(defaults->GetLinearSteps()) + "+" +
+              std::to_string(defaults->GetRefinementSteps()) } };
+        }
+        else if (!settings.Steps.empty() && UsesSearchSteps(m))
         {
           steps.clear();
           for (const std::string& label : settings.Steps)
@@ -447,7 +468,8 @@ bool RunReliefSweep(
           row.Map = map.Label;
           row.Angle = angle;
           row.Method = m;
-          row.MethodName = vtkReliefProperty::GetMethodName(m);
+          row.MethodName = isDefault ? "default" : vtkReliefProperty::GetMethodName(m);
+          row.IsDefault = isDefault;
           row.Step = step;
           mapper->GetReliefProperty()->SetLinearSteps(step.LinearSteps);
           mapper->GetReliefProperty()->SetRefinementSteps(step.RefinementSteps);
@@ -552,12 +574,16 @@ int RunReliefSweep(const std::vector<std::string>& args)
   cl.AddValue("--maps", "LIST",
     "comma-separated maps: procedural patterns (Bricks, Stone, HemisphereTorus, ...) and 'file'",
     "Bricks,Stone,HemisphereTorus,file");
-  cl.AddValue("--depth-file", "IMAGE",
-    "depth image of the 'file' map (default: the Stone pattern written as 16-bit PNG)");
+  cl.AddValue("--depth-file", "IMAGE[,IMAGE..]",
+    "depth images of the 'file' maps, one map each (default: the Stone pattern written as "
+    "16-bit PNG)");
+  cl.AddFlag("--height", "the depth images store height (white = high) rather than depth");
   cl.AddValue("--angles", "LIST", "view angles from the wall normal, degrees", "0,45,70,80,85");
   cl.AddValue("--size", "WxH", "window size in pixels", "512x512");
   cl.AddValue("--frames", "N", "timed frames per configuration, after a warm-up frame", "5");
-  cl.AddValue("--methods", "all|LIST", "vtkReliefMapper method names", "all");
+  cl.AddValue("--methods", "all|LIST",
+    "vtkReliefMapper method names, and 'default' (an untouched vtkReliefProperty's settings)",
+    "all");
   cl.AddValue("--resolution", "N", "texels per side of the procedural maps", "512");
   cl.AddValue("--depth-scale", "K", "world depth of depth 1 / wall width", "0.04");
   cl.AddValue("--steps", "L+R,..",
@@ -573,7 +599,8 @@ int RunReliefSweep(const std::vector<std::string>& args)
   {
     return exitCode; // --help printed, or a usage error reported
   }
-  if (const std::string problem = CheckOutputOptions(cl, { "--csv" }, { cl.Get("--depth-file") });
+  settings.DepthFiles = cl.GetStringList("--depth-file");
+  if (const std::string problem = CheckOutputOptions(cl, { "--csv" }, settings.DepthFiles);
       !problem.empty())
   {
     return cl.UsageError(problem);
@@ -585,7 +612,7 @@ int RunReliefSweep(const std::vector<std::string>& args)
   }
   settings.Maps = cl.GetStringList("--maps");
   settings.FillViewport = !cl.Has("--no-fill");
-  settings.DepthFile = cl.Get("--depth-file");
+  settings.DepthFilesAreHeight = cl.Has("--height");
   if (!cl.GetDoubleList("--angles", 0.0, 90.0, settings.Angles, error))
   {
     return cl.UsageError(error);
@@ -613,7 +640,7 @@ int RunReliefSweep(const std::vector<std::string>& args)
     settings.Methods = cl.GetStringList("--methods");
     for (const std::string& name : settings.Methods)
     {
-      if (vtkReliefProperty::GetMethodFromName(name.c_str()) < 0)
+      if (name != "default" && vtkReliefProperty::GetMethodFromName(name.c_str()) < 0)
       {
         std::cerr << "mesolight bench relief: unknown method '" << name << "' (names:";
         for (int m = 0; m < vtkReliefProperty::NumberOfMethods; ++m)

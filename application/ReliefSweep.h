@@ -18,15 +18,19 @@ namespace mesolight
 
 struct ReliefSweepSettings
 {
-  // Procedural pattern names, or "file" (DepthFile; without one the Stone pattern is written to a
-  // 16-bit PNG in the output directory and read back, which tests the file path, not real data).
+  // Procedural pattern names, or "file": one map per entry of DepthFiles (without any, the Stone
+  // pattern is written to a 16-bit PNG in the output directory and read back, which tests the
+  // file path, not real data).
   std::vector<std::string> Maps{ "Bricks", "Stone", "HemisphereTorus", "file" };
-  std::string DepthFile;
+  std::vector<std::string> DepthFiles;
+  bool DepthFilesAreHeight = false; // the files store height (white = high), as game textures do
   std::vector<double> Angles{ 0.0, 45.0, 70.0, 80.0, 85.0 };
   int Width = 512;
   int Height = 512;
-  int Frames = 5;                   // timed frames per configuration, after one warm-up frame
-  std::vector<std::string> Methods; // vtkReliefMapper method names; empty: all
+  int Frames = 5; // timed frames per configuration, after one warm-up frame
+  // vtkReliefMapper method names, and "default": the settings of an untouched vtkReliefProperty
+  // (what the mapper, the ParaView representation and `mesolight render` use). Empty: all.
+  std::vector<std::string> Methods;
   std::string CsvFile;
   std::string PlotDirectory; // one PNG chart per view angle; empty: no charts
   int Resolution = 512;      // texels per side of the procedural maps
@@ -57,6 +61,8 @@ struct ReliefSweepRow
   double Angle = 0.0;
   int Method = 0;
   std::string MethodName;
+  // The row of the untouched defaults (method "default"): Method and Step are the default's.
+  bool IsDefault = false;
   ReliefSweepStep Step;
   double MedianMs = 0.0;
   double FirstMs = 0.0; // the warm-up frame (shader compilation, uploads)

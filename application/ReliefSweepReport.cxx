@@ -205,8 +205,8 @@ void PrintConeVersusRelief(
       Ratios here;
       for (const ReliefSweepRow& target : rows)
       {
-        if (target.Method != vtkReliefProperty::Relief || target.Angle != angle ||
-          target.Map != map)
+        if (target.IsDefault || target.Method != vtkReliefProperty::Relief ||
+          target.Angle != angle || target.Map != map)
         {
           continue;
         }
@@ -217,7 +217,8 @@ void PrintConeVersusRelief(
           const int k = r.Method == vtkReliefProperty::Relief  ? 0
             : r.Method == vtkReliefProperty::RelaxedConeBinary ? 1
                                                                : -1;
-          if (k < 0 || r.Map != map || r.Angle != angle || r.HitMeanTexels > target.HitMeanTexels)
+          if (k < 0 || r.IsDefault || r.Map != map || r.Angle != angle ||
+            r.HitMeanTexels > target.HitMeanTexels)
           {
             continue;
           }
@@ -284,12 +285,111 @@ void PrintConeVersusRelief(
       << std::setw(16) << cell(all.Ms) << std::setw(16) << cell(all.Samples) << std::setw(16)
       << cell(all.AccurateMs) << std::setw(16) << cell(all.AccurateSamples) << "\n";
 }
+
+// The untouched defaults per map and angle: the accuracy goal (mean <= 0.25 texel, p99 <= 1
+// texel against the exact reference), the cost against relief 32+8 of the same run, and the
+// default's place on the time-vs-error front of every other row of that map and angle.
+void PrintDefaultPlace(const std::vector<ReliefSweepRow>& rows, std::ostream& out)
+{
+  const double goalMean = 0.25, goalP99 = 1.0;
+  bool any = false;
+  std::ostringstream table;
+  int met = 0, cheap = 0, front = 0, cells = 0;
+  for (const ReliefSweepRow& d : rows)
+  {
+    if (!d.IsDefault)
+    {
+      continue;
+    }
+    any = true;
+    ++cells;
+    const ReliefSweepRow* relief = nullptr;
+    int dominating = 0, dominatingSamples = 0;
+    const ReliefSweepRow* best = nullptr; // the fastest row at least as accurate
+    for (const ReliefSweepRow& r : rows)
+    {
+      if (r.IsDefault || r.Map != d.Map || r.Angle != d.Angle)
+      {
+        continue;
+      }
+      if (r.Method == vtkReliefProperty::Relief && r.Step.LinearSteps == 32 &&
+        r.Step.RefinementSteps == 8)
+      {
+        relief = &r;
+      }
+      const bool noWorse = r.HitMeanTexels <= d.HitMeanTexels;
+      const bool better = r.HitMeanTexels < d.HitMeanTexels;
+      if (noWorse && r.MedianMs <= d.MedianMs && (better || r.MedianMs < d.MedianMs))
+      {
+        ++dominating;
+      }
+      if (noWorse && r.SamplesPerPixel <= d.SamplesPerPixel &&
+        (better || r.SamplesPerPixel < d.SamplesPerPixel))
+      {
+        ++dominatingSamples;
+      }
+      if (noWorse && (!best || r.MedianMs < best->MedianMs))
+      {
+        best = &r;
+      }
+    }
+    const bool accurate = d.HitMeanTexels <= goalMean && d.HitP99Texels <= goalP99;
+    const bool costs =
+      relief && d.MedianMs <= relief->MedianMs && d.SamplesPerPixel <= relief->SamplesPerPixel;
+    met += accurate ? 1 : 0;
+    cheap += costs ? 1 : 0;
+    front += dominating == 0 ? 1 : 0;
+    table << "    " << std::left << std::setw(22) << d.Map << std::right << std::setw(5)
+          << Fixed(d.Angle, 0) << std::setw(9) << Fixed(d.HitMeanTexels, 3) << std::setw(8)
+          << Fixed(d.HitP99Texels, 2) << std::setw(6) << (accurate ? "yes" : "no") << std::setw(9)
+          << (relief ? Fixed(d.MedianMs / relief->MedianMs, 2) : std::string("-")) << std::setw(9)
+          << (relief && relief->SamplesPerPixel > 0.0
+                 ? Fixed(d.SamplesPerPixel / relief->SamplesPerPixel, 2)
+                 : std::string("-"))
+          << "   "
+          << (dominating == 0 ? std::string("on the front")
+                              : "behind " + std::to_string(dominating) + " rows")
+          << (dominatingSamples == 0
+                 ? ", on the samples front"
+                 : ", behind " + std::to_string(dominatingSamples) + " in samples")
+          << (best && dominating > 0 ? " (fastest as accurate: " + best->MethodName + " " +
+                   best->Step.Label + ", " + Fixed(best->MedianMs, 1) + " ms)"
+                                     : std::string())
+          << "\n";
+  }
+  if (!any)
+  {
+    return;
+  }
+  const ReliefSweepRow* first = nullptr;
+  for (const ReliefSweepRow& r : rows)
+  {
+    if (r.IsDefault)
+    {
+      first = &r;
+      break;
+    }
+  }
+  out << "- the default (" << first->Step.Label << ") per map and angle: goal mean <= " << goalMean
+      << " and p99 <= " << goalP99
+      << " texel; cost as a ratio to relief 32+8 of the same run (ms/frame, samples per pixel); "
+         "place on the time-vs-mean-error front of the other rows ('behind N': N rows are at "
+         "least as accurate and at least as fast)\n"
+      << "    " << std::left << std::setw(22) << "map" << std::right << std::setw(5) << "angle"
+      << std::setw(9) << "mean" << std::setw(8) << "p99" << std::setw(6) << "goal" << std::setw(9)
+      << "ms/rel" << std::setw(9) << "smp/rel"
+      << "   front\n"
+      << table.str() << "    accuracy goal met in " << met << " of " << cells
+      << ", at most relief 32+8's ms and samples in " << cheap << " of " << cells
+      << ", on the time front in " << front << " of " << cells << "\n";
+}
 } // namespace
 
 void PrintSummary(
   const ReliefSweepSettings& settings, const std::vector<ReliefSweepRow>& rows, std::ostream& out)
 {
   out << "\nSummary\n";
+  PrintDefaultPlace(rows, out);
   PrintConeVersusRelief(settings, rows, out);
 
   // The exact methods at the most grazing angle.
@@ -309,12 +409,13 @@ void PrintSummary(
   {
     const bool exactRelief = r.Method == vtkReliefProperty::Relief && r.Step.LinearSteps == 32 &&
       r.Step.RefinementSteps == 8;
-    if (r.Angle != grazing || !(exactRelief || r.Method == vtkReliefProperty::MaximumMipmap))
+    if (r.Angle != grazing ||
+      !(r.IsDefault || exactRelief || r.Method == vtkReliefProperty::MaximumMipmap))
     {
       continue;
     }
     any = true;
-    out << "    " << std::left << std::setw(16) << r.Map << std::setw(12) << r.MethodName
+    out << "    " << std::left << std::setw(22) << r.Map << " " << std::setw(12) << r.MethodName
         << std::setw(9) << r.Step.Label << std::right << " mean " << Fixed(r.HitMeanTexels, 3)
         << " texels, p99 " << Fixed(r.HitP99Texels, 2) << ", " << Fixed(r.MedianMs, 1)
         << " ms/frame\n";

@@ -209,7 +209,8 @@ int RunTraceCommand(const std::vector<std::string>& args)
     "to linear EXR.\n");
   cl.AddValue("--scene", "NAME",
     "spheres (textured spheres on a checker), ring (bump + roughness maps), "
-    "cornell (path-traced reference), or FILE.obj (path traced, with its .mtl)",
+    "cornell (path-traced reference; from a walkthrough camera with --camera or --relief), "
+    "or FILE.obj (path traced, with its .mtl)",
     "spheres");
   cl.AddValue("--width", "N", "image width in pixels", "640");
   cl.AddValue("--height", "N", "image height in pixels", "480");
@@ -276,12 +277,17 @@ int RunTraceCommand(const std::vector<std::string>& args)
     // An OBJ scene and its material file are inputs the outputs must not replace.
     const std::string sceneFile = IsObjSceneName(cl.Get("--scene")) ? cl.Get("--scene") : "";
     const std::string materialFile = sceneFile.empty() ? "" : MaterialFileOf(sceneFile);
-    problem =
-      CheckOutputFile(cl.Get("--out"), { compare, cl.Get("--exr"), sceneFile, materialFile });
+    problem = CheckOutputFile(cl.Get("--out"),
+      { compare, cl.Get("--exr"), cl.Get("--relief-mask"), sceneFile, materialFile });
     if (problem.empty() && cl.Has("--exr"))
     {
-      problem =
-        CheckOutputFile(cl.Get("--exr"), { compare, cl.Get("--out"), sceneFile, materialFile });
+      problem = CheckOutputFile(cl.Get("--exr"),
+        { compare, cl.Get("--out"), cl.Get("--relief-mask"), sceneFile, materialFile });
+    }
+    if (problem.empty() && cl.Has("--relief-mask"))
+    {
+      problem = CheckOutputFile(cl.Get("--relief-mask"),
+        { compare, cl.Get("--out"), cl.Get("--exr"), sceneFile, materialFile });
     }
   }
   if (!problem.empty())
@@ -290,7 +296,14 @@ int RunTraceCommand(const std::vector<std::string>& args)
   }
   const std::string sceneName = cl.Get("--scene");
   const bool interactive = !cl.Has("--offscreen") && HasDisplay();
-  if (IsObjSceneName(sceneName))
+  // The built-in box from a walkthrough camera, or with a relief: the OBJ scenes' path.
+  bool cornellAsObj = false;
+  for (const char* walkthrough :
+    { "--camera", "--view-up", "--fov", "--view-angle", "--bounces", "--relief" })
+  {
+    cornellAsObj = cornellAsObj || (sceneName == "cornell" && cl.Has(walkthrough));
+  }
+  if (IsObjSceneName(sceneName) || cornellAsObj)
   {
     if (cl.Has("--export-obj") || cl.Has("--compare-exr"))
     {
@@ -300,12 +313,14 @@ int RunTraceCommand(const std::vector<std::string>& args)
   }
   // The walkthrough camera and the path length belong to OBJ scenes; the built-in scenes have
   // their own cameras (the Cornell box's is the published one its comparisons assume).
-  for (const char* objOnly : { "--camera", "--view-up", "--fov", "--view-angle", "--bounces" })
+  for (const char* objOnly :
+    { "--camera", "--view-up", "--fov", "--view-angle", "--bounces", "--relief", "--relief-mask" })
   {
     if (cl.Has(objOnly))
     {
-      return cl.UsageError(std::string(objOnly) + " applies to --scene FILE.obj only; the '" +
-        sceneName + "' scene has its own camera");
+      return cl.UsageError(std::string(objOnly) +
+        " applies to --scene FILE.obj or cornell only; the '" + sceneName +
+        "' scene has its own camera");
     }
   }
   if (sceneName == "cornell")

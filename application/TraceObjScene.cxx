@@ -7,6 +7,7 @@
 #include "LightFieldCamera.h"
 #include "OutputFile.h"
 #include "Timing.h"
+#include "TraceRelief.h"
 
 #include "EmbreeScene.h"
 #include "ObjScene.h"
@@ -41,6 +42,7 @@ bool IsObjSceneName(const std::string& scene)
 void AddTraceObjOptions(CommandLine& cl)
 {
   AddLightFieldCameraOptions(cl);
+  AddTraceReliefOptions(cl);
   cl.AddValue("--bounces", "N",
     "FILE.obj: most bounces of a path (Russian roulette ends most paths long before)", "1000");
 }
@@ -59,16 +61,23 @@ int TraceObjScene(const CommandLine& cl, int width, int height, int threads)
   }
   const std::string path = cl.Get("--scene");
   ObjSceneRead read;
-  try
+  if (path == "cornell")
   {
-    ObjReadOptions options;
-    options.RequireEmitter = true; // without an emitter every pixel is black
-    read = ReadObjScene(path, options);
+    read.Scene = MakeCornellBox(); // the built-in box, seen from a walkthrough camera
   }
-  catch (const std::exception& e)
+  else
   {
-    std::cerr << command << ": " << e.what() << "\n";
-    return 1;
+    try
+    {
+      ObjReadOptions options;
+      options.RequireEmitter = true; // without an emitter every pixel is black
+      read = ReadObjScene(path, options);
+    }
+    catch (const std::exception& e)
+    {
+      std::cerr << command << ": " << e.what() << "\n";
+      return 1;
+    }
   }
   for (const std::string& warning : read.Warnings)
   {
@@ -84,6 +93,13 @@ int TraceObjScene(const CommandLine& cl, int width, int height, int threads)
   if (!ReadCameraOptions(cl, lower, upper, eye, focal, up, error))
   {
     return cl.UsageError(error);
+  }
+  // The relief after the camera: its default view is the scene's without the relief behind it.
+  std::string reliefSurface;
+  if (!ApplyTraceRelief(cl, read.Scene, reliefSurface, error))
+  {
+    std::cerr << command << ": " << error << "\n";
+    return 1;
   }
   PinholeCamera camera;
   camera.Position = eye;
@@ -108,8 +124,8 @@ int TraceObjScene(const CommandLine& cl, int width, int height, int threads)
     }
     std::cout << path << ": " << read.Scene.TriangleCount() << " triangles, "
               << tracer.EmitterCount() << " emitter triangles; " << width << "x" << height << ", "
-              << samples << " paths per pixel in " << std::fixed << std::setprecision(2)
-              << seconds << " s (" << std::setprecision(3)
+              << samples << " paths per pixel in " << std::fixed << std::setprecision(2) << seconds
+              << " s (" << std::setprecision(3)
               << static_cast<double>(width) * height * samples / seconds / 1e6 << " M paths/s)\n";
     // The PNG: exposure 1, clamp, sRGB (the light field's default display).
     vtkNew<vtkImageData> bytes;
@@ -140,6 +156,16 @@ int TraceObjScene(const CommandLine& cl, int width, int height, int threads)
         return 1;
       }
       std::cout << "wrote " << cl.Get("--exr") << " (linear radiance)\n";
+    }
+    if (cl.Has("--relief-mask"))
+    {
+      const RgbImage mask = SurfaceMask(read.Scene, embree, reliefSurface, camera, width, height);
+      if (!WriteLinearImage(mask, cl.Get("--relief-mask"), error))
+      {
+        std::cerr << command << ": " << error << "\n";
+        return 1;
+      }
+      std::cout << "wrote " << cl.Get("--relief-mask") << " (relief coverage per pixel)\n";
     }
   }
   catch (const std::exception& e)

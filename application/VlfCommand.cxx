@@ -10,7 +10,9 @@
 #include "LightFieldViewCommand.h"
 #include "OutputFile.h"
 #include "Timing.h"
+#include "VlfRelief.h"
 
+#include "Distribution.h"
 #include "EmbreeScene.h"
 #include "LightField.h"
 #include "Lookup.h"
@@ -23,8 +25,10 @@
 #include "Snapshot.h"
 #include "TextureComparison.h"
 #include "TriangleScene.h"
+#include "vtkLightFieldReducer.h"
 
 #include <vtkImageData.h>
+#include <vtkMultiProcessController.h>
 #include <vtkNew.h>
 #include <vtkPNGWriter.h>
 #include <vtkPointData.h>
@@ -88,7 +92,10 @@ int Render(const std::vector<std::string>& args)
     "Renders a light field's diffuse totals (Wither's progressive mode: per-surface "
     "total diffuse\ntextures, bilinear) by casting a ray per pixel; mirror surfaces "
     "show the field's radiance\ntoward the eye (three-direction spherical "
-    "interpolation).\n");
+    "interpolation).\n"
+    "Under mpiexec -n N the ranks split the image's rows and the field's directions: a "
+    "mirror pixel\nasks the owners of the directions around its view (vlf::RadianceLeaving); "
+    "rank 0 writes.\n");
   cl.AddValue("--out", "IMAGE.png", "where to write the image (required)");
   cl.AddValue("--size", "WxH", "image size in pixels", "512x512");
   AddLightFieldCameraOptions(cl);
@@ -99,6 +106,12 @@ int Render(const std::vector<std::string>& args)
     "Cornell camera (e.g. Blender Cycles)");
   cl.AddValue("--tolerance", "X", "relative tolerance of --compare-exr", "0.1");
   cl.AddFlag("--force", "replace an existing IMAGE.png");
+  cl.AddValue("--relief", "SURFACE=DEPTH_IMAGE",
+    "repeatable: draw the named surface of the field's scene as a relief (depth image, 0 = top, "
+    "1 = deepest) lit per pixel by the field: indirect light as SH9 at the relief's perturbed "
+    "normal, direct light from the field's emitters with the relief's self-shadowing");
+  cl.AddValue("--relief-depth-scale", "K",
+    "world depth of depth 1 over the world width of the relief's texture", "0.05");
   std::string error;
   int exitCode = 0;
   if (!cl.ParseArguments(args, exitCode))
@@ -111,8 +124,16 @@ int Render(const std::vector<std::string>& args)
   }
   const std::string out = cl.Get("--out");
   // Each output checked against the inputs and the other output, the message naming its option.
-  const std::string problem =
-    CheckOutputOptions(cl, { "--out", "--exr" }, { cl.Positional()[0], cl.Get("--compare-exr") });
+  std::vector<std::string> inputs{ cl.Positional()[0], cl.Get("--compare-exr") };
+  for (const std::string& item : cl.GetAll("--relief"))
+  {
+    const std::size_t equals = item.find('=');
+    if (equals != std::string::npos)
+    {
+      inputs.push_back(item.substr(equals + 1));
+    }
+  }
+  const std::string problem = CheckOutputOptions(cl, { "--out", "--exr" }, inputs);
   if (!problem.empty())
   {
     return cl.UsageError(problem);
@@ -128,15 +149,38 @@ int Render(const std::vector<std::string>& args)
     return cl.UsageError(error);
   }
   double viewAngle = 0.0, exposure = 0.0, tolerance = 0.1;
+  FieldReliefOptions reliefOptions;
   if (!ReadViewAngle(cl, viewAngle, error) ||
     !cl.GetDouble("--exposure", 0.0, 1e9, exposure, error) ||
-    !cl.GetDouble("--tolerance", 0.0, 10.0, tolerance, error))
+    !cl.GetDouble("--tolerance", 0.0, 10.0, tolerance, error) ||
+    !cl.GetDouble("--relief-depth-scale", 0.0, 10.0, reliefOptions.DepthScale, error))
   {
     return cl.UsageError(error);
   }
+  // Under mpiexec every rank reads the field and keeps its own directions (Distribution.h).
+  vlf::ControllerReducer reducer;
+  const bool distributed = reducer.Size() > 1;
+  const bool root = reducer.Rank() == 0;
+  if (distributed && !cl.GetAll("--relief").empty())
+  {
+    // A relief pixel integrates the incident radiance over every direction at its point; on a
+    // distributed field each rank holds only its own directions.
+    if (root)
+    {
+      std::cerr << "mesolight vlf render: --relief needs the whole field on one process: run it "
+                   "without mpiexec (the field file is the same)\n";
+    }
+    return 2;
+  }
   try
   {
-    const std::unique_ptr<vlf::LightField> field = vlf::ReadSnapshot(cl.Positional()[0]);
+    std::unique_ptr<vlf::LightField> field;
+    vlf::Agree(reducer,
+      [&]()
+      {
+        field = vlf::ReadSnapshot(cl.Positional()[0]);
+        vlf::KeepOwnedSubfields(*field, reducer);
+      });
     const TriangleScene& unit = field->Scene();
     glm::vec3 eye, focal;
     double up[3] = { 0.0, 1.0, 0.0 };
@@ -159,12 +203,33 @@ int Render(const std::vector<std::string>& args)
 
     const EmbreeScene embree(unit);
     const vlf::Lookup lookup(*field);
+    std::vector<FieldRelief> reliefs;
+    try
+    {
+      reliefs = SetUpFieldReliefs(*field, embree, cl.GetAll("--relief"), reliefOptions);
+    }
+    catch (const ReliefSetupError& e)
+    {
+      std::cerr << "mesolight vlf render: " << e.what() << "\n";
+      return 2;
+    }
+    const std::vector<int> reliefOf = ReliefOfTriangle(*field, reliefs);
     std::vector<unsigned char> pixels(static_cast<std::size_t>(width) * height * 3);
     RgbImage linear(width, height);
     // Exposure, clamp and sRGB: the light field actor's default display (vtkLightFieldActor).
     const DisplayTransform display{ exposure, ToneMapOperator::Clamp, true };
     const Clock::time_point start = Clock::now();
-    ParallelFor(0, static_cast<std::size_t>(height), 1,
+    const std::uint64_t bytesBefore = reducer.BytesContributed();
+    // This rank's rows; mirror pixels are looked up afterwards, all together (their directions
+    // may be held by other ranks).
+    const std::size_t firstRow = static_cast<std::size_t>(height) *
+      static_cast<std::size_t>(reducer.Rank()) / static_cast<std::size_t>(reducer.Size());
+    const std::size_t lastRow = static_cast<std::size_t>(height) *
+      static_cast<std::size_t>(reducer.Rank() + 1) / static_cast<std::size_t>(reducer.Size());
+    std::vector<std::uint32_t> mirrorPixel(static_cast<std::size_t>(width) * height, 0xffffffffu);
+    std::vector<std::vector<std::pair<std::size_t, vlf::RadianceQuery>>> mirrorsOfRow(
+      static_cast<std::size_t>(height));
+    ParallelFor(firstRow, lastRow, 1,
       [&](std::size_t r0, std::size_t r1)
       {
         for (std::size_t row = r0; row < r1; ++row)
@@ -185,11 +250,25 @@ int Render(const std::vector<std::string>& args)
               const SceneMaterial& m = unit.MaterialOf(hit.Triangle);
               const bool front =
                 s != vlf::NoSurface && glm::dot(field->Surfaces()[s].Normal, ray.Direction) < 0.0f;
-              if (front)
+              const int relief = reliefOf[hit.Triangle];
+              if (front && relief >= 0 &&
+                ReliefRadiance(
+                  reliefs[static_cast<std::size_t>(relief)], ray.Origin, ray.Direction, radiance))
               {
-                radiance = glm::length(m.Specular) > 0.0f
-                  ? lookup.RadianceLeaving(s, p, -ray.Direction)
-                  : lookup.DiffuseRadiance(s, p);
+                // drawn by the relief
+              }
+              else if (front && glm::length(m.Specular) > 0.0f)
+              {
+                vlf::RadianceQuery query;
+                query.Surface = s;
+                query.Point = p;
+                query.Toward = -ray.Direction;
+                mirrorsOfRow[row].emplace_back(
+                  row * static_cast<std::size_t>(width) + static_cast<std::size_t>(column), query);
+              }
+              else if (front)
+              {
+                radiance = lookup.DiffuseRadiance(s, p);
               }
             }
             // Row 0 of a VTK image is the bottom row.
@@ -198,15 +277,73 @@ int Render(const std::vector<std::string>& args)
             {
               value[c] = radiance[c];
             }
-            unsigned char* rgb = &pixels[(row * static_cast<std::size_t>(width) + column) * 3];
-            for (int c = 0; c < 3; ++c)
-            {
-              rgb[c] = static_cast<unsigned char>(
-                std::lround(255.0 * ApplyDisplayTransform<double>(display, radiance[c])));
-            }
           }
         }
       });
+    // The mirrors: every rank's pixels answered by the owners of their directions.
+    std::vector<vlf::RadianceQuery> queries;
+    std::vector<std::size_t> queryPixel;
+    for (const auto& rowQueries : mirrorsOfRow)
+    {
+      for (const auto& q : rowQueries)
+      {
+        queryPixel.push_back(q.first);
+        queries.push_back(q.second);
+      }
+    }
+    const Clock::time_point lookupStart = Clock::now();
+    const std::uint64_t lookupBytesBefore = reducer.BytesContributed();
+    const std::vector<glm::vec3> mirrored = vlf::RadianceLeaving(*field, queries, reducer);
+    const double lookupSeconds = SecondsSince(lookupStart);
+    std::uint64_t lookupBytes = reducer.BytesContributed() - lookupBytesBefore;
+    for (std::size_t q = 0; q < queries.size(); ++q)
+    {
+      float* value = linear.Pixel(static_cast<int>(queryPixel[q] % static_cast<std::size_t>(width)),
+        static_cast<int>(queryPixel[q] / static_cast<std::size_t>(width)));
+      for (int c = 0; c < 3; ++c)
+      {
+        value[c] = mirrored[q][c];
+      }
+    }
+    // Every rank's rows onto every rank (the others' rows are zero here): one sum.
+    if (distributed)
+    {
+      reducer.SumInPlace(linear.Rgb.data(), linear.Rgb.size());
+    }
+    const double frameSeconds = SecondsSince(start);
+    std::uint64_t frameBytes = reducer.BytesContributed() - bytesBefore;
+    double mirrorPixels = static_cast<double>(queries.size());
+    if (distributed)
+    {
+      double totals[3] = { static_cast<double>(frameBytes), mirrorPixels,
+        static_cast<double>(lookupBytes) };
+      reducer.SumInPlace(totals, 3);
+      frameBytes = static_cast<std::uint64_t>(totals[0]);
+      mirrorPixels = totals[1];
+      lookupBytes = static_cast<std::uint64_t>(totals[2]);
+    }
+    for (std::size_t i = 0; i < pixels.size() / 3; ++i)
+    {
+      const float* value = linear.Pixel(static_cast<int>(i % static_cast<std::size_t>(width)),
+        static_cast<int>(i / static_cast<std::size_t>(width)));
+      for (int c = 0; c < 3; ++c)
+      {
+        pixels[3 * i + c] = static_cast<unsigned char>(
+          std::lround(255.0 * ApplyDisplayTransform<double>(display, value[c])));
+      }
+    }
+    if (!root)
+    {
+      return 0; // rank 0 writes
+    }
+    if (vtkMultiProcessController::GetGlobalController()) // under mpiexec, even one rank
+    {
+      std::cout << "MPI: " << reducer.Size() << " ranks, frame " << frameSeconds
+                << " s (mirror lookups " << lookupSeconds << " s on rank 0), "
+                << static_cast<std::uint64_t>(mirrorPixels) << " mirror pixels; sent by all ranks: "
+                << lookupBytes << " bytes for the lookups, " << frameBytes - lookupBytes
+                << " bytes for the image sum\n";
+    }
     vtkNew<vtkImageData> image;
     image->SetDimensions(width, height, 1);
     vtkNew<vtkUnsignedCharArray> colours;
@@ -264,11 +401,28 @@ int Render(const std::vector<std::string>& args)
 
 } // namespace
 
-
 int RunVlfRender(const std::vector<std::string>& args)
 {
+  // Relief surfaces are drawn by this CPU renderer (the walkthrough's GL relief is not built
+  // yet): it shows the progressive mode's diffuse totals, so --mode progressive is accepted.
+  const auto mode = std::find(args.begin(), args.end(), "--mode");
+  const bool relief = std::any_of(args.begin(), args.end(),
+    [](const std::string& a) { return a == "--relief" || a.rfind("--relief=", 0) == 0; });
+  if (relief && mode != args.end())
+  {
+    if (mode + 1 == args.end() || *(mode + 1) != "progressive")
+    {
+      std::cerr << "mesolight vlf render: --relief draws with --mode progressive (or no --mode) "
+                   "so far, not --mode "
+                << (mode + 1 == args.end() ? std::string("(none)") : *(mode + 1)) << "\n";
+      return 2;
+    }
+    std::vector<std::string> rest(args.begin(), mode);
+    rest.insert(rest.end(), mode + 2, args.end());
+    return Render(rest);
+  }
   // With --mode the image goes through vtkLightFieldActor; without, this CPU reference renders it.
-  if (std::find(args.begin(), args.end(), "--mode") != args.end())
+  if (mode != args.end())
   {
     return RunLightFieldRender(args);
   }

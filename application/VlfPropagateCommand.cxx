@@ -1,12 +1,13 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// `mesolight vlf propagate`: the light field of a scene, written after every iteration; under
-// mpiexec its directions split over the ranks (Distribution.h).
+// `mesolight vlf propagate`: the light field of a scene, written after every iteration (or every
+// K-th); under mpiexec its directions split over the ranks (Distribution.h).
 #include "VlfCommand.h"
 
 #include "CommandLine.h"
 #include "OutputFile.h"
 #include "Timing.h"
 
+#include "AutomaticSettings.h"
 #include "Distribution.h"
 #include "LightField.h"
 #include "MemoryBudget.h"
@@ -18,13 +19,19 @@
 #include "vtkLightFieldReducer.h"
 
 #include <vtkMultiProcessController.h>
+#include <vtkSMPTools.h>
+
+#include <sys/resource.h>
 
 #include <algorithm>
 #include <chrono>
+#include <csignal>
 #include <cstdio>
+#include <cstdlib>
 #include <iostream>
 #include <memory>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace mesolight
@@ -33,6 +40,116 @@ namespace
 {
 namespace vlf = mesolight::vlf;
 using Clock = std::chrono::steady_clock;
+
+// For the tests of a killed run (tests/cli/VlfMpiKill.cmake): MESOLIGHT_TEST_KILL_AFTER=K:R makes
+// rank R (a number, or "all") kill itself with SIGKILL right after the snapshot of iteration K is
+// on disk, at a point known in advance, as `kill -9` or the out-of-memory killer would; the
+// other ranks are then inside iteration K+1. Unset, nothing happens.
+void KillIfAsked(int iteration, int rank)
+{
+  const char* asked = std::getenv("MESOLIGHT_TEST_KILL_AFTER");
+  if (!asked)
+  {
+    return;
+  }
+  const std::string text(asked);
+  const std::size_t colon = text.find(':');
+  if (colon == std::string::npos || std::atoi(text.c_str()) != iteration)
+  {
+    return;
+  }
+  const std::string who = text.substr(colon + 1);
+  if (who == "all" || (!who.empty() && std::atoi(who.c_str()) == rank))
+  {
+    std::fflush(stdout);
+    std::raise(SIGKILL);
+  }
+}
+
+// CPU seconds of this process (every thread).
+double ProcessCpuSeconds()
+{
+  timespec t{};
+  ::clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
+// The reducer with a clock: this rank's seconds inside collective calls (waiting for the slowest
+// rank, then the transfer), which --rank-report splits from the work of each phase.
+class TimedReducer : public vlf::Reducer
+{
+public:
+  explicit TimedReducer(vlf::Reducer& inner)
+    : Inner(inner)
+  {
+  }
+  int Rank() const override { return this->Inner.Rank(); }
+  int Size() const override { return this->Inner.Size(); }
+  void SumInPlace(float* data, std::size_t n) override
+  {
+    const Timer timer(*this);
+    this->Inner.SumInPlace(data, n);
+  }
+  void SumInPlace(double* data, std::size_t n) override
+  {
+    const Timer timer(*this);
+    this->Inner.SumInPlace(data, n);
+  }
+  void Broadcast(std::string& bytes, int root) override
+  {
+    const Timer timer(*this);
+    this->Inner.Broadcast(bytes, root);
+  }
+  void Send(const std::string& bytes, int to) override
+  {
+    const Timer timer(*this);
+    this->Inner.Send(bytes, to);
+  }
+  std::string Receive(int from) override
+  {
+    const Timer timer(*this);
+    return this->Inner.Receive(from);
+  }
+  double Seconds = 0.0;    // wall clock inside MPI calls
+  double CpuSeconds = 0.0; // CPU inside them: Open MPI polls while it waits
+
+private:
+  struct Timer
+  {
+    explicit Timer(TimedReducer& owner)
+      : Owner(owner)
+      , Start(Clock::now())
+      , Cpu(ProcessCpuSeconds())
+    {
+    }
+    ~Timer()
+    {
+      this->Owner.Seconds += SecondsSince(this->Start);
+      this->Owner.CpuSeconds += ProcessCpuSeconds() - this->Cpu;
+    }
+    TimedReducer& Owner;
+    Clock::time_point Start;
+    double Cpu;
+  };
+  vlf::Reducer& Inner;
+};
+
+// Ranks on this machine (Open MPI, MPICH/Hydra), or all of them when the launcher does not say.
+int RanksOnThisNode(int ranks)
+{
+  for (const char* name : { "OMPI_COMM_WORLD_LOCAL_SIZE", "MPI_LOCALNRANKS" })
+  {
+    if (const char* value = std::getenv(name))
+    {
+      const int n = std::atoi(value);
+      if (n > 0)
+      {
+        return n;
+      }
+    }
+  }
+  return ranks;
+}
 
 // Progress on stderr in steps of 10%.
 ProgressCallback PrintedProgress(const std::string& what)
@@ -58,8 +175,10 @@ int Propagate(const std::vector<std::string>& args)
     "Propagates the scene's light (the built-in Cornell box without SCENE) into a "
     "virtual light field,\nwriting FIELD after every iteration.\n");
   cl.AddValue("--out", "FIELD", "light field snapshot to write after every iteration (required)");
-  cl.AddValue("--directions", "N", "directions: 2n^2+1, e.g. 513, 2049, 8193", "513");
-  cl.AddValue("--rays", "N", "lines per subfield side", "32");
+  cl.AddValue("--directions", "N",
+    "directions: 2n^2+1, e.g. 513, 2049, 8193; auto: from the lines per side", "auto");
+  cl.AddValue("--rays", "N",
+    "lines per subfield side; auto: from the scene's small features, time and memory", "auto");
   cl.AddValue("--tiles", "M", "tiles per subfield side (0 = rays / 8)", "0");
   cl.AddValue("--tolerance", "X",
     "shoot until at most this share of the emitted flux is left unshot", "0.01");
@@ -67,8 +186,15 @@ int Propagate(const std::vector<std::string>& args)
   cl.AddValue("--iterations", "K",
     "instead of --tolerance: exactly K shooting iterations (in total, when resuming)");
   cl.AddValue("--memory-budget", "GIB", "refuse fields needing more memory than this", "4");
+  cl.AddValue("--snapshot-every", "K",
+    "write FIELD after every K-th iteration (and the last) instead of after each: a run killed "
+    "in between resumes from the last one written",
+    "1");
   cl.AddFlag("--resume", "continue the propagation stored in FIELD");
   cl.AddFlag("--force", "replace an existing light field FIELD (never any other file)");
+  cl.AddFlag("--rank-report",
+    "print each rank's seconds (trace, iterations, snapshot writes; of which in MPI calls), "
+    "CPU seconds, peak memory and bytes sent");
   cl.AddFlag("--filter",
     "write the diffuse totals smoothed by an edge-keeping (bilateral) "
     "filter against mottling; not with --resume");
@@ -78,13 +204,17 @@ int Propagate(const std::vector<std::string>& args)
   {
     return exitCode; // --help printed, or a usage error reported
   }
-  int directions = 0, rays = 0, tiles = 0, iterations = -1, maxIterations = 0;
+  int directions = 0, rays = 0, tiles = 0, iterations = -1, maxIterations = 0, snapshotEvery = 1;
   double budget = 0.0, tolerance = 0.0;
-  if (!cl.GetInt("--directions", 3, 1 << 26, directions, error) ||
-    !cl.GetInt("--rays", 1, 4096, rays, error) || !cl.GetInt("--tiles", 0, 4096, tiles, error) ||
+  // "auto" is 0: vlf::ResolveAutomaticSettings chooses once the scene is read.
+  const auto getCount = [&](const char* name, int low, int high, int& value)
+  { return cl.Get(name) == "auto" ? (value = 0, true) : cl.GetInt(name, low, high, value, error); };
+  if (!getCount("--directions", 3, 1 << 26, directions) || !getCount("--rays", 1, 4096, rays) ||
+    !cl.GetInt("--tiles", 0, 4096, tiles, error) ||
     (cl.Has("--iterations") && !cl.GetInt("--iterations", 0, 10000, iterations, error)) ||
     !cl.GetDouble("--tolerance", 1e-9, 0.999, tolerance, error) ||
     !cl.GetInt("--max-iterations", 1, 10000, maxIterations, error) ||
+    !cl.GetInt("--snapshot-every", 1, 10000, snapshotEvery, error) ||
     !cl.GetDouble("--memory-budget", 1e-3, 1e6, budget, error))
   {
     return cl.UsageError(error);
@@ -147,9 +277,32 @@ int Propagate(const std::vector<std::string>& args)
   const std::uint64_t budgetBytes = static_cast<std::uint64_t>(budget * 1073741824.0);
   // Under mpiexec (vtkMPIController, mesolight.cxx) the directions are split among the ranks
   // (Distribution.h); rank 0 prints and writes FIELD. One rank is the serial path.
-  vlf::ControllerReducer reducer;
+  vlf::ControllerReducer controllerReducer;
+  TimedReducer reducer(controllerReducer);
   const bool distributed = reducer.Size() > 1;
   const bool root = reducer.Rank() == 0;
+  int threadsPerRank = 0; // 0: vtkSMPTools' default (every hardware thread)
+  if (distributed && !std::getenv("VTK_SMP_MAX_THREADS"))
+  {
+    // Each rank's parallel-for would start a thread per core: ranks sharing a machine split its
+    // cores instead of oversubscribing them (two ranks on two cores: one thread each).
+    const int hardware = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    threadsPerRank = std::max(1, hardware / RanksOnThisNode(reducer.Size()));
+    vtkSMPTools::Initialize(threadsPerRank);
+  }
+  const bool rankReport = cl.Has("--rank-report");
+  double traceSeconds = 0.0, traceCollective = 0.0, iterationSeconds = 0.0, writeSeconds = 0.0,
+         writeCollective = 0.0, writeTotal = 0.0;
+  // CPU seconds of the iterations (the shooting, excluding snapshot writes), and of those inside
+  // MPI calls: the rest is this rank's work, which an idle machine turns into wall time.
+  double iterationCpu = 0.0, iterationMpiCpu = 0.0, cpuMark = 0.0, mpiCpuMark = 0.0;
+  const auto peakRss = []()
+  {
+    rusage usage{};
+    ::getrusage(RUSAGE_SELF, &usage);
+    return 1024.0 * static_cast<double>(usage.ru_maxrss); // Linux: KiB
+  };
+  double tracedPeakRss = 0.0; // after tracing (or reading) the field, before propagating
   if (!root)
   {
     std::cout.setstate(std::ios::failbit); // one rank speaks; errors are agreed, rank 0 prints
@@ -167,14 +320,9 @@ int Propagate(const std::vector<std::string>& args)
       }
       if (distributed)
       {
-        // Every rank reads FIELD, whatever the rank count it was written with, then keeps its
-        // own directions' maps.
-        vlf::Agree(reducer,
-          [&]()
-          {
-            field = vlf::ReadSnapshot(out, budgetBytes);
-            vlf::KeepOwnedSubfields(*field, reducer);
-          });
+        // Every rank reads FIELD, whatever the rank count it was written with, keeping its own
+        // directions' maps only (the others' are read, checked and dropped one at a time).
+        vlf::Agree(reducer, [&]() { field = vlf::ReadOwnedSubfields(out, budgetBytes, reducer); });
       }
       else
       {
@@ -184,7 +332,7 @@ int Propagate(const std::vector<std::string>& args)
       // silently ignored, so they are refused, naming both.
       const vlf::LightFieldSettings& stored = field->Settings();
       const int storedRays = stored.RaysPerSide;
-      const int givenRays = cl.Has("--rays") ? rays : storedRays;
+      const int givenRays = cl.Has("--rays") && rays > 0 ? rays : storedRays;
       const struct
       {
         const char* Option;
@@ -195,7 +343,7 @@ int Propagate(const std::vector<std::string>& args)
         { "--tiles", tiles > 0 ? tiles : std::max(1, givenRays / 8), stored.TilesPerSide } };
       for (const auto& check : checks)
       {
-        if (cl.Has(check.Option) && check.Given != check.Stored)
+        if (cl.Has(check.Option) && cl.Get(check.Option) != "auto" && check.Given != check.Stored)
         {
           return cl.UsageError(std::string("--resume: ") + check.Option + " " +
             cl.Get(check.Option) + " differs from the " + std::to_string(check.Stored) +
@@ -203,6 +351,7 @@ int Propagate(const std::vector<std::string>& args)
             check.Option + ", or start over with --force)");
         }
       }
+      traceCollective = reducer.Seconds; // (the report's "trace" of a resumed run: its reading)
       std::cout << "resuming '" << out << "' after " << field->IterationsDone << " iterations\n";
     }
     else
@@ -240,15 +389,28 @@ int Propagate(const std::vector<std::string>& args)
       vlf::LightFieldSettings settings;
       settings.Directions = static_cast<std::size_t>(directions);
       settings.RaysPerSide = rays;
-      settings.TilesPerSide = tiles > 0 ? tiles : std::max(1, rays / 8);
+      settings.TilesPerSide = tiles;
       settings.MemoryBudget = budgetBytes;
+      const vlf::AutomaticChoice choice = vlf::ResolveAutomaticSettings(scene, settings);
+      settings = choice.Settings;
+      if (rays == 0)
+      {
+        std::cout << "automatic resolution: " << choice.Describe() << "\n";
+      }
       const vlf::MemoryEstimate estimate =
         distributed ? vlf::MemoryEstimate() : vlf::EstimateMemory(scene, settings);
-      std::cout << "light field: " << directions << " directions x " << rays << "x" << rays
-                << " rays, " << settings.TilesPerSide << "x" << settings.TilesPerSide << " tiles";
+      std::cout << "light field: " << settings.Directions << " directions x "
+                << settings.RaysPerSide << "x" << settings.RaysPerSide << " rays, "
+                << settings.TilesPerSide << "x" << settings.TilesPerSide << " tiles";
       if (distributed)
       {
-        std::cout << ", directions split over " << reducer.Size() << " MPI ranks\n";
+        std::cout << ", directions split over " << reducer.Size() << " MPI ranks";
+        if (threadsPerRank > 0)
+        {
+          std::cout << ", " << threadsPerRank << " thread" << (threadsPerRank > 1 ? "s" : "")
+                    << " per rank";
+        }
+        std::cout << "\n";
       }
       else
       {
@@ -258,6 +420,8 @@ int Propagate(const std::vector<std::string>& args)
       field = vlf::LightField::Build(scene, settings,
         root ? PrintedProgress("tracing subfields") : ProgressCallback(),
         distributed ? &reducer : nullptr);
+      traceSeconds = SecondsSince(start);
+      traceCollective = reducer.Seconds;
       std::cout << "traced in " << SecondsSince(start) << " s, "
                 << FormatBytes(field->AllocatedBytes()) << " allocated\n";
     }
@@ -266,9 +430,14 @@ int Propagate(const std::vector<std::string>& args)
       ? PrintedProgress(iterations < 0 ? "toward the tolerance" : "propagating")
       : ProgressCallback();
     options.Reduce = distributed ? &reducer : nullptr;
-    bool written = false;
+    int writtenIteration = resume ? field->IterationsDone : -1; // what FIELD holds
+    tracedPeakRss = peakRss();
+    cpuMark = ProcessCpuSeconds();
+    mpiCpuMark = reducer.CpuSeconds;
     const auto write = [&](const vlf::LightField& f)
     {
+      const Clock::time_point writeStart = Clock::now();
+      const double collectiveBefore = reducer.Seconds;
       if (distributed)
       {
         vlf::WriteDistributedSnapshot(*field, out, reducer);
@@ -277,7 +446,25 @@ int Propagate(const std::vector<std::string>& args)
       {
         vlf::WriteSnapshot(f, out);
       }
-      written = true;
+      writeSeconds = SecondsSince(writeStart); // the last write (a serial part of each iteration)
+      writeTotal += writeSeconds;
+      writeCollective += reducer.Seconds - collectiveBefore;
+      writtenIteration = f.IterationsDone;
+    };
+    const auto snapshot = [&](const vlf::LightField& f)
+    {
+      if (filter)
+      {
+        // The snapshot gets the filtered totals; the propagation goes on with the raw ones.
+        const std::vector<glm::vec3> raw = f.TotalDiffuse;
+        vlf::FilterTotalDiffuse(*field, vlf::TextureFilterSettings());
+        write(f);
+        field->TotalDiffuse = raw;
+      }
+      else
+      {
+        write(f);
+      }
     };
     char toleranceText[32] = "none: fixed count";
     if (iterations < 0)
@@ -285,57 +472,100 @@ int Propagate(const std::vector<std::string>& args)
       std::snprintf(toleranceText, sizeof(toleranceText), "%g%%", 100.0 * tolerance);
     }
     const auto afterIteration = [&](const vlf::LightField& f)
+    {
+      iterationCpu += ProcessCpuSeconds() - cpuMark;
+      iterationMpiCpu += reducer.CpuSeconds - mpiCpuMark;
+      const vlf::LightField::IterationEnergy& e = f.EnergyLog.back();
+      const bool due = e.Iteration % snapshotEvery == 0;
+      if (due)
       {
-        if (filter)
-        {
-          // The snapshot gets the filtered totals; the propagation goes on with the raw ones.
-          const std::vector<glm::vec3> raw = f.TotalDiffuse;
-          vlf::FilterTotalDiffuse(*field, vlf::TextureFilterSettings());
-          write(f);
-          field->TotalDiffuse = raw;
-        }
-        else
-        {
-          write(f);
-        }
-        const vlf::LightField::IterationEnergy& e = f.EnergyLog.back();
-        if (!root)
-        {
-          return;
-        }
+        snapshot(f);
+      }
+      iterationSeconds += e.Seconds;
+      if (root)
+      {
+        char took[32];
+        std::snprintf(took, sizeof(took), " in %.2f s", writeSeconds);
+        const std::string written = due
+          ? "wrote " + out + took
+          : "not written (--snapshot-every " + std::to_string(snapshotEvery) + ")";
         std::printf(
           "iteration %d: %.2f s, shot %.4g, escaped %.4g, absorbed %.4g, left to shoot %.4g "
-          "= %.2f%% of the emitted (tolerance %s) (energy balance error %.1e); wrote %s\n",
+          "= %.2f%% of the emitted (tolerance %s) (energy balance error %.1e); %s\n",
           e.Iteration, e.Seconds, e.Shot[0] + e.Shot[1] + e.Shot[2],
           e.Escaped[0] + e.Escaped[1] + e.Escaped[2], e.Absorbed[0] + e.Absorbed[1] + e.Absorbed[2],
           e.Unshot[0] + e.Unshot[1] + e.Unshot[2], 100.0 * vlf::UnshotFraction(f), toleranceText,
-          e.ConservationError(), out.c_str());
+          e.ConservationError(), written.c_str());
         std::fflush(stdout);
-      };
+      }
+      KillIfAsked(e.Iteration, reducer.Rank());
+      cpuMark = ProcessCpuSeconds();
+      mpiCpuMark = reducer.CpuSeconds;
+    };
     if (iterations >= 0)
     {
       vlf::Propagate(*field, iterations, options, afterIteration);
     }
     // (Every rank decides alike: the unshot fraction is summed over the ranks.)
-    else if (!vlf::PropagateToTolerance(*field, tolerance, maxIterations, options, afterIteration) &&
+    else if (!vlf::PropagateToTolerance(
+               *field, tolerance, maxIterations, options, afterIteration) &&
       root)
     {
       std::cerr << "mesolight vlf propagate: warning: " << 100.0 * vlf::UnshotFraction(*field)
                 << "% of the emitted flux is still unshot after " << maxIterations
                 << " iterations (--max-iterations)\n";
     }
+    // The last iteration (with --snapshot-every), or with zero iterations the traced field.
     // (Decided alike on every rank: a file test could race with rank 0's write.)
-    if (distributed ? !written && !resume : !vlf::FileExists(out))
+    if (writtenIteration != field->IterationsDone)
     {
-      write(*field); // zero iterations: the traced field
+      snapshot(*field);
     }
     if (vtkMultiProcessController::GetGlobalController()) // under mpiexec, even one rank
     {
       const std::uint64_t reduced = distributed ? vlf::ReducedBytesPerIteration(*field) : 0;
       std::cout << "MPI: " << reducer.Size() << " ranks, " << reduced << " bytes ("
-                << FormatBytes(reduced) << ") summed per rank and iteration; rank 0 holds "
+                << FormatBytes(reduced) << ") summed per rank and iteration, "
+                << controllerReducer.BytesContributed()
+                << " bytes sent by rank 0 in all (with mirrors also the mirrored radiance handed "
+                   "to the owners); rank 0 holds "
                 << field->AllocatedBytes() << " bytes (" << FormatBytes(field->AllocatedBytes())
                 << ")\n";
+    }
+    if (rankReport)
+    {
+      // One row per rank, summed onto every rank (each fills its own), printed by rank 0.
+      constexpr std::size_t columns = 14;
+      std::vector<double> rows(columns * static_cast<std::size_t>(reducer.Size()), 0.0);
+      rusage usage{};
+      ::getrusage(RUSAGE_SELF, &usage);
+      const double cpu = static_cast<double>(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
+        1e-6 * static_cast<double>(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
+      std::size_t owned = 0;
+      for (std::size_t k = 0; k < field->SubfieldCount(); ++k)
+      {
+        owned += field->OwnsSubfield(k) ? 1 : 0;
+      }
+      const double collective = reducer.Seconds;
+      const double mine[columns] = { traceSeconds, traceCollective, iterationSeconds,
+        collective - traceCollective - writeCollective, writeTotal, writeCollective, cpu, peakRss(),
+        static_cast<double>(field->AllocatedBytes()), static_cast<double>(owned),
+        static_cast<double>(controllerReducer.BytesContributed()), iterationCpu, iterationMpiCpu,
+        tracedPeakRss };
+      std::copy(
+        mine, mine + columns, rows.begin() + columns * static_cast<std::size_t>(reducer.Rank()));
+      reducer.SumInPlace(rows.data(), rows.size());
+      for (int r = 0; root && r < reducer.Size(); ++r)
+      {
+        const double* v = rows.data() + columns * static_cast<std::size_t>(r);
+        std::printf("rank %d: trace %.3f s (in MPI %.3f s), iterations %.3f s (in MPI %.3f s), "
+                    "snapshot writes %.3f s (in MPI %.3f s), cpu %.3f s, peak RSS %.0f bytes, "
+                    "holds %.0f bytes, %.0f directions, sent %.0f bytes, iteration cpu %.3f s "
+                    "(in MPI %.3f s), peak RSS after trace %.0f bytes\n",
+          r, v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7], v[8], v[9], v[10], v[11], v[12],
+          v[13]);
+      }
+      std::fflush(stdout);
     }
     std::cout << "light field '" << out << "': " << field->IterationsDone << " iterations\n";
   }

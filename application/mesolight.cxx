@@ -20,7 +20,9 @@
 #include "RenderCommand.h"
 #include "TraceCommand.h"
 #include "VTKMessage.h"
+#include "VlfAccuracyBenchmark.h"
 #include "VlfCommand.h"
+#include "VlfReliefBenchmark.h"
 #include "WalkthroughBenchmark.h"
 
 #include <vtkLogger.h>
@@ -32,10 +34,13 @@
 #include <vtkSmartPointer.h>
 
 #include <cstdlib>
+#include <fstream>
 #include <iostream>
 #include <new>
 #include <string>
 #include <vector>
+
+#include <unistd.h> // getppid
 
 namespace
 {
@@ -102,7 +107,7 @@ const std::vector<mesolight::Command>& Commands()
         { "render", "FIELD --out IMAGE.png [--mode MODE]",
           "render a light field: its diffuse totals on the\nCPU, or through vtkLightFieldActor "
           "with "
-          "--mode",
+          "--mode;\nnamed surfaces as reliefs with --relief",
           RunVlfRender, {} },
         { "view", "FIELD [options]",
           "walk through a light field in a window\n(vtkLightFieldActor, four modes)",
@@ -125,6 +130,12 @@ const std::vector<mesolight::Command>& Commands()
         { "trace", "[options]", "rays/s (coherent vs incoherent), path samples/s",
           RunTraceBenchmark, {} },
         { "vlf", "[options]", "light field time, memory and accuracy sweep", RunVlfBenchmark, {} },
+        { "vlf-accuracy", "[options]",
+          "light field vs path tracer per pixel on five\nscenes: error, time, memory per setting",
+          RunVlfAccuracyBenchmark, {} },
+        { "vlf-relief", "--reference REF.exr --mask M.exr --images ..",
+          "a relief lit by the light field vs the path-traced\ndense mesh; negative cases, cost",
+          RunVlfReliefBenchmark, {} },
         { "walkthrough", "[FIELD] [options]",
           "light field walkthrough: frame time per mode and\nstage (vtkLightFieldActor)",
           RunWalkthroughBenchmark, {} },
@@ -169,19 +180,40 @@ int RunHelp(const std::vector<std::string>& args)
 }
 } // namespace
 
+// Whether this process' parent is an MPI launcher or its node daemon (Open MPI, MPICH's Hydra,
+// PMIx, Slurm), not a program that happens to run under one.
+static bool StartedByMpiLauncher()
+{
+  std::ifstream comm("/proc/" + std::to_string(static_cast<long>(::getppid())) + "/comm");
+  std::string parent;
+  std::getline(comm, parent);
+  for (const char* launcher : { "mpiexec", "mpirun", "orterun", "orted", "prterun", "prted",
+         "hydra_pmi_proxy", "mpiexec.hydra", "slurmstepd" })
+  {
+    if (parent == launcher)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
 int main(int argc, char* argv[])
 {
   vtkNew<ConsoleOutputWindow> console;
   vtkOutputWindow::SetInstance(console);
   vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF); // messages go through the console window
   const std::vector<std::string> args(argv + 1, argv + argc);
-  // Started by mpiexec (Open MPI, MPICH/PMI) for the one command that uses MPI, `vlf propagate`
-  // (the distributed light field); otherwise MPI is not touched -- a tool run by an MPI rank
-  // (e.g. `vlf render` from a pvbatch script under mpiexec) inherits the launcher's variables but
-  // is no rank of the job.
+  // Started by mpiexec (Open MPI, MPICH/PMI) for the commands that use MPI, `vlf propagate` and
+  // `vlf render` (the distributed light field); otherwise MPI is not touched -- a tool run by an
+  // MPI rank (e.g. `vlf render` from a pvbatch script under mpiexec) inherits the launcher's
+  // variables but is no rank of the job. `vlf render` is often run that way, so it joins only
+  // when its parent is the launcher itself.
   vtkSmartPointer<vtkMPIController> mpi;
-  if (args.size() >= 2 && args[0] == "vlf" && args[1] == "propagate" &&
-    (std::getenv("OMPI_COMM_WORLD_SIZE") || std::getenv("PMI_SIZE") || std::getenv("PMIX_RANK")))
+  const bool launched =
+    std::getenv("OMPI_COMM_WORLD_SIZE") || std::getenv("PMI_SIZE") || std::getenv("PMIX_RANK");
+  if (args.size() >= 2 && args[0] == "vlf" && launched &&
+    (args[1] == "propagate" || (args[1] == "render" && StartedByMpiLauncher())))
   {
     mpi = vtkSmartPointer<vtkMPIController>::New();
     mpi->Initialize(&argc, &argv);

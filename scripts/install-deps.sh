@@ -17,6 +17,8 @@ PACKAGES=(
   clang libclang-rt-dev  # the fuzz stage of scripts/test.sh: clang and its libFuzzer runtime
   xvfb xauth mesa-utils libgl1-mesa-dri
 )
+# Real height maps for scripts/bench-relief-real-maps.sh (game textures, about 860 MB): opt-in.
+if [ "${MESOLIGHT_REAL_MAPS:-0}" = 1 ]; then PACKAGES+=(redeclipse-data); fi
 
 missing=()
 for p in "${PACKAGES[@]}"; do

@@ -9,6 +9,8 @@
 
 #include "MinDepthPyramid.h" // Mesolight::ReliefTextures core
 
+#include <algorithm>
+#include <cstddef>
 #include <utility>
 
 vtkStandardNewMacro(vtkMinDepthPyramidTexture);
@@ -35,6 +37,44 @@ bool vtkMinDepthPyramidTexture::Upload(
     mesolight::MinDepthPyramidLevelSize(width, height, static_cast<int>(l), lw, lh);
     sizes.emplace_back(lw, lh);
   }
+  // RGBA: level 0 holds each cell's four corner depths (the texels (k-1, k-1), (k, k-1),
+  // (k-1, k), (k, k), clamped to the texture) and the coarser levels their minimum in every
+  // channel. The traversal then reads a level-0 cell once, for its bound and for the exact patch
+  // intersection alike, instead of one pyramid fetch and four relief-texture fetches.
+  std::vector<std::vector<float>> rgba(levels.size());
+  for (size_t l = 0; l < levels.size(); ++l)
+  {
+    const size_t n = levels[l].size();
+    rgba[l].resize(4 * n);
+    if (l > 0)
+    {
+      for (size_t i = 0; i < n; ++i)
+      {
+        std::fill_n(rgba[l].begin() + static_cast<std::ptrdiff_t>(4 * i), 4, levels[l][i]);
+      }
+      continue;
+    }
+    const int cw = sizes[0].first;
+    const int ch = sizes[0].second;
+    auto texel = [&](int i, int j)
+    {
+      i = std::min(std::max(i, 0), width - 1);
+      j = std::min(std::max(j, 0), height - 1);
+      return depth[static_cast<size_t>(j) * static_cast<size_t>(width) + static_cast<size_t>(i)];
+    };
+    for (int ky = 0; ky < ch; ++ky)
+    {
+      for (int kx = 0; kx < cw; ++kx)
+      {
+        float* c = &rgba[0][4 *
+          (static_cast<size_t>(ky) * static_cast<size_t>(cw) + static_cast<size_t>(kx))];
+        c[0] = texel(kx - 1, ky - 1);
+        c[1] = texel(kx, ky - 1);
+        c[2] = texel(kx - 1, ky);
+        c[3] = texel(kx, ky);
+      }
+    }
+  }
   if (!this->TextureObject)
   {
     this->TextureObject = vtkSmartPointer<vtkTextureObject>::New();
@@ -48,8 +88,7 @@ bool vtkMinDepthPyramidTexture::Upload(
   pyramid->SetBaseLevel(0);
   pyramid->SetMaxLevel(static_cast<int>(levels.size()) - 1);
   if (!pyramid->Create2DFromRaw(static_cast<unsigned int>(sizes[0].first),
-        static_cast<unsigned int>(sizes[0].second), 1, VTK_FLOAT,
-        const_cast<float*>(levels[0].data())))
+        static_cast<unsigned int>(sizes[0].second), 4, VTK_FLOAT, rgba[0].data()))
   {
     vtkErrorMacro(<< "Could not create the min-depth pyramid texture.");
     return false;
@@ -63,8 +102,8 @@ bool vtkMinDepthPyramidTexture::Upload(
   glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
   for (size_t l = 1; l < levels.size(); ++l)
   {
-    glTexImage2D(GL_TEXTURE_2D, static_cast<GLint>(l), GL_R32F, sizes[l].first, sizes[l].second, 0,
-      GL_RED, GL_FLOAT, levels[l].data());
+    glTexImage2D(GL_TEXTURE_2D, static_cast<GLint>(l), GL_RGBA32F, sizes[l].first, sizes[l].second,
+      0, GL_RGBA, GL_FLOAT, rgba[l].data());
   }
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, static_cast<GLint>(levels.size()) - 1);
   if (levels.size() > 16)

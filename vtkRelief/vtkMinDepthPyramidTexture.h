@@ -4,11 +4,13 @@
  * @brief   The min-depth (maximum-mipmap) pyramid of a relief texture on the GPU, which the
  *          MaximumMipmap method traverses.
  *
- * Level 0 is the relief texture's depth; each coarser level holds the minimum depth (the highest
- * surface) of the cells below it (mesolight::ComputeMinDepthPyramid,
+ * Level 0 has one texel per cell between the relief texture's texel centres holding the cell's
+ * four corner depths (RGBA), so one fetch gives the traversal both the cell's bound and its
+ * bilinear patch; each coarser level holds the minimum depth (the highest surface) of the cells
+ * below it in every channel (mesolight::ComputeMinDepthPyramid,
  * filters/ReliefTextures/core/MinDepthPyramid.h). Level sizes halve rounding down, a complete
- * OpenGL mipmap, so all levels are mip levels of one single-channel float texture (uploaded by
- * hand: OpenGL would average, not take minima).
+ * OpenGL mipmap, so all levels are mip levels of one RGBA float texture (uploaded by hand:
+ * OpenGL would average, not take minima). 16 bytes per cell: 5.6 MB for a 512^2 map.
  */
 
 #ifndef vtkMinDepthPyramidTexture_h

@@ -6,7 +6,8 @@ cmake_minimum_required(VERSION 3.16) # quoted strings in if() are strings (CMP00
 include("${CMAKE_CURRENT_LIST_DIR}/RunTool.cmake")
 cli_fresh_work()
 cli_execute(bench relief --maps Bricks,file --angles 60 --size 160x160 --frames 1
-            --resolution 128 --methods texture,relief --csv "${WORK}/sweep.csv" --plots "${WORK}")
+            --resolution 128 --methods texture,relief,default --csv "${WORK}/sweep.csv"
+            --plots "${WORK}")
 message("${cli_stdout}")
 if (NOT cli_rc EQUAL 0)
   message(FATAL_ERROR "bench relief failed (rc ${cli_rc}): ${cli_stderr}")
@@ -17,11 +18,19 @@ foreach (file sweep-stone-16bit.png relief-sweep-view60.png sweep.csv)
   endif ()
 endforeach ()
 
-# texture: 1 setting, relief: 15 settings, on two maps; one header line.
+# texture: 1 setting, relief: 15 settings, default: 1 (an untouched property's), on two maps;
+# one header line.
 file(STRINGS "${WORK}/sweep.csv" lines)
 list(LENGTH lines count)
-if (NOT count EQUAL 33)
-  message(FATAL_ERROR "sweep.csv has ${count} lines, not 33")
+if (NOT count EQUAL 35)
+  message(FATAL_ERROR "sweep.csv has ${count} lines, not 35")
+endif ()
+# The default's rows name its method and steps, and the summary places it per map and angle.
+if (NOT cli_stdout MATCHES "default +relief 10\\+8")
+  message(FATAL_ERROR "no 'default  relief 10+8' row in the table")
+endif ()
+if (NOT cli_stdout MATCHES "the default \\(relief 10\\+8\\) per map and angle")
+  message(FATAL_ERROR "the summary does not place the default")
 endif ()
 # A non-negative decimal number (as the CSV writes it) in millionths, for integer math().
 function (to_micro value out)

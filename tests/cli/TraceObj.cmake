@@ -9,7 +9,10 @@
 #   --camera), so the up vector and the row order are both checked.
 # - Bad input: a missing file, a malformed camera, a NaN or out-of-range field of view, a camera
 #   without a frame, a scene without emitter, a view up given twice, the EXR over the scene file.
-# PART (furnace, camera or bad_input) picks one, so that each is its own cli.trace.* test.
+# - A relief (--relief SURFACE=DEPTH_IMAGE, the dense displaced mesh): the furnace with a deep
+#   relief on its back face still reads 2 (the relief is closed: a gap along its border would let
+#   paths out), its mask covers the view of that face, and bad relief input is refused.
+# PART (furnace, camera, bad_input or relief) picks one, so that each is its own cli.trace.* test.
 include("${CMAKE_CURRENT_LIST_DIR}/RunTool.cmake")
 cli_fresh_work()
 
@@ -114,13 +117,74 @@ if (PART STREQUAL "bad_input")
     --out "${WORK}/never.png" --exr "${WORK}/furnace.obj")
   cli_expect_error(2 "--scene cornell only" trace --scene "${WORK}/furnace.obj"
     --compare-exr "${WORK}/furnace.exr" ${_never})
-  cli_expect_error(2 "--camera applies to --scene FILE.obj only" trace --scene cornell
-    --camera 0,0,0,0,0,1 ${_never})
-  cli_expect_error(2 "--fov applies to --scene FILE.obj only" trace --scene spheres --fov 30
-    ${_never})
+  cli_expect_error(2 "--fov applies to --scene FILE.obj or cornell only" trace --scene spheres
+    --fov 30 ${_never})
   foreach (_file IN ITEMS never.png never.exr)
     if (EXISTS "${WORK}/${_file}")
       message(FATAL_ERROR "bad input wrote ${_file}")
+    endif ()
+  endforeach ()
+endif ()
+
+if (PART STREQUAL "relief")
+  # The furnace with its far face (z = 1, facing -z) named `far`, the others `box`.
+  file(WRITE "${WORK}/relief.obj" "mtllib furnace.mtl
+v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1
+usemtl glow
+g box\nf 1 5 6 2\nf 4 3 7 8\nf 1 2 3 4\nf 1 4 8 5\nf 2 6 7 3
+g far\nf 5 8 7 6
+")
+  # A rough depth map: blurred noise over [0, 1].
+  execute_process(COMMAND "${OIIOTOOL}" --pattern noise:type=uniform:min=0:max=1:seed=3 24x24 1
+    --blur 3x3 -d uint8 -o "${WORK}/depth.png" RESULT_VARIABLE rc ERROR_VARIABLE err)
+  if (NOT rc EQUAL 0)
+    message(FATAL_ERROR "oiiotool cannot make the depth map: ${err}")
+  endif ()
+  set(_relief --relief "far=${WORK}/depth.png" --relief-depth-scale 0.4)
+  cli_expect(0 "relief on 'far': 24x24 depth texels" trace --scene "${WORK}/relief.obj"
+    ${_relief} ${_inside} --offscreen --out "${WORK}/relief.png" --exr "${WORK}/relief.exr")
+  furnace_agrees("${WORK}/relief.exr" _ok)
+  if (NOT _ok)
+    message(FATAL_ERROR "the furnace with a relief does not read 2: the relief leaks")
+  endif ()
+  # Looking at the relief (a 40 degree view from inside sees only the far face): the mask is 1
+  # everywhere; looking away from it, 0. The view is off the face's centre: from the centre, the
+  # mask's symmetric rays run exactly along the face's diagonal edge, which Embree's (non-robust)
+  # triangle test may let through between the two triangles sharing it.
+  cli_expect(0 "relief coverage per pixel" trace --scene "${WORK}/relief.obj" ${_relief}
+    --camera 0.47,0.52,0.1,0.47,0.52,0.9 --fov 40 --width 16 --height 16 --samples 1 --offscreen
+    --out "${WORK}/mask-view.png" --relief-mask "${WORK}/mask.exr")
+  exr_stat_milli("${WORK}/mask.exr" Avg _covered)
+  cli_expect(0 "relief coverage per pixel" trace --scene "${WORK}/relief.obj" ${_relief}
+    --camera 0.5,0.5,0.9,0.5,0.5,0.1 --fov 40 --width 16 --height 16 --samples 1 --offscreen
+    --out "${WORK}/mask-away.png" --relief-mask "${WORK}/mask-away.exr")
+  exr_stat_milli("${WORK}/mask-away.exr" Max _away)
+  message("relief mask: mean ${_covered}/1000 facing it, max ${_away}/1000 facing away")
+  if (NOT _covered EQUAL 1000 OR NOT _away EQUAL 0)
+    message(FATAL_ERROR "the relief mask does not follow the relief")
+  endif ()
+  # The built-in box takes a relief on its named walls and a walkthrough camera.
+  cli_expect(0 "relief on 'back'" trace --scene cornell --relief "back=${WORK}/depth.png"
+    --camera 278,273,-800,278,273,0 --width 8 --height 8 --samples 1 --offscreen
+    --out "${WORK}/cornell.png")
+  # Bad relief input: exit code and a message naming the problem, nothing written.
+  set(_never --offscreen --out "${WORK}/never.png" --exr "${WORK}/never.exr")
+  cli_expect_error(1 "its surfaces are: box, far" trace --scene "${WORK}/relief.obj"
+    --relief "window=${WORK}/depth.png" ${_never})
+  cli_expect_error(1 "is not planar" trace --scene "${WORK}/relief.obj"
+    --relief "box=${WORK}/depth.png" ${_never})
+  cli_expect_error(1 "is not planar" trace --scene cornell --relief "tall=${WORK}/depth.png"
+    ${_never})
+  cli_expect_error(1 "takes SURFACE=DEPTH_IMAGE" trace --scene cornell --relief back ${_never})
+  cli_expect_error(1 "missing.png" trace --scene cornell --relief "back=${WORK}/missing.png"
+    ${_never})
+  cli_expect_error(1 "--relief-mask needs --relief" trace --scene cornell --camera 0,0,0,0,0,1
+    --relief-mask "${WORK}/never-mask.exr" ${_never})
+  cli_expect_error(2 "--relief applies to --scene FILE.obj or cornell only" trace --scene spheres
+    --relief "back=${WORK}/depth.png" ${_never})
+  foreach (_file IN ITEMS never.png never.exr never-mask.exr)
+    if (EXISTS "${WORK}/${_file}")
+      message(FATAL_ERROR "bad relief input wrote ${_file}")
     endif ()
   endforeach ()
 endif ()

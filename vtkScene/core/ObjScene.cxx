@@ -333,6 +333,9 @@ ObjSceneRead ParseObjScene(std::istream& obj, const std::string& name, const std
   bool haveMaterial = false;
   std::vector<std::array<Corner, 3>> faces; // triangles, in OBJ indices
   std::vector<std::uint32_t> faceMaterials;
+  std::vector<std::uint32_t> faceSurfaces; // TriangleScene::NoSurface outside any `g`/`o`
+  std::uint32_t currentSurface = TriangleScene::NoSurface;
+  bool anySurface = false;
   bool warnedLines = false;
   std::size_t recognised = 0;
 
@@ -432,6 +435,7 @@ ObjSceneRead ParseObjScene(std::istream& obj, const std::string& name, const std
       {
         faces.push_back({ corners[0], corners[k], corners[k + 1] });
         faceMaterials.push_back(currentMaterial);
+        faceSurfaces.push_back(currentSurface);
       }
       ++read.ObjFaces;
       ++recognised;
@@ -483,9 +487,22 @@ ObjSceneRead ParseObjScene(std::istream& obj, const std::string& name, const std
         warnedLines = true;
       }
     }
-    else if (key == "o" || key == "g" || key == "s" || key == "vp" || key == "mg" ||
-      key == "usemap" || key == "maplib" || key == "bevel" || key == "shadow_obj" ||
-      key == "trace_obj" || key == "lod" || key == "c_interp" || key == "d_interp")
+    else if (key == "o" || key == "g")
+    {
+      // The surface's name: the statement's names joined by a space (`g` may list several
+      // groups); a bare `g` returns to the unnamed default group.
+      std::string surface;
+      for (std::size_t k = 1; k < tokens.size(); ++k)
+      {
+        surface += (k > 1 ? " " : "") + tokens[k];
+      }
+      currentSurface = surface.empty() ? TriangleScene::NoSurface : read.Scene.AddSurface(surface);
+      anySurface = anySurface || !surface.empty();
+      ++recognised;
+    }
+    else if (key == "s" || key == "vp" || key == "mg" || key == "usemap" || key == "maplib" ||
+      key == "bevel" || key == "shadow_obj" || key == "trace_obj" || key == "lod" ||
+      key == "c_interp" || key == "d_interp")
     {
       ++recognised;
     }
@@ -552,6 +569,10 @@ ObjSceneRead ParseObjScene(std::istream& obj, const std::string& name, const std
     }
     scene.Triangles.push_back(triangle);
     scene.MaterialIds.push_back(faceMaterials[f]);
+    if (anySurface)
+    {
+      scene.SurfaceIds.push_back(faceSurfaces[f]);
+    }
     objTriangles.push_back(objTriangle);
   }
   read.NonManifoldEdges = CountNonManifoldEdges(objTriangles);
@@ -726,8 +747,14 @@ void WriteObjScene(const TriangleScene& scene, const std::string& objPath, bool 
     }
   }
   std::uint32_t material = ~0u;
+  std::string surface;
   for (std::size_t t = 0; t < scene.Triangles.size(); ++t)
   {
+    if (scene.SurfaceOf(t) != surface)
+    {
+      surface = scene.SurfaceOf(t);
+      out << "g" << (surface.empty() ? "" : " " + surface) << "\n";
+    }
     if (scene.MaterialIds[t] != material)
     {
       material = scene.MaterialIds[t];

@@ -1,13 +1,16 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Wavefront OBJ + MTL scenes, the scene files of the light field and the ray tracer (Wither 2005
-// §2.4.2.1: the propagator reads a scene as *.obj with a *.mtl of surface properties). Reads into the shared TriangleScene
-// and writes one back (the built-in Cornell box as an example of the format).
+// §2.4.2.1: the propagator reads a scene as *.obj with a *.mtl of surface properties). Reads into
+// the shared TriangleScene and writes one back (the built-in Cornell box as an example of the
+// format).
 //
 // Read: v, vt, vn, f (n-gons fan-triangulated; negative indices count back from the last
 // definition), usemtl, mtllib; MTL newmtl, Kd (diffuse), Ks (perfect specular, Wither 2005 §2.1),
-// Ke (emission), Ka, Ns, and the names of map_* textures (recorded, not loaded). Other statements
-// (o, g, s, illum, d, ...) are ignored. Errors throw ObjSceneError with "file:line: what";
-// a missing MTL file or material is a warning and gets a default grey material.
+// Ke (emission), Ka, Ns, and the names of map_* textures (recorded, not loaded); o and g name the
+// faces that follow (TriangleScene::SurfaceNames; the statement's names joined by a space, a bare
+// g ends the named group). Other statements (s, illum, d, ...) are ignored. Errors throw
+// ObjSceneError with "file:line: what"; a missing MTL file or material is a warning and gets a
+// default grey material.
 #ifndef mesolight_ObjScene_h
 #define mesolight_ObjScene_h
 
@@ -65,7 +68,8 @@ std::string MaterialFileOf(const std::string& objPath);
 
 // Writes `scene` as OBJ + MTL: objPath and the .mtl beside it (same stem), each through a
 // temporary file renamed into place. Existing files are not overwritten unless `overwrite`;
-// throws ObjSceneError. Numbers are written as the shortest text that reads back as the same float.
+// throws ObjSceneError. Named surfaces are written as g statements. Numbers are written as the
+// shortest text that reads back as the same float.
 void WriteObjScene(const TriangleScene& scene, const std::string& objPath, bool overwrite = false,
   const std::string& comment = "");
 

@@ -29,7 +29,40 @@ std::uint32_t TriangleScene::AddMaterial(const SceneMaterial& material)
   return static_cast<std::uint32_t>(this->Materials.size() - 1);
 }
 
-void TriangleScene::AddPolygon(const std::vector<glm::vec3>& corners, std::uint32_t materialId)
+std::uint32_t TriangleScene::AddSurface(const std::string& name)
+{
+  const auto found = std::find(this->SurfaceNames.begin(), this->SurfaceNames.end(), name);
+  if (found != this->SurfaceNames.end())
+  {
+    return static_cast<std::uint32_t>(found - this->SurfaceNames.begin());
+  }
+  this->SurfaceNames.push_back(name);
+  return static_cast<std::uint32_t>(this->SurfaceNames.size() - 1);
+}
+
+const std::string& TriangleScene::SurfaceOf(std::size_t triangle) const
+{
+  static const std::string unnamed;
+  if (triangle >= this->SurfaceIds.size() || this->SurfaceIds[triangle] == NoSurface ||
+    this->SurfaceIds[triangle] >= this->SurfaceNames.size())
+  {
+    return unnamed;
+  }
+  return this->SurfaceNames[this->SurfaceIds[triangle]];
+}
+
+void TriangleScene::NameLastTriangle(std::uint32_t surfaceId)
+{
+  if (this->Triangles.empty() || (surfaceId == NoSurface && this->SurfaceIds.empty()))
+  {
+    return;
+  }
+  this->SurfaceIds.resize(this->Triangles.size() - 1, NoSurface);
+  this->SurfaceIds.push_back(surfaceId);
+}
+
+void TriangleScene::AddPolygon(
+  const std::vector<glm::vec3>& corners, std::uint32_t materialId, std::uint32_t surfaceId)
 {
   if (corners.size() < 3)
   {
@@ -41,6 +74,7 @@ void TriangleScene::AddPolygon(const std::vector<glm::vec3>& corners, std::uint3
   {
     this->Triangles.emplace_back(first, first + i, first + i + 1);
     this->MaterialIds.push_back(materialId);
+    this->NameLastTriangle(surfaceId);
   }
 }
 
@@ -70,11 +104,62 @@ void TriangleScene::Append(const TriangleScene& other)
   }
   this->Positions.insert(this->Positions.end(), other.Positions.begin(), other.Positions.end());
   this->Materials.insert(this->Materials.end(), other.Materials.begin(), other.Materials.end());
+  std::vector<std::uint32_t> surfaceOf; // other's surface id -> ours
+  for (const std::string& name : other.SurfaceNames)
+  {
+    surfaceOf.push_back(this->AddSurface(name));
+  }
   for (std::size_t t = 0; t < other.Triangles.size(); ++t)
   {
     this->Triangles.push_back(other.Triangles[t] + glm::uvec3(vertexOffset));
     this->MaterialIds.push_back(other.MaterialIds[t] + materialOffset);
+    const std::uint32_t surface = t < other.SurfaceIds.size() ? other.SurfaceIds[t] : NoSurface;
+    this->NameLastTriangle(surface < surfaceOf.size() ? surfaceOf[surface] : NoSurface);
   }
+}
+
+std::string SurfaceNameList(const TriangleScene& scene)
+{
+  std::vector<bool> used(scene.SurfaceNames.size(), false);
+  for (const std::uint32_t id : scene.SurfaceIds)
+  {
+    if (id < used.size())
+    {
+      used[id] = true;
+    }
+  }
+  std::string list;
+  for (std::size_t s = 0; s < used.size(); ++s)
+  {
+    if (used[s])
+    {
+      list += (list.empty() ? "" : ", ") + scene.SurfaceNames[s];
+    }
+  }
+  return list.empty() ? std::string("(none)") : list;
+}
+
+std::vector<std::size_t> SurfaceTriangles(const TriangleScene& scene, const std::string& name)
+{
+  std::vector<std::size_t> triangles;
+  const auto found = std::find(scene.SurfaceNames.begin(), scene.SurfaceNames.end(), name);
+  if (found != scene.SurfaceNames.end())
+  {
+    const auto id = static_cast<std::uint32_t>(found - scene.SurfaceNames.begin());
+    for (std::size_t t = 0; t < scene.SurfaceIds.size() && t < scene.Triangles.size(); ++t)
+    {
+      if (scene.SurfaceIds[t] == id)
+      {
+        triangles.push_back(t);
+      }
+    }
+  }
+  if (triangles.empty())
+  {
+    throw SceneSurfaceError("the scene has no surface named '" + name + "'; its surfaces are: " +
+      SurfaceNameList(scene) + " (OBJ files name surfaces with `g` or `o` statements)");
+  }
+  return triangles;
 }
 
 bool SceneBounds(const TriangleScene& scene, glm::vec3& lower, glm::vec3& upper)
@@ -285,12 +370,20 @@ std::size_t RemoveDegenerateTriangles(TriangleScene& scene, float minimumArea)
     {
       scene.Triangles[kept] = scene.Triangles[t];
       scene.MaterialIds[kept] = scene.MaterialIds[t];
+      if (t < scene.SurfaceIds.size())
+      {
+        scene.SurfaceIds[kept] = scene.SurfaceIds[t];
+      }
       ++kept;
     }
   }
   const std::size_t dropped = scene.Triangles.size() - kept;
   scene.Triangles.resize(kept);
   scene.MaterialIds.resize(kept);
+  if (!scene.SurfaceIds.empty())
+  {
+    scene.SurfaceIds.resize(kept, TriangleScene::NoSurface);
+  }
   return dropped;
 }
 
@@ -326,8 +419,8 @@ std::vector<glm::vec3> Facing(std::vector<glm::vec3> quad, const glm::vec3& refe
   return quad;
 }
 
-void AddBlock(
-  TriangleScene& scene, const std::vector<std::vector<glm::vec3>>& faces, std::uint32_t material)
+void AddBlock(TriangleScene& scene, const std::vector<std::vector<glm::vec3>>& faces,
+  std::uint32_t material, std::uint32_t surface)
 {
   glm::vec3 centre(0.0f);
   for (const auto& face : faces)
@@ -340,7 +433,7 @@ void AddBlock(
   centre /= static_cast<float>(4 * faces.size());
   for (const auto& face : faces)
   {
-    scene.AddPolygon(Facing(face, centre, false), material);
+    scene.AddPolygon(Facing(face, centre, false), material, surface);
   }
 }
 } // namespace
@@ -372,28 +465,28 @@ TriangleScene MakeCornellBox()
   scene.AddPolygon(Facing(Quad{ { 552.8f, 0.0f, 0.0f }, { 0.0f, 0.0f, 0.0f },
                             { 0.0f, 0.0f, 559.2f }, { 549.6f, 0.0f, 559.2f } },
                      room, true),
-    whiteId);
+    whiteId, scene.AddSurface("floor"));
   scene.AddPolygon(Facing(Quad{ { 556.0f, 548.8f, 0.0f }, { 556.0f, 548.8f, 559.2f },
                             { 0.0f, 548.8f, 559.2f }, { 0.0f, 548.8f, 0.0f } },
                      room, true),
-    whiteId);
+    whiteId, scene.AddSurface("ceiling"));
   scene.AddPolygon(Facing(Quad{ { 549.6f, 0.0f, 559.2f }, { 0.0f, 0.0f, 559.2f },
                             { 0.0f, 548.8f, 559.2f }, { 556.0f, 548.8f, 559.2f } },
                      room, true),
-    whiteId);
+    whiteId, scene.AddSurface("back"));
   scene.AddPolygon(Facing(Quad{ { 552.8f, 0.0f, 0.0f }, { 549.6f, 0.0f, 559.2f },
                             { 556.0f, 548.8f, 559.2f }, { 556.0f, 548.8f, 0.0f } },
                      room, true),
-    redId);
+    redId, scene.AddSurface("left"));
   scene.AddPolygon(Facing(Quad{ { 0.0f, 0.0f, 559.2f }, { 0.0f, 0.0f, 0.0f },
                             { 0.0f, 548.8f, 0.0f }, { 0.0f, 548.8f, 559.2f } },
                      room, true),
-    greenId);
+    greenId, scene.AddSurface("right"));
   // The light, facing down.
   scene.AddPolygon(Facing(Quad{ { 343.0f, 548.7f, 227.0f }, { 343.0f, 548.7f, 332.0f },
                             { 213.0f, 548.7f, 332.0f }, { 213.0f, 548.7f, 227.0f } },
                      glm::vec3(278.0f, 0.0f, 279.5f), true),
-    lightId);
+    lightId, scene.AddSurface("light"));
   // Short block.
   AddBlock(scene,
     { { { 130.0f, 165.0f, 65.0f }, { 82.0f, 165.0f, 225.0f }, { 240.0f, 165.0f, 272.0f },
@@ -406,7 +499,7 @@ TriangleScene MakeCornellBox()
         { 130.0f, 0.0f, 65.0f } },
       { { 240.0f, 0.0f, 272.0f }, { 240.0f, 165.0f, 272.0f }, { 82.0f, 165.0f, 225.0f },
         { 82.0f, 0.0f, 225.0f } } },
-    whiteId);
+    whiteId, scene.AddSurface("short"));
   // Tall block.
   AddBlock(scene,
     { { { 423.0f, 330.0f, 247.0f }, { 265.0f, 330.0f, 296.0f }, { 314.0f, 330.0f, 456.0f },
@@ -419,7 +512,7 @@ TriangleScene MakeCornellBox()
         { 265.0f, 0.0f, 296.0f } },
       { { 265.0f, 0.0f, 296.0f }, { 265.0f, 330.0f, 296.0f }, { 423.0f, 330.0f, 247.0f },
         { 423.0f, 0.0f, 247.0f } } },
-    whiteId);
+    whiteId, scene.AddSurface("tall"));
   return scene;
 }
 

@@ -10,6 +10,7 @@
 #include <glm/vec3.hpp>
 
 #include <cstdint>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -57,6 +58,13 @@ struct TriangleScene : TriangleMesh
 {
   std::vector<std::uint32_t> MaterialIds; // one per triangle, index into Materials
   std::vector<SceneMaterial> Materials;
+  // Named surfaces (OBJ `g`/`o` groups, the Cornell box's walls and blocks), so a tool or a test
+  // can address one wall ("put a relief on `back`") independently of the triangle order. Empty
+  // SurfaceIds: no triangle is named. Otherwise one per triangle, an index into SurfaceNames or
+  // NoSurface for an unnamed triangle.
+  std::vector<std::string> SurfaceNames;
+  std::vector<std::uint32_t> SurfaceIds;
+  static constexpr std::uint32_t NoSurface = 0xffffffffu;
 
   const SceneMaterial& MaterialOf(std::size_t triangle) const
   {
@@ -65,11 +73,35 @@ struct TriangleScene : TriangleMesh
 
   // Appends a material and returns its id.
   std::uint32_t AddMaterial(const SceneMaterial& material);
-  // Appends a planar convex polygon (fan-triangulated), counter-clockwise seen from its front.
-  void AddPolygon(const std::vector<glm::vec3>& corners, std::uint32_t materialId);
-  // Appends another scene (materials are appended too, ids remapped).
+  // The id of the surface called `name`, appended to SurfaceNames if new.
+  std::uint32_t AddSurface(const std::string& name);
+  // The surface name of a triangle; empty when it has none.
+  const std::string& SurfaceOf(std::size_t triangle) const;
+  // Names a triangle just appended (Triangles.back()): keeps SurfaceIds one per triangle once any
+  // triangle is named. NoSurface leaves it unnamed.
+  void NameLastTriangle(std::uint32_t surfaceId);
+  // Appends a planar convex polygon (fan-triangulated), counter-clockwise seen from its front,
+  // optionally part of a named surface (an id from AddSurface).
+  void AddPolygon(const std::vector<glm::vec3>& corners, std::uint32_t materialId,
+    std::uint32_t surfaceId = NoSurface);
+  // Appends another scene (materials are appended too, ids remapped; surfaces of the same name
+  // merge).
   void Append(const TriangleScene& other);
 };
+
+// A surface name the scene does not have; the message lists the names it has.
+class SceneSurfaceError : public std::runtime_error
+{
+public:
+  using std::runtime_error::runtime_error;
+};
+
+// The triangles of the surface called `name`, in scene order. Throws SceneSurfaceError naming the
+// surfaces the scene has when it has none of that name (or none at all).
+std::vector<std::size_t> SurfaceTriangles(const TriangleScene& scene, const std::string& name);
+// "back, ceiling, floor" (the named surfaces that have triangles, in SurfaceNames order), or
+// "(none)".
+std::string SurfaceNameList(const TriangleScene& scene);
 
 // What is wrong with a scene, one problem per entry ("triangle 12 is degenerate (area 0)",
 // "no emitter"): empty when the scene can be used. Degenerate means area <= minimumArea
@@ -104,9 +136,10 @@ float NormalizeToUnitSphere(TriangleScene& scene);
 
 // The Cornell box as published by the Cornell Program of Computer Graphics
 // (https://www.graphics.cornell.edu/online/box/data.html): floor, ceiling, back, red left and
-// green right walls, a short and a tall block, the ceiling light. Millimetres, y up, camera at
-// (278, 273, -800) looking along +z with a 39.3 degree field of view (35 mm focal length on a
-// 25 mm film). The published reflectance spectra are given as the RGB values commonly used by
+// green right walls, a short and a tall block, the ceiling light; surfaces named `floor`,
+// `ceiling`, `back`, `left` (red), `right` (green), `short`, `tall` and `light`. Millimetres, y up,
+// camera at (278, 273, -800) looking along +z with a 39.3 degree field of view (35 mm focal length
+// on a 25 mm film). The published reflectance spectra are given as the RGB values commonly used by
 // renderers (white 0.725/0.71/0.68, red 0.63/0.065/0.05, green 0.14/0.45/0.091; light radiance
 // 17/12/4). The light quad sits 0.1 mm below the ceiling so the two never coincide. All faces
 // point into the room (blocks: outward).

@@ -2,6 +2,7 @@
 #include "vtkVirtualLightField.h"
 #include "vtkVirtualLightFieldCore.h"
 
+#include "AutomaticSettings.h"
 #include "Distribution.h"
 #include "LightField.h"
 #include "Lookup.h"
@@ -13,9 +14,11 @@
 #include "vtkLightFieldReducer.h"
 #include "vtkTriangleSceneConverter.h"
 
+#include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
+#include "vtkIdList.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkIntArray.h"
@@ -23,6 +26,7 @@
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
+#include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 
@@ -32,6 +36,7 @@
 #include <functional>
 #include <map>
 #include <utility>
+#include <vector>
 
 vtkStandardNewMacro(vtkVirtualLightField);
 
@@ -86,9 +91,9 @@ vtkTypeInt64 vtkVirtualLightField::GetEstimatedBytes() const
 bool vtkVirtualLightField::ComputeIrradiance(
   const double point[3], const double normal[3], double irradiance[3]) const
 {
-  if (!this->Field)
+  if (!this->Field || !this->Field->OwnedSubfields.empty())
   {
-    return false;
+    return false; // none, or distributed: this rank holds part of the directions
   }
   const glm::vec3 n(
     static_cast<float>(normal[0]), static_cast<float>(normal[1]), static_cast<float>(normal[2]));
@@ -147,7 +152,13 @@ int vtkVirtualLightField::RequestData(
   const int pieces = outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES());
   if (this->Distributed(pieces))
   {
-    return this->RequestDistributedData(input, output);
+    const int result = this->RequestDistributedData(input, output);
+    if (result && output->GetNumberOfCells() > 0)
+    {
+      KeepPiece(output,
+        outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()), pieces);
+    }
+    return result;
   }
   if (pieces > 1 &&
     (outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()) > 0 ||
@@ -177,16 +188,17 @@ int vtkVirtualLightField::RequestData(
                                            << this->MaxIterations << ") in [1, 10000].");
     return 0;
   }
-  if (this->Directions < 1 || this->MemoryBudget <= 0)
+  if (this->Directions < 0 || this->RaysPerSide < 0 || this->MemoryBudget <= 0)
   {
-    vtkErrorMacro("Directions (" << this->Directions << ") and MemoryBudget (" << this->MemoryBudget
-                                 << ") must be positive.");
+    vtkErrorMacro("Directions (" << this->Directions << ") and RaysPerSide (" << this->RaysPerSide
+                                 << ") must be positive or 0 (automatic), MemoryBudget ("
+                                 << this->MemoryBudget << ") positive.");
     return 0;
   }
   vlf::LightFieldSettings settings;
   settings.Directions = static_cast<std::size_t>(this->Directions);
   settings.RaysPerSide = this->RaysPerSide;
-  settings.TilesPerSide = this->Tiles > 0 ? this->Tiles : std::max(1, this->RaysPerSide / 8);
+  settings.TilesPerSide = this->Tiles;
   settings.MemoryBudget = static_cast<std::uint64_t>(this->MemoryBudget);
 
   const bool snapshots = !this->SnapshotFileName.empty();
@@ -208,6 +220,7 @@ int vtkVirtualLightField::RequestData(
     }
     else
     {
+      settings = vlf::ResolveAutomaticSettings(scene, settings).Settings;
       field = vlf::LightField::Build(
         scene, settings, mesolight::AlgorithmProgress(this, 0.0, buildShare));
     }
@@ -441,14 +454,17 @@ int vtkVirtualLightField::RequestDistributedData(vtkPolyData* input, vtkPolyData
           throw std::invalid_argument("ConvergenceTolerance must be in (0, 1) and MaxIterations "
                                       "in [1, 10000]");
         }
-        if (this->Directions < 1 || this->MemoryBudget <= 0)
+        if (this->Directions < 0 || this->RaysPerSide < 0 || this->MemoryBudget <= 0)
         {
-          throw std::invalid_argument("Directions and MemoryBudget must be positive");
+          throw std::invalid_argument("Directions and RaysPerSide must be positive or 0 "
+                                      "(automatic), MemoryBudget positive");
         }
         settings.Directions = static_cast<std::size_t>(this->Directions);
         settings.RaysPerSide = this->RaysPerSide;
-        settings.TilesPerSide = this->Tiles > 0 ? this->Tiles : std::max(1, this->RaysPerSide / 8);
+        settings.TilesPerSide = this->Tiles;
         settings.MemoryBudget = static_cast<std::uint64_t>(this->MemoryBudget);
+        // Every rank has the whole scene here and chooses alike.
+        settings = vlf::ResolveAutomaticSettings(scene, settings).Settings;
         if (snapshots && vlf::FileExists(this->SnapshotFileName) &&
           !vlf::IsSnapshotFile(this->SnapshotFileName))
         {
@@ -504,8 +520,8 @@ int vtkVirtualLightField::RequestDistributedData(vtkPolyData* input, vtkPolyData
     {
       this->DirectionsPropagated += field->OwnsSubfield(k) ? 1 : 0;
     }
-    // Downstream (lookups, vtkLightFieldGatherFilter's broadcast) reads rank 0's whole field.
-    vlf::GatherSubfieldsToRoot(*field, reducer);
+    // Every rank keeps its own directions' maps: downstream asks their owners (Distribution.h:
+    // the gather's sum, the mirrors' lookups); the diffuse textures are whole on every rank.
   }
   catch (const vlf::AbortedError&)
   {
@@ -517,13 +533,47 @@ int vtkVirtualLightField::RequestDistributedData(vtkPolyData* input, vtkPolyData
     vtkErrorMacro(<< e.what());
     return 0;
   }
-  if (reducer.Rank() != 0)
-  {
-    return 1; // an empty piece, as without the split
-  }
   this->Field = std::move(field);
   ++this->PropagationCount;
   return this->FillOutput(converter, output);
+}
+
+void vtkVirtualLightField::KeepPiece(vtkPolyData* output, int piece, int pieces)
+{
+  vtkCellArray* polys = output->GetPolys();
+  const vtkIdType cells = polys ? polys->GetNumberOfCells() : 0;
+  if (pieces <= 1 || cells == 0 || output->GetNumberOfCells() != cells)
+  {
+    return; // the output is triangles only (FillOutput); anything else stays whole
+  }
+  const vtkIdType first = cells * piece / pieces, last = cells * (piece + 1) / pieces;
+  vtkNew<vtkPolyData> part;
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkCellArray> kept;
+  part->GetPointData()->CopyAllocate(output->GetPointData());
+  part->GetCellData()->CopyAllocate(output->GetCellData());
+  std::vector<vtkIdType> newId(static_cast<std::size_t>(output->GetNumberOfPoints()), -1);
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType c = first; c < last; ++c)
+  {
+    polys->GetCellAtId(c, ids);
+    for (vtkIdType q = 0; q < ids->GetNumberOfIds(); ++q)
+    {
+      vtkIdType& id = newId[static_cast<std::size_t>(ids->GetId(q))];
+      if (id < 0)
+      {
+        id = points->InsertNextPoint(output->GetPoint(ids->GetId(q)));
+        part->GetPointData()->CopyData(output->GetPointData(), ids->GetId(q), id);
+      }
+      ids->SetId(q, id);
+    }
+    const vtkIdType cell = kept->InsertNextCell(ids);
+    part->GetCellData()->CopyData(output->GetCellData(), c, cell);
+  }
+  part->SetPoints(points);
+  part->SetPolys(kept);
+  part->GetFieldData()->ShallowCopy(output->GetFieldData());
+  output->ShallowCopy(part);
 }
 
 vtkFloatArray* vtkVirtualLightField::GetAttachedAtlas(vtkDataObject* data, int size[2])
@@ -554,8 +604,10 @@ vtkFloatArray* vtkVirtualLightField::GetAttachedAtlas(vtkDataObject* data, int s
 void vtkVirtualLightField::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Directions: " << this->Directions << "\n";
-  os << indent << "RaysPerSide: " << this->RaysPerSide << "\n";
+  os << indent << "Directions: " << this->Directions
+     << (this->Directions == 0 ? " (automatic)" : "") << "\n";
+  os << indent << "RaysPerSide: " << this->RaysPerSide
+     << (this->RaysPerSide == 0 ? " (automatic)" : "") << "\n";
   os << indent << "Tiles: " << this->Tiles << (this->Tiles == 0 ? " (RaysPerSide / 8)" : "")
      << "\n";
   os << indent << "Iterations: " << this->Iterations << "\n";

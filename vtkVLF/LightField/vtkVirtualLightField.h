@@ -34,11 +34,14 @@
  * Under MPI (pieces > 1, vtkMultiProcessController's global controller, e.g. `mpiexec -n N
  * pvbatch`) every rank gets the whole scene and the directions are split between the ranks
  * (DistributeDirections, mesolight::vlf Distribution.h): each traces and shoots its share, one
- * sum per iteration gives every rank the whole diffuse textures, and rank 0 then collects the
- * directions' maps, so that, as in one process, piece 0 holds the complete field and the output;
- * the other pieces are empty and have no field (vtkLightFieldGatherFilter broadcasts rank 0's).
- * Snapshots are written by rank 0, receiving the other ranks' maps one direction at a time.
- * With DistributeDirections off, rank 0 alone propagates (the other ranks wait).
+ * sum per iteration gives every rank the whole diffuse textures, and each rank keeps its own
+ * directions' maps only (no rank holds the whole field). Every rank's output is its piece of the
+ * scene's triangles (piece p of n: the p-th n-th of them), each with the whole diffuse textures
+ * (the atlas), so that ParaView draws the pieces on their ranks and composites them;
+ * vtkLightFieldGatherFilter gathers from every rank's directions (one sum). Snapshots are
+ * written by rank 0, receiving the other ranks' maps one direction at a time. With
+ * DistributeDirections off, rank 0 alone propagates and holds the output (the other pieces are
+ * empty; vtkLightFieldGatherFilter broadcasts rank 0's field).
  *
  * After an update, ComputeIrradiance() gives the irradiance at any world point and normal (the
  * movable-object query). Code built in this tree reaches the field itself (for lookups,
@@ -73,13 +76,19 @@ public:
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
-  /** Directions of the subfields: 2 n^2 + 1 (513, 2049, 8193; default 513). */
+  /**
+   * Directions of the subfields: 2 n^2 + 1 (513, 2049, 8193), or 0 (default): automatic, from the
+   * lines per side (mesolight::vlf::ResolveAutomaticSettings, AutomaticSettings.h).
+   */
   vtkSetMacro(Directions, int);
   vtkGetMacro(Directions, int);
   ///@}
 
   ///@{
-  /** Lines per subfield side (default 32). */
+  /**
+   * Lines per subfield side, or 0 (default): automatic, from the scene's small features within a
+   * line count and MemoryBudget (2049 x 64 x 64 when the scene asks for no more and it fits).
+   */
   vtkSetMacro(RaysPerSide, int);
   vtkGetMacro(RaysPerSide, int);
   ///@}
@@ -155,7 +164,8 @@ public:
 
   /**
    * Irradiance at a world point with a unit normal, gathered from the field (Wither 2005 §3.6).
-   * False before a successful update.
+   * False before a successful update, and on a field distributed over ranks (a rank holds part
+   * of the directions: gather with vtkLightFieldGatherFilter, which sums over the ranks).
    */
   bool ComputeIrradiance(const double point[3], const double normal[3], double irradiance[3]) const;
 
@@ -199,8 +209,8 @@ private:
   void operator=(const vtkVirtualLightField&) = delete;
   friend class vtkVirtualLightFieldCore;
 
-  int Directions = 513;
-  int RaysPerSide = 32;
+  int Directions = 0;  // automatic
+  int RaysPerSide = 0; // automatic
   int Tiles = 0;
   int Iterations = -1;
   double ConvergenceTolerance = 0.01; // mesolight::vlf::DefaultTolerance
@@ -212,6 +222,9 @@ private:
   int RequestDistributedData(vtkPolyData* input, vtkPolyData* output);
   // The output from this->Field.
   int FillOutput(vtkTriangleSceneConverter* converter, vtkPolyData* output);
+  // Keeps piece `piece` of `pieces` of the output's triangles (a contiguous range), their points
+  // and data; the field data (the atlas) stays whole.
+  static void KeepPiece(vtkPolyData* output, int piece, int pieces);
 
   bool ResumeFromSnapshot = false;
   bool DistributeDirections = true;

@@ -166,14 +166,15 @@ protected:
   bool GetNeedToRebuildShaders(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* actor) override
   {
     const auto built = this->BuiltRadiance.find(&cellBO);
-    const bool changed = built == this->BuiltRadiance.end() || built->second != this->Radiance;
+    const bool changed =
+      built == this->BuiltRadiance.end() || built->second != this->ShaderVariant();
     return this->Superclass::GetNeedToRebuildShaders(cellBO, ren, actor) || changed;
   }
 
   void ReplaceShaderValues(
     std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* actor) override
   {
-    this->BuiltRadiance[this->LastBoundBO] = this->Radiance;
+    this->BuiltRadiance[this->LastBoundBO] = this->ShaderVariant();
     if (this->Radiance == Ordinary)
     {
       this->Superclass::ReplaceShaderValues(shaders, ren, actor);
@@ -181,7 +182,7 @@ protected:
     }
     vtkLightFieldShading::ReplaceRadianceShaderValues(
       shaders, [&]() { this->Superclass::ReplaceShaderValues(shaders, ren, actor); },
-      this->Radiance == VertexRadiance);
+      this->Radiance == VertexRadiance, this->Shadowing);
   }
 
   void SetMapperShaderParameters(
@@ -211,8 +212,10 @@ protected:
     this->Superclass::ReleaseGraphicsResources(window);
   }
 
-  int Radiance = Ordinary;                  // this draw's variant
-  bool Shadowing = false;                   // this draw reads the shadow maps
+  int Radiance = Ordinary; // this draw's variant
+  bool Shadowing = false;  // this draw reads the shadow maps (compiled in only then: see
+                           // vtkLightFieldShading::ReplaceRadianceShaderValues)
+  int ShaderVariant() const { return this->Radiance + (this->Shadowing ? 4 : 0); }
   std::map<const void*, int> BuiltRadiance; // per cellBO: the variant its shader was built for
 
 private:
@@ -343,6 +346,20 @@ void vtkCompositeLightFieldMapper::PrepareShadows()
     vlf::ShadowSettings settings;
     settings.Mode = static_cast<vlf::ShadowMode>(this->ShadowMode);
     settings.Resolution = this->ShadowMapResolution;
+    // The field's ambient term makes the shadow the share of the lighting blocked (no stripes
+    // from the field's direction aliasing, see ObjectShadows.h); an older gather output has none.
+    vtkDataArray* ambient = vtkArrayDownCast<vtkDataArray>(
+      fields->GetAbstractArray(vtkLightFieldGatherFilter::GetAmbientName()));
+    if (ambient && ambient->GetNumberOfValues() == 3)
+    {
+      d.Maps.SetAmbient(glm::vec3(static_cast<float>(ambient->GetComponent(0, 0)),
+        static_cast<float>(ambient->GetComponent(1, 0)),
+        static_cast<float>(ambient->GetComponent(2, 0))));
+    }
+    else
+    {
+      d.Maps.ClearAmbient();
+    }
     d.Problem = d.Maps.Build(emitters, mesh, settings);
     d.Gpu = vlf::PackShadowsForGpu(d.Maps);
   }

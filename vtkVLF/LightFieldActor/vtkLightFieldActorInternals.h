@@ -54,6 +54,9 @@ struct vtkLightFieldActor::Internals
   bool OverwriteComposite = false;
   int ReflectionBouncesShort = 0;
   bool IgnoreObject = false;
+  // Benchmark only (vtkLightFieldActorTesting::SetShadowCodeAlways): the radiance shader keeps
+  // the shadow code without a caster, as it did before it was left out of such draws.
+  bool ShadowCodeAlways = false;
 };
 
 #endif

@@ -92,3 +92,15 @@ void vtkLightFieldActorTesting::SetShadowCaster(
     actor->Impl->Shadows.ClearCaster();
   }
 }
+
+//------------------------------------------------------------------------------
+void vtkLightFieldActorTesting::SetShadowCodeAlways(vtkLightFieldActor* actor, bool always)
+{
+  Change(actor, actor->Impl->ShadowCodeAlways, always);
+}
+
+//------------------------------------------------------------------------------
+bool vtkLightFieldActorTesting::GetShadowCodeAlways(const vtkLightFieldActor* actor)
+{
+  return actor->Impl->ShadowCodeAlways;
+}

@@ -44,6 +44,12 @@ public:
    */
   static void SetShadowCaster(
     vtkLightFieldActor* actor, const mesolight::vlf::ObjectMesh* unitMesh);
+  /**
+   * Not a negative test but the benchmark's comparison: compile the shadow code into the
+   * radiance shader even without a shadow caster (what every draw did before).
+   */
+  static void SetShadowCodeAlways(vtkLightFieldActor* actor, bool always);
+  static bool GetShadowCodeAlways(const vtkLightFieldActor* actor);
 };
 
 #endif

@@ -2,6 +2,7 @@
 #include "vtkLightFieldGatherFilter.h"
 
 #include "vtkAlgorithmOutput.h"
+#include "vtkAppendPolyData.h"
 #include "vtkCellArray.h"
 #include "vtkCommunicator.h"
 #include "vtkDataArray.h"
@@ -10,6 +11,7 @@
 #include "vtkFloatArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkLightFieldReducer.h"
 #include "vtkMultiProcessController.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
@@ -20,9 +22,11 @@
 #include "vtkTriangleSceneConverter.h"
 #include "vtkVirtualLightFieldCore.h"
 
+#include "Distribution.h"
 #include "LightField.h"
 #include "ObjectGatherer.h"
 #include "ObjectShadows.h"
+#include "PatchComparison.h" // ToUnit
 #include "Progress.h"
 #include "Snapshot.h"
 #include "TextureAtlas.h"
@@ -114,8 +118,8 @@ int vtkLightFieldGatherFilter::RequestUpdateExtent(
   }
   if (vtkInformation* field = inputVector[1]->GetInformationObject(0))
   {
-    // The piece the field's own display asks for: the field is made once, on rank 0
-    // (vtkVirtualLightField propagates for piece 0 only), and not made again for this filter.
+    // The piece the field's own display asks for: the field is made once (all ranks together,
+    // or on rank 0 with DistributeDirections off) and not made again for this filter.
     field->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(),
       out->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()));
     field->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(),
@@ -133,8 +137,9 @@ namespace
 void AttachShadowCasterData(const mesolight::vlf::LightField& field, vtkPolyData* output)
 {
   namespace vlf = mesolight::vlf;
-  const std::vector<float> packed =
-    vlf::PackEmitters(vlf::SignificantEmitters(field, vlf::ShadowSettings()));
+  const std::vector<vlf::ShadowEmitter> significant =
+    vlf::SignificantEmitters(field, vlf::ShadowSettings());
+  const std::vector<float> packed = vlf::PackEmitters(significant);
   vtkNew<vtkFloatArray> emitters;
   emitters->SetName(vtkLightFieldGatherFilter::GetEmittersName());
   emitters->SetNumberOfValues(static_cast<vtkIdType>(packed.size()));
@@ -160,6 +165,26 @@ void AttachShadowCasterData(const mesolight::vlf::LightField& field, vtkPolyData
     average = 0.0; // no atlas: the representation falls back to its Exposure alone
   }
   logAverage->InsertNextValue(average);
+  // The shadows' indirect term where this surface's shadow falls
+  // (mesolight::vlf::ObjectShadows::SetAmbient, EstimateShadowIndirect): its points in the unit
+  // sphere are all the estimate reads of it.
+  vlf::ObjectMesh unit;
+  unit.Positions.reserve(static_cast<std::size_t>(output->GetNumberOfPoints()));
+  for (vtkIdType i = 0; i < output->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    output->GetPoint(i, p);
+    unit.Positions.push_back(vlf::ToUnit(field,
+      glm::vec3(static_cast<float>(p[0]), static_cast<float>(p[1]), static_cast<float>(p[2]))));
+  }
+  vtkNew<vtkDoubleArray> ambient;
+  ambient->SetName(vtkLightFieldGatherFilter::GetAmbientName());
+  const glm::vec3 a = vlf::EstimateShadowIndirect(field, significant, unit);
+  for (const float v : { a.x, a.y, a.z })
+  {
+    ambient->InsertNextValue(static_cast<double>(v));
+  }
+  output->GetFieldData()->AddArray(ambient);
   output->GetFieldData()->AddArray(emitters);
   output->GetFieldData()->AddArray(normalisation);
   output->GetFieldData()->AddArray(logAverage);
@@ -182,9 +207,17 @@ const mesolight::vlf::LightField* vtkLightFieldGatherFilter::AcquireField(vtkAlg
     return own;
   }
   // Every rank reaches this point (nothing above returns early), so the collectives match.
-  int total = 0;
-  controller->AllReduce(&count, &total, 1, vtkCommunicator::SUM_OP);
-  this->FieldPropagations = total;
+  // [propagations, ranks holding a distributed field]
+  int local[2] = { count, own && !own->OwnedSubfields.empty() ? 1 : 0 }, total[2] = { 0, 0 };
+  controller->AllReduce(local, total, 2, vtkCommunicator::SUM_OP);
+  if (total[1] == ranks)
+  {
+    // Propagated by all ranks together, each holding its own directions: nothing to send.
+    this->FieldPropagations = count;
+    this->FieldDistributed = true;
+    return own;
+  }
+  this->FieldPropagations = total[0];
   const int rank = controller->GetLocalProcessId();
   // Rank 0 sends [bytes, version]: bytes -1 = no field there, 0 = the one sent before.
   vtkIdType header[2] = { -1, 0 };
@@ -267,11 +300,17 @@ int vtkLightFieldGatherFilter::RequestData(
     return 0;
   }
   output->ShallowCopy(input);
-  // First, on every rank: the field (broadcast from rank 0 under MPI, a collective step).
+  // First, on every rank: the field (under MPI a collective step: each rank's share of a
+  // distributed field, or rank 0's whole field broadcast).
+  this->FieldDistributed = false;
   const vlf::LightField* field = AcquireField(this->GetInputAlgorithm(1, 0));
   if (field)
   {
     AttachShadowCasterData(*field, output); // every piece, empty ones too
+  }
+  if (field && this->FieldDistributed)
+  {
+    return this->GatherDistributed(*field, input, output);
   }
   if (input->GetNumberOfPoints() == 0)
   {
@@ -384,6 +423,162 @@ int vtkLightFieldGatherFilter::RequestData(
 }
 
 //------------------------------------------------------------------------------
+int vtkLightFieldGatherFilter::GatherDistributed(
+  const mesolight::vlf::LightField& field, vtkPolyData* input, vtkPolyData* output)
+{
+  using namespace mesolight;
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  // This rank's piece with its normals (the input's, else computed on the piece as in the
+  // broadcast path); a piece that cannot be used is reported here and joins as empty, so that
+  // every rank reaches the collectives below.
+  vtkNew<vtkPolyData> local;
+  bool usable = true;
+  if (input->GetNumberOfPoints() > 0)
+  {
+    vtkDataArray* normals = input->GetPointData()->GetNormals();
+    vtkNew<vtkPolyDataNormals> normalFilter;
+    if (input->GetNumberOfPolys() == 0)
+    {
+      vtkErrorMacro("Light Field Gather needs a surface with polygons (the input has none): apply "
+                    "Extract Surface or Triangulate first.");
+      usable = false;
+    }
+    else if (!normals || normals->GetNumberOfComponents() != 3 ||
+      normals->GetNumberOfTuples() != input->GetNumberOfPoints())
+    {
+      vtkNew<vtkPolyData> copy;
+      copy->CopyStructure(input);
+      normalFilter->SetInputData(copy);
+      normalFilter->SplittingOff();
+      normalFilter->ConsistencyOff();
+      normalFilter->ComputePointNormalsOn();
+      normalFilter->ComputeCellNormalsOff();
+      normalFilter->Update();
+      normals = normalFilter->GetOutput()->GetPointData()->GetNormals();
+      if (!normals || normals->GetNumberOfTuples() != input->GetNumberOfPoints())
+      {
+        vtkErrorMacro("Light Field Gather could not compute normals for the surface.");
+        usable = false;
+      }
+      else
+      {
+        output->GetPointData()->SetNormals(normals); // what the irradiance was gathered with
+      }
+    }
+    if (usable)
+    {
+      local->SetPoints(input->GetPoints());
+      local->SetPolys(input->GetPolys());
+      vtkNew<vtkFloatArray> copied;
+      copied->DeepCopy(normals);
+      copied->SetName("Normals");
+      local->GetPointData()->SetNormals(copied);
+    }
+  }
+  // Every rank's piece onto every rank, in rank order: the mesh is the same everywhere.
+  std::vector<vtkSmartPointer<vtkDataObject>> pieces;
+  controller->AllGather(local, pieces);
+  const int rank = controller->GetLocalProcessId();
+  vtkNew<vtkAppendPolyData> append;
+  vtkIdType offset = 0;
+  for (std::size_t r = 0; r < pieces.size(); ++r)
+  {
+    auto* poly = vtkPolyData::SafeDownCast(pieces[r]);
+    if (!poly || poly->GetNumberOfPoints() == 0)
+    {
+      continue;
+    }
+    if (static_cast<int>(r) < rank)
+    {
+      offset += poly->GetNumberOfPoints();
+    }
+    append->AddInputData(poly);
+  }
+  if (append->GetNumberOfInputConnections(0) == 0)
+  {
+    return 1; // no rank has a surface (the same everywhere): nothing to gather
+  }
+  append->Update();
+  vtkPolyData* whole = append->GetOutput();
+  vtkDataArray* normals = whole->GetPointData()->GetNormals();
+  vlf::ObjectMesh mesh;
+  vtkTriangleSceneConverter::ToTriangleMesh(whole, mesh);
+  mesh.TextureCoordinates.clear();
+  mesh.Normals.resize(mesh.Positions.size());
+  for (vtkIdType i = 0; i < whole->GetNumberOfPoints() && normals; ++i)
+  {
+    double m[3];
+    normals->GetTuple(i, m);
+    mesh.Normals[i] = glm::vec3(m[0], m[1], m[2]);
+  }
+  for (int c = 0; c < 3; ++c)
+  {
+    mesh.Diffuse[c] = static_cast<float>(std::min(1.0, std::max(0.0, this->Reflectance[c])));
+  }
+  vlf::GatherSettings settings;
+  settings.UseCache = false;
+  settings.Directions = this->DirectionSet == HALF_DIRECTIONS ? vlf::DirectionSampling::Half
+    : this->DirectionSet == IMPORTANCE_DIRECTIONS             ? vlf::DirectionSampling::Importance
+                                                              : vlf::DirectionSampling::All;
+  settings.Progress = AlgorithmProgress(this);
+  const vtkIdType n = usable ? input->GetNumberOfPoints() : 0;
+  try
+  {
+    vlf::ControllerReducer reducer(controller);
+    vlf::ObjectGatherer gatherer(field, &reducer);
+    const vlf::ShadedObject& shaded =
+      gatherer.Gather(mesh, vlf::WorldToUnitSphere(field), settings);
+    if (n > 0)
+    {
+      vtkNew<vtkFloatArray> irradiance, radiance;
+      irradiance->SetName("Irradiance");
+      radiance->SetName("Radiance");
+      irradiance->SetNumberOfComponents(3);
+      radiance->SetNumberOfComponents(3);
+      irradiance->SetNumberOfTuples(n);
+      radiance->SetNumberOfTuples(n);
+      for (vtkIdType i = 0; i < n; ++i)
+      {
+        const std::size_t at = static_cast<std::size_t>(offset + i);
+        for (int c = 0; c < 3; ++c)
+        {
+          irradiance->SetTypedComponent(i, c, shaded.Irradiance[at][c]);
+          radiance->SetTypedComponent(i, c, shaded.Radiance[at][c]);
+        }
+        const glm::vec3& p = shaded.Mesh.Positions[at];
+        this->OutsidePoints += glm::dot(p, p) > 1.0f ? 1 : 0;
+      }
+      output->GetPointData()->AddArray(irradiance);
+      output->GetPointData()->AddArray(radiance);
+    }
+    if (this->OutsidePoints > 0)
+    {
+      vtkWarningMacro(<< this->OutsidePoints << " of " << n
+                      << " points lie outside the light field's bounding sphere; they were "
+                         "gathered on its boundary.");
+    }
+  }
+  catch (const vlf::AbortedError&)
+  {
+    output->Initialize();
+    vtkWarningMacro("Light Field Gather aborted.");
+    return 1;
+  }
+  catch (const vlf::DistributedError& e)
+  {
+    output->Initialize();
+    vtkWarningMacro("Light Field Gather stopped: " << e.what());
+    return 1;
+  }
+  catch (const std::exception& e)
+  {
+    vtkErrorMacro("Light Field Gather cannot shade this surface: " << e.what() << ".");
+    return 0;
+  }
+  return usable ? 1 : 0;
+}
+
+//------------------------------------------------------------------------------
 void vtkLightFieldGatherFilter::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
@@ -393,4 +588,5 @@ void vtkLightFieldGatherFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "OutsidePoints: " << this->OutsidePoints << "\n";
   os << indent << "FieldPropagations: " << this->FieldPropagations << "\n";
   os << indent << "FieldBroadcasts: " << this->FieldBroadcasts << "\n";
+  os << indent << "FieldDistributed: " << this->FieldDistributed << "\n";
 }

@@ -11,11 +11,14 @@
  * run), walking through pass-through filters such as ParaView's post filter. In ParaView's
  * builtin and client/server modes the filter and its producer share the server process, so this
  * works there too. With several MPI ranks (vtkMultiProcessController's global controller) the
- * field is made once: input 1 is asked for the same piece as this filter's output, so the
- * vtkVirtualLightField of rank 0 (which asks its input for the whole scene) propagates it or
- * reads its snapshot and the other ranks make none; rank 0 then broadcasts it (as snapshot bytes;
- * again only when it changed) and every rank gathers only its own piece of the surface. A
- * surface piece sees all of the scene's light.
+ * field is made once: input 1 is asked for the same piece as this filter's output. By default
+ * (vtkVirtualLightField's DistributeDirections) the ranks propagate it together and each keeps
+ * its own directions' maps: every rank then gathers the whole surface (every rank's piece,
+ * gathered onto each rank) from its own directions, one sum over the ranks (12 bytes a point)
+ * completes the irradiance, and each rank keeps its own piece's points; no rank holds the whole
+ * field. With DistributeDirections off rank 0 makes the whole field, broadcasts it (as
+ * snapshot bytes; again only when it changed) and every rank gathers only its own piece of the
+ * surface. A surface piece sees all of the scene's light.
  *
  * Output: the input (with the computed normals as its point normals when it had none) and
  * point arrays "Irradiance" (the irradiance E gathered at each point
@@ -29,7 +32,9 @@
  * significant emitters (GetEmittersName(), mesolight::vlf::PackEmitters), the world -> unit
  * sphere normalisation (GetToUnitSphereName(): centre x, y, z, scale) and the field's log-average
  * luminance (GetLogAverageName(), the scene's automatic exposure, so the surface drawn as
- * Light Field is exposed like the scene).
+ * Light Field is exposed like the scene) and the field's indirect light where this surface's
+ * shadow falls (GetAmbientName(), RGB per unit reflectance, mesolight::vlf::EstimateShadowIndirect:
+ * the shadows' ObjectShadows::SetAmbient).
  *
  * Points outside the field's bounding sphere are gathered on its boundary (a warning gives how
  * many); GetOutsidePoints() tells after an update. Progress goes through UpdateProgress;
@@ -92,14 +97,19 @@ public:
    * the first update of a new field, whatever the number of ranks.
    */
   vtkGetMacro(FieldPropagations, int);
-  /** Times rank 0 has sent the field to the other ranks (0 in a serial run). */
+  /** Times rank 0 has sent the field to the other ranks (0 in a serial run or when the field is
+   * distributed over the ranks). */
   vtkGetMacro(FieldBroadcasts, int);
+  /** Whether the last update gathered from a field distributed over the ranks (each rank its
+   * own directions, the irradiance summed over the ranks). */
+  vtkGetMacro(FieldDistributed, bool);
 
   ///@{
   /** Names of the output's field data arrays (see the class description). */
   static const char* GetEmittersName() { return "LightFieldEmitters"; }
   static const char* GetToUnitSphereName() { return "LightFieldToUnitSphere"; }
   static const char* GetLogAverageName() { return "LightFieldLogAverage"; }
+  static const char* GetAmbientName() { return "LightFieldAmbient"; }
   ///@}
 
 protected:
@@ -107,8 +117,8 @@ protected:
   ~vtkLightFieldGatherFilter() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
-  // Asks input 1 for this output's piece: rank 0's field filter makes the whole field, the
-  // others none (it is broadcast).
+  // Asks input 1 for this output's piece: the field filters make the field once (all ranks
+  // together, or rank 0 alone with DistributeDirections off).
   int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
@@ -121,8 +131,14 @@ private:
   vtkIdType OutsidePoints = 0;
   int FieldPropagations = 0;
   int FieldBroadcasts = 0;
+  bool FieldDistributed = false;
 
-  // The field on this rank: the producer's (rank 0, serial runs) or the one received.
+  // Gathers the whole surface (every rank's piece) from a distributed field: see the class
+  // description. Collective.
+  int GatherDistributed(const mesolight::vlf::LightField& field, vtkPolyData* input,
+    vtkPolyData* output);
+  // The field on this rank: the producer's (serial runs, rank 0, every rank's share when
+  // distributed: FieldDistributed) or the one received.
   const mesolight::vlf::LightField* AcquireField(vtkAlgorithm* producer);
   std::unique_ptr<mesolight::vlf::LightField> Received;
   const void* SentProducer = nullptr; // rank 0: the producer and version last broadcast

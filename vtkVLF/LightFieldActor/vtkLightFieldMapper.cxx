@@ -69,7 +69,8 @@ bool vtkLightFieldMapper::UploadAtlas(vtkRenderer* ren, vtkActor* act)
     flipped = atlas.FlippedPixels();
     data = flipped.data();
   }
-  if (!vtkLightFieldShading::UploadAtlasTexture(this->AtlasTexture, window, atlas.Width(), atlas.Height(), data))
+  if (!vtkLightFieldShading::UploadAtlasTexture(
+        this->AtlasTexture, window, atlas.Width(), atlas.Height(), data))
   {
     vtkErrorMacro(<< "could not upload the light field's " << atlas.Width() << "x" << atlas.Height()
                   << " texture atlas");
@@ -141,6 +142,7 @@ void vtkLightFieldMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* act)
     this->SetScalarVisibility(!this->Radiance);
   }
   this->Shadowing = this->Radiance && this->UploadShadows(ren, act);
+  this->ShadowCodeAlways = actor && vtkLightFieldActorCore::GetInternals(actor).ShadowCodeAlways;
   if (this->Radiance)
   {
     this->AtlasTexture->Activate();
@@ -173,7 +175,7 @@ bool vtkLightFieldMapper::GetNeedToRebuildShaders(
   vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act)
 {
   const auto built = this->BuiltRadiance.find(&cellBO);
-  const bool changed = built == this->BuiltRadiance.end() || built->second != this->Radiance;
+  const bool changed = built == this->BuiltRadiance.end() || built->second != this->Variant();
   return this->Superclass::GetNeedToRebuildShaders(cellBO, ren, act) || changed;
 }
 
@@ -181,14 +183,15 @@ bool vtkLightFieldMapper::GetNeedToRebuildShaders(
 void vtkLightFieldMapper::ReplaceShaderValues(
   std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act)
 {
-  this->BuiltRadiance[this->LastBoundBO] = this->Radiance;
+  this->BuiltRadiance[this->LastBoundBO] = this->Variant();
   if (!this->Radiance)
   {
     this->Superclass::ReplaceShaderValues(shaders, ren, act);
     return;
   }
   vtkLightFieldShading::ReplaceRadianceShaderValues(
-    shaders, [&]() { this->Superclass::ReplaceShaderValues(shaders, ren, act); });
+    shaders, [&]() { this->Superclass::ReplaceShaderValues(shaders, ren, act); }, false,
+    this->Shadowing || this->ShadowCodeAlways);
 }
 
 //------------------------------------------------------------------------------

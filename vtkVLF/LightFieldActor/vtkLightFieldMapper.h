@@ -36,7 +36,6 @@ public:
 
   void ReleaseGraphicsResources(vtkWindow* window) override;
 
-
 protected:
   vtkLightFieldMapper();
   ~vtkLightFieldMapper() override;
@@ -62,11 +61,18 @@ private:
   vtkSmartPointer<vtkTextureObject> ShadowTexture;
   unsigned long ShadowVersion = 0;
   bool Shadowing = false; // this draw reads ShadowTexture
+  // The benchmark's "before" row: the shadow code compiled in without a caster.
+  bool ShadowCodeAlways = false;
   ///@}
   bool UploadScreen(vtkRenderer* ren, vtkActor* act);
 
-  bool Radiance = false;                     // this draw replaces VTK's lighting
-  std::map<const void*, bool> BuiltRadiance; // per cellBO: the variant its shader was built for
+  bool Radiance = false; // this draw replaces VTK's lighting
+  // The shader variant: VTK's lighting (0), radiance without (1) or with (3) the shadow code.
+  int Variant() const
+  {
+    return !this->Radiance ? 0 : (this->Shadowing || this->ShadowCodeAlways ? 3 : 1);
+  }
+  std::map<const void*, int> BuiltRadiance; // per cellBO: the variant its shader was built for
   vtkSmartPointer<vtkTextureObject> AtlasTexture;
   vtkSmartPointer<vtkTextureObject> ScreenTexture;
   unsigned long AtlasVersion = 0;

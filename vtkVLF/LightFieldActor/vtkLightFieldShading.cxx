@@ -33,7 +33,7 @@ bool vtkLightFieldShading::UploadAtlasTexture(vtkSmartPointer<vtkTextureObject>&
 //------------------------------------------------------------------------------
 void vtkLightFieldShading::ReplaceRadianceShaderValues(
   std::map<vtkShader::Type, vtkShader*>& shaders, const std::function<void()>& superclass,
-  bool vertexRadiance)
+  bool vertexRadiance, bool shadowCode)
 {
   std::string vs = shaders[vtkShader::Vertex]->GetSource();
   std::string fs = shaders[vtkShader::Fragment]->GetSource();
@@ -58,8 +58,9 @@ void vtkLightFieldShading::ReplaceRadianceShaderValues(
       vs, "//VTK::Normal::Impl", "mlVertexRadianceVC = mlVertexRadiance;\n  //VTK::Normal::Impl");
   }
   vtkShaderProgram::Substitute(fs, "//VTK::CustomUniforms::Dec",
-    std::string("//VTK::CustomUniforms::Dec\n") + vtkLightFieldShadowFS + vtkLightFieldFS +
-      (vertexRadiance ? "in vec3 mlVertexRadianceVC;\n" : ""));
+    std::string("//VTK::CustomUniforms::Dec\n") +
+      (shadowCode ? vtkLightFieldShadowFS : "vec3 mlShadowed(vec3 total) { return total; }\n") +
+      vtkLightFieldFS + (vertexRadiance ? "in vec3 mlVertexRadianceVC;\n" : ""));
   // VTK's lighting gives way to the field's radiance.
   vtkShaderProgram::Substitute(fs, "//VTK::Light::Impl", "//MESOLIGHT::LightField::Impl");
   shaders[vtkShader::Vertex]->SetSource(vs);
@@ -105,6 +106,10 @@ bool vtkLightFieldShading::UploadShadowTexture(vtkSmartPointer<vtkTextureObject>
 void vtkLightFieldShading::SetShadowUniforms(
   vtkShaderProgram* program, const mesolight::vlf::ShadowGpuData* gpu, int textureUnit)
 {
+  if (!program->IsUniformUsed("mlShadowMode"))
+  {
+    return; // built without the shadow code
+  }
   // Always a unit holding a 2D texture: a sampler left on a unit another draw has since given a
   // buffer texture makes the draw an invalid operation, even unread.
   program->SetUniformi("mlShadowDepth", textureUnit);
@@ -119,6 +124,7 @@ void vtkLightFieldShading::SetShadowUniforms(
   program->SetUniformi("mlShadowResolution", gpu->Resolution);
   program->SetUniformi("mlShadowEmitterCount", gpu->EmitterCount);
   program->SetUniform4f("mlShadowParams", &gpu->Params.x);
+  program->SetUniform4f("mlShadowAmbient", &gpu->Ambient.x);
   auto arrays = [&](const char* name, const std::vector<glm::vec4>& values)
   {
     if (!values.empty())

@@ -32,10 +32,16 @@ public:
    * The radiance shading: the shader edits around the superclass' own (`superclass` fills VTK's
    * tags; VTK's lighting gives way to the field's radiance; vertexRadiance: the per-vertex
    * attribute mlVertexRadiance instead of the atlas, for surfaces shaded by Light Field Gather),
-   * and the uniforms of one draw.
+   * and the uniforms of one draw. shadowCode: the movable object's shadows
+   * (glsl/vtkLightFieldShadowFS.glsl) are compiled in; without them mlShadowed is the identity.
+   * A draw without a shadow caster must be built without: a software rasteriser (Mesa
+   * llvmpipe) runs both sides of a branch under an execution mask, so the shadow loops, their
+   * uniform-array reads and depth fetches cost every fragment even when mlShadowMode is 0
+   * (measured: the diffuse walkthrough frame 18x the geometry mode's with them, see
+   * docs/walkthrough.md).
    */
   static void ReplaceRadianceShaderValues(std::map<vtkShader::Type, vtkShader*>& shaders,
-    const std::function<void()>& superclass, bool vertexRadiance = false);
+    const std::function<void()>& superclass, bool vertexRadiance, bool shadowCode);
   struct RadianceUniforms
   {
     int AtlasUnit = 0;

@@ -257,17 +257,82 @@ std::vector<glm::vec3> GatherIrradiance(const LightField& field,
   return irradiance;
 }
 
+std::vector<glm::vec3> RadianceLeaving(const LightField& field,
+  const std::vector<RadianceQuery>& queries, Reducer& reducer, CellInterpolation cells,
+  DirectionInterpolation directions)
+{
+  const Lookup lookup(field);
+  const int ranks = reducer.Size(), rank = reducer.Rank();
+  // Every rank's queries, in rank order (one broadcast per rank).
+  std::vector<RadianceQuery> all;
+  std::size_t first = 0; // this rank's first query in `all`
+  if (ranks <= 1)
+  {
+    all = queries;
+  }
+  else
+  {
+    for (int r = 0; r < ranks; ++r)
+    {
+      std::string bytes;
+      if (r == rank)
+      {
+        first = all.size();
+        bytes.assign(reinterpret_cast<const char*>(queries.data()),
+          queries.size() * sizeof(RadianceQuery));
+      }
+      reducer.Broadcast(bytes, r);
+      const std::size_t count = bytes.size() / sizeof(RadianceQuery);
+      const std::size_t at = all.size();
+      all.resize(at + count);
+      if (count > 0)
+      {
+        std::memcpy(static_cast<void*>(all.data() + at), bytes.data(),
+          count * sizeof(RadianceQuery));
+      }
+    }
+  }
+  std::vector<glm::vec4> share(all.size(), glm::vec4(0.0f));
+  std::exception_ptr failure;
+  try
+  {
+    ParallelFor(0, all.size(), 0,
+      [&](std::size_t begin, std::size_t end)
+      {
+        for (std::size_t i = begin; i < end; ++i)
+        {
+          if (all[i].Surface >= field.Surfaces().size())
+          {
+            throw std::invalid_argument("RadianceLeaving: surface " +
+              std::to_string(all[i].Surface) + " is not one of the light field's");
+          }
+          share[i] = lookup.RadianceLeavingShare(
+            all[i].Surface, all[i].Point, all[i].Toward, cells, directions);
+        }
+      });
+  }
+  catch (...)
+  {
+    failure = std::current_exception();
+  }
+  AgreeOnFailure(reducer, failure);
+  static_assert(sizeof(glm::vec4) == 4 * sizeof(float), "packed vec4");
+  reducer.SumInPlace(reinterpret_cast<float*>(share.data()), 4 * share.size());
+  std::vector<glm::vec3> radiance(queries.size());
+  for (std::size_t i = 0; i < queries.size(); ++i)
+  {
+    const glm::vec4& s = share[first + i];
+    radiance[i] = s.w > 0.0f ? glm::vec3(s) / s.w
+                             : lookup.DiffuseRadiance(queries[i].Surface, queries[i].Point);
+  }
+  return radiance;
+}
+
 void KeepOwnedSubfields(LightField& field, Reducer& reducer)
 {
   if (reducer.Size() <= 1)
   {
     return;
-  }
-  if (field.HasSpecular())
-  {
-    throw std::invalid_argument("the light field has mirror surfaces, which move light between "
-                                "directions held by different ranks: a distributed light field "
-                                "does not support them yet; run on one rank");
   }
   const std::vector<std::uint32_t> owner = BalanceDirections(field, reducer.Size());
   field.OwnedSubfields.assign(owner.size(), 0);
@@ -279,6 +344,33 @@ void KeepOwnedSubfields(LightField& field, Reducer& reducer)
       FreeMaps(field.GetSubfield(k));
     }
   }
+}
+
+std::unique_ptr<LightField> ReadOwnedSubfields(
+  const std::string& path, std::uint64_t memoryBudget, const Reducer& reducer)
+{
+  if (reducer.Size() <= 1)
+  {
+    return ReadSnapshot(path, memoryBudget);
+  }
+  const int ranks = reducer.Size();
+  const std::uint32_t rank = static_cast<std::uint32_t>(reducer.Rank());
+  return ReadSnapshot(path, memoryBudget, static_cast<std::size_t>(ranks),
+    [&](LightField& field)
+    {
+      if (field.HasSpecular())
+      {
+        throw std::invalid_argument(
+          "the light field has mirror surfaces, which move light between directions held by "
+          "different ranks: a distributed light field does not support them yet; run on one rank");
+      }
+      const std::vector<std::uint32_t> owner = BalanceDirections(field, ranks);
+      field.OwnedSubfields.assign(owner.size(), 0);
+      for (std::size_t k = 0; k < owner.size(); ++k)
+      {
+        field.OwnedSubfields[k] = owner[k] == rank;
+      }
+    });
 }
 
 std::string PackSubfield(const Subfield& f)
@@ -313,7 +405,8 @@ std::vector<std::uint32_t> Owners(const LightField& field, Reducer& reducer)
 }
 } // namespace
 
-void WriteDistributedSnapshot(LightField& field, const std::string& path, Reducer& reducer)
+void WriteDistributedSnapshot(
+  LightField& field, const std::string& path, Reducer& reducer, std::size_t batchBytes)
 {
   if (reducer.Size() <= 1)
   {
@@ -322,11 +415,50 @@ void WriteDistributedSnapshot(LightField& field, const std::string& path, Reduce
   }
   const std::vector<std::uint32_t> owner = Owners(field, reducer);
   const std::uint32_t rank = static_cast<std::uint32_t>(reducer.Rank());
+  // Subfields travel in batches of about this many bytes (never split): a message per subfield
+  // made each one a blocking hand-over between two processes, which on a loaded machine cost a
+  // scheduler time slice each (measured: 2.4 s of rank 0's 2.9 s of writes for 513 directions on
+  // 2 ranks, 3 iterations). Rank 0 holds one batch per rank at most.
+  if (batchBytes == 0)
+  {
+    batchBytes = std::max<std::size_t>(std::size_t(1) << 18,
+      std::min<std::size_t>(std::size_t(8) << 20,
+        (std::size_t(64) << 20) / static_cast<std::size_t>(reducer.Size() - 1)));
+  }
   std::exception_ptr failure;
   if (rank == 0)
   {
     // Subfields are asked for in ascending order, and every owner sends its own in that order:
-    // a message from a given rank is always the next one wanted from it.
+    // the next subfield in a rank's batches is always the next one wanted from it.
+    struct Batch
+    {
+      std::string Bytes;
+      std::size_t At = 0;
+    };
+    std::vector<Batch> batches(static_cast<std::size_t>(reducer.Size()));
+    const auto next = [&](std::uint32_t from) -> std::string
+    {
+      Batch& b = batches[from];
+      if (b.At >= b.Bytes.size())
+      {
+        b.Bytes = reducer.Receive(static_cast<int>(from));
+        b.At = 0;
+      }
+      std::uint64_t n = 0;
+      if (b.Bytes.size() - b.At < sizeof(n))
+      {
+        throw std::runtime_error("a subfield message is truncated");
+      }
+      std::memcpy(&n, b.Bytes.data() + b.At, sizeof(n));
+      b.At += sizeof(n);
+      if (n > b.Bytes.size() - b.At)
+      {
+        throw std::runtime_error("a subfield message is truncated");
+      }
+      std::string one = b.Bytes.substr(b.At, static_cast<std::size_t>(n));
+      b.At += static_cast<std::size_t>(n);
+      return one;
+    };
     std::size_t received = 0; // subfields [0, received) dealt with
     Subfield incoming;
     try
@@ -338,7 +470,7 @@ void WriteDistributedSnapshot(LightField& field, const std::string& path, Reduce
           {
             if (owner[received] != 0)
             {
-              reducer.Receive(static_cast<int>(owner[received])); // skipped: not wanted here
+              next(owner[received]); // skipped: not wanted here
             }
           }
           received = k + 1;
@@ -346,7 +478,7 @@ void WriteDistributedSnapshot(LightField& field, const std::string& path, Reduce
           {
             return field.GetSubfield(k);
           }
-          UnpackSubfield(reducer.Receive(static_cast<int>(owner[k])), incoming);
+          UnpackSubfield(next(owner[k]), incoming);
           return incoming;
         });
     }
@@ -354,23 +486,43 @@ void WriteDistributedSnapshot(LightField& field, const std::string& path, Reduce
     {
       failure = std::current_exception();
     }
-    // After a failed write, take the messages still on their way (senders would wait).
-    for (; received < owner.size(); ++received)
+    // After a failed write, take the batches still on their way (senders would wait).
+    try
     {
-      if (owner[received] != 0)
+      for (; received < owner.size(); ++received)
       {
-        reducer.Receive(static_cast<int>(owner[received]));
+        if (owner[received] != 0)
+        {
+          next(owner[received]);
+        }
       }
+    }
+    catch (...)
+    {
+      failure = failure ? failure : std::current_exception();
     }
   }
   else
   {
+    std::string batch;
     for (std::size_t k = 0; k < owner.size(); ++k)
     {
       if (owner[k] == rank)
       {
-        reducer.Send(PackSubfield(field.GetSubfield(k)), 0);
+        const std::string one = PackSubfield(field.GetSubfield(k));
+        const std::uint64_t n = one.size();
+        batch.append(reinterpret_cast<const char*>(&n), sizeof(n));
+        batch += one;
+        if (batch.size() >= batchBytes)
+        {
+          reducer.Send(batch, 0);
+          batch.clear();
+        }
       }
+    }
+    if (!batch.empty())
+    {
+      reducer.Send(batch, 0);
     }
   }
   AgreeOnFailure(reducer, failure);

@@ -17,8 +17,11 @@
 // its worker blocks in another order).
 // Gathering at points (a movable object, Light Field Gather) is a sum over directions too: each
 // rank sums its own, one reduction (GatherIrradiance).
-// Mirrors (perfect specular) move radiance between directions, so they would need an exchange
-// between the owners of two directions: a distributed field refuses scenes with mirrors for now.
+// Mirrors (perfect specular) move radiance between directions: a line of one rank's direction
+// that meets a mirror sends the mirrored radiance to the owner of the mirrored direction, which
+// finds its cells (Propagation.cxx, one exchange between every pair of ranks per iteration, 36
+// bytes per mirrored line); the unshot specular flux is summed so that every rank stops alike.
+// Looking a mirror up (RadianceLeaving below) asks the owners of the directions around the view.
 //
 // Failures. A rank that throws while others wait in a collective call would hang them, so every
 // step that can fail on one rank only (reading the scene, the memory budget, an abort) is run
@@ -28,11 +31,13 @@
 #define mesolight_vlf_Distribution_h
 
 #include "LightField.h"
+#include "Lookup.h" // CellInterpolation, DirectionInterpolation
 
 #include <cstddef>
 #include <cstdint>
 #include <exception>
 #include <functional>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -112,17 +117,43 @@ std::uint64_t ReducedBytesPerIteration(const LightField& field);
 std::vector<glm::vec3> GatherIrradiance(const LightField& field,
   const std::vector<glm::vec3>& points, const std::vector<glm::vec3>& normals, Reducer& reducer);
 
+// Radiance leaving a surface point toward a direction (Lookup::RadianceLeaving: the mirrors'
+// lookup), asked of a distributed field. The owner of a direction answers for it: every rank's
+// queries go to every rank (one broadcast per rank, 28 bytes a query), each rank answers all of
+// them from its own directions (Lookup::RadianceLeavingShare: a weighted sum and its weight), and
+// one sum over the ranks (16 bytes a query) completes every answer; each rank gets the answers to
+// its own queries, which may differ from the other ranks' (a split image) or be none. Collective.
+struct RadianceQuery
+{
+  std::uint32_t Surface = 0;
+  glm::vec3 Point{ 0.0f };  // on the surface, unit-sphere coordinates
+  glm::vec3 Toward{ 0.0f }; // unit direction the radiance leaves in
+};
+std::vector<glm::vec3> RadianceLeaving(const LightField& field,
+  const std::vector<RadianceQuery>& queries, Reducer& reducer,
+  CellInterpolation cells = CellInterpolation::Bilinear,
+  DirectionInterpolation directions = DirectionInterpolation::Spherical);
+
 // A field read whole (a snapshot) split among the ranks: keeps this rank's maps, frees the others.
 void KeepOwnedSubfields(LightField& field, Reducer& reducer);
+// A snapshot read by one rank of a distributed field (written by any number of ranks): only this
+// rank's maps are kept, the others read, checked and dropped one at a time (ReadSnapshot), so
+// that a resuming rank's memory is its share, not the whole field. Not collective (no message),
+// but a failure must be agreed (Agree) by the caller like any step that can fail on one rank.
+std::unique_ptr<LightField> ReadOwnedSubfields(
+  const std::string& path, std::uint64_t memoryBudget, const Reducer& reducer);
 
 // Subfield k's maps as bytes and back (snapshots and gathers of a distributed field).
 std::string PackSubfield(const Subfield& f);
 void UnpackSubfield(const std::string& bytes, Subfield& f);
 
-// Writes the snapshot of a distributed field: rank 0 writes, receiving each subfield it does not
-// own from its owner just when the file needs it (one subfield in memory at a time); the others
-// send theirs. Collective; failures agreed (every rank throws when the write failed).
-void WriteDistributedSnapshot(LightField& field, const std::string& path, Reducer& reducer);
+// Writes the snapshot of a distributed field: rank 0 writes, taking each subfield it does not
+// own from its owner just when the file needs it; the others send theirs in batches of a few MiB
+// (rank 0 holds at most one batch per rank, 64 MiB in all, and the subfield being written).
+// Collective; failures agreed (every rank throws when the write failed). batchBytes: 0 = that
+// default; any other value the batch size (tests).
+void WriteDistributedSnapshot(
+  LightField& field, const std::string& path, Reducer& reducer, std::size_t batchBytes = 0);
 // Gives rank 0 every subfield's maps (rank 0 then holds the complete field, as a serial one; the
 // others keep their share). Collective.
 void GatherSubfieldsToRoot(LightField& field, Reducer& reducer);

@@ -502,12 +502,6 @@ std::unique_ptr<LightField> LightField::Build(const TriangleScene& scene,
       [&]()
       {
         field->Setup(scene, settings, /*normalize=*/true);
-        if (field->AnySpecular)
-        {
-          throw std::invalid_argument("the scene has mirror surfaces, which move light between "
-                                      "directions held by different ranks: a distributed light "
-                                      "field does not support them yet; run on one rank");
-        }
         const std::vector<std::uint32_t> owner = BalanceDirections(*field, reducer->Size());
         field->OwnedSubfields.assign(owner.size(), 0);
         for (std::size_t k = 0; k < owner.size(); ++k)

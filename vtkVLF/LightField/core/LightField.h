@@ -199,7 +199,6 @@ public:
   // Distributed (Distribution.h): with a reducer of several ranks, traces only this rank's share
   // of the directions (BalanceDirections), sums the texel capacities over the ranks, and checks
   // the budget against this rank's share of the maps; failures are agreed between the ranks.
-  // Throws std::invalid_argument for a scene with mirrors (not distributed yet).
   static std::unique_ptr<LightField> Build(const TriangleScene& scene,
     const LightFieldSettings& settings, const ProgressCallback& progress, Reducer* reducer);
 
@@ -321,6 +320,9 @@ private:
   std::size_t BudgetShareRanks = 1; // Setup checks the budget against maps / this (Distribution.h)
   friend std::unique_ptr<LightField> ReadSnapshot(
     const std::string& path, std::uint64_t memoryBudget);
+  friend std::unique_ptr<LightField> ReadSnapshot(const std::string& path,
+    std::uint64_t memoryBudget, std::size_t shareRanks,
+    const std::function<void(LightField&)>& share);
   void TraceSubfield(std::size_t k, const EmbreeScene& embree);
 
   LightFieldSettings Config;

@@ -3,6 +3,7 @@
 
 #include "MathConstants.h"
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include <cmath>
@@ -115,8 +116,42 @@ glm::vec3 Lookup::RadianceLeaving(std::uint32_t surface, const glm::vec3& p, con
   return weight > 0.0f ? sum / weight : this->DiffuseRadiance(surface, p);
 }
 
+glm::vec4 Lookup::RadianceLeavingShare(std::uint32_t surface, const glm::vec3& p,
+  const glm::vec3& w, CellInterpolation cells, DirectionInterpolation directions) const
+{
+  const DirectionSet& set = this->Field.Directions();
+  glm::vec3 sum(0.0f);
+  float weight = 0.0f;
+  if (directions == DirectionInterpolation::Nearest)
+  {
+    bool flipped = false;
+    const std::size_t k = set.Nearest(w, &flipped);
+    glm::vec3 value;
+    if (this->Field.OwnsSubfield(k) && this->Field.Orientation(k, surface) == (flipped ? -1 : 1) &&
+      this->SubfieldRadiance(k, surface, p, cells, value))
+    {
+      return glm::vec4(value, 1.0f);
+    }
+    return glm::vec4(0.0f);
+  }
+  const DirectionSet::Interpolation blend = set.Interpolate(w);
+  for (int v = 0; v < 3; ++v)
+  {
+    const std::size_t k = blend.Index[v];
+    glm::vec3 value;
+    if (blend.Weight[v] > 0.0f && this->Field.OwnsSubfield(k) &&
+      this->Field.Orientation(k, surface) == (blend.VertexFlipped[v] ? -1 : 1) &&
+      this->SubfieldRadiance(k, surface, p, cells, value))
+    {
+      sum += blend.Weight[v] * value;
+      weight += blend.Weight[v];
+    }
+  }
+  return glm::vec4(sum, weight);
+}
+
 glm::vec3 Lookup::IncidentRadiance(std::size_t k, int sense, const glm::vec3& p,
-  CellInterpolation cells, std::uint32_t ignore, bool occlusion) const
+  CellInterpolation cells, std::uint32_t ignore, bool occlusion, bool emission) const
 {
   int is[4], js[4];
   float ws[4];
@@ -162,6 +197,10 @@ glm::vec3 Lookup::IncidentRadiance(std::size_t k, int sense, const glm::vec3& p,
       const Crossing& sender = *segment.Sender;
       const glm::vec3 x = this->Field.PointOnLine(k, is[q], js[q], sender.Depth);
       radiance = this->CellRadiance(k, is[q], js[q], sender.Surface, sender.Cell, x);
+      if (!emission)
+      {
+        radiance = glm::max(radiance - this->Field.MaterialOf(sender.Surface).Emission, 0.0f);
+      }
     }
     blend.Add(ws[q], radiance, segment.Open);
   }

@@ -26,6 +26,8 @@
 
 #include "LightField.h"
 
+#include <glm/vec4.hpp>
+
 namespace mesolight
 {
 namespace vlf
@@ -158,16 +160,26 @@ public:
     CellInterpolation cells = CellInterpolation::Bilinear,
     DirectionInterpolation directions = DirectionInterpolation::Spherical) const;
 
+  // On a distributed field (Distribution.h), this process' share of RadianceLeaving: the
+  // weighted sum of the radiance of the directions it holds (xyz) and their weight (w). Summed
+  // over the ranks, xyz / w is RadianceLeaving (the diffuse texture where w is 0):
+  // vlf::RadianceLeaving in Distribution.h. On a whole field xyz / w is RadianceLeaving itself.
+  glm::vec4 RadianceLeavingShare(std::uint32_t surface, const glm::vec3& p, const glm::vec3& w,
+    CellInterpolation cells = CellInterpolation::Bilinear,
+    DirectionInterpolation directions = DirectionInterpolation::Spherical) const;
+
   // Diffuse radiance leaving the surface at p: its total diffuse texture, bilinear (the
   // walkthrough's progressive mode, Wither 2005 §2.4.2.2.3).
   glm::vec3 DiffuseRadiance(std::uint32_t surface, const glm::vec3& p) const;
 
   // Radiance arriving at p along subfield k's lines from the side `sense` (+1: from greater
   // depth, i.e. from p + t d_k), ignoring crossings of `ignore` (the surface p lies on).
-  // occlusion false: see GatherOptions::SceneOcclusion (negative tests only).
+  // occlusion false: see GatherOptions::SceneOcclusion (negative tests only). emission false:
+  // the sender's own emitted radiance (its material's Ke) is left out, so only light it reflects
+  // arrives -- the indirect part, for a caller that integrates the emitters itself.
   glm::vec3 IncidentRadiance(std::size_t k, int sense, const glm::vec3& p,
     CellInterpolation cells = CellInterpolation::Bilinear, std::uint32_t ignore = NoSurface,
-    bool occlusion = true) const;
+    bool occlusion = true, bool emission = true) const;
 
   // Irradiance at p with unit normal n (see above). `ignore` as for IncidentRadiance. On a
   // distributed field (Distribution.h) the sum covers this rank's directions only, normalised

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <exception>
 #include <stdexcept>
 
@@ -41,13 +42,61 @@ struct SpecularDeposit
   glm::vec3 Radiance;
 };
 
+// Mirrored radiance for a direction another rank holds (a distributed field): the owner finds
+// the cells, as DepositSpecular does here (it alone holds the direction's tile lists).
+struct RemoteSpecular
+{
+  std::uint32_t Target;  // direction
+  std::uint32_t Surface; // the mirror
+  glm::vec3 Point;       // where the line met it
+  glm::vec3 Radiance;    // Ks x the radiance that arrived
+  float SourceWeight;    // solid angle of the arriving direction
+};
+
 // What one worker block accumulates during an iteration.
 struct BlockState
 {
   std::vector<glm::vec3> Reflected; // reflected diffuse flux per texel
   std::vector<SpecularDeposit> Specular;
+  std::vector<RemoteSpecular> Remote;
   LightField::IterationEnergy Energy;
 };
+
+// Mirrored radiance into the lines of direction `target` around x on the mirror (bilinear over
+// the cells that cross the same surface), scaled by w_source / w_target so the flux is kept;
+// false when no cell there crosses the mirror (the flux is lost).
+bool DepositSpecular(const LightField& field, std::size_t target, std::uint32_t surface,
+  const glm::vec3& x, const glm::vec3& radiance, float sourceWeight,
+  std::vector<SpecularDeposit>& out)
+{
+  const glm::vec2 c = field.CellCoordinates(target, x);
+  const int i0 = static_cast<int>(std::floor(c.x)), j0 = static_cast<int>(std::floor(c.y));
+  const float fi = c.x - static_cast<float>(i0), fj = c.y - static_cast<float>(j0);
+  std::int64_t cells[4];
+  float weights[4];
+  float weightSum = 0.0f;
+  for (int t = 0; t < 4; ++t)
+  {
+    const int di = t & 1, dj = t >> 1;
+    cells[t] = field.FindCell(target, i0 + di, j0 + dj, surface);
+    weights[t] = cells[t] < 0 ? 0.0f : (di ? fi : 1.0f - fi) * (dj ? fj : 1.0f - fj);
+    weightSum += weights[t];
+  }
+  if (!(weightSum > 0.0f))
+  {
+    return false;
+  }
+  const float scale = sourceWeight / field.GetSubfield(target).Weight / weightSum;
+  for (int t = 0; t < 4; ++t)
+  {
+    if (weights[t] > 0.0f)
+    {
+      out.push_back({ static_cast<std::uint32_t>(target), static_cast<std::size_t>(cells[t]),
+        radiance * (scale * weights[t]) });
+    }
+  }
+  return true;
+}
 
 // Sends the unshot radiance of every crossing of subfield k one step along its lines.
 void ShootSubfield(LightField& field, std::size_t k, BlockState& state)
@@ -131,32 +180,93 @@ void ShootSubfield(LightField& field, std::size_t k, BlockState& state)
           Add(state.Energy.SpecularLost, specularFlux);
           continue;
         }
-        const glm::vec2 c = field.CellCoordinates(target, x);
-        const int i0 = static_cast<int>(std::floor(c.x)), j0 = static_cast<int>(std::floor(c.y));
-        const float fi = c.x - static_cast<float>(i0), fj = c.y - static_cast<float>(j0);
-        std::int64_t cells[4];
-        float weights[4];
-        float weightSum = 0.0f;
-        for (int t = 0; t < 4; ++t)
+        if (!field.OwnsSubfield(target))
         {
-          const int di = t & 1, dj = t >> 1;
-          cells[t] = field.FindCell(target, i0 + di, j0 + dj, receiver.Surface);
-          weights[t] = cells[t] < 0 ? 0.0f : (di ? fi : 1.0f - fi) * (dj ? fj : 1.0f - fj);
-          weightSum += weights[t];
-        }
-        if (!(weightSum > 0.0f))
-        {
-          Add(state.Energy.SpecularLost, specularFlux);
+          state.Remote.push_back({ static_cast<std::uint32_t>(target), receiver.Surface, x,
+            material.Specular * radiance, f.Weight });
           continue;
         }
-        const float scale = f.Weight / field.GetSubfield(target).Weight / weightSum;
-        for (int t = 0; t < 4; ++t)
+        if (!DepositSpecular(field, target, receiver.Surface, x, material.Specular * radiance,
+              f.Weight, state.Specular))
         {
-          if (weights[t] > 0.0f)
+          Add(state.Energy.SpecularLost, specularFlux);
+        }
+      }
+    }
+  }
+}
+
+// Adds the flux of the unshot specular radiance this process holds to `flux`.
+void AddUnshotSpecularFlux(const LightField& field, std::array<double, 3>& flux)
+{
+  const float cellArea = field.Settings().CellSize() * field.Settings().CellSize();
+  for (std::size_t k = 0; k < field.SubfieldCount(); ++k)
+  {
+    const Subfield& f = field.GetSubfield(k);
+    for (const glm::vec3& radiance : f.UnshotSpecular)
+    {
+      Add(flux, radiance * (cellArea * f.Weight));
+    }
+  }
+}
+
+template <typename T>
+void Append(std::string& out, const T& value)
+{
+  out.append(reinterpret_cast<const char*>(&value), sizeof(T));
+}
+
+// A distributed field with mirrors: every rank hands the mirrored radiance meant for directions
+// it does not hold to their owners, which find the cells (Wither's mirror step, split at the
+// direction's owner). Pairs exchange in one global order (rank a sends to b while b receives),
+// so blocking sends never wait on each other. What arrives is deposited into `deposits`; the
+// flux no cell can carry goes to `lost`.
+void ExchangeSpecular(LightField& field, Reducer& reducer, const std::vector<BlockState>& states,
+  std::vector<SpecularDeposit>& deposits, std::array<double, 3>& lost)
+{
+  const int ranks = reducer.Size(), rank = reducer.Rank();
+  const std::vector<std::uint32_t> owner = BalanceDirections(field, ranks);
+  std::vector<std::string> outgoing(static_cast<std::size_t>(ranks));
+  for (const BlockState& s : states)
+  {
+    for (const RemoteSpecular& r : s.Remote)
+    {
+      Append(outgoing[owner[r.Target]], r);
+    }
+  }
+  const float cellArea = field.Settings().CellSize() * field.Settings().CellSize();
+  for (int from = 0; from < ranks; ++from)
+  {
+    for (int to = 0; to < ranks; ++to)
+    {
+      if (from == to)
+      {
+        continue;
+      }
+      if (rank == from)
+      {
+        reducer.Send(outgoing[static_cast<std::size_t>(to)], to);
+      }
+      else if (rank == to)
+      {
+        const std::string bytes = reducer.Receive(from);
+        if (bytes.size() % sizeof(RemoteSpecular) != 0)
+        {
+          throw std::runtime_error("a mirrored-radiance message is truncated");
+        }
+        for (std::size_t at = 0; at < bytes.size(); at += sizeof(RemoteSpecular))
+        {
+          RemoteSpecular r;
+          std::memcpy(&r, bytes.data() + at, sizeof(r));
+          if (r.Target >= field.SubfieldCount() || !field.OwnsSubfield(r.Target) ||
+            r.Surface >= field.Surfaces().size())
           {
-            state.Specular.push_back(
-              { static_cast<std::uint32_t>(target), static_cast<std::size_t>(cells[t]),
-                material.Specular * radiance * (scale * weights[t]) });
+            throw std::runtime_error("mirrored radiance arrived for a direction not held here");
+          }
+          if (!DepositSpecular(field, r.Target, r.Surface, r.Point, r.Radiance, r.SourceWeight,
+                deposits))
+          {
+            Add(lost, r.Radiance * (cellArea * r.SourceWeight));
           }
         }
       }
@@ -172,15 +282,7 @@ std::array<double, 3> UnshotFlux(const LightField& field)
   {
     Add(flux, field.UnshotDiffuse[t] * field.Capacity[t]);
   }
-  const float cellArea = field.Settings().CellSize() * field.Settings().CellSize();
-  for (std::size_t k = 0; k < field.SubfieldCount(); ++k)
-  {
-    const Subfield& f = field.GetSubfield(k);
-    for (const glm::vec3& radiance : f.UnshotSpecular)
-    {
-      Add(flux, radiance * (cellArea * f.Weight));
-    }
-  }
+  AddUnshotSpecularFlux(field, flux);
   return flux;
 }
 
@@ -222,6 +324,34 @@ LightField::IterationEnergy PropagateIteration(LightField& field, const Propagat
 
   LightField::IterationEnergy energy;
   energy.Iteration = field.IterationsDone + 1;
+  const bool distributed = options.Reduce && options.Reduce->Size() > 1;
+  std::vector<SpecularDeposit> received;
+  if (distributed && field.HasSpecular())
+  {
+    std::exception_ptr exchangeFailure;
+    try
+    {
+      ExchangeSpecular(field, *options.Reduce, states, received, energy.SpecularLost);
+    }
+    catch (...)
+    {
+      exchangeFailure = std::current_exception();
+    }
+    AgreeOnFailure(*options.Reduce, exchangeFailure);
+  }
+  else
+  {
+    // No owner to hand them to (a distributed field propagated without its reducer, the negative
+    // tests): lost.
+    const float cellArea = field.Settings().CellSize() * field.Settings().CellSize();
+    for (const BlockState& s : states)
+    {
+      for (const RemoteSpecular& r : s.Remote)
+      {
+        Add(energy.SpecularLost, r.Radiance * (cellArea * r.SourceWeight));
+      }
+    }
+  }
   std::vector<glm::vec3>& reflected = states[0].Reflected;
   for (std::size_t b = 0; b < blocks; ++b)
   {
@@ -265,7 +395,25 @@ LightField::IterationEnergy PropagateIteration(LightField& field, const Propagat
       field.GetSubfield(d.Subfield).UnshotSpecular[d.Cell] += d.Radiance;
     }
   }
+  for (const SpecularDeposit& d : received)
+  {
+    field.GetSubfield(d.Subfield).UnshotSpecular[d.Cell] += d.Radiance;
+  }
   energy.Unshot = UnshotFlux(field);
+  if (distributed && field.HasSpecular())
+  {
+    // Each rank holds its own directions' unshot specular radiance: the diffuse part (the same
+    // on every rank) plus the ranks' specular parts, so that every rank stops alike.
+    std::array<double, 3> specular{};
+    AddUnshotSpecularFlux(field, specular);
+    options.Reduce->SumInPlace(specular.data(), specular.size());
+    energy.Unshot = {};
+    for (std::size_t t = 0; t < field.UnshotDiffuse.size(); ++t)
+    {
+      Add(energy.Unshot, field.UnshotDiffuse[t] * field.Capacity[t]);
+    }
+    Add(energy.Unshot, specular);
+  }
   field.IterationsDone = energy.Iteration;
   energy.Seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   field.EnergyLog.push_back(energy);

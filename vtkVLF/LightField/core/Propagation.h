@@ -50,7 +50,8 @@ struct PropagationOptions
   DiffuseNormalization Normalization = DiffuseNormalization::DiscreteCapacity;
   // Progress in [0, 1] over the whole call; false aborts (AbortedError).
   ProgressCallback Progress;
-  // Distributed field (Distribution.h): shoots only the subfields this rank owns, then sums the
+  // Distributed field (Distribution.h): shoots only the subfields this rank owns, hands the
+  // mirrored radiance meant for other ranks' directions to their owners, then sums the
   // reflected flux over the ranks once per iteration. nullptr = one process.
   Reducer* Reduce = nullptr;
 };

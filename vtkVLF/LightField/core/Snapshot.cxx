@@ -405,6 +405,17 @@ void WritePayload(Writer& w, const LightField& field,
       }
     }
   }
+  if (version == DenseSnapshotVersion)
+  {
+    return; // version 1 had no surface names
+  }
+  // The surface names, last.
+  w.Array(scene.SurfaceIds);
+  w.Value(static_cast<std::uint64_t>(scene.SurfaceNames.size()));
+  for (const std::string& name : scene.SurfaceNames)
+  {
+    w.String(name);
+  }
 }
 } // namespace
 
@@ -493,6 +504,27 @@ void RemoveStaleTemporaries(const std::string& path)
     }
   }
   ::closedir(listing);
+}
+
+// A subfield's cells are numbers, and its radiance is light (finite, non-negative): what
+// ReadSnapshot checks of every map, here for one it reads and drops.
+bool CellsUsable(const Subfield& f)
+{
+  const auto light = [](const glm::vec3& x)
+  {
+    return std::isfinite(x.x) && std::isfinite(x.y) && std::isfinite(x.z) && x.x >= 0.0f &&
+      x.y >= 0.0f && x.z >= 0.0f;
+  };
+  bool usable = std::all_of(f.Depth.Values.begin(), f.Depth.Values.end(),
+    [](float d) { return std::isfinite(d) && d >= 0.0f; });
+  for (const RadianceArray* radiance : { &f.Radiance, &f.UnshotSpecular })
+  {
+    for (std::size_t i = 0; usable && i < radiance->size(); ++i)
+    {
+      usable = light((*radiance)[i]);
+    }
+  }
+  return usable;
 }
 } // namespace
 
@@ -692,6 +724,12 @@ void ReadDenseMaps(Reader& r, const LightField& field, Subfield& f, std::size_t 
 
 std::unique_ptr<LightField> ReadSnapshot(const std::string& path, std::uint64_t memoryBudget)
 {
+  return ReadSnapshot(path, memoryBudget, 1, {});
+}
+
+std::unique_ptr<LightField> ReadSnapshot(const std::string& path, std::uint64_t memoryBudget,
+  std::size_t shareRanks, const std::function<void(LightField&)>& share)
+{
   std::FILE* file = std::fopen(path.c_str(), "rb");
   if (!file)
   {
@@ -836,6 +874,7 @@ std::unique_ptr<LightField> ReadSnapshot(const std::string& path, std::uint64_t 
   }
 
   std::unique_ptr<LightField> field(new LightField());
+  field->BudgetShareRanks = std::max<std::size_t>(1, shareRanks);
   try
   {
     field->Setup(scene, settings, /*normalize=*/false);
@@ -851,6 +890,10 @@ std::unique_ptr<LightField> ReadSnapshot(const std::string& path, std::uint64_t 
   field->Scale = scale;
   field->Centre = centre;
   field->IterationsDone = iterations;
+  if (share)
+  {
+    share(*field);
+  }
   const std::size_t texels = field->TexelCount();
   r.Array(field->TotalDiffuse, "total texels", texels);
   r.Array(field->UnshotDiffuse, "unshot texels", texels);
@@ -862,9 +905,14 @@ std::unique_ptr<LightField> ReadSnapshot(const std::string& path, std::uint64_t 
   const std::size_t cellsPerMap =
     static_cast<std::size_t>(settings.TileSide()) * settings.TileSide();
   const std::size_t surfaces = field->Surfaces().size();
+  // A subfield this process does not keep is read into `dropped`, checked like the others and
+  // emptied (the finite and sign checks below see only the kept ones).
+  Subfield dropped;
+  bool droppedOk = true;
   for (std::size_t k = 0; k < field->SubfieldCount(); ++k)
   {
-    Subfield& f = field->GetSubfield(k);
+    const bool keep = field->OwnsSubfield(k);
+    Subfield& f = keep ? field->GetSubfield(k) : dropped;
     r.Array(f.TileStart, "tile offsets", tiles + 1);
     const std::uint64_t entries = r.Count(sizeof(TileEntry), "tile entry");
     if (f.TileStart[0] != 0 || f.TileStart[tiles] != entries)
@@ -894,49 +942,85 @@ std::unique_ptr<LightField> ReadSnapshot(const std::string& path, std::uint64_t 
     if (dense)
     {
       ReadDenseMaps(r, *field, f, k, entries, cellsPerMap);
-      continue;
     }
-    std::vector<std::uint64_t> words;
-    r.Array(words, "cell mask words", entries * CellIndex::WordsPerMap(cellsPerMap));
-    if (!f.Cells.Assign(entries, cellsPerMap, std::move(words)))
+    else
     {
-      r.Fail("the cell masks of subfield " + std::to_string(k) + " are inconsistent");
-    }
-    std::vector<std::uint8_t> followsPlane;
-    r.Array(followsPlane, "depth flags", entries);
-    f.Depth.Clear();
-    f.Depth.Start.assign(entries, CrossingDepths::FromPlane);
-    std::uint64_t stored = 0;
-    for (std::size_t e = 0; e < entries; ++e)
-    {
-      if (followsPlane[e] > 1)
+      std::vector<std::uint64_t> words;
+      r.Array(words, "cell mask words", entries * CellIndex::WordsPerMap(cellsPerMap));
+      if (!f.Cells.Assign(entries, cellsPerMap, std::move(words)))
       {
-        r.Fail("a depth flag of subfield " + std::to_string(k) + " is corrupt");
+        r.Fail("the cell masks of subfield " + std::to_string(k) + " are inconsistent");
       }
-      if (!followsPlane[e])
+      std::vector<std::uint8_t> followsPlane;
+      r.Array(followsPlane, "depth flags", entries);
+      f.Depth.Clear();
+      f.Depth.Start.assign(entries, CrossingDepths::FromPlane);
+      std::uint64_t stored = 0;
+      for (std::size_t e = 0; e < entries; ++e)
       {
-        f.Depth.Start[e] = static_cast<std::uint32_t>(stored);
-        stored += f.Cells.MapSlots(e);
+        if (followsPlane[e] > 1)
+        {
+          r.Fail("a depth flag of subfield " + std::to_string(k) + " is corrupt");
+        }
+        if (!followsPlane[e])
+        {
+          f.Depth.Start[e] = static_cast<std::uint32_t>(stored);
+          stored += f.Cells.MapSlots(e);
+        }
       }
-    }
-    r.Array(f.Depth.Values, "crossing depths", stored);
-    // The mirrors' maps are numbered first (LightField::StoresRadiance): their crossings'
-    // radiance is stored, the others' follows from the textures.
-    std::size_t mirrorMaps = 0;
-    for (const TileEntry& e : f.Entries)
-    {
-      mirrorMaps += field->StoresRadiance(e.Surface) ? 1 : 0;
-    }
-    for (const TileEntry& e : f.Entries)
-    {
-      if (field->StoresRadiance(e.Surface) != (e.Map < mirrorMaps))
+      r.Array(f.Depth.Values, "crossing depths", stored);
+      // The mirrors' maps are numbered first (LightField::StoresRadiance): their crossings'
+      // radiance is stored, the others' follows from the textures.
+      std::size_t mirrorMaps = 0;
+      for (const TileEntry& e : f.Entries)
       {
-        r.Fail("the maps of subfield " + std::to_string(k) + " are not numbered mirrors first");
+        mirrorMaps += field->StoresRadiance(e.Surface) ? 1 : 0;
+      }
+      for (const TileEntry& e : f.Entries)
+      {
+        if (field->StoresRadiance(e.Surface) != (e.Map < mirrorMaps))
+        {
+          r.Fail("the maps of subfield " + std::to_string(k) + " are not numbered mirrors first");
+        }
+      }
+      const std::size_t mirrorSlots = field->SpecularSlots(f);
+      ReadCompactRadiance(r, f.Radiance, "radiance words", mirrorSlots);
+      ReadCompactRadiance(r, f.UnshotSpecular, "unshot specular words", mirrorSlots);
+    }
+    if (!keep)
+    {
+      droppedOk = droppedOk && CellsUsable(dropped);
+      dropped.TileStart.clear();
+      dropped.Entries.clear();
+      dropped.Depth.Clear();
+      dropped.Radiance.clear();
+      dropped.UnshotSpecular.clear();
+    }
+  }
+  if (!dense) // the surface names: since version 2
+  {
+    TriangleScene& named = field->NormalizedScene;
+    const std::uint64_t ids = r.Count(sizeof(std::uint32_t), "surface id");
+    if (ids != 0 && ids != named.Triangles.size())
+    {
+      r.Fail("it holds " + std::to_string(ids) + " surface ids for " +
+        std::to_string(named.Triangles.size()) + " triangles");
+    }
+    named.SurfaceIds.resize(ids);
+    r.Bytes(named.SurfaceIds.data(), ids * sizeof(std::uint32_t));
+    const std::uint64_t names = r.Count(8, "surface name");
+    named.SurfaceNames.clear();
+    for (std::uint64_t q = 0; q < names; ++q)
+    {
+      named.SurfaceNames.push_back(r.String("surface name"));
+    }
+    for (const std::uint32_t id : named.SurfaceIds)
+    {
+      if (id != TriangleScene::NoSurface && id >= names)
+      {
+        r.Fail("a triangle refers to a missing surface name");
       }
     }
-    const std::size_t mirrorSlots = field->SpecularSlots(f);
-    ReadCompactRadiance(r, f.Radiance, "radiance words", mirrorSlots);
-    ReadCompactRadiance(r, f.UnshotSpecular, "unshot specular words", mirrorSlots);
   }
   if (r.BytesLeft() != 0)
   {
@@ -953,8 +1037,8 @@ std::unique_ptr<LightField> ReadSnapshot(const std::string& path, std::uint64_t 
   { return std::all_of(values, values + count, [](float x) { return std::isfinite(x); }); };
   const auto finiteVectors = [&](const std::vector<glm::vec3>& values)
   { return values.empty() || finite(&values[0].x, 3 * values.size()); };
-  bool ok = finiteVectors(field->TotalDiffuse) && finiteVectors(field->UnshotDiffuse) &&
-    finite(field->Capacity.data(), field->Capacity.size());
+  bool ok = droppedOk && finiteVectors(field->TotalDiffuse) &&
+    finiteVectors(field->UnshotDiffuse) && finite(field->Capacity.data(), field->Capacity.size());
   for (std::size_t k = 0; ok && k < field->SubfieldCount(); ++k)
   {
     const Subfield& f = field->GetSubfield(k);
@@ -983,8 +1067,7 @@ std::unique_ptr<LightField> ReadSnapshot(const std::string& path, std::uint64_t 
   };
   if (!nonNegative(field->TotalDiffuse) || !nonNegative(field->UnshotDiffuse))
   {
-    throw SnapshotError(
-      Quoted(path) + " holds negative radiance: it is not a usable light field");
+    throw SnapshotError(Quoted(path) + " holds negative radiance: it is not a usable light field");
   }
   for (std::size_t k = 0; k < field->SubfieldCount(); ++k)
   {

@@ -5,7 +5,8 @@
 // Format (little-endian, version 2): a 48-byte header -- magic "MLVLFSNP", version, byte-order
 // mark, payload size, payload checksum, header checksum -- then the payload: settings,
 // iterations done, the (unit-sphere) scene with its materials, the diffuse textures, the energy
-// log and every subfield's tile lists and maps (below). Surfaces and directions are rebuilt from the
+// log, every subfield's tile lists and maps (below) and the scene's surface names
+// (TriangleScene::SurfaceNames, SurfaceIds). Surfaces and directions are rebuilt from the
 // scene and settings on reading. The checksum is a 64-bit multiply-xorshift hash of the payload
 // words.
 //
@@ -39,8 +40,8 @@ public:
 // map whether its depths follow from its surface's plane, the other maps' crossings' depths, and the radiance and unshot specular radiance each as a form byte then
 // either floats (0: a snapshot taken while propagating) or a power-of-two exponent and
 // shared-exponent words (1: a propagated field); both empty in a scene without mirrors
-// (LightField::SentRadiance). Version 1 (every map cell, float radiance) is
-// still read, into the compact form.
+// (LightField::SentRadiance). Version 1 (every map cell, float radiance, no surface
+// names) is still read, into the compact form.
 constexpr std::uint32_t SnapshotVersion = 2;
 constexpr std::uint32_t DenseSnapshotVersion = 1;
 
@@ -61,6 +62,13 @@ void WriteSnapshotVersion(const LightField& field, const std::string& path, std:
 // Throws SnapshotError for a missing, foreign, truncated, corrupt or incompatible file, and
 // MemoryBudgetError when the field does not fit the budget.
 std::unique_ptr<LightField> ReadSnapshot(const std::string& path, std::uint64_t memoryBudget = 0);
+// The same keeping the maps of some subfields only: share(field), called once the field's
+// structure is built and before any map is read, sets field.OwnedSubfields; the maps of the
+// others are read, checked (checksum, finite, non-negative) and dropped one at a time, so that a
+// rank resuming its share of a distributed field never holds the whole (Distribution.h). The
+// memory budget is checked against the maps / shareRanks.
+std::unique_ptr<LightField> ReadSnapshot(const std::string& path, std::uint64_t memoryBudget,
+  std::size_t shareRanks, const std::function<void(LightField&)>& share);
 
 // A snapshot file around any payload: the header with matching checksums, then `payload`. For
 // tests and the fuzz target (fuzz/snapshot.cxx), which reach the payload's checks past the

@@ -15,6 +15,7 @@
 #include <atomic>
 #include <cmath>
 #include <cstring>
+#include <exception>
 #include <limits>
 #include <stdexcept>
 #include <unordered_map>
@@ -174,6 +175,13 @@ ObjectGatherer::ObjectGatherer(const LightField& field)
 {
 }
 
+ObjectGatherer::ObjectGatherer(const LightField& field, Reducer* reducer)
+  : Field(field)
+  , Reduce(reducer && reducer->Size() > 1 ? reducer : nullptr)
+  , Self(new ObjectSelfOcclusion)
+{
+}
+
 ObjectGatherer::~ObjectGatherer() = default;
 
 //------------------------------------------------------------------------------
@@ -214,7 +222,7 @@ const std::vector<double>& ObjectGatherer::DirectionImportance() const
     {
       for (std::size_t k = begin; k < end; ++k)
       {
-        const Subfield& f = this->Field.GetSubfield(k);
+        const Subfield& f = this->Field.GetSubfield(k); // empty maps when held elsewhere
         double sum = 0.0;
         // Every crossing's sent radiance (LightField::SentRadiance: stored or from the textures).
         const int n = this->Field.Settings().RaysPerSide;
@@ -234,6 +242,10 @@ const std::vector<double>& ObjectGatherer::DirectionImportance() const
         importance[k] = std::max(0.0, sum);
       }
     });
+  if (this->Reduce)
+  {
+    this->Reduce->SumInPlace(importance.data(), importance.size()); // each from its owner
+  }
   this->Importance = std::move(importance);
   return this->Importance;
 }
@@ -469,7 +481,15 @@ const ShadedObject& ObjectGatherer::Gather(
       std::max({ extent.x * extent.y, extent.y * extent.z, extent.x * extent.z });
     if (static_cast<float>(todo.size()) >= windowLines)
     {
-      lines.Build(this->Field, directions, lower, upper, settings.Threads);
+      std::vector<std::uint32_t> held; // a distributed field: the lines of this rank's directions
+      for (const std::uint32_t k : directions)
+      {
+        if (this->Field.OwnsSubfield(k))
+        {
+          held.push_back(k);
+        }
+      }
+      lines.Build(this->Field, held, lower, upper, settings.Threads);
     }
   }
   // Direction-major over small chunks of points: each direction's window of lines stays in
@@ -493,9 +513,19 @@ const ShadedObject& ObjectGatherer::Gather(
   std::vector<glm::vec3> fieldSum;
   std::vector<float> weightTotal;
   std::atomic<std::size_t> selfFacing{ 0 }, selfBlocked{ 0 };
+  // A distributed field: the sums are this rank's share until reduced below.
+  const bool distributed = this->Reduce != nullptr;
+  if (distributed && settings.Volume)
+  {
+    throw std::invalid_argument("an irradiance volume cannot be read from a light field "
+                                "distributed over ranks");
+  }
   if (self)
   {
     blocked.resize(n);
+  }
+  if (self || distributed)
+  {
     fieldSum.assign(n, glm::vec3(0.0f));
     weightTotal.assign(n, 0.0f);
   }
@@ -589,6 +619,11 @@ const ShadedObject& ObjectGatherer::Gather(
         }
         const float weight = scale * std::abs(c);
         const int sense = c > 0.0f ? 1 : -1;
+        if (!this->Field.OwnsSubfield(k))
+        {
+          total[v] += weight; // its owner adds the light: the normalisation counts it here too
+          continue;
+        }
         glm::vec3 incident;
         if (!windows || !lines.Incident(k, sense, p[v], options.Cells, incident))
         {
@@ -609,7 +644,7 @@ const ShadedObject& ObjectGatherer::Gather(
       const std::uint32_t i = points[v];
       // Blocked directions send nothing yet: the iterations below add the object's radiance.
       shaded.Irradiance[i] = normalised(sum[v], total[v]);
-      if (self)
+      if (self || distributed)
       {
         fieldSum[i] = sum[v];
         weightTotal[i] = total[v];
@@ -620,27 +655,68 @@ const ShadedObject& ObjectGatherer::Gather(
     }
   };
 
-  for (std::size_t start = 0; start < todo.size(); start += ProgressBatch)
+  std::exception_ptr failure;
+  try
   {
-    if (!ReportProgress(settings.Progress,
-          static_cast<double>(start) / static_cast<double>(std::max<std::size_t>(1, todo.size()))))
+    for (std::size_t start = 0; start < todo.size(); start += ProgressBatch)
     {
-      this->CachedValid.assign(n, 0); // part of this frame is missing
-      throw AbortedError();
-    }
-    const std::size_t stop = std::min(todo.size(), start + ProgressBatch);
-    const std::size_t chunks = (stop - start + chunk - 1) / chunk;
-    ParallelFor(
-      0, chunks, 1,
-      [&](std::size_t begin, std::size_t end)
+      if (!ReportProgress(settings.Progress,
+            static_cast<double>(start) / static_cast<double>(std::max<std::size_t>(1, todo.size()))))
       {
-        for (std::size_t c = begin; c < end; ++c)
+        this->CachedValid.assign(n, 0); // part of this frame is missing
+        throw AbortedError();
+      }
+      const std::size_t stop = std::min(todo.size(), start + ProgressBatch);
+      const std::size_t chunks = (stop - start + chunk - 1) / chunk;
+      ParallelFor(
+        0, chunks, 1,
+        [&](std::size_t begin, std::size_t end)
         {
-          const std::size_t first = start + c * chunk;
-          gatherChunk(todo.data() + first, std::min(chunk, stop - first));
-        }
-      },
-      settings.Threads);
+          for (std::size_t c = begin; c < end; ++c)
+          {
+            const std::size_t first = start + c * chunk;
+            gatherChunk(todo.data() + first, std::min(chunk, stop - first));
+          }
+        },
+        settings.Threads);
+    }
+  }
+  catch (...)
+  {
+    failure = std::current_exception();
+  }
+  if (distributed)
+  {
+    // A rank that stopped (an abort) stops every rank instead of leaving them in the sum.
+    try
+    {
+      AgreeOnFailure(*this->Reduce, failure);
+    }
+    catch (...)
+    {
+      this->CachedValid.assign(n, 0);
+      throw;
+    }
+  }
+  else if (failure)
+  {
+    std::rethrow_exception(failure);
+  }
+  if (distributed)
+  {
+    // The field's part of every gathered point from every rank's directions: one sum.
+    std::vector<glm::vec3> share(todo.size());
+    for (std::size_t q = 0; q < todo.size(); ++q)
+    {
+      share[q] = fieldSum[todo[q]];
+    }
+    this->Reduce->SumInPlace(reinterpret_cast<float*>(share.data()), 3 * share.size());
+    for (std::size_t q = 0; q < todo.size(); ++q)
+    {
+      const std::uint32_t i = todo[q];
+      fieldSum[i] = share[q];
+      shaded.Irradiance[i] = normalised(share[q], weightTotal[i]);
+    }
   }
   ReportProgress(settings.Progress, 1.0);
   shaded.GatheredPoints = todo.size();

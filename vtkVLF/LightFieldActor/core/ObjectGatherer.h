@@ -29,6 +29,7 @@
 #ifndef mesolight_vlf_ObjectGatherer_h
 #define mesolight_vlf_ObjectGatherer_h
 
+#include "Distribution.h"
 #include "Lookup.h"
 #include "ObjectMesh.h"
 #include "Progress.h"
@@ -129,6 +130,11 @@ class ObjectGatherer
 {
 public:
   explicit ObjectGatherer(const LightField& field);
+  // A distributed field (Distribution.h): each rank reads its own directions and one sum over
+  // the ranks (12 bytes a gathered point, and the importance per direction once) completes the
+  // irradiance, equal to a whole field's. Every rank must then gather the same mesh with the
+  // same settings together (collective). reducer: not owned, nullptr = one process.
+  ObjectGatherer(const LightField& field, Reducer* reducer);
   ~ObjectGatherer();
 
   // Shades `unitMesh` (already in the field's unit sphere: TransformMesh with
@@ -159,6 +165,7 @@ public:
 
 private:
   const LightField& Field;
+  Reducer* Reduce = nullptr;
   ShadedObject Shaded;
 
   // The subdivided model mesh and what it was made from.

@@ -11,7 +11,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <iterator>
+#include <limits>
 
 namespace mesolight
 {
@@ -400,7 +402,9 @@ std::string ObjectShadows::Build(
   {
     return problem;
   }
-  return this->Build(SignificantEmitters(field, settings), object, settings, threads);
+  const std::vector<ShadowEmitter> emitters = SignificantEmitters(field, settings);
+  this->SetAmbient(EstimateShadowIndirect(field, emitters, object));
+  return this->Build(emitters, object, settings, threads);
 }
 
 //------------------------------------------------------------------------------
@@ -538,6 +542,7 @@ glm::vec3 ObjectShadows::Shade(
   }
   // Field, PCF, Soft: the direct light the object blocks, from the emitters' samples.
   glm::vec3 lost(0.0f);
+  bool blocked = false;
   for (std::size_t e = 0; e < this->EmitterList.size(); ++e)
   {
     const ShadowEmitter& emitter = this->EmitterList[e];
@@ -550,6 +555,7 @@ glm::vec3 ObjectShadows::Shade(
           this->MapList[maps[i + 1]], p, n, 1, c.DepthBias, c.RemoveBackProjection);
         if (b > 0.0f) // lit receivers (most) skip the irradiance
         {
+          blocked = true;
           lost += b *
             SampleIrradiance(
               emitter.Light.Radiance, emitter.Light.Normal, emitter.Samples[i], p, n);
@@ -561,11 +567,37 @@ glm::vec3 ObjectShadows::Shade(
       const float b = this->BlockedFraction(e, p, n);
       if (b > 0.0f)
       {
+        blocked = true;
         lost += b * this->DirectIrradiance(e, p, n);
       }
     }
   }
-  return glm::max(glm::vec3(0.0f), total - kd / Pi<float> * lost);
+  if (!blocked)
+  {
+    return total;
+  }
+  if (!this->HaveAmbient)
+  {
+    return glm::max(glm::vec3(0.0f), total - kd / Pi<float> * lost);
+  }
+  // The ratio (see the header); Kd cancels per channel.
+  glm::vec3 direct(0.0f);
+  for (std::size_t e = 0; e < this->EmitterList.size(); ++e)
+  {
+    direct += this->DirectIrradiance(e, p, n);
+  }
+  const glm::vec3 lit = this->AmbientRadiance + direct / Pi<float>;
+  const glm::vec3 shadowed =
+    this->AmbientRadiance + glm::max(glm::vec3(0.0f), direct - lost) / Pi<float>;
+  glm::vec3 ratio(1.0f);
+  for (int k = 0; k < 3; ++k)
+  {
+    if (lit[k] > 0.0f)
+    {
+      ratio[k] = std::min(1.0f, std::max(0.0f, shadowed[k] / lit[k]));
+    }
+  }
+  return total * ratio;
 }
 
 //------------------------------------------------------------------------------
@@ -576,6 +608,7 @@ ShadowGpuData PackShadowsForGpu(const ObjectShadows& shadows)
   out.Mode = static_cast<int>(c.Mode);
   out.Params = glm::vec4(c.DepthBias, c.BlendAlpha, static_cast<float>(c.PcfKernel),
     c.RemoveBackProjection ? 1.0f : 0.0f);
+  out.Ambient = glm::vec4(shadows.Ambient(), shadows.HasAmbient() ? 1.0f : 0.0f);
   if (shadows.Empty())
   {
     out.Mode = 0;
@@ -626,6 +659,167 @@ ShadowGpuData PackShadowsForGpu(const ObjectShadows& shadows)
     out.MapAxisZ.emplace_back(map.AxisZ, map.Far);
   }
   return out;
+}
+
+//------------------------------------------------------------------------------
+namespace
+{
+// Nearest triangle of the field's scene along a ray beyond tMin (Moller, Trumbore 1997): the
+// triangle index or SIZE_MAX. A scan over every triangle, once per emitter and placement.
+std::size_t FirstHit(const TriangleScene& scene, const glm::vec3& origin,
+  const glm::vec3& direction, float tMin, float& tHit)
+{
+  std::size_t best = SIZE_MAX;
+  tHit = std::numeric_limits<float>::max();
+  for (std::size_t t = 0; t < scene.TriangleCount(); ++t)
+  {
+    const glm::vec3 v0 = scene.Vertex(t, 0);
+    const glm::vec3 e1 = scene.Vertex(t, 1) - v0, e2 = scene.Vertex(t, 2) - v0;
+    const glm::vec3 pv = glm::cross(direction, e2);
+    const float det = glm::dot(e1, pv);
+    if (std::abs(det) < 1e-12f)
+    {
+      continue;
+    }
+    const float inverse = 1.0f / det;
+    const glm::vec3 tv = origin - v0;
+    const float u = glm::dot(tv, pv) * inverse;
+    if (u < 0.0f || u > 1.0f)
+    {
+      continue;
+    }
+    const glm::vec3 qv = glm::cross(tv, e1);
+    const float v = glm::dot(direction, qv) * inverse;
+    if (v < 0.0f || u + v > 1.0f)
+    {
+      continue;
+    }
+    const float d = glm::dot(e2, qv) * inverse;
+    if (d > tMin && d < tHit)
+    {
+      tHit = d;
+      best = t;
+    }
+  }
+  return best;
+}
+} // namespace
+
+//------------------------------------------------------------------------------
+glm::vec3 EstimateShadowIndirect(
+  const LightField& field, const std::vector<ShadowEmitter>& emitters, const ObjectMesh& object)
+{
+  const glm::vec3 ambient = EstimateEmitterLights(field).Ambient;
+  if (emitters.empty() || object.Positions.empty() || field.TotalDiffuse.empty())
+  {
+    return ambient;
+  }
+  glm::vec3 lower, upper;
+  object.Bounds(lower, upper);
+  const glm::vec3 centre = 0.5f * (lower + upper);
+  float radius = 0.0f;
+  for (const glm::vec3& p : object.Positions)
+  {
+    radius = std::max(radius, glm::length(p - centre));
+  }
+  const TriangleScene& scene = field.Scene();
+  glm::dvec3 sum(0.0);
+  std::size_t count = 0;
+  for (const ShadowEmitter& emitter : emitters)
+  {
+    const glm::vec3 toObject = centre - emitter.Light.Position;
+    const float distance = glm::length(toObject);
+    if (!(distance > radius))
+    {
+      continue; // the light inside the object's sphere: no shadow centre to speak of
+    }
+    const glm::vec3 direction = toObject / distance;
+    float t = 0.0f;
+    const std::size_t triangle = FirstHit(scene, emitter.Light.Position, direction, distance, t);
+    if (triangle == SIZE_MAX)
+    {
+      continue;
+    }
+    const std::uint32_t s = field.SurfaceOfTriangle(triangle);
+    if (s == NoSurface)
+    {
+      continue;
+    }
+    const glm::vec3 n = field.Surfaces()[s].Normal;
+    const glm::vec3 hit = emitter.Light.Position + t * direction;
+    // Visibility by a scan of the scene's triangles per texel, when that stays small (a few
+    // tens of millions of ray-triangle tests); beyond, visibility is ignored.
+    std::size_t texels = 0;
+    for (const Surface& other : field.Surfaces())
+    {
+      texels += other.TexelCount();
+    }
+    const bool occlusion =
+      static_cast<double>(texels) * static_cast<double>(scene.TriangleCount()) <= 4e7;
+    const glm::vec3 origin = hit + 1e-4f * n;
+    // Sum over every texel of the other non-emitting surfaces, visibility ignored: the
+    // point-to-texel form factor cos cos' A / (pi d^2) times the texel's radiance.
+    glm::dvec3 gathered(0.0);
+    double factors = 0.0;
+    for (std::uint32_t r = 0; r < field.Surfaces().size(); ++r)
+    {
+      const Surface& other = field.Surfaces()[r];
+      const glm::vec3 le = field.MaterialOf(r).Emission;
+      if (r == s || std::max({ le.x, le.y, le.z }) > 0.0f)
+      {
+        continue;
+      }
+      const double area = static_cast<double>(other.TexelU) * other.TexelV;
+      for (int b = 0; b < other.TextureHeight; ++b)
+      {
+        for (int a = 0; a < other.TextureWidth; ++a)
+        {
+          const glm::vec3 x = other.TexelCentre(a, b);
+          const glm::vec3 d = x - hit;
+          const float d2 = glm::dot(d, d);
+          const float cosP = glm::dot(n, d), cosX = -glm::dot(other.Normal, d);
+          if (!(cosP > 0.0f && cosX > 0.0f && d2 > 0.0f))
+          {
+            continue;
+          }
+          const glm::vec3 l = field.TotalDiffuse[other.TexelOffset +
+            static_cast<std::size_t>(b) * static_cast<std::size_t>(other.TextureWidth) +
+            static_cast<std::size_t>(a)];
+          if (!(l.x + l.y + l.z > 0.0f))
+          {
+            continue; // off the surface's triangles
+          }
+          if (occlusion)
+          {
+            const float length = std::sqrt(d2);
+            float tBlock = 0.0f;
+            if (FirstHit(scene, origin, (x - origin) / length, 0.0f, tBlock) != SIZE_MAX &&
+              tBlock < length * (1.0f - 1e-3f) - 1e-4f)
+            {
+              continue; // another surface in between
+            }
+          }
+          // cos = dot / d for both angles; a texel no farther than its own size counts as there.
+          const double f = static_cast<double>(cosP) * cosX /
+            (Pi<double> * std::pow(std::max(static_cast<double>(d2), area), 2.0)) * area;
+          gathered += f * glm::dvec3(l);
+          factors += f;
+        }
+      }
+    }
+    if (factors > 0.0)
+    {
+      // More than the whole hemisphere (surfaces behind each other, no visibility): scale down.
+      sum += gathered / std::max(1.0, factors);
+      ++count;
+    }
+  }
+  if (count == 0)
+  {
+    return ambient;
+  }
+  // A mean below 0 (the field darker than the exact direct light everywhere there) is no light.
+  return glm::max(glm::vec3(0.0f), glm::vec3(sum / static_cast<double>(count)));
 }
 
 } // namespace vlf

@@ -23,12 +23,24 @@
 // Cook 1987), and the modes use it as:
 //   Black  L' = L (1 - b)                  hard b, the power-weighted mean over emitters
 //   Blend  L' = L (1 - 0.5 b)              Wither's fixed alpha
-//   Field  L' = max(0, L - Kd/pi sum_e b_e E_e(p))   hard b_e per emitter
+//   Field  L' = L (A + (E - B) / pi) / (A + E / pi)   per channel, hard b_e per emitter
 //   PCF    as Field with b_e filtered over k x k texels
-//   Soft   as Field with one map per emitter sample: L - Kd/pi sum_e sum_i b_ei E_ei(p)
+//   Soft   as Field with one map per emitter sample: B = sum_e sum_i b_ei E_ei(p)
 // where E_e(p) = sum_i Le A_i cos(theta_i') cos(theta_i) / d_i^2 over the emitter's samples
-// (unoccluded direct irradiance): the receiver loses the direct light the object blocks and
-// keeps the field's indirect light.
+// (unoccluded direct irradiance), E = sum_e E_e, B = sum_e b_e E_e the part the object blocks,
+// and A the field's mean radiance (EmitterLights' ambient term, so Kd A is the indirect light):
+// the receiver keeps its indirect light and loses the share of its direct light the object
+// blocks. The share, not the amount: subtracting Kd/pi B from the field's L (what these modes did
+// before) takes an exact direct term from a field whose direct term carries the direction
+// set's aliasing (at 513 directions a small light reaches a floor texel along a handful of
+// directions, about 10% stripes on the lit floor); in the umbra only the indirect part is left,
+// the same absolute error is several times larger relative to it, and where the field is darker
+// than the exact term the per-channel clamp at 0 leaves only the red wall's bounce: red and
+// black stripes. Scaling L by the ratio of the analytic shadowed to unshadowed lighting (the
+// ratio estimator of Heitz, Hill, McGuire 2018, "Combining analytic direct illumination and
+// stochastic shadows") keeps the field's relative error what it is on the lit floor. A is the
+// indirect light where the shadow falls, gathered from the field's textures
+// (EstimateShadowIndirect). Without it (SetAmbient never called) the modes subtract as before.
 //
 // Back projection: a receiver facing away from the light point (dot(n, light - p) <= 0) or lying
 // behind the map's near plane (behind the light) is not shadowed. RemoveBackProjection = false
@@ -129,9 +141,20 @@ public:
   // shadows (bad settings or mesh, no emitter): the instance then shadows nothing.
   std::string Build(const LightField& field, const ObjectMesh& object,
     const ShadowSettings& settings, int threads = 0);
+  // The field overload sets the ambient term (EstimateEmitterLights' Ambient); a caller of the
+  // emitters overload sets it with SetAmbient (ParaView's gather output carries it), before or
+  // after Build. Clear keeps it.
   std::string Build(const std::vector<ShadowEmitter>& emitters, const ObjectMesh& object,
     const ShadowSettings& settings, int threads = 0);
   void Clear();
+  void SetAmbient(const glm::vec3& ambient)
+  {
+    this->AmbientRadiance = ambient;
+    this->HaveAmbient = true;
+  }
+  void ClearAmbient() { this->HaveAmbient = false; }
+  bool HasAmbient() const { return this->HaveAmbient; }
+  const glm::vec3& Ambient() const { return this->AmbientRadiance; }
 
   const ShadowSettings& Settings() const { return this->Config; }
   const std::vector<ShadowEmitter>& Emitters() const { return this->EmitterList; }
@@ -160,6 +183,8 @@ private:
   std::vector<ShadowMap> MapList;
   std::vector<std::vector<std::uint32_t>> EmitterMaps; // per emitter: its maps
   double Seconds = 0.0;
+  glm::vec3 AmbientRadiance{ 0.0f };
+  bool HaveAmbient = false;
 };
 
 // What glsl/vtkLightFieldShadowFS.glsl reads: every map as a tile of one float image
@@ -171,7 +196,8 @@ struct ShadowGpuData
   int Resolution = 0, Columns = 1, Width = 0, Height = 0;
   std::vector<float> Depth; // Width x Height, row 0 first
   int EmitterCount = 0;
-  glm::vec4 Params{ 0.0f };                                         // bias, alpha, kernel, removal
+  glm::vec4 Params{ 0.0f };  // bias, alpha, kernel, removal
+  glm::vec4 Ambient{ 0.0f }; // rgb the ambient radiance A, w 1 when known (ratio), else 0
   std::vector<glm::vec4> MapPosition, MapAxisX, MapAxisY, MapAxisZ; // see the shader
   std::vector<glm::vec4> EmitterRadiance, EmitterNormal, EmitterIndex, Samples;
 };
@@ -185,6 +211,17 @@ ShadowGpuData PackShadowsForGpu(const ObjectShadows& shadows);
 // malformed list.
 std::vector<float> PackEmitters(const std::vector<ShadowEmitter>& emitters);
 bool UnpackEmitters(const float* values, std::size_t count, std::vector<ShadowEmitter>& emitters);
+
+// The indirect light (radiance per unit reflectance, RGB) where the object's shadow falls: per
+// emitter, the point where the ray from the emitter's centre through the object's centre meets
+// the scene behind the object, and there the field's radiance of every texel of the other
+// non-emitting surfaces weighted by its point-to-texel form factor (visibility ignored; scaled
+// down if they add up to more than the hemisphere), averaged over the emitters. Not the field's
+// own value there less the exact direct light: a few percent of error in the field's direct
+// light is most of the indirect. The field's mean radiance (EstimateEmitterLights' Ambient) when
+// no such point is found. Everything in the unit sphere.
+glm::vec3 EstimateShadowIndirect(
+  const LightField& field, const std::vector<ShadowEmitter>& emitters, const ObjectMesh& object);
 
 // Places a map at `light` for the object (its bounding sphere) and rasterises it. False when
 // the object has no triangles. A light inside the bounding sphere gets a wide (80 degree half

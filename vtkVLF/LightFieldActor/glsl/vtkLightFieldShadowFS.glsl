@@ -16,6 +16,7 @@ uniform int mlShadowColumns;
 uniform int mlShadowResolution;
 uniform int mlShadowEmitterCount;
 uniform vec4 mlShadowParams; // x: depth bias, y: blend alpha, z: PCF kernel, w: removal on
+uniform vec4 mlShadowAmbient; // rgb the field's ambient radiance, w 1: ratio, 0: subtraction
 uniform vec4 mlShadowMapPosition[ML_SHADOW_MAPS]; // xyz light point, w tan(half angle)
 uniform vec4 mlShadowMapAxisX[ML_SHADOW_MAPS];    // w: near plane
 uniform vec4 mlShadowMapAxisY[ML_SHADOW_MAPS];
@@ -108,6 +109,7 @@ vec3 mlShadowed(vec3 total)
     return total * (1.0 - alpha * (1.0 - max(0.0, 1.0 - blocked)));
   }
   vec3 lost = vec3(0.0);
+  bool blocked = false;
   int kernel = mlShadowMode == 4 ? int(mlShadowParams.z) : 1;
   for (int e = 0; e < mlShadowEmitterCount; ++e)
   {
@@ -121,6 +123,7 @@ vec3 mlShadowed(vec3 total)
         float b = mlShadowTap(firstMap + i, p, n, 1);
         if (b > 0.0) // lit fragments (most) skip the irradiance
         {
+          blocked = true;
           lost += b * mlShadowSampleIrradiance(e, first + i, p, n);
         }
       }
@@ -130,6 +133,7 @@ vec3 mlShadowed(vec3 total)
       float b = mlShadowTap(int(mlShadowEmitterIndex[e].z), p, n, kernel);
       if (b > 0.0)
       {
+        blocked = true;
         vec3 direct = vec3(0.0);
         for (int i = 0; i < count; ++i)
         {
@@ -139,5 +143,35 @@ vec3 mlShadowed(vec3 total)
       }
     }
   }
-  return max(vec3(0.0), total - mlShadowKdVC / 3.14159265358979 * lost);
+  if (!blocked)
+  {
+    return total;
+  }
+  if (mlShadowAmbient.w < 0.5)
+  {
+    return max(vec3(0.0), total - mlShadowKdVC / 3.14159265358979 * lost);
+  }
+  // The share of the lighting the object blocks scales the field's value (ObjectShadows.h: the
+  // ratio estimator); Kd cancels per channel.
+  vec3 direct = vec3(0.0);
+  for (int e = 0; e < mlShadowEmitterCount; ++e)
+  {
+    int first = int(mlShadowEmitterIndex[e].x);
+    int count = int(mlShadowEmitterIndex[e].y);
+    for (int i = 0; i < count; ++i)
+    {
+      direct += mlShadowSampleIrradiance(e, first + i, p, n);
+    }
+  }
+  vec3 lit = mlShadowAmbient.rgb + direct / 3.14159265358979;
+  vec3 shadowed = mlShadowAmbient.rgb + max(vec3(0.0), direct - lost) / 3.14159265358979;
+  vec3 ratio = vec3(1.0);
+  for (int c = 0; c < 3; ++c)
+  {
+    if (lit[c] > 0.0)
+    {
+      ratio[c] = clamp(shadowed[c] / lit[c], 0.0, 1.0);
+    }
+  }
+  return total * ratio;
 }

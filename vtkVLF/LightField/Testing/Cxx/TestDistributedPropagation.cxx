@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The distributed light field (Distribution.h) against the serial one, run under
-// `mpiexec -n N` (ctest runs it at 1, 2 and 3 ranks). Every rank also propagates the serial field
-// itself (the reference, independent of any reduction) and compares every texel.
+// `mpiexec -n N` (ctest runs it at 1, 2, 3, 4 and 8 ranks). Every rank also propagates the serial
+// field itself (the reference, independent of any reduction) and compares every texel.
 //
 //   TestDistributedPropagation equal DIR   distributed == serial (textures, energy, snapshot,
 //                                          gathered irradiance); without the reductions they
@@ -9,10 +9,17 @@
 //   TestDistributedPropagation fail        one rank's memory budget refused, one rank aborting:
 //                                          every rank stops with the failing rank's message
 //   TestDistributedPropagation compare A B two snapshots' total diffuse textures equal (1e-5)
+//   TestDistributedPropagation mirror OBJ DIR  a scene with mirrors (OBJ/MTL): the mirrored
+//                                          radiance crosses to the owners of the mirrored
+//                                          directions; textures, every direction's radiance and
+//                                          unshot specular maps, the energy, and the mirrors'
+//                                          lookups (each rank asking its own points) equal the
+//                                          serial field's; a rank's own answers alone differ
 // Exit 0 when every check holds on this rank.
 #include "Distribution.h"
 #include "LightField.h"
 #include "Lookup.h"
+#include "ObjScene.h"
 #include "Propagation.h"
 #include "Snapshot.h"
 #include "TriangleScene.h"
@@ -129,8 +136,15 @@ int Equal(vtkMultiProcessController* controller, const std::string& dir)
   vlf::PropagationOptions options;
   options.Reduce = &reducer;
   const std::string snapshot = dir + "/distributed-" + std::to_string(ranks) + ".vlf";
+  // Snapshot batches: the default (everything in one here), one subfield each, and several
+  // subfields each (the last, which is read back below).
+  const std::size_t batches[] = { 0, 1, 20000 };
   vlf::Propagate(*field, iterations, options,
-    [&](const vlf::LightField&) { vlf::WriteDistributedSnapshot(*field, snapshot, reducer); });
+    [&](const vlf::LightField& f)
+    {
+      vlf::WriteDistributedSnapshot(
+        *field, snapshot, reducer, batches[static_cast<std::size_t>(f.IterationsDone - 1) % 3]);
+    });
   const double worst = WorstRelative(field->TotalDiffuse, serial->TotalDiffuse);
   std::printf("rank %d of %d: worst relative texel difference %.3g (unshot %.3g)\n", Rank, ranks,
     worst, WorstRelative(field->UnshotDiffuse, serial->UnshotDiffuse));
@@ -155,6 +169,24 @@ int Equal(vtkMultiProcessController* controller, const std::string& dir)
         serial->GetSubfield(k).Radiance.ToVector()));
   }
   Check(worstMap <= 1e-5, "snapshot radiance maps (worst " + std::to_string(worstMap) + ")");
+  // Read as a resuming rank does: its own maps only, equal to the serial ones, the others empty.
+  std::unique_ptr<vlf::LightField> share = vlf::ReadOwnedSubfields(snapshot, 0, reducer);
+  Check(WorstRelative(share->TotalDiffuse, serial->TotalDiffuse) <= 1e-5, "share's textures");
+  for (std::size_t k = 0; k < share->SubfieldCount(); ++k)
+  {
+    const bool owns = field->OwnsSubfield(k);
+    Check(share->OwnsSubfield(k) == owns, "the share owns what the split gives this rank");
+    Check(owns ? share->GetSubfield(k).Radiance == read->GetSubfield(k).Radiance &&
+          share->GetSubfield(k).Depth == read->GetSubfield(k).Depth
+               : share->GetSubfield(k).Radiance.empty() && share->GetSubfield(k).Depth.Start.empty(),
+      "the share's maps of direction " + std::to_string(k) + " (held iff owned)");
+  }
+  if (ranks > 1)
+  {
+    Check(2 * share->AllocatedBytes() < read->AllocatedBytes() + read->AllocatedBytes() / ranks,
+      "a share holds about 1/" + std::to_string(ranks) + " of the field: " +
+        std::to_string(share->AllocatedBytes()) + " of " + std::to_string(read->AllocatedBytes()));
+  }
 
   // Gathering (a movable object's points): the ranks' sums over their directions, reduced, equal
   // the serial gather over every direction; without the reduction a rank has its share only.
@@ -252,6 +284,125 @@ int Fail(vtkMultiProcessController* controller)
   return Failures;
 }
 
+int Mirror(vtkMultiProcessController* controller, const std::string& obj, const std::string& dir)
+{
+  vlf::ControllerReducer reducer(controller);
+  const int ranks = reducer.Size();
+  const mesolight::TriangleScene scene = mesolight::ReadObjScene(obj).Scene;
+  const int iterations = 4; // light through the mirror twice (emitter, wall, mirror, wall)
+  std::unique_ptr<vlf::LightField> serial = vlf::LightField::Build(scene, SmallSettings());
+  Check(serial->HasSpecular(), "the scene has mirrors");
+  vlf::Propagate(*serial, iterations);
+
+  std::unique_ptr<vlf::LightField> field =
+    vlf::LightField::Build(scene, SmallSettings(), {}, &reducer);
+  vlf::PropagationOptions options;
+  options.Reduce = &reducer;
+  const std::string snapshot = dir + "/mirror-" + std::to_string(ranks) + ".vlf";
+  const std::uint64_t before = reducer.BytesContributed();
+  vlf::Propagate(*field, iterations, options);
+  const std::uint64_t propagationBytes = reducer.BytesContributed() - before;
+  vlf::WriteDistributedSnapshot(*field, snapshot, reducer);
+  const double worst = WorstRelative(field->TotalDiffuse, serial->TotalDiffuse);
+  std::printf("rank %d of %d: mirrors: worst relative texel difference %.3g, %llu bytes sent in "
+              "%d iterations\n",
+    Rank, ranks, worst, static_cast<unsigned long long>(propagationBytes), iterations);
+  Check(worst <= 1e-5, "total diffuse equals the serial field within 1e-5 (mirrors)");
+  Check(WorstRelative(field->UnshotDiffuse, serial->UnshotDiffuse) <= 1e-5, "unshot diffuse");
+  for (int c = 0; c < 3; ++c)
+  {
+    const auto& a = field->EnergyLog.back();
+    const auto& b = serial->EnergyLog.back();
+    Check(std::abs(a.Shot[c] - b.Shot[c]) <= 1e-5 * std::abs(b.Shot[c]), "energy shot");
+    Check(std::abs(a.Unshot[c] - b.Unshot[c]) <= 1e-5 * std::abs(b.Unshot[c]), "energy unshot");
+    Check(std::abs(a.SpecularLost[c] - b.SpecularLost[c]) <=
+        1e-5 * std::abs(b.Shot[c]), "mirrored flux lost");
+  }
+  // Every direction's maps (radiance sent, unshot mirrored radiance), as rank 0 wrote them.
+  controller->Barrier();
+  std::unique_ptr<vlf::LightField> read = vlf::ReadSnapshot(snapshot);
+  double worstMap = 0.0, worstSpecular = 0.0;
+  bool anySpecular = false;
+  for (std::size_t k = 0; k < read->SubfieldCount(); ++k)
+  {
+    worstMap = std::max(
+      worstMap, WorstRelative(read->GetSubfield(k).Radiance.ToVector(),
+                  serial->GetSubfield(k).Radiance.ToVector()));
+    worstSpecular = std::max(worstSpecular,
+      WorstRelative(read->GetSubfield(k).UnshotSpecular.ToVector(),
+        serial->GetSubfield(k).UnshotSpecular.ToVector()));
+    for (const glm::vec3& v : serial->GetSubfield(k).UnshotSpecular)
+    {
+      anySpecular = anySpecular || v.x > 0.0f;
+    }
+  }
+  std::printf("rank %d of %d: mirrors: maps worst %.3g, unshot specular worst %.3g\n", Rank,
+    ranks, worstMap, worstSpecular);
+  Check(anySpecular, "the serial field holds unshot mirrored radiance (the check sees some)");
+  Check(worstMap <= 1e-5, "radiance maps equal the serial field's (mirrors)");
+  Check(worstSpecular <= 1e-5, "unshot specular maps equal the serial field's");
+
+  // Lookups on the mirrors, each rank asking its own points (every ranks-th of a grid on each
+  // mirror triangle, toward eyes in front of it), both direction interpolations.
+  std::vector<vlf::RadianceQuery> queries;
+  const mesolight::TriangleScene& unit = field->Scene();
+  int index = 0;
+  for (std::size_t t = 0; t < unit.Triangles.size(); ++t)
+  {
+    const std::uint32_t s = field->SurfaceOfTriangle(t);
+    if (s == vlf::NoSurface || glm::length(field->MaterialOf(s).Specular) <= 0.0f)
+    {
+      continue;
+    }
+    const glm::vec3 normal = field->Surfaces()[s].Normal;
+    for (int a = 1; a < 6; ++a)
+    {
+      for (int b = 1; b < 6 - a; ++b, ++index)
+      {
+        if (index % ranks != Rank)
+        {
+          continue;
+        }
+        const float u = 0.18f * static_cast<float>(a), v = 0.18f * static_cast<float>(b);
+        const glm::vec3 p = (1.0f - u - v) * unit.Vertex(t, 0) + u * unit.Vertex(t, 1) +
+          v * unit.Vertex(t, 2);
+        const glm::vec3 side = glm::normalize(glm::cross(normal, glm::vec3(0.3f, 0.5f, 0.8f)));
+        const float turn = 0.37f * static_cast<float>(index % 7);
+        queries.push_back({ s, p, glm::normalize(normal + turn * side) });
+      }
+    }
+  }
+  Check(!queries.empty() || ranks > 1, "mirror points to look up");
+  const vlf::Lookup serialLookup(*serial), ownLookup(*field);
+  for (const vlf::DirectionInterpolation mode :
+    { vlf::DirectionInterpolation::Spherical, vlf::DirectionInterpolation::Nearest })
+  {
+    const std::vector<glm::vec3> answers =
+      vlf::RadianceLeaving(*field, queries, reducer, vlf::CellInterpolation::Bilinear, mode);
+    std::vector<glm::vec3> reference, alone;
+    for (const vlf::RadianceQuery& q : queries)
+    {
+      reference.push_back(serialLookup.RadianceLeaving(
+        q.Surface, q.Point, q.Toward, vlf::CellInterpolation::Bilinear, mode));
+      const glm::vec4 share = ownLookup.RadianceLeavingShare(
+        q.Surface, q.Point, q.Toward, vlf::CellInterpolation::Bilinear, mode);
+      alone.push_back(share.w > 0.0f ? glm::vec3(share) / share.w : glm::vec3(0.0f));
+    }
+    const double worstLookup = WorstRelative(answers, reference);
+    const char* name = mode == vlf::DirectionInterpolation::Spherical ? "spherical" : "nearest";
+    std::printf("rank %d of %d: mirror lookups (%s) at %zu points, worst relative difference "
+                "%.3g\n",
+      Rank, ranks, name, queries.size(), worstLookup);
+    Check(worstLookup <= 1e-5, std::string("mirror lookups equal the serial field's (") + name + ")");
+    if (ranks > 1)
+    {
+      Check(WorstRelative(alone, reference) > 1e-2,
+        std::string("a rank's own directions alone differ (") + name + ")");
+    }
+  }
+  return Failures;
+}
+
 int Compare(const std::string& a, const std::string& b)
 {
   const double worst =
@@ -280,13 +431,17 @@ int main(int argc, char* argv[])
     {
       failures = Fail(controller);
     }
+    else if (mode == "mirror" && argc == 4)
+    {
+      failures = Mirror(controller, argv[2], argv[3]);
+    }
     else if (mode == "compare" && argc == 4)
     {
       failures = Compare(argv[2], argv[3]);
     }
     else
     {
-      std::cerr << "usage: TestDistributedPropagation equal DIR | fail | compare A B\n";
+      std::cerr << "usage: TestDistributedPropagation equal DIR | fail | compare A B | mirror OBJ DIR\n";
       failures = 1;
     }
   }

@@ -347,3 +347,31 @@ TEST(VLFVirtualLightField, DefaultStopsAtTheTolerance)
   filter->Update();
   EXPECT_TRUE(messages->HasError("ConvergenceTolerance")) << messages->AllErrors();
 }
+
+// Directions and RaysPerSide default to 0, automatic (AutomaticSettings.h): directions left
+// automatic follow the lines given (16 lines: 513 directions; 48: 2049), a given count is kept,
+// and a negative count is an error, not an automatic choice.
+TEST(VLFVirtualLightField, AutomaticDirectionsFollowTheLines)
+{
+  vtkNew<vtkCornellBoxSource> box;
+  vtkNew<vtkVirtualLightField> filter;
+  EXPECT_EQ(filter->GetDirections(), 0);
+  EXPECT_EQ(filter->GetRaysPerSide(), 0);
+  filter->SetInputConnection(box->GetOutputPort());
+  filter->SetRaysPerSide(16);
+  filter->SetIterations(1);
+  filter->Update();
+  ASSERT_NE(vtkVirtualLightFieldCore::GetLightField(filter), nullptr);
+  EXPECT_EQ(vtkVirtualLightFieldCore::GetLightField(filter)->SubfieldCount(), 513u);
+  EXPECT_EQ(vtkVirtualLightFieldCore::GetLightField(filter)->Settings().TilesPerSide, 2);
+  filter->SetDirections(33);
+  filter->Update();
+  ASSERT_NE(vtkVirtualLightFieldCore::GetLightField(filter), nullptr);
+  EXPECT_EQ(vtkVirtualLightFieldCore::GetLightField(filter)->SubfieldCount(), 33u);
+  filter->SetDirections(-1);
+  vtkNew<MessageCapture> messages;
+  messages->Watch(filter);
+  filter->Update();
+  EXPECT_TRUE(messages->HasError("must be positive or 0 (automatic)")) << messages->AllErrors();
+  EXPECT_EQ(vtkVirtualLightFieldCore::GetLightField(filter), nullptr);
+}

@@ -136,7 +136,8 @@ TEST(Walkthrough, PlainCornellBoxAgainstPathTracer)
         const glm::vec3 d = gl.Display[static_cast<std::size_t>(y) * Size + x];
         for (int c = 0; c < 3; ++c)
         {
-          const double levels = 255.0 * d[c] - std::round(255.0 * cpu[c]);
+          // The window holds 8-bit levels: compare levels, not their float images.
+          const double levels = std::round(255.0 * d[c]) - std::round(255.0 * cpu[c]);
           signedLevels += levels;
           worstLevels = std::max(worstLevels, std::abs(levels));
           ++n;

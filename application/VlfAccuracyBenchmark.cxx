@@ -1,0 +1,488 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// mesolight bench vlf-accuracy: the light field's per-pixel error against the path tracer on the
+// scenes of VlfAccuracyScenes.h, over resolution settings, with time and memory.
+//
+// Per scene one camera image: each pixel's primary hit (Embree, world scene) is looked up in the
+// field's total diffuse textures (what the walkthrough draws, Lookup::DiffuseRadiance) and
+// compared with the path tracer's diffuse radiance leaving the same point (PathTracer::
+// DiffuseRadianceLeaving, all bounces), so the comparison sees the field's error only, not a
+// rasterisation difference. The reference is two independent halves: their difference gives the
+// reference's own noise, printed beside the error it inflates. References are cached (--cache).
+#include "VlfAccuracyBenchmark.h"
+
+#include "ChartPlot.h"
+#include "CommandLine.h"
+#include "CornellRegions.h" // WriteLinearImage, ReadLinearImage
+#include "OutputFile.h"
+#include "Timing.h"
+#include "VlfAccuracyScenes.h"
+
+#include "AutomaticSettings.h"
+#include "EmbreeScene.h"
+#include "LightField.h"
+#include "Lookup.h"
+#include "MemoryBudget.h"
+#include "ParallelFor.h"
+#include "PatchComparison.h"
+#include "PathTracer.h"
+#include "Propagation.h"
+#include "TextureComparison.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <sstream>
+#include <sys/stat.h>
+
+namespace mesolight
+{
+namespace
+{
+namespace vlf = mesolight::vlf;
+using Clock = std::chrono::steady_clock;
+
+// A pixel the comparison uses: the front of a diffuse, non-emitting triangle.
+struct PixelHit
+{
+  std::uint32_t Triangle = SceneHit::None;
+  glm::vec3 Point{ 0.0f };
+};
+
+std::vector<PixelHit> PrimaryHits(const AccuracyScene& s, const EmbreeScene& embree, int w, int h)
+{
+  std::vector<PixelHit> hits(static_cast<std::size_t>(w) * h);
+  ParallelFor(0, static_cast<std::size_t>(h), 1,
+    [&](std::size_t r0, std::size_t r1)
+    {
+      for (std::size_t row = r0; row < r1; ++row)
+      {
+        for (int column = 0; column < w; ++column)
+        {
+          const SceneRay ray = s.Camera.Ray(column + 0.5f, static_cast<float>(row) + 0.5f, w, h);
+          const SceneHit hit = embree.Intersect(ray);
+          if (hit.Triangle == SceneHit::None)
+          {
+            continue;
+          }
+          const glm::vec3 a = s.Scene.Vertex(hit.Triangle, 0), b = s.Scene.Vertex(hit.Triangle, 1),
+                          c = s.Scene.Vertex(hit.Triangle, 2);
+          const SceneMaterial& m = s.Scene.MaterialOf(hit.Triangle);
+          if (glm::dot(glm::cross(b - a, c - a), ray.Direction) >= 0.0f ||
+            glm::length(m.Emission) > 0.0f)
+          {
+            continue;
+          }
+          PixelHit& p = hits[row * static_cast<std::size_t>(w) + column];
+          p.Triangle = hit.Triangle;
+          p.Point = ray.Origin + hit.T * ray.Direction;
+        }
+      }
+    });
+  return hits;
+}
+
+// Half of the reference: `samples` paths per pixel, seeds of half `half`.
+RgbImage ReferenceHalf(const AccuracyScene& s, const EmbreeScene& embree,
+  const std::vector<PixelHit>& hits, int w, int h, int samples, int half)
+{
+  PathTracer tracer(embree);
+  RgbImage out(w, h);
+  ParallelFor(0, hits.size(), 64,
+    [&](std::size_t b, std::size_t e)
+    {
+      for (std::size_t i = b; i < e; ++i)
+      {
+        if (hits[i].Triangle == SceneHit::None)
+        {
+          continue;
+        }
+        const glm::vec3 r = tracer.DiffuseRadianceLeaving(hits[i].Triangle, hits[i].Point, samples,
+          (static_cast<std::uint64_t>(half) << 40) ^ (i * 0x9e3779b97f4a7c15ull));
+        std::copy(&r.x, &r.x + 3, out.Rgb.data() + 3 * i);
+      }
+    });
+  (void)s;
+  return out;
+}
+
+double Sum3(const float* v)
+{
+  return static_cast<double>(v[0]) + v[1] + v[2];
+}
+
+struct PixelError
+{
+  std::size_t Pixels = 0; // lit pixels compared
+  double Mean = 0.0;      // mean |field - ref| / ref
+  double P95 = 0.0;
+  double Black = 0.0;          // share of lit pixels where the field is below 10% of ref
+  double ReferenceNoise = 0.0; // mean |a - b| / (a + b): the reference's own relative error
+};
+
+double Percentile(std::vector<double> v, double q)
+{
+  if (v.empty())
+  {
+    return 0.0;
+  }
+  const std::size_t k =
+    std::min(v.size() - 1, static_cast<std::size_t>(q * static_cast<double>(v.size())));
+  std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(k), v.end());
+  return v[k];
+}
+
+// Lit pixels: reference above 1% of the mean over the compared pixels (shadows so deep that a
+// relative error means nothing are left out; black-where-lit counts the rest).
+PixelError Compare(
+  const std::vector<PixelHit>& hits, const RgbImage& field, const RgbImage& a, const RgbImage& b)
+{
+  double mean = 0.0;
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < hits.size(); ++i)
+  {
+    if (hits[i].Triangle != SceneHit::None)
+    {
+      mean += 0.5 * (Sum3(&a.Rgb[3 * i]) + Sum3(&b.Rgb[3 * i]));
+      ++n;
+    }
+  }
+  mean /= static_cast<double>(std::max<std::size_t>(n, 1));
+  std::vector<double> errors;
+  PixelError e;
+  std::size_t black = 0;
+  for (std::size_t i = 0; i < hits.size(); ++i)
+  {
+    const double ra = Sum3(&a.Rgb[3 * i]), rb = Sum3(&b.Rgb[3 * i]);
+    const double r = 0.5 * (ra + rb);
+    if (hits[i].Triangle == SceneHit::None || !(r > 0.01 * mean))
+    {
+      continue;
+    }
+    const double f = Sum3(&field.Rgb[3 * i]);
+    errors.push_back(std::abs(f - r) / r);
+    e.ReferenceNoise += std::abs(ra - rb) / (ra + rb);
+    black += f < 0.1 * r ? 1 : 0;
+  }
+  e.Pixels = errors.size();
+  if (e.Pixels > 0)
+  {
+    double s = 0.0;
+    for (double x : errors)
+    {
+      s += x;
+    }
+    e.Mean = s / static_cast<double>(e.Pixels);
+    e.P95 = Percentile(errors, 0.95);
+    e.Black = static_cast<double>(black) / static_cast<double>(e.Pixels);
+    e.ReferenceNoise /= static_cast<double>(e.Pixels);
+  }
+  return e;
+}
+
+RgbImage FieldImage(const vlf::LightField& field, const std::vector<PixelHit>& hits, int w, int h)
+{
+  const vlf::Lookup lookup(field);
+  RgbImage out(w, h);
+  ParallelFor(0, hits.size(), 256,
+    [&](std::size_t b, std::size_t e)
+    {
+      for (std::size_t i = b; i < e; ++i)
+      {
+        if (hits[i].Triangle == SceneHit::None)
+        {
+          continue;
+        }
+        const std::uint32_t s = field.SurfaceOfTriangle(hits[i].Triangle);
+        if (s == vlf::NoSurface)
+        {
+          continue;
+        }
+        const glm::vec3 v = lookup.DiffuseRadiance(s, vlf::ToUnit(field, hits[i].Point));
+        std::copy(&v.x, &v.x + 3, out.Rgb.data() + 3 * i);
+      }
+    });
+  return out;
+}
+
+// "auto", "KxN" or "KxNtF" (texel = F x the cell side).
+bool ParseSettings(const std::string& text, const TriangleScene& scene, std::uint64_t budget,
+  vlf::LightFieldSettings& settings, std::string& note)
+{
+  if (text == "auto")
+  {
+    vlf::AutomaticLimits limits;
+    limits.MemoryBudget = budget;
+    const vlf::AutomaticChoice c = vlf::ChooseAutomaticSettings(scene, limits);
+    settings = c.Settings;
+    note = c.Describe();
+    return true;
+  }
+  unsigned long directions = 0;
+  int rays = 0;
+  float texel = 0.0f;
+  char t = 0;
+  const int n = std::sscanf(text.c_str(), "%lux%d%c%f", &directions, &rays, &t, &texel);
+  if (n != 2 && !(n == 4 && t == 't' && texel > 0.0f))
+  {
+    return false;
+  }
+  settings = vlf::LightFieldSettings();
+  settings.Directions = directions;
+  settings.RaysPerSide = rays;
+  settings.TilesPerSide = std::max(1, rays / 8);
+  settings.TexelSize = n == 4 ? texel * settings.CellSize() : 0.0f;
+  settings.MemoryBudget = budget;
+  note.clear();
+  return settings.Validate().empty();
+}
+
+// A digest of the scene's geometry, materials and camera: a cached reference of a changed scene
+// is never reused (FNV-1a over the floats' bytes).
+std::string SceneDigest(const AccuracyScene& s)
+{
+  std::uint64_t h = 1469598103934665603ull;
+  const auto add = [&h](const void* data, std::size_t bytes)
+  {
+    const unsigned char* p = static_cast<const unsigned char*>(data);
+    for (std::size_t i = 0; i < bytes; ++i)
+    {
+      h = (h ^ p[i]) * 1099511628211ull;
+    }
+  };
+  add(s.Scene.Positions.data(), s.Scene.Positions.size() * sizeof(glm::vec3));
+  add(s.Scene.Triangles.data(), s.Scene.Triangles.size() * sizeof(glm::uvec3));
+  add(s.Scene.MaterialIds.data(), s.Scene.MaterialIds.size() * sizeof(std::uint32_t));
+  for (const SceneMaterial& m : s.Scene.Materials)
+  {
+    add(&m.Diffuse, sizeof(glm::vec3));
+    add(&m.Emission, sizeof(glm::vec3));
+  }
+  add(&s.Camera, sizeof(PinholeCamera));
+  char text[20];
+  std::snprintf(text, sizeof(text), "%08x", static_cast<unsigned>(h ^ (h >> 32)));
+  return text;
+}
+
+bool FileExists(const std::string& path)
+{
+  struct stat st;
+  return stat(path.c_str(), &st) == 0;
+}
+} // namespace
+
+int RunVlfAccuracyBenchmark(const std::vector<std::string>& args)
+{
+  CommandLine cl("mesolight bench vlf-accuracy",
+    "mesolight bench vlf-accuracy [options]\n\n"
+    "The light field's per-pixel error against the path tracer on five scenes (900 small boxes, "
+    "a room lit\nindirectly, a ribbed corridor, thin panels near walls, the Cornell box), per "
+    "resolution setting:\npropagation time, memory, field size, mean / p95 relative error, "
+    "black-where-lit pixels,\nwithout and with the bilateral texture filter.\n");
+  cl.AddValue(
+    "--scenes", "LIST", "boxes,room,corridor,thin,cornell", "boxes,room,corridor,thin,cornell");
+  cl.AddValue("--settings", "LIST",
+    "per scene: auto, KxN (K directions, N lines per side) or KxNtF (texel F x the cell side)",
+    "513x32,auto");
+  cl.AddFlag(
+    "--full", "sweep more settings: 513x32,513x64,2049x32,2049x64,2049x64t0.5,auto,2049x96");
+  cl.AddValue("--size", "WxH", "compared image size", "64x64");
+  cl.AddValue("--samples", "N",
+    "path-tracer paths per pixel of the reference (two halves; cached, so paid once)", "8192");
+  cl.AddValue("--cache", "DIR", "where references are kept between runs", "vlf-accuracy-cache");
+  cl.AddValue("--memory-budget", "GIB", "the fields' memory budget (auto uses half of it)", "4");
+  cl.AddValue("--csv", "FILE", "write one row per scene, setting and filter");
+  cl.AddValue("--plot", "FILE.png", "time vs mean error, one series per scene (needs a display)");
+  cl.AddValue("--images", "DIR", "write each field image and the reference as EXR here");
+  std::string error;
+  int exitCode = 0;
+  if (!cl.ParseArguments(args, exitCode))
+  {
+    return exitCode;
+  }
+  int width = 0, height = 0, samples = 0;
+  double budgetGib = 4.0;
+  if (!cl.GetSize("--size", 8, 2048, width, height, error) ||
+    !cl.GetInt("--samples", 2, 1 << 20, samples, error) ||
+    !cl.GetDouble("--memory-budget", 1e-3, 1e6, budgetGib, error))
+  {
+    return cl.UsageError(error);
+  }
+  const std::string problem = CheckOutputOptions(cl, { "--csv", "--plot" }, {});
+  if (!problem.empty())
+  {
+    return cl.UsageError(problem);
+  }
+  const std::uint64_t budget = static_cast<std::uint64_t>(budgetGib * 1073741824.0);
+  std::vector<std::string> settingsList = cl.GetStringList("--settings");
+  if (cl.Has("--full"))
+  {
+    settingsList = { "513x32", "513x64", "2049x32", "2049x64", "2049x64t0.5", "auto", "2049x96" };
+  }
+  const std::string cache = cl.Get("--cache");
+  mkdir(cache.c_str(), 0755);
+
+  std::ostringstream csv;
+  csv << "scene,settings,directions,rays,tiles,texel_m,lines,surfaces,texels,map_cells,"
+         "iterations,build_s,propagate_s,total_s,allocated_bytes,estimate_bytes,filter,"
+         "pixels,mean_rel_error,p95_rel_error,black_where_lit,reference_noise\n";
+  std::map<std::string, ChartSeries> series;
+  std::printf("%-9s %-12s %6s %4s %8s %9s %7s %7s %8s %9s %6s %7s %7s %6s %6s\n", "scene",
+    "settings", "dirs", "rays", "texel m", "lines", "iter", "time s", "memory", "filter", "mean",
+    "p95", "black", "refn", "pix");
+  for (const std::string& name : cl.GetStringList("--scenes"))
+  {
+    AccuracyScene s;
+    try
+    {
+      s = MakeAccuracyScene(name);
+    }
+    catch (const std::exception& e)
+    {
+      return cl.UsageError(e.what());
+    }
+    const EmbreeScene embree(s.Scene);
+    const std::vector<PixelHit> hits = PrimaryHits(s, embree, width, height);
+    std::printf(
+      "# %s: %s, %zu triangles\n", name.c_str(), s.Description.c_str(), s.Scene.TriangleCount());
+    std::fflush(stdout);
+    RgbImage a, b;
+    const std::string key = cache + "/" + name + "-" + SceneDigest(s) + "-" +
+      std::to_string(width) + "x" + std::to_string(height) + "-" + std::to_string(samples);
+    std::printf("# %s: reference %s-{a,b}.exr\n", name.c_str(), key.c_str());
+    std::fflush(stdout);
+    if (!(FileExists(key + "-a.exr") && ReadLinearImage(key + "-a.exr", a, error) &&
+          ReadLinearImage(key + "-b.exr", b, error) && a.Width == width && b.Width == width))
+    {
+      const Clock::time_point start = Clock::now();
+      a = ReferenceHalf(s, embree, hits, width, height, samples / 2, 1);
+      b = ReferenceHalf(s, embree, hits, width, height, samples / 2, 2);
+      std::printf("# %s: path-traced reference, %d paths per pixel, %.1f s (cached in %s-*.exr)\n",
+        name.c_str(), samples, SecondsSince(start), key.c_str());
+      if (!WriteLinearImage(a, key + "-a.exr", error) ||
+        !WriteLinearImage(b, key + "-b.exr", error))
+      {
+        std::cerr << "mesolight bench vlf-accuracy: " << error << "\n";
+      }
+    }
+    for (const std::string& text : settingsList)
+    {
+      vlf::LightFieldSettings settings;
+      std::string note;
+      if (!ParseSettings(text, s.Scene, budget, settings, note))
+      {
+        return cl.UsageError("--settings: '" + text + "' is not auto, KxN or KxNtF");
+      }
+      if (!note.empty())
+      {
+        std::printf("# %s auto: %s\n", name.c_str(), note.c_str());
+        std::fflush(stdout);
+      }
+      try
+      {
+        const vlf::MemoryEstimate estimate = vlf::EstimateMemory(s.Scene, settings);
+        const Clock::time_point start = Clock::now();
+        std::unique_ptr<vlf::LightField> field = vlf::LightField::Build(s.Scene, settings);
+        const double build = SecondsSince(start);
+        const Clock::time_point propagateStart = Clock::now();
+        vlf::PropagateToTolerance(*field, vlf::DefaultTolerance, vlf::DefaultMaxIterations);
+        const double propagate = SecondsSince(propagateStart);
+        const std::uint64_t allocated = field->AllocatedBytes();
+        const double texelWorld =
+          (settings.TexelSize > 0.0f ? settings.TexelSize : settings.CellSize()) /
+          field->NormalizationScale();
+        const std::uint64_t lines = static_cast<std::uint64_t>(settings.Directions) *
+          settings.RaysPerSide * settings.RaysPerSide;
+        for (int filtered = 0; filtered < 2; ++filtered)
+        {
+          if (filtered == 1)
+          {
+            vlf::FilterTotalDiffuse(*field, vlf::TextureFilterSettings());
+          }
+          const RgbImage image = FieldImage(*field, hits, width, height);
+          const PixelError e = Compare(hits, image, a, b);
+          if (!cl.Get("--images").empty())
+          {
+            const std::string base =
+              cl.Get("--images") + "/" + name + "-" + text + (filtered ? "-filtered" : "");
+            WriteLinearImage(image, base + ".exr", error);
+          }
+          std::printf("%-9s %-12s %6zu %4d %8.3f %9.3g %7d %7.1f %8s %9s %5.1f%% %6.1f%% %5.2f%% "
+                      "%5.1f%% %6zu\n",
+            name.c_str(), text.c_str(), settings.Directions, settings.RaysPerSide, texelWorld,
+            static_cast<double>(lines), field->IterationsDone, build + propagate,
+            FormatBytes(allocated).c_str(), filtered ? "bilateral" : "none", 100.0 * e.Mean,
+            100.0 * e.P95, 100.0 * e.Black, 100.0 * e.ReferenceNoise, e.Pixels);
+          std::fflush(stdout);
+          csv << name << ',' << text << ',' << settings.Directions << ',' << settings.RaysPerSide
+              << ',' << settings.TilesPerSide << ',' << texelWorld << ',' << lines << ','
+              << field->Surfaces().size() << ',' << field->TexelCount() << ',' << estimate.MapCells
+              << ',' << field->IterationsDone << ',' << build << ',' << propagate << ','
+              << build + propagate << ',' << allocated << ',' << estimate.TotalBytes << ','
+              << (filtered ? "bilateral" : "none") << ',' << e.Pixels << ',' << e.Mean << ','
+              << e.P95 << ',' << e.Black << ',' << e.ReferenceNoise << '\n';
+          if (filtered == 0)
+          {
+            ChartSeries& cs = series[name];
+            cs.Name = name;
+            cs.X.push_back(build + propagate);
+            cs.Y.push_back(100.0 * e.Mean);
+          }
+        }
+      }
+      catch (const std::exception& ex)
+      {
+        std::printf("%-9s %-12s skipped: %s\n", name.c_str(), text.c_str(), ex.what());
+      }
+    }
+    if (!cl.Get("--images").empty())
+    {
+      RgbImage mean(width, height);
+      for (std::size_t i = 0; i < mean.Rgb.size(); ++i)
+      {
+        mean.Rgb[i] = 0.5f * (a.Rgb[i] + b.Rgb[i]);
+      }
+      WriteLinearImage(mean, cl.Get("--images") + "/" + name + "-reference.exr", error);
+    }
+  }
+  if (!cl.Get("--csv").empty())
+  {
+    std::ofstream file(cl.Get("--csv"));
+    file << csv.str();
+    if (!file)
+    {
+      std::cerr << "mesolight bench vlf-accuracy: could not write " << cl.Get("--csv") << "\n";
+      return 1;
+    }
+    std::cout << "wrote " << cl.Get("--csv") << "\n";
+  }
+  if (!cl.Get("--plot").empty())
+  {
+    ScatterChart chart;
+    chart.Title =
+      "Light field vs path tracer: mean per-pixel relative error vs build + propagation time";
+    chart.XLabel = "build + propagation seconds";
+    chart.YLabel = "mean relative error per pixel (%)";
+    chart.LogY = true;
+    chart.YFloor = 0.5;
+    for (auto& entry : series)
+    {
+      chart.Points.push_back(entry.second);
+    }
+    if (!WriteScatterChartPng(chart, cl.Get("--plot"), error))
+    {
+      std::cerr << "mesolight bench vlf-accuracy: " << error << "\n";
+      return 1;
+    }
+    std::cout << "wrote " << cl.Get("--plot") << "\n";
+  }
+  return 0;
+}
+
+} // namespace mesolight

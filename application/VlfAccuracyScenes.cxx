@@ -1,0 +1,286 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "VlfAccuracyScenes.h"
+
+#include <glm/geometric.hpp>
+
+#include <cmath>
+#include <cstdint>
+#include <stdexcept>
+
+namespace mesolight
+{
+namespace
+{
+SceneMaterial Diffuse(const char* name, glm::vec3 kd, glm::vec3 ke = glm::vec3(0.0f))
+{
+  SceneMaterial m;
+  m.Name = name;
+  m.Diffuse = kd;
+  m.Emission = ke;
+  return m;
+}
+
+// A quad whose front faces `front` (the winding is chosen from it).
+void Quad(TriangleScene& scene, glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec3 d,
+  const glm::vec3& front, std::uint32_t material)
+{
+  if (glm::dot(glm::cross(b - a, c - a), front) < 0.0f)
+  {
+    std::swap(b, d);
+  }
+  scene.AddPolygon({ a, b, c, d }, material);
+}
+
+// The parallelepiped o + [0,1] ea + [0,1] eb + [0,1] ec, faces outward (a solid) or inward (a
+// room), optionally without its bottom face (-ec side: a box standing on a floor).
+void Slab(TriangleScene& scene, glm::vec3 o, glm::vec3 ea, glm::vec3 eb, glm::vec3 ec,
+  std::uint32_t material, bool inward = false, bool bottom = true)
+{
+  const glm::vec3 centre = o + 0.5f * (ea + eb + ec);
+  const glm::vec3 e[3] = { ea, eb, ec };
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    const glm::vec3 u = e[(axis + 1) % 3], v = e[(axis + 2) % 3];
+    for (int side = 0; side < 2; ++side)
+    {
+      if (axis == 2 && side == 0 && !bottom)
+      {
+        continue;
+      }
+      const glm::vec3 p = o + static_cast<float>(side) * e[axis];
+      const glm::vec3 faceCentre = p + 0.5f * (u + v);
+      const glm::vec3 out = faceCentre - centre;
+      Quad(scene, p, p + u, p + u + v, p + v, inward ? -out : out, material);
+    }
+  }
+}
+
+// An axis-aligned box [lower, upper] turned by `degrees` about its vertical axis.
+void Box(TriangleScene& scene, glm::vec3 lower, glm::vec3 upper, std::uint32_t material,
+  float degrees = 0.0f, bool bottom = true)
+{
+  const float r = glm::radians(degrees);
+  const glm::vec3 size = upper - lower;
+  const glm::vec3 ex(std::cos(r), 0.0f, -std::sin(r)), ez(std::sin(r), 0.0f, std::cos(r));
+  const glm::vec3 centre = 0.5f * (lower + upper);
+  const glm::vec3 o =
+    glm::vec3(centre.x, lower.y, centre.z) - 0.5f * size.x * ex - 0.5f * size.z * ez;
+  // ec is the vertical edge, so "bottom" is the face at y = lower.y.
+  Slab(scene, o, size.x * ex, size.z * ez, glm::vec3(0.0f, size.y, 0.0f), material, false, bottom);
+}
+
+// A deterministic value in [0, 1) for (i, j, k): the boxes' sizes without a random generator.
+float Hash(int i, int j, int k)
+{
+  std::uint32_t h = static_cast<std::uint32_t>(i) * 73856093u ^
+    static_cast<std::uint32_t>(j) * 19349663u ^ static_cast<std::uint32_t>(k) * 83492791u;
+  h ^= h >> 13;
+  h *= 0x5bd1e995u;
+  h ^= h >> 15;
+  return static_cast<float>(h & 0xffffffu) / 16777216.0f;
+}
+
+AccuracyScene Boxes()
+{
+  AccuracyScene s;
+  s.Name = "boxes";
+  s.Description = "900 boxes of 8-20 cm on a 10 m floor under a 2 m square light";
+  TriangleScene& t = s.Scene;
+  const std::uint32_t floor = t.AddMaterial(Diffuse("floor", glm::vec3(0.6f)));
+  const std::uint32_t colours[3] = { t.AddMaterial(Diffuse("white", glm::vec3(0.8f))),
+    t.AddMaterial(Diffuse("orange", glm::vec3(0.7f, 0.4f, 0.15f))),
+    t.AddMaterial(Diffuse("blue", glm::vec3(0.2f, 0.3f, 0.65f))) };
+  const std::uint32_t lamp = t.AddMaterial(Diffuse("lamp", glm::vec3(0.8f), glm::vec3(8.0f)));
+  Quad(t, { -5, 0, -5 }, { 5, 0, -5 }, { 5, 0, 5 }, { -5, 0, 5 }, { 0, 1, 0 }, floor);
+  for (int i = 0; i < 30; ++i)
+  {
+    for (int j = 0; j < 30; ++j)
+    {
+      const float side = 0.08f + 0.12f * Hash(i, j, 1);
+      const float height = 0.04f + 0.3f * Hash(i, j, 2);
+      const float x = -4.35f + 0.3f * static_cast<float>(i),
+                  z = -4.35f + 0.3f * static_cast<float>(j);
+      Box(t, { x - 0.5f * side, 0.0f, z - 0.5f * side },
+        { x + 0.5f * side, height, z + 0.5f * side }, colours[(i + 2 * j) % 3],
+        90.0f * Hash(i, j, 3), false);
+    }
+  }
+  Quad(t, { -1, 3.5f, -1 }, { 1, 3.5f, -1 }, { 1, 3.5f, 1 }, { -1, 3.5f, 1 }, { 0, -1, 0 }, lamp);
+  s.Camera.Position = { 0.0f, 3.0f, 6.5f };
+  s.Camera.FocalPoint = { 0.0f, 0.0f, 0.5f };
+  s.Camera.ViewAngleDegrees = 50.0f;
+  return s;
+}
+
+AccuracyScene Room()
+{
+  AccuracyScene s;
+  s.Name = "room";
+  s.Description =
+    "a furnished room lit indirectly by an uplight on a wardrobe (thin shelves, tilted panel)";
+  TriangleScene& t = s.Scene;
+  const std::uint32_t white = t.AddMaterial(Diffuse("white", glm::vec3(0.75f)));
+  const std::uint32_t floor = t.AddMaterial(Diffuse("floor", { 0.55f, 0.42f, 0.3f }));
+  const std::uint32_t red = t.AddMaterial(Diffuse("red", { 0.62f, 0.22f, 0.18f }));
+  const std::uint32_t teal = t.AddMaterial(Diffuse("teal", { 0.18f, 0.45f, 0.5f }));
+  const std::uint32_t wood = t.AddMaterial(Diffuse("wood", { 0.45f, 0.3f, 0.18f }));
+  const std::uint32_t panel = t.AddMaterial(Diffuse("panel", { 0.7f, 0.68f, 0.6f }));
+  const std::uint32_t lamp =
+    t.AddMaterial(Diffuse("lamp", glm::vec3(0.8f), { 40.0f, 36.0f, 30.0f }));
+  const float W = 5.0f, H = 2.7f, D = 4.0f;
+  Quad(t, { 0, 0, 0 }, { W, 0, 0 }, { W, 0, D }, { 0, 0, D }, { 0, 1, 0 }, floor);
+  Quad(t, { 0, H, 0 }, { W, H, 0 }, { W, H, D }, { 0, H, D }, { 0, -1, 0 }, white);
+  Quad(t, { 0, 0, 0 }, { W, 0, 0 }, { W, H, 0 }, { 0, H, 0 }, { 0, 0, 1 }, white);
+  Quad(t, { 0, 0, D }, { W, 0, D }, { W, H, D }, { 0, H, D }, { 0, 0, -1 }, white);
+  Quad(t, { 0, 0, 0 }, { 0, H, 0 }, { 0, H, D }, { 0, 0, D }, { 1, 0, 0 }, red);
+  Quad(t, { W, 0, 0 }, { W, H, 0 }, { W, H, D }, { W, 0, D }, { -1, 0, 0 }, teal);
+  // The wardrobe in the back-right corner and the uplight on it, face up, out of sight.
+  Box(t, { 3.9f, 0.0f, 0.1f }, { 4.9f, 2.0f, 0.7f }, wood, 0.0f, false);
+  Quad(t, { 4.0f, 2.001f, 0.2f }, { 4.8f, 2.001f, 0.2f }, { 4.8f, 2.001f, 0.6f },
+    { 4.0f, 2.001f, 0.6f }, { 0, 1, 0 }, lamp);
+  // Three 2 cm shelves on the left wall.
+  for (float y : { 0.8f, 1.25f, 1.7f })
+  {
+    Box(t, { 0.0f, y, 1.4f }, { 0.3f, y + 0.02f, 2.6f }, wood);
+  }
+  // A table and its legs.
+  Box(t, { 2.0f, 0.72f, 1.6f }, { 3.2f, 0.76f, 2.4f }, wood);
+  for (float x : { 2.05f, 3.1f })
+  {
+    for (float z : { 1.65f, 2.3f })
+    {
+      Box(t, { x, 0.0f, z }, { x + 0.05f, 0.72f, z + 0.05f }, wood, 0.0f, false);
+    }
+  }
+  // A 2 cm panel leaning on the back wall (its top 4 cm off the wall, its foot 40 cm).
+  {
+    const glm::vec3 foot(1.2f, 0.0f, 0.42f), top(1.2f, 1.5f, 0.06f);
+    const glm::vec3 up = top - foot;
+    const glm::vec3 thick = 0.02f * glm::normalize(glm::cross(glm::vec3(1, 0, 0), up));
+    Slab(t, foot - thick, glm::vec3(1.0f, 0.0f, 0.0f), up, thick, panel);
+  }
+  Box(t, { 0.6f, 0.0f, 3.0f }, { 1.0f, 0.4f, 3.4f }, red, 25.0f, false);
+  s.Camera.Position = { 4.4f, 1.6f, 3.8f };
+  s.Camera.FocalPoint = { 1.4f, 0.9f, 0.9f };
+  s.Camera.ViewAngleDegrees = 65.0f;
+  return s;
+}
+
+AccuracyScene Corridor()
+{
+  AccuracyScene s;
+  s.Name = "corridor";
+  s.Description = "a 16 m corridor with 10 cm ribs every metre, three ceiling lights";
+  TriangleScene& t = s.Scene;
+  const std::uint32_t white = t.AddMaterial(Diffuse("white", glm::vec3(0.75f)));
+  const std::uint32_t floor = t.AddMaterial(Diffuse("floor", { 0.5f, 0.45f, 0.4f }));
+  const std::uint32_t rib = t.AddMaterial(Diffuse("rib", { 0.6f, 0.55f, 0.5f }));
+  const std::uint32_t lamp = t.AddMaterial(Diffuse("lamp", glm::vec3(0.8f), glm::vec3(8.0f)));
+  const std::uint32_t lampFar =
+    t.AddMaterial(Diffuse("lamp far", glm::vec3(0.8f), glm::vec3(30.0f)));
+  const float W = 2.0f, H = 2.5f, L = 16.0f;
+  Slab(t, { 0, 0, 0 }, { W, 0, 0 }, { 0, 0, L }, { 0, H, 0 }, white, true);
+  // Re-colour the floor: the room's first two faces are x = 0 / x = W, then z, then y = 0.
+  for (std::size_t k = 0; k < t.MaterialIds.size(); ++k)
+  {
+    const glm::vec3 a = t.Vertex(k, 0), b = t.Vertex(k, 1), c = t.Vertex(k, 2);
+    if (a.y == 0.0f && b.y == 0.0f && c.y == 0.0f)
+    {
+      t.MaterialIds[k] = floor;
+    }
+  }
+  for (int i = 1; i < 16; ++i)
+  {
+    const float z = static_cast<float>(i);
+    Box(t, { 0.0f, 0.0f, z - 0.05f }, { 0.25f, H, z + 0.05f }, rib, 0.0f, false);
+    Box(t, { W - 0.25f, 0.0f, z - 0.05f }, { W, H, z + 0.05f }, rib, 0.0f, false);
+  }
+  // Three ceiling lights, the brightest at the far end. (One light at the far end alone leaves
+  // the near end to paths of many bounces, where 8192 path-tracer paths per pixel still left a
+  // 23% noise in the reference.)
+  for (float z : { 3.0f, 8.0f, 14.0f })
+  {
+    Quad(t, { 0.6f, H - 0.001f, z }, { 1.4f, H - 0.001f, z }, { 1.4f, H - 0.001f, z + 0.5f },
+      { 0.6f, H - 0.001f, z + 0.5f }, { 0, -1, 0 }, z > 10.0f ? lampFar : lamp);
+  }
+  s.Camera.Position = { 1.0f, 1.5f, 0.3f };
+  s.Camera.FocalPoint = { 1.0f, 1.1f, 16.0f };
+  s.Camera.ViewAngleDegrees = 50.0f;
+  return s;
+}
+
+AccuracyScene Thin()
+{
+  AccuracyScene s;
+  s.Name = "thin";
+  s.Description = "a 1 cm panel 3 cm before a wall, a thin fin, 5 cm cubes along the walls";
+  TriangleScene& t = s.Scene;
+  const std::uint32_t white = t.AddMaterial(Diffuse("white", glm::vec3(0.75f)));
+  const std::uint32_t panel = t.AddMaterial(Diffuse("panel", { 0.3f, 0.5f, 0.7f }));
+  const std::uint32_t fin = t.AddMaterial(Diffuse("fin", { 0.7f, 0.5f, 0.3f }));
+  const std::uint32_t cube = t.AddMaterial(Diffuse("cube", { 0.7f, 0.2f, 0.2f }));
+  const std::uint32_t lamp = t.AddMaterial(Diffuse("lamp", glm::vec3(0.8f), glm::vec3(15.0f)));
+  const float W = 3.0f, H = 2.5f, D = 3.0f;
+  Slab(t, { 0, 0, 0 }, { W, 0, 0 }, { 0, 0, D }, { 0, H, 0 }, white, true);
+  Box(t, { 0.4f, 0.3f, 2.96f }, { 1.4f, 1.7f, 2.97f }, panel);
+  Box(t, { 2.6f, 0.0f, 1.5f }, { 3.0f, 2.0f, 1.52f }, fin, 0.0f, false);
+  for (float x : { 1.8f, 2.0f, 2.2f, 2.4f })
+  {
+    Box(t, { x, 0.0f, 2.94f }, { x + 0.05f, 0.05f, 2.99f }, cube, 0.0f, false);
+  }
+  for (float z : { 0.8f, 1.1f })
+  {
+    Box(t, { 0.01f, 0.0f, z }, { 0.06f, 0.05f, z + 0.05f }, cube, 0.0f, false);
+  }
+  Box(t, { 0.0f, 0.0f, 2.9f }, { 0.1f, 0.1f, 3.0f }, cube, 0.0f, false);
+  Quad(t, { 1.2f, H - 0.001f, 1.2f }, { 1.8f, H - 0.001f, 1.2f }, { 1.8f, H - 0.001f, 1.8f },
+    { 1.2f, H - 0.001f, 1.8f }, { 0, -1, 0 }, lamp);
+  s.Camera.Position = { 1.5f, 1.3f, 0.2f };
+  s.Camera.FocalPoint = { 1.5f, 0.9f, 3.0f };
+  s.Camera.ViewAngleDegrees = 62.0f;
+  return s;
+}
+
+AccuracyScene Cornell()
+{
+  AccuracyScene s;
+  s.Name = "cornell";
+  s.Description = "the Cornell box";
+  s.Scene = MakeCornellBox();
+  s.Camera = PinholeCamera(CornellCamera());
+  return s;
+}
+} // namespace
+
+std::vector<std::string> AccuracySceneNames()
+{
+  return { "boxes", "room", "corridor", "thin", "cornell" };
+}
+
+AccuracyScene MakeAccuracyScene(const std::string& name)
+{
+  if (name == "boxes")
+  {
+    return Boxes();
+  }
+  if (name == "room")
+  {
+    return Room();
+  }
+  if (name == "corridor")
+  {
+    return Corridor();
+  }
+  if (name == "thin")
+  {
+    return Thin();
+  }
+  if (name == "cornell")
+  {
+    return Cornell();
+  }
+  throw std::invalid_argument(
+    "unknown scene '" + name + "' (boxes, room, corridor, thin, cornell)");
+}
+
+} // namespace mesolight

@@ -1,0 +1,74 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Relief surfaces in a light field, for `mesolight vlf render --relief SURFACE=DEPTH_IMAGE`: where
+// the relief side (ReliefShading, light-field agnostic) and the light-field side (FieldIrradiance,
+// relief agnostic) meet (docs/dev/architecture.md). A named planar surface of the field's scene
+// carries a depth image; the field, propagated with the wall's macro geometry, lights it per
+// pixel: indirect light as SH9 probes over the surface's texture (the field's incident radiance
+// without the emitters' own, evaluated at the relief's perturbed normal), direct light from
+// samples of the field's emitters with the relief's self-shadowing and the scene's occlusion.
+#ifndef mesolight_VlfRelief_h
+#define mesolight_VlfRelief_h
+
+#include "ReliefShading.h"
+
+#include <glm/vec3.hpp>
+
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace mesolight
+{
+class EmbreeScene;
+namespace vlf
+{
+class LightField;
+}
+
+// Bad --relief input (unknown surface, unreadable image, a surface that is not planar): what()
+// says what is wrong and how to fix it.
+class ReliefSetupError : public std::runtime_error
+{
+public:
+  using std::runtime_error::runtime_error;
+};
+
+struct FieldRelief
+{
+  std::string Name;
+  std::string DepthImage;
+  ReliefFrame Frame; // in the field's unit-sphere coordinates
+  HeightField Height{ 1, 1, { 0.0f } };
+  ReliefLighting Lighting;
+  glm::vec3 Albedo{ 0.0f };
+  glm::vec3 Emission{ 0.0f };
+};
+
+struct FieldReliefOptions
+{
+  double DepthScale = 0.05;      // vtkReliefProperty's default
+  int Probes = 8;                // SH9 probes per side of the texture
+  int EmitterSamplesPerSide = 4; // per emitter triangle: n x n stratified samples
+};
+
+// The --relief items ("SURFACE=DEPTH_IMAGE") set up against the field. Throws ReliefSetupError.
+std::vector<FieldRelief> SetUpFieldReliefs(const vlf::LightField& field, const EmbreeScene& scene,
+  const std::vector<std::string>& items, const FieldReliefOptions& options);
+
+// Per triangle of the field's scene, the index of its relief in `reliefs`, or -1.
+std::vector<int> ReliefOfTriangle(
+  const vlf::LightField& field, const std::vector<FieldRelief>& reliefs);
+
+// The radiance a relief shows along a world ray (unit-sphere coordinates) that hit its macro
+// surface; false when the ray misses the relief (the caller keeps the flat value).
+bool ReliefRadiance(
+  const FieldRelief& relief, const glm::vec3& origin, const glm::vec3& dir, glm::vec3& radiance);
+
+// The linear depth samples of an image file (first channel, 0..1; row 0 at the bottom, v ~ 0).
+// Throws ReliefSetupError naming the file.
+HeightField ReadDepthImage(const std::string& path);
+
+} // namespace mesolight
+
+#endif

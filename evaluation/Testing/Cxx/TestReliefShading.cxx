@@ -1,0 +1,312 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// ReliefShading against exact CPU evaluations: the SH-probe irradiance at the relief's perturbed
+// normal against the exact integral of the same incident radiance (a smooth environment sampled
+// at 16384 directions, its clamped-cosine sum at that normal); the negative case, the flat wall's
+// normal, fails the same check on a relief with slopes. Direct light: an unshadowed flat relief
+// gives the analytic point-light irradiance, and a grazing light leaves the valleys of a sloped
+// relief in its own shadow, point by point as a dense independent march says.
+#include "ReliefShading.h"
+
+#include "MathConstants.h"
+
+#include <glm/geometric.hpp>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+namespace
+{
+using mesolight::HeightField;
+using mesolight::ReliefFrame;
+using mesolight::ReliefLighting;
+using mesolight::ReliefNormal;
+
+struct Sample
+{
+  glm::dvec3 Direction;
+  double SolidAngle;
+  glm::dvec3 Radiance;
+};
+
+// A smooth sky-and-ground environment with a broad warm lobe to one side: every order of it
+// matters, none is a delta (the SH9 of such light is accurate, Ramamoorthi and Hanrahan §3).
+glm::dvec3 Environment(const glm::dvec3& w)
+{
+  const double lobe = std::max(0.0, glm::dot(w, glm::normalize(glm::dvec3(1.0, 0.3, 0.6))));
+  return glm::dvec3(0.3, 0.35, 0.5) * (1.0 + 0.6 * w.z) + glm::dvec3(1.2, 0.8, 0.4) * lobe * lobe;
+}
+
+// Fibonacci sphere: equal solid angles 4 pi / n.
+std::vector<Sample> SampledEnvironment(int n)
+{
+  std::vector<Sample> samples;
+  const double golden = mesolight::Pi<double> * (3.0 - std::sqrt(5.0));
+  for (int i = 0; i < n; ++i)
+  {
+    const double z = 1.0 - (2.0 * i + 1.0) / n;
+    const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
+    const glm::dvec3 w(r * std::cos(golden * i), r * std::sin(golden * i), z);
+    samples.push_back({ w, 4.0 * mesolight::Pi<double> / n, Environment(w) });
+  }
+  return samples;
+}
+
+mesolight::SH9 Project(const std::vector<Sample>& samples)
+{
+  mesolight::SH9 sh;
+  for (const Sample& s : samples)
+  {
+    const double d[3] = { s.Direction.x, s.Direction.y, s.Direction.z };
+    double y[9];
+    mesolight::EvaluateSHBasis(d, y);
+    for (int k = 0; k < 9; ++k)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        sh.L[k][c] += s.SolidAngle * s.Radiance[c] * y[k];
+      }
+    }
+  }
+  return sh;
+}
+
+glm::dvec3 ExactIrradiance(const std::vector<Sample>& samples, const glm::dvec3& n)
+{
+  glm::dvec3 e(0.0);
+  for (const Sample& s : samples)
+  {
+    e += s.Radiance * (s.SolidAngle * std::max(0.0, glm::dot(n, s.Direction)));
+  }
+  return e;
+}
+
+// Sloped ridges: depth 0.5 + 0.45 sin(2 pi 3 u) cos(2 pi 2 v), 64 x 64.
+HeightField Ridges()
+{
+  const int n = 64;
+  std::vector<float> depth;
+  for (int j = 0; j < n; ++j)
+  {
+    for (int i = 0; i < n; ++i)
+    {
+      const double u = (i + 0.5) / n, v = (j + 0.5) / n;
+      depth.push_back(static_cast<float>(0.5 +
+        0.45 * std::sin(2.0 * mesolight::Pi<double> * 3.0 * u) *
+          std::cos(2.0 * mesolight::Pi<double> * 2.0 * v)));
+    }
+  }
+  return HeightField(n, n, depth);
+}
+
+// A unit square in z = 0 facing +z, relief 0.15 deep.
+ReliefFrame Square()
+{
+  ReliefFrame frame;
+  frame.DepthScale = 0.15;
+  return frame;
+}
+
+// The largest relative error (per pixel, luminance-like sum over channels, against the exact
+// irradiance) of the indirect term over a grid of rays from a camera above the square.
+double WorstIndirectError(ReliefNormal normal, double* slope = nullptr)
+{
+  const HeightField hf = Ridges();
+  const ReliefFrame frame = Square();
+  const std::vector<Sample> environment = SampledEnvironment(16384);
+  ReliefLighting lighting;
+  lighting.Probes = { Project(environment) };
+  lighting.OcclusionDirections = 0; // the SH irradiance alone, against the unoccluded integral
+  const glm::dvec3 eye(0.5, -0.6, 1.4);
+  double worst = 0.0, steepest = 0.0;
+  for (int y = 0; y < 24; ++y)
+  {
+    for (int x = 0; x < 24; ++x)
+    {
+      const glm::dvec3 target((x + 0.5) / 24.0, (y + 0.5) / 24.0, 0.0);
+      const auto shade =
+        mesolight::ShadeReliefRay(hf, frame, lighting, eye, glm::normalize(target - eye), normal);
+      if (!shade)
+      {
+        continue;
+      }
+      // The reference is always at the displaced surface's true normal.
+      const glm::dvec3 n = mesolight::ReliefNormalAt(hf, frame, shade->Texture.x, shade->Texture.y);
+      steepest = std::max(steepest, std::acos(std::min(1.0, n.z)));
+      const glm::dvec3 exact = ExactIrradiance(environment, n);
+      const double sum = exact.x + exact.y + exact.z;
+      const glm::dvec3 diff = shade->Indirect - exact;
+      worst = std::max(worst, (std::abs(diff.x) + std::abs(diff.y) + std::abs(diff.z)) / sum);
+    }
+  }
+  if (slope)
+  {
+    *slope = steepest;
+  }
+  return worst;
+}
+
+TEST(ReliefShading, ShIrradianceAtThePerturbedNormalMatchesExactIntegration)
+{
+  double steepest = 0.0;
+  const double error = WorstIndirectError(ReliefNormal::Perturbed, &steepest);
+  std::cout << "SH9 at the perturbed normal: worst relative error " << error << " (steepest slope "
+            << steepest * 180.0 / mesolight::Pi<double> << " degrees)\n";
+  EXPECT_GT(steepest, 0.5); // the relief has slopes steeper than about 30 degrees
+  EXPECT_LT(error, 0.03);
+}
+
+TEST(ReliefShading, FlatNormalFailsTheCheck)
+{
+  const double error = WorstIndirectError(ReliefNormal::Flat);
+  std::cout << "flat wall's normal: worst relative error " << error << "\n";
+  EXPECT_GT(error, 0.1);
+}
+
+// The relief's occlusion of the indirect light against the exact integral with visibility: every
+// environment sample marched through the height field from the hit (deep ridges, 0.4 of the
+// width). Returns the mean relative error over the hits, and their mean visible share.
+double OccludedIndirectError(int occlusionDirections, double* meanVisible = nullptr)
+{
+  const HeightField hf = Ridges();
+  ReliefFrame frame = Square();
+  frame.DepthScale = 0.4;
+  const std::vector<Sample> environment = SampledEnvironment(2048);
+  ReliefLighting lighting;
+  lighting.Probes = { Project(environment) };
+  lighting.OcclusionDirections = occlusionDirections;
+  const glm::dvec3 eye(0.5, 0.2, 2.0);
+  double sumError = 0.0, sumVisible = 0.0;
+  int hits = 0;
+  for (int y = 0; y < 12; ++y)
+  {
+    for (int x = 0; x < 12; ++x)
+    {
+      const glm::dvec3 target((x + 0.5) / 12.0, (y + 0.5) / 12.0, 0.0);
+      const auto shade =
+        mesolight::ShadeReliefRay(hf, frame, lighting, eye, glm::normalize(target - eye));
+      if (!shade)
+      {
+        continue;
+      }
+      glm::dvec3 exact(0.0);
+      for (const Sample& s : environment)
+      {
+        const double c = glm::dot(shade->Normal, s.Direction);
+        if (c > 0.0 && s.Direction.z > 0.0 &&
+          mesolight::Visible(hf, shade->Texture, frame.ToTexture(s.Direction), 1e-6))
+        {
+          exact += s.Radiance * (s.SolidAngle * c);
+        }
+      }
+      const glm::dvec3 diff = shade->Indirect - exact;
+      sumError += (std::abs(diff.x) + std::abs(diff.y) + std::abs(diff.z)) /
+        (exact.x + exact.y + exact.z + 1e-9);
+      sumVisible += shade->IndirectVisible;
+      ++hits;
+    }
+  }
+  if (meanVisible)
+  {
+    *meanVisible = sumVisible / hits;
+  }
+  return sumError / hits;
+}
+
+TEST(ReliefShading, IndirectOcclusionAgainstExactIntegrationWithVisibility)
+{
+  double visible = 1.0;
+  const double occluded = OccludedIndirectError(32, &visible);
+  const double unoccluded = OccludedIndirectError(0);
+  std::cout << "indirect light in deep ridges, mean relative error: occluded (32 directions) "
+            << occluded << ", unoccluded " << unoccluded << " (mean visible share " << visible
+            << ")\n";
+  EXPECT_LT(visible, 0.95); // the ridges do hide part of the room
+  EXPECT_LT(occluded, 0.08);
+  // Negative case: the SH irradiance without the relief's occlusion is off by more.
+  EXPECT_GT(unoccluded, 2.0 * occluded);
+}
+
+TEST(ReliefShading, UniformLightGivesPiL)
+{
+  // SH9 of a uniform radiance L: L00 = 2 sqrt(pi) L, irradiance pi L at every normal.
+  ReliefLighting lighting;
+  mesolight::SH9 sh;
+  sh.L[0] = { 2.0 * std::sqrt(mesolight::Pi<double>), 0.0, 1.0 };
+  lighting.Probes = { sh };
+  const glm::dvec3 e =
+    mesolight::ProbeIrradiance(lighting, 0.3, 0.7, glm::normalize(glm::dvec3(1.0, -2.0, 0.5)));
+  EXPECT_NEAR(e.x, mesolight::Pi<double>, 1e-5); // the basis constants have 6 digits
+  EXPECT_NEAR(e.y, 0.0, 1e-12);
+}
+
+TEST(ReliefShading, DirectOnAFlatReliefIsThePointLightLaw)
+{
+  const HeightField flat(2, 2, { 0.0f, 0.0f, 0.0f, 0.0f });
+  const ReliefFrame frame = Square();
+  ReliefLighting lighting;
+  mesolight::ReliefEmitterSample light;
+  light.Position = glm::dvec3(0.9, 0.2, 0.8);
+  light.Normal = glm::normalize(glm::dvec3(-0.2, 0.1, -1.0));
+  light.RadianceArea = glm::dvec3(2.0, 1.0, 0.5);
+  lighting.Emitters = { light };
+  const glm::dvec3 eye(0.5, 0.5, 2.0);
+  const auto shade =
+    mesolight::ShadeReliefRay(flat, frame, lighting, eye, glm::dvec3(-0.1, 0.05, -1.0));
+  ASSERT_TRUE(shade);
+  const glm::dvec3 toLight = light.Position - shade->Point;
+  const double r2 = glm::dot(toLight, toLight);
+  const glm::dvec3 l = toLight / std::sqrt(r2);
+  const double expected = l.z * -glm::dot(light.Normal, l) / r2;
+  EXPECT_NEAR(shade->Direct.x, 2.0 * expected, 1e-9);
+  EXPECT_NEAR(shade->Direct.z, 0.5 * expected, 1e-9);
+  EXPECT_NEAR(shade->Point.z, 0.0, 1e-12);
+  // The scene's visibility callback is asked, from the macro surface to the light.
+  lighting.SceneVisible = [](const glm::dvec3&, const glm::dvec3&) { return false; };
+  EXPECT_EQ(
+    mesolight::ShadeReliefRay(flat, frame, lighting, eye, glm::dvec3(-0.1, 0.05, -1.0))->Direct.x,
+    0.0);
+}
+
+TEST(ReliefShading, GrazingLightSelfShadowsLikeADenseMarch)
+{
+  const HeightField hf = Ridges();
+  const ReliefFrame frame = Square();
+  ReliefLighting lighting;
+  mesolight::ReliefEmitterSample light;
+  light.Position = glm::dvec3(-30.0, 0.5, 6.0); // far, low, along -u: the ridges cast shadows
+  light.Normal = glm::normalize(glm::dvec3(0.5, 0.0, 0.0) - light.Position);
+  light.RadianceArea = glm::dvec3(1000.0);
+  lighting.Emitters = { light };
+  const glm::dvec3 eye(0.5, 0.5, 3.0);
+  int lit = 0, shadowed = 0, disagree = 0;
+  for (int y = 0; y < 32; ++y)
+  {
+    for (int x = 0; x < 32; ++x)
+    {
+      const glm::dvec3 target((x + 0.5) / 32.0, (y + 0.5) / 32.0, 0.0);
+      const auto shade =
+        mesolight::ShadeReliefRay(hf, frame, lighting, eye, glm::normalize(target - eye));
+      ASSERT_TRUE(shade);
+      // Independent: march toward the light in 4000 steps of the height field's DepthAt.
+      const glm::dvec3 l = frame.ToTexture(glm::normalize(light.Position - shade->Point));
+      const double tTop = shade->Texture.z / -l.z;
+      bool blocked = false;
+      for (int s = 1; s <= 4000 && !blocked; ++s)
+      {
+        const glm::dvec3 q = shade->Texture + (tTop * s / 4000.0) * l;
+        blocked = q.z > hf.DepthAt(q.x, q.y) + 1e-4;
+      }
+      const bool facing = glm::dot(shade->Normal, light.Position - shade->Point) > 0.0;
+      const bool expectLit = facing && !blocked;
+      const bool isLit = shade->Direct.x > 0.0;
+      (isLit ? lit : shadowed)++;
+      disagree += isLit != expectLit ? 1 : 0;
+    }
+  }
+  EXPECT_GT(lit, 100);
+  EXPECT_GT(shadowed, 100);
+  EXPECT_LE(disagree, 10) << "of 1024 (grazing points may differ by the march's step)";
+}
+
+} // namespace

@@ -1,0 +1,230 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "ReliefShading.h"
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+#include <glm/mat3x3.hpp>
+#include <glm/matrix.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace mesolight
+{
+
+double ReliefFrame::WorldDepth() const
+{
+  return this->DepthScale * glm::length(this->AxisU);
+}
+
+glm::dvec3 ReliefFrame::Point(double u, double v, double d) const
+{
+  return this->Origin + u * this->AxisU + v * this->AxisV - d * this->WorldDepth() * this->Normal;
+}
+
+glm::dvec3 ReliefFrame::ToTexture(const glm::dvec3& world) const
+{
+  const glm::dmat3 m(this->AxisU, this->AxisV, -this->WorldDepth() * this->Normal);
+  return glm::inverse(m) * world;
+}
+
+glm::dvec3 ReliefNormalAt(const HeightField& hf, const ReliefFrame& frame, double u, double v)
+{
+  const glm::dvec2 g = hf.GradientAt(u, v);
+  const double w = frame.WorldDepth();
+  const glm::dvec3 du = frame.AxisU - w * g.x * frame.Normal;
+  const glm::dvec3 dv = frame.AxisV - w * g.y * frame.Normal;
+  glm::dvec3 n = glm::cross(du, dv);
+  const double length = glm::length(n);
+  if (!(length > 0.0))
+  {
+    return frame.Normal;
+  }
+  n /= length;
+  return glm::dot(n, frame.Normal) < 0.0 ? -n : n;
+}
+
+namespace
+{
+// The probes' SH9 at (u, v), bilinear; false without probes.
+bool ProbeAt(const ReliefLighting& lighting, double u, double v, SH9& sh)
+{
+  const int pu = std::max(1, lighting.ProbesU), pv = std::max(1, lighting.ProbesV);
+  if (lighting.Probes.size() != static_cast<std::size_t>(pu) * pv)
+  {
+    return false;
+  }
+  // Continuous probe coordinates (probe centres at integers), clamped to the grid.
+  const double x = std::clamp(u * pu - 0.5, 0.0, pu - 1.0);
+  const double y = std::clamp(v * pv - 0.5, 0.0, pv - 1.0);
+  const int a0 = static_cast<int>(std::floor(x)), b0 = static_cast<int>(std::floor(y));
+  const int a1 = std::min(a0 + 1, pu - 1), b1 = std::min(b0 + 1, pv - 1);
+  const double fx = x - a0, fy = y - b0;
+  sh = SH9();
+  const auto add = [&](int a, int b, double weight)
+  {
+    const SH9& p = lighting.Probes[static_cast<std::size_t>(b) * pu + a];
+    for (int k = 0; k < 9; ++k)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        sh.L[k][c] += weight * p.L[k][c];
+      }
+    }
+  };
+  add(a0, b0, (1.0 - fx) * (1.0 - fy));
+  add(a1, b0, fx * (1.0 - fy));
+  add(a0, b1, (1.0 - fx) * fy);
+  add(a1, b1, fx * fy);
+  return true;
+}
+
+// Fixed cosine-distributed directions around +z (Hammersley points, Malley's method).
+const std::vector<glm::dvec3>& CosineDirections(int count)
+{
+  thread_local std::vector<glm::dvec3> directions;
+  if (static_cast<int>(directions.size()) != count)
+  {
+    directions.clear();
+    for (int i = 0; i < count; ++i)
+    {
+      unsigned bits = static_cast<unsigned>(i);
+      bits = (bits << 16u) | (bits >> 16u);
+      bits = ((bits & 0x55555555u) << 1u) | ((bits & 0xAAAAAAAAu) >> 1u);
+      bits = ((bits & 0x33333333u) << 2u) | ((bits & 0xCCCCCCCCu) >> 2u);
+      bits = ((bits & 0x0F0F0F0Fu) << 4u) | ((bits & 0xF0F0F0F0u) >> 4u);
+      bits = ((bits & 0x00FF00FFu) << 8u) | ((bits & 0xFF00FF00u) >> 8u);
+      const double r = std::sqrt((i + 0.5) / count);
+      const double phi = 2.0 * 3.14159265358979323846 * (bits * 2.3283064365386963e-10);
+      directions.emplace_back(
+        r * std::cos(phi), r * std::sin(phi), std::sqrt(std::max(0.0, 1.0 - r * r)));
+    }
+  }
+  return directions;
+}
+} // namespace
+
+glm::dvec3 ProbeRadiance(const ReliefLighting& lighting, double u, double v, const glm::dvec3& w)
+{
+  SH9 sh;
+  if (!ProbeAt(lighting, u, v, sh))
+  {
+    return glm::dvec3(0.0);
+  }
+  const double d[3] = { w.x, w.y, w.z };
+  double y[9];
+  EvaluateSHBasis(d, y);
+  glm::dvec3 radiance(0.0);
+  for (int k = 0; k < 9; ++k)
+  {
+    radiance += y[k] * glm::dvec3(sh.L[k][0], sh.L[k][1], sh.L[k][2]);
+  }
+  return glm::max(radiance, glm::dvec3(0.0));
+}
+
+glm::dvec3 ProbeIrradiance(const ReliefLighting& lighting, double u, double v, const glm::dvec3& n)
+{
+  SH9 sh;
+  if (!ProbeAt(lighting, u, v, sh))
+  {
+    return glm::dvec3(0.0);
+  }
+  const double normal[3] = { n.x, n.y, n.z };
+  double e[3];
+  IrradianceSH9(sh, normal, e);
+  return glm::dvec3(std::max(0.0, e[0]), std::max(0.0, e[1]), std::max(0.0, e[2]));
+}
+
+std::optional<ReliefShade> ShadeReliefRay(const HeightField& hf, const ReliefFrame& frame,
+  const ReliefLighting& lighting, const glm::dvec3& origin, const glm::dvec3& dir,
+  ReliefNormal normal)
+{
+  const double facing = glm::dot(frame.Normal, dir);
+  if (!(facing < 0.0))
+  {
+    return std::nullopt; // parallel to the plane or seeing its back
+  }
+  // Where the ray enters the relief's slab: the macro plane (d = 0).
+  const double t0 = glm::dot(frame.Normal, frame.Origin - origin) / facing;
+  if (!(t0 >= 0.0))
+  {
+    return std::nullopt;
+  }
+  const glm::dvec3 entry = origin + t0 * dir;
+  const glm::dvec3 entryTexture = frame.ToTexture(entry - frame.Origin);
+  const glm::dvec3 start(entryTexture.x, entryTexture.y, 0.0);
+  const glm::dvec3 step = frame.ToTexture(dir);
+  if (!(step.z > 0.0))
+  {
+    return std::nullopt;
+  }
+  // Down to d = 1 and a little beyond: a depth map reaching 1 is met there.
+  const std::optional<RayHit> hit = IntersectFirst(hf, start, step, 1.0001 / step.z);
+  if (!hit)
+  {
+    return std::nullopt;
+  }
+  ReliefShade shade;
+  shade.Texture = hit->point;
+  const double u = hit->point.x, v = hit->point.y, d = std::max(0.0, hit->point.z);
+  shade.Point = frame.Point(u, v, d);
+  shade.Normal = normal == ReliefNormal::Perturbed ? ReliefNormalAt(hf, frame, u, v) : frame.Normal;
+  shade.Indirect = ProbeIrradiance(lighting, u, v, shade.Normal);
+  if (normal == ReliefNormal::Perturbed && lighting.OcclusionDirections > 0)
+  {
+    // The share of the SH radiance (luminance, cosine-distributed) that reaches the hit past the
+    // relief: a direction below the macro plane or blocked by the height field brings nothing.
+    const glm::dvec3 t = std::abs(shade.Normal.z) < 0.9 ? glm::dvec3(0, 0, 1) : glm::dvec3(1, 0, 0);
+    const glm::dvec3 x = glm::normalize(glm::cross(t, shade.Normal));
+    const glm::dvec3 y = glm::cross(shade.Normal, x);
+    double all = 0.0, visible = 0.0;
+    for (const glm::dvec3& c : CosineDirections(lighting.OcclusionDirections))
+    {
+      const glm::dvec3 w = c.x * x + c.y * y + c.z * shade.Normal;
+      const glm::dvec3 l = ProbeRadiance(lighting, u, v, w);
+      const double weight = 0.2126 * l.x + 0.7152 * l.y + 0.0722 * l.z + 1e-12;
+      all += weight;
+      if (glm::dot(w, frame.Normal) > 0.0 &&
+        Visible(hf, glm::dvec3(u, v, std::max(0.0, hit->point.z)), frame.ToTexture(w), 1e-6))
+      {
+        visible += weight;
+      }
+    }
+    shade.IndirectVisible = all > 0.0 ? visible / all : 1.0;
+    shade.Indirect *= shade.IndirectVisible;
+  }
+  const double w = frame.WorldDepth();
+  for (const ReliefEmitterSample& e : lighting.Emitters)
+  {
+    const glm::dvec3 toLight = e.Position - shade.Point;
+    const double r2 = glm::dot(toLight, toLight);
+    if (!(r2 > 0.0))
+    {
+      continue;
+    }
+    const glm::dvec3 l = toLight / std::sqrt(r2);
+    const double cosine = glm::dot(shade.Normal, l);
+    const double cosineEmitter = -glm::dot(e.Normal, l);
+    const double rise = glm::dot(frame.Normal, l); // the light must be above the macro plane
+    if (!(cosine > 0.0 && cosineEmitter > 0.0 && rise > 0.0))
+    {
+      continue;
+    }
+    // The relief's own shadow: the march toward the light must leave the top of the height field.
+    if (normal == ReliefNormal::Perturbed &&
+      !Visible(hf, glm::dvec3(u, v, d), frame.ToTexture(l), 1e-6))
+    {
+      continue;
+    }
+    // The rest of the scene, from where the ray to the light leaves the relief's slab.
+    if (lighting.SceneVisible &&
+      !lighting.SceneVisible(shade.Point + (d * w / rise) * l, e.Position))
+    {
+      continue;
+    }
+    shade.Direct += e.RadianceArea * (cosine * cosineEmitter / r2);
+  }
+  return shade;
+}
+
+} // namespace mesolight

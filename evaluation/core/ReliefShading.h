@@ -1,0 +1,112 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// ReliefShading: a relief (height field) on a planar surface, shaded per pixel under lighting
+// given as data that says nothing of where it came from: spherical-harmonics radiance (SH9,
+// Ramamoorthi and Hanrahan, "An efficient representation for irradiance environment maps") on a
+// grid of probes over the surface's texture, for the smooth (indirect) light, and emitter samples
+// (small area pieces) for the direct light, with the relief's self-shadowing toward each. Plain
+// C++17 + GLM on the exact height-field intersector (HeightFieldTracer.h); the CPU evaluation the
+// light-field tool renders relief surfaces with (`mesolight vlf render --relief`, docs/vlf.md).
+//
+// The relief's geometry is relief mapping's (Policarpo, Oliveira and Comba, "Real-time relief
+// mapping on arbitrary polygonal surfaces"): the surface point at texture (u, v) and depth d is
+//   P(u, v, d) = Origin + u AxisU + v AxisV - d W Normal,   W = DepthScale |AxisU|
+// (vtkReliefProperty's DepthScale: world depth of d = 1 over the world length of one unit of u).
+// The shading normal is the normal of that displaced surface, dP/du x dP/dv: the relief's
+// PERTURBED normal, at which both the SH irradiance and the emitters' cosines are evaluated. A
+// flat-normal variant (the macro surface's normal) exists for the negative tests.
+#ifndef mesolight_ReliefShading_h
+#define mesolight_ReliefShading_h
+
+#include "EnvironmentMaps.h" // SH9
+#include "HeightFieldTracer.h"
+#include "MesolightEvaluationModule.h" // for the export macro
+
+#include <glm/vec3.hpp>
+
+#include <functional>
+#include <optional>
+#include <vector>
+
+namespace mesolight
+{
+
+/** The affine texture map of a planar surface and its relief depth (see above). */
+struct MESOLIGHTEVALUATION_EXPORT ReliefFrame
+{
+  glm::dvec3 Origin{ 0.0 };
+  glm::dvec3 AxisU{ 1.0, 0.0, 0.0 };
+  glm::dvec3 AxisV{ 0.0, 1.0, 0.0 };
+  glm::dvec3 Normal{ 0.0, 0.0, 1.0 }; // unit, the front side
+  double DepthScale = 0.05;
+
+  double WorldDepth() const; // W
+  glm::dvec3 Point(double u, double v, double d) const;
+  /** Texture-space (du, dv, dd) of a world vector. */
+  glm::dvec3 ToTexture(const glm::dvec3& world) const;
+};
+
+/** A small piece of an emitter: position, unit normal (its front), radiance times area. */
+struct ReliefEmitterSample
+{
+  glm::dvec3 Position{ 0.0 };
+  glm::dvec3 Normal{ 0.0, 0.0, -1.0 };
+  glm::dvec3 RadianceArea{ 0.0 };
+};
+
+struct ReliefLighting
+{
+  // SH9 radiance probes on a ProbesU x ProbesV grid over the texture square [0, 1]^2 (probe (a, b)
+  // at ((a + 1/2) / ProbesU, (b + 1/2) / ProbesV), row-major, b slowest); bilinear, clamped.
+  int ProbesU = 1;
+  int ProbesV = 1;
+  std::vector<SH9> Probes;
+  std::vector<ReliefEmitterSample> Emitters;
+  // The relief's own occlusion of the indirect light: the SH irradiance is scaled by the visible
+  // share of the SH radiance over this many fixed cosine-distributed directions around the
+  // normal, each marched through the height field (a valley sees less of the room than a crest).
+  // 0 leaves the indirect light unoccluded (the SH irradiance alone).
+  int OcclusionDirections = 32;
+  // Optional: whether the segment from a point on the macro surface to an emitter sample is
+  // free of the rest of the scene (true when not given).
+  std::function<bool(const glm::dvec3& from, const glm::dvec3& to)> SceneVisible;
+};
+
+enum class ReliefNormal
+{
+  Perturbed, // the displaced surface's normal: the method
+  Flat       // the macro surface's normal (negative tests: the relief then shades like a wall)
+};
+
+struct ReliefShade
+{
+  glm::dvec3 Texture{ 0.0 };    // (u, v, d) of the hit
+  glm::dvec3 Point{ 0.0 };      // world
+  glm::dvec3 Normal{ 0.0 };     // the shading normal (perturbed or flat)
+  glm::dvec3 Indirect{ 0.0 };   // irradiance from the SH probes at Normal, clamped at 0, occluded
+  double IndirectVisible = 1.0; // the visible share applied to it
+  glm::dvec3 Direct{ 0.0 };     // irradiance from the emitter samples, relief-shadowed
+};
+
+/** The perturbed unit normal of the displaced surface at (u, v) (front side). */
+MESOLIGHTEVALUATION_EXPORT glm::dvec3 ReliefNormalAt(
+  const HeightField& hf, const ReliefFrame& frame, double u, double v);
+
+/** The SH radiance of the probes at (u, v) arriving from unit direction w, clamped at 0. */
+MESOLIGHTEVALUATION_EXPORT glm::dvec3 ProbeRadiance(
+  const ReliefLighting& lighting, double u, double v, const glm::dvec3& w);
+
+/** The SH irradiance of the probes at (u, v) for unit normal n, clamped at 0. */
+MESOLIGHTEVALUATION_EXPORT glm::dvec3 ProbeIrradiance(
+  const ReliefLighting& lighting, double u, double v, const glm::dvec3& n);
+
+/**
+ * The relief seen along the world ray origin + t dir: its first hit (exact, IntersectFirst) and
+ * the irradiance there. nullopt when the ray does not reach the front of the macro plane.
+ */
+MESOLIGHTEVALUATION_EXPORT std::optional<ReliefShade> ShadeReliefRay(const HeightField& hf,
+  const ReliefFrame& frame, const ReliefLighting& lighting, const glm::dvec3& origin,
+  const glm::dvec3& dir, ReliefNormal normal = ReliefNormal::Perturbed);
+
+} // namespace mesolight
+
+#endif

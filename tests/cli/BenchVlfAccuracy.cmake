@@ -1,0 +1,50 @@
+# SPDX-License-Identifier: BSD-3-Clause
+# `mesolight bench vlf-accuracy` on tiny sizes: the CSV's header and rows (2 scenes x 2 settings x
+# without / with the filter), the finer field closer to the path tracer than the coarse one on
+# each scene (the error can tell them apart), the cached reference reused by a second run, and
+# bad --settings / --scenes refused.
+cmake_minimum_required(VERSION 3.16)
+include("${CMAKE_CURRENT_LIST_DIR}/RunTool.cmake")
+cli_fresh_work()
+
+set(args bench vlf-accuracy --scenes cornell,thin --settings 33x16,129x32 --size 24x24
+  --samples 64 --cache "${WORK}/cache")
+cli_run(TRUE ${args} --csv "${WORK}/accuracy.csv")
+if (NOT last_output MATCHES "path-traced reference")
+  message(FATAL_ERROR "no reference was traced: ${last_output}")
+endif ()
+file(STRINGS "${WORK}/accuracy.csv" lines)
+list(GET lines 0 header)
+set(expected "scene,settings,directions,rays,tiles,texel_m,lines,surfaces,texels,map_cells,iterations,build_s,propagate_s,total_s,allocated_bytes,estimate_bytes,filter,pixels,mean_rel_error,p95_rel_error,black_where_lit,reference_noise")
+if (NOT header STREQUAL expected)
+  message(FATAL_ERROR "header\n  ${header}\nnot\n  ${expected}")
+endif ()
+list(LENGTH lines count)
+if (NOT count EQUAL 9)
+  message(FATAL_ERROR "expected 8 rows, got ${count} lines:\n${lines}")
+endif ()
+# Unfiltered rows: lines 1 (cornell 33x16), 3 (cornell 129x32), 5 (thin 33x16), 7 (thin 129x32).
+foreach (pair "1;3" "5;7")
+  list(GET pair 0 coarse)
+  list(GET pair 1 fine)
+  list(GET lines ${coarse} coarse_line)
+  list(GET lines ${fine} fine_line)
+  string(REPLACE "," ";" c "${coarse_line}")
+  string(REPLACE "," ";" f "${fine_line}")
+  list(GET c 18 coarse_error)
+  list(GET f 18 fine_error)
+  list(GET f 16 filter)
+  if (NOT filter STREQUAL "none")
+    message(FATAL_ERROR "row ${fine} is not unfiltered: ${fine_line}")
+  endif ()
+  if (NOT fine_error LESS coarse_error)
+    message(FATAL_ERROR "129x32 (${fine_error}) not closer than 33x16 (${coarse_error}):\n${lines}")
+  endif ()
+endforeach ()
+cli_run(TRUE ${args})
+if (last_output MATCHES "path-traced reference")
+  message(FATAL_ERROR "the cached reference was traced again: ${last_output}")
+endif ()
+cli_expect_error(2 "is not auto, KxN or KxNtF" bench vlf-accuracy --scenes cornell --settings 33
+  --cache "${WORK}/cache" --size 24x24 --samples 64)
+cli_expect_error(2 "unknown scene 'attic'" bench vlf-accuracy --scenes attic --cache "${WORK}/cache")

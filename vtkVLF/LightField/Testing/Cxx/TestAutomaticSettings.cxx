@@ -1,0 +1,127 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The light field's automatic resolution (AutomaticSettings.h).
+// 1. SmallFeatureWidth against the exact value of a made scene: a 1 x 1 floor (triangle widths
+//    0.707) and twenty 1 x 0.01 strips on it (widths 0.01, 17% of the area): the area-weighted
+//    10th percentile is the strips' width. Without the strips (the negative) it is the emitter's.
+// 2. The strips ask for many lines; the line cap and a small memory budget each bring the choice
+//    down, and say so; the floor alone gets the preferred 2049 x 64 x 64. Given values are kept.
+#include "AutomaticSettings.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace
+{
+using namespace mesolight;
+using namespace mesolight::vlf;
+
+TriangleScene Strips(bool withStrips)
+{
+  TriangleScene scene;
+  SceneMaterial grey;
+  grey.Diffuse = glm::vec3(0.5f);
+  const std::uint32_t g = scene.AddMaterial(grey);
+  SceneMaterial lamp = grey;
+  lamp.Emission = glm::vec3(1.0f);
+  const std::uint32_t l = scene.AddMaterial(lamp);
+  scene.AddPolygon({ { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 } }, g);
+  // The emitter: a 0.5 x 0.5 square above the floor, facing it.
+  scene.AddPolygon({ { 0.25f, 0.25f, 0.5f }, { 0.25f, 0.75f, 0.5f }, { 0.75f, 0.75f, 0.5f },
+                     { 0.75f, 0.25f, 0.5f } },
+    l);
+  for (int i = 0; withStrips && i < 20; ++i)
+  {
+    const float y = 0.025f + 0.05f * static_cast<float>(i);
+    scene.AddPolygon(
+      { { 0, y, 0.01f }, { 1, y, 0.01f }, { 1, y + 0.01f, 0.01f }, { 0, y + 0.01f, 0.01f } }, g);
+  }
+  return scene;
+}
+} // namespace
+
+TEST(VLFAutomaticSettings, SmallFeatureWidthIsTheAreaWeightedTenthPercentile)
+{
+  // 2 area / longest edge of a 1 x 0.01 half: 0.01 / sqrt(1 + 1e-4).
+  EXPECT_NEAR(SmallFeatureWidth(Strips(true)), 0.01 / std::sqrt(1.0001), 1e-5);
+  // Without the strips, the emitter (0.25 of the area 1.25) holds the 10th percentile: its
+  // halves' width 0.5 / sqrt(2).
+  EXPECT_NEAR(SmallFeatureWidth(Strips(false)), 0.5 / std::sqrt(2.0), 1e-4);
+  EXPECT_EQ(SmallFeatureWidth(TriangleScene()), 0.0f);
+}
+
+TEST(VLFAutomaticSettings, FeaturesAskCapsLimit)
+{
+  const TriangleScene strips = Strips(true);
+  AutomaticLimits limits;
+  limits.MaxLines = std::uint64_t(1) << 40; // no line cap
+  limits.MaxRaysPerSide = 4096;
+  limits.MemoryBudget = std::uint64_t(1)
+    << 40; // nor a memory limit (the estimate allocates nothing)
+  AutomaticChoice c = ChooseAutomaticSettings(strips, limits);
+  // diameter sqrt(1 + 1 + 0.25) = 1.5, 2 lines per 0.01: 300, rounded up to a multiple of 8.
+  EXPECT_EQ(c.WantedRaysPerSide, 304) << c.Describe();
+  EXPECT_EQ(c.Settings.RaysPerSide, 304) << c.Describe();
+  EXPECT_EQ(c.Limit, "features");
+  EXPECT_EQ(c.Settings.Directions, 8193u);
+  EXPECT_EQ(c.Settings.TilesPerSide, 38);
+  EXPECT_TRUE(c.Settings.Validate().empty());
+
+  c = ChooseAutomaticSettings(strips); // default line cap: 2049 x 96^2
+  EXPECT_EQ(c.Limit, "line cap") << c.Describe();
+  EXPECT_LE(static_cast<std::uint64_t>(c.Settings.Directions) * c.Settings.RaysPerSide *
+      c.Settings.RaysPerSide,
+    AutomaticLimits().MaxLines);
+  // The line cap lowers the lines per side, never the directions.
+  EXPECT_EQ(c.Settings.RaysPerSide, 96);
+  EXPECT_EQ(c.Settings.Directions, 2049u);
+
+  // A budget between what 513 and 2049 directions at 96 lines need: 513 x 96 (memory lowers the
+  // directions first at the same lines).
+  LightFieldSettings at96 = c.Settings;
+  const std::uint64_t many = EstimateMemory(strips, at96).TotalBytes;
+  at96.Directions = 513;
+  const std::uint64_t few = EstimateMemory(strips, at96).TotalBytes;
+  ASSERT_LT(few, many);
+  limits = AutomaticLimits();
+  limits.MemoryBudget = few + many; // BudgetShare 0.5: the estimate may use (few + many) / 2
+  c = ChooseAutomaticSettings(strips, limits);
+  EXPECT_EQ(c.Limit, "memory budget") << c.Describe();
+  EXPECT_EQ(c.Settings.RaysPerSide, 96);
+  EXPECT_EQ(c.Settings.Directions, 513u);
+
+  limits = AutomaticLimits();
+  limits.MemoryBudget = std::uint64_t(8) << 20; // 8 MiB: only the minimum fits
+  c = ChooseAutomaticSettings(strips, limits);
+  EXPECT_EQ(c.Limit, "memory budget") << c.Describe();
+  EXPECT_EQ(c.Settings.RaysPerSide, 32);
+  EXPECT_EQ(c.Settings.Directions, 513u);
+
+  // The negative: big faces ask for nothing beyond the preferred lines.
+  c = ChooseAutomaticSettings(Strips(false));
+  EXPECT_EQ(c.Limit, "the preferred minimum") << c.Describe();
+  EXPECT_EQ(c.Settings.RaysPerSide, 64);
+  EXPECT_EQ(c.Settings.Directions, 2049u);
+
+  EXPECT_THROW(ChooseAutomaticSettings(TriangleScene()), std::invalid_argument);
+}
+
+TEST(VLFAutomaticSettings, GivenValuesAreKept)
+{
+  LightFieldSettings given;
+  given.Directions = 0;
+  given.RaysPerSide = 40;
+  given.TilesPerSide = 0;
+  AutomaticChoice c = ResolveAutomaticSettings(Strips(true), given);
+  EXPECT_EQ(c.Limit, "given");
+  EXPECT_EQ(c.Settings.RaysPerSide, 40);
+  EXPECT_EQ(c.Settings.Directions, 513u);
+  EXPECT_EQ(c.Settings.TilesPerSide, 5);
+  given.Directions = 2049;
+  given.RaysPerSide = 0;
+  given.TilesPerSide = 0;
+  c = ResolveAutomaticSettings(Strips(true), given);
+  EXPECT_EQ(c.Settings.Directions, 2049u);
+  EXPECT_GT(c.Settings.RaysPerSide, 32);
+  EXPECT_EQ(c.Settings.TilesPerSide, c.Settings.RaysPerSide / 8);
+}
