@@ -526,7 +526,7 @@ int Propagate(const std::vector<std::string>& args)
       const std::uint64_t reduced = distributed ? vlf::ReducedBytesPerIteration(*field) : 0;
       std::cout << "MPI: " << reducer.Size() << " ranks, " << reduced << " bytes ("
                 << FormatBytes(reduced) << ") summed per rank and iteration, "
-                << reducer.BytesContributed()
+                << controllerReducer.BytesContributed()
                 << " bytes sent by rank 0 in all (with mirrors also the mirrored radiance handed "
                    "to the owners); rank 0 holds "
                 << field->AllocatedBytes() << " bytes (" << FormatBytes(field->AllocatedBytes())
