@@ -246,7 +246,8 @@ std::optional<ReliefShade> ShadeReliefRay(const HeightField& hf, const ReliefFra
     if (lighting.InterReflection == ReliefInterReflection::MultiBounce)
     {
       const double visibleShare = 1.0 - occludedShare;
-      seenIrradiance *= visibleShare / (1.0 - albedo * occludedShare);
+      // Bounded away from 0: a white relief that hides the whole hemisphere (V = 0) stays 0.
+      seenIrradiance *= visibleShare / glm::max(1.0 - albedo * occludedShare, glm::dvec3(1e-9));
     }
     shade.InterReflected = occludedShare * albedo * seenIrradiance;
     shade.Indirect += shade.InterReflected;
