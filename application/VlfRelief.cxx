@@ -283,6 +283,8 @@ std::vector<FieldRelief> SetUpFieldReliefs(const vlf::LightField& field, const E
             vlf::ProjectIncidentSH9(vlf::IncidentRadianceSamples(field, p, incident));
         }
       });
+    // The light the relief reflects onto itself (ReliefLighting::Albedo).
+    relief.Lighting.Albedo = glm::dvec3(material.Diffuse);
     // Direct: the field's emitters, the scene's occlusion by Embree.
     lighting.Emitters = EmitterSamples(scene, std::max(1, options.EmitterSamplesPerSide));
     const EmbreeScene* occluders = &embree;

@@ -68,7 +68,8 @@ struct ReliefRay
 //  - one-light: one light where the lamp is, of the lamp's power, with the relief's
 //    self-shadowing and the scene's occlusion, no indirect light (a hand-placed VTK light with
 //    shadows);
-//  - field-unoccluded: the method without the relief's occlusion of its indirect light, and
+//  - field-unoccluded: the method without the relief's occlusion of its indirect light,
+//    field-no-bounce / -one-bounce / -multi-bounce: the relief's inter-reflection models, and
 //    flat-normal: the field's lighting at the wall's normal instead of the relief's (both shown,
 //    not required to lose by the margin).
 struct InProcess
@@ -251,6 +252,24 @@ InProcess RenderInProcess(
       glm::vec3 radiance;
       return ReliefRadiance(unoccluded, r.Origin, r.Direction, radiance) ? radiance : flatWall(r);
     });
+  // The relief's inter-reflection, each model (the field row is the default one): none (the
+  // occluded directions black, as before it was modelled), one bounce and the multi-bounce series.
+  const std::pair<const char*, ReliefInterReflection> models[] = {
+    { "field-no-bounce", ReliefInterReflection::None },
+    { "field-one-bounce", ReliefInterReflection::OneBounce },
+    { "field-multi-bounce", ReliefInterReflection::MultiBounce }
+  };
+  for (const auto& [name, model] : models)
+  {
+    FieldRelief variant = relief;
+    variant.Lighting.InterReflection = model;
+    render(name, false,
+      [&](const ReliefRay& r)
+      {
+        glm::vec3 radiance;
+        return ReliefRadiance(variant, r.Origin, r.Direction, radiance) ? radiance : flatWall(r);
+      });
+  }
   render("flat-normal", false,
     [&](const ReliefRay& r)
     {

@@ -170,6 +170,7 @@ std::optional<ReliefShade> ShadeReliefRay(const HeightField& hf, const ReliefFra
   shade.Point = frame.Point(u, v, d);
   shade.Normal = normal == ReliefNormal::Perturbed ? ReliefNormalAt(hf, frame, u, v) : frame.Normal;
   shade.Indirect = ProbeIrradiance(lighting, u, v, shade.Normal);
+  double occludedShare = 0.0;
   if (normal == ReliefNormal::Perturbed && lighting.OcclusionDirections > 0)
   {
     // The share of the SH radiance (luminance, cosine-distributed) that reaches the hit past the
@@ -178,6 +179,7 @@ std::optional<ReliefShade> ShadeReliefRay(const HeightField& hf, const ReliefFra
     const glm::dvec3 x = glm::normalize(glm::cross(t, shade.Normal));
     const glm::dvec3 y = glm::cross(shade.Normal, x);
     double all = 0.0, visible = 0.0;
+    int seen = 0; // directions that leave the relief (unweighted: the cosine-weighted share)
     for (const glm::dvec3& c : CosineDirections(lighting.OcclusionDirections))
     {
       const glm::dvec3 w = c.x * x + c.y * y + c.z * shade.Normal;
@@ -188,11 +190,17 @@ std::optional<ReliefShade> ShadeReliefRay(const HeightField& hf, const ReliefFra
         Visible(hf, glm::dvec3(u, v, std::max(0.0, hit->point.z)), frame.ToTexture(w), 1e-6))
       {
         visible += weight;
+        ++seen;
       }
     }
     shade.IndirectVisible = all > 0.0 ? visible / all : 1.0;
     shade.Indirect *= shade.IndirectVisible;
+    occludedShare = 1.0 - static_cast<double>(seen) / lighting.OcclusionDirections;
   }
+  const bool bounce = occludedShare > 0.0 &&
+    lighting.InterReflection != ReliefInterReflection::None &&
+    (lighting.Albedo.x > 0.0 || lighting.Albedo.y > 0.0 || lighting.Albedo.z > 0.0);
+  glm::dvec3 flatDirect(0.0); // the emitters' irradiance on the flat wall, for the bounce
   const double w = frame.WorldDepth();
   for (const ReliefEmitterSample& e : lighting.Emitters)
   {
@@ -206,13 +214,15 @@ std::optional<ReliefShade> ShadeReliefRay(const HeightField& hf, const ReliefFra
     const double cosine = glm::dot(shade.Normal, l);
     const double cosineEmitter = -glm::dot(e.Normal, l);
     const double rise = glm::dot(frame.Normal, l); // the light must be above the macro plane
-    if (!(cosine > 0.0 && cosineEmitter > 0.0 && rise > 0.0))
+    if (!(cosineEmitter > 0.0 && rise > 0.0))
     {
       continue;
     }
     // The relief's own shadow: the march toward the light must leave the top of the height field.
-    if (normal == ReliefNormal::Perturbed &&
-      !Visible(hf, glm::dvec3(u, v, d), frame.ToTexture(l), 1e-6))
+    const bool lit = cosine > 0.0 &&
+      (normal != ReliefNormal::Perturbed ||
+        Visible(hf, glm::dvec3(u, v, d), frame.ToTexture(l), 1e-6));
+    if (!lit && !bounce)
     {
       continue;
     }
@@ -222,7 +232,25 @@ std::optional<ReliefShade> ShadeReliefRay(const HeightField& hf, const ReliefFra
     {
       continue;
     }
-    shade.Direct += e.RadianceArea * (cosine * cosineEmitter / r2);
+    if (lit)
+    {
+      shade.Direct += e.RadianceArea * (cosine * cosineEmitter / r2);
+    }
+    flatDirect += e.RadianceArea * (rise * cosineEmitter / r2);
+  }
+  if (bounce)
+  {
+    // What an occluded direction sees: the relief, lit about as the flat wall is (see the header).
+    const glm::dvec3 albedo = glm::clamp(lighting.Albedo, 0.0, 1.0);
+    glm::dvec3 seenIrradiance = ProbeIrradiance(lighting, u, v, frame.Normal) + flatDirect;
+    if (lighting.InterReflection == ReliefInterReflection::MultiBounce)
+    {
+      const double visibleShare = 1.0 - occludedShare;
+      // Bounded away from 0: a white relief that hides the whole hemisphere (V = 0) stays 0.
+      seenIrradiance *= visibleShare / glm::max(1.0 - albedo * occludedShare, glm::dvec3(1e-9));
+    }
+    shade.InterReflected = occludedShare * albedo * seenIrradiance;
+    shade.Indirect += shade.InterReflected;
   }
   return shade;
 }

@@ -53,6 +53,14 @@ struct ReliefEmitterSample
   glm::dvec3 RadianceArea{ 0.0 };
 };
 
+/** How the light the relief reflects onto itself is modelled (see ReliefLighting::Albedo). */
+enum class ReliefInterReflection
+{
+  None,       // an occluded direction brings nothing (the relief's surface as black)
+  OneBounce,  // it brings albedo E / pi, E the flat wall's irradiance at (u, v)
+  MultiBounce // the same, the seen relief itself occluded and inter-reflecting (geometric series)
+};
+
 struct ReliefLighting
 {
   // SH9 radiance probes on a ProbesU x ProbesV grid over the texture square [0, 1]^2 (probe (a, b)
@@ -66,6 +74,18 @@ struct ReliefLighting
   // normal, each marched through the height field (a valley sees less of the room than a crest).
   // 0 leaves the indirect light unoccluded (the SH irradiance alone).
   int OcclusionDirections = 32;
+  // The relief's own inter-reflection: an occluded direction sees the relief itself, a diffuse
+  // surface of this albedo, not black. With OneBounce its radiance is Albedo E / pi, E the flat
+  // wall's irradiance at (u, v) (the probes' SH irradiance at the macro normal plus the emitters'
+  // unshadowed by the relief); with MultiBounce the seen relief is taken to be occluded like the
+  // shaded point (visible share V, over the cosine-distributed directions) and to inter-reflect
+  // in turn: its irradiance is V E / (1 - Albedo (1 - V)), the geometric series of the
+  // ambient-occlusion multi-bounce (Stewart and Langer, "Towards accurate recovery of shape from
+  // shading under diffuse lighting"; fitted by Jimenez et al., "Practical realtime strategies for
+  // accurate indirect occlusion"). Either adds (1 - V) Albedo E_seen to the indirect irradiance.
+  // Needs OcclusionDirections > 0; a zero Albedo (the default here) means none.
+  glm::dvec3 Albedo{ 0.0 };
+  ReliefInterReflection InterReflection = ReliefInterReflection::MultiBounce;
   // Optional: whether the segment from a point on the macro surface to an emitter sample is
   // free of the rest of the scene (true when not given).
   std::function<bool(const glm::dvec3& from, const glm::dvec3& to)> SceneVisible;
@@ -82,8 +102,10 @@ struct ReliefShade
   glm::dvec3 Texture{ 0.0 };    // (u, v, d) of the hit
   glm::dvec3 Point{ 0.0 };      // world
   glm::dvec3 Normal{ 0.0 };     // the shading normal (perturbed or flat)
-  glm::dvec3 Indirect{ 0.0 };   // irradiance from the SH probes at Normal, clamped at 0, occluded
-  double IndirectVisible = 1.0; // the visible share applied to it
+  glm::dvec3 Indirect{ 0.0 };   // irradiance from the SH probes at Normal, clamped at 0, occluded,
+                                // plus the inter-reflected light
+  double IndirectVisible = 1.0; // the visible share applied to it (radiance-weighted)
+  glm::dvec3 InterReflected{ 0.0 }; // the relief's own reflected light, included in Indirect
   glm::dvec3 Direct{ 0.0 };     // irradiance from the emitter samples, relief-shadowed
 };
 

@@ -105,6 +105,8 @@ int main(int argc, char* argv[])
     ray.TFar = static_cast<float>(glm::length(to - from) * 0.9999);
     return !embree.Occluded(ray);
   };
+  // The light the relief reflects onto itself: its own diffuse albedo.
+  lighting.Albedo = glm::dvec3(scene.MaterialOf(wall[0]).Diffuse);
 
   // 4. Look straight at the wall from the room and shade every pixel: Kd / pi times the
   //    irradiance (SH9 at the perturbed normal plus the self-shadowed emitters).

@@ -35,8 +35,9 @@ if (NOT cli_stdout MATCHES "cost: a relief pixel lit by the field / by one light
 endif ()
 file(STRINGS "${WORK}/rows.csv" _rows)
 list(LENGTH _rows _count)
-if (NOT _count EQUAL 6)
-  message(FATAL_ERROR "expected a header and 5 rows in rows.csv, got ${_count}: ${_rows}")
+if (NOT _count EQUAL 9)
+  message(FATAL_ERROR "expected a header and 8 rows in rows.csv (field, flat-wall, one-light, "
+    "field-unoccluded, three inter-reflection models, flat-normal), got ${_count}: ${_rows}")
 endif ()
 # mean_relative_error (4th column) of field and one-light, in thousandths.
 foreach (_row IN LISTS _rows)
