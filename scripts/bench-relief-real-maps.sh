@@ -24,7 +24,11 @@ for m in "${maps[@]}"; do
   fi
   list="${list:+$list,}$data/$m"
 done
-out="${1:?output file, e.g. docs/measurements/relief-real-maps/relief-real-maps.txt}"
+out="${1:-}"
+if [ -z "$out" ]; then
+  echo "usage: $0 OUT.txt [bench relief options], e.g. docs/measurements/relief-real-maps/relief-real-maps.txt" >&2
+  exit 2
+fi
 shift
 prefix="${out%.txt}"
 mkdir -p "$(dirname "$prefix")"
