@@ -132,6 +132,35 @@ int vtkLightFieldGatherFilter::RequestUpdateExtent(
 //------------------------------------------------------------------------------
 namespace
 {
+// The shadows' indirect term where the caster's shadow falls
+// (mesolight::vlf::ObjectShadows::SetAmbient, EstimateShadowIndirect), from the points of
+// `caster` (in the unit sphere: all the estimate reads of it), into `output`'s field data. Under
+// MPI every rank must pass the whole caster, not its piece, so that every rank draws alike.
+void AttachShadowAmbient(const mesolight::vlf::LightField& field,
+  const std::vector<mesolight::vlf::ShadowEmitter>& significant, vtkPolyData* caster,
+  vtkPolyData* output)
+{
+  namespace vlf = mesolight::vlf;
+  vlf::ObjectMesh unit;
+  unit.Positions.reserve(static_cast<std::size_t>(caster->GetNumberOfPoints()));
+  for (vtkIdType i = 0; i < caster->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    caster->GetPoint(i, p);
+    unit.Positions.push_back(vlf::ToUnit(field,
+      glm::vec3(static_cast<float>(p[0]), static_cast<float>(p[1]), static_cast<float>(p[2]))));
+  }
+  vtkNew<vtkDoubleArray> ambient;
+  ambient->SetName(vtkLightFieldGatherFilter::GetAmbientName());
+  const glm::vec3 a = vlf::EstimateShadowIndirect(field, significant, unit);
+  for (const float v : { a.x, a.y, a.z })
+  {
+    ambient->InsertNextValue(static_cast<double>(v));
+  }
+  output->GetFieldData()->RemoveArray(vtkLightFieldGatherFilter::GetAmbientName());
+  output->GetFieldData()->AddArray(ambient);
+}
+
 // What the Light Field representation needs of the field to draw this surface's shadow on the
 // scene and to expose it like the scene (see the header).
 void AttachShadowCasterData(const mesolight::vlf::LightField& field, vtkPolyData* output)
@@ -165,26 +194,7 @@ void AttachShadowCasterData(const mesolight::vlf::LightField& field, vtkPolyData
     average = 0.0; // no atlas: the representation falls back to its Exposure alone
   }
   logAverage->InsertNextValue(average);
-  // The shadows' indirect term where this surface's shadow falls
-  // (mesolight::vlf::ObjectShadows::SetAmbient, EstimateShadowIndirect): its points in the unit
-  // sphere are all the estimate reads of it.
-  vlf::ObjectMesh unit;
-  unit.Positions.reserve(static_cast<std::size_t>(output->GetNumberOfPoints()));
-  for (vtkIdType i = 0; i < output->GetNumberOfPoints(); ++i)
-  {
-    double p[3];
-    output->GetPoint(i, p);
-    unit.Positions.push_back(vlf::ToUnit(field,
-      glm::vec3(static_cast<float>(p[0]), static_cast<float>(p[1]), static_cast<float>(p[2]))));
-  }
-  vtkNew<vtkDoubleArray> ambient;
-  ambient->SetName(vtkLightFieldGatherFilter::GetAmbientName());
-  const glm::vec3 a = vlf::EstimateShadowIndirect(field, significant, unit);
-  for (const float v : { a.x, a.y, a.z })
-  {
-    ambient->InsertNextValue(static_cast<double>(v));
-  }
-  output->GetFieldData()->AddArray(ambient);
+  AttachShadowAmbient(field, significant, output, output);
   output->GetFieldData()->AddArray(emitters);
   output->GetFieldData()->AddArray(normalisation);
   output->GetFieldData()->AddArray(logAverage);
@@ -500,6 +510,8 @@ int vtkLightFieldGatherFilter::GatherDistributed(
   }
   append->Update();
   vtkPolyData* whole = append->GetOutput();
+  AttachShadowAmbient(
+    field, vlf::SignificantEmitters(field, vlf::ShadowSettings()), whole, output);
   vtkDataArray* normals = whole->GetPointData()->GetNormals();
   vlf::ObjectMesh mesh;
   vtkTriangleSceneConverter::ToTriangleMesh(whole, mesh);
