@@ -9,35 +9,9 @@
 # --snapshot-every 2 a run killed after iteration 3 resumes from iteration 2.
 include("${CMAKE_CURRENT_LIST_DIR}/RunTool.cmake")
 cli_fresh_work()
-set(ENV{OMPI_ALLOW_RUN_AS_ROOT} 1)
-set(ENV{OMPI_ALLOW_RUN_AS_ROOT_CONFIRM} 1)
-set(ENV{OMPI_MCA_rmaps_base_oversubscribe} 1)
+include("${CMAKE_CURRENT_LIST_DIR}/MpiRun.cmake")
 set(ENV{VTK_SMP_MAX_THREADS} 1) # up to 3 ranks on 2 cores: one thread each
 set(small --directions 129 --rays 16)
-
-function (mpi_run expect_success)
-  execute_process(COMMAND "${MPIEXEC}" ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out
-    ERROR_VARIABLE err TIMEOUT 60)
-  if (rc MATCHES "timeout")
-    message(FATAL_ERROR "'${ARGN}' hung (${rc}): ${out} ${err}")
-  elseif (expect_success AND NOT rc EQUAL 0)
-    message(FATAL_ERROR "'${ARGN}' failed (rc ${rc}): ${out} ${err}")
-  elseif (NOT expect_success AND rc EQUAL 0)
-    message(FATAL_ERROR "'${ARGN}' was accepted: ${out} ${err}")
-  endif ()
-  set(last_output "${out}${err}" PARENT_SCOPE)
-endfunction ()
-
-function (same_field a b expect_same)
-  execute_process(COMMAND "${COMPARE}" compare "${a}" "${b}" RESULT_VARIABLE rc
-    OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if (expect_same AND NOT rc EQUAL 0)
-    message(FATAL_ERROR "${a} and ${b} differ: ${out} ${err}")
-  elseif (NOT expect_same AND rc EQUAL 0)
-    message(FATAL_ERROR "${a} and ${b} compare equal, which they are not: ${out}")
-  endif ()
-  message(STATUS "${a} against ${b}: ${out}")
-endfunction ()
 
 # Killed after iteration 2: the job fails, mpiexec names the killed process, FIELD holds
 # iteration 2 (the last line printed is iteration 2's, nothing of iteration 3 reached the file).

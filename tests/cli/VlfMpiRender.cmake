@@ -6,9 +6,7 @@
 # about 0.1-17); the render of a field one iteration short must differ (the comparison can fail).
 include("${CMAKE_CURRENT_LIST_DIR}/RunTool.cmake")
 cli_fresh_work()
-set(ENV{OMPI_ALLOW_RUN_AS_ROOT} 1)
-set(ENV{OMPI_ALLOW_RUN_AS_ROOT_CONFIRM} 1)
-set(ENV{OMPI_MCA_rmaps_base_oversubscribe} 1)
+include("${CMAKE_CURRENT_LIST_DIR}/MpiRun.cmake")
 set(obj "${PROJECT_SOURCE_DIR}/examples/data/cornell-box-mirror.obj")
 set(small --directions 129 --rays 16)
 set(view --size 96x96)
