@@ -120,6 +120,22 @@ TEST(ReliefShadows, NoShadowWhenSelfShadowingIsOff)
 // hit and then the light ray from it through the bilinear height field (HeightFieldTracer).
 namespace
 {
+// % of the covered pixels that face the light and are shadowed by the relief: what a render
+// without self-shadowing gets wrong.
+double TrulyShadowedShare(const ReliefReference& reference)
+{
+  long long covered = 0, shadowed = 0;
+  for (size_t p = 0; p < reference.State.size(); ++p)
+  {
+    if (reference.IsCovered(p))
+    {
+      ++covered;
+      shadowed += reference.FacesLight[p] && !reference.Unshadowed[p] ? 1 : 0;
+    }
+  }
+  return covered > 0 ? 100.0 * double(shadowed) / covered : 0.0;
+}
+
 double ShadowMismatch(const char* method, int linearSteps, bool shadows, double* shadowedShare)
 {
   ReliefSceneOptions o;
@@ -143,16 +159,7 @@ double ShadowMismatch(const char* method, int linearSteps, bool shadows, double*
   ReliefReference reference;
   EXPECT_TRUE(ComputeReliefReference(MakeReliefReferenceInput(scene, o), reference, error))
     << error;
-  long long covered = 0, shadowed = 0;
-  for (size_t p = 0; p < reference.State.size(); ++p)
-  {
-    if (reference.IsCovered(p))
-    {
-      ++covered;
-      shadowed += reference.FacesLight[p] && !reference.Unshadowed[p] ? 1 : 0;
-    }
-  }
-  *shadowedShare = covered > 0 ? 100.0 * double(shadowed) / covered : 0.0;
+  *shadowedShare = TrulyShadowedShare(reference);
   const double mismatch = CompareLightVisibility(reference, visibility);
   std::cout << "[shadows " << method << " " << linearSteps << (shadows ? "" : " off")
             << "] mismatch " << mismatch << "% of covered pixels (" << *shadowedShare
@@ -228,16 +235,7 @@ double PositionalShadowMismatch(const PositionalCase& c, double* shadowedShare)
   }
   ReliefReference reference;
   EXPECT_TRUE(ComputeReliefReference(input, reference, error)) << error;
-  long long covered = 0, shadowed = 0;
-  for (size_t p = 0; p < reference.State.size(); ++p)
-  {
-    if (reference.IsCovered(p))
-    {
-      ++covered;
-      shadowed += reference.FacesLight[p] && !reference.Unshadowed[p] ? 1 : 0;
-    }
-  }
-  *shadowedShare = covered > 0 ? 100.0 * double(shadowed) / covered : 0.0;
+  *shadowedShare = TrulyShadowedShare(reference);
   const double mismatch = CompareLightVisibility(reference, visibility);
   std::cout << "[positional shadows cone " << c.ConeAngle << (c.Shadows ? "" : " off")
             << (c.DirectionalReference ? " directional reference" : "") << "] mismatch "
