@@ -161,6 +161,34 @@ void AttachShadowAmbient(const mesolight::vlf::LightField& field,
   output->GetFieldData()->AddArray(ambient);
 }
 
+// The surface's point normals: the input's, else computed without splitting (the points stay
+// the input's) by `filter`, which holds them; null when they cannot be computed.
+vtkDataArray* PointNormals(vtkPolyData* input, vtkPolyDataNormals* filter, bool& computed)
+{
+  computed = false;
+  vtkDataArray* normals = input->GetPointData()->GetNormals();
+  if (normals && normals->GetNumberOfComponents() == 3 &&
+    normals->GetNumberOfTuples() == input->GetNumberOfPoints())
+  {
+    return normals;
+  }
+  vtkNew<vtkPolyData> copy;
+  copy->CopyStructure(input);
+  filter->SetInputData(copy);
+  filter->SplittingOff();
+  filter->ConsistencyOff();
+  filter->ComputePointNormalsOn();
+  filter->ComputeCellNormalsOff();
+  filter->Update();
+  normals = filter->GetOutput()->GetPointData()->GetNormals();
+  if (!normals || normals->GetNumberOfTuples() != input->GetNumberOfPoints())
+  {
+    return nullptr;
+  }
+  computed = true;
+  return normals;
+}
+
 // What the Light Field representation needs of the field to draw this surface's shadow on the
 // scene and to expose it like the scene (see the header).
 void AttachShadowCasterData(const mesolight::vlf::LightField& field, vtkPolyData* output)
@@ -339,26 +367,16 @@ int vtkLightFieldGatherFilter::RequestData(
     return 0;
   }
 
-  // Normals: the input's, else computed without splitting (the points stay the input's).
-  vtkDataArray* normals = input->GetPointData()->GetNormals();
   vtkNew<vtkPolyDataNormals> normalFilter;
-  if (!normals || normals->GetNumberOfComponents() != 3 ||
-    normals->GetNumberOfTuples() != input->GetNumberOfPoints())
+  bool computed = false;
+  vtkDataArray* normals = PointNormals(input, normalFilter, computed);
+  if (!normals)
   {
-    vtkNew<vtkPolyData> copy;
-    copy->CopyStructure(input);
-    normalFilter->SetInputData(copy);
-    normalFilter->SplittingOff();
-    normalFilter->ConsistencyOff();
-    normalFilter->ComputePointNormalsOn();
-    normalFilter->ComputeCellNormalsOff();
-    normalFilter->Update();
-    normals = normalFilter->GetOutput()->GetPointData()->GetNormals();
-    if (!normals || normals->GetNumberOfTuples() != input->GetNumberOfPoints())
-    {
-      vtkErrorMacro("Light Field Gather could not compute normals for the surface.");
-      return 0;
-    }
+    vtkErrorMacro("Light Field Gather could not compute normals for the surface.");
+    return 0;
+  }
+  if (computed)
+  {
     output->GetPointData()->SetNormals(normals); // what the irradiance was gathered with
   }
 
@@ -445,35 +463,23 @@ int vtkLightFieldGatherFilter::GatherDistributed(
   bool usable = true;
   if (input->GetNumberOfPoints() > 0)
   {
-    vtkDataArray* normals = input->GetPointData()->GetNormals();
     vtkNew<vtkPolyDataNormals> normalFilter;
+    bool computed = false;
+    vtkDataArray* normals = nullptr;
     if (input->GetNumberOfPolys() == 0)
     {
       vtkErrorMacro("Light Field Gather needs a surface with polygons (the input has none): apply "
                     "Extract Surface or Triangulate first.");
       usable = false;
     }
-    else if (!normals || normals->GetNumberOfComponents() != 3 ||
-      normals->GetNumberOfTuples() != input->GetNumberOfPoints())
+    else if (!(normals = PointNormals(input, normalFilter, computed)))
     {
-      vtkNew<vtkPolyData> copy;
-      copy->CopyStructure(input);
-      normalFilter->SetInputData(copy);
-      normalFilter->SplittingOff();
-      normalFilter->ConsistencyOff();
-      normalFilter->ComputePointNormalsOn();
-      normalFilter->ComputeCellNormalsOff();
-      normalFilter->Update();
-      normals = normalFilter->GetOutput()->GetPointData()->GetNormals();
-      if (!normals || normals->GetNumberOfTuples() != input->GetNumberOfPoints())
-      {
-        vtkErrorMacro("Light Field Gather could not compute normals for the surface.");
-        usable = false;
-      }
-      else
-      {
-        output->GetPointData()->SetNormals(normals); // what the irradiance was gathered with
-      }
+      vtkErrorMacro("Light Field Gather could not compute normals for the surface.");
+      usable = false;
+    }
+    else if (computed)
+    {
+      output->GetPointData()->SetNormals(normals); // what the irradiance was gathered with
     }
     if (usable)
     {
