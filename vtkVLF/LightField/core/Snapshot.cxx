@@ -714,7 +714,9 @@ void ReadDenseMaps(Reader& r, const LightField& field, Subfield& f, std::size_t 
     if (q < stored)
     {
       f.Radiance[q] = radiance[cells[q].second];
-      f.UnshotSpecular[q] = unshot[cells[q].second];
+      // (No unshot maps in a file whose materials say no mirror: a corrupt file can still
+      // number mirror maps; found by fuzz/snapshot.cxx.)
+      f.UnshotSpecular[q] = unshot.empty() ? glm::vec3(0.0f) : unshot[cells[q].second];
     }
   }
   f.Radiance.MakeCompact();
