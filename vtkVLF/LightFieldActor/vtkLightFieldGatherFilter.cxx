@@ -161,6 +161,32 @@ void AttachShadowAmbient(const mesolight::vlf::LightField& field,
   output->GetFieldData()->AddArray(ambient);
 }
 
+// The object's reflectance, each channel clamped to [0, 1].
+glm::vec3 ClampedReflectance(const double reflectance[3])
+{
+  glm::vec3 diffuse;
+  for (int c = 0; c < 3; ++c)
+  {
+    diffuse[c] = static_cast<float>(std::min(1.0, std::max(0.0, reflectance[c])));
+  }
+  return diffuse;
+}
+
+// The gather's settings from the filter's (serial and distributed paths alike).
+mesolight::vlf::GatherSettings MakeGatherSettings(vtkAlgorithm* filter, int directionSet)
+{
+  namespace vlf = mesolight::vlf;
+  vlf::GatherSettings settings;
+  settings.UseCache = false;
+  settings.Directions = directionSet == vtkLightFieldGatherFilter::HALF_DIRECTIONS
+    ? vlf::DirectionSampling::Half
+    : directionSet == vtkLightFieldGatherFilter::IMPORTANCE_DIRECTIONS
+    ? vlf::DirectionSampling::Importance
+    : vlf::DirectionSampling::All;
+  settings.Progress = mesolight::AlgorithmProgress(filter);
+  return settings;
+}
+
 // The surface's point normals: the input's, else computed without splitting (the points stay
 // the input's) by `filter`, which holds them; null when they cannot be computed.
 vtkDataArray* PointNormals(vtkPolyData* input, vtkPolyDataNormals* filter, bool& computed)
@@ -393,17 +419,9 @@ int vtkLightFieldGatherFilter::RequestData(
     normals->GetTuple(i, m);
     mesh.Normals[i] = glm::vec3(m[0], m[1], m[2]);
   }
-  for (int c = 0; c < 3; ++c)
-  {
-    mesh.Diffuse[c] = static_cast<float>(std::min(1.0, std::max(0.0, this->Reflectance[c])));
-  }
+  mesh.Diffuse = ClampedReflectance(this->Reflectance);
 
-  vlf::GatherSettings settings;
-  settings.UseCache = false;
-  settings.Directions = this->DirectionSet == HALF_DIRECTIONS ? vlf::DirectionSampling::Half
-    : this->DirectionSet == IMPORTANCE_DIRECTIONS             ? vlf::DirectionSampling::Importance
-                                                              : vlf::DirectionSampling::All;
-  settings.Progress = AlgorithmProgress(this);
+  const vlf::GatherSettings settings = MakeGatherSettings(this, this->DirectionSet);
   try
   {
     vlf::ObjectGatherer gatherer(*field);
@@ -529,16 +547,8 @@ int vtkLightFieldGatherFilter::GatherDistributed(
     normals->GetTuple(i, m);
     mesh.Normals[i] = glm::vec3(m[0], m[1], m[2]);
   }
-  for (int c = 0; c < 3; ++c)
-  {
-    mesh.Diffuse[c] = static_cast<float>(std::min(1.0, std::max(0.0, this->Reflectance[c])));
-  }
-  vlf::GatherSettings settings;
-  settings.UseCache = false;
-  settings.Directions = this->DirectionSet == HALF_DIRECTIONS ? vlf::DirectionSampling::Half
-    : this->DirectionSet == IMPORTANCE_DIRECTIONS             ? vlf::DirectionSampling::Importance
-                                                              : vlf::DirectionSampling::All;
-  settings.Progress = AlgorithmProgress(this);
+  mesh.Diffuse = ClampedReflectance(this->Reflectance);
+  const vlf::GatherSettings settings = MakeGatherSettings(this, this->DirectionSet);
   const vtkIdType n = usable ? input->GetNumberOfPoints() : 0;
   try
   {
