@@ -21,7 +21,7 @@ vtkStandardNewMacro(vtkReliefMapper);
 //------------------------------------------------------------------------------
 vtkReliefMapper::vtkReliefMapper()
 {
-  this->SetNumberOfInputPorts(3);
+  this->SetNumberOfInputPorts(4);
   this->Shading->SetMessageOwner(this);
   this->GetReliefProperty(); // the default settings, reporting to this mapper
   // Our own texture-coordinate attribute: VTK uploads "tcoord" only when the actor has a texture.
@@ -35,7 +35,7 @@ vtkReliefMapper::~vtkReliefMapper() = default;
 //------------------------------------------------------------------------------
 int vtkReliefMapper::FillInputPortInformation(int port, vtkInformation* info)
 {
-  if (port == 1 || port == 2)
+  if (port == 1 || port == 2 || port == 3)
   {
     info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkImageData");
     info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
@@ -97,6 +97,28 @@ vtkImageData* vtkReliefMapper::GetLightSet()
     return nullptr;
   }
   return vtkImageData::SafeDownCast(this->GetExecutive()->GetInputData(2, 0));
+}
+
+//------------------------------------------------------------------------------
+void vtkReliefMapper::SetIrradianceProbesData(vtkImageData* probes)
+{
+  this->SetInputDataInternal(3, probes);
+}
+
+//------------------------------------------------------------------------------
+void vtkReliefMapper::SetIrradianceProbesConnection(vtkAlgorithmOutput* output)
+{
+  this->SetInputConnection(3, output);
+}
+
+//------------------------------------------------------------------------------
+vtkImageData* vtkReliefMapper::GetIrradianceProbes()
+{
+  if (this->GetNumberOfInputConnections(3) < 1)
+  {
+    return nullptr;
+  }
+  return vtkImageData::SafeDownCast(this->GetExecutive()->GetInputData(3, 0));
 }
 
 //------------------------------------------------------------------------------
@@ -217,5 +239,6 @@ void vtkReliefMapper::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   this->Shading->PrintForMapper(os, indent);
   os << indent << "LightSet: " << this->GetLightSet() << "\n";
+  os << indent << "IrradianceProbes: " << this->GetIrradianceProbes() << "\n";
   os << indent << "ReliefTexture: " << this->GetReliefTexture() << "\n";
 }

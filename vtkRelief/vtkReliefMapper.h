@@ -98,6 +98,22 @@ public:
   vtkImageData* GetLightSet();
   ///@}
 
+  ///@{
+  /**
+   * Irradiance probes: the incident light over the relief's texture as a grid of nine-coefficient
+   * spherical-harmonic radiance projections (Ramamoorthi and Hanrahan, "An efficient
+   * representation for irradiance environment maps"), e.g. a virtual light field's indirect
+   * light at the surface. A (9 x Nu) x Nv float image, 3 components (RGB): probe (i, j) stands at
+   * texture coordinates ((i + 0.5) / Nu, (j + 0.5) / Nv) and its coefficient k (k = l^2 + l + m,
+   * world coordinates, the real SH basis of FieldIrradiance.h) is pixel (9 i + k, j). The relief
+   * is lit by the probes' irradiance at its perturbed normal (interpolated bilinearly between
+   * probes), albedo / pi, besides the renderer's lights and the light set. Input port 3.
+   */
+  void SetIrradianceProbesData(vtkImageData* probes);
+  void SetIrradianceProbesConnection(vtkAlgorithmOutput* output);
+  vtkImageData* GetIrradianceProbes();
+  ///@}
+
   /** Includes the relief property's modification time. */
   vtkMTimeType GetMTime() override;
 
