@@ -226,6 +226,10 @@ ObjectMesh MakeCube(float side)
       mesh.Positions.push_back(centre + h * u + h * v);
       mesh.Positions.push_back(centre - h * u + h * v);
       mesh.Normals.insert(mesh.Normals.end(), 4, n);
+      // Each face maps the whole texture (u along u, v along v), so a relief tiles every face.
+      mesh.TextureCoordinates.insert(mesh.TextureCoordinates.end(),
+        { glm::vec2(0.0f, 0.0f), glm::vec2(1.0f, 0.0f), glm::vec2(1.0f, 1.0f),
+          glm::vec2(0.0f, 1.0f) });
       mesh.Triangles.emplace_back(first, first + 1, first + 2);
       mesh.Triangles.emplace_back(first, first + 2, first + 3);
     }

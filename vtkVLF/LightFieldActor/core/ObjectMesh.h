@@ -52,8 +52,9 @@ glm::mat4 WorldToUnitSphere(const LightField& field);
 ObjectMesh TransformMesh(const ObjectMesh& mesh, const glm::mat4& transform);
 
 // A UV sphere (rings x segments quads split into triangles, poles as fans) and an axis-aligned
-// cube (24 points, flat normals per face), both centred on the origin: the objects of tests,
-// benchmarks and `mesolight vlf render --object sphere|cube`.
+// cube (24 points, flat normals per face, each face mapping the texture square [0,1]^2), both
+// centred on the origin: the objects of tests, benchmarks and `mesolight vlf render --object
+// sphere|cube`.
 ObjectMesh MakeSphere(float radius, int rings, int segments);
 ObjectMesh MakeCube(float side);
 // A concave object: a C-shaped bracket (a profile of width x height, bars `thickness` thick, open
