@@ -71,6 +71,7 @@ void AddObjectOptions(CommandLine& cl)
     "0: gather at every vertex; N (2-128): read a precomputed irradiance volume of N points along "
     "the scene's longest side (built once, seconds; then about a microsecond per vertex)",
     "0");
+  AddObjectReliefOptions(cl);
 }
 
 void ApplyPlacement(vtkActor* object, const ObjectPlacement& p)
@@ -92,7 +93,8 @@ int SetUpObject(const CommandLine& cl, const char* command, vtkLightFieldActor* 
   {
     // Every object option: without an object they would be silently ignored.
     for (const char* option : { "--object-transform", "--object-colour", "--shading", "--shadows",
-           "--subdivision", "--gather-directions", "--gather-volume", "--path" })
+           "--subdivision", "--gather-directions", "--gather-volume", "--path", "--object-relief",
+           "--object-relief-depth-scale" })
     {
       if (cl.Has(option))
       {
@@ -184,6 +186,10 @@ int SetUpObject(const CommandLine& cl, const char* command, vtkLightFieldActor* 
       const mesolight::ObjSceneRead read = mesolight::ReadObjScene(name);
       mesh.Positions = read.Scene.Positions;
       mesh.Triangles.assign(read.Scene.Triangles.begin(), read.Scene.Triangles.end());
+      if (read.Scene.TextureCoordinates.size() == mesh.Positions.size())
+      {
+        mesh.TextureCoordinates = read.Scene.TextureCoordinates; // a relief is laid out by them
+      }
     }
     catch (const std::exception& e)
     {
@@ -201,6 +207,11 @@ int SetUpObject(const CommandLine& cl, const char* command, vtkLightFieldActor* 
   {
     std::cerr << command << ": --object '" << name << "': " << problem << "\n";
     return 1;
+  }
+  if (const int status =
+        CheckObjectRelief(cl, command, name, !mesh.TextureCoordinates.empty()))
+  {
+    return status;
   }
   if (cl.Has("--object-transform"))
   {
@@ -267,6 +278,11 @@ int SetUpObject(const CommandLine& cl, const char* command, vtkLightFieldActor* 
   scene->SetObjectGatherDirections(gatherDirections);
   scene->SetObjectIrradianceVolume(gatherVolume);
   renderer->AddActor(object.Actor);
+  if (const int status =
+        SetUpObjectRelief(cl, command, scene, renderer, object.Actor, object.Relief))
+  {
+    return status;
+  }
   renderer->ResetCameraClippingRange();
   object.Active = true;
   return 0;

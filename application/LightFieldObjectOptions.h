@@ -6,7 +6,8 @@
 #ifndef mesolight_LightFieldObjectOptions_h
 #define mesolight_LightFieldObjectOptions_h
 
-#include "ObjectPath.h" // ObjectPlacement, ParsePlacement, ReadPath
+#include "LightFieldObjectRelief.h" // ObjectRelief
+#include "ObjectPath.h"             // ObjectPlacement, ParsePlacement, ReadPath
 #include "vtkLightFieldObjectMapper.h"
 
 #include <vtkActor.h>
@@ -33,7 +34,7 @@ namespace mesolight
 class CommandLine;
 
 // --object, --object-transform, --object-colour, --shading, --shadows, --subdivision,
-// --gather-directions.
+// --gather-directions, --object-relief, --object-relief-depth-scale.
 void AddObjectOptions(CommandLine& cl);
 
 // The polydata of an object mesh (points, triangles, normals when it has them).
@@ -49,6 +50,7 @@ struct MovableObject
   bool Active = false;
   ObjectPlacement Placement; // the one --object-transform (or the default) gave
   double Step = 1.0;         // world units per key press (a twentieth of the field)
+  ObjectRelief Relief;       // --object-relief: the charts' relief actors draw the object
 };
 
 // 0 when set up (or no --object), else the command's exit code (the message is printed).

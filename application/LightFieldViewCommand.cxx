@@ -235,6 +235,10 @@ int Render(const std::vector<std::string>& args)
   {
     inputs.push_back(cl.Get("--object"));
   }
+  if (cl.Has("--object-relief"))
+  {
+    inputs.push_back(cl.Get("--object-relief"));
+  }
   const std::string problem = CheckOutputFile(out, inputs);
   if (!problem.empty())
   {
@@ -337,6 +341,14 @@ int Render(const std::vector<std::string>& args)
       std::cout << " (none: " << actor->GetShadowProblem() << ")";
     }
     std::cout << "\n";
+    if (object.Relief.Active)
+    {
+      vtkLightFieldObjectReliefProbes* probes = object.Relief.Probes;
+      std::cout << "object relief: " << cl.Get("--object-relief") << ", "
+                << probes->GetNumberOfCharts() << " charts, " << probes->GetNumberOfProbes()
+                << " probes (" << probes->GetProbesPerSide() << " a side), gathered in "
+                << 1000.0 * probes->GetLastSeconds() << " ms\n";
+    }
   }
   return 0;
 }
@@ -612,6 +624,10 @@ int View(const std::vector<std::string>& args)
   interactor->SetRenderWindow(window);
   vtkNew<ObjectDragStyle> style; // left drag on the object moves it; elsewhere the camera
   style->SetObject(object.Active ? static_cast<vtkActor*>(object.Actor) : nullptr);
+  for (vtkActor* chart : object.Relief.Actors)
+  {
+    style->AddStandIn(chart);
+  }
   interactor->SetInteractorStyle(style);
   vtkNew<vtkCallbackCommand> keys;
   keys->SetCallback(OnChar);
@@ -673,6 +689,16 @@ int View(const std::vector<std::string>& args)
                   : 0)
            << " points); frames without a move " << 1000.0 * still / std::max(1, frames - updates)
            << " ms\n";
+      if (object.Relief.Active)
+      {
+        const ObjectRelief& relief = object.Relief;
+        line << "relief probes: " << relief.Probes->GetNumberOfProbes() << " in "
+             << relief.Probes->GetNumberOfCharts() << " charts, regathered in " << relief.Moves
+             << " frames, per move " << 1000.0 * relief.ProbeSeconds / std::max(1, relief.Moves)
+             << " ms for "
+             << static_cast<double>(relief.GatheredProbes) / std::max(1, relief.Moves)
+             << " probes\n";
+      }
       std::cout << line.str();
     }
     std::cout << "rendered " << frames << " frames, mode "

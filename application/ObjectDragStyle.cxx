@@ -31,13 +31,21 @@ void ObjectDragStyle::SetObject(vtkActor* object)
   }
 }
 
+void ObjectDragStyle::AddStandIn(vtkActor* actor)
+{
+  if (actor)
+  {
+    this->Picker->AddPickList(actor);
+  }
+}
+
 void ObjectDragStyle::OnLeftButtonDown()
 {
   const int* position = this->Interactor->GetEventPosition();
   this->FindPokedRenderer(position[0], position[1]);
   if (this->Object && this->CurrentRenderer &&
     this->Picker->Pick(position[0], position[1], 0.0, this->CurrentRenderer) &&
-    this->Picker->GetActor() == this->Object)
+    this->Picker->GetActor() != nullptr) // the pick list holds the object and its stand-ins
   {
     this->Dragging = true;
     this->GrabFocus(this->EventCallbackCommand);

@@ -27,6 +27,8 @@ public:
 
   /** The actor a left drag may move (none: the plain trackball camera). */
   void SetObject(vtkActor* object);
+  /** An actor drawn in the object's place (a relief chart): a pick on it picks the object. */
+  void AddStandIn(vtkActor* actor);
 
   void OnLeftButtonDown() override;
   void OnLeftButtonUp() override;
