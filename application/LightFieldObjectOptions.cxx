@@ -208,8 +208,7 @@ int SetUpObject(const CommandLine& cl, const char* command, vtkLightFieldActor* 
     std::cerr << command << ": --object '" << name << "': " << problem << "\n";
     return 1;
   }
-  if (const int status =
-        CheckObjectRelief(cl, command, name, !mesh.TextureCoordinates.empty()))
+  if (const int status = CheckObjectRelief(cl, command, name, !mesh.TextureCoordinates.empty()))
   {
     return status;
   }

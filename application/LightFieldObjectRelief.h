@@ -33,7 +33,7 @@ void AddObjectReliefOptions(CommandLine& cl);
 struct ObjectRelief
 {
   vtkNew<vtkLightFieldObjectReliefProbes> Probes;
-  vtkSmartPointer<vtkImageData> Texture; // the baked relief texture of the depth image
+  vtkSmartPointer<vtkImageData> Texture;         // the baked relief texture of the depth image
   std::vector<vtkSmartPointer<vtkActor>> Actors; // one per chart
   vtkNew<vtkCallbackCommand> Sync;               // the renderer's StartEvent: probes, matrices
   vtkActor* Object = nullptr;                    // the movable object (owned by MovableObject)

@@ -695,8 +695,7 @@ int View(const std::vector<std::string>& args)
         line << "relief probes: " << relief.Probes->GetNumberOfProbes() << " in "
              << relief.Probes->GetNumberOfCharts() << " charts, regathered in " << relief.Moves
              << " frames, per move " << 1000.0 * relief.ProbeSeconds / std::max(1, relief.Moves)
-             << " ms for "
-             << static_cast<double>(relief.GatheredProbes) / std::max(1, relief.Moves)
+             << " ms for " << static_cast<double>(relief.GatheredProbes) / std::max(1, relief.Moves)
              << " probes\n";
       }
       std::cout << line.str();
