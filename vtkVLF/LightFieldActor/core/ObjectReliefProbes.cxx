@@ -3,6 +3,8 @@
 
 #include "FieldIrradiance.h"
 #include "LightField.h"
+#include "Lookup.h"
+#include "MathConstants.h"
 #include "ParallelFor.h"
 
 #include <glm/geometric.hpp>
@@ -284,14 +286,36 @@ std::vector<ObjectChart> SplitIntoCharts(const ObjectMesh& input, int probesU, i
 //------------------------------------------------------------------------------
 SH9 ProbeRadianceSH9(const LightField& field, const glm::vec3& p, const glm::vec3& n)
 {
-  IncidentOptions options;
-  options.Emission = false; // the emitters are the relief's lights
-  std::vector<IncidentSample> samples = IncidentRadianceSamples(field, p, options);
-  for (IncidentSample& s : samples)
+  // FieldIrradiance's samples (IncidentRadianceSamples: both senses of every direction, weights
+  // summing to 4 pi), but only the sense in front of the surface is looked up: the other is the
+  // object's own body. Half the lookups of the whole sphere.
+  const Lookup lookup(field);
+  const std::size_t count = field.SubfieldCount();
+  double total = 0.0;
+  for (std::size_t k = 0; k < count; ++k)
   {
-    if (glm::dot(s.Direction, n) < 0.0f)
+    total += 2.0 * field.GetSubfield(k).Weight;
+  }
+  const double scale = total > 0.0 ? 4.0 * Pi<double> / total : 0.0;
+  std::vector<IncidentSample> samples;
+  samples.reserve(count + 8);
+  for (std::size_t k = 0; k < count; ++k)
+  {
+    const Subfield& f = field.GetSubfield(k);
+    const float c = glm::dot(f.Direction, n);
+    for (const int sense : { 1, -1 })
     {
-      s.Radiance = glm::vec3(0.0f); // behind the surface: the object's own body
+      if (static_cast<float>(sense) * c < 0.0f)
+      {
+        continue; // behind the surface
+      }
+      IncidentSample s;
+      s.Direction = static_cast<float>(sense) * f.Direction;
+      s.SolidAngle = static_cast<float>(scale * f.Weight);
+      // The emitters' own radiance is left out: they are the relief's lights.
+      s.Radiance =
+        lookup.IncidentRadiance(k, sense, p, CellInterpolation::Bilinear, NoSurface, true, false);
+      samples.push_back(s);
     }
   }
   return ProjectIncidentSH9(samples);

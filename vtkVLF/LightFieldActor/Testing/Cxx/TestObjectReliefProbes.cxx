@@ -254,6 +254,48 @@ TEST(ObjectReliefProbesCore, ProbesMatchTheFieldsIrradianceAtTheSurface)
   EXPECT_GT(emitters.WorstRelative, 0.10);
 }
 
+TEST(ObjectReliefProbesCore, BackOfTheSurfaceIsBlocked)
+{
+  // The field does not know the object: the whole sphere's projection (FieldIrradiance as a
+  // static wall's probes use it) lets the light behind a face through the object, which tilted
+  // normals then receive. The probes leave it out; the whole-sphere projection is off.
+  const LightField& field = walkthroughtest::PlainCornellField(129);
+  const glm::mat4 placement = Placement(field);
+  const glm::mat3 normals = glm::transpose(glm::inverse(glm::mat3(placement)));
+  double worstProbe = 0.0, worstSphere = 0.0;
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    for (const int sign : { -1, 1 })
+    {
+      glm::vec3 point, normal;
+      FacePoint(axis, sign, 0.5f, 0.5f, point, normal);
+      const glm::vec3 n = glm::normalize(normals * normal);
+      const glm::vec3 p = glm::vec3(placement * glm::vec4(point, 1.0f)) + 1e-3f * n;
+      IncidentOptions options;
+      options.Emission = false;
+      const std::vector<IncidentSample> all = IncidentRadianceSamples(field, p, options);
+      std::vector<IncidentSample> front = all;
+      for (IncidentSample& s : front)
+      {
+        s.Radiance = glm::dot(s.Direction, n) < 0.0f ? glm::vec3(0.0f) : s.Radiance;
+      }
+      const SH9 probe = ProbeRadianceSH9(field, p, n);
+      const SH9 sphere = ProjectIncidentSH9(all);
+      const glm::vec3 m = TestNormals(n)[3]; // tilted 50 degrees
+      const glm::vec3 exact = IncidentIrradiance(front, m);
+      const double scale = std::max(1e-9, static_cast<double>(exact.x + exact.y + exact.z));
+      const glm::vec3 a = glm::abs(ShIrradiance(probe, m) - exact);
+      const glm::vec3 b = glm::abs(ShIrradiance(sphere, m) - exact);
+      worstProbe = std::max(worstProbe, (a.x + a.y + a.z) / scale);
+      worstSphere = std::max(worstSphere, (b.x + b.y + b.z) / scale);
+    }
+  }
+  std::printf("at normals tilted 50 degrees: probes %.1f%%, whole-sphere projection %.1f%%\n",
+    100.0 * worstProbe, 100.0 * worstSphere);
+  EXPECT_LT(worstProbe, 0.10);
+  EXPECT_GT(worstSphere, 0.10);
+}
+
 TEST(ObjectReliefProbesCore, CacheKeepsProbesThatDidNotMove)
 {
   const LightField& field = walkthroughtest::PlainCornellField(129);
