@@ -15,7 +15,7 @@ namespace vlf
 {
 
 void ObjectLineCache::Build(const LightField& field, const std::vector<std::uint32_t>& directions,
-  const glm::vec3& lower, const glm::vec3& upper, int threads)
+  const glm::vec3& lower, const glm::vec3& upper, int threads, bool emission)
 {
   this->Windows.assign(field.SubfieldCount(), Window());
   ParallelFor(
@@ -60,6 +60,10 @@ void ObjectLineCache::Build(const LightField& field, const std::vector<std::uint
               if (c.Cell < f.UnshotSpecular.size()) // a mirror's crossing
               {
                 radiance += f.UnshotSpecular[c.Cell];
+              }
+              if (!emission) // as Lookup::IncidentRadiance leaves it out
+              {
+                radiance = glm::max(radiance - field.MaterialOf(c.Surface).Emission, 0.0f);
               }
               w.Entries.push_back({ c.Depth, field.Orientation(k, c.Surface), radiance });
             }

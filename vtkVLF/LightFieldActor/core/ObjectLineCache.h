@@ -46,8 +46,9 @@ struct ObjectLineCache
   static constexpr int MaxLines = 400;
 
   // Reads the windows of the given directions around the box [lower, upper] (unit sphere).
+  // emission false: the senders' own emitted radiance left out (Lookup::IncidentRadiance's).
   void Build(const LightField& field, const std::vector<std::uint32_t>& directions,
-    const glm::vec3& lower, const glm::vec3& upper, int threads);
+    const glm::vec3& lower, const glm::vec3& upper, int threads, bool emission = true);
   // Lookup::IncidentRadiance through the window; false when p's cells are not in it.
   bool Incident(
     std::size_t k, int sense, const glm::vec3& p, CellInterpolation cells, glm::vec3& out) const;

@@ -5,6 +5,7 @@
 #include "LightField.h"
 #include "Lookup.h"
 #include "MathConstants.h"
+#include "ObjectLineCache.h"
 #include "ParallelFor.h"
 
 #include <glm/geometric.hpp>
@@ -204,6 +205,13 @@ ObjectChart LayOut(const ObjectMesh& mesh, std::vector<std::uint32_t> triangles,
   return chart;
 }
 
+// Outside the field: on its boundary, as the object gather does.
+glm::vec3 Placed(const glm::vec3& p)
+{
+  const float radius = glm::length(p);
+  return radius > 1.0f ? p / radius : p;
+}
+
 std::uint64_t HashMesh(const ObjectMesh& mesh)
 {
   std::uint64_t h = 1469598103934665603ull;
@@ -220,6 +228,48 @@ std::uint64_t HashMesh(const ObjectMesh& mesh)
   bytes(mesh.Normals.data(), mesh.Normals.size() * sizeof(glm::vec3));
   bytes(mesh.TextureCoordinates.data(), mesh.TextureCoordinates.size() * sizeof(glm::vec2));
   return h;
+}
+
+// ProbeRadianceSH9 through the object's line cache when it holds p's lines (the gather's
+// machinery: the same values as the lookup, read once per gather), else the lookup.
+SH9 ProbeSH9(const LightField& field, const Lookup& lookup, const ObjectLineCache* lines,
+  const glm::vec3& p, const glm::vec3& n)
+{
+  // FieldIrradiance's samples (IncidentRadianceSamples: both senses of every direction, weights
+  // summing to 4 pi), but only the sense in front of the surface is looked up: the other is the
+  // object's own body. Half the lookups of the whole sphere.
+  const std::size_t count = field.SubfieldCount();
+  double total = 0.0;
+  for (std::size_t k = 0; k < count; ++k)
+  {
+    total += 2.0 * field.GetSubfield(k).Weight;
+  }
+  const double scale = total > 0.0 ? 4.0 * Pi<double> / total : 0.0;
+  std::vector<IncidentSample> samples;
+  samples.reserve(count + 8);
+  for (std::size_t k = 0; k < count; ++k)
+  {
+    const Subfield& f = field.GetSubfield(k);
+    const float c = glm::dot(f.Direction, n);
+    for (const int sense : { 1, -1 })
+    {
+      if (static_cast<float>(sense) * c < 0.0f)
+      {
+        continue; // behind the surface
+      }
+      IncidentSample s;
+      s.Direction = static_cast<float>(sense) * f.Direction;
+      s.SolidAngle = static_cast<float>(scale * f.Weight);
+      // The emitters' own radiance is left out: they are the relief's lights.
+      if (!lines || !lines->Incident(k, sense, p, CellInterpolation::Bilinear, s.Radiance))
+      {
+        s.Radiance =
+          lookup.IncidentRadiance(k, sense, p, CellInterpolation::Bilinear, NoSurface, true, false);
+      }
+      samples.push_back(s);
+    }
+  }
+  return ProjectIncidentSH9(samples);
 }
 } // namespace
 
@@ -286,39 +336,7 @@ std::vector<ObjectChart> SplitIntoCharts(const ObjectMesh& input, int probesU, i
 //------------------------------------------------------------------------------
 SH9 ProbeRadianceSH9(const LightField& field, const glm::vec3& p, const glm::vec3& n)
 {
-  // FieldIrradiance's samples (IncidentRadianceSamples: both senses of every direction, weights
-  // summing to 4 pi), but only the sense in front of the surface is looked up: the other is the
-  // object's own body. Half the lookups of the whole sphere.
-  const Lookup lookup(field);
-  const std::size_t count = field.SubfieldCount();
-  double total = 0.0;
-  for (std::size_t k = 0; k < count; ++k)
-  {
-    total += 2.0 * field.GetSubfield(k).Weight;
-  }
-  const double scale = total > 0.0 ? 4.0 * Pi<double> / total : 0.0;
-  std::vector<IncidentSample> samples;
-  samples.reserve(count + 8);
-  for (std::size_t k = 0; k < count; ++k)
-  {
-    const Subfield& f = field.GetSubfield(k);
-    const float c = glm::dot(f.Direction, n);
-    for (const int sense : { 1, -1 })
-    {
-      if (static_cast<float>(sense) * c < 0.0f)
-      {
-        continue; // behind the surface
-      }
-      IncidentSample s;
-      s.Direction = static_cast<float>(sense) * f.Direction;
-      s.SolidAngle = static_cast<float>(scale * f.Weight);
-      // The emitters' own radiance is left out: they are the relief's lights.
-      s.Radiance =
-        lookup.IncidentRadiance(k, sense, p, CellInterpolation::Bilinear, NoSurface, true, false);
-      samples.push_back(s);
-    }
-  }
-  return ProjectIncidentSH9(samples);
+  return ProbeSH9(field, Lookup(field), nullptr, p, n);
 }
 
 //------------------------------------------------------------------------------
@@ -405,6 +423,38 @@ std::size_t ObjectReliefProbes::Gather(
       todo.emplace_back(static_cast<std::uint32_t>(c), static_cast<std::uint32_t>(q));
     }
   }
+  // The probes' lines, read once when there are enough probes to pay for it (as the object
+  // gather decides: more points than lines in the largest face of their box).
+  const Lookup lookup(this->Field);
+  ObjectLineCache lines;
+  if (!todo.empty())
+  {
+    glm::vec3 lower(std::numeric_limits<float>::max()), upper(-lower);
+    for (const auto& cq : todo)
+    {
+      const glm::vec3 p = Placed(this->Points[cq.first][cq.second] +
+        settings.Offset * this->PointNormals[cq.first][cq.second]);
+      lower = glm::min(lower, p);
+      upper = glm::max(upper, p);
+    }
+    const float cell = this->Field.Settings().CellSize();
+    const glm::vec3 extent = (upper - lower) / cell + 4.0f;
+    const float windowLines =
+      std::max({ extent.x * extent.y, extent.y * extent.z, extent.x * extent.z });
+    if (static_cast<float>(todo.size()) >= windowLines && settings.UseLineCache)
+    {
+      std::vector<std::uint32_t> all;
+      for (std::uint32_t k = 0; k < this->Field.SubfieldCount(); ++k)
+      {
+        if (this->Field.OwnsSubfield(k))
+        {
+          all.push_back(k);
+        }
+      }
+      lines.Build(this->Field, all, lower, upper, settings.Threads, false);
+    }
+  }
+  const ObjectLineCache* cache = lines.Windows.empty() ? nullptr : &lines;
   constexpr std::size_t batch = 256;
   for (std::size_t start = 0; start < todo.size(); start += batch)
   {
@@ -420,13 +470,9 @@ std::size_t ObjectReliefProbes::Gather(
         for (std::size_t w = begin; w < end; ++w)
         {
           const std::uint32_t c = todo[w].first, q = todo[w].second;
-          glm::vec3 p = this->Points[c][q] + settings.Offset * this->PointNormals[c][q];
-          const float radius = glm::length(p);
-          if (radius > 1.0f)
-          {
-            p /= radius; // outside the field: on its boundary, as the object gather does
-          }
-          this->Values[c][q] = ProbeRadianceSH9(this->Field, p, this->PointNormals[c][q]);
+          const glm::vec3 p =
+            Placed(this->Points[c][q] + settings.Offset * this->PointNormals[c][q]);
+          this->Values[c][q] = ProbeSH9(this->Field, lookup, cache, p, this->PointNormals[c][q]);
           this->Valid[c][q] = 1;
         }
       },

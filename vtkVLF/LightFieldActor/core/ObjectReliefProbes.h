@@ -73,8 +73,11 @@ struct ReliefProbeSettings
   bool UseCache = true;
   float CachePositionTolerance = 0.25f; // field cells
   float CacheNormalTolerance = 0.02f;   // radians
-  int Threads = 0;                      // 1: the calling thread only
-  ProgressCallback Progress;            // false stops with AbortedError
+  // Read the probes' lines once per gather (ObjectLineCache, the object gather's) when there are
+  // enough probes; false: every probe through the lookup (the same values, for tests).
+  bool UseLineCache = true;
+  int Threads = 0;           // 1: the calling thread only
+  ProgressCallback Progress; // false stops with AbortedError
 };
 
 class ObjectReliefProbes

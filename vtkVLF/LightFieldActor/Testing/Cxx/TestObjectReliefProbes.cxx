@@ -296,6 +296,37 @@ TEST(ObjectReliefProbesCore, BackOfTheSurfaceIsBlocked)
   EXPECT_GT(worstSphere, 0.10);
 }
 
+TEST(ObjectReliefProbesCore, LineCacheGivesTheLookupsValues)
+{
+  const LightField& field = walkthroughtest::PlainCornellField(129);
+  ObjectReliefProbes cached(field), looked(field);
+  cached.SetMesh(MakeCube(1.0f), 8);
+  looked.SetMesh(MakeCube(1.0f), 8);
+  ReliefProbeSettings settings;
+  cached.Gather(Placement(field), settings);
+  settings.UseLineCache = false;
+  looked.Gather(Placement(field), settings);
+  double largest = 0.0, worst = 0.0;
+  for (std::size_t c = 0; c < 6; ++c)
+  {
+    for (std::size_t q = 0; q < 64; ++q)
+    {
+      for (int k = 0; k < 9; ++k)
+      {
+        for (int channel = 0; channel < 3; ++channel)
+        {
+          const double a = cached.Probes()[c][q].L[k][channel];
+          const double b = looked.Probes()[c][q].L[k][channel];
+          largest = std::max(largest, std::abs(b));
+          worst = std::max(worst, std::abs(a - b));
+        }
+      }
+    }
+  }
+  EXPECT_GT(largest, 0.0);
+  EXPECT_LE(worst, 1e-5 * largest);
+}
+
 TEST(ObjectReliefProbesCore, CacheKeepsProbesThatDidNotMove)
 {
   const LightField& field = walkthroughtest::PlainCornellField(129);
