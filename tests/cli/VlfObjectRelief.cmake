@@ -99,6 +99,13 @@ if (NOT last_output MATCHES "relief probes: 384 in 6 charts, regathered in 2 fra
   message(FATAL_ERROR "the viewer does not regather the probes per move: ${last_output}")
 endif ()
 
+# A drag that starts on the relief (its charts stand in for the hidden object) moves the object.
+cli_run(TRUE vlf view "${WORK}/box.vlf" --frames 3 --offscreen ${_object}
+  --object-relief "${WORK}/grooves.pgm" --drag 20,0)
+if (NOT last_output MATCHES "moved in 1 of 3 frames" OR NOT last_output MATCHES "regathered in 1 frames")
+  message(FATAL_ERROR "a drag on the relief did not move the object: ${last_output}")
+endif ()
+
 # Bad input.
 set(_bad --mode progressive --size 32x32)
 cli_expect_error(2 "has no texture coordinates" vlf render "${WORK}/box.vlf" ${_bad} --object sphere
