@@ -26,8 +26,8 @@ namespace vlf
 class LightField;
 
 // The object's geometry is the scene model's TriangleMesh (Normals: unit, one per point;
-// ComputeNormals fills them; no texture coordinates are used); its material is one diffuse
-// reflectance for the whole object.
+// ComputeNormals fills them; texture coordinates only lay out a relief's probes,
+// ObjectReliefProbes.h); its material is one diffuse reflectance for the whole object.
 struct ObjectMesh : TriangleMesh
 {
   glm::vec3 Diffuse{ 0.7f }; // Kd, diffuse reflectance of the whole object in [0, 1]
