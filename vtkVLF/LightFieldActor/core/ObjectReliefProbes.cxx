@@ -6,6 +6,7 @@
 #include "Lookup.h"
 #include "MathConstants.h"
 #include "ObjectLineCache.h"
+#include "ObjectSelfOcclusion.h"
 #include "ParallelFor.h"
 
 #include <glm/geometric.hpp>
@@ -233,7 +234,8 @@ std::uint64_t HashMesh(const ObjectMesh& mesh)
 // ProbeRadianceSH9 through the object's line cache when it holds p's lines (the gather's
 // machinery: the same values as the lookup, read once per gather), else the lookup.
 SH9 ProbeSH9(const LightField& field, const Lookup& lookup, const ObjectLineCache* lines,
-  const glm::vec3& p, const glm::vec3& n)
+  const glm::vec3& p, const glm::vec3& n, const ObjectSelfOcclusion* self = nullptr,
+  const glm::vec3& surface = glm::vec3(0.0f))
 {
   // FieldIrradiance's samples (IncidentRadianceSamples: both senses of every direction, weights
   // summing to 4 pi), but only the sense in front of the surface is looked up: the other is the
@@ -267,6 +269,31 @@ SH9 ProbeSH9(const LightField& field, const Lookup& lookup, const ObjectLineCach
           lookup.IncidentRadiance(k, sense, p, CellInterpolation::Bilinear, NoSurface, true, false);
       }
       samples.push_back(s);
+    }
+  }
+  if (self && self->SeesItself(surface, n))
+  {
+    // The object's own concavity: directions it blocks bring nothing (rays from the surface
+    // point, 16 to a packet, as the object gather casts them).
+    for (std::size_t first = 0; first < samples.size(); first += 16)
+    {
+      const int m = static_cast<int>(std::min<std::size_t>(16, samples.size() - first));
+      glm::vec3 origins[16], normals[16], directions[16];
+      ObjectSelfHit hits[16];
+      for (int r = 0; r < m; ++r)
+      {
+        origins[r] = surface;
+        normals[r] = n;
+        directions[r] = samples[first + static_cast<std::size_t>(r)].Direction;
+      }
+      self->Trace16(origins, normals, directions, m, hits);
+      for (int r = 0; r < m; ++r)
+      {
+        if (hits[r].Triangle != ObjectSelfHit::None)
+        {
+          samples[first + static_cast<std::size_t>(r)].Radiance = glm::vec3(0.0f);
+        }
+      }
     }
   }
   return ProjectIncidentSH9(samples);
@@ -342,8 +369,12 @@ SH9 ProbeRadianceSH9(const LightField& field, const glm::vec3& p, const glm::vec
 //------------------------------------------------------------------------------
 ObjectReliefProbes::ObjectReliefProbes(const LightField& field)
   : Field(field)
+  , Self(new ObjectSelfOcclusion)
 {
 }
+
+//------------------------------------------------------------------------------
+ObjectReliefProbes::~ObjectReliefProbes() = default;
 
 //------------------------------------------------------------------------------
 void ObjectReliefProbes::SetMesh(const ObjectMesh& model, int probesPerSide)
@@ -354,6 +385,12 @@ void ObjectReliefProbes::SetMesh(const ObjectMesh& model, int probesPerSide)
     return;
   }
   this->ChartList = SplitIntoCharts(model, probesPerSide, probesPerSide);
+  this->Model = model;
+  if (this->Model.Normals.size() != this->Model.Positions.size())
+  {
+    this->Model.ComputeNormals();
+  }
+  this->Self->Clear();
   this->MeshHash = hash;
   this->PerSide = probesPerSide;
   this->Values.assign(this->ChartList.size(), {});
@@ -398,6 +435,21 @@ std::size_t ObjectReliefProbes::Gather(
   const glm::mat4& modelToUnit, const ReliefProbeSettings& settings)
 {
   const glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(modelToUnit)));
+  const ObjectSelfOcclusion* self = nullptr;
+  if (settings.ObjectOcclusion && !this->ChartList.empty())
+  {
+    this->Self->Prepare(this->Model, this->Model.Positions, this->MeshHash);
+    this->Self->Place(modelToUnit);
+    self = this->Self.get();
+  }
+  if (settings.ObjectOcclusion != this->GatheredWithOcclusion)
+  {
+    for (std::vector<std::uint8_t>& valid : this->Valid)
+    {
+      std::fill(valid.begin(), valid.end(), 0); // other values: gather everything again
+    }
+    this->GatheredWithOcclusion = settings.ObjectOcclusion;
+  }
   const float positionTolerance =
     settings.CachePositionTolerance * this->Field.Settings().CellSize();
   const float normalCos = std::cos(settings.CacheNormalTolerance);
@@ -472,7 +524,8 @@ std::size_t ObjectReliefProbes::Gather(
           const std::uint32_t c = todo[w].first, q = todo[w].second;
           const glm::vec3 p =
             Placed(this->Points[c][q] + settings.Offset * this->PointNormals[c][q]);
-          this->Values[c][q] = ProbeSH9(this->Field, lookup, cache, p, this->PointNormals[c][q]);
+          this->Values[c][q] = ProbeSH9(
+            this->Field, lookup, cache, p, this->PointNormals[c][q], self, this->Points[c][q]);
           this->Valid[c][q] = 1;
         }
       },

@@ -20,7 +20,9 @@
 // surface (n . d < 0) bring nothing: the object's own body blocks them (the field, propagated
 // without the object, would send light through it). A probe keeps its last value when it moved
 // less than a quarter of a field cell and turned less than 0.02 rad, as the object gather's
-// per-vertex cache does. Plain C++ (GLM, no VTK types); parallel over probes.
+// per-vertex cache does. Where the object faces itself (a concave object), the directions it
+// blocks are found by rays against it (ObjectSelfOcclusion) and bring nothing. Plain C++ (GLM, no
+// VTK types); parallel over probes.
 #ifndef mesolight_vlf_ObjectReliefProbes_h
 #define mesolight_vlf_ObjectReliefProbes_h
 
@@ -33,6 +35,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <stdexcept>
 #include <vector>
 
@@ -41,6 +44,7 @@ namespace mesolight
 namespace vlf
 {
 class LightField;
+class ObjectSelfOcclusion;
 
 // A mesh that cannot carry a relief (no texture coordinates, not finite ones): what() says so.
 class ObjectChartError : public std::runtime_error
@@ -73,6 +77,10 @@ struct ReliefProbeSettings
   bool UseCache = true;
   float CachePositionTolerance = 0.25f; // field cells
   float CacheNormalTolerance = 0.02f;   // radians
+  // The object's own concavities: a probe that faces part of the object casts rays against it
+  // (ObjectSelfOcclusion, the object gather's) and the directions it blocks bring nothing (its
+  // shadow; the light the object reflects onto itself is not added). Convex objects cast none.
+  bool ObjectOcclusion = true;
   // Read the probes' lines once per gather (ObjectLineCache, the object gather's) when there are
   // enough probes; false: every probe through the lookup (the same values, for tests).
   bool UseLineCache = true;
@@ -84,6 +92,7 @@ class ObjectReliefProbes
 {
 public:
   explicit ObjectReliefProbes(const LightField& field);
+  ~ObjectReliefProbes();
 
   // The object's mesh (model coordinates, with texture coordinates) and probes per side; the
   // charts are rebuilt only when the mesh or the count changed. Throws as SplitIntoCharts.
@@ -109,6 +118,9 @@ private:
   std::vector<std::vector<SH9>> Values;
   std::vector<std::vector<glm::vec3>> Points, PointNormals; // unit sphere, last gather
   std::vector<std::vector<std::uint8_t>> Valid;
+  ObjectMesh Model; // as set, normals completed (the self-occlusion's scene refers to it)
+  std::unique_ptr<ObjectSelfOcclusion> Self;
+  bool GatheredWithOcclusion = true;
 };
 
 // The SH9 projection of the field's incident radiance at p (unit sphere) over the directions in
