@@ -55,6 +55,35 @@ std::vector<std::string> ReliefInputs(const CommandLine& cl)
   return inputs;
 }
 
+namespace
+{
+// The walkthrough's display settings on every relief's property.
+void CopyDisplay(vtkLightFieldActor* actor, const WalkthroughReliefs& reliefs)
+{
+  for (const auto& relief : reliefs.Actors)
+  {
+    vtkReliefProperty* property =
+      vtkReliefMapper::SafeDownCast(relief->GetMapper())->GetReliefProperty();
+    property->SetExposure(actor->GetExposure());
+    property->SetToneMapping(actor->GetToneMap() == vtkLightFieldActor::Reinhard);
+  }
+}
+
+void OnActorModified(vtkObject* caller, unsigned long, void* clientData, void*)
+{
+  CopyDisplay(static_cast<vtkLightFieldActor*>(caller),
+    *static_cast<const WalkthroughReliefs*>(clientData));
+}
+} // namespace
+
+WalkthroughReliefs::~WalkthroughReliefs()
+{
+  if (this->Followed)
+  {
+    this->Followed->RemoveObserver(this->FollowTag);
+  }
+}
+
 int SetUpWalkthroughReliefs(const CommandLine& cl, const char* command, vtkLightFieldActor* actor,
   vtkRenderer* walkthrough, vtkRenderWindow* window, WalkthroughReliefs& reliefs)
 {
@@ -142,8 +171,6 @@ int SetUpWalkthroughReliefs(const CommandLine& cl, const char* command, vtkLight
     vtkReliefProperty* property = mapper->GetReliefProperty();
     property->SetDepthScale(depthScale);
     property->SetSelfShadowing(true);
-    property->SetExposure(actor->GetExposure());
-    property->SetToneMapping(actor->GetToneMap() == vtkLightFieldActor::Reinhard);
     vtkNew<vtkActor> relief;
     relief->SetMapper(mapper);
     const double* kd = surface->GetSurfaceDiffuse();
@@ -166,6 +193,11 @@ int SetUpWalkthroughReliefs(const CommandLine& cl, const char* command, vtkLight
     reliefs.Surfaces.emplace_back(surface);
     reliefs.Actors.emplace_back(relief);
   }
+  CopyDisplay(actor, reliefs);
+  reliefs.FollowDisplay->SetCallback(OnActorModified);
+  reliefs.FollowDisplay->SetClientData(&reliefs);
+  reliefs.FollowTag = actor->AddObserver(vtkCommand::ModifiedEvent, reliefs.FollowDisplay);
+  reliefs.Followed = actor;
   return 0;
 }
 

@@ -9,14 +9,17 @@
 #ifndef mesolight_LightFieldReliefs_h
 #define mesolight_LightFieldReliefs_h
 
+#include "vtkLightFieldActor.h" // for vtkWeakPointer<vtkLightFieldActor>
+
+#include <vtkCallbackCommand.h> // for vtkNew<vtkCallbackCommand>
 #include <vtkNew.h>
 #include <vtkSmartPointer.h>
+#include <vtkWeakPointer.h>
 
 #include <string>
 #include <vector>
 
 class vtkActor;
-class vtkLightFieldActor;
 class vtkLightFieldReliefSurface;
 class vtkRenderer;
 class vtkRenderWindow;
@@ -32,9 +35,18 @@ std::vector<std::string> ReliefInputs(const CommandLine& cl);
 
 struct WalkthroughReliefs
 {
+  WalkthroughReliefs() = default;
+  ~WalkthroughReliefs(); // stops following the actor
+  WalkthroughReliefs(const WalkthroughReliefs&) = delete;
+  WalkthroughReliefs& operator=(const WalkthroughReliefs&) = delete;
   vtkNew<vtkRenderer> Renderer; // layer 1: the reliefs and the emitter lights
   std::vector<vtkSmartPointer<vtkLightFieldReliefSurface>> Surfaces;
   std::vector<vtkSmartPointer<vtkActor>> Actors;
+  // The walkthrough's exposure and tone map, copied to the reliefs whenever the actor changes
+  // (the viewer's keys, the EXR capture's exposure bracketing).
+  vtkNew<vtkCallbackCommand> FollowDisplay;
+  vtkWeakPointer<vtkLightFieldActor> Followed;
+  unsigned long FollowTag = 0;
 };
 
 /**
