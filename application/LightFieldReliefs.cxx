@@ -171,6 +171,9 @@ int SetUpWalkthroughReliefs(const CommandLine& cl, const char* command, vtkLight
     vtkReliefProperty* property = mapper->GetReliefProperty();
     property->SetDepthScale(depthScale);
     property->SetSelfShadowing(true);
+    // A wall of a closed room has no silhouette: a view ray leaving the texture at its edge
+    // would show the background through the hidden wall (the CPU reference keeps the wall there).
+    property->SilhouettesOff();
     vtkNew<vtkActor> relief;
     relief->SetMapper(mapper);
     const double* kd = surface->GetSurfaceDiffuse();
