@@ -66,13 +66,14 @@ vtkImageData* vtkLightFieldReliefSurface::GetProbesOutput()
 //------------------------------------------------------------------------------
 vtkMTimeType vtkLightFieldReliefSurface::GetMTime()
 {
-  vtkMTimeType time = this->Superclass::GetMTime();
-  if (this->LightFieldActor)
+  // The actor changes with every setting and camera-driven update; only a new field (loaded or
+  // lent) makes the outputs stale, and the probes are too costly to recompute for less.
+  if (this->LightFieldActor &&
+    vtkLightFieldActorCore::GetLightField(this->LightFieldActor) != this->ExecutedField)
   {
-    // A field loaded (or replaced) since the last update modifies the actor.
-    time = std::max(time, this->LightFieldActor->GetMTime());
+    this->Modified();
   }
-  return time;
+  return this->Superclass::GetMTime();
 }
 
 //------------------------------------------------------------------------------
@@ -138,6 +139,7 @@ int vtkLightFieldReliefSurface::RequestData(
   if (this->LightFieldActor)
   {
     field = vtkLightFieldActorCore::GetLightField(this->LightFieldActor);
+    this->ExecutedField = field;
   }
   else if (auto* producer = vtkVirtualLightField::SafeDownCast(this->GetInputAlgorithm(0, 0)))
   {

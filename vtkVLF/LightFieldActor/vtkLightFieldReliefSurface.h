@@ -110,6 +110,7 @@ private:
   int ProbesPerSide;
   double SurfaceDiffuse[3] = { 0.0, 0.0, 0.0 };
   vtkNew<vtkLightCollection> EmitterLights;
+  const void* ExecutedField = nullptr; // the actor's field the outputs were made from
 };
 
 #endif

@@ -291,3 +291,23 @@ TEST(LightFieldReliefSurface, AbortStopsWithoutError)
   EXPECT_TRUE(messages->Errors.empty()) << messages->AllErrors();
   EXPECT_EQ(surface->GetOutput()->GetNumberOfPoints(), 0);
 }
+
+TEST(LightFieldReliefSurface, ProbesAreRecomputedForANewFieldOnly)
+{
+  ReliefSurfaceFixture f("back", 2);
+  int runs = 0;
+  vtkNew<vtkCallbackCommand> count;
+  count->SetClientData(&runs);
+  count->SetCallback(
+    [](vtkObject*, unsigned long, void* data, void*) { ++*static_cast<int*>(data); });
+  f.Surface->AddObserver(vtkCommand::StartEvent, count);
+  // The walkthrough's settings change the actor, not its field.
+  f.Actor->SetExposure(2.0);
+  f.Actor->AddHiddenSurface("back");
+  f.Surface->Update();
+  EXPECT_EQ(runs, 0);
+  // Another field (the mirror box, which has a back wall too): new outputs.
+  vtkLightFieldActorCore::SetLightField(f.Actor, &walkthroughtest::MirrorCornellField(129));
+  f.Surface->Update();
+  EXPECT_EQ(runs, 1);
+}
