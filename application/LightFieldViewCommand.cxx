@@ -606,7 +606,9 @@ int View(const std::vector<std::string>& args)
   vtkNew<vtkTextActor> text;
   text->GetTextProperty()->SetFontSize(14);
   text->SetDisplayPosition(8, 8);
-  renderer->AddViewProp(text);
+  // On the top layer: the reliefs' renderer draws over the walkthrough's.
+  (walkthrough.Reliefs.Actors.empty() ? renderer : walkthrough.Reliefs.Renderer.Get())
+    ->AddViewProp(text);
   ViewerState state;
   state.Actor = actor;
   state.Window = window;
