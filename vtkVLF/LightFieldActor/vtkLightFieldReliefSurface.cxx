@@ -165,6 +165,14 @@ int vtkLightFieldReliefSurface::RequestData(
   }
   catch (const std::exception& e)
   {
+    if (!this->LightFieldActor && mesolight::SurfaceNameList(field->Scene()) == "(none)")
+    {
+      // vtkTriangleSceneConverter's polydata carries materials, not surface names.
+      vtkErrorMacro(<< e.what()
+                    << "; a field propagated from polydata has no surface names: load it from a "
+                       "snapshot of a named scene into a vtkLightFieldActor and give that actor");
+      return 0;
+    }
     vtkErrorMacro(<< e.what());
     return 0;
   }

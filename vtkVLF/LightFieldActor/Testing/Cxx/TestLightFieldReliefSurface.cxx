@@ -8,6 +8,9 @@
 
 #include "vtkLightFieldActor.h"
 #include "vtkLightFieldActorCore.h"
+#include "vtkCornellBoxSource.h"
+#include "vtkVirtualLightField.h"
+#include "vtkVirtualLightFieldCore.h"
 
 #include "FieldIrradiance.h"
 #include "LightField.h"
@@ -310,4 +313,26 @@ TEST(LightFieldReliefSurface, ProbesAreRecomputedForANewFieldOnly)
   vtkLightFieldActorCore::SetLightField(f.Actor, &walkthroughtest::MirrorCornellField(129));
   f.Surface->Update();
   EXPECT_EQ(runs, 1);
+}
+
+// The filter route: the scene comes as polydata (vtkTriangleSceneConverter), which carries no
+// surface names, so no surface is found and the message says why and what to do.
+TEST(LightFieldReliefSurface, AVirtualLightFieldFiltersSceneHasNoNames)
+{
+  vtkNew<vtkCornellBoxSource> box;
+  vtkNew<vtkVirtualLightField> field;
+  field->SetInputConnection(box->GetOutputPort());
+  field->SetDirections(33);
+  field->SetRaysPerSide(8);
+  field->SetIterations(1);
+  vtkNew<vtkLightFieldReliefSurface> surface;
+  vtkNew<mesolight_test::MessageCapture> messages;
+  messages->Watch(surface);
+  surface->SetLightFieldConnection(field->GetOutputPort());
+  surface->SetSurfaceName("floor");
+  surface->SetProbesPerSide(2);
+  surface->Update();
+  ASSERT_NE(vtkVirtualLightFieldCore::GetLightField(field), nullptr);
+  EXPECT_TRUE(messages->HasError("a field propagated from polydata has no surface names"))
+    << messages->AllErrors();
 }
