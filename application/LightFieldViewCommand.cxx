@@ -6,6 +6,7 @@
 #include "CommandLine.h"
 #include "LightFieldCamera.h"
 #include "LightFieldObjectOptions.h"
+#include "LightFieldReliefs.h"
 #include "ObjectDragStyle.h"
 #include "OutputFile.h"
 #include "Timing.h"
@@ -75,6 +76,7 @@ void AddViewOptions(CommandLine& cl)
   cl.AddValue("--exposure", "X", "radiance scale before tone mapping", "1");
   cl.AddValue("--tone-map", "OP", "clamp or reinhard", "clamp");
   cl.AddValue("--reflection-depth", "N", "mirror bounces traced", "8");
+  AddReliefOptions(cl);
 }
 
 // Applies the shared view options to an actor and a renderer's camera.
@@ -166,6 +168,7 @@ struct WalkthroughWindow
   vtkNew<MessageCollector> Messages;
   vtkNew<vtkRenderer> Renderer;
   vtkNew<vtkRenderWindow> Window;
+  WalkthroughReliefs Reliefs; // --relief
 };
 
 // 0 when the window is ready, else the command's exit code (the message is printed).
@@ -198,7 +201,8 @@ int OpenWalkthrough(
     return 2;
   }
   walkthrough.Window->SetSize(width, height);
-  return 0;
+  return SetUpWalkthroughReliefs(cl, command, walkthrough.Actor, walkthrough.Renderer,
+    walkthrough.Window, walkthrough.Reliefs);
 }
 
 int Render(const std::vector<std::string>& args)
@@ -230,7 +234,8 @@ int Render(const std::vector<std::string>& args)
     return 2;
   }
   const std::string out = cl.Get("--out");
-  std::vector<std::string> inputs{ cl.Positional()[0] };
+  std::vector<std::string> inputs = ReliefInputs(cl);
+  inputs.push_back(cl.Positional()[0]);
   if (cl.Has("--object") && cl.Get("--object") != "sphere" && cl.Get("--object") != "cube")
   {
     inputs.push_back(cl.Get("--object"));
@@ -613,7 +618,9 @@ int View(const std::vector<std::string>& args)
   vtkNew<vtkTextActor> text;
   text->GetTextProperty()->SetFontSize(14);
   text->SetDisplayPosition(8, 8);
-  renderer->AddViewProp(text);
+  // On the top layer: the reliefs' renderer draws over the walkthrough's.
+  (walkthrough.Reliefs.Actors.empty() ? renderer : walkthrough.Reliefs.Renderer.Get())
+    ->AddViewProp(text);
   ViewerState state;
   state.Actor = actor;
   state.Window = window;

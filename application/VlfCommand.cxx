@@ -403,25 +403,9 @@ int Render(const std::vector<std::string>& args)
 
 int RunVlfRender(const std::vector<std::string>& args)
 {
-  // Relief surfaces are drawn by this CPU renderer (the walkthrough's GL relief is not built
-  // yet): it shows the progressive mode's diffuse totals, so --mode progressive is accepted.
+  // With --mode the image goes through vtkLightFieldActor (reliefs by vtkReliefMapper, lit by
+  // the field: LightFieldReliefs.h); without, this CPU reference renders it.
   const auto mode = std::find(args.begin(), args.end(), "--mode");
-  const bool relief = std::any_of(args.begin(), args.end(),
-    [](const std::string& a) { return a == "--relief" || a.rfind("--relief=", 0) == 0; });
-  if (relief && mode != args.end())
-  {
-    if (mode + 1 == args.end() || *(mode + 1) != "progressive")
-    {
-      std::cerr << "mesolight vlf render: --relief draws with --mode progressive (or no --mode) "
-                   "so far, not --mode "
-                << (mode + 1 == args.end() ? std::string("(none)") : *(mode + 1)) << "\n";
-      return 2;
-    }
-    std::vector<std::string> rest(args.begin(), mode);
-    rest.insert(rest.end(), mode + 2, args.end());
-    return Render(rest);
-  }
-  // With --mode the image goes through vtkLightFieldActor; without, this CPU reference renders it.
   if (mode != args.end())
   {
     return RunLightFieldRender(args);

@@ -10,6 +10,7 @@
 #define mesolight_VlfRelief_h
 
 #include "ReliefShading.h"
+#include "ReliefSurface.h" // DefaultReliefProbesPerSide, ReliefSurfaceError
 
 #include <glm/vec3.hpp>
 
@@ -48,7 +49,7 @@ struct FieldRelief
 struct FieldReliefOptions
 {
   double DepthScale = 0.05;      // vtkReliefProperty's default
-  int Probes = 8;                // SH9 probes per side of the texture
+  int Probes = vlf::DefaultReliefProbesPerSide; // SH9 probes per side of the texture
   int EmitterSamplesPerSide = 4; // per emitter triangle: n x n stratified samples
 };
 

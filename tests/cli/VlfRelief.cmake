@@ -3,7 +3,8 @@
 # reliefs lit by the field (application/VlfRelief.h). A relief of depth 0 is the flat wall again:
 # the image's mean is the plain render's within 10% (the relief's direct light is integrated from
 # emitter samples, the field's from its lines); a relief with depth shows it (the mean moves, its
-# valleys are shadowed); --mode progressive draws the same; bad input gets clear errors.
+# valleys are shadowed); bad input gets clear errors. With --mode the walkthrough draws them
+# (VlfReliefWalk.cmake).
 include("${CMAKE_CURRENT_LIST_DIR}/RunTool.cmake")
 cli_fresh_work()
 
@@ -22,7 +23,7 @@ cli_run(TRUE vlf render "${WORK}/box.vlf" --size 48x48 --out "${WORK}/flat.png"
   --exr "${WORK}/flat.exr")
 cli_run(TRUE vlf render "${WORK}/box.vlf" --size 48x48 --relief back=${WORK}/zero.pgm
   --relief floor=${WORK}/zero.pgm --out "${WORK}/zero.png" --exr "${WORK}/zero.exr")
-cli_run(TRUE vlf render "${WORK}/box.vlf" --mode progressive --size 48x48
+cli_run(TRUE vlf render "${WORK}/box.vlf" --size 48x48
   --relief back=${WORK}/grooves.pgm --relief floor=${WORK}/grooves.pgm --relief-depth-scale 0.1
   --out "${WORK}/grooves.png" --exr "${WORK}/grooves.exr")
 exr_stat_milli("${WORK}/flat.exr" Avg _flat)
@@ -47,8 +48,6 @@ cli_expect_error(2 "is not planar" vlf render "${WORK}/box.vlf" --relief tall=${
   --out "${WORK}/never.png")
 cli_expect_error(2 "give SURFACE=DEPTH_IMAGE" vlf render "${WORK}/box.vlf" --relief back
   --out "${WORK}/never.png")
-cli_expect_error(2 "--relief draws with --mode progressive" vlf render "${WORK}/box.vlf"
-  --mode coherent --relief back=${WORK}/zero.pgm --out "${WORK}/never.png")
 cli_expect_error(2 "--out" vlf render "${WORK}/box.vlf" --relief back=${WORK}/zero.pgm
   --out "${WORK}/zero.pgm" --force)
 

@@ -14,6 +14,7 @@
 #include "ObjectShadows.h"
 #include "WalkthroughTracer.h"
 
+#include <algorithm>
 #include <chrono>
 
 namespace vlf = mesolight::vlf;
@@ -125,6 +126,18 @@ bool vtkLightFieldActor::Internals::UseField(
     vtkErrorWithObjectMacro(&actor, << error);
   }
   this->Shadows.Invalidate(); // the maps belong to the field's emitters and unit sphere
+  this->ApplyHiddenSurfaces(actor);
+  return this->Scene.GetField() != nullptr;
+}
+
+//------------------------------------------------------------------------------
+void vtkLightFieldActor::Internals::ApplyHiddenSurfaces(vtkLightFieldActor& actor)
+{
+  std::string error;
+  if (!this->Scene.SetHiddenSurfaces(this->HiddenSurfaces, error))
+  {
+    vtkErrorWithObjectMacro(&actor, << error);
+  }
   if (vtkLightFieldMapper* mapper = vtkLightFieldMapper::SafeDownCast(actor.GetMapper()))
   {
     if (this->Scene.GetScene())
@@ -138,7 +151,37 @@ bool vtkLightFieldActor::Internals::UseField(
     }
   }
   actor.Modified();
-  return this->Scene.GetField() != nullptr;
+}
+
+//------------------------------------------------------------------------------
+void vtkLightFieldActor::AddHiddenSurface(const std::string& name)
+{
+  Internals& impl = *this->Impl;
+  if (std::find(impl.HiddenSurfaces.begin(), impl.HiddenSurfaces.end(), name) !=
+    impl.HiddenSurfaces.end())
+  {
+    return;
+  }
+  impl.HiddenSurfaces.push_back(name);
+  impl.ApplyHiddenSurfaces(*this);
+}
+
+//------------------------------------------------------------------------------
+void vtkLightFieldActor::RemoveAllHiddenSurfaces()
+{
+  Internals& impl = *this->Impl;
+  if (impl.HiddenSurfaces.empty())
+  {
+    return;
+  }
+  impl.HiddenSurfaces.clear();
+  impl.ApplyHiddenSurfaces(*this);
+}
+
+//------------------------------------------------------------------------------
+int vtkLightFieldActor::GetNumberOfHiddenSurfaces() const
+{
+  return static_cast<int>(this->Impl->HiddenSurfaces.size());
 }
 
 //------------------------------------------------------------------------------

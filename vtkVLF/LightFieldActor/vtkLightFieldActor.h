@@ -118,6 +118,19 @@ public:
   /** True when the field has surfaces with Ks > 0. */
   bool HasMirrors() const;
 
+  ///@{
+  /**
+   * Surfaces of the field's scene left out of the drawing in every mode, by name (an OBJ g/o
+   * name or a Cornell box name, as vtkLightFieldReliefSurface takes them): e.g. a surface a
+   * relief actor draws instead (`mesolight vlf view --relief`). The field and its tracer keep
+   * them: mirrors still reflect them as flat surfaces. A name the field's scene does not have is
+   * reported with vtkErrorMacro (listing the names it has) and ignored.
+   */
+  void AddHiddenSurface(const std::string& name);
+  void RemoveAllHiddenSurfaces();
+  int GetNumberOfHiddenSurfaces() const;
+  ///@}
+
   /**
    * Progressive mode: the camera rests. Starts tracing the reflections of the last rendered view
    * (if not done or under way), waits until they are ready or `seconds` passed, and returns

@@ -17,6 +17,8 @@
 #include "vtkLightFieldScreenImage.h"
 
 #include <functional>
+#include <string>
+#include <vector>
 
 struct vtkLightFieldActor::Internals
 {
@@ -30,6 +32,8 @@ struct vtkLightFieldActor::Internals
   // Shows a field (nullptr: none): rebuilds what is drawn and traced from it, forgets what
   // belonged to the old one. False (reported with vtkErrorMacro) when it cannot be shown.
   bool UseField(vtkLightFieldActor& actor, const mesolight::vlf::LightField* field);
+  // Gives the mapper the scene polydata without the hidden surfaces (reports unknown names).
+  void ApplyHiddenSurfaces(vtkLightFieldActor& actor);
   // Stops the worker: it reads the field, the tracer, the object's instance and the maps.
   std::function<void()> StopReaders()
   {
@@ -46,6 +50,7 @@ struct vtkLightFieldActor::Internals
   vtkLightFieldObjectShadows Shadows;
   vtkLightFieldReflectionWorker Worker;
   bool WarnedNoMirrors = false;
+  std::vector<std::string> HiddenSurfaces; // vtkLightFieldActor::AddHiddenSurface
 
   // Negative tests' hooks (vtkLightFieldActorTesting): upload the atlas upside down; paste the
   // screen rectangle over every fragment in it without alpha; trace reflections this many

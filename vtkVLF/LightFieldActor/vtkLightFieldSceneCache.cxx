@@ -15,6 +15,7 @@
 #include "LightField.h"
 #include "PatchComparison.h" // ToWorld
 #include "TextureAtlas.h"
+#include "TriangleScene.h"
 #include "WalkthroughTracer.h"
 
 #include <algorithm>
@@ -27,7 +28,8 @@ namespace
 {
 // The field's scene in world coordinates, three points per triangle (each carries its own
 // surface's atlas coordinates), face normals, Kd colours for the geometry mode.
-vtkSmartPointer<vtkPolyData> MakeScene(const vlf::LightField& field, const vlf::TextureAtlas& atlas)
+vtkSmartPointer<vtkPolyData> MakeScene(const vlf::LightField& field, const vlf::TextureAtlas& atlas,
+  const std::vector<bool>& hidden = {})
 {
   const mesolight::TriangleScene& scene = field.Scene();
   vtkNew<vtkPoints> points;
@@ -56,7 +58,7 @@ vtkSmartPointer<vtkPolyData> MakeScene(const vlf::LightField& field, const vlf::
   for (std::size_t t = 0; t < scene.TriangleCount(); ++t)
   {
     const std::uint32_t s = field.SurfaceOfTriangle(t);
-    if (s == vlf::NoSurface)
+    if (s == vlf::NoSurface || (!hidden.empty() && hidden[t]))
     {
       continue;
     }
@@ -116,6 +118,7 @@ bool vtkLightFieldSceneCache::Build(const mesolight::vlf::LightField* field, std
   this->Atlas.reset();
   this->Scene = nullptr;
   this->Lights.reset();
+  this->Hidden.clear();
   ++this->AtlasVersion;
   if (!field)
   {
@@ -137,6 +140,37 @@ bool vtkLightFieldSceneCache::Build(const mesolight::vlf::LightField* field, std
     return false;
   }
   return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkLightFieldSceneCache::SetHiddenSurfaces(
+  const std::vector<std::string>& names, std::string& error)
+{
+  if (!this->Field || !this->Atlas || names == this->Hidden)
+  {
+    return true;
+  }
+  const mesolight::TriangleScene& scene = this->Field->Scene();
+  std::vector<bool> hidden(scene.TriangleCount(), false);
+  bool known = true;
+  for (const std::string& name : names)
+  {
+    try
+    {
+      for (const std::size_t t : mesolight::SurfaceTriangles(scene, name))
+      {
+        hidden[t] = true;
+      }
+    }
+    catch (const mesolight::SceneSurfaceError& e)
+    {
+      error = std::string("cannot hide a surface: ") + e.what();
+      known = false;
+    }
+  }
+  this->Scene = MakeScene(*this->Field, *this->Atlas, hidden);
+  this->Hidden = names;
+  return known;
 }
 
 //------------------------------------------------------------------------------

@@ -15,6 +15,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace mesolight
 {
@@ -42,6 +43,13 @@ public:
    */
   bool Build(const mesolight::vlf::LightField* field, std::string& error);
 
+  /**
+   * Remakes the scene polydata without the surfaces of these names (all shown when empty).
+   * False, with the reason in error, for a name the field's scene does not have (the others
+   * are hidden). Nothing to do without a field.
+   */
+  bool SetHiddenSurfaces(const std::vector<std::string>& names, std::string& error);
+
   /** The field built from (nullptr: none, or its build failed). */
   const mesolight::vlf::LightField* GetField() const { return this->Field; }
   mesolight::vlf::WalkthroughTracer* GetTracer() const { return this->Tracer.get(); }
@@ -58,6 +66,7 @@ private:
   std::unique_ptr<mesolight::vlf::WalkthroughTracer> Tracer;
   std::unique_ptr<mesolight::vlf::TextureAtlas> Atlas;
   vtkSmartPointer<vtkPolyData> Scene;
+  std::vector<std::string> Hidden; // the names Scene leaves out
   unsigned long AtlasVersion = 0; // bumped whenever the atlas changes
   std::unique_ptr<mesolight::vlf::LightApproximation> Lights;
 };

@@ -1,0 +1,207 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "LightFieldReliefs.h"
+
+#include "CommandLine.h"
+#include "ReliefScene.h" // BuildReliefTextures
+#include "vtkMessageCollector.h"
+
+#include "vtkLightFieldActor.h"
+#include "vtkLightFieldActorCore.h"
+#include "vtkLightFieldReliefSurface.h"
+#include "vtkReliefMapper.h"
+#include "vtkReliefProperty.h"
+
+#include "LightField.h"
+#include "TriangleScene.h"
+
+#include <vtkActor.h>
+#include <vtkCommand.h>
+#include <vtkExecutive.h>
+#include <vtkImageData.h>
+#include <vtkLight.h>
+#include <vtkLightCollection.h>
+#include <vtkProperty.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+#include <vtkTexture.h>
+
+#include <algorithm>
+#include <iostream>
+
+namespace mesolight
+{
+
+void AddReliefOptions(CommandLine& cl)
+{
+  cl.AddValue("--relief", "SURFACE=DEPTH_IMAGE",
+    "repeatable: draw the named surface of the field's scene as a relief (depth image, 0 = top, "
+    "1 = deepest) by the relief mapper, lit by the field: indirect light as SH9 probes, the "
+    "emitters as lights");
+  cl.AddValue("--relief-depth-scale", "K",
+    "world depth of depth 1 over the world width of the relief's texture", "0.05");
+}
+
+std::vector<std::string> ReliefInputs(const CommandLine& cl)
+{
+  std::vector<std::string> inputs;
+  for (const std::string& item : cl.GetAll("--relief"))
+  {
+    const std::size_t equals = item.find('=');
+    if (equals != std::string::npos)
+    {
+      inputs.push_back(item.substr(equals + 1));
+    }
+  }
+  return inputs;
+}
+
+namespace
+{
+// The walkthrough's display settings on every relief's property.
+void CopyDisplay(vtkLightFieldActor* actor, const WalkthroughReliefs& reliefs)
+{
+  for (const auto& relief : reliefs.Actors)
+  {
+    vtkReliefProperty* property =
+      vtkReliefMapper::SafeDownCast(relief->GetMapper())->GetReliefProperty();
+    property->SetExposure(actor->GetExposure());
+    property->SetToneMapping(actor->GetToneMap() == vtkLightFieldActor::Reinhard);
+  }
+}
+
+void OnActorModified(vtkObject* caller, unsigned long, void* clientData, void*)
+{
+  CopyDisplay(static_cast<vtkLightFieldActor*>(caller),
+    *static_cast<const WalkthroughReliefs*>(clientData));
+}
+} // namespace
+
+WalkthroughReliefs::~WalkthroughReliefs()
+{
+  if (this->Followed)
+  {
+    this->Followed->RemoveObserver(this->FollowTag);
+  }
+}
+
+int SetUpWalkthroughReliefs(const CommandLine& cl, const char* command, vtkLightFieldActor* actor,
+  vtkRenderer* walkthrough, vtkRenderWindow* window, WalkthroughReliefs& reliefs)
+{
+  const std::vector<std::string> items = cl.GetAll("--relief");
+  if (items.empty())
+  {
+    return 0;
+  }
+  double depthScale = 0.05;
+  std::string error;
+  if (!cl.GetDouble("--relief-depth-scale", 0.0, 10.0, depthScale, error))
+  {
+    std::cerr << command << ": " << error << "\n";
+    return 2;
+  }
+  const vlf::LightField* field = vtkLightFieldActorCore::GetLightField(actor);
+  if (!field)
+  {
+    return 1; // the actor reported why
+  }
+  const auto quoted = [](const std::string& text) { return "'" + text + "'"; };
+  std::vector<std::string> names;
+  for (const std::string& item : items)
+  {
+    // The CPU reference's messages (application/VlfRelief.cxx, SetUpFieldReliefs).
+    const std::size_t equals = item.find('=');
+    if (equals == std::string::npos || equals == 0 || equals + 1 == item.size())
+    {
+      std::cerr << command << ": --relief " << quoted(item)
+                << ": give SURFACE=DEPTH_IMAGE (the field's surfaces: "
+                << SurfaceNameList(field->Scene()) << ")\n";
+      return 2;
+    }
+    const std::string name = item.substr(0, equals);
+    if (std::find(names.begin(), names.end(), name) != names.end())
+    {
+      std::cerr << command << ": --relief names surface " << quoted(name) << " twice\n";
+      return 2;
+    }
+    names.push_back(name);
+  }
+
+  // The reliefs' renderer: above the walkthrough, its depth kept, the same camera; its lights
+  // are the emitters' (no headlight).
+  window->SetNumberOfLayers(std::max(2, window->GetNumberOfLayers()));
+  vtkRenderer* renderer = reliefs.Renderer;
+  renderer->SetLayer(1);
+  renderer->PreserveDepthBufferOn();
+  renderer->InteractiveOff();
+  renderer->AutomaticLightCreationOff();
+  renderer->SetActiveCamera(walkthrough->GetActiveCamera());
+  window->AddRenderer(renderer);
+
+  for (std::size_t r = 0; r < names.size(); ++r)
+  {
+    const std::string& name = names[r];
+    const std::string depthImage = items[r].substr(items[r].find('=') + 1);
+    vtkNew<MessageCollector> messages;
+    vtkNew<vtkLightFieldReliefSurface> surface;
+    messages->Watch(surface);
+    vtkNew<MessageCollector> executiveNoise; // its "returned failure" follow-up
+    executiveNoise->Watch(surface->GetExecutive());
+    surface->SetLightFieldActor(actor);
+    surface->SetSurfaceName(name.c_str());
+    surface->Update();
+    if (!messages->Errors.empty())
+    {
+      std::cerr << command << ": --relief: " << messages->ErrorText() << "\n";
+      return 2;
+    }
+    ReliefSceneOptions textureOptions;
+    textureOptions.DepthFile = depthImage;
+    textureOptions.DepthScale = depthScale;
+    vtkSmartPointer<vtkImageData> texture;
+    vtkSmartPointer<vtkTexture> albedo;
+    if (!BuildReliefTextures(textureOptions, texture, albedo, error))
+    {
+      std::cerr << command << ": --relief: " << error << "\n";
+      return 2;
+    }
+    vtkNew<vtkReliefMapper> mapper;
+    mapper->SetInputConnection(surface->GetOutputPort(0));
+    mapper->SetReliefTextureData(texture);
+    mapper->SetIrradianceProbesConnection(surface->GetOutputPort(1));
+    vtkReliefProperty* property = mapper->GetReliefProperty();
+    property->SetDepthScale(depthScale);
+    property->SetSelfShadowing(true);
+    // A wall of a closed room has no silhouette: a view ray leaving the texture at its edge
+    // would show the background through the hidden wall (the CPU reference keeps the wall there).
+    property->SilhouettesOff();
+    vtkNew<vtkActor> relief;
+    relief->SetMapper(mapper);
+    const double* kd = surface->GetSurfaceDiffuse();
+    relief->GetProperty()->SetColor(kd[0], kd[1], kd[2]);
+    relief->GetProperty()->SetAmbient(0.0);
+    relief->GetProperty()->SetDiffuse(1.0);
+    relief->GetProperty()->SetSpecular(0.0);
+    renderer->AddActor(relief);
+    if (r == 0)
+    {
+      // The emitters are the field's, once for all reliefs.
+      vtkLightCollection* lights = surface->GetEmitterLights();
+      lights->InitTraversal();
+      while (vtkLight* light = lights->GetNextItem())
+      {
+        renderer->AddLight(light);
+      }
+    }
+    actor->AddHiddenSurface(name);
+    reliefs.Surfaces.emplace_back(surface);
+    reliefs.Actors.emplace_back(relief);
+  }
+  CopyDisplay(actor, reliefs);
+  reliefs.FollowDisplay->SetCallback(OnActorModified);
+  reliefs.FollowDisplay->SetClientData(&reliefs);
+  reliefs.FollowTag = actor->AddObserver(vtkCommand::ModifiedEvent, reliefs.FollowDisplay);
+  reliefs.Followed = actor;
+  return 0;
+}
+
+} // namespace mesolight

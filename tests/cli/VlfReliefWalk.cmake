@@ -1,0 +1,135 @@
+# SPDX-License-Identifier: BSD-3-Clause
+# `vlf view --relief` / `vlf render --mode M --relief` (application/LightFieldReliefs.h): the
+# Cornell box's back wall drawn by vtkReliefMapper in every walkthrough mode, lit by the field.
+# PART walk: where the CPU reference (`vlf render --relief`, an exact ray cast) sees the relief,
+# most of the walkthrough's pixels differ from the flat wall's; everywhere else (2 pixels clear of
+# it) the image is the run without --relief within 1 level: the flat wall is hidden, nothing else,
+# and the emitter lights reach the relief only (the geometry mode is lit by VTK lights too).
+# Negative: a relief on the floor instead fails the second check against the back wall's mask
+# (the check sees a change elsewhere), and the plain run against itself fails the first (no
+# relief pixel changed). Bad input exits 2 with the CPU reference's messages.
+# PART match: the walkthrough's relief against the CPU reference's, same camera: mean relative
+# error over the relief's pixels within 10% (needs the relief mapper's SH9 shading).
+include("${CMAKE_CURRENT_LIST_DIR}/RunTool.cmake")
+cli_fresh_work()
+
+cli_run(TRUE vlf propagate --directions 129 --rays 16 --iterations 3 --out "${WORK}/box.vlf")
+set(_grooves "P2\n16 16\n255\n")
+foreach (_row RANGE 15)
+  string(APPEND _grooves "0 0 0 0 255 255 255 255 0 0 0 0 255 255 255 255\n")
+endforeach ()
+file(WRITE "${WORK}/grooves.pgm" "${_grooves}")
+set(_size 96x96)
+set(_relief --relief back=${WORK}/grooves.pgm --relief-depth-scale 0.1)
+
+function (oiio)
+  execute_process(COMMAND "${OIIOTOOL}" ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out
+    ERROR_VARIABLE err)
+  if (NOT rc EQUAL 0)
+    message(FATAL_ERROR "oiiotool ${ARGN}: ${out}${err}")
+  endif ()
+endfunction ()
+
+# Where the relief is: the CPU reference with and without it (exact hits; the grooves change
+# every pixel of the wall), as a 0/1 mask, grown and shrunk by 2 pixels for the edges.
+cli_run(TRUE vlf render "${WORK}/box.vlf" --size ${_size} --out "${WORK}/cpu-flat.png"
+  --exr "${WORK}/cpu-flat.exr")
+cli_run(TRUE vlf render "${WORK}/box.vlf" --size ${_size} ${_relief} --out "${WORK}/cpu-relief.png"
+  --exr "${WORK}/cpu-relief.exr")
+oiio("${WORK}/cpu-flat.exr" "${WORK}/cpu-relief.exr" --absdiff --maxchan --mulc 1e6
+  --clamp:min=0:max=1 -o "${WORK}/mask.exr")
+oiio("${WORK}/mask.exr" --dilate 5x5 --mulc -1 --addc 1 -o "${WORK}/outside.exr")
+oiio("${WORK}/mask.exr" --erode 5x5 -o "${WORK}/inside.exr")
+exr_stat_milli("${WORK}/inside.exr" Avg _inside)
+if (_inside LESS 50)
+  message(FATAL_ERROR "the back wall covers ${_inside}/1000 of the CPU image: not the camera the "
+    "test expects")
+endif ()
+
+if (PART STREQUAL "walk")
+  foreach (_mode IN ITEMS geometry raytrace progressive coherent)
+    cli_run(TRUE vlf render "${WORK}/box.vlf" --mode ${_mode} --size ${_size}
+      --out "${WORK}/${_mode}-flat.png")
+    cli_run(TRUE vlf render "${WORK}/box.vlf" --mode ${_mode} --size ${_size} ${_relief}
+      --out "${WORK}/${_mode}-relief.png")
+    # Per pixel, the largest channel difference in [0, 1].
+    oiio("${WORK}/${_mode}-flat.png" "${WORK}/${_mode}-relief.png" --absdiff --maxchan
+      -o "${WORK}/${_mode}-diff.exr")
+    oiio("${WORK}/${_mode}-diff.exr" "${WORK}/outside.exr" --mul -o "${WORK}/${_mode}-out.exr")
+    exr_stat_milli("${WORK}/${_mode}-out.exr" Max _outside_max)
+    # Changed pixels (more than 1 level) among the relief's.
+    oiio("${WORK}/${_mode}-diff.exr" --subc 0.0045 --mulc 1e6 --clamp:min=0:max=1
+      "${WORK}/inside.exr" --mul -o "${WORK}/${_mode}-in.exr")
+    exr_stat_milli("${WORK}/${_mode}-in.exr" Avg _changed)
+    message("${_mode}: the relief changes ${_changed}/1000 of the image where the relief's core "
+      "covers ${_inside}/1000; elsewhere the largest change is ${_outside_max}/1000")
+    # Within 1 level (1/255 = 3.9/1000) away from the wall.
+    if (_outside_max GREATER 3)
+      message(FATAL_ERROR "${_mode}: --relief changed the image away from the relief surface "
+        "(by ${_outside_max}/1000)")
+    endif ()
+    math(EXPR _needed "${_inside} * 7 / 10")
+    if (_changed LESS _needed)
+      message(FATAL_ERROR "${_mode}: the relief's pixels are the flat wall's (${_changed}/1000 "
+        "of ${_inside}/1000 changed)")
+    endif ()
+  endforeach ()
+
+  # The checks can fail: the floor's relief is outside the back wall's mask.
+  cli_run(TRUE vlf render "${WORK}/box.vlf" --mode geometry --size ${_size}
+    --relief floor=${WORK}/grooves.pgm --out "${WORK}/floor-relief.png")
+  oiio("${WORK}/geometry-flat.png" "${WORK}/floor-relief.png" --absdiff --maxchan
+    "${WORK}/outside.exr" --mul -o "${WORK}/floor-out.exr")
+  exr_stat_milli("${WORK}/floor-out.exr" Max _floor_max)
+  if (NOT _floor_max GREATER 3)
+    message(FATAL_ERROR "a relief on the floor went unnoticed outside the back wall")
+  endif ()
+  oiio("${WORK}/geometry-flat.png" "${WORK}/geometry-flat.png" --absdiff --maxchan --subc 0.0045
+    --mulc 1e6 --clamp:min=0:max=1 "${WORK}/inside.exr" --mul -o "${WORK}/same-in.exr")
+  exr_stat_milli("${WORK}/same-in.exr" Avg _same)
+  if (NOT _same EQUAL 0)
+    message(FATAL_ERROR "an unchanged image counts as changed relief pixels")
+  endif ()
+
+  # The interactive viewer's check mode draws the relief too.
+  cli_expect(0 "rendered 3 frames" vlf view "${WORK}/box.vlf" --frames 3 --offscreen
+    --size 48x48 --mode coherent ${_relief})
+
+  # Bad input: the CPU reference's messages, exit 2.
+  foreach (_command IN ITEMS "vlf;render" "vlf;view")
+    if (_command STREQUAL "vlf;render")
+      set(_rest --mode progressive --size 16x16 --out "${WORK}/never.png")
+    else ()
+      set(_rest --frames 1 --offscreen --size 16x16)
+    endif ()
+    cli_expect_error(2 "its surfaces are: floor, ceiling, back, left, right, light, short, tall"
+      ${_command} "${WORK}/box.vlf" --relief wall=${WORK}/grooves.pgm ${_rest})
+    cli_expect_error(2 "Cannot read image" ${_command} "${WORK}/box.vlf"
+      --relief back=${WORK}/missing.png ${_rest})
+    cli_expect_error(2 "is not planar" ${_command} "${WORK}/box.vlf"
+      --relief tall=${WORK}/grooves.pgm ${_rest})
+    cli_expect_error(2 "give SURFACE=DEPTH_IMAGE" ${_command} "${WORK}/box.vlf" --relief back
+      ${_rest})
+    cli_expect_error(2 "names surface 'back' twice" ${_command} "${WORK}/box.vlf"
+      --relief back=${WORK}/grooves.pgm --relief back=${WORK}/grooves.pgm ${_rest})
+  endforeach ()
+  cli_expect_error(2 "--out" vlf render "${WORK}/box.vlf" --mode geometry
+    --relief back=${WORK}/grooves.pgm --out "${WORK}/grooves.pgm" --force)
+elseif (PART STREQUAL "match")
+  # sRGB-encoded PNGs of both (exposure 1, clamp): decoded to linear, compared over the relief.
+  cli_run(TRUE vlf render "${WORK}/box.vlf" --mode progressive --size ${_size} ${_relief}
+    --out "${WORK}/gpu-relief.png")
+  # (x 100: exr_stat_milli's thousandths then resolve 0.1% of the image's mean.)
+  foreach (_which IN ITEMS gpu cpu)
+    oiio("${WORK}/${_which}-relief.png" --tocolorspace linear --ch 0 "${WORK}/inside.exr" --mul
+      --mulc 100 -o "${WORK}/${_which}-in.exr")
+  endforeach ()
+  oiio("${WORK}/gpu-in.exr" "${WORK}/cpu-in.exr" --absdiff -o "${WORK}/error.exr")
+  exr_stat_milli("${WORK}/error.exr" Avg _error)
+  exr_stat_milli("${WORK}/cpu-in.exr" Avg _reference)
+  message("relief, red: mean |GPU - CPU| ${_error}, CPU mean ${_reference} (1/100000 of the image)")
+  math(EXPR _allowed "${_reference} / 10")
+  if (_error GREATER _allowed)
+    message(FATAL_ERROR "the walkthrough's relief is not the CPU reference's within 10%")
+  endif ()
+endif ()

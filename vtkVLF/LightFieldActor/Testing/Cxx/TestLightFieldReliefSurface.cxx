@@ -1,0 +1,338 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// vtkLightFieldReliefSurface: a named surface of a field's scene made ready for vtkReliefMapper.
+// The probe image is checked against the exact integrals of the field's incident radiance
+// (IncidentIrradiance over its 2K line samples, not the SH projection) at the points its own
+// texture coordinates give, for several normals; the emitter lights against the emitting
+// surface's world area and radiance; bad input against its messages.
+#include "vtkLightFieldReliefSurface.h"
+
+#include "vtkLightFieldActor.h"
+#include "vtkLightFieldActorCore.h"
+#include "vtkCornellBoxSource.h"
+#include "vtkVirtualLightField.h"
+#include "vtkVirtualLightFieldCore.h"
+
+#include "FieldIrradiance.h"
+#include "LightField.h"
+#include "MessageCapture.h"
+#include "PatchComparison.h" // ToUnit, ToWorld
+#include "ReliefSurface.h"
+#include "TriangleScene.h"
+#include "WalkthroughTestFields.h"
+
+#include <vtkCallbackCommand.h>
+#include <vtkCellArray.h>
+#include <vtkDataArray.h>
+#include <vtkImageData.h>
+#include <vtkLight.h>
+#include <vtkLightCollection.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+
+#include <glm/geometric.hpp>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <iostream>
+
+namespace
+{
+using namespace mesolight;
+namespace vlf = mesolight::vlf;
+
+// The world point of the output polydata at texture (u, v): barycentric in its triangles' uv.
+bool PointAtTexture(vtkPolyData* poly, double u, double v, glm::dvec3& point)
+{
+  vtkDataArray* tc = poly->GetPointData()->GetTCoords();
+  const vtkIdType* ids = nullptr;
+  vtkIdType count = 0;
+  vtkCellArray* polys = poly->GetPolys();
+  for (polys->InitTraversal(); polys->GetNextCell(count, ids);)
+  {
+    double t[3][2];
+    glm::dvec3 p[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      tc->GetTuple(ids[k], t[k]);
+      double x[3];
+      poly->GetPoint(ids[k], x);
+      p[k] = glm::dvec3(x[0], x[1], x[2]);
+    }
+    const double d = (t[1][0] - t[0][0]) * (t[2][1] - t[0][1]) - (t[2][0] - t[0][0]) * (t[1][1] - t[0][1]);
+    const double b1 = ((u - t[0][0]) * (t[2][1] - t[0][1]) - (t[2][0] - t[0][0]) * (v - t[0][1])) / d;
+    const double b2 = ((t[1][0] - t[0][0]) * (v - t[0][1]) - (u - t[0][0]) * (t[1][1] - t[0][1])) / d;
+    if (b1 >= -1e-9 && b2 >= -1e-9 && b1 + b2 <= 1.0 + 1e-9)
+    {
+      point = p[0] + b1 * (p[1] - p[0]) + b2 * (p[2] - p[0]);
+      return true;
+    }
+  }
+  return false;
+}
+
+glm::dvec3 ProbeIrradiance(vtkImageData* probes, int i, int j, const glm::dvec3& n)
+{
+  SH9 sh;
+  for (int k = 0; k < 9; ++k)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      sh.L[k][c] = probes->GetScalarComponentAsDouble(9 * i + k, j, 0, c);
+    }
+  }
+  const double normal[3] = { n.x, n.y, n.z };
+  double e[3];
+  IrradianceSH9(sh, normal, e);
+  return glm::dvec3(e[0], e[1], e[2]);
+}
+
+struct ReliefSurfaceFixture
+{
+  vtkNew<vtkLightFieldActor> Actor;
+  vtkNew<vtkLightFieldReliefSurface> Surface;
+  vtkNew<mesolight_test::MessageCapture> Messages;
+  const vlf::LightField& Field = walkthroughtest::PlainCornellField(129);
+  ReliefSurfaceFixture(const char* name, int probes = 4)
+  {
+    vtkLightFieldActorCore::SetLightField(this->Actor, &this->Field);
+    this->Messages->Watch(this->Surface);
+    this->Surface->SetLightFieldActor(this->Actor);
+    this->Surface->SetSurfaceName(name);
+    this->Surface->SetProbesPerSide(probes);
+    this->Surface->Update();
+  }
+};
+
+// The largest relative difference, over probes and normals, between the probe image's SH
+// irradiance and the exact sum over the field's samples at the point its texture gives; with
+// `transposed` the image's probe (j, i) stands for (i, j) (the negative case).
+double WorstProbeError(ReliefSurfaceFixture& f, bool transposed, bool emission)
+{
+  vtkPolyData* poly = f.Surface->GetOutput();
+  vtkImageData* probes = f.Surface->GetProbesOutput();
+  const int n = f.Surface->GetProbesPerSide();
+  double* nw = poly->GetPointData()->GetNormals()->GetTuple3(0);
+  const glm::dvec3 normal = glm::normalize(glm::dvec3(nw[0], nw[1], nw[2]));
+  const glm::dvec3 side = glm::normalize(glm::cross(normal, glm::dvec3(0.0, 1.0, 0.0)));
+  const glm::dvec3 up = glm::cross(side, normal);
+  const glm::dvec3 normals[5] = { normal, glm::normalize(normal + side),
+    glm::normalize(normal - side), glm::normalize(normal + up), glm::normalize(normal - up) };
+  vlf::IncidentOptions options;
+  options.Ignore = vlf::FindReliefSurface(f.Field, f.Surface->GetSurfaceName()).FieldSurface;
+  options.Emission = emission;
+  double worst = 0.0;
+  for (int j = 0; j < n; ++j)
+  {
+    for (int i = 0; i < n; ++i)
+    {
+      glm::dvec3 world;
+      EXPECT_TRUE(PointAtTexture(poly, (i + 0.5) / n, (j + 0.5) / n, world));
+      const glm::vec3 unit =
+        vlf::ToUnit(f.Field, glm::vec3(world)) + 1e-3f * glm::vec3(normal);
+      const auto samples = vlf::IncidentRadianceSamples(f.Field, unit, options);
+      for (const glm::dvec3& m : normals)
+      {
+        const glm::dvec3 exact(vlf::IncidentIrradiance(samples, glm::vec3(m)));
+        const glm::dvec3 image =
+          transposed ? ProbeIrradiance(probes, j, i, m) : ProbeIrradiance(probes, i, j, m);
+        const double scale = std::max(exact.x, std::max(exact.y, exact.z));
+        for (int c = 0; c < 3; ++c)
+        {
+          worst = std::max(worst, std::abs(image[c] - exact[c]) / scale);
+        }
+      }
+    }
+  }
+  return worst;
+}
+} // namespace
+
+TEST(LightFieldReliefSurface, ProbesAreTheFieldsIndirectIrradianceAtTheirTexturePoints)
+{
+  ReliefSurfaceFixture f("back");
+  ASSERT_TRUE(f.Messages->Errors.empty()) << f.Messages->AllErrors();
+  vtkImageData* probes = f.Surface->GetProbesOutput();
+  int dims[3];
+  probes->GetDimensions(dims);
+  EXPECT_EQ(dims[0], 36);
+  EXPECT_EQ(dims[1], 4);
+  EXPECT_EQ(probes->GetNumberOfScalarComponents(), 3);
+  // SH9 irradiance is within a few percent of the exact one for smooth light (Ramamoorthi and
+  // Hanrahan: at most 9% for any light); the indirect light on the back wall is smooth.
+  const double error = WorstProbeError(f, false, false);
+  EXPECT_LT(error, 0.06);
+  // Negative: the probes read transposed (the red and green walls swap sides), or compared with
+  // the emitters' light included, are far off.
+  const double transposed = WorstProbeError(f, true, false);
+  const double withEmitters = WorstProbeError(f, false, true);
+  std::cout << "worst relative irradiance error: probes " << error << ", read transposed "
+            << transposed << ", against the light with the emitters " << withEmitters << "\n";
+  EXPECT_GT(transposed, 2.0 * error);
+  EXPECT_GT(withEmitters, 0.5);
+}
+
+TEST(LightFieldReliefSurface, PolygonsCarryThePlanesTextureCoordinatesInWorldCoordinates)
+{
+  ReliefSurfaceFixture f("back");
+  vtkPolyData* poly = f.Surface->GetOutput();
+  const std::vector<std::size_t> triangles = SurfaceTriangles(f.Field.Scene(), "back");
+  ASSERT_EQ(poly->GetNumberOfPolys(), static_cast<vtkIdType>(triangles.size()));
+  double range[2][2];
+  poly->GetPointData()->GetTCoords()->GetRange(range[0], 0);
+  poly->GetPointData()->GetTCoords()->GetRange(range[1], 1);
+  for (int a = 0; a < 2; ++a)
+  {
+    EXPECT_NEAR(range[a][0], 0.0, 1e-5);
+    EXPECT_NEAR(range[a][1], 1.0, 1e-5);
+  }
+  // Its points are the scene's, in world coordinates; the normal faces into the room.
+  double bounds[6];
+  poly->GetBounds(bounds);
+  for (const std::size_t t : triangles)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      const glm::vec3 world = vlf::ToWorld(f.Field, f.Field.Scene().Vertex(t, c));
+      for (int a = 0; a < 3; ++a)
+      {
+        EXPECT_GE(world[a], bounds[2 * a] - 1e-3);
+        EXPECT_LE(world[a], bounds[2 * a + 1] + 1e-3);
+      }
+    }
+  }
+  const glm::vec3 centre = vlf::ToWorld(f.Field, glm::vec3(0.0f));
+  double x[3], nrm[3];
+  poly->GetPoint(0, x);
+  poly->GetPointData()->GetNormals()->GetTuple(0, nrm);
+  EXPECT_GT(glm::dot(glm::dvec3(centre) - glm::dvec3(x[0], x[1], x[2]),
+              glm::dvec3(nrm[0], nrm[1], nrm[2])),
+    0.0);
+}
+
+TEST(LightFieldReliefSurface, EmitterLightsCarryRadiantIntensityInWorldUnits)
+{
+  ReliefSurfaceFixture f("back", 1);
+  vtkLightCollection* lights = f.Surface->GetEmitterLights();
+  ASSERT_EQ(lights->GetNumberOfItems(), 1);
+  lights->InitTraversal();
+  vtkLight* light = lights->GetNextItem();
+  // The Cornell box's light: Le times its area, both from the scene, the area in world units.
+  const TriangleScene& scene = f.Field.Scene();
+  double area = 0.0;
+  glm::dvec3 centroid(0.0);
+  glm::vec3 le(0.0f);
+  for (const std::size_t t : SurfaceTriangles(scene, "light"))
+  {
+    const glm::dvec3 a(vlf::ToWorld(f.Field, scene.Vertex(t, 0)));
+    const glm::dvec3 b(vlf::ToWorld(f.Field, scene.Vertex(t, 1)));
+    const glm::dvec3 c(vlf::ToWorld(f.Field, scene.Vertex(t, 2)));
+    const double at = 0.5 * glm::length(glm::cross(b - a, c - a));
+    area += at;
+    centroid += at * (a + b + c) / 3.0;
+    le = scene.MaterialOf(t).Emission;
+  }
+  centroid /= area;
+  double* colour = light->GetDiffuseColor();
+  for (int c = 0; c < 3; ++c)
+  {
+    EXPECT_NEAR(light->GetIntensity() * colour[c], le[c] * area, 1e-3 * le[c] * area);
+    EXPECT_NEAR(light->GetPosition()[c], centroid[c], 1e-3);
+  }
+  EXPECT_TRUE(light->GetPositional());
+  EXPECT_DOUBLE_EQ(light->GetConeAngle(), 90.0);
+  EXPECT_DOUBLE_EQ(light->GetExponent(), 1.0);
+  EXPECT_DOUBLE_EQ(light->GetAttenuationValues()[2], 1.0);
+  // Facing down into the box.
+  EXPECT_LT(light->GetFocalPoint()[1], light->GetPosition()[1]);
+}
+
+TEST(LightFieldReliefSurface, BadInputIsReported)
+{
+  {
+    ReliefSurfaceFixture f("wall", 1);
+    EXPECT_TRUE(
+      f.Messages->HasError("its surfaces are: floor, ceiling, back, left, right, light, short, tall"))
+      << f.Messages->AllErrors();
+    EXPECT_EQ(f.Surface->GetOutput()->GetNumberOfPoints(), 0);
+  }
+  {
+    ReliefSurfaceFixture f("tall", 1);
+    EXPECT_TRUE(f.Messages->HasError("is not planar")) << f.Messages->AllErrors();
+  }
+  {
+    vtkNew<vtkLightFieldReliefSurface> surface;
+    vtkNew<mesolight_test::MessageCapture> messages;
+    messages->Watch(surface);
+    surface->SetSurfaceName("back");
+    surface->Update();
+    EXPECT_TRUE(messages->HasError("needs a light field")) << messages->AllErrors();
+  }
+}
+
+TEST(LightFieldReliefSurface, AbortStopsWithoutError)
+{
+  vtkNew<vtkLightFieldActor> actor;
+  vtkLightFieldActorCore::SetLightField(actor, &walkthroughtest::PlainCornellField(129));
+  vtkNew<vtkLightFieldReliefSurface> surface;
+  vtkNew<mesolight_test::MessageCapture> messages;
+  messages->Watch(surface);
+  surface->SetLightFieldActor(actor);
+  surface->SetSurfaceName("back");
+  int reports = 0;
+  vtkNew<vtkCallbackCommand> abort;
+  abort->SetClientData(&reports);
+  abort->SetCallback(
+    [](vtkObject* caller, unsigned long, void* data, void*)
+    {
+      ++*static_cast<int*>(data);
+      static_cast<vtkLightFieldReliefSurface*>(caller)->SetAbortExecute(1);
+    });
+  surface->AddObserver(vtkCommand::ProgressEvent, abort);
+  surface->Update();
+  EXPECT_GE(reports, 1);
+  EXPECT_TRUE(messages->Errors.empty()) << messages->AllErrors();
+  EXPECT_EQ(surface->GetOutput()->GetNumberOfPoints(), 0);
+}
+
+TEST(LightFieldReliefSurface, ProbesAreRecomputedForANewFieldOnly)
+{
+  ReliefSurfaceFixture f("back", 2);
+  int runs = 0;
+  vtkNew<vtkCallbackCommand> count;
+  count->SetClientData(&runs);
+  count->SetCallback(
+    [](vtkObject*, unsigned long, void* data, void*) { ++*static_cast<int*>(data); });
+  f.Surface->AddObserver(vtkCommand::StartEvent, count);
+  // The walkthrough's settings change the actor, not its field.
+  f.Actor->SetExposure(2.0);
+  f.Actor->AddHiddenSurface("back");
+  f.Surface->Update();
+  EXPECT_EQ(runs, 0);
+  // Another field (the mirror box, which has a back wall too): new outputs.
+  vtkLightFieldActorCore::SetLightField(f.Actor, &walkthroughtest::MirrorCornellField(129));
+  f.Surface->Update();
+  EXPECT_EQ(runs, 1);
+}
+
+// The filter route: the scene comes as polydata (vtkTriangleSceneConverter), which carries no
+// surface names, so no surface is found and the message says why and what to do.
+TEST(LightFieldReliefSurface, AVirtualLightFieldFiltersSceneHasNoNames)
+{
+  vtkNew<vtkCornellBoxSource> box;
+  vtkNew<vtkVirtualLightField> field;
+  field->SetInputConnection(box->GetOutputPort());
+  field->SetDirections(33);
+  field->SetRaysPerSide(8);
+  field->SetIterations(1);
+  vtkNew<vtkLightFieldReliefSurface> surface;
+  vtkNew<mesolight_test::MessageCapture> messages;
+  messages->Watch(surface);
+  surface->SetLightFieldConnection(field->GetOutputPort());
+  surface->SetSurfaceName("floor");
+  surface->SetProbesPerSide(2);
+  surface->Update();
+  ASSERT_NE(vtkVirtualLightFieldCore::GetLightField(field), nullptr);
+  EXPECT_TRUE(messages->HasError("a field propagated from polydata has no surface names"))
+    << messages->AllErrors();
+}

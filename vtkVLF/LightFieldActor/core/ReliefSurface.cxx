@@ -1,0 +1,216 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "ReliefSurface.h"
+
+#include "FieldIrradiance.h"
+#include "LightField.h"
+#include "ParallelFor.h"
+#include "TriangleScene.h"
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+#include <glm/mat3x3.hpp>
+#include <glm/matrix.hpp>
+#include <glm/vec2.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace mesolight
+{
+namespace vlf
+{
+namespace
+{
+// Points this far off a surface's plane (unit-sphere units, the field's own plane tolerance)
+// make it non-planar, unless within PlaneExtentTolerance of its extent: the published Cornell
+// box's red wall bends by 3.2 mm over 559 mm (0.6%), which the relief's macro plane (through the
+// points' centroid) leaves at most 1.6 mm off, far below a relief's depth.
+constexpr float PlaneTolerance = 1e-4f;
+constexpr double PlaneExtentTolerance = 0.01;
+
+std::string Quoted(const std::string& text)
+{
+  return "'" + text + "'";
+}
+} // namespace
+
+glm::dvec3 ReliefSurface::TextureOf(const glm::dvec3& point) const
+{
+  const glm::dmat3 m(this->AxisU, this->AxisV, this->Normal);
+  return glm::inverse(m) * (point - this->Origin);
+}
+
+ReliefSurface FindReliefSurface(const LightField& field, const std::string& name)
+{
+  const TriangleScene& scene = field.Scene();
+  ReliefSurface surface;
+  surface.Name = name;
+  try
+  {
+    surface.Triangles = SurfaceTriangles(scene, name);
+  }
+  catch (const SceneSurfaceError& e)
+  {
+    throw ReliefSurfaceError(e.what());
+  }
+  const std::vector<std::size_t>& triangles = surface.Triangles;
+  const SceneMaterial& material = scene.MaterialOf(triangles[0]);
+  if (glm::length(material.Specular) > 0.0f)
+  {
+    throw ReliefSurfaceError("surface " + Quoted(name) + " is a mirror (material " +
+      Quoted(material.Name) + ", Ks > 0): reliefs are diffuse so far");
+  }
+  surface.Diffuse = material.Diffuse;
+  surface.Emission = material.Emission;
+  surface.FieldSurface = field.SurfaceOfTriangle(triangles[0]);
+
+  // The texture frame: from its texture coordinates when the scene has them (one affine map of
+  // the plane), else from its plane (u along the plane's horizontal, v up it, the bounding
+  // rectangle of its points mapped to [0, 1]^2).
+  glm::dvec3 normal(0.0);
+  for (const std::size_t t : triangles)
+  {
+    normal += glm::dvec3(scene.FaceNormal(t));
+  }
+  if (!(glm::length(normal) > 0.0))
+  {
+    throw ReliefSurfaceError("surface " + Quoted(name) + " has no area");
+  }
+  normal = glm::normalize(normal);
+  glm::dvec3 p0(0.0), lower(1e30), upper(-1e30);
+  for (const std::size_t t : triangles)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      const glm::dvec3 p(scene.Vertex(t, c));
+      p0 += p / (3.0 * static_cast<double>(triangles.size()));
+      lower = glm::min(lower, p);
+      upper = glm::max(upper, p);
+    }
+  }
+  double off = 0.0;
+  for (const std::size_t t : triangles)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      off = std::max(off, std::abs(glm::dot(normal, glm::dvec3(scene.Vertex(t, c)) - p0)));
+    }
+  }
+  const bool tcoords =
+    scene.TextureCoordinates.size() == scene.Positions.size() && !scene.TextureCoordinates.empty();
+  const double allowed =
+    std::max<double>(PlaneTolerance, PlaneExtentTolerance * glm::length(upper - lower));
+  if (off > allowed)
+  {
+    std::ostringstream message;
+    message << "surface " << Quoted(name) << " is not planar (its points lie up to " << off
+            << " scene radii off its plane): a relief needs a planar surface"
+            << (tcoords ? "" : " or texture coordinates")
+            << "; split it into planar surfaces with their own `g` names in the OBJ file";
+    if (!tcoords)
+    {
+      message << ", or give it texture coordinates (vt) on planar pieces";
+    }
+    throw ReliefSurfaceError(message.str());
+  }
+  surface.Normal = normal;
+  surface.SceneTextureCoordinates = tcoords;
+  if (tcoords)
+  {
+    // The affine map of the first triangle, checked against every point of the surface.
+    const glm::uvec3 tri = scene.Triangles[triangles[0]];
+    const glm::dvec3 a(scene.Positions[tri[0]]), b(scene.Positions[tri[1]]),
+      c(scene.Positions[tri[2]]);
+    const glm::dvec2 ta(scene.TextureCoordinates[tri[0]]), tb(scene.TextureCoordinates[tri[1]]),
+      tc(scene.TextureCoordinates[tri[2]]);
+    const double du1 = tb.x - ta.x, dv1 = tb.y - ta.y, du2 = tc.x - ta.x, dv2 = tc.y - ta.y;
+    const double det = du1 * dv2 - du2 * dv1;
+    if (!(std::abs(det) > 1e-12))
+    {
+      throw ReliefSurfaceError("surface " + Quoted(name) +
+        " has degenerate texture coordinates (a triangle maps to a line)");
+    }
+    surface.AxisU = ((b - a) * dv2 - (c - a) * dv1) / det;
+    surface.AxisV = ((c - a) * du1 - (b - a) * du2) / det;
+    surface.Origin = a - ta.x * surface.AxisU - ta.y * surface.AxisV;
+    for (const std::size_t t : triangles)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        const std::uint32_t v = scene.Triangles[t][k];
+        const glm::dvec2 uv(scene.TextureCoordinates[v]);
+        if (glm::length(surface.Point(uv.x, uv.y) - glm::dvec3(scene.Positions[v])) >
+          2.0 * allowed + 10.0 * PlaneTolerance)
+        {
+          throw ReliefSurfaceError("the texture coordinates of surface " + Quoted(name) +
+            " are not one affine map of its plane; give it planar, undistorted (vt) coordinates "
+            "or none (then its plane gives them)");
+        }
+      }
+    }
+    return surface;
+  }
+  const glm::dvec3 helper = std::abs(normal.y) < 0.9 ? glm::dvec3(0, 1, 0) : glm::dvec3(0, 0, 1);
+  const glm::dvec3 v = glm::normalize(helper - normal * glm::dot(normal, helper));
+  const glm::dvec3 u = glm::cross(v, normal);
+  double lowU = 1e30, highU = -1e30, lowV = 1e30, highV = -1e30;
+  for (const std::size_t t : triangles)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const glm::dvec3 p = glm::dvec3(scene.Vertex(t, k)) - p0;
+      lowU = std::min(lowU, glm::dot(p, u));
+      highU = std::max(highU, glm::dot(p, u));
+      lowV = std::min(lowV, glm::dot(p, v));
+      highV = std::max(highV, glm::dot(p, v));
+    }
+  }
+  surface.Origin = p0 + lowU * u + lowV * v;
+  surface.AxisU = (highU - lowU) * u;
+  surface.AxisV = (highV - lowV) * v;
+  return surface;
+}
+
+glm::vec3 ReliefProbePoint(const ReliefSurface& surface, int i, int j, int probesU, int probesV)
+{
+  const double u = (i + 0.5) / probesU;
+  const double v = (j + 0.5) / probesV;
+  return glm::vec3(surface.Point(u, v) + 1e-3 * surface.Normal);
+}
+
+std::vector<SH9> ReliefSurfaceProbes(const LightField& field, const ReliefSurface& surface,
+  int probesU, int probesV, const ProgressCallback& progress)
+{
+  if (probesU < 1 || probesV < 1)
+  {
+    throw std::invalid_argument("a relief needs at least one irradiance probe per side");
+  }
+  std::vector<SH9> probes(static_cast<std::size_t>(probesU) * static_cast<std::size_t>(probesV));
+  IncidentOptions incident;
+  incident.Ignore = surface.FieldSurface;
+  incident.Emission = false;
+  for (int j = 0; j < probesV; ++j)
+  {
+    if (!ReportProgress(progress, static_cast<double>(j) / probesV))
+    {
+      throw AbortedError();
+    }
+    ParallelFor(0, static_cast<std::size_t>(probesU), 1,
+      [&](std::size_t begin, std::size_t end)
+      {
+        for (std::size_t i = begin; i < end; ++i)
+        {
+          const glm::vec3 p =
+            ReliefProbePoint(surface, static_cast<int>(i), j, probesU, probesV);
+          probes[static_cast<std::size_t>(j) * probesU + i] =
+            ProjectIncidentSH9(IncidentRadianceSamples(field, p, incident));
+        }
+      });
+  }
+  ReportProgress(progress, 1.0);
+  return probes;
+}
+
+} // namespace vlf
+} // namespace mesolight

@@ -1,0 +1,78 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// ReliefSurface: a named planar surface of a light field's scene made ready to carry a relief
+// lit by the field (docs/vlf.md, "Relief surfaces in a light field"), for both renderers of
+// such surfaces: the CPU reference (`mesolight vlf render --relief`, application/VlfRelief.cxx)
+// and the walkthrough's relief mapper (vtkLightFieldReliefSurface). What they share is here,
+// once: which triangles the name means, the surface's texture frame (from its texture
+// coordinates when the scene has them, else from its plane), and its indirect light as SH9
+// radiance probes over that texture (FieldIrradiance, the emitters' own radiance left out: both
+// renderers add the emitters as lights of their own). Plain C++ (GLM), unit-sphere coordinates.
+#ifndef mesolight_vlf_ReliefSurface_h
+#define mesolight_vlf_ReliefSurface_h
+
+#include "EnvironmentMaps.h" // SH9
+#include "Progress.h"
+
+#include <glm/vec3.hpp>
+
+#include <cstddef>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace mesolight
+{
+namespace vlf
+{
+class LightField;
+
+// A surface that cannot carry a relief (unknown name: the message lists the scene's names; not
+// planar; a mirror; degenerate texture coordinates). what() says how to fix it.
+class ReliefSurfaceError : public std::runtime_error
+{
+public:
+  using std::runtime_error::runtime_error;
+};
+
+// SH9 probes per side of the texture unless told otherwise (the CPU reference's and the
+// walkthrough's default: the field's indirect light varies slowly over a wall).
+constexpr int DefaultReliefProbesPerSide = 8;
+
+struct ReliefSurface
+{
+  std::string Name;
+  std::vector<std::size_t> Triangles; // the scene's, in scene order
+  std::uint32_t FieldSurface = 0;     // the field surface of its first triangle
+  // The affine texture map of its plane: texture (u, v) is Origin + u AxisU + v AxisV; Normal is
+  // the unit front side (the field surface's).
+  glm::dvec3 Origin{ 0.0 };
+  glm::dvec3 AxisU{ 1.0, 0.0, 0.0 };
+  glm::dvec3 AxisV{ 0.0, 1.0, 0.0 };
+  glm::dvec3 Normal{ 0.0, 0.0, 1.0 };
+  glm::vec3 Diffuse{ 0.0f };
+  glm::vec3 Emission{ 0.0f };
+  bool SceneTextureCoordinates = false; // the frame came from the scene's vt, not the plane
+
+  glm::dvec3 Point(double u, double v) const { return this->Origin + u * this->AxisU + v * this->AxisV; }
+  // The texture coordinates of a point of its plane.
+  glm::dvec3 TextureOf(const glm::dvec3& point) const;
+};
+
+// The surface of that name (OBJ g/o name, or a Cornell box name). Throws ReliefSurfaceError.
+ReliefSurface FindReliefSurface(const LightField& field, const std::string& name);
+
+// The field's indirect light over the surface: probesU x probesV SH9 radiance projections
+// (ProjectIncidentSH9 of IncidentRadianceSamples, emitters left out, the surface's own crossing
+// ignored), probe (i, j) at texture ((i + 1/2) / probesU, (j + 1/2) / probesV) just in front of
+// the plane; row-major, j slowest. Reports progress per row; a stop throws AbortedError.
+std::vector<SH9> ReliefSurfaceProbes(const LightField& field, const ReliefSurface& surface,
+  int probesU, int probesV, const ProgressCallback& progress = {});
+
+// Where probe (i, j) stands (unit sphere): its texture point lifted off the plane by 1e-3.
+glm::vec3 ReliefProbePoint(const ReliefSurface& surface, int i, int j, int probesU, int probesV);
+
+} // namespace vlf
+} // namespace mesolight
+
+#endif

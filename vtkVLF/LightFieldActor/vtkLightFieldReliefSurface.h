@@ -1,0 +1,117 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @class   vtkLightFieldReliefSurface
+ * @brief   a named surface of a light field's scene, made ready for vtkReliefMapper lit by the
+ *          field: its polygons, its indirect light as SH9 probes, the emitters as VTK lights
+ *
+ * The light field comes from a vtkLightFieldActor (SetLightFieldActor: the field it shows, e.g.
+ * loaded from a snapshot) or from a vtkVirtualLightField connected to input port 0
+ * (SetLightFieldConnection; its scene came as polydata, which carries no surface names yet, so
+ * this route finds none and says so). SurfaceName names one planar surface of the field's scene: an OBJ
+ * `g`/`o` name or a Cornell box name (floor, ceiling, back, left, right, short, tall). Outputs:
+ *
+ * - port 0: the surface's triangles in world coordinates with point normals (its front side)
+ *   and texture coordinates: the scene's own when it has them (one affine map of the plane),
+ *   else from its plane, u along its horizontal and v up it over its bounding rectangle (the
+ *   rule of `mesolight vlf render --relief`: both use mesolight::vlf::FindReliefSurface,
+ *   core/ReliefSurface.h). The input of a vtkReliefMapper.
+ * - port 1: the field's indirect light over that texture, the emitters' own radiance left out,
+ *   as vtkReliefMapper::SetIrradianceProbesData takes it: a (9 ProbesPerSide) x ProbesPerSide
+ *   float image of 3 components, pixel (9 i + k, j) SH9 coefficient k of probe (i, j) at texture
+ *   ((i + 1/2) / n, (j + 1/2) / n) (mesolight::vlf::ReliefSurfaceProbes).
+ * - GetEmitterLights(): the field's emitters as VTK lights (mesolight::vlf::EstimateEmitterLights,
+ *   one per emitting surface at its centroid), world coordinates: positional spot lights facing
+ *   along the emitter's normal, cone 90 degrees, exponent 1 (a cosine lobe), attenuation
+ *   (0, 0, 1) (inverse square), colour times intensity the radiant intensity Le x Area in world
+ *   units. Add them to the renderer that draws the relief only (a renderer of their own: the
+ *   walkthrough's geometry mode is lit by its renderer's lights).
+ *
+ * GetSurfaceDiffuse() is the surface's Kd (the relief actor's colour). An unknown name (the
+ * message lists the scene's surfaces), a non-planar surface without texture coordinates, a
+ * mirror, or no field are errors (vtkErrorMacro, empty outputs). Probe computation reports
+ * progress; AbortExecute stops it (empty outputs, no error).
+ */
+#ifndef vtkLightFieldReliefSurface_h
+#define vtkLightFieldReliefSurface_h
+
+#include "MesolightLightFieldActorModule.h" // For export macro
+#include "vtkNew.h"                         // For vtkNew
+#include "vtkPolyDataAlgorithm.h"
+
+#include <string> // For std::string
+
+class vtkAlgorithmOutput;
+class vtkImageData;
+class vtkLight;
+class vtkLightCollection;
+class vtkLightFieldActor;
+
+class MESOLIGHTLIGHTFIELDACTOR_EXPORT vtkLightFieldReliefSurface : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkLightFieldReliefSurface* New();
+  vtkTypeMacro(vtkLightFieldReliefSurface, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /** The field: the one a walkthrough actor shows (takes precedence), or a vtkVirtualLightField
+   * connected to input port 0. */
+  void SetLightFieldActor(vtkLightFieldActor* actor);
+  vtkLightFieldActor* GetLightFieldActor() { return this->LightFieldActor; }
+  void SetLightFieldConnection(vtkAlgorithmOutput* output);
+  ///@}
+
+  ///@{
+  /** The surface's name in the field's scene. */
+  vtkSetStdStringFromCharMacro(SurfaceName);
+  vtkGetCharFromStdStringMacro(SurfaceName);
+  ///@}
+
+  ///@{
+  /** SH9 probes per side of the texture (default 8, mesolight::vlf::DefaultReliefProbesPerSide). */
+  vtkSetClampMacro(ProbesPerSide, int, 1, 256);
+  vtkGetMacro(ProbesPerSide, int);
+  ///@}
+
+  /** The probe image (output port 1). */
+  vtkImageData* GetProbesOutput();
+
+  /** The emitters as VTK lights, rebuilt by every update (empty when it failed). */
+  vtkLightCollection* GetEmitterLights() { return this->EmitterLights; }
+
+  /** The surface's diffuse reflectance (Kd) after an update. */
+  vtkGetVector3Macro(SurfaceDiffuse, double);
+
+  /**
+   * Sets `light` up as an emitter (see above): at `position` facing along unit `normal`, world
+   * coordinates, radiant intensity `intensity` (RGB, Le x Area) along the normal.
+   */
+  static void ConfigureEmitterLight(
+    vtkLight* light, const double position[3], const double normal[3], const double intensity[3]);
+
+  vtkMTimeType GetMTime() override;
+
+protected:
+  vtkLightFieldReliefSurface();
+  ~vtkLightFieldReliefSurface() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int FillOutputPortInformation(int port, vtkInformation* info) override;
+  int RequestInformation(vtkInformation* request, vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
+  int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
+
+private:
+  vtkLightFieldReliefSurface(const vtkLightFieldReliefSurface&) = delete;
+  void operator=(const vtkLightFieldReliefSurface&) = delete;
+
+  vtkLightFieldActor* LightFieldActor = nullptr;
+  std::string SurfaceName;
+  int ProbesPerSide;
+  double SurfaceDiffuse[3] = { 0.0, 0.0, 0.0 };
+  vtkNew<vtkLightCollection> EmitterLights;
+  const void* ExecutedField = nullptr; // the actor's field the outputs were made from
+};
+
+#endif
