@@ -91,11 +91,12 @@ bool mlMeetsCell(vec3 origin, vec3 span, vec2 dx, vec2 a0, vec4 d, float s0, flo
 // (split where the ray crosses the cell's midlines). The ray skips the cell when it stays above
 // every child's bound, descends into the first child it may meet, and at level 1 tests the
 // children's bilinear patches exactly (one level-0 fetch each, only for the children it may
-// meet). maxIterations bounds the work.
+// meet). maxIterations bounds the work; past tEnd (<= 1) the ray is of no interest and the
+// trace returns 1.
 // The loop body is free of square roots and divisions: on SIMD hardware that runs fragments in
 // lock step (and on llvmpipe, which executes every branch any lane takes) an iteration costs the
 // sum of its branches.
-float mlTraceMaxMipmap(vec3 origin, vec3 span, int maxIterations)
+float mlTraceMaxMipmap(vec3 origin, vec3 span, int maxIterations, float tEnd)
 {
   ivec2 cells0 = ivec2(mlTextureSize) + 1;
   int top = max(mlPyramidLevels - 1, 1);
@@ -129,34 +130,35 @@ float mlTraceMaxMipmap(vec3 origin, vec3 span, int maxIterations)
     vec2 face = vec2(((n + dir) << level) - 1);
     vec2 tx = mix(vec2(1e30), (face - x0) * invDx, open);
     bool exitX = tx.x <= tx.y;
-    float tExit = clamp(min(tx.x, tx.y), t, 1.0);
+    float tExit = clamp(min(tx.x, tx.y), t, tEnd);
     ML_COUNT_SAMPLE();
     vec4 mins = mlPyramidFetch(n, level);
-    // The children the ray crosses: split [t, tExit] where it crosses the midlines.
+    // The children the ray crosses: split [t, tExit] where it crosses the midlines; crossing
+    // one flips the child along that axis. (A missing child repeats a present one's bound, so
+    // flipping into it is harmless.)
     int cl = level - 1;
-    ivec2 childSize = max(cells0 >> cl, ivec2(1));
     vec2 mid = vec2(((2 * n + 1) << cl) - 1);
     vec2 tm = mix(vec2(1e30), (mid - x0) * invDx, moving);
+    bool midX = tm.x <= tm.y;
     float s1 = clamp(min(tm.x, tm.y), t, tExit);
     float s2 = clamp(max(tm.x, tm.y), t, tExit);
+    ivec2 q = clamp(min(k0 >> cl, max(cells0 >> cl, ivec2(1)) - 1) - 2 * n, ivec2(0), ivec2(1));
     // The first child the ray may meet, and the part of the ray inside it.
     bool found = false;
-    ivec2 kFound = ivec2(0);
     float aFound = t, bFound = tExit, mFound = 0.0;
     for (int j = 0; j < 3; ++j)
     {
       float a = j == 0 ? t : (j == 1 ? s1 : s2);
       float b = j == 0 ? s1 : (j == 1 ? s2 : tExit);
-      ivec2 km = clamp(ivec2(floor(x0 + (0.5 * (a + b)) * dx)) + 1, ivec2(0), cells0 - 1);
-      ivec2 kc = min(km >> cl, childSize - 1);
-      ivec2 q = clamp(kc - 2 * n, ivec2(0), ivec2(1));
+      // (A midline crossed before t was crossed before q was found.)
+      bool flip = j == 1 ? min(tm.x, tm.y) > t : (j == 2 && max(tm.x, tm.y) > t);
+      q = !flip ? q : ((j == 1) == midX ? ivec2(1 - q.x, q.y) : ivec2(q.x, 1 - q.y));
       float m = q.y == 0 ? (q.x == 0 ? mins.x : mins.y) : (q.x == 0 ? mins.z : mins.w);
       bool blocked = (b > a || (j == 0 && tExit <= t)) &&
         max(origin.z + a * span.z, origin.z + b * span.z) >= m;
       if (blocked && !found)
       {
         found = true;
-        kFound = kc;
         aFound = a;
         bFound = b;
         mFound = m;
@@ -165,12 +167,18 @@ float mlTraceMaxMipmap(vec3 origin, vec3 span, int maxIterations)
     bool descend = false;
     if (found && cl == 0)
     {
-      // A level-0 child: its bilinear patch, exactly.
+      // A level-0 child: its bilinear patch, exactly, up to where the ray leaves that cell
+      // (the last child of a row may also cover the leftover cell).
+      ivec2 kc = clamp(ivec2(floor(x0 + (aFound + nudge) * dx)) + 1, ivec2(0), cells0 - 1);
+      bvec2 openC = bvec2(moving.x && (dir.x == 1 ? kc.x < cells0.x - 1 : kc.x > 0),
+        moving.y && (dir.y == 1 ? kc.y < cells0.y - 1 : kc.y > 0));
+      vec2 tc = mix(vec2(1e30), (vec2(kc + dir - 1) - x0) * invDx, openC);
+      bFound = clamp(min(tc.x, tc.y), aFound, bFound);
       ML_COUNT_SAMPLE();
-      vec4 corners = mlPyramidFetch(kFound, 0);
-      if (mlMeetsCell(origin, span, dx, x0 - vec2(kFound - ivec2(1)), corners, aFound, bFound))
+      vec4 corners = mlPyramidFetch(kc, 0);
+      if (mlMeetsCell(origin, span, dx, x0 - vec2(kc - ivec2(1)), corners, aFound, bFound))
       {
-        hitCell = kFound;
+        hitCell = kc;
         hitDepths = corners;
         hitStart = aFound;
         hitEnd = bFound;
@@ -201,7 +209,7 @@ float mlTraceMaxMipmap(vec3 origin, vec3 span, int maxIterations)
       bool leavesParent = d == 1 ? (k & 1) == 1 : (k & 1) == 0;
       level = leavesParent ? min(level + 1, top) : level;
     }
-    if (t >= 1.0)
+    if (t >= tEnd)
     {
       return 1.0;
     }
