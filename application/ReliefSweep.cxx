@@ -35,6 +35,7 @@
 #include <iostream>
 #include <map>
 #include <sstream>
+#include <stdexcept>
 
 namespace mesolight
 {
@@ -462,6 +463,14 @@ bool RunReliefSweep(
             steps.push_back(step);
           }
         }
+        else if (!settings.Iterations.empty() && m == vtkReliefProperty::MaximumMipmap)
+        {
+          steps.clear();
+          for (int n : settings.Iterations)
+          {
+            steps.push_back({ n, 0, "iter " + std::to_string(n) });
+          }
+        }
         for (const ReliefSweepStep& step : steps)
         {
           ReliefSweepRow row;
@@ -588,6 +597,8 @@ int RunReliefSweep(const std::vector<std::string>& args)
   cl.AddValue("--depth-scale", "K", "world depth of depth 1 / wall width", "0.04");
   cl.AddValue("--steps", "L+R,..",
     "step settings for the linear/cone-search methods instead of the built-in table");
+  cl.AddValue("--iterations", "N,..",
+    "iteration budgets for max-mipmap instead of the built-in table (32,64,128)");
   cl.AddValue("--csv", "FILE", "write one CSV row per configuration");
   cl.AddValue("--plots", "DIR", "write one PNG chart per view angle into DIR");
   cl.AddFlag("--no-fill",
@@ -665,6 +676,23 @@ int RunReliefSweep(const std::vector<std::string>& args)
       std::cerr << "mesolight bench relief: --steps: '" << label << "' is not L+R\n";
       return 2;
     }
+  }
+  for (const std::string& n : cl.GetStringList("--iterations"))
+  {
+    int iterations = 0;
+    try
+    {
+      iterations = std::stoi(n);
+    }
+    catch (const std::exception&)
+    {
+      iterations = 0;
+    }
+    if (iterations < 1 || iterations > 1024)
+    {
+      return cl.UsageError("--iterations: '" + n + "' is not a count in [1, 1024]");
+    }
+    settings.Iterations.push_back(iterations);
   }
   settings.CsvFile = cl.Get("--csv");
   settings.PlotDirectory = cl.Get("--plots");

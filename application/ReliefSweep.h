@@ -41,6 +41,8 @@ struct ReliefSweepSettings
   // Step settings ("L+R") replacing the table for the methods with a linear or cone search
   // (linear search, POM, relief, interval, cone methods); empty: the table.
   std::vector<std::string> Steps;
+  // Iteration budgets for max-mipmap instead of the built-in table (empty: 32, 64, 128).
+  std::vector<int> Iterations;
 };
 
 /** One step setting of a method: what the mapper's LinearSteps / RefinementSteps mean for it. */

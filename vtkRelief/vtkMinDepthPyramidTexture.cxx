@@ -10,7 +10,9 @@
 #include "MinDepthPyramid.h" // Mesolight::ReliefTextures core
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
+#include <limits>
 #include <utility>
 
 vtkStandardNewMacro(vtkMinDepthPyramidTexture);
@@ -38,9 +40,11 @@ bool vtkMinDepthPyramidTexture::Upload(
     sizes.emplace_back(lw, lh);
   }
   // RGBA: level 0 holds each cell's four corner depths (the texels (k-1, k-1), (k, k-1),
-  // (k-1, k), (k, k), clamped to the texture) and the coarser levels their minimum in every
-  // channel. The traversal then reads a level-0 cell once, for its bound and for the exact patch
-  // intersection alike, instead of one pyramid fetch and four relief-texture fetches.
+  // (k-1, k), (k, k), clamped to the texture), and a coarser cell the minima of its four children
+  // (2i, 2j), (2i+1, 2j), (2i, 2j+1), (2i+1, 2j+1), the leftover odd child folded into the last
+  // (a missing child repeats the first). The traversal then reads a level-0 cell once, for its
+  // bound and for the exact patch intersection alike, and a coarser cell once for the bounds of
+  // the 2 x 2 cells below it (the minimum of the four channels is the cell's own bound).
   std::vector<std::vector<float>> rgba(levels.size());
   for (size_t l = 0; l < levels.size(); ++l)
   {
@@ -48,9 +52,45 @@ bool vtkMinDepthPyramidTexture::Upload(
     rgba[l].resize(4 * n);
     if (l > 0)
     {
-      for (size_t i = 0; i < n; ++i)
+      const int lw = sizes[l].first, lh = sizes[l].second;
+      const int cw = sizes[l - 1].first, ch = sizes[l - 1].second;
+      const std::vector<float>& child = levels[l - 1];
+      // Children of cell n along one axis for channel c: [first, last], empty if first > last.
+      auto range = [](int node, int c, int nodes, int children, int& first, int& last)
       {
-        std::fill_n(rgba[l].begin() + static_cast<std::ptrdiff_t>(4 * i), 4, levels[l][i]);
+        first = 2 * node + c;
+        last = (c == 1 && node == nodes - 1) ? children - 1 : first;
+      };
+      for (int ny = 0; ny < lh; ++ny)
+      {
+        for (int nx = 0; nx < lw; ++nx)
+        {
+          float* c = &rgba[l][4 *
+            (static_cast<size_t>(ny) * static_cast<size_t>(lw) + static_cast<size_t>(nx))];
+          for (int q = 0; q < 4; ++q)
+          {
+            int x0 = 0, x1 = 0, y0 = 0, y1 = 0;
+            range(nx, q & 1, lw, cw, x0, x1);
+            range(ny, q >> 1, lh, ch, y0, y1);
+            float m = std::numeric_limits<float>::infinity();
+            for (int y = y0; y <= y1 && y < ch; ++y)
+            {
+              for (int x = x0; x <= x1 && x < cw; ++x)
+              {
+                m = std::min(m, child[static_cast<size_t>(y) * static_cast<size_t>(cw) +
+                                  static_cast<size_t>(x)]);
+              }
+            }
+            c[q] = m;
+          }
+          for (int q = 1; q < 4; ++q)
+          {
+            if (std::isinf(c[q]))
+            {
+              c[q] = c[q & 1] < c[q] ? c[q & 1] : c[0]; // a missing child: a present one's bound
+            }
+          }
+        }
       }
       continue;
     }

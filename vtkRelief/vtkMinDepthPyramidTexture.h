@@ -6,8 +6,9 @@
  *
  * Level 0 has one texel per cell between the relief texture's texel centres holding the cell's
  * four corner depths (RGBA), so one fetch gives the traversal both the cell's bound and its
- * bilinear patch; each coarser level holds the minimum depth (the highest surface) of the cells
- * below it in every channel (mesolight::ComputeMinDepthPyramid,
+ * bilinear patch; a cell of a coarser level holds the minimum depths (the highest surface) of
+ * its 2 x 2 children, one per channel, so one fetch bounds the four cells a traversal may
+ * descend into (mesolight::ComputeMinDepthPyramid,
  * filters/ReliefTextures/core/MinDepthPyramid.h). Level sizes halve rounding down, a complete
  * OpenGL mipmap, so all levels are mip levels of one RGBA float texture (uploaded by hand:
  * OpenGL would average, not take minima). 16 bytes per cell: 5.6 MB for a 512^2 map.

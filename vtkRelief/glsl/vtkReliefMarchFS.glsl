@@ -172,7 +172,14 @@ float mlTraceView(vec3 origin, vec3 span)
   float tBelow = mlConeSearch(origin, span, mlViewSteps, tAbove);
   return mlIntervalRefine(origin, span, tAbove, tBelow, mlRefinementSteps);
 #elif ML_METHOD == ML_MAXIMUM_MIPMAP
-  return mlTraceMaxMipmap(origin, span, mlViewSteps);
+  float tEnd = 1.0;
+#ifdef ML_SILHOUETTES
+  // A hit outside the texture is discarded, so the trace may stop where the ray leaves it.
+  vec2 tOut = mix(vec2(1e30), (step(vec2(0.0), span.xy) - origin.xy) / span.xy,
+    notEqual(span.xy, vec2(0.0)));
+  tEnd = clamp(min(tOut.x, tOut.y) + 1e-6, 0.0, 1.0);
+#endif
+  return mlTraceMaxMipmap(origin, span, mlViewSteps, tEnd);
 #else
   return 0.0;
 #endif
@@ -192,7 +199,7 @@ bool mlShadowed(vec3 hit, vec3 spanUpPerDepth)
   vec3 span = hit - origin;
   const float bias = 2e-3; // depth units: avoids self-shadowing acne at the hit itself
 #if ML_METHOD == ML_MAXIMUM_MIPMAP
-  float t = mlTraceMaxMipmap(origin + vec3(0.0, 0.0, -bias), span, mlLinearSteps);
+  float t = mlTraceMaxMipmap(origin + vec3(0.0, 0.0, -bias), span, mlLinearSteps, 1.0);
   return t < 1.0 - 1e-3;
 #else
   // The linear search's budget: mlLinearSteps per unit of depth travelled, so a shallow hit costs

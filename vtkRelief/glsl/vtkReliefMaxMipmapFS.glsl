@@ -4,16 +4,23 @@
 //
 // Level 0 holds one texel per cell between texel centres, (W+1) x (H+1) cells including the
 // clamp-to-edge border cells: the cell's four corner depths (vtkMinDepthPyramidTexture), whose
-// minimum bounds the bilinear patch from above. Level L+1 holds the minimum over 2x2 cells of
-// level L; sizes halve rounding down (a complete OpenGL mipmap) and a level's last cell also
+// minimum bounds the bilinear patch from above. A cell of level L+1 holds the minima of its 2x2
+// cells of level L (RGBA: (0,0), (1,0), (0,1), (1,1)); sizes halve rounding down (a complete OpenGL mipmap) and a level's last cell also
 // covers the leftover cell below it, so level-0 cell k lies in level-L cell
 // min(k >> L, size_L - 1). In cell space x = u W - 0.5, texel i sits at x = i and cell k spans
 // [k-1, k].
 
 uniform sampler2D mlMinDepthPyramid;
 uniform int mlPyramidLevels;
-// Cells per level as (w, h) pairs: textureSize() of a level is unreliable on Mesa llvmpipe.
+// Cells per level as (w, h) pairs (unused: the sizes are max(cells0 >> L, 1)).
 uniform int mlPyramidSizes[32];
+
+// Cell k of a level: its bound (level >= 1: the bounds of its 2 x 2 children) or, at level 0,
+// its four corner depths.
+vec4 mlPyramidFetch(ivec2 k, int level)
+{
+  return texelFetch(mlMinDepthPyramid, k, level);
+}
 
 // First t in [t0, t1] where the ray meets the bilinear patch of level-0 cell k, whose corner
 // depths d = (d00, d10, d01, d11) the pyramid's level 0 holds, or -1.
@@ -66,78 +73,151 @@ float mlIntersectCell(vec3 origin, vec3 span, ivec2 k, vec4 d, float t0, float t
   return best;
 }
 
-// Hierarchical traversal: skip whole cells whose minimum depth the ray stays above; descend
-// where it may hit; at level 0 intersect the bilinear patch exactly. maxIterations bounds the work.
-float mlTraceMaxMipmap(vec3 origin, vec3 span, int maxIterations)
+// Does the ray meet the bilinear patch of a level-0 cell (corner depths d, patch-local origin
+// a0) within [s0, s1]? g(s) = ray depth - patch depth is quadratic in s; it does if g >= 0 at an
+// end or at an interior maximum. No square root: the root is solved once, after the traversal.
+bool mlMeetsCell(vec3 origin, vec3 span, vec2 dx, vec2 a0, vec4 d, float s0, float s1)
+{
+  float e1 = d.y - d.x, e2 = d.z - d.x, e3 = d.x - d.y - d.z + d.w;
+  float A = -e3 * dx.x * dx.y;
+  float B = span.z - e1 * dx.x - e2 * dx.y - e3 * (a0.x * dx.y + a0.y * dx.x);
+  float C = origin.z - d.x - e1 * a0.x - e2 * a0.y - e3 * a0.x * a0.y;
+  float sv = A < 0.0 ? clamp(-0.5 * B / A, s0, s1) : s1;
+  return max(max((A * s0 + B) * s0 + C, (A * s1 + B) * s1 + C), (A * sv + B) * sv + C) >= 0.0;
+}
+
+// Hierarchical traversal, four children per fetch: a cell of level L >= 1 holds the bounds of
+// its 2 x 2 children, so one fetch tests the up to three children the ray crosses inside it
+// (split where the ray crosses the cell's midlines). The ray skips the cell when it stays above
+// every child's bound, descends into the first child it may meet, and at level 1 tests the
+// children's bilinear patches exactly (one level-0 fetch each, only for the children it may
+// meet). maxIterations bounds the work; past tEnd (<= 1) the ray is of no interest and the
+// trace returns 1.
+// The loop body is free of square roots and divisions: on SIMD hardware that runs fragments in
+// lock step (and on llvmpipe, which executes every branch any lane takes) an iteration costs the
+// sum of its branches.
+float mlTraceMaxMipmap(vec3 origin, vec3 span, int maxIterations, float tEnd)
 {
   ivec2 cells0 = ivec2(mlTextureSize) + 1;
-  int top = mlPyramidLevels - 1;
-  // Start near the bottom: a view ray enters at depth 0, where the coarse cells' minimum is
-  // (nearly) 0 on real maps, so starting at the top only descends again. Measured on real height
-  // maps at 45 and 85 degrees (docs/relief-methods.md): level 1 takes 15-25% fewer samples than the
-  // top and never more than levels 3 or 5.
-  int level = min(1, top);
+  int top = max(mlPyramidLevels - 1, 1);
+  // Start low: a view ray enters at depth 0, where the coarse cells' minimum is (nearly) 0 on
+  // real maps, so starting at the top only descends again (docs/relief-methods.md).
+  int level = min(2, top);
   float t = 0.0;
+  // The ray in cell space (x = u W - 0.5; level-0 cell k spans [k-1, k]).
+  vec2 x0 = origin.xy * mlTextureSize - 0.5;
   vec2 dx = span.xy * mlTextureSize;
+  bvec2 moving = notEqual(dx, vec2(0.0));
+  vec2 invDx = vec2(moving.x ? 1.0 / dx.x : 0.0, moving.y ? 1.0 / dx.y : 0.0);
+  ivec2 dir = ivec2(greaterThan(dx, vec2(0.0))); // 1 towards higher cells, 0 towards lower
+  float invSpanZ = span.z > 0.0 ? 1.0 / span.z : 0.0;
   // Past a cell boundary by a thousandth of a cell, so float rounding cannot keep the ray in it.
   float nudge = min(1e-3 / max(max(abs(dx.x), abs(dx.y)), 1e-6), 1e-5);
+  ivec2 hitCell = ivec2(-1);
+  vec4 hitDepths = vec4(0.0);
+  float hitStart = 0.0, hitEnd = 1.0;
   for (int i = 0; i < maxIterations; ++i)
   {
-    vec3 p = origin + t * span;
-    vec2 x = p.xy * mlTextureSize - 0.5;
+    vec2 x = x0 + t * dx;
     ivec2 k0 = clamp(ivec2(floor(x)) + 1, ivec2(0), cells0 - 1);
-    int scale = 1 << level;
-    ivec2 sizeL = ivec2(mlPyramidSizes[2 * level], mlPyramidSizes[2 * level + 1]);
-    ivec2 kL = min(k0 >> level, sizeL - 1); // k0 >= 0: a shift, not a (scalarised) division
-    // The cell's extent in cell space; first and last cells reach to infinity (clamp extension).
-    vec2 lo = vec2(kL * scale) - 1.0;
-    vec2 hi = vec2((kL + 1) * scale) - 1.0;
-    lo = mix(lo, vec2(-1e30), lessThanEqual(kL, ivec2(0)));
-    hi = mix(hi, vec2(1e30), greaterThanEqual(kL, sizeL - 1));
-    vec2 tx = vec2(1e30);
-    tx.x = dx.x > 0.0 ? (hi.x - x.x) / dx.x : (dx.x < 0.0 ? (lo.x - x.x) / dx.x : 1e30);
-    tx.y = dx.y > 0.0 ? (hi.y - x.y) / dx.y : (dx.y < 0.0 ? (lo.y - x.y) / dx.y : 1e30);
-    float tExit = min(1.0, t + max(min(tx.x, tx.y), 0.0));
+    // Level sizes halve rounding down (a complete mipmap); the last cell covers the leftover.
+    ivec2 sizeL = max(cells0 >> level, ivec2(1));
+    ivec2 n = min(k0 >> level, sizeL - 1); // k0 >= 0: a shift, not a (scalarised) division
+    // The face the ray leaves the cell through on each axis; the edge cells reach to infinity
+    // (clamp-to-edge extension).
+    bvec2 open = bvec2(moving.x && (dir.x == 1 ? n.x < sizeL.x - 1 : n.x > 0),
+      moving.y && (dir.y == 1 ? n.y < sizeL.y - 1 : n.y > 0));
+    vec2 face = vec2(((n + dir) << level) - 1);
+    vec2 tx = mix(vec2(1e30), (face - x0) * invDx, open);
+    bool exitX = tx.x <= tx.y;
+    float tExit = clamp(min(tx.x, tx.y), t, tEnd);
     ML_COUNT_SAMPLE();
-    vec4 cell = texelFetch(mlMinDepthPyramid, kL, level);
-    float minDepth = min(min(cell.x, cell.y), min(cell.z, cell.w));
-    float zExit = origin.z + tExit * span.z;
-    if (zExit < minDepth && span.z > 0.0 || max(p.z, zExit) < minDepth)
+    vec4 mins = mlPyramidFetch(n, level);
+    // The children the ray crosses: split [t, tExit] where it crosses the midlines; crossing
+    // one flips the child along that axis. (A missing child repeats a present one's bound, so
+    // flipping into it is harmless.)
+    int cl = level - 1;
+    vec2 mid = vec2(((2 * n + 1) << cl) - 1);
+    vec2 tm = mix(vec2(1e30), (mid - x0) * invDx, moving);
+    bool midX = tm.x <= tm.y;
+    float s1 = clamp(min(tm.x, tm.y), t, tExit);
+    float s2 = clamp(max(tm.x, tm.y), t, tExit);
+    ivec2 q = clamp(min(k0 >> cl, max(cells0 >> cl, ivec2(1)) - 1) - 2 * n, ivec2(0), ivec2(1));
+    // The first child the ray may meet, and the part of the ray inside it.
+    bool found = false;
+    float aFound = t, bFound = tExit, mFound = 0.0;
+    for (int j = 0; j < 3; ++j)
     {
-      // Above everything in this cell: skip it; look wider only when the ray also leaves the
-      // parent cell (Tevs, Ihrke & Seidel 2008): inside the same parent the coarser cell was
-      // already found too deep, and going up would only come down again.
+      float a = j == 0 ? t : (j == 1 ? s1 : s2);
+      float b = j == 0 ? s1 : (j == 1 ? s2 : tExit);
+      // (A midline crossed before t was crossed before q was found.)
+      bool flip = j == 1 ? min(tm.x, tm.y) > t : (j == 2 && max(tm.x, tm.y) > t);
+      q = !flip ? q : ((j == 1) == midX ? ivec2(1 - q.x, q.y) : ivec2(q.x, 1 - q.y));
+      float m = q.y == 0 ? (q.x == 0 ? mins.x : mins.y) : (q.x == 0 ? mins.z : mins.w);
+      bool blocked = (b > a || (j == 0 && tExit <= t)) &&
+        max(origin.z + a * span.z, origin.z + b * span.z) >= m;
+      if (blocked && !found)
+      {
+        found = true;
+        aFound = a;
+        bFound = b;
+        mFound = m;
+      }
+    }
+    bool descend = false;
+    if (found && cl == 0)
+    {
+      // A level-0 child: its bilinear patch, exactly, up to where the ray leaves that cell
+      // (the last child of a row may also cover the leftover cell).
+      ivec2 kc = clamp(ivec2(floor(x0 + (aFound + nudge) * dx)) + 1, ivec2(0), cells0 - 1);
+      bvec2 openC = bvec2(moving.x && (dir.x == 1 ? kc.x < cells0.x - 1 : kc.x > 0),
+        moving.y && (dir.y == 1 ? kc.y < cells0.y - 1 : kc.y > 0));
+      vec2 tc = mix(vec2(1e30), (vec2(kc + dir - 1) - x0) * invDx, openC);
+      bFound = clamp(min(tc.x, tc.y), aFound, bFound);
+      ML_COUNT_SAMPLE();
+      vec4 corners = mlPyramidFetch(kc, 0);
+      if (mlMeetsCell(origin, span, dx, x0 - vec2(kc - ivec2(1)), corners, aFound, bFound))
+      {
+        hitCell = kc;
+        hitDepths = corners;
+        hitStart = aFound;
+        hitEnd = bFound;
+        break;
+      }
+      // Missed it: on from its exit, in the same cell of level 1 (or the next).
+      descend = true;
+      t = bFound + nudge;
+    }
+    else if (found)
+    {
+      // Into this child, where the ray reaches its bound.
+      descend = true;
+      // (Past a midline by the nudge, so the child is the one found, not its neighbour.)
+      float za = origin.z + aFound * span.z;
+      float a = aFound + (aFound > t ? nudge : 0.0);
+      t = za < mFound ? max(a, (mFound - origin.z) * invSpanZ) : a;
+      level = cl;
+    }
+    if (!descend)
+    {
+      // Above every child: skip the cell. Look wider only when the ray also leaves the parent
+      // cell (Tevs, Ihrke & Seidel 2008): inside the same parent the coarser cell was already
+      // found too deep, and going up would only come down again.
       t = tExit + nudge;
-      vec2 xNext = (origin.xy + t * span.xy) * mlTextureSize - 0.5;
-      ivec2 kNext = min(clamp(ivec2(floor(xNext)) + 1, ivec2(0), cells0 - 1) >> level, sizeL - 1);
-      if (any(notEqual(kNext >> 1, kL >> 1)))
-      {
-        level = min(level + 1, top);
-      }
+      int k = exitX ? n.x : n.y;
+      int d = exitX ? dir.x : dir.y;
+      bool leavesParent = d == 1 ? (k & 1) == 1 : (k & 1) == 0;
+      level = leavesParent ? min(level + 1, top) : level;
     }
-    else if (level > 0)
-    {
-      // Move down to where the ray reaches the cell's bound, then look closer.
-      if (span.z > 0.0 && p.z < minDepth)
-      {
-        t = max(t, (minDepth - origin.z) / span.z);
-      }
-      level -= 1;
-    }
-    else
-    {
-      float hit = mlIntersectCell(origin, span, k0, cell, t, tExit);
-      if (hit >= 0.0)
-      {
-        return hit;
-      }
-      t = tExit + nudge;
-      level = min(level + 1, top);
-    }
-    if (t >= 1.0)
+    if (t >= tEnd)
     {
       return 1.0;
     }
+  }
+  if (hitCell.x >= 0)
+  {
+    float s = mlIntersectCell(origin, span, hitCell, hitDepths, hitStart, hitEnd);
+    return s >= 0.0 ? s : hitStart;
   }
   return t;
 }

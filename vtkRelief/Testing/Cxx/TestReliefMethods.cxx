@@ -34,11 +34,11 @@ void PrintTo(const MethodCase& c, std::ostream* os)
   *os << c.Method << " " << c.Linear << "+" << c.Refine << " at " << c.ViewAngle << " deg";
 }
 
-HitComparison MeasureHits(const MethodCase& c, const char* pattern)
+HitComparison MeasureHits(const MethodCase& c, const char* pattern, int resolution = 256)
 {
   ReliefSceneOptions o;
   o.Pattern = pattern;
-  o.Resolution = 256;
+  o.Resolution = resolution;
   o.Width = o.Height = 320;
   o.DepthScale = 0.12;
   o.ViewAngle = c.ViewAngle;
@@ -126,6 +126,26 @@ TEST(ReliefMethodHits, ExactToATexelAtGrazingOnARoughMap)
   EXPECT_LE(exact.MeanTexels, 0.25);
   EXPECT_LE(exact.P99Texels, 1.0);
   const HitComparison relief = MeasureHits(MethodCase{ "relief", 10, 8, 85.0, -1.0 }, "Stone");
+  EXPECT_TRUE(relief.MeanTexels > 0.25 || relief.P99Texels > 1.0)
+    << "relief 10+8: mean " << relief.MeanTexels << ", p99 " << relief.P99Texels;
+}
+
+// Maximum-mipmap tracing where the pyramid's levels have odd sizes, so a coarse cell's last
+// child also covers the leftover cell (100^2 texels: 101 cells, levels 101, 50, 25, 12, 6, 3, 1;
+// 255^2: 256, 128, ..): exact to a texel at 85 degrees on the rough stone; relief 10 + 8 is not
+// (negative case). (At this view the leftover level-0 cell is the far clamp band, whose hits
+// silhouettes discard, so this does not test the level-0 leftover itself.)
+TEST(ReliefMethodHits, MaxMipmapExactOnOddPyramidSizes)
+{
+  for (int resolution : { 100, 255 })
+  {
+    const HitComparison exact =
+      MeasureHits(MethodCase{ "max-mipmap", 128, 0, 85.0, -1.0 }, "Stone", resolution);
+    EXPECT_LE(exact.MeanTexels, 0.25) << resolution;
+    EXPECT_LE(exact.P99Texels, 1.0) << resolution;
+  }
+  const HitComparison relief =
+    MeasureHits(MethodCase{ "relief", 10, 8, 85.0, -1.0 }, "Stone", 100);
   EXPECT_TRUE(relief.MeanTexels > 0.25 || relief.P99Texels > 1.0)
     << "relief 10+8: mean " << relief.MeanTexels << ", p99 " << relief.P99Texels;
 }
