@@ -73,7 +73,10 @@ void vtkIrradianceProbesTexture::Update(vtkOpenGLRenderWindow* renWin, vtkImageD
   }
   const int nu = dims[0] / 9;
   const int nv = dims[1];
-  std::vector<float> texels(static_cast<size_t>(dims[0]) * nv * 3);
+  // Seven RGBA blocks of Nu x Nv texels, each channel one coefficient of one colour channel:
+  // blocks 0-1 red's L_0..L_7, 2-3 green's, 4-5 blue's, 6 (red, green, blue) L_8. The shader then
+  // evaluates each colour channel as two four-wide dot products (seven fetches, not nine).
+  std::vector<float> texels(static_cast<size_t>(nu) * nv * 7 * 4, 0.0f);
   for (int j = 0; j < nv; ++j)
   {
     for (int i = 0; i < nu; ++i)
@@ -81,7 +84,6 @@ void vtkIrradianceProbesTexture::Update(vtkOpenGLRenderWindow* renWin, vtkImageD
       for (int k = 0; k < 9; ++k)
       {
         const vtkIdType pixel = static_cast<vtkIdType>(j) * dims[0] + 9 * i + k;
-        float* texel = &texels[((static_cast<size_t>(k) * nv + j) * nu + i) * 3];
         for (int c = 0; c < 3; ++c)
         {
           const double value = values->GetComponent(pixel, c);
@@ -91,7 +93,10 @@ void vtkIrradianceProbesTexture::Update(vtkOpenGLRenderWindow* renWin, vtkImageD
                           << ") is not finite (component " << c << ")." << layout);
             return;
           }
-          texel[c] = static_cast<float>(value);
+          const int block = k < 8 ? 2 * c + k / 4 : 6;
+          const int channel = k < 8 ? k % 4 : c;
+          texels[((static_cast<size_t>(block) * nv + j) * nu + i) * 4 + channel] =
+            static_cast<float>(value);
         }
       }
     }
@@ -106,7 +111,7 @@ void vtkIrradianceProbesTexture::Update(vtkOpenGLRenderWindow* renWin, vtkImageD
   this->TextureObject->SetWrapS(vtkTextureObject::ClampToEdge);
   this->TextureObject->SetWrapT(vtkTextureObject::ClampToEdge);
   if (!this->TextureObject->Create2DFromRaw(static_cast<unsigned int>(nu),
-        static_cast<unsigned int>(9 * nv), 3, VTK_FLOAT, texels.data()))
+        static_cast<unsigned int>(7 * nv), 4, VTK_FLOAT, texels.data()))
   {
     vtkErrorMacro(<< "Could not create the irradiance probes texture (" << nu << " x " << nv
                   << " probes); the relief is drawn without them.");

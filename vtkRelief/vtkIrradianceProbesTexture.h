@@ -6,11 +6,13 @@
  * The probes come as vtkReliefMapper::SetIrradianceProbesData describes them: a (9 x Nu) x Nv
  * image of 3 (or more; the first 3 are read) float components, coefficient k of probe (i, j) at
  * pixel (9 i + k, j), the real SH basis of Ramamoorthi and Hanrahan ("An efficient representation
- * for irradiance environment maps") in world coordinates. They are uploaded as an Nu x (9 Nv)
- * float RGB texture with linear filtering: coefficient k of every probe in the block of rows
- * [k Nv, (k + 1) Nv), so one filtered fetch per coefficient interpolates it bilinearly between
- * the four nearest probes (vtkReliefIrradianceProbesFS.glsl clamps the fetch inside its block,
- * which is the clamp at the grid's border). Uploads are keyed by the scalar array and its
+ * for irradiance environment maps") in world coordinates. They are uploaded as an Nu x (7 Nv)
+ * float RGBA texture with linear filtering, seven blocks of Nv rows holding the 27 numbers of
+ * every probe (blocks 0-1 red's coefficients 0-7, 2-3 green's, 4-5 blue's, 6 the three
+ * coefficients 8), so one filtered fetch per block interpolates four coefficients bilinearly
+ * between the four nearest probes, seven fetches per pixel (vtkReliefIrradianceProbesFS.glsl
+ * clamps each fetch inside its block, which is the clamp at the grid's border). Uploads are
+ * keyed by the scalar array and its
  * modification time; a malformed image is reported once per array and modification.
  */
 
