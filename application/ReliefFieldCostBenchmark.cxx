@@ -139,8 +139,8 @@ int RunReliefFieldCostBenchmark(const std::vector<std::string>& args)
     "emitters; also the probes alone, one\nemitter alone and no light, to split the cost. The "
     "configurations alternate over\n--rounds rounds (the median of all their frames is "
     "reported), so a loaded machine\nslows them alike. The goal: (b) <= 1.5 x (a).\n");
-  cl.AddValue("--map", "PATTERN", "procedural height map (Bricks, Stone, HemisphereTorus, ...)",
-    "Bricks");
+  cl.AddValue(
+    "--map", "PATTERN", "procedural height map (Bricks, Stone, HemisphereTorus, ...)", "Bricks");
   cl.AddValue("--resolution", "N", "height map resolution", "512");
   cl.AddValue("--size", "WxH", "window size", "800x800");
   cl.AddValue("--probes", "N", "N x N SH9 probes over the wall", "8");
@@ -256,7 +256,8 @@ int RunReliefFieldCostBenchmark(const std::vector<std::string>& args)
             << frames << " frames (median)\n";
   std::cout << "ratio: ms/frame over (a)'s; relief ratio: the same less the background frame\n\n";
   std::cout << std::left << std::setw(46) << "configuration" << std::right << std::setw(10)
-            << "ms/frame" << std::setw(8) << "ratio" << std::setw(14) << "relief ratio" << "\n";
+            << "ms/frame" << std::setw(8) << "ratio" << std::setw(14) << "relief ratio"
+            << "\n";
   for (const Config& c : configs)
   {
     std::cout << std::left << std::setw(46) << c.Label << std::right << std::fixed

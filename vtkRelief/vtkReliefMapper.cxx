@@ -124,8 +124,8 @@ vtkImageData* vtkReliefMapper::GetIrradianceProbes()
 }
 
 //------------------------------------------------------------------------------
-void vtkReliefMapper::ConfigureEmitterLight(vtkLight* light, const double position[3],
-  const double normal[3], const double intensityRGB[3])
+void vtkReliefMapper::ConfigureEmitterLight(
+  vtkLight* light, const double position[3], const double normal[3], const double intensityRGB[3])
 {
   if (!light)
   {

@@ -9,8 +9,8 @@
  * placeholders reserved in the fragment shader; after, the relief implementation (the GLSL of
  * vtkRelief/glsl, embedded at build time) replaces VTK's lighting, with #defines for the
  * variant: the property's method, output and switches, and what the draw binds (an albedo
- * texture, a cone-packed relief texture, a light set, irradiance probes). Each shader is keyed by the variant it
- * was built for, so a change of variant rebuilds it.
+ * texture, a cone-packed relief texture, a light set, irradiance probes). Each shader is keyed by
+ * the variant it was built for, so a change of variant rebuilds it.
  */
 
 #ifndef vtkReliefShaderSource_h

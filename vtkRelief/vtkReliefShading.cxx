@@ -311,8 +311,7 @@ void vtkReliefShading::SetShaderParameters(
   }
   if (this->ProbesActive)
   {
-    program->SetUniformi(
-      "mlIrradianceProbes", this->Probes->GetTextureObject()->GetTextureUnit());
+    program->SetUniformi("mlIrradianceProbes", this->Probes->GetTextureObject()->GetTextureUnit());
     const int* grid = this->Probes->GetGridSize();
     const float probeGrid[2] = { static_cast<float>(grid[0]), static_cast<float>(grid[1]) };
     program->SetUniform2f("mlProbeGrid", probeGrid);

@@ -27,6 +27,7 @@
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
 #include <vtkRendererCollection.h>
+#include <vtkTrivialProducer.h>
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
@@ -50,7 +51,8 @@ constexpr int Pixels = 160;
 // light, and no creases (the baked normals and the exact bilinear surface's agree closely).
 double Bumps(double u, double v)
 {
-  return 0.5 + 0.5 * std::sin(2.0 * vtkMath::Pi() * 2.0 * u) * std::cos(2.0 * vtkMath::Pi() * 2.0 * v);
+  return 0.5 +
+    0.5 * std::sin(2.0 * vtkMath::Pi() * 2.0 * u) * std::cos(2.0 * vtkMath::Pi() * 2.0 * v);
 }
 
 std::vector<float> DepthSamples(const std::function<double(double, double)>& depth)
@@ -112,8 +114,8 @@ vtkSmartPointer<vtkImageData> ProbeImage(int nu, int nv, const std::vector<SH9>&
       const SH9& sh = probes[static_cast<size_t>(j) * nu + i];
       for (int k = 0; k < 9; ++k)
       {
-        values->SetTuple3(static_cast<vtkIdType>(j) * 9 * nu + 9 * i + k, sh.L[k][0], sh.L[k][1],
-          sh.L[k][2]);
+        values->SetTuple3(
+          static_cast<vtkIdType>(j) * 9 * nu + 9 * i + k, sh.L[k][0], sh.L[k][1], sh.L[k][2]);
       }
     }
   }
@@ -275,8 +277,8 @@ ReliefLighting DirectionalProbes(int nu, int nv)
       const double a = 1.2 * (i / (nu - 1.0) - 0.5), b = 1.2 * (j / (nv - 1.0) - 0.5);
       const glm::dvec3 axis = glm::normalize(glm::dvec3(a, b, 1.0));
       const glm::dvec3 colour(0.9 + 0.3 * i / (nu - 1.0), 0.8, 0.7 + 0.4 * j / (nv - 1.0));
-      lighting.Probes.push_back(Project(
-        [&](const glm::dvec3& d) { return colour * std::max(0.0, glm::dot(d, axis)); }));
+      lighting.Probes.push_back(
+        Project([&](const glm::dvec3& d) { return colour * std::max(0.0, glm::dot(d, axis)); }));
     }
   }
   return lighting;
@@ -477,8 +479,9 @@ TEST(ReliefIrradianceProbes, EmitterLightMatchesTheCpuEvaluation)
   std::cout << "[emitter] " << compared << " pixels (" << shadowed
             << " black in the CPU evaluation): mean |GPU - CPU| " << error
             << " levels; no cosine lobe " << noLobe << ", no 1/d^2 " << noFalloff << "; in the "
-            << shadowPixels << " pixels of the relief's shadow where the light faces the surface: "
-            << inShadow << " levels shadowed, " << inShadowUnshadowed << " without self-shadowing\n";
+            << shadowPixels
+            << " pixels of the relief's shadow where the light faces the surface: " << inShadow
+            << " levels shadowed, " << inShadowUnshadowed << " without self-shadowing\n";
   EXPECT_GT(compared, Pixels * Pixels / 4);
   EXPECT_GT(shadowPixels, compared / 50);
   EXPECT_LT(error, 2.0);
@@ -547,7 +550,38 @@ TEST(ReliefIrradianceProbes, BadProbesAreReportedAndLeftOut)
   long long brighter = 0;
   for (size_t p = 0; p < good.Depth.size(); ++p)
   {
-    brighter += good.Covered(p) && good.Rgb[3 * p] >= std::min(255, without.Rgb[3 * p] + 50) ? 1 : 0;
+    brighter +=
+      good.Covered(p) && good.Rgb[3 * p] >= std::min(255, without.Rgb[3 * p] + 50) ? 1 : 0;
   }
   EXPECT_GT(brighter, Pixels * Pixels / 2);
+}
+
+// Probes from a pipeline (input port 3) shade as the same data given directly, and a modified
+// probe image is uploaded again: the new radiance shows at the next render.
+TEST(ReliefIrradianceProbes, ProbesFromAConnectionFollowTheirChanges)
+{
+  Scene scene;
+  BuildScene(scene, Bumps, false);
+  auto image = ProbeImage(2, 2, std::vector<SH9>(4, ConstantRadiance(glm::dvec3(0.25))));
+  vtkNew<vtkTrivialProducer> producer;
+  producer->SetOutput(image);
+  scene.Mapper->SetIrradianceProbesConnection(producer->GetOutputPort());
+  const Frame first = Render(scene);
+  EXPECT_EQ(scene.Mapper->GetIrradianceProbes(), image.Get());
+  auto* values = static_cast<float*>(image->GetScalarPointer());
+  for (int p = 0; p < 4; ++p)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      values[3 * 9 * p + c] *= 2.0f; // L_00 of every probe: radiance 0.5
+    }
+  }
+  image->GetPointData()->GetScalars()->Modified();
+  const Frame second = Render(scene);
+  const size_t centre = size_t(Pixels / 2) * Pixels + Pixels / 2;
+  ASSERT_TRUE(first.Covered(centre));
+  std::cout << "[connection] centre " << int(first.Rgb[3 * centre]) << " then "
+            << int(second.Rgb[3 * centre]) << "\n";
+  EXPECT_NEAR(first.Rgb[3 * centre], 255.0 * 0.25, 1.5);
+  EXPECT_NEAR(second.Rgb[3 * centre], 255.0 * 0.5, 1.5);
 }
