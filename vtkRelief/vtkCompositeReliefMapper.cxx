@@ -205,6 +205,12 @@ void vtkCompositeReliefMapper::SetIrradianceProbesData(vtkImageData* probes)
 }
 
 //------------------------------------------------------------------------------
+vtkImageData* vtkCompositeReliefMapper::GetIrradianceProbesData()
+{
+  return this->IrradianceProbesData;
+}
+
+//------------------------------------------------------------------------------
 void vtkCompositeReliefMapper::Render(vtkRenderer* ren, vtkActor* actor)
 {
   this->CurrentReliefTexture = this->ReliefTextureData;

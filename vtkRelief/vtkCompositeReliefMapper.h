@@ -59,7 +59,7 @@ public:
    * describes them (null, the default: none).
    */
   void SetIrradianceProbesData(vtkImageData* probes);
-  vtkImageData* GetIrradianceProbesData() { return this->IrradianceProbesData; }
+  vtkImageData* GetIrradianceProbesData();
   ///@}
 
   /** Finds the relief texture and light set of this render, then draws the blocks. */
