@@ -37,7 +37,9 @@
  *
  * The relief texture comes either as data (SetReliefTextureData), from a pipeline
  * (SetReliefTextureConnection, input port 1), or attached to the input polydata as field data
- * (vtkAttachReliefTexture); likewise the light set (input port 2).
+ * (vtkAttachReliefTexture); likewise the light set (input port 2). Irradiance probes (input
+ * port 3, as data or from a pipeline) light it with a virtual light field's indirect light; the
+ * field's emitters become VTK lights through ConfigureEmitterLight (docs/vlf.md, "On the GPU").
  *
  * Up to vtkReliefShading::MaximumNumberOfLights (8) of the renderer's lights are shaded; further
  * lights are ignored with a warning. The relief drawing (geometry, textures, shader edits,
