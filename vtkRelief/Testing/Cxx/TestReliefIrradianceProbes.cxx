@@ -585,3 +585,35 @@ TEST(ReliefIrradianceProbes, ProbesFromAConnectionFollowTheirChanges)
   EXPECT_NEAR(first.Rgb[3 * centre], 255.0 * 0.25, 1.5);
   EXPECT_NEAR(second.Rgb[3 * centre], 255.0 * 0.5, 1.5);
 }
+
+// With a light set too, the probes' light adds to it; by default (ToneMapping on, Exposure 1) the
+// sum is tone mapped as the light set alone is: Reinhard's x / (1 + x).
+TEST(ReliefIrradianceProbes, ProbesAddToALightSetAndAreToneMappedByDefault)
+{
+  Scene scene;
+  BuildScene(
+    scene, [](double, double) { return 0.0; }, false); // flat: the normal is +z
+  auto lights = vtkSmartPointer<vtkImageData>::New();
+  lights->SetDimensions(1, 2, 1);
+  vtkNew<vtkFloatArray> values;
+  values->SetNumberOfComponents(3);
+  values->SetNumberOfTuples(2);
+  values->SetTuple3(0, 0.0, 0.0, 1.0); // straight down
+  const double fromLights = 0.2;       // radiance it gives
+  values->SetTuple3(1, vtkMath::Pi() * fromLights, vtkMath::Pi() * fromLights,
+    vtkMath::Pi() * fromLights); // irradiance pi x 0.2 at normal incidence
+  lights->GetPointData()->SetScalars(values);
+  scene.Mapper->SetLightSetData(lights);
+  const double fromProbes = 0.3;
+  scene.Mapper->SetIrradianceProbesData(
+    ProbeImage(1, 1, std::vector<SH9>(1, ConstantRadiance(glm::dvec3(fromProbes)))));
+  const size_t centre = size_t(Pixels / 2) * Pixels + Pixels / 2;
+  const Frame linear = Render(scene);
+  scene.Mapper->GetReliefProperty()->ToneMappingOn();
+  const Frame toneMapped = Render(scene);
+  const double sum = fromLights + fromProbes;
+  std::cout << "[light set + probes] linear " << int(linear.Rgb[3 * centre]) << ", tone mapped "
+            << int(toneMapped.Rgb[3 * centre]) << "\n";
+  EXPECT_NEAR(linear.Rgb[3 * centre], 255.0 * sum, 1.5);
+  EXPECT_NEAR(toneMapped.Rgb[3 * centre], 255.0 * sum / (1.0 + sum), 1.5);
+}
