@@ -14,6 +14,7 @@
 #include "LightFieldViewCommand.h"
 #include "LightSetActorsBenchmark.h"
 #include "LightSetBenchmark.h"
+#include "ReliefFieldCostBenchmark.h"
 #include "LightsCommand.h"
 #include "ObjectBenchmark.h"
 #include "ReliefSweep.h"
@@ -136,6 +137,9 @@ const std::vector<mesolight::Command>& Commands()
         { "vlf-relief", "--reference REF.exr --mask M.exr --images ..",
           "a relief lit by the light field vs the path-traced\ndense mesh; negative cases, cost",
           RunVlfReliefBenchmark, {} },
+        { "relief-field-cost", "[options]",
+          "GPU relief lit by SH9 probes + emitter lights vs\none VTK light: ms/frame, ratio",
+          RunReliefFieldCostBenchmark, {} },
         { "walkthrough", "[FIELD] [options]",
           "light field walkthrough: frame time per mode and\nstage (vtkLightFieldActor)",
           RunWalkthroughBenchmark, {} },

@@ -60,7 +60,7 @@ protected:
     geometry->KeepOnly(inputs);
     if (!this->Shading()->StartDraw(vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow()),
           parent->GetReliefProperty(), parent->CurrentReliefTexture, parent->CurrentLightSet,
-          actor))
+          parent->IrradianceProbesData, actor))
     {
       return;
     }
@@ -195,6 +195,22 @@ void vtkCompositeReliefMapper::SetLightSetData(vtkImageData* lights)
 }
 
 //------------------------------------------------------------------------------
+void vtkCompositeReliefMapper::SetIrradianceProbesData(vtkImageData* probes)
+{
+  if (this->IrradianceProbesData != probes)
+  {
+    this->IrradianceProbesData = probes;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkImageData* vtkCompositeReliefMapper::GetIrradianceProbesData()
+{
+  return this->IrradianceProbesData;
+}
+
+//------------------------------------------------------------------------------
 void vtkCompositeReliefMapper::Render(vtkRenderer* ren, vtkActor* actor)
 {
   this->CurrentReliefTexture = this->ReliefTextureData;
@@ -250,4 +266,5 @@ void vtkCompositeReliefMapper::PrintSelf(ostream& os, vtkIndent indent)
   this->Shading->PrintForMapper(os, indent);
   os << indent << "ReliefTextureData: " << this->ReliefTextureData.Get() << "\n";
   os << indent << "LightSetData: " << this->LightSetData.Get() << "\n";
+  os << indent << "IrradianceProbesData: " << this->IrradianceProbesData.Get() << "\n";
 }

@@ -53,6 +53,15 @@ public:
   void SetLightSetData(vtkImageData* lights);
   ///@}
 
+  ///@{
+  /**
+   * SH9 irradiance probes over the relief's texture, as vtkReliefMapper::SetIrradianceProbesData
+   * describes them (null, the default: none).
+   */
+  void SetIrradianceProbesData(vtkImageData* probes);
+  vtkImageData* GetIrradianceProbesData();
+  ///@}
+
   /** Finds the relief texture and light set of this render, then draws the blocks. */
   void Render(vtkRenderer* ren, vtkActor* actor) override;
 
@@ -70,6 +79,7 @@ protected:
   vtkNew<vtkReliefShading> Shading;
   vtkSmartPointer<vtkImageData> ReliefTextureData;
   vtkSmartPointer<vtkImageData> LightSetData;
+  vtkSmartPointer<vtkImageData> IrradianceProbesData;
   // What the current render draws with (explicit data or the input's field data).
   vtkSmartPointer<vtkImageData> CurrentReliefTexture;
   vtkSmartPointer<vtkImageData> CurrentLightSet;

@@ -6,6 +6,8 @@
 #include "vtkExecutive.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
+#include "vtkLight.h"
+#include "vtkMath.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLHelper.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -122,6 +124,42 @@ vtkImageData* vtkReliefMapper::GetIrradianceProbes()
 }
 
 //------------------------------------------------------------------------------
+void vtkReliefMapper::ConfigureEmitterLight(
+  vtkLight* light, const double position[3], const double normal[3], const double intensityRGB[3])
+{
+  if (!light)
+  {
+    return;
+  }
+  double n[3] = { normal[0], normal[1], normal[2] };
+  if (vtkMath::Normalize(n) <= 0.0)
+  {
+    n[2] = 1.0;
+  }
+  const double peak = std::max({ intensityRGB[0], intensityRGB[1], intensityRGB[2], 0.0 });
+  light->SetLightTypeToSceneLight();
+  light->PositionalOn();
+  light->SetPosition(position[0], position[1], position[2]);
+  light->SetFocalPoint(position[0] + n[0], position[1] + n[1], position[2] + n[2]);
+  light->SetConeAngle(90.0); // a spot light of 90 degrees with exponent 1: the cosine lobe
+  light->SetExponent(1.0);
+  light->SetAttenuationValues(0.0, 0.0, 1.0); // 1 / d^2
+  if (peak > 0.0)
+  {
+    light->SetColor(std::max(0.0, intensityRGB[0]) / peak, std::max(0.0, intensityRGB[1]) / peak,
+      std::max(0.0, intensityRGB[2]) / peak);
+  }
+  else
+  {
+    light->SetColor(1.0, 1.0, 1.0);
+  }
+  // VTK lights shade albedo x colour x intensity x cosine; a Lambertian surface reflects albedo /
+  // pi x irradiance.
+  light->SetIntensity(peak / vtkMath::Pi());
+  light->SwitchOn();
+}
+
+//------------------------------------------------------------------------------
 vtkImageData* vtkReliefMapper::GetReliefTexture()
 {
   if (this->GetNumberOfInputConnections(1) < 1)
@@ -147,6 +185,11 @@ void vtkReliefMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* actor)
     vtkAlgorithmOutput* lightPort = this->GetInputConnection(2, 0);
     lightPort->GetProducer()->Update(lightPort->GetIndex());
   }
+  if (!this->Static && this->GetNumberOfInputConnections(3) > 0)
+  {
+    vtkAlgorithmOutput* probesPort = this->GetInputConnection(3, 0);
+    probesPort->GetProducer()->Update(probesPort->GetIndex());
+  }
   this->PreparedInput =
     this->CurrentInput ? this->Shading->GetGeometryCache()->Prepare(this->CurrentInput) : nullptr;
   if (!this->PreparedInput)
@@ -165,7 +208,7 @@ void vtkReliefMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* actor)
     lights = vtkAttachReliefTexture::GetAttachedLightSet(this->CurrentInput);
   }
   if (!this->Shading->StartDraw(vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow()),
-        this->GetReliefProperty(), relief, lights, actor))
+        this->GetReliefProperty(), relief, lights, this->GetIrradianceProbes(), actor))
   {
     return;
   }

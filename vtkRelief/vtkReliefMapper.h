@@ -37,7 +37,9 @@
  *
  * The relief texture comes either as data (SetReliefTextureData), from a pipeline
  * (SetReliefTextureConnection, input port 1), or attached to the input polydata as field data
- * (vtkAttachReliefTexture); likewise the light set (input port 2).
+ * (vtkAttachReliefTexture); likewise the light set (input port 2). Irradiance probes (input
+ * port 3, as data or from a pipeline) light it with a virtual light field's indirect light; the
+ * field's emitters become VTK lights through ConfigureEmitterLight (docs/vlf.md, "On the GPU").
  *
  * Up to vtkReliefShading::MaximumNumberOfLights (8) of the renderer's lights are shaded; further
  * lights are ignored with a warning. The relief drawing (geometry, textures, shader edits,
@@ -55,6 +57,7 @@
 
 class vtkAlgorithmOutput;
 class vtkImageData;
+class vtkLight;
 class vtkReliefShading;
 
 class MESOLIGHTRELIEF_EXPORT vtkReliefMapper : public vtkOpenGLPolyDataMapper
@@ -108,11 +111,31 @@ public:
    * world coordinates, the real SH basis of FieldIrradiance.h) is pixel (9 i + k, j). The relief
    * is lit by the probes' irradiance at its perturbed normal (interpolated bilinearly between
    * probes), albedo / pi, besides the renderer's lights and the light set. Input port 3.
+   * The relief's own occlusion of this light is not modelled (the CPU evaluation's
+   * ReliefLighting::OcclusionDirections = 0). Like the light set, the sum is scaled by the
+   * property's Exposure and tone mapped when ToneMapping is on (the default); turn it off to
+   * read radiance. A malformed image (width not a multiple of 9, empty, non-finite
+   * coefficients) is reported with an error and the relief is drawn without probes.
    */
   void SetIrradianceProbesData(vtkImageData* probes);
   void SetIrradianceProbesConnection(vtkAlgorithmOutput* output);
   vtkImageData* GetIrradianceProbes();
   ///@}
+
+  /**
+   * Makes `light` the relief's stand-in for a small emitter of a light field (a diffuse area
+   * light far from the relief compared with its size, vtkVLF's EmitterLights): a point at
+   * `position` whose radiant intensity is `intensityRGB` (Le x Area) along the unit `normal` and
+   * falls off as cos(theta) away from it, with 1 / d^2 attenuation. In VTK's terms a positional
+   * scene light, a spot light with a 90 degree cone and exponent 1 (the cosine lobe) and
+   * attenuation (0, 0, 1); colour intensityRGB / max component, intensity max component / pi.
+   * The pi: VTK lights shade albedo x colour x intensity x cos (no 1 / pi), so a point at
+   * distance d of normal n reflects albedo / pi x Le A cos(theta_emitter) cos(theta_n) / d^2,
+   * the Lambertian radiance under that emitter, in the units of the irradiance probes' shading.
+   * The relief's self-shadowing applies to it as to any VTK light.
+   */
+  static void ConfigureEmitterLight(vtkLight* light, const double position[3],
+    const double normal[3], const double intensityRGB[3]);
 
   /** Includes the relief property's modification time. */
   vtkMTimeType GetMTime() override;

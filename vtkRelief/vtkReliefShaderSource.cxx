@@ -8,6 +8,7 @@
 // GLSL sources embedded at build time (vtk_encode_string).
 #include "vtkReliefHeightFieldFS.h"
 #include "vtkReliefImplFS.h"
+#include "vtkReliefIrradianceProbesFS.h"
 #include "vtkReliefLightSetFS.h"
 #include "vtkReliefLightingFS.h"
 #include "vtkReliefMarchFS.h"
@@ -64,13 +65,14 @@ vtkReliefShaderSource::vtkReliefShaderSource()
 vtkReliefShaderSource::~vtkReliefShaderSource() = default;
 
 //------------------------------------------------------------------------------
-void vtkReliefShaderSource::Configure(
-  vtkReliefProperty* property, bool albedoTexture, bool conePacked, bool lightSet)
+void vtkReliefShaderSource::Configure(vtkReliefProperty* property, bool albedoTexture,
+  bool conePacked, bool lightSet, bool irradianceProbes)
 {
   this->Property = property;
   this->HasAlbedoTexture = albedoTexture;
   this->ConePacked = conePacked;
   this->HasLightSet = lightSet;
+  this->HasIrradianceProbes = irradianceProbes;
 }
 
 //------------------------------------------------------------------------------
@@ -82,7 +84,8 @@ std::string vtkReliefShaderSource::Key() const
     (this->HasAlbedoTexture ? "A" : "a") + std::to_string(p->GetOutput()) +
     (this->ConePacked ? "C" : "c") + (p->GetAdaptiveSteps() ? "V" : "v") +
     (p->GetLevelOfDetail() ? "L" : "l") + (this->HasLightSet ? "I" : "i") +
-    (p->GetToneMapping() ? "T" : "t") + (p->GetShadowCulling() ? "K" : "k");
+    (p->GetToneMapping() ? "T" : "t") + (p->GetShadowCulling() ? "K" : "k") +
+    (this->HasIrradianceProbes ? "P" : "p");
 }
 
 //------------------------------------------------------------------------------
@@ -169,6 +172,10 @@ void vtkReliefShaderSource::ReplaceValuesAfter(std::string& fs, const void* cell
   {
     defines += "#define ML_LIGHT_SET\n";
   }
+  if (this->HasIrradianceProbes)
+  {
+    defines += "#define ML_IRRADIANCE_PROBES\n";
+  }
   if (p->GetToneMapping())
   {
     defines += "#define ML_TONE_MAPPING\n";
@@ -184,7 +191,8 @@ void vtkReliefShaderSource::ReplaceValuesAfter(std::string& fs, const void* cell
     "uniform mat4 mlViewToClip;\n" +
     vtkReliefHeightFieldFS +
     (p->GetMethod() == vtkReliefProperty::MaximumMipmap ? vtkReliefMaxMipmapFS : "") +
-    vtkReliefMarchFS + vtkReliefLightingFS + (this->HasLightSet ? vtkReliefLightSetFS : "");
+    vtkReliefMarchFS + vtkReliefLightingFS + (this->HasLightSet ? vtkReliefLightSetFS : "") +
+    (this->HasIrradianceProbes ? vtkReliefIrradianceProbesFS : "");
   vtkShaderProgram::Substitute(fs, "//MESOLIGHT::Dec", declarations);
   vtkShaderProgram::Substitute(fs, "//MESOLIGHT::UniformFlow::Impl",
     "vec3 mlDPdx = dFdx(vertexVC.xyz);\n"

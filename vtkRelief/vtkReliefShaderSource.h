@@ -9,8 +9,8 @@
  * placeholders reserved in the fragment shader; after, the relief implementation (the GLSL of
  * vtkRelief/glsl, embedded at build time) replaces VTK's lighting, with #defines for the
  * variant: the property's method, output and switches, and what the draw binds (an albedo
- * texture, a cone-packed relief texture, a light set). Each shader is keyed by the variant it
- * was built for, so a change of variant rebuilds it.
+ * texture, a cone-packed relief texture, a light set, irradiance probes). Each shader is keyed by
+ * the variant it was built for, so a change of variant rebuilds it.
  */
 
 #ifndef vtkReliefShaderSource_h
@@ -33,7 +33,8 @@ public:
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   /** The variant of the coming draw: the property's settings and what the draw binds. */
-  void Configure(vtkReliefProperty* property, bool albedoTexture, bool conePacked, bool lightSet);
+  void Configure(vtkReliefProperty* property, bool albedoTexture, bool conePacked, bool lightSet,
+    bool irradianceProbes);
 
   /** Whether the shader recorded for this helper (cellBO) was built for another variant. */
   bool KeyChanged(const void* cellBO) const;
@@ -61,6 +62,7 @@ protected:
   bool HasAlbedoTexture = false;
   bool ConePacked = false;
   bool HasLightSet = false;
+  bool HasIrradianceProbes = false;
   std::map<const void*, std::string> Keys;
 
 private:

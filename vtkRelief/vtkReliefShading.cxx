@@ -5,6 +5,7 @@
 #include "vtkCamera.h"
 #include "vtkDataArray.h"
 #include "vtkImageData.h"
+#include "vtkIrradianceProbesTexture.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkLightSetTexture.h"
@@ -40,6 +41,7 @@ vtkReliefShading::vtkReliefShading()
   this->Messages->Watch(this->ReliefTexture);
   this->Messages->Watch(this->ReliefTexture->GetPyramid());
   this->Messages->Watch(this->LightSet);
+  this->Messages->Watch(this->Probes);
   this->Messages->Watch(this->ShaderSource);
 }
 
@@ -100,7 +102,7 @@ vtkReliefGeometryCache* vtkReliefShading::GetGeometryCache()
 
 //------------------------------------------------------------------------------
 bool vtkReliefShading::StartDraw(vtkOpenGLRenderWindow* renWin, vtkReliefProperty* property,
-  vtkImageData* relief, vtkImageData* lights, vtkActor* actor)
+  vtkImageData* relief, vtkImageData* lights, vtkImageData* probes, vtkActor* actor)
 {
   this->Drawing = false;
   this->Property = property;
@@ -118,6 +120,7 @@ bool vtkReliefShading::StartDraw(vtkOpenGLRenderWindow* renWin, vtkReliefPropert
   {
     return false;
   }
+  this->Probes->Update(renWin, probes); // malformed probes: reported, drawn without them
   const int requiredCones = vtkReliefProperty::GetRequiredConeMap(method);
   if (requiredCones != vtkReliefProperty::NoConeMap && !this->ReliefTexture->GetConePacked())
   {
@@ -160,7 +163,8 @@ bool vtkReliefShading::StartDraw(vtkOpenGLRenderWindow* renWin, vtkReliefPropert
     this->CheckedAlbedoTime = albedo->GetMTime();
   }
   this->ShaderSource->Configure(property, actor->GetTexture() != nullptr,
-    this->ReliefTexture->GetConePacked(), this->LightSet->GetHasLightSet());
+    this->ReliefTexture->GetConePacked(), this->LightSet->GetHasLightSet(),
+    this->Probes->GetHasProbes());
   vtkTextureObject* texture = this->ReliefTexture->GetTextureObject();
   const int wrap =
     property->GetRepeatTexture() ? vtkTextureObject::Repeat : vtkTextureObject::ClampToEdge;
@@ -176,6 +180,11 @@ bool vtkReliefShading::StartDraw(vtkOpenGLRenderWindow* renWin, vtkReliefPropert
   if (this->LightSetActive)
   {
     this->LightSet->GetTextureObject()->Activate();
+  }
+  this->ProbesActive = this->Probes->GetHasProbes();
+  if (this->ProbesActive)
+  {
+    this->Probes->GetTextureObject()->Activate();
   }
   this->Drawing = true;
   return true;
@@ -196,6 +205,10 @@ void vtkReliefShading::FinishDraw()
   if (this->LightSetActive)
   {
     this->LightSet->GetTextureObject()->Deactivate();
+  }
+  if (this->ProbesActive)
+  {
+    this->Probes->GetTextureObject()->Deactivate();
   }
   this->Drawing = false;
 }
@@ -295,6 +308,16 @@ void vtkReliefShading::SetShaderParameters(
     program->SetUniformf("mlLightSetCutoff",
       static_cast<float>(p->GetLightSetThreshold() * this->LightSet->GetMaximumLuminance()));
     program->SetUniformi("mlShadowedLights", p->GetShadowedLights());
+  }
+  if (this->ProbesActive)
+  {
+    program->SetUniformi("mlIrradianceProbes", this->Probes->GetTextureObject()->GetTextureUnit());
+    const int* grid = this->Probes->GetGridSize();
+    const float probeGrid[2] = { static_cast<float>(grid[0]), static_cast<float>(grid[1]) };
+    program->SetUniform2f("mlProbeGrid", probeGrid);
+  }
+  if (this->LightSet->GetHasLightSet() || this->ProbesActive)
+  {
     float worldToView[9];
     vtkMatrix4x4* view = camera->GetViewTransformMatrix();
     for (int r = 0; r < 3; ++r)
@@ -381,6 +404,7 @@ void vtkReliefShading::ReleaseGraphicsResources(vtkWindow* win)
 {
   this->ReliefTexture->ReleaseGraphicsResources(win);
   this->LightSet->ReleaseGraphicsResources(win);
+  this->Probes->ReleaseGraphicsResources(win);
   this->ShaderSource->ForgetShaders();
 }
 
@@ -392,6 +416,8 @@ void vtkReliefShading::PrintSelf(ostream& os, vtkIndent indent)
   this->ReliefTexture->PrintSelf(os, indent.GetNextIndent());
   os << indent << "LightSet:\n";
   this->LightSet->PrintSelf(os, indent.GetNextIndent());
+  os << indent << "IrradianceProbes:\n";
+  this->Probes->PrintSelf(os, indent.GetNextIndent());
   os << indent << "ShaderSource:\n";
   this->ShaderSource->PrintSelf(os, indent.GetNextIndent());
 }

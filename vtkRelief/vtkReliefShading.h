@@ -12,8 +12,9 @@
  * the same calls on one vtkReliefShading, so the two draw the same pixels:
  *  - GetGeometryCache()->Prepare(input): the geometry the shader reads (vtkReliefGeometryCache);
  *  - StartDraw / FinishDraw: the relief texture and its min-depth pyramid
- *    (vtkReliefTextureCache, vtkMinDepthPyramidTexture) and the light set (vtkLightSetTexture)
- *    brought up to date and bound, for the settings of a vtkReliefProperty;
+ *    (vtkReliefTextureCache, vtkMinDepthPyramidTexture), the light set (vtkLightSetTexture) and
+ *    the irradiance probes (vtkIrradianceProbesTexture) brought up to date and bound, for the
+ *    settings of a vtkReliefProperty;
  *  - ShaderKeyChanged, ReplaceShaderValuesBefore/After: the shader edits
  *    (vtkReliefShaderSource);
  *  - SetShaderParameters: the uniforms of one draw.
@@ -33,6 +34,7 @@
 
 class vtkActor;
 class vtkImageData;
+class vtkIrradianceProbesTexture;
 class vtkLightSetTexture;
 class vtkOpenGLRenderWindow;
 class vtkReliefGeometryCache;
@@ -74,12 +76,13 @@ public:
   vtkReliefGeometryCache* GetGeometryCache();
 
   /**
-   * Uploads the relief texture and the light set (null: none) when they changed, and activates
-   * the textures for a draw with these settings and this actor. False (with an error) if nothing
-   * can be drawn.
+   * Uploads the relief texture, the light set and the irradiance probes (null: none) when they
+   * changed, and activates the textures for a draw with these settings and this actor. False
+   * (with an error) if nothing can be drawn. Malformed probes are reported and left out: the
+   * relief is drawn without them.
    */
   bool StartDraw(vtkOpenGLRenderWindow* renWin, vtkReliefProperty* property, vtkImageData* relief,
-    vtkImageData* lights, vtkActor* actor);
+    vtkImageData* lights, vtkImageData* probes, vtkActor* actor);
   /** Deactivates what StartDraw activated. */
   void FinishDraw();
 
@@ -111,6 +114,7 @@ protected:
   vtkNew<vtkReliefGeometryCache> GeometryCache;
   vtkNew<vtkReliefTextureCache> ReliefTexture;
   vtkNew<vtkLightSetTexture> LightSet;
+  vtkNew<vtkIrradianceProbesTexture> Probes;
   vtkNew<vtkReliefShaderSource> ShaderSource;
   vtkNew<vtkReliefMessageForwarder> Messages;
 
@@ -119,6 +123,7 @@ protected:
   bool Drawing = false;
   bool PyramidActive = false;
   bool LightSetActive = false;
+  bool ProbesActive = false;
   bool WarnedTooManyLights = false;
   // The albedo texture image last checked for NaN/Inf texels, and when (its MTime).
   vtkImageData* CheckedAlbedo = nullptr;

@@ -81,11 +81,19 @@
   gl_FragData[0] = vec4(vec3(mlFirstLightVisible), 1.0);
 #else
   gl_FragData[0] = vec4(ambientColor + diffuse * diffuseColor + specular * mlSpecularColor, opacity);
-#ifdef ML_LIGHT_SET
+#if defined(ML_LIGHT_SET) || defined(ML_IRRADIANCE_PROBES)
   // Lambertian under the environment: albedo / pi times irradiance, scaled by the exposure.
-  vec3 mlEnvironment = mlLightSetIrradiance(mlShadingNormal, mlShadowPoint, mlWorldToTexture,
-    mlHasFrame) * (diffuseColor / 3.14159265);
-  gl_FragData[0].rgb = (gl_FragData[0].rgb + mlEnvironment) * mlExposure;
+  vec3 mlEnvironment = vec3(0.0);
+#ifdef ML_LIGHT_SET
+  mlEnvironment += mlLightSetIrradiance(mlShadingNormal, mlShadowPoint, mlWorldToTexture,
+    mlHasFrame);
+#endif
+#ifdef ML_IRRADIANCE_PROBES
+  // The probes' SH9 irradiance at the perturbed normal, in world coordinates.
+  mlEnvironment += mlProbeIrradiance(mlHit.xy, transpose(mlWorldToView) * mlShadingNormal);
+#endif
+  gl_FragData[0].rgb =
+    (gl_FragData[0].rgb + mlEnvironment * (diffuseColor / 3.14159265)) * mlExposure;
 #ifdef ML_TONE_MAPPING
   gl_FragData[0].rgb = gl_FragData[0].rgb / (1.0 + gl_FragData[0].rgb); // Reinhard
 #endif

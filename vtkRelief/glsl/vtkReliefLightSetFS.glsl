@@ -15,7 +15,6 @@ uniform sampler2D mlLightSet;
 uniform int mlLightSetCount;
 uniform float mlLightSetCutoff; // luminance below which lights are skipped
 uniform int mlShadowedLights;   // 0: march every facing light
-uniform mat3 mlWorldToView;
 
 // Irradiance at the hit from the light set (to be multiplied by albedo / pi).
 vec3 mlLightSetIrradiance(vec3 normalVC, vec3 hit, mat3 worldToTexture, bool marchShadows)

@@ -15,7 +15,8 @@ uniform float mlLightExponent[ML_MAX_LIGHTS];
 uniform int mlLightPositional[ML_MAX_LIGHTS];
 uniform vec3 mlSpecularColor; // specular x specular colour
 uniform float mlSpecularPower;
-uniform float mlExposure; // scales the light-set shading (ML_LIGHT_SET)
+uniform float mlExposure; // scales the light-set and probe shading
+uniform mat3 mlWorldToView; // rotation part of the view matrix
 
 // Accumulates diffuse and specular light at a point of the height field.
 //   posVC, normalVC: the hit point and the height field's normal there, view coordinates
@@ -42,7 +43,7 @@ void mlAccumulateLights(vec3 posVC, vec3 normalVC, vec3 hit, mat3 worldToTexture
       {
         float coneDot = dot(lightDir, mlLightDirectionVC[i]);
         attenuation = coneDot >= cos(radians(mlLightConeAngle[i]))
-          ? attenuation * pow(coneDot, mlLightExponent[i])
+          ? attenuation * pow(max(coneDot, 0.0), mlLightExponent[i])
           : 0.0;
       }
     }

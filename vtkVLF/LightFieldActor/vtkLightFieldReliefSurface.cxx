@@ -18,6 +18,7 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkReliefMapper.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 
 #include "EmitterLights.h"
@@ -101,31 +102,6 @@ int vtkLightFieldReliefSurface::RequestInformation(
   info->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent, 6);
   vtkDataObject::SetPointDataActiveScalarInfo(info, VTK_FLOAT, 3);
   return 1;
-}
-
-//------------------------------------------------------------------------------
-void vtkLightFieldReliefSurface::ConfigureEmitterLight(
-  vtkLight* light, const double position[3], const double normal[3], const double intensity[3])
-{
-  // A Lambertian emitter of radiance Le and area A radiates Le A cos(theta) per steradian: a
-  // spot light of exponent 1 over the whole front hemisphere, falling off as 1 / d^2.
-  light->SetLightTypeToSceneLight();
-  light->PositionalOn();
-  light->SetPosition(position[0], position[1], position[2]);
-  light->SetFocalPoint(position[0] + normal[0], position[1] + normal[1], position[2] + normal[2]);
-  light->SetConeAngle(90.0);
-  light->SetExponent(1.0);
-  light->SetAttenuationValues(0.0, 0.0, 1.0);
-  const double peak = std::max(intensity[0], std::max(intensity[1], intensity[2]));
-  light->SetIntensity(peak);
-  if (peak > 0.0)
-  {
-    light->SetColor(intensity[0] / peak, intensity[1] / peak, intensity[2] / peak);
-  }
-  else
-  {
-    light->SetColor(1.0, 1.0, 1.0);
-  }
 }
 
 //------------------------------------------------------------------------------
@@ -250,7 +226,7 @@ int vtkLightFieldReliefSurface::RequestData(
     const double intensity[3] = { unitIntensity.x / (scale * scale),
       unitIntensity.y / (scale * scale), unitIntensity.z / (scale * scale) };
     vtkNew<vtkLight> light;
-    ConfigureEmitterLight(light, position, normal, intensity);
+    vtkReliefMapper::ConfigureEmitterLight(light, position, normal, intensity);
     this->EmitterLights->AddItem(light);
   }
   return 1;

@@ -20,10 +20,10 @@
  *   float image of 3 components, pixel (9 i + k, j) SH9 coefficient k of probe (i, j) at texture
  *   ((i + 1/2) / n, (j + 1/2) / n) (mesolight::vlf::ReliefSurfaceProbes).
  * - GetEmitterLights(): the field's emitters as VTK lights (mesolight::vlf::EstimateEmitterLights,
- *   one per emitting surface at its centroid), world coordinates: positional spot lights facing
- *   along the emitter's normal, cone 90 degrees, exponent 1 (a cosine lobe), attenuation
- *   (0, 0, 1) (inverse square), colour times intensity the radiant intensity Le x Area in world
- *   units. Add them to the renderer that draws the relief only (a renderer of their own: the
+ *   one per emitting surface at its centroid, world coordinates), each set up by
+ *   vtkReliefMapper::ConfigureEmitterLight from the radiant intensity Le x Area in world units
+ *   (a cosine-lobe spot light falling off as 1 / d^2, intensity divided by pi: VTK shades
+ *   Kd x intensity x cos without the Lambertian 1 / pi). Add them to the renderer that draws the relief only (a renderer of their own: the
  *   walkthrough's geometry mode is lit by its renderer's lights).
  *
  * GetSurfaceDiffuse() is the surface's Kd (the relief actor's colour). An unknown name (the
@@ -81,13 +81,6 @@ public:
 
   /** The surface's diffuse reflectance (Kd) after an update. */
   vtkGetVector3Macro(SurfaceDiffuse, double);
-
-  /**
-   * Sets `light` up as an emitter (see above): at `position` facing along unit `normal`, world
-   * coordinates, radiant intensity `intensity` (RGB, Le x Area) along the normal.
-   */
-  static void ConfigureEmitterLight(
-    vtkLight* light, const double position[3], const double normal[3], const double intensity[3]);
 
   vtkMTimeType GetMTime() override;
 

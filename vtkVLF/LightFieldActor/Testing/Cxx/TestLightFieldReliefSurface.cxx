@@ -236,7 +236,9 @@ TEST(LightFieldReliefSurface, EmitterLightsCarryRadiantIntensityInWorldUnits)
   double* colour = light->GetDiffuseColor();
   for (int c = 0; c < 3; ++c)
   {
-    EXPECT_NEAR(light->GetIntensity() * colour[c], le[c] * area, 1e-3 * le[c] * area);
+    // VTK shades Kd x intensity x cos: the Lambertian 1 / pi is in the light's intensity.
+    const double expected = le[c] * area / 3.14159265358979323846;
+    EXPECT_NEAR(light->GetIntensity() * colour[c], expected, 1e-3 * expected);
     EXPECT_NEAR(light->GetPosition()[c], centroid[c], 1e-3);
   }
   EXPECT_TRUE(light->GetPositional());

@@ -1,0 +1,296 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "ReliefFieldCostBenchmark.h"
+
+#include "CommandLine.h"
+#include "EnvironmentMaps.h" // SH9, EvaluateSHBasis
+#include "ImageCompare.h"
+#include "MathConstants.h"
+#include "OutputFile.h"
+#include "ReliefScene.h"
+#include "Timing.h"
+#include "vtkReliefMapper.h"
+
+#include <vtkActor.h>
+#include <vtkFloatArray.h>
+#include <vtkImageData.h>
+#include <vtkLight.h>
+#include <vtkMath.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkProperty.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <functional>
+#include <iomanip>
+#include <iostream>
+
+namespace mesolight
+{
+namespace
+{
+// The SH9 projection of a radiance function (midpoint rule, uniform in z and phi).
+SH9 Project(const std::function<double(const double d[3])>& radiance, const double colour[3])
+{
+  SH9 sh;
+  const int nz = 64, nphi = 128;
+  const double dOmega = (2.0 / nz) * (2.0 * Pi<double> / nphi);
+  for (int a = 0; a < nz; ++a)
+  {
+    const double z = -1.0 + (a + 0.5) * 2.0 / nz;
+    const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
+    for (int b = 0; b < nphi; ++b)
+    {
+      const double phi = (b + 0.5) * 2.0 * Pi<double> / nphi;
+      const double d[3] = { r * std::cos(phi), r * std::sin(phi), z };
+      const double l = radiance(d);
+      double y[9];
+      EvaluateSHBasis(d, y);
+      for (int k = 0; k < 9; ++k)
+      {
+        for (int c = 0; c < 3; ++c)
+        {
+          sh.L[k][c] += colour[c] * l * y[k] * dOmega;
+        }
+      }
+    }
+  }
+  return sh;
+}
+
+// n x n probes of a smooth room-like light (a sky-and-ground gradient plus a lobe that turns
+// across the wall), in vtkReliefMapper::SetIrradianceProbesData's layout.
+vtkSmartPointer<vtkImageData> MakeProbes(int n)
+{
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(9 * n, n, 1);
+  vtkNew<vtkFloatArray> values;
+  values->SetNumberOfComponents(3);
+  values->SetNumberOfTuples(static_cast<vtkIdType>(9 * n) * n);
+  const double colour[3] = { 0.35, 0.3, 0.25 };
+  for (int j = 0; j < n; ++j)
+  {
+    for (int i = 0; i < n; ++i)
+    {
+      const double a = (i + 0.5) / n - 0.5, b = (j + 0.5) / n - 0.5;
+      const double norm = std::sqrt(a * a + b * b + 1.0);
+      const SH9 sh = Project(
+        [&](const double d[3])
+        {
+          const double lobe = std::max(0.0, (a * d[0] + b * d[1] + d[2]) / norm);
+          return 0.3 * (1.0 + 0.5 * d[2]) + lobe * lobe;
+        },
+        colour);
+      for (int k = 0; k < 9; ++k)
+      {
+        values->SetTuple3(
+          static_cast<vtkIdType>(j) * 9 * n + 9 * i + k, sh.L[k][0], sh.L[k][1], sh.L[k][2]);
+      }
+    }
+  }
+  image->GetPointData()->SetScalars(values);
+  return image;
+}
+
+// Emitter k of 4 above the wall (a ceiling-like row of small emitters facing down and in).
+vtkSmartPointer<vtkLight> MakeEmitterLight(int k)
+{
+  const double x = 0.2 + 0.2 * k;
+  const double position[3] = { x, -0.3, 0.6 };
+  const double normal[3] = { 0.0, 0.6, -0.8 };
+  const double intensity[3] = { 1.2, 1.1, 0.9 };
+  auto light = vtkSmartPointer<vtkLight>::New();
+  vtkReliefMapper::ConfigureEmitterLight(light, position, normal, intensity);
+  return light;
+}
+
+vtkSmartPointer<vtkLight> MakeKeyLight()
+{
+  auto light = vtkSmartPointer<vtkLight>::New();
+  light->SetLightTypeToSceneLight();
+  light->PositionalOff();
+  light->SetFocalPoint(0.5, 0.5, 0.0);
+  light->SetPosition(0.5 - 0.65, 0.5 + 0.5, 0.57); // about 35 degrees above the wall
+  return light;
+}
+
+struct Config
+{
+  std::string Label;
+  int Emitters = 0;       // field emitters as VTK lights
+  bool KeyLight = false;  // one directional VTK light
+  bool Probes = false;    // SH9 probes
+  bool Hidden = false;    // the relief not drawn: the frame's fixed cost
+  std::vector<double> Ms; // every timed frame
+  double MedianMs = 0.0;
+};
+} // namespace
+
+//------------------------------------------------------------------------------
+int RunReliefFieldCostBenchmark(const std::vector<std::string>& args)
+{
+  CommandLine cl("mesolight bench relief-field-cost",
+    "mesolight bench relief-field-cost [options]\n\nFrame time of one relief (vtkReliefMapper, "
+    "relief 16+8, self-shadowed) filling the\nwindow, lit (a) by one VTK light, (b) by SH9 "
+    "irradiance probes plus one light-field\nemitter as a VTK light, (c) by the probes plus four "
+    "emitters; also the probes alone, one\nemitter alone and no light, to split the cost. The "
+    "configurations alternate over\n--rounds rounds (the median of all their frames is "
+    "reported), so a loaded machine\nslows them alike. The goal: (b) <= 1.5 x (a).\n");
+  cl.AddValue(
+    "--map", "PATTERN", "procedural height map (Bricks, Stone, HemisphereTorus, ...)", "Bricks");
+  cl.AddValue("--resolution", "N", "height map resolution", "512");
+  cl.AddValue("--size", "WxH", "window size", "800x800");
+  cl.AddValue("--probes", "N", "N x N SH9 probes over the wall", "8");
+  cl.AddValue("--frames", "N", "timed frames per configuration and round", "10");
+  cl.AddValue("--rounds", "N", "rounds over the configurations", "3");
+  cl.AddValue("--csv", "FILE", "also write the rows as CSV");
+  int exitCode = 0;
+  if (!cl.ParseArguments(args, exitCode))
+  {
+    return exitCode; // --help printed, or a usage error reported
+  }
+  if (const std::string problem = CheckOutputOptions(cl, { "--csv" }, {}); !problem.empty())
+  {
+    return cl.UsageError(problem);
+  }
+  std::string error;
+  int frames = 10, rounds = 3, probes = 8;
+  ReliefSceneOptions o;
+  if (!cl.GetInt("--frames", 1, 10000, frames, error) ||
+    !cl.GetInt("--rounds", 1, 100, rounds, error) ||
+    !cl.GetInt("--probes", 1, 256, probes, error) ||
+    !cl.GetInt("--resolution", 8, 8192, o.Resolution, error) ||
+    !cl.GetSize("--size", 16, 8192, o.Width, o.Height, error))
+  {
+    return cl.UsageError(error);
+  }
+  o.Pattern = cl.Get("--map");
+  o.DepthScale = 0.08;
+  o.ViewAngle = 30.0;
+  o.LinearSteps = 16;
+  o.RefinementSteps = 8;
+  o.SelfShadowing = true;
+  o.FillViewport = true;
+  o.Lights = 0;
+  ReliefScene scene;
+  if (!BuildReliefScene(o, scene, error))
+  {
+    std::cerr << "mesolight bench relief-field-cost: " << error << "\n";
+    return 1;
+  }
+  scene.Actor->GetProperty()->SetAmbient(0.0);
+  scene.Actor->GetProperty()->SetDiffuse(1.0);
+  scene.Actor->GetProperty()->SetSpecular(0.0);
+  vtkReliefProperty* settings = scene.Mapper->GetReliefProperty();
+  settings->SetExposure(1.0);
+  const vtkSmartPointer<vtkImageData> probeImage = MakeProbes(probes);
+  auto window = MakeOffscreenWindow(o, scene.Renderer);
+
+  std::vector<Config> configs = {
+    { "background only (relief hidden)", 0, false, false, true, {}, 0.0 },
+    { "no light (march only)", 0, false, false, false, {}, 0.0 },
+    { "(a) one VTK light + shadows", 0, true, false, false, {}, 0.0 },
+    { "(b) SH9 probes + 1 emitter light + shadows", 1, false, true, false, {}, 0.0 },
+    { "(c) SH9 probes + 4 emitter lights + shadows", 4, false, true, false, {}, 0.0 },
+    { "SH9 probes only", 0, false, true, false, {}, 0.0 },
+    { "1 emitter light + shadows, no probes", 1, false, false, false, {}, 0.0 },
+  };
+  auto apply = [&](const Config& c)
+  {
+    scene.Renderer->RemoveAllLights();
+    if (c.KeyLight)
+    {
+      scene.Renderer->AddLight(MakeKeyLight());
+    }
+    for (int k = 0; k < c.Emitters; ++k)
+    {
+      scene.Renderer->AddLight(MakeEmitterLight(k));
+    }
+    scene.Mapper->SetIrradianceProbesData(c.Probes ? probeImage.Get() : nullptr);
+    scene.Actor->SetVisibility(!c.Hidden);
+  };
+  double coverage = 0.0;
+  for (int round = 0; round < rounds; ++round)
+  {
+    for (Config& c : configs)
+    {
+      apply(c);
+      window->Render(); // warm-up: shader variant, uploads
+      window->WaitForCompletion();
+      for (int f = 0; f < frames; ++f)
+      {
+        c.Ms.push_back(MedianMilliseconds(1,
+          [&]()
+          {
+            window->Render();
+            window->WaitForCompletion();
+          }));
+      }
+      if (round == 0 && c.KeyLight)
+      {
+        const Frame frame = CaptureFrame(window);
+        long long covered = 0;
+        for (size_t p = 0; p < frame.Depth.size(); ++p)
+        {
+          covered += frame.Covered(p) ? 1 : 0;
+        }
+        coverage = frame.Depth.empty() ? 0.0 : double(covered) / frame.Depth.size();
+      }
+    }
+  }
+  for (Config& c : configs)
+  {
+    std::nth_element(c.Ms.begin(), c.Ms.begin() + c.Ms.size() / 2, c.Ms.end());
+    c.MedianMs = c.Ms[c.Ms.size() / 2];
+  }
+  const double background = configs[0].MedianMs;
+  const double single = configs[2].MedianMs;
+  const double singleRelief = single - background;
+  std::cout << "Relief lit by a light field vs one VTK light: map " << o.Pattern << " "
+            << o.Resolution << ", relief 16+8 with self-shadowing, " << o.Width << "x" << o.Height
+            << " window, " << std::fixed << std::setprecision(1) << 100.0 * coverage
+            << "% covered, " << probes << "x" << probes << " SH9 probes; " << rounds << " rounds x "
+            << frames << " frames (median)\n";
+  std::cout << "ratio: ms/frame over (a)'s; relief ratio: the same less the background frame\n\n";
+  std::cout << std::left << std::setw(46) << "configuration" << std::right << std::setw(10)
+            << "ms/frame" << std::setw(8) << "ratio" << std::setw(14) << "relief ratio"
+            << "\n";
+  for (const Config& c : configs)
+  {
+    std::cout << std::left << std::setw(46) << c.Label << std::right << std::fixed
+              << std::setprecision(2) << std::setw(10) << c.MedianMs << std::setw(8)
+              << c.MedianMs / single << std::setw(14)
+              << (c.Hidden ? 0.0 : (c.MedianMs - background) / singleRelief) << "\n";
+  }
+  const double ratioB = (configs[3].MedianMs - background) / singleRelief;
+  std::cout << "\n(b) / (a) per relief pixel: " << std::setprecision(2) << ratioB
+            << (ratioB <= 1.5 ? " (goal <= 1.5: met)" : " (goal <= 1.5: NOT met)") << "\n";
+  std::cout.unsetf(std::ios::fixed);
+  if (cl.Has("--csv"))
+  {
+    const std::string file = cl.Get("--csv");
+    std::ofstream csv(file);
+    csv << "configuration,vtk_lights,emitter_lights,sh9_probes,ms_per_frame,ratio_to_a,"
+           "relief_ratio_to_a,window,coverage,map,rounds,frames\n";
+    for (const Config& c : configs)
+    {
+      csv << '"' << c.Label << "\"," << (c.KeyLight ? 1 : 0) << ',' << c.Emitters << ','
+          << (c.Probes ? probes * probes : 0) << ',' << c.MedianMs << ',' << c.MedianMs / single
+          << ',' << (c.Hidden ? 0.0 : (c.MedianMs - background) / singleRelief) << ',' << o.Width
+          << 'x' << o.Height << ',' << coverage << ',' << o.Pattern << ',' << rounds << ','
+          << frames << "\n";
+    }
+    if (!csv)
+    {
+      std::cerr << "mesolight bench relief-field-cost: could not write " << file << "\n";
+      return 1;
+    }
+    std::cout << "wrote " << file << "\n";
+  }
+  return 0;
+}
+
+} // namespace mesolight

@@ -1,0 +1,619 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// vtkReliefMapper lit per pixel by a light field's lighting on the GPU: SH9 irradiance probes
+// over the relief's texture, and the field's emitters as VTK point lights with a cosine lobe.
+// References: the analytic furnace case (constant radiance L: irradiance pi L at every normal),
+// and the CPU evaluation of the same lighting on the exact height-field intersector
+// (evaluation/core/ReliefShading, what `mesolight vlf render --relief` shades with), pixel by
+// pixel along the rays of the rendered pixels. Negative cases: the flat normal, the probes'
+// coefficients in the wrong place, an emitter without its cosine lobe or without its 1 / d^2.
+#include "EnvironmentMaps.h" // SH9, EvaluateSHBasis
+#include "ImageCompare.h"
+#include "MessageCapture.h"
+#include "ReliefScene.h"
+#include "ReliefShading.h"
+#include "TestReliefTestUtilities.h"
+#include "vtkCompositeReliefMapper.h"
+#include "vtkReliefMapper.h"
+
+#include <vtkActor.h>
+#include <vtkCamera.h>
+#include <vtkFloatArray.h>
+#include <vtkImageData.h>
+#include <vtkLight.h>
+#include <vtkMath.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkProperty.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+#include <vtkRendererCollection.h>
+#include <vtkTrivialProducer.h>
+
+#include <glm/geometric.hpp>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <iostream>
+#include <limits>
+#include <vector>
+
+namespace
+{
+using namespace mesolight;
+
+constexpr double DepthScale = 0.1;
+constexpr int DepthSize = 128;
+constexpr int Pixels = 160;
+
+// Smooth bumps: slopes up to about 35 degrees at this depth scale, valleys that shadow a low
+// light, and no creases (the baked normals and the exact bilinear surface's agree closely).
+double Bumps(double u, double v)
+{
+  return 0.5 +
+    0.5 * std::sin(2.0 * vtkMath::Pi() * 2.0 * u) * std::cos(2.0 * vtkMath::Pi() * 2.0 * v);
+}
+
+std::vector<float> DepthSamples(const std::function<double(double, double)>& depth)
+{
+  std::vector<float> samples(static_cast<size_t>(DepthSize) * DepthSize);
+  for (int j = 0; j < DepthSize; ++j)
+  {
+    for (int i = 0; i < DepthSize; ++i)
+    {
+      samples[static_cast<size_t>(j) * DepthSize + i] =
+        static_cast<float>(depth((i + 0.5) / DepthSize, (j + 0.5) / DepthSize));
+    }
+  }
+  return samples;
+}
+
+// The SH9 projection of a radiance function over the sphere (midpoint rule, uniform in z and
+// phi, i.e. in solid angle).
+SH9 Project(const std::function<glm::dvec3(const glm::dvec3&)>& radiance)
+{
+  SH9 sh;
+  const int nz = 256, nphi = 512;
+  const double dOmega = (2.0 / nz) * (2.0 * vtkMath::Pi() / nphi);
+  for (int a = 0; a < nz; ++a)
+  {
+    const double z = -1.0 + (a + 0.5) * 2.0 / nz;
+    const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
+    for (int b = 0; b < nphi; ++b)
+    {
+      const double phi = (b + 0.5) * 2.0 * vtkMath::Pi() / nphi;
+      const double d[3] = { r * std::cos(phi), r * std::sin(phi), z };
+      const glm::dvec3 l = radiance(glm::dvec3(d[0], d[1], d[2]));
+      double y[9];
+      EvaluateSHBasis(d, y);
+      for (int k = 0; k < 9; ++k)
+      {
+        for (int c = 0; c < 3; ++c)
+        {
+          sh.L[k][c] += l[c] * y[k] * dOmega;
+        }
+      }
+    }
+  }
+  return sh;
+}
+
+// The probe image of vtkReliefMapper::SetIrradianceProbesData: (9 Nu) x Nv RGB floats.
+vtkSmartPointer<vtkImageData> ProbeImage(int nu, int nv, const std::vector<SH9>& probes)
+{
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(9 * nu, nv, 1);
+  vtkNew<vtkFloatArray> values;
+  values->SetNumberOfComponents(3);
+  values->SetNumberOfTuples(static_cast<vtkIdType>(9 * nu) * nv);
+  for (int j = 0; j < nv; ++j)
+  {
+    for (int i = 0; i < nu; ++i)
+    {
+      const SH9& sh = probes[static_cast<size_t>(j) * nu + i];
+      for (int k = 0; k < 9; ++k)
+      {
+        values->SetTuple3(
+          static_cast<vtkIdType>(j) * 9 * nu + 9 * i + k, sh.L[k][0], sh.L[k][1], sh.L[k][2]);
+      }
+    }
+  }
+  image->GetPointData()->SetScalars(values);
+  return image;
+}
+
+// One window for the whole program (see TestReliefLightSet.cxx: new X windows after a
+// light-set render were seen to fail under Xvfb + llvmpipe).
+vtkRenderWindow* Window()
+{
+  static vtkSmartPointer<vtkRenderWindow> window;
+  if (!window)
+  {
+    ReliefSceneOptions size;
+    size.Width = size.Height = Pixels;
+    vtkNew<vtkRenderer> unused;
+    window = MakeOffscreenWindow(size, unused);
+    window->RemoveRenderer(unused);
+  }
+  return window;
+}
+
+struct Scene
+{
+  vtkNew<vtkReliefMapper> Mapper;
+  vtkSmartPointer<vtkActor> Actor;
+  vtkNew<vtkRenderer> Renderer;
+  HeightField Height{ 1, 1, { 0.0f } };
+  ReliefFrame Plane;
+};
+
+// The unit square carrying `depth`, white Lambertian, linear shading (no tone mapping), no
+// VTK light unless added; seen obliquely with a perspective camera, or straight down.
+void BuildScene(Scene& scene, const std::function<double(double, double)>& depth, bool oblique)
+{
+  auto relief = test::BakeRelief(test::MakeDepthMap(DepthSize, DepthSize, depth), DepthScale);
+  scene.Actor = test::UnitSquareRelief(scene.Mapper, relief, DepthScale);
+  scene.Mapper->GetReliefProperty()->ToneMappingOff();
+  scene.Mapper->GetReliefProperty()->SetExposure(1.0);
+  scene.Mapper->GetReliefProperty()->SetLinearSteps(64);
+  scene.Renderer->AutomaticLightCreationOff();
+  scene.Renderer->AddActor(scene.Actor);
+  test::LookStraightDown(scene.Renderer);
+  if (oblique)
+  {
+    vtkCamera* camera = scene.Renderer->GetActiveCamera();
+    camera->ParallelProjectionOff();
+    camera->SetFocalPoint(0.5, 0.5, -0.05);
+    camera->SetPosition(0.5, -0.45, 1.05);
+    camera->SetViewUp(0, 0, 1);
+    camera->SetViewAngle(50.0);
+    camera->SetClippingRange(0.3, 4.0);
+  }
+  scene.Height = HeightField(DepthSize, DepthSize, DepthSamples(depth));
+  scene.Plane.DepthScale = DepthScale;
+}
+
+Frame Render(Scene& scene)
+{
+  vtkRenderWindow* window = Window();
+  window->GetRenderers()->RemoveAllItems();
+  window->AddRenderer(scene.Renderer);
+  const Frame frame = CaptureFrame(window);
+  return frame;
+}
+
+// The CPU evaluation along each pixel's ray (through the pixel centre, the camera of the last
+// render): albedo / pi x (probe irradiance + emitter irradiance), as 8-bit levels; -1 where the
+// ray misses the relief.
+std::vector<double> CpuImage(
+  Scene& scene, const ReliefLighting& lighting, ReliefNormal normal, const glm::dvec3& albedo)
+{
+  std::vector<double> image(static_cast<size_t>(3) * Pixels * Pixels, -1.0);
+  vtkRenderer* ren = scene.Renderer;
+  for (int y = 0; y < Pixels; ++y)
+  {
+    for (int x = 0; x < Pixels; ++x)
+    {
+      double ends[2][4];
+      for (int e = 0; e < 2; ++e)
+      {
+        ren->SetDisplayPoint(x + 0.5, y + 0.5, e);
+        ren->DisplayToWorld();
+        ren->GetWorldPoint(ends[e]);
+        for (int c = 0; c < 3; ++c)
+        {
+          ends[e][c] /= ends[e][3];
+        }
+      }
+      const glm::dvec3 origin(ends[0][0], ends[0][1], ends[0][2]);
+      const glm::dvec3 dir =
+        glm::normalize(glm::dvec3(ends[1][0], ends[1][1], ends[1][2]) - origin);
+      const auto shade = ShadeReliefRay(scene.Height, scene.Plane, lighting, origin, dir, normal);
+      if (!shade || shade->Texture.x < 0.0 || shade->Texture.x > 1.0 || shade->Texture.y < 0.0 ||
+        shade->Texture.y > 1.0)
+      {
+        continue;
+      }
+      const glm::dvec3 radiance = albedo / vtkMath::Pi() * (shade->Indirect + shade->Direct);
+      for (int c = 0; c < 3; ++c)
+      {
+        image[3 * (static_cast<size_t>(y) * Pixels + x) + c] =
+          255.0 * std::min(1.0, std::max(0.0, radiance[c]));
+      }
+    }
+  }
+  return image;
+}
+
+// Mean |GPU - CPU| in 8-bit levels over the pixels both cover, and how many that is.
+double MeanError(const Frame& gpu, const std::vector<double>& cpu, long long* count = nullptr)
+{
+  double sum = 0.0;
+  long long n = 0;
+  for (size_t p = 0; p < gpu.Depth.size(); ++p)
+  {
+    if (!gpu.Covered(p) || cpu[3 * p] < 0.0)
+    {
+      continue;
+    }
+    for (int c = 0; c < 3; ++c)
+    {
+      sum += std::abs(gpu.Rgb[3 * p + c] - cpu[3 * p + c]);
+    }
+    ++n;
+  }
+  if (count)
+  {
+    *count = n;
+  }
+  return n > 0 ? sum / (3.0 * n) : std::numeric_limits<double>::infinity();
+}
+
+SH9 ConstantRadiance(const glm::dvec3& l)
+{
+  SH9 sh;
+  const double y00 = 0.282095;
+  for (int c = 0; c < 3; ++c)
+  {
+    sh.L[0][c] = l[c] * 4.0 * vtkMath::Pi() * y00; // the projection of a constant
+  }
+  return sh;
+}
+
+// A 4 x 3 grid of probes, each a clamped-cosine lobe max(0, d . axis) of its own axis and colour:
+// smooth light that changes across the texture, so the bilinear interpolation between probes
+// and the world-space basis are both exercised.
+ReliefLighting DirectionalProbes(int nu, int nv)
+{
+  ReliefLighting lighting;
+  lighting.ProbesU = nu;
+  lighting.ProbesV = nv;
+  lighting.OcclusionDirections = 0; // the GPU path does not model the relief's own occlusion
+  for (int j = 0; j < nv; ++j)
+  {
+    for (int i = 0; i < nu; ++i)
+    {
+      const double a = 1.2 * (i / (nu - 1.0) - 0.5), b = 1.2 * (j / (nv - 1.0) - 0.5);
+      const glm::dvec3 axis = glm::normalize(glm::dvec3(a, b, 1.0));
+      const glm::dvec3 colour(0.9 + 0.3 * i / (nu - 1.0), 0.8, 0.7 + 0.4 * j / (nv - 1.0));
+      lighting.Probes.push_back(
+        Project([&](const glm::dvec3& d) { return colour * std::max(0.0, glm::dot(d, axis)); }));
+    }
+  }
+  return lighting;
+}
+} // namespace
+
+// A uniform radiance L from every direction: the irradiance is pi L at every normal, so every
+// pixel of a bumpy relief shows albedo x L whatever its slope. Negative: the same coefficient in
+// another pixel of the probe (L_1-1 instead of L_00) is not that light.
+TEST(ReliefIrradianceProbes, ConstantRadianceGivesAlbedoTimesRadiance)
+{
+  Scene scene;
+  BuildScene(scene, Bumps, true);
+  const glm::dvec3 albedo(0.8, 0.6, 0.4);
+  scene.Actor->GetProperty()->SetColor(albedo.x, albedo.y, albedo.z);
+  const glm::dvec3 radiance(0.9, 0.7, 0.5);
+  const std::vector<SH9> probes(4, ConstantRadiance(radiance));
+  scene.Mapper->SetIrradianceProbesData(ProbeImage(2, 2, probes));
+  const Frame frame = Render(scene);
+  double worst = 0.0;
+  long long covered = 0;
+  for (size_t p = 0; p < frame.Depth.size(); ++p)
+  {
+    if (frame.Covered(p))
+    {
+      ++covered;
+      for (int c = 0; c < 3; ++c)
+      {
+        worst = std::max(worst, std::abs(frame.Rgb[3 * p + c] - 255.0 * albedo[c] * radiance[c]));
+      }
+    }
+  }
+  std::cout << "[constant] " << covered << " pixels, worst |error| " << worst << " levels\n";
+  EXPECT_GT(covered, Pixels * Pixels / 4);
+  EXPECT_LE(worst, 1.5);
+
+  // Negative: the constant in coefficient 1 (a y-dipole) instead of 0 is far from albedo x L.
+  std::vector<SH9> shifted(4);
+  for (SH9& sh : shifted)
+  {
+    sh.L[1] = probes[0].L[0];
+  }
+  scene.Mapper->SetIrradianceProbesData(ProbeImage(2, 2, shifted));
+  const Frame wrong = Render(scene);
+  double mean = 0.0;
+  long long n = 0;
+  for (size_t p = 0; p < wrong.Depth.size(); ++p)
+  {
+    if (wrong.Covered(p))
+    {
+      mean += std::abs(wrong.Rgb[3 * p] - 255.0 * albedo[0] * radiance[0]);
+      ++n;
+    }
+  }
+  mean /= std::max<long long>(1, n);
+  std::cout << "[constant] coefficient in the wrong pixel: mean |error| " << mean << " levels\n";
+  EXPECT_GT(mean, 20.0);
+  // Without probes (and without lights) the relief is black.
+  scene.Mapper->SetIrradianceProbesData(nullptr);
+  const Frame dark = Render(scene);
+  for (size_t p = 0; p < dark.Depth.size(); ++p)
+  {
+    if (dark.Covered(p))
+    {
+      ASSERT_LE(dark.Rgb[3 * p], 1) << "pixel " << p;
+    }
+  }
+}
+
+// Directional probes over a bumpy relief seen obliquely, against the CPU evaluation (exact first
+// hit, SH9 irradiance at the exact perturbed normal, the same bilinear probe interpolation). The
+// negative case, the CPU image shaded with the flat normal, fails the same tolerance.
+TEST(ReliefIrradianceProbes, DirectionalProbesMatchTheCpuEvaluationAtThePerturbedNormal)
+{
+  Scene scene;
+  BuildScene(scene, Bumps, true);
+  const ReliefLighting lighting = DirectionalProbes(4, 3);
+  scene.Mapper->SetIrradianceProbesData(ProbeImage(4, 3, lighting.Probes));
+  const Frame gpu = Render(scene);
+  const glm::dvec3 albedo(1.0);
+  long long compared = 0;
+  const double perturbed =
+    MeanError(gpu, CpuImage(scene, lighting, ReliefNormal::Perturbed, albedo), &compared);
+  const double flat = MeanError(gpu, CpuImage(scene, lighting, ReliefNormal::Flat, albedo));
+  std::cout << "[probes] " << compared << " pixels: mean |GPU - CPU| " << perturbed
+            << " levels at the perturbed normal, " << flat << " against the flat normal\n";
+  EXPECT_GT(compared, Pixels * Pixels / 4);
+  EXPECT_LT(perturbed, 2.0);
+  EXPECT_GT(flat, 2.0 * 2.0);
+
+  // The same through vtkCompositeReliefMapper: the same pixels.
+  vtkNew<vtkCompositeReliefMapper> composite;
+  composite->SetInputData(scene.Mapper->GetInput());
+  composite->SetReliefTextureData(scene.Mapper->GetReliefTexture());
+  composite->SetReliefProperty(scene.Mapper->GetReliefProperty());
+  composite->SetIrradianceProbesData(scene.Mapper->GetIrradianceProbes());
+  scene.Actor->SetMapper(composite);
+  const Frame viaComposite = Render(scene);
+  scene.Actor->SetMapper(scene.Mapper);
+  long long different = 0, covered = 0;
+  for (size_t p = 0; p < gpu.Depth.size(); ++p)
+  {
+    covered += gpu.Covered(p) ? 1 : 0;
+    for (int c = 0; c < 3; ++c)
+    {
+      different += std::abs(gpu.Rgb[3 * p + c] - viaComposite.Rgb[3 * p + c]) > 1 ? 1 : 0;
+    }
+  }
+  std::cout << "[probes] composite mapper: " << different << " differing channels of "
+            << 3 * covered << "\n";
+  EXPECT_LT(different, 3 * covered / 1000 + 1);
+}
+
+namespace
+{
+// An emitter beside and above the relief, facing it obliquely: its cosine lobe and 1 / d^2 change
+// by factors of 2-3 across the square, and its light is low enough for the bumps to shadow.
+struct Emitter
+{
+  double Position[3] = { 0.5, -0.3, 0.22 };
+  double Normal[3] = { 0.0, 0.9, -0.45 };
+  double Intensity[3] = { 2.4, 2.0, 1.5 }; // Le x A
+};
+
+ReliefLighting EmitterLighting(const Emitter& e)
+{
+  ReliefLighting lighting;
+  lighting.OcclusionDirections = 0;
+  ReliefEmitterSample sample;
+  sample.Position = glm::dvec3(e.Position[0], e.Position[1], e.Position[2]);
+  sample.Normal = glm::normalize(glm::dvec3(e.Normal[0], e.Normal[1], e.Normal[2]));
+  sample.RadianceArea = glm::dvec3(e.Intensity[0], e.Intensity[1], e.Intensity[2]);
+  lighting.Emitters.push_back(sample);
+  return lighting;
+}
+} // namespace
+
+// A field's emitter as a VTK light (vtkReliefMapper::ConfigureEmitterLight) with the relief's
+// self-shadowing, against the CPU evaluation albedo / pi x Le A cos cos / d^2 with exact
+// visibility. Negative cases: the same light without the cosine lobe (a plain point light) or
+// without the falloff, each scaled to agree at the square's centre, fail the tolerance.
+TEST(ReliefIrradianceProbes, EmitterLightMatchesTheCpuEvaluation)
+{
+  Scene scene;
+  BuildScene(scene, Bumps, true);
+  const Emitter e;
+  vtkNew<vtkLight> light;
+  vtkReliefMapper::ConfigureEmitterLight(light, e.Position, e.Normal, e.Intensity);
+  EXPECT_TRUE(light->GetPositional());
+  EXPECT_DOUBLE_EQ(light->GetConeAngle(), 90.0);
+  EXPECT_DOUBLE_EQ(light->GetExponent(), 1.0);
+  scene.Renderer->AddLight(light);
+  const Frame gpu = Render(scene);
+  const std::vector<double> cpu =
+    CpuImage(scene, EmitterLighting(e), ReliefNormal::Perturbed, glm::dvec3(1.0));
+  long long compared = 0;
+  const double error = MeanError(gpu, cpu, &compared);
+  long long shadowed = 0;
+  for (size_t p = 0; p < gpu.Depth.size(); ++p)
+  {
+    shadowed += gpu.Covered(p) && cpu[3 * p] == 0.0 ? 1 : 0;
+  }
+
+  // The centre's distance and emitter cosine, to scale the wrong lights to agree there.
+  const glm::dvec3 centre(0.5, 0.5, 0.0);
+  const glm::dvec3 position(e.Position[0], e.Position[1], e.Position[2]);
+  const glm::dvec3 normal = glm::normalize(glm::dvec3(e.Normal[0], e.Normal[1], e.Normal[2]));
+  const double d = glm::length(centre - position);
+  const double cosine = glm::dot(normal, (centre - position) / d);
+  // Without the lobe: a plain point light, intensity times the centre's cosine.
+  light->SetConeAngle(180.0);
+  light->SetIntensity(light->GetIntensity() * cosine);
+  const double noLobe = MeanError(Render(scene), cpu);
+  // Without the falloff: constant attenuation, intensity over the centre's d^2.
+  vtkReliefMapper::ConfigureEmitterLight(light, e.Position, e.Normal, e.Intensity);
+  light->SetAttenuationValues(1.0, 0.0, 0.0);
+  light->SetIntensity(light->GetIntensity() / (d * d));
+  const double noFalloff = MeanError(Render(scene), cpu);
+  // Without self-shadowing: compared where the exact evaluation has the relief's shadow but the
+  // unshadowed light would show (the pixels where shadowing matters).
+  vtkReliefMapper::ConfigureEmitterLight(light, e.Position, e.Normal, e.Intensity);
+  scene.Mapper->GetReliefProperty()->SelfShadowingOff();
+  const Frame unshadowed = Render(scene);
+  scene.Mapper->GetReliefProperty()->SelfShadowingOn();
+  double inShadow = 0.0, inShadowUnshadowed = 0.0;
+  long long shadowPixels = 0;
+  for (size_t p = 0; p < gpu.Depth.size(); ++p)
+  {
+    if (gpu.Covered(p) && cpu[3 * p] == 0.0 && unshadowed.Rgb[3 * p] > 8)
+    {
+      inShadow += gpu.Rgb[3 * p];
+      inShadowUnshadowed += unshadowed.Rgb[3 * p];
+      ++shadowPixels;
+    }
+  }
+  inShadow /= std::max<long long>(1, shadowPixels);
+  inShadowUnshadowed /= std::max<long long>(1, shadowPixels);
+  std::cout << "[emitter] " << compared << " pixels (" << shadowed
+            << " black in the CPU evaluation): mean |GPU - CPU| " << error
+            << " levels; no cosine lobe " << noLobe << ", no 1/d^2 " << noFalloff << "; in the "
+            << shadowPixels
+            << " pixels of the relief's shadow where the light faces the surface: " << inShadow
+            << " levels shadowed, " << inShadowUnshadowed << " without self-shadowing\n";
+  EXPECT_GT(compared, Pixels * Pixels / 4);
+  EXPECT_GT(shadowPixels, compared / 50);
+  EXPECT_LT(error, 2.0);
+  EXPECT_GT(noLobe, 2.0 * 2.0);
+  EXPECT_GT(noFalloff, 2.0 * 2.0);
+  EXPECT_LT(inShadow, 4.0);
+  EXPECT_GT(inShadowUnshadowed, 12.0);
+}
+
+// Bad probe images: a width that is not a multiple of 9, a NaN coefficient, an empty image. Each
+// is reported with a clear error, nothing crashes, and the relief is drawn as without probes
+// (here by its one VTK light).
+TEST(ReliefIrradianceProbes, BadProbesAreReportedAndLeftOut)
+{
+  Scene scene;
+  BuildScene(scene, Bumps, false);
+  vtkNew<vtkLight> light;
+  light->SetLightTypeToSceneLight();
+  light->SetPosition(0.2, 0.3, 1.0);
+  light->SetFocalPoint(0.5, 0.5, 0.0);
+  scene.Renderer->AddLight(light);
+  vtkNew<mesolight_test::MessageCapture> messages;
+  messages->Watch(scene.Mapper);
+  const Frame without = Render(scene);
+  ASSERT_TRUE(messages->Errors.empty()) << messages->AllErrors();
+
+  auto notNine = vtkSmartPointer<vtkImageData>::New();
+  notNine->SetDimensions(10, 2, 1);
+  notNine->AllocateScalars(VTK_FLOAT, 3);
+  std::fill_n(static_cast<float*>(notNine->GetScalarPointer()), 60, 0.5f);
+  auto nan = ProbeImage(2, 2, std::vector<SH9>(4, ConstantRadiance(glm::dvec3(0.5))));
+  static_cast<float*>(nan->GetScalarPointer())[3 * 11 + 1] = std::nanf("");
+  auto empty = vtkSmartPointer<vtkImageData>::New();
+  struct Case
+  {
+    const char* Name;
+    vtkImageData* Image;
+    const char* Message;
+  };
+  const Case cases[] = { { "width 10", notNine, "not a multiple of 9" },
+    { "NaN coefficient", nan, "Coefficient 2 of irradiance probe (1, 0) is not finite" },
+    { "empty image", empty, "irradiance probes image is empty" } };
+  for (const Case& c : cases)
+  {
+    messages->Clear();
+    scene.Mapper->SetIrradianceProbesData(c.Image);
+    const Frame frame = Render(scene);
+    Render(scene); // reported once, not at every frame
+    std::cout << "[bad probes] " << c.Name << ": " << messages->AllErrors() << "\n";
+    EXPECT_TRUE(messages->HasError(c.Message)) << c.Name << ": " << messages->AllErrors();
+    EXPECT_EQ(messages->Errors.size(), 1u) << c.Name;
+    ASSERT_EQ(frame.Rgb.size(), without.Rgb.size());
+    long long different = 0;
+    for (size_t i = 0; i < frame.Rgb.size(); ++i)
+    {
+      different += frame.Rgb[i] != without.Rgb[i] ? 1 : 0;
+    }
+    EXPECT_EQ(different, 0) << c.Name << ": drawn as without probes";
+  }
+  // Good probes again: drawn with them, no error.
+  messages->Clear();
+  scene.Mapper->SetIrradianceProbesData(
+    ProbeImage(2, 2, std::vector<SH9>(4, ConstantRadiance(glm::dvec3(0.5)))));
+  const Frame good = Render(scene);
+  EXPECT_TRUE(messages->Errors.empty()) << messages->AllErrors();
+  long long brighter = 0;
+  for (size_t p = 0; p < good.Depth.size(); ++p)
+  {
+    brighter +=
+      good.Covered(p) && good.Rgb[3 * p] >= std::min(255, without.Rgb[3 * p] + 50) ? 1 : 0;
+  }
+  EXPECT_GT(brighter, Pixels * Pixels / 2);
+}
+
+// Probes from a pipeline (input port 3) shade as the same data given directly, and a modified
+// probe image is uploaded again: the new radiance shows at the next render.
+TEST(ReliefIrradianceProbes, ProbesFromAConnectionFollowTheirChanges)
+{
+  Scene scene;
+  BuildScene(scene, Bumps, false);
+  auto image = ProbeImage(2, 2, std::vector<SH9>(4, ConstantRadiance(glm::dvec3(0.25))));
+  vtkNew<vtkTrivialProducer> producer;
+  producer->SetOutput(image);
+  scene.Mapper->SetIrradianceProbesConnection(producer->GetOutputPort());
+  const Frame first = Render(scene);
+  EXPECT_EQ(scene.Mapper->GetIrradianceProbes(), image.Get());
+  auto* values = static_cast<float*>(image->GetScalarPointer());
+  for (int p = 0; p < 4; ++p)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      values[3 * 9 * p + c] *= 2.0f; // L_00 of every probe: radiance 0.5
+    }
+  }
+  image->GetPointData()->GetScalars()->Modified();
+  const Frame second = Render(scene);
+  const size_t centre = size_t(Pixels / 2) * Pixels + Pixels / 2;
+  ASSERT_TRUE(first.Covered(centre));
+  std::cout << "[connection] centre " << int(first.Rgb[3 * centre]) << " then "
+            << int(second.Rgb[3 * centre]) << "\n";
+  EXPECT_NEAR(first.Rgb[3 * centre], 255.0 * 0.25, 1.5);
+  EXPECT_NEAR(second.Rgb[3 * centre], 255.0 * 0.5, 1.5);
+}
+
+// With a light set too, the probes' light adds to it; by default (ToneMapping on, Exposure 1) the
+// sum is tone mapped as the light set alone is: Reinhard's x / (1 + x).
+TEST(ReliefIrradianceProbes, ProbesAddToALightSetAndAreToneMappedByDefault)
+{
+  Scene scene;
+  BuildScene(
+    scene, [](double, double) { return 0.0; }, false); // flat: the normal is +z
+  auto lights = vtkSmartPointer<vtkImageData>::New();
+  lights->SetDimensions(1, 2, 1);
+  vtkNew<vtkFloatArray> values;
+  values->SetNumberOfComponents(3);
+  values->SetNumberOfTuples(2);
+  values->SetTuple3(0, 0.0, 0.0, 1.0); // straight down
+  const double fromLights = 0.2;       // radiance it gives
+  values->SetTuple3(1, vtkMath::Pi() * fromLights, vtkMath::Pi() * fromLights,
+    vtkMath::Pi() * fromLights); // irradiance pi x 0.2 at normal incidence
+  lights->GetPointData()->SetScalars(values);
+  scene.Mapper->SetLightSetData(lights);
+  const double fromProbes = 0.3;
+  scene.Mapper->SetIrradianceProbesData(
+    ProbeImage(1, 1, std::vector<SH9>(1, ConstantRadiance(glm::dvec3(fromProbes)))));
+  const size_t centre = size_t(Pixels / 2) * Pixels + Pixels / 2;
+  const Frame linear = Render(scene);
+  scene.Mapper->GetReliefProperty()->ToneMappingOn();
+  const Frame toneMapped = Render(scene);
+  const double sum = fromLights + fromProbes;
+  std::cout << "[light set + probes] linear " << int(linear.Rgb[3 * centre]) << ", tone mapped "
+            << int(toneMapped.Rgb[3 * centre]) << "\n";
+  EXPECT_NEAR(linear.Rgb[3 * centre], 255.0 * sum, 1.5);
+  EXPECT_NEAR(toneMapped.Rgb[3 * centre], 255.0 * sum / (1.0 + sum), 1.5);
+}

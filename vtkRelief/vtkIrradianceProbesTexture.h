@@ -1,0 +1,75 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @class   vtkIrradianceProbesTexture
+ * @brief   A grid of SH9 radiance probes on the GPU, for relief shading by a light field.
+ *
+ * The probes come as vtkReliefMapper::SetIrradianceProbesData describes them: a (9 x Nu) x Nv
+ * image of 3 (or more; the first 3 are read) float components, coefficient k of probe (i, j) at
+ * pixel (9 i + k, j), the real SH basis of Ramamoorthi and Hanrahan ("An efficient representation
+ * for irradiance environment maps") in world coordinates. They are uploaded as an Nu x (7 Nv)
+ * float RGBA texture with linear filtering, seven blocks of Nv rows holding the 27 numbers of
+ * every probe (blocks 0-1 red's coefficients 0-7, 2-3 green's, 4-5 blue's, 6 the three
+ * coefficients 8), so one filtered fetch per block interpolates four coefficients bilinearly
+ * between the four nearest probes, seven fetches per pixel (vtkReliefIrradianceProbesFS.glsl
+ * clamps each fetch inside its block, which is the clamp at the grid's border). Uploads are
+ * keyed by the scalar array and its
+ * modification time; a malformed image is reported once per array and modification.
+ */
+
+#ifndef vtkIrradianceProbesTexture_h
+#define vtkIrradianceProbesTexture_h
+
+#include "MesolightReliefModule.h" // for export macro
+#include "vtkObject.h"
+#include "vtkSmartPointer.h" // for TextureObject
+
+class vtkDataArray;
+class vtkImageData;
+class vtkOpenGLRenderWindow;
+class vtkTextureObject;
+class vtkWindow;
+
+class MESOLIGHTRELIEF_EXPORT vtkIrradianceProbesTexture : public vtkObject
+{
+public:
+  static vtkIrradianceProbesTexture* New();
+  vtkTypeMacro(vtkIrradianceProbesTexture, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /**
+   * Uploads the probes unless they are already on the GPU of this window; null means no probes.
+   * A malformed image (width not a multiple of 9, empty, fewer than 3 components, a non-finite
+   * coefficient) or a failed upload is reported with an error and leaves no probes: the relief
+   * is then drawn without them.
+   */
+  void Update(vtkOpenGLRenderWindow* renWin, vtkImageData* probes);
+
+  /** Whether the last Update left probes to shade with. */
+  vtkGetMacro(HasProbes, bool);
+
+  /** The probe grid (Nu, Nv) of the last upload. */
+  vtkGetVector2Macro(GridSize, int);
+
+  /** The texture; null before the first upload. */
+  vtkTextureObject* GetTextureObject() { return this->TextureObject; }
+
+  void ReleaseGraphicsResources(vtkWindow* win);
+
+protected:
+  vtkIrradianceProbesTexture();
+  ~vtkIrradianceProbesTexture() override;
+
+  vtkSmartPointer<vtkTextureObject> TextureObject;
+  vtkDataArray* Uploaded = nullptr; // not referenced: only compared
+  vtkImageData* UploadedImage = nullptr;
+  vtkMTimeType UploadTime = 0;
+  int GridSize[2] = { 0, 0 };
+  bool Valid = false;
+  bool HasProbes = false;
+
+private:
+  vtkIrradianceProbesTexture(const vtkIrradianceProbesTexture&) = delete;
+  void operator=(const vtkIrradianceProbesTexture&) = delete;
+};
+
+#endif
