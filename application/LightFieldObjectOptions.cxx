@@ -277,11 +277,6 @@ int SetUpObject(const CommandLine& cl, const char* command, vtkLightFieldActor* 
   scene->SetObjectGatherDirections(gatherDirections);
   scene->SetObjectIrradianceVolume(gatherVolume);
   renderer->AddActor(object.Actor);
-  if (const int status =
-        SetUpObjectRelief(cl, command, scene, renderer, object.Actor, object.Relief))
-  {
-    return status;
-  }
   renderer->ResetCameraClippingRange();
   object.Active = true;
   return 0;

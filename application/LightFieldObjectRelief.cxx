@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "LightFieldObjectRelief.h"
 
+#include "LightFieldReliefs.h"
+
 #include "CommandLine.h"
 #include "vtkMessageCollector.h"
 
@@ -54,10 +56,8 @@ void SyncObjectRelief(vtkObject*, unsigned long, void* clientData, void*)
     }
     if (scene)
     {
-      vtkReliefProperty* property =
-        vtkReliefMapper::SafeDownCast(actor->GetMapper())->GetReliefProperty();
-      property->SetExposure(scene->GetExposure());
-      property->SetToneMapping(scene->GetToneMap() == vtkLightFieldActor::Reinhard);
+      CopyWalkthroughDisplay(
+        scene, vtkReliefMapper::SafeDownCast(actor->GetMapper())->GetReliefProperty());
     }
   }
 }

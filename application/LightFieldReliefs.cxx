@@ -18,6 +18,7 @@
 #include <vtkCommand.h>
 #include <vtkExecutive.h>
 #include <vtkImageData.h>
+#include <vtkActorCollection.h>
 #include <vtkLight.h>
 #include <vtkLightCollection.h>
 #include <vtkProperty.h>
@@ -57,15 +58,18 @@ std::vector<std::string> ReliefInputs(const CommandLine& cl)
 
 namespace
 {
-// The walkthrough's display settings on every relief's property.
+// The walkthrough's display settings on every relief of the relief layer (static surfaces and
+// a relief-mapped movable object alike).
 void CopyDisplay(vtkLightFieldActor* actor, const WalkthroughReliefs& reliefs)
 {
-  for (const auto& relief : reliefs.Actors)
+  vtkActorCollection* actors = reliefs.Renderer->GetActors();
+  actors->InitTraversal();
+  while (vtkActor* relief = actors->GetNextActor())
   {
-    vtkReliefProperty* property =
-      vtkReliefMapper::SafeDownCast(relief->GetMapper())->GetReliefProperty();
-    property->SetExposure(actor->GetExposure());
-    property->SetToneMapping(actor->GetToneMap() == vtkLightFieldActor::Reinhard);
+    if (vtkReliefMapper* mapper = vtkReliefMapper::SafeDownCast(relief->GetMapper()))
+    {
+      CopyWalkthroughDisplay(actor, mapper->GetReliefProperty());
+    }
   }
 }
 
@@ -82,6 +86,38 @@ WalkthroughReliefs::~WalkthroughReliefs()
   {
     this->Followed->RemoveObserver(this->FollowTag);
   }
+}
+
+void CopyWalkthroughDisplay(vtkLightFieldActor* actor, vtkReliefProperty* property)
+{
+  property->SetExposure(actor->GetExposure());
+  property->SetToneMapping(actor->GetToneMap() == vtkLightFieldActor::Reinhard);
+  property->EncodeSRGBOn(); // the walkthrough's radiance is sRGB-encoded (vtkLightFieldActor)
+}
+
+vtkRenderer* ReliefLayer(vtkLightFieldActor* actor, vtkRenderer* walkthrough,
+  vtkRenderWindow* window, WalkthroughReliefs& reliefs)
+{
+  vtkRenderer* renderer = reliefs.Renderer;
+  if (reliefs.Followed)
+  {
+    return renderer;
+  }
+  // Above the walkthrough, its depth kept, the same camera; its lights are the field's emitters
+  // (no headlight), so they light the reliefs only.
+  window->SetNumberOfLayers(std::max(2, window->GetNumberOfLayers()));
+  renderer->SetLayer(1);
+  renderer->PreserveDepthBufferOn();
+  renderer->InteractiveOff();
+  renderer->AutomaticLightCreationOff();
+  renderer->SetActiveCamera(walkthrough->GetActiveCamera());
+  window->AddRenderer(renderer);
+  vtkLightFieldReliefSurface::GetEmitterLights(actor, renderer->GetLights());
+  reliefs.FollowDisplay->SetCallback(OnActorModified);
+  reliefs.FollowDisplay->SetClientData(&reliefs);
+  reliefs.FollowTag = actor->AddObserver(vtkCommand::ModifiedEvent, reliefs.FollowDisplay);
+  reliefs.Followed = actor;
+  return renderer;
 }
 
 int SetUpWalkthroughReliefs(const CommandLine& cl, const char* command, vtkLightFieldActor* actor,
@@ -126,16 +162,7 @@ int SetUpWalkthroughReliefs(const CommandLine& cl, const char* command, vtkLight
     names.push_back(name);
   }
 
-  // The reliefs' renderer: above the walkthrough, its depth kept, the same camera; its lights
-  // are the emitters' (no headlight).
-  window->SetNumberOfLayers(std::max(2, window->GetNumberOfLayers()));
-  vtkRenderer* renderer = reliefs.Renderer;
-  renderer->SetLayer(1);
-  renderer->PreserveDepthBufferOn();
-  renderer->InteractiveOff();
-  renderer->AutomaticLightCreationOff();
-  renderer->SetActiveCamera(walkthrough->GetActiveCamera());
-  window->AddRenderer(renderer);
+  vtkRenderer* renderer = ReliefLayer(actor, walkthrough, window, reliefs);
 
   for (std::size_t r = 0; r < names.size(); ++r)
   {
@@ -182,25 +209,11 @@ int SetUpWalkthroughReliefs(const CommandLine& cl, const char* command, vtkLight
     relief->GetProperty()->SetDiffuse(1.0);
     relief->GetProperty()->SetSpecular(0.0);
     renderer->AddActor(relief);
-    if (r == 0)
-    {
-      // The emitters are the field's, once for all reliefs.
-      vtkLightCollection* lights = surface->GetEmitterLights();
-      lights->InitTraversal();
-      while (vtkLight* light = lights->GetNextItem())
-      {
-        renderer->AddLight(light);
-      }
-    }
     actor->AddHiddenSurface(name);
     reliefs.Surfaces.emplace_back(surface);
     reliefs.Actors.emplace_back(relief);
   }
   CopyDisplay(actor, reliefs);
-  reliefs.FollowDisplay->SetCallback(OnActorModified);
-  reliefs.FollowDisplay->SetClientData(&reliefs);
-  reliefs.FollowTag = actor->AddObserver(vtkCommand::ModifiedEvent, reliefs.FollowDisplay);
-  reliefs.Followed = actor;
   return 0;
 }
 

@@ -21,6 +21,7 @@
 
 class vtkActor;
 class vtkLightFieldReliefSurface;
+class vtkReliefProperty;
 class vtkRenderer;
 class vtkRenderWindow;
 
@@ -48,6 +49,21 @@ struct WalkthroughReliefs
   vtkWeakPointer<vtkLightFieldActor> Followed;
   unsigned long FollowTag = 0;
 };
+
+/**
+ * The walkthrough's display (exposure, tone map, sRGB encoding) on a relief drawn beside it, so
+ * the same radiance shows as the same pixel value.
+ */
+void CopyWalkthroughDisplay(vtkLightFieldActor* actor, vtkReliefProperty* property);
+
+/**
+ * The reliefs' renderer, set up on the first call: layer 1 of `window` above `walkthrough`,
+ * sharing its camera and depth buffer, lit by the field's emitters only (no headlight), every
+ * relief in it following the actor's display. Static surfaces (--relief) and a relief-mapped
+ * movable object (--object-relief) are drawn there.
+ */
+vtkRenderer* ReliefLayer(vtkLightFieldActor* actor, vtkRenderer* walkthrough,
+  vtkRenderWindow* window, WalkthroughReliefs& reliefs);
 
 /**
  * Sets up the --relief items for the walkthrough's actor (its field loaded), renderer and

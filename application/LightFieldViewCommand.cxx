@@ -205,6 +205,24 @@ int OpenWalkthrough(
     walkthrough.Window, walkthrough.Reliefs);
 }
 
+// --object and --object-relief: the object's relief charts join the reliefs' layer (lit by the
+// field's emitters only, the walkthrough's display).
+int SetUpObjectAndRelief(
+  const CommandLine& cl, const char* command, WalkthroughWindow& walkthrough, MovableObject& object)
+{
+  if (const int status = SetUpObject(cl, command, walkthrough.Actor, walkthrough.Renderer, object))
+  {
+    return status;
+  }
+  if (!object.Active || !cl.Has("--object-relief"))
+  {
+    return 0;
+  }
+  vtkRenderer* layer =
+    ReliefLayer(walkthrough.Actor, walkthrough.Renderer, walkthrough.Window, walkthrough.Reliefs);
+  return SetUpObjectRelief(cl, command, walkthrough.Actor, layer, object.Actor, object.Relief);
+}
+
 int Render(const std::vector<std::string>& args)
 {
   const char* command = "mesolight vlf render";
@@ -272,7 +290,7 @@ int Render(const std::vector<std::string>& args)
     return status;
   }
   MovableObject object;
-  if (const int status = SetUpObject(cl, command, walkthrough.Actor, walkthrough.Renderer, object))
+  if (const int status = SetUpObjectAndRelief(cl, command, walkthrough, object))
   {
     return status;
   }
@@ -574,7 +592,7 @@ int View(const std::vector<std::string>& args)
     return status;
   }
   MovableObject object;
-  if (const int status = SetUpObject(cl, command, walkthrough.Actor, walkthrough.Renderer, object))
+  if (const int status = SetUpObjectAndRelief(cl, command, walkthrough, object))
   {
     return status;
   }
@@ -619,8 +637,7 @@ int View(const std::vector<std::string>& args)
   text->GetTextProperty()->SetFontSize(14);
   text->SetDisplayPosition(8, 8);
   // On the top layer: the reliefs' renderer draws over the walkthrough's.
-  (walkthrough.Reliefs.Actors.empty() ? renderer : walkthrough.Reliefs.Renderer.Get())
-    ->AddViewProp(text);
+  (walkthrough.Reliefs.Followed ? walkthrough.Reliefs.Renderer.Get() : renderer)->AddViewProp(text);
   ViewerState state;
   state.Actor = actor;
   state.Window = window;
@@ -633,7 +650,7 @@ int View(const std::vector<std::string>& args)
   style->SetObject(object.Active ? static_cast<vtkActor*>(object.Actor) : nullptr);
   for (vtkActor* chart : object.Relief.Actors)
   {
-    style->AddStandIn(chart);
+    style->AddStandIn(chart, walkthrough.Reliefs.Renderer);
   }
   interactor->SetInteractorStyle(style);
   vtkNew<vtkCallbackCommand> keys;

@@ -31,11 +31,12 @@ void ObjectDragStyle::SetObject(vtkActor* object)
   }
 }
 
-void ObjectDragStyle::AddStandIn(vtkActor* actor)
+void ObjectDragStyle::AddStandIn(vtkActor* actor, vtkRenderer* renderer)
 {
   if (actor)
   {
     this->Picker->AddPickList(actor);
+    this->StandInRenderer = renderer;
   }
 }
 
@@ -43,9 +44,14 @@ void ObjectDragStyle::OnLeftButtonDown()
 {
   const int* position = this->Interactor->GetEventPosition();
   this->FindPokedRenderer(position[0], position[1]);
+  // The pick list holds the object and its stand-ins, which may be drawn by another renderer.
+  const auto picked = [&](vtkRenderer* renderer)
+  {
+    return renderer && this->Picker->Pick(position[0], position[1], 0.0, renderer) &&
+      this->Picker->GetActor() != nullptr;
+  };
   if (this->Object && this->CurrentRenderer &&
-    this->Picker->Pick(position[0], position[1], 0.0, this->CurrentRenderer) &&
-    this->Picker->GetActor() != nullptr) // the pick list holds the object and its stand-ins
+    (picked(this->CurrentRenderer) || picked(this->StandInRenderer)))
   {
     this->Dragging = true;
     this->GrabFocus(this->EventCallbackCommand);

@@ -16,6 +16,8 @@
 class vtkActor;
 class vtkCellPicker;
 
+class vtkRenderer;
+
 namespace mesolight
 {
 
@@ -27,8 +29,11 @@ public:
 
   /** The actor a left drag may move (none: the plain trackball camera). */
   void SetObject(vtkActor* object);
-  /** An actor drawn in the object's place (a relief chart): a pick on it picks the object. */
-  void AddStandIn(vtkActor* actor);
+  /**
+   * An actor drawn in the object's place (a relief chart) by `renderer` (the reliefs' layer,
+   * which takes no events): a pick on it picks the object.
+   */
+  void AddStandIn(vtkActor* actor, vtkRenderer* renderer);
 
   void OnLeftButtonDown() override;
   void OnLeftButtonUp() override;
@@ -47,6 +52,7 @@ private:
 
   vtkWeakPointer<vtkActor> Object;
   vtkNew<vtkCellPicker> Picker;
+  vtkWeakPointer<vtkRenderer> StandInRenderer;
   bool Dragging = false;
 };
 

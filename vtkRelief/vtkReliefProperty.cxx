@@ -141,6 +141,7 @@ void vtkReliefProperty::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LevelOfDetail: " << (this->LevelOfDetail ? "On" : "Off") << "\n";
   os << indent << "Exposure: " << this->Exposure << "\n";
   os << indent << "ToneMapping: " << (this->ToneMapping ? "On" : "Off") << "\n";
+  os << indent << "EncodeSRGB: " << (this->EncodeSRGB ? "On" : "Off") << "\n";
   os << indent << "LightSetThreshold: " << this->LightSetThreshold << "\n";
   os << indent << "ShadowedLights: " << this->ShadowedLights << "\n";
   os << indent << "ShadowCulling: " << (this->ShadowCulling ? "On" : "Off") << "\n";

@@ -229,6 +229,18 @@ public:
 
   ///@{
   /**
+   * Encode the light-set / probe shading with the sRGB curve after exposure and tone mapping
+   * (default off: relief colours go to the framebuffer linear, as VTK's). On for a relief drawn
+   * beside a light field walkthrough, whose radiance is sRGB-encoded (vtkLightFieldActor), so
+   * both show the same radiance as the same pixel value.
+   */
+  vtkSetMacro(EncodeSRGB, bool);
+  vtkGetMacro(EncodeSRGB, bool);
+  vtkBooleanMacro(EncodeSRGB, bool);
+  ///@}
+
+  ///@{
+  /**
    * Skips for light sets, each measurable (mesolight bench ibl): lights whose luminance is below
    * LightSetThreshold times the strongest light's are skipped entirely (default 0: none);
    * with ShadowedLights = K > 0 only the K strongest lights facing a pixel march their shadows,
@@ -280,6 +292,7 @@ protected:
   bool LevelOfDetail = false;
   double Exposure;  // mesolight::ReliefLightSetDisplay, set in the constructor
   bool ToneMapping; // idem
+  bool EncodeSRGB = false;
   double LightSetThreshold = 0.0;
   int ShadowedLights = 0;
   bool ShadowCulling = true;

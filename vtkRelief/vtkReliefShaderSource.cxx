@@ -6,6 +6,7 @@
 #include "vtkShaderProgram.h"
 
 // GLSL sources embedded at build time (vtk_encode_string).
+#include "mlEncodeSrgbFS.h"
 #include "vtkReliefHeightFieldFS.h"
 #include "vtkReliefImplFS.h"
 #include "vtkReliefIrradianceProbesFS.h"
@@ -85,7 +86,7 @@ std::string vtkReliefShaderSource::Key() const
     (this->ConePacked ? "C" : "c") + (p->GetAdaptiveSteps() ? "V" : "v") +
     (p->GetLevelOfDetail() ? "L" : "l") + (this->HasLightSet ? "I" : "i") +
     (p->GetToneMapping() ? "T" : "t") + (p->GetShadowCulling() ? "K" : "k") +
-    (this->HasIrradianceProbes ? "P" : "p");
+    (this->HasIrradianceProbes ? "P" : "p") + (p->GetEncodeSRGB() ? "G" : "g");
 }
 
 //------------------------------------------------------------------------------
@@ -180,6 +181,10 @@ void vtkReliefShaderSource::ReplaceValuesAfter(std::string& fs, const void* cell
   {
     defines += "#define ML_TONE_MAPPING\n";
   }
+  if (p->GetEncodeSRGB())
+  {
+    defines += "#define ML_ENCODE_SRGB\n";
+  }
   if (!p->GetShadowCulling())
   {
     defines += "#define ML_NO_SHADOW_CULLING\n";
@@ -192,7 +197,8 @@ void vtkReliefShaderSource::ReplaceValuesAfter(std::string& fs, const void* cell
     vtkReliefHeightFieldFS +
     (p->GetMethod() == vtkReliefProperty::MaximumMipmap ? vtkReliefMaxMipmapFS : "") +
     vtkReliefMarchFS + vtkReliefLightingFS + (this->HasLightSet ? vtkReliefLightSetFS : "") +
-    (this->HasIrradianceProbes ? vtkReliefIrradianceProbesFS : "");
+    (this->HasIrradianceProbes ? vtkReliefIrradianceProbesFS : "") +
+    (p->GetEncodeSRGB() ? mlEncodeSrgbFS : "");
   vtkShaderProgram::Substitute(fs, "//MESOLIGHT::Dec", declarations);
   vtkShaderProgram::Substitute(fs, "//MESOLIGHT::UniformFlow::Impl",
     "vec3 mlDPdx = dFdx(vertexVC.xyz);\n"

@@ -97,6 +97,9 @@
 #ifdef ML_TONE_MAPPING
   gl_FragData[0].rgb = gl_FragData[0].rgb / (1.0 + gl_FragData[0].rgb); // Reinhard
 #endif
+#ifdef ML_ENCODE_SRGB
+  gl_FragData[0].rgb = mlEncodeSrgb(gl_FragData[0].rgb); // beside an sRGB-encoded light field
+#endif
 #endif
 #if ML_OUTPUT == 4
   // Checked before the albedo texture's clamp, which may turn a NaN into a number (GLSL leaves

@@ -35,6 +35,28 @@
 
 namespace vlf = mesolight::vlf;
 
+namespace
+{
+// The field's emitters as VTK lights: radiant intensity Le x Area, the area in world units
+// (world = centre + unit / scale).
+void AddEmitterLights(const vlf::LightField& field, vtkLightCollection* lights)
+{
+  const double scale = field.NormalizationScale();
+  for (const vlf::EmitterLight& emitter : vlf::EstimateEmitterLights(field).Lights)
+  {
+    const glm::vec3 world = vlf::ToWorld(field, emitter.Position);
+    const glm::vec3 unitIntensity = emitter.Intensity();
+    const double position[3] = { world.x, world.y, world.z };
+    const double normal[3] = { emitter.Normal.x, emitter.Normal.y, emitter.Normal.z };
+    const double intensity[3] = { unitIntensity.x / (scale * scale),
+      unitIntensity.y / (scale * scale), unitIntensity.z / (scale * scale) };
+    vtkNew<vtkLight> light;
+    vtkReliefMapper::ConfigureEmitterLight(light, position, normal, intensity);
+    lights->AddItem(light);
+  }
+}
+} // namespace
+
 vtkStandardNewMacro(vtkLightFieldReliefSurface);
 vtkCxxSetObjectMacro(vtkLightFieldReliefSurface, LightFieldActor, vtkLightFieldActor);
 
@@ -214,22 +236,21 @@ int vtkLightFieldReliefSurface::RequestData(
   }
   probesOutput->GetPointData()->GetScalars()->SetName("IrradianceProbes");
 
-  // The emitters: radiant intensity Le x Area, the area in world units (world = centre +
-  // unit / scale).
-  const double scale = field->NormalizationScale();
-  for (const vlf::EmitterLight& emitter : vlf::EstimateEmitterLights(*field).Lights)
-  {
-    const glm::vec3 world = vlf::ToWorld(*field, emitter.Position);
-    const glm::vec3 unitIntensity = emitter.Intensity();
-    const double position[3] = { world.x, world.y, world.z };
-    const double normal[3] = { emitter.Normal.x, emitter.Normal.y, emitter.Normal.z };
-    const double intensity[3] = { unitIntensity.x / (scale * scale),
-      unitIntensity.y / (scale * scale), unitIntensity.z / (scale * scale) };
-    vtkNew<vtkLight> light;
-    vtkReliefMapper::ConfigureEmitterLight(light, position, normal, intensity);
-    this->EmitterLights->AddItem(light);
-  }
+  AddEmitterLights(*field, this->EmitterLights);
   return 1;
+}
+
+//------------------------------------------------------------------------------
+bool vtkLightFieldReliefSurface::GetEmitterLights(
+  vtkLightFieldActor* actor, vtkLightCollection* lights)
+{
+  const vlf::LightField* field = actor ? vtkLightFieldActorCore::GetLightField(actor) : nullptr;
+  if (!field || !lights)
+  {
+    return false;
+  }
+  AddEmitterLights(*field, lights);
+  return true;
 }
 
 //------------------------------------------------------------------------------

@@ -79,6 +79,12 @@ public:
   /** The emitters as VTK lights, rebuilt by every update (empty when it failed). */
   vtkLightCollection* GetEmitterLights() { return this->EmitterLights; }
 
+  /**
+   * The same emitter lights for the field `actor` shows, added to `lights` without a surface
+   * (e.g. for a relief-mapped movable object). False when the actor shows no field.
+   */
+  static bool GetEmitterLights(vtkLightFieldActor* actor, vtkLightCollection* lights);
+
   /** The surface's diffuse reflectance (Kd) after an update. */
   vtkGetVector3Macro(SurfaceDiffuse, double);
 

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkLightFieldShading.h"
 
+#include "mlEncodeSrgbFS.h"
 #include "vtkLightFieldFS.h"
 #include "vtkLightFieldShadowFS.h"
 
@@ -60,7 +61,7 @@ void vtkLightFieldShading::ReplaceRadianceShaderValues(
   vtkShaderProgram::Substitute(fs, "//VTK::CustomUniforms::Dec",
     std::string("//VTK::CustomUniforms::Dec\n") +
       (shadowCode ? vtkLightFieldShadowFS : "vec3 mlShadowed(vec3 total) { return total; }\n") +
-      vtkLightFieldFS + (vertexRadiance ? "in vec3 mlVertexRadianceVC;\n" : ""));
+      mlEncodeSrgbFS + vtkLightFieldFS + (vertexRadiance ? "in vec3 mlVertexRadianceVC;\n" : ""));
   // VTK's lighting gives way to the field's radiance.
   vtkShaderProgram::Substitute(fs, "//VTK::Light::Impl", "//MESOLIGHT::LightField::Impl");
   shaders[vtkShader::Vertex]->SetSource(vs);
