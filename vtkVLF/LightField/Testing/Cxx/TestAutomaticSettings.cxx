@@ -90,8 +90,13 @@ TEST(VLFAutomaticSettings, FeaturesAskCapsLimit)
   EXPECT_EQ(c.Settings.RaysPerSide, 96);
   EXPECT_EQ(c.Settings.Directions, 513u);
 
+  // A budget whose half just holds 513 x 32 x 32: only the minimum fits.
+  LightFieldSettings minimum;
+  minimum.Directions = 513;
+  minimum.RaysPerSide = 32;
+  minimum.TilesPerSide = 4;
   limits = AutomaticLimits();
-  limits.MemoryBudget = std::uint64_t(8) << 20; // 8 MiB: only the minimum fits
+  limits.MemoryBudget = 2 * EstimateMemory(strips, minimum).TotalBytes * 21 / 20;
   c = ChooseAutomaticSettings(strips, limits);
   EXPECT_EQ(c.Limit, "memory budget") << c.Describe();
   EXPECT_EQ(c.Settings.RaysPerSide, 32);
