@@ -95,8 +95,8 @@ MapCounts CountMapContents(const TriangleScene& scene, const std::vector<Surface
     {
       for (int c = 0; c < 3; ++c)
       {
-        const float off = std::abs(glm::dot(surfaces[s].Normal, scene.Vertex(t, c)) -
-          surfaces[s].Offset);
+        const float off =
+          std::abs(glm::dot(surfaces[s].Normal, scene.Vertex(t, c)) - surfaces[s].Offset);
         offPlane[s] = offPlane[s] || off > 0.25f * PlaneDepthTolerance;
       }
     }
@@ -187,8 +187,9 @@ MemoryEstimate EstimateFor(const TriangleScene& scene, const std::vector<Surface
   // Per map: its tile entry, its depth start, its cell index's mask and rank words. Per
   // crossing: a blocked bit, a float depth off the plane, float radiance and unshot specular
   // radiance on mirrors (while propagating). Per subfield: its tile starts.
-  e.MapBytes = c.Pairs * (sizeof(TileEntry) + sizeof(std::uint32_t) +
-                           words * (sizeof(std::uint64_t) + sizeof(std::uint32_t))) +
+  e.MapBytes = c.Pairs *
+      (sizeof(TileEntry) + sizeof(std::uint32_t) +
+        words * (sizeof(std::uint64_t) + sizeof(std::uint32_t))) +
     (c.Crossings + 63 * directions.Size()) / 64 * sizeof(std::uint64_t) +
     c.DepthCrossings * sizeof(float) +
     (specular ? c.SpecularCrossings * 2 * sizeof(glm::vec3) : 0) +

@@ -2,7 +2,8 @@
 // Tests of the light field structure (Wither 2005 §2.4.1): surface grouping, every line's crossings
 // against brute-force intersection with all triangles, the memory estimate within 0.97-1.3 times
 // what a propagating field holds (a small-box floor, a mirror; the negative: the earlier
-// area + perimeter bound is far above it), refusals (budget, bad settings, no emitter), lookups on the tile lists.
+// area + perimeter bound is far above it), refusals (budget, bad settings, no emitter), lookups on
+// the tile lists.
 #include "LightField.h"
 #include "VLFTestScenes.h"
 
@@ -159,14 +160,14 @@ TriangleScene BoxFloor()
       const float side = 0.05f + 0.01f * static_cast<float>((i * 7 + j * 3) % 10);
       // 1 cm above the floor: a bottom face coincident with it would lose crossings to the
       // tracing's step past each hit, which the count from the projections does not model.
-      const glm::vec3 c(-2.75f + 0.5f * static_cast<float>(i), 0.01f,
-        -2.75f + 0.5f * static_cast<float>(j));
-      vlftest::AddBox(scene, c - glm::vec3(side, 0.0f, side),
-        c + glm::vec3(side, 1.5f * side, side), b, false);
+      const glm::vec3 c(
+        -2.75f + 0.5f * static_cast<float>(i), 0.01f, -2.75f + 0.5f * static_cast<float>(j));
+      vlftest::AddBox(
+        scene, c - glm::vec3(side, 0.0f, side), c + glm::vec3(side, 1.5f * side, side), b, false);
     }
   }
-  scene.AddPolygon({ { -0.5f, 2, -0.5f }, { 0.5f, 2, -0.5f }, { 0.5f, 2, 0.5f }, { -0.5f, 2, 0.5f } },
-    l);
+  scene.AddPolygon(
+    { { -0.5f, 2, -0.5f }, { 0.5f, 2, -0.5f }, { 0.5f, 2, 0.5f }, { -0.5f, 2, 0.5f } }, l);
   return scene;
 }
 
@@ -229,9 +230,8 @@ TEST(VLFLightField, EstimateMatchesTheAllocation)
     const std::unique_ptr<LightField> field = LightField::Build(c.Scene, settings);
     const double peak = static_cast<double>(PeakBytes(*field));
     const double ratio = static_cast<double>(estimate.TotalBytes) / peak;
-    std::printf("[ estimate ] %s %zu x %d: %s; allocated %s, peak %s: %.3f\n", c.Name,
-      c.Directions, c.Rays, estimate.Describe().c_str(),
-      FormatBytes(field->AllocatedBytes()).c_str(),
+    std::printf("[ estimate ] %s %zu x %d: %s; allocated %s, peak %s: %.3f\n", c.Name, c.Directions,
+      c.Rays, estimate.Describe().c_str(), FormatBytes(field->AllocatedBytes()).c_str(),
       FormatBytes(static_cast<std::uint64_t>(peak)).c_str(), ratio);
     EXPECT_EQ(field->Estimate().TotalBytes, estimate.TotalBytes);
     EXPECT_GE(ratio, 0.97) << c.Name;
