@@ -359,7 +359,9 @@ int RunVlfAccuracyBenchmark(const std::vector<std::string>& args)
     "--full", "sweep more settings: 513x32,513x64,2049x32,2049x64,2049x64t0.5,auto,2049x96");
   cl.AddValue("--size", "WxH", "compared image size", "64x64");
   cl.AddValue("--samples", "N",
-    "path-tracer paths per pixel of the reference (two halves; cached, so paid once)", "8192");
+    "path-tracer paths per pixel of the reference (two halves; cached, so paid once; 4 x for the "
+    "room, lit by many bounces)",
+    "8192");
   cl.AddValue("--cache", "DIR", "where references are kept between runs", "vlf-accuracy-cache");
   cl.AddValue("--memory-budget", "GIB", "the fields' memory budget (auto uses half of it)", "4");
   cl.AddValue("--csv", "FILE", "write one row per scene, setting and filter");
@@ -418,18 +420,19 @@ int RunVlfAccuracyBenchmark(const std::vector<std::string>& args)
       "# %s: %s, %zu triangles\n", name.c_str(), s.Description.c_str(), s.Scene.TriangleCount());
     std::fflush(stdout);
     RgbImage a, b;
+    const int sceneSamples = samples * s.ReferenceSamplesScale;
     const std::string key = cache + "/" + name + "-" + SceneDigest(s) + "-" +
-      std::to_string(width) + "x" + std::to_string(height) + "-" + std::to_string(samples);
+      std::to_string(width) + "x" + std::to_string(height) + "-" + std::to_string(sceneSamples);
     std::printf("# %s: reference %s-{a,b}.exr\n", name.c_str(), key.c_str());
     std::fflush(stdout);
     if (!(FileExists(key + "-a.exr") && ReadLinearImage(key + "-a.exr", a, error) &&
           ReadLinearImage(key + "-b.exr", b, error) && a.Width == width && b.Width == width))
     {
       const Clock::time_point start = Clock::now();
-      a = ReferenceHalf(s, embree, hits, width, height, samples / 2, 1);
-      b = ReferenceHalf(s, embree, hits, width, height, samples / 2, 2);
+      a = ReferenceHalf(s, embree, hits, width, height, sceneSamples / 2, 1);
+      b = ReferenceHalf(s, embree, hits, width, height, sceneSamples / 2, 2);
       std::printf("# %s: path-traced reference, %d paths per pixel, %.1f s (cached in %s-*.exr)\n",
-        name.c_str(), samples, SecondsSince(start), key.c_str());
+        name.c_str(), sceneSamples, SecondsSince(start), key.c_str());
       if (!WriteLinearImage(a, key + "-a.exr", error) ||
         !WriteLinearImage(b, key + "-b.exr", error))
       {
