@@ -14,9 +14,9 @@
 // altitude, 2 area / longest edge), area-weighted, at the 10th percentile (a few slivers do not
 // decide); two lines across it per direction: N = diameter * 2 / width, a multiple of 8 (tiles
 // of 8 x 8 cells). Time and memory grow with the lines K N^2 (the maps hold one cell per line
-// and surface crossed), so N is limited by MaxLines (2049 x 96^2) and by the memory budget (EstimateMemory
-// within BudgetShare of it): from the most lines down, each N with its own directions
-// (AutomaticDirections), and with 513 where the memory budget refused those.
+// and surface crossed), so N is limited by MaxLines (2049 x 96^2) and by the memory budget
+// (EstimateMemory within BudgetShare of it): from the most lines down, each N with its own
+// directions (AutomaticDirections), and with 513 where the memory budget refused those.
 //
 // The texels are the cell side, or half of it where the features ask for at least twice the
 // lines per side the caps allowed: the resolution the lines cannot give then comes from the
@@ -40,8 +40,8 @@ namespace vlf
 
 struct AutomaticLimits
 {
-  std::uint64_t MemoryBudget = std::uint64_t(4) << 30;    // bytes; the settings' budget
-  double BudgetShare = 0.5;                               // of the budget the estimate may use
+  std::uint64_t MemoryBudget = std::uint64_t(4) << 30; // bytes; the settings' budget
+  double BudgetShare = 0.5;                            // of the budget the estimate may use
   // K N^2, time's proxy: 2049 x 96 x 96. The corridor of the benchmark, whose 25 cm rib faces
   // ask for 136 lines per side, went from 9.0% to 7.0% mean error per pixel (p95 31.6% to 23.8%)
   // between 64 and 96 lines per side, at 354 and 597 MiB.
