@@ -186,6 +186,71 @@ PixelError Compare(
   return e;
 }
 
+// Where the error is: the mean signed relative error (bias), and the mean |error| on pixels at
+// an edge (a 4-neighbour shows another surface) against the rest, and on small surfaces
+// (narrower than 4 texels) against the others.
+std::string ErrorBreakdown(const vlf::LightField& field, const std::vector<PixelHit>& hits, int w,
+  int h, const RgbImage& image, const RgbImage& a, const RgbImage& b)
+{
+  double mean = 0.0;
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < hits.size(); ++i)
+  {
+    if (hits[i].Triangle != SceneHit::None)
+    {
+      mean += 0.5 * (Sum3(&a.Rgb[3 * i]) + Sum3(&b.Rgb[3 * i]));
+      ++n;
+    }
+  }
+  mean /= static_cast<double>(std::max<std::size_t>(n, 1));
+  const auto surfaceAt = [&](int x, int y)
+  {
+    const PixelHit& p = hits[static_cast<std::size_t>(y) * w + x];
+    return p.Triangle == SceneHit::None ? vlf::NoSurface : field.SurfaceOfTriangle(p.Triangle);
+  };
+  double bias = 0.0, sum[2][2] = { { 0, 0 }, { 0, 0 } };
+  std::size_t count[2][2] = { { 0, 0 }, { 0, 0 } }, all = 0;
+  for (int y = 0; y < h; ++y)
+  {
+    for (int x = 0; x < w; ++x)
+    {
+      const std::size_t i = static_cast<std::size_t>(y) * w + x;
+      const double r = 0.5 * (Sum3(&a.Rgb[3 * i]) + Sum3(&b.Rgb[3 * i]));
+      const std::uint32_t s = surfaceAt(x, y);
+      if (s == vlf::NoSurface || !(r > 0.01 * mean))
+      {
+        continue;
+      }
+      const double e = (Sum3(&image.Rgb[3 * i]) - r) / r;
+      bool edge = false;
+      const int dx[4] = { 1, -1, 0, 0 }, dy[4] = { 0, 0, 1, -1 };
+      for (int q = 0; q < 4; ++q)
+      {
+        const int nx = x + dx[q], ny = y + dy[q];
+        edge = edge || (nx >= 0 && ny >= 0 && nx < w && ny < h && surfaceAt(nx, ny) != s);
+      }
+      const vlf::Surface& surface = field.Surfaces()[s];
+      const bool small = std::min(surface.TextureWidth, surface.TextureHeight) < 4;
+      bias += e;
+      ++all;
+      sum[0][edge ? 1 : 0] += std::abs(e);
+      ++count[0][edge ? 1 : 0];
+      sum[1][small ? 1 : 0] += std::abs(e);
+      ++count[1][small ? 1 : 0];
+    }
+  }
+  const auto ratio = [](double x, std::size_t c)
+  { return c > 0 ? 100.0 * x / static_cast<double>(c) : 0.0; };
+  char text[256];
+  std::snprintf(text, sizeof(text),
+    "bias %+.1f%%; interior %.1f%% (%zu px), edges %.1f%% (%zu px); large surfaces %.1f%% "
+    "(%zu px), small %.1f%% (%zu px)",
+    ratio(bias, all), ratio(sum[0][0], count[0][0]), count[0][0], ratio(sum[0][1], count[0][1]),
+    count[0][1], ratio(sum[1][0], count[1][0]), count[1][0], ratio(sum[1][1], count[1][1]),
+    count[1][1]);
+  return text;
+}
+
 RgbImage FieldImage(const vlf::LightField& field, const std::vector<PixelHit>& hits, int w, int h)
 {
   const vlf::Lookup lookup(field);
@@ -294,7 +359,9 @@ int RunVlfAccuracyBenchmark(const std::vector<std::string>& args)
     "--full", "sweep more settings: 513x32,513x64,2049x32,2049x64,2049x64t0.5,auto,2049x96");
   cl.AddValue("--size", "WxH", "compared image size", "64x64");
   cl.AddValue("--samples", "N",
-    "path-tracer paths per pixel of the reference (two halves; cached, so paid once)", "8192");
+    "path-tracer paths per pixel of the reference (two halves; cached, so paid once; 4 x for the "
+    "room, lit by many bounces)",
+    "8192");
   cl.AddValue("--cache", "DIR", "where references are kept between runs", "vlf-accuracy-cache");
   cl.AddValue("--memory-budget", "GIB", "the fields' memory budget (auto uses half of it)", "4");
   cl.AddValue("--csv", "FILE", "write one row per scene, setting and filter");
@@ -331,7 +398,7 @@ int RunVlfAccuracyBenchmark(const std::vector<std::string>& args)
   std::ostringstream csv;
   csv << "scene,settings,directions,rays,tiles,texel_m,lines,surfaces,texels,map_cells,"
          "iterations,build_s,propagate_s,total_s,allocated_bytes,estimate_bytes,filter,"
-         "pixels,mean_rel_error,p95_rel_error,black_where_lit,reference_noise\n";
+         "pixels,mean_rel_error,p95_rel_error,black_where_lit,reference_noise,peak_bytes\n";
   std::map<std::string, ChartSeries> series;
   std::printf("%-9s %-12s %6s %4s %8s %9s %7s %7s %8s %9s %6s %7s %7s %6s %6s\n", "scene",
     "settings", "dirs", "rays", "texel m", "lines", "iter", "time s", "memory", "filter", "mean",
@@ -353,18 +420,19 @@ int RunVlfAccuracyBenchmark(const std::vector<std::string>& args)
       "# %s: %s, %zu triangles\n", name.c_str(), s.Description.c_str(), s.Scene.TriangleCount());
     std::fflush(stdout);
     RgbImage a, b;
+    const int sceneSamples = samples * s.ReferenceSamplesScale;
     const std::string key = cache + "/" + name + "-" + SceneDigest(s) + "-" +
-      std::to_string(width) + "x" + std::to_string(height) + "-" + std::to_string(samples);
+      std::to_string(width) + "x" + std::to_string(height) + "-" + std::to_string(sceneSamples);
     std::printf("# %s: reference %s-{a,b}.exr\n", name.c_str(), key.c_str());
     std::fflush(stdout);
     if (!(FileExists(key + "-a.exr") && ReadLinearImage(key + "-a.exr", a, error) &&
           ReadLinearImage(key + "-b.exr", b, error) && a.Width == width && b.Width == width))
     {
       const Clock::time_point start = Clock::now();
-      a = ReferenceHalf(s, embree, hits, width, height, samples / 2, 1);
-      b = ReferenceHalf(s, embree, hits, width, height, samples / 2, 2);
+      a = ReferenceHalf(s, embree, hits, width, height, sceneSamples / 2, 1);
+      b = ReferenceHalf(s, embree, hits, width, height, sceneSamples / 2, 2);
       std::printf("# %s: path-traced reference, %d paths per pixel, %.1f s (cached in %s-*.exr)\n",
-        name.c_str(), samples, SecondsSince(start), key.c_str());
+        name.c_str(), sceneSamples, SecondsSince(start), key.c_str());
       if (!WriteLinearImage(a, key + "-a.exr", error) ||
         !WriteLinearImage(b, key + "-b.exr", error))
       {
@@ -394,6 +462,14 @@ int RunVlfAccuracyBenchmark(const std::vector<std::string>& args)
         vlf::PropagateToTolerance(*field, vlf::DefaultTolerance, vlf::DefaultMaxIterations);
         const double propagate = SecondsSince(propagateStart);
         const std::uint64_t allocated = field->AllocatedBytes();
+        // The estimate (what the automatic settings budget with) against what the field
+        // holds while it propagates: its structure plus one texture of flux per worker block.
+        const std::uint64_t peak = allocated +
+          vlf::DefaultBlockCount(field->SubfieldCount()) * field->TexelCount() * sizeof(glm::vec3);
+        std::printf("# %s %s: memory estimate %s, propagation peak %s (estimate / peak %.2f)\n",
+          name.c_str(), text.c_str(), FormatBytes(estimate.TotalBytes).c_str(),
+          FormatBytes(peak).c_str(),
+          static_cast<double>(estimate.TotalBytes) / static_cast<double>(peak));
         const double texelWorld =
           (settings.TexelSize > 0.0f ? settings.TexelSize : settings.CellSize()) /
           field->NormalizationScale();
@@ -407,6 +483,9 @@ int RunVlfAccuracyBenchmark(const std::vector<std::string>& args)
           }
           const RgbImage image = FieldImage(*field, hits, width, height);
           const PixelError e = Compare(hits, image, a, b);
+          std::printf("# %s %s %s: %s\n", name.c_str(), text.c_str(),
+            filtered ? "bilateral" : "none",
+            ErrorBreakdown(*field, hits, width, height, image, a, b).c_str());
           if (!cl.Get("--images").empty())
           {
             const std::string base =
@@ -426,7 +505,7 @@ int RunVlfAccuracyBenchmark(const std::vector<std::string>& args)
               << ',' << field->IterationsDone << ',' << build << ',' << propagate << ','
               << build + propagate << ',' << allocated << ',' << estimate.TotalBytes << ','
               << (filtered ? "bilateral" : "none") << ',' << e.Pixels << ',' << e.Mean << ','
-              << e.P95 << ',' << e.Black << ',' << e.ReferenceNoise << '\n';
+              << e.P95 << ',' << e.Black << ',' << e.ReferenceNoise << ',' << peak << '\n';
           if (filtered == 0)
           {
             ChartSeries& cs = series[name];

@@ -29,6 +29,9 @@ struct AccuracyScene
   std::string Description;
   TriangleScene Scene;
   PinholeCamera Camera;
+  // The reference's paths per pixel are --samples times this: a scene lit only by many bounces
+  // needs more for its reference noise to stay well below the field's error.
+  int ReferenceSamplesScale = 1;
 };
 
 // The names accepted by MakeAccuracyScene, in the benchmark's order.

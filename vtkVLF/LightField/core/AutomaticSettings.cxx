@@ -149,6 +149,17 @@ AutomaticChoice ChooseAutomaticSettings(const TriangleScene& scene, const Automa
       break;
     }
   }
+  if (limits.FineTexelRatio > 0.0 && chosen.Directions >= 2049 &&
+    static_cast<double>(wanted) >= limits.FineTexelRatio * chosen.RaysPerSide)
+  {
+    chosen.TexelSize = 0.5f * chosen.CellSize();
+    // The textures grow fourfold: still within the budget share?
+    if (static_cast<double>(EstimateMemory(scene, chosen).TotalBytes) >
+      limits.BudgetShare * static_cast<double>(limits.MemoryBudget))
+    {
+      chosen.TexelSize = 0.0f;
+    }
+  }
   choice.Settings = chosen;
   return choice;
 }
@@ -182,6 +193,11 @@ AutomaticChoice ResolveAutomaticSettings(
   {
     s.TilesPerSide = std::max(1, s.RaysPerSide / 8);
   }
+  if (requested.RaysPerSide == 0 && requested.TexelSize == 0.0f &&
+    s.RaysPerSide == choice.Settings.RaysPerSide && s.Directions == choice.Settings.Directions)
+  {
+    s.TexelSize = choice.Settings.TexelSize; // half the cell where the features ask for it
+  }
   choice.Settings = s;
   return choice;
 }
@@ -190,9 +206,10 @@ std::string AutomaticChoice::Describe() const
 {
   char text[256];
   std::snprintf(text, sizeof(text),
-    "%zu directions x %d x %d lines (scene %.3g across, small features %.3g wide ask for %d "
+    "%zu directions x %d x %d lines%s (scene %.3g across, small features %.3g wide ask for %d "
     "lines per side; limited by %s)",
     this->Settings.Directions, this->Settings.RaysPerSide, this->Settings.RaysPerSide,
+    this->Settings.TexelSize > 0.0f ? ", texels half the line spacing" : "",
     static_cast<double>(this->SceneDiameter), static_cast<double>(this->FeatureWidth),
     this->WantedRaysPerSide, this->Limit.c_str());
   return text;

@@ -14,11 +14,17 @@
 // altitude, 2 area / longest edge), area-weighted, at the 10th percentile (a few slivers do not
 // decide); two lines across it per direction: N = diameter * 2 / width, a multiple of 8 (tiles
 // of 8 x 8 cells). Time and memory grow with the lines K N^2 (the maps hold one cell per line
-// and surface crossed), so N is limited by MaxLines (2049 x 96^2) and by the memory budget (EstimateMemory
-// within BudgetShare of it): from the most lines down, each N with its own directions
-// (AutomaticDirections), and with 513 where the memory budget refused those. The texels stay the
-// cell side: half of it gave no better error on the boxes (a texel is crossed by a quarter of the
-// lines, noisier).
+// and surface crossed), so N is limited by MaxLines (2049 x 96^2) and by the memory budget
+// (EstimateMemory within BudgetShare of it): from the most lines down, each N with its own
+// directions (AutomaticDirections), and with 513 where the memory budget refused those.
+//
+// The texels are the cell side, or half of it where the features ask for at least twice the
+// lines per side the caps allowed: the resolution the lines cannot give then comes from the
+// textures alone, each texel still gathering about a quarter of 2049 directions' lines. Measured
+// on `bench vlf-accuracy` at 2049 x 96 x 96 (docs/measurements/vlf/accuracy/): the boxes (their
+// 9 cm features ask for 256 lines) went from 33.3% to 24.9% mean error per pixel (the floor
+// between them from 60% to 37%), while the corridor (136 asked) went from 7.0% to 7.9% (noisier
+// walls, the same edges), and at 513 directions half texels gave the boxes nothing.
 #ifndef mesolight_vlf_AutomaticSettings_h
 #define mesolight_vlf_AutomaticSettings_h
 
@@ -34,8 +40,8 @@ namespace vlf
 
 struct AutomaticLimits
 {
-  std::uint64_t MemoryBudget = std::uint64_t(4) << 30;    // bytes; the settings' budget
-  double BudgetShare = 0.5;                               // of the budget the estimate may use
+  std::uint64_t MemoryBudget = std::uint64_t(4) << 30; // bytes; the settings' budget
+  double BudgetShare = 0.5;                            // of the budget the estimate may use
   // K N^2, time's proxy: 2049 x 96 x 96. The corridor of the benchmark, whose 25 cm rib faces
   // ask for 136 lines per side, went from 9.0% to 7.0% mean error per pixel (p95 31.6% to 23.8%)
   // between 64 and 96 lines per side, at 354 and 597 MiB.
@@ -48,6 +54,9 @@ struct AutomaticLimits
   int MinRaysPerSide = 32;
   int MaxRaysPerSide = 256;
   double LinesPerFeature = 2.0; // lines across the small-feature width, per direction
+  // Texels half the cell side when the features ask for this many times the lines chosen (with
+  // at least 2049 directions); 0 never.
+  double FineTexelRatio = 2.0;
 };
 
 struct AutomaticChoice
@@ -65,7 +74,8 @@ struct AutomaticChoice
 float SmallFeatureWidth(const TriangleScene& scene);
 
 // The settings for `scene` (world units) within `limits` (see above). TilesPerSide is
-// RaysPerSide / 8, TexelSize 0 (the cell side), MemoryBudget limits.MemoryBudget. Throws
+// RaysPerSide / 8, TexelSize 0 (the cell side) or half the cell side (FineTexelRatio),
+// MemoryBudget limits.MemoryBudget. Throws
 // std::invalid_argument for a scene without triangles.
 AutomaticChoice ChooseAutomaticSettings(
   const TriangleScene& scene, const AutomaticLimits& limits = {});
@@ -75,7 +85,8 @@ std::size_t AutomaticDirections(int raysPerSide);
 
 // Fills in what `requested` leaves automatic: RaysPerSide 0 is chosen from the scene
 // (ChooseAutomaticSettings within its MemoryBudget), Directions 0 follows the lines
-// (AutomaticDirections), TilesPerSide 0 is RaysPerSide / 8; given values are kept. Returns the
+// (AutomaticDirections), TilesPerSide 0 is RaysPerSide / 8, TexelSize 0 with automatic lines is
+// the choice's; given values are kept. Returns the
 // choice (Describe() for a log line; Limit "given" when nothing was automatic).
 AutomaticChoice ResolveAutomaticSettings(
   const TriangleScene& scene, const LightFieldSettings& requested);

@@ -4,7 +4,9 @@
 //    0.707) and twenty 1 x 0.01 strips on it (widths 0.01, 17% of the area): the area-weighted
 //    10th percentile is the strips' width. Without the strips (the negative) it is the emitter's.
 // 2. The strips ask for many lines; the line cap and a small memory budget each bring the choice
-//    down, and say so; the floor alone gets the preferred 2049 x 64 x 64. Given values are kept.
+//    down, and say so; the floor alone gets the preferred 2049 x 64 x 64. Where the features ask
+//    for twice the lines taken (with 2049 directions) the texels are half the cell side, else
+//    (513 directions, big faces, lines given) the cell side. Given values are kept.
 #include "AutomaticSettings.h"
 
 #include <gtest/gtest.h>
@@ -75,6 +77,13 @@ TEST(VLFAutomaticSettings, FeaturesAskCapsLimit)
   // The line cap lowers the lines per side, never the directions.
   EXPECT_EQ(c.Settings.RaysPerSide, 96);
   EXPECT_EQ(c.Settings.Directions, 2049u);
+  // The strips ask for 256 (the cap of lines per side), over twice the 96 taken: texels of half
+  // the cell side.
+  EXPECT_FLOAT_EQ(c.Settings.TexelSize, 0.5f * c.Settings.CellSize()) << c.Describe();
+  EXPECT_NE(c.Describe().find("texels half the line spacing"), std::string::npos);
+  AutomaticLimits noFine;
+  noFine.FineTexelRatio = 0.0;
+  EXPECT_EQ(ChooseAutomaticSettings(strips, noFine).Settings.TexelSize, 0.0f);
 
   // A budget between what 513 and 2049 directions at 96 lines need: 513 x 96 (memory lowers the
   // directions first at the same lines).
@@ -89,9 +98,15 @@ TEST(VLFAutomaticSettings, FeaturesAskCapsLimit)
   EXPECT_EQ(c.Limit, "memory budget") << c.Describe();
   EXPECT_EQ(c.Settings.RaysPerSide, 96);
   EXPECT_EQ(c.Settings.Directions, 513u);
+  EXPECT_EQ(c.Settings.TexelSize, 0.0f); // 513 directions: too few lines for half texels
 
+  // A budget whose half just holds 513 x 32 x 32: only the minimum fits.
+  LightFieldSettings minimum;
+  minimum.Directions = 513;
+  minimum.RaysPerSide = 32;
+  minimum.TilesPerSide = 4;
   limits = AutomaticLimits();
-  limits.MemoryBudget = std::uint64_t(8) << 20; // 8 MiB: only the minimum fits
+  limits.MemoryBudget = 2 * EstimateMemory(strips, minimum).TotalBytes * 21 / 20;
   c = ChooseAutomaticSettings(strips, limits);
   EXPECT_EQ(c.Limit, "memory budget") << c.Describe();
   EXPECT_EQ(c.Settings.RaysPerSide, 32);
@@ -102,6 +117,7 @@ TEST(VLFAutomaticSettings, FeaturesAskCapsLimit)
   EXPECT_EQ(c.Limit, "the preferred minimum") << c.Describe();
   EXPECT_EQ(c.Settings.RaysPerSide, 64);
   EXPECT_EQ(c.Settings.Directions, 2049u);
+  EXPECT_EQ(c.Settings.TexelSize, 0.0f); // nothing asks for finer texels
 
   EXPECT_THROW(ChooseAutomaticSettings(TriangleScene()), std::invalid_argument);
 }
@@ -124,4 +140,10 @@ TEST(VLFAutomaticSettings, GivenValuesAreKept)
   EXPECT_EQ(c.Settings.Directions, 2049u);
   EXPECT_GT(c.Settings.RaysPerSide, 32);
   EXPECT_EQ(c.Settings.TilesPerSide, c.Settings.RaysPerSide / 8);
+  // All automatic: the choice's half-cell texels; lines given: the cell side.
+  given.Directions = 0;
+  EXPECT_FLOAT_EQ(ResolveAutomaticSettings(Strips(true), given).Settings.TexelSize,
+    0.5f * ResolveAutomaticSettings(Strips(true), given).Settings.CellSize());
+  given.RaysPerSide = 96;
+  EXPECT_EQ(ResolveAutomaticSettings(Strips(true), given).Settings.TexelSize, 0.0f);
 }
