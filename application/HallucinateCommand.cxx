@@ -646,8 +646,8 @@ int RunHallucinationBenchmark(const std::vector<std::string>& args)
   if (cl.Has("--plot"))
   {
     ScatterChart chart;
-    chart.Title = "Depth hallucination: correlation with the true depth per layer count "
-                  "(lines: fixed; points: the default's choice)";
+    chart.Title = "Depth hallucination: correlation with the true depth per fixed layer count "
+                  "(one marker per map), and the default's choice";
     chart.XLabel = "layers (widest sigma 2^(N-1) texels)";
     chart.YLabel = "correlation with the true depth";
     for (const Summary& s : summaries)
