@@ -119,7 +119,7 @@ std::vector<float> GaussianBlurClamped(
 int HallucinationBlurFactor(float sigma)
 {
   // Coarse sigma at least 8 texels: bilinear interpolation of a Gaussian that wide errs by a few
-  // 1e-3 of its amplitude; sigma up to 16 (the default five layers) stays exact.
+  // 1e-3 of its amplitude; sigma up to 16 (five layers) stays exact.
   int factor = 1;
   while (sigma > 16.0f && sigma / static_cast<float>(2 * factor) >= 8.0f)
   {
