@@ -29,7 +29,8 @@
  *     Then a residual layer: the widest layer L_K against the open sky (shading 1) by the
  *     valley law, with sigma ResidualWeight * sigma_K: the broad darkening the band-pass layers
  *     leave out (the floor of a wide recessed panel is as bright as its surround in every layer).
- *     depth = DepthScale * sum_k (ValleyWeight * valley_k - HillWeight * hill_k), in texels;
+ *     depth = DepthScale * (sum_k (ValleyWeight * valley_k - HillWeight * hill_k)
+ *     + ValleyWeight * residual), in texels;
  *     the output is that depth stretched to [0, 1] (0 = highest point, 1 = deepest, the
  *     project's convention) and its range in texels (DepthRangeTexels).
  *
@@ -44,7 +45,8 @@
  * surface to the flash and light bounced between walls; dividing by it brightens slopes, which
  * the hill law reads (with the true albedo instead the model does worse: docs/hallucination.md).
  * It is an approximation by design: shading cannot tell absolute depth nor very low
- * frequencies, the deepest useful layer must match the largest features (Layers), and where the
+ * frequencies, the widest useful layer must match the features (Layers, chosen from the shading
+ * unless given; the automatic choice and the residual layer are this project's), and where the
  * albedo is not removed dark paint reads as deep. docs/hallucination.md measures how far it gets.
  */
 #ifndef mesolight_DepthHallucination_h
