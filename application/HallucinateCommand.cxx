@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "HallucinateCommand.h"
 
+#include "ChartPlot.h"
 #include "CommandLine.h"
 #include "OutputFile.h"
 #include "Timing.h"
@@ -72,7 +73,12 @@ int RunHallucinateCommand(const std::vector<std::string>& args)
   cl.AddValue("--albedo", "FILE", "albedo to write (float RGB; .exr keeps it linear)");
   cl.AddValue("--depth", "FILE", "depth map to write (float; 0 = highest, 1 = deepest)");
   cl.AddValue("--depth-scale", "K", "the user's depth scale: multiplies the model's depth", "1");
-  cl.AddValue("--layers", "N", "scale layers; sigma 1, 2, 4, ... texels", "5");
+  cl.AddValue("--layers", "N",
+    "scale layers; sigma 1, 2, 4, ... texels (auto: from the\nphotographs' feature size)", "auto");
+  cl.AddValue("--residual-weight", "W",
+    "sigma of the residual layer (the widest layer against\nthe open sky) in widest sigmas; 0: "
+    "none",
+    "8");
   cl.AddValue("--hill-weight", "W", "weight of the hill law (orientation to the sky)", "1");
   cl.AddValue("--valley-weight", "W", "weight of the valley law (visible aperture)", "1");
   int exitCode = 0;
@@ -86,12 +92,14 @@ int RunHallucinateCommand(const std::vector<std::string>& args)
                          "--albedo A.exr --depth D.exr");
   }
   std::string error;
-  double depthScale = 1.0, hill = 1.0, valley = 1.0;
-  int layers = 5;
+  double depthScale = 1.0, hill = 1.0, valley = 1.0, residual = 8.0;
+  int layers = 0; // automatic
   if (!cl.GetDouble("--depth-scale", 1e-6, 1e6, depthScale, error) ||
-    !cl.GetInt("--layers", 1, 12, layers, error) ||
+    (cl.Get("--layers") == "auto" ? (layers = 0, false)
+                                  : !cl.GetInt("--layers", 1, 12, layers, error)) ||
     !cl.GetDouble("--hill-weight", 0.0, 100.0, hill, error) ||
-    !cl.GetDouble("--valley-weight", 0.0, 100.0, valley, error))
+    !cl.GetDouble("--valley-weight", 0.0, 100.0, valley, error) ||
+    !cl.GetDouble("--residual-weight", 0.0, 100.0, residual, error))
   {
     return cl.UsageError(error);
   }
@@ -153,13 +161,15 @@ int RunHallucinateCommand(const std::vector<std::string>& args)
   filter->SetNumberOfLayers(layers);
   filter->SetHillWeight(hill);
   filter->SetValleyWeight(valley);
+  filter->SetResidualWeight(residual);
   {
     int size[3];
     diffuse->GetDimensions(size);
     const int longest = std::max(size[0], size[1]);
     // The coarsest layer's sigma (2^(layers - 1) texels) beyond the photograph's longer side
     // compares every pixel with the mean of the whole photograph, as the layer before did.
-    if (std::min(size[0], size[1]) >= HallucinationMinimumSide && (1 << (layers - 1)) > longest)
+    if (layers > 0 && std::min(size[0], size[1]) >= HallucinationMinimumSide &&
+      (1 << (layers - 1)) > longest)
     {
       int most = 1;
       while ((1 << most) <= longest && most < 12)
@@ -176,12 +186,24 @@ int RunHallucinateCommand(const std::vector<std::string>& args)
     // (docs/measurements/hallucination/hallucination-cost.csv: 2048^2 in 1.8 s with 1 layer,
     // 10 s with 5).
     constexpr double SecondsPerPixel = 3.5e-7, SecondsPerWork = 5e-9;
+    // The automatic choice is estimated at its most (sigma up to half the longer side), plus
+    // its own measure (about one layer's work).
+    int estimatedLayers = layers;
+    if (layers == 0)
+    {
+      estimatedLayers = 2;
+      while (estimatedLayers < 12 && (1 << estimatedLayers) <= longest / 2)
+      {
+        ++estimatedLayers;
+      }
+    }
     const double estimate = SecondsPerPixel * size[0] * size[1] +
-      SecondsPerWork * HallucinationWork(size[0], size[1], layers);
+      SecondsPerWork * HallucinationWork(size[0], size[1], estimatedLayers);
     if (estimate > 2.0)
     {
-      std::cerr << "hallucinating " << size[0] << "x" << size[1] << ", " << layers
-                << " layers: about " << std::setprecision(2) << estimate << " s\n";
+      std::cerr << "hallucinating " << size[0] << "x" << size[1] << ", "
+                << (layers > 0 ? std::to_string(layers) + " layers" : "automatic layers")
+                << ": at most about " << std::setprecision(2) << estimate << " s\n";
     }
   }
   vtkNew<vtkCallbackCommand> progress;
@@ -229,6 +251,16 @@ int RunHallucinateCommand(const std::vector<std::string>& args)
   }
   std::cout << "hallucinated " << dims[0] << "x" << dims[1] << " in " << std::setprecision(3)
             << seconds << " s" << (calibration ? "" : " (uniform flash: no --calibration)") << "\n";
+  if (layers == 0)
+  {
+    std::cout << "layers: " << filter->GetLayersUsed() << " (widest sigma "
+              << (1 << (filter->GetLayersUsed() - 1)) << " texels), chosen from the feature size "
+              << std::setprecision(3) << filter->GetFeatureSizeTexels() << " texels\n";
+  }
+  else
+  {
+    std::cout << "layers: " << layers << " (widest sigma " << (1 << (layers - 1)) << " texels)\n";
+  }
   if (!(filter->GetDepthRangeTexels() > 0.0))
   {
     std::cerr << "mesolight hallucinate: warning: the depth is flat (the diffuse photograph's "
@@ -266,13 +298,19 @@ int RunHallucinationBenchmark(const std::vector<std::string>& args)
   }
 #endif
   cl.AddValue("--maps", "LIST",
-    "Bricks, Stone, HemisphereTorus or depth images (0 = top),\neach NAME[:RELIEF_TEXELS]",
+    "Bricks, Stone, HemisphereTorus, Panels, Holes or depth\nimages (0 = top), each "
+    "NAME[:RELIEF_TEXELS]",
     defaultMaps);
   cl.AddValue("--size", "N", "photograph size for the procedural maps", "128");
   cl.AddValue("--relief", "TEXELS", "depth of depth 1 in texels, unless given per map", "8");
   cl.AddValue("--samples", "N", "path samples per pixel", "32");
-  cl.AddValue("--layers", "N", "scale layers of the model", "5");
-  cl.AddValue("--csv", "FILE", "figures as CSV");
+  cl.AddValue("--layers", "N", "scale layers of the model (auto: from the photographs)", "auto");
+  cl.AddValue("--sweep", "LIST",
+    "also run the model with each of these fixed layer counts\n(e.g. 1,2,3,4,5,6,7,8,9): the "
+    "summary names the best");
+  cl.AddFlag("--height", "depth images are height maps (white = high): depth = 1 - value");
+  cl.AddValue("--plot", "FILE", "correlation per layer count and map as PNG (needs --sweep)");
+  cl.AddValue("--csv", "FILE", "figures as CSV (and FILE's stem + -summary.csv)");
   cl.AddValue("--photos", "DIR", "also write each map's photographs and true depth (.exr) there");
   int exitCode = 0;
   if (!cl.ParseArguments(args, exitCode))
@@ -280,16 +318,23 @@ int RunHallucinationBenchmark(const std::vector<std::string>& args)
     return exitCode;
   }
   std::string error;
-  int size = 128, samples = 32, layers = 5;
+  int size = 128, samples = 32, layers = 0;
   double relief = 8.0;
+  std::vector<int> sweep;
   if (!cl.GetInt("--size", 8, 2048, size, error) ||
     !cl.GetInt("--samples", 1, 4096, samples, error) ||
-    !cl.GetInt("--layers", 1, 12, layers, error) ||
-    !cl.GetDouble("--relief", 0.01, 1000.0, relief, error))
+    (cl.Get("--layers") == "auto" ? (layers = 0, false)
+                                  : !cl.GetInt("--layers", 1, 12, layers, error)) ||
+    !cl.GetDouble("--relief", 0.01, 1000.0, relief, error) ||
+    (cl.Has("--sweep") && !cl.GetIntList("--sweep", 1, 12, sweep, error)))
   {
     return cl.UsageError(error);
   }
-  const std::string problem = CheckOutputOptions(cl, { "--csv" }, {});
+  if (cl.Has("--plot") && sweep.empty())
+  {
+    return cl.UsageError("--plot draws the correlation per layer count: give --sweep");
+  }
+  const std::string problem = CheckOutputOptions(cl, { "--csv", "--plot" }, {});
   if (!problem.empty())
   {
     return cl.UsageError(problem);
@@ -300,9 +345,23 @@ int RunHallucinationBenchmark(const std::vector<std::string>& args)
     return cl.UsageError("--photos: " + photos + " is not a directory");
   }
 
-  std::ostringstream csv;
-  csv << "map,width,height,relief_texels,samples,method,correlation,mae_texels,"
+  std::ostringstream csv, summaryCsv;
+  csv << "map,width,height,relief_texels,samples,method,layers,correlation,mae_texels,"
          "best_constant_mae_texels,depth_range_texels,albedo_relative_error,render_s,filter_s\n";
+  summaryCsv << "map,width,height,default_layers,default_correlation,auto_layers,"
+                "feature_size_texels,auto_correlation,old_default_correlation,best_fixed_layers,"
+                "best_fixed_correlation,inverted_brightness_correlation,flash_ratio_correlation\n";
+  struct Summary
+  {
+    std::string Map;
+    int Layers = 0, AutoLayers = 0;
+    float Feature = 0.0f;
+    double Default = 0.0, Auto = 0.0, Best = -2.0, Five = 0.0, Brightness = 0.0, Ratio = 0.0;
+    int BestLayers = 0;
+    std::vector<double> Sweep;
+    std::vector<int> SweepLayers;
+  };
+  std::vector<Summary> summaries;
   std::cout << std::left << std::setw(27) << "map" << std::setw(22) << "method" << std::right
             << std::setw(12) << "correlation" << std::setw(12) << "MAE texels" << std::setw(12)
             << "flat MAE"
@@ -321,7 +380,17 @@ int RunHallucinationBenchmark(const std::vector<std::string>& args)
     int w = size, h = size;
     std::vector<float> depth;
     std::string label = name;
-    if (name == "Bricks" || name == "Stone" || name == "HemisphereTorus")
+    if (name == "Panels" || name == "Holes")
+    {
+      HallucinationTestSurface surface = MakeHallucinationTestSurface(name == "Panels");
+      w = h = surface.Side;
+      depth = std::move(surface.Depth);
+      if (colon == std::string::npos || name == entry)
+      {
+        texels = surface.ReliefTexels;
+      }
+    }
+    else if (name == "Bricks" || name == "Stone" || name == "HemisphereTorus")
     {
       HeightFieldParameters parameters;
       parameters.Pattern = name == "Bricks" ? ReliefPattern::Bricks
@@ -349,9 +418,11 @@ int RunHallucinationBenchmark(const std::vector<std::string>& args)
       const double scale = values->GetDataType() == VTK_UNSIGNED_CHAR ? 1.0 / 255.0
         : values->GetDataType() == VTK_UNSIGNED_SHORT                 ? 1.0 / 65535.0
                                                                       : 1.0;
+      const bool height = cl.Has("--height");
       for (vtkIdType p = 0; p < image->GetNumberOfPoints(); ++p)
       {
-        depth.push_back(static_cast<float>(scale * values->GetComponent(p, 0)));
+        const double v = scale * values->GetComponent(p, 0);
+        depth.push_back(static_cast<float>(height ? 1.0 - v : v));
       }
       label = std::filesystem::path(name).stem().string();
     }
@@ -392,34 +463,110 @@ int RunHallucinationBenchmark(const std::vector<std::string>& args)
       d *= static_cast<float>(texels);
     }
     double albedoError = 0.0;
-    std::vector<float> brightness(depth.size()), darkIsDeep(depth.size());
+    std::vector<float> brightness(depth.size()), darkIsDeep(depth.size()), ratio(depth.size());
     for (std::size_t p = 0; p < depth.size(); ++p)
     {
       const float t = RgbLuminance(&shots.TrueAlbedo.Rgb[3 * p]);
       albedoError += std::abs(RgbLuminance(&result.Albedo.Rgb[3 * p]) - t) / t;
       brightness[p] = -RgbLuminance(&shots.Diffuse.Rgb[3 * p]);
       darkIsDeep[p] = -result.Shading[p];
+      // The diffuse/flash ratio: the albedo divides out, dark is deep, no scales.
+      const float flashLuminance = RgbLuminance(&shots.Flash.Rgb[3 * p]);
+      ratio[p] =
+        flashLuminance > 0.0f ? -RgbLuminance(&shots.Diffuse.Rgb[3 * p]) / flashLuminance : 0.0f;
     }
     albedoError /= static_cast<double>(depth.size());
-    const struct
+    struct Method
     {
-      const char* Method;
-      const std::vector<float>* Estimate;
-    } methods[] = { { "model", &result.Depth }, { "model-without-card", &uncalibrated.Depth },
-      { "model-true-albedo", &ideal.Depth }, { "inverted-brightness", &brightness },
-      { "dark-is-deep-shading", &darkIsDeep } };
+      std::string Name;
+      std::vector<float> Estimate;
+      int Layers = 0;
+    };
+    std::vector<Method> methods = { { "model", result.Depth, result.Layers },
+      { "model-without-card", uncalibrated.Depth, uncalibrated.Layers },
+      { "model-true-albedo", ideal.Depth, ideal.Layers }, { "inverted-brightness", brightness, 0 },
+      { "flash-ratio", ratio, 0 }, { "dark-is-deep-shading", darkIsDeep, 0 } };
+    // The model at fixed layer counts, on the same photographs (the shading does not depend on
+    // the layers): what the best fixed choice would have given on this map.
+    Summary summary;
+    summary.Map = label;
+    summary.Layers = result.Layers;
+    {
+      // The automatic layer count, and the model as it was before the residual layer (five
+      // layers, none): the same photographs, the same shading.
+      HallucinationSettings automatic = settings;
+      automatic.Layers = 0;
+      const HallucinationScale chosen = ChooseHallucinationLayers(result.Shading, w, h);
+      summary.AutoLayers = chosen.Layers;
+      summary.Feature = chosen.FeatureSizeTexels;
+      automatic.Layers = chosen.Layers;
+      methods.push_back(
+        { "model-auto", DepthFromShading(result.Shading, w, h, automatic), chosen.Layers });
+      HallucinationSettings old = settings;
+      old.Layers = 5;
+      old.ResidualWeight = 0.0f;
+      methods.push_back(
+        { "model-5-layers-no-residual", DepthFromShading(result.Shading, w, h, old), 5 });
+    }
+    const int longest = std::max(w, h);
+    for (int n : sweep)
+    {
+      if ((1 << (n - 1)) > longest)
+      {
+        continue;
+      }
+      HallucinationSettings fixed = settings;
+      fixed.Layers = n;
+      methods.push_back(
+        { "model-layers-" + std::to_string(n), DepthFromShading(result.Shading, w, h, fixed), n });
+    }
     for (const auto& method : methods)
     {
-      const DepthAgreement a = CompareDepth(*method.Estimate, truth, w, h, 4);
-      std::cout << std::left << std::setw(27) << label << std::setw(22) << method.Method
-                << std::right << std::fixed << std::setprecision(3) << std::setw(12)
-                << a.Correlation << std::setw(12) << a.MeanAbsoluteError << std::setw(12)
+      const DepthAgreement a = CompareDepth(method.Estimate, truth, w, h, 4);
+      std::cout << std::left << std::setw(27) << label << std::setw(22) << method.Name << std::right
+                << std::fixed << std::setprecision(3) << std::setw(12) << a.Correlation
+                << std::setw(12) << a.MeanAbsoluteError << std::setw(12)
                 << a.TruthMeanAbsoluteDeviation << "\n";
-      csv << label << "," << w << "," << h << "," << texels << "," << samples << ","
-          << method.Method << "," << a.Correlation << "," << a.MeanAbsoluteError << ","
+      csv << label << "," << w << "," << h << "," << texels << "," << samples << "," << method.Name
+          << "," << method.Layers << "," << a.Correlation << "," << a.MeanAbsoluteError << ","
           << a.TruthMeanAbsoluteDeviation << "," << result.DepthRangeTexels << "," << albedoError
           << "," << renderSeconds << "," << filterSeconds << "\n";
+      if (method.Name == "model")
+      {
+        summary.Default = a.Correlation;
+      }
+      else if (method.Name == "inverted-brightness")
+      {
+        summary.Brightness = a.Correlation;
+      }
+      else if (method.Name == "flash-ratio")
+      {
+        summary.Ratio = a.Correlation;
+      }
+      else if (method.Name == "model-auto")
+      {
+        summary.Auto = a.Correlation;
+      }
+      else if (method.Name == "model-5-layers-no-residual")
+      {
+        summary.Five = a.Correlation;
+      }
+      else if (method.Name.rfind("model-layers-", 0) == 0)
+      {
+        summary.Sweep.push_back(a.Correlation);
+        summary.SweepLayers.push_back(method.Layers);
+        if (a.Correlation > summary.Best)
+        {
+          summary.Best = a.Correlation;
+          summary.BestLayers = method.Layers;
+        }
+      }
     }
+    summaryCsv << label << "," << w << "," << h << "," << summary.Layers << "," << summary.Default
+               << "," << summary.AutoLayers << "," << summary.Feature << "," << summary.Auto << ","
+               << summary.Five << "," << summary.BestLayers << "," << summary.Best << ","
+               << summary.Brightness << "," << summary.Ratio << "\n";
+    summaries.push_back(summary);
     std::cout << std::left << std::setw(27) << label << "albedo mean relative error " << albedoError
               << "; model depth range " << result.DepthRangeTexels << " texels (true " << texels
               << "); render " << renderSeconds << " s, filter " << filterSeconds << " s\n";
@@ -442,16 +589,90 @@ int RunHallucinationBenchmark(const std::vector<std::string>& args)
       }
     }
   }
+  // The summary: the default against the best fixed layer count and both naive baselines.
+  std::cout << "\n"
+            << std::left << std::setw(24) << "map" << std::right << std::setw(9) << "default"
+            << std::setw(7) << "(N)" << std::setw(8) << "auto" << std::setw(5) << "(N)"
+            << std::setw(9) << "feature" << std::setw(9) << "old" << std::setw(8) << "best"
+            << std::setw(5) << "(N)" << std::setw(12) << "brightness" << std::setw(8) << "ratio"
+            << "  default beats both\n";
+  double meanDefault = 0.0, meanAuto = 0.0, meanFive = 0.0, meanBest = 0.0;
+  int beaten = 0, autoBeaten = 0, fiveBeaten = 0;
+  const double count = static_cast<double>(std::max<std::size_t>(1, summaries.size()));
+  for (const Summary& s : summaries)
+  {
+    const bool beats = s.Default > s.Brightness && s.Default > s.Ratio;
+    beaten += beats ? 1 : 0;
+    autoBeaten += (s.Auto > s.Brightness && s.Auto > s.Ratio) ? 1 : 0;
+    fiveBeaten += (s.Five > s.Brightness && s.Five > s.Ratio) ? 1 : 0;
+    meanDefault += s.Default / count;
+    meanAuto += s.Auto / count;
+    meanFive += s.Five / count;
+    meanBest += (s.BestLayers ? s.Best : 0.0) / count;
+    std::cout << std::left << std::setw(24) << s.Map << std::right << std::fixed
+              << std::setprecision(3) << std::setw(9) << s.Default << std::setw(7) << s.Layers
+              << std::setw(8) << s.Auto << std::setw(5) << s.AutoLayers << std::setprecision(1)
+              << std::setw(9) << s.Feature << std::setprecision(3) << std::setw(9) << s.Five
+              << std::setw(8) << (s.BestLayers ? s.Best : 0.0) << std::setw(5) << s.BestLayers
+              << std::setw(12) << s.Brightness << std::setw(8) << s.Ratio << "  "
+              << (beats ? "yes" : "NO") << "\n";
+  }
+  std::cout << std::setprecision(3) << "mean correlation: default " << meanDefault
+            << " (beats both baselines on " << beaten << " of " << summaries.size()
+            << " maps), automatic layers " << meanAuto << " (" << autoBeaten
+            << "), old default (5 layers, no residual) " << meanFive << " (" << fiveBeaten << ")";
+  if (!sweep.empty())
+  {
+    std::cout << ", best fixed layer count per map " << meanBest;
+  }
+  std::cout << "\n";
+  std::cout.unsetf(std::ios::fixed);
   if (cl.Has("--csv"))
   {
-    std::ofstream out(cl.Get("--csv"));
+    const std::filesystem::path file(cl.Get("--csv"));
+    const std::filesystem::path summaryFile =
+      file.parent_path() / (file.stem().string() + "-summary.csv");
+    std::ofstream out(file);
     out << csv.str();
-    if (!out)
+    std::ofstream outSummary(summaryFile);
+    outSummary << summaryCsv.str();
+    if (!out || !outSummary)
     {
       std::cerr << "mesolight bench hallucinate: could not write " << cl.Get("--csv") << "\n";
       return 1;
     }
-    std::cout << "wrote " << cl.Get("--csv") << "\n";
+    std::cout << "wrote " << file.string() << " and " << summaryFile.string() << "\n";
+  }
+  if (cl.Has("--plot"))
+  {
+    ScatterChart chart;
+    chart.Title = "Depth hallucination: correlation with the true depth per fixed layer count "
+                  "(one marker per map), and the default's choice";
+    chart.XLabel = "layers (widest sigma 2^(N-1) texels)";
+    chart.YLabel = "correlation with the true depth";
+    for (const Summary& s : summaries)
+    {
+      ChartSeries series;
+      series.Name = s.Map;
+      series.X.assign(s.SweepLayers.begin(), s.SweepLayers.end());
+      series.Y = s.Sweep;
+      chart.Points.push_back(series);
+    }
+    ChartSeries chosen;
+    chosen.Name = "default (automatic)";
+    for (const Summary& s : summaries)
+    {
+      chosen.X.push_back(s.Layers);
+      chosen.Y.push_back(s.Default);
+    }
+    chart.Points.push_back(chosen);
+    std::string plotError;
+    if (!WriteScatterChartPng(chart, cl.Get("--plot"), plotError))
+    {
+      std::cerr << "mesolight bench hallucinate: " << plotError << "\n";
+      return 1;
+    }
+    std::cout << "wrote " << cl.Get("--plot") << "\n";
   }
   return 0;
 }

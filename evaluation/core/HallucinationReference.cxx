@@ -207,6 +207,35 @@ HallucinationPhotographs RenderHallucinationPhotographs(const std::vector<float>
 }
 
 //------------------------------------------------------------------------------
+HallucinationTestSurface MakeHallucinationTestSurface(bool panels)
+{
+  HallucinationTestSurface s;
+  s.Side = panels ? 256 : 128;
+  s.ReliefTexels = panels ? 16.0f : 8.0f;
+  s.FeatureTexels = panels ? 100.0f : 8.0f;
+  s.Depth.assign(static_cast<std::size_t>(s.Side) * static_cast<std::size_t>(s.Side), 0.0f);
+  for (int j = 0; j < s.Side; ++j)
+  {
+    for (int i = 0; i < s.Side; ++i)
+    {
+      bool deep = false;
+      if (panels)
+      {
+        deep = (i % 128) >= 14 && (i % 128) < 114 && (j % 128) >= 14 && (j % 128) < 114;
+      }
+      else
+      {
+        const float x = static_cast<float>(i % 16) - 7.5f, y = static_cast<float>(j % 16) - 7.5f;
+        deep = x * x + y * y <= 16.0f;
+      }
+      s.Depth[static_cast<std::size_t>(j) * static_cast<std::size_t>(s.Side) +
+        static_cast<std::size_t>(i)] = deep ? 1.0f : 0.0f;
+    }
+  }
+  return s;
+}
+
+//------------------------------------------------------------------------------
 DepthAgreement CompareDepth(
   const std::vector<float>& estimate, const std::vector<float>& truth, int w, int h, int margin)
 {

@@ -56,6 +56,19 @@ HallucinationPhotographs RenderHallucinationPhotographs(const std::vector<float>
   int h, const std::vector<glm::vec3>& albedo, const HallucinationPhotoSettings& settings,
   const ProgressCallback& progress = {});
 
+// Generated surfaces whose feature size the generator knows, depth 1 inside the features:
+// "Panels": recessed panels 100 texels wide with frames 28 wide (period 128), 256 x 256, 16 texels
+// deep; "Holes": a plate perforated with round holes 8 texels across on a 16-texel pitch,
+// 128 x 128, 8 texels deep.
+struct HallucinationTestSurface
+{
+  std::vector<float> Depth; // Side x Side, 0 = top, 1 = deepest
+  int Side = 0;
+  float ReliefTexels = 0.0f;
+  float FeatureTexels = 0.0f; // panel width, hole diameter
+};
+HallucinationTestSurface MakeHallucinationTestSurface(bool panels);
+
 // How well an estimate matches the truth after the best affine map a * estimate + b (least
 // squares, a >= 0: an upside-down map is not rescued by a negative scale): Pearson correlation
 // (the sign says whether deep came out deep), and the mean absolute error of the fitted

@@ -160,6 +160,7 @@ int vtkDepthHallucinationFilter::RequestData(
   settings.DepthScale = static_cast<float>(this->DepthScale);
   settings.ValleyWeight = static_cast<float>(this->ValleyWeight);
   settings.HillWeight = static_cast<float>(this->HillWeight);
+  settings.ResidualWeight = static_cast<float>(this->ResidualWeight);
   mesolight::HallucinationResult result;
   try
   {
@@ -176,6 +177,8 @@ int vtkDepthHallucinationFilter::RequestData(
     return 0;
   }
   this->DepthRangeTexels = result.DepthRangeTexels;
+  this->LayersUsed = result.Layers;
+  this->FeatureSizeTexels = result.FeatureSizeTexels;
 
   const vtkIdType count = static_cast<vtkIdType>(diffuse.Width) * diffuse.Height;
   for (vtkImageData* out : { albedoOut, depthOut })
@@ -216,5 +219,8 @@ void vtkDepthHallucinationFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "BaseSigma: " << this->BaseSigma << "\n";
   os << indent << "ValleyWeight: " << this->ValleyWeight << "\n";
   os << indent << "HillWeight: " << this->HillWeight << "\n";
+  os << indent << "ResidualWeight: " << this->ResidualWeight << "\n";
   os << indent << "DepthRangeTexels: " << this->DepthRangeTexels << "\n";
+  os << indent << "LayersUsed: " << this->LayersUsed << "\n";
+  os << indent << "FeatureSizeTexels: " << this->FeatureSizeTexels << "\n";
 }

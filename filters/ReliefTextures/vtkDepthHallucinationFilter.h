@@ -51,8 +51,11 @@ public:
   ///@}
 
   ///@{
-  /** Scale layers (1..12, default 5); the first has sigma BaseSigma texels, each next doubles. */
-  vtkSetClampMacro(NumberOfLayers, int, 1, 12);
+  /**
+   * Scale layers (1..12), or 0 (the default): chosen from the photographs' own feature size.
+   * The first has sigma BaseSigma texels, each next doubles.
+   */
+  vtkSetClampMacro(NumberOfLayers, int, 0, 12);
   vtkGetMacro(NumberOfLayers, int);
   vtkSetClampMacro(BaseSigma, double, 0.1, 1000.0);
   vtkGetMacro(BaseSigma, double);
@@ -66,8 +69,21 @@ public:
   vtkGetMacro(HillWeight, double);
   ///@}
 
+  ///@{
+  /**
+   * Sigma of the residual layer (the widest layer against the open sky) in units of the widest
+   * layer's; 0: none (default 8).
+   */
+  vtkSetClampMacro(ResidualWeight, double, 0.0, 100.0);
+  vtkGetMacro(ResidualWeight, double);
+  ///@}
+
   /** The model's depth of Depth = 1 in texels after the last update (0 before). */
   vtkGetMacro(DepthRangeTexels, double);
+  /** The layers the last update used (NumberOfLayers, or the automatic choice; 0 before). */
+  vtkGetMacro(LayersUsed, int);
+  /** The feature size the automatic choice measured, texels (0 when the layers were given). */
+  vtkGetMacro(FeatureSizeTexels, double);
 
   vtkImageData* GetAlbedoOutput();
   vtkImageData* GetDepthOutput();
@@ -83,11 +99,14 @@ protected:
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   double DepthScale = 1.0;
-  int NumberOfLayers = 5;
+  int NumberOfLayers = 0;
   double BaseSigma = 1.0;
   double ValleyWeight = 1.0;
   double HillWeight = 1.0;
+  double ResidualWeight = 8.0;
   double DepthRangeTexels = 0.0;
+  int LayersUsed = 0;
+  double FeatureSizeTexels = 0.0;
 
 private:
   vtkDepthHallucinationFilter(const vtkDepthHallucinationFilter&) = delete;

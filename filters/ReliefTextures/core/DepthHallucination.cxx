@@ -43,6 +43,7 @@ float Percentile(std::vector<float> values, double q)
   std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(k), values.end());
   return values[k];
 }
+
 } // namespace
 
 //------------------------------------------------------------------------------
@@ -118,7 +119,7 @@ std::vector<float> GaussianBlurClamped(
 int HallucinationBlurFactor(float sigma)
 {
   // Coarse sigma at least 8 texels: bilinear interpolation of a Gaussian that wide errs by a few
-  // 1e-3 of its amplitude; sigma up to 16 (the default five layers) stays exact.
+  // 1e-3 of its amplitude; sigma up to 16 (five layers) stays exact.
   int factor = 1;
   while (sigma > 16.0f && sigma / static_cast<float>(2 * factor) >= 8.0f)
   {
@@ -247,6 +248,79 @@ double HallucinationWork(int w, int h, int layers, float baseSigma)
 }
 
 //------------------------------------------------------------------------------
+HallucinationScale ChooseHallucinationLayers(
+  const std::vector<float>& shading, int w, int h, float baseSigma, int threads)
+{
+  HallucinationScale scale;
+  const std::size_t n =
+    static_cast<std::size_t>(std::max(0, w)) * static_cast<std::size_t>(std::max(0, h));
+  if (n == 0 || shading.size() != n || !(baseSigma > 0.0f))
+  {
+    return scale;
+  }
+  // The shading's energy per octave, a scale-space band-pass (Burt & Adelson's Laplacian pyramid;
+  // Lindeberg, "Feature detection with automatic scale selection"): E_k = mean of
+  // (L_{k-1} - L_k)^2, starting from the shading blurred by the first layer's sigma (the
+  // photograph's noise is in the finest band), over the pixels at least 2 sigma_k from the border
+  // (the clamped border is no feature). Features of a size put energy in the octaves up to about
+  // their size, little beyond: the widest layer is the widest octave holding at least a fifth of
+  // the strongest octave's energy (the threshold measured on bench hallucinate's maps, with the
+  // generator's panels and holes: docs/hallucination.md).
+  std::vector<float> previous = GaussianBlurPyramid(shading, w, h, baseSigma, threads);
+  std::vector<double> energies;
+  std::vector<int> layerOf;
+  for (int k = 2; k <= 12; ++k)
+  {
+    const float sigma = baseSigma * std::ldexp(1.0f, k - 1);
+    const int border = static_cast<int>(std::ceil(2.0f * sigma));
+    if (2 * border >= std::min(w, h) - 2)
+    {
+      break;
+    }
+    std::vector<float> layer = GaussianBlurPyramid(shading, w, h, sigma, threads);
+    double energy = 0.0, count = 0.0;
+    for (int j = border; j < h - border; ++j)
+    {
+      for (int i = border; i < w - border; ++i)
+      {
+        const std::size_t p =
+          static_cast<std::size_t>(j) * static_cast<std::size_t>(w) + static_cast<std::size_t>(i);
+        const double d = static_cast<double>(previous[p]) - layer[p];
+        energy += d * d;
+        count += 1.0;
+      }
+    }
+    energies.push_back(count > 0.0 ? energy / count : 0.0);
+    layerOf.push_back(k);
+    previous.swap(layer);
+  }
+  scale.Layers = std::min(2, std::max(1, std::min(w, h) / 4));
+  if (energies.empty())
+  {
+    return scale;
+  }
+  const double strongest = *std::max_element(energies.begin(), energies.end());
+  double meanSquare = 0.0;
+  for (const float v : shading)
+  {
+    meanSquare += static_cast<double>(v) * v / static_cast<double>(n);
+  }
+  if (!(strongest > 1e-10 * meanSquare))
+  {
+    return scale; // uniform shading (to the blur's rounding): no feature to size
+  }
+  for (std::size_t k = 0; k < energies.size(); ++k)
+  {
+    if (energies[k] >= 0.2 * strongest)
+    {
+      scale.Layers = layerOf[k];
+    }
+  }
+  scale.FeatureSizeTexels = baseSigma * std::ldexp(1.0f, scale.Layers - 1);
+  return scale;
+}
+
+//------------------------------------------------------------------------------
 std::vector<float> DepthFromShading(const std::vector<float>& shading, int w, int h,
   const HallucinationSettings& settings, const ProgressCallback& progress)
 {
@@ -256,13 +330,16 @@ std::vector<float> DepthFromShading(const std::vector<float>& shading, int w, in
   {
     return {};
   }
+  const int layers = settings.Layers > 0
+    ? settings.Layers
+    : ChooseHallucinationLayers(shading, w, h, settings.BaseSigma, settings.Threads).Layers;
   std::vector<float> floored(n);
   std::transform(
     shading.begin(), shading.end(), floored.begin(), [](float s) { return std::max(Floor, s); });
   std::vector<float> previous = floored;
-  for (int k = 1; k <= settings.Layers; ++k)
+  for (int k = 1; k <= layers; ++k)
   {
-    if (!ReportProgress(progress, static_cast<double>(k - 1) / settings.Layers))
+    if (!ReportProgress(progress, static_cast<double>(k - 1) / layers))
     {
       return {};
     }
@@ -297,6 +374,19 @@ std::vector<float> DepthFromShading(const std::vector<float>& shading, int w, in
       },
       settings.Threads);
     previous.swap(layer);
+  }
+  if (settings.ResidualWeight > 0.0f)
+  {
+    // The residual layer: what the layers leave out, the widest layer itself, compared with
+    // the open sky (shading 1) by the valley law, sigma ResidualWeight times the widest layer's.
+    // Broad dark regions (a wide recessed panel, a long groove's floor) come out deep instead
+    // of as flat as the open surface.
+    const float sigma = settings.ResidualWeight * settings.BaseSigma * std::ldexp(1.0f, layers - 1);
+    for (std::size_t p = 0; p < n; ++p)
+    {
+      const float r = std::min(1.0f, std::max(Floor, previous[p]));
+      depth[p] += settings.DepthScale * settings.ValleyWeight * sigma * std::sqrt((1.0f - r) / r);
+    }
   }
   if (!ReportProgress(progress, 1.0))
   {
@@ -338,12 +428,14 @@ HallucinationResult HallucinateDepth(const RgbImage& diffuse, const RgbImage& fl
         (!AllFinite(diffuse) ? "diffuse" : (!AllFinite(flash) ? "flash" : "calibration")) +
         " image has NaN or infinite pixels.");
   }
-  if (settings.Layers < 1 || settings.Layers > 12 || !(settings.BaseSigma > 0.0f) ||
+  if (settings.Layers < 0 || settings.Layers > 12 || !(settings.BaseSigma > 0.0f) ||
     !(settings.DepthScale > 0.0f) || !(settings.ValleyWeight >= 0.0f) ||
-    !(settings.HillWeight >= 0.0f) || !std::isfinite(settings.DepthScale))
+    !(settings.HillWeight >= 0.0f) || !(settings.ResidualWeight >= 0.0f) ||
+    !std::isfinite(settings.DepthScale) || !std::isfinite(settings.ResidualWeight))
   {
     Fail(HallucinationStatus::BadSettings,
-      "Settings out of range (layers 1..12, base sigma > 0, depth scale > 0, weights >= 0).");
+      "Settings out of range (layers 0 = automatic or 1..12, base sigma > 0, depth scale > 0, "
+      "weights >= 0).");
   }
   if (!(settings.ValleyWeight > 0.0f) && !(settings.HillWeight > 0.0f))
   {
@@ -498,9 +590,23 @@ HallucinationResult HallucinateDepth(const RgbImage& diffuse, const RgbImage& fl
     s = (s < 0.0f || !(open > 0.0f)) ? 1.0f : std::min(1.0f, s / open);
   }
 
-  // 3. Depth from the shading layers.
+  // 3. Depth from the shading layers, as many as the shading's own feature size asks for unless
+  // the caller fixed them.
+  HallucinationSettings used = settings;
+  if (used.Layers == 0)
+  {
+    const HallucinationScale scale =
+      ChooseHallucinationLayers(result.Shading, w, h, settings.BaseSigma, settings.Threads);
+    used.Layers = scale.Layers;
+    result.FeatureSizeTexels = scale.FeatureSizeTexels;
+  }
+  result.Layers = used.Layers;
+  if (!ReportProgress(progress, 0.1))
+  {
+    throw HallucinationAbortedError();
+  }
   std::vector<float> depth =
-    DepthFromShading(result.Shading, w, h, settings, SubProgress(progress, 0.1, 1.0));
+    DepthFromShading(result.Shading, w, h, used, SubProgress(progress, 0.1, 1.0));
   if (depth.empty())
   {
     throw HallucinationAbortedError();

@@ -26,7 +26,11 @@
  *       - r > 1 (brighter than its surround): a hill. Its surround is darker because it faces
  *         away from the zenith: a plane tilted by t sees (1 + cos t) / 2 of the sky, so
  *         cos t = 2 / r - 1 and the hill rises sigma_k * tan(t) over the distance sigma_k.
- *     depth = DepthScale * sum_k (ValleyWeight * valley_k - HillWeight * hill_k), in texels;
+ *     Then a residual layer: the widest layer L_K against the open sky (shading 1) by the
+ *     valley law, with sigma ResidualWeight * sigma_K: the broad darkening the band-pass layers
+ *     leave out (the floor of a wide recessed panel is as bright as its surround in every layer).
+ *     depth = DepthScale * (sum_k (ValleyWeight * valley_k - HillWeight * hill_k)
+ *     + ValleyWeight * residual), in texels;
  *     the output is that depth stretched to [0, 1] (0 = highest point, 1 = deepest, the
  *     project's convention) and its range in texels (DepthRangeTexels).
  *
@@ -41,7 +45,8 @@
  * surface to the flash and light bounced between walls; dividing by it brightens slopes, which
  * the hill law reads (with the true albedo instead the model does worse: docs/hallucination.md).
  * It is an approximation by design: shading cannot tell absolute depth nor very low
- * frequencies, the deepest useful layer must match the largest features (Layers), and where the
+ * frequencies, the widest useful layer must match the features (Layers, chosen from the shading
+ * unless given; the automatic choice and the residual layer are this project's), and where the
  * albedo is not removed dark paint reads as deep. docs/hallucination.md measures how far it gets.
  */
 #ifndef mesolight_DepthHallucination_h
@@ -61,11 +66,16 @@ namespace mesolight
 
 struct HallucinationSettings
 {
-  int Layers = 5;            ///< scale layers (1..12); sigma up to 16 texels
+  /// Scale layers (1..12), or 0: chosen from the photographs' own feature size
+  /// (ChooseHallucinationLayers). The widest layer's sigma is BaseSigma * 2^(Layers - 1).
+  int Layers = 0;
   float BaseSigma = 1.0f;    ///< sigma of the first layer, texels; doubles per layer
   float DepthScale = 1.0f;   ///< the user's depth scale: multiplies the model's depth
   float ValleyWeight = 1.0f; ///< weight of the aperture (valley) law
   float HillWeight = 1.0f;   ///< weight of the orientation (hill) law
+  /// The residual layer's sigma in units of the widest layer's (0: no residual layer): the
+  /// widest layer compared with the open sky by the valley law.
+  float ResidualWeight = 8.0f;
   /// A pixel whose flash luminance is below its diffuse luminance by more than this fraction
   /// of the mean flash-only luminance counts as "flash darker" (photographs are noisy).
   float DarkerTolerance = 0.05f;
@@ -118,11 +128,31 @@ public:
 
 struct HallucinationResult
 {
-  RgbImage Albedo;               ///< (I_f - I_d) / I_c, linear, per channel
-  std::vector<float> Shading;    ///< S, normalised (1 = open, upward-facing)
-  std::vector<float> Depth;      ///< w x h, 0 = highest point, 1 = deepest
-  float DepthRangeTexels = 0.0f; ///< the model's depth of Depth = 1, in texel widths
+  RgbImage Albedo;                ///< (I_f - I_d) / I_c, linear, per channel
+  std::vector<float> Shading;     ///< S, normalised (1 = open, upward-facing)
+  std::vector<float> Depth;       ///< w x h, 0 = highest point, 1 = deepest
+  float DepthRangeTexels = 0.0f;  ///< the model's depth of Depth = 1, in texel widths
+  int Layers = 0;                 ///< the layers used (settings.Layers, or the automatic choice)
+  float FeatureSizeTexels = 0.0f; ///< the automatic choice's feature size (0: layers given)
 };
+
+/// The automatic scale: the layer count the shading's own feature size calls for.
+struct HallucinationScale
+{
+  int Layers = 1;
+  /// The widest octave holding a fair share of the shading's band energy: the widest layer's
+  /// sigma, in texels (0 for a uniform shading).
+  float FeatureSizeTexels = 0.0f;
+};
+
+/**
+ * Chooses the layer count from the shading alone (no true depth): the shading's band energy per
+ * octave (difference of Gaussians of sigma 2^(k-2) and 2^(k-1) base sigmas, away from the
+ * border); the widest octave holding at least a fifth of the strongest one's energy is the
+ * widest layer. Deterministic.
+ */
+MESOLIGHTRELIEFTEXTURES_EXPORT HallucinationScale ChooseHallucinationLayers(
+  const std::vector<float>& shading, int w, int h, float baseSigma = 1.0f, int threads = 0);
 
 /// Rec. 709 luminance of a linear RGB pixel.
 inline float RgbLuminance(const float* rgb)

@@ -200,12 +200,52 @@ TEST(DepthHallucination, BumpComesOutAsHill)
   const auto highest = std::min_element(result.Depth.begin(), result.Depth.end());
   const int p = static_cast<int>(highest - result.Depth.begin());
   EXPECT_LT(Radius(p % N, p / N), 12.0f);
-  // Negative: without the hill law (valleys by aperture only) the bump reads as a depression.
+  // Negative: without the hill law (valleys by aperture only, in the layers alone: the residual
+  // layer would compare the plane with the bright slopes) the bump reads as a depression.
   HallucinationSettings valleysOnly;
   valleysOnly.HillWeight = 0.0f;
+  valleysOnly.ResidualWeight = 0.0f;
   HallucinationResult noHills;
   ASSERT_NO_THROW(noHills = HallucinateDepth(diffuse, flash, nullptr, valleysOnly));
   EXPECT_GT(DepthAt(noHills, N / 2, N / 2), DepthAt(noHills, 2, 2));
+}
+
+TEST(DepthHallucination, AutomaticLayersOnDegenerateShading)
+{
+  // The automatic choice on shading with nothing to size: empty, smaller than the smallest
+  // photograph, uniform, a single dark pixel; always a layer count the model accepts.
+  EXPECT_EQ(ChooseHallucinationLayers({}, 0, 0).Layers, 1);
+  EXPECT_EQ(ChooseHallucinationLayers(std::vector<float>(3, 1.0f), 4, 4).Layers, 1); // wrong size
+  EXPECT_EQ(ChooseHallucinationLayers(std::vector<float>(16, 1.0f), 4, 4).Layers, 1);
+  const HallucinationScale uniform =
+    ChooseHallucinationLayers(std::vector<float>(N * N, 0.7f), N, N);
+  EXPECT_GE(uniform.Layers, 1);
+  EXPECT_EQ(uniform.FeatureSizeTexels, 0.0f);
+  std::vector<float> dot(N * N, 1.0f);
+  dot[N * N / 2 + N / 2] = 0.0f;
+  const HallucinationScale single = ChooseHallucinationLayers(dot, N, N);
+  EXPECT_GE(single.Layers, 1);
+  EXPECT_LE(single.Layers, 12);
+  // The smallest photographs the model accepts go through the automatic choice.
+  const Pair pair = Photograph([](int i, int) { return i % 2 ? 0.5f : 1.0f; });
+  RgbImage diffuse(HallucinationMinimumSide, HallucinationMinimumSide), flash = diffuse;
+  for (int j = 0; j < HallucinationMinimumSide; ++j)
+  {
+    for (int i = 0; i < HallucinationMinimumSide; ++i)
+    {
+      std::copy(pair.Diffuse.Pixel(i, j), pair.Diffuse.Pixel(i, j) + 3, diffuse.Pixel(i, j));
+      std::copy(pair.Flash.Pixel(i, j), pair.Flash.Pixel(i, j) + 3, flash.Pixel(i, j));
+    }
+  }
+  HallucinationResult tiny;
+  ASSERT_NO_THROW(tiny = HallucinateDepth(diffuse, flash, nullptr));
+  EXPECT_GE(tiny.Layers, 1);
+  EXPECT_EQ(tiny.Depth.size(),
+    static_cast<std::size_t>(HallucinationMinimumSide * HallucinationMinimumSide));
+  // A residual weight out of range is refused like the other settings.
+  HallucinationSettings negative;
+  negative.ResidualWeight = -1.0f;
+  EXPECT_THROW(HallucinateDepth(pair.Diffuse, pair.Flash, nullptr, negative), HallucinationError);
 }
 
 TEST(DepthHallucination, BadInputIsReported)
