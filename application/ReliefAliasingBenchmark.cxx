@@ -44,6 +44,7 @@ struct Settings
   int Height_ = 150;
   int Supersampling = 8;
   double DepthScale = 0.04;
+  bool Shadows = true;
   std::string CsvFile;
   std::string PlotFile;
 };
@@ -125,6 +126,12 @@ bool RenderVariant(ReliefSceneOptions options, Variant variant, int output, int 
   texels = std::max(dims[0], dims[1]);
   auto window = MakeOffscreenWindow(options, scene.Renderer);
   frame = CaptureFrame(window);
+  if (frame.Width != options.Width || frame.Height != options.Height ||
+    frame.Rgb.size() != size_t(3) * options.Width * options.Height)
+  {
+    error = "the frame was not rendered (a shader failed?)";
+    return false;
+  }
   return true;
 }
 
@@ -222,6 +229,7 @@ bool MeasureCase(const Settings& settings, const std::string& map, double angle,
     options.Resolution = settings.Resolution;
   }
   options.DepthScale = settings.DepthScale;
+  options.SelfShadowing = settings.Shadows;
   options.ViewAngle = angle;
   options.ViewDistance = distance;
   options.Width = settings.Width;
@@ -347,6 +355,7 @@ int RunReliefAliasingBenchmark(const std::vector<std::string>& args)
   cl.AddValue("--size", "WxH", "window size in pixels", "200x150");
   cl.AddValue("--supersampling", "S", "subsamples per pixel side of the reference", "8");
   cl.AddValue("--depth-scale", "K", "world depth of depth 1 / wall width", "0.04");
+  cl.AddFlag("--no-shadows", "self-shadowing off in every frame, the reference's too");
   cl.AddValue("--csv", "FILE", "write one CSV row per case");
   cl.AddValue("--plot", "FILE.png", "error against footprint, before and default");
   int exitCode = 0;
@@ -358,6 +367,7 @@ int RunReliefAliasingBenchmark(const std::vector<std::string>& args)
   std::string error;
   settings.Maps = cl.GetStringList("--maps");
   settings.Height = cl.Has("--height");
+  settings.Shadows = !cl.Has("--no-shadows");
   if (!cl.GetInt("--resolution", 2, 8192, settings.Resolution, error) ||
     !cl.GetDoubleList("--angles", 0.0, 89.0, settings.Angles, error) ||
     !cl.GetDoubleList("--distances", 0.05, 100.0, settings.Distances, error) ||

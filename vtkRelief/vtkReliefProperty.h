@@ -277,7 +277,7 @@ protected:
   int Output = ShadedOutput;
   bool AdaptiveSteps = false;
   int MinimumSteps = 4;
-  bool LevelOfDetail = false;
+  bool LevelOfDetail = true;
   double Exposure;  // mesolight::ReliefLightSetDisplay, set in the constructor
   bool ToneMapping; // idem
   double LightSetThreshold = 0.0;
