@@ -45,6 +45,9 @@ struct Settings
   int Supersampling = 8;
   double DepthScale = 0.04;
   bool Shadows = true;
+  std::string Method; // instead of the default's method (both rows), with Linear + Refine steps
+  int Linear = 0;
+  int Refine = 0;
   std::string CsvFile;
   std::string PlotFile;
 };
@@ -82,8 +85,8 @@ std::string MapLabel(const std::string& map)
   return dot == std::string::npos ? name : name.substr(0, dot);
 }
 
-bool RenderVariant(ReliefSceneOptions options, Variant variant, int output, int scale,
-  Frame& frame, int& texels, std::string& error)
+bool RenderVariant(const Settings& settings, ReliefSceneOptions options, Variant variant,
+  int output, int scale, Frame& frame, int& texels, std::string& error)
 {
   vtkNew<vtkReliefProperty> defaults; // an untouched property: the default
   switch (variant)
@@ -102,6 +105,12 @@ bool RenderVariant(ReliefSceneOptions options, Variant variant, int output, int 
       options.RefinementSteps = defaults->GetRefinementSteps();
       options.AdaptiveSteps = defaults->GetAdaptiveSteps();
       options.LevelOfDetail = variant == Variant::Default && defaults->GetLevelOfDetail();
+      if (!settings.Method.empty())
+      {
+        options.Method = settings.Method;
+        options.LinearSteps = settings.Linear;
+        options.RefinementSteps = settings.Refine;
+      }
       break;
     case Variant::Surface:
       options.Method = "texture";
@@ -240,14 +249,14 @@ bool MeasureCase(const Settings& settings, const std::string& map, double angle,
   Frame hitsBefore[2], hitsDefault[2];
   const int shaded = vtkReliefProperty::ShadedOutput;
   const int samples = vtkReliefProperty::SampleCountOutput;
-  if (!RenderVariant(options, Variant::Reference, shaded, s, reference, texels, error) ||
-    !RenderVariant(options, Variant::Before, shaded, 1, before, texels, error) ||
-    !RenderVariant(options, Variant::Default, shaded, 1, current, texels, error) ||
-    !RenderVariant(options, Variant::Before, samples, 1, samplesBefore, texels, error) ||
-    !RenderVariant(options, Variant::Default, samples, 1, samplesDefault, texels, error) ||
-    !RenderVariant(
+  if (!RenderVariant(settings, options, Variant::Reference, shaded, s, reference, texels, error) ||
+    !RenderVariant(settings, options, Variant::Before, shaded, 1, before, texels, error) ||
+    !RenderVariant(settings, options, Variant::Default, shaded, 1, current, texels, error) ||
+    !RenderVariant(settings, options, Variant::Before, samples, 1, samplesBefore, texels, error) ||
+    !RenderVariant(settings, options, Variant::Default, samples, 1, samplesDefault, texels, error) ||
+    !RenderVariant(settings,
       options, Variant::Surface, vtkReliefProperty::HitUOutput, 1, surfaceU, texels, error) ||
-    !RenderVariant(
+    !RenderVariant(settings,
       options, Variant::Surface, vtkReliefProperty::HitVOutput, 1, surfaceV, texels, error))
   {
     return false;
@@ -255,8 +264,8 @@ bool MeasureCase(const Settings& settings, const std::string& map, double angle,
   for (int k = 0; k < 2; ++k)
   {
     const int output = k == 0 ? vtkReliefProperty::HitUOutput : vtkReliefProperty::HitVOutput;
-    if (!RenderVariant(options, Variant::Before, output, 1, hitsBefore[k], texels, error) ||
-      !RenderVariant(options, Variant::Default, output, 1, hitsDefault[k], texels, error))
+    if (!RenderVariant(settings, options, Variant::Before, output, 1, hitsBefore[k], texels, error) ||
+      !RenderVariant(settings, options, Variant::Default, output, 1, hitsDefault[k], texels, error))
     {
       return false;
     }
@@ -355,6 +364,11 @@ int RunReliefAliasingBenchmark(const std::vector<std::string>& args)
   cl.AddValue("--size", "WxH", "window size in pixels", "200x150");
   cl.AddValue("--supersampling", "S", "subsamples per pixel side of the reference", "8");
   cl.AddValue("--depth-scale", "K", "world depth of depth 1 / wall width", "0.04");
+  cl.AddValue("--method", "NAME",
+    "draw both rows with this vtkReliefMapper method instead of the default's (e.g. max-mipmap, "
+    "to see the filtering alone)");
+  cl.AddValue("--steps", "L+R", "the --method's linear (or iteration) and refinement steps",
+    "10+8");
   cl.AddFlag("--no-shadows", "self-shadowing off in every frame, the reference's too");
   cl.AddValue("--csv", "FILE", "write one CSV row per case");
   cl.AddValue("--plot", "FILE.png", "error against footprint, before and default");
@@ -368,6 +382,21 @@ int RunReliefAliasingBenchmark(const std::vector<std::string>& args)
   settings.Maps = cl.GetStringList("--maps");
   settings.Height = cl.Has("--height");
   settings.Shadows = !cl.Has("--no-shadows");
+  if (cl.Has("--method"))
+  {
+    settings.Method = cl.Get("--method");
+    if (vtkReliefProperty::GetMethodFromName(settings.Method.c_str()) < 0)
+    {
+      return cl.UsageError("--method: unknown method '" + settings.Method + "'");
+    }
+    char plus = 0;
+    std::istringstream steps(cl.Get("--steps"));
+    if (!(steps >> settings.Linear >> plus >> settings.Refine) || plus != '+' ||
+      settings.Linear < 1 || settings.Refine < 0)
+    {
+      return cl.UsageError("--steps: '" + cl.Get("--steps") + "' is not L+R");
+    }
+  }
   if (!cl.GetInt("--resolution", 2, 8192, settings.Resolution, error) ||
     !cl.GetDoubleList("--angles", 0.0, 89.0, settings.Angles, error) ||
     !cl.GetDoubleList("--distances", 0.05, 100.0, settings.Distances, error) ||
@@ -398,10 +427,14 @@ int RunReliefAliasingBenchmark(const std::vector<std::string>& args)
   out << "Relief aliasing: " << settings.Width << "x" << settings.Height_ << " pixels, depth scale "
       << settings.DepthScale << "; reference: max-mipmap 128 (exact) at " << settings.Supersampling
       << "x" << settings.Supersampling << " subsamples per pixel, box-filtered.\n"
-      << "before: " << vtkReliefProperty::GetMethodName(defaults->GetMethod()) << " "
-      << defaults->GetLinearSteps() << "+" << defaults->GetRefinementSteps()
+      << "before: "
+      << (settings.Method.empty() ? vtkReliefProperty::GetMethodName(defaults->GetMethod())
+                                  : settings.Method.c_str())
+      << " " << (settings.Method.empty() ? defaults->GetLinearSteps() : settings.Linear) << "+"
+      << (settings.Method.empty() ? defaults->GetRefinementSteps() : settings.Refine)
       << ", level of detail off; default: an untouched vtkReliefProperty (level of detail "
-      << (defaults->GetLevelOfDetail() ? "on" : "off") << ").\n"
+      << (defaults->GetLevelOfDetail() ? "on" : "off")
+      << (settings.Method.empty() ? "" : ", with the method above") << ").\n"
       << "err: mean |colour - reference| in 8-bit levels; fp: median footprint, texels per pixel;\n"
       << "far: pixels whose footprint exceeds one texel; spp: relief-texture samples per pixel;\n"
       << "near hit: how far the default moves hits of near pixels from before's, texels (max).\n\n";

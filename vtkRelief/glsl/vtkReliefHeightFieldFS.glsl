@@ -30,9 +30,9 @@ int mlViewRefinementSteps = 0;
 
 // The mip level the height field is sampled at. Marches use explicit levels (implicit
 // derivatives are undefined inside divergent loops) and always level 0: marching an averaged
-// height field fills the cracks a supersampled frame keeps. With LevelOfDetail on, the shading
-// normal at the hit is read at mlShadeLod, the pixel footprint's level less one: the normals of
-// the texels a pixel covers, filtered (docs/relief-methods.md: 30% less aliasing on Stone).
+// height field fills the cracks a supersampled frame keeps. With LevelOfDetail on (the default),
+// the shading normal at the hit is read at mlShadeLod, the pixel footprint's level less one: the
+// normals of the texels a pixel covers, filtered (docs/relief-methods.md, "Aliasing").
 float mlMarchLod = 0.0;
 float mlShadeLod = 0.0;
 // Length of the mip-filtered unit normal at the shading level (Toksvig 2005, "Mipmapping normal

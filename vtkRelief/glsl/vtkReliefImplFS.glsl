@@ -60,7 +60,9 @@
     vec2 g = mlGradientFromNormal(mlFilteredNormal);
     mlMarchLod = 0.0; // shadows march level 0 again
 #if defined(ML_LEVEL_OF_DETAIL) && !defined(ML_CONE_PACKED)
-    mlNormalLength = clamp(length(mlFilteredNormal), 1e-3, 1.0);
+    // Only where the footprint's level is above the base: the bilinear blend of neighbouring
+    // unit normals is a little short too, but near, the frame stays that of the exact march.
+    mlNormalLength = mix(1.0, clamp(length(mlFilteredNormal), 1e-3, 1.0), clamp(mlShadeLod, 0.0, 1.0));
     // Toksvig's factor: the exponent s becomes ft * s, ft = |n| / (|n| + s (1 - |n|)).
     mlSpecularPowerScale =
       mlNormalLength / (mlNormalLength + mlSpecularPower * (1.0 - mlNormalLength));
