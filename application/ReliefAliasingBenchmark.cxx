@@ -382,19 +382,19 @@ int RunReliefAliasingBenchmark(const std::vector<std::string>& args)
   settings.Maps = cl.GetStringList("--maps");
   settings.Height = cl.Has("--height");
   settings.Shadows = !cl.Has("--no-shadows");
+  char plus = 0;
+  std::istringstream steps(cl.Get("--steps"));
+  if (!(steps >> settings.Linear >> plus >> settings.Refine) || plus != '+' ||
+    settings.Linear < 1 || settings.Refine < 0 || !(steps >> std::ws).eof())
+  {
+    return cl.UsageError("--steps: '" + cl.Get("--steps") + "' is not L+R");
+  }
   if (cl.Has("--method"))
   {
     settings.Method = cl.Get("--method");
     if (vtkReliefProperty::GetMethodFromName(settings.Method.c_str()) < 0)
     {
       return cl.UsageError("--method: unknown method '" + settings.Method + "'");
-    }
-    char plus = 0;
-    std::istringstream steps(cl.Get("--steps"));
-    if (!(steps >> settings.Linear >> plus >> settings.Refine) || plus != '+' ||
-      settings.Linear < 1 || settings.Refine < 0)
-    {
-      return cl.UsageError("--steps: '" + cl.Get("--steps") + "' is not L+R");
     }
   }
   if (!cl.GetInt("--resolution", 2, 8192, settings.Resolution, error) ||
