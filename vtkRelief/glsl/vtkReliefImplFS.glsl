@@ -11,6 +11,9 @@
   vec3 mlShadingNormal = mlN;
   mat3 mlWorldToTexture = mat3(0.0);
   bool mlHasFrame = abs(mlDet) > 1e-30;
+#ifdef ML_LEVEL_OF_DETAIL
+  mlViewRefinementSteps = mlRefinementBudget(); // the budget wherever the view march is skipped
+#endif
   if (mlHasFrame)
   {
     vec3 dPdu = (mlDPdx * mlDUVdy.y - mlDPdy * mlDUVdx.y) / mlDet;
