@@ -18,7 +18,8 @@ uniform int mlMinimumSteps; // adaptive step counts: from mlLinearSteps (grazing
 #ifdef ML_LEVEL_OF_DETAIL
 // The pixel footprint (square root of its area, texels) and the refinement steps of this view
 // ray: where the footprint exceeds a texel the march needs no finer bracket than the footprint
-// (the pixel averages over it), so refinement stops there; the uniform is the budget.
+// (the pixel averages over it), so refinement stops there; the uniform is the budget. The
+// define lets the march code read this fragment's count under the uniform's name, unchanged.
 float mlFootprint = 0.0;
 int mlRefinementBudget()
 {
@@ -38,8 +39,9 @@ float mlShadeLod = 0.0;
 // Length of the mip-filtered unit normal at the shading level (Toksvig 2005, "Mipmapping normal
 // maps"): 1 where the texels a pixel covers agree, shorter where they spread. Diffuse light is
 // linear in the normal, so the mean of n.l over the footprint is |n| times the filtered normal's
-// n.l; the specular exponent is narrowed by Toksvig's factor. 1 (no effect) without level of
-// detail and for cone-packed textures, whose normal z is rebuilt as unit.
+// n.l; the specular exponent is lowered (the highlight widened) by Toksvig's factor. 1 (no
+// effect) without level of detail, at the base level, and for cone-packed textures, whose
+// normal z is rebuilt as unit.
 float mlNormalLength = 1.0;
 float mlSpecularPowerScale = 1.0;
 
