@@ -17,6 +17,7 @@
 #include "ReliefFieldCostBenchmark.h"
 #include "LightsCommand.h"
 #include "ObjectBenchmark.h"
+#include "ReliefAliasingBenchmark.h"
 #include "ReliefSweep.h"
 #include "RenderCommand.h"
 #include "TraceCommand.h"
@@ -121,6 +122,9 @@ const std::vector<mesolight::Command>& Commands()
         { "relief", "[options]",
           "every method x steps x view angle x map:\ntime vs exact hit error, CSV and plots",
           static_cast<int (*)(const std::vector<std::string>&)>(RunReliefSweep), {} },
+        { "relief-aliasing", "[options]",
+          "the default relief vs an 8x8 supersampled exact\nreference where texels are smaller than pixels",
+          RunReliefAliasingBenchmark, {} },
         { "cones", "[options]", "cone-map generation time, oracle speed-up", RunConeBenchmark, {} },
         { "lights", "[options]",
           "light-set irradiance error vs exact\nintegration and SH9; median-cut time",

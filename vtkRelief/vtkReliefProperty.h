@@ -144,10 +144,14 @@ public:
 
   ///@{
   /**
-   * Sample the height field at the pixel footprint's mipmap level (the relief texture gets
-   * mipmaps). Cone ratios are always read at the base level. Default off: measured against an
-   * 8 x 8 supersampled frame it filters the relief but does not lower the error (averaged
-   * depth fills the cracks the supersampled frame keeps; test ReliefLevelOfDetail).
+   * Filter where texels are smaller than pixels (the relief texture gets mipmaps). The march
+   * stays at the base level (an averaged height field fills the cracks a supersampled frame
+   * keeps); the shading normal is read at the pixel footprint's mip level less one and its
+   * length, short where the footprint's normals spread, dims the diffuse light and widens the
+   * highlight (Toksvig 2005); where the footprint exceeds a texel, linear and refinement steps
+   * stop at the footprint's size. Where a texel covers a pixel or more the frame and the hits
+   * are those of level of detail off. Default on (test ReliefLevelOfDetail, benchmark
+   * `mesolight bench relief-aliasing`).
    */
   vtkSetMacro(LevelOfDetail, bool);
   vtkGetMacro(LevelOfDetail, bool);
@@ -289,7 +293,7 @@ protected:
   int Output = ShadedOutput;
   bool AdaptiveSteps = false;
   int MinimumSteps = 4;
-  bool LevelOfDetail = false;
+  bool LevelOfDetail = true;
   double Exposure;  // mesolight::ReliefLightSetDisplay, set in the constructor
   bool ToneMapping; // idem
   bool EncodeSRGB = false;

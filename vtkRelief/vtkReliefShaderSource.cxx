@@ -208,8 +208,12 @@ void vtkReliefShaderSource::ReplaceValuesAfter(std::string& fs, const void* cell
       std::string(p->GetLevelOfDetail()
           // Footprint area -> level; one level finer than the area's, as trilinear filtering
           // blends in the next coarser level (measured best of -2..0 on Stone and Bricks).
-          ? "\n  mlShadeLod = max(0.0, -1.0 + 0.5 * log2(abs(mlDUVdx.x * mlDUVdy.y - mlDUVdx.y * "
-            "mlDUVdy.x) * mlTextureSize.x * mlTextureSize.y));"
+          // Anisotropic taps along the footprint's major axis were measured worse at 80 degrees
+          // (4.03 against 3.42 levels): at grazing views the texels facing away are hidden, and
+          // the longer average takes them in.
+          ? "\n  mlFootprint = sqrt(abs(mlDUVdx.x * mlDUVdy.y - mlDUVdx.y * mlDUVdy.x) * "
+            "mlTextureSize.x * mlTextureSize.y);"
+            "\n  mlShadeLod = max(0.0, -1.0 + log2(max(mlFootprint, 1e-30)));"
           : ""));
   vtkShaderProgram::Substitute(fs, "//MESOLIGHT::Relief::Impl", vtkReliefImplFS);
 

@@ -11,6 +11,9 @@
   vec3 mlShadingNormal = mlN;
   mat3 mlWorldToTexture = mat3(0.0);
   bool mlHasFrame = abs(mlDet) > 1e-30;
+#ifdef ML_LEVEL_OF_DETAIL
+  mlViewRefinementSteps = mlRefinementBudget(); // the budget wherever the view march is skipped
+#endif
   if (mlHasFrame)
   {
     vec3 dPdu = (mlDPdx * mlDUVdy.y - mlDPdy * mlDUVdx.y) / mlDet;
@@ -40,6 +43,9 @@
       // From depth 0 to depth 1. At grazing angles the span grows without bound; it is kept
       // finite so no NaN or Inf reaches the samplers (silhouettes discard such fragments).
       vec3 span = vec3(clamp(q.xy / q.z, vec2(-1e4), vec2(1e4)), 1.0);
+#ifdef ML_LEVEL_OF_DETAIL
+      mlLevelOfDetailSteps(span, mlViewSteps);
+#endif
       float t = mlTraceView(mlHit, span);
       mlHit = mlHit + t * span;
       mlHitPos = mlPos + dir * (mlHit.z / q.z);
@@ -53,8 +59,17 @@
 #endif
 #if ML_METHOD != ML_TEXTURE_MAPPING
     mlMarchLod = mlShadeLod; // the shading normal at the footprint's level (level of detail)
-    vec2 g = mlDepthGradient(mlHit.xy);
+    vec3 mlFilteredNormal = mlPackedNormalAt(mlHit.xy);
+    vec2 g = mlGradientFromNormal(mlFilteredNormal);
     mlMarchLod = 0.0; // shadows march level 0 again
+#if defined(ML_LEVEL_OF_DETAIL) && !defined(ML_CONE_PACKED)
+    // Only where the footprint's level is above the base: the bilinear blend of neighbouring
+    // unit normals is a little short too, but near, the frame stays that of the exact march.
+    mlNormalLength = mix(1.0, clamp(length(mlFilteredNormal), 1e-3, 1.0), clamp(mlShadeLod, 0.0, 1.0));
+    // Toksvig's factor: the exponent s becomes ft * s, ft = |n| / (|n| + s (1 - |n|)).
+    mlSpecularPowerScale =
+      mlNormalLength / (mlNormalLength + mlSpecularPower * (1.0 - mlNormalLength));
+#endif
     vec3 pu = dPdu - mlN * (worldDepth * g.x);
     vec3 pv = dPdv - mlN * (worldDepth * g.y);
     mlShadingNormal = normalize(cross(pu, pv) * handedness);
@@ -70,6 +85,9 @@
   float mlFirstLightVisible = 0.0;
   mlAccumulateLights(mlHitPos, mlShadingNormal, mlShadowPoint, mlWorldToTexture,
     mlHasFrame, diffuse, specular, mlFirstLightVisible);
+  // Filtered normals (level of detail): the footprint's mean of n.l, and the energy of the
+  // widened specular lobe kept ((1 + ft s) / (1 + s), Toksvig 2005).
+  specular *= (1.0 + mlSpecularPowerScale * mlSpecularPower) / (1.0 + mlSpecularPower);
 #if ML_OUTPUT == 1 || ML_OUTPUT == 2
   // One hit texture coordinate (u or v) as 24-bit fixed point in RGB, opaque (measurement).
   float mlFixed = floor(clamp(ML_OUTPUT == 1 ? mlHit.x : mlHit.y, 0.0, 1.0) * 16777215.0 + 0.5);
@@ -92,8 +110,10 @@
   // The probes' SH9 irradiance at the perturbed normal, in world coordinates.
   mlEnvironment += mlProbeIrradiance(mlHit.xy, transpose(mlWorldToView) * mlShadingNormal);
 #endif
-  gl_FragData[0].rgb =
-    (gl_FragData[0].rgb + mlEnvironment * (diffuseColor / 3.14159265)) * mlExposure;
+  // mlNormalLength: the filtered normal's length (Toksvig), 1 without level of detail.
+  gl_FragData[0].rgb = (gl_FragData[0].rgb +
+                         mlEnvironment * (mlNormalLength * diffuseColor / 3.14159265)) *
+    mlExposure;
 #ifdef ML_TONE_MAPPING
   gl_FragData[0].rgb = gl_FragData[0].rgb / (1.0 + gl_FragData[0].rgb); // Reinhard
 #endif

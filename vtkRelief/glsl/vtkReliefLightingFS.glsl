@@ -47,7 +47,7 @@ void mlAccumulateLights(vec3 posVC, vec3 normalVC, vec3 hit, mat3 worldToTexture
           : 0.0;
       }
     }
-    float df = max(0.0, attenuation * dot(normalVC, -lightDir));
+    float df = max(0.0, attenuation * mlFilteredLambert(normalVC, -lightDir));
     if (df <= 0.0)
     {
       continue; // facing away or outside the cone: no shadow march needed
@@ -63,7 +63,7 @@ void mlAccumulateLights(vec3 posVC, vec3 normalVC, vec3 hit, mat3 worldToTexture
 #endif
     firstLightVisible = i == 0 ? 1.0 : firstLightVisible;
     diffuse += df * mlLightColor[i];
-    float sf = attenuation * pow(max(0.0, dot(reflect(lightDir, normalVC), viewDir)), mlSpecularPower);
+    float sf = attenuation * pow(max(0.0, dot(reflect(lightDir, normalVC), viewDir)), mlSpecularPower * mlSpecularPowerScale);
     specular += sf * mlLightColor[i];
   }
 }
