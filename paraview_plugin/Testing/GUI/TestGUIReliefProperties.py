@@ -34,10 +34,9 @@ CASES = {
     # Rays that leave the texture at its edges: a pattern deep at the border (Stone), deep.
     "RepeatTexture": ({"source.Pattern": "Stone", "OverrideDepthScale": 1,
                        "ReliefDepthScale": 0.3}, {"RepeatTexture": 1}),
-    # A 1024^2 stone texture over a few hundred pixels: minified, so mip levels matter (on by
-    # default: the change turns it off).
+    # A 1024^2 stone texture over a few hundred pixels: minified, so mip levels matter.
     "LevelOfDetail": ({"source.Pattern": "Stone", "source.Resolution": [1024, 1024]},
-                      {"LevelOfDetail": 0}),
+                      {"LevelOfDetail": 1}),
     "Exposure": ({}, {"Exposure": 0.5}),
     "ToneMapping": ({}, {"ToneMapping": 0}),
     # Median cut gives lights of about equal energy: only a threshold near 1 skips some.
