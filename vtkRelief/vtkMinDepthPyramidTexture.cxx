@@ -4,13 +4,16 @@
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLError.h"
 #include "vtkOpenGLRenderWindow.h"
+#include "vtkReliefTextureCache.h"
 #include "vtkTextureObject.h"
 #include "vtk_glew.h"
 
-#include "MinDepthPyramid.h" // Mesolight::ReliefTextures core
+#include "CompactReliefStorage.h" // Mesolight::ReliefTextures core
+#include "MinDepthPyramid.h"      // idem
 
 #include <algorithm>
 #include <cstddef>
+#include <cstdint>
 #include <utility>
 
 vtkStandardNewMacro(vtkMinDepthPyramidTexture);
@@ -112,6 +115,7 @@ bool vtkMinDepthPyramidTexture::Upload(
     return false;
   }
   vtkOpenGLCheckErrorMacro("failed uploading the min-depth pyramid");
+  this->UploadedBytes = vtkReliefTextureCache::GetTextureBytes(pyramid);
   this->NumberOfLevels = static_cast<int>(levels.size());
   this->LevelSizes.clear();
   for (const auto& size : sizes)
@@ -123,6 +127,66 @@ bool vtkMinDepthPyramidTexture::Upload(
 }
 
 //------------------------------------------------------------------------------
+bool vtkMinDepthPyramidTexture::UploadCompact(vtkOpenGLRenderWindow* renWin,
+  const std::vector<std::uint16_t>& depth16, int width, int height)
+{
+  // Levels 1 and up (core/CompactReliefStorage.h) in 16 bits, the exact minima of the 16-bit
+  // depths; level 0's corners are the depth texture's texels.
+  std::vector<int> sizes;
+  const std::vector<std::vector<std::uint16_t>> levels =
+    mesolight::CompactMinDepthPyramid(depth16.data(), width, height, sizes);
+  if (levels.empty())
+  {
+    vtkErrorMacro(<< "Could not build the min-depth pyramid of a " << width << "x" << height
+                  << " map.");
+    return false;
+  }
+  if (levels.size() > 15)
+  {
+    vtkErrorMacro(<< "Relief textures above 32768 texels per side are not supported.");
+    return false;
+  }
+  if (!this->TextureObject)
+  {
+    this->TextureObject = vtkSmartPointer<vtkTextureObject>::New();
+  }
+  vtkTextureObject* pyramid = this->TextureObject;
+  pyramid->SetContext(renWin);
+  pyramid->SetInternalFormat(GL_R16);
+  pyramid->SetMinificationFilter(vtkTextureObject::NearestMipmapNearest);
+  pyramid->SetMagnificationFilter(vtkTextureObject::Nearest);
+  pyramid->SetWrapS(vtkTextureObject::ClampToEdge);
+  pyramid->SetWrapT(vtkTextureObject::ClampToEdge);
+  pyramid->SetBaseLevel(0);
+  pyramid->SetMaxLevel(static_cast<int>(levels.size()) - 1);
+  if (!pyramid->Create2DFromRaw(static_cast<unsigned int>(sizes[0]),
+        static_cast<unsigned int>(sizes[1]), 1, VTK_UNSIGNED_SHORT, nullptr))
+  {
+    vtkErrorMacro(<< "Could not create the min-depth pyramid texture.");
+    return false;
+  }
+  pyramid->Bind();
+  glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
+  glPixelStorei(GL_UNPACK_SKIP_ROWS, 0);
+  glPixelStorei(GL_UNPACK_SKIP_PIXELS, 0);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 2);
+  for (size_t l = 0; l < levels.size(); ++l)
+  {
+    glTexImage2D(GL_TEXTURE_2D, static_cast<GLint>(l), GL_R16, sizes[2 * l], sizes[2 * l + 1], 0,
+      GL_RED, GL_UNSIGNED_SHORT, levels[l].data());
+  }
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, static_cast<GLint>(levels.size()) - 1);
+  pyramid->Deactivate();
+  vtkOpenGLCheckErrorMacro("failed uploading the min-depth pyramid");
+  this->UploadedBytes = vtkReliefTextureCache::GetTextureBytes(pyramid);
+  this->NumberOfLevels = static_cast<int>(levels.size()) + 1;
+  this->LevelSizes = { width + 1, height + 1 };
+  this->LevelSizes.insert(this->LevelSizes.end(), sizes.begin(), sizes.end());
+  return true;
+}
+
+//------------------------------------------------------------------------------
 void vtkMinDepthPyramidTexture::ReleaseGraphicsResources(vtkWindow* win)
 {
   if (this->TextureObject)
@@ -130,6 +194,7 @@ void vtkMinDepthPyramidTexture::ReleaseGraphicsResources(vtkWindow* win)
     this->TextureObject->ReleaseGraphicsResources(win);
   }
   this->NumberOfLevels = 0;
+  this->UploadedBytes = 0;
 }
 
 //------------------------------------------------------------------------------

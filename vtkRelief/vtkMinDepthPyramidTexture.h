@@ -11,6 +11,11 @@
  * filters/ReliefTextures/core/MinDepthPyramid.h). Level sizes halve rounding down, a complete
  * OpenGL mipmap, so all levels are mip levels of one RGBA float texture (uploaded by hand:
  * OpenGL would average, not take minima). 16 bytes per cell: 5.6 MB for a 512^2 map.
+ *
+ * UploadCompact (the relief texture cache's compact storage) stores levels 1 and up only, one
+ * minimum per cell in 16 bits as the depth texture holds them (exact), as the mip levels 0..
+ * of one GL_R16 texture: 0.17 MB for a 512^2 map. Level 0 is then read from the depth texture,
+ * whose texels are the cells' corners (mlPyramidCell in vtkReliefHeightFieldFS.glsl).
  */
 
 #ifndef vtkMinDepthPyramidTexture_h
@@ -20,7 +25,8 @@
 #include "vtkObject.h"
 #include "vtkSmartPointer.h" // for TextureObject
 
-#include <vector> // for LevelSizes
+#include <cstdint> // for std::uint16_t
+#include <vector>  // for LevelSizes
 
 class vtkOpenGLRenderWindow;
 class vtkTextureObject;
@@ -39,6 +45,16 @@ public:
    */
   bool Upload(
     vtkOpenGLRenderWindow* renWin, const std::vector<float>& depth, int width, int height);
+
+  /**
+   * Builds and uploads the compact pyramid of a width x height map of 16-bit depths as the
+   * depth texture holds them. False (with an error) if the texture cannot be made.
+   */
+  bool UploadCompact(vtkOpenGLRenderWindow* renWin, const std::vector<std::uint16_t>& depth16,
+    int width, int height);
+
+  /** Bytes the uploaded pyramid occupies on the GPU (all levels); 0 when not built. */
+  vtkGetMacro(UploadedBytes, vtkIdType);
 
   /** Marks the pyramid as not built (its relief texture changed). */
   void Reset() { this->NumberOfLevels = 0; }
@@ -60,6 +76,7 @@ protected:
 
   vtkSmartPointer<vtkTextureObject> TextureObject;
   int NumberOfLevels = 0;
+  vtkIdType UploadedBytes = 0;
   std::vector<int> LevelSizes;
 
 private:

@@ -11,8 +11,11 @@
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkReliefGeometryCache.h"
 #include "vtkReliefShading.h"
+#include "vtkMinDepthPyramidTexture.h"
+#include "vtkReliefTextureCache.h"
 #include "vtkRenderer.h"
 #include "vtkShader.h"
+#include "vtkTextureObject.h"
 
 #include <algorithm>
 
@@ -75,6 +78,12 @@ void vtkReliefMapper::SetReliefTextureData(vtkImageData* image)
 void vtkReliefMapper::SetReliefTextureConnection(vtkAlgorithmOutput* output)
 {
   this->SetInputConnection(1, output);
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkReliefMapper::GetReliefTextureBytes()
+{
+  return this->Shading->GetReliefTextureCache()->GetUploadedBytes();
 }
 
 //------------------------------------------------------------------------------

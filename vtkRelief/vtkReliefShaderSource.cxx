@@ -74,6 +74,13 @@ void vtkReliefShaderSource::Configure(
 }
 
 //------------------------------------------------------------------------------
+void vtkReliefShaderSource::SetTextureLayout(bool floatTextures, bool storedNormals)
+{
+  this->FloatTextures = floatTextures;
+  this->StoredNormals = storedNormals;
+}
+
+//------------------------------------------------------------------------------
 std::string vtkReliefShaderSource::Key() const
 {
   vtkReliefProperty* p = this->Property;
@@ -82,7 +89,8 @@ std::string vtkReliefShaderSource::Key() const
     (this->HasAlbedoTexture ? "A" : "a") + std::to_string(p->GetOutput()) +
     (this->ConePacked ? "C" : "c") + (p->GetAdaptiveSteps() ? "V" : "v") +
     (p->GetLevelOfDetail() ? "L" : "l") + (this->HasLightSet ? "I" : "i") +
-    (p->GetToneMapping() ? "T" : "t") + (p->GetShadowCulling() ? "K" : "k");
+    (p->GetToneMapping() ? "T" : "t") + (p->GetShadowCulling() ? "K" : "k") +
+    (this->FloatTextures ? "F" : this->StoredNormals ? "N" : "f");
 }
 
 //------------------------------------------------------------------------------
@@ -156,6 +164,14 @@ void vtkReliefShaderSource::ReplaceValuesAfter(std::string& fs, const void* cell
   if (this->ConePacked)
   {
     defines += "#define ML_CONE_PACKED\n";
+  }
+  if (this->FloatTextures)
+  {
+    defines += "#define ML_FLOAT_TEXTURES\n";
+  }
+  else if (this->StoredNormals)
+  {
+    defines += "#define ML_STORED_NORMALS\n";
   }
   if (p->GetAdaptiveSteps())
   {

@@ -35,6 +35,12 @@ public:
   /** The variant of the coming draw: the property's settings and what the draw binds. */
   void Configure(vtkReliefProperty* property, bool albedoTexture, bool conePacked, bool lightSet);
 
+  /**
+   * How the relief texture is stored (vtkReliefTextureCache): the float RGBA layout, or the
+   * compact one with the normals uploaded (storedNormals) or derived from the depth.
+   */
+  void SetTextureLayout(bool floatTextures, bool storedNormals);
+
   /** Whether the shader recorded for this helper (cellBO) was built for another variant. */
   bool KeyChanged(const void* cellBO) const;
 
@@ -61,6 +67,8 @@ protected:
   bool HasAlbedoTexture = false;
   bool ConePacked = false;
   bool HasLightSet = false;
+  bool FloatTextures = false;
+  bool StoredNormals = false;
   std::map<const void*, std::string> Keys;
 
 private:

@@ -73,6 +73,9 @@ public:
   /** The prepared copies of the mapper's inputs. */
   vtkReliefGeometryCache* GetGeometryCache();
 
+  /** The relief's textures on the GPU (formats, bytes uploaded). */
+  vtkReliefTextureCache* GetReliefTextureCache();
+
   /**
    * Uploads the relief texture and the light set (null: none) when they changed, and activates
    * the textures for a draw with these settings and this actor. False (with an error) if nothing

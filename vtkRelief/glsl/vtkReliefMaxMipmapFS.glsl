@@ -10,7 +10,6 @@
 // min(k >> L, size_L - 1). In cell space x = u W - 0.5, texel i sits at x = i and cell k spans
 // [k-1, k].
 
-uniform sampler2D mlMinDepthPyramid;
 uniform int mlPyramidLevels;
 // Cells per level as (w, h) pairs: textureSize() of a level is unreliable on Mesa llvmpipe.
 uniform int mlPyramidSizes[32];
@@ -99,7 +98,7 @@ float mlTraceMaxMipmap(vec3 origin, vec3 span, int maxIterations)
     tx.y = dx.y > 0.0 ? (hi.y - x.y) / dx.y : (dx.y < 0.0 ? (lo.y - x.y) / dx.y : 1e30);
     float tExit = min(1.0, t + max(min(tx.x, tx.y), 0.0));
     ML_COUNT_SAMPLE();
-    vec4 cell = texelFetch(mlMinDepthPyramid, kL, level);
+    vec4 cell = mlPyramidCell(kL, level);
     float minDepth = min(min(cell.x, cell.y), min(cell.z, cell.w));
     float zExit = origin.z + tExit * span.z;
     if (zExit < minDepth && span.z > 0.0 || max(p.z, zExit) < minDepth)
