@@ -420,8 +420,8 @@ bool RunReliefSweep(
       }
     }
     auto reliefWindow = MakeOffscreenWindow(o, relief.Renderer);
-    auto denseWindow =
-      settings.DenseMesh ? MakeOffscreenWindow(o, dense.Renderer) : vtkSmartPointer<vtkRenderWindow>();
+    auto denseWindow = settings.DenseMesh ? MakeOffscreenWindow(o, dense.Renderer)
+                                          : vtkSmartPointer<vtkRenderWindow>();
     vtkReliefMapper* mapper = relief.Mapper;
     int texels[3];
     relief.ReliefTexture->GetDimensions(texels);
@@ -490,7 +490,8 @@ bool RunReliefSweep(
           row.Method = m;
           row.FloatTextures = storage == "float";
           row.DerivedNormals = storage == "derived";
-          row.MethodName = std::string(isDefault ? "default" : vtkReliefProperty::GetMethodName(m)) +
+          row.MethodName =
+            std::string(isDefault ? "default" : vtkReliefProperty::GetMethodName(m)) +
             (storage == "compact" ? "" : " (" + storage + ")");
           row.IsDefault = isDefault;
           row.Step = step;
@@ -508,8 +509,8 @@ bool RunReliefSweep(
           const Frame shaded = CaptureFrame(reliefWindow);
           row.ColorRmse = settings.DenseMesh ? ColorRmse(reference, shaded, denseFrame) : -1.0;
           row.Psnr = row.ColorRmse > 0.0 ? 20.0 * std::log10(255.0 / row.ColorRmse)
-            : row.ColorRmse == 0.0             ? 99.0
-                                               : -1.0;
+            : row.ColorRmse == 0.0       ? 99.0
+                                         : -1.0;
 
           // What the march sampled, per covered pixel of the same (shadowless) frame.
           mapper->GetReliefProperty()->SetOutput(vtkReliefProperty::SampleCountOutput);
@@ -710,8 +711,7 @@ int RunReliefSweep(const std::vector<std::string>& args)
   {
     if (storage != "compact" && storage != "float" && storage != "derived")
     {
-      return cl.UsageError(
-        "--texture-storage: '" + storage + "' is not compact, float or derived");
+      return cl.UsageError("--texture-storage: '" + storage + "' is not compact, float or derived");
     }
   }
   if (settings.TextureStorages.empty())

@@ -86,7 +86,7 @@ struct ReliefSweepRow
   long long Footprint = 0;
   bool FloatTextures = false;  // uploaded as float RGBA (vtkReliefProperty::FloatTextures)
   bool DerivedNormals = false; // compact, normals derived (vtkReliefProperty::DeriveNormals)
-  double GpuMegaBytes = 0.0;  // the relief's textures on the GPU (vtkReliefMapper)
+  double GpuMegaBytes = 0.0;   // the relief's textures on the GPU (vtkReliefMapper)
   // The dense displaced mesh of the same map as VTK's stock mapper uploads it: 32 bytes per
   // vertex (position, normal, texture coordinate) and 12 per triangle.
   double DenseMegaBytes = 0.0;

@@ -214,8 +214,8 @@ void PrintConeVersusRelief(
       Ratios here;
       for (const ReliefSweepRow& target : rows)
       {
-        if (target.IsDefault || OtherStorage(target) || target.Method != vtkReliefProperty::Relief ||
-          target.Angle != angle || target.Map != map)
+        if (target.IsDefault || OtherStorage(target) ||
+          target.Method != vtkReliefProperty::Relief || target.Angle != angle || target.Map != map)
         {
           continue;
         }
@@ -466,10 +466,10 @@ void PrintStorage(const std::vector<ReliefSweepRow>& rows, std::ostream& out)
          "over the paired rows; with derived rows (normals derived in the shader), their MB "
          "and colour RMSE\n"
       << "    " << std::left << std::setw(18) << "map" << std::setw(14) << "method" << std::right
-      << std::setw(9) << "dense MB" << std::setw(11) << "compact MB" << std::setw(10)
-      << "dense/cmp" << std::setw(10) << "float MB" << std::setw(10) << "float/cmp"
-      << std::setw(16) << "mean cmp/float" << std::setw(16) << "p99 cmp/float" << std::setw(16)
-      << "RMSE cmp/float" << std::setw(8) << "drv MB" << std::setw(10) << "drv RMSE"
+      << std::setw(9) << "dense MB" << std::setw(11) << "compact MB" << std::setw(10) << "dense/cmp"
+      << std::setw(10) << "float MB" << std::setw(10) << "float/cmp" << std::setw(16)
+      << "mean cmp/float" << std::setw(16) << "p99 cmp/float" << std::setw(16) << "RMSE cmp/float"
+      << std::setw(8) << "drv MB" << std::setw(10) << "drv RMSE"
       << "\n";
   for (const Entry& e : entries)
   {

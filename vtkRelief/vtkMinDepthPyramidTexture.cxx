@@ -127,8 +127,8 @@ bool vtkMinDepthPyramidTexture::Upload(
 }
 
 //------------------------------------------------------------------------------
-bool vtkMinDepthPyramidTexture::UploadCompact(vtkOpenGLRenderWindow* renWin,
-  const std::vector<std::uint16_t>& depth16, int width, int height)
+bool vtkMinDepthPyramidTexture::UploadCompact(
+  vtkOpenGLRenderWindow* renWin, const std::vector<std::uint16_t>& depth16, int width, int height)
 {
   // Levels 1 and up (core/CompactReliefStorage.h) in 16 bits, the exact minima of the 16-bit
   // depths; level 0's corners are the depth texture's texels.

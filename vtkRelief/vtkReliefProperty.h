@@ -198,11 +198,10 @@ public:
   ///@{
   /**
    * How the relief is stored on the GPU (vtkReliefTextureCache). By default compactly, with
-   * only what the method reads: 16-bit depth, 8-bit normal x and y, 8-bit cone ratios for cone
-   * methods, a 16-bit min-depth pyramid for MaximumMipmap: 4 to 5 bytes per texel, the hits
-   * as exact as with float textures.
-   * FloatTextures: the float RGBA texture and float pyramid instead (16 to 37 bytes per texel);
-   * off by default, on only to measure what compact storage costs.
+   * only what the method reads: 16-bit depth, 8-bit signed normal x and y, 8-bit cone ratios for
+   * cone methods, a 16-bit min-depth pyramid for MaximumMipmap: 4 to 5 bytes per texel, the hits as
+   * exact as with float textures. FloatTextures: the float RGBA texture and float pyramid instead
+   * (16 to 37 bytes per texel); off by default, on only to measure what compact storage costs.
    * DeriveNormals: no normals uploaded when they are the Sobel normals of the depth (as
    * vtkReliefTextureFilter bakes them; checked at upload, else they are uploaded): the shader
    * derives them from 16 depth texels, 2 bytes per texel less for more fetches. Default off

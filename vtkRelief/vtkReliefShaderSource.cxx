@@ -90,7 +90,9 @@ std::string vtkReliefShaderSource::Key() const
     (this->ConePacked ? "C" : "c") + (p->GetAdaptiveSteps() ? "V" : "v") +
     (p->GetLevelOfDetail() ? "L" : "l") + (this->HasLightSet ? "I" : "i") +
     (p->GetToneMapping() ? "T" : "t") + (p->GetShadowCulling() ? "K" : "k") +
-    (this->FloatTextures ? "F" : this->StoredNormals ? "N" : "f");
+    (this->FloatTextures      ? "F"
+        : this->StoredNormals ? "N"
+                              : "f");
 }
 
 //------------------------------------------------------------------------------

@@ -89,8 +89,8 @@ int MipLevels(int w, int h)
 // Makes texture a w x h 2D texture of internalFormat from tightly packed rows of data (format,
 // type), with linear filtering and, when asked, a generated mip chain.
 bool CreateTexture(vtkTextureObject* texture, vtkOpenGLRenderWindow* renWin, int w, int h,
-  int components, int vtkType, unsigned int internalFormat, unsigned int format,
-  unsigned int type, const void* data, bool mipmaps)
+  int components, int vtkType, unsigned int internalFormat, unsigned int format, unsigned int type,
+  const void* data, bool mipmaps)
 {
   texture->SetContext(renWin);
   texture->SetInternalFormat(internalFormat);
@@ -143,8 +143,8 @@ vtkIdType vtkReliefTextureCache::GetTextureBytes(vtkTextureObject* texture)
       break;
     }
     GLint bits = 0;
-    for (GLenum channel : { GL_TEXTURE_RED_SIZE, GL_TEXTURE_GREEN_SIZE, GL_TEXTURE_BLUE_SIZE,
-           GL_TEXTURE_ALPHA_SIZE })
+    for (GLenum channel :
+      { GL_TEXTURE_RED_SIZE, GL_TEXTURE_GREEN_SIZE, GL_TEXTURE_BLUE_SIZE, GL_TEXTURE_ALPHA_SIZE })
     {
       GLint b = 0;
       glGetTexLevelParameteriv(GL_TEXTURE_2D, level, channel, &b);
@@ -171,13 +171,12 @@ vtkReliefTextureCache::~vtkReliefTextureCache() = default;
 //------------------------------------------------------------------------------
 bool vtkReliefTextureCache::GetConePacked() const
 {
-  return this->FloatTextures ? this->ConeMap != vtkReliefProperty::NoConeMap
-                             : this->ConesUploaded;
+  return this->FloatTextures ? this->ConeMap != vtkReliefProperty::NoConeMap : this->ConesUploaded;
 }
 
 //------------------------------------------------------------------------------
-bool vtkReliefTextureCache::Update(vtkOpenGLRenderWindow* renWin, vtkImageData* image,
-  bool mipmaps, bool needPyramid, bool needCones, bool floatTextures, bool deriveNormals)
+bool vtkReliefTextureCache::Update(vtkOpenGLRenderWindow* renWin, vtkImageData* image, bool mipmaps,
+  bool needPyramid, bool needCones, bool floatTextures, bool deriveNormals)
 {
   vtkDataArray* scalars = image->GetPointData()->GetScalars();
   const bool baseCurrent = scalars && scalars == this->Uploaded &&
@@ -307,8 +306,8 @@ bool vtkReliefTextureCache::Update(vtkOpenGLRenderWindow* renWin, vtkImageData* 
                                : mesolight::EncodeConeRatio8(channel[i]);
         cones[i] = static_cast<std::uint8_t>(std::min(code, 254));
       }
-      if (!CreateTexture(this->ConeTexture, renWin, dims[0], dims[1], 1, VTK_UNSIGNED_CHAR,
-            GL_R8, GL_RED, GL_UNSIGNED_BYTE, cones.data(), false))
+      if (!CreateTexture(this->ConeTexture, renWin, dims[0], dims[1], 1, VTK_UNSIGNED_CHAR, GL_R8,
+            GL_RED, GL_UNSIGNED_BYTE, cones.data(), false))
       {
         vtkErrorMacro(<< "Could not create the " << dims[0] << "x" << dims[1]
                       << " cone ratio texture.");
@@ -420,7 +419,7 @@ bool vtkReliefTextureCache::UploadCompact(vtkOpenGLRenderWindow* renWin,
   // Normals derived in the shader when asked and they are the Sobel normals of this depth, as
   // vtkReliefTextureFilter bakes them (Mendez Fernandez's thesis, section 3.2); else uploaded.
   this->NormalsStored = true;
-  if (deriveNormals && this->BakedDepthScale != 0.0)
+  if (deriveNormals && this->BakedDepthScale > 0.0)
   {
     std::vector<float> uploaded(n);
     for (size_t i = 0; i < n; ++i)
@@ -435,17 +434,17 @@ bool vtkReliefTextureCache::UploadCompact(vtkOpenGLRenderWindow* renWin,
   }
   if (this->NormalsStored)
   {
-    std::vector<std::uint8_t> xy(2 * n);
+    // Signed normalised: a flat normal's 0 is exact (an unsigned (n + 1) / 2 is not).
+    std::vector<std::int8_t> xy(2 * n);
     for (size_t i = 0; i < 2 * n; ++i)
     {
-      xy[i] = static_cast<std::uint8_t>(
-        std::lround(vtkMath::ClampValue(0.5f * (normalXY[i] + 1.f), 0.f, 1.f) * 255.f));
+      xy[i] =
+        static_cast<std::int8_t>(std::lround(vtkMath::ClampValue(normalXY[i], -1.f, 1.f) * 127.f));
     }
-    if (!CreateTexture(this->NormalTexture, renWin, dims[0], dims[1], 2, VTK_UNSIGNED_CHAR,
-          GL_RG8, GL_RG, GL_UNSIGNED_BYTE, xy.data(), mipmaps))
+    if (!CreateTexture(this->NormalTexture, renWin, dims[0], dims[1], 2, VTK_SIGNED_CHAR,
+          GL_RG8_SNORM, GL_RG, GL_BYTE, xy.data(), mipmaps))
     {
-      vtkErrorMacro(<< "Could not create the " << dims[0] << "x" << dims[1]
-                    << " normal texture.");
+      vtkErrorMacro(<< "Could not create the " << dims[0] << "x" << dims[1] << " normal texture.");
       return false;
     }
     this->BaseBytes += GetTextureBytes(this->NormalTexture);
@@ -458,8 +457,8 @@ bool vtkReliefTextureCache::UploadCompact(vtkOpenGLRenderWindow* renWin,
 void vtkReliefTextureCache::ActivateTextures(int wrap)
 {
   this->Repeat = wrap == vtkTextureObject::Repeat;
-  for (vtkTextureObject* t : { this->TextureObject.Get(), this->NormalTexture.Get(),
-         this->ConeTexture.Get() })
+  for (vtkTextureObject* t :
+    { this->TextureObject.Get(), this->NormalTexture.Get(), this->ConeTexture.Get() })
   {
     if (t == this->TextureObject || (t == this->NormalTexture && this->NormalsStored) ||
       (t == this->ConeTexture && this->ConesUploaded))

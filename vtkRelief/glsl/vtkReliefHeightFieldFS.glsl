@@ -9,9 +9,9 @@
 // a cone-packed texture (vtkConeMapFilter, ML_CONE_PACKED) keeps the normal's x, y in RG and the
 // cone ratio (horizontal radius in texture widths per unit of depth) in B.
 // Otherwise (compact storage, the default): the depth alone in mlReliefTexture (R, 8 or 16
-// bits); the normals derived from it as vtkReliefTextureFilter bakes them (Sobel), or, when they
-// are not its Sobel normals, x, y in mlNormalTexture (ML_STORED_NORMALS); cone ratios c stored
-// as c / (1 + c) in mlConeTexture, rounded to narrower cones.
+// bits); the normal's x, y in mlNormalTexture (ML_STORED_NORMALS, 8-bit signed), or, derived
+// from the depth as vtkReliefTextureFilter bakes them (Sobel); cone ratios c stored as
+// c / (1 + c) in mlConeTexture (8 bits), rounded to narrower cones.
 
 uniform sampler2D mlReliefTexture;
 #ifndef ML_FLOAT_TEXTURES
@@ -69,7 +69,7 @@ vec3 mlPackedNormalAt(vec2 uv)
   return texel.rgb * 2.0 - 1.0;
 #endif
 #else
-  vec2 nxy = textureLod(mlNormalTexture, uv, mlMarchLod).rg * 2.0 - 1.0;
+  vec2 nxy = textureLod(mlNormalTexture, uv, mlMarchLod).rg; // signed normalised
   return vec3(nxy, sqrt(max(0.0, 1.0 - dot(nxy, nxy))));
 #endif
 }

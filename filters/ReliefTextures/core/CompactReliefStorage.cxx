@@ -53,7 +53,7 @@ std::vector<std::vector<std::uint16_t>> CompactMinDepthPyramid(
 float SobelNormalMismatch(
   const float* depth, const float* normalXY, int w, int h, double depthScale)
 {
-  if (!depth || !normalXY || w < 3 || h < 3)
+  if (!depth || !normalXY || w < 3 || h < 3 || !(depthScale > 0.0))
   {
     return std::numeric_limits<float>::max();
   }
@@ -62,40 +62,10 @@ float SobelNormalMismatch(
   ParallelFor(0, static_cast<std::size_t>(h), 16,
     [&](std::size_t b, std::size_t e)
     {
-      ComputeSobelGradientRows(depth, w, h, BorderMode::Clamp, static_cast<int>(b),
-        static_cast<int>(e), gradient.data());
+      ComputeSobelGradientRows(
+        depth, w, h, BorderMode::Clamp, static_cast<int>(b), static_cast<int>(e), gradient.data());
     });
-  auto interior = [w](std::size_t i)
-  {
-    const int x = static_cast<int>(i % static_cast<std::size_t>(w));
-    return x > 0 && x < w - 1;
-  };
-  double k = depthScale;
-  if (!(k > 0.0))
-  {
-    // Least squares: the stored n.xy / n.z should be k * w * (gi, gj).
-    double num = 0.0, den = 0.0;
-    for (std::size_t row = 1; row + 1 < static_cast<std::size_t>(h); ++row)
-    {
-      for (std::size_t i = row * static_cast<std::size_t>(w); i < (row + 1) * std::size_t(w); ++i)
-      {
-        if (!interior(i))
-        {
-          continue;
-        }
-        const double x = normalXY[2 * i], y = normalXY[2 * i + 1];
-        const double z = std::sqrt(std::max(1e-8, 1.0 - x * x - y * y));
-        const double gx = double(w) * gradient[2 * i], gy = double(w) * gradient[2 * i + 1];
-        num += (x / z) * gx + (y / z) * gy;
-        den += gx * gx + gy * gy;
-      }
-    }
-    k = den > 0.0 ? num / den : 0.0;
-    if (!(k > 1e-6))
-    {
-      return std::numeric_limits<float>::max(); // flat normals on a relief: not its Sobel normals
-    }
-  }
+  const double k = depthScale;
   std::vector<float> rowMax(static_cast<std::size_t>(h), 0.f);
   ParallelFor(1, static_cast<std::size_t>(h - 1), 16,
     [&](std::size_t b, std::size_t e)
@@ -106,8 +76,8 @@ float SobelNormalMismatch(
         for (std::size_t i = row * std::size_t(w) + 1; i + 1 < (row + 1) * std::size_t(w); ++i)
         {
           float derived[3];
-          NormalFromGradient(gradient[2 * i], gradient[2 * i + 1], w, static_cast<float>(k),
-            derived);
+          NormalFromGradient(
+            gradient[2 * i], gradient[2 * i + 1], w, static_cast<float>(k), derived);
           worst = std::max(worst,
             std::max(std::fabs(derived[0] - normalXY[2 * i]),
               std::fabs(derived[1] - normalXY[2 * i + 1])));

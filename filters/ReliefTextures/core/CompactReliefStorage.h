@@ -40,12 +40,13 @@ MESOLIGHTRELIEFTEXTURES_EXPORT std::vector<std::vector<std::uint16_t>> CompactMi
  * How far stored normals are from the Sobel normals of the depth (core/SobelNormals.h, clamped
  * border) at the interior texels (the border depends on the bake's border mode): the largest
  * difference of a normal component. normalXY holds each texel's normal x and y (unpacked, in
- * [-1, 1]), interleaved. depthScale is the scale the normals were baked with; <= 0: unknown,
- * then the least-squares scale is used (the shader's derived normals do not need it). Returns
- * a large value when nothing can be compared.
+ * [-1, 1]), interleaved. depthScale is the scale the normals were baked with (the shader
+ * derives them with it). Returns a large value when nothing can be compared (a map narrower
+ * than 3 texels, or no depth scale: the normals are then taken as baked with whatever depth
+ * scale the renderer uses, which the depth alone cannot give).
  */
-MESOLIGHTRELIEFTEXTURES_EXPORT float SobelNormalMismatch(const float* depth, const float* normalXY,
-  int w, int h, double depthScale);
+MESOLIGHTRELIEFTEXTURES_EXPORT float SobelNormalMismatch(
+  const float* depth, const float* normalXY, int w, int h, double depthScale);
 
 } // namespace mesolight
 
