@@ -198,7 +198,7 @@ public:
   ///@{
   /**
    * How the relief is stored on the GPU (vtkReliefTextureCache). By default compactly, with
-   * only what the method reads: 16-bit depth, 8-bit signed normal x and y, 8-bit cone ratios for
+   * only what the method reads: 16-bit depth, 8-bit normals (octahedral), 8-bit cone ratios for
    * cone methods, a 16-bit min-depth pyramid for MaximumMipmap: 4 to 5 bytes per texel, the hits as
    * exact as with float textures. FloatTextures: the float RGBA texture and float pyramid instead
    * (16 to 37 bytes per texel); off by default, on only to measure what compact storage costs.

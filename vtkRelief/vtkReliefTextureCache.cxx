@@ -225,6 +225,7 @@ bool vtkReliefTextureCache::Update(vtkOpenGLRenderWindow* renWin, vtkImageData* 
   std::vector<float> channel(n);
   std::vector<float> depth(n);
   std::vector<float> normalXY;
+  std::vector<float> normalZ; // empty for cone maps, whose B holds cones: z is rebuilt
   for (int c = 3; c >= 0; --c)
   {
     ReadChannel(scalars, count, c, bytes, channel.data());
@@ -250,6 +251,14 @@ bool vtkReliefTextureCache::Update(vtkOpenGLRenderWindow* renWin, vtkImageData* 
       for (size_t i = 0; i < n; ++i)
       {
         normalXY[2 * i + c] = 2.f * vtkMath::ClampValue(channel[i], 0.f, 1.f) - 1.f;
+      }
+    }
+    else if (c == 2 && !floatTextures && this->ConeMap == vtkReliefProperty::NoConeMap)
+    {
+      normalZ.resize(n);
+      for (size_t i = 0; i < n; ++i)
+      {
+        normalZ[i] = 2.f * vtkMath::ClampValue(channel[i], 0.f, 1.f) - 1.f;
       }
     }
   }
@@ -280,7 +289,8 @@ bool vtkReliefTextureCache::Update(vtkOpenGLRenderWindow* renWin, vtkImageData* 
         return false;
       }
     }
-    else if (!this->UploadCompact(renWin, depth, normalXY, dims, mipmaps, deriveNormals, depth16))
+    else if (!this->UploadCompact(
+               renWin, depth, normalXY, normalZ, dims, mipmaps, deriveNormals, depth16))
     {
       return false;
     }
@@ -395,8 +405,9 @@ bool vtkReliefTextureCache::UploadFloat(
 
 //------------------------------------------------------------------------------
 bool vtkReliefTextureCache::UploadCompact(vtkOpenGLRenderWindow* renWin,
-  const std::vector<float>& depth, const std::vector<float>& normalXY, const int dims[3],
-  bool mipmaps, bool deriveNormals, std::vector<std::uint16_t>& depth16)
+  const std::vector<float>& depth, const std::vector<float>& normalXY,
+  const std::vector<float>& normalZ, const int dims[3], bool mipmaps, bool deriveNormals,
+  std::vector<std::uint16_t>& depth16)
 {
   // Depth in 16 bits, also for 8-bit maps (exact either way): filtered 8-bit textures come back
   // with 8-bit precision on some implementations (Mesa llvmpipe), which moved the hits.
@@ -434,12 +445,22 @@ bool vtkReliefTextureCache::UploadCompact(vtkOpenGLRenderWindow* renWin,
   }
   if (this->NormalsStored)
   {
-    // Signed normalised: a flat normal's 0 is exact (an unsigned (n + 1) / 2 is not).
+    // Hemispherical octahedral coordinates (Cigolle et al., "A Survey of Efficient
+    // Representations for Independent Unit Vectors", JCGT 2014), signed normalised: 8 bits err
+    // alike in every direction, where x, y with z rebuilt lose the steep normals of walls
+    // (z = sqrt(1 - x^2 - y^2) is ill-conditioned there), and a flat normal's 0 is exact.
     std::vector<std::int8_t> xy(2 * n);
-    for (size_t i = 0; i < 2 * n; ++i)
+    for (size_t i = 0; i < n; ++i)
     {
-      xy[i] =
-        static_cast<std::int8_t>(std::lround(vtkMath::ClampValue(normalXY[i], -1.f, 1.f) * 127.f));
+      const float x = normalXY[2 * i], y = normalXY[2 * i + 1];
+      const float z =
+        normalZ.empty() ? std::sqrt(std::max(0.f, 1.f - x * x - y * y)) : std::max(normalZ[i], 0.f);
+      const float l1 = std::fabs(x) + std::fabs(y) + z;
+      const float px = l1 > 0.f ? x / l1 : 0.f, py = l1 > 0.f ? y / l1 : 0.f;
+      xy[2 * i] =
+        static_cast<std::int8_t>(std::lround(vtkMath::ClampValue(px + py, -1.f, 1.f) * 127.f));
+      xy[2 * i + 1] =
+        static_cast<std::int8_t>(std::lround(vtkMath::ClampValue(px - py, -1.f, 1.f) * 127.f));
     }
     if (!CreateTexture(this->NormalTexture, renWin, dims[0], dims[1], 2, VTK_SIGNED_CHAR,
           GL_RG8_SNORM, GL_RG, GL_BYTE, xy.data(), mipmaps))

@@ -15,10 +15,10 @@
  * hits exact (core/CompactReliefStorage.h):
  *  - depth in 16 bits (GL_R16; 8-bit maps too: some implementations filter 8-bit textures to
  *    8-bit results, which moves the hits);
- *  - normal x, y in GL_RG8_SNORM, z rebuilt; with deriveNormals, none when they are the
- *    depth's Sobel normals (vtkReliefTextureFilter's bake; checked here, NormalMismatch): the
- *    shader derives them from 16 depth texels, the float texture's shading for half the bytes
- *    and more fetches;
+ *  - the normal in GL_RG8_SNORM, hemispherical octahedral coordinates; with deriveNormals,
+ *    none when they are the depth's Sobel normals (vtkReliefTextureFilter's bake; checked here,
+ *    NormalMismatch): the shader derives them from 16 depth texels, the float texture's shading
+ *    for half the bytes and more fetches;
  *  - cone ratios only for cone methods, 8 bits rounded to narrower cones (GL_R8);
  *  - for MaximumMipmap the pyramid's levels 1 and up in 16 bits, exact minima
  *    (vtkMinDepthPyramidTexture); its level 0, the cells' corners, is the depth texture itself.
@@ -129,8 +129,8 @@ protected:
   bool UploadFloat(vtkOpenGLRenderWindow* renWin, vtkDataArray* scalars, const int dims[3],
     bool bytes, bool mipmaps);
   bool UploadCompact(vtkOpenGLRenderWindow* renWin, const std::vector<float>& depth,
-    const std::vector<float>& normalXY, const int dims[3], bool mipmaps, bool deriveNormals,
-    std::vector<std::uint16_t>& depth16);
+    const std::vector<float>& normalXY, const std::vector<float>& normalZ, const int dims[3],
+    bool mipmaps, bool deriveNormals, std::vector<std::uint16_t>& depth16);
 
   vtkSmartPointer<vtkTextureObject> TextureObject;
   vtkSmartPointer<vtkTextureObject> NormalTexture;

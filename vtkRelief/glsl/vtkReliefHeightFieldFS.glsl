@@ -9,7 +9,7 @@
 // a cone-packed texture (vtkConeMapFilter, ML_CONE_PACKED) keeps the normal's x, y in RG and the
 // cone ratio (horizontal radius in texture widths per unit of depth) in B.
 // Otherwise (compact storage, the default): the depth alone in mlReliefTexture (R, 8 or 16
-// bits); the normal's x, y in mlNormalTexture (ML_STORED_NORMALS, 8-bit signed), or, derived
+// bits); the normal in mlNormalTexture (ML_STORED_NORMALS, 8-bit signed octahedral), or, derived
 // from the depth as vtkReliefTextureFilter bakes them (Sobel); cone ratios c stored as
 // c / (1 + c) in mlConeTexture (8 bits), rounded to narrower cones.
 
@@ -69,8 +69,11 @@ vec3 mlPackedNormalAt(vec2 uv)
   return texel.rgb * 2.0 - 1.0;
 #endif
 #else
-  vec2 nxy = textureLod(mlNormalTexture, uv, mlMarchLod).rg; // signed normalised
-  return vec3(nxy, sqrt(max(0.0, 1.0 - dot(nxy, nxy))));
+  // Hemispherical octahedral coordinates (vtkReliefTextureCache): a normal up to its length,
+  // which the gradient below divides out.
+  vec2 e = textureLod(mlNormalTexture, uv, mlMarchLod).rg;
+  vec2 p = 0.5 * vec2(e.x + e.y, e.x - e.y);
+  return vec3(p, 1.0 - abs(p.x) - abs(p.y));
 #endif
 }
 #endif
