@@ -15,6 +15,7 @@
 
 uniform sampler2D mlReliefTexture;
 #ifndef ML_FLOAT_TEXTURES
+uniform int mlRepeatTexture; // the samplers repeat (else clamp to edge)
 #ifdef ML_STORED_NORMALS
 uniform sampler2D mlNormalTexture;
 #endif
@@ -56,6 +57,16 @@ float mlDepthAt(vec2 uv)
   return textureLod(mlReliefTexture, uv, mlMarchLod).ML_DEPTH_CHANNEL;
 }
 
+#if !defined(ML_FLOAT_TEXTURES) && defined(ML_STORED_NORMALS)
+// A normal (up to its length) from hemispherical octahedral coordinates (Cigolle et al. 2014;
+// vtkReliefTextureCache).
+vec3 mlOctahedralNormal(vec2 e)
+{
+  vec2 p = 0.5 * vec2(e.x + e.y, e.x - e.y);
+  return vec3(p, 1.0 - abs(p.x) - abs(p.y));
+}
+#endif
+
 #if defined(ML_FLOAT_TEXTURES) || defined(ML_STORED_NORMALS)
 vec3 mlPackedNormalAt(vec2 uv)
 {
@@ -69,11 +80,26 @@ vec3 mlPackedNormalAt(vec2 uv)
   return texel.rgb * 2.0 - 1.0;
 #endif
 #else
-  // Hemispherical octahedral coordinates (vtkReliefTextureCache): a normal up to its length,
-  // which the gradient below divides out.
-  vec2 e = textureLod(mlNormalTexture, uv, mlMarchLod).rg;
-  vec2 p = 0.5 * vec2(e.x + e.y, e.x - e.y);
-  return vec3(p, 1.0 - abs(p.x) - abs(p.y));
+  if (mlMarchLod <= 0.0)
+  {
+    // The four texels' unit normals blended as the float texture's are, by the bilinear weights:
+    // blending their octahedral coordinates instead bends the normals between a wall and the
+    // flat beside it, which max-mipmap's exact hits show (colour error on real maps).
+    ivec2 size = ivec2(mlTextureSize);
+    vec2 x = uv * mlTextureSize - 0.5;
+    ivec2 i0 = ivec2(floor(x));
+    vec2 f = x - vec2(i0);
+    vec3 n[4];
+    for (int k = 0; k < 4; ++k)
+    {
+      ivec2 t = i0 + ivec2(k - 2 * (k / 2), k / 2);
+      t = mlRepeatTexture != 0 ? (t % size + size) % size : clamp(t, ivec2(0), size - 1);
+      n[k] = normalize(mlOctahedralNormal(texelFetch(mlNormalTexture, t, 0).rg));
+    }
+    return mix(mix(n[0], n[1], f.x), mix(n[2], n[3], f.x), f.y);
+  }
+  // Level of detail: the filtered coordinates of the level read.
+  return mlOctahedralNormal(textureLod(mlNormalTexture, uv, mlMarchLod).rg);
 #endif
 }
 #endif
@@ -110,7 +136,6 @@ vec2 mlDepthAndConeAt(vec2 uv)
 #endif
 
 #if !defined(ML_FLOAT_TEXTURES) && !defined(ML_STORED_NORMALS)
-uniform int mlRepeatTexture; // the samplers repeat (else clamp to edge)
 
 // The 4 x 4 depth texels around uv at level 0, from (i0 - 1, j0 - 1), wrapped or clamped as the
 // sampler addresses them, and that origin.

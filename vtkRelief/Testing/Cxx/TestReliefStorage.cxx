@@ -274,3 +274,38 @@ TEST(ReliefStorage, NormalsThatAreNotSobelAreUploaded)
   const Measured unknown = scene.Draw(Storage::Derived, "Sobel normals, scale unknown");
   EXPECT_EQ(unknown.Bytes, 4LL * 256 * 256);
 }
+
+// The compact normals shade as the float ones: colour against the dense displaced mesh (VTK's
+// stock mapper, per-vertex normals) where exact max-mipmap hits land on the bricks' walls, whose
+// steep normals an 8-bit encoding blended in its own coordinates would bend.
+TEST(ReliefStorage, CompactNormalsShadeAsTheFloatOnes)
+{
+  ReliefSceneOptions o = test::DenseMeshTestScene();
+  o.Method = "max-mipmap";
+  o.LinearSteps = 128;
+  o.RefinementSteps = 0;
+  o.ViewAngle = 75.0;
+  o.FillViewport = true;
+  std::string error;
+  ReliefScene dense;
+  ASSERT_TRUE(BuildDenseReferenceScene(o, dense, error)) << error;
+  auto denseWindow = MakeOffscreenWindow(o, dense.Renderer);
+  const Frame reference = CaptureFrame(denseWindow);
+  ReliefScene relief;
+  ASSERT_TRUE(BuildReliefScene(o, relief, error)) << error;
+  auto window = MakeOffscreenWindow(o, relief.Renderer);
+  double mean[3] = { 0.0, 0.0, 0.0 };
+  for (Storage s : { Storage::Float, Storage::Compact, Storage::Derived })
+  {
+    relief.Mapper->GetReliefProperty()->SetFloatTextures(s == Storage::Float);
+    relief.Mapper->GetReliefProperty()->SetDeriveNormals(s == Storage::Derived);
+    const FrameDifference d = CompareFrames(CaptureFrame(window), reference, 0.05 * o.DepthScale);
+    mean[static_cast<int>(s)] = d.MeanColorError;
+    std::cout << "[bricks at 75 deg, max-mipmap, " << Name(s) << "] colour RMSE against the dense "
+              << "mesh " << d.RmsColorError << " levels, mean " << d.MeanColorError << std::endl;
+  }
+  // Measured: compact 2.7% above float, derived equal; the octahedral coordinates filtered by
+  // the GPU instead of blended normals were 15% above (and 0.9% in RMSE, which hides it).
+  EXPECT_LE(mean[1], 1.05 * mean[0]);
+  EXPECT_LE(mean[2], 1.01 * mean[0]);
+}
