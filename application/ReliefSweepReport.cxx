@@ -63,8 +63,10 @@ bool WriteCsv(const std::string& file, const std::vector<ReliefSweepRow>& rows,
         << ',' << r.SamplesPerPixel << ',' << r.HitMeanTexels << ',' << r.HitP99Texels << ','
         << r.SilhouetteMismatch << ',' << r.ColorRmse << ',' << r.Psnr << ',' << r.ShadowMismatch
         << ',' << r.CoveredBoth << ',' << r.Footprint << ','
-        << (r.FloatTextures ? "float" : "compact") << ',' << r.GpuMegaBytes << ','
-        << r.DenseMegaBytes << "\n";
+        << (r.FloatTextures       ? "float"
+               : r.DerivedNormals ? "derived"
+                                  : "compact")
+        << ',' << r.GpuMegaBytes << ',' << r.DenseMegaBytes << "\n";
   }
   return static_cast<bool>(csv);
 }

@@ -202,4 +202,5 @@ void vtkMinDepthPyramidTexture::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "NumberOfLevels: " << this->NumberOfLevels << "\n";
+  os << indent << "UploadedBytes: " << this->UploadedBytes << "\n";
 }
