@@ -205,7 +205,7 @@ public:
    * DeriveNormals: no normals uploaded when they are the Sobel normals of the depth (as
    * vtkReliefTextureFilter bakes them; checked at upload, else they are uploaded): the shader
    * derives them from 16 depth texels, 2 bytes per texel less for more fetches. Default off
-   * (half as fast on Mesa llvmpipe). Both: mesolight bench relief --texture-storage.
+   * (1.65x the frame time on Mesa llvmpipe). Both: mesolight bench relief --texture-storage.
    */
   vtkSetMacro(FloatTextures, bool);
   vtkGetMacro(FloatTextures, bool);
