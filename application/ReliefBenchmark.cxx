@@ -5,7 +5,6 @@
 #include "vtkReliefMapper.h"
 
 #include <vtkActor.h>
-#include <vtkImageData.h>
 #include <vtkMapper.h>
 #include <vtkPolyData.h>
 #include <vtkRenderWindow.h>
@@ -65,12 +64,6 @@ double DenseMeshMegaBytes(vtkActor* actor)
   return (poly->GetNumberOfPoints() * 32.0 + poly->GetNumberOfPolys() * 12.0) / 1048576.0;
 }
 
-double ReliefTextureMegaBytes(vtkImageData* relief)
-{
-  int dims[3];
-  relief->GetDimensions(dims);
-  return double(dims[0]) * dims[1] * 16.0 / 1048576.0; // float RGBA, as uploaded
-}
 } // namespace
 
 bool RunReliefBenchmark(const BenchmarkSettings& settings, std::ostream& out)
@@ -152,7 +145,9 @@ bool RunReliefBenchmark(const BenchmarkSettings& settings, std::ostream& out)
         row.HasError = true;
         row.Error = CompareFrames(frame, reference, depthTolerance * o.DepthScale, &footprint);
       }
-      row.MegaBytes = v.Method.empty() ? 0.0 : ReliefTextureMegaBytes(scene.ReliefTexture);
+      // What the mapper uploaded for this method, as OpenGL reports its textures' formats.
+      row.MegaBytes =
+        v.Method.empty() ? 0.0 : double(scene.Mapper->GetReliefTextureBytes()) / 1048576.0;
       rows.push_back(row);
     }
   }
@@ -187,6 +182,25 @@ bool RunReliefBenchmark(const BenchmarkSettings& settings, std::ostream& out)
     }
     out << std::setprecision(1) << std::setw(10) << r.MegaBytes << "\n";
     out.unsetf(std::ios::fixed);
+  }
+  // GPU memory: the dense mesh against each relief method of the same map.
+  for (const Row& dense : rows)
+  {
+    if (dense.Config.rfind("dense mesh", 0) != 0)
+    {
+      continue;
+    }
+    out << "GPU memory at " << dense.Resolution << "^2, dense mesh MB / relief MB:";
+    for (const Row& r : rows)
+    {
+      if (r.Resolution == dense.Resolution && r.MegaBytes > 0.0 && &r != &dense)
+      {
+        out << " " << r.Config << " " << std::fixed << std::setprecision(1)
+            << dense.MegaBytes / r.MegaBytes << "x;";
+        out.unsetf(std::ios::fixed);
+      }
+    }
+    out << "\n";
   }
   if (!settings.CsvFile.empty())
   {

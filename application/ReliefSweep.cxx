@@ -293,6 +293,14 @@ bool PrepareFileMaps(const ReliefSweepSettings& settings, const std::string& dir
   return true;
 }
 
+// What VTK's stock mapper uploads for the dense displaced mesh of a w x h map (one vertex per
+// texel, vtkHeightFieldMeshFilter): position, normal (3 floats each) and texture coordinate (2)
+// per vertex, three 32-bit indices per triangle; as ReliefBenchmark.cxx counts it.
+double DenseMeshMegaBytes(int w, int h)
+{
+  return (double(w) * h * 32.0 + 2.0 * (w - 1) * (h - 1) * 12.0) / 1048576.0;
+}
+
 // The method "default" in the method list.
 constexpr int DefaultSettings = -1;
 } // namespace
@@ -386,7 +394,8 @@ bool RunReliefSweep(
     o.SelfShadowing = false;
     std::string error;
     ReliefScene relief, dense;
-    if (!BuildReliefScene(o, relief, error) || !BuildDenseReferenceScene(o, dense, error))
+    if (!BuildReliefScene(o, relief, error) ||
+      (settings.DenseMesh && !BuildDenseReferenceScene(o, dense, error)))
     {
       out << "bench relief: map " << map.Label << ": " << error << "\n";
       return false;
@@ -412,15 +421,23 @@ bool RunReliefSweep(
       }
     }
     auto reliefWindow = MakeOffscreenWindow(o, relief.Renderer);
-    auto denseWindow = MakeOffscreenWindow(o, dense.Renderer);
+    auto denseWindow = settings.DenseMesh ? MakeOffscreenWindow(o, dense.Renderer)
+                                          : vtkSmartPointer<vtkRenderWindow>();
     vtkReliefMapper* mapper = relief.Mapper;
+    int texels[3];
+    relief.ReliefTexture->GetDimensions(texels);
+    const double denseMegaBytes = DenseMeshMegaBytes(texels[0], texels[1]);
 
     for (double angle : settings.Angles)
     {
       o.ViewAngle = angle;
       SetupCameraAndLights(o, relief.Renderer);
-      SetupCameraAndLights(o, dense.Renderer);
-      const Frame denseFrame = CaptureFrame(denseWindow);
+      Frame denseFrame;
+      if (settings.DenseMesh)
+      {
+        SetupCameraAndLights(o, dense.Renderer);
+        denseFrame = CaptureFrame(denseWindow);
+      }
       ReliefReference reference;
       if (!ComputeReliefReference(MakeReliefReferenceInput(relief, o), reference, error))
       {
@@ -471,15 +488,25 @@ bool RunReliefSweep(
             steps.push_back({ n, 0, "iter " + std::to_string(n) });
           }
         }
-        for (const ReliefSweepStep& step : steps)
+        for (size_t k = 0; k < steps.size() * settings.TextureStorages.size(); ++k)
         {
+          // Each storage in turn with every step setting (one upload per storage and method).
+          const ReliefSweepStep& step = steps[k % steps.size()];
+          const std::string& storage = settings.TextureStorages[k / steps.size()];
           ReliefSweepRow row;
           row.Map = map.Label;
           row.Angle = angle;
           row.Method = m;
-          row.MethodName = isDefault ? "default" : vtkReliefProperty::GetMethodName(m);
+          row.FloatTextures = storage == "float";
+          row.DerivedNormals = storage == "derived";
+          row.MethodName =
+            std::string(isDefault ? "default" : vtkReliefProperty::GetMethodName(m)) +
+            (storage == "compact" ? "" : " (" + storage + ")");
           row.IsDefault = isDefault;
           row.Step = step;
+          row.DenseMegaBytes = denseMegaBytes;
+          mapper->GetReliefProperty()->SetFloatTextures(row.FloatTextures);
+          mapper->GetReliefProperty()->SetDeriveNormals(row.DerivedNormals);
           mapper->GetReliefProperty()->SetLinearSteps(step.LinearSteps);
           mapper->GetReliefProperty()->SetRefinementSteps(step.RefinementSteps);
 
@@ -487,9 +514,12 @@ bool RunReliefSweep(
           mapper->GetReliefProperty()->SetSelfShadowing(false);
           mapper->GetReliefProperty()->SetOutput(vtkReliefProperty::ShadedOutput);
           row.MedianMs = TimeFrames(reliefWindow, settings.Frames, row.FirstMs);
+          row.GpuMegaBytes = double(mapper->GetReliefTextureBytes()) / 1048576.0;
           const Frame shaded = CaptureFrame(reliefWindow);
-          row.ColorRmse = ColorRmse(reference, shaded, denseFrame);
-          row.Psnr = row.ColorRmse > 0.0 ? 20.0 * std::log10(255.0 / row.ColorRmse) : 99.0;
+          row.ColorRmse = settings.DenseMesh ? ColorRmse(reference, shaded, denseFrame) : -1.0;
+          row.Psnr = row.ColorRmse > 0.0 ? 20.0 * std::log10(255.0 / row.ColorRmse)
+            : row.ColorRmse == 0.0       ? 99.0
+                                         : -1.0;
 
           // What the march sampled, per covered pixel of the same (shadowless) frame.
           mapper->GetReliefProperty()->SetOutput(vtkReliefProperty::SampleCountOutput);
@@ -523,6 +553,8 @@ bool RunReliefSweep(
           << std::flush;
     }
     mapper->SetReliefTextureData(relief.ReliefTexture);
+    mapper->GetReliefProperty()->SetFloatTextures(false);
+    mapper->GetReliefProperty()->SetDeriveNormals(false);
   }
 
   out << "\n";
@@ -601,6 +633,14 @@ int RunReliefSweep(const std::vector<std::string>& args)
     "iteration budgets for max-mipmap instead of the built-in table (32,64,128)");
   cl.AddValue("--csv", "FILE", "write one CSV row per configuration");
   cl.AddValue("--plots", "DIR", "write one PNG chart per view angle into DIR");
+  cl.AddValue("--texture-storage", "LIST",
+    "how the relief is uploaded, each measured: compact (the default storage), float (float "
+    "RGBA, vtkReliefProperty::FloatTextures), derived (compact, normals derived in the shader: "
+    "vtkReliefProperty::DeriveNormals)",
+    "compact");
+  cl.AddFlag("--no-dense",
+    "do not draw the dense displaced mesh (maps too large to mesh): no colour columns; its size "
+    "is still computed");
   cl.AddFlag("--no-fill",
     "keep the square, whole-wall framing (the wall is then a thin strip at grazing angles) "
     "instead of stretching the view so the wall fills the window");
@@ -694,6 +734,19 @@ int RunReliefSweep(const std::vector<std::string>& args)
     }
     settings.Iterations.push_back(iterations);
   }
+  settings.TextureStorages = cl.GetStringList("--texture-storage");
+  for (const std::string& storage : settings.TextureStorages)
+  {
+    if (storage != "compact" && storage != "float" && storage != "derived")
+    {
+      return cl.UsageError("--texture-storage: '" + storage + "' is not compact, float or derived");
+    }
+  }
+  if (settings.TextureStorages.empty())
+  {
+    return cl.UsageError("--texture-storage needs compact, float or derived");
+  }
+  settings.DenseMesh = !cl.Has("--no-dense");
   settings.CsvFile = cl.Get("--csv");
   settings.PlotDirectory = cl.Get("--plots");
   return RunReliefSweep(settings, std::cout) ? 0 : 1;

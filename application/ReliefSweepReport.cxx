@@ -30,7 +30,7 @@ void PrintHeader(std::ostream& out)
       << "  " << std::left << std::setw(22) << "method" << std::setw(9) << "steps" << std::right
       << std::setw(9) << "ms/frame" << std::setw(9) << "samples" << std::setw(10) << "hit mean"
       << std::setw(9) << "hit p99" << std::setw(8) << "silh %" << std::setw(8) << "RMSE"
-      << std::setw(7) << "PSNR" << std::setw(9) << "shadow %"
+      << std::setw(7) << "PSNR" << std::setw(9) << "shadow %" << std::setw(9) << "GPU MB"
       << "\n";
 }
 
@@ -41,8 +41,9 @@ void PrintRow(std::ostream& out, const ReliefSweepRow& r)
       << std::right << std::setw(9) << Fixed(r.MedianMs, 1) << std::setw(9)
       << Fixed(r.SamplesPerPixel, 1) << std::setw(10) << Fixed(r.HitMeanTexels, 3) << std::setw(9)
       << Fixed(r.HitP99Texels, 2) << std::setw(8) << Fixed(r.SilhouetteMismatch, 2) << std::setw(8)
-      << Fixed(r.ColorRmse, 2) << std::setw(7) << Fixed(r.Psnr, 1) << std::setw(9)
-      << Fixed(r.ShadowMismatch, 2) << "\n";
+      << (r.ColorRmse < 0.0 ? std::string("-") : Fixed(r.ColorRmse, 2)) << std::setw(7)
+      << (r.ColorRmse < 0.0 ? std::string("-") : Fixed(r.Psnr, 1)) << std::setw(9)
+      << Fixed(r.ShadowMismatch, 2) << std::setw(9) << Fixed(r.GpuMegaBytes, 2) << "\n";
 }
 
 bool WriteCsv(const std::string& file, const std::vector<ReliefSweepRow>& rows,
@@ -52,7 +53,7 @@ bool WriteCsv(const std::string& file, const std::vector<ReliefSweepRow>& rows,
   csv << "map,view_angle_deg,method,linear_steps,refinement_steps,steps,width,height,depth_scale,"
          "ms_per_frame,first_frame_ms,samples_per_pixel,hit_error_mean_texels,hit_error_p99_texels,"
          "silhouette_mismatch_pct,color_rmse,psnr_db,shadow_mismatch_pct,covered_both,"
-         "footprint\n";
+         "footprint,texture_storage,gpu_megabytes,dense_mesh_megabytes\n";
   csv << std::setprecision(8);
   for (const ReliefSweepRow& r : rows)
   {
@@ -61,13 +62,23 @@ bool WriteCsv(const std::string& file, const std::vector<ReliefSweepRow>& rows,
         << settings.Height << ',' << settings.DepthScale << ',' << r.MedianMs << ',' << r.FirstMs
         << ',' << r.SamplesPerPixel << ',' << r.HitMeanTexels << ',' << r.HitP99Texels << ','
         << r.SilhouetteMismatch << ',' << r.ColorRmse << ',' << r.Psnr << ',' << r.ShadowMismatch
-        << ',' << r.CoveredBoth << ',' << r.Footprint << "\n";
+        << ',' << r.CoveredBoth << ',' << r.Footprint << ','
+        << (r.FloatTextures       ? "float"
+               : r.DerivedNormals ? "derived"
+                                  : "compact")
+        << ',' << r.GpuMegaBytes << ',' << r.DenseMegaBytes << "\n";
   }
   return static_cast<bool>(csv);
 }
 
 namespace
 {
+// Rows of a storage other than the default (compact): compared apart, in PrintStorage.
+bool OtherStorage(const ReliefSweepRow& r)
+{
+  return r.FloatTextures || r.DerivedNormals;
+}
+
 std::string AngleTag(double angle)
 {
   std::ostringstream s;
@@ -205,8 +216,8 @@ void PrintConeVersusRelief(
       Ratios here;
       for (const ReliefSweepRow& target : rows)
       {
-        if (target.IsDefault || target.Method != vtkReliefProperty::Relief ||
-          target.Angle != angle || target.Map != map)
+        if (target.IsDefault || OtherStorage(target) ||
+          target.Method != vtkReliefProperty::Relief || target.Angle != angle || target.Map != map)
         {
           continue;
         }
@@ -217,7 +228,7 @@ void PrintConeVersusRelief(
           const int k = r.Method == vtkReliefProperty::Relief  ? 0
             : r.Method == vtkReliefProperty::RelaxedConeBinary ? 1
                                                                : -1;
-          if (k < 0 || r.IsDefault || r.Map != map || r.Angle != angle ||
+          if (k < 0 || r.IsDefault || OtherStorage(r) || r.Map != map || r.Angle != angle ||
             r.HitMeanTexels > target.HitMeanTexels)
           {
             continue;
@@ -297,7 +308,7 @@ void PrintDefaultPlace(const std::vector<ReliefSweepRow>& rows, std::ostream& ou
   int met = 0, cheap = 0, front = 0, cells = 0;
   for (const ReliefSweepRow& d : rows)
   {
-    if (!d.IsDefault)
+    if (!d.IsDefault || OtherStorage(d))
     {
       continue;
     }
@@ -308,7 +319,7 @@ void PrintDefaultPlace(const std::vector<ReliefSweepRow>& rows, std::ostream& ou
     const ReliefSweepRow* best = nullptr; // the fastest row at least as accurate
     for (const ReliefSweepRow& r : rows)
     {
-      if (r.IsDefault || r.Map != d.Map || r.Angle != d.Angle)
+      if (r.IsDefault || OtherStorage(r) || r.Map != d.Map || r.Angle != d.Angle)
       {
         continue;
       }
@@ -364,7 +375,7 @@ void PrintDefaultPlace(const std::vector<ReliefSweepRow>& rows, std::ostream& ou
   const ReliefSweepRow* first = nullptr;
   for (const ReliefSweepRow& r : rows)
   {
-    if (r.IsDefault)
+    if (r.IsDefault && !OtherStorage(r))
     {
       first = &r;
       break;
@@ -385,10 +396,114 @@ void PrintDefaultPlace(const std::vector<ReliefSweepRow>& rows, std::ostream& ou
 }
 } // namespace
 
+namespace
+{
+// GPU memory per method and map: the relief's textures against the dense displaced mesh, and,
+// with float rows in the run, compact against float storage in memory and in hit error (the
+// same map, angle and steps, so the difference is the storage's alone).
+void PrintStorage(const std::vector<ReliefSweepRow>& rows, std::ostream& out)
+{
+  struct Entry
+  {
+    std::string Map, Method;
+    double Dense = 0.0, Compact = 0.0, Float = 0.0, Derived = 0.0;
+    double DerivedRmse = 0.0;
+    int DerivedPairs = 0;
+    double CompactMean = 0.0, FloatMean = 0.0, CompactP99 = 0.0, FloatP99 = 0.0;
+    double CompactRmse = 0.0, FloatRmse = 0.0;
+    int Pairs = 0;
+  };
+  std::vector<Entry> entries;
+  auto entryOf = [&entries](const ReliefSweepRow& r) -> Entry&
+  {
+    const std::string method = r.IsDefault ? "default" : vtkReliefProperty::GetMethodName(r.Method);
+    for (Entry& e : entries)
+    {
+      if (e.Map == r.Map && e.Method == method)
+      {
+        return e;
+      }
+    }
+    entries.push_back({ r.Map, method });
+    return entries.back();
+  };
+  for (const ReliefSweepRow& r : rows)
+  {
+    Entry& e = entryOf(r);
+    e.Dense = r.DenseMegaBytes;
+    double& mb = r.FloatTextures ? e.Float : r.DerivedNormals ? e.Derived : e.Compact;
+    mb = std::max(mb, r.GpuMegaBytes);
+    if (OtherStorage(r))
+    {
+      continue;
+    }
+    for (const ReliefSweepRow& f : rows)
+    {
+      const bool paired = f.Map == r.Map && f.Angle == r.Angle && f.Method == r.Method &&
+        f.IsDefault == r.IsDefault && f.Step.Label == r.Step.Label;
+      if (paired && f.DerivedNormals)
+      {
+        e.DerivedRmse += f.ColorRmse;
+        ++e.DerivedPairs;
+      }
+      if (paired && f.FloatTextures)
+      {
+        e.CompactMean += r.HitMeanTexels;
+        e.FloatMean += f.HitMeanTexels;
+        e.CompactP99 += r.HitP99Texels;
+        e.FloatP99 += f.HitP99Texels;
+        e.CompactRmse += r.ColorRmse;
+        e.FloatRmse += f.ColorRmse;
+        ++e.Pairs;
+      }
+    }
+  }
+  if (entries.empty())
+  {
+    return;
+  }
+  out << "- GPU memory: the relief's textures (largest over the method's rows) against the dense "
+         "displaced mesh (32 B/vertex + 12 B/triangle); with float rows, compact vs float "
+         "storage at equal settings: hit error mean and p99 (texels) and colour RMSE, averaged "
+         "over the paired rows; with derived rows (normals derived in the shader), their MB "
+         "and colour RMSE\n"
+      << "    " << std::left << std::setw(18) << "map" << std::setw(14) << "method" << std::right
+      << std::setw(9) << "dense MB" << std::setw(11) << "compact MB" << std::setw(10) << "dense/cmp"
+      << std::setw(10) << "float MB" << std::setw(10) << "float/cmp" << std::setw(16)
+      << "mean cmp/float" << std::setw(16) << "p99 cmp/float" << std::setw(16) << "RMSE cmp/float"
+      << std::setw(8) << "drv MB" << std::setw(10) << "drv RMSE"
+      << "\n";
+  for (const Entry& e : entries)
+  {
+    auto ratio = [](double a, double b)
+    { return a > 0.0 && b > 0.0 ? Fixed(a / b, 1) + "x" : std::string("-"); };
+    auto pair = [&e](double a, double b, int precision)
+    {
+      return e.Pairs > 0 ? Fixed(a / e.Pairs, precision) + "/" + Fixed(b / e.Pairs, precision)
+                         : std::string("-");
+    };
+    out << "    " << std::left << std::setw(18) << e.Map << std::setw(14) << e.Method << std::right
+        << std::setw(9) << Fixed(e.Dense, 1) << std::setw(11)
+        << (e.Compact > 0.0 ? Fixed(e.Compact, 2) : std::string("-")) << std::setw(10)
+        << ratio(e.Dense, e.Compact) << std::setw(10)
+        << (e.Float > 0.0 ? Fixed(e.Float, 2) : std::string("-")) << std::setw(10)
+        << ratio(e.Float, e.Compact) << std::setw(16) << pair(e.CompactMean, e.FloatMean, 3)
+        << std::setw(16) << pair(e.CompactP99, e.FloatP99, 2) << std::setw(16)
+        << (e.CompactRmse >= 0.0 ? pair(e.CompactRmse, e.FloatRmse, 2) : std::string("-"))
+        << std::setw(8) << (e.Derived > 0.0 ? Fixed(e.Derived, 2) : std::string("-"))
+        << std::setw(10)
+        << (e.DerivedPairs > 0 && e.DerivedRmse >= 0.0 ? Fixed(e.DerivedRmse / e.DerivedPairs, 2)
+                                                       : std::string("-"))
+        << "\n";
+  }
+}
+} // namespace
+
 void PrintSummary(
   const ReliefSweepSettings& settings, const std::vector<ReliefSweepRow>& rows, std::ostream& out)
 {
   out << "\nSummary\n";
+  PrintStorage(rows, out);
   PrintDefaultPlace(rows, out);
   PrintConeVersusRelief(settings, rows, out);
 
@@ -409,7 +524,7 @@ void PrintSummary(
   {
     const bool exactRelief = r.Method == vtkReliefProperty::Relief && r.Step.LinearSteps == 32 &&
       r.Step.RefinementSteps == 8;
-    if (r.Angle != grazing ||
+    if (r.Angle != grazing || OtherStorage(r) ||
       !(r.IsDefault || exactRelief || r.Method == vtkReliefProperty::MaximumMipmap))
     {
       continue;

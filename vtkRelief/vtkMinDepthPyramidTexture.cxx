@@ -4,18 +4,83 @@
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLError.h"
 #include "vtkOpenGLRenderWindow.h"
+#include "vtkReliefTextureCache.h"
 #include "vtkTextureObject.h"
 #include "vtk_glew.h"
 
-#include "MinDepthPyramid.h" // Mesolight::ReliefTextures core
+#include "CompactReliefStorage.h" // Mesolight::ReliefTextures core
+#include "MinDepthPyramid.h"      // idem
 
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <cstdint>
 #include <utility>
 
 vtkStandardNewMacro(vtkMinDepthPyramidTexture);
+
+namespace
+{
+// Levels 1 and up of a min-depth pyramid as RGBA: a cell holds the minima of its four children
+// (2i, 2j), (2i+1, 2j), (2i, 2j+1), (2i+1, 2j+1) of the level below, the leftover odd child
+// folded into the last (a missing child repeats a present one's bound). The traversal reads a
+// coarser cell once for the bounds of the 2 x 2 cells below it (the minimum of the four channels
+// is the cell's own bound). Entry 0 is left empty (level 0 holds corner depths). T: float
+// (float storage) or the 16-bit depth (compact storage; minima of 16-bit values are exact).
+template <typename T>
+std::vector<std::vector<T>> PackChildMinima(
+  const std::vector<std::vector<T>>& minima, const std::vector<std::pair<int, int>>& sizes)
+{
+  std::vector<std::vector<T>> rgba(minima.size());
+  for (size_t l = 1; l < minima.size(); ++l)
+  {
+    const int lw = sizes[l].first, lh = sizes[l].second;
+    const int cw = sizes[l - 1].first, ch = sizes[l - 1].second;
+    const std::vector<T>& child = minima[l - 1];
+    rgba[l].resize(4 * static_cast<size_t>(lw) * static_cast<size_t>(lh));
+    // Children of cell n along one axis for channel c: [first, last], empty if first > last.
+    auto range = [](int node, int c, int nodes, int children, int& first, int& last)
+    {
+      first = 2 * node + c;
+      last = (c == 1 && node == nodes - 1) ? children - 1 : first;
+    };
+    for (int ny = 0; ny < lh; ++ny)
+    {
+      for (int nx = 0; nx < lw; ++nx)
+      {
+        T* c = &rgba[l][4 *
+          (static_cast<size_t>(ny) * static_cast<size_t>(lw) + static_cast<size_t>(nx))];
+        bool present[4] = { false, false, false, false };
+        for (int q = 0; q < 4; ++q)
+        {
+          int x0 = 0, x1 = 0, y0 = 0, y1 = 0;
+          range(nx, q & 1, lw, cw, x0, x1);
+          range(ny, q >> 1, lh, ch, y0, y1);
+          for (int y = y0; y <= y1 && y < ch; ++y)
+          {
+            for (int x = x0; x <= x1 && x < cw; ++x)
+            {
+              const T m =
+                child[static_cast<size_t>(y) * static_cast<size_t>(cw) + static_cast<size_t>(x)];
+              c[q] = present[q] ? std::min(c[q], m) : m;
+              present[q] = true;
+            }
+          }
+        }
+        for (int q = 1; q < 4; ++q)
+        {
+          if (!present[q])
+          {
+            c[q] = present[q & 1] ? c[q & 1] : c[0]; // a missing child: a present one's bound
+          }
+        }
+      }
+    }
+  }
+  return rgba;
+}
+} // namespace
 
 //------------------------------------------------------------------------------
 vtkMinDepthPyramidTexture::vtkMinDepthPyramidTexture() = default;
@@ -40,62 +105,14 @@ bool vtkMinDepthPyramidTexture::Upload(
     sizes.emplace_back(lw, lh);
   }
   // RGBA: level 0 holds each cell's four corner depths (the texels (k-1, k-1), (k, k-1),
-  // (k-1, k), (k, k), clamped to the texture), and a coarser cell the minima of its four children
-  // (2i, 2j), (2i+1, 2j), (2i, 2j+1), (2i+1, 2j+1), the leftover odd child folded into the last
-  // (a missing child repeats the first). The traversal then reads a level-0 cell once, for its
-  // bound and for the exact patch intersection alike, and a coarser cell once for the bounds of
-  // the 2 x 2 cells below it (the minimum of the four channels is the cell's own bound).
-  std::vector<std::vector<float>> rgba(levels.size());
-  for (size_t l = 0; l < levels.size(); ++l)
+  // (k-1, k), (k, k), clamped to the texture), so the traversal reads a level-0 cell once, for
+  // its bound and for the exact patch intersection alike; coarser cells their children's minima.
+  std::vector<std::vector<float>> rgba = PackChildMinima(levels, sizes);
+  if (!levels.empty())
   {
-    const size_t n = levels[l].size();
-    rgba[l].resize(4 * n);
-    if (l > 0)
-    {
-      const int lw = sizes[l].first, lh = sizes[l].second;
-      const int cw = sizes[l - 1].first, ch = sizes[l - 1].second;
-      const std::vector<float>& child = levels[l - 1];
-      // Children of cell n along one axis for channel c: [first, last], empty if first > last.
-      auto range = [](int node, int c, int nodes, int children, int& first, int& last)
-      {
-        first = 2 * node + c;
-        last = (c == 1 && node == nodes - 1) ? children - 1 : first;
-      };
-      for (int ny = 0; ny < lh; ++ny)
-      {
-        for (int nx = 0; nx < lw; ++nx)
-        {
-          float* c = &rgba[l][4 *
-            (static_cast<size_t>(ny) * static_cast<size_t>(lw) + static_cast<size_t>(nx))];
-          for (int q = 0; q < 4; ++q)
-          {
-            int x0 = 0, x1 = 0, y0 = 0, y1 = 0;
-            range(nx, q & 1, lw, cw, x0, x1);
-            range(ny, q >> 1, lh, ch, y0, y1);
-            float m = std::numeric_limits<float>::infinity();
-            for (int y = y0; y <= y1 && y < ch; ++y)
-            {
-              for (int x = x0; x <= x1 && x < cw; ++x)
-              {
-                m = std::min(m, child[static_cast<size_t>(y) * static_cast<size_t>(cw) +
-                                  static_cast<size_t>(x)]);
-              }
-            }
-            c[q] = m;
-          }
-          for (int q = 1; q < 4; ++q)
-          {
-            if (std::isinf(c[q]))
-            {
-              c[q] = c[q & 1] < c[q] ? c[q & 1] : c[0]; // a missing child: a present one's bound
-            }
-          }
-        }
-      }
-      continue;
-    }
     const int cw = sizes[0].first;
     const int ch = sizes[0].second;
+    rgba[0].resize(4 * static_cast<size_t>(cw) * static_cast<size_t>(ch));
     auto texel = [&](int i, int j)
     {
       i = std::min(std::max(i, 0), width - 1);
@@ -152,6 +169,7 @@ bool vtkMinDepthPyramidTexture::Upload(
     return false;
   }
   vtkOpenGLCheckErrorMacro("failed uploading the min-depth pyramid");
+  this->UploadedBytes = vtkReliefTextureCache::GetTextureBytes(pyramid);
   this->NumberOfLevels = static_cast<int>(levels.size());
   this->LevelSizes.clear();
   for (const auto& size : sizes)
@@ -163,6 +181,97 @@ bool vtkMinDepthPyramidTexture::Upload(
 }
 
 //------------------------------------------------------------------------------
+bool vtkMinDepthPyramidTexture::UploadCompact(
+  vtkOpenGLRenderWindow* renWin, const std::vector<std::uint16_t>& depth16, int width, int height)
+{
+  // Levels 1 and up (core/CompactReliefStorage.h) in 16 bits, the exact minima of the 16-bit
+  // depths, each cell holding its four children's (PackChildMinima); level 0's corners are the
+  // depth texture's texels, and its cells' minima (the children of level 1) are taken from them.
+  std::vector<int> coarseSizes;
+  const std::vector<std::vector<std::uint16_t>> coarse =
+    mesolight::CompactMinDepthPyramid(depth16.data(), width, height, coarseSizes);
+  if (coarse.empty())
+  {
+    vtkErrorMacro(<< "Could not build the min-depth pyramid of a " << width << "x" << height
+                  << " map.");
+    return false;
+  }
+  std::vector<std::pair<int, int>> levelSizes{ { width + 1, height + 1 } };
+  std::vector<std::vector<std::uint16_t>> minima(1 + coarse.size());
+  minima[0].resize(static_cast<size_t>(width + 1) * static_cast<size_t>(height + 1));
+  for (int ky = 0; ky <= height; ++ky)
+  {
+    for (int kx = 0; kx <= width; ++kx)
+    {
+      std::uint16_t m = 0xffff;
+      for (int j : { ky - 1, ky })
+      {
+        for (int i : { kx - 1, kx })
+        {
+          const size_t t = static_cast<size_t>(std::min(std::max(j, 0), height - 1)) *
+              static_cast<size_t>(width) +
+            static_cast<size_t>(std::min(std::max(i, 0), width - 1));
+          m = std::min(m, depth16[t]);
+        }
+      }
+      minima[0][static_cast<size_t>(ky) * static_cast<size_t>(width + 1) +
+        static_cast<size_t>(kx)] = m;
+    }
+  }
+  for (size_t l = 0; l < coarse.size(); ++l)
+  {
+    minima[l + 1] = coarse[l];
+    levelSizes.emplace_back(coarseSizes[2 * l], coarseSizes[2 * l + 1]);
+  }
+  const std::vector<std::vector<std::uint16_t>> packed = PackChildMinima(minima, levelSizes);
+  std::vector<int> sizes(coarseSizes);
+  std::vector<std::vector<std::uint16_t>> levels(packed.begin() + 1, packed.end());
+  if (levels.size() > 15)
+  {
+    vtkErrorMacro(<< "Relief textures above 32768 texels per side are not supported.");
+    return false;
+  }
+  if (!this->TextureObject)
+  {
+    this->TextureObject = vtkSmartPointer<vtkTextureObject>::New();
+  }
+  vtkTextureObject* pyramid = this->TextureObject;
+  pyramid->SetContext(renWin);
+  pyramid->SetInternalFormat(GL_RGBA16);
+  pyramid->SetMinificationFilter(vtkTextureObject::NearestMipmapNearest);
+  pyramid->SetMagnificationFilter(vtkTextureObject::Nearest);
+  pyramid->SetWrapS(vtkTextureObject::ClampToEdge);
+  pyramid->SetWrapT(vtkTextureObject::ClampToEdge);
+  pyramid->SetBaseLevel(0);
+  pyramid->SetMaxLevel(static_cast<int>(levels.size()) - 1);
+  if (!pyramid->Create2DFromRaw(static_cast<unsigned int>(sizes[0]),
+        static_cast<unsigned int>(sizes[1]), 4, VTK_UNSIGNED_SHORT, nullptr))
+  {
+    vtkErrorMacro(<< "Could not create the min-depth pyramid texture.");
+    return false;
+  }
+  pyramid->Bind();
+  glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
+  glPixelStorei(GL_UNPACK_SKIP_ROWS, 0);
+  glPixelStorei(GL_UNPACK_SKIP_PIXELS, 0);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 8);
+  for (size_t l = 0; l < levels.size(); ++l)
+  {
+    glTexImage2D(GL_TEXTURE_2D, static_cast<GLint>(l), GL_RGBA16, sizes[2 * l], sizes[2 * l + 1],
+      0, GL_RGBA, GL_UNSIGNED_SHORT, levels[l].data());
+  }
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, static_cast<GLint>(levels.size()) - 1);
+  pyramid->Deactivate();
+  vtkOpenGLCheckErrorMacro("failed uploading the min-depth pyramid");
+  this->UploadedBytes = vtkReliefTextureCache::GetTextureBytes(pyramid);
+  this->NumberOfLevels = static_cast<int>(levels.size()) + 1;
+  this->LevelSizes = { width + 1, height + 1 };
+  this->LevelSizes.insert(this->LevelSizes.end(), sizes.begin(), sizes.end());
+  return true;
+}
+
+//------------------------------------------------------------------------------
 void vtkMinDepthPyramidTexture::ReleaseGraphicsResources(vtkWindow* win)
 {
   if (this->TextureObject)
@@ -170,6 +279,7 @@ void vtkMinDepthPyramidTexture::ReleaseGraphicsResources(vtkWindow* win)
     this->TextureObject->ReleaseGraphicsResources(win);
   }
   this->NumberOfLevels = 0;
+  this->UploadedBytes = 0;
 }
 
 //------------------------------------------------------------------------------
@@ -177,4 +287,5 @@ void vtkMinDepthPyramidTexture::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "NumberOfLevels: " << this->NumberOfLevels << "\n";
+  os << indent << "UploadedBytes: " << this->UploadedBytes << "\n";
 }

@@ -12,6 +12,12 @@
  * filters/ReliefTextures/core/MinDepthPyramid.h). Level sizes halve rounding down, a complete
  * OpenGL mipmap, so all levels are mip levels of one RGBA float texture (uploaded by hand:
  * OpenGL would average, not take minima). 16 bytes per cell: 5.6 MB for a 512^2 map.
+ *
+ * UploadCompact (the relief texture cache's compact storage) stores levels 1 and up only, the
+ * minima of each cell's 2 x 2 children in 16 bits as the depth texture holds them (exact), as the
+ * mip levels 0.. of one GL_RGBA16 texture: 0.7 MB for a 512^2 map. Level 0 is then read from the
+ * depth texture, whose texels are the cells' corners (mlPyramidCell in
+ * vtkReliefHeightFieldFS.glsl).
  */
 
 #ifndef vtkMinDepthPyramidTexture_h
@@ -21,7 +27,8 @@
 #include "vtkObject.h"
 #include "vtkSmartPointer.h" // for TextureObject
 
-#include <vector> // for LevelSizes
+#include <cstdint> // for std::uint16_t
+#include <vector>  // for LevelSizes
 
 class vtkOpenGLRenderWindow;
 class vtkTextureObject;
@@ -40,6 +47,16 @@ public:
    */
   bool Upload(
     vtkOpenGLRenderWindow* renWin, const std::vector<float>& depth, int width, int height);
+
+  /**
+   * Builds and uploads the compact pyramid of a width x height map of 16-bit depths as the
+   * depth texture holds them. False (with an error) if the texture cannot be made.
+   */
+  bool UploadCompact(vtkOpenGLRenderWindow* renWin, const std::vector<std::uint16_t>& depth16,
+    int width, int height);
+
+  /** Bytes the uploaded pyramid occupies on the GPU (all levels); 0 when not built. */
+  vtkGetMacro(UploadedBytes, vtkIdType);
 
   /** Marks the pyramid as not built (its relief texture changed). */
   void Reset() { this->NumberOfLevels = 0; }
@@ -61,6 +78,7 @@ protected:
 
   vtkSmartPointer<vtkTextureObject> TextureObject;
   int NumberOfLevels = 0;
+  vtkIdType UploadedBytes = 0;
   std::vector<int> LevelSizes;
 
 private:

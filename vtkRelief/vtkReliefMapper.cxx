@@ -8,13 +8,16 @@
 #include "vtkInformation.h"
 #include "vtkLight.h"
 #include "vtkMath.h"
+#include "vtkMinDepthPyramidTexture.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLHelper.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkReliefGeometryCache.h"
 #include "vtkReliefShading.h"
+#include "vtkReliefTextureCache.h"
 #include "vtkRenderer.h"
 #include "vtkShader.h"
+#include "vtkTextureObject.h"
 
 #include <algorithm>
 
@@ -77,6 +80,12 @@ void vtkReliefMapper::SetReliefTextureData(vtkImageData* image)
 void vtkReliefMapper::SetReliefTextureConnection(vtkAlgorithmOutput* output)
 {
   this->SetInputConnection(1, output);
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkReliefMapper::GetReliefTextureBytes()
+{
+  return this->Shading->GetReliefTextureCache()->GetUploadedBytes();
 }
 
 //------------------------------------------------------------------------------

@@ -87,6 +87,13 @@ public:
   vtkImageData* GetReliefTexture();
   ///@}
 
+  /**
+   * Bytes the relief's textures took on the GPU at the last render (depth, normals, cones,
+   * pyramid, all mip levels, as OpenGL reports their sizes and formats); 0 before it. What is
+   * uploaded depends on the method and vtkReliefProperty::FloatTextures.
+   */
+  vtkIdType GetReliefTextureBytes();
+
   ///@{
   /**
    * An image-based light set, lighting the surface besides the renderer's lights: an N x 2 float

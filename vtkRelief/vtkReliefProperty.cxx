@@ -135,6 +135,8 @@ void vtkReliefProperty::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Silhouettes: " << (this->Silhouettes ? "On" : "Off") << "\n";
   os << indent << "WriteDepth: " << (this->WriteDepth ? "On" : "Off") << "\n";
   os << indent << "RepeatTexture: " << (this->RepeatTexture ? "On" : "Off") << "\n";
+  os << indent << "FloatTextures: " << (this->FloatTextures ? "On" : "Off") << "\n";
+  os << indent << "DeriveNormals: " << (this->DeriveNormals ? "On" : "Off") << "\n";
   os << indent << "Output: " << this->Output << "\n";
   os << indent << "AdaptiveSteps: " << (this->AdaptiveSteps ? "On" : "Off") << "\n";
   os << indent << "MinimumSteps: " << this->MinimumSteps << "\n";

@@ -202,6 +202,26 @@ public:
   ///@}
 
   ///@{
+  /**
+   * How the relief is stored on the GPU (vtkReliefTextureCache). By default compactly, with
+   * only what the method reads: 16-bit depth, 8-bit normals (octahedral), 8-bit cone ratios for
+   * cone methods, a 16-bit min-depth pyramid for MaximumMipmap: 4 to 5 bytes per texel, the hits as
+   * exact as with float textures. FloatTextures: the float RGBA texture and float pyramid instead
+   * (16 to 37 bytes per texel); off by default, on only to measure what compact storage costs.
+   * DeriveNormals: no normals uploaded when they are the Sobel normals of the depth (as
+   * vtkReliefTextureFilter bakes them; checked at upload, else they are uploaded): the shader
+   * derives them from 16 depth texels, 2 bytes per texel less for more fetches. Default off
+   * (1.65x the frame time on Mesa llvmpipe). Both: mesolight bench relief --texture-storage.
+   */
+  vtkSetMacro(FloatTextures, bool);
+  vtkGetMacro(FloatTextures, bool);
+  vtkBooleanMacro(FloatTextures, bool);
+  vtkSetMacro(DeriveNormals, bool);
+  vtkGetMacro(DeriveNormals, bool);
+  vtkBooleanMacro(DeriveNormals, bool);
+  ///@}
+
+  ///@{
   /** Repeat the relief texture outside [0,1] (tiling) instead of clamping. Default off. */
   vtkSetMacro(RepeatTexture, bool);
   vtkGetMacro(RepeatTexture, bool);
@@ -292,6 +312,8 @@ protected:
   bool Silhouettes = true;
   bool WriteDepth = true;
   bool RepeatTexture = false;
+  bool FloatTextures = false;
+  bool DeriveNormals = false;
   int Output = ShadedOutput;
   bool AdaptiveSteps = false;
   int MinimumSteps = 4;

@@ -77,6 +77,13 @@ void vtkReliefShaderSource::Configure(vtkReliefProperty* property, bool albedoTe
 }
 
 //------------------------------------------------------------------------------
+void vtkReliefShaderSource::SetTextureLayout(bool floatTextures, bool storedNormals)
+{
+  this->FloatTextures = floatTextures;
+  this->StoredNormals = storedNormals;
+}
+
+//------------------------------------------------------------------------------
 std::string vtkReliefShaderSource::Key() const
 {
   vtkReliefProperty* p = this->Property;
@@ -86,7 +93,10 @@ std::string vtkReliefShaderSource::Key() const
     (this->ConePacked ? "C" : "c") + (p->GetAdaptiveSteps() ? "V" : "v") +
     (p->GetLevelOfDetail() ? "L" : "l") + (this->HasLightSet ? "I" : "i") +
     (p->GetToneMapping() ? "T" : "t") + (p->GetShadowCulling() ? "K" : "k") +
-    (this->HasIrradianceProbes ? "P" : "p") + (p->GetEncodeSRGB() ? "G" : "g");
+    (this->HasIrradianceProbes ? "P" : "p") + (p->GetEncodeSRGB() ? "G" : "g") +
+    (this->FloatTextures      ? "F"
+        : this->StoredNormals ? "N"
+                              : "f");
 }
 
 //------------------------------------------------------------------------------
@@ -160,6 +170,14 @@ void vtkReliefShaderSource::ReplaceValuesAfter(std::string& fs, const void* cell
   if (this->ConePacked)
   {
     defines += "#define ML_CONE_PACKED\n";
+  }
+  if (this->FloatTextures)
+  {
+    defines += "#define ML_FLOAT_TEXTURES\n";
+  }
+  else if (this->StoredNormals)
+  {
+    defines += "#define ML_STORED_NORMALS\n";
   }
   if (p->GetAdaptiveSteps())
   {

@@ -36,6 +36,12 @@ public:
   void Configure(vtkReliefProperty* property, bool albedoTexture, bool conePacked, bool lightSet,
     bool irradianceProbes);
 
+  /**
+   * How the relief texture is stored (vtkReliefTextureCache): the float RGBA layout, or the
+   * compact one with the normals uploaded (storedNormals) or derived from the depth.
+   */
+  void SetTextureLayout(bool floatTextures, bool storedNormals);
+
   /** Whether the shader recorded for this helper (cellBO) was built for another variant. */
   bool KeyChanged(const void* cellBO) const;
 
@@ -63,6 +69,8 @@ protected:
   bool ConePacked = false;
   bool HasLightSet = false;
   bool HasIrradianceProbes = false;
+  bool FloatTextures = false;
+  bool StoredNormals = false;
   std::map<const void*, std::string> Keys;
 
 private:

@@ -115,14 +115,18 @@ bool vtkReliefShading::StartDraw(vtkOpenGLRenderWindow* renWin, vtkReliefPropert
   }
   const int method = property->GetMethod();
   const bool maximumMipmap = method == vtkReliefProperty::MaximumMipmap;
-  if (!this->ReliefTexture->Update(renWin, relief, property->GetLevelOfDetail(), maximumMipmap) ||
+  const int requiredCones = vtkReliefProperty::GetRequiredConeMap(method);
+  // Only what the method reads is uploaded: the pyramid for MaximumMipmap, cones for cone methods.
+  if (!this->ReliefTexture->Update(renWin, relief, property->GetLevelOfDetail(), maximumMipmap,
+        requiredCones != vtkReliefProperty::NoConeMap, property->GetFloatTextures(),
+        property->GetDeriveNormals()) ||
     !this->LightSet->Update(renWin, lights))
   {
     return false;
   }
   this->Probes->Update(renWin, probes); // malformed probes: reported, drawn without them
-  const int requiredCones = vtkReliefProperty::GetRequiredConeMap(method);
-  if (requiredCones != vtkReliefProperty::NoConeMap && !this->ReliefTexture->GetConePacked())
+  if (requiredCones != vtkReliefProperty::NoConeMap &&
+    this->ReliefTexture->GetConeMap() == vtkReliefProperty::NoConeMap)
   {
     vtkErrorMacro(<< "Method '" << vtkReliefProperty::GetMethodName(method)
                   << "' needs a relief texture with cone ratios. In ParaView: apply Mesolight "
@@ -165,12 +169,11 @@ bool vtkReliefShading::StartDraw(vtkOpenGLRenderWindow* renWin, vtkReliefPropert
   this->ShaderSource->Configure(property, actor->GetTexture() != nullptr,
     this->ReliefTexture->GetConePacked(), this->LightSet->GetHasLightSet(),
     this->Probes->GetHasProbes());
-  vtkTextureObject* texture = this->ReliefTexture->GetTextureObject();
+  this->ShaderSource->SetTextureLayout(
+    this->ReliefTexture->GetFloatTextures(), this->ReliefTexture->GetNormalsStored());
   const int wrap =
     property->GetRepeatTexture() ? vtkTextureObject::Repeat : vtkTextureObject::ClampToEdge;
-  texture->SetWrapS(wrap);
-  texture->SetWrapT(wrap);
-  texture->Activate();
+  this->ReliefTexture->ActivateTextures(wrap);
   this->PyramidActive = maximumMipmap;
   if (this->PyramidActive)
   {
@@ -197,7 +200,7 @@ void vtkReliefShading::FinishDraw()
   {
     return;
   }
-  this->ReliefTexture->GetTextureObject()->Deactivate();
+  this->ReliefTexture->DeactivateTextures();
   if (this->PyramidActive)
   {
     this->ReliefTexture->GetPyramid()->GetTextureObject()->Deactivate();
@@ -241,7 +244,7 @@ void vtkReliefShading::SetShaderParameters(
   }
   vtkReliefProperty* p = this->Property;
   vtkReliefTextureCache* relief = this->ReliefTexture;
-  program->SetUniformi("mlReliefTexture", relief->GetTextureObject()->GetTextureUnit());
+  relief->SetShaderParameters(program);
   const bool hasBaked = relief->GetBakedDepthScale() >= 0.0;
   const double depthScale = hasBaked && p->GetUseTextureDepthScale()
     ? std::min(relief->GetBakedDepthScale(), 10.0)
@@ -397,6 +400,12 @@ void vtkReliefShading::SetLightUniforms(vtkShaderProgram* program, vtkRenderer* 
   program->SetUniform1fv("mlLightConeAngle", MaximumNumberOfLights, coneAngle);
   program->SetUniform1fv("mlLightExponent", MaximumNumberOfLights, exponent);
   program->SetUniform1iv("mlLightPositional", MaximumNumberOfLights, positional);
+}
+
+//------------------------------------------------------------------------------
+vtkReliefTextureCache* vtkReliefShading::GetReliefTextureCache()
+{
+  return this->ReliefTexture;
 }
 
 //------------------------------------------------------------------------------

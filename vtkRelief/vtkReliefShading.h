@@ -75,6 +75,9 @@ public:
   /** The prepared copies of the mapper's inputs. */
   vtkReliefGeometryCache* GetGeometryCache();
 
+  /** The relief's textures on the GPU (formats, bytes uploaded). */
+  vtkReliefTextureCache* GetReliefTextureCache();
+
   /**
    * Uploads the relief texture, the light set and the irradiance probes (null: none) when they
    * changed, and activates the textures for a draw with these settings and this actor. False

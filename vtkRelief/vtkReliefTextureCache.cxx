@@ -14,12 +14,17 @@
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkPointData.h"
 #include "vtkReliefProperty.h"
+#include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
 #include "vtkVariant.h"
+
+#include "CompactReliefStorage.h" // Mesolight::ReliefTextures core
+#include "ConeMaps.h"             // idem
 
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -42,12 +47,121 @@ int ConeTypeOf(vtkImageData* image)
     ? vtkReliefProperty::ConservativeConeMap
     : vtkReliefProperty::RelaxedConeMap;
 }
+
+// Channel c of every texel as a depth-like value in [0, 1] (bytes / 255), NaN kept for the
+// caller to refuse.
+void ReadChannel(vtkDataArray* scalars, vtkIdType count, int c, bool bytes, float* out)
+{
+  if (scalars->GetDataType() == VTK_FLOAT)
+  {
+    const float* v = static_cast<const float*>(scalars->GetVoidPointer(0));
+    for (vtkIdType i = 0; i < count; ++i)
+    {
+      out[i] = v[4 * i + c];
+    }
+    return;
+  }
+  if (bytes)
+  {
+    const unsigned char* v = static_cast<const unsigned char*>(scalars->GetVoidPointer(0));
+    for (vtkIdType i = 0; i < count; ++i)
+    {
+      out[i] = static_cast<float>(v[4 * i + c]) / 255.f;
+    }
+    return;
+  }
+  for (vtkIdType i = 0; i < count; ++i)
+  {
+    out[i] = static_cast<float>(scalars->GetComponent(i, c));
+  }
+}
+
+int MipLevels(int w, int h)
+{
+  int levels = 1;
+  while ((std::max(w, h) >> levels) > 0)
+  {
+    ++levels;
+  }
+  return levels;
+}
+
+// Makes texture a w x h 2D texture of internalFormat from tightly packed rows of data (format,
+// type), with linear filtering and, when asked, a generated mip chain.
+bool CreateTexture(vtkTextureObject* texture, vtkOpenGLRenderWindow* renWin, int w, int h,
+  int components, int vtkType, unsigned int internalFormat, unsigned int format, unsigned int type,
+  const void* data, bool mipmaps)
+{
+  texture->SetContext(renWin);
+  texture->SetInternalFormat(internalFormat);
+  texture->SetGenerateMipmap(false);
+  texture->SetMinificationFilter(
+    mipmaps ? vtkTextureObject::LinearMipmapLinear : vtkTextureObject::Linear);
+  texture->SetMagnificationFilter(vtkTextureObject::Linear);
+  // vtkTextureObject's MaxLevel defaults to 0, which clamps every lookup to the base level
+  // whatever the filter and textureLod ask for: open it to the whole mip chain.
+  texture->SetBaseLevel(0);
+  texture->SetMaxLevel(mipmaps ? MipLevels(w, h) - 1 : 0);
+  // Allocated here, filled below with byte-aligned rows (8- and 16-bit rows of any width).
+  if (!texture->Create2DFromRaw(
+        static_cast<unsigned int>(w), static_cast<unsigned int>(h), components, vtkType, nullptr))
+  {
+    return false;
+  }
+  texture->Bind();
+  glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
+  glPixelStorei(GL_UNPACK_SKIP_ROWS, 0);
+  glPixelStorei(GL_UNPACK_SKIP_PIXELS, 0);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, w, h, format, type, data);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  if (mipmaps)
+  {
+    glGenerateMipmap(GL_TEXTURE_2D);
+  }
+  texture->Deactivate();
+  return glGetError() == GL_NO_ERROR;
+}
 } // namespace
+
+//------------------------------------------------------------------------------
+vtkIdType vtkReliefTextureCache::GetTextureBytes(vtkTextureObject* texture)
+{
+  if (!texture || texture->GetHandle() == 0)
+  {
+    return 0;
+  }
+  texture->Bind();
+  vtkIdType bytes = 0;
+  for (int level = 0; level < 32; ++level)
+  {
+    GLint w = 0, h = 0;
+    glGetTexLevelParameteriv(GL_TEXTURE_2D, level, GL_TEXTURE_WIDTH, &w);
+    glGetTexLevelParameteriv(GL_TEXTURE_2D, level, GL_TEXTURE_HEIGHT, &h);
+    if (w <= 0 || h <= 0)
+    {
+      break;
+    }
+    GLint bits = 0;
+    for (GLenum channel :
+      { GL_TEXTURE_RED_SIZE, GL_TEXTURE_GREEN_SIZE, GL_TEXTURE_BLUE_SIZE, GL_TEXTURE_ALPHA_SIZE })
+    {
+      GLint b = 0;
+      glGetTexLevelParameteriv(GL_TEXTURE_2D, level, channel, &b);
+      bits += b;
+    }
+    bytes += static_cast<vtkIdType>(w) * h * ((bits + 7) / 8);
+  }
+  texture->Deactivate();
+  return bytes;
+}
 
 //------------------------------------------------------------------------------
 vtkReliefTextureCache::vtkReliefTextureCache()
 {
   this->TextureObject = vtkSmartPointer<vtkTextureObject>::New();
+  this->NormalTexture = vtkSmartPointer<vtkTextureObject>::New();
+  this->ConeTexture = vtkSmartPointer<vtkTextureObject>::New();
   this->Pyramid = vtkSmartPointer<vtkMinDepthPyramidTexture>::New();
 }
 
@@ -57,25 +171,31 @@ vtkReliefTextureCache::~vtkReliefTextureCache() = default;
 //------------------------------------------------------------------------------
 bool vtkReliefTextureCache::GetConePacked() const
 {
-  return this->ConeMap != vtkReliefProperty::NoConeMap;
+  return this->FloatTextures ? this->ConeMap != vtkReliefProperty::NoConeMap : this->ConesUploaded;
 }
 
 //------------------------------------------------------------------------------
-bool vtkReliefTextureCache::Update(
-  vtkOpenGLRenderWindow* renWin, vtkImageData* image, bool mipmaps, bool needPyramid)
+bool vtkReliefTextureCache::Update(vtkOpenGLRenderWindow* renWin, vtkImageData* image, bool mipmaps,
+  bool needPyramid, bool needCones, bool floatTextures, bool deriveNormals)
 {
-  // Upload again when the image changed, or when mipmaps or the pyramid are newly needed.
   vtkDataArray* scalars = image->GetPointData()->GetScalars();
-  if (scalars && scalars == this->Uploaded && scalars->GetMTime() <= this->UploadTime &&
-    this->TextureObject->GetHandle() != 0 && this->TextureObject->GetContext() == renWin &&
-    this->UploadedWithMipmaps == mipmaps &&
-    (!needPyramid || this->Pyramid->GetNumberOfLevels() > 0))
+  const bool baseCurrent = scalars && scalars == this->Uploaded &&
+    scalars->GetMTime() <= this->UploadTime && this->TextureObject->GetHandle() != 0 &&
+    this->TextureObject->GetContext() == renWin && this->UploadedWithMipmaps == mipmaps &&
+    this->FloatTextures == floatTextures && (floatTextures || this->DeriveNormals == deriveNormals);
+  const bool wantCones =
+    !floatTextures && needCones && ConeTypeOf(image) != vtkReliefProperty::NoConeMap;
+  const bool havePyramid = this->Pyramid->GetNumberOfLevels() > 0;
+  if (baseCurrent && this->ConesUploaded == wantCones && havePyramid == needPyramid)
   {
     return this->Ready;
   }
-  this->Uploaded = scalars;
-  this->UploadTime = scalars ? scalars->GetMTime() : 0;
   this->Ready = false;
+  if (!baseCurrent)
+  {
+    this->Uploaded = scalars;
+    this->UploadTime = scalars ? scalars->GetMTime() : 0;
+  }
 
   int dims[3];
   image->GetDimensions(dims);
@@ -98,10 +218,157 @@ bool vtkReliefTextureCache::Update(
   }
   const bool bytes = scalars->GetDataType() == VTK_UNSIGNED_CHAR;
   this->ConeMap = ConeTypeOf(image);
-  const bool conePacked = this->GetConePacked();
+  const vtkIdType count = static_cast<vtkIdType>(dims[0]) * dims[1];
+  const size_t n = static_cast<size_t>(count);
+
+  // Every channel once: refused if not finite, whatever is uploaded of it.
+  std::vector<float> channel(n);
+  std::vector<float> depth(n);
+  std::vector<float> normalXY;
+  std::vector<float> normalZ; // empty for cone maps, whose B holds cones: z is rebuilt
+  for (int c = 3; c >= 0; --c)
+  {
+    ReadChannel(scalars, count, c, bytes, channel.data());
+    for (size_t i = 0; i < n; ++i)
+    {
+      if (!std::isfinite(channel[i]))
+      {
+        vtkErrorMacro(<< "The relief texture has a non-finite value at texel " << i
+                      << " (component " << c << "); NaN or Inf cannot be rendered.");
+        return false;
+      }
+    }
+    if (c == 3)
+    {
+      for (size_t i = 0; i < n; ++i)
+      {
+        depth[i] = vtkMath::ClampValue(channel[i], 0.f, 1.f);
+      }
+    }
+    else if (c < 2 && !floatTextures)
+    {
+      normalXY.resize(2 * n);
+      for (size_t i = 0; i < n; ++i)
+      {
+        normalXY[2 * i + c] = 2.f * vtkMath::ClampValue(channel[i], 0.f, 1.f) - 1.f;
+      }
+    }
+    else if (c == 2 && !floatTextures && this->ConeMap == vtkReliefProperty::NoConeMap)
+    {
+      normalZ.resize(n);
+      for (size_t i = 0; i < n; ++i)
+      {
+        normalZ[i] = 2.f * vtkMath::ClampValue(channel[i], 0.f, 1.f) - 1.f;
+      }
+    }
+  }
+
+  this->BakedDepthScale = -1.0;
+  if (vtkDataArray* baked = image->GetFieldData()->GetArray("MesolightDepthScale"))
+  {
+    if (baked->GetNumberOfTuples() > 0)
+    {
+      this->BakedDepthScale = baked->GetComponent(0, 0);
+    }
+  }
+
+  std::vector<std::uint16_t> depth16;
+  if (!baseCurrent)
+  {
+    this->UploadedWithMipmaps = mipmaps;
+    this->FloatTextures = floatTextures;
+    this->DeriveNormals = deriveNormals;
+    this->NormalTexture->ReleaseGraphicsResources(renWin);
+    this->NormalsStored = false;
+    this->NormalMismatch = -1.0;
+    this->BaseBytes = 0;
+    if (floatTextures)
+    {
+      if (!this->UploadFloat(renWin, scalars, dims, bytes, mipmaps))
+      {
+        return false;
+      }
+    }
+    else if (!this->UploadCompact(
+               renWin, depth, normalXY, normalZ, dims, mipmaps, deriveNormals, depth16))
+    {
+      return false;
+    }
+  }
+  this->Size[0] = dims[0];
+  this->Size[1] = dims[1];
+
+  // Cone ratios, only for the cone methods (compact storage; float storage has them in B).
+  if (this->ConesUploaded != wantCones || !baseCurrent)
+  {
+    this->ConeTexture->ReleaseGraphicsResources(renWin);
+    this->ConesUploaded = false;
+    this->ConeBytes = 0;
+    if (wantCones)
+    {
+      ReadChannel(scalars, count, 2, bytes, channel.data());
+      std::vector<std::uint8_t> cones(n);
+      for (size_t i = 0; i < n; ++i)
+      {
+        // 8-bit maps hold the code already; 255 (an infinite cone) is kept finite for the
+        // shader's decoding, a narrower cone.
+        const int code = bytes ? static_cast<int>(std::lround(channel[i] * 255.f))
+                               : mesolight::EncodeConeRatio8(channel[i]);
+        cones[i] = static_cast<std::uint8_t>(std::min(code, 254));
+      }
+      if (!CreateTexture(this->ConeTexture, renWin, dims[0], dims[1], 1, VTK_UNSIGNED_CHAR, GL_R8,
+            GL_RED, GL_UNSIGNED_BYTE, cones.data(), false))
+      {
+        vtkErrorMacro(<< "Could not create the " << dims[0] << "x" << dims[1]
+                      << " cone ratio texture.");
+        return false;
+      }
+      this->ConesUploaded = true;
+      this->ConeBytes = GetTextureBytes(this->ConeTexture);
+    }
+  }
+
+  if (havePyramid != needPyramid || !baseCurrent)
+  {
+    this->Pyramid->ReleaseGraphicsResources(renWin);
+    if (needPyramid)
+    {
+      if (floatTextures)
+      {
+        if (!this->Pyramid->Upload(renWin, depth, dims[0], dims[1]))
+        {
+          return false;
+        }
+      }
+      else
+      {
+        if (depth16.empty())
+        {
+          depth16.resize(n);
+          for (size_t i = 0; i < n; ++i)
+          {
+            depth16[i] = mesolight::QuantizeDepth16(depth[i]);
+          }
+        }
+        if (!this->Pyramid->UploadCompact(renWin, depth16, dims[0], dims[1]))
+        {
+          return false;
+        }
+      }
+    }
+  }
+  this->UploadedBytes = this->BaseBytes + this->ConeBytes + this->Pyramid->GetUploadedBytes();
+  this->Ready = true;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkReliefTextureCache::UploadFloat(
+  vtkOpenGLRenderWindow* renWin, vtkDataArray* scalars, const int dims[3], bool bytes, bool mipmaps)
+{
+  const bool conePacked = this->ConeMap != vtkReliefProperty::NoConeMap;
   const vtkIdType count = static_cast<vtkIdType>(dims[0]) * dims[1];
   std::vector<float> texels(static_cast<size_t>(count) * 4);
-  std::vector<float> depth(needPyramid ? static_cast<size_t>(count) : 0);
   for (vtkIdType i = 0; i < count; ++i)
   {
     for (int c = 0; c < 4; ++c)
@@ -110,12 +377,6 @@ bool vtkReliefTextureCache::Update(
       if (bytes)
       {
         value /= 255.0;
-      }
-      if (!std::isfinite(value))
-      {
-        vtkErrorMacro(<< "The relief texture has a non-finite value at texel " << i
-                      << " (component " << c << "); NaN or Inf cannot be rendered.");
-        return false;
       }
       if (c == 2 && conePacked)
       {
@@ -128,66 +389,148 @@ bool vtkReliefTextureCache::Update(
       }
       texels[static_cast<size_t>(i) * 4 + c] = static_cast<float>(value);
     }
-    if (needPyramid)
-    {
-      depth[static_cast<size_t>(i)] = texels[static_cast<size_t>(i) * 4 + 3];
-    }
   }
-
-  this->TextureObject->SetContext(renWin);
-  this->TextureObject->SetGenerateMipmap(mipmaps);
-  this->TextureObject->SetMinificationFilter(
-    mipmaps ? vtkTextureObject::LinearMipmapLinear : vtkTextureObject::Linear);
-  this->TextureObject->SetMagnificationFilter(vtkTextureObject::Linear);
-  // vtkTextureObject's MaxLevel defaults to 0, which clamps every lookup to the base level
-  // whatever the filter and textureLod ask for: open it to the whole mip chain.
-  int levels = 1;
-  while ((std::max(dims[0], dims[1]) >> levels) > 0)
-  {
-    ++levels;
-  }
-  this->TextureObject->SetBaseLevel(0);
-  this->TextureObject->SetMaxLevel(mipmaps ? levels - 1 : 0);
-  this->UploadedWithMipmaps = mipmaps;
-  if (!this->TextureObject->Create2DFromRaw(static_cast<unsigned int>(dims[0]),
-        static_cast<unsigned int>(dims[1]), 4, VTK_FLOAT, texels.data()))
+  if (!CreateTexture(this->TextureObject, renWin, dims[0], dims[1], 4, VTK_FLOAT, GL_RGBA32F,
+        GL_RGBA, GL_FLOAT, texels.data(), mipmaps))
   {
     vtkErrorMacro(<< "Could not create a " << dims[0] << "x" << dims[1]
                   << " float RGBA texture (too large for this OpenGL implementation?).");
     return false;
   }
-  if (mipmaps)
+  vtkOpenGLCheckErrorMacro("failed uploading the relief texture");
+  this->DepthBits = 32;
+  this->BaseBytes = GetTextureBytes(this->TextureObject);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkReliefTextureCache::UploadCompact(vtkOpenGLRenderWindow* renWin,
+  const std::vector<float>& depth, const std::vector<float>& normalXY,
+  const std::vector<float>& normalZ, const int dims[3], bool mipmaps, bool deriveNormals,
+  std::vector<std::uint16_t>& depth16)
+{
+  // Depth in 16 bits, also for 8-bit maps (exact either way): filtered 8-bit textures come back
+  // with 8-bit precision on some implementations (Mesa llvmpipe), which moved the hits.
+  const size_t n = depth.size();
+  depth16.resize(n);
+  for (size_t i = 0; i < n; ++i)
   {
-    // Create2DFromRaw uploads level 0 only (VTK 9.1 and 9.2 generate mipmaps for cube maps
-    // alone, whatever SetGenerateMipmap says); the coarser levels are made here.
-    this->TextureObject->Activate();
-    glGenerateMipmap(GL_TEXTURE_2D);
-    this->TextureObject->Deactivate();
-    vtkOpenGLCheckErrorMacro("failed generating the relief texture's mipmaps");
+    depth16[i] = mesolight::QuantizeDepth16(depth[i]);
   }
-  this->Size[0] = dims[0];
-  this->Size[1] = dims[1];
-  this->BakedDepthScale = -1.0;
-  if (vtkDataArray* baked = image->GetFieldData()->GetArray("MesolightDepthScale"))
+  this->DepthBits = 16;
+  if (!CreateTexture(this->TextureObject, renWin, dims[0], dims[1], 1, VTK_UNSIGNED_SHORT, GL_R16,
+        GL_RED, GL_UNSIGNED_SHORT, depth16.data(), mipmaps))
   {
-    if (baked->GetNumberOfTuples() > 0)
-    {
-      this->BakedDepthScale = baked->GetComponent(0, 0);
-    }
-  }
-  this->Pyramid->Reset();
-  if (needPyramid && !this->Pyramid->Upload(renWin, depth, dims[0], dims[1]))
-  {
+    vtkErrorMacro(<< "Could not create a " << dims[0] << "x" << dims[1]
+                  << " 16-bit depth texture (too large for this OpenGL implementation?).");
     return false;
   }
-  this->Ready = true;
+  this->BaseBytes = GetTextureBytes(this->TextureObject);
+
+  // Normals derived in the shader when asked and they are the Sobel normals of this depth, as
+  // vtkReliefTextureFilter bakes them (Mendez Fernandez's thesis, section 3.2); else uploaded.
+  this->NormalsStored = true;
+  if (deriveNormals && this->BakedDepthScale > 0.0)
+  {
+    std::vector<float> uploaded(n);
+    for (size_t i = 0; i < n; ++i)
+    {
+      uploaded[i] = static_cast<float>(depth16[i]) / 65535.f;
+    }
+    this->NormalMismatch = mesolight::SobelNormalMismatch(
+      uploaded.data(), normalXY.data(), dims[0], dims[1], this->BakedDepthScale);
+    // About one degree: 8-bit baked normals are within 1/127 of the float ones.
+    const double tolerance = 0.02;
+    this->NormalsStored = !(this->NormalMismatch <= tolerance);
+  }
+  if (this->NormalsStored)
+  {
+    // Hemispherical octahedral coordinates (Cigolle et al., "A Survey of Efficient
+    // Representations for Independent Unit Vectors", JCGT 2014), signed normalised: 8 bits err
+    // alike in every direction, where x, y with z rebuilt lose the steep normals of walls
+    // (z = sqrt(1 - x^2 - y^2) is ill-conditioned there), and a flat normal's 0 is exact.
+    std::vector<std::int8_t> xy(2 * n);
+    for (size_t i = 0; i < n; ++i)
+    {
+      const float x = normalXY[2 * i], y = normalXY[2 * i + 1];
+      const float z =
+        normalZ.empty() ? std::sqrt(std::max(0.f, 1.f - x * x - y * y)) : std::max(normalZ[i], 0.f);
+      const float l1 = std::fabs(x) + std::fabs(y) + z;
+      const float px = l1 > 0.f ? x / l1 : 0.f, py = l1 > 0.f ? y / l1 : 0.f;
+      xy[2 * i] =
+        static_cast<std::int8_t>(std::lround(vtkMath::ClampValue(px + py, -1.f, 1.f) * 127.f));
+      xy[2 * i + 1] =
+        static_cast<std::int8_t>(std::lround(vtkMath::ClampValue(px - py, -1.f, 1.f) * 127.f));
+    }
+    if (!CreateTexture(this->NormalTexture, renWin, dims[0], dims[1], 2, VTK_SIGNED_CHAR,
+          GL_RG8_SNORM, GL_RG, GL_BYTE, xy.data(), mipmaps))
+    {
+      vtkErrorMacro(<< "Could not create the " << dims[0] << "x" << dims[1] << " normal texture.");
+      return false;
+    }
+    this->BaseBytes += GetTextureBytes(this->NormalTexture);
+  }
+  vtkOpenGLCheckErrorMacro("failed uploading the relief texture");
   return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkReliefTextureCache::ActivateTextures(int wrap)
+{
+  this->Repeat = wrap == vtkTextureObject::Repeat;
+  for (vtkTextureObject* t :
+    { this->TextureObject.Get(), this->NormalTexture.Get(), this->ConeTexture.Get() })
+  {
+    if (t == this->TextureObject || (t == this->NormalTexture && this->NormalsStored) ||
+      (t == this->ConeTexture && this->ConesUploaded))
+    {
+      t->SetWrapS(wrap);
+      t->SetWrapT(wrap);
+      t->Activate();
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkReliefTextureCache::DeactivateTextures()
+{
+  this->TextureObject->Deactivate();
+  if (this->NormalsStored)
+  {
+    this->NormalTexture->Deactivate();
+  }
+  if (this->ConesUploaded)
+  {
+    this->ConeTexture->Deactivate();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkReliefTextureCache::SetShaderParameters(vtkShaderProgram* program)
+{
+  program->SetUniformi("mlReliefTexture", this->TextureObject->GetTextureUnit());
+  if (!this->FloatTextures)
+  {
+    program->SetUniformi("mlRepeatTexture", this->Repeat ? 1 : 0);
+  }
+  if (this->NormalsStored && !this->FloatTextures)
+  {
+    program->SetUniformi("mlNormalTexture", this->NormalTexture->GetTextureUnit());
+  }
+  if (this->ConesUploaded && !this->FloatTextures)
+  {
+    program->SetUniformi("mlConeTexture", this->ConeTexture->GetTextureUnit());
+  }
 }
 
 //------------------------------------------------------------------------------
 void vtkReliefTextureCache::ReleaseGraphicsResources(vtkWindow* win)
 {
   this->TextureObject->ReleaseGraphicsResources(win);
+  this->NormalTexture->ReleaseGraphicsResources(win);
+  this->ConeTexture->ReleaseGraphicsResources(win);
+  this->ConesUploaded = false;
+  this->NormalsStored = false;
   this->Pyramid->ReleaseGraphicsResources(win);
   this->Uploaded = nullptr;
 }
@@ -199,5 +542,11 @@ void vtkReliefTextureCache::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Size: " << this->Size[0] << " x " << this->Size[1] << "\n";
   os << indent << "ConeMap: " << this->ConeMap << "\n";
   os << indent << "BakedDepthScale: " << this->BakedDepthScale << "\n";
+  os << indent << "FloatTextures: " << (this->FloatTextures ? "yes" : "no") << "\n";
+  os << indent << "DepthBits: " << this->DepthBits << "\n";
+  os << indent << "NormalsStored: " << (this->NormalsStored ? "yes" : "no") << "\n";
+  os << indent << "NormalMismatch: " << this->NormalMismatch << "\n";
+  os << indent << "ConesUploaded: " << (this->ConesUploaded ? "yes" : "no") << "\n";
+  os << indent << "UploadedBytes: " << this->UploadedBytes << "\n";
   os << indent << "Ready: " << (this->Ready ? "yes" : "no") << "\n";
 }

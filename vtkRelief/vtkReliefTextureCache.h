@@ -7,9 +7,25 @@
  *
  * The image is a float or unsigned char RGBA image: normal packed in RGB as (n+1)/2, depth in A
  * (vtkReliefTextureFilter), or vtkConeMapFilter's cone map (cone ratios in B, field data
- * "MesolightConeType"). It is uploaded as float RGBA, 8-bit values divided by 255; cone ratios
- * stored as c / (1 + c) in 8-bit maps are decoded. Uploads are keyed by the scalar array
- * and its modification time, since images rebuilt from field data wrap the same array.
+ * "MesolightConeType"); 8-bit cone ratios are stored as c / (1 + c). Uploads are keyed by the
+ * scalar array and its modification time, since images rebuilt from field data wrap the same
+ * array.
+ *
+ * Compact storage (the default) uploads only what the method reads, in as few bits as keep the
+ * hits exact (core/CompactReliefStorage.h):
+ *  - depth in 16 bits (GL_R16; 8-bit maps too: some implementations filter 8-bit textures to
+ *    8-bit results, which moves the hits);
+ *  - the normal in GL_RG8_SNORM, hemispherical octahedral coordinates; with deriveNormals,
+ *    none when they are the depth's Sobel normals (vtkReliefTextureFilter's bake; checked here,
+ *    NormalMismatch): the shader derives them from 16 depth texels, the float texture's shading
+ *    for half the bytes and more fetches;
+ *  - cone ratios only for cone methods, 8 bits rounded to narrower cones (GL_R8);
+ *  - for MaximumMipmap the pyramid's levels 1 and up in 16 bits, exact minima
+ *    (vtkMinDepthPyramidTexture); its level 0, the cells' corners, is the depth texture itself.
+ * 4 bytes per texel for relief (14x less than the dense displaced mesh's 56), 4.7 for
+ * MaximumMipmap, 5 for cone methods, against 16 to 37 as float. Float storage (floatTextures)
+ * uploads the float RGBA texture and float pyramid instead: kept to measure what compact storage
+ * costs (bench relief --texture-storage).
  */
 
 #ifndef vtkReliefTextureCache_h
@@ -19,10 +35,14 @@
 #include "vtkObject.h"
 #include "vtkSmartPointer.h" // for members
 
+#include <cstdint> // for std::uint16_t
+#include <vector>  // for the upload buffers
+
 class vtkDataArray;
 class vtkImageData;
 class vtkMinDepthPyramidTexture;
 class vtkOpenGLRenderWindow;
+class vtkShaderProgram;
 class vtkTextureObject;
 class vtkWindow;
 
@@ -39,10 +59,42 @@ public:
    * whether the texture can be drawn; false (with an error, once per change) for an image that
    * is not a relief texture or cannot be uploaded.
    */
-  bool Update(vtkOpenGLRenderWindow* renWin, vtkImageData* image, bool mipmaps, bool needPyramid);
+  bool Update(vtkOpenGLRenderWindow* renWin, vtkImageData* image, bool mipmaps, bool needPyramid,
+    bool needCones = true, bool floatTextures = false, bool deriveNormals = false);
 
-  /** The relief texture. */
+  /**
+   * The relief texture: the depth (compact storage) or the float RGBA texture (float storage).
+   */
   vtkTextureObject* GetTextureObject() { return this->TextureObject; }
+
+  /** Activates the textures the draw reads (wrap: vtkTextureObject's wrap mode), and after it. */
+  void ActivateTextures(int wrap);
+  void DeactivateTextures();
+
+  /** Sets the samplers' uniforms (mlReliefTexture, mlNormalTexture, mlConeTexture). */
+  void SetShaderParameters(vtkShaderProgram* program);
+
+  /** Whether the float RGBA layout is uploaded (float storage). */
+  vtkGetMacro(FloatTextures, bool);
+
+  /** Compact storage: whether normals are uploaded (else the shader derives them). */
+  vtkGetMacro(NormalsStored, bool);
+
+  /** Bits per depth texel: 16 (compact storage) or 32 (float storage). */
+  vtkGetMacro(DepthBits, int);
+
+  /**
+   * The largest normal component difference between the stored normals and the Sobel normals
+   * of the uploaded depth (interior texels); negative unless a compact upload was asked to
+   * derive the normals.
+   */
+  vtkGetMacro(NormalMismatch, double);
+
+  /**
+   * Bytes the textures of the last Update occupy on the GPU, all mip levels, from the sizes
+   * and formats OpenGL reports for them (relief texture, normals, cones, pyramid).
+   */
+  vtkGetMacro(UploadedBytes, vtkIdType);
 
   /** The min-depth pyramid, built by Update when asked for. */
   vtkMinDepthPyramidTexture* GetPyramid() { return this->Pyramid; }
@@ -53,7 +105,10 @@ public:
   /** The cone map the uploaded texture carries (vtkReliefProperty::ConeMapKind). */
   vtkGetMacro(ConeMap, int);
 
-  /** Whether the uploaded texture carries cone ratios in B. */
+  /**
+   * Whether the shader reads cone ratios: uploaded (compact storage, a cone method) or in the
+   * float texture's B (float storage, a cone map).
+   */
   bool GetConePacked() const;
 
   /**
@@ -62,17 +117,38 @@ public:
    */
   vtkGetMacro(BakedDepthScale, double);
 
+  /** Bytes a texture occupies, all its levels, as OpenGL reports its sizes and format. */
+  static vtkIdType GetTextureBytes(vtkTextureObject* texture);
+
   void ReleaseGraphicsResources(vtkWindow* win);
 
 protected:
   vtkReliefTextureCache();
   ~vtkReliefTextureCache() override;
 
+  bool UploadFloat(vtkOpenGLRenderWindow* renWin, vtkDataArray* scalars, const int dims[3],
+    bool bytes, bool mipmaps);
+  bool UploadCompact(vtkOpenGLRenderWindow* renWin, const std::vector<float>& depth,
+    const std::vector<float>& normalXY, const std::vector<float>& normalZ, const int dims[3],
+    bool mipmaps, bool deriveNormals, std::vector<std::uint16_t>& depth16);
+
   vtkSmartPointer<vtkTextureObject> TextureObject;
+  vtkSmartPointer<vtkTextureObject> NormalTexture;
+  vtkSmartPointer<vtkTextureObject> ConeTexture;
   vtkSmartPointer<vtkMinDepthPyramidTexture> Pyramid;
   vtkDataArray* Uploaded = nullptr; // not referenced: only compared
   vtkMTimeType UploadTime = 0;
   bool UploadedWithMipmaps = false;
+  bool FloatTextures = false;
+  bool DeriveNormals = false;
+  bool NormalsStored = false;
+  bool ConesUploaded = false;
+  bool Repeat = false; // the wrap mode of the current draw
+  int DepthBits = 0;
+  double NormalMismatch = -1.0;
+  vtkIdType BaseBytes = 0; // relief texture and normals
+  vtkIdType ConeBytes = 0;
+  vtkIdType UploadedBytes = 0;
   bool Ready = false;
   int Size[2] = { 0, 0 };
   int ConeMap = 0;

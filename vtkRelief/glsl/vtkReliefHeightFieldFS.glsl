@@ -1,12 +1,31 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// Mesolight relief: height-field access shared by every method.
+// Mesolight relief: height-field access shared by every method. Every read of the relief's
+// textures goes through the functions below, so the storage (vtkReliefTextureCache) can change
+// without touching the traversals.
 //
-// Relief texture (Méndez Fernández's thesis, §4.1): tangent-space normal packed as (n+1)/2 in RGB, depth in A with
-// 0 = the mesh surface and 1 = the deepest point. Texture space is (u, v, depth). A cone-packed
-// texture (vtkConeMapFilter, ML_CONE_PACKED) keeps the normal's x, y in RG and the cone ratio
-// (horizontal radius in texture widths per unit of depth) in B, as in the relief thesis.
+// Relief texture (Méndez Fernández's thesis, §4.1): depth with 0 = the mesh surface and 1 = the
+// deepest point, and the tangent-space normal. Texture space is (u, v, depth).
+// ML_FLOAT_TEXTURES: the thesis' float RGBA texture, normal packed as (n+1)/2 in RGB, depth in A;
+// a cone-packed texture (vtkConeMapFilter, ML_CONE_PACKED) keeps the normal's x, y in RG and the
+// cone ratio (horizontal radius in texture widths per unit of depth) in B.
+// Otherwise (compact storage, the default): the depth alone in mlReliefTexture (R, 8 or 16
+// bits); the normal in mlNormalTexture (ML_STORED_NORMALS, 8-bit signed octahedral), or, derived
+// from the depth as vtkReliefTextureFilter bakes them (Sobel); cone ratios c stored as
+// c / (1 + c) in mlConeTexture (8 bits), rounded to narrower cones.
 
 uniform sampler2D mlReliefTexture;
+#ifndef ML_FLOAT_TEXTURES
+uniform int mlRepeatTexture; // the samplers repeat (else clamp to edge)
+#ifdef ML_STORED_NORMALS
+uniform sampler2D mlNormalTexture;
+#endif
+#ifdef ML_CONE_PACKED
+uniform sampler2D mlConeTexture;
+#endif
+#define ML_DEPTH_CHANNEL r
+#else
+#define ML_DEPTH_CHANNEL a
+#endif
 uniform float mlDepthScale;    // world depth of depth = 1 over the world length of one u unit
 uniform float mlGradientScale; // 1 / depth scale the normals were baked with (0: flat bake)
 uniform float mlTexelAspect;   // texture height / width in texels (texels are square)
@@ -66,12 +85,24 @@ int mlSampleCount = 0;
 float mlDepthAt(vec2 uv)
 {
   ML_COUNT_SAMPLE();
-  return textureLod(mlReliefTexture, uv, mlMarchLod).a;
+  return textureLod(mlReliefTexture, uv, mlMarchLod).ML_DEPTH_CHANNEL;
 }
 
+#if !defined(ML_FLOAT_TEXTURES) && defined(ML_STORED_NORMALS)
+// A normal (up to its length) from hemispherical octahedral coordinates (Cigolle et al. 2014;
+// vtkReliefTextureCache).
+vec3 mlOctahedralNormal(vec2 e)
+{
+  vec2 p = 0.5 * vec2(e.x + e.y, e.x - e.y);
+  return vec3(p, 1.0 - abs(p.x) - abs(p.y));
+}
+#endif
+
+#if defined(ML_FLOAT_TEXTURES) || defined(ML_STORED_NORMALS)
 vec3 mlPackedNormalAt(vec2 uv)
 {
   ML_COUNT_SAMPLE();
+#ifdef ML_FLOAT_TEXTURES
   vec4 texel = textureLod(mlReliefTexture, uv, mlMarchLod);
 #ifdef ML_CONE_PACKED
   vec2 nxy = texel.rg * 2.0 - 1.0;
@@ -79,21 +110,53 @@ vec3 mlPackedNormalAt(vec2 uv)
 #else
   return texel.rgb * 2.0 - 1.0;
 #endif
+#else
+  if (mlMarchLod <= 0.0)
+  {
+    // The four texels' unit normals blended as the float texture's are, by the bilinear weights:
+    // blending their octahedral coordinates instead bends the normals between a wall and the
+    // flat beside it, which max-mipmap's exact hits show (colour error on real maps).
+    ivec2 size = ivec2(mlTextureSize);
+    vec2 x = uv * mlTextureSize - 0.5;
+    ivec2 i0 = ivec2(floor(x));
+    vec2 f = x - vec2(i0);
+    vec3 n[4];
+    for (int k = 0; k < 4; ++k)
+    {
+      ivec2 t = i0 + ivec2(k - 2 * (k / 2), k / 2);
+      t = mlRepeatTexture != 0 ? (t % size + size) % size : clamp(t, ivec2(0), size - 1);
+      n[k] = normalize(mlOctahedralNormal(texelFetch(mlNormalTexture, t, 0).rg));
+    }
+    return mix(mix(n[0], n[1], f.x), mix(n[2], n[3], f.x), f.y);
+  }
+  // Level of detail: the filtered coordinates of the level read.
+  return mlOctahedralNormal(textureLod(mlNormalTexture, uv, mlMarchLod).rg);
+#endif
 }
+#endif
 
 #ifdef ML_CONE_PACKED
 // Cone ratio at the base level: cone maps are never averaged (an average cone is not a cone).
 float mlConeAt(vec2 uv)
 {
   ML_COUNT_SAMPLE();
+#ifdef ML_FLOAT_TEXTURES
   return max(textureLod(mlReliefTexture, uv, 0.0).b, 0.0);
+#else
+  float e = textureLod(mlConeTexture, uv, 0.0).r;
+  return e / (1.0 - e);
+#endif
 }
 
-// Depth (x) and cone ratio (y) at uv: one fetch of the packed texel, so a cone step costs what a
-// linear step costs; two when level of detail reads the depth from a coarser level.
+// Depth (x) and cone ratio (y) at uv: one texel's data, so a cone step costs what a linear step
+// costs (counted as one sample; compact storage reads it from two small textures).
 vec2 mlDepthAndConeAt(vec2 uv)
 {
-#ifdef ML_LEVEL_OF_DETAIL
+#ifndef ML_FLOAT_TEXTURES
+  ML_COUNT_SAMPLE();
+  float e = textureLod(mlConeTexture, uv, 0.0).r;
+  return vec2(textureLod(mlReliefTexture, uv, mlMarchLod).r, e / (1.0 - e));
+#elif defined(ML_LEVEL_OF_DETAIL)
   return vec2(mlDepthAt(uv), mlConeAt(uv));
 #else
   ML_COUNT_SAMPLE();
@@ -134,7 +197,126 @@ vec2 mlGradientFromNormal(vec3 n)
   return vec2(n.x, n.y * mlTexelAspect) * (mlGradientScale / nz);
 }
 
+#if !defined(ML_FLOAT_TEXTURES) && !defined(ML_STORED_NORMALS)
+
+// The 4 x 4 depth texels around uv at level 0, from (i0 - 1, j0 - 1), wrapped or clamped as the
+// sampler addresses them, and that origin.
+float mlBlock[16];
+ivec2 mlBlockOrigin;
+
+// The tangent-space normal vtkReliefTextureFilter bakes at texel c (Sobel, Méndez Fernández's
+// thesis §3.2, eq. 2, one-sided at clamped borders), from mlBlock: n = normalize(k w g, 1) with
+// k = 1 / mlGradientScale, the scale the normals are taken to be baked with.
+vec3 mlSobelNormal(ivec2 c, ivec2 size)
+{
+  ivec2 m = c - 1;
+  ivec2 p = c + 1;
+  if (mlRepeatTexture == 0)
+  {
+    c = clamp(c, ivec2(0), size - 1);
+    m = max(c - 1, ivec2(0));
+    p = min(c + 1, size - 1);
+  }
+  ivec2 b = c - mlBlockOrigin, bm = m - mlBlockOrigin, bp = p - mlBlockOrigin;
+  vec2 g = vec2(0.0);
+  if (p.x > m.x)
+  {
+    g.x = ((mlBlock[4 * bm.y + bp.x] + 2.0 * mlBlock[4 * b.y + bp.x] + mlBlock[4 * bp.y + bp.x]) -
+            (mlBlock[4 * bm.y + bm.x] + 2.0 * mlBlock[4 * b.y + bm.x] + mlBlock[4 * bp.y + bm.x])) /
+      (4.0 * float(p.x - m.x));
+  }
+  if (p.y > m.y)
+  {
+    g.y = ((mlBlock[4 * bp.y + bm.x] + 2.0 * mlBlock[4 * bp.y + b.x] + mlBlock[4 * bp.y + bp.x]) -
+            (mlBlock[4 * bm.y + bm.x] + 2.0 * mlBlock[4 * bm.y + b.x] + mlBlock[4 * bm.y + bp.x])) /
+      (4.0 * float(p.y - m.y));
+  }
+  float k = mlGradientScale > 0.0 ? 1.0 / mlGradientScale : 0.0;
+  return normalize(vec3(k * mlTextureSize.x * g, 1.0));
+}
+#endif
+
+// (d depth / du, d depth / dv) at uv.
 vec2 mlDepthGradient(vec2 uv)
 {
-  return mlGradientFromNormal(mlPackedNormalAt(uv));
+#if defined(ML_FLOAT_TEXTURES) || defined(ML_STORED_NORMALS)
+  // Recovered from the baked normal n ~ (k dd/dx, k dd/dy, 1), where x = u and y = v * aspect
+  // are measured in texture widths (vtkReliefTextureFilter's convention).
+  vec3 n = mlPackedNormalAt(uv);
+#else
+  vec3 n;
+  if (mlMarchLod <= 0.0)
+  {
+    // The baked normals, derived: the Sobel normals of the four texels around uv, blended as
+    // the GPU's bilinear filter blends stored ones (the uploader checked that the texture's
+    // normals are these; as the float texture, to float and 16-bit rounding).
+    ML_COUNT_SAMPLE();
+    ivec2 size = ivec2(mlTextureSize);
+    vec2 x = uv * mlTextureSize - 0.5;
+    ivec2 i0 = ivec2(floor(x));
+    vec2 f = x - vec2(i0);
+    mlBlockOrigin = i0 - 1;
+    for (int j = 0; j < 4; ++j)
+    {
+      for (int i = 0; i < 4; ++i)
+      {
+        ivec2 t = mlBlockOrigin + ivec2(i, j);
+        t = mlRepeatTexture != 0 ? (t % size + size) % size : clamp(t, ivec2(0), size - 1);
+        mlBlock[4 * j + i] = texelFetch(mlReliefTexture, t, 0).r;
+      }
+    }
+    n = mix(mix(mlSobelNormal(i0, size), mlSobelNormal(i0 + ivec2(1, 0), size), f.x),
+      mix(mlSobelNormal(i0 + ivec2(0, 1), size), mlSobelNormal(i0 + ivec2(1, 1), size), f.x),
+      f.y);
+  }
+  else
+  {
+    // Level of detail: the Sobel stencil on the filtered depth of the level read, taps one of
+    // its texels apart (linear in the depth: the blend of that level's Sobel gradients).
+    ML_COUNT_SAMPLE();
+    float texels = exp2(mlMarchLod);
+    vec2 step = texels / mlTextureSize;
+    float d[9];
+    for (int j = 0; j < 3; ++j)
+    {
+      for (int i = 0; i < 3; ++i)
+      {
+        d[3 * j + i] = textureLod(mlReliefTexture, uv + vec2(float(i - 1), float(j - 1)) * step,
+          mlMarchLod).r;
+      }
+    }
+    float gi = ((d[2] + 2.0 * d[5] + d[8]) - (d[0] + 2.0 * d[3] + d[6])) / 8.0;
+    float gj = ((d[6] + 2.0 * d[7] + d[8]) - (d[0] + 2.0 * d[1] + d[2])) / 8.0;
+    // Per texel of the level -> per unit of u and of v.
+    return vec2(gi, gj) * (mlTextureSize / texels);
+  }
+#endif
+  float nz = max(n.z, 1e-4);
+  return vec2(n.x, n.y * mlTexelAspect) * (mlGradientScale / nz);
 }
+
+#if ML_METHOD == ML_MAXIMUM_MIPMAP
+uniform sampler2D mlMinDepthPyramid;
+
+// Cell k of level `level` of the min-depth pyramid (vtkReliefMaxMipmapFS.glsl): at level 0 the
+// cell's four corner depths (d00, d10, d01, d11), above it the minimum depths of its 2 x 2
+// children (2k, 2k + (1, 0), 2k + (0, 1), 2k + (1, 1) of the level below).
+vec4 mlPyramidCell(ivec2 k, int level)
+{
+#ifdef ML_FLOAT_TEXTURES
+  return texelFetch(mlMinDepthPyramid, k, level);
+#else
+  if (level > 0)
+  {
+    // Levels 1 and up: the children's minima, in the depth's bits (vtkMinDepthPyramidTexture).
+    return texelFetch(mlMinDepthPyramid, k, level - 1);
+  }
+  // Level 0 is not stored: its corners are the depth texels k - 1 and k, clamped.
+  ivec2 last = ivec2(mlTextureSize) - 1;
+  ivec2 lo = clamp(k - 1, ivec2(0), last);
+  ivec2 hi = clamp(k, ivec2(0), last);
+  return vec4(texelFetch(mlReliefTexture, lo, 0).r, texelFetch(mlReliefTexture, ivec2(hi.x, lo.y), 0).r,
+    texelFetch(mlReliefTexture, ivec2(lo.x, hi.y), 0).r, texelFetch(mlReliefTexture, hi, 0).r);
+#endif
+}
+#endif

@@ -59,8 +59,14 @@
 #endif
 #if ML_METHOD != ML_TEXTURE_MAPPING
     mlMarchLod = mlShadeLod; // the shading normal at the footprint's level (level of detail)
+#if defined(ML_FLOAT_TEXTURES) || defined(ML_STORED_NORMALS)
     vec3 mlFilteredNormal = mlPackedNormalAt(mlHit.xy);
     vec2 g = mlGradientFromNormal(mlFilteredNormal);
+#else
+    // Normals derived in the shader from the depth: unit, no spread to read for Toksvig.
+    vec2 g = mlDepthGradient(mlHit.xy);
+    vec3 mlFilteredNormal = vec3(0.0, 0.0, 1.0);
+#endif
     mlMarchLod = 0.0; // shadows march level 0 again
 #if defined(ML_LEVEL_OF_DETAIL) && !defined(ML_CONE_PACKED)
     // Only where the footprint's level is above the base: the bilinear blend of neighbouring

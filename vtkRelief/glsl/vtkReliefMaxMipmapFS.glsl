@@ -10,17 +10,9 @@
 // min(k >> L, size_L - 1). In cell space x = u W - 0.5, texel i sits at x = i and cell k spans
 // [k-1, k].
 
-uniform sampler2D mlMinDepthPyramid;
 uniform int mlPyramidLevels;
 // Cells per level as (w, h) pairs (unused: the sizes are max(cells0 >> L, 1)).
 uniform int mlPyramidSizes[32];
-
-// Cell k of a level: its bound (level >= 1: the bounds of its 2 x 2 children) or, at level 0,
-// its four corner depths.
-vec4 mlPyramidFetch(ivec2 k, int level)
-{
-  return texelFetch(mlMinDepthPyramid, k, level);
-}
 
 // First t in [t0, t1] where the ray meets the bilinear patch of level-0 cell k, whose corner
 // depths d = (d00, d10, d01, d11) the pyramid's level 0 holds, or -1.
@@ -132,7 +124,7 @@ float mlTraceMaxMipmap(vec3 origin, vec3 span, int maxIterations, float tEnd)
     bool exitX = tx.x <= tx.y;
     float tExit = clamp(min(tx.x, tx.y), t, tEnd);
     ML_COUNT_SAMPLE();
-    vec4 mins = mlPyramidFetch(n, level);
+    vec4 mins = mlPyramidCell(n, level);
     // The children the ray crosses: split [t, tExit] where it crosses the midlines; crossing
     // one flips the child along that axis. (A missing child repeats a present one's bound, so
     // flipping into it is harmless.)
@@ -175,7 +167,7 @@ float mlTraceMaxMipmap(vec3 origin, vec3 span, int maxIterations, float tEnd)
       vec2 tc = mix(vec2(1e30), (vec2(kc + dir - 1) - x0) * invDx, openC);
       bFound = clamp(min(tc.x, tc.y), aFound, bFound);
       ML_COUNT_SAMPLE();
-      vec4 corners = mlPyramidFetch(kc, 0);
+      vec4 corners = mlPyramidCell(kc, 0);
       if (mlMeetsCell(origin, span, dx, x0 - vec2(kc - ivec2(1)), corners, aFound, bFound))
       {
         hitCell = kc;
