@@ -20,9 +20,10 @@
  *    NormalMismatch): the shader derives them from 16 depth texels, the float texture's shading
  *    for half the bytes and more fetches;
  *  - cone ratios only for cone methods, 8 bits rounded to narrower cones (GL_R8);
- *  - for MaximumMipmap the pyramid's levels 1 and up in 16 bits, exact minima
+ *  - for MaximumMipmap the pyramid's levels 1 and up in 16 bits, each cell its four children's
+ *    exact minima (RGBA16)
  *    (vtkMinDepthPyramidTexture); its level 0, the cells' corners, is the depth texture itself.
- * 4 bytes per texel for relief (14x less than the dense displaced mesh's 56), 4.7 for
+ * 4 bytes per texel for relief (14x less than the dense displaced mesh's 56), 6.7 for
  * MaximumMipmap, 5 for cone methods, against 16 to 37 as float. Float storage (floatTextures)
  * uploads the float RGBA texture and float pyramid instead: kept to measure what compact storage
  * costs (bench relief --texture-storage).

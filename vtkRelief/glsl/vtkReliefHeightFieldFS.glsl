@@ -129,8 +129,9 @@ vec3 mlPackedNormalAt(vec2 uv)
     }
     return mix(mix(n[0], n[1], f.x), mix(n[2], n[3], f.x), f.y);
   }
-  // Level of detail: the filtered coordinates of the level read.
-  return mlOctahedralNormal(textureLod(mlNormalTexture, uv, mlMarchLod).rg);
+  // Level of detail: the filtered coordinates of the level read, as a unit normal (the decoded
+  // vector's length is the octahedral map's, not the footprint's spread of normals).
+  return normalize(mlOctahedralNormal(textureLod(mlNormalTexture, uv, mlMarchLod).rg));
 #endif
 }
 #endif

@@ -197,7 +197,8 @@ TEST(ReliefStorage, ReportedBytesAreThoseOfTheFormats)
     { "relief", Storage::Compact, 4 * texels },
     { "relief", Storage::Derived, 2 * texels },
     { "relief", Storage::Float, 16 * texels },
-    { "max-mipmap", Storage::Compact, 4 * texels + 2 * pyramid },
+    // The compact pyramid: four 16-bit children's minima per coarse cell (RGBA16).
+    { "max-mipmap", Storage::Compact, 4 * texels + 8 * pyramid },
     { "max-mipmap", Storage::Float, 16 * texels + 16 * floatPyramid },
     { "relaxed-cone", Storage::Compact, 5 * texels },
   };
