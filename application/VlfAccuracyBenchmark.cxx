@@ -138,10 +138,8 @@ double Percentile(std::vector<double> v, double q)
   return v[k];
 }
 
-// Lit pixels: reference above 1% of the mean over the compared pixels (shadows so deep that a
-// relative error means nothing are left out; black-where-lit counts the rest).
-PixelError Compare(
-  const std::vector<PixelHit>& hits, const RgbImage& field, const RgbImage& a, const RgbImage& b)
+// The mean of the two reference halves over the pixels that see the scene.
+double MeanReference(const std::vector<PixelHit>& hits, const RgbImage& a, const RgbImage& b)
 {
   double mean = 0.0;
   std::size_t n = 0;
@@ -153,7 +151,15 @@ PixelError Compare(
       ++n;
     }
   }
-  mean /= static_cast<double>(std::max<std::size_t>(n, 1));
+  return mean / static_cast<double>(std::max<std::size_t>(n, 1));
+}
+
+// Lit pixels: reference above 1% of the mean over the compared pixels (shadows so deep that a
+// relative error means nothing are left out; black-where-lit counts the rest).
+PixelError Compare(
+  const std::vector<PixelHit>& hits, const RgbImage& field, const RgbImage& a, const RgbImage& b)
+{
+  const double mean = MeanReference(hits, a, b);
   std::vector<double> errors;
   PixelError e;
   std::size_t black = 0;
@@ -192,17 +198,7 @@ PixelError Compare(
 std::string ErrorBreakdown(const vlf::LightField& field, const std::vector<PixelHit>& hits, int w,
   int h, const RgbImage& image, const RgbImage& a, const RgbImage& b)
 {
-  double mean = 0.0;
-  std::size_t n = 0;
-  for (std::size_t i = 0; i < hits.size(); ++i)
-  {
-    if (hits[i].Triangle != SceneHit::None)
-    {
-      mean += 0.5 * (Sum3(&a.Rgb[3 * i]) + Sum3(&b.Rgb[3 * i]));
-      ++n;
-    }
-  }
-  mean /= static_cast<double>(std::max<std::size_t>(n, 1));
+  const double mean = MeanReference(hits, a, b);
   const auto surfaceAt = [&](int x, int y)
   {
     const PixelHit& p = hits[static_cast<std::size_t>(y) * w + x];

@@ -3,6 +3,10 @@
 
 #include "vtkLightFieldActorInternals.h"
 
+#include "ObjectMesh.h"
+
+#include "vtkMatrix4x4.h"
+
 //------------------------------------------------------------------------------
 void vtkLightFieldActorCore::SetLightField(
   vtkLightFieldActor* actor, const mesolight::vlf::LightField* field)
@@ -58,4 +62,19 @@ vtkLightFieldActor::Internals& vtkLightFieldActorCore::GetInternals(vtkLightFiel
 void vtkLightFieldActorCore::SetLastUploadSeconds(vtkLightFieldActor* actor, double seconds)
 {
   actor->LastUploadSeconds = seconds;
+}
+
+//------------------------------------------------------------------------------
+glm::mat4 vtkLightFieldActorCore::UnitSpherePlacement(
+  const mesolight::vlf::LightField& field, vtkMatrix4x4* objectMatrix)
+{
+  glm::mat4 world(1.0f);
+  for (int row = 0; row < 4; ++row)
+  {
+    for (int column = 0; column < 4; ++column)
+    {
+      world[column][row] = static_cast<float>(objectMatrix->GetElement(row, column));
+    }
+  }
+  return mesolight::vlf::WorldToUnitSphere(field) * world;
 }

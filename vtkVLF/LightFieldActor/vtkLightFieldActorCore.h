@@ -13,6 +13,8 @@
 
 #include "vtkLightFieldActor.h"
 
+#include <glm/mat4x4.hpp>
+
 namespace mesolight
 {
 namespace vlf
@@ -23,6 +25,7 @@ struct LightApproximation;
 struct ShadedObject;
 }
 }
+class vtkMatrix4x4;
 class vtkRenderer;
 
 class vtkLightFieldActorCore
@@ -40,6 +43,13 @@ public:
   static const mesolight::vlf::LightApproximation* GetEmitterLights(vtkLightFieldActor* actor);
   /** The shadow maps of the last frame (nullptr when no object casts shadows). */
   static const mesolight::vlf::ObjectShadows* GetObjectShadows(const vtkLightFieldActor* actor);
+
+  /**
+   * A movable object's placement in the field's unit sphere: its world matrix (a vtkProp3D's
+   * GetMatrix()) followed by the field's world-to-unit-sphere transform.
+   */
+  static glm::mat4 UnitSpherePlacement(
+    const mesolight::vlf::LightField& field, vtkMatrix4x4* objectMatrix);
 
   ///@{
   /** For vtkLightFieldMapper: prepares the frame (false when a radiance mode has nothing to

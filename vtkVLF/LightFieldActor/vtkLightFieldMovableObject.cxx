@@ -2,6 +2,7 @@
 #include "vtkLightFieldMovableObject.h"
 
 #include "vtkLightFieldActor.h" // For GatherDirectionSets
+#include "vtkLightFieldActorCore.h"
 #include "vtkLightFieldObjectShadows.h"
 
 #include "vtkActor.h"
@@ -68,18 +69,6 @@ vlf::ObjectMesh ReadObjectMesh(vtkPolyData* input, vtkActor* object)
   return mesh;
 }
 
-glm::mat4 ToGlm(vtkMatrix4x4* m)
-{
-  glm::mat4 out(1.0f);
-  for (int row = 0; row < 4; ++row)
-  {
-    for (int column = 0; column < 4; ++column)
-    {
-      out[column][row] = static_cast<float>(m->GetElement(row, column));
-    }
-  }
-  return out;
-}
 } // namespace
 
 //------------------------------------------------------------------------------
@@ -211,7 +200,7 @@ bool vtkLightFieldMovableObject::Update(const vlf::LightField* field,
     return false;
   }
   // 2. The placement: the actor's matrix, then the field's normalisation.
-  const glm::mat4 placement = vlf::WorldToUnitSphere(*field) * ToGlm(object->GetMatrix());
+  const glm::mat4 placement = vtkLightFieldActorCore::UnitSpherePlacement(*field, object->GetMatrix());
   const bool meshChanged = this->GatheredMesh != this->MeshVersion ||
     this->GatheredSubdivision != settings.Subdivision ||
     this->GatheredDirections != settings.Directions ||

@@ -30,19 +30,6 @@ vtkStandardNewMacro(vtkLightFieldObjectReliefProbes);
 
 namespace
 {
-glm::mat4 ToGlm(vtkMatrix4x4* m)
-{
-  glm::mat4 out(1.0f);
-  for (int row = 0; row < 4; ++row)
-  {
-    for (int column = 0; column < 4; ++column)
-    {
-      out[column][row] = static_cast<float>(m->GetElement(row, column));
-    }
-  }
-  return out;
-}
-
 // Chart `chart` of `mesh` as polydata: its own points (renumbered), normals, texture coordinates.
 vtkSmartPointer<vtkPolyData> ChartPolyData(
   const vlf::ObjectMesh& mesh, const vlf::ObjectChart& chart)
@@ -177,7 +164,7 @@ bool vtkLightFieldObjectReliefProbes::Update()
     {
       return true; // nothing moved
     }
-    const glm::mat4 placement = vlf::WorldToUnitSphere(*field) * ToGlm(object->GetMatrix());
+    const glm::mat4 placement = vtkLightFieldActorCore::UnitSpherePlacement(*field, object->GetMatrix());
     vlf::ReliefProbeSettings settings;
     this->LastGatheredProbes = static_cast<vtkIdType>(this->Probes->Gather(placement, settings));
   }

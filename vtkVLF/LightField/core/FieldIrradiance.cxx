@@ -10,17 +10,22 @@ namespace mesolight
 namespace vlf
 {
 
+double IncidentWeightScale(const LightField& field)
+{
+  double total = 0.0;
+  for (std::size_t k = 0; k < field.SubfieldCount(); ++k)
+  {
+    total += 2.0 * field.GetSubfield(k).Weight;
+  }
+  return total > 0.0 ? 4.0 * Pi<double> / total : 0.0;
+}
+
 std::vector<IncidentSample> IncidentRadianceSamples(
   const LightField& field, const glm::vec3& p, const IncidentOptions& options)
 {
   const Lookup lookup(field);
   const std::size_t count = field.SubfieldCount();
-  double total = 0.0;
-  for (std::size_t k = 0; k < count; ++k)
-  {
-    total += 2.0 * field.GetSubfield(k).Weight;
-  }
-  const double scale = total > 0.0 ? 4.0 * Pi<double> / total : 0.0;
+  const double scale = IncidentWeightScale(field);
   std::vector<IncidentSample> samples;
   samples.reserve(2 * count);
   for (std::size_t k = 0; k < count; ++k)

@@ -39,6 +39,10 @@ struct IncidentOptions
   bool Emission = true;
 };
 
+// The factor that makes the 2K weights (each direction's solid angle, both senses) sum to exactly
+// 4 pi (see above).
+double IncidentWeightScale(const LightField& field);
+
 // The 2K samples of the radiance arriving at p (see above).
 std::vector<IncidentSample> IncidentRadianceSamples(
   const LightField& field, const glm::vec3& p, const IncidentOptions& options = {});

@@ -241,12 +241,7 @@ SH9 ProbeSH9(const LightField& field, const Lookup& lookup, const ObjectLineCach
   // summing to 4 pi), but only the sense in front of the surface is looked up: the other is the
   // object's own body. Half the lookups of the whole sphere.
   const std::size_t count = field.SubfieldCount();
-  double total = 0.0;
-  for (std::size_t k = 0; k < count; ++k)
-  {
-    total += 2.0 * field.GetSubfield(k).Weight;
-  }
-  const double scale = total > 0.0 ? 4.0 * Pi<double> / total : 0.0;
+  const double scale = IncidentWeightScale(field);
   std::vector<IncidentSample> samples;
   samples.reserve(count + 8);
   for (std::size_t k = 0; k < count; ++k)

@@ -10,6 +10,7 @@
 #include "ObjectTestReference.h"
 #include "WalkthroughTestViewer.h"
 
+#include "vtkLightFieldActorCore.h"
 #include "vtkLightFieldActorInternals.h"
 #include "vtkLightFieldObjectMapper.h"
 #include "vtkTriangleSceneConverter.h"
@@ -40,19 +41,6 @@ vtkSmartPointer<vtkPolyData> ToPolyData(const vlf::ObjectMesh& mesh, bool normal
     poly->GetPointData()->SetNormals(nullptr);
   }
   return poly;
-}
-
-glm::mat4 ToGlm(vtkMatrix4x4* m)
-{
-  glm::mat4 out(1.0f);
-  for (int r = 0; r < 4; ++r)
-  {
-    for (int c = 0; c < 4; ++c)
-    {
-      out[c][r] = static_cast<float>(m->GetElement(r, c));
-    }
-  }
-  return out;
 }
 
 const glm::vec3 AboveBlock(470.0f, 400.0f, 380.0f);   // seen directly and in the mirror wall
@@ -93,7 +81,7 @@ struct ObjectViewer
   std::vector<std::uint8_t> Masks()
   {
     const glm::mat4 placement =
-      vlf::WorldToUnitSphere(this->Field) * ToGlm(this->Object->GetMatrix());
+      vtkLightFieldActorCore::UnitSpherePlacement(this->Field, this->Object->GetMatrix());
     return ReferenceMasks(
       this->Field, vlf::TransformMesh(this->Sphere, placement), CornellView(this->Field));
   }

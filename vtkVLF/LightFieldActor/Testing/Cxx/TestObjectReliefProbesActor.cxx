@@ -32,18 +32,6 @@ using namespace mesolight;
 
 namespace
 {
-glm::mat4 ToGlm(vtkMatrix4x4* m)
-{
-  glm::mat4 out(1.0f);
-  for (int row = 0; row < 4; ++row)
-  {
-    for (int column = 0; column < 4; ++column)
-    {
-      out[column][row] = static_cast<float>(m->GetElement(row, column));
-    }
-  }
-  return out;
-}
 } // namespace
 
 TEST(LightFieldObjectReliefProbes, ImagesHoldTheCoreProbesInTheMappersLayout)
@@ -72,7 +60,7 @@ TEST(LightFieldObjectReliefProbes, ImagesHoldTheCoreProbesInTheMappersLayout)
   // The core's probes at the actor's placement, independently.
   vlf::ObjectReliefProbes reference(field);
   reference.SetMesh(vlf::MakeCube(1.0f), 4);
-  reference.Gather(vlf::WorldToUnitSphere(field) * ToGlm(object->GetMatrix()));
+  reference.Gather(vtkLightFieldActorCore::UnitSpherePlacement(field, object->GetMatrix()));
   double largest = 0.0, worst = 0.0;
   for (int c = 0; c < 6; ++c)
   {
