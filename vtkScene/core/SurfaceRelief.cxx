@@ -32,6 +32,13 @@ float DepthMap::Sample(double u, double v) const
   return static_cast<float>((1.0 - fy) * bottom + fy * top);
 }
 
+namespace
+{
+// The fix a refusal for a non-planar surface suggests.
+constexpr const char* Split =
+  ": split the surface into planar ones with their own `g` names in the OBJ file";
+} // namespace
+
 glm::vec2 SurfacePlane::TextureCoordinate(const glm::vec3& point) const
 {
   const glm::vec3 d = point - this->Origin;
@@ -39,8 +46,8 @@ glm::vec2 SurfacePlane::TextureCoordinate(const glm::vec3& point) const
     glm::dot(d, this->AxisV) / glm::dot(this->AxisV, this->AxisV));
 }
 
-SurfacePlane SurfacePlaneOf(const TriangleMesh& mesh, const std::vector<std::size_t>& triangles,
-  const std::string& name, float tolerance)
+SurfacePlane SurfacePlaneOf(
+  const TriangleMesh& mesh, const std::vector<std::size_t>& triangles, const std::string& name)
 {
   if (triangles.empty())
   {
@@ -91,18 +98,18 @@ SurfacePlane SurfacePlaneOf(const TriangleMesh& mesh, const std::vector<std::siz
     {
       std::ostringstream message;
       message << name << " is not planar: triangle " << t
-              << " faces another way than the surface (a relief needs one plane)";
+              << " faces another way than the surface; a relief needs one plane" << Split;
       throw SurfaceReliefError(message.str());
     }
     for (int c = 0; c < 3; ++c)
     {
       const double distance = std::abs(glm::dot(glm::dvec3(mesh.Vertex(t, c)) - centroid, n));
-      if (distance > tolerance * diagonal)
+      if (distance > SurfacePlanarTolerance * diagonal)
       {
         std::ostringstream message;
         message << name << " is not planar: a vertex of triangle " << t << " lies " << distance
-                << " from the surface's plane (more than " << tolerance * diagonal
-                << "); a relief needs one plane";
+                << " from the surface's plane (more than " << SurfacePlanarTolerance * diagonal
+                << "); a relief needs one plane" << Split;
         throw SurfaceReliefError(message.str());
       }
     }

@@ -57,7 +57,9 @@ struct DepthMap
  * rectangle in its plane, upright. V points along world +y projected into the plane (along +z
  * when |N.y| >= 0.9, a surface within about 25 degrees of horizontal), U = V x N, so that
  * (U, V, N) is right-handed and the image is seen unmirrored from the side the surface faces.
- * `vlf render --relief` frames its reliefs by the same rule (application/VlfRelief.cxx).
+ * The one derivation of the rule: `trace --relief` (DisplaceSurface) and the reliefs lit by a
+ * light field (`vlf render --relief`, the walkthrough: vlf::FindReliefSurface) both call
+ * SurfacePlaneOf.
  */
 struct SurfacePlane
 {
@@ -71,15 +73,22 @@ struct SurfacePlane
 };
 
 /**
- * The plane of the given triangles of a mesh, through their area-weighted centroid. Throws
- * SurfaceReliefError when the list is empty or an index is out of range, when the triangles have
- * no area, or when they are not planar: a vertex farther from the plane than `tolerance` times the
- * surface's bounding-box diagonal (1%, as `vlf render --relief` allows: the published Cornell
- * box's red wall is 0.2% off), or a triangle facing more than 60 degrees away. The displaced mesh
- * follows a nearly planar surface's own triangles. `name` is only for the messages.
+ * How far a planar surface's vertices may lie off its plane, as a fraction of the surface's
+ * bounding-box diagonal: the published Cornell box's red wall, 0.2% off, is taken; a relief's
+ * depth is far larger than what is left.
  */
-SurfacePlane SurfacePlaneOf(const TriangleMesh& mesh, const std::vector<std::size_t>& triangles,
-  const std::string& name, float tolerance = 0.01f);
+constexpr double SurfacePlanarTolerance = 0.01;
+
+/**
+ * The plane of the given triangles of a mesh, through their area-weighted centroid, and its
+ * plane-rule texture frame. Throws SurfaceReliefError when the list is empty or an index is out
+ * of range, when the triangles have no area, or when they are not planar: a vertex farther from
+ * the plane than SurfacePlanarTolerance times the surface's bounding-box diagonal, or a triangle
+ * facing more than 60 degrees away. The displaced mesh follows a nearly planar surface's own
+ * triangles. `name` is only for the messages ("surface 'back'").
+ */
+SurfacePlane SurfacePlaneOf(
+  const TriangleMesh& mesh, const std::vector<std::size_t>& triangles, const std::string& name);
 
 /** The plane-rule texture coordinates (SurfacePlane) of every vertex of the triangles. */
 std::vector<glm::vec2> PlaneTextureCoordinates(

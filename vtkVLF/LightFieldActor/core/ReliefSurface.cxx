@@ -4,17 +4,15 @@
 #include "FieldIrradiance.h"
 #include "LightField.h"
 #include "ParallelFor.h"
+#include "SurfaceRelief.h" // SurfacePlaneOf
 #include "TriangleScene.h"
 
-#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
 #include <glm/matrix.hpp>
 #include <glm/vec2.hpp>
 
-#include <algorithm>
 #include <cmath>
-#include <sstream>
 
 namespace mesolight
 {
@@ -22,13 +20,6 @@ namespace vlf
 {
 namespace
 {
-// Points this far off a surface's plane (unit-sphere units, the field's own plane tolerance)
-// make it non-planar, unless within PlaneExtentTolerance of its extent: the published Cornell
-// box's red wall bends by 3.2 mm over 559 mm (0.6%), which the relief's macro plane (through the
-// points' centroid) leaves at most 1.6 mm off, far below a relief's depth.
-constexpr float PlaneTolerance = 1e-4f;
-constexpr double PlaneExtentTolerance = 0.01;
-
 std::string Quoted(const std::string& text)
 {
   return "'" + text + "'";
@@ -65,56 +56,20 @@ ReliefSurface FindReliefSurface(const LightField& field, const std::string& name
   surface.Emission = material.Emission;
   surface.FieldSurface = field.SurfaceOfTriangle(triangles[0]);
 
-  // The texture frame: from its texture coordinates when the scene has them (one affine map of
-  // the plane), else from its plane (u along the plane's horizontal, v up it, the bounding
-  // rectangle of its points mapped to [0, 1]^2).
-  glm::dvec3 normal(0.0);
-  for (const std::size_t t : triangles)
+  // The plane and the plane rule's texture frame (SurfacePlaneOf, shared with `trace --relief`'s
+  // dense mesh); the frame is replaced by the texture coordinates' own when the scene has them.
+  SurfacePlane plane;
+  try
   {
-    normal += glm::dvec3(scene.FaceNormal(t));
+    plane = SurfacePlaneOf(scene, triangles, "surface " + Quoted(name));
   }
-  if (!(glm::length(normal) > 0.0))
+  catch (const SurfaceReliefError& e)
   {
-    throw ReliefSurfaceError("surface " + Quoted(name) + " has no area");
-  }
-  normal = glm::normalize(normal);
-  glm::dvec3 p0(0.0), lower(1e30), upper(-1e30);
-  for (const std::size_t t : triangles)
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      const glm::dvec3 p(scene.Vertex(t, c));
-      p0 += p / (3.0 * static_cast<double>(triangles.size()));
-      lower = glm::min(lower, p);
-      upper = glm::max(upper, p);
-    }
-  }
-  double off = 0.0;
-  for (const std::size_t t : triangles)
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      off = std::max(off, std::abs(glm::dot(normal, glm::dvec3(scene.Vertex(t, c)) - p0)));
-    }
+    throw ReliefSurfaceError(e.what());
   }
   const bool tcoords =
     scene.TextureCoordinates.size() == scene.Positions.size() && !scene.TextureCoordinates.empty();
-  const double allowed =
-    std::max<double>(PlaneTolerance, PlaneExtentTolerance * glm::length(upper - lower));
-  if (off > allowed)
-  {
-    std::ostringstream message;
-    message << "surface " << Quoted(name) << " is not planar (its points lie up to " << off
-            << " scene radii off its plane): a relief needs a planar surface"
-            << (tcoords ? "" : " or texture coordinates")
-            << "; split it into planar surfaces with their own `g` names in the OBJ file";
-    if (!tcoords)
-    {
-      message << ", or give it texture coordinates (vt) on planar pieces";
-    }
-    throw ReliefSurfaceError(message.str());
-  }
-  surface.Normal = normal;
+  surface.Normal = glm::dvec3(plane.Normal);
   surface.SceneTextureCoordinates = tcoords;
   if (tcoords)
   {
@@ -134,14 +89,18 @@ ReliefSurface FindReliefSurface(const LightField& field, const std::string& name
     surface.AxisU = ((b - a) * dv2 - (c - a) * dv1) / det;
     surface.AxisV = ((c - a) * du1 - (b - a) * du2) / det;
     surface.Origin = a - ta.x * surface.AxisU - ta.y * surface.AxisV;
+    // A point may lie off the affine map as far as the plane allows it off the plane (twice:
+    // the map's triangle may be off the other way), plus 1e-3 unit-sphere radii for the rounding
+    // of the file's written coordinates.
+    const double slack =
+      2.0 * SurfacePlanarTolerance * glm::length(glm::dvec3(plane.AxisU + plane.AxisV)) + 1e-3;
     for (const std::size_t t : triangles)
     {
       for (int k = 0; k < 3; ++k)
       {
         const std::uint32_t v = scene.Triangles[t][k];
         const glm::dvec2 uv(scene.TextureCoordinates[v]);
-        if (glm::length(surface.Point(uv.x, uv.y) - glm::dvec3(scene.Positions[v])) >
-          2.0 * allowed + 10.0 * PlaneTolerance)
+        if (glm::length(surface.Point(uv.x, uv.y) - glm::dvec3(scene.Positions[v])) > slack)
         {
           throw ReliefSurfaceError("the texture coordinates of surface " + Quoted(name) +
             " are not one affine map of its plane; give it planar, undistorted (vt) coordinates "
@@ -151,24 +110,9 @@ ReliefSurface FindReliefSurface(const LightField& field, const std::string& name
     }
     return surface;
   }
-  const glm::dvec3 helper = std::abs(normal.y) < 0.9 ? glm::dvec3(0, 1, 0) : glm::dvec3(0, 0, 1);
-  const glm::dvec3 v = glm::normalize(helper - normal * glm::dot(normal, helper));
-  const glm::dvec3 u = glm::cross(v, normal);
-  double lowU = 1e30, highU = -1e30, lowV = 1e30, highV = -1e30;
-  for (const std::size_t t : triangles)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      const glm::dvec3 p = glm::dvec3(scene.Vertex(t, k)) - p0;
-      lowU = std::min(lowU, glm::dot(p, u));
-      highU = std::max(highU, glm::dot(p, u));
-      lowV = std::min(lowV, glm::dot(p, v));
-      highV = std::max(highV, glm::dot(p, v));
-    }
-  }
-  surface.Origin = p0 + lowU * u + lowV * v;
-  surface.AxisU = (highU - lowU) * u;
-  surface.AxisV = (highV - lowV) * v;
+  surface.Origin = glm::dvec3(plane.Origin);
+  surface.AxisU = glm::dvec3(plane.AxisU);
+  surface.AxisV = glm::dvec3(plane.AxisV);
   return surface;
 }
 

@@ -4,9 +4,11 @@
 // such surfaces: the CPU reference (`mesolight vlf render --relief`, application/VlfRelief.cxx)
 // and the walkthrough's relief mapper (vtkLightFieldReliefSurface). What they share is here,
 // once: which triangles the name means, the surface's texture frame (from its texture
-// coordinates when the scene has them, else from its plane), and its indirect light as SH9
-// radiance probes over that texture (FieldIrradiance, the emitters' own radiance left out: both
-// renderers add the emitters as lights of their own). Plain C++ (GLM), unit-sphere coordinates.
+// coordinates when the scene has them, else the plane rule of SurfacePlaneOf in
+// vtkScene/core/SurfaceRelief.h, which also says how planar a surface must be), and its indirect
+// light as SH9 radiance probes over that texture (FieldIrradiance, the emitters' own radiance
+// left out: both renderers add the emitters as lights of their own). Plain C++ (GLM),
+// unit-sphere coordinates.
 #ifndef mesolight_vlf_ReliefSurface_h
 #define mesolight_vlf_ReliefSurface_h
 
