@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "CommandLine.h"
 
+#include "OutputFile.h" // CheckOutputOptions
+
 #include <cctype>
 
 #include <algorithm>
@@ -229,6 +231,26 @@ bool CommandLine::ParseArguments(const std::vector<std::string>& args, int& stat
   return true;
 }
 
+bool CommandLine::ParseArguments(const std::vector<std::string>& args,
+  const std::vector<std::string>& outputs, const std::vector<std::string>& inputs, int& status)
+{
+  if (!this->ParseArguments(args, status))
+  {
+    return false;
+  }
+  std::vector<std::string> inputFiles;
+  for (const std::string& input : inputs)
+  {
+    inputFiles.push_back(this->Get(input));
+  }
+  if (const std::string problem = CheckOutputOptions(*this, outputs, inputFiles); !problem.empty())
+  {
+    status = this->UsageError(problem);
+    return false;
+  }
+  return true;
+}
+
 int CommandLine::UsageError(const std::string& message) const
 {
   std::cerr << this->Name << ": " << message << "\n";
@@ -288,6 +310,18 @@ bool CommandLine::GetInt(
     return false;
   }
   value = static_cast<int>(parsed);
+  return true;
+}
+
+bool CommandLine::GetInts(const std::vector<IntOption>& options, std::string& error) const
+{
+  for (const IntOption& option : options)
+  {
+    if (!this->GetInt(option.Name, option.Low, option.High, *option.Value, error))
+    {
+      return false;
+    }
+  }
   return true;
 }
 

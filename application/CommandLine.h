@@ -39,6 +39,13 @@ public:
    * status 2. True when the command goes on.
    */
   bool ParseArguments(const std::vector<std::string>& args, int& status);
+  /**
+   * ParseArguments, then the files the command will write checked before any work
+   * (CheckOutputOptions, OutputFile.h): the output options `outputs` may not name the files of
+   * the options `inputs` nor each other; a problem is a usage error (status 2).
+   */
+  bool ParseArguments(const std::vector<std::string>& args, const std::vector<std::string>& outputs,
+    const std::vector<std::string>& inputs, int& status);
   /** Prints "NAME: message" on stderr; returns 2, the exit code of a usage error. */
   int UsageError(const std::string& message) const;
   /** Prints the synopsis and the options. */
@@ -48,6 +55,16 @@ public:
   std::string Get(const std::string& name) const;
   /** Numeric accessors; false with a message when the value is not a finite number in range. */
   bool GetInt(const std::string& name, int low, int high, int& value, std::string& error) const;
+  /** An integer option for GetInts: its name, its range and where its value goes. */
+  struct IntOption
+  {
+    std::string Name;
+    int Low;
+    int High;
+    int* Value;
+  };
+  /** GetInt of each option in order; false with the first bad one's message. */
+  bool GetInts(const std::vector<IntOption>& options, std::string& error) const;
   bool GetDouble(
     const std::string& name, double low, double high, double& value, std::string& error) const;
   /**

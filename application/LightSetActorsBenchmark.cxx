@@ -4,7 +4,6 @@
 #include "CommandLine.h"
 #include "ImageCompare.h"
 #include "LightSetActorsScene.h"
-#include "OutputFile.h"
 #include "Timing.h"
 #include "vtkLightSetLighting.h"
 
@@ -76,24 +75,17 @@ int RunLightSetActorsBenchmark(const std::vector<std::string>& args)
   cl.AddValue("--shadow-map", "N", "shadow map resolution", "2048");
   cl.AddValue("--csv", "FILE", "also write the rows as CSV");
   int exitCode = 0;
-  if (!cl.ParseArguments(args, exitCode))
+  if (!cl.ParseArguments(args, { "--csv" }, { "--environment" }, exitCode))
   {
     return exitCode;
   }
-  if (const std::string problem = CheckOutputOptions(cl, { "--csv" }, { cl.Get("--environment") });
-      !problem.empty())
-  {
-    return cl.UsageError(problem);
-  }
   std::string error;
-  int lights = 256, size = 128, samples = 256, frameSize = 512, frames = 20, shadowMap = 2048;
+  int lights = 0, size = 0, samples = 0, frameSize = 0, frames = 0, shadowMap = 0;
   std::vector<int> counts;
-  if (!cl.GetInt("--lights", 1, 4096, lights, error) ||
-    !cl.GetInt("--size", 16, 2048, size, error) ||
-    !cl.GetInt("--samples", 1, 1 << 16, samples, error) ||
-    !cl.GetInt("--frame-size", 16, 4096, frameSize, error) ||
-    !cl.GetInt("--frames", 1, 1000, frames, error) ||
-    !cl.GetInt("--shadow-map", 16, 8192, shadowMap, error) ||
+  if (!cl.GetInts({ { "--lights", 1, 4096, &lights }, { "--size", 16, 2048, &size },
+                    { "--samples", 1, 1 << 16, &samples }, { "--frame-size", 16, 4096, &frameSize },
+                    { "--frames", 1, 1000, &frames }, { "--shadow-map", 16, 8192, &shadowMap } },
+        error) ||
     !cl.GetIntList("--counts", 0, 64, counts, error))
   {
     return cl.UsageError(error);

@@ -5,7 +5,6 @@
 #include "EnvironmentMaps.h" // SH9, EvaluateSHBasis
 #include "ImageCompare.h"
 #include "MathConstants.h"
-#include "OutputFile.h"
 #include "ReliefScene.h"
 #include "Timing.h"
 #include "vtkReliefMapper.h"
@@ -148,21 +147,16 @@ int RunReliefFieldCostBenchmark(const std::vector<std::string>& args)
   cl.AddValue("--rounds", "N", "rounds over the configurations", "3");
   cl.AddValue("--csv", "FILE", "also write the rows as CSV");
   int exitCode = 0;
-  if (!cl.ParseArguments(args, exitCode))
+  if (!cl.ParseArguments(args, { "--csv" }, {}, exitCode))
   {
     return exitCode; // --help printed, or a usage error reported
   }
-  if (const std::string problem = CheckOutputOptions(cl, { "--csv" }, {}); !problem.empty())
-  {
-    return cl.UsageError(problem);
-  }
   std::string error;
-  int frames = 10, rounds = 3, probes = 8;
+  int frames = 0, rounds = 0, probes = 0;
   ReliefSceneOptions o;
-  if (!cl.GetInt("--frames", 1, 10000, frames, error) ||
-    !cl.GetInt("--rounds", 1, 100, rounds, error) ||
-    !cl.GetInt("--probes", 1, 256, probes, error) ||
-    !cl.GetInt("--resolution", 8, 8192, o.Resolution, error) ||
+  if (!cl.GetInts({ { "--frames", 1, 10000, &frames }, { "--rounds", 1, 100, &rounds },
+                    { "--probes", 1, 256, &probes }, { "--resolution", 8, 8192, &o.Resolution } },
+        error) ||
     !cl.GetSize("--size", 16, 8192, o.Width, o.Height, error))
   {
     return cl.UsageError(error);
