@@ -41,20 +41,17 @@
 namespace mesolight
 {
 
-namespace
-{
-// Linear radiance -> 8-bit with the sRGB transfer curve (clamped), for PNGs of the path tracer.
 vtkSmartPointer<vtkImageData> ToDisplayBytes(const RgbImage& image)
 {
   auto bytes = vtkSmartPointer<vtkImageData>::New();
   bytes->SetDimensions(image.Width, image.Height, 1);
   bytes->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
   auto* out = static_cast<unsigned char*>(bytes->GetScalarPointer());
+  const DisplayTransform display{}; // exposure 1, clamp, sRGB
   for (std::size_t v = 0; v < image.Rgb.size(); ++v)
   {
-    const float linear =
-      std::min(1.0f, std::max(0.0f, std::isfinite(image.Rgb[v]) ? image.Rgb[v] : 0.0f));
-    out[v] = static_cast<unsigned char>(ToSRGB(linear) * 255.0f + 0.5f);
+    const float linear = std::isfinite(image.Rgb[v]) ? image.Rgb[v] : 0.0f;
+    out[v] = static_cast<unsigned char>(ApplyDisplayTransform(display, linear) * 255.0f + 0.5f);
   }
   return bytes;
 }
@@ -68,6 +65,8 @@ bool WritePng(vtkImageData* image, const std::string& fileName)
   return writer->GetErrorCode() == 0;
 }
 
+namespace
+{
 // A window showing an image pixel for pixel.
 struct ImageWindow
 {

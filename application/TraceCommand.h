@@ -4,6 +4,11 @@
 #ifndef mesolight_TraceCommand_h
 #define mesolight_TraceCommand_h
 
+#include "RgbImage.h"
+
+#include <vtkImageData.h>
+#include <vtkSmartPointer.h>
+
 #include <string>
 #include <vector>
 
@@ -15,6 +20,14 @@ int RunTraceCommand(const std::vector<std::string>& args);
 
 /** mesolight bench trace [options]; `args` excludes "bench trace". */
 int RunTraceBenchmark(const std::vector<std::string>& args);
+
+/**
+ * The PNG pixels of a path-traced image (`trace --out`, built-in or OBJ scene): exposure 1,
+ * clamped (non-finite values to 0), sRGB, 8 bits per channel.
+ */
+vtkSmartPointer<vtkImageData> ToDisplayBytes(const RgbImage& image);
+/** Writes an image as PNG; false when it cannot be written. */
+bool WritePng(vtkImageData* image, const std::string& fileName);
 
 } // namespace mesolight
 

@@ -3,20 +3,16 @@
 
 #include "CommandLine.h"
 #include "CornellRegions.h" // WriteLinearImage
-#include "DisplayTransform.h"
 #include "LightFieldCamera.h"
 #include "OutputFile.h"
 #include "Timing.h"
+#include "TraceCommand.h" // ToDisplayBytes, WritePng
 #include "TraceRelief.h"
 
 #include "EmbreeScene.h"
 #include "ObjScene.h"
 #include "PathTracer.h"
 #include "PinholeCamera.h"
-
-#include <vtkImageData.h>
-#include <vtkNew.h>
-#include <vtkPNGWriter.h>
 
 #include <algorithm>
 #include <chrono>
@@ -128,21 +124,7 @@ int TraceObjScene(const CommandLine& cl, int width, int height, int threads)
               << " s (" << std::setprecision(3)
               << static_cast<double>(width) * height * samples / seconds / 1e6 << " M paths/s)\n";
     // The PNG: exposure 1, clamp, sRGB (the light field's default display).
-    vtkNew<vtkImageData> bytes;
-    bytes->SetDimensions(width, height, 1);
-    bytes->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
-    auto* out = static_cast<unsigned char*>(bytes->GetScalarPointer());
-    for (std::size_t v = 0; v < image.Rgb.size(); ++v)
-    {
-      const float linear =
-        std::min(1.0f, std::max(0.0f, std::isfinite(image.Rgb[v]) ? image.Rgb[v] : 0.0f));
-      out[v] = static_cast<unsigned char>(ToSRGB(linear) * 255.0f + 0.5f);
-    }
-    vtkNew<vtkPNGWriter> writer;
-    writer->SetInputData(bytes);
-    writer->SetFileName(cl.Get("--out").c_str());
-    writer->Write();
-    if (writer->GetErrorCode() != 0)
+    if (!WritePng(ToDisplayBytes(image), cl.Get("--out")))
     {
       std::cerr << command << ": cannot write " << cl.Get("--out") << "\n";
       return 1;

@@ -34,6 +34,20 @@ float Edge(const glm::vec2& a, const glm::vec2& b, const glm::vec2& c)
 {
   return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
 }
+
+// The sphere about the object's bounding-box centre holding all its points: its radius.
+float BoundingRadius(const ObjectMesh& object, glm::vec3& centre)
+{
+  glm::vec3 lower, upper;
+  object.Bounds(lower, upper);
+  centre = 0.5f * (lower + upper);
+  float radius = 0.0f;
+  for (const glm::vec3& p : object.Positions)
+  {
+    radius = std::max(radius, glm::length(p - centre));
+  }
+  return radius;
+}
 } // namespace
 
 //------------------------------------------------------------------------------
@@ -428,15 +442,8 @@ std::string ObjectShadows::Build(const std::vector<ShadowEmitter>& emitters,
   }
   this->Config = settings;
   this->EmitterList = emitters;
-  glm::vec3 lower, upper;
-  object.Bounds(lower, upper);
-  const glm::vec3 centre = 0.5f * (lower + upper);
-  float radius = 0.0f;
-  for (const glm::vec3& p : object.Positions)
-  {
-    radius = std::max(radius, glm::length(p - centre));
-  }
-  radius = std::max(radius, 1e-6f);
+  glm::vec3 centre;
+  const float radius = std::max(BoundingRadius(object, centre), 1e-6f);
   // Per emitter its centroid's map first (Black, Blend, Field, PCF), then in Soft mode one map
   // per sample point.
   std::vector<glm::vec3> lights;
@@ -714,14 +721,8 @@ glm::vec3 EstimateShadowIndirect(
   {
     return ambient;
   }
-  glm::vec3 lower, upper;
-  object.Bounds(lower, upper);
-  const glm::vec3 centre = 0.5f * (lower + upper);
-  float radius = 0.0f;
-  for (const glm::vec3& p : object.Positions)
-  {
-    radius = std::max(radius, glm::length(p - centre));
-  }
+  glm::vec3 centre;
+  const float radius = BoundingRadius(object, centre);
   const TriangleScene& scene = field.Scene();
   glm::dvec3 sum(0.0);
   std::size_t count = 0;
