@@ -370,8 +370,8 @@ int RunVlfAccuracyBenchmark(const std::vector<std::string>& args)
     "bilateral (the texture filter)",
     "none,gather,bilateral");
   cl.AddValue("--gather-rays", "LIST",
-    "the final gather's indirect rays per texel (several: one gather row each)", "512");
-  cl.AddValue("--gather-direct", "N", "the final gather's emitter samples per texel", "128");
+    "the final gather's indirect rays per texel (several: one gather row each)", "1024");
+  cl.AddValue("--gather-direct", "N", "the final gather's emitter samples per texel", "64");
   std::string error;
   int exitCode = 0;
   if (!cl.ParseArguments(args, exitCode))

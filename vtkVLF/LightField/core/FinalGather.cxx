@@ -337,8 +337,9 @@ public:
       }
       // Stratified over the emitters' area: a jittered 2D stratum (in its own shuffled order)
       // whose first coordinate picks the triangle from the luminous-area distribution and,
-      // rescaled within that triangle's share, is the first coordinate on it (Shirley and
-      // Chiu 1997 warp of the square onto the triangle): strata stay strata over all emitters.
+      // rescaled within that triangle's share, is the first coordinate on it, mapped onto the
+      // triangle by Shirley, Wang, Zimmerman's square-to-triangle map ("Monte Carlo techniques
+      // for direct lighting calculations", 1996): strata stay strata over all emitters.
       const int cell = pointOrder[static_cast<std::size_t>(q)];
       const bool stratified = d < dside * dside;
       const float su = stratified

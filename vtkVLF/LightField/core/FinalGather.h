@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // FinalGather: the total diffuse textures recomputed per texel from exact rays after the
 // propagation (Reichert 1992, "A Two-Pass Radiosity Method Driven by Lights and Viewer
-// Position"; Christensen 1999, "Faster Photon Map Global Illumination": the final gather).
+// Position", Cornell MSc thesis; Christensen 1999, "Faster Photon Map Global Illumination": the
+// final gather).
 //
 // A propagated texel holds what the few parallel lines crossing it brought: small faces draw a
 // lottery of lines, and visibility (a contact shadow, the corner beside a rib) is resolved only
