@@ -402,7 +402,7 @@ int Propagate(const std::vector<std::string>& args)
       settings.RaysPerSide = rays;
       settings.TilesPerSide = tiles;
       settings.MemoryBudget = budgetBytes;
-      const vlf::AutomaticChoice choice = vlf::ResolveAutomaticSettings(scene, settings);
+      const vlf::AutomaticChoice choice = vlf::ResolveAutomaticSettings(scene, settings, gather);
       settings = choice.Settings;
       if (rays == 0)
       {

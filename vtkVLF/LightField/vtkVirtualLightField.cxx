@@ -221,7 +221,7 @@ int vtkVirtualLightField::RequestData(
     }
     else
     {
-      settings = vlf::ResolveAutomaticSettings(scene, settings).Settings;
+      settings = vlf::ResolveAutomaticSettings(scene, settings, this->FinalGather).Settings;
       field = vlf::LightField::Build(
         scene, settings, mesolight::AlgorithmProgress(this, 0.0, buildShare));
     }
@@ -471,7 +471,7 @@ int vtkVirtualLightField::RequestDistributedData(vtkPolyData* input, vtkPolyData
         settings.TilesPerSide = this->Tiles;
         settings.MemoryBudget = static_cast<std::uint64_t>(this->MemoryBudget);
         // Every rank has the whole scene here and chooses alike.
-        settings = vlf::ResolveAutomaticSettings(scene, settings).Settings;
+        settings = vlf::ResolveAutomaticSettings(scene, settings, this->FinalGather).Settings;
         if (snapshots && vlf::FileExists(this->SnapshotFileName) &&
           !vlf::IsSnapshotFile(this->SnapshotFileName))
         {

@@ -493,10 +493,12 @@ FinalGatherReport FinalGather(LightField& field, const FinalGatherOptions& optio
       ++report.Texels;
     }
   }
-  // Texels without a point in the open: the mean of their gathered 8-neighbours (two rings),
-  // so that bilinear reads near an edge or a contact blend gathered values only.
-  for (int ring = 0; ring < 2; ++ring)
+  // Texels without a point in the open: the mean of their gathered 8-neighbours, ring after
+  // ring (up to 16), so that bilinear reads near an edge or a contact blend gathered values
+  // only, never a propagated texel finer than the lines (which may hold nothing).
+  for (int ring = 0; ring < 16; ++ring)
   {
+    const std::size_t filledBefore = report.Filled;
     std::vector<std::uint8_t> next = done;
     for (const Surface& s : surfaces)
     {
@@ -539,6 +541,10 @@ FinalGatherReport FinalGather(LightField& field, const FinalGatherOptions& optio
       }
     }
     done.swap(next);
+    if (report.Filled == filledBefore)
+    {
+      break;
+    }
   }
   field.PropagatedDiffuse.swap(field.TotalDiffuse);
   field.TotalDiffuse.swap(gathered);
