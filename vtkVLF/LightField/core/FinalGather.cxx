@@ -89,6 +89,10 @@ Emitters CollectEmitters(const TriangleScene& scene)
 struct SurfaceTriangles
 {
   std::vector<std::array<glm::vec2, 3>> Triangles;
+  // Their corners in unit-sphere coordinates: a surface groups triangles within 1e-4 of one
+  // plane, so points are put on the triangle itself, not on the surface's plane (which may lie
+  // that far inside a box whose top joined its neighbours' slightly lower ones).
+  std::vector<std::array<glm::vec3, 3>> Corners;
   std::vector<std::uint32_t> Start; // per texel + 1: offsets into Lists
   std::vector<std::uint32_t> Lists;
 };
@@ -116,6 +120,7 @@ SurfaceTriangles BucketTriangles(const LightField& field, const Surface& s)
       std::max(0, static_cast<int>(std::floor(lo.y + 0.5f))),
       std::min(s.TextureHeight - 1, static_cast<int>(std::floor(hi.y + 0.5f))) };
     out.Triangles.push_back(tri);
+    out.Corners.push_back({ scene.Vertex(t, 0), scene.Vertex(t, 1), scene.Vertex(t, 2) });
     boxes.push_back(box);
     for (int b = box[2]; b <= box[3]; ++b)
     {
@@ -146,7 +151,8 @@ SurfaceTriangles BucketTriangles(const LightField& field, const Surface& s)
   return out;
 }
 
-bool InsideTriangle(const std::array<glm::vec2, 3>& t, const glm::vec2& p)
+// Whether p lies in t; if so, b1 and b2 get its barycentric weights of t[1] and t[2].
+bool InsideTriangle(const std::array<glm::vec2, 3>& t, const glm::vec2& p, float& b1, float& b2)
 {
   const auto edge = [](const glm::vec2& a, const glm::vec2& b, const glm::vec2& q)
   { return (b.x - a.x) * (q.y - a.y) - (b.y - a.y) * (q.x - a.x); };
@@ -155,7 +161,14 @@ bool InsideTriangle(const std::array<glm::vec2, 3>& t, const glm::vec2& p)
   const float d2 = edge(t[2], t[0], p);
   const bool negative = d0 < 0.0f || d1 < 0.0f || d2 < 0.0f;
   const bool positive = d0 > 0.0f || d1 > 0.0f || d2 > 0.0f;
-  return !(negative && positive);
+  const float area = d0 + d1 + d2;
+  if ((negative && positive) || area == 0.0f)
+  {
+    return false;
+  }
+  b1 = d2 / area;
+  b2 = d0 / area;
+  return true;
 }
 
 // Cosine-distributed direction in the frame (u, v, n) from a point of the unit square.
@@ -207,9 +220,6 @@ public:
     const glm::vec3 n = s.Normal;
     glm::vec3 u, v;
     OrthonormalBasis(n, u, v);
-    const glm::vec3 axisU = s.TexelU * s.AxisU;
-    const glm::vec3 axisV = s.TexelV * s.AxisV;
-    const glm::vec3 corner = s.TexelCentre(0, 0);
     RandomSequence random(SampleSeed(this->Options.Sequence, texel, 0));
 
     // A jittered point of stratum q of a side x side grid over the texel, on a triangle of the
@@ -227,9 +237,12 @@ public:
           static_cast<float>(b) + extent * (sv - 0.5f));
         for (std::uint32_t i = first; i < last; ++i)
         {
-          if (InsideTriangle(tris.Triangles[tris.Lists[i]], p))
+          float b1 = 0.0f, b2 = 0.0f;
+          const std::uint32_t q2 = tris.Lists[i];
+          if (InsideTriangle(tris.Triangles[q2], p, b1, b2))
           {
-            x = corner + p.x * axisU + p.y * axisV + this->Offset * n;
+            const std::array<glm::vec3, 3>& c = tris.Corners[q2];
+            x = c[0] + b1 * (c[1] - c[0]) + b2 * (c[2] - c[0]) + this->Offset * n;
             return true;
           }
         }
