@@ -528,6 +528,11 @@ int Propagate(const std::vector<std::string>& args)
     }
     // The last iteration (with --snapshot-every), or with zero iterations the traced field.
     // (Decided alike on every rank: a file test could race with rank 0's write.)
+    if (!gather && !field->PropagatedDiffuse.empty())
+    {
+      vlf::RestorePropagatedDiffuse(*field); // a gathered field resumed without iterating
+      writtenIteration = -1;
+    }
     if (writtenIteration != field->IterationsDone && !gather)
     {
       snapshot(*field);

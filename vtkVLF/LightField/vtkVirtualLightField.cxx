@@ -620,6 +620,7 @@ void vtkVirtualLightField::GatherIfAsked(mesolight::vlf::LightField& field, doub
 {
   if (!this->FinalGather)
   {
+    mesolight::vlf::RestorePropagatedDiffuse(field); // a gathered snapshot resumed: as propagated
     return;
   }
   mesolight::vlf::FinalGatherOptions options;
