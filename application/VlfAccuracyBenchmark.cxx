@@ -612,8 +612,8 @@ int RunVlfAccuracyBenchmark(const std::vector<std::string>& args)
   {
     ScatterChart chart;
     chart.Title =
-      "Light field vs path tracer: mean per-pixel relative error vs build + propagation time";
-    chart.XLabel = "build + propagation seconds";
+      "Light field vs path tracer: mean per-pixel relative error vs build + propagation (+ gather) time";
+    chart.XLabel = "build + propagation (+ final gather) seconds";
     chart.YLabel = "mean relative error per pixel (%)";
     chart.LogY = true;
     chart.YFloor = 0.5;
