@@ -198,10 +198,6 @@ public:
     , Light(CollectEmitters(field.Scene()))
     , Look(field)
   {
-    // Offsets off the surface: well below the coincident-face distance (1e-4 of the unit
-    // sphere) and the Cornell light's 0.1 mm under its ceiling (2e-4 here), above float
-    // rounding of unit-sphere coordinates.
-    this->Offset = 2e-5f;
   }
 
   TexelResult Gather(std::uint32_t surfaceIndex, const SurfaceTriangles& tris, int a, int b,
@@ -431,6 +427,9 @@ public:
   EmbreeScene Embree;
   Emitters Light;
   Lookup Look;
+  // Rays start this far off the surface (unit sphere): well below the coincident-face distance
+  // (1e-4) and the Cornell light's 0.1 mm under its ceiling (2e-4 here), above float rounding
+  // of unit-sphere coordinates.
   float Offset = 2e-5f;
 };
 
