@@ -19,6 +19,7 @@
 
 #include "AutomaticSettings.h"
 #include "EmbreeScene.h"
+#include "FinalGather.h"
 #include "LightField.h"
 #include "Lookup.h"
 #include "MemoryBudget.h"
@@ -34,6 +35,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <iostream>
 #include <map>
@@ -345,7 +347,7 @@ int RunVlfAccuracyBenchmark(const std::vector<std::string>& args)
     "The light field's per-pixel error against the path tracer on five scenes (900 small boxes, "
     "a room lit\nindirectly, a ribbed corridor, thin panels near walls, the Cornell box), per "
     "resolution setting:\npropagation time, memory, field size, mean / p95 relative error, "
-    "black-where-lit pixels,\nwithout and with the bilateral texture filter.\n");
+    "black-where-lit pixels,\nwithout and with the final gather (FinalGather.h) and the bilateral texture filter.\n");
   cl.AddValue(
     "--scenes", "LIST", "boxes,room,corridor,thin,cornell", "boxes,room,corridor,thin,cornell");
   cl.AddValue("--settings", "LIST",
@@ -363,6 +365,13 @@ int RunVlfAccuracyBenchmark(const std::vector<std::string>& args)
   cl.AddValue("--csv", "FILE", "write one row per scene, setting and filter");
   cl.AddValue("--plot", "FILE.png", "time vs mean error, one series per scene (needs a display)");
   cl.AddValue("--images", "DIR", "write each field image and the reference as EXR here");
+  cl.AddValue("--variants", "LIST",
+    "what is compared per setting: none (the propagated textures), gather (the final gather), "
+    "bilateral (the texture filter)",
+    "none,gather,bilateral");
+  cl.AddValue("--gather-rays", "LIST",
+    "the final gather's indirect rays per texel (several: one gather row each)", "1024");
+  cl.AddValue("--gather-direct", "N", "the final gather's emitter samples per texel", "64");
   std::string error;
   int exitCode = 0;
   if (!cl.ParseArguments(args, exitCode))
@@ -376,6 +385,30 @@ int RunVlfAccuracyBenchmark(const std::vector<std::string>& args)
     !cl.GetDouble("--memory-budget", 1e-3, 1e6, budgetGib, error))
   {
     return cl.UsageError(error);
+  }
+  vlf::FinalGatherOptions gatherOptions;
+  if (!cl.GetInt("--gather-direct", 0, 1 << 16, gatherOptions.DirectSamples, error))
+  {
+    return cl.UsageError(error);
+  }
+  std::vector<int> gatherRayCounts;
+  for (const std::string& text : cl.GetStringList("--gather-rays"))
+  {
+    char* end = nullptr;
+    const long value = std::strtol(text.c_str(), &end, 10);
+    if (text.empty() || *end != '\0' || value < 1 || value > (1 << 16))
+    {
+      return cl.UsageError("--gather-rays: '" + text + "' is not a count from 1 to 65536");
+    }
+    gatherRayCounts.push_back(static_cast<int>(value));
+  }
+  const std::vector<std::string> variants = cl.GetStringList("--variants");
+  for (const std::string& v : variants)
+  {
+    if (v != "none" && v != "gather" && v != "bilateral")
+    {
+      return cl.UsageError("--variants: '" + v + "' is not none, gather or bilateral");
+    }
   }
   const std::string problem = CheckOutputOptions(cl, { "--csv", "--plot" }, {});
   if (!problem.empty())
@@ -393,7 +426,7 @@ int RunVlfAccuracyBenchmark(const std::vector<std::string>& args)
 
   std::ostringstream csv;
   csv << "scene,settings,directions,rays,tiles,texel_m,lines,surfaces,texels,map_cells,"
-         "iterations,build_s,propagate_s,total_s,allocated_bytes,estimate_bytes,filter,"
+         "iterations,build_s,propagate_s,total_s,allocated_bytes,estimate_bytes,filter,gather_s,gather_rays,"
          "pixels,mean_rel_error,p95_rel_error,black_where_lit,reference_noise,peak_bytes\n";
   std::map<std::string, ChartSeries> series;
   std::printf("%-9s %-12s %6s %4s %8s %9s %7s %7s %8s %9s %6s %7s %7s %6s %6s\n", "scene",
@@ -471,28 +504,65 @@ int RunVlfAccuracyBenchmark(const std::vector<std::string>& args)
           field->NormalizationScale();
         const std::uint64_t lines = static_cast<std::uint64_t>(settings.Directions) *
           settings.RaysPerSide * settings.RaysPerSide;
-        for (int filtered = 0; filtered < 2; ++filtered)
+        // The filter changes the totals for good: it runs last.
+        std::vector<std::string> order;
+        for (const char* v : { "none", "gather", "bilateral" })
         {
-          if (filtered == 1)
+          if (std::find(variants.begin(), variants.end(), v) != variants.end())
+          {
+            if (std::string(v) == "gather" && gatherRayCounts.size() > 1)
+            {
+              for (const int rays : gatherRayCounts)
+              {
+                order.push_back("gather" + std::to_string(rays));
+              }
+            }
+            else
+            {
+              order.push_back(v);
+            }
+          }
+        }
+        for (const std::string& variant : order)
+        {
+          const bool filtered = variant == "bilateral";
+          gatherOptions.IndirectRays = variant.size() > 6 && variant.compare(0, 6, "gather") == 0
+            ? std::atoi(variant.c_str() + 6)
+            : gatherRayCounts.front();
+          double gatherSeconds = 0.0;
+          std::uint64_t gatherRays = 0;
+          vlf::RestorePropagatedDiffuse(*field);
+          if (filtered)
           {
             vlf::FilterTotalDiffuse(*field, vlf::TextureFilterSettings());
           }
+          if (variant.compare(0, 6, "gather") == 0)
+          {
+            const vlf::FinalGatherReport g = vlf::FinalGather(*field, gatherOptions);
+            gatherSeconds = g.Seconds;
+            gatherRays = g.Rays;
+            std::printf("# %s %s gather: %zu texels gathered, %zu filled from neighbours, "
+                        "%.3g rays, %.1f s (%.2f x build + propagation), +%s for the "
+                        "propagated totals\n",
+              name.c_str(), text.c_str(), g.Texels, g.Filled, static_cast<double>(g.Rays),
+              g.Seconds, g.Seconds / (build + propagate),
+              FormatBytes(field->PropagatedDiffuse.size() * sizeof(glm::vec3)).c_str());
+          }
           const RgbImage image = FieldImage(*field, hits, width, height);
           const PixelError e = Compare(hits, image, a, b);
-          std::printf("# %s %s %s: %s\n", name.c_str(), text.c_str(),
-            filtered ? "bilateral" : "none",
+          std::printf("# %s %s %s: %s\n", name.c_str(), text.c_str(), variant.c_str(),
             ErrorBreakdown(*field, hits, width, height, image, a, b).c_str());
           if (!cl.Get("--images").empty())
           {
             const std::string base =
-              cl.Get("--images") + "/" + name + "-" + text + (filtered ? "-filtered" : "");
+              cl.Get("--images") + "/" + name + "-" + text + (variant == "none" ? "" : "-" + variant);
             WriteLinearImage(image, base + ".exr", error);
           }
           std::printf("%-9s %-12s %6zu %4d %8.3f %9.3g %7d %7.1f %8s %9s %5.1f%% %6.1f%% %5.2f%% "
                       "%5.1f%% %6zu\n",
             name.c_str(), text.c_str(), settings.Directions, settings.RaysPerSide, texelWorld,
-            static_cast<double>(lines), field->IterationsDone, build + propagate,
-            FormatBytes(allocated).c_str(), filtered ? "bilateral" : "none", 100.0 * e.Mean,
+            static_cast<double>(lines), field->IterationsDone, build + propagate + gatherSeconds,
+            FormatBytes(allocated).c_str(), variant.c_str(), 100.0 * e.Mean,
             100.0 * e.P95, 100.0 * e.Black, 100.0 * e.ReferenceNoise, e.Pixels);
           std::fflush(stdout);
           csv << name << ',' << text << ',' << settings.Directions << ',' << settings.RaysPerSide
@@ -500,13 +570,14 @@ int RunVlfAccuracyBenchmark(const std::vector<std::string>& args)
               << field->Surfaces().size() << ',' << field->TexelCount() << ',' << estimate.MapCells
               << ',' << field->IterationsDone << ',' << build << ',' << propagate << ','
               << build + propagate << ',' << allocated << ',' << estimate.TotalBytes << ','
-              << (filtered ? "bilateral" : "none") << ',' << e.Pixels << ',' << e.Mean << ','
+              << variant << ',' << gatherSeconds << ',' << gatherRays << ',' << e.Pixels << ',' << e.Mean << ','
               << e.P95 << ',' << e.Black << ',' << e.ReferenceNoise << ',' << peak << '\n';
-          if (filtered == 0)
+          if (variant != "bilateral")
           {
-            ChartSeries& cs = series[name];
-            cs.Name = name;
-            cs.X.push_back(build + propagate);
+            const std::string label = name + (variant == "none" ? "" : " " + variant);
+            ChartSeries& cs = series[label];
+            cs.Name = label;
+            cs.X.push_back(build + propagate + gatherSeconds);
             cs.Y.push_back(100.0 * e.Mean);
           }
         }
@@ -541,8 +612,8 @@ int RunVlfAccuracyBenchmark(const std::vector<std::string>& args)
   {
     ScatterChart chart;
     chart.Title =
-      "Light field vs path tracer: mean per-pixel relative error vs build + propagation time";
-    chart.XLabel = "build + propagation seconds";
+      "Light field vs path tracer: mean per-pixel relative error vs build + propagation (+ gather) time";
+    chart.XLabel = "build + propagation (+ final gather) seconds";
     chart.YLabel = "mean relative error per pixel (%)";
     chart.LogY = true;
     chart.YFloor = 0.5;

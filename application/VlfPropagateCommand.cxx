@@ -9,6 +9,7 @@
 
 #include "AutomaticSettings.h"
 #include "Distribution.h"
+#include "FinalGather.h"
 #include "LightField.h"
 #include "MemoryBudget.h"
 #include "ObjScene.h"
@@ -195,6 +196,10 @@ int Propagate(const std::vector<std::string>& args)
   cl.AddFlag("--rank-report",
     "print each rank's seconds (trace, iterations, snapshot writes; of which in MPI calls), "
     "CPU seconds, peak memory and bytes sent");
+  cl.AddFlag("--no-gather",
+    "keep the propagated diffuse textures: no final gather (exact rays from every texel to the "
+    "emitters and into the field, FinalGather.h)");
+  cl.AddValue("--gather-rays", "N", "the final gather's indirect rays per texel", "1024");
   cl.AddFlag("--filter",
     "write the diffuse totals smoothed by an edge-keeping (bilateral) "
     "filter against mottling; not with --resume");
@@ -216,6 +221,12 @@ int Propagate(const std::vector<std::string>& args)
     !cl.GetInt("--max-iterations", 1, 10000, maxIterations, error) ||
     !cl.GetInt("--snapshot-every", 1, 10000, snapshotEvery, error) ||
     !cl.GetDouble("--memory-budget", 1e-3, 1e6, budget, error))
+  {
+    return cl.UsageError(error);
+  }
+  vlf::FinalGatherOptions gatherOptions;
+  const bool gather = !cl.Has("--no-gather");
+  if (!cl.GetInt("--gather-rays", 1, 1 << 20, gatherOptions.IndirectRays, error))
   {
     return cl.UsageError(error);
   }
@@ -391,7 +402,7 @@ int Propagate(const std::vector<std::string>& args)
       settings.RaysPerSide = rays;
       settings.TilesPerSide = tiles;
       settings.MemoryBudget = budgetBytes;
-      const vlf::AutomaticChoice choice = vlf::ResolveAutomaticSettings(scene, settings);
+      const vlf::AutomaticChoice choice = vlf::ResolveAutomaticSettings(scene, settings, gather);
       settings = choice.Settings;
       if (rays == 0)
       {
@@ -517,8 +528,28 @@ int Propagate(const std::vector<std::string>& args)
     }
     // The last iteration (with --snapshot-every), or with zero iterations the traced field.
     // (Decided alike on every rank: a file test could race with rank 0's write.)
-    if (writtenIteration != field->IterationsDone)
+    if (!gather && !field->PropagatedDiffuse.empty())
     {
+      vlf::RestorePropagatedDiffuse(*field); // a gathered field resumed without iterating
+      writtenIteration = -1;
+    }
+    if (writtenIteration != field->IterationsDone && !gather)
+    {
+      snapshot(*field);
+    }
+    if (gather)
+    {
+      // Every rank gathers the whole textures (the same random numbers: the same result); the
+      // file gets the gathered totals and keeps the propagated ones for --resume.
+      const Clock::time_point gatherStart = Clock::now();
+      gatherOptions.Progress = root ? PrintedProgress("final gather") : ProgressCallback();
+      const vlf::FinalGatherReport g = vlf::FinalGather(*field, gatherOptions);
+      if (root)
+      {
+        std::printf("final gather: %zu texels, %.3g rays in %.2f s\n", g.Texels,
+          static_cast<double>(g.Rays), SecondsSince(gatherStart));
+        std::fflush(stdout);
+      }
       snapshot(*field);
     }
     if (vtkMultiProcessController::GetGlobalController()) // under mpiexec, even one rank

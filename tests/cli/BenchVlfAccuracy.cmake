@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: BSD-3-Clause
 # `mesolight bench vlf-accuracy` on tiny sizes: the CSV's header and rows (2 scenes x 2 settings x
-# without / with the filter), the finer field closer to the path tracer than the coarse one on
+# propagated / gathered / filtered), the finer field closer to the path tracer than the coarse one on
 # each scene (the error can tell them apart), the cached reference reused by a second run, and
 # bad --settings / --scenes refused.
 cmake_minimum_required(VERSION 3.16)
@@ -15,24 +15,32 @@ if (NOT last_output MATCHES "path-traced reference")
 endif ()
 file(STRINGS "${WORK}/accuracy.csv" lines)
 list(GET lines 0 header)
-set(expected "scene,settings,directions,rays,tiles,texel_m,lines,surfaces,texels,map_cells,iterations,build_s,propagate_s,total_s,allocated_bytes,estimate_bytes,filter,pixels,mean_rel_error,p95_rel_error,black_where_lit,reference_noise,peak_bytes")
+set(expected "scene,settings,directions,rays,tiles,texel_m,lines,surfaces,texels,map_cells,iterations,build_s,propagate_s,total_s,allocated_bytes,estimate_bytes,filter,gather_s,gather_rays,pixels,mean_rel_error,p95_rel_error,black_where_lit,reference_noise,peak_bytes")
 if (NOT header STREQUAL expected)
   message(FATAL_ERROR "header\n  ${header}\nnot\n  ${expected}")
 endif ()
 list(LENGTH lines count)
-if (NOT count EQUAL 9)
-  message(FATAL_ERROR "expected 8 rows, got ${count} lines:\n${lines}")
+if (NOT count EQUAL 13)
+  message(FATAL_ERROR "expected 12 rows, got ${count} lines:\n${lines}")
 endif ()
-# Unfiltered rows: lines 1 (cornell 33x16), 3 (cornell 129x32), 5 (thin 33x16), 7 (thin 129x32).
-foreach (pair "1;3" "5;7")
+# The gathered row after each propagated one, with its rays.
+list(GET lines 2 gathered_line)
+string(REPLACE "," ";" g "${gathered_line}")
+list(GET g 16 variant)
+list(GET g 18 gather_rays)
+if (NOT variant STREQUAL "gather" OR NOT gather_rays GREATER 0)
+  message(FATAL_ERROR "row 2 is not a final gather: ${gathered_line}")
+endif ()
+# Unfiltered rows: lines 1 (cornell 33x16), 4 (cornell 129x32), 7 (thin 33x16), 10 (thin 129x32).
+foreach (pair "1;4" "7;10")
   list(GET pair 0 coarse)
   list(GET pair 1 fine)
   list(GET lines ${coarse} coarse_line)
   list(GET lines ${fine} fine_line)
   string(REPLACE "," ";" c "${coarse_line}")
   string(REPLACE "," ";" f "${fine_line}")
-  list(GET c 18 coarse_error)
-  list(GET f 18 fine_error)
+  list(GET c 20 coarse_error)
+  list(GET f 20 fine_error)
   list(GET f 16 filter)
   if (NOT filter STREQUAL "none")
     message(FATAL_ERROR "row ${fine} is not unfiltered: ${fine_line}")
@@ -47,4 +55,6 @@ if (last_output MATCHES "path-traced reference")
 endif ()
 cli_expect_error(2 "is not auto, KxN or KxNtF" bench vlf-accuracy --scenes cornell --settings 33
   --cache "${WORK}/cache" --size 24x24 --samples 64)
+cli_expect_error(2 "is not none, gather or bilateral" bench vlf-accuracy --scenes cornell
+  --variants none,final --cache "${WORK}/cache" --size 24x24 --samples 64)
 cli_expect_error(2 "unknown scene 'attic'" bench vlf-accuracy --scenes attic --cache "${WORK}/cache")

@@ -4,6 +4,7 @@
 
 #include "AutomaticSettings.h"
 #include "Distribution.h"
+#include "FinalGather.h"
 #include "LightField.h"
 #include "Lookup.h"
 #include "PatchComparison.h"
@@ -220,12 +221,13 @@ int vtkVirtualLightField::RequestData(
     }
     else
     {
-      settings = vlf::ResolveAutomaticSettings(scene, settings).Settings;
+      settings = vlf::ResolveAutomaticSettings(scene, settings, this->FinalGather).Settings;
       field = vlf::LightField::Build(
         scene, settings, mesolight::AlgorithmProgress(this, 0.0, buildShare));
     }
     vlf::PropagationOptions options;
-    options.Progress = mesolight::AlgorithmProgress(this, buildShare, 1.0);
+    const double gatherShare = this->FinalGather ? 0.9 : 1.0;
+    options.Progress = mesolight::AlgorithmProgress(this, buildShare, gatherShare);
     const auto afterIteration = [&](const vlf::LightField& f)
     {
       if (snapshots)
@@ -235,6 +237,11 @@ int vtkVirtualLightField::RequestData(
     };
     const double unshot = PropagateAsConfigured(*field, this->Iterations,
       this->ConvergenceTolerance, this->MaxIterations, options, afterIteration);
+    this->GatherIfAsked(*field, gatherShare);
+    if (snapshots && this->FinalGather)
+    {
+      vlf::WriteSnapshot(*field, this->SnapshotFileName);
+    }
     if (unshot > 0.0)
     {
       vtkWarningMacro("The light field still holds " << 100.0 * unshot
@@ -464,7 +471,7 @@ int vtkVirtualLightField::RequestDistributedData(vtkPolyData* input, vtkPolyData
         settings.TilesPerSide = this->Tiles;
         settings.MemoryBudget = static_cast<std::uint64_t>(this->MemoryBudget);
         // Every rank has the whole scene here and chooses alike.
-        settings = vlf::ResolveAutomaticSettings(scene, settings).Settings;
+        settings = vlf::ResolveAutomaticSettings(scene, settings, this->FinalGather).Settings;
         if (snapshots && vlf::FileExists(this->SnapshotFileName) &&
           !vlf::IsSnapshotFile(this->SnapshotFileName))
         {
@@ -498,7 +505,8 @@ int vtkVirtualLightField::RequestDistributedData(vtkPolyData* input, vtkPolyData
         scene, settings, mesolight::AlgorithmProgress(this, 0.0, buildShare), &reducer);
     }
     vlf::PropagationOptions options;
-    options.Progress = mesolight::AlgorithmProgress(this, buildShare, 1.0);
+    const double gatherShare = this->FinalGather ? 0.9 : 1.0;
+    options.Progress = mesolight::AlgorithmProgress(this, buildShare, gatherShare);
     options.Reduce = &reducer;
     const auto afterIteration = [&](const vlf::LightField&)
     {
@@ -509,6 +517,13 @@ int vtkVirtualLightField::RequestDistributedData(vtkPolyData* input, vtkPolyData
     };
     const double unshot = PropagateAsConfigured(*field, this->Iterations,
       this->ConvergenceTolerance, this->MaxIterations, options, afterIteration);
+    // The diffuse textures are whole on every rank: each gathers all of them (the same random
+    // numbers, so the same result), reading mirrors' diffuse textures only (FinalGather.h).
+    this->GatherIfAsked(*field, gatherShare);
+    if (snapshots && this->FinalGather)
+    {
+      vlf::WriteDistributedSnapshot(*field, this->SnapshotFileName, reducer);
+    }
     if (unshot > 0.0 && reducer.Rank() == 0)
     {
       vtkWarningMacro("The light field still holds " << 100.0 * unshot
@@ -601,6 +616,19 @@ vtkFloatArray* vtkVirtualLightField::GetAttachedAtlas(vtkDataObject* data, int s
   return pixels;
 }
 
+void vtkVirtualLightField::GatherIfAsked(mesolight::vlf::LightField& field, double begin)
+{
+  if (!this->FinalGather)
+  {
+    mesolight::vlf::RestorePropagatedDiffuse(field); // a gathered snapshot resumed: as propagated
+    return;
+  }
+  mesolight::vlf::FinalGatherOptions options;
+  options.IndirectRays = this->FinalGatherRays;
+  options.Progress = mesolight::AlgorithmProgress(this, begin, 1.0);
+  mesolight::vlf::FinalGather(field, options);
+}
+
 void vtkVirtualLightField::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
@@ -619,6 +647,8 @@ void vtkVirtualLightField::PrintSelf(ostream& os, vtkIndent indent)
      << "\n";
   os << indent << "ResumeFromSnapshot: " << this->ResumeFromSnapshot << "\n";
   os << indent << "DistributeDirections: " << this->DistributeDirections << "\n";
+  os << indent << "FinalGather: " << this->FinalGather << "\n";
+  os << indent << "FinalGatherRays: " << this->FinalGatherRays << "\n";
   os << indent << "PropagationCount: " << this->PropagationCount << "\n";
   os << indent << "LightField: "
      << (this->Field ? std::to_string(this->Field->IterationsDone) + " iterations done" : "(none)")

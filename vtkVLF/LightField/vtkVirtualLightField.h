@@ -119,6 +119,23 @@ public:
   ///@}
 
   ///@{
+  /**
+   * Final gather after the propagation (default on; mesolight::vlf::FinalGather): every texel
+   * of the diffuse textures recomputed from exact shadow rays to the emitters and
+   * FinalGatherRays cosine-distributed rays reading the propagated field at their hits, so
+   * visibility resolves per texel rather than per line spacing. Off: the propagated textures.
+   */
+  vtkSetMacro(FinalGather, bool);
+  vtkGetMacro(FinalGather, bool);
+  vtkBooleanMacro(FinalGather, bool);
+  ///@}
+  ///@{
+  /** Indirect rays per texel of the final gather (default 1024). */
+  vtkSetMacro(FinalGatherRays, int);
+  vtkGetMacro(FinalGatherRays, int);
+  ///@}
+
+  ///@{
   /** Memory budget in bytes (default 4 GiB). */
   vtkSetMacro(MemoryBudget, vtkTypeInt64);
   vtkGetMacro(MemoryBudget, vtkTypeInt64);
@@ -228,6 +245,10 @@ private:
 
   bool ResumeFromSnapshot = false;
   bool DistributeDirections = true;
+  bool FinalGather = true;
+  int FinalGatherRays = 1024; // mesolight::vlf::FinalGatherOptions::IndirectRays
+  // The final gather (when on) with progress from `begin` to 1, then the snapshot written again.
+  void GatherIfAsked(mesolight::vlf::LightField& field, double begin);
   int DirectionsPropagated = 0;
   int PropagationCount = 0;
   std::unique_ptr<mesolight::vlf::LightField> Field;

@@ -149,15 +149,22 @@ AutomaticChoice ChooseAutomaticSettings(const TriangleScene& scene, const Automa
       break;
     }
   }
-  if (limits.FineTexelRatio > 0.0 && chosen.Directions >= 2049 &&
-    static_cast<double>(wanted) >= limits.FineTexelRatio * chosen.RaysPerSide)
+  // Halve the texels while the features ask for FineTexelRatio times the lines per side the
+  // texels give, at most MaxTexelHalvings times, and while the estimate fits the budget share.
+  for (int halvings = 1; limits.FineTexelRatio > 0.0 && chosen.Directions >= 2049 &&
+       halvings <= limits.MaxTexelHalvings &&
+       static_cast<double>(wanted) >=
+         limits.FineTexelRatio * chosen.RaysPerSide * static_cast<double>(1 << (halvings - 1));
+       ++halvings)
   {
-    chosen.TexelSize = 0.5f * chosen.CellSize();
+    const float before = chosen.TexelSize;
+    chosen.TexelSize = chosen.CellSize() / static_cast<float>(1 << halvings);
     // The textures grow fourfold: still within the budget share?
     if (static_cast<double>(EstimateMemory(scene, chosen).TotalBytes) >
       limits.BudgetShare * static_cast<double>(limits.MemoryBudget))
     {
-      chosen.TexelSize = 0.0f;
+      chosen.TexelSize = before;
+      break;
     }
   }
   choice.Settings = chosen;
@@ -165,13 +172,18 @@ AutomaticChoice ChooseAutomaticSettings(const TriangleScene& scene, const Automa
 }
 
 AutomaticChoice ResolveAutomaticSettings(
-  const TriangleScene& scene, const LightFieldSettings& requested)
+  const TriangleScene& scene, const LightFieldSettings& requested, bool finalGather)
 {
   AutomaticChoice choice;
   if (requested.RaysPerSide == 0)
   {
     AutomaticLimits limits;
     limits.MemoryBudget = requested.MemoryBudget;
+    if (!finalGather)
+    {
+      limits.FineTexelRatio = GatherlessFineTexelRatio;
+      limits.MaxTexelHalvings = 1;
+    }
     choice = ChooseAutomaticSettings(scene, limits);
   }
   else
@@ -209,7 +221,10 @@ std::string AutomaticChoice::Describe() const
     "%zu directions x %d x %d lines%s (scene %.3g across, small features %.3g wide ask for %d "
     "lines per side; limited by %s)",
     this->Settings.Directions, this->Settings.RaysPerSide, this->Settings.RaysPerSide,
-    this->Settings.TexelSize > 0.0f ? ", texels half the line spacing" : "",
+    this->Settings.TexelSize <= 0.0f ? ""
+      : this->Settings.TexelSize > 0.3f * this->Settings.CellSize()
+      ? ", texels half the line spacing"
+      : ", texels a quarter of the line spacing",
     static_cast<double>(this->SceneDiameter), static_cast<double>(this->FeatureWidth),
     this->WantedRaysPerSide, this->Limit.c_str());
   return text;

@@ -18,8 +18,8 @@
 // (EstimateMemory within BudgetShare of it): from the most lines down, each N with its own
 // directions (AutomaticDirections), and with 513 where the memory budget refused those.
 //
-// The texels are the cell side, or half of it where the features ask for at least twice the
-// lines per side the caps allowed: the resolution the lines cannot give then comes from the
+// The texels are the cell side, or half of it where the features ask for more lines per side
+// than the caps allowed (at least twice as many without the final gather): the resolution the lines cannot give then comes from the
 // textures alone, each texel still gathering about a quarter of 2049 directions' lines. Measured
 // on `bench vlf-accuracy` at 2049 x 96 x 96 (docs/measurements/vlf/accuracy/): the boxes (their
 // 9 cm features ask for 256 lines) went from 33.3% to 24.9% mean error per pixel (the floor
@@ -55,9 +55,21 @@ struct AutomaticLimits
   int MaxRaysPerSide = 256;
   double LinesPerFeature = 2.0; // lines across the small-feature width, per direction
   // Texels half the cell side when the features ask for this many times the lines chosen (with
-  // at least 2049 directions); 0 never.
-  double FineTexelRatio = 2.0;
+  // at least 2049 directions); 0 never. With the final gather (FinalGather.h, the default) a
+  // texel no longer depends on the lines crossing it, so any ask beyond the lines taken gets
+  // them (1): the corridor, 136 asked for 96 taken, went from 5.7% / 19.5% to 4.2% / 12.2% mean /
+  // p95 per pixel gathered (`bench vlf-accuracy --scenes corridor --settings 2049x96t0.5`).
+  // Without the gather (GatherlessFineTexelRatio) half texels made the corridor worse (7.0% ->
+  // 7.9%), so there only at twice.
+  double FineTexelRatio = 1.0;
+  // Texels a quarter of the cell side where the features ask for twice FineTexelRatio times the
+  // lines (2; 1 without the gather): the boxes (256 asked for 96) went from 12.1% / 39.3% at half
+  // texels to 7.4% / 22.1% gathered (`--settings 2049x96t0.25`), the gather then 1.7 times the
+  // propagation's time there.
+  int MaxTexelHalvings = 2;
 };
+
+constexpr double GatherlessFineTexelRatio = 2.0;
 
 struct AutomaticChoice
 {
@@ -88,8 +100,10 @@ std::size_t AutomaticDirections(int raysPerSide);
 // (AutomaticDirections), TilesPerSide 0 is RaysPerSide / 8, TexelSize 0 with automatic lines is
 // the choice's; given values are kept. Returns the
 // choice (Describe() for a log line; Limit "given" when nothing was automatic).
+// finalGather false: the field's textures are used as propagated (FineTexelRatio
+// GatherlessFineTexelRatio).
 AutomaticChoice ResolveAutomaticSettings(
-  const TriangleScene& scene, const LightFieldSettings& requested);
+  const TriangleScene& scene, const LightFieldSettings& requested, bool finalGather = true);
 
 } // namespace vlf
 } // namespace mesolight

@@ -291,6 +291,9 @@ public:
   std::vector<glm::vec3> TotalDiffuse;
   std::vector<glm::vec3> UnshotDiffuse;
   std::vector<float> Capacity;
+  // The propagated totals while TotalDiffuse holds the final gather's (FinalGather.h); empty
+  // otherwise. Propagating again restores them first.
+  std::vector<glm::vec3> PropagatedDiffuse;
   TexelWeights WeightsAt(std::uint32_t surface, const glm::vec3& x) const;
   glm::vec3 SampleTexture(
     const std::vector<glm::vec3>& texture, std::uint32_t surface, const glm::vec3& x) const;

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "Propagation.h"
 
+#include "FinalGather.h"
+
 #include "MathConstants.h"
 
 #include <glm/geometric.hpp>
@@ -288,6 +290,8 @@ std::array<double, 3> UnshotFlux(const LightField& field)
 
 LightField::IterationEnergy PropagateIteration(LightField& field, const PropagationOptions& options)
 {
+  // A gathered field's totals are not sums of what was shot: go on from the propagated ones.
+  RestorePropagatedDiffuse(field);
   const auto start = std::chrono::steady_clock::now();
   const std::size_t count = field.SubfieldCount();
   const std::size_t texels = field.TexelCount();

@@ -50,6 +50,9 @@ SceneMaterial ReadMaterial(Reader& r)
 
 // Depth of crossing `slot` of map `map` of f (subfield k of the field, its maps possibly received
 // from another rank): stored or from the plane (CrossingDepths).
+// "GATHERED" read as a little-endian word: the optional section of the propagated totals.
+constexpr std::uint64_t GatheredTag = 0x4445524548544147ull;
+
 void WritePayload(Writer& w, const LightField& field,
   const std::function<const Subfield&(std::size_t k)>& subfieldOf, std::uint32_t version)
 {
@@ -124,6 +127,13 @@ void WritePayload(Writer& w, const LightField& field,
   for (const std::string& name : scene.SurfaceNames)
   {
     w.String(name);
+  }
+  // A gathered field (FinalGather.h): the propagated totals, after everything older files hold,
+  // so those still load (nothing left over there) and their fields are not gathered.
+  if (!field.PropagatedDiffuse.empty())
+  {
+    w.Value(GatheredTag);
+    w.Array(field.PropagatedDiffuse);
   }
 }
 } // namespace
@@ -648,6 +658,14 @@ std::unique_ptr<LightField> ReadSnapshot(const std::string& path, std::uint64_t 
       }
     }
   }
+  if (!dense && r.BytesLeft() >= sizeof(std::uint64_t) + sizeof(std::uint64_t))
+  {
+    if (r.Value<std::uint64_t>() != GatheredTag)
+    {
+      r.Fail("its contents end in an unknown section");
+    }
+    r.Array(field->PropagatedDiffuse, "propagated texels", field->TotalDiffuse.size());
+  }
   if (r.BytesLeft() != 0)
   {
     r.Fail(std::to_string(r.BytesLeft()) + " bytes are left over after its contents");
@@ -664,6 +682,7 @@ std::unique_ptr<LightField> ReadSnapshot(const std::string& path, std::uint64_t 
   const auto finiteVectors = [&](const std::vector<glm::vec3>& values)
   { return values.empty() || finite(&values[0].x, 3 * values.size()); };
   bool ok = droppedOk && finiteVectors(field->TotalDiffuse) &&
+    finiteVectors(field->PropagatedDiffuse) &&
     finiteVectors(field->UnshotDiffuse) && finite(field->Capacity.data(), field->Capacity.size());
   for (std::size_t k = 0; ok && k < field->SubfieldCount(); ++k)
   {
@@ -691,7 +710,8 @@ std::unique_ptr<LightField> ReadSnapshot(const std::string& path, std::uint64_t 
     return std::all_of(values.begin(), values.end(),
       [](const glm::vec3& x) { return x.x >= 0.0f && x.y >= 0.0f && x.z >= 0.0f; });
   };
-  if (!nonNegative(field->TotalDiffuse) || !nonNegative(field->UnshotDiffuse))
+  if (!nonNegative(field->TotalDiffuse) || !nonNegative(field->UnshotDiffuse) ||
+    !nonNegative(field->PropagatedDiffuse))
   {
     throw SnapshotError(Quoted(path) + " holds negative radiance: it is not a usable light field");
   }

@@ -77,17 +77,37 @@ TEST(VLFAutomaticSettings, FeaturesAskCapsLimit)
   // The line cap lowers the lines per side, never the directions.
   EXPECT_EQ(c.Settings.RaysPerSide, 96);
   EXPECT_EQ(c.Settings.Directions, 2049u);
-  // The strips ask for 256 (the cap of lines per side), over twice the 96 taken: texels of half
-  // the cell side.
-  EXPECT_FLOAT_EQ(c.Settings.TexelSize, 0.5f * c.Settings.CellSize()) << c.Describe();
-  EXPECT_NE(c.Describe().find("texels half the line spacing"), std::string::npos);
+  // The strips ask for 256 (the cap of lines per side), over twice the 96 taken: texels of a
+  // quarter of the cell side with the final gather, half without.
+  EXPECT_FLOAT_EQ(c.Settings.TexelSize, 0.25f * c.Settings.CellSize()) << c.Describe();
+  EXPECT_NE(c.Describe().find("texels a quarter of the line spacing"), std::string::npos);
+  AutomaticLimits gatherless;
+  gatherless.FineTexelRatio = GatherlessFineTexelRatio;
+  gatherless.MaxTexelHalvings = 1;
+  const AutomaticChoice half = ChooseAutomaticSettings(strips, gatherless);
+  EXPECT_FLOAT_EQ(half.Settings.TexelSize, 0.5f * half.Settings.CellSize()) << half.Describe();
+  EXPECT_NE(half.Describe().find("texels half the line spacing"), std::string::npos);
   AutomaticLimits noFine;
   noFine.FineTexelRatio = 0.0;
   EXPECT_EQ(ChooseAutomaticSettings(strips, noFine).Settings.TexelSize, 0.0f);
+  // With the final gather (the default) any ask beyond the lines taken gets half texels;
+  // without it only twice the lines: the strips asking 1.5 times the lines of a lower cap.
+  AutomaticLimits lowCap;
+  lowCap.MaxRaysPerSide = 4096;
+  lowCap.MaxLines = std::uint64_t(1) << 40;
+  lowCap.MemoryBudget = std::uint64_t(1) << 40;
+  lowCap.MaxLines = static_cast<std::uint64_t>(8193) * 200 * 200;
+  const AutomaticChoice capped = ChooseAutomaticSettings(strips, lowCap);
+  ASSERT_GT(capped.WantedRaysPerSide, capped.Settings.RaysPerSide) << capped.Describe();
+  ASSERT_LT(capped.WantedRaysPerSide, 2 * capped.Settings.RaysPerSide) << capped.Describe();
+  EXPECT_GT(capped.Settings.TexelSize, 0.0f) << capped.Describe();
+  lowCap.FineTexelRatio = GatherlessFineTexelRatio;
+  EXPECT_EQ(ChooseAutomaticSettings(strips, lowCap).Settings.TexelSize, 0.0f);
 
   // A budget between what 513 and 2049 directions at 96 lines need: 513 x 96 (memory lowers the
   // directions first at the same lines).
   LightFieldSettings at96 = c.Settings;
+  at96.TexelSize = 0.0f;
   const std::uint64_t many = EstimateMemory(strips, at96).TotalBytes;
   at96.Directions = 513;
   const std::uint64_t few = EstimateMemory(strips, at96).TotalBytes;
@@ -140,10 +160,13 @@ TEST(VLFAutomaticSettings, GivenValuesAreKept)
   EXPECT_EQ(c.Settings.Directions, 2049u);
   EXPECT_GT(c.Settings.RaysPerSide, 32);
   EXPECT_EQ(c.Settings.TilesPerSide, c.Settings.RaysPerSide / 8);
-  // All automatic: the choice's half-cell texels; lines given: the cell side.
+  // All automatic: the choice's finer texels (a quarter of the cell with the final gather, half
+  // without); lines given: the cell side.
   given.Directions = 0;
   EXPECT_FLOAT_EQ(ResolveAutomaticSettings(Strips(true), given).Settings.TexelSize,
-    0.5f * ResolveAutomaticSettings(Strips(true), given).Settings.CellSize());
+    0.25f * ResolveAutomaticSettings(Strips(true), given).Settings.CellSize());
+  EXPECT_FLOAT_EQ(ResolveAutomaticSettings(Strips(true), given, false).Settings.TexelSize,
+    0.5f * ResolveAutomaticSettings(Strips(true), given, false).Settings.CellSize());
   given.RaysPerSide = 96;
   EXPECT_EQ(ResolveAutomaticSettings(Strips(true), given).Settings.TexelSize, 0.0f);
 }

@@ -1,0 +1,579 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "FinalGather.h"
+
+#include "Lookup.h"
+#include "MathConstants.h"
+#include "OrthonormalBasis.h"
+#include "ParallelFor.h"
+
+#include "EmbreeScene.h"
+#include "RandomSequence.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+
+namespace mesolight
+{
+namespace vlf
+{
+namespace
+{
+
+// One emitter triangle for next-event estimation.
+struct EmitterTriangle
+{
+  glm::vec3 A{ 0.0f }, B{ 0.0f }, C{ 0.0f };
+  glm::vec3 Normal{ 0.0f, 0.0f, 1.0f }; // front, unit
+  glm::vec3 Emission{ 0.0f };
+  float Area = 0.0f;
+};
+
+struct Emitters
+{
+  std::vector<EmitterTriangle> Triangles;
+  std::vector<float> Cumulative; // of area x luminance, last = Total
+  float Total = 0.0f;
+
+  // Index of the triangle for u in [0, 1) and its probability.
+  std::size_t Pick(float u, float& probability) const
+  {
+    const float target = u * this->Total;
+    std::size_t i = static_cast<std::size_t>(
+      std::upper_bound(this->Cumulative.begin(), this->Cumulative.end(), target) -
+      this->Cumulative.begin());
+    i = std::min(i, this->Triangles.size() - 1);
+    const float before = i == 0 ? 0.0f : this->Cumulative[i - 1];
+    probability = (this->Cumulative[i] - before) / this->Total;
+    return i;
+  }
+};
+
+float Luminance(const glm::vec3& c)
+{
+  return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z;
+}
+
+Emitters CollectEmitters(const TriangleScene& scene)
+{
+  Emitters e;
+  for (std::size_t t = 0; t < scene.TriangleCount(); ++t)
+  {
+    const SceneMaterial& m = scene.MaterialOf(t);
+    const float power = Luminance(m.Emission);
+    const glm::vec3 n = scene.FaceNormal(t);
+    const float twiceArea = glm::length(n);
+    if (!(power > 0.0f) || !(twiceArea > 0.0f))
+    {
+      continue;
+    }
+    EmitterTriangle tri;
+    tri.A = scene.Vertex(t, 0);
+    tri.B = scene.Vertex(t, 1);
+    tri.C = scene.Vertex(t, 2);
+    tri.Normal = n / twiceArea;
+    tri.Emission = m.Emission;
+    tri.Area = 0.5f * twiceArea;
+    e.Total += tri.Area * power;
+    e.Triangles.push_back(tri);
+    e.Cumulative.push_back(e.Total);
+  }
+  return e;
+}
+
+// A surface's triangles in its continuous texel coordinates (texel centres at integers), and per
+// texel the triangles whose bounding box reaches it.
+struct SurfaceTriangles
+{
+  std::vector<std::array<glm::vec2, 3>> Triangles;
+  // Their corners in unit-sphere coordinates: a surface groups triangles within 1e-4 of one
+  // plane, so points are put on the triangle itself, not on the surface's plane (which may lie
+  // that far inside a box whose top joined its neighbours' slightly lower ones).
+  std::vector<std::array<glm::vec3, 3>> Corners;
+  std::vector<std::uint32_t> Start; // per texel + 1: offsets into Lists
+  std::vector<std::uint32_t> Lists;
+};
+
+SurfaceTriangles BucketTriangles(const LightField& field, const Surface& s)
+{
+  SurfaceTriangles out;
+  const TriangleScene& scene = field.Scene();
+  const std::size_t texels = s.TexelCount();
+  std::vector<std::uint32_t> counts(texels + 1, 0);
+  std::vector<std::array<int, 4>> boxes;
+  for (const std::uint32_t t : s.Triangles)
+  {
+    std::array<glm::vec2, 3> tri;
+    glm::vec2 lo(1e30f), hi(-1e30f);
+    for (int c = 0; c < 3; ++c)
+    {
+      tri[c] = s.TexelCoordinates(scene.Vertex(t, c));
+      lo = glm::min(lo, tri[c]);
+      hi = glm::max(hi, tri[c]);
+    }
+    // Texel (a, b) covers [a - 1/2, a + 1/2] x [b - 1/2, b + 1/2].
+    const std::array<int, 4> box = { std::max(0, static_cast<int>(std::floor(lo.x + 0.5f))),
+      std::min(s.TextureWidth - 1, static_cast<int>(std::floor(hi.x + 0.5f))),
+      std::max(0, static_cast<int>(std::floor(lo.y + 0.5f))),
+      std::min(s.TextureHeight - 1, static_cast<int>(std::floor(hi.y + 0.5f))) };
+    out.Triangles.push_back(tri);
+    out.Corners.push_back({ scene.Vertex(t, 0), scene.Vertex(t, 1), scene.Vertex(t, 2) });
+    boxes.push_back(box);
+    for (int b = box[2]; b <= box[3]; ++b)
+    {
+      for (int a = box[0]; a <= box[1]; ++a)
+      {
+        ++counts[static_cast<std::size_t>(b) * s.TextureWidth + a + 1];
+      }
+    }
+  }
+  for (std::size_t i = 0; i < texels; ++i)
+  {
+    counts[i + 1] += counts[i];
+  }
+  out.Start = counts;
+  out.Lists.resize(counts[texels]);
+  for (std::size_t q = 0; q < boxes.size(); ++q)
+  {
+    const std::array<int, 4>& box = boxes[q];
+    for (int b = box[2]; b <= box[3]; ++b)
+    {
+      for (int a = box[0]; a <= box[1]; ++a)
+      {
+        out.Lists[counts[static_cast<std::size_t>(b) * s.TextureWidth + a]++] =
+          static_cast<std::uint32_t>(q);
+      }
+    }
+  }
+  return out;
+}
+
+// Whether p lies in t; if so, b1 and b2 get its barycentric weights of t[1] and t[2].
+bool InsideTriangle(const std::array<glm::vec2, 3>& t, const glm::vec2& p, float& b1, float& b2)
+{
+  const auto edge = [](const glm::vec2& a, const glm::vec2& b, const glm::vec2& q)
+  { return (b.x - a.x) * (q.y - a.y) - (b.y - a.y) * (q.x - a.x); };
+  const float d0 = edge(t[0], t[1], p);
+  const float d1 = edge(t[1], t[2], p);
+  const float d2 = edge(t[2], t[0], p);
+  const bool negative = d0 < 0.0f || d1 < 0.0f || d2 < 0.0f;
+  const bool positive = d0 > 0.0f || d1 > 0.0f || d2 > 0.0f;
+  const float area = d0 + d1 + d2;
+  if ((negative && positive) || area == 0.0f)
+  {
+    return false;
+  }
+  b1 = d2 / area;
+  b2 = d0 / area;
+  return true;
+}
+
+// Cosine-distributed direction in the frame (u, v, n) from a point of the unit square.
+glm::vec3 CosineDirection(
+  const glm::vec3& u, const glm::vec3& v, const glm::vec3& n, float r1, float r2)
+{
+  const float phi = 2.0f * Pi<float> * r1;
+  const float radius = std::sqrt(r2);
+  const float z = std::sqrt(std::max(0.0f, 1.0f - r2));
+  return radius * std::cos(phi) * u + radius * std::sin(phi) * v + z * n;
+}
+
+struct TexelResult
+{
+  glm::vec3 Value{ 0.0f };
+  bool Gathered = false;
+  std::uint32_t Rays = 0;
+};
+
+class Gatherer
+{
+public:
+  Gatherer(const LightField& field, const FinalGatherOptions& options)
+    : Field(field)
+    , Options(options)
+    , Embree(field.Scene())
+    , Light(CollectEmitters(field.Scene()))
+    , Look(field)
+  {
+  }
+
+  TexelResult Gather(std::uint32_t surfaceIndex, const SurfaceTriangles& tris, int a, int b,
+    std::size_t texel) const
+  {
+    TexelResult result;
+    const Surface& s = this->Field.Surfaces()[surfaceIndex];
+    const std::size_t local = static_cast<std::size_t>(b) * s.TextureWidth + a;
+    const std::uint32_t first = tris.Start[local];
+    const std::uint32_t last = tris.Start[local + 1];
+    if (first == last)
+    {
+      return result;
+    }
+    const SceneMaterial& material = this->Field.MaterialOf(surfaceIndex);
+    const glm::vec3 n = s.Normal;
+    glm::vec3 u, v;
+    OrthonormalBasis(n, u, v);
+    RandomSequence random(SampleSeed(this->Options.Sequence, texel, 0));
+
+    // A jittered point of stratum q of a side x side grid over the texel, on a triangle of the
+    // surface (a few tries), or false.
+    const auto pointOf = [&](int q, int side, glm::vec3& x) -> bool
+    {
+      for (int attempt = 0; attempt < 6; ++attempt)
+      {
+        // The footprint first; a texel whose footprint misses the triangles (a polygon's edge
+        // crosses it) tries its whole area.
+        const float extent = attempt < 3 ? this->Options.Footprint : 1.0f;
+        const float su = (static_cast<float>(q % side) + random.NextFloat()) / side;
+        const float sv = (static_cast<float>(q / side) + random.NextFloat()) / side;
+        const glm::vec2 p(static_cast<float>(a) + extent * (su - 0.5f),
+          static_cast<float>(b) + extent * (sv - 0.5f));
+        for (std::uint32_t i = first; i < last; ++i)
+        {
+          float b1 = 0.0f, b2 = 0.0f;
+          const std::uint32_t q2 = tris.Lists[i];
+          if (InsideTriangle(tris.Triangles[q2], p, b1, b2))
+          {
+            const std::array<glm::vec3, 3>& c = tris.Corners[q2];
+            x = c[0] + b1 * (c[1] - c[0]) + b2 * (c[2] - c[0]) + this->Offset * n;
+            return true;
+          }
+        }
+      }
+      return false;
+    };
+
+    // Indirect: stratified cosine directions, positions stratified independently (a shuffled
+    // stratum per ray) so direction and position strata do not line up.
+    const int rays = this->Options.IndirectRays;
+    const int side = std::max(1, static_cast<int>(std::sqrt(static_cast<double>(rays))));
+    const int strata = side * side;
+    std::vector<int> positions(static_cast<std::size_t>(strata));
+    for (int q = 0; q < strata; ++q)
+    {
+      positions[q] = q;
+    }
+    for (int q = strata - 1; q > 0; --q)
+    {
+      std::swap(positions[q], positions[random.NextUInt() % static_cast<std::uint32_t>(q + 1)]);
+    }
+    glm::dvec3 indirect(0.0);
+    int indirectValid = 0;
+    for (int r = 0; r < rays; ++r)
+    {
+      const int q = r % strata;
+      glm::vec3 x;
+      if (!pointOf(positions[q], side, x))
+      {
+        continue;
+      }
+      const float r1 = r < strata ? (static_cast<float>(q % side) + random.NextFloat()) / side
+                                  : random.NextFloat();
+      const float r2 = r < strata ? (static_cast<float>(q / side) + random.NextFloat()) / side
+                                  : random.NextFloat();
+      SceneRay ray;
+      ray.Origin = x;
+      ray.Direction = CosineDirection(u, v, n, r1, r2);
+      const SceneHit hit = this->Embree.Intersect(ray);
+      ++result.Rays;
+      if (!hit.Hit() || hit.Triangle == SceneHit::None)
+      {
+        ++indirectValid; // escapes: nothing arrives
+        continue;
+      }
+      const std::uint32_t hs = this->Field.SurfaceOfTriangle(hit.Triangle);
+      if (hs == NoSurface)
+      {
+        continue;
+      }
+      const Surface& other = this->Field.Surfaces()[hs];
+      if (glm::dot(other.Normal, ray.Direction) >= 0.0f)
+      {
+        continue; // a back face: inside a solid or behind a one-sided surface
+      }
+      const glm::vec3 p = ray.Origin + hit.T * ray.Direction;
+      const SceneMaterial& m = this->Field.MaterialOf(hs);
+      glm::vec3 l;
+      if (this->Field.StoresRadiance(hs) && this->Field.OwnedSubfields.empty())
+      {
+        l = this->Look.RadianceLeaving(hs, p, -ray.Direction);
+      }
+      else
+      {
+        l = this->Field.SampleTexture(this->Field.TotalDiffuse, hs, p);
+      }
+      indirect += glm::dvec3(glm::max(l - m.Emission, glm::vec3(0.0f)));
+      ++indirectValid;
+    }
+    if (indirectValid == 0)
+    {
+      return result;
+    }
+
+    // Direct: emitter triangles by area x luminance, a uniform point on the triangle, an exact
+    // shadow ray (nearest hit: a back face first means the point is inside a solid).
+    glm::dvec3 direct(0.0);
+    int directValid = 0;
+    const int samples = this->Light.Triangles.empty() ? 0 : this->Options.DirectSamples;
+    const int dside = std::max(1, static_cast<int>(std::sqrt(static_cast<double>(samples))));
+    // Independent shuffles of the strata of texel positions and of emitter points.
+    const auto shuffled = [&](int count)
+    {
+      std::vector<int> order(static_cast<std::size_t>(count));
+      for (int i = 0; i < count; ++i)
+      {
+        order[static_cast<std::size_t>(i)] = i;
+      }
+      for (int i = count - 1; i > 0; --i)
+      {
+        std::swap(order[static_cast<std::size_t>(i)],
+          order[random.NextUInt() % static_cast<std::uint32_t>(i + 1)]);
+      }
+      return order;
+    };
+    const std::vector<int> directPositions = shuffled(dside * dside);
+    const std::vector<int> pointOrder = shuffled(dside * dside);
+    for (int d = 0; d < samples; ++d)
+    {
+      glm::vec3 x;
+      const int q = d % (dside * dside);
+      if (!pointOf(directPositions[static_cast<std::size_t>(q)], dside, x))
+      {
+        continue;
+      }
+      // Stratified over the emitters' area: a jittered 2D stratum (in its own shuffled order)
+      // whose first coordinate picks the triangle from the luminous-area distribution and,
+      // rescaled within that triangle's share, is the first coordinate on it, mapped onto the
+      // triangle by Shirley, Wang, Zimmerman's square-to-triangle map ("Monte Carlo techniques
+      // for direct lighting calculations", 1996): strata stay strata over all emitters.
+      const int cell = pointOrder[static_cast<std::size_t>(q)];
+      const bool stratified = d < dside * dside;
+      const float su = stratified
+        ? (static_cast<float>(cell % dside) + random.NextFloat()) / static_cast<float>(dside)
+        : random.NextFloat();
+      const float sv = stratified
+        ? (static_cast<float>(cell / dside) + random.NextFloat()) / static_cast<float>(dside)
+        : random.NextFloat();
+      float probability = 0.0f;
+      const std::size_t picked = this->Light.Pick(su, probability);
+      const EmitterTriangle& e = this->Light.Triangles[picked];
+      const float before = picked == 0 ? 0.0f : this->Light.Cumulative[picked - 1];
+      const float share = this->Light.Cumulative[picked] - before;
+      float r1 = share > 0.0f ? std::min(0.99999994f, std::max(0.0f,
+                                  (su * this->Light.Total - before) / share))
+                              : random.NextFloat();
+      float r2 = sv;
+      {
+        const float root = std::sqrt(r1);
+        r1 = root * (1.0f - r2);
+        r2 = root * r2;
+      }
+      const glm::vec3 y = e.A + r1 * (e.B - e.A) + r2 * (e.C - e.A);
+      const glm::vec3 toLight = y - x;
+      const float distance2 = glm::dot(toLight, toLight);
+      const float distance = std::sqrt(distance2);
+      ++result.Rays;
+      if (!(distance > 0.0f))
+      {
+        continue;
+      }
+      const glm::vec3 w = toLight / distance;
+      const float cosX = glm::dot(n, w);
+      const float cosY = -glm::dot(e.Normal, w);
+      if (cosX <= 0.0f || cosY <= 0.0f)
+      {
+        ++directValid;
+        continue;
+      }
+      SceneRay ray;
+      ray.Origin = x;
+      ray.Direction = w;
+      ray.TFar = distance * (1.0f - 1e-4f);
+      const SceneHit hit = this->Embree.Intersect(ray);
+      if (hit.Hit() && hit.Triangle != SceneHit::None)
+      {
+        const std::uint32_t hs = this->Field.SurfaceOfTriangle(hit.Triangle);
+        if (hs != NoSurface && glm::dot(this->Field.Surfaces()[hs].Normal, w) >= 0.0f)
+        {
+          continue; // inside a solid: not a point in the open
+        }
+        ++directValid; // shadowed
+        continue;
+      }
+      if (hit.Hit())
+      {
+        ++directValid;
+        continue;
+      }
+      direct += glm::dvec3(e.Emission) *
+        static_cast<double>(cosX * cosY / distance2 * e.Area / probability);
+      ++directValid;
+    }
+    glm::dvec3 irradianceOverPi = indirect / static_cast<double>(indirectValid);
+    if (directValid > 0)
+    {
+      irradianceOverPi += direct / (static_cast<double>(directValid) * Pi<double>);
+    }
+    result.Value = material.Emission + material.Diffuse * glm::vec3(irradianceOverPi);
+    result.Gathered = true;
+    return result;
+  }
+
+  const LightField& Field;
+  const FinalGatherOptions& Options;
+  EmbreeScene Embree;
+  Emitters Light;
+  Lookup Look;
+  // Rays start this far off the surface (unit sphere): well below the coincident-face distance
+  // (1e-4) and the Cornell light's 0.1 mm under its ceiling (2e-4 here), above float rounding
+  // of unit-sphere coordinates.
+  float Offset = 2e-5f;
+};
+
+} // namespace
+
+FinalGatherReport FinalGather(LightField& field, const FinalGatherOptions& options)
+{
+  if (!(options.Footprint > 0.0f && options.Footprint <= 1.0f))
+  {
+    throw std::invalid_argument("the final gather's footprint must be in (0, 1] texels");
+  }
+  if (options.IndirectRays <= 0 || options.DirectSamples < 0)
+  {
+    throw std::invalid_argument("the final gather needs a positive number of indirect rays and "
+                                "a non-negative number of emitter samples per texel");
+  }
+  const auto start = std::chrono::steady_clock::now();
+  RestorePropagatedDiffuse(field); // a second gather starts from the propagated totals
+  FinalGatherReport report;
+  const Gatherer gatherer(field, options);
+  const std::vector<Surface>& surfaces = field.Surfaces();
+  std::vector<SurfaceTriangles> buckets(surfaces.size());
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> work; // (surface, local texel) with triangles
+  for (std::uint32_t s = 0; s < surfaces.size(); ++s)
+  {
+    buckets[s] = BucketTriangles(field, surfaces[s]);
+    for (std::size_t t = 0; t < surfaces[s].TexelCount(); ++t)
+    {
+      if (buckets[s].Start[t] != buckets[s].Start[t + 1])
+      {
+        work.emplace_back(s, static_cast<std::uint32_t>(t));
+      }
+    }
+  }
+  std::vector<TexelResult> results(work.size());
+  // Rounds of work between progress reports: abort is checked between them.
+  const std::size_t rounds = std::max<std::size_t>(1, std::min<std::size_t>(50, work.size() / 256));
+  for (std::size_t round = 0; round < rounds; ++round)
+  {
+    if (!ReportProgress(options.Progress, static_cast<double>(round) / rounds))
+    {
+      throw AbortedError();
+    }
+    const std::size_t begin = work.size() * round / rounds;
+    const std::size_t end = work.size() * (round + 1) / rounds;
+    ParallelFor(begin, end, 16,
+      [&](std::size_t b, std::size_t e)
+      {
+        for (std::size_t i = b; i < e; ++i)
+        {
+          const Surface& s = surfaces[work[i].first];
+          const int a = static_cast<int>(work[i].second % static_cast<std::uint32_t>(s.TextureWidth));
+          const int bb = static_cast<int>(work[i].second / static_cast<std::uint32_t>(s.TextureWidth));
+          results[i] = gatherer.Gather(
+            work[i].first, buckets[work[i].first], a, bb, s.TexelOffset + work[i].second);
+        }
+      });
+  }
+  if (!ReportProgress(options.Progress, 1.0))
+  {
+    throw AbortedError();
+  }
+  std::vector<glm::vec3> gathered = field.TotalDiffuse;
+  std::vector<std::uint8_t> done(gathered.size(), 0);
+  for (std::size_t i = 0; i < work.size(); ++i)
+  {
+    report.Rays += results[i].Rays;
+    if (results[i].Gathered)
+    {
+      const std::size_t texel = surfaces[work[i].first].TexelOffset + work[i].second;
+      gathered[texel] = results[i].Value;
+      done[texel] = 1;
+      ++report.Texels;
+    }
+  }
+  // Texels without a point in the open: the mean of their gathered 8-neighbours, ring after
+  // ring (up to 16), so that bilinear reads near an edge or a contact blend gathered values
+  // only, never a propagated texel finer than the lines (which may hold nothing).
+  for (int ring = 0; ring < 16; ++ring)
+  {
+    const std::size_t filledBefore = report.Filled;
+    std::vector<std::uint8_t> next = done;
+    for (const Surface& s : surfaces)
+    {
+      for (int b = 0; b < s.TextureHeight; ++b)
+      {
+        for (int a = 0; a < s.TextureWidth; ++a)
+        {
+          const std::size_t texel = s.TexelOffset + static_cast<std::size_t>(b) * s.TextureWidth + a;
+          if (done[texel])
+          {
+            continue;
+          }
+          glm::vec3 sum(0.0f);
+          int count = 0;
+          for (int db = -1; db <= 1; ++db)
+          {
+            for (int da = -1; da <= 1; ++da)
+            {
+              const int na = a + da;
+              const int nb = b + db;
+              if (na < 0 || nb < 0 || na >= s.TextureWidth || nb >= s.TextureHeight)
+              {
+                continue;
+              }
+              const std::size_t other = s.TexelOffset + static_cast<std::size_t>(nb) * s.TextureWidth + na;
+              if (done[other])
+              {
+                sum += gathered[other];
+                ++count;
+              }
+            }
+          }
+          if (count > 0)
+          {
+            gathered[texel] = sum / static_cast<float>(count);
+            next[texel] = 1;
+            ++report.Filled;
+          }
+        }
+      }
+    }
+    done.swap(next);
+    if (report.Filled == filledBefore)
+    {
+      break;
+    }
+  }
+  field.PropagatedDiffuse.swap(field.TotalDiffuse);
+  field.TotalDiffuse.swap(gathered);
+  report.Seconds =
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return report;
+}
+
+void RestorePropagatedDiffuse(LightField& field)
+{
+  if (!field.PropagatedDiffuse.empty())
+  {
+    field.TotalDiffuse.swap(field.PropagatedDiffuse);
+    field.PropagatedDiffuse.clear();
+    field.PropagatedDiffuse.shrink_to_fit();
+  }
+}
+
+} // namespace vlf
+} // namespace mesolight

@@ -1,0 +1,79 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// FinalGather: the total diffuse textures recomputed per texel from exact rays after the
+// propagation (Reichert 1992, "A Two-Pass Radiosity Method Driven by Lights and Viewer
+// Position", Cornell MSc thesis; Christensen 1999, "Faster Photon Map Global Illumination": the
+// final gather).
+//
+// A propagated texel holds what the few parallel lines crossing it brought: small faces draw a
+// lottery of lines, and visibility (a contact shadow, the corner beside a rib) is resolved only
+// at the line spacing. The gather replaces each texel's value by
+//   Ke + Kd (E_direct / pi + mean L_indirect)
+// with, from jittered points stratified over a footprint around the texel centre (only points on
+// the surface's triangles):
+// - E_direct: next-event estimation, emitter triangles sampled by area x luminance of Ke, each
+//   sample an exact shadow ray (Embree);
+// - L_indirect: cosine-distributed rays (stratified over the hemisphere) cast with Embree; at
+//   the hit the field's converged radiance leaving toward the texel, less the hit surface's own
+//   emission (the direct term has it): its total diffuse texture, or RadianceLeaving on a mirror.
+// Visibility then resolves per ray, not per line; the field's own error enters only through the
+// second bounce, averaged over many rays.
+//
+// A ray that meets a back face first starts inside a solid (the floor under a box) or sees the
+// unlit side of a one-sided surface: it is left out of the texel's mean, as the propagation
+// leaves such lines out of a texel's capacity (LightField::Receiver). Texels none of whose
+// points lie on a triangle in the open (beyond a polygon's edge, under a box) take the mean of
+// their gathered 8-neighbours, so bilinear reads along an edge blend only gathered values.
+//
+// The propagated totals are kept in LightField::PropagatedDiffuse: the sent radiance of the
+// lines (SentRadiance: total less unshot) then follows the gathered value, and a resumed
+// propagation (Propagation.h) restores the propagated totals first.
+#ifndef mesolight_vlf_FinalGather_h
+#define mesolight_vlf_FinalGather_h
+
+#include "LightField.h"
+
+#include <cstdint>
+
+namespace mesolight
+{
+namespace vlf
+{
+
+struct FinalGatherOptions
+{
+  // Cosine-distributed rays per texel for the indirect light.
+  int IndirectRays = 1024;
+  // Emitter samples (shadow rays) per texel for the direct light.
+  int DirectSamples = 64;
+  // Side of the square around the texel centre the points are spread over, in texels: the
+  // textures are read bilinearly between texel centres, so a texel should hold the value at its
+  // centre, not the mean over its area (which blurs a contact shadow by a texel); a little
+  // spread still averages what varies within the texel.
+  float Footprint = 0.5f;
+  // Which random numbers (the same value gives the same textures on any thread split).
+  std::uint64_t Sequence = 1;
+  // Progress in [0, 1]; false aborts (AbortedError, the textures unchanged).
+  ProgressCallback Progress;
+};
+
+struct FinalGatherReport
+{
+  std::size_t Texels = 0;   // texels gathered (with a point on a triangle in the open)
+  std::size_t Filled = 0;   // texels filled from gathered neighbours
+  std::uint64_t Rays = 0;   // rays cast (indirect and shadow)
+  double Seconds = 0.0;
+};
+
+// Gathers every texel of every surface (see above) and replaces field.TotalDiffuse with the
+// result, the propagated totals moved to field.PropagatedDiffuse (a second gather starts from
+// those again). Throws std::invalid_argument for non-positive ray counts, AbortedError when the
+// progress callback returns false (the field unchanged).
+FinalGatherReport FinalGather(LightField& field, const FinalGatherOptions& options = {});
+
+// Undoes FinalGather: the propagated totals back into TotalDiffuse (nothing when not gathered).
+void RestorePropagatedDiffuse(LightField& field);
+
+} // namespace vlf
+} // namespace mesolight
+
+#endif
