@@ -28,6 +28,7 @@
 #include "vtkSmartPointer.h" // for TextureObject
 
 #include <cstdint> // for std::uint16_t
+#include <utility> // for std::pair
 #include <vector>  // for LevelSizes
 
 class vtkOpenGLRenderWindow;
@@ -75,6 +76,14 @@ public:
 protected:
   vtkMinDepthPyramidTexture();
   ~vtkMinDepthPyramidTexture() override;
+
+  /**
+   * Creates the texture (internalFormat: GL_RGBA32F with float data, GL_RGBA16 with 16-bit
+   * data) and uploads levels[l] (RGBA, sizes[l] cells) as its mip level l. False (with an
+   * error) if it cannot.
+   */
+  bool UploadLevels(vtkOpenGLRenderWindow* renWin, unsigned int internalFormat, bool sixteenBit,
+    const std::vector<const void*>& levels, const std::vector<std::pair<int, int>>& sizes);
 
   vtkSmartPointer<vtkTextureObject> TextureObject;
   int NumberOfLevels = 0;
