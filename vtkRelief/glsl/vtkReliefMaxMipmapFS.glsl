@@ -94,17 +94,11 @@ float mlTraceMaxMipmap(vec3 origin, vec3 span, int maxIterations, float tEnd)
   int top = max(mlPyramidLevels - 1, 1);
   // Start low: a view ray enters at depth 0, where the coarse cells' minimum is (nearly) 0 on
   // real maps, so starting at the top only descends again (docs/relief-methods.md).
+  int level = min(2, top);
   float t = 0.0;
   // The ray in cell space (x = u W - 0.5; level-0 cell k spans [k-1, k]).
   vec2 x0 = origin.xy * mlTextureSize - 0.5;
   vec2 dx = span.xy * mlTextureSize;
-#ifdef ML_START_FROM_EXTENT
-  // The level whose cells are about a quarter of the ray's extent in the texture.
-  float extent = max(abs(dx.x), abs(dx.y)) * tEnd;
-  int level = clamp(int(log2(max(extent, 1.0))) - 2, 1, top);
-#else
-  int level = min(2, top);
-#endif
   bvec2 moving = notEqual(dx, vec2(0.0));
   vec2 invDx = vec2(moving.x ? 1.0 / dx.x : 0.0, moving.y ? 1.0 / dx.y : 0.0);
   ivec2 dir = ivec2(greaterThan(dx, vec2(0.0))); // 1 towards higher cells, 0 towards lower
