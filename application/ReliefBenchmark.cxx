@@ -139,6 +139,12 @@ bool RunReliefBenchmark(const BenchmarkSettings& settings, std::ostream& out)
       row.Config = v.Label;
       row.Resolution = resolution;
       TimeFrames(window, settings.Frames, row); // first: the first frame compiles shaders
+      if (!v.Method.empty() && scene.Mapper->GetShaderFailed())
+      {
+        out << "bench: the shader of " << v.Label
+            << " did not compile (the GLSL compiler's message is above); stopping\n";
+        return false;
+      }
       const Frame frame = CaptureFrame(window);
       if (!v.Shadows)
       {

@@ -514,6 +514,12 @@ bool RunReliefSweep(
           mapper->GetReliefProperty()->SetSelfShadowing(false);
           mapper->GetReliefProperty()->SetOutput(vtkReliefProperty::ShadedOutput);
           row.MedianMs = TimeFrames(reliefWindow, settings.Frames, row.FirstMs);
+          if (mapper->GetShaderFailed())
+          {
+            out << "bench relief: the shader of " << row.MethodName << " " << step.Label
+                << " did not compile (the GLSL compiler's message is above); stopping\n";
+            return false;
+          }
           row.GpuMegaBytes = double(mapper->GetReliefTextureBytes()) / 1048576.0;
           const Frame shaded = CaptureFrame(reliefWindow);
           row.ColorRmse = settings.DenseMesh ? ColorRmse(reference, shaded, denseFrame) : -1.0;

@@ -13,11 +13,11 @@
  * OpenGL mipmap, so all levels are mip levels of one RGBA float texture (uploaded by hand:
  * OpenGL would average, not take minima). 16 bytes per cell: 5.6 MB for a 512^2 map.
  *
- * UploadCompact (the relief texture cache's compact storage) stores levels 1 and up only, the
- * minima of each cell's 2 x 2 children in 16 bits as the depth texture holds them (exact), as the
- * mip levels 0.. of one GL_RGBA16 texture: 0.7 MB for a 512^2 map. Level 0 is then read from the
- * depth texture, whose texels are the cells' corners (mlPyramidCell in
- * vtkReliefHeightFieldFS.glsl).
+ * UploadCompact (the relief texture cache's compact storage) stores the same levels in 16 bits
+ * (GL_RGBA16): level 0 the 16-bit depth texels at the cells' corners, coarser levels the minima
+ * of each cell's 2 x 2 children as the depth texture holds them (exact): 2.8 MB for a 512^2 map.
+ * (Reading level 0's corners from the depth texture instead, 0.7 MB, took four fetches per
+ * level-0 cell and made the traversal 1.6-2x slower on llvmpipe: docs/relief-methods.md.)
  */
 
 #ifndef vtkMinDepthPyramidTexture_h
@@ -28,6 +28,7 @@
 #include "vtkSmartPointer.h" // for TextureObject
 
 #include <cstdint> // for std::uint16_t
+#include <utility> // for std::pair
 #include <vector>  // for LevelSizes
 
 class vtkOpenGLRenderWindow;
@@ -75,6 +76,14 @@ public:
 protected:
   vtkMinDepthPyramidTexture();
   ~vtkMinDepthPyramidTexture() override;
+
+  /**
+   * Creates the texture (internalFormat: GL_RGBA32F with float data, GL_RGBA16 with 16-bit
+   * data) and uploads levels[l] (RGBA, sizes[l] cells) as its mip level l. False (with an
+   * error) if it cannot.
+   */
+  bool UploadLevels(vtkOpenGLRenderWindow* renWin, unsigned int internalFormat, bool sixteenBit,
+    const std::vector<const void*>& levels, const std::vector<std::pair<int, int>>& sizes);
 
   vtkSmartPointer<vtkTextureObject> TextureObject;
   int NumberOfLevels = 0;

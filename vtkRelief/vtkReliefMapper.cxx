@@ -250,8 +250,36 @@ void vtkReliefMapper::RenderPieceFinish(vtkRenderer* ren, vtkActor* actor)
 bool vtkReliefMapper::GetNeedToRebuildShaders(
   vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* actor)
 {
-  return this->Superclass::GetNeedToRebuildShaders(cellBO, ren, actor) ||
-    this->Shading->ShaderKeyChanged(&cellBO);
+  // (The superclass first: it records the light complexity the shader is built for. No
+  // program: the last build failed; build again rather than draw with none.)
+  const bool changed = this->Superclass::GetNeedToRebuildShaders(cellBO, ren, actor);
+  return changed || this->Shading->ShaderKeyChanged(&cellBO) || !cellBO.Program ||
+    cellBO.Program == this->NoProgram.Get();
+}
+
+//------------------------------------------------------------------------------
+void vtkReliefMapper::UpdateShaders(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* actor)
+{
+  // VTK 9.1 reads the old program's time when the new program equals it, which dereferences a
+  // null program when a build fails with none before (the first build, or after a failed one):
+  // a placeholder stands in, and a failed build leaves no program (nothing is drawn).
+  if (!cellBO.Program)
+  {
+    cellBO.Program = this->NoProgram;
+  }
+  this->Superclass::UpdateShaders(cellBO, ren, actor);
+  if (cellBO.Program == this->NoProgram.Get())
+  {
+    cellBO.Program = nullptr;
+  }
+  const bool failed = !cellBO.Program;
+  if (failed && !this->ShaderFailed)
+  {
+    vtkErrorMacro(<< "The relief shader (method "
+                  << vtkReliefProperty::GetMethodName(this->GetReliefProperty()->GetMethod())
+                  << ") did not compile; nothing is drawn.");
+  }
+  this->ShaderFailed = failed;
 }
 
 //------------------------------------------------------------------------------

@@ -54,6 +54,7 @@
 #include "vtkOpenGLPolyDataMapper.h"
 #include "vtkPolyData.h"       // for GetPreparedInput
 #include "vtkReliefProperty.h" // for GetReliefProperty: callers set the relief through it
+#include "vtkShaderProgram.h"  // for NoProgram
 
 class vtkAlgorithmOutput;
 class vtkImageData;
@@ -149,6 +150,12 @@ public:
 
   void ReleaseGraphicsResources(vtkWindow* win) override;
 
+  /**
+   * Whether the relief shader of the last frame failed to compile: nothing was drawn, and the
+   * GLSL compiler's message went to VTK's error output with an error of this mapper's.
+   */
+  vtkGetMacro(ShaderFailed, bool);
+
   /** The polydata actually drawn (input plus generated normals/tangents). For tests. */
   vtkPolyData* GetPreparedInput() { return this->PreparedInput; }
 
@@ -165,10 +172,14 @@ protected:
   void ReplaceShaderValues(
     std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
   void SetMapperShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
+  void UpdateShaders(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
 
   vtkNew<vtkReliefShading> Shading;
   vtkPolyData* PreparedInput = nullptr;
   bool ReadyToDraw = false;
+  bool ShaderFailed = false;
+  // Stands in for a missing program while shaders are built (UpdateShaders).
+  vtkNew<vtkShaderProgram> NoProgram;
 
 private:
   vtkReliefMapper(const vtkReliefMapper&) = delete;

@@ -304,20 +304,8 @@ uniform sampler2D mlMinDepthPyramid;
 // children (2k, 2k + (1, 0), 2k + (0, 1), 2k + (1, 1) of the level below).
 vec4 mlPyramidCell(ivec2 k, int level)
 {
-#ifdef ML_FLOAT_TEXTURES
+  // Float (RGBA32F) or compact (RGBA16) storage alike: level 0 holds the cells' corner depths,
+  // coarser levels their children's minima (vtkMinDepthPyramidTexture).
   return texelFetch(mlMinDepthPyramid, k, level);
-#else
-  if (level > 0)
-  {
-    // Levels 1 and up: the children's minima, in the depth's bits (vtkMinDepthPyramidTexture).
-    return texelFetch(mlMinDepthPyramid, k, level - 1);
-  }
-  // Level 0 is not stored: its corners are the depth texels k - 1 and k, clamped.
-  ivec2 last = ivec2(mlTextureSize) - 1;
-  ivec2 lo = clamp(k - 1, ivec2(0), last);
-  ivec2 hi = clamp(k, ivec2(0), last);
-  return vec4(texelFetch(mlReliefTexture, lo, 0).r, texelFetch(mlReliefTexture, ivec2(hi.x, lo.y), 0).r,
-    texelFetch(mlReliefTexture, ivec2(lo.x, hi.y), 0).r, texelFetch(mlReliefTexture, hi, 0).r);
-#endif
 }
 #endif

@@ -9,6 +9,77 @@
 namespace mesolight
 {
 
+namespace
+{
+template <typename T>
+std::vector<std::vector<T>> PackChildMinimaT(
+  const std::vector<std::vector<T>>& minima, const std::vector<std::pair<int, int>>& sizes)
+{
+  std::vector<std::vector<T>> rgba(minima.size());
+  for (std::size_t l = 1; l < minima.size() && l < sizes.size(); ++l)
+  {
+    const int lw = sizes[l].first, lh = sizes[l].second;
+    const int cw = sizes[l - 1].first, ch = sizes[l - 1].second;
+    const std::vector<T>& child = minima[l - 1];
+    rgba[l].resize(4 * static_cast<std::size_t>(lw) * static_cast<std::size_t>(lh));
+    // Children of cell `node` along one axis for channel c: [first, last], empty if first >
+    // last or past the level below.
+    auto range = [](int node, int c, int nodes, int children, int& first, int& last)
+    {
+      first = 2 * node + c;
+      last = (c == 1 && node == nodes - 1) ? children - 1 : first;
+    };
+    for (int ny = 0; ny < lh; ++ny)
+    {
+      for (int nx = 0; nx < lw; ++nx)
+      {
+        T* c = &rgba[l][4 *
+          (static_cast<std::size_t>(ny) * static_cast<std::size_t>(lw) +
+            static_cast<std::size_t>(nx))];
+        bool present[4] = { false, false, false, false };
+        for (int q = 0; q < 4; ++q)
+        {
+          int x0 = 0, x1 = 0, y0 = 0, y1 = 0;
+          range(nx, q & 1, lw, cw, x0, x1);
+          range(ny, q >> 1, lh, ch, y0, y1);
+          for (int y = y0; y <= y1 && y < ch; ++y)
+          {
+            for (int x = x0; x <= x1 && x < cw; ++x)
+            {
+              const T m = child[static_cast<std::size_t>(y) * static_cast<std::size_t>(cw) +
+                static_cast<std::size_t>(x)];
+              c[q] = present[q] ? std::min(c[q], m) : m;
+              present[q] = true;
+            }
+          }
+        }
+        for (int q = 1; q < 4; ++q)
+        {
+          if (!present[q])
+          {
+            c[q] = present[q & 1] ? c[q & 1] : c[0]; // a missing child: a present one's bound
+          }
+        }
+      }
+    }
+  }
+  return rgba;
+}
+} // namespace
+
+std::vector<std::vector<float>> PackChildMinima(
+  const std::vector<std::vector<float>>& minima, const std::vector<std::pair<int, int>>& sizes)
+{
+  return PackChildMinimaT(minima, sizes);
+}
+
+std::vector<std::vector<std::uint16_t>> PackChildMinima(
+  const std::vector<std::vector<std::uint16_t>>& minima,
+  const std::vector<std::pair<int, int>>& sizes)
+{
+  return PackChildMinimaT(minima, sizes);
+}
+
 void AddMinPyramidLevels(std::vector<MinPyramidLevel>& levels, int channels, PyramidHalving halving)
 {
   const bool up = halving == PyramidHalving::RoundUp;

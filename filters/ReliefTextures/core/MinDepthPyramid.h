@@ -12,6 +12,8 @@
 
 #include "MesolightReliefTexturesModule.h" // for the export macro only
 
+#include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace mesolight
@@ -42,6 +44,22 @@ MESOLIGHTRELIEFTEXTURES_EXPORT std::vector<std::vector<float>> ComputeMinDepthPy
 /// halving rounded down (at least 1). Returns false if the level does not exist.
 MESOLIGHTRELIEFTEXTURES_EXPORT bool MinDepthPyramidLevelSize(
   int w, int h, int level, int& lw, int& lh);
+
+/**
+ * Levels 1 and up of a min-depth pyramid as RGBA, for the four-children traversal: a cell of
+ * level l holds the minima of its children (2i, 2j), (2i+1, 2j), (2i, 2j+1), (2i+1, 2j+1) of
+ * level l - 1 (channels 0..3), the odd child left over at a row's or column's end folded into
+ * the last cell's second child; a missing child (a level one cell wide or high) repeats a
+ * present one's bound, so the minimum of the four channels is the cell's own bound. `minima`
+ * holds one value per cell per level (level 0 included, as ComputeMinDepthPyramid or the
+ * 16-bit CompactMinDepthPyramid gives them), `sizes` each level's (w, h). Entry 0 of the result
+ * is empty (level 0 holds corner depths, not children). Minima of 16-bit values are exact.
+ */
+MESOLIGHTRELIEFTEXTURES_EXPORT std::vector<std::vector<float>> PackChildMinima(
+  const std::vector<std::vector<float>>& minima, const std::vector<std::pair<int, int>>& sizes);
+MESOLIGHTRELIEFTEXTURES_EXPORT std::vector<std::vector<std::uint16_t>> PackChildMinima(
+  const std::vector<std::vector<std::uint16_t>>& minima,
+  const std::vector<std::pair<int, int>>& sizes);
 
 /// One level of a min pyramid: W x H nodes of Channels floats each (node-major), a node
 /// covering Size x Size base elements. Used inside Mesolight::Filters (not exported).

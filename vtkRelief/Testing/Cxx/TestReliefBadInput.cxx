@@ -21,6 +21,7 @@
 #include <vtkPolyData.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
+#include <vtkShaderProperty.h>
 #include <vtkTexture.h>
 
 #include <gtest/gtest.h>
@@ -312,4 +313,38 @@ TEST(ReliefBadInput, DegeneratePlaneDrawsNothing)
   const Frame frame = DrawWithRelief(mapper, mesh);
   EXPECT_EQ(mesh->GetNumberOfPoints(), 0);
   EXPECT_EQ(CoveredPixels(frame), 0);
+}
+
+// A shader that does not compile (here broken through the actor's shader replacements, as a
+// user's edit could) is a clear error of the mapper and draws nothing, frame after frame; VTK
+// alone would crash on the failed program. Repaired, the same mapper draws again.
+TEST(ReliefBadInput, ShaderThatDoesNotCompileIsAnError)
+{
+  vtkNew<vtkReliefMapper> mapper;
+  mapper->SetReliefTextureData(SmallRelief());
+  mapper->SetInputData(PlaneWithTCoords());
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  actor->GetShaderProperty()->AddFragmentShaderReplacement(
+    "//VTK::Coincident::Impl", true, "this is not GLSL;", false);
+  vtkNew<vtkRenderer> renderer;
+  renderer->AddActor(actor);
+  renderer->GetActiveCamera()->SetPosition(0.0, -1.0, 1.5);
+  renderer->GetActiveCamera()->SetFocalPoint(0.0, 0.0, 0.0);
+  renderer->GetActiveCamera()->SetClippingRange(0.1, 10.0);
+  ReliefSceneOptions size;
+  size.Width = size.Height = 64;
+  auto window = MakeOffscreenWindow(size, renderer);
+  vtkNew<mesolight_test::MessageCapture> messages;
+  messages->Watch(mapper);
+  const Frame broken = CaptureFrame(window);
+  EXPECT_TRUE(mapper->GetShaderFailed());
+  EXPECT_TRUE(messages->HasError("did not compile")) << messages->AllErrors();
+  EXPECT_EQ(CoveredPixels(broken), 0);
+  EXPECT_EQ(CoveredPixels(CaptureFrame(window)), 0); // a second frame: no crash either
+  EXPECT_TRUE(mapper->GetShaderFailed());
+  actor->GetShaderProperty()->ClearAllShaderReplacements();
+  const Frame repaired = CaptureFrame(window);
+  EXPECT_FALSE(mapper->GetShaderFailed());
+  EXPECT_GT(CoveredPixels(repaired), 0);
 }

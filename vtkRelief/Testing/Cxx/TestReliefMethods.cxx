@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include <fstream>
 #include <iostream>
 #include <map>
 #include <string>
@@ -34,13 +35,21 @@ void PrintTo(const MethodCase& c, std::ostream* os)
   *os << c.Method << " " << c.Linear << "+" << c.Refine << " at " << c.ViewAngle << " deg";
 }
 
-HitComparison MeasureHits(const MethodCase& c, const char* pattern, int resolution = 256)
+// depthFile: a height map (white = high) instead of the pattern, at the real-map benchmark's
+// depth scale (docs/relief-methods.md).
+HitComparison MeasureHits(
+  const MethodCase& c, const char* pattern, int resolution = 256, const char* depthFile = nullptr)
 {
   ReliefSceneOptions o;
   o.Pattern = pattern;
   o.Resolution = resolution;
   o.Width = o.Height = 320;
-  o.DepthScale = 0.12;
+  o.DepthScale = depthFile ? 0.04 : 0.12;
+  if (depthFile)
+  {
+    o.DepthFile = depthFile;
+    o.DepthFileIsHeight = true;
+  }
   o.ViewAngle = c.ViewAngle;
   o.ViewDistance = 2.2;
   o.Method = c.Method;
@@ -128,6 +137,36 @@ TEST(ReliefMethodHits, ExactToATexelAtGrazingOnARoughMap)
   const HitComparison relief = MeasureHits(MethodCase{ "relief", 10, 8, 85.0, -1.0 }, "Stone");
   EXPECT_TRUE(relief.MeanTexels > 0.25 || relief.P99Texels > 1.0)
     << "relief 10+8: mean " << relief.MeanTexels << ", p99 " << relief.P99Texels;
+}
+
+// The same goal on real height maps (game textures' height channels from Debian's
+// redeclipse-data, 512^2, rougher than the procedural stone; skipped when the package is absent:
+// MESOLIGHT_REAL_MAPS=1 scripts/install-deps.sh): maximum-mipmap tracing with 64 iterations
+// meets it at 70 and 85 degrees, relief 10 + 8 (the default) does not (negative case).
+TEST(ReliefMethodHits, ExactToATexelOnRealHeightMaps)
+{
+  const std::string data = "/usr/share/games/redeclipse/data/";
+  for (const char* map : { "dziq/dq_stones01_b.jpg", "jojo/redrock01_z.png" })
+  {
+    const std::string file = data + map;
+    if (!std::ifstream(file).good())
+    {
+      GTEST_SKIP() << file << " is absent (redeclipse-data)";
+    }
+    for (const double angle : { 70.0, 85.0 })
+    {
+      const HitComparison exact =
+        MeasureHits(MethodCase{ "max-mipmap", 64, 0, angle, -1.0 }, "file", 256, file.c_str());
+      EXPECT_GT(exact.CoveredBoth, 3000) << map << " at " << angle;
+      EXPECT_LE(exact.MeanTexels, 0.25) << map << " at " << angle;
+      EXPECT_LE(exact.P99Texels, 1.0) << map << " at " << angle;
+      const HitComparison relief =
+        MeasureHits(MethodCase{ "relief", 10, 8, angle, -1.0 }, "file", 256, file.c_str());
+      EXPECT_TRUE(relief.MeanTexels > 0.25 || relief.P99Texels > 1.0)
+        << map << " at " << angle << ", relief 10+8: mean " << relief.MeanTexels << ", p99 "
+        << relief.P99Texels;
+    }
+  }
 }
 
 // Maximum-mipmap tracing where the pyramid's levels have odd sizes, so a coarse cell's last

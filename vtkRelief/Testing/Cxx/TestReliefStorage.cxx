@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // How the relief is stored on the GPU (vtkReliefTextureCache): the compact storage (the default:
-// 16-bit depth, 8-bit normals, 8-bit cones, 16-bit pyramid without its level 0) must hit where
+// 16-bit depth, 8-bit normals, 8-bit cones, 16-bit pyramid) must hit where
 // the float RGBA storage hits, both measured against the exact CPU intersector (ReliefReference);
 // the bytes the mapper reports must be those of the formats; and a storage that loses depth
 // precision (8-bit depth on a deep map) must fail the same check.
@@ -164,24 +164,16 @@ INSTANTIATE_TEST_SUITE_P(Methods, ReliefStorage,
 
 // The bytes the mapper reports are those of the formats uploaded: per texel 2 (16-bit depth) + 2
 // (8-bit normal x, y), + 1 (8-bit cone ratio) for cone methods, the derived-normal variant 2
-// less; the max-mipmap pyramid's levels 1 and up at 2 bytes per cell; float storage 16 per texel.
+// less; the max-mipmap pyramid at 8 bytes per cell (16 in float storage); float storage 16 per
+// texel.
 TEST(ReliefStorage, ReportedBytesAreThoseOfTheFormats)
 {
   const int n = 301;
   const long long texels = static_cast<long long>(n) * n;
   long long pyramid = 0; // cells (n + 1)^2 at level 0, sizes halving rounding down
-  for (int w = (n + 1) / 2, h = (n + 1) / 2;; w = std::max(1, w / 2), h = std::max(1, h / 2))
-  {
-    pyramid += static_cast<long long>(w) * h;
-    if (w == 1 && h == 1)
-    {
-      break;
-    }
-  }
-  long long floatPyramid = 0;
   for (int w = n + 1, h = n + 1;; w = std::max(1, w / 2), h = std::max(1, h / 2))
   {
-    floatPyramid += static_cast<long long>(w) * h;
+    pyramid += static_cast<long long>(w) * h;
     if (w == 1 && h == 1)
     {
       break;
@@ -197,9 +189,10 @@ TEST(ReliefStorage, ReportedBytesAreThoseOfTheFormats)
     { "relief", Storage::Compact, 4 * texels },
     { "relief", Storage::Derived, 2 * texels },
     { "relief", Storage::Float, 16 * texels },
-    // The compact pyramid: four 16-bit children's minima per coarse cell (RGBA16).
+    // The compact pyramid: four 16-bit corners per level-0 cell, four 16-bit children's minima
+    // per coarser cell (RGBA16); the float one the same in 32 bits.
     { "max-mipmap", Storage::Compact, 4 * texels + 8 * pyramid },
-    { "max-mipmap", Storage::Float, 16 * texels + 16 * floatPyramid },
+    { "max-mipmap", Storage::Float, 16 * texels + 16 * pyramid },
     { "relaxed-cone", Storage::Compact, 5 * texels },
   };
   for (const Expected& e : expected)

@@ -13,7 +13,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <random>
+#include <string>
+#include <utility>
 #include <vector>
 
 namespace
@@ -165,4 +168,155 @@ TEST(CompactReliefStorage, SobelNormalsAreRecognised)
   EXPECT_GT(SobelNormalMismatch(depth.data(), twice.data(), w, h, k), 0.02f);
   EXPECT_GT(SobelNormalMismatch(depth.data(), xy.data(), w, h, 2.0 * k), 0.02f);
   EXPECT_GT(SobelNormalMismatch(depth.data(), xy.data(), w, h, 0.0), 1.f);
+}
+
+namespace
+{
+// The child of level l - 1 (cell c) sits in quadrant q of its parent at level l; the odd child
+// left over at the end of a row or column is the last parent's second child.
+int ChildQuadrant(int cx, int cy, int pw, int ph)
+{
+  const int px = std::min(cx / 2, pw - 1), py = std::min(cy / 2, ph - 1);
+  return std::min(cx - 2 * px, 1) + 2 * std::min(cy - 2 * py, 1);
+}
+
+// Whether every cell of level l - 1 is bounded by its parent's channel for it (the traversal
+// skips a child when the ray stays above that channel), for every level l >= 1.
+template <typename T>
+bool ChildChannelsBound(const std::vector<std::vector<T>>& minima,
+  const std::vector<std::vector<T>>& rgba, const std::vector<std::pair<int, int>>& sizes)
+{
+  for (size_t l = 1; l < minima.size(); ++l)
+  {
+    const int cw = sizes[l - 1].first, ch = sizes[l - 1].second;
+    const int pw = sizes[l].first, ph = sizes[l].second;
+    for (int cy = 0; cy < ch; ++cy)
+    {
+      for (int cx = 0; cx < cw; ++cx)
+      {
+        const int px = std::min(cx / 2, pw - 1), py = std::min(cy / 2, ph - 1);
+        const T bound = rgba[l][4 * (static_cast<size_t>(py) * pw + px) +
+          static_cast<size_t>(ChildQuadrant(cx, cy, pw, ph))];
+        if (bound > minima[l - 1][static_cast<size_t>(cy) * cw + cx])
+        {
+          return false;
+        }
+      }
+    }
+  }
+  return true;
+}
+
+template <typename T>
+void ExpectPackedChildMinima(const std::vector<std::vector<T>>& minima,
+  const std::vector<std::pair<int, int>>& sizes, const std::string& what)
+{
+  const std::vector<std::vector<T>> rgba = PackChildMinima(minima, sizes);
+  ASSERT_EQ(rgba.size(), minima.size()) << what;
+  EXPECT_TRUE(rgba[0].empty()) << what;
+  EXPECT_TRUE(ChildChannelsBound(minima, rgba, sizes)) << what;
+  for (size_t l = 1; l < minima.size(); ++l)
+  {
+    const int pw = sizes[l].first, ph = sizes[l].second;
+    ASSERT_EQ(rgba[l].size(), 4 * static_cast<size_t>(pw) * ph) << what;
+    for (size_t n = 0; n < static_cast<size_t>(pw) * ph; ++n)
+    {
+      // Each channel is some child's minimum (tight), and the four together are the cell's own.
+      const T* c = &rgba[l][4 * n];
+      EXPECT_EQ(std::min(std::min(c[0], c[1]), std::min(c[2], c[3])), minima[l][n])
+        << what << " level " << l << " cell " << n;
+    }
+  }
+  // Tight: every channel of a cell that has children in that quadrant is their exact minimum.
+  for (size_t l = 1; l < minima.size(); ++l)
+  {
+    const int cw = sizes[l - 1].first, ch = sizes[l - 1].second;
+    const int pw = sizes[l].first, ph = sizes[l].second;
+    std::vector<T> expect(4 * static_cast<size_t>(pw) * ph, std::numeric_limits<T>::max());
+    for (int cy = 0; cy < ch; ++cy)
+    {
+      for (int cx = 0; cx < cw; ++cx)
+      {
+        const int px = std::min(cx / 2, pw - 1), py = std::min(cy / 2, ph - 1);
+        T& e = expect[4 * (static_cast<size_t>(py) * pw + px) +
+          static_cast<size_t>(ChildQuadrant(cx, cy, pw, ph))];
+        e = std::min(e, minima[l - 1][static_cast<size_t>(cy) * cw + cx]);
+      }
+    }
+    for (size_t i = 0; i < expect.size(); ++i)
+    {
+      if (expect[i] != std::numeric_limits<T>::max())
+      {
+        EXPECT_EQ(rgba[l][i], expect[i]) << what << " level " << l << " channel " << i;
+      }
+    }
+  }
+}
+
+std::vector<std::pair<int, int>> PyramidSizes(int w, int h, size_t levels)
+{
+  std::vector<std::pair<int, int>> sizes;
+  for (size_t l = 0; l < levels; ++l)
+  {
+    int lw = 0, lh = 0;
+    MinDepthPyramidLevelSize(w, h, static_cast<int>(l), lw, lh);
+    sizes.emplace_back(lw, lh);
+  }
+  return sizes;
+}
+} // namespace
+
+// The four-children packing (core/MinDepthPyramid.h) of float and 16-bit pyramids of odd, even,
+// one-texel-wide and one-texel-high maps: each channel the exact minimum of its children, the
+// leftover odd child folded into the last cell, a missing child repeating a present bound.
+TEST(CompactReliefStorage, ChildMinimaPackingBoundsEveryChild)
+{
+  for (const auto& [w, h] : std::vector<std::pair<int, int>>{
+         { 37, 23 }, { 64, 64 }, { 1, 9 }, { 12, 1 }, { 2, 2 } })
+  {
+    const std::string what = std::to_string(w) + "x" + std::to_string(h);
+    const std::vector<float> depth = RandomDepth(w, h, 3);
+    const auto levels = ComputeMinDepthPyramid(depth.data(), w, h);
+    const auto sizes = PyramidSizes(w, h, levels.size());
+    ExpectPackedChildMinima(levels, sizes, what + " float");
+    std::vector<std::vector<std::uint16_t>> levels16(levels.size());
+    for (size_t l = 0; l < levels.size(); ++l)
+    {
+      for (float d : levels[l])
+      {
+        levels16[l].push_back(QuantizeDepth16(d));
+      }
+    }
+    ExpectPackedChildMinima(levels16, sizes, what + " 16-bit");
+  }
+}
+
+// Negative test: the packing without the leftover fold (the last cell's second channel holding
+// child 2n + 1 only) leaves a child unbounded on an odd-sized level.
+TEST(CompactReliefStorage, ChildMinimaWithoutTheLeftoverFoldNoLongerBound)
+{
+  const int w = 37, h = 23; // 38 x 24 cells: level 1 is 19 x 12, level 2 9 x 6 (odd: a leftover)
+  const std::vector<float> depth = RandomDepth(w, h, 5);
+  const auto levels = ComputeMinDepthPyramid(depth.data(), w, h);
+  const auto sizes = PyramidSizes(w, h, levels.size());
+  auto rgba = PackChildMinima(levels, sizes);
+  ASSERT_TRUE(ChildChannelsBound(levels, rgba, sizes));
+  bool changed = false;
+  for (size_t l = 1; l < levels.size(); ++l)
+  {
+    const int cw = sizes[l - 1].first, pw = sizes[l].first, ph = sizes[l].second;
+    if (cw % 2 == 0 || cw < 3)
+    {
+      continue;
+    }
+    for (int py = 0; py < ph && 2 * py < sizes[l - 1].second; ++py)
+    {
+      const float unfolded = levels[l - 1][static_cast<size_t>(2 * py) * cw + 2 * (pw - 1) + 1];
+      float& channel = rgba[l][4 * (static_cast<size_t>(py) * pw + pw - 1) + 1];
+      changed = changed || channel != unfolded;
+      channel = unfolded;
+    }
+  }
+  ASSERT_TRUE(changed);
+  EXPECT_FALSE(ChildChannelsBound(levels, rgba, sizes));
 }
