@@ -116,6 +116,16 @@
 #if ML_METHOD == ML_BUMP
   mlShadowPoint.z = mlDepthAt(mlHit.xy);
 #endif
+#if defined(ML_LEVEL_OF_DETAIL) && ML_METHOD != ML_MAXIMUM_MIPMAP
+  // Where refinement stopped at the footprint the hit may lie up to one bracket inside the
+  // height field, and a shadow ray leaving from there is blocked by the surface it starts on:
+  // the shadow march starts the bracket's depth higher (far pixels only).
+  if (mlFootprint > 1.0)
+  {
+    mlShadowPoint.z = max(0.0, mlShadowPoint.z -
+        1.0 / (float(max(mlViewSteps, 1)) * exp2(float(mlViewRefinementSteps))));
+  }
+#endif
   vec3 diffuse = vec3(0.0);
   vec3 specular = vec3(0.0);
   float mlFirstLightVisible = 0.0;

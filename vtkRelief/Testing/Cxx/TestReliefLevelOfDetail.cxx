@@ -257,8 +257,8 @@ TEST(ReliefLevelOfDetail, VisibleNormalsFilterARoughGrazingWall)
   options.ViewAngle = 80.0;
   options.ViewDistance = 2.0;
   const FilterErrors e = ErrorsOfTheFilters(options, "rough grazing wall");
-  ASSERT_GT(e.On.Pixels, Width * Height / 8) << "the wall should fill much of the view";
-  // Measured 9.53 (visible), 12.42 (mean) and 10.67 (off) levels: the bound lies 6% above the
+  ASSERT_GT(e.On.Pixels, Width * Height / 10) << "the wall should fill much of the view";
+  // Measured 9.53 (visible), 12.78 (mean) and 10.67 (off) levels: the bound lies 6% above the
   // visible filter and 5% below off.
   const double bound = 10.1;
   EXPECT_LT(e.On.Mean, bound) << "the visible normal filter should filter the grazing wall";
