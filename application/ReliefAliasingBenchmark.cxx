@@ -365,7 +365,8 @@ int RunReliefAliasingBenchmark(const std::vector<std::string>& args)
 {
   CommandLine cl("mesolight bench relief-aliasing",
     "Usage: mesolight bench relief-aliasing [options]\n"
-    "The default relief (an untouched vtkReliefProperty's method) with level of detail on, and off,\n"
+    "The default relief (an untouched vtkReliefProperty: level of detail on, visible normals), the\n"
+    "same with level of detail off, and with the mean normal filter (Toksvig),\n"
     "against the exact relief (maximum-mipmap tracing, 128 iterations) rendered at S x S times\n"
     "the resolution and box-filtered: S^2 exact subsamples per pixel. Per map, view angle and\n"
     "distance: mean colour error over all, near (footprint <= 1 texel) and far pixels, the\n"
@@ -386,7 +387,7 @@ int RunReliefAliasingBenchmark(const std::vector<std::string>& args)
     "10+8");
   cl.AddFlag("--no-shadows", "self-shadowing off in every frame, the reference's too");
   cl.AddValue("--csv", "FILE", "write one CSV row per case");
-  cl.AddValue("--plot", "FILE.png", "error against footprint, before and default");
+  cl.AddValue("--plot", "FILE.png", "error against footprint: off, mean filter and default");
   int exitCode = 0;
   if (!cl.ParseArguments(args, exitCode))
   {
