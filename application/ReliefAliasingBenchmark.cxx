@@ -29,8 +29,8 @@ enum class Variant
 {
   Reference, // maximum-mipmap tracing, 128 iterations, level of detail off: exact
   Before,    // an untouched property's method and steps, level of detail off
-  Default,   // an untouched property's method and steps with level of detail on (the row that
-             // was proposed as the default; level of detail stays off by default)
+  Mean,      // the same with level of detail on, filtering the mean normal (Toksvig 2005)
+  Default,   // the same with level of detail on and the property's default normal filter
   Surface    // texture mapping: the hit is the mesh's own texture coordinate (the footprint)
 };
 
@@ -58,8 +58,10 @@ struct ClassFigures
   long long Pixels = 0;
   double ErrorBefore = 0.0; // mean |frame - box-filtered reference|, 8-bit levels over RGB
   double ErrorDefault = 0.0;
+  double ErrorMean = 0.0;     // level of detail with the mean normal filter
   double SamplesBefore = 0.0; // relief-texture samples per pixel
   double SamplesDefault = 0.0;
+  double SamplesMean = 0.0;
 };
 
 struct CaseRow
@@ -100,12 +102,13 @@ bool RenderVariant(const Settings& settings, ReliefSceneOptions options, Variant
       options.LevelOfDetail = false;
       break;
     case Variant::Before:
+    case Variant::Mean:
     case Variant::Default:
       options.Method = vtkReliefProperty::GetMethodName(defaults->GetMethod());
       options.LinearSteps = defaults->GetLinearSteps();
       options.RefinementSteps = defaults->GetRefinementSteps();
       options.AdaptiveSteps = defaults->GetAdaptiveSteps();
-      options.LevelOfDetail = variant == Variant::Default;
+      options.LevelOfDetail = variant != Variant::Before;
       if (!settings.Method.empty())
       {
         options.Method = settings.Method;
@@ -126,9 +129,11 @@ bool RenderVariant(const Settings& settings, ReliefSceneOptions options, Variant
     return false;
   }
   vtkReliefProperty* p = scene.Mapper->GetReliefProperty();
-  if (variant == Variant::Before || variant == Variant::Default)
+  if (variant == Variant::Before || variant == Variant::Mean || variant == Variant::Default)
   {
     p->SetMinimumSteps(defaults->GetMinimumSteps());
+    p->SetNormalFilter(
+      variant == Variant::Mean ? vtkReliefProperty::MeanNormalFilter : defaults->GetNormalFilter());
   }
   p->SetOutput(output);
   int dims[3];
@@ -246,13 +251,16 @@ bool MeasureCase(const Settings& settings, const std::string& map, double angle,
   options.Height = settings.Height_;
   const int s = settings.Supersampling;
   int texels = 0;
-  Frame reference, before, current, surfaceU, surfaceV, samplesBefore, samplesDefault;
+  Frame reference, before, current, mean, surfaceU, surfaceV, samplesBefore, samplesDefault,
+    samplesMean;
   Frame hitsBefore[2], hitsDefault[2];
   const int shaded = vtkReliefProperty::ShadedOutput;
   const int samples = vtkReliefProperty::SampleCountOutput;
   if (!RenderVariant(settings, options, Variant::Reference, shaded, s, reference, texels, error) ||
     !RenderVariant(settings, options, Variant::Before, shaded, 1, before, texels, error) ||
     !RenderVariant(settings, options, Variant::Default, shaded, 1, current, texels, error) ||
+    !RenderVariant(settings, options, Variant::Mean, shaded, 1, mean, texels, error) ||
+    !RenderVariant(settings, options, Variant::Mean, samples, 1, samplesMean, texels, error) ||
     !RenderVariant(settings, options, Variant::Before, samples, 1, samplesBefore, texels, error) ||
     !RenderVariant(settings, options, Variant::Default, samples, 1, samplesDefault, texels, error) ||
     !RenderVariant(settings,
@@ -282,30 +290,34 @@ bool MeasureCase(const Settings& settings, const std::string& map, double angle,
     for (int x = 0; x < settings.Width; ++x)
     {
       const size_t p = size_t(y) * settings.Width + x;
-      double mean[3];
-      if (footprint[p] < 0.0 || !before.Covered(p) || !current.Covered(p) ||
-        !BoxFiltered(reference, s, x, y, settings.Width, mean))
+      double box[3];
+      if (footprint[p] < 0.0 || !before.Covered(p) || !current.Covered(p) || !mean.Covered(p) ||
+        !BoxFiltered(reference, s, x, y, settings.Width, box))
       {
         continue;
       }
       covered.push_back(footprint[p]);
-      double eb = 0.0, ed = 0.0;
+      double eb = 0.0, ed = 0.0, em = 0.0;
       for (int c = 0; c < 3; ++c)
       {
-        eb += std::abs(mean[c] - before.Rgb[3 * p + c]) / 3.0;
-        ed += std::abs(mean[c] - current.Rgb[3 * p + c]) / 3.0;
+        eb += std::abs(box[c] - before.Rgb[3 * p + c]) / 3.0;
+        ed += std::abs(box[c] - current.Rgb[3 * p + c]) / 3.0;
+        em += std::abs(box[c] - mean.Rgb[3 * p + c]) / 3.0;
       }
-      int nb = 0, nd = 0;
+      int nb = 0, nd = 0, nm = 0;
       DecodeSampleCount(samplesBefore, p, nb);
       DecodeSampleCount(samplesDefault, p, nd);
+      DecodeSampleCount(samplesMean, p, nm);
       const bool isNear = footprint[p] <= 1.0;
       for (ClassFigures* f : { &row.All, isNear ? &row.Near : &row.Far })
       {
         ++f->Pixels;
         f->ErrorBefore += eb;
         f->ErrorDefault += ed;
+        f->ErrorMean += em;
         f->SamplesBefore += nb;
         f->SamplesDefault += nd;
+        f->SamplesMean += nm;
       }
       double ub, vb, ud, vd;
       if (isNear && DecodeHitCoordinate(hitsBefore[0], p, ub) &&
@@ -324,8 +336,10 @@ bool MeasureCase(const Settings& settings, const std::string& map, double angle,
     const double n = std::max<long long>(f->Pixels, 1);
     f->ErrorBefore /= n;
     f->ErrorDefault /= n;
+    f->ErrorMean /= n;
     f->SamplesBefore /= n;
     f->SamplesDefault /= n;
+    f->SamplesMean /= n;
   }
   row.NearHitChangeMean /= std::max<long long>(nearHits, 1);
   row.MedianFootprint = Median(covered);
@@ -351,7 +365,8 @@ int RunReliefAliasingBenchmark(const std::vector<std::string>& args)
 {
   CommandLine cl("mesolight bench relief-aliasing",
     "Usage: mesolight bench relief-aliasing [options]\n"
-    "The default relief (an untouched vtkReliefProperty's method) with level of detail on, and off,\n"
+    "The default relief (an untouched vtkReliefProperty: level of detail on, visible normals), the\n"
+    "same with level of detail off, and with the mean normal filter (Toksvig),\n"
     "against the exact relief (maximum-mipmap tracing, 128 iterations) rendered at S x S times\n"
     "the resolution and box-filtered: S^2 exact subsamples per pixel. Per map, view angle and\n"
     "distance: mean colour error over all, near (footprint <= 1 texel) and far pixels, the\n"
@@ -372,7 +387,7 @@ int RunReliefAliasingBenchmark(const std::vector<std::string>& args)
     "10+8");
   cl.AddFlag("--no-shadows", "self-shadowing off in every frame, the reference's too");
   cl.AddValue("--csv", "FILE", "write one CSV row per case");
-  cl.AddValue("--plot", "FILE.png", "error against footprint, before and default");
+  cl.AddValue("--plot", "FILE.png", "error against footprint: off, mean filter and default");
   int exitCode = 0;
   if (!cl.ParseArguments(args, exitCode))
   {
@@ -433,15 +448,17 @@ int RunReliefAliasingBenchmark(const std::vector<std::string>& args)
                                   : settings.Method.c_str())
       << " " << (settings.Method.empty() ? defaults->GetLinearSteps() : settings.Linear) << "+"
       << (settings.Method.empty() ? defaults->GetRefinementSteps() : settings.Refine)
-      << ", level of detail off; default: the same with level of detail on"
-      << (settings.Method.empty() ? "" : " (the method above)") << ".\n"
+      << ", level of detail off; default: the same with level of detail on and the default normal\n"
+      << "filter (visible normals, second moments); mean: level of detail with the mean normal\n"
+      << "filter (Toksvig)" << (settings.Method.empty() ? "" : " (the method above)") << ".\n"
       << "err: mean |colour - reference| in 8-bit levels; fp: median footprint, texels per pixel;\n"
       << "far: pixels whose footprint exceeds one texel; spp: relief-texture samples per pixel;\n"
       << "near hit: how far the default moves hits of near pixels from before's, texels (max).\n\n";
   out << std::left << std::setw(18) << "map" << std::right << std::setw(5) << "deg" << std::setw(6)
       << "dist" << std::setw(6) << "fp" << std::setw(6) << "far%" << std::setw(8) << "err bef"
       << std::setw(8) << "err def" << std::setw(7) << "ratio" << std::setw(9) << "far bef"
-      << std::setw(9) << "far def" << std::setw(7) << "ratio" << std::setw(9) << "near bef"
+      << std::setw(9) << "far def" << std::setw(7) << "ratio" << std::setw(9) << "far mean"
+      << std::setw(7) << "ratio" << std::setw(9) << "near bef"
       << std::setw(9) << "near def" << std::setw(9) << "spp bef" << std::setw(9) << "spp def"
       << std::setw(9) << "far spp" << std::setw(9) << "near hit" << "\n";
   std::vector<CaseRow> rows;
@@ -466,7 +483,8 @@ int RunReliefAliasingBenchmark(const std::vector<std::string>& args)
             << Ratio(row.All.ErrorDefault, row.All.ErrorBefore) << std::setw(9)
             << row.Far.ErrorBefore << std::setw(9) << row.Far.ErrorDefault << std::setw(7)
             << Ratio(row.Far.ErrorDefault, row.Far.ErrorBefore) << std::setw(9)
-            << row.Near.ErrorBefore << std::setw(9) << row.Near.ErrorDefault
+            << row.Far.ErrorMean << std::setw(7) << Ratio(row.Far.ErrorMean, row.Far.ErrorBefore)
+            << std::setw(9) << row.Near.ErrorBefore << std::setw(9) << row.Near.ErrorDefault
             << std::setprecision(1) << std::setw(9) << row.Far.SamplesBefore << std::setw(9)
             << row.Far.SamplesDefault << std::setw(9)
             << Ratio(row.Far.SamplesDefault, row.Far.SamplesBefore) << std::setprecision(3)
@@ -480,7 +498,8 @@ int RunReliefAliasingBenchmark(const std::vector<std::string>& args)
 
   // Summary: the error ratio over all measured pixels of every case, and per case.
   double before = 0.0, current = 0.0, farBefore = 0.0, farCurrent = 0.0, sb = 0.0, sd = 0.0;
-  long long pixels = 0, farPixels = 0, met = 0, withFar = 0;
+  double farMean = 0.0, sm = 0.0;
+  long long pixels = 0, farPixels = 0, met = 0, withFar = 0, better = 0;
   double nearHitMax = 0.0;
   for (const CaseRow& r : rows)
   {
@@ -489,6 +508,8 @@ int RunReliefAliasingBenchmark(const std::vector<std::string>& args)
     pixels += r.All.Pixels;
     farBefore += r.Far.ErrorBefore * r.Far.Pixels;
     farCurrent += r.Far.ErrorDefault * r.Far.Pixels;
+    farMean += r.Far.ErrorMean * r.Far.Pixels;
+    sm += r.Far.SamplesMean * r.Far.Pixels;
     sb += r.Far.SamplesBefore * r.Far.Pixels;
     sd += r.Far.SamplesDefault * r.Far.Pixels;
     farPixels += r.Far.Pixels;
@@ -497,6 +518,7 @@ int RunReliefAliasingBenchmark(const std::vector<std::string>& args)
     {
       ++withFar;
       met += r.Far.ErrorDefault <= 0.5 * r.Far.ErrorBefore ? 1 : 0;
+      better += r.Far.ErrorDefault < std::min(r.Far.ErrorBefore, r.Far.ErrorMean) ? 1 : 0;
     }
   }
   out << "\nall pixels of all cases: error " << before / std::max<long long>(pixels, 1) << " -> "
@@ -505,7 +527,11 @@ int RunReliefAliasingBenchmark(const std::vector<std::string>& args)
       << farCurrent / std::max<long long>(farPixels, 1) << " (" << Ratio(farCurrent, farBefore)
       << "x), samples per far pixel " << sb / std::max<long long>(farPixels, 1) << " -> "
       << sd / std::max<long long>(farPixels, 1) << " (" << Ratio(sd, sb) << "x)\n"
+      << "mean normal filter: far error " << farMean / std::max<long long>(farPixels, 1) << " ("
+      << Ratio(farMean, farBefore) << "x before), samples per far pixel "
+      << sm / std::max<long long>(farPixels, 1) << " (" << Ratio(sm, sb) << "x)\n"
       << "cases with far error <= 0.5x before: " << met << " of " << withFar
+      << "; default below both before and mean: " << better << " of " << withFar
       << "; largest move of a near hit: " << nearHitMax << " texels\n";
 
   if (!settings.CsvFile.empty())
@@ -514,7 +540,8 @@ int RunReliefAliasingBenchmark(const std::vector<std::string>& args)
     csv << "map,view_deg,distance,median_footprint_texels,pixels,far_pixels,error_before,"
            "error_default,far_error_before,far_error_default,near_error_before,"
            "near_error_default,far_spp_before,far_spp_default,near_spp_before,near_spp_default,"
-           "near_hit_change_max_texels,near_hit_change_mean_texels\n";
+           "near_hit_change_max_texels,near_hit_change_mean_texels,error_mean_filter,"
+           "far_error_mean_filter,near_error_mean_filter,far_spp_mean_filter\n";
     for (const CaseRow& r : rows)
     {
       csv << r.Map << ',' << r.Angle << ',' << r.Distance << ',' << r.MedianFootprint << ','
@@ -522,7 +549,8 @@ int RunReliefAliasingBenchmark(const std::vector<std::string>& args)
           << r.All.ErrorDefault << ',' << r.Far.ErrorBefore << ',' << r.Far.ErrorDefault << ','
           << r.Near.ErrorBefore << ',' << r.Near.ErrorDefault << ',' << r.Far.SamplesBefore << ','
           << r.Far.SamplesDefault << ',' << r.Near.SamplesBefore << ',' << r.Near.SamplesDefault
-          << ',' << r.NearHitChangeMax << ',' << r.NearHitChangeMean << "\n";
+          << ',' << r.NearHitChangeMax << ',' << r.NearHitChangeMean << ',' << r.All.ErrorMean
+          << ',' << r.Far.ErrorMean << ',' << r.Near.ErrorMean << ',' << r.Far.SamplesMean << "\n";
     }
     if (!csv)
     {
@@ -538,15 +566,18 @@ int RunReliefAliasingBenchmark(const std::vector<std::string>& args)
     chart.XLabel = "median footprint (texels per pixel)";
     chart.YLabel = "mean colour error (8-bit levels)";
     ChartSeries b{ "level of detail off (before)", {}, {} };
-    ChartSeries d{ "default", {}, {} };
+    ChartSeries d{ "default (visible normals)", {}, {} };
+    ChartSeries m{ "mean normal filter", {}, {} };
     for (const CaseRow& r : rows)
     {
       b.X.push_back(r.MedianFootprint);
       b.Y.push_back(r.All.ErrorBefore);
       d.X.push_back(r.MedianFootprint);
       d.Y.push_back(r.All.ErrorDefault);
+      m.X.push_back(r.MedianFootprint);
+      m.Y.push_back(r.All.ErrorMean);
     }
-    chart.Points = { b, d };
+    chart.Points = { b, m, d };
     if (!WriteScatterChartPng(chart, settings.PlotFile, error))
     {
       std::cerr << "mesolight bench relief-aliasing: " << error << "\n";

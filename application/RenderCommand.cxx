@@ -51,8 +51,9 @@ void AddSceneOptions(CommandLine& cl)
   cl.AddValue("--refinement-steps", "N", "binary / interval / secant refinement steps", "8");
   cl.AddFlag("--adaptive-steps", "fewer linear steps head-on, --linear-steps at grazing angles");
   cl.AddFlag("--level-of-detail",
-    "filter where texels are smaller than pixels (shading normals at the footprint's mip level, "
+    "filter where texels are smaller than pixels (the default: the footprint's visible normal, "
     "no steps finer than the footprint)");
+  cl.AddFlag("--no-level-of-detail", "no filtering where texels are smaller than pixels");
   cl.AddFlag("--no-shadows", "no self-shadowing");
   cl.AddFlag("--no-silhouettes", "keep fragments whose hit leaves the texture");
   cl.AddFlag("--no-depth-write", "keep the mesh depth instead of the hit depth");
@@ -95,7 +96,7 @@ bool ReadSceneOptions(const CommandLine& cl, ReliefSceneOptions& o, std::string&
     return false;
   }
   o.ToneMapping = !cl.Has("--no-tone-map");
-  o.LevelOfDetail = cl.Has("--level-of-detail");
+  o.LevelOfDetail = !cl.Has("--no-level-of-detail");
   if (!cl.GetInt("--resolution", 1, 16384, o.Resolution, error) ||
     !cl.GetDouble("--depth-scale", 0.0, 10.0, o.DepthScale, error) ||
     !cl.GetInt("--linear-steps", 1, 1024, o.LinearSteps, error) ||

@@ -141,6 +141,7 @@ void vtkReliefProperty::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "AdaptiveSteps: " << (this->AdaptiveSteps ? "On" : "Off") << "\n";
   os << indent << "MinimumSteps: " << this->MinimumSteps << "\n";
   os << indent << "LevelOfDetail: " << (this->LevelOfDetail ? "On" : "Off") << "\n";
+  os << indent << "NormalFilter: " << this->NormalFilter << "\n";
   os << indent << "Exposure: " << this->Exposure << "\n";
   os << indent << "ToneMapping: " << (this->ToneMapping ? "On" : "Off") << "\n";
   os << indent << "EncodeSRGB: " << (this->EncodeSRGB ? "On" : "Off") << "\n";

@@ -144,20 +144,38 @@ public:
 
   ///@{
   /**
-   * Filter where texels are smaller than pixels (the relief texture gets mipmaps). The march
+   * Filter where texels are smaller than pixels (the relief textures get mipmaps). The march
    * stays at the base level (an averaged height field fills the cracks a supersampled frame
-   * keeps); the shading normal is read at the pixel footprint's mip level less one and its
-   * length, short where the footprint's normals spread, dims the diffuse light and widens the
-   * highlight (Toksvig 2005); where the footprint exceeds a texel, linear and refinement steps
-   * stop at the footprint's size. Where a texel covers a pixel or more the frame and the hits
-   * are those of level of detail off. Default off: against an exact 8 x 8 supersampled frame
-   * it lowers the far error on a procedural stone (0.65-0.78x) but raises it on rough real
-   * height maps (up to 1.41x: a footprint's mean normal ignores which facets a grazing view
-   * sees); test ReliefLevelOfDetail, benchmark `mesolight bench relief-aliasing`.
+   * keeps); the shading normal is filtered over the pixel footprint (NormalFilter) and where the
+   * footprint exceeds a texel, linear and refinement steps stop at the footprint's size. Where
+   * a texel covers a pixel or more the frame and the hits are those of level of detail off.
+   * Default on; test ReliefLevelOfDetail, benchmark `mesolight bench relief-aliasing`.
    */
   vtkSetMacro(LevelOfDetail, bool);
   vtkGetMacro(LevelOfDetail, bool);
   vtkBooleanMacro(LevelOfDetail, bool);
+  ///@}
+
+  /** How level of detail filters the shading normal over a pixel footprint. */
+  enum NormalFilterKind
+  {
+    /**
+     * The mip-mapped mean normal, its length dimming the diffuse light and widening the
+     * highlight (Toksvig 2005). Blind to which facets a grazing view sees.
+     */
+    MeanNormalFilter = 0,
+    /**
+     * The footprint's visible mean normal: second moments of the normal, mip-mapped (LEAN
+     * mapping, Olano and Baker 2010), weighted by the area each facet shows the viewer (the
+     * default; compact storage, one more RGBA16F texture pair; float storage uses the mean).
+     */
+    VisibleNormalFilter = 1
+  };
+
+  ///@{
+  /** NormalFilterKind (default VisibleNormalFilter); read only with LevelOfDetail on. */
+  vtkSetClampMacro(NormalFilter, int, MeanNormalFilter, VisibleNormalFilter);
+  vtkGetMacro(NormalFilter, int);
   ///@}
 
   ///@{
@@ -317,7 +335,8 @@ protected:
   int Output = ShadedOutput;
   bool AdaptiveSteps = false;
   int MinimumSteps = 4;
-  bool LevelOfDetail = false;
+  bool LevelOfDetail = true;
+  int NormalFilter = VisibleNormalFilter;
   double Exposure;  // mesolight::ReliefLightSetDisplay, set in the constructor
   bool ToneMapping; // idem
   bool EncodeSRGB = false;

@@ -77,8 +77,9 @@ void vtkReliefShaderSource::Configure(vtkReliefProperty* property, bool albedoTe
 }
 
 //------------------------------------------------------------------------------
-void vtkReliefShaderSource::SetTextureLayout(bool floatTextures, bool storedNormals)
+void vtkReliefShaderSource::SetTextureLayout(bool floatTextures, bool storedNormals, bool moments)
 {
+  this->NormalMoments = moments;
   this->FloatTextures = floatTextures;
   this->StoredNormals = storedNormals;
 }
@@ -94,6 +95,7 @@ std::string vtkReliefShaderSource::Key() const
     (p->GetLevelOfDetail() ? "L" : "l") + (this->HasLightSet ? "I" : "i") +
     (p->GetToneMapping() ? "T" : "t") + (p->GetShadowCulling() ? "K" : "k") +
     (this->HasIrradianceProbes ? "P" : "p") + (p->GetEncodeSRGB() ? "G" : "g") +
+    (this->NormalMoments && p->GetLevelOfDetail() ? "M" : "m") +
     (this->FloatTextures      ? "F"
         : this->StoredNormals ? "N"
                               : "f");
@@ -186,6 +188,10 @@ void vtkReliefShaderSource::ReplaceValuesAfter(std::string& fs, const void* cell
   if (p->GetLevelOfDetail())
   {
     defines += "#define ML_LEVEL_OF_DETAIL\n";
+    if (this->NormalMoments)
+    {
+      defines += "#define ML_VISIBLE_NORMALS\n";
+    }
   }
   if (this->HasLightSet)
   {
@@ -224,14 +230,21 @@ void vtkReliefShaderSource::ReplaceValuesAfter(std::string& fs, const void* cell
     "  vec2 mlDUVdx = dFdx(mlTCoordVC);\n"
     "  vec2 mlDUVdy = dFdy(mlTCoordVC);" +
       std::string(p->GetLevelOfDetail()
-          // Footprint area -> level; one level finer than the area's, as trilinear filtering
-          // blends in the next coarser level (measured best of -2..0 on Stone and Bricks).
-          // Anisotropic taps along the footprint's major axis were measured worse at 80 degrees
-          // (4.03 against 3.42 levels): at grazing views the texels facing away are hidden, and
-          // the longer average takes them in.
+          // Mean normal filter: footprint area -> level, one level finer than the area's, as
+          // trilinear filtering blends in the next coarser level (measured best of -2..0 on
+          // Stone and Bricks). Anisotropic taps along the footprint's major axis were measured
+          // worse at 80 degrees (4.03 against 3.42 levels): at grazing views the texels facing
+          // away are hidden, and the longer average takes them in. Visible normal filter: the
+          // level of the footprint's minor axis (area over the longer screen axis), half a level
+          // finer; measured on two real maps at 45 and 80 degrees against the area's level
+          // -1.5..0 (docs/relief-methods.md, "Aliasing").
           ? "\n  mlFootprint = sqrt(abs(mlDUVdx.x * mlDUVdy.y - mlDUVdx.y * mlDUVdy.x) * "
-            "mlTextureSize.x * mlTextureSize.y);"
-            "\n  mlShadeLod = max(0.0, -1.0 + log2(max(mlFootprint, 1e-30)));"
+            "mlTextureSize.x * mlTextureSize.y);" +
+            std::string(this->NormalMoments
+                ? "\n  mlShadeLod = max(0.0, -0.5 + log2(max(mlFootprint * mlFootprint / "
+                  "max(max(length(mlDUVdx * mlTextureSize), length(mlDUVdy * mlTextureSize)), "
+                  "1e-30), 1e-30)));"
+                : "\n  mlShadeLod = max(0.0, -1.0 + log2(max(mlFootprint, 1e-30)));")
           : ""));
   vtkShaderProgram::Substitute(fs, "//MESOLIGHT::Relief::Impl", vtkReliefImplFS);
 

@@ -38,9 +38,10 @@ public:
 
   /**
    * How the relief texture is stored (vtkReliefTextureCache): the float RGBA layout, or the
-   * compact one with the normals uploaded (storedNormals) or derived from the depth.
+   * compact one with the normals uploaded (storedNormals) or derived from the depth; moments:
+   * the normal's mip-mapped moments are uploaded (level of detail's visible normal filter).
    */
-  void SetTextureLayout(bool floatTextures, bool storedNormals);
+  void SetTextureLayout(bool floatTextures, bool storedNormals, bool moments = false);
 
   /** Whether the shader recorded for this helper (cellBO) was built for another variant. */
   bool KeyChanged(const void* cellBO) const;
@@ -71,6 +72,7 @@ protected:
   bool HasIrradianceProbes = false;
   bool FloatTextures = false;
   bool StoredNormals = false;
+  bool NormalMoments = false;
   std::map<const void*, std::string> Keys;
 
 private:

@@ -119,7 +119,9 @@ bool vtkReliefShading::StartDraw(vtkOpenGLRenderWindow* renWin, vtkReliefPropert
   // Only what the method reads is uploaded: the pyramid for MaximumMipmap, cones for cone methods.
   if (!this->ReliefTexture->Update(renWin, relief, property->GetLevelOfDetail(), maximumMipmap,
         requiredCones != vtkReliefProperty::NoConeMap, property->GetFloatTextures(),
-        property->GetDeriveNormals()) ||
+        property->GetDeriveNormals(),
+        property->GetLevelOfDetail() &&
+          property->GetNormalFilter() == vtkReliefProperty::VisibleNormalFilter) ||
     !this->LightSet->Update(renWin, lights))
   {
     return false;
@@ -169,8 +171,8 @@ bool vtkReliefShading::StartDraw(vtkOpenGLRenderWindow* renWin, vtkReliefPropert
   this->ShaderSource->Configure(property, actor->GetTexture() != nullptr,
     this->ReliefTexture->GetConePacked(), this->LightSet->GetHasLightSet(),
     this->Probes->GetHasProbes());
-  this->ShaderSource->SetTextureLayout(
-    this->ReliefTexture->GetFloatTextures(), this->ReliefTexture->GetNormalsStored());
+  this->ShaderSource->SetTextureLayout(this->ReliefTexture->GetFloatTextures(),
+    this->ReliefTexture->GetNormalsStored(), this->ReliefTexture->GetMomentsUploaded());
   const int wrap =
     property->GetRepeatTexture() ? vtkTextureObject::Repeat : vtkTextureObject::ClampToEdge;
   this->ReliefTexture->ActivateTextures(wrap);

@@ -161,6 +161,10 @@ vtkReliefTextureCache::vtkReliefTextureCache()
 {
   this->TextureObject = vtkSmartPointer<vtkTextureObject>::New();
   this->NormalTexture = vtkSmartPointer<vtkTextureObject>::New();
+  for (auto& t : this->MomentTexture)
+  {
+    t = vtkSmartPointer<vtkTextureObject>::New();
+  }
   this->ConeTexture = vtkSmartPointer<vtkTextureObject>::New();
   this->Pyramid = vtkSmartPointer<vtkMinDepthPyramidTexture>::New();
 }
@@ -176,8 +180,9 @@ bool vtkReliefTextureCache::GetConePacked() const
 
 //------------------------------------------------------------------------------
 bool vtkReliefTextureCache::Update(vtkOpenGLRenderWindow* renWin, vtkImageData* image, bool mipmaps,
-  bool needPyramid, bool needCones, bool floatTextures, bool deriveNormals)
+  bool needPyramid, bool needCones, bool floatTextures, bool deriveNormals, bool normalMoments)
 {
+  const bool wantMoments = normalMoments && mipmaps && !floatTextures;
   vtkDataArray* scalars = image->GetPointData()->GetScalars();
   const bool baseCurrent = scalars && scalars == this->Uploaded &&
     scalars->GetMTime() <= this->UploadTime && this->TextureObject->GetHandle() != 0 &&
@@ -186,7 +191,8 @@ bool vtkReliefTextureCache::Update(vtkOpenGLRenderWindow* renWin, vtkImageData* 
   const bool wantCones =
     !floatTextures && needCones && ConeTypeOf(image) != vtkReliefProperty::NoConeMap;
   const bool havePyramid = this->Pyramid->GetNumberOfLevels() > 0;
-  if (baseCurrent && this->ConesUploaded == wantCones && havePyramid == needPyramid)
+  if (baseCurrent && this->ConesUploaded == wantCones && havePyramid == needPyramid &&
+    this->MomentsUploaded == wantMoments)
   {
     return this->Ready;
   }
@@ -298,6 +304,20 @@ bool vtkReliefTextureCache::Update(vtkOpenGLRenderWindow* renWin, vtkImageData* 
   this->Size[0] = dims[0];
   this->Size[1] = dims[1];
 
+  if (this->MomentsUploaded != wantMoments || !baseCurrent)
+  {
+    for (auto& t : this->MomentTexture)
+    {
+      t->ReleaseGraphicsResources(renWin);
+    }
+    this->MomentsUploaded = false;
+    this->MomentBytes = 0;
+    if (wantMoments && !this->UploadMoments(renWin, normalXY, normalZ, dims))
+    {
+      return false;
+    }
+  }
+
   // Cone ratios, only for the cone methods (compact storage; float storage has them in B).
   if (this->ConesUploaded != wantCones || !baseCurrent)
   {
@@ -357,7 +377,8 @@ bool vtkReliefTextureCache::Update(vtkOpenGLRenderWindow* renWin, vtkImageData* 
       }
     }
   }
-  this->UploadedBytes = this->BaseBytes + this->ConeBytes + this->Pyramid->GetUploadedBytes();
+  this->UploadedBytes =
+    this->BaseBytes + this->ConeBytes + this->MomentBytes + this->Pyramid->GetUploadedBytes();
   this->Ready = true;
   return true;
 }
@@ -475,6 +496,60 @@ bool vtkReliefTextureCache::UploadCompact(vtkOpenGLRenderWindow* renWin,
 }
 
 //------------------------------------------------------------------------------
+bool vtkReliefTextureCache::UploadMoments(vtkOpenGLRenderWindow* renWin,
+  const std::vector<float>& normalXY, const std::vector<float>& normalZ, const int dims[3])
+{
+  // Moments of the unit normal n weighted by w = 1 / nz, the texel's surface area over its base
+  // area: a footprint's mean of w (n.v) f(n) is then the light the pixel sees of its facets,
+  // each in proportion to its projected area (LEAN mapping, Olano and Baker, "LEAN Mapping",
+  // I3D 2010; here the 3D second-moment matrix). Averages are linear, so the mip chain
+  // (glGenerateMipmap's box filter) holds the moments of every footprint. Walls steeper than
+  // nz = 1/16 are weighted as at 1/16, which keeps half floats finite and exact enough.
+  const size_t n = static_cast<size_t>(dims[0]) * dims[1];
+  std::vector<float> m0(4 * n), m1(4 * n);
+  for (size_t i = 0; i < n; ++i)
+  {
+    float x = normalXY[2 * i], y = normalXY[2 * i + 1];
+    float z =
+      normalZ.empty() ? std::sqrt(std::max(0.f, 1.f - x * x - y * y)) : std::max(normalZ[i], 0.f);
+    const float length = std::sqrt(x * x + y * y + z * z);
+    if (length > 0.f)
+    {
+      x /= length;
+      y /= length;
+      z /= length;
+    }
+    else
+    {
+      x = y = 0.f;
+      z = 1.f;
+    }
+    const float w = 1.f / std::max(z, 1.f / 16.f);
+    m0[4 * i] = w * x * x;
+    m0[4 * i + 1] = w * y * y;
+    m0[4 * i + 2] = w * x * y;
+    m0[4 * i + 3] = w * z * z;
+    m1[4 * i] = w * x * z;
+    m1[4 * i + 1] = w * y * z;
+    m1[4 * i + 2] = w * x;
+    m1[4 * i + 3] = w * y;
+  }
+  for (int k = 0; k < 2; ++k)
+  {
+    if (!CreateTexture(this->MomentTexture[k], renWin, dims[0], dims[1], 4, VTK_FLOAT, GL_RGBA16F,
+          GL_RGBA, GL_FLOAT, (k == 0 ? m0 : m1).data(), true))
+    {
+      vtkErrorMacro(<< "Could not create the " << dims[0] << "x" << dims[1]
+                    << " normal moment texture.");
+      return false;
+    }
+    this->MomentBytes += GetTextureBytes(this->MomentTexture[k]);
+  }
+  this->MomentsUploaded = true;
+  return true;
+}
+
+//------------------------------------------------------------------------------
 void vtkReliefTextureCache::ActivateTextures(int wrap)
 {
   this->Repeat = wrap == vtkTextureObject::Repeat;
@@ -483,6 +558,15 @@ void vtkReliefTextureCache::ActivateTextures(int wrap)
   {
     if (t == this->TextureObject || (t == this->NormalTexture && this->NormalsStored) ||
       (t == this->ConeTexture && this->ConesUploaded))
+    {
+      t->SetWrapS(wrap);
+      t->SetWrapT(wrap);
+      t->Activate();
+    }
+  }
+  if (this->MomentsUploaded)
+  {
+    for (auto& t : this->MomentTexture)
     {
       t->SetWrapS(wrap);
       t->SetWrapT(wrap);
@@ -503,6 +587,13 @@ void vtkReliefTextureCache::DeactivateTextures()
   {
     this->ConeTexture->Deactivate();
   }
+  if (this->MomentsUploaded)
+  {
+    for (auto& t : this->MomentTexture)
+    {
+      t->Deactivate();
+    }
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -521,6 +612,11 @@ void vtkReliefTextureCache::SetShaderParameters(vtkShaderProgram* program)
   {
     program->SetUniformi("mlConeTexture", this->ConeTexture->GetTextureUnit());
   }
+  if (this->MomentsUploaded)
+  {
+    program->SetUniformi("mlMomentTexture0", this->MomentTexture[0]->GetTextureUnit());
+    program->SetUniformi("mlMomentTexture1", this->MomentTexture[1]->GetTextureUnit());
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -529,6 +625,11 @@ void vtkReliefTextureCache::ReleaseGraphicsResources(vtkWindow* win)
   this->TextureObject->ReleaseGraphicsResources(win);
   this->NormalTexture->ReleaseGraphicsResources(win);
   this->ConeTexture->ReleaseGraphicsResources(win);
+  for (auto& t : this->MomentTexture)
+  {
+    t->ReleaseGraphicsResources(win);
+  }
+  this->MomentsUploaded = false;
   this->ConesUploaded = false;
   this->NormalsStored = false;
   this->Pyramid->ReleaseGraphicsResources(win);
@@ -547,6 +648,7 @@ void vtkReliefTextureCache::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NormalsStored: " << (this->NormalsStored ? "yes" : "no") << "\n";
   os << indent << "NormalMismatch: " << this->NormalMismatch << "\n";
   os << indent << "ConesUploaded: " << (this->ConesUploaded ? "yes" : "no") << "\n";
+  os << indent << "MomentsUploaded: " << (this->MomentsUploaded ? "yes" : "no") << "\n";
   os << indent << "UploadedBytes: " << this->UploadedBytes << "\n";
   os << indent << "Ready: " << (this->Ready ? "yes" : "no") << "\n";
 }

@@ -61,7 +61,8 @@ public:
    * is not a relief texture or cannot be uploaded.
    */
   bool Update(vtkOpenGLRenderWindow* renWin, vtkImageData* image, bool mipmaps, bool needPyramid,
-    bool needCones = true, bool floatTextures = false, bool deriveNormals = false);
+    bool needCones = true, bool floatTextures = false, bool deriveNormals = false,
+    bool normalMoments = false);
 
   /**
    * The relief texture: the depth (compact storage) or the float RGBA texture (float storage).
@@ -80,6 +81,15 @@ public:
 
   /** Compact storage: whether normals are uploaded (else the shader derives them). */
   vtkGetMacro(NormalsStored, bool);
+
+  /**
+   * Whether the normal's mip-mapped moments are uploaded (compact storage with mipmaps, asked
+   * for by level of detail's visible normal filter): mlMomentTexture0 holds E[w nx^2],
+   * E[w ny^2], E[w nx ny], E[w nz^2] and mlMomentTexture1 E[w nx nz], E[w ny nz], E[w nx],
+   * E[w ny] in RGBA16F, w = 1 / nz the texel's surface area over its base area (LEAN mapping,
+   * Olano and Baker 2010, with the 3D second-moment matrix).
+   */
+  vtkGetMacro(MomentsUploaded, bool);
 
   /** Bits per depth texel: 16 (compact storage) or 32 (float storage). */
   vtkGetMacro(DepthBits, int);
@@ -132,10 +142,13 @@ protected:
   bool UploadCompact(vtkOpenGLRenderWindow* renWin, const std::vector<float>& depth,
     const std::vector<float>& normalXY, const std::vector<float>& normalZ, const int dims[3],
     bool mipmaps, bool deriveNormals, std::vector<std::uint16_t>& depth16);
+  bool UploadMoments(vtkOpenGLRenderWindow* renWin, const std::vector<float>& normalXY,
+    const std::vector<float>& normalZ, const int dims[3]);
 
   vtkSmartPointer<vtkTextureObject> TextureObject;
   vtkSmartPointer<vtkTextureObject> NormalTexture;
   vtkSmartPointer<vtkTextureObject> ConeTexture;
+  vtkSmartPointer<vtkTextureObject> MomentTexture[2];
   vtkSmartPointer<vtkMinDepthPyramidTexture> Pyramid;
   vtkDataArray* Uploaded = nullptr; // not referenced: only compared
   vtkMTimeType UploadTime = 0;
@@ -144,6 +157,8 @@ protected:
   bool DeriveNormals = false;
   bool NormalsStored = false;
   bool ConesUploaded = false;
+  bool MomentsUploaded = false;
+  vtkIdType MomentBytes = 0;
   bool Repeat = false; // the wrap mode of the current draw
   int DepthBits = 0;
   double NormalMismatch = -1.0;

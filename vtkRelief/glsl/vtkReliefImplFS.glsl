@@ -58,6 +58,18 @@
     }
 #endif
 #if ML_METHOD != ML_TEXTURE_MAPPING
+#ifdef ML_VISIBLE_NORMALS
+    // The base level's normal where it still shows (blended below over the first level).
+    vec2 g = vec2(0.0);
+    if (mlShadeLod < 1.0)
+    {
+#ifdef ML_STORED_NORMALS
+      g = mlGradientFromNormal(mlPackedNormalAt(mlHit.xy));
+#else
+      g = mlDepthGradient(mlHit.xy);
+#endif
+    }
+#else
     mlMarchLod = mlShadeLod; // the shading normal at the footprint's level (level of detail)
 #if defined(ML_FLOAT_TEXTURES) || defined(ML_STORED_NORMALS)
     vec3 mlFilteredNormal = mlPackedNormalAt(mlHit.xy);
@@ -68,7 +80,8 @@
     vec3 mlFilteredNormal = vec3(0.0, 0.0, 1.0);
 #endif
     mlMarchLod = 0.0; // shadows march level 0 again
-#if defined(ML_LEVEL_OF_DETAIL) && !defined(ML_CONE_PACKED)
+#endif
+#if defined(ML_LEVEL_OF_DETAIL) && !defined(ML_CONE_PACKED) && !defined(ML_VISIBLE_NORMALS)
     // Only where the footprint's level is above the base: the bilinear blend of neighbouring
     // unit normals is a little short too, but near, the frame stays that of the exact march.
     mlNormalLength = mix(1.0, clamp(length(mlFilteredNormal), 1e-3, 1.0), clamp(mlShadeLod, 0.0, 1.0));
@@ -79,12 +92,39 @@
     vec3 pu = dPdu - mlN * (worldDepth * g.x);
     vec3 pv = dPdv - mlN * (worldDepth * g.y);
     mlShadingNormal = normalize(cross(pu, pv) * handedness);
+#ifdef ML_VISIBLE_NORMALS
+    if (mlShadeLod > 0.0)
+    {
+      // Blended in over the first mip level, so that near frames are exactly those of level of
+      // detail off.
+      vec3 v = -dir;
+      vec3 n = mlVisibleNormal(mlHit.xy, vec3(dot(v, T), dot(v, B), dot(v, mlN)), mlShadeLod);
+      n = T * n.x + B * n.y + mlN * n.z;
+      float len = length(n);
+      float blend = clamp(mlShadeLod, 0.0, 1.0);
+      mlShadingNormal = normalize(mix(mlShadingNormal, n / max(len, 1e-6), blend));
+      mlNormalLength = mix(1.0, clamp(len, 1e-3, 1.0), blend);
+      // Toksvig's factor for the highlight of the spread: ft = |n| / (|n| + s (1 - |n|)).
+      mlSpecularPowerScale =
+        mlNormalLength / (mlNormalLength + mlSpecularPower * (1.0 - mlNormalLength));
+    }
+#endif
 #endif
   }
   // Bump mapping shades the undisplaced point but shadows it from the height below it.
   vec3 mlShadowPoint = mlHit;
 #if ML_METHOD == ML_BUMP
   mlShadowPoint.z = mlDepthAt(mlHit.xy);
+#endif
+#if defined(ML_LEVEL_OF_DETAIL) && ML_METHOD != ML_MAXIMUM_MIPMAP
+  // Where refinement stopped at the footprint the hit may lie up to one bracket inside the
+  // height field, and a shadow ray leaving from there is blocked by the surface it starts on:
+  // the shadow march starts the bracket's depth higher (far pixels only).
+  if (mlFootprint > 1.0)
+  {
+    mlShadowPoint.z = max(0.0, mlShadowPoint.z -
+        1.0 / (float(max(mlViewSteps, 1)) * exp2(float(mlViewRefinementSteps))));
+  }
 #endif
   vec3 diffuse = vec3(0.0);
   vec3 specular = vec3(0.0);

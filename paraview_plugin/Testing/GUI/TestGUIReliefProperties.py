@@ -34,9 +34,10 @@ CASES = {
     # Rays that leave the texture at its edges: a pattern deep at the border (Stone), deep.
     "RepeatTexture": ({"source.Pattern": "Stone", "OverrideDepthScale": 1,
                        "ReliefDepthScale": 0.3}, {"RepeatTexture": 1}),
-    # A 1024^2 stone texture over a few hundred pixels: minified, so mip levels matter.
+    # A 1024^2 stone texture over a few hundred pixels: minified, so mip levels matter (level
+    # of detail is on by default).
     "LevelOfDetail": ({"source.Pattern": "Stone", "source.Resolution": [1024, 1024]},
-                      {"LevelOfDetail": 1}),
+                      {"LevelOfDetail": 0}),
     "Exposure": ({}, {"Exposure": 0.5}),
     "ToneMapping": ({}, {"ToneMapping": 0}),
     # Median cut gives lights of about equal energy: only a threshold near 1 skips some.

@@ -165,7 +165,7 @@ INSTANTIATE_TEST_SUITE_P(Methods, ReliefStorage,
 // The bytes the mapper reports are those of the formats uploaded: per texel 2 (16-bit depth) + 2
 // (8-bit normal x, y), + 1 (8-bit cone ratio) for cone methods, the derived-normal variant 2
 // less; the max-mipmap pyramid at 8 bytes per cell (16 in float storage); float storage 16 per
-// texel.
+// texel; level of detail adds mip chains and 16 bytes per texel of normal moments.
 TEST(ReliefStorage, ReportedBytesAreThoseOfTheFormats)
 {
   const int n = 301;
@@ -201,6 +201,25 @@ TEST(ReliefStorage, ReportedBytesAreThoseOfTheFormats)
     StorageScene scene(OptionsOf(c));
     const Measured m = scene.Draw(e.S, e.Method);
     EXPECT_EQ(m.Bytes, e.Bytes) << e.Method << " " << Name(e.S);
+  }
+  // Level of detail (the vtkReliefProperty default; these scenes draw without it) adds the mip
+  // chains and the normal's second moments: two RGBA16F textures, 16 bytes per texel, mip-mapped.
+  long long mipTexels = 0; // levels of n^2 down to 1 x 1, sizes halving rounding down
+  for (int w = n;; w = std::max(1, w / 2))
+  {
+    mipTexels += static_cast<long long>(w) * w;
+    if (w == 1)
+    {
+      break;
+    }
+  }
+  {
+    StorageCase c{ "Bricks", "relief", 16, 4, 55.0, n };
+    ReliefSceneOptions o = OptionsOf(c);
+    o.LevelOfDetail = true;
+    StorageScene scene(o);
+    const Measured m = scene.Draw(Storage::Compact, "relief, level of detail");
+    EXPECT_EQ(m.Bytes, (4 + 16) * mipTexels) << "level of detail";
   }
   // The ratio the relief benchmark reports: the dense displaced mesh's 32 bytes per vertex and
   // 12 per triangle against the default method's compact textures.

@@ -245,7 +245,9 @@ TEST(Walkthrough, OrdinaryActorAndReliefSurfaceOccludeCorrectlyInEveryMode)
     std::cout << "sphere and relief masks, " << vtkLightFieldActor::GetRenderModeAsString(mode)
               << ": " << agree << " pixels agree, " << wrong << " differ; depth of " << depthPixels
               << " pixels vs the ray cast: worst relative difference " << worstDepth << "\n";
-    EXPECT_LT(worstDepth, 5e-4);
+    // The relief's level of detail (on by default) refines far hits only to an eighth of the
+    // pixel footprint: measured 6.0e-4 (the bound was 5e-4 with it off).
+    EXPECT_LT(worstDepth, 1e-3);
     // Tessellated vs analytic silhouette and pixel-centre sampling: a thin outline at most.
     EXPECT_LE(wrong, (sphereVisible + reliefVisible) / 50 + 8);
   }
