@@ -136,7 +136,8 @@ vtkSmartPointer<vtkImageData> OccludedProbes(const vlf::LightField& field,
   result->GetPointData()->SetScalars(out);
   vtkNew<vtkFloatArray> shareArray;
   shareArray->SetName(vtkIrradianceProbesTexture::GetVisibleShareName());
-  shareArray->SetNumberOfValues(static_cast<vtkIdType>(share.size()));
+  shareArray->SetNumberOfComponents(2);
+  shareArray->SetNumberOfTuples(static_cast<vtkIdType>(share.size() / 2));
   std::copy(share.begin(), share.end(), shareArray->GetPointer(0));
   vtkNew<vtkIntArray> shareSize;
   shareSize->SetName(vtkIrradianceProbesTexture::GetVisibleShareSizeName());

@@ -153,17 +153,17 @@ void vtkIrradianceProbesTexture::Update(vtkOpenGLRenderWindow* renWin, vtkImageD
 bool vtkIrradianceProbesTexture::UploadVisibleShare(
   vtkOpenGLRenderWindow* renWin, vtkDataArray* share, vtkDataArray* shareSize)
 {
-  // Without a map: one texel of 1, the relief unoccluded (the shader reads it all the same).
-  std::vector<float> texels(1, 1.0f);
+  // Without a map: one texel of (1, 1), the relief unoccluded (the shader reads it all the same).
+  std::vector<float> texels(2, 1.0f);
   int size[2] = { 1, 1 };
   this->HasVisibleShare = false;
   if (share || shareSize)
   {
     const char* const layout = " The relief's visible share must be a field-data array of W x H "
-                               "values in [0, 1] (row-major, row 0 at v ~ 0) with a 2-value array "
+                               "pairs in [0, 1] (row-major, row 0 at v ~ 0) with a 2-value array "
                                "(W, H); the relief is drawn without the probes.";
     if (!share || !shareSize || shareSize->GetNumberOfValues() != 2 ||
-      share->GetNumberOfComponents() != 1)
+      share->GetNumberOfComponents() != 2)
     {
       vtkErrorMacro(<< "The relief's visible share is incomplete." << layout);
       return false;
@@ -178,17 +178,20 @@ bool vtkIrradianceProbesTexture::UploadVisibleShare(
     }
     size[0] = static_cast<int>(w);
     size[1] = static_cast<int>(h);
-    texels.resize(static_cast<size_t>(size[0]) * size[1]);
+    texels.resize(2 * static_cast<size_t>(size[0]) * size[1]);
     for (vtkIdType t = 0; t < share->GetNumberOfTuples(); ++t)
     {
-      const double value = share->GetComponent(t, 0);
-      if (!(value >= 0.0 && value <= 1.0))
+      for (int c = 0; c < 2; ++c)
       {
-        vtkErrorMacro(<< "The relief's visible share " << value << " at " << t
-                      << " is not in [0, 1]." << layout);
-        return false;
+        const double value = share->GetComponent(t, c);
+        if (!(value >= 0.0 && value <= 1.0))
+        {
+          vtkErrorMacro(<< "The relief's visible share " << value << " at " << t
+                        << " is not in [0, 1]." << layout);
+          return false;
+        }
+        texels[2 * static_cast<size_t>(t) + c] = static_cast<float>(value);
       }
-      texels[static_cast<size_t>(t)] = static_cast<float>(value);
     }
     this->HasVisibleShare = true;
   }
@@ -202,7 +205,7 @@ bool vtkIrradianceProbesTexture::UploadVisibleShare(
   this->ShareTexture->SetWrapS(vtkTextureObject::ClampToEdge);
   this->ShareTexture->SetWrapT(vtkTextureObject::ClampToEdge);
   if (!this->ShareTexture->Create2DFromRaw(static_cast<unsigned int>(size[0]),
-        static_cast<unsigned int>(size[1]), 1, VTK_FLOAT, texels.data()))
+        static_cast<unsigned int>(size[1]), 2, VTK_FLOAT, texels.data()))
   {
     vtkErrorMacro(<< "Could not create the relief's visible-share texture (" << size[0] << " x "
                   << size[1] << "); the relief is drawn without the probes.");

@@ -20,11 +20,13 @@
  * - a fourth component: pixel (9 i + k, j) holds the scene's visibility (in [0, 1]) of the
  *   renderer's light k (k < 8) from probe (i, j), uploaded as blocks 7-8 (lights 0-3, 4-7) and
  *   multiplied into that light's contribution (1 without it);
- * - the relief's cosine-weighted visible share V over its texture (ReliefVisibleShareMap in
- *   evaluation/core/ReliefShading.h) as the field-data array GetVisibleShareName() (W x H
- *   values, row 0 at v ~ 0) with the field-data array GetVisibleShareSizeName() = (W, H): a
- *   second, one-channel linear texture. The shader scales the probes' irradiance by V and adds
- *   the relief's multi-bounce inter-reflection (ReliefInterReflected). Without it V is 1.
+ * - the relief's cosine-weighted visible share over its texture (ReliefVisibleShareMap in
+ *   evaluation/core/ReliefShading.h: per cell V and V over the share of directions above the
+ *   macro plane) as the two-component field-data array GetVisibleShareName() (W x H pairs, row
+ *   0 at v ~ 0) with the field-data array GetVisibleShareSizeName() = (W, H): a second,
+ *   two-channel linear texture. The shader scales the probes' irradiance by the second value
+ *   and adds the relief's multi-bounce inter-reflection of V (ReliefInterReflected). Without it
+ *   both are 1.
  */
 
 #ifndef vtkIrradianceProbesTexture_h

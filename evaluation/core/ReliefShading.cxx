@@ -131,17 +131,27 @@ bool LeavesRelief(
 } // namespace
 
 double ReliefVisibleShare(const HeightField& hf, const ReliefFrame& frame, const glm::dvec3& hit,
-  const glm::dvec3& n, int count)
+  const glm::dvec3& n, int count, double* abovePlane)
 {
   if (count < 1)
   {
+    if (abovePlane)
+    {
+      *abovePlane = 1.0;
+    }
     return 1.0;
   }
   const NormalFrame local(n);
-  int seen = 0;
+  int seen = 0, above = 0;
   for (const glm::dvec3& c : CosineDirections(count))
   {
-    seen += LeavesRelief(hf, frame, hit, local(c)) ? 1 : 0;
+    const glm::dvec3 w = local(c);
+    above += glm::dot(w, frame.Normal) > 0.0 ? 1 : 0;
+    seen += LeavesRelief(hf, frame, hit, w) ? 1 : 0;
+  }
+  if (abovePlane)
+  {
+    *abovePlane = static_cast<double>(above) / count;
   }
   return static_cast<double>(seen) / count;
 }
@@ -171,7 +181,7 @@ std::vector<float> ReliefVisibleShareMap(const HeightField& hf, const ReliefFram
   {
     throw std::invalid_argument("ReliefVisibleShareMap: the grid must be at least 1 x 1");
   }
-  std::vector<float> share(static_cast<std::size_t>(width) * height, 1.0f);
+  std::vector<float> share(2 * static_cast<std::size_t>(width) * height, 1.0f);
   std::atomic<int> rowsDone{ 0 };
   std::atomic<bool> stop{ false };
   ParallelFor(0, static_cast<std::size_t>(height), 1,
@@ -184,8 +194,12 @@ std::vector<float> ReliefVisibleShareMap(const HeightField& hf, const ReliefFram
         {
           const double u = (i + 0.5) / width;
           const glm::dvec3 hit(u, v, hf.DepthAt(u, v));
-          share[j * width + i] = static_cast<float>(
-            ReliefVisibleShare(hf, frame, hit, ReliefNormalAt(hf, frame, u, v), count));
+          double above = 1.0;
+          const double visible =
+            ReliefVisibleShare(hf, frame, hit, ReliefNormalAt(hf, frame, u, v), count, &above);
+          share[2 * (j * width + i)] = static_cast<float>(visible);
+          share[2 * (j * width + i) + 1] =
+            static_cast<float>(above > 0.0 ? std::min(1.0, visible / above) : 1.0);
         }
         const int done = ++rowsDone;
         if (!ReportProgress(progress, static_cast<double>(done) / height))

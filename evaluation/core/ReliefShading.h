@@ -137,7 +137,8 @@ MESOLIGHTEVALUATION_EXPORT std::optional<ReliefShade> ShadeReliefRay(const Heigh
  * the height field counting as occluded. The V of the inter-reflection (ReliefLighting::Albedo).
  */
 MESOLIGHTEVALUATION_EXPORT double ReliefVisibleShare(const HeightField& hf,
-  const ReliefFrame& frame, const glm::dvec3& hit, const glm::dvec3& n, int count);
+  const ReliefFrame& frame, const glm::dvec3& hit, const glm::dvec3& n, int count,
+  double* abovePlane = nullptr); // abovePlane: the share of the directions above the macro plane
 
 /**
  * The light the relief reflects onto itself at a point of visible share V (ReliefLighting's
@@ -153,8 +154,12 @@ MESOLIGHTEVALUATION_EXPORT glm::dvec3 ReliefInterReflected(ReliefInterReflection
  * ReliefVisibleShare over a width x height grid of the texture square (cell (i, j) at
  * ((i + 1/2) / width, (j + 1/2) / height), row-major, j slowest), at the height field's surface
  * and perturbed normal there: what the relief mapper looks up per pixel instead of marching
- * `count` directions (vtkIrradianceProbesTexture). Parallel; reports progress, and a stop
- * throws std::runtime_error("aborted").
+ * `count` directions (vtkIrradianceProbesTexture). Two values per cell: V, and V over the share
+ * of the directions above the macro plane (at most 1), the visible share of the light the
+ * probes' SH irradiance holds (a probe in front of the wall sees nothing from behind it, so the
+ * directions below the plane are dark in it already; ShadeReliefRay's radiance weighting
+ * leaves them out for the same reason). Parallel; reports progress, and a stop throws
+ * std::runtime_error("aborted").
  */
 MESOLIGHTEVALUATION_EXPORT std::vector<float> ReliefVisibleShareMap(const HeightField& hf,
   const ReliefFrame& frame, int width, int height, int count,

@@ -20,7 +20,9 @@
 
 uniform sampler2D mlIrradianceProbes;
 uniform vec2 mlProbeGrid; // (Nu, Nv)
-uniform sampler2D mlReliefVisibleShare; // V per texel of the relief; 1 x 1 of 1 without
+// Per cell of the relief: V, and V over the share of directions above the macro plane (the
+// share of the probes' light that reaches the point); 1 x 1 of (1, 1) without.
+uniform sampler2D mlReliefVisibleShare;
 
 #define ML_PROBE_BLOCKS 9.0
 
@@ -95,7 +97,7 @@ vec3 mlFlatLightIrradiance(vec3 posVC, vec3 macroVC, vec2 uv)
 }
 
 // The relief's indirect irradiance at texture coordinates uv: the probes' SH9 irradiance at the
-// perturbed unit world normal n, times the visible share V, plus the relief's multi-bounce
+// perturbed unit world normal n, times the visible share of their light, plus the relief's multi-bounce
 // inter-reflection (1 - V) a V E_flat / (1 - a (1 - V)), a the albedo, E_flat the flat wall's
 // irradiance (the probes' at the macro world normal m plus flatLights) -- ReliefInterReflected's
 // MultiBounce. With V = 1 (no map) this is the probes' irradiance alone.
@@ -110,8 +112,9 @@ vec3 mlProbeIndirect(vec2 uv, vec3 n, vec3 m, vec3 albedo, vec3 flatLights)
   vec4 c4 = textureLod(mlIrradianceProbes, st + vec2(0.0, 4.0 * block), 0.0);
   vec4 c5 = textureLod(mlIrradianceProbes, st + vec2(0.0, 5.0 * block), 0.0);
   vec4 c6 = textureLod(mlIrradianceProbes, st + vec2(0.0, 6.0 * block), 0.0);
-  vec3 irradiance = mlShIrradiance(c0, c1, c2, c3, c4, c5, c6, n);
-  float visible = clamp(textureLod(mlReliefVisibleShare, uv, 0.0).r, 0.0, 1.0);
+  vec2 share = clamp(textureLod(mlReliefVisibleShare, uv, 0.0).rg, 0.0, 1.0);
+  float visible = share.r;
+  vec3 irradiance = share.g * mlShIrradiance(c0, c1, c2, c3, c4, c5, c6, n);
   if (visible >= 1.0)
   {
     return irradiance;
@@ -119,6 +122,6 @@ vec3 mlProbeIndirect(vec2 uv, vec3 n, vec3 m, vec3 albedo, vec3 flatLights)
   vec3 a = clamp(albedo, 0.0, 1.0);
   float occluded = 1.0 - visible;
   vec3 flatIrradiance = mlShIrradiance(c0, c1, c2, c3, c4, c5, c6, m) + flatLights;
-  return visible * irradiance +
+  return irradiance +
     occluded * a * flatIrradiance * visible / max(1.0 - a * occluded, vec3(1e-9));
 }
