@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <memory>
 #include <sstream>
 
@@ -57,6 +58,78 @@ std::vector<ReliefEmitterSample> EmitterSamples(const TriangleScene& scene, int 
   return samples;
 }
 } // namespace
+
+std::vector<float> EmitterLightVisibility(const vlf::LightField& field, const EmbreeScene& scene,
+  const vlf::ReliefSurface& surface, const std::vector<glm::vec3>& lights, int probesU,
+  int probesV, int samplesPerSide)
+{
+  const std::size_t count = lights.size();
+  std::vector<float> visibility(static_cast<std::size_t>(probesU) * probesV * count, 1.0f);
+  if (count == 0)
+  {
+    return visibility;
+  }
+  const std::vector<ReliefEmitterSample> samples =
+    EmitterSamples(field.Scene(), std::max(1, samplesPerSide));
+  std::vector<std::size_t> nearest(samples.size(), 0);
+  for (std::size_t s = 0; s < samples.size(); ++s)
+  {
+    double best = std::numeric_limits<double>::max();
+    for (std::size_t k = 0; k < count; ++k)
+    {
+      const glm::dvec3 d = samples[s].Position - glm::dvec3(lights[k]);
+      if (glm::dot(d, d) < best)
+      {
+        best = glm::dot(d, d);
+        nearest[s] = k;
+      }
+    }
+  }
+  for (int j = 0; j < probesV; ++j)
+  {
+    for (int i = 0; i < probesU; ++i)
+    {
+      const glm::dvec3 p(vlf::ReliefProbePoint(surface, i, j, probesU, probesV));
+      std::vector<double> all(count, 0.0), seen(count, 0.0);
+      for (std::size_t s = 0; s < samples.size(); ++s)
+      {
+        const ReliefEmitterSample& e = samples[s];
+        const glm::dvec3 toLight = e.Position - p;
+        const double r2 = glm::dot(toLight, toLight);
+        if (!(r2 > 0.0))
+        {
+          continue;
+        }
+        const glm::dvec3 l = toLight / std::sqrt(r2);
+        const double weight = glm::dot(surface.Normal, l) * -glm::dot(e.Normal, l) / r2 *
+          (0.2126 * e.RadianceArea.x + 0.7152 * e.RadianceArea.y + 0.0722 * e.RadianceArea.z);
+        if (!(weight > 0.0))
+        {
+          continue;
+        }
+        all[nearest[s]] += weight;
+        SceneRay ray;
+        ray.Origin = glm::vec3(p);
+        ray.Direction = glm::vec3(l);
+        ray.TNear = 1e-4f;
+        ray.TFar = static_cast<float>(std::sqrt(r2) * (1.0 - 1e-4));
+        if (!scene.Occluded(ray))
+        {
+          seen[nearest[s]] += weight;
+        }
+      }
+      for (std::size_t k = 0; k < count; ++k)
+      {
+        if (all[k] > 0.0)
+        {
+          visibility[(static_cast<std::size_t>(j) * probesU + i) * count + k] =
+            static_cast<float>(seen[k] / all[k]);
+        }
+      }
+    }
+  }
+  return visibility;
+}
 
 HeightField ReadDepthImage(const std::string& path)
 {

@@ -7,7 +7,10 @@
 #     own noise is printed beside the errors, with the relief's pixel mask (--relief-mask);
 #   - the flat wall path traced and drawn by the field without a relief, over the same pixels:
 #     the field's own error there, which the relief inherits;
-#   - `vlf render --relief back=DEPTH --exr` (the method as a user runs it);
+#   - `vlf render --relief back=DEPTH --exr` (the method as a user runs it), and the interactive
+#     GPU path (`vlf render --mode progressive --relief ...`, the relief mapper as `vlf view`
+#     draws it, with and without its precomputed occlusion), measured as a method of its own
+#     against the same negative cases;
 #   - `bench vlf-relief FIELD --relief ...`: the relief's pixels rendered in-process, on the same
 #     rays, lit by the field (the method), by the flat wall's field value and by one light of the
 #     lamp's power with shadows (the negative cases), each timed: the mean relative error per
@@ -127,9 +130,22 @@ for entry in "${maps[@]}"; do
   if [ "$t" = FAILED ]; then status=1; continue; fi
   frame=$(sed -n 's/.*x[0-9]*, \([0-9.]*\) s, light field.*/\1/p' "$name-field.log")
   echo "vlf render --relief: ${frame:-?} s per ${size}x${size} frame"
+  # The interactive GPU path (vtkReliefMapper, SH9 probes, the precomputed visible share, the
+  # emitter lights with the scene's shadows), as `vlf view --relief` draws it, as linear EXR;
+  # and without the occlusion (shown).
+  gpu_images=""
+  for variant in gpu gpu-unoccluded; do
+    extra=()
+    [ "$variant" = gpu-unoccluded ] && extra=(--relief-no-occlusion)
+    t=$(timed "$name-$variant" bash "$here/xvfb.sh" "$bin" vlf render "$field" --mode progressive \
+      "${relief[@]}" "${extra[@]}" "${view[@]}" --size "${size}x${size}" --out "$name-$variant.png" \
+      --exr "$name-$variant.exr" --force)
+    [ "$t" = FAILED ] && status=1 || gpu_images="$gpu_images,$variant=$name-$variant.exr"
+  done
   bench=(bench vlf-relief "$field" "${relief[@]}" "${view[@]}"
     --reference "$name-reference.exr" --reference-2 "$name-reference-2.exr"
-    --mask "$name-mask.exr" --images "vlf-render=$name-field.exr" --times "vlf-render=${frame:-0}"
+    --mask "$name-mask.exr" --images "vlf-render=$name-field.exr$gpu_images"
+    --times "vlf-render=${frame:-0}"
     --label "cornell-back-$name-$directions-$samples" --write-images "$name"
     --csv "$csv_dir/relief-against-path-tracer.csv"
     --plot "$csv_dir/relief-against-path-tracer-$name.png")
@@ -137,6 +153,16 @@ for entry in "${maps[@]}"; do
   # Under scripts/xvfb.sh: the plot is drawn by VTK's charts, which need a display.
   bash "$here/xvfb.sh" "$bin" "${bench[@]}" | tee "$name-bench.log"
   [ "${PIPESTATUS[0]}" -eq 0 ] || status=1
+  # The GPU path as the method, against the same negative cases (written by the run above).
+  if [ -f "$name-gpu.exr" ]; then
+    bench=(bench vlf-relief --reference "$name-reference.exr" --reference-2 "$name-reference-2.exr"
+      --mask "$name-mask.exr"
+      --images "gpu=$name-gpu.exr,flat-wall=$name-flat-wall.exr,one-light=$name-one-light.exr"
+      --label "cornell-back-$name-gpu-$directions-$samples"
+      --csv "$csv_dir/relief-against-path-tracer.csv")
+    log "$bin" "${bench[@]}"
+    "$bin" "${bench[@]}" | tee "$name-gpu-bench.log"
+  fi
 done
 # The field's own error on the flat wall (no relief) over the first map's relief pixels.
 first="${maps[0]%%:*}"

@@ -2,10 +2,12 @@
 #include "vtkIrradianceProbesTexture.h"
 
 #include "vtkDataArray.h"
+#include "vtkFieldData.h"
 #include "vtkImageData.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkPointData.h"
+#include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
 
 #include <algorithm>
@@ -29,7 +31,10 @@ void vtkIrradianceProbesTexture::Update(vtkOpenGLRenderWindow* renWin, vtkImageD
     return;
   }
   vtkDataArray* values = probes->GetPointData()->GetScalars();
-  const vtkMTimeType time = std::max(probes->GetMTime(), values ? values->GetMTime() : 0);
+  vtkDataArray* share = probes->GetFieldData()->GetArray(GetVisibleShareName());
+  vtkDataArray* shareSize = probes->GetFieldData()->GetArray(GetVisibleShareSizeName());
+  const vtkMTimeType time = std::max({ probes->GetMTime(), values ? values->GetMTime() : 0,
+    share ? share->GetMTime() : 0, shareSize ? shareSize->GetMTime() : 0 });
   if (probes == this->UploadedImage && values == this->Uploaded && time <= this->UploadTime)
   {
     if (!this->Valid)
@@ -37,7 +42,8 @@ void vtkIrradianceProbesTexture::Update(vtkOpenGLRenderWindow* renWin, vtkImageD
       return; // reported when it was first seen
     }
     if (this->TextureObject && this->TextureObject->GetHandle() != 0 &&
-      this->TextureObject->GetContext() == renWin)
+      this->TextureObject->GetContext() == renWin && this->ShareTexture &&
+      this->ShareTexture->GetHandle() != 0 && this->ShareTexture->GetContext() == renWin)
     {
       this->HasProbes = true;
       return;
@@ -76,7 +82,11 @@ void vtkIrradianceProbesTexture::Update(vtkOpenGLRenderWindow* renWin, vtkImageD
   // Seven RGBA blocks of Nu x Nv texels, each channel one coefficient of one colour channel:
   // blocks 0-1 red's L_0..L_7, 2-3 green's, 4-5 blue's, 6 (red, green, blue) L_8. The shader then
   // evaluates each colour channel as two four-wide dot products (seven fetches, not nine).
-  std::vector<float> texels(static_cast<size_t>(nu) * nv * 7 * 4, 0.0f);
+  // Blocks 7-8: the scene's visibility of lights 0-3 and 4-7 from the probe (a fourth
+  // component), 1 without it.
+  std::vector<float> texels(static_cast<size_t>(nu) * nv * Blocks * 4, 0.0f);
+  std::fill(texels.begin() + static_cast<std::ptrdiff_t>(nu) * nv * 7 * 4, texels.end(), 1.0f);
+  const bool visibility = values->GetNumberOfComponents() >= 4;
   for (int j = 0; j < nv; ++j)
   {
     for (int i = 0; i < nu; ++i)
@@ -98,6 +108,18 @@ void vtkIrradianceProbesTexture::Update(vtkOpenGLRenderWindow* renWin, vtkImageD
           texels[((static_cast<size_t>(block) * nv + j) * nu + i) * 4 + channel] =
             static_cast<float>(value);
         }
+        if (visibility && k < 8)
+        {
+          const double value = values->GetComponent(pixel, 3);
+          if (!(value >= 0.0 && value <= 1.0))
+          {
+            vtkErrorMacro(<< "The visibility of light " << k << " from irradiance probe (" << i
+                          << ", " << j << ") is " << value << ", not in [0, 1]." << layout);
+            return;
+          }
+          texels[((static_cast<size_t>(7 + k / 4) * nv + j) * nu + i) * 4 + k % 4] =
+            static_cast<float>(value);
+        }
       }
     }
   }
@@ -111,10 +133,14 @@ void vtkIrradianceProbesTexture::Update(vtkOpenGLRenderWindow* renWin, vtkImageD
   this->TextureObject->SetWrapS(vtkTextureObject::ClampToEdge);
   this->TextureObject->SetWrapT(vtkTextureObject::ClampToEdge);
   if (!this->TextureObject->Create2DFromRaw(static_cast<unsigned int>(nu),
-        static_cast<unsigned int>(7 * nv), 4, VTK_FLOAT, texels.data()))
+        static_cast<unsigned int>(Blocks * nv), 4, VTK_FLOAT, texels.data()))
   {
     vtkErrorMacro(<< "Could not create the irradiance probes texture (" << nu << " x " << nv
                   << " probes); the relief is drawn without them.");
+    return;
+  }
+  if (!this->UploadVisibleShare(renWin, share, shareSize))
+  {
     return;
   }
   this->GridSize[0] = nu;
@@ -124,11 +150,105 @@ void vtkIrradianceProbesTexture::Update(vtkOpenGLRenderWindow* renWin, vtkImageD
 }
 
 //------------------------------------------------------------------------------
+bool vtkIrradianceProbesTexture::UploadVisibleShare(
+  vtkOpenGLRenderWindow* renWin, vtkDataArray* share, vtkDataArray* shareSize)
+{
+  // Without a map: one texel of (1, 1), the relief unoccluded (the shader reads it all the same).
+  std::vector<float> texels(2, 1.0f);
+  int size[2] = { 1, 1 };
+  this->HasVisibleShare = false;
+  if (share || shareSize)
+  {
+    const char* const layout = " The relief's visible share must be a field-data array of W x H "
+                               "pairs in [0, 1] (row-major, row 0 at v ~ 0) with a 2-value array "
+                               "(W, H); the relief is drawn without the probes.";
+    if (!share || !shareSize || shareSize->GetNumberOfValues() != 2 ||
+      share->GetNumberOfComponents() != 2)
+    {
+      vtkErrorMacro(<< "The relief's visible share is incomplete." << layout);
+      return false;
+    }
+    const double w = shareSize->GetComponent(0, 0), h = shareSize->GetComponent(1, 0);
+    if (!(w >= 1.0 && h >= 1.0 && w <= 16384.0 && h <= 16384.0) ||
+      static_cast<double>(share->GetNumberOfTuples()) != w * h)
+    {
+      vtkErrorMacro(<< "The relief's visible share holds " << share->GetNumberOfTuples()
+                    << " values for a " << w << " x " << h << " grid." << layout);
+      return false;
+    }
+    size[0] = static_cast<int>(w);
+    size[1] = static_cast<int>(h);
+    texels.resize(2 * static_cast<size_t>(size[0]) * size[1]);
+    for (vtkIdType t = 0; t < share->GetNumberOfTuples(); ++t)
+    {
+      for (int c = 0; c < 2; ++c)
+      {
+        const double value = share->GetComponent(t, c);
+        if (!(value >= 0.0 && value <= 1.0))
+        {
+          vtkErrorMacro(<< "The relief's visible share " << value << " at " << t
+                        << " is not in [0, 1]." << layout);
+          return false;
+        }
+        texels[2 * static_cast<size_t>(t) + c] = static_cast<float>(value);
+      }
+    }
+    this->HasVisibleShare = true;
+  }
+  if (!this->ShareTexture)
+  {
+    this->ShareTexture = vtkSmartPointer<vtkTextureObject>::New();
+  }
+  this->ShareTexture->SetContext(renWin);
+  this->ShareTexture->SetMinificationFilter(vtkTextureObject::Linear);
+  this->ShareTexture->SetMagnificationFilter(vtkTextureObject::Linear);
+  this->ShareTexture->SetWrapS(vtkTextureObject::ClampToEdge);
+  this->ShareTexture->SetWrapT(vtkTextureObject::ClampToEdge);
+  if (!this->ShareTexture->Create2DFromRaw(static_cast<unsigned int>(size[0]),
+        static_cast<unsigned int>(size[1]), 2, VTK_FLOAT, texels.data()))
+  {
+    vtkErrorMacro(<< "Could not create the relief's visible-share texture (" << size[0] << " x "
+                  << size[1] << "); the relief is drawn without the probes.");
+    this->HasVisibleShare = false;
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkIrradianceProbesTexture::Activate()
+{
+  this->TextureObject->Activate();
+  this->ShareTexture->Activate();
+}
+
+//------------------------------------------------------------------------------
+void vtkIrradianceProbesTexture::Deactivate()
+{
+  this->TextureObject->Deactivate();
+  this->ShareTexture->Deactivate();
+}
+
+//------------------------------------------------------------------------------
+void vtkIrradianceProbesTexture::SetUniforms(vtkShaderProgram* program)
+{
+  program->SetUniformi("mlIrradianceProbes", this->TextureObject->GetTextureUnit());
+  program->SetUniformi("mlReliefVisibleShare", this->ShareTexture->GetTextureUnit());
+  const float probeGrid[2] = { static_cast<float>(this->GridSize[0]),
+    static_cast<float>(this->GridSize[1]) };
+  program->SetUniform2f("mlProbeGrid", probeGrid);
+}
+
+//------------------------------------------------------------------------------
 void vtkIrradianceProbesTexture::ReleaseGraphicsResources(vtkWindow* win)
 {
   if (this->TextureObject)
   {
     this->TextureObject->ReleaseGraphicsResources(win);
+  }
+  if (this->ShareTexture)
+  {
+    this->ShareTexture->ReleaseGraphicsResources(win);
   }
   this->Uploaded = nullptr;
   this->UploadedImage = nullptr;
@@ -141,4 +261,5 @@ void vtkIrradianceProbesTexture::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "HasProbes: " << (this->HasProbes ? "yes" : "no") << "\n";
   os << indent << "GridSize: " << this->GridSize[0] << " x " << this->GridSize[1] << "\n";
+  os << indent << "HasVisibleShare: " << (this->HasVisibleShare ? "yes" : "no") << "\n";
 }

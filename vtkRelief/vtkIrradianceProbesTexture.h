@@ -14,6 +14,19 @@
  * clamps each fetch inside its block, which is the clamp at the grid's border). Uploads are
  * keyed by the scalar array and its
  * modification time; a malformed image is reported once per array and modification.
+ *
+ * Two optional parts make the relief's own occlusion and the scene's shadows cheap per pixel,
+ * both computed once on the CPU (application/LightFieldReliefs.cxx):
+ * - a fourth component: pixel (9 i + k, j) holds the scene's visibility (in [0, 1]) of the
+ *   renderer's light k (k < 8) from probe (i, j), uploaded as blocks 7-8 (lights 0-3, 4-7) and
+ *   multiplied into that light's contribution (1 without it);
+ * - the relief's cosine-weighted visible share over its texture (ReliefVisibleShareMap in
+ *   evaluation/core/ReliefShading.h: per cell V and V over the share of directions above the
+ *   macro plane) as the two-component field-data array GetVisibleShareName() (W x H pairs, row
+ *   0 at v ~ 0) with the field-data array GetVisibleShareSizeName() = (W, H): a second,
+ *   two-channel linear texture. The shader scales the probes' irradiance by the second value
+ *   and adds the relief's multi-bounce inter-reflection of V (ReliefInterReflected). Without it
+ *   both are 1.
  */
 
 #ifndef vtkIrradianceProbesTexture_h
@@ -26,6 +39,7 @@
 class vtkDataArray;
 class vtkImageData;
 class vtkOpenGLRenderWindow;
+class vtkShaderProgram;
 class vtkTextureObject;
 class vtkWindow;
 
@@ -53,13 +67,33 @@ public:
   /** The texture; null before the first upload. */
   vtkTextureObject* GetTextureObject() { return this->TextureObject; }
 
+  /** Whether the last upload had a visible-share map (else V = 1). */
+  vtkGetMacro(HasVisibleShare, bool);
+
+  /** The field-data arrays of the relief's visible share and its grid size (see above). */
+  static const char* GetVisibleShareName() { return "ReliefVisibleShare"; }
+  static const char* GetVisibleShareSizeName() { return "ReliefVisibleShareSize"; }
+
+  ///@{
+  /** Binds both textures and sets the shader's uniforms (after an Update that left probes). */
+  void Activate();
+  void Deactivate();
+  void SetUniforms(vtkShaderProgram* program);
+  ///@}
+
   void ReleaseGraphicsResources(vtkWindow* win);
 
 protected:
   vtkIrradianceProbesTexture();
   ~vtkIrradianceProbesTexture() override;
 
+  static constexpr int Blocks = 9; // seven of SH9 coefficients, two of light visibility
+  bool UploadVisibleShare(vtkOpenGLRenderWindow* renWin, vtkDataArray* share,
+    vtkDataArray* shareSize);
+
   vtkSmartPointer<vtkTextureObject> TextureObject;
+  vtkSmartPointer<vtkTextureObject> ShareTexture;
+  bool HasVisibleShare = false;
   vtkDataArray* Uploaded = nullptr; // not referenced: only compared
   vtkImageData* UploadedImage = nullptr;
   vtkMTimeType UploadTime = 0;

@@ -189,7 +189,7 @@ bool vtkReliefShading::StartDraw(vtkOpenGLRenderWindow* renWin, vtkReliefPropert
   this->ProbesActive = this->Probes->GetHasProbes();
   if (this->ProbesActive)
   {
-    this->Probes->GetTextureObject()->Activate();
+    this->Probes->Activate();
   }
   this->Drawing = true;
   return true;
@@ -213,7 +213,7 @@ void vtkReliefShading::FinishDraw()
   }
   if (this->ProbesActive)
   {
-    this->Probes->GetTextureObject()->Deactivate();
+    this->Probes->Deactivate();
   }
   this->Drawing = false;
 }
@@ -316,10 +316,7 @@ void vtkReliefShading::SetShaderParameters(
   }
   if (this->ProbesActive)
   {
-    program->SetUniformi("mlIrradianceProbes", this->Probes->GetTextureObject()->GetTextureUnit());
-    const int* grid = this->Probes->GetGridSize();
-    const float probeGrid[2] = { static_cast<float>(grid[0]), static_cast<float>(grid[1]) };
-    program->SetUniform2f("mlProbeGrid", probeGrid);
+    this->Probes->SetUniforms(program);
   }
   if (this->LightSet->GetHasLightSet() || this->ProbesActive)
   {

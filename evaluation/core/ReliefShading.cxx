@@ -1,13 +1,17 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "ReliefShading.h"
 
+#include "ParallelFor.h"
+
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
 #include <glm/matrix.hpp>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <stdexcept>
 
 namespace mesolight
 {
@@ -102,7 +106,114 @@ const std::vector<glm::dvec3>& CosineDirections(int count)
   }
   return directions;
 }
+// The world direction of cosine direction c around the unit normal n (the frame both the
+// radiance-weighted occlusion and the visible share use).
+struct NormalFrame
+{
+  glm::dvec3 X, Y, N;
+  explicit NormalFrame(const glm::dvec3& n)
+    : N(n)
+  {
+    const glm::dvec3 t = std::abs(n.z) < 0.9 ? glm::dvec3(0, 0, 1) : glm::dvec3(1, 0, 0);
+    this->X = glm::normalize(glm::cross(t, n));
+    this->Y = glm::cross(n, this->X);
+  }
+  glm::dvec3 operator()(const glm::dvec3& c) const { return c.x * X + c.y * Y + c.z * N; }
+};
+
+// Whether world direction w from the relief point hit leaves the relief.
+bool LeavesRelief(
+  const HeightField& hf, const ReliefFrame& frame, const glm::dvec3& hit, const glm::dvec3& w)
+{
+  return glm::dot(w, frame.Normal) > 0.0 &&
+    Visible(hf, glm::dvec3(hit.x, hit.y, std::max(0.0, hit.z)), frame.ToTexture(w), 1e-6);
+}
 } // namespace
+
+double ReliefVisibleShare(const HeightField& hf, const ReliefFrame& frame, const glm::dvec3& hit,
+  const glm::dvec3& n, int count, double* abovePlane)
+{
+  if (count < 1)
+  {
+    if (abovePlane)
+    {
+      *abovePlane = 1.0;
+    }
+    return 1.0;
+  }
+  const NormalFrame local(n);
+  int seen = 0, above = 0;
+  for (const glm::dvec3& c : CosineDirections(count))
+  {
+    const glm::dvec3 w = local(c);
+    above += glm::dot(w, frame.Normal) > 0.0 ? 1 : 0;
+    seen += LeavesRelief(hf, frame, hit, w) ? 1 : 0;
+  }
+  if (abovePlane)
+  {
+    *abovePlane = static_cast<double>(above) / count;
+  }
+  return static_cast<double>(seen) / count;
+}
+
+glm::dvec3 ReliefInterReflected(ReliefInterReflection model, double visibleShare,
+  const glm::dvec3& albedo, const glm::dvec3& flatIrradiance)
+{
+  const double occluded = 1.0 - visibleShare;
+  const glm::dvec3 a = glm::clamp(albedo, 0.0, 1.0);
+  if (model == ReliefInterReflection::None || !(occluded > 0.0))
+  {
+    return glm::dvec3(0.0);
+  }
+  glm::dvec3 seen = flatIrradiance;
+  if (model == ReliefInterReflection::MultiBounce)
+  {
+    // Bounded away from 0: a white relief that hides the whole hemisphere (V = 0) stays 0.
+    seen *= visibleShare / glm::max(1.0 - a * occluded, glm::dvec3(1e-9));
+  }
+  return occluded * a * seen;
+}
+
+std::vector<float> ReliefVisibleShareMap(const HeightField& hf, const ReliefFrame& frame,
+  int width, int height, int count, const ProgressCallback& progress)
+{
+  if (width < 1 || height < 1)
+  {
+    throw std::invalid_argument("ReliefVisibleShareMap: the grid must be at least 1 x 1");
+  }
+  std::vector<float> share(2 * static_cast<std::size_t>(width) * height, 1.0f);
+  std::atomic<int> rowsDone{ 0 };
+  std::atomic<bool> stop{ false };
+  ParallelFor(0, static_cast<std::size_t>(height), 1,
+    [&](std::size_t begin, std::size_t end)
+    {
+      for (std::size_t j = begin; j < end && !stop; ++j)
+      {
+        const double v = (j + 0.5) / height;
+        for (int i = 0; i < width; ++i)
+        {
+          const double u = (i + 0.5) / width;
+          const glm::dvec3 hit(u, v, hf.DepthAt(u, v));
+          double above = 1.0;
+          const double visible =
+            ReliefVisibleShare(hf, frame, hit, ReliefNormalAt(hf, frame, u, v), count, &above);
+          share[2 * (j * width + i)] = static_cast<float>(visible);
+          share[2 * (j * width + i) + 1] =
+            static_cast<float>(above > 0.0 ? std::min(1.0, visible / above) : 1.0);
+        }
+        const int done = ++rowsDone;
+        if (!ReportProgress(progress, static_cast<double>(done) / height))
+        {
+          stop = true;
+        }
+      }
+    });
+  if (stop)
+  {
+    throw std::runtime_error("aborted");
+  }
+  return share;
+}
 
 glm::dvec3 ProbeRadiance(const ReliefLighting& lighting, double u, double v, const glm::dvec3& w)
 {
@@ -175,19 +286,16 @@ std::optional<ReliefShade> ShadeReliefRay(const HeightField& hf, const ReliefFra
   {
     // The share of the SH radiance (luminance, cosine-distributed) that reaches the hit past the
     // relief: a direction below the macro plane or blocked by the height field brings nothing.
-    const glm::dvec3 t = std::abs(shade.Normal.z) < 0.9 ? glm::dvec3(0, 0, 1) : glm::dvec3(1, 0, 0);
-    const glm::dvec3 x = glm::normalize(glm::cross(t, shade.Normal));
-    const glm::dvec3 y = glm::cross(shade.Normal, x);
+    const NormalFrame local(shade.Normal);
     double all = 0.0, visible = 0.0;
     int seen = 0; // directions that leave the relief (unweighted: the cosine-weighted share)
     for (const glm::dvec3& c : CosineDirections(lighting.OcclusionDirections))
     {
-      const glm::dvec3 w = c.x * x + c.y * y + c.z * shade.Normal;
+      const glm::dvec3 w = local(c);
       const glm::dvec3 l = ProbeRadiance(lighting, u, v, w);
       const double weight = 0.2126 * l.x + 0.7152 * l.y + 0.0722 * l.z + 1e-12;
       all += weight;
-      if (glm::dot(w, frame.Normal) > 0.0 &&
-        Visible(hf, glm::dvec3(u, v, std::max(0.0, hit->point.z)), frame.ToTexture(w), 1e-6))
+      if (LeavesRelief(hf, frame, hit->point, w))
       {
         visible += weight;
         ++seen;
@@ -241,15 +349,8 @@ std::optional<ReliefShade> ShadeReliefRay(const HeightField& hf, const ReliefFra
   if (bounce)
   {
     // What an occluded direction sees: the relief, lit about as the flat wall is (see the header).
-    const glm::dvec3 albedo = glm::clamp(lighting.Albedo, 0.0, 1.0);
-    glm::dvec3 seenIrradiance = ProbeIrradiance(lighting, u, v, frame.Normal) + flatDirect;
-    if (lighting.InterReflection == ReliefInterReflection::MultiBounce)
-    {
-      const double visibleShare = 1.0 - occludedShare;
-      // Bounded away from 0: a white relief that hides the whole hemisphere (V = 0) stays 0.
-      seenIrradiance *= visibleShare / glm::max(1.0 - albedo * occludedShare, glm::dvec3(1e-9));
-    }
-    shade.InterReflected = occludedShare * albedo * seenIrradiance;
+    shade.InterReflected = ReliefInterReflected(lighting.InterReflection, 1.0 - occludedShare,
+      lighting.Albedo, ProbeIrradiance(lighting, u, v, frame.Normal) + flatDirect);
     shade.Indirect += shade.InterReflected;
   }
   return shade;

@@ -20,6 +20,7 @@
 #include "EnvironmentMaps.h" // SH9
 #include "HeightFieldTracer.h"
 #include "MesolightEvaluationModule.h" // for the export macro
+#include "Progress.h"
 
 #include <glm/vec3.hpp>
 
@@ -128,6 +129,41 @@ MESOLIGHTEVALUATION_EXPORT glm::dvec3 ProbeIrradiance(
 MESOLIGHTEVALUATION_EXPORT std::optional<ReliefShade> ShadeReliefRay(const HeightField& hf,
   const ReliefFrame& frame, const ReliefLighting& lighting, const glm::dvec3& origin,
   const glm::dvec3& dir, ReliefNormal normal = ReliefNormal::Perturbed);
+
+/**
+ * The cosine-weighted share of the hemisphere around the unit world normal n at the relief point
+ * hit = (u, v, d) whose directions leave the relief: the fixed cosine-distributed directions of
+ * ShadeReliefRay's occlusion (`count` of them), a direction below the macro plane or blocked by
+ * the height field counting as occluded. The V of the inter-reflection (ReliefLighting::Albedo).
+ */
+MESOLIGHTEVALUATION_EXPORT double ReliefVisibleShare(const HeightField& hf,
+  const ReliefFrame& frame, const glm::dvec3& hit, const glm::dvec3& n, int count,
+  double* abovePlane = nullptr); // abovePlane: the share of the directions above the macro plane
+
+/**
+ * The light the relief reflects onto itself at a point of visible share V (ReliefLighting's
+ * InterReflection): (1 - V) Albedo E_seen, E_seen = flatIrradiance (one bounce) or
+ * V flatIrradiance / (1 - Albedo (1 - V)) (multi-bounce), flatIrradiance the flat wall's
+ * irradiance there. The one formula of both relief renderers: ShadeReliefRay and the relief
+ * mapper's probe shading (vtkReliefIrradianceProbesFS.glsl, mlReliefInterReflection) use it.
+ */
+MESOLIGHTEVALUATION_EXPORT glm::dvec3 ReliefInterReflected(ReliefInterReflection model,
+  double visibleShare, const glm::dvec3& albedo, const glm::dvec3& flatIrradiance);
+
+/**
+ * ReliefVisibleShare over a width x height grid of the texture square (cell (i, j) at
+ * ((i + 1/2) / width, (j + 1/2) / height), row-major, j slowest), at the height field's surface
+ * and perturbed normal there: what the relief mapper looks up per pixel instead of marching
+ * `count` directions (vtkIrradianceProbesTexture). Two values per cell: V, and V over the share
+ * of the directions above the macro plane (at most 1), the visible share of the light the
+ * probes' SH irradiance holds (a probe in front of the wall sees nothing from behind it, so the
+ * directions below the plane are dark in it already; ShadeReliefRay's radiance weighting
+ * leaves them out for the same reason). Parallel; reports progress, and a stop throws
+ * std::runtime_error("aborted").
+ */
+MESOLIGHTEVALUATION_EXPORT std::vector<float> ReliefVisibleShareMap(const HeightField& hf,
+  const ReliefFrame& frame, int width, int height, int count,
+  const ProgressCallback& progress = {});
 
 } // namespace mesolight
 

@@ -153,8 +153,10 @@
     mlHasFrame);
 #endif
 #ifdef ML_IRRADIANCE_PROBES
-  // The probes' SH9 irradiance at the perturbed normal, in world coordinates.
-  mlEnvironment += mlProbeIrradiance(mlHit.xy, transpose(mlWorldToView) * mlShadingNormal);
+  // The probes' SH9 irradiance at the perturbed normal, in world coordinates, with the relief's
+  // occlusion and inter-reflection (mlProbeIndirect).
+  mlEnvironment += mlProbeIndirect(mlHit.xy, transpose(mlWorldToView) * mlShadingNormal,
+    transpose(mlWorldToView) * mlN, diffuseColor, mlFlatLightIrradiance(mlHitPos, mlN, mlHit.xy));
 #endif
   // mlNormalLength: the filtered normal's length (Toksvig), 1 without level of detail.
   gl_FragData[0].rgb = (gl_FragData[0].rgb +

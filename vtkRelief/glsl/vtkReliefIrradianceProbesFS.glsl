@@ -9,33 +9,119 @@
 // hold red's L_0..L_7, 2-3 green's, 4-5 blue's, block 6 the three L_8. A linear fetch inside a
 // block interpolates its coefficients bilinearly between the four nearest probes; the fetch is
 // clamped to the block's texel centres, which clamps at the grid's border (probe (i, j) stands
-// at ((i + 1/2) / Nu, (j + 1/2) / Nv)).
+// at ((i + 1/2) / Nu, (j + 1/2) / Nv)). The texture is Nu x 9 Nv: blocks 7-8 hold the scene's
+// visibility of the renderer's lights 0-3 and 4-7 from each probe (1 where not given).
+//
+// The relief's own occlusion and inter-reflection at near-zero cost per pixel: V, the
+// cosine-weighted share of the hemisphere leaving the relief, precomputed per texel on the
+// exact height-field intersector (ReliefVisibleShareMap), is looked up, not marched; the
+// probes' irradiance is scaled by it and the relief's multi-bounce inter-reflection added, the
+// model of the CPU renderer (ReliefInterReflected in evaluation/core/ReliefShading.h).
 
 uniform sampler2D mlIrradianceProbes;
 uniform vec2 mlProbeGrid; // (Nu, Nv)
+// Per cell of the relief: V, and V over the share of directions above the macro plane (the
+// share of the probes' light that reaches the point); 1 x 1 of (1, 1) without.
+uniform sampler2D mlReliefVisibleShare;
 
-// Irradiance at texture coordinates uv for the unit world normal n, clamped at 0 (to be
-// multiplied by albedo / pi).
-vec3 mlProbeIrradiance(vec2 uv, vec3 n)
+#define ML_PROBE_BLOCKS 9.0
+
+// The probe texture's coordinates at uv, in block 0.
+vec2 mlProbeCoordinates(vec2 uv)
 {
   vec2 probe = clamp(uv * mlProbeGrid, vec2(0.5), mlProbeGrid - vec2(0.5));
-  float s = probe.x / mlProbeGrid.x;
-  float t = probe.y / (7.0 * mlProbeGrid.y);
-  float block = 1.0 / 7.0;
-  // A_l Y_lm(n) in the order of SH9 (Y00, Y1-1, Y10, Y11 | Y2-2, Y2-1, Y20, Y21 | Y22), with
-  // A_0 = pi, A_1 = 2 pi / 3, A_2 = pi / 4.
+  return vec2(probe.x / mlProbeGrid.x, probe.y / (ML_PROBE_BLOCKS * mlProbeGrid.y));
+}
+
+// SH9 irradiance of the seven fetched blocks for the unit world normal n, clamped at 0 (to be
+// multiplied by albedo / pi). A_l Y_lm(n) in the order of SH9 (Y00, Y1-1, Y10, Y11 | Y2-2, Y2-1,
+// Y20, Y21 | Y22), with A_0 = pi, A_1 = 2 pi / 3, A_2 = pi / 4.
+vec3 mlShIrradiance(vec4 c0, vec4 c1, vec4 c2, vec4 c3, vec4 c4, vec4 c5, vec4 c6, vec3 n)
+{
   vec4 w0 = vec4(3.14159265 * 0.282095, 2.09439510 * 0.488603 * vec3(n.y, n.z, n.x));
   vec4 w1 = 0.78539816 *
     vec4(1.092548 * n.x * n.y, 1.092548 * n.y * n.z, 0.315392 * (3.0 * n.z * n.z - 1.0),
       1.092548 * n.x * n.z);
   float w8 = 0.78539816 * 0.546274 * (n.x * n.x - n.y * n.y);
   vec3 irradiance =
-    vec3(dot(textureLod(mlIrradianceProbes, vec2(s, t), 0.0), w0) +
-        dot(textureLod(mlIrradianceProbes, vec2(s, t + block), 0.0), w1),
-      dot(textureLod(mlIrradianceProbes, vec2(s, t + 2.0 * block), 0.0), w0) +
-        dot(textureLod(mlIrradianceProbes, vec2(s, t + 3.0 * block), 0.0), w1),
-      dot(textureLod(mlIrradianceProbes, vec2(s, t + 4.0 * block), 0.0), w0) +
-        dot(textureLod(mlIrradianceProbes, vec2(s, t + 5.0 * block), 0.0), w1)) +
-    textureLod(mlIrradianceProbes, vec2(s, t + 6.0 * block), 0.0).rgb * w8;
+    vec3(dot(c0, w0) + dot(c1, w1), dot(c2, w0) + dot(c3, w1), dot(c4, w0) + dot(c5, w1)) +
+    c6.rgb * w8;
   return max(irradiance, vec3(0.0));
+}
+
+// The scene's visibility of the renderer's light `light` at texture coordinates uv, from the
+// probes (bilinear); 1 for lights 8 and beyond.
+float mlEmitterVisibility(vec2 uv, int light)
+{
+  if (light >= 8)
+  {
+    return 1.0;
+  }
+  vec2 st = mlProbeCoordinates(uv);
+  vec4 v = textureLod(mlIrradianceProbes,
+    vec2(st.x, st.y + float(7 + light / 4) / ML_PROBE_BLOCKS), 0.0);
+  int c = light - 4 * (light / 4);
+  return c == 0 ? v.x : (c == 1 ? v.y : (c == 2 ? v.z : v.w));
+}
+
+// The renderer's lights' irradiance on the flat wall (unit view normal macroVC) at posVC, with
+// the scene's visibility and without the relief's shadow: what the relief an occluded direction
+// sees is lit by (the emitters' part of ReliefInterReflected's flat irradiance). VTK lights carry
+// irradiance / pi (vtkReliefMapper::ConfigureEmitterLight), hence the pi.
+vec3 mlFlatLightIrradiance(vec3 posVC, vec3 macroVC, vec2 uv)
+{
+  vec3 irradiance = vec3(0.0);
+  for (int i = 0; i < mlNumberOfLights; ++i)
+  {
+    float attenuation = 1.0;
+    vec3 lightDir = mlLightDirectionVC[i];
+    if (mlLightPositional[i] != 0)
+    {
+      lightDir = posVC - mlLightPositionVC[i];
+      float dist = length(lightDir);
+      lightDir = lightDir / max(dist, 1e-30);
+      vec3 a = mlLightAttenuation[i];
+      attenuation = 1.0 / max(a.x + a.y * dist + a.z * dist * dist, 1e-30);
+      if (mlLightConeAngle[i] <= 90.0)
+      {
+        float coneDot = dot(lightDir, mlLightDirectionVC[i]);
+        attenuation = coneDot >= cos(radians(mlLightConeAngle[i]))
+          ? attenuation * pow(max(coneDot, 0.0), mlLightExponent[i])
+          : 0.0;
+      }
+    }
+    irradiance += max(0.0, attenuation * dot(macroVC, -lightDir)) *
+      mlEmitterVisibility(uv, i) * mlLightColor[i];
+  }
+  return 3.14159265 * irradiance;
+}
+
+// The relief's indirect irradiance at texture coordinates uv: the probes' SH9 irradiance at the
+// perturbed unit world normal n, times the visible share of their light, plus the relief's multi-bounce
+// inter-reflection (1 - V) a V E_flat / (1 - a (1 - V)), a the albedo, E_flat the flat wall's
+// irradiance (the probes' at the macro world normal m plus flatLights) -- ReliefInterReflected's
+// MultiBounce. With V = 1 (no map) this is the probes' irradiance alone.
+vec3 mlProbeIndirect(vec2 uv, vec3 n, vec3 m, vec3 albedo, vec3 flatLights)
+{
+  vec2 st = mlProbeCoordinates(uv);
+  float block = 1.0 / ML_PROBE_BLOCKS;
+  vec4 c0 = textureLod(mlIrradianceProbes, st, 0.0);
+  vec4 c1 = textureLod(mlIrradianceProbes, st + vec2(0.0, block), 0.0);
+  vec4 c2 = textureLod(mlIrradianceProbes, st + vec2(0.0, 2.0 * block), 0.0);
+  vec4 c3 = textureLod(mlIrradianceProbes, st + vec2(0.0, 3.0 * block), 0.0);
+  vec4 c4 = textureLod(mlIrradianceProbes, st + vec2(0.0, 4.0 * block), 0.0);
+  vec4 c5 = textureLod(mlIrradianceProbes, st + vec2(0.0, 5.0 * block), 0.0);
+  vec4 c6 = textureLod(mlIrradianceProbes, st + vec2(0.0, 6.0 * block), 0.0);
+  vec2 share = clamp(textureLod(mlReliefVisibleShare, uv, 0.0).rg, 0.0, 1.0);
+  float visible = share.r;
+  vec3 irradiance = share.g * mlShIrradiance(c0, c1, c2, c3, c4, c5, c6, n);
+  if (visible >= 1.0)
+  {
+    return irradiance;
+  }
+  vec3 a = clamp(albedo, 0.0, 1.0);
+  float occluded = 1.0 - visible;
+  vec3 flatIrradiance = mlShIrradiance(c0, c1, c2, c3, c4, c5, c6, m) + flatLights;
+  return irradiance +
+    occluded * a * flatIrradiance * visible / max(1.0 - a * occluded, vec3(1e-9));
 }

@@ -18,6 +18,10 @@ uniform float mlSpecularPower;
 uniform float mlExposure; // scales the light-set and probe shading
 uniform mat3 mlWorldToView; // rotation part of the view matrix
 
+#ifdef ML_IRRADIANCE_PROBES
+float mlEmitterVisibility(vec2 uv, int light); // the scene's shadow (vtkReliefIrradianceProbesFS)
+#endif
+
 // Accumulates diffuse and specular light at a point of the height field.
 //   posVC, normalVC: the hit point and the height field's normal there, view coordinates
 //   hit: the hit in texture space; worldToTexture maps a view-space direction to texture space
@@ -47,6 +51,9 @@ void mlAccumulateLights(vec3 posVC, vec3 normalVC, vec3 hit, mat3 worldToTexture
           : 0.0;
       }
     }
+#ifdef ML_IRRADIANCE_PROBES
+    attenuation *= mlEmitterVisibility(hit.xy, i);
+#endif
     float df = max(0.0, attenuation * mlFilteredLambert(normalVC, -lightDir));
     if (df <= 0.0)
     {

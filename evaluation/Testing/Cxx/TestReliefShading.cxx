@@ -449,3 +449,80 @@ TEST(ReliefShading, InterReflectionInAGrooveAgainstPathTracing)
     EXPECT_GT(none, 2.0 * multi);
   }
 }
+
+// The relief mapper's visible-share map (ReliefVisibleShareMap) against the analytic view factor
+// of a V-groove as deep as wide, infinitely long (the height field's clamp extends it along v):
+// from a point of a wall, the cosine-weighted share of the hemisphere leaving through the
+// opening is (sin b - sin a) / 2, a and b the signed angles from the wall's normal to the
+// opening's edges in the groove's cross-section (the crossed-strings view factor of a strip;
+// Hottel, "Radiant heat transmission"). The negative case, the share around the wall's macro
+// normal instead of the relief's, misses it by far more.
+TEST(ReliefShading, VisibleShareMapOfAGrooveIsTheAnalyticViewFactor)
+{
+  const HeightField hf = VGroove(); // opening u in [0.4, 0.6], bottom at u = 0.5, depth 1
+  ReliefFrame frame = Square();
+  frame.DepthScale = 0.2; // world depth W = 0.2: as deep as wide
+  const double w = frame.WorldDepth();
+  const int cells = 500;
+  const std::vector<float> share = mesolight::ReliefVisibleShareMap(hf, frame, cells, 2, 256);
+  ASSERT_EQ(share.size(), static_cast<std::size_t>(2 * 2 * cells));
+  double sumError = 0.0, worst = 0.0, sumFlatError = 0.0;
+  int count = 0;
+  for (int i = 0; i < cells; ++i)
+  {
+    const double u = (i + 0.5) / cells;
+    const double offset = std::abs(u - 0.5);
+    if (offset < 0.01 || offset > 0.09)
+    {
+      if (offset > 0.11)
+      {
+        EXPECT_EQ(share[2 * i], 1.0f) << "the flat wall beside the groove sees the whole hemisphere";
+      }
+      continue; // the crease at the bottom and the edges: no single wall plane
+    }
+    // In the cross-section (x along u, z up), mirrored onto the left wall.
+    const glm::dvec2 p(0.5 - offset, -w * (1.0 - offset / 0.1));
+    const glm::dvec2 normal = glm::normalize(glm::dvec2(w, 0.1));
+    const glm::dvec2 tangent = glm::normalize(glm::dvec2(0.1, -w)); // toward the far edge
+    const glm::dvec2 nearEdge(0.4, 0.0), farEdge(0.6, 0.0);
+    const double sinA = glm::dot(glm::normalize(nearEdge - p), tangent);
+    const double sinB = glm::dot(glm::normalize(farEdge - p), tangent);
+    ASSERT_GT(glm::dot(farEdge - p, normal), 0.0);
+    const double analytic = 0.5 * (sinB - sinA);
+    const double error = std::abs(share[2 * i] - analytic);
+    EXPECT_GE(share[2 * i + 1], share[2 * i]); // V over the share above the plane
+    sumError += error;
+    worst = std::max(worst, error);
+    const glm::dvec3 hit(u, 0.25, hf.DepthAt(u, 0.25));
+    sumFlatError +=
+      std::abs(mesolight::ReliefVisibleShare(hf, frame, hit, frame.Normal, 256) - analytic);
+    ++count;
+  }
+  ASSERT_GT(count, 60);
+  std::cout << "visible share in a V-groove as deep as wide, " << count
+            << " cells: mean |error| " << sumError / count << ", worst " << worst
+            << "; around the macro normal (negative) " << sumFlatError / count << "\n";
+  EXPECT_LT(sumError / count, 0.015);
+  EXPECT_LT(worst, 0.04);
+  EXPECT_GT(sumFlatError / count, 5.0 * sumError / count);
+  EXPECT_GT(sumFlatError / count, 0.05);
+}
+
+// The inter-reflection formula both relief renderers share: one bounce adds (1 - V) a E, multi-
+// bounce (1 - V) a V E / (1 - a (1 - V)), none nothing; V = 1 adds nothing.
+TEST(ReliefShading, InterReflectedFormula)
+{
+  using mesolight::ReliefInterReflection;
+  const glm::dvec3 e(2.0, 1.0, 0.5), a(0.5, 0.8, 0.0);
+  const glm::dvec3 one = mesolight::ReliefInterReflected(ReliefInterReflection::OneBounce, 0.6, a, e);
+  const glm::dvec3 multi =
+    mesolight::ReliefInterReflected(ReliefInterReflection::MultiBounce, 0.6, a, e);
+  for (int c = 0; c < 3; ++c)
+  {
+    EXPECT_NEAR(one[c], 0.4 * a[c] * e[c], 1e-12);
+    EXPECT_NEAR(multi[c], 0.4 * a[c] * 0.6 * e[c] / (1.0 - a[c] * 0.4), 1e-12);
+  }
+  EXPECT_EQ(mesolight::ReliefInterReflected(ReliefInterReflection::None, 0.6, a, e), glm::dvec3(0.0));
+  EXPECT_EQ(
+    mesolight::ReliefInterReflected(ReliefInterReflection::MultiBounce, 1.0, a, e), glm::dvec3(0.0));
+}

@@ -17,7 +17,9 @@
 
 #include <vtkActor.h>
 #include <vtkCamera.h>
+#include <vtkFieldData.h>
 #include <vtkFloatArray.h>
+#include <vtkIntArray.h>
 #include <vtkImageData.h>
 #include <vtkLight.h>
 #include <vtkMath.h>
@@ -616,4 +618,119 @@ TEST(ReliefIrradianceProbes, ProbesAddToALightSetAndAreToneMappedByDefault)
             << int(toneMapped.Rgb[3 * centre]) << "\n";
   EXPECT_NEAR(linear.Rgb[3 * centre], 255.0 * sum, 1.5);
   EXPECT_NEAR(toneMapped.Rgb[3 * centre], 255.0 * sum / (1.0 + sum), 1.5);
+}
+
+// The relief's precomputed occlusion (vtkIrradianceProbesTexture's visible-share map and the
+// probes' fourth component, the scene's visibility of each light): on a flat relief under
+// constant radiance L, a uniform map (V, S) gives albedo / pi x (S pi L + the multi-bounce
+// inter-reflection of V), the formula of the CPU renderer (ReliefInterReflected); a light seen
+// by a quarter from every probe gives a quarter of its light. Negative: the map left out gives
+// albedo x L. A map of the wrong size is reported and the probes left out.
+TEST(ReliefIrradianceProbes, VisibleShareAndLightVisibilityFollowTheCpuFormula)
+{
+  Scene scene;
+  BuildScene(scene, [](double, double) { return 0.0; }, false);
+  const glm::dvec3 albedo(0.8, 0.6, 0.4);
+  scene.Actor->GetProperty()->SetColor(albedo.x, albedo.y, albedo.z);
+  const glm::dvec3 radiance(0.9, 0.7, 0.5);
+  const double visible = 0.5, sky = 0.8;
+  vtkSmartPointer<vtkImageData> probes = ProbeImage(1, 1, { ConstantRadiance(radiance) });
+  const auto attach = [&probes, visible, sky](int w, int h, vtkIdType tuples)
+  {
+    vtkNew<vtkFloatArray> share;
+    share->SetName("ReliefVisibleShare");
+    share->SetNumberOfComponents(2);
+    share->SetNumberOfTuples(tuples);
+    for (vtkIdType t = 0; t < tuples; ++t)
+    {
+      share->SetTuple2(t, visible, sky);
+    }
+    vtkNew<vtkIntArray> size;
+    size->SetName("ReliefVisibleShareSize");
+    size->InsertNextValue(w);
+    size->InsertNextValue(h);
+    probes->GetFieldData()->AddArray(share);
+    probes->GetFieldData()->AddArray(size);
+    probes->Modified();
+  };
+  attach(4, 4, 16);
+  scene.Mapper->SetIrradianceProbesData(probes);
+  const glm::dvec3 expected = albedo / vtkMath::Pi() *
+    (sky * vtkMath::Pi() * radiance +
+      ReliefInterReflected(
+        ReliefInterReflection::MultiBounce, visible, albedo, vtkMath::Pi() * radiance));
+  const auto worstError = [](const Frame& frame, const glm::dvec3& value, long long& covered)
+  {
+    double worst = 0.0;
+    covered = 0;
+    for (size_t p = 0; p < frame.Depth.size(); ++p)
+    {
+      if (frame.Covered(p))
+      {
+        ++covered;
+        for (int c = 0; c < 3; ++c)
+        {
+          worst = std::max(worst, std::abs(frame.Rgb[3 * p + c] - 255.0 * value[c]));
+        }
+      }
+    }
+    return worst;
+  };
+  long long covered = 0;
+  const double worst = worstError(Render(scene), expected, covered);
+  std::cout << "[visible share] " << covered << " pixels, worst |error| " << worst << " levels\n";
+  EXPECT_GT(covered, Pixels * Pixels / 4);
+  EXPECT_LE(worst, 1.5);
+  // Negative: without the map the relief is albedo x L, far from the occluded value.
+  vtkSmartPointer<vtkImageData> plain = ProbeImage(1, 1, { ConstantRadiance(radiance) });
+  scene.Mapper->SetIrradianceProbesData(plain);
+  EXPECT_GT(worstError(Render(scene), expected, covered), 10.0);
+
+  // The scene's visibility of light 0 (a fourth component of 0.25): a quarter of its light.
+  // Compared against the same light fully visible (a fourth component of 1), no probe light.
+  vtkNew<vtkLight> light;
+  const double position[3] = { 0.5, 0.5, 1.0 }, normal[3] = { 0.0, 0.0, -1.0 },
+               intensity[3] = { 1.5, 1.5, 1.5 };
+  vtkReliefMapper::ConfigureEmitterLight(light, position, normal, intensity);
+  scene.Renderer->AddLight(light);
+  const auto lightOnly = [](double visibility)
+  {
+    vtkSmartPointer<vtkImageData> image = ProbeImage(1, 1, { SH9() });
+    vtkNew<vtkFloatArray> values;
+    values->SetNumberOfComponents(4);
+    values->SetNumberOfTuples(9);
+    for (vtkIdType k = 0; k < 9; ++k)
+    {
+      values->SetTuple4(k, 0.0, 0.0, 0.0, k == 0 ? visibility : 1.0);
+    }
+    image->GetPointData()->SetScalars(values);
+    return image;
+  };
+  scene.Mapper->SetIrradianceProbesData(lightOnly(1.0));
+  const Frame full = Render(scene);
+  scene.Mapper->SetIrradianceProbesData(lightOnly(0.25));
+  const Frame quarter = Render(scene);
+  double sumFull = 0.0, sumQuarter = 0.0;
+  for (size_t p = 0; p < full.Depth.size(); ++p)
+  {
+    if (full.Covered(p) && quarter.Covered(p))
+    {
+      sumFull += full.Rgb[3 * p];
+      sumQuarter += quarter.Rgb[3 * p];
+    }
+  }
+  std::cout << "[light visibility] quarter / full = " << sumQuarter / sumFull << "\n";
+  EXPECT_GT(sumFull, 0.0);
+  EXPECT_NEAR(sumQuarter / sumFull, 0.25, 0.01);
+  scene.Renderer->RemoveAllLights();
+
+  // A map whose size does not match its values: reported, the relief drawn without the probes.
+  probes = ProbeImage(1, 1, { ConstantRadiance(radiance) });
+  attach(4, 5, 16);
+  scene.Mapper->SetIrradianceProbesData(probes);
+  vtkNew<mesolight_test::MessageCapture> messages;
+  messages->Watch(scene.Mapper);
+  Render(scene);
+  EXPECT_TRUE(messages->HasError("visible share holds 16 values for a 4 x 5 grid"))
+    << messages->AllErrors();
 }
