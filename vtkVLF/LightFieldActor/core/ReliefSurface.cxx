@@ -28,6 +28,9 @@ namespace
 // points' centroid) leaves at most 1.6 mm off, far below a relief's depth.
 constexpr float PlaneTolerance = 1e-4f;
 constexpr double PlaneExtentTolerance = 0.01;
+// How far in front of a scene wall (unit-sphere units, 5% of the scene radius) a relief patch
+// still counts as mounted on it (ReliefSurfaceFromTriangles).
+constexpr double MountTolerance = 0.05;
 
 std::string Quoted(const std::string& text)
 {
@@ -217,7 +220,9 @@ ReliefSurface ReliefSurfaceFromTriangles(const LightField& field,
 
   // The scene surface it lies on, facing the same way (a patch on a wall): the probes then
   // ignore that wall's crossing as they do for the wall itself, and its material is the
-  // surface's. Within 1% of the scene radius of the plane; the nearest such surface's bounds.
+  // surface's. A relief's depth lies behind its plane, so a patch mounted on a wall stands in
+  // front of it by that depth: up to MountTolerance of the scene radius; the nearest such
+  // surface's bounds.
   glm::dvec3 centroid(0.0), lower(1e30), upper(-1e30);
   for (const glm::vec3& p : positions)
   {
@@ -225,7 +230,7 @@ ReliefSurface ReliefSurfaceFromTriangles(const LightField& field,
     lower = glm::min(lower, glm::dvec3(p));
     upper = glm::max(upper, glm::dvec3(p));
   }
-  const double planeTolerance = std::max(0.01, PlaneExtentTolerance * glm::length(upper - lower));
+  const double planeTolerance = MountTolerance;
   double nearest = 1e30;
   const TriangleScene& scene = field.Scene();
   for (std::uint32_t s = 0; s < field.Surfaces().size(); ++s)
@@ -233,7 +238,8 @@ ReliefSurface ReliefSurfaceFromTriangles(const LightField& field,
     const Surface& candidate = field.Surfaces()[s];
     const glm::dvec3 n(candidate.Normal);
     if (glm::dot(n, surface.Normal) < 0.999 ||
-      std::abs(glm::dot(n, centroid) - static_cast<double>(candidate.Offset)) > planeTolerance)
+      glm::dot(n, centroid) - static_cast<double>(candidate.Offset) > planeTolerance ||
+      glm::dot(n, centroid) - static_cast<double>(candidate.Offset) < -PlaneExtentTolerance)
     {
       continue;
     }

@@ -65,10 +65,12 @@ ReliefSurface FindReliefSurface(const LightField& field, const std::string& name
 
 // A relief surface made of any planar triangles (unit-sphere positions; texture coordinates one
 // per position, or empty: then from its plane, as for a named surface), e.g. a patch a user
-// places on a wall. FieldSurface is the scene surface whose plane it lies on facing the same way
-// (NoSurface if none), Diffuse and Emission that surface's material's (zero if none); `name` is
-// how messages call it. Throws ReliefSurfaceError (no triangles, no area, not planar, degenerate
-// or non-affine texture coordinates).
+// places on a wall. FieldSurface is the scene surface whose plane it lies on facing the same way,
+// or stands in front of by up to 5% of the scene radius (a relief's depth lies behind its plane,
+// so a relief mounted on a wall stands that far in front of it) (NoSurface if none), Diffuse and
+// Emission that surface's material's (zero if none); `name` is how messages call it. Throws
+// ReliefSurfaceError (no triangles, no area, not planar, degenerate or non-affine texture
+// coordinates).
 ReliefSurface ReliefSurfaceFromTriangles(const LightField& field,
   const std::vector<glm::vec3>& positions, const std::vector<glm::vec2>& textureCoordinates,
   const std::vector<glm::uvec3>& triangles, const std::string& name);
