@@ -2,12 +2,14 @@
 #include "vtkReliefProperty.h"
 
 #include "DisplayTransform.h"
+#include "vtkLightCollection.h"
 #include "vtkMath.h"
 #include "vtkObjectFactory.h"
 #include "vtkReliefMessageForwarder.h"
 
 #include <cmath>
 #include <cstring>
+#include <string>
 
 vtkStandardNewMacro(vtkReliefProperty);
 
@@ -29,6 +31,22 @@ vtkReliefProperty::vtkReliefProperty()
 
 //------------------------------------------------------------------------------
 vtkReliefProperty::~vtkReliefProperty() = default;
+
+//------------------------------------------------------------------------------
+void vtkReliefProperty::SetLights(vtkLightCollection* lights)
+{
+  if (this->Lights != lights)
+  {
+    this->Lights = lights;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkLightCollection* vtkReliefProperty::GetLights()
+{
+  return this->Lights;
+}
 
 //------------------------------------------------------------------------------
 const char* vtkReliefProperty::GetMethodName(int method)
@@ -145,6 +163,10 @@ void vtkReliefProperty::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Exposure: " << this->Exposure << "\n";
   os << indent << "ToneMapping: " << (this->ToneMapping ? "On" : "Off") << "\n";
   os << indent << "EncodeSRGB: " << (this->EncodeSRGB ? "On" : "Off") << "\n";
+  os << indent << "Lights: "
+     << (this->Lights ? std::to_string(this->Lights->GetNumberOfItems())
+                      : std::string("(the renderer's)"))
+     << "\n";
   os << indent << "LightSetThreshold: " << this->LightSetThreshold << "\n";
   os << indent << "ShadowedLights: " << this->ShadowedLights << "\n";
   os << indent << "ShadowCulling: " << (this->ShadowCulling ? "On" : "Off") << "\n";

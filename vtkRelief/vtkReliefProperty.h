@@ -36,6 +36,7 @@
 #include "vtkObject.h"
 #include "vtkSmartPointer.h" // for Messages
 
+class vtkLightCollection;
 class vtkReliefMessageForwarder;
 
 class MESOLIGHTRELIEF_EXPORT vtkReliefProperty : public vtkObject
@@ -285,6 +286,17 @@ public:
 
   ///@{
   /**
+   * VTK lights to shade instead of the renderer's (default null: the renderer's). A relief lit
+   * by a light field in a view whose lights are for other data (ParaView's light kit) is lit by
+   * the field's emitters only: its own lights (vtkReliefMapper::ConfigureEmitterLight). The
+   * same limit and self-shadowing apply as to the renderer's lights.
+   */
+  void SetLights(vtkLightCollection* lights);
+  vtkLightCollection* GetLights();
+  ///@}
+
+  ///@{
+  /**
    * Skips for light sets, each measurable (mesolight bench ibl): lights whose luminance is below
    * LightSetThreshold times the strongest light's are skipped entirely (default 0: none);
    * with ShadowedLights = K > 0 only the K strongest lights facing a pixel march their shadows,
@@ -340,6 +352,7 @@ protected:
   double Exposure;  // mesolight::ReliefLightSetDisplay, set in the constructor
   bool ToneMapping; // idem
   bool EncodeSRGB = false;
+  vtkSmartPointer<vtkLightCollection> Lights;
   double LightSetThreshold = 0.0;
   int ShadowedLights = 0;
   bool ShadowCulling = true;

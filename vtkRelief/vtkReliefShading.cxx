@@ -349,7 +349,9 @@ void vtkReliefShading::SetLightUniforms(vtkShaderProgram* program, vtkRenderer* 
   vtkMatrix4x4* view = ren->GetActiveCamera()->GetViewTransformMatrix();
   int count = 0;
   vtkCollectionSimpleIterator it;
-  vtkLightCollection* lights = ren->GetLights();
+  // The property's own lights when it has them (a relief lit by a light field's emitters).
+  vtkLightCollection* lights =
+    this->Property && this->Property->GetLights() ? this->Property->GetLights() : ren->GetLights();
   lights->InitTraversal(it);
   while (vtkLight* light = lights->GetNextLight(it))
   {

@@ -1,15 +1,26 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkReliefSurfaceRepresentation.h"
 
+#include "vtkAppendPolyData.h"
 #include "vtkAttachReliefTexture.h"
+#include "vtkCompositeLightFieldMapper.h"
 #include "vtkCompositeReliefMapper.h"
 #include "vtkDataObjectLeaves.h"
+#include "vtkFloatArray.h"
 #include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkLight.h"
+#include "vtkMultiProcessController.h"
 #include "vtkObjectFactory.h"
 #include "vtkPVLODActor.h"
 #include "vtkPVView.h"
 #include "vtkPointData.h"
+#include "vtkPolyData.h"
 #include "vtkReliefProperty.h"
+#include "vtkVirtualLightField.h"
+
+#include <algorithm>
 
 vtkStandardNewMacro(vtkReliefSurfaceRepresentation);
 
@@ -35,6 +46,190 @@ vtkReliefSurfaceRepresentation::vtkReliefSurfaceRepresentation()
   this->AttachedColorTexture->InterpolateOn();
   this->AttachedColorTexture->MipmapOn();
   this->SetupDefaults();
+  this->SetNumberOfInputPorts(2); // 1: the Light Field
+}
+
+//------------------------------------------------------------------------------
+vtkReliefSurfaceRepresentation::~vtkReliefSurfaceRepresentation() = default;
+
+//------------------------------------------------------------------------------
+int vtkReliefSurfaceRepresentation::FillInputPortInformation(int port, vtkInformation* info)
+{
+  if (port == 1)
+  {
+    info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataObject");
+    info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+    return 1;
+  }
+  return this->Superclass::FillInputPortInformation(port, info);
+}
+
+//------------------------------------------------------------------------------
+int vtkReliefSurfaceRepresentation::RequestData(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  if (!this->Superclass::RequestData(request, inputVector, outputVector))
+  {
+    return 0;
+  }
+  this->UpdateFieldLighting(inputVector[1]);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkReliefSurfaceRepresentation::UpdateFieldLighting(vtkInformationVector* fieldInput)
+{
+  // Every rank's representation updates together and the connection is the same on all (one
+  // proxy property), so the collectives below match.
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  const bool parallel = controller && controller->GetNumberOfProcesses() > 1;
+  if (this->GetNumberOfInputConnections(1) == 0)
+  {
+    if (this->FieldLit || this->GatheredProducer)
+    {
+      this->FieldLit = false;
+      this->GatheredProducer = nullptr;
+      this->GatheredPropagation = -1;
+      this->FieldSurface->SetLightFieldProducer(nullptr);
+      this->FieldSurface->SetSurfaceData(nullptr);
+      this->FieldLights->RemoveAllItems();
+      static_cast<vtkCompositeReliefMapper*>(this->Mapper)->SetIrradianceProbesData(nullptr);
+      static_cast<vtkCompositeReliefMapper*>(this->LODMapper)->SetIrradianceProbesData(nullptr);
+      this->ReliefProperty->SetLights(nullptr);
+      this->UpdateDisplayTransform();
+    }
+    return;
+  }
+  vtkVirtualLightField* producer =
+    vtkVirtualLightField::FindUpstream(this->GetInputAlgorithm(1, 0));
+  const int propagation = producer ? producer->GetPropagationCount() : -1;
+  vtkDataObject* geometry = this->GeometryFilter->GetOutputDataObject(0);
+  const vtkMTimeType geometryTime = geometry ? geometry->GetMTime() : 0;
+  int changed = (producer != this->GatheredProducer || propagation != this->GatheredPropagation ||
+                  geometryTime != this->GatheredGeometryTime)
+    ? 1
+    : 0;
+  if (parallel)
+  {
+    int any = 0;
+    controller->AllReduce(&changed, &any, 1, vtkCommunicator::MAX_OP);
+    changed = any;
+  }
+  if (!changed)
+  {
+    return; // the probes are still those of this field and geometry
+  }
+  this->GatheredProducer = producer;
+  this->GatheredPropagation = propagation;
+  this->GatheredGeometryTime = geometryTime;
+
+  // The shown surface, this rank's piece: the geometry filter's polygonal output.
+  vtkNew<vtkAppendPolyData> append;
+  for (vtkDataObject* leaf : mesolight::DataObjectLeaves(geometry))
+  {
+    auto* poly = vtkPolyData::SafeDownCast(leaf);
+    if (poly && poly->GetNumberOfPoints() > 0)
+    {
+      append->AddInputData(poly);
+    }
+  }
+  vtkNew<vtkPolyData> surface;
+  if (append->GetNumberOfInputConnections(0) > 0)
+  {
+    append->Update();
+    surface->ShallowCopy(append->GetOutput());
+  }
+  // The field's log-average luminance from the atlas its output carries (the Light Field
+  // representation's automatic exposure), the same on every rank.
+  double logAverage = 0.0;
+  for (vtkDataObject* leaf : mesolight::DataObjectLeaves(vtkDataObject::GetData(fieldInput, 0)))
+  {
+    int size[2] = { 0, 0 };
+    if (vtkFloatArray* atlas = vtkVirtualLightField::GetAttachedAtlas(leaf, size))
+    {
+      logAverage = vtkCompositeLightFieldMapper::LogAverageLuminance(
+        atlas->GetPointer(0), atlas->GetNumberOfTuples());
+      break;
+    }
+  }
+  if (parallel)
+  {
+    double most = 0.0;
+    controller->AllReduce(&logAverage, &most, 1, vtkCommunicator::MAX_OP);
+    logAverage = most;
+  }
+  this->FieldLogAverage = logAverage;
+
+  if (!producer)
+  {
+    // The same on every rank (one pipeline), so no rank is left in a collective.
+    vtkErrorMacro("The Relief Surface's Light Field must be the output of a Mesolight Virtual "
+                  "Light Field filter (directly or through pass-through filters); the relief is "
+                  "drawn with the view's lights.");
+  }
+  this->FieldSurface->SetLightFieldProducer(producer);
+  this->FieldSurface->SetSurfaceData(surface);
+  this->FieldSurface->Modified(); // a new propagation leaves the producer's pointer the same
+  if (producer)
+  {
+    this->FieldSurface->Update();
+    ++this->ProbeGatherings;
+  }
+  vtkImageData* probes = producer ? this->FieldSurface->GetProbesOutput() : nullptr;
+  this->FieldLights->RemoveAllItems();
+  vtkSmartPointer<vtkImageData> kept;
+  if (probes && probes->GetNumberOfPoints() > 0)
+  {
+    kept = vtkSmartPointer<vtkImageData>::New();
+    kept->DeepCopy(probes);
+    vtkCollectionSimpleIterator it;
+    vtkLightCollection* lights = this->FieldSurface->GetEmitterLights();
+    lights->InitTraversal(it);
+    while (vtkLight* light = lights->GetNextLight(it))
+    {
+      this->FieldLights->AddItem(light);
+    }
+  }
+  // Without probes (an error was reported) the relief is drawn the ordinary way.
+  this->FieldLit = kept != nullptr;
+  static_cast<vtkCompositeReliefMapper*>(this->Mapper)->SetIrradianceProbesData(kept);
+  static_cast<vtkCompositeReliefMapper*>(this->LODMapper)->SetIrradianceProbesData(kept);
+  this->ReliefProperty->SetLights(this->FieldLit ? this->FieldLights.Get() : nullptr);
+  this->UpdateDisplayTransform();
+}
+
+//------------------------------------------------------------------------------
+void vtkReliefSurfaceRepresentation::UpdateDisplayTransform()
+{
+  double exposure = this->UserExposure;
+  if (this->FieldLit && this->LightFieldAutoExposure && this->FieldLogAverage > 0.0)
+  {
+    exposure *= 0.18 / this->FieldLogAverage; // vtkCompositeLightFieldMapper's middle grey
+  }
+  this->ReliefProperty->SetExposure(exposure);
+  this->ReliefProperty->SetEncodeSRGB(this->FieldLit); // the Light Field representation's
+}
+
+//------------------------------------------------------------------------------
+void vtkReliefSurfaceRepresentation::SetLightFieldAutoExposure(bool on)
+{
+  this->LightFieldAutoExposure = on;
+  this->UpdateDisplayTransform();
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+void vtkReliefSurfaceRepresentation::SetExposure(double exposure)
+{
+  this->UserExposure = exposure;
+  this->UpdateDisplayTransform();
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+vtkLightCollection* vtkReliefSurfaceRepresentation::GetFieldLights()
+{
+  return this->FieldLights;
 }
 
 //------------------------------------------------------------------------------
@@ -119,7 +314,6 @@ MESOLIGHT_FORWARD(Silhouettes, bool, SetSilhouettes)
 MESOLIGHT_FORWARD(WriteDepth, bool, SetWriteDepth)
 MESOLIGHT_FORWARD(RepeatTexture, bool, SetRepeatTexture)
 MESOLIGHT_FORWARD(LevelOfDetail, bool, SetLevelOfDetail)
-MESOLIGHT_FORWARD(Exposure, double, SetExposure)
 MESOLIGHT_FORWARD(ToneMapping, bool, SetToneMapping)
 MESOLIGHT_FORWARD(LightSetThreshold, double, SetLightSetThreshold)
 MESOLIGHT_FORWARD(ShadowedLights, int, SetShadowedLights)
@@ -136,6 +330,9 @@ void vtkReliefSurfaceRepresentation::SetOverrideDepthScale(bool on)
 void vtkReliefSurfaceRepresentation::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+  os << indent << "FieldLit: " << this->FieldLit << "\n";
+  os << indent << "LightFieldAutoExposure: " << this->LightFieldAutoExposure << "\n";
+  os << indent << "ProbeGatherings: " << this->ProbeGatherings << "\n";
   os << indent << "ReliefProperty:\n";
   this->ReliefProperty->PrintSelf(os, indent.GetNextIndent());
 }

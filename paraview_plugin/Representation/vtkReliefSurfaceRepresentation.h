@@ -12,6 +12,22 @@
  * ParaView's own texture property only takes images its readers load, and those read no EXR.
  * The mapper and the LOD mapper share one vtkReliefProperty (GetReliefProperty()); the setters
  * below are the ParaView proxy's commands (MesolightRelief.xml), each setting that property.
+ *
+ * Input port 1 (optional, the proxy's "Light Field"): the output of a Virtual Light Field
+ * filter (or a pass-through filter after it). The relief is then lit by the field instead of the
+ * view's lights: SH9 irradiance probes of the field's indirect light gathered over the relief's
+ * texture (vtkLightFieldReliefSurface on the shown surface: its texture coordinates, or its plane
+ * without them; a surface on a scene wall ignores that wall as the wall itself would), plus the
+ * field's emitters as the relief's own lights, with its self-shadowing
+ * (vtkReliefProperty::SetLights), then the Light Field representation's display transform:
+ * exposure (0.18 / the field's log-average luminance with LightFieldAutoExposure, times
+ * Exposure), Reinhard tone mapping (ToneMapping) and sRGB, so a relief on a wall of the scene
+ * shows the same radiance as the same pixel value as the scene beside it. The probes are
+ * gathered again only when the field (a new propagation) or the shown geometry changes. Under
+ * MPI every rank updates together (vtkLightFieldReliefSurface gathers the surface's pieces and
+ * sums a distributed field's probes over the ranks). Problems (no field upstream, a field that
+ * did not propagate, a surface that is not planar...) are reported as errors; the relief is then
+ * drawn the ordinary way.
  */
 
 #ifndef vtkReliefSurfaceRepresentation_h
@@ -19,10 +35,13 @@
 
 #include "MesolightParaViewReliefModule.h" // for export macro
 #include "vtkGeometryRepresentationWithFaces.h"
-#include "vtkNew.h"     // for ReliefProperty
-#include "vtkTexture.h" // for vtkNew<vtkTexture>
+#include "vtkLightCollection.h"         // for vtkNew<vtkLightCollection>
+#include "vtkLightFieldReliefSurface.h" // for vtkNew<vtkLightFieldReliefSurface>
+#include "vtkNew.h"                     // for ReliefProperty
+#include "vtkTexture.h"                 // for vtkNew<vtkTexture>
 
 class vtkReliefProperty;
+class vtkVirtualLightField;
 
 class MESOLIGHTPARAVIEWRELIEF_EXPORT vtkReliefSurfaceRepresentation
   : public vtkGeometryRepresentationWithFaces
@@ -53,6 +72,16 @@ public:
   void SetShadowedLights(int count);
   ///@}
 
+  /** With a Light Field: the field's automatic exposure (see above; default on). */
+  void SetLightFieldAutoExposure(bool on);
+
+  /** Probe gatherings so far (each new field or geometry makes one): how tests check that
+   * renders alone gather nothing. */
+  vtkGetMacro(ProbeGatherings, int);
+
+  /** The emitter lights the relief is lit by (empty without a Light Field). */
+  vtkLightCollection* GetFieldLights();
+
   /** The relief settings of both the mapper and the LOD mapper. */
   vtkReliefProperty* GetReliefProperty();
 
@@ -65,11 +94,31 @@ public:
 
 protected:
   vtkReliefSurfaceRepresentation();
-  ~vtkReliefSurfaceRepresentation() override = default;
+  ~vtkReliefSurfaceRepresentation() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  /** Lighting by the field of input port 1 (class comment), or none when it is not connected. */
+  void UpdateFieldLighting(vtkInformationVector* fieldInput);
+  /** The relief property's exposure, tone map and sRGB for the current lighting. */
+  void UpdateDisplayTransform();
 
   vtkNew<vtkReliefProperty> ReliefProperty;
   vtkNew<vtkTexture> AttachedColorTexture;
   vtkTexture* UserTexture = nullptr; // not owned: the superclass' actor holds it
+
+  vtkNew<vtkLightFieldReliefSurface> FieldSurface;
+  vtkNew<vtkLightCollection> FieldLights;
+  bool FieldLit = false;
+  bool LightFieldAutoExposure = true;
+  double UserExposure = 1.0;
+  double FieldLogAverage = 0.0; // 0: none
+  int ProbeGatherings = 0;
+  // What the probes were gathered for: the field's producer and its propagation, the geometry.
+  vtkVirtualLightField* GatheredProducer = nullptr; // not owned, compared only
+  int GatheredPropagation = -1;
+  vtkMTimeType GatheredGeometryTime = 0;
 
   /** Shows the colour image attached to the mapper's input, or removes the one shown. */
   void UpdateAttachedColorTexture();

@@ -177,8 +177,13 @@ void vtkSMReliefSurfaceRepresentationProxy::UpdateLightSetAttached(vtkSMProxy* c
     return;
   }
   vtkPVDataInformation* info = source->GetDataInformation(input.GetOutputPort(0));
-  const int attached =
-    info && info->GetArrayInformation(LightSetArrayName(), vtkDataObject::FIELD) ? 1 : 0;
+  // A Light Field input shades with the same exposure and tone mapping as a light set.
+  const bool fieldSet = this->GetProperty("LightField") &&
+    vtkSMPropertyHelper(this, "LightField").GetNumberOfElements() > 0 &&
+    vtkSMPropertyHelper(this, "LightField").GetAsProxy(0);
+  const bool lightSet =
+    info && info->GetArrayInformation(LightSetArrayName(), vtkDataObject::FIELD);
+  const int attached = fieldSet || lightSet ? 1 : 0;
   vtkSMPropertyHelper flag(this, "LightSetAttached");
   if (flag.GetAsInt() != attached)
   {

@@ -6,9 +6,10 @@
  *
  * After every update of a view showing it (ViewUpdated):
  * - LightSetAttached becomes 1 when the shown data carries a light set (the field array
- *   MesolightLightSet that Attach Relief Texture adds), else 0. The panel's GenericDecorators
- *   show Exposure, Tone Mapping, Light Set Threshold and Shadowed Lights only then (ParaView's
- *   decorators test properties of the representation proxy, not the data's field arrays).
+ *   MesolightLightSet that Attach Relief Texture adds) or a Light Field input is set, else 0. The
+ * panel's GenericDecorators show Exposure, Tone Mapping, Light Set Threshold and Shadowed Lights
+ * only then (ParaView's decorators test properties of the representation proxy, not the data's
+ * field arrays).
  * - At the first update that shows the relief, if it is then the only visible data of a render
  *   view left in 2D interaction, the view goes to 3D and its camera is reset. ParaView 5.11
  *   chooses the mode in pqRenderView::updateInteractionMode, called by

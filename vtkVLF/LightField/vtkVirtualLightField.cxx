@@ -84,6 +84,23 @@ const mesolight::vlf::LightField* vtkVirtualLightFieldCore::GetLightField(
   return filter ? filter->Field.get() : nullptr;
 }
 
+vtkVirtualLightField* vtkVirtualLightField::FindUpstream(vtkAlgorithm* algorithm)
+{
+  for (int depth = 0; algorithm && depth < 16; ++depth)
+  {
+    if (auto* field = vtkVirtualLightField::SafeDownCast(algorithm))
+    {
+      return field;
+    }
+    if (algorithm->GetNumberOfInputPorts() < 1 || algorithm->GetNumberOfInputConnections(0) < 1)
+    {
+      return nullptr;
+    }
+    algorithm = algorithm->GetInputAlgorithm(0, 0);
+  }
+  return nullptr;
+}
+
 vtkTypeInt64 vtkVirtualLightField::GetEstimatedBytes() const
 {
   return this->Field ? static_cast<vtkTypeInt64>(this->Field->Estimate().TotalBytes) : 0;

@@ -209,6 +209,14 @@ public:
    */
   static vtkFloatArray* GetAttachedAtlas(vtkDataObject* data, int size[2]);
 
+  /**
+   * The vtkVirtualLightField whose output reaches `algorithm`: itself, or the first one found
+   * walking up through the first input of pass-through filters (ParaView's post filter); null if
+   * none. How consumers of the output (Light Field Gather, a relief lit by the field) find the
+   * field, which does not travel with the data.
+   */
+  static vtkVirtualLightField* FindUpstream(vtkAlgorithm* algorithm);
+
   /** Bytes the last update's field needs (its memory estimate), 0 before. */
   vtkTypeInt64 GetEstimatedBytes() const;
 

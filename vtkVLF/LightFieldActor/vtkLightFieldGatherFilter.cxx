@@ -48,25 +48,6 @@ vtkStandardNewMacro(vtkLightFieldGatherFilter);
 
 namespace
 {
-// The vtkVirtualLightField whose output reaches `algorithm`: itself, or the first one found
-// walking up through the first input of pass-through filters (ParaView's post filter).
-vtkVirtualLightField* FindLightField(vtkAlgorithm* algorithm)
-{
-  for (int depth = 0; algorithm && depth < 16; ++depth)
-  {
-    if (auto* field = vtkVirtualLightField::SafeDownCast(algorithm))
-    {
-      return field;
-    }
-    if (algorithm->GetNumberOfInputPorts() < 1 || algorithm->GetNumberOfInputConnections(0) < 1)
-    {
-      return nullptr;
-    }
-    algorithm = algorithm->GetInputAlgorithm(0, 0);
-  }
-  return nullptr;
-}
-
 // A file name of this process' own in the temporary directory (the field travels between ranks
 // as snapshot bytes, written and read by the snapshot code).
 std::string TemporarySnapshotName(int rank)
@@ -259,7 +240,7 @@ void AttachShadowCasterData(const mesolight::vlf::LightField& field, vtkPolyData
 const mesolight::vlf::LightField* vtkLightFieldGatherFilter::AcquireField(vtkAlgorithm* input)
 {
   namespace vlf = mesolight::vlf;
-  vtkVirtualLightField* producer = FindLightField(input);
+  vtkVirtualLightField* producer = vtkVirtualLightField::FindUpstream(input);
   const vlf::LightField* own =
     producer ? vtkVirtualLightFieldCore::GetLightField(producer) : nullptr;
   int count = producer ? producer->GetPropagationCount() : 0;

@@ -7,6 +7,7 @@
 #include "vtkVirtualLightFieldCore.h"
 
 #include "vtkAlgorithmOutput.h"
+#include "vtkAppendPolyData.h"
 #include "vtkCellArray.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
@@ -14,11 +15,13 @@
 #include "vtkInformationVector.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
+#include "vtkMultiProcessController.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkReliefMapper.h"
+#include "vtkSmartPointer.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 
 #include "EmitterLights.h"
@@ -32,39 +35,149 @@
 
 #include <algorithm>
 #include <exception>
+#include <vector>
 
 namespace vlf = mesolight::vlf;
 
 namespace
 {
 // The field's emitters as VTK lights: radiant intensity Le x Area, the area in world units
-// (world = centre + unit / scale).
-void AddEmitterLights(const vlf::LightField& field, vtkLightCollection* lights)
+// (world = centre + unit / scale). Packed 9 numbers a light (position, normal, intensity), the
+// form in which they travel between MPI ranks.
+std::vector<double> PackEmitterLights(const vlf::LightField& field)
 {
   const double scale = field.NormalizationScale();
+  std::vector<double> packed;
   for (const vlf::EmitterLight& emitter : vlf::EstimateEmitterLights(field).Lights)
   {
     const glm::vec3 world = vlf::ToWorld(field, emitter.Position);
     const glm::vec3 unitIntensity = emitter.Intensity();
-    const double position[3] = { world.x, world.y, world.z };
-    const double normal[3] = { emitter.Normal.x, emitter.Normal.y, emitter.Normal.z };
-    const double intensity[3] = { unitIntensity.x / (scale * scale),
-      unitIntensity.y / (scale * scale), unitIntensity.z / (scale * scale) };
+    packed.insert(packed.end(),
+      { world.x, world.y, world.z, emitter.Normal.x, emitter.Normal.y, emitter.Normal.z,
+        unitIntensity.x / (scale * scale), unitIntensity.y / (scale * scale),
+        unitIntensity.z / (scale * scale) });
+  }
+  return packed;
+}
+
+void AddPackedLights(const std::vector<double>& packed, vtkLightCollection* lights)
+{
+  for (std::size_t i = 0; i + 9 <= packed.size(); i += 9)
+  {
     vtkNew<vtkLight> light;
-    vtkReliefMapper::ConfigureEmitterLight(light, position, normal, intensity);
+    vtkReliefMapper::ConfigureEmitterLight(light, &packed[i], &packed[i + 3], &packed[i + 6]);
     lights->AddItem(light);
   }
+}
+
+void AddEmitterLights(const vlf::LightField& field, vtkLightCollection* lights)
+{
+  AddPackedLights(PackEmitterLights(field), lights);
+}
+
+// The probe image of port 1 from n x n SH9 probes (pixel (9 i + k, j)), as floats.
+std::vector<float> PackProbes(const std::vector<mesolight::SH9>& probes, int n)
+{
+  std::vector<float> values(static_cast<std::size_t>(27) * n * n);
+  for (int j = 0; j < n; ++j)
+  {
+    for (int i = 0; i < n; ++i)
+    {
+      const mesolight::SH9& sh = probes[static_cast<std::size_t>(j) * n + i];
+      for (int k = 0; k < 9; ++k)
+      {
+        for (int c = 0; c < 3; ++c)
+        {
+          values[3 * (static_cast<std::size_t>(j) * 9 * n + 9 * i + k) + c] =
+            static_cast<float>(sh.L[k][c]);
+        }
+      }
+    }
+  }
+  return values;
+}
+
+void FillProbesImage(vtkImageData* image, const std::vector<float>& values, int n)
+{
+  image->SetExtent(0, 9 * n - 1, 0, n - 1, 0, 0);
+  image->AllocateScalars(VTK_FLOAT, 3);
+  std::copy(values.begin(), values.end(), static_cast<float*>(image->GetScalarPointer()));
+  image->GetPointData()->GetScalars()->SetName("IrradianceProbes");
+}
+
+// What one rank computes for a surface of polydata and sends: the probes, the texture frame,
+// the surface's Kd and the emitter lights.
+struct SurfaceResult
+{
+  std::vector<float> Probes;
+  double Frame[16] = {}; // origin, u axis, v axis, normal (unit sphere); centre, scale (world)
+  double Diffuse[3] = {};
+  std::vector<double> Lights;
+};
+
+SurfaceResult ComputeSurface(const vlf::LightField& field, vtkPolyData* whole, int n,
+  const mesolight::ProgressCallback& progress)
+{
+  std::vector<glm::vec3> positions(static_cast<std::size_t>(whole->GetNumberOfPoints()));
+  for (vtkIdType i = 0; i < whole->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    whole->GetPoint(i, p);
+    positions[i] = vlf::ToUnit(field, glm::vec3(p[0], p[1], p[2]));
+  }
+  std::vector<glm::vec2> tcoords;
+  if (vtkDataArray* t = whole->GetPointData()->GetTCoords())
+  {
+    tcoords.resize(positions.size());
+    for (vtkIdType i = 0; i < t->GetNumberOfTuples(); ++i)
+    {
+      tcoords[i] = glm::vec2(t->GetComponent(i, 0), t->GetComponent(i, 1));
+    }
+  }
+  std::vector<glm::uvec3> triangles;
+  vtkCellArray* polys = whole->GetPolys();
+  vtkIdType count = 0;
+  const vtkIdType* ids = nullptr;
+  for (polys->InitTraversal(); polys->GetNextCell(count, ids);)
+  {
+    for (vtkIdType k = 1; k + 1 < count; ++k) // fans: the surface is planar
+    {
+      triangles.emplace_back(static_cast<unsigned>(ids[0]), static_cast<unsigned>(ids[k]),
+        static_cast<unsigned>(ids[k + 1]));
+    }
+  }
+  const vlf::ReliefSurface surface =
+    vlf::ReliefSurfaceFromTriangles(field, positions, tcoords, triangles, "the relief surface");
+  SurfaceResult result;
+  result.Probes = PackProbes(vlf::ReliefSurfaceProbes(field, surface, n, n, progress), n);
+  const glm::dvec3 frame[4] = { surface.Origin, surface.AxisU, surface.AxisV, surface.Normal };
+  for (int a = 0; a < 4; ++a)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      result.Frame[3 * a + c] = frame[a][c];
+    }
+  }
+  for (int c = 0; c < 3; ++c)
+  {
+    result.Frame[12 + c] = field.NormalizationCentre()[c];
+    result.Diffuse[c] = surface.Diffuse[c];
+  }
+  result.Frame[15] = field.NormalizationScale();
+  result.Lights = PackEmitterLights(field);
+  return result;
 }
 } // namespace
 
 vtkStandardNewMacro(vtkLightFieldReliefSurface);
 vtkCxxSetObjectMacro(vtkLightFieldReliefSurface, LightFieldActor, vtkLightFieldActor);
+vtkCxxSetObjectMacro(vtkLightFieldReliefSurface, LightFieldProducer, vtkVirtualLightField);
 
 //------------------------------------------------------------------------------
 vtkLightFieldReliefSurface::vtkLightFieldReliefSurface()
   : ProbesPerSide(vlf::DefaultReliefProbesPerSide)
 {
-  this->SetNumberOfInputPorts(1);
+  this->SetNumberOfInputPorts(2); // 0: the field, 1: a surface of its own (optional)
   this->SetNumberOfOutputPorts(2);
 }
 
@@ -72,12 +185,25 @@ vtkLightFieldReliefSurface::vtkLightFieldReliefSurface()
 vtkLightFieldReliefSurface::~vtkLightFieldReliefSurface()
 {
   this->SetLightFieldActor(nullptr);
+  this->SetLightFieldProducer(nullptr);
 }
 
 //------------------------------------------------------------------------------
 void vtkLightFieldReliefSurface::SetLightFieldConnection(vtkAlgorithmOutput* output)
 {
   this->SetInputConnection(0, output);
+}
+
+//------------------------------------------------------------------------------
+void vtkLightFieldReliefSurface::SetSurfaceConnection(vtkAlgorithmOutput* output)
+{
+  this->SetInputConnection(1, output);
+}
+
+//------------------------------------------------------------------------------
+void vtkLightFieldReliefSurface::SetSurfaceData(vtkPolyData* surface)
+{
+  this->SetInputDataObject(1, surface);
 }
 
 //------------------------------------------------------------------------------
@@ -128,18 +254,22 @@ int vtkLightFieldReliefSurface::RequestInformation(
 
 //------------------------------------------------------------------------------
 int vtkLightFieldReliefSurface::RequestData(
-  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   vtkImageData* probesOutput = vtkImageData::GetData(outputVector, 1);
   this->EmitterLights->RemoveAllItems();
+  if (this->GetNumberOfInputConnections(1) > 0)
+  {
+    return this->RequestSurfaceData(vtkPolyData::GetData(inputVector[1], 0), output, probesOutput);
+  }
   const vlf::LightField* field = nullptr;
   if (this->LightFieldActor)
   {
     field = vtkLightFieldActorCore::GetLightField(this->LightFieldActor);
     this->ExecutedField = field;
   }
-  else if (auto* producer = vtkVirtualLightField::SafeDownCast(this->GetInputAlgorithm(0, 0)))
+  else if (auto* producer = vtkVirtualLightField::FindUpstream(this->GetInputAlgorithm(0, 0)))
   {
     field = vtkVirtualLightFieldCore::GetLightField(producer);
   }
@@ -216,27 +346,203 @@ int vtkLightFieldReliefSurface::RequestData(
   output->GetPointData()->SetTCoords(tcoords);
 
   // Port 1: the probes, pixel (9 i + k, j).
-  probesOutput->SetExtent(0, 9 * n - 1, 0, n - 1, 0, 0);
-  probesOutput->AllocateScalars(VTK_FLOAT, 3);
-  auto* values = static_cast<float*>(probesOutput->GetScalarPointer());
-  for (int j = 0; j < n; ++j)
+  FillProbesImage(probesOutput, PackProbes(probes, n), n);
+
+  AddEmitterLights(*field, this->EmitterLights);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkLightFieldReliefSurface::RequestSurfaceData(
+  vtkPolyData* input, vtkPolyData* output, vtkImageData* probesOutput)
+{
+  vtkVirtualLightField* producer = this->LightFieldProducer;
+  if (!producer && this->GetNumberOfInputConnections(0) > 0)
   {
-    for (int i = 0; i < n; ++i)
+    producer = vtkVirtualLightField::FindUpstream(this->GetInputAlgorithm(0, 0));
+  }
+  const vlf::LightField* field =
+    producer ? vtkVirtualLightFieldCore::GetLightField(producer) : nullptr;
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  const int ranks = controller ? controller->GetNumberOfProcesses() : 1;
+  const int rank = ranks > 1 ? controller->GetLocalProcessId() : 0;
+  const int n = this->ProbesPerSide;
+
+  // The whole surface on every rank (one texture frame for all pieces). Every rank reaches each
+  // collective below: nothing returns before the last one.
+  vtkNew<vtkPolyData> local;
+  if (input)
+  {
+    local->ShallowCopy(input);
+  }
+  vtkSmartPointer<vtkPolyData> whole = local.Get();
+  if (ranks > 1)
+  {
+    std::vector<vtkSmartPointer<vtkDataObject>> pieces;
+    controller->AllGather(local, pieces);
+    vtkNew<vtkAppendPolyData> append;
+    for (const auto& piece : pieces)
     {
-      const mesolight::SH9& sh = probes[static_cast<std::size_t>(j) * n + i];
-      for (int k = 0; k < 9; ++k)
+      auto* poly = vtkPolyData::SafeDownCast(piece);
+      if (poly && poly->GetNumberOfPolys() > 0)
       {
-        float* pixel = values + 3 * (static_cast<std::size_t>(j) * 9 * n + 9 * i + k);
-        for (int c = 0; c < 3; ++c)
+        append->AddInputData(poly);
+      }
+    }
+    whole = vtkSmartPointer<vtkPolyData>::New();
+    if (append->GetNumberOfInputConnections(0) > 0)
+    {
+      append->Update();
+      whole->ShallowCopy(append->GetOutput());
+    }
+  }
+
+  // Who computes: the lowest rank holding the whole field, else (a field whose directions are
+  // split) every rank its share, summed.
+  const bool partial = field && !field->OwnedSubfields.empty();
+  int local2[2] = { field && !partial ? rank : ranks, partial ? 1 : 0 };
+  int reduced[2] = { local2[0], local2[1] };
+  if (ranks > 1)
+  {
+    controller->AllReduce(&local2[0], &reduced[0], 1, vtkCommunicator::MIN_OP);
+    controller->AllReduce(&local2[1], &reduced[1], 1, vtkCommunicator::SUM_OP);
+  }
+  const int root = reduced[0];
+  const bool summed = root == ranks && reduced[1] == ranks;
+  const bool computes = (root < ranks && rank == root) || summed;
+
+  // status: 1 done, 0 error (reported by the rank that met it), -1 aborted.
+  int status = 1;
+  SurfaceResult result;
+  if (root == ranks && !summed)
+  {
+    status = 0;
+    if (rank == 0)
+    {
+      vtkErrorMacro("a relief surface lit by a light field needs the output of a Virtual Light "
+                    "Field that has propagated successfully connected to input port 0");
+    }
+  }
+  else if (computes)
+  {
+    if (whole->GetNumberOfPolys() == 0)
+    {
+      status = 0;
+      if (rank == 0 || !summed)
+      {
+        vtkErrorMacro("a relief surface lit by a light field needs a surface with polygons "
+                      "(input port 1 has none)");
+      }
+    }
+    else
+    {
+      try
+      {
+        result = ComputeSurface(*field, whole, n, mesolight::AlgorithmProgress(this));
+      }
+      catch (const vlf::AbortedError&)
+      {
+        status = -1;
+      }
+      catch (const std::exception& e)
+      {
+        status = 0;
+        if (rank == 0 || !summed)
         {
-          pixel[c] = static_cast<float>(sh.L[k][c]);
+          vtkErrorMacro(<< e.what());
         }
       }
     }
   }
-  probesOutput->GetPointData()->GetScalars()->SetName("IrradianceProbes");
+  if (ranks > 1)
+  {
+    // Everyone learns the worst status: the computing ranks', or the root's.
+    int worst = status;
+    if (summed)
+    {
+      controller->AllReduce(&status, &worst, 1, vtkCommunicator::MIN_OP);
+    }
+    else
+    {
+      controller->Broadcast(&worst, 1, root);
+    }
+    status = worst;
+    if (status == 1 && summed)
+    {
+      std::vector<float> sum(result.Probes.size());
+      controller->AllReduce(result.Probes.data(), sum.data(), static_cast<vtkIdType>(sum.size()),
+        vtkCommunicator::SUM_OP);
+      result.Probes = sum;
+    }
+    else if (status == 1)
+    {
+      vtkIdType lights = static_cast<vtkIdType>(result.Lights.size());
+      controller->Broadcast(&lights, 1, root);
+      result.Probes.resize(static_cast<std::size_t>(27) * n * n);
+      result.Lights.resize(static_cast<std::size_t>(lights));
+      controller->Broadcast(
+        result.Probes.data(), static_cast<vtkIdType>(result.Probes.size()), root);
+      controller->Broadcast(result.Frame, 16, root);
+      controller->Broadcast(result.Diffuse, 3, root);
+      if (lights > 0)
+      {
+        controller->Broadcast(result.Lights.data(), lights, root);
+      }
+    }
+  }
+  if (status != 1)
+  {
+    return status < 0 ? 1 : 0; // aborted: empty outputs, no error
+  }
 
-  AddEmitterLights(*field, this->EmitterLights);
+  FillProbesImage(probesOutput, result.Probes, n);
+  AddPackedLights(result.Lights, this->EmitterLights);
+  std::copy(result.Diffuse, result.Diffuse + 3, this->SurfaceDiffuse);
+
+  // Port 0: this rank's piece, with normals and, when it has none, the plane's texture
+  // coordinates (u, v of the frame at each point: world -> unit sphere -> texture).
+  output->ShallowCopy(local);
+  if (local->GetNumberOfPoints() == 0)
+  {
+    return 1;
+  }
+  const glm::dvec3 axisU(result.Frame[3], result.Frame[4], result.Frame[5]);
+  const glm::dvec3 axisV(result.Frame[6], result.Frame[7], result.Frame[8]);
+  const glm::dvec3 normal(result.Frame[9], result.Frame[10], result.Frame[11]);
+  if (!output->GetPointData()->GetNormals())
+  {
+    vtkNew<vtkFloatArray> normals;
+    normals->SetName("Normals");
+    normals->SetNumberOfComponents(3);
+    normals->SetNumberOfTuples(output->GetNumberOfPoints());
+    for (vtkIdType i = 0; i < output->GetNumberOfPoints(); ++i)
+    {
+      normals->SetTuple3(i, normal.x, normal.y, normal.z);
+    }
+    output->GetPointData()->SetNormals(normals);
+  }
+  if (!output->GetPointData()->GetTCoords())
+  {
+    const glm::dvec3 centre(result.Frame[12], result.Frame[13], result.Frame[14]);
+    vlf::ReliefSurface frame;
+    frame.Origin = glm::dvec3(result.Frame[0], result.Frame[1], result.Frame[2]);
+    frame.AxisU = axisU;
+    frame.AxisV = axisV;
+    frame.Normal = normal;
+    vtkNew<vtkFloatArray> tcoords;
+    tcoords->SetName("TextureCoordinates");
+    tcoords->SetNumberOfComponents(2);
+    tcoords->SetNumberOfTuples(output->GetNumberOfPoints());
+    for (vtkIdType i = 0; i < output->GetNumberOfPoints(); ++i)
+    {
+      double p[3];
+      output->GetPoint(i, p);
+      const glm::dvec3 uvw =
+        frame.TextureOf((glm::dvec3(p[0], p[1], p[2]) - centre) * result.Frame[15]);
+      tcoords->SetTuple2(i, uvw.x, uvw.y);
+    }
+    output->GetPointData()->SetTCoords(tcoords);
+  }
   return 1;
 }
 
@@ -258,6 +564,7 @@ void vtkLightFieldReliefSurface::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "LightFieldActor: " << this->LightFieldActor << "\n";
+  os << indent << "LightFieldProducer: " << this->LightFieldProducer << "\n";
   os << indent << "SurfaceName: " << this->SurfaceName << "\n";
   os << indent << "ProbesPerSide: " << this->ProbesPerSide << "\n";
   os << indent << "EmitterLights: " << this->EmitterLights->GetNumberOfItems() << "\n";

@@ -7,8 +7,8 @@
  * The light field comes from a vtkLightFieldActor (SetLightFieldActor: the field it shows, e.g.
  * loaded from a snapshot) or from a vtkVirtualLightField connected to input port 0
  * (SetLightFieldConnection; its scene came as polydata, which carries no surface names yet, so
- * this route finds none and says so). SurfaceName names one planar surface of the field's scene: an OBJ
- * `g`/`o` name or a Cornell box name (floor, ceiling, back, left, right, short, tall). Outputs:
+ * this route finds none and says so). SurfaceName names one planar surface of the field's scene: an
+ * OBJ `g`/`o` name or a Cornell box name (floor, ceiling, back, left, right, short, tall). Outputs:
  *
  * - port 0: the surface's triangles in world coordinates with point normals (its front side)
  *   and texture coordinates: the scene's own when it has them (one affine map of the plane),
@@ -23,8 +23,22 @@
  *   one per emitting surface at its centroid, world coordinates), each set up by
  *   vtkReliefMapper::ConfigureEmitterLight from the radiant intensity Le x Area in world units
  *   (a cosine-lobe spot light falling off as 1 / d^2, intensity divided by pi: VTK shades
- *   Kd x intensity x cos without the Lambertian 1 / pi). Add them to the renderer that draws the relief only (a renderer of their own: the
- *   walkthrough's geometry mode is lit by its renderer's lights).
+ *   Kd x intensity x cos without the Lambertian 1 / pi). Add them to the renderer that draws the
+ * relief only (a renderer of their own: the walkthrough's geometry mode is lit by its renderer's
+ * lights).
+ *
+ * Any planar surface instead of a named one (e.g. ParaView's Relief Surface lit by a Virtual
+ * Light Field): polydata in world coordinates on input port 1 (SetSurfaceConnection /
+ * SetSurfaceData); SurfaceName is then ignored. Its own texture coordinates give the texture
+ * frame when it has them (one affine map of its plane), else its plane does (as above); it may
+ * lie on a scene wall (the probes then ignore that wall as they do for the wall itself, and
+ * GetSurfaceDiffuse() is the wall's Kd) or anywhere in the field. Port 0 is then that input with
+ * point normals and, when it had none, the plane's texture coordinates. With several MPI ranks
+ * (the global controller) every rank must update together: the surface's pieces are gathered
+ * onto every rank (one texture frame for all), and the probes are summed over the ranks of a
+ * field whose directions are split between them (vtkVirtualLightField's DistributeDirections),
+ * or computed by the rank that holds the whole field and sent to the others; every rank ends
+ * with the same probes and emitter lights.
  *
  * GetSurfaceDiffuse() is the surface's Kd (the relief actor's colour). An unknown name (the
  * message lists the scene's surfaces), a non-planar surface without texture coordinates, a
@@ -45,6 +59,8 @@ class vtkImageData;
 class vtkLight;
 class vtkLightCollection;
 class vtkLightFieldActor;
+class vtkPolyData;
+class vtkVirtualLightField;
 
 class MESOLIGHTLIGHTFIELDACTOR_EXPORT vtkLightFieldReliefSurface : public vtkPolyDataAlgorithm
 {
@@ -59,12 +75,23 @@ public:
   void SetLightFieldActor(vtkLightFieldActor* actor);
   vtkLightFieldActor* GetLightFieldActor() { return this->LightFieldActor; }
   void SetLightFieldConnection(vtkAlgorithmOutput* output);
+  /** Or the vtkVirtualLightField itself, already updated (e.g. found upstream of another
+   * consumer's input: vtkVirtualLightField::FindUpstream); takes precedence over port 0 and
+   * updates nothing upstream. Only for the surface of input port 1. */
+  void SetLightFieldProducer(vtkVirtualLightField* producer);
+  vtkVirtualLightField* GetLightFieldProducer() { return this->LightFieldProducer; }
   ///@}
 
   ///@{
   /** The surface's name in the field's scene. */
   vtkSetStdStringFromCharMacro(SurfaceName);
   vtkGetCharFromStdStringMacro(SurfaceName);
+  ///@}
+
+  ///@{
+  /** A planar polygonal surface in world coordinates (input port 1, optional; see above). */
+  void SetSurfaceConnection(vtkAlgorithmOutput* output);
+  void SetSurfaceData(vtkPolyData* surface);
   ///@}
 
   ///@{
@@ -103,9 +130,12 @@ protected:
 
 private:
   vtkLightFieldReliefSurface(const vtkLightFieldReliefSurface&) = delete;
+  // The route of input port 1 (any planar surface), MPI included.
+  int RequestSurfaceData(vtkPolyData* input, vtkPolyData* output, vtkImageData* probesOutput);
   void operator=(const vtkLightFieldReliefSurface&) = delete;
 
   vtkLightFieldActor* LightFieldActor = nullptr;
+  vtkVirtualLightField* LightFieldProducer = nullptr;
   std::string SurfaceName;
   int ProbesPerSide;
   double SurfaceDiffuse[3] = { 0.0, 0.0, 0.0 };

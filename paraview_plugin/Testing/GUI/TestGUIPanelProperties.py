@@ -32,6 +32,8 @@ DELIBERATE = {
         "information about the last update (Python: GetPropertyValue)",
     ("MesolightLightFieldGather", "FieldBroadcasts"):
         "information about the last update (Python: GetPropertyValue)",
+    ("MesolightReliefSurfaceRepresentation", "LightFieldProbeGatherings"):
+        "information about the last updates (Python: GetPropertyValue)",
 }
 # ReliefSurfaceRepresentationProxy: a representation with its own client-side proxy class.
 REPRESENTATION_TAGS = ("RepresentationProxy", "ReliefSurfaceRepresentationProxy")

@@ -7,12 +7,14 @@
 #include "SurfaceRelief.h" // SurfacePlaneOf
 #include "TriangleScene.h"
 
+#include <algorithm>
+#include <cmath>
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
 #include <glm/matrix.hpp>
 #include <glm/vec2.hpp>
-
-#include <cmath>
+#include <sstream>
 
 namespace mesolight
 {
@@ -20,6 +22,13 @@ namespace vlf
 {
 namespace
 {
+// How far behind a scene wall (unit-sphere units) a relief patch still counts as on it: the
+// published Cornell box's red wall bends by 3.2 mm over 559 mm (0.6%).
+constexpr double PlaneExtentTolerance = 0.01;
+// How far in front of a scene wall (unit-sphere units, 5% of the scene radius) a relief patch
+// still counts as mounted on it (ReliefSurfaceFromTriangles).
+constexpr double MountTolerance = 0.05;
+
 std::string Quoted(const std::string& text)
 {
   return "'" + text + "'";
@@ -32,30 +41,13 @@ glm::dvec3 ReliefSurface::TextureOf(const glm::dvec3& point) const
   return glm::inverse(m) * (point - this->Origin);
 }
 
-ReliefSurface FindReliefSurface(const LightField& field, const std::string& name)
+namespace
 {
-  const TriangleScene& scene = field.Scene();
-  ReliefSurface surface;
-  surface.Name = name;
-  try
-  {
-    surface.Triangles = SurfaceTriangles(scene, name);
-  }
-  catch (const SceneSurfaceError& e)
-  {
-    throw ReliefSurfaceError(e.what());
-  }
+// The texture frame of surface.Triangles of `scene` (FindReliefSurface and
+// ReliefSurfaceFromTriangles); `name` is how messages call the surface.
+void FitTextureFrame(const TriangleMesh& scene, const std::string& name, ReliefSurface& surface)
+{
   const std::vector<std::size_t>& triangles = surface.Triangles;
-  const SceneMaterial& material = scene.MaterialOf(triangles[0]);
-  if (glm::length(material.Specular) > 0.0f)
-  {
-    throw ReliefSurfaceError("surface " + Quoted(name) + " is a mirror (material " +
-      Quoted(material.Name) + ", Ks > 0): reliefs are diffuse so far");
-  }
-  surface.Diffuse = material.Diffuse;
-  surface.Emission = material.Emission;
-  surface.FieldSurface = field.SurfaceOfTriangle(triangles[0]);
-
   // The plane and the plane rule's texture frame (SurfacePlaneOf, shared with `trace --relief`'s
   // dense mesh); the frame is replaced by the texture coordinates' own when the scene has them.
   SurfacePlane plane;
@@ -108,11 +100,121 @@ ReliefSurface FindReliefSurface(const LightField& field, const std::string& name
         }
       }
     }
-    return surface;
+    return;
   }
   surface.Origin = glm::dvec3(plane.Origin);
   surface.AxisU = glm::dvec3(plane.AxisU);
   surface.AxisV = glm::dvec3(plane.AxisV);
+}
+
+} // namespace
+
+ReliefSurface FindReliefSurface(const LightField& field, const std::string& name)
+{
+  const TriangleScene& scene = field.Scene();
+  ReliefSurface surface;
+  surface.Name = name;
+  try
+  {
+    surface.Triangles = SurfaceTriangles(scene, name);
+  }
+  catch (const SceneSurfaceError& e)
+  {
+    throw ReliefSurfaceError(e.what());
+  }
+  const SceneMaterial& material = scene.MaterialOf(surface.Triangles[0]);
+  if (glm::length(material.Specular) > 0.0f)
+  {
+    throw ReliefSurfaceError("surface " + Quoted(name) + " is a mirror (material " +
+      Quoted(material.Name) + ", Ks > 0): reliefs are diffuse so far");
+  }
+  surface.Diffuse = material.Diffuse;
+  surface.Emission = material.Emission;
+  surface.FieldSurface = field.SurfaceOfTriangle(surface.Triangles[0]);
+
+  FitTextureFrame(scene, name, surface);
+  return surface;
+}
+
+ReliefSurface ReliefSurfaceFromTriangles(const LightField& field,
+  const std::vector<glm::vec3>& positions, const std::vector<glm::vec2>& textureCoordinates,
+  const std::vector<glm::uvec3>& triangles, const std::string& name)
+{
+  if (triangles.empty())
+  {
+    throw ReliefSurfaceError(Quoted(name) + " has no triangles to carry a relief");
+  }
+  TriangleMesh mesh;
+  mesh.Positions = positions;
+  mesh.Triangles = triangles;
+  if (textureCoordinates.size() == positions.size())
+  {
+    mesh.TextureCoordinates = textureCoordinates;
+  }
+  for (const glm::uvec3& t : triangles)
+  {
+    if (std::max({ t.x, t.y, t.z }) >= positions.size())
+    {
+      throw std::invalid_argument("a relief surface's triangle names a point it does not have");
+    }
+  }
+  ReliefSurface surface;
+  surface.Name = name;
+  surface.FieldSurface = NoSurface;
+  surface.Triangles.resize(triangles.size());
+  for (std::size_t t = 0; t < triangles.size(); ++t)
+  {
+    surface.Triangles[t] = t;
+  }
+  FitTextureFrame(mesh, name, surface);
+
+  // The scene surface it lies on, facing the same way (a patch on a wall): the probes then
+  // ignore that wall's crossing as they do for the wall itself, and its material is the
+  // surface's. A relief's depth lies behind its plane, so a patch mounted on a wall stands in
+  // front of it by that depth: up to MountTolerance of the scene radius; the nearest such
+  // surface's bounds.
+  glm::dvec3 centroid(0.0), lower(1e30), upper(-1e30);
+  for (const glm::vec3& p : positions)
+  {
+    centroid += glm::dvec3(p) / static_cast<double>(positions.size());
+    lower = glm::min(lower, glm::dvec3(p));
+    upper = glm::max(upper, glm::dvec3(p));
+  }
+  const double planeTolerance = MountTolerance;
+  double nearest = 1e30;
+  const TriangleScene& scene = field.Scene();
+  for (std::uint32_t s = 0; s < field.Surfaces().size(); ++s)
+  {
+    const Surface& candidate = field.Surfaces()[s];
+    const glm::dvec3 n(candidate.Normal);
+    if (glm::dot(n, surface.Normal) < 0.999 ||
+      glm::dot(n, centroid) - static_cast<double>(candidate.Offset) > planeTolerance ||
+      glm::dot(n, centroid) - static_cast<double>(candidate.Offset) < -PlaneExtentTolerance)
+    {
+      continue;
+    }
+    glm::dvec3 low(1e30), high(-1e30);
+    for (const std::uint32_t t : candidate.Triangles)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        low = glm::min(low, glm::dvec3(scene.Vertex(t, c)));
+        high = glm::max(high, glm::dvec3(scene.Vertex(t, c)));
+      }
+    }
+    const double distance = glm::length(centroid - glm::clamp(centroid, low, high));
+    if (distance < nearest)
+    {
+      nearest = distance;
+      surface.FieldSurface = s;
+    }
+  }
+  if (surface.FieldSurface != NoSurface)
+  {
+    const SceneMaterial& material = field.MaterialOf(surface.FieldSurface);
+    surface.Diffuse = material.Diffuse;
+    surface.Emission = material.Emission;
+  }
   return surface;
 }
 

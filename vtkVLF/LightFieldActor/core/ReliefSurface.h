@@ -15,6 +15,7 @@
 #include "EnvironmentMaps.h" // SH9
 #include "Progress.h"
 
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include <cstddef>
@@ -63,6 +64,18 @@ struct ReliefSurface
 
 // The surface of that name (OBJ g/o name, or a Cornell box name). Throws ReliefSurfaceError.
 ReliefSurface FindReliefSurface(const LightField& field, const std::string& name);
+
+// A relief surface made of any planar triangles (unit-sphere positions; texture coordinates one
+// per position, or empty: then from its plane, as for a named surface), e.g. a patch a user
+// places on a wall. FieldSurface is the scene surface whose plane it lies on facing the same way,
+// or stands in front of by up to 5% of the scene radius (a relief's depth lies behind its plane,
+// so a relief mounted on a wall stands that far in front of it) (NoSurface if none), Diffuse and
+// Emission that surface's material's (zero if none); `name` is how messages call it. Throws
+// ReliefSurfaceError (no triangles, no area, not planar, degenerate or non-affine texture
+// coordinates).
+ReliefSurface ReliefSurfaceFromTriangles(const LightField& field,
+  const std::vector<glm::vec3>& positions, const std::vector<glm::vec2>& textureCoordinates,
+  const std::vector<glm::uvec3>& triangles, const std::string& name);
 
 // The field's indirect light over the surface: probesU x probesV SH9 radiance projections
 // (ProjectIncidentSH9 of IncidentRadianceSamples, emitters left out, the surface's own crossing

@@ -99,3 +99,78 @@ TEST(ReliefSurface, RefusesWhatCannotCarryARelief)
   EXPECT_THROW(vlf::ReliefSurfaceProbes(plain, back, 2, 2, [](double) { return false; }),
     vlf::AbortedError);
 }
+
+TEST(ReliefSurface, TrianglesOfItsOwnOnTheBackWallAreTheBackWall)
+{
+  // The named wall's own triangles given as plain triangles: the same frame, field surface, Kd
+  // and probes as the named wall (what ParaView's Relief Surface gathers on a patch).
+  const vlf::LightField& field = walkthroughtest::PlainCornellField(129);
+  const vlf::ReliefSurface back = vlf::FindReliefSurface(field, "back");
+  const TriangleScene& scene = field.Scene();
+  std::vector<glm::vec3> positions;
+  std::vector<glm::uvec3> triangles;
+  for (const std::size_t t : back.Triangles)
+  {
+    const auto first = static_cast<unsigned>(positions.size());
+    for (int c = 0; c < 3; ++c)
+    {
+      positions.push_back(scene.Vertex(t, c));
+    }
+    triangles.emplace_back(first, first + 1, first + 2);
+  }
+  const vlf::ReliefSurface own =
+    vlf::ReliefSurfaceFromTriangles(field, positions, {}, triangles, "patch");
+  EXPECT_EQ(own.FieldSurface, back.FieldSurface);
+  EXPECT_EQ(own.Diffuse, back.Diffuse);
+  EXPECT_LT(glm::length(own.Origin - back.Origin), 1e-6);
+  EXPECT_LT(glm::length(own.AxisU - back.AxisU), 1e-6);
+  EXPECT_LT(glm::length(own.AxisV - back.AxisV), 1e-6);
+  const std::vector<SH9> a = vlf::ReliefSurfaceProbes(field, back, 2, 2);
+  const std::vector<SH9> b = vlf::ReliefSurfaceProbes(field, own, 2, 2);
+  for (std::size_t p = 0; p < a.size(); ++p)
+  {
+    for (int k = 0; k < 9; ++k)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        EXPECT_NEAR(a[p].L[k][c], b[p].L[k][c], 1e-9) << "probe " << p << " coefficient " << k;
+      }
+    }
+  }
+
+  // A patch with texture coordinates of its own, mounted 2% of the radius in front of the wall:
+  // still on the wall, its frame from the coordinates. 10% in front: in the room, no wall.
+  const glm::vec3 n(back.Normal);
+  const auto patch = [&](float off, std::vector<glm::vec2>& tcoords)
+  {
+    tcoords = { { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 } };
+    std::vector<glm::vec3> corners;
+    for (const glm::vec2& t : tcoords)
+    {
+      corners.push_back(glm::vec3(back.Point(0.2 + 0.5 * t.x, 0.3 + 0.4 * t.y)) + off * n);
+    }
+    return corners;
+  };
+  std::vector<glm::vec2> tcoords;
+  const std::vector<glm::uvec3> quad = { { 0, 1, 2 }, { 0, 2, 3 } };
+  const vlf::ReliefSurface mounted =
+    vlf::ReliefSurfaceFromTriangles(field, patch(0.02f, tcoords), tcoords, quad, "patch");
+  EXPECT_EQ(mounted.FieldSurface, back.FieldSurface);
+  EXPECT_NEAR(mounted.Normal.z, -1.0, 1e-6);
+  const glm::dvec3 corner = mounted.Point(1.0, 1.0);
+  const glm::dvec3 expected = back.Point(0.7, 0.7) + 0.02 * glm::dvec3(n);
+  EXPECT_LT(glm::length(corner - expected), 1e-5);
+  const vlf::ReliefSurface floating =
+    vlf::ReliefSurfaceFromTriangles(field, patch(0.1f, tcoords), tcoords, quad, "patch");
+  EXPECT_EQ(floating.FieldSurface, vlf::NoSurface);
+
+  // Refusals: no triangles, a bent surface, a triangle naming a missing point.
+  EXPECT_THROW(
+    vlf::ReliefSurfaceFromTriangles(field, positions, {}, {}, "patch"), vlf::ReliefSurfaceError);
+  std::vector<glm::vec3> bent = patch(0.0f, tcoords);
+  bent[3] += 0.2f * n;
+  EXPECT_THROW(
+    vlf::ReliefSurfaceFromTriangles(field, bent, {}, quad, "patch"), vlf::ReliefSurfaceError);
+  EXPECT_THROW(vlf::ReliefSurfaceFromTriangles(field, bent, {}, { { 0, 1, 9 } }, "patch"),
+    std::invalid_argument);
+}

@@ -1,0 +1,95 @@
+# SPDX-License-Identifier: BSD-3-Clause
+"""GUI: a relief on the Cornell box's back wall lit by the light field, as a user builds it,
+each step applied as the GUI applies it: Cornell Box -> Virtual Light Field; Procedural Relief
+-> Relief Texture; Plane (in front of the back wall, facing the camera) -> Attach Relief
+Texture, shown as Relief Surface with the back wall's colour; then the relief display's Light
+Field is set to the field (what picking it in the panel's Light Field selector does).
+
+- with the Light Field the relief looks like the wall it covers (the scene drawn as Light Field
+  with the relief hidden): mean difference over the patch within MAX_MEAN_ERROR levels;
+- must fail (the measure can fail): the relief lit by the view's lights (no Light Field);
+- the panel shows Exposure and Tone Mapping once the Light Field is set (LightSetAttached).
+"""
+# run-gui-test.sh puts this directory on PYTHONPATH (paraview --script defines no __file__).
+import mesolight_guitest as g  # noqa: E402
+import numpy as np  # noqa: E402
+import paraview.simple as pvs  # noqa: E402
+
+MAX_MEAN_ERROR = 8.0
+PATCH_Z = 539.0  # the relief (depth 0.05 x 380 mm = 19 mm) mounted in front of the wall
+KD = [0.725, 0.71, 0.68]  # the published box's white (back wall)
+
+
+def main():
+    failures = []
+    view = g.gui_view()
+    box = pvs.MesolightCornellBox()
+    g.apply(box, view)
+    field = pvs.MesolightVirtualLightField(Input=box, Directions=513, RaysPerSide=32,
+                                           Iterations=3)
+    g.apply(field, view)
+    depth = pvs.MesolightProceduralRelief()
+    g.apply(depth, view)
+    relief = pvs.MesolightReliefTexture(Input=pvs.OutputPort(depth, 0))
+    g.apply(relief, view)
+    plane = pvs.Plane(Origin=[90.0, 90.0, PATCH_Z], Point1=[90.0, 470.0, PATCH_Z],
+                      Point2=[470.0, 90.0, PATCH_Z])
+    g.apply(plane, view)
+    attached = pvs.MesolightAttachReliefTexture(Input=plane, ReliefTexture=relief)
+    g.apply(attached, view)
+    shown = pvs.GetDisplayProperties(attached, view)
+    shown.SetRepresentationType("Relief Surface")
+    shown.ColorArrayName = ["POINTS", ""]
+    shown.DiffuseColor = KD
+    for source in (depth, relief, plane):
+        pvs.Hide(source, view)
+    pvs.Show(field, view)
+    view.CameraPosition = [278.0, 273.0, -800.0]
+    view.CameraFocalPoint = [278.0, 273.0, 0.0]
+    view.CameraViewUp = [0.0, 1.0, 0.0]
+    view.CameraViewAngle = 39.3077
+
+    # The patch's footprint: the relief hidden against the relief drawn plain white.
+    shown.Visibility = 0
+    wall = g.grab(view, "gui-relief-field-wall.png")
+    shown.Visibility = 1
+    shown.SetRepresentationType("Surface")
+    shown.AmbientColor = shown.DiffuseColor = [1.0, 1.0, 1.0]
+    shown.Ambient, shown.Diffuse = 1.0, 0.0
+    white = g.grab(view, "gui-relief-field-footprint.png")
+    footprint = (white.min(axis=2) > 250) & (wall.min(axis=2) < 250)
+    for _ in range(3):
+        footprint = (footprint & np.roll(footprint, 1, 0) & np.roll(footprint, -1, 0) &
+                     np.roll(footprint, 1, 1) & np.roll(footprint, -1, 1))
+    shown.SetRepresentationType("Relief Surface")
+    shown.DiffuseColor = KD
+    shown.Ambient, shown.Diffuse = 0.0, 1.0
+    print("patch footprint: %d pixels" % int(footprint.sum()))
+    if footprint.sum() < 1000:
+        failures.append("the patch should cover much of the view (%d px)" % footprint.sum())
+        return failures
+
+    def error(frame):
+        return float(np.abs(frame[footprint] - wall[footprint]).mean())
+
+    kit = g.grab(view, "gui-relief-field-view-lights.png")
+    lit = shown.LightSetAttached
+    shown.LightField = field  # what picking the field in the panel's Light Field selector does
+    with_field = g.grab(view, "gui-relief-field-lit.png")
+    e_kit, e_field = error(kit), error(with_field)
+    print("relief vs the wall it covers: view's lights %.2f levels, Light Field %.2f levels"
+          % (e_kit, e_field))
+    if e_field > MAX_MEAN_ERROR:
+        failures.append("with the Light Field the relief should look like the wall (%.2f > %g)"
+                        % (e_field, MAX_MEAN_ERROR))
+    if e_kit <= MAX_MEAN_ERROR:
+        failures.append("negative check: the view's lights should not match the wall (%.2f)"
+                        % e_kit)
+    print("panel: LightSetAttached %d without, %d with the Light Field"
+          % (lit, shown.LightSetAttached))
+    if lit != 0 or shown.LightSetAttached != 1:
+        failures.append("the panel should show Exposure and Tone Mapping with a Light Field")
+    return failures
+
+
+g.run(main)

@@ -1,0 +1,184 @@
+# SPDX-License-Identifier: BSD-3-Clause
+"""A Relief Surface lit by a Virtual Light Field (the representation's Light Field input) on the
+Cornell box's back wall, beside the scene drawn as Light Field.
+
+Reference (independent of the probes and the emitter lights): the field's own radiance leaving
+the back wall, as the Light Field representation draws it (the propagated texture, exposed,
+tone-mapped, sRGB). A flat relief (depth scale 0) on a patch in front of that wall, lit by the
+field, is shaded from other data entirely: SH9 probes of the field's incident light gathered
+over the patch plus the emitters as lights, Kd x E / pi, through the same display transform.
+Where the patch covers the wall the two images must agree (the wall and the relief look
+continuous). Must fail: the same relief lit by the view's lights (Light Field unset), and lit
+by the field without its automatic exposure. A relief with depth lit by the field must differ
+from the flat one (it is drawn as a relief) and stay near it on average (same light).
+
+Also: the probes are gathered once per field or surface (renders and camera moves gather none,
+a new propagation gathers again); bad input (a Light Field that is not a field) is an error
+through VTK, the relief is then drawn the ordinary way, no crash. Runs on one or two MPI ranks.
+"""
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import mesolight_pvtest as t  # noqa: E402
+import numpy as np  # noqa: E402
+import paraview.simple as pvs  # noqa: E402
+from paraview import servermanager  # noqa: E402
+from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: E402
+from vtkmodules.vtkCommonCore import vtkCommand, vtkOutputWindow  # noqa: E402
+
+SIZE = 300
+EYE, FOCAL, VIEW_ANGLE = [278.0, 273.0, -800.0], [278.0, 273.0, 0.0], 39.3077
+BACK_Z = 559.2     # the published box's back wall (millimetres, facing -z)
+PATCH_Z = 558.0    # the patch 1.2 mm in front of it (within the wall's plane tolerance)
+MAX_MEAN_ERROR = 6.0  # 8-bit levels, relief vs the wall's own radiance over the patch
+
+t.load_plugin()
+failures = []
+check = t.checker(failures)
+out = t.output_dir()
+
+box = pvs.MesolightCornellBox()
+field = pvs.MesolightVirtualLightField(Input=box, Directions=513, RaysPerSide=32, Iterations=4)
+
+view = pvs.CreateView("RenderView")
+view.ViewSize = [SIZE, SIZE]
+view.OrientationAxesVisibility = 0
+view.UseColorPaletteForBackground = 0
+view.Background = [0.0, 0.0, 0.0]
+view.UseFXAA = 0
+
+
+def capture(name):
+    view.CameraPosition, view.CameraFocalPoint = EYE, FOCAL
+    view.CameraViewUp = [0.0, 1.0, 0.0]
+    view.CameraViewAngle = VIEW_ANGLE
+    pvs.Render(view)
+    path = os.path.join(out, name)
+    pvs.SaveScreenshot(path, view, ImageResolution=[SIZE, SIZE], TransparentBackground=0)
+    return t.capture_file(path)
+
+
+scene = pvs.Show(field, view)
+check(scene.Representation == "Light Field", "the scene is shown as Light Field")
+wall = capture("pv-relief-field-wall.png")
+
+# The back wall's Kd (the relief's albedo: the user's Solid Color), from the box's cell data.
+data = servermanager.Fetch(box)
+points = vtk_to_numpy(data.GetPoints().GetData())
+diffuse = vtk_to_numpy(data.GetCellData().GetArray("Diffuse"))
+kd = None
+for c in range(data.GetNumberOfCells()):
+    ids = data.GetCell(c).GetPointIds()
+    if all(points[ids.GetId(k)][2] > BACK_Z - 1.0 for k in range(ids.GetNumberOfIds())):
+        kd = [float(v) for v in diffuse[c]]
+        break
+print("back wall Kd: %s" % kd)
+
+# The patch: normal -z (towards the camera), texture coordinates from the Plane source.
+patch = pvs.Plane(Origin=[90.0, 90.0, PATCH_Z], Point1=[90.0, 470.0, PATCH_Z],
+                  Point2=[470.0, 90.0, PATCH_Z], XResolution=4, YResolution=4)
+attached, relief = t.show_relief(patch, t.relief_texture(128), view, OverrideDepthScale=1,
+                                 ReliefDepthScale=0.0)
+relief.DiffuseColor = kd
+relief.Ambient, relief.Diffuse = 0.0, 1.0
+
+# The patch's footprint, shrunk by 3 pixels (edges are not compared).
+scene.Visibility = 0
+relief.SetRepresentationType("Surface")
+relief.AmbientColor = relief.DiffuseColor = [1.0, 1.0, 1.0]
+relief.Ambient, relief.Diffuse = 1.0, 0.0
+footprint = capture("pv-relief-field-footprint.png").max(axis=2) > 128
+for _ in range(3):
+    footprint = (footprint & np.roll(footprint, 1, 0) & np.roll(footprint, -1, 0) &
+                 np.roll(footprint, 1, 1) & np.roll(footprint, -1, 1))
+print("patch footprint: %d pixels" % int(footprint.sum()))
+check(footprint.sum() > SIZE * SIZE // 8, "the patch covers much of the view")
+scene.Visibility = 1
+relief.SetRepresentationType("Relief Surface")
+relief.DiffuseColor = kd
+relief.Ambient, relief.Diffuse = 0.0, 1.0
+
+
+def error(image, label):
+    e = float(np.abs(image[footprint].astype(float) - wall[footprint]).mean())
+    print("%s: mean |relief - wall| %.2f levels over the patch (wall mean %.1f, relief mean %.1f)"
+          % (label, e, float(wall[footprint].mean()), float(image[footprint].mean())))
+    return e
+
+
+def gatherings():
+    relief.UpdatePropertyInformation()
+    return relief.GetPropertyValue("LightFieldProbeGatherings")
+
+
+# --- negative: the view's lights (Light Field unset) ------------------------------------------
+kit = capture("pv-relief-field-view-lights.png")
+check(error(kit, "negative: view's lights") > MAX_MEAN_ERROR,
+      "negative: the relief lit by the view's lights does not match the wall")
+check(gatherings() == 0, "no probes gathered without a Light Field")
+
+# --- the relief lit by the field -------------------------------------------------------------
+relief.LightField = field
+flat = capture("pv-relief-field-flat.png")
+check(error(flat, "flat relief lit by the field") <= MAX_MEAN_ERROR,
+      "a flat relief lit by the field matches the wall's own radiance (<= %g levels)"
+      % MAX_MEAN_ERROR)
+first = gatherings()
+check(first == 1, "the probes were gathered once (%d)" % first)
+
+# Renders, camera moves and display settings gather nothing.
+view.CameraPosition = [300.0, 250.0, -700.0]
+pvs.Render(view)
+relief.LinearSteps = 12
+capture("pv-relief-field-again.png")
+check(gatherings() == first, "renders and settings gather no probes (%d)" % gatherings())
+
+# --- negative: without the field's automatic exposure ---------------------------------------
+relief.ReliefLightFieldAutoExposure = 0
+dim = capture("pv-relief-field-no-auto-exposure.png")
+check(error(dim, "negative: no automatic exposure") > MAX_MEAN_ERROR,
+      "negative: the relief without the field's automatic exposure does not match")
+relief.ReliefLightFieldAutoExposure = 1
+
+# --- a relief with depth: drawn as a relief, lit alike on average ----------------------------
+relief.ReliefDepthScale = 0.1
+deep = capture("pv-relief-field-deep.png")
+changed = float((np.abs(deep[footprint] - flat[footprint]).max(axis=1) > 8).mean())
+mean_shift = abs(float(deep[footprint].mean()) - float(flat[footprint].mean()))
+print("relief with depth: %.1f%% of the patch's pixels differ from the flat one by > 8 levels; "
+      "mean level shift %.1f" % (100.0 * changed, mean_shift))
+check(changed > 0.02 and mean_shift < 20.0,
+      "a relief with depth shows its relief, lit like the flat one on average")
+check(gatherings() == first, "a relief setting gathers no probes")
+
+# --- a new propagation gathers again ---------------------------------------------------------
+field.Iterations = 5
+capture("pv-relief-field-five-iterations.png")
+check(gatherings() == first + 1, "a new field gathers the probes again (%d)" % gatherings())
+
+# --- unset: the view's lights again ------------------------------------------------------------
+relief.LightField = None
+relief.ReliefDepthScale = 0.0
+back = capture("pv-relief-field-unset.png")
+check(float(np.abs(back[footprint] - kit[footprint]).mean()) < 1.0,
+      "unsetting the Light Field gives the view's lighting back")
+
+# --- bad input: a Light Field that is no field ------------------------------------------------
+messages = []
+
+
+window = vtkOutputWindow.GetInstance()
+tag = window.AddObserver(vtkCommand.ErrorEvent,
+                         lambda caller, event: messages.append("error"))
+relief.LightField = box
+bad = capture("pv-relief-field-bad-input.png")
+window.RemoveObserver(tag)
+print("bad input: %d error(s) reported" % len(messages))
+check(float(np.abs(bad[footprint] - kit[footprint]).mean()) < 1.0,
+      "a Light Field that is no field: the relief is drawn the ordinary way")
+
+if failures:
+    print("FAILED: " + "; ".join(failures))
+    sys.exit(1)
+print("OK")
