@@ -30,6 +30,7 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <limits>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -48,6 +49,50 @@ vtkSmartPointer<vtkImageData> ToImage(const float* values, int w, int h, int com
   image->SetDimensions(w, h, 1);
   image->GetPointData()->SetScalars(array);
   return image;
+}
+
+// --layers: "average" (0, the default), "auto" (-1) or a count 1..12.
+bool GetHallucinationLayers(const CommandLine& cl, int& layers, std::string& error)
+{
+  const std::string value = cl.Get("--layers");
+  if (value == "average" || value.empty())
+  {
+    layers = 0;
+    return true;
+  }
+  if (value == "auto")
+  {
+    layers = -1;
+    return true;
+  }
+  return cl.GetInt("--layers", 1, 12, layers, error);
+}
+
+// An RGB (or grey) image file as RgbImage; false if unreadable.
+bool ReadRgb(const std::string& file, RgbImage& out)
+{
+  vtkNew<vtkOIIOImageReader> reader;
+  reader->SetFileName(file.c_str());
+  reader->Update();
+  vtkImageData* image = reader->GetOutput();
+  if (reader->GetErrorCode() != 0 || image->GetNumberOfPoints() == 0)
+  {
+    return false;
+  }
+  int dims[3];
+  image->GetDimensions(dims);
+  vtkDataArray* values = image->GetPointData()->GetScalars();
+  out = RgbImage(dims[0], dims[1]);
+  const int components = values->GetNumberOfComponents();
+  for (vtkIdType p = 0; p < image->GetNumberOfPoints(); ++p)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      out.Rgb[3 * static_cast<std::size_t>(p) + static_cast<std::size_t>(c)] =
+        static_cast<float>(values->GetComponent(p, std::min(c, components - 1)));
+    }
+  }
+  return true;
 }
 
 bool WriteImage(vtkImageData* image, const std::string& file)
@@ -74,7 +119,9 @@ int RunHallucinateCommand(const std::vector<std::string>& args)
   cl.AddValue("--depth", "FILE", "depth map to write (float; 0 = highest, 1 = deepest)");
   cl.AddValue("--depth-scale", "K", "the user's depth scale: multiplies the model's depth", "1");
   cl.AddValue("--layers", "N",
-    "scale layers; sigma 1, 2, 4, ... texels (auto: from the\nphotographs' feature size)", "auto");
+    "scale layers; sigma 1, 2, 4, ... texels (average: every\ncount the photograph holds, "
+    "averaged; auto: one count\nfrom the photographs' octave energies)",
+    "average");
   cl.AddValue("--residual-weight", "W",
     "sigma of the residual layer (the widest layer against\nthe open sky) in widest sigmas; 0: "
     "none",
@@ -93,10 +140,9 @@ int RunHallucinateCommand(const std::vector<std::string>& args)
   }
   std::string error;
   double depthScale = 1.0, hill = 1.0, valley = 1.0, residual = 8.0;
-  int layers = 0; // automatic
+  int layers = 0; // the scale average
   if (!cl.GetDouble("--depth-scale", 1e-6, 1e6, depthScale, error) ||
-    (cl.Get("--layers") == "auto" ? (layers = 0, false)
-                                  : !cl.GetInt("--layers", 1, 12, layers, error)) ||
+    !GetHallucinationLayers(cl, layers, error) ||
     !cl.GetDouble("--hill-weight", 0.0, 100.0, hill, error) ||
     !cl.GetDouble("--valley-weight", 0.0, 100.0, valley, error) ||
     !cl.GetDouble("--residual-weight", 0.0, 100.0, residual, error))
@@ -189,7 +235,7 @@ int RunHallucinateCommand(const std::vector<std::string>& args)
     // The automatic choice is estimated at its most (sigma up to half the longer side), plus
     // its own measure (about one layer's work).
     int estimatedLayers = layers;
-    if (layers == 0)
+    if (layers <= 0)
     {
       estimatedLayers = 2;
       while (estimatedLayers < 12 && (1 << estimatedLayers) <= longest / 2)
@@ -202,7 +248,9 @@ int RunHallucinateCommand(const std::vector<std::string>& args)
     if (estimate > 2.0)
     {
       std::cerr << "hallucinating " << size[0] << "x" << size[1] << ", "
-                << (layers > 0 ? std::to_string(layers) + " layers" : "automatic layers")
+                << (layers > 0 ? std::to_string(layers) + " layers"
+                              : layers == 0 ? "the scale average"
+                                            : "automatic layers")
                 << ": at most about " << std::setprecision(2) << estimate << " s\n";
     }
   }
@@ -252,6 +300,11 @@ int RunHallucinateCommand(const std::vector<std::string>& args)
   std::cout << "hallucinated " << dims[0] << "x" << dims[1] << " in " << std::setprecision(3)
             << seconds << " s" << (calibration ? "" : " (uniform flash: no --calibration)") << "\n";
   if (layers == 0)
+  {
+    std::cout << "layers: the average of 1 to " << filter->GetLayersUsed() << " (widest sigma "
+              << (1 << (filter->GetLayersUsed() - 1)) << " texels)\n";
+  }
+  else if (layers < 0)
   {
     std::cout << "layers: " << filter->GetLayersUsed() << " (widest sigma "
               << (1 << (filter->GetLayersUsed() - 1)) << " texels), chosen from the feature size "
@@ -304,7 +357,10 @@ int RunHallucinationBenchmark(const std::vector<std::string>& args)
   cl.AddValue("--size", "N", "photograph size for the procedural maps", "128");
   cl.AddValue("--relief", "TEXELS", "depth of depth 1 in texels, unless given per map", "8");
   cl.AddValue("--samples", "N", "path samples per pixel", "32");
-  cl.AddValue("--layers", "N", "scale layers of the model (auto: from the photographs)", "auto");
+  cl.AddValue("--layers", "N",
+    "scale layers of the model (average: every count averaged;\nauto: one count from the "
+    "octave energies)",
+    "average");
   cl.AddValue("--sweep", "LIST",
     "also run the model with each of these fixed layer counts\n(e.g. 1,2,3,4,5,6,7,8,9): the "
     "summary names the best");
@@ -312,6 +368,9 @@ int RunHallucinationBenchmark(const std::vector<std::string>& args)
   cl.AddValue("--plot", "FILE", "correlation per layer count and map as PNG (needs --sweep)");
   cl.AddValue("--csv", "FILE", "figures as CSV (and FILE's stem + -summary.csv)");
   cl.AddValue("--photos", "DIR", "also write each map's photographs and true depth (.exr) there");
+  cl.AddValue("--from-photos", "DIR",
+    "read each map's photographs and true depth from DIR (as\n--photos writes them) instead of "
+    "rendering; no albedo\nerror, no ideal-flash row");
   int exitCode = 0;
   if (!cl.ParseArguments(args, exitCode))
   {
@@ -323,9 +382,7 @@ int RunHallucinationBenchmark(const std::vector<std::string>& args)
   std::vector<int> sweep;
   if (!cl.GetInt("--size", 8, 2048, size, error) ||
     !cl.GetInt("--samples", 1, 4096, samples, error) ||
-    (cl.Get("--layers") == "auto" ? (layers = 0, false)
-                                  : !cl.GetInt("--layers", 1, 12, layers, error)) ||
-    !cl.GetDouble("--relief", 0.01, 1000.0, relief, error) ||
+    !GetHallucinationLayers(cl, layers, error) || !cl.GetDouble("--relief", 0.01, 1000.0, relief, error) ||
     (cl.Has("--sweep") && !cl.GetIntList("--sweep", 1, 12, sweep, error)))
   {
     return cl.UsageError(error);
@@ -430,7 +487,34 @@ int RunHallucinationBenchmark(const std::vector<std::string>& args)
     photo.ReliefDepthTexels = static_cast<float>(texels);
     photo.Samples = samples;
     auto start = std::chrono::steady_clock::now();
-    const HallucinationPhotographs shots = RenderHallucinationPhotographs(depth, w, h, {}, photo);
+    const std::string fromPhotos = cl.Get("--from-photos");
+    HallucinationPhotographs shots;
+    if (fromPhotos.empty())
+    {
+      shots = RenderHallucinationPhotographs(depth, w, h, {}, photo);
+    }
+    else
+    {
+      // Photographs rendered before (--photos), the same renderer and settings: the table can be
+      // redone without rendering again. The true albedo is not stored.
+      const std::filesystem::path dir(fromPhotos);
+      RgbImage trueDepth;
+      if (!ReadRgb((dir / (label + "-diffuse.exr")).string(), shots.Diffuse) ||
+        !ReadRgb((dir / (label + "-flash.exr")).string(), shots.Flash) ||
+        !ReadRgb((dir / (label + "-calibration.exr")).string(), shots.Calibration) ||
+        !ReadRgb((dir / (label + "-true-depth.exr")).string(), trueDepth) ||
+        trueDepth.Width != w || trueDepth.Height != h)
+      {
+        std::cerr << "mesolight bench hallucinate: no photographs of " << label << " in "
+                  << fromPhotos << " (or of another size)\n";
+        return 1;
+      }
+      for (std::size_t p = 0; p < depth.size(); ++p)
+      {
+        depth[p] = trueDepth.Rgb[3 * p];
+      }
+      shots.TrueAlbedo = shots.Calibration; // not stored: no albedo error, no ideal-flash row
+    }
     const double renderSeconds = SecondsSince(start);
     HallucinationSettings settings;
     settings.Layers = layers;
@@ -450,7 +534,8 @@ int RunHallucinationBenchmark(const std::vector<std::string>& args)
       {
         idealFlash.Rgb[k] += shots.TrueAlbedo.Rgb[k];
       }
-      ideal = HallucinateDepth(shots.Diffuse, idealFlash, nullptr, settings);
+      ideal = fromPhotos.empty() ? HallucinateDepth(shots.Diffuse, idealFlash, nullptr, settings)
+                                 : result;
     }
     catch (const HallucinationError& e)
     {
@@ -475,7 +560,8 @@ int RunHallucinationBenchmark(const std::vector<std::string>& args)
       ratio[p] =
         flashLuminance > 0.0f ? -RgbLuminance(&shots.Diffuse.Rgb[3 * p]) / flashLuminance : 0.0f;
     }
-    albedoError /= static_cast<double>(depth.size());
+    albedoError = fromPhotos.empty() ? albedoError / static_cast<double>(depth.size())
+                                     : std::numeric_limits<double>::quiet_NaN();
     struct Method
     {
       std::string Name;

@@ -52,10 +52,11 @@ public:
 
   ///@{
   /**
-   * Scale layers (1..12), or 0 (the default): chosen from the photographs' own feature size.
-   * The first has sigma BaseSigma texels, each next doubles.
+   * Scale layers (1..12); 0 (the default): the scale average, every layer count the
+   * photograph holds averaged (HallucinationSettings::Layers); -1: one count chosen from the
+   * photographs' octave energies. The first has sigma BaseSigma texels, each next doubles.
    */
-  vtkSetClampMacro(NumberOfLayers, int, 0, 12);
+  vtkSetClampMacro(NumberOfLayers, int, -1, 12);
   vtkGetMacro(NumberOfLayers, int);
   vtkSetClampMacro(BaseSigma, double, 0.1, 1000.0);
   vtkGetMacro(BaseSigma, double);

@@ -321,6 +321,53 @@ HallucinationScale ChooseHallucinationLayers(
 }
 
 //------------------------------------------------------------------------------
+int HallucinationAverageLayers(int w, int h, float baseSigma)
+{
+  // Every octave whose layer leaves an interior 2 sigma from the border (the energies of
+  // ChooseHallucinationLayers use the same interior), at most 12.
+  int layers = 1;
+  while (layers < 12)
+  {
+    const float sigma = baseSigma * std::ldexp(1.0f, layers);
+    if (2 * static_cast<int>(std::ceil(2.0f * sigma)) >= std::min(w, h) - 2)
+    {
+      break;
+    }
+    ++layers;
+  }
+  return layers;
+}
+
+namespace
+{
+// Layer k's depth (texels) from the ratio r = L_{k-1} / L_k by the valley and hill laws.
+float LayerDepth(float r, float sigma, const HallucinationSettings& settings)
+{
+  if (r < 1.0f)
+  {
+    // Valley: visible aperture sin^2 a = r; depth sigma cot a.
+    return settings.ValleyWeight * sigma * std::sqrt((1.0f - r) / r);
+  }
+  if (r > 1.0f)
+  {
+    // Hill: surround tilted by t, (1 + cos t) / 2 = 1 / r; height sigma tan t. Slopes beyond 80
+    // degrees are not resolved from shading alone.
+    const float cosT = std::max(std::cos(1.3962634f), 2.0f / r - 1.0f);
+    const float tanT = std::sqrt(std::max(0.0f, 1.0f - cosT * cosT)) / cosT;
+    return -settings.HillWeight * sigma * tanT;
+  }
+  return 0.0f;
+}
+
+// The residual layer's depth (texels): the widest layer's value against the open sky (1).
+float ResidualDepth(float widest, float sigma, const HallucinationSettings& settings)
+{
+  const float r = std::min(1.0f, std::max(Floor, widest));
+  return settings.ValleyWeight * sigma * std::sqrt((1.0f - r) / r);
+}
+} // namespace
+
+//------------------------------------------------------------------------------
 std::vector<float> DepthFromShading(const std::vector<float>& shading, int w, int h,
   const HallucinationSettings& settings, const ProgressCallback& progress)
 {
@@ -330,13 +377,22 @@ std::vector<float> DepthFromShading(const std::vector<float>& shading, int w, in
   {
     return {};
   }
-  const int layers = settings.Layers > 0
-    ? settings.Layers
-    : ChooseHallucinationLayers(shading, w, h, settings.BaseSigma, settings.Threads).Layers;
+  const bool average = settings.Layers == 0;
+  const int layers = settings.Layers > 0 ? settings.Layers
+    : average ? HallucinationAverageLayers(w, h, settings.BaseSigma)
+              : ChooseHallucinationLayers(shading, w, h, settings.BaseSigma, settings.Threads).Layers;
   std::vector<float> floored(n);
   std::transform(
     shading.begin(), shading.end(), floored.begin(), [](float s) { return std::max(Floor, s); });
   std::vector<float> previous = floored;
+  // The scale average: the model with 1, 2, ..., `layers` layers (each with its residual layer)
+  // is a hypothesis of the feature size; nothing in the shading alone says which is right (the
+  // best count measured 1 to 8 on real maps, and a threshold on the octave energies chose it
+  // wrongly on a third of them), so all are averaged with equal say: weights inversely
+  // proportional to each hypothesis' spread (the widest layer's sigma would otherwise decide),
+  // which keeps the result in texels.
+  std::vector<float> hypothesis(average ? n : 0), sum(average ? n : 0, 0.0f);
+  double weightSum = 0.0;
   for (int k = 1; k <= layers; ++k)
   {
     if (!ReportProgress(progress, static_cast<double>(k - 1) / layers))
@@ -354,28 +410,48 @@ std::vector<float> DepthFromShading(const std::vector<float>& shading, int w, in
       {
         for (std::size_t p = begin; p < end; ++p)
         {
-          const float r = previous[p] / std::max(Floor, layer[p]);
-          float contribution = 0.0f;
-          if (r < 1.0f)
-          {
-            // Valley: visible aperture sin^2 a = r; depth sigma cot a.
-            contribution = settings.ValleyWeight * sigma * std::sqrt((1.0f - r) / r);
-          }
-          else if (r > 1.0f)
-          {
-            // Hill: surround tilted by t, (1 + cos t) / 2 = 1 / r; height sigma tan t. Slopes
-            // beyond 80 degrees are not resolved from shading alone.
-            const float cosT = std::max(std::cos(1.3962634f), 2.0f / r - 1.0f);
-            const float tanT = std::sqrt(std::max(0.0f, 1.0f - cosT * cosT)) / cosT;
-            contribution = -settings.HillWeight * sigma * tanT;
-          }
-          depth[p] += settings.DepthScale * contribution;
+          depth[p] += settings.DepthScale *
+            LayerDepth(previous[p] / std::max(Floor, layer[p]), sigma, settings);
         }
       },
       settings.Threads);
     previous.swap(layer);
+    if (average)
+    {
+      const float residualSigma = settings.ResidualWeight * sigma;
+      double mean = 0.0, square = 0.0;
+      for (std::size_t p = 0; p < n; ++p)
+      {
+        hypothesis[p] = depth[p] +
+          (settings.ResidualWeight > 0.0f
+              ? settings.DepthScale * ResidualDepth(previous[p], residualSigma, settings)
+              : 0.0f);
+        mean += hypothesis[p];
+        square += static_cast<double>(hypothesis[p]) * hypothesis[p];
+      }
+      mean /= static_cast<double>(n);
+      const double spread = std::sqrt(std::max(0.0, square / static_cast<double>(n) - mean * mean));
+      if (spread > 1e-12)
+      {
+        const double weight = 1.0 / spread;
+        weightSum += weight;
+        for (std::size_t p = 0; p < n; ++p)
+        {
+          sum[p] += static_cast<float>(weight * hypothesis[p]);
+        }
+      }
+    }
   }
-  if (settings.ResidualWeight > 0.0f)
+  if (average)
+  {
+    // A uniform shading gives flat hypotheses (no weight): the depth stays flat.
+    const float inverse = weightSum > 0.0 ? static_cast<float>(1.0 / weightSum) : 0.0f;
+    for (std::size_t p = 0; p < n; ++p)
+    {
+      depth[p] = sum[p] * inverse;
+    }
+  }
+  else if (settings.ResidualWeight > 0.0f)
   {
     // The residual layer: what the layers leave out, the widest layer itself, compared with
     // the open sky (shading 1) by the valley law, sigma ResidualWeight times the widest layer's.
@@ -384,8 +460,7 @@ std::vector<float> DepthFromShading(const std::vector<float>& shading, int w, in
     const float sigma = settings.ResidualWeight * settings.BaseSigma * std::ldexp(1.0f, layers - 1);
     for (std::size_t p = 0; p < n; ++p)
     {
-      const float r = std::min(1.0f, std::max(Floor, previous[p]));
-      depth[p] += settings.DepthScale * settings.ValleyWeight * sigma * std::sqrt((1.0f - r) / r);
+      depth[p] += settings.DepthScale * ResidualDepth(previous[p], sigma, settings);
     }
   }
   if (!ReportProgress(progress, 1.0))
@@ -428,13 +503,14 @@ HallucinationResult HallucinateDepth(const RgbImage& diffuse, const RgbImage& fl
         (!AllFinite(diffuse) ? "diffuse" : (!AllFinite(flash) ? "flash" : "calibration")) +
         " image has NaN or infinite pixels.");
   }
-  if (settings.Layers < 0 || settings.Layers > 12 || !(settings.BaseSigma > 0.0f) ||
+  if (settings.Layers < -1 || settings.Layers > 12 || !(settings.BaseSigma > 0.0f) ||
     !(settings.DepthScale > 0.0f) || !(settings.ValleyWeight >= 0.0f) ||
     !(settings.HillWeight >= 0.0f) || !(settings.ResidualWeight >= 0.0f) ||
     !std::isfinite(settings.DepthScale) || !std::isfinite(settings.ResidualWeight))
   {
     Fail(HallucinationStatus::BadSettings,
-      "Settings out of range (layers 0 = automatic or 1..12, base sigma > 0, depth scale > 0, "
+      "Settings out of range (layers 0 = scale average, -1 = automatic count or 1..12, base "
+      "sigma > 0, depth scale > 0, "
       "weights >= 0).");
   }
   if (!(settings.ValleyWeight > 0.0f) && !(settings.HillWeight > 0.0f))
@@ -590,17 +666,17 @@ HallucinationResult HallucinateDepth(const RgbImage& diffuse, const RgbImage& fl
     s = (s < 0.0f || !(open > 0.0f)) ? 1.0f : std::min(1.0f, s / open);
   }
 
-  // 3. Depth from the shading layers, as many as the shading's own feature size asks for unless
-  // the caller fixed them.
+  // 3. Depth from the shading layers: by default the average over every layer count the
+  // photograph holds (DepthFromShading); -1: the count the octave energies choose; or fixed.
   HallucinationSettings used = settings;
-  if (used.Layers == 0)
+  if (used.Layers == -1)
   {
     const HallucinationScale scale =
       ChooseHallucinationLayers(result.Shading, w, h, settings.BaseSigma, settings.Threads);
     used.Layers = scale.Layers;
     result.FeatureSizeTexels = scale.FeatureSizeTexels;
   }
-  result.Layers = used.Layers;
+  result.Layers = used.Layers == 0 ? HallucinationAverageLayers(w, h, settings.BaseSigma) : used.Layers;
   if (!ReportProgress(progress, 0.1))
   {
     throw HallucinationAbortedError();

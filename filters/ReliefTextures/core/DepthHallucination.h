@@ -30,7 +30,11 @@
  *     valley law, with sigma ResidualWeight * sigma_K: the broad darkening the band-pass layers
  *     leave out (the floor of a wide recessed panel is as bright as its surround in every layer).
  *     depth = DepthScale * (sum_k (ValleyWeight * valley_k - HillWeight * hill_k)
- *     + ValleyWeight * residual), in texels;
+ *     + ValleyWeight * residual), in texels. The widest layer must match the features, and
+ *     the best layer count differs from surface to surface (1 to 8 on real height maps); by
+ *     default the depths of every count K = 1, 2, ... the photograph holds are averaged,
+ *     each weighted by the inverse of its spread (a scale average: Lindeberg's scale space
+ *     without a selection of one scale), which keeps it in texels;
  *     the output is that depth stretched to [0, 1] (0 = highest point, 1 = deepest, the
  *     project's convention) and its range in texels (DepthRangeTexels).
  *
@@ -45,8 +49,8 @@
  * surface to the flash and light bounced between walls; dividing by it brightens slopes, which
  * the hill law reads (with the true albedo instead the model does worse: docs/hallucination.md).
  * It is an approximation by design: shading cannot tell absolute depth nor very low
- * frequencies, the widest useful layer must match the features (Layers, chosen from the shading
- * unless given; the automatic choice and the residual layer are this project's), and where the
+ * frequencies, the widest useful layer must match the features (Layers; the scale average, the
+ * automatic choice and the residual layer are this project's), and where the
  * albedo is not removed dark paint reads as deep. docs/hallucination.md measures how far it gets.
  */
 #ifndef mesolight_DepthHallucination_h
@@ -66,8 +70,11 @@ namespace mesolight
 
 struct HallucinationSettings
 {
-  /// Scale layers (1..12), or 0: chosen from the photographs' own feature size
-  /// (ChooseHallucinationLayers). The widest layer's sigma is BaseSigma * 2^(Layers - 1).
+  /// Scale layers (1..12); 0 (the default): the scale average, the model with 1, 2, ..., K
+  /// layers (K: every octave the photograph holds, HallucinationAverageLayers) averaged with
+  /// weights inversely proportional to each one's spread; -1: one count chosen from the
+  /// shading's octave energies (ChooseHallucinationLayers). The widest layer's sigma is
+  /// BaseSigma * 2^(Layers - 1).
   int Layers = 0;
   float BaseSigma = 1.0f;    ///< sigma of the first layer, texels; doubles per layer
   float DepthScale = 1.0f;   ///< the user's depth scale: multiplies the model's depth
@@ -153,6 +160,10 @@ struct HallucinationScale
  */
 MESOLIGHTRELIEFTEXTURES_EXPORT HallucinationScale ChooseHallucinationLayers(
   const std::vector<float>& shading, int w, int h, float baseSigma = 1.0f, int threads = 0);
+
+/// The layer count of the scale average (Layers 0): every octave whose sigma leaves an interior
+/// 2 sigma from the border of a w x h photograph, 1..12.
+MESOLIGHTRELIEFTEXTURES_EXPORT int HallucinationAverageLayers(int w, int h, float baseSigma = 1.0f);
 
 /// Rec. 709 luminance of a linear RGB pixel.
 inline float RgbLuminance(const float* rgb)
