@@ -73,23 +73,8 @@ vec3 mlFlatLightIrradiance(vec3 posVC, vec3 macroVC, vec2 uv)
   vec3 irradiance = vec3(0.0);
   for (int i = 0; i < mlNumberOfLights; ++i)
   {
-    float attenuation = 1.0;
-    vec3 lightDir = mlLightDirectionVC[i];
-    if (mlLightPositional[i] != 0)
-    {
-      lightDir = posVC - mlLightPositionVC[i];
-      float dist = length(lightDir);
-      lightDir = lightDir / max(dist, 1e-30);
-      vec3 a = mlLightAttenuation[i];
-      attenuation = 1.0 / max(a.x + a.y * dist + a.z * dist * dist, 1e-30);
-      if (mlLightConeAngle[i] <= 90.0)
-      {
-        float coneDot = dot(lightDir, mlLightDirectionVC[i]);
-        attenuation = coneDot >= cos(radians(mlLightConeAngle[i]))
-          ? attenuation * pow(max(coneDot, 0.0), mlLightExponent[i])
-          : 0.0;
-      }
-    }
+    vec3 lightDir;
+    float attenuation = mlLightArrival(i, posVC, lightDir);
     irradiance += max(0.0, attenuation * dot(macroVC, -lightDir)) *
       mlEmitterVisibility(uv, i) * mlLightColor[i];
   }

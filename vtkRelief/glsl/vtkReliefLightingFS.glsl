@@ -22,6 +22,30 @@ uniform mat3 mlWorldToView; // rotation part of the view matrix
 float mlEmitterVisibility(vec2 uv, int light); // the scene's shadow (vtkReliefIrradianceProbesFS)
 #endif
 
+// Light i's direction of travel at posVC and its attenuation there (distance, spot cone), as
+// VTK's own shading computes them.
+float mlLightArrival(int i, vec3 posVC, out vec3 lightDir)
+{
+  float attenuation = 1.0;
+  lightDir = mlLightDirectionVC[i];
+  if (mlLightPositional[i] != 0)
+  {
+    lightDir = posVC - mlLightPositionVC[i];
+    float dist = length(lightDir);
+    lightDir = lightDir / max(dist, 1e-30);
+    vec3 a = mlLightAttenuation[i];
+    attenuation = 1.0 / max(a.x + a.y * dist + a.z * dist * dist, 1e-30);
+    if (mlLightConeAngle[i] <= 90.0)
+    {
+      float coneDot = dot(lightDir, mlLightDirectionVC[i]);
+      attenuation = coneDot >= cos(radians(mlLightConeAngle[i]))
+        ? attenuation * pow(max(coneDot, 0.0), mlLightExponent[i])
+        : 0.0;
+    }
+  }
+  return attenuation;
+}
+
 // Accumulates diffuse and specular light at a point of the height field.
 //   posVC, normalVC: the hit point and the height field's normal there, view coordinates
 //   hit: the hit in texture space; worldToTexture maps a view-space direction to texture space
@@ -34,23 +58,8 @@ void mlAccumulateLights(vec3 posVC, vec3 normalVC, vec3 hit, mat3 worldToTexture
   vec3 viewDir = normalize(-posVC);
   for (int i = 0; i < mlNumberOfLights; ++i)
   {
-    float attenuation = 1.0;
-    vec3 lightDir = mlLightDirectionVC[i];
-    if (mlLightPositional[i] != 0)
-    {
-      lightDir = posVC - mlLightPositionVC[i];
-      float dist = length(lightDir);
-      lightDir = lightDir / max(dist, 1e-30);
-      vec3 a = mlLightAttenuation[i];
-      attenuation = 1.0 / max(a.x + a.y * dist + a.z * dist * dist, 1e-30);
-      if (mlLightConeAngle[i] <= 90.0)
-      {
-        float coneDot = dot(lightDir, mlLightDirectionVC[i]);
-        attenuation = coneDot >= cos(radians(mlLightConeAngle[i]))
-          ? attenuation * pow(max(coneDot, 0.0), mlLightExponent[i])
-          : 0.0;
-      }
-    }
+    vec3 lightDir;
+    float attenuation = mlLightArrival(i, posVC, lightDir);
 #ifdef ML_IRRADIANCE_PROBES
     attenuation *= mlEmitterVisibility(hit.xy, i);
 #endif

@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "FinalGather.h"
 
-#include "Lookup.h"
 #include "MathConstants.h"
 #include "OrthonormalBasis.h"
 #include "ParallelFor.h"
@@ -22,6 +21,10 @@ namespace vlf
 {
 namespace
 {
+
+// Mirrors followed in a row from one gathered ray (a light path between two facing mirrors ends
+// there).
+constexpr int MirrorBounces = 4;
 
 // One emitter triangle for next-event estimation.
 struct EmitterTriangle
@@ -196,7 +199,6 @@ public:
     , Options(options)
     , Embree(field.Scene())
     , Light(CollectEmitters(field.Scene()))
-    , Look(field)
   {
   }
 
@@ -277,36 +279,13 @@ public:
       SceneRay ray;
       ray.Origin = x;
       ray.Direction = CosineDirection(u, v, n, r1, r2);
-      const SceneHit hit = this->Embree.Intersect(ray);
       ++result.Rays;
-      if (!hit.Hit() || hit.Triangle == SceneHit::None)
-      {
-        ++indirectValid; // escapes: nothing arrives
-        continue;
-      }
-      const std::uint32_t hs = this->Field.SurfaceOfTriangle(hit.Triangle);
-      if (hs == NoSurface)
-      {
-        continue;
-      }
-      const Surface& other = this->Field.Surfaces()[hs];
-      if (glm::dot(other.Normal, ray.Direction) >= 0.0f)
-      {
-        continue; // a back face: inside a solid or behind a one-sided surface
-      }
-      const glm::vec3 p = ray.Origin + hit.T * ray.Direction;
-      const SceneMaterial& m = this->Field.MaterialOf(hs);
       glm::vec3 l;
-      if (this->Field.StoresRadiance(hs) && this->Field.OwnedSubfields.empty())
+      if (this->ArrivingAlong(ray, l))
       {
-        l = this->Look.RadianceLeaving(hs, p, -ray.Direction);
+        indirect += glm::dvec3(l);
+        ++indirectValid;
       }
-      else
-      {
-        l = this->Field.SampleTexture(this->Field.TotalDiffuse, hs, p);
-      }
-      indirect += glm::dvec3(glm::max(l - m.Emission, glm::vec3(0.0f)));
-      ++indirectValid;
     }
     if (indirectValid == 0)
     {
@@ -426,7 +405,57 @@ public:
   const FinalGatherOptions& Options;
   EmbreeScene Embree;
   Emitters Light;
-  Lookup Look;
+  // The indirect radiance arriving at ray.Origin from ray.Direction: the diffuse radiance
+  // leaving the first diffuse surface hit, less its emission (the direct part, sampled apart).
+  // Mirrors (surfaces that store radiance) are followed by exact reflection, their Ks times the
+  // radiance arriving along the reflected ray (emission included: light reflected by a mirror is
+  // not in the direct part), plus their own diffuse radiance. Exact reflection is finer than the
+  // field's direction set, and needs no directional map, which under MPI only one rank holds.
+  // False where the ray meets a back face first (inside a solid or behind a one-sided surface).
+  bool ArrivingAlong(SceneRay ray, glm::vec3& radiance) const
+  {
+    radiance = glm::vec3(0.0f);
+    glm::vec3 throughput(1.0f);
+    for (int bounce = 0; bounce <= MirrorBounces; ++bounce)
+    {
+      const SceneHit hit = this->Embree.Intersect(ray);
+      if (!hit.Hit() || hit.Triangle == SceneHit::None)
+      {
+        return true; // escapes: nothing arrives
+      }
+      const std::uint32_t hs = this->Field.SurfaceOfTriangle(hit.Triangle);
+      if (hs == NoSurface)
+      {
+        return bounce > 0;
+      }
+      const Surface& other = this->Field.Surfaces()[hs];
+      if (glm::dot(other.Normal, ray.Direction) >= 0.0f)
+      {
+        return bounce > 0;
+      }
+      const glm::vec3 p = ray.Origin + hit.T * ray.Direction;
+      const SceneMaterial& m = this->Field.MaterialOf(hs);
+      glm::vec3 l = this->Field.SampleTexture(this->Field.TotalDiffuse, hs, p);
+      if (bounce == 0)
+      {
+        l = glm::max(l - m.Emission, glm::vec3(0.0f));
+      }
+      radiance += throughput * l;
+      if (!this->Field.StoresRadiance(hs))
+      {
+        return true;
+      }
+      throughput *= m.Specular;
+      if (!(glm::max(throughput.x, glm::max(throughput.y, throughput.z)) > 1e-4f))
+      {
+        return true;
+      }
+      ray.Direction = glm::reflect(ray.Direction, other.Normal);
+      ray.Origin = p + this->Offset * other.Normal;
+    }
+    return true;
+  }
+
   // Rays start this far off the surface (unit sphere): well below the coincident-face distance
   // (1e-4) and the Cornell light's 0.1 mm under its ceiling (2e-4 here), above float rounding
   // of unit-sphere coordinates.
