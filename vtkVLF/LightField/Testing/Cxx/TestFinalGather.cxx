@@ -13,6 +13,7 @@
 #include "AnalyticCases.h"
 #include "EmbreeScene.h"
 #include "FinalGather.h"
+#include "PathTracedTexels.h"
 #include "PathTracer.h"
 #include "Propagation.h"
 #include "Snapshot.h"
@@ -28,6 +29,7 @@ namespace
 {
 using namespace mesolight;
 using namespace mesolight::vlf;
+using mesolight::vlftest::PathTraced;
 
 LightFieldSettings Settings513x32()
 {
@@ -41,22 +43,6 @@ LightFieldSettings Settings513x32()
 glm::vec3 World(const LightField& field, const glm::vec3& unit)
 {
   return field.NormalizationCentre() + unit / field.NormalizationScale();
-}
-
-std::vector<glm::vec3> PathTraced(const TriangleScene& world, const LightField& field,
-  const std::vector<TexelPoint>& texels, int samples, std::uint64_t seed)
-{
-  EmbreeScene embree(world);
-  PathTracer tracer(embree);
-  return ReferenceAtTexels(field, texels,
-    [&](std::uint32_t triangle, const glm::vec3& point)
-    {
-      const std::uint64_t key = (static_cast<std::uint64_t>(triangle) << 40) ^
-        static_cast<std::uint64_t>(std::llround(point.x * 4096.0f + 1e6)) * 1000003ull ^
-        static_cast<std::uint64_t>(std::llround(point.y * 4096.0f + 1e6)) * 998244353ull ^
-        static_cast<std::uint64_t>(std::llround(point.z * 4096.0f + 1e6));
-      return tracer.DiffuseRadianceLeaving(triangle, point, samples, key * 31 + seed);
-    });
 }
 
 // RMS relative error of the floor texels (surface 0) at least one texel inside the floor

@@ -7,6 +7,7 @@
 //    bilateral filter keeps the texels next to the step within 5% and removes most of the
 //    noise; a box blur of the same width (the negative) moves them by far more.
 #include "EmbreeScene.h"
+#include "PathTracedTexels.h"
 #include "PathTracer.h"
 #include "Propagation.h"
 #include "TextureComparison.h"
@@ -21,23 +22,7 @@ namespace
 {
 using namespace mesolight;
 using namespace mesolight::vlf;
-
-std::vector<glm::vec3> PathTraced(const TriangleScene& world, const LightField& field,
-  const std::vector<TexelPoint>& texels, int samples, std::uint64_t seed)
-{
-  EmbreeScene embree(world);
-  PathTracer tracer(embree);
-  return ReferenceAtTexels(field, texels,
-    [&](std::uint32_t triangle, const glm::vec3& point)
-    {
-      // Random numbers keyed by the point itself, so the reference needs no per-texel state.
-      const std::uint64_t key = (static_cast<std::uint64_t>(triangle) << 40) ^
-        static_cast<std::uint64_t>(std::llround(point.x * 4096.0f + 1e6)) * 1000003ull ^
-        static_cast<std::uint64_t>(std::llround(point.y * 4096.0f + 1e6)) * 998244353ull ^
-        static_cast<std::uint64_t>(std::llround(point.z * 4096.0f + 1e6));
-      return tracer.DiffuseRadianceLeaving(triangle, point, samples, key * 31 + seed);
-    });
-}
+using mesolight::vlftest::PathTraced;
 
 TEST(VLFTextureFilter, LowersTheCornellBoxTexelErrors)
 {
