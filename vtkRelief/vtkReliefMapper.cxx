@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkReliefMapper.h"
 
+#include "vtkActor.h"
 #include "vtkAlgorithmOutput.h"
 #include "vtkAttachReliefTexture.h"
 #include "vtkExecutive.h"
@@ -11,12 +12,15 @@
 #include "vtkMinDepthPyramidTexture.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLHelper.h"
+#include "vtkOpenGLIndexBufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
+#include "vtkProperty.h"
 #include "vtkReliefGeometryCache.h"
 #include "vtkReliefShading.h"
 #include "vtkReliefTextureCache.h"
 #include "vtkRenderer.h"
 #include "vtkShader.h"
+#include "vtkShaderProperty.h"
 #include "vtkTextureObject.h"
 
 #include <algorithm>
@@ -229,7 +233,9 @@ void vtkReliefMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* actor)
 //------------------------------------------------------------------------------
 void vtkReliefMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* actor)
 {
-  if (this->ReadyToDraw)
+  // A shader that failed is not built again every frame (a compile per frame, and the compiler's
+  // message repeated) until something it is built from changes; nothing is drawn meanwhile.
+  if (this->ReadyToDraw && !this->ShaderStillFailing(actor))
   {
     this->Superclass::RenderPieceDraw(ren, actor);
   }
@@ -280,6 +286,41 @@ void vtkReliefMapper::UpdateShaders(vtkOpenGLHelper& cellBO, vtkRenderer* ren, v
                   << ") did not compile; nothing is drawn.");
   }
   this->ShaderFailed = failed;
+  if (failed)
+  {
+    this->FailedShaderInputsTime = this->ShaderInputsTime(actor);
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkMTimeType vtkReliefMapper::ShaderInputsTime(vtkActor* actor)
+{
+  vtkMTimeType time = std::max(this->GetMTime(), actor->GetMTime());
+  time = std::max(time, actor->GetProperty()->GetMTime());
+  time = std::max(time, actor->GetShaderProperty()->GetMTime());
+  if (this->CurrentInput)
+  {
+    time = std::max(time, this->CurrentInput->GetMTime());
+  }
+  return time;
+}
+
+//------------------------------------------------------------------------------
+bool vtkReliefMapper::ShaderStillFailing(vtkActor* actor)
+{
+  if (!this->ShaderFailed || this->ShaderInputsTime(actor) > this->FailedShaderInputsTime)
+  {
+    return false;
+  }
+  for (int i = PrimitiveStart; i < PrimitiveEnd; ++i)
+  {
+    if (this->Primitives[i].IBO->IndexCount &&
+      this->Shading->ShaderKeyChanged(&this->Primitives[i]))
+    {
+      return false;
+    }
+  }
+  return true;
 }
 
 //------------------------------------------------------------------------------

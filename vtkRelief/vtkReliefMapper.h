@@ -178,10 +178,20 @@ protected:
   vtkPolyData* PreparedInput = nullptr;
   bool ReadyToDraw = false;
   bool ShaderFailed = false;
+  // What the failed shader was built from (ShaderInputsTime); no build is tried again before it
+  // changes.
+  vtkMTimeType FailedShaderInputsTime = 0;
   // Stands in for a missing program while shaders are built (UpdateShaders).
   vtkNew<vtkShaderProgram> NoProgram;
 
 private:
+  // The latest modification of anything a shader is built from: this mapper and its relief
+  // property, the actor, its property and shader property, the drawn polydata.
+  vtkMTimeType ShaderInputsTime(vtkActor* actor);
+  // After a failed build: true while the same inputs would fail again, or the relief's shader key
+  // (textures, lights, probes present) is unchanged for every primitive.
+  bool ShaderStillFailing(vtkActor* actor);
+
   vtkReliefMapper(const vtkReliefMapper&) = delete;
   void operator=(const vtkReliefMapper&) = delete;
 };

@@ -22,6 +22,7 @@
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
 #include <vtkShaderProperty.h>
+#include <vtkStringOutputWindow.h>
 #include <vtkTexture.h>
 
 #include <gtest/gtest.h>
@@ -317,7 +318,8 @@ TEST(ReliefBadInput, DegeneratePlaneDrawsNothing)
 
 // A shader that does not compile (here broken through the actor's shader replacements, as a
 // user's edit could) is a clear error of the mapper and draws nothing, frame after frame; VTK
-// alone would crash on the failed program. Repaired, the same mapper draws again.
+// alone would crash on the failed program. It is not compiled again each frame (the compiler's
+// message would repeat) until what it is built from changes. Repaired, the same mapper draws again.
 TEST(ReliefBadInput, ShaderThatDoesNotCompileIsAnError)
 {
   vtkNew<vtkReliefMapper> mapper;
@@ -337,12 +339,21 @@ TEST(ReliefBadInput, ShaderThatDoesNotCompileIsAnError)
   auto window = MakeOffscreenWindow(size, renderer);
   vtkNew<mesolight_test::MessageCapture> messages;
   messages->Watch(mapper);
+  // The GLSL compiler's messages go to VTK's output window (vtkShaderProgram's errors).
+  vtkSmartPointer<vtkOutputWindow> previousOutput = vtkOutputWindow::GetInstance();
+  vtkNew<vtkStringOutputWindow> compilerLog;
+  vtkOutputWindow::SetInstance(compilerLog);
   const Frame broken = CaptureFrame(window);
+  const std::string afterFirstFrame = compilerLog->GetOutput();
   EXPECT_TRUE(mapper->GetShaderFailed());
   EXPECT_TRUE(messages->HasError("did not compile")) << messages->AllErrors();
+  EXPECT_NE(afterFirstFrame.find("vtkShaderProgram"), std::string::npos) << afterFirstFrame;
   EXPECT_EQ(CoveredPixels(broken), 0);
   EXPECT_EQ(CoveredPixels(CaptureFrame(window)), 0); // a second frame: no crash either
+  EXPECT_EQ(CoveredPixels(CaptureFrame(window)), 0);
   EXPECT_TRUE(mapper->GetShaderFailed());
+  EXPECT_EQ(compilerLog->GetOutput(), afterFirstFrame) << "compiled again with nothing changed";
+  vtkOutputWindow::SetInstance(previousOutput);
   actor->GetShaderProperty()->ClearAllShaderReplacements();
   const Frame repaired = CaptureFrame(window);
   EXPECT_FALSE(mapper->GetShaderFailed());
