@@ -7,7 +7,8 @@
 # installs it. Without it this script says so and exits 0.
 #
 # Usage: scripts/bench-relief-real-maps.sh OUTPUT.txt [extra bench relief options]
-#   (the table and summary go to OUTPUT.txt, the rows to OUTPUT.csv, the charts beside them)
+#   (the table and summary go to OUTPUT.txt, the rows to OUTPUT.csv, the charts beside them as
+#   OUTPUT-view<ANGLE>.png, so runs written to one folder keep their own charts)
 #   e.g. scripts/bench-relief-real-maps.sh docs/measurements/relief-real-maps/relief-real-maps.txt \
 #          --methods default,relief,relaxed-cone,max-mipmap --steps 8+8,10+8,16+8,32+8,64+8,128+8
 set -euo pipefail
@@ -32,7 +33,12 @@ fi
 shift
 prefix="${out%.txt}"
 mkdir -p "$(dirname "$prefix")"
+charts="$(mktemp -d)"
+trap 'rm -rf "$charts"' EXIT
 "$here/scripts/xvfb.sh" "$here/build/bin/mesolight" bench relief --maps file --depth-file "$list" \
-  --height --angles 45,70,85 --frames 3 --csv "$prefix.csv" --plots "$(dirname "$prefix")" "$@" \
+  --height --angles 45,70,85 --frames 3 --csv "$prefix.csv" --plots "$charts" "$@" \
   > "$prefix.txt"
-echo "wrote $prefix.txt and $prefix.csv"
+for chart in "$charts"/relief-sweep-view*.png; do
+  if [ -f "$chart" ]; then mv "$chart" "$prefix-${chart##*/relief-sweep-}"; fi
+done
+echo "wrote $prefix.txt, $prefix.csv and $prefix-view*.png"
