@@ -96,6 +96,7 @@ void vtkReliefSurfaceRepresentation::UpdateFieldLighting(vtkInformationVector* f
       static_cast<vtkCompositeReliefMapper*>(this->Mapper)->SetIrradianceProbesData(nullptr);
       static_cast<vtkCompositeReliefMapper*>(this->LODMapper)->SetIrradianceProbesData(nullptr);
       this->ReliefProperty->SetLights(nullptr);
+      this->ReliefProperty->RemoveDepthLimitPlane();
       this->UpdateDisplayTransform();
     }
     return;
@@ -195,6 +196,18 @@ void vtkReliefSurfaceRepresentation::UpdateFieldLighting(vtkInformationVector* f
   static_cast<vtkCompositeReliefMapper*>(this->Mapper)->SetIrradianceProbesData(kept);
   static_cast<vtkCompositeReliefMapper*>(this->LODMapper)->SetIrradianceProbesData(kept);
   this->ReliefProperty->SetLights(this->FieldLit ? this->FieldLights.Get() : nullptr);
+  // A relief mounted on a wall of the field replaces the wall: its depth lies behind its plane
+  // (by up to the depth scale), so without the limit the Light Field representation's wall a
+  // few mm behind the patch would hide the relief's deeper parts.
+  double origin[3], normal[3];
+  if (this->FieldLit && this->FieldSurface->GetDepthLimitPlane(origin, normal))
+  {
+    this->ReliefProperty->SetDepthLimitPlane(origin, normal);
+  }
+  else
+  {
+    this->ReliefProperty->RemoveDepthLimitPlane();
+  }
   this->UpdateDisplayTransform();
 }
 
