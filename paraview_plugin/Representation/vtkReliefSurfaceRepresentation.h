@@ -28,6 +28,12 @@
  * sums a distributed field's probes over the ranks). Problems (no field upstream, a field that
  * did not propagate, a surface that is not planar...) are reported as errors; the relief is then
  * drawn the ordinary way.
+ *
+ * A planar surface without texture coordinates gets those of its plane (the rule of the
+ * command line's reliefs: SurfacePlaneOf in vtkScene/core/SurfaceRelief.h, the depth image once
+ * over the surface's bounding rectangle in its plane, upright), computed over the whole surface
+ * (every rank's pieces under MPI), so no Texture Map to Plane is needed; a non-planar one is an
+ * error saying so (apply Texture Map to Plane / Cylinder / Sphere to it).
  */
 
 #ifndef vtkReliefSurfaceRepresentation_h
@@ -98,6 +104,9 @@ protected:
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  /** Plane texture coordinates for shown pieces without any (class comment). */
+  void AddPlaneTextureCoordinates();
 
   /** Lighting by the field of input port 1 (class comment), or none when it is not connected. */
   void UpdateFieldLighting(vtkInformationVector* fieldInput);
