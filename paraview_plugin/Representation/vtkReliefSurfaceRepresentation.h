@@ -22,7 +22,11 @@
  * (vtkReliefProperty::SetLights), then the Light Field representation's display transform:
  * exposure (0.18 / the field's log-average luminance with LightFieldAutoExposure, times
  * Exposure), Reinhard tone mapping (ToneMapping) and sRGB, so a relief on a wall of the scene
- * shows the same radiance as the same pixel value as the scene beside it. The probes are
+ * shows the same radiance as the same pixel value as the scene beside it. A surface mounted on a
+ * scene wall writes no depth behind the plane halfway to the wall
+ * (vtkLightFieldReliefSurface::GetDepthLimitPlane, vtkReliefProperty::SetDepthLimitPlane): the
+ * relief, which lies behind its surface by up to its depth, replaces the wall drawn by the Light
+ * Field representation instead of being hidden by it. The probes are
  * gathered again only when the field (a new propagation) or the shown geometry changes. Under
  * MPI every rank updates together (vtkLightFieldReliefSurface gathers the surface's pieces and
  * sums a distributed field's probes over the ranks). Problems (no field upstream, a field that
