@@ -7,6 +7,7 @@
 #include "vtkObjectFactory.h"
 #include "vtkReliefMessageForwarder.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <string>
@@ -46,6 +47,30 @@ void vtkReliefProperty::SetLights(vtkLightCollection* lights)
 vtkLightCollection* vtkReliefProperty::GetLights()
 {
   return this->Lights;
+}
+
+//------------------------------------------------------------------------------
+void vtkReliefProperty::SetDepthLimitPlane(const double origin[3], const double normal[3])
+{
+  if (this->HasDepthLimitPlane && std::equal(origin, origin + 3, this->DepthLimitOrigin) &&
+    std::equal(normal, normal + 3, this->DepthLimitNormal))
+  {
+    return;
+  }
+  std::copy(origin, origin + 3, this->DepthLimitOrigin);
+  std::copy(normal, normal + 3, this->DepthLimitNormal);
+  this->HasDepthLimitPlane = true;
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+void vtkReliefProperty::RemoveDepthLimitPlane()
+{
+  if (this->HasDepthLimitPlane)
+  {
+    this->HasDepthLimitPlane = false;
+    this->Modified();
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -152,6 +177,17 @@ void vtkReliefProperty::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SelfShadowing: " << (this->SelfShadowing ? "On" : "Off") << "\n";
   os << indent << "Silhouettes: " << (this->Silhouettes ? "On" : "Off") << "\n";
   os << indent << "WriteDepth: " << (this->WriteDepth ? "On" : "Off") << "\n";
+  os << indent << "DepthLimitPlane: ";
+  if (this->HasDepthLimitPlane)
+  {
+    os << "(" << this->DepthLimitOrigin[0] << ", " << this->DepthLimitOrigin[1] << ", "
+       << this->DepthLimitOrigin[2] << "), normal (" << this->DepthLimitNormal[0] << ", "
+       << this->DepthLimitNormal[1] << ", " << this->DepthLimitNormal[2] << ")\n";
+  }
+  else
+  {
+    os << "(none)\n";
+  }
   os << indent << "RepeatTexture: " << (this->RepeatTexture ? "On" : "Off") << "\n";
   os << indent << "FloatTextures: " << (this->FloatTextures ? "On" : "Off") << "\n";
   os << indent << "DeriveNormals: " << (this->DeriveNormals ? "On" : "Off") << "\n";

@@ -222,6 +222,25 @@ public:
 
   ///@{
   /**
+   * A plane the written depth goes no deeper than (world coordinates: a point on it and its
+   * normal toward the relief's front side; default none). The relief lies behind its surface by
+   * up to the depth scale; mounted a few mm in front of a wall drawn by another actor, its deep
+   * parts lie behind that wall, whose fragments then win the depth test and hide them. With the
+   * plane set between the two (vtkLightFieldReliefSurface::GetDepthLimitPlane), a view ray's
+   * depth is that of its hit or, where the hit is behind the plane, of the ray's crossing of the
+   * plane: the relief replaces the wall it is mounted on, as the command line's relief replaces
+   * the wall it hides (vtkLightFieldActor::AddHiddenSurface), and still orders by its true depth
+   * against anything in front of the plane. Only with WriteDepth.
+   */
+  void SetDepthLimitPlane(const double origin[3], const double normal[3]);
+  void RemoveDepthLimitPlane();
+  bool GetHasDepthLimitPlane() const { return this->HasDepthLimitPlane; }
+  vtkGetVector3Macro(DepthLimitOrigin, double);
+  vtkGetVector3Macro(DepthLimitNormal, double);
+  ///@}
+
+  ///@{
+  /**
    * How the relief is stored on the GPU (vtkReliefTextureCache). By default compactly, with
    * only what the method reads: 16-bit depth, 8-bit normals (octahedral), 8-bit cone ratios for
    * cone methods, a 16-bit min-depth pyramid for MaximumMipmap: 4 to 5 bytes per texel, the hits as
@@ -341,6 +360,9 @@ protected:
   bool SelfShadowing = true;
   bool Silhouettes = true;
   bool WriteDepth = true;
+  bool HasDepthLimitPlane = false;
+  double DepthLimitOrigin[3] = { 0.0, 0.0, 0.0 };
+  double DepthLimitNormal[3] = { 0.0, 0.0, 1.0 };
   bool RepeatTexture = false;
   bool FloatTextures = false;
   bool DeriveNormals = false;

@@ -89,7 +89,7 @@ std::string vtkReliefShaderSource::Key() const
 {
   vtkReliefProperty* p = this->Property;
   return std::to_string(p->GetMethod()) + (p->GetSelfShadowing() ? "S" : "s") +
-    (p->GetSilhouettes() ? "E" : "e") + (p->GetWriteDepth() ? "D" : "d") +
+    (p->GetSilhouettes() ? "E" : "e") + (p->GetWriteDepth() ? (p->GetHasDepthLimitPlane() ? "Z" : "D") : "d") +
     (this->HasAlbedoTexture ? "A" : "a") + std::to_string(p->GetOutput()) +
     (this->ConePacked ? "C" : "c") + (p->GetAdaptiveSteps() ? "V" : "v") +
     (p->GetLevelOfDetail() ? "L" : "l") + (this->HasLightSet ? "I" : "i") +
@@ -164,6 +164,10 @@ void vtkReliefShaderSource::ReplaceValuesAfter(std::string& fs, const void* cell
   if (p->GetWriteDepth())
   {
     defines += "#define ML_WRITE_DEPTH\n";
+    if (p->GetHasDepthLimitPlane())
+    {
+      defines += "#define ML_DEPTH_LIMIT\n";
+    }
   }
   if (this->HasAlbedoTexture)
   {
@@ -218,6 +222,9 @@ void vtkReliefShaderSource::ReplaceValuesAfter(std::string& fs, const void* cell
     "in vec2 mlTCoordVC;\n"
     "uniform int mlCameraParallel;\n"
     "uniform mat4 mlViewToClip;\n" +
+    std::string(p->GetWriteDepth() && p->GetHasDepthLimitPlane()
+        ? "uniform vec4 mlDepthLimitVC; // view coordinates: normal, offset (n . x + w = 0)\n"
+        : "") +
     vtkReliefHeightFieldFS +
     (p->GetMethod() == vtkReliefProperty::MaximumMipmap ? vtkReliefMaxMipmapFS : "") +
     vtkReliefMarchFS + vtkReliefLightingFS + (this->HasLightSet ? vtkReliefLightSetFS : "") +

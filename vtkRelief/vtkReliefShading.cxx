@@ -284,6 +284,27 @@ void vtkReliefShading::SetShaderParameters(
     }
   }
   program->SetUniformMatrix4x4("mlViewToClip", columnMajor);
+  if (p->GetWriteDepth() && p->GetHasDepthLimitPlane())
+  {
+    // The plane in view coordinates (the camera's view transform is rigid: the normal turns as
+    // a direction).
+    vtkMatrix4x4* view = camera->GetViewTransformMatrix();
+    const double* o = p->GetDepthLimitOrigin();
+    const double* n = p->GetDepthLimitNormal();
+    double originVC[4] = { o[0], o[1], o[2], 1.0 };
+    view->MultiplyPoint(originVC, originVC);
+    double normalVC[3];
+    for (int r = 0; r < 3; ++r)
+    {
+      normalVC[r] = view->GetElement(r, 0) * n[0] + view->GetElement(r, 1) * n[1] +
+        view->GetElement(r, 2) * n[2];
+    }
+    vtkMath::Normalize(normalVC);
+    const float plane[4] = { static_cast<float>(normalVC[0]), static_cast<float>(normalVC[1]),
+      static_cast<float>(normalVC[2]),
+      static_cast<float>(-vtkMath::Dot(normalVC, originVC)) };
+    program->SetUniform4f("mlDepthLimitVC", plane);
+  }
 
   // Tangents are surface directions: transform them with the linear part of model-view.
   vtkNew<vtkMatrix4x4> modelView;

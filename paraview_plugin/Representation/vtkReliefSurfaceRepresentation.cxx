@@ -20,7 +20,14 @@
 #include "vtkReliefProperty.h"
 #include "vtkVirtualLightField.h"
 
+#include "SurfaceRelief.h" // SurfacePlaneOf: the command line's plane rule
+#include "TriangleScene.h"
+
+#include "vtkCellArray.h"
+
 #include <algorithm>
+#include <exception>
+#include <vector>
 
 vtkStandardNewMacro(vtkReliefSurfaceRepresentation);
 
@@ -72,8 +79,127 @@ int vtkReliefSurfaceRepresentation::RequestData(
   {
     return 0;
   }
+  this->AddPlaneTextureCoordinates();
   this->UpdateFieldLighting(inputVector[1]);
   return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkReliefSurfaceRepresentation::AddPlaneTextureCoordinates()
+{
+  // The pieces delivered to the mapper: the multiblock maker's leaves (the geometry filter's
+  // polydata, shared or copied).
+  std::vector<vtkPolyData*> bare;
+  for (vtkDataObject* leaf :
+    mesolight::DataObjectLeaves(this->MultiBlockMaker->GetOutputDataObject(0)))
+  {
+    auto* poly = vtkPolyData::SafeDownCast(leaf);
+    if (poly && poly->GetNumberOfPoints() > 0 && !poly->GetPointData()->GetTCoords())
+    {
+      bare.push_back(poly);
+    }
+  }
+  // Every rank's representation updates together (one pipeline), so the collectives match.
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  const bool parallel = controller && controller->GetNumberOfProcesses() > 1;
+  int any = bare.empty() ? 0 : 1;
+  if (parallel)
+  {
+    int mine = any;
+    controller->AllReduce(&mine, &any, 1, vtkCommunicator::MAX_OP);
+  }
+  if (!any)
+  {
+    return;
+  }
+  // One frame for the whole surface: every rank's bare pieces.
+  vtkNew<vtkAppendPolyData> append;
+  for (vtkPolyData* poly : bare)
+  {
+    append->AddInputData(poly);
+  }
+  vtkNew<vtkPolyData> local;
+  if (!bare.empty())
+  {
+    append->Update();
+    local->ShallowCopy(append->GetOutput());
+  }
+  vtkSmartPointer<vtkPolyData> whole = local.Get();
+  if (parallel)
+  {
+    std::vector<vtkSmartPointer<vtkDataObject>> pieces;
+    controller->AllGather(local, pieces);
+    vtkNew<vtkAppendPolyData> all;
+    for (const auto& piece : pieces)
+    {
+      auto* poly = vtkPolyData::SafeDownCast(piece);
+      if (poly && poly->GetNumberOfPoints() > 0)
+      {
+        all->AddInputData(poly);
+      }
+    }
+    whole = vtkSmartPointer<vtkPolyData>::New();
+    if (all->GetNumberOfInputConnections(0) > 0)
+    {
+      all->Update();
+      whole->ShallowCopy(all->GetOutput());
+    }
+  }
+  mesolight::TriangleMesh mesh;
+  mesh.Positions.resize(static_cast<std::size_t>(whole->GetNumberOfPoints()));
+  for (vtkIdType i = 0; i < whole->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    whole->GetPoint(i, p);
+    mesh.Positions[static_cast<std::size_t>(i)] = glm::vec3(p[0], p[1], p[2]);
+  }
+  if (vtkCellArray* polys = whole->GetPolys())
+  {
+    vtkIdType count = 0;
+    const vtkIdType* ids = nullptr;
+    for (polys->InitTraversal(); polys->GetNextCell(count, ids);)
+    {
+      for (vtkIdType k = 1; k + 1 < count; ++k) // fans: a relief surface is planar
+      {
+        mesh.Triangles.emplace_back(static_cast<unsigned>(ids[0]), static_cast<unsigned>(ids[k]),
+          static_cast<unsigned>(ids[k + 1]));
+      }
+    }
+  }
+  std::vector<std::size_t> triangles(mesh.Triangles.size());
+  for (std::size_t t = 0; t < triangles.size(); ++t)
+  {
+    triangles[t] = t;
+  }
+  mesolight::SurfacePlane plane;
+  try
+  {
+    plane = mesolight::SurfacePlaneOf(mesh, triangles, "the Relief Surface's input");
+  }
+  catch (const std::exception& e)
+  {
+    // The same on every rank (the whole surface); the mapper then refuses the bare pieces.
+    vtkErrorMacro(<< e.what()
+                  << ". It has no texture coordinates, and only a planar surface gets its "
+                     "plane's: apply Texture Map to Plane (or Texture Map to Cylinder / Sphere) "
+                     "to it first.");
+    return;
+  }
+  for (vtkPolyData* poly : bare)
+  {
+    vtkNew<vtkFloatArray> tcoords;
+    tcoords->SetName("PlaneTextureCoordinates");
+    tcoords->SetNumberOfComponents(2);
+    tcoords->SetNumberOfTuples(poly->GetNumberOfPoints());
+    for (vtkIdType i = 0; i < poly->GetNumberOfPoints(); ++i)
+    {
+      double p[3];
+      poly->GetPoint(i, p);
+      const glm::vec2 uv = plane.TextureCoordinate(glm::vec3(p[0], p[1], p[2]));
+      tcoords->SetTuple2(i, uv.x, uv.y);
+    }
+    poly->GetPointData()->SetTCoords(tcoords);
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -96,6 +222,7 @@ void vtkReliefSurfaceRepresentation::UpdateFieldLighting(vtkInformationVector* f
       static_cast<vtkCompositeReliefMapper*>(this->Mapper)->SetIrradianceProbesData(nullptr);
       static_cast<vtkCompositeReliefMapper*>(this->LODMapper)->SetIrradianceProbesData(nullptr);
       this->ReliefProperty->SetLights(nullptr);
+      this->ReliefProperty->RemoveDepthLimitPlane();
       this->UpdateDisplayTransform();
     }
     return;
@@ -195,6 +322,18 @@ void vtkReliefSurfaceRepresentation::UpdateFieldLighting(vtkInformationVector* f
   static_cast<vtkCompositeReliefMapper*>(this->Mapper)->SetIrradianceProbesData(kept);
   static_cast<vtkCompositeReliefMapper*>(this->LODMapper)->SetIrradianceProbesData(kept);
   this->ReliefProperty->SetLights(this->FieldLit ? this->FieldLights.Get() : nullptr);
+  // A relief mounted on a wall of the field replaces the wall: its depth lies behind its plane
+  // (by up to the depth scale), so without the limit the Light Field representation's wall a
+  // few mm behind the patch would hide the relief's deeper parts.
+  double origin[3], normal[3];
+  if (this->FieldLit && this->FieldSurface->GetDepthLimitPlane(origin, normal))
+  {
+    this->ReliefProperty->SetDepthLimitPlane(origin, normal);
+  }
+  else
+  {
+    this->ReliefProperty->RemoveDepthLimitPlane();
+  }
   this->UpdateDisplayTransform();
 }
 

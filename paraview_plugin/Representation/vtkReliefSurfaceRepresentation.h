@@ -22,12 +22,22 @@
  * (vtkReliefProperty::SetLights), then the Light Field representation's display transform:
  * exposure (0.18 / the field's log-average luminance with LightFieldAutoExposure, times
  * Exposure), Reinhard tone mapping (ToneMapping) and sRGB, so a relief on a wall of the scene
- * shows the same radiance as the same pixel value as the scene beside it. The probes are
+ * shows the same radiance as the same pixel value as the scene beside it. A surface mounted on a
+ * scene wall writes no depth behind the plane halfway to the wall
+ * (vtkLightFieldReliefSurface::GetDepthLimitPlane, vtkReliefProperty::SetDepthLimitPlane): the
+ * relief, which lies behind its surface by up to its depth, replaces the wall drawn by the Light
+ * Field representation instead of being hidden by it. The probes are
  * gathered again only when the field (a new propagation) or the shown geometry changes. Under
  * MPI every rank updates together (vtkLightFieldReliefSurface gathers the surface's pieces and
  * sums a distributed field's probes over the ranks). Problems (no field upstream, a field that
  * did not propagate, a surface that is not planar...) are reported as errors; the relief is then
  * drawn the ordinary way.
+ *
+ * A planar surface without texture coordinates gets those of its plane (the rule of the
+ * command line's reliefs: SurfacePlaneOf in vtkScene/core/SurfaceRelief.h, the depth image once
+ * over the surface's bounding rectangle in its plane, upright), computed over the whole surface
+ * (every rank's pieces under MPI), so no Texture Map to Plane is needed; a non-planar one is an
+ * error saying so (apply Texture Map to Plane / Cylinder / Sphere to it).
  */
 
 #ifndef vtkReliefSurfaceRepresentation_h
@@ -98,6 +108,9 @@ protected:
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  /** Plane texture coordinates for shown pieces without any (class comment). */
+  void AddPlaneTextureCoordinates();
 
   /** Lighting by the field of input port 1 (class comment), or none when it is not connected. */
   void UpdateFieldLighting(vtkInformationVector* fieldInput);

@@ -192,6 +192,17 @@
 #endif
 #endif
 #ifdef ML_WRITE_DEPTH
-  vec4 mlClip = mlViewToClip * vec4(mlHitPos, 1.0);
+  vec3 mlDepthPos = mlHitPos;
+#ifdef ML_DEPTH_LIMIT
+  // No deeper than the limit plane (vtkReliefProperty::SetDepthLimitPlane): where the hit lies
+  // behind it, the view ray's crossing of the plane, between this fragment and its hit.
+  float mlAbove = max(dot(mlDepthLimitVC.xyz, mlPos) + mlDepthLimitVC.w, 0.0);
+  float mlHitAbove = dot(mlDepthLimitVC.xyz, mlHitPos) + mlDepthLimitVC.w;
+  if (mlHitAbove < 0.0)
+  {
+    mlDepthPos = mix(mlPos, mlHitPos, mlAbove / (mlAbove - mlHitAbove));
+  }
+#endif
+  vec4 mlClip = mlViewToClip * vec4(mlDepthPos, 1.0);
   gl_FragDepth = clamp(0.5 * (mlClip.z / mlClip.w) + 0.5, 0.0, 1.0);
 #endif

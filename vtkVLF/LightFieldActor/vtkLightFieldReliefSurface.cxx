@@ -112,6 +112,8 @@ struct SurfaceResult
   std::vector<float> Probes;
   double Frame[16] = {}; // origin, u axis, v axis, normal (unit sphere); centre, scale (world)
   double Diffuse[3] = {};
+  // The depth limit (world): a point, the front normal, 1 when the surface is mounted on a wall.
+  double Limit[7] = {};
   std::vector<double> Lights;
 };
 
@@ -164,6 +166,22 @@ SurfaceResult ComputeSurface(const vlf::LightField& field, vtkPolyData* whole, i
     result.Diffuse[c] = surface.Diffuse[c];
   }
   result.Frame[15] = field.NormalizationScale();
+  if (surface.FieldSurface != vlf::NoSurface)
+  {
+    // Halfway between the surface's plane and the wall's: in front of the wall by half their gap
+    // (no depth fight with it), behind the surface's own plane (its flat parts keep their depth).
+    const vlf::Surface& wall = field.Surfaces()[surface.FieldSurface];
+    const glm::dvec3 front(wall.Normal);
+    const double offset =
+      0.5 * (static_cast<double>(wall.Offset) + glm::dot(front, surface.Origin));
+    const glm::vec3 point = vlf::ToWorld(field, glm::vec3(front * offset));
+    for (int c = 0; c < 3; ++c)
+    {
+      result.Limit[c] = point[c];
+      result.Limit[3 + c] = front[c];
+    }
+    result.Limit[6] = 1.0;
+  }
   result.Lights = PackEmitterLights(field);
   return result;
 }
@@ -259,6 +277,7 @@ int vtkLightFieldReliefSurface::RequestData(
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   vtkImageData* probesOutput = vtkImageData::GetData(outputVector, 1);
   this->EmitterLights->RemoveAllItems();
+  std::fill(this->DepthLimit, this->DepthLimit + 7, 0.0);
   if (this->GetNumberOfInputConnections(1) > 0)
   {
     return this->RequestSurfaceData(vtkPolyData::GetData(inputVector[1], 0), output, probesOutput);
@@ -484,6 +503,7 @@ int vtkLightFieldReliefSurface::RequestSurfaceData(
         result.Probes.data(), static_cast<vtkIdType>(result.Probes.size()), root);
       controller->Broadcast(result.Frame, 16, root);
       controller->Broadcast(result.Diffuse, 3, root);
+      controller->Broadcast(result.Limit, 7, root);
       if (lights > 0)
       {
         controller->Broadcast(result.Lights.data(), lights, root);
@@ -498,6 +518,7 @@ int vtkLightFieldReliefSurface::RequestSurfaceData(
   FillProbesImage(probesOutput, result.Probes, n);
   AddPackedLights(result.Lights, this->EmitterLights);
   std::copy(result.Diffuse, result.Diffuse + 3, this->SurfaceDiffuse);
+  std::copy(result.Limit, result.Limit + 7, this->DepthLimit);
 
   // Port 0: this rank's piece, with normals and, when it has none, the plane's texture
   // coordinates (u, v of the frame at each point: world -> unit sphere -> texture).
@@ -544,6 +565,14 @@ int vtkLightFieldReliefSurface::RequestSurfaceData(
     output->GetPointData()->SetTCoords(tcoords);
   }
   return 1;
+}
+
+//------------------------------------------------------------------------------
+bool vtkLightFieldReliefSurface::GetDepthLimitPlane(double origin[3], double normal[3]) const
+{
+  std::copy(this->DepthLimit, this->DepthLimit + 3, origin);
+  std::copy(this->DepthLimit + 3, this->DepthLimit + 6, normal);
+  return this->DepthLimit[6] > 0.0;
 }
 
 //------------------------------------------------------------------------------

@@ -115,6 +115,18 @@ public:
   /** The surface's diffuse reflectance (Kd) after an update. */
   vtkGetVector3Macro(SurfaceDiffuse, double);
 
+  /**
+   * For a surface of input port 1 mounted on a scene surface (facing the same way, up to 5% of
+   * the scene radius in front of it: mesolight::vlf::ReliefSurfaceFromTriangles), after an
+   * update: the plane halfway between the two, world coordinates (a point, the front normal).
+   * A relief drawn on the surface should write no depth behind it
+   * (vtkReliefProperty::SetDepthLimitPlane): its depth lies behind its own plane by up to the
+   * depth scale, so deeper than a wall a few mm behind, which would hide it. False when the
+   * surface is mounted on none, and for a named surface (the wall itself, hidden by
+   * vtkLightFieldActor::AddHiddenSurface instead).
+   */
+  bool GetDepthLimitPlane(double origin[3], double normal[3]) const;
+
   vtkMTimeType GetMTime() override;
 
 protected:
@@ -139,6 +151,7 @@ private:
   std::string SurfaceName;
   int ProbesPerSide;
   double SurfaceDiffuse[3] = { 0.0, 0.0, 0.0 };
+  double DepthLimit[7] = { 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0 }; // point, normal, mounted
   vtkNew<vtkLightCollection> EmitterLights;
   const void* ExecutedField = nullptr; // the actor's field the outputs were made from
 };

@@ -27,6 +27,7 @@
 #include <vtkLight.h>
 #include <vtkLightCollection.h>
 #include <vtkNew.h>
+#include <vtkPlaneSource.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 
@@ -337,4 +338,46 @@ TEST(LightFieldReliefSurface, AVirtualLightFieldFiltersSceneHasNoNames)
   ASSERT_NE(vtkVirtualLightFieldCore::GetLightField(field), nullptr);
   EXPECT_TRUE(messages->HasError("a field propagated from polydata has no surface names"))
     << messages->AllErrors();
+}
+
+// A patch mounted 1.2 mm in front of the back wall (z = 559.2, facing -z) gets the depth limit
+// plane halfway between the two; a patch far from any wall and a named surface (the wall itself)
+// get none.
+TEST(LightFieldReliefSurface, AMountedPatchLimitsItsDepthHalfwayToTheWall)
+{
+  vtkNew<vtkCornellBoxSource> box;
+  vtkNew<vtkVirtualLightField> field;
+  field->SetInputConnection(box->GetOutputPort());
+  field->SetDirections(33);
+  field->SetRaysPerSide(8);
+  field->SetIterations(1);
+  field->FinalGatherOff();
+  const auto limitOf = [&](double z, double origin[3], double normal[3])
+  {
+    vtkNew<vtkPlaneSource> patch;
+    patch->SetOrigin(90.0, 90.0, z);
+    patch->SetPoint1(90.0, 470.0, z);
+    patch->SetPoint2(470.0, 90.0, z);
+    patch->Update();
+    vtkNew<vtkLightFieldReliefSurface> surface;
+    vtkNew<mesolight_test::MessageCapture> messages;
+    messages->Watch(surface);
+    surface->SetLightFieldConnection(field->GetOutputPort());
+    surface->SetSurfaceData(patch->GetOutput());
+    surface->SetProbesPerSide(2);
+    surface->Update();
+    EXPECT_TRUE(messages->Errors.empty()) << messages->AllErrors();
+    return surface->GetDepthLimitPlane(origin, normal);
+  };
+  double origin[3], normal[3];
+  ASSERT_TRUE(limitOf(558.0, origin, normal));
+  EXPECT_NEAR(origin[2], 0.5 * (558.0 + 559.2), 0.01);
+  EXPECT_NEAR(normal[0], 0.0, 1e-6);
+  EXPECT_NEAR(normal[1], 0.0, 1e-6);
+  EXPECT_NEAR(normal[2], -1.0, 1e-6);
+  EXPECT_FALSE(limitOf(300.0, origin, normal)) << "in the middle of the room: mounted on none";
+
+  ReliefSurfaceFixture named("back");
+  EXPECT_FALSE(named.Surface->GetDepthLimitPlane(origin, normal))
+    << "a named surface is the wall itself";
 }
