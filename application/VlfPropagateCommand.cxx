@@ -194,8 +194,8 @@ int Propagate(const std::vector<std::string>& args)
   cl.AddFlag("--resume", "continue the propagation stored in FIELD");
   cl.AddFlag("--force", "replace an existing light field FIELD (never any other file)");
   cl.AddFlag("--rank-report",
-    "print each rank's seconds (trace, iterations, snapshot writes; of which in MPI calls), "
-    "CPU seconds, peak memory and bytes sent");
+    "print each rank's seconds (trace, iterations, snapshot writes, final gather; of which in "
+    "MPI calls), CPU seconds, peak memory and bytes sent");
   cl.AddFlag("--no-gather",
     "keep the propagated diffuse textures: no final gather (exact rays from every texel to the "
     "emitters and into the field, FinalGather.h)");
@@ -314,6 +314,8 @@ int Propagate(const std::vector<std::string>& args)
     return 1024.0 * static_cast<double>(usage.ru_maxrss); // Linux: KiB
   };
   double tracedPeakRss = 0.0; // after tracing (or reading) the field, before propagating
+  double gatherSeconds = 0.0, gatherCollective = 0.0; // the final gather (with --rank-report)
+  vlf::FinalGatherReport gatherReport;
   if (!root)
   {
     std::cout.setstate(std::ios::failbit); // one rank speaks; errors are agreed, rank 0 prints
@@ -539,15 +541,28 @@ int Propagate(const std::vector<std::string>& args)
     }
     if (gather)
     {
-      // Every rank gathers the whole textures (the same random numbers: the same result); the
-      // file gets the gathered totals and keeps the propagated ones for --resume.
+      // Each rank gathers its share of the texels and one sum gives every rank the whole
+      // (FinalGather.h: the serial textures); the file gets the gathered totals and keeps the
+      // propagated ones for --resume.
       const Clock::time_point gatherStart = Clock::now();
+      const double gatherCollectiveBefore = reducer.Seconds;
       gatherOptions.Progress = root ? PrintedProgress("final gather") : ProgressCallback();
-      const vlf::FinalGatherReport g = vlf::FinalGather(*field, gatherOptions);
+      gatherOptions.Reduce = distributed ? &reducer : nullptr;
+      gatherReport = vlf::FinalGather(*field, gatherOptions);
+      gatherSeconds = SecondsSince(gatherStart);
+      gatherCollective = reducer.Seconds - gatherCollectiveBefore;
       if (root)
       {
-        std::printf("final gather: %zu texels, %.3g rays in %.2f s\n", g.Texels,
-          static_cast<double>(g.Rays), SecondsSince(gatherStart));
+        std::printf("final gather: %zu texels, %.3g rays in %.2f s", gatherReport.Texels,
+          static_cast<double>(gatherReport.Rays), gatherSeconds);
+        if (distributed)
+        {
+          std::printf(" (split over %d ranks: rank 0 gathered %zu texels in %.2f s, %llu bytes "
+                      "summed per rank)",
+            reducer.Size(), gatherReport.OwnTexels, gatherReport.OwnSeconds,
+            static_cast<unsigned long long>(gatherReport.CombinedBytes));
+        }
+        std::printf("\n");
         std::fflush(stdout);
       }
       snapshot(*field);
@@ -566,7 +581,7 @@ int Propagate(const std::vector<std::string>& args)
     if (rankReport)
     {
       // One row per rank, summed onto every rank (each fills its own), printed by rank 0.
-      constexpr std::size_t columns = 14;
+      constexpr std::size_t columns = 18;
       std::vector<double> rows(columns * static_cast<std::size_t>(reducer.Size()), 0.0);
       rusage usage{};
       ::getrusage(RUSAGE_SELF, &usage);
@@ -579,10 +594,12 @@ int Propagate(const std::vector<std::string>& args)
       }
       const double collective = reducer.Seconds;
       const double mine[columns] = { traceSeconds, traceCollective, iterationSeconds,
-        collective - traceCollective - writeCollective, writeTotal, writeCollective, cpu, peakRss(),
+        collective - traceCollective - writeCollective - gatherCollective, writeTotal,
+        writeCollective, cpu, peakRss(),
         static_cast<double>(field->AllocatedBytes()), static_cast<double>(owned),
         static_cast<double>(controllerReducer.BytesContributed()), iterationCpu, iterationMpiCpu,
-        tracedPeakRss };
+        tracedPeakRss, gatherSeconds, gatherReport.OwnSeconds, gatherCollective,
+        static_cast<double>(gatherReport.OwnTexels) };
       std::copy(
         mine, mine + columns, rows.begin() + columns * static_cast<std::size_t>(reducer.Rank()));
       reducer.SumInPlace(rows.data(), rows.size());
@@ -592,9 +609,10 @@ int Propagate(const std::vector<std::string>& args)
         std::printf("rank %d: trace %.3f s (in MPI %.3f s), iterations %.3f s (in MPI %.3f s), "
                     "snapshot writes %.3f s (in MPI %.3f s), cpu %.3f s, peak RSS %.0f bytes, "
                     "holds %.0f bytes, %.0f directions, sent %.0f bytes, iteration cpu %.3f s "
-                    "(in MPI %.3f s), peak RSS after trace %.0f bytes\n",
+                    "(in MPI %.3f s), peak RSS after trace %.0f bytes, final gather %.3f s "
+                    "(own share %.3f s, in MPI %.3f s, %.0f texels)\n",
           r, v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7], v[8], v[9], v[10], v[11], v[12],
-          v[13]);
+          v[13], v[14], v[15], v[16], v[17]);
       }
       std::fflush(stdout);
     }

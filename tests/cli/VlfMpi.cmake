@@ -1,8 +1,9 @@
 # SPDX-License-Identifier: BSD-3-Clause
 # `mpiexec -n N mesolight vlf propagate`: the directions split over N ranks give the serial field
 # (every texel of the total diffuse textures within 1e-5, compared by COMPARE, the distributed
-# test program), a field resumes on another rank count to the same field, and a rank that fails
-# (a scene it cannot read, a budget it refuses) stops every rank with that rank's message.
+# test program; the final gather split over the ranks too), a field resumes on another rank
+# count to the same field, and a rank that fails (a scene it cannot read, a budget it refuses)
+# stops every rank with that rank's message.
 include("${CMAKE_CURRENT_LIST_DIR}/RunTool.cmake")
 cli_fresh_work()
 set(MPI_RUN_TIMEOUT 30)
@@ -22,11 +23,18 @@ foreach (ranks IN ITEMS 2) # 3 ranks: the resume below
   if (NOT DEFINED ENV{VTK_SMP_MAX_THREADS} AND NOT last_output MATCHES "[0-9]+ threads? per rank")
     message(FATAL_ERROR "no thread count per rank: ${last_output}")
   endif ()
+  # The final gather (on by default) split over the ranks, the file the serial one's.
+  if (NOT last_output MATCHES "final gather: [^\n]*split over ${ranks} ranks")
+    message(FATAL_ERROR "the final gather was not split over ${ranks} ranks: ${last_output}")
+  endif ()
   same_field("${WORK}/serial.vlf" "${WORK}/ranks-${ranks}.vlf" TRUE)
 endforeach ()
 # Written by 2 ranks, resumed by 3 (every rank reads it and keeps its share).
 mpi_run(TRUE -n 2 "${CLI}" vlf propagate ${small} --iterations 2 --out "${WORK}/resumed.vlf")
 mpi_run(TRUE -n 3 "${CLI}" vlf propagate --resume --iterations 3 --out "${WORK}/resumed.vlf")
+if (NOT last_output MATCHES "final gather: [^\n]*split over 3 ranks")
+  message(FATAL_ERROR "the resumed field's gather was not split over 3 ranks: ${last_output}")
+endif ()
 same_field("${WORK}/serial.vlf" "${WORK}/resumed.vlf" TRUE)
 # One rank fails: every rank stops (no hang: the timeout), the message names the rank.
 set(obj "${PROJECT_SOURCE_DIR}/examples/data/cornell-box.obj")

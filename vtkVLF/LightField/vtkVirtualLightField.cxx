@@ -534,9 +534,9 @@ int vtkVirtualLightField::RequestDistributedData(vtkPolyData* input, vtkPolyData
     };
     const double unshot = PropagateAsConfigured(*field, this->Iterations,
       this->ConvergenceTolerance, this->MaxIterations, options, afterIteration);
-    // The diffuse textures are whole on every rank: each gathers all of them (the same random
-    // numbers, so the same result), reading mirrors' diffuse textures only (FinalGather.h).
-    this->GatherIfAsked(*field, gatherShare);
+    // The diffuse textures are whole on every rank: each gathers its share of the texels and
+    // one sum gives every rank all of them, the serial result (FinalGather.h).
+    this->GatherIfAsked(*field, gatherShare, &reducer);
     if (snapshots && this->FinalGather)
     {
       vlf::WriteDistributedSnapshot(*field, this->SnapshotFileName, reducer);
@@ -633,7 +633,8 @@ vtkFloatArray* vtkVirtualLightField::GetAttachedAtlas(vtkDataObject* data, int s
   return pixels;
 }
 
-void vtkVirtualLightField::GatherIfAsked(mesolight::vlf::LightField& field, double begin)
+void vtkVirtualLightField::GatherIfAsked(
+  mesolight::vlf::LightField& field, double begin, mesolight::vlf::Reducer* reducer)
 {
   if (!this->FinalGather)
   {
@@ -643,6 +644,7 @@ void vtkVirtualLightField::GatherIfAsked(mesolight::vlf::LightField& field, doub
   mesolight::vlf::FinalGatherOptions options;
   options.IndirectRays = this->FinalGatherRays;
   options.Progress = mesolight::AlgorithmProgress(this, begin, 1.0);
+  options.Reduce = reducer;
   mesolight::vlf::FinalGather(field, options);
 }
 

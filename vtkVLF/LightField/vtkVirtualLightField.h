@@ -65,6 +65,7 @@ namespace mesolight
 namespace vlf
 {
 class LightField;
+class Reducer;
 }
 }
 
@@ -255,8 +256,10 @@ private:
   bool DistributeDirections = true;
   bool FinalGather = true;
   int FinalGatherRays = 1024; // mesolight::vlf::FinalGatherOptions::IndirectRays
-  // The final gather (when on) with progress from `begin` to 1, then the snapshot written again.
-  void GatherIfAsked(mesolight::vlf::LightField& field, double begin);
+  // The final gather (when on) with progress from `begin` to 1, then the snapshot written again;
+  // with a reducer (a distributed field) split over the ranks (collective).
+  void GatherIfAsked(mesolight::vlf::LightField& field, double begin,
+    mesolight::vlf::Reducer* reducer = nullptr);
   int DirectionsPropagated = 0;
   int PropagationCount = 0;
   std::unique_ptr<mesolight::vlf::LightField> Field;

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "FinalGather.h"
 
+#include "Distribution.h"
+
 #include "MathConstants.h"
 #include "OrthonormalBasis.h"
 #include "ParallelFor.h"
@@ -11,6 +13,7 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
@@ -493,47 +496,105 @@ FinalGatherReport FinalGather(LightField& field, const FinalGatherOptions& optio
       }
     }
   }
-  std::vector<TexelResult> results(work.size());
-  // Rounds of work between progress reports: abort is checked between them.
-  const std::size_t rounds = std::max<std::size_t>(1, std::min<std::size_t>(50, work.size() / 256));
-  for (std::size_t round = 0; round < rounds; ++round)
+  // This rank's share: every ranks-th block of the texels with triangles (FinalGather.h).
+  const std::size_t ranks =
+    options.Reduce ? static_cast<std::size_t>(std::max(1, options.Reduce->Size())) : 1;
+  const std::size_t rank =
+    options.Reduce ? static_cast<std::size_t>(std::max(0, options.Reduce->Rank())) : 0;
+  // The o-th texel of this rank's share is work[ownIndex(o)].
+  const auto ownIndex = [&](std::size_t o)
   {
-    if (!ReportProgress(options.Progress, static_cast<double>(round) / rounds))
+    return (o / GatherBlockTexels * ranks + rank) * GatherBlockTexels + o % GatherBlockTexels;
+  };
+  std::size_t ownCount = 0;
+  for (std::size_t first = rank * GatherBlockTexels; first < work.size();
+       first += ranks * GatherBlockTexels)
+  {
+    ownCount += std::min(GatherBlockTexels, work.size() - first);
+  }
+  // Per texel with triangles: its value and 1 where gathered, zeros where another rank gathers.
+  std::vector<float> shares(4 * work.size(), 0.0f);
+  std::atomic<std::uint64_t> ownRays{ 0 };
+  const auto gatherOwn = [&]()
+  {
+    // Rounds of work between progress reports: abort is checked between them.
+    const std::size_t rounds =
+      std::max<std::size_t>(1, std::min<std::size_t>(50, ownCount / 256));
+    for (std::size_t round = 0; round < rounds; ++round)
+    {
+      if (!ReportProgress(options.Progress, static_cast<double>(round) / rounds))
+      {
+        throw AbortedError();
+      }
+      const std::size_t begin = ownCount * round / rounds;
+      const std::size_t end = ownCount * (round + 1) / rounds;
+      ParallelFor(begin, end, 16,
+        [&](std::size_t b, std::size_t e)
+        {
+          std::uint64_t rays = 0;
+          for (std::size_t o = b; o < e; ++o)
+          {
+            const std::size_t i = ownIndex(o);
+            const Surface& s = surfaces[work[i].first];
+            const int a =
+              static_cast<int>(work[i].second % static_cast<std::uint32_t>(s.TextureWidth));
+            const int bb =
+              static_cast<int>(work[i].second / static_cast<std::uint32_t>(s.TextureWidth));
+            const TexelResult r = gatherer.Gather(
+              work[i].first, buckets[work[i].first], a, bb, s.TexelOffset + work[i].second);
+            rays += r.Rays;
+            if (r.Gathered)
+            {
+              shares[4 * i] = r.Value.x;
+              shares[4 * i + 1] = r.Value.y;
+              shares[4 * i + 2] = r.Value.z;
+              shares[4 * i + 3] = 1.0f;
+            }
+          }
+          ownRays += rays;
+        });
+    }
+    if (!ReportProgress(options.Progress, 1.0))
     {
       throw AbortedError();
     }
-    const std::size_t begin = work.size() * round / rounds;
-    const std::size_t end = work.size() * (round + 1) / rounds;
-    ParallelFor(begin, end, 16,
-      [&](std::size_t b, std::size_t e)
-      {
-        for (std::size_t i = b; i < e; ++i)
-        {
-          const Surface& s = surfaces[work[i].first];
-          const int a = static_cast<int>(work[i].second % static_cast<std::uint32_t>(s.TextureWidth));
-          const int bb = static_cast<int>(work[i].second / static_cast<std::uint32_t>(s.TextureWidth));
-          results[i] = gatherer.Gather(
-            work[i].first, buckets[work[i].first], a, bb, s.TexelOffset + work[i].second);
-        }
-      });
-  }
-  if (!ReportProgress(options.Progress, 1.0))
+  };
+  if (options.Reduce)
   {
-    throw AbortedError();
+    Agree(*options.Reduce, gatherOwn); // an abort on one rank stops every rank before the sum
+  }
+  else
+  {
+    gatherOwn();
+  }
+  report.OwnTexels = ownCount;
+  report.OwnRays = ownRays.load();
+  report.OwnSeconds =
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  report.Rays = report.OwnRays;
+  if (ranks > 1)
+  {
+    // One sum combines the shares: a value plus the other ranks' zeros is that value exactly.
+    options.Reduce->SumInPlace(shares.data(), shares.size());
+    double rays = static_cast<double>(report.OwnRays);
+    options.Reduce->SumInPlace(&rays, 1);
+    report.Rays = static_cast<std::uint64_t>(rays);
+    report.CombinedBytes = shares.size() * sizeof(float) + sizeof(double);
   }
   std::vector<glm::vec3> gathered = field.TotalDiffuse;
   std::vector<std::uint8_t> done(gathered.size(), 0);
   for (std::size_t i = 0; i < work.size(); ++i)
   {
-    report.Rays += results[i].Rays;
-    if (results[i].Gathered)
+    if (shares[4 * i + 3] > 0.5f)
     {
       const std::size_t texel = surfaces[work[i].first].TexelOffset + work[i].second;
-      gathered[texel] = results[i].Value;
+      gathered[texel] = glm::vec3(shares[4 * i], shares[4 * i + 1], shares[4 * i + 2]);
       done[texel] = 1;
       ++report.Texels;
     }
   }
+  shares.clear();
+  shares.shrink_to_fit();
   // Texels without a point in the open: the mean of their gathered 8-neighbours, ring after
   // ring (up to 16), so that bilinear reads near an edge or a contact blend gathered values
   // only, never a propagated texel finer than the lines (which may hold nothing).

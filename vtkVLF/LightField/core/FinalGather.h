@@ -27,10 +27,22 @@
 // The propagated totals are kept in LightField::PropagatedDiffuse: the sent radiance of the
 // lines (SentRadiance: total less unshot) then follows the gathered value, and a resumed
 // propagation (Propagation.h) restores the propagated totals first.
+//
+// Distributed over MPI ranks (Distribution.h). The gather reads only what every rank holds
+// alike after a distributed propagation: the scene and the total diffuse textures (mirrors are
+// followed by exact reflection, never through the directional maps a rank holds a share of). So
+// the texels are split, not the directions: each rank gathers every ranks-th block of
+// GatherBlockTexels texels with triangles (texels cost alike -- the same ray counts -- and
+// interleaved blocks spread the costlier regions, such as texels facing a mirror, over every
+// rank), and one sum over the ranks (16 bytes a texel with triangles: the value and whether it
+// was gathered, zeros from the other ranks) gives every rank every gathered value; each rank
+// then fills the texels in the shade of triangles alike. A texel's random numbers follow from its
+// index (SampleSeed), and a float plus zeros is that float: the textures are the serial gather's
+// bit for bit, on any number of ranks.
 #ifndef mesolight_vlf_FinalGather_h
 #define mesolight_vlf_FinalGather_h
 
-#include "LightField.h"
+#include "LightField.h" // and class Reducer (Distribution.h)
 
 #include <cstdint>
 
@@ -54,20 +66,35 @@ struct FinalGatherOptions
   std::uint64_t Sequence = 1;
   // Progress in [0, 1]; false aborts (AbortedError, the textures unchanged).
   ProgressCallback Progress;
+  // Distributed field: this rank gathers its share of the texels and the shares are summed over
+  // the ranks (see above); failures are agreed (Agree). Collective. nullptr = one process.
+  Reducer* Reduce = nullptr;
 };
+
+// Texels with triangles per block of the split between ranks (every rank gathers every
+// ranks-th block).
+constexpr std::size_t GatherBlockTexels = 64;
 
 struct FinalGatherReport
 {
   std::size_t Texels = 0;   // texels gathered (with a point on a triangle in the open)
   std::size_t Filled = 0;   // texels filled from gathered neighbours
-  std::uint64_t Rays = 0;   // rays cast (indirect and shadow)
+  std::uint64_t Rays = 0;   // rays cast (indirect and shadow), by every rank
   double Seconds = 0.0;
+  // This rank's share (all of them in one process): texels with triangles it gathered, the rays
+  // it cast, and the seconds it spent gathering them (before the combination).
+  std::size_t OwnTexels = 0;
+  std::uint64_t OwnRays = 0;
+  double OwnSeconds = 0.0;
+  std::uint64_t CombinedBytes = 0; // this rank's contribution to the combining sum (0: one rank)
 };
 
 // Gathers every texel of every surface (see above) and replaces field.TotalDiffuse with the
 // result, the propagated totals moved to field.PropagatedDiffuse (a second gather starts from
 // those again). Throws std::invalid_argument for non-positive ray counts, AbortedError when the
-// progress callback returns false (the field unchanged).
+// progress callback returns false (the field unchanged). With options.Reduce of several ranks:
+// collective, every rank ends with the same textures; a failure on one rank throws
+// DistributedError on the others (the field unchanged on every rank).
 FinalGatherReport FinalGather(LightField& field, const FinalGatherOptions& options = {});
 
 // Undoes FinalGather: the propagated totals back into TotalDiffuse (nothing when not gathered).

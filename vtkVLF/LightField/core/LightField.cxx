@@ -705,7 +705,9 @@ std::uint64_t LightField::AllocatedBytes() const
       f.Cells.Bytes() + f.Entries.capacity() * sizeof(TileEntry) +
       f.TileStart.capacity() * sizeof(std::uint32_t) + sizeof(Subfield);
   }
-  bytes += (this->TotalDiffuse.capacity() + this->UnshotDiffuse.capacity()) * sizeof(glm::vec3) +
+  bytes += (this->TotalDiffuse.capacity() + this->UnshotDiffuse.capacity() +
+             this->PropagatedDiffuse.capacity()) *
+      sizeof(glm::vec3) +
     this->Capacity.capacity() * sizeof(float);
   return bytes;
 }

@@ -174,7 +174,11 @@ struct MemoryEstimate
   std::size_t Texels = 0;
   std::uint64_t MapCells = 0;     // crossings: lattice points in the projected triangles
   std::uint64_t MapBytes = 0;     // cell indices, tile lists, stored depths and mirror radiance
-  std::uint64_t TextureBytes = 0; // total, unshot, capacity (+ per-block receive buffers)
+  // total, unshot, capacity, + the larger of the per-block receive buffers and GatherBytes
+  std::uint64_t TextureBytes = 0;
+  // The final gather's working memory (FinalGather.h): its shares, its copy of the totals (kept
+  // afterwards beside the propagated ones), triangle lists
+  std::uint64_t GatherBytes = 0;
   std::uint64_t TotalBytes = 0;
   std::string Describe() const; // "1.23 GiB (maps 1.2 GiB for 2.1e7 cells, textures 3 MiB)"
 };
@@ -226,7 +230,8 @@ public:
   }
   bool HasSpecular() const { return this->AnySpecular; }
   const MemoryEstimate& Estimate() const { return this->EstimateUsed; }
-  std::uint64_t AllocatedBytes() const; // what the maps and textures hold now
+  // What the maps and textures hold now (with the propagated totals a gathered field keeps).
+  std::uint64_t AllocatedBytes() const;
   // The radiance maps to their compact form (RadianceStorage.h): propagation's float
   // accumulators become shared-exponent words. The next propagation turns them back.
   void CompactRadiance();

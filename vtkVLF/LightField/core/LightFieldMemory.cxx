@@ -155,9 +155,18 @@ MemoryEstimate EstimateFor(const TriangleScene& scene, const std::vector<Surface
     (specular ? c.SpecularCrossings * 2 * sizeof(glm::vec3) : 0) +
     directions.Size() * ((tiles + 1) * sizeof(std::uint32_t) + sizeof(Subfield));
   const std::uint64_t blocks = DefaultBlockCount(directions.Size());
-  // total + unshot + capacity, and one receive buffer per worker block during propagation.
-  e.TextureBytes =
-    e.Texels * (2 * sizeof(glm::vec3) + sizeof(float)) + blocks * e.Texels * sizeof(glm::vec3);
+  // The final gather's working memory (FinalGather.cxx), counted as if every texel had
+  // triangles: the shares summed over the ranks (value and flag, 4 floats), the working copy of
+  // the totals (which then stays as the gathered totals, the propagated ones kept beside them:
+  // AllocatedBytes counts both), the per-texel triangle lists' starts and about one entry, and
+  // two flag bytes.
+  e.GatherBytes = e.Texels *
+    (4 * sizeof(float) + sizeof(glm::vec3) + 2 * sizeof(std::uint32_t) + 2 * sizeof(std::uint8_t));
+  // total + unshot + capacity (+ the propagated totals a gathered field keeps), and the larger
+  // of one receive buffer per worker block during propagation and the final gather's working
+  // memory (the two never overlap).
+  e.TextureBytes = e.Texels * (2 * sizeof(glm::vec3) + sizeof(float)) +
+    std::max<std::uint64_t>(blocks * e.Texels * sizeof(glm::vec3), e.GatherBytes);
   e.TotalBytes = e.MapBytes + e.TextureBytes;
   return e;
 }

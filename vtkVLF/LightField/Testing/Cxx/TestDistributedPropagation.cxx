@@ -15,8 +15,15 @@
 //                                          unshot specular maps, the energy, and the mirrors'
 //                                          lookups (each rank asking its own points) equal the
 //                                          serial field's; a rank's own answers alone differ
+//   TestDistributedPropagation gather OBJ  the final gather split over the ranks (FinalGather.h)
+//                                          on a scene with mirrors: equal to the serial gather,
+//                                          bit for bit to this rank's own gather of the same
+//                                          field; every texel gathered by exactly one rank, the
+//                                          shares balanced; an abort on one rank stops all; with
+//                                          the shares not combined the textures differ
 // Exit 0 when every check holds on this rank.
 #include "Distribution.h"
+#include "FinalGather.h"
 #include "LightField.h"
 #include "Lookup.h"
 #include "ObjScene.h"
@@ -403,6 +410,108 @@ int Mirror(vtkMultiProcessController* controller, const std::string& obj, const 
   return Failures;
 }
 
+// A reducer that leaves the float sums out (the agreements, in doubles, still run): a
+// distributed final gather through it keeps each rank's share uncombined.
+class NotCombining : public vlf::Reducer
+{
+public:
+  explicit NotCombining(vlf::Reducer& inner)
+    : Inner(inner)
+  {
+  }
+  int Rank() const override { return this->Inner.Rank(); }
+  int Size() const override { return this->Inner.Size(); }
+  void SumInPlace(float*, std::size_t) override {}
+  void SumInPlace(double* data, std::size_t n) override { this->Inner.SumInPlace(data, n); }
+  void Broadcast(std::string& bytes, int root) override { this->Inner.Broadcast(bytes, root); }
+  void Send(const std::string& bytes, int to) override { this->Inner.Send(bytes, to); }
+  std::string Receive(int from) override { return this->Inner.Receive(from); }
+
+private:
+  vlf::Reducer& Inner;
+};
+
+int Gather(vtkMultiProcessController* controller, const std::string& obj)
+{
+  vlf::ControllerReducer reducer(controller);
+  const int ranks = reducer.Size();
+  const mesolight::TriangleScene scene = mesolight::ReadObjScene(obj).Scene;
+  const int iterations = 3;
+  vlf::FinalGatherOptions options; // fewer rays than the default: the split, not the noise
+  options.IndirectRays = 64;
+  options.DirectSamples = 16;
+  std::unique_ptr<vlf::LightField> serial = vlf::LightField::Build(scene, SmallSettings());
+  Check(serial->HasSpecular(), "the scene has mirrors (the gather follows them)");
+  vlf::Propagate(*serial, iterations);
+  const vlf::FinalGatherReport serialReport = vlf::FinalGather(*serial, options);
+
+  std::unique_ptr<vlf::LightField> field =
+    vlf::LightField::Build(scene, SmallSettings(), {}, &reducer);
+  vlf::PropagationOptions propagation;
+  propagation.Reduce = &reducer;
+  vlf::Propagate(*field, iterations, propagation);
+  const std::vector<glm::vec3> propagated = field->TotalDiffuse;
+  vlf::FinalGatherOptions distributed = options;
+  distributed.Reduce = &reducer;
+  const std::uint64_t before = reducer.BytesContributed();
+  const vlf::FinalGatherReport report = vlf::FinalGather(*field, distributed);
+  const std::uint64_t bytes = reducer.BytesContributed() - before;
+  const std::vector<glm::vec3> gathered = field->TotalDiffuse;
+  const double worst = WorstRelative(gathered, serial->TotalDiffuse);
+  std::printf("rank %d of %d: final gather of %zu texels (%zu own), worst relative texel "
+              "difference to the serial gather %.3g, %llu bytes contributed\n",
+    Rank, ranks, report.Texels, report.OwnTexels, worst, static_cast<unsigned long long>(bytes));
+  Check(worst <= 1e-5, "the distributed final gather equals the serial one within 1e-5");
+  Check(WorstRelative(gathered, propagated) > 1e-2, "the gather changed the textures");
+  Check(field->PropagatedDiffuse == propagated, "the propagated totals kept");
+  Check(report.Texels == serialReport.Texels && report.Filled == serialReport.Filled,
+    "as many texels gathered and filled as the serial gather");
+  Check(report.Rays == serialReport.Rays, "as many rays in all as the serial gather");
+  // Every texel with triangles gathered by exactly one rank, the shares within a block of even.
+  double shares[2] = { static_cast<double>(report.OwnTexels), static_cast<double>(report.OwnRays) };
+  reducer.SumInPlace(shares, 2);
+  std::vector<double> own(static_cast<std::size_t>(ranks), 0.0);
+  own[static_cast<std::size_t>(Rank)] = static_cast<double>(report.OwnTexels);
+  reducer.SumInPlace(own.data(), own.size());
+  const double even = shares[0] / ranks;
+  for (const double o : own)
+  {
+    Check(std::abs(o - even) <= static_cast<double>(vlf::GatherBlockTexels),
+      "a rank's share within a block of " + std::to_string(even) + " texels: " +
+        std::to_string(o));
+  }
+  Check(shares[1] == static_cast<double>(serialReport.Rays), "the ranks' rays add up");
+  Check(ranks == 1 || report.OwnTexels < report.Texels, "a rank gathers a share only");
+
+  // The same field gathered by this rank alone: the combined shares are that, bit for bit.
+  vlf::RestorePropagatedDiffuse(*field);
+  Check(field->TotalDiffuse == propagated, "the propagated totals restored");
+  vlf::FinalGather(*field, options);
+  Check(field->TotalDiffuse == gathered, "the combined shares equal this rank's whole gather "
+                                         "bit for bit");
+
+  // An abort on one rank: every rank stops, the field as propagated everywhere.
+  vlf::FinalGatherOptions aborting = distributed;
+  aborting.Progress = [&](double) { return Rank != ranks - 1; };
+  ExpectAgreedFailure(
+    [&]() { vlf::FinalGather(*field, aborting); }, "aborted", "final gather aborted on one rank");
+  Check(field->TotalDiffuse == propagated, "an aborted gather leaves the propagated totals");
+
+  // The shares not combined: every rank holds its own texels' gathered values only.
+  NotCombining uncombined(reducer);
+  vlf::FinalGatherOptions alone = options;
+  alone.Reduce = &uncombined;
+  vlf::FinalGather(*field, alone);
+  const double apart = WorstRelative(field->TotalDiffuse, serial->TotalDiffuse);
+  std::printf("rank %d of %d: shares not combined: worst relative difference %.3g\n", Rank,
+    ranks, apart);
+  if (ranks > 1)
+  {
+    Check(apart > 1e-2, "without the combining sum the textures differ from the serial gather");
+  }
+  return Failures;
+}
+
 int Compare(const std::string& a, const std::string& b)
 {
   const double worst =
@@ -435,13 +544,18 @@ int main(int argc, char* argv[])
     {
       failures = Mirror(controller, argv[2], argv[3]);
     }
+    else if (mode == "gather" && argc == 3)
+    {
+      failures = Gather(controller, argv[2]);
+    }
     else if (mode == "compare" && argc == 4)
     {
       failures = Compare(argv[2], argv[3]);
     }
     else
     {
-      std::cerr << "usage: TestDistributedPropagation equal DIR | fail | compare A B | mirror OBJ DIR\n";
+      std::cerr << "usage: TestDistributedPropagation equal DIR | fail | compare A B | "
+                   "mirror OBJ DIR | gather OBJ\n";
       failures = 1;
     }
   }
