@@ -51,8 +51,8 @@ struct Mesh
 Mesh DenseMesh()
 {
   mesolight::TriangleScene scene;
-  scene.AddPolygon({ { 0.0f, 0.0f, 0.0f }, { 1.0f, 0.0f, 0.0f }, { 1.0f, 1.0f, 0.0f },
-                     { 0.0f, 1.0f, 0.0f } },
+  scene.AddPolygon(
+    { { 0.0f, 0.0f, 0.0f }, { 1.0f, 0.0f, 0.0f }, { 1.0f, 1.0f, 0.0f }, { 0.0f, 1.0f, 0.0f } },
     scene.AddMaterial({}), scene.AddSurface("wall"));
   DepthMap map;
   map.Width = Size;
@@ -79,9 +79,8 @@ struct MeshHit
 
 // The first triangle of the mesh along the ray, t > tMin (Moeller and Trumbore, "Fast, minimum
 // storage ray-triangle intersection"), in double precision over every triangle.
-std::optional<MeshHit> FirstMeshHit(
-  const mesolight::TriangleScene& scene, const glm::dvec3& origin, const glm::dvec3& dir,
-  double tMin = 1e-9)
+std::optional<MeshHit> FirstMeshHit(const mesolight::TriangleScene& scene, const glm::dvec3& origin,
+  const glm::dvec3& dir, double tMin = 1e-9)
 {
   std::optional<MeshHit> best;
   for (std::size_t k = 0; k < scene.TriangleCount(); ++k)
