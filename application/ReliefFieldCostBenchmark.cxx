@@ -133,7 +133,8 @@ vtkSmartPointer<vtkImageData> OccludedProbes(
   {
     depth[t] = static_cast<float>(texels->GetComponent(static_cast<vtkIdType>(t), 3));
   }
-  const HeightField height(dims[0], dims[1], std::move(depth));
+  // Walled, as the walkthrough's reliefs on the scene's surfaces are (ReadDepthImage).
+  const HeightField height(dims[0], dims[1], std::move(depth), HeightField::Edge::Walled);
   ReliefFrame frame; // the unit square of BuildReliefScene's wall
   frame.DepthScale = depthScale;
   const int w = std::min(dims[0], 256), h = std::min(dims[1], 256);

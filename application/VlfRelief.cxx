@@ -166,7 +166,9 @@ HeightField ReadDepthImage(const std::string& path)
       }
       depth[p] = std::clamp(value, 0.0f, 1.0f);
     }
-    return HeightField(info.Width, info.Height, std::move(depth));
+    // A relief on a surface of the scene is recessed into it: walled at its texture rectangle's
+    // border, as the path tracer's dense mesh closes it (docs/relief-against-path-tracer.md).
+    return HeightField(info.Width, info.Height, std::move(depth), HeightField::Edge::Walled);
   }
   catch (const ImageFileError& e)
   {

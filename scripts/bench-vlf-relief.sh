@@ -26,7 +26,9 @@
 # when absent. Settings through the environment (defaults in brackets): DIRECTIONS [2049], RAYS
 # [32] (the field), SIZE [256] (square images), SAMPLES [1024] (paths per pixel of the
 # references), DEPTH_SCALE [0.05], CAMERA [278,273,-800,278,273,0, the published Cornell camera],
-# FOV [39.3077], CSV_DIR [docs/measurements/relief-against-path-tracer in the source tree].
+# FOV [39.3077], CSV_DIR [docs/measurements/relief-against-path-tracer in the source tree],
+# LABEL_SUFFIX [none: appended to every CSV row's label, e.g. to tell two binaries' runs on the
+# same references apart].
 # References already in OUTDIR are reused (they are the slow part).
 set -u
 bin="$(realpath "$1")"
@@ -41,6 +43,7 @@ scale="${DEPTH_SCALE:-0.05}"
 camera="${CAMERA:-278,273,-800,278,273,0}"
 fov="${FOV:-39.3077}"
 csv_dir="${CSV_DIR:-$source_dir/docs/measurements/relief-against-path-tracer}"
+suffix="${LABEL_SUFFIX:-}"
 mkdir -p "$out/input" "$csv_dir"
 cd "$out"
 log() { echo "+ $*" >> commands.txt; }
@@ -146,7 +149,7 @@ for entry in "${maps[@]}"; do
     --reference "$name-reference.exr" --reference-2 "$name-reference-2.exr"
     --mask "$name-mask.exr" --images "vlf-render=$name-field.exr$gpu_images"
     --times "vlf-render=${frame:-0}"
-    --label "cornell-back-$name-$directions-$samples" --write-images "$name"
+    --label "cornell-back-$name-$directions-$samples$suffix" --write-images "$name"
     --csv "$csv_dir/relief-against-path-tracer.csv"
     --plot "$csv_dir/relief-against-path-tracer-$name.png")
   log "$bin" "${bench[@]}"
@@ -158,7 +161,7 @@ for entry in "${maps[@]}"; do
     bench=(bench vlf-relief --reference "$name-reference.exr" --reference-2 "$name-reference-2.exr"
       --mask "$name-mask.exr"
       --images "gpu=$name-gpu.exr,flat-wall=$name-flat-wall.exr,one-light=$name-one-light.exr"
-      --label "cornell-back-$name-gpu-$directions-$samples"
+      --label "cornell-back-$name-gpu-$directions-$samples$suffix"
       --csv "$csv_dir/relief-against-path-tracer.csv")
     log "$bin" "${bench[@]}"
     "$bin" "${bench[@]}" | tee "$name-gpu-bench.log"
@@ -177,7 +180,7 @@ if [ -f "$first-mask.exr" ]; then
   if [ -f flat-reference.exr ] && [ -f flat-field.exr ]; then
     echo "== the flat wall (no relief), over the $first relief's pixels"
     bench=(bench vlf-relief --reference flat-reference.exr --mask "$first-mask.exr"
-      --images "flat-wall-field=flat-field.exr" --label "cornell-back-flat-$directions-$samples"
+      --images "flat-wall-field=flat-field.exr" --label "cornell-back-flat-$directions-$samples$suffix"
       --csv "$csv_dir/relief-against-path-tracer.csv")
     log "$bin" "${bench[@]}"
     "$bin" "${bench[@]}" | tee flat-bench.log

@@ -207,7 +207,13 @@ public:
   ///@}
 
   ///@{
-  /** Discard fragments whose hit point leaves the [0,1]^2 texture domain. Default on. */
+  /**
+   * Discard fragments whose hit point leaves the [0,1]^2 texture domain (an object's
+   * silhouette). Default on. Off, a relief that does not repeat is walled at the texture's
+   * border, recessed into its surface: a view ray below the surface that reaches the border meets
+   * a side wall there, and a shadow ray is blocked (docs/relief-against-path-tracer.md, "The
+   * relief's edge").
+   */
   vtkSetMacro(Silhouettes, bool);
   vtkGetMacro(Silhouettes, bool);
   vtkBooleanMacro(Silhouettes, bool);

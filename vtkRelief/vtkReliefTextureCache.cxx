@@ -600,10 +600,7 @@ void vtkReliefTextureCache::DeactivateTextures()
 void vtkReliefTextureCache::SetShaderParameters(vtkShaderProgram* program)
 {
   program->SetUniformi("mlReliefTexture", this->TextureObject->GetTextureUnit());
-  if (!this->FloatTextures)
-  {
-    program->SetUniformi("mlRepeatTexture", this->Repeat ? 1 : 0);
-  }
+  program->SetUniformi("mlRepeatTexture", this->Repeat ? 1 : 0);
   if (this->NormalsStored && !this->FloatTextures)
   {
     program->SetUniformi("mlNormalTexture", this->NormalTexture->GetTextureUnit());

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "HeightFieldTracer.h"
 
+#include <glm/common.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -308,12 +310,135 @@ std::optional<RayHit> Trace(const HeightField& hf, const glm::dvec3& origin, con
   }
 }
 
+// The ray's parameter interval inside the texture rectangle [0, 1]^2 (slab clipping), and the
+// wall it leaves through: false when it misses the rectangle.
+struct RectangleSpan
+{
+  double In;
+  double Out;
+  glm::dvec2 Wall; // the inward normal of the border crossed at Out
+};
+
+bool ClipToRectangle(const glm::dvec3& origin, const glm::dvec3& dir, RectangleSpan& span)
+{
+  span = { -std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
+    glm::dvec2(0.0) };
+  for (int a = 0; a < 2; ++a)
+  {
+    if (dir[a] == 0.0)
+    {
+      if (origin[a] < 0.0 || origin[a] > 1.0)
+      {
+        return false;
+      }
+      continue;
+    }
+    double t0 = (0.0 - origin[a]) / dir[a];
+    double t1 = (1.0 - origin[a]) / dir[a];
+    // Leaving through u = 1 (v = 1) the wall faces -u (-v), through 0 it faces +u (+v).
+    const double inward = dir[a] > 0.0 ? -1.0 : 1.0;
+    if (t0 > t1)
+    {
+      std::swap(t0, t1);
+    }
+    span.In = std::max(span.In, t0);
+    if (t1 < span.Out)
+    {
+      span.Out = t1;
+      span.Wall = glm::dvec2(0.0);
+      span.Wall[a] = inward;
+    }
+  }
+  return span.In <= span.Out;
+}
+
+// First contact with the plane d = 0 (the solid outside a walled rectangle) for t in [t0, t1].
+std::optional<double> PlaneContact(double oz, double dz, double t0, double t1, Contact contact)
+{
+  if (!(t1 >= t0))
+  {
+    return std::nullopt;
+  }
+  if (Touches(oz + t0 * dz, contact))
+  {
+    return t0;
+  }
+  if (dz > 0.0)
+  {
+    const double t = std::max(t0, -oz / dz);
+    if (t <= t1 && (contact == Contact::OnOrBelow || t < t1))
+    {
+      return t;
+    }
+  }
+  return std::nullopt;
+}
+
+// The edge rule on top of Trace: a Walled field is Trace's surface inside [0, 1]^2 and the solid
+// below d = 0 outside it, so the ray meets, in order, the plane before the rectangle, the surface
+// inside it, the side wall where it leaves below d = 0, and the plane after it.
+std::optional<RayHit> TraceEdge(const HeightField& hf, const glm::dvec3& origin,
+  const glm::dvec3& dir, double tMax, Contact contact)
+{
+  if (hf.EdgeRule() == HeightField::Edge::Clamped)
+  {
+    return Trace(hf, origin, dir, tMax, contact);
+  }
+  if (!IsFinite(origin) || !IsFinite(dir) || !std::isfinite(tMax) || tMax < 0.0)
+  {
+    return std::nullopt;
+  }
+  const auto plane = [&](double t0, double t1) -> std::optional<RayHit>
+  {
+    if (auto t = PlaneContact(origin.z, dir.z, t0, t1, contact))
+    {
+      return RayHit{ *t, origin + *t * dir };
+    }
+    return std::nullopt;
+  };
+  RectangleSpan span;
+  if (!ClipToRectangle(origin, dir, span) || span.Out < 0.0 || span.In > tMax)
+  {
+    return plane(0.0, tMax);
+  }
+  const double tIn = std::max(0.0, span.In);
+  if (tIn > 0.0)
+  {
+    if (auto hit = plane(0.0, tIn))
+    {
+      return hit;
+    }
+  }
+  const double tOut = std::min(span.Out, tMax);
+  const glm::dvec3 entry = origin + tIn * dir;
+  if (auto hit = Trace(hf, entry, dir, tOut - tIn, contact))
+  {
+    hit->t += tIn;
+    return hit;
+  }
+  if (span.Out > tMax)
+  {
+    return std::nullopt;
+  }
+  // Leaving the rectangle: below d = 0 the side wall stops the ray at the border.
+  const double dOut = origin.z + tOut * dir.z;
+  if (Touches(dOut, contact))
+  {
+    RayHit hit{ tOut, origin + tOut * dir };
+    hit.point = glm::dvec3(glm::clamp(glm::dvec2(hit.point), 0.0, 1.0), hit.point.z);
+    hit.wall = span.Wall;
+    return hit;
+  }
+  return plane(tOut, tMax);
+}
+
 } // namespace
 
-HeightField::HeightField(int w, int h, std::vector<float> depth)
+HeightField::HeightField(int w, int h, std::vector<float> depth, Edge edge)
   : W(w)
   , H(h)
   , Depth(std::move(depth))
+  , Border(edge)
 {
   if (w < 1 || h < 1)
   {
@@ -349,11 +474,20 @@ double HeightField::ClampedTexel(int i, int j) const
   return this->Texel(std::clamp(i, 0, this->W - 1), std::clamp(j, 0, this->H - 1));
 }
 
+bool HeightField::OutsideWall(double u, double v) const
+{
+  return this->Border == Edge::Walled && (u < 0.0 || u > 1.0 || v < 0.0 || v > 1.0);
+}
+
 double HeightField::DepthAt(double u, double v) const
 {
   if (std::isnan(u) || std::isnan(v))
   {
     return std::numeric_limits<double>::quiet_NaN();
+  }
+  if (this->OutsideWall(u, v))
+  {
+    return 0.0;
   }
   const AxisSample x = SampleAxis(ToGrid(u, this->W), this->W);
   const AxisSample y = SampleAxis(ToGrid(v, this->H), this->H);
@@ -368,6 +502,10 @@ glm::dvec2 HeightField::GradientAt(double u, double v) const
   if (std::isnan(u) || std::isnan(v))
   {
     return glm::dvec2(std::numeric_limits<double>::quiet_NaN());
+  }
+  if (this->OutsideWall(u, v))
+  {
+    return glm::dvec2(0.0);
   }
   const AxisSample x = SampleAxis(ToGrid(u, this->W), this->W);
   const AxisSample y = SampleAxis(ToGrid(v, this->H), this->H);
@@ -384,7 +522,7 @@ glm::dvec2 HeightField::GradientAt(double u, double v) const
 std::optional<RayHit> IntersectFirst(
   const HeightField& hf, const glm::dvec3& origin, const glm::dvec3& dir, double tMax)
 {
-  return Trace(hf, origin, dir, tMax, Contact::OnOrBelow);
+  return TraceEdge(hf, origin, dir, tMax, Contact::OnOrBelow);
 }
 
 bool Visible(
@@ -402,7 +540,7 @@ bool Visible(
     return true; // already at or above the top of the height field
   }
   const double tTop = -start.z / dir.z; // where the ray reaches d = 0
-  return !Trace(hf, start, dir, tTop, Contact::StrictlyBelow);
+  return !TraceEdge(hf, start, dir, tTop, Contact::StrictlyBelow);
 }
 
 std::optional<RayHit> IntersectFirstBruteForce(

@@ -12,6 +12,12 @@
  *    (in exact arithmetic): bilinear between the four nearest texel centres, constant extension
  *    outside the centre grid (u < 0.5 / W uses column 0, and so on, also outside [0, 1]).
  *  - A point (u, v, d) is "on or below" the surface when d >= depth(u, v).
+ *  - The edge rule (HeightField::Edge): Clamped (the default) continues the surface beyond
+ *    [0, 1]^2 as above, the sampler's own extension (a tiled or cut-out relief never sees it);
+ *    Walled is a relief recessed into a wall: outside [0, 1]^2 the solid reaches the surface
+ *    (depth 0), so a ray below the surface that reaches the texture rectangle's border meets a
+ *    side wall there (RayHit::Wall), as it meets the side walls of the dense displaced mesh
+ *    (vtkScene/core/SurfaceRelief.h) and the relief shader's (mlOutsideWalledRelief).
  */
 
 #ifndef mesolight_HeightFieldTracer_h
@@ -33,14 +39,25 @@ namespace mesolight
 class MESOLIGHTEVALUATION_EXPORT HeightField
 {
 public:
+  /** What lies beyond the texture rectangle [0, 1]^2 (see the conventions above). */
+  enum class Edge
+  {
+    Clamped, // the clamp-to-edge surface continues
+    Walled   // the solid reaches the surface: depth 0, side walls at the rectangle's border
+  };
+
   /**
    * depth holds w * h samples, row-major, row 0 at v ~ 0. Throws std::invalid_argument when
    * w < 1, h < 1, depth.size() != w * h, or a sample is not finite (the message names it).
    */
-  HeightField(int w, int h, std::vector<float> depth);
+  HeightField(int w, int h, std::vector<float> depth, Edge edge = Edge::Clamped);
 
   int Width() const { return this->W; }
   int Height() const { return this->H; }
+  Edge EdgeRule() const { return this->Border; }
+  void SetEdgeRule(Edge edge) { this->Border = edge; }
+  /** True when the edge is Walled and (u, v) lies outside [0, 1]^2 (the border itself inside). */
+  bool OutsideWall(double u, double v) const;
 
   /** Sample at column i, row j (0 <= i < W, 0 <= j < H; not range-checked). */
   float Texel(int i, int j) const { return this->Depth[static_cast<std::size_t>(j) * this->W + i]; }
@@ -48,12 +65,16 @@ public:
   /** Texel with both indices clamped into range: the clamp-to-edge extension of the samples. */
   double ClampedTexel(int i, int j) const;
 
-  /** Surface depth at (u, v): GL_LINEAR + GL_CLAMP_TO_EDGE, evaluated exactly in double. */
+  /**
+   * Surface depth at (u, v): GL_LINEAR + GL_CLAMP_TO_EDGE, evaluated exactly in double; 0 outside
+   * [0, 1]^2 when the edge is Walled.
+   */
   double DepthAt(double u, double v) const;
 
   /**
    * (d depth / du, d depth / dv) of the bilinear surface. Zero across a clamp band. On a cell
    * boundary (a crease of the surface) this is the derivative of the cell on the +u / +v side.
+   * Zero outside a Walled field's rectangle.
    */
   glm::dvec2 GradientAt(double u, double v) const;
 
@@ -61,12 +82,16 @@ private:
   int W;
   int H;
   std::vector<float> Depth;
+  Edge Border = Edge::Clamped;
 };
 
 struct RayHit
 {
   double t;         // ray parameter: point = origin + t * dir
   glm::dvec3 point; // (u, v, d) of the hit
+  // Zero on the height field; on a Walled field's side wall, the wall's unit normal in (u, v),
+  // pointing back into the rectangle (e.g. (0, -1) on the wall along v = 1).
+  glm::dvec2 wall{ 0.0, 0.0 };
 };
 
 /**

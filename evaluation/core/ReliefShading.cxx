@@ -48,6 +48,22 @@ glm::dvec3 ReliefNormalAt(const HeightField& hf, const ReliefFrame& frame, doubl
   return glm::dot(n, frame.Normal) < 0.0 ? -n : n;
 }
 
+glm::dvec3 ReliefWallNormal(const ReliefFrame& frame, const glm::dvec2& wall)
+{
+  // The wall holds the macro normal and the border's direction (AxisV along u = 0 or 1, AxisU
+  // along v = 0 or 1); its normal points back into the rectangle.
+  const glm::dvec3 along = wall.x != 0.0 ? frame.AxisV : frame.AxisU;
+  glm::dvec3 n = glm::cross(along, frame.Normal);
+  const double length = glm::length(n);
+  if (!(length > 0.0))
+  {
+    return frame.Normal;
+  }
+  n /= length;
+  const glm::dvec3 inward = wall.x * frame.AxisU + wall.y * frame.AxisV;
+  return glm::dot(n, inward) < 0.0 ? -n : n;
+}
+
 namespace
 {
 // The probes' SH9 at (u, v), bilinear; false without probes.
@@ -280,6 +296,10 @@ std::optional<ReliefShade> ShadeReliefRay(const HeightField& hf, const ReliefFra
   const double u = hit->point.x, v = hit->point.y, d = std::max(0.0, hit->point.z);
   shade.Point = frame.Point(u, v, d);
   shade.Normal = normal == ReliefNormal::Perturbed ? ReliefNormalAt(hf, frame, u, v) : frame.Normal;
+  if (normal == ReliefNormal::Perturbed && (hit->wall.x != 0.0 || hit->wall.y != 0.0))
+  {
+    shade.Normal = ReliefWallNormal(frame, hit->wall); // the side wall of a walled relief
+  }
   shade.Indirect = ProbeIrradiance(lighting, u, v, shade.Normal);
   double occludedShare = 0.0;
   if (normal == ReliefNormal::Perturbed && lighting.OcclusionDirections > 0)

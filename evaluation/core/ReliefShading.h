@@ -114,6 +114,13 @@ struct ReliefShade
 MESOLIGHTEVALUATION_EXPORT glm::dvec3 ReliefNormalAt(
   const HeightField& hf, const ReliefFrame& frame, double u, double v);
 
+/**
+ * The unit world normal of a walled relief's side wall (RayHit::wall, its normal in (u, v)): in
+ * the wall's plane through the macro normal and the border, pointing back into the relief.
+ */
+MESOLIGHTEVALUATION_EXPORT glm::dvec3 ReliefWallNormal(
+  const ReliefFrame& frame, const glm::dvec2& wall);
+
 /** The SH radiance of the probes at (u, v) arriving from unit direction w, clamped at 0. */
 MESOLIGHTEVALUATION_EXPORT glm::dvec3 ProbeRadiance(
   const ReliefLighting& lighting, double u, double v, const glm::dvec3& w);

@@ -14,8 +14,8 @@
 // c / (1 + c) in mlConeTexture (8 bits), rounded to narrower cones.
 
 uniform sampler2D mlReliefTexture;
-#ifndef ML_FLOAT_TEXTURES
 uniform int mlRepeatTexture; // the samplers repeat (else clamp to edge)
+#ifndef ML_FLOAT_TEXTURES
 #ifdef ML_STORED_NORMALS
 uniform sampler2D mlNormalTexture;
 #endif
@@ -82,10 +82,30 @@ int mlSampleCount = 0;
 #define ML_COUNT_SAMPLE()
 #endif
 
+// The edge rule (docs/relief-against-path-tracer.md, "The relief's edge"): a relief neither
+// tiled (mlRepeatTexture) nor cut out at its silhouettes (ML_SILHOUETTES) is recessed into its
+// surface and walled at the texture rectangle's border: outside [0, 1]^2 the solid reaches the
+// surface (depth 0), so a ray below the surface meets a side wall where it reaches the border,
+// as on the dense displaced mesh (SurfaceRelief) and the CPU intersector (HeightField::Walled).
+bool mlWalledRelief()
+{
+#ifdef ML_SILHOUETTES
+  return false;
+#else
+  return mlRepeatTexture == 0;
+#endif
+}
+
+bool mlOutsideWalledRelief(vec2 uv)
+{
+  return mlWalledRelief() && (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0))));
+}
+
 float mlDepthAt(vec2 uv)
 {
   ML_COUNT_SAMPLE();
-  return textureLod(mlReliefTexture, uv, mlMarchLod).ML_DEPTH_CHANNEL;
+  return mlOutsideWalledRelief(uv) ? 0.0
+                                   : textureLod(mlReliefTexture, uv, mlMarchLod).ML_DEPTH_CHANNEL;
 }
 
 #ifdef ML_VISIBLE_NORMALS
@@ -191,6 +211,10 @@ float mlConeAt(vec2 uv)
 // costs (counted as one sample; compact storage reads it from two small textures).
 vec2 mlDepthAndConeAt(vec2 uv)
 {
+  if (mlOutsideWalledRelief(uv))
+  {
+    return vec2(0.0); // the edge rule (mlOutsideWalledRelief): solid up to the surface, no cone
+  }
 #ifndef ML_FLOAT_TEXTURES
   ML_COUNT_SAMPLE();
   float e = textureLod(mlConeTexture, uv, 0.0).r;

@@ -9,6 +9,7 @@
   vec3 mlHit = vec3(mlUV, 0.0);
   vec3 mlHitPos = mlPos;
   vec3 mlShadingNormal = mlN;
+  vec2 mlWall = vec2(0.0); // a side wall's normal in (u, v) where the view ray met one
   mat3 mlWorldToTexture = mat3(0.0);
   bool mlHasFrame = abs(mlDet) > 1e-30;
 #ifdef ML_LEVEL_OF_DETAIL
@@ -47,6 +48,7 @@
       mlLevelOfDetailSteps(span, mlViewSteps);
 #endif
       float t = mlTraceView(mlHit, span);
+      mlWall = mlSideWall(mlHit, span, t);
       mlHit = mlHit + t * span;
       mlHitPos = mlPos + dir * (mlHit.z / q.z);
     }
@@ -110,6 +112,10 @@
     }
 #endif
 #endif
+    if (mlWall != vec2(0.0))
+    {
+      mlShadingNormal = normalize(mlWall.x * T + mlWall.y * B); // the walled relief's side wall
+    }
   }
   // Bump mapping shades the undisplaced point but shadows it from the height below it.
   vec3 mlShadowPoint = mlHit;

@@ -185,6 +185,25 @@ float mlTraceView(vec3 origin, vec3 span)
 #endif
 }
 
+// Where a view ray entering at origin, hit at t by the march, met a side wall of the walled
+// relief (mlOutsideWalledRelief) instead: it left the rectangle below the surface there, and the
+// march's hit is that border to within a linear step. t moves onto the border and the wall's
+// normal in (u, v), pointing back into the rectangle, is returned; else (0, 0).
+vec2 mlSideWall(vec3 origin, vec3 span, inout float t)
+{
+  vec2 tOut = mix(vec2(1e30), (step(vec2(0.0), span.xy) - origin.xy) / span.xy,
+    notEqual(span.xy, vec2(0.0)));
+  float tLeave = min(tOut.x, tOut.y);
+  vec3 p = origin + tLeave * span;
+  if (!mlWalledRelief() || tLeave > 1.0 || t < tLeave - 1.0 / float(max(mlViewSteps, 1)) ||
+    p.z >= textureLod(mlReliefTexture, clamp(p.xy, 0.0, 1.0), 0.0).ML_DEPTH_CHANNEL)
+  {
+    return vec2(0.0);
+  }
+  t = tLeave;
+  return tOut.x <= tOut.y ? vec2(-sign(span.x), 0.0) : vec2(0.0, -sign(span.y));
+}
+
 // Hard self-shadow test (Méndez Fernández's thesis, §4.3): march from where the light ray enters the surface down
 // to the hit point; the hit is shadowed when the ray passes below the height field before it.
 // The work is proportional to the depth travelled, so shallow hits cost less; cone maps and the

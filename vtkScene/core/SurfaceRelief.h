@@ -12,6 +12,12 @@
 // clamped to the edge (the mapper's default ClampToEdge); a point of texture coordinate (u, v) is
 // moved along -N by depth(u, v) * DepthScale * |dP/du|, where N is the side the surface faces and
 // |dP/du| the world length of one unit of u (the texture's width on the surface).
+//
+// The edge rule: the relief is recessed into its surface, and beyond the surface the solid
+// reaches the surface level, so side walls from the undisplaced boundary down to the relief close
+// it. A ray below the surface that reaches the border meets a wall, as the relief mapper's march
+// (vtkReliefHeightFieldFS.glsl, mlOutsideWalledRelief) and the CPU intersector
+// (HeightField::Edge::Walled) meet it; the texture's clamp-to-edge continuation is never seen.
 #ifndef mesolight_SurfaceRelief_h
 #define mesolight_SurfaceRelief_h
 
