@@ -110,11 +110,14 @@ bool RunReliefBenchmark(const BenchmarkSettings& settings, std::ostream& out)
       int Linear;
       int Refine;
       bool Shadows;
+      bool NoLevelOfDetail = false; // the other rows as the scene options say (default on)
     };
     const std::vector<Variant> variants = {
       { "textured plane (stock mapper)", "", 0, 0, false },
       { "relief 10+8", "relief", 10, 8, false },
       { "relief 10+8 + shadows", "relief", 10, 8, true },
+      // What level of detail (the normal's moments from mip level 2 up) adds.
+      { "relief 10+8, no level of detail", "relief", 10, 8, false, true },
       { "POM 10", "pom", 10, 0, false },
       { "POM 32", "pom", 32, 0, false },
       { "steep parallax 32", "steep", 32, 0, false },
@@ -126,6 +129,7 @@ bool RunReliefBenchmark(const BenchmarkSettings& settings, std::ostream& out)
       o.LinearSteps = v.Linear > 0 ? v.Linear : o.LinearSteps;
       o.RefinementSteps = v.Refine;
       o.SelfShadowing = v.Shadows;
+      o.LevelOfDetail = o.LevelOfDetail && !v.NoLevelOfDetail;
       ReliefScene scene;
       const bool built = v.Method.empty() ? BuildTexturedPlaneScene(o, scene, error)
                                           : BuildReliefScene(o, scene, error);

@@ -392,6 +392,7 @@ bool RunReliefSweep(
     o.Height = settings.Height;
     o.FillViewport = settings.FillViewport;
     o.SelfShadowing = false;
+    o.LevelOfDetail = settings.LevelOfDetail;
     std::string error;
     ReliefScene relief, dense;
     if (!BuildReliefScene(o, relief, error) ||
@@ -647,6 +648,9 @@ int RunReliefSweep(const std::vector<std::string>& args)
   cl.AddFlag("--no-dense",
     "do not draw the dense displaced mesh (maps too large to mesh): no colour columns; its size "
     "is still computed");
+  cl.AddFlag("--level-of-detail",
+    "draw with level of detail (vtkReliefProperty's default; off in the sweep), to measure what "
+    "it uploads");
   cl.AddFlag("--no-fill",
     "keep the square, whole-wall framing (the wall is then a thin strip at grazing angles) "
     "instead of stretching the view so the wall fills the window");
@@ -753,6 +757,7 @@ int RunReliefSweep(const std::vector<std::string>& args)
     return cl.UsageError("--texture-storage needs compact, float or derived");
   }
   settings.DenseMesh = !cl.Has("--no-dense");
+  settings.LevelOfDetail = cl.Has("--level-of-detail");
   settings.CsvFile = cl.Get("--csv");
   settings.PlotDirectory = cl.Get("--plots");
   return RunReliefSweep(settings, std::cout) ? 0 : 1;

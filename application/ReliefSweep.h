@@ -50,6 +50,9 @@ struct ReliefSweepSettings
   // Draw the dense displaced mesh for the colour columns. Off for maps too large to mesh (its
   // size in MB is computed either way).
   bool DenseMesh = true;
+  // Draw with level of detail (vtkReliefProperty's default; the sweep draws without it):
+  // measures what it uploads (the GPU MB column).
+  bool LevelOfDetail = false;
 };
 
 /** One step setting of a method: what the mapper's LinearSteps / RefinementSteps mean for it. */

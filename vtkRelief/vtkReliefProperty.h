@@ -145,7 +145,8 @@ public:
 
   ///@{
   /**
-   * Filter where texels are smaller than pixels (the relief textures get mipmaps). The march
+   * Filter where texels are smaller than pixels (the relief textures get mipmaps; with the
+   * visible normal filter only the normal's moments, from mip level 2 up). The march
    * stays at the base level (an averaged height field fills the cracks a supersampled frame
    * keeps); the shading normal is filtered over the pixel footprint (NormalFilter) and where the
    * footprint exceeds a texel, linear and refinement steps stop at the footprint's size. Where
@@ -168,7 +169,8 @@ public:
     /**
      * The footprint's visible mean normal: second moments of the normal, mip-mapped (LEAN
      * mapping, Olano and Baker 2010), weighted by the area each facet shows the viewer (the
-     * default; compact storage, one more RGBA16F texture pair; float storage uses the mean).
+     * default; compact storage, one more RGBA16F texture pair from mip level 2 up, 1.33 bytes
+     * per texel; float storage uses the mean).
      */
     VisibleNormalFilter = 1
   };

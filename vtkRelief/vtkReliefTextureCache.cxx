@@ -183,10 +183,13 @@ bool vtkReliefTextureCache::Update(vtkOpenGLRenderWindow* renWin, vtkImageData* 
   bool needPyramid, bool needCones, bool floatTextures, bool deriveNormals, bool normalMoments)
 {
   const bool wantMoments = normalMoments && mipmaps && !floatTextures;
+  // With the visible normal filter the march and the base normal read level 0 only, and the
+  // filter reads the moments' mip chain: the depth and normals need no mip chain of their own.
+  const bool baseMipmaps = mipmaps && !wantMoments;
   vtkDataArray* scalars = image->GetPointData()->GetScalars();
   const bool baseCurrent = scalars && scalars == this->Uploaded &&
     scalars->GetMTime() <= this->UploadTime && this->TextureObject->GetHandle() != 0 &&
-    this->TextureObject->GetContext() == renWin && this->UploadedWithMipmaps == mipmaps &&
+    this->TextureObject->GetContext() == renWin && this->UploadedWithMipmaps == baseMipmaps &&
     this->FloatTextures == floatTextures && (floatTextures || this->DeriveNormals == deriveNormals);
   const bool wantCones =
     !floatTextures && needCones && ConeTypeOf(image) != vtkReliefProperty::NoConeMap;
@@ -281,7 +284,7 @@ bool vtkReliefTextureCache::Update(vtkOpenGLRenderWindow* renWin, vtkImageData* 
   std::vector<std::uint16_t> depth16;
   if (!baseCurrent)
   {
-    this->UploadedWithMipmaps = mipmaps;
+    this->UploadedWithMipmaps = baseMipmaps;
     this->FloatTextures = floatTextures;
     this->DeriveNormals = deriveNormals;
     this->NormalTexture->ReleaseGraphicsResources(renWin);
@@ -290,13 +293,13 @@ bool vtkReliefTextureCache::Update(vtkOpenGLRenderWindow* renWin, vtkImageData* 
     this->BaseBytes = 0;
     if (floatTextures)
     {
-      if (!this->UploadFloat(renWin, scalars, dims, bytes, mipmaps))
+      if (!this->UploadFloat(renWin, scalars, dims, bytes, baseMipmaps))
       {
         return false;
       }
     }
     else if (!this->UploadCompact(
-               renWin, depth, normalXY, normalZ, dims, mipmaps, deriveNormals, depth16))
+               renWin, depth, normalXY, normalZ, dims, baseMipmaps, deriveNormals, depth16))
     {
       return false;
     }
@@ -467,21 +470,14 @@ bool vtkReliefTextureCache::UploadCompact(vtkOpenGLRenderWindow* renWin,
   if (this->NormalsStored)
   {
     // Hemispherical octahedral coordinates (Cigolle et al., "A Survey of Efficient
-    // Representations for Independent Unit Vectors", JCGT 2014), signed normalised: 8 bits err
-    // alike in every direction, where x, y with z rebuilt lose the steep normals of walls
-    // (z = sqrt(1 - x^2 - y^2) is ill-conditioned there), and a flat normal's 0 is exact.
+    // Representations for Independent Unit Vectors", JCGT 2014; core/CompactReliefStorage.h).
     std::vector<std::int8_t> xy(2 * n);
     for (size_t i = 0; i < n; ++i)
     {
       const float x = normalXY[2 * i], y = normalXY[2 * i + 1];
       const float z =
-        normalZ.empty() ? std::sqrt(std::max(0.f, 1.f - x * x - y * y)) : std::max(normalZ[i], 0.f);
-      const float l1 = std::fabs(x) + std::fabs(y) + z;
-      const float px = l1 > 0.f ? x / l1 : 0.f, py = l1 > 0.f ? y / l1 : 0.f;
-      xy[2 * i] =
-        static_cast<std::int8_t>(std::lround(vtkMath::ClampValue(px + py, -1.f, 1.f) * 127.f));
-      xy[2 * i + 1] =
-        static_cast<std::int8_t>(std::lround(vtkMath::ClampValue(px - py, -1.f, 1.f) * 127.f));
+        normalZ.empty() ? std::sqrt(std::max(0.f, 1.f - x * x - y * y)) : normalZ[i];
+      mesolight::EncodeOctahedral8(x, y, z, xy[2 * i], xy[2 * i + 1]);
     }
     if (!CreateTexture(this->NormalTexture, renWin, dims[0], dims[1], 2, VTK_SIGNED_CHAR,
           GL_RG8_SNORM, GL_RG, GL_BYTE, xy.data(), mipmaps))
@@ -502,48 +498,41 @@ bool vtkReliefTextureCache::UploadMoments(vtkOpenGLRenderWindow* renWin,
   // Moments of the unit normal n weighted by w = 1 / nz, the texel's surface area over its base
   // area: a footprint's mean of w (n.v) f(n) is then the light the pixel sees of its facets,
   // each in proportion to its projected area (LEAN mapping, Olano and Baker, "LEAN Mapping",
-  // I3D 2010; here the 3D second-moment matrix). Averages are linear, so the mip chain
-  // (glGenerateMipmap's box filter) holds the moments of every footprint. Walls steeper than
-  // nz = 1/16 are weighted as at 1/16, which keeps half floats finite and exact enough.
-  const size_t n = static_cast<size_t>(dims[0]) * dims[1];
-  std::vector<float> m0(4 * n), m1(4 * n);
-  for (size_t i = 0; i < n; ++i)
+  // I3D 2010; here the 3D second-moment matrix; core/CompactReliefStorage.h). Averages are
+  // linear, so a mip chain holds the moments of every footprint. With stored normals its levels
+  // 0 and 1 are not uploaded: a texel's moments are those of its own normal, which the shader
+  // reads anyway, and level 1 averages four of them (NormalMomentFirstStoredLevel). Levels 2 and
+  // up stay half floats: by Olano's error analysis of LEAN mapping, a moment's representation
+  // error must stay below 1 / s for a specular exponent s, and 8 bits over these moments' range
+  // (up to 16, the weight's clamp) err by 16/512, exponents of 30; half floats err by 1/2048 of
+  // the value. At a sixteenth of the texels they cost 1.3 bytes per texel of level 0.
+  constexpr int k = mesolight::NormalMomentCount;
+  // Derived normals are not at hand for the shader's reconstruction: all levels uploaded.
+  this->MomentFirstLevel = this->NormalsStored ? mesolight::NormalMomentFirstStoredLevel : 0;
+  const int w = mesolight::MipLevelSize(dims[0], this->MomentFirstLevel);
+  const int h = mesolight::MipLevelSize(dims[1], this->MomentFirstLevel);
+  const std::vector<float> moments = mesolight::NormalMomentLevel(normalXY.data(),
+    normalZ.empty() ? nullptr : normalZ.data(), dims[0], dims[1], this->MomentFirstLevel);
+  const size_t stored = static_cast<size_t>(w) * h;
+  std::vector<float> m0(4 * stored), m1(4 * stored);
+  for (size_t i = 0; i < stored; ++i)
   {
-    float x = normalXY[2 * i], y = normalXY[2 * i + 1];
-    float z =
-      normalZ.empty() ? std::sqrt(std::max(0.f, 1.f - x * x - y * y)) : std::max(normalZ[i], 0.f);
-    const float length = std::sqrt(x * x + y * y + z * z);
-    if (length > 0.f)
+    for (int c = 0; c < 4; ++c)
     {
-      x /= length;
-      y /= length;
-      z /= length;
+      m0[4 * i + c] = moments[k * i + c];
+      m1[4 * i + c] = moments[k * i + 4 + c];
     }
-    else
-    {
-      x = y = 0.f;
-      z = 1.f;
-    }
-    const float w = 1.f / std::max(z, 1.f / 16.f);
-    m0[4 * i] = w * x * x;
-    m0[4 * i + 1] = w * y * y;
-    m0[4 * i + 2] = w * x * y;
-    m0[4 * i + 3] = w * z * z;
-    m1[4 * i] = w * x * z;
-    m1[4 * i + 1] = w * y * z;
-    m1[4 * i + 2] = w * x;
-    m1[4 * i + 3] = w * y;
   }
-  for (int k = 0; k < 2; ++k)
+  for (int t = 0; t < 2; ++t)
   {
-    if (!CreateTexture(this->MomentTexture[k], renWin, dims[0], dims[1], 4, VTK_FLOAT, GL_RGBA16F,
-          GL_RGBA, GL_FLOAT, (k == 0 ? m0 : m1).data(), true))
+    // Levels above the first stored are glGenerateMipmap's 2 x 2 box filter.
+    if (!CreateTexture(this->MomentTexture[t], renWin, w, h, 4, VTK_FLOAT, GL_RGBA16F, GL_RGBA,
+          GL_FLOAT, (t == 0 ? m0 : m1).data(), true))
     {
-      vtkErrorMacro(<< "Could not create the " << dims[0] << "x" << dims[1]
-                    << " normal moment texture.");
+      vtkErrorMacro(<< "Could not create the " << w << "x" << h << " normal moment texture.");
       return false;
     }
-    this->MomentBytes += GetTextureBytes(this->MomentTexture[k]);
+    this->MomentBytes += GetTextureBytes(this->MomentTexture[t]);
   }
   this->MomentsUploaded = true;
   return true;
@@ -613,6 +602,7 @@ void vtkReliefTextureCache::SetShaderParameters(vtkShaderProgram* program)
   {
     program->SetUniformi("mlMomentTexture0", this->MomentTexture[0]->GetTextureUnit());
     program->SetUniformi("mlMomentTexture1", this->MomentTexture[1]->GetTextureUnit());
+    program->SetUniformf("mlMomentFirstLevel", static_cast<float>(this->MomentFirstLevel));
   }
 }
 
@@ -646,6 +636,7 @@ void vtkReliefTextureCache::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NormalMismatch: " << this->NormalMismatch << "\n";
   os << indent << "ConesUploaded: " << (this->ConesUploaded ? "yes" : "no") << "\n";
   os << indent << "MomentsUploaded: " << (this->MomentsUploaded ? "yes" : "no") << "\n";
+  os << indent << "MomentFirstLevel: " << this->MomentFirstLevel << "\n";
   os << indent << "UploadedBytes: " << this->UploadedBytes << "\n";
   os << indent << "Ready: " << (this->Ready ? "yes" : "no") << "\n";
 }

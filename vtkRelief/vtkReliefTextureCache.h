@@ -24,7 +24,9 @@
  *    exact minima (RGBA16)
  *    (vtkMinDepthPyramidTexture); its level 0, the cells' corners, is the depth texture itself.
  * 4 bytes per texel for relief (14x less than the dense displaced mesh's 56), 6.7 for
- * MaximumMipmap, 5 for cone methods, against 16 to 37 as float. Float storage (floatTextures)
+ * MaximumMipmap, 5 for cone methods, against 16 to 37 as float. Level of detail's visible
+ * normal filter (the default) adds the normal's moments from mip level 2 up, 1.3 bytes per
+ * texel: 5.3 for relief (10.5x less than the dense mesh). Float storage (floatTextures)
  * uploads the float RGBA texture and float pyramid instead: kept to measure what compact storage
  * costs (bench relief --texture-storage).
  */
@@ -87,9 +89,17 @@ public:
    * for by level of detail's visible normal filter): mlMomentTexture0 holds E[w nx^2],
    * E[w ny^2], E[w nx ny], E[w nz^2] and mlMomentTexture1 E[w nx nz], E[w ny nz], E[w nx],
    * E[w ny] in RGBA16F, w = 1 / nz the texel's surface area over its base area (LEAN mapping,
-   * Olano and Baker 2010, with the 3D second-moment matrix).
+   * Olano and Baker 2010, with the 3D second-moment matrix). The depth and normals then have
+   * no mip chain (the filter reads their level 0 only).
    */
   vtkGetMacro(MomentsUploaded, bool);
+
+  /**
+   * The relief's mip level that the moment textures' level 0 holds: 2 with stored normals (the
+   * shader computes levels 0 and 1 from them; mesolight::NormalMomentFirstStoredLevel), 0 with
+   * derived normals. Uniform mlMomentFirstLevel.
+   */
+  vtkGetMacro(MomentFirstLevel, int);
 
   /** Bits per depth texel: 16 (compact storage) or 32 (float storage). */
   vtkGetMacro(DepthBits, int);
@@ -159,6 +169,7 @@ protected:
   bool ConesUploaded = false;
   bool MomentsUploaded = false;
   vtkIdType MomentBytes = 0;
+  int MomentFirstLevel = 0;
   bool Repeat = false; // the wrap mode of the current draw
   int DepthBits = 0;
   double NormalMismatch = -1.0;

@@ -113,6 +113,52 @@ float mlDepthAt(vec2 uv)
 // of the baked unit normal n weighted by w = 1 / nz, the texel's surface area over its base.
 uniform sampler2D mlMomentTexture0; // E[w nx^2], E[w ny^2], E[w nx ny], E[w nz^2]
 uniform sampler2D mlMomentTexture1; // E[w nx nz], E[w ny nz], E[w nx], E[w ny]
+// The relief's mip level that the moment textures' level 0 holds: 2 with stored normals, whose
+// levels 0 and 1 are computed here from the normals, 0 with derived normals (all uploaded).
+uniform float mlMomentFirstLevel;
+
+#ifdef ML_STORED_NORMALS
+vec3 mlOctahedralNormal(vec2 e);
+
+// Adds k times the moments of level-0 texel t's normal (mesolight::NormalMoments): a texel's
+// second moment is its normal's outer product, so levels 0 and 1 need no texture of their own.
+void mlAddTexelMoments(ivec2 t, float k, inout vec4 a, inout vec4 b)
+{
+  ML_COUNT_SAMPLE();
+  vec3 n = normalize(mlOctahedralNormal(texelFetch(mlNormalTexture, t, 0).rg));
+  float w = k / max(n.z, 1.0 / 16.0);
+  a += w * vec4(n.x * n.x, n.y * n.y, n.x * n.y, n.z * n.z);
+  b += w * vec4(n.x * n.z, n.y * n.z, n.x, n.y);
+}
+
+// Adds k times the bilinear lookup of the moments' mip level 0 or 1 at uv, as the sampler's:
+// texels wrapped or clamped at their own level, level 1's texel J the mean of level 0's 2J and
+// 2J + 1 in each axis (mesolight::ReduceNormalMoments, which builds the uploaded levels).
+void mlAddLevelMoments(vec2 uv, int level, float k, inout vec4 a, inout vec4 b)
+{
+  ivec2 size0 = ivec2(mlTextureSize);
+  ivec2 size = max(size0 >> level, ivec2(1));
+  vec2 x = uv * vec2(size) - 0.5;
+  ivec2 i0 = ivec2(floor(x));
+  vec2 f = x - vec2(i0);
+  int children = 1 << level;
+  for (int c = 0; c < 4; ++c)
+  {
+    ivec2 o = ivec2(c & 1, c >> 1);
+    ivec2 t = i0 + o;
+    t = mlRepeatTexture != 0 ? (t % size + size) % size : clamp(t, ivec2(0), size - 1);
+    vec2 axis = mix(1.0 - f, f, vec2(o));
+    float weight = k * axis.x * axis.y / float(children * children);
+    for (int j = 0; j < children; ++j)
+    {
+      for (int i = 0; i < children; ++i)
+      {
+        mlAddTexelMoments(min(t * children + ivec2(i, j), size0 - 1), weight, a, b);
+      }
+    }
+  }
+}
+#endif
 
 // The footprint's visible mean normal, with its length, for v (towards the viewer) in the
 // tangent frame (T, B, N) of the shading normal, read at mip level lod. A pixel sees each facet
@@ -125,10 +171,38 @@ uniform sampler2D mlMomentTexture1; // E[w nx nz], E[w ny nz], E[w nx], E[w ny]
 // D n / |D n|, D = diag(s, s, 1), its length taken as the area-weighted root mean square.
 vec3 mlVisibleNormal(vec2 uv, vec3 v, float lod)
 {
-  ML_COUNT_SAMPLE();
-  ML_COUNT_SAMPLE();
-  vec4 a = textureLod(mlMomentTexture0, uv, lod);
-  vec4 b = textureLod(mlMomentTexture1, uv, lod);
+  vec4 a = vec4(0.0);
+  vec4 b = vec4(0.0);
+#ifdef ML_STORED_NORMALS
+  if (lod < mlMomentFirstLevel)
+  {
+    // Trilinear as the sampler's, the levels below the texture's from the stored normals.
+    int level = int(lod);
+    float f = lod - float(level);
+    mlAddLevelMoments(uv, level, 1.0 - f, a, b);
+    if (f > 0.0)
+    {
+      if (float(level + 1) < mlMomentFirstLevel)
+      {
+        mlAddLevelMoments(uv, level + 1, f, a, b);
+      }
+      else
+      {
+        ML_COUNT_SAMPLE();
+        ML_COUNT_SAMPLE();
+        a += f * textureLod(mlMomentTexture0, uv, 0.0);
+        b += f * textureLod(mlMomentTexture1, uv, 0.0);
+      }
+    }
+  }
+  else
+#endif
+  {
+    ML_COUNT_SAMPLE();
+    ML_COUNT_SAMPLE();
+    a = textureLod(mlMomentTexture0, uv, lod - mlMomentFirstLevel);
+    b = textureLod(mlMomentTexture1, uv, lod - mlMomentFirstLevel);
+  }
   float s = mlDepthScale * mlGradientScale;
   float r = sqrt(max(s * s * (a.x + a.y) + a.w, 1e-12) / max(a.x + a.y + a.w, 1e-12));
   // The footprint's projected area over its base area's, in units of v: E[w (D n).v], where

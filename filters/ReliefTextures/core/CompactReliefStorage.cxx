@@ -88,4 +88,123 @@ float SobelNormalMismatch(
   return *std::max_element(rowMax.begin(), rowMax.end());
 }
 
+void EncodeOctahedral8(float x, float y, float z, std::int8_t& e0, std::int8_t& e1)
+{
+  // Signed normalised: 8 bits err alike in every direction, where x, y with z rebuilt lose the
+  // steep normals of walls (z = sqrt(1 - x^2 - y^2) is ill-conditioned there), and a flat
+  // normal's 0 is exact.
+  z = std::max(z, 0.f);
+  const float l1 = std::fabs(x) + std::fabs(y) + z;
+  const float px = l1 > 0.f ? x / l1 : 0.f, py = l1 > 0.f ? y / l1 : 0.f;
+  e0 = static_cast<std::int8_t>(std::lround(std::min(std::max(px + py, -1.f), 1.f) * 127.f));
+  e1 = static_cast<std::int8_t>(std::lround(std::min(std::max(px - py, -1.f), 1.f) * 127.f));
+}
+
+void DecodeOctahedral8(std::int8_t e0, std::int8_t e1, float n[3])
+{
+  // GL_RG8_SNORM: max(k / 127, -1); then vtkReliefHeightFieldFS.glsl's mlOctahedralNormal.
+  const float a = std::max(static_cast<float>(e0) / 127.f, -1.f);
+  const float b = std::max(static_cast<float>(e1) / 127.f, -1.f);
+  const float px = 0.5f * (a + b), py = 0.5f * (a - b);
+  const float pz = 1.f - std::fabs(px) - std::fabs(py);
+  const float length = std::sqrt(px * px + py * py + pz * pz);
+  n[0] = px / length;
+  n[1] = py / length;
+  n[2] = pz / length;
+}
+
+void NormalMoments(float x, float y, float z, float m[8])
+{
+  z = std::max(z, 0.f);
+  const float length = std::sqrt(x * x + y * y + z * z);
+  if (length > 0.f)
+  {
+    x /= length;
+    y /= length;
+    z /= length;
+  }
+  else
+  {
+    x = y = 0.f;
+    z = 1.f;
+  }
+  // Walls steeper than nz = 1/16 are weighted as at 1/16, which keeps half floats finite and
+  // exact enough.
+  const float w = 1.f / std::max(z, 1.f / 16.f);
+  m[0] = w * x * x;
+  m[1] = w * y * y;
+  m[2] = w * x * y;
+  m[3] = w * z * z;
+  m[4] = w * x * z;
+  m[5] = w * y * z;
+  m[6] = w * x;
+  m[7] = w * y;
+}
+
+int MipLevelSize(int size, int level)
+{
+  return std::max(1, size >> level);
+}
+
+namespace
+{
+// The level-0 indices (with repeats) that level `level`'s index i averages along one axis of
+// `size` texels: children 2i and 2i + 1 clamped to each finer level in turn.
+void AxisTexels(int i, int level, int size, std::vector<int>& out)
+{
+  if (level == 0)
+  {
+    out.push_back(i);
+    return;
+  }
+  const int finer = MipLevelSize(size, level - 1);
+  for (int d = 0; d < 2; ++d)
+  {
+    AxisTexels(std::min(2 * i + d, finer - 1), level - 1, size, out);
+  }
+}
+} // namespace
+
+std::vector<float> NormalMomentLevel(
+  const float* normalXY, const float* normalZ, int w, int h, int level)
+{
+  constexpr int k = NormalMomentCount;
+  const int lw = MipLevelSize(w, level), lh = MipLevelSize(h, level);
+  std::vector<float> out(static_cast<size_t>(lw) * static_cast<size_t>(lh) * k, 0.f);
+  std::vector<std::vector<int>> columns(static_cast<size_t>(lw));
+  for (int i = 0; i < lw; ++i)
+  {
+    AxisTexels(i, level, w, columns[static_cast<size_t>(i)]);
+  }
+  const float share = 1.f / static_cast<float>((1 << level) * (1 << level));
+  ParallelFor(0, static_cast<std::size_t>(lh), 16, [&](std::size_t rowBegin, std::size_t rowEnd) {
+    std::vector<int> rows;
+    float m[k];
+    for (int j = static_cast<int>(rowBegin); j < static_cast<int>(rowEnd); ++j)
+    {
+      rows.clear();
+      AxisTexels(j, level, h, rows);
+      for (int i = 0; i < lw; ++i)
+      {
+        float* o = &out[(static_cast<size_t>(j) * lw + i) * k];
+        for (int cj : rows)
+        {
+          for (int ci : columns[static_cast<size_t>(i)])
+          {
+            const size_t t = static_cast<size_t>(cj) * w + ci;
+            const float x = normalXY[2 * t], y = normalXY[2 * t + 1];
+            const float z = normalZ ? normalZ[t] : std::sqrt(std::max(0.f, 1.f - x * x - y * y));
+            NormalMoments(x, y, z, m);
+            for (int c = 0; c < k; ++c)
+            {
+              o[c] += share * m[c];
+            }
+          }
+        }
+      }
+    }
+  });
+  return out;
+}
+
 } // namespace mesolight

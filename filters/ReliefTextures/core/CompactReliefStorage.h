@@ -4,7 +4,10 @@
  * @brief What the relief mapper uploads in its compact storage (plain C++17, no VTK types):
  *        depth in 16 bits, the min-depth pyramid of those depths (exact minima), and the test
  *        deciding whether a relief texture's normals can be derived from its depth in the
- *        shader (Sobel, as vtkReliefTextureFilter bakes them) instead of being uploaded.
+ *        shader (Sobel, as vtkReliefTextureFilter bakes them) instead of being uploaded; the
+ *        normal in 8-bit octahedral coordinates and the mip levels of its second moments that
+ *        level of detail's visible normal filter reads (levels 2 and coarser: the finer ones
+ *        follow from the normals themselves).
  *
  * Values are unsigned normalised integers as OpenGL reads them: an 8-bit k is k / 255, a
  * 16-bit m is m / 65535.
@@ -47,6 +50,49 @@ MESOLIGHTRELIEFTEXTURES_EXPORT std::vector<std::vector<std::uint16_t>> CompactMi
  */
 MESOLIGHTRELIEFTEXTURES_EXPORT float SobelNormalMismatch(
   const float* depth, const float* normalXY, int w, int h, double depthScale);
+
+/**
+ * A unit normal (z >= 0, hemisphere) in hemispherical octahedral coordinates (Cigolle et al.,
+ * "A Survey of Efficient Representations for Independent Unit Vectors", JCGT 2014) as signed
+ * normalised 8-bit values, as GL_RG8_SNORM stores them: k / 127. x, y, z need not be unit.
+ */
+MESOLIGHTRELIEFTEXTURES_EXPORT void EncodeOctahedral8(
+  float x, float y, float z, std::int8_t& e0, std::int8_t& e1);
+
+/** The unit normal of 8-bit octahedral coordinates (the shader's decoding, normalised). */
+MESOLIGHTRELIEFTEXTURES_EXPORT void DecodeOctahedral8(std::int8_t e0, std::int8_t e1, float n[3]);
+
+/**
+ * The eight moments level of detail's visible normal filter reads, of a unit normal n weighted
+ * by w = 1 / max(nz, 1/16), the texel's surface area over its base area (LEAN mapping, Olano and
+ * Baker, "LEAN Mapping", I3D 2010, here with the 3D second-moment matrix): m[0..3] = w nx^2,
+ * w ny^2, w nx ny, w nz^2 and m[4..7] = w nx nz, w ny nz, w nx, w ny (mlMomentTexture0 and 1).
+ * n is normalised here (a zero vector is taken as (0, 0, 1)).
+ */
+constexpr int NormalMomentCount = 8;
+MESOLIGHTRELIEFTEXTURES_EXPORT void NormalMoments(float x, float y, float z, float m[8]);
+
+/**
+ * The first mip level whose normal moments are uploaded. A moment is an average of per-texel
+ * values, so level 0's are those of each texel's own normal (its outer product) and level 1's
+ * the mean of four of them: the shader computes both from the stored normals (16 texels for a
+ * bilinear lookup of level 1) and the texture starts at level 2, a sixteenth of level 0's texels.
+ */
+constexpr int NormalMomentFirstStoredLevel = 2;
+
+/** Size of mip level `level` of a w x h texture, as OpenGL sizes it: max(1, floor(w / 2^l)). */
+MESOLIGHTRELIEFTEXTURES_EXPORT int MipLevelSize(int size, int level);
+
+/**
+ * The moments (NormalMoments, NormalMomentCount floats a texel, row-major) of mip level `level`
+ * of a w x h normal map, sized by MipLevelSize: each level's texel (i, j) is the mean of the
+ * finer level's texels 2i, 2i + 1 by 2j, 2j + 1, clamped to that level (an odd last row or
+ * column is left out, a size of 1 kept), as the shader's reconstruction of level 1 reads them.
+ * Computed from level 0 directly, without the finer levels. normalXY holds each texel's normal
+ * x, y interleaved; normalZ its z, or null to rebuild it as sqrt(1 - x^2 - y^2).
+ */
+MESOLIGHTRELIEFTEXTURES_EXPORT std::vector<float> NormalMomentLevel(
+  const float* normalXY, const float* normalZ, int w, int h, int level);
 
 } // namespace mesolight
 

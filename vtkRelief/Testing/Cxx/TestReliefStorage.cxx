@@ -12,9 +12,12 @@
 #include "vtkReliefMapper.h"
 #include "vtkReliefProperty.h"
 
+#include <vtkActor.h>
 #include <vtkFieldData.h>
+#include <vtkMapper.h>
 #include <vtkImageData.h>
 #include <vtkPointData.h>
+#include <vtkPolyData.h>
 #include <vtkRenderWindow.h>
 
 #include <gtest/gtest.h>
@@ -165,7 +168,7 @@ INSTANTIATE_TEST_SUITE_P(Methods, ReliefStorage,
 // The bytes the mapper reports are those of the formats uploaded: per texel 2 (16-bit depth) + 2
 // (8-bit normal x, y), + 1 (8-bit cone ratio) for cone methods, the derived-normal variant 2
 // less; the max-mipmap pyramid at 8 bytes per cell (16 in float storage); float storage 16 per
-// texel; level of detail adds mip chains and 16 bytes per texel of normal moments.
+// texel; level of detail adds the normal moments' 16 bytes per texel of mip levels 2 and up.
 TEST(ReliefStorage, ReportedBytesAreThoseOfTheFormats)
 {
   const int n = 301;
@@ -202,12 +205,14 @@ TEST(ReliefStorage, ReportedBytesAreThoseOfTheFormats)
     const Measured m = scene.Draw(e.S, e.Method);
     EXPECT_EQ(m.Bytes, e.Bytes) << e.Method << " " << Name(e.S);
   }
-  // Level of detail (the vtkReliefProperty default; these scenes draw without it) adds the mip
-  // chains and the normal's second moments: two RGBA16F textures, 16 bytes per texel, mip-mapped.
-  long long mipTexels = 0; // levels of n^2 down to 1 x 1, sizes halving rounding down
-  for (int w = n;; w = std::max(1, w / 2))
+  // Level of detail (the vtkReliefProperty default; these scenes draw without it) adds the
+  // normal's second moments, two RGBA16F textures, 16 bytes per texel, from mip level 2 (75^2)
+  // down to 1 x 1 (levels 0 and 1 follow from the normals); the depth and normals keep no mip
+  // chain (the visible normal filter reads their level 0 only).
+  long long momentTexels = 0; // levels 2 and up, sizes halving rounding down
+  for (int w = n / 4;; w = std::max(1, w / 2))
   {
-    mipTexels += static_cast<long long>(w) * w;
+    momentTexels += static_cast<long long>(w) * w;
     if (w == 1)
     {
       break;
@@ -219,12 +224,56 @@ TEST(ReliefStorage, ReportedBytesAreThoseOfTheFormats)
     o.LevelOfDetail = true;
     StorageScene scene(o);
     const Measured m = scene.Draw(Storage::Compact, "relief, level of detail");
-    EXPECT_EQ(m.Bytes, (4 + 16) * mipTexels) << "level of detail";
+    EXPECT_EQ(m.Bytes, 4 * texels + 16 * momentTexels) << "level of detail";
   }
   // The ratio the relief benchmark reports: the dense displaced mesh's 32 bytes per vertex and
   // 12 per triangle against the default method's compact textures.
   const double dense = 32.0 * texels + 12.0 * 2.0 * (n - 1) * (n - 1);
   EXPECT_GE(dense / (4.0 * texels), 10.0);
+}
+
+// What the default uploads (an untouched vtkReliefProperty: its method, level of detail on with
+// the visible normal filter) stays within a tenth of the dense displaced mesh's bytes, counted
+// from the mesh itself as the relief benchmark counts it (what VTK's stock mapper uploads:
+// position, normal and texture coordinate, 32 bytes a vertex, three 32-bit indices a
+// triangle). Negative case: the moments at every mip level in RGBA16F, with the depth's and
+// normals' mip chains (the layout before, 26.7 bytes per texel), exceed it.
+TEST(ReliefStorage, DefaultUploadsATenthOfTheDenseMesh)
+{
+  vtkNew<vtkReliefProperty> defaults;
+  for (int n : { 256, 301 })
+  {
+    StorageCase c{ "Stone", vtkReliefProperty::GetMethodName(defaults->GetMethod()),
+      defaults->GetLinearSteps(), defaults->GetRefinementSteps(), 55.0, n };
+    ReliefSceneOptions o = OptionsOf(c);
+    o.LevelOfDetail = defaults->GetLevelOfDetail();
+    ASSERT_TRUE(o.LevelOfDetail) << "level of detail is the default";
+    StorageScene scene(o);
+    const Measured m = scene.Draw(Storage::Compact, "the default");
+    ASSERT_TRUE(scene.Scene.Mapper->GetReliefProperty()->GetNormalFilter() ==
+      vtkReliefProperty::VisibleNormalFilter);
+    ReliefScene dense;
+    std::string error;
+    ASSERT_TRUE(BuildDenseReferenceScene(o, dense, error)) << error;
+    auto* mesh = vtkPolyData::SafeDownCast(dense.Actor->GetMapper()->GetInputAsDataSet());
+    ASSERT_NE(mesh, nullptr);
+    const double denseBytes = 32.0 * mesh->GetNumberOfPoints() + 12.0 * mesh->GetNumberOfPolys();
+    const double texels = double(n) * n;
+    std::cout << n << "^2: the default uploads " << m.Bytes << " bytes (" << m.Bytes / texels
+              << " per texel), the dense mesh " << denseBytes << " (" << denseBytes / texels
+              << "): " << denseBytes / double(m.Bytes) << "x" << std::endl;
+    EXPECT_LE(10.0 * double(m.Bytes), denseBytes) << n << "^2";
+    double mipTexels = 0.0; // the layout before: every level of n^2
+    for (int w = n;; w = std::max(1, w / 2))
+    {
+      mipTexels += double(w) * w;
+      if (w == 1)
+      {
+        break;
+      }
+    }
+    EXPECT_GT(10.0 * (4 + 16) * mipTexels, denseBytes) << "negative case: the layout before";
+  }
 }
 
 // Negative test: depth rounded to 8 bits on a deep map (HemisphereTorus, depth scale 0.15, 256
