@@ -151,6 +151,7 @@ void vtkReliefProperty::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "UseTextureDepthScale: " << (this->UseTextureDepthScale ? "On" : "Off") << "\n";
   os << indent << "SelfShadowing: " << (this->SelfShadowing ? "On" : "Off") << "\n";
   os << indent << "Silhouettes: " << (this->Silhouettes ? "On" : "Off") << "\n";
+  os << indent << "SurfaceCurvature: " << (this->SurfaceCurvature ? "On" : "Off") << "\n";
   os << indent << "WriteDepth: " << (this->WriteDepth ? "On" : "Off") << "\n";
   os << indent << "RepeatTexture: " << (this->RepeatTexture ? "On" : "Off") << "\n";
   os << indent << "FloatTextures: " << (this->FloatTextures ? "On" : "Off") << "\n";

@@ -43,12 +43,30 @@
       // From depth 0 to depth 1. At grazing angles the span grows without bound; it is kept
       // finite so no NaN or Inf reaches the samplers (silhouettes discard such fragments).
       vec3 span = vec3(clamp(q.xy / q.z, vec2(-1e4), vec2(1e4)), 1.0);
+#ifdef ML_CURVED
+      // Curved mesh (Oliveira & Policarpo 2005): the ray's depth below the curved layer is
+      // r(t) = t - c t^2 (c > 0 convex). The march ends where the ray leaves the layer: at its
+      // bottom (r = 1, t = 2 / (1 + sqrt(1 - 4c))) when c < 1/4, else back through its top
+      // (r = 0, t = 1 / c) - there a search without a hit is a silhouette fragment. The span is
+      // scaled so that end is t = 1: every search below runs unchanged.
+      mlQuadric = (gl_FrontFacing ? mlQuadricVC : -mlQuadricVC) / mlDepthScale;
+      mlQuadricOrigin = mlHit.xy;
+      float mlC = dot(mlQuadric, span.xy * span.xy);
+      bool mlExitsTop = mlC >= 0.25;
+      span *= mlExitsTop ? 1.0 / mlC : 2.0 / (1.0 + sqrt(1.0 - 4.0 * mlC));
+#endif
 #ifdef ML_LEVEL_OF_DETAIL
       mlLevelOfDetailSteps(span, mlViewSteps);
 #endif
       float t = mlTraceView(mlHit, span);
       mlHit = mlHit + t * span;
       mlHitPos = mlPos + dir * (mlHit.z / q.z);
+#if defined(ML_CURVED) && defined(ML_SILHOUETTES)
+      if (mlExitsTop && mlLeftLayer)
+      {
+        discard; // the ray passed the curved relief without a hit
+      }
+#endif
     }
 #endif
 #ifdef ML_SILHOUETTES
@@ -88,6 +106,9 @@
     // Toksvig's factor: the exponent s becomes ft * s, ft = |n| / (|n| + s (1 - |n|)).
     mlSpecularPowerScale =
       mlNormalLength / (mlNormalLength + mlSpecularPower * (1.0 - mlNormalLength));
+#endif
+#ifdef ML_CURVED
+    g += 2.0 * mlQuadric * (mlHit.xy - mlQuadricOrigin); // the slope of the curved layer
 #endif
     vec3 pu = dPdu - mlN * (worldDepth * g.x);
     vec3 pv = dPdv - mlN * (worldDepth * g.y);

@@ -10,16 +10,37 @@
 float mlCosView = 1.0; // cosine of the view angle, for offset limiting
 int mlViewSteps = 10;   // linear (or cone) steps for this view ray, adaptive if asked
 
+// Relief mapping on curved meshes (Oliveira & Policarpo 2005, "An efficient representation for
+// surface details"; Policarpo, Oliveira & Comba 2005): below the view ray's entry point the mesh
+// is locally the quadric z = a u^2 + b v^2 of the tangent plane (per-vertex coefficients,
+// interpolated), so the height field at (u, v) lies mlQuadricDepth deeper than on a flat plane.
+// Rays stay straight in the entry point's tangent space; their depth is measured from the curved
+// layer. mlLeftLayer: the search ended without a sample at or below the height field.
+vec2 mlQuadric = vec2(0.0);       // (a, b) in depth units per squared texture unit
+vec2 mlQuadricOrigin = vec2(0.0); // the view ray's entry point, where the quadric touches
+bool mlLeftLayer = false;
+
+float mlQuadricDepth(vec2 uv)
+{
+  vec2 d = uv - mlQuadricOrigin;
+  return dot(mlQuadric, d * d);
+}
+
 // Ray depth minus height-field depth at t: < 0 above the surface, >= 0 at or below it.
 float mlGap(vec3 origin, vec3 span, float t)
 {
   vec3 p = origin + t * span;
+#ifdef ML_CURVED
+  return p.z - mlQuadricDepth(p.xy) - mlDepthAt(p.xy);
+#else
   return p.z - mlDepthAt(p.xy);
+#endif
 }
 
 // Linear search (Levoy 1990; the "quasi-safe" first pass of relief mapping): the first sample at
 // or below the height field and, in tAbove, the last sample above it. A view ray ends at depth 1,
-// never above the height field, so it always returns a hit.
+// never above the height field, so it always returns a hit; on a curved layer it may end where it
+// leaves the layer's top instead (ML_CURVED), and then a search without a hit sets mlLeftLayer.
 float mlLinearSearch(vec3 origin, vec3 span, float tStart, int steps, out float tAbove)
 {
   float dt = (1.0 - tStart) / float(steps);
@@ -33,6 +54,9 @@ float mlLinearSearch(vec3 origin, vec3 span, float tStart, int steps, out float 
     }
     tAbove = t;
   }
+#ifdef ML_CURVED
+  mlLeftLayer = true;
+#endif
   return 1.0;
 }
 
@@ -118,6 +142,9 @@ float mlConeSearch(vec3 origin, vec3 span, int steps, out float tAbove)
     vec3 p = origin + t * span;
     vec2 depthCone = mlDepthAndConeAt(p.xy);
     float depth = depthCone.x;
+#ifdef ML_CURVED
+    depth += mlQuadricDepth(p.xy); // a convex layer falls away: the cone stays empty
+#endif
     if (p.z >= depth)
     {
       return t;
@@ -127,6 +154,9 @@ float mlConeSearch(vec3 origin, vec3 span, int steps, out float tAbove)
     tAbove = t;
     t = min(t + max(coneStep, (1.0 - t) / float(steps - i)), 1.0);
   }
+#ifdef ML_CURVED
+  mlLeftLayer = mlGap(origin, span, t) < 0.0; // the last step reached the ray's end unsampled
+#endif
   return t;
 }
 #endif
@@ -220,6 +250,9 @@ bool mlShadowed(vec3 hit, vec3 spanUpPerDepth)
     vec3 p = origin + t * span;
     vec2 depthCone = mlDepthAndConeAt(p.xy);
     float depth = depthCone.x;
+#ifdef ML_CURVED
+    depth += mlQuadricDepth(p.xy);
+#endif
     if (p.z > depth + bias)
     {
       return true;
@@ -233,7 +266,11 @@ bool mlShadowed(vec3 hit, vec3 spanUpPerDepth)
   for (int i = 1; i < steps; ++i)
   {
     vec3 p = origin + (float(i) * dt) * span;
+#ifdef ML_CURVED
+    if (p.z > mlQuadricDepth(p.xy) + mlDepthAt(p.xy) + bias)
+#else
     if (p.z > mlDepthAt(p.xy) + bias)
+#endif
     {
       return true;
     }
