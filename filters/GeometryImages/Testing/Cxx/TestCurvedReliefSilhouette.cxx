@@ -19,77 +19,26 @@
 
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <iostream>
 
 namespace
 {
 using namespace mesolight;
 
-// The cylinder's axis is v (y): ViewAzimuth 90 turns the camera about it, so at ViewAngle 55 the
-// surface turns away from the viewer about 35 degrees from its middle, well inside the 120-degree
-// patch. The hemispheres-and-tori pattern has a base 0.9 deep: where the surface turns away the
-// dense mesh's outline lies most of the relief depth inside the coarse mesh's.
+// CurvedOutlineScene: the cylinder's axis is v (y); the camera turns 90 degrees about it and
+// looks from 55 degrees, so the surface turns away about 35 degrees from its middle, well inside
+// the 120-degree patch. The hemispheres-and-tori pattern has a base 0.9 deep: where the surface
+// turns away the dense mesh's outline lies most of the relief depth inside the coarse mesh's.
 GeometryImageSceneOptions Scene(const char* surface)
 {
-  GeometryImageSceneOptions o;
-  o.GeometryImage = std::string("procedural:") + surface;
-  o.Relief.Pattern = "HemisphereTorus";
-  o.Relief.Resolution = 256;
-  o.Relief.Width = 300;
-  o.Relief.Height = 300;
-  o.Relief.DepthScale = 0.06;
-  o.Relief.SelfShadowing = false; // the stock mapper has no shadows
-  o.Relief.ViewAngle = 55.0;
-  o.Relief.ViewAzimuth = 90.0;
-  o.Relief.ViewDistance = 2.4;
-  o.Relief.LinearSteps = 32;
-  o.Relief.RefinementSteps = 8;
-  o.Stride = 8;
-  return o;
+  return CurvedOutlineScene(surface);
 }
 
-struct Coverage
-{
-  long long Mismatched = 0; // pixels covered by exactly one frame
-  long long Either = 0;     // pixels covered by either
-  double Percent() const { return Either > 0 ? 100.0 * Mismatched / Either : 100.0; }
-};
-
-// Pixels covered by exactly one frame. With outlineOnly, only those of the part of the frame
-// where the surface turns away: the covered bounding box without a margin on its left, right and
-// bottom, where the patch ends at the texture's own edges (the ends of the cylinder and its
-// u = 0 edge, the texture-border rule's business, drawn by both marches alike).
-Coverage CompareCoverage(const Frame& a, const Frame& b, bool outlineOnly)
-{
-  int x0 = a.Width, x1 = -1, y0 = a.Height;
-  for (int y = 0; y < a.Height; ++y)
-  {
-    for (int x = 0; x < a.Width; ++x)
-    {
-      const size_t p = static_cast<size_t>(y) * a.Width + x;
-      if (a.Covered(p) || b.Covered(p))
-      {
-        x0 = std::min(x0, x);
-        x1 = std::max(x1, x);
-        y0 = std::min(y0, y);
-      }
-    }
-  }
-  const int margin = outlineOnly ? 10 : 0;
-  Coverage c;
-  for (int y = y0 + margin; y < a.Height; ++y)
-  {
-    for (int x = x0 + margin; x <= x1 - margin; ++x)
-    {
-      const size_t p = static_cast<size_t>(y) * a.Width + x;
-      const bool ca = a.Covered(p), cb = b.Covered(p);
-      c.Mismatched += ca != cb ? 1 : 0;
-      c.Either += ca || cb ? 1 : 0;
-    }
-  }
-  return c;
-}
+// Only the top of the outline counts (CompareCoverage's margin): the left, right and bottom of
+// the frame are the patch's texture edges (the ends of the cylinder, its u = 0 edge), the
+// texture-border rule's business, drawn by both marches alike.
+constexpr int OutlineMargin = 10;
+using Coverage = CoverageDifference;
 
 Frame Render(const GeometryImageSceneOptions& o, bool dense, const std::string& tag)
 {
@@ -119,10 +68,10 @@ void Measure(const char* surface, Coverage& curved, Coverage& flat)
   ASSERT_FALSE(reference.Depth.empty());
   ASSERT_EQ(reference.Depth.size(), withCurvature.Depth.size());
   ASSERT_EQ(reference.Depth.size(), withoutCurvature.Depth.size());
-  curved = CompareCoverage(withCurvature, reference, true);
-  flat = CompareCoverage(withoutCurvature, reference, true);
-  const Coverage curvedWhole = CompareCoverage(withCurvature, reference, false);
-  const Coverage flatWhole = CompareCoverage(withoutCurvature, reference, false);
+  curved = CompareCoverage(withCurvature, reference, OutlineMargin);
+  flat = CompareCoverage(withoutCurvature, reference, OutlineMargin);
+  const Coverage curvedWhole = CompareCoverage(withCurvature, reference);
+  const Coverage flatWhole = CompareCoverage(withoutCurvature, reference);
   std::cout << "[" << surface << "] coverage mismatch against the dense mesh where the surface "
             << "turns away: curved march " << curved.Mismatched << " px (" << curved.Percent()
             << "%), flat march " << flat.Mismatched << " px (" << flat.Percent() << "%) of "
