@@ -9,6 +9,9 @@
   vec3 mlHit = vec3(mlUV, 0.0);
   vec3 mlHitPos = mlPos;
   vec3 mlShadingNormal = mlN;
+#ifdef ML_CURVED
+  vec3 mlHitPlane = mlHit; // the hit in the entry point's plane coordinates (shadows start there)
+#endif
   mat3 mlWorldToTexture = mat3(0.0);
   bool mlHasFrame = abs(mlDet) > 1e-30;
 #ifdef ML_LEVEL_OF_DETAIL
@@ -45,15 +48,21 @@
       vec3 span = vec3(clamp(q.xy / q.z, vec2(-1e4), vec2(1e4)), 1.0);
 #ifdef ML_CURVED
       // Curved mesh (Oliveira & Policarpo 2005): the ray's depth below the curved layer is
-      // r(t) = t - c t^2 (c > 0 convex). The march ends where the ray leaves the layer: at its
-      // bottom (r = 1, t = 2 / (1 + sqrt(1 - 4c))) when c < 1/4, else back through its top
-      // (r = 0, t = 1 / c) - there a search without a hit is a silhouette fragment. The span is
-      // scaled so that end is t = 1: every search below runs unchanged.
-      mlQuadric = (gl_FrontFacing ? mlQuadricVC : -mlQuadricVC) / mlDepthScale;
+      // r(t) = t - c t^2 / (1 - k t) (c > 0 convex; k the layer's stretch along the ray,
+      // mlQuadricDepth). The march ends where the ray leaves the layer: at its bottom (r = 1,
+      // the first root of (c + k) t^2 - (1 + k) t + 1) when there is one, else back through its
+      // top (r = 0, t = 1 / (c + k)) - there a search without a hit is a silhouette fragment.
+      // The span is scaled so that end is t = 1: every search below runs unchanged; with
+      // c = k = 0 it ends at t = 1 as on a flat mesh.
+      vec2 mlQuadricFacing = gl_FrontFacing ? mlQuadricVC : -mlQuadricVC;
+      mlQuadric = mlQuadricFacing / mlDepthScale;
+      mlLayerStretch = 2.0 * mlDepthScale * mlQuadricFacing * vec2(1.0, (su * su) / max(sv * sv, 1e-30));
       mlQuadricOrigin = mlHit.xy;
       float mlC = dot(mlQuadric, span.xy * span.xy);
-      bool mlExitsTop = mlC >= 0.25;
-      span *= mlExitsTop ? 1.0 / mlC : 2.0 / (1.0 + sqrt(1.0 - 4.0 * mlC));
+      float mlK = mlC != 0.0 ? dot(mlQuadric * mlLayerStretch, span.xy * span.xy) / mlC : 0.0;
+      float mlDisc = (1.0 + mlK) * (1.0 + mlK) - 4.0 * (mlC + mlK);
+      bool mlExitsTop = mlDisc < 0.0;
+      span *= mlExitsTop ? 1.0 / (mlC + mlK) : 2.0 / (1.0 + mlK + sqrt(mlDisc));
 #endif
 #ifdef ML_LEVEL_OF_DETAIL
       mlLevelOfDetailSteps(span, mlViewSteps);
@@ -61,6 +70,10 @@
       float t = mlTraceView(mlHit, span);
       mlHit = mlHit + t * span;
       mlHitPos = mlPos + dir * (mlHit.z / q.z);
+#ifdef ML_CURVED
+      mlHitPlane = mlHit;
+      mlHit.xy = mlLayerUV(mlHit); // the texture coordinate at the hit's depth in the layer
+#endif
 #if defined(ML_CURVED) && defined(ML_SILHOUETTES)
       if (mlExitsTop && mlLeftLayer)
       {
@@ -68,6 +81,12 @@
       }
 #endif
     }
+#if defined(ML_CURVED) && defined(ML_SILHOUETTES)
+    else if (worldDepth > 0.0 && dot(gl_FrontFacing ? mlQuadricVC : -mlQuadricVC, q.xy * q.xy) > 0.0)
+    {
+      discard; // a ray that does not go below the tangent plane misses a convex layer
+    }
+#endif
 #endif
 #ifdef ML_SILHOUETTES
     if (any(lessThan(mlHit.xy, vec2(0.0))) || any(greaterThan(mlHit.xy, vec2(1.0))))
@@ -108,7 +127,8 @@
       mlNormalLength / (mlNormalLength + mlSpecularPower * (1.0 - mlNormalLength));
 #endif
 #ifdef ML_CURVED
-    g += 2.0 * mlQuadric * (mlHit.xy - mlQuadricOrigin); // the slope of the curved layer
+    // The slope of the curved layer under the hit.
+    g += 2.0 * mlQuadric * mlLayerScale(mlHitPlane.z) * (mlHitPlane.xy - mlQuadricOrigin);
 #endif
     vec3 pu = dPdu - mlN * (worldDepth * g.x);
     vec3 pv = dPdv - mlN * (worldDepth * g.y);
@@ -134,6 +154,9 @@
   }
   // Bump mapping shades the undisplaced point but shadows it from the height below it.
   vec3 mlShadowPoint = mlHit;
+#ifdef ML_CURVED
+  mlShadowPoint = mlHitPlane;
+#endif
 #if ML_METHOD == ML_BUMP
   mlShadowPoint.z = mlDepthAt(mlHit.xy);
 #endif

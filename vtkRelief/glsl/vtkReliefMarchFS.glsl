@@ -14,16 +14,35 @@ int mlViewSteps = 10;   // linear (or cone) steps for this view ray, adaptive if
 // surface details"; Policarpo, Oliveira & Comba 2005): below the view ray's entry point the mesh
 // is locally the quadric z = a u^2 + b v^2 of the tangent plane (per-vertex coefficients,
 // interpolated), so the height field at (u, v) lies mlQuadricDepth deeper than on a flat plane.
-// Rays stay straight in the entry point's tangent space; their depth is measured from the curved
-// layer. mlLeftLayer: the search ended without a sample at or below the height field.
+// Rays stay straight in the entry point's tangent space (plane coordinates: offsets along the
+// tangent plane in texture units, depth z below it); a point's depth in the layer is z less the
+// quadric's depth. Beyond the paper, to the same order as the quadric: the layer's sheets are
+// parallel to the surface, their radius 1 / kappa less the depth, so at plane depth z an offset d
+// is the texture offset d / (1 - kappa z) and the layer lies a d^2 / (1 - kappa z) below the
+// plane (a cylinder's exact depth r - |p - axis| to second order). mlLayerStretch is kappa times
+// the world depth of depth 1, per axis.
+// mlLeftLayer: the search ended without a sample at or below the height field.
 vec2 mlQuadric = vec2(0.0);       // (a, b) in depth units per squared texture unit
+vec2 mlLayerStretch = vec2(0.0);  // kappa x world depth of depth 1, along u and v
 vec2 mlQuadricOrigin = vec2(0.0); // the view ray's entry point, where the quadric touches
 bool mlLeftLayer = false;
 
-float mlQuadricDepth(vec2 uv)
+vec2 mlLayerScale(float z)
 {
-  vec2 d = uv - mlQuadricOrigin;
-  return dot(mlQuadric, d * d);
+  return vec2(1.0) / max(vec2(1.0) - mlLayerStretch * z, vec2(0.25));
+}
+
+// Depth of the layer's top below the tangent plane under the point p (plane coordinates).
+float mlQuadricDepth(vec3 p)
+{
+  vec2 d = p.xy - mlQuadricOrigin;
+  return dot(mlQuadric * mlLayerScale(p.z), d * d);
+}
+
+// The texture coordinate of a point in plane coordinates.
+vec2 mlLayerUV(vec3 p)
+{
+  return mlQuadricOrigin + (p.xy - mlQuadricOrigin) * mlLayerScale(p.z);
 }
 
 // Ray depth minus height-field depth at t: < 0 above the surface, >= 0 at or below it.
@@ -31,7 +50,7 @@ float mlGap(vec3 origin, vec3 span, float t)
 {
   vec3 p = origin + t * span;
 #ifdef ML_CURVED
-  return p.z - mlQuadricDepth(p.xy) - mlDepthAt(p.xy);
+  return p.z - mlQuadricDepth(p) - mlDepthAt(mlLayerUV(p));
 #else
   return p.z - mlDepthAt(p.xy);
 #endif
@@ -140,10 +159,12 @@ float mlConeSearch(vec3 origin, vec3 span, int steps, out float tAbove)
   for (int i = 0; i < steps; ++i)
   {
     vec3 p = origin + t * span;
+#ifdef ML_CURVED
+    vec2 depthCone = mlDepthAndConeAt(mlLayerUV(p));
+    float depth = depthCone.x + mlQuadricDepth(p); // a convex layer falls away: still empty
+#else
     vec2 depthCone = mlDepthAndConeAt(p.xy);
     float depth = depthCone.x;
-#ifdef ML_CURVED
-    depth += mlQuadricDepth(p.xy); // a convex layer falls away: the cone stays empty
 #endif
     if (p.z >= depth)
     {
@@ -248,10 +269,12 @@ bool mlShadowed(vec3 hit, vec3 spanUpPerDepth)
   for (int i = 1; i < steps && t < 1.0 - dt + 1e-4; ++i)
   {
     vec3 p = origin + t * span;
+#ifdef ML_CURVED
+    vec2 depthCone = mlDepthAndConeAt(mlLayerUV(p));
+    float depth = depthCone.x + mlQuadricDepth(p);
+#else
     vec2 depthCone = mlDepthAndConeAt(p.xy);
     float depth = depthCone.x;
-#ifdef ML_CURVED
-    depth += mlQuadricDepth(p.xy);
 #endif
     if (p.z > depth + bias)
     {
@@ -267,7 +290,7 @@ bool mlShadowed(vec3 hit, vec3 spanUpPerDepth)
   {
     vec3 p = origin + (float(i) * dt) * span;
 #ifdef ML_CURVED
-    if (p.z > mlQuadricDepth(p.xy) + mlDepthAt(p.xy) + bias)
+    if (p.z > mlQuadricDepth(p) + mlDepthAt(mlLayerUV(p)) + bias)
 #else
     if (p.z > mlDepthAt(p.xy) + bias)
 #endif
