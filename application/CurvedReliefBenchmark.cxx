@@ -7,6 +7,9 @@
 #include "OutputFile.h"
 #include "Timing.h"
 
+#include "vtkReliefMapper.h"
+#include "vtkReliefProperty.h"
+
 #include <vtkRenderWindow.h>
 
 #include <algorithm>
@@ -29,7 +32,20 @@ struct Row
   CoverageDifference CurvedWhole, FlatWhole; // the whole frame
   bool SameImage = false;                    // curved and flat march drew the same pixels
   double CurvedMs = 0.0, FlatMs = 0.0;       // median frame times, interleaved
+  double CurvedSamples = 0.0, FlatSamples = 0.0; // mean relief-texture samples per pixel
 };
+
+// Mean relief-texture samples per covered pixel (SampleCountOutput): the march's cost without
+// the noise of a shared machine's clock.
+double MeanSamples(ReliefScene& scene, vtkRenderWindow* window)
+{
+  vtkReliefProperty* property = scene.Mapper->GetReliefProperty();
+  const int output = property->GetOutput();
+  property->SetOutput(vtkReliefProperty::SampleCountOutput);
+  const double samples = MeanSampleCount(CaptureFrame(window));
+  property->SetOutput(output);
+  return samples;
+}
 
 double Median(std::vector<double> v)
 {
@@ -80,6 +96,8 @@ bool Measure(const std::string& surface, int width, int height, int frames, Row&
   row.FlatWhole = CompareCoverage(withoutCurvature, reference);
   row.SameImage =
     withCurvature.Rgb == withoutCurvature.Rgb && withCurvature.Depth == withoutCurvature.Depth;
+  row.CurvedSamples = MeanSamples(curved, curvedWindow);
+  row.FlatSamples = MeanSamples(flat, flatWindow);
   // Interleaved, so both see the same load on a shared machine; the ratio is what to read.
   std::vector<double> curvedMs, flatMs;
   for (int f = 0; f < frames; ++f)
@@ -101,8 +119,9 @@ int RunCurvedReliefBenchmark(const std::vector<std::string>& args)
     "quadrics, Oliveira & Policarpo 2005)\nagainst the flat-plane march on the same coarse mesh "
     "(stride 8 of a 256^2 geometry\nimage, HemisphereTorus at depth scale 0.06, seen from 55 deg "
     "about the cylinder's axis):\nthe outline's coverage mismatch against the dense displaced "
-    "mesh (% of the pixels\neither covers, top of the outline and whole frame) and the median "
-    "frame time of\nboth, frames interleaved in the same run.\n");
+    "mesh (% of the pixels\neither covers, top of the outline and whole frame), the median "
+    "frame time of\nboth (frames interleaved in the same run) and their mean relief-texture "
+    "samples per\npixel (SampleCountOutput).\n");
   cl.AddValue("--surfaces", "A,B,..", "procedural surfaces (cylinder, sphere, plane, ...)",
     "cylinder,sphere,plane");
   cl.AddValue("--size", "WxH", "rendered image size", "300x300");
@@ -133,7 +152,7 @@ int RunCurvedReliefBenchmark(const std::vector<std::string>& args)
       << std::setw(9) << "curved%" << std::setw(10) << "flat px" << std::setw(8) << "flat%"
       << std::setw(11) << "whole c%" << std::setw(11) << "whole f%" << std::setw(11)
       << "curved ms" << std::setw(9) << "flat ms" << std::setw(8) << "ratio" << std::setw(11)
-      << "same img"
+      << "samples c" << std::setw(11) << "samples f" << std::setw(10) << "same img"
       << "\n";
   std::vector<Row> rows;
   for (const std::string& surface : cl.GetStringList("--surfaces"))
@@ -150,7 +169,8 @@ int RunCurvedReliefBenchmark(const std::vector<std::string>& args)
         << row.Flat.Percent() << std::setw(11) << row.CurvedWhole.Percent() << std::setw(11)
         << row.FlatWhole.Percent() << std::setw(11) << row.CurvedMs << std::setw(9) << row.FlatMs
         << std::setprecision(3) << std::setw(8) << row.CurvedMs / std::max(row.FlatMs, 1e-9)
-        << std::setw(11) << (row.SameImage ? "yes" : "no") << "\n";
+        << std::setprecision(2) << std::setw(11) << row.CurvedSamples << std::setw(11)
+        << row.FlatSamples << std::setw(10) << (row.SameImage ? "yes" : "no") << "\n";
     out.unsetf(std::ios::fixed);
     rows.push_back(row);
   }
@@ -158,13 +178,15 @@ int RunCurvedReliefBenchmark(const std::vector<std::string>& args)
   {
     std::ofstream csv(cl.Get("--csv"));
     csv << "surface,outline_curved_px,outline_curved_pct,outline_flat_px,outline_flat_pct,"
-           "whole_curved_pct,whole_flat_pct,curved_ms,flat_ms,cost_ratio,same_image\n";
+           "whole_curved_pct,whole_flat_pct,curved_ms,flat_ms,cost_ratio,curved_samples,"
+           "flat_samples,same_image\n";
     for (const Row& r : rows)
     {
       csv << r.Surface << ',' << r.Curved.Mismatched << ',' << r.Curved.Percent() << ','
           << r.Flat.Mismatched << ',' << r.Flat.Percent() << ',' << r.CurvedWhole.Percent() << ','
           << r.FlatWhole.Percent() << ',' << r.CurvedMs << ',' << r.FlatMs << ','
-          << r.CurvedMs / std::max(r.FlatMs, 1e-9) << ',' << (r.SameImage ? 1 : 0) << "\n";
+          << r.CurvedMs / std::max(r.FlatMs, 1e-9) << ',' << r.CurvedSamples << ','
+          << r.FlatSamples << ',' << (r.SameImage ? 1 : 0) << "\n";
     }
     if (!csv)
     {
