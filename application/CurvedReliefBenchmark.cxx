@@ -28,10 +28,10 @@ constexpr int OutlineMargin = 10;
 struct Row
 {
   std::string Surface;
-  CoverageDifference Curved, Flat;           // the top of the outline
-  CoverageDifference CurvedWhole, FlatWhole; // the whole frame
-  bool SameImage = false;                    // curved and flat march drew the same pixels
-  double CurvedMs = 0.0, FlatMs = 0.0;       // median frame times, interleaved
+  CoverageDifference Curved, Flat;               // the top of the outline
+  CoverageDifference CurvedWhole, FlatWhole;     // the whole frame
+  bool SameImage = false;                        // curved and flat march drew the same pixels
+  double CurvedMs = 0.0, FlatMs = 0.0;           // median frame times, interleaved
   double CurvedSamples = 0.0, FlatSamples = 0.0; // mean relief-texture samples per pixel
 };
 
@@ -66,8 +66,8 @@ double FrameMs(vtkRenderWindow* window)
   return 1000.0 * SecondsSince(start);
 }
 
-bool Measure(const std::string& surface, int width, int height, int frames, Row& row,
-  std::string& error)
+bool Measure(
+  const std::string& surface, int width, int height, int frames, Row& row, std::string& error)
 {
   GeometryImageSceneOptions o = CurvedOutlineScene(surface);
   o.Relief.Width = width;
@@ -150,9 +150,9 @@ int RunCurvedReliefBenchmark(const std::vector<std::string>& args)
       << frames << " interleaved frames, " << width << "x" << height << ".\n\n";
   out << std::left << std::setw(10) << "surface" << std::right << std::setw(12) << "curved px"
       << std::setw(9) << "curved%" << std::setw(10) << "flat px" << std::setw(8) << "flat%"
-      << std::setw(11) << "whole c%" << std::setw(11) << "whole f%" << std::setw(11)
-      << "curved ms" << std::setw(9) << "flat ms" << std::setw(8) << "ratio" << std::setw(11)
-      << "samples c" << std::setw(11) << "samples f" << std::setw(10) << "same img"
+      << std::setw(11) << "whole c%" << std::setw(11) << "whole f%" << std::setw(11) << "curved ms"
+      << std::setw(9) << "flat ms" << std::setw(8) << "ratio" << std::setw(11) << "samples c"
+      << std::setw(11) << "samples f" << std::setw(10) << "same img"
       << "\n";
   std::vector<Row> rows;
   for (const std::string& surface : cl.GetStringList("--surfaces"))
@@ -185,8 +185,8 @@ int RunCurvedReliefBenchmark(const std::vector<std::string>& args)
       csv << r.Surface << ',' << r.Curved.Mismatched << ',' << r.Curved.Percent() << ','
           << r.Flat.Mismatched << ',' << r.Flat.Percent() << ',' << r.CurvedWhole.Percent() << ','
           << r.FlatWhole.Percent() << ',' << r.CurvedMs << ',' << r.FlatMs << ','
-          << r.CurvedMs / std::max(r.FlatMs, 1e-9) << ',' << r.CurvedSamples << ','
-          << r.FlatSamples << ',' << (r.SameImage ? 1 : 0) << "\n";
+          << r.CurvedMs / std::max(r.FlatMs, 1e-9) << ',' << r.CurvedSamples << ',' << r.FlatSamples
+          << ',' << (r.SameImage ? 1 : 0) << "\n";
     }
     if (!csv)
     {

@@ -55,13 +55,17 @@ struct FrameDifference
 MESOLIGHTEVALUATION_EXPORT FrameDifference CompareFrames(
   const Frame& a, const Frame& b, double depthTolerance, const Frame* footprint = nullptr);
 
-/** Pixels covered by exactly one of two frames (the outline's error), of those covered by either. */
+/** Pixels covered by exactly one of two frames (the outline's error), of those covered by either.
+ */
 struct CoverageDifference
 {
   long long Mismatched = 0;
   long long Either = 0;
   /** Mismatched as % of Either (100 when nothing is covered). */
-  double Percent() const { return this->Either > 0 ? 100.0 * this->Mismatched / this->Either : 100.0; }
+  double Percent() const
+  {
+    return this->Either > 0 ? 100.0 * this->Mismatched / this->Either : 100.0;
+  }
 };
 
 /**

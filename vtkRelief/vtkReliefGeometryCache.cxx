@@ -106,7 +106,8 @@ bool AddQuadrics(vtkPolyData* mesh, std::string& error)
     normals->GetTuple(i, q);
     positions[static_cast<size_t>(i)] = glm::dvec3(p[0], p[1], p[2]);
     nrm[static_cast<size_t>(i)] = glm::dvec3(q[0], q[1], q[2]);
-    uv[static_cast<size_t>(i)] = glm::dvec2(tcoords->GetComponent(i, 0), tcoords->GetComponent(i, 1));
+    uv[static_cast<size_t>(i)] =
+      glm::dvec2(tcoords->GetComponent(i, 0), tcoords->GetComponent(i, 1));
   }
   std::vector<std::array<long long, 3>> triangles;
   triangles.reserve(static_cast<size_t>(mesh->GetNumberOfPolys()));

@@ -166,8 +166,8 @@ void vtkReliefShaderSource::ReplaceValuesBefore(std::string& vs, std::string& fs
   if (this->GetCurved())
   {
     // The per-vertex quadric (a, b) of the curved mesh, interpolated like the tangent.
-    vtkShaderProgram::Substitute(vs, "//VTK::Normal::Dec",
-      "in vec2 mlQuadricMC;\nout vec2 mlQuadricVC;\n//VTK::Normal::Dec");
+    vtkShaderProgram::Substitute(
+      vs, "//VTK::Normal::Dec", "in vec2 mlQuadricMC;\nout vec2 mlQuadricVC;\n//VTK::Normal::Dec");
     vtkShaderProgram::Substitute(
       vs, "//VTK::Normal::Impl", "mlQuadricVC = mlQuadricMC;\n  //VTK::Normal::Impl");
   }

@@ -56,7 +56,8 @@
       // c = k = 0 it ends at t = 1 as on a flat mesh.
       vec2 mlQuadricFacing = gl_FrontFacing ? mlQuadricVC : -mlQuadricVC;
       mlQuadric = mlQuadricFacing / mlDepthScale;
-      mlLayerStretch = 2.0 * mlDepthScale * mlQuadricFacing * vec2(1.0, (su * su) / max(sv * sv, 1e-30));
+      mlLayerStretch =
+        2.0 * mlDepthScale * mlQuadricFacing * vec2(1.0, (su * su) / max(sv * sv, 1e-30));
       mlQuadricOrigin = mlHit.xy;
       float mlC = dot(mlQuadric, span.xy * span.xy);
       float mlK = mlC != 0.0 ? dot(mlQuadric * mlLayerStretch, span.xy * span.xy) / mlC : 0.0;

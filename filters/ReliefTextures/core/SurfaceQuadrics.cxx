@@ -157,8 +157,9 @@ std::vector<glm::vec2> ComputeSurfaceQuadrics(const std::vector<glm::dvec3>& pos
     }
     a /= s;
     b /= s;
-    quadrics[i] = glm::vec2(std::abs(a) < SurfaceQuadricFlatThreshold ? 0.0f : static_cast<float>(a),
-      std::abs(b) < SurfaceQuadricFlatThreshold ? 0.0f : static_cast<float>(b));
+    quadrics[i] =
+      glm::vec2(std::abs(a) < SurfaceQuadricFlatThreshold ? 0.0f : static_cast<float>(a),
+        std::abs(b) < SurfaceQuadricFlatThreshold ? 0.0f : static_cast<float>(b));
   }
   return quadrics;
 }

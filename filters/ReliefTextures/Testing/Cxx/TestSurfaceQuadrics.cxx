@@ -71,10 +71,12 @@ TEST(SurfaceQuadrics, PlaneIsExactlyFlat)
   const glm::dvec3 nrm = glm::normalize(glm::dvec3(0.3, -0.2, 1.0));
   const glm::dvec3 t = glm::normalize(glm::cross(glm::dvec3(0.0, 1.0, 0.0), nrm));
   const glm::dvec3 b = glm::cross(nrm, t);
-  const Mesh m = Grid(16, [&](double u, double v, glm::dvec3& n) {
-    n = nrm;
-    return glm::dvec3(0.1, 0.7, -0.3) + 1.7 * u * t + 0.9 * v * b;
-  });
+  const Mesh m = Grid(16,
+    [&](double u, double v, glm::dvec3& n)
+    {
+      n = nrm;
+      return glm::dvec3(0.1, 0.7, -0.3) + 1.7 * u * t + 0.9 * v * b;
+    });
   const std::vector<glm::vec2> q = Quadrics(m);
   for (const glm::vec2& c : q)
   {
@@ -91,7 +93,8 @@ TEST(SurfaceQuadrics, CylinderCurvesAlongUOnly)
   const double expected = 0.5 * (2.0 * Pi / 3.0);
   for (double scale : { 1.0, 40.0 })
   {
-    const Mesh m = Grid(32, [&](double u, double v, glm::dvec3& n) { return Cylinder(u, v, n, scale); });
+    const Mesh m =
+      Grid(32, [&](double u, double v, glm::dvec3& n) { return Cylinder(u, v, n, scale); });
     const std::vector<glm::vec2> q = Quadrics(m);
     EXPECT_TRUE(AnySurfaceQuadric(q));
     for (size_t k = 0; k < q.size(); ++k)
@@ -108,11 +111,14 @@ TEST(SurfaceQuadrics, SphereCurvesAlongBothAxes)
   // s_u = r cos(theta) span, s_v = r span; every normal curvature is 1 / r, so
   // a' = s_u / (2 r) and b' = s_v^2 / (2 r s_u).
   const double span = 0.5 * Pi, r = 1.0 / span;
-  const Mesh m = Grid(32, [&](double u, double v, glm::dvec3& n) {
-    const double phi = (u - 0.5) * span, theta = (v - 0.5) * span;
-    n = glm::dvec3(std::cos(theta) * std::sin(phi), std::sin(theta), std::cos(theta) * std::cos(phi));
-    return r * n;
-  });
+  const Mesh m = Grid(32,
+    [&](double u, double v, glm::dvec3& n)
+    {
+      const double phi = (u - 0.5) * span, theta = (v - 0.5) * span;
+      n = glm::dvec3(
+        std::cos(theta) * std::sin(phi), std::sin(theta), std::cos(theta) * std::cos(phi));
+      return r * n;
+    });
   const std::vector<glm::vec2> q = Quadrics(m);
   for (size_t k = 0; k < q.size(); ++k)
   {
@@ -122,8 +128,8 @@ TEST(SurfaceQuadrics, SphereCurvesAlongBothAxes)
     // The lines of latitude are not geodesics and s_u changes with v: the one-ring sees slightly
     // different depths than the exact normal curvature (1% inside; 2% at the border, whose
     // one-sided rings see s_u change on one side only).
-    const bool border = m.TCoords[k].x == 0.0 || m.TCoords[k].x == 1.0 ||
-      m.TCoords[k].y == 0.0 || m.TCoords[k].y == 1.0;
+    const bool border = m.TCoords[k].x == 0.0 || m.TCoords[k].x == 1.0 || m.TCoords[k].y == 0.0 ||
+      m.TCoords[k].y == 1.0;
     const double tolerance = border ? 0.02 : 0.01;
     ASSERT_NEAR(q[k].x, a, tolerance * a) << "vertex " << k;
     ASSERT_NEAR(q[k].y, b, tolerance * b) << "vertex " << k;
