@@ -56,6 +56,8 @@ void AddSceneOptions(CommandLine& cl)
   cl.AddFlag("--no-level-of-detail", "no filtering where texels are smaller than pixels");
   cl.AddFlag("--no-shadows", "no self-shadowing");
   cl.AddFlag("--no-silhouettes", "keep fragments whose hit leaves the texture");
+  cl.AddFlag("--no-surface-curvature",
+    "march a curved mesh in the flat tangent plane (no per-vertex quadrics)");
   cl.AddFlag("--no-depth-write", "keep the mesh depth instead of the hit depth");
   cl.AddValue("--size", "WxH", "image size in pixels", "800x800");
   cl.AddValue("--view-angle", "DEG", "camera angle from the wall normal", "55");
@@ -81,6 +83,7 @@ bool ReadSceneOptions(const CommandLine& cl, ReliefSceneOptions& o, std::string&
   o.Method = cl.Get("--method");
   o.SelfShadowing = !cl.Has("--no-shadows");
   o.Silhouettes = !cl.Has("--no-silhouettes");
+  o.SurfaceCurvature = !cl.Has("--no-surface-curvature");
   o.WriteDepth = !cl.Has("--no-depth-write");
   o.AdaptiveSteps = cl.Has("--adaptive-steps");
   o.Environment = cl.Get("--environment");

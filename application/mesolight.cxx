@@ -5,6 +5,7 @@
 #include "CommandLine.h"
 #include "CommandTable.h"
 #include "ConeBenchmark.h"
+#include "CurvedReliefBenchmark.h"
 #include "Distribution.h"
 #include "GatherBenchmark.h"
 #include "VlfStorageBenchmark.h"
@@ -160,6 +161,9 @@ const std::vector<mesolight::Command>& Commands()
         { "geometry-image", "[options]",
           "geometry images: triangles vs Hausdorff distance\nand image error, stride vs adaptive",
           RunGeometryImageBenchmark, {} },
+        { "curved-relief", "[options]",
+          "relief on curved meshes vs the flat march:\noutline coverage vs the dense mesh, frame time",
+          RunCurvedReliefBenchmark, {} },
         { "hallucinate", "[options]",
           "depth hallucination against path-traced\nphotographs of known height fields",
           RunHallucinationBenchmark, {} },

@@ -104,6 +104,26 @@ bool PrepareGeometry(const GeometryImageSceneOptions& options, const ReliefScene
 } // namespace
 
 //------------------------------------------------------------------------------
+GeometryImageSceneOptions CurvedOutlineScene(const std::string& surface)
+{
+  GeometryImageSceneOptions o;
+  o.GeometryImage = Procedural + surface;
+  o.Relief.Pattern = "HemisphereTorus";
+  o.Relief.Resolution = 256;
+  o.Relief.Width = 300;
+  o.Relief.Height = 300;
+  o.Relief.DepthScale = 0.06;
+  o.Relief.SelfShadowing = false;
+  o.Relief.ViewAngle = 55.0;
+  o.Relief.ViewAzimuth = 90.0;
+  o.Relief.ViewDistance = 2.4;
+  o.Relief.LinearSteps = 32;
+  o.Relief.RefinementSteps = 8;
+  o.Stride = 8;
+  return o;
+}
+
+//------------------------------------------------------------------------------
 vtkSmartPointer<vtkImageData> LoadGeometryImage(
   const std::string& spec, int resolution, std::string& error)
 {

@@ -35,6 +35,16 @@ struct GeometryImageSceneOptions
   std::string ColorFile;  // an albedo image in the geometry image's parameterization
 };
 
+/**
+ * The scene where a curved relief's outline matters (relief mapping on curved meshes, Oliveira &
+ * Policarpo 2005): the procedural surface (cylinder, sphere, plane) at stride 8 of 256^2, the
+ * HemisphereTorus depth map (its base 0.9 deep) at depth scale 0.06, seen from 55 degrees about
+ * the cylinder's axis (ViewAzimuth 90), so the surface turns away from the viewer well inside
+ * the texture, at the top of a 300x300 frame. Relief 32+8, self-shadowing off (the dense mesh has
+ * none). Used by the CurvedReliefSilhouette tests and `mesolight bench curved-relief`.
+ */
+MESOLIGHTEVALUATION_EXPORT GeometryImageSceneOptions CurvedOutlineScene(const std::string& surface);
+
 /** The geometry image a spec names ("procedural:NAME" or a file), or null with an error. */
 MESOLIGHTEVALUATION_EXPORT vtkSmartPointer<vtkImageData> LoadGeometryImage(
   const std::string& spec, int resolution, std::string& error);

@@ -11,6 +11,7 @@
 #include <vtkRendererCollection.h>
 #include <vtkUnsignedCharArray.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
@@ -55,6 +56,44 @@ Frame CaptureFrame(vtkRenderWindow* window)
     frame.Parallel = renderer->GetActiveCamera()->GetParallelProjection() != 0;
   }
   return frame;
+}
+
+//------------------------------------------------------------------------------
+CoverageDifference CompareCoverage(const Frame& a, const Frame& b, int margin)
+{
+  CoverageDifference c;
+  if (a.Depth.size() != b.Depth.size() ||
+    a.Depth.size() != static_cast<size_t>(a.Width) * static_cast<size_t>(a.Height))
+  {
+    c.Mismatched = c.Either = static_cast<long long>(std::max(a.Depth.size(), b.Depth.size()));
+    return c;
+  }
+  int x0 = a.Width, x1 = -1, y0 = a.Height;
+  for (int y = 0; y < a.Height; ++y)
+  {
+    for (int x = 0; x < a.Width; ++x)
+    {
+      const size_t p = static_cast<size_t>(y) * a.Width + x;
+      if (a.Covered(p) || b.Covered(p))
+      {
+        x0 = std::min(x0, x);
+        x1 = std::max(x1, x);
+        y0 = std::min(y0, y);
+      }
+    }
+  }
+  margin = std::max(0, margin);
+  for (int y = y0 + margin; y < a.Height; ++y)
+  {
+    for (int x = x0 + margin; x <= x1 - margin; ++x)
+    {
+      const size_t p = static_cast<size_t>(y) * a.Width + x;
+      const bool ca = a.Covered(p), cb = b.Covered(p);
+      c.Mismatched += ca != cb ? 1 : 0;
+      c.Either += ca || cb ? 1 : 0;
+    }
+  }
+  return c;
 }
 
 //------------------------------------------------------------------------------

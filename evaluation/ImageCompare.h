@@ -55,6 +55,28 @@ struct FrameDifference
 MESOLIGHTEVALUATION_EXPORT FrameDifference CompareFrames(
   const Frame& a, const Frame& b, double depthTolerance, const Frame* footprint = nullptr);
 
+/** Pixels covered by exactly one of two frames (the outline's error), of those covered by either.
+ */
+struct CoverageDifference
+{
+  long long Mismatched = 0;
+  long long Either = 0;
+  /** Mismatched as % of Either (100 when nothing is covered). */
+  double Percent() const
+  {
+    return this->Either > 0 ? 100.0 * this->Mismatched / this->Either : 100.0;
+  }
+};
+
+/**
+ * Compares the coverage masks of two frames of the same camera. A margin > 0 leaves out that many
+ * pixels on the left, right and bottom of the bounding box of the pixels either frame covers, so
+ * that only the top of a surface's outline counts (the curved-relief scenes turn away from the
+ * viewer at the top of the frame; their other sides are the texture's own edges).
+ */
+MESOLIGHTEVALUATION_EXPORT CoverageDifference CompareCoverage(
+  const Frame& a, const Frame& b, int margin = 0);
+
 /**
  * Decodes vtkReliefMapper's HitUOutput / HitVOutput at a pixel: the hit coordinate as 24-bit
  * fixed point. False for background pixels.

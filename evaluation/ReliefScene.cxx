@@ -378,6 +378,7 @@ bool BuildReliefScene(const ReliefSceneOptions& options, ReliefScene& scene, std
   scene.Mapper->GetReliefProperty()->SetRefinementSteps(options.RefinementSteps);
   scene.Mapper->GetReliefProperty()->SetSelfShadowing(options.SelfShadowing);
   scene.Mapper->GetReliefProperty()->SetSilhouettes(options.Silhouettes);
+  scene.Mapper->GetReliefProperty()->SetSurfaceCurvature(options.SurfaceCurvature);
   scene.Mapper->GetReliefProperty()->SetWriteDepth(options.WriteDepth);
   scene.Mapper->GetReliefProperty()->SetAdaptiveSteps(options.AdaptiveSteps);
   scene.Mapper->GetReliefProperty()->SetLevelOfDetail(options.LevelOfDetail);

@@ -38,6 +38,7 @@ struct ReliefSceneOptions
   int RefinementSteps = 8;
   bool SelfShadowing = true;
   bool Silhouettes = true;
+  bool SurfaceCurvature = true; // the curved-mesh march on curved meshes (vtkReliefProperty)
   bool WriteDepth = true;
   bool AdaptiveSteps = false;
   bool LevelOfDetail = false;

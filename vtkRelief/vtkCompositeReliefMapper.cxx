@@ -49,15 +49,20 @@ protected:
     // Every block must carry a relief (texture coordinates); prepared copies are made once.
     vtkReliefGeometryCache* geometry = this->Shading()->GetGeometryCache();
     std::vector<vtkPolyData*> inputs;
+    // The blocks share one vertex buffer: the curved march only when every block is curved.
+    bool curved = !this->Data.empty();
     for (const auto& entry : this->Data)
     {
       inputs.push_back(entry.first);
-      if (!geometry->Prepare(entry.first))
+      vtkPolyData* prepared = geometry->Prepare(entry.first);
+      if (!prepared)
       {
         return;
       }
+      curved = curved && vtkReliefGeometryCache::IsCurved(prepared);
     }
     geometry->KeepOnly(inputs);
+    this->Shading()->SetCurvedGeometry(curved);
     if (!this->Shading()->StartDraw(vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow()),
           parent->GetReliefProperty(), parent->CurrentReliefTexture, parent->CurrentLightSet,
           parent->IrradianceProbesData, actor))
@@ -115,6 +120,13 @@ protected:
     if (!this->VBOs->ArrayExists("mlTCoordMC", tcoords, offset, total) || offset != voffset)
     {
       this->VBOs->AppendDataArray("mlTCoordMC", tcoords, VTK_FLOAT);
+    }
+    vtkDataArray* quadrics =
+      prepared->GetPointData()->GetArray(vtkReliefGeometryCache::GetReliefQuadricsName());
+    if (quadrics &&
+      (!this->VBOs->ArrayExists("mlQuadricMC", quadrics, offset, total) || offset != voffset))
+    {
+      this->VBOs->AppendDataArray("mlQuadricMC", quadrics, VTK_FLOAT);
     }
   }
 

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkReliefGeometryCache.h"
 
+#include "SurfaceQuadrics.h"
+
 #include "vtkCellArray.h"
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
@@ -15,12 +17,16 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
+#include <string>
+#include <vector>
 
 vtkStandardNewMacro(vtkReliefGeometryCache);
 
 namespace
 {
 const char* const ReliefTCoordsName = "vtkReliefMapperTCoords";
+const char* const ReliefQuadricsName = "vtkReliefMapperQuadrics";
 
 bool AllTriangles(vtkPolyData* poly)
 {
@@ -81,6 +87,66 @@ void SanitizeFrame(vtkPolyData* mesh)
     t[1] = static_cast<float>(perp[1]);
     t[2] = static_cast<float>(perp[2]);
   }
+}
+
+// The per-vertex quadrics of a curved mesh (Oliveira & Policarpo 2005, "An efficient
+// representation for surface details"), added as a 2-component float array only when some vertex
+// is curved: a flat mesh gets no array, and the shader then has no curvature code at all.
+bool AddQuadrics(vtkPolyData* mesh, std::string& error)
+{
+  const vtkIdType n = mesh->GetNumberOfPoints();
+  vtkDataArray* normals = mesh->GetPointData()->GetNormals();
+  vtkDataArray* tcoords = mesh->GetPointData()->GetArray(ReliefTCoordsName);
+  std::vector<glm::dvec3> positions(static_cast<size_t>(n)), nrm(static_cast<size_t>(n));
+  std::vector<glm::dvec2> uv(static_cast<size_t>(n));
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    double p[3], q[3];
+    mesh->GetPoint(i, p);
+    normals->GetTuple(i, q);
+    positions[static_cast<size_t>(i)] = glm::dvec3(p[0], p[1], p[2]);
+    nrm[static_cast<size_t>(i)] = glm::dvec3(q[0], q[1], q[2]);
+    uv[static_cast<size_t>(i)] =
+      glm::dvec2(tcoords->GetComponent(i, 0), tcoords->GetComponent(i, 1));
+  }
+  std::vector<std::array<long long, 3>> triangles;
+  triangles.reserve(static_cast<size_t>(mesh->GetNumberOfPolys()));
+  vtkCellArray* polys = mesh->GetPolys();
+  vtkIdType count = 0;
+  const vtkIdType* ids = nullptr;
+  for (polys->InitTraversal(); polys->GetNextCell(count, ids);)
+  {
+    if (count == 3)
+    {
+      triangles.push_back({ static_cast<long long>(ids[0]), static_cast<long long>(ids[1]),
+        static_cast<long long>(ids[2]) });
+    }
+  }
+  std::vector<glm::vec2> quadrics;
+  try
+  {
+    quadrics = mesolight::ComputeSurfaceQuadrics(positions, nrm, uv, triangles);
+  }
+  catch (const std::exception& e)
+  {
+    error = e.what();
+    return false;
+  }
+  if (!mesolight::AnySurfaceQuadric(quadrics))
+  {
+    return true;
+  }
+  vtkNew<vtkFloatArray> array;
+  array->SetName(ReliefQuadricsName);
+  array->SetNumberOfComponents(2);
+  array->SetNumberOfTuples(n);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    array->SetTypedComponent(i, 0, quadrics[static_cast<size_t>(i)].x);
+    array->SetTypedComponent(i, 1, quadrics[static_cast<size_t>(i)].y);
+  }
+  mesh->GetPointData()->AddArray(array);
+  return true;
 }
 } // namespace
 
@@ -202,8 +268,26 @@ vtkPolyData* vtkReliefGeometryCache::Prepare(vtkPolyData* input)
     reliefTCoords->SetTypedComponent(i, 1, static_cast<float>(meshTCoords->GetComponent(i, 1)));
   }
   mesh->GetPointData()->AddArray(reliefTCoords);
+  std::string error;
+  if (!AddQuadrics(mesh, error))
+  {
+    vtkErrorMacro(<< "Could not compute the surface quadrics of the input: " << error);
+    return nullptr;
+  }
   cached.Prepared = mesh;
   return mesh;
+}
+
+//------------------------------------------------------------------------------
+const char* vtkReliefGeometryCache::GetReliefQuadricsName()
+{
+  return ReliefQuadricsName;
+}
+
+//------------------------------------------------------------------------------
+bool vtkReliefGeometryCache::IsCurved(vtkPolyData* prepared)
+{
+  return prepared && prepared->GetPointData()->GetArray(ReliefQuadricsName) != nullptr;
 }
 
 //------------------------------------------------------------------------------

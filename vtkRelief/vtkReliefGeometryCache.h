@@ -9,7 +9,9 @@
  * (vtkPolyDataTangents when missing; VTK's OpenGL mappers upload tangents only as floats), a
  * usable frame at degenerate triangles, and the texture coordinates as a float array named
  * GetReliefTCoordsName() (vertex attribute mlTCoordMC; VTK uploads "tcoord" only when the actor
- * has a texture). Prepared copies are kept per input until the input is modified or forgotten
+ * has a texture), and on a curved mesh the per-vertex quadrics of relief mapping on curved
+ * surfaces as a float array named GetReliefQuadricsName() (vertex attribute mlQuadricMC; none on
+ * a flat mesh). Prepared copies are kept per input until the input is modified or forgotten
  * (KeepOnly).
  */
 
@@ -44,6 +46,15 @@ public:
 
   /** Name of the float texture-coordinate array Prepare adds (vertex attribute mlTCoordMC). */
   static const char* GetReliefTCoordsName();
+
+  /**
+   * Name of the 2-component float array of per-vertex quadric coefficients (a, b) Prepare adds
+   * to a curved mesh (vertex attribute mlQuadricMC; see SurfaceQuadrics.h in ReliefTextures).
+   */
+  static const char* GetReliefQuadricsName();
+
+  /** Whether a prepared mesh is curved: it carries the quadrics array. */
+  static bool IsCurved(vtkPolyData* prepared);
 
 protected:
   vtkReliefGeometryCache();

@@ -36,6 +36,9 @@ vtkReliefMapper::vtkReliefMapper()
   // Our own texture-coordinate attribute: VTK uploads "tcoord" only when the actor has a texture.
   this->MapDataArrayToVertexAttribute("mlTCoordMC", vtkReliefGeometryCache::GetReliefTCoordsName(),
     vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
+  // The per-vertex quadrics of a curved mesh (absent on a flat one; the shader then reads none).
+  this->MapDataArrayToVertexAttribute("mlQuadricMC",
+    vtkReliefGeometryCache::GetReliefQuadricsName(), vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
 }
 
 //------------------------------------------------------------------------------
@@ -209,6 +212,7 @@ void vtkReliefMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* actor)
   {
     return;
   }
+  this->Shading->SetCurvedGeometry(vtkReliefGeometryCache::IsCurved(this->PreparedInput));
   // Without connections, a relief texture and light set attached as field data are used.
   vtkSmartPointer<vtkImageData> relief = this->GetReliefTexture();
   if (!relief)

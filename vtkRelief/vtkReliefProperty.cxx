@@ -176,6 +176,7 @@ void vtkReliefProperty::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "UseTextureDepthScale: " << (this->UseTextureDepthScale ? "On" : "Off") << "\n";
   os << indent << "SelfShadowing: " << (this->SelfShadowing ? "On" : "Off") << "\n";
   os << indent << "Silhouettes: " << (this->Silhouettes ? "On" : "Off") << "\n";
+  os << indent << "SurfaceCurvature: " << (this->SurfaceCurvature ? "On" : "Off") << "\n";
   os << indent << "WriteDepth: " << (this->WriteDepth ? "On" : "Off") << "\n";
   os << indent << "DepthLimitPlane: ";
   if (this->HasDepthLimitPlane)

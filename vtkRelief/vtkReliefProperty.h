@@ -222,6 +222,24 @@ public:
   ///@}
 
   ///@{
+  /**
+   * Relief mapping on curved meshes (Oliveira & Policarpo 2005, "An efficient representation
+   * for surface details"; Policarpo, Oliveira & Comba 2005): on a mesh that is not flat, each
+   * vertex carries the quadric z = a u^2 + b v^2 of the surface in its tangent space (fitted on
+   * the CPU from the mesh's curvature along the texture axes), the view ray's depth is lowered by
+   * it as it marches, and with Silhouettes on a fragment whose ray leaves the relief layer without
+   * a hit is discarded: the outline of a convex mesh is cut where it turns away from the viewer,
+   * not only at the texture's edge. Default on. A flat mesh (a = b = 0 everywhere) draws with the
+   * flat march whatever this says, at no cost. Used by the searches that step along the ray
+   * (LinearSearch, ParallaxOcclusion, Relief, Interval and the cone methods); the other methods
+   * ignore it.
+   */
+  vtkSetMacro(SurfaceCurvature, bool);
+  vtkGetMacro(SurfaceCurvature, bool);
+  vtkBooleanMacro(SurfaceCurvature, bool);
+  ///@}
+
+  ///@{
   /** Write gl_FragDepth from the hit point instead of the mesh surface. Default on. */
   vtkSetMacro(WriteDepth, bool);
   vtkGetMacro(WriteDepth, bool);
@@ -367,6 +385,7 @@ protected:
   bool UseTextureDepthScale = false;
   bool SelfShadowing = true;
   bool Silhouettes = true;
+  bool SurfaceCurvature = true;
   bool WriteDepth = true;
   bool HasDepthLimitPlane = false;
   double DepthLimitOrigin[3] = { 0.0, 0.0, 0.0 };

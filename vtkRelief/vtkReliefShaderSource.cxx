@@ -85,6 +85,26 @@ void vtkReliefShaderSource::SetTextureLayout(bool floatTextures, bool storedNorm
 }
 
 //------------------------------------------------------------------------------
+bool vtkReliefShaderSource::GetCurved() const
+{
+  // The methods whose search steps along the ray (linear or cone steps, then refinement): the
+  // quadric lowers the ray at every step and a ray that leaves the layer is known as a miss.
+  switch (this->Property->GetMethod())
+  {
+    case vtkReliefProperty::LinearSearch:
+    case vtkReliefProperty::ParallaxOcclusion:
+    case vtkReliefProperty::Relief:
+    case vtkReliefProperty::Interval:
+    case vtkReliefProperty::RelaxedConeBinary:
+    case vtkReliefProperty::RelaxedConeInterval:
+    case vtkReliefProperty::ConservativeCone:
+      return this->CurvedGeometry && this->Property->GetSurfaceCurvature();
+    default:
+      return false;
+  }
+}
+
+//------------------------------------------------------------------------------
 std::string vtkReliefShaderSource::Key() const
 {
   vtkReliefProperty* p = this->Property;
@@ -95,7 +115,7 @@ std::string vtkReliefShaderSource::Key() const
     (p->GetLevelOfDetail() ? "L" : "l") + (this->HasLightSet ? "I" : "i") +
     (p->GetToneMapping() ? "T" : "t") + (p->GetShadowCulling() ? "K" : "k") +
     (this->HasIrradianceProbes ? "P" : "p") + (p->GetEncodeSRGB() ? "G" : "g") +
-    (this->NormalMoments && p->GetLevelOfDetail() ? "M" : "m") +
+    (this->NormalMoments && p->GetLevelOfDetail() ? "M" : "m") + (this->GetCurved() ? "Q" : "q") +
     (this->FloatTextures      ? "F"
         : this->StoredNormals ? "N"
                               : "f");
@@ -143,6 +163,14 @@ void vtkReliefShaderSource::ReplaceValuesBefore(std::string& vs, std::string& fs
       "  if (gl_FrontFacing == false) { normalVCVSOutput = -normalVCVSOutput; }\n"
       "  //MESOLIGHT::Relief::Impl");
   }
+  if (this->GetCurved())
+  {
+    // The per-vertex quadric (a, b) of the curved mesh, interpolated like the tangent.
+    vtkShaderProgram::Substitute(
+      vs, "//VTK::Normal::Dec", "in vec2 mlQuadricMC;\nout vec2 mlQuadricVC;\n//VTK::Normal::Dec");
+    vtkShaderProgram::Substitute(
+      vs, "//VTK::Normal::Impl", "mlQuadricVC = mlQuadricMC;\n  //VTK::Normal::Impl");
+  }
   vtkShaderProgram::Substitute(fs, "//VTK::TCoord::Impl", "");
 }
 
@@ -168,6 +196,10 @@ void vtkReliefShaderSource::ReplaceValuesAfter(std::string& fs, const void* cell
     {
       defines += "#define ML_DEPTH_LIMIT\n";
     }
+  }
+  if (this->GetCurved())
+  {
+    defines += "#define ML_CURVED\nin vec2 mlQuadricVC;\n";
   }
   if (this->HasAlbedoTexture)
   {

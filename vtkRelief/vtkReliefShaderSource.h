@@ -43,6 +43,15 @@ public:
    */
   void SetTextureLayout(bool floatTextures, bool storedNormals, bool moments = false);
 
+  /**
+   * Whether the geometry drawn carries per-vertex quadrics (vtkReliefGeometryCache::IsCurved).
+   * With the property's SurfaceCurvature on and a method that steps along the ray, the shaders
+   * then read the vertex attribute mlQuadricMC and march the curved layer (ML_CURVED).
+   */
+  void SetCurvedGeometry(bool curved) { this->CurvedGeometry = curved; }
+  /** Whether the shader of the current settings marches the curved layer. */
+  bool GetCurved() const;
+
   /** Whether the shader recorded for this helper (cellBO) was built for another variant. */
   bool KeyChanged(const void* cellBO) const;
 
@@ -51,7 +60,7 @@ public:
    * without VTK lights (light complexity 0), so VTK declares no normal and no view-space
    * position; they are declared here.
    */
-  static void ReplaceValuesBefore(std::string& vs, std::string& fs, bool noVTKLights);
+  void ReplaceValuesBefore(std::string& vs, std::string& fs, bool noVTKLights);
 
   /** The edits after the superclass: the relief implementation of the current variant. */
   void ReplaceValuesAfter(std::string& fs, const void* cellBO);
@@ -70,6 +79,7 @@ protected:
   bool ConePacked = false;
   bool HasLightSet = false;
   bool HasIrradianceProbes = false;
+  bool CurvedGeometry = false;
   bool FloatTextures = false;
   bool StoredNormals = false;
   bool NormalMoments = false;

@@ -219,6 +219,12 @@ void vtkReliefShading::FinishDraw()
 }
 
 //------------------------------------------------------------------------------
+void vtkReliefShading::SetCurvedGeometry(bool curved)
+{
+  this->ShaderSource->SetCurvedGeometry(curved);
+}
+
+//------------------------------------------------------------------------------
 bool vtkReliefShading::ShaderKeyChanged(const void* cellBO) const
 {
   return this->ShaderSource->KeyChanged(cellBO);
@@ -227,7 +233,7 @@ bool vtkReliefShading::ShaderKeyChanged(const void* cellBO) const
 //------------------------------------------------------------------------------
 void vtkReliefShading::ReplaceShaderValuesBefore(std::string& vs, std::string& fs, bool noVTKLights)
 {
-  vtkReliefShaderSource::ReplaceValuesBefore(vs, fs, noVTKLights);
+  this->ShaderSource->ReplaceValuesBefore(vs, fs, noVTKLights);
 }
 
 //------------------------------------------------------------------------------

@@ -86,6 +86,13 @@ public:
    */
   bool StartDraw(vtkOpenGLRenderWindow* renWin, vtkReliefProperty* property, vtkImageData* relief,
     vtkImageData* lights, vtkImageData* probes, vtkActor* actor);
+  /**
+   * Whether the geometry of the next draws is curved (every prepared input carries quadrics,
+   * vtkReliefGeometryCache::IsCurved): with the property's SurfaceCurvature, the shader then
+   * marches the curved relief layer.
+   */
+  void SetCurvedGeometry(bool curved);
+
   /** Deactivates what StartDraw activated. */
   void FinishDraw();
 

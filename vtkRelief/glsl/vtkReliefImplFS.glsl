@@ -10,6 +10,9 @@
   vec3 mlHitPos = mlPos;
   vec3 mlShadingNormal = mlN;
   vec2 mlWall = vec2(0.0); // a side wall's normal in (u, v) where the view ray met one
+#ifdef ML_CURVED
+  vec3 mlHitPlane = mlHit; // the hit in the entry point's plane coordinates (shadows start there)
+#endif
   mat3 mlWorldToTexture = mat3(0.0);
   bool mlHasFrame = abs(mlDet) > 1e-30;
 #ifdef ML_LEVEL_OF_DETAIL
@@ -44,6 +47,25 @@
       // From depth 0 to depth 1. At grazing angles the span grows without bound; it is kept
       // finite so no NaN or Inf reaches the samplers (silhouettes discard such fragments).
       vec3 span = vec3(clamp(q.xy / q.z, vec2(-1e4), vec2(1e4)), 1.0);
+#ifdef ML_CURVED
+      // Curved mesh (Oliveira & Policarpo 2005): the ray's depth below the curved layer is
+      // r(t) = t - c t^2 / (1 - k t) (c > 0 convex; k the layer's stretch along the ray,
+      // mlQuadricDepth). The march ends where the ray leaves the layer: at its bottom (r = 1,
+      // the first root of (c + k) t^2 - (1 + k) t + 1) when there is one, else back through its
+      // top (r = 0, t = 1 / (c + k)) - there a search without a hit is a silhouette fragment.
+      // The span is scaled so that end is t = 1: every search below runs unchanged; with
+      // c = k = 0 it ends at t = 1 as on a flat mesh.
+      vec2 mlQuadricFacing = gl_FrontFacing ? mlQuadricVC : -mlQuadricVC;
+      mlQuadric = mlQuadricFacing / mlDepthScale;
+      mlLayerStretch =
+        2.0 * mlDepthScale * mlQuadricFacing * vec2(1.0, (su * su) / max(sv * sv, 1e-30));
+      mlQuadricOrigin = mlHit.xy;
+      float mlC = dot(mlQuadric, span.xy * span.xy);
+      float mlK = mlC != 0.0 ? dot(mlQuadric * mlLayerStretch, span.xy * span.xy) / mlC : 0.0;
+      float mlDisc = (1.0 + mlK) * (1.0 + mlK) - 4.0 * (mlC + mlK);
+      bool mlExitsTop = mlDisc < 0.0;
+      span *= mlExitsTop ? 1.0 / (mlC + mlK) : 2.0 / (1.0 + mlK + sqrt(mlDisc));
+#endif
 #ifdef ML_LEVEL_OF_DETAIL
       mlLevelOfDetailSteps(span, mlViewSteps);
 #endif
@@ -51,7 +73,23 @@
       mlWall = mlSideWall(mlHit, span, t);
       mlHit = mlHit + t * span;
       mlHitPos = mlPos + dir * (mlHit.z / q.z);
+#ifdef ML_CURVED
+      mlHitPlane = mlHit;
+      mlHit.xy = mlLayerUV(mlHit); // the texture coordinate at the hit's depth in the layer
+#endif
+#if defined(ML_CURVED) && defined(ML_SILHOUETTES)
+      if (mlExitsTop && mlLeftLayer)
+      {
+        discard; // the ray passed the curved relief without a hit
+      }
+#endif
     }
+#if defined(ML_CURVED) && defined(ML_SILHOUETTES)
+    else if (worldDepth > 0.0 && dot(gl_FrontFacing ? mlQuadricVC : -mlQuadricVC, q.xy * q.xy) > 0.0)
+    {
+      discard; // a ray that does not go below the tangent plane misses a convex layer
+    }
+#endif
 #endif
 #ifdef ML_SILHOUETTES
     if (any(lessThan(mlHit.xy, vec2(0.0))) || any(greaterThan(mlHit.xy, vec2(1.0))))
@@ -91,6 +129,10 @@
     mlSpecularPowerScale =
       mlNormalLength / (mlNormalLength + mlSpecularPower * (1.0 - mlNormalLength));
 #endif
+#ifdef ML_CURVED
+    // The slope of the curved layer under the hit.
+    g += 2.0 * mlQuadric * mlLayerScale(mlHitPlane.z) * (mlHitPlane.xy - mlQuadricOrigin);
+#endif
     vec3 pu = dPdu - mlN * (worldDepth * g.x);
     vec3 pv = dPdv - mlN * (worldDepth * g.y);
     mlShadingNormal = normalize(cross(pu, pv) * handedness);
@@ -119,6 +161,9 @@
   }
   // Bump mapping shades the undisplaced point but shadows it from the height below it.
   vec3 mlShadowPoint = mlHit;
+#ifdef ML_CURVED
+  mlShadowPoint = mlHitPlane;
+#endif
 #if ML_METHOD == ML_BUMP
   mlShadowPoint.z = mlDepthAt(mlHit.xy);
 #endif

@@ -10,16 +10,56 @@
 float mlCosView = 1.0; // cosine of the view angle, for offset limiting
 int mlViewSteps = 10;   // linear (or cone) steps for this view ray, adaptive if asked
 
+// Relief mapping on curved meshes (Oliveira & Policarpo 2005, "An efficient representation for
+// surface details"; Policarpo, Oliveira & Comba 2005): below the view ray's entry point the mesh
+// is locally the quadric z = a u^2 + b v^2 of the tangent plane (per-vertex coefficients,
+// interpolated), so the height field at (u, v) lies mlQuadricDepth deeper than on a flat plane.
+// Rays stay straight in the entry point's tangent space (plane coordinates: offsets along the
+// tangent plane in texture units, depth z below it); a point's depth in the layer is z less the
+// quadric's depth. Beyond the paper, to the same order as the quadric: the layer's sheets are
+// parallel to the surface, their radius 1 / kappa less the depth, so at plane depth z an offset d
+// is the texture offset d / (1 - kappa z) and the layer lies a d^2 / (1 - kappa z) below the
+// plane (a cylinder's exact depth r - |p - axis| to second order). mlLayerStretch is kappa times
+// the world depth of depth 1, per axis.
+// mlLeftLayer: the search ended without a sample at or below the height field.
+vec2 mlQuadric = vec2(0.0);       // (a, b) in depth units per squared texture unit
+vec2 mlLayerStretch = vec2(0.0);  // kappa x world depth of depth 1, along u and v
+vec2 mlQuadricOrigin = vec2(0.0); // the view ray's entry point, where the quadric touches
+bool mlLeftLayer = false;
+
+vec2 mlLayerScale(float z)
+{
+  return vec2(1.0) / max(vec2(1.0) - mlLayerStretch * z, vec2(0.25));
+}
+
+// Depth of the layer's top below the tangent plane under the point p (plane coordinates).
+float mlQuadricDepth(vec3 p)
+{
+  vec2 d = p.xy - mlQuadricOrigin;
+  return dot(mlQuadric * mlLayerScale(p.z), d * d);
+}
+
+// The texture coordinate of a point in plane coordinates.
+vec2 mlLayerUV(vec3 p)
+{
+  return mlQuadricOrigin + (p.xy - mlQuadricOrigin) * mlLayerScale(p.z);
+}
+
 // Ray depth minus height-field depth at t: < 0 above the surface, >= 0 at or below it.
 float mlGap(vec3 origin, vec3 span, float t)
 {
   vec3 p = origin + t * span;
+#ifdef ML_CURVED
+  return p.z - mlQuadricDepth(p) - mlDepthAt(mlLayerUV(p));
+#else
   return p.z - mlDepthAt(p.xy);
+#endif
 }
 
 // Linear search (Levoy 1990; the "quasi-safe" first pass of relief mapping): the first sample at
 // or below the height field and, in tAbove, the last sample above it. A view ray ends at depth 1,
-// never above the height field, so it always returns a hit.
+// never above the height field, so it always returns a hit; on a curved layer it may end where it
+// leaves the layer's top instead (ML_CURVED), and then a search without a hit sets mlLeftLayer.
 float mlLinearSearch(vec3 origin, vec3 span, float tStart, int steps, out float tAbove)
 {
   float dt = (1.0 - tStart) / float(steps);
@@ -33,6 +73,9 @@ float mlLinearSearch(vec3 origin, vec3 span, float tStart, int steps, out float 
     }
     tAbove = t;
   }
+#ifdef ML_CURVED
+  mlLeftLayer = true;
+#endif
   return 1.0;
 }
 
@@ -116,8 +159,13 @@ float mlConeSearch(vec3 origin, vec3 span, int steps, out float tAbove)
   for (int i = 0; i < steps; ++i)
   {
     vec3 p = origin + t * span;
+#ifdef ML_CURVED
+    vec2 depthCone = mlDepthAndConeAt(mlLayerUV(p));
+    float depth = depthCone.x + mlQuadricDepth(p); // a convex layer falls away: still empty
+#else
     vec2 depthCone = mlDepthAndConeAt(p.xy);
     float depth = depthCone.x;
+#endif
     if (p.z >= depth)
     {
       return t;
@@ -127,6 +175,9 @@ float mlConeSearch(vec3 origin, vec3 span, int steps, out float tAbove)
     tAbove = t;
     t = min(t + max(coneStep, (1.0 - t) / float(steps - i)), 1.0);
   }
+#ifdef ML_CURVED
+  mlLeftLayer = mlGap(origin, span, t) < 0.0; // the last step reached the ray's end unsampled
+#endif
   return t;
 }
 #endif
@@ -237,8 +288,13 @@ bool mlShadowed(vec3 hit, vec3 spanUpPerDepth)
   for (int i = 1; i < steps && t < 1.0 - dt + 1e-4; ++i)
   {
     vec3 p = origin + t * span;
+#ifdef ML_CURVED
+    vec2 depthCone = mlDepthAndConeAt(mlLayerUV(p));
+    float depth = depthCone.x + mlQuadricDepth(p);
+#else
     vec2 depthCone = mlDepthAndConeAt(p.xy);
     float depth = depthCone.x;
+#endif
     if (p.z > depth + bias)
     {
       return true;
@@ -252,7 +308,11 @@ bool mlShadowed(vec3 hit, vec3 spanUpPerDepth)
   for (int i = 1; i < steps; ++i)
   {
     vec3 p = origin + (float(i) * dt) * span;
+#ifdef ML_CURVED
+    if (p.z > mlQuadricDepth(p) + mlDepthAt(mlLayerUV(p)) + bias)
+#else
     if (p.z > mlDepthAt(p.xy) + bias)
+#endif
     {
       return true;
     }
