@@ -8,6 +8,7 @@
 
 #include "vtkLightFieldActor.h"
 #include "vtkLightFieldActorCore.h"
+#include "vtkLightFieldReliefMapper.h"
 #include "vtkLightFieldReliefSurface.h"
 #include "vtkReliefMapper.h"
 #include "vtkReliefProperty.h"
@@ -287,7 +288,9 @@ int SetUpWalkthroughReliefs(const CommandLine& cl, const char* command, vtkLight
       std::cerr << command << ": --relief: " << error << "\n";
       return 2;
     }
-    vtkNew<vtkReliefMapper> mapper;
+    // A vtkReliefMapper that also draws the movable object's shadow as the walls show it.
+    vtkNew<vtkLightFieldReliefMapper> mapper;
+    mapper->SetLightFieldActor(actor);
     mapper->SetInputConnection(surface->GetOutputPort(0));
     mapper->SetReliefTextureData(texture);
     if (occlusion)

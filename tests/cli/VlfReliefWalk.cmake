@@ -173,4 +173,61 @@ elseif (PART STREQUAL "match")
     message(FATAL_ERROR "the relief mapper without the relief's occlusion passes for the CPU "
       "reference (within 8%): the check cannot fail")
   endif ()
+elseif (PART STREQUAL "shadow")
+  # The movable object in front of the back wall, its shadow on the wall (vtkLightFieldReliefMapper:
+  # the walkthrough's shadow code at the relief's hit point). Per pixel the share of the light the
+  # shadow leaves (the run with --shadows field over the run with --shadows none, red, linear):
+  # where the flat wall's share is below 0.9 (eroded by a pixel: the relief's grooves, 5.6 mm
+  # deep, move the shadow's edge by less), the relief's share must be the flat wall's within
+  # 0.05 on average, in every radiance mode. Negative: a relief without the shadow (its share 1,
+  # what the relief showed before) fails the same check.
+  set(_object --object cube --object-transform 150,330,480,0,0,0,80)
+  set(_shallow --relief back=${WORK}/grooves.pgm --relief-depth-scale 0.01)
+  foreach (_mode IN ITEMS progressive coherent raytrace)
+    foreach (_shadows IN ITEMS field none)
+      cli_run(TRUE vlf render "${WORK}/box.vlf" --mode ${_mode} --size ${_size} ${_object}
+        --shadows ${_shadows} --out "${WORK}/${_mode}-flat-${_shadows}.png")
+      cli_run(TRUE vlf render "${WORK}/box.vlf" --mode ${_mode} --size ${_size} ${_object}
+        --shadows ${_shadows} ${_shallow} --out "${WORK}/${_mode}-relief-${_shadows}.png")
+      foreach (_which IN ITEMS flat relief)
+        oiio("${WORK}/${_mode}-${_which}-${_shadows}.png" --tocolorspace linear --ch 0 --addc 1e-4
+          -o "${WORK}/${_mode}-${_which}-${_shadows}.exr")
+      endforeach ()
+    endforeach ()
+    foreach (_which IN ITEMS flat relief)
+      oiio("${WORK}/${_mode}-${_which}-field.exr" "${WORK}/${_mode}-${_which}-none.exr" --div
+        -o "${WORK}/${_mode}-${_which}-share.exr")
+    endforeach ()
+    # The flat wall's shadow on the relief's wall: 1 where its share is below 0.9.
+    oiio("${WORK}/${_mode}-flat-share.exr" --mulc -1 --addc 0.9 --mulc 1e6 --clamp:min=0:max=1
+      --erode 3x3 "${WORK}/inside.exr" --mul -o "${WORK}/${_mode}-umbra.exr")
+    exr_stat_milli("${WORK}/${_mode}-umbra.exr" Avg _umbra)
+    if (_umbra LESS 3)
+      message(FATAL_ERROR "${_mode}: the object's shadow covers ${_umbra}/1000 of the back wall's "
+        "image: not the placement the test expects")
+    endif ()
+    # Mean over the shadow of the share lost, and of |relief - flat| (x 100 before the stats, so
+    # that exr_stat_milli's thousandths resolve the small shadow's mean; / _umbra after).
+    oiio("${WORK}/${_mode}-umbra.exr" --mulc 100 -o "${WORK}/${_mode}-umbra100.exr")
+    exr_stat_milli("${WORK}/${_mode}-umbra100.exr" Avg _umbra)
+    oiio("${WORK}/${_mode}-flat-share.exr" --mulc -1 --addc 1 "${WORK}/${_mode}-umbra.exr" --mul
+      --mulc 100 -o "${WORK}/${_mode}-flat-lost.exr")
+    exr_stat_milli("${WORK}/${_mode}-flat-lost.exr" Avg _lost)
+    oiio("${WORK}/${_mode}-relief-share.exr" "${WORK}/${_mode}-flat-share.exr" --absdiff
+      "${WORK}/${_mode}-umbra.exr" --mul --mulc 100 -o "${WORK}/${_mode}-apart.exr")
+    exr_stat_milli("${WORK}/${_mode}-apart.exr" Avg _apart)
+    math(EXPR _lost "${_lost} * 1000 / ${_umbra}")
+    math(EXPR _apart "${_apart} * 1000 / ${_umbra}")
+    message("${_mode}: the shadow covers ${_umbra}/100000 of the image on the back wall; there the "
+      "flat wall loses ${_lost}/1000 of its light, the relief's share is ${_apart}/1000 from the "
+      "flat wall's on average (the relief without the shadow: ${_lost}/1000)")
+    if (_apart GREATER 50)
+      message(FATAL_ERROR "${_mode}: the relief does not darken like the flat wall in the "
+        "object's shadow")
+    endif ()
+    if (NOT _lost GREATER 50)
+      message(FATAL_ERROR "${_mode}: a relief without the shadow would pass (the flat wall "
+        "loses only ${_lost}/1000 of its light)")
+    endif ()
+  endforeach ()
 endif ()
