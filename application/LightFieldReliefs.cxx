@@ -8,6 +8,8 @@
 
 #include "vtkLightFieldActor.h"
 #include "vtkLightFieldActorCore.h"
+#include "WalkthroughTracer.h" // TracedReliefs
+#include "vtkLightFieldReliefMapper.h"
 #include "vtkLightFieldReliefSurface.h"
 #include "vtkReliefMapper.h"
 #include "vtkReliefProperty.h"
@@ -168,6 +170,40 @@ void OnActorModified(vtkObject* caller, unsigned long, void* clientData, void*)
   CopyDisplay(static_cast<vtkLightFieldActor*>(caller),
     *static_cast<const WalkthroughReliefs*>(clientData));
 }
+
+// The reliefs as the walkthrough's mirrors show them: a reflected ray that reaches a relief's
+// wall is shaded by the CPU reference (`vlf render --relief`: SetUpFieldReliefs, ReliefRadiance,
+// the exact height-field intersection and the same probes and emitters), so the mirror shows the
+// relief the relief mapper draws where it is seen directly.
+class MirroredReliefs : public vlf::TracedReliefs
+{
+public:
+  MirroredReliefs(const vlf::LightField& field, const std::vector<std::string>& items,
+    double depthScale)
+    : Embree(field.Scene())
+  {
+    FieldReliefOptions options;
+    options.DepthScale = depthScale;
+    this->Reliefs = SetUpFieldReliefs(field, this->Embree, items, options);
+    this->ReliefOf = ReliefOfTriangle(field, this->Reliefs);
+  }
+  bool Covers(std::size_t triangle) const override
+  {
+    return triangle < this->ReliefOf.size() && this->ReliefOf[triangle] >= 0;
+  }
+  bool Radiance(std::size_t triangle, const glm::vec3& origin, const glm::vec3& direction,
+    glm::vec3& radiance) const override
+  {
+    return this->Covers(triangle) &&
+      ReliefRadiance(this->Reliefs[static_cast<std::size_t>(this->ReliefOf[triangle])], origin,
+        direction, radiance);
+  }
+
+private:
+  EmbreeScene Embree; // the scene's occlusion of the emitters (the reliefs' lighting)
+  std::vector<FieldRelief> Reliefs;
+  std::vector<int> ReliefOf; // per scene triangle
+};
 } // namespace
 
 WalkthroughReliefs::~WalkthroughReliefs()
@@ -287,7 +323,9 @@ int SetUpWalkthroughReliefs(const CommandLine& cl, const char* command, vtkLight
       std::cerr << command << ": --relief: " << error << "\n";
       return 2;
     }
-    vtkNew<vtkReliefMapper> mapper;
+    // A vtkReliefMapper that also draws the movable object's shadow as the walls show it.
+    vtkNew<vtkLightFieldReliefMapper> mapper;
+    mapper->SetLightFieldActor(actor);
     mapper->SetInputConnection(surface->GetOutputPort(0));
     mapper->SetReliefTextureData(texture);
     if (occlusion)
@@ -324,6 +362,26 @@ int SetUpWalkthroughReliefs(const CommandLine& cl, const char* command, vtkLight
     actor->AddHiddenSurface(name);
     reliefs.Surfaces.emplace_back(surface);
     reliefs.Actors.emplace_back(relief);
+  }
+  // Mirrors show the reliefs (not the flat walls the tracer keeps) where their rays land.
+  bool mirrors = false;
+  for (std::uint32_t surface = 0; surface < field->Surfaces().size(); ++surface)
+  {
+    const glm::vec3 ks = field->MaterialOf(surface).Specular;
+    mirrors = mirrors || ks.x > 0.0f || ks.y > 0.0f || ks.z > 0.0f;
+  }
+  if (mirrors)
+  {
+    try
+    {
+      vtkLightFieldActorCore::SetTracedReliefs(
+        actor, std::make_shared<MirroredReliefs>(*field, items, depthScale));
+    }
+    catch (const std::exception& e)
+    {
+      std::cerr << command << ": --relief: " << e.what() << "\n";
+      return 2;
+    }
   }
   CopyDisplay(actor, reliefs);
   return 0;

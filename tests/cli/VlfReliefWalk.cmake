@@ -173,4 +173,166 @@ elseif (PART STREQUAL "match")
     message(FATAL_ERROR "the relief mapper without the relief's occlusion passes for the CPU "
       "reference (within 8%): the check cannot fail")
   endif ()
+elseif (PART STREQUAL "shadow")
+  # The movable object in front of the back wall, its shadow on the wall (vtkLightFieldReliefMapper:
+  # the walkthrough's shadow code at the relief's hit point). Per pixel the share of the light the
+  # shadow leaves (the run with --shadows field over the run with --shadows none, red, linear):
+  # where the flat wall's share is below 0.9 (eroded by a pixel: the relief's grooves, 5.6 mm
+  # deep, move the shadow's edge by less), the relief's share must be the flat wall's within
+  # 0.05 on average, in every radiance mode. Negative: a relief without the shadow (its share 1,
+  # what the relief showed before) fails the same check.
+  set(_object --object cube --object-transform 150,330,480,0,0,0,80)
+  set(_shallow --relief back=${WORK}/grooves.pgm --relief-depth-scale 0.01)
+  foreach (_mode IN ITEMS progressive coherent raytrace)
+    foreach (_shadows IN ITEMS field none)
+      cli_run(TRUE vlf render "${WORK}/box.vlf" --mode ${_mode} --size ${_size} ${_object}
+        --shadows ${_shadows} --out "${WORK}/${_mode}-flat-${_shadows}.png")
+      cli_run(TRUE vlf render "${WORK}/box.vlf" --mode ${_mode} --size ${_size} ${_object}
+        --shadows ${_shadows} ${_shallow} --out "${WORK}/${_mode}-relief-${_shadows}.png")
+      foreach (_which IN ITEMS flat relief)
+        oiio("${WORK}/${_mode}-${_which}-${_shadows}.png" --tocolorspace linear --ch 0 --addc 1e-4
+          -o "${WORK}/${_mode}-${_which}-${_shadows}.exr")
+      endforeach ()
+    endforeach ()
+    foreach (_which IN ITEMS flat relief)
+      oiio("${WORK}/${_mode}-${_which}-field.exr" "${WORK}/${_mode}-${_which}-none.exr" --div
+        -o "${WORK}/${_mode}-${_which}-share.exr")
+    endforeach ()
+    # The flat wall's shadow on the relief's wall: 1 where its share is below 0.9.
+    oiio("${WORK}/${_mode}-flat-share.exr" --mulc -1 --addc 0.9 --mulc 1e6 --clamp:min=0:max=1
+      --erode 3x3 "${WORK}/inside.exr" --mul -o "${WORK}/${_mode}-umbra.exr")
+    exr_stat_milli("${WORK}/${_mode}-umbra.exr" Avg _umbra)
+    if (_umbra LESS 3)
+      message(FATAL_ERROR "${_mode}: the object's shadow covers ${_umbra}/1000 of the back wall's "
+        "image: not the placement the test expects")
+    endif ()
+    # Mean over the shadow of the share lost, and of |relief - flat| (x 100 before the stats, so
+    # that exr_stat_milli's thousandths resolve the small shadow's mean; / _umbra after).
+    oiio("${WORK}/${_mode}-umbra.exr" --mulc 100 -o "${WORK}/${_mode}-umbra100.exr")
+    exr_stat_milli("${WORK}/${_mode}-umbra100.exr" Avg _umbra)
+    oiio("${WORK}/${_mode}-flat-share.exr" --mulc -1 --addc 1 "${WORK}/${_mode}-umbra.exr" --mul
+      --mulc 100 -o "${WORK}/${_mode}-flat-lost.exr")
+    exr_stat_milli("${WORK}/${_mode}-flat-lost.exr" Avg _lost)
+    oiio("${WORK}/${_mode}-relief-share.exr" "${WORK}/${_mode}-flat-share.exr" --absdiff
+      "${WORK}/${_mode}-umbra.exr" --mul --mulc 100 -o "${WORK}/${_mode}-apart.exr")
+    exr_stat_milli("${WORK}/${_mode}-apart.exr" Avg _apart)
+    math(EXPR _lost "${_lost} * 1000 / ${_umbra}")
+    math(EXPR _apart "${_apart} * 1000 / ${_umbra}")
+    message("${_mode}: the shadow covers ${_umbra}/100000 of the image on the back wall; there the "
+      "flat wall loses ${_lost}/1000 of its light, the relief's share is ${_apart}/1000 from the "
+      "flat wall's on average (the relief without the shadow: ${_lost}/1000)")
+    if (_apart GREATER 50)
+      message(FATAL_ERROR "${_mode}: the relief does not darken like the flat wall in the "
+        "object's shadow")
+    endif ()
+    if (NOT _lost GREATER 50)
+      message(FATAL_ERROR "${_mode}: a relief without the shadow would pass (the flat wall "
+        "loses only ${_lost}/1000 of its light)")
+    endif ()
+  endforeach ()
+elseif (PART STREQUAL "mirror")
+  # The relief seen in a mirror (WalkthroughTracer::SetReliefs: a reflected ray landing on the
+  # relief's wall is shaded by the CPU reference's exact intersection and lighting). The mirror
+  # Cornell box (its left wall a mirror, Ks 0.9), the camera looking into the mirror, which shows
+  # the back wall; the back wall carries the grooves. Where the CPU reference sees the back wall
+  # directly (its exact ray cast; its mirror pixels are field lookups, flat) is the direct mask;
+  # beyond it (2 pixels clear) every change the relief makes is the mirror's. In the traced modes
+  # (coherent, progressive at rest) and in raytrace mode the relief must change at least 10% of
+  # the image beyond the direct mask (by more than 2 levels), by 0.5 to 3 times 0.9 (the
+  # mirror's Ks) the mean change it makes where it is seen directly; raytrace mode's mirrored
+  # relief equals the coherent mode's within 1%. Negative: the flat mirror (what the walkthrough
+  # showed before) changes nothing there, and raytrace mode's flat mirror is 2% or more away.
+  cli_run(TRUE vlf propagate "${DATA}/cornell-box-mirror.obj" --directions 129 --rays 16
+    --iterations 3 --out "${WORK}/mirror.vlf")
+  set(_camera --camera 150,300,20,556,300,380)
+  cli_run(TRUE vlf render "${WORK}/mirror.vlf" --size ${_size} ${_camera}
+    --out "${WORK}/m-cpu-flat.png" --exr "${WORK}/m-cpu-flat.exr")
+  cli_run(TRUE vlf render "${WORK}/mirror.vlf" --size ${_size} ${_camera} ${_relief}
+    --out "${WORK}/m-cpu-relief.png" --exr "${WORK}/m-cpu-relief.exr")
+  oiio("${WORK}/m-cpu-flat.exr" "${WORK}/m-cpu-relief.exr" --absdiff --maxchan --mulc 1e6
+    --clamp:min=0:max=1 -o "${WORK}/m-direct.exr")
+  oiio("${WORK}/m-direct.exr" --dilate 5x5 --mulc -1 --addc 1 -o "${WORK}/m-beyond.exr")
+  oiio("${WORK}/m-direct.exr" --erode 5x5 -o "${WORK}/m-direct-core.exr")
+  exr_stat_milli("${WORK}/m-direct-core.exr" Avg _direct)
+  exr_stat_milli("${WORK}/m-beyond.exr" Avg _beyond)
+  if (_direct LESS 20 OR _beyond LESS 200)
+    message(FATAL_ERROR "the back wall covers ${_direct}/1000 of the image directly, "
+      "${_beyond}/1000 is clear of it: not the view the test expects")
+  endif ()
+  foreach (_mode IN ITEMS coherent progressive raytrace)
+    foreach (_which IN ITEMS flat relief)
+      set(_with)
+      if (_which STREQUAL "relief")
+        set(_with ${_relief})
+      endif ()
+      cli_run(TRUE vlf render "${WORK}/mirror.vlf" --mode ${_mode} --size ${_size} ${_camera}
+        ${_with} --out "${WORK}/m-${_mode}-${_which}.png")
+    endforeach ()
+    # The relief's change per pixel, and the pixels it changes (by more than 2 levels).
+    foreach (_against IN ITEMS relief flat)
+      oiio("${WORK}/m-${_mode}-flat.png" "${WORK}/m-${_mode}-${_against}.png" --absdiff --maxchan
+        -o "${WORK}/m-${_mode}-${_against}-diff.exr")
+      oiio("${WORK}/m-${_mode}-${_against}-diff.exr" --subc 0.0085 --mulc 1e6 --clamp:min=0:max=1
+        "${WORK}/m-beyond.exr" --mul -o "${WORK}/m-${_mode}-${_against}-changed.exr")
+      exr_stat_milli("${WORK}/m-${_mode}-${_against}-changed.exr" Avg _changed_${_against})
+      # Mean change (x 1000 / the area) in the mirror and where the relief is seen directly.
+      oiio("${WORK}/m-${_mode}-${_against}-diff.exr" "${WORK}/m-${_mode}-${_against}-changed.exr"
+        --mul --mulc 100 -o "${WORK}/m-${_mode}-${_against}-mirror.exr")
+      exr_stat_milli("${WORK}/m-${_mode}-${_against}-mirror.exr" Avg _mirror_${_against})
+    endforeach ()
+    # The same where the relief is seen directly (its pixels changed by more than 2 levels).
+    oiio("${WORK}/m-${_mode}-relief-diff.exr" --subc 0.0085 --mulc 1e6 --clamp:min=0:max=1
+      "${WORK}/m-direct-core.exr" --mul -o "${WORK}/m-${_mode}-direct-changed.exr")
+    exr_stat_milli("${WORK}/m-${_mode}-direct-changed.exr" Avg _direct_changed)
+    oiio("${WORK}/m-${_mode}-relief-diff.exr" "${WORK}/m-${_mode}-direct-changed.exr" --mul
+      --mulc 100 -o "${WORK}/m-${_mode}-direct-change.exr")
+    exr_stat_milli("${WORK}/m-${_mode}-direct-change.exr" Avg _direct_change)
+    set(_direct_mean 0)
+    if (_direct_changed GREATER 0)
+      math(EXPR _direct_mean "${_direct_change} * 10 / ${_direct_changed}")
+    endif ()
+    set(_mirror_mean 0)
+    if (_changed_relief GREATER 0)
+      math(EXPR _mirror_mean "${_mirror_relief} * 10 / ${_changed_relief}")
+    endif ()
+    message("${_mode}: beyond the directly seen wall (${_beyond}/1000 of the image) the relief "
+      "changes ${_changed_relief}/1000 of the image (the flat mirror: ${_changed_flat}/1000), "
+      "by ${_mirror_mean}/1000 on average; where it is seen directly by ${_direct_mean}/1000")
+    if (_changed_relief LESS 100)
+      message(FATAL_ERROR "${_mode}: the mirror does not show the relief")
+    endif ()
+    if (NOT _changed_flat LESS 100)
+      message(FATAL_ERROR "${_mode}: the flat mirror passes the check")
+    endif ()
+    # 0.5 to 3 times 0.9 the direct change: the mirror sees the grooves at a more grazing angle
+    # (more of their steps and shadows; measured 1.8-2.1 times).
+    math(EXPR _low "${_direct_mean} * 9 / 20")
+    math(EXPR _high "${_direct_mean} * 27 / 10")
+    if (_mode STREQUAL "raytrace")
+      # Raytrace mode's mirrors are field lookups; where the chain ends on a relief they are
+      # traced (FollowMirrorChain): there they must be the coherent mode's traced values, which
+      # the field lookup (the flat run) is not.
+      foreach (_which IN ITEMS relief flat)
+        oiio("${WORK}/m-raytrace-${_which}.png" "${WORK}/m-coherent-relief.png" --absdiff --maxchan
+          "${WORK}/m-coherent-relief-changed.exr" --mul --mulc 100
+          -o "${WORK}/m-raytrace-${_which}-traced.exr")
+        exr_stat_milli("${WORK}/m-raytrace-${_which}-traced.exr" Avg _traced_${_which})
+        math(EXPR _traced_${_which} "${_traced_${_which}} * 10 / ${_coherent_changed}")
+      endforeach ()
+      message("raytrace: in the coherent mode's mirrored relief the raytrace mode's pixels are "
+        "${_traced_relief}/1000 from the coherent mode's on average (the flat run: "
+        "${_traced_flat}/1000)")
+      if (_traced_relief GREATER 10 OR NOT _traced_flat GREATER 20)
+        message(FATAL_ERROR "raytrace: the mirrored relief is not the traced one")
+      endif ()
+      continue()
+    endif ()
+    if (_mode STREQUAL "coherent")
+      set(_coherent_changed ${_changed_relief})
+    endif ()
+    if (_mirror_mean LESS _low OR _mirror_mean GREATER _high)
+      message(FATAL_ERROR "${_mode}: the relief in the mirror changes the flat wall's pixels by "
+        "${_mirror_mean}/1000, not about 0.9 x ${_direct_mean}/1000 as seen directly")
+    endif ()
+  endforeach ()
 endif ()

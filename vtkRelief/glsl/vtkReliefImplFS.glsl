@@ -210,9 +210,14 @@
     transpose(mlWorldToView) * mlN, diffuseColor, mlFlatLightIrradiance(mlHitPos, mlN, mlHit.xy));
 #endif
   // mlNormalLength: the filtered normal's length (Toksvig), 1 without level of detail.
-  gl_FragData[0].rgb = (gl_FragData[0].rgb +
-                         mlEnvironment * (mlNormalLength * diffuseColor / 3.14159265)) *
-    mlExposure;
+  gl_FragData[0].rgb =
+    gl_FragData[0].rgb + mlEnvironment * (mlNormalLength * diffuseColor / 3.14159265);
+#ifdef ML_RADIANCE_HOOK
+  // A subclass's change of the linear radiance at the hit (view coordinates, the macro normal),
+  // e.g. the light field walkthrough's object shadow (vtkLightFieldReliefMapper).
+  gl_FragData[0].rgb = mlRadianceHook(gl_FragData[0].rgb, mlHitPos, mlN, diffuseColor);
+#endif
+  gl_FragData[0].rgb *= mlExposure;
 #ifdef ML_TONE_MAPPING
   gl_FragData[0].rgb = gl_FragData[0].rgb / (1.0 + gl_FragData[0].rgb); // Reinhard
 #endif

@@ -4,6 +4,9 @@
 #include "vtkLightFieldActorInternals.h"
 
 #include "ObjectMesh.h"
+#include "WalkthroughTracer.h"
+
+#include <utility>
 
 #include "vtkMatrix4x4.h"
 
@@ -44,6 +47,20 @@ const mesolight::vlf::ObjectShadows* vtkLightFieldActorCore::GetObjectShadows(
   const vtkLightFieldActor* actor)
 {
   return actor->Impl->Shadows.GetMaps();
+}
+
+//------------------------------------------------------------------------------
+void vtkLightFieldActorCore::SetTracedReliefs(
+  vtkLightFieldActor* actor, std::shared_ptr<const mesolight::vlf::TracedReliefs> reliefs)
+{
+  vtkLightFieldActor::Internals& impl = *actor->Impl;
+  impl.Worker.Stop(); // it reads the tracer
+  impl.Worker.Forget();
+  if (mesolight::vlf::WalkthroughTracer* tracer = impl.Scene.GetTracer())
+  {
+    tracer->SetReliefs(std::move(reliefs));
+  }
+  actor->Modified();
 }
 
 //------------------------------------------------------------------------------

@@ -15,12 +15,15 @@
 
 #include <glm/mat4x4.hpp>
 
+#include <memory> // For std::shared_ptr
+
 namespace mesolight
 {
 namespace vlf
 {
 class LightField;
 class ObjectShadows;
+class TracedReliefs;
 struct LightApproximation;
 struct ShadedObject;
 }
@@ -43,6 +46,14 @@ public:
   static const mesolight::vlf::LightApproximation* GetEmitterLights(vtkLightFieldActor* actor);
   /** The shadow maps of the last frame (nullptr when no object casts shadows). */
   static const mesolight::vlf::ObjectShadows* GetObjectShadows(const vtkLightFieldActor* actor);
+  /**
+   * Reliefs drawn on the shown field's surfaces (the walkthrough's --relief): the mirrors show
+   * them where their rays land (WalkthroughTracer::SetReliefs; nullptr: the flat surfaces). For
+   * the current field (a new field drops them); stops the reflection worker and forgets its
+   * image first.
+   */
+  static void SetTracedReliefs(
+    vtkLightFieldActor* actor, std::shared_ptr<const mesolight::vlf::TracedReliefs> reliefs);
 
   /**
    * A movable object's placement in the field's unit sphere: its world matrix (a vtkProp3D's

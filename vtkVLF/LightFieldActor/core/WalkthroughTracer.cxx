@@ -209,11 +209,31 @@ glm::vec3 WalkthroughTracer::ShadedDiffuse(std::uint32_t s, const glm::vec3& p) 
     total, p, this->LightFieldRef.Surfaces()[s].Normal, this->LightFieldRef.MaterialOf(s).Diffuse);
 }
 
+glm::vec3 WalkthroughTracer::LandingRadiance(
+  const SceneRay& ray, const SceneHit& hit, std::uint32_t s, const glm::vec3& p) const
+{
+  glm::vec3 relief;
+  if (this->ReliefsRef && this->ReliefsRef->Covers(hit.Triangle) &&
+    this->ReliefsRef->Radiance(hit.Triangle, ray.Origin, ray.Direction, relief))
+  {
+    if (!this->ShadowsRef || this->ShadowsRef->Empty())
+    {
+      return relief;
+    }
+    // The object's shadow at the macro point the ray reached, as the walkthrough's relief
+    // mapper darkens the relief (by the share of the light, at the wall's normal).
+    return this->ShadowsRef->Shade(relief, p, this->LightFieldRef.Surfaces()[s].Normal,
+      this->LightFieldRef.MaterialOf(s).Diffuse);
+  }
+  return this->ShadedDiffuse(s, p);
+}
+
 glm::vec3 WalkthroughTracer::MirrorChain::Apply(const glm::vec3& field) const
 {
   switch (this->End)
   {
     case Object:
+    case Relief:
       return this->Own + this->Throughput * this->Value;
     case Shadow:
       return glm::max(glm::vec3(0.0f), field - this->Throughput * this->Value);
@@ -228,7 +248,9 @@ WalkthroughTracer::MirrorChain WalkthroughTracer::FollowMirrorChain(
 {
   MirrorChain chain;
   const bool shadows = this->ShadowsRef && !this->ShadowsRef->Empty();
-  if (!this->ObjectSet && !shadows)
+  // With reliefs every chain is followed: the field's value holds the flat wall's light.
+  const bool reliefs = this->ReliefsRef != nullptr;
+  if (!this->ObjectSet && !shadows && !reliefs)
   {
     return chain;
   }
@@ -244,7 +266,8 @@ WalkthroughTracer::MirrorChain WalkthroughTracer::FollowMirrorChain(
     reflected.Direction = dn - 2.0f * glm::dot(dn, n) * n;
     const bool deeper = !this->IgnoreDeeperObjectForTesting;
     const bool object = this->ObjectSet && this->MayHitObject(reflected);
-    if (!object && !shadows && !(deeper && this->ObjectSet && this->MirrorFacesMirror[s]))
+    if (!object && !shadows && !reliefs &&
+      !(deeper && this->ObjectSet && this->MirrorFacesMirror[s]))
     {
       return MirrorChain{}; // nothing the field does not know along this reflection
     }
@@ -265,6 +288,14 @@ WalkthroughTracer::MirrorChain WalkthroughTracer::FollowMirrorChain(
       p = q;
       d = reflected.Direction;
       continue;
+    }
+    if ((c == PixelClass::Diffuse || c == PixelClass::Emitter) && reliefs &&
+      this->ReliefsRef->Covers(hit.Triangle))
+    {
+      chain.End = MirrorChain::Relief;
+      chain.Throughput = throughput;
+      chain.Value = this->LandingRadiance(reflected, hit, next, q);
+      return chain;
     }
     if (c == PixelClass::Diffuse && shadows)
     {
@@ -362,7 +393,7 @@ glm::vec3 WalkthroughTracer::TracedRadiance(
     {
       if (options.BouncesShortForTesting <= 0)
       {
-        sum += throughput * this->ShadedDiffuse(s, p);
+        sum += throughput * this->LandingRadiance(ray, hit, s, p);
       }
       break;
     }
@@ -417,7 +448,7 @@ void WalkthroughTracer::TracedRadiance16(
       {
         if (options.BouncesShortForTesting <= 0)
         {
-          out[slot[q]] += throughput[q] * this->ShadedDiffuse(s, p);
+          out[slot[q]] += throughput[q] * this->LandingRadiance(active[q], hits[q], s, p);
         }
         continue;
       }
@@ -445,7 +476,7 @@ glm::vec3 WalkthroughTracer::MirrorRadiance(std::uint32_t s, const glm::vec3& p,
   if (quality != SpecularQuality::Traced)
   {
     chain = this->FollowMirrorChain(s, p, d, options);
-    if (chain.End == MirrorChain::Object)
+    if (chain.End == MirrorChain::Object || chain.End == MirrorChain::Relief)
     {
       return chain.Apply(glm::vec3(0.0f));
     }

@@ -29,6 +29,10 @@
 // diffuse surface seen in a mirror is darkened at the point the mirror ray lands on by the same
 // ObjectShadows::Shade the raytrace mode applies to directly seen pixels (and the GPU's twin
 // glsl/vtkLightFieldShadowFS.glsl to the progressive and coherent modes' diffuse pixels).
+// SetReliefs gives the reliefs drawn on surfaces of the scene (the walkthrough's --relief), which
+// the tracer keeps flat: a mirror ray that lands on one shows the relief's radiance along it
+// (TracedReliefs, the CPU reference's exact height-field intersection and shading), darkened by
+// the object's shadow at the point it landed on.
 #ifndef mesolight_vlf_WalkthroughTracer_h
 #define mesolight_vlf_WalkthroughTracer_h
 
@@ -42,6 +46,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <utility>
 #include <vector>
 
 namespace mesolight
@@ -110,6 +115,21 @@ struct TraceOptions
 
 class ObjectShadows;
 
+// Reliefs drawn on triangles of the field's scene, for the mirror rays that land on them:
+// implemented where the reliefs are set up (application/LightFieldReliefs.cxx: the CPU
+// reference's FieldRelief and ReliefRadiance). Called from several threads at once.
+class TracedReliefs
+{
+public:
+  virtual ~TracedReliefs() = default;
+  // Whether scene triangle `triangle` carries a relief.
+  virtual bool Covers(std::size_t triangle) const = 0;
+  // The radiance the relief shows along a ray (unit sphere) that reached its triangle's plane;
+  // false when the ray misses the relief (the flat surface's value is kept).
+  virtual bool Radiance(std::size_t triangle, const glm::vec3& origin,
+    const glm::vec3& direction, glm::vec3& radiance) const = 0;
+};
+
 class WalkthroughTracer
 {
 public:
@@ -145,6 +165,16 @@ public:
   const ObjectShadows* Shadows() const { return this->ShadowsRef; }
   // The total diffuse radiance of surface s at p, darkened by the object's shadow when set.
   glm::vec3 ShadedDiffuse(std::uint32_t s, const glm::vec3& p) const;
+  ///@}
+
+  ///@{
+  // Reliefs on the scene's surfaces, shown where mirror rays land on them (shared; nullptr:
+  // none). Not thread-safe against shading running at the same time, like SetObject.
+  void SetReliefs(std::shared_ptr<const TracedReliefs> reliefs)
+  {
+    this->ReliefsRef = std::move(reliefs);
+  }
+  const TracedReliefs* Reliefs() const { return this->ReliefsRef.get(); }
   ///@}
 
   // Class of a primary hit; surface is set for the front/back of a surface.
@@ -206,19 +236,26 @@ private:
   glm::vec3 ObjectCentre{ 0.0f }; // bounding sphere in the unit sphere (cheap ray rejection)
   float ObjectRadius = 0.0f;
   const ObjectShadows* ShadowsRef = nullptr;
+  std::shared_ptr<const TracedReliefs> ReliefsRef;
+  // What a reflected ray shows where it lands on the diffuse or emitting surface s at p: the
+  // relief's radiance where one is drawn (and hit), else ShadedDiffuse.
+  glm::vec3 LandingRadiance(
+    const SceneRay& ray, const SceneHit& hit, std::uint32_t s, const glm::vec3& p) const;
   std::vector<std::uint8_t> MirrorFacesMirror; // per mirror surface: another mirror in front
   // True when the ray may reach the object (its bounding sphere).
   bool MayHitObject(const SceneRay& ray) const;
   // What the field-lookup qualities must correct at mirror point p of surface s seen along d:
   // the mirror chain from p meets the object (Object: the mirror's radiance is Own + Throughput
-  // x Value) or ends on a diffuse point the object shadows (Shadow: the field's mirror value
-  // loses Throughput x Value); Field: keep the field's value.
+  // x Value), on a relief (Relief: the same, Value the relief's radiance) or ends on a diffuse
+  // point the object shadows (Shadow: the field's mirror value loses Throughput x Value); Field:
+  // keep the field's value.
   struct MirrorChain
   {
     enum Kind
     {
       Field,
       Object,
+      Relief,
       Shadow
     } End = Field;
     glm::vec3 Own{ 0.0f }, Throughput{ 1.0f }, Value{ 0.0f };

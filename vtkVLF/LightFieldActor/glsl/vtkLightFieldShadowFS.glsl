@@ -4,7 +4,10 @@
 // keep the two together. All maps are tiles of one float texture (map m at tile
 // (m % mlShadowColumns, m / mlShadowColumns), mlShadowResolution texels a side), read with
 // texelFetch so the depth test sees exactly the CPU's texels. mlShadowMode: 0 none, 1 black,
-// 2 blend, 3 field, 4 PCF, 5 soft. Positions are in the field's unit sphere.
+// 2 blend, 3 field, 4 PCF, 5 soft. Positions are in the field's unit sphere. mlShadowedAt shades
+// a receiver given by its point, normal and Kd (the walkthrough's reliefs, vtkLightFieldReliefMapper:
+// the relief's hit point); mlShadowed the light field's own receivers, given per vertex (with
+// ML_SHADOW_RECEIVER_GIVEN defined, it and its inputs are left out).
 
 #define ML_SHADOW_MAPS 40
 #define ML_SHADOW_EMITTERS 8
@@ -26,9 +29,6 @@ uniform vec4 mlShadowEmitterNormal[ML_SHADOW_EMITTERS];   // xyz normal
 // x: first sample, y: sample count, z: centroid map, w: first sample map (-1: none)
 uniform vec4 mlShadowEmitterIndex[ML_SHADOW_EMITTERS];
 uniform vec4 mlShadowSample[ML_SHADOW_SAMPLES]; // xyz point on the emitter, w its area
-in vec3 mlShadowPointVC; // unit sphere
-in vec3 mlShadowNormalVC;
-in vec3 mlShadowKdVC;
 
 float mlShadowTap(int m, vec3 p, vec3 n, int kernel)
 {
@@ -88,15 +88,14 @@ vec3 mlShadowSampleIrradiance(int e, int i, vec3 p, vec3 n)
   return mlShadowEmitterRadiance[e].rgb * (mlShadowSample[i].w * cosLight * cosReceiver / d2);
 }
 
-// The darkened radiance of this fragment's diffuse surface, whose unshadowed radiance is total.
-vec3 mlShadowed(vec3 total)
+// The darkened radiance of a diffuse receiver at p (unit sphere) with unit normal n and albedo
+// kd, whose unshadowed radiance is total.
+vec3 mlShadowedAt(vec3 total, vec3 p, vec3 n, vec3 kd)
 {
   if (mlShadowMode == 0 || mlShadowEmitterCount == 0)
   {
     return total;
   }
-  vec3 p = mlShadowPointVC;
-  vec3 n = normalize(mlShadowNormalVC);
   if (mlShadowMode == 1 || mlShadowMode == 2)
   {
     float blocked = 0.0;
@@ -149,7 +148,7 @@ vec3 mlShadowed(vec3 total)
   }
   if (mlShadowAmbient.w < 0.5)
   {
-    return max(vec3(0.0), total - mlShadowKdVC / 3.14159265358979 * lost);
+    return max(vec3(0.0), total - kd / 3.14159265358979 * lost);
   }
   // The share of the lighting the object blocks scales the field's value (ObjectShadows.h: the
   // ratio estimator); Kd cancels per channel.
@@ -175,3 +174,15 @@ vec3 mlShadowed(vec3 total)
   }
   return total * ratio;
 }
+
+#ifndef ML_SHADOW_RECEIVER_GIVEN
+in vec3 mlShadowPointVC; // unit sphere
+in vec3 mlShadowNormalVC;
+in vec3 mlShadowKdVC;
+
+// The darkened radiance of this fragment's diffuse surface, whose unshadowed radiance is total.
+vec3 mlShadowed(vec3 total)
+{
+  return mlShadowedAt(total, mlShadowPointVC, normalize(mlShadowNormalVC), mlShadowKdVC);
+}
+#endif
