@@ -199,6 +199,7 @@ public:
     , Options(options)
     , Embree(field.Scene())
     , Light(CollectEmitters(field.Scene()))
+    , Source(&field.TotalDiffuse)
   {
   }
 
@@ -405,6 +406,8 @@ public:
   const FinalGatherOptions& Options;
   EmbreeScene Embree;
   Emitters Light;
+  // The totals a ray's hit reads (the propagated ones, or a first gather's).
+  const std::vector<glm::vec3>* Source;
   // The indirect radiance arriving at ray.Origin from ray.Direction: the diffuse radiance
   // leaving the first diffuse surface hit, less its emission (the direct part, sampled apart).
   // Mirrors (surfaces that store radiance) are followed by exact reflection, their Ks times the
@@ -435,7 +438,7 @@ public:
       }
       const glm::vec3 p = ray.Origin + hit.T * ray.Direction;
       const SceneMaterial& m = this->Field.MaterialOf(hs);
-      glm::vec3 l = this->Field.SampleTexture(this->Field.TotalDiffuse, hs, p);
+      glm::vec3 l = this->Field.SampleTexture(*this->Source, hs, p);
       if (bounce == 0)
       {
         l = glm::max(l - m.Emission, glm::vec3(0.0f));
@@ -462,81 +465,16 @@ public:
   float Offset = 2e-5f;
 };
 
-} // namespace
-
-FinalGatherReport FinalGather(LightField& field, const FinalGatherOptions& options)
+// Texels without a point in the open, ring after ring (up to 16), so that bilinear reads near
+// an edge or a contact blend gathered values only, never a propagated texel finer than the
+// lines (which may hold nothing). The first ring extrapolates: the mean over the 8 directions
+// of 2 g1 - g2 (g1 the gathered neighbour, g2 the gathered texel beyond it; clamped at 0), so a
+// read between the last gathered texel and a filled one under a box keeps the slope of a
+// contact shadow (the plain mean of the neighbours brightened it: it took texels further from
+// the box); without such a pair, and in later rings, the mean of the gathered 8-neighbours.
+void FillFromNeighbours(const std::vector<Surface>& surfaces, std::vector<glm::vec3>& gathered,
+  std::vector<std::uint8_t>& done, FinalGatherReport& report)
 {
-  if (!(options.Footprint > 0.0f && options.Footprint <= 1.0f))
-  {
-    throw std::invalid_argument("the final gather's footprint must be in (0, 1] texels");
-  }
-  if (options.IndirectRays <= 0 || options.DirectSamples < 0)
-  {
-    throw std::invalid_argument("the final gather needs a positive number of indirect rays and "
-                                "a non-negative number of emitter samples per texel");
-  }
-  const auto start = std::chrono::steady_clock::now();
-  RestorePropagatedDiffuse(field); // a second gather starts from the propagated totals
-  FinalGatherReport report;
-  const Gatherer gatherer(field, options);
-  const std::vector<Surface>& surfaces = field.Surfaces();
-  std::vector<SurfaceTriangles> buckets(surfaces.size());
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> work; // (surface, local texel) with triangles
-  for (std::uint32_t s = 0; s < surfaces.size(); ++s)
-  {
-    buckets[s] = BucketTriangles(field, surfaces[s]);
-    for (std::size_t t = 0; t < surfaces[s].TexelCount(); ++t)
-    {
-      if (buckets[s].Start[t] != buckets[s].Start[t + 1])
-      {
-        work.emplace_back(s, static_cast<std::uint32_t>(t));
-      }
-    }
-  }
-  std::vector<TexelResult> results(work.size());
-  // Rounds of work between progress reports: abort is checked between them.
-  const std::size_t rounds = std::max<std::size_t>(1, std::min<std::size_t>(50, work.size() / 256));
-  for (std::size_t round = 0; round < rounds; ++round)
-  {
-    if (!ReportProgress(options.Progress, static_cast<double>(round) / rounds))
-    {
-      throw AbortedError();
-    }
-    const std::size_t begin = work.size() * round / rounds;
-    const std::size_t end = work.size() * (round + 1) / rounds;
-    ParallelFor(begin, end, 16,
-      [&](std::size_t b, std::size_t e)
-      {
-        for (std::size_t i = b; i < e; ++i)
-        {
-          const Surface& s = surfaces[work[i].first];
-          const int a = static_cast<int>(work[i].second % static_cast<std::uint32_t>(s.TextureWidth));
-          const int bb = static_cast<int>(work[i].second / static_cast<std::uint32_t>(s.TextureWidth));
-          results[i] = gatherer.Gather(
-            work[i].first, buckets[work[i].first], a, bb, s.TexelOffset + work[i].second);
-        }
-      });
-  }
-  if (!ReportProgress(options.Progress, 1.0))
-  {
-    throw AbortedError();
-  }
-  std::vector<glm::vec3> gathered = field.TotalDiffuse;
-  std::vector<std::uint8_t> done(gathered.size(), 0);
-  for (std::size_t i = 0; i < work.size(); ++i)
-  {
-    report.Rays += results[i].Rays;
-    if (results[i].Gathered)
-    {
-      const std::size_t texel = surfaces[work[i].first].TexelOffset + work[i].second;
-      gathered[texel] = results[i].Value;
-      done[texel] = 1;
-      ++report.Texels;
-    }
-  }
-  // Texels without a point in the open: the mean of their gathered 8-neighbours, ring after
-  // ring (up to 16), so that bilinear reads near an edge or a contact blend gathered values
-  // only, never a propagated texel finer than the lines (which may hold nothing).
   for (int ring = 0; ring < 16; ++ring)
   {
     const std::size_t filledBefore = report.Filled;
@@ -572,6 +510,37 @@ FinalGatherReport FinalGather(LightField& field, const FinalGatherOptions& optio
               }
             }
           }
+          if (count > 0 && ring == 0)
+          {
+            glm::vec3 line(0.0f);
+            int lines = 0;
+            for (int db = -1; db <= 1; ++db)
+            {
+              for (int da = -1; da <= 1; ++da)
+              {
+                const int a2 = a + 2 * da, b2 = b + 2 * db;
+                if ((da == 0 && db == 0) || a2 < 0 || b2 < 0 || a2 >= s.TextureWidth ||
+                  b2 >= s.TextureHeight)
+                {
+                  continue;
+                }
+                const std::size_t n1 =
+                  s.TexelOffset + static_cast<std::size_t>(b + db) * s.TextureWidth + (a + da);
+                const std::size_t n2 =
+                  s.TexelOffset + static_cast<std::size_t>(b2) * s.TextureWidth + a2;
+                if (done[n1] && done[n2])
+                {
+                  line += glm::max(2.0f * gathered[n1] - gathered[n2], glm::vec3(0.0f));
+                  ++lines;
+                }
+              }
+            }
+            if (lines > 0)
+            {
+              sum = line;
+              count = lines;
+            }
+          }
           if (count > 0)
           {
             gathered[texel] = sum / static_cast<float>(count);
@@ -586,6 +555,118 @@ FinalGatherReport FinalGather(LightField& field, const FinalGatherOptions& optio
     {
       break;
     }
+  }
+}
+
+// One gather of every texel with triangles (`work`) into a copy of field.TotalDiffuse, the
+// rays' hits reading `source`; texels without a point in the open filled from their gathered
+// neighbours. Progress over [begin, end] of options.Progress.
+std::vector<glm::vec3> GatherPass(const LightField& field, const FinalGatherOptions& options,
+  const std::vector<glm::vec3>& source, const std::vector<SurfaceTriangles>& buckets,
+  const std::vector<std::pair<std::uint32_t, std::uint32_t>>& work, double begin, double end,
+  FinalGatherReport& report)
+{
+  Gatherer gatherer(field, options);
+  gatherer.Source = &source;
+  const std::vector<Surface>& surfaces = field.Surfaces();
+  std::vector<TexelResult> results(work.size());
+  // Rounds of work between progress reports: abort is checked between them.
+  const std::size_t rounds = std::max<std::size_t>(1, std::min<std::size_t>(50, work.size() / 256));
+  for (std::size_t round = 0; round < rounds; ++round)
+  {
+    if (!ReportProgress(
+          options.Progress, begin + (end - begin) * static_cast<double>(round) / rounds))
+    {
+      throw AbortedError();
+    }
+    const std::size_t first = work.size() * round / rounds;
+    const std::size_t last = work.size() * (round + 1) / rounds;
+    ParallelFor(first, last, 16,
+      [&](std::size_t b, std::size_t e)
+      {
+        for (std::size_t i = b; i < e; ++i)
+        {
+          const Surface& s = surfaces[work[i].first];
+          const int a =
+            static_cast<int>(work[i].second % static_cast<std::uint32_t>(s.TextureWidth));
+          const int bb =
+            static_cast<int>(work[i].second / static_cast<std::uint32_t>(s.TextureWidth));
+          results[i] = gatherer.Gather(
+            work[i].first, buckets[work[i].first], a, bb, s.TexelOffset + work[i].second);
+        }
+      });
+  }
+  if (!ReportProgress(options.Progress, end))
+  {
+    throw AbortedError();
+  }
+  std::vector<glm::vec3> gathered = field.TotalDiffuse;
+  std::vector<std::uint8_t> done(gathered.size(), 0);
+  report.Texels = 0;
+  report.Filled = 0;
+  for (std::size_t i = 0; i < work.size(); ++i)
+  {
+    report.Rays += results[i].Rays;
+    if (results[i].Gathered)
+    {
+      const std::size_t texel = surfaces[work[i].first].TexelOffset + work[i].second;
+      gathered[texel] = results[i].Value;
+      done[texel] = 1;
+      ++report.Texels;
+    }
+  }
+  FillFromNeighbours(surfaces, gathered, done, report);
+  return gathered;
+}
+
+} // namespace
+
+FinalGatherReport FinalGather(LightField& field, const FinalGatherOptions& options)
+{
+  if (!(options.Footprint > 0.0f && options.Footprint <= 1.0f))
+  {
+    throw std::invalid_argument("the final gather's footprint must be in (0, 1] texels");
+  }
+  if (options.IndirectRays <= 0 || options.DirectSamples < 0)
+  {
+    throw std::invalid_argument("the final gather needs a positive number of indirect rays and "
+                                "a non-negative number of emitter samples per texel");
+  }
+  const auto start = std::chrono::steady_clock::now();
+  RestorePropagatedDiffuse(field); // a second gather starts from the propagated totals
+  FinalGatherReport report;
+  const std::vector<Surface>& surfaces = field.Surfaces();
+  std::vector<SurfaceTriangles> buckets(surfaces.size());
+  std::vector<std::pair<std::uint32_t, std::uint32_t>>
+    work; // (surface, local texel) with triangles
+  for (std::uint32_t s = 0; s < surfaces.size(); ++s)
+  {
+    buckets[s] = BucketTriangles(field, surfaces[s]);
+    for (std::size_t t = 0; t < surfaces[s].TexelCount(); ++t)
+    {
+      if (buckets[s].Start[t] != buckets[s].Start[t + 1])
+      {
+        work.emplace_back(s, static_cast<std::uint32_t>(t));
+      }
+    }
+  }
+  std::vector<glm::vec3> gathered;
+  if (options.Prepass)
+  {
+    FinalGatherOptions first = options;
+    first.IndirectRays = std::max(1, options.IndirectRays / 4);
+    first.DirectSamples = (options.DirectSamples + 3) / 4;
+    first.Sequence = options.Sequence ^ 0x5bd1e995ull;
+    const double share = static_cast<double>(first.IndirectRays + first.DirectSamples) /
+      static_cast<double>(
+        first.IndirectRays + first.DirectSamples + options.IndirectRays + options.DirectSamples);
+    const std::vector<glm::vec3> prepass =
+      GatherPass(field, first, field.TotalDiffuse, buckets, work, 0.0, share, report);
+    gathered = GatherPass(field, options, prepass, buckets, work, share, 1.0, report);
+  }
+  else
+  {
+    gathered = GatherPass(field, options, field.TotalDiffuse, buckets, work, 0.0, 1.0, report);
   }
   field.PropagatedDiffuse.swap(field.TotalDiffuse);
   field.TotalDiffuse.swap(gathered);
