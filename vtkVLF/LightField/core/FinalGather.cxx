@@ -650,13 +650,16 @@ FinalGatherReport FinalGather(LightField& field, const FinalGatherOptions& optio
       }
     }
   }
+  // Two passes: the first, with a quarter of the rays, replaces the propagated totals the
+  // second pass's rays read at their hits (FinalGatherOptions::Prepass); progress is shared by
+  // their rays.
   std::vector<glm::vec3> gathered;
   if (options.Prepass)
   {
     FinalGatherOptions first = options;
     first.IndirectRays = std::max(1, options.IndirectRays / 4);
     first.DirectSamples = (options.DirectSamples + 3) / 4;
-    first.Sequence = options.Sequence ^ 0x5bd1e995ull;
+    first.Sequence = options.Sequence ^ 0x5bd1e995ull; // its own random numbers
     const double share = static_cast<double>(first.IndirectRays + first.DirectSamples) /
       static_cast<double>(
         first.IndirectRays + first.DirectSamples + options.IndirectRays + options.DirectSamples);
