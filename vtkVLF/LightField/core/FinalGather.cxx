@@ -468,7 +468,8 @@ public:
 // Texels without a point in the open, ring after ring (up to 16), so that bilinear reads near
 // an edge or a contact blend gathered values only, never a propagated texel finer than the
 // lines (which may hold nothing). The first ring extrapolates: the mean over the 8 directions
-// of 2 g1 - g2 (g1 the gathered neighbour, g2 the gathered texel beyond it; clamped at 0), so a
+// of 2 g1 - g2 (g1 the gathered neighbour, g2 the gathered texel beyond it), at least g1 / 2 (a
+// value near 0 would turn the last digits of g1 and g2 into a large relative change), so a
 // read between the last gathered texel and a filled one under a box keeps the slope of a
 // contact shadow (the plain mean of the neighbours brightened it: it took texels further from
 // the box); without such a pair, and in later rings, the mean of the gathered 8-neighbours.
@@ -530,7 +531,7 @@ void FillFromNeighbours(const std::vector<Surface>& surfaces, std::vector<glm::v
                   s.TexelOffset + static_cast<std::size_t>(b2) * s.TextureWidth + a2;
                 if (done[n1] && done[n2])
                 {
-                  line += glm::max(2.0f * gathered[n1] - gathered[n2], glm::vec3(0.0f));
+                  line += glm::max(2.0f * gathered[n1] - gathered[n2], 0.5f * gathered[n1]);
                   ++lines;
                 }
               }

@@ -26,7 +26,7 @@
 // leaves such lines out of a texel's capacity (LightField::Receiver). Texels none of whose
 // points lie on a triangle in the open (beyond a polygon's edge, under a box) take a value from
 // their gathered neighbours: the mean of the linear extrapolations 2 g1 - g2 along the lines of
-// two gathered texels through them (clamped at 0), else (and in later rings) the mean of their
+// two gathered texels through them (at least g1 / 2), else (and in later rings) the mean of their
 // gathered 8-neighbours, so bilinear reads along an edge follow the gathered values' slope
 // toward a contact instead of flattening it.
 //
