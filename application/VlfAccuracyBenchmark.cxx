@@ -22,7 +22,9 @@
 #include "FinalGather.h"
 #include "LightField.h"
 #include "Lookup.h"
+#include "MathConstants.h"
 #include "MemoryBudget.h"
+#include "OrthonormalBasis.h"
 #include "ParallelFor.h"
 #include "PatchComparison.h"
 #include "PathTracer.h"
@@ -249,6 +251,102 @@ std::string ErrorBreakdown(const vlf::LightField& field, const std::vector<Pixel
   return text;
 }
 
+// Where the error is by surface class and position, per pixel: the surface large (at least a
+// tenth of the largest surface's area: a floor, a wall) or small (a box's face, a rib, a shelf),
+// facing up, sideways or down; the point inside its surface, at a contact (a concave edge: a
+// ray along the surface within 1.5 texels meets another surface, as the floor beside a box or a
+// box side above the floor) or at a border (not a contact, but a point 1.5 texels away along the
+// surface is off it: a convex edge, as a box top's rim). Per class the mean |error|, the bias
+// (mean signed error) and the pixels: a class whose error is mostly bias is resolution or
+// placement, one whose bias is near zero is noise.
+std::string ClassBreakdown(const vlf::LightField& field, const AccuracyScene& scene,
+  const EmbreeScene& embree, const std::vector<PixelHit>& hits, float texelWorld,
+  const RgbImage& image, const RgbImage& a, const RgbImage& b)
+{
+  const double mean = MeanReference(hits, a, b);
+  double largest = 0.0;
+  for (const vlf::Surface& s : field.Surfaces())
+  {
+    largest = std::max(largest, s.Area);
+  }
+  const char* facing[3] = { "up", "side", "down" };
+  const char* where[3] = { "inside", "contact", "border" };
+  double sum[2][3][3] = {}, bias[2][3][3] = {};
+  std::size_t count[2][3][3] = {};
+  const float reach = 1.5f * texelWorld, lift = 0.02f * texelWorld;
+  for (std::size_t i = 0; i < hits.size(); ++i)
+  {
+    const double r = 0.5 * (Sum3(&a.Rgb[3 * i]) + Sum3(&b.Rgb[3 * i]));
+    if (hits[i].Triangle == SceneHit::None || !(r > 0.01 * mean))
+    {
+      continue;
+    }
+    const std::uint32_t s = field.SurfaceOfTriangle(hits[i].Triangle);
+    if (s == vlf::NoSurface)
+    {
+      continue;
+    }
+    const vlf::Surface& surface = field.Surfaces()[s];
+    const glm::vec3 n = glm::normalize(scene.Scene.FaceNormal(hits[i].Triangle));
+    const int large = surface.Area >= 0.1 * largest ? 1 : 0;
+    const int face = n.y > 0.7f ? 0 : (n.y < -0.7f ? 2 : 1);
+    glm::vec3 u, v;
+    OrthonormalBasis(n, u, v);
+    const glm::vec3 p = hits[i].Point + lift * n;
+    int position = 0;
+    for (int k = 0; k < 8 && position != 1; ++k)
+    {
+      const float angle = 2.0f * Pi<float> * static_cast<float>(k) / 8.0f;
+      const glm::vec3 d = std::cos(angle) * u + std::sin(angle) * v;
+      SceneRay along;
+      along.Origin = p;
+      along.Direction = d;
+      along.TFar = reach;
+      if (embree.Intersect(along).Hit())
+      {
+        position = 1;
+        continue;
+      }
+      SceneRay down;
+      down.Origin = p + reach * d;
+      down.Direction = -n;
+      down.TFar = 2.0f * lift;
+      const SceneHit below = embree.Intersect(down);
+      if (!below.Hit() || below.Triangle == SceneHit::None ||
+        field.SurfaceOfTriangle(below.Triangle) != s)
+      {
+        position = 2;
+      }
+    }
+    const double e = (Sum3(&image.Rgb[3 * i]) - r) / r;
+    sum[large][face][position] += std::abs(e);
+    bias[large][face][position] += e;
+    ++count[large][face][position];
+  }
+  std::string out;
+  for (int l = 1; l >= 0; --l)
+  {
+    for (int f = 0; f < 3; ++f)
+    {
+      for (int w = 0; w < 3; ++w)
+      {
+        const std::size_t c = count[l][f][w];
+        if (c == 0)
+        {
+          continue;
+        }
+        char text[160];
+        std::snprintf(text, sizeof(text), "%s%s %s %s %.1f%% (bias %+.1f%%, %zu px)",
+          out.empty() ? "" : "; ", l ? "large" : "small", facing[f], where[w],
+          100.0 * sum[l][f][w] / static_cast<double>(c),
+          100.0 * bias[l][f][w] / static_cast<double>(c), c);
+        out += text;
+      }
+    }
+  }
+  return out;
+}
+
 RgbImage FieldImage(const vlf::LightField& field, const std::vector<PixelHit>& hits, int w, int h)
 {
   const vlf::Lookup lookup(field);
@@ -366,8 +464,9 @@ int RunVlfAccuracyBenchmark(const std::vector<std::string>& args)
   cl.AddValue("--plot", "FILE.png", "time vs mean error, one series per scene (needs a display)");
   cl.AddValue("--images", "DIR", "write each field image and the reference as EXR here");
   cl.AddValue("--variants", "LIST",
-    "what is compared per setting: none (the propagated textures), gather (the final gather), "
-    "bilateral (the texture filter)",
+    "what is compared per setting: none (the propagated textures), single (the final gather in "
+    "one pass, reading the propagated textures at its rays' hits), gather (the final gather: "
+    "two passes, the default), bilateral (the texture filter)",
     "none,gather,bilateral");
   cl.AddValue("--gather-rays", "LIST",
     "the final gather's indirect rays per texel (several: one gather row each)", "1024");
@@ -405,9 +504,9 @@ int RunVlfAccuracyBenchmark(const std::vector<std::string>& args)
   const std::vector<std::string> variants = cl.GetStringList("--variants");
   for (const std::string& v : variants)
   {
-    if (v != "none" && v != "gather" && v != "bilateral")
+    if (v != "none" && v != "single" && v != "gather" && v != "bilateral")
     {
-      return cl.UsageError("--variants: '" + v + "' is not none, gather or bilateral");
+      return cl.UsageError("--variants: '" + v + "' is not none, single, gather or bilateral");
     }
   }
   const std::string problem = CheckOutputOptions(cl, { "--csv", "--plot" }, {});
@@ -506,7 +605,7 @@ int RunVlfAccuracyBenchmark(const std::vector<std::string>& args)
           settings.RaysPerSide * settings.RaysPerSide;
         // The filter changes the totals for good: it runs last.
         std::vector<std::string> order;
-        for (const char* v : { "none", "gather", "bilateral" })
+        for (const char* v : { "none", "single", "gather", "bilateral" })
         {
           if (std::find(variants.begin(), variants.end(), v) != variants.end())
           {
@@ -526,6 +625,8 @@ int RunVlfAccuracyBenchmark(const std::vector<std::string>& args)
         for (const std::string& variant : order)
         {
           const bool filtered = variant == "bilateral";
+          const bool single = variant == "single";
+          gatherOptions.Prepass = !single;
           gatherOptions.IndirectRays = variant.size() > 6 && variant.compare(0, 6, "gather") == 0
             ? std::atoi(variant.c_str() + 6)
             : gatherRayCounts.front();
@@ -536,7 +637,7 @@ int RunVlfAccuracyBenchmark(const std::vector<std::string>& args)
           {
             vlf::FilterTotalDiffuse(*field, vlf::TextureFilterSettings());
           }
-          if (variant.compare(0, 6, "gather") == 0)
+          if (single || variant.compare(0, 6, "gather") == 0)
           {
             const vlf::FinalGatherReport g = vlf::FinalGather(*field, gatherOptions);
             gatherSeconds = g.Seconds;
@@ -552,6 +653,9 @@ int RunVlfAccuracyBenchmark(const std::vector<std::string>& args)
           const PixelError e = Compare(hits, image, a, b);
           std::printf("# %s %s %s: %s\n", name.c_str(), text.c_str(), variant.c_str(),
             ErrorBreakdown(*field, hits, width, height, image, a, b).c_str());
+          std::printf("# %s %s %s: by class: %s\n", name.c_str(), text.c_str(), variant.c_str(),
+            ClassBreakdown(*field, s, embree, hits, static_cast<float>(texelWorld), image, a, b)
+              .c_str());
           if (!cl.Get("--images").empty())
           {
             const std::string base =

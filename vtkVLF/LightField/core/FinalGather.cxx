@@ -202,6 +202,7 @@ public:
     , Options(options)
     , Embree(field.Scene())
     , Light(CollectEmitters(field.Scene()))
+    , Source(&field.TotalDiffuse)
   {
   }
 
@@ -408,6 +409,8 @@ public:
   const FinalGatherOptions& Options;
   EmbreeScene Embree;
   Emitters Light;
+  // The totals a ray's hit reads (the propagated ones, or a first gather's).
+  const std::vector<glm::vec3>* Source;
   // The indirect radiance arriving at ray.Origin from ray.Direction: the diffuse radiance
   // leaving the first diffuse surface hit, less its emission (the direct part, sampled apart).
   // Mirrors (surfaces that store radiance) are followed by exact reflection, their Ks times the
@@ -438,7 +441,7 @@ public:
       }
       const glm::vec3 p = ray.Origin + hit.T * ray.Direction;
       const SceneMaterial& m = this->Field.MaterialOf(hs);
-      glm::vec3 l = this->Field.SampleTexture(this->Field.TotalDiffuse, hs, p);
+      glm::vec3 l = this->Field.SampleTexture(*this->Source, hs, p);
       if (bounce == 0)
       {
         l = glm::max(l - m.Emission, glm::vec3(0.0f));
@@ -465,139 +468,17 @@ public:
   float Offset = 2e-5f;
 };
 
-} // namespace
-
-FinalGatherReport FinalGather(LightField& field, const FinalGatherOptions& options)
+// Texels without a point in the open, ring after ring (up to 16), so that bilinear reads near
+// an edge or a contact blend gathered values only, never a propagated texel finer than the
+// lines (which may hold nothing). The first ring extrapolates: the mean over the 8 directions
+// of 2 g1 - g2 (g1 the gathered neighbour, g2 the gathered texel beyond it), at least g1 / 2 (a
+// value near 0 would turn the last digits of g1 and g2 into a large relative change), so a
+// read between the last gathered texel and a filled one under a box keeps the slope of a
+// contact shadow (the plain mean of the neighbours brightened it: it took texels further from
+// the box); without such a pair, and in later rings, the mean of the gathered 8-neighbours.
+void FillFromNeighbours(const std::vector<Surface>& surfaces, std::vector<glm::vec3>& gathered,
+  std::vector<std::uint8_t>& done, FinalGatherReport& report)
 {
-  if (!(options.Footprint > 0.0f && options.Footprint <= 1.0f))
-  {
-    throw std::invalid_argument("the final gather's footprint must be in (0, 1] texels");
-  }
-  if (options.IndirectRays <= 0 || options.DirectSamples < 0)
-  {
-    throw std::invalid_argument("the final gather needs a positive number of indirect rays and "
-                                "a non-negative number of emitter samples per texel");
-  }
-  const auto start = std::chrono::steady_clock::now();
-  RestorePropagatedDiffuse(field); // a second gather starts from the propagated totals
-  FinalGatherReport report;
-  const Gatherer gatherer(field, options);
-  const std::vector<Surface>& surfaces = field.Surfaces();
-  std::vector<SurfaceTriangles> buckets(surfaces.size());
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> work; // (surface, local texel) with triangles
-  for (std::uint32_t s = 0; s < surfaces.size(); ++s)
-  {
-    buckets[s] = BucketTriangles(field, surfaces[s]);
-    for (std::size_t t = 0; t < surfaces[s].TexelCount(); ++t)
-    {
-      if (buckets[s].Start[t] != buckets[s].Start[t + 1])
-      {
-        work.emplace_back(s, static_cast<std::uint32_t>(t));
-      }
-    }
-  }
-  // This rank's share: every ranks-th block of the texels with triangles (FinalGather.h).
-  const std::size_t ranks =
-    options.Reduce ? static_cast<std::size_t>(std::max(1, options.Reduce->Size())) : 1;
-  const std::size_t rank =
-    options.Reduce ? static_cast<std::size_t>(std::max(0, options.Reduce->Rank())) : 0;
-  // The o-th texel of this rank's share is work[ownIndex(o)].
-  const auto ownIndex = [&](std::size_t o)
-  {
-    return (o / GatherBlockTexels * ranks + rank) * GatherBlockTexels + o % GatherBlockTexels;
-  };
-  std::size_t ownCount = 0;
-  for (std::size_t first = rank * GatherBlockTexels; first < work.size();
-       first += ranks * GatherBlockTexels)
-  {
-    ownCount += std::min(GatherBlockTexels, work.size() - first);
-  }
-  // Per texel with triangles: its value and 1 where gathered, zeros where another rank gathers.
-  std::vector<float> shares(4 * work.size(), 0.0f);
-  std::atomic<std::uint64_t> ownRays{ 0 };
-  const auto gatherOwn = [&]()
-  {
-    // Rounds of work between progress reports: abort is checked between them.
-    const std::size_t rounds =
-      std::max<std::size_t>(1, std::min<std::size_t>(50, ownCount / 256));
-    for (std::size_t round = 0; round < rounds; ++round)
-    {
-      if (!ReportProgress(options.Progress, static_cast<double>(round) / rounds))
-      {
-        throw AbortedError();
-      }
-      const std::size_t begin = ownCount * round / rounds;
-      const std::size_t end = ownCount * (round + 1) / rounds;
-      ParallelFor(begin, end, 16,
-        [&](std::size_t b, std::size_t e)
-        {
-          std::uint64_t rays = 0;
-          for (std::size_t o = b; o < e; ++o)
-          {
-            const std::size_t i = ownIndex(o);
-            const Surface& s = surfaces[work[i].first];
-            const int a =
-              static_cast<int>(work[i].second % static_cast<std::uint32_t>(s.TextureWidth));
-            const int bb =
-              static_cast<int>(work[i].second / static_cast<std::uint32_t>(s.TextureWidth));
-            const TexelResult r = gatherer.Gather(
-              work[i].first, buckets[work[i].first], a, bb, s.TexelOffset + work[i].second);
-            rays += r.Rays;
-            if (r.Gathered)
-            {
-              shares[4 * i] = r.Value.x;
-              shares[4 * i + 1] = r.Value.y;
-              shares[4 * i + 2] = r.Value.z;
-              shares[4 * i + 3] = 1.0f;
-            }
-          }
-          ownRays += rays;
-        });
-    }
-    if (!ReportProgress(options.Progress, 1.0))
-    {
-      throw AbortedError();
-    }
-  };
-  if (options.Reduce)
-  {
-    Agree(*options.Reduce, gatherOwn); // an abort on one rank stops every rank before the sum
-  }
-  else
-  {
-    gatherOwn();
-  }
-  report.OwnTexels = ownCount;
-  report.OwnRays = ownRays.load();
-  report.OwnSeconds =
-    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  report.Rays = report.OwnRays;
-  if (ranks > 1)
-  {
-    // One sum combines the shares: a value plus the other ranks' zeros is that value exactly.
-    options.Reduce->SumInPlace(shares.data(), shares.size());
-    double rays = static_cast<double>(report.OwnRays);
-    options.Reduce->SumInPlace(&rays, 1);
-    report.Rays = static_cast<std::uint64_t>(rays);
-    report.CombinedBytes = shares.size() * sizeof(float) + sizeof(double);
-  }
-  std::vector<glm::vec3> gathered = field.TotalDiffuse;
-  std::vector<std::uint8_t> done(gathered.size(), 0);
-  for (std::size_t i = 0; i < work.size(); ++i)
-  {
-    if (shares[4 * i + 3] > 0.5f)
-    {
-      const std::size_t texel = surfaces[work[i].first].TexelOffset + work[i].second;
-      gathered[texel] = glm::vec3(shares[4 * i], shares[4 * i + 1], shares[4 * i + 2]);
-      done[texel] = 1;
-      ++report.Texels;
-    }
-  }
-  shares.clear();
-  shares.shrink_to_fit();
-  // Texels without a point in the open: the mean of their gathered 8-neighbours, ring after
-  // ring (up to 16), so that bilinear reads near an edge or a contact blend gathered values
-  // only, never a propagated texel finer than the lines (which may hold nothing).
   for (int ring = 0; ring < 16; ++ring)
   {
     const std::size_t filledBefore = report.Filled;
@@ -633,6 +514,37 @@ FinalGatherReport FinalGather(LightField& field, const FinalGatherOptions& optio
               }
             }
           }
+          if (count > 0 && ring == 0)
+          {
+            glm::vec3 line(0.0f);
+            int lines = 0;
+            for (int db = -1; db <= 1; ++db)
+            {
+              for (int da = -1; da <= 1; ++da)
+              {
+                const int a2 = a + 2 * da, b2 = b + 2 * db;
+                if ((da == 0 && db == 0) || a2 < 0 || b2 < 0 || a2 >= s.TextureWidth ||
+                  b2 >= s.TextureHeight)
+                {
+                  continue;
+                }
+                const std::size_t n1 =
+                  s.TexelOffset + static_cast<std::size_t>(b + db) * s.TextureWidth + (a + da);
+                const std::size_t n2 =
+                  s.TexelOffset + static_cast<std::size_t>(b2) * s.TextureWidth + a2;
+                if (done[n1] && done[n2])
+                {
+                  line += glm::max(2.0f * gathered[n1] - gathered[n2], 0.5f * gathered[n1]);
+                  ++lines;
+                }
+              }
+            }
+            if (lines > 0)
+            {
+              sum = line;
+              count = lines;
+            }
+          }
           if (count > 0)
           {
             gathered[texel] = sum / static_cast<float>(count);
@@ -647,6 +559,180 @@ FinalGatherReport FinalGather(LightField& field, const FinalGatherOptions& optio
     {
       break;
     }
+  }
+}
+
+// One gather of every texel with triangles (`work`) into a copy of field.TotalDiffuse, the
+// rays' hits reading `source`; texels without a point in the open filled from their gathered
+// neighbours. Progress over [begin, end] of options.Progress. Under MPI (options.Reduce) this
+// rank gathers its share, every ranks-th block of `work` (FinalGather.h), and one sum gives every
+// rank every value; the fill then runs on each rank alike.
+std::vector<glm::vec3> GatherPass(const LightField& field, const FinalGatherOptions& options,
+  const std::vector<glm::vec3>& source, const std::vector<SurfaceTriangles>& buckets,
+  const std::vector<std::pair<std::uint32_t, std::uint32_t>>& work, double begin, double end,
+  FinalGatherReport& report)
+{
+  const auto start = std::chrono::steady_clock::now();
+  Gatherer gatherer(field, options);
+  gatherer.Source = &source;
+  const std::vector<Surface>& surfaces = field.Surfaces();
+  const std::size_t ranks =
+    options.Reduce ? static_cast<std::size_t>(std::max(1, options.Reduce->Size())) : 1;
+  const std::size_t rank =
+    options.Reduce ? static_cast<std::size_t>(std::max(0, options.Reduce->Rank())) : 0;
+  // The o-th texel of this rank's share is work[ownIndex(o)].
+  const auto ownIndex = [&](std::size_t o)
+  {
+    return (o / GatherBlockTexels * ranks + rank) * GatherBlockTexels + o % GatherBlockTexels;
+  };
+  std::size_t ownCount = 0;
+  for (std::size_t first = rank * GatherBlockTexels; first < work.size();
+       first += ranks * GatherBlockTexels)
+  {
+    ownCount += std::min(GatherBlockTexels, work.size() - first);
+  }
+  // Per texel with triangles: its value and 1 where gathered, zeros where another rank gathers.
+  std::vector<float> shares(4 * work.size(), 0.0f);
+  std::atomic<std::uint64_t> ownRays{ 0 };
+  const auto gatherOwn = [&]()
+  {
+    // Rounds of work between progress reports: abort is checked between them.
+    const std::size_t rounds =
+      std::max<std::size_t>(1, std::min<std::size_t>(50, ownCount / 256));
+    for (std::size_t round = 0; round < rounds; ++round)
+    {
+      if (!ReportProgress(
+            options.Progress, begin + (end - begin) * static_cast<double>(round) / rounds))
+      {
+        throw AbortedError();
+      }
+      const std::size_t first = ownCount * round / rounds;
+      const std::size_t last = ownCount * (round + 1) / rounds;
+      ParallelFor(first, last, 16,
+        [&](std::size_t b, std::size_t e)
+        {
+          std::uint64_t rays = 0;
+          for (std::size_t o = b; o < e; ++o)
+          {
+            const std::size_t i = ownIndex(o);
+            const Surface& s = surfaces[work[i].first];
+            const int a =
+              static_cast<int>(work[i].second % static_cast<std::uint32_t>(s.TextureWidth));
+            const int bb =
+              static_cast<int>(work[i].second / static_cast<std::uint32_t>(s.TextureWidth));
+            const TexelResult r = gatherer.Gather(
+              work[i].first, buckets[work[i].first], a, bb, s.TexelOffset + work[i].second);
+            rays += r.Rays;
+            if (r.Gathered)
+            {
+              shares[4 * i] = r.Value.x;
+              shares[4 * i + 1] = r.Value.y;
+              shares[4 * i + 2] = r.Value.z;
+              shares[4 * i + 3] = 1.0f;
+            }
+          }
+          ownRays += rays;
+        });
+    }
+    if (!ReportProgress(options.Progress, end))
+    {
+      throw AbortedError();
+    }
+  };
+  if (options.Reduce)
+  {
+    Agree(*options.Reduce, gatherOwn); // an abort on one rank stops every rank before the sum
+  }
+  else
+  {
+    gatherOwn();
+  }
+  report.OwnTexels += ownCount;
+  report.OwnRays += ownRays.load();
+  report.OwnSeconds +=
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::uint64_t passRays = ownRays.load();
+  if (ranks > 1)
+  {
+    // One sum combines the shares: a value plus the other ranks' zeros is that value exactly.
+    options.Reduce->SumInPlace(shares.data(), shares.size());
+    double rays = static_cast<double>(passRays);
+    options.Reduce->SumInPlace(&rays, 1);
+    passRays = static_cast<std::uint64_t>(rays);
+    report.CombinedBytes += shares.size() * sizeof(float) + sizeof(double);
+  }
+  report.Rays += passRays;
+  std::vector<glm::vec3> gathered = field.TotalDiffuse;
+  std::vector<std::uint8_t> done(gathered.size(), 0);
+  report.Texels = 0;
+  report.Filled = 0;
+  for (std::size_t i = 0; i < work.size(); ++i)
+  {
+    if (shares[4 * i + 3] > 0.5f)
+    {
+      const std::size_t texel = surfaces[work[i].first].TexelOffset + work[i].second;
+      gathered[texel] = glm::vec3(shares[4 * i], shares[4 * i + 1], shares[4 * i + 2]);
+      done[texel] = 1;
+      ++report.Texels;
+    }
+  }
+  shares.clear();
+  shares.shrink_to_fit();
+  FillFromNeighbours(surfaces, gathered, done, report);
+  return gathered;
+}
+
+} // namespace
+
+FinalGatherReport FinalGather(LightField& field, const FinalGatherOptions& options)
+{
+  if (!(options.Footprint > 0.0f && options.Footprint <= 1.0f))
+  {
+    throw std::invalid_argument("the final gather's footprint must be in (0, 1] texels");
+  }
+  if (options.IndirectRays <= 0 || options.DirectSamples < 0)
+  {
+    throw std::invalid_argument("the final gather needs a positive number of indirect rays and "
+                                "a non-negative number of emitter samples per texel");
+  }
+  const auto start = std::chrono::steady_clock::now();
+  RestorePropagatedDiffuse(field); // a second gather starts from the propagated totals
+  FinalGatherReport report;
+  const std::vector<Surface>& surfaces = field.Surfaces();
+  std::vector<SurfaceTriangles> buckets(surfaces.size());
+  std::vector<std::pair<std::uint32_t, std::uint32_t>>
+    work; // (surface, local texel) with triangles
+  for (std::uint32_t s = 0; s < surfaces.size(); ++s)
+  {
+    buckets[s] = BucketTriangles(field, surfaces[s]);
+    for (std::size_t t = 0; t < surfaces[s].TexelCount(); ++t)
+    {
+      if (buckets[s].Start[t] != buckets[s].Start[t + 1])
+      {
+        work.emplace_back(s, static_cast<std::uint32_t>(t));
+      }
+    }
+  }
+  // Two passes: the first, with a quarter of the rays, replaces the propagated totals the
+  // second pass's rays read at their hits (FinalGatherOptions::Prepass); progress is shared by
+  // their rays.
+  std::vector<glm::vec3> gathered;
+  if (options.Prepass)
+  {
+    FinalGatherOptions first = options;
+    first.IndirectRays = std::max(1, options.IndirectRays / 4);
+    first.DirectSamples = (options.DirectSamples + 3) / 4;
+    first.Sequence = options.Sequence ^ 0x5bd1e995ull; // its own random numbers
+    const double share = static_cast<double>(first.IndirectRays + first.DirectSamples) /
+      static_cast<double>(
+        first.IndirectRays + first.DirectSamples + options.IndirectRays + options.DirectSamples);
+    const std::vector<glm::vec3> prepass =
+      GatherPass(field, first, field.TotalDiffuse, buckets, work, 0.0, share, report);
+    gathered = GatherPass(field, options, prepass, buckets, work, share, 1.0, report);
+  }
+  else
+  {
+    gathered = GatherPass(field, options, field.TotalDiffuse, buckets, work, 0.0, 1.0, report);
   }
   field.PropagatedDiffuse.swap(field.TotalDiffuse);
   field.TotalDiffuse.swap(gathered);

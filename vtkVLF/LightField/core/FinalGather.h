@@ -18,11 +18,17 @@
 // Visibility then resolves per ray, not per line; the field's own error enters only through the
 // second bounce, averaged over many rays.
 //
+// By default the gather runs twice (FinalGatherOptions::Prepass): the second pass reads the
+// first pass's totals at its rays' hits, so the second bounce is gathered too.
+//
 // A ray that meets a back face first starts inside a solid (the floor under a box) or sees the
 // unlit side of a one-sided surface: it is left out of the texel's mean, as the propagation
 // leaves such lines out of a texel's capacity (LightField::Receiver). Texels none of whose
-// points lie on a triangle in the open (beyond a polygon's edge, under a box) take the mean of
-// their gathered 8-neighbours, so bilinear reads along an edge blend only gathered values.
+// points lie on a triangle in the open (beyond a polygon's edge, under a box) take a value from
+// their gathered neighbours: the mean of the linear extrapolations 2 g1 - g2 along the lines of
+// two gathered texels through them (at least g1 / 2), else (and in later rings) the mean of their
+// gathered 8-neighbours, so bilinear reads along an edge follow the gathered values' slope
+// toward a contact instead of flattening it.
 //
 // The propagated totals are kept in LightField::PropagatedDiffuse: the sent radiance of the
 // lines (SentRadiance: total less unshot) then follows the gathered value, and a resumed
@@ -57,6 +63,12 @@ struct FinalGatherOptions
   int IndirectRays = 1024;
   // Emitter samples (shadow rays) per texel for the direct light.
   int DirectSamples = 64;
+  // Gather twice: a first pass with a quarter of the rays and emitter samples, whose totals the
+  // second pass's indirect rays then read at their hits instead of the propagated ones. The
+  // second bounce is then the gathered one, not the lines' (which are too bright beside small
+  // boxes: their contact shadows are finer than the lines); the first pass's noise averages
+  // out over the second pass's rays. Off: one pass reading the propagated totals.
+  bool Prepass = true;
   // Side of the square around the texel centre the points are spread over, in texels: the
   // textures are read bilinearly between texel centres, so a texel should hold the value at its
   // centre, not the mean over its area (which blurs a contact shadow by a texel); a little

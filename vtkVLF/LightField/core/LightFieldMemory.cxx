@@ -158,10 +158,11 @@ MemoryEstimate EstimateFor(const TriangleScene& scene, const std::vector<Surface
   // The final gather's working memory (FinalGather.cxx), counted as if every texel had
   // triangles: the shares summed over the ranks (value and flag, 4 floats), the working copy of
   // the totals (which then stays as the gathered totals, the propagated ones kept beside them:
-  // AllocatedBytes counts both), the per-texel triangle lists' starts and about one entry, and
+  // AllocatedBytes counts both), the first pass's totals the second pass reads
+  // (FinalGatherOptions::Prepass), the per-texel triangle lists' starts and about one entry, and
   // two flag bytes.
-  e.GatherBytes = e.Texels *
-    (4 * sizeof(float) + sizeof(glm::vec3) + 2 * sizeof(std::uint32_t) + 2 * sizeof(std::uint8_t));
+  e.GatherBytes = e.Texels * (4 * sizeof(float) + 2 * sizeof(glm::vec3) +
+                               2 * sizeof(std::uint32_t) + 2 * sizeof(std::uint8_t));
   // total + unshot + capacity (+ the propagated totals a gathered field keeps), and the larger
   // of one receive buffer per worker block during propagation and the final gather's working
   // memory (the two never overlap).
