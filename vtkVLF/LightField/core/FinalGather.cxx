@@ -647,7 +647,7 @@ std::vector<glm::vec3> GatherPass(const LightField& field, const FinalGatherOpti
   {
     gatherOwn();
   }
-  report.OwnTexels += ownCount;
+  report.OwnTexels = ownCount; // the same in each pass
   report.OwnRays += ownRays.load();
   report.OwnSeconds +=
     std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -93,8 +93,9 @@ struct FinalGatherReport
   std::size_t Filled = 0;   // texels filled from gathered neighbours
   std::uint64_t Rays = 0;   // rays cast (indirect and shadow), by every rank
   double Seconds = 0.0;
-  // This rank's share (all of them in one process): texels with triangles it gathered, the rays
-  // it cast, and the seconds it spent gathering them (before the combination).
+  // This rank's share (all of them in one process): texels with triangles it gathered (in each
+  // pass), the rays it cast and the seconds it spent gathering them (before the combinations),
+  // over both passes.
   std::size_t OwnTexels = 0;
   std::uint64_t OwnRays = 0;
   double OwnSeconds = 0.0;
