@@ -11,6 +11,7 @@
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkLight.h"
+#include "vtkLightFieldReliefSurface.h"
 #include "vtkMultiProcessController.h"
 #include "vtkObjectFactory.h"
 #include "vtkPVLODActor.h"
@@ -124,27 +125,8 @@ void vtkReliefSurfaceRepresentation::AddPlaneTextureCoordinates()
     append->Update();
     local->ShallowCopy(append->GetOutput());
   }
-  vtkSmartPointer<vtkPolyData> whole = local.Get();
-  if (parallel)
-  {
-    std::vector<vtkSmartPointer<vtkDataObject>> pieces;
-    controller->AllGather(local, pieces);
-    vtkNew<vtkAppendPolyData> all;
-    for (const auto& piece : pieces)
-    {
-      auto* poly = vtkPolyData::SafeDownCast(piece);
-      if (poly && poly->GetNumberOfPoints() > 0)
-      {
-        all->AddInputData(poly);
-      }
-    }
-    whole = vtkSmartPointer<vtkPolyData>::New();
-    if (all->GetNumberOfInputConnections(0) > 0)
-    {
-      all->Update();
-      whole->ShallowCopy(all->GetOutput());
-    }
-  }
+  vtkSmartPointer<vtkPolyData> whole =
+    vtkLightFieldReliefSurface::GatherWholeSurface(local, parallel ? controller : nullptr);
   mesolight::TriangleMesh mesh;
   mesh.Positions.resize(static_cast<std::size_t>(whole->GetNumberOfPoints()));
   for (vtkIdType i = 0; i < whole->GetNumberOfPoints(); ++i)

@@ -372,6 +372,34 @@ int vtkLightFieldReliefSurface::RequestData(
 }
 
 //------------------------------------------------------------------------------
+vtkSmartPointer<vtkPolyData> vtkLightFieldReliefSurface::GatherWholeSurface(
+  vtkPolyData* local, vtkMultiProcessController* controller)
+{
+  if (!controller || controller->GetNumberOfProcesses() < 2)
+  {
+    return local;
+  }
+  std::vector<vtkSmartPointer<vtkDataObject>> pieces;
+  controller->AllGather(local, pieces);
+  vtkNew<vtkAppendPolyData> append;
+  for (const auto& piece : pieces)
+  {
+    auto* poly = vtkPolyData::SafeDownCast(piece);
+    if (poly && poly->GetNumberOfPolys() > 0)
+    {
+      append->AddInputData(poly);
+    }
+  }
+  auto whole = vtkSmartPointer<vtkPolyData>::New();
+  if (append->GetNumberOfInputConnections(0) > 0)
+  {
+    append->Update();
+    whole->ShallowCopy(append->GetOutput());
+  }
+  return whole;
+}
+
+//------------------------------------------------------------------------------
 int vtkLightFieldReliefSurface::RequestSurfaceData(
   vtkPolyData* input, vtkPolyData* output, vtkImageData* probesOutput)
 {
@@ -394,27 +422,7 @@ int vtkLightFieldReliefSurface::RequestSurfaceData(
   {
     local->ShallowCopy(input);
   }
-  vtkSmartPointer<vtkPolyData> whole = local.Get();
-  if (ranks > 1)
-  {
-    std::vector<vtkSmartPointer<vtkDataObject>> pieces;
-    controller->AllGather(local, pieces);
-    vtkNew<vtkAppendPolyData> append;
-    for (const auto& piece : pieces)
-    {
-      auto* poly = vtkPolyData::SafeDownCast(piece);
-      if (poly && poly->GetNumberOfPolys() > 0)
-      {
-        append->AddInputData(poly);
-      }
-    }
-    whole = vtkSmartPointer<vtkPolyData>::New();
-    if (append->GetNumberOfInputConnections(0) > 0)
-    {
-      append->Update();
-      whole->ShallowCopy(append->GetOutput());
-    }
-  }
+  vtkSmartPointer<vtkPolyData> whole = GatherWholeSurface(local, controller);
 
   // Who computes: the lowest rank holding the whole field, else (a field whose directions are
   // split) every rank its share, summed.

@@ -51,6 +51,7 @@
 #include "MesolightLightFieldActorModule.h" // For export macro
 #include "vtkNew.h"                         // For vtkNew
 #include "vtkPolyDataAlgorithm.h"
+#include "vtkSmartPointer.h" // For vtkSmartPointer
 
 #include <string> // For std::string
 
@@ -59,6 +60,7 @@ class vtkImageData;
 class vtkLight;
 class vtkLightCollection;
 class vtkLightFieldActor;
+class vtkMultiProcessController;
 class vtkPolyData;
 class vtkVirtualLightField;
 
@@ -111,6 +113,14 @@ public:
    * (e.g. for a relief-mapped movable object). False when the actor shows no field.
    */
   static bool GetEmitterLights(vtkLightFieldActor* actor, vtkLightCollection* lights);
+
+  /**
+   * Every rank's `local` piece appended into one polydata on every rank (a collective: every
+   * rank of `controller` must call it); `local` itself without a controller or with one rank.
+   * Pieces without polygons are left out. Used where one texture frame must fit the whole surface.
+   */
+  static vtkSmartPointer<vtkPolyData> GatherWholeSurface(
+    vtkPolyData* local, vtkMultiProcessController* controller);
 
   /** The surface's diffuse reflectance (Kd) after an update. */
   vtkGetVector3Macro(SurfaceDiffuse, double);
