@@ -52,6 +52,14 @@ vtkLightCollection* vtkReliefProperty::GetLights()
 //------------------------------------------------------------------------------
 void vtkReliefProperty::SetDepthLimitPlane(const double origin[3], const double normal[3])
 {
+  const bool finite = std::all_of(origin, origin + 3, [](double x) { return std::isfinite(x); }) &&
+    std::all_of(normal, normal + 3, [](double x) { return std::isfinite(x); });
+  if (!finite || vtkMath::Norm(normal) <= 0.0)
+  {
+    vtkErrorMacro(<< "SetDepthLimitPlane needs a finite point and a non-zero finite normal; the "
+                     "depth limit is left as it was.");
+    return;
+  }
   if (this->HasDepthLimitPlane && std::equal(origin, origin + 3, this->DepthLimitOrigin) &&
     std::equal(normal, normal + 3, this->DepthLimitNormal))
   {

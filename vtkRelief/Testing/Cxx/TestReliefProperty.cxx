@@ -63,6 +63,29 @@ TEST(ReliefProperty, UnknownNamesAreRefused)
   EXPECT_STREQ(vtkReliefProperty::GetMethodName(vtkReliefProperty::NumberOfMethods), "unknown");
 }
 
+// A depth limit plane without a direction (or with NaN/Inf) is an error; the plane set before
+// stays.
+TEST(ReliefProperty, DepthLimitPlaneNeedsANormal)
+{
+  vtkNew<vtkReliefProperty> property;
+  vtkNew<mesolight_test::MessageCapture> messages;
+  messages->Watch(property);
+  const double origin[3] = { 0.0, 0.0, 1.0 };
+  const double up[3] = { 0.0, 0.0, 1.0 };
+  const double zero[3] = { 0.0, 0.0, 0.0 };
+  const double nan[3] = { std::nan(""), 0.0, 1.0 };
+  property->SetDepthLimitPlane(origin, zero);
+  EXPECT_TRUE(messages->HasError("non-zero finite normal")) << messages->AllErrors();
+  EXPECT_FALSE(property->GetHasDepthLimitPlane());
+  property->SetDepthLimitPlane(origin, up);
+  EXPECT_TRUE(property->GetHasDepthLimitPlane());
+  property->SetDepthLimitPlane(nan, up);
+  property->SetDepthLimitPlane(origin, nan);
+  EXPECT_TRUE(property->GetHasDepthLimitPlane());
+  EXPECT_EQ(property->GetDepthLimitNormal()[2], 1.0) << "the earlier plane is kept";
+  EXPECT_EQ(property->GetDepthLimitOrigin()[0], 0.0);
+}
+
 TEST(ReliefProperty, RequiredConeMaps)
 {
   EXPECT_EQ(vtkReliefProperty::GetRequiredConeMap(vtkReliefProperty::RelaxedConeBinary),
