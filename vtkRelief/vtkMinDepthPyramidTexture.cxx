@@ -81,6 +81,7 @@ bool vtkMinDepthPyramidTexture::Upload(
     return false;
   }
   this->NumberOfLevels = static_cast<int>(levels.size());
+  this->MinimumDepth = depth.empty() ? 0.0 : *std::min_element(depth.begin(), depth.end());
   this->LevelSizes.clear();
   for (const auto& size : sizes)
   {
@@ -167,6 +168,9 @@ bool vtkMinDepthPyramidTexture::UploadCompact(
     return false;
   }
   this->NumberOfLevels = static_cast<int>(levels.size());
+  this->MinimumDepth = depth16.empty()
+    ? 0.0
+    : static_cast<float>(*std::min_element(depth16.begin(), depth16.end())) / 65535.0f;
   this->LevelSizes.clear();
   for (const auto& size : levelSizes)
   {
@@ -239,6 +243,7 @@ void vtkMinDepthPyramidTexture::ReleaseGraphicsResources(vtkWindow* win)
   }
   this->NumberOfLevels = 0;
   this->UploadedBytes = 0;
+  this->MinimumDepth = 0.0;
 }
 
 //------------------------------------------------------------------------------
@@ -247,4 +252,5 @@ void vtkMinDepthPyramidTexture::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "NumberOfLevels: " << this->NumberOfLevels << "\n";
   os << indent << "UploadedBytes: " << this->UploadedBytes << "\n";
+  os << indent << "MinimumDepth: " << this->MinimumDepth << "\n";
 }

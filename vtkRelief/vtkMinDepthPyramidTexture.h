@@ -65,6 +65,12 @@ public:
   /** Number of levels uploaded; 0 until Upload succeeds. */
   vtkGetMacro(NumberOfLevels, int);
 
+  /**
+   * The smallest depth of the whole map (the pyramid's apex) as the texture holds it; 0 until
+   * Upload succeeds. A ray above it meets nothing, so the traversal starts where it reaches it.
+   */
+  vtkGetMacro(MinimumDepth, double);
+
   /** Cells per level, (width, height) pairs from level 0 on. */
   const std::vector<int>& GetLevelSizes() const { return this->LevelSizes; }
 
@@ -88,6 +94,7 @@ protected:
   vtkSmartPointer<vtkTextureObject> TextureObject;
   int NumberOfLevels = 0;
   vtkIdType UploadedBytes = 0;
+  double MinimumDepth = 0.0;
   std::vector<int> LevelSizes;
 
 private:

@@ -274,6 +274,7 @@ void vtkReliefShading::SetShaderParameters(
     const std::vector<int>& sizes = pyramid->GetLevelSizes();
     program->SetUniformi("mlMinDepthPyramid", pyramid->GetTextureObject()->GetTextureUnit());
     program->SetUniformi("mlPyramidLevels", pyramid->GetNumberOfLevels());
+    program->SetUniformf("mlPyramidTop", static_cast<float>(pyramid->GetMinimumDepth()));
     program->SetUniform1iv("mlPyramidSizes", static_cast<int>(sizes.size()), sizes.data());
   }
 

@@ -11,6 +11,7 @@
 // [k-1, k].
 
 uniform int mlPyramidLevels;
+uniform float mlPyramidTop; // the map's smallest depth (vtkMinDepthPyramidTexture::GetMinimumDepth)
 // Cells per level as (w, h) pairs (unused: the sizes are max(cells0 >> L, 1)).
 uniform int mlPyramidSizes[32];
 
@@ -95,7 +96,6 @@ float mlTraceMaxMipmap(vec3 origin, vec3 span, int maxIterations, float tEnd)
   // Start low: a view ray enters at depth 0, where the coarse cells' minimum is (nearly) 0 on
   // real maps, so starting at the top only descends again (docs/relief-methods.md).
   int level = min(2, top);
-  float t = 0.0;
   // The ray in cell space (x = u W - 0.5; level-0 cell k spans [k-1, k]).
   vec2 x0 = origin.xy * mlTextureSize - 0.5;
   vec2 dx = span.xy * mlTextureSize;
@@ -103,6 +103,14 @@ float mlTraceMaxMipmap(vec3 origin, vec3 span, int maxIterations, float tEnd)
   vec2 invDx = vec2(moving.x ? 1.0 / dx.x : 0.0, moving.y ? 1.0 / dx.y : 0.0);
   ivec2 dir = ivec2(greaterThan(dx, vec2(0.0))); // 1 towards higher cells, 0 towards lower
   float invSpanZ = span.z > 0.0 ? 1.0 / span.z : 0.0;
+  // The ray enters the map's depth slab at the apex's depth (the whole map's minimum): above it
+  // it meets nothing, so the traversal starts there (a map whose highest point lies below the
+  // surface, as real height maps often do, would otherwise spend its first iterations there).
+  float t = clamp((mlPyramidTop - 1e-6 - origin.z) * invSpanZ, 0.0, 1.0);
+  if (t >= tEnd)
+  {
+    return 1.0;
+  }
   // Past a cell boundary by a thousandth of a cell, so float rounding cannot keep the ray in it.
   float nudge = min(1e-3 / max(max(abs(dx.x), abs(dx.y)), 1e-6), 1e-5);
   ivec2 hitCell = ivec2(-1);

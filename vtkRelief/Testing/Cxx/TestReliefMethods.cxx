@@ -169,6 +169,57 @@ TEST(ReliefMethodHits, ExactToATexelOnRealHeightMaps)
   }
 }
 
+// Real height maps whose highest point lies below the surface (brick_wall01_b: depth 0.33 at
+// most, windowstile_z: 0.58): maximum-mipmap tracing starts where the view ray reaches that
+// depth (the pyramid's apex, vtkMinDepthPyramidTexture::GetMinimumDepth), so it must stay exact
+// to a texel at 85 degrees (a start below the map's top would step over the brick tops, the
+// first hits) and take fewer samples than the traversal from the surface did (measured before
+// the clip: 25.3 and 19.0 per pixel, now 20.4 and 13.0; the bound is 0.9 x before). Relief
+// 10 + 8 fails the accuracy (negative case).
+TEST(ReliefMethodHits, MaxMipmapStartsAtTheMapsTop)
+{
+  const std::string data = "/usr/share/games/redeclipse/data/";
+  for (const auto& [map, samplesBefore] : { std::make_pair("dziq/brick_wall01_b.jpg", 25.3),
+         std::make_pair("jojo/windowstile_z.png", 19.0) })
+  {
+    const std::string file = data + map;
+    if (!std::ifstream(file).good())
+    {
+      GTEST_SKIP() << file << " is absent (redeclipse-data)";
+    }
+    ReliefSceneOptions o;
+    o.Pattern = "file";
+    o.Width = o.Height = 320;
+    o.DepthScale = 0.04;
+    o.DepthFile = file;
+    o.DepthFileIsHeight = true;
+    o.ViewAngle = 85.0;
+    o.ViewDistance = 2.2;
+    o.Method = "max-mipmap";
+    o.LinearSteps = 64;
+    o.RefinementSteps = 0;
+    o.SelfShadowing = false;
+    std::string error;
+    ReliefScene scene;
+    ASSERT_TRUE(BuildReliefScene(o, scene, error)) << error;
+    auto window = MakeOffscreenWindow(o, scene.Renderer);
+    vtkReliefProperty* settings = scene.Mapper->GetReliefProperty();
+    settings->SetOutput(vtkReliefProperty::SampleCountOutput);
+    const double samples = MeanSampleCount(CaptureFrame(window));
+    std::cout << "[" << map << " max-mipmap 64 @85] " << samples << " samples per pixel\n";
+    EXPECT_LT(samples, 0.9 * samplesBefore) << map;
+    const HitComparison exact =
+      MeasureHits(MethodCase{ "max-mipmap", 64, 0, 85.0, -1.0 }, "file", 256, file.c_str());
+    EXPECT_GT(exact.CoveredBoth, 3000) << map;
+    EXPECT_LE(exact.MeanTexels, 0.25) << map;
+    EXPECT_LE(exact.P99Texels, 1.0) << map;
+    const HitComparison relief =
+      MeasureHits(MethodCase{ "relief", 10, 8, 85.0, -1.0 }, "file", 256, file.c_str());
+    EXPECT_TRUE(relief.MeanTexels > 0.25 || relief.P99Texels > 1.0)
+      << map << ", relief 10+8: mean " << relief.MeanTexels << ", p99 " << relief.P99Texels;
+  }
+}
+
 // Maximum-mipmap tracing where the pyramid's levels have odd sizes, so a coarse cell's last
 // child also covers the leftover cell (100^2 texels: 101 cells, levels 101, 50, 25, 12, 6, 3, 1;
 // 255^2: 256, 128, ..): exact to a texel at 85 degrees on the rough stone; relief 10 + 8 is not
