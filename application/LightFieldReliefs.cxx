@@ -11,6 +11,7 @@
 #include "WalkthroughTracer.h" // TracedReliefs
 #include "vtkLightFieldReliefMapper.h"
 #include "vtkLightFieldReliefSurface.h"
+#include "vtkLightFieldReliefSurfaceCore.h"
 #include "vtkReliefMapper.h"
 #include "vtkReliefProperty.h"
 
@@ -42,6 +43,7 @@
 #include <algorithm>
 #include <iostream>
 #include <memory>
+#include <utility>
 
 namespace mesolight
 {
@@ -174,17 +176,21 @@ void OnActorModified(vtkObject* caller, unsigned long, void* clientData, void*)
 // The reliefs as the walkthrough's mirrors show them: a reflected ray that reaches a relief's
 // wall is shaded by the CPU reference (`vlf render --relief`: SetUpFieldReliefs, ReliefRadiance,
 // the exact height-field intersection and the same probes and emitters), so the mirror shows the
-// relief the relief mapper draws where it is seen directly.
+// relief the relief mapper draws where it is seen directly. Its probes are the relief surfaces'
+// (`probes`, per item: vtkLightFieldReliefSurface computed them, at the CPU reference's default
+// count), not computed again.
 class MirroredReliefs : public vlf::TracedReliefs
 {
 public:
-  MirroredReliefs(const vlf::LightField& field, const std::vector<std::string>& items,
-    double depthScale)
-    : Embree(field.Scene())
+  MirroredReliefs(const vlf::LightField& field, std::shared_ptr<const EmbreeScene> embree,
+    const std::vector<std::string>& items, double depthScale,
+    std::vector<std::vector<SH9>> probes)
+    : Embree(std::move(embree))
   {
     FieldReliefOptions options;
     options.DepthScale = depthScale;
-    this->Reliefs = SetUpFieldReliefs(field, this->Embree, items, options);
+    options.KnownProbes = std::move(probes);
+    this->Reliefs = SetUpFieldReliefs(field, *this->Embree, items, options);
     this->ReliefOf = ReliefOfTriangle(field, this->Reliefs);
   }
   bool Covers(std::size_t triangle) const override
@@ -200,7 +206,7 @@ public:
   }
 
 private:
-  EmbreeScene Embree; // the scene's occlusion of the emitters (the reliefs' lighting)
+  std::shared_ptr<const EmbreeScene> Embree; // the scene's occlusion of the emitters
   std::vector<FieldRelief> Reliefs;
   std::vector<int> ReliefOf; // per scene triangle
 };
@@ -290,10 +296,17 @@ int SetUpWalkthroughReliefs(const CommandLine& cl, const char* command, vtkLight
 
   vtkRenderer* renderer = ReliefLayer(actor, walkthrough, window, reliefs);
   const bool occlusion = !cl.Has("--relief-no-occlusion");
-  std::unique_ptr<EmbreeScene> embree;
-  if (occlusion)
+  // Mirrors show the reliefs (not the flat walls the tracer keeps) where their rays land.
+  bool mirrors = false;
+  for (std::uint32_t surface = 0; surface < field->Surfaces().size(); ++surface)
   {
-    embree = std::make_unique<EmbreeScene>(field->Scene());
+    const glm::vec3 ks = field->MaterialOf(surface).Specular;
+    mirrors = mirrors || ks.x > 0.0f || ks.y > 0.0f || ks.z > 0.0f;
+  }
+  std::shared_ptr<const EmbreeScene> embree;
+  if (occlusion || mirrors)
+  {
+    embree = std::make_shared<const EmbreeScene>(field->Scene());
   }
 
   for (std::size_t r = 0; r < names.size(); ++r)
@@ -363,19 +376,18 @@ int SetUpWalkthroughReliefs(const CommandLine& cl, const char* command, vtkLight
     reliefs.Surfaces.emplace_back(surface);
     reliefs.Actors.emplace_back(relief);
   }
-  // Mirrors show the reliefs (not the flat walls the tracer keeps) where their rays land.
-  bool mirrors = false;
-  for (std::uint32_t surface = 0; surface < field->Surfaces().size(); ++surface)
-  {
-    const glm::vec3 ks = field->MaterialOf(surface).Specular;
-    mirrors = mirrors || ks.x > 0.0f || ks.y > 0.0f || ks.z > 0.0f;
-  }
   if (mirrors)
   {
+    std::vector<std::vector<SH9>> probes;
+    for (const auto& surface : reliefs.Surfaces)
+    {
+      const std::vector<SH9>* computed = vtkLightFieldReliefSurfaceCore::GetProbes(surface);
+      probes.push_back(computed ? *computed : std::vector<SH9>());
+    }
     try
     {
-      vtkLightFieldActorCore::SetTracedReliefs(
-        actor, std::make_shared<MirroredReliefs>(*field, items, depthScale));
+      vtkLightFieldActorCore::SetTracedReliefs(actor,
+        std::make_shared<MirroredReliefs>(*field, embree, items, depthScale, std::move(probes)));
     }
     catch (const std::exception& e)
     {

@@ -48,6 +48,7 @@ struct ObjectRow
 {
   std::size_t Directions = 0;
   int Subdivision = 0;
+  std::string Shadows;    // the shadow mode
   std::size_t Points = 0; // the gathered (subdivided) object's points
   int Frames = 0;
   double FrameMs = 0.0;    // wall time of Render() including the GPU
@@ -95,7 +96,10 @@ int Bench(const std::vector<std::string>& args)
     "warm-up frames)",
     "0");
   cl.AddValue("--mode", "MODE", "walkthrough mode: progressive or coherent", "coherent");
-  cl.AddValue("--shadows", "MODE", "none, black, blend, field, pcf or soft", "field");
+  cl.AddValue("--shadows", "MODE,MODE,..",
+    "none, black, blend, field, pcf or soft; several: rows of each in turn (the draw's share of "
+    "each shadow lookup in one run)",
+    "field");
   cl.AddValue("--rays", "N", "rays per subfield side", "32");
   cl.AddValue("--iterations", "K", "propagation iterations", "6");
   cl.AddValue("--csv", "FILE", "write the table as CSV");
@@ -128,11 +132,14 @@ int Bench(const std::vector<std::string>& args)
   {
     return cl.UsageError("--mode '" + cl.Get("--mode") + "' is not progressive or coherent");
   }
-  const int shadows = vtkLightFieldActor::GetShadowModeFromString(cl.Get("--shadows"));
-  if (shadows < 0)
+  const std::vector<std::string> shadowNames = cl.GetStringList("--shadows");
+  for (const std::string& name : shadowNames)
   {
-    return cl.UsageError(
-      "--shadows '" + cl.Get("--shadows") + "' is not none, black, blend, field, pcf or soft");
+    if (vtkLightFieldActor::GetShadowModeFromString(name) < 0)
+    {
+      return cl.UsageError(
+        "--shadows '" + name + "' is not none, black, blend, field, pcf or soft");
+    }
   }
   const std::string directionSet = cl.Get("--gather-directions");
   const int gatherDirections = vtkLightFieldActor::GetGatherDirectionsFromString(directionSet);
@@ -187,7 +194,6 @@ int Bench(const std::vector<std::string>& args)
     scene->AddObserver(vtkCommand::ErrorEvent, errors);
     vtkLightFieldActorCore::SetLightField(scene, field.get());
     scene->SetRenderMode(mode);
-    scene->SetShadowMode(shadows);
     renderer->AddActor(scene);
     vtkNew<vtkActor> object;
     vtkNew<vtkLightFieldObjectMapper> shading;
@@ -204,46 +210,51 @@ int Bench(const std::vector<std::string>& args)
     for (const int level : subdivisions)
     {
       shading->SetSubdivision(level);
-      ObjectRow row;
-      row.Directions = field->Directions().Size();
-      row.Subdivision = level;
-      for (int f = -2; f < frames; ++f)
+      for (const std::string& shadowName : shadowNames)
       {
-        Place(object, f + 2, frames + 2);
-        renderer->ResetCameraClippingRange();
-        const Clock::time_point start = Clock::now();
-        window->Render();
-        WaitForGpu(window);
-        const double ms = MillisecondsSince(start);
-        if (f < 0)
+        scene->SetShadowMode(vtkLightFieldActor::GetShadowModeFromString(shadowName));
+        ObjectRow row;
+        row.Directions = field->Directions().Size();
+        row.Subdivision = level;
+        row.Shadows = shadowName;
+        for (int f = -2; f < frames; ++f)
         {
-          continue;
+          Place(object, f + 2, frames + 2);
+          renderer->ResetCameraClippingRange();
+          const Clock::time_point start = Clock::now();
+          window->Render();
+          WaitForGpu(window);
+          const double ms = MillisecondsSince(start);
+          if (f < 0)
+          {
+            continue;
+          }
+          const vlf::ShadedObject* shaded = vtkLightFieldActorCore::GetShadedObject(scene);
+          if (!shaded)
+          {
+            std::cerr << command << ": the object was not shaded: "
+                      << (errors->Errors.empty() ? "no reason reported" : errors->Errors.back())
+                      << "\n";
+            return 1;
+          }
+          row.Points = shaded->Mesh.Positions.size();
+          row.GatheredFraction +=
+            static_cast<double>(shaded->GatheredPoints) / std::max<std::size_t>(1, row.Points);
+          row.FrameMs += ms;
+          row.ObjectMs += 1000.0 * scene->GetLastObjectSeconds();
+          row.GatherMs += 1000.0 * scene->GetLastGatherSeconds();
+          row.ShadowMs += 1000.0 * scene->GetLastShadowSeconds();
+          row.SpecularMs += 1000.0 * scene->GetLastSpecularSeconds();
+          row.UploadMs += 1000.0 * scene->GetLastUploadSeconds();
+          ++row.Frames;
         }
-        const vlf::ShadedObject* shaded = vtkLightFieldActorCore::GetShadedObject(scene);
-        if (!shaded)
+        for (double* v : { &row.FrameMs, &row.ObjectMs, &row.GatherMs, &row.ShadowMs,
+               &row.SpecularMs, &row.UploadMs, &row.GatheredFraction })
         {
-          std::cerr << command << ": the object was not shaded: "
-                    << (errors->Errors.empty() ? "no reason reported" : errors->Errors.back())
-                    << "\n";
-          return 1;
+          *v /= row.Frames;
         }
-        row.Points = shaded->Mesh.Positions.size();
-        row.GatheredFraction +=
-          static_cast<double>(shaded->GatheredPoints) / std::max<std::size_t>(1, row.Points);
-        row.FrameMs += ms;
-        row.ObjectMs += 1000.0 * scene->GetLastObjectSeconds();
-        row.GatherMs += 1000.0 * scene->GetLastGatherSeconds();
-        row.ShadowMs += 1000.0 * scene->GetLastShadowSeconds();
-        row.SpecularMs += 1000.0 * scene->GetLastSpecularSeconds();
-        row.UploadMs += 1000.0 * scene->GetLastUploadSeconds();
-        ++row.Frames;
+        rows.push_back(row);
       }
-      for (double* v : { &row.FrameMs, &row.ObjectMs, &row.GatherMs, &row.ShadowMs, &row.SpecularMs,
-             &row.UploadMs, &row.GatheredFraction })
-      {
-        *v /= row.Frames;
-      }
-      rows.push_back(row);
     }
   }
 
@@ -252,7 +263,7 @@ int Bench(const std::vector<std::string>& args)
             << cl.Get("--shadows") << ", gather directions " << directionSet
             << ", the object moving every frame; ms per frame\n"
             << "directions  subdiv   points  frame ms     fps  object ms  (gather ms)  shadow ms  "
-               "specular ms  upload ms  draw+other ms  re-gathered\n";
+               "specular ms  upload ms  draw+other ms  re-gathered  shadows\n";
   for (const ObjectRow& r : rows)
   {
     std::cout << std::setw(10) << r.Directions << std::setw(8) << r.Subdivision << std::setw(9)
@@ -260,7 +271,7 @@ int Bench(const std::vector<std::string>& args)
               << std::setw(11) << r.ObjectMs << std::setw(13) << r.GatherMs << std::setw(11)
               << r.ShadowMs << std::setw(13) << r.SpecularMs << std::setw(11) << r.UploadMs
               << std::setw(15) << r.OtherMs() << std::setw(12) << 100.0 * r.GatheredFraction
-              << "%\n";
+              << "%  " << r.Shadows << "\n";
   }
   std::cout << "goal: >= 15 frames/s with a moving ~1000-point object gathered at "
                "2049 directions, coherent mode\n";
@@ -275,7 +286,7 @@ int Bench(const std::vector<std::string>& args)
           << r.FrameMs << "," << 1000.0 / r.FrameMs << "," << r.ObjectMs << "," << r.GatherMs << ","
           << r.ShadowMs << "," << r.SpecularMs << "," << r.UploadMs << "," << r.OtherMs() << ","
           << r.GatheredFraction << "," << width << "," << height << "," << cl.Get("--mode") << ","
-          << cl.Get("--shadows") << "\n";
+          << r.Shadows << "\n";
     }
     if (!csv)
     {

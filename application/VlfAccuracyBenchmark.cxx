@@ -24,6 +24,7 @@
 #include "Lookup.h"
 #include "MathConstants.h"
 #include "MemoryBudget.h"
+#include "ObjScene.h"
 #include "OrthonormalBasis.h"
 #include "ParallelFor.h"
 #include "PatchComparison.h"
@@ -436,6 +437,44 @@ bool FileExists(const std::string& path)
   struct stat st;
   return stat(path.c_str(), &st) == 0;
 }
+
+// --write-obj: each scene as DIR/NAME.obj + NAME.mtl (the project's OBJ writer), for the commands
+// that read OBJ scenes (`vlf propagate`, `trace --scene`), with the benchmark's camera in a
+// comment; prints what a reader must find again: triangles, area, emitted power (a Lambertian
+// emitter of radiance Ke sends pi Ke per unit area).
+int WriteSceneObjs(const std::vector<std::string>& names, const std::string& directory)
+{
+  mkdir(directory.c_str(), 0755);
+  for (const std::string& name : names)
+  {
+    const AccuracyScene s = MakeAccuracyScene(name);
+    const PinholeCamera& c = s.Camera;
+    char camera[256];
+    std::snprintf(camera, sizeof(camera), "--camera %g,%g,%g,%g,%g,%g,%g,%g,%g --fov %g",
+      c.Position.x, c.Position.y, c.Position.z, c.FocalPoint.x, c.FocalPoint.y, c.FocalPoint.z,
+      c.ViewUp.x, c.ViewUp.y, c.ViewUp.z, c.ViewAngleDegrees);
+    const std::string path = directory + "/" + name + ".obj";
+    WriteObjScene(s.Scene, path, false,
+      "mesolight bench vlf-accuracy scene '" + name + "': " + s.Description +
+        "\nthe benchmark's camera: " + camera);
+    double area = 0.0;
+    glm::dvec3 power(0.0);
+    std::size_t emitting = 0;
+    for (std::size_t t = 0; t < s.Scene.TriangleCount(); ++t)
+    {
+      const double a = s.Scene.Area(t);
+      const glm::vec3 ke = s.Scene.MaterialOf(t).Emission;
+      area += a;
+      power += Pi<double> * a * glm::dvec3(ke);
+      emitting += ke.x > 0.0f || ke.y > 0.0f || ke.z > 0.0f ? 1 : 0;
+    }
+    std::printf("wrote %s and %s.mtl: %zu triangles (%zu emitting), area %.9g, emitted power "
+                "%.9g,%.9g,%.9g (scene units; camera %s)\n",
+      path.c_str(), name.c_str(), s.Scene.TriangleCount(), emitting, area, power.x, power.y,
+      power.z, camera);
+  }
+  return 0;
+}
 } // namespace
 
 int RunVlfAccuracyBenchmark(const std::vector<std::string>& args)
@@ -471,6 +510,10 @@ int RunVlfAccuracyBenchmark(const std::vector<std::string>& args)
   cl.AddValue("--gather-rays", "LIST",
     "the final gather's indirect rays per texel (several: one gather row each)", "1024");
   cl.AddValue("--gather-direct", "N", "the final gather's emitter samples per texel", "64");
+  cl.AddValue("--write-obj", "DIR",
+    "instead of benchmarking: write each scene of --scenes as DIR/NAME.obj + NAME.mtl (read by "
+    "vlf propagate and trace --scene; existing files are kept) and print its triangles, area and "
+    "emitted power");
   std::string error;
   int exitCode = 0;
   if (!cl.ParseArguments(args, exitCode))
@@ -513,6 +556,33 @@ int RunVlfAccuracyBenchmark(const std::vector<std::string>& args)
   if (!problem.empty())
   {
     return cl.UsageError(problem);
+  }
+  if (cl.Has("--write-obj"))
+  {
+    const std::vector<std::string> known = AccuracySceneNames();
+    for (const std::string& name : cl.GetStringList("--scenes"))
+    {
+      if (std::find(known.begin(), known.end(), name) == known.end())
+      {
+        try
+        {
+          MakeAccuracyScene(name); // its message names the scenes
+        }
+        catch (const std::exception& e)
+        {
+          return cl.UsageError(e.what());
+        }
+      }
+    }
+    try
+    {
+      return WriteSceneObjs(cl.GetStringList("--scenes"), cl.Get("--write-obj"));
+    }
+    catch (const std::exception& e)
+    {
+      std::cerr << "mesolight bench vlf-accuracy: " << e.what() << "\n";
+      return 1;
+    }
   }
   const std::uint64_t budget = static_cast<std::uint64_t>(budgetGib * 1073741824.0);
   std::vector<std::string> settingsList = cl.GetStringList("--settings");

@@ -180,6 +180,16 @@ std::vector<FieldRelief> SetUpFieldReliefs(const vlf::LightField& field, const E
   const std::vector<std::string>& items, const FieldReliefOptions& options)
 {
   const TriangleScene& scene = field.Scene();
+  const int n = std::max(1, options.Probes);
+  const std::size_t probeCount = static_cast<std::size_t>(n) * n;
+  if (!options.KnownProbes.empty() &&
+    (options.KnownProbes.size() != items.size() ||
+      std::any_of(options.KnownProbes.begin(), options.KnownProbes.end(),
+        [probeCount](const std::vector<SH9>& probes) { return probes.size() != probeCount; })))
+  {
+    throw std::invalid_argument("SetUpFieldReliefs: KnownProbes must hold Probes x Probes "
+                                "probes for every item");
+  }
   std::vector<FieldRelief> reliefs;
   for (const std::string& item : items)
   {
@@ -220,10 +230,11 @@ std::vector<FieldRelief> SetUpFieldReliefs(const vlf::LightField& field, const E
     // Indirect: SH9 probes just in front of the macro surface (vlf::ReliefSurfaceProbes, the
     // walkthrough's relief mapper takes the same), the emitters' own radiance left out (the
     // emitter samples below carry it).
-    const int n = std::max(1, options.Probes);
     ReliefLighting& lighting = relief.Lighting;
     lighting.ProbesU = lighting.ProbesV = n;
-    lighting.Probes = vlf::ReliefSurfaceProbes(field, surface, n, n);
+    lighting.Probes = options.KnownProbes.empty()
+      ? vlf::ReliefSurfaceProbes(field, surface, n, n)
+      : options.KnownProbes[reliefs.size()];
     // The light the relief reflects onto itself (ReliefLighting::Albedo).
     relief.Lighting.Albedo = glm::dvec3(material.Diffuse);
     // Direct: the field's emitters, the scene's occlusion by Embree.

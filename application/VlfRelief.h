@@ -51,9 +51,13 @@ struct FieldReliefOptions
   double DepthScale = 0.05;      // vtkReliefProperty's default
   int Probes = vlf::DefaultReliefProbesPerSide; // SH9 probes per side of the texture
   int EmitterSamplesPerSide = 4; // per emitter triangle: n x n stratified samples
+  // Per item, its SH9 probes (Probes x Probes, vlf::ReliefSurfaceProbes) when they are already
+  // computed (the walkthrough's vtkLightFieldReliefSurface did); empty: computed here.
+  std::vector<std::vector<SH9>> KnownProbes;
 };
 
-// The --relief items ("SURFACE=DEPTH_IMAGE") set up against the field. Throws ReliefSetupError.
+// The --relief items ("SURFACE=DEPTH_IMAGE") set up against the field. Throws ReliefSetupError,
+// and std::invalid_argument when KnownProbes is neither empty nor the probes of every item.
 std::vector<FieldRelief> SetUpFieldReliefs(const vlf::LightField& field, const EmbreeScene& scene,
   const std::vector<std::string>& items, const FieldReliefOptions& options);
 

@@ -1,14 +1,17 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "TestReliefTestUtilities.h"
 
+#include "ReliefScene.h" // MakeOffscreenWindow
 #include "vtkReliefMapper.h"
 #include "vtkReliefTextureFilter.h"
 
 #include <vtkActor.h>
 #include <vtkCamera.h>
+#include <vtkLight.h>
 #include <vtkPlaneSource.h>
 #include <vtkPolyData.h>
 #include <vtkProperty.h>
+#include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
 
 #include <vtkFloatArray.h>
@@ -82,6 +85,28 @@ void LookStraightDown(vtkRenderer* renderer)
   camera->SetPosition(0.5, 0.5, 2.0);
   camera->SetViewUp(0, 1, 0);
   camera->SetClippingRange(0.5, 4.0);
+}
+
+Frame CaptureTopDown(
+  const std::vector<vtkActor*>& actors, int pixels, const std::array<double, 3>& toLight)
+{
+  vtkNew<vtkRenderer> renderer;
+  for (vtkActor* actor : actors)
+  {
+    renderer->AddActor(actor);
+  }
+  renderer->AutomaticLightCreationOff();
+  vtkNew<vtkLight> light;
+  light->SetLightTypeToSceneLight();
+  light->PositionalOff();
+  light->SetFocalPoint(0.5, 0.5, 0.0);
+  light->SetPosition(0.5 + toLight[0], 0.5 + toLight[1], toLight[2]);
+  renderer->AddLight(light);
+  LookStraightDown(renderer);
+  ReliefSceneOptions size;
+  size.Width = size.Height = pixels;
+  auto window = MakeOffscreenWindow(size, renderer);
+  return CaptureFrame(window);
 }
 
 std::string OutputPath(const std::string& name)

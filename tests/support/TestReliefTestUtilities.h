@@ -3,12 +3,15 @@
 #ifndef mesolight_TestReliefTestUtilities_h
 #define mesolight_TestReliefTestUtilities_h
 
+#include "ImageCompare.h"   // Frame
 #include "MessageCapture.h" // mesolight_test::MessageCapture: errors and warnings of a test
 
 #include <vtkSmartPointer.h>
 
+#include <array>
 #include <functional>
 #include <string>
+#include <vector>
 
 class vtkActor;
 class vtkImageData;
@@ -36,6 +39,14 @@ vtkSmartPointer<vtkActor> UnitSquareRelief(
 
 /** A parallel camera looking straight down at the unit square, which fills the view. */
 void LookStraightDown(vtkRenderer* renderer);
+
+/**
+ * The frame of `actors` seen straight down at the unit square (LookStraightDown) in a
+ * pixels x pixels offscreen window, lit by one directional scene light shining from `toLight`
+ * (a direction from the square's centre, straight overhead by default) and no other.
+ */
+Frame CaptureTopDown(const std::vector<vtkActor*>& actors, int pixels,
+  const std::array<double, 3>& toLight = { 0.0, 0.0, 1.0 });
 
 /** Where test output goes (a build-tree directory). */
 std::string OutputPath(const std::string& name);

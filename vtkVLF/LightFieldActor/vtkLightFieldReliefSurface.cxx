@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkLightFieldReliefSurface.h"
+#include "vtkLightFieldReliefSurfaceCore.h"
 
 #include "vtkLightFieldActor.h"
 #include "vtkLightFieldActorCore.h"
@@ -35,6 +36,8 @@
 
 #include <algorithm>
 #include <exception>
+#include <memory>
+#include <utility>
 #include <vector>
 
 namespace vlf = mesolight::vlf;
@@ -277,6 +280,7 @@ int vtkLightFieldReliefSurface::RequestData(
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   vtkImageData* probesOutput = vtkImageData::GetData(outputVector, 1);
   this->EmitterLights->RemoveAllItems();
+  this->NamedProbes.reset();
   std::fill(this->DepthLimit, this->DepthLimit + 7, 0.0);
   if (this->GetNumberOfInputConnections(1) > 0)
   {
@@ -366,9 +370,17 @@ int vtkLightFieldReliefSurface::RequestData(
 
   // Port 1: the probes, pixel (9 i + k, j).
   FillProbesImage(probesOutput, PackProbes(probes, n), n);
+  this->NamedProbes = std::make_unique<std::vector<mesolight::SH9>>(std::move(probes));
 
   AddEmitterLights(*field, this->EmitterLights);
   return 1;
+}
+
+//------------------------------------------------------------------------------
+const std::vector<mesolight::SH9>* vtkLightFieldReliefSurfaceCore::GetProbes(
+  const vtkLightFieldReliefSurface* surface)
+{
+  return surface ? surface->NamedProbes.get() : nullptr;
 }
 
 //------------------------------------------------------------------------------

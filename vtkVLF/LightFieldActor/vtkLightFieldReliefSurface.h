@@ -53,7 +53,9 @@
 #include "vtkPolyDataAlgorithm.h"
 #include "vtkSmartPointer.h" // For vtkSmartPointer
 
+#include <memory> // For std::unique_ptr
 #include <string> // For std::string
+#include <vector> // For std::vector
 
 class vtkAlgorithmOutput;
 class vtkImageData;
@@ -63,6 +65,10 @@ class vtkLightFieldActor;
 class vtkMultiProcessController;
 class vtkPolyData;
 class vtkVirtualLightField;
+namespace mesolight
+{
+struct SH9;
+}
 
 class MESOLIGHTLIGHTFIELDACTOR_EXPORT vtkLightFieldReliefSurface : public vtkPolyDataAlgorithm
 {
@@ -155,6 +161,7 @@ private:
   // The route of input port 1 (any planar surface), MPI included.
   int RequestSurfaceData(vtkPolyData* input, vtkPolyData* output, vtkImageData* probesOutput);
   void operator=(const vtkLightFieldReliefSurface&) = delete;
+  friend class vtkLightFieldReliefSurfaceCore;
 
   vtkLightFieldActor* LightFieldActor = nullptr;
   vtkVirtualLightField* LightFieldProducer = nullptr;
@@ -164,6 +171,8 @@ private:
   double DepthLimit[7] = { 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0 }; // point, normal, mounted
   vtkNew<vtkLightCollection> EmitterLights;
   const void* ExecutedField = nullptr; // the actor's field the outputs were made from
+  // A named surface's probes as computed (port 1 has them as floats); null otherwise.
+  std::unique_ptr<std::vector<mesolight::SH9>> NamedProbes;
 };
 
 #endif

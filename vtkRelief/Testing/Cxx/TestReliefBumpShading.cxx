@@ -7,17 +7,13 @@
 // vtkReliefTextureFilter, their texture-space frame, the shader's tangent frame and VTK's light)
 // without using any of it for the reference. Negative: texture mapping (flat normals) fails it.
 #include "ImageCompare.h"
-#include "ReliefScene.h"
 #include "TestReliefTestUtilities.h"
 #include "vtkReliefMapper.h"
 
 #include <vtkActor.h>
 #include <vtkImageData.h>
-#include <vtkLight.h>
 #include <vtkMath.h>
 #include <vtkNew.h>
-#include <vtkRenderWindow.h>
-#include <vtkRenderer.h>
 
 #include <gtest/gtest.h>
 
@@ -58,21 +54,8 @@ BumpError MeasureBump(const char* method, double lightAzimuthDegrees, bool mirro
   const double e = vtkMath::RadiansFromDegrees(40.0);
   const double a = vtkMath::RadiansFromDegrees(lightAzimuthDegrees);
   const double toLight[3] = { std::cos(e) * std::cos(a), std::cos(e) * std::sin(a), std::sin(e) };
-  vtkNew<vtkRenderer> renderer;
-  renderer->AddActor(actor);
-  renderer->AutomaticLightCreationOff();
-  vtkNew<vtkLight> light;
-  light->SetLightTypeToSceneLight();
-  light->PositionalOff();
-  light->SetFocalPoint(0.5, 0.5, 0.0);
-  light->SetPosition(0.5 + toLight[0], 0.5 + toLight[1], toLight[2]);
-  renderer->AddLight(light);
-  test::LookStraightDown(renderer);
-
-  ReliefSceneOptions size;
-  size.Width = size.Height = Pixels;
-  auto window = MakeOffscreenWindow(size, renderer);
-  const Frame frame = CaptureFrame(window);
+  const Frame frame =
+    test::CaptureTopDown({ actor }, Pixels, { toLight[0], toLight[1], toLight[2] });
 
   BumpError error;
   double low = 255.0, high = 0.0;

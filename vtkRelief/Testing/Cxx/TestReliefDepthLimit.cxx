@@ -7,23 +7,22 @@
 // case); with it the right half shows as the relief does alone, its depth exactly the plane's,
 // while a quad in front of the plane (0.005 below the square) still hides the right half.
 #include "ImageCompare.h"
-#include "ReliefScene.h"
 #include "TestReliefTestUtilities.h"
 #include "vtkReliefMapper.h"
 #include "vtkReliefProperty.h"
 
 #include <vtkActor.h>
-#include <vtkLight.h>
+#include <vtkImageData.h>
 #include <vtkNew.h>
 #include <vtkPlaneSource.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
-#include <vtkRenderer.h>
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdlib>
+#include <vector>
 
 namespace
 {
@@ -70,26 +69,18 @@ Frame Render(const Options& o)
     const double origin[3] = { 0.0, 0.0, LimitZ }, normal[3] = { 0.0, 0.0, 1.0 };
     property->SetDepthLimitPlane(origin, normal);
   }
-  vtkNew<vtkRenderer> renderer;
-  renderer->AddActor(actor);
+  const auto wall = Quad(WallZ, 1.0, 0.0, 0.0);
+  const auto blade = Quad(-0.005, 0.0, 1.0, 0.0);
+  std::vector<vtkActor*> actors{ actor };
   if (o.Wall)
   {
-    renderer->AddActor(Quad(WallZ, 1.0, 0.0, 0.0));
+    actors.push_back(wall);
   }
   if (o.Blade)
   {
-    renderer->AddActor(Quad(-0.005, 0.0, 1.0, 0.0));
+    actors.push_back(blade);
   }
-  vtkNew<vtkLight> light;
-  light->SetLightTypeToSceneLight();
-  light->SetPosition(0.5, 0.5, 1.0);
-  light->SetFocalPoint(0.5, 0.5, 0.0);
-  renderer->AddLight(light);
-  test::LookStraightDown(renderer);
-  ReliefSceneOptions size;
-  size.Width = size.Height = Pixels;
-  auto window = MakeOffscreenWindow(size, renderer);
-  return CaptureFrame(window);
+  return test::CaptureTopDown(actors, Pixels);
 }
 
 // Pixels of the right half (the deep relief), away from the step and the edges.

@@ -8,10 +8,7 @@
 #include "vtkReliefMapper.h"
 
 #include <vtkActor.h>
-#include <vtkCamera.h>
-#include <vtkLight.h>
 #include <vtkNew.h>
-#include <vtkPlaneSource.h>
 
 #include <gtest/gtest.h>
 
@@ -37,18 +34,7 @@ Frame RenderTopDown(
   {
     configure(mapper);
   }
-  vtkNew<vtkRenderer> renderer;
-  renderer->AddActor(actor);
-  vtkNew<vtkLight> light;
-  light->SetLightTypeToSceneLight();
-  light->SetPosition(0.5, 0.5, 1.0);
-  light->SetFocalPoint(0.5, 0.5, 0.0);
-  renderer->AddLight(light);
-  test::LookStraightDown(renderer);
-  ReliefSceneOptions size;
-  size.Width = size.Height = Pixels;
-  auto window = MakeOffscreenWindow(size, renderer);
-  return CaptureFrame(window);
+  return test::CaptureTopDown({ actor }, Pixels);
 }
 } // namespace
 

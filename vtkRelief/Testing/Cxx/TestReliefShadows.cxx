@@ -52,22 +52,9 @@ ShadowRun RenderRidgeShadow(double elevationDegrees, bool shadows, int linearSte
   mapper->GetReliefProperty()->SetSelfShadowing(shadows);
   mapper->GetReliefProperty()->SetLinearSteps(linearSteps);
 
-  vtkNew<vtkRenderer> renderer;
-  renderer->AddActor(actor);
-  renderer->AutomaticLightCreationOff();
   const double e = vtkMath::RadiansFromDegrees(elevationDegrees);
-  vtkNew<vtkLight> light;
-  light->SetLightTypeToSceneLight();
-  light->PositionalOff();
-  light->SetFocalPoint(0.5, 0.5, 0.0);
-  light->SetPosition(0.5 - std::cos(e), 0.5, std::sin(e)); // from -u, across the ridge
-  renderer->AddLight(light);
-  test::LookStraightDown(renderer);
-
-  ReliefSceneOptions size;
-  size.Width = size.Height = Pixels;
-  auto window = MakeOffscreenWindow(size, renderer);
-  const Frame frame = CaptureFrame(window);
+  // From -u, across the ridge.
+  const Frame frame = test::CaptureTopDown({ actor }, Pixels, { -std::cos(e), 0.0, std::sin(e) });
   WritePng(frame, test::OutputPath(tag).c_str());
 
   // Lit floor: N.L = sin(e). Dark: below a quarter of that.

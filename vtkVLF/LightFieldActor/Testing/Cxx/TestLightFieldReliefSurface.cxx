@@ -8,6 +8,7 @@
 
 #include "vtkLightFieldActor.h"
 #include "vtkLightFieldActorCore.h"
+#include "vtkLightFieldReliefSurfaceCore.h"
 #include "vtkCornellBoxSource.h"
 #include "vtkVirtualLightField.h"
 #include "vtkVirtualLightFieldCore.h"
@@ -171,6 +172,40 @@ TEST(LightFieldReliefSurface, ProbesAreTheFieldsIndirectIrradianceAtTheirTexture
             << transposed << ", against the light with the emitters " << withEmitters << "\n";
   EXPECT_GT(transposed, 2.0 * error);
   EXPECT_GT(withEmitters, 0.5);
+}
+
+// The walkthrough's mirrors shade the relief with these probes instead of computing them again
+// (application/LightFieldReliefs.cxx): they must be the core's, bit for bit, and port 1's floats.
+TEST(LightFieldReliefSurface, ProbesAsComputedAreLentForTheSurfaceItWasGiven)
+{
+  ReliefSurfaceFixture f("back", 3);
+  const std::vector<SH9>* lent = vtkLightFieldReliefSurfaceCore::GetProbes(f.Surface);
+  ASSERT_NE(lent, nullptr);
+  const std::vector<SH9> own =
+    vlf::ReliefSurfaceProbes(f.Field, vlf::FindReliefSurface(f.Field, "back"), 3, 3);
+  ASSERT_EQ(lent->size(), own.size());
+  vtkDataArray* image = f.Surface->GetProbesOutput()->GetPointData()->GetScalars();
+  for (std::size_t p = 0; p < own.size(); ++p)
+  {
+    for (int k = 0; k < 9; ++k)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        EXPECT_EQ((*lent)[p].L[k][c], own[p].L[k][c]);
+        const vtkIdType pixel = static_cast<vtkIdType>((p / 3) * 27 + 9 * (p % 3) + k);
+        EXPECT_EQ(image->GetComponent(pixel, c), static_cast<float>(own[p].L[k][c]));
+      }
+    }
+  }
+  // Negative: another wall's probes differ.
+  const std::vector<SH9> floor =
+    vlf::ReliefSurfaceProbes(f.Field, vlf::FindReliefSurface(f.Field, "floor"), 3, 3);
+  EXPECT_NE(floor[0].L[0][0], (*lent)[0].L[0][0]);
+  // None after a failed update, nor for a surface of input port 1 (its probes travel as floats).
+  f.Surface->SetSurfaceName("wall");
+  f.Surface->Update();
+  EXPECT_EQ(vtkLightFieldReliefSurfaceCore::GetProbes(f.Surface), nullptr);
+  EXPECT_EQ(vtkLightFieldReliefSurfaceCore::GetProbes(nullptr), nullptr);
 }
 
 TEST(LightFieldReliefSurface, PolygonsCarryThePlanesTextureCoordinatesInWorldCoordinates)
