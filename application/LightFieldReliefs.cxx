@@ -83,8 +83,9 @@ constexpr int MaxVisibleShareSide = 256;
 
 // The probes of `surface` with what the relief mapper needs to draw the relief's occlusion, its
 // inter-reflection and the scene's shadows of the emitter lights at near-zero cost per pixel
-// (vtkIrradianceProbesTexture): the relief's visible share over its texture, precomputed on the
-// exact height-field intersector with the CPU renderer's directions (ReliefVisibleShareMap), and
+// (vtkIrradianceProbesTexture): the relief's visible share over its texture and that of the relief
+// its occluded directions meet, precomputed on the exact height-field intersector with the CPU
+// renderer's directions (ReliefVisibleShareMap, ReliefSeenShareMap), and
 // per probe the scene's visibility of each emitter light (EmitterLightVisibility), in the order
 // the relief layer's renderer has them (vtkLightFieldReliefSurface::GetEmitterLights). Throws
 // ReliefSetupError for an unreadable depth image.
@@ -102,8 +103,9 @@ vtkSmartPointer<vtkImageData> OccludedProbes(const vlf::LightField& field,
   frame.DepthScale = depthScale;
   const int w = std::min(height.Width(), MaxVisibleShareSide);
   const int h = std::min(height.Height(), MaxVisibleShareSide);
-  const std::vector<float> share =
-    ReliefVisibleShareMap(height, frame, w, h, ReliefLighting().OcclusionDirections);
+  const int count = ReliefLighting().OcclusionDirections;
+  const std::vector<float> share = ReliefVisibleShareMap(height, frame, w, h, count);
+  const std::vector<float> seen = ReliefSeenShareMap(height, frame, share, w, h, count);
 
   int dims[3];
   probes->GetDimensions(dims);
@@ -140,9 +142,13 @@ vtkSmartPointer<vtkImageData> OccludedProbes(const vlf::LightField& field,
   result->GetPointData()->SetScalars(out);
   vtkNew<vtkFloatArray> shareArray;
   shareArray->SetName(vtkIrradianceProbesTexture::GetVisibleShareName());
-  shareArray->SetNumberOfComponents(2);
-  shareArray->SetNumberOfTuples(static_cast<vtkIdType>(share.size() / 2));
-  std::copy(share.begin(), share.end(), shareArray->GetPointer(0));
+  shareArray->SetNumberOfComponents(3);
+  shareArray->SetNumberOfTuples(static_cast<vtkIdType>(seen.size()));
+  for (std::size_t c = 0; c < seen.size(); ++c)
+  {
+    const float tuple[3] = { share[2 * c], share[2 * c + 1], seen[c] };
+    shareArray->SetTypedTuple(static_cast<vtkIdType>(c), tuple);
+  }
   vtkNew<vtkIntArray> shareSize;
   shareSize->SetName(vtkIrradianceProbesTexture::GetVisibleShareSizeName());
   shareSize->InsertNextValue(w);

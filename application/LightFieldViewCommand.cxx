@@ -34,6 +34,7 @@
 #include <vtkCellArray.h>
 #include <vtkCommand.h>
 #include <vtkFloatArray.h>
+#include <vtkImageShrink3D.h>
 #include <vtkNew.h>
 #include <vtkOpenGLRenderWindow.h>
 #include <vtkPNGWriter.h>
@@ -143,7 +144,9 @@ bool ConfigureView(const CommandLine& cl, vtkLightFieldActor* actor, vtkRenderer
   return true;
 }
 
-bool WritePng(vtkRenderWindow* window, const std::string& out)
+// The window's frame as a PNG; with supersampling s > 1 each s x s block of the window's pixels
+// averaged into one (in its display codes: the PNG is the preview, the EXR the measurement).
+bool WritePng(vtkRenderWindow* window, const std::string& out, int supersampling = 1)
 {
   vtkNew<vtkWindowToImageFilter> grab;
   grab->SetInput(window);
@@ -151,8 +154,13 @@ bool WritePng(vtkRenderWindow* window, const std::string& out)
   grab->ShouldRerenderOff();
   grab->ReadFrontBufferOn();
   grab->Update();
+  vtkNew<vtkImageShrink3D> shrink;
+  shrink->SetInputConnection(grab->GetOutputPort());
+  shrink->SetShrinkFactors(supersampling, supersampling, 1);
+  shrink->AveragingOn();
   vtkNew<vtkPNGWriter> writer;
-  writer->SetInputConnection(grab->GetOutputPort());
+  writer->SetInputConnection(
+    supersampling > 1 ? shrink->GetOutputPort() : grab->GetOutputPort());
   writer->SetFileName(out.c_str());
   writer->Write();
   return writer->GetErrorCode() == 0;
@@ -171,9 +179,10 @@ struct WalkthroughWindow
   WalkthroughReliefs Reliefs; // --relief
 };
 
-// 0 when the window is ready, else the command's exit code (the message is printed).
-int OpenWalkthrough(
-  const CommandLine& cl, const char* command, bool offscreen, WalkthroughWindow& walkthrough)
+// 0 when the window is ready, else the command's exit code (the message is printed). The window
+// is `supersampling` times --size per side (vlf render --supersampling).
+int OpenWalkthrough(const CommandLine& cl, const char* command, bool offscreen,
+  WalkthroughWindow& walkthrough, int supersampling = 1)
 {
   walkthrough.Messages->OnMessage = [command](bool error, const std::string& text)
   {
@@ -200,7 +209,7 @@ int OpenWalkthrough(
   {
     return 2;
   }
-  walkthrough.Window->SetSize(width, height);
+  walkthrough.Window->SetSize(supersampling * width, supersampling * height);
   return SetUpWalkthroughReliefs(cl, command, walkthrough.Actor, walkthrough.Renderer,
     walkthrough.Window, walkthrough.Reliefs);
 }
@@ -239,6 +248,10 @@ int Render(const std::vector<std::string>& args)
   cl.AddValue("--exr", "FILE.exr",
     "also write the frame's linear radiance (recovered by exposure bracketing: independent of "
     "--exposure and --tone-map)");
+  cl.AddValue("--supersampling", "S",
+    "draw S x S pixels for each pixel of --size and write their mean (a box filter): the pixel "
+    "average a path tracer's paths per pixel cover",
+    "1");
   cl.AddFlag("--force", "replace an existing IMAGE.png");
   AddObjectOptions(cl);
   int exitCode = 0;
@@ -250,6 +263,15 @@ int Render(const std::vector<std::string>& args)
   {
     std::cerr << command << ": give one FIELD and --out IMAGE.png\n";
     return 2;
+  }
+  int supersampling = 1;
+  {
+    std::string error;
+    if (!cl.GetInt("--supersampling", 1, 8, supersampling, error))
+    {
+      std::cerr << command << ": " << error << "\n";
+      return 2;
+    }
   }
   const std::string out = cl.Get("--out");
   std::vector<std::string> inputs = ReliefInputs(cl);
@@ -285,7 +307,7 @@ int Render(const std::vector<std::string>& args)
     return 1;
   }
   WalkthroughWindow walkthrough;
-  if (const int status = OpenWalkthrough(cl, command, true, walkthrough))
+  if (const int status = OpenWalkthrough(cl, command, true, walkthrough, supersampling))
   {
     return status;
   }
@@ -308,19 +330,25 @@ int Render(const std::vector<std::string>& args)
     window->Render();
   }
   const double seconds = SecondsSince(start);
-  if (!WritePng(window, out))
+  if (!WritePng(window, out, supersampling))
   {
     std::cerr << command << ": could not write '" << out << "'\n";
     return 1;
   }
-  std::cout << "wrote " << out << " (" << window->GetSize()[0] << "x" << window->GetSize()[1]
-            << ", mode " << cl.Get("--mode") << ", " << seconds << " s, "
+  std::cout << "wrote " << out << " (" << window->GetSize()[0] / supersampling << "x"
+            << window->GetSize()[1] / supersampling;
+  if (supersampling > 1)
+  {
+    std::cout << ", the mean of " << supersampling << "x" << supersampling
+              << " drawn pixels each";
+  }
+  std::cout << ", mode " << cl.Get("--mode") << ", " << seconds << " s, "
             << actor->GetLastScreenPixels() << " pixels from the CPU pass)\n";
   if (cl.Has("--exr"))
   {
     RgbImage radiance;
     std::string error;
-    if (!CaptureWalkthroughRadiance(actor, window, radiance, error) ||
+    if (!CaptureWalkthroughRadiance(actor, window, radiance, error, supersampling) ||
       !WriteLinearImage(radiance, cl.Get("--exr"), error))
     {
       std::cerr << command << ": " << error << "\n";

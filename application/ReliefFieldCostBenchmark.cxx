@@ -6,7 +6,7 @@
 #include "ImageCompare.h"
 #include "MathConstants.h"
 #include "ReliefScene.h"
-#include "ReliefShading.h" // ReliefVisibleShareMap
+#include "ReliefShading.h" // ReliefVisibleShareMap, ReliefSeenShareMap
 #include "Timing.h"
 #include "vtkReliefMapper.h"
 
@@ -138,8 +138,9 @@ vtkSmartPointer<vtkImageData> OccludedProbes(
   ReliefFrame frame; // the unit square of BuildReliefScene's wall
   frame.DepthScale = depthScale;
   const int w = std::min(dims[0], 256), h = std::min(dims[1], 256);
-  const std::vector<float> share =
-    ReliefVisibleShareMap(height, frame, w, h, ReliefLighting().OcclusionDirections);
+  const int count = ReliefLighting().OcclusionDirections;
+  const std::vector<float> share = ReliefVisibleShareMap(height, frame, w, h, count);
+  const std::vector<float> seen = ReliefSeenShareMap(height, frame, share, w, h, count);
   auto result = vtkSmartPointer<vtkImageData>::New();
   result->DeepCopy(probes);
   vtkDataArray* in = probes->GetPointData()->GetScalars();
@@ -153,9 +154,13 @@ vtkSmartPointer<vtkImageData> OccludedProbes(
   result->GetPointData()->SetScalars(out);
   vtkNew<vtkFloatArray> shareArray;
   shareArray->SetName("ReliefVisibleShare");
-  shareArray->SetNumberOfComponents(2);
-  shareArray->SetNumberOfTuples(static_cast<vtkIdType>(share.size() / 2));
-  std::copy(share.begin(), share.end(), shareArray->GetPointer(0));
+  shareArray->SetNumberOfComponents(3);
+  shareArray->SetNumberOfTuples(static_cast<vtkIdType>(seen.size()));
+  for (std::size_t c = 0; c < seen.size(); ++c)
+  {
+    const float tuple[3] = { share[2 * c], share[2 * c + 1], seen[c] };
+    shareArray->SetTypedTuple(static_cast<vtkIdType>(c), tuple);
+  }
   vtkNew<vtkIntArray> shareSize;
   shareSize->SetName("ReliefVisibleShareSize");
   shareSize->InsertNextValue(w);

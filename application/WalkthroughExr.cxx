@@ -10,14 +10,16 @@
 #include <vtkRenderWindow.h>
 #include <vtkWindowToImageFilter.h>
 
+#include <algorithm>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 namespace mesolight
 {
 
-bool CaptureWalkthroughRadiance(
-  vtkLightFieldActor* actor, vtkRenderWindow* window, RgbImage& radiance, std::string& error)
+bool CaptureWalkthroughRadiance(vtkLightFieldActor* actor, vtkRenderWindow* window,
+  RgbImage& radiance, std::string& error, int supersampling)
 {
   const double exposure = actor->GetExposure();
   const int toneMap = actor->GetToneMap();
@@ -80,6 +82,30 @@ bool CaptureWalkthroughRadiance(
   actor->SetExposure(exposure);
   actor->SetToneMap(toneMap);
   window->Render();
+  const int s = std::max(1, supersampling);
+  if (ok && s > 1)
+  {
+    RgbImage mean(width / s, height / s);
+    for (int j = 0; j < mean.Height; ++j)
+    {
+      for (int i = 0; i < mean.Width; ++i)
+      {
+        float* out = mean.Pixel(i, j);
+        for (int b = 0; b < s; ++b)
+        {
+          for (int a = 0; a < s; ++a)
+          {
+            const float* in = radiance.Pixel(s * i + a, s * j + b);
+            for (int c = 0; c < 3; ++c)
+            {
+              out[c] += in[c] / static_cast<float>(s * s);
+            }
+          }
+        }
+      }
+    }
+    radiance = std::move(mean);
+  }
   return ok;
 }
 

@@ -21,10 +21,11 @@ class vtkRenderWindow;
 namespace mesolight
 {
 /** Draws the window's current view at the bracketed exposures (restoring the actor's exposure and
- * tone map after) into `radiance` (row 0 at the bottom). False with a message when the frame
- * cannot be read. */
-bool CaptureWalkthroughRadiance(
-  vtkLightFieldActor* actor, vtkRenderWindow* window, RgbImage& radiance, std::string& error);
+ * tone map after) into `radiance` (row 0 at the bottom). With supersampling s > 1 the window is
+ * s times the image per side and each s x s block's radiance is averaged into one pixel (a box
+ * filter, in linear radiance). False with a message when the frame cannot be read. */
+bool CaptureWalkthroughRadiance(vtkLightFieldActor* actor, vtkRenderWindow* window,
+  RgbImage& radiance, std::string& error, int supersampling = 1);
 } // namespace mesolight
 
 #endif

@@ -10,7 +10,9 @@
 #   - `vlf render --relief back=DEPTH --exr` (the method as a user runs it), and the interactive
 #     GPU path (`vlf render --mode progressive --relief ...`, the relief mapper as `vlf view`
 #     draws it, with and without its precomputed occlusion), measured as a method of its own
-#     against the same negative cases;
+#     against the same negative cases: drawn at one ray per pixel and with `--supersampling S`
+#     (S x S pixels drawn per pixel and averaged, the pixel average the reference's paths cover
+#     and the in-process CPU rows' 2 x 2 rays take), the supersampled image the method's row;
 #   - `bench vlf-relief FIELD --relief ...`: the relief's pixels rendered in-process, on the same
 #     rays, lit by the field (the method), by the flat wall's field value and by one light of the
 #     lamp's power with shadows (the negative cases), each timed: the mean relative error per
@@ -25,7 +27,7 @@
 # is installed, its brick height map (wicked/highqualitybrickz.jpg, inverted to depth); skipped
 # when absent. Settings through the environment (defaults in brackets): DIRECTIONS [2049], RAYS
 # [32] (the field), SIZE [256] (square images), SAMPLES [1024] (paths per pixel of the
-# references), DEPTH_SCALE [0.05], CAMERA [278,273,-800,278,273,0, the published Cornell camera],
+# references), SUPERSAMPLING [2] (the GPU's pixels drawn per image pixel side), DEPTH_SCALE [0.05], CAMERA [278,273,-800,278,273,0, the published Cornell camera],
 # FOV [39.3077], CSV_DIR [docs/measurements/relief-against-path-tracer in the source tree],
 # LABEL_SUFFIX [none: appended to every CSV row's label, e.g. to tell two binaries' runs on the
 # same references apart].
@@ -40,6 +42,8 @@ rays="${RAYS:-32}"
 size="${SIZE:-256}"
 samples="${SAMPLES:-1024}"
 scale="${DEPTH_SCALE:-0.05}"
+supersampling="${SUPERSAMPLING:-2}"
+gpu_method="gpu-${supersampling}x${supersampling}"
 camera="${CAMERA:-278,273,-800,278,273,0}"
 fov="${FOV:-39.3077}"
 csv_dir="${CSV_DIR:-$source_dir/docs/measurements/relief-against-path-tracer}"
@@ -137,9 +141,10 @@ for entry in "${maps[@]}"; do
   # emitter lights with the scene's shadows), as `vlf view --relief` draws it, as linear EXR;
   # and without the occlusion (shown).
   gpu_images=""
-  for variant in gpu gpu-unoccluded; do
+  for variant in gpu "$gpu_method" gpu-unoccluded; do
     extra=()
     [ "$variant" = gpu-unoccluded ] && extra=(--relief-no-occlusion)
+    [ "$variant" = "$gpu_method" ] && extra=(--supersampling "$supersampling")
     t=$(timed "$name-$variant" bash "$here/xvfb.sh" "$bin" vlf render "$field" --mode progressive \
       "${relief[@]}" "${extra[@]}" "${view[@]}" --size "${size}x${size}" --out "$name-$variant.png" \
       --exr "$name-$variant.exr" --force)
@@ -156,16 +161,25 @@ for entry in "${maps[@]}"; do
   # Under scripts/xvfb.sh: the plot is drawn by VTK's charts, which need a display.
   bash "$here/xvfb.sh" "$bin" "${bench[@]}" | tee "$name-bench.log"
   [ "${PIPESTATUS[0]}" -eq 0 ] || status=1
-  # The GPU path as the method, against the same negative cases (written by the run above).
-  if [ -f "$name-gpu.exr" ]; then
+  # The GPU path as the method, against the same negative cases (written by the run above): its
+  # image averaged over the pixel as the reference's is, and at one ray per pixel.
+  for method in "$gpu_method" gpu; do
+    [ -f "$name-$method.exr" ] || continue
+    if [ "$method" = gpu ]; then
+      echo "the GPU as the method at one ray per pixel"
+    else
+      echo "the GPU as the method: $method = --supersampling $supersampling (the mean of" \
+        "$supersampling x $supersampling drawn pixels per pixel, as the reference averages its" \
+        "paths over the pixel)"
+    fi
     bench=(bench vlf-relief --reference "$name-reference.exr" --reference-2 "$name-reference-2.exr"
       --mask "$name-mask.exr"
-      --images "gpu=$name-gpu.exr,flat-wall=$name-flat-wall.exr,one-light=$name-one-light.exr"
-      --label "cornell-back-$name-gpu-$directions-$samples$suffix"
+      --images "$method=$name-$method.exr,flat-wall=$name-flat-wall.exr,one-light=$name-one-light.exr"
+      --label "cornell-back-$name-$method-$directions-$samples$suffix"
       --csv "$csv_dir/relief-against-path-tracer.csv")
     log "$bin" "${bench[@]}"
-    "$bin" "${bench[@]}" | tee "$name-gpu-bench.log"
-  fi
+    "$bin" "${bench[@]}" | tee "$name-$method-bench.log"
+  done
 done
 # The field's own error on the flat wall (no relief) over the first map's relief pixels.
 first="${maps[0]%%:*}"

@@ -153,17 +153,19 @@ void vtkIrradianceProbesTexture::Update(vtkOpenGLRenderWindow* renWin, vtkImageD
 bool vtkIrradianceProbesTexture::UploadVisibleShare(
   vtkOpenGLRenderWindow* renWin, vtkDataArray* share, vtkDataArray* shareSize)
 {
-  // Without a map: one texel of (1, 1), the relief unoccluded (the shader reads it all the same).
-  std::vector<float> texels(2, 1.0f);
+  // Without a map: one texel of (1, 1, 1), the relief unoccluded (the shader reads it all the
+  // same). A map of pairs (V, S) gets the seen share Vs = V: the series at the point's own share.
+  std::vector<float> texels(3, 1.0f);
   int size[2] = { 1, 1 };
   this->HasVisibleShare = false;
   if (share || shareSize)
   {
     const char* const layout = " The relief's visible share must be a field-data array of W x H "
-                               "pairs in [0, 1] (row-major, row 0 at v ~ 0) with a 2-value array "
-                               "(W, H); the relief is drawn without the probes.";
+                               "pairs or triples in [0, 1] (row-major, row 0 at v ~ 0) with a "
+                               "2-value array (W, H); the relief is drawn without the probes.";
+    const int components = share ? share->GetNumberOfComponents() : 0;
     if (!share || !shareSize || shareSize->GetNumberOfValues() != 2 ||
-      share->GetNumberOfComponents() != 2)
+      (components != 2 && components != 3))
     {
       vtkErrorMacro(<< "The relief's visible share is incomplete." << layout);
       return false;
@@ -178,19 +180,19 @@ bool vtkIrradianceProbesTexture::UploadVisibleShare(
     }
     size[0] = static_cast<int>(w);
     size[1] = static_cast<int>(h);
-    texels.resize(2 * static_cast<size_t>(size[0]) * size[1]);
+    texels.resize(3 * static_cast<size_t>(size[0]) * size[1]);
     for (vtkIdType t = 0; t < share->GetNumberOfTuples(); ++t)
     {
-      for (int c = 0; c < 2; ++c)
+      for (int c = 0; c < 3; ++c)
       {
-        const double value = share->GetComponent(t, c);
+        const double value = share->GetComponent(t, c < components ? c : 0);
         if (!(value >= 0.0 && value <= 1.0))
         {
           vtkErrorMacro(<< "The relief's visible share " << value << " at " << t
                         << " is not in [0, 1]." << layout);
           return false;
         }
-        texels[2 * static_cast<size_t>(t) + c] = static_cast<float>(value);
+        texels[3 * static_cast<size_t>(t) + c] = static_cast<float>(value);
       }
     }
     this->HasVisibleShare = true;
@@ -205,7 +207,7 @@ bool vtkIrradianceProbesTexture::UploadVisibleShare(
   this->ShareTexture->SetWrapS(vtkTextureObject::ClampToEdge);
   this->ShareTexture->SetWrapT(vtkTextureObject::ClampToEdge);
   if (!this->ShareTexture->Create2DFromRaw(static_cast<unsigned int>(size[0]),
-        static_cast<unsigned int>(size[1]), 2, VTK_FLOAT, texels.data()))
+        static_cast<unsigned int>(size[1]), 3, VTK_FLOAT, texels.data()))
   {
     vtkErrorMacro(<< "Could not create the relief's visible-share texture (" << size[0] << " x "
                   << size[1] << "); the relief is drawn without the probes.");

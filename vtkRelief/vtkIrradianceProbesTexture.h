@@ -22,11 +22,12 @@
  *   multiplied into that light's contribution (1 without it);
  * - the relief's cosine-weighted visible share over its texture (ReliefVisibleShareMap in
  *   evaluation/core/ReliefShading.h: per cell V and V over the share of directions above the
- *   macro plane) as the two-component field-data array GetVisibleShareName() (W x H pairs, row
- *   0 at v ~ 0) with the field-data array GetVisibleShareSizeName() = (W, H): a second,
- *   two-channel linear texture. The shader scales the probes' irradiance by the second value
- *   and adds the relief's multi-bounce inter-reflection of V (ReliefInterReflected). Without it
- *   both are 1.
+ *   macro plane; optionally a third value, the visible share Vs of the relief the occluded
+ *   directions meet, ReliefSeenShareMap) as the two- or three-component field-data array
+ *   GetVisibleShareName() (W x H tuples, row 0 at v ~ 0) with the field-data array
+ *   GetVisibleShareSizeName() = (W, H): a second, three-channel linear texture (Vs = V for
+ *   pairs). The shader scales the probes' irradiance by the second value and adds the relief's
+ *   multi-bounce inter-reflection of V at Vs (ReliefInterReflected). Without it all are 1.
  */
 
 #ifndef vtkIrradianceProbesTexture_h

@@ -172,8 +172,67 @@ double ReliefVisibleShare(const HeightField& hf, const ReliefFrame& frame, const
   return static_cast<double>(seen) / count;
 }
 
+double ReliefSeenShare(const HeightField& hf, const ReliefFrame& frame, const glm::dvec3& hit,
+  const glm::dvec3& n, int count, const std::vector<float>* shareMap, int mapWidth,
+  int mapHeight)
+{
+  if (count < 1)
+  {
+    return 1.0;
+  }
+  const bool map = shareMap && mapWidth > 0 && mapHeight > 0 &&
+    shareMap->size() >= 2 * static_cast<std::size_t>(mapWidth) * mapHeight;
+  // The map's V at (u, v): bilinear between cell centres, clamped (the GPU's GL_LINEAR +
+  // GL_CLAMP_TO_EDGE fetch of the same values).
+  const auto mapped = [&](double u, double v)
+  {
+    const double x = std::clamp(u * mapWidth - 0.5, 0.0, mapWidth - 1.0);
+    const double y = std::clamp(v * mapHeight - 0.5, 0.0, mapHeight - 1.0);
+    const int i0 = static_cast<int>(std::floor(x)), j0 = static_cast<int>(std::floor(y));
+    const int i1 = std::min(i0 + 1, mapWidth - 1), j1 = std::min(j0 + 1, mapHeight - 1);
+    const double fx = x - i0, fy = y - j0;
+    const auto at = [&](int i, int j)
+    { return static_cast<double>((*shareMap)[2 * (static_cast<std::size_t>(j) * mapWidth + i)]); };
+    return (1.0 - fy) * ((1.0 - fx) * at(i0, j0) + fx * at(i1, j0)) +
+      fy * ((1.0 - fx) * at(i0, j1) + fx * at(i1, j1));
+  };
+  const NormalFrame local(n);
+  const glm::dvec3 from(hit.x, hit.y, std::max(0.0, hit.z));
+  double sum = 0.0;
+  int occluded = 0;
+  for (const glm::dvec3& c : CosineDirections(count))
+  {
+    const glm::dvec3 w = local(c);
+    if (LeavesRelief(hf, frame, hit, w))
+    {
+      continue;
+    }
+    ++occluded;
+    const glm::dvec3 step = frame.ToTexture(w);
+    const double length = glm::length(step);
+    // Every direction that stays in the relief meets it within the unit square's diagonal and
+    // the depth range; one lost numerically counts as dark.
+    const std::optional<RayHit> seen =
+      IntersectFirst(hf, from + (1e-6 / length) * step, step, 4.0 / length);
+    if (!seen)
+    {
+      continue;
+    }
+    const bool wall = seen->wall.x != 0.0 || seen->wall.y != 0.0;
+    if (map && !wall)
+    {
+      sum += mapped(seen->point.x, seen->point.y);
+      continue;
+    }
+    const glm::dvec3 normal = wall ? ReliefWallNormal(frame, seen->wall)
+                                   : ReliefNormalAt(hf, frame, seen->point.x, seen->point.y);
+    sum += ReliefVisibleShare(hf, frame, seen->point, normal, count);
+  }
+  return occluded > 0 ? sum / occluded : 1.0;
+}
+
 glm::dvec3 ReliefInterReflected(ReliefInterReflection model, double visibleShare,
-  const glm::dvec3& albedo, const glm::dvec3& flatIrradiance)
+  double seenShare, const glm::dvec3& albedo, const glm::dvec3& flatIrradiance)
 {
   const double occluded = 1.0 - visibleShare;
   const glm::dvec3 a = glm::clamp(albedo, 0.0, 1.0);
@@ -184,10 +243,17 @@ glm::dvec3 ReliefInterReflected(ReliefInterReflection model, double visibleShare
   glm::dvec3 seen = flatIrradiance;
   if (model == ReliefInterReflection::MultiBounce)
   {
-    // Bounded away from 0: a white relief that hides the whole hemisphere (V = 0) stays 0.
-    seen *= visibleShare / glm::max(1.0 - a * occluded, glm::dvec3(1e-9));
+    // Bounded away from 0: a white relief that hides the whole hemisphere (Vs = 0) stays 0.
+    const double vs = std::clamp(seenShare, 0.0, 1.0);
+    seen *= vs / glm::max(1.0 - a * (1.0 - vs), glm::dvec3(1e-9));
   }
   return occluded * a * seen;
+}
+
+glm::dvec3 ReliefInterReflected(ReliefInterReflection model, double visibleShare,
+  const glm::dvec3& albedo, const glm::dvec3& flatIrradiance)
+{
+  return ReliefInterReflected(model, visibleShare, visibleShare, albedo, flatIrradiance);
 }
 
 std::vector<float> ReliefVisibleShareMap(const HeightField& hf, const ReliefFrame& frame,
@@ -229,6 +295,45 @@ std::vector<float> ReliefVisibleShareMap(const HeightField& hf, const ReliefFram
     throw std::runtime_error("aborted");
   }
   return share;
+}
+
+std::vector<float> ReliefSeenShareMap(const HeightField& hf, const ReliefFrame& frame,
+  const std::vector<float>& share, int width, int height, int count,
+  const ProgressCallback& progress)
+{
+  if (width < 1 || height < 1 || share.size() != 2 * static_cast<std::size_t>(width) * height)
+  {
+    throw std::invalid_argument(
+      "ReliefSeenShareMap: the visible-share map must hold two values per cell of the grid");
+  }
+  std::vector<float> seen(static_cast<std::size_t>(width) * height, 1.0f);
+  std::atomic<int> rowsDone{ 0 };
+  std::atomic<bool> stop{ false };
+  ParallelFor(0, static_cast<std::size_t>(height), 1,
+    [&](std::size_t begin, std::size_t end)
+    {
+      for (std::size_t j = begin; j < end && !stop; ++j)
+      {
+        const double v = (j + 0.5) / height;
+        for (int i = 0; i < width; ++i)
+        {
+          const double u = (i + 0.5) / width;
+          const glm::dvec3 hit(u, v, hf.DepthAt(u, v));
+          seen[j * width + i] = static_cast<float>(ReliefSeenShare(
+            hf, frame, hit, ReliefNormalAt(hf, frame, u, v), count, &share, width, height));
+        }
+        const int done = ++rowsDone;
+        if (!ReportProgress(progress, static_cast<double>(done) / height))
+        {
+          stop = true;
+        }
+      }
+    });
+  if (stop)
+  {
+    throw std::runtime_error("aborted");
+  }
+  return seen;
 }
 
 glm::dvec3 ProbeRadiance(const ReliefLighting& lighting, double u, double v, const glm::dvec3& w)
@@ -369,8 +474,11 @@ std::optional<ReliefShade> ShadeReliefRay(const HeightField& hf, const ReliefFra
   if (bounce)
   {
     // What an occluded direction sees: the relief, lit about as the flat wall is (see the header).
+    const double seenShare = lighting.InterReflection == ReliefInterReflection::MultiBounce
+      ? ReliefSeenShare(hf, frame, hit->point, shade.Normal, lighting.OcclusionDirections)
+      : 1.0;
     shade.InterReflected = ReliefInterReflected(lighting.InterReflection, 1.0 - occludedShare,
-      lighting.Albedo, ProbeIrradiance(lighting, u, v, frame.Normal) + flatDirect);
+      seenShare, lighting.Albedo, ProbeIrradiance(lighting, u, v, frame.Normal) + flatDirect);
     shade.Indirect += shade.InterReflected;
   }
   return shade;

@@ -80,10 +80,12 @@ struct ReliefLighting
   // wall's irradiance at (u, v) (the probes' SH irradiance at the macro normal plus the emitters'
   // unshadowed by the relief); with MultiBounce the seen relief is taken to be occluded like the
   // shaded point (visible share V, over the cosine-distributed directions) and to inter-reflect
-  // in turn: its irradiance is V E / (1 - Albedo (1 - V)), the geometric series of the
+  // in turn: its irradiance is Vs E / (1 - Albedo (1 - Vs)), the geometric series of the
   // ambient-occlusion multi-bounce (Stewart and Langer, "Towards accurate recovery of shape from
   // shading under diffuse lighting"; fitted by Jimenez et al., "Practical realtime strategies for
-  // accurate indirect occlusion"). Either adds (1 - V) Albedo E_seen to the indirect irradiance.
+  // accurate indirect occlusion"), Vs the visible share of the relief those directions meet
+  // (ReliefSeenShare: the series taken one bounce later, where a slot's bottom sees walls more
+  // enclosed than itself). Either adds (1 - V) Albedo E_seen to the indirect irradiance.
   // Needs OcclusionDirections > 0; a zero Albedo (the default here) means none.
   glm::dvec3 Albedo{ 0.0 };
   ReliefInterReflection InterReflection = ReliefInterReflection::MultiBounce;
@@ -148,12 +150,31 @@ MESOLIGHTEVALUATION_EXPORT double ReliefVisibleShare(const HeightField& hf,
   double* abovePlane = nullptr); // abovePlane: the share of the directions above the macro plane
 
 /**
+ * The mean visible share (ReliefVisibleShare, around its own normal: the side wall's on a walled
+ * relief's wall) of the relief points that the directions of ReliefVisibleShare at hit = (u, v, d)
+ * around n meet, over the directions that do not leave the relief (IntersectFirst); 1 when all
+ * leave it. The Vs of the multi-bounce inter-reflection (ReliefLighting::InterReflection). With
+ * `shareMap` (ReliefVisibleShareMap's pairs over a mapWidth x mapHeight grid) a point of the
+ * height field reads its share from the map (bilinear between cell centres, clamped), one met on
+ * a side wall is still marched: what the relief mapper's precomputed map holds.
+ */
+MESOLIGHTEVALUATION_EXPORT double ReliefSeenShare(const HeightField& hf, const ReliefFrame& frame,
+  const glm::dvec3& hit, const glm::dvec3& n, int count, const std::vector<float>* shareMap = nullptr,
+  int mapWidth = 0, int mapHeight = 0);
+
+/**
  * The light the relief reflects onto itself at a point of visible share V (ReliefLighting's
  * InterReflection): (1 - V) Albedo E_seen, E_seen = flatIrradiance (one bounce) or
- * V flatIrradiance / (1 - Albedo (1 - V)) (multi-bounce), flatIrradiance the flat wall's
- * irradiance there. The one formula of both relief renderers: ShadeReliefRay and the relief
- * mapper's probe shading (vtkReliefIrradianceProbesFS.glsl, mlReliefInterReflection) use it.
+ * Vs flatIrradiance / (1 - Albedo (1 - Vs)) (multi-bounce), flatIrradiance the flat wall's
+ * irradiance there and Vs the visible share of the relief the occluded directions meet
+ * (ReliefSeenShare). The one formula of both relief renderers: ShadeReliefRay and the relief
+ * mapper's probe shading (vtkReliefIrradianceProbesFS.glsl, mlProbeIndirect) use it.
  */
+MESOLIGHTEVALUATION_EXPORT glm::dvec3 ReliefInterReflected(ReliefInterReflection model,
+  double visibleShare, double seenShare, const glm::dvec3& albedo,
+  const glm::dvec3& flatIrradiance);
+
+/** The same with the seen relief taken to be occluded like the shaded point (Vs = V). */
 MESOLIGHTEVALUATION_EXPORT glm::dvec3 ReliefInterReflected(ReliefInterReflection model,
   double visibleShare, const glm::dvec3& albedo, const glm::dvec3& flatIrradiance);
 
@@ -170,6 +191,16 @@ MESOLIGHTEVALUATION_EXPORT glm::dvec3 ReliefInterReflected(ReliefInterReflection
  */
 MESOLIGHTEVALUATION_EXPORT std::vector<float> ReliefVisibleShareMap(const HeightField& hf,
   const ReliefFrame& frame, int width, int height, int count,
+  const ProgressCallback& progress = {});
+
+/**
+ * ReliefSeenShare over the grid of `share` (ReliefVisibleShareMap's output for the same width,
+ * height and count), read from that map: one value per cell, row-major, j slowest. The relief
+ * mapper's third channel of the map (vtkIrradianceProbesTexture). Parallel; progress and stop as
+ * ReliefVisibleShareMap.
+ */
+MESOLIGHTEVALUATION_EXPORT std::vector<float> ReliefSeenShareMap(const HeightField& hf,
+  const ReliefFrame& frame, const std::vector<float>& share, int width, int height, int count,
   const ProgressCallback& progress = {});
 
 } // namespace mesolight

@@ -13,15 +13,16 @@
 // visibility of the renderer's lights 0-3 and 4-7 from each probe (1 where not given).
 //
 // The relief's own occlusion and inter-reflection at near-zero cost per pixel: V, the
-// cosine-weighted share of the hemisphere leaving the relief, precomputed per texel on the
-// exact height-field intersector (ReliefVisibleShareMap), is looked up, not marched; the
-// probes' irradiance is scaled by it and the relief's multi-bounce inter-reflection added, the
-// model of the CPU renderer (ReliefInterReflected in evaluation/core/ReliefShading.h).
+// cosine-weighted share of the hemisphere leaving the relief, and Vs, that of the relief the
+// occluded directions meet, precomputed per texel on the exact height-field intersector
+// (ReliefVisibleShareMap, ReliefSeenShareMap), are looked up, not marched; the probes'
+// irradiance is scaled by it and the relief's multi-bounce inter-reflection added, the model of
+// the CPU renderer (ReliefInterReflected in evaluation/core/ReliefShading.h).
 
 uniform sampler2D mlIrradianceProbes;
 uniform vec2 mlProbeGrid; // (Nu, Nv)
-// Per cell of the relief: V, and V over the share of directions above the macro plane (the
-// share of the probes' light that reaches the point); 1 x 1 of (1, 1) without.
+// Per cell of the relief: V, V over the share of directions above the macro plane (the share
+// of the probes' light that reaches the point), and Vs; 1 x 1 of (1, 1, 1) without.
 uniform sampler2D mlReliefVisibleShare;
 
 #define ML_PROBE_BLOCKS 9.0
@@ -83,7 +84,7 @@ vec3 mlFlatLightIrradiance(vec3 posVC, vec3 macroVC, vec2 uv)
 
 // The relief's indirect irradiance at texture coordinates uv: the probes' SH9 irradiance at the
 // perturbed unit world normal n, times the visible share of their light, plus the relief's multi-bounce
-// inter-reflection (1 - V) a V E_flat / (1 - a (1 - V)), a the albedo, E_flat the flat wall's
+// inter-reflection (1 - V) a Vs E_flat / (1 - a (1 - Vs)), a the albedo, E_flat the flat wall's
 // irradiance (the probes' at the macro world normal m plus flatLights) -- ReliefInterReflected's
 // MultiBounce. With V = 1 (no map) this is the probes' irradiance alone.
 vec3 mlProbeIndirect(vec2 uv, vec3 n, vec3 m, vec3 albedo, vec3 flatLights)
@@ -97,7 +98,7 @@ vec3 mlProbeIndirect(vec2 uv, vec3 n, vec3 m, vec3 albedo, vec3 flatLights)
   vec4 c4 = textureLod(mlIrradianceProbes, st + vec2(0.0, 4.0 * block), 0.0);
   vec4 c5 = textureLod(mlIrradianceProbes, st + vec2(0.0, 5.0 * block), 0.0);
   vec4 c6 = textureLod(mlIrradianceProbes, st + vec2(0.0, 6.0 * block), 0.0);
-  vec2 share = clamp(textureLod(mlReliefVisibleShare, uv, 0.0).rg, 0.0, 1.0);
+  vec3 share = clamp(textureLod(mlReliefVisibleShare, uv, 0.0).rgb, 0.0, 1.0);
   float visible = share.r;
   vec3 irradiance = share.g * mlShIrradiance(c0, c1, c2, c3, c4, c5, c6, n);
   if (visible >= 1.0)
@@ -108,5 +109,5 @@ vec3 mlProbeIndirect(vec2 uv, vec3 n, vec3 m, vec3 albedo, vec3 flatLights)
   float occluded = 1.0 - visible;
   vec3 flatIrradiance = mlShIrradiance(c0, c1, c2, c3, c4, c5, c6, m) + flatLights;
   return irradiance +
-    occluded * a * flatIrradiance * visible / max(1.0 - a * occluded, vec3(1e-9));
+    occluded * a * flatIrradiance * share.b / max(1.0 - a * (1.0 - share.b), vec3(1e-9));
 }

@@ -15,6 +15,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <iostream>
 #include <vector>
 
 namespace
@@ -336,9 +337,12 @@ HeightField VGroove()
 // Independent reference: the irradiance at a relief point under uniform radiance L from the
 // room, with every inter-reflection inside the relief, by Monte-Carlo paths on the exact
 // height-field intersector (cosine sampling: each bounce on the albedo-a diffuse relief
-// multiplies the path by a; the path ends where it leaves the relief).
+// multiplies the path by a; the path ends where it leaves the relief). On a walled relief a path
+// that meets a side wall bounces off the wall's plane (RayHit::wall); startWall is the first
+// point's wall, if it lies on one.
 double PathTracedIrradiance(const HeightField& hf, const ReliefFrame& frame, glm::dvec3 point,
-  double radiance, double albedo, int paths, unsigned& state)
+  double radiance, double albedo, int paths, unsigned& state,
+  glm::dvec2 startWall = glm::dvec2(0.0))
 {
   const auto random = [&state]()
   {
@@ -349,10 +353,12 @@ double PathTracedIrradiance(const HeightField& hf, const ReliefFrame& frame, glm
   for (int p = 0; p < paths; ++p)
   {
     glm::dvec3 at = point;
+    glm::dvec2 wall = startWall; // on a walled relief's side wall: its normal
     double throughput = 1.0;
     for (int bounce = 0; bounce < 64 && throughput > 1e-4; ++bounce)
     {
-      const glm::dvec3 n = mesolight::ReliefNormalAt(hf, frame, at.x, at.y);
+      const glm::dvec3 n = wall != glm::dvec2(0.0) ? mesolight::ReliefWallNormal(frame, wall)
+                                                   : mesolight::ReliefNormalAt(hf, frame, at.x, at.y);
       const glm::dvec3 t = std::abs(n.z) < 0.9 ? glm::dvec3(0, 0, 1) : glm::dvec3(1, 0, 0);
       const glm::dvec3 x = glm::normalize(glm::cross(t, n));
       const glm::dvec3 y = glm::cross(n, x);
@@ -372,6 +378,7 @@ double PathTracedIrradiance(const HeightField& hf, const ReliefFrame& frame, glm
         break; // numerically lost: counts as dark (rare)
       }
       at = glm::dvec3(hit->point.x, hit->point.y, std::max(0.0, hit->point.z));
+      wall = hit->wall;
       throughput *= albedo;
     }
   }
@@ -450,6 +457,148 @@ TEST(ReliefShading, InterReflectionInAGrooveAgainstPathTracing)
   }
 }
 
+namespace
+{
+// The slot along the top edge of scripts/bench-vlf-relief.sh's procedural brick map, walled as a
+// relief on a wall is: 3 of 64 texels at depth 1 along v = 1, a bevel of 6 texels up to the
+// bricks at depth 0.05; as deep as in that bench, 4.3 times as deep as wide at the bottom.
+HeightField WalledSlot()
+{
+  const int n = 64;
+  std::vector<float> depth;
+  for (int j = 0; j < n; ++j)
+  {
+    for (int i = 0; i < n; ++i)
+    {
+      const int below = n - 1 - j; // texels below the top row
+      depth.push_back(below < 3 ? 1.0f
+          : below < 9           ? static_cast<float>(0.05 + 0.95 * (1.0 - (below - 2) / 7.0))
+                                : 0.05f);
+    }
+  }
+  return HeightField(n, n, depth, HeightField::Edge::Walled);
+}
+
+// The slot seen from below and in front, as the bench's camera sees the top edge: its side wall,
+// its bottom and the bevel. The indirect irradiance under uniform light by the method (the
+// multi-bounce series at the seen relief's visible share) and by the series at the shaded point's
+// own share, against paths bouncing in the walled slot: mean relative errors and ratios.
+void WalledSlotErrors(double& seen, double& own, double& seenRatio, double& ownRatio, int& walls)
+{
+  const HeightField hf = WalledSlot();
+  ReliefFrame frame = Square();
+  frame.DepthScale = 0.2;
+  const double radiance = 1.0, albedo = 0.7;
+  ReliefLighting lighting;
+  mesolight::SH9 sh; // uniform radiance: L00 = 2 sqrt(pi) L
+  for (int c = 0; c < 3; ++c)
+  {
+    sh.L[0][c] = 2.0 * std::sqrt(mesolight::Pi<double>) * radiance;
+  }
+  lighting.Probes = { sh };
+  lighting.Albedo = glm::dvec3(albedo);
+  const glm::dvec3 eye(0.5, 0.6, 1.0);
+  const double flat = mesolight::Pi<double> * radiance; // the flat wall's irradiance
+  unsigned state = 4321u;
+  seen = own = seenRatio = ownRatio = 0.0;
+  walls = 0;
+  int hits = 0;
+  for (int k = 0; k < 24; ++k)
+  {
+    const glm::dvec3 target(0.5, 0.86 + 0.14 * (k + 0.5) / 24.0, 0.0);
+    const auto shade =
+      mesolight::ShadeReliefRay(hf, frame, lighting, eye, glm::normalize(target - eye));
+    if (!shade || shade->Texture.z < 0.3)
+    {
+      continue; // the slot and the lower bevel only
+    }
+    const glm::dvec2 wall(0.0, shade->Texture.y >= 1.0 ? -1.0 : 0.0);
+    walls += wall.y != 0.0 ? 1 : 0;
+    const double reference = PathTracedIrradiance(
+      hf, frame, shade->Texture, radiance, albedo, 4000, state, wall);
+    // With uniform light the radiance-weighted share is the cosine-weighted V.
+    const double v = shade->IndirectVisible;
+    const double ownSeries = shade->Indirect.x - shade->InterReflected.x +
+      mesolight::ReliefInterReflected(mesolight::ReliefInterReflection::MultiBounce, v,
+        glm::dvec3(albedo), glm::dvec3(flat)).x;
+    seen += std::abs(shade->Indirect.x - reference) / reference;
+    own += std::abs(ownSeries - reference) / reference;
+    seenRatio += shade->Indirect.x / reference;
+    ownRatio += ownSeries / reference;
+    ++hits;
+  }
+  EXPECT_GT(hits, 12);
+  seen /= hits;
+  own /= hits;
+  seenRatio /= hits;
+  ownRatio /= hits;
+}
+} // namespace
+
+// The walled slot along a relief's top edge (scripts/bench-vlf-relief.sh's procedural map): its
+// bottom and side wall see mostly the slot's own walls, deeper and more enclosed than themselves.
+// The multi-bounce series at the seen relief's visible share (ReliefSeenShare) against paths
+// bouncing in the slot; the negative case, the series at the shaded point's own share (the
+// relief seen taken to be occluded like the shaded point), is off by twice as much.
+TEST(ReliefShading, InterReflectionInAWalledSlotAgainstPathTracing)
+{
+  double seen = 0.0, own = 0.0, seenRatio = 0.0, ownRatio = 0.0;
+  int walls = 0;
+  WalledSlotErrors(seen, own, seenRatio, ownRatio, walls);
+  std::cout << "indirect light in a walled slot (albedo 0.7, " << walls
+            << " points on its side wall), mean relative error against path tracing (mean "
+               "ratio): seen share "
+            << seen << " (" << seenRatio << "), the shaded point's own share " << own << " ("
+            << ownRatio << ")\n";
+  EXPECT_GT(walls, 2);
+  EXPECT_LT(seen, 0.08); // measured 0.056
+  EXPECT_GT(own, 0.1);   // measured 0.124: too bright on the bottom, too dark on the wall
+  EXPECT_GT(own, 1.8 * seen);
+}
+
+// The relief mapper's seen-share map (ReliefSeenShareMap: the seen points' shares read from the
+// visible-share map) against ReliefSeenShare marched at every seen point, over the walled slot's
+// rows: close, and far from the cells' own share (the negative case, what the map held before).
+TEST(ReliefShading, SeenShareMapFollowsTheMarchedSeenShare)
+{
+  const HeightField hf = WalledSlot();
+  ReliefFrame frame = Square();
+  frame.DepthScale = 0.2;
+  const int w = 8, h = 64, count = 32;
+  const std::vector<float> share = mesolight::ReliefVisibleShareMap(hf, frame, w, h, count);
+  const std::vector<float> seen =
+    mesolight::ReliefSeenShareMap(hf, frame, share, w, h, count);
+  ASSERT_EQ(seen.size(), static_cast<std::size_t>(w * h));
+  double sumError = 0.0, sumOwn = 0.0;
+  int cells = 0;
+  for (int j = h - 12; j < h; ++j) // the slot and its bevel
+  {
+    for (int i = 0; i < w; ++i)
+    {
+      const double u = (i + 0.5) / w, v = (j + 0.5) / h;
+      const glm::dvec3 hit(u, v, hf.DepthAt(u, v));
+      const double marched = mesolight::ReliefSeenShare(
+        hf, frame, hit, mesolight::ReliefNormalAt(hf, frame, u, v), count);
+      if (share[2 * (j * w + i)] >= 1.0f)
+      {
+        EXPECT_EQ(seen[j * w + i], 1.0f); // nothing occluded: nothing seen
+        continue;
+      }
+      sumError += std::abs(seen[j * w + i] - marched);
+      sumOwn += std::abs(share[2 * (j * w + i)] - marched);
+      ++cells;
+    }
+  }
+  ASSERT_GT(cells, 40);
+  std::cout << "seen share over " << cells << " cells of a walled slot: map against marched, mean "
+            << "|error| " << sumError / cells << "; the cells' own share (negative) "
+            << sumOwn / cells << "\n";
+  EXPECT_LT(sumError / cells, 0.03);
+  EXPECT_GT(sumOwn / cells, 3.0 * sumError / cells);
+  EXPECT_THROW(mesolight::ReliefSeenShareMap(hf, frame, share, w + 1, h, count),
+    std::invalid_argument);
+}
+
 // The relief mapper's visible-share map (ReliefVisibleShareMap) against the analytic view factor
 // of a V-groove as deep as wide, infinitely long (the height field's clamp extends it along v):
 // from a point of a wall, the cosine-weighted share of the hemisphere leaving through the
@@ -525,4 +674,14 @@ TEST(ReliefShading, InterReflectedFormula)
   EXPECT_EQ(mesolight::ReliefInterReflected(ReliefInterReflection::None, 0.6, a, e), glm::dvec3(0.0));
   EXPECT_EQ(
     mesolight::ReliefInterReflected(ReliefInterReflection::MultiBounce, 1.0, a, e), glm::dvec3(0.0));
+  // The series at the seen relief's share Vs: (1 - V) a Vs E / (1 - a (1 - Vs)); Vs = V is the
+  // four-argument form.
+  const glm::dvec3 seen =
+    mesolight::ReliefInterReflected(ReliefInterReflection::MultiBounce, 0.6, 0.3, a, e);
+  for (int c = 0; c < 3; ++c)
+  {
+    EXPECT_NEAR(seen[c], 0.4 * a[c] * 0.3 * e[c] / (1.0 - a[c] * 0.7), 1e-12);
+  }
+  EXPECT_EQ(mesolight::ReliefInterReflected(ReliefInterReflection::MultiBounce, 0.6, 0.6, a, e),
+    multi);
 }

@@ -622,10 +622,12 @@ TEST(ReliefIrradianceProbes, ProbesAddToALightSetAndAreToneMappedByDefault)
 
 // The relief's precomputed occlusion (vtkIrradianceProbesTexture's visible-share map and the
 // probes' fourth component, the scene's visibility of each light): on a flat relief under
-// constant radiance L, a uniform map (V, S) gives albedo / pi x (S pi L + the multi-bounce
-// inter-reflection of V), the formula of the CPU renderer (ReliefInterReflected); a light seen
-// by a quarter from every probe gives a quarter of its light. Negative: the map left out gives
-// albedo x L. A map of the wrong size is reported and the probes left out.
+// constant radiance L, a uniform map (V, S, Vs) gives albedo / pi x (S pi L + the multi-bounce
+// inter-reflection of V at the seen share Vs), the formula of the CPU renderer
+// (ReliefInterReflected), and a map of pairs (V, S) the series at Vs = V; a light seen by a
+// quarter from every probe gives a quarter of its light. Negative: the map left out gives
+// albedo x L, and the triple's Vs ignored the pair's value. A map of the wrong size is reported
+// and the probes left out.
 TEST(ReliefIrradianceProbes, VisibleShareAndLightVisibilityFollowTheCpuFormula)
 {
   Scene scene;
@@ -633,17 +635,23 @@ TEST(ReliefIrradianceProbes, VisibleShareAndLightVisibilityFollowTheCpuFormula)
   const glm::dvec3 albedo(0.8, 0.6, 0.4);
   scene.Actor->GetProperty()->SetColor(albedo.x, albedo.y, albedo.z);
   const glm::dvec3 radiance(0.9, 0.7, 0.5);
-  const double visible = 0.5, sky = 0.8;
+  const double visible = 0.5, sky = 0.8, seenShare = 0.35;
   vtkSmartPointer<vtkImageData> probes = ProbeImage(1, 1, { ConstantRadiance(radiance) });
-  const auto attach = [&probes, visible, sky](int w, int h, vtkIdType tuples)
+  const auto attach = [&probes, visible, sky, seenShare](
+                        int w, int h, vtkIdType tuples, int components = 3)
   {
     vtkNew<vtkFloatArray> share;
     share->SetName("ReliefVisibleShare");
-    share->SetNumberOfComponents(2);
+    share->SetNumberOfComponents(components);
     share->SetNumberOfTuples(tuples);
     for (vtkIdType t = 0; t < tuples; ++t)
     {
-      share->SetTuple2(t, visible, sky);
+      share->SetComponent(t, 0, visible);
+      share->SetComponent(t, 1, sky);
+      if (components == 3)
+      {
+        share->SetComponent(t, 2, seenShare);
+      }
     }
     vtkNew<vtkIntArray> size;
     size->SetName("ReliefVisibleShareSize");
@@ -656,6 +664,10 @@ TEST(ReliefIrradianceProbes, VisibleShareAndLightVisibilityFollowTheCpuFormula)
   attach(4, 4, 16);
   scene.Mapper->SetIrradianceProbesData(probes);
   const glm::dvec3 expected = albedo / vtkMath::Pi() *
+    (sky * vtkMath::Pi() * radiance +
+      ReliefInterReflected(ReliefInterReflection::MultiBounce, visible, seenShare, albedo,
+        vtkMath::Pi() * radiance));
+  const glm::dvec3 expectedPairs = albedo / vtkMath::Pi() *
     (sky * vtkMath::Pi() * radiance +
       ReliefInterReflected(
         ReliefInterReflection::MultiBounce, visible, albedo, vtkMath::Pi() * radiance));
@@ -681,6 +693,15 @@ TEST(ReliefIrradianceProbes, VisibleShareAndLightVisibilityFollowTheCpuFormula)
   std::cout << "[visible share] " << covered << " pixels, worst |error| " << worst << " levels\n";
   EXPECT_GT(covered, Pixels * Pixels / 4);
   EXPECT_LE(worst, 1.5);
+  // Negative: the seen share ignored (the pair's series) is off by more than the quantization.
+  EXPECT_GT(worstError(Render(scene), expectedPairs, covered), 4.0);
+  // A map of pairs: the series at the point's own share.
+  probes = ProbeImage(1, 1, { ConstantRadiance(radiance) });
+  attach(4, 4, 16, 2);
+  scene.Mapper->SetIrradianceProbesData(probes);
+  const double worstPairs = worstError(Render(scene), expectedPairs, covered);
+  std::cout << "[visible share pairs] worst |error| " << worstPairs << " levels\n";
+  EXPECT_LE(worstPairs, 1.5);
   // Negative: without the map the relief is albedo x L, far from the occluded value.
   vtkSmartPointer<vtkImageData> plain = ProbeImage(1, 1, { ConstantRadiance(radiance) });
   scene.Mapper->SetIrradianceProbesData(plain);
