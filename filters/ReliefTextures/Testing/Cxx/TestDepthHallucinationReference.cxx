@@ -391,10 +391,11 @@ TEST(HallucinationScales, ChosenScaleFollowsTheFeatureSize)
   }
 }
 
-// The default (the scale average) beats both naive baselines on both surfaces: on the holes
-// where the previous defaults did not (measured: scale average 0.943, diffuse/flash ratio 0.930,
-// inverted brightness 0.563; the automatic layer count 0.918, five layers without the residual
-// layer 0.872), and on the panels by a margin (0.760 against 0.573 and 0.189).
+// The default (the ratio model's scale average) beats both naive baselines on both surfaces: on
+// the holes where older defaults did not (measured: 0.940, the shading's equal-weight average
+// 0.943, diffuse/flash ratio 0.930, inverted brightness 0.563; the automatic layer count 0.918,
+// five layers without the residual layer 0.872), and on the panels by a margin (0.696, the
+// shading's average 0.760, against 0.573 and 0.189).
 // Negative: a single scale fails. On the holes the previous automatic count and the old fixed
 // five layers stay below the ratio; on the panels the finest layer alone (0.600) stays within
 // 0.1 of the ratio.
