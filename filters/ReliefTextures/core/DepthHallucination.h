@@ -32,9 +32,15 @@
  *     depth = DepthScale * (sum_k (ValleyWeight * valley_k - HillWeight * hill_k)
  *     + ValleyWeight * residual), in texels. The widest layer must match the features, and
  *     the best layer count differs from surface to surface (1 to 8 on real height maps); by
- *     default the depths of every count K = 1, 2, ... the photograph holds are averaged,
- *     each weighted by the inverse of its spread (a scale average: Lindeberg's scale space
- *     without a selection of one scale), which keeps it in texels;
+ *     default the depths of every count K = 1, 2, ... the photograph holds are averaged
+ *     (a scale average: Lindeberg's scale space without a selection of one scale), each
+ *     weighted by c_K^2 / its spread, c_K the correlation of its depth with the darkness of
+ *     the image the layers read, which keeps it in texels (HallucinationModel::Shading: by
+ *     1 / its spread, an equal say per count);
+ *  4. What the layers read (HallucinationModel): by default not the shading S but the
+ *     diffuse/flash ratio lum(I_d) / (lum(I_d) + lum(albedo)) = S / (S + 1) in units of the
+ *     flash, the scale-free "dark is deep" cue of a flash pair, which compresses the bright
+ *     open surfaces where the flash-pair albedo is least sure;
  *     the output is that depth stretched to [0, 1] (0 = highest point, 1 = deepest, the
  *     project's convention) and its range in texels (DepthRangeTexels).
  *
@@ -205,8 +211,9 @@ MESOLIGHTRELIEFTEXTURES_EXPORT HallucinationResult HallucinateDepth(const RgbIma
  * (w x h, 1 = open sky): HallucinateDepth passes HallucinationResult::Ratio under
  * HallucinationModel::Ratio, HallucinationResult::Shading under HallucinationModel::Shading.
  * With Layers 0 and HallucinationModel::Ratio each layer count's depth is weighted by its
- * squared correlation with the input image's darkness (-image); the result is then in units of
- * spreads, not texels. Empty when progress aborts. Exposed for tests and the benchmark.
+ * squared correlation with the input image's darkness (-image) over its spread (a weighted mean
+ * of the counts' depths, still in texels). Empty when progress aborts. Exposed for tests and the
+ * benchmark.
  */
 MESOLIGHTRELIEFTEXTURES_EXPORT std::vector<float> DepthFromShading(
   const std::vector<float>& shading, int w, int h, const HallucinationSettings& settings = {},
