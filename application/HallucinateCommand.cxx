@@ -68,6 +68,24 @@ bool GetHallucinationLayers(const CommandLine& cl, int& layers, std::string& err
   return cl.GetInt("--layers", 1, 12, layers, error);
 }
 
+// --model: "ratio" (the default) or "shading" (the previous model).
+bool GetHallucinationModel(const CommandLine& cl, HallucinationModel& model, std::string& error)
+{
+  const std::string value = cl.Get("--model");
+  if (value == "ratio" || value.empty())
+  {
+    model = HallucinationModel::Ratio;
+    return true;
+  }
+  if (value == "shading")
+  {
+    model = HallucinationModel::Shading;
+    return true;
+  }
+  error = "--model must be ratio or shading, not " + value;
+  return false;
+}
+
 // An RGB (or grey) image file as RgbImage; false if unreadable.
 bool ReadRgb(const std::string& file, RgbImage& out)
 {
@@ -122,6 +140,10 @@ int RunHallucinateCommand(const std::vector<std::string>& args)
     "scale layers; sigma 1, 2, 4, ... texels (average: every\ncount the photograph holds, "
     "averaged; auto: one count\nfrom the photographs' octave energies)",
     "average");
+  cl.AddValue("--model", "NAME",
+    "ratio: layers of the diffuse/flash ratio, each count\nweighted by its agreement with it; "
+    "shading: the previous\nmodel, layers of the shading, equal weights",
+    "ratio");
   cl.AddValue("--residual-weight", "W",
     "sigma of the residual layer (the widest layer against\nthe open sky) in widest sigmas; 0: "
     "none",
@@ -141,8 +163,9 @@ int RunHallucinateCommand(const std::vector<std::string>& args)
   std::string error;
   double depthScale = 1.0, hill = 1.0, valley = 1.0, residual = 8.0;
   int layers = 0; // the scale average
+  HallucinationModel model = HallucinationModel::Ratio;
   if (!cl.GetDouble("--depth-scale", 1e-6, 1e6, depthScale, error) ||
-    !GetHallucinationLayers(cl, layers, error) ||
+    !GetHallucinationLayers(cl, layers, error) || !GetHallucinationModel(cl, model, error) ||
     !cl.GetDouble("--hill-weight", 0.0, 100.0, hill, error) ||
     !cl.GetDouble("--valley-weight", 0.0, 100.0, valley, error) ||
     !cl.GetDouble("--residual-weight", 0.0, 100.0, residual, error))
@@ -205,6 +228,7 @@ int RunHallucinateCommand(const std::vector<std::string>& args)
   }
   filter->SetDepthScale(depthScale);
   filter->SetNumberOfLayers(layers);
+  filter->SetUseRatio(model == HallucinationModel::Ratio ? 1 : 0);
   filter->SetHillWeight(hill);
   filter->SetValleyWeight(valley);
   filter->SetResidualWeight(residual);
@@ -361,6 +385,10 @@ int RunHallucinationBenchmark(const std::vector<std::string>& args)
     "scale layers of the model (average: every count averaged;\nauto: one count from the "
     "octave energies)",
     "average");
+  cl.AddValue("--model", "NAME",
+    "ratio: layers of the diffuse/flash ratio, each count\nweighted by its agreement with it; "
+    "shading: the previous\nmodel, layers of the shading, equal weights",
+    "ratio");
   cl.AddValue("--sweep", "LIST",
     "also run the model with each of these fixed layer counts\n(e.g. 1,2,3,4,5,6,7,8,9): the "
     "summary names the best");
@@ -380,7 +408,8 @@ int RunHallucinationBenchmark(const std::vector<std::string>& args)
   int size = 128, samples = 32, layers = 0;
   double relief = 8.0;
   std::vector<int> sweep;
-  if (!cl.GetInt("--size", 8, 2048, size, error) ||
+  HallucinationModel model = HallucinationModel::Ratio;
+  if (!GetHallucinationModel(cl, model, error) || !cl.GetInt("--size", 8, 2048, size, error) ||
     !cl.GetInt("--samples", 1, 4096, samples, error) ||
     !GetHallucinationLayers(cl, layers, error) || !cl.GetDouble("--relief", 0.01, 1000.0, relief, error) ||
     (cl.Has("--sweep") && !cl.GetIntList("--sweep", 1, 12, sweep, error)))
@@ -405,7 +434,8 @@ int RunHallucinationBenchmark(const std::vector<std::string>& args)
   std::ostringstream csv, summaryCsv;
   csv << "map,width,height,relief_texels,samples,method,layers,correlation,mae_texels,"
          "best_constant_mae_texels,depth_range_texels,albedo_relative_error,render_s,filter_s\n";
-  summaryCsv << "map,width,height,default_layers,default_correlation,auto_layers,"
+  summaryCsv << "map,width,height,default_layers,default_correlation,"
+                "previous_default_correlation,auto_layers,"
                 "feature_size_texels,auto_correlation,old_default_correlation,best_fixed_layers,"
                 "best_fixed_correlation,inverted_brightness_correlation,flash_ratio_correlation\n";
   struct Summary
@@ -413,7 +443,8 @@ int RunHallucinationBenchmark(const std::vector<std::string>& args)
     std::string Map;
     int Layers = 0, AutoLayers = 0;
     float Feature = 0.0f;
-    double Default = 0.0, Auto = 0.0, Best = -2.0, Five = 0.0, Brightness = 0.0, Ratio = 0.0;
+    double Default = 0.0, Previous = 0.0, Auto = 0.0, Best = -2.0, Five = 0.0, Brightness = 0.0,
+           Ratio = 0.0;
     int BestLayers = 0;
     std::vector<double> Sweep;
     std::vector<int> SweepLayers;
@@ -518,6 +549,7 @@ int RunHallucinationBenchmark(const std::vector<std::string>& args)
     const double renderSeconds = SecondsSince(start);
     HallucinationSettings settings;
     settings.Layers = layers;
+    settings.Model = model;
     start = std::chrono::steady_clock::now();
     HallucinationResult result, uncalibrated, ideal;
     double filterSeconds = 0.0;
@@ -578,8 +610,14 @@ int RunHallucinationBenchmark(const std::vector<std::string>& args)
     summary.Map = label;
     summary.Layers = result.Layers;
     {
-      // The automatic layer count, and the model as it was before the residual layer (five
-      // layers, none): the same photographs, the same shading.
+      // The previous default (the shading's scale average, equal weights), the automatic layer
+      // count, and the model as it was before the residual layer (five layers, none): the same
+      // photographs, the same shading.
+      HallucinationSettings previous = settings;
+      previous.Layers = 0;
+      previous.Model = HallucinationModel::Shading;
+      methods.push_back({ "model-shading-average",
+        DepthFromShading(result.Shading, w, h, previous), result.Layers });
       HallucinationSettings automatic = settings;
       automatic.Layers = 0;
       const HallucinationScale chosen = ChooseHallucinationLayers(result.Shading, w, h);
@@ -595,6 +633,9 @@ int RunHallucinationBenchmark(const std::vector<std::string>& args)
         { "model-5-layers-no-residual", DepthFromShading(result.Shading, w, h, old), 5 });
     }
     const int longest = std::max(w, h);
+    // The sweep reads what the model reads (the ratio, or the shading under --model shading).
+    const std::vector<float>& layerInput =
+      model == HallucinationModel::Ratio ? result.Ratio : result.Shading;
     for (int n : sweep)
     {
       if ((1 << (n - 1)) > longest)
@@ -604,7 +645,7 @@ int RunHallucinationBenchmark(const std::vector<std::string>& args)
       HallucinationSettings fixed = settings;
       fixed.Layers = n;
       methods.push_back(
-        { "model-layers-" + std::to_string(n), DepthFromShading(result.Shading, w, h, fixed), n });
+        { "model-layers-" + std::to_string(n), DepthFromShading(layerInput, w, h, fixed), n });
     }
     for (const auto& method : methods)
     {
@@ -629,6 +670,10 @@ int RunHallucinationBenchmark(const std::vector<std::string>& args)
       {
         summary.Ratio = a.Correlation;
       }
+      else if (method.Name == "model-shading-average")
+      {
+        summary.Previous = a.Correlation;
+      }
       else if (method.Name == "model-auto")
       {
         summary.Auto = a.Correlation;
@@ -649,7 +694,7 @@ int RunHallucinationBenchmark(const std::vector<std::string>& args)
       }
     }
     summaryCsv << label << "," << w << "," << h << "," << summary.Layers << "," << summary.Default
-               << "," << summary.AutoLayers << "," << summary.Feature << "," << summary.Auto << ","
+               << "," << summary.Previous << "," << summary.AutoLayers << "," << summary.Feature << "," << summary.Auto << ","
                << summary.Five << "," << summary.BestLayers << "," << summary.Best << ","
                << summary.Brightness << "," << summary.Ratio << "\n";
     summaries.push_back(summary);
@@ -678,26 +723,29 @@ int RunHallucinationBenchmark(const std::vector<std::string>& args)
   // The summary: the default against the best fixed layer count and both naive baselines.
   std::cout << "\n"
             << std::left << std::setw(24) << "map" << std::right << std::setw(9) << "default"
-            << std::setw(7) << "(N)" << std::setw(8) << "auto" << std::setw(5) << "(N)"
+            << std::setw(7) << "(N)" << std::setw(10) << "previous" << std::setw(8) << "auto"
+            << std::setw(5) << "(N)"
             << std::setw(9) << "feature" << std::setw(9) << "old" << std::setw(8) << "best"
             << std::setw(5) << "(N)" << std::setw(12) << "brightness" << std::setw(8) << "ratio"
             << "  default beats both\n";
-  double meanDefault = 0.0, meanAuto = 0.0, meanFive = 0.0, meanBest = 0.0;
-  int beaten = 0, autoBeaten = 0, fiveBeaten = 0;
+  double meanDefault = 0.0, meanPrevious = 0.0, meanAuto = 0.0, meanFive = 0.0, meanBest = 0.0;
+  int beaten = 0, previousBeaten = 0, autoBeaten = 0, fiveBeaten = 0;
   const double count = static_cast<double>(std::max<std::size_t>(1, summaries.size()));
   for (const Summary& s : summaries)
   {
     const bool beats = s.Default > s.Brightness && s.Default > s.Ratio;
     beaten += beats ? 1 : 0;
+    previousBeaten += (s.Previous > s.Brightness && s.Previous > s.Ratio) ? 1 : 0;
     autoBeaten += (s.Auto > s.Brightness && s.Auto > s.Ratio) ? 1 : 0;
     fiveBeaten += (s.Five > s.Brightness && s.Five > s.Ratio) ? 1 : 0;
     meanDefault += s.Default / count;
+    meanPrevious += s.Previous / count;
     meanAuto += s.Auto / count;
     meanFive += s.Five / count;
     meanBest += (s.BestLayers ? s.Best : 0.0) / count;
     std::cout << std::left << std::setw(24) << s.Map << std::right << std::fixed
               << std::setprecision(3) << std::setw(9) << s.Default << std::setw(7) << s.Layers
-              << std::setw(8) << s.Auto << std::setw(5) << s.AutoLayers << std::setprecision(1)
+              << std::setw(10) << s.Previous << std::setw(8) << s.Auto << std::setw(5) << s.AutoLayers << std::setprecision(1)
               << std::setw(9) << s.Feature << std::setprecision(3) << std::setw(9) << s.Five
               << std::setw(8) << (s.BestLayers ? s.Best : 0.0) << std::setw(5) << s.BestLayers
               << std::setw(12) << s.Brightness << std::setw(8) << s.Ratio << "  "
@@ -705,7 +753,8 @@ int RunHallucinationBenchmark(const std::vector<std::string>& args)
   }
   std::cout << std::setprecision(3) << "mean correlation: default " << meanDefault
             << " (beats both baselines on " << beaten << " of " << summaries.size()
-            << " maps), automatic layers " << meanAuto << " (" << autoBeaten
+            << " maps), previous default (shading, equal weights) " << meanPrevious << " ("
+            << previousBeaten << "), automatic layers " << meanAuto << " (" << autoBeaten
             << "), old default (5 layers, no residual) " << meanFive << " (" << fiveBeaten << ")";
   if (!sweep.empty())
   {

@@ -156,6 +156,8 @@ int vtkDepthHallucinationFilter::RequestData(
   }
   mesolight::HallucinationSettings settings;
   settings.Layers = this->NumberOfLayers;
+  settings.Model = this->UseRatio ? mesolight::HallucinationModel::Ratio
+                                  : mesolight::HallucinationModel::Shading;
   settings.BaseSigma = static_cast<float>(this->BaseSigma);
   settings.DepthScale = static_cast<float>(this->DepthScale);
   settings.ValleyWeight = static_cast<float>(this->ValleyWeight);
@@ -216,6 +218,7 @@ void vtkDepthHallucinationFilter::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "DepthScale: " << this->DepthScale << "\n";
   os << indent << "NumberOfLayers: " << this->NumberOfLayers << "\n";
+  os << indent << "UseRatio: " << this->UseRatio << "\n";
   os << indent << "BaseSigma: " << this->BaseSigma << "\n";
   os << indent << "ValleyWeight: " << this->ValleyWeight << "\n";
   os << indent << "HillWeight: " << this->HillWeight << "\n";

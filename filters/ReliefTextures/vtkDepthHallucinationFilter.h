@@ -63,6 +63,17 @@ public:
   ///@}
 
   ///@{
+  /**
+   * 1 (the default): the layers read the diffuse/flash ratio and the scale average weighs each
+   * layer count by its agreement with it (HallucinationModel::Ratio); 0: the previous model, the
+   * layers read the shading and every count has an equal say (HallucinationModel::Shading).
+   */
+  vtkSetClampMacro(UseRatio, int, 0, 1);
+  vtkGetMacro(UseRatio, int);
+  vtkBooleanMacro(UseRatio, int);
+  ///@}
+
+  ///@{
   /** Weights of the valley (visible aperture) and hill (orientation to the sky) laws. */
   vtkSetClampMacro(ValleyWeight, double, 0.0, 100.0);
   vtkGetMacro(ValleyWeight, double);
@@ -101,6 +112,7 @@ protected:
 
   double DepthScale = 1.0;
   int NumberOfLayers = 0;
+  int UseRatio = 1;
   double BaseSigma = 1.0;
   double ValleyWeight = 1.0;
   double HillWeight = 1.0;

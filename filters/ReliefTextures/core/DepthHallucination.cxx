@@ -391,8 +391,28 @@ std::vector<float> DepthFromShading(const std::vector<float>& shading, int w, in
   // wrongly on a third of them), so all are averaged with equal say: weights inversely
   // proportional to each hypothesis' spread (the widest layer's sigma would otherwise decide),
   // which keeps the result in texels.
-  std::vector<float> hypothesis(average ? n : 0), sum(average ? n : 0, 0.0f);
-  double weightSum = 0.0;
+  // Under HallucinationModel::Ratio the counts do not get an equal say: each is weighted by its
+  // squared correlation with the input's own darkness (the ratio image, the paper's "dark is
+  // deep" cue, which does not depend on a scale): the counts whose structure the image shows
+  // count, those that invent broad shape the image does not hold fade out (measured on real
+  // height maps: docs/hallucination.md). Equal weights are kept alongside, for an input no
+  // count agrees with.
+  const bool agreement = average && settings.Model == HallucinationModel::Ratio;
+  double darkMean = 0.0, darkSpread = 0.0;
+  if (agreement)
+  {
+    double square = 0.0;
+    for (const float s : floored)
+    {
+      darkMean -= s;
+      square += static_cast<double>(s) * s;
+    }
+    darkMean /= static_cast<double>(n);
+    darkSpread = std::sqrt(std::max(0.0, square / static_cast<double>(n) - darkMean * darkMean));
+  }
+  std::vector<float> hypothesis(average ? n : 0), sum(average ? n : 0, 0.0f),
+    agreed(agreement ? n : 0, 0.0f);
+  double weightSum = 0.0, agreedSum = 0.0;
   for (int k = 1; k <= layers; ++k)
   {
     if (!ReportProgress(progress, static_cast<double>(k - 1) / layers))
@@ -439,16 +459,44 @@ std::vector<float> DepthFromShading(const std::vector<float>& shading, int w, in
         {
           sum[p] += static_cast<float>(weight * hypothesis[p]);
         }
+        if (agreement && darkSpread > 1e-12)
+        {
+          // Pearson correlation of this count's depth with -image.
+          double covariance = 0.0;
+          for (std::size_t p = 0; p < n; ++p)
+          {
+            covariance += (hypothesis[p] - mean) * (-floored[p] - darkMean);
+          }
+          const double c =
+            std::max(0.0, covariance / (static_cast<double>(n) * spread * darkSpread));
+          const double agreedWeight = c * c / spread;
+          agreedSum += agreedWeight;
+          for (std::size_t p = 0; p < n; ++p)
+          {
+            agreed[p] += static_cast<float>(agreedWeight * (hypothesis[p] - mean));
+          }
+        }
       }
     }
   }
   if (average)
   {
     // A uniform shading gives flat hypotheses (no weight): the depth stays flat.
-    const float inverse = weightSum > 0.0 ? static_cast<float>(1.0 / weightSum) : 0.0f;
-    for (std::size_t p = 0; p < n; ++p)
+    if (agreedSum > 0.0)
     {
-      depth[p] = sum[p] * inverse;
+      const float inverse = static_cast<float>(1.0 / agreedSum);
+      for (std::size_t p = 0; p < n; ++p)
+      {
+        depth[p] = agreed[p] * inverse;
+      }
+    }
+    else
+    {
+      const float inverse = weightSum > 0.0 ? static_cast<float>(1.0 / weightSum) : 0.0f;
+      for (std::size_t p = 0; p < n; ++p)
+      {
+        depth[p] = sum[p] * inverse;
+      }
     }
   }
   else if (settings.ResidualWeight > 0.0f)
@@ -666,13 +714,34 @@ HallucinationResult HallucinateDepth(const RgbImage& diffuse, const RgbImage& fl
     s = (s < 0.0f || !(open > 0.0f)) ? 1.0f : std::min(1.0f, s / open);
   }
 
-  // 3. Depth from the shading layers: by default the average over every layer count the
-  // photograph holds (DepthFromShading); -1: the count the octave energies choose; or fixed.
+  // The diffuse/flash ratio with the flash's fall-off divided out: lum(I_d) / (lum(I_d) +
+  // lum(albedo)), which is I_d / I_f without a card. It is a monotonic function of the sky's
+  // share of the light, S / (S + 1) in units of the flash: the shading compressed where it is
+  // bright, where the flash-pair albedo is least sure (its cosine to the flash, bounced light)
+  // and open surfaces differ least in depth. 1 at its maximum.
+  result.Ratio.assign(n, 1.0f);
+  float ratioMax = 0.0f;
+  for (std::size_t p = 0; p < n; ++p)
+  {
+    const float d = std::max(0.0f, RgbLuminance(&diffuse.Rgb[3 * p]));
+    const float total = d + albedoLuminance[p];
+    result.Ratio[p] = total > 0.0f ? d / total : 1.0f;
+    ratioMax = std::max(ratioMax, result.Ratio[p]);
+  }
+  for (float& r : result.Ratio)
+  {
+    r = ratioMax > 0.0f ? r / ratioMax : 1.0f;
+  }
+  const std::vector<float>& layerInput =
+    settings.Model == HallucinationModel::Ratio ? result.Ratio : result.Shading;
+
+  // 3. Depth from the layers: by default the average over every layer count the photograph
+  // holds (DepthFromShading); -1: the count the octave energies choose; or fixed.
   HallucinationSettings used = settings;
   if (used.Layers == -1)
   {
     const HallucinationScale scale =
-      ChooseHallucinationLayers(result.Shading, w, h, settings.BaseSigma, settings.Threads);
+      ChooseHallucinationLayers(layerInput, w, h, settings.BaseSigma, settings.Threads);
     used.Layers = scale.Layers;
     result.FeatureSizeTexels = scale.FeatureSizeTexels;
   }
@@ -682,7 +751,7 @@ HallucinationResult HallucinateDepth(const RgbImage& diffuse, const RgbImage& fl
     throw HallucinationAbortedError();
   }
   std::vector<float> depth =
-    DepthFromShading(result.Shading, w, h, used, SubProgress(progress, 0.1, 1.0));
+    DepthFromShading(layerInput, w, h, used, SubProgress(progress, 0.1, 1.0));
   if (depth.empty())
   {
     throw HallucinationAbortedError();

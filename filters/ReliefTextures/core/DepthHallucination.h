@@ -32,9 +32,15 @@
  *     depth = DepthScale * (sum_k (ValleyWeight * valley_k - HillWeight * hill_k)
  *     + ValleyWeight * residual), in texels. The widest layer must match the features, and
  *     the best layer count differs from surface to surface (1 to 8 on real height maps); by
- *     default the depths of every count K = 1, 2, ... the photograph holds are averaged,
- *     each weighted by the inverse of its spread (a scale average: Lindeberg's scale space
- *     without a selection of one scale), which keeps it in texels;
+ *     default the depths of every count K = 1, 2, ... the photograph holds are averaged
+ *     (a scale average: Lindeberg's scale space without a selection of one scale), each
+ *     weighted by c_K^2 / its spread, c_K the correlation of its depth with the darkness of
+ *     the image the layers read, which keeps it in texels (HallucinationModel::Shading: by
+ *     1 / its spread, an equal say per count);
+ *  4. What the layers read (HallucinationModel): by default not the shading S but the
+ *     diffuse/flash ratio lum(I_d) / (lum(I_d) + lum(albedo)) = S / (S + 1) in units of the
+ *     flash, the scale-free "dark is deep" cue of a flash pair, which compresses the bright
+ *     open surfaces where the flash-pair albedo is least sure;
  *     the output is that depth stretched to [0, 1] (0 = highest point, 1 = deepest, the
  *     project's convention) and its range in texels (DepthRangeTexels).
  *
@@ -68,8 +74,21 @@
 namespace mesolight
 {
 
+/// Which image the scale layers read, and how the scale average weighs its layer counts.
+enum class HallucinationModel
+{
+  /// The default: the layers read the diffuse/flash ratio lum(I_d) / (lum(I_d) + lum(albedo))
+  /// (I_d / I_f with the flash's fall-off divided out), and the scale average weighs each
+  /// layer count by its squared correlation with that ratio image (dark is deep).
+  Ratio,
+  /// The previous model: the layers read the shading lum(I_d) / lum(albedo), and the scale
+  /// average gives every layer count an equal say (weights 1 / spread).
+  Shading
+};
+
 struct HallucinationSettings
 {
+  HallucinationModel Model = HallucinationModel::Ratio;
   /// Scale layers (1..12); 0 (the default): the scale average, the model with 1, 2, ..., K
   /// layers (K: every octave the photograph holds, HallucinationAverageLayers) averaged with
   /// weights inversely proportional to each one's spread; -1: one count chosen from the
@@ -137,6 +156,9 @@ struct HallucinationResult
 {
   RgbImage Albedo;                ///< (I_f - I_d) / I_c, linear, per channel
   std::vector<float> Shading;     ///< S, normalised (1 = open, upward-facing)
+  /// lum(I_d) / (lum(I_d) + lum(albedo)), 1 at its maximum: what the layers read under
+  /// HallucinationModel::Ratio.
+  std::vector<float> Ratio;
   std::vector<float> Depth;       ///< w x h, 0 = highest point, 1 = deepest
   float DepthRangeTexels = 0.0f;  ///< the model's depth of Depth = 1, in texel widths
   int Layers = 0;                 ///< the layers used (settings.Layers, or the automatic choice)
@@ -186,7 +208,12 @@ MESOLIGHTRELIEFTEXTURES_EXPORT HallucinationResult HallucinateDepth(const RgbIma
 
 /**
  * Step 3 alone: the model depth in texels (not normalised; larger = deeper) of a shading image
- * (w x h, 1 = open sky). Empty when progress aborts. Exposed for tests and the benchmark.
+ * (w x h, 1 = open sky): HallucinateDepth passes HallucinationResult::Ratio under
+ * HallucinationModel::Ratio, HallucinationResult::Shading under HallucinationModel::Shading.
+ * With Layers 0 and HallucinationModel::Ratio each layer count's depth is weighted by its
+ * squared correlation with the input image's darkness (-image) over its spread (a weighted mean
+ * of the counts' depths, still in texels). Empty when progress aborts. Exposed for tests and the
+ * benchmark.
  */
 MESOLIGHTRELIEFTEXTURES_EXPORT std::vector<float> DepthFromShading(
   const std::vector<float>& shading, int w, int h, const HallucinationSettings& settings = {},
