@@ -74,7 +74,7 @@ float mlSpecularPowerScale = 1.0;
 // over the footprint is taken as normal with mean mu and variance l.C.l, and the clamped mean
 // is that of a rectified normal variable, mu Phi(mu / sigma) + sigma phi(mu / sigma) (the
 // moments' covariance as a lobe, as LEAN mapping, Olano and Baker 2010, uses it for the
-// highlight). Phi: the tanh approximation (error below 2e-4; Page 1977).
+// highlight). Phi: 1/2 + tanh(0.798 (x + 0.0447 x^3)) / 2, within 1.8e-4 of the normal CDF.
 mat3 mlNormalSpreadVC = mat3(0.0);
 float mlFilteredLambert(vec3 m, vec3 l)
 {
