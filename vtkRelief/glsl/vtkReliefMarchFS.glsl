@@ -259,6 +259,10 @@ vec2 mlSideWall(vec3 origin, vec3 span, inout float t)
 // to the hit point; the hit is shadowed when the ray passes below the height field before it.
 // The work is proportional to the depth travelled, so shallow hits cost less; cone maps and the
 // min-depth pyramid skip empty space as they do for view rays.
+// The linear shadow march's least clearance above the height field per depth climbed from the
+// hit (1 over a flat floor; negative: below it at the first blocked sample), for level of
+// detail's soft far shadows (mlShadowVisibility); the other marches leave it as the caller set it.
+float mlShadowGap = 1e30;
 bool mlShadowed(vec3 hit, vec3 spanUpPerDepth)
 {
   if (hit.z <= 1e-4)
@@ -311,7 +315,9 @@ bool mlShadowed(vec3 hit, vec3 spanUpPerDepth)
 #ifdef ML_CURVED
     if (p.z > mlQuadricDepth(p) + mlDepthAt(mlLayerUV(p)) + bias)
 #else
-    if (p.z > mlDepthAt(p.xy) + bias)
+    float gap = mlDepthAt(p.xy) + bias - p.z;
+    mlShadowGap = min(mlShadowGap, gap / max(hit.z - p.z, 1e-4));
+    if (gap < 0.0)
 #endif
     {
       return true;

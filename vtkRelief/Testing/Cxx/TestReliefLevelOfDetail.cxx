@@ -235,9 +235,10 @@ TEST(ReliefLevelOfDetail, FiltersADistantRecedingWall)
   options.ViewDistance = 2.0;
   const FilterErrors e = ErrorsOfTheFilters(options, "distant receding wall");
   ASSERT_GT(e.On.Pixels, Width * Height / 8) << "the wall should fill much of the view";
-  // Measured 2.67 (on; 2.68 with the moments computed from the normals below mip level 2),
-  // 3.37 (off) and 2.92 levels with the mean normal filter (the default's filter before): the
-  // bound lies 11% above on and 12% below off.
+  // Measured 2.48 (on; 2.67 before the clamped Lambert term and the soft far shadows, 2.68
+  // with the moments computed from the normals below mip level 2), 3.37 (off) and 2.85 levels
+  // with the mean normal filter (the default's filter before): the bound lies 21% above on and
+  // 12% below off.
   const double bound = 3.0;
   EXPECT_LT(e.On.Mean, bound) << "level of detail should filter the distant wall";
   EXPECT_GT(e.Off.Mean, bound) << "negative case: without level of detail the wall aliases";
@@ -259,11 +260,41 @@ TEST(ReliefLevelOfDetail, VisibleNormalsFilterARoughGrazingWall)
   options.ViewDistance = 2.0;
   const FilterErrors e = ErrorsOfTheFilters(options, "rough grazing wall");
   ASSERT_GT(e.On.Pixels, Width * Height / 10) << "the wall should fill much of the view";
-  // Measured 9.53 (visible), 12.78 (mean) and 10.67 (off) levels: the bound lies 6% above the
-  // visible filter and 5% below off.
+  // Measured 9.19 (visible; 9.53 before the clamped Lambert term and the soft far shadows),
+  // 15.24 (mean) and 10.67 (off) levels: the bound lies 10% above the visible filter and 5%
+  // below off.
   const double bound = 10.1;
   EXPECT_LT(e.On.Mean, bound) << "the visible normal filter should filter the grazing wall";
   EXPECT_GT(e.Mean.Mean, bound) << "negative case: the mean normal shades facets the view hides";
+  EXPECT_GT(e.Off.Mean, bound) << "negative case: without level of detail the wall aliases";
+}
+
+// A far rough wall under a low light (running-bond bricks with deep mortar, 1024^2, 45 degrees
+// from its normal, two wall widths away: about 10 texels per pixel; the key light 20 degrees
+// above the wall, self-shadowing off so that only the shading normal counts). Many of the facets
+// a pixel covers face away from the light and add nothing, max(0, n.l), where the footprint's
+// mean normal lets them subtract: the default shades with the clamped mean of n.l over the
+// moments' spread (mlFilteredLambert). It must come within a bound that level of detail off
+// (the negative case) and the mean normal filter (Toksvig, the filter without the spread) miss.
+TEST(ReliefLevelOfDetail, ClampsTheLightOfFacetsTurnedAway)
+{
+  ReliefSceneOptions options;
+  options.Pattern = "Bricks";
+  options.Resolution = 1024;
+  options.Width = Width;
+  options.Height = Height;
+  options.ViewAngle = 45.0;
+  options.ViewDistance = 2.0;
+  options.LightElevation = 20.0;
+  options.SelfShadowing = false;
+  const FilterErrors e = ErrorsOfTheFilters(options, "far rough wall under a low light");
+  ASSERT_GT(e.On.Pixels, Width * Height / 8) << "the wall should fill much of the view";
+  // Measured 4.92 (default), 5.47 (mean normal filter), 5.43 (off) levels, and 5.52 with the
+  // visible normal filter but n.l unclamped (the filter before): the bound lies 6% above the
+  // default and 4% below off.
+  const double bound = 5.2;
+  EXPECT_LT(e.On.Mean, bound) << "the clamped Lambert term should light the far wall";
+  EXPECT_GT(e.Mean.Mean, bound) << "negative case: the mean normal lets facets turned away subtract";
   EXPECT_GT(e.Off.Mean, bound) << "negative case: without level of detail the wall aliases";
 }
 
