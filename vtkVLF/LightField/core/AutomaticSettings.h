@@ -67,6 +67,12 @@ struct AutomaticLimits
   // texels to 7.4% / 22.1% gathered (`--settings 2049x96t0.25`), the gather then 1.7 times the
   // propagation's time there.
   int MaxTexelHalvings = 2;
+  // With the final gather and at least 2049 directions, texels halved this many more times on
+  // surfaces other surfaces stand on (LightFieldSettings::ContactTexelHalvings) while the
+  // estimate fits the budget share; 0 never. The boxes' floor beside the boxes was the one place
+  // the gathered field stayed far off (23.6% per pixel, bias +17%: contact shadows narrower
+  // than the 3.8 cm texels); measured in docs/vlf.md ("Finer texels where surfaces meet").
+  int ContactTexelHalvings = 1;
 };
 
 constexpr double GatherlessFineTexelRatio = 2.0;
@@ -87,7 +93,8 @@ float SmallFeatureWidth(const TriangleScene& scene);
 
 // The settings for `scene` (world units) within `limits` (see above). TilesPerSide is
 // RaysPerSide / 8, TexelSize 0 (the cell side) or half the cell side (FineTexelRatio),
-// MemoryBudget limits.MemoryBudget. Throws
+// ContactTexelHalvings limits.ContactTexelHalvings where it fits, MemoryBudget
+// limits.MemoryBudget. Throws
 // std::invalid_argument for a scene without triangles.
 AutomaticChoice ChooseAutomaticSettings(
   const TriangleScene& scene, const AutomaticLimits& limits = {});
@@ -98,10 +105,11 @@ std::size_t AutomaticDirections(int raysPerSide);
 // Fills in what `requested` leaves automatic: RaysPerSide 0 is chosen from the scene
 // (ChooseAutomaticSettings within its MemoryBudget), Directions 0 follows the lines
 // (AutomaticDirections), TilesPerSide 0 is RaysPerSide / 8, TexelSize 0 with automatic lines is
-// the choice's; given values are kept. Returns the
+// the choice's (and its ContactTexelHalvings, when those are 0); given values are kept. Returns the
 // choice (Describe() for a log line; Limit "given" when nothing was automatic).
 // finalGather false: the field's textures are used as propagated (FineTexelRatio
-// GatherlessFineTexelRatio).
+// GatherlessFineTexelRatio, no contact halvings: a propagated texel finer than the lines is a
+// lottery of the few lines crossing it).
 AutomaticChoice ResolveAutomaticSettings(
   const TriangleScene& scene, const LightFieldSettings& requested, bool finalGather = true);
 
