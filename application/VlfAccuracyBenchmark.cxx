@@ -579,7 +579,8 @@ int RunVlfAccuracyBenchmark(const std::vector<std::string>& args)
       std::string note;
       if (!ParseSettings(text, s.Scene, budget, settings, note))
       {
-        return cl.UsageError("--settings: '" + text + "' is not auto, auto-uniform, KxN or KxNtF");
+        return cl.UsageError(
+          "--settings: '" + text + "' is not auto, KxN or KxNtF (or auto-uniform)");
       }
       if (!note.empty())
       {

@@ -96,10 +96,10 @@ struct LightFieldSettings
   int TilesPerSide = 4;         // m: tiles per subfield side, N a multiple of m
   // Texel side of the total diffuse textures in unit-sphere units; 0 = the cell side 2/N.
   float TexelSize = 0.0f;
-  // Surfaces on which other surfaces stand (a box on a floor, a rib against a wall: ContactSurfaces)
-  // get texels 2^-ContactTexelHalvings of TexelSize (0-3). A contact shadow is a strip about as
-  // wide as the feature is high, narrower than the texels chosen for the whole scene, and
-  // bilinear reads between texel centres smear it into the light beside it.
+  // Surfaces on which other surfaces stand (a box on a floor, a rib against a wall:
+  // ContactSurfaces) get texels 2^-ContactTexelHalvings of TexelSize (0-3). A contact shadow is a
+  // strip about as wide as the feature is high, narrower than the texels chosen for the whole
+  // scene, and bilinear reads between texel centres smear it into the light beside it.
   int ContactTexelHalvings = 0;
   std::uint64_t MemoryBudget = std::uint64_t(4) << 30; // bytes
   // §3.6.2: weight each direction by its solid angle. False gives every direction 2 pi / K

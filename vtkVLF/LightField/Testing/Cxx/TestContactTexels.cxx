@@ -136,8 +136,8 @@ TEST(VLFContactTexels, TheAutomaticSettingsHalveContactTexelsWithTheGatherOnly)
   automatic.TilesPerSide = 0;
   const AutomaticChoice gathered = ResolveAutomaticSettings(scene, automatic, true);
   EXPECT_EQ(gathered.Settings.ContactTexelHalvings, 1) << gathered.Describe();
-  EXPECT_NE(gathered.Describe().find("texels halved on surfaces others stand on"),
-    std::string::npos);
+  EXPECT_NE(
+    gathered.Describe().find("texels halved on surfaces others stand on"), std::string::npos);
   // Without the gather a texel finer than the lines is a lottery of the few crossing it.
   EXPECT_EQ(ResolveAutomaticSettings(scene, automatic, false).Settings.ContactTexelHalvings, 0);
   // Given lines keep the given (uniform) texels.
@@ -180,8 +180,8 @@ TEST(VLFContactTexels, ResolvesTheContactShadowOfALowBoxWhereUniformTexelsDoNot)
       TexelPoint p;
       p.Surface = 0;
       p.Triangle = floor.Triangles[0];
-      p.Unit = (glm::vec3(x, y, 0.0f) - uniform->NormalizationCentre()) *
-        uniform->NormalizationScale();
+      p.Unit =
+        (glm::vec3(x, y, 0.0f) - uniform->NormalizationCentre()) * uniform->NormalizationScale();
       points.push_back(p);
     }
   }
