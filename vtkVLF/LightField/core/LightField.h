@@ -99,7 +99,10 @@ struct LightFieldSettings
   // Surfaces on which other surfaces stand (a box on a floor, a rib against a wall:
   // ContactSurfaces) get texels 2^-ContactTexelHalvings of TexelSize (0-3). A contact shadow is a
   // strip about as wide as the feature is high, narrower than the texels chosen for the whole
-  // scene, and bilinear reads between texel centres smear it into the light beside it.
+  // scene, and bilinear reads between texel centres smear it into the light beside it. (A
+  // contact edge is a discontinuity of the radiance itself, the D0 discontinuity of Heckbert,
+  // "Discontinuity Meshing for Radiosity", 1992: radiosity meshes are refined there for the same
+  // reason.)
   int ContactTexelHalvings = 0;
   std::uint64_t MemoryBudget = std::uint64_t(4) << 30; // bytes
   // §3.6.2: weight each direction by its solid angle. False gives every direction 2 pi / K
