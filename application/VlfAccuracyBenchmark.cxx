@@ -373,14 +373,19 @@ RgbImage FieldImage(const vlf::LightField& field, const std::vector<PixelHit>& h
   return out;
 }
 
-// "auto", "KxN" or "KxNtF" (texel = F x the cell side).
+// "auto", "auto-uniform" (the automatic choice without its finer texels on contact surfaces),
+// "KxN" or "KxNtF" (texel = F x the cell side).
 bool ParseSettings(const std::string& text, const TriangleScene& scene, std::uint64_t budget,
   vlf::LightFieldSettings& settings, std::string& note)
 {
-  if (text == "auto")
+  if (text == "auto" || text == "auto-uniform")
   {
     vlf::AutomaticLimits limits;
     limits.MemoryBudget = budget;
+    if (text == "auto-uniform")
+    {
+      limits.ContactTexelHalvings = 0;
+    }
     const vlf::AutomaticChoice c = vlf::ChooseAutomaticSettings(scene, limits);
     settings = c.Settings;
     note = c.Describe();
@@ -488,7 +493,8 @@ int RunVlfAccuracyBenchmark(const std::vector<std::string>& args)
   cl.AddValue(
     "--scenes", "LIST", "boxes,room,corridor,thin,cornell", "boxes,room,corridor,thin,cornell");
   cl.AddValue("--settings", "LIST",
-    "per scene: auto, KxN (K directions, N lines per side) or KxNtF (texel F x the cell side)",
+    "per scene: auto, auto-uniform (auto without its finer texels on surfaces others stand on), "
+    "KxN (K directions, N lines per side) or KxNtF (texel F x the cell side)",
     "513x32,auto");
   cl.AddFlag(
     "--full", "sweep more settings: 513x32,513x64,2049x32,2049x64,2049x64t0.5,auto,2049x96");
@@ -643,7 +649,8 @@ int RunVlfAccuracyBenchmark(const std::vector<std::string>& args)
       std::string note;
       if (!ParseSettings(text, s.Scene, budget, settings, note))
       {
-        return cl.UsageError("--settings: '" + text + "' is not auto, KxN or KxNtF");
+        return cl.UsageError(
+          "--settings: '" + text + "' is not auto, KxN or KxNtF (or auto-uniform)");
       }
       if (!note.empty())
       {
@@ -671,6 +678,23 @@ int RunVlfAccuracyBenchmark(const std::vector<std::string>& args)
         const double texelWorld =
           (settings.TexelSize > 0.0f ? settings.TexelSize : settings.CellSize()) /
           field->NormalizationScale();
+        if (settings.ContactTexelHalvings > 0)
+        {
+          // The surfaces that got finer texels (LightFieldSettings::ContactTexelHalvings).
+          std::size_t finer = 0, finerTexels = 0;
+          for (const vlf::Surface& surface : field->Surfaces())
+          {
+            if (surface.TexelU / field->NormalizationScale() < 0.75 * texelWorld)
+            {
+              ++finer;
+              finerTexels += surface.TexelCount();
+            }
+          }
+          std::printf("# %s %s: texels halved %d time(s) on %zu of %zu surfaces (others stand on "
+                      "them): %zu of %zu texels\n",
+            name.c_str(), text.c_str(), settings.ContactTexelHalvings, finer,
+            field->Surfaces().size(), finerTexels, field->TexelCount());
+        }
         const std::uint64_t lines = static_cast<std::uint64_t>(settings.Directions) *
           settings.RaysPerSide * settings.RaysPerSide;
         // The filter changes the totals for good: it runs last.

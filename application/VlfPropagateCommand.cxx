@@ -181,6 +181,10 @@ int Propagate(const std::vector<std::string>& args)
   cl.AddValue("--rays", "N",
     "lines per subfield side; auto: from the scene's small features, time and memory", "auto");
   cl.AddValue("--tiles", "M", "tiles per subfield side (0 = rays / 8)", "0");
+  cl.AddValue("--contact-texels", "H",
+    "texels halved H times (0-3) on the surfaces others stand on (a floor under boxes, a wall "
+    "behind ribs); auto: once with the automatic resolution and the final gather",
+    "auto");
   cl.AddValue("--tolerance", "X",
     "shoot until at most this share of the emitted flux is left unshot", "0.01");
   cl.AddValue("--max-iterations", "K", "most iterations --tolerance may take (in total)", "100");
@@ -210,12 +214,15 @@ int Propagate(const std::vector<std::string>& args)
     return exitCode; // --help printed, or a usage error reported
   }
   int directions = 0, rays = 0, tiles = 0, iterations = -1, maxIterations = 0, snapshotEvery = 1;
+  int contactHalvings = -1; // auto
   double budget = 0.0, tolerance = 0.0;
   // "auto" is 0: vlf::ResolveAutomaticSettings chooses once the scene is read.
   const auto getCount = [&](const char* name, int low, int high, int& value)
   { return cl.Get(name) == "auto" ? (value = 0, true) : cl.GetInt(name, low, high, value, error); };
   if (!getCount("--directions", 3, 1 << 26, directions) || !getCount("--rays", 1, 4096, rays) ||
     !cl.GetInt("--tiles", 0, 4096, tiles, error) ||
+    (cl.Get("--contact-texels") != "auto" &&
+      !cl.GetInt("--contact-texels", 0, vlf::MaxContactTexelHalvings, contactHalvings, error)) ||
     (cl.Has("--iterations") && !cl.GetInt("--iterations", 0, 10000, iterations, error)) ||
     !cl.GetDouble("--tolerance", 1e-9, 0.999, tolerance, error) ||
     !cl.GetInt("--max-iterations", 1, 10000, maxIterations, error) ||
@@ -353,7 +360,8 @@ int Propagate(const std::vector<std::string>& args)
         long long Stored;
       } checks[] = { { "--directions", directions, static_cast<long long>(stored.Directions) },
         { "--rays", rays, storedRays },
-        { "--tiles", tiles > 0 ? tiles : std::max(1, givenRays / 8), stored.TilesPerSide } };
+        { "--tiles", tiles > 0 ? tiles : std::max(1, givenRays / 8), stored.TilesPerSide },
+        { "--contact-texels", contactHalvings, stored.ContactTexelHalvings } };
       for (const auto& check : checks)
       {
         if (cl.Has(check.Option) && cl.Get(check.Option) != "auto" && check.Given != check.Stored)
@@ -404,7 +412,11 @@ int Propagate(const std::vector<std::string>& args)
       settings.RaysPerSide = rays;
       settings.TilesPerSide = tiles;
       settings.MemoryBudget = budgetBytes;
-      const vlf::AutomaticChoice choice = vlf::ResolveAutomaticSettings(scene, settings, gather);
+      vlf::AutomaticChoice choice = vlf::ResolveAutomaticSettings(scene, settings, gather);
+      if (contactHalvings >= 0)
+      {
+        choice.Settings.ContactTexelHalvings = contactHalvings; // given: kept
+      }
       settings = choice.Settings;
       if (rays == 0)
       {

@@ -15,6 +15,11 @@ cli_expect_error(2 "--resume: --rays 32 differs from the 16 stored in"
   vlf propagate --resume --iterations 2 --rays 32 --out "${field}")
 cli_expect_error(2 "--resume: --tiles 1 differs from the 2 stored in"
   vlf propagate --resume --iterations 2 --tiles 1 --out "${field}")
+cli_expect_error(2 "--resume: --contact-texels 1 differs from the 0 stored in"
+  vlf propagate --resume --iterations 2 --contact-texels 1 --out "${field}")
+cli_expect_error(2 "--contact-texels"
+  vlf propagate --directions 33 --rays 16 --iterations 1 --contact-texels 4 --force
+  --out "${field}")
 # The same values (or none) resume.
 cli_run(TRUE vlf propagate --resume --iterations 2 --directions 33 --rays 16 --tiles 2
         --out "${field}")

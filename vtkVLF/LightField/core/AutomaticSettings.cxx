@@ -167,6 +167,16 @@ AutomaticChoice ChooseAutomaticSettings(const TriangleScene& scene, const Automa
       break;
     }
   }
+  // Finer texels on the surfaces others stand on, within the budget share.
+  if (limits.ContactTexelHalvings > 0 && limits.FineTexelRatio > 0.0 && chosen.Directions >= 2049)
+  {
+    chosen.ContactTexelHalvings = std::min(limits.ContactTexelHalvings, MaxContactTexelHalvings);
+    if (static_cast<double>(EstimateMemory(scene, chosen).TotalBytes) >
+      limits.BudgetShare * static_cast<double>(limits.MemoryBudget))
+    {
+      chosen.ContactTexelHalvings = 0;
+    }
+  }
   choice.Settings = chosen;
   return choice;
 }
@@ -183,6 +193,7 @@ AutomaticChoice ResolveAutomaticSettings(
     {
       limits.FineTexelRatio = GatherlessFineTexelRatio;
       limits.MaxTexelHalvings = 1;
+      limits.ContactTexelHalvings = 0;
     }
     choice = ChooseAutomaticSettings(scene, limits);
   }
@@ -209,6 +220,10 @@ AutomaticChoice ResolveAutomaticSettings(
     s.RaysPerSide == choice.Settings.RaysPerSide && s.Directions == choice.Settings.Directions)
   {
     s.TexelSize = choice.Settings.TexelSize; // half the cell where the features ask for it
+    if (s.ContactTexelHalvings == 0)
+    {
+      s.ContactTexelHalvings = choice.Settings.ContactTexelHalvings;
+    }
   }
   choice.Settings = s;
   return choice;
@@ -216,15 +231,18 @@ AutomaticChoice ResolveAutomaticSettings(
 
 std::string AutomaticChoice::Describe() const
 {
-  char text[256];
+  char text[320];
   std::snprintf(text, sizeof(text),
-    "%zu directions x %d x %d lines%s (scene %.3g across, small features %.3g wide ask for %d "
+    "%zu directions x %d x %d lines%s%s (scene %.3g across, small features %.3g wide ask for %d "
     "lines per side; limited by %s)",
     this->Settings.Directions, this->Settings.RaysPerSide, this->Settings.RaysPerSide,
     this->Settings.TexelSize <= 0.0f ? ""
       : this->Settings.TexelSize > 0.3f * this->Settings.CellSize()
       ? ", texels half the line spacing"
       : ", texels a quarter of the line spacing",
+    this->Settings.ContactTexelHalvings <= 0 ? ""
+      : this->Settings.ContactTexelHalvings == 1 ? "; texels halved on surfaces others stand on"
+                                                  : "; finer texels on surfaces others stand on",
     static_cast<double>(this->SceneDiameter), static_cast<double>(this->FeatureWidth),
     this->WantedRaysPerSide, this->Limit.c_str());
   return text;

@@ -25,6 +25,13 @@
 // 9 cm features ask for 256 lines) went from 33.3% to 24.9% mean error per pixel (the floor
 // between them from 60% to 37%), while the corridor (136 asked) went from 7.0% to 7.9% (noisier
 // walls, the same edges), and at 513 directions half texels gave the boxes nothing.
+//
+// With the final gather the texels of the surfaces other surfaces stand on (ContactSurfaces: a
+// floor under boxes, a wall behind ribs) are halved once more: their contact shadows are strips
+// about as wide as the features are high, which the gather computes exactly at each texel centre
+// but bilinear reads between centres smear. Measured on the boxes (docs/vlf.md, "Finer texels
+// where surfaces meet"): 5.7% / 14.4% -> 2.8% / 7.9% mean / p95 per pixel, the floor beside the
+// boxes 24.2% -> 8.0%, at 167 MiB instead of 162.
 #ifndef mesolight_vlf_AutomaticSettings_h
 #define mesolight_vlf_AutomaticSettings_h
 
@@ -67,6 +74,12 @@ struct AutomaticLimits
   // texels to 7.4% / 22.1% gathered (`--settings 2049x96t0.25`), the gather then 1.7 times the
   // propagation's time there.
   int MaxTexelHalvings = 2;
+  // With the final gather and at least 2049 directions, texels halved this many more times on
+  // surfaces other surfaces stand on (LightFieldSettings::ContactTexelHalvings) while the
+  // estimate fits the budget share; 0 never. The boxes' floor beside the boxes was the one place
+  // the gathered field stayed far off (23.6% per pixel, bias +17%: contact shadows narrower
+  // than the 3.8 cm texels); measured in docs/vlf.md ("Finer texels where surfaces meet").
+  int ContactTexelHalvings = 1;
 };
 
 constexpr double GatherlessFineTexelRatio = 2.0;
@@ -87,7 +100,8 @@ float SmallFeatureWidth(const TriangleScene& scene);
 
 // The settings for `scene` (world units) within `limits` (see above). TilesPerSide is
 // RaysPerSide / 8, TexelSize 0 (the cell side) or half the cell side (FineTexelRatio),
-// MemoryBudget limits.MemoryBudget. Throws
+// ContactTexelHalvings limits.ContactTexelHalvings where it fits, MemoryBudget
+// limits.MemoryBudget. Throws
 // std::invalid_argument for a scene without triangles.
 AutomaticChoice ChooseAutomaticSettings(
   const TriangleScene& scene, const AutomaticLimits& limits = {});
@@ -98,10 +112,11 @@ std::size_t AutomaticDirections(int raysPerSide);
 // Fills in what `requested` leaves automatic: RaysPerSide 0 is chosen from the scene
 // (ChooseAutomaticSettings within its MemoryBudget), Directions 0 follows the lines
 // (AutomaticDirections), TilesPerSide 0 is RaysPerSide / 8, TexelSize 0 with automatic lines is
-// the choice's; given values are kept. Returns the
-// choice (Describe() for a log line; Limit "given" when nothing was automatic).
+// the choice's (and its ContactTexelHalvings, when those are 0); given values are kept. Returns
+// the choice (Describe() for a log line; Limit "given" when nothing was automatic).
 // finalGather false: the field's textures are used as propagated (FineTexelRatio
-// GatherlessFineTexelRatio).
+// GatherlessFineTexelRatio, no contact halvings: a propagated texel finer than the lines is a
+// lottery of the few lines crossing it).
 AutomaticChoice ResolveAutomaticSettings(
   const TriangleScene& scene, const LightFieldSettings& requested, bool finalGather = true);
 

@@ -10,7 +10,9 @@
 
 #include "EmbreeScene.h"
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
+#include <glm/vector_relational.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -136,6 +138,11 @@ std::string LightFieldSettings::Validate() const
   {
     e << "texel size " << this->TexelSize << " is not 0 (= cell size) or in [1e-4, inf)";
   }
+  else if (this->ContactTexelHalvings < 0 || this->ContactTexelHalvings > MaxContactTexelHalvings)
+  {
+    e << "contact texel halvings " << this->ContactTexelHalvings << " is outside [0, "
+      << MaxContactTexelHalvings << "]";
+  }
   else if (this->MemoryBudget == 0)
   {
     e << "memory budget is 0 bytes";
@@ -175,8 +182,98 @@ glm::vec3 Surface::TexelCentre(int a, int b) const
     (static_cast<float>(b) + 0.5f) * this->TexelV * this->AxisV;
 }
 
-std::vector<Surface> GroupSurfaces(
-  const TriangleScene& scene, float texelSize, std::vector<std::uint32_t>& triangleSurface)
+std::vector<std::uint8_t> ContactSurfaces(const TriangleScene& scene,
+  const std::vector<Surface>& surfaces, const std::vector<std::uint32_t>& triangleSurface,
+  float probe)
+{
+  const float onPlane = 1e-4f; // as GroupSurfaces' planes
+  const std::size_t triangles = scene.TriangleCount();
+  std::vector<glm::vec3> normal(triangles), lower(triangles), upper(triangles);
+  for (std::size_t t = 0; t < triangles; ++t)
+  {
+    const glm::vec3 n = scene.FaceNormal(t);
+    const float length = glm::length(n);
+    normal[t] = length > 0.0f ? n / length : glm::vec3(0.0f);
+    lower[t] = glm::min(scene.Vertex(t, 0), glm::min(scene.Vertex(t, 1), scene.Vertex(t, 2)));
+    upper[t] = glm::max(scene.Vertex(t, 0), glm::max(scene.Vertex(t, 1), scene.Vertex(t, 2)));
+  }
+  std::vector<std::uint8_t> contact(surfaces.size(), 0);
+  std::vector<glm::vec2> corners;
+  for (std::size_t i = 0; i < surfaces.size(); ++i)
+  {
+    const Surface& s = surfaces[i];
+    const auto flat = [&s](const glm::vec3& x)
+    { return glm::vec2(glm::dot(x, s.AxisU), glm::dot(x, s.AxisV)); };
+    corners.clear();
+    glm::vec3 boxLower(1e30f), boxUpper(-1e30f);
+    for (const std::uint32_t t : s.Triangles)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        corners.push_back(flat(scene.Vertex(t, c)));
+      }
+      boxLower = glm::min(boxLower, lower[t]);
+      boxUpper = glm::max(boxUpper, upper[t]);
+    }
+    boxLower -= glm::vec3(2.0f * onPlane);
+    boxUpper += glm::vec3(2.0f * onPlane);
+    const auto inside = [&corners](const glm::vec2& q)
+    {
+      for (std::size_t c = 0; c + 2 < corners.size(); c += 3)
+      {
+        const glm::vec2 a = corners[c], b = corners[c + 1], d = corners[c + 2];
+        const float area = (b.x - a.x) * (d.y - a.y) - (b.y - a.y) * (d.x - a.x);
+        const float u = ((b.x - q.x) * (d.y - q.y) - (b.y - q.y) * (d.x - q.x)) / area;
+        const float v = ((d.x - q.x) * (a.y - q.y) - (d.y - q.y) * (a.x - q.x)) / area;
+        if (u >= 0.0f && v >= 0.0f && u + v <= 1.0f)
+        {
+          return true;
+        }
+      }
+      return false;
+    };
+    for (std::size_t t = 0; t < triangles && contact[i] == 0; ++t)
+    {
+      if (triangleSurface[t] == NoSurface || triangleSurface[t] == i ||
+        std::abs(glm::dot(normal[t], s.Normal)) > 0.99f ||
+        glm::any(glm::lessThan(upper[t], boxLower)) ||
+        glm::any(glm::greaterThan(lower[t], boxUpper)))
+      {
+        continue; // another surface, parallel to this one (coincident faces), or far from it
+      }
+      float d[3];
+      for (int c = 0; c < 3; ++c)
+      {
+        d[c] = glm::dot(s.Normal, scene.Vertex(t, c)) - s.Offset;
+      }
+      for (int a = 0; a < 3; ++a)
+      {
+        const int b = (a + 1) % 3, o = (a + 2) % 3;
+        if (std::abs(d[a]) > onPlane || std::abs(d[b]) > onPlane || d[o] <= onPlane)
+        {
+          continue; // not an edge on the plane of a triangle rising in front of it
+        }
+        const glm::vec2 pa = flat(scene.Vertex(t, a)), pb = flat(scene.Vertex(t, b));
+        const float length = glm::length(pb - pa);
+        if (!(length > 0.0f))
+        {
+          continue;
+        }
+        const glm::vec2 across = probe * glm::vec2(pa.y - pb.y, pb.x - pa.x) / length;
+        const glm::vec2 middle = 0.5f * (pa + pb);
+        if (inside(middle + across) && inside(middle - across))
+        {
+          contact[i] = 1;
+          break;
+        }
+      }
+    }
+  }
+  return contact;
+}
+
+std::vector<Surface> GroupSurfaces(const TriangleScene& scene, float texelSize,
+  std::vector<std::uint32_t>& triangleSurface, int contactHalvings)
 {
   std::vector<Surface> surfaces;
   triangleSurface.assign(scene.TriangleCount(), 0);
@@ -216,9 +313,17 @@ std::vector<Surface> GroupSurfaces(
     s.Area += static_cast<double>(scene.Area(t));
     triangleSurface[t] = found->second;
   }
+  // Finer texels where other surfaces stand (LightFieldSettings::ContactTexelHalvings); probed a
+  // quarter texel either side of a contact edge.
+  const std::vector<std::uint8_t> contact = contactHalvings > 0
+    ? ContactSurfaces(scene, surfaces, triangleSurface, 0.25f * texelSize)
+    : std::vector<std::uint8_t>(surfaces.size(), 0);
   std::size_t texelOffset = 0;
-  for (Surface& s : surfaces)
+  for (std::size_t i = 0; i < surfaces.size(); ++i)
   {
+    Surface& s = surfaces[i];
+    const float texel =
+      contact[i] != 0 ? texelSize / static_cast<float>(1 << contactHalvings) : texelSize;
     float lo[2] = { 1e30f, 1e30f }, hi[2] = { -1e30f, -1e30f };
     const glm::vec3 reference = s.Origin;
     for (std::uint32_t t : s.Triangles)
@@ -238,8 +343,8 @@ std::vector<Surface> GroupSurfaces(
     const float extentV = std::max(hi[1] - lo[1], 1e-6f);
     // Sides in double: a scene far larger than the texel (a corrupt snapshot's scene is not
     // normalized) must be refused, not overflow int (found by fuzz/snapshot.cxx).
-    const double sideU = std::ceil(static_cast<double>(extentU / texelSize) - 1e-3);
-    const double sideV = std::ceil(static_cast<double>(extentV / texelSize) - 1e-3);
+    const double sideU = std::ceil(static_cast<double>(extentU / texel) - 1e-3);
+    const double sideV = std::ceil(static_cast<double>(extentV / texel) - 1e-3);
     if (!(sideU <= MaxTextureSide) || !(sideV <= MaxTextureSide))
     {
       throw std::invalid_argument("a surface of the scene would need a texture of " +
@@ -308,7 +413,8 @@ void LightField::Setup(
   }
   this->DirectionsPtr.reset(new DirectionSet(DirectionSet::WithCount(settings.Directions)));
   const float texel = settings.TexelSize > 0.0f ? settings.TexelSize : settings.CellSize();
-  this->SurfaceList = GroupSurfaces(this->NormalizedScene, texel, this->TriangleSurface);
+  this->SurfaceList = GroupSurfaces(
+    this->NormalizedScene, texel, this->TriangleSurface, settings.ContactTexelHalvings);
   this->TexelTotal = 0;
   for (const Surface& s : this->SurfaceList)
   {

@@ -86,6 +86,9 @@ public:
   using std::runtime_error::runtime_error;
 };
 
+// The most LightFieldSettings::ContactTexelHalvings: texels an eighth of the scene's.
+constexpr int MaxContactTexelHalvings = 3;
+
 struct LightFieldSettings
 {
   std::size_t Directions = 513; // 2 n^2 + 1: 513, 2049, 8193 (DirectionSet::WithCount)
@@ -93,6 +96,14 @@ struct LightFieldSettings
   int TilesPerSide = 4;         // m: tiles per subfield side, N a multiple of m
   // Texel side of the total diffuse textures in unit-sphere units; 0 = the cell side 2/N.
   float TexelSize = 0.0f;
+  // Surfaces on which other surfaces stand (a box on a floor, a rib against a wall:
+  // ContactSurfaces) get texels 2^-ContactTexelHalvings of TexelSize (0-3). A contact shadow is a
+  // strip about as wide as the feature is high, narrower than the texels chosen for the whole
+  // scene, and bilinear reads between texel centres smear it into the light beside it. (A
+  // contact edge is a discontinuity of the radiance itself, the D0 discontinuity of Heckbert,
+  // "Discontinuity Meshing for Radiosity", 1992: radiosity meshes are refined there for the same
+  // reason.)
+  int ContactTexelHalvings = 0;
   std::uint64_t MemoryBudget = std::uint64_t(4) << 30; // bytes
   // §3.6.2: weight each direction by its solid angle. False gives every direction 2 pi / K
   // (only for the negative tests: the field is then biased toward densely sampled directions).
@@ -356,11 +367,21 @@ constexpr std::uint32_t NoSurface = 0xffffffffu;
 constexpr int MaxTextureSide = 1 << 16;
 
 // Groups a (unit-sphere) scene's triangles into planar one-material surfaces with texture
-// frames; triangleSurface gets each triangle's surface. Exposed for tests and the estimate.
+// frames; triangleSurface gets each triangle's surface. Texels are texelSize, on contact surfaces
+// (ContactSurfaces) texelSize / 2^contactHalvings. Exposed for tests and the estimate.
 // Throws std::invalid_argument when a surface would need more than MaxTextureSide texels per side
 // (a scene not normalized to the unit sphere).
-std::vector<Surface> GroupSurfaces(
-  const TriangleScene& scene, float texelSize, std::vector<std::uint32_t>& triangleSurface);
+std::vector<Surface> GroupSurfaces(const TriangleScene& scene, float texelSize,
+  std::vector<std::uint32_t>& triangleSurface, int contactHalvings = 0);
+
+// Per surface of GroupSurfaces, 1 where another surface stands on it: an edge of a triangle of
+// another plane lies in its plane (within 1e-4), the surface continues on both sides of that
+// edge (probed `probe` away from its midpoint, so an edge along the surface's border -- a wall
+// meeting a floor at the room's edge -- is not one) and the triangle rises in front of it. A
+// box on a floor, a rib against a wall, a shelf on a wall, a table leg on a floor.
+std::vector<std::uint8_t> ContactSurfaces(const TriangleScene& scene,
+  const std::vector<Surface>& surfaces, const std::vector<std::uint32_t>& triangleSurface,
+  float probe);
 
 } // namespace vlf
 } // namespace mesolight

@@ -62,7 +62,9 @@ void WritePayload(Writer& w, const LightField& field,
   w.Value(static_cast<std::int32_t>(s.TilesPerSide));
   w.Value(s.TexelSize);
   w.Value(s.MemoryBudget);
-  w.Value(static_cast<std::uint8_t>(s.UseSolidAngleWeights ? 1 : 0));
+  // Bit 0 the solid-angle weights, bits 1-2 the contact texel halvings (0 in older files).
+  w.Value(static_cast<std::uint8_t>(
+    (s.UseSolidAngleWeights ? 1 : 0) | (static_cast<unsigned>(s.ContactTexelHalvings) << 1)));
   w.Value(static_cast<std::int32_t>(field.IterationsDone));
   w.Value(field.NormalizationScale());
   w.Value(field.NormalizationCentre());
@@ -428,7 +430,13 @@ std::unique_ptr<LightField> ReadSnapshot(const std::string& path, std::uint64_t 
   settings.TilesPerSide = r.Value<std::int32_t>();
   settings.TexelSize = r.Value<float>();
   settings.MemoryBudget = r.Value<std::uint64_t>();
-  settings.UseSolidAngleWeights = r.Value<std::uint8_t>() != 0;
+  const std::uint8_t flags = r.Value<std::uint8_t>();
+  if ((flags & ~std::uint8_t(7)) != 0)
+  {
+    r.Fail("its settings are invalid: unknown flags " + std::to_string(flags));
+  }
+  settings.UseSolidAngleWeights = (flags & 1) != 0;
+  settings.ContactTexelHalvings = flags >> 1;
   // The stored budget is what the field was built with; read back, it is only a number in the
   // file: never trust more than this machine has (a corrupt one would let Setup allocate anything).
   settings.MemoryBudget = memoryBudget > 0

@@ -16,7 +16,8 @@
 //                                          lookups (each rank asking its own points) equal the
 //                                          serial field's; a rank's own answers alone differ
 //   TestDistributedPropagation gather OBJ  the final gather split over the ranks (FinalGather.h)
-//                                          on a scene with mirrors: equal to the serial gather,
+//                                          on a scene with mirrors, the floor under its blocks
+//                                          at finer texels: equal to the serial gather,
 //                                          bit for bit to this rank's own gather of the same
 //                                          field; every texel gathered by exactly one rank, the
 //                                          shares balanced; an abort on one rank stops all; with
@@ -440,13 +441,19 @@ int Gather(vtkMultiProcessController* controller, const std::string& obj)
   vlf::FinalGatherOptions options; // fewer rays than the default: the split, not the noise
   options.IndirectRays = 64;
   options.DirectSamples = 16;
-  std::unique_ptr<vlf::LightField> serial = vlf::LightField::Build(scene, SmallSettings());
+  // Finer texels on the floor the blocks stand on (LightFieldSettings::ContactTexelHalvings), as
+  // the automatic settings take with the gather: surfaces of two texel sizes split over the ranks.
+  vlf::LightFieldSettings settings = SmallSettings();
+  settings.ContactTexelHalvings = 1;
+  std::unique_ptr<vlf::LightField> serial = vlf::LightField::Build(scene, settings);
   Check(serial->HasSpecular(), "the scene has mirrors (the gather follows them)");
+  Check(serial->TexelCount() > vlf::LightField::Build(scene, SmallSettings())->TexelCount(),
+    "the floor under the blocks has finer texels");
   vlf::Propagate(*serial, iterations);
   const vlf::FinalGatherReport serialReport = vlf::FinalGather(*serial, options);
 
   std::unique_ptr<vlf::LightField> field =
-    vlf::LightField::Build(scene, SmallSettings(), {}, &reducer);
+    vlf::LightField::Build(scene, settings, {}, &reducer);
   vlf::PropagationOptions propagation;
   propagation.Reduce = &reducer;
   vlf::Propagate(*field, iterations, propagation);
