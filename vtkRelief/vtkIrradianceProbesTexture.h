@@ -21,7 +21,7 @@
  *   renderer's light k (k < 8) from probe (i, j), uploaded as blocks 7-8 (lights 0-3, 4-7) and
  *   multiplied into that light's contribution (1 without it);
  * - the relief's cosine-weighted visible share over its texture (ReliefVisibleShareMap in
- *   evaluation/core/ReliefShading.h: per cell V and V over the share of directions above the
+ *   reliefcore/core/ReliefShading.h: per cell V and V over the share of directions above the
  *   macro plane) as the two-component field-data array GetVisibleShareName() (W x H pairs, row
  *   0 at v ~ 0) with the field-data array GetVisibleShareSizeName() = (W, H): a second,
  *   two-channel linear texture. The shader scales the probes' irradiance by the second value

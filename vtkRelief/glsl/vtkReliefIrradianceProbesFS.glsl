@@ -16,7 +16,7 @@
 // cosine-weighted share of the hemisphere leaving the relief, precomputed per texel on the
 // exact height-field intersector (ReliefVisibleShareMap), is looked up, not marched; the
 // probes' irradiance is scaled by it and the relief's multi-bounce inter-reflection added, the
-// model of the CPU renderer (ReliefInterReflected in evaluation/core/ReliefShading.h).
+// model of the CPU renderer (ReliefInterReflected in reliefcore/core/ReliefShading.h).
 
 uniform sampler2D mlIrradianceProbes;
 uniform vec2 mlProbeGrid; // (Nu, Nv)
