@@ -3,7 +3,7 @@
 
 #include "CommandLine.h"
 #include "ReliefScene.h" // BuildReliefTextures
-#include "VlfRelief.h"   // ReadDepthImage, EmitterLightVisibility
+#include "VlfRelief.h"   // ReadDepthImage
 #include "vtkMessageCollector.h"
 
 #include "vtkLightFieldActor.h"
@@ -17,6 +17,7 @@
 #include "EmbreeScene.h"
 #include "EmitterLights.h"
 #include "LightField.h"
+#include "ReliefOcclusion.h" // EmitterLightVisibility
 #include "ReliefShading.h"
 #include "ReliefSurface.h"
 #include "TriangleScene.h"
@@ -112,7 +113,7 @@ vtkSmartPointer<vtkImageData> OccludedProbes(const vlf::LightField& field,
     lights.push_back(light.Position);
   }
   const std::vector<float> visible =
-    EmitterLightVisibility(field, embree, surface, lights, nu, nv);
+    vlf::EmitterLightVisibility(field, embree, surface, lights, nu, nv);
 
   auto result = vtkSmartPointer<vtkImageData>::New();
   result->DeepCopy(probes);
