@@ -16,7 +16,8 @@
  * modification time; a malformed image is reported once per array and modification.
  *
  * Two optional parts make the relief's own occlusion and the scene's shadows cheap per pixel,
- * both computed once on the CPU (application/LightFieldReliefs.cxx):
+ * both computed once on the CPU (vtkLightFieldReliefSurface, for the walkthrough's reliefs and
+ * ParaView's Relief Surface):
  * - a fourth component: pixel (9 i + k, j) holds the scene's visibility (in [0, 1]) of the
  *   renderer's light k (k < 8) from probe (i, j), uploaded as blocks 7-8 (lights 0-3, 4-7) and
  *   multiplied into that light's contribution (1 without it);
