@@ -43,7 +43,8 @@
  * What makes the relief mapper shade like the CPU reference (`mesolight vlf render --relief`,
  * vtkIrradianceProbesTexture), both optional and computed once per change, not per frame:
  * - SceneOcclusion on: port 1 gets a fourth component, pixel (9 i + k, j) the scene's visibility
- *   (Embree) of emitter light k (k < 9, GetEmitterLights' order) from probe (i, j), over the CPU
+ *   (Embree) of emitter light k (k < 9, GetEmitterLights' order; the mapper reads lights 0-7)
+ *   from probe (i, j), over the CPU
  *   reference's emitter samples (mesolight::vlf::EmitterLightVisibility, core/ReliefOcclusion.h).
  * - a relief texture given (SetReliefTextureData, vtkReliefMapper's form: depth in A, 0 = top,
  *   1 = deepest; ReliefDepthScale its depth scale): port 1's field data gets the relief's
@@ -53,7 +54,8 @@
  *   indirect light and its multi-bounce inter-reflection. Without it, and at depth scale 0 (a
  *   flat relief hides nothing), V = 1 (no occlusion). A change of the relief texture, its depth
  *   scale or WalledRelief recomputes the map only: for a surface of input port 1 the probes of
- *   an unchanged field and surface are kept.
+ *   an unchanged field and surface are kept. Under MPI every rank computes the same map from
+ *   the shared texture frame (no communication; a rank whose map is stopped has empty outputs).
  *
  * GetSurfaceDiffuse() is the surface's Kd (the relief actor's colour). An unknown name (the
  * message lists the scene's surfaces), a non-planar surface without texture coordinates, a
