@@ -44,8 +44,10 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <exception>
+#include <stdexcept>
 #include <vector>
 
 namespace vlf = mesolight::vlf;

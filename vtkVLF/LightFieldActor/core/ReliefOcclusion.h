@@ -4,9 +4,10 @@
 // relief mapper (vtkIrradianceProbesTexture): the field's emitters as small area samples (the CPU
 // reference's direct light), the scene's visibility of each emitter light from each probe
 // (Embree), and the relief's own visible-share map over its texture (ReliefVisibleShareMap on
-// the exact height-field intersector, Mesolight::ReliefCore). One implementation for the
-// walkthrough (`vlf view --relief`, application/LightFieldReliefs.cxx) and ParaView's Relief
-// Surface (vtkLightFieldReliefSurface). Plain C++ (GLM), unit-sphere coordinates.
+// the exact height-field intersector, Mesolight::ReliefCore). One implementation, used by
+// vtkLightFieldReliefSurface for the walkthrough's reliefs (`vlf view --relief`) and ParaView's
+// Relief Surface alike, and by the CPU reference's emitter samples (application/VlfRelief.cxx).
+// Plain C++ (GLM), unit-sphere coordinates.
 #ifndef mesolight_vlf_ReliefOcclusion_h
 #define mesolight_vlf_ReliefOcclusion_h
 
