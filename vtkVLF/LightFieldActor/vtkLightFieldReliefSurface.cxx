@@ -338,6 +338,12 @@ vtkImageData* vtkLightFieldReliefSurface::GetReliefTextureData()
 }
 
 //------------------------------------------------------------------------------
+double vtkLightFieldReliefSurface::MapProgress() const
+{
+  return this->Internals->ReliefTexture && this->ReliefDepthScale > 0.0 ? 0.5 : 1.0;
+}
+
+//------------------------------------------------------------------------------
 bool vtkLightFieldReliefSurface::AddVisibleShare(vtkImageData* probesOutput, const double frame[12])
 {
   vtkInternals& in = *this->Internals;
@@ -369,9 +375,9 @@ bool vtkLightFieldReliefSurface::AddVisibleShare(vtkImageData* probesOutput, con
       surface.AxisU = glm::dvec3(frame[3], frame[4], frame[5]);
       surface.AxisV = glm::dvec3(frame[6], frame[7], frame[8]);
       surface.Normal = glm::dvec3(frame[9], frame[10], frame[11]);
-      in.Share =
-        vlf::ReliefVisibleShareGrid(height, vlf::ReliefFrameOf(surface, this->ReliefDepthScale),
-          in.ShareSize[0], in.ShareSize[1], mesolight::AlgorithmProgress(this));
+      in.Share = vlf::ReliefVisibleShareGrid(height,
+        vlf::ReliefFrameOf(surface, this->ReliefDepthScale), in.ShareSize[0], in.ShareSize[1],
+        mesolight::AlgorithmProgress(this, this->MapProgress(), 1.0));
       ++this->VisibleShareComputations;
     }
     catch (const vlf::AbortedError&)
@@ -483,7 +489,8 @@ int vtkLightFieldReliefSurface::RequestData(
   try
   {
     surface = vlf::FindReliefSurface(*field, this->SurfaceName);
-    probes = vlf::ReliefSurfaceProbes(*field, surface, n, n, mesolight::AlgorithmProgress(this));
+    probes = vlf::ReliefSurfaceProbes(
+      *field, surface, n, n, mesolight::AlgorithmProgress(this, 0.0, this->MapProgress()));
   }
   catch (const vlf::AbortedError&)
   {
@@ -683,8 +690,8 @@ int vtkLightFieldReliefSurface::RequestSurfaceData(
     {
       try
       {
-        result = ComputeSurface(
-          *field, whole, n, this->SceneOcclusion, mesolight::AlgorithmProgress(this));
+        result = ComputeSurface(*field, whole, n, this->SceneOcclusion,
+          mesolight::AlgorithmProgress(this, 0.0, this->MapProgress()));
       }
       catch (const vlf::AbortedError&)
       {

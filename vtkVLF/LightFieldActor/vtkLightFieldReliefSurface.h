@@ -211,6 +211,9 @@ private:
   // Adds the visible-share map of the relief texture over the texture frame (unit sphere:
   // origin, u axis, v axis, normal) to the probes: false when stopped.
   bool AddVisibleShare(vtkImageData* probesOutput, const double frame[12]);
+  // Where the map's share of the progress starts (the probes report before it): 0.5 when there
+  // is a map to make, else 1.
+  double MapProgress() const;
   void operator=(const vtkLightFieldReliefSurface&) = delete;
 
   vtkLightFieldActor* LightFieldActor = nullptr;

@@ -529,3 +529,49 @@ TEST(LightFieldReliefSurface, ReliefOcclusionAddsTheVisibleShareMapAndLightVisib
               vtkIrradianceProbesTexture::GetVisibleShareName()),
     nullptr);
 }
+
+// The map reports its progress after the probes' (non-decreasing, the second half) and stops on
+// AbortExecute: empty outputs, no error; the next update makes it.
+TEST(LightFieldReliefSurface, AbortStopsTheVisibleShareMapWithoutError)
+{
+  ReliefSurfaceFixture f("back", 2);
+  f.Surface->SetReliefTextureData(GroovedTexture(64, 8));
+  f.Surface->SetReliefDepthScale(0.2);
+  struct Watch
+  {
+    std::vector<double> Fractions;
+    bool Abort = true;
+  } watch;
+  vtkNew<vtkCallbackCommand> abort;
+  abort->SetClientData(&watch);
+  abort->SetCallback(
+    [](vtkObject* caller, unsigned long, void* data, void* fraction)
+    {
+      auto* w = static_cast<Watch*>(data);
+      w->Fractions.push_back(*static_cast<double*>(fraction));
+      if (w->Abort && w->Fractions.back() > 0.5)
+      {
+        static_cast<vtkLightFieldReliefSurface*>(caller)->SetAbortExecute(1);
+      }
+    });
+  f.Surface->AddObserver(vtkCommand::ProgressEvent, abort);
+  f.Surface->Update();
+  EXPECT_TRUE(f.Messages->Errors.empty()) << f.Messages->AllErrors();
+  EXPECT_EQ(f.Surface->GetOutput()->GetNumberOfPoints(), 0);
+  EXPECT_EQ(f.Surface->GetProbesOutput()->GetNumberOfPoints(), 0);
+  EXPECT_EQ(f.Surface->GetVisibleShareComputations(), 0);
+  ASSERT_FALSE(watch.Fractions.empty());
+  for (std::size_t k = 1; k < watch.Fractions.size(); ++k)
+  {
+    EXPECT_GE(watch.Fractions[k], watch.Fractions[k - 1]) << "progress went back at " << k;
+  }
+
+  watch.Abort = false;
+  f.Surface->SetAbortExecute(0);
+  f.Surface->Modified();
+  f.Surface->Update();
+  EXPECT_EQ(f.Surface->GetVisibleShareComputations(), 1);
+  EXPECT_NE(f.Surface->GetProbesOutput()->GetFieldData()->GetArray(
+              vtkIrradianceProbesTexture::GetVisibleShareName()),
+    nullptr);
+}
