@@ -395,10 +395,12 @@ bool vtkLightFieldReliefSurface::AddVisibleShare(vtkImageData* probesOutput, con
   {
     return true;
   }
+  // The values per cell are ReliefVisibleShareGrid's (V and V over the share above the plane).
+  const std::size_t cells = static_cast<std::size_t>(in.ShareSize[0]) * in.ShareSize[1];
   vtkNew<vtkFloatArray> share;
   share->SetName(vtkIrradianceProbesTexture::GetVisibleShareName());
-  share->SetNumberOfComponents(2);
-  share->SetNumberOfTuples(static_cast<vtkIdType>(in.Share.size() / 2));
+  share->SetNumberOfComponents(static_cast<int>(in.Share.size() / cells));
+  share->SetNumberOfTuples(static_cast<vtkIdType>(cells));
   std::copy(in.Share.begin(), in.Share.end(), share->GetPointer(0));
   vtkNew<vtkIntArray> size;
   size->SetName(vtkIrradianceProbesTexture::GetVisibleShareSizeName());

@@ -51,8 +51,10 @@ ReliefFrame ReliefFrameOf(const ReliefSurface& surface, double depthScale);
 
 // The relief's visible-share map (ReliefVisibleShareMap with ReliefLighting's directions, as the
 // CPU reference shades) on the height field's texel grid, at most MaxVisibleShareSide cells a
-// side; gridWidth and gridHeight are set to the grid used. A stop asked through progress throws
-// AbortedError.
+// side; gridWidth and gridHeight are set to the grid used. The values of a cell follow one
+// another (row-major, j slowest), as many per cell as vtkIrradianceProbesTexture's visible-share
+// array has components (now 2: V, and V over the share of directions above the macro plane). A
+// stop asked through progress throws AbortedError.
 std::vector<float> ReliefVisibleShareGrid(const HeightField& field, const ReliefFrame& frame,
   int& gridWidth, int& gridHeight, const ProgressCallback& progress = {});
 
