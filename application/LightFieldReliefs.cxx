@@ -3,7 +3,7 @@
 
 #include "CommandLine.h"
 #include "ReliefScene.h" // BuildReliefTextures
-#include "VlfRelief.h"   // ReadDepthImage, EmitterLightVisibility
+#include "VlfRelief.h"   // SetUpFieldReliefs, ReliefRadiance
 #include "vtkMessageCollector.h"
 
 #include "vtkLightFieldActor.h"
@@ -16,22 +16,13 @@
 #include "vtkReliefProperty.h"
 
 #include "EmbreeScene.h"
-#include "EmitterLights.h"
 #include "LightField.h"
-#include "ReliefShading.h"
-#include "ReliefSurface.h"
 #include "TriangleScene.h"
-#include "vtkIrradianceProbesTexture.h" // the visible share's array names
-#include <vtkTextureObject.h>    // for vtkIrradianceProbesTexture's inline getter
 
 #include <vtkActor.h>
 #include <vtkCommand.h>
 #include <vtkExecutive.h>
-#include <vtkFieldData.h>
-#include <vtkFloatArray.h>
 #include <vtkImageData.h>
-#include <vtkIntArray.h>
-#include <vtkPointData.h>
 #include <vtkActorCollection.h>
 #include <vtkLight.h>
 #include <vtkLightCollection.h>
@@ -77,87 +68,6 @@ std::vector<std::string> ReliefInputs(const CommandLine& cl)
 
 namespace
 {
-// Texels per side of the relief's visible-share map at most: V varies at the scale of the
-// relief's features, and the map costs OcclusionDirections exact marches per texel, once.
-constexpr int MaxVisibleShareSide = 256;
-
-// The probes of `surface` with what the relief mapper needs to draw the relief's occlusion, its
-// inter-reflection and the scene's shadows of the emitter lights at near-zero cost per pixel
-// (vtkIrradianceProbesTexture): the relief's visible share over its texture and that of the relief
-// its occluded directions meet, precomputed on the exact height-field intersector with the CPU
-// renderer's directions (ReliefVisibleShareMap, ReliefSeenShareMap), and
-// per probe the scene's visibility of each emitter light (EmitterLightVisibility), in the order
-// the relief layer's renderer has them (vtkLightFieldReliefSurface::GetEmitterLights). Throws
-// ReliefSetupError for an unreadable depth image.
-vtkSmartPointer<vtkImageData> OccludedProbes(const vlf::LightField& field,
-  const EmbreeScene& embree, const std::string& name, const std::string& depthImage,
-  double depthScale, vtkImageData* probes)
-{
-  const vlf::ReliefSurface surface = vlf::FindReliefSurface(field, name);
-  const HeightField height = ReadDepthImage(depthImage);
-  ReliefFrame frame;
-  frame.Origin = surface.Origin;
-  frame.AxisU = surface.AxisU;
-  frame.AxisV = surface.AxisV;
-  frame.Normal = surface.Normal;
-  frame.DepthScale = depthScale;
-  const int w = std::min(height.Width(), MaxVisibleShareSide);
-  const int h = std::min(height.Height(), MaxVisibleShareSide);
-  const int count = ReliefLighting().OcclusionDirections;
-  const std::vector<float> share = ReliefVisibleShareMap(height, frame, w, h, count);
-  const std::vector<float> seen = ReliefSeenShareMap(height, frame, share, w, h, count);
-
-  int dims[3];
-  probes->GetDimensions(dims);
-  const int nu = dims[0] / 9, nv = dims[1];
-  std::vector<glm::vec3> lights;
-  for (const vlf::EmitterLight& light : vlf::EstimateEmitterLights(field).Lights)
-  {
-    lights.push_back(light.Position);
-  }
-  const std::vector<float> visible =
-    EmitterLightVisibility(field, embree, surface, lights, nu, nv);
-
-  auto result = vtkSmartPointer<vtkImageData>::New();
-  result->DeepCopy(probes);
-  vtkDataArray* in = probes->GetPointData()->GetScalars();
-  vtkNew<vtkFloatArray> out;
-  out->SetName(in->GetName());
-  out->SetNumberOfComponents(4);
-  out->SetNumberOfTuples(in->GetNumberOfTuples());
-  for (int j = 0; j < nv; ++j)
-  {
-    for (int i = 0; i < 9 * nu; ++i)
-    {
-      const vtkIdType pixel = static_cast<vtkIdType>(j) * dims[0] + i;
-      const std::size_t k = static_cast<std::size_t>(i % 9);
-      const std::size_t probe = static_cast<std::size_t>(j) * nu + i / 9;
-      const float tuple[4] = { static_cast<float>(in->GetComponent(pixel, 0)),
-        static_cast<float>(in->GetComponent(pixel, 1)),
-        static_cast<float>(in->GetComponent(pixel, 2)),
-        k < lights.size() ? visible[probe * lights.size() + k] : 1.0f };
-      out->SetTypedTuple(pixel, tuple);
-    }
-  }
-  result->GetPointData()->SetScalars(out);
-  vtkNew<vtkFloatArray> shareArray;
-  shareArray->SetName(vtkIrradianceProbesTexture::GetVisibleShareName());
-  shareArray->SetNumberOfComponents(3);
-  shareArray->SetNumberOfTuples(static_cast<vtkIdType>(seen.size()));
-  for (std::size_t c = 0; c < seen.size(); ++c)
-  {
-    const float tuple[3] = { share[2 * c], share[2 * c + 1], seen[c] };
-    shareArray->SetTypedTuple(static_cast<vtkIdType>(c), tuple);
-  }
-  vtkNew<vtkIntArray> shareSize;
-  shareSize->SetName(vtkIrradianceProbesTexture::GetVisibleShareSizeName());
-  shareSize->InsertNextValue(w);
-  shareSize->InsertNextValue(h);
-  result->GetFieldData()->AddArray(shareArray);
-  result->GetFieldData()->AddArray(shareSize);
-  return result;
-}
-
 // The walkthrough's display settings on every relief of the relief layer (static surfaces and
 // a relief-mapped movable object alike).
 void CopyDisplay(vtkLightFieldActor* actor, const WalkthroughReliefs& reliefs)
@@ -310,7 +220,7 @@ int SetUpWalkthroughReliefs(const CommandLine& cl, const char* command, vtkLight
     mirrors = mirrors || ks.x > 0.0f || ks.y > 0.0f || ks.z > 0.0f;
   }
   std::shared_ptr<const EmbreeScene> embree;
-  if (occlusion || mirrors)
+  if (mirrors)
   {
     embree = std::make_shared<const EmbreeScene>(field->Scene());
   }
@@ -319,19 +229,6 @@ int SetUpWalkthroughReliefs(const CommandLine& cl, const char* command, vtkLight
   {
     const std::string& name = names[r];
     const std::string depthImage = items[r].substr(items[r].find('=') + 1);
-    vtkNew<MessageCollector> messages;
-    vtkNew<vtkLightFieldReliefSurface> surface;
-    messages->Watch(surface);
-    vtkNew<MessageCollector> executiveNoise; // its "returned failure" follow-up
-    executiveNoise->Watch(surface->GetExecutive());
-    surface->SetLightFieldActor(actor);
-    surface->SetSurfaceName(name.c_str());
-    surface->Update();
-    if (!messages->Errors.empty())
-    {
-      std::cerr << command << ": --relief: " << messages->ErrorText() << "\n";
-      return 2;
-    }
     ReliefSceneOptions textureOptions;
     textureOptions.DepthFile = depthImage;
     textureOptions.DepthScale = depthScale;
@@ -342,28 +239,35 @@ int SetUpWalkthroughReliefs(const CommandLine& cl, const char* command, vtkLight
       std::cerr << command << ": --relief: " << error << "\n";
       return 2;
     }
+    vtkNew<MessageCollector> messages;
+    vtkNew<vtkLightFieldReliefSurface> surface;
+    messages->Watch(surface);
+    vtkNew<MessageCollector> executiveNoise; // its "returned failure" follow-up
+    executiveNoise->Watch(surface->GetExecutive());
+    surface->SetLightFieldActor(actor);
+    surface->SetSurfaceName(name.c_str());
+    if (occlusion)
+    {
+      // The relief's occlusion of its indirect light and its inter-reflection (its visible-share
+      // map), and the scene's shadows of the emitter lights, added to the probes; walled, as the
+      // CPU reference's relief recessed into its wall.
+      surface->SetReliefTextureData(texture);
+      surface->SetReliefDepthScale(depthScale);
+      surface->WalledReliefOn();
+      surface->SceneOcclusionOn();
+    }
+    surface->Update();
+    if (!messages->Errors.empty())
+    {
+      std::cerr << command << ": --relief: " << messages->ErrorText() << "\n";
+      return 2;
+    }
     // A vtkReliefMapper that also draws the movable object's shadow as the walls show it.
     vtkNew<vtkLightFieldReliefMapper> mapper;
     mapper->SetLightFieldActor(actor);
     mapper->SetInputConnection(surface->GetOutputPort(0));
     mapper->SetReliefTextureData(texture);
-    if (occlusion)
-    {
-      try
-      {
-        mapper->SetIrradianceProbesData(OccludedProbes(*field, *embree, name, depthImage,
-          depthScale, vtkImageData::SafeDownCast(surface->GetOutputDataObject(1))));
-      }
-      catch (const std::exception& e)
-      {
-        std::cerr << command << ": --relief: " << e.what() << "\n";
-        return 2;
-      }
-    }
-    else
-    {
-      mapper->SetIrradianceProbesConnection(surface->GetOutputPort(1));
-    }
+    mapper->SetIrradianceProbesConnection(surface->GetOutputPort(1));
     vtkReliefProperty* property = mapper->GetReliefProperty();
     property->SetDepthScale(depthScale);
     property->SetSelfShadowing(true);

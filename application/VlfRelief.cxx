@@ -6,6 +6,7 @@
 #include "ImageFile.h"
 #include "LightField.h"
 #include "MathConstants.h"
+#include "ReliefOcclusion.h" // EmitterSamples
 #include "ReliefSurface.h"
 #include "TriangleScene.h"
 
@@ -27,109 +28,7 @@ std::string Quoted(const std::string& text)
 {
   return "'" + text + "'";
 }
-
-// n x n stratified samples of every emitting triangle (Shirley's square-to-triangle map).
-std::vector<ReliefEmitterSample> EmitterSamples(const TriangleScene& scene, int n)
-{
-  std::vector<ReliefEmitterSample> samples;
-  for (std::size_t t = 0; t < scene.TriangleCount(); ++t)
-  {
-    const glm::vec3 ke = scene.MaterialOf(t).Emission;
-    const double area = scene.Area(t);
-    if (!(ke.x + ke.y + ke.z > 0.0f) || !(area > 0.0))
-    {
-      continue;
-    }
-    const glm::dvec3 a(scene.Vertex(t, 0)), b(scene.Vertex(t, 1)), c(scene.Vertex(t, 2));
-    const glm::dvec3 normal = glm::normalize(glm::dvec3(scene.FaceNormal(t)));
-    for (int i = 0; i < n; ++i)
-    {
-      for (int j = 0; j < n; ++j)
-      {
-        const double s = (i + 0.5) / n, r = std::sqrt((j + 0.5) / n);
-        ReliefEmitterSample sample;
-        sample.Position = (1.0 - r) * a + r * (1.0 - s) * b + r * s * c;
-        sample.Normal = normal;
-        sample.RadianceArea = glm::dvec3(ke) * (area / (n * n));
-        samples.push_back(sample);
-      }
-    }
-  }
-  return samples;
-}
 } // namespace
-
-std::vector<float> EmitterLightVisibility(const vlf::LightField& field, const EmbreeScene& scene,
-  const vlf::ReliefSurface& surface, const std::vector<glm::vec3>& lights, int probesU,
-  int probesV, int samplesPerSide)
-{
-  const std::size_t count = lights.size();
-  std::vector<float> visibility(static_cast<std::size_t>(probesU) * probesV * count, 1.0f);
-  if (count == 0)
-  {
-    return visibility;
-  }
-  const std::vector<ReliefEmitterSample> samples =
-    EmitterSamples(field.Scene(), std::max(1, samplesPerSide));
-  std::vector<std::size_t> nearest(samples.size(), 0);
-  for (std::size_t s = 0; s < samples.size(); ++s)
-  {
-    double best = std::numeric_limits<double>::max();
-    for (std::size_t k = 0; k < count; ++k)
-    {
-      const glm::dvec3 d = samples[s].Position - glm::dvec3(lights[k]);
-      if (glm::dot(d, d) < best)
-      {
-        best = glm::dot(d, d);
-        nearest[s] = k;
-      }
-    }
-  }
-  for (int j = 0; j < probesV; ++j)
-  {
-    for (int i = 0; i < probesU; ++i)
-    {
-      const glm::dvec3 p(vlf::ReliefProbePoint(surface, i, j, probesU, probesV));
-      std::vector<double> all(count, 0.0), seen(count, 0.0);
-      for (std::size_t s = 0; s < samples.size(); ++s)
-      {
-        const ReliefEmitterSample& e = samples[s];
-        const glm::dvec3 toLight = e.Position - p;
-        const double r2 = glm::dot(toLight, toLight);
-        if (!(r2 > 0.0))
-        {
-          continue;
-        }
-        const glm::dvec3 l = toLight / std::sqrt(r2);
-        const double weight = glm::dot(surface.Normal, l) * -glm::dot(e.Normal, l) / r2 *
-          (0.2126 * e.RadianceArea.x + 0.7152 * e.RadianceArea.y + 0.0722 * e.RadianceArea.z);
-        if (!(weight > 0.0))
-        {
-          continue;
-        }
-        all[nearest[s]] += weight;
-        SceneRay ray;
-        ray.Origin = glm::vec3(p);
-        ray.Direction = glm::vec3(l);
-        ray.TNear = 1e-4f;
-        ray.TFar = static_cast<float>(std::sqrt(r2) * (1.0 - 1e-4));
-        if (!scene.Occluded(ray))
-        {
-          seen[nearest[s]] += weight;
-        }
-      }
-      for (std::size_t k = 0; k < count; ++k)
-      {
-        if (all[k] > 0.0)
-        {
-          visibility[(static_cast<std::size_t>(j) * probesU + i) * count + k] =
-            static_cast<float>(seen[k] / all[k]);
-        }
-      }
-    }
-  }
-  return visibility;
-}
 
 HeightField ReadDepthImage(const std::string& path)
 {
@@ -238,7 +137,7 @@ std::vector<FieldRelief> SetUpFieldReliefs(const vlf::LightField& field, const E
     // The light the relief reflects onto itself (ReliefLighting::Albedo).
     relief.Lighting.Albedo = glm::dvec3(material.Diffuse);
     // Direct: the field's emitters, the scene's occlusion by Embree.
-    lighting.Emitters = EmitterSamples(scene, std::max(1, options.EmitterSamplesPerSide));
+    lighting.Emitters = vlf::EmitterSamples(scene, std::max(1, options.EmitterSamplesPerSide));
     const EmbreeScene* occluders = &embree;
     lighting.SceneVisible = [occluders](const glm::dvec3& from, const glm::dvec3& to)
     {

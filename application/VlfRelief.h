@@ -70,16 +70,6 @@ std::vector<int> ReliefOfTriangle(
 bool ReliefRadiance(
   const FieldRelief& relief, const glm::vec3& origin, const glm::vec3& dir, glm::vec3& radiance);
 
-// The scene's visibility of point lights from a relief surface's SH9 probes (for the relief
-// mapper, vtkIrradianceProbesTexture's fourth component): per probe (i, j) of a probesU x probesV
-// grid (vlf::ReliefProbePoint, j slowest) and light k, the share of the flat wall's irradiance
-// from the field's emitters that reaches the probe past the scene, over the CPU renderer's
-// emitter samples (n x n per emitting triangle) nearest to light k (unit-sphere positions).
-// 1 where no sample lights the probe. Index ((j probesU + i) lights + k).
-std::vector<float> EmitterLightVisibility(const vlf::LightField& field, const EmbreeScene& scene,
-  const vlf::ReliefSurface& surface, const std::vector<glm::vec3>& lights, int probesU,
-  int probesV, int samplesPerSide = 4);
-
 // The linear depth samples of an image file (first channel, 0..1; row 0 at the bottom, v ~ 0).
 // Throws ReliefSetupError naming the file.
 HeightField ReadDepthImage(const std::string& path);

@@ -12,6 +12,7 @@ function(mesolight_find_modules files_variable names_variable source_dir)
   set(_directories
     "${source_dir}/common"
     "${source_dir}/filters"
+    "${source_dir}/reliefcore"
     "${source_dir}/vtkRelief"
     "${source_dir}/vtkScene"
     "${source_dir}/vtkRayTracing"

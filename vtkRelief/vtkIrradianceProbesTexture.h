@@ -16,12 +16,13 @@
  * modification time; a malformed image is reported once per array and modification.
  *
  * Two optional parts make the relief's own occlusion and the scene's shadows cheap per pixel,
- * both computed once on the CPU (application/LightFieldReliefs.cxx):
+ * both computed once on the CPU (vtkLightFieldReliefSurface, for the walkthrough's reliefs and
+ * ParaView's Relief Surface):
  * - a fourth component: pixel (9 i + k, j) holds the scene's visibility (in [0, 1]) of the
  *   renderer's light k (k < 8) from probe (i, j), uploaded as blocks 7-8 (lights 0-3, 4-7) and
  *   multiplied into that light's contribution (1 without it);
  * - the relief's cosine-weighted visible share over its texture (ReliefVisibleShareMap in
- *   evaluation/core/ReliefShading.h: per cell V and V over the share of directions above the
+ *   reliefcore/core/ReliefShading.h: per cell V and V over the share of directions above the
  *   macro plane; optionally a third value, the visible share Vs of the relief the occluded
  *   directions meet, ReliefSeenShareMap) as the two- or three-component field-data array
  *   GetVisibleShareName() (W x H tuples, row 0 at v ~ 0) with the field-data array

@@ -6,6 +6,7 @@
 #include "vtkCompositeLightFieldMapper.h"
 #include "vtkCompositeReliefMapper.h"
 #include "vtkDataObjectLeaves.h"
+#include "vtkFieldData.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
@@ -17,6 +18,7 @@
 #include "vtkPVLODActor.h"
 #include "vtkPVView.h"
 #include "vtkPointData.h"
+#include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkReliefProperty.h"
 #include "vtkVirtualLightField.h"
@@ -213,20 +215,69 @@ void vtkReliefSurfaceRepresentation::UpdateFieldLighting(vtkInformationVector* f
     vtkVirtualLightField::FindUpstream(this->GetInputAlgorithm(1, 0));
   const int propagation = producer ? producer->GetPropagationCount() : -1;
   vtkDataObject* geometry = this->GeometryFilter->GetOutputDataObject(0);
-  const vtkMTimeType geometryTime = geometry ? geometry->GetMTime() : 0;
+  // The shown geometry's points and polygons, not the data objects holding them: the geometry
+  // filter executes again after every MarkModified (a relief setting the visible-share map needs)
+  // and hands on the same arrays in new objects, which must not gather the probes again.
+  vtkMTimeType geometryTime = 0;
+  for (vtkDataObject* leaf : mesolight::DataObjectLeaves(geometry))
+  {
+    if (auto* poly = vtkPolyData::SafeDownCast(leaf))
+    {
+      if (vtkPoints* points = poly->GetPoints())
+      {
+        geometryTime =
+          std::max({ geometryTime, points->GetMTime(), points->GetData()->GetMTime() });
+      }
+      geometryTime = std::max(geometryTime, poly->GetPolys()->GetMTime());
+    }
+  }
   int changed = (producer != this->GatheredProducer || propagation != this->GatheredPropagation ||
                   geometryTime != this->GatheredGeometryTime)
     ? 1
     : 0;
+  // The visible-share map's inputs: the relief texture (with the data), its depth scale, its edge.
+  double depthScale = 0.0;
+  bool walled = false;
+  vtkSmartPointer<vtkImageData> texture = this->ShownReliefTexture(depthScale, walled);
+  // The attached texture comes as a new image sharing the data's array each time: the array says
+  // whether it changed.
+  vtkDataArray* texels = texture ? texture->GetPointData()->GetScalars() : nullptr;
+  const int edge = this->LightFieldOcclusion ? (walled ? 1 : 0) : 2;
+  int shareChanged = (texels != this->SharedTexture ||
+                       (texels ? texels->GetMTime() : 0) != this->SharedTextureTime ||
+                       depthScale != this->SharedDepthScale || edge != this->SharedEdge)
+    ? 1
+    : 0;
   if (parallel)
   {
-    int any = 0;
-    controller->AllReduce(&changed, &any, 1, vtkCommunicator::MAX_OP);
-    changed = any;
+    int mine[2] = { changed, shareChanged };
+    int any[2] = { 0, 0 };
+    controller->AllReduce(mine, any, 2, vtkCommunicator::MAX_OP);
+    changed = any[0];
+    shareChanged = any[1];
   }
+  if (!changed && !shareChanged)
+  {
+    return; // the probes and the map are still those of this field, geometry and relief
+  }
+  this->SharedTexture = texels;
+  this->SharedTextureTime = texels ? texels->GetMTime() : 0;
+  this->SharedDepthScale = depthScale;
+  this->SharedEdge = edge;
+  this->FieldSurface->SetSceneOcclusion(this->LightFieldOcclusion);
+  this->FieldSurface->SetReliefTextureData(this->LightFieldOcclusion ? texture : nullptr);
+  this->FieldSurface->SetReliefDepthScale(depthScale);
+  this->FieldSurface->SetWalledRelief(walled);
   if (!changed)
   {
-    return; // the probes are still those of this field and geometry
+    // The same field and surface: vtkLightFieldReliefSurface keeps its probes and recomputes the
+    // map (or drops it) only.
+    if (producer)
+    {
+      this->FieldSurface->Update();
+    }
+    this->UseFieldSurfaceOutputs(producer != nullptr);
+    return;
   }
   this->GatheredProducer = producer;
   this->GatheredPropagation = propagation;
@@ -284,7 +335,13 @@ void vtkReliefSurfaceRepresentation::UpdateFieldLighting(vtkInformationVector* f
     this->FieldSurface->Update();
     ++this->ProbeGatherings;
   }
-  vtkImageData* probes = producer ? this->FieldSurface->GetProbesOutput() : nullptr;
+  this->UseFieldSurfaceOutputs(producer != nullptr);
+}
+
+//------------------------------------------------------------------------------
+void vtkReliefSurfaceRepresentation::UseFieldSurfaceOutputs(bool updated)
+{
+  vtkImageData* probes = updated ? this->FieldSurface->GetProbesOutput() : nullptr;
   this->FieldLights->RemoveAllItems();
   vtkSmartPointer<vtkImageData> kept;
   if (probes && probes->GetNumberOfPoints() > 0)
@@ -317,6 +374,45 @@ void vtkReliefSurfaceRepresentation::UpdateFieldLighting(vtkInformationVector* f
     this->ReliefProperty->RemoveDepthLimitPlane();
   }
   this->UpdateDisplayTransform();
+}
+
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkImageData> vtkReliefSurfaceRepresentation::ShownReliefTexture(
+  double& depthScale, bool& walled)
+{
+  vtkSmartPointer<vtkImageData> texture;
+  for (vtkDataObject* leaf :
+    mesolight::DataObjectLeaves(this->MultiBlockMaker->GetOutputDataObject(0)))
+  {
+    if ((texture = vtkAttachReliefTexture::GetAttachedReliefTexture(leaf)))
+    {
+      break;
+    }
+  }
+  // The depth scale the mapper draws with (vtkReliefShading: the bake's unless overridden).
+  depthScale = this->ReliefProperty->GetDepthScale();
+  vtkDataArray* baked =
+    texture ? texture->GetFieldData()->GetArray("MesolightDepthScale") : nullptr;
+  if (baked && baked->GetNumberOfTuples() > 0 && this->ReliefProperty->GetUseTextureDepthScale())
+  {
+    depthScale = std::min(baked->GetComponent(0, 0), 10.0);
+  }
+  // Without silhouettes a relief that does not repeat is walled at its texture's border.
+  walled = !this->ReliefProperty->GetSilhouettes() && !this->ReliefProperty->GetRepeatTexture();
+  return texture;
+}
+
+//------------------------------------------------------------------------------
+void vtkReliefSurfaceRepresentation::SetLightFieldOcclusion(bool on)
+{
+  this->LightFieldOcclusion = on;
+  this->MarkModified(); // RequestData recomputes the map (or drops it)
+}
+
+//------------------------------------------------------------------------------
+int vtkReliefSurfaceRepresentation::GetVisibleShareMaps()
+{
+  return this->FieldSurface->GetVisibleShareComputations();
 }
 
 //------------------------------------------------------------------------------
@@ -429,22 +525,35 @@ MESOLIGHT_FORWARD(LinearSteps, int, SetLinearSteps)
 MESOLIGHT_FORWARD(RefinementSteps, int, SetRefinementSteps)
 MESOLIGHT_FORWARD(AdaptiveSteps, bool, SetAdaptiveSteps)
 MESOLIGHT_FORWARD(MinimumSteps, int, SetMinimumSteps)
-MESOLIGHT_FORWARD(ReliefDepthScale, double, SetDepthScale)
 MESOLIGHT_FORWARD(SelfShadowing, bool, SetSelfShadowing)
-MESOLIGHT_FORWARD(Silhouettes, bool, SetSilhouettes)
+MESOLIGHT_FORWARD(SurfaceCurvature, bool, SetSurfaceCurvature)
 MESOLIGHT_FORWARD(WriteDepth, bool, SetWriteDepth)
-MESOLIGHT_FORWARD(RepeatTexture, bool, SetRepeatTexture)
 MESOLIGHT_FORWARD(LevelOfDetail, bool, SetLevelOfDetail)
 MESOLIGHT_FORWARD(ToneMapping, bool, SetToneMapping)
 MESOLIGHT_FORWARD(LightSetThreshold, double, SetLightSetThreshold)
 MESOLIGHT_FORWARD(ShadowedLights, int, SetShadowedLights)
 #undef MESOLIGHT_FORWARD
 
+// The settings the relief's visible-share map depends on: RequestData recomputes the map when a
+// Light Field lights the relief (vtkPVDataRepresentation::MarkModified: a plain Modified does not
+// make the view update the representation).
+#define MESOLIGHT_FORWARD_SHARED(Name, Type, PropertySetter)                                       \
+  void vtkReliefSurfaceRepresentation::Set##Name(Type value)                                       \
+  {                                                                                                \
+    this->ReliefProperty->PropertySetter(value);                                                   \
+    this->MarkModified();                                                                          \
+  }
+
+MESOLIGHT_FORWARD_SHARED(ReliefDepthScale, double, SetDepthScale)
+MESOLIGHT_FORWARD_SHARED(Silhouettes, bool, SetSilhouettes)
+MESOLIGHT_FORWARD_SHARED(RepeatTexture, bool, SetRepeatTexture)
+#undef MESOLIGHT_FORWARD_SHARED
+
 //------------------------------------------------------------------------------
 void vtkReliefSurfaceRepresentation::SetOverrideDepthScale(bool on)
 {
   this->ReliefProperty->SetUseTextureDepthScale(!on);
-  this->Modified();
+  this->MarkModified(); // the visible-share map's depth scale (see above)
 }
 
 //------------------------------------------------------------------------------
@@ -453,6 +562,7 @@ void vtkReliefSurfaceRepresentation::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "FieldLit: " << this->FieldLit << "\n";
   os << indent << "LightFieldAutoExposure: " << this->LightFieldAutoExposure << "\n";
+  os << indent << "LightFieldOcclusion: " << this->LightFieldOcclusion << "\n";
   os << indent << "ProbeGatherings: " << this->ProbeGatherings << "\n";
   os << indent << "ReliefProperty:\n";
   this->ReliefProperty->PrintSelf(os, indent.GetNextIndent());

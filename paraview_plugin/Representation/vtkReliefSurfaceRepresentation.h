@@ -31,7 +31,11 @@
  * MPI every rank updates together (vtkLightFieldReliefSurface gathers the surface's pieces and
  * sums a distributed field's probes over the ranks). Problems (no field upstream, a field that
  * did not propagate, a surface that is not planar...) are reported as errors; the relief is then
- * drawn the ordinary way.
+ * drawn the ordinary way. With LightFieldOcclusion (default on) the relief also occludes its own
+ * indirect light and inter-reflects (the visible-share map of its relief texture on the exact
+ * height-field intersector, recomputed when the texture, its depth scale or its edge rule
+ * change, not per frame) and the scene shadows the emitter lights per probe (Embree), as the
+ * walkthrough's relief (`mesolight vlf view --relief`) does.
  *
  * A planar surface without texture coordinates gets those of its plane (the rule of the
  * command line's reliefs: SurfacePlaneOf in vtkScene/core/SurfaceRelief.h, the depth image once
@@ -48,8 +52,10 @@
 #include "vtkLightCollection.h"         // for vtkNew<vtkLightCollection>
 #include "vtkLightFieldReliefSurface.h" // for vtkNew<vtkLightFieldReliefSurface>
 #include "vtkNew.h"                     // for ReliefProperty
+#include "vtkSmartPointer.h"            // for ShownReliefTexture
 #include "vtkTexture.h"                 // for vtkNew<vtkTexture>
 
+class vtkDataArray;
 class vtkReliefProperty;
 class vtkVirtualLightField;
 
@@ -73,6 +79,7 @@ public:
   void SetOverrideDepthScale(bool on);
   void SetSelfShadowing(bool on);
   void SetSilhouettes(bool on);
+  void SetSurfaceCurvature(bool on);
   void SetWriteDepth(bool on);
   void SetRepeatTexture(bool on);
   void SetLevelOfDetail(bool on);
@@ -84,6 +91,17 @@ public:
 
   /** With a Light Field: the field's automatic exposure (see above; default on). */
   void SetLightFieldAutoExposure(bool on);
+
+  /**
+   * With a Light Field: the relief's occlusion of its own indirect light with its multi-bounce
+   * inter-reflection (the visible-share map of its relief texture, vtkLightFieldReliefSurface)
+   * and the scene's shadows of the emitter lights per probe, as `mesolight vlf view --relief`
+   * draws them (default on; off: neither, for comparison).
+   */
+  void SetLightFieldOcclusion(bool on);
+
+  /** Visible-share maps computed so far (once per relief texture, depth scale, edge rule). */
+  int GetVisibleShareMaps();
 
   /** Probe gatherings so far (each new field or geometry makes one): how tests check that
    * renders alone gather nothing. */
@@ -114,6 +132,8 @@ protected:
 
   /** Lighting by the field of input port 1 (class comment), or none when it is not connected. */
   void UpdateFieldLighting(vtkInformationVector* fieldInput);
+  /** The field surface's probes, lights and depth limit on the mappers (after its update). */
+  void UseFieldSurfaceOutputs(bool updated);
   /** The relief property's exposure, tone map and sRGB for the current lighting. */
   void UpdateDisplayTransform();
 
@@ -132,6 +152,15 @@ protected:
   vtkVirtualLightField* GatheredProducer = nullptr; // not owned, compared only
   int GatheredPropagation = -1;
   vtkMTimeType GatheredGeometryTime = 0;
+  bool LightFieldOcclusion = true;
+  // What the visible-share map was computed for: the relief texture, its depth scale, its edge.
+  vtkDataArray* SharedTexture = nullptr; // its texels; not owned, compared only
+  vtkMTimeType SharedTextureTime = 0;
+  double SharedDepthScale = -1.0;
+  int SharedEdge = -1; // 1 walled, 0 clamped, 2 no occlusion
+
+  /** The relief texture shown, its effective depth scale and whether it is walled. */
+  vtkSmartPointer<vtkImageData> ShownReliefTexture(double& depthScale, bool& walled);
 
   /** Shows the colour image attached to the mapper's input, or removes the one shown. */
   void UpdateAttachedColorTexture();

@@ -17,7 +17,7 @@
 // occluded directions meet, precomputed per texel on the exact height-field intersector
 // (ReliefVisibleShareMap, ReliefSeenShareMap), are looked up, not marched; the probes'
 // irradiance is scaled by it and the relief's multi-bounce inter-reflection added, the model of
-// the CPU renderer (ReliefInterReflected in evaluation/core/ReliefShading.h).
+// the CPU renderer (ReliefInterReflected in reliefcore/core/ReliefShading.h).
 
 uniform sampler2D mlIrradianceProbes;
 uniform vec2 mlProbeGrid; // (Nu, Nv)

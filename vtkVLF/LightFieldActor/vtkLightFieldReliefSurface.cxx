@@ -25,18 +25,31 @@
 #include "vtkSmartPointer.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 
+#include "vtkDataArray.h"
+#include "vtkFieldData.h"
+#include "vtkIntArray.h"
+#include "vtkIrradianceProbesTexture.h" // the visible share's array names
+#include "vtkTextureObject.h"           // for vtkIrradianceProbesTexture's inline getter
+
+#include "EmbreeScene.h"
 #include "EmitterLights.h"
+#include "HeightFieldTracer.h"
 #include "LightField.h"
 #include "PatchComparison.h" // ToWorld
 #include "Progress.h"
+#include "ReliefOcclusion.h"
+#include "ReliefShading.h"
 #include "ReliefSurface.h"
 #include "TriangleScene.h"
 
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <cmath>
+#include <cstring>
 #include <exception>
 #include <memory>
+#include <stdexcept>
 #include <utility>
 #include <vector>
 
@@ -100,12 +113,69 @@ std::vector<float> PackProbes(const std::vector<mesolight::SH9>& probes, int n)
   return values;
 }
 
-void FillProbesImage(vtkImageData* image, const std::vector<float>& values, int n)
+// Port 1: the probes, and as a fourth component (when given: `lights` values per probe, as
+// EmitterLightVisibility makes them) the scene's visibility of light k < 9 at pixel (9 i + k, j).
+void FillProbesImage(vtkImageData* image, const std::vector<float>& values, int n,
+  const std::vector<float>* visibility = nullptr, std::size_t lights = 0)
 {
   image->SetExtent(0, 9 * n - 1, 0, n - 1, 0, 0);
-  image->AllocateScalars(VTK_FLOAT, 3);
-  std::copy(values.begin(), values.end(), static_cast<float*>(image->GetScalarPointer()));
+  const int components = visibility ? 4 : 3;
+  image->AllocateScalars(VTK_FLOAT, components);
+  float* out = static_cast<float*>(image->GetScalarPointer());
+  const std::size_t pixels = static_cast<std::size_t>(9) * n * n;
+  for (std::size_t p = 0; p < pixels; ++p)
+  {
+    std::copy(&values[3 * p], &values[3 * p] + 3, out + components * p);
+    if (visibility)
+    {
+      const std::size_t k = p % 9, probe = p / 9;
+      out[4 * p + 3] = k < lights ? (*visibility)[probe * lights + k] : 1.0f;
+    }
+  }
   image->GetPointData()->GetScalars()->SetName("IrradianceProbes");
+}
+
+// The scene's visibility of the field's emitter lights from the surface's n x n probes.
+std::vector<float> LightVisibility(
+  const vlf::LightField& field, const vlf::ReliefSurface& surface, int n)
+{
+  std::vector<glm::vec3> lights;
+  for (const vlf::EmitterLight& light : vlf::EstimateEmitterLights(field).Lights)
+  {
+    lights.push_back(light.Position);
+  }
+  const mesolight::EmbreeScene embree(field.Scene());
+  return vlf::EmitterLightVisibility(field, embree, surface, lights, n, n);
+}
+
+// The depth (A) of a relief texture as a height field; throws std::runtime_error saying why not.
+mesolight::HeightField ReliefHeightField(vtkImageData* texture, bool walled)
+{
+  vtkDataArray* rgba = texture ? texture->GetPointData()->GetScalars() : nullptr;
+  int dims[3] = { 0, 0, 0 };
+  if (texture)
+  {
+    texture->GetDimensions(dims);
+  }
+  if (!rgba || rgba->GetNumberOfComponents() != 4 || dims[0] < 1 || dims[1] < 1 ||
+    rgba->GetNumberOfTuples() != static_cast<vtkIdType>(dims[0]) * dims[1])
+  {
+    throw std::runtime_error("the relief texture for the visible-share map must be a 2D RGBA "
+                             "image with the depth in A (vtkReliefTextureFilter's output)");
+  }
+  const bool bytes = rgba->GetDataType() == VTK_UNSIGNED_CHAR;
+  std::vector<float> depth(static_cast<std::size_t>(rgba->GetNumberOfTuples()));
+  for (vtkIdType i = 0; i < rgba->GetNumberOfTuples(); ++i)
+  {
+    const double d = rgba->GetComponent(i, 3) / (bytes ? 255.0 : 1.0);
+    if (!std::isfinite(d))
+    {
+      throw std::runtime_error("the relief texture has a depth that is not a number");
+    }
+    depth[static_cast<std::size_t>(i)] = static_cast<float>(std::clamp(d, 0.0, 1.0));
+  }
+  return mesolight::HeightField(dims[0], dims[1], std::move(depth),
+    walled ? mesolight::HeightField::Edge::Walled : mesolight::HeightField::Edge::Clamped);
 }
 
 // What one rank computes for a surface of polydata and sends: the probes, the texture frame,
@@ -118,10 +188,11 @@ struct SurfaceResult
   // The depth limit (world): a point, the front normal, 1 when the surface is mounted on a wall.
   double Limit[7] = {};
   std::vector<double> Lights;
+  std::vector<float> Visibility; // per probe and light (SceneOcclusion), else empty
 };
 
 SurfaceResult ComputeSurface(const vlf::LightField& field, vtkPolyData* whole, int n,
-  const mesolight::ProgressCallback& progress)
+  bool sceneOcclusion, const mesolight::ProgressCallback& progress)
 {
   std::vector<glm::vec3> positions(static_cast<std::size_t>(whole->GetNumberOfPoints()));
   for (vtkIdType i = 0; i < whole->GetNumberOfPoints(); ++i)
@@ -186,9 +257,34 @@ SurfaceResult ComputeSurface(const vlf::LightField& field, vtkPolyData* whole, i
     result.Limit[6] = 1.0;
   }
   result.Lights = PackEmitterLights(field);
+  if (sceneOcclusion)
+  {
+    result.Visibility = LightVisibility(field, surface, n);
+  }
   return result;
 }
 } // namespace
+
+// What the last update of a surface of input port 1 computed, and from what.
+struct vtkLightFieldReliefSurface::vtkInternals
+{
+  SurfaceResult Result;
+  bool HasResult = false;
+  const void* Producer = nullptr;
+  int Propagation = -1;
+  vtkMTimeType SurfaceTime = 0;
+  int Probes = 0;
+  bool SceneOcclusion = false;
+
+  vtkSmartPointer<vtkImageData> ReliefTexture;
+  // The last visible-share map and what it was made from.
+  std::vector<float> Share;
+  int ShareSize[2] = { 0, 0 };
+  // The texture's texels (an attached texture comes as a new image sharing the same array).
+  vtkDataArray* ShareTexture = nullptr; // compared only
+  vtkMTimeType ShareTextureTime = 0;
+  double ShareKey[14] = {}; // frame (12), depth scale, walled
+};
 
 vtkStandardNewMacro(vtkLightFieldReliefSurface);
 vtkCxxSetObjectMacro(vtkLightFieldReliefSurface, LightFieldActor, vtkLightFieldActor);
@@ -197,6 +293,7 @@ vtkCxxSetObjectMacro(vtkLightFieldReliefSurface, LightFieldProducer, vtkVirtualL
 //------------------------------------------------------------------------------
 vtkLightFieldReliefSurface::vtkLightFieldReliefSurface()
   : ProbesPerSide(vlf::DefaultReliefProbesPerSide)
+  , Internals(new vtkInternals)
 {
   this->SetNumberOfInputPorts(2); // 0: the field, 1: a surface of its own (optional)
   this->SetNumberOfOutputPorts(2);
@@ -225,6 +322,97 @@ void vtkLightFieldReliefSurface::SetSurfaceConnection(vtkAlgorithmOutput* output
 void vtkLightFieldReliefSurface::SetSurfaceData(vtkPolyData* surface)
 {
   this->SetInputDataObject(1, surface);
+}
+
+//------------------------------------------------------------------------------
+void vtkLightFieldReliefSurface::SetReliefTextureData(vtkImageData* texture)
+{
+  if (this->Internals->ReliefTexture != texture)
+  {
+    this->Internals->ReliefTexture = texture;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkImageData* vtkLightFieldReliefSurface::GetReliefTextureData()
+{
+  return this->Internals->ReliefTexture;
+}
+
+//------------------------------------------------------------------------------
+double vtkLightFieldReliefSurface::MapProgress() const
+{
+  return this->Internals->ReliefTexture && this->ReliefDepthScale > 0.0 ? 0.5 : 1.0;
+}
+
+//------------------------------------------------------------------------------
+bool vtkLightFieldReliefSurface::AddVisibleShare(vtkImageData* probesOutput, const double frame[12])
+{
+  vtkInternals& in = *this->Internals;
+  vtkImageData* texture = in.ReliefTexture;
+  // A flat relief (depth scale 0) hides nothing of the room: V = 1, no map (the relief frame
+  // would have no depth axis to march along).
+  if (!texture || !(this->ReliefDepthScale > 0.0))
+  {
+    return true;
+  }
+  double key[14];
+  std::copy(frame, frame + 12, key);
+  key[12] = this->ReliefDepthScale;
+  key[13] = this->WalledRelief ? 1.0 : 0.0;
+  vtkDataArray* texels = texture->GetPointData()->GetScalars();
+  const vtkMTimeType texelsTime = texels ? texels->GetMTime() : texture->GetMTime();
+  if (texels != in.ShareTexture || texelsTime != in.ShareTextureTime ||
+    std::memcmp(key, in.ShareKey, sizeof(key)) != 0 || in.Share.empty())
+  {
+    in.Share.clear();
+    in.ShareTexture = texels;
+    in.ShareTextureTime = texelsTime;
+    std::copy(key, key + 14, in.ShareKey);
+    try
+    {
+      const mesolight::HeightField height = ReliefHeightField(texture, this->WalledRelief);
+      vlf::ReliefSurface surface;
+      surface.Origin = glm::dvec3(frame[0], frame[1], frame[2]);
+      surface.AxisU = glm::dvec3(frame[3], frame[4], frame[5]);
+      surface.AxisV = glm::dvec3(frame[6], frame[7], frame[8]);
+      surface.Normal = glm::dvec3(frame[9], frame[10], frame[11]);
+      in.Share = vlf::ReliefVisibleShareGrid(height,
+        vlf::ReliefFrameOf(surface, this->ReliefDepthScale), in.ShareSize[0], in.ShareSize[1],
+        mesolight::AlgorithmProgress(this, this->MapProgress(), 1.0));
+      ++this->VisibleShareComputations;
+    }
+    catch (const vlf::AbortedError&)
+    {
+      in.ShareTexture = nullptr;
+      return false;
+    }
+    catch (const std::exception& e)
+    {
+      vtkErrorMacro(<< e.what() << "; the relief is drawn without its occlusion");
+      return true; // the same texture is not tried again until it changes
+    }
+  }
+  if (in.Share.empty())
+  {
+    return true;
+  }
+  // The values per cell are ReliefVisibleShareGrid's (V, V over the share above the plane, and the
+  // seen relief's share).
+  const std::size_t cells = static_cast<std::size_t>(in.ShareSize[0]) * in.ShareSize[1];
+  vtkNew<vtkFloatArray> share;
+  share->SetName(vtkIrradianceProbesTexture::GetVisibleShareName());
+  share->SetNumberOfComponents(static_cast<int>(in.Share.size() / cells));
+  share->SetNumberOfTuples(static_cast<vtkIdType>(cells));
+  std::copy(in.Share.begin(), in.Share.end(), share->GetPointer(0));
+  vtkNew<vtkIntArray> size;
+  size->SetName(vtkIrradianceProbesTexture::GetVisibleShareSizeName());
+  size->InsertNextValue(in.ShareSize[0]);
+  size->InsertNextValue(in.ShareSize[1]);
+  probesOutput->GetFieldData()->AddArray(share);
+  probesOutput->GetFieldData()->AddArray(size);
+  return true;
 }
 
 //------------------------------------------------------------------------------
@@ -269,7 +457,7 @@ int vtkLightFieldReliefSurface::RequestInformation(
   const int extent[6] = { 0, 9 * n - 1, 0, n - 1, 0, 0 };
   vtkInformation* info = outputVector->GetInformationObject(1);
   info->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent, 6);
-  vtkDataObject::SetPointDataActiveScalarInfo(info, VTK_FLOAT, 3);
+  vtkDataObject::SetPointDataActiveScalarInfo(info, VTK_FLOAT, this->SceneOcclusion ? 4 : 3);
   return 1;
 }
 
@@ -308,7 +496,8 @@ int vtkLightFieldReliefSurface::RequestData(
   try
   {
     surface = vlf::FindReliefSurface(*field, this->SurfaceName);
-    probes = vlf::ReliefSurfaceProbes(*field, surface, n, n, mesolight::AlgorithmProgress(this));
+    probes = vlf::ReliefSurfaceProbes(
+      *field, surface, n, n, mesolight::AlgorithmProgress(this, 0.0, this->MapProgress()));
   }
   catch (const vlf::AbortedError&)
   {
@@ -368,9 +557,26 @@ int vtkLightFieldReliefSurface::RequestData(
   output->GetPointData()->SetNormals(normals);
   output->GetPointData()->SetTCoords(tcoords);
 
-  // Port 1: the probes, pixel (9 i + k, j).
-  FillProbesImage(probesOutput, PackProbes(probes, n), n);
+  // Port 1: the probes, pixel (9 i + k, j), with the scene's occlusion of the emitter lights and
+  // the relief's visible share when asked for.
+  std::vector<float> visibility;
+  if (this->SceneOcclusion)
+  {
+    visibility = LightVisibility(*field, surface, n);
+  }
+  FillProbesImage(probesOutput, PackProbes(probes, n), n,
+    this->SceneOcclusion ? &visibility : nullptr, vlf::EstimateEmitterLights(*field).Lights.size());
   this->NamedProbes = std::make_unique<std::vector<mesolight::SH9>>(std::move(probes));
+  ++this->ProbeComputations;
+  const double frame[12] = { surface.Origin.x, surface.Origin.y, surface.Origin.z, surface.AxisU.x,
+    surface.AxisU.y, surface.AxisU.z, surface.AxisV.x, surface.AxisV.y, surface.AxisV.z,
+    surface.Normal.x, surface.Normal.y, surface.Normal.z };
+  if (!this->AddVisibleShare(probesOutput, frame))
+  {
+    output->Initialize();
+    probesOutput->Initialize();
+    return 1; // stopped: empty outputs
+  }
 
   AddEmitterLights(*field, this->EmitterLights);
   return 1;
@@ -450,10 +656,32 @@ int vtkLightFieldReliefSurface::RequestSurfaceData(
   const bool summed = root == ranks && reduced[1] == ranks;
   const bool computes = (root < ranks && rank == root) || summed;
 
+  // The probes of an unchanged field and surface are kept (a new relief texture or depth scale
+  // recomputes the visible-share map only); every rank decides alike.
+  vtkInternals& in = *this->Internals;
+  const int propagation = producer ? producer->GetPropagationCount() : -1;
+  const vtkMTimeType surfaceTime = input ? input->GetMTime() : 0;
+  int stale =
+    (!in.HasResult || in.Producer != producer || in.Propagation != propagation ||
+      in.SurfaceTime != surfaceTime || in.Probes != n || in.SceneOcclusion != this->SceneOcclusion)
+    ? 1
+    : 0;
+  if (ranks > 1)
+  {
+    int any = stale;
+    controller->AllReduce(&stale, &any, 1, vtkCommunicator::MAX_OP);
+    stale = any;
+  }
+  in.HasResult = in.HasResult && !stale;
+
   // status: 1 done, 0 error (reported by the rank that met it), -1 aborted.
   int status = 1;
   SurfaceResult result;
-  if (root == ranks && !summed)
+  if (!stale)
+  {
+    result = in.Result;
+  }
+  else if (root == ranks && !summed)
   {
     status = 0;
     if (rank == 0)
@@ -477,7 +705,8 @@ int vtkLightFieldReliefSurface::RequestSurfaceData(
     {
       try
       {
-        result = ComputeSurface(*field, whole, n, mesolight::AlgorithmProgress(this));
+        result = ComputeSurface(*field, whole, n, this->SceneOcclusion,
+          mesolight::AlgorithmProgress(this, 0.0, this->MapProgress()));
       }
       catch (const vlf::AbortedError&)
       {
@@ -493,7 +722,7 @@ int vtkLightFieldReliefSurface::RequestSurfaceData(
       }
     }
   }
-  if (ranks > 1)
+  if (ranks > 1 && stale)
   {
     // Everyone learns the worst status: the computing ranks', or the root's.
     int worst = status;
@@ -528,14 +757,37 @@ int vtkLightFieldReliefSurface::RequestSurfaceData(
       {
         controller->Broadcast(result.Lights.data(), lights, root);
       }
+      if (this->SceneOcclusion)
+      {
+        result.Visibility.resize(static_cast<std::size_t>(n) * n * (lights / 9));
+        controller->Broadcast(
+          result.Visibility.data(), static_cast<vtkIdType>(result.Visibility.size()), root);
+      }
     }
   }
   if (status != 1)
   {
     return status < 0 ? 1 : 0; // aborted: empty outputs, no error
   }
+  if (stale)
+  {
+    in.Result = result;
+    in.HasResult = true;
+    in.Producer = producer;
+    in.Propagation = propagation;
+    in.SurfaceTime = surfaceTime;
+    in.Probes = n;
+    in.SceneOcclusion = this->SceneOcclusion;
+    ++this->ProbeComputations;
+  }
 
-  FillProbesImage(probesOutput, result.Probes, n);
+  FillProbesImage(probesOutput, result.Probes, n,
+    this->SceneOcclusion ? &result.Visibility : nullptr, result.Lights.size() / 9);
+  if (!this->AddVisibleShare(probesOutput, result.Frame))
+  {
+    probesOutput->Initialize();
+    return 1; // stopped: empty outputs
+  }
   AddPackedLights(result.Lights, this->EmitterLights);
   std::copy(result.Diffuse, result.Diffuse + 3, this->SurfaceDiffuse);
   std::copy(result.Limit, result.Limit + 7, this->DepthLimit);
@@ -617,4 +869,10 @@ void vtkLightFieldReliefSurface::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SurfaceName: " << this->SurfaceName << "\n";
   os << indent << "ProbesPerSide: " << this->ProbesPerSide << "\n";
   os << indent << "EmitterLights: " << this->EmitterLights->GetNumberOfItems() << "\n";
+  os << indent << "ReliefTextureData: " << this->Internals->ReliefTexture.Get() << "\n";
+  os << indent << "ReliefDepthScale: " << this->ReliefDepthScale << "\n";
+  os << indent << "WalledRelief: " << this->WalledRelief << "\n";
+  os << indent << "SceneOcclusion: " << this->SceneOcclusion << "\n";
+  os << indent << "ProbeComputations: " << this->ProbeComputations << "\n";
+  os << indent << "VisibleShareComputations: " << this->VisibleShareComputations << "\n";
 }

@@ -40,10 +40,28 @@
  * or computed by the rank that holds the whole field and sent to the others; every rank ends
  * with the same probes and emitter lights.
  *
+ * What makes the relief mapper shade like the CPU reference (`mesolight vlf render --relief`,
+ * vtkIrradianceProbesTexture), both optional and computed once per change, not per frame:
+ * - SceneOcclusion on: port 1 gets a fourth component, pixel (9 i + k, j) the scene's visibility
+ *   (Embree) of emitter light k (k < 9, GetEmitterLights' order; the mapper reads lights 0-7)
+ *   from probe (i, j), over the CPU
+ *   reference's emitter samples (mesolight::vlf::EmitterLightVisibility, core/ReliefOcclusion.h).
+ * - a relief texture given (SetReliefTextureData, vtkReliefMapper's form: depth in A, 0 = top,
+ *   1 = deepest; ReliefDepthScale its depth scale): port 1's field data gets the relief's
+ *   visible-share map over its texture (ReliefVisibleShareMap on the exact height-field
+ *   intersector, Mesolight::ReliefCore; vtkIrradianceProbesTexture::GetVisibleShareName() and
+ *   GetVisibleShareSizeName()), from which the mapper draws the relief's occlusion of its own
+ *   indirect light and its multi-bounce inter-reflection. Without it, and at depth scale 0 (a
+ *   flat relief hides nothing), V = 1 (no occlusion). A change of the relief texture, its depth
+ *   scale or WalledRelief recomputes the map only: for a surface of input port 1 the probes of
+ *   an unchanged field and surface are kept. Under MPI every rank computes the same map from
+ *   the shared texture frame (no communication; a rank whose map is stopped has empty outputs).
+ *
  * GetSurfaceDiffuse() is the surface's Kd (the relief actor's colour). An unknown name (the
  * message lists the scene's surfaces), a non-planar surface without texture coordinates, a
- * mirror, or no field are errors (vtkErrorMacro, empty outputs). Probe computation reports
- * progress; AbortExecute stops it (empty outputs, no error).
+ * mirror, or no field are errors (vtkErrorMacro, empty outputs); a relief texture without depth
+ * is an error too (the probes are still made, without the map). Probe and map computation report
+ * progress; AbortExecute stops them (empty outputs, no error).
  */
 #ifndef vtkLightFieldReliefSurface_h
 #define vtkLightFieldReliefSurface_h
@@ -108,6 +126,41 @@ public:
   vtkGetMacro(ProbesPerSide, int);
   ///@}
 
+  ///@{
+  /**
+   * The relief drawn on the surface, for its visible-share map (see above): an RGBA image of
+   * float or unsigned char (vtkReliefTextureFilter's output), depth in A; null (the default)
+   * for none. Its depth scale is ReliefDepthScale (vtkReliefProperty's convention, default
+   * 0.05, clamped to [0, 10]).
+   */
+  void SetReliefTextureData(vtkImageData* texture);
+  vtkImageData* GetReliefTextureData();
+  vtkSetClampMacro(ReliefDepthScale, double, 0.0, 10.0);
+  vtkGetMacro(ReliefDepthScale, double);
+  ///@}
+
+  ///@{
+  /**
+   * Whether the relief is recessed into its surface (side walls at its texture's border, what
+   * vtkReliefProperty's Silhouettes off draws and the command line's reliefs are) rather than
+   * continued beyond it (mesolight::HeightField::Edge). Default on.
+   */
+  vtkSetMacro(WalledRelief, bool);
+  vtkGetMacro(WalledRelief, bool);
+  vtkBooleanMacro(WalledRelief, bool);
+  ///@}
+
+  ///@{
+  /** The scene's visibility of each emitter light per probe in port 1 (see above). Default off. */
+  vtkSetMacro(SceneOcclusion, bool);
+  vtkGetMacro(SceneOcclusion, bool);
+  vtkBooleanMacro(SceneOcclusion, bool);
+  ///@}
+
+  /** Probe gatherings and visible-share maps computed so far (tests check what is kept). */
+  vtkGetMacro(ProbeComputations, int);
+  vtkGetMacro(VisibleShareComputations, int);
+
   /** The probe image (output port 1). */
   vtkImageData* GetProbesOutput();
 
@@ -160,6 +213,12 @@ private:
   vtkLightFieldReliefSurface(const vtkLightFieldReliefSurface&) = delete;
   // The route of input port 1 (any planar surface), MPI included.
   int RequestSurfaceData(vtkPolyData* input, vtkPolyData* output, vtkImageData* probesOutput);
+  // Adds the visible-share map of the relief texture over the texture frame (unit sphere:
+  // origin, u axis, v axis, normal) to the probes: false when stopped.
+  bool AddVisibleShare(vtkImageData* probesOutput, const double frame[12]);
+  // Where the map's share of the progress starts (the probes report before it): 0.5 when there
+  // is a map to make, else 1.
+  double MapProgress() const;
   void operator=(const vtkLightFieldReliefSurface&) = delete;
   friend class vtkLightFieldReliefSurfaceCore;
 
@@ -167,6 +226,13 @@ private:
   vtkVirtualLightField* LightFieldProducer = nullptr;
   std::string SurfaceName;
   int ProbesPerSide;
+  double ReliefDepthScale = 0.05;
+  bool WalledRelief = true;
+  bool SceneOcclusion = false;
+  int ProbeComputations = 0;
+  int VisibleShareComputations = 0;
+  struct vtkInternals; // what the last update computed, kept while its inputs do not change
+  std::unique_ptr<vtkInternals> Internals;
   double SurfaceDiffuse[3] = { 0.0, 0.0, 0.0 };
   double DepthLimit[7] = { 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0 }; // point, normal, mounted
   vtkNew<vtkLightCollection> EmitterLights;

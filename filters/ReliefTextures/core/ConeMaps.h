@@ -15,7 +15,7 @@
  *  - A. Tevs, I. Ihrke, H.-P. Seidel, "Maximum Mipmaps for Fast, Accurate, and Scalable
  *    Dynamic Height Field Rendering", I3D 2008 (the min-depth pyramid).
  *
- * Conventions (shared with vtkRelief/core/HeightFieldTracer.h and the relief shaders):
+ * Conventions (shared with reliefcore/core/HeightFieldTracer.h and the relief shaders):
  *  - texture space (u, v, d); d = depth in [0,1], 0 = top surface, 1 = deepest;
  *  - a depth map is w*h floats, row-major, row j = 0 at v ~ 0; sample (i, j) sits at the texel
  *    centre ((i + 0.5) / w, (j + 0.5) / h); the continuous surface is GL_LINEAR +

@@ -34,6 +34,8 @@ DELIBERATE = {
         "information about the last update (Python: GetPropertyValue)",
     ("MesolightReliefSurfaceRepresentation", "LightFieldProbeGatherings"):
         "information about the last updates (Python: GetPropertyValue)",
+    ("MesolightReliefSurfaceRepresentation", "LightFieldVisibleShareMaps"):
+        "information about the last updates (Python: GetPropertyValue)",
 }
 # ReliefSurfaceRepresentationProxy: a representation with its own client-side proxy class.
 REPRESENTATION_TAGS = ("RepresentationProxy", "ReliefSurfaceRepresentationProxy")

@@ -50,6 +50,11 @@ CHECKED_ELSEWHERE = {
     "LightField": "TestGUIReliefInLightField.py (set from the panel, the relief matches the wall)",
     "ReliefLightFieldAutoExposure": "Python/TestReliefInLightField.py (off, the relief misses "
                                     "the wall it matches when on)",
+    "ReliefLightFieldOcclusion": "Python/TestReliefFieldOcclusion.py (off, the relief misses the "
+                                 "CPU reference it matches when on)",
+    # The README pipeline's surface is flat, where the checkbox rightly changes nothing.
+    "SurfaceCurvature": "Python/TestReliefSurfaceCurvature.py (off, a relief on a sphere "
+                        "changes; on a flat square nothing)",
 }
 
 

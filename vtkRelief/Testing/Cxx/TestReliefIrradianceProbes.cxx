@@ -3,7 +3,7 @@
 // over the relief's texture, and the field's emitters as VTK point lights with a cosine lobe.
 // References: the analytic furnace case (constant radiance L: irradiance pi L at every normal),
 // and the CPU evaluation of the same lighting on the exact height-field intersector
-// (evaluation/core/ReliefShading, what `mesolight vlf render --relief` shades with), pixel by
+// (reliefcore/core/ReliefShading, what `mesolight vlf render --relief` shades with), pixel by
 // pixel along the rays of the rendered pixels. Negative cases: the flat normal, the probes'
 // coefficients in the wrong place, an emitter without its cosine lobe or without its 1 / d^2.
 #include "EnvironmentMaps.h" // SH9, EvaluateSHBasis

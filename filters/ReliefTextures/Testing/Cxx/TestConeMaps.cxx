@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Cone maps (core/ConeMaps.h): fast search == brute-force oracle, cone stepping with the maps
-// never passes the exact first hit (vtkRelief/core/HeightFieldTracer.h), the maps are not
+// never passes the exact first hit (reliefcore/core/HeightFieldTracer.h), the maps are not
 // needlessly narrow, the 8-bit encoding never widens a cone, and the min-depth pyramid bounds
 // the bilinear surface.
 #include "ConeMaps.h"

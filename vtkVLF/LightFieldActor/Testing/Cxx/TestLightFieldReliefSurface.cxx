@@ -10,6 +10,8 @@
 #include "vtkLightFieldActorCore.h"
 #include "vtkLightFieldReliefSurfaceCore.h"
 #include "vtkCornellBoxSource.h"
+#include "vtkIrradianceProbesTexture.h" // the visible share's array names
+#include "vtkTextureObject.h"           // for vtkIrradianceProbesTexture's inline getter
 #include "vtkVirtualLightField.h"
 #include "vtkVirtualLightFieldCore.h"
 
@@ -24,6 +26,7 @@
 #include <vtkCallbackCommand.h>
 #include <vtkCellArray.h>
 #include <vtkDataArray.h>
+#include <vtkFieldData.h>
 #include <vtkImageData.h>
 #include <vtkLight.h>
 #include <vtkLightCollection.h>
@@ -415,4 +418,195 @@ TEST(LightFieldReliefSurface, AMountedPatchLimitsItsDepthHalfwayToTheWall)
   ReliefSurfaceFixture named("back");
   EXPECT_FALSE(named.Surface->GetDepthLimitPlane(origin, normal))
     << "a named surface is the wall itself";
+}
+
+namespace
+{
+// A relief texture (RGBA floats, depth in A) of n x n texels: square cells of `cell` texels,
+// plateaus at depth 0.1 parted by grooves one texel wide at depth 1 (bricks and mortar).
+vtkSmartPointer<vtkImageData> GroovedTexture(int n, int cell)
+{
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(n, n, 1);
+  image->AllocateScalars(VTK_FLOAT, 4);
+  float* p = static_cast<float*>(image->GetScalarPointer());
+  for (int j = 0; j < n; ++j)
+  {
+    for (int i = 0; i < n; ++i)
+    {
+      float* t = p + 4 * (static_cast<std::size_t>(j) * n + i);
+      t[0] = t[1] = 0.5f;
+      t[2] = 1.0f;
+      t[3] = (i % cell == 0 || j % cell == 0) ? 1.0f : 0.1f;
+    }
+  }
+  return image;
+}
+} // namespace
+
+// The relief's visible-share map and the scene's visibility of the emitter lights (what the
+// walkthrough's relief adds to its probes, vtkIrradianceProbesTexture): the map is low in the
+// grooves and 1 on the plateaus' middles (the exact intersector: a plateau 0.9 above its grooves
+// sees the whole hemisphere there); the lights' visibility is a share; a new depth scale
+// computes the map again but keeps the probes; a new surface gathers them again; a texture
+// without depth is an error that keeps the probes.
+TEST(LightFieldReliefSurface, ReliefOcclusionAddsTheVisibleShareMapAndLightVisibility)
+{
+  vtkNew<vtkCornellBoxSource> box;
+  vtkNew<vtkVirtualLightField> field;
+  field->SetInputConnection(box->GetOutputPort());
+  field->SetDirections(33);
+  field->SetRaysPerSide(8);
+  field->SetIterations(1);
+  field->FinalGatherOff();
+  vtkNew<vtkPlaneSource> patch;
+  patch->SetOrigin(90.0, 90.0, 558.0);
+  patch->SetPoint1(90.0, 470.0, 558.0);
+  patch->SetPoint2(470.0, 90.0, 558.0);
+  patch->Update();
+  vtkNew<vtkLightFieldReliefSurface> surface;
+  vtkNew<mesolight_test::MessageCapture> messages;
+  messages->Watch(surface);
+  surface->SetLightFieldConnection(field->GetOutputPort());
+  surface->SetSurfaceData(patch->GetOutput());
+  surface->SetProbesPerSide(2);
+  surface->Update();
+  vtkImageData* probes = surface->GetProbesOutput();
+  ASSERT_EQ(probes->GetPointData()->GetScalars()->GetNumberOfComponents(), 3)
+    << "without SceneOcclusion the probes are as before";
+  EXPECT_EQ(
+    probes->GetFieldData()->GetArray(vtkIrradianceProbesTexture::GetVisibleShareName()), nullptr);
+
+  const int n = 32, cell = 8;
+  surface->SetReliefTextureData(GroovedTexture(n, cell));
+  surface->SetReliefDepthScale(0.2);
+  surface->SceneOcclusionOn();
+  surface->Update();
+  ASSERT_TRUE(messages->Errors.empty()) << messages->AllErrors();
+  probes = surface->GetProbesOutput();
+  vtkDataArray* scalars = probes->GetPointData()->GetScalars();
+  ASSERT_EQ(scalars->GetNumberOfComponents(), 4);
+  const int lights = surface->GetEmitterLights()->GetNumberOfItems();
+  ASSERT_GE(lights, 1);
+  for (vtkIdType p = 0; p < scalars->GetNumberOfTuples(); ++p)
+  {
+    const double visible = scalars->GetComponent(p, 3);
+    EXPECT_GE(visible, 0.0);
+    EXPECT_LE(visible, 1.0);
+    if (p % 9 >= lights)
+    {
+      EXPECT_EQ(visible, 1.0) << "no light k there";
+    }
+  }
+  vtkDataArray* share =
+    probes->GetFieldData()->GetArray(vtkIrradianceProbesTexture::GetVisibleShareName());
+  vtkDataArray* size =
+    probes->GetFieldData()->GetArray(vtkIrradianceProbesTexture::GetVisibleShareSizeName());
+  ASSERT_NE(share, nullptr);
+  ASSERT_NE(size, nullptr);
+  ASSERT_EQ(size->GetComponent(0, 0), n);
+  ASSERT_EQ(size->GetComponent(1, 0), n);
+  ASSERT_EQ(share->GetNumberOfTuples(), n * n);
+  double groove = 0.0, middle = 0.0;
+  int grooves = 0, middles = 0;
+  for (int j = 1; j < n - 1; ++j)
+  {
+    for (int i = 1; i < n - 1; ++i)
+    {
+      const double v = share->GetComponent(static_cast<vtkIdType>(j) * n + i, 0);
+      if (i % cell == 0 && j % cell != 0)
+      {
+        groove += v;
+        ++grooves;
+      }
+      else if (i % cell == cell / 2 && j % cell == cell / 2 && i > cell && j > cell &&
+        i < n - cell && j < n - cell) // away from the walled border
+      {
+        middle += v;
+        ++middles;
+      }
+    }
+  }
+  groove /= grooves;
+  middle /= middles;
+  std::cout << "visible share: grooves " << groove << ", plateau middles " << middle << "\n";
+  EXPECT_LT(groove, 0.6) << "a groove one texel wide and 0.9 deep hides most of the room";
+  EXPECT_GT(middle, 0.99);
+  EXPECT_EQ(surface->GetProbeComputations(), 2) << "SceneOcclusion gathers again";
+  EXPECT_EQ(surface->GetVisibleShareComputations(), 1);
+
+  // A new depth scale: the map again, the probes kept; deeper, the grooves darker.
+  surface->SetReliefDepthScale(0.4);
+  surface->Update();
+  EXPECT_EQ(surface->GetProbeComputations(), 2);
+  EXPECT_EQ(surface->GetVisibleShareComputations(), 2);
+  share = surface->GetProbesOutput()->GetFieldData()->GetArray(
+    vtkIrradianceProbesTexture::GetVisibleShareName());
+  ASSERT_NE(share, nullptr);
+  EXPECT_LT(share->GetComponent(static_cast<vtkIdType>(4) * n + cell, 0), groove + 1e-9);
+  // A new surface: the probes again, the map kept (same frame, texture and depth scale).
+  vtkNew<vtkPolyData> copy;
+  copy->DeepCopy(patch->GetOutput());
+  surface->SetSurfaceData(copy);
+  surface->Update();
+  EXPECT_EQ(surface->GetProbeComputations(), 3);
+  EXPECT_EQ(surface->GetVisibleShareComputations(), 2);
+
+  // A texture without depth: an error, the probes still made (without the map).
+  vtkNew<vtkImageData> bad;
+  bad->SetDimensions(4, 4, 1);
+  bad->AllocateScalars(VTK_FLOAT, 1);
+  surface->SetReliefTextureData(bad);
+  surface->Update();
+  EXPECT_TRUE(messages->HasError("RGBA")) << messages->AllErrors();
+  EXPECT_GT(surface->GetProbesOutput()->GetNumberOfPoints(), 0);
+  EXPECT_EQ(surface->GetProbesOutput()->GetFieldData()->GetArray(
+              vtkIrradianceProbesTexture::GetVisibleShareName()),
+    nullptr);
+}
+
+// The map reports its progress after the probes' (non-decreasing, the second half) and stops on
+// AbortExecute: empty outputs, no error; the next update makes it.
+TEST(LightFieldReliefSurface, AbortStopsTheVisibleShareMapWithoutError)
+{
+  ReliefSurfaceFixture f("back", 2);
+  f.Surface->SetReliefTextureData(GroovedTexture(64, 8));
+  f.Surface->SetReliefDepthScale(0.2);
+  struct Watch
+  {
+    std::vector<double> Fractions;
+    bool Abort = true;
+  } watch;
+  vtkNew<vtkCallbackCommand> abort;
+  abort->SetClientData(&watch);
+  abort->SetCallback(
+    [](vtkObject* caller, unsigned long, void* data, void* fraction)
+    {
+      auto* w = static_cast<Watch*>(data);
+      w->Fractions.push_back(*static_cast<double*>(fraction));
+      if (w->Abort && w->Fractions.back() > 0.5)
+      {
+        static_cast<vtkLightFieldReliefSurface*>(caller)->SetAbortExecute(1);
+      }
+    });
+  f.Surface->AddObserver(vtkCommand::ProgressEvent, abort);
+  f.Surface->Update();
+  EXPECT_TRUE(f.Messages->Errors.empty()) << f.Messages->AllErrors();
+  EXPECT_EQ(f.Surface->GetOutput()->GetNumberOfPoints(), 0);
+  EXPECT_EQ(f.Surface->GetProbesOutput()->GetNumberOfPoints(), 0);
+  EXPECT_EQ(f.Surface->GetVisibleShareComputations(), 0);
+  ASSERT_FALSE(watch.Fractions.empty());
+  for (std::size_t k = 1; k < watch.Fractions.size(); ++k)
+  {
+    EXPECT_GE(watch.Fractions[k], watch.Fractions[k - 1]) << "progress went back at " << k;
+  }
+
+  watch.Abort = false;
+  f.Surface->SetAbortExecute(0);
+  f.Surface->Modified();
+  f.Surface->Update();
+  EXPECT_EQ(f.Surface->GetVisibleShareComputations(), 1);
+  EXPECT_NE(f.Surface->GetProbesOutput()->GetFieldData()->GetArray(
+              vtkIrradianceProbesTexture::GetVisibleShareName()),
+    nullptr);
 }

@@ -23,7 +23,7 @@
 #ifndef mesolight_HeightFieldTracer_h
 #define mesolight_HeightFieldTracer_h
 
-#include "MesolightEvaluationModule.h" // for the export macro
+#include "MesolightReliefCoreModule.h" // for the export macro
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -36,7 +36,7 @@ namespace mesolight
 {
 
 /** W x H depth samples and the continuous bilinear, clamp-to-edge surface through them. */
-class MESOLIGHTEVALUATION_EXPORT HeightField
+class MESOLIGHTRELIEFCORE_EXPORT HeightField
 {
 public:
   /** What lies beyond the texture rectangle [0, 1]^2 (see the conventions above). */
@@ -103,7 +103,7 @@ struct RayHit
  * <= 1e-12 * max(1, t) around the first sign change of (ray d - surface depth) as evaluated in
  * double: the point at t is on or below, just before it the ray is above.
  */
-MESOLIGHTEVALUATION_EXPORT std::optional<RayHit> IntersectFirst(
+MESOLIGHTRELIEFCORE_EXPORT std::optional<RayHit> IntersectFirst(
   const HeightField& hf, const glm::dvec3& origin, const glm::dvec3& dir, double tMax);
 
 /**
@@ -112,7 +112,7 @@ MESOLIGHTEVALUATION_EXPORT std::optional<RayHit> IntersectFirst(
  * light at or below the horizon (toLight.z >= 0) gives false, as does any non-finite input. The
  * ray starts epsilon along normalize(toLight) from point, to avoid self-intersection.
  */
-MESOLIGHTEVALUATION_EXPORT bool Visible(
+MESOLIGHTRELIEFCORE_EXPORT bool Visible(
   const HeightField& hf, const glm::dvec3& point, const glm::dvec3& toLight, double epsilon = 1e-6);
 
 /**
@@ -121,7 +121,7 @@ MESOLIGHTEVALUATION_EXPORT bool Visible(
  * can miss features thinner than a step, so it may report a later hit or none; never an earlier
  * one. Throws std::invalid_argument if samples < 1.
  */
-MESOLIGHTEVALUATION_EXPORT std::optional<RayHit> IntersectFirstBruteForce(
+MESOLIGHTRELIEFCORE_EXPORT std::optional<RayHit> IntersectFirstBruteForce(
   const HeightField& hf, const glm::dvec3& origin, const glm::dvec3& dir, double tMax, int samples);
 
 } // namespace mesolight

@@ -19,7 +19,7 @@
 
 #include "EnvironmentMaps.h" // SH9
 #include "HeightFieldTracer.h"
-#include "MesolightEvaluationModule.h" // for the export macro
+#include "MesolightReliefCoreModule.h" // for the export macro
 #include "Progress.h"
 
 #include <glm/vec3.hpp>
@@ -32,7 +32,7 @@ namespace mesolight
 {
 
 /** The affine texture map of a planar surface and its relief depth (see above). */
-struct MESOLIGHTEVALUATION_EXPORT ReliefFrame
+struct MESOLIGHTRELIEFCORE_EXPORT ReliefFrame
 {
   glm::dvec3 Origin{ 0.0 };
   glm::dvec3 AxisU{ 1.0, 0.0, 0.0 };
@@ -113,29 +113,29 @@ struct ReliefShade
 };
 
 /** The perturbed unit normal of the displaced surface at (u, v) (front side). */
-MESOLIGHTEVALUATION_EXPORT glm::dvec3 ReliefNormalAt(
+MESOLIGHTRELIEFCORE_EXPORT glm::dvec3 ReliefNormalAt(
   const HeightField& hf, const ReliefFrame& frame, double u, double v);
 
 /**
  * The unit world normal of a walled relief's side wall (RayHit::wall, its normal in (u, v)): in
  * the wall's plane through the macro normal and the border, pointing back into the relief.
  */
-MESOLIGHTEVALUATION_EXPORT glm::dvec3 ReliefWallNormal(
+MESOLIGHTRELIEFCORE_EXPORT glm::dvec3 ReliefWallNormal(
   const ReliefFrame& frame, const glm::dvec2& wall);
 
 /** The SH radiance of the probes at (u, v) arriving from unit direction w, clamped at 0. */
-MESOLIGHTEVALUATION_EXPORT glm::dvec3 ProbeRadiance(
+MESOLIGHTRELIEFCORE_EXPORT glm::dvec3 ProbeRadiance(
   const ReliefLighting& lighting, double u, double v, const glm::dvec3& w);
 
 /** The SH irradiance of the probes at (u, v) for unit normal n, clamped at 0. */
-MESOLIGHTEVALUATION_EXPORT glm::dvec3 ProbeIrradiance(
+MESOLIGHTRELIEFCORE_EXPORT glm::dvec3 ProbeIrradiance(
   const ReliefLighting& lighting, double u, double v, const glm::dvec3& n);
 
 /**
  * The relief seen along the world ray origin + t dir: its first hit (exact, IntersectFirst) and
  * the irradiance there. nullopt when the ray does not reach the front of the macro plane.
  */
-MESOLIGHTEVALUATION_EXPORT std::optional<ReliefShade> ShadeReliefRay(const HeightField& hf,
+MESOLIGHTRELIEFCORE_EXPORT std::optional<ReliefShade> ShadeReliefRay(const HeightField& hf,
   const ReliefFrame& frame, const ReliefLighting& lighting, const glm::dvec3& origin,
   const glm::dvec3& dir, ReliefNormal normal = ReliefNormal::Perturbed);
 
@@ -145,7 +145,7 @@ MESOLIGHTEVALUATION_EXPORT std::optional<ReliefShade> ShadeReliefRay(const Heigh
  * ShadeReliefRay's occlusion (`count` of them), a direction below the macro plane or blocked by
  * the height field counting as occluded. The V of the inter-reflection (ReliefLighting::Albedo).
  */
-MESOLIGHTEVALUATION_EXPORT double ReliefVisibleShare(const HeightField& hf,
+MESOLIGHTRELIEFCORE_EXPORT double ReliefVisibleShare(const HeightField& hf,
   const ReliefFrame& frame, const glm::dvec3& hit, const glm::dvec3& n, int count,
   double* abovePlane = nullptr); // abovePlane: the share of the directions above the macro plane
 
@@ -158,7 +158,7 @@ MESOLIGHTEVALUATION_EXPORT double ReliefVisibleShare(const HeightField& hf,
  * height field reads its share from the map (bilinear between cell centres, clamped), one met on
  * a side wall is still marched: what the relief mapper's precomputed map holds.
  */
-MESOLIGHTEVALUATION_EXPORT double ReliefSeenShare(const HeightField& hf, const ReliefFrame& frame,
+MESOLIGHTRELIEFCORE_EXPORT double ReliefSeenShare(const HeightField& hf, const ReliefFrame& frame,
   const glm::dvec3& hit, const glm::dvec3& n, int count, const std::vector<float>* shareMap = nullptr,
   int mapWidth = 0, int mapHeight = 0);
 
@@ -170,12 +170,12 @@ MESOLIGHTEVALUATION_EXPORT double ReliefSeenShare(const HeightField& hf, const R
  * (ReliefSeenShare). The one formula of both relief renderers: ShadeReliefRay and the relief
  * mapper's probe shading (vtkReliefIrradianceProbesFS.glsl, mlProbeIndirect) use it.
  */
-MESOLIGHTEVALUATION_EXPORT glm::dvec3 ReliefInterReflected(ReliefInterReflection model,
+MESOLIGHTRELIEFCORE_EXPORT glm::dvec3 ReliefInterReflected(ReliefInterReflection model,
   double visibleShare, double seenShare, const glm::dvec3& albedo,
   const glm::dvec3& flatIrradiance);
 
 /** The same with the seen relief taken to be occluded like the shaded point (Vs = V). */
-MESOLIGHTEVALUATION_EXPORT glm::dvec3 ReliefInterReflected(ReliefInterReflection model,
+MESOLIGHTRELIEFCORE_EXPORT glm::dvec3 ReliefInterReflected(ReliefInterReflection model,
   double visibleShare, const glm::dvec3& albedo, const glm::dvec3& flatIrradiance);
 
 /**
@@ -189,7 +189,7 @@ MESOLIGHTEVALUATION_EXPORT glm::dvec3 ReliefInterReflected(ReliefInterReflection
  * leaves them out for the same reason). Parallel; reports progress, and a stop throws
  * std::runtime_error("aborted").
  */
-MESOLIGHTEVALUATION_EXPORT std::vector<float> ReliefVisibleShareMap(const HeightField& hf,
+MESOLIGHTRELIEFCORE_EXPORT std::vector<float> ReliefVisibleShareMap(const HeightField& hf,
   const ReliefFrame& frame, int width, int height, int count,
   const ProgressCallback& progress = {});
 
@@ -199,7 +199,7 @@ MESOLIGHTEVALUATION_EXPORT std::vector<float> ReliefVisibleShareMap(const Height
  * mapper's third channel of the map (vtkIrradianceProbesTexture). Parallel; progress and stop as
  * ReliefVisibleShareMap.
  */
-MESOLIGHTEVALUATION_EXPORT std::vector<float> ReliefSeenShareMap(const HeightField& hf,
+MESOLIGHTRELIEFCORE_EXPORT std::vector<float> ReliefSeenShareMap(const HeightField& hf,
   const ReliefFrame& frame, const std::vector<float>& share, int width, int height, int count,
   const ProgressCallback& progress = {});
 

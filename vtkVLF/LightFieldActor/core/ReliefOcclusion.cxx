@@ -1,0 +1,185 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "ReliefOcclusion.h"
+
+#include "EmbreeScene.h"
+#include "LightField.h"
+#include "ReliefSurface.h"
+#include "TriangleScene.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <thread>
+
+namespace mesolight
+{
+namespace vlf
+{
+
+std::vector<ReliefEmitterSample> EmitterSamples(const TriangleScene& scene, int n)
+{
+  std::vector<ReliefEmitterSample> samples;
+  for (std::size_t t = 0; t < scene.TriangleCount(); ++t)
+  {
+    const glm::vec3 ke = scene.MaterialOf(t).Emission;
+    const double area = scene.Area(t);
+    if (!(ke.x + ke.y + ke.z > 0.0f) || !(area > 0.0))
+    {
+      continue;
+    }
+    const glm::dvec3 a(scene.Vertex(t, 0)), b(scene.Vertex(t, 1)), c(scene.Vertex(t, 2));
+    const glm::dvec3 normal = glm::normalize(glm::dvec3(scene.FaceNormal(t)));
+    for (int i = 0; i < n; ++i)
+    {
+      for (int j = 0; j < n; ++j)
+      {
+        const double s = (i + 0.5) / n, r = std::sqrt((j + 0.5) / n);
+        ReliefEmitterSample sample;
+        sample.Position = (1.0 - r) * a + r * (1.0 - s) * b + r * s * c;
+        sample.Normal = normal;
+        sample.RadianceArea = glm::dvec3(ke) * (area / (n * n));
+        samples.push_back(sample);
+      }
+    }
+  }
+  return samples;
+}
+
+std::vector<float> EmitterLightVisibility(const LightField& field, const EmbreeScene& scene,
+  const ReliefSurface& surface, const std::vector<glm::vec3>& lights, int probesU, int probesV,
+  int samplesPerSide)
+{
+  const std::size_t count = lights.size();
+  std::vector<float> visibility(static_cast<std::size_t>(probesU) * probesV * count, 1.0f);
+  if (count == 0)
+  {
+    return visibility;
+  }
+  const std::vector<ReliefEmitterSample> samples =
+    EmitterSamples(field.Scene(), std::max(1, samplesPerSide));
+  std::vector<std::size_t> nearest(samples.size(), 0);
+  for (std::size_t s = 0; s < samples.size(); ++s)
+  {
+    double best = std::numeric_limits<double>::max();
+    for (std::size_t k = 0; k < count; ++k)
+    {
+      const glm::dvec3 d = samples[s].Position - glm::dvec3(lights[k]);
+      if (glm::dot(d, d) < best)
+      {
+        best = glm::dot(d, d);
+        nearest[s] = k;
+      }
+    }
+  }
+  for (int j = 0; j < probesV; ++j)
+  {
+    for (int i = 0; i < probesU; ++i)
+    {
+      const glm::dvec3 p(ReliefProbePoint(surface, i, j, probesU, probesV));
+      std::vector<double> all(count, 0.0), seen(count, 0.0);
+      for (std::size_t s = 0; s < samples.size(); ++s)
+      {
+        const ReliefEmitterSample& e = samples[s];
+        const glm::dvec3 toLight = e.Position - p;
+        const double r2 = glm::dot(toLight, toLight);
+        if (!(r2 > 0.0))
+        {
+          continue;
+        }
+        const glm::dvec3 l = toLight / std::sqrt(r2);
+        const double weight = glm::dot(surface.Normal, l) * -glm::dot(e.Normal, l) / r2 *
+          (0.2126 * e.RadianceArea.x + 0.7152 * e.RadianceArea.y + 0.0722 * e.RadianceArea.z);
+        if (!(weight > 0.0))
+        {
+          continue;
+        }
+        all[nearest[s]] += weight;
+        SceneRay ray;
+        ray.Origin = glm::vec3(p);
+        ray.Direction = glm::vec3(l);
+        ray.TNear = 1e-4f;
+        ray.TFar = static_cast<float>(std::sqrt(r2) * (1.0 - 1e-4));
+        if (!scene.Occluded(ray))
+        {
+          seen[nearest[s]] += weight;
+        }
+      }
+      for (std::size_t k = 0; k < count; ++k)
+      {
+        if (all[k] > 0.0)
+        {
+          visibility[(static_cast<std::size_t>(j) * probesU + i) * count + k] =
+            static_cast<float>(seen[k] / all[k]);
+        }
+      }
+    }
+  }
+  return visibility;
+}
+
+ReliefFrame ReliefFrameOf(const ReliefSurface& surface, double depthScale)
+{
+  ReliefFrame frame;
+  frame.Origin = surface.Origin;
+  frame.AxisU = surface.AxisU;
+  frame.AxisV = surface.AxisV;
+  frame.Normal = surface.Normal;
+  frame.DepthScale = depthScale;
+  return frame;
+}
+
+std::vector<float> ReliefVisibleShareGrid(const HeightField& field, const ReliefFrame& frame,
+  int& gridWidth, int& gridHeight, const ProgressCallback& progress)
+{
+  gridWidth = std::min(field.Width(), MaxVisibleShareSide);
+  gridHeight = std::min(field.Height(), MaxVisibleShareSide);
+  // ReliefVisibleShareMap reports from its worker threads: only the calling thread talks to the
+  // caller's callback (a VTK filter's UpdateProgress is for the thread that runs the filter);
+  // the workers see its answer through the flag.
+  const std::thread::id caller = std::this_thread::get_id();
+  std::atomic<bool> stopped{ false };
+  const ProgressCallback watched = [&](double fraction)
+  {
+    if (std::this_thread::get_id() == caller && !ReportProgress(progress, fraction))
+    {
+      stopped = true;
+    }
+    return !stopped;
+  };
+  // Half the work each: the visible share, then the share of the relief each cell's occluded
+  // directions meet (ReliefSeenShareMap, which reads the first).
+  const ProgressCallback firstHalf = [&](double fraction) { return watched(0.5 * fraction); };
+  const ProgressCallback secondHalf = [&](double fraction)
+  { return watched(0.5 + 0.5 * fraction); };
+  try
+  {
+    const int count = ReliefLighting().OcclusionDirections;
+    const std::vector<float> share =
+      ReliefVisibleShareMap(field, frame, gridWidth, gridHeight, count, firstHalf);
+    const std::vector<float> seen =
+      ReliefSeenShareMap(field, frame, share, gridWidth, gridHeight, count, secondHalf);
+    std::vector<float> cells(3 * seen.size());
+    for (std::size_t c = 0; c < seen.size(); ++c)
+    {
+      cells[3 * c] = share[2 * c];
+      cells[3 * c + 1] = share[2 * c + 1];
+      cells[3 * c + 2] = seen[c];
+    }
+    return cells;
+  }
+  catch (const std::runtime_error&)
+  {
+    if (stopped)
+    {
+      throw AbortedError();
+    }
+    throw;
+  }
+}
+
+} // namespace vlf
+} // namespace mesolight

@@ -1,0 +1,65 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// ReliefOcclusion: what a relief surface lit by a light field needs beyond its probes to shade
+// like the CPU reference (`mesolight vlf render --relief`) at near-zero cost per pixel in the
+// relief mapper (vtkIrradianceProbesTexture): the field's emitters as small area samples (the CPU
+// reference's direct light), the scene's visibility of each emitter light from each probe
+// (Embree), and the relief's own visible-share map over its texture (ReliefVisibleShareMap on
+// the exact height-field intersector, Mesolight::ReliefCore). One implementation, used by
+// vtkLightFieldReliefSurface for the walkthrough's reliefs (`vlf view --relief`) and ParaView's
+// Relief Surface alike, and by the CPU reference's emitter samples (application/VlfRelief.cxx).
+// Plain C++ (GLM), unit-sphere coordinates.
+#ifndef mesolight_vlf_ReliefOcclusion_h
+#define mesolight_vlf_ReliefOcclusion_h
+
+#include "HeightFieldTracer.h" // HeightField
+#include "Progress.h"
+#include "ReliefShading.h" // ReliefEmitterSample, ReliefFrame
+
+#include <glm/vec3.hpp>
+
+#include <vector>
+
+namespace mesolight
+{
+class EmbreeScene;
+class TriangleScene;
+namespace vlf
+{
+class LightField;
+struct ReliefSurface;
+
+// Texels per side of a relief's visible-share map at most: V varies at the scale of the
+// relief's features, and the map costs OcclusionDirections exact marches per texel, once.
+constexpr int MaxVisibleShareSide = 256;
+
+// n x n stratified samples of every emitting triangle of the scene (Shirley's square-to-triangle
+// map), the CPU reference's emitters.
+std::vector<ReliefEmitterSample> EmitterSamples(const TriangleScene& scene, int n);
+
+// The scene's visibility of point lights from a relief surface's SH9 probes (for the relief
+// mapper, vtkIrradianceProbesTexture's fourth component): per probe (i, j) of a probesU x probesV
+// grid (ReliefProbePoint, j slowest) and light k, the share of the flat wall's irradiance
+// from the field's emitters that reaches the probe past the scene, over the CPU renderer's
+// emitter samples (n x n per emitting triangle) nearest to light k (unit-sphere positions).
+// 1 where no sample lights the probe. Index ((j probesU + i) lights + k).
+std::vector<float> EmitterLightVisibility(const LightField& field, const EmbreeScene& scene,
+  const ReliefSurface& surface, const std::vector<glm::vec3>& lights, int probesU, int probesV,
+  int samplesPerSide = 4);
+
+// The relief frame of a surface's texture (unit sphere) with that depth scale.
+ReliefFrame ReliefFrameOf(const ReliefSurface& surface, double depthScale);
+
+// The relief's visible-share map (ReliefVisibleShareMap with ReliefLighting's directions, as the
+// CPU reference shades) on the height field's texel grid, at most MaxVisibleShareSide cells a
+// side; gridWidth and gridHeight are set to the grid used. The values of a cell follow one
+// another (row-major, j slowest), as many per cell as vtkIrradianceProbesTexture's visible-share
+// array has components (now 3: V, V over the share of directions above the macro plane, and the
+// visible share of the relief the occluded directions meet, ReliefSeenShareMap). A stop asked
+// through progress throws AbortedError.
+std::vector<float> ReliefVisibleShareGrid(const HeightField& field, const ReliefFrame& frame,
+  int& gridWidth, int& gridHeight, const ProgressCallback& progress = {});
+
+} // namespace vlf
+} // namespace mesolight
+
+#endif
