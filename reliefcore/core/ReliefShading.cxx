@@ -144,6 +144,37 @@ bool LeavesRelief(
   return glm::dot(w, frame.Normal) > 0.0 &&
     Visible(hf, glm::dvec3(hit.x, hit.y, std::max(0.0, hit.z)), frame.ToTexture(w), 1e-6);
 }
+
+// Calls cell(i, j, u, v) for every cell of a width x height grid over the texture (u, v at the
+// cell's centre), rows in parallel; progress is reported per row and a stop throws "aborted".
+template <typename Cell>
+void ForEachGridCell(int width, int height, const ProgressCallback& progress, const Cell& cell)
+{
+  std::atomic<int> rowsDone{ 0 };
+  std::atomic<bool> stop{ false };
+  ParallelFor(0, static_cast<std::size_t>(height), 1,
+    [&](std::size_t begin, std::size_t end)
+    {
+      for (std::size_t j = begin; j < end && !stop; ++j)
+      {
+        const double v = (j + 0.5) / height;
+        for (int i = 0; i < width; ++i)
+        {
+          cell(static_cast<std::size_t>(i), j, (i + 0.5) / width, v);
+        }
+        const int done = ++rowsDone;
+        if (!ReportProgress(progress, static_cast<double>(done) / height))
+        {
+          stop = true;
+        }
+      }
+    });
+  if (stop)
+  {
+    throw std::runtime_error("aborted");
+  }
+}
+
 } // namespace
 
 double ReliefVisibleShare(const HeightField& hf, const ReliefFrame& frame, const glm::dvec3& hit,
@@ -264,36 +295,17 @@ std::vector<float> ReliefVisibleShareMap(const HeightField& hf, const ReliefFram
     throw std::invalid_argument("ReliefVisibleShareMap: the grid must be at least 1 x 1");
   }
   std::vector<float> share(2 * static_cast<std::size_t>(width) * height, 1.0f);
-  std::atomic<int> rowsDone{ 0 };
-  std::atomic<bool> stop{ false };
-  ParallelFor(0, static_cast<std::size_t>(height), 1,
-    [&](std::size_t begin, std::size_t end)
+  ForEachGridCell(width, height, progress,
+    [&](std::size_t i, std::size_t j, double u, double v)
     {
-      for (std::size_t j = begin; j < end && !stop; ++j)
-      {
-        const double v = (j + 0.5) / height;
-        for (int i = 0; i < width; ++i)
-        {
-          const double u = (i + 0.5) / width;
-          const glm::dvec3 hit(u, v, hf.DepthAt(u, v));
-          double above = 1.0;
-          const double visible =
-            ReliefVisibleShare(hf, frame, hit, ReliefNormalAt(hf, frame, u, v), count, &above);
-          share[2 * (j * width + i)] = static_cast<float>(visible);
-          share[2 * (j * width + i) + 1] =
-            static_cast<float>(above > 0.0 ? std::min(1.0, visible / above) : 1.0);
-        }
-        const int done = ++rowsDone;
-        if (!ReportProgress(progress, static_cast<double>(done) / height))
-        {
-          stop = true;
-        }
-      }
+      const glm::dvec3 hit(u, v, hf.DepthAt(u, v));
+      double above = 1.0;
+      const double visible =
+        ReliefVisibleShare(hf, frame, hit, ReliefNormalAt(hf, frame, u, v), count, &above);
+      share[2 * (j * width + i)] = static_cast<float>(visible);
+      share[2 * (j * width + i) + 1] =
+        static_cast<float>(above > 0.0 ? std::min(1.0, visible / above) : 1.0);
     });
-  if (stop)
-  {
-    throw std::runtime_error("aborted");
-  }
   return share;
 }
 
@@ -307,32 +319,13 @@ std::vector<float> ReliefSeenShareMap(const HeightField& hf, const ReliefFrame& 
       "ReliefSeenShareMap: the visible-share map must hold two values per cell of the grid");
   }
   std::vector<float> seen(static_cast<std::size_t>(width) * height, 1.0f);
-  std::atomic<int> rowsDone{ 0 };
-  std::atomic<bool> stop{ false };
-  ParallelFor(0, static_cast<std::size_t>(height), 1,
-    [&](std::size_t begin, std::size_t end)
+  ForEachGridCell(width, height, progress,
+    [&](std::size_t i, std::size_t j, double u, double v)
     {
-      for (std::size_t j = begin; j < end && !stop; ++j)
-      {
-        const double v = (j + 0.5) / height;
-        for (int i = 0; i < width; ++i)
-        {
-          const double u = (i + 0.5) / width;
-          const glm::dvec3 hit(u, v, hf.DepthAt(u, v));
-          seen[j * width + i] = static_cast<float>(ReliefSeenShare(
-            hf, frame, hit, ReliefNormalAt(hf, frame, u, v), count, &share, width, height));
-        }
-        const int done = ++rowsDone;
-        if (!ReportProgress(progress, static_cast<double>(done) / height))
-        {
-          stop = true;
-        }
-      }
+      const glm::dvec3 hit(u, v, hf.DepthAt(u, v));
+      seen[j * width + i] = static_cast<float>(ReliefSeenShare(
+        hf, frame, hit, ReliefNormalAt(hf, frame, u, v), count, &share, width, height));
     });
-  if (stop)
-  {
-    throw std::runtime_error("aborted");
-  }
   return seen;
 }
 
