@@ -152,16 +152,13 @@ std::vector<float> ReliefVisibleShareGrid(const HeightField& field, const Relief
   };
   // Half the work each: the visible share, then the share of the relief each cell's occluded
   // directions meet (ReliefSeenShareMap, which reads the first).
-  const ProgressCallback firstHalf = [&](double fraction) { return watched(0.5 * fraction); };
-  const ProgressCallback secondHalf = [&](double fraction)
-  { return watched(0.5 + 0.5 * fraction); };
   try
   {
     const int count = ReliefLighting().OcclusionDirections;
-    const std::vector<float> share =
-      ReliefVisibleShareMap(field, frame, gridWidth, gridHeight, count, firstHalf);
-    const std::vector<float> seen =
-      ReliefSeenShareMap(field, frame, share, gridWidth, gridHeight, count, secondHalf);
+    const std::vector<float> share = ReliefVisibleShareMap(
+      field, frame, gridWidth, gridHeight, count, SubProgress(watched, 0.0, 0.5));
+    const std::vector<float> seen = ReliefSeenShareMap(
+      field, frame, share, gridWidth, gridHeight, count, SubProgress(watched, 0.5, 1.0));
     std::vector<float> cells(3 * seen.size());
     for (std::size_t c = 0; c < seen.size(); ++c)
     {
