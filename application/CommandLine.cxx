@@ -174,8 +174,8 @@ std::string PropertyName(const std::string& option)
       upper = true;
       continue;
     }
-    name.push_back(upper ? static_cast<char>(std::toupper(static_cast<unsigned char>(option[i])))
-                         : option[i]);
+    name.push_back(
+      upper ? static_cast<char>(std::toupper(static_cast<unsigned char>(option[i]))) : option[i]);
     upper = false;
   }
   return name;

@@ -361,8 +361,9 @@ int RunGatherBenchmark(const std::vector<std::string>& args)
           count, settings.Subdivision, pathSteps, 100.0 * rate, cached, gathered,
           1e3 * seconds / (pathSteps + 1));
         // The path's row: its points, set "path", the time per step in the all-threads column.
-        csv << count << "," << settings.Subdivision << "," << gatherer.Result().Mesh.Positions.size()
-            << ",path," << gatherer.Result().DirectionsUsed << ",,,"
+        csv << count << "," << settings.Subdivision << ","
+            << gatherer.Result().Mesh.Positions.size() << ",path,"
+            << gatherer.Result().DirectionsUsed << ",,,"
             << 1e6 * seconds / (pathSteps + 1) /
             static_cast<double>(gatherer.Result().Mesh.Positions.size())
             << ",," << rate << "," << objectName << ",on,\n";

@@ -272,9 +272,9 @@ int RunHallucinateCommand(const std::vector<std::string>& args)
     if (estimate > 2.0)
     {
       std::cerr << "hallucinating " << size[0] << "x" << size[1] << ", "
-                << (layers > 0 ? std::to_string(layers) + " layers"
-                              : layers == 0 ? "the scale average"
-                                            : "automatic layers")
+                << (layers > 0       ? std::to_string(layers) + " layers"
+                       : layers == 0 ? "the scale average"
+                                     : "automatic layers")
                 << ": at most about " << std::setprecision(2) << estimate << " s\n";
     }
   }
@@ -411,7 +411,8 @@ int RunHallucinationBenchmark(const std::vector<std::string>& args)
   HallucinationModel model = HallucinationModel::Ratio;
   if (!GetHallucinationModel(cl, model, error) || !cl.GetInt("--size", 8, 2048, size, error) ||
     !cl.GetInt("--samples", 1, 4096, samples, error) ||
-    !GetHallucinationLayers(cl, layers, error) || !cl.GetDouble("--relief", 0.01, 1000.0, relief, error) ||
+    !GetHallucinationLayers(cl, layers, error) ||
+    !cl.GetDouble("--relief", 0.01, 1000.0, relief, error) ||
     (cl.Has("--sweep") && !cl.GetIntList("--sweep", 1, 12, sweep, error)))
   {
     return cl.UsageError(error);
@@ -533,8 +534,8 @@ int RunHallucinationBenchmark(const std::vector<std::string>& args)
       if (!ReadRgb((dir / (label + "-diffuse.exr")).string(), shots.Diffuse) ||
         !ReadRgb((dir / (label + "-flash.exr")).string(), shots.Flash) ||
         !ReadRgb((dir / (label + "-calibration.exr")).string(), shots.Calibration) ||
-        !ReadRgb((dir / (label + "-true-depth.exr")).string(), trueDepth) ||
-        trueDepth.Width != w || trueDepth.Height != h)
+        !ReadRgb((dir / (label + "-true-depth.exr")).string(), trueDepth) || trueDepth.Width != w ||
+        trueDepth.Height != h)
       {
         std::cerr << "mesolight bench hallucinate: no photographs of " << label << " in "
                   << fromPhotos << " (or of another size)\n";
@@ -616,8 +617,8 @@ int RunHallucinationBenchmark(const std::vector<std::string>& args)
       HallucinationSettings previous = settings;
       previous.Layers = 0;
       previous.Model = HallucinationModel::Shading;
-      methods.push_back({ "model-shading-average",
-        DepthFromShading(result.Shading, w, h, previous), result.Layers });
+      methods.push_back({ "model-shading-average", DepthFromShading(result.Shading, w, h, previous),
+        result.Layers });
       HallucinationSettings automatic = settings;
       automatic.Layers = 0;
       const HallucinationScale chosen = ChooseHallucinationLayers(result.Shading, w, h);
@@ -694,9 +695,9 @@ int RunHallucinationBenchmark(const std::vector<std::string>& args)
       }
     }
     summaryCsv << label << "," << w << "," << h << "," << summary.Layers << "," << summary.Default
-               << "," << summary.Previous << "," << summary.AutoLayers << "," << summary.Feature << "," << summary.Auto << ","
-               << summary.Five << "," << summary.BestLayers << "," << summary.Best << ","
-               << summary.Brightness << "," << summary.Ratio << "\n";
+               << "," << summary.Previous << "," << summary.AutoLayers << "," << summary.Feature
+               << "," << summary.Auto << "," << summary.Five << "," << summary.BestLayers << ","
+               << summary.Best << "," << summary.Brightness << "," << summary.Ratio << "\n";
     summaries.push_back(summary);
     std::cout << std::left << std::setw(27) << label << "albedo mean relative error " << albedoError
               << "; model depth range " << result.DepthRangeTexels << " texels (true " << texels
@@ -724,9 +725,9 @@ int RunHallucinationBenchmark(const std::vector<std::string>& args)
   std::cout << "\n"
             << std::left << std::setw(24) << "map" << std::right << std::setw(9) << "default"
             << std::setw(7) << "(N)" << std::setw(10) << "previous" << std::setw(8) << "auto"
-            << std::setw(5) << "(N)"
-            << std::setw(9) << "feature" << std::setw(9) << "old" << std::setw(8) << "best"
-            << std::setw(5) << "(N)" << std::setw(12) << "brightness" << std::setw(8) << "ratio"
+            << std::setw(5) << "(N)" << std::setw(9) << "feature" << std::setw(9) << "old"
+            << std::setw(8) << "best" << std::setw(5) << "(N)" << std::setw(12) << "brightness"
+            << std::setw(8) << "ratio"
             << "  default beats both\n";
   double meanDefault = 0.0, meanPrevious = 0.0, meanAuto = 0.0, meanFive = 0.0, meanBest = 0.0;
   int beaten = 0, previousBeaten = 0, autoBeaten = 0, fiveBeaten = 0;
@@ -745,11 +746,11 @@ int RunHallucinationBenchmark(const std::vector<std::string>& args)
     meanBest += (s.BestLayers ? s.Best : 0.0) / count;
     std::cout << std::left << std::setw(24) << s.Map << std::right << std::fixed
               << std::setprecision(3) << std::setw(9) << s.Default << std::setw(7) << s.Layers
-              << std::setw(10) << s.Previous << std::setw(8) << s.Auto << std::setw(5) << s.AutoLayers << std::setprecision(1)
-              << std::setw(9) << s.Feature << std::setprecision(3) << std::setw(9) << s.Five
-              << std::setw(8) << (s.BestLayers ? s.Best : 0.0) << std::setw(5) << s.BestLayers
-              << std::setw(12) << s.Brightness << std::setw(8) << s.Ratio << "  "
-              << (beats ? "yes" : "NO") << "\n";
+              << std::setw(10) << s.Previous << std::setw(8) << s.Auto << std::setw(5)
+              << s.AutoLayers << std::setprecision(1) << std::setw(9) << s.Feature
+              << std::setprecision(3) << std::setw(9) << s.Five << std::setw(8)
+              << (s.BestLayers ? s.Best : 0.0) << std::setw(5) << s.BestLayers << std::setw(12)
+              << s.Brightness << std::setw(8) << s.Ratio << "  " << (beats ? "yes" : "NO") << "\n";
   }
   std::cout << std::setprecision(3) << "mean correlation: default " << meanDefault
             << " (beats both baselines on " << beaten << " of " << summaries.size()

@@ -50,8 +50,8 @@ int CheckObjectRelief(const CommandLine& cl, const char* command, const std::str
   bool hasTextureCoordinates);
 
 // Bakes the depth image and puts one relief actor per chart of `object` (the scene actor's
-// movable object, already placed) into `renderer` (the reliefs' layer, ReliefLayer); hides the object's own drawing. 0, or the
-// exit code (the message is printed).
+// movable object, already placed) into `renderer` (the reliefs' layer, ReliefLayer); hides the
+// object's own drawing. 0, or the exit code (the message is printed).
 int SetUpObjectRelief(const CommandLine& cl, const char* command, vtkLightFieldActor* scene,
   vtkRenderer* renderer, vtkActor* object, ObjectRelief& relief);
 

@@ -6,9 +6,9 @@
 #include "VlfRelief.h"   // SetUpFieldReliefs, ReliefRadiance
 #include "vtkMessageCollector.h"
 
+#include "WalkthroughTracer.h" // TracedReliefs
 #include "vtkLightFieldActor.h"
 #include "vtkLightFieldActorCore.h"
-#include "WalkthroughTracer.h" // TracedReliefs
 #include "vtkLightFieldReliefMapper.h"
 #include "vtkLightFieldReliefSurface.h"
 #include "vtkLightFieldReliefSurfaceCore.h"
@@ -20,10 +20,10 @@
 #include "TriangleScene.h"
 
 #include <vtkActor.h>
+#include <vtkActorCollection.h>
 #include <vtkCommand.h>
 #include <vtkExecutive.h>
 #include <vtkImageData.h>
-#include <vtkActorCollection.h>
 #include <vtkLight.h>
 #include <vtkLightCollection.h>
 #include <vtkProperty.h>
@@ -85,8 +85,8 @@ void CopyDisplay(vtkLightFieldActor* actor, const WalkthroughReliefs& reliefs)
 
 void OnActorModified(vtkObject* caller, unsigned long, void* clientData, void*)
 {
-  CopyDisplay(static_cast<vtkLightFieldActor*>(caller),
-    *static_cast<const WalkthroughReliefs*>(clientData));
+  CopyDisplay(
+    static_cast<vtkLightFieldActor*>(caller), *static_cast<const WalkthroughReliefs*>(clientData));
 }
 
 // The reliefs as the walkthrough's mirrors show them: a reflected ray that reaches a relief's
@@ -99,8 +99,7 @@ class MirroredReliefs : public vlf::TracedReliefs
 {
 public:
   MirroredReliefs(const vlf::LightField& field, std::shared_ptr<const EmbreeScene> embree,
-    const std::vector<std::string>& items, double depthScale,
-    std::vector<std::vector<SH9>> probes)
+    const std::vector<std::string>& items, double depthScale, std::vector<std::vector<SH9>> probes)
     : Embree(std::move(embree))
   {
     FieldReliefOptions options;

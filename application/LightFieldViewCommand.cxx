@@ -2,8 +2,8 @@
 #include "LightFieldViewCommand.h"
 
 #include "ChartPlot.h"
-#include "CornellRegions.h" // WriteLinearImage
 #include "CommandLine.h"
+#include "CornellRegions.h" // WriteLinearImage
 #include "LightFieldCamera.h"
 #include "LightFieldObjectOptions.h"
 #include "LightFieldReliefs.h"
@@ -99,8 +99,7 @@ bool ConfigureView(const CommandLine& cl, vtkLightFieldActor* actor, vtkRenderer
   }
   double exposure = 1.0, angle = 39.3077;
   int depth = 8;
-  if (!cl.GetDouble("--exposure", 0.0, 1e9, exposure, error) ||
-    !ReadViewAngle(cl, angle, error) ||
+  if (!cl.GetDouble("--exposure", 0.0, 1e9, exposure, error) || !ReadViewAngle(cl, angle, error) ||
     !cl.GetInt("--reflection-depth", 1, 64, depth, error))
   {
     std::cerr << command << ": " << error << "\n";
@@ -159,8 +158,7 @@ bool WritePng(vtkRenderWindow* window, const std::string& out, int supersampling
   shrink->SetShrinkFactors(supersampling, supersampling, 1);
   shrink->AveragingOn();
   vtkNew<vtkPNGWriter> writer;
-  writer->SetInputConnection(
-    supersampling > 1 ? shrink->GetOutputPort() : grab->GetOutputPort());
+  writer->SetInputConnection(supersampling > 1 ? shrink->GetOutputPort() : grab->GetOutputPort());
   writer->SetFileName(out.c_str());
   writer->Write();
   return writer->GetErrorCode() == 0;
@@ -210,8 +208,8 @@ int OpenWalkthrough(const CommandLine& cl, const char* command, bool offscreen,
     return 2;
   }
   walkthrough.Window->SetSize(supersampling * width, supersampling * height);
-  return SetUpWalkthroughReliefs(cl, command, walkthrough.Actor, walkthrough.Renderer,
-    walkthrough.Window, walkthrough.Reliefs);
+  return SetUpWalkthroughReliefs(
+    cl, command, walkthrough.Actor, walkthrough.Renderer, walkthrough.Window, walkthrough.Reliefs);
 }
 
 // --object and --object-relief: the object's relief charts join the reliefs' layer (lit by the
@@ -339,8 +337,7 @@ int Render(const std::vector<std::string>& args)
             << window->GetSize()[1] / supersampling;
   if (supersampling > 1)
   {
-    std::cout << ", the mean of " << supersampling << "x" << supersampling
-              << " drawn pixels each";
+    std::cout << ", the mean of " << supersampling << "x" << supersampling << " drawn pixels each";
   }
   std::cout << ", mode " << cl.Get("--mode") << ", " << seconds << " s, "
             << actor->GetLastScreenPixels() << " pixels from the CPU pass)\n";

@@ -36,11 +36,11 @@ enum class Variant
 
 struct Settings
 {
-  std::vector<std::string> Maps;       // procedural pattern names, or image files
-  bool Height = false;                 // image files store height
-  int Resolution = 1024;               // texels per side of the procedural maps
-  std::vector<double> Angles;          // degrees from the wall normal
-  std::vector<double> Distances;       // wall widths
+  std::vector<std::string> Maps; // procedural pattern names, or image files
+  bool Height = false;           // image files store height
+  int Resolution = 1024;         // texels per side of the procedural maps
+  std::vector<double> Angles;    // degrees from the wall normal
+  std::vector<double> Distances; // wall widths
   int Width = 200;
   int Height_ = 150;
   int Supersampling = 8;
@@ -69,8 +69,8 @@ struct CaseRow
   std::string Map;
   double Angle = 0.0;
   double Distance = 0.0;
-  double MedianFootprint = 0.0; // texels per pixel, longer axis
-  ClassFigures All, Near, Far;  // near: footprint <= 1 texel; far: > 1
+  double MedianFootprint = 0.0;  // texels per pixel, longer axis
+  ClassFigures All, Near, Far;   // near: footprint <= 1 texel; far: > 1
   double NearHitChangeMax = 0.0; // texels, before vs default, over near pixels
   double NearHitChangeMean = 0.0;
 };
@@ -157,7 +157,8 @@ std::vector<double> Footprints(const Frame& u, const Frame& v, int texels)
   const int w = u.Width;
   const int h = u.Height;
   std::vector<double> result(size_t(w) * h, -1.0);
-  auto uv = [&](int x, int y, double& a, double& b) {
+  auto uv = [&](int x, int y, double& a, double& b)
+  {
     if (x < 0 || y < 0 || x >= w || y >= h)
     {
       return false;
@@ -262,18 +263,20 @@ bool MeasureCase(const Settings& settings, const std::string& map, double angle,
     !RenderVariant(settings, options, Variant::Mean, shaded, 1, mean, texels, error) ||
     !RenderVariant(settings, options, Variant::Mean, samples, 1, samplesMean, texels, error) ||
     !RenderVariant(settings, options, Variant::Before, samples, 1, samplesBefore, texels, error) ||
-    !RenderVariant(settings, options, Variant::Default, samples, 1, samplesDefault, texels, error) ||
-    !RenderVariant(settings,
-      options, Variant::Surface, vtkReliefProperty::HitUOutput, 1, surfaceU, texels, error) ||
-    !RenderVariant(settings,
-      options, Variant::Surface, vtkReliefProperty::HitVOutput, 1, surfaceV, texels, error))
+    !RenderVariant(
+      settings, options, Variant::Default, samples, 1, samplesDefault, texels, error) ||
+    !RenderVariant(settings, options, Variant::Surface, vtkReliefProperty::HitUOutput, 1, surfaceU,
+      texels, error) ||
+    !RenderVariant(settings, options, Variant::Surface, vtkReliefProperty::HitVOutput, 1, surfaceV,
+      texels, error))
   {
     return false;
   }
   for (int k = 0; k < 2; ++k)
   {
     const int output = k == 0 ? vtkReliefProperty::HitUOutput : vtkReliefProperty::HitVOutput;
-    if (!RenderVariant(settings, options, Variant::Before, output, 1, hitsBefore[k], texels, error) ||
+    if (!RenderVariant(
+          settings, options, Variant::Before, output, 1, hitsBefore[k], texels, error) ||
       !RenderVariant(settings, options, Variant::Default, output, 1, hitsDefault[k], texels, error))
     {
       return false;
@@ -365,7 +368,8 @@ int RunReliefAliasingBenchmark(const std::vector<std::string>& args)
 {
   CommandLine cl("mesolight bench relief-aliasing",
     "Usage: mesolight bench relief-aliasing [options]\n"
-    "The default relief (an untouched vtkReliefProperty: level of detail on, visible normals), the\n"
+    "The default relief (an untouched vtkReliefProperty: level of detail on, visible normals), "
+    "the\n"
     "same with level of detail off, and with the mean normal filter (Toksvig),\n"
     "against the exact relief (maximum-mipmap tracing, 128 iterations) rendered at S x S times\n"
     "the resolution and box-filtered: S^2 exact subsamples per pixel. Per map, view angle and\n"
@@ -375,16 +379,16 @@ int RunReliefAliasingBenchmark(const std::vector<std::string>& args)
   cl.AddFlag("--height", "the image files store height (white = high) rather than depth");
   cl.AddValue("--resolution", "N", "texels per side of the procedural maps", "1024");
   cl.AddValue("--angles", "LIST", "view angles from the wall normal, degrees", "45,70,80");
-  cl.AddValue("--distances", "LIST", "camera distances to the wall's centre, wall widths",
-    "0.5,1.3,3");
+  cl.AddValue(
+    "--distances", "LIST", "camera distances to the wall's centre, wall widths", "0.5,1.3,3");
   cl.AddValue("--size", "WxH", "window size in pixels", "200x150");
   cl.AddValue("--supersampling", "S", "subsamples per pixel side of the reference", "8");
   cl.AddValue("--depth-scale", "K", "world depth of depth 1 / wall width", "0.04");
   cl.AddValue("--method", "NAME",
     "draw both rows with this vtkReliefMapper method instead of the default's (e.g. max-mipmap, "
     "to see the filtering alone)");
-  cl.AddValue("--steps", "L+R", "the --method's linear (or iteration) and refinement steps",
-    "10+8");
+  cl.AddValue(
+    "--steps", "L+R", "the --method's linear (or iteration) and refinement steps", "10+8");
   cl.AddFlag("--no-shadows", "self-shadowing off in every frame, the reference's too");
   cl.AddValue("--csv", "FILE", "write one CSV row per case");
   cl.AddValue("--plot", "FILE.png", "error against footprint: off, mean filter and default");
@@ -458,9 +462,10 @@ int RunReliefAliasingBenchmark(const std::vector<std::string>& args)
       << "dist" << std::setw(6) << "fp" << std::setw(6) << "far%" << std::setw(8) << "err bef"
       << std::setw(8) << "err def" << std::setw(7) << "ratio" << std::setw(9) << "far bef"
       << std::setw(9) << "far def" << std::setw(7) << "ratio" << std::setw(9) << "far mean"
-      << std::setw(7) << "ratio" << std::setw(9) << "near bef"
-      << std::setw(9) << "near def" << std::setw(9) << "spp bef" << std::setw(9) << "spp def"
-      << std::setw(9) << "far spp" << std::setw(9) << "near hit" << "\n";
+      << std::setw(7) << "ratio" << std::setw(9) << "near bef" << std::setw(9) << "near def"
+      << std::setw(9) << "spp bef" << std::setw(9) << "spp def" << std::setw(9) << "far spp"
+      << std::setw(9) << "near hit"
+      << "\n";
   std::vector<CaseRow> rows;
   for (const std::string& map : settings.Maps)
   {
@@ -476,19 +481,18 @@ int RunReliefAliasingBenchmark(const std::vector<std::string>& args)
         }
         const double farShare = row.All.Pixels > 0 ? 100.0 * row.Far.Pixels / row.All.Pixels : 0;
         out << std::left << std::setw(18) << row.Map.substr(0, 17) << std::right << std::fixed
-            << std::setprecision(0) << std::setw(5) << angle << std::setprecision(1)
-            << std::setw(6) << distance << std::setw(6) << row.MedianFootprint << std::setw(6)
-            << farShare << std::setprecision(2) << std::setw(8) << row.All.ErrorBefore
-            << std::setw(8) << row.All.ErrorDefault << std::setw(7)
+            << std::setprecision(0) << std::setw(5) << angle << std::setprecision(1) << std::setw(6)
+            << distance << std::setw(6) << row.MedianFootprint << std::setw(6) << farShare
+            << std::setprecision(2) << std::setw(8) << row.All.ErrorBefore << std::setw(8)
+            << row.All.ErrorDefault << std::setw(7)
             << Ratio(row.All.ErrorDefault, row.All.ErrorBefore) << std::setw(9)
             << row.Far.ErrorBefore << std::setw(9) << row.Far.ErrorDefault << std::setw(7)
-            << Ratio(row.Far.ErrorDefault, row.Far.ErrorBefore) << std::setw(9)
-            << row.Far.ErrorMean << std::setw(7) << Ratio(row.Far.ErrorMean, row.Far.ErrorBefore)
-            << std::setw(9) << row.Near.ErrorBefore << std::setw(9) << row.Near.ErrorDefault
-            << std::setprecision(1) << std::setw(9) << row.Far.SamplesBefore << std::setw(9)
-            << row.Far.SamplesDefault << std::setw(9)
-            << Ratio(row.Far.SamplesDefault, row.Far.SamplesBefore) << std::setprecision(3)
-            << std::setw(9) << row.NearHitChangeMax << "\n";
+            << Ratio(row.Far.ErrorDefault, row.Far.ErrorBefore) << std::setw(9) << row.Far.ErrorMean
+            << std::setw(7) << Ratio(row.Far.ErrorMean, row.Far.ErrorBefore) << std::setw(9)
+            << row.Near.ErrorBefore << std::setw(9) << row.Near.ErrorDefault << std::setprecision(1)
+            << std::setw(9) << row.Far.SamplesBefore << std::setw(9) << row.Far.SamplesDefault
+            << std::setw(9) << Ratio(row.Far.SamplesDefault, row.Far.SamplesBefore)
+            << std::setprecision(3) << std::setw(9) << row.NearHitChangeMax << "\n";
         out.unsetf(std::ios::fixed);
         out.flush();
         rows.push_back(row);

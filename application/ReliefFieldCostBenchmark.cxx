@@ -13,8 +13,8 @@
 #include <vtkActor.h>
 #include <vtkFieldData.h>
 #include <vtkFloatArray.h>
-#include <vtkIntArray.h>
 #include <vtkImageData.h>
+#include <vtkIntArray.h>
 #include <vtkLight.h>
 #include <vtkMath.h>
 #include <vtkNew.h>

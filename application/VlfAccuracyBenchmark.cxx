@@ -489,7 +489,8 @@ int RunVlfAccuracyBenchmark(const std::vector<std::string>& args)
     "The light field's per-pixel error against the path tracer on five scenes (900 small boxes, "
     "a room lit\nindirectly, a ribbed corridor, thin panels near walls, the Cornell box), per "
     "resolution setting:\npropagation time, memory, field size, mean / p95 relative error, "
-    "black-where-lit pixels,\nwithout and with the final gather (FinalGather.h) and the bilateral texture filter.\n");
+    "black-where-lit pixels,\nwithout and with the final gather (FinalGather.h) and the bilateral "
+    "texture filter.\n");
   cl.AddValue(
     "--scenes", "LIST", "boxes,room,corridor,thin,cornell", "boxes,room,corridor,thin,cornell");
   cl.AddValue("--settings", "LIST",
@@ -601,7 +602,8 @@ int RunVlfAccuracyBenchmark(const std::vector<std::string>& args)
 
   std::ostringstream csv;
   csv << "scene,settings,directions,rays,tiles,texel_m,lines,surfaces,texels,map_cells,"
-         "iterations,build_s,propagate_s,total_s,allocated_bytes,estimate_bytes,filter,gather_s,gather_rays,"
+         "iterations,build_s,propagate_s,total_s,allocated_bytes,estimate_bytes,filter,gather_s,"
+         "gather_rays,"
          "pixels,mean_rel_error,p95_rel_error,black_where_lit,reference_noise,peak_bytes\n";
   std::map<std::string, ChartSeries> series;
   std::printf("%-9s %-12s %6s %4s %8s %9s %7s %7s %8s %9s %6s %7s %7s %6s %6s\n", "scene",
@@ -752,24 +754,25 @@ int RunVlfAccuracyBenchmark(const std::vector<std::string>& args)
               .c_str());
           if (!cl.Get("--images").empty())
           {
-            const std::string base =
-              cl.Get("--images") + "/" + name + "-" + text + (variant == "none" ? "" : "-" + variant);
+            const std::string base = cl.Get("--images") + "/" + name + "-" + text +
+              (variant == "none" ? "" : "-" + variant);
             WriteLinearImage(image, base + ".exr", error);
           }
           std::printf("%-9s %-12s %6zu %4d %8.3f %9.3g %7d %7.1f %8s %9s %5.1f%% %6.1f%% %5.2f%% "
                       "%5.1f%% %6zu\n",
             name.c_str(), text.c_str(), settings.Directions, settings.RaysPerSide, texelWorld,
             static_cast<double>(lines), field->IterationsDone, build + propagate + gatherSeconds,
-            FormatBytes(allocated).c_str(), variant.c_str(), 100.0 * e.Mean,
-            100.0 * e.P95, 100.0 * e.Black, 100.0 * e.ReferenceNoise, e.Pixels);
+            FormatBytes(allocated).c_str(), variant.c_str(), 100.0 * e.Mean, 100.0 * e.P95,
+            100.0 * e.Black, 100.0 * e.ReferenceNoise, e.Pixels);
           std::fflush(stdout);
           csv << name << ',' << text << ',' << settings.Directions << ',' << settings.RaysPerSide
               << ',' << settings.TilesPerSide << ',' << texelWorld << ',' << lines << ','
               << field->Surfaces().size() << ',' << field->TexelCount() << ',' << estimate.MapCells
               << ',' << field->IterationsDone << ',' << build << ',' << propagate << ','
               << build + propagate << ',' << allocated << ',' << estimate.TotalBytes << ','
-              << variant << ',' << gatherSeconds << ',' << gatherRays << ',' << e.Pixels << ',' << e.Mean << ','
-              << e.P95 << ',' << e.Black << ',' << e.ReferenceNoise << ',' << peak << '\n';
+              << variant << ',' << gatherSeconds << ',' << gatherRays << ',' << e.Pixels << ','
+              << e.Mean << ',' << e.P95 << ',' << e.Black << ',' << e.ReferenceNoise << ',' << peak
+              << '\n';
           if (variant != "bilateral")
           {
             const std::string label = name + (variant == "none" ? "" : " " + variant);
@@ -809,8 +812,8 @@ int RunVlfAccuracyBenchmark(const std::vector<std::string>& args)
   if (!cl.Get("--plot").empty())
   {
     ScatterChart chart;
-    chart.Title =
-      "Light field vs path tracer: mean per-pixel relative error vs build + propagation (+ gather) time";
+    chart.Title = "Light field vs path tracer: mean per-pixel relative error vs build + "
+                  "propagation (+ gather) time";
     chart.XLabel = "build + propagation (+ final gather) seconds";
     chart.YLabel = "mean relative error per pixel (%)";
     chart.LogY = true;

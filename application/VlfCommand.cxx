@@ -340,8 +340,9 @@ int Render(const std::vector<std::string>& args)
     {
       std::cout << "MPI: " << reducer.Size() << " ranks, frame " << frameSeconds
                 << " s (mirror lookups " << lookupSeconds << " s on rank 0), "
-                << static_cast<std::uint64_t>(mirrorPixels) << " mirror pixels; sent by all ranks: "
-                << lookupBytes << " bytes for the lookups, " << frameBytes - lookupBytes
+                << static_cast<std::uint64_t>(mirrorPixels)
+                << " mirror pixels; sent by all ranks: " << lookupBytes
+                << " bytes for the lookups, " << frameBytes - lookupBytes
                 << " bytes for the image sum\n";
     }
     vtkNew<vtkImageData> image;

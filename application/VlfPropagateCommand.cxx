@@ -607,11 +607,10 @@ int Propagate(const std::vector<std::string>& args)
       const double collective = reducer.Seconds;
       const double mine[columns] = { traceSeconds, traceCollective, iterationSeconds,
         collective - traceCollective - writeCollective - gatherCollective, writeTotal,
-        writeCollective, cpu, peakRss(),
-        static_cast<double>(field->AllocatedBytes()), static_cast<double>(owned),
-        static_cast<double>(controllerReducer.BytesContributed()), iterationCpu, iterationMpiCpu,
-        tracedPeakRss, gatherSeconds, gatherReport.OwnSeconds, gatherCollective,
-        static_cast<double>(gatherReport.OwnTexels) };
+        writeCollective, cpu, peakRss(), static_cast<double>(field->AllocatedBytes()),
+        static_cast<double>(owned), static_cast<double>(controllerReducer.BytesContributed()),
+        iterationCpu, iterationMpiCpu, tracedPeakRss, gatherSeconds, gatherReport.OwnSeconds,
+        gatherCollective, static_cast<double>(gatherReport.OwnTexels) };
       std::copy(
         mine, mine + columns, rows.begin() + columns * static_cast<std::size_t>(reducer.Rank()));
       reducer.SumInPlace(rows.data(), rows.size());
@@ -623,8 +622,8 @@ int Propagate(const std::vector<std::string>& args)
                     "holds %.0f bytes, %.0f directions, sent %.0f bytes, iteration cpu %.3f s "
                     "(in MPI %.3f s), peak RSS after trace %.0f bytes, final gather %.3f s "
                     "(own share %.3f s, in MPI %.3f s, %.0f texels)\n",
-          r, v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7], v[8], v[9], v[10], v[11], v[12],
-          v[13], v[14], v[15], v[16], v[17]);
+          r, v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7], v[8], v[9], v[10], v[11], v[12], v[13],
+          v[14], v[15], v[16], v[17]);
       }
       std::fflush(stdout);
     }

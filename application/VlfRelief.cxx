@@ -131,9 +131,8 @@ std::vector<FieldRelief> SetUpFieldReliefs(const vlf::LightField& field, const E
     // emitter samples below carry it).
     ReliefLighting& lighting = relief.Lighting;
     lighting.ProbesU = lighting.ProbesV = n;
-    lighting.Probes = options.KnownProbes.empty()
-      ? vlf::ReliefSurfaceProbes(field, surface, n, n)
-      : options.KnownProbes[reliefs.size()];
+    lighting.Probes = options.KnownProbes.empty() ? vlf::ReliefSurfaceProbes(field, surface, n, n)
+                                                  : options.KnownProbes[reliefs.size()];
     // The light the relief reflects onto itself (ReliefLighting::Albedo).
     relief.Lighting.Albedo = glm::dvec3(material.Diffuse);
     // Direct: the field's emitters, the scene's occlusion by Embree.

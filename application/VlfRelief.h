@@ -48,9 +48,9 @@ struct FieldRelief
 
 struct FieldReliefOptions
 {
-  double DepthScale = 0.05;      // vtkReliefProperty's default
+  double DepthScale = 0.05;                     // vtkReliefProperty's default
   int Probes = vlf::DefaultReliefProbesPerSide; // SH9 probes per side of the texture
-  int EmitterSamplesPerSide = 4; // per emitter triangle: n x n stratified samples
+  int EmitterSamplesPerSide = 4;                // per emitter triangle: n x n stratified samples
   // Per item, its SH9 probes (Probes x Probes, vlf::ReliefSurfaceProbes) when they are already
   // computed (the walkthrough's vtkLightFieldReliefSurface did); empty: computed here.
   std::vector<std::vector<SH9>> KnownProbes;

@@ -254,11 +254,10 @@ InProcess RenderInProcess(
     });
   // The relief's inter-reflection, each model (the field row is the default one): none (the
   // occluded directions black, as before it was modelled), one bounce and the multi-bounce series.
-  const std::pair<const char*, ReliefInterReflection> models[] = {
-    { "field-no-bounce", ReliefInterReflection::None },
+  const std::pair<const char*, ReliefInterReflection> models[] = { { "field-no-bounce",
+                                                                     ReliefInterReflection::None },
     { "field-one-bounce", ReliefInterReflection::OneBounce },
-    { "field-multi-bounce", ReliefInterReflection::MultiBounce }
-  };
+    { "field-multi-bounce", ReliefInterReflection::MultiBounce } };
   for (const auto& [name, model] : models)
   {
     FieldRelief variant = relief;

@@ -25,10 +25,10 @@
 #include "MathConstants.h"
 #include "ObjScene.h"
 #include "ParallelFor.h"
+#include "PatchComparison.h" // ToUnit
 #include "Propagation.h"
 #include "Snapshot.h"
 #include "TriangleScene.h"
-#include "PatchComparison.h" // ToUnit
 
 #include <glm/geometric.hpp>
 
@@ -151,8 +151,8 @@ std::vector<glm::vec3> Gather(const vlf::LightField& field, int points)
   std::vector<std::pair<glm::vec3, glm::vec3>> at(static_cast<std::size_t>(points));
   for (auto& q : at)
   {
-    q.first = lo + (hi - lo) * glm::vec3(0.1f + 0.8f * u(rng), 0.1f + 0.8f * u(rng),
-                                 0.1f + 0.8f * u(rng));
+    q.first =
+      lo + (hi - lo) * glm::vec3(0.1f + 0.8f * u(rng), 0.1f + 0.8f * u(rng), 0.1f + 0.8f * u(rng));
     glm::vec3 n(u(rng) - 0.5f, u(rng) - 0.5f, u(rng) - 0.5f);
     q.second = glm::length(n) > 1e-3f ? glm::normalize(n) : glm::vec3(0.0f, 1.0f, 0.0f);
   }
@@ -199,7 +199,8 @@ int RunVlfStorageBenchmark(const std::vector<std::string>& args)
   }
   std::string error;
   int size = 0, points = 0;
-  if (!cl.GetInt("--size", 8, 4096, size, error) || !cl.GetInt("--points", 1, 1 << 20, points, error))
+  if (!cl.GetInt("--size", 8, 4096, size, error) ||
+    !cl.GetInt("--points", 1, 1 << 20, points, error))
   {
     return cl.UsageError(error);
   }
@@ -271,8 +272,8 @@ int RunVlfStorageBenchmark(const std::vector<std::string>& args)
           static_cast<std::size_t>(settings.TileSide()) * settings.TileSide();
         const std::size_t tiles =
           static_cast<std::size_t>(settings.TilesPerSide) * settings.TilesPerSide;
-        const std::uint64_t perCell = sizeof(float) + sizeof(glm::vec3) +
-          (field->HasSpecular() ? sizeof(glm::vec3) : 0);
+        const std::uint64_t perCell =
+          sizeof(float) + sizeof(glm::vec3) + (field->HasSpecular() ? sizeof(glm::vec3) : 0);
         for (std::size_t k = 0; k < field->SubfieldCount(); ++k)
         {
           const vlf::Subfield& f = field->GetSubfield(k);
@@ -288,8 +289,9 @@ int RunVlfStorageBenchmark(const std::vector<std::string>& args)
           row.DenseBytes += f.Entries.size() * cellsPerMap * perCell +
             f.Entries.size() * sizeof(vlf::TileEntry) + (tiles + 1) * sizeof(std::uint32_t);
         }
-        row.DenseBytes += (field->TotalDiffuse.size() + field->UnshotDiffuse.size()) *
-            sizeof(glm::vec3) + field->Capacity.size() * sizeof(float);
+        row.DenseBytes +=
+          (field->TotalDiffuse.size() + field->UnshotDiffuse.size()) * sizeof(glm::vec3) +
+          field->Capacity.size() * sizeof(float);
 
         glm::vec3 eye, focal;
         double up[3] = { 0.0, 1.0, 0.0 };
@@ -297,8 +299,8 @@ int RunVlfStorageBenchmark(const std::vector<std::string>& args)
         {
           return cl.UsageError(error);
         }
-        const glm::vec3 upWorld(static_cast<float>(up[0]), static_cast<float>(up[1]),
-          static_cast<float>(up[2]));
+        const glm::vec3 upWorld(
+          static_cast<float>(up[0]), static_cast<float>(up[1]), static_cast<float>(up[2]));
         std::vector<glm::vec3> mapsFloat, diffuseFloat, mapsCompact, diffuseCompact;
         RenderField(*field, vlf::ToUnit(*field, eye), vlf::ToUnit(*field, focal), upWorld,
           viewAngle, size, mapsFloat, diffuseFloat);
@@ -343,12 +345,11 @@ int RunVlfStorageBenchmark(const std::vector<std::string>& args)
     const double zero = r.Crossings > 0
       ? static_cast<double>(r.ZeroCrossings) / static_cast<double>(r.Crossings)
       : 0.0;
-    std::cout << std::left << std::setw(18) << r.Scene << std::right << std::setw(5)
-              << r.Directions << std::setw(5) << r.Rays << std::setw(4) << r.Iterations
-              << std::fixed << std::setprecision(1) << std::setw(9) << 100.0 * occupancy << "%"
-              << std::setw(9) << 100.0 * zero << "%   " << Mib(r.DenseBytes) << " -> "
-              << Mib(r.PropagatingBytes) << " -> " << Mib(r.CompactBytes) << " ("
-              << std::setprecision(1)
+    std::cout << std::left << std::setw(18) << r.Scene << std::right << std::setw(5) << r.Directions
+              << std::setw(5) << r.Rays << std::setw(4) << r.Iterations << std::fixed
+              << std::setprecision(1) << std::setw(9) << 100.0 * occupancy << "%" << std::setw(9)
+              << 100.0 * zero << "%   " << Mib(r.DenseBytes) << " -> " << Mib(r.PropagatingBytes)
+              << " -> " << Mib(r.CompactBytes) << " (" << std::setprecision(1)
               << 100.0 * static_cast<double>(r.CompactBytes) / static_cast<double>(r.DenseBytes)
               << "%)   " << Mib(r.DenseFile) << " -> " << Mib(r.CompactFile) << " ("
               << 100.0 * static_cast<double>(r.CompactFile) / static_cast<double>(r.DenseFile)
@@ -365,14 +366,14 @@ int RunVlfStorageBenchmark(const std::vector<std::string>& args)
            "diffuse_image_mean_rel_error,gather_mean_rel_error\n";
     for (const Row& r : rows)
     {
-      csv << r.Scene << ',' << r.Directions << ',' << r.Rays << ',' << r.Iterations << ','
-          << r.Maps << ',' << r.Cells << ',' << r.Crossings << ',' << r.ZeroCrossings << ','
-          << r.DenseBytes << ',' << r.PropagatingBytes << ',' << r.CompactBytes << ','
+      csv << r.Scene << ',' << r.Directions << ',' << r.Rays << ',' << r.Iterations << ',' << r.Maps
+          << ',' << r.Cells << ',' << r.Crossings << ',' << r.ZeroCrossings << ',' << r.DenseBytes
+          << ',' << r.PropagatingBytes << ',' << r.CompactBytes << ','
           << static_cast<double>(r.CompactBytes) / static_cast<double>(r.DenseBytes) << ','
           << r.DenseFile << ',' << r.CompactFile << ','
           << static_cast<double>(r.CompactFile) / static_cast<double>(r.DenseFile) << ','
-          << r.ImageError << ',' << r.ImageWorst << ',' << r.DiffuseError << ','
-          << r.GatherError << '\n';
+          << r.ImageError << ',' << r.ImageWorst << ',' << r.DiffuseError << ',' << r.GatherError
+          << '\n';
     }
     if (!csv)
     {

@@ -8,17 +8,16 @@
 #include "CurvedReliefBenchmark.h"
 #include "Distribution.h"
 #include "GatherBenchmark.h"
-#include "VlfStorageBenchmark.h"
 #include "GeometryImageBenchmark.h"
 #include "HallucinateCommand.h"
 #include "ImageCommands.h"
 #include "LightFieldViewCommand.h"
 #include "LightSetActorsBenchmark.h"
 #include "LightSetBenchmark.h"
-#include "ReliefFieldCostBenchmark.h"
 #include "LightsCommand.h"
 #include "ObjectBenchmark.h"
 #include "ReliefAliasingBenchmark.h"
+#include "ReliefFieldCostBenchmark.h"
 #include "ReliefSweep.h"
 #include "RenderCommand.h"
 #include "TraceCommand.h"
@@ -26,6 +25,7 @@
 #include "VlfAccuracyBenchmark.h"
 #include "VlfCommand.h"
 #include "VlfReliefBenchmark.h"
+#include "VlfStorageBenchmark.h"
 #include "WalkthroughBenchmark.h"
 
 #include <vtkLogger.h>
@@ -124,7 +124,8 @@ const std::vector<mesolight::Command>& Commands()
           "every method x steps x view angle x map:\ntime vs exact hit error, CSV and plots",
           static_cast<int (*)(const std::vector<std::string>&)>(RunReliefSweep), {} },
         { "relief-aliasing", "[options]",
-          "the default relief vs an 8x8 supersampled exact\nreference where texels are smaller than pixels",
+          "the default relief vs an 8x8 supersampled exact\nreference where texels are smaller "
+          "than pixels",
           RunReliefAliasingBenchmark, {} },
         { "cones", "[options]", "cone-map generation time, oracle speed-up", RunConeBenchmark, {} },
         { "lights", "[options]",
@@ -153,7 +154,8 @@ const std::vector<mesolight::Command>& Commands()
           "tracer",
           RunGatherBenchmark, {} },
         { "vlf-storage", "[SCENE.obj ...] [options]",
-          "light field storage: memory and file size,\ndense float vs sparse shared-exponent, its error",
+          "light field storage: memory and file size,\ndense float vs sparse shared-exponent, its "
+          "error",
           RunVlfStorageBenchmark, {} },
         { "object", "[FIELD] [options]",
           "a movable object in the walkthrough: frame time\nper stage, directions and subdivision",
@@ -162,7 +164,8 @@ const std::vector<mesolight::Command>& Commands()
           "geometry images: triangles vs Hausdorff distance\nand image error, stride vs adaptive",
           RunGeometryImageBenchmark, {} },
         { "curved-relief", "[options]",
-          "relief on curved meshes vs the flat march:\noutline coverage vs the dense mesh, frame time",
+          "relief on curved meshes vs the flat march:\noutline coverage vs the dense mesh, frame "
+          "time",
           RunCurvedReliefBenchmark, {} },
         { "hallucinate", "[options]",
           "depth hallucination against path-traced\nphotographs of known height fields",

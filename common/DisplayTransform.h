@@ -4,10 +4,10 @@
 // their inverses. Plain C++ (no VTK types); templates so float and double callers keep their own
 // precision (images written from float and from double radiance stay bit for bit what they were).
 //
-// The GPU twins stay GLSL: vtkVLF/LightFieldActor/glsl/vtkLightFieldFS.glsl (the light field actor and
-// vtkCompositeLightFieldMapper: exposure, clamp or Reinhard, sRGB) and the ML_TONE_MAPPING block of
-// vtkRelief/glsl/vtkReliefImplFS.glsl (Reinhard without sRGB: relief surfaces are shaded like
-// VTK's own actors, whose colours go to the framebuffer as they are). Each class keeps its own
+// The GPU twins stay GLSL: vtkVLF/LightFieldActor/glsl/vtkLightFieldFS.glsl (the light field actor
+// and vtkCompositeLightFieldMapper: exposure, clamp or Reinhard, sRGB) and the ML_TONE_MAPPING
+// block of vtkRelief/glsl/vtkReliefImplFS.glsl (Reinhard without sRGB: relief surfaces are shaded
+// like VTK's own actors, whose colours go to the framebuffer as they are). Each class keeps its own
 // default, listed in docs/dev/conventions.md.
 #ifndef mesolight_DisplayTransform_h
 #define mesolight_DisplayTransform_h

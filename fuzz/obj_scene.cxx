@@ -41,7 +41,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     {
       obj.clear();
       obj.seekg(0);
-      const mesolight::ObjSceneRead read = mesolight::ParseObjScene(obj, "fuzz.obj", directory, options);
+      const mesolight::ObjSceneRead read =
+        mesolight::ParseObjScene(obj, "fuzz.obj", directory, options);
       // What a reader of the result relies on: every index in range.
       const TriangleScene& scene = read.Scene;
       for (std::size_t t = 0; t < scene.Triangles.size(); ++t)

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// Fuzz target: the light-field snapshot reader (vtkVLF/LightField/core/Snapshot: the .vlf files of `mesolight
-// vlf propagate`, read by `vlf render`, `vlf view`, `--resume`, vtkLightFieldActor and
+// Fuzz target: the light-field snapshot reader (vtkVLF/LightField/core/Snapshot: the .vlf files of
+// `mesolight vlf propagate`, read by `vlf render`, `vlf view`, `--resume`, vtkLightFieldActor and
 // vtkVirtualLightField).
 //
 // Input: one mode byte, then bytes. Mode bit 0 clear: the bytes are the file as is (header

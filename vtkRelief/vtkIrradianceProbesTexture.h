@@ -90,8 +90,8 @@ protected:
   ~vtkIrradianceProbesTexture() override;
 
   static constexpr int Blocks = 9; // seven of SH9 coefficients, two of light visibility
-  bool UploadVisibleShare(vtkOpenGLRenderWindow* renWin, vtkDataArray* share,
-    vtkDataArray* shareSize);
+  bool UploadVisibleShare(
+    vtkOpenGLRenderWindow* renWin, vtkDataArray* share, vtkDataArray* shareSize);
 
   vtkSmartPointer<vtkTextureObject> TextureObject;
   vtkSmartPointer<vtkTextureObject> ShareTexture;

@@ -14,12 +14,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
-#include <limits>
 #include <cstdint>
+#include <limits>
 #include <utility>
 
 vtkStandardNewMacro(vtkMinDepthPyramidTexture);
-
 
 //------------------------------------------------------------------------------
 vtkMinDepthPyramidTexture::vtkMinDepthPyramidTexture() = default;
@@ -119,8 +118,8 @@ bool vtkMinDepthPyramidTexture::UploadCompact(
       {
         for (int i : { kx - 1, kx })
         {
-          const size_t t = static_cast<size_t>(std::min(std::max(j, 0), height - 1)) *
-              static_cast<size_t>(width) +
+          const size_t t =
+            static_cast<size_t>(std::min(std::max(j, 0), height - 1)) * static_cast<size_t>(width) +
             static_cast<size_t>(std::min(std::max(i, 0), width - 1));
           m = std::min(m, depth16[t]);
         }
@@ -134,8 +133,7 @@ bool vtkMinDepthPyramidTexture::UploadCompact(
     minima[l + 1] = coarse[l];
     levelSizes.emplace_back(coarseSizes[2 * l], coarseSizes[2 * l + 1]);
   }
-  std::vector<std::vector<std::uint16_t>> levels =
-    mesolight::PackChildMinima(minima, levelSizes);
+  std::vector<std::vector<std::uint16_t>> levels = mesolight::PackChildMinima(minima, levelSizes);
   // Level 0: each cell's four corner depths (the 16-bit texels (k-1, k-1), (k, k-1), (k-1, k),
   // (k, k), clamped), so a level-0 cell is one fetch, as in the float pyramid, instead of four of
   // the depth texture: measured 1.6-2x faster traversal on llvmpipe (docs/relief-methods.md).
@@ -207,8 +205,8 @@ bool vtkMinDepthPyramidTexture::UploadLevels(vtkOpenGLRenderWindow* renWin,
   pyramid->SetBaseLevel(0);
   pyramid->SetMaxLevel(static_cast<int>(levels.size()) - 1);
   if (!pyramid->Create2DFromRaw(static_cast<unsigned int>(sizes[0].first),
-        static_cast<unsigned int>(sizes[0].second), 4,
-        sixteenBit ? VTK_UNSIGNED_SHORT : VTK_FLOAT, nullptr))
+        static_cast<unsigned int>(sizes[0].second), 4, sixteenBit ? VTK_UNSIGNED_SHORT : VTK_FLOAT,
+        nullptr))
   {
     vtkErrorMacro(<< "Could not create the min-depth pyramid texture.");
     return false;

@@ -109,7 +109,8 @@ std::string vtkReliefShaderSource::Key() const
 {
   vtkReliefProperty* p = this->Property;
   return std::to_string(p->GetMethod()) + (p->GetSelfShadowing() ? "S" : "s") +
-    (p->GetSilhouettes() ? "E" : "e") + (p->GetWriteDepth() ? (p->GetHasDepthLimitPlane() ? "Z" : "D") : "d") +
+    (p->GetSilhouettes() ? "E" : "e") +
+    (p->GetWriteDepth() ? (p->GetHasDepthLimitPlane() ? "Z" : "D") : "d") +
     (this->HasAlbedoTexture ? "A" : "a") + std::to_string(p->GetOutput()) +
     (this->ConePacked ? "C" : "c") + (p->GetAdaptiveSteps() ? "V" : "v") +
     (p->GetLevelOfDetail() ? "L" : "l") + (this->HasLightSet ? "I" : "i") +

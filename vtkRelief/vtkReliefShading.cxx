@@ -308,8 +308,7 @@ void vtkReliefShading::SetShaderParameters(
     }
     vtkMath::Normalize(normalVC);
     const float plane[4] = { static_cast<float>(normalVC[0]), static_cast<float>(normalVC[1]),
-      static_cast<float>(normalVC[2]),
-      static_cast<float>(-vtkMath::Dot(normalVC, originVC)) };
+      static_cast<float>(normalVC[2]), static_cast<float>(-vtkMath::Dot(normalVC, originVC)) };
     program->SetUniform4f("mlDepthLimitVC", plane);
   }
 

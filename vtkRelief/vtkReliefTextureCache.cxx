@@ -475,8 +475,7 @@ bool vtkReliefTextureCache::UploadCompact(vtkOpenGLRenderWindow* renWin,
     for (size_t i = 0; i < n; ++i)
     {
       const float x = normalXY[2 * i], y = normalXY[2 * i + 1];
-      const float z =
-        normalZ.empty() ? std::sqrt(std::max(0.f, 1.f - x * x - y * y)) : normalZ[i];
+      const float z = normalZ.empty() ? std::sqrt(std::max(0.f, 1.f - x * x - y * y)) : normalZ[i];
       mesolight::EncodeOctahedral8(x, y, z, xy[2 * i], xy[2 * i + 1]);
     }
     if (!CreateTexture(this->NormalTexture, renWin, dims[0], dims[1], 2, VTK_SIGNED_CHAR,

@@ -156,8 +156,8 @@ int vtkDepthHallucinationFilter::RequestData(
   }
   mesolight::HallucinationSettings settings;
   settings.Layers = this->NumberOfLayers;
-  settings.Model = this->UseRatio ? mesolight::HallucinationModel::Ratio
-                                  : mesolight::HallucinationModel::Shading;
+  settings.Model =
+    this->UseRatio ? mesolight::HallucinationModel::Ratio : mesolight::HallucinationModel::Shading;
   settings.BaseSigma = static_cast<float>(this->BaseSigma);
   settings.DepthScale = static_cast<float>(this->DepthScale);
   settings.ValleyWeight = static_cast<float>(this->ValleyWeight);

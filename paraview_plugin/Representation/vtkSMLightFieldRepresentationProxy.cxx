@@ -29,8 +29,8 @@ void vtkSMLightFieldRepresentationProxy::ViewUpdated(vtkSMProxy* view)
 {
   this->Superclass::ViewUpdated(view);
   vtkSMProxy* composite = this->GetParentProxy();
-  if (this->ColoringChecked || !composite || !view ||
-    !composite->GetProperty("Representation") || !composite->GetProperty("Visibility"))
+  if (this->ColoringChecked || !composite || !view || !composite->GetProperty("Representation") ||
+    !composite->GetProperty("Visibility"))
   {
     return;
   }

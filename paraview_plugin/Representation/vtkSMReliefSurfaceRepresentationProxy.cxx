@@ -125,7 +125,8 @@ bool vtkSMReliefSurfaceRepresentationProxy::HideUpstreamImages(
   {
     return false;
   }
-  auto* relief = vtkSMSourceProxy::SafeDownCast(vtkSMPropertyHelper(composite, "Input").GetAsProxy(0));
+  auto* relief =
+    vtkSMSourceProxy::SafeDownCast(vtkSMPropertyHelper(composite, "Input").GetAsProxy(0));
   if (!relief)
   {
     return false;

@@ -204,8 +204,7 @@ double ReliefVisibleShare(const HeightField& hf, const ReliefFrame& frame, const
 }
 
 double ReliefSeenShare(const HeightField& hf, const ReliefFrame& frame, const glm::dvec3& hit,
-  const glm::dvec3& n, int count, const std::vector<float>* shareMap, int mapWidth,
-  int mapHeight)
+  const glm::dvec3& n, int count, const std::vector<float>* shareMap, int mapWidth, int mapHeight)
 {
   if (count < 1)
   {
@@ -262,8 +261,8 @@ double ReliefSeenShare(const HeightField& hf, const ReliefFrame& frame, const gl
   return occluded > 0 ? sum / occluded : 1.0;
 }
 
-glm::dvec3 ReliefInterReflected(ReliefInterReflection model, double visibleShare,
-  double seenShare, const glm::dvec3& albedo, const glm::dvec3& flatIrradiance)
+glm::dvec3 ReliefInterReflected(ReliefInterReflection model, double visibleShare, double seenShare,
+  const glm::dvec3& albedo, const glm::dvec3& flatIrradiance)
 {
   const double occluded = 1.0 - visibleShare;
   const glm::dvec3 a = glm::clamp(albedo, 0.0, 1.0);
@@ -287,8 +286,8 @@ glm::dvec3 ReliefInterReflected(ReliefInterReflection model, double visibleShare
   return ReliefInterReflected(model, visibleShare, visibleShare, albedo, flatIrradiance);
 }
 
-std::vector<float> ReliefVisibleShareMap(const HeightField& hf, const ReliefFrame& frame,
-  int width, int height, int count, const ProgressCallback& progress)
+std::vector<float> ReliefVisibleShareMap(const HeightField& hf, const ReliefFrame& frame, int width,
+  int height, int count, const ProgressCallback& progress)
 {
   if (width < 1 || height < 1)
   {

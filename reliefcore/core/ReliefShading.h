@@ -109,7 +109,7 @@ struct ReliefShade
                                 // plus the inter-reflected light
   double IndirectVisible = 1.0; // the visible share applied to it (radiance-weighted)
   glm::dvec3 InterReflected{ 0.0 }; // the relief's own reflected light, included in Indirect
-  glm::dvec3 Direct{ 0.0 };     // irradiance from the emitter samples, relief-shadowed
+  glm::dvec3 Direct{ 0.0 };         // irradiance from the emitter samples, relief-shadowed
 };
 
 /** The perturbed unit normal of the displaced surface at (u, v) (front side). */
@@ -159,8 +159,8 @@ MESOLIGHTRELIEFCORE_EXPORT double ReliefVisibleShare(const HeightField& hf,
  * a side wall is still marched: what the relief mapper's precomputed map holds.
  */
 MESOLIGHTRELIEFCORE_EXPORT double ReliefSeenShare(const HeightField& hf, const ReliefFrame& frame,
-  const glm::dvec3& hit, const glm::dvec3& n, int count, const std::vector<float>* shareMap = nullptr,
-  int mapWidth = 0, int mapHeight = 0);
+  const glm::dvec3& hit, const glm::dvec3& n, int count,
+  const std::vector<float>* shareMap = nullptr, int mapWidth = 0, int mapHeight = 0);
 
 /**
  * The light the relief reflects onto itself at a point of visible share V (ReliefLighting's

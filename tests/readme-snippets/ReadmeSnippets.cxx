@@ -134,7 +134,8 @@ int main(int argc, char* argv[])
       grab->Update();
       vtkNew<vtkFloatArray> z;
       window->GetZbufferData(0, 0, 399, 399, z);
-      auto* rgb = vtkUnsignedCharArray::SafeDownCast(grab->GetOutput()->GetPointData()->GetScalars());
+      auto* rgb =
+        vtkUnsignedCharArray::SafeDownCast(grab->GetOutput()->GetPointData()->GetScalars());
       if (!rgb || rgb->GetNumberOfTuples() != z->GetNumberOfTuples())
       {
         std::fprintf(stderr, "no colour image to check\n");

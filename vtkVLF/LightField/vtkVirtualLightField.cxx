@@ -173,8 +173,8 @@ int vtkVirtualLightField::RequestData(
     const int result = this->RequestDistributedData(input, output);
     if (result && output->GetNumberOfCells() > 0)
     {
-      KeepPiece(output,
-        outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()), pieces);
+      KeepPiece(
+        output, outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()), pieces);
     }
     return result;
   }
@@ -261,10 +261,9 @@ int vtkVirtualLightField::RequestData(
     }
     if (unshot > 0.0)
     {
-      vtkWarningMacro("The light field still holds " << 100.0 * unshot
-                                                     << "% of its emitted flux unshot after "
-                                                     << this->MaxIterations
-                                                     << " iterations (MaxIterations).");
+      vtkWarningMacro("The light field still holds "
+        << 100.0 * unshot << "% of its emitted flux unshot after " << this->MaxIterations
+        << " iterations (MaxIterations).");
     }
     this->DirectionsPropagated = static_cast<int>(field->SubfieldCount());
     this->Field = std::move(field);
@@ -543,10 +542,9 @@ int vtkVirtualLightField::RequestDistributedData(vtkPolyData* input, vtkPolyData
     }
     if (unshot > 0.0 && reducer.Rank() == 0)
     {
-      vtkWarningMacro("The light field still holds " << 100.0 * unshot
-                                                     << "% of its emitted flux unshot after "
-                                                     << this->MaxIterations
-                                                     << " iterations (MaxIterations).");
+      vtkWarningMacro("The light field still holds "
+        << 100.0 * unshot << "% of its emitted flux unshot after " << this->MaxIterations
+        << " iterations (MaxIterations).");
     }
     for (std::size_t k = 0; k < field->SubfieldCount(); ++k)
     {

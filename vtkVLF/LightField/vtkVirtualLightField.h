@@ -258,8 +258,8 @@ private:
   int FinalGatherRays = 1024; // mesolight::vlf::FinalGatherOptions::IndirectRays
   // The final gather (when on) with progress from `begin` to 1, then the snapshot written again;
   // with a reducer (a distributed field) split over the ranks (collective).
-  void GatherIfAsked(mesolight::vlf::LightField& field, double begin,
-    mesolight::vlf::Reducer* reducer = nullptr);
+  void GatherIfAsked(
+    mesolight::vlf::LightField& field, double begin, mesolight::vlf::Reducer* reducer = nullptr);
   int DirectionsPropagated = 0;
   int PropagationCount = 0;
   std::unique_ptr<mesolight::vlf::LightField> Field;

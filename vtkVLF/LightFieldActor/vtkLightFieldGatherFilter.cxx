@@ -515,8 +515,7 @@ int vtkLightFieldGatherFilter::GatherDistributed(
   }
   append->Update();
   vtkPolyData* whole = append->GetOutput();
-  AttachShadowAmbient(
-    field, vlf::SignificantEmitters(field, vlf::ShadowSettings()), whole, output);
+  AttachShadowAmbient(field, vlf::SignificantEmitters(field, vlf::ShadowSettings()), whole, output);
   vtkDataArray* normals = whole->GetPointData()->GetNormals();
   vlf::ObjectMesh mesh;
   vtkTriangleSceneConverter::ToTriangleMesh(whole, mesh);

@@ -135,8 +135,8 @@ private:
 
   // Gathers the whole surface (every rank's piece) from a distributed field: see the class
   // description. Collective.
-  int GatherDistributed(const mesolight::vlf::LightField& field, vtkPolyData* input,
-    vtkPolyData* output);
+  int GatherDistributed(
+    const mesolight::vlf::LightField& field, vtkPolyData* input, vtkPolyData* output);
   // The field on this rank: the producer's (serial runs, rank 0, every rank's share when
   // distributed: FieldDistributed) or the one received.
   const mesolight::vlf::LightField* AcquireField(vtkAlgorithm* producer);

@@ -200,7 +200,8 @@ bool vtkLightFieldMovableObject::Update(const vlf::LightField* field,
     return false;
   }
   // 2. The placement: the actor's matrix, then the field's normalisation.
-  const glm::mat4 placement = vtkLightFieldActorCore::UnitSpherePlacement(*field, object->GetMatrix());
+  const glm::mat4 placement =
+    vtkLightFieldActorCore::UnitSpherePlacement(*field, object->GetMatrix());
   const bool meshChanged = this->GatheredMesh != this->MeshVersion ||
     this->GatheredSubdivision != settings.Subdivision ||
     this->GatheredDirections != settings.Directions ||

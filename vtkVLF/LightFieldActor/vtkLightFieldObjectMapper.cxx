@@ -179,8 +179,8 @@ bool vtkLightFieldObjectMapper::UpdateShadedMesh(vtkActor* act)
     else if (this->Shading == Lights && lights)
     {
       const glm::vec3 n = i < mesh.Normals.size() ? mesh.Normals[i] : glm::vec3(0, 0, 1);
-      display =
-        vlf::ToneMap(vlf::ShadeWithLights(*lights, mesh.Positions[i], n, mesh.Diffuse), exposure, op);
+      display = vlf::ToneMap(
+        vlf::ShadeWithLights(*lights, mesh.Positions[i], n, mesh.Diffuse), exposure, op);
     }
     for (int c = 0; c < 3; ++c)
     {

@@ -164,7 +164,8 @@ bool vtkLightFieldObjectReliefProbes::Update()
     {
       return true; // nothing moved
     }
-    const glm::mat4 placement = vtkLightFieldActorCore::UnitSpherePlacement(*field, object->GetMatrix());
+    const glm::mat4 placement =
+      vtkLightFieldActorCore::UnitSpherePlacement(*field, object->GetMatrix());
     vlf::ReliefProbeSettings settings;
     this->LastGatheredProbes = static_cast<vtkIdType>(this->Probes->Gather(placement, settings));
   }

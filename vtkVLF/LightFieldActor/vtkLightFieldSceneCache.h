@@ -67,7 +67,7 @@ private:
   std::unique_ptr<mesolight::vlf::TextureAtlas> Atlas;
   vtkSmartPointer<vtkPolyData> Scene;
   std::vector<std::string> Hidden; // the names Scene leaves out
-  unsigned long AtlasVersion = 0; // bumped whenever the atlas changes
+  unsigned long AtlasVersion = 0;  // bumped whenever the atlas changes
   std::unique_ptr<mesolight::vlf::LightApproximation> Lights;
 };
 

@@ -357,14 +357,15 @@ double PathTracedIrradiance(const HeightField& hf, const ReliefFrame& frame, glm
     double throughput = 1.0;
     for (int bounce = 0; bounce < 64 && throughput > 1e-4; ++bounce)
     {
-      const glm::dvec3 n = wall != glm::dvec2(0.0) ? mesolight::ReliefWallNormal(frame, wall)
-                                                   : mesolight::ReliefNormalAt(hf, frame, at.x, at.y);
+      const glm::dvec3 n = wall != glm::dvec2(0.0)
+        ? mesolight::ReliefWallNormal(frame, wall)
+        : mesolight::ReliefNormalAt(hf, frame, at.x, at.y);
       const glm::dvec3 t = std::abs(n.z) < 0.9 ? glm::dvec3(0, 0, 1) : glm::dvec3(1, 0, 0);
       const glm::dvec3 x = glm::normalize(glm::cross(t, n));
       const glm::dvec3 y = glm::cross(n, x);
       const double r = std::sqrt(random()), phi = 2.0 * mesolight::Pi<double> * random();
-      const glm::dvec3 w = r * std::cos(phi) * x + r * std::sin(phi) * y +
-        std::sqrt(std::max(0.0, 1.0 - r * r)) * n;
+      const glm::dvec3 w =
+        r * std::cos(phi) * x + r * std::sin(phi) * y + std::sqrt(std::max(0.0, 1.0 - r * r)) * n;
       const glm::dvec3 step = frame.ToTexture(w);
       if (w.z > 0.0 && mesolight::Visible(hf, at, step, 1e-6))
       {
@@ -514,13 +515,14 @@ void WalledSlotErrors(double& seen, double& own, double& seenRatio, double& ownR
     }
     const glm::dvec2 wall(0.0, shade->Texture.y >= 1.0 ? -1.0 : 0.0);
     walls += wall.y != 0.0 ? 1 : 0;
-    const double reference = PathTracedIrradiance(
-      hf, frame, shade->Texture, radiance, albedo, 4000, state, wall);
+    const double reference =
+      PathTracedIrradiance(hf, frame, shade->Texture, radiance, albedo, 4000, state, wall);
     // With uniform light the radiance-weighted share is the cosine-weighted V.
     const double v = shade->IndirectVisible;
     const double ownSeries = shade->Indirect.x - shade->InterReflected.x +
-      mesolight::ReliefInterReflected(mesolight::ReliefInterReflection::MultiBounce, v,
-        glm::dvec3(albedo), glm::dvec3(flat)).x;
+      mesolight::ReliefInterReflected(
+        mesolight::ReliefInterReflection::MultiBounce, v, glm::dvec3(albedo), glm::dvec3(flat))
+        .x;
     seen += std::abs(shade->Indirect.x - reference) / reference;
     own += std::abs(ownSeries - reference) / reference;
     seenRatio += shade->Indirect.x / reference;
@@ -566,8 +568,7 @@ TEST(ReliefShading, SeenShareMapFollowsTheMarchedSeenShare)
   frame.DepthScale = 0.2;
   const int w = 8, h = 64, count = 32;
   const std::vector<float> share = mesolight::ReliefVisibleShareMap(hf, frame, w, h, count);
-  const std::vector<float> seen =
-    mesolight::ReliefSeenShareMap(hf, frame, share, w, h, count);
+  const std::vector<float> seen = mesolight::ReliefSeenShareMap(hf, frame, share, w, h, count);
   ASSERT_EQ(seen.size(), static_cast<std::size_t>(w * h));
   double sumError = 0.0, sumOwn = 0.0;
   int cells = 0;
@@ -595,8 +596,8 @@ TEST(ReliefShading, SeenShareMapFollowsTheMarchedSeenShare)
             << sumOwn / cells << "\n";
   EXPECT_LT(sumError / cells, 0.03);
   EXPECT_GT(sumOwn / cells, 3.0 * sumError / cells);
-  EXPECT_THROW(mesolight::ReliefSeenShareMap(hf, frame, share, w + 1, h, count),
-    std::invalid_argument);
+  EXPECT_THROW(
+    mesolight::ReliefSeenShareMap(hf, frame, share, w + 1, h, count), std::invalid_argument);
 }
 
 // The relief mapper's visible-share map (ReliefVisibleShareMap) against the analytic view factor
@@ -625,7 +626,8 @@ TEST(ReliefShading, VisibleShareMapOfAGrooveIsTheAnalyticViewFactor)
     {
       if (offset > 0.11)
       {
-        EXPECT_EQ(share[2 * i], 1.0f) << "the flat wall beside the groove sees the whole hemisphere";
+        EXPECT_EQ(share[2 * i], 1.0f)
+          << "the flat wall beside the groove sees the whole hemisphere";
       }
       continue; // the crease at the bottom and the edges: no single wall plane
     }
@@ -648,9 +650,9 @@ TEST(ReliefShading, VisibleShareMapOfAGrooveIsTheAnalyticViewFactor)
     ++count;
   }
   ASSERT_GT(count, 60);
-  std::cout << "visible share in a V-groove as deep as wide, " << count
-            << " cells: mean |error| " << sumError / count << ", worst " << worst
-            << "; around the macro normal (negative) " << sumFlatError / count << "\n";
+  std::cout << "visible share in a V-groove as deep as wide, " << count << " cells: mean |error| "
+            << sumError / count << ", worst " << worst << "; around the macro normal (negative) "
+            << sumFlatError / count << "\n";
   EXPECT_LT(sumError / count, 0.015);
   EXPECT_LT(worst, 0.04);
   EXPECT_GT(sumFlatError / count, 5.0 * sumError / count);
@@ -663,7 +665,8 @@ TEST(ReliefShading, InterReflectedFormula)
 {
   using mesolight::ReliefInterReflection;
   const glm::dvec3 e(2.0, 1.0, 0.5), a(0.5, 0.8, 0.0);
-  const glm::dvec3 one = mesolight::ReliefInterReflected(ReliefInterReflection::OneBounce, 0.6, a, e);
+  const glm::dvec3 one =
+    mesolight::ReliefInterReflected(ReliefInterReflection::OneBounce, 0.6, a, e);
   const glm::dvec3 multi =
     mesolight::ReliefInterReflected(ReliefInterReflection::MultiBounce, 0.6, a, e);
   for (int c = 0; c < 3; ++c)
@@ -671,9 +674,10 @@ TEST(ReliefShading, InterReflectedFormula)
     EXPECT_NEAR(one[c], 0.4 * a[c] * e[c], 1e-12);
     EXPECT_NEAR(multi[c], 0.4 * a[c] * 0.6 * e[c] / (1.0 - a[c] * 0.4), 1e-12);
   }
-  EXPECT_EQ(mesolight::ReliefInterReflected(ReliefInterReflection::None, 0.6, a, e), glm::dvec3(0.0));
   EXPECT_EQ(
-    mesolight::ReliefInterReflected(ReliefInterReflection::MultiBounce, 1.0, a, e), glm::dvec3(0.0));
+    mesolight::ReliefInterReflected(ReliefInterReflection::None, 0.6, a, e), glm::dvec3(0.0));
+  EXPECT_EQ(mesolight::ReliefInterReflected(ReliefInterReflection::MultiBounce, 1.0, a, e),
+    glm::dvec3(0.0));
   // The series at the seen relief's share Vs: (1 - V) a Vs E / (1 - a (1 - Vs)); Vs = V is the
   // four-argument form.
   const glm::dvec3 seen =
@@ -682,6 +686,6 @@ TEST(ReliefShading, InterReflectedFormula)
   {
     EXPECT_NEAR(seen[c], 0.4 * a[c] * 0.3 * e[c] / (1.0 - a[c] * 0.7), 1e-12);
   }
-  EXPECT_EQ(mesolight::ReliefInterReflected(ReliefInterReflection::MultiBounce, 0.6, 0.6, a, e),
-    multi);
+  EXPECT_EQ(
+    mesolight::ReliefInterReflected(ReliefInterReflection::MultiBounce, 0.6, 0.6, a, e), multi);
 }

@@ -466,8 +466,9 @@ std::vector<MedianCutLight> ComputeMedianCut(
     const double* offset = cut.E.Row(begin);
     // Each row gets the same offset row: any split gives the same sums.
     ParallelFor(0, static_cast<std::size_t>(end - begin), 16,
-      [&](std::size_t b, std::size_t e)
-      { cut.E.AddOffsetRow(begin + 1 + static_cast<int>(b), begin + static_cast<int>(e), offset); });
+      [&](std::size_t b, std::size_t e) {
+        cut.E.AddOffsetRow(begin + 1 + static_cast<int>(b), begin + static_cast<int>(e), offset);
+      });
   }
   const double total = cut.E.Sum(0, cut.W, 0, cut.H);
   if (!(total > 0.0))

@@ -177,33 +177,35 @@ std::vector<float> NormalMomentLevel(
     AxisTexels(i, level, w, columns[static_cast<size_t>(i)]);
   }
   const float share = 1.f / static_cast<float>((1 << level) * (1 << level));
-  ParallelFor(0, static_cast<std::size_t>(lh), 16, [&](std::size_t rowBegin, std::size_t rowEnd) {
-    std::vector<int> rows;
-    float m[k];
-    for (int j = static_cast<int>(rowBegin); j < static_cast<int>(rowEnd); ++j)
+  ParallelFor(0, static_cast<std::size_t>(lh), 16,
+    [&](std::size_t rowBegin, std::size_t rowEnd)
     {
-      rows.clear();
-      AxisTexels(j, level, h, rows);
-      for (int i = 0; i < lw; ++i)
+      std::vector<int> rows;
+      float m[k];
+      for (int j = static_cast<int>(rowBegin); j < static_cast<int>(rowEnd); ++j)
       {
-        float* o = &out[(static_cast<size_t>(j) * lw + i) * k];
-        for (int cj : rows)
+        rows.clear();
+        AxisTexels(j, level, h, rows);
+        for (int i = 0; i < lw; ++i)
         {
-          for (int ci : columns[static_cast<size_t>(i)])
+          float* o = &out[(static_cast<size_t>(j) * lw + i) * k];
+          for (int cj : rows)
           {
-            const size_t t = static_cast<size_t>(cj) * w + ci;
-            const float x = normalXY[2 * t], y = normalXY[2 * t + 1];
-            const float z = normalZ ? normalZ[t] : std::sqrt(std::max(0.f, 1.f - x * x - y * y));
-            NormalMoments(x, y, z, m);
-            for (int c = 0; c < k; ++c)
+            for (int ci : columns[static_cast<size_t>(i)])
             {
-              o[c] += share * m[c];
+              const size_t t = static_cast<size_t>(cj) * w + ci;
+              const float x = normalXY[2 * t], y = normalXY[2 * t + 1];
+              const float z = normalZ ? normalZ[t] : std::sqrt(std::max(0.f, 1.f - x * x - y * y));
+              NormalMoments(x, y, z, m);
+              for (int c = 0; c < k; ++c)
+              {
+                o[c] += share * m[c];
+              }
             }
           }
         }
       }
-    }
-  });
+    });
   return out;
 }
 

@@ -379,8 +379,9 @@ std::vector<float> DepthFromShading(const std::vector<float>& shading, int w, in
   }
   const bool average = settings.Layers == 0;
   const int layers = settings.Layers > 0 ? settings.Layers
-    : average ? HallucinationAverageLayers(w, h, settings.BaseSigma)
-              : ChooseHallucinationLayers(shading, w, h, settings.BaseSigma, settings.Threads).Layers;
+    : average
+    ? HallucinationAverageLayers(w, h, settings.BaseSigma)
+    : ChooseHallucinationLayers(shading, w, h, settings.BaseSigma, settings.Threads).Layers;
   std::vector<float> floored(n);
   std::transform(
     shading.begin(), shading.end(), floored.begin(), [](float s) { return std::max(Floor, s); });
@@ -745,7 +746,8 @@ HallucinationResult HallucinateDepth(const RgbImage& diffuse, const RgbImage& fl
     used.Layers = scale.Layers;
     result.FeatureSizeTexels = scale.FeatureSizeTexels;
   }
-  result.Layers = used.Layers == 0 ? HallucinationAverageLayers(w, h, settings.BaseSigma) : used.Layers;
+  result.Layers =
+    used.Layers == 0 ? HallucinationAverageLayers(w, h, settings.BaseSigma) : used.Layers;
   if (!ReportProgress(progress, 0.1))
   {
     throw HallucinationAbortedError();

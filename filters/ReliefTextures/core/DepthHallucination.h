@@ -154,8 +154,8 @@ public:
 
 struct HallucinationResult
 {
-  RgbImage Albedo;                ///< (I_f - I_d) / I_c, linear, per channel
-  std::vector<float> Shading;     ///< S, normalised (1 = open, upward-facing)
+  RgbImage Albedo;            ///< (I_f - I_d) / I_c, linear, per channel
+  std::vector<float> Shading; ///< S, normalised (1 = open, upward-facing)
   /// lum(I_d) / (lum(I_d) + lum(albedo)), 1 at its maximum: what the layers read under
   /// HallucinationModel::Ratio.
   std::vector<float> Ratio;

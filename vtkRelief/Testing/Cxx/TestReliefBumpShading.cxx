@@ -41,7 +41,8 @@ struct BumpError
   double Spread = 0.0; // max - min of the analytic values: what flat shading cannot show
 };
 
-BumpError MeasureBump(const char* method, double lightAzimuthDegrees, bool mirroredReference = false)
+BumpError MeasureBump(
+  const char* method, double lightAzimuthDegrees, bool mirroredReference = false)
 {
   auto depth = test::MakeDepthMap(256, 256, Depth);
   auto relief = test::BakeRelief(depth, DepthScale);
@@ -83,8 +84,9 @@ BumpError MeasureBump(const char* method, double lightAzimuthDegrees, bool mirro
   error.Mean /= double(count);
   error.Spread = high - low;
   std::cout << "[bump shading " << method << ", light azimuth " << lightAzimuthDegrees
-            << (mirroredReference ? " (reference with v mirrored)" : "") << "] mean |error| " << error.Mean << " levels, max " << error.Max
-            << "; analytic range " << error.Spread << " levels" << std::endl;
+            << (mirroredReference ? " (reference with v mirrored)" : "") << "] mean |error| "
+            << error.Mean << " levels, max " << error.Max << "; analytic range " << error.Spread
+            << " levels" << std::endl;
   return error;
 }
 } // namespace

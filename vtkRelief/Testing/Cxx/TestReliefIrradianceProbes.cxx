@@ -19,8 +19,8 @@
 #include <vtkCamera.h>
 #include <vtkFieldData.h>
 #include <vtkFloatArray.h>
-#include <vtkIntArray.h>
 #include <vtkImageData.h>
+#include <vtkIntArray.h>
 #include <vtkLight.h>
 #include <vtkMath.h>
 #include <vtkNew.h>
@@ -631,7 +631,8 @@ TEST(ReliefIrradianceProbes, ProbesAddToALightSetAndAreToneMappedByDefault)
 TEST(ReliefIrradianceProbes, VisibleShareAndLightVisibilityFollowTheCpuFormula)
 {
   Scene scene;
-  BuildScene(scene, [](double, double) { return 0.0; }, false);
+  BuildScene(
+    scene, [](double, double) { return 0.0; }, false);
   const glm::dvec3 albedo(0.8, 0.6, 0.4);
   scene.Actor->GetProperty()->SetColor(albedo.x, albedo.y, albedo.z);
   const glm::dvec3 radiance(0.9, 0.7, 0.5);
@@ -665,8 +666,8 @@ TEST(ReliefIrradianceProbes, VisibleShareAndLightVisibilityFollowTheCpuFormula)
   scene.Mapper->SetIrradianceProbesData(probes);
   const glm::dvec3 expected = albedo / vtkMath::Pi() *
     (sky * vtkMath::Pi() * radiance +
-      ReliefInterReflected(ReliefInterReflection::MultiBounce, visible, seenShare, albedo,
-        vtkMath::Pi() * radiance));
+      ReliefInterReflected(
+        ReliefInterReflection::MultiBounce, visible, seenShare, albedo, vtkMath::Pi() * radiance));
   const glm::dvec3 expectedPairs = albedo / vtkMath::Pi() *
     (sky * vtkMath::Pi() * radiance +
       ReliefInterReflected(

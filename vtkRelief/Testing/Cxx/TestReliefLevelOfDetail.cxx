@@ -122,8 +122,8 @@ enum class Drawn
   Exact
 };
 
-Frame RenderView(ReliefSceneOptions options, Drawn drawn, int scale, int output,
-  ReliefScene* keep = nullptr)
+Frame RenderView(
+  ReliefSceneOptions options, Drawn drawn, int scale, int output, ReliefScene* keep = nullptr)
 {
   vtkNew<vtkReliefProperty> defaults;
   options.Method = drawn == Drawn::Exact ? std::string("max-mipmap")
@@ -294,7 +294,8 @@ TEST(ReliefLevelOfDetail, ClampsTheLightOfFacetsTurnedAway)
   // default and 4% below off.
   const double bound = 5.2;
   EXPECT_LT(e.On.Mean, bound) << "the clamped Lambert term should light the far wall";
-  EXPECT_GT(e.Mean.Mean, bound) << "negative case: the mean normal lets facets turned away subtract";
+  EXPECT_GT(e.Mean.Mean, bound)
+    << "negative case: the mean normal lets facets turned away subtract";
   EXPECT_GT(e.Off.Mean, bound) << "negative case: without level of detail the wall aliases";
 }
 
@@ -311,7 +312,8 @@ TEST(ReliefLevelOfDetail, NearFrameAsWithout)
   options.ViewAngle = 45.0;
   options.ViewDistance = 0.3;
   const int shaded = vtkReliefProperty::ShadedOutput;
-  auto largestDifference = [&](const ReliefSceneOptions& o) {
+  auto largestDifference = [&](const ReliefSceneOptions& o)
+  {
     const Frame on = RenderView(o, Drawn::LevelOfDetailOn, 1, shaded);
     const Frame off = RenderView(o, Drawn::LevelOfDetailOff, 1, shaded);
     EXPECT_EQ(on.Rgb.size(), off.Rgb.size());
@@ -334,10 +336,10 @@ TEST(ReliefLevelOfDetail, NearFrameAsWithout)
   EXPECT_GT(distant, 8) << "negative case: far away the comparison sees level of detail";
 }
 
-// Up close (a 256^2 stone, 0.3 wall widths away: every pixel under a texel) level of detail must not cost exactness:
-// the hits with level of detail on against the exact intersector are those with it off. Negative
-// case: on the distant wall, where the footprint exceeds a texel, level of detail does move hits
-// (it takes no steps finer than the footprint), so the comparison can see a change.
+// Up close (a 256^2 stone, 0.3 wall widths away: every pixel under a texel) level of detail must
+// not cost exactness: the hits with level of detail on against the exact intersector are those with
+// it off. Negative case: on the distant wall, where the footprint exceeds a texel, level of detail
+// does move hits (it takes no steps finer than the footprint), so the comparison can see a change.
 TEST(ReliefLevelOfDetail, NearHitsAsExactAsWithout)
 {
   ReliefSceneOptions options;
@@ -350,9 +352,9 @@ TEST(ReliefLevelOfDetail, NearHitsAsExactAsWithout)
   const HitComparison on = HitsAgainstExact(options, Drawn::LevelOfDetailOn);
   const HitComparison off = HitsAgainstExact(options, Drawn::LevelOfDetailOff);
   std::cout << "near hits against the exact intersector, " << on.CoveredBoth
-            << " pixels: level of detail on, mean " << on.MeanTexels << " p99 " << on.P99Texels << " max "
-            << on.MaxTexels << " texels; level of detail off mean " << off.MeanTexels << " p99 "
-            << off.P99Texels << " max " << off.MaxTexels << std::endl;
+            << " pixels: level of detail on, mean " << on.MeanTexels << " p99 " << on.P99Texels
+            << " max " << on.MaxTexels << " texels; level of detail off mean " << off.MeanTexels
+            << " p99 " << off.P99Texels << " max " << off.MaxTexels << std::endl;
   ASSERT_GT(on.CoveredBoth, Width * Height / 4);
   EXPECT_EQ(on.CoveredBoth, off.CoveredBoth);
   EXPECT_NEAR(on.MeanTexels, off.MeanTexels, 1e-9);

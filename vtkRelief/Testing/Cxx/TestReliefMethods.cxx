@@ -26,7 +26,7 @@ struct MethodCase
   int Linear;
   int Refine;
   double ViewAngle;
-  double MaxMeanTexels;          // bound on the mean hit error (texels); < 0: measured only
+  double MaxMeanTexels;            // bound on the mean hit error (texels); < 0: measured only
   double MaxMeanTexelsBricks = -1; // on the Bricks pattern, when it differs (< 0: the same)
 };
 
@@ -234,8 +234,7 @@ TEST(ReliefMethodHits, MaxMipmapExactOnOddPyramidSizes)
     EXPECT_LE(exact.MeanTexels, 0.25) << resolution;
     EXPECT_LE(exact.P99Texels, 1.0) << resolution;
   }
-  const HitComparison relief =
-    MeasureHits(MethodCase{ "relief", 10, 8, 85.0, -1.0 }, "Stone", 100);
+  const HitComparison relief = MeasureHits(MethodCase{ "relief", 10, 8, 85.0, -1.0 }, "Stone", 100);
   EXPECT_TRUE(relief.MeanTexels > 0.25 || relief.P99Texels > 1.0)
     << "relief 10+8: mean " << relief.MeanTexels << ", p99 " << relief.P99Texels;
 }

@@ -225,9 +225,8 @@ double PositionalShadowMismatch(const PositionalCase& c, double* shadowedShare)
   *shadowedShare = TrulyShadowedShare(reference);
   const double mismatch = CompareLightVisibility(reference, visibility);
   std::cout << "[positional shadows cone " << c.ConeAngle << (c.Shadows ? "" : " off")
-            << (c.DirectionalReference ? " directional reference" : "") << "] mismatch "
-            << mismatch << "% of covered pixels (" << *shadowedShare
-            << "% truly self-shadowed)" << std::endl;
+            << (c.DirectionalReference ? " directional reference" : "") << "] mismatch " << mismatch
+            << "% of covered pixels (" << *shadowedShare << "% truly self-shadowed)" << std::endl;
   return mismatch;
 }
 } // namespace

@@ -14,8 +14,8 @@
 
 #include <vtkActor.h>
 #include <vtkFieldData.h>
-#include <vtkMapper.h>
 #include <vtkImageData.h>
+#include <vtkMapper.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkRenderWindow.h>

@@ -36,8 +36,8 @@ struct StressResult
 
 // Renders the wall with the given relief texture (or the options' pattern when null) and counts
 // red (non-finite) and covered pixels.
-StressResult Stress(ReliefSceneOptions o, vtkImageData* relief,
-  const std::function<void(ReliefScene&)>& tamper = {})
+StressResult Stress(
+  ReliefSceneOptions o, vtkImageData* relief, const std::function<void(ReliefScene&)>& tamper = {})
 {
   o.Width = o.Height = 160;
   o.ViewDistance = 2.2;

@@ -16,11 +16,11 @@
 
 namespace
 {
-using mesolight::TriangleScene;
 using mesolight::ObjReadOptions;
 using mesolight::ObjSceneError;
 using mesolight::ObjSceneRead;
 using mesolight::ReadObjScene;
+using mesolight::TriangleScene;
 using mesolight::vlftest::ExpectSameScene;
 
 std::string TempPath(const std::string& name)
@@ -249,8 +249,7 @@ TEST(ObjScene, DegenerateAndNonManifoldTriangles)
     TempPath("flat.obj") + ": every triangle of the scene is degenerate (zero area)");
   // A closed manifold (tetrahedron) has none.
   EXPECT_EQ(
-    mesolight::CountNonManifoldEdges({ { 0, 1, 2 }, { 0, 3, 1 }, { 1, 3, 2 }, { 2, 3, 0 } }),
-    0u);
+    mesolight::CountNonManifoldEdges({ { 0, 1, 2 }, { 0, 3, 1 }, { 1, 3, 2 }, { 2, 3, 0 } }), 0u);
 }
 
 TEST(ObjScene, CornellBoxRoundTripAndNoOverwrite)

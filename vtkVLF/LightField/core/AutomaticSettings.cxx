@@ -240,9 +240,9 @@ std::string AutomaticChoice::Describe() const
       : this->Settings.TexelSize > 0.3f * this->Settings.CellSize()
       ? ", texels half the line spacing"
       : ", texels a quarter of the line spacing",
-    this->Settings.ContactTexelHalvings <= 0 ? ""
+    this->Settings.ContactTexelHalvings <= 0     ? ""
       : this->Settings.ContactTexelHalvings == 1 ? "; texels halved on surfaces others stand on"
-                                                  : "; finer texels on surfaces others stand on",
+                                                 : "; finer texels on surfaces others stand on",
     static_cast<double>(this->SceneDiameter), static_cast<double>(this->FeatureWidth),
     this->WantedRaysPerSide, this->Limit.c_str());
   return text;

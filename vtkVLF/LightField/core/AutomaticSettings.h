@@ -19,12 +19,13 @@
 // directions (AutomaticDirections), and with 513 where the memory budget refused those.
 //
 // The texels are the cell side, or half of it where the features ask for more lines per side
-// than the caps allowed (at least twice as many without the final gather): the resolution the lines cannot give then comes from the
-// textures alone, each texel still gathering about a quarter of 2049 directions' lines. Measured
-// on `bench vlf-accuracy` at 2049 x 96 x 96 (docs/measurements/vlf/accuracy/): the boxes (their
-// 9 cm features ask for 256 lines) went from 33.3% to 24.9% mean error per pixel (the floor
-// between them from 60% to 37%), while the corridor (136 asked) went from 7.0% to 7.9% (noisier
-// walls, the same edges), and at 513 directions half texels gave the boxes nothing.
+// than the caps allowed (at least twice as many without the final gather): the resolution the lines
+// cannot give then comes from the textures alone, each texel still gathering about a quarter of
+// 2049 directions' lines. Measured on `bench vlf-accuracy` at 2049 x 96 x 96
+// (docs/measurements/vlf/accuracy/): the boxes (their 9 cm features ask for 256 lines) went
+// from 33.3% to 24.9% mean error per pixel (the floor between them from 60% to 37%), while the
+// corridor (136 asked) went from 7.0% to 7.9% (noisier walls, the same edges), and at 513
+// directions half texels gave the boxes nothing.
 //
 // With the final gather the texels of the surfaces other surfaces stand on (ContactSurfaces: a
 // floor under boxes, a wall behind ribs) are halved once more: their contact shadows are strips

@@ -178,8 +178,7 @@ bool DirectionSet::ToUpperHemisphere(const glm::vec3& unit, glm::dvec3& upper)
   return negated;
 }
 
-std::size_t DirectionSet::Nearest(
-  const glm::vec3& unit, bool* flipped, std::size_t* examined) const
+std::size_t DirectionSet::Nearest(const glm::vec3& unit, bool* flipped, std::size_t* examined) const
 {
   glm::dvec3 u;
   const bool negated = ToUpperHemisphere(unit, u);

@@ -278,8 +278,8 @@ std::vector<glm::vec3> RadianceLeaving(const LightField& field,
       if (r == rank)
       {
         first = all.size();
-        bytes.assign(reinterpret_cast<const char*>(queries.data()),
-          queries.size() * sizeof(RadianceQuery));
+        bytes.assign(
+          reinterpret_cast<const char*>(queries.data()), queries.size() * sizeof(RadianceQuery));
       }
       reducer.Broadcast(bytes, r);
       const std::size_t count = bytes.size() / sizeof(RadianceQuery);
@@ -287,8 +287,8 @@ std::vector<glm::vec3> RadianceLeaving(const LightField& field,
       all.resize(at + count);
       if (count > 0)
       {
-        std::memcpy(static_cast<void*>(all.data() + at), bytes.data(),
-          count * sizeof(RadianceQuery));
+        std::memcpy(
+          static_cast<void*>(all.data() + at), bytes.data(), count * sizeof(RadianceQuery));
       }
     }
   }

@@ -206,8 +206,8 @@ public:
   {
   }
 
-  TexelResult Gather(std::uint32_t surfaceIndex, const SurfaceTriangles& tris, int a, int b,
-    std::size_t texel) const
+  TexelResult Gather(
+    std::uint32_t surfaceIndex, const SurfaceTriangles& tris, int a, int b, std::size_t texel) const
   {
     TexelResult result;
     const Surface& s = this->Field.Surfaces()[surfaceIndex];
@@ -345,9 +345,9 @@ public:
       const EmitterTriangle& e = this->Light.Triangles[picked];
       const float before = picked == 0 ? 0.0f : this->Light.Cumulative[picked - 1];
       const float share = this->Light.Cumulative[picked] - before;
-      float r1 = share > 0.0f ? std::min(0.99999994f, std::max(0.0f,
-                                  (su * this->Light.Total - before) / share))
-                              : random.NextFloat();
+      float r1 = share > 0.0f
+        ? std::min(0.99999994f, std::max(0.0f, (su * this->Light.Total - before) / share))
+        : random.NextFloat();
       float r2 = sv;
       {
         const float root = std::sqrt(r1);
@@ -489,7 +489,8 @@ void FillFromNeighbours(const std::vector<Surface>& surfaces, std::vector<glm::v
       {
         for (int a = 0; a < s.TextureWidth; ++a)
         {
-          const std::size_t texel = s.TexelOffset + static_cast<std::size_t>(b) * s.TextureWidth + a;
+          const std::size_t texel =
+            s.TexelOffset + static_cast<std::size_t>(b) * s.TextureWidth + a;
           if (done[texel])
           {
             continue;
@@ -506,7 +507,8 @@ void FillFromNeighbours(const std::vector<Surface>& surfaces, std::vector<glm::v
               {
                 continue;
               }
-              const std::size_t other = s.TexelOffset + static_cast<std::size_t>(nb) * s.TextureWidth + na;
+              const std::size_t other =
+                s.TexelOffset + static_cast<std::size_t>(nb) * s.TextureWidth + na;
               if (done[other])
               {
                 sum += gathered[other];
@@ -582,9 +584,7 @@ std::vector<glm::vec3> GatherPass(const LightField& field, const FinalGatherOpti
     options.Reduce ? static_cast<std::size_t>(std::max(0, options.Reduce->Rank())) : 0;
   // The o-th texel of this rank's share is work[ownIndex(o)].
   const auto ownIndex = [&](std::size_t o)
-  {
-    return (o / GatherBlockTexels * ranks + rank) * GatherBlockTexels + o % GatherBlockTexels;
-  };
+  { return (o / GatherBlockTexels * ranks + rank) * GatherBlockTexels + o % GatherBlockTexels; };
   std::size_t ownCount = 0;
   for (std::size_t first = rank * GatherBlockTexels; first < work.size();
        first += ranks * GatherBlockTexels)
@@ -597,8 +597,7 @@ std::vector<glm::vec3> GatherPass(const LightField& field, const FinalGatherOpti
   const auto gatherOwn = [&]()
   {
     // Rounds of work between progress reports: abort is checked between them.
-    const std::size_t rounds =
-      std::max<std::size_t>(1, std::min<std::size_t>(50, ownCount / 256));
+    const std::size_t rounds = std::max<std::size_t>(1, std::min<std::size_t>(50, ownCount / 256));
     for (std::size_t round = 0; round < rounds; ++round)
     {
       if (!ReportProgress(
@@ -736,8 +735,7 @@ FinalGatherReport FinalGather(LightField& field, const FinalGatherOptions& optio
   }
   field.PropagatedDiffuse.swap(field.TotalDiffuse);
   field.TotalDiffuse.swap(gathered);
-  report.Seconds =
-    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  report.Seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return report;
 }
 

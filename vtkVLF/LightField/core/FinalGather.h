@@ -89,9 +89,9 @@ constexpr std::size_t GatherBlockTexels = 64;
 
 struct FinalGatherReport
 {
-  std::size_t Texels = 0;   // texels gathered (with a point on a triangle in the open)
-  std::size_t Filled = 0;   // texels filled from gathered neighbours
-  std::uint64_t Rays = 0;   // rays cast (indirect and shadow), by every rank
+  std::size_t Texels = 0; // texels gathered (with a point on a triangle in the open)
+  std::size_t Filled = 0; // texels filled from gathered neighbours
+  std::uint64_t Rays = 0; // rays cast (indirect and shadow), by every rank
   double Seconds = 0.0;
   // This rank's share (all of them in one process): texels with triangles it gathered (in each
   // pass), the rays it cast and the seconds it spent gathering them (before the combinations),

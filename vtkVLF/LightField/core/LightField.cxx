@@ -760,8 +760,8 @@ void LightField::TraceSubfield(std::size_t k, const EmbreeScene& embree)
       static_cast<std::int32_t>((hits[q].Tile % m) * ts + hits[q].Local % ts),
       static_cast<std::int32_t>((hits[q].Tile / m) * ts + hits[q].Local / ts) });
   }
-  std::sort(found.begin(), found.end(),
-    [](const Found& x, const Found& y) { return x.Cell < y.Cell; });
+  std::sort(
+    found.begin(), found.end(), [](const Found& x, const Found& y) { return x.Cell < y.Cell; });
   std::vector<std::size_t> occupied(found.size());
   std::vector<float> depth(found.size());
   std::vector<std::uint32_t> mapOf(found.size());
@@ -790,7 +790,8 @@ void LightField::TraceSubfield(std::size_t k, const EmbreeScene& embree)
     {
       f.Depth.Start[e] = static_cast<std::uint32_t>(f.Depth.Values.size());
       const std::size_t first = f.Cells.MapFirstSlot(e);
-      f.Depth.Values.insert(f.Depth.Values.end(), depth.begin() + static_cast<std::ptrdiff_t>(first),
+      f.Depth.Values.insert(f.Depth.Values.end(),
+        depth.begin() + static_cast<std::ptrdiff_t>(first),
         depth.begin() + static_cast<std::ptrdiff_t>(first + f.Cells.MapSlots(e)));
     }
   }
@@ -807,9 +808,9 @@ std::uint64_t LightField::AllocatedBytes() const
   std::uint64_t bytes = 0;
   for (const Subfield& f : this->Subfields)
   {
-    bytes += f.Depth.Bytes() + f.Radiance.Bytes() + f.UnshotSpecular.Bytes() +
-      f.Cells.Bytes() + f.Entries.capacity() * sizeof(TileEntry) +
-      f.TileStart.capacity() * sizeof(std::uint32_t) + sizeof(Subfield);
+    bytes += f.Depth.Bytes() + f.Radiance.Bytes() + f.UnshotSpecular.Bytes() + f.Cells.Bytes() +
+      f.Entries.capacity() * sizeof(TileEntry) + f.TileStart.capacity() * sizeof(std::uint32_t) +
+      sizeof(Subfield);
   }
   bytes += (this->TotalDiffuse.capacity() + this->UnshotDiffuse.capacity() +
              this->PropagatedDiffuse.capacity()) *

@@ -159,16 +159,16 @@ struct Subfield
   glm::vec3 Direction{ 0.0f, 0.0f, 1.0f };
   glm::vec3 AxisU{ 1.0f, 0.0f, 0.0f }; // cell i grows along AxisU, j along AxisV
   glm::vec3 AxisV{ 0.0f, 1.0f, 0.0f };
-  float Weight = 0.0f;                   // solid angle used in propagation and gathering (sr)
-  std::vector<std::uint32_t> TileStart;  // m*m + 1 offsets into Entries
-  std::vector<TileEntry> Entries;        // per tile, sorted by surface
+  float Weight = 0.0f;                  // solid angle used in propagation and gathering (sr)
+  std::vector<std::uint32_t> TileStart; // m*m + 1 offsets into Entries
+  std::vector<TileEntry> Entries;       // per tile, sorted by surface
   // The maps' cells are sparse (RadianceStorage.h): Cells says which hold a crossing and gives
   // each its slot, the index into the per-crossing arrays below.
   CellIndex Cells;
-  CrossingDepths Depth;          // per crossing: distance along the line (LightField::CrossingDepth)
-  RadianceArray Radiance;        // per mirror crossing (the first slots): radiance sent along
-                                 // the line so far (LightField::SentRadiance)
-  RadianceArray UnshotSpecular;  // per mirror crossing (empty without mirror surfaces)
+  CrossingDepths Depth;         // per crossing: distance along the line (LightField::CrossingDepth)
+  RadianceArray Radiance;       // per mirror crossing (the first slots): radiance sent along
+                                // the line so far (LightField::SentRadiance)
+  RadianceArray UnshotSpecular; // per mirror crossing (empty without mirror surfaces)
 };
 
 // One surface crossing of a line.
@@ -183,8 +183,8 @@ struct MemoryEstimate
 {
   std::size_t Surfaces = 0;
   std::size_t Texels = 0;
-  std::uint64_t MapCells = 0;     // crossings: lattice points in the projected triangles
-  std::uint64_t MapBytes = 0;     // cell indices, tile lists, stored depths and mirror radiance
+  std::uint64_t MapCells = 0; // crossings: lattice points in the projected triangles
+  std::uint64_t MapBytes = 0; // cell indices, tile lists, stored depths and mirror radiance
   // total, unshot, capacity, + the larger of the per-block receive buffers and GatherBytes
   std::uint64_t TextureBytes = 0;
   // The final gather's working memory (FinalGather.h): its shares, its copy of the totals (kept
@@ -197,8 +197,8 @@ struct MemoryEstimate
 // Bytes needed by a LightField for the scene (normalised to the unit sphere first, as Build
 // does) and settings while it propagates, computed without allocating the structure: the maps'
 // crossings and (tile, surface) pairs counted from the projected triangles, so within a few
-// percent of what Build allocates (AllocatedBytes) plus propagation's receive buffers. Throws std::invalid_argument
-// for unusable settings or an empty scene.
+// percent of what Build allocates (AllocatedBytes) plus propagation's receive buffers. Throws
+// std::invalid_argument for unusable settings or an empty scene.
 MemoryEstimate EstimateMemory(const TriangleScene& scene, const LightFieldSettings& settings);
 
 class Reducer; // Distribution.h
@@ -274,7 +274,8 @@ public:
   // has sent is the total diffuse texture less its unshot part there (exactly the sum the
   // propagation shot; 0 for crossings whose line runs into a solid, which shoot nothing).
   // Nothing is stored then: the maps hold visibility only.
-  glm::vec3 SentRadiance(std::size_t k, int i, int j, std::uint32_t surface, std::size_t slot) const;
+  glm::vec3 SentRadiance(
+    std::size_t k, int i, int j, std::uint32_t surface, std::size_t slot) const;
   // Whether crossings of the surface store their radiance: those of mirrors (Ks > 0), whose
   // radiance depends on the direction. Their maps are numbered first (TileEntry::Map), so their
   // crossings hold the first slots: SpecularSlots of them, the length of Subfield::Radiance and

@@ -161,8 +161,9 @@ MemoryEstimate EstimateFor(const TriangleScene& scene, const std::vector<Surface
   // AllocatedBytes counts both), the first pass's totals the second pass reads
   // (FinalGatherOptions::Prepass), the per-texel triangle lists' starts and about one entry, and
   // two flag bytes.
-  e.GatherBytes = e.Texels * (4 * sizeof(float) + 2 * sizeof(glm::vec3) +
-                               2 * sizeof(std::uint32_t) + 2 * sizeof(std::uint8_t));
+  e.GatherBytes = e.Texels *
+    (4 * sizeof(float) + 2 * sizeof(glm::vec3) + 2 * sizeof(std::uint32_t) +
+      2 * sizeof(std::uint8_t));
   // total + unshot + capacity (+ the propagated totals a gathered field keeps), and the larger
   // of one receive buffer per worker block during propagation and the final gather's working
   // memory (the two never overlap).

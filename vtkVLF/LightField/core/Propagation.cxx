@@ -265,8 +265,8 @@ void ExchangeSpecular(LightField& field, Reducer& reducer, const std::vector<Blo
           {
             throw std::runtime_error("mirrored radiance arrived for a direction not held here");
           }
-          if (!DepositSpecular(field, r.Target, r.Surface, r.Point, r.Radiance, r.SourceWeight,
-                deposits))
+          if (!DepositSpecular(
+                field, r.Target, r.Surface, r.Point, r.Radiance, r.SourceWeight, deposits))
           {
             Add(lost, r.Radiance * (cellArea * r.SourceWeight));
           }

@@ -184,7 +184,8 @@ void CellIndex::Unpack(const std::string& in, std::size_t& at)
     this->Clear();
     return;
   }
-  if (!this->Assign(static_cast<std::size_t>(maps), static_cast<std::size_t>(cells), std::move(words)))
+  if (!this->Assign(
+        static_cast<std::size_t>(maps), static_cast<std::size_t>(cells), std::move(words)))
   {
     throw std::runtime_error("a subfield message holds an inconsistent cell index");
   }

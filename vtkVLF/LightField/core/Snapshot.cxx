@@ -338,11 +338,13 @@ void ReadCompactRadiance(
     {
       if (!(std::isfinite(x.x) && std::isfinite(x.y) && std::isfinite(x.z)))
       {
-        throw SnapshotError(r.QuotedPath() + " holds NaN or infinite values: it is not a usable light field");
+        throw SnapshotError(
+          r.QuotedPath() + " holds NaN or infinite values: it is not a usable light field");
       }
       if (x.x < 0.0f || x.y < 0.0f || x.z < 0.0f)
       {
-        throw SnapshotError(r.QuotedPath() + " holds negative radiance: it is not a usable light field");
+        throw SnapshotError(
+          r.QuotedPath() + " holds negative radiance: it is not a usable light field");
       }
     }
     radiance.assign(0, glm::vec3(0.0f));
@@ -690,8 +692,8 @@ std::unique_ptr<LightField> ReadSnapshot(const std::string& path, std::uint64_t 
   const auto finiteVectors = [&](const std::vector<glm::vec3>& values)
   { return values.empty() || finite(&values[0].x, 3 * values.size()); };
   bool ok = droppedOk && finiteVectors(field->TotalDiffuse) &&
-    finiteVectors(field->PropagatedDiffuse) &&
-    finiteVectors(field->UnshotDiffuse) && finite(field->Capacity.data(), field->Capacity.size());
+    finiteVectors(field->PropagatedDiffuse) && finiteVectors(field->UnshotDiffuse) &&
+    finite(field->Capacity.data(), field->Capacity.size());
   for (std::size_t k = 0; ok && k < field->SubfieldCount(); ++k)
   {
     const Subfield& f = field->GetSubfield(k);

@@ -37,11 +37,11 @@ public:
 };
 
 // Version 2 stores the maps sparse (RadianceStorage.h): per subfield the cell mask words, per
-// map whether its depths follow from its surface's plane, the other maps' crossings' depths, and the radiance and unshot specular radiance each as a form byte then
-// either floats (0: a snapshot taken while propagating) or a power-of-two exponent and
-// shared-exponent words (1: a propagated field); both empty in a scene without mirrors
-// (LightField::SentRadiance). Version 1 (every map cell, float radiance, no surface
-// names) is still read, into the compact form.
+// map whether its depths follow from its surface's plane, the other maps' crossings' depths, and
+// the radiance and unshot specular radiance each as a form byte then either floats (0: a snapshot
+// taken while propagating) or a power-of-two exponent and shared-exponent words (1: a propagated
+// field); both empty in a scene without mirrors (LightField::SentRadiance). Version 1 (every map
+// cell, float radiance, no surface names) is still read, into the compact form.
 constexpr std::uint32_t SnapshotVersion = 2;
 constexpr std::uint32_t DenseSnapshotVersion = 1;
 

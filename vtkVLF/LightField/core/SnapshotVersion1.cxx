@@ -56,11 +56,10 @@ void WriteDenseMaps(Writer& w, const LightField& field, const Subfield& f, std::
         const std::uint32_t surface = f.Entries[e].Surface;
         depth[c] = DepthOf(field, f, k, t, map, surface, local, slot);
         const std::size_t m = static_cast<std::size_t>(field.Settings().TilesPerSide);
-        radiance[c] = slot < f.Radiance.size() ? glm::vec3(f.Radiance[slot])
-                                               : field.SentRadiance(k,
-                                                   static_cast<int>((t % m) * ts + local % ts),
-                                                   static_cast<int>((t / m) * ts + local / ts),
-                                                   surface, slot);
+        radiance[c] = slot < f.Radiance.size()
+          ? glm::vec3(f.Radiance[slot])
+          : field.SentRadiance(k, static_cast<int>((t % m) * ts + local % ts),
+              static_cast<int>((t / m) * ts + local / ts), surface, slot);
         if (!unshot.empty() && slot < f.UnshotSpecular.size())
         {
           unshot[c] = f.UnshotSpecular[slot];

@@ -101,8 +101,8 @@ ObjectMesh SubdivideOnce(const ObjectMesh& mesh)
   midpoints.reserve(mesh.Triangles.size() * 2);
   for (const glm::uvec3& t : mesh.Triangles)
   {
-    const glm::vec3 face =
-      glm::cross(mesh.Positions[t.y] - mesh.Positions[t.x], mesh.Positions[t.z] - mesh.Positions[t.x]);
+    const glm::vec3 face = glm::cross(
+      mesh.Positions[t.y] - mesh.Positions[t.x], mesh.Positions[t.z] - mesh.Positions[t.x]);
     std::uint32_t mid[3];
     for (int e = 0; e < 3; ++e)
     {
@@ -661,7 +661,8 @@ const ShadedObject& ObjectGatherer::Gather(
     for (std::size_t start = 0; start < todo.size(); start += ProgressBatch)
     {
       if (!ReportProgress(settings.Progress,
-            static_cast<double>(start) / static_cast<double>(std::max<std::size_t>(1, todo.size()))))
+            static_cast<double>(start) /
+              static_cast<double>(std::max<std::size_t>(1, todo.size()))))
       {
         this->CachedValid.assign(n, 0); // part of this frame is missing
         throw AbortedError();

@@ -50,10 +50,12 @@ std::string ObjectMesh::Validate() const
     if (std::max({ t.x, t.y, t.z }) >= this->Positions.size())
     {
       return "a triangle of the object refers to point " +
-        std::to_string(std::max({ t.x, t.y, t.z })) + " of " + std::to_string(this->Positions.size());
+        std::to_string(std::max({ t.x, t.y, t.z })) + " of " +
+        std::to_string(this->Positions.size());
     }
   }
-  if (!Finite(this->Diffuse) || std::min({ this->Diffuse.x, this->Diffuse.y, this->Diffuse.z }) < 0.0f ||
+  if (!Finite(this->Diffuse) ||
+    std::min({ this->Diffuse.x, this->Diffuse.y, this->Diffuse.z }) < 0.0f ||
     std::max({ this->Diffuse.x, this->Diffuse.y, this->Diffuse.z }) > 1.0f)
   {
     return "the object's diffuse reflectance must lie in [0, 1]";
@@ -76,8 +78,8 @@ void ObjectMesh::ComputeNormals()
       continue;
     }
     // The cross product's length is twice the area: an area-weighted sum.
-    const glm::vec3 n =
-      glm::cross(this->Positions[t.y] - this->Positions[t.x], this->Positions[t.z] - this->Positions[t.x]);
+    const glm::vec3 n = glm::cross(
+      this->Positions[t.y] - this->Positions[t.x], this->Positions[t.z] - this->Positions[t.x]);
     if (!Finite(n))
     {
       continue;
@@ -109,8 +111,8 @@ std::size_t ObjectMesh::DegenerateTriangleCount() const
       ++count;
       continue;
     }
-    const glm::vec3 n =
-      glm::cross(this->Positions[t.y] - this->Positions[t.x], this->Positions[t.z] - this->Positions[t.x]);
+    const glm::vec3 n = glm::cross(
+      this->Positions[t.y] - this->Positions[t.x], this->Positions[t.z] - this->Positions[t.x]);
     count += !(glm::length(n) > threshold);
   }
   return count;

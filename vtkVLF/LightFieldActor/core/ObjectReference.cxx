@@ -32,8 +32,8 @@ ObjectReference TraceObjectReference(
   std::vector<std::uint32_t> triangleOf(unitMesh.Positions.size(), none);
   for (const glm::uvec3& t : unitMesh.Triangles)
   {
-    const glm::vec3 n = glm::cross(
-      unitMesh.Positions[t.y] - unitMesh.Positions[t.x], unitMesh.Positions[t.z] - unitMesh.Positions[t.x]);
+    const glm::vec3 n = glm::cross(unitMesh.Positions[t.y] - unitMesh.Positions[t.x],
+      unitMesh.Positions[t.z] - unitMesh.Positions[t.x]);
     if (!(glm::length(n) > 1e-12f))
     {
       continue;

@@ -247,8 +247,7 @@ std::vector<SH9> ReliefSurfaceProbes(const LightField& field, const ReliefSurfac
       {
         for (std::size_t i = begin; i < end; ++i)
         {
-          const glm::vec3 p =
-            ReliefProbePoint(surface, static_cast<int>(i), j, probesU, probesV);
+          const glm::vec3 p = ReliefProbePoint(surface, static_cast<int>(i), j, probesU, probesV);
           probes[static_cast<std::size_t>(j) * probesU + i] =
             ProjectIncidentSH9(IncidentRadianceSamples(field, p, incident));
         }

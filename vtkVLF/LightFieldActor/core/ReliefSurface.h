@@ -57,7 +57,10 @@ struct ReliefSurface
   glm::vec3 Emission{ 0.0f };
   bool SceneTextureCoordinates = false; // the frame came from the scene's vt, not the plane
 
-  glm::dvec3 Point(double u, double v) const { return this->Origin + u * this->AxisU + v * this->AxisV; }
+  glm::dvec3 Point(double u, double v) const
+  {
+    return this->Origin + u * this->AxisU + v * this->AxisV;
+  }
   // The texture coordinates of a point of its plane.
   glm::dvec3 TextureOf(const glm::dvec3& point) const;
 };

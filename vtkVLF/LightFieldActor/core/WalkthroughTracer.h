@@ -126,8 +126,8 @@ public:
   virtual bool Covers(std::size_t triangle) const = 0;
   // The radiance the relief shows along a ray (unit sphere) that reached its triangle's plane;
   // false when the ray misses the relief (the flat surface's value is kept).
-  virtual bool Radiance(std::size_t triangle, const glm::vec3& origin,
-    const glm::vec3& direction, glm::vec3& radiance) const = 0;
+  virtual bool Radiance(std::size_t triangle, const glm::vec3& origin, const glm::vec3& direction,
+    glm::vec3& radiance) const = 0;
 };
 
 class WalkthroughTracer

@@ -241,9 +241,9 @@ TEST(LightsCsv, ValuesOutsideSinglePrecisionAreRefused)
   EXPECT_TRUE(FailsWith(WriteText(dir, "u.csv", h + "1e39,0.5,0,1,0,1,2,3\n"),
     "the u field \"1e39\" is outside single precision"));
   // Each light representable, their sum not.
-  EXPECT_TRUE(FailsWith(
-    WriteText(dir, "sum.csv", h + "0.25,0.5,0,1,0,1,2,3e38\n0.5,0.5,0,1,0,1,2,3e38\n"),
-    "line 3: the total b irradiance"));
+  EXPECT_TRUE(
+    FailsWith(WriteText(dir, "sum.csv", h + "0.25,0.5,0,1,0,1,2,3e38\n0.5,0.5,0,1,0,1,2,3e38\n"),
+      "line 3: the total b irradiance"));
   // The largest float itself is still a light.
   const std::string largest = WriteText(dir, "largest.csv", h + "0.25,0.5,0,1,0,3.4e38,2,3\n");
   vtkNew<vtkLightSetReader> reader;

@@ -305,8 +305,7 @@ TEST(MedianCutLights, MemoryBudgetRefusesBeforeAllocating)
   capture->Watch(lights);
   lights->Update();
   // Variance-minimizing cuts (the default): five tables and the cell energies, in double.
-  EXPECT_TRUE(capture->HasError("256 x 128 environment needs about 2 MiB"))
-    << capture->AllErrors();
+  EXPECT_TRUE(capture->HasError("256 x 128 environment needs about 2 MiB")) << capture->AllErrors();
   EXPECT_EQ(lights->GetOutput()->GetNumberOfPoints(), 0);
   // Even-energy cuts need one table.
   lights->VarianceMinimizationOff();

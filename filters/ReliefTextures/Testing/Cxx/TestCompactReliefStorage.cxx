@@ -273,8 +273,8 @@ std::vector<std::pair<int, int>> PyramidSizes(int w, int h, size_t levels)
 // leftover odd child folded into the last cell, a missing child repeating a present bound.
 TEST(CompactReliefStorage, ChildMinimaPackingBoundsEveryChild)
 {
-  for (const auto& [w, h] : std::vector<std::pair<int, int>>{
-         { 37, 23 }, { 64, 64 }, { 1, 9 }, { 12, 1 }, { 2, 2 } })
+  for (const auto& [w, h] :
+    std::vector<std::pair<int, int>>{ { 37, 23 }, { 64, 64 }, { 1, 9 }, { 12, 1 }, { 2, 2 } })
   {
     const std::string what = std::to_string(w) + "x" + std::to_string(h);
     const std::vector<float> depth = RandomDepth(w, h, 3);
@@ -615,8 +615,8 @@ TEST(CompactNormalMoments, LevelsAreSuccessiveBoxReductions)
     // Level 0: one normal's moments, w n n^T with E[w nz] = 1 (no wall steeper than the clamp).
     const float* m = &level[K * t];
     EXPECT_NEAR(m[0] * m[3], m[4] * m[4], 1e-5f);
-    const float length = std::sqrt(map.XY[2 * t] * map.XY[2 * t] +
-      map.XY[2 * t + 1] * map.XY[2 * t + 1] + map.Z[t] * map.Z[t]);
+    const float length = std::sqrt(
+      map.XY[2 * t] * map.XY[2 * t] + map.XY[2 * t + 1] * map.XY[2 * t + 1] + map.Z[t] * map.Z[t]);
     EXPECT_NEAR(m[3], map.Z[t] / length, 1e-5f);
     EXPECT_NEAR(m[6] * m[3], m[4], 1e-5f); // w nx nz = (w nx) nz
   }

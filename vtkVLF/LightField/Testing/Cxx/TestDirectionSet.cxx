@@ -409,8 +409,8 @@ TEST_P(DirectionSetSizes, NearestExaminesAFixedNumberOfDirections)
   std::printf("[ figures  ] %zu directions: Nearest compares %.2f lattice points on average, %zu "
               "at most; %.0f ns per call, Interpolate %.0f ns (10^5 calls, one thread; checksum "
               "%zu)\n",
-    set.Size(), static_cast<double>(total) / samples.size(), most,
-    1e9 * nearest / samples.size(), 1e9 * interpolate / samples.size(), checksum);
+    set.Size(), static_cast<double>(total) / samples.size(), most, 1e9 * nearest / samples.size(),
+    1e9 * interpolate / samples.size(), checksum);
   EXPECT_GE(most, 4u);
   EXPECT_LE(most, 16u);
 }

@@ -172,9 +172,9 @@ int Equal(vtkMultiProcessController* controller, const std::string& dir)
   {
     Check(read->GetSubfield(k).Depth == serial->GetSubfield(k).Depth,
       "snapshot depths of direction " + std::to_string(k));
-    worstMap = std::max(
-      worstMap, WorstRelative(read->GetSubfield(k).Radiance.ToVector(),
-        serial->GetSubfield(k).Radiance.ToVector()));
+    worstMap = std::max(worstMap,
+      WorstRelative(
+        read->GetSubfield(k).Radiance.ToVector(), serial->GetSubfield(k).Radiance.ToVector()));
   }
   Check(worstMap <= 1e-5, "snapshot radiance maps (worst " + std::to_string(worstMap) + ")");
   // Read as a resuming rank does: its own maps only, equal to the serial ones, the others empty.
@@ -184,9 +184,10 @@ int Equal(vtkMultiProcessController* controller, const std::string& dir)
   {
     const bool owns = field->OwnsSubfield(k);
     Check(share->OwnsSubfield(k) == owns, "the share owns what the split gives this rank");
-    Check(owns ? share->GetSubfield(k).Radiance == read->GetSubfield(k).Radiance &&
+    Check(owns
+        ? share->GetSubfield(k).Radiance == read->GetSubfield(k).Radiance &&
           share->GetSubfield(k).Depth == read->GetSubfield(k).Depth
-               : share->GetSubfield(k).Radiance.empty() && share->GetSubfield(k).Depth.Start.empty(),
+        : share->GetSubfield(k).Radiance.empty() && share->GetSubfield(k).Depth.Start.empty(),
       "the share's maps of direction " + std::to_string(k) + " (held iff owned)");
   }
   if (ranks > 1)
@@ -323,8 +324,8 @@ int Mirror(vtkMultiProcessController* controller, const std::string& obj, const 
     const auto& b = serial->EnergyLog.back();
     Check(std::abs(a.Shot[c] - b.Shot[c]) <= 1e-5 * std::abs(b.Shot[c]), "energy shot");
     Check(std::abs(a.Unshot[c] - b.Unshot[c]) <= 1e-5 * std::abs(b.Unshot[c]), "energy unshot");
-    Check(std::abs(a.SpecularLost[c] - b.SpecularLost[c]) <=
-        1e-5 * std::abs(b.Shot[c]), "mirrored flux lost");
+    Check(std::abs(a.SpecularLost[c] - b.SpecularLost[c]) <= 1e-5 * std::abs(b.Shot[c]),
+      "mirrored flux lost");
   }
   // Every direction's maps (radiance sent, unshot mirrored radiance), as rank 0 wrote them.
   controller->Barrier();
@@ -333,9 +334,9 @@ int Mirror(vtkMultiProcessController* controller, const std::string& obj, const 
   bool anySpecular = false;
   for (std::size_t k = 0; k < read->SubfieldCount(); ++k)
   {
-    worstMap = std::max(
-      worstMap, WorstRelative(read->GetSubfield(k).Radiance.ToVector(),
-                  serial->GetSubfield(k).Radiance.ToVector()));
+    worstMap = std::max(worstMap,
+      WorstRelative(
+        read->GetSubfield(k).Radiance.ToVector(), serial->GetSubfield(k).Radiance.ToVector()));
     worstSpecular = std::max(worstSpecular,
       WorstRelative(read->GetSubfield(k).UnshotSpecular.ToVector(),
         serial->GetSubfield(k).UnshotSpecular.ToVector()));
@@ -344,8 +345,8 @@ int Mirror(vtkMultiProcessController* controller, const std::string& obj, const 
       anySpecular = anySpecular || v.x > 0.0f;
     }
   }
-  std::printf("rank %d of %d: mirrors: maps worst %.3g, unshot specular worst %.3g\n", Rank,
-    ranks, worstMap, worstSpecular);
+  std::printf("rank %d of %d: mirrors: maps worst %.3g, unshot specular worst %.3g\n", Rank, ranks,
+    worstMap, worstSpecular);
   Check(anySpecular, "the serial field holds unshot mirrored radiance (the check sees some)");
   Check(worstMap <= 1e-5, "radiance maps equal the serial field's (mirrors)");
   Check(worstSpecular <= 1e-5, "unshot specular maps equal the serial field's");
@@ -372,8 +373,8 @@ int Mirror(vtkMultiProcessController* controller, const std::string& obj, const 
           continue;
         }
         const float u = 0.18f * static_cast<float>(a), v = 0.18f * static_cast<float>(b);
-        const glm::vec3 p = (1.0f - u - v) * unit.Vertex(t, 0) + u * unit.Vertex(t, 1) +
-          v * unit.Vertex(t, 2);
+        const glm::vec3 p =
+          (1.0f - u - v) * unit.Vertex(t, 0) + u * unit.Vertex(t, 1) + v * unit.Vertex(t, 2);
         const glm::vec3 side = glm::normalize(glm::cross(normal, glm::vec3(0.3f, 0.5f, 0.8f)));
         const float turn = 0.37f * static_cast<float>(index % 7);
         queries.push_back({ s, p, glm::normalize(normal + turn * side) });
@@ -401,7 +402,8 @@ int Mirror(vtkMultiProcessController* controller, const std::string& obj, const 
     std::printf("rank %d of %d: mirror lookups (%s) at %zu points, worst relative difference "
                 "%.3g\n",
       Rank, ranks, name, queries.size(), worstLookup);
-    Check(worstLookup <= 1e-5, std::string("mirror lookups equal the serial field's (") + name + ")");
+    Check(
+      worstLookup <= 1e-5, std::string("mirror lookups equal the serial field's (") + name + ")");
     if (ranks > 1)
     {
       Check(WorstRelative(alone, reference) > 1e-2,
@@ -452,8 +454,7 @@ int Gather(vtkMultiProcessController* controller, const std::string& obj)
   vlf::Propagate(*serial, iterations);
   const vlf::FinalGatherReport serialReport = vlf::FinalGather(*serial, options);
 
-  std::unique_ptr<vlf::LightField> field =
-    vlf::LightField::Build(scene, settings, {}, &reducer);
+  std::unique_ptr<vlf::LightField> field = vlf::LightField::Build(scene, settings, {}, &reducer);
   vlf::PropagationOptions propagation;
   propagation.Reduce = &reducer;
   vlf::Propagate(*field, iterations, propagation);
@@ -484,8 +485,7 @@ int Gather(vtkMultiProcessController* controller, const std::string& obj)
   for (const double o : own)
   {
     Check(std::abs(o - even) <= static_cast<double>(vlf::GatherBlockTexels),
-      "a rank's share within a block of " + std::to_string(even) + " texels: " +
-        std::to_string(o));
+      "a rank's share within a block of " + std::to_string(even) + " texels: " + std::to_string(o));
   }
   Check(shares[1] == static_cast<double>(serialReport.Rays), "the ranks' rays add up");
   Check(ranks == 1 || report.OwnTexels < report.Texels, "a rank gathers a share only");
@@ -494,8 +494,9 @@ int Gather(vtkMultiProcessController* controller, const std::string& obj)
   vlf::RestorePropagatedDiffuse(*field);
   Check(field->TotalDiffuse == propagated, "the propagated totals restored");
   vlf::FinalGather(*field, options);
-  Check(field->TotalDiffuse == gathered, "the combined shares equal this rank's whole gather "
-                                         "bit for bit");
+  Check(field->TotalDiffuse == gathered,
+    "the combined shares equal this rank's whole gather "
+    "bit for bit");
 
   // An abort on one rank: every rank stops, the field as propagated everywhere.
   vlf::FinalGatherOptions aborting = distributed;
@@ -510,8 +511,8 @@ int Gather(vtkMultiProcessController* controller, const std::string& obj)
   alone.Reduce = &uncombined;
   vlf::FinalGather(*field, alone);
   const double apart = WorstRelative(field->TotalDiffuse, serial->TotalDiffuse);
-  std::printf("rank %d of %d: shares not combined: worst relative difference %.3g\n", Rank,
-    ranks, apart);
+  std::printf(
+    "rank %d of %d: shares not combined: worst relative difference %.3g\n", Rank, ranks, apart);
   if (ranks > 1)
   {
     Check(apart > 1e-2, "without the combining sum the textures differ from the serial gather");

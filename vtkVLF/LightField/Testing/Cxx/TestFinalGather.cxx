@@ -50,8 +50,8 @@ glm::vec3 World(const LightField& field, const glm::vec3& unit)
 
 // RMS relative error of the floor texels (surface 0) at least one texel inside the floor
 // against rho Le F at their centres.
-double FormFactorError(const LightField& field, float albedo, float emission, float side,
-  float height)
+double FormFactorError(
+  const LightField& field, float albedo, float emission, float side, float height)
 {
   double sum = 0.0;
   std::size_t count = 0;
@@ -208,8 +208,7 @@ TEST(VLFFinalGather, CornellBoxHasNoBlackTexelsAndLowerErrors)
   PropagateToTolerance(*field, DefaultTolerance, DefaultMaxIterations);
   const std::vector<TexelPoint> texels = SurfaceTexels(*field);
   const std::vector<glm::vec3> reference = PathTraced(cornell, *field, texels, 2048, 1);
-  const TexelError before =
-    CompareTexels(*field, texels, FieldAtTexels(*field, texels), reference);
+  const TexelError before = CompareTexels(*field, texels, FieldAtTexels(*field, texels), reference);
   FinalGather(*field);
   const std::vector<glm::vec3> values = FieldAtTexels(*field, texels);
   const TexelError after = CompareTexels(*field, texels, values, reference);

@@ -11,8 +11,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <cstdio>
 #include <cmath>
+#include <cstdio>
 #include <random>
 
 namespace
@@ -54,7 +54,8 @@ TEST(VLFRadianceStorage, Rgb9e5IsWithinItsBound)
   EXPECT_GT(worst, std::ldexp(1.0, -10));
   // Exact values: small integers, powers of two, zero; negatives, NaN clamp to 0, huge to max.
   EXPECT_EQ(DecodeRgb9e5(EncodeRgb9e5(glm::vec3(1.0f, 0.5f, 0.25f))), glm::vec3(1.0f, 0.5f, 0.25f));
-  EXPECT_EQ(DecodeRgb9e5(EncodeRgb9e5(glm::vec3(17.0f, 12.0f, 4.0f))), glm::vec3(17.0f, 12.0f, 4.0f));
+  EXPECT_EQ(
+    DecodeRgb9e5(EncodeRgb9e5(glm::vec3(17.0f, 12.0f, 4.0f))), glm::vec3(17.0f, 12.0f, 4.0f));
   EXPECT_EQ(EncodeRgb9e5(glm::vec3(0.0f)), 0u);
   EXPECT_EQ(DecodeRgb9e5(EncodeRgb9e5(glm::vec3(-1.0f, NAN, 2.0f))), glm::vec3(0.0f, 0.0f, 2.0f));
   EXPECT_EQ(DecodeRgb9e5(EncodeRgb9e5(glm::vec3(1e9f))), glm::vec3(MaxRgb9e5));
@@ -104,8 +105,8 @@ TEST(VLFRadianceStorage, ArraysScaleToAnyRangeAndTurnFloatOnWrite)
 TEST(VLFRadianceStorage, CellIndexSlotsMatchABruteForceCount)
 {
   std::mt19937 rng(3);
-  for (const std::size_t cellsPerMap : { std::size_t(16), std::size_t(64), std::size_t(100),
-         std::size_t(256) })
+  for (const std::size_t cellsPerMap :
+    { std::size_t(16), std::size_t(64), std::size_t(100), std::size_t(256) })
   {
     const std::size_t maps = 37;
     std::vector<std::size_t> occupied;
@@ -123,7 +124,8 @@ TEST(VLFRadianceStorage, CellIndexSlotsMatchABruteForceCount)
     EXPECT_EQ(index.Slots(), occupied.size());
     for (std::size_t c = 0; c < maps * cellsPerMap; ++c)
     {
-      ASSERT_EQ(index.Slot(c / cellsPerMap, c % cellsPerMap), expected[c]) << cellsPerMap << " " << c;
+      ASSERT_EQ(index.Slot(c / cellsPerMap, c % cellsPerMap), expected[c])
+        << cellsPerMap << " " << c;
     }
     CellIndex copy;
     EXPECT_TRUE(copy.Assign(maps, cellsPerMap, index.Words()));
@@ -208,9 +210,10 @@ TEST(VLFRadianceStorage, DiffuseSentRadianceIsWhatTheIterationsShot)
     worstTotal = std::max(worstTotal, (static_cast<double>(dt.x) + dt.y + dt.z) / size);
     ++compared;
   }
-  std::printf("[ sent     ] %zu diffuse crossings: worst %.2e (the total alone %.2e); %zu blocked\n",
+  std::printf(
+    "[ sent     ] %zu diffuse crossings: worst %.2e (the total alone %.2e); %zu blocked\n",
     compared, worst, worstTotal, blocked);
-  EXPECT_GT(blocked, 10u); // the floor under the blocks
+  EXPECT_GT(blocked, 10u);                              // the floor under the blocks
   EXPECT_EQ(field->GetSubfield(0).Radiance.size(), 0u); // nothing stored without mirrors
   EXPECT_GT(compared, 1000u);
   EXPECT_LT(worst, 1e-4);

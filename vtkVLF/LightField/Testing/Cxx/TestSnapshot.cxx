@@ -11,9 +11,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstring>
 #include <csignal>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <iterator>
 #include <limits>
@@ -42,7 +42,8 @@ std::unique_ptr<LightField> SmallCornell(int iterations, bool mirror = false)
   settings.Directions = 33;
   settings.RaysPerSide = 16;
   settings.TilesPerSide = 4;
-  std::unique_ptr<LightField> field = LightField::Build(mirror ? MakeCornellBoxWithMirror() : MakeCornellBox(), settings);
+  std::unique_ptr<LightField> field =
+    LightField::Build(mirror ? MakeCornellBoxWithMirror() : MakeCornellBox(), settings);
   Propagate(*field, iterations);
   return field;
 }
@@ -281,7 +282,8 @@ TEST(VLFSnapshot, NonFiniteValuesAreRefused)
   std::unique_ptr<LightField> field = SmallCornell(0, true);
   PropagateIteration(*field);
   ASSERT_FALSE(field->GetSubfield(MirrorSubfield(*field)).Radiance.empty());
-  field->GetSubfield(MirrorSubfield(*field)).Radiance.Floats()[0].y = std::numeric_limits<float>::quiet_NaN();
+  field->GetSubfield(MirrorSubfield(*field)).Radiance.Floats()[0].y =
+    std::numeric_limits<float>::quiet_NaN();
   WriteSnapshot(*field, path);
   EXPECT_NE(ReadError(path).find("NaN or infinite"), std::string::npos) << ReadError(path);
   field = SmallCornell(1);
@@ -290,10 +292,10 @@ TEST(VLFSnapshot, NonFiniteValuesAreRefused)
   EXPECT_NE(ReadError(path).find("NaN or infinite"), std::string::npos) << ReadError(path);
   // The same in a version 1 file.
   field = SmallCornell(1, true);
-  field->GetSubfield(MirrorSubfield(*field)).Radiance[0] = glm::vec3(std::numeric_limits<float>::quiet_NaN());
+  field->GetSubfield(MirrorSubfield(*field)).Radiance[0] =
+    glm::vec3(std::numeric_limits<float>::quiet_NaN());
   WriteSnapshotVersion(*field, path, DenseSnapshotVersion);
-  EXPECT_NE(ReadError(path).find("NaN or infinite radiance"), std::string::npos)
-    << ReadError(path);
+  EXPECT_NE(ReadError(path).find("NaN or infinite radiance"), std::string::npos) << ReadError(path);
   WriteSnapshot(*SmallCornell(1), path);
   EXPECT_EQ(ReadError(path), "");
   std::remove(path.c_str());

@@ -184,19 +184,21 @@ int Run(vtkMultiProcessController* controller)
     for (int q = 0; q < 3; ++q)
     {
       const double u = a->GetComponent(c, q), v = b->GetComponent(c, q);
-      worstCell = std::max(worstCell, std::abs(u - v) / std::max({ std::abs(u), std::abs(v), 1e-9 }));
+      worstCell =
+        std::max(worstCell, std::abs(u - v) / std::max({ std::abs(u), std::abs(v), 1e-9 }));
     }
   }
   // The atlas on this rank's piece: whole, equal to the serial atlas.
   int sizeA[2] = { 0, 0 }, sizeB[2] = { 0, 0 };
   vtkFloatArray* atlas = vtkVirtualLightField::GetAttachedAtlas(piece, sizeA);
   vtkFloatArray* serialAtlas = vtkVirtualLightField::GetAttachedAtlas(serialOut, sizeB);
-  double worstAtlas = atlas && serialAtlas && sizeA[0] == sizeB[0] && sizeA[1] == sizeB[1] ? 0.0
-                                                                                           : 1e30;
+  double worstAtlas =
+    atlas && serialAtlas && sizeA[0] == sizeB[0] && sizeA[1] == sizeB[1] ? 0.0 : 1e30;
   for (vtkIdType i = 0; worstAtlas < 1e30 && i < atlas->GetNumberOfValues(); ++i)
   {
     const double u = atlas->GetValue(i), v = serialAtlas->GetValue(i);
-    worstAtlas = std::max(worstAtlas, std::abs(u - v) / std::max({ std::abs(u), std::abs(v), 1e-9 }));
+    worstAtlas =
+      std::max(worstAtlas, std::abs(u - v) / std::max({ std::abs(u), std::abs(v), 1e-9 }));
   }
   std::printf("rank %d of %d: output pieces vs serial: cell radiance worst %.3g, atlas (%dx%d) "
               "worst %.3g\n",
@@ -258,7 +260,7 @@ int Run(vtkMultiProcessController* controller)
     vlf::GatherSettings settings;
     settings.UseCache = false;
     settings.ObjectOcclusion = false;
-    vlf::ObjectGatherer alone(*core);          // no reducer: this rank's directions only
+    vlf::ObjectGatherer alone(*core); // no reducer: this rank's directions only
     vlf::ControllerReducer reducer(controller);
     vlf::ObjectGatherer together(*core, &reducer);
     const glm::mat4 toUnit = vlf::WorldToUnitSphere(*core);
@@ -269,8 +271,9 @@ int Run(vtkMultiProcessController* controller)
     {
       for (int c = 0; c < 3; ++c)
       {
-        worst = std::max(worst, static_cast<double>(std::abs(partial[i][c] - summed[i][c]) /
-                                  std::max(1e-6f, std::abs(summed[i][c]))));
+        worst = std::max(worst,
+          static_cast<double>(
+            std::abs(partial[i][c] - summed[i][c]) / std::max(1e-6f, std::abs(summed[i][c]))));
       }
     }
     std::printf("rank %d of %d: one rank's directions alone: worst relative difference %.3g\n",

@@ -66,8 +66,8 @@ TEST(Walkthrough, HiddenSurfaceIsLeftOutInEveryModeAndNothingElse)
       for (int i = 0; i < Size; ++i)
       {
         const std::size_t p = static_cast<std::size_t>(j) * Size + i;
-        const float shown = std::max(
-          all.Display[p].x, std::max(all.Display[p].y, all.Display[p].z));
+        const float shown =
+          std::max(all.Display[p].x, std::max(all.Display[p].y, all.Display[p].z));
         const glm::vec3 d = glm::abs(hidden.Display[p] - all.Display[p]);
         if (uniform(i, j, 1) && shown > 0.0f)
         {

@@ -268,7 +268,8 @@ TEST(Walkthrough, FieldFromTheVirtualLightFieldFilter)
   viewer.Actor->SetLightFieldFilter(filter);
   const Images fromFilter = viewer.Render(vtkLightFieldActor::Progressive);
   ASSERT_NE(vtkLightFieldActorCore::GetLightField(viewer.Actor), nullptr);
-  EXPECT_EQ(vtkLightFieldActorCore::GetLightField(viewer.Actor), vtkVirtualLightFieldCore::GetLightField(filter));
+  EXPECT_EQ(vtkLightFieldActorCore::GetLightField(viewer.Actor),
+    vtkVirtualLightFieldCore::GetLightField(filter));
   std::size_t lit = 0;
   for (const glm::vec3& d : fromFilter.Display)
   {
@@ -277,7 +278,8 @@ TEST(Walkthrough, FieldFromTheVirtualLightFieldFilter)
   std::cout << "field from the filter: " << lit << " of " << fromFilter.Display.size()
             << " pixels lit\n";
   EXPECT_GT(lit, fromFilter.Display.size() * 3 / 4);
-  vtkLightFieldActorCore::SetLightField(viewer.Actor, vtkVirtualLightFieldCore::GetLightField(filter));
+  vtkLightFieldActorCore::SetLightField(
+    viewer.Actor, vtkVirtualLightFieldCore::GetLightField(filter));
   const Images direct = viewer.Render(vtkLightFieldActor::Progressive);
   EXPECT_EQ(direct.Display, fromFilter.Display);
 

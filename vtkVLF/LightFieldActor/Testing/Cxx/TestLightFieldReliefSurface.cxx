@@ -6,12 +6,12 @@
 // surface's world area and radiance; bad input against its messages.
 #include "vtkLightFieldReliefSurface.h"
 
+#include "vtkCornellBoxSource.h"
+#include "vtkIrradianceProbesTexture.h" // the visible share's array names
 #include "vtkLightFieldActor.h"
 #include "vtkLightFieldActorCore.h"
 #include "vtkLightFieldReliefSurfaceCore.h"
-#include "vtkCornellBoxSource.h"
-#include "vtkIrradianceProbesTexture.h" // the visible share's array names
-#include "vtkTextureObject.h"           // for vtkIrradianceProbesTexture's inline getter
+#include "vtkTextureObject.h" // for vtkIrradianceProbesTexture's inline getter
 #include "vtkVirtualLightField.h"
 #include "vtkVirtualLightFieldCore.h"
 
@@ -64,9 +64,12 @@ bool PointAtTexture(vtkPolyData* poly, double u, double v, glm::dvec3& point)
       poly->GetPoint(ids[k], x);
       p[k] = glm::dvec3(x[0], x[1], x[2]);
     }
-    const double d = (t[1][0] - t[0][0]) * (t[2][1] - t[0][1]) - (t[2][0] - t[0][0]) * (t[1][1] - t[0][1]);
-    const double b1 = ((u - t[0][0]) * (t[2][1] - t[0][1]) - (t[2][0] - t[0][0]) * (v - t[0][1])) / d;
-    const double b2 = ((t[1][0] - t[0][0]) * (v - t[0][1]) - (u - t[0][0]) * (t[1][1] - t[0][1])) / d;
+    const double d =
+      (t[1][0] - t[0][0]) * (t[2][1] - t[0][1]) - (t[2][0] - t[0][0]) * (t[1][1] - t[0][1]);
+    const double b1 =
+      ((u - t[0][0]) * (t[2][1] - t[0][1]) - (t[2][0] - t[0][0]) * (v - t[0][1])) / d;
+    const double b2 =
+      ((t[1][0] - t[0][0]) * (v - t[0][1]) - (u - t[0][0]) * (t[1][1] - t[0][1])) / d;
     if (b1 >= -1e-9 && b2 >= -1e-9 && b1 + b2 <= 1.0 + 1e-9)
     {
       point = p[0] + b1 * (p[1] - p[0]) + b2 * (p[2] - p[0]);
@@ -133,8 +136,7 @@ double WorstProbeError(ReliefSurfaceFixture& f, bool transposed, bool emission)
     {
       glm::dvec3 world;
       EXPECT_TRUE(PointAtTexture(poly, (i + 0.5) / n, (j + 0.5) / n, world));
-      const glm::vec3 unit =
-        vlf::ToUnit(f.Field, glm::vec3(world)) + 1e-3f * glm::vec3(normal);
+      const glm::vec3 unit = vlf::ToUnit(f.Field, glm::vec3(world)) + 1e-3f * glm::vec3(normal);
       const auto samples = vlf::IncidentRadianceSamples(f.Field, unit, options);
       for (const glm::dvec3& m : normals)
       {
@@ -244,8 +246,8 @@ TEST(LightFieldReliefSurface, PolygonsCarryThePlanesTextureCoordinatesInWorldCoo
   double x[3], nrm[3];
   poly->GetPoint(0, x);
   poly->GetPointData()->GetNormals()->GetTuple(0, nrm);
-  EXPECT_GT(glm::dot(glm::dvec3(centre) - glm::dvec3(x[0], x[1], x[2]),
-              glm::dvec3(nrm[0], nrm[1], nrm[2])),
+  EXPECT_GT(
+    glm::dot(glm::dvec3(centre) - glm::dvec3(x[0], x[1], x[2]), glm::dvec3(nrm[0], nrm[1], nrm[2])),
     0.0);
 }
 
@@ -292,8 +294,8 @@ TEST(LightFieldReliefSurface, BadInputIsReported)
 {
   {
     ReliefSurfaceFixture f("wall", 1);
-    EXPECT_TRUE(
-      f.Messages->HasError("its surfaces are: floor, ceiling, back, left, right, light, short, tall"))
+    EXPECT_TRUE(f.Messages->HasError(
+      "its surfaces are: floor, ceiling, back, left, right, light, short, tall"))
       << f.Messages->AllErrors();
     EXPECT_EQ(f.Surface->GetOutput()->GetNumberOfPoints(), 0);
   }

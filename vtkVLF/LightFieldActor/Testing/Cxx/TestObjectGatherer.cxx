@@ -4,8 +4,8 @@
 // sphere in place (ObjectReference.h), per subdivision level and direction count, with the
 // negative test without occlusion; the weights and normalisation of the irradiance against their
 // formula.
-#include "MathConstants.h"
 #include "Lookup.h"
+#include "MathConstants.h"
 #include "ObjectGatherer.h"
 #include "ObjectReference.h"
 #include "PatchComparison.h"
@@ -346,8 +346,7 @@ TEST(ObjectGatherer, ParallelGatherEqualsSerialForAnyThreadCount)
     settings.Directions = sampling;
     settings.Threads = 1;
     ObjectGatherer serialGatherer(field);
-    const ShadedObject serial =
-      serialGatherer.Gather(TestSphere(), Placement(field), settings);
+    const ShadedObject serial = serialGatherer.Gather(TestSphere(), Placement(field), settings);
     ASSERT_GT(serial.GatheredPoints, 100u);
     for (const int threads : { 2, 3, 0 })
     {
@@ -360,8 +359,7 @@ TEST(ObjectGatherer, ParallelGatherEqualsSerialForAnyThreadCount)
       {
         differ += parallel.Irradiance[i] != serial.Irradiance[i] ? 1 : 0;
       }
-      EXPECT_EQ(differ, 0u) << "threads " << threads << ", sampling "
-                            << static_cast<int>(sampling);
+      EXPECT_EQ(differ, 0u) << "threads " << threads << ", sampling " << static_cast<int>(sampling);
       EXPECT_EQ(parallel.GatheredPoints, serial.GatheredPoints);
     }
   }
@@ -511,8 +509,8 @@ TEST(ObjectGatherer, IrradianceAppliesSolidAngleWeightsAndNormalisation)
     {
       // Points on the test sphere (where the gather runs), facing out in 16 directions.
       const float theta = 0.4f + 0.7f * b, phi = 1.57f * a + 0.3f * b;
-      const glm::vec3 n(std::sin(theta) * std::cos(phi), std::cos(theta),
-        std::sin(theta) * std::sin(phi));
+      const glm::vec3 n(
+        std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi));
       const glm::vec3 p = ToUnit(field, SphereCentre + SphereRadius * n);
       glm::dvec3 weighted(0.0), unweighted(0.0);
       double total = 0.0, totalUniform = 0.0;
@@ -532,8 +530,8 @@ TEST(ObjectGatherer, IrradianceAppliesSolidAngleWeightsAndNormalisation)
       const glm::dvec3 expected = weighted * (Pi<double> / total);
       const glm::dvec3 expectedUnweighted = unweighted * (Pi<double> / totalUniform);
       const glm::dvec3 got(lookup.Irradiance(p, n));
-      const glm::dvec3 gotRaw(lookup.Irradiance(p, n, GatherOptions{ CellInterpolation::Bilinear,
-        true, false, true }));
+      const glm::dvec3 gotRaw(
+        lookup.Irradiance(p, n, GatherOptions{ CellInterpolation::Bilinear, true, false, true }));
       const double scale = expected.x + expected.y + expected.z;
       ASSERT_GT(scale, 0.0) << "got " << got.x + got.y + got.z << " at point " << 4 * b + a;
       auto relative = [scale](const glm::dvec3& x, const glm::dvec3& y)
@@ -551,8 +549,7 @@ TEST(ObjectGatherer, IrradianceAppliesSolidAngleWeightsAndNormalisation)
   std::printf("[ figures  ] 2049 directions: solid angles %.3e to %.3e sr (ratio %.3f); 16 "
               "sphere points: Irradiance vs the weighted formula %.2e, vs the unweighted one %.2e; "
               "weights change it by up to %.2e, the normalisation by %.2e\n",
-    lowest, highest, highest / lowest, worst, worstUnweighted, weightsEffect,
-    normalisationEffect);
+    lowest, highest, highest / lowest, worst, worstUnweighted, weightsEffect, normalisationEffect);
   constexpr double Tolerance = 1e-5; // float sums in another order
   EXPECT_LT(worst, Tolerance);
   // The check discriminates: each factor moves the result by well over the tolerance.

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The movable object beyond the first mirror bounce, and its shadows seen in mirrors (Wither
 // 2005 ch. 4), in the tracer's four qualities. References are independent ray casts of one merged
-// triangle scene (the field's triangles and the placed object, no instancing, no WalkthroughTracer):
+// triangle scene (the field's triangles and the placed object, no instancing, no
+// WalkthroughTracer):
 // - two facing mirrors (the Cornell box's red and green walls): the pixels whose mirror chain
 //   meets the object at the second (or later) bounce must show the object in the field-lookup
 //   qualities too (raytrace, progressive while moving), not only in the traced ones;

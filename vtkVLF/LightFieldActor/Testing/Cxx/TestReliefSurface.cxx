@@ -5,7 +5,7 @@
 
 #include "LightField.h"
 #include "PatchComparison.h" // ToWorld
-#include "SurfaceRelief.h" // SurfacePlaneOf
+#include "SurfaceRelief.h"   // SurfacePlaneOf
 #include "WalkthroughTestFields.h"
 
 #include <glm/geometric.hpp>
@@ -96,8 +96,8 @@ TEST(ReliefSurface, RefusesWhatCannotCarryARelief)
   const vlf::ReliefSurface back = vlf::FindReliefSurface(plain, "back");
   EXPECT_THROW(vlf::ReliefSurfaceProbes(plain, back, 0, 2), std::invalid_argument);
   // A stop asked through progress.
-  EXPECT_THROW(vlf::ReliefSurfaceProbes(plain, back, 2, 2, [](double) { return false; }),
-    vlf::AbortedError);
+  EXPECT_THROW(
+    vlf::ReliefSurfaceProbes(plain, back, 2, 2, [](double) { return false; }), vlf::AbortedError);
 }
 
 TEST(ReliefSurface, TrianglesOfItsOwnOnTheBackWallAreTheBackWall)

@@ -46,8 +46,8 @@ TEST(WalkthroughObject, EmbreeInstanceHitsMovesAndClears)
   EXPECT_NEAR(hit.T, 9.5f, 1e-4f); // the cube's top face at z = 0.5
   // The barycentrics give the hit point on the object's own triangle.
   const glm::uvec3 t = cube.Triangles[hit.ObjectTriangle];
-  const glm::vec3 p =
-    (1.0f - hit.U - hit.V) * cube.Positions[t.x] + hit.U * cube.Positions[t.y] + hit.V * cube.Positions[t.z];
+  const glm::vec3 p = (1.0f - hit.U - hit.V) * cube.Positions[t.x] + hit.U * cube.Positions[t.y] +
+    hit.V * cube.Positions[t.z];
   EXPECT_NEAR(p.x, 0.0f, 1e-4f);
   EXPECT_NEAR(p.y, 0.0f, 1e-4f);
   EXPECT_NEAR(p.z, 0.5f, 1e-4f);
