@@ -102,6 +102,20 @@ HeightField Ridges()
   return HeightField(n, n, depth);
 }
 
+// One probe of uniform radiance (L00 = 2 sqrt(pi) L) and a grey albedo.
+ReliefLighting UniformLighting(double radiance, double albedo)
+{
+  ReliefLighting lighting;
+  mesolight::SH9 sh;
+  for (int c = 0; c < 3; ++c)
+  {
+    sh.L[0][c] = 2.0 * std::sqrt(mesolight::Pi<double>) * radiance;
+  }
+  lighting.Probes = { sh };
+  lighting.Albedo = glm::dvec3(albedo);
+  return lighting;
+}
+
 // A unit square in z = 0 facing +z, relief 0.15 deep.
 ReliefFrame Square()
 {
@@ -396,14 +410,7 @@ double GrooveError(
   ReliefFrame frame = Square();
   frame.DepthScale = depthScale;
   const double radiance = 1.0, albedo = 0.7;
-  ReliefLighting lighting;
-  mesolight::SH9 sh; // uniform radiance: L00 = 2 sqrt(pi) L
-  for (int c = 0; c < 3; ++c)
-  {
-    sh.L[0][c] = 2.0 * std::sqrt(mesolight::Pi<double>) * radiance;
-  }
-  lighting.Probes = { sh };
-  lighting.Albedo = glm::dvec3(albedo);
+  ReliefLighting lighting = UniformLighting(radiance, albedo);
   lighting.InterReflection = model;
   const glm::dvec3 eye(0.5, 0.5, 2.0);
   unsigned state = 12345u;
@@ -490,14 +497,7 @@ void WalledSlotErrors(double& seen, double& own, double& seenRatio, double& ownR
   ReliefFrame frame = Square();
   frame.DepthScale = 0.2;
   const double radiance = 1.0, albedo = 0.7;
-  ReliefLighting lighting;
-  mesolight::SH9 sh; // uniform radiance: L00 = 2 sqrt(pi) L
-  for (int c = 0; c < 3; ++c)
-  {
-    sh.L[0][c] = 2.0 * std::sqrt(mesolight::Pi<double>) * radiance;
-  }
-  lighting.Probes = { sh };
-  lighting.Albedo = glm::dvec3(albedo);
+  ReliefLighting lighting = UniformLighting(radiance, albedo);
   const glm::dvec3 eye(0.5, 0.6, 1.0);
   const double flat = mesolight::Pi<double> * radiance; // the flat wall's irradiance
   unsigned state = 4321u;

@@ -34,6 +34,7 @@
 #include <vtkPlaneSource.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
@@ -93,6 +94,30 @@ glm::dvec3 ProbeIrradiance(vtkImageData* probes, int i, int j, const glm::dvec3&
   double e[3];
   IrradianceSH9(sh, normal, e);
   return glm::dvec3(e[0], e[1], e[2]);
+}
+
+// The Cornell box's field as a pipeline, coarse enough for a unit test (33 directions, 8 x 8
+// rays, one iteration).
+vtkSmartPointer<vtkVirtualLightField> SmallCornellField()
+{
+  vtkNew<vtkCornellBoxSource> box;
+  auto field = vtkSmartPointer<vtkVirtualLightField>::New();
+  field->SetInputConnection(box->GetOutputPort());
+  field->SetDirections(33);
+  field->SetRaysPerSide(8);
+  field->SetIterations(1);
+  return field;
+}
+
+// A 380 x 380 patch parallel to the back wall (z = 559.2) at depth z.
+vtkSmartPointer<vtkPolyData> BackWallPatch(double z)
+{
+  vtkNew<vtkPlaneSource> patch;
+  patch->SetOrigin(90.0, 90.0, z);
+  patch->SetPoint1(90.0, 470.0, z);
+  patch->SetPoint2(470.0, 90.0, z);
+  patch->Update();
+  return patch->GetOutput();
 }
 
 struct ReliefSurfaceFixture
@@ -362,12 +387,7 @@ TEST(LightFieldReliefSurface, ProbesAreRecomputedForANewFieldOnly)
 // surface names, so no surface is found and the message says why and what to do.
 TEST(LightFieldReliefSurface, AVirtualLightFieldFiltersSceneHasNoNames)
 {
-  vtkNew<vtkCornellBoxSource> box;
-  vtkNew<vtkVirtualLightField> field;
-  field->SetInputConnection(box->GetOutputPort());
-  field->SetDirections(33);
-  field->SetRaysPerSide(8);
-  field->SetIterations(1);
+  vtkSmartPointer<vtkVirtualLightField> field = SmallCornellField();
   vtkNew<vtkLightFieldReliefSurface> surface;
   vtkNew<mesolight_test::MessageCapture> messages;
   messages->Watch(surface);
@@ -385,25 +405,16 @@ TEST(LightFieldReliefSurface, AVirtualLightFieldFiltersSceneHasNoNames)
 // get none.
 TEST(LightFieldReliefSurface, AMountedPatchLimitsItsDepthHalfwayToTheWall)
 {
-  vtkNew<vtkCornellBoxSource> box;
-  vtkNew<vtkVirtualLightField> field;
-  field->SetInputConnection(box->GetOutputPort());
-  field->SetDirections(33);
-  field->SetRaysPerSide(8);
-  field->SetIterations(1);
+  vtkSmartPointer<vtkVirtualLightField> field = SmallCornellField();
   field->FinalGatherOff();
   const auto limitOf = [&](double z, double origin[3], double normal[3])
   {
-    vtkNew<vtkPlaneSource> patch;
-    patch->SetOrigin(90.0, 90.0, z);
-    patch->SetPoint1(90.0, 470.0, z);
-    patch->SetPoint2(470.0, 90.0, z);
-    patch->Update();
+    vtkSmartPointer<vtkPolyData> patch = BackWallPatch(z);
     vtkNew<vtkLightFieldReliefSurface> surface;
     vtkNew<mesolight_test::MessageCapture> messages;
     messages->Watch(surface);
     surface->SetLightFieldConnection(field->GetOutputPort());
-    surface->SetSurfaceData(patch->GetOutput());
+    surface->SetSurfaceData(patch);
     surface->SetProbesPerSide(2);
     surface->Update();
     EXPECT_TRUE(messages->Errors.empty()) << messages->AllErrors();
@@ -454,23 +465,14 @@ vtkSmartPointer<vtkImageData> GroovedTexture(int n, int cell)
 // without depth is an error that keeps the probes.
 TEST(LightFieldReliefSurface, ReliefOcclusionAddsTheVisibleShareMapAndLightVisibility)
 {
-  vtkNew<vtkCornellBoxSource> box;
-  vtkNew<vtkVirtualLightField> field;
-  field->SetInputConnection(box->GetOutputPort());
-  field->SetDirections(33);
-  field->SetRaysPerSide(8);
-  field->SetIterations(1);
+  vtkSmartPointer<vtkVirtualLightField> field = SmallCornellField();
   field->FinalGatherOff();
-  vtkNew<vtkPlaneSource> patch;
-  patch->SetOrigin(90.0, 90.0, 558.0);
-  patch->SetPoint1(90.0, 470.0, 558.0);
-  patch->SetPoint2(470.0, 90.0, 558.0);
-  patch->Update();
+  vtkSmartPointer<vtkPolyData> patch = BackWallPatch(558.0);
   vtkNew<vtkLightFieldReliefSurface> surface;
   vtkNew<mesolight_test::MessageCapture> messages;
   messages->Watch(surface);
   surface->SetLightFieldConnection(field->GetOutputPort());
-  surface->SetSurfaceData(patch->GetOutput());
+  surface->SetSurfaceData(patch);
   surface->SetProbesPerSide(2);
   surface->Update();
   vtkImageData* probes = surface->GetProbesOutput();
@@ -548,7 +550,7 @@ TEST(LightFieldReliefSurface, ReliefOcclusionAddsTheVisibleShareMapAndLightVisib
   EXPECT_LT(share->GetComponent(static_cast<vtkIdType>(4) * n + cell, 0), groove + 1e-9);
   // A new surface: the probes again, the map kept (same frame, texture and depth scale).
   vtkNew<vtkPolyData> copy;
-  copy->DeepCopy(patch->GetOutput());
+  copy->DeepCopy(patch);
   surface->SetSurfaceData(copy);
   surface->Update();
   EXPECT_EQ(surface->GetProbeComputations(), 3);
