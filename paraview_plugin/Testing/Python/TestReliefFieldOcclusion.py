@@ -33,7 +33,7 @@ from paraview import servermanager  # noqa: E402
 from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy  # noqa: E402
 
 SIZE = 200
-EYE, FOCAL, VIEW_ANGLE = [278.0, 273.0, -800.0], [278.0, 273.0, 0.0], 39.3077
+EYE, FOCAL, VIEW_ANGLE = t.CORNELL_EYE, t.CORNELL_FOCAL, t.CORNELL_VIEW_ANGLE
 PATCH_Z = 558.0  # 1.2 mm in front of the back wall (z = 559.2)
 # The published box's back wall (millimetres): not a rectangle.
 BACK = [[549.6, 0.0], [0.0, 0.0], [0.0, 548.8], [556.0, 548.8]]
@@ -77,15 +77,7 @@ box = pvs.MesolightCornellBox()
 field = pvs.MesolightVirtualLightField(Input=box, Directions=513, RaysPerSide=32, Iterations=4,
                                        FinalGather=0, SnapshotFileName=snapshot,
                                        ResumeFromSnapshot=1)
-view = pvs.CreateView("RenderView")
-view.ViewSize = [SIZE, SIZE]
-view.OrientationAxesVisibility = 0
-view.UseColorPaletteForBackground = 0
-view.Background = [0.0, 0.0, 0.0]
-view.UseFXAA = 0
-view.CameraPosition, view.CameraFocalPoint = EYE, FOCAL
-view.CameraViewUp = [0.0, 1.0, 0.0]
-view.CameraViewAngle = VIEW_ANGLE
+view = t.make_cornell_view(SIZE)
 scene = pvs.Show(field, view)
 scene.LightFieldAutoExposure = 0
 scene.LightFieldToneMapping = "Clamp"
@@ -93,13 +85,7 @@ scene.Exposure = 1.0
 
 
 def capture(name):
-    view.CameraPosition, view.CameraFocalPoint = EYE, FOCAL
-    view.CameraViewUp = [0.0, 1.0, 0.0]
-    view.CameraViewAngle = VIEW_ANGLE
-    pvs.Render(view)
-    path = os.path.join(out, name)
-    pvs.SaveScreenshot(path, view, ImageResolution=[SIZE, SIZE], TransparentBackground=0)
-    return t.capture_file(path)
+    return t.cornell_capture(view, os.path.join(out, name))
 
 
 capture("pv-occlusion-scene.png")  # propagates the field and writes the snapshot

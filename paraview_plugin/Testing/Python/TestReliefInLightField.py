@@ -30,7 +30,6 @@ from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: E402
 from vtkmodules.vtkCommonCore import vtkCommand, vtkOutputWindow  # noqa: E402
 
 SIZE = 300
-EYE, FOCAL, VIEW_ANGLE = [278.0, 273.0, -800.0], [278.0, 273.0, 0.0], 39.3077
 BACK_Z = 559.2     # the published box's back wall (millimetres, facing -z)
 PATCH_Z = 558.0    # the patch 1.2 mm in front of it (within the wall's plane tolerance)
 MAX_MEAN_ERROR = 6.0  # 8-bit levels, relief vs the wall's own radiance over the patch
@@ -45,22 +44,11 @@ box = pvs.MesolightCornellBox()
 # nothing of its depth against the flat one (the measure below fails then).
 field = pvs.MesolightVirtualLightField(Input=box, Directions=513, RaysPerSide=32, Iterations=4)
 
-view = pvs.CreateView("RenderView")
-view.ViewSize = [SIZE, SIZE]
-view.OrientationAxesVisibility = 0
-view.UseColorPaletteForBackground = 0
-view.Background = [0.0, 0.0, 0.0]
-view.UseFXAA = 0
+view = t.make_cornell_view(SIZE)
 
 
 def capture(name):
-    view.CameraPosition, view.CameraFocalPoint = EYE, FOCAL
-    view.CameraViewUp = [0.0, 1.0, 0.0]
-    view.CameraViewAngle = VIEW_ANGLE
-    pvs.Render(view)
-    path = os.path.join(out, name)
-    pvs.SaveScreenshot(path, view, ImageResolution=[SIZE, SIZE], TransparentBackground=0)
-    return t.capture_file(path)
+    return t.cornell_capture(view, os.path.join(out, name))
 
 
 scene = pvs.Show(field, view)

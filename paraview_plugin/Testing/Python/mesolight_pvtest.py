@@ -45,6 +45,31 @@ def make_view():
     return view
 
 
+# The tool's default camera on the Cornell box (`mesolight vlf render`; millimetres).
+CORNELL_EYE, CORNELL_FOCAL, CORNELL_VIEW_ANGLE = [278.0, 273.0, -800.0], [278.0, 273.0, 0.0], 39.3077
+
+
+def make_cornell_view(size):
+    """A size x size view on black, without FXAA, for images compared with the tool's."""
+    view = pvs.CreateView("RenderView")
+    view.ViewSize = [size, size]
+    view.OrientationAxesVisibility = 0
+    view.UseColorPaletteForBackground = 0
+    view.Background = [0.0, 0.0, 0.0]
+    view.UseFXAA = 0
+    return view
+
+
+def cornell_capture(view, path):
+    """Renders from the tool's Cornell box camera, saves a PNG and returns it (capture_file)."""
+    view.CameraPosition, view.CameraFocalPoint = CORNELL_EYE, CORNELL_FOCAL
+    view.CameraViewUp = [0.0, 1.0, 0.0]
+    view.CameraViewAngle = CORNELL_VIEW_ANGLE
+    pvs.Render(view)
+    pvs.SaveScreenshot(path, view, ImageResolution=list(view.ViewSize), TransparentBackground=0)
+    return capture_file(path)
+
+
 def set_camera(view):
     view.CameraPosition = [0.5, -1.0, 1.5]
     view.CameraFocalPoint = [0.5, 0.45, 0.0]
