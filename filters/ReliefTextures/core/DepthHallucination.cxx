@@ -338,8 +338,118 @@ int HallucinationAverageLayers(int w, int h, float baseSigma)
   return layers;
 }
 
+//------------------------------------------------------------------------------
+HallucinationFeatureScale MeasureHallucinationFeatureScale(
+  const std::vector<float>& image, int w, int h, float baseSigma, int threads)
+{
+  HallucinationFeatureScale scale;
+  const std::size_t n =
+    static_cast<std::size_t>(std::max(0, w)) * static_cast<std::size_t>(std::max(0, h));
+  if (n == 0 || image.size() != n || !(baseSigma > 0.0f) || std::min(w, h) < 2)
+  {
+    return scale;
+  }
+  double mean = 0.0;
+  for (const float v : image)
+  {
+    mean += v;
+  }
+  mean /= static_cast<double>(n);
+  double variance = 0.0;
+  for (const float v : image)
+  {
+    variance += (v - mean) * (v - mean);
+  }
+  variance /= static_cast<double>(n);
+  if (!(variance > 1e-12 * std::max(1.0, mean * mean)))
+  {
+    return scale; // uniform: no feature to size, the scale average (which stays flat)
+  }
+  // The widest count allowed: its sigma at most half the shorter side. Shifts beyond the length
+  // that already calls for it change nothing, so the search stops there (the cost stays a few
+  // passes over the image even on large photographs).
+  const int side = std::min(w, h);
+  int widest = 1;
+  while (widest < 12 && baseSigma * std::ldexp(1.0f, widest) <= 0.5f * static_cast<float>(side))
+  {
+    ++widest;
+  }
+  const float widestSigma = baseSigma * std::ldexp(1.0f, widest - 1);
+  const int longestShift = std::max(static_cast<int>(std::ceil(std::max(
+                                      HallucinationBroadCorrelationLength,
+                                      2.0f * widestSigma / HallucinationBroadSigmaPerLength))) +
+                                      1,
+    2);
+  const int maxShift = std::min(longestShift, side / 2);
+  // Autocovariance at shift s, horizontal and vertical pairs pooled; per-row sums over a fixed
+  // partition, added in order (the same result however the rows are split).
+  const std::size_t W = static_cast<std::size_t>(w);
+  double previous = 1.0;
+  for (int s = 1; s <= maxShift; ++s)
+  {
+    std::vector<double> rowSums(static_cast<std::size_t>(h), 0.0);
+    ParallelFor(
+      0, static_cast<std::size_t>(h), 16,
+      [&](std::size_t begin, std::size_t end)
+      {
+        for (std::size_t j = begin; j < end; ++j)
+        {
+          const float* row = image.data() + j * W;
+          double sum = 0.0;
+          for (int i = 0; i + s < w; ++i)
+          {
+            sum += (row[i] - mean) * (row[i + s] - mean);
+          }
+          if (j + static_cast<std::size_t>(s) < static_cast<std::size_t>(h))
+          {
+            const float* below = row + static_cast<std::size_t>(s) * W;
+            for (int i = 0; i < w; ++i)
+            {
+              sum += (row[i] - mean) * (below[i] - mean);
+            }
+          }
+          rowSums[j] = sum;
+        }
+      },
+      threads);
+    double sum = 0.0;
+    for (const double r : rowSums)
+    {
+      sum += r;
+    }
+    const double pairs = static_cast<double>(h) * (w - s) + static_cast<double>(h - s) * w;
+    const double correlation = sum / pairs / variance;
+    if (correlation < 0.5)
+    {
+      scale.CorrelationLengthTexels =
+        static_cast<float>(s - 1 + (previous - 0.5) / (previous - correlation));
+      break;
+    }
+    previous = correlation;
+    scale.CorrelationLengthTexels = static_cast<float>(s); // still correlated at the last shift
+  }
+  if (scale.CorrelationLengthTexels >= HallucinationBroadCorrelationLength)
+  {
+    // The octave nearest to HallucinationBroadSigmaPerLength correlation lengths.
+    const float sigma = HallucinationBroadSigmaPerLength * scale.CorrelationLengthTexels;
+    const int layers = 1 + static_cast<int>(std::lround(std::log2(sigma / baseSigma)));
+    scale.Layers = std::clamp(layers, 1, widest);
+  }
+  return scale;
+}
+
 namespace
 {
+// Layers -2: the count the feature size calls for (0: the scale average). The feature size is
+// measured on the ratio image; the shading model keeps its scale average.
+int FeatureLayers(
+  const std::vector<float>& image, int w, int h, const HallucinationSettings& settings)
+{
+  return settings.Model == HallucinationModel::Ratio
+    ? MeasureHallucinationFeatureScale(image, w, h, settings.BaseSigma, settings.Threads).Layers
+    : 0;
+}
+
 // Layer k's depth (texels) from the ratio r = L_{k-1} / L_k by the valley and hill laws.
 float LayerDepth(float r, float sigma, const HallucinationSettings& settings)
 {
@@ -377,8 +487,11 @@ std::vector<float> DepthFromShading(const std::vector<float>& shading, int w, in
   {
     return {};
   }
-  const bool average = settings.Layers == 0;
-  const int layers = settings.Layers > 0 ? settings.Layers
+  const int requested = settings.Layers == HallucinationFeatureLayers
+    ? FeatureLayers(shading, w, h, settings)
+    : settings.Layers;
+  const bool average = requested == 0;
+  const int layers = requested > 0 ? requested
     : average
     ? HallucinationAverageLayers(w, h, settings.BaseSigma)
     : ChooseHallucinationLayers(shading, w, h, settings.BaseSigma, settings.Threads).Layers;
@@ -552,13 +665,14 @@ HallucinationResult HallucinateDepth(const RgbImage& diffuse, const RgbImage& fl
         (!AllFinite(diffuse) ? "diffuse" : (!AllFinite(flash) ? "flash" : "calibration")) +
         " image has NaN or infinite pixels.");
   }
-  if (settings.Layers < -1 || settings.Layers > 12 || !(settings.BaseSigma > 0.0f) ||
+  if (settings.Layers < HallucinationFeatureLayers || settings.Layers > 12 || !(settings.BaseSigma > 0.0f) ||
     !(settings.DepthScale > 0.0f) || !(settings.ValleyWeight >= 0.0f) ||
     !(settings.HillWeight >= 0.0f) || !(settings.ResidualWeight >= 0.0f) ||
     !std::isfinite(settings.DepthScale) || !std::isfinite(settings.ResidualWeight))
   {
     Fail(HallucinationStatus::BadSettings,
-      "Settings out of range (layers 0 = scale average, -1 = automatic count or 1..12, base "
+      "Settings out of range (layers -2 = from the feature size, 0 = scale average, -1 = "
+      "automatic count or 1..12, base "
       "sigma > 0, depth scale > 0, "
       "weights >= 0).");
   }
@@ -739,6 +853,21 @@ HallucinationResult HallucinateDepth(const RgbImage& diffuse, const RgbImage& fl
   // 3. Depth from the layers: by default the average over every layer count the photograph
   // holds (DepthFromShading); -1: the count the octave energies choose; or fixed.
   HallucinationSettings used = settings;
+  if (used.Layers == HallucinationFeatureLayers)
+  {
+    // The feature size of what the layers read: fine, the scale average; broad, one wide count.
+    if (settings.Model == HallucinationModel::Ratio)
+    {
+      const HallucinationFeatureScale scale =
+        MeasureHallucinationFeatureScale(layerInput, w, h, settings.BaseSigma, settings.Threads);
+      used.Layers = scale.Layers;
+      result.CorrelationLengthTexels = scale.CorrelationLengthTexels;
+    }
+    else
+    {
+      used.Layers = 0;
+    }
+  }
   if (used.Layers == -1)
   {
     const HallucinationScale scale =
@@ -746,6 +875,7 @@ HallucinationResult HallucinateDepth(const RgbImage& diffuse, const RgbImage& fl
     used.Layers = scale.Layers;
     result.FeatureSizeTexels = scale.FeatureSizeTexels;
   }
+  result.Averaged = used.Layers == 0;
   result.Layers =
     used.Layers == 0 ? HallucinationAverageLayers(w, h, settings.BaseSigma) : used.Layers;
   if (!ReportProgress(progress, 0.1))

@@ -89,12 +89,15 @@ enum class HallucinationModel
 struct HallucinationSettings
 {
   HallucinationModel Model = HallucinationModel::Ratio;
-  /// Scale layers (1..12); 0 (the default): the scale average, the model with 1, 2, ..., K
-  /// layers (K: every octave the photograph holds, HallucinationAverageLayers) averaged with
-  /// weights inversely proportional to each one's spread; -1: one count chosen from the
+  /// Scale layers (1..12); -2 (the default, HallucinationFeatureLayers): from the feature size
+  /// of the image the layers read (MeasureHallucinationFeatureScale): the scale average where
+  /// its features are fine, one wide count where they are broad (under
+  /// HallucinationModel::Shading: the scale average); 0: the scale average, the model with 1, 2,
+  /// ..., K layers (K: every octave the photograph holds, HallucinationAverageLayers) averaged
+  /// with weights inversely proportional to each one's spread; -1: one count chosen from the
   /// shading's octave energies (ChooseHallucinationLayers). The widest layer's sigma is
   /// BaseSigma * 2^(Layers - 1).
-  int Layers = 0;
+  int Layers = -2;
   float BaseSigma = 1.0f;    ///< sigma of the first layer, texels; doubles per layer
   float DepthScale = 1.0f;   ///< the user's depth scale: multiplies the model's depth
   float ValleyWeight = 1.0f; ///< weight of the aperture (valley) law
@@ -161,8 +164,12 @@ struct HallucinationResult
   std::vector<float> Ratio;
   std::vector<float> Depth;       ///< w x h, 0 = highest point, 1 = deepest
   float DepthRangeTexels = 0.0f;  ///< the model's depth of Depth = 1, in texel widths
-  int Layers = 0;                 ///< the layers used (settings.Layers, or the automatic choice)
+  /// The layers used (settings.Layers, the automatic choice, or the widest count averaged)
+  int Layers = 0;
   float FeatureSizeTexels = 0.0f; ///< the automatic choice's feature size (0: layers given)
+  /// Layers -2: the image's autocorrelation length, texels (MeasureHallucinationFeatureScale)
+  float CorrelationLengthTexels = 0.0f;
+  bool Averaged = false; ///< the depth is the scale average (Layers 0, or -2 on fine features)
 };
 
 /// The automatic scale: the layer count the shading's own feature size calls for.
@@ -182,6 +189,40 @@ struct HallucinationScale
  */
 MESOLIGHTRELIEFTEXTURES_EXPORT HallucinationScale ChooseHallucinationLayers(
   const std::vector<float>& shading, int w, int h, float baseSigma = 1.0f, int threads = 0);
+
+/// HallucinationSettings::Layers: the count from the feature size (the default).
+constexpr int HallucinationFeatureLayers = -2;
+
+/// The feature size of the image the layers read, and the layers it calls for.
+struct HallucinationFeatureScale
+{
+  /// The autocorrelation length: the shift (texels, interpolated) at which the image's
+  /// autocorrelation, averaged over horizontal and vertical shifts, falls to one half; 0 for a
+  /// uniform image.
+  float CorrelationLengthTexels = 0.0f;
+  /// 0: fine features, the scale average (Layers 0); otherwise the one count whose widest sigma
+  /// is HallucinationBroadSigmaPerLength times the correlation length (at most half the
+  /// photograph's shorter side).
+  int Layers = 0;
+};
+
+/// Correlation lengths from this many texels on are broad features (one wide count).
+constexpr float HallucinationBroadCorrelationLength = 3.0f;
+/// Broad features: the widest layer's sigma in correlation lengths.
+constexpr float HallucinationBroadSigmaPerLength = 32.0f;
+
+/**
+ * The scales from the image's own feature size (no true depth): its autocorrelation length
+ * (Taylor's integral scales of a random field, here the half-correlation shift). An image that
+ * decorrelates within a few texels (fine relief, texture, noise) leaves the choice among the
+ * counts to the scale average; one that stays correlated over HallucinationBroadCorrelationLength
+ * texels or more (smooth at the texel scale: broad tiles, stones, panels) gets one count, the
+ * widest sigma HallucinationBroadSigmaPerLength correlation lengths (the two constants
+ * measured on the real height maps the default was chosen on: docs/hallucination.md).
+ * Deterministic; shifts are searched no further than the broadest count needs.
+ */
+MESOLIGHTRELIEFTEXTURES_EXPORT HallucinationFeatureScale MeasureHallucinationFeatureScale(
+  const std::vector<float>& image, int w, int h, float baseSigma = 1.0f, int threads = 0);
 
 /// The layer count of the scale average (Layers 0): every octave whose sigma leaves an interior
 /// 2 sigma from the border of a w x h photograph, 1..12.
