@@ -51,11 +51,16 @@ vtkSmartPointer<vtkImageData> ToImage(const float* values, int w, int h, int com
   return image;
 }
 
-// --layers: "average" (0, the default), "auto" (-1) or a count 1..12.
+// --layers: "feature" (-2, the default), "average" (0), "auto" (-1) or a count 1..12.
 bool GetHallucinationLayers(const CommandLine& cl, int& layers, std::string& error)
 {
   const std::string value = cl.Get("--layers");
-  if (value == "average" || value.empty())
+  if (value == "feature" || value.empty())
+  {
+    layers = HallucinationFeatureLayers;
+    return true;
+  }
+  if (value == "average")
   {
     layers = 0;
     return true;
@@ -137,9 +142,10 @@ int RunHallucinateCommand(const std::vector<std::string>& args)
   cl.AddValue("--depth", "FILE", "depth map to write (float; 0 = highest, 1 = deepest)");
   cl.AddValue("--depth-scale", "K", "the user's depth scale: multiplies the model's depth", "1");
   cl.AddValue("--layers", "N",
-    "scale layers; sigma 1, 2, 4, ... texels (average: every\ncount the photograph holds, "
-    "averaged; auto: one count\nfrom the photographs' octave energies)",
-    "average");
+    "scale layers; sigma 1, 2, 4, ... texels (feature: from\nthe ratio's feature size, the "
+    "average on fine features,\none wide count on broad ones; average: every count the\n"
+    "photograph holds, averaged; auto: one count from the\nphotographs' octave energies)",
+    "feature");
   cl.AddValue("--model", "NAME",
     "ratio: layers of the diffuse/flash ratio, each count\nweighted by its agreement with it; "
     "shading: the previous\nmodel, layers of the shading, equal weights",
@@ -162,7 +168,7 @@ int RunHallucinateCommand(const std::vector<std::string>& args)
   }
   std::string error;
   double depthScale = 1.0, hill = 1.0, valley = 1.0, residual = 8.0;
-  int layers = 0; // the scale average
+  int layers = HallucinationFeatureLayers;
   HallucinationModel model = HallucinationModel::Ratio;
   if (!cl.GetDouble("--depth-scale", 1e-6, 1e6, depthScale, error) ||
     !GetHallucinationLayers(cl, layers, error) || !GetHallucinationModel(cl, model, error) ||
@@ -274,7 +280,8 @@ int RunHallucinateCommand(const std::vector<std::string>& args)
       std::cerr << "hallucinating " << size[0] << "x" << size[1] << ", "
                 << (layers > 0       ? std::to_string(layers) + " layers"
                        : layers == 0 ? "the scale average"
-                                     : "automatic layers")
+                       : layers == -1 ? "automatic layers"
+                                      : "layers from the feature size")
                 << ": at most about " << std::setprecision(2) << estimate << " s\n";
     }
   }
@@ -323,10 +330,23 @@ int RunHallucinateCommand(const std::vector<std::string>& args)
   }
   std::cout << "hallucinated " << dims[0] << "x" << dims[1] << " in " << std::setprecision(3)
             << seconds << " s" << (calibration ? "" : " (uniform flash: no --calibration)") << "\n";
-  if (layers == 0)
+  if (filter->GetLayersAveraged())
   {
     std::cout << "layers: the average of 1 to " << filter->GetLayersUsed() << " (widest sigma "
-              << (1 << (filter->GetLayersUsed() - 1)) << " texels)\n";
+              << (1 << (filter->GetLayersUsed() - 1)) << " texels)";
+    if (layers == HallucinationFeatureLayers)
+    {
+      std::cout << ", fine features (autocorrelation length " << std::setprecision(3)
+                << filter->GetCorrelationLengthTexels() << " texels)";
+    }
+    std::cout << "\n";
+  }
+  else if (layers == HallucinationFeatureLayers)
+  {
+    std::cout << "layers: " << filter->GetLayersUsed() << " (widest sigma "
+              << (1 << (filter->GetLayersUsed() - 1))
+              << " texels), broad features (autocorrelation length " << std::setprecision(3)
+              << filter->GetCorrelationLengthTexels() << " texels)\n";
   }
   else if (layers < 0)
   {
@@ -382,9 +402,9 @@ int RunHallucinationBenchmark(const std::vector<std::string>& args)
   cl.AddValue("--relief", "TEXELS", "depth of depth 1 in texels, unless given per map", "8");
   cl.AddValue("--samples", "N", "path samples per pixel", "32");
   cl.AddValue("--layers", "N",
-    "scale layers of the model (average: every count averaged;\nauto: one count from the "
-    "octave energies)",
-    "average");
+    "scale layers of the model (feature: from the ratio's\nfeature size; average: every count "
+    "averaged; auto: one\ncount from the octave energies)",
+    "feature");
   cl.AddValue("--model", "NAME",
     "ratio: layers of the diffuse/flash ratio, each count\nweighted by its agreement with it; "
     "shading: the previous\nmodel, layers of the shading, equal weights",
@@ -435,7 +455,8 @@ int RunHallucinationBenchmark(const std::vector<std::string>& args)
   std::ostringstream csv, summaryCsv;
   csv << "map,width,height,relief_texels,samples,method,layers,correlation,mae_texels,"
          "best_constant_mae_texels,depth_range_texels,albedo_relative_error,render_s,filter_s\n";
-  summaryCsv << "map,width,height,default_layers,default_correlation,"
+  summaryCsv << "map,width,height,default_layers,default_averaged,correlation_length_texels,"
+                "default_correlation,ratio_average_correlation,"
                 "previous_default_correlation,auto_layers,"
                 "feature_size_texels,auto_correlation,old_default_correlation,best_fixed_layers,"
                 "best_fixed_correlation,inverted_brightness_correlation,flash_ratio_correlation\n";
@@ -443,8 +464,9 @@ int RunHallucinationBenchmark(const std::vector<std::string>& args)
   {
     std::string Map;
     int Layers = 0, AutoLayers = 0;
-    float Feature = 0.0f;
-    double Default = 0.0, Previous = 0.0, Auto = 0.0, Best = -2.0, Five = 0.0, Brightness = 0.0,
+    bool Averaged = false;
+    float Feature = 0.0f, CorrelationLength = 0.0f;
+    double Default = 0.0, Average = 0.0, Previous = 0.0, Auto = 0.0, Best = -2.0, Five = 0.0, Brightness = 0.0,
            Ratio = 0.0;
     int BestLayers = 0;
     std::vector<double> Sweep;
@@ -610,7 +632,16 @@ int RunHallucinationBenchmark(const std::vector<std::string>& args)
     Summary summary;
     summary.Map = label;
     summary.Layers = result.Layers;
+    summary.Averaged = result.Averaged;
+    summary.CorrelationLength = result.CorrelationLengthTexels;
     {
+      // The ratio's scale average at every feature size (the default before the layers followed
+      // the feature size: --layers average).
+      HallucinationSettings average = settings;
+      average.Layers = 0;
+      average.Model = HallucinationModel::Ratio;
+      methods.push_back({ "model-ratio-average", DepthFromShading(result.Ratio, w, h, average),
+        HallucinationAverageLayers(w, h) });
       // The previous default (the shading's scale average, equal weights), the automatic layer
       // count, and the model as it was before the residual layer (five layers, none): the same
       // photographs, the same shading.
@@ -671,6 +702,10 @@ int RunHallucinationBenchmark(const std::vector<std::string>& args)
       {
         summary.Ratio = a.Correlation;
       }
+      else if (method.Name == "model-ratio-average")
+      {
+        summary.Average = a.Correlation;
+      }
       else if (method.Name == "model-shading-average")
       {
         summary.Previous = a.Correlation;
@@ -694,8 +729,9 @@ int RunHallucinationBenchmark(const std::vector<std::string>& args)
         }
       }
     }
-    summaryCsv << label << "," << w << "," << h << "," << summary.Layers << "," << summary.Default
-               << "," << summary.Previous << "," << summary.AutoLayers << "," << summary.Feature
+    summaryCsv << label << "," << w << "," << h << "," << summary.Layers << ","
+               << (summary.Averaged ? 1 : 0) << "," << summary.CorrelationLength << ","
+               << summary.Default << "," << summary.Average << "," << summary.Previous << "," << summary.AutoLayers << "," << summary.Feature
                << "," << summary.Auto << "," << summary.Five << "," << summary.BestLayers << ","
                << summary.Best << "," << summary.Brightness << "," << summary.Ratio << "\n";
     summaries.push_back(summary);
@@ -724,29 +760,35 @@ int RunHallucinationBenchmark(const std::vector<std::string>& args)
   // The summary: the default against the best fixed layer count and both naive baselines.
   std::cout << "\n"
             << std::left << std::setw(24) << "map" << std::right << std::setw(9) << "default"
-            << std::setw(7) << "(N)" << std::setw(10) << "previous" << std::setw(8) << "auto"
+            << std::setw(7) << "(N)" << std::setw(8) << "length" << std::setw(9) << "average"
+            << std::setw(10) << "previous" << std::setw(8) << "auto"
             << std::setw(5) << "(N)" << std::setw(9) << "feature" << std::setw(9) << "old"
             << std::setw(8) << "best" << std::setw(5) << "(N)" << std::setw(12) << "brightness"
             << std::setw(8) << "ratio"
             << "  default beats both\n";
-  double meanDefault = 0.0, meanPrevious = 0.0, meanAuto = 0.0, meanFive = 0.0, meanBest = 0.0;
-  int beaten = 0, previousBeaten = 0, autoBeaten = 0, fiveBeaten = 0;
+  double meanDefault = 0.0, meanAverage = 0.0, meanPrevious = 0.0, meanAuto = 0.0,
+         meanFive = 0.0, meanBest = 0.0;
+  int beaten = 0, averageBeaten = 0, previousBeaten = 0, autoBeaten = 0, fiveBeaten = 0;
   const double count = static_cast<double>(std::max<std::size_t>(1, summaries.size()));
   for (const Summary& s : summaries)
   {
     const bool beats = s.Default > s.Brightness && s.Default > s.Ratio;
     beaten += beats ? 1 : 0;
+    averageBeaten += (s.Average > s.Brightness && s.Average > s.Ratio) ? 1 : 0;
     previousBeaten += (s.Previous > s.Brightness && s.Previous > s.Ratio) ? 1 : 0;
     autoBeaten += (s.Auto > s.Brightness && s.Auto > s.Ratio) ? 1 : 0;
     fiveBeaten += (s.Five > s.Brightness && s.Five > s.Ratio) ? 1 : 0;
     meanDefault += s.Default / count;
+    meanAverage += s.Average / count;
     meanPrevious += s.Previous / count;
     meanAuto += s.Auto / count;
     meanFive += s.Five / count;
     meanBest += (s.BestLayers ? s.Best : 0.0) / count;
     std::cout << std::left << std::setw(24) << s.Map << std::right << std::fixed
-              << std::setprecision(3) << std::setw(9) << s.Default << std::setw(7) << s.Layers
-              << std::setw(10) << s.Previous << std::setw(8) << s.Auto << std::setw(5)
+              << std::setprecision(3) << std::setw(9) << s.Default << std::setw(7)
+              << (std::to_string(s.Layers) + (s.Averaged ? "a" : "")) << std::setprecision(2)
+              << std::setw(8) << s.CorrelationLength << std::setprecision(3) << std::setw(9)
+              << s.Average << std::setw(10) << s.Previous << std::setw(8) << s.Auto << std::setw(5)
               << s.AutoLayers << std::setprecision(1) << std::setw(9) << s.Feature
               << std::setprecision(3) << std::setw(9) << s.Five << std::setw(8)
               << (s.BestLayers ? s.Best : 0.0) << std::setw(5) << s.BestLayers << std::setw(12)
@@ -754,7 +796,9 @@ int RunHallucinationBenchmark(const std::vector<std::string>& args)
   }
   std::cout << std::setprecision(3) << "mean correlation: default " << meanDefault
             << " (beats both baselines on " << beaten << " of " << summaries.size()
-            << " maps), previous default (shading, equal weights) " << meanPrevious << " ("
+            << " maps), ratio average at every feature size (--layers average) " << meanAverage
+            << " (" << averageBeaten << "), shading average (--model shading) " << meanPrevious
+            << " ("
             << previousBeaten << "), automatic layers " << meanAuto << " (" << autoBeaten
             << "), old default (5 layers, no residual) " << meanFive << " (" << fiveBeaten << ")";
   if (!sweep.empty())

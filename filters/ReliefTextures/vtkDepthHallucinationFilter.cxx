@@ -181,6 +181,8 @@ int vtkDepthHallucinationFilter::RequestData(
   this->DepthRangeTexels = result.DepthRangeTexels;
   this->LayersUsed = result.Layers;
   this->FeatureSizeTexels = result.FeatureSizeTexels;
+  this->LayersAveraged = result.Averaged ? 1 : 0;
+  this->CorrelationLengthTexels = result.CorrelationLengthTexels;
 
   const vtkIdType count = static_cast<vtkIdType>(diffuse.Width) * diffuse.Height;
   for (vtkImageData* out : { albedoOut, depthOut })
@@ -225,5 +227,7 @@ void vtkDepthHallucinationFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ResidualWeight: " << this->ResidualWeight << "\n";
   os << indent << "DepthRangeTexels: " << this->DepthRangeTexels << "\n";
   os << indent << "LayersUsed: " << this->LayersUsed << "\n";
+  os << indent << "LayersAveraged: " << this->LayersAveraged << "\n";
+  os << indent << "CorrelationLengthTexels: " << this->CorrelationLengthTexels << "\n";
   os << indent << "FeatureSizeTexels: " << this->FeatureSizeTexels << "\n";
 }

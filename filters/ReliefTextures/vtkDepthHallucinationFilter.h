@@ -52,11 +52,13 @@ public:
 
   ///@{
   /**
-   * Scale layers (1..12); 0 (the default): the scale average, every layer count the
-   * photograph holds averaged (HallucinationSettings::Layers); -1: one count chosen from the
-   * photographs' octave energies. The first has sigma BaseSigma texels, each next doubles.
+   * Scale layers (1..12); -2 (the default): from the ratio image's feature size, the scale
+   * average on fine features and one wide count on broad ones (HallucinationSettings::Layers;
+   * with UseRatio 0 the scale average); 0: the scale average, every layer count the
+   * photograph holds averaged; -1: one count chosen from the photographs' octave energies.
+   * The first has sigma BaseSigma texels, each next doubles.
    */
-  vtkSetClampMacro(NumberOfLayers, int, -1, 12);
+  vtkSetClampMacro(NumberOfLayers, int, -2, 12);
   vtkGetMacro(NumberOfLayers, int);
   vtkSetClampMacro(BaseSigma, double, 0.1, 1000.0);
   vtkGetMacro(BaseSigma, double);
@@ -96,6 +98,10 @@ public:
   vtkGetMacro(LayersUsed, int);
   /** The feature size the automatic choice measured, texels (0 when the layers were given). */
   vtkGetMacro(FeatureSizeTexels, double);
+  /** 1 when the last update averaged the counts 1..LayersUsed (the scale average). */
+  vtkGetMacro(LayersAveraged, int);
+  /** NumberOfLayers -2: the ratio image's autocorrelation length, texels (0 otherwise). */
+  vtkGetMacro(CorrelationLengthTexels, double);
 
   vtkImageData* GetAlbedoOutput();
   vtkImageData* GetDepthOutput();
@@ -111,7 +117,7 @@ protected:
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   double DepthScale = 1.0;
-  int NumberOfLayers = 0;
+  int NumberOfLayers = -2;
   int UseRatio = 1;
   double BaseSigma = 1.0;
   double ValleyWeight = 1.0;
@@ -120,6 +126,8 @@ protected:
   double DepthRangeTexels = 0.0;
   int LayersUsed = 0;
   double FeatureSizeTexels = 0.0;
+  int LayersAveraged = 0;
+  double CorrelationLengthTexels = 0.0;
 
 private:
   vtkDepthHallucinationFilter(const vtkDepthHallucinationFilter&) = delete;

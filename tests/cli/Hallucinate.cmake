@@ -27,9 +27,15 @@ if (NOT EXISTS "${WORK}/albedo.exr" OR NOT EXISTS "${WORK}/depth.exr"
     OR NOT last_output MATCHES "depth-scale")
   message(FATAL_ERROR "hallucinate wrote no albedo or depth: ${last_output}")
 endif ()
-# By default every layer count the photograph holds is averaged, and said; a given count is kept.
-if (NOT last_output MATCHES "layers: the average of 1 to [0-9]+ \\(widest sigma [0-9]+ texels\\)")
-  message(FATAL_ERROR "hallucinate did not print the scale average: ${last_output}")
+# By default the layers follow the ratio image's feature size (the scale average on fine
+# features, one wide count on broad ones), and the choice is said; --layers average averages
+# every count the photograph holds; a given count is kept.
+if (NOT last_output MATCHES "layers: (the average of 1 to )?[0-9]+ \\(widest sigma [0-9]+ texels\\),? (fine|broad) features \\(autocorrelation length")
+  message(FATAL_ERROR "hallucinate did not print the layers of the feature size: ${last_output}")
+endif ()
+cli_run(TRUE hallucinate "${d}" "${f}" --layers average --depth "${WORK}/depth-average.exr")
+if (NOT last_output MATCHES "layers: the average of 1 to [0-9]+ \\(widest sigma [0-9]+ texels\\)\n")
+  message(FATAL_ERROR "hallucinate --layers average did not print the scale average: ${last_output}")
 endif ()
 cli_run(TRUE hallucinate "${d}" "${f}" --layers 2 --residual-weight 0 --depth "${WORK}/depth-2.exr")
 if (NOT last_output MATCHES "layers: 2 \\(widest sigma 2 texels\\)")

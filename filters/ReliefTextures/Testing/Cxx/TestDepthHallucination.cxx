@@ -25,6 +25,7 @@
 #include <functional>
 #include <iostream>
 #include <limits>
+#include <random>
 #include <vector>
 
 using mesolight_test::MessageCapture;
@@ -252,6 +253,53 @@ TEST(DepthHallucination, AutomaticLayersOnDegenerateShading)
   HallucinationSettings negative;
   negative.ResidualWeight = -1.0f;
   EXPECT_THROW(HallucinateDepth(pair.Diffuse, pair.Flash, nullptr, negative), HallucinationError);
+}
+
+// The feature size against an analytic reference: white noise blurred by a Gaussian of sigma s
+// has the autocorrelation exp(-d^2 / (4 s^2)), one half at d = 2 s sqrt(ln 2) = 1.665 s.
+// Noise blurred by 4 texels (length 6.66) is broad: one count, the widest sigma the octave
+// nearest 32 lengths (213 texels: 9 layers, sigma 256), no wider than half the image; noise
+// blurred by 1 texel (length 1.67) is fine (the scale average, 0). Negative: the lengths of the
+// two must differ by the analytic ratio, and raw white noise is fine (its length under 1).
+TEST(DepthHallucination, FeatureScaleIsTheAutocorrelationLength)
+{
+  constexpr int Side = 512;
+  std::mt19937 random(7);
+  std::normal_distribution<float> normal(0.0f, 1.0f);
+  std::vector<float> noise(static_cast<std::size_t>(Side) * Side);
+  for (float& v : noise)
+  {
+    v = 0.5f + 0.1f * normal(random);
+  }
+  const HallucinationFeatureScale white = MeasureHallucinationFeatureScale(noise, Side, Side);
+  const HallucinationFeatureScale fine =
+    MeasureHallucinationFeatureScale(GaussianBlurClamped(noise, Side, Side, 1.0f), Side, Side);
+  const HallucinationFeatureScale broad =
+    MeasureHallucinationFeatureScale(GaussianBlurClamped(noise, Side, Side, 4.0f), Side, Side);
+  std::cout << "correlation lengths: white " << white.CorrelationLengthTexels << ", sigma 1 "
+            << fine.CorrelationLengthTexels << ", sigma 4 " << broad.CorrelationLengthTexels
+            << " texels\n";
+  EXPECT_LT(white.CorrelationLengthTexels, 1.0f);
+  EXPECT_EQ(white.Layers, 0);
+  EXPECT_NEAR(fine.CorrelationLengthTexels, 1.665f, 0.15f);
+  EXPECT_EQ(fine.Layers, 0);
+  EXPECT_NEAR(broad.CorrelationLengthTexels, 4.0f * 1.665f, 0.4f);
+  EXPECT_EQ(broad.Layers, 9);
+  // On a 128^2 crop the same noise calls for the widest count that fits: sigma 64, 7 layers.
+  std::vector<float> crop(128 * 128);
+  const std::vector<float> blurred = GaussianBlurClamped(noise, Side, Side, 4.0f);
+  for (int j = 0; j < 128; ++j)
+  {
+    std::copy_n(blurred.begin() + j * Side, 128, crop.begin() + j * 128);
+  }
+  EXPECT_EQ(MeasureHallucinationFeatureScale(crop, 128, 128).Layers, 7);
+  // Nothing to size: empty, wrong size, uniform.
+  EXPECT_EQ(MeasureHallucinationFeatureScale({}, 0, 0).Layers, 0);
+  EXPECT_EQ(MeasureHallucinationFeatureScale(std::vector<float>(3, 1.0f), 4, 4).Layers, 0);
+  const HallucinationFeatureScale uniform =
+    MeasureHallucinationFeatureScale(std::vector<float>(N * N, 0.7f), N, N);
+  EXPECT_EQ(uniform.Layers, 0);
+  EXPECT_EQ(uniform.CorrelationLengthTexels, 0.0f);
 }
 
 TEST(DepthHallucination, BadInputIsReported)

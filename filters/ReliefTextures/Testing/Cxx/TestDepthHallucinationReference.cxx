@@ -391,11 +391,12 @@ TEST(HallucinationScales, ChosenScaleFollowsTheFeatureSize)
   }
 }
 
-// The default (the ratio model's scale average) beats both naive baselines on both surfaces: on
-// the holes where older defaults did not (measured: 0.940, the shading's equal-weight average
-// 0.943, diffuse/flash ratio 0.930, inverted brightness 0.563; the automatic layer count 0.918,
-// five layers without the residual layer 0.872), and on the panels by a margin (0.696, the
-// shading's average 0.760, against 0.573 and 0.189).
+// The default (the ratio model, its layers from the feature size) beats both naive baselines on
+// both surfaces: on the holes (fine: the scale average) where older defaults did not (measured:
+// 0.940, the shading's equal-weight average 0.943, diffuse/flash ratio 0.930, inverted
+// brightness 0.563; the automatic layer count 0.918, five layers without the residual layer
+// 0.872), and on the panels (broad: 8 layers) by a margin (0.701, the ratio's scale average
+// 0.696, the shading's 0.760, against 0.573 and 0.189).
 // Negative: a single scale fails. On the holes the previous automatic count and the old fixed
 // five layers stay below the ratio; on the panels the finest layer alone (0.600) stays within
 // 0.1 of the ratio.
@@ -413,7 +414,7 @@ TEST(HallucinationScales, DefaultBeatsTheBaselinesOnPanelsAndHoles)
     return Correlation(s, DepthFromShading(s.Result.Shading, s.Side, s.Side, settings));
   };
   const HallucinationSettings defaults;
-  EXPECT_EQ(defaults.Layers, 0); // the scale average is the default
+  EXPECT_EQ(defaults.Layers, HallucinationFeatureLayers); // the layers from the feature size
 
   const double holeModel = Correlation(holes, holes.Result.Depth);
   const double holeAutomatic = fixed(holes, -1, defaults.ResidualWeight);
@@ -433,6 +434,43 @@ TEST(HallucinationScales, DefaultBeatsTheBaselinesOnPanelsAndHoles)
   const Baselines panelBaselines = BestBaseline(panels);
   EXPECT_GT(panelModel, panelBaselines.Best + 0.1);
   EXPECT_LT(panelFinest, panelBaselines.Best + 0.1);
+}
+
+// The layers follow the ratio image's feature size (MeasureHallucinationFeatureScale): on the
+// panels (100 texels wide) it stays correlated over 6.35 texels (measured), broad, and gets the
+// widest count the 256^2 photograph holds (8 layers, sigma 128); on the holes (8 texels across)
+// it decorrelates within 2.17 texels, fine, and gets the scale average. Negative: a fixed small
+// scale on the panels (1 or 2 layers of the same ratio image: 0.571, 0.620) does not beat the
+// best baseline (0.573) by the margin the adaptive count does (0.701).
+TEST(HallucinationScales, FeatureScaleWidensTheLayersOnPanels)
+{
+  const Surface& panels = GetSurface(true);
+  const Surface& holes = GetSurface(false);
+  ASSERT_FALSE(panels.Result.Depth.empty());
+  ASSERT_FALSE(holes.Result.Depth.empty());
+  std::cout << "panels: correlation length " << panels.Result.CorrelationLengthTexels << " texels, "
+            << panels.Result.Layers << " layers" << (panels.Result.Averaged ? " (averaged)" : "")
+            << "; holes: " << holes.Result.CorrelationLengthTexels << " texels, "
+            << holes.Result.Layers << " layers" << (holes.Result.Averaged ? " (averaged)" : "")
+            << "\n";
+  EXPECT_GE(panels.Result.CorrelationLengthTexels, HallucinationBroadCorrelationLength);
+  EXPECT_FALSE(panels.Result.Averaged);
+  EXPECT_EQ(panels.Result.Layers, 8);
+  EXPECT_LT(holes.Result.CorrelationLengthTexels, HallucinationBroadCorrelationLength);
+  EXPECT_TRUE(holes.Result.Averaged);
+
+  const Baselines baselines = BestBaseline(panels);
+  const double adaptive = Correlation(panels, panels.Result.Depth);
+  EXPECT_GT(adaptive, baselines.Best + 0.1);
+  for (int layers : { 1, 2 })
+  {
+    HallucinationSettings fixed;
+    fixed.Layers = layers;
+    const double small =
+      Correlation(panels, DepthFromShading(panels.Result.Ratio, panels.Side, panels.Side, fixed));
+    std::cout << "panels: " << layers << " layers " << small << ", adaptive " << adaptive << "\n";
+    EXPECT_LT(small, baselines.Best + 0.1) << layers << " layers";
+  }
 }
 
 // The default model reads the diffuse/flash ratio and weighs each layer count by its squared
