@@ -4,9 +4,11 @@
 # of scripts/bench-relief-real-maps.sh plus a fine perforated grate, from Debian's
 # redeclipse-data (512^2, white = high, hence --height), each displaced as a dense mesh 32 texels
 # deep and path-traced under an overcast sky and with a flash at the camera. Prints per map the
-# default's correlation with the true depth (the ratio model), the previous default (the
-# shading's scale average, --model shading), the automatic layer choice, the old default, the
-# best fixed layer count and both naive baselines (1 - diffuse luminance; the diffuse/flash ratio).
+# default's correlation with the true depth (the ratio model, its layers from the ratio image's
+# feature size) and that autocorrelation length, the previous default (the ratio's scale average,
+# --layers average), the one before (the shading's scale average, --model shading), the
+# automatic layer choice, the old default, the best fixed layer count and both naive baselines
+# (1 - diffuse luminance; the diffuse/flash ratio).
 # The package is large (about 860 MB): `MESOLIGHT_REAL_MAPS=1 scripts/install-deps.sh` installs
 # it. Without it this script says so and exits 0.
 #

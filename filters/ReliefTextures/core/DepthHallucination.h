@@ -41,6 +41,11 @@
  *     diffuse/flash ratio lum(I_d) / (lum(I_d) + lum(albedo)) = S / (S + 1) in units of the
  *     flash, the scale-free "dark is deep" cue of a flash pair, which compresses the bright
  *     open surfaces where the flash-pair albedo is least sure;
+ *  5. Which counts (the default, Layers -2): the ratio image's own feature size, its
+ *     autocorrelation length L (MeasureHallucinationFeatureScale). Fine features (L under 3
+ *     texels) take the scale average; broad ones (the ratio smooth at the texel scale: wide
+ *     tiles, stones, panels), whose depth the agreement weights would drop with the wide counts,
+ *     take one count, the widest sigma about 32 L;
  *     the output is that depth stretched to [0, 1] (0 = highest point, 1 = deepest, the
  *     project's convention) and its range in texels (DepthRangeTexels).
  *
@@ -56,7 +61,7 @@
  * the hill law reads (with the true albedo instead the model does worse: docs/hallucination.md).
  * It is an approximation by design: shading cannot tell absolute depth nor very low
  * frequencies, the widest useful layer must match the features (Layers; the scale average, the
- * automatic choice and the residual layer are this project's), and where the
+ * feature size, the automatic choice and the residual layer are this project's), and where the
  * albedo is not removed dark paint reads as deep. docs/hallucination.md measures how far it gets.
  */
 #ifndef mesolight_DepthHallucination_h
