@@ -278,8 +278,8 @@ int RunHallucinateCommand(const std::vector<std::string>& args)
     if (estimate > 2.0)
     {
       std::cerr << "hallucinating " << size[0] << "x" << size[1] << ", "
-                << (layers > 0       ? std::to_string(layers) + " layers"
-                       : layers == 0 ? "the scale average"
+                << (layers > 0        ? std::to_string(layers) + " layers"
+                       : layers == 0  ? "the scale average"
                        : layers == -1 ? "automatic layers"
                                       : "layers from the feature size")
                 << ": at most about " << std::setprecision(2) << estimate << " s\n";
@@ -466,8 +466,8 @@ int RunHallucinationBenchmark(const std::vector<std::string>& args)
     int Layers = 0, AutoLayers = 0;
     bool Averaged = false;
     float Feature = 0.0f, CorrelationLength = 0.0f;
-    double Default = 0.0, Average = 0.0, Previous = 0.0, Auto = 0.0, Best = -2.0, Five = 0.0, Brightness = 0.0,
-           Ratio = 0.0;
+    double Default = 0.0, Average = 0.0, Previous = 0.0, Auto = 0.0, Best = -2.0, Five = 0.0,
+           Brightness = 0.0, Ratio = 0.0;
     int BestLayers = 0;
     std::vector<double> Sweep;
     std::vector<int> SweepLayers;
@@ -731,9 +731,10 @@ int RunHallucinationBenchmark(const std::vector<std::string>& args)
     }
     summaryCsv << label << "," << w << "," << h << "," << summary.Layers << ","
                << (summary.Averaged ? 1 : 0) << "," << summary.CorrelationLength << ","
-               << summary.Default << "," << summary.Average << "," << summary.Previous << "," << summary.AutoLayers << "," << summary.Feature
-               << "," << summary.Auto << "," << summary.Five << "," << summary.BestLayers << ","
-               << summary.Best << "," << summary.Brightness << "," << summary.Ratio << "\n";
+               << summary.Default << "," << summary.Average << "," << summary.Previous << ","
+               << summary.AutoLayers << "," << summary.Feature << "," << summary.Auto << ","
+               << summary.Five << "," << summary.BestLayers << "," << summary.Best << ","
+               << summary.Brightness << "," << summary.Ratio << "\n";
     summaries.push_back(summary);
     std::cout << std::left << std::setw(27) << label << "albedo mean relative error " << albedoError
               << "; model depth range " << result.DepthRangeTexels << " texels (true " << texels
@@ -761,13 +762,12 @@ int RunHallucinationBenchmark(const std::vector<std::string>& args)
   std::cout << "\n"
             << std::left << std::setw(24) << "map" << std::right << std::setw(9) << "default"
             << std::setw(7) << "(N)" << std::setw(8) << "length" << std::setw(9) << "average"
-            << std::setw(10) << "previous" << std::setw(8) << "auto"
-            << std::setw(5) << "(N)" << std::setw(9) << "feature" << std::setw(9) << "old"
-            << std::setw(8) << "best" << std::setw(5) << "(N)" << std::setw(12) << "brightness"
-            << std::setw(8) << "ratio"
+            << std::setw(10) << "previous" << std::setw(8) << "auto" << std::setw(5) << "(N)"
+            << std::setw(9) << "feature" << std::setw(9) << "old" << std::setw(8) << "best"
+            << std::setw(5) << "(N)" << std::setw(12) << "brightness" << std::setw(8) << "ratio"
             << "  default beats both\n";
-  double meanDefault = 0.0, meanAverage = 0.0, meanPrevious = 0.0, meanAuto = 0.0,
-         meanFive = 0.0, meanBest = 0.0;
+  double meanDefault = 0.0, meanAverage = 0.0, meanPrevious = 0.0, meanAuto = 0.0, meanFive = 0.0,
+         meanBest = 0.0;
   int beaten = 0, averageBeaten = 0, previousBeaten = 0, autoBeaten = 0, fiveBeaten = 0;
   const double count = static_cast<double>(std::max<std::size_t>(1, summaries.size()));
   for (const Summary& s : summaries)
@@ -798,8 +798,7 @@ int RunHallucinationBenchmark(const std::vector<std::string>& args)
             << " (beats both baselines on " << beaten << " of " << summaries.size()
             << " maps), ratio average at every feature size (--layers average) " << meanAverage
             << " (" << averageBeaten << "), shading average (--model shading) " << meanPrevious
-            << " ("
-            << previousBeaten << "), automatic layers " << meanAuto << " (" << autoBeaten
+            << " (" << previousBeaten << "), automatic layers " << meanAuto << " (" << autoBeaten
             << "), old default (5 layers, no residual) " << meanFive << " (" << fiveBeaten << ")";
   if (!sweep.empty())
   {

@@ -375,11 +375,11 @@ HallucinationFeatureScale MeasureHallucinationFeatureScale(
     ++widest;
   }
   const float widestSigma = baseSigma * std::ldexp(1.0f, widest - 1);
-  const int longestShift = std::max(static_cast<int>(std::ceil(std::max(
-                                      HallucinationBroadCorrelationLength,
-                                      2.0f * widestSigma / HallucinationBroadSigmaPerLength))) +
-                                      1,
-    2);
+  const int longestShift =
+    std::max(static_cast<int>(std::ceil(std::max(HallucinationBroadCorrelationLength,
+               2.0f * widestSigma / HallucinationBroadSigmaPerLength))) +
+        1,
+      2);
   const int maxShift = std::min(longestShift, side / 2);
   // Autocovariance at shift s, horizontal and vertical pairs pooled; per-row sums over a fixed
   // partition, added in order (the same result however the rows are split).
@@ -665,10 +665,11 @@ HallucinationResult HallucinateDepth(const RgbImage& diffuse, const RgbImage& fl
         (!AllFinite(diffuse) ? "diffuse" : (!AllFinite(flash) ? "flash" : "calibration")) +
         " image has NaN or infinite pixels.");
   }
-  if (settings.Layers < HallucinationFeatureLayers || settings.Layers > 12 || !(settings.BaseSigma > 0.0f) ||
-    !(settings.DepthScale > 0.0f) || !(settings.ValleyWeight >= 0.0f) ||
-    !(settings.HillWeight >= 0.0f) || !(settings.ResidualWeight >= 0.0f) ||
-    !std::isfinite(settings.DepthScale) || !std::isfinite(settings.ResidualWeight))
+  if (settings.Layers < HallucinationFeatureLayers || settings.Layers > 12 ||
+    !(settings.BaseSigma > 0.0f) || !(settings.DepthScale > 0.0f) ||
+    !(settings.ValleyWeight >= 0.0f) || !(settings.HillWeight >= 0.0f) ||
+    !(settings.ResidualWeight >= 0.0f) || !std::isfinite(settings.DepthScale) ||
+    !std::isfinite(settings.ResidualWeight))
   {
     Fail(HallucinationStatus::BadSettings,
       "Settings out of range (layers -2 = from the feature size, 0 = scale average, -1 = "

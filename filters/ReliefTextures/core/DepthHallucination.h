@@ -167,8 +167,8 @@ struct HallucinationResult
   /// lum(I_d) / (lum(I_d) + lum(albedo)), 1 at its maximum: what the layers read under
   /// HallucinationModel::Ratio.
   std::vector<float> Ratio;
-  std::vector<float> Depth;       ///< w x h, 0 = highest point, 1 = deepest
-  float DepthRangeTexels = 0.0f;  ///< the model's depth of Depth = 1, in texel widths
+  std::vector<float> Depth;      ///< w x h, 0 = highest point, 1 = deepest
+  float DepthRangeTexels = 0.0f; ///< the model's depth of Depth = 1, in texel widths
   /// The layers used (settings.Layers, the automatic choice, or the widest count averaged)
   int Layers = 0;
   float FeatureSizeTexels = 0.0f; ///< the automatic choice's feature size (0: layers given)
