@@ -851,8 +851,10 @@ HallucinationResult HallucinateDepth(const RgbImage& diffuse, const RgbImage& fl
   const std::vector<float>& layerInput =
     settings.Model == HallucinationModel::Ratio ? result.Ratio : result.Shading;
 
-  // 3. Depth from the layers: by default the average over every layer count the photograph
-  // holds (DepthFromShading); -1: the count the octave energies choose; or fixed.
+  // 3. Depth from the layers: by default the counts the ratio image's feature size calls for
+  // (the average over every count the photograph holds on fine features, one wide count on broad
+  // ones); 0: that average (DepthFromShading); -1: the count the octave energies choose; or
+  // fixed.
   HallucinationSettings used = settings;
   if (used.Layers == HallucinationFeatureLayers)
   {
