@@ -6,7 +6,7 @@
 #include "ImageCompare.h"
 #include "MathConstants.h"
 #include "ReliefScene.h"
-#include "ReliefShading.h" // ReliefVisibleShareMap, ReliefSeenShareMap
+#include "ReliefShading.h" // ReliefVisibleShareMap, ReliefSeenShareMap, ReliefEmitterShadowMap
 #include "Timing.h"
 #include "vtkReliefMapper.h"
 
@@ -22,6 +22,8 @@
 #include <vtkProperty.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
+
+#include <glm/geometric.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -121,7 +123,8 @@ vtkSmartPointer<vtkLight> MakeKeyLight()
 
 // The probes with the relief's precomputed occlusion, as the walkthrough gives them to the
 // relief mapper (application/LightFieldReliefs.cxx): the visible-share map of this height field
-// (depth: the relief texture's fourth component) and a light visibility per probe.
+// (depth: the relief texture's fourth component), the relief's shadow of emitter 0's area (4 x 4
+// samples of a 0.1 x 0.1 square facing its normal) and a light visibility per probe.
 vtkSmartPointer<vtkImageData> OccludedProbes(
   vtkImageData* probes, vtkImageData* relief, double depthScale)
 {
@@ -141,6 +144,23 @@ vtkSmartPointer<vtkImageData> OccludedProbes(
   const int count = ReliefLighting().OcclusionDirections;
   const std::vector<float> share = ReliefVisibleShareMap(height, frame, w, h, count);
   const std::vector<float> seen = ReliefSeenShareMap(height, frame, share, w, h, count);
+  std::vector<ReliefEmitterSample> samples;
+  const glm::dvec3 position(0.2, -0.3, 0.6), normal(0.0, 0.6, -0.8), side(1.0, 0.0, 0.0);
+  const glm::dvec3 up = glm::cross(normal, side);
+  for (int a = 0; a < 4; ++a)
+  {
+    for (int b = 0; b < 4; ++b)
+    {
+      ReliefEmitterSample e;
+      e.Position =
+        position + 0.1 * ((a + 0.5) / 4.0 - 0.5) * side + 0.1 * ((b + 0.5) / 4.0 - 0.5) * up;
+      e.Normal = normal;
+      e.RadianceArea = glm::dvec3(0.01 / 16.0);
+      samples.push_back(e);
+    }
+  }
+  const std::vector<float> shadow =
+    ReliefEmitterShadowMap(height, frame, samples, std::vector<int>(samples.size(), 0), 1, w, h);
   auto result = vtkSmartPointer<vtkImageData>::New();
   result->DeepCopy(probes);
   vtkDataArray* in = probes->GetPointData()->GetScalars();
@@ -154,11 +174,11 @@ vtkSmartPointer<vtkImageData> OccludedProbes(
   result->GetPointData()->SetScalars(out);
   vtkNew<vtkFloatArray> shareArray;
   shareArray->SetName("ReliefVisibleShare");
-  shareArray->SetNumberOfComponents(3);
+  shareArray->SetNumberOfComponents(4);
   shareArray->SetNumberOfTuples(static_cast<vtkIdType>(seen.size()));
   for (std::size_t c = 0; c < seen.size(); ++c)
   {
-    const float tuple[3] = { share[2 * c], share[2 * c + 1], seen[c] };
+    const float tuple[4] = { share[2 * c], share[2 * c + 1], seen[c], shadow[c] };
     shareArray->SetTypedTuple(static_cast<vtkIdType>(c), tuple);
   }
   vtkNew<vtkIntArray> shareSize;

@@ -153,19 +153,22 @@ void vtkIrradianceProbesTexture::Update(vtkOpenGLRenderWindow* renWin, vtkImageD
 bool vtkIrradianceProbesTexture::UploadVisibleShare(
   vtkOpenGLRenderWindow* renWin, vtkDataArray* share, vtkDataArray* shareSize)
 {
-  // Without a map: one texel of (1, 1, 1), the relief unoccluded (the shader reads it all the
+  // Without a map: one texel of (1, 1, 1, 1), the relief unoccluded (the shader reads it all the
   // same). A map of pairs (V, S) gets the seen share Vs = V: the series at the point's own share.
-  std::vector<float> texels(3, 1.0f);
+  // The fourth value, light 0's share past the relief's shadow, is 1 unless given.
+  std::vector<float> texels(4, 1.0f);
   int size[2] = { 1, 1 };
   this->HasVisibleShare = false;
+  this->HasLightShadow = false;
   if (share || shareSize)
   {
-    const char* const layout = " The relief's visible share must be a field-data array of W x H "
-                               "pairs or triples in [0, 1] (row-major, row 0 at v ~ 0) with a "
-                               "2-value array (W, H); the relief is drawn without the probes.";
+    const char* const layout =
+      " The relief's visible share must be a field-data array of W x H "
+      "pairs, triples or quadruples in [0, 1] (row-major, row 0 at v ~ 0) with a "
+      "2-value array (W, H); the relief is drawn without the probes.";
     const int components = share ? share->GetNumberOfComponents() : 0;
-    if (!share || !shareSize || shareSize->GetNumberOfValues() != 2 ||
-      (components != 2 && components != 3))
+    if (!share || !shareSize || shareSize->GetNumberOfValues() != 2 || components < 2 ||
+      components > 4)
     {
       vtkErrorMacro(<< "The relief's visible share is incomplete." << layout);
       return false;
@@ -180,10 +183,10 @@ bool vtkIrradianceProbesTexture::UploadVisibleShare(
     }
     size[0] = static_cast<int>(w);
     size[1] = static_cast<int>(h);
-    texels.resize(3 * static_cast<size_t>(size[0]) * size[1]);
+    texels.assign(4 * static_cast<size_t>(size[0]) * size[1], 1.0f);
     for (vtkIdType t = 0; t < share->GetNumberOfTuples(); ++t)
     {
-      for (int c = 0; c < 3; ++c)
+      for (int c = 0; c < std::max(components, 3); ++c)
       {
         const double value = share->GetComponent(t, c < components ? c : 0);
         if (!(value >= 0.0 && value <= 1.0))
@@ -192,10 +195,11 @@ bool vtkIrradianceProbesTexture::UploadVisibleShare(
                         << " is not in [0, 1]." << layout);
           return false;
         }
-        texels[3 * static_cast<size_t>(t) + c] = static_cast<float>(value);
+        texels[4 * static_cast<size_t>(t) + c] = static_cast<float>(value);
       }
     }
     this->HasVisibleShare = true;
+    this->HasLightShadow = components == 4;
   }
   if (!this->ShareTexture)
   {
@@ -207,11 +211,12 @@ bool vtkIrradianceProbesTexture::UploadVisibleShare(
   this->ShareTexture->SetWrapS(vtkTextureObject::ClampToEdge);
   this->ShareTexture->SetWrapT(vtkTextureObject::ClampToEdge);
   if (!this->ShareTexture->Create2DFromRaw(static_cast<unsigned int>(size[0]),
-        static_cast<unsigned int>(size[1]), 3, VTK_FLOAT, texels.data()))
+        static_cast<unsigned int>(size[1]), 4, VTK_FLOAT, texels.data()))
   {
     vtkErrorMacro(<< "Could not create the relief's visible-share texture (" << size[0] << " x "
                   << size[1] << "); the relief is drawn without the probes.");
     this->HasVisibleShare = false;
+    this->HasLightShadow = false;
     return false;
   }
   return true;
@@ -236,6 +241,7 @@ void vtkIrradianceProbesTexture::SetUniforms(vtkShaderProgram* program)
 {
   program->SetUniformi("mlIrradianceProbes", this->TextureObject->GetTextureUnit());
   program->SetUniformi("mlReliefVisibleShare", this->ShareTexture->GetTextureUnit());
+  program->SetUniformi("mlReliefLightShadow", this->HasLightShadow ? 1 : 0);
   const float probeGrid[2] = { static_cast<float>(this->GridSize[0]),
     static_cast<float>(this->GridSize[1]) };
   program->SetUniform2f("mlProbeGrid", probeGrid);
@@ -264,4 +270,5 @@ void vtkIrradianceProbesTexture::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "HasProbes: " << (this->HasProbes ? "yes" : "no") << "\n";
   os << indent << "GridSize: " << this->GridSize[0] << " x " << this->GridSize[1] << "\n";
   os << indent << "HasVisibleShare: " << (this->HasVisibleShare ? "yes" : "no") << "\n";
+  os << indent << "HasLightShadow: " << (this->HasLightShadow ? "yes" : "no") << "\n";
 }

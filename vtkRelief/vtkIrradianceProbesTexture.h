@@ -26,9 +26,12 @@
  *   macro plane; optionally a third value, the visible share Vs of the relief the occluded
  *   directions meet, ReliefSeenShareMap) as the two- or three-component field-data array
  *   GetVisibleShareName() (W x H tuples, row 0 at v ~ 0) with the field-data array
- *   GetVisibleShareSizeName() = (W, H): a second, three-channel linear texture (Vs = V for
+ *   GetVisibleShareSizeName() = (W, H): a second, four-channel linear texture (Vs = V for
  *   pairs). The shader scales the probes' irradiance by the second value and adds the relief's
- *   multi-bounce inter-reflection of V at Vs (ReliefInterReflected). Without it all are 1.
+ *   multi-bounce inter-reflection of V at Vs (ReliefInterReflected). Without it all are 1. An
+ *   optional fourth value per cell is the share of the renderer's light 0 (an area emitter)
+ *   that the relief's own shadow lets through (ReliefEmitterShadowMap, the area's penumbra):
+ *   the shader then multiplies that light by it instead of marching one hard shadow ray.
  */
 
 #ifndef vtkIrradianceProbesTexture_h
@@ -71,6 +74,8 @@ public:
 
   /** Whether the last upload had a visible-share map (else V = 1). */
   vtkGetMacro(HasVisibleShare, bool);
+  /** Whether the map holds light 0's shadow by the relief (a fourth value per cell). */
+  vtkGetMacro(HasLightShadow, bool);
 
   /** The field-data arrays of the relief's visible share and its grid size (see above). */
   static const char* GetVisibleShareName() { return "ReliefVisibleShare"; }
@@ -96,6 +101,7 @@ protected:
   vtkSmartPointer<vtkTextureObject> TextureObject;
   vtkSmartPointer<vtkTextureObject> ShareTexture;
   bool HasVisibleShare = false;
+  bool HasLightShadow = false;
   vtkDataArray* Uploaded = nullptr; // not referenced: only compared
   vtkImageData* UploadedImage = nullptr;
   vtkMTimeType UploadTime = 0;

@@ -328,6 +328,65 @@ std::vector<float> ReliefSeenShareMap(const HeightField& hf, const ReliefFrame& 
   return seen;
 }
 
+std::vector<float> ReliefEmitterShadowMap(const HeightField& hf, const ReliefFrame& frame,
+  const std::vector<ReliefEmitterSample>& samples, const std::vector<int>& group, int groups,
+  int width, int height, const ProgressCallback& progress)
+{
+  if (width < 1 || height < 1 || groups < 1 || group.size() != samples.size())
+  {
+    throw std::invalid_argument(
+      "ReliefEmitterShadowMap: needs a grid, at least one group and one group per sample");
+  }
+  const std::size_t count = static_cast<std::size_t>(groups);
+  std::vector<float> shadow(static_cast<std::size_t>(width) * height * count, 1.0f);
+  ForEachGridCell(width, height, progress,
+    [&](std::size_t i, std::size_t j, double u, double v)
+    {
+      const double d = std::max(0.0, hf.DepthAt(u, v));
+      const glm::dvec3 point = frame.Point(u, v, d);
+      const glm::dvec3 normal = ReliefNormalAt(hf, frame, u, v);
+      std::vector<double> all(count, 0.0), lit(count, 0.0);
+      for (std::size_t s = 0; s < samples.size(); ++s)
+      {
+        const int g = group[s];
+        if (g < 0 || g >= groups)
+        {
+          continue;
+        }
+        const ReliefEmitterSample& e = samples[s];
+        const glm::dvec3 toLight = e.Position - point;
+        const double r2 = glm::dot(toLight, toLight);
+        if (!(r2 > 0.0))
+        {
+          continue;
+        }
+        const glm::dvec3 l = toLight / std::sqrt(r2);
+        const double cosine = glm::dot(normal, l);
+        const double cosineEmitter = -glm::dot(e.Normal, l);
+        // As ShadeReliefRay: the light must face the point and be above the macro plane.
+        if (!(cosine > 0.0 && cosineEmitter > 0.0 && glm::dot(frame.Normal, l) > 0.0))
+        {
+          continue;
+        }
+        const double weight = cosine * cosineEmitter / r2 *
+          (0.2126 * e.RadianceArea.x + 0.7152 * e.RadianceArea.y + 0.0722 * e.RadianceArea.z);
+        all[static_cast<std::size_t>(g)] += weight;
+        if (Visible(hf, glm::dvec3(u, v, d), frame.ToTexture(l), 1e-6))
+        {
+          lit[static_cast<std::size_t>(g)] += weight;
+        }
+      }
+      for (std::size_t g = 0; g < count; ++g)
+      {
+        if (all[g] > 0.0)
+        {
+          shadow[(j * width + i) * count + g] = static_cast<float>(lit[g] / all[g]);
+        }
+      }
+    });
+  return shadow;
+}
+
 glm::dvec3 ProbeRadiance(const ReliefLighting& lighting, double u, double v, const glm::dvec3& w)
 {
   SH9 sh;

@@ -203,6 +203,22 @@ MESOLIGHTRELIEFCORE_EXPORT std::vector<float> ReliefSeenShareMap(const HeightFie
   const ReliefFrame& frame, const std::vector<float>& share, int width, int height, int count,
   const ProgressCallback& progress = {});
 
+/**
+ * The relief's own shadow of area lights over the grid of ReliefVisibleShareMap: per cell (at the
+ * height field's surface and perturbed normal there) and light group g < groups, the share of the
+ * unshadowed direct irradiance of the emitter samples with group[s] == g, RadianceArea cos cos_e
+ * / r^2 (luminance), that the height field lets through (Visible, the exact march ShadeReliefRay
+ * shadows each sample with); 1 where the group does not light the cell. `groups` values per cell,
+ * row-major, j slowest. What the relief mapper multiplies an emitter light's contribution by
+ * instead of marching one shadow ray to the light's centre: a point light's hard shadow is not
+ * the area light's penumbra, which is as wide as a slot's bottom where the light is near
+ * (vtkIrradianceProbesTexture). Parallel; progress and stop as ReliefVisibleShareMap.
+ */
+MESOLIGHTRELIEFCORE_EXPORT std::vector<float> ReliefEmitterShadowMap(const HeightField& hf,
+  const ReliefFrame& frame, const std::vector<ReliefEmitterSample>& samples,
+  const std::vector<int>& group, int groups, int width, int height,
+  const ProgressCallback& progress = {});
+
 } // namespace mesolight
 
 #endif

@@ -24,6 +24,9 @@ uniform vec2 mlProbeGrid; // (Nu, Nv)
 // Per cell of the relief: V, V over the share of directions above the macro plane (the share
 // of the probes' light that reaches the point), and Vs; 1 x 1 of (1, 1, 1) without.
 uniform sampler2D mlReliefVisibleShare;
+// 1 when the map's fourth channel holds the share of light 0 (an area emitter) that the relief's
+// own shadow lets through (ReliefEmitterShadowMap), else 0.
+uniform int mlReliefLightShadow;
 
 #define ML_PROBE_BLOCKS 9.0
 
@@ -63,6 +66,23 @@ float mlEmitterVisibility(vec2 uv, int light)
     vec2(st.x, st.y + float(7 + light / 4) / ML_PROBE_BLOCKS), 0.0);
   int c = light - 4 * (light / 4);
   return c == 0 ? v.x : (c == 1 ? v.y : (c == 2 ? v.z : v.w));
+}
+
+// The share of light `light` that the relief's own shadow lets through at texture coordinates
+// uv from the precomputed map (bilinear between its cells), or -1 where the map does not hold
+// it (the light's shadow is then marched). The map averages the shadow over the emitter's area,
+// as the CPU renderer's emitter samples do: a single ray to the light's centre gives a hard
+// shadow where the area light casts a penumbra as wide as a slot's bottom. The map holds the
+// height field's points only: a hit on a walled relief's side wall (the view ray met the
+// texture's border below the surface, mlSideWall, and stopped on it) marches its shadow.
+float mlEmitterSelfShadow(vec2 uv, int light)
+{
+  bool onBorder = any(lessThanEqual(uv, vec2(1e-5))) || any(greaterThanEqual(uv, vec2(1.0 - 1e-5)));
+  if (light != 0 || mlReliefLightShadow == 0 || (onBorder && mlWalledRelief()))
+  {
+    return -1.0;
+  }
+  return clamp(textureLod(mlReliefVisibleShare, uv, 0.0).a, 0.0, 1.0);
 }
 
 // The renderer's lights' irradiance on the flat wall (unit view normal macroVC) at posVC, with

@@ -20,6 +20,7 @@ uniform mat3 mlWorldToView; // rotation part of the view matrix
 
 #ifdef ML_IRRADIANCE_PROBES
 float mlEmitterVisibility(vec2 uv, int light); // the scene's shadow (vtkReliefIrradianceProbesFS)
+float mlEmitterSelfShadow(vec2 uv, int light);  // the relief's, precomputed (-1: not held)
 #endif
 
 // Light i's direction of travel at posVC and its attenuation there (distance, spot cone), as
@@ -108,6 +109,16 @@ void mlAccumulateLights(vec3 posVC, vec3 normalVC, vec3 hit, mat3 worldToTexture
     vec3 toLight = worldToTexture * (-lightDir);
     // A light at or below the macro-surface horizon is blocked by the surface itself.
     float visible = 1.0;
+#ifdef ML_IRRADIANCE_PROBES
+    float mapped = mlEmitterSelfShadow(hit.xy, i);
+    if (mapped >= 0.0)
+    {
+      // The area light's shadow by the relief, precomputed: no march (a light at or below the
+      // macro plane is 0 in the map too).
+      visible = mapped;
+    }
+    else
+#endif
     if (marchShadows)
     {
       visible = toLight.z >= -1e-6 ? 0.0

@@ -283,7 +283,11 @@ struct vtkLightFieldReliefSurface::vtkInternals
   // The texture's texels (an attached texture comes as a new image sharing the same array).
   vtkDataArray* ShareTexture = nullptr; // compared only
   vtkMTimeType ShareTextureTime = 0;
-  double ShareKey[14] = {}; // frame (12), depth scale, walled
+  double ShareKey[18] = {}; // frame (12), depth scale, walled, light 0's samples (count, sum)
+  // The emitter samples the renderer's light 0 stands for (EmitterSamplesOfLight), whose
+  // shadow by the relief the map holds as a fourth value; empty: not in the map (the relief
+  // mapper marches one shadow ray to the light).
+  std::vector<mesolight::ReliefEmitterSample> LightSamples;
 };
 
 vtkStandardNewMacro(vtkLightFieldReliefSurface);
@@ -357,10 +361,17 @@ bool vtkLightFieldReliefSurface::AddVisibleShare(vtkImageData* probesOutput, con
   {
     return true;
   }
-  double key[14];
+  double key[18] = {};
   std::copy(frame, frame + 12, key);
   key[12] = this->ReliefDepthScale;
   key[13] = this->WalledRelief ? 1.0 : 0.0;
+  key[14] = static_cast<double>(in.LightSamples.size());
+  for (const mesolight::ReliefEmitterSample& sample : in.LightSamples)
+  {
+    key[15] += sample.Position.x;
+    key[16] += sample.Position.y;
+    key[17] += sample.Position.z;
+  }
   vtkDataArray* texels = texture->GetPointData()->GetScalars();
   const vtkMTimeType texelsTime = texels ? texels->GetMTime() : texture->GetMTime();
   if (texels != in.ShareTexture || texelsTime != in.ShareTextureTime ||
@@ -369,7 +380,7 @@ bool vtkLightFieldReliefSurface::AddVisibleShare(vtkImageData* probesOutput, con
     in.Share.clear();
     in.ShareTexture = texels;
     in.ShareTextureTime = texelsTime;
-    std::copy(key, key + 14, in.ShareKey);
+    std::copy(key, key + 18, in.ShareKey);
     try
     {
       const mesolight::HeightField height = ReliefHeightField(texture, this->WalledRelief);
@@ -380,7 +391,7 @@ bool vtkLightFieldReliefSurface::AddVisibleShare(vtkImageData* probesOutput, con
       surface.Normal = glm::dvec3(frame[9], frame[10], frame[11]);
       in.Share = vlf::ReliefVisibleShareGrid(height,
         vlf::ReliefFrameOf(surface, this->ReliefDepthScale), in.ShareSize[0], in.ShareSize[1],
-        mesolight::AlgorithmProgress(this, this->MapProgress(), 1.0));
+        mesolight::AlgorithmProgress(this, this->MapProgress(), 1.0), in.LightSamples);
       ++this->VisibleShareComputations;
     }
     catch (const vlf::AbortedError&)
@@ -398,8 +409,8 @@ bool vtkLightFieldReliefSurface::AddVisibleShare(vtkImageData* probesOutput, con
   {
     return true;
   }
-  // The values per cell are ReliefVisibleShareGrid's (V, V over the share above the plane, and the
-  // seen relief's share).
+  // The values per cell are ReliefVisibleShareGrid's (V, V over the share above the plane, the
+  // seen relief's share, and with light samples light 0's share past the relief's shadow).
   const std::size_t cells = static_cast<std::size_t>(in.ShareSize[0]) * in.ShareSize[1];
   vtkNew<vtkFloatArray> share;
   share->SetName(vtkIrradianceProbesTexture::GetVisibleShareName());
@@ -560,9 +571,21 @@ int vtkLightFieldReliefSurface::RequestData(
   // Port 1: the probes, pixel (9 i + k, j), with the scene's occlusion of the emitter lights and
   // the relief's visible share when asked for.
   std::vector<float> visibility;
+  this->Internals->LightSamples.clear();
   if (this->SceneOcclusion)
   {
     visibility = LightVisibility(*field, surface, n);
+    // The relief's own shadow of the first emitter light's area, in the visible-share map: a
+    // point light's hard shadow is not the emitter's penumbra (ReliefEmitterShadowMap).
+    std::vector<glm::vec3> lights;
+    for (const vlf::EmitterLight& light : vlf::EstimateEmitterLights(*field).Lights)
+    {
+      lights.push_back(light.Position);
+    }
+    if (!lights.empty())
+    {
+      this->Internals->LightSamples = vlf::EmitterSamplesOfLight(field->Scene(), lights, 0);
+    }
   }
   FillProbesImage(probesOutput, PackProbes(probes, n), n,
     this->SceneOcclusion ? &visibility : nullptr, vlf::EstimateEmitterLights(*field).Lights.size());
@@ -783,6 +806,7 @@ int vtkLightFieldReliefSurface::RequestSurfaceData(
 
   FillProbesImage(probesOutput, result.Probes, n,
     this->SceneOcclusion ? &result.Visibility : nullptr, result.Lights.size() / 9);
+  in.LightSamples.clear(); // not on every rank's field: the mapper marches the lights' shadows
   if (!this->AddVisibleShare(probesOutput, result.Frame))
   {
     probesOutput->Initialize();

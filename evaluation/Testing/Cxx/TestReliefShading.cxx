@@ -14,8 +14,10 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <stdexcept>
 #include <vector>
 
 namespace
@@ -657,6 +659,124 @@ TEST(ReliefShading, VisibleShareMapOfAGrooveIsTheAnalyticViewFactor)
   EXPECT_LT(worst, 0.04);
   EXPECT_GT(sumFlatError / count, 5.0 * sumError / count);
   EXPECT_GT(sumFlatError / count, 0.05);
+}
+
+// The relief mapper's shadow map of an area light (ReliefEmitterShadowMap) against an
+// independent reference: per cell of a V-groove as deep as wide, the share of a square emitter's
+// direct irradiance (cos cos_e / r^2) that reaches the cell, over 32 x 32 points of the emitter,
+// each tested by a dense march of the height field's DepthAt (not the intersector the map uses).
+// The emitter stands to the side above the groove, so its far wall lies in the lip's penumbra.
+// The negative case is what the relief mapper did before: one hard shadow ray to the emitter's
+// centre (a point light), lit or not.
+TEST(ReliefShading, EmitterShadowMapIsTheAreaLightsPenumbra)
+{
+  const HeightField hf = VGroove(); // opening u in [0.4, 0.6], bottom at u = 0.5, depth 1
+  ReliefFrame frame = Square();
+  frame.DepthScale = 0.2;                                   // as deep as wide
+  const glm::dvec3 lo(-0.1, 0.1, 0.35), hi(0.3, 0.4, 0.35); // the emitter, facing down
+  const glm::dvec3 down(0.0, 0.0, -1.0);
+  auto emitterPoint = [&](double s, double t)
+  { return glm::dvec3(lo.x + s * (hi.x - lo.x), lo.y + t * (hi.y - lo.y), lo.z); };
+  std::vector<mesolight::ReliefEmitterSample> samples;
+  const int side = 6; // the map's samples, about the CPU renderer's 2 x 4 x 4 per emitter
+  for (int a = 0; a < side; ++a)
+  {
+    for (int b = 0; b < side; ++b)
+    {
+      mesolight::ReliefEmitterSample e;
+      e.Position = emitterPoint((a + 0.5) / side, (b + 0.5) / side);
+      e.Normal = down;
+      e.RadianceArea = glm::dvec3(1.0);
+      samples.push_back(e);
+    }
+  }
+  const int cells = 500;
+  const std::vector<float> map = mesolight::ReliefEmitterShadowMap(
+    hf, frame, samples, std::vector<int>(samples.size(), 0), 1, cells, 2);
+  ASSERT_EQ(map.size(), static_cast<std::size_t>(2 * cells));
+  // Lit or not along the straight segment from texture point p toward world direction dir.
+  auto reaches = [&](const glm::dvec3& p, const glm::dvec3& dir)
+  {
+    const glm::dvec3 l = frame.ToTexture(dir);
+    if (!(l.z < 0.0))
+    {
+      return false;
+    }
+    const double tTop = p.z / -l.z;
+    for (int k = 1; k <= 1000; ++k)
+    {
+      const glm::dvec3 q = p + (tTop * k / 1000.0) * l;
+      if (q.z > hf.DepthAt(q.x, q.y) + 1e-4)
+      {
+        return false;
+      }
+    }
+    return true;
+  };
+  double mapError = 0.0, hardError = 0.0, penumbraMap = 0.0, penumbraHard = 0.0;
+  int count = 0, penumbra = 0;
+  for (int i = 0; i < cells; ++i)
+  {
+    const double u = (i + 0.5) / cells, v = 0.25;
+    const double offset = std::abs(u - 0.5);
+    if (offset < 0.01 || offset > 0.09)
+    {
+      continue; // the crease and the edges: no single wall plane
+    }
+    const glm::dvec3 texture(u, v, hf.DepthAt(u, v));
+    const glm::dvec3 point = frame.Point(u, v, texture.z);
+    const glm::dvec3 normal = mesolight::ReliefNormalAt(hf, frame, u, v);
+    double all = 0.0, lit = 0.0;
+    for (int a = 0; a < 32; ++a)
+    {
+      for (int b = 0; b < 32; ++b)
+      {
+        const glm::dvec3 toLight = emitterPoint((a + 0.5) / 32, (b + 0.5) / 32) - point;
+        const double r2 = glm::dot(toLight, toLight);
+        const glm::dvec3 l = toLight / std::sqrt(r2);
+        const double weight = glm::dot(normal, l) * -glm::dot(down, l) / r2;
+        if (!(weight > 0.0))
+        {
+          continue;
+        }
+        all += weight;
+        lit += reaches(texture, l) ? weight : 0.0;
+      }
+    }
+    if (!(all > 0.0))
+    {
+      continue;
+    }
+    const double reference = lit / all;
+    const glm::dvec3 centre = emitterPoint(0.5, 0.5) - point;
+    // Where the centre does not face the cell a point light there brings nothing at all: no
+    // shadow share to compare (counted as right).
+    const double hard = glm::dot(normal, centre) <= 0.0
+      ? reference
+      : (reaches(texture, glm::normalize(centre)) ? 1.0 : 0.0);
+    const double value = map[static_cast<std::size_t>(i)];
+    mapError += std::abs(value - reference);
+    hardError += std::abs(hard - reference);
+    ++count;
+    if (reference > 0.05 && reference < 0.95)
+    {
+      penumbraMap += std::abs(value - reference);
+      penumbraHard += std::abs(hard - reference);
+      ++penumbra;
+    }
+  }
+  ASSERT_GT(count, 60) << "the emitter lights the groove's far wall";
+  ASSERT_GT(penumbra, 10) << "the emitter must cast a penumbra in the groove";
+  std::cout << "area light's shadow in a V-groove, " << count << " cells (" << penumbra
+            << " in the penumbra): map mean |error| " << mapError / count << " ("
+            << penumbraMap / penumbra << " in the penumbra); one hard ray to the centre (negative) "
+            << hardError / count << " (" << penumbraHard / penumbra << ")\n";
+  EXPECT_LT(mapError / count, 0.03);
+  EXPECT_LT(penumbraMap / penumbra, 0.06);
+  EXPECT_GT(penumbraHard / penumbra, 0.2);
+  EXPECT_GT(penumbraHard / penumbra, 4.0 * penumbraMap / penumbra);
+  EXPECT_THROW(mesolight::ReliefEmitterShadowMap(hf, frame, samples, { 0 }, 1, cells, 2),
+    std::invalid_argument);
 }
 
 // The inter-reflection formula both relief renderers share: one bounce adds (1 - V) a E, multi-

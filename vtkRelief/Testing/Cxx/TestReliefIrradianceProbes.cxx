@@ -493,6 +493,102 @@ TEST(ReliefIrradianceProbes, EmitterLightMatchesTheCpuEvaluation)
   EXPECT_GT(inShadowUnshadowed, 12.0);
 }
 
+// An area emitter (a 0.15 x 0.15 square facing the relief, 4 x 4 samples) as one VTK light at its
+// centre, with the relief's shadow of its area from the visible-share map's fourth value
+// (ReliefEmitterShadowMap), against the CPU evaluation summing the 16 samples, each shadowed by
+// the exact march. Compared where the area's penumbra matters: the pixels where the CPU's area
+// light and its point light at the centre differ by more than 2 levels. The negative case is the
+// mapper without that value (a three-value map): one hard shadow ray to the light's centre.
+TEST(ReliefIrradianceProbes, AreaEmitterShadowFromTheMapMatchesTheCpuPenumbra)
+{
+  Scene scene;
+  BuildScene(scene, Bumps, true);
+  const Emitter e;
+  const glm::dvec3 centre(e.Position[0], e.Position[1], e.Position[2]);
+  const glm::dvec3 normal = glm::normalize(glm::dvec3(e.Normal[0], e.Normal[1], e.Normal[2]));
+  const glm::dvec3 side(1.0, 0.0, 0.0);
+  const glm::dvec3 up = glm::cross(normal, side);
+  ReliefLighting area = EmitterLighting(e);
+  area.Emitters.clear();
+  for (int a = 0; a < 4; ++a)
+  {
+    for (int b = 0; b < 4; ++b)
+    {
+      ReliefEmitterSample sample;
+      sample.Position =
+        centre + 0.15 * ((a + 0.5) / 4.0 - 0.5) * side + 0.15 * ((b + 0.5) / 4.0 - 0.5) * up;
+      sample.Normal = normal;
+      sample.RadianceArea = glm::dvec3(e.Intensity[0], e.Intensity[1], e.Intensity[2]) / 16.0;
+      area.Emitters.push_back(sample);
+    }
+  }
+  vtkNew<vtkLight> light;
+  vtkReliefMapper::ConfigureEmitterLight(light, e.Position, e.Normal, e.Intensity);
+  scene.Renderer->AddLight(light);
+  const std::vector<float> shadow = ReliefEmitterShadowMap(scene.Height, scene.Plane, area.Emitters,
+    std::vector<int>(area.Emitters.size(), 0), 1, DepthSize, DepthSize);
+  // Probes of no light: only the emitter light shows.
+  const auto probesWith = [&shadow](int components)
+  {
+    vtkSmartPointer<vtkImageData> probes = ProbeImage(1, 1, { ConstantRadiance(glm::dvec3(0.0)) });
+    vtkNew<vtkFloatArray> share;
+    share->SetName("ReliefVisibleShare");
+    share->SetNumberOfComponents(components);
+    share->SetNumberOfTuples(static_cast<vtkIdType>(shadow.size()));
+    for (vtkIdType t = 0; t < share->GetNumberOfTuples(); ++t)
+    {
+      for (int c = 0; c < components; ++c)
+      {
+        share->SetComponent(t, c, c == 3 ? shadow[static_cast<std::size_t>(t)] : 1.0);
+      }
+    }
+    vtkNew<vtkIntArray> size;
+    size->SetName("ReliefVisibleShareSize");
+    size->InsertNextValue(DepthSize);
+    size->InsertNextValue(DepthSize);
+    probes->GetFieldData()->AddArray(share);
+    probes->GetFieldData()->AddArray(size);
+    return probes;
+  };
+  scene.Mapper->SetIrradianceProbesData(probesWith(4));
+  const Frame mapped = Render(scene);
+  scene.Mapper->SetIrradianceProbesData(probesWith(3));
+  const Frame marched = Render(scene);
+  const std::vector<double> cpu = CpuImage(scene, area, ReliefNormal::Perturbed, glm::dvec3(1.0));
+  const std::vector<double> point =
+    CpuImage(scene, EmitterLighting(e), ReliefNormal::Perturbed, glm::dvec3(1.0));
+  double errorMapped = 0.0, errorMarched = 0.0;
+  long long penumbra = 0;
+  for (size_t p = 0; p < mapped.Depth.size(); ++p)
+  {
+    if (!mapped.Covered(p) || cpu[3 * p] < 0.0 || point[3 * p] < 0.0 ||
+      std::abs(cpu[3 * p] - point[3 * p]) <= 2.0)
+    {
+      continue;
+    }
+    for (int c = 0; c < 3; ++c)
+    {
+      errorMapped += std::abs(mapped.Rgb[3 * p + c] - cpu[3 * p + c]) / 3.0;
+      errorMarched += std::abs(marched.Rgb[3 * p + c] - cpu[3 * p + c]) / 3.0;
+    }
+    ++penumbra;
+  }
+  long long compared = 0;
+  const double overall = MeanError(mapped, cpu, &compared);
+  const double overallMarched = MeanError(marched, cpu);
+  errorMapped /= std::max<long long>(1, penumbra);
+  errorMarched /= std::max<long long>(1, penumbra);
+  std::cout << "[area emitter] " << compared << " pixels, mean |GPU - CPU| " << overall
+            << " levels (one hard ray: " << overallMarched << "); in the " << penumbra
+            << " penumbra pixels: " << errorMapped << " with the map's shadow, " << errorMarched
+            << " with one hard ray (negative)\n";
+  EXPECT_GT(penumbra, compared / 50);
+  EXPECT_LT(overall, 2.0);
+  EXPECT_LT(overall, overallMarched);
+  EXPECT_LT(errorMapped, 0.5 * errorMarched);
+  EXPECT_GT(errorMarched, 4.0);
+}
+
 // Bad probe images: a width that is not a multiple of 9, a NaN coefficient, an empty image. Each
 // is reported with a clear error, nothing crashes, and the relief is drawn as without probes
 // (here by its one VTK light).

@@ -49,6 +49,46 @@ std::vector<ReliefEmitterSample> EmitterSamples(const TriangleScene& scene, int 
   return samples;
 }
 
+namespace
+{
+// Per sample, the index of the nearest light.
+std::vector<std::size_t> NearestLights(
+  const std::vector<ReliefEmitterSample>& samples, const std::vector<glm::vec3>& lights)
+{
+  std::vector<std::size_t> nearest(samples.size(), 0);
+  for (std::size_t s = 0; s < samples.size(); ++s)
+  {
+    double best = std::numeric_limits<double>::max();
+    for (std::size_t k = 0; k < lights.size(); ++k)
+    {
+      const glm::dvec3 d = samples[s].Position - glm::dvec3(lights[k]);
+      if (glm::dot(d, d) < best)
+      {
+        best = glm::dot(d, d);
+        nearest[s] = k;
+      }
+    }
+  }
+  return nearest;
+}
+} // namespace
+
+std::vector<ReliefEmitterSample> EmitterSamplesOfLight(
+  const TriangleScene& scene, const std::vector<glm::vec3>& lights, std::size_t light, int n)
+{
+  const std::vector<ReliefEmitterSample> samples = EmitterSamples(scene, std::max(1, n));
+  const std::vector<std::size_t> nearest = NearestLights(samples, lights);
+  std::vector<ReliefEmitterSample> of;
+  for (std::size_t s = 0; s < samples.size(); ++s)
+  {
+    if (light < lights.size() && nearest[s] == light)
+    {
+      of.push_back(samples[s]);
+    }
+  }
+  return of;
+}
+
 std::vector<float> EmitterLightVisibility(const LightField& field, const EmbreeScene& scene,
   const ReliefSurface& surface, const std::vector<glm::vec3>& lights, int probesU, int probesV,
   int samplesPerSide)
@@ -61,20 +101,7 @@ std::vector<float> EmitterLightVisibility(const LightField& field, const EmbreeS
   }
   const std::vector<ReliefEmitterSample> samples =
     EmitterSamples(field.Scene(), std::max(1, samplesPerSide));
-  std::vector<std::size_t> nearest(samples.size(), 0);
-  for (std::size_t s = 0; s < samples.size(); ++s)
-  {
-    double best = std::numeric_limits<double>::max();
-    for (std::size_t k = 0; k < count; ++k)
-    {
-      const glm::dvec3 d = samples[s].Position - glm::dvec3(lights[k]);
-      if (glm::dot(d, d) < best)
-      {
-        best = glm::dot(d, d);
-        nearest[s] = k;
-      }
-    }
-  }
+  const std::vector<std::size_t> nearest = NearestLights(samples, lights);
   for (int j = 0; j < probesV; ++j)
   {
     for (int i = 0; i < probesU; ++i)
@@ -133,7 +160,8 @@ ReliefFrame ReliefFrameOf(const ReliefSurface& surface, double depthScale)
 }
 
 std::vector<float> ReliefVisibleShareGrid(const HeightField& field, const ReliefFrame& frame,
-  int& gridWidth, int& gridHeight, const ProgressCallback& progress)
+  int& gridWidth, int& gridHeight, const ProgressCallback& progress,
+  const std::vector<ReliefEmitterSample>& lightSamples)
 {
   gridWidth = std::min(field.Width(), MaxVisibleShareSide);
   gridHeight = std::min(field.Height(), MaxVisibleShareSide);
@@ -150,21 +178,35 @@ std::vector<float> ReliefVisibleShareGrid(const HeightField& field, const Relief
     }
     return !stopped;
   };
-  // Half the work each: the visible share, then the share of the relief each cell's occluded
-  // directions meet (ReliefSeenShareMap, which reads the first).
+  // The visible share, then the share of the relief each cell's occluded directions meet
+  // (ReliefSeenShareMap, which reads the first), then the area light's self-shadow if asked for.
   try
   {
     const int count = ReliefLighting().OcclusionDirections;
+    const bool light = !lightSamples.empty();
+    const double third = light ? 1.0 / 3.0 : 0.5;
     const std::vector<float> share = ReliefVisibleShareMap(
-      field, frame, gridWidth, gridHeight, count, SubProgress(watched, 0.0, 0.5));
-    const std::vector<float> seen = ReliefSeenShareMap(
-      field, frame, share, gridWidth, gridHeight, count, SubProgress(watched, 0.5, 1.0));
-    std::vector<float> cells(3 * seen.size());
+      field, frame, gridWidth, gridHeight, count, SubProgress(watched, 0.0, third));
+    const std::vector<float> seen = ReliefSeenShareMap(field, frame, share, gridWidth, gridHeight,
+      count, SubProgress(watched, third, light ? 2.0 * third : 1.0));
+    std::vector<float> shadow;
+    if (light)
+    {
+      shadow =
+        ReliefEmitterShadowMap(field, frame, lightSamples, std::vector<int>(lightSamples.size(), 0),
+          1, gridWidth, gridHeight, SubProgress(watched, 2.0 * third, 1.0));
+    }
+    const std::size_t components = light ? 4 : 3;
+    std::vector<float> cells(components * seen.size());
     for (std::size_t c = 0; c < seen.size(); ++c)
     {
-      cells[3 * c] = share[2 * c];
-      cells[3 * c + 1] = share[2 * c + 1];
-      cells[3 * c + 2] = seen[c];
+      cells[components * c] = share[2 * c];
+      cells[components * c + 1] = share[2 * c + 1];
+      cells[components * c + 2] = seen[c];
+      if (light)
+      {
+        cells[components * c + 3] = shadow[c];
+      }
     }
     return cells;
   }

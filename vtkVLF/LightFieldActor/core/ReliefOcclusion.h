@@ -46,6 +46,12 @@ std::vector<float> EmitterLightVisibility(const LightField& field, const EmbreeS
   const ReliefSurface& surface, const std::vector<glm::vec3>& lights, int probesU, int probesV,
   int samplesPerSide = 4);
 
+// The samples (EmitterSamples, n x n per emitting triangle) nearer to light `light` of `lights`
+// (unit-sphere positions, e.g. EstimateEmitterLights') than to any other: the area that light
+// stands for, as EmitterLightVisibility groups them.
+std::vector<ReliefEmitterSample> EmitterSamplesOfLight(
+  const TriangleScene& scene, const std::vector<glm::vec3>& lights, std::size_t light, int n = 4);
+
 // The relief frame of a surface's texture (unit sphere) with that depth scale.
 ReliefFrame ReliefFrameOf(const ReliefSurface& surface, double depthScale);
 
@@ -53,11 +59,13 @@ ReliefFrame ReliefFrameOf(const ReliefSurface& surface, double depthScale);
 // CPU reference shades) on the height field's texel grid, at most MaxVisibleShareSide cells a
 // side; gridWidth and gridHeight are set to the grid used. The values of a cell follow one
 // another (row-major, j slowest), as many per cell as vtkIrradianceProbesTexture's visible-share
-// array has components (now 3: V, V over the share of directions above the macro plane, and the
-// visible share of the relief the occluded directions meet, ReliefSeenShareMap). A stop asked
-// through progress throws AbortedError.
+// array has components (3: V, V over the share of directions above the macro plane, and the
+// visible share of the relief the occluded directions meet, ReliefSeenShareMap; 4 with
+// `lightSamples`: the share of that area light the relief lets through, ReliefEmitterShadowMap,
+// for the renderer's light 0). A stop asked through progress throws AbortedError.
 std::vector<float> ReliefVisibleShareGrid(const HeightField& field, const ReliefFrame& frame,
-  int& gridWidth, int& gridHeight, const ProgressCallback& progress = {});
+  int& gridWidth, int& gridHeight, const ProgressCallback& progress = {},
+  const std::vector<ReliefEmitterSample>& lightSamples = {});
 
 } // namespace vlf
 } // namespace mesolight
