@@ -6,15 +6,14 @@
 #include "ImageCompare.h"
 #include "MathConstants.h"
 #include "ReliefScene.h"
-#include "ReliefShading.h" // ReliefVisibleShareMap, ReliefSeenShareMap
 #include "Timing.h"
+#include "vtkLightFieldReliefSurface.h"
+#include "vtkMessageCollector.h"
 #include "vtkReliefMapper.h"
 
 #include <vtkActor.h>
-#include <vtkFieldData.h>
 #include <vtkFloatArray.h>
 #include <vtkImageData.h>
-#include <vtkIntArray.h>
 #include <vtkLight.h>
 #include <vtkMath.h>
 #include <vtkNew.h>
@@ -121,26 +120,13 @@ vtkSmartPointer<vtkLight> MakeKeyLight()
 
 // The probes with the relief's precomputed occlusion, as the walkthrough gives them to the
 // relief mapper (application/LightFieldReliefs.cxx): the visible-share map of this height field
-// (depth: the relief texture's fourth component) and a light visibility per probe.
+// (depth: the relief texture's fourth component), added by vtkLightFieldReliefSurface as it adds
+// it to its own probes (AddVisibleShare: mesolight::vlf::ReliefVisibleShareGrid, no field
+// needed), and a light visibility per probe (1 here: nothing of a scene stands in front of the
+// wall). Null with `error` set when the map could not be made.
 vtkSmartPointer<vtkImageData> OccludedProbes(
-  vtkImageData* probes, vtkImageData* relief, double depthScale)
+  vtkImageData* probes, vtkImageData* relief, double depthScale, std::string& error)
 {
-  int dims[3];
-  relief->GetDimensions(dims);
-  vtkDataArray* texels = relief->GetPointData()->GetScalars();
-  std::vector<float> depth(static_cast<std::size_t>(dims[0]) * dims[1]);
-  for (std::size_t t = 0; t < depth.size(); ++t)
-  {
-    depth[t] = static_cast<float>(texels->GetComponent(static_cast<vtkIdType>(t), 3));
-  }
-  // Walled, as the walkthrough's reliefs on the scene's surfaces are (ReadDepthImage).
-  const HeightField height(dims[0], dims[1], std::move(depth), HeightField::Edge::Walled);
-  ReliefFrame frame; // the unit square of BuildReliefScene's wall
-  frame.DepthScale = depthScale;
-  const int w = std::min(dims[0], 256), h = std::min(dims[1], 256);
-  const int count = ReliefLighting().OcclusionDirections;
-  const std::vector<float> share = ReliefVisibleShareMap(height, frame, w, h, count);
-  const std::vector<float> seen = ReliefSeenShareMap(height, frame, share, w, h, count);
   auto result = vtkSmartPointer<vtkImageData>::New();
   result->DeepCopy(probes);
   vtkDataArray* in = probes->GetPointData()->GetScalars();
@@ -152,21 +138,20 @@ vtkSmartPointer<vtkImageData> OccludedProbes(
     out->SetTuple4(t, in->GetComponent(t, 0), in->GetComponent(t, 1), in->GetComponent(t, 2), 1.0);
   }
   result->GetPointData()->SetScalars(out);
-  vtkNew<vtkFloatArray> shareArray;
-  shareArray->SetName("ReliefVisibleShare");
-  shareArray->SetNumberOfComponents(3);
-  shareArray->SetNumberOfTuples(static_cast<vtkIdType>(seen.size()));
-  for (std::size_t c = 0; c < seen.size(); ++c)
+  vtkNew<MessageCollector> messages;
+  vtkNew<vtkLightFieldReliefSurface> surface;
+  messages->Watch(surface);
+  surface->SetReliefTextureData(relief);
+  surface->SetReliefDepthScale(depthScale);
+  // Walled, as the walkthrough's reliefs on the scene's surfaces are (ReadDepthImage).
+  surface->WalledReliefOn();
+  // The unit square of BuildReliefScene's wall (origin, u axis, v axis, normal).
+  const double frame[12] = { 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1 };
+  if (!surface->AddVisibleShare(result, frame) || !messages->Errors.empty())
   {
-    const float tuple[3] = { share[2 * c], share[2 * c + 1], seen[c] };
-    shareArray->SetTypedTuple(static_cast<vtkIdType>(c), tuple);
+    error = "no visible-share map: " + messages->ErrorText();
+    return nullptr;
   }
-  vtkNew<vtkIntArray> shareSize;
-  shareSize->SetName("ReliefVisibleShareSize");
-  shareSize->InsertNextValue(w);
-  shareSize->InsertNextValue(h);
-  result->GetFieldData()->AddArray(shareArray);
-  result->GetFieldData()->AddArray(shareSize);
   return result;
 }
 
@@ -245,7 +230,12 @@ int RunReliefFieldCostBenchmark(const std::vector<std::string>& args)
   settings->SetExposure(1.0);
   const vtkSmartPointer<vtkImageData> plainProbes = MakeProbes(probes);
   const vtkSmartPointer<vtkImageData> probeImage =
-    OccludedProbes(plainProbes, scene.ReliefTexture, o.DepthScale);
+    OccludedProbes(plainProbes, scene.ReliefTexture, o.DepthScale, error);
+  if (!probeImage)
+  {
+    std::cerr << "mesolight bench relief-field-cost: " << error << "\n";
+    return 1;
+  }
   auto window = MakeOffscreenWindow(o, scene.Renderer);
 
   std::vector<Config> configs = {
