@@ -135,14 +135,19 @@ void FillProbesImage(vtkImageData* image, const std::vector<float>& values, int 
   image->GetPointData()->GetScalars()->SetName("IrradianceProbes");
 }
 
-// The scene's visibility of the field's emitter lights from the surface's n x n probes.
-std::vector<float> LightVisibility(
-  const vlf::LightField& field, const vlf::ReliefSurface& surface, int n)
+// The scene's visibility of the field's emitter lights from the surface's n x n probes, traced
+// in `lent` (an Embree scene of field.Scene()) when given, else in a scene built here.
+std::vector<float> LightVisibility(const vlf::LightField& field, const vlf::ReliefSurface& surface,
+  int n, const mesolight::EmbreeScene* lent = nullptr)
 {
   std::vector<glm::vec3> lights;
   for (const vlf::EmitterLight& light : vlf::EstimateEmitterLights(field).Lights)
   {
     lights.push_back(light.Position);
+  }
+  if (lent)
+  {
+    return vlf::EmitterLightVisibility(field, *lent, surface, lights, n, n);
   }
   const mesolight::EmbreeScene embree(field.Scene());
   return vlf::EmitterLightVisibility(field, embree, surface, lights, n, n);
@@ -284,6 +289,10 @@ struct vtkLightFieldReliefSurface::vtkInternals
   vtkDataArray* ShareTexture = nullptr; // compared only
   vtkMTimeType ShareTextureTime = 0;
   double ShareKey[14] = {}; // frame (12), depth scale, walled
+
+  // An Embree scene of LentFor's scene, lent (vtkLightFieldReliefSurfaceCore::LendEmbreeScene).
+  std::shared_ptr<const mesolight::EmbreeScene> LentEmbree;
+  const vlf::LightField* LentFor = nullptr; // compared only
 };
 
 vtkStandardNewMacro(vtkLightFieldReliefSurface);
@@ -562,7 +571,8 @@ int vtkLightFieldReliefSurface::RequestData(
   std::vector<float> visibility;
   if (this->SceneOcclusion)
   {
-    visibility = LightVisibility(*field, surface, n);
+    visibility = LightVisibility(*field, surface, n,
+      this->Internals->LentFor == field ? this->Internals->LentEmbree.get() : nullptr);
   }
   FillProbesImage(probesOutput, PackProbes(probes, n), n,
     this->SceneOcclusion ? &visibility : nullptr, vlf::EstimateEmitterLights(*field).Lights.size());
@@ -587,6 +597,17 @@ const std::vector<mesolight::SH9>* vtkLightFieldReliefSurfaceCore::GetProbes(
   const vtkLightFieldReliefSurface* surface)
 {
   return surface ? surface->NamedProbes.get() : nullptr;
+}
+
+//------------------------------------------------------------------------------
+void vtkLightFieldReliefSurfaceCore::LendEmbreeScene(vtkLightFieldReliefSurface* surface,
+  const mesolight::vlf::LightField* field, std::shared_ptr<const mesolight::EmbreeScene> scene)
+{
+  if (surface)
+  {
+    surface->Internals->LentFor = scene ? field : nullptr;
+    surface->Internals->LentEmbree = std::move(scene);
+  }
 }
 
 //------------------------------------------------------------------------------
