@@ -218,8 +218,11 @@ int SetUpWalkthroughReliefs(const CommandLine& cl, const char* command, vtkLight
     const glm::vec3 ks = field->MaterialOf(surface).Specular;
     mirrors = mirrors || ks.x > 0.0f || ks.y > 0.0f || ks.z > 0.0f;
   }
+  // One Embree scene of the field's scene for the reliefs' scene occlusion and the mirrors'
+  // relief tracing, built once here rather than by each relief surface's update and again for
+  // the mirrors.
   std::shared_ptr<const EmbreeScene> embree;
-  if (mirrors)
+  if (mirrors || occlusion)
   {
     embree = std::make_shared<const EmbreeScene>(field->Scene());
   }
@@ -254,6 +257,7 @@ int SetUpWalkthroughReliefs(const CommandLine& cl, const char* command, vtkLight
       surface->SetReliefDepthScale(depthScale);
       surface->WalledReliefOn();
       surface->SceneOcclusionOn();
+      vtkLightFieldReliefSurfaceCore::LendEmbreeScene(surface, field, embree);
     }
     surface->Update();
     if (!messages->Errors.empty())

@@ -214,7 +214,7 @@ int Propagate(const std::vector<std::string>& args)
     return exitCode; // --help printed, or a usage error reported
   }
   int directions = 0, rays = 0, tiles = 0, iterations = -1, maxIterations = 0, snapshotEvery = 1;
-  int contactHalvings = -1; // auto
+  int contactHalvings = vlf::AutomaticContactTexelHalvings; // auto
   double budget = 0.0, tolerance = 0.0;
   // "auto" is 0: vlf::ResolveAutomaticSettings chooses once the scene is read.
   const auto getCount = [&](const char* name, int low, int high, int& value)
@@ -412,11 +412,8 @@ int Propagate(const std::vector<std::string>& args)
       settings.RaysPerSide = rays;
       settings.TilesPerSide = tiles;
       settings.MemoryBudget = budgetBytes;
-      vlf::AutomaticChoice choice = vlf::ResolveAutomaticSettings(scene, settings, gather);
-      if (contactHalvings >= 0)
-      {
-        choice.Settings.ContactTexelHalvings = contactHalvings; // given: kept
-      }
+      const vlf::AutomaticChoice choice =
+        vlf::ResolveAutomaticSettings(scene, settings, gather, contactHalvings);
       settings = choice.Settings;
       if (rays == 0)
       {

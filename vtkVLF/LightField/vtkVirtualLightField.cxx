@@ -213,6 +213,12 @@ int vtkVirtualLightField::RequestData(
                                  << this->MemoryBudget << ") positive.");
     return 0;
   }
+  const std::string contactProblem = this->CheckContactTexelHalvings();
+  if (!contactProblem.empty())
+  {
+    vtkErrorMacro(<< contactProblem);
+    return 0;
+  }
   vlf::LightFieldSettings settings;
   settings.Directions = static_cast<std::size_t>(this->Directions);
   settings.RaysPerSide = this->RaysPerSide;
@@ -238,7 +244,9 @@ int vtkVirtualLightField::RequestData(
     }
     else
     {
-      settings = vlf::ResolveAutomaticSettings(scene, settings, this->FinalGather).Settings;
+      const vlf::AutomaticChoice choice = vlf::ResolveAutomaticSettings(
+        scene, settings, this->FinalGather, this->ContactTexelHalvings);
+      settings = choice.Settings;
       field = vlf::LightField::Build(
         scene, settings, mesolight::AlgorithmProgress(this, 0.0, buildShare));
     }
@@ -482,12 +490,19 @@ int vtkVirtualLightField::RequestDistributedData(vtkPolyData* input, vtkPolyData
           throw std::invalid_argument("Directions and RaysPerSide must be positive or 0 "
                                       "(automatic), MemoryBudget positive");
         }
+        const std::string contactProblem = this->CheckContactTexelHalvings();
+        if (!contactProblem.empty())
+        {
+          throw std::invalid_argument(contactProblem);
+        }
         settings.Directions = static_cast<std::size_t>(this->Directions);
         settings.RaysPerSide = this->RaysPerSide;
         settings.TilesPerSide = this->Tiles;
         settings.MemoryBudget = static_cast<std::uint64_t>(this->MemoryBudget);
         // Every rank has the whole scene here and chooses alike.
-        settings = vlf::ResolveAutomaticSettings(scene, settings, this->FinalGather).Settings;
+        const vlf::AutomaticChoice choice = vlf::ResolveAutomaticSettings(
+          scene, settings, this->FinalGather, this->ContactTexelHalvings);
+        settings = choice.Settings;
         if (snapshots && vlf::FileExists(this->SnapshotFileName) &&
           !vlf::IsSnapshotFile(this->SnapshotFileName))
         {
@@ -631,6 +646,19 @@ vtkFloatArray* vtkVirtualLightField::GetAttachedAtlas(vtkDataObject* data, int s
   return pixels;
 }
 
+std::string vtkVirtualLightField::CheckContactTexelHalvings() const
+{
+  namespace vlf = mesolight::vlf;
+  if (this->ContactTexelHalvings >= vlf::AutomaticContactTexelHalvings &&
+    this->ContactTexelHalvings <= vlf::MaxContactTexelHalvings)
+  {
+    return std::string();
+  }
+  return "ContactTexelHalvings " + std::to_string(this->ContactTexelHalvings) + " is outside [0, " +
+    std::to_string(vlf::MaxContactTexelHalvings) +
+    "] (texels halved that many times where surfaces meet; -1: automatic).";
+}
+
 void vtkVirtualLightField::GatherIfAsked(
   mesolight::vlf::LightField& field, double begin, mesolight::vlf::Reducer* reducer)
 {
@@ -666,6 +694,11 @@ void vtkVirtualLightField::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "DistributeDirections: " << this->DistributeDirections << "\n";
   os << indent << "FinalGather: " << this->FinalGather << "\n";
   os << indent << "FinalGatherRays: " << this->FinalGatherRays << "\n";
+  os << indent << "ContactTexelHalvings: " << this->ContactTexelHalvings
+     << (this->ContactTexelHalvings == mesolight::vlf::AutomaticContactTexelHalvings
+            ? " (automatic)"
+            : "")
+     << "\n";
   os << indent << "PropagationCount: " << this->PropagationCount << "\n";
   os << indent << "LightField: "
      << (this->Field ? std::to_string(this->Field->IterationsDone) + " iterations done" : "(none)")

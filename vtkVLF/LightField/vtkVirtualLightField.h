@@ -137,6 +137,21 @@ public:
   ///@}
 
   ///@{
+  /**
+   * Finer texels where surfaces meet (mesolight::vlf::LightFieldSettings::ContactTexelHalvings):
+   * on the surfaces other surfaces stand on (a floor under a box, a wall behind a rib) the texels
+   * are halved this many times (0-3), so a contact shadow narrower than a texel is not smeared
+   * into the light beside it. -1 (default): automatic, as `mesolight vlf propagate
+   * --contact-texels auto` (mesolight::vlf::ResolveAutomaticSettings): one halving with
+   * FinalGather, 2049 directions or more and automatic lines, when it fits half the
+   * MemoryBudget; none otherwise. 0-3 is kept whatever the rest; anything else fails the update
+   * with an error. A resumed snapshot keeps the texels it was traced with.
+   */
+  vtkSetMacro(ContactTexelHalvings, int);
+  vtkGetMacro(ContactTexelHalvings, int);
+  ///@}
+
+  ///@{
   /** Memory budget in bytes (default 4 GiB). */
   vtkSetMacro(MemoryBudget, vtkTypeInt64);
   vtkGetMacro(MemoryBudget, vtkTypeInt64);
@@ -255,7 +270,10 @@ private:
   bool ResumeFromSnapshot = false;
   bool DistributeDirections = true;
   bool FinalGather = true;
-  int FinalGatherRays = 1024; // mesolight::vlf::FinalGatherOptions::IndirectRays
+  int FinalGatherRays = 1024;    // mesolight::vlf::FinalGatherOptions::IndirectRays
+  int ContactTexelHalvings = -1; // mesolight::vlf::AutomaticContactTexelHalvings
+  // The sentence refusing ContactTexelHalvings outside [-1, 3], empty when it is in range.
+  std::string CheckContactTexelHalvings() const;
   // The final gather (when on) with progress from `begin` to 1, then the snapshot written again;
   // with a reducer (a distributed field) split over the ranks (collective).
   void GatherIfAsked(

@@ -135,14 +135,19 @@ void FillProbesImage(vtkImageData* image, const std::vector<float>& values, int 
   image->GetPointData()->GetScalars()->SetName("IrradianceProbes");
 }
 
-// The scene's visibility of the field's emitter lights from the surface's n x n probes.
-std::vector<float> LightVisibility(
-  const vlf::LightField& field, const vlf::ReliefSurface& surface, int n)
+// The scene's visibility of the field's emitter lights from the surface's n x n probes, traced
+// in `lent` (an Embree scene of field.Scene()) when given, else in a scene built here.
+std::vector<float> LightVisibility(const vlf::LightField& field, const vlf::ReliefSurface& surface,
+  int n, const mesolight::EmbreeScene* lent = nullptr)
 {
   std::vector<glm::vec3> lights;
   for (const vlf::EmitterLight& light : vlf::EstimateEmitterLights(field).Lights)
   {
     lights.push_back(light.Position);
+  }
+  if (lent)
+  {
+    return vlf::EmitterLightVisibility(field, *lent, surface, lights, n, n);
   }
   const mesolight::EmbreeScene embree(field.Scene());
   return vlf::EmitterLightVisibility(field, embree, surface, lights, n, n);
@@ -288,6 +293,10 @@ struct vtkLightFieldReliefSurface::vtkInternals
   // shadow by the relief the map holds as a fourth value; empty: not in the map (the relief
   // mapper marches one shadow ray to the light).
   std::vector<mesolight::ReliefEmitterSample> LightSamples;
+
+  // An Embree scene of LentFor's scene, lent (vtkLightFieldReliefSurfaceCore::LendEmbreeScene).
+  std::shared_ptr<const mesolight::EmbreeScene> LentEmbree;
+  const vlf::LightField* LentFor = nullptr; // compared only
 };
 
 vtkStandardNewMacro(vtkLightFieldReliefSurface);
@@ -574,7 +583,8 @@ int vtkLightFieldReliefSurface::RequestData(
   this->Internals->LightSamples.clear();
   if (this->SceneOcclusion)
   {
-    visibility = LightVisibility(*field, surface, n);
+    visibility = LightVisibility(*field, surface, n,
+      this->Internals->LentFor == field ? this->Internals->LentEmbree.get() : nullptr);
     // The relief's own shadow of the first emitter light's area, in the visible-share map: a
     // point light's hard shadow is not the emitter's penumbra (ReliefEmitterShadowMap).
     std::vector<glm::vec3> lights;
@@ -610,6 +620,17 @@ const std::vector<mesolight::SH9>* vtkLightFieldReliefSurfaceCore::GetProbes(
   const vtkLightFieldReliefSurface* surface)
 {
   return surface ? surface->NamedProbes.get() : nullptr;
+}
+
+//------------------------------------------------------------------------------
+void vtkLightFieldReliefSurfaceCore::LendEmbreeScene(vtkLightFieldReliefSurface* surface,
+  const mesolight::vlf::LightField* field, std::shared_ptr<const mesolight::EmbreeScene> scene)
+{
+  if (surface)
+  {
+    surface->Internals->LentFor = scene ? field : nullptr;
+    surface->Internals->LentEmbree = std::move(scene);
+  }
 }
 
 //------------------------------------------------------------------------------

@@ -157,6 +157,18 @@ public:
   vtkBooleanMacro(SceneOcclusion, bool);
   ///@}
 
+  /**
+   * Adds the visible-share map of the relief texture (SetReliefTextureData, ReliefDepthScale,
+   * WalledRelief) over a texture frame (origin, u axis, v axis, unit normal: the field's unit
+   * sphere in an update) to a probe image, as port 1 gets it (vtkIrradianceProbesTexture's
+   * visible-share arrays, mesolight::vlf::ReliefVisibleShareGrid), computed once per texture,
+   * depth scale and frame and kept. It needs no field: `mesolight bench relief-field-cost` adds
+   * the map to probes of its own this way. True when added or when there is nothing to add (no
+   * texture, depth scale 0, or a texture without depth: vtkErrorMacro says so); false when
+   * stopped (AbortExecute).
+   */
+  bool AddVisibleShare(vtkImageData* probes, const double frame[12]);
+
   /** Probe gatherings and visible-share maps computed so far (tests check what is kept). */
   vtkGetMacro(ProbeComputations, int);
   vtkGetMacro(VisibleShareComputations, int);
@@ -213,9 +225,6 @@ private:
   vtkLightFieldReliefSurface(const vtkLightFieldReliefSurface&) = delete;
   // The route of input port 1 (any planar surface), MPI included.
   int RequestSurfaceData(vtkPolyData* input, vtkPolyData* output, vtkImageData* probesOutput);
-  // Adds the visible-share map of the relief texture over the texture frame (unit sphere:
-  // origin, u axis, v axis, normal) to the probes: false when stopped.
-  bool AddVisibleShare(vtkImageData* probesOutput, const double frame[12]);
   // Where the map's share of the progress starts (the probes report before it): 0.5 when there
   // is a map to make, else 1.
   double MapProgress() const;

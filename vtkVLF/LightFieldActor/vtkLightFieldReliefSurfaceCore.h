@@ -14,7 +14,17 @@
 #include "MesolightLightFieldActorModule.h" // For export macro
 #include "vtkLightFieldReliefSurface.h"
 
+#include <memory> // For std::shared_ptr
 #include <vector>
+
+namespace mesolight
+{
+class EmbreeScene;
+namespace vlf
+{
+class LightField;
+}
+}
 
 class MESOLIGHTLIGHTFIELDACTOR_EXPORT vtkLightFieldReliefSurfaceCore
 {
@@ -26,6 +36,15 @@ public:
    * before, after a failed or stopped update, and for a surface of input port 1.
    */
   static const std::vector<mesolight::SH9>* GetProbes(const vtkLightFieldReliefSurface* surface);
+
+  /**
+   * Lends the surface an Embree scene of `field`'s scene (unit sphere, field->Scene()) for its
+   * SceneOcclusion, which otherwise builds its own every update: the walkthrough builds one for
+   * its reliefs' emitter visibility and its mirrors' relief tracing (application/
+   * LightFieldReliefs.cxx). Used only while the surface's field is `field`; null returns it.
+   */
+  static void LendEmbreeScene(vtkLightFieldReliefSurface* surface,
+    const mesolight::vlf::LightField* field, std::shared_ptr<const mesolight::EmbreeScene> scene);
 };
 
 #endif

@@ -31,7 +31,6 @@ from paraview import servermanager  # noqa: E402
 from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: E402
 
 SIZE = 300
-EYE, FOCAL, VIEW_ANGLE = [278.0, 273.0, -800.0], [278.0, 273.0, 0.0], 39.3077
 MAX_MEAN_ERROR = 2.0  # 8-bit levels over the compared pixels
 
 t.load_plugin()
@@ -46,15 +45,7 @@ box = pvs.MesolightCornellBox()
 field = pvs.MesolightVirtualLightField(Input=box, Directions=513, RaysPerSide=32, Iterations=4,
                                        SnapshotFileName=snapshot)
 
-view = pvs.CreateView("RenderView")
-view.ViewSize = [SIZE, SIZE]
-view.OrientationAxesVisibility = 0
-view.UseColorPaletteForBackground = 0
-view.Background = [0.0, 0.0, 0.0]  # the reference's misses are black
-view.UseFXAA = 0
-view.CameraPosition, view.CameraFocalPoint = EYE, FOCAL
-view.CameraViewUp = [0.0, 1.0, 0.0]
-view.CameraViewAngle = VIEW_ANGLE
+view = t.make_cornell_view(SIZE)  # black: the reference's misses are black
 
 display = pvs.Show(field, view)  # what Apply does
 print("representation on Apply: %s" % display.Representation)
@@ -64,18 +55,16 @@ check(not display.ColorArrayName[1], "Apply colours by no array (no colour map, 
 
 
 def capture(name):
-    pvs.Render(view)
-    path = os.path.join(out, name)
-    pvs.SaveScreenshot(path, view, ImageResolution=[SIZE, SIZE], TransparentBackground=0)
-    return t.capture_file(path)
+    return t.cornell_capture(view, os.path.join(out, name))
 
 
 def reference(exposure):
     tool = os.environ.get("MESOLIGHT_TOOL", "")
     path = os.path.join(out, "pv-light-field-reference-%g.png" % exposure)
     command = [tool, "vlf", "render", snapshot, "--out", path, "--force",
-               "--size", "%dx%d" % (SIZE, SIZE), "--view-angle", str(VIEW_ANGLE),
-               "--camera", ",".join(str(v) for v in EYE + FOCAL), "--exposure", str(exposure)]
+               "--size", "%dx%d" % (SIZE, SIZE), "--view-angle", str(t.CORNELL_VIEW_ANGLE),
+               "--camera", ",".join(str(v) for v in t.CORNELL_EYE + t.CORNELL_FOCAL),
+               "--exposure", str(exposure)]
     print(" ".join(command))
     subprocess.run(command, check=True)
     return t.capture_file(path)

@@ -27,7 +27,6 @@ from paraview import servermanager  # noqa: E402
 from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: E402
 
 SIZE = 300
-EYE, FOCAL, VIEW_ANGLE = [278.0, 273.0, -800.0], [278.0, 273.0, 0.0], 39.3077
 EXPOSURE = 4.0
 # Above the short block: clear of every surface (the actor warns otherwise); its shadow falls on
 # the block and the floor.
@@ -50,15 +49,7 @@ moved = pvs.Transform(Input=sphere)
 moved.Transform.Translate = CENTRE
 gather = pvs.MesolightLightFieldGather(Input=moved, LightField=field)
 
-view = pvs.CreateView("RenderView")
-view.ViewSize = [SIZE, SIZE]
-view.OrientationAxesVisibility = 0
-view.UseColorPaletteForBackground = 0
-view.Background = [0.0, 0.0, 0.0]
-view.UseFXAA = 0
-view.CameraPosition, view.CameraFocalPoint = EYE, FOCAL
-view.CameraViewUp = [0.0, 1.0, 0.0]
-view.CameraViewAngle = VIEW_ANGLE
+view = t.make_cornell_view(SIZE)
 
 scene = pvs.Show(field, view)
 obj = pvs.Show(gather, view)  # what Apply does
@@ -69,10 +60,7 @@ check(not obj.ColorArrayName[1], "Apply colours the gathered surface by no array
 
 
 def capture(name):
-    pvs.Render(view)
-    path = os.path.join(out, name)
-    pvs.SaveScreenshot(path, view, ImageResolution=[SIZE, SIZE], TransparentBackground=0)
-    return t.capture_file(path).astype(np.float64)
+    return t.cornell_capture(view, os.path.join(out, name)).astype(np.float64)
 
 
 # --- the object as Apply shows it: the scene's automatic exposure, Reinhard -------------------
@@ -89,7 +77,7 @@ gathered = servermanager.Fetch(gather)
 radiance = vtk_to_numpy(gathered.GetPointData().GetArray("Radiance")).astype(np.float64)
 normals = vtk_to_numpy(gathered.GetPointData().GetNormals()).astype(np.float64)
 points = vtk_to_numpy(gathered.GetPoints().GetData()).astype(np.float64)
-facing = np.einsum("ij,ij->i", normals, np.array(EYE) - points) > 0
+facing = np.einsum("ij,ij->i", normals, np.array(t.CORNELL_EYE) - points) > 0
 v = key * radiance[facing]
 expected = t.srgb_encode(v / (1.0 + v)).mean()
 level = alone[covered].mean()
@@ -122,8 +110,8 @@ def reference(shadows):
     command = [os.environ["MESOLIGHT_TOOL"], "vlf", "render", snapshot, "--mode", "progressive",
                "--object", obj_file, "--object-transform", "0,0,0", "--shadows", shadows,
                "--out", path, "--force", "--size", "%dx%d" % (SIZE, SIZE),
-               "--view-angle", str(VIEW_ANGLE),
-               "--camera", ",".join(str(c) for c in EYE + FOCAL),
+               "--view-angle", str(t.CORNELL_VIEW_ANGLE),
+               "--camera", ",".join(str(c) for c in t.CORNELL_EYE + t.CORNELL_FOCAL),
                "--exposure", str(EXPOSURE), "--tone-map", "clamp"]
     print(" ".join(command))
     subprocess.run(command, check=True)

@@ -181,8 +181,8 @@ AutomaticChoice ChooseAutomaticSettings(const TriangleScene& scene, const Automa
   return choice;
 }
 
-AutomaticChoice ResolveAutomaticSettings(
-  const TriangleScene& scene, const LightFieldSettings& requested, bool finalGather)
+AutomaticChoice ResolveAutomaticSettings(const TriangleScene& scene,
+  const LightFieldSettings& requested, bool finalGather, int contactTexelHalvings)
 {
   AutomaticChoice choice;
   if (requested.RaysPerSide == 0)
@@ -224,6 +224,10 @@ AutomaticChoice ResolveAutomaticSettings(
     {
       s.ContactTexelHalvings = choice.Settings.ContactTexelHalvings;
     }
+  }
+  if (contactTexelHalvings != AutomaticContactTexelHalvings)
+  {
+    s.ContactTexelHalvings = contactTexelHalvings; // given: kept
   }
   choice.Settings = s;
   return choice;

@@ -117,9 +117,15 @@ std::size_t AutomaticDirections(int raysPerSide);
 // the choice (Describe() for a log line; Limit "given" when nothing was automatic).
 // finalGather false: the field's textures are used as propagated (FineTexelRatio
 // GatherlessFineTexelRatio, no contact halvings: a propagated texel finer than the lines is a
-// lottery of the few lines crossing it).
-AutomaticChoice ResolveAutomaticSettings(
-  const TriangleScene& scene, const LightFieldSettings& requested, bool finalGather = true);
+// lottery of the few lines crossing it). contactTexelHalvings 0 to MaxContactTexelHalvings is
+// kept whatever the rest (`vlf propagate --contact-texels H`,
+// vtkVirtualLightField::ContactTexelHalvings); AutomaticContactTexelHalvings leaves it to the
+// rules above (`--contact-texels auto`, the property's -1); other values reach the settings,
+// whose Validate refuses them.
+constexpr int AutomaticContactTexelHalvings = -1;
+AutomaticChoice ResolveAutomaticSettings(const TriangleScene& scene,
+  const LightFieldSettings& requested, bool finalGather = true,
+  int contactTexelHalvings = AutomaticContactTexelHalvings);
 
 } // namespace vlf
 } // namespace mesolight

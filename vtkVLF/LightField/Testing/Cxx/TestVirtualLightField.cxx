@@ -3,14 +3,18 @@
 // "Radiance" (the light at its emission plus what it reflects, the walls lit), progress and
 // abort, a clear error over the memory budget, snapshots written / resumed / never over a
 // foreign file, the irradiance query, PrintSelf; the radiance atlas it attaches for drawing
-// (bilinear at each vertex's atlas coordinates = the vertex's Radiance); an empty parallel piece.
+// (bilinear at each vertex's atlas coordinates = the vertex's Radiance); an empty parallel piece;
+// ContactTexelHalvings on a box standing on a floor.
 #include "vtkVirtualLightFieldCore.h"
 
+#include "AutomaticSettings.h"
 #include "LightField.h"
 #include "MessageCapture.h"
 #include "Propagation.h"
 #include "TriangleScene.h"
+#include "VLFTestScenes.h"
 #include "vtkCornellBoxSource.h"
+#include "vtkTriangleSceneConverter.h"
 
 #include <vtkCell.h>
 #include <vtkCellData.h>
@@ -374,4 +378,114 @@ TEST(VLFVirtualLightField, AutomaticDirectionsFollowTheLines)
   filter->Update();
   EXPECT_TRUE(messages->HasError("must be positive or 0 (automatic)")) << messages->AllErrors();
   EXPECT_EQ(vtkVirtualLightFieldCore::GetLightField(filter), nullptr);
+}
+
+// ContactTexelHalvings (LightFieldSettings::ContactTexelHalvings) on a box standing on a floor:
+// each halving multiplies the texels of the floor (the one surface something stands on) by about
+// four and leaves every other surface's alone; -1 (the default) resolves as `mesolight vlf
+// propagate --contact-texels auto` does (ResolveAutomaticSettings: none with given lines, one
+// with automatic lines and the gather, where a filter reading -1 as 0 fails); a value outside
+// [-1, 3] is an error and no field.
+TEST(VLFVirtualLightField, ContactTexelHalvingsRefineTheFloorUnderABox)
+{
+  using namespace mesolight;
+  TriangleScene scene = vlf::MakeEmitterOverFloor(0.4f, 1.0f, 2.0f, 0.5f, 10.0f);
+  SceneMaterial white;
+  white.Name = "box";
+  white.Diffuse = glm::vec3(0.5f);
+  vlftest::AddBox(scene, glm::vec3(0.3f, -0.06f, 0.0f), glm::vec3(0.42f, 0.06f, 0.1f),
+    scene.AddMaterial(white), false);
+  vtkNew<vtkTriangleSceneConverter> converter;
+  vtkSmartPointer<vtkPolyData> input = converter->ToPolyData(scene);
+
+  vtkNew<vtkVirtualLightField> filter;
+  EXPECT_EQ(filter->GetContactTexelHalvings(), -1);
+  filter->SetInputData(input);
+  filter->SetDirections(513);
+  filter->SetRaysPerSide(32);
+  filter->SetTiles(4);
+  filter->SetIterations(0);
+  filter->SetFinalGather(false);
+  // Each surface's texel count in the field of the last update.
+  const auto texels = [&]()
+  {
+    std::vector<std::size_t> counts;
+    const vlf::LightField* field = vtkVirtualLightFieldCore::GetLightField(filter);
+    for (const vlf::Surface& s : field ? field->Surfaces() : std::vector<vlf::Surface>())
+    {
+      counts.push_back(s.TexelCount());
+    }
+    return counts;
+  };
+  std::vector<std::vector<std::size_t>> perHalving;
+  for (int halvings = 0; halvings <= 2; ++halvings)
+  {
+    filter->SetContactTexelHalvings(halvings);
+    filter->Update();
+    ASSERT_NE(vtkVirtualLightFieldCore::GetLightField(filter), nullptr);
+    EXPECT_EQ(
+      vtkVirtualLightFieldCore::GetLightField(filter)->Settings().ContactTexelHalvings, halvings);
+    perHalving.push_back(texels());
+  }
+  ASSERT_EQ(perHalving[0].size(), perHalving[1].size());
+  ASSERT_EQ(perHalving[0].size(), perHalving[2].size());
+  int finer = 0;
+  for (std::size_t i = 0; i < perHalving[0].size(); ++i)
+  {
+    const double once = static_cast<double>(perHalving[1][i]) / perHalving[0][i];
+    const double twice = static_cast<double>(perHalving[2][i]) / perHalving[0][i];
+    if (once != 1.0 || twice != 1.0)
+    {
+      ++finer;
+      std::cout << "surface " << i << ": " << perHalving[0][i] << " texels, halved once "
+                << perHalving[1][i] << ", twice " << perHalving[2][i] << "\n";
+      EXPECT_GE(once, 3.0);
+      EXPECT_LE(once, 5.0);
+      EXPECT_GE(twice, 12.0);
+      EXPECT_LE(twice, 20.0);
+    }
+  }
+  EXPECT_EQ(finer, 1); // the floor
+
+  // -1: as the command line's auto. Lines given: no halving (the uniform texels).
+  filter->SetContactTexelHalvings(-1);
+  filter->Update();
+  EXPECT_EQ(texels(), perHalving[0]);
+  // Automatic lines with the gather: the command line's choice, one halving on this scene. (No
+  // iterations and one gather ray: only the settings matter here.)
+  filter->SetDirections(0);
+  filter->SetRaysPerSide(0);
+  filter->SetTiles(0);
+  filter->SetFinalGather(true);
+  filter->SetFinalGatherRays(1);
+  filter->Update();
+  ASSERT_NE(vtkVirtualLightFieldCore::GetLightField(filter), nullptr);
+  vlf::LightFieldSettings requested;
+  requested.Directions = 0;
+  requested.RaysPerSide = 0;
+  requested.TilesPerSide = 0;
+  requested.MemoryBudget = static_cast<std::uint64_t>(filter->GetMemoryBudget());
+  const vlf::AutomaticChoice commandLine = vlf::ResolveAutomaticSettings(scene, requested, true,
+    vlf::AutomaticContactTexelHalvings); // VlfPropagateCommand.cxx, `--contact-texels auto`
+  const vlf::LightFieldSettings& chosen =
+    vtkVirtualLightFieldCore::GetLightField(filter)->Settings();
+  std::cout << "automatic: " << commandLine.Describe() << "\n";
+  EXPECT_EQ(commandLine.Settings.ContactTexelHalvings, 1);
+  EXPECT_EQ(chosen.ContactTexelHalvings, commandLine.Settings.ContactTexelHalvings);
+  EXPECT_EQ(chosen.Directions, commandLine.Settings.Directions);
+  EXPECT_EQ(chosen.RaysPerSide, commandLine.Settings.RaysPerSide);
+
+  // Outside [-1, 3]: an error, no field.
+  for (const int bad : { -2, vlf::MaxContactTexelHalvings + 1 })
+  {
+    filter->SetContactTexelHalvings(bad);
+    vtkNew<MessageCapture> messages;
+    messages->Watch(filter);
+    filter->Update();
+    EXPECT_TRUE(messages->HasError("ContactTexelHalvings")) << messages->AllErrors();
+    EXPECT_EQ(vtkVirtualLightFieldCore::GetLightField(filter), nullptr);
+  }
+  std::ostringstream printed;
+  filter->Print(printed);
+  EXPECT_NE(printed.str().find("ContactTexelHalvings: 4"), std::string::npos);
 }
