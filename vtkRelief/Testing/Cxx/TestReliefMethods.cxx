@@ -239,6 +239,30 @@ TEST(ReliefMethodHits, MaxMipmapExactOnOddPyramidSizes)
     << "relief 10+8: mean " << relief.MeanTexels << ", p99 " << relief.P99Texels;
 }
 
+// The level-0 step of maximum-mipmap tracing (vtkReliefMaxMipmapFS.glsl) intersects the ray
+// with one cell's bilinear patch exactly. On a coarse map drawn large (a 16^2 stone, about 20
+// pixels per texel head-on) an error inside the cell spans many pixels, so the hits must match
+// the exact intersector to a small fraction of a texel at 70 and 85 degrees: a level-0 step that
+// took the cell's highest corner for the surface, or a patch test on a wrong interval, errs by a
+// good part of a texel. Measured at 70 / 85 degrees: mean 0.00002 / 0.00009 texel, p99 0.0001 /
+// 0.0004; with the patch test replaced by "the ray reached the highest corner: hit" 0.32 / 1.1,
+// p99 3.0 / 6.5. The linear search without refinement (64 + 0), whose hits lie up to a step past
+// the surface, must fail the same bound (negative case; 0.040 / 0.26, p99 0.09 / 4.5).
+TEST(ReliefMethodHits, MaxMipmapExactInsideTheTexel)
+{
+  for (const double angle : { 70.0, 85.0 })
+  {
+    const HitComparison exact =
+      MeasureHits(MethodCase{ "max-mipmap", 64, 0, angle, -1.0 }, "Stone", 16);
+    EXPECT_LE(exact.MeanTexels, 0.01) << angle;
+    EXPECT_LE(exact.P99Texels, 0.02) << angle;
+    const HitComparison linear =
+      MeasureHits(MethodCase{ "linear", 64, 0, angle, -1.0 }, "Stone", 16);
+    EXPECT_TRUE(linear.MeanTexels > 0.01 || linear.P99Texels > 0.02)
+      << angle << ", linear 64+0: mean " << linear.MeanTexels << ", p99 " << linear.P99Texels;
+  }
+}
+
 // The non-iterative and unsafe methods where they are meant to work (a moderate 30 degrees from
 // the normal) and at a grazing 75 degrees: bounds on their mean hit error at 30 degrees, and the
 // ordering their designs promise -- each beats plain texture mapping, iterating parallax beats
