@@ -390,7 +390,8 @@ TEST(ReliefLevelOfDetail, ShadowsTheFacetsWithinAFarFootprint)
   options.ViewAngle = 45.0;
   options.ViewDistance = 2.0;
   options.LightElevation = 5.0;
-  const FilterErrors e = ErrorsOfTheFilters(options, "far rough wall under a grazing light, shadowed");
+  const FilterErrors e =
+    ErrorsOfTheFilters(options, "far rough wall under a grazing light, shadowed");
   ASSERT_GT(e.On.Pixels, Width * Height / 8) << "the wall should fill much of the view";
   // Measured 3.24 (default), 3.48 (the default without the footprint's shadowing, the default
   // before), 4.26 (mean normal filter) and 3.81 (off) levels: the bound lies 3% above the
