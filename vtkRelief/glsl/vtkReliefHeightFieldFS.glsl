@@ -76,6 +76,14 @@ float mlSpecularPowerScale = 1.0;
 // moments' covariance as a lobe, as LEAN mapping, Olano and Baker 2010, uses it for the
 // highlight). Phi: 1/2 + tanh(0.798 (x + 0.0447 x^3)) / 2, within 1.8e-4 of the normal CDF.
 mat3 mlNormalSpreadVC = mat3(0.0);
+float mlNormalCdf(float x)
+{
+  return 0.5 + 0.5 * tanh(0.7978845608 * (x + 0.044715 * x * x * x));
+}
+float mlNormalPdf(float x)
+{
+  return 0.3989422804 * exp(-0.5 * x * x);
+}
 float mlFilteredLambert(vec3 m, vec3 l)
 {
   float mu = mlNormalLength * dot(m, l);
@@ -86,8 +94,41 @@ float mlFilteredLambert(vec3 m, vec3 l)
   }
   float sigma = sqrt(variance);
   float x = mu / sigma;
-  float cdf = 0.5 + 0.5 * tanh(0.7978845608 * (x + 0.044715 * x * x * x));
-  return mu * cdf + sigma * 0.3989422804 * exp(-0.5 * x * x);
+  return mu * mlNormalCdf(x) + sigma * mlNormalPdf(x);
+}
+
+// The share of the footprint's facets facing direction l (towards a light, view coordinates)
+// that its own relief leaves unshadowed: Smith's shadowing function for a Gaussian (Beckmann)
+// distribution of slopes, G1 = 1 / (1 + Lambda(a)), Lambda(a) = (erf(a) - 1) / 2 +
+// exp(-a^2) / (2 a sqrt(pi)), a = 1 / (sqrt(2) sigma tan(theta)) with sigma the slopes' spread
+// along l's azimuth and theta its angle from the macro normal (Smith 1967, "Geometrical
+// shadowing of a random rough surface"; Heitz 2014, "Understanding the masking-shadowing
+// function in microfacet-based BRDFs"). The spread is the moments' (mlNormalSpreadVC; the
+// normals' spread across the azimuth stands for the slopes'), so near, where it is zero, the
+// factor is 1. The clamped Lambert term (mlFilteredLambert) drops the facets turned from the
+// light; this drops the share of the ones facing it that their neighbours within the footprint
+// hide, which the far shadow ray, starting half a footprint towards the light
+// (mlShadowVisibility), does not see.
+vec3 mlMacroNormalVC = vec3(0.0, 0.0, 1.0);
+float mlFootprintShadowing(vec3 l)
+{
+  float c = dot(l, mlMacroNormalVC);
+  vec3 d = l - mlMacroNormalVC * c;
+  float sine = length(d);
+  if (c <= 1e-4 || sine < 1e-4)
+  {
+    return 1.0;
+  }
+  d /= sine;
+  float variance = dot(d, mlNormalSpreadVC * d);
+  if (variance <= 1e-8)
+  {
+    return 1.0;
+  }
+  float a = c / (sine * sqrt(2.0 * variance));
+  // erf(a) = 2 Phi(a sqrt 2) - 1
+  float lambda = mlNormalCdf(1.4142135624 * a) - 1.0 + exp(-a * a) / (3.5449077018 * a);
+  return 1.0 / (1.0 + max(lambda, 0.0));
 }
 
 // Relief-texture samples this fragment took (SampleCountOutput): what a march costs on any GPU.

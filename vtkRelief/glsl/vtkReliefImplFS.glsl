@@ -150,6 +150,7 @@
       mlNormalLength = mix(1.0, clamp(len, 1e-3, 1.0), blend);
       mat3 mlFrame = mat3(T, B, mlN);
       mlNormalSpreadVC = (blend * blend) * (mlFrame * mlNormalSpread * transpose(mlFrame));
+      mlMacroNormalVC = mlN;
       // Toksvig's factor for the highlight of the spread: ft = |n| / (|n| + s (1 - |n|)).
       mlSpecularPowerScale =
         mlNormalLength / (mlNormalLength + mlSpecularPower * (1.0 - mlNormalLength));

@@ -61,7 +61,8 @@ float mlLightArrival(int i, vec3 posVC, out vec3 lightDir)
 // shadow map's test over a filter's area. Measured on three real maps at 45 and 80 degrees
 // against lifts of 0 (the hit, refinement's bracket higher), 0.5 and 1 footprint and a hard
 // test (docs/relief-methods.md, "Aliasing"). Cone and maximum-mipmap shadow marches report no
-// clearance and stay hard from the lifted start.
+// clearance and stay hard from the lifted start. The shadows the footprint's facets cast on
+// each other, which the lifted ray does not see, come from the moments (mlFootprintShadowing).
 float mlShadowVisibility(vec3 hit, vec3 spanUpPerDepth)
 {
 #if defined(ML_LEVEL_OF_DETAIL) && !defined(ML_CURVED)
@@ -128,6 +129,10 @@ void mlAccumulateLights(vec3 posVC, vec3 normalVC, vec3 hit, mat3 worldToTexture
     {
       continue;
     }
+#ifdef ML_VISIBLE_NORMALS
+    // The facets of the footprint shadowed by its own relief (mlFootprintShadowing).
+    visible *= marchShadows ? mlFootprintShadowing(-lightDir) : 1.0;
+#endif
     df *= visible;
     attenuation *= visible;
 #endif
