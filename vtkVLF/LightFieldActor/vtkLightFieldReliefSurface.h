@@ -54,8 +54,12 @@
  *   indirect light and its multi-bounce inter-reflection. Without it, and at depth scale 0 (a
  *   flat relief hides nothing), V = 1 (no occlusion). A change of the relief texture, its depth
  *   scale or WalledRelief recomputes the map only: for a surface of input port 1 the probes of
- *   an unchanged field and surface are kept. Under MPI every rank computes the same map from
- *   the shared texture frame (no communication; a rank whose map is stopped has empty outputs).
+ *   an unchanged field and surface are kept. Under MPI (a surface of input port 1) the ranks
+ *   split the map's rows, every ranks-th row each, and two sums over the ranks give every rank
+ *   the whole map, the one-rank map bit for bit (mesolight::vlf::ReliefVisibleShareGrid with a
+ *   Reducer, the final gather's convention; GetVisibleShareRanks()); when the ranks' relief
+ *   textures differ in size (a rank without one) each rank makes its own map instead. A stop on
+ *   one rank stops all (empty outputs on every rank).
  *
  * GetSurfaceDiffuse() is the surface's Kd (the relief actor's colour). An unknown name (the
  * message lists the scene's surfaces), a non-planar surface without texture coordinates, a
@@ -161,6 +165,11 @@ public:
   vtkGetMacro(ProbeComputations, int);
   vtkGetMacro(VisibleShareComputations, int);
 
+  /** The ranks the last visible-share map was split over (1: computed whole) and the seconds it
+   * took this rank, sums over the ranks included (0 before the first map). */
+  vtkGetMacro(VisibleShareRanks, int);
+  vtkGetMacro(VisibleShareSeconds, double);
+
   /** The probe image (output port 1). */
   vtkImageData* GetProbesOutput();
 
@@ -214,8 +223,10 @@ private:
   // The route of input port 1 (any planar surface), MPI included.
   int RequestSurfaceData(vtkPolyData* input, vtkPolyData* output, vtkImageData* probesOutput);
   // Adds the visible-share map of the relief texture over the texture frame (unit sphere:
-  // origin, u axis, v axis, normal) to the probes: false when stopped.
-  bool AddVisibleShare(vtkImageData* probesOutput, const double frame[12]);
+  // origin, u axis, v axis, normal) to the probes: false when stopped. With a controller of
+  // several ranks (collective: every rank calls it) the ranks split the map's rows.
+  bool AddVisibleShare(vtkImageData* probesOutput, const double frame[12],
+    vtkMultiProcessController* controller = nullptr);
   // Where the map's share of the progress starts (the probes report before it): 0.5 when there
   // is a map to make, else 1.
   double MapProgress() const;
@@ -231,6 +242,8 @@ private:
   bool SceneOcclusion = false;
   int ProbeComputations = 0;
   int VisibleShareComputations = 0;
+  int VisibleShareRanks = 0;
+  double VisibleShareSeconds = 0.0;
   struct vtkInternals; // what the last update computed, kept while its inputs do not change
   std::unique_ptr<vtkInternals> Internals;
   double SurfaceDiffuse[3] = { 0.0, 0.0, 0.0 };

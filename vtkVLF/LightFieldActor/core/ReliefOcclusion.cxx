@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "ReliefOcclusion.h"
 
+#include "Distribution.h" // Reducer, Agree
 #include "EmbreeScene.h"
 #include "LightField.h"
 #include "ReliefSurface.h"
@@ -11,6 +12,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <stdexcept>
 #include <thread>
@@ -133,10 +135,12 @@ ReliefFrame ReliefFrameOf(const ReliefSurface& surface, double depthScale)
 }
 
 std::vector<float> ReliefVisibleShareGrid(const HeightField& field, const ReliefFrame& frame,
-  int& gridWidth, int& gridHeight, const ProgressCallback& progress)
+  int& gridWidth, int& gridHeight, const ProgressCallback& progress, Reducer* reducer)
 {
   gridWidth = std::min(field.Width(), MaxVisibleShareSide);
   gridHeight = std::min(field.Height(), MaxVisibleShareSide);
+  const bool split = reducer && reducer->Size() > 1;
+  const GridRows rows = split ? GridRows{ reducer->Rank(), reducer->Size() } : GridRows{};
   // ReliefVisibleShareMap reports from its worker threads: only the calling thread talks to the
   // caller's callback (a VTK filter's UpdateProgress is for the thread that runs the filter);
   // the workers see its answer through the flag.
@@ -150,32 +154,60 @@ std::vector<float> ReliefVisibleShareGrid(const HeightField& field, const Relief
     }
     return !stopped;
   };
+  // This rank's rows of one pass; a stop becomes AbortedError (agreed as such between ranks).
+  const auto pass = [&](const std::function<std::vector<float>()>& rowsOfPass)
+  {
+    std::vector<float> values;
+    const auto step = [&]()
+    {
+      try
+      {
+        values = rowsOfPass();
+      }
+      catch (const std::runtime_error&)
+      {
+        if (stopped)
+        {
+          throw AbortedError();
+        }
+        throw;
+      }
+    };
+    if (split)
+    {
+      Agree(*reducer, step); // a stop or failure on one rank stops every rank before the sum
+      // A value plus the other ranks' zeros is that value exactly.
+      reducer->SumInPlace(values.data(), values.size());
+    }
+    else
+    {
+      step();
+    }
+    return values;
+  };
   // Half the work each: the visible share, then the share of the relief each cell's occluded
-  // directions meet (ReliefSeenShareMap, which reads the first).
-  try
-  {
-    const int count = ReliefLighting().OcclusionDirections;
-    const std::vector<float> share = ReliefVisibleShareMap(
-      field, frame, gridWidth, gridHeight, count, SubProgress(watched, 0.0, 0.5));
-    const std::vector<float> seen = ReliefSeenShareMap(
-      field, frame, share, gridWidth, gridHeight, count, SubProgress(watched, 0.5, 1.0));
-    std::vector<float> cells(3 * seen.size());
-    for (std::size_t c = 0; c < seen.size(); ++c)
+  // directions meet (ReliefSeenShareMap, which reads the first, whole).
+  const int count = ReliefLighting().OcclusionDirections;
+  const std::vector<float> share = pass(
+    [&]()
     {
-      cells[3 * c] = share[2 * c];
-      cells[3 * c + 1] = share[2 * c + 1];
-      cells[3 * c + 2] = seen[c];
-    }
-    return cells;
-  }
-  catch (const std::runtime_error&)
-  {
-    if (stopped)
+      return ReliefVisibleShareMap(
+        field, frame, gridWidth, gridHeight, count, SubProgress(watched, 0.0, 0.5), rows);
+    });
+  const std::vector<float> seen = pass(
+    [&]()
     {
-      throw AbortedError();
-    }
-    throw;
+      return ReliefSeenShareMap(
+        field, frame, share, gridWidth, gridHeight, count, SubProgress(watched, 0.5, 1.0), rows);
+    });
+  std::vector<float> cells(3 * seen.size());
+  for (std::size_t c = 0; c < seen.size(); ++c)
+  {
+    cells[3 * c] = share[2 * c];
+    cells[3 * c + 1] = share[2 * c + 1];
+    cells[3 * c + 2] = seen[c];
   }
+  return cells;
 }
 
 } // namespace vlf
