@@ -456,6 +456,12 @@ double vtkReliefSurfaceRepresentation::GetVisibleShareSeconds()
 }
 
 //------------------------------------------------------------------------------
+double vtkReliefSurfaceRepresentation::GetVisibleShareCpuSeconds()
+{
+  return this->FieldSurface->GetVisibleShareCpuSeconds();
+}
+
+//------------------------------------------------------------------------------
 void vtkReliefSurfaceRepresentation::UpdateDisplayTransform()
 {
   double exposure = this->UserExposure;

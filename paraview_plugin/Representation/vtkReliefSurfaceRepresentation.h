@@ -107,12 +107,14 @@ public:
   /**
    * The last visible-share map as this rank holds it: its values (three per cell, row-major,
    * vtkIrradianceProbesTexture's visible-share array) after its width and height, empty without
-   * a map; the ranks it was split over (1: computed whole); the seconds it took. What tests
-   * compare between one and several ranks, and benchmarks time.
+   * a map; the ranks it was split over (1: computed whole); the seconds it took and the
+   * processor seconds this process spent on it. What tests compare between one and several
+   * ranks, and benchmarks time.
    */
   vtkDoubleArray* GetVisibleShareValues();
   int GetVisibleShareRanks();
   double GetVisibleShareSeconds();
+  double GetVisibleShareCpuSeconds();
 
   /** Probe gatherings so far (each new field or geometry makes one): how tests check that
    * renders alone gather nothing. */

@@ -50,6 +50,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstring>
+#include <ctime>
 #include <exception>
 #include <memory>
 #include <stdexcept>
@@ -412,6 +413,7 @@ bool vtkLightFieldReliefSurface::AddVisibleShare(
       reducer = std::make_unique<vlf::ControllerReducer>(split);
     }
     const auto start = std::chrono::steady_clock::now();
+    const std::clock_t cpuStart = std::clock();
     try
     {
       std::unique_ptr<mesolight::HeightField> height;
@@ -440,6 +442,7 @@ bool vtkLightFieldReliefSurface::AddVisibleShare(
       this->VisibleShareRanks = reducer ? reducer->Size() : 1;
       this->VisibleShareSeconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      this->VisibleShareCpuSeconds = static_cast<double>(std::clock() - cpuStart) / CLOCKS_PER_SEC;
     }
     catch (const vlf::AbortedError&)
     {
@@ -935,4 +938,5 @@ void vtkLightFieldReliefSurface::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "VisibleShareComputations: " << this->VisibleShareComputations << "\n";
   os << indent << "VisibleShareRanks: " << this->VisibleShareRanks << "\n";
   os << indent << "VisibleShareSeconds: " << this->VisibleShareSeconds << "\n";
+  os << indent << "VisibleShareCpuSeconds: " << this->VisibleShareCpuSeconds << "\n";
 }

@@ -165,10 +165,12 @@ public:
   vtkGetMacro(ProbeComputations, int);
   vtkGetMacro(VisibleShareComputations, int);
 
-  /** The ranks the last visible-share map was split over (1: computed whole) and the seconds it
-   * took this rank, sums over the ranks included (0 before the first map). */
+  /** The ranks the last visible-share map was split over (1: computed whole), the seconds it
+   * took this rank, sums over the ranks included, and the processor seconds this process spent
+   * on it, all its threads (std::clock; 0 before the first map). */
   vtkGetMacro(VisibleShareRanks, int);
   vtkGetMacro(VisibleShareSeconds, double);
+  vtkGetMacro(VisibleShareCpuSeconds, double);
 
   /** The probe image (output port 1). */
   vtkImageData* GetProbesOutput();
@@ -244,6 +246,7 @@ private:
   int VisibleShareComputations = 0;
   int VisibleShareRanks = 0;
   double VisibleShareSeconds = 0.0;
+  double VisibleShareCpuSeconds = 0.0;
   struct vtkInternals; // what the last update computed, kept while its inputs do not change
   std::unique_ptr<vtkInternals> Internals;
   double SurfaceDiffuse[3] = { 0.0, 0.0, 0.0 };

@@ -42,6 +42,8 @@ DELIBERATE = {
         "information about the last updates (Python: GetPropertyValue)",
     ("MesolightReliefSurfaceRepresentation", "LightFieldVisibleShareSeconds"):
         "information about the last updates (Python: GetPropertyValue)",
+    ("MesolightReliefSurfaceRepresentation", "LightFieldVisibleShareCpuSeconds"):
+        "information about the last updates (Python: GetPropertyValue)",
 }
 # ReliefSurfaceRepresentationProxy: a representation with its own client-side proxy class.
 REPRESENTATION_TAGS = ("RepresentationProxy", "ReliefSurfaceRepresentationProxy")
