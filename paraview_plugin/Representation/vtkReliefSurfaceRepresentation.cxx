@@ -13,7 +13,6 @@
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkIrradianceProbesTexture.h" // the visible share's array names
-#include "vtkTextureObject.h"           // for vtkIrradianceProbesTexture's inline getter
 #include "vtkLight.h"
 #include "vtkLightFieldReliefSurface.h"
 #include "vtkMultiProcessController.h"
@@ -24,6 +23,7 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkReliefProperty.h"
+#include "vtkTextureObject.h" // for vtkIrradianceProbesTexture's inline getter
 #include "vtkVirtualLightField.h"
 
 #include "SurfaceRelief.h" // SurfacePlaneOf: the command line's plane rule
@@ -437,7 +437,8 @@ vtkDoubleArray* vtkReliefSurfaceRepresentation::GetVisibleShareValues()
     for (vtkIdType v = 0; v < values; ++v)
     {
       this->VisibleShareValues->SetValue(v + 2,
-        share->GetComponent(v / share->GetNumberOfComponents(), v % share->GetNumberOfComponents()));
+        share->GetComponent(
+          v / share->GetNumberOfComponents(), v % share->GetNumberOfComponents()));
     }
   }
   return this->VisibleShareValues;

@@ -203,8 +203,8 @@ struct GridRows
  * are computed, the others 0 (GridRows).
  */
 MESOLIGHTRELIEFCORE_EXPORT std::vector<float> ReliefVisibleShareMap(const HeightField& hf,
-  const ReliefFrame& frame, int width, int height, int count,
-  const ProgressCallback& progress = {}, GridRows rows = {});
+  const ReliefFrame& frame, int width, int height, int count, const ProgressCallback& progress = {},
+  GridRows rows = {});
 
 /**
  * ReliefSeenShare over the grid of `share` (ReliefVisibleShareMap's output for the same width,

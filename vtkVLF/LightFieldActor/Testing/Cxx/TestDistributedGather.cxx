@@ -366,7 +366,8 @@ int ShareMap(vtkMultiProcessController* controller)
     bool aborted = false;
     try
     {
-      vlf::ReliefVisibleShareGrid(relief, frame, width, height,
+      vlf::ReliefVisibleShareGrid(
+        relief, frame, width, height,
         [&](double fraction) { return !(Rank == ranks - 1 && fraction > 0.2); }, &reducer);
     }
     catch (const vlf::AbortedError&)
