@@ -6,11 +6,13 @@
 #include "vtkCompositeLightFieldMapper.h"
 #include "vtkCompositeReliefMapper.h"
 #include "vtkDataObjectLeaves.h"
+#include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkIrradianceProbesTexture.h" // the visible share's array names
 #include "vtkLight.h"
 #include "vtkLightFieldReliefSurface.h"
 #include "vtkMultiProcessController.h"
@@ -21,6 +23,7 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkReliefProperty.h"
+#include "vtkTextureObject.h" // for vtkIrradianceProbesTexture's inline getter
 #include "vtkVirtualLightField.h"
 
 #include "SurfaceRelief.h" // SurfacePlaneOf: the command line's plane rule
@@ -413,6 +416,50 @@ void vtkReliefSurfaceRepresentation::SetLightFieldOcclusion(bool on)
 int vtkReliefSurfaceRepresentation::GetVisibleShareMaps()
 {
   return this->FieldSurface->GetVisibleShareComputations();
+}
+
+//------------------------------------------------------------------------------
+vtkDoubleArray* vtkReliefSurfaceRepresentation::GetVisibleShareValues()
+{
+  this->VisibleShareValues = vtkSmartPointer<vtkDoubleArray>::New();
+  vtkImageData* probes = this->FieldLit ? this->FieldSurface->GetProbesOutput() : nullptr;
+  vtkFieldData* fields = probes ? probes->GetFieldData() : nullptr;
+  vtkDataArray* share =
+    fields ? fields->GetArray(vtkIrradianceProbesTexture::GetVisibleShareName()) : nullptr;
+  vtkDataArray* size =
+    fields ? fields->GetArray(vtkIrradianceProbesTexture::GetVisibleShareSizeName()) : nullptr;
+  if (share && size && size->GetNumberOfTuples() >= 2)
+  {
+    const vtkIdType values = share->GetNumberOfTuples() * share->GetNumberOfComponents();
+    this->VisibleShareValues->SetNumberOfValues(values + 2);
+    this->VisibleShareValues->SetValue(0, size->GetComponent(0, 0));
+    this->VisibleShareValues->SetValue(1, size->GetComponent(1, 0));
+    for (vtkIdType v = 0; v < values; ++v)
+    {
+      this->VisibleShareValues->SetValue(v + 2,
+        share->GetComponent(
+          v / share->GetNumberOfComponents(), v % share->GetNumberOfComponents()));
+    }
+  }
+  return this->VisibleShareValues;
+}
+
+//------------------------------------------------------------------------------
+int vtkReliefSurfaceRepresentation::GetVisibleShareRanks()
+{
+  return this->FieldSurface->GetVisibleShareRanks();
+}
+
+//------------------------------------------------------------------------------
+double vtkReliefSurfaceRepresentation::GetVisibleShareSeconds()
+{
+  return this->FieldSurface->GetVisibleShareSeconds();
+}
+
+//------------------------------------------------------------------------------
+double vtkReliefSurfaceRepresentation::GetVisibleShareCpuSeconds()
+{
+  return this->FieldSurface->GetVisibleShareCpuSeconds();
 }
 
 //------------------------------------------------------------------------------

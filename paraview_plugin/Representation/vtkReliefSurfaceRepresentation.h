@@ -56,6 +56,7 @@
 #include "vtkTexture.h"                 // for vtkNew<vtkTexture>
 
 class vtkDataArray;
+class vtkDoubleArray;
 class vtkReliefProperty;
 class vtkVirtualLightField;
 
@@ -103,6 +104,18 @@ public:
   /** Visible-share maps computed so far (once per relief texture, depth scale, edge rule). */
   int GetVisibleShareMaps();
 
+  /**
+   * The last visible-share map as this rank holds it: its values (three per cell, row-major,
+   * vtkIrradianceProbesTexture's visible-share array) after its width and height, empty without
+   * a map; the ranks it was split over (1: computed whole); the seconds it took and the
+   * processor seconds this process spent on it. What tests compare between one and several
+   * ranks, and benchmarks time.
+   */
+  vtkDoubleArray* GetVisibleShareValues();
+  int GetVisibleShareRanks();
+  double GetVisibleShareSeconds();
+  double GetVisibleShareCpuSeconds();
+
   /** Probe gatherings so far (each new field or geometry makes one): how tests check that
    * renders alone gather nothing. */
   vtkGetMacro(ProbeGatherings, int);
@@ -143,6 +156,7 @@ protected:
 
   vtkNew<vtkLightFieldReliefSurface> FieldSurface;
   vtkNew<vtkLightCollection> FieldLights;
+  vtkSmartPointer<vtkDoubleArray> VisibleShareValues; // GetVisibleShareValues' answer
   bool FieldLit = false;
   bool LightFieldAutoExposure = true;
   double UserExposure = 1.0;

@@ -145,25 +145,33 @@ bool LeavesRelief(
     Visible(hf, glm::dvec3(hit.x, hit.y, std::max(0.0, hit.z)), frame.ToTexture(w), 1e-6);
 }
 
-// Calls cell(i, j, u, v) for every cell of a width x height grid over the texture (u, v at the
-// cell's centre), rows in parallel; progress is reported per row and a stop throws "aborted".
+// Calls cell(i, j, u, v) for every cell of `rows` of a width x height grid over the texture (u, v
+// at the cell's centre), rows in parallel; progress is reported per row (over the rows called)
+// and a stop throws "aborted".
 template <typename Cell>
-void ForEachGridCell(int width, int height, const ProgressCallback& progress, const Cell& cell)
+void ForEachGridCell(
+  int width, int height, GridRows rows, const ProgressCallback& progress, const Cell& cell)
 {
-  std::atomic<int> rowsDone{ 0 };
+  const std::size_t step = static_cast<std::size_t>(std::max(1, rows.Count));
+  const std::size_t first = static_cast<std::size_t>(std::clamp(rows.Index, 0, rows.Count - 1));
+  // The k-th row of this share is first + k step.
+  const std::size_t rowCount = static_cast<std::size_t>(height);
+  const std::size_t own = first < rowCount ? (rowCount - first + step - 1) / step : 0;
+  std::atomic<std::size_t> rowsDone{ 0 };
   std::atomic<bool> stop{ false };
-  ParallelFor(0, static_cast<std::size_t>(height), 1,
+  ParallelFor(0, own, 1,
     [&](std::size_t begin, std::size_t end)
     {
-      for (std::size_t j = begin; j < end && !stop; ++j)
+      for (std::size_t k = begin; k < end && !stop; ++k)
       {
+        const std::size_t j = first + k * step;
         const double v = (j + 0.5) / height;
         for (int i = 0; i < width; ++i)
         {
           cell(static_cast<std::size_t>(i), j, (i + 0.5) / width, v);
         }
-        const int done = ++rowsDone;
-        if (!ReportProgress(progress, static_cast<double>(done) / height))
+        const std::size_t done = ++rowsDone;
+        if (!ReportProgress(progress, static_cast<double>(done) / own))
         {
           stop = true;
         }
@@ -287,14 +295,19 @@ glm::dvec3 ReliefInterReflected(ReliefInterReflection model, double visibleShare
 }
 
 std::vector<float> ReliefVisibleShareMap(const HeightField& hf, const ReliefFrame& frame, int width,
-  int height, int count, const ProgressCallback& progress)
+  int height, int count, const ProgressCallback& progress, GridRows rows)
 {
   if (width < 1 || height < 1)
   {
     throw std::invalid_argument("ReliefVisibleShareMap: the grid must be at least 1 x 1");
   }
-  std::vector<float> share(2 * static_cast<std::size_t>(width) * height, 1.0f);
-  ForEachGridCell(width, height, progress,
+  if (rows.Count < 1 || rows.Index < 0 || rows.Index >= rows.Count)
+  {
+    throw std::invalid_argument("ReliefVisibleShareMap: the rows' index must lie in [0, count)");
+  }
+  std::vector<float> share(
+    2 * static_cast<std::size_t>(width) * height, rows.Count > 1 ? 0.0f : 1.0f);
+  ForEachGridCell(width, height, rows, progress,
     [&](std::size_t i, std::size_t j, double u, double v)
     {
       const glm::dvec3 hit(u, v, hf.DepthAt(u, v));
@@ -310,15 +323,19 @@ std::vector<float> ReliefVisibleShareMap(const HeightField& hf, const ReliefFram
 
 std::vector<float> ReliefSeenShareMap(const HeightField& hf, const ReliefFrame& frame,
   const std::vector<float>& share, int width, int height, int count,
-  const ProgressCallback& progress)
+  const ProgressCallback& progress, GridRows rows)
 {
   if (width < 1 || height < 1 || share.size() != 2 * static_cast<std::size_t>(width) * height)
   {
     throw std::invalid_argument(
       "ReliefSeenShareMap: the visible-share map must hold two values per cell of the grid");
   }
-  std::vector<float> seen(static_cast<std::size_t>(width) * height, 1.0f);
-  ForEachGridCell(width, height, progress,
+  if (rows.Count < 1 || rows.Index < 0 || rows.Index >= rows.Count)
+  {
+    throw std::invalid_argument("ReliefSeenShareMap: the rows' index must lie in [0, count)");
+  }
+  std::vector<float> seen(static_cast<std::size_t>(width) * height, rows.Count > 1 ? 0.0f : 1.0f);
+  ForEachGridCell(width, height, rows, progress,
     [&](std::size_t i, std::size_t j, double u, double v)
     {
       const glm::dvec3 hit(u, v, hf.DepthAt(u, v));
@@ -330,7 +347,7 @@ std::vector<float> ReliefSeenShareMap(const HeightField& hf, const ReliefFrame& 
 
 std::vector<float> ReliefEmitterShadowMap(const HeightField& hf, const ReliefFrame& frame,
   const std::vector<ReliefEmitterSample>& samples, const std::vector<int>& group, int groups,
-  int width, int height, const ProgressCallback& progress)
+  int width, int height, const ProgressCallback& progress, GridRows rows)
 {
   if (width < 1 || height < 1 || groups < 1 || group.size() != samples.size())
   {
@@ -338,8 +355,9 @@ std::vector<float> ReliefEmitterShadowMap(const HeightField& hf, const ReliefFra
       "ReliefEmitterShadowMap: needs a grid, at least one group and one group per sample");
   }
   const std::size_t count = static_cast<std::size_t>(groups);
-  std::vector<float> shadow(static_cast<std::size_t>(width) * height * count, 1.0f);
-  ForEachGridCell(width, height, progress,
+  // 0 outside `rows` (GridRows); every value of the cells computed is written below.
+  std::vector<float> shadow(static_cast<std::size_t>(width) * height * count, 0.0f);
+  ForEachGridCell(width, height, rows, progress,
     [&](std::size_t i, std::size_t j, double u, double v)
     {
       const double d = std::max(0.0, hf.DepthAt(u, v));
@@ -378,10 +396,8 @@ std::vector<float> ReliefEmitterShadowMap(const HeightField& hf, const ReliefFra
       }
       for (std::size_t g = 0; g < count; ++g)
       {
-        if (all[g] > 0.0)
-        {
-          shadow[(j * width + i) * count + g] = static_cast<float>(lit[g] / all[g]);
-        }
+        shadow[(j * width + i) * count + g] =
+          all[g] > 0.0 ? static_cast<float>(lit[g] / all[g]) : 1.0f;
       }
     });
   return shadow;

@@ -179,6 +179,18 @@ MESOLIGHTRELIEFCORE_EXPORT glm::dvec3 ReliefInterReflected(ReliefInterReflection
   double visibleShare, const glm::dvec3& albedo, const glm::dvec3& flatIrradiance);
 
 /**
+ * The rows of a grid map one of several processes computes (MPI ranks splitting a map): rows j
+ * with j % Count == Index, interleaved so that costlier regions of the relief spread over every
+ * process. The others are left 0, so that one sum over the processes gives the whole map, equal
+ * to the one-process map bit for bit (a value plus zeros is that value). The default: every row.
+ */
+struct GridRows
+{
+  int Index = 0;
+  int Count = 1;
+};
+
+/**
  * ReliefVisibleShare over a width x height grid of the texture square (cell (i, j) at
  * ((i + 1/2) / width, (j + 1/2) / height), row-major, j slowest), at the height field's surface
  * and perturbed normal there: what the relief mapper looks up per pixel instead of marching
@@ -186,22 +198,24 @@ MESOLIGHTRELIEFCORE_EXPORT glm::dvec3 ReliefInterReflected(ReliefInterReflection
  * of the directions above the macro plane (at most 1), the visible share of the light the
  * probes' SH irradiance holds (a probe in front of the wall sees nothing from behind it, so the
  * directions below the plane are dark in it already; ShadeReliefRay's radiance weighting
- * leaves them out for the same reason). Parallel; reports progress, and a stop throws
- * std::runtime_error("aborted").
+ * leaves them out for the same reason). Parallel; reports progress (over the rows computed), and
+ * a stop throws std::runtime_error("aborted"). With `rows` of several processes only its rows
+ * are computed, the others 0 (GridRows).
  */
 MESOLIGHTRELIEFCORE_EXPORT std::vector<float> ReliefVisibleShareMap(const HeightField& hf,
-  const ReliefFrame& frame, int width, int height, int count,
-  const ProgressCallback& progress = {});
+  const ReliefFrame& frame, int width, int height, int count, const ProgressCallback& progress = {},
+  GridRows rows = {});
 
 /**
  * ReliefSeenShare over the grid of `share` (ReliefVisibleShareMap's output for the same width,
  * height and count), read from that map: one value per cell, row-major, j slowest. The relief
- * mapper's third channel of the map (vtkIrradianceProbesTexture). Parallel; progress and stop as
- * ReliefVisibleShareMap.
+ * mapper's third channel of the map (vtkIrradianceProbesTexture). Parallel; progress, stop and
+ * `rows` as ReliefVisibleShareMap (`share` must be whole: a cell reads the cells its occluded
+ * directions meet, in any row).
  */
 MESOLIGHTRELIEFCORE_EXPORT std::vector<float> ReliefSeenShareMap(const HeightField& hf,
   const ReliefFrame& frame, const std::vector<float>& share, int width, int height, int count,
-  const ProgressCallback& progress = {});
+  const ProgressCallback& progress = {}, GridRows rows = {});
 
 /**
  * The relief's own shadow of area lights over the grid of ReliefVisibleShareMap: per cell (at the
@@ -212,12 +226,12 @@ MESOLIGHTRELIEFCORE_EXPORT std::vector<float> ReliefSeenShareMap(const HeightFie
  * row-major, j slowest. What the relief mapper multiplies an emitter light's contribution by
  * instead of marching one shadow ray to the light's centre: a point light's hard shadow is not
  * the area light's penumbra, which is as wide as a slot's bottom where the light is near
- * (vtkIrradianceProbesTexture). Parallel; progress and stop as ReliefVisibleShareMap.
+ * (vtkIrradianceProbesTexture). Parallel; progress, stop and `rows` as ReliefVisibleShareMap.
  */
 MESOLIGHTRELIEFCORE_EXPORT std::vector<float> ReliefEmitterShadowMap(const HeightField& hf,
   const ReliefFrame& frame, const std::vector<ReliefEmitterSample>& samples,
   const std::vector<int>& group, int groups, int width, int height,
-  const ProgressCallback& progress = {});
+  const ProgressCallback& progress = {}, GridRows rows = {});
 
 } // namespace mesolight
 

@@ -4,6 +4,7 @@
 
 #include "vtkLightFieldActor.h"
 #include "vtkLightFieldActorCore.h"
+#include "vtkLightFieldReducer.h"
 #include "vtkVirtualLightField.h"
 #include "vtkVirtualLightFieldCore.h"
 
@@ -31,6 +32,7 @@
 #include "vtkIrradianceProbesTexture.h" // the visible share's array names
 #include "vtkTextureObject.h"           // for vtkIrradianceProbesTexture's inline getter
 
+#include "Distribution.h" // Agree
 #include "EmbreeScene.h"
 #include "EmitterLights.h"
 #include "HeightFieldTracer.h"
@@ -45,8 +47,10 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstring>
+#include <ctime>
 #include <exception>
 #include <memory>
 #include <stdexcept>
@@ -360,13 +364,37 @@ double vtkLightFieldReliefSurface::MapProgress() const
 }
 
 //------------------------------------------------------------------------------
-bool vtkLightFieldReliefSurface::AddVisibleShare(vtkImageData* probesOutput, const double frame[12])
+bool vtkLightFieldReliefSurface::AddVisibleShare(
+  vtkImageData* probesOutput, const double frame[12], vtkMultiProcessController* controller)
 {
   vtkInternals& in = *this->Internals;
   vtkImageData* texture = in.ReliefTexture;
+  // Under MPI the ranks split the map's rows when every rank has the same map to make: the
+  // texture of the same size (each rank's comes with its piece of the data) and the frame, depth
+  // scale and edge, alike on every rank. Otherwise (a rank without the texture, say) each rank
+  // makes its own, as one process does.
+  int dims[3] = { 0, 0, 0 };
+  if (texture)
+  {
+    texture->GetDimensions(dims);
+  }
+  const bool wanted = texture && this->ReliefDepthScale > 0.0;
+  vtkMultiProcessController* split = nullptr;
+  if (controller && controller->GetNumberOfProcesses() > 1)
+  {
+    const int mine[3] = { wanted ? 1 : 0, wanted ? dims[0] : -1, wanted ? dims[1] : -1 };
+    const int negated[3] = { -mine[0], -mine[1], -mine[2] };
+    int most[3] = { 0, 0, 0 }, least[3] = { 0, 0, 0 };
+    controller->AllReduce(mine, most, 3, vtkCommunicator::MAX_OP);
+    controller->AllReduce(negated, least, 3, vtkCommunicator::MAX_OP);
+    if (most[0] == 1 && -least[0] == 1 && most[1] == -least[1] && most[2] == -least[2])
+    {
+      split = controller;
+    }
+  }
   // A flat relief (depth scale 0) hides nothing of the room: V = 1, no map (the relief frame
   // would have no depth axis to march along).
-  if (!texture || !(this->ReliefDepthScale > 0.0))
+  if (!wanted)
   {
     return true;
   }
@@ -383,25 +411,59 @@ bool vtkLightFieldReliefSurface::AddVisibleShare(vtkImageData* probesOutput, con
   }
   vtkDataArray* texels = texture->GetPointData()->GetScalars();
   const vtkMTimeType texelsTime = texels ? texels->GetMTime() : texture->GetMTime();
-  if (texels != in.ShareTexture || texelsTime != in.ShareTextureTime ||
-    std::memcmp(key, in.ShareKey, sizeof(key)) != 0 || in.Share.empty())
+  int stale = (texels != in.ShareTexture || texelsTime != in.ShareTextureTime ||
+                std::memcmp(key, in.ShareKey, sizeof(key)) != 0 || in.Share.empty())
+    ? 1
+    : 0;
+  if (split)
+  {
+    int any = stale; // every rank computes its rows, or none does
+    split->AllReduce(&stale, &any, 1, vtkCommunicator::MAX_OP);
+    stale = any;
+  }
+  if (stale)
   {
     in.Share.clear();
     in.ShareTexture = texels;
     in.ShareTextureTime = texelsTime;
     std::copy(key, key + 18, in.ShareKey);
+    std::unique_ptr<vlf::ControllerReducer> reducer;
+    if (split)
+    {
+      reducer = std::make_unique<vlf::ControllerReducer>(split);
+    }
+    const auto start = std::chrono::steady_clock::now();
+    const std::clock_t cpuStart = std::clock();
     try
     {
-      const mesolight::HeightField height = ReliefHeightField(texture, this->WalledRelief);
+      std::unique_ptr<mesolight::HeightField> height;
+      const auto makeHeight = [&]()
+      {
+        height =
+          std::make_unique<mesolight::HeightField>(ReliefHeightField(texture, this->WalledRelief));
+      };
+      if (reducer)
+      {
+        vlf::Agree(*reducer, makeHeight); // no rank left waiting in the map's sums
+      }
+      else
+      {
+        makeHeight();
+      }
       vlf::ReliefSurface surface;
       surface.Origin = glm::dvec3(frame[0], frame[1], frame[2]);
       surface.AxisU = glm::dvec3(frame[3], frame[4], frame[5]);
       surface.AxisV = glm::dvec3(frame[6], frame[7], frame[8]);
       surface.Normal = glm::dvec3(frame[9], frame[10], frame[11]);
-      in.Share = vlf::ReliefVisibleShareGrid(height,
+      in.Share = vlf::ReliefVisibleShareGrid(*height,
         vlf::ReliefFrameOf(surface, this->ReliefDepthScale), in.ShareSize[0], in.ShareSize[1],
-        mesolight::AlgorithmProgress(this, this->MapProgress(), 1.0), in.LightSamples);
+        mesolight::AlgorithmProgress(this, this->MapProgress(), 1.0), in.LightSamples,
+        reducer.get());
       ++this->VisibleShareComputations;
+      this->VisibleShareRanks = reducer ? reducer->Size() : 1;
+      this->VisibleShareSeconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      this->VisibleShareCpuSeconds = static_cast<double>(std::clock() - cpuStart) / CLOCKS_PER_SEC;
     }
     catch (const vlf::AbortedError&)
     {
@@ -828,7 +890,7 @@ int vtkLightFieldReliefSurface::RequestSurfaceData(
   FillProbesImage(probesOutput, result.Probes, n,
     this->SceneOcclusion ? &result.Visibility : nullptr, result.Lights.size() / 9);
   in.LightSamples.clear(); // not on every rank's field: the mapper marches the lights' shadows
-  if (!this->AddVisibleShare(probesOutput, result.Frame))
+  if (!this->AddVisibleShare(probesOutput, result.Frame, ranks > 1 ? controller : nullptr))
   {
     probesOutput->Initialize();
     return 1; // stopped: empty outputs
@@ -920,4 +982,7 @@ void vtkLightFieldReliefSurface::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SceneOcclusion: " << this->SceneOcclusion << "\n";
   os << indent << "ProbeComputations: " << this->ProbeComputations << "\n";
   os << indent << "VisibleShareComputations: " << this->VisibleShareComputations << "\n";
+  os << indent << "VisibleShareRanks: " << this->VisibleShareRanks << "\n";
+  os << indent << "VisibleShareSeconds: " << this->VisibleShareSeconds << "\n";
+  os << indent << "VisibleShareCpuSeconds: " << this->VisibleShareCpuSeconds << "\n";
 }

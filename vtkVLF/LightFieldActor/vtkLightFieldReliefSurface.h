@@ -54,8 +54,12 @@
  *   indirect light and its multi-bounce inter-reflection. Without it, and at depth scale 0 (a
  *   flat relief hides nothing), V = 1 (no occlusion). A change of the relief texture, its depth
  *   scale or WalledRelief recomputes the map only: for a surface of input port 1 the probes of
- *   an unchanged field and surface are kept. Under MPI every rank computes the same map from
- *   the shared texture frame (no communication; a rank whose map is stopped has empty outputs).
+ *   an unchanged field and surface are kept. Under MPI (a surface of input port 1) the ranks
+ *   split the map's rows, every ranks-th row each, and two sums over the ranks give every rank
+ *   the whole map, the one-rank map bit for bit (mesolight::vlf::ReliefVisibleShareGrid with a
+ *   Reducer, the final gather's convention; GetVisibleShareRanks()); when the ranks' relief
+ *   textures differ in size (a rank without one) each rank makes its own map instead. A stop on
+ *   one rank stops all (empty outputs on every rank).
  *
  * GetSurfaceDiffuse() is the surface's Kd (the relief actor's colour). An unknown name (the
  * message lists the scene's surfaces), a non-planar surface without texture coordinates, a
@@ -162,16 +166,24 @@ public:
    * WalledRelief) over a texture frame (origin, u axis, v axis, unit normal: the field's unit
    * sphere in an update) to a probe image, as port 1 gets it (vtkIrradianceProbesTexture's
    * visible-share arrays, mesolight::vlf::ReliefVisibleShareGrid), computed once per texture,
-   * depth scale and frame and kept. It needs no field: `mesolight bench relief-field-cost` adds
-   * the map to probes of its own this way. True when added or when there is nothing to add (no
-   * texture, depth scale 0, or a texture without depth: vtkErrorMacro says so); false when
-   * stopped (AbortExecute).
+   * depth scale and frame and kept. It needs no field (probes of one's own get the map this
+   * way). With a controller of several ranks (collective: every rank calls it) the ranks split
+   * the map's rows. True when added or when there is nothing to add (no texture, depth scale 0,
+   * or a texture without depth: vtkErrorMacro says so); false when stopped (AbortExecute).
    */
-  bool AddVisibleShare(vtkImageData* probes, const double frame[12]);
+  bool AddVisibleShare(
+    vtkImageData* probes, const double frame[12], vtkMultiProcessController* controller = nullptr);
 
   /** Probe gatherings and visible-share maps computed so far (tests check what is kept). */
   vtkGetMacro(ProbeComputations, int);
   vtkGetMacro(VisibleShareComputations, int);
+
+  /** The ranks the last visible-share map was split over (1: computed whole), the seconds it
+   * took this rank, sums over the ranks included, and the processor seconds this process spent
+   * on it, all its threads (std::clock; 0 before the first map). */
+  vtkGetMacro(VisibleShareRanks, int);
+  vtkGetMacro(VisibleShareSeconds, double);
+  vtkGetMacro(VisibleShareCpuSeconds, double);
 
   /** The probe image (output port 1). */
   vtkImageData* GetProbesOutput();
@@ -240,6 +252,9 @@ private:
   bool SceneOcclusion = false;
   int ProbeComputations = 0;
   int VisibleShareComputations = 0;
+  int VisibleShareRanks = 0;
+  double VisibleShareSeconds = 0.0;
+  double VisibleShareCpuSeconds = 0.0;
   struct vtkInternals; // what the last update computed, kept while its inputs do not change
   std::unique_ptr<vtkInternals> Internals;
   double SurfaceDiffuse[3] = { 0.0, 0.0, 0.0 };

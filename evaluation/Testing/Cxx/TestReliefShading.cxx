@@ -602,6 +602,64 @@ TEST(ReliefShading, SeenShareMapFollowsTheMarchedSeenShare)
     mesolight::ReliefSeenShareMap(hf, frame, share, w + 1, h, count), std::invalid_argument);
 }
 
+// The maps split by rows between processes (GridRows, what MPI ranks compute): the shares of 1,
+// 2 and 3 processes summed equal the one-process maps bit for bit, each share holds its rows
+// only, and the sum without one share (a rank's rows left 0, the negative case) does not.
+TEST(ReliefShading, ShareMapsSplitByRowsSumToTheWholeMap)
+{
+  const HeightField hf = WalledSlot();
+  ReliefFrame frame = Square();
+  frame.DepthScale = 0.2;
+  const int w = 8, h = 37, count = 32; // rows not a multiple of the process counts
+  const std::vector<float> share = mesolight::ReliefVisibleShareMap(hf, frame, w, h, count);
+  const std::vector<float> seen = mesolight::ReliefSeenShareMap(hf, frame, share, w, h, count);
+  for (int processes = 2; processes <= 3; ++processes)
+  {
+    std::vector<float> shareSum(share.size(), 0.0f), seenSum(seen.size(), 0.0f);
+    std::vector<float> lastShareMissing;
+    for (int p = 0; p < processes; ++p)
+    {
+      const mesolight::GridRows rows{ p, processes };
+      const std::vector<float> part =
+        mesolight::ReliefVisibleShareMap(hf, frame, w, h, count, {}, rows);
+      // The seen share reads the whole visible-share map (cells in any row).
+      const std::vector<float> partSeen =
+        mesolight::ReliefSeenShareMap(hf, frame, share, w, h, count, {}, rows);
+      ASSERT_EQ(part.size(), share.size());
+      for (int j = 0; j < h; ++j)
+      {
+        for (int i = 0; i < w; ++i)
+        {
+          const std::size_t c = static_cast<std::size_t>(j) * w + i;
+          if (j % processes != p)
+          {
+            ASSERT_EQ(part[2 * c], 0.0f) << "row " << j << " is another process's";
+            ASSERT_EQ(partSeen[c], 0.0f);
+          }
+        }
+      }
+      if (p == processes - 1)
+      {
+        lastShareMissing = shareSum;
+      }
+      for (std::size_t k = 0; k < share.size(); ++k)
+      {
+        shareSum[k] += part[k];
+      }
+      for (std::size_t k = 0; k < seen.size(); ++k)
+      {
+        seenSum[k] += partSeen[k];
+      }
+    }
+    EXPECT_EQ(shareSum, share) << processes << " processes";
+    EXPECT_EQ(seenSum, seen) << processes << " processes";
+    EXPECT_NE(lastShareMissing, share) << "the sum without the last process's rows";
+  }
+  EXPECT_THROW(
+    mesolight::ReliefVisibleShareMap(hf, frame, w, h, count, {}, mesolight::GridRows{ 2, 2 }),
+    std::invalid_argument);
+}
+
 // The relief mapper's visible-share map (ReliefVisibleShareMap) against the analytic view factor
 // of a V-groove as deep as wide, infinitely long (the height field's clamp extends it along v):
 // from a point of a wall, the cosine-weighted share of the hemisphere leaving through the

@@ -36,6 +36,14 @@ DELIBERATE = {
         "information about the last updates (Python: GetPropertyValue)",
     ("MesolightReliefSurfaceRepresentation", "LightFieldVisibleShareMaps"):
         "information about the last updates (Python: GetPropertyValue)",
+    ("MesolightReliefSurfaceRepresentation", "LightFieldVisibleShare"):
+        "information about the last updates (Python: GetPropertyValue)",
+    ("MesolightReliefSurfaceRepresentation", "LightFieldVisibleShareRanks"):
+        "information about the last updates (Python: GetPropertyValue)",
+    ("MesolightReliefSurfaceRepresentation", "LightFieldVisibleShareSeconds"):
+        "information about the last updates (Python: GetPropertyValue)",
+    ("MesolightReliefSurfaceRepresentation", "LightFieldVisibleShareCpuSeconds"):
+        "information about the last updates (Python: GetPropertyValue)",
 }
 # ReliefSurfaceRepresentationProxy: a representation with its own client-side proxy class.
 REPRESENTATION_TAGS = ("RepresentationProxy", "ReliefSurfaceRepresentationProxy")

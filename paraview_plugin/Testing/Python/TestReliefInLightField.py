@@ -17,7 +17,13 @@ its depth lies behind the wall the patch stands 1.2 mm in front of, the wall hid
 Also: the probes are gathered once per field or surface (renders and camera moves gather none,
 a new propagation gathers again); bad input (a Light Field that is not a field) is an error
 through VTK, the relief is then drawn the ordinary way, no crash. Runs on one or two MPI ranks.
+
+The relief with depth's visible-share map (Light Field Occlusion, on by default): on one rank
+--write-map FILE.npz writes it; on two --compare-map FILE.npz checks that its rows were split
+over the ranks and that the combined map equals the one-rank map, and that the map with the
+second rank's rows left 0 does not (mesolight_pvtest.check_share_map).
 """
+import argparse
 import os
 import sys
 
@@ -34,9 +40,18 @@ BACK_Z = 559.2     # the published box's back wall (millimetres, facing -z)
 PATCH_Z = 558.0    # the patch 1.2 mm in front of it (within the wall's plane tolerance)
 MAX_MEAN_ERROR = 6.0  # 8-bit levels, relief vs the wall's own radiance over the patch
 
+parser = argparse.ArgumentParser()
+parser.add_argument("--write-map")
+parser.add_argument("--compare-map")
+args, _ = parser.parse_known_args()
+
 t.load_plugin()
 failures = []
 check = t.checker(failures)
+ranks = servermanager.ActiveConnection.GetNumberOfDataPartitions()
+print("ranks: %d" % ranks)
+if args.compare_map:
+    check(ranks == 2, "runs on two ranks")
 out = t.output_dir()
 
 box = pvs.MesolightCornellBox()
@@ -141,6 +156,7 @@ relief.ReliefLightFieldAutoExposure = 1
 # ungathered one, whose wall is blotchier than the flat relief: the wall's own noise).
 relief.ReliefDepthScale = 0.1
 deep = capture("pv-relief-field-deep.png")
+t.check_share_map(check, relief, ranks, args.write_map, args.compare_map)
 changed = float((np.abs(deep[footprint] - flat[footprint]).max(axis=1) > 8).mean())
 mean_shift = abs(float(deep[footprint].mean()) - float(flat[footprint].mean()))
 print("relief with depth: %.1f%% of the patch's pixels differ from the flat one by > 8 levels; "

@@ -175,3 +175,50 @@ def srgb_encode(v):
     """Linear values to 8-bit sRGB levels (unrounded)."""
     v = np.clip(v, 0.0, 1.0)
     return 255.0 * np.where(v <= 0.0031308, 12.92 * v, 1.055 * v ** (1 / 2.4) - 0.055)
+
+
+MAP_TOLERANCE = 1e-6
+
+
+def visible_share_map(display):
+    """A Relief Surface's visible-share map as the first rank holds it (LightFieldVisibleShare):
+    height x width x 3 float32 values, and the ranks its rows were split over."""
+    display.UpdatePropertyInformation()
+    values = np.asarray(display.GetPropertyValue("LightFieldVisibleShare"), dtype=np.float64)
+    width, height = int(values[0]), int(values[1])
+    share = values[2:].astype(np.float32).reshape(height, width, 3)
+    return share, display.GetPropertyValue("LightFieldVisibleShareRanks")
+
+
+def check_share_map(check, display, ranks, write=None, compare=None):
+    """The map split over the ranks (--write-map on one rank, --compare-map on several): its rows
+    split over every rank; against the one-rank map within MAP_TOLERANCE (by construction bit for
+    bit); negative: the same map with the second rank's rows (every other row) left 0, as if its
+    share were not combined, must fail that check."""
+    share, split = visible_share_map(display)
+    display.UpdatePropertyInformation()
+    print("visible-share map %d x %d over %d rank(s): %.3f s on the first rank, mean V %.4f"
+          % (share.shape[1], share.shape[0], split,
+             display.GetPropertyValue("LightFieldVisibleShareSeconds"),
+             float(share[:, :, 0].mean())))
+    check(split == ranks, "the map's rows split over the %d rank(s) (%d)" % (ranks, split))
+    check(float(share[:, :, 0].min()) < 0.9, "the relief hides part of the hemisphere (min V %.3f)"
+          % float(share[:, :, 0].min()))
+    if write:
+        np.savez(write, share=share)
+        print("wrote %s" % write)
+    if compare:
+        one_rank = np.load(compare)["share"]
+
+        def difference(a):
+            return (float(np.abs(a.astype(np.float64) - one_rank).max())
+                    if a.shape == one_rank.shape else float("inf"))
+
+        print("map over %d ranks against one rank: max |difference| %g (bit for bit: %s)"
+              % (ranks, difference(share), bool(np.array_equal(share, one_rank))))
+        check(difference(share) <= MAP_TOLERANCE, "the map combined over the ranks is the "
+              "one-rank map (max |difference| %g)" % difference(share))
+        partial = share.copy()
+        partial[1::2] = 0.0
+        check(difference(partial) > MAP_TOLERANCE, "negative: without the second rank's rows the "
+              "map is not the one-rank map (max |difference| %g)" % difference(partial))

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "ReliefOcclusion.h"
 
+#include "Distribution.h" // Reducer, Agree
 #include "EmbreeScene.h"
 #include "LightField.h"
 #include "ReliefSurface.h"
@@ -11,6 +12,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <stdexcept>
 #include <thread>
@@ -161,10 +163,12 @@ ReliefFrame ReliefFrameOf(const ReliefSurface& surface, double depthScale)
 
 std::vector<float> ReliefVisibleShareGrid(const HeightField& field, const ReliefFrame& frame,
   int& gridWidth, int& gridHeight, const ProgressCallback& progress,
-  const std::vector<ReliefEmitterSample>& lightSamples)
+  const std::vector<ReliefEmitterSample>& lightSamples, Reducer* reducer)
 {
   gridWidth = std::min(field.Width(), MaxVisibleShareSide);
   gridHeight = std::min(field.Height(), MaxVisibleShareSide);
+  const bool split = reducer && reducer->Size() > 1;
+  const GridRows rows = split ? GridRows{ reducer->Rank(), reducer->Size() } : GridRows{};
   // ReliefVisibleShareMap reports from its worker threads: only the calling thread talks to the
   // caller's callback (a VTK filter's UpdateProgress is for the thread that runs the filter);
   // the workers see its answer through the flag.
@@ -178,46 +182,79 @@ std::vector<float> ReliefVisibleShareGrid(const HeightField& field, const Relief
     }
     return !stopped;
   };
-  // The visible share, then the share of the relief each cell's occluded directions meet
-  // (ReliefSeenShareMap, which reads the first), then the area light's self-shadow if asked for.
-  try
+  // This rank's rows of one pass; a stop becomes AbortedError (agreed as such between ranks).
+  const auto pass = [&](const std::function<std::vector<float>()>& rowsOfPass)
   {
-    const int count = ReliefLighting().OcclusionDirections;
-    const bool light = !lightSamples.empty();
-    const double third = light ? 1.0 / 3.0 : 0.5;
-    const std::vector<float> share = ReliefVisibleShareMap(
-      field, frame, gridWidth, gridHeight, count, SubProgress(watched, 0.0, third));
-    const std::vector<float> seen = ReliefSeenShareMap(field, frame, share, gridWidth, gridHeight,
-      count, SubProgress(watched, third, light ? 2.0 * third : 1.0));
-    std::vector<float> shadow;
+    std::vector<float> values;
+    const auto step = [&]()
+    {
+      try
+      {
+        values = rowsOfPass();
+      }
+      catch (const std::runtime_error&)
+      {
+        if (stopped)
+        {
+          throw AbortedError();
+        }
+        throw;
+      }
+    };
+    if (split)
+    {
+      Agree(*reducer, step); // a stop or failure on one rank stops every rank before the sum
+      // A value plus the other ranks' zeros is that value exactly.
+      reducer->SumInPlace(values.data(), values.size());
+    }
+    else
+    {
+      step();
+    }
+    return values;
+  };
+  // The visible share, then the share of the relief each cell's occluded directions meet
+  // (ReliefSeenShareMap, which reads the first, whole), then the area light's self-shadow if
+  // asked for: a third (or half) of the work each.
+  const int count = ReliefLighting().OcclusionDirections;
+  const bool light = !lightSamples.empty();
+  const double third = light ? 1.0 / 3.0 : 0.5;
+  const std::vector<float> share = pass(
+    [&]()
+    {
+      return ReliefVisibleShareMap(
+        field, frame, gridWidth, gridHeight, count, SubProgress(watched, 0.0, third), rows);
+    });
+  const std::vector<float> seen = pass(
+    [&]()
+    {
+      return ReliefSeenShareMap(field, frame, share, gridWidth, gridHeight, count,
+        SubProgress(watched, third, light ? 2.0 * third : 1.0), rows);
+    });
+  std::vector<float> shadow;
+  if (light)
+  {
+    shadow = pass(
+      [&]()
+      {
+        return ReliefEmitterShadowMap(field, frame, lightSamples,
+          std::vector<int>(lightSamples.size(), 0), 1, gridWidth, gridHeight,
+          SubProgress(watched, 2.0 * third, 1.0), rows);
+      });
+  }
+  const std::size_t components = light ? 4 : 3;
+  std::vector<float> cells(components * seen.size());
+  for (std::size_t c = 0; c < seen.size(); ++c)
+  {
+    cells[components * c] = share[2 * c];
+    cells[components * c + 1] = share[2 * c + 1];
+    cells[components * c + 2] = seen[c];
     if (light)
     {
-      shadow =
-        ReliefEmitterShadowMap(field, frame, lightSamples, std::vector<int>(lightSamples.size(), 0),
-          1, gridWidth, gridHeight, SubProgress(watched, 2.0 * third, 1.0));
+      cells[components * c + 3] = shadow[c];
     }
-    const std::size_t components = light ? 4 : 3;
-    std::vector<float> cells(components * seen.size());
-    for (std::size_t c = 0; c < seen.size(); ++c)
-    {
-      cells[components * c] = share[2 * c];
-      cells[components * c + 1] = share[2 * c + 1];
-      cells[components * c + 2] = seen[c];
-      if (light)
-      {
-        cells[components * c + 3] = shadow[c];
-      }
-    }
-    return cells;
   }
-  catch (const std::runtime_error&)
-  {
-    if (stopped)
-    {
-      throw AbortedError();
-    }
-    throw;
-  }
+  return cells;
 }
 
 } // namespace vlf

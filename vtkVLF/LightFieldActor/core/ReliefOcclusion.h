@@ -26,6 +26,7 @@ class TriangleScene;
 namespace vlf
 {
 class LightField;
+class Reducer;
 struct ReliefSurface;
 
 // Texels per side of a relief's visible-share map at most: V varies at the scale of the
@@ -63,9 +64,15 @@ ReliefFrame ReliefFrameOf(const ReliefSurface& surface, double depthScale);
 // visible share of the relief the occluded directions meet, ReliefSeenShareMap; 4 with
 // `lightSamples`: the share of that area light the relief lets through, ReliefEmitterShadowMap,
 // for the renderer's light 0). A stop asked through progress throws AbortedError.
+// With a reducer of several ranks (collective: every rank calls it with the same arguments) the
+// rows are split as the final gather splits its texels (Distribution.h): each rank computes every
+// ranks-th row (GridRows) into a map of zeros and one sum over the ranks per pass gives every
+// rank the whole map, the one-rank map bit for bit (the seen shares read the whole visible-share
+// map, so one sum per pass: 8, 4 and, with light samples, 4 bytes a cell). A failure or stop on
+// one rank is agreed (Agree): every rank throws, AbortedError where it was a stop.
 std::vector<float> ReliefVisibleShareGrid(const HeightField& field, const ReliefFrame& frame,
   int& gridWidth, int& gridHeight, const ProgressCallback& progress = {},
-  const std::vector<ReliefEmitterSample>& lightSamples = {});
+  const std::vector<ReliefEmitterSample>& lightSamples = {}, Reducer* reducer = nullptr);
 
 } // namespace vlf
 } // namespace mesolight

@@ -9,7 +9,10 @@
 //   - vtkLightFieldGatherFilter on a sphere split across the ranks: every point's irradiance equals
 //     the serial gather's (matched by position), no field sent between ranks; a concave object
 //     (the object's own occlusion) too;
-//   - negative: one rank's directions alone (ObjectGatherer without the sum) differ.
+//   - negative: one rank's directions alone (ObjectGatherer without the sum) differ;
+//   - a relief's visible-share map with its rows split over the ranks (ReliefVisibleShareGrid
+//     with a reducer) equals the one-process map bit for bit; without the float sums (each rank's
+//     rows alone) it does not; a stop on one rank stops every rank (AbortedError everywhere).
 // Exit 0 when every check holds on this rank.
 #include "vtkAppendPolyData.h"
 #include "vtkCellData.h"
@@ -28,9 +31,12 @@
 #include "vtkVirtualLightField.h"
 #include "vtkVirtualLightFieldCore.h"
 
+#include "HeightFieldTracer.h"
 #include "LightField.h"
 #include "ObjectGatherer.h"
 #include "ObjectShadows.h"
+#include "ReliefOcclusion.h"
+#include "ReliefSurface.h"
 
 #include <algorithm>
 #include <cmath>
@@ -282,6 +288,107 @@ int Run(vtkMultiProcessController* controller)
   }
   return Failures;
 }
+// A reducer that leaves the float sums out (the agreements, in doubles, still run): each rank's
+// rows of a split map stay uncombined.
+class NotCombining : public vlf::Reducer
+{
+public:
+  explicit NotCombining(vlf::Reducer& inner)
+    : Inner(inner)
+  {
+  }
+  int Rank() const override { return this->Inner.Rank(); }
+  int Size() const override { return this->Inner.Size(); }
+  void SumInPlace(float*, std::size_t) override {}
+  void SumInPlace(double* data, std::size_t n) override { this->Inner.SumInPlace(data, n); }
+  void Broadcast(std::string& bytes, int root) override { this->Inner.Broadcast(bytes, root); }
+  void Send(const std::string& bytes, int to) override { this->Inner.Send(bytes, to); }
+  std::string Receive(int from) override { return this->Inner.Receive(from); }
+
+private:
+  vlf::Reducer& Inner;
+};
+
+// The relief's visible-share map (vtkLightFieldReliefSurface's, ParaView's Relief Surface) split
+// by rows over the ranks against the one-process map every rank also computes: V-grooves walled
+// as the command line's reliefs, 37 rows (a multiple of neither 2 nor 3).
+int ShareMap(vtkMultiProcessController* controller)
+{
+  vlf::ControllerReducer reducer(controller);
+  const int ranks = reducer.Size();
+  const int w = 64, h = 37;
+  std::vector<float> depth(static_cast<std::size_t>(w) * h);
+  for (int j = 0; j < h; ++j)
+  {
+    for (int i = 0; i < w; ++i)
+    {
+      const double offset = std::abs((i % 16) * 2 + 1 - 16);
+      depth[static_cast<std::size_t>(j) * w + i] =
+        static_cast<float>(std::clamp(1.0 - offset / 12.0, 0.0, 1.0));
+    }
+  }
+  const mesolight::HeightField relief(w, h, depth, mesolight::HeightField::Edge::Walled);
+  vlf::ReliefSurface surface; // the unit square, facing +z
+  surface.Origin = glm::dvec3(0.0);
+  surface.AxisU = glm::dvec3(1.0, 0.0, 0.0);
+  surface.AxisV = glm::dvec3(0.0, 1.0, 0.0);
+  surface.Normal = glm::dvec3(0.0, 0.0, 1.0);
+  const mesolight::ReliefFrame frame = vlf::ReliefFrameOf(surface, 0.1);
+  // A small area light low over the grooves, so that the fourth value (the relief's shadow of
+  // it, ReliefEmitterShadowMap) is split too.
+  std::vector<mesolight::ReliefEmitterSample> light;
+  for (int k = 0; k < 4; ++k)
+  {
+    mesolight::ReliefEmitterSample sample;
+    sample.Position = glm::dvec3(-0.5 + 0.05 * (k % 2), 0.5 + 0.05 * (k / 2), 0.4);
+    sample.Normal = glm::normalize(glm::dvec3(1.0, 0.0, -0.4));
+    sample.RadianceArea = glm::dvec3(0.25);
+    light.push_back(sample);
+  }
+  int sw = 0, sh = 0, width = 0, height = 0;
+  const std::vector<float> serial = vlf::ReliefVisibleShareGrid(relief, frame, sw, sh, {}, light);
+  const std::vector<float> split =
+    vlf::ReliefVisibleShareGrid(relief, frame, width, height, {}, light, &reducer);
+  Check(width == sw && height == sh && split.size() == serial.size(), "the same grid");
+  const float lowest = *std::min_element(serial.begin(), serial.end());
+  std::size_t differing = 0;
+  for (std::size_t k = 0; k < std::min(split.size(), serial.size()); ++k)
+  {
+    differing += split[k] != serial[k] ? 1 : 0;
+  }
+  std::printf("rank %d of %d: visible-share map %d x %d split by rows: %zu of %zu values differ "
+              "from the one-process map (lowest value %.3f)\n",
+    Rank, ranks, width, height, differing, serial.size(), lowest);
+  Check(lowest < 0.9f, "the grooves hide part of the hemisphere");
+  Check(differing == 0, "the split map equals the one-process map bit for bit");
+  if (ranks > 1)
+  {
+    NotCombining alone(reducer);
+    const std::vector<float> own =
+      vlf::ReliefVisibleShareGrid(relief, frame, width, height, {}, light, &alone);
+    std::size_t zero = 0;
+    for (std::size_t k = 0; k < own.size(); ++k)
+    {
+      zero += own[k] != serial[k] ? 1 : 0;
+    }
+    std::printf("rank %d of %d: this rank's rows alone: %zu values differ\n", Rank, ranks, zero);
+    Check(zero > own.size() / 3, "a rank's rows alone differ (the comparison can fail)");
+    // A stop on the last rank only: every rank stops, none waits for it in a sum.
+    bool aborted = false;
+    try
+    {
+      vlf::ReliefVisibleShareGrid(
+        relief, frame, width, height,
+        [&](double fraction) { return !(Rank == ranks - 1 && fraction > 0.2); }, light, &reducer);
+    }
+    catch (const vlf::AbortedError&)
+    {
+      aborted = true;
+    }
+    Check(aborted, "a stop on one rank stops every rank (AbortedError)");
+  }
+  return Failures;
+}
 } // namespace
 
 int main(int argc, char* argv[])
@@ -293,7 +400,9 @@ int main(int argc, char* argv[])
   int failures = 0;
   try
   {
-    failures = Run(controller);
+    Run(controller);
+    ShareMap(controller);
+    failures = Failures; // both parts' checks
   }
   catch (const std::exception& e)
   {

@@ -1,0 +1,78 @@
+# SPDX-License-Identifier: BSD-3-Clause
+"""What splitting the relief's visible-share map over MPI ranks saves ParaView's Relief Surface lit
+by a Virtual Light Field (vtkLightFieldReliefSurface): the map alone (a depth scale change
+recomputes it and keeps the probes), timed by the first rank (its rows and the two sums over the
+ranks: LightFieldVisibleShareSeconds, and the processor seconds of its process, all threads:
+LightFieldVisibleShareCpuSeconds, what the split saves each rank on a loaded machine), on the Cornell box's field (513 directions, 32 rays, 4
+iterations, no gather) and a 380 mm patch in front of its back wall, bricks of 256 x 256 texels
+(the map's cap). Run it once per rank count in the same session and compare the medians:
+
+    bash scripts/xvfb.sh mpiexec -n N bash scripts/pvbatch.sh \\
+        scripts/bench-relief-share-mpi.py [OUT.csv] [REPEATS]            # N = 1, 2
+
+(OpenMPI on a machine with fewer cores than ranks, or as root, needs
+OMPI_MCA_rmaps_base_oversubscribe=1, OMPI_ALLOW_RUN_AS_ROOT=1 and
+OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1, as the plugin tests set). Prints one line per map and the
+median; appends "ranks,threads,side,median_seconds,median_cpu_seconds,repeats" to OUT.csv (default
+docs/measurements/paraview/relief-share-mpi.csv; threads: VTK_SMP_MAX_THREADS, else "auto", the
+machine's cores split between the ranks on it).
+"""
+import os
+import statistics
+import sys
+
+import paraview.simple as pvs
+from paraview import servermanager
+
+here = os.path.dirname(os.path.abspath(__file__))
+out = sys.argv[1] if len(sys.argv) > 1 else os.path.join(
+    here, "..", "docs", "measurements", "paraview", "relief-share-mpi.csv")
+repeats = int(sys.argv[2]) if len(sys.argv) > 2 else 5
+SIDE = 256
+
+pvs.LoadPlugin(os.environ["MESOLIGHT_PLUGIN"], remote=False, ns=pvs.__dict__)
+ranks = servermanager.ActiveConnection.GetNumberOfDataPartitions()
+box = pvs.MesolightCornellBox()
+field = pvs.MesolightVirtualLightField(Input=box, Directions=513, RaysPerSide=32, Iterations=4,
+                                       FinalGather=0)
+view = pvs.CreateRenderView()
+view.ViewSize = [200, 200]
+pvs.Show(field, view)
+patch = pvs.Plane(Origin=[90.0, 90.0, 558.0], Point1=[90.0, 470.0, 558.0],
+                  Point2=[470.0, 90.0, 558.0], XResolution=4, YResolution=4)
+depth = pvs.MesolightProceduralRelief(Pattern=0, Resolution=[SIDE, SIDE])
+texture = pvs.MesolightReliefTexture(Input=pvs.OutputPort(depth, 0), DepthScale=0.05)
+attached = pvs.MesolightAttachReliefTexture(Input=patch, ReliefTexture=texture)
+relief = pvs.Show(attached, view)
+relief.SetRepresentationType("Relief Surface")
+relief.OverrideDepthScale = 1
+relief.ReliefDepthScale = 0.05
+relief.LightField = field
+pvs.Render(view)  # the field, the probes and the first map, unmeasured
+
+
+def value(name):
+    relief.UpdatePropertyInformation()
+    return relief.GetPropertyValue(name)
+
+
+times, cpu_times = [], []
+for run in range(repeats):
+    relief.ReliefDepthScale = 0.1 if run % 2 == 0 else 0.07
+    pvs.Render(view)  # the map alone
+    seconds, cpu = value("LightFieldVisibleShareSeconds"), value("LightFieldVisibleShareCpuSeconds")
+    times.append(seconds)
+    cpu_times.append(cpu)
+    print("ranks %d, run %d, bricks %d x %d: visible-share map %.3f s, %.3f processor s on the "
+          "first rank (split over %d rank(s))"
+          % (ranks, run, SIDE, SIDE, seconds, cpu, value("LightFieldVisibleShareRanks")))
+median, cpu_median = statistics.median(times), statistics.median(cpu_times)
+print("ranks %d: median %.3f s, %.3f processor s on the first rank over %d maps"
+      % (ranks, median, cpu_median, repeats))
+new = not os.path.exists(out)
+with open(out, "a") as csv:
+    if new:
+        csv.write("ranks,threads,side,median_seconds,median_cpu_seconds,repeats\n")
+    csv.write("%d,%s,%d,%.4f,%.4f,%d\n" % (ranks, os.environ.get("VTK_SMP_MAX_THREADS", "auto"),
+                                           SIDE, median, cpu_median, repeats))
+print("appended to %s" % out)
