@@ -41,10 +41,10 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <iomanip>
 #include <iostream>
 #include <map>
 #include <memory>
-#include <iomanip>
 #include <sstream>
 #include <sys/stat.h>
 
@@ -377,11 +377,12 @@ RgbImage FieldImage(const vlf::LightField& field, const std::vector<PixelHit>& h
 
 // "auto", "auto-uniform" (the automatic choice without its finer texels on contact surfaces),
 // "auto-adaptive" (auto-uniform's lines and base texels, texels per surface from a first pass:
-// AdaptiveTexels.h; the caller chooses them), "KxN" or "KxNtF" (texel = F x the cell side).
+// AdaptiveTexels.h; the caller chooses them), "auto-refine" (the same, never coarser than the
+// base), "KxN" or "KxNtF" (texel = F x the cell side).
 bool ParseSettings(const std::string& text, const TriangleScene& scene, std::uint64_t budget,
   vlf::LightFieldSettings& settings, std::string& note)
 {
-  if (text == "auto" || text == "auto-uniform" || text == "auto-adaptive")
+  if (text == "auto" || text == "auto-uniform" || text == "auto-adaptive" || text == "auto-refine")
   {
     vlf::AutomaticLimits limits;
     limits.MemoryBudget = budget;
@@ -498,7 +499,9 @@ int RunVlfAccuracyBenchmark(const std::vector<std::string>& args)
     "--scenes", "LIST", "boxes,room,corridor,thin,cornell", "boxes,room,corridor,thin,cornell");
   cl.AddValue("--settings", "LIST",
     "per scene: auto, auto-uniform (auto without its finer texels on surfaces others stand on), "
-    "auto-adaptive (auto-uniform's lines, texels per surface from the light of a first pass), KxN (K directions, N lines per side) or KxNtF (texel F x the cell side)",
+    "auto-adaptive (auto-uniform's lines, texels per surface from the light of a first pass), "
+    "auto-refine (auto-adaptive never coarser than the base), KxN (K directions, N lines per side) "
+    "or KxNtF (texel F x the cell side)",
     "513x32,auto");
   cl.AddFlag(
     "--full", "sweep more settings: 513x32,513x64,2049x32,2049x64,2049x64t0.5,auto,2049x96");
@@ -657,8 +660,8 @@ int RunVlfAccuracyBenchmark(const std::vector<std::string>& args)
       std::string note;
       if (!ParseSettings(text, s.Scene, budget, settings, note))
       {
-        return cl.UsageError(
-          "--settings: '" + text + "' is not auto, KxN or KxNtF (or auto-uniform, auto-adaptive)");
+        return cl.UsageError("--settings: '" + text +
+          "' is not auto, KxN or KxNtF (or auto-uniform, auto-adaptive, auto-refine)");
       }
       if (!note.empty())
       {
@@ -668,11 +671,16 @@ int RunVlfAccuracyBenchmark(const std::vector<std::string>& args)
       try
       {
         const Clock::time_point start = Clock::now();
-        if (text == "auto-adaptive")
+        if (text == "auto-adaptive" || text == "auto-refine")
         {
           // The first pass's time counts as the build's.
           vlf::AdaptiveTexelReport report;
-          settings = vlf::ChooseAdaptiveTexels(s.Scene, settings, {}, &report);
+          vlf::AdaptiveTexelOptions adaptive;
+          if (text == "auto-refine")
+          {
+            adaptive.Coarsen = -1.0; // never
+          }
+          settings = vlf::ChooseAdaptiveTexels(s.Scene, settings, adaptive, &report);
           std::printf("# %s %s: %s, first pass %s\n", name.c_str(), text.c_str(),
             report.Describe().c_str(), FormatBytes(report.FirstPassBytes).c_str());
           std::ostringstream levels;

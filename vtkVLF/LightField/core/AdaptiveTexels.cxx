@@ -74,7 +74,8 @@ std::vector<SurfaceVariation> MeasureLightVariation(const LightField& field,
           continue;
         }
         // Along each axis where both neighbours are on the surface.
-        const std::size_t pairs[2][2] = { { a > 0 ? at(a - 1, b) : c, a + 1 < w ? at(a + 1, b) : c },
+        const std::size_t pairs[2][2] = { { a > 0 ? at(a - 1, b) : c,
+                                            a + 1 < w ? at(a + 1, b) : c },
           { b > 0 ? at(a, b - 1) : c, b + 1 < h ? at(a, b + 1) : c } };
         for (const auto& p : pairs)
         {
@@ -181,11 +182,10 @@ LightFieldSettings ChooseAdaptiveTexels(const TriangleScene& scene,
   chosen.SurfaceTexelLevels = ChooseTexelLevels(*field, variation, options);
   // Within the budget: while the finer texels do not fit, the finest surfaces get one level less.
   for (std::size_t estimate = EstimateMemory(scene, chosen).TotalBytes;
-       estimate > settings.MemoryBudget;
-       estimate = EstimateMemory(scene, chosen).TotalBytes)
+       estimate > settings.MemoryBudget; estimate = EstimateMemory(scene, chosen).TotalBytes)
   {
-    const std::int8_t finest = *std::min_element(
-      chosen.SurfaceTexelLevels.begin(), chosen.SurfaceTexelLevels.end());
+    const std::int8_t finest =
+      *std::min_element(chosen.SurfaceTexelLevels.begin(), chosen.SurfaceTexelLevels.end());
     if (finest >= 0)
     {
       break; // the base texels: Build refuses the field as it would without the choice

@@ -60,9 +60,9 @@ struct AdaptiveTexelOptions
 
 struct SurfaceVariation
 {
-  double Mean = 0.0;   // mean radiance over the surface's texels (channels summed)
-  double Defect = 0.0; // mean relative interpolation defect, the noise's share subtracted
-  double Noise = 0.0;  // the share subtracted
+  double Mean = 0.0;       // mean radiance over the surface's texels (channels summed)
+  double Defect = 0.0;     // mean relative interpolation defect, the noise's share subtracted
+  double Noise = 0.0;      // the share subtracted
   std::size_t Samples = 0; // texels measured (0: too small to tell, or an emitter)
 };
 

@@ -156,7 +156,7 @@ TEST(VLFAdaptiveTexels, ResolvesSharpShadowsWhereUniformTexelsDoNotAndCoarsensFl
   white.Name = "plates";
   white.Diffuse = glm::vec3(0.5f);
   const std::uint32_t plates = scene.AddMaterial(white);
-  const float k = 2.0f / (2.0f - 0.12f); // shadow of a top edge on the floor: x k
+  const float k = 2.0f / (2.0f - 0.12f);     // shadow of a top edge on the floor: x k
   std::vector<std::array<float, 4>> shadows; // x0, x1, y0, y1 on the floor
   for (int i = -1; i <= 1; ++i)
   {
@@ -185,8 +185,8 @@ TEST(VLFAdaptiveTexels, ResolvesSharpShadowsWhereUniformTexelsDoNotAndCoarsensFl
   for (std::uint32_t s = 0; s < uniform->Surfaces().size(); ++s)
   {
     const Surface& surface = uniform->Surfaces()[s];
-    const glm::vec3 corner = surface.Origin / uniform->NormalizationScale() +
-      uniform->NormalizationCentre();
+    const glm::vec3 corner =
+      surface.Origin / uniform->NormalizationScale() + uniform->NormalizationCentre();
     if (surface.Normal.z > 0.99f && std::abs(corner.z - 0.12f) < 1e-3f)
     {
       tops = s;
@@ -196,7 +196,7 @@ TEST(VLFAdaptiveTexels, ResolvesSharpShadowsWhereUniformTexelsDoNotAndCoarsensFl
   std::printf("floor defect %.2f%% -> level %d, the plates' tops %.2f%% -> level %d\n",
     100.0 * report.Variation[0].Defect, adaptiveSettings.SurfaceTexelLevels[0],
     100.0 * report.Variation[tops].Defect, adaptiveSettings.SurfaceTexelLevels[tops]);
-  EXPECT_LT(adaptiveSettings.SurfaceTexelLevels[0], 0);   // the shadows: finer
+  EXPECT_LT(adaptiveSettings.SurfaceTexelLevels[0], 0);    // the shadows: finer
   EXPECT_GT(adaptiveSettings.SurfaceTexelLevels[tops], 0); // flat light: coarser
 
   // Floor points within 1.5 uniform texels of a shadow edge, on a grid of a fifth of a texel.
@@ -219,8 +219,8 @@ TEST(VLFAdaptiveTexels, ResolvesSharpShadowsWhereUniformTexelsDoNotAndCoarsensFl
         TexelPoint p;
         p.Surface = 0;
         p.Triangle = floor.Triangles[0];
-        p.Unit = (glm::vec3(x, y, 0.0f) - uniform->NormalizationCentre()) *
-          uniform->NormalizationScale();
+        p.Unit =
+          (glm::vec3(x, y, 0.0f) - uniform->NormalizationCentre()) * uniform->NormalizationScale();
         points.push_back(p);
       }
     }
