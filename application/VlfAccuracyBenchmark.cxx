@@ -17,6 +17,7 @@
 #include "Timing.h"
 #include "VlfAccuracyScenes.h"
 
+#include "AdaptiveTexels.h"
 #include "AutomaticSettings.h"
 #include "EmbreeScene.h"
 #include "FinalGather.h"
@@ -40,6 +41,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <iomanip>
 #include <iostream>
 #include <map>
 #include <memory>
@@ -374,15 +376,17 @@ RgbImage FieldImage(const vlf::LightField& field, const std::vector<PixelHit>& h
 }
 
 // "auto", "auto-uniform" (the automatic choice without its finer texels on contact surfaces),
-// "KxN" or "KxNtF" (texel = F x the cell side).
+// "auto-adaptive" (auto-uniform's lines and base texels, texels per surface from a first pass:
+// AdaptiveTexels.h; the caller chooses them), "auto-refine" (the same, never coarser than the
+// base), "KxN" or "KxNtF" (texel = F x the cell side).
 bool ParseSettings(const std::string& text, const TriangleScene& scene, std::uint64_t budget,
   vlf::LightFieldSettings& settings, std::string& note)
 {
-  if (text == "auto" || text == "auto-uniform")
+  if (text == "auto" || text == "auto-uniform" || text == "auto-adaptive" || text == "auto-refine")
   {
     vlf::AutomaticLimits limits;
     limits.MemoryBudget = budget;
-    if (text == "auto-uniform")
+    if (text != "auto")
     {
       limits.ContactTexelHalvings = 0;
     }
@@ -495,7 +499,9 @@ int RunVlfAccuracyBenchmark(const std::vector<std::string>& args)
     "--scenes", "LIST", "boxes,room,corridor,thin,cornell", "boxes,room,corridor,thin,cornell");
   cl.AddValue("--settings", "LIST",
     "per scene: auto, auto-uniform (auto without its finer texels on surfaces others stand on), "
-    "KxN (K directions, N lines per side) or KxNtF (texel F x the cell side)",
+    "auto-adaptive (auto-uniform's lines, texels per surface from the light of a first pass), "
+    "auto-refine (auto-adaptive never coarser than the base), KxN (K directions, N lines per side) "
+    "or KxNtF (texel F x the cell side)",
     "513x32,auto");
   cl.AddFlag(
     "--full", "sweep more settings: 513x32,513x64,2049x32,2049x64,2049x64t0.5,auto,2049x96");
@@ -512,7 +518,8 @@ int RunVlfAccuracyBenchmark(const std::vector<std::string>& args)
   cl.AddValue("--variants", "LIST",
     "what is compared per setting: none (the propagated textures), single (the final gather in "
     "one pass, reading the propagated textures at its rays' hits), gather (the final gather: "
-    "two passes, the default), bilateral (the texture filter)",
+    "two passes, the default), bilateral (the texture filter), gather-bilateral (the filter on "
+    "the gathered textures)",
     "none,gather,bilateral");
   cl.AddValue("--gather-rays", "LIST",
     "the final gather's indirect rays per texel (several: one gather row each)", "1024");
@@ -554,9 +561,11 @@ int RunVlfAccuracyBenchmark(const std::vector<std::string>& args)
   const std::vector<std::string> variants = cl.GetStringList("--variants");
   for (const std::string& v : variants)
   {
-    if (v != "none" && v != "single" && v != "gather" && v != "bilateral")
+    if (v != "none" && v != "single" && v != "gather" && v != "bilateral" &&
+      v != "gather-bilateral")
     {
-      return cl.UsageError("--variants: '" + v + "' is not none, single, gather or bilateral");
+      return cl.UsageError(
+        "--variants: '" + v + "' is not none, single, gather, bilateral or gather-bilateral");
     }
   }
   const std::string problem = CheckOutputOptions(cl, { "--csv", "--plot" }, {});
@@ -651,8 +660,8 @@ int RunVlfAccuracyBenchmark(const std::vector<std::string>& args)
       std::string note;
       if (!ParseSettings(text, s.Scene, budget, settings, note))
       {
-        return cl.UsageError(
-          "--settings: '" + text + "' is not auto, KxN or KxNtF (or auto-uniform)");
+        return cl.UsageError("--settings: '" + text +
+          "' is not auto, KxN or KxNtF (or auto-uniform, auto-adaptive, auto-refine)");
       }
       if (!note.empty())
       {
@@ -661,8 +670,35 @@ int RunVlfAccuracyBenchmark(const std::vector<std::string>& args)
       }
       try
       {
-        const vlf::MemoryEstimate estimate = vlf::EstimateMemory(s.Scene, settings);
         const Clock::time_point start = Clock::now();
+        if (text == "auto-adaptive" || text == "auto-refine")
+        {
+          // The first pass's time counts as the build's.
+          vlf::AdaptiveTexelReport report;
+          vlf::AdaptiveTexelOptions adaptive;
+          if (text == "auto-refine")
+          {
+            adaptive.Coarsen = -1.0; // never
+          }
+          settings = vlf::ChooseAdaptiveTexels(s.Scene, settings, adaptive, &report);
+          std::printf("# %s %s: %s, first pass %s\n", name.c_str(), text.c_str(),
+            report.Describe().c_str(), FormatBytes(report.FirstPassBytes).c_str());
+          std::ostringstream levels;
+          for (std::size_t i = 0; i < report.Variation.size(); ++i)
+          {
+            const vlf::SurfaceVariation& v = report.Variation[i];
+            if (v.Samples > 0)
+            {
+              levels << ' ' << i << ':' << static_cast<int>(settings.SurfaceTexelLevels[i]) << '('
+                     << std::fixed << std::setprecision(1) << 100.0 * v.Defect << '/'
+                     << 100.0 * v.Noise << "%)";
+            }
+          }
+          std::printf("# %s %s: surface:level(defect/noise):%s\n", name.c_str(), text.c_str(),
+            levels.str().c_str());
+          std::fflush(stdout);
+        }
+        const vlf::MemoryEstimate estimate = vlf::EstimateMemory(s.Scene, settings);
         std::unique_ptr<vlf::LightField> field = vlf::LightField::Build(s.Scene, settings);
         const double build = SecondsSince(start);
         const Clock::time_point propagateStart = Clock::now();
@@ -701,7 +737,7 @@ int RunVlfAccuracyBenchmark(const std::vector<std::string>& args)
           settings.RaysPerSide * settings.RaysPerSide;
         // The filter changes the totals for good: it runs last.
         std::vector<std::string> order;
-        for (const char* v : { "none", "single", "gather", "bilateral" })
+        for (const char* v : { "none", "single", "gather", "gather-bilateral", "bilateral" })
         {
           if (std::find(variants.begin(), variants.end(), v) != variants.end())
           {
@@ -722,8 +758,11 @@ int RunVlfAccuracyBenchmark(const std::vector<std::string>& args)
         {
           const bool filtered = variant == "bilateral";
           const bool single = variant == "single";
+          // The filter on top of the gathered textures (the gather at the first ray count).
+          const bool gatherFiltered = variant == "gather-bilateral";
           gatherOptions.Prepass = !single;
-          gatherOptions.IndirectRays = variant.size() > 6 && variant.compare(0, 6, "gather") == 0
+          gatherOptions.IndirectRays =
+            variant.size() > 6 && variant.compare(0, 6, "gather") == 0 && !gatherFiltered
             ? std::atoi(variant.c_str() + 6)
             : gatherRayCounts.front();
           double gatherSeconds = 0.0;
@@ -736,6 +775,10 @@ int RunVlfAccuracyBenchmark(const std::vector<std::string>& args)
           if (single || variant.compare(0, 6, "gather") == 0)
           {
             const vlf::FinalGatherReport g = vlf::FinalGather(*field, gatherOptions);
+            if (gatherFiltered)
+            {
+              vlf::FilterTotalDiffuse(*field, vlf::TextureFilterSettings());
+            }
             gatherSeconds = g.Seconds;
             gatherRays = g.Rays;
             std::printf("# %s %s gather: %zu texels gathered, %zu filled from neighbours, "
@@ -773,7 +816,7 @@ int RunVlfAccuracyBenchmark(const std::vector<std::string>& args)
               << variant << ',' << gatherSeconds << ',' << gatherRays << ',' << e.Pixels << ','
               << e.Mean << ',' << e.P95 << ',' << e.Black << ',' << e.ReferenceNoise << ',' << peak
               << '\n';
-          if (variant != "bilateral")
+          if (variant != "bilateral" && variant != "gather-bilateral")
           {
             const std::string label = name + (variant == "none" ? "" : " " + variant);
             ChartSeries& cs = series[label];

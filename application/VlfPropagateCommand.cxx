@@ -7,6 +7,7 @@
 #include "OutputFile.h"
 #include "Timing.h"
 
+#include "AdaptiveTexels.h"
 #include "AutomaticSettings.h"
 #include "Distribution.h"
 #include "FinalGather.h"
@@ -185,6 +186,10 @@ int Propagate(const std::vector<std::string>& args)
     "texels halved H times (0-3) on the surfaces others stand on (a floor under boxes, a wall "
     "behind ribs); auto: once with the automatic resolution and the final gather",
     "auto");
+  cl.AddFlag("--adaptive-texels",
+    "texels per surface from the light of a cheap first pass (AdaptiveTexels.h): halved or "
+    "quartered where it varies between texels, doubled where it is flat (instead of "
+    "--contact-texels; with the final gather, one process)");
   cl.AddValue("--tolerance", "X",
     "shoot until at most this share of the emitted flux is left unshot", "0.01");
   cl.AddValue("--max-iterations", "K", "most iterations --tolerance may take (in total)", "100");
@@ -274,6 +279,14 @@ int Propagate(const std::vector<std::string>& args)
   {
     return cl.UsageError("--resume and --filter exclude each other");
   }
+  // The texels are chosen from a gathered first pass; a resumed field keeps its stored ones.
+  const bool adaptive = cl.Has("--adaptive-texels");
+  if (adaptive && (resume || cl.Has("--contact-texels") || !gather))
+  {
+    return cl.UsageError(
+      "--adaptive-texels excludes --resume (the field keeps its texels), --contact-texels and "
+      "--no-gather (it measures the gathered light)");
+  }
   if (vlf::FileExists(out) && !vlf::IsSnapshotFile(out))
   {
     std::cerr << "mesolight vlf propagate: '" << out
@@ -299,6 +312,14 @@ int Propagate(const std::vector<std::string>& args)
   TimedReducer reducer(controllerReducer);
   const bool distributed = reducer.Size() > 1;
   const bool root = reducer.Rank() == 0;
+  if (adaptive && distributed)
+  {
+    if (root)
+    {
+      std::cerr << "mesolight vlf propagate: --adaptive-texels runs in one process only\n";
+    }
+    return 1;
+  }
   int threadsPerRank = 0; // 0: vtkSMPTools' default (every hardware thread)
   if (distributed && !std::getenv("VTK_SMP_MAX_THREADS"))
   {
@@ -418,6 +439,14 @@ int Propagate(const std::vector<std::string>& args)
       if (rays == 0)
       {
         std::cout << "automatic resolution: " << choice.Describe() << "\n";
+      }
+      if (adaptive)
+      {
+        vlf::AdaptiveTexelOptions adaptiveOptions;
+        adaptiveOptions.Progress = PrintedProgress("first pass for the texels");
+        vlf::AdaptiveTexelReport report;
+        settings = vlf::ChooseAdaptiveTexels(scene, settings, adaptiveOptions, &report);
+        std::cout << "adaptive texels: " << report.Describe() << "\n";
       }
       const vlf::MemoryEstimate estimate =
         distributed ? vlf::MemoryEstimate() : vlf::EstimateMemory(scene, settings);

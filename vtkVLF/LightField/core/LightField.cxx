@@ -143,6 +143,12 @@ std::string LightFieldSettings::Validate() const
     e << "contact texel halvings " << this->ContactTexelHalvings << " is outside [0, "
       << MaxContactTexelHalvings << "]";
   }
+  else if (std::any_of(this->SurfaceTexelLevels.begin(), this->SurfaceTexelLevels.end(),
+             [](std::int8_t l) { return l < MinSurfaceTexelLevel || l > MaxSurfaceTexelLevel; }))
+  {
+    e << "a surface texel level is outside [" << MinSurfaceTexelLevel << ", "
+      << MaxSurfaceTexelLevel << "]";
+  }
   else if (this->MemoryBudget == 0)
   {
     e << "memory budget is 0 bytes";
@@ -273,7 +279,8 @@ std::vector<std::uint8_t> ContactSurfaces(const TriangleScene& scene,
 }
 
 std::vector<Surface> GroupSurfaces(const TriangleScene& scene, float texelSize,
-  std::vector<std::uint32_t>& triangleSurface, int contactHalvings)
+  std::vector<std::uint32_t>& triangleSurface, int contactHalvings,
+  const std::vector<std::int8_t>& levels)
 {
   std::vector<Surface> surfaces;
   triangleSurface.assign(scene.TriangleCount(), 0);
@@ -315,15 +322,22 @@ std::vector<Surface> GroupSurfaces(const TriangleScene& scene, float texelSize,
   }
   // Finer texels where other surfaces stand (LightFieldSettings::ContactTexelHalvings); probed a
   // quarter texel either side of a contact edge.
-  const std::vector<std::uint8_t> contact = contactHalvings > 0
+  // Per-surface levels (LightFieldSettings::SurfaceTexelLevels) replace the contact halvings.
+  if (!levels.empty() && levels.size() != surfaces.size())
+  {
+    throw std::invalid_argument("the surface texel levels name " + std::to_string(levels.size()) +
+      " surfaces; the scene has " + std::to_string(surfaces.size()));
+  }
+  const std::vector<std::uint8_t> contact = contactHalvings > 0 && levels.empty()
     ? ContactSurfaces(scene, surfaces, triangleSurface, 0.25f * texelSize)
     : std::vector<std::uint8_t>(surfaces.size(), 0);
   std::size_t texelOffset = 0;
   for (std::size_t i = 0; i < surfaces.size(); ++i)
   {
     Surface& s = surfaces[i];
-    const float texel =
-      contact[i] != 0 ? texelSize / static_cast<float>(1 << contactHalvings) : texelSize;
+    const float texel = !levels.empty() ? std::ldexp(texelSize, levels[i])
+      : contact[i] != 0                 ? texelSize / static_cast<float>(1 << contactHalvings)
+                                        : texelSize;
     float lo[2] = { 1e30f, 1e30f }, hi[2] = { -1e30f, -1e30f };
     const glm::vec3 reference = s.Origin;
     for (std::uint32_t t : s.Triangles)
@@ -413,8 +427,8 @@ void LightField::Setup(
   }
   this->DirectionsPtr.reset(new DirectionSet(DirectionSet::WithCount(settings.Directions)));
   const float texel = settings.TexelSize > 0.0f ? settings.TexelSize : settings.CellSize();
-  this->SurfaceList = GroupSurfaces(
-    this->NormalizedScene, texel, this->TriangleSurface, settings.ContactTexelHalvings);
+  this->SurfaceList = GroupSurfaces(this->NormalizedScene, texel, this->TriangleSurface,
+    settings.ContactTexelHalvings, settings.SurfaceTexelLevels);
   this->TexelTotal = 0;
   for (const Surface& s : this->SurfaceList)
   {

@@ -88,6 +88,10 @@ public:
 
 // The most LightFieldSettings::ContactTexelHalvings: texels an eighth of the scene's.
 constexpr int MaxContactTexelHalvings = 3;
+// The range of LightFieldSettings::SurfaceTexelLevels: texels from an eighth to four times the
+// scene's.
+constexpr int MinSurfaceTexelLevel = -3;
+constexpr int MaxSurfaceTexelLevel = 2;
 
 struct LightFieldSettings
 {
@@ -104,6 +108,12 @@ struct LightFieldSettings
   // "Discontinuity Meshing for Radiosity", 1992: radiosity meshes are refined there for the same
   // reason.)
   int ContactTexelHalvings = 0;
+  // Per surface (in GroupSurfaces' order) a texel level: texels TexelSize * 2^level, level in
+  // [MinSurfaceTexelLevel, MaxSurfaceTexelLevel]. Empty: every surface at TexelSize (contact
+  // surfaces finer by ContactTexelHalvings); set, it replaces ContactTexelHalvings. Chosen from a
+  // first pass's light (AdaptiveTexels.h: finer where the light varies, coarser where it is
+  // flat) and kept in the field file.
+  std::vector<std::int8_t> SurfaceTexelLevels;
   std::uint64_t MemoryBudget = std::uint64_t(4) << 30; // bytes
   // §3.6.2: weight each direction by its solid angle. False gives every direction 2 pi / K
   // (only for the negative tests: the field is then biased toward densely sampled directions).
@@ -369,11 +379,14 @@ constexpr int MaxTextureSide = 1 << 16;
 
 // Groups a (unit-sphere) scene's triangles into planar one-material surfaces with texture
 // frames; triangleSurface gets each triangle's surface. Texels are texelSize, on contact surfaces
-// (ContactSurfaces) texelSize / 2^contactHalvings. Exposed for tests and the estimate.
-// Throws std::invalid_argument when a surface would need more than MaxTextureSide texels per side
-// (a scene not normalized to the unit sphere).
+// (ContactSurfaces) texelSize / 2^contactHalvings; with levels (one per surface,
+// LightFieldSettings::SurfaceTexelLevels) texelSize * 2^levels[s] instead. Exposed for tests and
+// the estimate. Throws std::invalid_argument when a surface would need more than MaxTextureSide
+// texels per side (a scene not normalized to the unit sphere) or when levels has not one entry
+// per surface.
 std::vector<Surface> GroupSurfaces(const TriangleScene& scene, float texelSize,
-  std::vector<std::uint32_t>& triangleSurface, int contactHalvings = 0);
+  std::vector<std::uint32_t>& triangleSurface, int contactHalvings = 0,
+  const std::vector<std::int8_t>& levels = {});
 
 // Per surface of GroupSurfaces, 1 where another surface stands on it: an edge of a triangle of
 // another plane lies in its plane (within 1e-4), the surface continues on both sides of that

@@ -198,8 +198,8 @@ MemoryEstimate EstimateMemory(const TriangleScene& scene, const LightFieldSettin
   const DirectionSet directions = DirectionSet::WithCount(settings.Directions);
   std::vector<std::uint32_t> triangleSurface;
   const float texel = settings.TexelSize > 0.0f ? settings.TexelSize : settings.CellSize();
-  const std::vector<Surface> surfaces =
-    GroupSurfaces(unit, texel, triangleSurface, settings.ContactTexelHalvings);
+  const std::vector<Surface> surfaces = GroupSurfaces(
+    unit, texel, triangleSurface, settings.ContactTexelHalvings, settings.SurfaceTexelLevels);
   bool specular = false;
   for (const SceneMaterial& m : unit.Materials)
   {

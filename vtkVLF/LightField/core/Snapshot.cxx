@@ -62,9 +62,15 @@ void WritePayload(Writer& w, const LightField& field,
   w.Value(static_cast<std::int32_t>(s.TilesPerSide));
   w.Value(s.TexelSize);
   w.Value(s.MemoryBudget);
-  // Bit 0 the solid-angle weights, bits 1-2 the contact texel halvings (0 in older files).
-  w.Value(static_cast<std::uint8_t>(
-    (s.UseSolidAngleWeights ? 1 : 0) | (static_cast<unsigned>(s.ContactTexelHalvings) << 1)));
+  // Bit 0 the solid-angle weights, bits 1-2 the contact texel halvings (0 in older files), bit 3:
+  // the per-surface texel levels follow (never set in older files).
+  const bool levels = !s.SurfaceTexelLevels.empty();
+  w.Value(static_cast<std::uint8_t>((s.UseSolidAngleWeights ? 1 : 0) |
+    (static_cast<unsigned>(s.ContactTexelHalvings) << 1) | (levels ? 8u : 0u)));
+  if (levels)
+  {
+    w.Array(s.SurfaceTexelLevels);
+  }
   w.Value(static_cast<std::int32_t>(field.IterationsDone));
   w.Value(field.NormalizationScale());
   w.Value(field.NormalizationCentre());
@@ -433,12 +439,19 @@ std::unique_ptr<LightField> ReadSnapshot(const std::string& path, std::uint64_t 
   settings.TexelSize = r.Value<float>();
   settings.MemoryBudget = r.Value<std::uint64_t>();
   const std::uint8_t flags = r.Value<std::uint8_t>();
-  if ((flags & ~std::uint8_t(7)) != 0)
+  if ((flags & ~std::uint8_t(15)) != 0)
   {
     r.Fail("its settings are invalid: unknown flags " + std::to_string(flags));
   }
   settings.UseSolidAngleWeights = (flags & 1) != 0;
-  settings.ContactTexelHalvings = flags >> 1;
+  settings.ContactTexelHalvings = (flags >> 1) & 3;
+  if ((flags & 8) != 0)
+  {
+    // One level per surface: checked against the surfaces when the structure is set up.
+    const std::uint64_t count = r.Count(sizeof(std::int8_t), "surface texel levels");
+    settings.SurfaceTexelLevels.resize(count);
+    r.Bytes(settings.SurfaceTexelLevels.data(), count);
+  }
   // The stored budget is what the field was built with; read back, it is only a number in the
   // file: never trust more than this machine has (a corrupt one would let Setup allocate anything).
   settings.MemoryBudget = memoryBudget > 0

@@ -1,0 +1,215 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "AdaptiveTexels.h"
+
+#include "FinalGather.h"
+#include "Propagation.h"
+#include "TextureComparison.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+
+namespace mesolight
+{
+namespace vlf
+{
+namespace
+{
+double Sum(const glm::vec3& v)
+{
+  return static_cast<double>(v.x) + static_cast<double>(v.y) + static_cast<double>(v.z);
+}
+} // namespace
+
+std::vector<SurfaceVariation> MeasureLightVariation(const LightField& field,
+  const std::vector<glm::vec3>& totals, const std::vector<glm::vec3>& second)
+{
+  if (totals.size() != field.TexelCount() || (!second.empty() && second.size() != totals.size()))
+  {
+    throw std::invalid_argument("the textures do not match the light field's texels");
+  }
+  // Texels whose centre lies on one of the surface's triangles (emitters left out).
+  std::vector<std::uint8_t> on(field.TexelCount(), 0);
+  for (const TexelPoint& p : SurfaceTexels(field))
+  {
+    on[p.Texel] = 1;
+  }
+  const auto value = [&](std::size_t t)
+  { return second.empty() ? Sum(totals[t]) : 0.5 * (Sum(totals[t]) + Sum(second[t])); };
+  const auto noise = [&](std::size_t t)
+  { return second.empty() ? 0.0 : 0.5 * std::abs(Sum(totals[t]) - Sum(second[t])); };
+  std::vector<SurfaceVariation> result(field.Surfaces().size());
+  for (std::size_t s = 0; s < field.Surfaces().size(); ++s)
+  {
+    const Surface& surface = field.Surfaces()[s];
+    SurfaceVariation& v = result[s];
+    double sum = 0.0, noiseSum = 0.0;
+    std::size_t count = 0;
+    for (std::size_t t = surface.TexelOffset; t < surface.TexelOffset + surface.TexelCount(); ++t)
+    {
+      if (on[t] != 0)
+      {
+        sum += value(t);
+        noiseSum += noise(t);
+        ++count;
+      }
+    }
+    if (count == 0 || !(sum > 0.0))
+    {
+      continue;
+    }
+    v.Mean = sum / static_cast<double>(count);
+    const int w = surface.TextureWidth, h = surface.TextureHeight;
+    const auto at = [&](int a, int b)
+    { return surface.TexelOffset + static_cast<std::size_t>(b) * static_cast<std::size_t>(w) + a; };
+    double defect = 0.0;
+    for (int b = 0; b < h; ++b)
+    {
+      for (int a = 0; a < w; ++a)
+      {
+        const std::size_t c = at(a, b);
+        if (on[c] == 0)
+        {
+          continue;
+        }
+        // Along each axis where both neighbours are on the surface.
+        const std::size_t pairs[2][2] = { { a > 0 ? at(a - 1, b) : c,
+                                            a + 1 < w ? at(a + 1, b) : c },
+          { b > 0 ? at(a, b - 1) : c, b + 1 < h ? at(a, b + 1) : c } };
+        for (const auto& p : pairs)
+        {
+          if (p[0] == c || p[1] == c || on[p[0]] == 0 || on[p[1]] == 0)
+          {
+            continue;
+          }
+          defect += std::abs(value(c) - 0.5 * (value(p[0]) + value(p[1])));
+          ++v.Samples;
+        }
+      }
+    }
+    if (v.Samples == 0)
+    {
+      continue;
+    }
+    // The noise of the mean's texels (|g1 - g2| / 2) read as a defect: a defect of independent
+    // noise sigma per texel has a standard deviation of sqrt(1.5) sigma, its mean absolute value
+    // sqrt(2 / pi) sqrt(1.5) sigma ~ sigma, and E|g1 - g2| / 2 estimates sqrt(2 / pi) sigma:
+    // subtract sqrt(1.5) times the mean noise.
+    v.Noise = std::sqrt(1.5) * noiseSum / static_cast<double>(count) / v.Mean;
+    v.Defect = std::max(0.0, defect / static_cast<double>(v.Samples) / v.Mean - v.Noise);
+  }
+  return result;
+}
+
+std::vector<std::int8_t> ChooseTexelLevels(const LightField& field,
+  const std::vector<SurfaceVariation>& variation, const AdaptiveTexelOptions& options)
+{
+  if (variation.size() != field.Surfaces().size())
+  {
+    throw std::invalid_argument("the variation does not match the light field's surfaces");
+  }
+  std::vector<std::int8_t> levels(variation.size(), 0);
+  for (std::size_t s = 0; s < variation.size(); ++s)
+  {
+    const SurfaceVariation& v = variation[s];
+    const Surface& surface = field.Surfaces()[s];
+    if (v.Samples == 0)
+    {
+      continue; // an emitter, or too small to measure: the scene's texels
+    }
+    if (v.Defect > options.RefineTwice)
+    {
+      levels[s] = -2;
+    }
+    else if (v.Defect > options.Refine)
+    {
+      levels[s] = -1;
+    }
+    else if (v.Defect < options.Coarsen &&
+      std::min(surface.TextureWidth, surface.TextureHeight) >= 2 * options.MinCoarseSide)
+    {
+      levels[s] = 1;
+    }
+  }
+  return levels;
+}
+
+std::string AdaptiveTexelReport::Describe() const
+{
+  char text[200];
+  std::snprintf(text, sizeof(text),
+    "texels finer on %zu, coarser on %zu of %zu surfaces: %zu -> %zu texels (first pass %.1f s)",
+    this->Finer, this->Coarser, this->Variation.size(), this->BaseTexels, this->Texels,
+    this->Seconds);
+  return text;
+}
+
+LightFieldSettings ChooseAdaptiveTexels(const TriangleScene& scene,
+  const LightFieldSettings& settings, const AdaptiveTexelOptions& options,
+  AdaptiveTexelReport* report)
+{
+  const auto start = std::chrono::steady_clock::now();
+  // The first pass: the base texels everywhere, fewer directions (the gather reads the field
+  // only at its indirect rays' hits, the direct light -- the shadows -- it computes exactly).
+  LightFieldSettings first = settings;
+  first.TexelSize = settings.TexelSize > 0.0f ? settings.TexelSize : settings.CellSize();
+  first.ContactTexelHalvings = 0;
+  first.SurfaceTexelLevels.clear();
+  first.Directions = std::min<std::size_t>(settings.Directions, 513);
+  std::unique_ptr<LightField> field =
+    LightField::Build(scene, first, SubProgress(options.Progress, 0.0, 0.2));
+  PropagationOptions propagation;
+  propagation.Progress = SubProgress(options.Progress, 0.2, 0.5);
+  PropagateToTolerance(*field, DefaultTolerance, DefaultMaxIterations, propagation);
+  FinalGatherOptions gather;
+  gather.IndirectRays = options.FirstPassIndirectRays;
+  gather.DirectSamples = options.FirstPassDirectSamples;
+  gather.Prepass = false;
+  gather.Progress = SubProgress(options.Progress, 0.5, 0.75);
+  FinalGather(*field, gather);
+  const std::vector<glm::vec3> one = field->TotalDiffuse;
+  RestorePropagatedDiffuse(*field);
+  gather.Sequence = 2;
+  gather.Progress = SubProgress(options.Progress, 0.75, 1.0);
+  FinalGather(*field, gather);
+  const std::vector<SurfaceVariation> variation =
+    MeasureLightVariation(*field, one, field->TotalDiffuse);
+
+  LightFieldSettings chosen = settings;
+  chosen.TexelSize = first.TexelSize;
+  chosen.ContactTexelHalvings = 0;
+  chosen.SurfaceTexelLevels = ChooseTexelLevels(*field, variation, options);
+  // Within the budget: while the finer texels do not fit, the finest surfaces get one level less.
+  for (std::size_t estimate = EstimateMemory(scene, chosen).TotalBytes;
+       estimate > settings.MemoryBudget; estimate = EstimateMemory(scene, chosen).TotalBytes)
+  {
+    const std::int8_t finest =
+      *std::min_element(chosen.SurfaceTexelLevels.begin(), chosen.SurfaceTexelLevels.end());
+    if (finest >= 0)
+    {
+      break; // the base texels: Build refuses the field as it would without the choice
+    }
+    for (std::int8_t& level : chosen.SurfaceTexelLevels)
+    {
+      level = level == finest ? static_cast<std::int8_t>(level + 1) : level;
+    }
+  }
+  if (report != nullptr)
+  {
+    report->Variation = variation;
+    report->Finer = static_cast<std::size_t>(std::count_if(chosen.SurfaceTexelLevels.begin(),
+      chosen.SurfaceTexelLevels.end(), [](std::int8_t l) { return l < 0; }));
+    report->Coarser = static_cast<std::size_t>(std::count_if(chosen.SurfaceTexelLevels.begin(),
+      chosen.SurfaceTexelLevels.end(), [](std::int8_t l) { return l > 0; }));
+    report->BaseTexels = field->TexelCount();
+    report->FirstPassBytes = field->AllocatedBytes();
+    report->Texels = EstimateMemory(scene, chosen).Texels;
+    report->Seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
+  return chosen;
+}
+
+} // namespace vlf
+} // namespace mesolight

@@ -1,0 +1,100 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// AdaptiveTexels: texel density from the field's own light (LightFieldSettings::
+// SurfaceTexelLevels): finer texels on the surfaces whose light varies between texels, coarser
+// ones where it is flat, chosen from a cheap first pass.
+//
+// The textures are read bilinearly between texel centres, so what a texel size costs is the
+// interpolation error between them. Per surface the first pass measures it directly: at every
+// texel with both neighbours along a texture axis on the surface, the interpolation defect
+//   |L_a - (L_{a-1} + L_{a+1}) / 2| / mean L of the surface    (channels summed)
+// -- the error the texel would show if the texels were twice as large and the value at a were
+// read between a-1 and a+1 -- averaged over the surface. A linear gradient has none (bilinear
+// reads hold it at any size); a shadow edge or a contact shadow has a large one. This is the
+// a-posteriori refinement of adaptive radiosity meshing (Cohen, Greenberg, Immel and Brock,
+// "An Efficient Radiosity Approach for Realistic Image Synthesis", 1986: subdivide the patches
+// whose radiosity differs from their neighbours'), per surface since every surface has its own
+// texel frame.
+//
+// The first pass is the field at its base texels (no contact halvings) with at most 513
+// directions, propagated to the tolerance and gathered twice in one pass with a quarter of the
+// final gather's rays each (other random numbers): the mean of the two is measured, and the
+// mean defect their difference alone produces (the gather's noise, which would otherwise read as
+// variation: |g1 - g2| / 2 is the noise of the mean's texel, and its defect averages about that)
+// is subtracted. Then per surface:
+//   defect > RefineTwice          -> texels a quarter
+//   defect > Refine               -> texels a half
+//   defect < Coarsen, and the texture at least 2 MinCoarseSide texels on its shorter side
+//                                 -> texels doubled (a small surface keeps the scene's texels)
+// and the field is built again with those levels.
+#ifndef mesolight_vlf_AdaptiveTexels_h
+#define mesolight_vlf_AdaptiveTexels_h
+
+#include "LightField.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace mesolight
+{
+namespace vlf
+{
+
+struct AdaptiveTexelOptions
+{
+  // Mean relative interpolation defect (above) beyond which a surface's texels are halved, and
+  // beyond which they are quartered.
+  double Refine = 0.02;
+  double RefineTwice = 0.08;
+  // Below it the surface's texels are doubled.
+  double Coarsen = 0.004;
+  // A surface is coarsened only when its texture keeps at least this many texels on its shorter
+  // side.
+  int MinCoarseSide = 8;
+  // The first pass's gather: indirect rays and emitter samples of each of its two gathers.
+  int FirstPassIndirectRays = 256;
+  int FirstPassDirectSamples = 16;
+  // Progress in [0, 1]; false aborts (AbortedError).
+  ProgressCallback Progress;
+};
+
+struct SurfaceVariation
+{
+  double Mean = 0.0;       // mean radiance over the surface's texels (channels summed)
+  double Defect = 0.0;     // mean relative interpolation defect, the noise's share subtracted
+  double Noise = 0.0;      // the share subtracted
+  std::size_t Samples = 0; // texels measured (0: too small to tell, or an emitter)
+};
+
+// The variation of every surface of the field's textures: totals and second are two estimates of
+// the same textures with independent noise (second may be empty: no noise subtracted).
+std::vector<SurfaceVariation> MeasureLightVariation(const LightField& field,
+  const std::vector<glm::vec3>& totals, const std::vector<glm::vec3>& second = {});
+
+// Per surface of field the texel level (LightFieldSettings::SurfaceTexelLevels) relative to the
+// field's base texels, from its variation (above).
+std::vector<std::int8_t> ChooseTexelLevels(const LightField& field,
+  const std::vector<SurfaceVariation>& variation, const AdaptiveTexelOptions& options = {});
+
+struct AdaptiveTexelReport
+{
+  std::vector<SurfaceVariation> Variation;
+  std::size_t Finer = 0, Coarser = 0; // surfaces
+  std::size_t BaseTexels = 0;         // the first pass's (uniform) texels
+  std::size_t Texels = 0;             // with the chosen levels
+  double Seconds = 0.0;               // the first pass and the choice
+  std::uint64_t FirstPassBytes = 0;   // the first pass's field (AllocatedBytes)
+  std::string Describe() const; // "texels finer on 3, coarser on 12 of 40 surfaces: 1.2e5 -> ..."
+};
+
+// The settings with SurfaceTexelLevels chosen from a first pass (above) over the scene: the
+// texel size of settings without contact halvings is the base. Throws what LightField::Build,
+// the propagation and the gather throw.
+LightFieldSettings ChooseAdaptiveTexels(const TriangleScene& scene,
+  const LightFieldSettings& settings, const AdaptiveTexelOptions& options = {},
+  AdaptiveTexelReport* report = nullptr);
+
+} // namespace vlf
+} // namespace mesolight
+
+#endif
