@@ -20,6 +20,21 @@ cli_expect_error(2 "--resume: --contact-texels 1 differs from the 0 stored in"
 cli_expect_error(2 "--contact-texels"
   vlf propagate --directions 33 --rays 16 --iterations 1 --contact-texels 4 --force
   --out "${field}")
+# Texels from the light: a first pass chooses each surface's texels, the field file keeps them
+# (a render reads it); the options it replaces or cannot keep are refused, naming it.
+cli_run(TRUE vlf propagate --directions 33 --rays 16 --iterations 1 --adaptive-texels
+  --out "${WORK}/adaptive.vlf")
+if (NOT last_output MATCHES "adaptive texels: texels finer on [0-9]+, coarser on [0-9]+ of 17 surfaces")
+  message(FATAL_ERROR "no adaptive texel report: ${last_output}")
+endif ()
+cli_run(TRUE vlf render "${WORK}/adaptive.vlf" --size 32x32 --out "${WORK}/adaptive.png")
+foreach (other IN ITEMS "--contact-texels;1" "--no-gather")
+  cli_expect_error(2 "--adaptive-texels excludes"
+    vlf propagate --directions 33 --rays 16 --iterations 1 --adaptive-texels ${other}
+    --out "${WORK}/adaptive-refused.vlf")
+endforeach ()
+cli_expect_error(2 "--adaptive-texels excludes"
+  vlf propagate --iterations 2 --adaptive-texels --resume --out "${WORK}/adaptive.vlf")
 # The same values (or none) resume.
 cli_run(TRUE vlf propagate --resume --iterations 2 --directions 33 --rays 16 --tiles 2
         --out "${field}")
