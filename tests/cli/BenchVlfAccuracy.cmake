@@ -55,6 +55,6 @@ if (last_output MATCHES "path-traced reference")
 endif ()
 cli_expect_error(2 "is not auto, KxN or KxNtF" bench vlf-accuracy --scenes cornell --settings 33
   --cache "${WORK}/cache" --size 24x24 --samples 64)
-cli_expect_error(2 "is not none, single, gather or bilateral" bench vlf-accuracy --scenes cornell
+cli_expect_error(2 "is not none, single, gather, bilateral or gather-bilateral" bench vlf-accuracy --scenes cornell
   --variants none,final --cache "${WORK}/cache" --size 24x24 --samples 64)
 cli_expect_error(2 "unknown scene 'attic'" bench vlf-accuracy --scenes attic --cache "${WORK}/cache")
