@@ -1,0 +1,68 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// vtkLightFieldReliefSurface's conversions between the light field's cores and VTK data: the
+// field's emitters as VTK lights, the probe image of port 1, the scene's visibility of the
+// emitters, the relief texture as a height field, and what one rank computes for a surface of
+// polydata. Defined in vtkLightFieldReliefSurfaceProbes.cxx (comments there); not installed.
+#ifndef vtkLightFieldReliefSurfaceProbes_h
+#define vtkLightFieldReliefSurfaceProbes_h
+
+#include "EnvironmentMaps.h"   // SH9
+#include "HeightFieldTracer.h" // HeightField
+#include "Progress.h"          // ProgressCallback
+
+#include <cstddef>
+#include <vector>
+
+class vtkImageData;
+class vtkLightCollection;
+class vtkPolyData;
+
+namespace mesolight
+{
+class EmbreeScene;
+namespace vlf
+{
+class LightField;
+struct ReliefSurface;
+
+namespace reliefsurface
+{
+// The field's emitters packed 9 numbers a light (world position, normal, intensity).
+std::vector<double> PackEmitterLights(const LightField& field);
+void AddPackedLights(const std::vector<double>& packed, vtkLightCollection* lights);
+void AddEmitterLights(const LightField& field, vtkLightCollection* lights);
+
+// Port 1's probe image: n x n SH9 probes as floats (pixel (9 i + k, j)), and the image itself
+// with, when given, the scene's visibility of light k as a fourth component.
+std::vector<float> PackProbes(const std::vector<SH9>& probes, int n);
+void FillProbesImage(vtkImageData* image, const std::vector<float>& values, int n,
+  const std::vector<float>* visibility = nullptr, std::size_t lights = 0);
+
+// The scene's visibility of the emitter lights from the surface's n x n probes (traced in
+// `lent` when given).
+std::vector<float> LightVisibility(
+  const LightField& field, const ReliefSurface& surface, int n, const EmbreeScene* lent = nullptr);
+
+// The depth (A) of a relief texture; throws std::runtime_error saying why not.
+HeightField ReliefHeightField(vtkImageData* texture, bool walled);
+
+// What one rank computes for a surface of polydata and sends: the probes, the texture frame,
+// the surface's Kd and the emitter lights.
+struct SurfaceResult
+{
+  std::vector<float> Probes;
+  double Frame[16] = {}; // origin, u axis, v axis, normal (unit sphere); centre, scale (world)
+  double Diffuse[3] = {};
+  // The depth limit (world): a point, the front normal, 1 when the surface is mounted on a wall.
+  double Limit[7] = {};
+  std::vector<double> Lights;
+  std::vector<float> Visibility; // per probe and light (SceneOcclusion), else empty
+};
+
+SurfaceResult ComputeSurface(const LightField& field, vtkPolyData* whole, int n,
+  bool sceneOcclusion, const ProgressCallback& progress);
+} // namespace reliefsurface
+} // namespace vlf
+} // namespace mesolight
+
+#endif
