@@ -34,8 +34,10 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import mesolight_pvtest as t  # noqa: E402
 import numpy as np  # noqa: E402
 import paraview.simple as pvs  # noqa: E402
-from vtkmodules.vtkCommonDataModel import vtkImageData  # noqa: E402
+from vtkmodules.vtkCommonCore import vtkPoints  # noqa: E402
+from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkImageData, vtkPolyData  # noqa: E402
 from vtkmodules.vtkIOImage import vtkPNGWriter  # noqa: E402
+from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter  # noqa: E402
 from paraview import servermanager  # noqa: E402
 from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy  # noqa: E402
 
@@ -135,22 +137,29 @@ print("the CPU reference's relief covers %d pixels (%d clear of its edges)"
       % (int(grown.sum()), int(mask.sum())))
 check(mask.sum() > SIZE * SIZE // 10, "the relief covers much of the view")
 
-# The back wall's shape in front of it, no texture coordinates: the plane rule's frame.
-source = pvs.ProgrammableSource(OutputDataSetType="vtkPolyData")
-source.Script = """
-from vtkmodules.vtkCommonCore import vtkPoints
-from vtkmodules.vtkCommonDataModel import vtkCellArray
-points = vtkPoints()
-for x, y in %r:
-    points.InsertNextPoint(x, y, %r)
-polys = vtkCellArray()
-polys.InsertNextCell(4)
+# The back wall's shape in front of it, no texture coordinates: the plane rule's frame. Written
+# to a file and read, as the depth image is: no Programmable Source. pvbatch runs a Programmable
+# Source's script in this script's own namespace on the first rank, after `from numpy import *`
+# and `from paraview.vtk.numpy_interface.algorithms import *`, so `sum`, `max`, `abs` ... here
+# became ParaView's reductions over every rank (an mpi4py Allreduce on the global controller's
+# communicator). Under `mpiexec -n 2 pvbatch` only the first rank runs this script, the others
+# wait for ParaView's requests: linear_red's `sum` hung there.
+patch_points = vtkPoints()
+for x, y in BACK:
+    patch_points.InsertNextPoint(x, y, PATCH_Z)
+patch_polys = vtkCellArray()
+patch_polys.InsertNextCell(4)
 for i in range(4):
-    polys.InsertCellPoint(i)
-output = self.GetPolyDataOutput()
-output.SetPoints(points)
-output.SetPolys(polys)
-""" % (BACK, PATCH_Z)
+    patch_polys.InsertCellPoint(i)
+patch_data = vtkPolyData()
+patch_data.SetPoints(patch_points)
+patch_data.SetPolys(patch_polys)
+patch_path = os.path.join(out, "pv-occlusion-patch.vtp")
+patch_writer = vtkXMLPolyDataWriter()
+patch_writer.SetFileName(patch_path)
+patch_writer.SetInputData(patch_data)
+patch_writer.Write()
+source = pvs.XMLPolyDataReader(FileName=[patch_path])
 depth_reader = pvs.PNGSeriesReader(FileNames=[depth_path])
 texture = pvs.MesolightReliefTexture(Input=depth_reader, DepthScale=DEPTH_SCALE)
 attached = pvs.MesolightAttachReliefTexture(Input=source, ReliefTexture=texture)
