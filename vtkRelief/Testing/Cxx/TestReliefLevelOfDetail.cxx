@@ -111,6 +111,21 @@ AliasingError Compare(const Frame& frame, const Frame& reference)
   return result;
 }
 
+// A relief scene at the test's frame size: a `pattern` wall of resolution^2 texels seen at
+// viewAngle degrees from its normal, viewDistance wall widths away.
+ReliefSceneOptions WallView(
+  const char* pattern, int resolution, double viewAngle, double viewDistance)
+{
+  ReliefSceneOptions options;
+  options.Pattern = pattern;
+  options.Resolution = resolution;
+  options.Width = Width;
+  options.Height = Height;
+  options.ViewAngle = viewAngle;
+  options.ViewDistance = viewDistance;
+  return options;
+}
+
 // A relief scene drawn as an untouched vtkReliefProperty draws it (its method, steps and level of
 // detail), or the same with level of detail off, or the exact reference (maximum-mipmap tracing
 // with 128 iterations, which is within 0.003 texel of the exact intersector: relief-methods.md).
@@ -226,13 +241,7 @@ TEST(ReliefLevelOfDetail, ChangesTheFrameAgainstTheSupersampledReference)
 // of detail off misses: off is the negative case.
 TEST(ReliefLevelOfDetail, FiltersADistantRecedingWall)
 {
-  ReliefSceneOptions options;
-  options.Pattern = "Stone";
-  options.Resolution = 1024;
-  options.Width = Width;
-  options.Height = Height;
-  options.ViewAngle = 70.0;
-  options.ViewDistance = 2.0;
+  ReliefSceneOptions options = WallView("Stone", 1024, 70.0, 2.0);
   const FilterErrors e = ErrorsOfTheFilters(options, "distant receding wall");
   ASSERT_GT(e.On.Pixels, Width * Height / 8) << "the wall should fill much of the view";
   // Measured 2.48 (on; 2.67 before the clamped Lambert term and the soft far shadows, 2.68
@@ -251,13 +260,7 @@ TEST(ReliefLevelOfDetail, FiltersADistantRecedingWall)
 // bound that the mean normal filter (Toksvig) and no filter both miss: the negative cases.
 TEST(ReliefLevelOfDetail, VisibleNormalsFilterARoughGrazingWall)
 {
-  ReliefSceneOptions options;
-  options.Pattern = "Bricks";
-  options.Resolution = 1024;
-  options.Width = Width;
-  options.Height = Height;
-  options.ViewAngle = 80.0;
-  options.ViewDistance = 2.0;
+  ReliefSceneOptions options = WallView("Bricks", 1024, 80.0, 2.0);
   const FilterErrors e = ErrorsOfTheFilters(options, "rough grazing wall");
   ASSERT_GT(e.On.Pixels, Width * Height / 10) << "the wall should fill much of the view";
   // Measured 9.19 (visible; 9.53 before the clamped Lambert term and the soft far shadows),
@@ -278,13 +281,7 @@ TEST(ReliefLevelOfDetail, VisibleNormalsFilterARoughGrazingWall)
 // (the negative case) and the mean normal filter (Toksvig, the filter without the spread) miss.
 TEST(ReliefLevelOfDetail, ClampsTheLightOfFacetsTurnedAway)
 {
-  ReliefSceneOptions options;
-  options.Pattern = "Bricks";
-  options.Resolution = 1024;
-  options.Width = Width;
-  options.Height = Height;
-  options.ViewAngle = 45.0;
-  options.ViewDistance = 2.0;
+  ReliefSceneOptions options = WallView("Bricks", 1024, 45.0, 2.0);
   options.LightElevation = 20.0;
   options.SelfShadowing = false;
   const FilterErrors e = ErrorsOfTheFilters(options, "far rough wall under a low light");
@@ -304,13 +301,7 @@ TEST(ReliefLevelOfDetail, ClampsTheLightOfFacetsTurnedAway)
 // wall the frames differ.
 TEST(ReliefLevelOfDetail, NearFrameAsWithout)
 {
-  ReliefSceneOptions options;
-  options.Pattern = "Stone";
-  options.Resolution = 256;
-  options.Width = Width;
-  options.Height = Height;
-  options.ViewAngle = 45.0;
-  options.ViewDistance = 0.3;
+  ReliefSceneOptions options = WallView("Stone", 256, 45.0, 0.3);
   const int shaded = vtkReliefProperty::ShadedOutput;
   auto largestDifference = [&](const ReliefSceneOptions& o)
   {
@@ -325,10 +316,7 @@ TEST(ReliefLevelOfDetail, NearFrameAsWithout)
     return largest;
   };
   const int near = largestDifference(options);
-  ReliefSceneOptions far = options;
-  far.Resolution = 1024;
-  far.ViewAngle = 70.0;
-  far.ViewDistance = 2.0;
+  const ReliefSceneOptions far = WallView("Stone", 1024, 70.0, 2.0);
   const int distant = largestDifference(far);
   std::cout << "largest channel difference, level of detail on against off: near " << near
             << " levels, distant wall " << distant << std::endl;
@@ -342,13 +330,7 @@ TEST(ReliefLevelOfDetail, NearFrameAsWithout)
 // does move hits (it takes no steps finer than the footprint), so the comparison can see a change.
 TEST(ReliefLevelOfDetail, NearHitsAsExactAsWithout)
 {
-  ReliefSceneOptions options;
-  options.Pattern = "Stone";
-  options.Resolution = 256;
-  options.Width = Width;
-  options.Height = Height;
-  options.ViewAngle = 45.0;
-  options.ViewDistance = 0.3;
+  ReliefSceneOptions options = WallView("Stone", 256, 45.0, 0.3);
   const HitComparison on = HitsAgainstExact(options, Drawn::LevelOfDetailOn);
   const HitComparison off = HitsAgainstExact(options, Drawn::LevelOfDetailOff);
   std::cout << "near hits against the exact intersector, " << on.CoveredBoth
@@ -360,10 +342,7 @@ TEST(ReliefLevelOfDetail, NearHitsAsExactAsWithout)
   EXPECT_NEAR(on.MeanTexels, off.MeanTexels, 1e-9);
   EXPECT_NEAR(on.MaxTexels, off.MaxTexels, 1e-9);
 
-  ReliefSceneOptions far = options;
-  far.Resolution = 1024;
-  far.ViewAngle = 70.0;
-  far.ViewDistance = 2.0;
+  const ReliefSceneOptions far = WallView("Stone", 1024, 70.0, 2.0);
   const HitComparison farOn = HitsAgainstExact(far, Drawn::LevelOfDetailOn);
   const HitComparison farOff = HitsAgainstExact(far, Drawn::LevelOfDetailOff);
   std::cout << "far hits: level of detail on, mean " << farOn.MeanTexels << ", level of detail off "
@@ -382,13 +361,7 @@ TEST(ReliefLevelOfDetail, NearHitsAsExactAsWithout)
 // off and the mean normal filter miss: the negative cases.
 TEST(ReliefLevelOfDetail, ShadowsTheFacetsWithinAFarFootprint)
 {
-  ReliefSceneOptions options;
-  options.Pattern = "Bricks";
-  options.Resolution = 1024;
-  options.Width = Width;
-  options.Height = Height;
-  options.ViewAngle = 45.0;
-  options.ViewDistance = 2.0;
+  ReliefSceneOptions options = WallView("Bricks", 1024, 45.0, 2.0);
   options.LightElevation = 5.0;
   const FilterErrors e =
     ErrorsOfTheFilters(options, "far rough wall under a grazing light, shadowed");
