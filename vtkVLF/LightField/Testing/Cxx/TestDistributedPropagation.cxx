@@ -33,7 +33,7 @@
 #include "TriangleScene.h"
 #include "vtkLightFieldReducer.h"
 
-#include <vtkMPIController.h>
+#include "DistributedTestRun.h" // tests/support
 
 #include <glm/geometric.hpp>
 #include <vtkNew.h>
@@ -48,17 +48,9 @@ namespace
 {
 namespace vlf = mesolight::vlf;
 
-int Failures = 0;
-int Rank = 0;
-
-void Check(bool ok, const std::string& what)
-{
-  if (!ok)
-  {
-    ++Failures;
-    std::cerr << "rank " << Rank << ": FAILED: " << what << "\n";
-  }
-}
+using mesolight_test::Check;
+using mesolight_test::Failures;
+using mesolight_test::Rank;
 
 vlf::LightFieldSettings SmallSettings()
 {
@@ -532,47 +524,32 @@ int Compare(const std::string& a, const std::string& b)
 
 int main(int argc, char* argv[])
 {
-  vtkNew<vtkMPIController> controller;
-  controller->Initialize(&argc, &argv);
-  vtkMultiProcessController::SetGlobalController(controller);
-  Rank = controller->GetLocalProcessId();
-  const std::string mode = argc > 1 ? argv[1] : "";
-  int failures = 0;
-  try
-  {
-    if (mode == "equal" && argc == 3)
+  return mesolight_test::RunDistributedTest(argc, argv,
+    [](vtkMultiProcessController* controller, int count, char** args)
     {
-      failures = Equal(controller, argv[2]);
-    }
-    else if (mode == "fail")
-    {
-      failures = Fail(controller);
-    }
-    else if (mode == "mirror" && argc == 4)
-    {
-      failures = Mirror(controller, argv[2], argv[3]);
-    }
-    else if (mode == "gather" && argc == 3)
-    {
-      failures = Gather(controller, argv[2]);
-    }
-    else if (mode == "compare" && argc == 4)
-    {
-      failures = Compare(argv[2], argv[3]);
-    }
-    else
-    {
+      const std::string mode = count > 1 ? args[1] : "";
+      if (mode == "equal" && count == 3)
+      {
+        return Equal(controller, args[2]);
+      }
+      if (mode == "fail")
+      {
+        return Fail(controller);
+      }
+      if (mode == "mirror" && count == 4)
+      {
+        return Mirror(controller, args[2], args[3]);
+      }
+      if (mode == "gather" && count == 3)
+      {
+        return Gather(controller, args[2]);
+      }
+      if (mode == "compare" && count == 4)
+      {
+        return Compare(args[2], args[3]);
+      }
       std::cerr << "usage: TestDistributedPropagation equal DIR | fail | compare A B | "
                    "mirror OBJ DIR | gather OBJ\n";
-      failures = 1;
-    }
-  }
-  catch (const std::exception& e)
-  {
-    std::cerr << "rank " << Rank << ": unexpected error: " << e.what() << "\n";
-    failures = 1;
-  }
-  vtkMultiProcessController::SetGlobalController(nullptr);
-  controller->Finalize();
-  return failures == 0 ? 0 : 1;
+      return 1;
+    });
 }

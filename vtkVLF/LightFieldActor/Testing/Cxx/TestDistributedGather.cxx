@@ -22,7 +22,6 @@
 #include "vtkFloatArray.h"
 #include "vtkLightFieldGatherFilter.h"
 #include "vtkLightFieldReducer.h"
-#include "vtkMPIController.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
@@ -38,6 +37,8 @@
 #include "ReliefOcclusion.h"
 #include "ReliefSurface.h"
 
+#include "DistributedTestRun.h" // tests/support
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -51,17 +52,9 @@ namespace
 {
 namespace vlf = mesolight::vlf;
 
-int Failures = 0;
-int Rank = 0;
-
-void Check(bool ok, const std::string& what)
-{
-  if (!ok)
-  {
-    ++Failures;
-    std::cerr << "rank " << Rank << ": FAILED: " << what << "\n";
-  }
-}
+using mesolight_test::Check;
+using mesolight_test::Failures;
+using mesolight_test::Rank;
 
 void Configure(vtkVirtualLightField* field, vtkAlgorithmOutput* scene)
 {
@@ -393,23 +386,11 @@ int ShareMap(vtkMultiProcessController* controller)
 
 int main(int argc, char* argv[])
 {
-  vtkNew<vtkMPIController> controller;
-  controller->Initialize(&argc, &argv);
-  vtkMultiProcessController::SetGlobalController(controller);
-  Rank = controller->GetLocalProcessId();
-  int failures = 0;
-  try
-  {
-    Run(controller);
-    ShareMap(controller);
-    failures = Failures; // both parts' checks
-  }
-  catch (const std::exception& e)
-  {
-    std::cerr << "rank " << Rank << ": unexpected error: " << e.what() << "\n";
-    failures = 1;
-  }
-  vtkMultiProcessController::SetGlobalController(nullptr);
-  controller->Finalize();
-  return failures == 0 ? 0 : 1;
+  return mesolight_test::RunDistributedTest(argc, argv,
+    [](vtkMultiProcessController* controller, int, char**)
+    {
+      Run(controller);
+      ShareMap(controller);
+      return Failures; // both parts' checks
+    });
 }
