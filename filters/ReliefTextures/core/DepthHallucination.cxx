@@ -278,6 +278,16 @@ float LayerDepth(float r, float sigma, const HallucinationSettings& settings)
   return 0.0f;
 }
 
+// Whether the ratio image itself joins the scale average: when a count wider than the finest
+// agrees with it best, the image's darkness is a picture of features resolved over several
+// texels (perforations, pits), not of texel-scale texture and noise, and the darkness is then as
+// good a depth as the layers make of it (measured on real height maps: docs/hallucination.md).
+bool RatioJoinsTheAverage(const std::vector<double>& agreements)
+{
+  return agreements.size() >= 2 &&
+    std::max_element(agreements.begin(), agreements.end()) != agreements.begin();
+}
+
 // The residual layer's depth (texels): the widest layer's value against the open sky (1).
 float ResidualDepth(float widest, float sigma, const HallucinationSettings& settings)
 {
@@ -336,6 +346,8 @@ std::vector<float> DepthFromShading(const std::vector<float>& shading, int w, in
   std::vector<float> hypothesis(average ? n : 0), sum(average ? n : 0, 0.0f),
     agreed(agreement ? n : 0, 0.0f);
   double weightSum = 0.0, agreedSum = 0.0;
+  // The agreement c_K of each count with the image's darkness, finest first.
+  std::vector<double> agreements;
   for (int k = 1; k <= layers; ++k)
   {
     if (!ReportProgress(progress, static_cast<double>(k - 1) / layers))
@@ -392,6 +404,7 @@ std::vector<float> DepthFromShading(const std::vector<float>& shading, int w, in
           }
           const double c =
             std::max(0.0, covariance / (static_cast<double>(n) * spread * darkSpread));
+          agreements.push_back(c);
           const double agreedWeight = c * c / spread;
           agreedSum += agreedWeight;
           for (std::size_t p = 0; p < n; ++p)
@@ -411,6 +424,24 @@ std::vector<float> DepthFromShading(const std::vector<float>& shading, int w, in
       for (std::size_t p = 0; p < n; ++p)
       {
         depth[p] = agreed[p] * inverse;
+      }
+      if (RatioJoinsTheAverage(agreements) && darkSpread > 1e-12)
+      {
+        // The ratio's darkness itself joins with an equal say (both at the average's spread).
+        double mean = 0.0, square = 0.0;
+        for (const float d : depth)
+        {
+          mean += d;
+          square += static_cast<double>(d) * d;
+        }
+        mean /= static_cast<double>(n);
+        const double spread =
+          std::sqrt(std::max(0.0, square / static_cast<double>(n) - mean * mean));
+        const float scale = static_cast<float>(spread / darkSpread);
+        for (std::size_t p = 0; p < n; ++p)
+        {
+          depth[p] += scale * (-floored[p] - static_cast<float>(darkMean));
+        }
       }
     }
     else

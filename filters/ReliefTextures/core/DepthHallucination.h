@@ -36,7 +36,9 @@
  *     (a scale average: Lindeberg's scale space without a selection of one scale), each
  *     weighted by c_K^2 / its spread, c_K the correlation of its depth with the darkness of
  *     the image the layers read, which keeps it in texels (HallucinationModel::Shading: by
- *     1 / its spread, an equal say per count);
+ *     1 / its spread, an equal say per count); when a count wider than the finest agrees
+ *     best, the image's darkness itself joins with an equal say (deep perforations and pits,
+ *     where the ratio is as good a depth as the layers make of it);
  *  4. What the layers read (HallucinationModel): by default not the shading S but the
  *     diffuse/flash ratio lum(I_d) / (lum(I_d) + lum(albedo)) = S / (S + 1) in units of the
  *     flash, the scale-free "dark is deep" cue of a flash pair, which compresses the bright
