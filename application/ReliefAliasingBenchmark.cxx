@@ -49,6 +49,7 @@ struct Settings
   std::string Method; // instead of the default's method (both rows), with Linear + Refine steps
   int Linear = 0;
   int Refine = 0;
+  int CompareFilter = vtkReliefProperty::MeanNormalFilter; // the "mean" row's normal filter
   std::string CsvFile;
   std::string PlotFile;
 };
@@ -133,7 +134,7 @@ bool RenderVariant(const Settings& settings, ReliefSceneOptions options, Variant
   {
     p->SetMinimumSteps(defaults->GetMinimumSteps());
     p->SetNormalFilter(
-      variant == Variant::Mean ? vtkReliefProperty::MeanNormalFilter : defaults->GetNormalFilter());
+      variant == Variant::Mean ? settings.CompareFilter : defaults->GetNormalFilter());
   }
   p->SetOutput(output);
   int dims[3];
@@ -390,6 +391,10 @@ int RunReliefAliasingBenchmark(const std::vector<std::string>& args)
   cl.AddValue(
     "--steps", "L+R", "the --method's linear (or iteration) and refinement steps", "10+8");
   cl.AddFlag("--no-shadows", "self-shadowing off in every frame, the reference's too");
+  cl.AddValue("--compare-filter", "NAME",
+    "the normal filter of the third row: mean (Toksvig), visible (the moments without "
+    "height-correlated masking) or masked (the default's)",
+    "mean");
   cl.AddValue("--csv", "FILE", "write one CSV row per case");
   cl.AddValue("--plot", "FILE.png", "error against footprint: off, mean filter and default");
   int exitCode = 0;
@@ -416,6 +421,17 @@ int RunReliefAliasingBenchmark(const std::vector<std::string>& args)
     {
       return cl.UsageError("--method: unknown method '" + settings.Method + "'");
     }
+  }
+  const std::string compare = cl.Get("--compare-filter");
+  if (compare == "mean" || compare == "visible" || compare == "masked")
+  {
+    settings.CompareFilter = compare == "mean" ? vtkReliefProperty::MeanNormalFilter
+      : compare == "visible"                   ? vtkReliefProperty::VisibleNormalFilter
+                                               : vtkReliefProperty::HeightMaskedNormalFilter;
+  }
+  else
+  {
+    return cl.UsageError("--compare-filter: '" + compare + "' is not mean, visible or masked");
   }
   if (!cl.GetInt("--resolution", 2, 8192, settings.Resolution, error) ||
     !cl.GetDoubleList("--angles", 0.0, 89.0, settings.Angles, error) ||
@@ -453,8 +469,14 @@ int RunReliefAliasingBenchmark(const std::vector<std::string>& args)
       << " " << (settings.Method.empty() ? defaults->GetLinearSteps() : settings.Linear) << "+"
       << (settings.Method.empty() ? defaults->GetRefinementSteps() : settings.Refine)
       << ", level of detail off; default: the same with level of detail on and the default normal\n"
-      << "filter (visible normals, second moments); mean: level of detail with the mean normal\n"
-      << "filter (Toksvig)" << (settings.Method.empty() ? "" : " (the method above)") << ".\n"
+      << "filter (visible normals, second moments, height-correlated masking); mean: level of\n"
+      << "detail with the "
+      << (settings.CompareFilter == vtkReliefProperty::MeanNormalFilter
+             ? "mean normal filter (Toksvig)"
+             : settings.CompareFilter == vtkReliefProperty::VisibleNormalFilter
+             ? "visible normal filter without height-correlated masking"
+             : "default's normal filter")
+      << (settings.Method.empty() ? "" : " (the method above)") << ".\n"
       << "err: mean |colour - reference| in 8-bit levels; fp: median footprint, texels per pixel;\n"
       << "far: pixels whose footprint exceeds one texel; spp: relief-texture samples per pixel;\n"
       << "near hit: how far the default moves hits of near pixels from before's, texels (max).\n\n";

@@ -168,16 +168,25 @@ public:
     MeanNormalFilter = 0,
     /**
      * The footprint's visible mean normal: second moments of the normal, mip-mapped (LEAN
-     * mapping, Olano and Baker 2010), weighted by the area each facet shows the viewer (the
-     * default; compact storage, one more RGBA16F texture pair from mip level 2 up, 1.33 bytes
-     * per texel; float storage uses the mean).
+     * mapping, Olano and Baker 2010), weighted by the area each facet shows the viewer
+     * (compact storage, one more RGBA16F texture pair from mip level 2 up, 1.33 bytes per
+     * texel; float storage uses the mean). Facets the view hides below their neighbours still
+     * count: the default before HeightMaskedNormalFilter.
      */
-    VisibleNormalFilter = 1
+    VisibleNormalFilter = 1,
+    /**
+     * The visible normal filter with height-correlated masking (the default): where the
+     * footprint's level is computed from the stored normals (levels 0 and 1), each facet counts
+     * by the share of it the view sees over its neighbours, by Smith's masking with heights
+     * (Heitz 2014), so a grazing view weighs the tops and not the walls of the cracks between
+     * them. No more memory; up to 20 more depth fetches per far pixel.
+     */
+    HeightMaskedNormalFilter = 2
   };
 
   ///@{
-  /** NormalFilterKind (default VisibleNormalFilter); read only with LevelOfDetail on. */
-  vtkSetClampMacro(NormalFilter, int, MeanNormalFilter, VisibleNormalFilter);
+  /** NormalFilterKind (default HeightMaskedNormalFilter); read only with LevelOfDetail on. */
+  vtkSetClampMacro(NormalFilter, int, MeanNormalFilter, HeightMaskedNormalFilter);
   vtkGetMacro(NormalFilter, int);
   ///@}
 
@@ -397,7 +406,7 @@ protected:
   bool AdaptiveSteps = false;
   int MinimumSteps = 4;
   bool LevelOfDetail = true;
-  int NormalFilter = VisibleNormalFilter;
+  int NormalFilter = HeightMaskedNormalFilter;
   double Exposure;  // mesolight::ReliefLightSetDisplay, set in the constructor
   bool ToneMapping; // idem
   bool EncodeSRGB = false;

@@ -116,7 +116,10 @@ std::string vtkReliefShaderSource::Key() const
     (p->GetLevelOfDetail() ? "L" : "l") + (this->HasLightSet ? "I" : "i") +
     (p->GetToneMapping() ? "T" : "t") + (p->GetShadowCulling() ? "K" : "k") +
     (this->HasIrradianceProbes ? "P" : "p") + (p->GetEncodeSRGB() ? "G" : "g") +
-    (this->NormalMoments && p->GetLevelOfDetail() ? "M" : "m") + (this->GetCurved() ? "Q" : "q") +
+    (this->NormalMoments && p->GetLevelOfDetail()
+        ? (p->GetNormalFilter() == vtkReliefProperty::HeightMaskedNormalFilter ? "H" : "M")
+        : "m") +
+    (this->GetCurved() ? "Q" : "q") +
     (this->FloatTextures      ? "F"
         : this->StoredNormals ? "N"
                               : "f");
@@ -228,6 +231,10 @@ void vtkReliefShaderSource::ReplaceValuesAfter(std::string& fs, const void* cell
     if (this->NormalMoments)
     {
       defines += "#define ML_VISIBLE_NORMALS\n";
+      if (p->GetNormalFilter() == vtkReliefProperty::HeightMaskedNormalFilter)
+      {
+        defines += "#define ML_HEIGHT_MASKING\n";
+      }
     }
   }
   if (this->HasLightSet)

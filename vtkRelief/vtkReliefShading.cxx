@@ -121,7 +121,7 @@ bool vtkReliefShading::StartDraw(vtkOpenGLRenderWindow* renWin, vtkReliefPropert
         requiredCones != vtkReliefProperty::NoConeMap, property->GetFloatTextures(),
         property->GetDeriveNormals(),
         property->GetLevelOfDetail() &&
-          property->GetNormalFilter() == vtkReliefProperty::VisibleNormalFilter) ||
+          property->GetNormalFilter() >= vtkReliefProperty::VisibleNormalFilter) ||
     !this->LightSet->Update(renWin, lights))
   {
     return false;

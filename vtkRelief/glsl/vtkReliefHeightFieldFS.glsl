@@ -218,51 +218,151 @@ void mlAddLevelMoments(vec2 uv, int level, float k, inout vec4 a, inout vec4 b)
 }
 #endif
 
-// The footprint's visible mean normal, with its length, for v (towards the viewer) in the
-// tangent frame (T, B, N) of the shading normal, read at mip level lod. A pixel sees each facet
-// in proportion to its projected area, w (n.v) per texel of base (a height field seen from
-// above: facets turned away count negatively, as the ones hiding them do positively), and n.l
-// is linear in n, so the pixel's mean of n.l is l . S v / E[w n.v] with S = E[w n n^T]: the
-// moments the mip chain averaged (LEAN mapping, Olano and Baker 2010, with the 3D second-moment
-// matrix). A grazing view thus sees the facets facing it, which the mean normal (Toksvig 2005)
-// cannot know. The rendering's depth scale may differ from the bake's: n becomes
-// D n / |D n|, D = diag(s, s, 1), its length taken as the area-weighted root mean square.
 mat3 mlNormalSpread = mat3(0.0); // the footprint's covariance of n, (T, B, N) frame (below)
-vec3 mlVisibleNormal(vec2 uv, vec3 v, float lod)
+
+#if defined(ML_HEIGHT_MASKING) && defined(ML_STORED_NORMALS)
+// Height-correlated masking (ML_HEIGHT_MASKING): the facets of the levels computed from the
+// stored normals (0 and 1), each with its depth, so that a grazing view weighs the ones it sees.
+#define ML_MAX_FACETS 20
+vec3 mlFacetNormal[ML_MAX_FACETS]; // unit, at the rendering's depth scale
+float mlFacetBase[ML_MAX_FACETS];   // the share of the footprint's base (bilinear weight)
+float mlFacetDepth[ML_MAX_FACETS];
+float mlFacetLower[ML_MAX_FACETS]; // the share of the surface at or below the facet
+int mlFacetCount = 0;
+
+// Smith's Lambda for direction l ((T, B, N) frame) over a Gaussian of the gathered facets'
+// slopes along its azimuth (0 overhead or where the facets do not spread).
+float mlFacetLambda(vec3 l)
 {
-  mlNormalSpread = mat3(0.0);
-  vec4 a = vec4(0.0);
-  vec4 b = vec4(0.0);
-#ifdef ML_STORED_NORMALS
-  if (lod < mlMomentFirstLevel)
+  float sine = length(l.xy);
+  if (sine <= 1e-4 || l.z <= 1e-4)
   {
-    // Trilinear as the sampler's, the levels below the texture's from the stored normals.
-    int level = int(lod);
-    float f = lod - float(level);
-    mlAddLevelMoments(uv, level, 1.0 - f, a, b);
-    if (f > 0.0)
+    return 0.0;
+  }
+  vec2 d = l.xy / sine;
+  float sum = 0.0, mean = 0.0, square = 0.0;
+  for (int i = 0; i < mlFacetCount; ++i)
+  {
+    vec3 n = mlFacetNormal[i];
+    float slope = -dot(n.xy, d) / max(n.z, 1.0 / 16.0);
+    sum += mlFacetBase[i];
+    mean += mlFacetBase[i] * slope;
+    square += mlFacetBase[i] * slope * slope;
+  }
+  mean /= max(sum, 1e-12);
+  float variance = max(square / max(sum, 1e-12) - mean * mean, 0.0);
+  if (variance <= 1e-8)
+  {
+    return 0.0;
+  }
+  float a = l.z / (sine * sqrt(2.0 * variance));
+  return max(mlNormalCdf(1.4142135624 * a) - 1.0 + exp(-a * a) / (3.5449077018 * a), 0.0);
+}
+
+void mlAddTexelFacet(ivec2 t, float k)
+{
+  ML_COUNT_SAMPLE();
+  ML_COUNT_SAMPLE();
+  vec3 n = normalize(mlOctahedralNormal(texelFetch(mlNormalTexture, t, 0).rg));
+  float s = mlDepthScale * mlGradientScale;
+  mlFacetNormal[mlFacetCount] = normalize(vec3(s * n.xy, n.z));
+  mlFacetBase[mlFacetCount] = k;
+  mlFacetDepth[mlFacetCount] = texelFetch(mlReliefTexture, t, 0).r;
+  ++mlFacetCount;
+}
+
+// The facets of level 0 or 1 that its bilinear lookup at uv weighs, with k times their weights
+// (as mlAddLevelMoments).
+void mlAddLevelFacets(vec2 uv, int level, float k)
+{
+  ivec2 size0 = ivec2(mlTextureSize);
+  ivec2 size = max(size0 >> level, ivec2(1));
+  vec2 x = uv * vec2(size) - 0.5;
+  ivec2 i0 = ivec2(floor(x));
+  vec2 f = x - vec2(i0);
+  int children = 1 << level;
+  for (int c = 0; c < 4; ++c)
+  {
+    ivec2 o = ivec2(c & 1, c >> 1);
+    ivec2 t = i0 + o;
+    t = mlRepeatTexture != 0 ? (t % size + size) % size : clamp(t, ivec2(0), size - 1);
+    vec2 axis = mix(1.0 - f, f, vec2(o));
+    float weight = k * axis.x * axis.y / float(children * children);
+    for (int j = 0; j < children; ++j)
     {
-      if (float(level + 1) < mlMomentFirstLevel)
+      for (int i = 0; i < children; ++i)
       {
-        mlAddLevelMoments(uv, level + 1, f, a, b);
-      }
-      else
-      {
-        ML_COUNT_SAMPLE();
-        ML_COUNT_SAMPLE();
-        a += f * textureLod(mlMomentTexture0, uv, 0.0);
-        b += f * textureLod(mlMomentTexture1, uv, 0.0);
+        mlAddTexelFacet(min(t * children + ivec2(i, j), size0 - 1), weight);
       }
     }
   }
-  else
-#endif
+}
+
+// The visible mean normal of the facets gathered (mlAddLevelFacets) and their visible spread
+// (mlNormalSpread), for v towards the viewer in the (T, B, N) frame. A facet shows the viewer
+// its projected area, w max(0, n.v), where its neighbours do not hide it, and which ones they
+// hide depends on its height: by Smith's masking with heights, a point at height h is seen with
+// probability C(h)^Lambda(v), C the share of the surface no higher (Heitz 2014, "Understanding
+// the masking-shadowing function in microfacet-based BRDFs", the height-correlated form; Smith
+// 1967). C is the facets' own distribution, Lambda that of a Gaussian of their slopes along v's
+// azimuth (mlFootprintShadowing's). A grazing view so sees the tops, not the walls of the cracks
+// between them, which the moments alone weigh by their projected area.
+vec3 mlMaskedFacetNormal(vec3 v)
+{
+  float lambda = mlFacetLambda(v);
+  float total = 0.0;
+  for (int i = 0; i < mlFacetCount; ++i)
   {
-    ML_COUNT_SAMPLE();
-    ML_COUNT_SAMPLE();
-    a = textureLod(mlMomentTexture0, uv, lod - mlMomentFirstLevel);
-    b = textureLod(mlMomentTexture1, uv, lod - mlMomentFirstLevel);
+    total += mlFacetBase[i];
   }
+  for (int i = 0; i < mlFacetCount; ++i)
+  {
+    float lower = 0.0;
+    for (int j = 0; j < mlFacetCount; ++j)
+    {
+      lower += mlFacetDepth[j] >= mlFacetDepth[i] - 1e-4 ? mlFacetBase[j] : 0.0;
+    }
+    mlFacetLower[i] = clamp(lower / max(total, 1e-12), 0.0, 1.0);
+  }
+  vec3 mean = vec3(0.0);
+  mat3 second = mat3(0.0);
+  float seen = 0.0;
+  for (int i = 0; i < mlFacetCount; ++i)
+  {
+    vec3 n = mlFacetNormal[i];
+    float projected = max(dot(n, v), 0.0) / max(n.z, 1.0 / 16.0);
+    if (projected <= 0.0 || mlFacetBase[i] <= 0.0)
+    {
+      continue;
+    }
+    float c = mlFacetBase[i] * projected * (lambda > 0.0 ? pow(mlFacetLower[i], lambda) : 1.0);
+    seen += c;
+    mean += c * n;
+    second += c * outerProduct(n, n);
+  }
+  if (seen <= 1e-12)
+  {
+    mlNormalSpread = mat3(0.0);
+    return vec3(0.0, 0.0, 1.0);
+  }
+  mean /= seen;
+  mlNormalSpread = second / seen - outerProduct(mean, mean);
+  return mean;
+}
+#endif
+
+// The footprint's visible mean normal from its moments (a: E[w nx^2], E[w ny^2], E[w nx ny],
+// E[w nz^2]; b: E[w nx nz], E[w ny nz], E[w nx], E[w ny]), with its length, for v (towards the
+// viewer) in the tangent frame (T, B, N) of the shading normal; sets mlNormalSpread.
+// A pixel sees each facet in proportion to its projected area, w (n.v) per texel of base (a
+// height field seen from above: facets turned away count negatively, as the ones hiding them do
+// positively), and n.l is linear in n, so the pixel's mean of n.l is l . S v / E[w n.v] with
+// S = E[w n n^T]: the moments the mip chain averaged (LEAN mapping, Olano and Baker 2010, with
+// the 3D second-moment matrix). A grazing view thus sees the facets facing it, which the mean
+// normal (Toksvig 2005) cannot know. The rendering's depth scale may differ from the bake's: n
+// becomes D n / |D n|, D = diag(s, s, 1), its length taken as the area-weighted root mean square.
+vec3 mlMomentsVisibleNormal(vec4 a, vec4 b, vec3 v)
+{
   float s = mlDepthScale * mlGradientScale;
   float r = sqrt(max(s * s * (a.x + a.y) + a.w, 1e-12) / max(a.x + a.y + a.w, 1e-12));
   mat3 S = mat3(s * s * a.x, s * s * a.z, s * b.x, s * s * a.z, s * s * a.y, s * b.y, s * b.x,
@@ -282,6 +382,76 @@ vec3 mlVisibleNormal(vec2 uv, vec3 v, float lod)
     return vec3(s * b.x, s * b.y, a.w) / r;
   }
   return (S * v) / (projected * r);
+}
+
+// The footprint's visible mean normal at mip level lod (mlMomentsVisibleNormal), with
+// height-correlated masking (mlMaskedFacetNormal) where the level is computed from the stored
+// normals and ML_HEIGHT_MASKING is on.
+vec3 mlVisibleNormal(vec2 uv, vec3 v, float lod)
+{
+  mlNormalSpread = mat3(0.0);
+  vec4 a = vec4(0.0);
+  vec4 b = vec4(0.0);
+#ifdef ML_STORED_NORMALS
+  if (lod < mlMomentFirstLevel)
+  {
+    // Trilinear as the sampler's, the levels below the texture's from the stored normals.
+    int level = int(lod);
+    float f = lod - float(level);
+#ifdef ML_HEIGHT_MASKING // (with stored normals only)
+    mlFacetCount = 0;
+    mlAddLevelFacets(uv, level, 1.0 - f);
+    float stored = 0.0;
+    if (f > 0.0)
+    {
+      if (float(level + 1) < mlMomentFirstLevel)
+      {
+        mlAddLevelFacets(uv, level + 1, f);
+      }
+      else
+      {
+        stored = f;
+      }
+    }
+    vec3 masked = mlMaskedFacetNormal(v);
+    if (stored <= 0.0)
+    {
+      return masked;
+    }
+    mat3 maskedSpread = mlNormalSpread;
+    ML_COUNT_SAMPLE();
+    ML_COUNT_SAMPLE();
+    vec3 unmasked = mlMomentsVisibleNormal(
+      textureLod(mlMomentTexture0, uv, 0.0), textureLod(mlMomentTexture1, uv, 0.0), v);
+    mlNormalSpread = (1.0 - stored) * maskedSpread + stored * mlNormalSpread;
+    return mix(masked, unmasked, stored);
+#else
+    mlAddLevelMoments(uv, level, 1.0 - f, a, b);
+    if (f > 0.0)
+    {
+      if (float(level + 1) < mlMomentFirstLevel)
+      {
+        mlAddLevelMoments(uv, level + 1, f, a, b);
+      }
+      else
+      {
+        ML_COUNT_SAMPLE();
+        ML_COUNT_SAMPLE();
+        a += f * textureLod(mlMomentTexture0, uv, 0.0);
+        b += f * textureLod(mlMomentTexture1, uv, 0.0);
+      }
+    }
+#endif
+  }
+  else
+#endif
+  {
+    ML_COUNT_SAMPLE();
+    ML_COUNT_SAMPLE();
+    a = textureLod(mlMomentTexture0, uv, lod - mlMomentFirstLevel);
+    b = textureLod(mlMomentTexture1, uv, lod - mlMomentFirstLevel);
+  }
+  return mlMomentsVisibleNormal(a, b, v);
 }
 #endif
 
