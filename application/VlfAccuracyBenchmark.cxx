@@ -376,17 +376,20 @@ RgbImage FieldImage(const vlf::LightField& field, const std::vector<PixelHit>& h
 }
 
 // "auto", "auto-uniform" (the automatic choice without its finer texels on contact surfaces),
-// "auto-adaptive" (auto-uniform's lines and base texels, texels per surface from a first pass:
-// AdaptiveTexels.h; the caller chooses them), "auto-refine" (the same, never coarser than the
-// base), "KxN" or "KxNtF" (texel = F x the cell side).
+// "auto-adaptive" (auto's lines, base texels and contact halvings, texels per surface refined
+// from a first pass on top of them: AdaptiveTexels.h; the caller chooses them),
+// "auto-adaptive-first" (the first rule: auto-uniform's, the levels instead of the contact
+// halvings, coarsening, interior rows only), "auto-refine" (the first rule never coarser),
+// "KxN" or "KxNtF" (texel = F x the cell side).
 bool ParseSettings(const std::string& text, const TriangleScene& scene, std::uint64_t budget,
   vlf::LightFieldSettings& settings, std::string& note)
 {
-  if (text == "auto" || text == "auto-uniform" || text == "auto-adaptive" || text == "auto-refine")
+  if (text == "auto" || text == "auto-uniform" || text == "auto-adaptive" ||
+    text == "auto-adaptive-first" || text == "auto-refine")
   {
     vlf::AutomaticLimits limits;
     limits.MemoryBudget = budget;
-    if (text != "auto")
+    if (text != "auto" && text != "auto-adaptive")
     {
       limits.ContactTexelHalvings = 0;
     }
@@ -499,8 +502,10 @@ int RunVlfAccuracyBenchmark(const std::vector<std::string>& args)
     "--scenes", "LIST", "boxes,room,corridor,thin,cornell", "boxes,room,corridor,thin,cornell");
   cl.AddValue("--settings", "LIST",
     "per scene: auto, auto-uniform (auto without its finer texels on surfaces others stand on), "
-    "auto-adaptive (auto-uniform's lines, texels per surface from the light of a first pass), "
-    "auto-refine (auto-adaptive never coarser than the base), KxN (K directions, N lines per side) "
+    "auto-adaptive (auto's, texels refined per surface from the light of a first pass on top of "
+    "the contact texels), auto-adaptive-first (the first rule: auto-uniform's, texels per surface "
+    "instead of the contact texels, coarser where flat), auto-refine (the first rule never "
+    "coarser), KxN (K directions, N lines per side) "
     "or KxNtF (texel F x the cell side)",
     "513x32,auto");
   cl.AddFlag(
@@ -661,7 +666,8 @@ int RunVlfAccuracyBenchmark(const std::vector<std::string>& args)
       if (!ParseSettings(text, s.Scene, budget, settings, note))
       {
         return cl.UsageError("--settings: '" + text +
-          "' is not auto, KxN or KxNtF (or auto-uniform, auto-adaptive, auto-refine)");
+          "' is not auto, KxN or KxNtF (or auto-uniform, auto-adaptive, auto-adaptive-first, "
+          "auto-refine)");
       }
       if (!note.empty())
       {
@@ -671,11 +677,13 @@ int RunVlfAccuracyBenchmark(const std::vector<std::string>& args)
       try
       {
         const Clock::time_point start = Clock::now();
-        if (text == "auto-adaptive" || text == "auto-refine")
+        if (text == "auto-adaptive" || text == "auto-adaptive-first" || text == "auto-refine")
         {
           // The first pass's time counts as the build's.
           vlf::AdaptiveTexelReport report;
-          vlf::AdaptiveTexelOptions adaptive;
+          vlf::AdaptiveTexelOptions adaptive = text == "auto-adaptive"
+            ? vlf::AdaptiveTexelOptions()
+            : vlf::FirstRuleAdaptiveTexelOptions();
           if (text == "auto-refine")
           {
             adaptive.Coarsen = -1.0; // never

@@ -187,9 +187,10 @@ int Propagate(const std::vector<std::string>& args)
     "behind ribs); auto: once with the automatic resolution and the final gather",
     "auto");
   cl.AddFlag("--adaptive-texels",
-    "texels per surface from the light of a cheap first pass (AdaptiveTexels.h): halved or "
-    "quartered where it varies between texels, doubled where it is flat (instead of "
-    "--contact-texels; with the final gather, one process)");
+    "texels per surface refined from the light of a cheap first pass (AdaptiveTexels.h), halved "
+    "or quartered where it varies between texels, on top of the contact texels; the default with "
+    "automatic --rays, the final gather and one process (this asks for it with given --rays)");
+  cl.AddFlag("--no-adaptive-texels", "no first pass: the contact texels alone");
   cl.AddValue("--tolerance", "X",
     "shoot until at most this share of the emitted flux is left unshot", "0.01");
   cl.AddValue("--max-iterations", "K", "most iterations --tolerance may take (in total)", "100");
@@ -280,13 +281,19 @@ int Propagate(const std::vector<std::string>& args)
     return cl.UsageError("--resume and --filter exclude each other");
   }
   // The texels are chosen from a gathered first pass; a resumed field keeps its stored ones.
-  const bool adaptive = cl.Has("--adaptive-texels");
-  if (adaptive && (resume || cl.Has("--contact-texels") || !gather))
+  if (cl.Has("--adaptive-texels") && cl.Has("--no-adaptive-texels"))
+  {
+    return cl.UsageError("--adaptive-texels and --no-adaptive-texels exclude each other");
+  }
+  if (cl.Has("--adaptive-texels") && (resume || !gather))
   {
     return cl.UsageError(
-      "--adaptive-texels excludes --resume (the field keeps its texels), --contact-texels and "
-      "--no-gather (it measures the gathered light)");
+      "--adaptive-texels excludes --resume (the field keeps its texels) and --no-gather (it "
+      "measures the gathered light)");
   }
+  // By default with the automatic resolution (as the contact texels), the gather and a new field.
+  bool adaptive = cl.Has("--adaptive-texels") ||
+    (!cl.Has("--no-adaptive-texels") && rays == 0 && gather && !resume);
   if (vlf::FileExists(out) && !vlf::IsSnapshotFile(out))
   {
     std::cerr << "mesolight vlf propagate: '" << out
@@ -314,11 +321,19 @@ int Propagate(const std::vector<std::string>& args)
   const bool root = reducer.Rank() == 0;
   if (adaptive && distributed)
   {
+    if (cl.Has("--adaptive-texels"))
+    {
+      if (root)
+      {
+        std::cerr << "mesolight vlf propagate: --adaptive-texels runs in one process only\n";
+      }
+      return 1;
+    }
+    adaptive = false; // the default: the contact texels alone (the first pass is serial)
     if (root)
     {
-      std::cerr << "mesolight vlf propagate: --adaptive-texels runs in one process only\n";
+      std::cout << "adaptive texels: off under MPI (the first pass runs in one process)\n";
     }
-    return 1;
   }
   int threadsPerRank = 0; // 0: vtkSMPTools' default (every hardware thread)
   if (distributed && !std::getenv("VTK_SMP_MAX_THREADS"))

@@ -21,18 +21,30 @@ cli_expect_error(2 "--contact-texels"
   vlf propagate --directions 33 --rays 16 --iterations 1 --contact-texels 4 --force
   --out "${field}")
 # Texels from the light: a first pass chooses each surface's texels, the field file keeps them
-# (a render reads it); the options it replaces or cannot keep are refused, naming it.
+# (a render reads it); on top of given contact texels; the options it cannot keep are refused,
+# naming it.
 cli_run(TRUE vlf propagate --directions 33 --rays 16 --iterations 1 --adaptive-texels
   --out "${WORK}/adaptive.vlf")
-if (NOT last_output MATCHES "adaptive texels: texels finer on [0-9]+, coarser on [0-9]+ of 17 surfaces")
+if (NOT last_output MATCHES "adaptive texels: texels finer on [0-9]+, coarser on 0 of 17 surfaces")
   message(FATAL_ERROR "no adaptive texel report: ${last_output}")
 endif ()
 cli_run(TRUE vlf render "${WORK}/adaptive.vlf" --size 32x32 --out "${WORK}/adaptive.png")
-foreach (other IN ITEMS "--contact-texels;1" "--no-gather")
-  cli_expect_error(2 "--adaptive-texels excludes"
-    vlf propagate --directions 33 --rays 16 --iterations 1 --adaptive-texels ${other}
-    --out "${WORK}/adaptive-refused.vlf")
-endforeach ()
+cli_run(TRUE vlf propagate --directions 33 --rays 16 --iterations 1 --adaptive-texels
+  --contact-texels 1 --out "${WORK}/adaptive-contact.vlf")
+if (NOT last_output MATCHES "texels; [1-9][0-9]* contact surfaces")
+  message(FATAL_ERROR "the adaptive texels left out the contact texels: ${last_output}")
+endif ()
+# Given rays: no first pass unless asked for.
+cli_run(TRUE vlf propagate --directions 33 --rays 16 --iterations 1 --out "${WORK}/given.vlf")
+if (last_output MATCHES "adaptive texels:")
+  message(FATAL_ERROR "a first pass with given rays: ${last_output}")
+endif ()
+cli_expect_error(2 "--adaptive-texels excludes"
+  vlf propagate --directions 33 --rays 16 --iterations 1 --adaptive-texels --no-gather
+  --out "${WORK}/adaptive-refused.vlf")
+cli_expect_error(2 "--adaptive-texels and --no-adaptive-texels exclude each other"
+  vlf propagate --directions 33 --rays 16 --iterations 1 --adaptive-texels --no-adaptive-texels
+  --out "${WORK}/adaptive-refused.vlf")
 cli_expect_error(2 "--adaptive-texels excludes"
   vlf propagate --iterations 2 --adaptive-texels --resume --out "${WORK}/adaptive.vlf")
 # The same values (or none) resume.

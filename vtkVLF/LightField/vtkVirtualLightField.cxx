@@ -2,6 +2,7 @@
 #include "vtkVirtualLightField.h"
 #include "vtkVirtualLightFieldCore.h"
 
+#include "AdaptiveTexels.h"
 #include "AutomaticSettings.h"
 #include "Distribution.h"
 #include "FinalGather.h"
@@ -246,9 +247,18 @@ int vtkVirtualLightField::RequestData(
     {
       const vlf::AutomaticChoice choice = vlf::ResolveAutomaticSettings(
         scene, settings, this->FinalGather, this->ContactTexelHalvings);
+      const bool automaticLines = settings.RaysPerSide == 0;
       settings = choice.Settings;
+      double begin = 0.0;
+      if (this->AdaptiveTexels && automaticLines && this->FinalGather)
+      {
+        begin = 0.5 * buildShare;
+        vlf::AdaptiveTexelOptions adaptive;
+        adaptive.Progress = mesolight::AlgorithmProgress(this, 0.0, begin);
+        settings = vlf::ChooseAdaptiveTexels(scene, settings, adaptive);
+      }
       field = vlf::LightField::Build(
-        scene, settings, mesolight::AlgorithmProgress(this, 0.0, buildShare));
+        scene, settings, mesolight::AlgorithmProgress(this, begin, buildShare));
     }
     vlf::PropagationOptions options;
     const double gatherShare = this->FinalGather ? 0.9 : 1.0;
@@ -699,6 +709,7 @@ void vtkVirtualLightField::PrintSelf(ostream& os, vtkIndent indent)
             ? " (automatic)"
             : "")
      << "\n";
+  os << indent << "AdaptiveTexels: " << this->AdaptiveTexels << "\n";
   os << indent << "PropagationCount: " << this->PropagationCount << "\n";
   os << indent << "LightField: "
      << (this->Field ? std::to_string(this->Field->IterationsDone) + " iterations done" : "(none)")

@@ -22,8 +22,18 @@ double Sum(const glm::vec3& v)
 }
 } // namespace
 
+AdaptiveTexelOptions FirstRuleAdaptiveTexelOptions()
+{
+  AdaptiveTexelOptions options;
+  options.Coarsen = 0.004;
+  options.CoarsenMaxNoise = 1e30;
+  options.OnContactTexels = false;
+  options.BorderRows = false;
+  return options;
+}
+
 std::vector<SurfaceVariation> MeasureLightVariation(const LightField& field,
-  const std::vector<glm::vec3>& totals, const std::vector<glm::vec3>& second)
+  const std::vector<glm::vec3>& totals, const std::vector<glm::vec3>& second, bool borderRows)
 {
   if (totals.size() != field.TexelCount() || (!second.empty() && second.size() != totals.size()))
   {
@@ -79,12 +89,19 @@ std::vector<SurfaceVariation> MeasureLightVariation(const LightField& field,
           { b > 0 ? at(a, b - 1) : c, b + 1 < h ? at(a, b + 1) : c } };
         for (const auto& p : pairs)
         {
-          if (p[0] == c || p[1] == c || on[p[0]] == 0 || on[p[1]] == 0)
+          const bool low = p[0] != c && on[p[0]] != 0, high = p[1] != c && on[p[1]] != 0;
+          if (low && high)
           {
-            continue;
+            defect += std::abs(value(c) - 0.5 * (value(p[0]) + value(p[1])));
+            ++v.Samples;
           }
-          defect += std::abs(value(c) - 0.5 * (value(p[0]) + value(p[1])));
-          ++v.Samples;
+          else if (borderRows && (low || high))
+          {
+            // A border texel: read clamped beyond its centre, it misses half the step to its
+            // inner neighbour at the border (twice that with twice the texels).
+            defect += 0.5 * std::abs(value(c) - value(low ? p[0] : p[1]));
+            ++v.Samples;
+          }
         }
       }
     }
@@ -103,9 +120,11 @@ std::vector<SurfaceVariation> MeasureLightVariation(const LightField& field,
 }
 
 std::vector<std::int8_t> ChooseTexelLevels(const LightField& field,
-  const std::vector<SurfaceVariation>& variation, const AdaptiveTexelOptions& options)
+  const std::vector<SurfaceVariation>& variation, const AdaptiveTexelOptions& options,
+  const std::vector<std::int8_t>& floor)
 {
-  if (variation.size() != field.Surfaces().size())
+  if (variation.size() != field.Surfaces().size() ||
+    (!floor.empty() && floor.size() != variation.size()))
   {
     throw std::invalid_argument("the variation does not match the light field's surfaces");
   }
@@ -114,9 +133,12 @@ std::vector<std::int8_t> ChooseTexelLevels(const LightField& field,
   {
     const SurfaceVariation& v = variation[s];
     const Surface& surface = field.Surfaces()[s];
+    // A contact surface's halvings as a level (negative), else 0: no cap.
+    const std::int8_t cap = floor.empty() ? std::int8_t(0) : floor[s];
     if (v.Samples == 0)
     {
-      continue; // an emitter, or too small to measure: the scene's texels
+      levels[s] = std::min<std::int8_t>(cap, 0); // an emitter, or too small to measure
+      continue;
     }
     if (v.Defect > options.RefineTwice)
     {
@@ -126,10 +148,14 @@ std::vector<std::int8_t> ChooseTexelLevels(const LightField& field,
     {
       levels[s] = -1;
     }
-    else if (v.Defect < options.Coarsen &&
+    else if (v.Defect < options.Coarsen && v.Noise <= options.CoarsenMaxNoise && cap == 0 &&
       std::min(surface.TextureWidth, surface.TextureHeight) >= 2 * options.MinCoarseSide)
     {
       levels[s] = 1;
+    }
+    if (cap < 0)
+    {
+      levels[s] = std::min(levels[s], cap); // a contact surface: at least its halvings
     }
   }
   return levels;
@@ -137,11 +163,12 @@ std::vector<std::int8_t> ChooseTexelLevels(const LightField& field,
 
 std::string AdaptiveTexelReport::Describe() const
 {
-  char text[200];
+  char text[300];
   std::snprintf(text, sizeof(text),
-    "texels finer on %zu, coarser on %zu of %zu surfaces: %zu -> %zu texels (first pass %.1f s)",
+    "texels finer on %zu, coarser on %zu of %zu surfaces: %zu -> %zu texels; %zu contact "
+    "surfaces, %zu finer than the contact texels alone (first pass %.1f s)",
     this->Finer, this->Coarser, this->Variation.size(), this->BaseTexels, this->Texels,
-    this->Seconds);
+    this->Contact, this->BeyondContact, this->Seconds);
   return text;
 }
 
@@ -174,25 +201,49 @@ LightFieldSettings ChooseAdaptiveTexels(const TriangleScene& scene,
   gather.Progress = SubProgress(options.Progress, 0.75, 1.0);
   FinalGather(*field, gather);
   const std::vector<SurfaceVariation> variation =
-    MeasureLightVariation(*field, one, field->TotalDiffuse);
+    MeasureLightVariation(*field, one, field->TotalDiffuse, options.BorderRows);
 
+  // The contact halvings as levels: the floor of the chosen ones.
+  std::vector<std::int8_t> contact(field->Surfaces().size(), 0);
+  if (options.OnContactTexels && settings.ContactTexelHalvings > 0)
+  {
+    std::vector<std::uint32_t> triangleSurface(field->Scene().TriangleCount());
+    for (std::size_t t = 0; t < triangleSurface.size(); ++t)
+    {
+      triangleSurface[t] = field->SurfaceOfTriangle(t);
+    }
+    // Probed as LightField::Build probes them (GroupSurfaces).
+    const std::vector<std::uint8_t> on =
+      ContactSurfaces(field->Scene(), field->Surfaces(), triangleSurface, 0.25f * first.TexelSize);
+    for (std::size_t s = 0; s < on.size(); ++s)
+    {
+      contact[s] = on[s] != 0 ? static_cast<std::int8_t>(-settings.ContactTexelHalvings) : 0;
+    }
+  }
   LightFieldSettings chosen = settings;
   chosen.TexelSize = first.TexelSize;
-  chosen.ContactTexelHalvings = 0;
-  chosen.SurfaceTexelLevels = ChooseTexelLevels(*field, variation, options);
-  // Within the budget: while the finer texels do not fit, the finest surfaces get one level less.
+  chosen.SurfaceTexelLevels = ChooseTexelLevels(*field, variation, options, contact);
+  // Within the budget: while the finer texels do not fit, the finest surfaces beyond their
+  // contact halvings get one level less.
   for (std::size_t estimate = EstimateMemory(scene, chosen).TotalBytes;
        estimate > settings.MemoryBudget; estimate = EstimateMemory(scene, chosen).TotalBytes)
   {
-    const std::int8_t finest =
-      *std::min_element(chosen.SurfaceTexelLevels.begin(), chosen.SurfaceTexelLevels.end());
+    std::int8_t finest = 0;
+    for (std::size_t s = 0; s < contact.size(); ++s)
+    {
+      if (chosen.SurfaceTexelLevels[s] < contact[s])
+      {
+        finest = std::min(finest, chosen.SurfaceTexelLevels[s]);
+      }
+    }
     if (finest >= 0)
     {
-      break; // the base texels: Build refuses the field as it would without the choice
+      break; // the default's texels: Build refuses the field as it would without the choice
     }
-    for (std::int8_t& level : chosen.SurfaceTexelLevels)
+    for (std::size_t s = 0; s < contact.size(); ++s)
     {
-      level = level == finest ? static_cast<std::int8_t>(level + 1) : level;
+      std::int8_t& level = chosen.SurfaceTexelLevels[s];
+      level = level == finest && level < contact[s] ? static_cast<std::int8_t>(level + 1) : level;
     }
   }
   if (report != nullptr)
@@ -202,6 +253,11 @@ LightFieldSettings ChooseAdaptiveTexels(const TriangleScene& scene,
       chosen.SurfaceTexelLevels.end(), [](std::int8_t l) { return l < 0; }));
     report->Coarser = static_cast<std::size_t>(std::count_if(chosen.SurfaceTexelLevels.begin(),
       chosen.SurfaceTexelLevels.end(), [](std::int8_t l) { return l > 0; }));
+    for (std::size_t s = 0; s < contact.size(); ++s)
+    {
+      report->Contact += contact[s] < 0 && chosen.SurfaceTexelLevels[s] <= contact[s] ? 1 : 0;
+      report->BeyondContact += chosen.SurfaceTexelLevels[s] < contact[s] ? 1 : 0;
+    }
     report->BaseTexels = field->TexelCount();
     report->FirstPassBytes = field->AllocatedBytes();
     report->Texels = EstimateMemory(scene, chosen).Texels;

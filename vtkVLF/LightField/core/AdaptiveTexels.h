@@ -20,12 +20,24 @@
 // final gather's rays each (other random numbers): the mean of the two is measured, and the
 // mean defect their difference alone produces (the gather's noise, which would otherwise read as
 // variation: |g1 - g2| / 2 is the noise of the mean's texel, and its defect averages about that)
-// is subtracted. Then per surface:
+// is subtracted. The border rows count too: a texel whose neighbour along an axis is off the
+// surface is read clamped over the half texel beyond its centre, so there the defect is half
+// the step to its inner neighbour, |L_a - L_{a-1}| / 2 (a wall's light falls off fastest within
+// a texel of a corner). Then per surface:
 //   defect > RefineTwice          -> texels a quarter
 //   defect > Refine               -> texels a half
-//   defect < Coarsen, and the texture at least 2 MinCoarseSide texels on its shorter side
-//                                 -> texels doubled (a small surface keeps the scene's texels)
-// and the field is built again with those levels.
+//   defect < Coarsen (off by default), the first pass's noise below CoarsenMaxNoise, no contact
+//   surface, and the texture at least 2 MinCoarseSide texels on its shorter side
+//                                 -> texels doubled
+// and on top of the contact halvings (LightFieldSettings::ContactTexelHalvings): a contact
+// surface keeps at least its halvings, since a contact shadow narrower than a base texel does
+// not show in the first pass. The field is then built again with those levels.
+//
+// Measured per pixel against the path tracer (docs/vlf.md, "Texels from the light"): the first
+// rule (interior rows only, instead of the contact halvings, coarsening below 0.4%) gained on
+// the boxes but lost 0.1-1.0 points of mean error on the other four scenes (coarsened walls
+// lost their borders, the contact shadows were missed). Refining only, on top of the contact
+// halvings, every surface has at least the default's texels.
 #ifndef mesolight_vlf_AdaptiveTexels_h
 #define mesolight_vlf_AdaptiveTexels_h
 
@@ -46,8 +58,17 @@ struct AdaptiveTexelOptions
   // beyond which they are quartered.
   double Refine = 0.02;
   double RefineTwice = 0.08;
-  // Below it the surface's texels are doubled.
-  double Coarsen = 0.004;
+  // Below it the surface's texels are doubled; negative: never (the default: coarsening saved
+  // little memory, the maps hold most of it, and cost accuracy at the borders).
+  double Coarsen = -1.0;
+  // A surface whose first-pass noise share (SurfaceVariation::Noise) exceeds this is never
+  // coarsened: what is left of its defect after subtracting the noise is not resolved.
+  double CoarsenMaxNoise = 0.02;
+  // The contact surfaces keep at least their LightFieldSettings::ContactTexelHalvings (false:
+  // the levels replace them, the first rule).
+  bool OnContactTexels = true;
+  // The border rows count in the defect (above; false: interior texels only, the first rule).
+  bool BorderRows = true;
   // A surface is coarsened only when its texture keeps at least this many texels on its shorter
   // side.
   int MinCoarseSide = 8;
@@ -66,20 +87,30 @@ struct SurfaceVariation
   std::size_t Samples = 0; // texels measured (0: too small to tell, or an emitter)
 };
 
+// The options of the first rule (measured in docs/vlf.md; for comparisons and the negative
+// tests): interior rows only, coarsening below 0.4%, the levels instead of the contact halvings.
+AdaptiveTexelOptions FirstRuleAdaptiveTexelOptions();
+
 // The variation of every surface of the field's textures: totals and second are two estimates of
 // the same textures with independent noise (second may be empty: no noise subtracted).
+// borderRows: the border texels' clamp defect counts too (above).
 std::vector<SurfaceVariation> MeasureLightVariation(const LightField& field,
-  const std::vector<glm::vec3>& totals, const std::vector<glm::vec3>& second = {});
+  const std::vector<glm::vec3>& totals, const std::vector<glm::vec3>& second = {},
+  bool borderRows = true);
 
 // Per surface of field the texel level (LightFieldSettings::SurfaceTexelLevels) relative to the
-// field's base texels, from its variation (above).
+// field's base texels, from its variation (above). floor (empty, or one level per surface: the
+// contact halvings as levels) caps every level: a surface is never coarser than its floor.
 std::vector<std::int8_t> ChooseTexelLevels(const LightField& field,
-  const std::vector<SurfaceVariation>& variation, const AdaptiveTexelOptions& options = {});
+  const std::vector<SurfaceVariation>& variation, const AdaptiveTexelOptions& options = {},
+  const std::vector<std::int8_t>& floor = {});
 
 struct AdaptiveTexelReport
 {
   std::vector<SurfaceVariation> Variation;
-  std::size_t Finer = 0, Coarser = 0; // surfaces
+  std::size_t Finer = 0, Coarser = 0; // surfaces finer / coarser than the base texels
+  std::size_t Contact = 0;            // surfaces at their contact halvings (or finer)
+  std::size_t BeyondContact = 0;      // surfaces finer than their contact halvings alone
   std::size_t BaseTexels = 0;         // the first pass's (uniform) texels
   std::size_t Texels = 0;             // with the chosen levels
   double Seconds = 0.0;               // the first pass and the choice
@@ -88,8 +119,9 @@ struct AdaptiveTexelReport
 };
 
 // The settings with SurfaceTexelLevels chosen from a first pass (above) over the scene: the
-// texel size of settings without contact halvings is the base. Throws what LightField::Build,
-// the propagation and the gather throw.
+// texel size of settings without contact halvings is the base; with options.OnContactTexels the
+// settings' ContactTexelHalvings are the floor of the contact surfaces' levels. Throws what
+// LightField::Build, the propagation and the gather throw.
 LightFieldSettings ChooseAdaptiveTexels(const TriangleScene& scene,
   const LightFieldSettings& settings, const AdaptiveTexelOptions& options = {},
   AdaptiveTexelReport* report = nullptr);

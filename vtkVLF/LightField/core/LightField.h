@@ -111,8 +111,8 @@ struct LightFieldSettings
   // Per surface (in GroupSurfaces' order) a texel level: texels TexelSize * 2^level, level in
   // [MinSurfaceTexelLevel, MaxSurfaceTexelLevel]. Empty: every surface at TexelSize (contact
   // surfaces finer by ContactTexelHalvings); set, it replaces ContactTexelHalvings. Chosen from a
-  // first pass's light (AdaptiveTexels.h: finer where the light varies, coarser where it is
-  // flat) and kept in the field file.
+  // first pass's light (AdaptiveTexels.h, by default with automatic lines: finer where the light
+  // varies, the contact surfaces at least at their halvings) and kept in the field file.
   std::vector<std::int8_t> SurfaceTexelLevels;
   std::uint64_t MemoryBudget = std::uint64_t(4) << 30; // bytes
   // §3.6.2: weight each direction by its solid angle. False gives every direction 2 pi / K

@@ -2,15 +2,21 @@
 // Texels per surface from the field's own light (AdaptiveTexels.h,
 // LightFieldSettings::SurfaceTexelLevels) against independent references:
 // 1. The variation measure on textures set by hand: a 5:1 step and stripes are refined, flat and
-//    linearly varying light coarsened (bilinear reads hold a linear gradient at any texel size),
-//    a surface too small to coarsen keeps its texels; noise of two independent estimates is not
-//    read as variation (the negative: one estimate alone refines it).
+//    linearly varying light coarsened where coarsening is asked for (bilinear reads hold a
+//    linear gradient at any texel size; by default nothing is coarsened), a surface too small to
+//    coarsen keeps its texels; noise of two independent estimates is not read as variation (the
+//    negative: one estimate alone refines it); a steep fall-off in the border rows alone refines
+//    (the negative: the first rule's interior rows do not see it).
 // 2. The levels set the texels (twice / half the side per level), the estimate follows, and a
 //    field file keeps them; levels for another surface count are refused.
 // 3. Shadows of floating plates under a small emitter, read on the floor the way a pixel reads
 //    them (bilinear between texel centres, within 1.5 texels of the shadow edges), against the
 //    path tracer: the gathered field at the scene's uniform texels (the negative) fails the
-//    error bound the adaptive texels meet, and the plates' flat-lit tops get fewer texels.
+//    error bound the adaptive texels meet, and the plates' flat-lit tops get fewer texels when
+//    coarsening is asked for.
+// 4. The contact shadow of a low box on a floor against the path tracer: the rule (refining on
+//    top of the contact halvings) meets the bound; the first rule (the levels instead of the
+//    contact halvings: the first pass's base texels do not show the shadow) is the negative.
 #include "AdaptiveTexels.h"
 #include "FinalGather.h"
 #include "PathTracedTexels.h"
@@ -84,9 +90,11 @@ TEST(VLFAdaptiveTexels, RefinesAStepCoarsensFlatLightAndIgnoresNoise)
     const std::vector<SurfaceVariation> v = MeasureLightVariation(*field, one, two);
     std::printf("floor defect %.2f%% (noise %.2f%%), panel %.2f%%\n", 100.0 * v[Floor].Defect,
       100.0 * v[Floor].Noise, 100.0 * v[Panel].Defect);
-    return ChooseTexelLevels(*field, v);
+    return ChooseTexelLevels(*field, v, FirstRuleAdaptiveTexelOptions());
   };
 
+  // By default nothing is coarsened.
+  EXPECT_EQ(ChooseTexelLevels(*field, MeasureLightVariation(*field, texels))[Floor], 0);
   // Flat light: doubled on the floor; the small panel keeps its texels.
   std::vector<std::int8_t> levels = levelsOf(texels, {});
   EXPECT_EQ(levels[Floor], 1);
@@ -115,6 +123,21 @@ TEST(VLFAdaptiveTexels, RefinesAStepCoarsensFlatLightAndIgnoresNoise)
   Fill(*field, second, Floor, [&](int, int) { return noise(random); });
   EXPECT_LT(levelsOf(texels, {})[Floor], 0);
   EXPECT_GE(levelsOf(texels, second)[Floor], 0);
+
+  // Flat light falling to black in the outermost texels on all four borders (a wall's light
+  // towards a corner): the border rows refine the floor; the interior rows (the first rule) see
+  // only a small defect beside the borders and keep it.
+  const int h = floor.TextureHeight;
+  Fill(*field, texels, Floor,
+    [&](int a, int b) {
+      return std::min({ a, b, w - 1 - a, h - 1 - b }) == 0 ? 0.0f : 1.0f;
+    });
+  const std::vector<SurfaceVariation> border = MeasureLightVariation(*field, texels);
+  const std::vector<SurfaceVariation> interior = MeasureLightVariation(*field, texels, {}, false);
+  std::printf("fall-off in the border rows: defect %.2f%% with them, %.2f%% without\n",
+    100.0 * border[Floor].Defect, 100.0 * interior[Floor].Defect);
+  EXPECT_LT(ChooseTexelLevels(*field, border)[Floor], 0);
+  EXPECT_EQ(ChooseTexelLevels(*field, interior)[Floor], 0); // the negative
 }
 
 TEST(VLFAdaptiveTexels, LevelsSetTheTexelsAndFieldFilesKeepThem)
@@ -173,7 +196,10 @@ TEST(VLFAdaptiveTexels, ResolvesSharpShadowsWhereUniformTexelsDoNotAndCoarsensFl
   settings.TilesPerSide = 4;
   settings.TexelSize = 0.5f * settings.CellSize();
   AdaptiveTexelReport report;
-  const LightFieldSettings adaptiveSettings = ChooseAdaptiveTexels(scene, settings, {}, &report);
+  AdaptiveTexelOptions coarsening;
+  coarsening.Coarsen = 0.004; // the first rule's
+  const LightFieldSettings adaptiveSettings =
+    ChooseAdaptiveTexels(scene, settings, coarsening, &report);
   std::printf("%s\n", report.Describe().c_str());
 
   std::unique_ptr<LightField> uniform = LightField::Build(scene, settings);
@@ -193,9 +219,11 @@ TEST(VLFAdaptiveTexels, ResolvesSharpShadowsWhereUniformTexelsDoNotAndCoarsensFl
     }
   }
   ASSERT_NE(tops, NoSurface);
-  std::printf("floor defect %.2f%% -> level %d, the plates' tops %.2f%% -> level %d\n",
+  std::printf("floor defect %.2f%% -> level %d, the plates' tops %.2f%% (noise %.2f%%) -> level "
+              "%d\n",
     100.0 * report.Variation[0].Defect, adaptiveSettings.SurfaceTexelLevels[0],
-    100.0 * report.Variation[tops].Defect, adaptiveSettings.SurfaceTexelLevels[tops]);
+    100.0 * report.Variation[tops].Defect, 100.0 * report.Variation[tops].Noise,
+    adaptiveSettings.SurfaceTexelLevels[tops]);
   EXPECT_LT(adaptiveSettings.SurfaceTexelLevels[0], 0);    // the shadows: finer
   EXPECT_GT(adaptiveSettings.SurfaceTexelLevels[tops], 0); // flat light: coarser
 
@@ -266,6 +294,87 @@ TEST(VLFAdaptiveTexels, ResolvesSharpShadowsWhereUniformTexelsDoNotAndCoarsensFl
   // Measured: uniform 9.2% (3277 texels), adaptive 2.3% (25632; the floor quartered).
   EXPECT_LT(adaptiveError, 0.05);
   EXPECT_GT(uniformError, 0.05); // the negative: the shadow edges smeared over a texel
+}
+
+TEST(VLFAdaptiveTexels, RefinesOnTopOfTheContactTexelsWhereTheFirstRuleMissedTheContactShadow)
+{
+  // TestContactTexels.cxx's low box on a floor under a 0.4 wide emitter at height 1: 0.12 wide
+  // and 0.08 high, its contact shadow a strip of a few hundredths beside it, narrower than the
+  // 0.094 texels of 513 x 32 lines (the scene is 3 across).
+  const glm::vec3 lower(0.3f, -0.06f, 0.0f), upper(0.42f, 0.06f, 0.08f);
+  TriangleScene scene = MakeEmitterOverFloor(0.4f, 1.0f, 2.0f, 0.5f, 10.0f);
+  SceneMaterial white;
+  white.Name = "box";
+  white.Diffuse = glm::vec3(0.5f);
+  vlftest::AddBox(scene, lower, upper, scene.AddMaterial(white), false);
+  LightFieldSettings settings;
+  settings.Directions = 513;
+  settings.RaysPerSide = 32;
+  settings.TilesPerSide = 4;
+  settings.ContactTexelHalvings = 1; // what the automatic settings take with the gather
+  AdaptiveTexelReport ruleReport, firstReport;
+  const LightFieldSettings rule = ChooseAdaptiveTexels(scene, settings, {}, &ruleReport);
+  const LightFieldSettings first =
+    ChooseAdaptiveTexels(scene, settings, FirstRuleAdaptiveTexelOptions(), &firstReport);
+  std::printf("the rule: %s\nthe first rule: %s\nfloor defect %.2f%% (noise %.2f%%): level %d "
+              "(the rule), %d (the first rule)\n",
+    ruleReport.Describe().c_str(), firstReport.Describe().c_str(),
+    100.0 * ruleReport.Variation[0].Defect, 100.0 * ruleReport.Variation[0].Noise,
+    rule.SurfaceTexelLevels[0], first.SurfaceTexelLevels[0]);
+  EXPECT_LE(rule.SurfaceTexelLevels[0], -1); // at least the contact halving
+  EXPECT_EQ(ruleReport.Contact, 1u);
+
+  std::unique_ptr<LightField> ruleField = LightField::Build(scene, rule);
+  std::unique_ptr<LightField> firstField = LightField::Build(scene, first);
+  // Points on the floor within 1.5 base texels of the box, not under it, on a grid of a tenth
+  // of a texel: what the pixels beside the box read.
+  const float texel = settings.CellSize() / ruleField->NormalizationScale();
+  std::vector<TexelPoint> points;
+  for (float x = lower.x - 1.5f * texel; x <= upper.x + 1.5f * texel; x += 0.1f * texel)
+  {
+    for (float y = lower.y - 1.5f * texel; y <= upper.y + 1.5f * texel; y += 0.1f * texel)
+    {
+      const float dx = std::max({ lower.x - x, 0.0f, x - upper.x });
+      const float dy = std::max({ lower.y - y, 0.0f, y - upper.y });
+      const float d = std::sqrt(dx * dx + dy * dy);
+      if (!(d > 0.002f && d < 1.5f * texel))
+      {
+        continue;
+      }
+      TexelPoint p;
+      p.Surface = 0;
+      p.Triangle = ruleField->Surfaces()[0].Triangles[0];
+      p.Unit = (glm::vec3(x, y, 0.0f) - ruleField->NormalizationCentre()) *
+        ruleField->NormalizationScale();
+      points.push_back(p);
+    }
+  }
+  ASSERT_GT(points.size(), 100u);
+  const std::vector<glm::vec3> reference = PathTraced(scene, *ruleField, points, 2048, 5);
+  const auto meanError = [&](LightField& field)
+  {
+    PropagateToTolerance(field, DefaultTolerance, DefaultMaxIterations);
+    FinalGather(field);
+    double sum = 0.0;
+    for (std::size_t i = 0; i < points.size(); ++i)
+    {
+      const double r = reference[i].x + reference[i].y + reference[i].z;
+      const glm::vec3 v = field.SampleTexture(field.TotalDiffuse, 0, points[i].Unit);
+      sum += std::abs(v.x + v.y + v.z - r) / r;
+    }
+    return sum / static_cast<double>(points.size());
+  };
+  const double ruleError = meanError(*ruleField);
+  const double firstError = meanError(*firstField);
+  std::printf("floor within 1.5 texels of a low box vs the path tracer (%zu points): the rule "
+              "%.2f%% (%zu texels), the first rule %.2f%% (%zu texels)\n",
+    points.size(), 100.0 * ruleError, ruleField->TexelCount(), 100.0 * firstError,
+    firstField->TexelCount());
+  // Measured: the rule 16.2% (floor halved: the contact halving; 1898 texels), the first rule
+  // 29.0% (525).
+  EXPECT_LT(ruleError, 0.2);
+  EXPECT_LT(ruleError, 0.75 * firstError);
+  EXPECT_GT(firstError, 0.25); // the negative: the contact shadow smeared over a base texel
 }
 
 } // namespace

@@ -474,6 +474,30 @@ TEST(VLFVirtualLightField, ContactTexelHalvingsRefineTheFloorUnderABox)
   EXPECT_EQ(chosen.ContactTexelHalvings, commandLine.Settings.ContactTexelHalvings);
   EXPECT_EQ(chosen.Directions, commandLine.Settings.Directions);
   EXPECT_EQ(chosen.RaysPerSide, commandLine.Settings.RaysPerSide);
+  // And by default the texels refined from the light on top of them (AdaptiveTexels.h): every
+  // surface at least as fine as the contact texels make it; off, the contact texels alone.
+  EXPECT_TRUE(filter->GetAdaptiveTexels());
+  ASSERT_EQ(chosen.SurfaceTexelLevels.size(), perHalving[0].size());
+  const std::vector<std::size_t> adaptiveTexels = texels();
+  for (std::size_t i = 0; i < adaptiveTexels.size(); ++i)
+  {
+    EXPECT_LE(chosen.SurfaceTexelLevels[i], 0) << "surface " << i;
+  }
+  filter->SetAdaptiveTexels(false);
+  filter->Update();
+  ASSERT_NE(vtkVirtualLightFieldCore::GetLightField(filter), nullptr);
+  EXPECT_TRUE(
+    vtkVirtualLightFieldCore::GetLightField(filter)->Settings().SurfaceTexelLevels.empty());
+  const std::vector<std::size_t> contactTexels = texels();
+  std::size_t finerThanContact = 0;
+  for (std::size_t i = 0; i < adaptiveTexels.size(); ++i)
+  {
+    EXPECT_GE(adaptiveTexels[i], contactTexels[i]) << "surface " << i;
+    finerThanContact += adaptiveTexels[i] > contactTexels[i] ? 1 : 0;
+  }
+  std::cout << "adaptive texels: " << finerThanContact
+            << " surfaces finer than the contact texels\n";
+  filter->SetAdaptiveTexels(true);
 
   // Outside [-1, 3]: an error, no field.
   for (const int bad : { -2, vlf::MaxContactTexelHalvings + 1 })
