@@ -33,8 +33,10 @@ void vtkIrradianceProbesTexture::Update(vtkOpenGLRenderWindow* renWin, vtkImageD
   vtkDataArray* values = probes->GetPointData()->GetScalars();
   vtkDataArray* share = probes->GetFieldData()->GetArray(GetVisibleShareName());
   vtkDataArray* shareSize = probes->GetFieldData()->GetArray(GetVisibleShareSizeName());
-  const vtkMTimeType time = std::max({ probes->GetMTime(), values ? values->GetMTime() : 0,
-    share ? share->GetMTime() : 0, shareSize ? shareSize->GetMTime() : 0 });
+  vtkDataArray* walls = probes->GetFieldData()->GetArray(GetWallShareName());
+  const vtkMTimeType time =
+    std::max({ probes->GetMTime(), values ? values->GetMTime() : 0, share ? share->GetMTime() : 0,
+      shareSize ? shareSize->GetMTime() : 0, walls ? walls->GetMTime() : 0 });
   if (probes == this->UploadedImage && values == this->Uploaded && time <= this->UploadTime)
   {
     if (!this->Valid)
@@ -139,7 +141,7 @@ void vtkIrradianceProbesTexture::Update(vtkOpenGLRenderWindow* renWin, vtkImageD
                   << " probes); the relief is drawn without them.");
     return;
   }
-  if (!this->UploadVisibleShare(renWin, share, shareSize))
+  if (!this->UploadVisibleShare(renWin, share, shareSize, walls))
   {
     return;
   }
@@ -151,7 +153,7 @@ void vtkIrradianceProbesTexture::Update(vtkOpenGLRenderWindow* renWin, vtkImageD
 
 //------------------------------------------------------------------------------
 bool vtkIrradianceProbesTexture::UploadVisibleShare(
-  vtkOpenGLRenderWindow* renWin, vtkDataArray* share, vtkDataArray* shareSize)
+  vtkOpenGLRenderWindow* renWin, vtkDataArray* share, vtkDataArray* shareSize, vtkDataArray* walls)
 {
   // Without a map: one texel of (1, 1, 1, 1), the relief unoccluded (the shader reads it all the
   // same). A map of pairs (V, S) gets the seen share Vs = V: the series at the point's own share.
@@ -160,6 +162,8 @@ bool vtkIrradianceProbesTexture::UploadVisibleShare(
   int size[2] = { 1, 1 };
   this->HasVisibleShare = false;
   this->HasLightShadow = false;
+  this->WallLevels = 0;
+  this->ShareRows = 1;
   if (share || shareSize)
   {
     const char* const layout =
@@ -183,12 +187,30 @@ bool vtkIrradianceProbesTexture::UploadVisibleShare(
     }
     size[0] = static_cast<int>(w);
     size[1] = static_cast<int>(h);
-    texels.assign(4 * static_cast<size_t>(size[0]) * size[1], 1.0f);
-    for (vtkIdType t = 0; t < share->GetNumberOfTuples(); ++t)
+    // The side walls' rows below the map's (4 walls x levels rows of W cells), when given whole.
+    int levels = 0;
+    if (walls)
     {
+      const vtkIdType wallRow = 4 * static_cast<vtkIdType>(size[0]);
+      if (walls->GetNumberOfComponents() != components || walls->GetNumberOfTuples() == 0 ||
+        walls->GetNumberOfTuples() % wallRow != 0 || walls->GetNumberOfTuples() / wallRow > 64)
+      {
+        vtkErrorMacro(<< "The relief's side-wall share holds " << walls->GetNumberOfTuples()
+                      << " tuples of " << walls->GetNumberOfComponents() << " values, not 4 x D x "
+                      << size[0] << " (D <= 64) of " << components << "." << layout);
+        return false;
+      }
+      levels = static_cast<int>(walls->GetNumberOfTuples() / wallRow);
+    }
+    const vtkIdType cells = share->GetNumberOfTuples();
+    texels.assign(4 * static_cast<size_t>(size[0]) * (size[1] + 4 * levels), 1.0f);
+    for (vtkIdType t = 0; t < cells + (levels > 0 ? walls->GetNumberOfTuples() : 0); ++t)
+    {
+      vtkDataArray* from = t < cells ? share : walls;
+      const vtkIdType tuple = t < cells ? t : t - cells;
       for (int c = 0; c < std::max(components, 3); ++c)
       {
-        const double value = share->GetComponent(t, c < components ? c : 0);
+        const double value = from->GetComponent(tuple, c < components ? c : 0);
         if (!(value >= 0.0 && value <= 1.0))
         {
           vtkErrorMacro(<< "The relief's visible share " << value << " at " << t
@@ -200,6 +222,9 @@ bool vtkIrradianceProbesTexture::UploadVisibleShare(
     }
     this->HasVisibleShare = true;
     this->HasLightShadow = components == 4;
+    this->WallLevels = levels;
+    this->ShareRows = size[1];
+    size[1] += 4 * levels;
   }
   if (!this->ShareTexture)
   {
@@ -217,6 +242,7 @@ bool vtkIrradianceProbesTexture::UploadVisibleShare(
                   << size[1] << "); the relief is drawn without the probes.");
     this->HasVisibleShare = false;
     this->HasLightShadow = false;
+    this->WallLevels = 0;
     return false;
   }
   return true;
@@ -242,6 +268,8 @@ void vtkIrradianceProbesTexture::SetUniforms(vtkShaderProgram* program)
   program->SetUniformi("mlIrradianceProbes", this->TextureObject->GetTextureUnit());
   program->SetUniformi("mlReliefVisibleShare", this->ShareTexture->GetTextureUnit());
   program->SetUniformi("mlReliefLightShadow", this->HasLightShadow ? 1 : 0);
+  program->SetUniformi("mlReliefWallLevels", this->WallLevels);
+  program->SetUniformf("mlReliefShareRows", static_cast<float>(this->ShareRows));
   const float probeGrid[2] = { static_cast<float>(this->GridSize[0]),
     static_cast<float>(this->GridSize[1]) };
   program->SetUniform2f("mlProbeGrid", probeGrid);
@@ -271,4 +299,5 @@ void vtkIrradianceProbesTexture::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "GridSize: " << this->GridSize[0] << " x " << this->GridSize[1] << "\n";
   os << indent << "HasVisibleShare: " << (this->HasVisibleShare ? "yes" : "no") << "\n";
   os << indent << "HasLightShadow: " << (this->HasLightShadow ? "yes" : "no") << "\n";
+  os << indent << "WallLevels: " << this->WallLevels << "\n";
 }

@@ -32,6 +32,12 @@
  *   optional fourth value per cell is the share of the renderer's light 0 (an area emitter)
  *   that the relief's own shadow lets through (ReliefEmitterShadowMap, the area's penumbra):
  *   the shader then multiplies that light by it instead of marching one hard shadow ray.
+ * - the side walls of a walled relief (ReliefWallShareMap): the field-data array
+ *   GetWallShareName(), as many values per cell as the visible share, 4 x D rows of W cells
+ *   (walls u = 0, u = 1, v = 0, v = 1, D rows each from the lip down; cell i at (i + 1/2) / W
+ *   along the wall, row l at (l + 1/2) / D of the wall's depth there), appended to the share
+ *   texture below its H rows. A view ray that meets a wall (mlSideWall) then reads the wall's
+ *   own values at its depth; without it the texel row beside the border.
  */
 
 #ifndef vtkIrradianceProbesTexture_h
@@ -80,6 +86,10 @@ public:
   /** The field-data arrays of the relief's visible share and its grid size (see above). */
   static const char* GetVisibleShareName() { return "ReliefVisibleShare"; }
   static const char* GetVisibleShareSizeName() { return "ReliefVisibleShareSize"; }
+  static const char* GetWallShareName() { return "ReliefWallShare"; }
+
+  /** The depth levels per side wall of the last upload's wall map; 0 without one. */
+  vtkGetMacro(WallLevels, int);
 
   ///@{
   /** Binds both textures and sets the shader's uniforms (after an Update that left probes). */
@@ -95,13 +105,15 @@ protected:
   ~vtkIrradianceProbesTexture() override;
 
   static constexpr int Blocks = 9; // seven of SH9 coefficients, two of light visibility
-  bool UploadVisibleShare(
-    vtkOpenGLRenderWindow* renWin, vtkDataArray* share, vtkDataArray* shareSize);
+  bool UploadVisibleShare(vtkOpenGLRenderWindow* renWin, vtkDataArray* share,
+    vtkDataArray* shareSize, vtkDataArray* walls);
 
   vtkSmartPointer<vtkTextureObject> TextureObject;
   vtkSmartPointer<vtkTextureObject> ShareTexture;
   bool HasVisibleShare = false;
   bool HasLightShadow = false;
+  int WallLevels = 0;
+  int ShareRows = 1; // the share texture's rows of the texture square (below them the walls')
   vtkDataArray* Uploaded = nullptr; // not referenced: only compared
   vtkImageData* UploadedImage = nullptr;
   vtkMTimeType UploadTime = 0;

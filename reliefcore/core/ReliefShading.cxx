@@ -183,6 +183,70 @@ void ForEachGridCell(
   }
 }
 
+// The share of each group's unshadowed direct irradiance from the emitter samples,
+// RadianceArea cos cos_e / r^2 (luminance), that the height field lets through at the relief
+// point hit = (u, v, d) of unit normal n (Visible, ShadeReliefRay's exact march); 1 where the group
+// does not light the point. `groups` values into out.
+void EmitterShadowAt(const HeightField& hf, const ReliefFrame& frame,
+  const std::vector<ReliefEmitterSample>& samples, const std::vector<int>& group, int groups,
+  const glm::dvec3& hit, const glm::dvec3& normal, float* out)
+{
+  const std::size_t count = static_cast<std::size_t>(groups);
+  const glm::dvec3 point = frame.Point(hit.x, hit.y, hit.z);
+  std::vector<double> all(count, 0.0), lit(count, 0.0);
+  for (std::size_t s = 0; s < samples.size(); ++s)
+  {
+    const int g = group[s];
+    if (g < 0 || g >= groups)
+    {
+      continue;
+    }
+    const ReliefEmitterSample& e = samples[s];
+    const glm::dvec3 toLight = e.Position - point;
+    const double r2 = glm::dot(toLight, toLight);
+    if (!(r2 > 0.0))
+    {
+      continue;
+    }
+    const glm::dvec3 l = toLight / std::sqrt(r2);
+    const double cosine = glm::dot(normal, l);
+    const double cosineEmitter = -glm::dot(e.Normal, l);
+    // As ShadeReliefRay: the light must face the point and be above the macro plane.
+    if (!(cosine > 0.0 && cosineEmitter > 0.0 && glm::dot(frame.Normal, l) > 0.0))
+    {
+      continue;
+    }
+    const double weight = cosine * cosineEmitter / r2 *
+      (0.2126 * e.RadianceArea.x + 0.7152 * e.RadianceArea.y + 0.0722 * e.RadianceArea.z);
+    all[static_cast<std::size_t>(g)] += weight;
+    if (Visible(hf, hit, frame.ToTexture(l), 1e-6))
+    {
+      lit[static_cast<std::size_t>(g)] += weight;
+    }
+  }
+  for (std::size_t g = 0; g < count; ++g)
+  {
+    out[g] = all[g] > 0.0 ? static_cast<float>(lit[g] / all[g]) : 1.0f;
+  }
+}
+
+// ShadeReliefRay's IndirectVisible: the share of the probes' radiance (luminance) along the
+// cosine-distributed directions around n at the relief point hit that leave the relief.
+double RadianceVisibleShare(const ReliefLighting& lighting, const HeightField& hf,
+  const ReliefFrame& frame, const glm::dvec3& hit, const glm::dvec3& n, int count)
+{
+  const NormalFrame local(n);
+  double all = 0.0, visible = 0.0;
+  for (const glm::dvec3& c : CosineDirections(count))
+  {
+    const glm::dvec3 w = local(c);
+    const glm::dvec3 l = ProbeRadiance(lighting, hit.x, hit.y, w);
+    const double weight = 0.2126 * l.x + 0.7152 * l.y + 0.0722 * l.z + 1e-12;
+    all += weight;
+    visible += LeavesRelief(hf, frame, hit, w) ? weight : 0.0;
+  }
+  return all > 0.0 ? visible / all : 1.0;
+}
 } // namespace
 
 double ReliefVisibleShare(const HeightField& hf, const ReliefFrame& frame, const glm::dvec3& hit,
@@ -360,47 +424,75 @@ std::vector<float> ReliefEmitterShadowMap(const HeightField& hf, const ReliefFra
   ForEachGridCell(width, height, rows, progress,
     [&](std::size_t i, std::size_t j, double u, double v)
     {
-      const double d = std::max(0.0, hf.DepthAt(u, v));
-      const glm::dvec3 point = frame.Point(u, v, d);
-      const glm::dvec3 normal = ReliefNormalAt(hf, frame, u, v);
-      std::vector<double> all(count, 0.0), lit(count, 0.0);
-      for (std::size_t s = 0; s < samples.size(); ++s)
-      {
-        const int g = group[s];
-        if (g < 0 || g >= groups)
-        {
-          continue;
-        }
-        const ReliefEmitterSample& e = samples[s];
-        const glm::dvec3 toLight = e.Position - point;
-        const double r2 = glm::dot(toLight, toLight);
-        if (!(r2 > 0.0))
-        {
-          continue;
-        }
-        const glm::dvec3 l = toLight / std::sqrt(r2);
-        const double cosine = glm::dot(normal, l);
-        const double cosineEmitter = -glm::dot(e.Normal, l);
-        // As ShadeReliefRay: the light must face the point and be above the macro plane.
-        if (!(cosine > 0.0 && cosineEmitter > 0.0 && glm::dot(frame.Normal, l) > 0.0))
-        {
-          continue;
-        }
-        const double weight = cosine * cosineEmitter / r2 *
-          (0.2126 * e.RadianceArea.x + 0.7152 * e.RadianceArea.y + 0.0722 * e.RadianceArea.z);
-        all[static_cast<std::size_t>(g)] += weight;
-        if (Visible(hf, glm::dvec3(u, v, d), frame.ToTexture(l), 1e-6))
-        {
-          lit[static_cast<std::size_t>(g)] += weight;
-        }
-      }
-      for (std::size_t g = 0; g < count; ++g)
-      {
-        shadow[(j * width + i) * count + g] =
-          all[g] > 0.0 ? static_cast<float>(lit[g] / all[g]) : 1.0f;
-      }
+      const glm::dvec3 hit(u, v, std::max(0.0, hf.DepthAt(u, v)));
+      EmitterShadowAt(hf, frame, samples, group, groups, hit, ReliefNormalAt(hf, frame, u, v),
+        &shadow[(j * width + i) * count]);
     });
   return shadow;
+}
+
+std::vector<float> ReliefWallShareMap(const HeightField& hf, const ReliefFrame& frame,
+  const std::vector<float>& share, int width, int height, int levels, int count,
+  const std::vector<ReliefEmitterSample>& samples, const ProgressCallback& progress, GridRows rows,
+  const ReliefLighting* probes)
+{
+  if (width < 1 || height < 1 || levels < 1 ||
+    share.size() != 2 * static_cast<std::size_t>(width) * height)
+  {
+    throw std::invalid_argument("ReliefWallShareMap: needs a grid, at least one level and the "
+                                "visible-share map's two values per cell of the grid");
+  }
+  if (rows.Count < 1 || rows.Index < 0 || rows.Index >= rows.Count)
+  {
+    throw std::invalid_argument("ReliefWallShareMap: the rows' index must lie in [0, count)");
+  }
+  const std::vector<int> group(samples.size(), 0);
+  const bool weighted = probes && !probes->Probes.empty();
+  const int wallRows = 4 * levels;
+  std::vector<float> walls(
+    4 * static_cast<std::size_t>(width) * wallRows, rows.Count > 1 ? 0.0f : 1.0f);
+  ForEachGridCell(width, wallRows, rows, progress,
+    [&](std::size_t i, std::size_t r, double, double)
+    {
+      const int wall = static_cast<int>(r) / levels;
+      const int level = static_cast<int>(r) % levels;
+      const double s = (i + 0.5) / width;
+      // The border's point and the wall's normal in (u, v), pointing back into the rectangle
+      // (RayHit::wall, the relief mapper's mlSideWall).
+      const glm::dvec2 uv = wall == 0 ? glm::dvec2(0.0, s)
+        : wall == 1                   ? glm::dvec2(1.0, s)
+        : wall == 2                   ? glm::dvec2(s, 0.0)
+                                      : glm::dvec2(s, 1.0);
+      const glm::dvec2 inward = wall == 0 ? glm::dvec2(1.0, 0.0)
+        : wall == 1                       ? glm::dvec2(-1.0, 0.0)
+        : wall == 2                       ? glm::dvec2(0.0, 1.0)
+                                          : glm::dvec2(0.0, -1.0);
+      float* cell = &walls[4 * (r * width + i)];
+      const double bottom = hf.DepthAt(uv.x, uv.y);
+      if (hf.EdgeRule() != HeightField::Edge::Walled || !(bottom > 0.0))
+      {
+        std::fill(cell, cell + 4, 1.0f);
+        return;
+      }
+      const glm::dvec3 hit(uv.x, uv.y, bottom * (level + 0.5) / levels);
+      const glm::dvec3 normal = ReliefWallNormal(frame, inward);
+      double above = 1.0;
+      const double visible = ReliefVisibleShare(hf, frame, hit, normal, count, &above);
+      cell[0] = static_cast<float>(visible);
+      cell[1] = static_cast<float>(above > 0.0 ? std::min(1.0, visible / above) : 1.0);
+      if (weighted)
+      {
+        cell[1] = static_cast<float>(RadianceVisibleShare(*probes, hf, frame, hit, normal, count));
+      }
+      cell[2] =
+        static_cast<float>(ReliefSeenShare(hf, frame, hit, normal, count, &share, width, height));
+      cell[3] = 1.0f;
+      if (!samples.empty())
+      {
+        EmitterShadowAt(hf, frame, samples, group, 1, hit, normal, &cell[3]);
+      }
+    });
+  return walls;
 }
 
 glm::dvec3 ProbeRadiance(const ReliefLighting& lighting, double u, double v, const glm::dvec3& w)

@@ -233,6 +233,32 @@ MESOLIGHTRELIEFCORE_EXPORT std::vector<float> ReliefEmitterShadowMap(const Heigh
   const std::vector<int>& group, int groups, int width, int height,
   const ProgressCallback& progress = {}, GridRows rows = {});
 
+/**
+ * The side walls of a walled relief (HeightField::Edge::Walled) for the relief mapper: what
+ * ReliefVisibleShareMap, ReliefSeenShareMap and ReliefEmitterShadowMap hold for the height field's
+ * points, at points of the four walls, around the wall's own normal (ReliefWallNormal). A wall's
+ * visible share runs from the room's at its lip to a slot bottom's at its foot, so the border
+ * texel's share beside it (what the mapper read before) is right nowhere on it. Four values per
+ * cell: V, V over the share above the macro plane, Vs (ReliefSeenShare with `share`, the
+ * visible-share map of width x height pairs, walls met marched) and the share of the emitter
+ * samples' direct irradiance the relief lets through (as ReliefEmitterShadowMap's one group; 1
+ * without samples). The grid: `width` cells along every wall (cell i at s = (i + 1/2) / width
+ * along it) and `levels` rows per wall, row r = wall levels + l (walls u = 0, u = 1, v = 0,
+ * v = 1), level l at depth (l + 1/2) / levels of the border's depth there (DepthAt on the
+ * border); where the border is at the surface (no wall) the cell is all 1. Row-major, r slowest.
+ * With `probes` (ReliefLighting's SH9 probes) the second value is instead ShadeReliefRay's
+ * radiance-weighted share (the probes' radiance along the directions that leave the relief over
+ * that along all of them, at the wall's point): half of a wall's hemisphere lies behind the macro
+ * plane, where SH9 rings (a probe's light cut off at the plane is not zero behind it in 9
+ * coefficients), so V over the share above the plane overstates the wall's probe light.
+ * Parallel; progress, stop and `rows` (of the 4 levels rows) as ReliefVisibleShareMap.
+ */
+MESOLIGHTRELIEFCORE_EXPORT std::vector<float> ReliefWallShareMap(const HeightField& hf,
+  const ReliefFrame& frame, const std::vector<float>& share, int width, int height, int levels,
+  int count, const std::vector<ReliefEmitterSample>& samples = {},
+  const ProgressCallback& progress = {}, GridRows rows = {},
+  const ReliefLighting* probes = nullptr);
+
 } // namespace mesolight
 
 #endif

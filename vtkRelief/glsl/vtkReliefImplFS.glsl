@@ -72,6 +72,16 @@
       float t = mlTraceView(mlHit, span);
       mlWall = mlSideWall(mlHit, span, t);
       mlHit = mlHit + t * span;
+#ifdef ML_IRRADIANCE_PROBES
+      if (mlWall != vec2(0.0))
+      {
+        // The side wall's own share at the hit's depth down the wall (mlReliefShare).
+        float mlWallFoot =
+          textureLod(mlReliefTexture, clamp(mlHit.xy, 0.0, 1.0), 0.0).ML_DEPTH_CHANNEL;
+        mlShareWall = mlWall;
+        mlShareWallDepth = mlWallFoot > 0.0 ? clamp(mlHit.z / mlWallFoot, 0.0, 1.0) : 0.0;
+      }
+#endif
       mlHitPos = mlPos + dir * (mlHit.z / q.z);
 #ifdef ML_CURVED
       mlHitPlane = mlHit;

@@ -27,6 +27,16 @@ uniform sampler2D mlReliefVisibleShare;
 // 1 when the map's fourth channel holds the share of light 0 (an area emitter) that the relief's
 // own shadow lets through (ReliefEmitterShadowMap), else 0.
 uniform int mlReliefLightShadow;
+// The side walls of a walled relief (ReliefWallShareMap): 4 blocks of mlReliefWallLevels rows
+// below the map's mlReliefShareRows rows (walls u = 0, u = 1, v = 0, v = 1, from the lip down);
+// 0 levels without. A wall's share runs from the room's at its lip to a slot bottom's at its
+// foot: the texel row beside the border (a slot bottom's) is right nowhere on it.
+uniform int mlReliefWallLevels;
+uniform float mlReliefShareRows;
+// Where the view ray met a side wall (mlSideWall): the wall's normal in (u, v) and the hit's
+// depth over the wall's depth there; (0, 0) on the height field.
+vec2 mlShareWall = vec2(0.0);
+float mlShareWallDepth = 0.0;
 
 #define ML_PROBE_BLOCKS 9.0
 
@@ -53,6 +63,29 @@ vec3 mlShIrradiance(vec4 c0, vec4 c1, vec4 c2, vec4 c3, vec4 c4, vec4 c5, vec4 c
   return max(irradiance, vec3(0.0));
 }
 
+// The visible-share map's four values at texture coordinates uv (bilinear between its cells,
+// clamped inside the map's rows), or the side wall's at its depth where the view ray met one.
+vec4 mlReliefShare(vec2 uv)
+{
+  if (mlReliefWallLevels <= 0)
+  {
+    return textureLod(mlReliefVisibleShare, uv, 0.0);
+  }
+  float levels = float(mlReliefWallLevels);
+  float rows = mlReliefShareRows + 4.0 * levels;
+  if (mlShareWall != vec2(0.0))
+  {
+    float wall = mlShareWall.x > 0.0 ? 0.0
+      : (mlShareWall.x < 0.0 ? 1.0 : (mlShareWall.y > 0.0 ? 2.0 : 3.0));
+    float along = mlShareWall.x != 0.0 ? uv.y : uv.x;
+    float level = clamp(mlShareWallDepth * levels, 0.5, levels - 0.5);
+    return textureLod(mlReliefVisibleShare,
+      vec2(along, (mlReliefShareRows + wall * levels + level) / rows), 0.0);
+  }
+  float row = clamp(uv.y * mlReliefShareRows, 0.5, mlReliefShareRows - 0.5);
+  return textureLod(mlReliefVisibleShare, vec2(uv.x, row / rows), 0.0);
+}
+
 // The scene's visibility of the renderer's light `light` at texture coordinates uv, from the
 // probes (bilinear); 1 for lights 8 and beyond.
 float mlEmitterVisibility(vec2 uv, int light)
@@ -73,16 +106,18 @@ float mlEmitterVisibility(vec2 uv, int light)
 // it (the light's shadow is then marched). The map averages the shadow over the emitter's area,
 // as the CPU renderer's emitter samples do: a single ray to the light's centre gives a hard
 // shadow where the area light casts a penumbra as wide as a slot's bottom. The map holds the
-// height field's points only: a hit on a walled relief's side wall (the view ray met the
-// texture's border below the surface, mlSideWall, and stopped on it) marches its shadow.
+// height field's points, and the side walls' where it has them (mlReliefShare): without them a
+// hit on a walled relief's side wall (the view ray met the texture's border below the surface,
+// mlSideWall, and stopped on it) marches its shadow.
 float mlEmitterSelfShadow(vec2 uv, int light)
 {
   bool onBorder = any(lessThanEqual(uv, vec2(1e-5))) || any(greaterThanEqual(uv, vec2(1.0 - 1e-5)));
-  if (light != 0 || mlReliefLightShadow == 0 || (onBorder && mlWalledRelief()))
+  if (light != 0 || mlReliefLightShadow == 0 ||
+    (onBorder && mlWalledRelief() && (mlShareWall == vec2(0.0) || mlReliefWallLevels <= 0)))
   {
     return -1.0;
   }
-  return clamp(textureLod(mlReliefVisibleShare, uv, 0.0).a, 0.0, 1.0);
+  return clamp(mlReliefShare(uv).a, 0.0, 1.0);
 }
 
 // The renderer's lights' irradiance on the flat wall (unit view normal macroVC) at posVC, with
@@ -118,7 +153,7 @@ vec3 mlProbeIndirect(vec2 uv, vec3 n, vec3 m, vec3 albedo, vec3 flatLights)
   vec4 c4 = textureLod(mlIrradianceProbes, st + vec2(0.0, 4.0 * block), 0.0);
   vec4 c5 = textureLod(mlIrradianceProbes, st + vec2(0.0, 5.0 * block), 0.0);
   vec4 c6 = textureLod(mlIrradianceProbes, st + vec2(0.0, 6.0 * block), 0.0);
-  vec3 share = clamp(textureLod(mlReliefVisibleShare, uv, 0.0).rgb, 0.0, 1.0);
+  vec3 share = clamp(mlReliefShare(uv).rgb, 0.0, 1.0);
   float visible = share.r;
   vec3 irradiance = share.g * mlShIrradiance(c0, c1, c2, c3, c4, c5, c6, n);
   if (visible >= 1.0)

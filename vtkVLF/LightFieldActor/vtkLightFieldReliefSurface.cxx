@@ -75,11 +75,13 @@ struct vtkLightFieldReliefSurface::vtkInternals
   vtkSmartPointer<vtkImageData> ReliefTexture;
   // The last visible-share map and what it was made from.
   std::vector<float> Share;
+  std::vector<float> WallShare; // the side walls' cells of a walled relief (ReliefWallShareMap)
   int ShareSize[2] = { 0, 0 };
   // The texture's texels (an attached texture comes as a new image sharing the same array).
   vtkDataArray* ShareTexture = nullptr; // compared only
   vtkMTimeType ShareTextureTime = 0;
-  double ShareKey[18] = {}; // frame (12), depth scale, walled, light 0's samples (count, sum)
+  double ShareKey[19] = {}; // frame (12), depth scale, walled, light 0's samples (count, sum),
+                            // the probes' sum (the walls' radiance weighting)
   // The emitter samples the renderer's light 0 stands for (EmitterSamplesOfLight), whose
   // shadow by the relief the map holds as a fourth value; empty: not in the map (the relief
   // mapper marches one shadow ray to the light).
@@ -185,7 +187,38 @@ bool vtkLightFieldReliefSurface::AddVisibleShare(
   {
     return true;
   }
-  double key[18] = {};
+  // The probes (SH9 of pixel (9 i + k, j)), which weight the side walls' share of their light.
+  mesolight::ReliefLighting probes;
+  double probeSum = 0.0;
+  if (vtkDataArray* coefficients = probesOutput->GetPointData()->GetScalars())
+  {
+    int probeDims[3] = { 0, 0, 0 };
+    probesOutput->GetDimensions(probeDims);
+    if (probeDims[0] % 9 == 0 && probeDims[0] > 0 && coefficients->GetNumberOfComponents() >= 3 &&
+      coefficients->GetNumberOfTuples() == static_cast<vtkIdType>(probeDims[0]) * probeDims[1])
+    {
+      probes.ProbesU = probeDims[0] / 9;
+      probes.ProbesV = probeDims[1];
+      probes.Probes.resize(static_cast<std::size_t>(probes.ProbesU) * probes.ProbesV);
+      for (int j = 0; j < probes.ProbesV; ++j)
+      {
+        for (int i = 0; i < probes.ProbesU; ++i)
+        {
+          for (int k = 0; k < 9; ++k)
+          {
+            for (int c = 0; c < 3; ++c)
+            {
+              const double value =
+                coefficients->GetComponent(static_cast<vtkIdType>(j) * probeDims[0] + 9 * i + k, c);
+              probes.Probes[static_cast<std::size_t>(j) * probes.ProbesU + i].L[k][c] = value;
+              probeSum += value * (1.0 + 0.01 * k);
+            }
+          }
+        }
+      }
+    }
+  }
+  double key[19] = {};
   std::copy(frame, frame + 12, key);
   key[12] = this->ReliefDepthScale;
   key[13] = this->WalledRelief ? 1.0 : 0.0;
@@ -196,6 +229,7 @@ bool vtkLightFieldReliefSurface::AddVisibleShare(
     key[16] += sample.Position.y;
     key[17] += sample.Position.z;
   }
+  key[18] = probeSum;
   vtkDataArray* texels = texture->GetPointData()->GetScalars();
   const vtkMTimeType texelsTime = texels ? texels->GetMTime() : texture->GetMTime();
   int stale = (texels != in.ShareTexture || texelsTime != in.ShareTextureTime ||
@@ -211,9 +245,10 @@ bool vtkLightFieldReliefSurface::AddVisibleShare(
   if (stale)
   {
     in.Share.clear();
+    in.WallShare.clear();
     in.ShareTexture = texels;
     in.ShareTextureTime = texelsTime;
-    std::copy(key, key + 18, in.ShareKey);
+    std::copy(key, key + 19, in.ShareKey);
     std::unique_ptr<vlf::ControllerReducer> reducer;
     if (split)
     {
@@ -245,7 +280,7 @@ bool vtkLightFieldReliefSurface::AddVisibleShare(
       in.Share = vlf::ReliefVisibleShareGrid(*height,
         vlf::ReliefFrameOf(surface, this->ReliefDepthScale), in.ShareSize[0], in.ShareSize[1],
         mesolight::AlgorithmProgress(this, this->MapProgress(), 1.0), in.LightSamples,
-        reducer.get());
+        reducer.get(), &in.WallShare, &probes);
       ++this->VisibleShareComputations;
       this->VisibleShareRanks = reducer ? reducer->Size() : 1;
       this->VisibleShareSeconds =
@@ -281,6 +316,17 @@ bool vtkLightFieldReliefSurface::AddVisibleShare(
   size->InsertNextValue(in.ShareSize[1]);
   probesOutput->GetFieldData()->AddArray(share);
   probesOutput->GetFieldData()->AddArray(size);
+  if (!in.WallShare.empty())
+  {
+    // The side walls' cells, as many values each (vtkIrradianceProbesTexture::GetWallShareName).
+    vtkNew<vtkFloatArray> walls;
+    walls->SetName(vtkIrradianceProbesTexture::GetWallShareName());
+    walls->SetNumberOfComponents(share->GetNumberOfComponents());
+    walls->SetNumberOfTuples(
+      static_cast<vtkIdType>(in.WallShare.size() / share->GetNumberOfComponents()));
+    std::copy(in.WallShare.begin(), in.WallShare.end(), walls->GetPointer(0));
+    probesOutput->GetFieldData()->AddArray(walls);
+  }
   return true;
 }
 

@@ -867,3 +867,101 @@ TEST(ReliefShading, InterReflectedFormula)
   EXPECT_EQ(
     mesolight::ReliefInterReflected(ReliefInterReflection::MultiBounce, 0.6, 0.6, a, e), multi);
 }
+
+// The side walls' map (ReliefWallShareMap, the relief mapper's wall rows) against the analytic
+// view factor: a flat-bottomed slot 16 of 256 texels wide and twice as deep along the walled top
+// edge (v = 1). In the cross-section a point of the wall y below the lip, facing -v, sees the room
+// through the mouth, from the lip straight above (sin 1) to the far edge (sin y / sqrt(s^2 +
+// y^2)): V = (1 - y / sqrt(s^2 + y^2)) / 2 (crossed strings), 0.5 at the lip, 0.05 at the foot.
+// The negative case is what the mapper read on a wall before: the border texel row's share (the
+// slot bottom's, the same all down the wall). Also: the map split by rows between processes sums
+// to the whole map bit for bit (GridRows), and a wall where the border is at the surface is 1.
+TEST(ReliefShading, WallShareMapIsTheSlotWallsViewFactor)
+{
+  const int n = 256, slot = 16;
+  std::vector<float> depth;
+  for (int j = 0; j < n; ++j)
+  {
+    for (int i = 0; i < n; ++i)
+    {
+      depth.push_back(j >= n - slot ? 1.0f : 0.0f);
+    }
+  }
+  const HeightField hf(n, n, depth, HeightField::Edge::Walled);
+  ReliefFrame frame = Square();
+  frame.DepthScale = 2.0 * slot / n; // world depth 0.125: twice the slot's width
+  const double w = frame.WorldDepth();
+  // The mouth's width: the step's ramp runs between the texel centres either side of it, and the
+  // wall sees its top.
+  const double s = (slot + 0.5) / n;
+  const int count = 256, levels = 8, width = 64;
+  const std::vector<float> share = mesolight::ReliefVisibleShareMap(hf, frame, width, n, count);
+  const std::vector<float> walls =
+    mesolight::ReliefWallShareMap(hf, frame, share, width, n, levels, count);
+  ASSERT_EQ(walls.size(), static_cast<std::size_t>(4 * width * 4 * levels));
+  const auto cell = [&](int wall, int level, int i)
+  { return &walls[4 * ((static_cast<std::size_t>(wall) * levels + level) * width + i)]; };
+  double sumError = 0.0, sumBorderError = 0.0, worst = 0.0;
+  int cells = 0;
+  for (int i = 0; i < width; ++i)
+  {
+    const double u = (i + 0.5) / width;
+    if (std::abs(u - 0.5) > 0.1)
+    {
+      continue; // away from the walls at u = 0 and 1, where the slot is not infinitely long
+    }
+    const float border = share[2 * (static_cast<std::size_t>(n - 1) * width + i)];
+    for (int level = 0; level < levels; ++level)
+    {
+      const double y = w * (level + 0.5) / levels;
+      const double analytic = 0.5 * (1.0 - y / std::sqrt(s * s + y * y));
+      const float* v = cell(3, level, i); // the wall at v = 1
+      const double error = std::abs(v[0] - analytic);
+      EXPECT_NEAR(v[1], std::min(1.0, v[0] / 0.5), 0.05) << "half its hemisphere is behind";
+      EXPECT_EQ(v[3], 1.0f) << "no emitter samples: unshadowed";
+      sumError += error;
+      worst = std::max(worst, error);
+      sumBorderError += std::abs(border - analytic);
+      ++cells;
+    }
+  }
+  ASSERT_GT(cells, 40);
+  std::cout << "side wall of a slot twice as deep as wide, " << cells
+            << " cells: mean |V - view factor| " << sumError / cells << ", worst " << worst
+            << "; the border texel's share (negative) " << sumBorderError / cells << "\n";
+  EXPECT_LT(sumError / cells, 0.015);
+  EXPECT_LT(worst, 0.04);
+  EXPECT_GT(sumBorderError / cells, 5.0 * sumError / cells);
+  // The wall at u = 0 beside the flat surface (depth 0 at its border): no wall, all 1.
+  EXPECT_EQ(cell(0, 2, width / 4)[0], 1.0f);
+  EXPECT_EQ(cell(2, 5, width / 2)[2], 1.0f);
+
+  // Split by rows (GridRows) over 2 and 3 processes: the sum is the whole map; without one
+  // process's rows (the negative case) it is not.
+  const int few = 32; // directions: the split is what is checked here
+  const std::vector<float> fewShare = mesolight::ReliefVisibleShareMap(hf, frame, 8, 16, few);
+  const std::vector<float> whole =
+    mesolight::ReliefWallShareMap(hf, frame, fewShare, 8, 16, 3, few);
+  for (int processes = 2; processes <= 3; ++processes)
+  {
+    std::vector<float> sum(whole.size(), 0.0f), withoutLast;
+    for (int p = 0; p < processes; ++p)
+    {
+      if (p == processes - 1)
+      {
+        withoutLast = sum;
+      }
+      const std::vector<float> part = mesolight::ReliefWallShareMap(
+        hf, frame, fewShare, 8, 16, 3, few, {}, {}, mesolight::GridRows{ p, processes });
+      ASSERT_EQ(part.size(), whole.size());
+      for (std::size_t k = 0; k < part.size(); ++k)
+      {
+        sum[k] += part[k];
+      }
+    }
+    EXPECT_EQ(sum, whole) << processes << " processes";
+    EXPECT_NE(withoutLast, whole);
+  }
+  EXPECT_THROW(
+    mesolight::ReliefWallShareMap(hf, frame, fewShare, 9, 16, 3, few), std::invalid_argument);
+}

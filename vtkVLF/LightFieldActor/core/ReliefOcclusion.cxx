@@ -163,7 +163,8 @@ ReliefFrame ReliefFrameOf(const ReliefSurface& surface, double depthScale)
 
 std::vector<float> ReliefVisibleShareGrid(const HeightField& field, const ReliefFrame& frame,
   int& gridWidth, int& gridHeight, const ProgressCallback& progress,
-  const std::vector<ReliefEmitterSample>& lightSamples, Reducer* reducer)
+  const std::vector<ReliefEmitterSample>& lightSamples, Reducer* reducer, std::vector<float>* walls,
+  const ReliefLighting* probes)
 {
   gridWidth = std::min(field.Width(), MaxVisibleShareSide);
   gridHeight = std::min(field.Height(), MaxVisibleShareSide);
@@ -243,6 +244,25 @@ std::vector<float> ReliefVisibleShareGrid(const HeightField& field, const Relief
       });
   }
   const std::size_t components = light ? 4 : 3;
+  if (walls)
+  {
+    walls->clear();
+    if (field.EdgeRule() == HeightField::Edge::Walled)
+    {
+      // A small pass (4 x WallShareLevels rows of the grid's width), after the others.
+      const std::vector<float> wallCells = pass(
+        [&]()
+        {
+          return ReliefWallShareMap(field, frame, share, gridWidth, gridHeight, WallShareLevels,
+            count, lightSamples, SubProgress(watched, 1.0, 1.0), rows, probes);
+        });
+      walls->resize(components * (wallCells.size() / 4));
+      for (std::size_t c = 0; c < wallCells.size() / 4; ++c)
+      {
+        std::copy(&wallCells[4 * c], &wallCells[4 * c] + components, &(*walls)[components * c]);
+      }
+    }
+  }
   std::vector<float> cells(components * seen.size());
   for (std::size_t c = 0; c < seen.size(); ++c)
   {

@@ -70,9 +70,18 @@ ReliefFrame ReliefFrameOf(const ReliefSurface& surface, double depthScale);
 // rank the whole map, the one-rank map bit for bit (the seen shares read the whole visible-share
 // map, so one sum per pass: 8, 4 and, with light samples, 4 bytes a cell). A failure or stop on
 // one rank is agreed (Agree): every rank throws, AbortedError where it was a stop.
+// With `walls` on a walled height field (HeightField::Edge::Walled) the side walls' map too
+// (ReliefWallShareMap, WallShareLevels levels, split and summed as the rest; as many values per
+// cell as the grid's), else `walls` is left empty: vtkIrradianceProbesTexture's wall array.
+// With `probes` the walls' second value is weighted by the probes' radiance (ReliefWallShareMap).
 std::vector<float> ReliefVisibleShareGrid(const HeightField& field, const ReliefFrame& frame,
   int& gridWidth, int& gridHeight, const ProgressCallback& progress = {},
-  const std::vector<ReliefEmitterSample>& lightSamples = {}, Reducer* reducer = nullptr);
+  const std::vector<ReliefEmitterSample>& lightSamples = {}, Reducer* reducer = nullptr,
+  std::vector<float>* walls = nullptr, const ReliefLighting* probes = nullptr);
+
+// The depth levels per side wall of ReliefVisibleShareGrid's wall map: a wall runs from the
+// room's share at its lip to a slot bottom's at its foot.
+constexpr int WallShareLevels = 8;
 
 } // namespace vlf
 } // namespace mesolight

@@ -339,10 +339,15 @@ int ShareMap(vtkMultiProcessController* controller)
     light.push_back(sample);
   }
   int sw = 0, sh = 0, width = 0, height = 0;
-  const std::vector<float> serial = vlf::ReliefVisibleShareGrid(relief, frame, sw, sh, {}, light);
+  // With the side walls' map (the grooves end at the walled borders v = 0 and 1), split too.
+  std::vector<float> serialWalls, splitWalls;
+  const std::vector<float> serial =
+    vlf::ReliefVisibleShareGrid(relief, frame, sw, sh, {}, light, nullptr, &serialWalls);
   const std::vector<float> split =
-    vlf::ReliefVisibleShareGrid(relief, frame, width, height, {}, light, &reducer);
+    vlf::ReliefVisibleShareGrid(relief, frame, width, height, {}, light, &reducer, &splitWalls);
   Check(width == sw && height == sh && split.size() == serial.size(), "the same grid");
+  Check(!serialWalls.empty() && splitWalls == serialWalls,
+    "the split side walls' map equals the one-process map bit for bit");
   const float lowest = *std::min_element(serial.begin(), serial.end());
   std::size_t differing = 0;
   for (std::size_t k = 0; k < std::min(split.size(), serial.size()); ++k)
@@ -357,8 +362,11 @@ int ShareMap(vtkMultiProcessController* controller)
   if (ranks > 1)
   {
     NotCombining alone(reducer);
+    std::vector<float> ownWalls;
     const std::vector<float> own =
-      vlf::ReliefVisibleShareGrid(relief, frame, width, height, {}, light, &alone);
+      vlf::ReliefVisibleShareGrid(relief, frame, width, height, {}, light, &alone, &ownWalls);
+    Check(ownWalls.size() == serialWalls.size() && ownWalls != serialWalls,
+      "a rank's rows of the side walls alone differ");
     std::size_t zero = 0;
     for (std::size_t k = 0; k < own.size(); ++k)
     {
