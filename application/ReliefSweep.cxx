@@ -466,10 +466,13 @@ bool RunReliefSweep(
         std::vector<ReliefSweepStep> steps = ReliefSweepStepsFor(m);
         if (isDefault)
         {
+          // Labelled as the method's own rows are (max-mipmap: "iter N").
+          const std::string count = m == vtkReliefProperty::MaximumMipmap
+            ? "iter " + std::to_string(defaults->GetLinearSteps())
+            : std::to_string(defaults->GetLinearSteps()) + "+" +
+              std::to_string(defaults->GetRefinementSteps());
           steps = { { defaults->GetLinearSteps(), defaults->GetRefinementSteps(),
-            std::string(vtkReliefProperty::GetMethodName(m)) + " " +
-              std::to_string(defaults->GetLinearSteps()) + "+" +
-              std::to_string(defaults->GetRefinementSteps()) } };
+            std::string(vtkReliefProperty::GetMethodName(m)) + " " + count } };
         }
         else if (!settings.Steps.empty() && UsesSearchSteps(m))
         {

@@ -42,11 +42,12 @@ void AddSceneOptions(CommandLine& cl)
   cl.AddValue("--depth-scale", "K", "relief depth as a fraction of the wall width", "0.04");
   cl.AddValue("--method", "NAME",
     "texture, bump, parallax, parallax-limit, parallax-slope, iterative-parallax, binary, secant, "
-    "linear (steep), pom, relief, interval, relaxed-cone, relaxed-cone-interval, cone, max-mipmap",
-    "relief");
+    "linear (steep), pom, relief, interval, relaxed-cone, relaxed-cone-interval, cone, max-mipmap "
+    "(the mapper's default: exact)",
+    "max-mipmap");
   cl.AddValue("--linear-steps", "N",
     "linear search steps (cone steps; iterations for iterative parallax and max-mipmap, "
-    "which defaults to 128)",
+    "which defaults to 64, the mapper's default)",
     "10");
   cl.AddValue("--refinement-steps", "N", "binary / interval / secant refinement steps", "8");
   cl.AddFlag("--adaptive-steps", "fewer linear steps head-on, --linear-steps at grazing angles");
@@ -115,7 +116,8 @@ bool ReadSceneOptions(const CommandLine& cl, ReliefSceneOptions& o, std::string&
   }
   if (!cl.Has("--linear-steps") && o.Method == "max-mipmap")
   {
-    o.LinearSteps = 128; // an iteration budget for the pyramid traversal, not linear steps
+    // An iteration budget for the pyramid traversal, not linear steps: the mapper's default.
+    o.LinearSteps = vtkSmartPointer<vtkReliefProperty>::New()->GetLinearSteps();
   }
   return cl.GetSize("--size", 16, 8192, o.Width, o.Height, error);
 }

@@ -4,20 +4,21 @@
  * @brief   The min-depth (maximum-mipmap) pyramid of a relief texture on the GPU, which the
  *          MaximumMipmap method traverses.
  *
- * Level 0 has one texel per cell between the relief texture's texel centres holding the cell's
- * four corner depths (RGBA), so one fetch gives the traversal both the cell's bound and its
- * bilinear patch; a cell of a coarser level holds the minimum depths (the highest surface) of
- * its 2 x 2 children, one per channel, so one fetch bounds the four cells a traversal may
- * descend into (mesolight::ComputeMinDepthPyramid,
+ * The traversal reads a cell of level 0 (one per cell between the relief texture's texel
+ * centres) as its four corner depths straight from the depth texture, with one gather, and
+ * stores no bound for levels 1 to FirstLevel - 1; from FirstLevel up a cell holds the minimum
+ * depths (the highest surface) of its 2 x 2 children, one per channel, so one fetch bounds the
+ * four cells a traversal may descend into (mesolight::ChildMinimaFromLevel,
  * filters/ReliefTextures/core/MinDepthPyramid.h). Level sizes halve rounding down, a complete
- * OpenGL mipmap, so all levels are mip levels of one RGBA float texture (uploaded by hand:
- * OpenGL would average, not take minima). 16 bytes per cell: 5.6 MB for a 512^2 map.
+ * OpenGL mipmap, so these levels are the mip levels of one RGBA texture (uploaded by hand:
+ * OpenGL would average, not take minima); its mip level m is pyramid level FirstLevel + m.
  *
- * UploadCompact (the relief texture cache's compact storage) stores the same levels in 16 bits
- * (GL_RGBA16): level 0 the 16-bit depth texels at the cells' corners, coarser levels the minima
- * of each cell's 2 x 2 children as the depth texture holds them (exact): 2.8 MB for a 512^2 map.
- * (Reading level 0's corners from the depth texture instead, 0.7 MB, took four fetches per
- * level-0 cell and made the traversal 1.6-2x slower on llvmpipe: docs/relief-methods.md.)
+ * Upload (float storage) keeps float minima (GL_RGBA32F); UploadCompact (the relief texture
+ * cache's compact storage, the default) rounds them down to 8 bits (GL_RGBA8), which still
+ * bound the surface from above, so the traversal stays exact: 1/12 byte per texel at
+ * FirstLevel 3, 22 KB for a 512^2 map. (Before: level 0's corners and every level in RGBA16,
+ * 10.67 bytes per texel, 2.8 MB; the corners from the depth texture with four fetches had made
+ * the traversal 1.6-2x slower: docs/relief-methods.md.)
  */
 
 #ifndef vtkMinDepthPyramidTexture_h
@@ -28,7 +29,6 @@
 #include "vtkSmartPointer.h" // for TextureObject
 
 #include <cstdint> // for std::uint16_t
-#include <utility> // for std::pair
 #include <vector>  // for LevelSizes
 
 class vtkOpenGLRenderWindow;
@@ -62,7 +62,7 @@ public:
   /** Marks the pyramid as not built (its relief texture changed). */
   void Reset() { this->NumberOfLevels = 0; }
 
-  /** Number of levels uploaded; 0 until Upload succeeds. */
+  /** Pyramid levels (FirstLevel plus those uploaded); 0 until Upload succeeds. */
   vtkGetMacro(NumberOfLevels, int);
 
   /**
@@ -71,7 +71,13 @@ public:
    */
   vtkGetMacro(MinimumDepth, double);
 
-  /** Cells per level, (width, height) pairs from level 0 on. */
+  /**
+   * The first level stored: levels 1 to FirstLevel - 1 hold no bounds (the traversal walks
+   * their level-0 cells), level 0 is the depth texture's texels.
+   */
+  static constexpr int FirstLevel = 3;
+
+  /** Cells per stored level, (width, height) pairs from FirstLevel on. */
   const std::vector<int>& GetLevelSizes() const { return this->LevelSizes; }
 
   /** The texture; null before the first Upload. */
@@ -84,12 +90,12 @@ protected:
   ~vtkMinDepthPyramidTexture() override;
 
   /**
-   * Creates the texture (internalFormat: GL_RGBA32F with float data, GL_RGBA16 with 16-bit
-   * data) and uploads levels[l] (RGBA, sizes[l] cells) as its mip level l. False (with an
-   * error) if it cannot.
+   * Creates the texture (internalFormat GL_RGBA32F with type GL_FLOAT, or GL_RGBA8 with
+   * GL_UNSIGNED_BYTE) and uploads levels[l] (RGBA, sizes[2l] x sizes[2l + 1] cells) as its mip
+   * level l. False (with an error) if it cannot.
    */
-  bool UploadLevels(vtkOpenGLRenderWindow* renWin, unsigned int internalFormat, bool sixteenBit,
-    const std::vector<const void*>& levels, const std::vector<std::pair<int, int>>& sizes);
+  bool UploadLevels(vtkOpenGLRenderWindow* renWin, unsigned int internalFormat, unsigned int type,
+    const std::vector<const void*>& levels, const std::vector<int>& sizes);
 
   vtkSmartPointer<vtkTextureObject> TextureObject;
   int NumberOfLevels = 0;

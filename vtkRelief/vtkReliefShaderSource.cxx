@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkReliefShaderSource.h"
 
+#include "vtkMinDepthPyramidTexture.h"
 #include "vtkObjectFactory.h"
 #include "vtkReliefProperty.h"
 #include "vtkShaderProgram.h"
+#include "vtkTextureObject.h" // for vtkMinDepthPyramidTexture's smart pointer
 
 // GLSL sources embedded at build time (vtk_encode_string).
 #include "mlEncodeSrgbFS.h"
@@ -85,11 +87,21 @@ void vtkReliefShaderSource::SetTextureLayout(bool floatTextures, bool storedNorm
 }
 
 //------------------------------------------------------------------------------
+int vtkReliefShaderSource::GetMarchMethod(vtkReliefProperty* property, bool curvedGeometry)
+{
+  const int method = property->GetMethod();
+  return method == vtkReliefProperty::MaximumMipmap && curvedGeometry &&
+      property->GetSurfaceCurvature()
+    ? vtkReliefProperty::Relief
+    : method;
+}
+
+//------------------------------------------------------------------------------
 bool vtkReliefShaderSource::GetCurved() const
 {
   // The methods whose search steps along the ray (linear or cone steps, then refinement): the
   // quadric lowers the ray at every step and a ray that leaves the layer is known as a miss.
-  switch (this->Property->GetMethod())
+  switch (GetMarchMethod(this->Property, this->CurvedGeometry))
   {
     case vtkReliefProperty::LinearSearch:
     case vtkReliefProperty::ParallaxOcclusion:
@@ -182,9 +194,21 @@ void vtkReliefShaderSource::ReplaceValuesBefore(std::string& vs, std::string& fs
 void vtkReliefShaderSource::ReplaceValuesAfter(std::string& fs, const void* cellBO)
 {
   vtkReliefProperty* p = this->Property;
-  std::string defines = MethodDefines() + "#define ML_METHOD " + std::to_string(p->GetMethod()) +
-    "\n#define ML_REFINE " + std::to_string(RefinementKind(p->GetMethod())) + "\n" +
-    "#define ML_OUTPUT " + std::to_string(p->GetOutput()) + "\n";
+  const int method = GetMarchMethod(p, this->CurvedGeometry);
+  std::string defines = MethodDefines() + "#define ML_METHOD " + std::to_string(method) +
+    "\n#define ML_REFINE " + std::to_string(RefinementKind(method)) + "\n" + "#define ML_OUTPUT " +
+    std::to_string(p->GetOutput()) + "\n";
+  if (method == vtkReliefProperty::MaximumMipmap)
+  {
+    defines += "#define ML_PYRAMID_FIRST_LEVEL " +
+      std::to_string(vtkMinDepthPyramidTexture::FirstLevel) + "\n";
+    if (!this->FloatTextures)
+    {
+      // mlCellCorners gathers a level-0 cell's corners (GLSL 4.00; VTK declares 1.50).
+      vtkShaderProgram::Substitute(fs, "//VTK::System::Dec",
+        "//VTK::System::Dec\n#extension GL_ARB_texture_gather : require\n");
+    }
+  }
   if (p->GetSelfShadowing())
   {
     defines += "#define ML_SELF_SHADOWING\n";
@@ -266,8 +290,8 @@ void vtkReliefShaderSource::ReplaceValuesAfter(std::string& fs, const void* cell
         ? "uniform vec4 mlDepthLimitVC; // view coordinates: normal, offset (n . x + w = 0)\n"
         : "") +
     vtkReliefHeightFieldFS +
-    (p->GetMethod() == vtkReliefProperty::MaximumMipmap ? vtkReliefMaxMipmapFS : "") +
-    vtkReliefMarchFS + vtkReliefLightingFS + (this->HasLightSet ? vtkReliefLightSetFS : "") +
+    (method == vtkReliefProperty::MaximumMipmap ? vtkReliefMaxMipmapFS : "") + vtkReliefMarchFS +
+    vtkReliefLightingFS + (this->HasLightSet ? vtkReliefLightSetFS : "") +
     (this->HasIrradianceProbes ? vtkReliefIrradianceProbesFS : "") +
     (p->GetEncodeSRGB() ? mlEncodeSrgbFS : "");
   vtkShaderProgram::Substitute(fs, "//MESOLIGHT::Dec", declarations);

@@ -49,8 +49,17 @@ public:
    * then read the vertex attribute mlQuadricMC and march the curved layer (ML_CURVED).
    */
   void SetCurvedGeometry(bool curved) { this->CurvedGeometry = curved; }
+  bool GetCurvedGeometry() const { return this->CurvedGeometry; }
   /** Whether the shader of the current settings marches the curved layer. */
   bool GetCurved() const;
+
+  /**
+   * The method the shader marches with: the property's, except that MaximumMipmap (the
+   * default), whose traversal has no per-step depth to bend, marches the curved layer with
+   * Relief's search (LinearSteps linear and RefinementSteps binary steps) on curved geometry
+   * with SurfaceCurvature on, so a curved mesh keeps its silhouettes.
+   */
+  static int GetMarchMethod(vtkReliefProperty* property, bool curvedGeometry);
 
   /** Whether the shader recorded for this helper (cellBO) was built for another variant. */
   bool KeyChanged(const void* cellBO) const;

@@ -114,7 +114,9 @@ bool vtkReliefShading::StartDraw(vtkOpenGLRenderWindow* renWin, vtkReliefPropert
     return false;
   }
   const int method = property->GetMethod();
-  const bool maximumMipmap = method == vtkReliefProperty::MaximumMipmap;
+  const bool maximumMipmap =
+    vtkReliefShaderSource::GetMarchMethod(property, this->ShaderSource->GetCurvedGeometry()) ==
+    vtkReliefProperty::MaximumMipmap;
   const int requiredCones = vtkReliefProperty::GetRequiredConeMap(method);
   // Only what the method reads is uploaded: the pyramid for MaximumMipmap, cones for cone methods.
   if (!this->ReliefTexture->Update(renWin, relief, property->GetLevelOfDetail(), maximumMipmap,
@@ -269,13 +271,11 @@ void vtkReliefShading::SetShaderParameters(
   const float textureSize[2] = { static_cast<float>(size[0]), static_cast<float>(size[1]) };
   program->SetUniform2f("mlTextureSize", textureSize);
   vtkMinDepthPyramidTexture* pyramid = relief->GetPyramid();
-  if (p->GetMethod() == vtkReliefProperty::MaximumMipmap && pyramid->GetTextureObject())
+  if (this->PyramidActive && pyramid->GetTextureObject())
   {
-    const std::vector<int>& sizes = pyramid->GetLevelSizes();
     program->SetUniformi("mlMinDepthPyramid", pyramid->GetTextureObject()->GetTextureUnit());
     program->SetUniformi("mlPyramidLevels", pyramid->GetNumberOfLevels());
     program->SetUniformf("mlPyramidTop", static_cast<float>(pyramid->GetMinimumDepth()));
-    program->SetUniform1iv("mlPyramidSizes", static_cast<int>(sizes.size()), sizes.data());
   }
 
   vtkCamera* camera = ren->GetActiveCamera();

@@ -40,7 +40,7 @@ int main(int argc, char* argv[])
   mapper->SetInputConnection(wall->GetOutputPort());
   mapper->SetReliefTextureConnection(relief->GetOutputPort());
   mapper->GetReliefProperty()->SetDepthScale(0.04);
-  mapper->GetReliefProperty()->SetMethodToRelief(); // 10 linear + 8 binary steps, self-shadowed
+  // The default method: the exact first hit (maximum-mipmap traversal), self-shadowed.
 
   vtkNew<vtkActor> actor;
   actor->SetMapper(mapper);

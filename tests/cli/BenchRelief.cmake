@@ -26,10 +26,10 @@ if (NOT count EQUAL 35)
   message(FATAL_ERROR "sweep.csv has ${count} lines, not 35")
 endif ()
 # The default's rows name its method and steps, and the summary places it per map and angle.
-if (NOT cli_stdout MATCHES "default +relief 10\\+8")
-  message(FATAL_ERROR "no 'default  relief 10+8' row in the table")
+if (NOT cli_stdout MATCHES "default +max-mipmap iter 64")
+  message(FATAL_ERROR "no 'default  max-mipmap iter 64' row in the table")
 endif ()
-if (NOT cli_stdout MATCHES "the default \\(relief 10\\+8\\) per map and angle")
+if (NOT cli_stdout MATCHES "the default \\(max-mipmap iter 64\\) per map and angle")
   message(FATAL_ERROR "the summary does not place the default")
 endif ()
 # A non-negative decimal number (as the CSV writes it) in millionths, for integer math().

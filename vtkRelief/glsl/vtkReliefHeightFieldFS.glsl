@@ -670,13 +670,40 @@ vec2 mlDepthGradient(vec2 uv)
 #if ML_METHOD == ML_MAXIMUM_MIPMAP
 uniform sampler2D mlMinDepthPyramid;
 
-// Cell k of level `level` of the min-depth pyramid (vtkReliefMaxMipmapFS.glsl): at level 0 the
-// cell's four corner depths (d00, d10, d01, d11), above it the minimum depths of its 2 x 2
-// children (2k, 2k + (1, 0), 2k + (0, 1), 2k + (1, 1) of the level below).
+// Cell k of level `level` >= ML_PYRAMID_FIRST_LEVEL of the min-depth pyramid
+// (vtkReliefMaxMipmapFS.glsl): the minimum depths of its 2 x 2 children (2k, 2k + (1, 0),
+// 2k + (0, 1), 2k + (1, 1) of the level below), in float (RGBA32F) or, rounded down, 8-bit
+// (RGBA8) storage (vtkMinDepthPyramidTexture); its mip level 0 is the first level stored.
 vec4 mlPyramidCell(ivec2 k, int level)
 {
-  // Float (RGBA32F) or compact (RGBA16) storage alike: level 0 holds the cells' corner depths,
-  // coarser levels their children's minima (vtkMinDepthPyramidTexture).
-  return texelFetch(mlMinDepthPyramid, k, level);
+  vec4 m = texelFetch(mlMinDepthPyramid, k, level - ML_PYRAMID_FIRST_LEVEL);
+#ifndef ML_FLOAT_TEXTURES
+  m -= 1e-6; // b / 255 may equal a corner's v / 65535: a rounding of the conversion stays above
+#endif
+  return m;
+}
+
+// The four corner depths (d00, d10, d01, d11) of level-0 cell k, the bilinear patch between
+// texels k - 1 and k (clamped into the map: cells 0 and W are the clamp bands outside the
+// outermost texel centres), straight from the depth texture. Compact storage: one gather at
+// the shared corner of the four texels (textureGather returns (i0, j1), (i1, j1), (i1, j0),
+// (i0, j0)), taken one cell inwards at the border, whose band then repeats the edge texels,
+// so the sampler's wrap mode does not matter. Float storage (depth in alpha, for measuring):
+// four fetches.
+vec4 mlCellCorners(ivec2 k)
+{
+  ivec2 size = ivec2(mlTextureSize);
+#ifdef ML_FLOAT_TEXTURES
+  ivec2 lo = clamp(k - 1, ivec2(0), size - 1), hi = clamp(k, ivec2(0), size - 1);
+  return vec4(texelFetch(mlReliefTexture, lo, 0).a, texelFetch(mlReliefTexture, ivec2(hi.x, lo.y), 0).a,
+    texelFetch(mlReliefTexture, ivec2(lo.x, hi.y), 0).a, texelFetch(mlReliefTexture, hi, 0).a);
+#else
+  ivec2 inner = min(max(k, ivec2(1)), max(size - 1, ivec2(0)));
+  vec4 g = textureGather(mlReliefTexture, vec2(inner) / mlTextureSize);
+  vec4 d = g.wzxy;
+  d = k.x <= 0 ? d.xxzz : (k.x >= size.x ? d.yyww : d);
+  d = k.y <= 0 ? d.xyxy : (k.y >= size.y ? d.zwzw : d);
+  return d;
+#endif
 }
 #endif

@@ -263,6 +263,31 @@ vec2 mlSideWall(vec3 origin, vec3 span, inout float t)
 // hit (1 over a flat floor; negative: below it at the first blocked sample), for level of
 // detail's soft far shadows (mlShadowVisibility); the other marches leave it as the caller set it.
 float mlShadowGap = 1e30;
+
+// The linear shadow march (stepsPerDepth samples per unit of depth travelled, so a shallow hit
+// costs a few), recording the clearance mlShadowGap on a flat mesh.
+bool mlShadowedLinear(vec3 origin, vec3 span, vec3 hit, float bias, int stepsPerDepth)
+{
+  int steps = max(2, int(ceil(float(stepsPerDepth) * hit.z)) + 1);
+  float dt = 1.0 / float(steps);
+  // Skip the last sample (the hit itself).
+  for (int i = 1; i < steps; ++i)
+  {
+    vec3 p = origin + (float(i) * dt) * span;
+#ifdef ML_CURVED
+    if (p.z > mlQuadricDepth(p) + mlDepthAt(mlLayerUV(p)) + bias)
+#else
+    float gap = mlDepthAt(p.xy) + bias - p.z;
+    mlShadowGap = min(mlShadowGap, gap / max(hit.z - p.z, 1e-4));
+    if (gap < 0.0)
+#endif
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
 bool mlShadowed(vec3 hit, vec3 spanUpPerDepth)
 {
   if (hit.z <= 1e-4)
@@ -273,15 +298,25 @@ bool mlShadowed(vec3 hit, vec3 spanUpPerDepth)
   vec3 span = hit - origin;
   const float bias = 2e-3; // depth units: avoids self-shadowing acne at the hit itself
 #if ML_METHOD == ML_MAXIMUM_MIPMAP
+#if defined(ML_LEVEL_OF_DETAIL) && !defined(ML_CURVED)
+  // Where level of detail softens a far pixel's shadow (mlShadowVisibility: a footprint over a
+  // texel at a shading level above 0), the penumbra needs the linear march's clearance, which
+  // the pyramid's skips do not measure; 10 steps per unit of depth, the march the Relief 10+8
+  // default took there, so far pixels shade as before the default became exact.
+  if (mlFootprint > 1.0 && mlShadeLod > 0.0)
+  {
+    return mlShadowedLinear(origin, span, hit, bias, 10);
+  }
+#endif
   float t = mlTraceMaxMipmap(origin + vec3(0.0, 0.0, -bias), span, mlLinearSteps, 1.0);
   return t < 1.0 - 1e-3;
 #else
   // The linear search's budget: mlLinearSteps per unit of depth travelled, so a shallow hit costs
   // a few samples. The cone march shares it (its floor is then the linear step), so it never
   // samples more than the linear search it accelerates.
+#ifdef ML_CONE_PACKED
   int steps = max(2, int(ceil(float(mlLinearSteps) * hit.z)) + 1);
   float dt = 1.0 / float(steps);
-#ifdef ML_CONE_PACKED
   // The linear search's samples at most, and never nearer the hit than its last one (1 - dt):
   // closer samples see the hit's own surface (acne where the hit sits on a steep wall). Cone
   // steps are taken where they are longer than the linear step.
@@ -308,22 +343,7 @@ bool mlShadowed(vec3 hit, vec3 spanUpPerDepth)
   }
   return false;
 #else
-  // Skip the last sample (the hit itself).
-  for (int i = 1; i < steps; ++i)
-  {
-    vec3 p = origin + (float(i) * dt) * span;
-#ifdef ML_CURVED
-    if (p.z > mlQuadricDepth(p) + mlDepthAt(mlLayerUV(p)) + bias)
-#else
-    float gap = mlDepthAt(p.xy) + bias - p.z;
-    mlShadowGap = min(mlShadowGap, gap / max(hit.z - p.z, 1e-4));
-    if (gap < 0.0)
-#endif
-    {
-      return true;
-    }
-  }
-  return false;
+  return mlShadowedLinear(origin, span, hit, bias, mlLinearSteps);
 #endif
 #endif
 }

@@ -2,18 +2,18 @@
 // Mesolight relief: exact height-field tracing through a min-depth pyramid ("maximum mipmaps",
 // Tevs, Ihrke & Seidel, I3D 2008), for the bilinear surface the GPU samples.
 //
-// Level 0 holds one texel per cell between texel centres, (W+1) x (H+1) cells including the
-// clamp-to-edge border cells: the cell's four corner depths (vtkMinDepthPyramidTexture), whose
-// minimum bounds the bilinear patch from above. A cell of level L+1 holds the minima of its 2x2
-// cells of level L (RGBA: (0,0), (1,0), (0,1), (1,1)); sizes halve rounding down (a complete OpenGL mipmap) and a level's last cell also
-// covers the leftover cell below it, so level-0 cell k lies in level-L cell
-// min(k >> L, size_L - 1). In cell space x = u W - 0.5, texel i sits at x = i and cell k spans
-// [k-1, k].
+// Level 0 has one cell between texel centres, (W+1) x (H+1) cells including the clamp-to-edge
+// border cells; the traversal reads its four corner depths from the depth texture
+// (mlCellCorners: one gather), whose minimum bounds the bilinear patch from above. Levels 1 to
+// ML_PYRAMID_FIRST_LEVEL - 1 are not stored; from ML_PYRAMID_FIRST_LEVEL up a cell of level L+1
+// holds the minima of its 2x2 cells of level L (RGBA: (0,0), (1,0), (0,1), (1,1)), rounded down
+// in the compact storage (vtkMinDepthPyramidTexture). Sizes halve rounding down (a complete
+// OpenGL mipmap) and a level's last cell also covers the leftover cell below it, so level-0
+// cell k lies in level-L cell min(k >> L, size_L - 1). In cell space x = u W - 0.5, texel i
+// sits at x = i and cell k spans [k-1, k].
 
-uniform int mlPyramidLevels;
+uniform int mlPyramidLevels; // ML_PYRAMID_FIRST_LEVEL plus the levels stored
 uniform float mlPyramidTop; // the map's smallest depth (vtkMinDepthPyramidTexture::GetMinimumDepth)
-// Cells per level as (w, h) pairs (unused: the sizes are max(cells0 >> L, 1)).
-uniform int mlPyramidSizes[32];
 
 // First t in [t0, t1] where the ray meets the bilinear patch of level-0 cell k, whose corner
 // depths d = (d00, d10, d01, d11) the pyramid's level 0 holds, or -1.
@@ -79,13 +79,16 @@ bool mlMeetsCell(vec3 origin, vec3 span, vec2 dx, vec2 a0, vec4 d, float s0, flo
   return max(max((A * s0 + B) * s0 + C, (A * s1 + B) * s1 + C), (A * sv + B) * sv + C) >= 0.0;
 }
 
-// Hierarchical traversal, one fetch per iteration: a cell of level L >= 1 holds the bounds of
-// its 2 x 2 children, so one fetch tests the up to three children the ray crosses inside it
-// (split where the ray crosses the cell's midlines). The ray skips the cell when it stays above
-// every child's bound and descends into the first child it may meet; level 0 is a level like
-// the others, whose fetch is the cell's four corners and whose test is the cell's bilinear patch,
-// exactly. A miss there goes on to the next level-0 cell of the same parent without fetching
-// the parent again. maxIterations bounds the work; past tEnd (<= 1) the ray is of no interest
+// Hierarchical traversal, one fetch per iteration: a stored cell (level L >=
+// ML_PYRAMID_FIRST_LEVEL) holds the bounds of its 2 x 2 children, so one fetch tests the up to
+// three children the ray crosses inside it (split where the ray crosses the cell's midlines).
+// The ray skips the cell when it stays above every child's bound and descends into the first
+// child it may meet: into that child's own cell when it is stored, else to level 0, whose fetch
+// is the cell's four corners (one gather of the depth texture) and whose test is the cell's
+// bilinear patch, exactly. A miss there goes on to the next level-0 cell of the same child (a
+// walk of at most 2^(ML_PYRAMID_FIRST_LEVEL - 1) cells per axis) without fetching the parent
+// again. (The levels in between are not stored, so the pyramid costs 1/12 byte per texel in
+// the compact storage, and the default's upload stays a tenth of the dense mesh's.) maxIterations bounds the work; past tEnd (<= 1) the ray is of no interest
 // and the trace returns 1.
 // The loop body has one texture fetch and no square root or division: on SIMD hardware that
 // runs fragments in lock step (and on llvmpipe, which executes every branch any lane takes) an
@@ -93,11 +96,13 @@ bool mlMeetsCell(vec3 origin, vec3 span, vec2 dx, vec2 a0, vec4 d, float s0, flo
 // cell arithmetic instead of adding a second fetch and its own exit computation.
 float mlTraceMaxMipmap(vec3 origin, vec3 span, int maxIterations, float tEnd)
 {
+  const int first = ML_PYRAMID_FIRST_LEVEL;
+  const int walk = 1 << (first - 1); // level-0 cells per axis of an unstored child
   ivec2 cells0 = ivec2(mlTextureSize) + 1;
-  int top = max(mlPyramidLevels - 1, 1);
+  int top = max(mlPyramidLevels - 1, first);
   // Start low: a view ray enters at depth 0, where the coarse cells' minimum is (nearly) 0 on
   // real maps, so starting at the top only descends again (docs/relief-methods.md).
-  int level = min(2, top);
+  int level = first;
   // The ray in cell space (x = u W - 0.5; level-0 cell k spans [k-1, k]).
   vec2 x0 = origin.xy * mlTextureSize - 0.5;
   vec2 dx = span.xy * mlTextureSize;
@@ -134,10 +139,10 @@ float mlTraceMaxMipmap(vec3 origin, vec3 span, int maxIterations, float tEnd)
     bool exitX = tx.x <= tx.y;
     float tExit = clamp(min(tx.x, tx.y), t, tEnd);
     ML_COUNT_SAMPLE();
-    vec4 cell = mlPyramidCell(n, level);
     bool descend = false;
     if (level == 0)
     {
+      vec4 cell = mlCellCorners(n);
       // The cell's corners: its bilinear patch, exactly, from where the ray entered it (the
       // nudge back: the previous cell was tested up to its exit) to where it leaves.
       float s0 = max(t - nudge, 0.0);
@@ -152,6 +157,7 @@ float mlTraceMaxMipmap(vec3 origin, vec3 span, int maxIterations, float tEnd)
     }
     else
     {
+      vec4 cell = mlPyramidCell(n, level);
       // The children the ray crosses: split [t, tExit] where it crosses the midlines; crossing
       // one flips the child along that axis. (A missing child repeats a present one's bound, so
       // flipping into it is harmless.)
@@ -191,24 +197,29 @@ float mlTraceMaxMipmap(vec3 origin, vec3 span, int maxIterations, float tEnd)
         float za = origin.z + aFound * span.z;
         float a = aFound + (aFound > t ? nudge : 0.0);
         t = za < mFound ? max(a, (mFound - origin.z) * invSpanZ) : a;
-        // From level 3 and up, into the grandchildren at once: a grazing ray found blocked at a
-        // coarse child nearly always descends again, and every level of the pyramid bounds the
-        // surface (Tevs, Ihrke & Seidel 2008), so the level chosen changes the work, never the
-        // hit (measured: 0.95x the samples, ms within the timing noise; straight to level 1
-        // took more samples again).
-        level = cl >= 2 ? cl - 1 : cl;
+        // Into the grandchildren at once where they are stored: a grazing ray found blocked at
+        // a coarse child nearly always descends again, and every level of the pyramid bounds
+        // the surface (Tevs, Ihrke & Seidel 2008), so the level chosen changes the work, never
+        // the hit (measured: 0.95x the samples, ms within the timing noise). Below the stored
+        // levels, level 0.
+        level = cl - 1 >= first ? cl - 1 : (cl >= first ? cl : 0);
       }
     }
     if (!descend)
     {
       // Above every child, or past a level-0 patch: skip the cell. Look wider only when the ray
       // also leaves the parent cell (Tevs, Ihrke & Seidel 2008): inside the same parent the
-      // coarser cell was already found too deep, and going up would only come down again.
+      // coarser cell was already found too deep, and going up would only come down again. A
+      // level-0 cell's parent here is the unstored child it was walked from; leaving it goes
+      // back to the first stored level. (At a level's last cell, which also covers the
+      // leftover, this may go up early: more work, the same hit.)
       t = tExit + nudge;
       int k = exitX ? n.x : n.y;
       int d = exitX ? dir.x : dir.y;
-      bool leavesParent = d == 1 ? (k & 1) == 1 : (k & 1) == 0;
-      level = leavesParent ? min(level + 1, top) : level;
+      int block = level == 0 ? walk : 2;
+      int m = k & (block - 1);
+      bool leavesParent = d == 1 ? m == block - 1 : m == 0;
+      level = leavesParent ? (level == 0 ? first : min(level + 1, top)) : level;
     }
     if (t >= tEnd)
     {

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 namespace mesolight
 {
@@ -46,6 +47,36 @@ std::vector<std::vector<std::uint16_t>> CompactMinDepthPyramid(
       level[i] = QuantizeDepth16(levels[l][i]); // a minimum of m / 65535 values: exact
     }
     out.push_back(std::move(level));
+  }
+  return out;
+}
+
+std::vector<std::vector<std::uint8_t>> CompactChildMinima8(
+  const std::uint16_t* depth16, int w, int h, int firstLevel, std::vector<int>& levelSizes)
+{
+  levelSizes.clear();
+  std::vector<std::vector<std::uint8_t>> out;
+  if (!depth16 || w < 1 || h < 1)
+  {
+    return out;
+  }
+  // The pyramid of the depths as the GPU reads them (m / 65535, exact in float and back).
+  std::vector<float> depth(static_cast<std::size_t>(w) * static_cast<std::size_t>(h));
+  for (std::size_t i = 0; i < depth.size(); ++i)
+  {
+    depth[i] = static_cast<float>(depth16[i]) / 65535.f;
+  }
+  const std::vector<std::vector<float>> levels =
+    ChildMinimaFromLevel(depth.data(), w, h, firstLevel, levelSizes);
+  for (const std::vector<float>& level : levels)
+  {
+    std::vector<std::uint8_t> bytes(level.size());
+    for (std::size_t i = 0; i < level.size(); ++i)
+    {
+      // A minimum of m / 65535 values is exact; m / 257 rounded down reads back no deeper.
+      bytes[i] = static_cast<std::uint8_t>(QuantizeDepth16(level[i]) / 257);
+    }
+    out.push_back(std::move(bytes));
   }
   return out;
 }

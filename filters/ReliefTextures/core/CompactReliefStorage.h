@@ -36,6 +36,21 @@ MESOLIGHTRELIEFTEXTURES_EXPORT std::uint16_t QuantizeDepth16(float depth);
 MESOLIGHTRELIEFTEXTURES_EXPORT std::vector<std::vector<std::uint16_t>> CompactMinDepthPyramid(
   const std::uint16_t* depth16, int w, int h, std::vector<int>& levelSizes);
 
+/**
+ * The coarse part of the compact min-depth pyramid the maximum-mipmap traversal reads
+ * (vtkReliefMaxMipmapFS.glsl): levels firstLevel and up of ComputeMinDepthPyramid's cells (of the
+ * 16-bit depths as uploaded), each cell holding its 2 x 2 children's minima as PackChildMinima
+ * packs them, every minimum rounded down to 8 bits (v / 257, which reads back as b / 255 <=
+ * v / 65535): a bound never below the surface, so the traversal stays exact; it only descends a
+ * little earlier. Levels that a small map lacks (past 1 x 1) are 1 x 1 copies of its apex, so
+ * level firstLevel always exists. Level 0 (the cells' corners) and the levels between are not
+ * stored: the traversal reads a level-0 cell's corners from the depth texture with one gather.
+ * At firstLevel 3: 1/12 byte per texel. Returns the levels (RGBA, row-major) and their sizes in
+ * levelSizes ((w, h) pairs); empty for an empty map or firstLevel < 1.
+ */
+MESOLIGHTRELIEFTEXTURES_EXPORT std::vector<std::vector<std::uint8_t>> CompactChildMinima8(
+  const std::uint16_t* depth16, int w, int h, int firstLevel, std::vector<int>& levelSizes);
+
 // 8-bit cone ratios: EncodeConeRatio8 / DecodeConeRatio8 in ConeMaps.h (rounded to narrower
 // cones).
 

@@ -163,4 +163,37 @@ std::vector<std::vector<float>> ComputeMinDepthPyramid(const float* depth, int w
   return out;
 }
 
+std::vector<std::vector<float>> ChildMinimaFromLevel(
+  const float* depth, int w, int h, int firstLevel, std::vector<int>& levelSizes)
+{
+  levelSizes.clear();
+  std::vector<std::vector<float>> out;
+  if (!depth || w < 1 || h < 1 || firstLevel < 1)
+  {
+    return out;
+  }
+  std::vector<std::vector<float>> minima = ComputeMinDepthPyramid(depth, w, h);
+  std::vector<std::pair<int, int>> sizes;
+  for (std::size_t l = 0; l < minima.size(); ++l)
+  {
+    int lw = 0, lh = 0;
+    MinDepthPyramidLevelSize(w, h, static_cast<int>(l), lw, lh);
+    sizes.emplace_back(lw, lh);
+  }
+  // A map too small for firstLevel: repeat the 1 x 1 apex (one present child per cell).
+  while (static_cast<int>(minima.size()) <= firstLevel)
+  {
+    minima.push_back(minima.back());
+    sizes.emplace_back(1, 1);
+  }
+  std::vector<std::vector<float>> packed = PackChildMinimaT(minima, sizes);
+  for (std::size_t l = static_cast<std::size_t>(firstLevel); l < packed.size(); ++l)
+  {
+    levelSizes.push_back(sizes[l].first);
+    levelSizes.push_back(sizes[l].second);
+    out.push_back(std::move(packed[l]));
+  }
+  return out;
+}
+
 } // namespace mesolight

@@ -61,6 +61,17 @@ MESOLIGHTRELIEFTEXTURES_EXPORT std::vector<std::vector<std::uint16_t>> PackChild
   const std::vector<std::vector<std::uint16_t>>& minima,
   const std::vector<std::pair<int, int>>& sizes);
 
+/**
+ * Levels firstLevel and up of the min-depth pyramid of a w x h depth map, packed as
+ * PackChildMinima packs them (RGBA: each cell its 2 x 2 children's minima), for a traversal
+ * that reads level 0's corners from the depth texture itself and stores no level between.
+ * Levels a small map lacks (past 1 x 1) are 1 x 1 copies of its apex, so level firstLevel
+ * always exists. levelSizes: (w, h) per returned level. Empty for an empty map or
+ * firstLevel < 1.
+ */
+MESOLIGHTRELIEFTEXTURES_EXPORT std::vector<std::vector<float>> ChildMinimaFromLevel(
+  const float* depth, int w, int h, int firstLevel, std::vector<int>& levelSizes);
+
 /// One level of a min pyramid: W x H nodes of Channels floats each (node-major), a node
 /// covering Size x Size base elements. Used inside Mesolight::Filters (not exported).
 struct MinPyramidLevel

@@ -15,17 +15,19 @@ import numpy as np  # noqa: E402
 import paraview.simple as pvs  # noqa: E402
 
 MIN_CHANGED_PIXELS = 50
+RELIEF = "Relief (linear + binary)"
 
 # property: (preconditions on the display or, with a "source." prefix, the depth source;
 #            the change)
 CASES = {
     "ReliefMethod": ({}, {"ReliefMethod": "Texture mapping"}),
-    "LinearSteps": ({"RefinementSteps": 0}, {"LinearSteps": 3}),
-    "RefinementSteps": ({"LinearSteps": 4}, {"RefinementSteps": 0}),
-    "AdaptiveSteps": ({"RefinementSteps": 0, "LinearSteps": 32, "MinimumSteps": 2},
-                      {"AdaptiveSteps": 1}),
-    "MinimumSteps": ({"RefinementSteps": 0, "LinearSteps": 32, "AdaptiveSteps": 1},
-                     {"MinimumSteps": 1}),
+    # The steps of the relief search (the default, maximum mipmap, has no refinement steps).
+    "LinearSteps": ({"ReliefMethod": RELIEF, "RefinementSteps": 0}, {"LinearSteps": 3}),
+    "RefinementSteps": ({"ReliefMethod": RELIEF, "LinearSteps": 4}, {"RefinementSteps": 0}),
+    "AdaptiveSteps": ({"ReliefMethod": RELIEF, "RefinementSteps": 0, "LinearSteps": 32,
+                       "MinimumSteps": 2}, {"AdaptiveSteps": 1}),
+    "MinimumSteps": ({"ReliefMethod": RELIEF, "RefinementSteps": 0, "LinearSteps": 32,
+                      "AdaptiveSteps": 1}, {"MinimumSteps": 1}),
     "OverrideDepthScale": ({"ReliefDepthScale": 0.15}, {"OverrideDepthScale": 1}),
     "ReliefDepthScale": ({"OverrideDepthScale": 1}, {"ReliefDepthScale": 0.15}),
     "SelfShadowing": ({}, {"SelfShadowing": 0}),

@@ -103,8 +103,9 @@ TEST(ReliefProperty, RequiredConeMaps)
 TEST(ReliefProperty, DefaultsAndClamping)
 {
   vtkNew<vtkReliefProperty> property;
-  EXPECT_EQ(property->GetMethod(), vtkReliefProperty::Relief);
-  EXPECT_EQ(property->GetLinearSteps(), 10);
+  // The exact traversal by default (docs/relief-methods.md, "The default is exact").
+  EXPECT_EQ(property->GetMethod(), vtkReliefProperty::MaximumMipmap);
+  EXPECT_EQ(property->GetLinearSteps(), 64);
   EXPECT_EQ(property->GetRefinementSteps(), 8);
   EXPECT_EQ(property->GetDepthScale(), 0.05);
   EXPECT_TRUE(property->GetSelfShadowing());
@@ -151,7 +152,7 @@ TEST(ReliefProperty, SharedByTwoMappers)
   second->SetReliefProperty(nullptr);
   ASSERT_NE(second->GetReliefProperty(), nullptr);
   EXPECT_NE(second->GetReliefProperty(), shared.Get());
-  EXPECT_EQ(second->GetReliefProperty()->GetMethod(), vtkReliefProperty::Relief);
+  EXPECT_EQ(second->GetReliefProperty()->GetMethod(), vtkReliefProperty::MaximumMipmap);
 }
 
 #if VTK_VERSION_NUMBER < VTK_VERSION_CHECK(9, 3, 0)

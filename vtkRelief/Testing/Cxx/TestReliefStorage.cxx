@@ -167,14 +167,17 @@ INSTANTIATE_TEST_SUITE_P(Methods, ReliefStorage,
 
 // The bytes the mapper reports are those of the formats uploaded: per texel 2 (16-bit depth) + 2
 // (8-bit normal x, y), + 1 (8-bit cone ratio) for cone methods, the derived-normal variant 2
-// less; the max-mipmap pyramid at 8 bytes per cell (16 in float storage); float storage 16 per
-// texel; level of detail adds the normal moments' 16 bytes per texel of mip levels 2 and up.
+// less; the max-mipmap pyramid at 4 bytes per cell from level 3 (16 in float storage); float
+// storage 16 per texel; level of detail adds the normal moments' 16 bytes per texel of mip levels 2
+// and up.
 TEST(ReliefStorage, ReportedBytesAreThoseOfTheFormats)
 {
   const int n = 301;
   const long long texels = static_cast<long long>(n) * n;
-  long long pyramid = 0; // cells (n + 1)^2 at level 0, sizes halving rounding down
-  for (int w = n + 1, h = n + 1;; w = std::max(1, w / 2), h = std::max(1, h / 2))
+  // Pyramid cells from level 3 (levels 0-2 are not stored: level 0's corners come from the depth
+  // texture), (n + 1)^2 cells at level 0, sizes halving rounding down.
+  long long pyramid = 0;
+  for (int w = (n + 1) >> 3, h = (n + 1) >> 3;; w = std::max(1, w / 2), h = std::max(1, h / 2))
   {
     pyramid += static_cast<long long>(w) * h;
     if (w == 1 && h == 1)
@@ -192,9 +195,9 @@ TEST(ReliefStorage, ReportedBytesAreThoseOfTheFormats)
     { "relief", Storage::Compact, 4 * texels },
     { "relief", Storage::Derived, 2 * texels },
     { "relief", Storage::Float, 16 * texels },
-    // The compact pyramid: four 16-bit corners per level-0 cell, four 16-bit children's minima
-    // per coarser cell (RGBA16); the float one the same in 32 bits.
-    { "max-mipmap", Storage::Compact, 4 * texels + 8 * pyramid },
+    // The compact pyramid: four 8-bit children's minima per cell from level 3 (RGBA8); the
+    // float one the same in 32 bits.
+    { "max-mipmap", Storage::Compact, 4 * texels + 4 * pyramid },
     { "max-mipmap", Storage::Float, 16 * texels + 16 * pyramid },
     { "relaxed-cone", Storage::Compact, 5 * texels },
   };
