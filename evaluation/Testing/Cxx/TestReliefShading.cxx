@@ -6,8 +6,10 @@
 // gives the analytic point-light irradiance, and a grazing light leaves the valleys of a sloped
 // relief in its own shadow, point by point as a dense independent march says. Inter-reflection:
 // the indirect light in a V-groove against Monte-Carlo paths bouncing inside it on the exact
-// intersector; the negative case, the occluded directions as black, is too dark.
-#include "ReliefShading.h"
+// intersector; the negative case, the occluded directions as black, is too dark. The relief's
+// maps (visible share, emitter shadows) against analytic view factors and dense marches. The
+// walled relief (its slot and side walls) is tested in TestReliefShadingWalls.cxx.
+#include "ReliefShadingTestScene.h"
 
 #include "MathConstants.h"
 
@@ -26,6 +28,7 @@ using mesolight::HeightField;
 using mesolight::ReliefFrame;
 using mesolight::ReliefLighting;
 using mesolight::ReliefNormal;
+using namespace mesolight::test; // Square, UniformLighting, PathTracedIrradiance
 
 struct Sample
 {
@@ -102,28 +105,6 @@ HeightField Ridges()
     }
   }
   return HeightField(n, n, depth);
-}
-
-// One probe of uniform radiance (L00 = 2 sqrt(pi) L) and a grey albedo.
-ReliefLighting UniformLighting(double radiance, double albedo)
-{
-  ReliefLighting lighting;
-  mesolight::SH9 sh;
-  for (int c = 0; c < 3; ++c)
-  {
-    sh.L[0][c] = 2.0 * std::sqrt(mesolight::Pi<double>) * radiance;
-  }
-  lighting.Probes = { sh };
-  lighting.Albedo = glm::dvec3(albedo);
-  return lighting;
-}
-
-// A unit square in z = 0 facing +z, relief 0.15 deep.
-ReliefFrame Square()
-{
-  ReliefFrame frame;
-  frame.DepthScale = 0.15;
-  return frame;
 }
 
 // The largest relative error (per pixel, luminance-like sum over channels, against the exact
@@ -350,58 +331,6 @@ HeightField VGroove()
   return HeightField(w, h, depth);
 }
 
-// Independent reference: the irradiance at a relief point under uniform radiance L from the
-// room, with every inter-reflection inside the relief, by Monte-Carlo paths on the exact
-// height-field intersector (cosine sampling: each bounce on the albedo-a diffuse relief
-// multiplies the path by a; the path ends where it leaves the relief). On a walled relief a path
-// that meets a side wall bounces off the wall's plane (RayHit::wall); startWall is the first
-// point's wall, if it lies on one.
-double PathTracedIrradiance(const HeightField& hf, const ReliefFrame& frame, glm::dvec3 point,
-  double radiance, double albedo, int paths, unsigned& state,
-  glm::dvec2 startWall = glm::dvec2(0.0))
-{
-  const auto random = [&state]()
-  {
-    state = state * 1664525u + 1013904223u;
-    return (state >> 8) * (1.0 / 16777216.0);
-  };
-  double sum = 0.0;
-  for (int p = 0; p < paths; ++p)
-  {
-    glm::dvec3 at = point;
-    glm::dvec2 wall = startWall; // on a walled relief's side wall: its normal
-    double throughput = 1.0;
-    for (int bounce = 0; bounce < 64 && throughput > 1e-4; ++bounce)
-    {
-      const glm::dvec3 n = wall != glm::dvec2(0.0)
-        ? mesolight::ReliefWallNormal(frame, wall)
-        : mesolight::ReliefNormalAt(hf, frame, at.x, at.y);
-      const glm::dvec3 t = std::abs(n.z) < 0.9 ? glm::dvec3(0, 0, 1) : glm::dvec3(1, 0, 0);
-      const glm::dvec3 x = glm::normalize(glm::cross(t, n));
-      const glm::dvec3 y = glm::cross(n, x);
-      const double r = std::sqrt(random()), phi = 2.0 * mesolight::Pi<double> * random();
-      const glm::dvec3 w =
-        r * std::cos(phi) * x + r * std::sin(phi) * y + std::sqrt(std::max(0.0, 1.0 - r * r)) * n;
-      const glm::dvec3 step = frame.ToTexture(w);
-      if (w.z > 0.0 && mesolight::Visible(hf, at, step, 1e-6))
-      {
-        sum += throughput * radiance;
-        break;
-      }
-      const auto hit =
-        mesolight::IntersectFirst(hf, at + 1e-6 * step / glm::length(step), step, 10.0);
-      if (!hit)
-      {
-        break; // numerically lost: counts as dark (rare)
-      }
-      at = glm::dvec3(hit->point.x, hit->point.y, std::max(0.0, hit->point.z));
-      wall = hit->wall;
-      throughput *= albedo;
-    }
-  }
-  return mesolight::Pi<double> * sum / paths;
-}
-
 // The indirect irradiance in the groove by the method with the given inter-reflection model,
 // against the path-traced reference: mean relative error over pixels across the groove, and the
 // mean ratio method / reference.
@@ -465,199 +394,6 @@ TEST(ReliefShading, InterReflectionInAGrooveAgainstPathTracing)
     EXPECT_LT(noneRatio, 0.8);
     EXPECT_GT(none, 2.0 * multi);
   }
-}
-
-namespace
-{
-// The slot along the top edge of scripts/bench-vlf-relief.sh's procedural brick map, walled as a
-// relief on a wall is: 3 of 64 texels at depth 1 along v = 1, a bevel of 6 texels up to the
-// bricks at depth 0.05; as deep as in that bench, 4.3 times as deep as wide at the bottom.
-HeightField WalledSlot()
-{
-  const int n = 64;
-  std::vector<float> depth;
-  for (int j = 0; j < n; ++j)
-  {
-    for (int i = 0; i < n; ++i)
-    {
-      const int below = n - 1 - j; // texels below the top row
-      depth.push_back(below < 3 ? 1.0f
-          : below < 9           ? static_cast<float>(0.05 + 0.95 * (1.0 - (below - 2) / 7.0))
-                                : 0.05f);
-    }
-  }
-  return HeightField(n, n, depth, HeightField::Edge::Walled);
-}
-
-// The slot seen from below and in front, as the bench's camera sees the top edge: its side wall,
-// its bottom and the bevel. The indirect irradiance under uniform light by the method (the
-// multi-bounce series at the seen relief's visible share) and by the series at the shaded point's
-// own share, against paths bouncing in the walled slot: mean relative errors and ratios.
-void WalledSlotErrors(double& seen, double& own, double& seenRatio, double& ownRatio, int& walls)
-{
-  const HeightField hf = WalledSlot();
-  ReliefFrame frame = Square();
-  frame.DepthScale = 0.2;
-  const double radiance = 1.0, albedo = 0.7;
-  ReliefLighting lighting = UniformLighting(radiance, albedo);
-  const glm::dvec3 eye(0.5, 0.6, 1.0);
-  const double flat = mesolight::Pi<double> * radiance; // the flat wall's irradiance
-  unsigned state = 4321u;
-  seen = own = seenRatio = ownRatio = 0.0;
-  walls = 0;
-  int hits = 0;
-  for (int k = 0; k < 24; ++k)
-  {
-    const glm::dvec3 target(0.5, 0.86 + 0.14 * (k + 0.5) / 24.0, 0.0);
-    const auto shade =
-      mesolight::ShadeReliefRay(hf, frame, lighting, eye, glm::normalize(target - eye));
-    if (!shade || shade->Texture.z < 0.3)
-    {
-      continue; // the slot and the lower bevel only
-    }
-    const glm::dvec2 wall(0.0, shade->Texture.y >= 1.0 ? -1.0 : 0.0);
-    walls += wall.y != 0.0 ? 1 : 0;
-    const double reference =
-      PathTracedIrradiance(hf, frame, shade->Texture, radiance, albedo, 4000, state, wall);
-    // With uniform light the radiance-weighted share is the cosine-weighted V.
-    const double v = shade->IndirectVisible;
-    const double ownSeries = shade->Indirect.x - shade->InterReflected.x +
-      mesolight::ReliefInterReflected(
-        mesolight::ReliefInterReflection::MultiBounce, v, glm::dvec3(albedo), glm::dvec3(flat))
-        .x;
-    seen += std::abs(shade->Indirect.x - reference) / reference;
-    own += std::abs(ownSeries - reference) / reference;
-    seenRatio += shade->Indirect.x / reference;
-    ownRatio += ownSeries / reference;
-    ++hits;
-  }
-  EXPECT_GT(hits, 12);
-  seen /= hits;
-  own /= hits;
-  seenRatio /= hits;
-  ownRatio /= hits;
-}
-} // namespace
-
-// The walled slot along a relief's top edge (scripts/bench-vlf-relief.sh's procedural map): its
-// bottom and side wall see mostly the slot's own walls, deeper and more enclosed than themselves.
-// The multi-bounce series at the seen relief's visible share (ReliefSeenShare) against paths
-// bouncing in the slot; the negative case, the series at the shaded point's own share (the
-// relief seen taken to be occluded like the shaded point), is off by twice as much.
-TEST(ReliefShading, InterReflectionInAWalledSlotAgainstPathTracing)
-{
-  double seen = 0.0, own = 0.0, seenRatio = 0.0, ownRatio = 0.0;
-  int walls = 0;
-  WalledSlotErrors(seen, own, seenRatio, ownRatio, walls);
-  std::cout << "indirect light in a walled slot (albedo 0.7, " << walls
-            << " points on its side wall), mean relative error against path tracing (mean "
-               "ratio): seen share "
-            << seen << " (" << seenRatio << "), the shaded point's own share " << own << " ("
-            << ownRatio << ")\n";
-  EXPECT_GT(walls, 2);
-  EXPECT_LT(seen, 0.08); // measured 0.056
-  EXPECT_GT(own, 0.1);   // measured 0.124: too bright on the bottom, too dark on the wall
-  EXPECT_GT(own, 1.8 * seen);
-}
-
-// The relief mapper's seen-share map (ReliefSeenShareMap: the seen points' shares read from the
-// visible-share map) against ReliefSeenShare marched at every seen point, over the walled slot's
-// rows: close, and far from the cells' own share (the negative case, what the map held before).
-TEST(ReliefShading, SeenShareMapFollowsTheMarchedSeenShare)
-{
-  const HeightField hf = WalledSlot();
-  ReliefFrame frame = Square();
-  frame.DepthScale = 0.2;
-  const int w = 8, h = 64, count = 32;
-  const std::vector<float> share = mesolight::ReliefVisibleShareMap(hf, frame, w, h, count);
-  const std::vector<float> seen = mesolight::ReliefSeenShareMap(hf, frame, share, w, h, count);
-  ASSERT_EQ(seen.size(), static_cast<std::size_t>(w * h));
-  double sumError = 0.0, sumOwn = 0.0;
-  int cells = 0;
-  for (int j = h - 12; j < h; ++j) // the slot and its bevel
-  {
-    for (int i = 0; i < w; ++i)
-    {
-      const double u = (i + 0.5) / w, v = (j + 0.5) / h;
-      const glm::dvec3 hit(u, v, hf.DepthAt(u, v));
-      const double marched = mesolight::ReliefSeenShare(
-        hf, frame, hit, mesolight::ReliefNormalAt(hf, frame, u, v), count);
-      if (share[2 * (j * w + i)] >= 1.0f)
-      {
-        EXPECT_EQ(seen[j * w + i], 1.0f); // nothing occluded: nothing seen
-        continue;
-      }
-      sumError += std::abs(seen[j * w + i] - marched);
-      sumOwn += std::abs(share[2 * (j * w + i)] - marched);
-      ++cells;
-    }
-  }
-  ASSERT_GT(cells, 40);
-  std::cout << "seen share over " << cells << " cells of a walled slot: map against marched, mean "
-            << "|error| " << sumError / cells << "; the cells' own share (negative) "
-            << sumOwn / cells << "\n";
-  EXPECT_LT(sumError / cells, 0.03);
-  EXPECT_GT(sumOwn / cells, 3.0 * sumError / cells);
-  EXPECT_THROW(
-    mesolight::ReliefSeenShareMap(hf, frame, share, w + 1, h, count), std::invalid_argument);
-}
-
-// The maps split by rows between processes (GridRows, what MPI ranks compute): the shares of 1,
-// 2 and 3 processes summed equal the one-process maps bit for bit, each share holds its rows
-// only, and the sum without one share (a rank's rows left 0, the negative case) does not.
-TEST(ReliefShading, ShareMapsSplitByRowsSumToTheWholeMap)
-{
-  const HeightField hf = WalledSlot();
-  ReliefFrame frame = Square();
-  frame.DepthScale = 0.2;
-  const int w = 8, h = 37, count = 32; // rows not a multiple of the process counts
-  const std::vector<float> share = mesolight::ReliefVisibleShareMap(hf, frame, w, h, count);
-  const std::vector<float> seen = mesolight::ReliefSeenShareMap(hf, frame, share, w, h, count);
-  for (int processes = 2; processes <= 3; ++processes)
-  {
-    std::vector<float> shareSum(share.size(), 0.0f), seenSum(seen.size(), 0.0f);
-    std::vector<float> lastShareMissing;
-    for (int p = 0; p < processes; ++p)
-    {
-      const mesolight::GridRows rows{ p, processes };
-      const std::vector<float> part =
-        mesolight::ReliefVisibleShareMap(hf, frame, w, h, count, {}, rows);
-      // The seen share reads the whole visible-share map (cells in any row).
-      const std::vector<float> partSeen =
-        mesolight::ReliefSeenShareMap(hf, frame, share, w, h, count, {}, rows);
-      ASSERT_EQ(part.size(), share.size());
-      for (int j = 0; j < h; ++j)
-      {
-        for (int i = 0; i < w; ++i)
-        {
-          const std::size_t c = static_cast<std::size_t>(j) * w + i;
-          if (j % processes != p)
-          {
-            ASSERT_EQ(part[2 * c], 0.0f) << "row " << j << " is another process's";
-            ASSERT_EQ(partSeen[c], 0.0f);
-          }
-        }
-      }
-      if (p == processes - 1)
-      {
-        lastShareMissing = shareSum;
-      }
-      for (std::size_t k = 0; k < share.size(); ++k)
-      {
-        shareSum[k] += part[k];
-      }
-      for (std::size_t k = 0; k < seen.size(); ++k)
-      {
-        seenSum[k] += partSeen[k];
-      }
-    }
-    EXPECT_EQ(shareSum, share) << processes << " processes";
-    EXPECT_EQ(seenSum, seen) << processes << " processes";
-    EXPECT_NE(lastShareMissing, share) << "the sum without the last process's rows";
-  }
-  EXPECT_THROW(
-    mesolight::ReliefVisibleShareMap(hf, frame, w, h, count, {}, mesolight::GridRows{ 2, 2 }),
-    std::invalid_argument);
 }
 
 // The relief mapper's visible-share map (ReliefVisibleShareMap) against the analytic view factor
@@ -866,102 +602,4 @@ TEST(ReliefShading, InterReflectedFormula)
   }
   EXPECT_EQ(
     mesolight::ReliefInterReflected(ReliefInterReflection::MultiBounce, 0.6, 0.6, a, e), multi);
-}
-
-// The side walls' map (ReliefWallShareMap, the relief mapper's wall rows) against the analytic
-// view factor: a flat-bottomed slot 16 of 256 texels wide and twice as deep along the walled top
-// edge (v = 1). In the cross-section a point of the wall y below the lip, facing -v, sees the room
-// through the mouth, from the lip straight above (sin 1) to the far edge (sin y / sqrt(s^2 +
-// y^2)): V = (1 - y / sqrt(s^2 + y^2)) / 2 (crossed strings), 0.5 at the lip, 0.05 at the foot.
-// The negative case is what the mapper read on a wall before: the border texel row's share (the
-// slot bottom's, the same all down the wall). Also: the map split by rows between processes sums
-// to the whole map bit for bit (GridRows), and a wall where the border is at the surface is 1.
-TEST(ReliefShading, WallShareMapIsTheSlotWallsViewFactor)
-{
-  const int n = 256, slot = 16;
-  std::vector<float> depth;
-  for (int j = 0; j < n; ++j)
-  {
-    for (int i = 0; i < n; ++i)
-    {
-      depth.push_back(j >= n - slot ? 1.0f : 0.0f);
-    }
-  }
-  const HeightField hf(n, n, depth, HeightField::Edge::Walled);
-  ReliefFrame frame = Square();
-  frame.DepthScale = 2.0 * slot / n; // world depth 0.125: twice the slot's width
-  const double w = frame.WorldDepth();
-  // The mouth's width: the step's ramp runs between the texel centres either side of it, and the
-  // wall sees its top.
-  const double s = (slot + 0.5) / n;
-  const int count = 256, levels = 8, width = 64;
-  const std::vector<float> share = mesolight::ReliefVisibleShareMap(hf, frame, width, n, count);
-  const std::vector<float> walls =
-    mesolight::ReliefWallShareMap(hf, frame, share, width, n, levels, count);
-  ASSERT_EQ(walls.size(), static_cast<std::size_t>(4 * width * 4 * levels));
-  const auto cell = [&](int wall, int level, int i)
-  { return &walls[4 * ((static_cast<std::size_t>(wall) * levels + level) * width + i)]; };
-  double sumError = 0.0, sumBorderError = 0.0, worst = 0.0;
-  int cells = 0;
-  for (int i = 0; i < width; ++i)
-  {
-    const double u = (i + 0.5) / width;
-    if (std::abs(u - 0.5) > 0.1)
-    {
-      continue; // away from the walls at u = 0 and 1, where the slot is not infinitely long
-    }
-    const float border = share[2 * (static_cast<std::size_t>(n - 1) * width + i)];
-    for (int level = 0; level < levels; ++level)
-    {
-      const double y = w * (level + 0.5) / levels;
-      const double analytic = 0.5 * (1.0 - y / std::sqrt(s * s + y * y));
-      const float* v = cell(3, level, i); // the wall at v = 1
-      const double error = std::abs(v[0] - analytic);
-      EXPECT_NEAR(v[1], std::min(1.0, v[0] / 0.5), 0.05) << "half its hemisphere is behind";
-      EXPECT_EQ(v[3], 1.0f) << "no emitter samples: unshadowed";
-      sumError += error;
-      worst = std::max(worst, error);
-      sumBorderError += std::abs(border - analytic);
-      ++cells;
-    }
-  }
-  ASSERT_GT(cells, 40);
-  std::cout << "side wall of a slot twice as deep as wide, " << cells
-            << " cells: mean |V - view factor| " << sumError / cells << ", worst " << worst
-            << "; the border texel's share (negative) " << sumBorderError / cells << "\n";
-  EXPECT_LT(sumError / cells, 0.015);
-  EXPECT_LT(worst, 0.04);
-  EXPECT_GT(sumBorderError / cells, 5.0 * sumError / cells);
-  // The wall at u = 0 beside the flat surface (depth 0 at its border): no wall, all 1.
-  EXPECT_EQ(cell(0, 2, width / 4)[0], 1.0f);
-  EXPECT_EQ(cell(2, 5, width / 2)[2], 1.0f);
-
-  // Split by rows (GridRows) over 2 and 3 processes: the sum is the whole map; without one
-  // process's rows (the negative case) it is not.
-  const int few = 32; // directions: the split is what is checked here
-  const std::vector<float> fewShare = mesolight::ReliefVisibleShareMap(hf, frame, 8, 16, few);
-  const std::vector<float> whole =
-    mesolight::ReliefWallShareMap(hf, frame, fewShare, 8, 16, 3, few);
-  for (int processes = 2; processes <= 3; ++processes)
-  {
-    std::vector<float> sum(whole.size(), 0.0f), withoutLast;
-    for (int p = 0; p < processes; ++p)
-    {
-      if (p == processes - 1)
-      {
-        withoutLast = sum;
-      }
-      const std::vector<float> part = mesolight::ReliefWallShareMap(
-        hf, frame, fewShare, 8, 16, 3, few, {}, {}, mesolight::GridRows{ p, processes });
-      ASSERT_EQ(part.size(), whole.size());
-      for (std::size_t k = 0; k < part.size(); ++k)
-      {
-        sum[k] += part[k];
-      }
-    }
-    EXPECT_EQ(sum, whole) << processes << " processes";
-    EXPECT_NE(withoutLast, whole);
-  }
-  EXPECT_THROW(
-    mesolight::ReliefWallShareMap(hf, frame, fewShare, 9, 16, 3, few), std::invalid_argument);
 }
