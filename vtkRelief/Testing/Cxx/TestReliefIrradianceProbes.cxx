@@ -6,263 +6,57 @@
 // (reliefcore/core/ReliefShading, what `mesolight vlf render --relief` shades with), pixel by
 // pixel along the rays of the rendered pixels. Negative cases: the flat normal, the probes'
 // coefficients in the wrong place, an emitter without its cosine lobe or without its 1 / d^2.
-#include "EnvironmentMaps.h" // SH9, EvaluateSHBasis
-#include "ImageCompare.h"
+// The scene is ReliefProbesTestScene's; the side walls of a walled relief are tested in
+// TestReliefIrradianceProbesWalls.cxx.
 #include "MessageCapture.h"
-#include "ReliefScene.h"
-#include "ReliefShading.h"
-#include "TestReliefTestUtilities.h"
+#include "ReliefProbesTestScene.h"
 #include "vtkCompositeReliefMapper.h"
 #include "vtkReliefMapper.h"
+#include "vtkReliefProperty.h"
 
 #include <vtkActor.h>
-#include <vtkCamera.h>
-#include <vtkFieldData.h>
 #include <vtkFloatArray.h>
 #include <vtkImageData.h>
-#include <vtkIntArray.h>
 #include <vtkLight.h>
 #include <vtkMath.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkProperty.h>
-#include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
-#include <vtkRendererCollection.h>
 #include <vtkTrivialProducer.h>
 
-#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
-#include <functional>
+#include <cstddef>
 #include <iostream>
-#include <limits>
 #include <vector>
 
 namespace
 {
 using namespace mesolight;
+using namespace mesolight::test::probes;
 
-constexpr double DepthScale = 0.1;
-constexpr int DepthSize = 128;
-constexpr int Pixels = 160;
-
-// Smooth bumps: slopes up to about 35 degrees at this depth scale, valleys that shadow a low
-// light, and no creases (the baked normals and the exact bilinear surface's agree closely).
-double Bumps(double u, double v)
+// The largest |frame - 255 x value| over the covered pixels' channels, and how many pixels that
+// is.
+double WorstError(const Frame& frame, const glm::dvec3& value, long long& covered)
 {
-  return 0.5 +
-    0.5 * std::sin(2.0 * vtkMath::Pi() * 2.0 * u) * std::cos(2.0 * vtkMath::Pi() * 2.0 * v);
-}
-
-std::vector<float> DepthSamples(const std::function<double(double, double)>& depth)
-{
-  std::vector<float> samples(static_cast<size_t>(DepthSize) * DepthSize);
-  for (int j = 0; j < DepthSize; ++j)
+  double worst = 0.0;
+  covered = 0;
+  for (size_t p = 0; p < frame.Depth.size(); ++p)
   {
-    for (int i = 0; i < DepthSize; ++i)
+    if (frame.Covered(p))
     {
-      samples[static_cast<size_t>(j) * DepthSize + i] =
-        static_cast<float>(depth((i + 0.5) / DepthSize, (j + 0.5) / DepthSize));
-    }
-  }
-  return samples;
-}
-
-// The SH9 projection of a radiance function over the sphere (midpoint rule, uniform in z and
-// phi, i.e. in solid angle).
-SH9 Project(const std::function<glm::dvec3(const glm::dvec3&)>& radiance)
-{
-  SH9 sh;
-  const int nz = 256, nphi = 512;
-  const double dOmega = (2.0 / nz) * (2.0 * vtkMath::Pi() / nphi);
-  for (int a = 0; a < nz; ++a)
-  {
-    const double z = -1.0 + (a + 0.5) * 2.0 / nz;
-    const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
-    for (int b = 0; b < nphi; ++b)
-    {
-      const double phi = (b + 0.5) * 2.0 * vtkMath::Pi() / nphi;
-      const double d[3] = { r * std::cos(phi), r * std::sin(phi), z };
-      const glm::dvec3 l = radiance(glm::dvec3(d[0], d[1], d[2]));
-      double y[9];
-      EvaluateSHBasis(d, y);
-      for (int k = 0; k < 9; ++k)
-      {
-        for (int c = 0; c < 3; ++c)
-        {
-          sh.L[k][c] += l[c] * y[k] * dOmega;
-        }
-      }
-    }
-  }
-  return sh;
-}
-
-// The probe image of vtkReliefMapper::SetIrradianceProbesData: (9 Nu) x Nv RGB floats.
-vtkSmartPointer<vtkImageData> ProbeImage(int nu, int nv, const std::vector<SH9>& probes)
-{
-  auto image = vtkSmartPointer<vtkImageData>::New();
-  image->SetDimensions(9 * nu, nv, 1);
-  vtkNew<vtkFloatArray> values;
-  values->SetNumberOfComponents(3);
-  values->SetNumberOfTuples(static_cast<vtkIdType>(9 * nu) * nv);
-  for (int j = 0; j < nv; ++j)
-  {
-    for (int i = 0; i < nu; ++i)
-    {
-      const SH9& sh = probes[static_cast<size_t>(j) * nu + i];
-      for (int k = 0; k < 9; ++k)
-      {
-        values->SetTuple3(
-          static_cast<vtkIdType>(j) * 9 * nu + 9 * i + k, sh.L[k][0], sh.L[k][1], sh.L[k][2]);
-      }
-    }
-  }
-  image->GetPointData()->SetScalars(values);
-  return image;
-}
-
-// One window for the whole program (see TestReliefLightSet.cxx: new X windows after a
-// light-set render were seen to fail under Xvfb + llvmpipe).
-vtkRenderWindow* Window()
-{
-  static vtkSmartPointer<vtkRenderWindow> window;
-  if (!window)
-  {
-    ReliefSceneOptions size;
-    size.Width = size.Height = Pixels;
-    vtkNew<vtkRenderer> unused;
-    window = MakeOffscreenWindow(size, unused);
-    window->RemoveRenderer(unused);
-  }
-  return window;
-}
-
-struct Scene
-{
-  vtkNew<vtkReliefMapper> Mapper;
-  vtkSmartPointer<vtkActor> Actor;
-  vtkNew<vtkRenderer> Renderer;
-  HeightField Height{ 1, 1, { 0.0f } };
-  ReliefFrame Plane;
-};
-
-// The unit square carrying `depth`, white Lambertian, linear shading (no tone mapping), no
-// VTK light unless added; seen obliquely with a perspective camera, or straight down.
-void BuildScene(Scene& scene, const std::function<double(double, double)>& depth, bool oblique)
-{
-  auto relief = test::BakeRelief(test::MakeDepthMap(DepthSize, DepthSize, depth), DepthScale);
-  scene.Actor = test::UnitSquareRelief(scene.Mapper, relief, DepthScale);
-  scene.Mapper->GetReliefProperty()->ToneMappingOff();
-  scene.Mapper->GetReliefProperty()->SetExposure(1.0);
-  scene.Mapper->GetReliefProperty()->SetLinearSteps(64);
-  scene.Renderer->AutomaticLightCreationOff();
-  scene.Renderer->AddActor(scene.Actor);
-  test::LookStraightDown(scene.Renderer);
-  if (oblique)
-  {
-    vtkCamera* camera = scene.Renderer->GetActiveCamera();
-    camera->ParallelProjectionOff();
-    camera->SetFocalPoint(0.5, 0.5, -0.05);
-    camera->SetPosition(0.5, -0.45, 1.05);
-    camera->SetViewUp(0, 0, 1);
-    camera->SetViewAngle(50.0);
-    camera->SetClippingRange(0.3, 4.0);
-  }
-  scene.Height = HeightField(DepthSize, DepthSize, DepthSamples(depth));
-  scene.Plane.DepthScale = DepthScale;
-}
-
-Frame Render(Scene& scene)
-{
-  vtkRenderWindow* window = Window();
-  window->GetRenderers()->RemoveAllItems();
-  window->AddRenderer(scene.Renderer);
-  const Frame frame = CaptureFrame(window);
-  return frame;
-}
-
-// The CPU evaluation along each pixel's ray (through the pixel centre, the camera of the last
-// render): albedo / pi x (probe irradiance + emitter irradiance), as 8-bit levels; -1 where the
-// ray misses the relief.
-std::vector<double> CpuImage(
-  Scene& scene, const ReliefLighting& lighting, ReliefNormal normal, const glm::dvec3& albedo)
-{
-  std::vector<double> image(static_cast<size_t>(3) * Pixels * Pixels, -1.0);
-  vtkRenderer* ren = scene.Renderer;
-  for (int y = 0; y < Pixels; ++y)
-  {
-    for (int x = 0; x < Pixels; ++x)
-    {
-      double ends[2][4];
-      for (int e = 0; e < 2; ++e)
-      {
-        ren->SetDisplayPoint(x + 0.5, y + 0.5, e);
-        ren->DisplayToWorld();
-        ren->GetWorldPoint(ends[e]);
-        for (int c = 0; c < 3; ++c)
-        {
-          ends[e][c] /= ends[e][3];
-        }
-      }
-      const glm::dvec3 origin(ends[0][0], ends[0][1], ends[0][2]);
-      const glm::dvec3 dir =
-        glm::normalize(glm::dvec3(ends[1][0], ends[1][1], ends[1][2]) - origin);
-      const auto shade = ShadeReliefRay(scene.Height, scene.Plane, lighting, origin, dir, normal);
-      if (!shade || shade->Texture.x < 0.0 || shade->Texture.x > 1.0 || shade->Texture.y < 0.0 ||
-        shade->Texture.y > 1.0)
-      {
-        continue;
-      }
-      const glm::dvec3 radiance = albedo / vtkMath::Pi() * (shade->Indirect + shade->Direct);
+      ++covered;
       for (int c = 0; c < 3; ++c)
       {
-        image[3 * (static_cast<size_t>(y) * Pixels + x) + c] =
-          255.0 * std::min(1.0, std::max(0.0, radiance[c]));
+        worst = std::max(worst, std::abs(frame.Rgb[3 * p + c] - 255.0 * value[c]));
       }
     }
   }
-  return image;
-}
-
-// Mean |GPU - CPU| in 8-bit levels over the pixels both cover, and how many that is.
-double MeanError(const Frame& gpu, const std::vector<double>& cpu, long long* count = nullptr)
-{
-  double sum = 0.0;
-  long long n = 0;
-  for (size_t p = 0; p < gpu.Depth.size(); ++p)
-  {
-    if (!gpu.Covered(p) || cpu[3 * p] < 0.0)
-    {
-      continue;
-    }
-    for (int c = 0; c < 3; ++c)
-    {
-      sum += std::abs(gpu.Rgb[3 * p + c] - cpu[3 * p + c]);
-    }
-    ++n;
-  }
-  if (count)
-  {
-    *count = n;
-  }
-  return n > 0 ? sum / (3.0 * n) : std::numeric_limits<double>::infinity();
-}
-
-SH9 ConstantRadiance(const glm::dvec3& l)
-{
-  SH9 sh;
-  const double y00 = 0.282095;
-  for (int c = 0; c < 3; ++c)
-  {
-    sh.L[0][c] = l[c] * 4.0 * vtkMath::Pi() * y00; // the projection of a constant
-  }
-  return sh;
+  return worst;
 }
 
 // A 4 x 3 grid of probes, each a clamped-cosine lobe max(0, d . axis) of its own axis and colour:
@@ -301,20 +95,8 @@ TEST(ReliefIrradianceProbes, ConstantRadianceGivesAlbedoTimesRadiance)
   const glm::dvec3 radiance(0.9, 0.7, 0.5);
   const std::vector<SH9> probes(4, ConstantRadiance(radiance));
   scene.Mapper->SetIrradianceProbesData(ProbeImage(2, 2, probes));
-  const Frame frame = Render(scene);
-  double worst = 0.0;
   long long covered = 0;
-  for (size_t p = 0; p < frame.Depth.size(); ++p)
-  {
-    if (frame.Covered(p))
-    {
-      ++covered;
-      for (int c = 0; c < 3; ++c)
-      {
-        worst = std::max(worst, std::abs(frame.Rgb[3 * p + c] - 255.0 * albedo[c] * radiance[c]));
-      }
-    }
-  }
+  const double worst = WorstError(Render(scene), albedo * radiance, covered);
   std::cout << "[constant] " << covered << " pixels, worst |error| " << worst << " levels\n";
   EXPECT_GT(covered, Pixels * Pixels / 4);
   EXPECT_LE(worst, 1.5);
@@ -405,17 +187,23 @@ struct Emitter
   double Position[3] = { 0.5, -0.3, 0.22 };
   double Normal[3] = { 0.0, 0.9, -0.45 };
   double Intensity[3] = { 2.4, 2.0, 1.5 }; // Le x A
+
+  // The same emitter as the CPU evaluation takes it.
+  ReliefEmitterSample Sample() const
+  {
+    ReliefEmitterSample sample;
+    sample.Position = glm::dvec3(this->Position[0], this->Position[1], this->Position[2]);
+    sample.Normal = glm::normalize(glm::dvec3(this->Normal[0], this->Normal[1], this->Normal[2]));
+    sample.RadianceArea = glm::dvec3(this->Intensity[0], this->Intensity[1], this->Intensity[2]);
+    return sample;
+  }
 };
 
 ReliefLighting EmitterLighting(const Emitter& e)
 {
   ReliefLighting lighting;
   lighting.OcclusionDirections = 0;
-  ReliefEmitterSample sample;
-  sample.Position = glm::dvec3(e.Position[0], e.Position[1], e.Position[2]);
-  sample.Normal = glm::normalize(glm::dvec3(e.Normal[0], e.Normal[1], e.Normal[2]));
-  sample.RadianceArea = glm::dvec3(e.Intensity[0], e.Intensity[1], e.Intensity[2]);
-  lighting.Emitters.push_back(sample);
+  lighting.Emitters.push_back(e.Sample());
   return lighting;
 }
 } // namespace
@@ -448,8 +236,8 @@ TEST(ReliefIrradianceProbes, EmitterLightMatchesTheCpuEvaluation)
 
   // The centre's distance and emitter cosine, to scale the wrong lights to agree there.
   const glm::dvec3 centre(0.5, 0.5, 0.0);
-  const glm::dvec3 position(e.Position[0], e.Position[1], e.Position[2]);
-  const glm::dvec3 normal = glm::normalize(glm::dvec3(e.Normal[0], e.Normal[1], e.Normal[2]));
+  const glm::dvec3 position = e.Sample().Position;
+  const glm::dvec3 normal = e.Sample().Normal;
   const double d = glm::length(centre - position);
   const double cosine = glm::dot(normal, (centre - position) / d);
   // Without the lobe: a plain point light, intensity times the centre's cosine.
@@ -506,8 +294,9 @@ TEST(ReliefIrradianceProbes, AreaEmitterShadowFromTheMapMatchesTheCpuPenumbra)
   Scene scene;
   BuildScene(scene, Bumps, true);
   const Emitter e;
-  const glm::dvec3 centre(e.Position[0], e.Position[1], e.Position[2]);
-  const glm::dvec3 normal = glm::normalize(glm::dvec3(e.Normal[0], e.Normal[1], e.Normal[2]));
+  const ReliefEmitterSample whole = e.Sample();
+  const glm::dvec3 centre = whole.Position;
+  const glm::dvec3 normal = whole.Normal;
   const glm::dvec3 side(1.0, 0.0, 0.0);
   const glm::dvec3 up = glm::cross(normal, side);
   ReliefLighting area = EmitterLighting(e);
@@ -520,7 +309,7 @@ TEST(ReliefIrradianceProbes, AreaEmitterShadowFromTheMapMatchesTheCpuPenumbra)
       sample.Position =
         centre + 0.15 * ((a + 0.5) / 4.0 - 0.5) * side + 0.15 * ((b + 0.5) / 4.0 - 0.5) * up;
       sample.Normal = normal;
-      sample.RadianceArea = glm::dvec3(e.Intensity[0], e.Intensity[1], e.Intensity[2]) / 16.0;
+      sample.RadianceArea = whole.RadianceArea / 16.0;
       area.Emitters.push_back(sample);
     }
   }
@@ -533,23 +322,9 @@ TEST(ReliefIrradianceProbes, AreaEmitterShadowFromTheMapMatchesTheCpuPenumbra)
   const auto probesWith = [&shadow](int components)
   {
     vtkSmartPointer<vtkImageData> probes = ProbeImage(1, 1, { ConstantRadiance(glm::dvec3(0.0)) });
-    vtkNew<vtkFloatArray> share;
-    share->SetName("ReliefVisibleShare");
-    share->SetNumberOfComponents(components);
-    share->SetNumberOfTuples(static_cast<vtkIdType>(shadow.size()));
-    for (vtkIdType t = 0; t < share->GetNumberOfTuples(); ++t)
-    {
-      for (int c = 0; c < components; ++c)
-      {
-        share->SetComponent(t, c, c == 3 ? shadow[static_cast<std::size_t>(t)] : 1.0);
-      }
-    }
-    vtkNew<vtkIntArray> size;
-    size->SetName("ReliefVisibleShareSize");
-    size->InsertNextValue(DepthSize);
-    size->InsertNextValue(DepthSize);
-    probes->GetFieldData()->AddArray(share);
-    probes->GetFieldData()->AddArray(size);
+    AttachVisibleShare(probes, DepthSize, DepthSize, static_cast<vtkIdType>(shadow.size()),
+      components,
+      [&shadow](vtkIdType t, int c) { return c == 3 ? shadow[static_cast<std::size_t>(t)] : 1.0; });
     return probes;
   };
   scene.Mapper->SetIrradianceProbesData(probesWith(4));
@@ -739,26 +514,9 @@ TEST(ReliefIrradianceProbes, VisibleShareAndLightVisibilityFollowTheCpuFormula)
   const auto attach = [&probes, visible, sky, seenShare](
                         int w, int h, vtkIdType tuples, int components = 3)
   {
-    vtkNew<vtkFloatArray> share;
-    share->SetName("ReliefVisibleShare");
-    share->SetNumberOfComponents(components);
-    share->SetNumberOfTuples(tuples);
-    for (vtkIdType t = 0; t < tuples; ++t)
-    {
-      share->SetComponent(t, 0, visible);
-      share->SetComponent(t, 1, sky);
-      if (components == 3)
-      {
-        share->SetComponent(t, 2, seenShare);
-      }
-    }
-    vtkNew<vtkIntArray> size;
-    size->SetName("ReliefVisibleShareSize");
-    size->InsertNextValue(w);
-    size->InsertNextValue(h);
-    probes->GetFieldData()->AddArray(share);
-    probes->GetFieldData()->AddArray(size);
-    probes->Modified();
+    const double values[3] = { visible, sky, seenShare };
+    AttachVisibleShare(
+      probes, w, h, tuples, components, [&values](vtkIdType, int c) { return values[c]; });
   };
   attach(4, 4, 16);
   scene.Mapper->SetIrradianceProbesData(probes);
@@ -770,41 +528,24 @@ TEST(ReliefIrradianceProbes, VisibleShareAndLightVisibilityFollowTheCpuFormula)
     (sky * vtkMath::Pi() * radiance +
       ReliefInterReflected(
         ReliefInterReflection::MultiBounce, visible, albedo, vtkMath::Pi() * radiance));
-  const auto worstError = [](const Frame& frame, const glm::dvec3& value, long long& covered)
-  {
-    double worst = 0.0;
-    covered = 0;
-    for (size_t p = 0; p < frame.Depth.size(); ++p)
-    {
-      if (frame.Covered(p))
-      {
-        ++covered;
-        for (int c = 0; c < 3; ++c)
-        {
-          worst = std::max(worst, std::abs(frame.Rgb[3 * p + c] - 255.0 * value[c]));
-        }
-      }
-    }
-    return worst;
-  };
   long long covered = 0;
-  const double worst = worstError(Render(scene), expected, covered);
+  const double worst = WorstError(Render(scene), expected, covered);
   std::cout << "[visible share] " << covered << " pixels, worst |error| " << worst << " levels\n";
   EXPECT_GT(covered, Pixels * Pixels / 4);
   EXPECT_LE(worst, 1.5);
   // Negative: the seen share ignored (the pair's series) is off by more than the quantization.
-  EXPECT_GT(worstError(Render(scene), expectedPairs, covered), 4.0);
+  EXPECT_GT(WorstError(Render(scene), expectedPairs, covered), 4.0);
   // A map of pairs: the series at the point's own share.
   probes = ProbeImage(1, 1, { ConstantRadiance(radiance) });
   attach(4, 4, 16, 2);
   scene.Mapper->SetIrradianceProbesData(probes);
-  const double worstPairs = worstError(Render(scene), expectedPairs, covered);
+  const double worstPairs = WorstError(Render(scene), expectedPairs, covered);
   std::cout << "[visible share pairs] worst |error| " << worstPairs << " levels\n";
   EXPECT_LE(worstPairs, 1.5);
   // Negative: without the map the relief is albedo x L, far from the occluded value.
   vtkSmartPointer<vtkImageData> plain = ProbeImage(1, 1, { ConstantRadiance(radiance) });
   scene.Mapper->SetIrradianceProbesData(plain);
-  EXPECT_GT(worstError(Render(scene), expected, covered), 10.0);
+  EXPECT_GT(WorstError(Render(scene), expected, covered), 10.0);
 
   // The scene's visibility of light 0 (a fourth component of 0.25): a quarter of its light.
   // Compared against the same light fully visible (a fourth component of 1), no probe light.
@@ -853,159 +594,4 @@ TEST(ReliefIrradianceProbes, VisibleShareAndLightVisibilityFollowTheCpuFormula)
   Render(scene);
   EXPECT_TRUE(messages->HasError("visible share holds 16 values for a 4 x 5 grid"))
     << messages->AllErrors();
-}
-
-// The side wall of a walled relief (a slot twice as deep as wide along the top edge, v = 1) seen
-// from above and in front, so the view rays meet the wall from its lip to its foot: lit by probes
-// of the room in front of the plane, albedo 0.7 (the multi-bounce inter-reflection), against the
-// CPU evaluation on the exact intersector (ShadeReliefRay: the wall's visible share, its
-// radiance weighting and the seen share marched at each pixel's hit). The mapper reads the wall's
-// own values from the map's wall rows (ReliefWallShareMap); the negative case, the map without
-// them, shades the wall with the texel row beside the border (the slot bottom's share, constant
-// down the wall).
-TEST(ReliefIrradianceProbes, SideWallSharesFromTheMapMatchTheCpuWall)
-{
-  // The bench's top slot (scripts/bench-vlf-relief.sh's bricks): 6 of 128 texels at depth 1 (0.1
-  // of the square deep) and a 12-texel bevel below it, which the map's cells resolve (a one-texel
-  // step would be read from the map's cells either side of it by the seen share).
-  constexpr double Slot = 6.0 / 128.0, Bevel = 12.0 / 128.0;
-  const auto slot = [](double, double v)
-  {
-    return v > 1.0 - Slot      ? 1.0
-      : v > 1.0 - Slot - Bevel ? 0.05 + 0.95 * (v - (1.0 - Slot - Bevel)) / Bevel
-                               : 0.05;
-  };
-  Scene scene;
-  BuildScene(scene, slot, false);
-  scene.Height.SetEdgeRule(HeightField::Edge::Walled);
-  scene.Mapper->GetReliefProperty()->SilhouettesOff(); // the walled edge rule
-  scene.Mapper->GetReliefProperty()->SetLinearSteps(128);
-  const glm::dvec3 albedo(0.7);
-  scene.Actor->GetProperty()->SetColor(albedo.x, albedo.y, albedo.z);
-  vtkCamera* camera = scene.Renderer->GetActiveCamera();
-  camera->ParallelProjectionOff();
-  camera->SetFocalPoint(0.5, 0.975, -0.05);
-  camera->SetPosition(0.5, 0.62, 0.9);
-  camera->SetViewUp(0, 1, 0);
-  camera->SetViewAngle(10.0);
-  camera->SetClippingRange(0.3, 4.0);
-
-  // The room: radiance from in front of the plane only, brighter overhead and toward -v.
-  ReliefLighting lighting;
-  lighting.Albedo = albedo;
-  lighting.Probes.push_back(Project([](const glm::dvec3& d)
-    { return d.z > 0.0 ? glm::dvec3(0.5 + 0.3 * d.z - 0.2 * d.y, 0.45, 0.4) : glm::dvec3(0.0); }));
-  // The map as vtkLightFieldReliefSurface makes it (ReliefVisibleShareGrid's values).
-  const int count = lighting.OcclusionDirections;
-  const std::vector<float> share =
-    ReliefVisibleShareMap(scene.Height, scene.Plane, DepthSize, DepthSize, count);
-  const std::vector<float> seen =
-    ReliefSeenShareMap(scene.Height, scene.Plane, share, DepthSize, DepthSize, count);
-  constexpr int Levels = 8;
-  const std::vector<float> walls = ReliefWallShareMap(
-    scene.Height, scene.Plane, share, DepthSize, DepthSize, Levels, count, {}, {}, {}, &lighting);
-  const auto probesWith = [&](bool withWalls)
-  {
-    vtkSmartPointer<vtkImageData> probes = ProbeImage(1, 1, lighting.Probes);
-    vtkNew<vtkFloatArray> map;
-    map->SetName("ReliefVisibleShare");
-    map->SetNumberOfComponents(4);
-    map->SetNumberOfTuples(static_cast<vtkIdType>(seen.size()));
-    for (std::size_t c = 0; c < seen.size(); ++c)
-    {
-      map->SetTuple4(static_cast<vtkIdType>(c), share[2 * c], share[2 * c + 1], seen[c], 1.0);
-    }
-    vtkNew<vtkIntArray> size;
-    size->SetName("ReliefVisibleShareSize");
-    size->InsertNextValue(DepthSize);
-    size->InsertNextValue(DepthSize);
-    probes->GetFieldData()->AddArray(map);
-    probes->GetFieldData()->AddArray(size);
-    if (withWalls)
-    {
-      vtkNew<vtkFloatArray> wall;
-      wall->SetName("ReliefWallShare");
-      wall->SetNumberOfComponents(4);
-      wall->SetNumberOfTuples(static_cast<vtkIdType>(walls.size() / 4));
-      std::copy(walls.begin(), walls.end(), wall->GetPointer(0));
-      probes->GetFieldData()->AddArray(wall);
-    }
-    return probes;
-  };
-  scene.Mapper->SetIrradianceProbesData(probesWith(true));
-  const Frame mapped = Render(scene);
-  scene.Mapper->SetIrradianceProbesData(probesWith(false));
-  const Frame border = Render(scene);
-
-  // The CPU along each pixel's ray; the wall's pixels are those whose exact hit is on it.
-  double wallMapped = 0.0, wallBorder = 0.0, signedMapped = 0.0, signedBorder = 0.0;
-  double restMapped = 0.0, restChange = 0.0;
-  long long wallPixels = 0, restPixels = 0;
-  vtkRenderer* ren = scene.Renderer;
-  for (int y = 0; y < Pixels; ++y)
-  {
-    for (int x = 0; x < Pixels; ++x)
-    {
-      const size_t p = static_cast<size_t>(y) * Pixels + x;
-      double ends[2][4];
-      for (int e = 0; e < 2; ++e)
-      {
-        ren->SetDisplayPoint(x + 0.5, y + 0.5, e);
-        ren->DisplayToWorld();
-        ren->GetWorldPoint(ends[e]);
-        for (int c = 0; c < 3; ++c)
-        {
-          ends[e][c] /= ends[e][3];
-        }
-      }
-      const glm::dvec3 origin(ends[0][0], ends[0][1], ends[0][2]);
-      const glm::dvec3 dir =
-        glm::normalize(glm::dvec3(ends[1][0], ends[1][1], ends[1][2]) - origin);
-      const auto shade = ShadeReliefRay(scene.Height, scene.Plane, lighting, origin, dir);
-      if (!shade || !mapped.Covered(p) || shade->Texture.x < 0.0 || shade->Texture.x > 1.0 ||
-        shade->Texture.y < 0.0 || shade->Texture.y > 1.0)
-      {
-        continue;
-      }
-      const glm::dvec3 cpu =
-        255.0 * glm::clamp(albedo / vtkMath::Pi() * (shade->Indirect + shade->Direct), 0.0, 1.0);
-      const bool onWall =
-        shade->Texture.y > 1.0 - 1e-9 && shade->Texture.z > 0.02 && shade->Normal.y < -0.99;
-      for (int c = 0; c < 3; ++c)
-      {
-        const double m = mapped.Rgb[3 * p + c] - cpu[c], b = border.Rgb[3 * p + c] - cpu[c];
-        if (onWall)
-        {
-          wallMapped += std::abs(m) / 3.0;
-          wallBorder += std::abs(b) / 3.0;
-          signedMapped += m / 3.0;
-          signedBorder += b / 3.0;
-        }
-        else
-        {
-          restMapped += std::abs(m) / 3.0;
-          restChange += std::abs(mapped.Rgb[3 * p + c] - border.Rgb[3 * p + c]) / 3.0;
-        }
-      }
-      (onWall ? wallPixels : restPixels) += 1;
-    }
-  }
-  const double n = static_cast<double>(std::max<long long>(1, wallPixels));
-  wallMapped /= n;
-  wallBorder /= n;
-  signedMapped /= n;
-  signedBorder /= n;
-  restMapped /= static_cast<double>(std::max<long long>(1, restPixels));
-  restChange /= static_cast<double>(std::max<long long>(1, restPixels));
-  std::cout << "[side wall] " << wallPixels << " wall pixels: mean |GPU - CPU| " << wallMapped
-            << " levels (signed " << signedMapped << ") with the wall rows, " << wallBorder
-            << " (signed " << signedBorder << ") with the border texel's (negative); " << restPixels
-            << " other pixels: " << restMapped << " levels, " << restChange
-            << " changed by the wall rows\n";
-  EXPECT_GT(wallPixels, Pixels * Pixels / 10);
-  EXPECT_GT(restPixels, Pixels * Pixels / 10);
-  EXPECT_LT(wallMapped, 2.5);
-  EXPECT_GT(wallBorder, 2.0 * wallMapped);
-  EXPECT_GT(wallBorder, 4.0);
-  EXPECT_LT(restChange, 0.1); // the height field's pixels read the same cells as before
 }
