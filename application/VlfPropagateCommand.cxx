@@ -191,6 +191,10 @@ int Propagate(const std::vector<std::string>& args)
     "or quartered where it varies between texels, on top of the contact texels; the default with "
     "automatic --rays, the final gather and one process (this asks for it with given --rays)");
   cl.AddFlag("--no-adaptive-texels", "no first pass: the contact texels alone");
+  cl.AddValue("--adaptive-budget", "F",
+    "the adaptive texels' refinements beyond the contact texels add at most F times the contact "
+    "texels' gathered texels, best gain per texel first; negative: unbounded",
+    "0.5");
   cl.AddValue("--tolerance", "X",
     "shoot until at most this share of the emitted flux is left unshot", "0.01");
   cl.AddValue("--max-iterations", "K", "most iterations --tolerance may take (in total)", "100");
@@ -240,6 +244,11 @@ int Propagate(const std::vector<std::string>& args)
   vlf::FinalGatherOptions gatherOptions;
   const bool gather = !cl.Has("--no-gather");
   if (!cl.GetInt("--gather-rays", 1, 1 << 20, gatherOptions.IndirectRays, error))
+  {
+    return cl.UsageError(error);
+  }
+  double adaptiveBudget = vlf::AdaptiveTexelOptions().GatherBudget;
+  if (!cl.GetDouble("--adaptive-budget", -1.0, 1e6, adaptiveBudget, error))
   {
     return cl.UsageError(error);
   }
@@ -459,6 +468,7 @@ int Propagate(const std::vector<std::string>& args)
       {
         vlf::AdaptiveTexelOptions adaptiveOptions;
         adaptiveOptions.Progress = PrintedProgress("first pass for the texels");
+        adaptiveOptions.GatherBudget = adaptiveBudget;
         vlf::AdaptiveTexelReport report;
         settings = vlf::ChooseAdaptiveTexels(scene, settings, adaptiveOptions, &report);
         std::cout << "adaptive texels: " << report.Describe() << "\n";

@@ -167,6 +167,17 @@ public:
   ///@}
 
   ///@{
+  /**
+   * With AdaptiveTexels, the refinements beyond the contact texels add at most this fraction of
+   * the contact texels' gathered texels (the final gather's rays grow with them), best gain per
+   * texel first (mesolight::vlf::AdaptiveTexelOptions::GatherBudget, default 0.5, as
+   * `mesolight vlf propagate --adaptive-budget`); negative: unbounded.
+   */
+  vtkSetMacro(AdaptiveTexelsBudget, double);
+  vtkGetMacro(AdaptiveTexelsBudget, double);
+  ///@}
+
+  ///@{
   /** Memory budget in bytes (default 4 GiB). */
   vtkSetMacro(MemoryBudget, vtkTypeInt64);
   vtkGetMacro(MemoryBudget, vtkTypeInt64);
@@ -288,6 +299,7 @@ private:
   int FinalGatherRays = 1024;    // mesolight::vlf::FinalGatherOptions::IndirectRays
   int ContactTexelHalvings = -1; // mesolight::vlf::AutomaticContactTexelHalvings
   bool AdaptiveTexels = true;
+  double AdaptiveTexelsBudget = 0.5; // mesolight::vlf::AdaptiveTexelOptions::GatherBudget
   // The sentence refusing ContactTexelHalvings outside [-1, 3], empty when it is in range.
   std::string CheckContactTexelHalvings() const;
   // The final gather (when on) with progress from `begin` to 1, then the snapshot written again;
