@@ -390,10 +390,10 @@ bool AdaptiveOptions(const std::string& text, vlf::AdaptiveTexelOptions& options
     options.GatherBudget = -1.0;
     return true;
   }
-  if (text == "auto-adaptive-cheap")
+  if (text == "auto-adaptive-513")
   {
-    options.FirstPassDirections = 129; // a cheaper first pass
-    options.FirstPassIndirectRays = 128;
+    options.FirstPassDirections = 513; // the first pass before it was made cheaper
+    options.FirstPassIndirectRays = 256;
     return true;
   }
   if (text == "auto-adaptive-coarsen")
@@ -422,7 +422,7 @@ bool AdaptiveOptions(const std::string& text, vlf::AdaptiveTexelOptions& options
 // halvings, coarsening, interior rows only), "auto-refine" (the first rule never coarser),
 // "auto-adaptive-unbounded" (the rule without its gather budget), "auto-adaptive-bF" (budget F),
 // "auto-adaptive-coarsen" (the rule, flat low-noise surfaces doubled as the first rule did),
-// "auto-adaptive-cheap" (the rule's first pass at 129 directions and 128 indirect rays),
+// "auto-adaptive-513" (the rule's first pass at 513 directions and 256 indirect rays, as before),
 // "KxN" or "KxNtF" (texel = F x the cell side).
 bool ParseSettings(const std::string& text, const TriangleScene& scene, std::uint64_t budget,
   vlf::LightFieldSettings& settings, std::string& note)
@@ -555,7 +555,8 @@ int RunVlfAccuracyBenchmark(const std::vector<std::string>& args)
     "instead of the contact texels, coarser where flat), auto-refine (the first rule never "
     "coarser), auto-adaptive-unbounded (auto-adaptive without its gather budget), "
     "auto-adaptive-bF (gather budget F), auto-adaptive-coarsen (auto-adaptive, flat low-noise "
-    "surfaces coarser), auto-adaptive-cheap (its first pass at 129 directions, 128 rays), KxN (K "
+    "surfaces coarser), auto-adaptive-513 (its first pass at 513 directions, 256 rays, as before), "
+    "KxN (K "
     "directions, N lines per side) "
     "or KxNtF (texel F x the cell side)",
     "513x32,auto");
@@ -719,7 +720,7 @@ int RunVlfAccuracyBenchmark(const std::vector<std::string>& args)
         return cl.UsageError("--settings: '" + text +
           "' is not auto, KxN or KxNtF (or auto-uniform, auto-adaptive, auto-adaptive-first, "
           "auto-refine, auto-adaptive-unbounded, auto-adaptive-bF, auto-adaptive-coarsen, "
-          "auto-adaptive-cheap)");
+          "auto-adaptive-513)");
       }
       if (!note.empty())
       {
