@@ -375,21 +375,69 @@ RgbImage FieldImage(const vlf::LightField& field, const std::vector<PixelHit>& h
   return out;
 }
 
+// The adaptive texels' options a setting names (false: not one of them or a bad budget).
+bool AdaptiveOptions(const std::string& text, vlf::AdaptiveTexelOptions& options)
+{
+  options = vlf::AdaptiveTexelOptions();
+  if (text == "auto-adaptive-first" || text == "auto-refine")
+  {
+    options = vlf::FirstRuleAdaptiveTexelOptions();
+    options.Coarsen = text == "auto-refine" ? -1.0 : options.Coarsen;
+    return true;
+  }
+  if (text == "auto-adaptive-unbounded")
+  {
+    options.GatherBudget = -1.0;
+    return true;
+  }
+  if (text == "auto-adaptive-513")
+  {
+    options.FirstPassDirections = 513; // the first pass before it was made cheaper
+    options.FirstPassIndirectRays = 256;
+    return true;
+  }
+  if (text == "auto-adaptive-coarsen")
+  {
+    options.Coarsen = vlf::FirstRuleAdaptiveTexelOptions().Coarsen; // with the guards of now
+    return true;
+  }
+  double fraction = 0.0;
+  char tail = 0;
+  if (text.rfind("auto-adaptive-b", 0) == 0)
+  {
+    if (std::sscanf(text.c_str() + 15, "%lf%c", &fraction, &tail) != 1 || !(fraction >= 0.0))
+    {
+      return false;
+    }
+    options.GatherBudget = fraction;
+    return true;
+  }
+  return text == "auto-adaptive" || text.rfind("auto-adaptive", 0) != 0;
+}
+
 // "auto", "auto-uniform" (the automatic choice without its finer texels on contact surfaces),
 // "auto-adaptive" (auto's lines, base texels and contact halvings, texels per surface refined
 // from a first pass on top of them: AdaptiveTexels.h; the caller chooses them),
 // "auto-adaptive-first" (the first rule: auto-uniform's, the levels instead of the contact
 // halvings, coarsening, interior rows only), "auto-refine" (the first rule never coarser),
+// "auto-adaptive-unbounded" (the rule without its gather budget), "auto-adaptive-bF" (budget F),
+// "auto-adaptive-coarsen" (the rule, flat low-noise surfaces doubled as the first rule did),
+// "auto-adaptive-513" (the rule's first pass at 513 directions and 256 indirect rays, as before),
 // "KxN" or "KxNtF" (texel = F x the cell side).
 bool ParseSettings(const std::string& text, const TriangleScene& scene, std::uint64_t budget,
   vlf::LightFieldSettings& settings, std::string& note)
 {
-  if (text == "auto" || text == "auto-uniform" || text == "auto-adaptive" ||
-    text == "auto-adaptive-first" || text == "auto-refine")
+  if (text == "auto" || text == "auto-uniform" || text.rfind("auto-adaptive", 0) == 0 ||
+    text == "auto-refine")
   {
+    vlf::AdaptiveTexelOptions options;
+    if (!AdaptiveOptions(text, options))
+    {
+      return false;
+    }
     vlf::AutomaticLimits limits;
     limits.MemoryBudget = budget;
-    if (text != "auto" && text != "auto-adaptive")
+    if (text == "auto-uniform" || text == "auto-adaptive-first" || text == "auto-refine")
     {
       limits.ContactTexelHalvings = 0;
     }
@@ -505,7 +553,11 @@ int RunVlfAccuracyBenchmark(const std::vector<std::string>& args)
     "auto-adaptive (auto's, texels refined per surface from the light of a first pass on top of "
     "the contact texels), auto-adaptive-first (the first rule: auto-uniform's, texels per surface "
     "instead of the contact texels, coarser where flat), auto-refine (the first rule never "
-    "coarser), KxN (K directions, N lines per side) "
+    "coarser), auto-adaptive-unbounded (auto-adaptive without its gather budget), "
+    "auto-adaptive-bF (gather budget F), auto-adaptive-coarsen (auto-adaptive, flat low-noise "
+    "surfaces coarser), auto-adaptive-513 (its first pass at 513 directions, 256 rays, as before), "
+    "KxN (K "
+    "directions, N lines per side) "
     "or KxNtF (texel F x the cell side)",
     "513x32,auto");
   cl.AddFlag(
@@ -667,7 +719,8 @@ int RunVlfAccuracyBenchmark(const std::vector<std::string>& args)
       {
         return cl.UsageError("--settings: '" + text +
           "' is not auto, KxN or KxNtF (or auto-uniform, auto-adaptive, auto-adaptive-first, "
-          "auto-refine)");
+          "auto-refine, auto-adaptive-unbounded, auto-adaptive-bF, auto-adaptive-coarsen, "
+          "auto-adaptive-513)");
       }
       if (!note.empty())
       {
@@ -677,17 +730,12 @@ int RunVlfAccuracyBenchmark(const std::vector<std::string>& args)
       try
       {
         const Clock::time_point start = Clock::now();
-        if (text == "auto-adaptive" || text == "auto-adaptive-first" || text == "auto-refine")
+        if (text.rfind("auto-adaptive", 0) == 0 || text == "auto-refine")
         {
           // The first pass's time counts as the build's.
           vlf::AdaptiveTexelReport report;
-          vlf::AdaptiveTexelOptions adaptive = text == "auto-adaptive"
-            ? vlf::AdaptiveTexelOptions()
-            : vlf::FirstRuleAdaptiveTexelOptions();
-          if (text == "auto-refine")
-          {
-            adaptive.Coarsen = -1.0; // never
-          }
+          vlf::AdaptiveTexelOptions adaptive;
+          AdaptiveOptions(text, adaptive);
           settings = vlf::ChooseAdaptiveTexels(s.Scene, settings, adaptive, &report);
           std::printf("# %s %s: %s, first pass %s\n", name.c_str(), text.c_str(),
             report.Describe().c_str(), FormatBytes(report.FirstPassBytes).c_str());

@@ -188,9 +188,13 @@ int Propagate(const std::vector<std::string>& args)
     "auto");
   cl.AddFlag("--adaptive-texels",
     "texels per surface refined from the light of a cheap first pass (AdaptiveTexels.h), halved "
-    "or quartered where it varies between texels, on top of the contact texels; the default with "
-    "automatic --rays, the final gather and one process (this asks for it with given --rays)");
-  cl.AddFlag("--no-adaptive-texels", "no first pass: the contact texels alone");
+    "or quartered where it varies between texels, on top of the contact texels, within "
+    "--adaptive-budget; with the final gather and one process");
+  cl.AddFlag("--no-adaptive-texels", "no first pass: the contact texels alone (the default)");
+  cl.AddValue("--adaptive-budget", "F",
+    "the adaptive texels' refinements beyond the contact texels add at most F times the contact "
+    "texels' gathered texels, best gain per texel first; negative: unbounded",
+    "0.5");
   cl.AddValue("--tolerance", "X",
     "shoot until at most this share of the emitted flux is left unshot", "0.01");
   cl.AddValue("--max-iterations", "K", "most iterations --tolerance may take (in total)", "100");
@@ -243,6 +247,11 @@ int Propagate(const std::vector<std::string>& args)
   {
     return cl.UsageError(error);
   }
+  double adaptiveBudget = vlf::AdaptiveTexelOptions().GatherBudget;
+  if (!cl.GetDouble("--adaptive-budget", -1.0, 1e6, adaptiveBudget, error))
+  {
+    return cl.UsageError(error);
+  }
   if (cl.Has("--iterations") && (cl.Has("--tolerance") || cl.Has("--max-iterations")))
   {
     return cl.UsageError("--iterations (a fixed count) excludes --tolerance and --max-iterations");
@@ -291,9 +300,9 @@ int Propagate(const std::vector<std::string>& args)
       "--adaptive-texels excludes --resume (the field keeps its texels) and --no-gather (it "
       "measures the gathered light)");
   }
-  // By default with the automatic resolution (as the contact texels), the gather and a new field.
-  bool adaptive = cl.Has("--adaptive-texels") ||
-    (!cl.Has("--no-adaptive-texels") && rays == 0 && gather && !resume);
+  // Only when asked for: measured, the first pass and the refinement cost more time than the
+  // error they save (docs/vlf.md, "Texels from the light").
+  const bool adaptive = cl.Has("--adaptive-texels");
   if (vlf::FileExists(out) && !vlf::IsSnapshotFile(out))
   {
     std::cerr << "mesolight vlf propagate: '" << out
@@ -321,19 +330,11 @@ int Propagate(const std::vector<std::string>& args)
   const bool root = reducer.Rank() == 0;
   if (adaptive && distributed)
   {
-    if (cl.Has("--adaptive-texels"))
-    {
-      if (root)
-      {
-        std::cerr << "mesolight vlf propagate: --adaptive-texels runs in one process only\n";
-      }
-      return 1;
-    }
-    adaptive = false; // the default: the contact texels alone (the first pass is serial)
     if (root)
     {
-      std::cout << "adaptive texels: off under MPI (the first pass runs in one process)\n";
+      std::cerr << "mesolight vlf propagate: --adaptive-texels runs in one process only\n";
     }
+    return 1;
   }
   int threadsPerRank = 0; // 0: vtkSMPTools' default (every hardware thread)
   if (distributed && !std::getenv("VTK_SMP_MAX_THREADS"))
@@ -459,6 +460,7 @@ int Propagate(const std::vector<std::string>& args)
       {
         vlf::AdaptiveTexelOptions adaptiveOptions;
         adaptiveOptions.Progress = PrintedProgress("first pass for the texels");
+        adaptiveOptions.GatherBudget = adaptiveBudget;
         vlf::AdaptiveTexelReport report;
         settings = vlf::ChooseAdaptiveTexels(scene, settings, adaptiveOptions, &report);
         std::cout << "adaptive texels: " << report.Describe() << "\n";

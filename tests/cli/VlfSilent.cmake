@@ -34,6 +34,21 @@ cli_run(TRUE vlf propagate --directions 33 --rays 16 --iterations 1 --adaptive-t
 if (NOT last_output MATCHES "texels; [1-9][0-9]* contact surfaces")
   message(FATAL_ERROR "the adaptive texels left out the contact texels: ${last_output}")
 endif ()
+# The gather budget: 0 leaves no refinement beyond the contact texels (the report says so);
+# unbounded it refines (the negative); a budget that is not a number is refused, naming it.
+cli_run(TRUE vlf propagate --directions 33 --rays 16 --iterations 1 --adaptive-texels
+  --contact-texels 1 --adaptive-budget 0 --out "${WORK}/adaptive-budget.vlf")
+if (NOT last_output MATCHES " 0 finer than the contact texels alone")
+  message(FATAL_ERROR "--adaptive-budget 0 refined beyond the contact texels: ${last_output}")
+endif ()
+cli_run(TRUE vlf propagate --directions 33 --rays 16 --iterations 1 --adaptive-texels
+  --contact-texels 1 --adaptive-budget -1 --out "${WORK}/adaptive-unbounded.vlf")
+if (last_output MATCHES " 0 finer than the contact texels alone")
+  message(FATAL_ERROR "unbounded, nothing refined beyond the contact texels: ${last_output}")
+endif ()
+cli_expect_error(2 "--adaptive-budget"
+  vlf propagate --directions 33 --rays 16 --iterations 1 --adaptive-texels --adaptive-budget x
+  --out "${WORK}/adaptive-refused.vlf")
 # Given rays: no first pass unless asked for.
 cli_run(TRUE vlf propagate --directions 33 --rays 16 --iterations 1 --out "${WORK}/given.vlf")
 if (last_output MATCHES "adaptive texels:")

@@ -255,6 +255,7 @@ int vtkVirtualLightField::RequestData(
         begin = 0.5 * buildShare;
         vlf::AdaptiveTexelOptions adaptive;
         adaptive.Progress = mesolight::AlgorithmProgress(this, 0.0, begin);
+        adaptive.GatherBudget = this->AdaptiveTexelsBudget;
         settings = vlf::ChooseAdaptiveTexels(scene, settings, adaptive);
       }
       field = vlf::LightField::Build(
@@ -710,6 +711,7 @@ void vtkVirtualLightField::PrintSelf(ostream& os, vtkIndent indent)
             : "")
      << "\n";
   os << indent << "AdaptiveTexels: " << this->AdaptiveTexels << "\n";
+  os << indent << "AdaptiveTexelsBudget: " << this->AdaptiveTexelsBudget << "\n";
   os << indent << "PropagationCount: " << this->PropagationCount << "\n";
   os << indent << "LightField: "
      << (this->Field ? std::to_string(this->Field->IterationsDone) + " iterations done" : "(none)")

@@ -153,17 +153,28 @@ public:
 
   ///@{
   /**
-   * Texels refined from the light (default on; mesolight::vlf::ChooseAdaptiveTexels, as
-   * `mesolight vlf propagate` by default): with automatic RaysPerSide and FinalGather, a cheap
-   * first pass measures per surface how much its light varies between texels, and the surfaces
-   * where it varies get texels a half or a quarter of the others', on top of the contact texels
-   * (ContactTexelHalvings). Off: the contact texels alone. Not with given RaysPerSide, without
-   * FinalGather, when resuming a snapshot or with DistributeDirections over several processes
-   * (the first pass runs in one).
+   * Texels refined from the light (default off; mesolight::vlf::ChooseAdaptiveTexels, as
+   * `mesolight vlf propagate --adaptive-texels`): with automatic RaysPerSide and FinalGather, a
+   * cheap first pass measures per surface how much its light varies between texels, and the
+   * surfaces where it varies get texels a half or a quarter of the others', on top of the contact
+   * texels (ContactTexelHalvings). Off: the contact texels alone. Not with given RaysPerSide,
+   * without FinalGather, when resuming a snapshot or with DistributeDirections over several
+   * processes (the first pass runs in one).
    */
   vtkSetMacro(AdaptiveTexels, bool);
   vtkGetMacro(AdaptiveTexels, bool);
   vtkBooleanMacro(AdaptiveTexels, bool);
+  ///@}
+
+  ///@{
+  /**
+   * With AdaptiveTexels, the refinements beyond the contact texels add at most this fraction of
+   * the contact texels' gathered texels (the final gather's rays grow with them), best gain per
+   * texel first (mesolight::vlf::AdaptiveTexelOptions::GatherBudget, default 0.5, as
+   * `mesolight vlf propagate --adaptive-budget`); negative: unbounded.
+   */
+  vtkSetMacro(AdaptiveTexelsBudget, double);
+  vtkGetMacro(AdaptiveTexelsBudget, double);
   ///@}
 
   ///@{
@@ -287,7 +298,8 @@ private:
   bool FinalGather = true;
   int FinalGatherRays = 1024;    // mesolight::vlf::FinalGatherOptions::IndirectRays
   int ContactTexelHalvings = -1; // mesolight::vlf::AutomaticContactTexelHalvings
-  bool AdaptiveTexels = true;
+  bool AdaptiveTexels = false;
+  double AdaptiveTexelsBudget = 0.5; // mesolight::vlf::AdaptiveTexelOptions::GatherBudget
   // The sentence refusing ContactTexelHalvings outside [-1, 3], empty when it is in range.
   std::string CheckContactTexelHalvings() const;
   // The final gather (when on) with progress from `begin` to 1, then the snapshot written again;

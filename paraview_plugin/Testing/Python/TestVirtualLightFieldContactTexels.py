@@ -9,7 +9,7 @@ directions, 32 x 32 rays, no iterations and no gather: only the texels matter he
   than a fifth per halving (measured: 4662, 6120, 10600 pixels at 0, 1, 2);
 - -1 with given rays and no gather is no halving (the automatic rule): the atlas of 0;
 - negative: 4 (outside 0-3) is refused with an error, the output is empty;
-- AdaptiveTexels (texels refined from the light, AdaptiveTexels.h) exists, advanced, default on;
+- AdaptiveTexels (texels refined from the light, AdaptiveTexels.h) exists, advanced, default off;
   with given rays it leaves the texels alone (the atlas of 0 with AdaptiveTexels on and off).
 """
 import os
@@ -61,11 +61,11 @@ check(cells_bad == 0, "negative: ContactTexelHalvings 4 gives an empty output (a
 
 adaptive = field.SMProxy.GetProperty("AdaptiveTexels")
 check(adaptive is not None, "the filter has an AdaptiveTexels property")
-check(field.AdaptiveTexels == 1, "AdaptiveTexels defaults to on, got %s" % field.AdaptiveTexels)
+check(field.AdaptiveTexels == 0, "AdaptiveTexels defaults to off, got %s" % field.AdaptiveTexels)
 check(adaptive.GetPanelVisibility() == "advanced", "AdaptiveTexels is an advanced property")
-field.AdaptiveTexels = 0
-_, off = atlas_pixels(0)
-check(off == uniform, "AdaptiveTexels off with given rays: atlas %d, uniform %d" % (off, uniform))
+field.AdaptiveTexels = 1
+_, on = atlas_pixels(0)
+check(on == uniform, "AdaptiveTexels on with given rays: atlas %d, uniform %d" % (on, uniform))
 
 if failures:
     print("FAILED: " + "; ".join(failures))

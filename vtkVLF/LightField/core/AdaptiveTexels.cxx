@@ -9,6 +9,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
 
 namespace mesolight
 {
@@ -161,14 +162,81 @@ std::vector<std::int8_t> ChooseTexelLevels(const LightField& field,
   return levels;
 }
 
+std::vector<std::int8_t> LimitRefinement(const std::vector<std::size_t>& baseTexels,
+  const std::vector<SurfaceVariation>& variation, const std::vector<std::int8_t>& levels,
+  const std::vector<std::int8_t>& floor, double budget)
+{
+  const std::size_t n = levels.size();
+  if (baseTexels.size() != n || variation.size() != n || (!floor.empty() && floor.size() != n))
+  {
+    throw std::invalid_argument("the texel levels, counts and variation name different surfaces");
+  }
+  if (budget < 0.0)
+  {
+    return levels;
+  }
+  const auto texelsAt = [&](std::size_t s, int level)
+  { return std::ldexp(static_cast<double>(baseTexels[s]), -2 * level); };
+  struct Step
+  {
+    double Gain; // per added texel
+    double Cost; // added texels
+    std::size_t Surface;
+    int From; // the level it refines
+  };
+  std::vector<Step> steps;
+  std::vector<std::int8_t> result = levels;
+  double allowance = 0.0;
+  for (std::size_t s = 0; s < n; ++s)
+  {
+    const int start = std::min<int>(floor.empty() ? 0 : floor[s], 0);
+    allowance += budget * texelsAt(s, start);
+    if (levels[s] > start)
+    {
+      allowance += texelsAt(s, start) - texelsAt(s, levels[s]); // coarsening pays for refining
+    }
+    for (int from = start; from > levels[s]; --from)
+    {
+      steps.push_back(
+        { variation[s].Defect * std::ldexp(1.0, 3 * from), 3.0 * texelsAt(s, from), s, from });
+    }
+    if (levels[s] < start)
+    {
+      result[s] = static_cast<std::int8_t>(start);
+    }
+  }
+  // Best gain per texel first; ties by surface, so the choice does not depend on the sort.
+  std::sort(steps.begin(), steps.end(),
+    [](const Step& a, const Step& b)
+    {
+      return a.Gain != b.Gain    ? a.Gain > b.Gain
+        : a.Surface != b.Surface ? a.Surface < b.Surface
+                                 : a.From > b.From;
+    });
+  double spent = 0.0;
+  for (const Step& step : steps)
+  {
+    if (result[step.Surface] == step.From && spent + step.Cost <= allowance)
+    {
+      spent += step.Cost;
+      result[step.Surface] = static_cast<std::int8_t>(step.From - 1);
+    }
+  }
+  return result;
+}
+
 std::string AdaptiveTexelReport::Describe() const
 {
-  char text[300];
+  char text[400];
   std::snprintf(text, sizeof(text),
     "texels finer on %zu, coarser on %zu of %zu surfaces: %zu -> %zu texels; %zu contact "
-    "surfaces, %zu finer than the contact texels alone (first pass %.1f s)",
+    "surfaces, %zu finer than the contact texels alone, %zu left coarser by the gather budget "
+    "(gathered texels %.3g, %.2f x the contact texels'; first pass %.1f s: field %.1f, "
+    "gathers %.1f)",
     this->Finer, this->Coarser, this->Variation.size(), this->BaseTexels, this->Texels,
-    this->Contact, this->BeyondContact, this->Seconds);
+    this->Contact, this->BeyondContact, this->Limited, this->Gathered,
+    this->GatheredDefault > 0.0 ? this->Gathered / this->GatheredDefault : 1.0, this->Seconds,
+    this->FieldSeconds, this->GatherSeconds);
   return text;
 }
 
@@ -183,12 +251,13 @@ LightFieldSettings ChooseAdaptiveTexels(const TriangleScene& scene,
   first.TexelSize = settings.TexelSize > 0.0f ? settings.TexelSize : settings.CellSize();
   first.ContactTexelHalvings = 0;
   first.SurfaceTexelLevels.clear();
-  first.Directions = std::min<std::size_t>(settings.Directions, 513);
+  first.Directions = std::min(settings.Directions, options.FirstPassDirections);
   std::unique_ptr<LightField> field =
     LightField::Build(scene, first, SubProgress(options.Progress, 0.0, 0.2));
   PropagationOptions propagation;
   propagation.Progress = SubProgress(options.Progress, 0.2, 0.5);
   PropagateToTolerance(*field, DefaultTolerance, DefaultMaxIterations, propagation);
+  const auto fieldDone = std::chrono::steady_clock::now();
   FinalGatherOptions gather;
   gather.IndirectRays = options.FirstPassIndirectRays;
   gather.DirectSamples = options.FirstPassDirectSamples;
@@ -200,6 +269,7 @@ LightFieldSettings ChooseAdaptiveTexels(const TriangleScene& scene,
   gather.Sequence = 2;
   gather.Progress = SubProgress(options.Progress, 0.75, 1.0);
   FinalGather(*field, gather);
+  const auto gatherDone = std::chrono::steady_clock::now();
   const std::vector<SurfaceVariation> variation =
     MeasureLightVariation(*field, one, field->TotalDiffuse, options.BorderRows);
 
@@ -222,7 +292,15 @@ LightFieldSettings ChooseAdaptiveTexels(const TriangleScene& scene,
   }
   LightFieldSettings chosen = settings;
   chosen.TexelSize = first.TexelSize;
-  chosen.SurfaceTexelLevels = ChooseTexelLevels(*field, variation, options, contact);
+  const std::vector<std::int8_t> measured = ChooseTexelLevels(*field, variation, options, contact);
+  // Within the gather budget: the texels on the surfaces (what the final gather gathers).
+  std::vector<std::size_t> onSurface(field->Surfaces().size(), 0);
+  for (const TexelPoint& p : SurfaceTexels(*field))
+  {
+    ++onSurface[p.Surface];
+  }
+  chosen.SurfaceTexelLevels =
+    LimitRefinement(onSurface, variation, measured, contact, options.GatherBudget);
   // Within the budget: while the finer texels do not fit, the finest surfaces beyond their
   // contact halvings get one level less.
   for (std::size_t estimate = EstimateMemory(scene, chosen).TotalBytes;
@@ -258,11 +336,20 @@ LightFieldSettings ChooseAdaptiveTexels(const TriangleScene& scene,
       report->Contact += contact[s] < 0 && chosen.SurfaceTexelLevels[s] <= contact[s] ? 1 : 0;
       report->BeyondContact += chosen.SurfaceTexelLevels[s] < contact[s] ? 1 : 0;
     }
+    for (std::size_t s = 0; s < contact.size(); ++s)
+    {
+      report->Limited += chosen.SurfaceTexelLevels[s] > measured[s] ? 1 : 0;
+      const double texels = static_cast<double>(onSurface[s]);
+      report->GatheredDefault += std::ldexp(texels, -2 * std::min<int>(contact[s], 0));
+      report->Gathered += std::ldexp(texels, -2 * chosen.SurfaceTexelLevels[s]);
+    }
     report->BaseTexels = field->TexelCount();
     report->FirstPassBytes = field->AllocatedBytes();
     report->Texels = EstimateMemory(scene, chosen).Texels;
     report->Seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    report->FieldSeconds = std::chrono::duration<double>(fieldDone - start).count();
+    report->GatherSeconds = std::chrono::duration<double>(gatherDone - fieldDone).count();
   }
   return chosen;
 }

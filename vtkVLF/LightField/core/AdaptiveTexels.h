@@ -15,15 +15,15 @@
 // whose radiosity differs from their neighbours'), per surface since every surface has its own
 // texel frame.
 //
-// The first pass is the field at its base texels (no contact halvings) with at most 513
-// directions, propagated to the tolerance and gathered twice in one pass with a quarter of the
-// final gather's rays each (other random numbers): the mean of the two is measured, and the
-// mean defect their difference alone produces (the gather's noise, which would otherwise read as
-// variation: |g1 - g2| / 2 is the noise of the mean's texel, and its defect averages about that)
-// is subtracted. The border rows count too: a texel whose neighbour along an axis is off the
-// surface is read clamped over the half texel beyond its centre, so there the defect is half
-// the step to its inner neighbour, |L_a - L_{a-1}| / 2 (a wall's light falls off fastest within
-// a texel of a corner). Then per surface:
+// The first pass is the field at its base texels (no contact halvings) with at most 129
+// directions (FirstPassDirections), propagated to the tolerance and gathered twice in one pass with
+// an eighth of the final gather's indirect rays each (other random numbers): the mean of the two is
+// measured, and the mean defect their difference alone produces (the gather's noise, which would
+// otherwise read as variation: |g1 - g2| / 2 is the noise of the mean's texel, and its defect
+// averages about that) is subtracted. The border rows count too: a texel whose neighbour along an
+// axis is off the surface is read clamped over the half texel beyond its centre, so there the
+// defect is half the step to its inner neighbour, |L_a - L_{a-1}| / 2 (a wall's light falls off
+// fastest within a texel of a corner). Then per surface:
 //   defect > RefineTwice          -> texels a quarter
 //   defect > Refine               -> texels a half
 //   defect < Coarsen (off by default), the first pass's noise below CoarsenMaxNoise, no contact
@@ -31,13 +31,18 @@
 //                                 -> texels doubled
 // and on top of the contact halvings (LightFieldSettings::ContactTexelHalvings): a contact
 // surface keeps at least its halvings, since a contact shadow narrower than a base texel does
-// not show in the first pass. The field is then built again with those levels.
+// not show in the first pass. The refinements beyond the contact texels are then taken within a
+// budget of gathered texels (GatherBudget: the final gather's rays grow with them), best gain
+// per texel first (LimitRefinement). The field is then built again with those levels.
 //
 // Measured per pixel against the path tracer (docs/vlf.md, "Texels from the light"): the first
 // rule (interior rows only, instead of the contact halvings, coarsening below 0.4%) gained on
 // the boxes but lost 0.1-1.0 points of mean error on the other four scenes (coarsened walls
 // lost their borders, the contact shadows were missed). Refining only, on top of the contact
-// halvings, every surface has at least the default's texels.
+// halvings, every surface has at least the default's texels. Within the gather budget the
+// boxes keep 2.8% -> 2.6% of their 2.8% -> 2.1% for 1.6 instead of 3.6 times the time (their
+// gain is the floor's quartering), and the other four scenes gain nothing measurable for the
+// first pass: asked for (vlf propagate --adaptive-texels), not the default.
 #ifndef mesolight_vlf_AdaptiveTexels_h
 #define mesolight_vlf_AdaptiveTexels_h
 
@@ -72,8 +77,17 @@ struct AdaptiveTexelOptions
   // A surface is coarsened only when its texture keeps at least this many texels on its shorter
   // side.
   int MinCoarseSide = 8;
+  // The refinements beyond the contact texels may add at most this fraction of the contact
+  // texels' gathered texels (plus what coarsening saves); negative: unbounded. Unbounded, the
+  // boxes of docs/vlf.md gathered 3.3 times the texels (3.8 times the time) for their gain.
+  double GatherBudget = 0.5;
+  // The first pass's directions (at most the field's). 129 directions and 128 rays chose as well
+  // as 513 and 256 on the five scenes of docs/vlf.md (the same per-pixel error) at about half
+  // the first pass's work: the gather computes the shadows exactly and reads the field only at
+  // its indirect rays' hits.
+  std::size_t FirstPassDirections = 129;
   // The first pass's gather: indirect rays and emitter samples of each of its two gathers.
-  int FirstPassIndirectRays = 256;
+  int FirstPassIndirectRays = 128;
   int FirstPassDirectSamples = 16;
   // Progress in [0, 1]; false aborts (AbortedError).
   ProgressCallback Progress;
@@ -105,6 +119,21 @@ std::vector<std::int8_t> ChooseTexelLevels(const LightField& field,
   const std::vector<SurfaceVariation>& variation, const AdaptiveTexelOptions& options = {},
   const std::vector<std::int8_t>& floor = {});
 
+// The levels within a budget of gathered texels. baseTexels: per surface the texels whose
+// centre is on the surface at the base texels (level 0; a level L has about baseTexels x 4^-L);
+// levels: the measured choice (ChooseTexelLevels); floor: as there (empty: 0). Every surface keeps
+// at least min(floor, 0) and its level if that is coarser; the refinements beyond it are taken
+// one level at a time, best first, while the texels they add stay within budget x the texels at
+// min(floor, 0) everywhere plus the texels the coarsened surfaces save. Best: the largest gain per
+// added texel. A surface's mean defect at level L is about Defect x 2^L (a shadow edge's smeared
+// band narrows with the texel), over its area (baseTexels); one more level costs 3 x 4^-L x
+// baseTexels: gain per texel ~ Defect x 8^L, so a halving on a surface of large defect comes
+// before a quartering (the area cancels: a large floor pays for its gain with its texels).
+// Negative budget: levels unchanged.
+std::vector<std::int8_t> LimitRefinement(const std::vector<std::size_t>& baseTexels,
+  const std::vector<SurfaceVariation>& variation, const std::vector<std::int8_t>& levels,
+  const std::vector<std::int8_t>& floor, double budget);
+
 struct AdaptiveTexelReport
 {
   std::vector<SurfaceVariation> Variation;
@@ -113,7 +142,12 @@ struct AdaptiveTexelReport
   std::size_t BeyondContact = 0;      // surfaces finer than their contact halvings alone
   std::size_t BaseTexels = 0;         // the first pass's (uniform) texels
   std::size_t Texels = 0;             // with the chosen levels
+  std::size_t Limited = 0;            // surfaces left coarser than measured by the GatherBudget
+  double GatheredDefault = 0.0;       // texels on the surfaces at the contact texels (estimate)
+  double Gathered = 0.0;              // and at the chosen levels
   double Seconds = 0.0;               // the first pass and the choice
+  double FieldSeconds = 0.0;          // of which the first pass's build and propagation
+  double GatherSeconds = 0.0;         // and its two gathers
   std::uint64_t FirstPassBytes = 0;   // the first pass's field (AllocatedBytes)
   std::string Describe() const; // "texels finer on 3, coarser on 12 of 40 surfaces: 1.2e5 -> ..."
 };

@@ -17,6 +17,10 @@
 // 4. The contact shadow of a low box on a floor against the path tracer: the rule (refining on
 //    top of the contact halvings) meets the bound; the first rule (the levels instead of the
 //    contact halvings: the first pass's base texels do not show the shadow) is the negative.
+// 5. The gather budget: by hand, the refinements with the best gain per added texel are taken
+//    first up to the budget, coarsening pays for refining, and unbounded (the negative) the
+//    measured levels exceed it; on the low box's scene no budget leaves the contact texels,
+//    unbounded refines beyond them.
 #include "AdaptiveTexels.h"
 #include "FinalGather.h"
 #include "PathTracedTexels.h"
@@ -198,6 +202,9 @@ TEST(VLFAdaptiveTexels, ResolvesSharpShadowsWhereUniformTexelsDoNotAndCoarsensFl
   AdaptiveTexelReport report;
   AdaptiveTexelOptions coarsening;
   coarsening.Coarsen = 0.004; // the first rule's
+  // The measure and the levels, not the budget: the floor holds every shadow, and quartering it
+  // costs 15 times its texels, beyond the default gather budget.
+  coarsening.GatherBudget = -1.0;
   const LightFieldSettings adaptiveSettings =
     ChooseAdaptiveTexels(scene, settings, coarsening, &report);
   std::printf("%s\n", report.Describe().c_str());
@@ -296,22 +303,104 @@ TEST(VLFAdaptiveTexels, ResolvesSharpShadowsWhereUniformTexelsDoNotAndCoarsensFl
   EXPECT_GT(uniformError, 0.05); // the negative: the shadow edges smeared over a texel
 }
 
+// 513 x 32 lines with the contact halving the automatic settings take with the gather (the low
+// box's scene is 3 across: texels of 0.094).
+LightFieldSettings LowBoxSettings()
+{
+  LightFieldSettings settings;
+  settings.Directions = 513;
+  settings.RaysPerSide = 32;
+  settings.TilesPerSide = 4;
+  settings.ContactTexelHalvings = 1;
+  return settings;
+}
+
+TEST(VLFAdaptiveTexels, TheGatherBudgetTakesTheBestGainPerTexelFirst)
+{
+  // Four surfaces, texels on them at the base texels, measured defects and levels, contact
+  // floors (by hand: a step from level L costs 3 x 4^-L x base texels and gains defect x 8^L per
+  // texel):
+  //   0: 100 texels, defect 10%, measured a quarter; steps 0 -> -1 (gain 0.10, 300 texels) and
+  //      -1 -> -2 (0.0125, 1200)
+  //   1: 1000 texels, defect 3%, measured a half; 0 -> -1 (0.03, 3000): the largest defect x
+  //      area, but the least gain per texel of the halvings
+  //   2: 400 texels, a contact surface (floor -1: 1600 texels), defect 9%, measured a quarter;
+  //      -1 -> -2 (0.01125, 4800)
+  //   3: an emitter (no texels measured)
+  // The contact texels alone gather 100 + 1000 + 1600 = 2700 texels.
+  const std::vector<std::size_t> base{ 100, 1000, 400, 0 };
+  std::vector<SurfaceVariation> variation(4);
+  const double defects[4] = { 0.10, 0.03, 0.09, 0.0 };
+  for (std::size_t s = 0; s < 4; ++s)
+  {
+    variation[s].Defect = defects[s];
+    variation[s].Samples = s < 3 ? 100 : 0;
+  }
+  const std::vector<std::int8_t> measured{ -2, -1, -2, 0 }, floor{ 0, 0, -1, 0 };
+  const auto gathered = [&](const std::vector<std::int8_t>& levels)
+  {
+    double texels = 0.0;
+    for (std::size_t s = 0; s < 4; ++s)
+    {
+      texels += std::ldexp(static_cast<double>(base[s]), -2 * levels[s]);
+    }
+    return texels;
+  };
+  // Half the contact texels' (1350 more): surface 0 halved (300); surface 1's halving (3000)
+  // and surface 0's quartering (1500 in all) do not fit.
+  const std::vector<std::int8_t> half = LimitRefinement(base, variation, measured, floor, 0.5);
+  EXPECT_EQ(half, (std::vector<std::int8_t>{ -1, 0, -1, 0 }));
+  EXPECT_LE(gathered(half), 1.5 * 2700.0);
+  // 1.2 times as many again (3240 more): surface 0 quartered too (1500), surface 1 still not
+  // (4500). Largest defect x area first (the wrong order) would take surface 1's halving (3000)
+  // and leave no room for surface 0's (300), the largest defect.
+  EXPECT_EQ(LimitRefinement(base, variation, measured, floor, 1.2),
+    (std::vector<std::int8_t>{ -2, 0, -1, 0 }));
+  // No budget: coarsening surface 1 (1000 -> 250 texels) pays for surface 0's halving.
+  EXPECT_EQ(LimitRefinement(base, variation, { -2, 1, -2, 0 }, floor, 0.0),
+    (std::vector<std::int8_t>{ -1, 1, -1, 0 }));
+  EXPECT_EQ(LimitRefinement(base, variation, measured, floor, 0.0),
+    (std::vector<std::int8_t>{ 0, 0, -1, 0 })); // no coarsening: nothing beyond the contact
+  // The negative: unbounded, the measured levels gather 4.4 times the contact texels'.
+  const std::vector<std::int8_t> unbounded =
+    LimitRefinement(base, variation, measured, floor, -1.0);
+  EXPECT_EQ(unbounded, measured);
+  EXPECT_GT(gathered(unbounded), 1.5 * 2700.0);
+}
+
+TEST(VLFAdaptiveTexels, TheGatherBudgetLimitsTheRefinementOfAScene)
+{
+  // The low box of the next test: the rule refines box faces beyond the contact halving of the
+  // floor. Without a budget for it only the contact texels remain; unbounded (the negative) it
+  // gathers more than the contact texels.
+  const TriangleScene scene =
+    vlftest::MakeFloorWithBox(glm::vec3(0.3f, -0.06f, 0.0f), glm::vec3(0.42f, 0.06f, 0.08f));
+  AdaptiveTexelOptions none, unbounded;
+  none.GatherBudget = 0.0;
+  unbounded.GatherBudget = -1.0;
+  AdaptiveTexelReport noneReport, unboundedReport;
+  const LightFieldSettings limited =
+    ChooseAdaptiveTexels(scene, LowBoxSettings(), none, &noneReport);
+  ChooseAdaptiveTexels(scene, LowBoxSettings(), unbounded, &unboundedReport);
+  std::printf("no budget: %s\nunbounded: %s\n", noneReport.Describe().c_str(),
+    unboundedReport.Describe().c_str());
+  EXPECT_EQ(noneReport.BeyondContact, 0u);
+  EXPECT_GE(noneReport.Limited, 1u);
+  EXPECT_LE(noneReport.Gathered, noneReport.GatheredDefault * (1.0 + 1e-9));
+  EXPECT_EQ(limited.SurfaceTexelLevels[0], -1); // the floor keeps its contact halving
+  EXPECT_GE(unboundedReport.BeyondContact, 1u); // the negative
+  EXPECT_EQ(unboundedReport.Limited, 0u);
+  EXPECT_GT(unboundedReport.Gathered, unboundedReport.GatheredDefault * (1.0 + 1e-9));
+}
+
 TEST(VLFAdaptiveTexels, RefinesOnTopOfTheContactTexelsWhereTheFirstRuleMissedTheContactShadow)
 {
   // TestContactTexels.cxx's low box on a floor under a 0.4 wide emitter at height 1: 0.12 wide
   // and 0.08 high, its contact shadow a strip of a few hundredths beside it, narrower than the
   // 0.094 texels of 513 x 32 lines (the scene is 3 across).
   const glm::vec3 lower(0.3f, -0.06f, 0.0f), upper(0.42f, 0.06f, 0.08f);
-  TriangleScene scene = MakeEmitterOverFloor(0.4f, 1.0f, 2.0f, 0.5f, 10.0f);
-  SceneMaterial white;
-  white.Name = "box";
-  white.Diffuse = glm::vec3(0.5f);
-  vlftest::AddBox(scene, lower, upper, scene.AddMaterial(white), false);
-  LightFieldSettings settings;
-  settings.Directions = 513;
-  settings.RaysPerSide = 32;
-  settings.TilesPerSide = 4;
-  settings.ContactTexelHalvings = 1; // what the automatic settings take with the gather
+  const TriangleScene scene = vlftest::MakeFloorWithBox(lower, upper);
+  const LightFieldSettings settings = LowBoxSettings();
   AdaptiveTexelReport ruleReport, firstReport;
   const LightFieldSettings rule = ChooseAdaptiveTexels(scene, settings, {}, &ruleReport);
   const LightFieldSettings first =
@@ -370,7 +459,7 @@ TEST(VLFAdaptiveTexels, RefinesOnTopOfTheContactTexelsWhereTheFirstRuleMissedThe
               "%.2f%% (%zu texels), the first rule %.2f%% (%zu texels)\n",
     points.size(), 100.0 * ruleError, ruleField->TexelCount(), 100.0 * firstError,
     firstField->TexelCount());
-  // Measured: the rule 16.2% (floor halved: the contact halving; 1898 texels), the first rule
+  // Measured: the rule 16.0% (floor halved: the contact halving; 1898 texels), the first rule
   // 29.0% (525).
   EXPECT_LT(ruleError, 0.2);
   EXPECT_LT(ruleError, 0.75 * firstError);

@@ -39,21 +39,12 @@ LightFieldSettings Settings513x32(int contactHalvings)
   return settings;
 }
 
-// A 2 x 2 floor under a 0.4 wide emitter at height 1 and a box standing on the floor.
-TriangleScene FloorWithBox(const glm::vec3& lower, const glm::vec3& upper)
-{
-  TriangleScene scene = vlftest::MakeEmitterOverFloor(0.4f, 1.0f, 2.0f, 0.5f, 10.0f);
-  SceneMaterial white;
-  white.Name = "box";
-  white.Diffuse = glm::vec3(0.5f);
-  vlftest::AddBox(scene, lower, upper, scene.AddMaterial(white), false);
-  return scene;
-}
+using vlftest::MakeFloorWithBox;
 
 TEST(VLFContactTexels, TheFloorUnderABoxIsAContactSurfaceTheCubeWallsAreNot)
 {
   const TriangleScene scene =
-    FloorWithBox(glm::vec3(0.3f, -0.06f, 0.0f), glm::vec3(0.42f, 0.06f, 0.1f));
+    MakeFloorWithBox(glm::vec3(0.3f, -0.06f, 0.0f), glm::vec3(0.42f, 0.06f, 0.1f));
   std::vector<std::uint32_t> triangleSurface;
   const std::vector<Surface> surfaces = GroupSurfaces(scene, 0.05f, triangleSurface);
   const std::vector<std::uint8_t> contact =
@@ -92,7 +83,7 @@ TEST(VLFContactTexels, TheFloorUnderABoxIsAContactSurfaceTheCubeWallsAreNot)
 TEST(VLFContactTexels, OnlyTheContactSurfaceGetsFinerTexelsAndSnapshotsKeepThem)
 {
   const TriangleScene scene =
-    FloorWithBox(glm::vec3(0.3f, -0.06f, 0.0f), glm::vec3(0.42f, 0.06f, 0.1f));
+    MakeFloorWithBox(glm::vec3(0.3f, -0.06f, 0.0f), glm::vec3(0.42f, 0.06f, 0.1f));
   std::unique_ptr<LightField> uniform = LightField::Build(scene, Settings513x32(0));
   std::unique_ptr<LightField> fine = LightField::Build(scene, Settings513x32(1));
   ASSERT_EQ(uniform->Surfaces().size(), fine->Surfaces().size());
@@ -129,7 +120,7 @@ TEST(VLFContactTexels, OnlyTheContactSurfaceGetsFinerTexelsAndSnapshotsKeepThem)
 TEST(VLFContactTexels, TheAutomaticSettingsHalveContactTexelsWithTheGatherOnly)
 {
   const TriangleScene scene =
-    FloorWithBox(glm::vec3(0.3f, -0.06f, 0.0f), glm::vec3(0.42f, 0.06f, 0.1f));
+    MakeFloorWithBox(glm::vec3(0.3f, -0.06f, 0.0f), glm::vec3(0.42f, 0.06f, 0.1f));
   LightFieldSettings automatic;
   automatic.Directions = 0;
   automatic.RaysPerSide = 0;
@@ -159,7 +150,7 @@ TEST(VLFContactTexels, ResolvesTheContactShadowOfALowBoxWhereUniformTexelsDoNot)
   // A line spacing of 513 x 32 is about 0.094 world units here (the scene is 3 across): the box
   // is 0.12 wide and 0.08 high, its shadow a strip of a few hundredths beside it.
   const glm::vec3 lower(0.3f, -0.06f, 0.0f), upper(0.42f, 0.06f, 0.08f);
-  const TriangleScene scene = FloorWithBox(lower, upper);
+  const TriangleScene scene = MakeFloorWithBox(lower, upper);
   std::unique_ptr<LightField> uniform = LightField::Build(scene, Settings513x32(0));
   const float texel = uniform->Surfaces()[0].TexelU / uniform->NormalizationScale();
   // Points on the floor within 1.5 uniform texels of the box, not under it, on a grid of a

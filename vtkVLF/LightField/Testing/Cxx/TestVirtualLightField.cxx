@@ -474,30 +474,28 @@ TEST(VLFVirtualLightField, ContactTexelHalvingsRefineTheFloorUnderABox)
   EXPECT_EQ(chosen.ContactTexelHalvings, commandLine.Settings.ContactTexelHalvings);
   EXPECT_EQ(chosen.Directions, commandLine.Settings.Directions);
   EXPECT_EQ(chosen.RaysPerSide, commandLine.Settings.RaysPerSide);
-  // And by default the texels refined from the light on top of them (AdaptiveTexels.h): every
-  // surface at least as fine as the contact texels make it; off, the contact texels alone.
-  EXPECT_TRUE(filter->GetAdaptiveTexels());
-  ASSERT_EQ(chosen.SurfaceTexelLevels.size(), perHalving[0].size());
-  const std::vector<std::size_t> adaptiveTexels = texels();
-  for (std::size_t i = 0; i < adaptiveTexels.size(); ++i)
-  {
-    EXPECT_LE(chosen.SurfaceTexelLevels[i], 0) << "surface " << i;
-  }
-  filter->SetAdaptiveTexels(false);
+  // By default the contact texels alone; asked for, the texels refined from the light on top of
+  // them (AdaptiveTexels.h): every surface at least as fine as the contact texels make it.
+  EXPECT_FALSE(filter->GetAdaptiveTexels());
+  EXPECT_TRUE(chosen.SurfaceTexelLevels.empty());
+  const std::vector<std::size_t> contactTexels = texels();
+  filter->SetAdaptiveTexels(true);
   filter->Update();
   ASSERT_NE(vtkVirtualLightFieldCore::GetLightField(filter), nullptr);
-  EXPECT_TRUE(
-    vtkVirtualLightFieldCore::GetLightField(filter)->Settings().SurfaceTexelLevels.empty());
-  const std::vector<std::size_t> contactTexels = texels();
+  const vlf::LightFieldSettings& adaptiveSettings =
+    vtkVirtualLightFieldCore::GetLightField(filter)->Settings();
+  ASSERT_EQ(adaptiveSettings.SurfaceTexelLevels.size(), perHalving[0].size());
+  const std::vector<std::size_t> adaptiveTexels = texels();
   std::size_t finerThanContact = 0;
   for (std::size_t i = 0; i < adaptiveTexels.size(); ++i)
   {
+    EXPECT_LE(adaptiveSettings.SurfaceTexelLevels[i], 0) << "surface " << i;
     EXPECT_GE(adaptiveTexels[i], contactTexels[i]) << "surface " << i;
     finerThanContact += adaptiveTexels[i] > contactTexels[i] ? 1 : 0;
   }
   std::cout << "adaptive texels: " << finerThanContact
             << " surfaces finer than the contact texels\n";
-  filter->SetAdaptiveTexels(true);
+  filter->SetAdaptiveTexels(false);
 
   // Outside [-1, 3]: an error, no field.
   for (const int bad : { -2, vlf::MaxContactTexelHalvings + 1 })

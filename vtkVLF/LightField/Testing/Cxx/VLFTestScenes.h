@@ -60,6 +60,18 @@ inline TriangleScene MakeFurnaceCube(float albedo, float emission)
   return scene;
 }
 
+// A 2 x 2 floor under a 0.4 wide emitter at height 1 and a white box standing on the floor (the
+// contact-texel and adaptive-texel tests).
+inline TriangleScene MakeFloorWithBox(const glm::vec3& lower, const glm::vec3& upper)
+{
+  TriangleScene scene = vlf::MakeEmitterOverFloor(0.4f, 1.0f, 2.0f, 0.5f, 10.0f);
+  SceneMaterial white;
+  white.Name = "box";
+  white.Diffuse = glm::vec3(0.5f);
+  AddBox(scene, lower, upper, scene.AddMaterial(white), false);
+  return scene;
+}
+
 using vlf::CornerFormFactor;
 using vlf::MakeEmitterOverFloor;
 using vlf::SquareFormFactor;
