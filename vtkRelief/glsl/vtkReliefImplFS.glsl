@@ -52,6 +52,9 @@
 #ifdef ML_CURVED
     mlLeftLayer = false;
 #endif
+#ifdef ML_IRRADIANCE_PROBES
+    mlShareWall = vec2(0.0);
+#endif
     mlHit = vec3(mlUV, 0.0);
     mlHitPos = mlPos;
     mlShadingNormal = mlN;
