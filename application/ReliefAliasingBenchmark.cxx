@@ -50,6 +50,7 @@ struct Settings
   int Linear = 0;
   int Refine = 0;
   int CompareFilter = vtkReliefProperty::MeanNormalFilter; // the "mean" row's normal filter
+  int CompareFarViewRays = 0; // the "mean" row's vtkReliefProperty::FarViewRays, 0: the default's
   std::string CsvFile;
   std::string PlotFile;
 };
@@ -74,6 +75,8 @@ struct CaseRow
   ClassFigures All, Near, Far;   // near: footprint <= 1 texel; far: > 1
   double NearHitChangeMax = 0.0; // texels, before vs default, over near pixels
   double NearHitChangeMean = 0.0;
+  // Far pixels' mean of frame - reference (8-bit levels): bias, where the error is noise or not.
+  double FarSignedBefore = 0.0, FarSignedDefault = 0.0, FarSignedMean = 0.0;
 };
 
 bool IsFile(const std::string& map)
@@ -135,6 +138,10 @@ bool RenderVariant(const Settings& settings, ReliefSceneOptions options, Variant
     p->SetMinimumSteps(defaults->GetMinimumSteps());
     p->SetNormalFilter(
       variant == Variant::Mean ? settings.CompareFilter : defaults->GetNormalFilter());
+    if (variant == Variant::Mean && settings.CompareFarViewRays > 0)
+    {
+      p->SetFarViewRays(settings.CompareFarViewRays);
+    }
   }
   p->SetOutput(output);
   int dims[3];
@@ -289,6 +296,7 @@ bool MeasureCase(const Settings& settings, const std::string& map, double angle,
   row.Distance = distance;
   std::vector<double> covered;
   long long nearHits = 0;
+  double signedBefore = 0.0, signedDefault = 0.0, signedMean = 0.0;
   for (int y = 0; y < settings.Height_; ++y)
   {
     for (int x = 0; x < settings.Width; ++x)
@@ -304,6 +312,12 @@ bool MeasureCase(const Settings& settings, const std::string& map, double angle,
       double eb = 0.0, ed = 0.0, em = 0.0;
       for (int c = 0; c < 3; ++c)
       {
+        if (footprint[p] > 1.0)
+        {
+          signedBefore += (before.Rgb[3 * p + c] - box[c]) / 3.0;
+          signedDefault += (current.Rgb[3 * p + c] - box[c]) / 3.0;
+          signedMean += (mean.Rgb[3 * p + c] - box[c]) / 3.0;
+        }
         eb += std::abs(box[c] - before.Rgb[3 * p + c]) / 3.0;
         ed += std::abs(box[c] - current.Rgb[3 * p + c]) / 3.0;
         em += std::abs(box[c] - mean.Rgb[3 * p + c]) / 3.0;
@@ -344,6 +358,12 @@ bool MeasureCase(const Settings& settings, const std::string& map, double angle,
     f->SamplesBefore /= n;
     f->SamplesDefault /= n;
     f->SamplesMean /= n;
+  }
+  {
+    const double n = std::max<long long>(row.Far.Pixels, 1);
+    row.FarSignedBefore = signedBefore / n;
+    row.FarSignedDefault = signedDefault / n;
+    row.FarSignedMean = signedMean / n;
   }
   row.NearHitChangeMean /= std::max<long long>(nearHits, 1);
   row.MedianFootprint = Median(covered);
@@ -395,6 +415,9 @@ int RunReliefAliasingBenchmark(const std::vector<std::string>& args)
     "the normal filter of the third row: mean (Toksvig), visible (the moments without "
     "height-correlated masking) or masked (the default's)",
     "mean");
+  cl.AddValue("--compare-far-view-rays", "N",
+    "the third row's most view rays per far pixel (vtkReliefProperty::FarViewRays; 1: one ray "
+    "per pixel, the default before), default: the default's");
   cl.AddValue("--csv", "FILE", "write one CSV row per case");
   cl.AddValue("--plot", "FILE.png", "error against footprint: off, mean filter and default");
   int exitCode = 0;
@@ -438,7 +461,9 @@ int RunReliefAliasingBenchmark(const std::vector<std::string>& args)
     !cl.GetDoubleList("--distances", 0.05, 100.0, settings.Distances, error) ||
     !cl.GetSize("--size", 8, 4096, settings.Width, settings.Height_, error) ||
     !cl.GetInt("--supersampling", 1, 16, settings.Supersampling, error) ||
-    !cl.GetDouble("--depth-scale", 1e-4, 10.0, settings.DepthScale, error))
+    !cl.GetDouble("--depth-scale", 1e-4, 10.0, settings.DepthScale, error) ||
+    (cl.Has("--compare-far-view-rays") &&
+      !cl.GetInt("--compare-far-view-rays", 1, 8, settings.CompareFarViewRays, error)))
   {
     return cl.UsageError(error);
   }
@@ -460,6 +485,9 @@ int RunReliefAliasingBenchmark(const std::vector<std::string>& args)
 
   vtkNew<vtkReliefProperty> defaults;
   std::ostream& out = std::cout;
+  const std::string compareRays = settings.CompareFarViewRays > 0
+    ? ", FarViewRays " + std::to_string(settings.CompareFarViewRays)
+    : std::string();
   out << "Relief aliasing: " << settings.Width << "x" << settings.Height_ << " pixels, depth scale "
       << settings.DepthScale << "; reference: max-mipmap 128 (exact) at " << settings.Supersampling
       << "x" << settings.Supersampling << " subsamples per pixel, box-filtered.\n"
@@ -469,14 +497,14 @@ int RunReliefAliasingBenchmark(const std::vector<std::string>& args)
       << " " << (settings.Method.empty() ? defaults->GetLinearSteps() : settings.Linear) << "+"
       << (settings.Method.empty() ? defaults->GetRefinementSteps() : settings.Refine)
       << ", level of detail off; default: the same with level of detail on and the default normal\n"
-      << "filter (visible normals, second moments, height-correlated masking); mean: level of\n"
-      << "detail with the "
+      << "filter (visible normals, second moments, height-correlated masking; several view rays\n"
+      << "per far pixel); mean: level of detail with the "
       << (settings.CompareFilter == vtkReliefProperty::MeanNormalFilter
              ? "mean normal filter (Toksvig)"
              : settings.CompareFilter == vtkReliefProperty::VisibleNormalFilter
              ? "visible normal filter without height-correlated masking"
              : "default's normal filter")
-      << (settings.Method.empty() ? "" : " (the method above)") << ".\n"
+      << (settings.Method.empty() ? "" : " (the method above)") << compareRays << ".\n"
       << "err: mean |colour - reference| in 8-bit levels; fp: median footprint, texels per pixel;\n"
       << "far: pixels whose footprint exceeds one texel; spp: relief-texture samples per pixel;\n"
       << "near hit: how far the default moves hits of near pixels from before's, texels (max).\n\n";
@@ -559,6 +587,18 @@ int RunReliefAliasingBenchmark(const std::vector<std::string>& args)
       << "cases with far error <= 0.5x before: " << met << " of " << withFar
       << "; default below both before and mean: " << better << " of " << withFar
       << "; largest move of a near hit: " << nearHitMax << " texels\n";
+  out << "signed far error (frame - reference, levels; before / default / third row):";
+  for (const CaseRow& r : rows)
+  {
+    if (r.Far.Pixels > 0)
+    {
+      out << "\n  " << r.Map << " " << r.Angle << " deg " << r.Distance << ": " << std::fixed
+          << std::setprecision(2) << r.FarSignedBefore << " / " << r.FarSignedDefault << " / "
+          << r.FarSignedMean;
+      out.unsetf(std::ios::fixed);
+    }
+  }
+  out << "\n";
 
   if (!settings.CsvFile.empty())
   {

@@ -205,6 +205,7 @@ void vtkReliefProperty::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MinimumSteps: " << this->MinimumSteps << "\n";
   os << indent << "LevelOfDetail: " << (this->LevelOfDetail ? "On" : "Off") << "\n";
   os << indent << "NormalFilter: " << this->NormalFilter << "\n";
+  os << indent << "FarViewRays: " << this->FarViewRays << "\n";
   os << indent << "Exposure: " << this->Exposure << "\n";
   os << indent << "ToneMapping: " << (this->ToneMapping ? "On" : "Off") << "\n";
   os << indent << "EncodeSRGB: " << (this->EncodeSRGB ? "On" : "Off") << "\n";

@@ -201,6 +201,25 @@ public:
 
   ///@{
   /**
+   * The most view rays per far pixel (level of detail with the visible normal filters): where a
+   * pixel's footprint is longer than two texels along its major axis, about one view ray per
+   * minor axis' length along it, rounded up to an odd count and at most this many (an even
+   * value counts as the odd one below it), enters at evenly spaced points of the pixel along its
+   * major screen axis, the middle one through the pixel's centre (its hit is the depth written
+   * and its miss a silhouette); each is traced, shaded and self-shadowed as the pixel's one ray
+   * would be, and their colours are averaged (a far grazing pixel covers many facets, of which
+   * one ray meets one). 1: one ray per pixel. Near pixels always take one ray. Default 3 (3 rays
+   * at 45 and 80 degrees): far error on four real maps at 2 wall widths 0.45x relief 10+8
+   * without level of detail, against 0.56x with one ray, at 3x the relief samples per far pixel
+   * (docs/relief-methods.md, "Several view rays per far pixel"); test
+   * ReliefLevelOfDetail.AveragesViewRaysAcrossAFarFootprint.
+   */
+  vtkSetClampMacro(FarViewRays, int, 1, 8);
+  vtkGetMacro(FarViewRays, int);
+  ///@}
+
+  ///@{
+  /**
    * Depth of depth = 1 relative to the world width of the texture (dimensionless, default 0.05).
    * 0 renders a flat (normal-mapped) surface. Clamped to [0, 10]; NaN is refused with an error.
    */
@@ -416,6 +435,7 @@ protected:
   int MinimumSteps = 4;
   bool LevelOfDetail = true;
   int NormalFilter = HeightMaskedNormalFilter;
+  int FarViewRays = 3;
   double Exposure;  // mesolight::ReliefLightSetDisplay, set in the constructor
   bool ToneMapping; // idem
   bool EncodeSRGB = false;

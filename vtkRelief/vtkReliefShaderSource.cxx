@@ -129,7 +129,8 @@ std::string vtkReliefShaderSource::Key() const
     (p->GetToneMapping() ? "T" : "t") + (p->GetShadowCulling() ? "K" : "k") +
     (this->HasIrradianceProbes ? "P" : "p") + (p->GetEncodeSRGB() ? "G" : "g") +
     (this->NormalMoments && p->GetLevelOfDetail()
-        ? (p->GetNormalFilter() == vtkReliefProperty::HeightMaskedNormalFilter ? "H" : "M")
+        ? (p->GetNormalFilter() == vtkReliefProperty::HeightMaskedNormalFilter ? "H" : "M") +
+          std::to_string(p->GetFarViewRays())
         : "m") +
     (this->GetCurved() ? "Q" : "q") +
     (this->FloatTextures      ? "F"
@@ -258,6 +259,17 @@ void vtkReliefShaderSource::ReplaceValuesAfter(std::string& fs, const void* cell
       if (p->GetNormalFilter() == vtkReliefProperty::HeightMaskedNormalFilter)
       {
         defines += "#define ML_HEIGHT_MASKING\n";
+      }
+      const int output = p->GetOutput();
+      // An odd count, so that one ray passes through the pixel's centre.
+      const int rays = (p->GetFarViewRays() - 1) | 1;
+      if (rays > 1 &&
+        (output == vtkReliefProperty::ShadedOutput ||
+          output == vtkReliefProperty::SampleCountOutput))
+      {
+        // Several view rays per far pixel (vtkReliefImplFS.glsl), their colours averaged: only
+        // where the output is a colour (or the samples it costs), not a hit coordinate.
+        defines += "#define ML_FAR_RAYS " + std::to_string(rays) + "\n";
       }
     }
   }

@@ -4,11 +4,61 @@
   // (taken in uniform control flow above), the smooth tangent direction from the vertices.
   vec3 mlN = normalVCVSOutput;
   float mlDet = mlDUVdx.x * mlDUVdy.y - mlDUVdy.x * mlDUVdx.y;
+#ifndef ML_FAR_RAYS
+#define ML_MISS discard
+#endif
   vec2 mlUV = mlTCoordVC;
   vec3 mlPos = vertexVC.xyz;
   vec3 mlHit = vec3(mlUV, 0.0);
   vec3 mlHitPos = mlPos;
   vec3 mlShadingNormal = mlN;
+#ifdef ML_FAR_RAYS
+  // Several view rays per far pixel (level of detail): at a grazing view a far pixel's
+  // footprint is long along one axis, and one view ray, however exact, meets one of the facets
+  // it covers where the supersampled frame averages them all (which facets the view reaches
+  // and their shadows, which no filtering at one hit gives). Where the footprint's major axis
+  // exceeds two texels, about one ray per minor axis' length along it (rounded up to an odd
+  // count, at most ML_FAR_RAYS, an odd number: 3 at 45 and 80 degrees by default) enters at
+  // evenly spaced points of the pixel along its major screen axis; each is traced and shaded
+  // as the pixel's one ray would be (its footprint's level of detail: measured better than the
+  // share's finer level, docs/relief-methods.md) and the colours are averaged: stratified
+  // supersampling along the one axis the anisotropy needs. Elsewhere one ray: near pixels draw
+  // the frame of level of detail off.
+  vec2 mlAxisX = mlDUVdx * mlTextureSize;
+  vec2 mlAxisY = mlDUVdy * mlTextureSize;
+  bool mlSplitX = dot(mlAxisX, mlAxisX) >= dot(mlAxisY, mlAxisY);
+  float mlMajorTexels = length(mlSplitX ? mlAxisX : mlAxisY);
+  float mlMinorTexels = abs(mlAxisX.x * mlAxisY.y - mlAxisX.y * mlAxisY.x) / max(mlMajorTexels, 1e-30);
+  // An odd count, so that one ray passes through the pixel's centre: its hit is the depth
+  // written, and whether it misses the relief (a silhouette) decides the pixel's coverage as
+  // the one ray did; an off-centre ray that misses is left out of the average.
+  int mlRays = mlMajorTexels > 2.0
+    ? clamp(int(ceil(mlMajorTexels / max(mlMinorTexels, 1e-6) - 1e-3)) | 1, 1, ML_FAR_RAYS)
+    : 1;
+  vec4 mlRaySum = vec4(0.0);
+  int mlRaysKept = 0;
+  vec3 mlCentreHit = mlHit, mlCentreHitPos = mlHitPos, mlCentreShadingNormal = mlShadingNormal;
+#define ML_MISS if (2 * mlRay + 1 == mlRays) { discard; } continue
+  for (int mlRay = 0; mlRay < mlRays; ++mlRay)
+  {
+    float mlRayOffset = (float(mlRay) + 0.5) / float(mlRays) - 0.5;
+    mlUV = mlTCoordVC + mlRayOffset * (mlSplitX ? mlDUVdx : mlDUVdy);
+    mlPos = vertexVC.xyz + mlRayOffset * (mlSplitX ? mlDPdx : mlDPdy);
+    // What each ray's shading sets, back to their values before the first.
+    mlNormalLength = 1.0;
+    mlSpecularPowerScale = 1.0;
+    mlNormalSpreadVC = mat3(0.0);
+    mlMarchLod = 0.0;
+#ifdef ML_CURVED
+    mlLeftLayer = false;
+#endif
+#ifdef ML_IRRADIANCE_PROBES
+    mlShareWall = vec2(0.0);
+#endif
+    mlHit = vec3(mlUV, 0.0);
+    mlHitPos = mlPos;
+    mlShadingNormal = mlN;
+#endif
   vec2 mlWall = vec2(0.0); // a side wall's normal in (u, v) where the view ray met one
 #ifdef ML_CURVED
   vec3 mlHitPlane = mlHit; // the hit in the entry point's plane coordinates (shadows start there)
@@ -90,21 +140,21 @@
 #if defined(ML_CURVED) && defined(ML_SILHOUETTES)
       if (mlExitsTop && mlLeftLayer)
       {
-        discard; // the ray passed the curved relief without a hit
+        ML_MISS; // the ray passed the curved relief without a hit
       }
 #endif
     }
 #if defined(ML_CURVED) && defined(ML_SILHOUETTES)
     else if (worldDepth > 0.0 && dot(gl_FrontFacing ? mlQuadricVC : -mlQuadricVC, q.xy * q.xy) > 0.0)
     {
-      discard; // a ray that does not go below the tangent plane misses a convex layer
+      ML_MISS; // a ray that does not go below the tangent plane misses a convex layer
     }
 #endif
 #endif
 #ifdef ML_SILHOUETTES
     if (any(lessThan(mlHit.xy, vec2(0.0))) || any(greaterThan(mlHit.xy, vec2(1.0))))
     {
-      discard;
+      ML_MISS;
     }
 #endif
 #if ML_METHOD != ML_TEXTURE_MAPPING
@@ -246,6 +296,22 @@
 #ifdef ML_ALBEDO_SAMPLER
   gl_FragData[0] = clamp(gl_FragData[0], 0.0, 1.0) *
     textureGrad(ML_ALBEDO_SAMPLER, mlHit.xy, mlDUVdx, mlDUVdy);
+#endif
+#ifdef ML_FAR_RAYS
+    mlRaySum += gl_FragData[0];
+    ++mlRaysKept;
+    if (2 * mlRay + 1 == mlRays) // the centre's
+    {
+      mlCentreHit = mlHit;
+      mlCentreHitPos = mlHitPos;
+      mlCentreShadingNormal = mlShadingNormal;
+    }
+  }
+  gl_FragData[0] = mlRaySum / float(max(mlRaysKept, 1));
+  mlPos = vertexVC.xyz;
+  mlHit = mlCentreHit;
+  mlHitPos = mlCentreHitPos;
+  mlShadingNormal = mlCentreShadingNormal;
 #endif
 #if ML_OUTPUT == 4
   // Red where anything on the way to the colour was NaN or Inf (stress tests), else green.

@@ -139,9 +139,10 @@ enum class Drawn
   Exact
 };
 
-// relief10: relief 10+8 (the default before the exact traversal) instead of the default method.
+// relief10: relief 10+8 (the default before the exact traversal) instead of the default method;
+// farViewRays: the view rays per far pixel (vtkReliefProperty::FarViewRays), 0 the default's.
 Frame RenderView(ReliefSceneOptions options, Drawn drawn, int scale, int output,
-  ReliefScene* keep = nullptr, bool relief10 = false)
+  ReliefScene* keep = nullptr, bool relief10 = false, int farViewRays = 0)
 {
   vtkNew<vtkReliefProperty> defaults;
   options.Method = drawn == Drawn::Exact ? std::string("max-mipmap")
@@ -167,6 +168,10 @@ Frame RenderView(ReliefSceneOptions options, Drawn drawn, int scale, int output,
       : drawn == Drawn::LevelOfDetailUnmasked ? vtkReliefProperty::VisibleNormalFilter
                                               : defaults->GetNormalFilter());
   scene.Mapper->GetReliefProperty()->SetOutput(output);
+  if (farViewRays > 0)
+  {
+    scene.Mapper->GetReliefProperty()->SetFarViewRays(farViewRays);
+  }
   auto window = MakeOffscreenWindow(options, scene.Renderer);
   Frame frame = CaptureFrame(window);
   if (keep)
@@ -254,7 +259,8 @@ TEST(ReliefLevelOfDetail, FiltersADistantRecedingWall)
   // Measured 2.48 (on; 2.67 before the clamped Lambert term and the soft far shadows, 2.68
   // with the moments computed from the normals below mip level 2), 3.37 (off) and 2.85 levels
   // with the mean normal filter (the default's filter before): the bound lies 21% above on and
-  // 12% below off.
+  // 12% below off. With three view rays per far pixel (FarViewRays, the default since): 1.71,
+  // mean filter 2.79, off 3.36.
   const double bound = 3.0;
   EXPECT_LT(e.On.Mean, bound) << "level of detail should filter the distant wall";
   EXPECT_GT(e.Off.Mean, bound) << "negative case: without level of detail the wall aliases";
@@ -272,7 +278,8 @@ TEST(ReliefLevelOfDetail, VisibleNormalsFilterARoughGrazingWall)
   ASSERT_GT(e.On.Pixels, Width * Height / 10) << "the wall should fill much of the view";
   // Measured 9.19 (visible; 9.53 before the clamped Lambert term and the soft far shadows),
   // 15.24 (mean) and 10.67 (off) levels: the bound lies 10% above the visible filter and 5%
-  // below off.
+  // below off. With three view rays per far pixel (the default since): 7.29, mean 16.25, off
+  // 11.16.
   const double bound = 10.1;
   EXPECT_LT(e.On.Mean, bound) << "the visible normal filter should filter the grazing wall";
   EXPECT_GT(e.Mean.Mean, bound) << "negative case: the mean normal shades facets the view hides";
@@ -295,7 +302,8 @@ TEST(ReliefLevelOfDetail, ClampsTheLightOfFacetsTurnedAway)
   ASSERT_GT(e.On.Pixels, Width * Height / 8) << "the wall should fill much of the view";
   // Measured 4.92 (default), 5.47 (mean normal filter), 5.43 (off) levels, and 5.52 with the
   // visible normal filter but n.l unclamped (the filter before): the bound lies 6% above the
-  // default and 4% below off.
+  // default and 4% below off. With three view rays per far pixel (the default since): 4.71, mean
+  // filter 5.58, off 5.50.
   const double bound = 5.2;
   EXPECT_LT(e.On.Mean, bound) << "the clamped Lambert term should light the far wall";
   EXPECT_GT(e.Mean.Mean, bound)
@@ -385,7 +393,8 @@ TEST(ReliefLevelOfDetail, ShadowsTheFacetsWithinAFarFootprint)
   // Measured 3.24 (default), 3.48 (the default without the footprint's shadowing, the default
   // before), 4.26 (mean normal filter) and 3.81 (off) levels: the bound lies 3% above the
   // default and 4% below the default before. Under a light 10 / 20 degrees above the wall the
-  // term gains less: 3.52 against 3.61, 4.41 against 4.44.
+  // term gains less: 3.52 against 3.61, 4.41 against 4.44. With three view rays per far pixel
+  // (the default since): 3.10, mean filter 4.36, off 3.87.
   const double bound = 3.35;
   EXPECT_LT(e.On.Mean, bound) << "the footprint's own shadows should darken the far wall";
   EXPECT_GT(e.Mean.Mean, bound) << "negative case: the mean normal filter";
@@ -420,10 +429,12 @@ TEST(ReliefLevelOfDetail, MasksTheFacetsAFarViewHides)
   options.ViewDistance = 2.0;
   const int shaded = vtkReliefProperty::ShadedOutput;
   const Frame reference = RenderView(options, Drawn::Exact, Supersampling, shaded);
+  // One view ray per far pixel in both frames: the masking alone (the default's several rays
+  // per far pixel are AveragesViewRaysAcrossAFarFootprint's).
   const AliasingError on =
-    Compare(RenderView(options, Drawn::LevelOfDetailOn, 1, shaded), reference);
-  const AliasingError unmasked =
-    Compare(RenderView(options, Drawn::LevelOfDetailUnmasked, 1, shaded), reference);
+    Compare(RenderView(options, Drawn::LevelOfDetailOn, 1, shaded, nullptr, false, 1), reference);
+  const AliasingError unmasked = Compare(
+    RenderView(options, Drawn::LevelOfDetailUnmasked, 1, shaded, nullptr, false, 1), reference);
   const AliasingError off =
     Compare(RenderView(options, Drawn::LevelOfDetailOff, 1, shaded), reference);
   std::cout << "far stone wall, error against the " << Supersampling << "x" << Supersampling
@@ -431,10 +442,56 @@ TEST(ReliefLevelOfDetail, MasksTheFacetsAFarViewHides)
             << " levels, without height-correlated masking " << unmasked.Mean
             << ", level of detail off " << off.Mean << std::endl;
   ASSERT_GT(on.Pixels, 200 * 150 / 4) << "the wall should fill much of the view";
-  // Measured 12.18 (default), 13.18 (without the masking, the default before) and 18.34 (off)
-  // levels: the bound lies 4% above the default and 4% below the default before.
+  // Measured with the exact default traversal, one ray per far pixel: 10.91 (masked), 13.13
+  // (without the masking) and 18.00 (off) levels; with relief 10+8, the default when the test
+  // was written, 12.18, 13.18 and 18.34: the bound lay 4% above and below those two.
   const double bound = 12.7;
   EXPECT_LT(on.Mean, bound) << "height-correlated masking should shade the far wall";
   EXPECT_GT(unmasked.Mean, bound) << "negative case: the moments weigh the facets the view hides";
+  EXPECT_GT(off.Mean, bound) << "negative case: without level of detail the wall aliases";
+}
+
+// A far brick wall (brick_wall01_b's height, a real game texture from Debian's redeclipse-data;
+// skipped when the package is absent) 80 degrees from its normal, two wall widths away: a
+// pixel's footprint is about 17 texels long along the wall and 3 across it, and one view ray,
+// however exact, meets one of the bricks and joints it covers, where the supersampled frame
+// averages them all. The default traces several view rays spread along the footprint's major
+// axis (vtkReliefProperty::FarViewRays) and averages their shading. It must come within a bound
+// that one ray per far pixel (the default before, the negative case) and level of detail off
+// miss.
+TEST(ReliefLevelOfDetail, AveragesViewRaysAcrossAFarFootprint)
+{
+  const std::string file = "/usr/share/games/redeclipse/data/dziq/brick_wall01_b.jpg";
+  if (!std::ifstream(file).good())
+  {
+    GTEST_SKIP() << file << " is absent (redeclipse-data)";
+  }
+  ReliefSceneOptions options;
+  options.Pattern = "file";
+  options.DepthFile = file;
+  options.DepthFileIsHeight = true;
+  options.DepthScale = 0.04;
+  options.Width = 200;
+  options.Height = 150;
+  options.ViewAngle = 80.0;
+  options.ViewDistance = 2.0;
+  const int shaded = vtkReliefProperty::ShadedOutput;
+  const Frame reference = RenderView(options, Drawn::Exact, Supersampling, shaded);
+  const AliasingError on =
+    Compare(RenderView(options, Drawn::LevelOfDetailOn, 1, shaded), reference);
+  const AliasingError oneRay =
+    Compare(RenderView(options, Drawn::LevelOfDetailOn, 1, shaded, nullptr, false, 1), reference);
+  const AliasingError off =
+    Compare(RenderView(options, Drawn::LevelOfDetailOff, 1, shaded), reference);
+  std::cout << "far grazing brick wall, error against the " << Supersampling << "x" << Supersampling
+            << " supersampled exact frame, " << on.Pixels << " pixels: default " << on.Mean
+            << " levels, one view ray per far pixel " << oneRay.Mean << ", level of detail off "
+            << off.Mean << std::endl;
+  ASSERT_GT(on.Pixels, 200 * 150 / 12) << "the receding wall should fill a band of the view";
+  // Measured 9.05 (default: 3 rays), 14.19 (one ray, the default before) and 30.57 (off)
+  // levels: the bound lies 16% above the default and 26% below one ray.
+  const double bound = 10.5;
+  EXPECT_LT(on.Mean, bound) << "several view rays should average the far footprint";
+  EXPECT_GT(oneRay.Mean, bound) << "negative case: one view ray per far pixel aliases";
   EXPECT_GT(off.Mean, bound) << "negative case: without level of detail the wall aliases";
 }
