@@ -215,6 +215,22 @@ FilterErrors ErrorsOfTheFilters(const ReliefSceneOptions& options, const char* w
             << e.Off.Mean << std::endl;
   return e;
 }
+// A real height map (a game texture's height channel from Debian's redeclipse-data) on a wall two
+// wall widths away, viewAngle degrees from its normal: the benchmark's far cell
+// (`mesolight bench relief-aliasing`), 200 x 150 pixels.
+ReliefSceneOptions FarRealMapWall(const std::string& file, double viewAngle)
+{
+  ReliefSceneOptions options;
+  options.Pattern = "file";
+  options.DepthFile = file;
+  options.DepthFileIsHeight = true;
+  options.DepthScale = 0.04;
+  options.Width = 200;
+  options.Height = 150;
+  options.ViewAngle = viewAngle;
+  options.ViewDistance = 2.0;
+  return options;
+}
 } // namespace
 
 TEST(ReliefLevelOfDetail, ChangesTheFrameAgainstTheSupersampledReference)
@@ -418,15 +434,7 @@ TEST(ReliefLevelOfDetail, MasksTheFacetsAFarViewHides)
   {
     GTEST_SKIP() << file << " is absent (redeclipse-data)";
   }
-  ReliefSceneOptions options;
-  options.Pattern = "file";
-  options.DepthFile = file;
-  options.DepthFileIsHeight = true;
-  options.DepthScale = 0.04;
-  options.Width = 200;
-  options.Height = 150;
-  options.ViewAngle = 45.0;
-  options.ViewDistance = 2.0;
+  const ReliefSceneOptions options = FarRealMapWall(file, 45.0);
   const int shaded = vtkReliefProperty::ShadedOutput;
   const Frame reference = RenderView(options, Drawn::Exact, Supersampling, shaded);
   // One view ray per far pixel in both frames: the masking alone (the default's several rays
@@ -466,15 +474,7 @@ TEST(ReliefLevelOfDetail, AveragesViewRaysAcrossAFarFootprint)
   {
     GTEST_SKIP() << file << " is absent (redeclipse-data)";
   }
-  ReliefSceneOptions options;
-  options.Pattern = "file";
-  options.DepthFile = file;
-  options.DepthFileIsHeight = true;
-  options.DepthScale = 0.04;
-  options.Width = 200;
-  options.Height = 150;
-  options.ViewAngle = 80.0;
-  options.ViewDistance = 2.0;
+  const ReliefSceneOptions options = FarRealMapWall(file, 80.0);
   const int shaded = vtkReliefProperty::ShadedOutput;
   const Frame reference = RenderView(options, Drawn::Exact, Supersampling, shaded);
   const AliasingError on =
