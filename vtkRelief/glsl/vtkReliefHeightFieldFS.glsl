@@ -189,31 +189,59 @@ void mlAddTexelMoments(ivec2 t, float k, inout vec4 a, inout vec4 b)
   b += w * vec4(n.x * n.z, n.y * n.z, n.x, n.y);
 }
 
-// Adds k times the bilinear lookup of the moments' mip level 0 or 1 at uv, as the sampler's:
+// The level-0 texels that the bilinear lookup of mip level 0 or 1 at uv weighs, as the sampler's:
 // texels wrapped or clamped at their own level, level 1's texel J the mean of level 0's 2J and
-// 2J + 1 in each axis (mesolight::ReduceNormalMoments, which builds the uploaded levels).
+// 2J + 1 in each axis (mesolight::ReduceNormalMoments, which builds the uploaded levels). Set up
+// once by mlLevelLookupAt; mlLevelLookupTexel gives the n-th of its mlLevelLookupCount texels.
+struct mlLevelLookup
+{
+  ivec2 Corner;   // the lookup's lower-left texel at its level
+  vec2 Fraction;  // the bilinear fraction
+  ivec2 Size;     // the level's size
+  int Children;   // level-0 texels per axis of one texel of the level
+};
+
+mlLevelLookup mlLevelLookupAt(vec2 uv, int level)
+{
+  mlLevelLookup l;
+  l.Size = max(ivec2(mlTextureSize) >> level, ivec2(1));
+  vec2 x = uv * vec2(l.Size) - 0.5;
+  l.Corner = ivec2(floor(x));
+  l.Fraction = x - vec2(l.Corner);
+  l.Children = 1 << level;
+  return l;
+}
+
+int mlLevelLookupCount(mlLevelLookup l)
+{
+  return 4 * l.Children * l.Children;
+}
+
+// The n-th level-0 texel of the lookup and its weight (the four bilinear weights, each shared
+// evenly by the level's texel's children).
+ivec2 mlLevelLookupTexel(mlLevelLookup l, int n, out float weight)
+{
+  int perCorner = l.Children * l.Children;
+  int c = n / perCorner;
+  int i = n - c * perCorner;
+  ivec2 o = ivec2(c & 1, c >> 1);
+  ivec2 t = l.Corner + o;
+  t = mlRepeatTexture != 0 ? (t % l.Size + l.Size) % l.Size : clamp(t, ivec2(0), l.Size - 1);
+  vec2 axis = mix(1.0 - l.Fraction, l.Fraction, vec2(o));
+  weight = axis.x * axis.y / float(perCorner);
+  ivec2 child = ivec2(i % l.Children, i / l.Children);
+  return min(t * l.Children + child, ivec2(mlTextureSize) - 1);
+}
+
+// Adds k times the bilinear lookup of the moments' mip level 0 or 1 at uv.
 void mlAddLevelMoments(vec2 uv, int level, float k, inout vec4 a, inout vec4 b)
 {
-  ivec2 size0 = ivec2(mlTextureSize);
-  ivec2 size = max(size0 >> level, ivec2(1));
-  vec2 x = uv * vec2(size) - 0.5;
-  ivec2 i0 = ivec2(floor(x));
-  vec2 f = x - vec2(i0);
-  int children = 1 << level;
-  for (int c = 0; c < 4; ++c)
+  mlLevelLookup l = mlLevelLookupAt(uv, level);
+  for (int n = 0; n < mlLevelLookupCount(l); ++n)
   {
-    ivec2 o = ivec2(c & 1, c >> 1);
-    ivec2 t = i0 + o;
-    t = mlRepeatTexture != 0 ? (t % size + size) % size : clamp(t, ivec2(0), size - 1);
-    vec2 axis = mix(1.0 - f, f, vec2(o));
-    float weight = k * axis.x * axis.y / float(children * children);
-    for (int j = 0; j < children; ++j)
-    {
-      for (int i = 0; i < children; ++i)
-      {
-        mlAddTexelMoments(min(t * children + ivec2(i, j), size0 - 1), weight, a, b);
-      }
-    }
+    float weight;
+    ivec2 t = mlLevelLookupTexel(l, n, weight);
+    mlAddTexelMoments(t, k * weight, a, b);
   }
 }
 #endif
@@ -272,29 +300,15 @@ void mlAddTexelFacet(ivec2 t, float k)
 }
 
 // The facets of level 0 or 1 that its bilinear lookup at uv weighs, with k times their weights
-// (as mlAddLevelMoments).
+// (the texels of mlLevelLookupAt).
 void mlAddLevelFacets(vec2 uv, int level, float k)
 {
-  ivec2 size0 = ivec2(mlTextureSize);
-  ivec2 size = max(size0 >> level, ivec2(1));
-  vec2 x = uv * vec2(size) - 0.5;
-  ivec2 i0 = ivec2(floor(x));
-  vec2 f = x - vec2(i0);
-  int children = 1 << level;
-  for (int c = 0; c < 4; ++c)
+  mlLevelLookup l = mlLevelLookupAt(uv, level);
+  for (int n = 0; n < mlLevelLookupCount(l); ++n)
   {
-    ivec2 o = ivec2(c & 1, c >> 1);
-    ivec2 t = i0 + o;
-    t = mlRepeatTexture != 0 ? (t % size + size) % size : clamp(t, ivec2(0), size - 1);
-    vec2 axis = mix(1.0 - f, f, vec2(o));
-    float weight = k * axis.x * axis.y / float(children * children);
-    for (int j = 0; j < children; ++j)
-    {
-      for (int i = 0; i < children; ++i)
-      {
-        mlAddTexelFacet(min(t * children + ivec2(i, j), size0 - 1), weight);
-      }
-    }
+    float weight;
+    ivec2 t = mlLevelLookupTexel(l, n, weight);
+    mlAddTexelFacet(t, k * weight);
   }
 }
 
