@@ -8,13 +8,12 @@
 #include "ReliefScene.h"
 #include "ReliefShading.h" // ReliefVisibleShareMap, ReliefSeenShareMap, ReliefEmitterShadowMap
 #include "Timing.h"
+#include "vtkIrradianceProbesTexture.h"
 #include "vtkReliefMapper.h"
 
 #include <vtkActor.h>
-#include <vtkFieldData.h>
 #include <vtkFloatArray.h>
 #include <vtkImageData.h>
-#include <vtkIntArray.h>
 #include <vtkLight.h>
 #include <vtkMath.h>
 #include <vtkNew.h>
@@ -173,7 +172,6 @@ vtkSmartPointer<vtkImageData> OccludedProbes(
   }
   result->GetPointData()->SetScalars(out);
   vtkNew<vtkFloatArray> shareArray;
-  shareArray->SetName("ReliefVisibleShare");
   shareArray->SetNumberOfComponents(4);
   shareArray->SetNumberOfTuples(static_cast<vtkIdType>(seen.size()));
   for (std::size_t c = 0; c < seen.size(); ++c)
@@ -181,12 +179,7 @@ vtkSmartPointer<vtkImageData> OccludedProbes(
     const float tuple[4] = { share[2 * c], share[2 * c + 1], seen[c], shadow[c] };
     shareArray->SetTypedTuple(static_cast<vtkIdType>(c), tuple);
   }
-  vtkNew<vtkIntArray> shareSize;
-  shareSize->SetName("ReliefVisibleShareSize");
-  shareSize->InsertNextValue(w);
-  shareSize->InsertNextValue(h);
-  result->GetFieldData()->AddArray(shareArray);
-  result->GetFieldData()->AddArray(shareSize);
+  vtkIrradianceProbesTexture::AttachVisibleShare(result, shareArray, w, h);
   return result;
 }
 

@@ -4,6 +4,8 @@
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
 #include "vtkImageData.h"
+#include "vtkIntArray.h"
+#include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkPointData.h"
@@ -292,6 +294,23 @@ void vtkIrradianceProbesTexture::ReleaseGraphicsResources(vtkWindow* win)
 }
 
 //------------------------------------------------------------------------------
+vtkTextureObject* vtkIrradianceProbesTexture::GetTextureObject()
+{
+  return this->TextureObject;
+}
+
+void vtkIrradianceProbesTexture::AttachVisibleShare(
+  vtkDataObject* probes, vtkDataArray* share, int w, int h)
+{
+  share->SetName(GetVisibleShareName());
+  vtkNew<vtkIntArray> size;
+  size->SetName(GetVisibleShareSizeName());
+  size->InsertNextValue(w);
+  size->InsertNextValue(h);
+  probes->GetFieldData()->AddArray(share);
+  probes->GetFieldData()->AddArray(size);
+}
+
 void vtkIrradianceProbesTexture::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);

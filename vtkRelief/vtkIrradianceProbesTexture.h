@@ -48,6 +48,7 @@
 #include "vtkSmartPointer.h" // for TextureObject
 
 class vtkDataArray;
+class vtkDataObject;
 class vtkImageData;
 class vtkOpenGLRenderWindow;
 class vtkShaderProgram;
@@ -76,7 +77,7 @@ public:
   vtkGetVector2Macro(GridSize, int);
 
   /** The texture; null before the first upload. */
-  vtkTextureObject* GetTextureObject() { return this->TextureObject; }
+  vtkTextureObject* GetTextureObject();
 
   /** Whether the last upload had a visible-share map (else V = 1). */
   vtkGetMacro(HasVisibleShare, bool);
@@ -87,6 +88,13 @@ public:
   static const char* GetVisibleShareName() { return "ReliefVisibleShare"; }
   static const char* GetVisibleShareSizeName() { return "ReliefVisibleShareSize"; }
   static const char* GetWallShareName() { return "ReliefWallShare"; }
+
+  /**
+   * Puts a visible-share map into the probes' field data as Update reads it: `share` (one tuple
+   * per cell, row by row) under GetVisibleShareName(), and its grid (w, h) as the two-value
+   * integer array GetVisibleShareSizeName(). Every producer writes the map this way.
+   */
+  static void AttachVisibleShare(vtkDataObject* probes, vtkDataArray* share, int w, int h);
 
   /** The depth levels per side wall of the last upload's wall map; 0 without one. */
   vtkGetMacro(WallLevels, int);

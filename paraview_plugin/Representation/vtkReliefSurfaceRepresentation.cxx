@@ -23,7 +23,6 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkReliefProperty.h"
-#include "vtkTextureObject.h" // for vtkIrradianceProbesTexture's inline getter
 #include "vtkVirtualLightField.h"
 
 #include "SurfaceRelief.h" // SurfacePlaneOf: the command line's plane rule

@@ -29,9 +29,7 @@
 
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
-#include "vtkIntArray.h"
-#include "vtkIrradianceProbesTexture.h" // the visible share's array names
-#include "vtkTextureObject.h"           // for vtkIrradianceProbesTexture's inline getter
+#include "vtkIrradianceProbesTexture.h" // the visible share map
 
 #include "Distribution.h" // Agree
 #include "EmbreeScene.h"
@@ -306,16 +304,11 @@ bool vtkLightFieldReliefSurface::AddVisibleShare(
   // seen relief's share, and with light samples light 0's share past the relief's shadow).
   const std::size_t cells = static_cast<std::size_t>(in.ShareSize[0]) * in.ShareSize[1];
   vtkNew<vtkFloatArray> share;
-  share->SetName(vtkIrradianceProbesTexture::GetVisibleShareName());
   share->SetNumberOfComponents(static_cast<int>(in.Share.size() / cells));
   share->SetNumberOfTuples(static_cast<vtkIdType>(cells));
   std::copy(in.Share.begin(), in.Share.end(), share->GetPointer(0));
-  vtkNew<vtkIntArray> size;
-  size->SetName(vtkIrradianceProbesTexture::GetVisibleShareSizeName());
-  size->InsertNextValue(in.ShareSize[0]);
-  size->InsertNextValue(in.ShareSize[1]);
-  probesOutput->GetFieldData()->AddArray(share);
-  probesOutput->GetFieldData()->AddArray(size);
+  vtkIrradianceProbesTexture::AttachVisibleShare(
+    probesOutput, share, in.ShareSize[0], in.ShareSize[1]);
   if (!in.WallShare.empty())
   {
     // The side walls' cells, as many values each (vtkIrradianceProbesTexture::GetWallShareName).

@@ -3,13 +3,12 @@
 
 #include "ReliefScene.h"
 #include "TestReliefTestUtilities.h"
+#include "vtkIrradianceProbesTexture.h"
 #include "vtkReliefProperty.h"
 
 #include <vtkCamera.h>
-#include <vtkFieldData.h>
 #include <vtkFloatArray.h>
 #include <vtkImageData.h>
-#include <vtkIntArray.h>
 #include <vtkMath.h>
 #include <vtkPointData.h>
 #include <vtkRenderWindow.h>
@@ -133,7 +132,6 @@ void AttachVisibleShare(vtkImageData* probes, int w, int h, vtkIdType tuples, in
   const std::function<double(vtkIdType, int)>& value)
 {
   vtkNew<vtkFloatArray> share;
-  share->SetName("ReliefVisibleShare");
   share->SetNumberOfComponents(components);
   share->SetNumberOfTuples(tuples);
   for (vtkIdType t = 0; t < tuples; ++t)
@@ -143,12 +141,7 @@ void AttachVisibleShare(vtkImageData* probes, int w, int h, vtkIdType tuples, in
       share->SetComponent(t, c, value(t, c));
     }
   }
-  vtkNew<vtkIntArray> size;
-  size->SetName("ReliefVisibleShareSize");
-  size->InsertNextValue(w);
-  size->InsertNextValue(h);
-  probes->GetFieldData()->AddArray(share);
-  probes->GetFieldData()->AddArray(size);
+  vtkIrradianceProbesTexture::AttachVisibleShare(probes, share, w, h);
   probes->Modified();
 }
 

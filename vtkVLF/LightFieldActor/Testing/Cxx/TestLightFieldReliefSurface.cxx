@@ -11,7 +11,6 @@
 #include "vtkLightFieldActor.h"
 #include "vtkLightFieldActorCore.h"
 #include "vtkLightFieldReliefSurfaceCore.h"
-#include "vtkTextureObject.h" // for vtkIrradianceProbesTexture's inline getter
 #include "vtkVirtualLightField.h"
 #include "vtkVirtualLightFieldCore.h"
 
