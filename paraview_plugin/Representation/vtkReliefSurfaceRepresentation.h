@@ -84,6 +84,8 @@ public:
   void SetWriteDepth(bool on);
   void SetRepeatTexture(bool on);
   void SetLevelOfDetail(bool on);
+  void SetNormalFilter(int filter);
+  void SetFarViewRays(int rays);
   void SetExposure(double exposure);
   void SetToneMapping(bool on);
   void SetLightSetThreshold(double threshold);

@@ -40,6 +40,11 @@ CASES = {
     # of detail is on by default).
     "LevelOfDetail": ({"source.Pattern": "Stone", "source.Resolution": [1024, 1024]},
                       {"LevelOfDetail": 0}),
+    # The same minified stone: the filter of the footprint's normal, and the rays of a far pixel.
+    "NormalFilter": ({"source.Pattern": "Stone", "source.Resolution": [1024, 1024]},
+                     {"NormalFilter": "Mean normal"}),
+    "FarViewRays": ({"source.Pattern": "Stone", "source.Resolution": [1024, 1024]},
+                    {"FarViewRays": 1}),
     "Exposure": ({}, {"Exposure": 0.5}),
     "ToneMapping": ({}, {"ToneMapping": 0}),
     # Median cut gives lights of about equal energy: only a threshold near 1 skips some.
