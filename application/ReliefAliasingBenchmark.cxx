@@ -446,13 +446,8 @@ int RunReliefAliasingBenchmark(const std::vector<std::string>& args)
     }
   }
   const std::string compare = cl.Get("--compare-filter");
-  if (compare == "mean" || compare == "visible" || compare == "masked")
-  {
-    settings.CompareFilter = compare == "mean" ? vtkReliefProperty::MeanNormalFilter
-      : compare == "visible"                   ? vtkReliefProperty::VisibleNormalFilter
-                                               : vtkReliefProperty::HeightMaskedNormalFilter;
-  }
-  else
+  settings.CompareFilter = vtkReliefProperty::GetNormalFilterFromName(compare.c_str());
+  if (settings.CompareFilter < 0)
   {
     return cl.UsageError("--compare-filter: '" + compare + "' is not mean, visible or masked");
   }

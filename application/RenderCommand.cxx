@@ -55,6 +55,13 @@ void AddSceneOptions(CommandLine& cl)
     "filter where texels are smaller than pixels (the default: the footprint's visible normal, "
     "no steps finer than the footprint)");
   cl.AddFlag("--no-level-of-detail", "no filtering where texels are smaller than pixels");
+  cl.AddValue("--normal-filter", "NAME",
+    "with level of detail, the shading normal over a pixel footprint: mean (Toksvig), visible "
+    "(the visible normal's moments) or masked (with height-correlated masking; the mapper's "
+    "default)");
+  cl.AddValue("--far-view-rays", "N",
+    "with level of detail, the most view rays averaged across a far pixel, 1-8 (1: one ray; the "
+    "mapper's default is 3)");
   cl.AddFlag("--no-shadows", "no self-shadowing");
   cl.AddFlag("--no-silhouettes", "keep fragments whose hit leaves the texture");
   cl.AddFlag("--no-surface-curvature",
@@ -101,6 +108,20 @@ bool ReadSceneOptions(const CommandLine& cl, ReliefSceneOptions& o, std::string&
   }
   o.ToneMapping = !cl.Has("--no-tone-map");
   o.LevelOfDetail = !cl.Has("--no-level-of-detail");
+  if (cl.Has("--normal-filter"))
+  {
+    const std::string filter = cl.Get("--normal-filter");
+    o.NormalFilter = vtkReliefProperty::GetNormalFilterFromName(filter.c_str());
+    if (o.NormalFilter < 0)
+    {
+      error = "--normal-filter: '" + filter + "' is not mean, visible or masked";
+      return false;
+    }
+  }
+  if (cl.Has("--far-view-rays") && !cl.GetInt("--far-view-rays", 1, 8, o.FarViewRays, error))
+  {
+    return false;
+  }
   if (!cl.GetInt("--resolution", 1, 16384, o.Resolution, error) ||
     !cl.GetDouble("--depth-scale", 0.0, 10.0, o.DepthScale, error) ||
     !cl.GetInt("--linear-steps", 1, 1024, o.LinearSteps, error) ||

@@ -382,6 +382,14 @@ bool BuildReliefScene(const ReliefSceneOptions& options, ReliefScene& scene, std
   scene.Mapper->GetReliefProperty()->SetWriteDepth(options.WriteDepth);
   scene.Mapper->GetReliefProperty()->SetAdaptiveSteps(options.AdaptiveSteps);
   scene.Mapper->GetReliefProperty()->SetLevelOfDetail(options.LevelOfDetail);
+  if (options.NormalFilter >= 0)
+  {
+    scene.Mapper->GetReliefProperty()->SetNormalFilter(options.NormalFilter);
+  }
+  if (options.FarViewRays > 0)
+  {
+    scene.Mapper->GetReliefProperty()->SetFarViewRays(options.FarViewRays);
+  }
   scene.Mapper->GetReliefProperty()->SetExposure(options.Exposure);
   scene.Mapper->GetReliefProperty()->SetToneMapping(options.ToneMapping);
   if (!options.Environment.empty())

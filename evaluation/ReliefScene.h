@@ -42,6 +42,8 @@ struct ReliefSceneOptions
   bool WriteDepth = true;
   bool AdaptiveSteps = false;
   bool LevelOfDetail = false;
+  int NormalFilter = -1; // vtkReliefProperty::NormalFilterKind; -1: the property's default
+  int FarViewRays = 0;   // vtkReliefProperty::FarViewRays; 0: the property's default
   int Width = 800;
   int Height = 800;
   double ViewAngle = 55.0; // camera angle from the wall's normal, degrees

@@ -21,6 +21,10 @@ const char* const MethodNames[] = { "texture", "bump", "parallax", "parallax-lim
   "relaxed-cone", "relaxed-cone-interval", "cone", "max-mipmap" };
 static_assert(sizeof(MethodNames) / sizeof(MethodNames[0]) == vtkReliefProperty::NumberOfMethods,
   "one name per method");
+const char* const NormalFilterNames[] = { "mean", "visible", "masked" };
+static_assert(sizeof(NormalFilterNames) / sizeof(NormalFilterNames[0]) ==
+    vtkReliefProperty::HeightMaskedNormalFilter + 1,
+  "one name per normal filter");
 } // namespace
 
 //------------------------------------------------------------------------------
@@ -89,6 +93,29 @@ const char* vtkReliefProperty::GetMethodName(int method)
     return "unknown";
   }
   return MethodNames[method];
+}
+
+//------------------------------------------------------------------------------
+const char* vtkReliefProperty::GetNormalFilterName(int filter)
+{
+  if (filter < MeanNormalFilter || filter > HeightMaskedNormalFilter)
+  {
+    return "unknown";
+  }
+  return NormalFilterNames[filter];
+}
+
+//------------------------------------------------------------------------------
+int vtkReliefProperty::GetNormalFilterFromName(const char* name)
+{
+  for (int f = MeanNormalFilter; name && f <= HeightMaskedNormalFilter; ++f)
+  {
+    if (std::strcmp(name, NormalFilterNames[f]) == 0)
+    {
+      return f;
+    }
+  }
+  return -1;
 }
 
 //------------------------------------------------------------------------------

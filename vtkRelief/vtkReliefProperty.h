@@ -201,6 +201,16 @@ public:
 
   ///@{
   /**
+   * Normal filter names used on the command line: "mean", "visible", "masked".
+   * GetNormalFilterName returns "unknown" outside the kinds; GetNormalFilterFromName -1 for an
+   * unknown (or null) name.
+   */
+  static const char* GetNormalFilterName(int filter);
+  static int GetNormalFilterFromName(const char* name);
+  ///@}
+
+  ///@{
+  /**
    * The most view rays per far pixel (level of detail with the visible normal filters): where a
    * pixel's footprint is longer than two texels along its major axis, about one view ray per
    * minor axis' length along it, rounded up to an odd count and at most this many (an even

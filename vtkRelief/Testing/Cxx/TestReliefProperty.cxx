@@ -36,6 +36,21 @@ TEST(ReliefProperty, MethodNamesRoundTrip)
   EXPECT_STREQ(vtkReliefProperty::GetMethodName(vtkReliefProperty::MaximumMipmap), "max-mipmap");
 }
 
+TEST(ReliefProperty, NormalFilterNamesRoundTrip)
+{
+  for (int f = vtkReliefProperty::MeanNormalFilter;
+       f <= vtkReliefProperty::HeightMaskedNormalFilter; ++f)
+  {
+    const char* name = vtkReliefProperty::GetNormalFilterName(f);
+    EXPECT_EQ(vtkReliefProperty::GetNormalFilterFromName(name), f) << name;
+  }
+  EXPECT_STREQ(
+    vtkReliefProperty::GetNormalFilterName(vtkReliefProperty::HeightMaskedNormalFilter), "masked");
+  EXPECT_STREQ(vtkReliefProperty::GetNormalFilterName(3), "unknown");
+  EXPECT_EQ(vtkReliefProperty::GetNormalFilterFromName("toksvig"), -1);
+  EXPECT_EQ(vtkReliefProperty::GetNormalFilterFromName(nullptr), -1);
+}
+
 TEST(ReliefProperty, SteepIsLinearSearch)
 {
   EXPECT_EQ(vtkReliefProperty::GetMethodFromName("steep"), vtkReliefProperty::LinearSearch);

@@ -1,0 +1,37 @@
+# SPDX-License-Identifier: BSD-3-Clause
+# `render --far-view-rays` and `--normal-filter` reach the mapper: at a grazing view of a fine
+# 512^2 stone in a small frame (far pixels), one view ray and the mean normal each draw another
+# image than the defaults (3 rays, the height-masked visible normal); with level of detail off
+# neither changes anything (both act only through it). Bad values are refused naming the option.
+include("${CMAKE_CURRENT_LIST_DIR}/RunTool.cmake")
+cli_fresh_work()
+set(scene render --offscreen --size 96x96 --pattern Stone --resolution 512 --view-angle 82)
+function (render_to name)
+  cli_run(TRUE ${scene} ${ARGN} --out "${WORK}/${name}.png")
+  file(SHA256 "${WORK}/${name}.png" hash)
+  set(${name} "${hash}" PARENT_SCOPE)
+endfunction ()
+render_to(default)
+render_to(one_ray --far-view-rays 1)
+render_to(mean --normal-filter mean)
+render_to(masked_three --normal-filter masked --far-view-rays 3)
+if (one_ray STREQUAL default)
+  message(FATAL_ERROR "--far-view-rays 1 drew the default image")
+endif ()
+if (mean STREQUAL default)
+  message(FATAL_ERROR "--normal-filter mean drew the default image")
+endif ()
+if (NOT masked_three STREQUAL default)
+  message(FATAL_ERROR "the defaults named explicitly drew another image than the defaults")
+endif ()
+render_to(off --no-level-of-detail)
+render_to(off_one_ray --no-level-of-detail --far-view-rays 1 --normal-filter mean)
+if (NOT off_one_ray STREQUAL off)
+  message(FATAL_ERROR "without level of detail --far-view-rays / --normal-filter changed the image")
+endif ()
+cli_expect_error(2 "--far-view-rays" ${scene} --far-view-rays 9 --out "${WORK}/never.png")
+cli_expect_error(2 "--normal-filter: 'toksvig' is not mean, visible or masked"
+  ${scene} --normal-filter toksvig --out "${WORK}/never.png")
+if (EXISTS "${WORK}/never.png")
+  message(FATAL_ERROR "an image was written with a refused option")
+endif ()
