@@ -393,6 +393,7 @@ bool RunReliefSweep(
     o.FillViewport = settings.FillViewport;
     o.SelfShadowing = false;
     o.LevelOfDetail = settings.LevelOfDetail;
+    o.FarViewRays = settings.FarViewRays;
     std::string error;
     ReliefScene relief, dense;
     if (!BuildReliefScene(o, relief, error) ||
@@ -654,6 +655,9 @@ int RunReliefSweep(const std::vector<std::string>& args)
   cl.AddFlag("--level-of-detail",
     "draw with level of detail (vtkReliefProperty's default; off in the sweep), to measure what "
     "it uploads");
+  cl.AddValue("--far-view-rays", "N",
+    "with --level-of-detail, the most view rays per far pixel, 1-8 (vtkReliefProperty::"
+    "FarViewRays; the property's default otherwise)");
   cl.AddFlag("--no-fill",
     "keep the square, whole-wall framing (the wall is then a thin strip at grazing angles) "
     "instead of stretching the view so the wall fills the window");
@@ -761,6 +765,10 @@ int RunReliefSweep(const std::vector<std::string>& args)
   }
   settings.DenseMesh = !cl.Has("--no-dense");
   settings.LevelOfDetail = cl.Has("--level-of-detail");
+  if (cl.Has("--far-view-rays") && !cl.GetInt("--far-view-rays", 1, 8, settings.FarViewRays, error))
+  {
+    return cl.UsageError(error);
+  }
   settings.CsvFile = cl.Get("--csv");
   settings.PlotDirectory = cl.Get("--plots");
   return RunReliefSweep(settings, std::cout) ? 0 : 1;

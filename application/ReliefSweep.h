@@ -53,6 +53,9 @@ struct ReliefSweepSettings
   // Draw with level of detail (vtkReliefProperty's default; the sweep draws without it):
   // measures what it uploads (the GPU MB column).
   bool LevelOfDetail = false;
+  // With LevelOfDetail: the most view rays per far pixel (vtkReliefProperty::FarViewRays); 0:
+  // the property's default.
+  int FarViewRays = 0;
 };
 
 /** One step setting of a method: what the mapper's LinearSteps / RefinementSteps mean for it. */
