@@ -377,8 +377,8 @@ int RunVlfAccuracyBenchmark(const std::vector<std::string>& args)
           ReadLinearImage(key + "-b.exr", b, error) && a.Width == width && b.Width == width))
     {
       const Clock::time_point start = Clock::now();
-      a = ReferenceHalf(s, embree, hits, width, height, sceneSamples / 2, 1);
-      b = ReferenceHalf(s, embree, hits, width, height, sceneSamples / 2, 2);
+      a = ReferenceHalf(embree, hits, width, height, sceneSamples / 2, 1);
+      b = ReferenceHalf(embree, hits, width, height, sceneSamples / 2, 2);
       std::printf("# %s: path-traced reference, %d paths per pixel, %.1f s (cached in %s-*.exr)\n",
         name.c_str(), sceneSamples, SecondsSince(start), key.c_str());
       if (!WriteLinearImage(a, key + "-a.exr", error) ||

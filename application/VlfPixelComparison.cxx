@@ -16,6 +16,27 @@ namespace mesolight
 {
 namespace vlf = mesolight::vlf;
 
+namespace
+{
+// f(i, hits[i]) for every pixel i whose primary ray met the scene, in parallel (grain pixels
+// per task).
+template <typename Function>
+void ForEachSceneHit(const std::vector<PixelHit>& hits, std::size_t grain, const Function& f)
+{
+  ParallelFor(0, hits.size(), grain,
+    [&](std::size_t b, std::size_t e)
+    {
+      for (std::size_t i = b; i < e; ++i)
+      {
+        if (hits[i].Triangle != SceneHit::None)
+        {
+          f(i, hits[i]);
+        }
+      }
+    });
+}
+} // namespace
+
 std::vector<PixelHit> PrimaryHits(const AccuracyScene& s, const EmbreeScene& embree, int w, int h)
 {
   std::vector<PixelHit> hits(static_cast<std::size_t>(w) * h);
@@ -50,26 +71,18 @@ std::vector<PixelHit> PrimaryHits(const AccuracyScene& s, const EmbreeScene& emb
 }
 
 // Half of the reference: `samples` paths per pixel, seeds of half `half`.
-RgbImage ReferenceHalf(const AccuracyScene& s, const EmbreeScene& embree,
-  const std::vector<PixelHit>& hits, int w, int h, int samples, int half)
+RgbImage ReferenceHalf(
+  const EmbreeScene& embree, const std::vector<PixelHit>& hits, int w, int h, int samples, int half)
 {
   PathTracer tracer(embree);
   RgbImage out(w, h);
-  ParallelFor(0, hits.size(), 64,
-    [&](std::size_t b, std::size_t e)
+  ForEachSceneHit(hits, 64,
+    [&](std::size_t i, const PixelHit& hit)
     {
-      for (std::size_t i = b; i < e; ++i)
-      {
-        if (hits[i].Triangle == SceneHit::None)
-        {
-          continue;
-        }
-        const glm::vec3 r = tracer.DiffuseRadianceLeaving(hits[i].Triangle, hits[i].Point, samples,
-          (static_cast<std::uint64_t>(half) << 40) ^ (i * 0x9e3779b97f4a7c15ull));
-        std::copy(&r.x, &r.x + 3, out.Rgb.data() + 3 * i);
-      }
+      const glm::vec3 r = tracer.DiffuseRadianceLeaving(hit.Triangle, hit.Point, samples,
+        (static_cast<std::uint64_t>(half) << 40) ^ (i * 0x9e3779b97f4a7c15ull));
+      std::copy(&r.x, &r.x + 3, out.Rgb.data() + 3 * i);
     });
-  (void)s;
   return out;
 }
 
@@ -302,21 +315,13 @@ RgbImage FieldImage(const vlf::LightField& field, const std::vector<PixelHit>& h
 {
   const vlf::Lookup lookup(field);
   RgbImage out(w, h);
-  ParallelFor(0, hits.size(), 256,
-    [&](std::size_t b, std::size_t e)
+  ForEachSceneHit(hits, 256,
+    [&](std::size_t i, const PixelHit& hit)
     {
-      for (std::size_t i = b; i < e; ++i)
+      const std::uint32_t s = field.SurfaceOfTriangle(hit.Triangle);
+      if (s != vlf::NoSurface)
       {
-        if (hits[i].Triangle == SceneHit::None)
-        {
-          continue;
-        }
-        const std::uint32_t s = field.SurfaceOfTriangle(hits[i].Triangle);
-        if (s == vlf::NoSurface)
-        {
-          continue;
-        }
-        const glm::vec3 v = lookup.DiffuseRadiance(s, vlf::ToUnit(field, hits[i].Point));
+        const glm::vec3 v = lookup.DiffuseRadiance(s, vlf::ToUnit(field, hit.Point));
         std::copy(&v.x, &v.x + 3, out.Rgb.data() + 3 * i);
       }
     });

@@ -38,8 +38,8 @@ struct PixelError
 std::vector<PixelHit> PrimaryHits(const AccuracyScene& s, const EmbreeScene& embree, int w, int h);
 
 // Half of the reference: `samples` paths per pixel, seeds of half `half`.
-RgbImage ReferenceHalf(const AccuracyScene& s, const EmbreeScene& embree,
-  const std::vector<PixelHit>& hits, int w, int h, int samples, int half);
+RgbImage ReferenceHalf(const EmbreeScene& embree, const std::vector<PixelHit>& hits, int w, int h,
+  int samples, int half);
 
 // Lit pixels: reference above 1% of the mean over the compared pixels (shadows so deep that a
 // relative error means nothing are left out; black-where-lit counts the rest).
