@@ -299,9 +299,16 @@ vtkTextureObject* vtkIrradianceProbesTexture::GetTextureObject()
   return this->TextureObject;
 }
 
+//------------------------------------------------------------------------------
 void vtkIrradianceProbesTexture::AttachVisibleShare(
   vtkDataObject* probes, vtkDataArray* share, int w, int h)
 {
+  if (!probes || !share)
+  {
+    vtkGenericWarningMacro(
+      "AttachVisibleShare: no " << (probes ? "share map" : "probes") << " given; nothing attached");
+    return;
+  }
   share->SetName(GetVisibleShareName());
   vtkNew<vtkIntArray> size;
   size->SetName(GetVisibleShareSizeName());
@@ -311,6 +318,7 @@ void vtkIrradianceProbesTexture::AttachVisibleShare(
   probes->GetFieldData()->AddArray(size);
 }
 
+//------------------------------------------------------------------------------
 void vtkIrradianceProbesTexture::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);

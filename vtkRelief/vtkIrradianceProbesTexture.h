@@ -92,7 +92,8 @@ public:
   /**
    * Puts a visible-share map into the probes' field data as Update reads it: `share` (one tuple
    * per cell, row by row) under GetVisibleShareName(), and its grid (w, h) as the two-value
-   * integer array GetVisibleShareSizeName(). Every producer writes the map this way.
+   * integer array GetVisibleShareSizeName(). Every producer writes the map this way. A null
+   * argument is reported with a warning and attaches nothing.
    */
   static void AttachVisibleShare(vtkDataObject* probes, vtkDataArray* share, int w, int h);
 

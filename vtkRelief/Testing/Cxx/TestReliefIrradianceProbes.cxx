@@ -11,15 +11,18 @@
 #include "MessageCapture.h"
 #include "ReliefProbesTestScene.h"
 #include "vtkCompositeReliefMapper.h"
+#include "vtkIrradianceProbesTexture.h"
 #include "vtkReliefMapper.h"
 #include "vtkReliefProperty.h"
 
 #include <vtkActor.h>
+#include <vtkFieldData.h>
 #include <vtkFloatArray.h>
 #include <vtkImageData.h>
 #include <vtkLight.h>
 #include <vtkMath.h>
 #include <vtkNew.h>
+#include <vtkOutputWindow.h>
 #include <vtkPointData.h>
 #include <vtkProperty.h>
 #include <vtkRenderer.h>
@@ -433,6 +436,21 @@ TEST(ReliefIrradianceProbes, BadProbesAreReportedAndLeftOut)
 
 // Probes from a pipeline (input port 3) shade as the same data given directly, and a modified
 // probe image is uploaded again: the new radiance shows at the next render.
+TEST(ReliefIrradianceProbes, AttachingANullShareMapWarnsAndAttachesNothing)
+{
+  vtkNew<mesolight_test::MessageCapture> messages;
+  messages->Watch(vtkOutputWindow::GetInstance());
+  vtkSmartPointer<vtkImageData> probes = ProbeImage(1, 1, { ConstantRadiance(glm::dvec3(1.0)) });
+  vtkIrradianceProbesTexture::AttachVisibleShare(probes, nullptr, 4, 4);
+  EXPECT_TRUE(messages->HasWarning("no share map given")) << messages->AllWarnings();
+  EXPECT_EQ(probes->GetFieldData()->GetArray(vtkIrradianceProbesTexture::GetVisibleShareSizeName()),
+    nullptr);
+  vtkNew<vtkFloatArray> share;
+  vtkIrradianceProbesTexture::AttachVisibleShare(nullptr, share, 4, 4);
+  EXPECT_TRUE(messages->HasWarning("no probes given")) << messages->AllWarnings();
+  EXPECT_EQ(share->GetName(), nullptr);
+}
+
 TEST(ReliefIrradianceProbes, ProbesFromAConnectionFollowTheirChanges)
 {
   Scene scene;
