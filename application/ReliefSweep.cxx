@@ -376,6 +376,9 @@ bool RunReliefSweep(
          "silh = % of the footprint covered by exactly one;\n"
       << "RMSE/PSNR = shaded colour (no self-shadowing) vs the dense displaced mesh; shadow = % of "
          "pixels covered in both where first-light visibility differs.\n"
+      << "samples = relief-texture samples per covered pixel (what texture units fetch); warp smp "
+         "= the same charged at the largest count of each 8 x 4 pixel group (a 32-lane warp's "
+         "loop runs until its slowest pixel ends).\n"
       << std::flush;
 
   std::vector<ReliefSweepRow> rows;
@@ -534,7 +537,9 @@ bool RunReliefSweep(
 
           // What the march sampled, per covered pixel of the same (shadowless) frame.
           mapper->GetReliefProperty()->SetOutput(vtkReliefProperty::SampleCountOutput);
-          row.SamplesPerPixel = MeanSampleCount(CaptureFrame(reliefWindow));
+          const Frame counts = CaptureFrame(reliefWindow);
+          row.SamplesPerPixel = MeanSampleCount(counts);
+          row.LockStepSamplesPerPixel = MeanLockStepSampleCount(counts, 8, 4);
 
           // Hit coordinates against the CPU reference.
           mapper->GetReliefProperty()->SetOutput(vtkReliefProperty::HitUOutput);

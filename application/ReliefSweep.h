@@ -84,6 +84,10 @@ struct ReliefSweepRow
   // Relief-texture samples per covered pixel (SampleCountOutput): the march's cost on any GPU,
   // free of llvmpipe's timing noise and fixed per-frame cost.
   double SamplesPerPixel = 0.0;
+  // The same counts in lock step (MeanLockStepSampleCount, 8 x 4 pixel groups: a 32-lane warp):
+  // what the march's loop arithmetic costs on SIMD hardware, where a group iterates until its
+  // slowest pixel ends.
+  double LockStepSamplesPerPixel = 0.0;
   double HitMeanTexels = 0.0;
   double HitP99Texels = 0.0;
   double SilhouetteMismatch = 0.0; // % of the footprint

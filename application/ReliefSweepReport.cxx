@@ -31,7 +31,7 @@ void PrintHeader(std::ostream& out)
       << std::setw(9) << "ms/frame" << std::setw(9) << "samples" << std::setw(10) << "hit mean"
       << std::setw(9) << "hit p99" << std::setw(8) << "silh %" << std::setw(8) << "RMSE"
       << std::setw(7) << "PSNR" << std::setw(9) << "shadow %" << std::setw(9) << "GPU MB"
-      << "\n";
+      << std::setw(10) << "warp smp" << "\n";
 }
 
 void PrintRow(std::ostream& out, const ReliefSweepRow& r)
@@ -43,7 +43,8 @@ void PrintRow(std::ostream& out, const ReliefSweepRow& r)
       << Fixed(r.HitP99Texels, 2) << std::setw(8) << Fixed(r.SilhouetteMismatch, 2) << std::setw(8)
       << (r.ColorRmse < 0.0 ? std::string("-") : Fixed(r.ColorRmse, 2)) << std::setw(7)
       << (r.ColorRmse < 0.0 ? std::string("-") : Fixed(r.Psnr, 1)) << std::setw(9)
-      << Fixed(r.ShadowMismatch, 2) << std::setw(9) << Fixed(r.GpuMegaBytes, 2) << "\n";
+      << Fixed(r.ShadowMismatch, 2) << std::setw(9) << Fixed(r.GpuMegaBytes, 2) << std::setw(10)
+      << Fixed(r.LockStepSamplesPerPixel, 1) << "\n";
 }
 
 bool WriteCsv(const std::string& file, const std::vector<ReliefSweepRow>& rows,
@@ -53,7 +54,7 @@ bool WriteCsv(const std::string& file, const std::vector<ReliefSweepRow>& rows,
   csv << "map,view_angle_deg,method,linear_steps,refinement_steps,steps,width,height,depth_scale,"
          "ms_per_frame,first_frame_ms,samples_per_pixel,hit_error_mean_texels,hit_error_p99_texels,"
          "silhouette_mismatch_pct,color_rmse,psnr_db,shadow_mismatch_pct,covered_both,"
-         "footprint,texture_storage,gpu_megabytes,dense_mesh_megabytes\n";
+         "footprint,texture_storage,gpu_megabytes,dense_mesh_megabytes,lockstep_samples_per_pixel\n";
   csv << std::setprecision(8);
   for (const ReliefSweepRow& r : rows)
   {
@@ -66,7 +67,8 @@ bool WriteCsv(const std::string& file, const std::vector<ReliefSweepRow>& rows,
         << (r.FloatTextures       ? "float"
                : r.DerivedNormals ? "derived"
                                   : "compact")
-        << ',' << r.GpuMegaBytes << ',' << r.DenseMegaBytes << "\n";
+        << ',' << r.GpuMegaBytes << ',' << r.DenseMegaBytes << ',' << r.LockStepSamplesPerPixel
+        << "\n";
   }
   return static_cast<bool>(csv);
 }
@@ -357,6 +359,10 @@ void PrintDefaultPlace(const std::vector<ReliefSweepRow>& rows, std::ostream& ou
           << (relief && relief->SamplesPerPixel > 0.0
                  ? Fixed(d.SamplesPerPixel / relief->SamplesPerPixel, 2)
                  : std::string("-"))
+          << std::setw(9)
+          << (relief && relief->LockStepSamplesPerPixel > 0.0
+                 ? Fixed(d.LockStepSamplesPerPixel / relief->LockStepSamplesPerPixel, 2)
+                 : std::string("-"))
           << "   "
           << (dominating == 0 ? std::string("on the front")
                               : "behind " + std::to_string(dominating) + " rows")
@@ -388,7 +394,7 @@ void PrintDefaultPlace(const std::vector<ReliefSweepRow>& rows, std::ostream& ou
          "least as accurate and at least as fast)\n"
       << "    " << std::left << std::setw(22) << "map" << std::right << std::setw(5) << "angle"
       << std::setw(9) << "mean" << std::setw(8) << "p99" << std::setw(6) << "goal" << std::setw(9)
-      << "ms/rel" << std::setw(9) << "smp/rel"
+      << "ms/rel" << std::setw(9) << "smp/rel" << std::setw(9) << "warp/rel"
       << "   front\n"
       << table.str() << "    accuracy goal met in " << met << " of " << cells
       << ", at most relief 32+8's ms and samples in " << cheap << " of " << cells

@@ -198,6 +198,40 @@ double MeanSampleCount(const Frame& frame)
 }
 
 //------------------------------------------------------------------------------
+double MeanLockStepSampleCount(const Frame& frame, int groupWidth, int groupHeight)
+{
+  if (groupWidth < 1 || groupHeight < 1 || frame.Width < 1 || frame.Height < 1)
+  {
+    return 0.0;
+  }
+  double sum = 0.0;
+  long long n = 0;
+  for (int y0 = 0; y0 < frame.Height; y0 += groupHeight)
+  {
+    for (int x0 = 0; x0 < frame.Width; x0 += groupWidth)
+    {
+      int largest = 0;
+      long long covered = 0;
+      for (int y = y0; y < std::min(y0 + groupHeight, frame.Height); ++y)
+      {
+        for (int x = x0; x < std::min(x0 + groupWidth, frame.Width); ++x)
+        {
+          int count = 0;
+          if (DecodeSampleCount(frame, static_cast<size_t>(y) * frame.Width + x, count))
+          {
+            largest = std::max(largest, count);
+            ++covered;
+          }
+        }
+      }
+      sum += static_cast<double>(largest) * covered;
+      n += covered;
+    }
+  }
+  return n > 0 ? sum / n : 0.0;
+}
+
+//------------------------------------------------------------------------------
 bool WritePng(const Frame& frame, const char* fileName)
 {
   vtkNew<vtkImageData> image;

@@ -93,6 +93,16 @@ MESOLIGHTEVALUATION_EXPORT bool DecodeSampleCount(const Frame& frame, size_t pix
 /** Mean of DecodeSampleCount over the covered pixels of a frame (0 if none is covered). */
 MESOLIGHTEVALUATION_EXPORT double MeanSampleCount(const Frame& frame);
 
+/**
+ * The samples a lock-step machine issues per covered pixel: the frame cut into groups of
+ * groupWidth x groupHeight pixels (a GPU's warp or wavefront: 8 x 4 is 32 lanes), every covered
+ * pixel charged its group's largest count, since a loop runs until its slowest lane ends.
+ * MeanSampleCount is what the texture units fetch (idle lanes fetch nothing); this is what the
+ * loop's arithmetic costs. 0 if nothing is covered or a group size is below 1.
+ */
+MESOLIGHTEVALUATION_EXPORT double MeanLockStepSampleCount(
+  const Frame& frame, int groupWidth, int groupHeight);
+
 /** Writes the frame's colour as PNG. */
 MESOLIGHTEVALUATION_EXPORT bool WritePng(const Frame& frame, const char* fileName);
 
