@@ -23,9 +23,11 @@
 #include <cmath>
 #include <numeric>
 
-// The OpenGL context device of vtkContextView. mesolight_application is a static library, so the
-// executables' autoinit does not reach the chart code: register it here.
+// The OpenGL context device of vtkContextView and the interactor style its view sets up.
+// mesolight_application is a static library, so the executables' autoinit does not reach the
+// chart code: register them here.
 VTK_MODULE_INIT(vtkRenderingContextOpenGL2);
+VTK_MODULE_INIT(vtkInteractionStyle);
 
 namespace mesolight
 {
@@ -81,7 +83,7 @@ bool WriteScatterChartPng(
   xy->GetLegend()->SetVerticalAlignment(vtkChartLegend::TOP);
 
   std::vector<vtkSmartPointer<vtkTable>> tables; // kept alive until the render
-  if (!chart.Line.X.empty())
+  if (chart.Line.X.size() >= 2) // a line of one point draws nothing (and VTK warns)
   {
     tables.push_back(MakeTable(chart.Line, chart));
     vtkPlot* line = xy->AddPlot(vtkChart::LINE);
