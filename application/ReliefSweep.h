@@ -81,7 +81,7 @@ struct ReliefSweepRow
   ReliefSweepStep Step;
   double MedianMs = 0.0;
   double FirstMs = 0.0; // the warm-up frame (shader compilation, uploads)
-  // Relief-texture samples per covered pixel (SampleCountOutput): the march's cost on any GPU,
+  // Relief-texture samples per covered pixel (SampleCountOutput): the march's fetches on any GPU,
   // free of llvmpipe's timing noise and fixed per-frame cost.
   double SamplesPerPixel = 0.0;
   // The same counts in lock step (MeanLockStepSampleCount, 8 x 4 pixel groups: a 32-lane warp):

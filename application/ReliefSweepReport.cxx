@@ -307,7 +307,7 @@ void PrintDefaultPlace(const std::vector<ReliefSweepRow>& rows, std::ostream& ou
   const double goalMean = 0.25, goalP99 = 1.0;
   bool any = false;
   std::ostringstream table;
-  int met = 0, cheap = 0, front = 0, cells = 0;
+  int met = 0, cheap = 0, cheapLockStep = 0, front = 0, cells = 0;
   for (const ReliefSweepRow& d : rows)
   {
     if (!d.IsDefault || OtherStorage(d))
@@ -351,6 +351,7 @@ void PrintDefaultPlace(const std::vector<ReliefSweepRow>& rows, std::ostream& ou
       relief && d.MedianMs <= relief->MedianMs && d.SamplesPerPixel <= relief->SamplesPerPixel;
     met += accurate ? 1 : 0;
     cheap += costs ? 1 : 0;
+    cheapLockStep += relief && d.LockStepSamplesPerPixel <= relief->LockStepSamplesPerPixel ? 1 : 0;
     front += dominating == 0 ? 1 : 0;
     table << "    " << std::left << std::setw(22) << d.Map << std::right << std::setw(5)
           << Fixed(d.Angle, 0) << std::setw(9) << Fixed(d.HitMeanTexels, 3) << std::setw(8)
@@ -398,6 +399,7 @@ void PrintDefaultPlace(const std::vector<ReliefSweepRow>& rows, std::ostream& ou
       << "   front\n"
       << table.str() << "    accuracy goal met in " << met << " of " << cells
       << ", at most relief 32+8's ms and samples in " << cheap << " of " << cells
+      << ", at most its warp samples in " << cheapLockStep << " of " << cells
       << ", on the time front in " << front << " of " << cells << "\n";
 }
 } // namespace

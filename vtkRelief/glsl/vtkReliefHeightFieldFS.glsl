@@ -131,7 +131,7 @@ float mlFootprintShadowing(vec3 l)
   return 1.0 / (1.0 + max(lambda, 0.0));
 }
 
-// Relief-texture samples this fragment took (SampleCountOutput): what a march costs on any GPU.
+// Relief-texture samples this fragment took (SampleCountOutput): what a march fetches on any GPU.
 // Counted only when that output is asked for; the other variants carry no counter at all.
 #if ML_OUTPUT == 5
 int mlSampleCount = 0;
