@@ -31,7 +31,8 @@ void PrintHeader(std::ostream& out)
       << std::setw(9) << "ms/frame" << std::setw(9) << "samples" << std::setw(10) << "hit mean"
       << std::setw(9) << "hit p99" << std::setw(8) << "silh %" << std::setw(8) << "RMSE"
       << std::setw(7) << "PSNR" << std::setw(9) << "shadow %" << std::setw(9) << "GPU MB"
-      << std::setw(10) << "warp smp" << "\n";
+      << std::setw(10) << "warp smp"
+      << "\n";
 }
 
 void PrintRow(std::ostream& out, const ReliefSweepRow& r)
@@ -51,10 +52,11 @@ bool WriteCsv(const std::string& file, const std::vector<ReliefSweepRow>& rows,
   const ReliefSweepSettings& settings)
 {
   std::ofstream csv(file);
-  csv << "map,view_angle_deg,method,linear_steps,refinement_steps,steps,width,height,depth_scale,"
-         "ms_per_frame,first_frame_ms,samples_per_pixel,hit_error_mean_texels,hit_error_p99_texels,"
-         "silhouette_mismatch_pct,color_rmse,psnr_db,shadow_mismatch_pct,covered_both,"
-         "footprint,texture_storage,gpu_megabytes,dense_mesh_megabytes,lockstep_samples_per_pixel\n";
+  csv
+    << "map,view_angle_deg,method,linear_steps,refinement_steps,steps,width,height,depth_scale,"
+       "ms_per_frame,first_frame_ms,samples_per_pixel,hit_error_mean_texels,hit_error_p99_texels,"
+       "silhouette_mismatch_pct,color_rmse,psnr_db,shadow_mismatch_pct,covered_both,"
+       "footprint,texture_storage,gpu_megabytes,dense_mesh_megabytes,lockstep_samples_per_pixel\n";
   csv << std::setprecision(8);
   for (const ReliefSweepRow& r : rows)
   {

@@ -47,7 +47,8 @@ TEST(SampleCounts, LockStepChargesEveryCoveredPixelItsGroupsLargestCount)
   EXPECT_DOUBLE_EQ(
     mesolight::MeanLockStepSampleCount(frame, 2, 2), (4 * 300 + 3 * 4 + 1 * 7) / 8.0);
   // One-pixel groups are the mean: nothing runs in lock step.
-  EXPECT_DOUBLE_EQ(mesolight::MeanLockStepSampleCount(frame, 1, 1), mesolight::MeanSampleCount(frame));
+  EXPECT_DOUBLE_EQ(
+    mesolight::MeanLockStepSampleCount(frame, 1, 1), mesolight::MeanSampleCount(frame));
   // A group covering the frame charges every pixel the largest count.
   EXPECT_DOUBLE_EQ(mesolight::MeanLockStepSampleCount(frame, 8, 4), 300.0);
 }
