@@ -449,10 +449,20 @@ bool RunReliefSweep(
         out << "bench relief: " << error << "\n";
         return false;
       }
-      out << "[" << map.Label << ", " << angle
-          << " deg] CPU reference: " << reference.CountCovered() << " covered of "
-          << reference.CountFootprint() << " footprint pixels in "
-          << report::Fixed(reference.Seconds, 3) << " s\n"
+      double floorSum = 0.0;
+      for (int cells : reference.BoundReachingCells)
+      {
+        floorSum += std::max(cells, 0);
+      }
+      const long long covered = reference.CountCovered();
+      const double floorMean = covered > 0 ? floorSum / double(covered) : 0.0;
+      const double floorLockStep =
+        MeanLockStepCount(reference.BoundReachingCells, reference.Width, reference.Height, 8, 4);
+      out << "[" << map.Label << ", " << angle << " deg] CPU reference: " << covered
+          << " covered of " << reference.CountFootprint() << " footprint pixels in "
+          << report::Fixed(reference.Seconds, 3)
+          << " s; an exact bound traversal's floor: " << report::Fixed(floorMean, 1) << " samples, "
+          << report::Fixed(floorLockStep, 1) << " warp samples per pixel\n"
           << std::flush;
 
       for (int listed : methods)
@@ -513,6 +523,8 @@ bool RunReliefSweep(
           row.IsDefault = isDefault;
           row.Step = step;
           row.DenseMegaBytes = denseMegaBytes;
+          row.ExactFloorSamplesPerPixel = floorMean;
+          row.ExactFloorLockStepSamplesPerPixel = floorLockStep;
           mapper->GetReliefProperty()->SetFloatTextures(row.FloatTextures);
           mapper->GetReliefProperty()->SetDeriveNormals(row.DerivedNormals);
           mapper->GetReliefProperty()->SetLinearSteps(step.LinearSteps);

@@ -88,6 +88,12 @@ struct ReliefSweepRow
   // what the march's loop arithmetic costs on SIMD hardware, where a group iterates until its
   // slowest pixel ends.
   double LockStepSamplesPerPixel = 0.0;
+  // The floor of this map and angle (the same in all its rows): the cells whose depth bound the
+  // exact ray reaches before its hit (ReliefReference::BoundReachingCells), per covered pixel and
+  // in the same lock step. No exact traversal of per-cell bounds (maximum mipmaps, quadtree
+  // displacement mapping) can fetch fewer.
+  double ExactFloorSamplesPerPixel = 0.0;
+  double ExactFloorLockStepSamplesPerPixel = 0.0;
   double HitMeanTexels = 0.0;
   double HitP99Texels = 0.0;
   double SilhouetteMismatch = 0.0; // % of the footprint

@@ -52,11 +52,11 @@ bool WriteCsv(const std::string& file, const std::vector<ReliefSweepRow>& rows,
   const ReliefSweepSettings& settings)
 {
   std::ofstream csv(file);
-  csv
-    << "map,view_angle_deg,method,linear_steps,refinement_steps,steps,width,height,depth_scale,"
-       "ms_per_frame,first_frame_ms,samples_per_pixel,hit_error_mean_texels,hit_error_p99_texels,"
-       "silhouette_mismatch_pct,color_rmse,psnr_db,shadow_mismatch_pct,covered_both,"
-       "footprint,texture_storage,gpu_megabytes,dense_mesh_megabytes,lockstep_samples_per_pixel\n";
+  csv << "map,view_angle_deg,method,linear_steps,refinement_steps,steps,width,height,depth_scale,"
+         "ms_per_frame,first_frame_ms,samples_per_pixel,hit_error_mean_texels,hit_error_p99_texels,"
+         "silhouette_mismatch_pct,color_rmse,psnr_db,shadow_mismatch_pct,covered_both,"
+         "footprint,texture_storage,gpu_megabytes,dense_mesh_megabytes,lockstep_samples_per_pixel,"
+         "exact_floor_samples_per_pixel,exact_floor_lockstep_samples_per_pixel\n";
   csv << std::setprecision(8);
   for (const ReliefSweepRow& r : rows)
   {
@@ -70,7 +70,7 @@ bool WriteCsv(const std::string& file, const std::vector<ReliefSweepRow>& rows,
                : r.DerivedNormals ? "derived"
                                   : "compact")
         << ',' << r.GpuMegaBytes << ',' << r.DenseMegaBytes << ',' << r.LockStepSamplesPerPixel
-        << "\n";
+        << ',' << r.ExactFloorSamplesPerPixel << ',' << r.ExactFloorLockStepSamplesPerPixel << "\n";
   }
   return static_cast<bool>(csv);
 }
@@ -309,7 +309,7 @@ void PrintDefaultPlace(const std::vector<ReliefSweepRow>& rows, std::ostream& ou
   const double goalMean = 0.25, goalP99 = 1.0;
   bool any = false;
   std::ostringstream table;
-  int met = 0, cheap = 0, cheapLockStep = 0, front = 0, cells = 0;
+  int met = 0, cheap = 0, cheapLockStep = 0, front = 0, cells = 0, floorAbove = 0;
   for (const ReliefSweepRow& d : rows)
   {
     if (!d.IsDefault || OtherStorage(d))
@@ -354,6 +354,8 @@ void PrintDefaultPlace(const std::vector<ReliefSweepRow>& rows, std::ostream& ou
     met += accurate ? 1 : 0;
     cheap += costs ? 1 : 0;
     cheapLockStep += relief && d.LockStepSamplesPerPixel <= relief->LockStepSamplesPerPixel ? 1 : 0;
+    floorAbove +=
+      relief && d.ExactFloorLockStepSamplesPerPixel > relief->LockStepSamplesPerPixel ? 1 : 0;
     front += dominating == 0 ? 1 : 0;
     table << "    " << std::left << std::setw(22) << d.Map << std::right << std::setw(5)
           << Fixed(d.Angle, 0) << std::setw(9) << Fixed(d.HitMeanTexels, 3) << std::setw(8)
@@ -365,6 +367,10 @@ void PrintDefaultPlace(const std::vector<ReliefSweepRow>& rows, std::ostream& ou
           << std::setw(9)
           << (relief && relief->LockStepSamplesPerPixel > 0.0
                  ? Fixed(d.LockStepSamplesPerPixel / relief->LockStepSamplesPerPixel, 2)
+                 : std::string("-"))
+          << std::setw(11)
+          << (relief && relief->LockStepSamplesPerPixel > 0.0
+                 ? Fixed(d.ExactFloorLockStepSamplesPerPixel / relief->LockStepSamplesPerPixel, 2)
                  : std::string("-"))
           << "   "
           << (dominating == 0 ? std::string("on the front")
@@ -397,12 +403,17 @@ void PrintDefaultPlace(const std::vector<ReliefSweepRow>& rows, std::ostream& ou
          "least as accurate and at least as fast)\n"
       << "    " << std::left << std::setw(22) << "map" << std::right << std::setw(5) << "angle"
       << std::setw(9) << "mean" << std::setw(8) << "p99" << std::setw(6) << "goal" << std::setw(9)
-      << "ms/rel" << std::setw(9) << "smp/rel" << std::setw(9) << "warp/rel"
+      << "ms/rel" << std::setw(9) << "smp/rel" << std::setw(9) << "warp/rel" << std::setw(11)
+      << "floor/rel"
       << "   front\n"
       << table.str() << "    accuracy goal met in " << met << " of " << cells
       << ", at most relief 32+8's ms and samples in " << cheap << " of " << cells
       << ", at most its warp samples in " << cheapLockStep << " of " << cells
-      << ", on the time front in " << front << " of " << cells << "\n";
+      << ", on the time front in " << front << " of " << cells << "\n"
+      << "    floor/rel: the warp samples any exact traversal of per-cell depth bounds must "
+         "fetch (the cells whose bound the exact ray reaches before its hit), over relief "
+         "32+8's; above 1 in "
+      << floorAbove << " of " << cells << "\n";
 }
 } // namespace
 

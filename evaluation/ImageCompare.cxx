@@ -198,26 +198,28 @@ double MeanSampleCount(const Frame& frame)
 }
 
 //------------------------------------------------------------------------------
-double MeanLockStepSampleCount(const Frame& frame, int groupWidth, int groupHeight)
+double MeanLockStepCount(
+  const std::vector<int>& counts, int width, int height, int groupWidth, int groupHeight)
 {
-  if (groupWidth < 1 || groupHeight < 1 || frame.Width < 1 || frame.Height < 1)
+  if (groupWidth < 1 || groupHeight < 1 || width < 1 || height < 1 ||
+    counts.size() != static_cast<size_t>(width) * height)
   {
     return 0.0;
   }
   double sum = 0.0;
   long long n = 0;
-  for (int y0 = 0; y0 < frame.Height; y0 += groupHeight)
+  for (int y0 = 0; y0 < height; y0 += groupHeight)
   {
-    for (int x0 = 0; x0 < frame.Width; x0 += groupWidth)
+    for (int x0 = 0; x0 < width; x0 += groupWidth)
     {
       int largest = 0;
       long long covered = 0;
-      for (int y = y0; y < std::min(y0 + groupHeight, frame.Height); ++y)
+      for (int y = y0; y < std::min(y0 + groupHeight, height); ++y)
       {
-        for (int x = x0; x < std::min(x0 + groupWidth, frame.Width); ++x)
+        for (int x = x0; x < std::min(x0 + groupWidth, width); ++x)
         {
-          int count = 0;
-          if (DecodeSampleCount(frame, static_cast<size_t>(y) * frame.Width + x, count))
+          const int count = counts[static_cast<size_t>(y) * width + x];
+          if (count >= 0)
           {
             largest = std::max(largest, count);
             ++covered;
@@ -229,6 +231,25 @@ double MeanLockStepSampleCount(const Frame& frame, int groupWidth, int groupHeig
     }
   }
   return n > 0 ? sum / n : 0.0;
+}
+
+//------------------------------------------------------------------------------
+double MeanLockStepSampleCount(const Frame& frame, int groupWidth, int groupHeight)
+{
+  if (frame.Width < 1 || frame.Height < 1)
+  {
+    return 0.0;
+  }
+  std::vector<int> counts(static_cast<size_t>(frame.Width) * frame.Height, -1);
+  for (size_t p = 0; p < counts.size(); ++p)
+  {
+    int count = 0;
+    if (DecodeSampleCount(frame, p, count))
+    {
+      counts[p] = count;
+    }
+  }
+  return MeanLockStepCount(counts, frame.Width, frame.Height, groupWidth, groupHeight);
 }
 
 //------------------------------------------------------------------------------

@@ -103,6 +103,13 @@ MESOLIGHTEVALUATION_EXPORT double MeanSampleCount(const Frame& frame);
 MESOLIGHTEVALUATION_EXPORT double MeanLockStepSampleCount(
   const Frame& frame, int groupWidth, int groupHeight);
 
+/**
+ * The same lock-step mean for per-pixel counts given directly: counts holds width x height
+ * values (row-major, row 0 at the bottom like Frame), negative where no pixel is covered.
+ */
+MESOLIGHTEVALUATION_EXPORT double MeanLockStepCount(
+  const std::vector<int>& counts, int width, int height, int groupWidth, int groupHeight);
+
 /** Writes the frame's colour as PNG. */
 MESOLIGHTEVALUATION_EXPORT bool WritePng(const Frame& frame, const char* fileName);
 

@@ -151,6 +151,7 @@ bool ComputeReliefReference(
   reference.EyeDepth.assign(pixels, 0.0);
   reference.Unshadowed.assign(pixels, 0);
   reference.FacesLight.assign(pixels, 0);
+  reference.BoundReachingCells.assign(pixels, -1);
 
   // Pixel centres to world rays through the inverse of the camera's composite projection (the
   // matrix VTK renders with: world -> normalized device coordinates, depth in [-1, 1]).
@@ -224,6 +225,8 @@ bool ComputeReliefReference(
           reference.HitU[p] = h.x;
           reference.HitV[p] = h.y;
           reference.HitD[p] = h.z;
+          reference.BoundReachingCells[p] =
+            CountBoundReachingCells(hf, glm::dvec3(u0, v0, 0.0), span, hit->t);
           const double world[3] = { h.x, h.y * aspect, -h.z * s };
           const double eyeZ =
             view[8] * world[0] + view[9] * world[1] + view[10] * world[2] + view[11];

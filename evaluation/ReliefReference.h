@@ -70,6 +70,10 @@ struct MESOLIGHTEVALUATION_EXPORT ReliefReference
   std::vector<unsigned char> Unshadowed;
   // The bilinear surface at the hit faces the first light (n . l > 0).
   std::vector<unsigned char> FacesLight;
+  // Cells whose depth bound the ray reaches before its hit (CountBoundReachingCells): the fewest
+  // patch tests, so texture fetches, of any exact traversal of per-cell bounds; -1 where the
+  // pixel is not covered.
+  std::vector<int> BoundReachingCells;
   double Seconds = 0.0; // time taken to compute it
 
   bool InFootprint(size_t p) const { return this->State[p] != OutsideFootprint; }

@@ -543,6 +543,51 @@ bool Visible(
   return !TraceEdge(hf, start, dir, tTop, Contact::StrictlyBelow);
 }
 
+int CountBoundReachingCells(
+  const HeightField& hf, const glm::dvec3& origin, const glm::dvec3& dir, double tEnd)
+{
+  if (!IsFinite(origin) || !IsFinite(dir) || !std::isfinite(tEnd) || tEnd < 0.0)
+  {
+    return 0;
+  }
+  const glm::dvec2 grid0(ToGrid(origin.x, hf.Width()), ToGrid(origin.y, hf.Height()));
+  const glm::dvec2 gridRate(dir.x * hf.Width(), dir.y * hf.Height());
+  if (!std::isfinite(grid0.x) || !std::isfinite(grid0.y) || !std::isfinite(gridRate.x) ||
+    !std::isfinite(gridRate.y))
+  {
+    return 0;
+  }
+  // The same walk as Trace, without solving the patches.
+  AxisWalk x(grid0.x, gridRate.x, hf.Width());
+  AxisWalk y(grid0.y, gridRate.y, hf.Height());
+  int count = 0;
+  double tEnter = 0.0;
+  for (;;)
+  {
+    const double crossX = x.NextCrossing();
+    const double crossY = y.NextCrossing();
+    const double tExit = std::max(tEnter, std::min({ crossX, crossY, tEnd }));
+    const Patch patch = MakePatch(hf, x.Lower(), x.Upper(), y.Lower(), y.Upper());
+    const double deepest = std::max(origin.z + tEnter * dir.z, origin.z + tExit * dir.z);
+    // The tolerance keeps the hit's own cell when tEnd comes from IntersectFirst, whose bracket
+    // is evaluated in the cell's own polynomial, not at origin + tEnd dir.
+    count += deepest >= patch.Shallowest - 1e-9 ? 1 : 0;
+    if (tExit >= tEnd)
+    {
+      return count;
+    }
+    if (crossX <= tExit)
+    {
+      x.Step();
+    }
+    if (crossY <= tExit)
+    {
+      y.Step();
+    }
+    tEnter = tExit;
+  }
+}
+
 std::optional<RayHit> IntersectFirstBruteForce(
   const HeightField& hf, const glm::dvec3& origin, const glm::dvec3& dir, double tMax, int samples)
 {

@@ -116,6 +116,19 @@ MESOLIGHTRELIEFCORE_EXPORT bool Visible(
   const HeightField& hf, const glm::dvec3& point, const glm::dvec3& toLight, double epsilon = 1e-6);
 
 /**
+ * How many cells of the texel-centre grid the ray origin + t * dir, t in [0, tEnd], reaches at
+ * or below the cell's shallowest corner (the bound a maximum mipmap keeps for it; Tevs, Ihrke
+ * and Seidel, "Maximum Mipmaps for Fast, Accurate, and Scalable Dynamic Height Field
+ * Rendering"). With tEnd the exact first hit (IntersectFirst), it is the fewest patch tests any
+ * exact traversal of per-cell depth bounds can make (max mipmaps, quadtree displacement mapping):
+ * every coarser bound is at most as deep, so none of them rules such a cell out, and its four
+ * corners must be read. The hit's own cell counts. 0 for non-finite input or tEnd < 0. Clamped
+ * edge rule (the bands count as cells).
+ */
+MESOLIGHTRELIEFCORE_EXPORT int CountBoundReachingCells(
+  const HeightField& hf, const glm::dvec3& origin, const glm::dvec3& dir, double tEnd);
+
+/**
  * TEST ORACLE ONLY: dense uniform sampling of [0, tMax] at `samples` steps, then bisection on the
  * first on/below sample. Independent of IntersectFirst's cell logic (it only uses DepthAt), but it
  * can miss features thinner than a step, so it may report a later hit or none; never an earlier

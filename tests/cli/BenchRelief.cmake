@@ -49,7 +49,8 @@ function (to_micro value out)
 endfunction ()
 
 # Columns: map, angle, method, L, R, steps, w, h, depth scale, ms, first ms, samples/pixel,
-# hit mean, hit p99, silhouette %, colour RMSE, PSNR, ..., lock-step samples/pixel (23).
+# hit mean, hit p99, silhouette %, colour RMSE, PSNR, ..., lock-step samples/pixel (23), the
+# exact floor's samples and lock-step samples (24, 25).
 foreach (map Bricks file\(stone16\))
   set(texture "")
   set(relief "")
@@ -69,6 +70,17 @@ foreach (map Bricks file\(stone16\))
     list(GET f 14 silhouette)
     list(GET f 16 psnr)
     list(GET f 23 warp)
+    list(GET f 24 floor)
+    list(GET f 25 floorWarp)
+    # Every covered pixel's exact ray reaches at least its hit cell's bound, and the default (an
+    # exact bound traversal) cannot fetch fewer cells than those it must test.
+    if (floor LESS 1 OR floorWarp LESS floor)
+      message(FATAL_ERROR "${map}: exact floor ${floor}, lock step ${floorWarp}")
+    endif ()
+    if (method STREQUAL "default" AND (spp LESS floor OR warp LESS floorWarp))
+      message(FATAL_ERROR "${map}: the default's samples ${spp} (lock step ${warp}) below the "
+                          "exact floor ${floor} (${floorWarp})")
+    endif ()
     # A group's largest count is at least its pixels' mean (8 x 4 groups).
     if (warp LESS spp)
       message(FATAL_ERROR "${map} ${method} ${steps}: lock-step samples ${warp} below the mean ${spp}")

@@ -458,6 +458,49 @@ TEST(IntersectFirst, NonFiniteOrNegativeInputsMiss)
 
 // --- Visible -----------------------------------------------------------------------------------
 
+TEST(CountBoundReachingCells, FlatMapNeedsOnlyTheHitCell)
+{
+  // On a flat map the ray reaches the cells' bound (the constant depth) only where it hits.
+  const float c = 0.37f;
+  const HeightField hf = MakeField(16, 16, [&](int, int) { return c; });
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> uv(0.0, 1.0), unit(0.0, 1.0);
+  for (int n = 0; n < 500; ++n)
+  {
+    const glm::dvec3 origin(DrawUV(rng, uv, uv), 0.0);
+    const double theta = unit(rng) * 89.0 * mesolight::Pi<double> / 180.0;
+    const glm::dvec3 dir = DownDirection(theta, unit(rng) * 2 * mesolight::Pi<double>);
+    const std::optional<RayHit> hit = IntersectFirst(hf, origin, dir, 100.0);
+    ASSERT_TRUE(hit);
+    EXPECT_EQ(mesolight::CountBoundReachingCells(hf, origin, dir, hit->t), 1);
+  }
+}
+
+TEST(CountBoundReachingCells, RayPassingBesideASpikeCountsItsCellsWithoutHitting)
+{
+  // Depth 1 everywhere but texel (4, 4), at depth 0. A horizontal ray along grid y = 3.5 crosses
+  // the two cells with the spike as a corner, where the bilinear surface's shallowest point on
+  // that line is depth 0.5 (at the spike's column). At depth 0.4 the ray passes over it: no hit,
+  // but both cells' bound (0) is reached, so an exact bound traversal must test both patches.
+  const HeightField hf = MakeField(8, 8, [](int i, int j) { return i == 4 && j == 4 ? 0.f : 1.f; });
+  const glm::dvec3 dir(1.0, 0.0, 0.0);
+  const glm::dvec3 over((0.5 + 0.5) / 8, (3.5 + 0.5) / 8, 0.4);
+  const double tEnd = 6.5 / 8; // to grid x = 7
+  EXPECT_FALSE(IntersectFirst(hf, over, dir, tEnd));
+  EXPECT_EQ(mesolight::CountBoundReachingCells(hf, over, dir, tEnd), 2);
+  // Above every bound: nothing to test.
+  EXPECT_EQ(mesolight::CountBoundReachingCells(hf, over - glm::dvec3(0, 0, 0.5), dir, tEnd), 0);
+  // At depth 0.5 the ray touches the patch at the spike's column: the hit ends the count there.
+  const glm::dvec3 touching(over.x, over.y, 0.5);
+  const std::optional<RayHit> hit = IntersectFirst(hf, touching, dir, tEnd);
+  ASSERT_TRUE(hit);
+  EXPECT_NEAR(hit->point.x, 4.5 / 8, 1e-9);
+  EXPECT_EQ(mesolight::CountBoundReachingCells(hf, touching, dir, hit->t), 1);
+  // Bad input counts nothing.
+  EXPECT_EQ(mesolight::CountBoundReachingCells(hf, over, dir, -1.0), 0);
+  EXPECT_EQ(mesolight::CountBoundReachingCells(hf, over, glm::dvec3(kNaN, 0, 0), tEnd), 0);
+}
+
 // 16 x 4: floor at depth 1 for columns 0..9, a wall with its top at depth 0 for columns 10..15.
 // The wall face ramps between the centres of columns 9 and 10 (u = 9.5/16 .. 10.5/16).
 HeightField WallField()

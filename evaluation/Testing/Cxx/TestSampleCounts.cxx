@@ -59,3 +59,16 @@ TEST(SampleCounts, LockStepOfNothingIsZero)
   EXPECT_EQ(mesolight::MeanLockStepSampleCount(CountFrame({ { 3, 3 } }), 0, 4), 0.0);
   EXPECT_EQ(mesolight::MeanLockStepSampleCount(mesolight::Frame(), 8, 4), 0.0);
 }
+
+TEST(SampleCounts, LockStepOfCountsGivenDirectlyMatchesTheFrames)
+{
+  // The same two rows as above (row 0 first), as plain counts.
+  const std::vector<int> counts{ 1, 1, 4, 4, 7, 1, 300, 4, -1, -1 };
+  const mesolight::Frame frame = CountFrame({
+    { 1, 1, 4, 4, 7 },
+    { 1, 300, 4, -1, -1 },
+  });
+  EXPECT_DOUBLE_EQ(mesolight::MeanLockStepCount(counts, 5, 2, 2, 2),
+    mesolight::MeanLockStepSampleCount(frame, 2, 2));
+  EXPECT_EQ(mesolight::MeanLockStepCount(counts, 4, 2, 2, 2), 0.0); // size mismatch
+}
