@@ -217,6 +217,25 @@ double TimeFrames(vtkRenderWindow* window, int frames, double& firstMs)
   return n % 2 ? times[n / 2] : 0.5 * (times[n / 2 - 1] + times[n / 2]);
 }
 
+// Mean and lock-step mean of a per-pixel count of the reference (-1: not covered).
+ExactTraversalCounts CountsOf(const ReliefReference& reference, const std::vector<int>& counts)
+{
+  ExactTraversalCounts c;
+  double sum = 0.0;
+  long long covered = 0;
+  for (int n : counts)
+  {
+    if (n >= 0)
+    {
+      sum += n;
+      ++covered;
+    }
+  }
+  c.Mean = covered > 0 ? sum / double(covered) : 0.0;
+  c.LockStep = MeanLockStepCount(counts, reference.Width, reference.Height, 8, 4);
+  return c;
+}
+
 // Colour RMSE (8-bit levels over RGB) against the dense mesh, pixels of the reference footprint
 // covered in both frames.
 double ColorRmse(const ReliefReference& reference, const Frame& shaded, const Frame& dense)
@@ -449,20 +468,20 @@ bool RunReliefSweep(
         out << "bench relief: " << error << "\n";
         return false;
       }
-      double floorSum = 0.0;
-      for (int cells : reference.BoundReachingCells)
-      {
-        floorSum += std::max(cells, 0);
-      }
-      const long long covered = reference.CountCovered();
-      const double floorMean = covered > 0 ? floorSum / double(covered) : 0.0;
-      const double floorLockStep =
-        MeanLockStepCount(reference.BoundReachingCells, reference.Width, reference.Height, 8, 4);
-      out << "[" << map.Label << ", " << angle << " deg] CPU reference: " << covered
-          << " covered of " << reference.CountFootprint() << " footprint pixels in "
+      const ExactTraversalCounts floor = CountsOf(reference, reference.BoundReachingCells);
+      const ExactTraversalCounts oracleStored =
+        CountsOf(reference, reference.OracleFetchesStoredLevels);
+      const ExactTraversalCounts oracleAll = CountsOf(reference, reference.OracleFetchesAllLevels);
+      out << "[" << map.Label << ", " << angle
+          << " deg] CPU reference: " << reference.CountCovered() << " covered of "
+          << reference.CountFootprint() << " footprint pixels in "
           << report::Fixed(reference.Seconds, 3)
-          << " s; an exact bound traversal's floor: " << report::Fixed(floorMean, 1) << " samples, "
-          << report::Fixed(floorLockStep, 1) << " warp samples per pixel\n"
+          << " s; exact bound traversals fetch (samples / warp samples per pixel) at least "
+          << report::Fixed(floor.Mean, 1) << " / " << report::Fixed(floor.LockStep, 1)
+          << ", told every level " << report::Fixed(oracleStored.Mean, 1) << " / "
+          << report::Fixed(oracleStored.LockStep, 1) << " over the stored pyramid, "
+          << report::Fixed(oracleAll.Mean, 1) << " / " << report::Fixed(oracleAll.LockStep, 1)
+          << " over a full one\n"
           << std::flush;
 
       for (int listed : methods)
@@ -523,8 +542,9 @@ bool RunReliefSweep(
           row.IsDefault = isDefault;
           row.Step = step;
           row.DenseMegaBytes = denseMegaBytes;
-          row.ExactFloorSamplesPerPixel = floorMean;
-          row.ExactFloorLockStepSamplesPerPixel = floorLockStep;
+          row.Floor = floor;
+          row.OracleStoredLevels = oracleStored;
+          row.OracleAllLevels = oracleAll;
           mapper->GetReliefProperty()->SetFloatTextures(row.FloatTextures);
           mapper->GetReliefProperty()->SetDeriveNormals(row.DerivedNormals);
           mapper->GetReliefProperty()->SetLinearSteps(step.LinearSteps);

@@ -69,6 +69,13 @@ struct ReliefSweepStep
 /** The step settings swept for a vtkReliefMapper method (see ReliefSweep.cxx for the table). */
 std::vector<ReliefSweepStep> ReliefSweepStepsFor(int method);
 
+/** A per-pixel count's mean over the covered pixels and its lock-step mean (8 x 4 groups). */
+struct ExactTraversalCounts
+{
+  double Mean = 0.0;
+  double LockStep = 0.0;
+};
+
 /** One measured configuration (map x view angle x method x step setting). */
 struct ReliefSweepRow
 {
@@ -88,12 +95,14 @@ struct ReliefSweepRow
   // what the march's loop arithmetic costs on SIMD hardware, where a group iterates until its
   // slowest pixel ends.
   double LockStepSamplesPerPixel = 0.0;
-  // The floor of this map and angle (the same in all its rows): the cells whose depth bound the
-  // exact ray reaches before its hit (ReliefReference::BoundReachingCells), per covered pixel and
-  // in the same lock step. No exact traversal of per-cell bounds (maximum mipmaps, quadtree
-  // displacement mapping) can fetch fewer.
-  double ExactFloorSamplesPerPixel = 0.0;
-  double ExactFloorLockStepSamplesPerPixel = 0.0;
+  // What exact traversals of per-cell depth bounds (maximum mipmaps, quadtree displacement
+  // mapping) must fetch on this map and angle (the same in all its rows), per covered pixel and
+  // in the same lock step: the floor (ReliefReference::BoundReachingCells, the cells whose bound
+  // the exact ray reaches; no navigation), and an oracle told the right level at every step
+  // (BoundTraversalOracle) over the pyramid levels the compact storage keeps and over all.
+  ExactTraversalCounts Floor;
+  ExactTraversalCounts OracleStoredLevels;
+  ExactTraversalCounts OracleAllLevels;
   double HitMeanTexels = 0.0;
   double HitP99Texels = 0.0;
   double SilhouetteMismatch = 0.0; // % of the footprint

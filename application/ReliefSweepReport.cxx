@@ -56,7 +56,9 @@ bool WriteCsv(const std::string& file, const std::vector<ReliefSweepRow>& rows,
          "ms_per_frame,first_frame_ms,samples_per_pixel,hit_error_mean_texels,hit_error_p99_texels,"
          "silhouette_mismatch_pct,color_rmse,psnr_db,shadow_mismatch_pct,covered_both,"
          "footprint,texture_storage,gpu_megabytes,dense_mesh_megabytes,lockstep_samples_per_pixel,"
-         "exact_floor_samples_per_pixel,exact_floor_lockstep_samples_per_pixel\n";
+         "exact_floor_samples_per_pixel,exact_floor_lockstep_samples_per_pixel,"
+         "oracle_stored_levels_samples_per_pixel,oracle_stored_levels_lockstep_samples_per_pixel,"
+         "oracle_all_levels_samples_per_pixel,oracle_all_levels_lockstep_samples_per_pixel\n";
   csv << std::setprecision(8);
   for (const ReliefSweepRow& r : rows)
   {
@@ -70,7 +72,9 @@ bool WriteCsv(const std::string& file, const std::vector<ReliefSweepRow>& rows,
                : r.DerivedNormals ? "derived"
                                   : "compact")
         << ',' << r.GpuMegaBytes << ',' << r.DenseMegaBytes << ',' << r.LockStepSamplesPerPixel
-        << ',' << r.ExactFloorSamplesPerPixel << ',' << r.ExactFloorLockStepSamplesPerPixel << "\n";
+        << ',' << r.Floor.Mean << ',' << r.Floor.LockStep << ',' << r.OracleStoredLevels.Mean << ','
+        << r.OracleStoredLevels.LockStep << ',' << r.OracleAllLevels.Mean << ','
+        << r.OracleAllLevels.LockStep << "\n";
   }
   return static_cast<bool>(csv);
 }
@@ -309,7 +313,8 @@ void PrintDefaultPlace(const std::vector<ReliefSweepRow>& rows, std::ostream& ou
   const double goalMean = 0.25, goalP99 = 1.0;
   bool any = false;
   std::ostringstream table;
-  int met = 0, cheap = 0, cheapLockStep = 0, front = 0, cells = 0, floorAbove = 0;
+  int met = 0, cheap = 0, cheapLockStep = 0, front = 0, cells = 0;
+  int floorAbove = 0, oracleStoredAbove = 0, oracleAllAbove = 0;
   for (const ReliefSweepRow& d : rows)
   {
     if (!d.IsDefault || OtherStorage(d))
@@ -354,8 +359,19 @@ void PrintDefaultPlace(const std::vector<ReliefSweepRow>& rows, std::ostream& ou
     met += accurate ? 1 : 0;
     cheap += costs ? 1 : 0;
     cheapLockStep += relief && d.LockStepSamplesPerPixel <= relief->LockStepSamplesPerPixel ? 1 : 0;
-    floorAbove +=
-      relief && d.ExactFloorLockStepSamplesPerPixel > relief->LockStepSamplesPerPixel ? 1 : 0;
+    // Lock-step counts of exact bound traversals above relief 32+8's: no such traversal (of that
+    // data) can meet its cost in lock step.
+    const auto above = [relief](const ExactTraversalCounts& c)
+    { return relief && c.LockStep > relief->LockStepSamplesPerPixel ? 1 : 0; };
+    floorAbove += above(d.Floor);
+    oracleStoredAbove += above(d.OracleStoredLevels);
+    oracleAllAbove += above(d.OracleAllLevels);
+    const auto ratio = [relief](double lockStep)
+    {
+      return relief && relief->LockStepSamplesPerPixel > 0.0
+        ? Fixed(lockStep / relief->LockStepSamplesPerPixel, 2)
+        : std::string("-");
+    };
     front += dominating == 0 ? 1 : 0;
     table << "    " << std::left << std::setw(22) << d.Map << std::right << std::setw(5)
           << Fixed(d.Angle, 0) << std::setw(9) << Fixed(d.HitMeanTexels, 3) << std::setw(8)
@@ -368,11 +384,9 @@ void PrintDefaultPlace(const std::vector<ReliefSweepRow>& rows, std::ostream& ou
           << (relief && relief->LockStepSamplesPerPixel > 0.0
                  ? Fixed(d.LockStepSamplesPerPixel / relief->LockStepSamplesPerPixel, 2)
                  : std::string("-"))
-          << std::setw(11)
-          << (relief && relief->LockStepSamplesPerPixel > 0.0
-                 ? Fixed(d.ExactFloorLockStepSamplesPerPixel / relief->LockStepSamplesPerPixel, 2)
-                 : std::string("-"))
-          << "   "
+          << std::setw(11) << ratio(d.Floor.LockStep) << std::setw(11)
+          << ratio(d.OracleStoredLevels.LockStep) << std::setw(11)
+          << ratio(d.OracleAllLevels.LockStep) << "   "
           << (dominating == 0 ? std::string("on the front")
                               : "behind " + std::to_string(dominating) + " rows")
           << (dominatingSamples == 0
@@ -404,16 +418,20 @@ void PrintDefaultPlace(const std::vector<ReliefSweepRow>& rows, std::ostream& ou
       << "    " << std::left << std::setw(22) << "map" << std::right << std::setw(5) << "angle"
       << std::setw(9) << "mean" << std::setw(8) << "p99" << std::setw(6) << "goal" << std::setw(9)
       << "ms/rel" << std::setw(9) << "smp/rel" << std::setw(9) << "warp/rel" << std::setw(11)
-      << "floor/rel"
+      << "floor/rel" << std::setw(11) << "oracle/rel" << std::setw(11) << "full/rel"
       << "   front\n"
       << table.str() << "    accuracy goal met in " << met << " of " << cells
       << ", at most relief 32+8's ms and samples in " << cheap << " of " << cells
       << ", at most its warp samples in " << cheapLockStep << " of " << cells
       << ", on the time front in " << front << " of " << cells << "\n"
-      << "    floor/rel: the warp samples any exact traversal of per-cell depth bounds must "
-         "fetch (the cells whose bound the exact ray reaches before its hit), over relief "
-         "32+8's; above 1 in "
-      << floorAbove << " of " << cells << "\n";
+      << "    warp samples of exact traversals of per-cell depth bounds over relief 32+8's: "
+         "floor/rel, the cells whose bound the exact ray reaches (above 1 in "
+      << floorAbove << " of " << cells
+      << "); oracle/rel, a traversal told the right level at every step over the stored "
+         "pyramid (above 1 in "
+      << oracleStoredAbove << " of " << cells
+      << "); full/rel, the same over every level (above 1 in " << oracleAllAbove << " of " << cells
+      << ")\n";
 }
 } // namespace
 

@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "ReliefReference.h"
 
+#include "BoundTraversalOracle.h"
 #include "HeightFieldTracer.h"
 #include "ImageCompare.h"
 #include "ReliefScene.h"
+#include "vtkMinDepthPyramidTexture.h"
 
 #include <vtkCamera.h>
 #include <vtkDataArray.h>
@@ -152,6 +154,8 @@ bool ComputeReliefReference(
   reference.Unshadowed.assign(pixels, 0);
   reference.FacesLight.assign(pixels, 0);
   reference.BoundReachingCells.assign(pixels, -1);
+  reference.OracleFetchesStoredLevels.assign(pixels, -1);
+  reference.OracleFetchesAllLevels.assign(pixels, -1);
 
   // Pixel centres to world rays through the inverse of the camera's composite projection (the
   // matrix VTK renders with: world -> normalized device coordinates, depth in [-1, 1]).
@@ -168,6 +172,10 @@ bool ComputeReliefReference(
   const double uLow = 0.5 / tw, uHigh = 1.0 - 0.5 / tw;
   const double vLow = 0.5 / th, vHigh = 1.0 - 0.5 / th;
   const HeightField& hf = *field;
+  const BoundTraversalOracle oracle(hf);
+  // The compact storage keeps the bounds of levels FirstLevel - 1 and coarser (each stored
+  // texel holds its children's).
+  const int storedBoundLevel = vtkMinDepthPyramidTexture::FirstLevel - 1;
 
   const auto unproject = [&m](double x, double y, double z, glm::dvec3& out)
   {
@@ -225,8 +233,11 @@ bool ComputeReliefReference(
           reference.HitU[p] = h.x;
           reference.HitV[p] = h.y;
           reference.HitD[p] = h.z;
-          reference.BoundReachingCells[p] =
-            CountBoundReachingCells(hf, glm::dvec3(u0, v0, 0.0), span, hit->t);
+          const glm::dvec3 entry(u0, v0, 0.0);
+          reference.BoundReachingCells[p] = CountBoundReachingCells(hf, entry, span, hit->t);
+          reference.OracleFetchesStoredLevels[p] =
+            oracle.Fetches(entry, span, hit->t, storedBoundLevel);
+          reference.OracleFetchesAllLevels[p] = oracle.Fetches(entry, span, hit->t, 0);
           const double world[3] = { h.x, h.y * aspect, -h.z * s };
           const double eyeZ =
             view[8] * world[0] + view[9] * world[1] + view[10] * world[2] + view[11];

@@ -74,6 +74,11 @@ struct MESOLIGHTEVALUATION_EXPORT ReliefReference
   // patch tests, so texture fetches, of any exact traversal of per-cell bounds; -1 where the
   // pixel is not covered.
   std::vector<int> BoundReachingCells;
+  // The fewest fetches of such a traversal told the right level at every step
+  // (BoundTraversalOracle): over the pyramid levels the compact storage keeps
+  // (vtkMinDepthPyramidTexture), and over every level; -1 where the pixel is not covered.
+  std::vector<int> OracleFetchesStoredLevels;
+  std::vector<int> OracleFetchesAllLevels;
   double Seconds = 0.0; // time taken to compute it
 
   bool InFootprint(size_t p) const { return this->State[p] != OutsideFootprint; }

@@ -20,6 +20,12 @@
 vtkStandardNewMacro(vtkMinDepthPyramidTexture);
 
 //------------------------------------------------------------------------------
+vtkTextureObject* vtkMinDepthPyramidTexture::GetTextureObject()
+{
+  return this->TextureObject;
+}
+
+//------------------------------------------------------------------------------
 vtkMinDepthPyramidTexture::vtkMinDepthPyramidTexture() = default;
 
 //------------------------------------------------------------------------------

@@ -81,7 +81,7 @@ public:
   const std::vector<int>& GetLevelSizes() const { return this->LevelSizes; }
 
   /** The texture; null before the first Upload. */
-  vtkTextureObject* GetTextureObject() { return this->TextureObject; }
+  vtkTextureObject* GetTextureObject();
 
   void ReleaseGraphicsResources(vtkWindow* win);
 

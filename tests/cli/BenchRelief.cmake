@@ -49,8 +49,9 @@ function (to_micro value out)
 endfunction ()
 
 # Columns: map, angle, method, L, R, steps, w, h, depth scale, ms, first ms, samples/pixel,
-# hit mean, hit p99, silhouette %, colour RMSE, PSNR, ..., lock-step samples/pixel (23), the
-# exact floor's samples and lock-step samples (24, 25).
+# hit mean, hit p99, silhouette %, colour RMSE, PSNR, ..., lock-step samples/pixel (23), then
+# samples and lock-step samples of exact bound traversals: the floor (24, 25), the oracle over the
+# stored pyramid (26, 27) and over every level (28, 29).
 foreach (map Bricks file\(stone16\))
   set(texture "")
   set(relief "")
@@ -72,14 +73,22 @@ foreach (map Bricks file\(stone16\))
     list(GET f 23 warp)
     list(GET f 24 floor)
     list(GET f 25 floorWarp)
+    list(GET f 26 oracle)
+    list(GET f 27 oracleWarp)
+    list(GET f 28 oracleAll)
     # Every covered pixel's exact ray reaches at least its hit cell's bound, and the default (an
     # exact bound traversal) cannot fetch fewer cells than those it must test.
     if (floor LESS 1 OR floorWarp LESS floor)
       message(FATAL_ERROR "${map}: exact floor ${floor}, lock step ${floorWarp}")
     endif ()
-    if (method STREQUAL "default" AND (spp LESS floor OR warp LESS floorWarp))
+    # More stored levels can only help the oracle, which can only do better than the floor.
+    if (oracleAll LESS floor OR oracle LESS oracleAll)
+      message(FATAL_ERROR "${map}: floor ${floor}, oracle ${oracle}, over every level ${oracleAll}")
+    endif ()
+    # The default is such a traversal over the stored pyramid, navigating without an oracle.
+    if (method STREQUAL "default" AND (spp LESS oracle OR warp LESS oracleWarp))
       message(FATAL_ERROR "${map}: the default's samples ${spp} (lock step ${warp}) below the "
-                          "exact floor ${floor} (${floorWarp})")
+                          "oracle's over its own pyramid, ${oracle} (${oracleWarp})")
     endif ()
     # A group's largest count is at least its pixels' mean (8 x 4 groups).
     if (warp LESS spp)
