@@ -265,21 +265,23 @@ std::optional<double> FirstContactInCell(const HeightField& hf, const AxisWalk& 
   return std::min(tEnter + *s, tExit);
 }
 
-// 2D DDA over the cells of the texel-centre grid (bands included), solving each cell exactly.
-// Visits each crossed cell once: at most W + H + 1 cells per ray.
-std::optional<RayHit> Trace(const HeightField& hf, const glm::dvec3& origin, const glm::dvec3& dir,
-  double tMax, Contact contact)
+// 2D DDA over the cells of the texel-centre grid (bands included), from t = 0 to tMax: calls
+// cell(x, y, tEnter, tExit) for each crossed cell in order until it returns true. Visits each
+// crossed cell once: at most W + H + 1 cells per ray. False for input it cannot walk.
+template <typename CellVisitor>
+bool WalkCells(const HeightField& hf, const glm::dvec3& origin, const glm::dvec3& dir, double tMax,
+  CellVisitor&& cell)
 {
   if (!IsFinite(origin) || !IsFinite(dir) || !std::isfinite(tMax) || tMax < 0.0)
   {
-    return std::nullopt;
+    return false;
   }
   const glm::dvec2 grid0(ToGrid(origin.x, hf.Width()), ToGrid(origin.y, hf.Height()));
   const glm::dvec2 gridRate(dir.x * hf.Width(), dir.y * hf.Height());
   if (!std::isfinite(grid0.x) || !std::isfinite(grid0.y) || !std::isfinite(gridRate.x) ||
     !std::isfinite(gridRate.y))
   {
-    return std::nullopt; // finite in texture space but overflows in grid units
+    return false; // finite in texture space but overflows in grid units
   }
   AxisWalk x(grid0.x, gridRate.x, hf.Width());
   AxisWalk y(grid0.y, gridRate.y, hf.Height());
@@ -289,13 +291,10 @@ std::optional<RayHit> Trace(const HeightField& hf, const glm::dvec3& origin, con
     const double crossX = x.NextCrossing();
     const double crossY = y.NextCrossing();
     const double tExit = std::max(tEnter, std::min({ crossX, crossY, tMax }));
-    if (auto t = FirstContactInCell(hf, x, y, origin.z, dir.z, tEnter, tExit, contact))
+    if (cell(static_cast<const AxisWalk&>(x), static_cast<const AxisWalk&>(y), tEnter, tExit) ||
+      tExit >= tMax)
     {
-      return RayHit{ *t, origin + *t * dir };
-    }
-    if (tExit >= tMax)
-    {
-      return std::nullopt;
+      return true;
     }
     // tExit < tMax, so at least one axis crosses here (both at a cell corner).
     if (crossX <= tExit)
@@ -308,6 +307,24 @@ std::optional<RayHit> Trace(const HeightField& hf, const glm::dvec3& origin, con
     }
     tEnter = tExit;
   }
+}
+
+// The first contact along the walk, solving each cell exactly.
+std::optional<RayHit> Trace(const HeightField& hf, const glm::dvec3& origin, const glm::dvec3& dir,
+  double tMax, Contact contact)
+{
+  std::optional<RayHit> hit;
+  WalkCells(hf, origin, dir, tMax,
+    [&](const AxisWalk& x, const AxisWalk& y, double tEnter, double tExit)
+    {
+      if (auto t = FirstContactInCell(hf, x, y, origin.z, dir.z, tEnter, tExit, contact))
+      {
+        hit = RayHit{ *t, origin + *t * dir };
+        return true;
+      }
+      return false;
+    });
+  return hit;
 }
 
 // The ray's parameter interval inside the texture rectangle [0, 1]^2 (slab clipping), and the
@@ -546,46 +563,18 @@ bool Visible(
 int CountBoundReachingCells(
   const HeightField& hf, const glm::dvec3& origin, const glm::dvec3& dir, double tEnd)
 {
-  if (!IsFinite(origin) || !IsFinite(dir) || !std::isfinite(tEnd) || tEnd < 0.0)
-  {
-    return 0;
-  }
-  const glm::dvec2 grid0(ToGrid(origin.x, hf.Width()), ToGrid(origin.y, hf.Height()));
-  const glm::dvec2 gridRate(dir.x * hf.Width(), dir.y * hf.Height());
-  if (!std::isfinite(grid0.x) || !std::isfinite(grid0.y) || !std::isfinite(gridRate.x) ||
-    !std::isfinite(gridRate.y))
-  {
-    return 0;
-  }
-  // The same walk as Trace, without solving the patches.
-  AxisWalk x(grid0.x, gridRate.x, hf.Width());
-  AxisWalk y(grid0.y, gridRate.y, hf.Height());
   int count = 0;
-  double tEnter = 0.0;
-  for (;;)
-  {
-    const double crossX = x.NextCrossing();
-    const double crossY = y.NextCrossing();
-    const double tExit = std::max(tEnter, std::min({ crossX, crossY, tEnd }));
-    const Patch patch = MakePatch(hf, x.Lower(), x.Upper(), y.Lower(), y.Upper());
-    const double deepest = std::max(origin.z + tEnter * dir.z, origin.z + tExit * dir.z);
-    // The tolerance keeps the hit's own cell when tEnd comes from IntersectFirst, whose bracket
-    // is evaluated in the cell's own polynomial, not at origin + tEnd dir.
-    count += deepest >= patch.Shallowest - 1e-9 ? 1 : 0;
-    if (tExit >= tEnd)
+  WalkCells(hf, origin, dir, tEnd,
+    [&](const AxisWalk& x, const AxisWalk& y, double tEnter, double tExit)
     {
-      return count;
-    }
-    if (crossX <= tExit)
-    {
-      x.Step();
-    }
-    if (crossY <= tExit)
-    {
-      y.Step();
-    }
-    tEnter = tExit;
-  }
+      const Patch patch = MakePatch(hf, x.Lower(), x.Upper(), y.Lower(), y.Upper());
+      const double deepest = std::max(origin.z + tEnter * dir.z, origin.z + tExit * dir.z);
+      // The tolerance keeps the hit's own cell when tEnd comes from IntersectFirst, whose
+      // bracket is evaluated in the cell's own polynomial, not at origin + tEnd dir.
+      count += deepest >= patch.Shallowest - 1e-9 ? 1 : 0;
+      return false;
+    });
+  return count;
 }
 
 std::optional<RayHit> IntersectFirstBruteForce(
