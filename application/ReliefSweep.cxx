@@ -220,20 +220,7 @@ double TimeFrames(vtkRenderWindow* window, int frames, double& firstMs)
 // Mean and lock-step mean of a per-pixel count of the reference (-1: not covered).
 ExactTraversalCounts CountsOf(const ReliefReference& reference, const std::vector<int>& counts)
 {
-  ExactTraversalCounts c;
-  double sum = 0.0;
-  long long covered = 0;
-  for (int n : counts)
-  {
-    if (n >= 0)
-    {
-      sum += n;
-      ++covered;
-    }
-  }
-  c.Mean = covered > 0 ? sum / double(covered) : 0.0;
-  c.LockStep = MeanLockStepCount(counts, reference.Width, reference.Height, 8, 4);
-  return c;
+  return { MeanCount(counts), MeanLockStepCount(counts, reference.Width, reference.Height, 8, 4) };
 }
 
 // Colour RMSE (8-bit levels over RGB) against the dense mesh, pixels of the reference footprint
@@ -463,7 +450,9 @@ bool RunReliefSweep(
         denseFrame = CaptureFrame(denseWindow);
       }
       ReliefReference reference;
-      if (!ComputeReliefReference(MakeReliefReferenceInput(relief, o), reference, error))
+      ReliefReferenceInput referenceInput = MakeReliefReferenceInput(relief, o);
+      referenceInput.CountTraversalFetches = true;
+      if (!ComputeReliefReference(referenceInput, reference, error))
       {
         out << "bench relief: " << error << "\n";
         return false;

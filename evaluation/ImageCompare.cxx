@@ -181,20 +181,44 @@ bool DecodeSampleCount(const Frame& frame, size_t pixel, int& count)
 }
 
 //------------------------------------------------------------------------------
-double MeanSampleCount(const Frame& frame)
+double MeanCount(const std::vector<int>& counts)
 {
   double sum = 0.0;
   long long n = 0;
-  for (size_t p = 0; p < frame.Depth.size(); ++p)
+  for (int count : counts)
   {
-    int count = 0;
-    if (DecodeSampleCount(frame, p, count))
+    if (count >= 0)
     {
       sum += count;
       ++n;
     }
   }
   return n > 0 ? sum / n : 0.0;
+}
+
+//------------------------------------------------------------------------------
+namespace
+{
+// The frame's decoded counts, -1 for background pixels.
+std::vector<int> DecodeSampleCounts(const Frame& frame)
+{
+  std::vector<int> counts(frame.Depth.size(), -1);
+  for (size_t p = 0; p < counts.size(); ++p)
+  {
+    int count = 0;
+    if (DecodeSampleCount(frame, p, count))
+    {
+      counts[p] = count;
+    }
+  }
+  return counts;
+}
+} // namespace
+
+//------------------------------------------------------------------------------
+double MeanSampleCount(const Frame& frame)
+{
+  return MeanCount(DecodeSampleCounts(frame));
 }
 
 //------------------------------------------------------------------------------
@@ -240,16 +264,8 @@ double MeanLockStepSampleCount(const Frame& frame, int groupWidth, int groupHeig
   {
     return 0.0;
   }
-  std::vector<int> counts(static_cast<size_t>(frame.Width) * frame.Height, -1);
-  for (size_t p = 0; p < counts.size(); ++p)
-  {
-    int count = 0;
-    if (DecodeSampleCount(frame, p, count))
-    {
-      counts[p] = count;
-    }
-  }
-  return MeanLockStepCount(counts, frame.Width, frame.Height, groupWidth, groupHeight);
+  return MeanLockStepCount(
+    DecodeSampleCounts(frame), frame.Width, frame.Height, groupWidth, groupHeight);
 }
 
 //------------------------------------------------------------------------------

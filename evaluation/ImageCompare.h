@@ -103,6 +103,9 @@ MESOLIGHTEVALUATION_EXPORT double MeanSampleCount(const Frame& frame);
 MESOLIGHTEVALUATION_EXPORT double MeanLockStepSampleCount(
   const Frame& frame, int groupWidth, int groupHeight);
 
+/** Mean of per-pixel counts given directly over the covered pixels (negative: not covered). */
+MESOLIGHTEVALUATION_EXPORT double MeanCount(const std::vector<int>& counts);
+
 /**
  * The same lock-step mean for per-pixel counts given directly: counts holds width x height
  * values (row-major, row 0 at the bottom like Frame), negative where no pixel is covered.

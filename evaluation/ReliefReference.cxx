@@ -172,7 +172,12 @@ bool ComputeReliefReference(
   const double uLow = 0.5 / tw, uHigh = 1.0 - 0.5 / tw;
   const double vLow = 0.5 / th, vHigh = 1.0 - 0.5 / th;
   const HeightField& hf = *field;
-  const BoundTraversalOracle oracle(hf);
+  // Built only when asked for: it holds the whole min-depth pyramid.
+  std::unique_ptr<BoundTraversalOracle> oracle;
+  if (input.CountTraversalFetches)
+  {
+    oracle = std::make_unique<BoundTraversalOracle>(hf);
+  }
   // The compact storage keeps the bounds of levels FirstLevel - 1 and coarser (each stored
   // texel holds its children's).
   const int storedBoundLevel = vtkMinDepthPyramidTexture::FirstLevel - 1;
@@ -233,11 +238,14 @@ bool ComputeReliefReference(
           reference.HitU[p] = h.x;
           reference.HitV[p] = h.y;
           reference.HitD[p] = h.z;
-          const glm::dvec3 entry(u0, v0, 0.0);
-          reference.BoundReachingCells[p] = CountBoundReachingCells(hf, entry, span, hit->t);
-          reference.OracleFetchesStoredLevels[p] =
-            oracle.Fetches(entry, span, hit->t, storedBoundLevel);
-          reference.OracleFetchesAllLevels[p] = oracle.Fetches(entry, span, hit->t, 0);
+          if (oracle)
+          {
+            const glm::dvec3 entry(u0, v0, 0.0);
+            reference.BoundReachingCells[p] = CountBoundReachingCells(hf, entry, span, hit->t);
+            reference.OracleFetchesStoredLevels[p] =
+              oracle->Fetches(entry, span, hit->t, storedBoundLevel);
+            reference.OracleFetchesAllLevels[p] = oracle->Fetches(entry, span, hit->t, 0);
+          }
           const double world[3] = { h.x, h.y * aspect, -h.z * s };
           const double eyeZ =
             view[8] * world[0] + view[9] * world[1] + view[10] * world[2] + view[11];

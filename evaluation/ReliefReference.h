@@ -44,6 +44,9 @@ struct ReliefReferenceInput
   bool HasLight = false;
   bool LightPositional = false;
   double Light[3] = { 0.0, 0.0, 1.0 };
+  // Also count, per pixel, what exact bound traversals must fetch (BoundReachingCells and the
+  // oracle's counts below): for `bench relief`; off, those stay -1 and cost nothing.
+  bool CountTraversalFetches = false;
 };
 
 /** Per-pixel result. Fields other than State are meaningful only for covered pixels. */
@@ -72,11 +75,11 @@ struct MESOLIGHTEVALUATION_EXPORT ReliefReference
   std::vector<unsigned char> FacesLight;
   // Cells whose depth bound the ray reaches before its hit (CountBoundReachingCells): the fewest
   // patch tests, so texture fetches, of any exact traversal of per-cell bounds; -1 where the
-  // pixel is not covered.
+  // pixel is not covered (or ReliefReferenceInput::CountTraversalFetches is off).
   std::vector<int> BoundReachingCells;
   // The fewest fetches of such a traversal told the right level at every step
   // (BoundTraversalOracle): over the pyramid levels the compact storage keeps
-  // (vtkMinDepthPyramidTexture), and over every level; -1 where the pixel is not covered.
+  // (vtkMinDepthPyramidTexture), and over every level; -1 as above.
   std::vector<int> OracleFetchesStoredLevels;
   std::vector<int> OracleFetchesAllLevels;
   double Seconds = 0.0; // time taken to compute it

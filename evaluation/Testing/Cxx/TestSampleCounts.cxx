@@ -70,5 +70,9 @@ TEST(SampleCounts, LockStepOfCountsGivenDirectlyMatchesTheFrames)
   });
   EXPECT_DOUBLE_EQ(mesolight::MeanLockStepCount(counts, 5, 2, 2, 2),
     mesolight::MeanLockStepSampleCount(frame, 2, 2));
+  // Hand-computed, independently of either: groups of 2 x 2 charge 300, 4 and 7.
+  EXPECT_DOUBLE_EQ(mesolight::MeanLockStepCount(counts, 5, 2, 2, 2), (4 * 300 + 3 * 4 + 7) / 8.0);
+  EXPECT_DOUBLE_EQ(mesolight::MeanCount(counts), (1 + 1 + 4 + 4 + 7 + 1 + 300 + 4) / 8.0);
+  EXPECT_EQ(mesolight::MeanCount({ -1, -3 }), 0.0);
   EXPECT_EQ(mesolight::MeanLockStepCount(counts, 4, 2, 2, 2), 0.0); // size mismatch
 }
