@@ -13,8 +13,11 @@
  *    fetched is that parent already (one texel per level kept in registers);
  *  - a level-0 cell that no stored cleared cell covers costs one fetch, its four corners (it is
  *    either the hit cell or one the ray must be shown to pass).
- * No traversal of the same data can fetch less: a real one also spends fetches finding the
- * cells. HeightFieldTracer's CountBoundReachingCells is the floor without any navigation.
+ * A lower bound under this model: a traversal that reads only these bounds and the corners and
+ * holds at most one texel per level fetches no less, since it also spends fetches finding the
+ * cells. (One holding several texels per level could reuse more; none of the measured
+ * traversals does.) HeightFieldTracer's CountBoundReachingCells is the floor without any
+ * navigation.
  */
 #ifndef mesolight_BoundTraversalOracle_h
 #define mesolight_BoundTraversalOracle_h
