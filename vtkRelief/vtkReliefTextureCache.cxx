@@ -183,6 +183,10 @@ bool vtkReliefTextureCache::Update(vtkOpenGLRenderWindow* renWin, vtkImageData* 
   bool needPyramid, bool needCones, bool floatTextures, bool deriveNormals, bool normalMoments)
 {
   const bool wantMoments = normalMoments && mipmaps && !floatTextures;
+  // The moments' levels 0 and 1 are the shader's, from the stored normals (UploadMoments): with
+  // them the normals are uploaded even where derived ones are asked for, 2 bytes per texel
+  // against the 20 that uploading those levels would take.
+  deriveNormals = deriveNormals && !wantMoments;
   // With the visible normal filter the march and the base normal read level 0 only, and the
   // filter reads the moments' mip chain: the depth and normals need no mip chain of their own.
   const bool baseMipmaps = mipmaps && !wantMoments;
@@ -506,8 +510,7 @@ bool vtkReliefTextureCache::UploadMoments(vtkOpenGLRenderWindow* renWin,
   // (up to 16, the weight's clamp) err by 16/512, exponents of 30; half floats err by 1/2048 of
   // the value. At a sixteenth of the texels they cost 1.3 bytes per texel of level 0.
   constexpr int k = mesolight::NormalMomentCount;
-  // Derived normals are not at hand for the shader's reconstruction: all levels uploaded.
-  this->MomentFirstLevel = this->NormalsStored ? mesolight::NormalMomentFirstStoredLevel : 0;
+  this->MomentFirstLevel = mesolight::NormalMomentFirstStoredLevel; // the normals are stored
   const int w = mesolight::MipLevelSize(dims[0], this->MomentFirstLevel);
   const int h = mesolight::MipLevelSize(dims[1], this->MomentFirstLevel);
   const std::vector<float> moments = mesolight::NormalMomentLevel(normalXY.data(),

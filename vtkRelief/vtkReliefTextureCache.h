@@ -95,9 +95,10 @@ public:
   vtkGetMacro(MomentsUploaded, bool);
 
   /**
-   * The relief's mip level that the moment textures' level 0 holds: 2 with stored normals (the
-   * shader computes levels 0 and 1 from them; mesolight::NormalMomentFirstStoredLevel), 0 with
-   * derived normals. Uniform mlMomentFirstLevel.
+   * The relief's mip level that the moment textures' level 0 holds: 2
+   * (mesolight::NormalMomentFirstStoredLevel; the shader computes levels 0 and 1 from the stored
+   * normals, which are uploaded with the moments even where derived normals are asked for).
+   * Uniform mlMomentFirstLevel.
    */
   vtkGetMacro(MomentFirstLevel, int);
 

@@ -171,11 +171,14 @@ float mlDepthAt(vec2 uv)
 // of the baked unit normal n weighted by w = 1 / nz, the texel's surface area over its base.
 uniform sampler2D mlMomentTexture0; // E[w nx^2], E[w ny^2], E[w nx ny], E[w nz^2]
 uniform sampler2D mlMomentTexture1; // E[w nx nz], E[w ny nz], E[w nx], E[w ny]
-// The relief's mip level that the moment textures' level 0 holds: 2 with stored normals, whose
-// levels 0 and 1 are computed here from the normals, 0 with derived normals (all uploaded).
+// The relief's mip level that the moment textures' level 0 holds (2): levels 0 and 1 are
+// computed here from the stored normals, which vtkReliefTextureCache uploads with the moments
+// even where derived normals are asked for.
 uniform float mlMomentFirstLevel;
+#ifndef ML_STORED_NORMALS
+#error "the visible normal filter reads the stored normals"
+#endif
 
-#ifdef ML_STORED_NORMALS
 vec3 mlOctahedralNormal(vec2 e);
 
 // Adds k times the moments of level-0 texel t's normal (mesolight::NormalMoments): a texel's
@@ -244,11 +247,10 @@ void mlAddLevelMoments(vec2 uv, int level, float k, inout vec4 a, inout vec4 b)
     mlAddTexelMoments(t, k * weight, a, b);
   }
 }
-#endif
 
 mat3 mlNormalSpread = mat3(0.0); // the footprint's covariance of n, (T, B, N) frame (below)
 
-#if defined(ML_HEIGHT_MASKING) && defined(ML_STORED_NORMALS)
+#ifdef ML_HEIGHT_MASKING
 // Height-correlated masking (ML_HEIGHT_MASKING): the facets of the levels computed from the
 // stored normals (0 and 1), each with its depth, so that a grazing view weighs the ones it sees.
 #define ML_MAX_FACETS 20
@@ -406,13 +408,12 @@ vec3 mlVisibleNormal(vec2 uv, vec3 v, float lod)
   mlNormalSpread = mat3(0.0);
   vec4 a = vec4(0.0);
   vec4 b = vec4(0.0);
-#ifdef ML_STORED_NORMALS
   if (lod < mlMomentFirstLevel)
   {
     // Trilinear as the sampler's, the levels below the texture's from the stored normals.
     int level = int(lod);
     float f = lod - float(level);
-#ifdef ML_HEIGHT_MASKING // (with stored normals only)
+#ifdef ML_HEIGHT_MASKING
     mlFacetCount = 0;
     mlAddLevelFacets(uv, level, 1.0 - f);
     float stored = 0.0;
@@ -458,7 +459,6 @@ vec3 mlVisibleNormal(vec2 uv, vec3 v, float lod)
 #endif
   }
   else
-#endif
   {
     ML_COUNT_SAMPLE();
     ML_COUNT_SAMPLE();

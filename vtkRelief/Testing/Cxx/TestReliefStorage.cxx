@@ -228,6 +228,18 @@ TEST(ReliefStorage, ReportedBytesAreThoseOfTheFormats)
     StorageScene scene(o);
     const Measured m = scene.Draw(Storage::Compact, "relief, level of detail");
     EXPECT_EQ(m.Bytes, 4 * texels + 16 * momentTexels) << "level of detail";
+    // Derived normals asked for: the filter computes the moments' levels 0 and 1 from the stored
+    // normals, so they are uploaded all the same (before, the moments of every level instead:
+    // 2 * texels + 16 * (texels + 75^2 + ...), 23 bytes per texel), and the frame is the same.
+    vtkReliefProperty* p = scene.Scene.Mapper->GetReliefProperty();
+    p->SetOutput(vtkReliefProperty::ShadedOutput);
+    const Frame compact = CaptureFrame(scene.Window);
+    const Measured d = scene.Draw(Storage::Derived, "relief, level of detail, derived asked");
+    EXPECT_EQ(d.Bytes, m.Bytes) << "level of detail, derived normals asked";
+    p->SetOutput(vtkReliefProperty::ShadedOutput);
+    const FrameDifference same = CompareFrames(CaptureFrame(scene.Window), compact, 0.0);
+    EXPECT_EQ(same.MeanColorError, 0.0) << "level of detail, derived normals asked";
+    EXPECT_GT(same.CoveredBoth, 0);
   }
   // The ratio the relief benchmark reports: the dense displaced mesh's 32 bytes per vertex and
   // 12 per triangle against the default method's compact textures.
