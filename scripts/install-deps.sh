@@ -17,7 +17,8 @@ PACKAGES=(
   clang libclang-rt-dev  # the fuzz stage of scripts/test.sh: clang and its libFuzzer runtime
   xvfb xauth mesa-utils libgl1-mesa-dri
 )
-# Real height maps for scripts/bench-relief-real-maps.sh (game textures, about 860 MB): opt-in.
+# Real height maps (game textures, about 860 MB) for the relief tests and the real-map benchmarks:
+# scripts/test.sh asks for them; scripts/run.sh does not.
 if [ "${MESOLIGHT_REAL_MAPS:-0}" = 1 ]; then PACKAGES+=(redeclipse-data); fi
 
 missing=()

@@ -11,6 +11,7 @@
 // 2005); up close the frame and the hits of the exact-intersector comparison must stay as they
 // are without it.
 #include "ImageCompare.h"
+#include "RealHeightMaps.h"
 #include "ReliefReference.h"
 #include "ReliefScene.h"
 
@@ -21,7 +22,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
-#include <fstream>
 #include <iostream>
 #include <string>
 
@@ -418,21 +418,20 @@ TEST(ReliefLevelOfDetail, ShadowsTheFacetsWithinAFarFootprint)
 }
 
 // A far stone wall (dq_stones01_b's height, a real game texture from Debian's redeclipse-data,
-// 512^2, rougher than the procedural patterns; skipped when the package is absent:
-// MESOLIGHT_REAL_MAPS=1 scripts/install-deps.sh), 45 degrees from its normal, two wall widths
-// away (footprints of about 5 texels; the benchmark's cell, `mesolight bench relief-aliasing`).
-// The moments weigh every facet by the area it turns to the viewer, the walls of the joints
-// between the stones most, though the stones in front hide much of them; the default weighs
-// each facet of the levels it computes from the stored normals by the share of it the view sees
-// over its neighbours, from its height (Smith's masking with heights, Heitz 2014). It must come
-// within a bound that the visible normal filter without that masking (the negative case) and
+// 512^2, rougher than the procedural patterns; RealHeightMaps.h), 45 degrees from its normal, two
+// wall widths away (footprints of about 5 texels; the benchmark's cell, `mesolight bench
+// relief-aliasing`). The moments weigh every facet by the area it turns to the viewer, the walls of
+// the joints between the stones most, though the stones in front hide much of them; the default
+// weighs each facet of the levels it computes from the stored normals by the share of it the view
+// sees over its neighbours, from its height (Smith's masking with heights, Heitz 2014). It must
+// come within a bound that the visible normal filter without that masking (the negative case) and
 // level of detail off miss.
 TEST(ReliefLevelOfDetail, MasksTheFacetsAFarViewHides)
 {
-  const std::string file = "/usr/share/games/redeclipse/data/dziq/dq_stones01_b.jpg";
-  if (!std::ifstream(file).good())
+  const std::string file = mesolight_test::FindRealHeightMap("dziq/dq_stones01_b.jpg");
+  if (file.empty())
   {
-    GTEST_SKIP() << file << " is absent (redeclipse-data)";
+    GTEST_SKIP() << "dziq/dq_stones01_b.jpg is absent (redeclipse-data)";
   }
   const ReliefSceneOptions options = FarRealMapWall(file, 45.0);
   const int shaded = vtkReliefProperty::ShadedOutput;
@@ -460,7 +459,7 @@ TEST(ReliefLevelOfDetail, MasksTheFacetsAFarViewHides)
 }
 
 // A far brick wall (brick_wall01_b's height, a real game texture from Debian's redeclipse-data;
-// skipped when the package is absent) 80 degrees from its normal, two wall widths away: a
+// RealHeightMaps.h) 80 degrees from its normal, two wall widths away: a
 // pixel's footprint is about 17 texels long along the wall and 3 across it, and one view ray,
 // however exact, meets one of the bricks and joints it covers, where the supersampled frame
 // averages them all. The default traces several view rays spread along the footprint's major
@@ -469,10 +468,10 @@ TEST(ReliefLevelOfDetail, MasksTheFacetsAFarViewHides)
 // miss.
 TEST(ReliefLevelOfDetail, AveragesViewRaysAcrossAFarFootprint)
 {
-  const std::string file = "/usr/share/games/redeclipse/data/dziq/brick_wall01_b.jpg";
-  if (!std::ifstream(file).good())
+  const std::string file = mesolight_test::FindRealHeightMap("dziq/brick_wall01_b.jpg");
+  if (file.empty())
   {
-    GTEST_SKIP() << file << " is absent (redeclipse-data)";
+    GTEST_SKIP() << "dziq/brick_wall01_b.jpg is absent (redeclipse-data)";
   }
   const ReliefSceneOptions options = FarRealMapWall(file, 80.0);
   const int shaded = vtkReliefProperty::ShadedOutput;

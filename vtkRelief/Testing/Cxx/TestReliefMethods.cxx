@@ -4,6 +4,7 @@
 // within a fraction of a texel; plain texture mapping must not (negative test); unsafe methods
 // within bounds measured per pattern.
 #include "ImageCompare.h"
+#include "RealHeightMaps.h"
 #include "ReliefReference.h"
 #include "ReliefScene.h"
 #include "TestReliefTestUtilities.h"
@@ -14,7 +15,6 @@
 
 #include <gtest/gtest.h>
 
-#include <fstream>
 #include <functional>
 #include <iostream>
 #include <map>
@@ -189,18 +189,18 @@ TEST(ReliefMethodHits, ExactToATexelAtGrazingOnARoughMap)
 
 // The default is the product: a mapper whose settings nobody touched must find the exact first
 // hit at a grazing angle on rough maps (85 degrees: mean <= 0.25 texel, p99 <= 1 against the
-// exact intersector), on the procedural stone and, when redeclipse-data is installed, on two
-// real height maps. Relief 10 + 8, the default before, fails the same bound on each (negative
-// case).
+// exact intersector), on the procedural stone and on two real height maps (RealHeightMaps.h:
+// required where scripts/test.sh runs the tests, else used when installed). Relief 10 + 8, the
+// default before, fails the same bound on each (negative case).
 TEST(ReliefMethodHits, UntouchedMapperIsExactAtGrazingOnRoughMaps)
 {
-  const std::string data = "/usr/share/games/redeclipse/data/";
   std::vector<std::string> files{ "" };
   for (const char* map : { "dziq/dq_stones01_b.jpg", "jojo/redrock01_z.png" })
   {
-    if (std::ifstream(data + map).good())
+    const std::string file = mesolight_test::FindRealHeightMap(map);
+    if (!file.empty())
     {
-      files.push_back(data + map);
+      files.push_back(file);
     }
   }
   for (const std::string& file : files)
@@ -225,18 +225,17 @@ TEST(ReliefMethodHits, UntouchedMapperIsExactAtGrazingOnRoughMaps)
 }
 
 // The same goal on real height maps (game textures' height channels from Debian's
-// redeclipse-data, 512^2, rougher than the procedural stone; skipped when the package is absent:
-// MESOLIGHT_REAL_MAPS=1 scripts/install-deps.sh): maximum-mipmap tracing with 64 iterations
-// meets it at 70 and 85 degrees, relief 10 + 8 (the default) does not (negative case).
+// redeclipse-data, 512^2, rougher than the procedural stone; RealHeightMaps.h): maximum-mipmap
+// tracing with 64 iterations meets it at 70 and 85 degrees, relief 10 + 8 (the default) does not
+// (negative case).
 TEST(ReliefMethodHits, ExactToATexelOnRealHeightMaps)
 {
-  const std::string data = "/usr/share/games/redeclipse/data/";
   for (const char* map : { "dziq/dq_stones01_b.jpg", "jojo/redrock01_z.png" })
   {
-    const std::string file = data + map;
-    if (!std::ifstream(file).good())
+    const std::string file = mesolight_test::FindRealHeightMap(map);
+    if (file.empty())
     {
-      GTEST_SKIP() << file << " is absent (redeclipse-data)";
+      GTEST_SKIP() << map << " is absent (redeclipse-data)";
     }
     for (const double angle : { 70.0, 85.0 })
     {
@@ -263,14 +262,13 @@ TEST(ReliefMethodHits, ExactToATexelOnRealHeightMaps)
 // 10 + 8 fails the accuracy (negative case).
 TEST(ReliefMethodHits, MaxMipmapStartsAtTheMapsTop)
 {
-  const std::string data = "/usr/share/games/redeclipse/data/";
   for (const auto& [map, samplesBefore] : { std::make_pair("dziq/brick_wall01_b.jpg", 25.3),
          std::make_pair("jojo/windowstile_z.png", 19.0) })
   {
-    const std::string file = data + map;
-    if (!std::ifstream(file).good())
+    const std::string file = mesolight_test::FindRealHeightMap(map);
+    if (file.empty())
     {
-      GTEST_SKIP() << file << " is absent (redeclipse-data)";
+      GTEST_SKIP() << map << " is absent (redeclipse-data)";
     }
     ReliefSceneOptions o;
     o.Pattern = "file";
