@@ -33,7 +33,8 @@
 #include "TriangleScene.h"
 #include "vtkLightFieldReducer.h"
 
-#include "DistributedTestRun.h" // tests/support
+#include "DistributedTestRun.h"  // tests/support
+#include "NotCombiningReducer.h" // tests/support
 
 #include <glm/geometric.hpp>
 #include <vtkNew.h>
@@ -405,27 +406,6 @@ int Mirror(vtkMultiProcessController* controller, const std::string& obj, const 
   return Failures;
 }
 
-// A reducer that leaves the float sums out (the agreements, in doubles, still run): a
-// distributed final gather through it keeps each rank's share uncombined.
-class NotCombining : public vlf::Reducer
-{
-public:
-  explicit NotCombining(vlf::Reducer& inner)
-    : Inner(inner)
-  {
-  }
-  int Rank() const override { return this->Inner.Rank(); }
-  int Size() const override { return this->Inner.Size(); }
-  void SumInPlace(float*, std::size_t) override {}
-  void SumInPlace(double* data, std::size_t n) override { this->Inner.SumInPlace(data, n); }
-  void Broadcast(std::string& bytes, int root) override { this->Inner.Broadcast(bytes, root); }
-  void Send(const std::string& bytes, int to) override { this->Inner.Send(bytes, to); }
-  std::string Receive(int from) override { return this->Inner.Receive(from); }
-
-private:
-  vlf::Reducer& Inner;
-};
-
 int Gather(vtkMultiProcessController* controller, const std::string& obj)
 {
   vlf::ControllerReducer reducer(controller);
@@ -498,7 +478,7 @@ int Gather(vtkMultiProcessController* controller, const std::string& obj)
   Check(field->TotalDiffuse == propagated, "an aborted gather leaves the propagated totals");
 
   // The shares not combined: every rank holds its own texels' gathered values only.
-  NotCombining uncombined(reducer);
+  mesolight_test::NotCombiningReducer uncombined(reducer);
   vlf::FinalGatherOptions alone = options;
   alone.Reduce = &uncombined;
   vlf::FinalGather(*field, alone);

@@ -37,7 +37,8 @@
 #include "ReliefOcclusion.h"
 #include "ReliefSurface.h"
 
-#include "DistributedTestRun.h" // tests/support
+#include "DistributedTestRun.h"  // tests/support
+#include "NotCombiningReducer.h" // tests/support
 
 #include <algorithm>
 #include <cmath>
@@ -281,26 +282,6 @@ int Run(vtkMultiProcessController* controller)
   }
   return Failures;
 }
-// A reducer that leaves the float sums out (the agreements, in doubles, still run): each rank's
-// rows of a split map stay uncombined.
-class NotCombining : public vlf::Reducer
-{
-public:
-  explicit NotCombining(vlf::Reducer& inner)
-    : Inner(inner)
-  {
-  }
-  int Rank() const override { return this->Inner.Rank(); }
-  int Size() const override { return this->Inner.Size(); }
-  void SumInPlace(float*, std::size_t) override {}
-  void SumInPlace(double* data, std::size_t n) override { this->Inner.SumInPlace(data, n); }
-  void Broadcast(std::string& bytes, int root) override { this->Inner.Broadcast(bytes, root); }
-  void Send(const std::string& bytes, int to) override { this->Inner.Send(bytes, to); }
-  std::string Receive(int from) override { return this->Inner.Receive(from); }
-
-private:
-  vlf::Reducer& Inner;
-};
 
 // The relief's visible-share map (vtkLightFieldReliefSurface's, ParaView's Relief Surface) split
 // by rows over the ranks against the one-process map every rank also computes: V-grooves walled
@@ -361,7 +342,7 @@ int ShareMap(vtkMultiProcessController* controller)
   Check(differing == 0, "the split map equals the one-process map bit for bit");
   if (ranks > 1)
   {
-    NotCombining alone(reducer);
+    mesolight_test::NotCombiningReducer alone(reducer);
     std::vector<float> ownWalls;
     const std::vector<float> own =
       vlf::ReliefVisibleShareGrid(relief, frame, width, height, {}, light, &alone, &ownWalls);
