@@ -673,7 +673,8 @@ int RunReliefSweep(const std::vector<std::string>& args)
   cl.AddValue("--texture-storage", "LIST",
     "how the relief is uploaded, each measured: compact (the default storage), float (float "
     "RGBA, vtkReliefProperty::FloatTextures), derived (compact, normals derived in the shader: "
-    "vtkReliefProperty::DeriveNormals)",
+    "vtkReliefProperty::DeriveNormals; with --level-of-detail the normals are uploaded all the "
+    "same, as its filter reads them)",
     "compact");
   cl.AddFlag("--no-dense",
     "do not draw the dense displaced mesh (maps too large to mesh): no colour columns; its size "
