@@ -25,7 +25,6 @@ map), then on two ranks with --compare-map FILE.npz: the map combined over the r
 the one-rank map (to 1e-6; by construction bit for bit), and the same map with the second rank's
 rows left 0 (the negative case: a rank's share not combined) must not.
 """
-import argparse
 import os
 import subprocess
 import sys
@@ -54,18 +53,7 @@ MIN_NEGATIVE_ERROR = 0.08
 MAX_GROOVE_ERROR = 0.06
 MIN_GROOVE_NEGATIVE_ERROR = 0.12
 
-parser = argparse.ArgumentParser()
-parser.add_argument("--write-map")
-parser.add_argument("--compare-map")
-args, _ = parser.parse_known_args()
-
-t.load_plugin()
-failures = []
-check = t.checker(failures)
-ranks = servermanager.ActiveConnection.GetNumberOfDataPartitions()
-print("ranks: %d" % ranks)
-if args.compare_map:
-    check(ranks == 2, "runs on two ranks")
+args, failures, check, ranks = t.start_share_map_test()
 out = t.output_dir()
 tool = os.environ.get("MESOLIGHT_TOOL", "")
 

@@ -23,7 +23,6 @@ The relief with depth's visible-share map (Light Field Occlusion, on by default)
 over the ranks and that the combined map equals the one-rank map, and that the map with the
 second rank's rows left 0 does not (mesolight_pvtest.check_share_map).
 """
-import argparse
 import os
 import sys
 
@@ -40,18 +39,7 @@ BACK_Z = 559.2     # the published box's back wall (millimetres, facing -z)
 PATCH_Z = 558.0    # the patch 1.2 mm in front of it (within the wall's plane tolerance)
 MAX_MEAN_ERROR = 6.0  # 8-bit levels, relief vs the wall's own radiance over the patch
 
-parser = argparse.ArgumentParser()
-parser.add_argument("--write-map")
-parser.add_argument("--compare-map")
-args, _ = parser.parse_known_args()
-
-t.load_plugin()
-failures = []
-check = t.checker(failures)
-ranks = servermanager.ActiveConnection.GetNumberOfDataPartitions()
-print("ranks: %d" % ranks)
-if args.compare_map:
-    check(ranks == 2, "runs on two ranks")
+args, failures, check, ranks = t.start_share_map_test()
 out = t.output_dir()
 
 box = pvs.MesolightCornellBox()

@@ -6,6 +6,7 @@ square, drawn by the Relief Surface representation, against an independent refer
 height field as a dense displaced mesh (one vertex per texel, Mesolight Height Field Mesh) drawn
 by ParaView's ordinary Surface representation, with the same camera, lights and colour.
 """
+import argparse
 import os
 import sys
 
@@ -188,6 +189,24 @@ def visible_share_map(display):
     width, height = int(values[0]), int(values[1])
     share = values[2:].astype(np.float32).reshape(height, width, 3)
     return share, display.GetPropertyValue("LightFieldVisibleShareRanks")
+
+
+def start_share_map_test():
+    """The set-up of a test run once on one rank (--write-map F) and once on two (--compare-map
+    F, against the first run's map; check_share_map): its options, the plugin loaded, a list of
+    failures and its checker, and the rank count, which must be 2 when comparing."""
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--write-map")
+    parser.add_argument("--compare-map")
+    args, _ = parser.parse_known_args()
+    load_plugin()
+    failures = []
+    check = checker(failures)
+    ranks = servermanager.ActiveConnection.GetNumberOfDataPartitions()
+    print("ranks: %d" % ranks)
+    if args.compare_map:
+        check(ranks == 2, "runs on two ranks")
+    return args, failures, check, ranks
 
 
 def check_share_map(check, display, ranks, write=None, compare=None):
