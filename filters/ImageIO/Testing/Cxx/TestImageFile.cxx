@@ -130,17 +130,49 @@ TEST(ImageFile, MissingEmptyAndDirectoryPathsAreRefused)
 
 TEST(ImageFile, UnreadableFileIsRefused)
 {
-  if (::geteuid() == 0)
+  // Root reads files without read permission, and CI runs as root: there the check runs as the
+  // unprivileged user "nobody" (effective uid only, restored after), in a directory of /tmp that
+  // anyone may enter.
+  const bool root = ::geteuid() == 0;
+  const uid_t nobody = 65534;
+  fs::path dir = TempDir("unreadable");
+  if (root)
   {
-    GTEST_SKIP() << "root reads files without read permission";
+    std::string pattern = (fs::temp_directory_path() / "mesolight-unreadable-XXXXXX").string();
+    ASSERT_NE(::mkdtemp(pattern.data()), nullptr);
+    dir = pattern;
+    fs::permissions(dir, fs::perms::owner_all | fs::perms::group_exec | fs::perms::others_exec);
   }
-  const fs::path dir = TempDir("unreadable");
-  ASSERT_TRUE(WriteFloat(dir / "a.exr", 2, 2, 1));
-  fs::permissions(dir / "a.exr", fs::perms::none);
+  const fs::path file = dir / "a.exr";
+  ASSERT_TRUE(WriteFloat(file, 2, 2, 1));
   ImageFileInfo info;
   std::string message;
-  EXPECT_EQ(Info(dir / "a.exr", info, message), ImageFileStatus::CannotOpen) << message;
-  fs::permissions(dir / "a.exr", fs::perms::owner_all);
+  const auto infoAs = [&](fs::perms perms)
+  {
+    fs::permissions(file, perms);
+    if (root)
+    {
+      EXPECT_EQ(::seteuid(nobody), 0);
+    }
+    const Outcome status = Info(file, info, message);
+    if (root)
+    {
+      EXPECT_EQ(::seteuid(0), 0);
+    }
+    return status;
+  };
+  // The same file, readable by all: accepted (so a refusal below is the permission's).
+  EXPECT_EQ(infoAs(fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read |
+              fs::perms::others_read),
+    Accepted)
+    << message;
+  EXPECT_EQ(infoAs(fs::perms::none), ImageFileStatus::CannotOpen) << message;
+  EXPECT_NE(message.find("cannot be opened"), std::string::npos) << message;
+  fs::permissions(file, fs::perms::owner_all);
+  if (root)
+  {
+    fs::remove_all(dir);
+  }
 }
 
 TEST(ImageFile, CorruptAndUnknownFilesAreRefusedWithOpenImageIOsReason)
