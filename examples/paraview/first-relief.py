@@ -1,9 +1,10 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """The README pipeline in ParaView's Python, on your own files or the procedural ones:
-    scripts/pvpython.sh examples/paraview/first-relief.py [DEPTH_IMAGE [ENVIRONMENT.hdr]]
-    scripts/pvbatch.sh  examples/paraview/first-relief.py [DEPTH_IMAGE [ENVIRONMENT.hdr]]
+    scripts/pvpython.sh examples/paraview/first-relief.py [--height] [DEPTH_IMAGE [ENVIRONMENT.hdr]]
+    scripts/pvbatch.sh  examples/paraview/first-relief.py [--height] [DEPTH_IMAGE [ENVIRONMENT.hdr]]
     scripts/paraview.sh --script=examples/paraview/first-relief.py   (the GUI, procedural)
-DEPTH_IMAGE: 0 = the surface, 1 = the deepest (8/16-bit PNG, TIFF, EXR...); writes relief.png.
+DEPTH_IMAGE: 0 = the surface, 1 = the deepest (8/16-bit PNG, JPEG, TIFF, EXR...); with --height a
+height map instead (white = high, as game textures' height channels and DEMs). Writes relief.png.
 The plugin is auto-loaded by the launchers (LoadPlugin is not needed)."""
 import os
 import sys
@@ -12,23 +13,35 @@ from paraview.simple import *  # noqa: F401,F403
 
 
 def open_image(path):
-    # For .png/.tif ParaView also offers GDAL Raster Reader, whose pixels are cell data.
-    if path.lower().endswith(".png"):
-        return PNGSeriesReader(FileNames=[path])
-    if path.lower().endswith((".tif", ".tiff")):
-        return TIFFSeriesReader(FileNames=[path])
-    if path.lower().endswith((".exr", ".hdr")):
-        return MesolightImageReader(FileName=path)  # OpenImageIO
-    return OpenDataFile(path)
+    # The Mesolight Image Reader (OpenImageIO: PNG, JPEG, TIFF, EXR, HDR...) gives the pixels as
+    # point scalars, what the Mesolight filters read; OpenDataFile picks GDAL Raster Reader for
+    # .png, .jpg and .tif, whose pixels are cell data.
+    if not os.path.isfile(path):
+        sys.exit("first-relief.py: no such file: %s" % path)
+    return MesolightImageReader(FileName=path)
+
+
+def check(proxy, what):
+    # A failed filter leaves an empty output (its error is printed above): stop rather than
+    # save an image without the relief.
+    proxy.UpdatePipeline()
+    if proxy.GetDataInformation().GetNumberOfPoints() == 0:
+        sys.exit("first-relief.py: %s produced nothing (see the error above)" % what)
 
 
 args = [a for a in sys.argv[1:] if not a.startswith("-")]
+options = [a for a in sys.argv[1:] if a.startswith("-")]
+if set(options) - {"--height"} or len(args) > 2:
+    sys.exit(__doc__)
 depth = open_image(args[0]) if args else MesolightProceduralRelief()
 relief = MesolightReliefTexture(Input=depth)
+relief.InvertInput = int("--height" in options)
+check(relief, "the relief texture of %s" % (args[0] if args else "the procedural map"))
 plane = Plane()
 attached = MesolightAttachReliefTexture(Input=plane, ReliefTexture=relief)
 if len(args) > 1:
     lights = MesolightMedianCutLights(Input=open_image(args[1]))
+    check(lights, "the median-cut lights of %s" % args[1])
     attached.LightSet = OutputPort(lights, 1)  # the LightTexture, not the Lights points
 view = GetActiveViewOrCreate("RenderView")
 display = Show(attached, view)

@@ -143,8 +143,8 @@ int vtkReliefTextureFilter::Execute(
     // ParaView's GDAL Raster Reader (offered for .png and .tif) gives pixels as cells.
     vtkErrorMacro("The input image carries its pixels as cell data (as ParaView's GDAL Raster "
                   "Reader gives them); depths are read from point scalars: open the file with the "
-                  "PNG or TIFF Series Reader or the Mesolight Image Reader, or apply Cell Data to "
-                  "Point Data first.");
+                  "Mesolight Image Reader (any format) or the PNG, JPEG or TIFF Series Reader, or "
+                  "apply Cell Data to Point Data first.");
     return 0;
   }
   if (!scalars)

@@ -4,8 +4,8 @@ $PARAVIEW_TEST_DIR, which the QtTesting file dialog events name $PARAVIEW_TEST_R
 what the view shows after each Apply. Used by TestGUIOwnFiles.xml (the real Apply button, File >
 Open) and TestGUIOwnFileFormats.py.
 
-Depth images: a dome and a groove (0 = surface, 1 = deepest) as an 8-bit PNG, a 16-bit PNG, a
-float TIFF and a float OpenEXR (oiiotool, from openimageio-tools); the environment: a lat-long
+Depth images: a dome and a groove (0 = surface, 1 = deepest) as an 8-bit PNG, a 16-bit PNG, an
+8-bit JPEG, a float TIFF and a float OpenEXR (oiiotool, from openimageio-tools); the environment: a lat-long
 Radiance HDR (written here, uncompressed RGBE scanlines) with a bright sun patch."""
 import math
 import os
@@ -18,7 +18,7 @@ import numpy as np
 import paraview.simple as pvs
 from vtkmodules.util.numpy_support import numpy_to_vtk
 from vtkmodules.vtkCommonDataModel import vtkImageData
-from vtkmodules.vtkIOImage import vtkPNGWriter, vtkTIFFWriter
+from vtkmodules.vtkIOImage import vtkJPEGWriter, vtkPNGWriter, vtkTIFFWriter
 
 SIZE = 128
 
@@ -52,6 +52,15 @@ def write_png(path, bits):
     values = np.round(depth_map() * top).astype(np.uint8 if bits == 8 else np.uint16)
     writer = vtkPNGWriter()
     writer.SetInputData(_image(values, VTK_UNSIGNED_CHAR if bits == 8 else VTK_UNSIGNED_SHORT))
+    writer.SetFileName(path)
+    writer.Write()
+
+
+def write_jpeg(path):
+    from vtkmodules.util.vtkConstants import VTK_UNSIGNED_CHAR
+    writer = vtkJPEGWriter()
+    writer.SetInputData(_image(np.round(depth_map() * 255).astype(np.uint8), VTK_UNSIGNED_CHAR))
+    writer.SetQuality(95)
     writer.SetFileName(path)
     writer.Write()
 
@@ -94,6 +103,7 @@ def write_files():
     d = directory()
     write_png(os.path.join(d, "depth.png"), 8)
     write_png(os.path.join(d, "depth16.png"), 16)
+    write_jpeg(os.path.join(d, "depth.jpg"))
     write_tiff(os.path.join(d, "depth.tif"))
     write_exr(os.path.join(d, "depth.exr"))
     write_hdr(os.path.join(d, "sky.hdr"))

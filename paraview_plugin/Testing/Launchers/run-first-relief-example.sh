@@ -1,0 +1,58 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
+# The README's "your own files" command, as a user runs it: scripts/pvbatch.sh
+# examples/paraview/first-relief.py --height HEIGHT.jpg SKY.hdr, without a display, in a fresh
+# directory. A JPEG is what ParaView's OpenDataFile hands to GDAL Raster Reader (pixels as cell
+# data, which Relief Texture refuses: the script then saved a frame without the relief). Fails
+# unless the script exits 0, prints no error and writes relief.png with a shaded relief covering
+# part of the frame; and unless a missing file ends the script with an error and no relief.png.
+set -uo pipefail
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+repo="$(cd "$here/../../.." && pwd)"
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+cd "$work" || exit 1
+# A user's files: an 8-bit JPEG height map (raised squares) and a small HDR sky.
+oiiotool --pattern checker:width=16:height=16:color1=1:color2=0 128x128 1 -d uint8 -o height.jpg &&
+  oiiotool --pattern fill:top=4,4,5:bottom=0.5,0.4,0.3 64x32 3 -d float -o sky.hdr || exit 1
+
+env -u DISPLAY timeout 300 bash "$repo/scripts/pvbatch.sh" \
+  "$repo/examples/paraview/first-relief.py" --height height.jpg sky.hdr >log.txt 2>&1
+status=$?
+cat log.txt
+if [ $status -ne 0 ]; then
+  echo "FAILED: first-relief.py exited with $status" >&2
+  exit 1
+fi
+if grep -q "ERR|\|ERROR\|Segmentation\|SIGSEGV" log.txt; then
+  echo "FAILED: first-relief.py printed an error" >&2
+  exit 1
+fi
+# The relief: many shaded levels over part of the frame (the frame without it is the flat
+# background and the orientation axes: under 1% of the pixels off the background).
+/usr/bin/python3 - relief.png <<'EOF' || exit 1
+import sys
+import numpy as np
+from vtkmodules.util.numpy_support import vtk_to_numpy
+from vtkmodules.vtkIOImage import vtkPNGReader
+reader = vtkPNGReader()
+reader.SetFileName(sys.argv[1])
+reader.Update()
+pixels = vtk_to_numpy(reader.GetOutput().GetPointData().GetScalars())[:, :3].astype(int)
+background = np.median(pixels, axis=0)
+covered = (np.abs(pixels - background).max(axis=1) > 12).mean()
+levels = len(np.unique(pixels[:, 0]))
+print("relief covers %.3f of the frame, %d red levels" % (covered, levels))
+sys.exit(0 if covered > 0.1 and levels > 20 else "FAILED: no shaded relief in relief.png")
+EOF
+
+rm -f relief.png
+env -u DISPLAY timeout 300 bash "$repo/scripts/pvbatch.sh" \
+  "$repo/examples/paraview/first-relief.py" missing.png >log.txt 2>&1
+status=$?
+cat log.txt
+if [ $status -eq 0 ] || [ -e relief.png ] || ! grep -q "no such file: missing.png" log.txt; then
+  echo "FAILED: a missing depth image must end the script with an error and no relief.png" >&2
+  exit 1
+fi
+echo "passed: first-relief.py on a JPEG height map and an HDR sky; a missing file refused"
