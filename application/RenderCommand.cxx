@@ -38,6 +38,8 @@ void AddSceneOptions(CommandLine& cl)
     "Bricks");
   cl.AddValue("--depth-file", "IMAGE", "use this depth image (any OpenImageIO format) instead");
   cl.AddFlag("--height", "the depth image stores height (white = high) rather than depth");
+  cl.AddFlag("--normalize",
+    "stretch the depth image's value range to [0, 1] (elevations in metres, as in DEMs)");
   cl.AddValue("--resolution", "N", "texels per side of the procedural map", "512");
   cl.AddValue("--depth-scale", "K", "relief depth as a fraction of the wall width", "0.04");
   cl.AddValue("--method", "NAME",
@@ -88,6 +90,7 @@ bool ReadSceneOptions(const CommandLine& cl, ReliefSceneOptions& o, std::string&
   o.Pattern = cl.Get("--pattern");
   o.DepthFile = cl.Get("--depth-file");
   o.DepthFileIsHeight = cl.Has("--height");
+  o.NormalizeDepthFile = cl.Has("--normalize");
   o.Method = cl.Get("--method");
   o.SelfShadowing = !cl.Has("--no-shadows");
   o.Silhouettes = !cl.Has("--no-silhouettes");

@@ -127,6 +127,7 @@ bool BuildReliefTextures(const ReliefSceneOptions& options, vtkSmartPointer<vtkI
     reader->SetFileName(options.DepthFile.c_str());
     bake->SetInputConnection(reader->GetOutputPort());
     bake->SetInvertInput(options.DepthFileIsHeight);
+    bake->SetNormalizeRange(options.NormalizeDepthFile);
     // A depth file comes without colour: a light grey albedo shows the relief itself.
     vtkNew<vtkImageData> grey;
     grey->SetDimensions(1, 1, 1);

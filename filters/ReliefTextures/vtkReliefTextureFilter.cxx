@@ -231,7 +231,8 @@ int vtkReliefTextureFilter::Execute(
       << minValue << ", " << maxValue << "] (" << outOfRange
       << " texel(s) outside, the first at texel (i=" << firstOutOfRange % w
       << ", j=" << firstOutOfRange / w
-      << ")). Enable NormalizeRange to rescale the input range to [0,1], or fix the data.");
+      << ")). Turn on NormalizeRange (ParaView: Normalize Range; mesolight: --normalize) to "
+         "rescale the input range to [0,1], as for elevations in metres, or fix the data.");
     return 0;
   }
   if (this->GetAbortExecute())
