@@ -296,6 +296,20 @@ bool CommandLine::GetDouble(
   return ParseNumber(name, text, low, high, value, error);
 }
 
+bool CommandLine::GetDoubleOrNaN(const std::string& name, double& value, std::string& error) const
+{
+  std::string text = this->Get(name);
+  std::transform(text.begin(), text.end(), text.begin(),
+    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (text == "nan")
+  {
+    value = std::numeric_limits<double>::quiet_NaN();
+    return true;
+  }
+  return this->GetDouble(
+    name, -std::numeric_limits<double>::max(), std::numeric_limits<double>::max(), value, error);
+}
+
 bool CommandLine::GetInt(
   const std::string& name, int low, int high, int& value, std::string& error) const
 {

@@ -67,6 +67,8 @@ public:
   bool GetInts(const std::vector<IntOption>& options, std::string& error) const;
   bool GetDouble(
     const std::string& name, double low, double high, double& value, std::string& error) const;
+  /** A number or "nan" (as a no-data value may be); true and `value` untouched when absent. */
+  bool GetDoubleOrNaN(const std::string& name, double& value, std::string& error) const;
   /**
    * Comma-separated lists ("512,1024"). Every item must be a number in [low, high] (whole for
    * GetIntList), and there must be at least one; false with a message naming the option and the

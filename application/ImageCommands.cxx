@@ -11,6 +11,7 @@
 #include "vtkOIIOImageReader.h"
 #include "vtkOIIOImageWriter.h"
 #include "vtkReliefTextureFilter.h"
+#include "vtkUnitScale.h"
 
 #include <vtkDataArray.h>
 #include <vtkFloatArray.h>
@@ -60,6 +61,9 @@ int RunBakeCommand(const std::vector<std::string>& args)
   cl.AddValue("--border", "MODE", "clamp or wrap (tiling maps)", "clamp");
   cl.AddFlag("--height", "the input stores height (white = high) rather than depth");
   cl.AddFlag("--normalize", "stretch the input's value range to [0, 1]");
+  cl.AddValue("--no-data", "VALUE",
+    "texels holding this value (e.g. -32768 in an int16 DEM; nan) have no data: left out of "
+    "--normalize's range and drawn as the lowest ground");
   cl.AddValue("--bits", "N", "8 or 16 bits per channel for PNG/TIFF output", "8");
   cl.AddValue("--memory-budget", "GIB", "refuse images needing more memory (0: all there is)", "0");
   std::string error;
@@ -77,9 +81,11 @@ int RunBakeCommand(const std::vector<std::string>& args)
   double depthScale = 0.04;
   int bits = 8;
   double budget = 0.0;
+  double noData = 0.0;
   if (!cl.GetDouble("--depth-scale", 0.0, 100.0, depthScale, error) ||
     !cl.GetInt("--bits", 8, 16, bits, error) ||
-    !cl.GetDouble("--memory-budget", 0.0, 1e6, budget, error))
+    !cl.GetDouble("--memory-budget", 0.0, 1e6, budget, error) ||
+    !cl.GetDoubleOrNaN("--no-data", noData, error))
   {
     return cl.UsageError(error);
   }
@@ -105,6 +111,8 @@ int RunBakeCommand(const std::vector<std::string>& args)
   bake->SetDepthScale(depthScale);
   bake->SetInvertInput(cl.Has("--height"));
   bake->SetNormalizeRange(cl.Has("--normalize"));
+  bake->SetUseNoDataValue(cl.Has("--no-data"));
+  bake->SetNoDataValue(noData);
   bake->SetMemoryBudget(static_cast<vtkTypeInt64>(budget * 1073741824.0));
   if (border == "wrap")
   {
@@ -333,9 +341,7 @@ int RunProbeCommand(const std::vector<std::string>& args)
     }
     vtkDataArray* maskValues = maskReader->GetOutput()->GetPointData()->GetScalars();
     // Integer masks mean [0, type max] -> [0, 1] (8- and 16-bit PNG/TIFF); float ones are as is.
-    const double maskScale = maskValues->GetDataType() == VTK_UNSIGNED_CHAR ? 1.0 / 255.0
-      : maskValues->GetDataType() == VTK_UNSIGNED_SHORT                     ? 1.0 / 65535.0
-                                                                            : 1.0;
+    const double maskScale = mesolight::UnitScale(maskValues);
     std::vector<float> mask(static_cast<size_t>(dims[0]) * dims[1]);
     for (size_t p = 0; p < mask.size(); ++p)
     {

@@ -55,6 +55,13 @@ HeightField ReadDepthImage(const std::string& path)
           value = v / 65535.0f;
           break;
         }
+        case ImageSampleType::Int16:
+        {
+          std::int16_t v;
+          std::memcpy(&v, &bytes[index * 2], 2);
+          value = v / 32767.0f; // as OpenImageIO converts it (clamped to [0, 1] below)
+          break;
+        }
         case ImageSampleType::Float:
           std::memcpy(&value, &bytes[index * 4], 4);
           break;

@@ -4,8 +4,9 @@
  * @brief Stored scalar <-> unit float conversions shared by the filters (header only).
  *
  * Integer images store [0,1] as [0, max of the type]: unsigned char / 255, unsigned short
- * / 65535, ...; signed integers are divided by their maximum and clamped to [0,1];
- * floating-point values are used as they are.
+ * / 65535, ...; signed integers are divided by their maximum too, negative values staying
+ * negative (out of range where [0,1] is expected, as a float's would be: elevation maps below
+ * sea level, no-data values); floating-point values are used as they are.
  */
 #ifndef mesolight_ScalarConversion_h
 #define mesolight_ScalarConversion_h
@@ -27,9 +28,7 @@ inline double ToUnitValue(T value)
   }
   else
   {
-    const double scaled =
-      static_cast<double>(value) / static_cast<double>(std::numeric_limits<T>::max());
-    return std::is_signed<T>::value ? std::min(1.0, std::max(0.0, scaled)) : scaled;
+    return static_cast<double>(value) / static_cast<double>(std::numeric_limits<T>::max());
   }
 }
 

@@ -128,6 +128,8 @@ bool BuildReliefTextures(const ReliefSceneOptions& options, vtkSmartPointer<vtkI
     bake->SetInputConnection(reader->GetOutputPort());
     bake->SetInvertInput(options.DepthFileIsHeight);
     bake->SetNormalizeRange(options.NormalizeDepthFile);
+    bake->SetUseNoDataValue(options.UseNoDataValue);
+    bake->SetNoDataValue(options.NoDataValue);
     // A depth file comes without colour: a light grey albedo shows the relief itself.
     vtkNew<vtkImageData> grey;
     grey->SetDimensions(1, 1, 1);

@@ -32,9 +32,11 @@ struct ReliefSceneOptions
   std::string DepthFile;           // a depth image instead of the procedural pattern
   bool DepthFileIsHeight = false;  // the file stores height (white = high), not depth
   bool NormalizeDepthFile = false; // stretch the file's value range to [0, 1] (DEMs in metres)
-  int Resolution = 512;            // texels per side of the procedural map
-  double DepthScale = 0.04;        // world depth of depth 1 / world width of the wall
-  std::string Method = "relief";   // vtkReliefMapper::SetMethodByName
+  bool UseNoDataValue = false;     // texels holding NoDataValue have no data (DEMs)
+  double NoDataValue = 0.0;
+  int Resolution = 512;          // texels per side of the procedural map
+  double DepthScale = 0.04;      // world depth of depth 1 / world width of the wall
+  std::string Method = "relief"; // vtkReliefMapper::SetMethodByName
   int LinearSteps = 10;
   int RefinementSteps = 8;
   bool SelfShadowing = true;

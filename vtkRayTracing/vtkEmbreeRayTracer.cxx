@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkEmbreeRayTracer.h"
+#include "vtkUnitScale.h"
 
 #include "TexturedRayTracer.h"
 
@@ -93,18 +94,7 @@ std::shared_ptr<const RgbImage> ToRgb(vtkImageData* image)
   {
     return std::make_shared<RgbImage>(); // empty: the tracer warns and ignores it
   }
-  double scale = 1.0;
-  switch (scalars->GetDataType())
-  {
-    case VTK_UNSIGNED_CHAR:
-      scale = 1.0 / 255.0;
-      break;
-    case VTK_UNSIGNED_SHORT:
-      scale = 1.0 / 65535.0;
-      break;
-    default:
-      break;
-  }
+  const double scale = mesolight::UnitScale(scalars);
   const int components = scalars->GetNumberOfComponents();
   auto rgb = std::make_shared<RgbImage>(dims[0], dims[1]);
   for (int j = 0; j < dims[1]; ++j)

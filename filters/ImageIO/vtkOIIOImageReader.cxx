@@ -45,6 +45,8 @@ int VTKType(mesolight::ImageSampleType type)
       return VTK_UNSIGNED_CHAR;
     case mesolight::ImageSampleType::UInt16:
       return VTK_UNSIGNED_SHORT;
+    case mesolight::ImageSampleType::Int16:
+      return VTK_SHORT;
     default:
       return VTK_FLOAT;
   }

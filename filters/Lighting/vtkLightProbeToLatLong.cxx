@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkLightProbeToLatLong.h"
+#include "vtkUnitScale.h"
 #include "vtkWholeExtentRequest.h"
 
 #include "EnvironmentMaps.h"
@@ -93,6 +94,7 @@ int vtkLightProbeToLatLong::RequestData(
   }
   mesolight::RgbImage probe(size, size);
   long long nonFinite = 0;
+  const double unitScale = mesolight::UnitScale(scalars);
   for (int j = 0; j < size; ++j)
   {
     for (int i = 0; i < size; ++i)
@@ -101,15 +103,8 @@ int vtkLightProbeToLatLong::RequestData(
       float* px = probe.Pixel(i, j);
       for (int c = 0; c < 3; ++c)
       {
-        double value = scalars->GetComponent(id, c);
-        if (scalars->GetDataType() == VTK_UNSIGNED_CHAR)
-        {
-          value /= 255.0;
-        }
-        else if (scalars->GetDataType() == VTK_UNSIGNED_SHORT)
-        {
-          value /= 65535.0; // 16-bit PNG/TIFF probes mean [0, 1] too
-        }
+        // 8/16-bit PNG/TIFF probes mean [0, 1] too.
+        double value = scalars->GetComponent(id, c) * unitScale;
         if (!std::isfinite(value))
         {
           ++nonFinite;

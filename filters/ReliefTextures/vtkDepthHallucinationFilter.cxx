@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkDepthHallucinationFilter.h"
+#include "vtkUnitScale.h"
 #include "vtkWholeExtentRequest.h"
 
 #include "DepthHallucination.h"
@@ -39,15 +40,7 @@ mesolight::RgbImage ToRgb(vtkImageData* image)
   }
   vtkDataArray* values = image->GetPointData()->GetScalars();
   const int components = values->GetNumberOfComponents();
-  double scale = 1.0;
-  if (values->GetDataType() == VTK_UNSIGNED_CHAR)
-  {
-    scale = 1.0 / 255.0;
-  }
-  else if (values->GetDataType() == VTK_UNSIGNED_SHORT)
-  {
-    scale = 1.0 / 65535.0;
-  }
+  const double scale = mesolight::UnitScale(values);
   mesolight::RgbImage rgb(dims[0], dims[1]);
   const vtkIdType count = static_cast<vtkIdType>(dims[0]) * dims[1];
   for (vtkIdType p = 0; p < count; ++p)

@@ -33,10 +33,13 @@ vtkStandardNewMacro(vtkReliefTextureFilter);
 
 namespace
 {
-/// Convert nComp-component tuples of type T to one unit value per texel (double).
+/// Convert nComp-component tuples of type T to one value per texel (double): unit values, or
+/// with `stored` the stored values themselves (NormalizeRange rescales them anyway).
 template <typename T>
-void ToUnitDepth(const T* data, vtkIdType n, int nComp, double* out)
+void ToUnitDepth(const T* data, vtkIdType n, int nComp, bool stored, double* out)
 {
+  const auto value = [stored](T v)
+  { return stored ? static_cast<double>(v) : mesolight::ToUnitValue(v); };
   vtkSMPTools::For(0, n,
     [&](vtkIdType begin, vtkIdType end)
     {
@@ -46,15 +49,38 @@ void ToUnitDepth(const T* data, vtkIdType n, int nComp, double* out)
         if (nComp >= 3)
         {
           // Rec. 709 luminance, as in vtkImageLuminance.
-          out[k] = 0.2125 * mesolight::ToUnitValue(t[0]) + 0.7154 * mesolight::ToUnitValue(t[1]) +
-            0.0721 * mesolight::ToUnitValue(t[2]);
+          out[k] = 0.2125 * value(t[0]) + 0.7154 * value(t[1]) + 0.0721 * value(t[2]);
         }
         else
         {
-          out[k] = mesolight::ToUnitValue(t[0]);
+          out[k] = value(t[0]);
         }
       }
     });
+}
+
+/// Marks the texels whose first component is `noData` (NaN: is NaN); returns how many.
+template <typename T>
+vtkIdType MarkNoData(const T* data, vtkIdType n, int nComp, double noData, std::vector<char>& mask)
+{
+  vtkIdType count = 0;
+  const bool nan = std::isnan(noData);
+  for (vtkIdType k = 0; k < n; ++k)
+  {
+    const double v = static_cast<double>(data[k * nComp]);
+    mask[k] = nan ? std::isnan(v) : v == noData;
+    count += mask[k];
+  }
+  return count;
+}
+
+/// Step 1 of the filter: the values (ToUnitDepth) and, when asked, the texels without data.
+template <typename T>
+vtkIdType ReadDepthValues(const T* data, vtkIdType n, int nComp, bool stored, double* out,
+  bool useNoData, double noData, std::vector<char>& mask)
+{
+  ToUnitDepth(data, n, nComp, stored, out);
+  return useNoData ? MarkNoData(data, n, nComp, noData, mask) : 0;
 }
 }
 
@@ -167,25 +193,38 @@ int vtkReliefTextureFilter::Execute(
   }
   const int w = dims[0];
   const int h = dims[1];
-  // Peak working memory per texel: unit values (double), depths (float), the RGBA float output.
+  // Peak working memory per texel: unit values (double), depths (float), the RGBA float output,
+  // the no-data mask.
   const std::string memory = mesolight::CheckMemoryBudget(
     "A " + std::to_string(w) + " x " + std::to_string(h) + " relief texture",
-    static_cast<std::uint64_t>(n) * (8 + 4 + 16), this->MemoryBudget);
+    static_cast<std::uint64_t>(n) * (8 + 4 + 16 + (this->UseNoDataValue ? 1 : 0)),
+    this->MemoryBudget);
   if (!memory.empty())
   {
     vtkErrorMacro(<< memory << ".");
     return 0;
   }
 
-  // 1. Stored values -> unit values.
+  // 1. Stored values -> unit values (with NormalizeRange, the stored values), and the texels
+  // without data.
   std::vector<double> value(static_cast<size_t>(n));
+  std::vector<char> noData(this->UseNoDataValue ? static_cast<size_t>(n) : 0);
+  vtkIdType noDataCount = 0;
   switch (scalars->GetDataType())
   {
     vtkTemplateMacro(
-      ToUnitDepth(static_cast<const VTK_TT*>(scalars->GetVoidPointer(0)), n, nComp, value.data()));
+      noDataCount =
+        ReadDepthValues(static_cast<const VTK_TT*>(scalars->GetVoidPointer(0)), n, nComp,
+          this->NormalizeRange, value.data(), this->UseNoDataValue, this->NoDataValue, noData));
     default:
       vtkErrorMacro("Unsupported input scalar type " << scalars->GetDataTypeAsString() << ".");
       return 0;
+  }
+  if (noDataCount == n)
+  {
+    vtkErrorMacro("Every texel holds the no-data value " << this->NoDataValue
+                                                         << ": there is no depth to draw.");
+    return 0;
   }
 
   // 2. Validate: NaN / Inf are data errors, never silently turned into normals.
@@ -199,6 +238,10 @@ int vtkReliefTextureFilter::Execute(
   for (vtkIdType k = 0; k < n; ++k)
   {
     const double x = value[k];
+    if (noDataCount > 0 && noData[k])
+    {
+      continue;
+    }
     if (!std::isfinite(x))
     {
       if (nonFinite++ == 0)
@@ -228,7 +271,8 @@ int vtkReliefTextureFilter::Execute(
   if (outOfRange > 0 && !this->NormalizeRange)
   {
     vtkErrorMacro("The input depths must lie in [0,1] but range over ["
-      << minValue << ", " << maxValue << "] (" << outOfRange
+      << minValue << ", " << maxValue << "]"
+      << (noDataCount > 0 ? " without the no-data texels" : "") << " (" << outOfRange
       << " texel(s) outside, the first at texel (i=" << firstOutOfRange % w
       << ", j=" << firstOutOfRange / w
       << ")). Turn on NormalizeRange (ParaView: Normalize Range; mesolight: --normalize) to "
@@ -240,6 +284,16 @@ int vtkReliefTextureFilter::Execute(
     return 1;
   }
   this->UpdateProgress(0.1);
+
+  // Texels without data: the deepest depth of the others (the lowest ground of an elevation map).
+  if (noDataCount > 0)
+  {
+    const double deepest = this->InvertInput ? minValue : maxValue;
+    for (vtkIdType k = 0; k < n; ++k)
+    {
+      value[k] = noData[k] ? deepest : value[k];
+    }
+  }
 
   // 3. Unit values -> depth (0 top, 1 deepest).
   std::vector<float> depth(static_cast<size_t>(n));
@@ -328,5 +382,7 @@ void vtkReliefTextureFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "BorderMode: " << (this->BorderMode == WRAP ? "Wrap" : "Clamp") << "\n";
   os << indent << "InvertInput: " << (this->InvertInput ? "On" : "Off") << "\n";
   os << indent << "NormalizeRange: " << (this->NormalizeRange ? "On" : "Off") << "\n";
+  os << indent << "NoDataValue: " << this->NoDataValue << "\n";
+  os << indent << "UseNoDataValue: " << (this->UseNoDataValue ? "On" : "Off") << "\n";
   os << indent << "MemoryBudget: " << this->MemoryBudget << "\n";
 }

@@ -12,14 +12,19 @@
  * output field data as a 1-tuple float array "MesolightDepthScale".
  *
  * Input: any scalar type. Unsigned integers are divided by the type maximum (uchar / 255,
- * ushort / 65535); signed integers likewise, clamped to [0,1]; float and double are used
- * as they are and must lie in [0,1] unless NormalizeRange is on. Images with 3 or 4
+ * ushort / 65535); signed integers likewise; float and double are used as they are. The
+ * values must lie in [0,1] unless NormalizeRange is on. With NormalizeRange the
+ * stored values themselves are rescaled, signed ones unclamped (elevations below sea level).
+ * Elevation maps mark missing samples with a no-data value (GDAL's, e.g. -32768 in int16
+ * DEMs): with UseNoDataValue those texels are left out of the range and get the deepest depth
+ * of the others, as the lowest ground. Images with 3 or 4
  * components are converted to luminance 0.2125 R + 0.7154 G + 0.0721 B; with 2 components
  * the first one is used. The input array is selected with SetInputArrayToProcess() and
  * defaults to the point scalars.
  *
  * Errors (no output is produced): no input, an empty or non-2D image, NaN or infinite
- * values, float depths outside [0,1] without NormalizeRange. An image one texel wide or
+ * values (other than no data), float depths outside [0,1] without NormalizeRange, no texel with
+ * data. An image one texel wide or
  * high gets a warning: slopes cannot be estimated across it and that normal component is 0.
  */
 #ifndef vtkReliefTextureFilter_h
@@ -83,6 +88,20 @@ public:
 
   ///@{
   /**
+   * When UseNoDataValue is on, texels whose first component equals NoDataValue (in the input
+   * array's own values, before any conversion; NaN: texels that are NaN) hold no data: they are
+   * left out of the range check and of NormalizeRange, and get the deepest depth of the other
+   * texels. It is an error when every texel holds no data. Defaults: off, 0.
+   */
+  vtkSetMacro(NoDataValue, double);
+  vtkGetMacro(NoDataValue, double);
+  vtkSetMacro(UseNoDataValue, bool);
+  vtkGetMacro(UseNoDataValue, bool);
+  vtkBooleanMacro(UseNoDataValue, bool);
+  ///@}
+
+  ///@{
+  /**
    * Memory budget in bytes. The filter estimates its working memory before allocating it and
    * fails with an error giving the size it needs when that is more than the budget (a
    * std::bad_alloc that still happens becomes an error too, never an abort). 0 (default): the
@@ -105,6 +124,8 @@ protected:
   int BorderMode = CLAMP;
   bool InvertInput = false;
   bool NormalizeRange = false;
+  double NoDataValue = 0.0;
+  bool UseNoDataValue = false;
   vtkTypeInt64 MemoryBudget = 0;
 
 private:

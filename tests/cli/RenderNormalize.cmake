@@ -1,7 +1,8 @@
 # SPDX-License-Identifier: BSD-3-Clause
-# `render --normalize`: a depth file in metres (a 0 / 64 checker, as a DEM's elevations) is
-# refused without it, with a message naming the option and no image; with it, the relief drawn
-# is the one of the same map already in [0, 1] (a 0 / 1 checker) drawn without it, to the byte.
+# `render --normalize` and `--no-data`, for elevation maps (DEMs). A depth file in metres (a 0 /
+# 64 checker) is refused without --normalize, with a message naming the option and no image;
+# with it, the relief drawn is the one of the same map already in [0, 1] (a 0 / 1 checker) drawn
+# without it, to the byte.
 include("${CMAKE_CURRENT_LIST_DIR}/RunTool.cmake")
 cli_fresh_work()
 foreach (top IN ITEMS 64 1)
@@ -32,3 +33,35 @@ file(SHA256 "${WORK}/depth.png" depth)
 if (depth STREQUAL unit)
   message(FATAL_ERROR "--height changed nothing: the checker draws no relief")
 endif ()
+
+# `--no-data`: a map in metres (16 and 64 m) with holes at -9999 (the no-data value) is drawn,
+# with it, as the same map with the holes at its lowest ground, 16 m; without it, otherwise.
+function (oiio)
+  execute_process(COMMAND "${OIIOTOOL}" ${ARGN} RESULT_VARIABLE rc ERROR_VARIABLE err)
+  if (NOT rc EQUAL 0)
+    message(FATAL_ERROR "oiiotool ${ARGN}: ${err}")
+  endif ()
+endfunction ()
+oiio(--pattern checker:width=4:height=4:color1=64:color2=16 64x64 1 -d float
+  -o "${WORK}/metres.tif")
+oiio(--pattern checker:width=16:height=16:color1=1:color2=0 64x64 1 -d float -o "${WORK}/has.tif")
+oiio("${WORK}/metres.tif" "${WORK}/has.tif" --mul -d float -o "${WORK}/kept.tif")
+oiio("${WORK}/has.tif" --subc 1 --mulc 9999 "${WORK}/kept.tif" --add -d float
+  -o "${WORK}/holes.tif")
+oiio("${WORK}/has.tif" --subc 1 --mulc -16 "${WORK}/kept.tif" --add -d float
+  -o "${WORK}/filled.tif")
+cli_run(TRUE ${scene} --normalize --depth-file "${WORK}/holes.tif" --no-data -9999
+  --out "${WORK}/holes-no-data.png")
+cli_run(TRUE ${scene} --normalize --depth-file "${WORK}/filled.tif" --out "${WORK}/filled.png")
+cli_run(TRUE ${scene} --normalize --depth-file "${WORK}/holes.tif" --out "${WORK}/holes-data.png")
+file(SHA256 "${WORK}/holes-no-data.png" holes_no_data)
+file(SHA256 "${WORK}/filled.png" filled)
+file(SHA256 "${WORK}/holes-data.png" holes_data)
+if (NOT holes_no_data STREQUAL filled)
+  message(FATAL_ERROR "--no-data -9999 did not draw the holes as the lowest ground")
+endif ()
+if (holes_data STREQUAL filled)
+  message(FATAL_ERROR "without --no-data the holes drew as the lowest ground: the test shows nothing")
+endif ()
+cli_expect_error(2 "option --no-data: 'deep' is not a number"
+  ${scene} --depth-file "${WORK}/holes.tif" --no-data deep --out "${WORK}/never.png")

@@ -89,6 +89,8 @@ ImageSampleType SampleType(const OIIO::TypeDesc& format)
       return ImageSampleType::UInt8;
     case OIIO::TypeDesc::UINT16:
       return ImageSampleType::UInt16;
+    case OIIO::TypeDesc::INT16:
+      return ImageSampleType::Int16;
     default:
       return ImageSampleType::Float;
   }
@@ -292,6 +294,7 @@ std::size_t ImageFileInfo::SampleSize() const
     case ImageSampleType::UInt8:
       return 1;
     case ImageSampleType::UInt16:
+    case ImageSampleType::Int16:
       return 2;
     default:
       return 4;
@@ -409,6 +412,7 @@ bool ReadImageFilePixels(const std::string& path, const ImageFileInfo& info, voi
   }
   const OIIO::TypeDesc format = info.Type == ImageSampleType::UInt8 ? OIIO::TypeDesc::UINT8
     : info.Type == ImageSampleType::UInt16                          ? OIIO::TypeDesc::UINT16
+    : info.Type == ImageSampleType::Int16                           ? OIIO::TypeDesc::INT16
                                                                     : OIIO::TypeDesc::FLOAT;
   // File rows are top first, VTK rows bottom first: start at the last row and walk backwards
   // with a negative scanline stride.

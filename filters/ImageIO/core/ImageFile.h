@@ -26,11 +26,13 @@
 namespace mesolight
 {
 
-/** How samples are read: 8-bit and 16-bit files stay integers, everything else becomes float. */
+/** How samples are read: 8-bit and 16-bit files stay integers (signed 16-bit too: elevation
+ *  maps keep their metres and their no-data value), everything else becomes float. */
 enum class ImageSampleType
 {
   UInt8,
   UInt16,
+  Int16,
   Float
 };
 

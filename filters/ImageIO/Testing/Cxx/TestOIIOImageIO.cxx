@@ -231,6 +231,30 @@ TEST(OIIOImageIO, FloatToIntegerQuantization)
   }
 }
 
+TEST(OIIOImageIO, SignedSixteenBitElevationsAreReadAsStored)
+{
+  // An int16 GeoTIFF DEM as GDAL writes one: metres, below sea level too, and -32768 where
+  // there is no data. The reader keeps them (VTK_SHORT), so a no-data value means what gdalinfo
+  // says; as floats OpenImageIO would have scaled them by 1/32767.
+  const fs::path file = mesolight_test::TestDirectory() / "dem_i16.tif";
+  const std::vector<std::int16_t> rows = { -32768, -120, 0, 547, 8848, 32767 }; // file order
+  {
+    auto out = OIIO::ImageOutput::create(file.string());
+    ASSERT_TRUE(out);
+    ASSERT_TRUE(out->open(file.string(), OIIO::ImageSpec(3, 2, 1, OIIO::TypeDesc::INT16)));
+    ASSERT_TRUE(out->write_image(OIIO::TypeDesc::INT16, rows.data()));
+    ASSERT_TRUE(out->close());
+  }
+  auto image = Read(file);
+  ASSERT_EQ(image->GetScalarType(), VTK_SHORT);
+  // VTK row 0 is the file's last row.
+  const double expected[6] = { 547, 8848, 32767, -32768, -120, 0 };
+  for (int k = 0; k < 6; ++k)
+  {
+    EXPECT_EQ(image->GetPointData()->GetScalars()->GetComponent(k, 0), expected[k]) << k;
+  }
+}
+
 TEST(OIIOImageIO, RowOrderBottomRowIsLastInFile)
 {
   const fs::path dir = mesolight_test::TestDirectory();

@@ -13,6 +13,7 @@
 #include "vtkImageData.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
+#include "vtkShortArray.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkUnsignedShortArray.h"
 
@@ -139,6 +140,63 @@ TEST(vtkReliefTextureFilter, InvertAndNormalize)
   EXPECT_FLOAT_EQ(Relief(filter)->GetComponent(0, 3), 0.f);
   EXPECT_FLOAT_EQ(Relief(filter)->GetComponent(1, 3), 0.5f);
   EXPECT_FLOAT_EQ(Relief(filter)->GetComponent(2, 3), 1.f);
+}
+
+TEST(vtkReliefTextureFilter, ElevationsWithNoDataAreNormalisedWithoutIt)
+{
+  // An int16 DEM as GDAL writes one: elevations in metres, some below sea level, and -32768
+  // where there is no data. Height map (white = high): depth = 1 - normalised elevation.
+  const short none = -32768;
+  const auto dem = MakeImage<vtkShortArray>(3, 2, 1, { -100, 0, none, 300, none, 200 });
+  vtkNew<vtkReliefTextureFilter> filter;
+  vtkNew<MessageCapture> capture;
+  capture->Watch(filter);
+  filter->SetInputData(dem);
+  filter->InvertInputOn();
+  filter->NormalizeRangeOn();
+  filter->SetNoDataValue(none);
+  filter->UseNoDataValueOn();
+  filter->Update();
+  EXPECT_TRUE(capture->Errors.empty()) << capture->AllErrors();
+  // The range of the elevations alone, -100..300 m, signed values unclamped; no data: the
+  // lowest ground (depth 1).
+  const std::vector<float> expected = { 1.f, 0.75f, 1.f, 0.f, 1.f, 0.25f };
+  for (vtkIdType k = 0; k < 6; ++k)
+  {
+    EXPECT_FLOAT_EQ(Relief(filter)->GetComponent(k, 3), expected[k]) << "texel " << k;
+  }
+
+  // Without UseNoDataValue -32768 is an elevation: it stretches the range and the elevations
+  // all land within 1.3% of the top (the negative case).
+  filter->UseNoDataValueOff();
+  filter->Update();
+  EXPECT_NEAR(Relief(filter)->GetComponent(3, 3), 0.f, 1e-6);
+  EXPECT_LT(Relief(filter)->GetComponent(0, 3), 0.013f);
+  EXPECT_LT(Relief(filter)->GetComponent(5, 3), 0.013f);
+  EXPECT_FLOAT_EQ(Relief(filter)->GetComponent(2, 3), 1.f);
+
+  // A depth map (not inverted): no data takes the deepest value of the others; NaN as the
+  // no-data value marks NaN texels, which are otherwise an error.
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  filter->SetInputData(MakeImage<vtkFloatArray>(3, 1, 1, { 0.2f, nan, 0.6f }));
+  filter->InvertInputOff();
+  filter->NormalizeRangeOff();
+  filter->Update();
+  EXPECT_TRUE(capture->HasError("NaN")) << capture->AllErrors();
+  capture->Errors.clear();
+  filter->SetNoDataValue(nan);
+  filter->UseNoDataValueOn();
+  filter->Update();
+  EXPECT_TRUE(capture->Errors.empty()) << capture->AllErrors();
+  EXPECT_FLOAT_EQ(Relief(filter)->GetComponent(1, 3), 0.6f);
+  EXPECT_FLOAT_EQ(Relief(filter)->GetComponent(0, 3), 0.2f);
+
+  // Nothing but no data: an error, no output.
+  filter->SetInputData(MakeImage<vtkShortArray>(2, 1, 1, { none, none }));
+  filter->SetNoDataValue(none);
+  filter->Update();
+  EXPECT_TRUE(capture->HasError("Every texel holds the no-data value")) << capture->AllErrors();
+  EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), 0);
 }
 
 TEST(vtkReliefTextureFilter, NonFiniteValuesAreRejected)
