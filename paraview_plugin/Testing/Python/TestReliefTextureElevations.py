@@ -1,0 +1,83 @@
+# SPDX-License-Identifier: BSD-3-Clause
+"""An elevation map (DEM) as GIS tools write one, read and turned into a relief texture in
+ParaView: an int16 GeoTIFF in metres with -32768 where there is no data, opened with the Mesolight
+Image Reader (int16 kept as stored) into Relief Texture with Invert Input, Normalize Range, Use
+No Data Value and No Data Value -32768. The relief's depths must be the elevations' own range
+(-100..300 m, below sea level included) and the no-data texels the lowest ground (depth 1),
+computed here from the elevations. Must fail: the same without Use No Data Value (-32768 takes
+part in the range and every elevation lies within 1.3% of the top)."""
+import os
+import subprocess
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import mesolight_pvtest as t  # noqa: E402
+import numpy as np  # noqa: E402
+import paraview.simple as pvs  # noqa: E402
+from paraview import servermanager  # noqa: E402
+from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy  # noqa: E402
+from vtkmodules.vtkCommonDataModel import vtkImageData  # noqa: E402
+from vtkmodules.vtkIOImage import vtkTIFFWriter  # noqa: E402
+
+t.load_plugin()
+out = t.output_dir()
+failures = []
+check = t.checker(failures)
+
+# Elevations in metres, VTK row order (row 0 at the bottom), no data outside a disc.
+W, H = 48, 40
+y, x = np.mgrid[0:H, 0:W].astype(np.float64)
+elevation = np.round(-100.0 + 400.0 * (x / (W - 1)) * (0.5 + 0.5 * np.sin(y / 6.0)))
+elevation[0, 0], elevation[-1, -1] = -100.0, 300.0
+outside = np.hypot(x - W / 2, y - H / 2) > 0.45 * H
+outside[0, 0] = outside[-1, -1] = False
+# int16 through a float TIFF in OpenImageIO's units (x / 32767; -32768 is -1.0000305) and
+# oiiotool, as ParaView's own VTK writes no signed 16-bit TIFF.
+stored = np.where(outside, -32768.0, elevation)
+image = vtkImageData()
+image.SetDimensions(W, H, 1)
+image.GetPointData().SetScalars(numpy_to_vtk((stored / 32767.0).astype(np.float32).ravel(), deep=1))
+writer = vtkTIFFWriter()
+writer.SetInputData(image)
+floats = os.path.join(out, "dem-float.tif")
+dem = os.path.join(out, "dem-int16.tif")
+writer.SetFileName(floats)
+writer.Write()
+subprocess.run(["oiiotool", floats, "-d", "int16", "-o", dem], check=True)
+
+reader = pvs.MesolightImageReader(FileName=dem)
+relief = pvs.MesolightReliefTexture(Input=reader, InvertInput=1, NormalizeRange=1,
+                                    UseNoDataValue=1, NoDataValue=-32768)
+
+
+def depths():
+    relief.UpdatePipeline()
+    data = servermanager.Fetch(relief)
+    return vtk_to_numpy(data.GetPointData().GetScalars())[:, 3].reshape(H, W)
+
+
+read = servermanager.Fetch(reader)
+scalars = read.GetPointData().GetScalars()
+check(scalars.GetDataType() == 4, "the int16 file read as VTK_SHORT (got %s)"
+      % scalars.GetDataTypeAsString())
+check(np.array_equal(vtk_to_numpy(scalars).reshape(H, W), stored.astype(np.int16)),
+      "the elevations read as stored")
+
+expected = np.where(outside, 1.0, 1.0 - (elevation + 100.0) / 400.0)
+got = depths()
+error = np.abs(got - expected).max()
+print("with no data: largest depth difference %.2e over %d texels (%d without data)"
+      % (error, W * H, outside.sum()))
+check(error < 1e-6, "depths = the elevations' own range, no data at depth 1 (max diff %.2e)" % error)
+
+relief.UseNoDataValue = 0
+got = depths()
+top = got[~outside].max()
+print("without Use No Data Value: the deepest elevation at depth %.4f" % top)
+check(top < 0.013, "without Use No Data Value -32768 is an elevation (the negative case)")
+check(np.abs(got - expected).max() > 0.5, "without Use No Data Value the depths differ")
+
+if failures:
+    print("FAILED: " + "; ".join(failures))
+    sys.exit(1)
+print("OK")
