@@ -13,13 +13,12 @@
  *
  * Input: any scalar type. Unsigned integers are divided by the type maximum (uchar / 255,
  * ushort / 65535); signed integers likewise; float and double are used as they are. The
- * values must lie in [0,1] unless NormalizeRange is on. With NormalizeRange the
- * stored values themselves are rescaled, signed ones unclamped (elevations below sea level).
- * Elevation maps mark missing samples with a no-data value (GDAL's, e.g. -32768 in int16
- * DEMs): with UseNoDataValue those texels are left out of the range and get the deepest depth
- * of the others, as the lowest ground. Images with 3 or 4
- * components are converted to luminance 0.2125 R + 0.7154 G + 0.0721 B; with 2 components
- * the first one is used. The input array is selected with SetInputArrayToProcess() and
+ * values must lie in [0,1] unless NormalizeRange is on, which rescales the stored values
+ * themselves (elevations in metres, below sea level too). Elevation maps mark missing samples
+ * with a no-data value (GDAL's, e.g. -32768 in int16 DEMs): with UseNoDataValue those texels
+ * are left out of the range and get the deepest depth of the others, as the lowest ground.
+ * Images with 3 or 4 components are converted to luminance 0.2125 R + 0.7154 G + 0.0721 B;
+ * with 2 components the first one is used. The input array is selected with SetInputArrayToProcess() and
  * defaults to the point scalars.
  *
  * Errors (no output is produced): no input, an empty or non-2D image, NaN or infinite
