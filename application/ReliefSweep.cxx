@@ -395,6 +395,9 @@ bool RunReliefSweep(
     o.Pattern = map.Pattern.empty() ? "Bricks" : map.Pattern;
     o.DepthFile = map.DepthFile;
     o.DepthFileIsHeight = settings.DepthFilesAreHeight && !settings.DepthFiles.empty();
+    o.NormalizeDepthFile = settings.NormalizeDepthFiles && !settings.DepthFiles.empty();
+    o.UseNoDataValue = settings.UseNoDataValue && !settings.DepthFiles.empty();
+    o.NoDataValue = settings.NoDataValue;
     o.Resolution = settings.Resolution;
     o.DepthScale = settings.DepthScale;
     o.Width = settings.Width;
@@ -656,6 +659,11 @@ int RunReliefSweep(const std::vector<std::string>& args)
     "depth images of the 'file' maps, one map each (default: the Stone pattern written as "
     "16-bit PNG)");
   cl.AddFlag("--height", "the depth images store height (white = high) rather than depth");
+  cl.AddFlag("--normalize",
+    "stretch each depth image's value range to [0, 1] (elevations in metres, as in DEMs)");
+  cl.AddValue("--no-data", "VALUE",
+    "the depth images' texels holding this value (e.g. -32768 in an int16 DEM; nan) have no "
+    "data: drawn as the lowest ground");
   cl.AddValue("--angles", "LIST", "view angles from the wall normal, degrees", "0,45,70,80,85");
   cl.AddValue("--size", "WxH", "window size in pixels", "512x512");
   cl.AddValue("--frames", "N", "timed frames per configuration, after a warm-up frame", "5");
@@ -708,6 +716,12 @@ int RunReliefSweep(const std::vector<std::string>& args)
   settings.Maps = cl.GetStringList("--maps");
   settings.FillViewport = !cl.Has("--no-fill");
   settings.DepthFilesAreHeight = cl.Has("--height");
+  settings.NormalizeDepthFiles = cl.Has("--normalize");
+  settings.UseNoDataValue = cl.Has("--no-data");
+  if (!cl.GetDoubleOrNaN("--no-data", settings.NoDataValue, error))
+  {
+    return cl.UsageError(error);
+  }
   if (!cl.GetDoubleList("--angles", 0.0, 90.0, settings.Angles, error))
   {
     return cl.UsageError(error);

@@ -24,6 +24,9 @@ struct ReliefSweepSettings
   std::vector<std::string> Maps{ "Bricks", "Stone", "HemisphereTorus", "file" };
   std::vector<std::string> DepthFiles;
   bool DepthFilesAreHeight = false; // the files store height (white = high), as game textures do
+  bool NormalizeDepthFiles = false; // stretch each file's range to [0, 1] (DEMs in metres)
+  bool UseNoDataValue = false;      // the files' texels holding NoDataValue have no data
+  double NoDataValue = 0.0;
   std::vector<double> Angles{ 0.0, 45.0, 70.0, 80.0, 85.0 };
   int Width = 512;
   int Height = 512;
