@@ -1,11 +1,14 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """The README pipeline in ParaView's Python, on your own files or the procedural ones:
-    scripts/pvpython.sh examples/paraview/first-relief.py [--height] [DEPTH_IMAGE [ENVIRONMENT.hdr]]
-    scripts/pvbatch.sh  examples/paraview/first-relief.py [--height] [DEPTH_IMAGE [ENVIRONMENT.hdr]]
+    scripts/pvpython.sh examples/paraview/first-relief.py [OPTIONS] [DEPTH_IMAGE [ENVIRONMENT.hdr]]
+    scripts/pvbatch.sh  examples/paraview/first-relief.py [OPTIONS] [DEPTH_IMAGE [ENVIRONMENT.hdr]]
     scripts/paraview.sh --script=examples/paraview/first-relief.py   (the GUI, procedural)
 DEPTH_IMAGE: 0 = the surface, 1 = the deepest (8/16-bit PNG, JPEG, TIFF, EXR...); with --height a
-height map instead (white = high, as game textures' height channels and DEMs). Writes relief.png.
+height map instead (white = high, as game textures' height channels and DEMs); an elevation map
+in metres (a DEM) also takes --normalize and --no-data=VALUE (with "=": the launchers read a
+lone -32768 as an option of their own). Writes relief.png.
 The plugin is auto-loaded by the launchers (LoadPlugin is not needed)."""
+import argparse
 import os
 import sys
 
@@ -29,19 +32,27 @@ def check(proxy, what):
         sys.exit("first-relief.py: %s produced nothing (see the error above)" % what)
 
 
-args = [a for a in sys.argv[1:] if not a.startswith("-")]
-options = [a for a in sys.argv[1:] if a.startswith("-")]
-if set(options) - {"--height"} or len(args) > 2:
-    sys.exit(__doc__)
-depth = open_image(args[0]) if args else MesolightProceduralRelief()
-relief = MesolightReliefTexture(Input=depth)
-relief.InvertInput = int("--height" in options)
-check(relief, "the relief texture of %s" % (args[0] if args else "the procedural map"))
+parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+parser.add_argument("depth", nargs="?", help="the depth image (default: a procedural wall)")
+parser.add_argument("environment", nargs="?", help="a lat-long HDR environment to light it")
+parser.add_argument("--height", action="store_true", help="the image is a height map")
+parser.add_argument("--normalize", action="store_true",
+                    help="stretch the image's values to [0, 1] (elevations in metres)")
+parser.add_argument("--no-data", type=float, metavar="VALUE",
+                    help="texels holding this value have no data (e.g. -32768 in an int16 DEM)")
+args = parser.parse_args(sys.argv[1:])  # the GUI's --script passes none
+depth = open_image(args.depth) if args.depth else MesolightProceduralRelief()
+relief = MesolightReliefTexture(Input=depth, InvertInput=int(args.height),
+                                NormalizeRange=int(args.normalize))
+if args.no_data is not None:
+    relief.UseNoDataValue = 1
+    relief.NoDataValue = args.no_data
+check(relief, "the relief texture of %s" % (args.depth or "the procedural map"))
 plane = Plane()
 attached = MesolightAttachReliefTexture(Input=plane, ReliefTexture=relief)
-if len(args) > 1:
-    lights = MesolightMedianCutLights(Input=open_image(args[1]))
-    check(lights, "the median-cut lights of %s" % args[1])
+if args.environment:
+    lights = MesolightMedianCutLights(Input=open_image(args.environment))
+    check(lights, "the median-cut lights of %s" % args.environment)
     attached.LightSet = OutputPort(lights, 1)  # the LightTexture, not the Lights points
 view = GetActiveViewOrCreate("RenderView")
 display = Show(attached, view)
