@@ -13,6 +13,7 @@
 #include "vtkMessageCollector.h"
 #include "vtkOIIOImageReader.h"
 #include "vtkOIIOImageWriter.h"
+#include "vtkUnitScale.h"
 
 #include <vtkAlgorithm.h>
 #include <vtkCallbackCommand.h>
@@ -526,9 +527,7 @@ int RunHallucinationBenchmark(const std::vector<std::string>& args)
       w = dims[0];
       h = dims[1];
       vtkDataArray* values = image->GetPointData()->GetScalars();
-      const double scale = values->GetDataType() == VTK_UNSIGNED_CHAR ? 1.0 / 255.0
-        : values->GetDataType() == VTK_UNSIGNED_SHORT                 ? 1.0 / 65535.0
-                                                                      : 1.0;
+      const double scale = mesolight::UnitScale(values);
       const bool height = cl.Has("--height");
       for (vtkIdType p = 0; p < image->GetNumberOfPoints(); ++p)
       {
