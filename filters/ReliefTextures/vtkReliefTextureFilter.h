@@ -18,8 +18,8 @@
  * with a no-data value (GDAL's, e.g. -32768 in int16 DEMs): with UseNoDataValue those texels
  * are left out of the range and get the deepest depth of the others, as the lowest ground.
  * Images with 3 or 4 components are converted to luminance 0.2125 R + 0.7154 G + 0.0721 B;
- * with 2 components the first one is used. The input array is selected with SetInputArrayToProcess() and
- * defaults to the point scalars.
+ * with 2 components the first one is used. The input array is selected with
+ * SetInputArrayToProcess() and defaults to the point scalars.
  *
  * Errors (no output is produced): no input, an empty or non-2D image, NaN or infinite
  * values (other than no data), float depths outside [0,1] without NormalizeRange, no texel with
