@@ -12,6 +12,7 @@
 #include <iostream>
 #include <limits>
 #include <sstream>
+#include <strings.h>
 
 namespace mesolight
 {
@@ -298,10 +299,7 @@ bool CommandLine::GetDouble(
 
 bool CommandLine::GetDoubleOrNaN(const std::string& name, double& value, std::string& error) const
 {
-  std::string text = this->Get(name);
-  std::transform(text.begin(), text.end(), text.begin(),
-    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  if (text == "nan")
+  if (strcasecmp(this->Get(name).c_str(), "nan") == 0)
   {
     value = std::numeric_limits<double>::quiet_NaN();
     return true;
