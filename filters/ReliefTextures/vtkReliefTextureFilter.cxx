@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkReliefTextureFilter.h"
 #include "vtkOutOfMemory.h"
+#include "vtkUnitScale.h"
 #include "vtkWholeExtentRequest.h"
 
 #include "MemoryBudget.h"
@@ -26,6 +27,7 @@
 #include <cmath>
 #include <cstdint>
 #include <new>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -270,8 +272,17 @@ int vtkReliefTextureFilter::Execute(
   }
   if (outOfRange > 0 && !this->NormalizeRange)
   {
+    // Integer samples are divided by the type's maximum: give their stored values too, the
+    // units a no-data value is given in (e.g. -32768 in an int16 DEM).
+    const double unitScale = mesolight::UnitScale(scalars);
+    std::ostringstream stored;
+    if (unitScale != 1.0 && nComp < 3)
+    {
+      stored << ", stored values [" << std::lround(minValue / unitScale) << ", "
+             << std::lround(maxValue / unitScale) << "]";
+    }
     vtkErrorMacro("The input depths must lie in [0,1] but range over ["
-      << minValue << ", " << maxValue << "]"
+      << minValue << ", " << maxValue << "]" << stored.str()
       << (noDataCount > 0 ? " without the no-data texels" : "") << " (" << outOfRange
       << " texel(s) outside, the first at texel (i=" << firstOutOfRange % w
       << ", j=" << firstOutOfRange / w

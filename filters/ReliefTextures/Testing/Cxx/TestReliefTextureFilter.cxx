@@ -175,6 +175,14 @@ TEST(vtkReliefTextureFilter, ElevationsWithNoDataAreNormalisedWithoutIt)
   EXPECT_LT(Relief(filter)->GetComponent(5, 3), 0.013f);
   EXPECT_FLOAT_EQ(Relief(filter)->GetComponent(2, 3), 1.f);
 
+  // Without NormalizeRange the elevations are out of range: the error gives the stored values
+  // too, the units of a no-data value.
+  filter->NormalizeRangeOff();
+  filter->Update();
+  EXPECT_TRUE(capture->HasError("stored values [-32768, 300]")) << capture->AllErrors();
+  capture->Errors.clear();
+  filter->NormalizeRangeOn();
+
   // A depth map (not inverted): no data takes the deepest value of the others; NaN as the
   // no-data value marks NaN texels, which are otherwise an error.
   const float nan = std::numeric_limits<float>::quiet_NaN();
