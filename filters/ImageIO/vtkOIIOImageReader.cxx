@@ -5,10 +5,13 @@
 
 #include "vtkDataArray.h"
 #include "vtkDataObject.h"
+#include "vtkDoubleArray.h"
 #include "vtkErrorCode.h"
+#include "vtkFieldData.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
@@ -105,6 +108,8 @@ int vtkOIIOImageReader::RequestInformation(
     this->ImageSize[0] = this->ImageSize[1] = 0;
     this->NumberOfChannelsInFile = 0;
     this->FormatName.clear();
+    this->HasNoDataValue = false;
+    this->NoDataValue = 0.0;
     return 0;
   }
   if (header.FileChannels > 4)
@@ -116,6 +121,8 @@ int vtkOIIOImageReader::RequestInformation(
   this->ImageSize[1] = header.Height;
   this->NumberOfChannelsInFile = header.FileChannels;
   this->FormatName = header.FormatName;
+  this->HasNoDataValue = header.HasNoDataValue;
+  this->NoDataValue = header.NoDataValue;
 
   const int extent[6] = { 0, header.Width - 1, 0, header.Height - 1, 0, 0 };
   const double origin[3] = { 0.0, 0.0, 0.0 };
@@ -178,6 +185,13 @@ int vtkOIIOImageReader::RequestData(
     output->Initialize();
     return 1;
   }
+  if (header.HasNoDataValue)
+  {
+    vtkNew<vtkDoubleArray> noData;
+    noData->SetName("MesolightNoDataValue");
+    noData->InsertNextValue(header.NoDataValue);
+    output->GetFieldData()->AddArray(noData);
+  }
   // NaN is how geometry images mark holes: counted for the consumers that refuse it, not warned.
   if (header.Type == mesolight::ImageSampleType::Float)
   {
@@ -198,4 +212,6 @@ void vtkOIIOImageReader::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "FormatName: " << this->FormatName << "\n";
   os << indent << "MemoryBudget: " << this->MemoryBudget << "\n";
   os << indent << "NumberOfNonFiniteValues: " << this->NumberOfNonFiniteValues << "\n";
+  os << indent << "HasNoDataValue: " << (this->HasNoDataValue ? "true" : "false") << "\n";
+  os << indent << "NoDataValue: " << this->NoDataValue << "\n";
 }

@@ -20,6 +20,11 @@
  * infinite float values are read as stored (geometry images mark holes with NaN) and counted:
  * GetNumberOfNonFiniteValues().
  *
+ * A GeoTIFF that names a no-data value in GDAL's GDAL_NODATA tag (elevation maps written by
+ * GDAL: -32768, -9999, NaN...) gives it as GetNoDataValue() and as the output's field data array
+ * "MesolightNoDataValue" (one double), which vtkReliefTextureFilter applies by default
+ * (OpenImageIO does not pass the tag on; mesolight::ReadTiffNoDataTag reads it).
+ *
  * Failures report vtkErrorMacro messages with the file name and OpenImageIO's error text,
  * set ErrorCode (vtkErrorCode::NoFileNameError, FileNotFoundError, CannotOpenFileError,
  * UnrecognizedFileTypeError, FileFormatError) and produce an empty image.
@@ -78,6 +83,15 @@ public:
   const char* GetFormatName() const { return this->FormatName.c_str(); }
   ///@}
 
+  ///@{
+  /**
+   * Whether the last file read names a no-data value (a GeoTIFF's GDAL_NODATA tag), and the
+   * value, in the file's stored units (valid after UpdateInformation()).
+   */
+  vtkGetMacro(HasNoDataValue, bool);
+  vtkGetMacro(NoDataValue, double);
+  ///@}
+
 protected:
   vtkOIIOImageReader();
   ~vtkOIIOImageReader() override;
@@ -91,6 +105,8 @@ protected:
   std::string FormatName;
   vtkTypeInt64 MemoryBudget = 0;
   vtkIdType NumberOfNonFiniteValues = 0;
+  bool HasNoDataValue = false;
+  double NoDataValue = 0.0;
 
 private:
   vtkOIIOImageReader(const vtkOIIOImageReader&) = delete;

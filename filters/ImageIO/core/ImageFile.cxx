@@ -3,6 +3,7 @@
 
 #include "MemoryBudget.h"
 #include "OneLineMessage.h"
+#include "TiffNoDataTag.h"
 
 #include <OpenImageIO/imageio.h>
 
@@ -11,6 +12,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <vector>
 
@@ -385,6 +387,14 @@ ImageFileInfo ReadImageFileInfo(const std::string& path, std::int64_t memoryBudg
   }
   info.FormatName = in->format_name();
   Close(*in);
+  if (info.FormatName == "tiff")
+  {
+    if (const std::optional<double> noData = ReadTiffNoDataTag(path))
+    {
+      info.HasNoDataValue = true;
+      info.NoDataValue = *noData;
+    }
+  }
   return info;
 }
 

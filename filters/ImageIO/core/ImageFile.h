@@ -72,6 +72,9 @@ struct MESOLIGHTIMAGEIO_EXPORT ImageFileInfo
   int Channels = 0;     // channels read: min(FileChannels, 4)
   ImageSampleType Type = ImageSampleType::Float;
   std::string FormatName; // OpenImageIO's name: "png", "openexr", ...
+  /** The value a GeoTIFF names for pixels without data (GDAL_NODATA, TiffNoDataTag.h). */
+  bool HasNoDataValue = false;
+  double NoDataValue = 0.0;
 
   /** 1, 2 or 4 bytes. */
   std::size_t SampleSize() const;

@@ -3,10 +3,13 @@
 #include "vtkOIIOImageReader.h"
 #include "vtkOIIOImageWriter.h"
 
+#include "GdalNoDataTagWriter.h"
+
 #include "MesolightTestUtilities.h"
 
 #include "vtkDataArray.h"
 #include "vtkErrorCode.h"
+#include "vtkFieldData.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
@@ -253,6 +256,40 @@ TEST(OIIOImageIO, SignedSixteenBitElevationsAreReadAsStored)
   {
     EXPECT_EQ(image->GetPointData()->GetScalars()->GetComponent(k, 0), expected[k]) << k;
   }
+}
+
+TEST(OIIOImageIO, GeoTiffNoDataValueComesWithTheImage)
+{
+  // GDAL names a DEM's no-data value in the GDAL_NODATA tag: the reader gives it, and passes it
+  // downstream as field data (vtkReliefTextureFilter applies it); a file without it has none.
+  const fs::path file = mesolight_test::TestDirectory() / "dem_nodata.tif";
+  const std::vector<std::int16_t> metres = { -9999, 141, 547, 300 };
+  {
+    auto out = OIIO::ImageOutput::create(file.string());
+    ASSERT_TRUE(out);
+    ASSERT_TRUE(out->open(file.string(), OIIO::ImageSpec(2, 2, 1, OIIO::TypeDesc::INT16)));
+    ASSERT_TRUE(out->write_image(OIIO::TypeDesc::INT16, metres.data()));
+    ASSERT_TRUE(out->close());
+  }
+  vtkNew<vtkOIIOImageReader> reader;
+  reader->SetFileName(file.string().c_str());
+  reader->Update();
+  EXPECT_FALSE(reader->GetHasNoDataValue());
+  EXPECT_EQ(reader->GetOutput()->GetFieldData()->GetArray("MesolightNoDataValue"), nullptr);
+
+  ASSERT_TRUE(mesolight_test::AddGdalNoDataTag(file.string(), "-9999"));
+  reader->Modified();
+  reader->Update();
+  EXPECT_EQ(reader->GetErrorCode(), vtkErrorCode::NoError);
+  EXPECT_TRUE(reader->GetHasNoDataValue());
+  EXPECT_EQ(reader->GetNoDataValue(), -9999.0);
+  vtkDataArray* noData = reader->GetOutput()->GetFieldData()->GetArray("MesolightNoDataValue");
+  ASSERT_NE(noData, nullptr);
+  ASSERT_EQ(noData->GetNumberOfTuples(), 1);
+  EXPECT_EQ(noData->GetComponent(0, 0), -9999.0);
+  // The pixels are the same (file row 0 is VTK row 1).
+  EXPECT_EQ(reader->GetOutput()->GetPointData()->GetScalars()->GetComponent(2, 0), -9999.0);
+  EXPECT_EQ(reader->GetOutput()->GetPointData()->GetScalars()->GetComponent(1, 0), 300.0);
 }
 
 TEST(OIIOImageIO, RowOrderBottomRowIsLastInFile)
