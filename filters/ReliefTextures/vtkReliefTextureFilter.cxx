@@ -139,6 +139,9 @@ int vtkReliefTextureFilter::Execute(
 {
   vtkImageData* input = vtkImageData::GetData(inputVector[0], 0);
   vtkImageData* output = vtkImageData::GetData(outputVector, 0);
+  this->AppliedNoData = false;
+  this->AppliedNoDataValue = 0.0;
+  this->NumberOfNoDataTexels = 0;
   if (!input)
   {
     vtkErrorMacro("No input image: connect a depth map with SetInputConnection() or "
@@ -195,12 +198,22 @@ int vtkReliefTextureFilter::Execute(
   }
   const int w = dims[0];
   const int h = dims[1];
+  // The no-data value: the one set here, else the one the image names (a GeoTIFF's GDAL_NODATA).
+  bool useNoData = this->UseNoDataValue;
+  double noDataValue = this->NoDataValue;
+  vtkDataArray* inputNoData =
+    vtkDataArray::SafeDownCast(input->GetFieldData()->GetAbstractArray("MesolightNoDataValue"));
+  if (!useNoData && this->UseInputNoDataValue && inputNoData &&
+    inputNoData->GetNumberOfTuples() == 1 && inputNoData->GetNumberOfComponents() == 1)
+  {
+    useNoData = true;
+    noDataValue = inputNoData->GetComponent(0, 0);
+  }
   // Peak working memory per texel: unit values (double), depths (float), the RGBA float output,
   // the no-data mask.
   const std::string memory = mesolight::CheckMemoryBudget(
     "A " + std::to_string(w) + " x " + std::to_string(h) + " relief texture",
-    static_cast<std::uint64_t>(n) * (8 + 4 + 16 + (this->UseNoDataValue ? 1 : 0)),
-    this->MemoryBudget);
+    static_cast<std::uint64_t>(n) * (8 + 4 + 16 + (useNoData ? 1 : 0)), this->MemoryBudget);
   if (!memory.empty())
   {
     vtkErrorMacro(<< memory << ".");
@@ -210,22 +223,25 @@ int vtkReliefTextureFilter::Execute(
   // 1. Stored values -> unit values (with NormalizeRange, the stored values), and the texels
   // without data.
   std::vector<double> value(static_cast<size_t>(n));
-  std::vector<char> noData(this->UseNoDataValue ? static_cast<size_t>(n) : 0);
+  std::vector<char> noData(useNoData ? static_cast<size_t>(n) : 0);
   vtkIdType noDataCount = 0;
   switch (scalars->GetDataType())
   {
     vtkTemplateMacro(
-      noDataCount =
-        ReadDepthValues(static_cast<const VTK_TT*>(scalars->GetVoidPointer(0)), n, nComp,
-          this->NormalizeRange, value.data(), this->UseNoDataValue, this->NoDataValue, noData));
+      noDataCount = ReadDepthValues(static_cast<const VTK_TT*>(scalars->GetVoidPointer(0)), n,
+        nComp, this->NormalizeRange, value.data(), useNoData, noDataValue, noData));
     default:
       vtkErrorMacro("Unsupported input scalar type " << scalars->GetDataTypeAsString() << ".");
       return 0;
   }
+  this->AppliedNoData = useNoData;
+  this->AppliedNoDataValue = useNoData ? noDataValue : 0.0;
+  this->NumberOfNoDataTexels = noDataCount;
   if (noDataCount == n)
   {
-    vtkErrorMacro("Every texel holds the no-data value " << this->NoDataValue
-                                                         << ": there is no depth to draw.");
+    vtkErrorMacro("Every texel holds the no-data value "
+      << noDataValue << (this->UseNoDataValue ? "" : " (the image's own, as its file names it)")
+      << ": there is no depth to draw.");
     return 0;
   }
 
@@ -268,6 +284,23 @@ int vtkReliefTextureFilter::Execute(
       << nonFinite << " NaN or infinite value(s) out of " << n
       << "; the first is at texel (i=" << firstNonFinite % w << ", j=" << firstNonFinite / w
       << "). Fix the data (e.g. fill holes) before computing a relief texture.");
+    return 0;
+  }
+  const int type = scalars->GetDataType();
+  if (!this->NormalizeRange && type != VTK_FLOAT && type != VTK_DOUBLE &&
+    scalars->GetDataTypeMin() < 0)
+  {
+    // Image formats store depth and height maps unsigned; signed integers (int16 GeoTIFFs,
+    // SRTM tiles) hold elevations in metres, which as fractions of the type's maximum would
+    // draw as a flat wall.
+    const double unitScale = mesolight::UnitScale(scalars);
+    vtkErrorMacro("The input holds signed integers ("
+      << scalars->GetDataTypeAsString() << ", stored values [" << std::lround(minValue / unitScale)
+      << ", " << std::lround(maxValue / unitScale) << "]"
+      << (noDataCount > 0 ? " without the no-data texels" : "")
+      << "): they store measurements such as elevations in metres (DEMs), not depths in [0,1]. "
+         "Turn on NormalizeRange (ParaView: Normalize Range; mesolight: --normalize) to "
+         "rescale their range to [0,1].");
     return 0;
   }
   if (outOfRange > 0 && !this->NormalizeRange)
@@ -395,5 +428,9 @@ void vtkReliefTextureFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NormalizeRange: " << (this->NormalizeRange ? "On" : "Off") << "\n";
   os << indent << "NoDataValue: " << this->NoDataValue << "\n";
   os << indent << "UseNoDataValue: " << (this->UseNoDataValue ? "On" : "Off") << "\n";
+  os << indent << "UseInputNoDataValue: " << (this->UseInputNoDataValue ? "On" : "Off") << "\n";
+  os << indent << "AppliedNoData: " << (this->AppliedNoData ? "On" : "Off") << "\n";
+  os << indent << "AppliedNoDataValue: " << this->AppliedNoDataValue << "\n";
+  os << indent << "NumberOfNoDataTexels: " << this->NumberOfNoDataTexels << "\n";
   os << indent << "MemoryBudget: " << this->MemoryBudget << "\n";
 }

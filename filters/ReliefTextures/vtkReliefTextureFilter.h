@@ -12,19 +12,21 @@
  * output field data as a 1-tuple float array "MesolightDepthScale".
  *
  * Input: any scalar type. Unsigned integers are divided by the type maximum (uchar / 255,
- * ushort / 65535); signed integers likewise; float and double are used as they are. The
- * values must lie in [0,1] unless NormalizeRange is on, which rescales the stored values
- * themselves (elevations in metres, below sea level too). Elevation maps mark missing samples
- * with a no-data value (GDAL's, e.g. -32768 in int16 DEMs): with UseNoDataValue those texels
- * are left out of the range and get the deepest depth of the others, as the lowest ground.
- * Images with 3 or 4 components are converted to luminance 0.2125 R + 0.7154 G + 0.0721 B;
- * with 2 components the first one is used. The input array is selected with
- * SetInputArrayToProcess() and defaults to the point scalars.
+ * ushort / 65535); float and double are used as they are. The values must lie in [0,1] unless
+ * NormalizeRange is on, which rescales the stored values themselves (elevations in metres,
+ * below sea level too). Signed integers (int16 DEMs) hold measurements and need NormalizeRange.
+ * Elevation maps mark missing samples with a no-data value (GDAL's, e.g. -32768 in int16 DEMs):
+ * with UseNoDataValue those texels are left out of the range and get the deepest depth of the
+ * others, as the lowest ground. An input that names its own no-data value (field data
+ * "MesolightNoDataValue", which vtkOIIOImageReader sets from a GeoTIFF's GDAL_NODATA tag) gets the
+ * same by default (UseInputNoDataValue). Images with 3 or 4 components are converted to luminance
+ * 0.2125 R + 0.7154 G + 0.0721 B; with 2 components the first one is used. The input array is
+ * selected with SetInputArrayToProcess() and defaults to the point scalars.
  *
  * Errors (no output is produced): no input, an empty or non-2D image, NaN or infinite
- * values (other than no data), float depths outside [0,1] without NormalizeRange, no texel with
- * data. An image one texel wide or
- * high gets a warning: slopes cannot be estimated across it and that normal component is 0.
+ * values (other than no data), depths outside [0,1] or signed integers without NormalizeRange, no
+ * texel with data. An image one texel wide or high gets a warning: slopes cannot be estimated
+ * across it and that normal component is 0.
  */
 #ifndef vtkReliefTextureFilter_h
 #define vtkReliefTextureFilter_h
@@ -101,6 +103,28 @@ public:
 
   ///@{
   /**
+   * When UseNoDataValue is off and the input image names a no-data value (a one-value field data
+   * array "MesolightNoDataValue", as vtkOIIOImageReader gives a GeoTIFF's GDAL_NODATA tag), use
+   * that one: a DEM's holes are not drawn as terrain unless this is turned off. Default: on.
+   * GetAppliedNoDataValue() tells, after Update(), which value was applied, if any.
+   */
+  vtkSetMacro(UseInputNoDataValue, bool);
+  vtkGetMacro(UseInputNoDataValue, bool);
+  vtkBooleanMacro(UseInputNoDataValue, bool);
+  ///@}
+
+  ///@{
+  /**
+   * After Update(): whether texels were taken as holding no data (UseNoDataValue, or the
+   * input's own value under UseInputNoDataValue), which value, and how many texels held it.
+   */
+  vtkGetMacro(AppliedNoData, bool);
+  vtkGetMacro(AppliedNoDataValue, double);
+  vtkGetMacro(NumberOfNoDataTexels, vtkIdType);
+  ///@}
+
+  ///@{
+  /**
    * Memory budget in bytes. The filter estimates its working memory before allocating it and
    * fails with an error giving the size it needs when that is more than the budget (a
    * std::bad_alloc that still happens becomes an error too, never an abort). 0 (default): the
@@ -125,6 +149,10 @@ protected:
   bool NormalizeRange = false;
   double NoDataValue = 0.0;
   bool UseNoDataValue = false;
+  bool UseInputNoDataValue = true;
+  bool AppliedNoData = false;
+  double AppliedNoDataValue = 0.0;
+  vtkIdType NumberOfNoDataTexels = 0;
   vtkTypeInt64 MemoryBudget = 0;
 
 private:

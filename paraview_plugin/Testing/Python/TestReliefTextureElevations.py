@@ -5,7 +5,10 @@ Image Reader (int16 kept as stored) into Relief Texture with Invert Input, Norma
 No Data Value and No Data Value -32768. The relief's depths must be the elevations' own range
 (-100..300 m, below sea level included) and the no-data texels the lowest ground (depth 1),
 computed here from the elevations. Must fail: the same without Use No Data Value (-32768 takes
-part in the range and every elevation lies within 1.3% of the top)."""
+part in the range and every elevation lies within 1.3% of the top). The same file with GDAL's
+GDAL_NODATA tag needs neither Use No Data Value nor the value (Use Input No Data Value, the
+default); with that turned off it must fail the same way.""" 
+import importlib.util
 import os
 import subprocess
 import sys
@@ -76,6 +79,26 @@ top = got[~outside].max()
 print("without Use No Data Value: the deepest elevation at depth %.4f" % top)
 check(top < 0.013, "without Use No Data Value -32768 is an elevation (the negative case)")
 check(np.abs(got - expected).max() > 0.5, "without Use No Data Value the depths differ")
+
+# The same DEM as GDAL writes it names its no-data value (GDAL_NODATA): Relief Texture applies
+# it untouched (Use Input No Data Value, on by default); turned off, -32768 is an elevation again.
+spec = importlib.util.spec_from_file_location("add_gdal_no_data", os.path.join(
+    os.path.dirname(os.path.abspath(__file__)), "..", "..", "..", "tests", "cli", "AddGdalNoData.py"))
+add_gdal_no_data = importlib.util.module_from_spec(spec)
+spec.loader.exec_module(add_gdal_no_data)
+tagged = os.path.join(out, "dem-int16-gdal-nodata.tif")
+add_gdal_no_data.main(dem, tagged, "-32768")
+reader = pvs.MesolightImageReader(FileName=tagged)
+relief = pvs.MesolightReliefTexture(Input=reader, InvertInput=1, NormalizeRange=1)
+check(relief.UseInputNoDataValue == 1 and relief.UseNoDataValue == 0,
+      "Use Input No Data Value on and Use No Data Value off by default")
+got = depths()
+error = np.abs(got - expected).max()
+print("the file's own no-data value: largest depth difference %.2e" % error)
+check(error < 1e-6, "the GeoTIFF's no-data value applied by default (max diff %.2e)" % error)
+relief.UseInputNoDataValue = 0
+top = depths()[~outside].max()
+check(top < 0.013, "without Use Input No Data Value -32768 is an elevation (the negative case)")
 
 if failures:
     print("FAILED: " + "; ".join(failures))

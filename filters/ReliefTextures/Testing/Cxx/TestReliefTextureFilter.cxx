@@ -8,6 +8,7 @@
 
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
@@ -126,34 +127,59 @@ TEST(vtkReliefTextureFilter, InvertAndNormalize)
   EXPECT_FLOAT_EQ(Relief(filter)->GetComponent(2, 3), 0.f);
   filter->InvertInputOff();
 
-  // Out-of-range floats: an error that points at NormalizeRange.
-  filter->SetInputData(MakeImage<vtkFloatArray>(3, 1, 1, { 10.f, 15.f, 20.f }));
-  filter->Update();
-  EXPECT_TRUE(capture->HasError("NormalizeRange")) << capture->AllErrors();
-  EXPECT_TRUE(capture->HasError("[10, 20]")) << capture->AllErrors();
-  EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), 0);
-
-  capture->Errors.clear();
-  filter->NormalizeRangeOn();
-  filter->Update();
-  EXPECT_TRUE(capture->Errors.empty()) << capture->AllErrors();
+  // Refused with an error that points at NormalizeRange (and says `what`), drawn with it.
+  const auto refusedWithoutNormalizeRange = [&](vtkImageData* image, const char* what)
+  {
+    filter->SetInputData(image);
+    filter->NormalizeRangeOff();
+    filter->Update();
+    EXPECT_TRUE(capture->HasError("NormalizeRange")) << capture->AllErrors();
+    EXPECT_TRUE(capture->HasError(what)) << capture->AllErrors();
+    EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), 0);
+    capture->Errors.clear();
+    filter->NormalizeRangeOn();
+    filter->Update();
+    EXPECT_TRUE(capture->Errors.empty()) << capture->AllErrors();
+  };
+  // Out-of-range floats.
+  refusedWithoutNormalizeRange(MakeImage<vtkFloatArray>(3, 1, 1, { 10.f, 15.f, 20.f }), "[10, 20]");
   EXPECT_FLOAT_EQ(Relief(filter)->GetComponent(0, 3), 0.f);
   EXPECT_FLOAT_EQ(Relief(filter)->GetComponent(1, 3), 0.5f);
   EXPECT_FLOAT_EQ(Relief(filter)->GetComponent(2, 3), 1.f);
+  // Signed integers hold measurements: int16 elevations (141-547 m, as in r-cran-terra's
+  // elev.tif) lie in [0, 32767] and as fractions of it would draw a flat wall (unsigned ones are
+  // fractions: the test above).
+  refusedWithoutNormalizeRange(MakeImage<vtkShortArray>(3, 1, 1, { 141, 344, 547 }),
+    "signed integers (short, stored values [141, 547])");
+  EXPECT_FLOAT_EQ(Relief(filter)->GetComponent(1, 3), 0.5f);
 }
+
+namespace
+{
+/// The elevations of the no-data tests: -100..300 m, two texels holding `none`.
+vtkSmartPointer<vtkImageData> NoDataDem(short none)
+{
+  return MakeImage<vtkShortArray>(3, 2, 1, { -100, 0, none, 300, none, 200 });
+}
+
+/// An elevation map's settings: a height map in metres.
+void SetElevations(vtkReliefTextureFilter* filter, vtkImageData* dem)
+{
+  filter->SetInputData(dem);
+  filter->InvertInputOn();
+  filter->NormalizeRangeOn();
+}
+} // namespace
 
 TEST(vtkReliefTextureFilter, ElevationsWithNoDataAreNormalisedWithoutIt)
 {
   // An int16 DEM as GDAL writes one: elevations in metres, some below sea level, and -32768
   // where there is no data. Height map (white = high): depth = 1 - normalised elevation.
   const short none = -32768;
-  const auto dem = MakeImage<vtkShortArray>(3, 2, 1, { -100, 0, none, 300, none, 200 });
   vtkNew<vtkReliefTextureFilter> filter;
   vtkNew<MessageCapture> capture;
   capture->Watch(filter);
-  filter->SetInputData(dem);
-  filter->InvertInputOn();
-  filter->NormalizeRangeOn();
+  SetElevations(filter, NoDataDem(none));
   filter->SetNoDataValue(none);
   filter->UseNoDataValueOn();
   filter->Update();
@@ -205,6 +231,52 @@ TEST(vtkReliefTextureFilter, ElevationsWithNoDataAreNormalisedWithoutIt)
   filter->Update();
   EXPECT_TRUE(capture->HasError("Every texel holds the no-data value")) << capture->AllErrors();
   EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), 0);
+}
+
+TEST(vtkReliefTextureFilter, TheImagesOwnNoDataValueAppliesByDefault)
+{
+  // vtkOIIOImageReader passes a GeoTIFF's GDAL_NODATA on as field data "MesolightNoDataValue".
+  const short none = -9999;
+  const auto dem = NoDataDem(none);
+  vtkNew<vtkDoubleArray> named;
+  named->SetName("MesolightNoDataValue");
+  named->InsertNextValue(none);
+  dem->GetFieldData()->AddArray(named);
+  vtkNew<vtkReliefTextureFilter> filter;
+  SetElevations(filter, dem);
+  vtkNew<MessageCapture> capture;
+  capture->Watch(filter);
+  EXPECT_TRUE(filter->GetUseInputNoDataValue()); // the default
+  filter->Update();
+  EXPECT_TRUE(capture->Errors.empty()) << capture->AllErrors();
+  EXPECT_TRUE(filter->GetAppliedNoData());
+  EXPECT_EQ(filter->GetAppliedNoDataValue(), -9999.0);
+  EXPECT_EQ(filter->GetNumberOfNoDataTexels(), 2);
+  const std::vector<float> expected = { 1.f, 0.75f, 1.f, 0.f, 1.f, 0.25f };
+  for (vtkIdType k = 0; k < 6; ++k)
+  {
+    EXPECT_FLOAT_EQ(Relief(filter)->GetComponent(k, 3), expected[k]) << "texel " << k;
+  }
+
+  // Turned off, -9999 is an elevation again (the negative case): the others crowd at the top.
+  filter->UseInputNoDataValueOff();
+  filter->Update();
+  EXPECT_FALSE(filter->GetAppliedNoData());
+  EXPECT_EQ(filter->GetNumberOfNoDataTexels(), 0);
+  EXPECT_FLOAT_EQ(Relief(filter)->GetComponent(2, 3), 1.f);
+  EXPECT_LT(Relief(filter)->GetComponent(0, 3), 0.05f);
+
+  // A value set on the filter wins over the image's: 0 m is the hole now, -9999 the lowest
+  // ground measured.
+  filter->UseInputNoDataValueOn();
+  filter->SetNoDataValue(0);
+  filter->UseNoDataValueOn();
+  filter->Update();
+  EXPECT_EQ(filter->GetAppliedNoDataValue(), 0.0);
+  EXPECT_EQ(filter->GetNumberOfNoDataTexels(), 1);
+  EXPECT_FLOAT_EQ(Relief(filter)->GetComponent(2, 3), 1.f);
+  EXPECT_FLOAT_EQ(Relief(filter)->GetComponent(1, 3), 1.f);
+  EXPECT_LT(Relief(filter)->GetComponent(0, 3), 0.05f);
 }
 
 TEST(vtkReliefTextureFilter, NonFiniteValuesAreRejected)
