@@ -297,15 +297,27 @@ bool CommandLine::GetDouble(
   return ParseNumber(name, text, low, high, value, error);
 }
 
-bool CommandLine::GetDoubleOrNaN(const std::string& name, double& value, std::string& error) const
+bool CommandLine::GetNoData(const std::string& name, NoDataOption& option, std::string& error) const
 {
-  if (strcasecmp(this->Get(name).c_str(), "nan") == 0)
+  option = NoDataOption();
+  if (!this->Has(name))
   {
-    value = std::numeric_limits<double>::quiet_NaN();
     return true;
   }
-  return this->GetDouble(
-    name, -std::numeric_limits<double>::max(), std::numeric_limits<double>::max(), value, error);
+  const std::string text = this->Get(name);
+  if (strcasecmp(text.c_str(), "none") == 0)
+  {
+    option.UseFileValue = false;
+    return true;
+  }
+  option.Use = true;
+  if (strcasecmp(text.c_str(), "nan") == 0)
+  {
+    option.Value = std::numeric_limits<double>::quiet_NaN();
+    return true;
+  }
+  return this->GetDouble(name, -std::numeric_limits<double>::max(),
+    std::numeric_limits<double>::max(), option.Value, error);
 }
 
 bool CommandLine::GetInt(

@@ -67,8 +67,20 @@ public:
   bool GetInts(const std::vector<IntOption>& options, std::string& error) const;
   bool GetDouble(
     const std::string& name, double low, double high, double& value, std::string& error) const;
-  /** A number or "nan" (as a no-data value may be); true and `value` untouched when absent. */
-  bool GetDoubleOrNaN(const std::string& name, double& value, std::string& error) const;
+  /** A no-data value option: a number or "nan" (Use, Value), or "none" (UseFileValue false: not
+   *  even the value a GeoTIFF names). Absent: the file's own value applies, if it names one. */
+  struct NoDataOption
+  {
+    bool Use = false;
+    double Value = 0.0;
+    bool UseFileValue = true;
+  };
+  bool GetNoData(const std::string& name, NoDataOption& option, std::string& error) const;
+  /** The help text of every command's --no-data. */
+  static constexpr const char* NoDataHelp =
+    "texels holding this value (e.g. -32768 in an int16 DEM; nan) have no data: left out of "
+    "--normalize's range and drawn as the lowest ground. Default: the value a GeoTIFF names "
+    "(GDAL_NODATA), if any; none: not even that one";
   /**
    * Comma-separated lists ("512,1024"). Every item must be a number in [low, high] (whole for
    * GetIntList), and there must be at least one; false with a message naming the option and the

@@ -61,9 +61,7 @@ int RunBakeCommand(const std::vector<std::string>& args)
   cl.AddValue("--border", "MODE", "clamp or wrap (tiling maps)", "clamp");
   cl.AddFlag("--height", "the input stores height (white = high) rather than depth");
   cl.AddFlag("--normalize", "stretch the input's value range to [0, 1]");
-  cl.AddValue("--no-data", "VALUE",
-    "texels holding this value (e.g. -32768 in an int16 DEM; nan) have no data: left out of "
-    "--normalize's range and drawn as the lowest ground");
+  cl.AddValue("--no-data", "VALUE", CommandLine::NoDataHelp);
   cl.AddValue("--bits", "N", "8 or 16 bits per channel for PNG/TIFF output", "8");
   cl.AddValue("--memory-budget", "GIB", "refuse images needing more memory (0: all there is)", "0");
   std::string error;
@@ -81,11 +79,11 @@ int RunBakeCommand(const std::vector<std::string>& args)
   double depthScale = 0.04;
   int bits = 8;
   double budget = 0.0;
-  double noData = 0.0;
+  CommandLine::NoDataOption noData;
   if (!cl.GetDouble("--depth-scale", 0.0, 100.0, depthScale, error) ||
     !cl.GetInt("--bits", 8, 16, bits, error) ||
     !cl.GetDouble("--memory-budget", 0.0, 1e6, budget, error) ||
-    !cl.GetDoubleOrNaN("--no-data", noData, error))
+    !cl.GetNoData("--no-data", noData, error))
   {
     return cl.UsageError(error);
   }
@@ -111,8 +109,9 @@ int RunBakeCommand(const std::vector<std::string>& args)
   bake->SetDepthScale(depthScale);
   bake->SetInvertInput(cl.Has("--height"));
   bake->SetNormalizeRange(cl.Has("--normalize"));
-  bake->SetUseNoDataValue(cl.Has("--no-data"));
-  bake->SetNoDataValue(noData);
+  bake->SetUseNoDataValue(noData.Use);
+  bake->SetNoDataValue(noData.Value);
+  bake->SetUseInputNoDataValue(noData.UseFileValue);
   bake->SetMemoryBudget(static_cast<vtkTypeInt64>(budget * 1073741824.0));
   if (border == "wrap")
   {
@@ -138,11 +137,29 @@ int RunBakeCommand(const std::vector<std::string>& args)
     std::cerr << "mesolight bake: could not write " << out << "\n";
     return 1;
   }
+  ReportFileNoDataValue(in, !noData.Use && noData.UseFileValue);
   int dims[3];
   bake->GetOutput()->GetDimensions(dims);
   std::cout << "wrote " << out << " (" << dims[0] << "x" << dims[1]
             << " relief texture, depth scale " << depthScale << ")\n";
   return 0;
+}
+
+void ReportFileNoDataValue(const std::string& file, bool applied)
+{
+  if (!applied || file.empty())
+  {
+    return;
+  }
+  vtkNew<vtkOIIOImageReader> reader;
+  reader->SetFileName(file.c_str());
+  reader->UpdateInformation();
+  if (reader->GetHasNoDataValue())
+  {
+    std::cout << file << " names the no-data value " << reader->GetNoDataValue()
+              << " (GDAL_NODATA): its texels are drawn as the lowest ground (--no-data none: "
+                 "as elevations)\n";
+  }
 }
 
 int RunConeCommand(const std::vector<std::string>& args)

@@ -10,6 +10,10 @@
 namespace mesolight
 {
 
+/** Tells the user, on stdout, when the depth image `file` names its own no-data value (a GeoTIFF's
+ *  GDAL_NODATA) and `applied` (no --no-data given): which value, and how to keep it as data. */
+void ReportFileNoDataValue(const std::string& file, bool applied);
+
 /** mesolight bake DEPTH_IMAGE --out RELIEF_IMAGE [options]; `args` excludes "bake". */
 int RunBakeCommand(const std::vector<std::string>& args);
 

@@ -398,6 +398,7 @@ bool RunReliefSweep(
     o.NormalizeDepthFile = settings.NormalizeDepthFiles && !settings.DepthFiles.empty();
     o.UseNoDataValue = settings.UseNoDataValue && !settings.DepthFiles.empty();
     o.NoDataValue = settings.NoDataValue;
+    o.UseFileNoDataValue = settings.UseFileNoDataValue;
     o.Resolution = settings.Resolution;
     o.DepthScale = settings.DepthScale;
     o.Width = settings.Width;
@@ -661,9 +662,7 @@ int RunReliefSweep(const std::vector<std::string>& args)
   cl.AddFlag("--height", "the depth images store height (white = high) rather than depth");
   cl.AddFlag("--normalize",
     "stretch each depth image's value range to [0, 1] (elevations in metres, as in DEMs)");
-  cl.AddValue("--no-data", "VALUE",
-    "the depth images' texels holding this value (e.g. -32768 in an int16 DEM; nan) have no "
-    "data: drawn as the lowest ground");
+  cl.AddValue("--no-data", "VALUE", CommandLine::NoDataHelp);
   cl.AddValue("--angles", "LIST", "view angles from the wall normal, degrees", "0,45,70,80,85");
   cl.AddValue("--size", "WxH", "window size in pixels", "512x512");
   cl.AddValue("--frames", "N", "timed frames per configuration, after a warm-up frame", "5");
@@ -717,8 +716,12 @@ int RunReliefSweep(const std::vector<std::string>& args)
   settings.FillViewport = !cl.Has("--no-fill");
   settings.DepthFilesAreHeight = cl.Has("--height");
   settings.NormalizeDepthFiles = cl.Has("--normalize");
-  settings.UseNoDataValue = cl.Has("--no-data");
-  if (!cl.GetDoubleOrNaN("--no-data", settings.NoDataValue, error))
+  CommandLine::NoDataOption noData;
+  const bool noDataRead = cl.GetNoData("--no-data", noData, error);
+  settings.UseNoDataValue = noData.Use;
+  settings.NoDataValue = noData.Value;
+  settings.UseFileNoDataValue = noData.UseFileValue;
+  if (!noDataRead)
   {
     return cl.UsageError(error);
   }

@@ -27,6 +27,7 @@ struct ReliefSweepSettings
   bool NormalizeDepthFiles = false; // stretch each file's range to [0, 1] (DEMs in metres)
   bool UseNoDataValue = false;      // the files' texels holding NoDataValue have no data
   double NoDataValue = 0.0;
+  bool UseFileNoDataValue = true; // else the value a GeoTIFF names (GDAL_NODATA) is data too
   std::vector<double> Angles{ 0.0, 45.0, 70.0, 80.0, 85.0 };
   int Width = 512;
   int Height = 512;

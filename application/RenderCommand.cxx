@@ -40,9 +40,7 @@ void AddSceneOptions(CommandLine& cl)
   cl.AddFlag("--height", "the depth image stores height (white = high) rather than depth");
   cl.AddFlag("--normalize",
     "stretch the depth image's value range to [0, 1] (elevations in metres, as in DEMs)");
-  cl.AddValue("--no-data", "VALUE",
-    "texels holding this value (e.g. -32768 in an int16 DEM; nan) have no data: left out of "
-    "--normalize's range and drawn as the lowest ground");
+  cl.AddValue("--no-data", "VALUE", CommandLine::NoDataHelp);
   cl.AddValue("--resolution", "N", "texels per side of the procedural map", "512");
   cl.AddValue("--depth-scale", "K", "relief depth as a fraction of the wall width", "0.04");
   cl.AddValue("--method", "NAME",
@@ -94,11 +92,14 @@ bool ReadSceneOptions(const CommandLine& cl, ReliefSceneOptions& o, std::string&
   o.DepthFile = cl.Get("--depth-file");
   o.DepthFileIsHeight = cl.Has("--height");
   o.NormalizeDepthFile = cl.Has("--normalize");
-  o.UseNoDataValue = cl.Has("--no-data");
-  if (!cl.GetDoubleOrNaN("--no-data", o.NoDataValue, error))
+  CommandLine::NoDataOption noData;
+  if (!cl.GetNoData("--no-data", noData, error))
   {
     return false;
   }
+  o.UseNoDataValue = noData.Use;
+  o.NoDataValue = noData.Value;
+  o.UseFileNoDataValue = noData.UseFileValue;
   o.Method = cl.Get("--method");
   o.SelfShadowing = !cl.Has("--no-shadows");
   o.Silhouettes = !cl.Has("--no-silhouettes");
@@ -340,6 +341,10 @@ int RunRenderCommand(const std::vector<std::string>& args)
   {
     std::cerr << "mesolight render: " << error << "\n";
     return 1;
+  }
+  else
+  {
+    ReportFileNoDataValue(options.DepthFile, !options.UseNoDataValue && options.UseFileNoDataValue);
   }
   // One window for both the PNG and the interactive view: on screen when a display is there.
   const bool interactive = !cl.Has("--offscreen") && HasDisplay();

@@ -130,6 +130,7 @@ bool BuildReliefTextures(const ReliefSceneOptions& options, vtkSmartPointer<vtkI
     bake->SetNormalizeRange(options.NormalizeDepthFile);
     bake->SetUseNoDataValue(options.UseNoDataValue);
     bake->SetNoDataValue(options.NoDataValue);
+    bake->SetUseInputNoDataValue(options.UseFileNoDataValue);
     // A depth file comes without colour: a light grey albedo shows the relief itself.
     vtkNew<vtkImageData> grey;
     grey->SetDimensions(1, 1, 1);

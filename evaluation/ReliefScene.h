@@ -34,9 +34,10 @@ struct ReliefSceneOptions
   bool NormalizeDepthFile = false; // stretch the file's value range to [0, 1] (DEMs in metres)
   bool UseNoDataValue = false;     // texels holding NoDataValue have no data (DEMs)
   double NoDataValue = 0.0;
-  int Resolution = 512;          // texels per side of the procedural map
-  double DepthScale = 0.04;      // world depth of depth 1 / world width of the wall
-  std::string Method = "relief"; // vtkReliefMapper::SetMethodByName
+  bool UseFileNoDataValue = true; // else the value a GeoTIFF names (GDAL_NODATA) is data too
+  int Resolution = 512;           // texels per side of the procedural map
+  double DepthScale = 0.04;       // world depth of depth 1 / world width of the wall
+  std::string Method = "relief";  // vtkReliefMapper::SetMethodByName
   int LinearSteps = 10;
   int RefinementSteps = 8;
   bool SelfShadowing = true;

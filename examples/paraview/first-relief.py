@@ -6,7 +6,8 @@
 DEPTH_IMAGE: 0 = the surface, 1 = the deepest (8/16-bit PNG, JPEG, TIFF, EXR...); with --height a
 height map instead (white = high, as game textures' height channels and DEMs); an elevation map
 in metres (a DEM) also takes --normalize and --no-data=VALUE (with "=": the launchers read a
-lone -32768 as an option of their own). Writes relief.png.
+lone -32768 as an option of their own; a GeoTIFF that names its no-data value needs none, and
+--no-data=none draws those texels as elevations). Writes relief.png.
 The plugin is auto-loaded by the launchers (LoadPlugin is not needed)."""
 import argparse
 import os
@@ -38,15 +39,21 @@ parser.add_argument("environment", nargs="?", help="a lat-long HDR environment t
 parser.add_argument("--height", action="store_true", help="the image is a height map")
 parser.add_argument("--normalize", action="store_true",
                     help="stretch the image's values to [0, 1] (elevations in metres)")
-parser.add_argument("--no-data", type=float, metavar="VALUE",
-                    help="texels holding this value have no data (e.g. -32768 in an int16 DEM)")
+parser.add_argument("--no-data", metavar="VALUE",
+                    help="texels holding this value have no data (e.g. -32768 in an int16 DEM; "
+                    "default: the value a GeoTIFF names; none: not even that one)")
 args = parser.parse_args(sys.argv[1:])  # the GUI's --script passes none
 depth = open_image(args.depth) if args.depth else MesolightProceduralRelief()
 relief = MesolightReliefTexture(Input=depth, InvertInput=int(args.height),
                                 NormalizeRange=int(args.normalize))
-if args.no_data is not None:
+if args.no_data == "none":
+    relief.UseInputNoDataValue = 0
+elif args.no_data is not None:
+    try:
+        relief.NoDataValue = float(args.no_data)
+    except ValueError:
+        sys.exit("first-relief.py: --no-data takes a number, nan or none, not %r" % args.no_data)
     relief.UseNoDataValue = 1
-    relief.NoDataValue = args.no_data
 check(relief, "the relief texture of %s" % (args.depth or "the procedural map"))
 plane = Plane()
 attached = MesolightAttachReliefTexture(Input=plane, ReliefTexture=relief)

@@ -65,3 +65,40 @@ if (holes_data STREQUAL filled)
 endif ()
 cli_expect_error(2 "option --no-data: 'deep' is not a number"
   ${scene} --depth-file "${WORK}/holes.tif" --no-data deep --out "${WORK}/never.png")
+
+# A GeoTIFF names its no-data value (GDAL_NODATA): the same holes drawn without --no-data are the
+# lowest ground, as with `--no-data -9999`, and the tool says so; `--no-data none` draws them as
+# elevations again.
+find_program(PYTHON3 NAMES python3 REQUIRED)
+execute_process(COMMAND "${PYTHON3}" "${CMAKE_CURRENT_LIST_DIR}/AddGdalNoData.py"
+  "${WORK}/holes.tif" "${WORK}/holes-tagged.tif" -9999 RESULT_VARIABLE rc ERROR_VARIABLE err)
+if (NOT rc EQUAL 0)
+  message(FATAL_ERROR "AddGdalNoData.py: ${err}")
+endif ()
+cli_expect(0 "names the no-data value -9999 (GDAL_NODATA)"
+  ${scene} --normalize --depth-file "${WORK}/holes-tagged.tif" --out "${WORK}/tagged.png")
+file(SHA256 "${WORK}/tagged.png" tagged)
+if (NOT tagged STREQUAL filled)
+  message(FATAL_ERROR "the GeoTIFF's own no-data value did not draw the holes as the lowest ground")
+endif ()
+cli_run(TRUE ${scene} --normalize --depth-file "${WORK}/holes-tagged.tif" --no-data none
+  --out "${WORK}/tagged-none.png")
+file(SHA256 "${WORK}/tagged-none.png" tagged_none)
+if (NOT tagged_none STREQUAL holes_data)
+  message(FATAL_ERROR "--no-data none did not draw the file's no-data texels as elevations")
+endif ()
+
+# Signed 16-bit elevations (64 and 16 m) are measurements: refused without --normalize (as a
+# fraction of 32767 they would draw a flat wall), drawn as the float map with it.
+# OpenImageIO writes floats to int16 as fractions of 32767: 1 / 32767 keeps the metres.
+oiio("${WORK}/metres.tif" --mulc 3.0518509475997192e-05 -d int16 -o "${WORK}/metres-int16.tif")
+cli_expect_error(1 "signed integers"
+  ${scene} --depth-file "${WORK}/metres-int16.tif" --out "${WORK}/never.png")
+cli_run(TRUE ${scene} --normalize --depth-file "${WORK}/metres-int16.tif"
+  --out "${WORK}/metres-int16.png")
+cli_run(TRUE ${scene} --normalize --depth-file "${WORK}/metres.tif" --out "${WORK}/metres-float.png")
+file(SHA256 "${WORK}/metres-int16.png" int16)
+file(SHA256 "${WORK}/metres-float.png" float)
+if (NOT int16 STREQUAL float)
+  message(FATAL_ERROR "the int16 map in metres drew another relief than the float one")
+endif ()
