@@ -8,6 +8,7 @@
 #include "MathConstants.h"
 #include "ReliefOcclusion.h" // EmitterSamples
 #include "ReliefSurface.h"
+#include "ScalarConversion.h"
 #include "TriangleScene.h"
 
 #include <glm/common.hpp>
@@ -28,6 +29,15 @@ std::string Quoted(const std::string& text)
 {
   return "'" + text + "'";
 }
+
+/// Sample `index` of pixels stored as T, as a unit value (ScalarConversion.h).
+template <typename T>
+float UnitSampleAt(const std::vector<unsigned char>& bytes, std::size_t index)
+{
+  T v;
+  std::memcpy(&v, &bytes[index * sizeof(T)], sizeof(T));
+  return static_cast<float>(ToUnitValue(v));
+}
 } // namespace
 
 HeightField ReadDepthImage(const std::string& path)
@@ -46,24 +56,22 @@ HeightField ReadDepthImage(const std::string& path)
       switch (info.Type)
       {
         case ImageSampleType::UInt8:
-          value = bytes[index] / 255.0f;
+          value = UnitSampleAt<std::uint8_t>(bytes, index);
           break;
         case ImageSampleType::UInt16:
-        {
-          std::uint16_t v;
-          std::memcpy(&v, &bytes[index * 2], 2);
-          value = v / 65535.0f;
+          value = UnitSampleAt<std::uint16_t>(bytes, index);
           break;
-        }
-        case ImageSampleType::Int16:
-        {
-          std::int16_t v;
-          std::memcpy(&v, &bytes[index * 2], 2);
-          value = v / 32767.0f; // as OpenImageIO converts it (clamped to [0, 1] below)
+        case ImageSampleType::Int16: // (clamped to [0, 1] below)
+          value = UnitSampleAt<std::int16_t>(bytes, index);
           break;
-        }
+        case ImageSampleType::UInt32:
+          value = UnitSampleAt<std::uint32_t>(bytes, index);
+          break;
+        case ImageSampleType::Int32:
+          value = UnitSampleAt<std::int32_t>(bytes, index);
+          break;
         case ImageSampleType::Float:
-          std::memcpy(&value, &bytes[index * 4], 4);
+          value = UnitSampleAt<float>(bytes, index);
           break;
       }
       if (!std::isfinite(value))

@@ -50,6 +50,10 @@ int VTKType(mesolight::ImageSampleType type)
       return VTK_UNSIGNED_SHORT;
     case mesolight::ImageSampleType::Int16:
       return VTK_SHORT;
+    case mesolight::ImageSampleType::UInt32:
+      return VTK_UNSIGNED_INT;
+    case mesolight::ImageSampleType::Int32:
+      return VTK_INT;
     default:
       return VTK_FLOAT;
   }

@@ -5,9 +5,10 @@
  *
  * vtkOIIOImageReader reads 8/16-bit PNG and TIFF, OpenEXR, Radiance HDR, JPEG and every
  * other format OpenImageIO supports. Pixel types: uint8 -> VTK_UNSIGNED_CHAR,
- * uint16 -> VTK_UNSIGNED_SHORT, int16 -> VTK_SHORT (elevation maps: metres and GDAL's no-data
- * value as stored), anything else (half, float, double, other integers) -> VTK_FLOAT
- * (OpenImageIO's conversion: integers become [0,1]). All channels are kept
+ * uint16 -> VTK_UNSIGNED_SHORT, int16 -> VTK_SHORT, uint32 -> VTK_UNSIGNED_INT, int32 -> VTK_INT
+ * (elevation maps: metres and GDAL's no-data value as stored), anything else (half, float,
+ * double, 8- and 64-bit signed integers) -> VTK_FLOAT (OpenImageIO's conversion: integers
+ * become [0,1]). All channels are kept
  * (1 to 4; only the first 4 of more, with a warning). Alpha is read as stored, never
  * premultiplied, since Mesolight's relief textures keep the depth in A.
  *

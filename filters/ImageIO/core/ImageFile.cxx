@@ -93,6 +93,10 @@ ImageSampleType SampleType(const OIIO::TypeDesc& format)
       return ImageSampleType::UInt16;
     case OIIO::TypeDesc::INT16:
       return ImageSampleType::Int16;
+    case OIIO::TypeDesc::UINT32:
+      return ImageSampleType::UInt32;
+    case OIIO::TypeDesc::INT32:
+      return ImageSampleType::Int32;
     default:
       return ImageSampleType::Float;
   }
@@ -423,6 +427,8 @@ bool ReadImageFilePixels(const std::string& path, const ImageFileInfo& info, voi
   const OIIO::TypeDesc format = info.Type == ImageSampleType::UInt8 ? OIIO::TypeDesc::UINT8
     : info.Type == ImageSampleType::UInt16                          ? OIIO::TypeDesc::UINT16
     : info.Type == ImageSampleType::Int16                           ? OIIO::TypeDesc::INT16
+    : info.Type == ImageSampleType::UInt32                          ? OIIO::TypeDesc::UINT32
+    : info.Type == ImageSampleType::Int32                           ? OIIO::TypeDesc::INT32
                                                                     : OIIO::TypeDesc::FLOAT;
   // File rows are top first, VTK rows bottom first: start at the last row and walk backwards
   // with a negative scanline stride.

@@ -26,13 +26,15 @@
 namespace mesolight
 {
 
-/** How samples are read: 8-bit and 16-bit files stay integers (signed 16-bit too: elevation
- *  maps keep their metres and their no-data value), everything else becomes float. */
+/** How samples are read: 8-, 16- and 32-bit integer files stay integers (signed ones too:
+ *  elevation maps keep their metres and their no-data value), everything else becomes float. */
 enum class ImageSampleType
 {
   UInt8,
   UInt16,
   Int16,
+  UInt32,
+  Int32,
   Float
 };
 

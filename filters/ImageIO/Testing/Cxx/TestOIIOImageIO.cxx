@@ -258,6 +258,38 @@ TEST(OIIOImageIO, SignedSixteenBitElevationsAreReadAsStored)
   }
 }
 
+TEST(OIIOImageIO, ThirtyTwoBitIntegersAreReadAsStored)
+{
+  // int32 elevations (centimetres, say) and uint32 samples keep their type: as floats
+  // OpenImageIO would scale them by 1 / 2^31 and 1 / 2^32, and a DEM in centimetres would
+  // look like a depth map of tiny values instead of being refused without NormalizeRange.
+  const fs::path dir = mesolight_test::TestDirectory();
+  const std::vector<std::int32_t> signedRows = { -999999, -12000, 0, 54700, 884800, 2147483647 };
+  const std::vector<std::uint32_t> unsignedRows = { 0, 1, 65536, 100000, 4000000000u, 4294967295u };
+  const auto write = [&](const fs::path& file, OIIO::TypeDesc type, const void* data)
+  {
+    auto out = OIIO::ImageOutput::create(file.string());
+    ASSERT_TRUE(out);
+    ASSERT_TRUE(out->open(file.string(), OIIO::ImageSpec(3, 2, 1, type)));
+    ASSERT_TRUE(out->write_image(type, data));
+    ASSERT_TRUE(out->close());
+  };
+  write(dir / "i32.tif", OIIO::TypeDesc::INT32, signedRows.data());
+  write(dir / "u32.tif", OIIO::TypeDesc::UINT32, unsignedRows.data());
+  auto image = Read(dir / "i32.tif");
+  ASSERT_EQ(image->GetScalarType(), VTK_INT);
+  vtkDataArray* scalars = image->GetPointData()->GetScalars();
+  // VTK row 0 is the file's last row.
+  EXPECT_EQ(scalars->GetComponent(0, 0), 54700.0);
+  EXPECT_EQ(scalars->GetComponent(3, 0), -999999.0);
+  EXPECT_EQ(scalars->GetComponent(5, 0), 0.0);
+  image = Read(dir / "u32.tif");
+  ASSERT_EQ(image->GetScalarType(), VTK_UNSIGNED_INT);
+  scalars = image->GetPointData()->GetScalars();
+  EXPECT_EQ(scalars->GetComponent(1, 0), 4000000000.0);
+  EXPECT_EQ(scalars->GetComponent(4, 0), 1.0);
+}
+
 TEST(OIIOImageIO, GeoTiffNoDataValueComesWithTheImage)
 {
   // GDAL names a DEM's no-data value in the GDAL_NODATA tag: the reader gives it, and passes it
