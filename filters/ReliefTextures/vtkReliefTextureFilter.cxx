@@ -26,9 +26,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <new>
 #include <sstream>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 vtkStandardNewMacro(vtkReliefTextureFilter);
@@ -67,10 +69,21 @@ vtkIdType MarkNoData(const T* data, vtkIdType n, int nComp, double noData, std::
 {
   vtkIdType count = 0;
   const bool nan = std::isnan(noData);
+  // A float map's no-data value as written (gdalinfo's -9999.9) is not a float: compare in the
+  // stored type, as GDAL does (a value beyond the type's range matches nothing). Integers
+  // compare exactly as doubles.
+  double compared = noData;
+  if constexpr (std::is_floating_point<T>::value)
+  {
+    if (!nan && std::abs(noData) <= std::numeric_limits<T>::max())
+    {
+      compared = static_cast<double>(static_cast<T>(noData));
+    }
+  }
   for (vtkIdType k = 0; k < n; ++k)
   {
     const double v = static_cast<double>(data[k * nComp]);
-    mask[k] = nan ? std::isnan(v) : v == noData;
+    mask[k] = nan ? std::isnan(v) : v == compared;
     count += mask[k];
   }
   return count;

@@ -225,6 +225,15 @@ TEST(vtkReliefTextureFilter, ElevationsWithNoDataAreNormalisedWithoutIt)
   EXPECT_FLOAT_EQ(Relief(filter)->GetComponent(1, 3), 0.6f);
   EXPECT_FLOAT_EQ(Relief(filter)->GetComponent(0, 3), 0.2f);
 
+  // A float DEM's no-data value as gdalinfo prints it, -9999.9, is not a float: it is compared
+  // as the stored float (with doubles the holes would be elevations, the negative case).
+  filter->SetInputData(MakeImage<vtkFloatArray>(3, 1, 1, { 0.2f, -9999.9f, 0.6f }));
+  filter->SetNoDataValue(-9999.9);
+  filter->Update();
+  EXPECT_TRUE(capture->Errors.empty()) << capture->AllErrors();
+  EXPECT_EQ(filter->GetNumberOfNoDataTexels(), 1);
+  EXPECT_FLOAT_EQ(Relief(filter)->GetComponent(1, 3), 0.6f);
+
   // Nothing but no data: an error, no output.
   filter->SetInputData(MakeImage<vtkShortArray>(2, 1, 1, { none, none }));
   filter->SetNoDataValue(none);
