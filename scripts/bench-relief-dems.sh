@@ -4,7 +4,8 @@
 # olinda_dem_utm25s.tif (111 x 111 float metres) and r-cran-terra's elev.tif (95 x 90 int16
 # metres, -32768 for no data). The .debs are downloaded with `apt-get download` and unpacked
 # into build/dems with `dpkg-deb -x` (nothing is installed: the packages would pull in R).
-# The elevation options: --height --normalize --no-data -32768.
+# The elevation options: --height --normalize (elev.tif names its no-data value, -32768, in its
+# GDAL_NODATA tag, which the reader applies).
 #
 # Usage: scripts/bench-relief-dems.sh OUTPUT.txt [extra bench relief options]
 #   e.g. scripts/bench-relief-dems.sh docs/measurements/relief-real-maps/dems/default-vs-relief-1.txt \
@@ -31,6 +32,6 @@ fi
 prefix="${out%.txt}"
 mkdir -p "$(dirname "$prefix")"
 "$here/scripts/xvfb.sh" "$here/build/bin/mesolight" bench relief --maps file \
-  --depth-file "$olinda,$elev" --height --normalize --no-data -32768 --angles 45,70,85 \
+  --depth-file "$olinda,$elev" --height --normalize --angles 45,70,85 \
   --csv "$prefix.csv" "$@" > "$prefix.txt"
 echo "[mesolight] wrote $prefix.txt and $prefix.csv"
