@@ -17,9 +17,10 @@ from paraview.simple import *  # noqa: F401,F403
 
 
 def open_image(path):
-    # The Mesolight Image Reader (OpenImageIO: PNG, JPEG, TIFF, EXR, HDR...) gives the pixels as
-    # point scalars, what the Mesolight filters read; OpenDataFile picks GDAL Raster Reader for
-    # .png, .jpg and .tif, whose pixels are cell data.
+    # The Mesolight Image Reader (OpenImageIO: PNG, JPEG, TIFF, EXR, HDR...) gives the pixels
+    # themselves as point scalars; OpenDataFile picks GDAL Raster Reader for .png, .jpg and .tif,
+    # whose pixels are cells, which Relief Texture reads at their corners (a half-texel resample)
+    # and the lights' filter refuses.
     if not os.path.isfile(path):
         sys.exit("first-relief.py: no such file: %s" % path)
     return MesolightImageReader(FileName=path)

@@ -22,6 +22,7 @@
 #include "vtkPointData.h"
 #include "vtkSMPTools.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
 #include <cmath>
@@ -87,6 +88,41 @@ vtkIdType MarkNoData(const T* data, vtkIdType n, int nComp, double noData, std::
     count += mask[k];
   }
   return count;
+}
+
+/// Cell values (cw x ch) to the (cw + 1) x (ch + 1) points at their corners: each point the mean
+/// of the cells around it with data (as Cell Data to Point Data, without the cells that have
+/// none); a point with no such cell has no data. `cellNoData` may be empty (every cell has data).
+void CellsToCorners(const std::vector<double>& cellValue, const std::vector<char>& cellNoData,
+  int cw, int ch, std::vector<double>& value, std::vector<char>& noData)
+{
+  const int w = cw + 1;
+  const int h = ch + 1;
+  value.assign(static_cast<size_t>(w) * h, 0.0);
+  noData.assign(static_cast<size_t>(w) * h, 0);
+  for (int j = 0; j < h; ++j)
+  {
+    for (int i = 0; i < w; ++i)
+    {
+      double sum = 0.0;
+      int count = 0;
+      for (int cj = std::max(0, j - 1); cj <= std::min(ch - 1, j); ++cj)
+      {
+        for (int ci = std::max(0, i - 1); ci <= std::min(cw - 1, i); ++ci)
+        {
+          const size_t c = static_cast<size_t>(cj) * cw + ci;
+          if (cellNoData.empty() || !cellNoData[c])
+          {
+            sum += cellValue[c];
+            ++count;
+          }
+        }
+      }
+      const size_t k = static_cast<size_t>(j) * w + i;
+      value[k] = count > 0 ? sum / count : 0.0;
+      noData[k] = count == 0;
+    }
+  }
 }
 
 /// Step 1 of the filter: the values (ToUnitDepth) and, when asked, the texels without data.
@@ -181,32 +217,42 @@ int vtkReliefTextureFilter::Execute(
       << dims[0] << " x " << dims[1] << " x " << dims[2] << ".");
     return 0;
   }
-  vtkDataArray* scalars = this->GetInputArrayToProcess(0, inputVector);
+  // ParaView's GDAL Raster Reader gives a raster's pixels as the cells of a grid one point larger
+  // (and hides the cells without data). The extent downstream is set before any data exist,
+  // when nothing says the pixels will be cells, so the texels stay the points: each the mean of
+  // the cells around it (CellsToCorners).
+  int association = vtkDataObject::FIELD_ASSOCIATION_POINTS;
+  vtkDataArray* scalars = this->GetInputArrayToProcess(0, inputVector, association);
+  bool cells = scalars && association == vtkDataObject::FIELD_ASSOCIATION_CELLS;
   if (!scalars && input->GetCellData()->GetScalars())
   {
-    // ParaView's GDAL Raster Reader (offered for .png and .tif) gives pixels as cells.
-    vtkErrorMacro("The input image carries its pixels as cell data (as ParaView's GDAL Raster "
-                  "Reader gives them); depths are read from point scalars: open the file with the "
-                  "Mesolight Image Reader (any format) or the PNG, JPEG or TIFF Series Reader, or "
-                  "apply Cell Data to Point Data first.");
-    return 0;
+    scalars = input->GetCellData()->GetScalars();
+    cells = true;
   }
   if (!scalars)
   {
-    vtkErrorMacro("The input image has no point scalars (or no array selected by "
+    vtkErrorMacro("The input image has no point or cell scalars (or no array selected by "
                   "SetInputArrayToProcess()) to read depths from.");
+    return 0;
+  }
+  if (cells && (dims[0] < 2 || dims[1] < 2))
+  {
+    vtkErrorMacro("The input image carries its pixels as cells but has "
+      << dims[0] << " x " << dims[1] << " points: no 2D cell to read.");
     return 0;
   }
   const int nComp = scalars->GetNumberOfComponents();
   const vtkIdType n = input->GetNumberOfPoints();
-  if (nComp < 1 || nComp > 4 || scalars->GetNumberOfTuples() != n)
+  // The samples read: the points, or the cells.
+  const vtkIdType nRead = cells ? static_cast<vtkIdType>(dims[0] - 1) * (dims[1] - 1) : n;
+  if (nComp < 1 || nComp > 4 || scalars->GetNumberOfTuples() != nRead)
   {
     vtkErrorMacro("The input array \"" << (scalars->GetName() ? scalars->GetName() : "")
                                        << "\" must have 1 to 4 components and one tuple per "
                                           "texel; it has "
                                        << nComp << " components and "
-                                       << scalars->GetNumberOfTuples() << " tuples for " << n
-                                       << " texels.");
+                                       << scalars->GetNumberOfTuples() << " tuples for " << nRead
+                                       << (cells ? " cells." : " texels."));
     return 0;
   }
   const int w = dims[0];
@@ -222,11 +268,18 @@ int vtkReliefTextureFilter::Execute(
     useNoData = true;
     noDataValue = inputNoData->GetComponent(0, 0);
   }
+  // Hidden cells (a vtkUniformGrid's blanking: GDAL Raster Reader hides the cells holding the
+  // raster's no-data value) have no data either, the input's own marking as the value is.
+  vtkUnsignedCharArray* hidden =
+    cells && this->UseInputNoDataValue ? input->GetCellGhostArray() : nullptr;
+  hidden = hidden && hidden->GetNumberOfTuples() == nRead ? hidden : nullptr;
   // Peak working memory per texel: unit values (double), depths (float), the RGBA float output,
-  // the no-data mask.
+  // the no-data mask; for cells, their values and mask as well.
   const std::string memory = mesolight::CheckMemoryBudget(
     "A " + std::to_string(w) + " x " + std::to_string(h) + " relief texture",
-    static_cast<std::uint64_t>(n) * (8 + 4 + 16 + (useNoData ? 1 : 0)), this->MemoryBudget);
+    static_cast<std::uint64_t>(n) * (8 + 4 + 16 + (useNoData || cells ? 1 : 0)) +
+      (cells ? static_cast<std::uint64_t>(nRead) * 9 : 0),
+    this->MemoryBudget);
   if (!memory.empty())
   {
     vtkErrorMacro(<< memory << ".");
@@ -235,26 +288,45 @@ int vtkReliefTextureFilter::Execute(
 
   // 1. Stored values -> unit values (with NormalizeRange, the stored values), and the texels
   // without data.
-  std::vector<double> value(static_cast<size_t>(n));
-  std::vector<char> noData(useNoData ? static_cast<size_t>(n) : 0);
+  std::vector<double> value(static_cast<size_t>(nRead));
+  std::vector<char> noData(useNoData || hidden ? static_cast<size_t>(nRead) : 0);
   vtkIdType noDataCount = 0;
   switch (scalars->GetDataType())
   {
     vtkTemplateMacro(
-      noDataCount = ReadDepthValues(static_cast<const VTK_TT*>(scalars->GetVoidPointer(0)), n,
+      noDataCount = ReadDepthValues(static_cast<const VTK_TT*>(scalars->GetVoidPointer(0)), nRead,
         nComp, this->NormalizeRange, value.data(), useNoData, noDataValue, noData));
     default:
       vtkErrorMacro("Unsupported input scalar type " << scalars->GetDataTypeAsString() << ".");
       return 0;
   }
-  this->AppliedNoData = useNoData;
+  if (cells)
+  {
+    for (vtkIdType k = 0; hidden && k < nRead; ++k)
+    {
+      noData[k] = noData[k] || (hidden->GetValue(k) & vtkDataSetAttributes::HIDDENCELL);
+    }
+    std::vector<double> cellValue;
+    std::vector<char> cellNoData;
+    cellValue.swap(value);
+    cellNoData.swap(noData);
+    CellsToCorners(cellValue, cellNoData, w - 1, h - 1, value, noData);
+    noDataCount = static_cast<vtkIdType>(std::count(noData.begin(), noData.end(), 1));
+  }
+  this->AppliedNoData = useNoData || noDataCount > 0;
   this->AppliedNoDataValue = useNoData ? noDataValue : 0.0;
   this->NumberOfNoDataTexels = noDataCount;
   if (noDataCount == n)
   {
-    vtkErrorMacro("Every texel holds the no-data value "
-      << noDataValue << (this->UseNoDataValue ? "" : " (the image's own, as its file names it)")
-      << ": there is no depth to draw.");
+    std::ostringstream which;
+    if (useNoData)
+    {
+      which << " holds the no-data value " << noDataValue
+            << (this->UseNoDataValue ? "" : " (the image's own, as its file names it)")
+            << (hidden ? " or" : "");
+    }
+    vtkErrorMacro("Every texel" << which.str() << (hidden ? " lies among hidden cells" : "")
+                                << ": there is no depth to draw.");
     return 0;
   }
 

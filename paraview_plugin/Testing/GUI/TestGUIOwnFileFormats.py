@@ -3,8 +3,9 @@
 float TIFF, float OpenEXR; the 8-bit PNG is TestGUIOwnFiles.xml's) and own HDR environment
 (sky.hdr), each opened by a reader ParaView offers for it (for .png, .jpg and .tif File > Open
 asks: the PNG and TIFF Series Readers, and for every one the Mesolight Image Reader, which the
-JPEG takes; GDAL Raster Reader, also offered, gives the pixels as cell data, which Relief Texture
-refuses, docs/paraview.md; .exr and .hdr: OpenDataFile, the reader factory's choice), in
+JPEG takes; GDAL Raster Reader, also offered, gives the pixels as cells, which Relief Texture
+reads at their corners, docs/paraview.md; .exr and .hdr: OpenDataFile, the reader factory's
+choice), in
 the orders a user may apply the steps, each step applied as the GUI applies it
 (mesolight_guitest.apply). After the last Apply the relief must be the only visible data (every
 image hidden), in 3D, framed. Must fail: the same run with the plugin's hiding turned off

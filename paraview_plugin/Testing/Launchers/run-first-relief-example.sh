@@ -3,7 +3,7 @@
 # The README's "your own files" command, as a user runs it: scripts/pvbatch.sh
 # examples/paraview/first-relief.py --height HEIGHT.jpg SKY.hdr, without a display, in a fresh
 # directory. A JPEG is what ParaView's OpenDataFile hands to GDAL Raster Reader (pixels as cell
-# data, which Relief Texture refuses: the script then saved a frame without the relief). Fails
+# data, which Relief Texture refused: the script then saved a frame without the relief). Fails
 # unless the script exits 0, prints no error and writes relief.png with a shaded relief covering
 # part of the frame; unless an elevation map in metres is refused without --normalize and drawn
 # with --normalize --no-data; and unless a missing file ends the script with an error and no

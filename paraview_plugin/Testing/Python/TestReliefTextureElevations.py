@@ -7,7 +7,8 @@ No Data Value and No Data Value -32768. The relief's depths must be the elevatio
 computed here from the elevations. Must fail: the same without Use No Data Value (-32768 takes
 part in the range and every elevation lies within 1.3% of the top). The same file with GDAL's
 GDAL_NODATA tag needs neither Use No Data Value nor the value (Use Input No Data Value, the
-default); with that turned off it must fail the same way.""" 
+default); with that turned off it must fail the same way. So must the file through GDAL Raster
+Reader (pixels as cells, the no-data ones hidden), against the cells' corner means."""
 import importlib.util
 import os
 import subprocess
@@ -99,6 +100,45 @@ check(error < 1e-6, "the GeoTIFF's no-data value applied by default (max diff %.
 relief.UseInputNoDataValue = 0
 top = depths()[~outside].max()
 check(top < 0.013, "without Use Input No Data Value -32768 is an elevation (the negative case)")
+
+# The same file through GDAL Raster Reader, which ParaView offers first for a GeoTIFF: its pixels
+# are cells, the no-data ones hidden. Relief Texture reads a texel at each cell corner, the mean
+# of the cells around it with data; the reference is that mean computed here from the reader's
+# own cells (rows as GDAL gives them).
+gdal = pvs.GDALRasterReader(FileName=tagged)
+relief = pvs.MesolightReliefTexture(Input=gdal, InvertInput=1, NormalizeRange=1)
+raster = servermanager.Fetch(gdal)
+cell_values = vtk_to_numpy(raster.GetCellData().GetScalars()).astype(np.float64).reshape(H, W)
+hidden = (vtk_to_numpy(raster.GetCellGhostArray()).reshape(H, W) & 32) != 0
+check(hidden.sum() == outside.sum(), "GDAL hides the %d no-data cells (got %d)"
+      % (outside.sum(), hidden.sum()))
+total = np.zeros((H + 1, W + 1))
+count = np.zeros((H + 1, W + 1))  # the cells around each corner with data
+around = np.zeros((H + 1, W + 1))  # all the cells around it
+for dj in (0, 1):
+    for di in (0, 1):
+        total[dj:dj + H, di:di + W] += np.where(hidden, 0.0, cell_values)
+        count[dj:dj + H, di:di + W] += ~hidden
+        around[dj:dj + H, di:di + W] += 1
+corner = np.where(count > 0, total / np.maximum(count, 1), np.nan)
+low, high = np.nanmin(corner), np.nanmax(corner)
+expected_corners = np.where(count > 0, 1.0 - (corner - low) / (high - low), 1.0)
+relief.UpdatePipeline()
+got = vtk_to_numpy(servermanager.Fetch(relief).GetPointData().GetScalars())[:, 3]
+check(got.size == (H + 1) * (W + 1), "one texel per point of GDAL's grid (%d)" % got.size)
+if got.size == (H + 1) * (W + 1):
+    error = np.abs(got.reshape(H + 1, W + 1) - expected_corners).max()
+    print("GDAL Raster Reader: largest depth difference %.2e over %d texels (%d without data)"
+          % (error, got.size, (count == 0).sum()))
+    check(error < 1e-6, "the cells' corner means, no data at depth 1 (max diff %.2e)" % error)
+relief.UseInputNoDataValue = 0
+relief.UpdatePipeline()
+got = vtk_to_numpy(servermanager.Fetch(relief).GetPointData().GetScalars())[:, 3]
+inside = (count == around).ravel()  # corners among data cells only
+print("GDAL Raster Reader, hidden cells as data: the deepest elevation at depth %.4f"
+      % got[inside].max())
+check(got[inside].max() < 0.013,
+      "with Use Input No Data Value off GDAL's hidden cells are elevations (the negative case)")
 
 if failures:
     print("FAILED: " + "; ".join(failures))

@@ -8,6 +8,7 @@
 
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
+#include "vtkDataSetAttributes.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
@@ -288,6 +289,55 @@ TEST(vtkReliefTextureFilter, TheImagesOwnNoDataValueAppliesByDefault)
   EXPECT_LT(Relief(filter)->GetComponent(0, 3), 0.05f);
 }
 
+TEST(vtkReliefTextureFilter, PixelsAsCellsAreReadAtTheirCorners)
+{
+  // GDAL Raster Reader's output as the filter meets it in ParaView: a grid one point larger than
+  // the raster, the pixels as cells, the cells without data hidden (blanked). Each texel (a
+  // point) is the mean of the cells around it that have data.
+  const int cw = 3;
+  const int ch = 2;
+  const std::vector<float> elevations = { 10, 20, 30, 40, 50, 60 }; // row 0 first
+  vtkNew<vtkImageData> raster;
+  raster->SetDimensions(cw + 1, ch + 1, 1);
+  vtkNew<vtkFloatArray> cellValues;
+  cellValues->SetName("Elevation");
+  for (const float e : elevations)
+  {
+    cellValues->InsertNextValue(e);
+  }
+  cellValues->SetValue(5, -9999.f); // the top right cell: no data, hidden
+  raster->GetCellData()->SetScalars(cellValues);
+  raster->AllocateCellGhostArray();
+  raster->GetCellGhostArray()->SetValue(5, vtkDataSetAttributes::HIDDENCELL);
+
+  vtkNew<vtkReliefTextureFilter> filter;
+  vtkNew<MessageCapture> capture;
+  capture->Watch(filter);
+  filter->SetInputData(raster);
+  filter->NormalizeRangeOn(); // a depth map in metres: 10 m at the top, 50 m the deepest
+  filter->Update();
+  EXPECT_TRUE(capture->Errors.empty()) << capture->AllErrors();
+  int dims[3];
+  filter->GetOutput()->GetDimensions(dims);
+  ASSERT_EQ(dims[0], cw + 1);
+  ASSERT_EQ(dims[1], ch + 1);
+  // Corner means by hand (points row by row, bottom first); the top right point has only the
+  // hidden cell: no data, the deepest depth of the others.
+  const std::vector<double> corners = { 10, 15, 25, 30, 25, 30, 100.0 / 3.0, 30, 40, 45, 50, -1 };
+  EXPECT_EQ(filter->GetNumberOfNoDataTexels(), 1);
+  for (vtkIdType k = 0; k < 12; ++k)
+  {
+    const double expected = corners[k] < 0 ? 1.0 : (corners[k] - 10.0) / 40.0;
+    EXPECT_NEAR(Relief(filter)->GetComponent(k, 3), expected, 1e-6) << "texel " << k;
+  }
+  // The blanking is the input's own marking: with UseInputNoDataValue off, -9999 is terrain (the
+  // negative case) and pulls the corners around it towards the top.
+  filter->UseInputNoDataValueOff();
+  filter->Update();
+  EXPECT_EQ(filter->GetNumberOfNoDataTexels(), 0);
+  EXPECT_NEAR(Relief(filter)->GetComponent(11, 3), 0.0, 1e-6);
+}
+
 TEST(vtkReliefTextureFilter, NonFiniteValuesAreRejected)
 {
   const float nan = std::numeric_limits<float>::quiet_NaN();
@@ -326,20 +376,19 @@ TEST(vtkReliefTextureFilter, EmptyAndMissingInput)
   noScalars->SetDimensions(4, 4, 1);
   filter->SetInputData(noScalars);
   filter->Update();
-  EXPECT_TRUE(capture->HasError("no point scalars")) << capture->AllErrors();
+  EXPECT_TRUE(capture->HasError("no point or cell scalars")) << capture->AllErrors();
 
-  // Pixels as cells (ParaView's GDAL Raster Reader): named, with what to do instead.
+  // Cells one point wide: no 2D cell to read depths from.
   capture->Errors.clear();
-  vtkNew<vtkImageData> cellPixels;
-  cellPixels->SetDimensions(5, 5, 1);
-  vtkNew<vtkFloatArray> cellDepth;
-  cellDepth->SetNumberOfTuples(cellPixels->GetNumberOfCells());
-  cellDepth->FillValue(0.5f);
-  cellPixels->GetCellData()->SetScalars(cellDepth);
-  filter->SetInputData(cellPixels);
+  vtkNew<vtkImageData> line;
+  line->SetDimensions(4, 1, 1);
+  vtkNew<vtkFloatArray> lineDepth;
+  lineDepth->SetNumberOfTuples(line->GetNumberOfCells());
+  lineDepth->FillValue(0.5f);
+  line->GetCellData()->SetScalars(lineDepth);
+  filter->SetInputData(line);
   filter->Update();
-  EXPECT_TRUE(capture->HasError("as cell data")) << capture->AllErrors();
-  EXPECT_TRUE(capture->HasError("Cell Data to Point Data")) << capture->AllErrors();
+  EXPECT_TRUE(capture->HasError("no 2D cell")) << capture->AllErrors();
 
   capture->Errors.clear();
   vtkNew<vtkImageData> volume;
