@@ -101,7 +101,7 @@ relief.UseInputNoDataValue = 0
 top = depths()[~outside].max()
 check(top < 0.013, "without Use Input No Data Value -32768 is an elevation (the negative case)")
 
-# The same file through GDAL Raster Reader, which ParaView offers first for a GeoTIFF: its pixels
+# The same file through GDAL Raster Reader, which ParaView offers for a GeoTIFF: its pixels
 # are cells, the no-data ones hidden. Relief Texture reads a texel at each cell corner, the mean
 # of the cells around it with data; the reference is that mean computed here from the reader's
 # own cells (rows as GDAL gives them).
