@@ -2,10 +2,8 @@
 #include "TiffNoDataTag.h"
 
 #include <algorithm>
-#include <cerrno>
-#include <cmath>
+#include <charconv>
 #include <cstdint>
-#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <functional>
@@ -42,10 +40,13 @@ std::optional<double> ParseNumber(const std::vector<unsigned char>& text)
     return std::nullopt;
   }
   s = s.substr(first, s.find_last_not_of(" \t\r\n") - first + 1);
-  errno = 0;
-  char* end = nullptr;
-  const double v = std::strtod(s.c_str(), &end);
-  if (end == s.c_str() || *end != '\0' || (errno == ERANGE && std::isinf(v)))
+  // from_chars, not strtod: the text is C-locale whatever the process's locale (a GUI in a
+  // decimal-comma locale would stop strtod at "-9999.9"'s point). It takes no leading '+'.
+  const char* begin = s.c_str() + (s[0] == '+' ? 1 : 0);
+  const char* end = s.c_str() + s.size();
+  double v = 0.0;
+  const std::from_chars_result parsed = std::from_chars(begin, end, v);
+  if (parsed.ec != std::errc() || parsed.ptr != end)
   {
     return std::nullopt;
   }
