@@ -3,12 +3,11 @@
 
 #include "EmbreeScene.h"
 #include "FieldIrradiance.h"
-#include "ImageFile.h"
 #include "LightField.h"
 #include "MathConstants.h"
 #include "ReliefOcclusion.h" // EmitterSamples
 #include "ReliefSurface.h"
-#include "ScalarConversion.h"
+#include "TraceRelief.h"
 #include "TriangleScene.h"
 
 #include <glm/common.hpp>
@@ -16,7 +15,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <limits>
 #include <memory>
 #include <sstream>
@@ -29,65 +27,24 @@ std::string Quoted(const std::string& text)
 {
   return "'" + text + "'";
 }
-
-/// Sample `index` of pixels stored as T, as a unit value (ScalarConversion.h).
-template <typename T>
-float UnitSampleAt(const std::vector<unsigned char>& bytes, std::size_t index)
-{
-  T v;
-  std::memcpy(&v, &bytes[index * sizeof(T)], sizeof(T));
-  return static_cast<float>(ToUnitValue(v));
-}
 } // namespace
 
 HeightField ReadDepthImage(const std::string& path)
 {
-  try
+  // The depths exactly as the path tracer's dense mesh (trace --relief) and the relief mapper
+  // read them: the same reader and relief filter, so NaN, out-of-range values, signed elevations
+  // and a GeoTIFF's no-data value are handled, or refused with the filter's message, alike.
+  std::vector<float> depth;
+  int width = 0;
+  int height = 0;
+  std::string error;
+  if (!ReadDepthMapImage(path, false, depth, width, height, error))
   {
-    const ImageFileInfo info = ReadImageFileInfo(path, std::int64_t(1) << 30);
-    std::vector<unsigned char> bytes(static_cast<std::size_t>(info.ByteSize()));
-    ReadImageFilePixels(path, info, bytes.data());
-    const std::size_t count = static_cast<std::size_t>(info.Width) * info.Height;
-    std::vector<float> depth(count);
-    for (std::size_t p = 0; p < count; ++p)
-    {
-      const std::size_t index = p * static_cast<std::size_t>(info.Channels);
-      float value = 0.0f;
-      switch (info.Type)
-      {
-        case ImageSampleType::UInt8:
-          value = UnitSampleAt<std::uint8_t>(bytes, index);
-          break;
-        case ImageSampleType::UInt16:
-          value = UnitSampleAt<std::uint16_t>(bytes, index);
-          break;
-        case ImageSampleType::Int16: // (clamped to [0, 1] below)
-          value = UnitSampleAt<std::int16_t>(bytes, index);
-          break;
-        case ImageSampleType::UInt32:
-          value = UnitSampleAt<std::uint32_t>(bytes, index);
-          break;
-        case ImageSampleType::Int32:
-          value = UnitSampleAt<std::int32_t>(bytes, index);
-          break;
-        case ImageSampleType::Float:
-          value = UnitSampleAt<float>(bytes, index);
-          break;
-      }
-      if (!std::isfinite(value))
-      {
-        throw ReliefSetupError("depth image " + Quoted(path) + " has a pixel that is not a number");
-      }
-      depth[p] = std::clamp(value, 0.0f, 1.0f);
-    }
-    // A relief on a surface of the scene is recessed into it: walled at its texture rectangle's
-    // border, as the path tracer's dense mesh closes it (docs/relief-against-path-tracer.md).
-    return HeightField(info.Width, info.Height, std::move(depth), HeightField::Edge::Walled);
+    throw ReliefSetupError("--relief: depth image " + Quoted(path) + ": " + error);
   }
-  catch (const ImageFileError& e)
-  {
-    throw ReliefSetupError(std::string("--relief: ") + e.what());
-  }
+  // A relief on a surface of the scene is recessed into it: walled at its texture rectangle's
+  // border, as the path tracer's dense mesh closes it (docs/relief-against-path-tracer.md).
+  return HeightField(width, height, std::move(depth), HeightField::Edge::Walled);
 }
 
 std::vector<FieldRelief> SetUpFieldReliefs(const vlf::LightField& field, const EmbreeScene& embree,

@@ -70,8 +70,8 @@ std::vector<int> ReliefOfTriangle(
 bool ReliefRadiance(
   const FieldRelief& relief, const glm::vec3& origin, const glm::vec3& dir, glm::vec3& radiance);
 
-// The linear depth samples of an image file (first channel, 0..1; row 0 at the bottom, v ~ 0).
-// Throws ReliefSetupError naming the file.
+// The depths of an image file as the relief mapper reads them (ReadDepthMapImage: luminance,
+// 0..1; row 0 at the bottom, v ~ 0). Throws ReliefSetupError naming the file and the reason.
 HeightField ReadDepthImage(const std::string& path);
 
 } // namespace mesolight

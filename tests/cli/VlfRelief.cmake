@@ -46,6 +46,20 @@ cli_expect_error(2 "Cannot read image" vlf render "${WORK}/box.vlf"
   --relief back=${WORK}/missing.png --out "${WORK}/never.png")
 cli_expect_error(2 "is not planar" vlf render "${WORK}/box.vlf" --relief tall=${WORK}/zero.pgm
   --out "${WORK}/never.png")
+# Depths are read as the relief mapper and trace --relief read them (ReadDepthMapImage): an int16
+# elevation map and a float map in metres are refused with the relief filter's reasons, where
+# they were clamped to [0, 1] without a word.
+foreach (_bad IN ITEMS "int16;signed integers" "float;must lie in [0,1]")
+  list(GET _bad 0 _type)
+  list(GET _bad 1 _reason)
+  execute_process(COMMAND "${OIIOTOOL}" --pattern constant:color=2 8x8 1 -d ${_type}
+    -o "${WORK}/metres-${_type}.tif" RESULT_VARIABLE _rc)
+  if (NOT _rc EQUAL 0)
+    message(FATAL_ERROR "oiiotool could not write metres-${_type}.tif")
+  endif ()
+  cli_expect_error(2 "${_reason}" vlf render "${WORK}/box.vlf"
+    --relief back=${WORK}/metres-${_type}.tif --out "${WORK}/never.png")
+endforeach ()
 cli_expect_error(2 "give SURFACE=DEPTH_IMAGE" vlf render "${WORK}/box.vlf" --relief back
   --out "${WORK}/never.png")
 cli_expect_error(2 "--out" vlf render "${WORK}/box.vlf" --relief back=${WORK}/zero.pgm
