@@ -2,8 +2,8 @@
 # SPDX-License-Identifier: BSD-3-Clause
 # `mesolight bench relief` on two elevation maps (DEMs) from Debian packages: r-cran-stars'
 # olinda_dem_utm25s.tif (111 x 111 float metres) and r-cran-terra's elev.tif (95 x 90 int16
-# metres, -32768 for no data). The .debs are downloaded with `apt-get download` and unpacked
-# into build/dems with `dpkg-deb -x` (nothing is installed: the packages would pull in R).
+# metres, -32768 for no data), taken out of their .debs by scripts/fetch-dems.sh (nothing is
+# installed).
 # The elevation options: --height --normalize (elev.tif names its no-data value, -32768, in its
 # GDAL_NODATA tag, which the reader applies).
 #
@@ -19,16 +19,9 @@ if [ -z "$out" ]; then
   exit 2
 fi
 shift
-dems="$here/build/dems"
-olinda="$dems/usr/lib/R/site-library/stars/tif/olinda_dem_utm25s.tif"
-elev="$dems/usr/lib/R/site-library/terra/ex/elev.tif"
-if [ ! -f "$olinda" ] || [ ! -f "$elev" ]; then
-  mkdir -p "$dems/debs"
-  (cd "$dems/debs" && apt-get download r-cran-stars r-cran-terra)
-  for deb in "$dems"/debs/*.deb; do
-    dpkg-deb -x "$deb" "$dems"
-  done
-fi
+library="$("$here/scripts/fetch-dems.sh")"
+olinda="$library/stars/tif/olinda_dem_utm25s.tif"
+elev="$library/terra/ex/elev.tif"
 prefix="${out%.txt}"
 mkdir -p "$(dirname "$prefix")"
 "$here/scripts/xvfb.sh" "$here/build/bin/mesolight" bench relief --maps file \
