@@ -47,7 +47,7 @@ args = parser.parse_args(sys.argv[1:])  # the GUI's --script passes none
 depth = open_image(args.depth) if args.depth else MesolightProceduralRelief()
 relief = MesolightReliefTexture(Input=depth, InvertInput=int(args.height),
                                 NormalizeRange=int(args.normalize))
-if args.no_data == "none":
+if args.no_data is not None and args.no_data.lower() == "none":
     relief.UseInputNoDataValue = 0
 elif args.no_data is not None:
     try:
