@@ -175,6 +175,7 @@ int RunConeCommand(const std::vector<std::string>& args)
   cl.AddValue("--border", "MODE", "clamp or wrap (tiling maps)", "clamp");
   cl.AddFlag("--height", "the input stores height (white = high) rather than depth");
   cl.AddFlag("--normalize", "stretch the input's value range to [0, 1]");
+  cl.AddValue("--no-data", "VALUE", CommandLine::NoDataHelp);
   cl.AddFlag("--8bit", "the relief thesis' 8-bit packing (cone as c / (1 + c)) instead of float");
   cl.AddValue("--memory-budget", "GIB", "refuse images needing more memory (0: all there is)", "0");
   std::string error;
@@ -185,8 +186,10 @@ int RunConeCommand(const std::vector<std::string>& args)
     return exitCode; // --help printed, or a usage error reported
   }
   double budget = 0.0;
+  CommandLine::NoDataOption noData;
   if (!cl.GetDouble("--depth-scale", 0.0, 100.0, depthScale, error) ||
-    !cl.GetDouble("--memory-budget", 0.0, 1e6, budget, error))
+    !cl.GetDouble("--memory-budget", 0.0, 1e6, budget, error) ||
+    !cl.GetNoData("--no-data", noData, error))
   {
     return cl.UsageError(error);
   }
@@ -213,6 +216,9 @@ int RunConeCommand(const std::vector<std::string>& args)
   cones->SetDepthScale(depthScale);
   cones->SetInvertInput(cl.Has("--height"));
   cones->SetNormalizeRange(cl.Has("--normalize"));
+  cones->SetUseNoDataValue(noData.Use);
+  cones->SetNoDataValue(noData.Value);
+  cones->SetUseInputNoDataValue(noData.UseFileValue);
   cones->SetMemoryBudget(static_cast<vtkTypeInt64>(budget * 1073741824.0));
   cones->SetBorderMode(border == "wrap" ? 1 : 0);
   cones->SetConeType(
@@ -259,6 +265,7 @@ int RunConeCommand(const std::vector<std::string>& args)
     std::cerr << "mesolight cone: could not write " << out << "\n";
     return 1;
   }
+  ReportFileNoDataValue(in, !noData.Use && noData.UseFileValue);
   int dims[3];
   cones->GetOutput()->GetDimensions(dims);
   std::cout << "wrote " << out << " (" << dims[0] << "x" << dims[1] << " " << type << " cone map, "

@@ -8,6 +8,7 @@
 #include "VTKMessage.h"
 #include "vtkReliefTextureFilter.h"
 
+#include "vtkCellData.h"
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
@@ -72,23 +73,29 @@ int vtkConeMapFilter::Execute(
 {
   vtkImageData* input = vtkImageData::GetData(inputVector[0]);
   vtkImageData* output = vtkImageData::GetData(outputVector);
-  if (!input || input->GetNumberOfPoints() == 0 || !input->GetPointData()->GetScalars())
+  // Point scalars, or the cells ParaView's GDAL Raster Reader gives the pixels as (the relief
+  // filter reads those at their corners).
+  vtkDataArray* scalars = input ? input->GetPointData()->GetScalars() : nullptr;
+  if (!input || input->GetNumberOfPoints() == 0 ||
+    (!scalars && !input->GetCellData()->GetScalars()))
   {
-    vtkErrorMacro(<< "No input image (or no scalars) to make a cone map of.");
+    vtkErrorMacro(<< "No input image (or no point or cell scalars) to make a cone map of.");
     return 0;
   }
+  // A relief texture given as input keeps its depth channel; anything else is baked exactly as
+  // the relief filter bakes it (input conversion, NaN checks, no data).
+  const bool isReliefTexture = scalars && scalars->GetNumberOfComponents() == 4 &&
+    input->GetFieldData()->GetArray("MesolightDepthScale");
 
   {
     // Per texel: the relief bake (unless given), depths and cone ratios (float), the cell bounds
     // (double) and tile pyramid of the cone search, and the RGBA float output.
-    const bool bakes = !(input->GetPointData()->GetScalars()->GetNumberOfComponents() == 4 &&
-      input->GetFieldData()->GetArray("MesolightDepthScale"));
     int inputDims[3];
     input->GetDimensions(inputDims);
     const std::string memory = mesolight::CheckMemoryBudget(
       "A " + std::to_string(inputDims[0]) + " x " + std::to_string(inputDims[1]) + " cone map",
       static_cast<std::uint64_t>(input->GetNumberOfPoints()) *
-        ((bakes ? 16 : 0) + 4 + 4 + 8 + 16 + 16),
+        ((isReliefTexture ? 0 : 16) + 4 + 4 + 8 + 16 + 16),
       this->MemoryBudget);
     if (!memory.empty())
     {
@@ -96,11 +103,8 @@ int vtkConeMapFilter::Execute(
       return 0;
     }
   }
-  // Normals and depth exactly as the relief filter makes them (input conversion, NaN checks);
-  // a relief texture given as input keeps its depth channel.
   vtkSmartPointer<vtkImageData> relief;
-  if (input->GetPointData()->GetScalars()->GetNumberOfComponents() == 4 &&
-    input->GetFieldData()->GetArray("MesolightDepthScale"))
+  if (isReliefTexture)
   {
     relief = input;
   }
@@ -112,6 +116,9 @@ int vtkConeMapFilter::Execute(
     bake->SetBorderMode(this->BorderMode);
     bake->SetInvertInput(this->InvertInput);
     bake->SetNormalizeRange(this->NormalizeRange);
+    bake->SetNoDataValue(this->NoDataValue);
+    bake->SetUseNoDataValue(this->UseNoDataValue);
+    bake->SetUseInputNoDataValue(this->UseInputNoDataValue);
     bake->SetMemoryBudget(this->MemoryBudget);
     struct Forward : public vtkCommand
     {
@@ -218,5 +225,8 @@ void vtkConeMapFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "BorderMode: " << this->BorderMode << "\n";
   os << indent << "InvertInput: " << (this->InvertInput ? "On" : "Off") << "\n";
   os << indent << "NormalizeRange: " << (this->NormalizeRange ? "On" : "Off") << "\n";
+  os << indent << "NoDataValue: " << this->NoDataValue << "\n";
+  os << indent << "UseNoDataValue: " << (this->UseNoDataValue ? "On" : "Off") << "\n";
+  os << indent << "UseInputNoDataValue: " << (this->UseInputNoDataValue ? "On" : "Off") << "\n";
   os << indent << "MemoryBudget: " << this->MemoryBudget << "\n";
 }

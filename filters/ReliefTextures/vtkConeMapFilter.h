@@ -12,8 +12,9 @@
  * filters/ReliefTextures/core/ConeMaps.h for the definitions and the bound. Computed with
  * vtkSMPTools.
  *
- * Input: a depth map, read exactly as vtkReliefTextureFilter reads it (the same options), or a
- * relief texture (4 components: depth in A).
+ * Input: a depth map, read exactly as vtkReliefTextureFilter reads it (the same options: heights,
+ * elevations in metres and their no-data value, pixels given as cells by ParaView's GDAL Raster
+ * Reader), or a relief texture (4 components and "MesolightDepthScale": depth in A, kept).
  * Output packings:
  *  - Float (default): float RGBA, R,G = normal x, y packed (n+1)/2, B = cone ratio, A = depth;
  *  - Ratio8Bit: the cone ratio c stored as floor(255 c / (1 + c)) in 8 bits (the layout of
@@ -69,6 +70,14 @@ public:
   vtkSetMacro(NormalizeRange, bool);
   vtkGetMacro(NormalizeRange, bool);
   vtkBooleanMacro(NormalizeRange, bool);
+  vtkSetMacro(NoDataValue, double);
+  vtkGetMacro(NoDataValue, double);
+  vtkSetMacro(UseNoDataValue, bool);
+  vtkGetMacro(UseNoDataValue, bool);
+  vtkBooleanMacro(UseNoDataValue, bool);
+  vtkSetMacro(UseInputNoDataValue, bool);
+  vtkGetMacro(UseInputNoDataValue, bool);
+  vtkBooleanMacro(UseInputNoDataValue, bool);
   ///@}
 
   ///@{
@@ -97,6 +106,9 @@ protected:
   int BorderMode = 0;
   bool InvertInput = false;
   bool NormalizeRange = false;
+  double NoDataValue = 0.0;
+  bool UseNoDataValue = false;
+  bool UseInputNoDataValue = true;
   vtkTypeInt64 MemoryBudget = 0;
 
 private:

@@ -36,20 +36,7 @@ endif ()
 
 # `--no-data`: a map in metres (16 and 64 m) with holes at -9999 (the no-data value) is drawn,
 # with it, as the same map with the holes at its lowest ground, 16 m; without it, otherwise.
-function (oiio)
-  execute_process(COMMAND "${OIIOTOOL}" ${ARGN} RESULT_VARIABLE rc ERROR_VARIABLE err)
-  if (NOT rc EQUAL 0)
-    message(FATAL_ERROR "oiiotool ${ARGN}: ${err}")
-  endif ()
-endfunction ()
-oiio(--pattern checker:width=4:height=4:color1=64:color2=16 64x64 1 -d float
-  -o "${WORK}/metres.tif")
-oiio(--pattern checker:width=16:height=16:color1=1:color2=0 64x64 1 -d float -o "${WORK}/has.tif")
-oiio("${WORK}/metres.tif" "${WORK}/has.tif" --mul -d float -o "${WORK}/kept.tif")
-oiio("${WORK}/has.tif" --subc 1 --mulc 9999 "${WORK}/kept.tif" --add -d float
-  -o "${WORK}/holes.tif")
-oiio("${WORK}/has.tif" --subc 1 --mulc -16 "${WORK}/kept.tif" --add -d float
-  -o "${WORK}/filled.tif")
+cli_elevation_maps()
 cli_run(TRUE ${scene} --normalize --depth-file "${WORK}/holes.tif" --no-data -9999
   --out "${WORK}/holes-no-data.png")
 cli_run(TRUE ${scene} --normalize --depth-file "${WORK}/filled.tif" --out "${WORK}/filled.png")
@@ -69,12 +56,6 @@ cli_expect_error(2 "option --no-data: 'deep' is not a number"
 # A GeoTIFF names its no-data value (GDAL_NODATA): the same holes drawn without --no-data are the
 # lowest ground, as with `--no-data -9999`, and the tool says so; `--no-data none` draws them as
 # elevations again.
-find_program(PYTHON3 NAMES python3 REQUIRED)
-execute_process(COMMAND "${PYTHON3}" "${CMAKE_CURRENT_LIST_DIR}/AddGdalNoData.py"
-  "${WORK}/holes.tif" "${WORK}/holes-tagged.tif" -9999 RESULT_VARIABLE rc ERROR_VARIABLE err)
-if (NOT rc EQUAL 0)
-  message(FATAL_ERROR "AddGdalNoData.py: ${err}")
-endif ()
 cli_expect(0 "names the no-data value -9999 (GDAL_NODATA)"
   ${scene} --normalize --depth-file "${WORK}/holes-tagged.tif" --out "${WORK}/tagged.png")
 file(SHA256 "${WORK}/tagged.png" tagged)
@@ -90,8 +71,6 @@ endif ()
 
 # Signed 16-bit elevations (64 and 16 m) are measurements: refused without --normalize (as a
 # fraction of 32767 they would draw a flat wall), drawn as the float map with it.
-# OpenImageIO writes floats to int16 as fractions of 32767: 1 / 32767 keeps the metres.
-oiio("${WORK}/metres.tif" --mulc 3.0518509475997192e-05 -d int16 -o "${WORK}/metres-int16.tif")
 cli_expect_error(1 "signed integers"
   ${scene} --depth-file "${WORK}/metres-int16.tif" --out "${WORK}/never.png")
 cli_run(TRUE ${scene} --normalize --depth-file "${WORK}/metres-int16.tif"

@@ -98,3 +98,36 @@ function (exr_stat_milli image what out)
   math(EXPR milli "${CMAKE_MATCH_1} * 1000 + 1${fraction} - 1000")
   set(${out} ${milli} PARENT_SCOPE)
 endfunction ()
+
+# cli_elevation_maps(): elevation maps (DEMs) in ${WORK}, 64 x 64, written with OIIOTOOL:
+#   metres.tif        a 16 / 64 m checker (float);
+#   holes.tif         the same with holes at -9999 (the no-data value) in a coarser checker;
+#   filled.tif        the same with the holes at the lowest ground, 16 m;
+#   holes-tagged.tif  holes.tif naming -9999 as its no-data value (GDAL_NODATA), as GDAL writes;
+#   metres-int16.tif  metres.tif as signed 16-bit metres.
+function (cli_oiiotool)
+  execute_process(COMMAND "${OIIOTOOL}" ${ARGN} RESULT_VARIABLE rc ERROR_VARIABLE err)
+  if (NOT rc EQUAL 0)
+    message(FATAL_ERROR "oiiotool ${ARGN}: ${err}")
+  endif ()
+endfunction ()
+function (cli_elevation_maps)
+  cli_oiiotool(--pattern checker:width=4:height=4:color1=64:color2=16 64x64 1 -d float
+    -o "${WORK}/metres.tif")
+  cli_oiiotool(--pattern checker:width=16:height=16:color1=1:color2=0 64x64 1 -d float
+    -o "${WORK}/has.tif")
+  cli_oiiotool("${WORK}/metres.tif" "${WORK}/has.tif" --mul -d float -o "${WORK}/kept.tif")
+  cli_oiiotool("${WORK}/has.tif" --subc 1 --mulc 9999 "${WORK}/kept.tif" --add -d float
+    -o "${WORK}/holes.tif")
+  cli_oiiotool("${WORK}/has.tif" --subc 1 --mulc -16 "${WORK}/kept.tif" --add -d float
+    -o "${WORK}/filled.tif")
+  find_program(PYTHON3 NAMES python3 REQUIRED)
+  execute_process(COMMAND "${PYTHON3}" "${CMAKE_CURRENT_FUNCTION_LIST_DIR}/AddGdalNoData.py"
+    "${WORK}/holes.tif" "${WORK}/holes-tagged.tif" -9999 RESULT_VARIABLE rc ERROR_VARIABLE err)
+  if (NOT rc EQUAL 0)
+    message(FATAL_ERROR "AddGdalNoData.py: ${err}")
+  endif ()
+  # OpenImageIO writes floats to int16 as fractions of 32767: 1 / 32767 keeps the metres.
+  cli_oiiotool("${WORK}/metres.tif" --mulc 3.0518509475997192e-05 -d int16
+    -o "${WORK}/metres-int16.tif")
+endfunction ()

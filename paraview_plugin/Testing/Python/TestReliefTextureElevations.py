@@ -8,7 +8,8 @@ computed here from the elevations. Must fail: the same without Use No Data Value
 part in the range and every elevation lies within 1.3% of the top). The same file with GDAL's
 GDAL_NODATA tag needs neither Use No Data Value nor the value (Use Input No Data Value, the
 default); with that turned off it must fail the same way. So must the file through GDAL Raster
-Reader (pixels as cells, the no-data ones hidden), against the cells' corner means."""
+Reader (pixels as cells, the no-data ones hidden), against the cells' corner means. Cone Map
+reads both files with the same properties and must give the same depths."""
 import importlib.util
 import os
 import subprocess
@@ -139,6 +140,29 @@ print("GDAL Raster Reader, hidden cells as data: the deepest elevation at depth 
       % got[inside].max())
 check(got[inside].max() < 0.013,
       "with Use Input No Data Value off GDAL's hidden cells are elevations (the negative case)")
+
+# Cone Map reads a depth image as Relief Texture does, with the same properties: the tagged DEM
+# from either reader gives the depths above in its A channel (the cones are computed from them).
+cones = pvs.MesolightConeMap(Input=pvs.MesolightImageReader(FileName=tagged), InvertInput=1,
+                             NormalizeRange=1)
+cones.UpdatePipeline()
+got = vtk_to_numpy(servermanager.Fetch(cones).GetPointData().GetScalars())[:, 3].reshape(H, W)
+error = np.abs(got - expected).max()
+print("Cone Map, Mesolight Image Reader: largest depth difference %.2e" % error)
+check(error < 1e-6, "Cone Map applies the file's no-data value (max diff %.2e)" % error)
+cones = pvs.MesolightConeMap(Input=gdal, InvertInput=1, NormalizeRange=1)
+cones.UpdatePipeline()
+got = vtk_to_numpy(servermanager.Fetch(cones).GetPointData().GetScalars())[:, 3]
+check(got.size == (H + 1) * (W + 1), "Cone Map reads GDAL's cells (%d texels)" % got.size)
+if got.size == (H + 1) * (W + 1):
+    error = np.abs(got.reshape(H + 1, W + 1) - expected_corners).max()
+    print("Cone Map, GDAL Raster Reader: largest depth difference %.2e" % error)
+    check(error < 1e-6, "Cone Map: the cells' corner means (max diff %.2e)" % error)
+cones.UseInputNoDataValue = 0
+cones.UpdatePipeline()
+got = vtk_to_numpy(servermanager.Fetch(cones).GetPointData().GetScalars())[:, 3]
+check(got.size == (H + 1) * (W + 1) and got[inside].max() < 0.013,
+      "Cone Map with Use Input No Data Value off: hidden cells are elevations (the negative case)")
 
 if failures:
     print("FAILED: " + "; ".join(failures))

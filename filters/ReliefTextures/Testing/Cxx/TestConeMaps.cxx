@@ -9,14 +9,20 @@
 #include "HeightFieldTracer.h"
 #include "vtkConeMapFilter.h"
 #include "vtkProceduralReliefSource.h"
+#include "vtkReliefTextureFilter.h"
 
+#include "vtkCellData.h"
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
+#include "vtkDataSetAttributes.h"
+#include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
+#include "vtkShortArray.h"
 #include "vtkStringArray.h"
+#include "vtkUnsignedCharArray.h"
 
 #include "MesolightTestUtilities.h"
 
@@ -769,4 +775,119 @@ TEST(vtkConeMapFilter, MemoryBudgetRefusesBeforeAllocating)
   filter->Update();
   EXPECT_TRUE(capture->Errors.empty()) << capture->AllErrors();
   EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), 64 * 64);
+}
+
+// A depth map is read exactly as vtkReliefTextureFilter reads it, with the same options: an int16
+// elevation map with holes at the no-data value its file names, and the same raster as ParaView's
+// GDAL Raster Reader gives it (pixels as cells, the holes hidden).
+TEST(vtkConeMapFilter, ReadsElevationMapsAsTheReliefFilterDoes)
+{
+  const int w = 24;
+  const int h = 20;
+  auto elevation = [](int i, int j) -> short
+  {
+    if ((i - 6) * (i - 6) + (j - 5) * (j - 5) < 9)
+    {
+      return -32768; // no data
+    }
+    return static_cast<short>(140 + 12 * i + 7 * ((i * j) % 5));
+  };
+  auto withNoDataValue = [](vtkImageData* image)
+  {
+    vtkNew<vtkDoubleArray> noData;
+    noData->SetName("MesolightNoDataValue");
+    noData->InsertNextValue(-32768.0);
+    image->GetFieldData()->AddArray(noData);
+  };
+  vtkNew<vtkImageData> dem; // the Mesolight Image Reader's image: pixels as points
+  dem->SetDimensions(w, h, 1);
+  vtkNew<vtkShortArray> points;
+  points->SetName("Elevation");
+  for (int j = 0; j < h; ++j)
+  {
+    for (int i = 0; i < w; ++i)
+    {
+      points->InsertNextValue(elevation(i, j));
+    }
+  }
+  dem->GetPointData()->SetScalars(points);
+  withNoDataValue(dem);
+
+  vtkNew<vtkReliefTextureFilter> bake;
+  bake->SetInputData(dem);
+  bake->InvertInputOn();
+  bake->NormalizeRangeOn();
+  bake->Update();
+  ASSERT_EQ(bake->GetNumberOfNoDataTexels(), 25);
+  vtkDataArray* relief = bake->GetOutput()->GetPointData()->GetScalars();
+
+  vtkNew<vtkConeMapFilter> cones;
+  vtkNew<mesolight_test::MessageCapture> capture;
+  capture->Watch(cones);
+  cones->SetInputData(dem);
+  cones->InvertInputOn();
+  cones->NormalizeRangeOn();
+  cones->Update();
+  ASSERT_TRUE(capture->Errors.empty()) << capture->AllErrors();
+  vtkDataArray* packed = cones->GetOutput()->GetPointData()->GetScalars();
+  ASSERT_NE(packed, nullptr);
+  ASSERT_EQ(packed->GetNumberOfTuples(), w * h);
+  for (vtkIdType k = 0; k < w * h; ++k)
+  {
+    ASSERT_EQ(packed->GetComponent(k, 3), relief->GetComponent(k, 3)) << "texel " << k;
+  }
+  // The holes lie at the lowest ground (depth 1), not 32 km below the map's top.
+  EXPECT_EQ(packed->GetComponent(5 * w + 6, 3), 1.0);
+
+  // Negative cases. The file's value off: the holes are elevations, and the rest is squeezed
+  // into a sliver at the top.
+  cones->UseInputNoDataValueOff();
+  cones->Update();
+  EXPECT_LT(cones->GetOutput()->GetPointData()->GetScalars()->GetComponent(10 * w + 20, 3), 0.01);
+  // Signed metres without NormalizeRange: refused, naming the option.
+  cones->UseInputNoDataValueOn();
+  cones->NormalizeRangeOff();
+  capture->Errors.clear();
+  cones->Update();
+  EXPECT_TRUE(capture->HasError("NormalizeRange")) << capture->AllErrors();
+  EXPECT_EQ(cones->GetOutput()->GetNumberOfPoints(), 0);
+  // A value set here wins over the file's: 0 is in no texel, so -32768 is terrain again.
+  cones->NormalizeRangeOn();
+  cones->UseNoDataValueOn();
+  cones->SetNoDataValue(0.0);
+  capture->Errors.clear();
+  cones->Update();
+  EXPECT_TRUE(capture->Errors.empty()) << capture->AllErrors();
+  EXPECT_LT(cones->GetOutput()->GetPointData()->GetScalars()->GetComponent(10 * w + 20, 3), 0.01);
+
+  // The same raster as cells of a grid one point larger, the holes hidden: the cone map is that
+  // of the relief filter's corner means, not refused for want of point scalars.
+  vtkNew<vtkImageData> cellsRaster;
+  cellsRaster->SetDimensions(w + 1, h + 1, 1);
+  vtkNew<vtkShortArray> cells;
+  cells->DeepCopy(points);
+  cellsRaster->GetCellData()->SetScalars(cells);
+  cellsRaster->AllocateCellGhostArray();
+  for (vtkIdType k = 0; k < w * h; ++k)
+  {
+    if (cells->GetValue(k) == -32768)
+    {
+      cellsRaster->GetCellGhostArray()->SetValue(k, vtkDataSetAttributes::HIDDENCELL);
+    }
+  }
+  bake->SetInputData(cellsRaster);
+  bake->Update();
+  cones->SetInputData(cellsRaster);
+  cones->UseNoDataValueOff();
+  capture->Errors.clear();
+  cones->Update();
+  ASSERT_TRUE(capture->Errors.empty()) << capture->AllErrors();
+  relief = bake->GetOutput()->GetPointData()->GetScalars();
+  packed = cones->GetOutput()->GetPointData()->GetScalars();
+  ASSERT_EQ(packed->GetNumberOfTuples(), (w + 1) * (h + 1));
+  for (vtkIdType k = 0; k < (w + 1) * (h + 1); ++k)
+  {
+    ASSERT_EQ(packed->GetComponent(k, 3), relief->GetComponent(k, 3)) << "texel " << k;
+  }
+  EXPECT_GT(bake->GetNumberOfNoDataTexels(), 0);
 }
