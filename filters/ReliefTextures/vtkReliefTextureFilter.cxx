@@ -5,6 +5,7 @@
 #include "vtkWholeExtentRequest.h"
 
 #include "MemoryBudget.h"
+#include "RasterCells.h"
 #include "ScalarConversion.h"
 #include "SobelNormals.h"
 
@@ -88,41 +89,6 @@ vtkIdType MarkNoData(const T* data, vtkIdType n, int nComp, double noData, std::
     count += mask[k];
   }
   return count;
-}
-
-/// Cell values (cw x ch) to the (cw + 1) x (ch + 1) points at their corners: each point the mean
-/// of the cells around it with data (as Cell Data to Point Data, without the cells that have
-/// none); a point with no such cell has no data. `cellNoData` may be empty (every cell has data).
-void CellsToCorners(const std::vector<double>& cellValue, const std::vector<char>& cellNoData,
-  int cw, int ch, std::vector<double>& value, std::vector<char>& noData)
-{
-  const int w = cw + 1;
-  const int h = ch + 1;
-  value.assign(static_cast<size_t>(w) * h, 0.0);
-  noData.assign(static_cast<size_t>(w) * h, 0);
-  for (int j = 0; j < h; ++j)
-  {
-    for (int i = 0; i < w; ++i)
-    {
-      double sum = 0.0;
-      int count = 0;
-      for (int cj = std::max(0, j - 1); cj <= std::min(ch - 1, j); ++cj)
-      {
-        for (int ci = std::max(0, i - 1); ci <= std::min(cw - 1, i); ++ci)
-        {
-          const size_t c = static_cast<size_t>(cj) * cw + ci;
-          if (cellNoData.empty() || !cellNoData[c])
-          {
-            sum += cellValue[c];
-            ++count;
-          }
-        }
-      }
-      const size_t k = static_cast<size_t>(j) * w + i;
-      value[k] = count > 0 ? sum / count : 0.0;
-      noData[k] = count == 0;
-    }
-  }
 }
 
 /// Step 1 of the filter: the values (ToUnitDepth) and, when asked, the texels without data.
@@ -220,7 +186,7 @@ int vtkReliefTextureFilter::Execute(
   // ParaView's GDAL Raster Reader gives a raster's pixels as the cells of a grid one point larger
   // (and hides the cells without data). The extent downstream is set before any data exist,
   // when nothing says the pixels will be cells, so the texels stay the points: each the mean of
-  // the cells around it (CellsToCorners).
+  // the cells around it (mesolight::CellsToCorners, core/RasterCells.h).
   int association = vtkDataObject::FIELD_ASSOCIATION_POINTS;
   vtkDataArray* scalars = this->GetInputArrayToProcess(0, inputVector, association);
   bool cells = scalars && association == vtkDataObject::FIELD_ASSOCIATION_CELLS;
@@ -310,7 +276,7 @@ int vtkReliefTextureFilter::Execute(
     std::vector<char> cellNoData;
     cellValue.swap(value);
     cellNoData.swap(noData);
-    CellsToCorners(cellValue, cellNoData, w - 1, h - 1, value, noData);
+    mesolight::CellsToCorners(cellValue, cellNoData, w - 1, h - 1, value, noData);
     noDataCount = static_cast<vtkIdType>(std::count(noData.begin(), noData.end(), 1));
   }
   this->AppliedNoData = useNoData || noDataCount > 0;
