@@ -6,6 +6,7 @@
 #include "Timing.h"
 
 #include "EnvironmentMaps.h"
+#include "SrtmHeightFile.h"
 #include "vtkConeMapFilter.h"
 #include "vtkLightProbeToLatLong.h"
 #include "vtkOIIOImageReader.h"
@@ -157,8 +158,8 @@ void ReportFileNoDataValue(const std::string& file, bool applied)
   if (reader->GetHasNoDataValue())
   {
     std::cout << file << " names the no-data value " << reader->GetNoDataValue()
-              << " (GDAL_NODATA): its texels are drawn as the lowest ground (--no-data none: "
-                 "as elevations)\n";
+              << (IsSrtmHeightFileName(file) ? " (SRTM voids)" : " (GDAL_NODATA)")
+              << ": its texels are drawn as the lowest ground (--no-data none: as elevations)\n";
   }
 }
 

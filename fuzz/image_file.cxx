@@ -3,8 +3,9 @@
 // (filters/ImageIO/core/ImageFile, behind vtkOIIOImageReader and so every image `mesolight`
 // reads: depth maps, photographs, environments, masks).
 //
-// Input: one byte choosing the file's extension (.png, .exr, .hdr, .pfm, .tif, .jpg, or none,
-// which makes OpenImageIO try every reader), then the file's bytes, written to the scratch
+// Input: one byte choosing the file's extension (.png, .exr, .hdr, .pfm, .tif, .jpg, none, which
+// makes OpenImageIO try every reader, or .hgt, an SRTM height tile read without it; the corpus
+// names them '0' to '7'), then the file's bytes, written to the scratch
 // directory. A header accepted must describe 1 to 4 channels of a positive size within the
 // 64 MiB budget; its pixels are then read into a buffer of exactly that size (AddressSanitizer
 // catches a write past it); a refusal (ImageFileError, the one exception bad input may raise)
@@ -21,7 +22,7 @@
 
 namespace
 {
-const char* const Extensions[] = { ".png", ".exr", ".hdr", ".pfm", ".tif", ".jpg", "" };
+const char* const Extensions[] = { ".png", ".exr", ".hdr", ".pfm", ".tif", ".jpg", "", ".hgt" };
 constexpr std::int64_t Budget = 64 << 20;
 
 void CheckRefusal(const mesolight::ImageFileError& error, const std::string& path)

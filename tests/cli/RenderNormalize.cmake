@@ -81,3 +81,33 @@ file(SHA256 "${WORK}/metres-float.png" float)
 if (NOT int16 STREQUAL float)
   message(FATAL_ERROR "the int16 map in metres drew another relief than the float one")
 endif ()
+
+# SRTM height tiles (.hgt, big-endian int16 metres, voids at -32768), which OpenImageIO does not
+# read: drawn with --normalize alone, the voids as the lowest ground (the same tile with those
+# texels at its lowest height draws the same PNG), and the tool says which value it applied;
+# refused without --normalize, as signed metres are.
+find_program(PYTHON3 NAMES python3 REQUIRED)
+foreach (mode IN ITEMS voids filled)
+  execute_process(COMMAND "${PYTHON3}" "${CMAKE_CURRENT_LIST_DIR}/WriteSrtmTile.py"
+    "${WORK}/N46E007-${mode}.hgt" 121 ${mode} RESULT_VARIABLE rc ERROR_VARIABLE err)
+  if (NOT rc EQUAL 0)
+    message(FATAL_ERROR "WriteSrtmTile.py: ${err}")
+  endif ()
+endforeach ()
+cli_expect(0 "names the no-data value -32768 (SRTM voids)"
+  ${scene} --normalize --depth-file "${WORK}/N46E007-voids.hgt" --out "${WORK}/srtm-voids.png")
+cli_run(TRUE ${scene} --normalize --depth-file "${WORK}/N46E007-filled.hgt"
+  --out "${WORK}/srtm-filled.png")
+cli_run(TRUE ${scene} --normalize --depth-file "${WORK}/N46E007-voids.hgt" --no-data none
+  --out "${WORK}/srtm-voids-as-data.png")
+file(SHA256 "${WORK}/srtm-voids.png" srtm_voids)
+file(SHA256 "${WORK}/srtm-filled.png" srtm_filled)
+file(SHA256 "${WORK}/srtm-voids-as-data.png" srtm_voids_as_data)
+if (NOT srtm_voids STREQUAL srtm_filled)
+  message(FATAL_ERROR "an SRTM tile's voids were not drawn as its lowest ground")
+endif ()
+if (srtm_voids_as_data STREQUAL srtm_filled)
+  message(FATAL_ERROR "--no-data none still drew the SRTM voids as the lowest ground")
+endif ()
+cli_expect_error(1 "signed integers"
+  ${scene} --depth-file "${WORK}/N46E007-voids.hgt" --out "${WORK}/never.png")

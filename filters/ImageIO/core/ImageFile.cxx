@@ -3,6 +3,7 @@
 
 #include "MemoryBudget.h"
 #include "OneLineMessage.h"
+#include "SrtmHeightFile.h"
 #include "TiffNoDataTag.h"
 
 #include <OpenImageIO/imageio.h>
@@ -293,6 +294,29 @@ bool ProgressTrampoline(void* opaque, float portionDone)
 } // namespace
 
 //------------------------------------------------------------------------------
+// An SRTM tile's header is its size (SrtmHeightFile.h): N x N signed 16-bit metres, voids at
+// -32768, which is its no-data value as a GeoTIFF's GDAL_NODATA is.
+ImageFileInfo ReadSrtmTileInfo(const std::string& path, std::int64_t memoryBudget)
+{
+  std::error_code ec;
+  const std::uint64_t bytes = fs::file_size(fs::path(path), ec);
+  const int side = ec ? 0 : SrtmTileSide(bytes);
+  if (side == 0)
+  {
+    Refuse(ImageFileStatus::FileFormat,
+      "Cannot read image '" + path + "': an SRTM height tile ('.hgt') holds N x N big-endian " +
+        "16-bit heights, 2 N^2 bytes (2884802 for 1201 x 1201, 25934402 for 3601 x 3601); this " +
+        "file has " + std::to_string(bytes) + " bytes.");
+  }
+  ImageFileInfo info =
+    CheckImageHeader(path, side, side, 1, 1, ImageSampleType::Int16, memoryBudget);
+  info.FormatName = "srtm-hgt";
+  info.HasNoDataValue = true;
+  info.NoDataValue = SrtmVoidHeight;
+  return info;
+}
+
+//------------------------------------------------------------------------------
 std::size_t ImageFileInfo::SampleSize() const
 {
   switch (this->Type)
@@ -378,6 +402,10 @@ ImageFileInfo ReadImageFileInfo(const std::string& path, std::int64_t memoryBudg
   {
     Refuse(ImageFileStatus::CannotOpen, prefix + "the file cannot be opened (permissions?).");
   }
+  if (IsSrtmHeightFileName(path))
+  {
+    return ReadSrtmTileInfo(path, memoryBudget);
+  }
   auto in = Open(path, memoryBudget);
   ImageFileInfo info;
   try
@@ -406,6 +434,27 @@ ImageFileInfo ReadImageFileInfo(const std::string& path, std::int64_t memoryBudg
 bool ReadImageFilePixels(const std::string& path, const ImageFileInfo& info, void* pixels,
   const std::function<bool(float)>& progress)
 {
+  if (IsSrtmHeightFileName(path))
+  {
+    const ImageFileInfo now = ReadSrtmTileInfo(path, 0);
+    if (now.Width != info.Width || now.Height != info.Height || now.Type != info.Type ||
+      now.Channels != info.Channels || !pixels)
+    {
+      Refuse(ImageFileStatus::FileFormat,
+        "Cannot read image '" + path + "': the file changed while it was read.");
+    }
+    std::string error;
+    if (!ReadSrtmTile(path, info.Width, static_cast<std::int16_t*>(pixels), error, progress))
+    {
+      if (error.empty())
+      {
+        return false; // stopped
+      }
+      Refuse(ImageFileStatus::FileFormat,
+        "Cannot read the pixels of image '" + path + "': " + error + ".");
+    }
+    return true;
+  }
   auto in = Open(path, 0);
   // The file may have changed since its header was read: never write past `pixels`.
   bool changed = true;
@@ -468,6 +517,10 @@ bool CanReadImageFile(const std::string& path)
   if (!fs::is_regular_file(fs::path(path), ec))
   {
     return false;
+  }
+  if (IsSrtmHeightFileName(path))
+  {
+    return SrtmTileSide(static_cast<std::uint64_t>(fs::file_size(fs::path(path), ec))) > 0 && !ec;
   }
   const OIIO::ImageSpec config = ReadConfig();
   auto in = OIIO::ImageInput::open(path, &config);

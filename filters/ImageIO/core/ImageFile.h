@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /**
  * @file ImageFile.h
- * @brief Opening an image file through OpenImageIO and refusing bad ones (plain C++17).
+ * @brief Opening an image file through OpenImageIO (SRTM height tiles, `.hgt`, without it) and
+ * refusing bad ones (plain C++17).
  *
  * What vtkOIIOImageReader (and so every image the `mesolight` tool reads: depth maps,
  * photographs, environments, masks) does before and while reading pixels, without VTK types, so
@@ -112,7 +113,17 @@ MESOLIGHTIMAGEIO_EXPORT ImageFileInfo ReadImageFileInfo(
 MESOLIGHTIMAGEIO_EXPORT bool ReadImageFilePixels(const std::string& path, const ImageFileInfo& info,
   void* pixels, const std::function<bool(float)>& progress = {});
 
-/** True when `path` is a regular file OpenImageIO opens as a non-empty image. */
+/**
+ * The header of an SRTM height tile (`.hgt`, SrtmHeightFile.h), which ReadImageFileInfo reads for
+ * such a file instead of OpenImageIO: N x N, one Int16 channel, FormatName "srtm-hgt", no-data
+ * value -32768. Throws ImageFileError (FileFormat) when the size is not 2 N^2 bytes, and
+ * (TooLarge) beyond `memoryBudget`.
+ */
+MESOLIGHTIMAGEIO_EXPORT ImageFileInfo ReadSrtmTileInfo(
+  const std::string& path, std::int64_t memoryBudget);
+
+/** True when `path` is a regular file OpenImageIO opens as a non-empty image (or an SRTM height
+ *  tile of a valid size). */
 MESOLIGHTIMAGEIO_EXPORT bool CanReadImageFile(const std::string& path);
 
 /** The number of NaN or infinite values among `count` floats. */

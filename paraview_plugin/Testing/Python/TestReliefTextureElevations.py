@@ -9,7 +9,8 @@ part in the range and every elevation lies within 1.3% of the top). The same fil
 GDAL_NODATA tag needs neither Use No Data Value nor the value (Use Input No Data Value, the
 default); with that turned off it must fail the same way. So must the file through GDAL Raster
 Reader (pixels as cells, the no-data ones hidden), against the cells' corner means. Cone Map
-reads both files with the same properties and must give the same depths."""
+reads both files with the same properties and must give the same depths. So must the DEM as an
+SRTM height tile (.hgt), opened with File > Open."""
 import importlib.util
 import os
 import subprocess
@@ -163,6 +164,34 @@ cones.UpdatePipeline()
 got = vtk_to_numpy(servermanager.Fetch(cones).GetPointData().GetScalars())[:, 3]
 check(got.size == (H + 1) * (W + 1) and got[inside].max() < 0.013,
       "Cone Map with Use Input No Data Value off: hidden cells are elevations (the negative case)")
+
+# An SRTM height tile (.hgt: big-endian int16, the northernmost row first, voids at -32768), which
+# neither OpenImageIO nor ParaView's own readers read: File > Open offers the Mesolight Image Reader,
+# and Relief Texture's defaults give the depths above (the voids, and the rows padding the DEM to
+# a square tile, at depth 1).
+tile = np.full((W, W), -32768, dtype=np.int16)  # VTK order: the padding is the south rows
+tile[W - H:, :] = stored.astype(np.int16)
+tile_path = os.path.join(out, "N49E006.hgt")
+tile[::-1].astype(">i2").tofile(tile_path)
+srtm = pvs.OpenDataFile(tile_path)
+check(srtm is not None and srtm.GetXMLName() == "MesolightImageReader",
+      "File > Open reads a .hgt tile with the Mesolight Image Reader (got %s)"
+      % (srtm.GetXMLName() if srtm else None))
+if srtm is not None:
+    relief = pvs.MesolightReliefTexture(Input=srtm, InvertInput=1, NormalizeRange=1)
+    relief.UpdatePipeline()
+    got = vtk_to_numpy(servermanager.Fetch(relief).GetPointData().GetScalars())[:, 3]
+    check(got.size == W * W, "one texel per height of the tile (%d)" % got.size)
+    if got.size == W * W:
+        got = got.reshape(W, W)
+        error = max(np.abs(got[W - H:, :] - expected).max(), np.abs(got[:W - H, :] - 1.0).max())
+        print("SRTM tile: largest depth difference %.2e" % error)
+        check(error < 1e-6, "the tile's heights and voids as the DEM's (max diff %.2e)" % error)
+    relief.UseInputNoDataValue = 0
+    relief.UpdatePipeline()
+    got = vtk_to_numpy(servermanager.Fetch(relief).GetPointData().GetScalars())[:, 3]
+    check(got.size == W * W and got.reshape(W, W)[W - H:, :][~outside].max() < 0.013,
+          "with Use Input No Data Value off the voids are elevations (the negative case)")
 
 if failures:
     print("FAILED: " + "; ".join(failures))

@@ -324,6 +324,56 @@ TEST(OIIOImageIO, GeoTiffNoDataValueComesWithTheImage)
   EXPECT_EQ(reader->GetOutput()->GetPointData()->GetScalars()->GetComponent(1, 0), 300.0);
 }
 
+TEST(OIIOImageIO, SrtmHeightTilesAreReadWithTheirVoids)
+{
+  // An SRTM tile (.hgt: N x N big-endian int16 metres, the northernmost row first, -32768 for
+  // voids), which OpenImageIO does not read: metres kept as VTK_SHORT, north at the top, and the
+  // voids' value passed on as the no-data value a GeoTIFF names.
+  const fs::path file = mesolight_test::TestDirectory() / "N00E000.hgt";
+  {
+    // 2 x 2: north row -32768, 300; south row 141, -5 (below sea level).
+    std::ofstream out(file, std::ios::binary);
+    const unsigned char bytes[8] = { 0x80, 0x00, 0x01, 0x2c, 0x00, 0x8d, 0xff, 0xfb };
+    out.write(reinterpret_cast<const char*>(bytes), 8);
+  }
+  vtkNew<vtkOIIOImageReader> reader;
+  EXPECT_TRUE(reader->CanReadFile(file.string().c_str()));
+  reader->SetFileName(file.string().c_str());
+  reader->Update();
+  ASSERT_EQ(reader->GetErrorCode(), vtkErrorCode::NoError);
+  vtkImageData* image = reader->GetOutput();
+  ASSERT_EQ(image->GetScalarType(), VTK_SHORT);
+  int dims[3];
+  image->GetDimensions(dims);
+  EXPECT_EQ(dims[0], 2);
+  EXPECT_EQ(dims[1], 2);
+  vtkDataArray* metres = image->GetPointData()->GetScalars();
+  EXPECT_EQ(metres->GetComponent(0, 0), 141.0); // VTK row 0: the south row
+  EXPECT_EQ(metres->GetComponent(1, 0), -5.0);
+  EXPECT_EQ(metres->GetComponent(2, 0), -32768.0);
+  EXPECT_EQ(metres->GetComponent(3, 0), 300.0);
+  EXPECT_TRUE(reader->GetHasNoDataValue());
+  EXPECT_EQ(reader->GetNoDataValue(), -32768.0);
+  vtkDataArray* noData = image->GetFieldData()->GetArray("MesolightNoDataValue");
+  ASSERT_NE(noData, nullptr);
+  EXPECT_EQ(noData->GetComponent(0, 0), -32768.0);
+
+  // A size that is no tile's: an error naming the sizes expected, no image.
+  {
+    std::ofstream out(file, std::ios::binary);
+    out.write("abc", 3);
+  }
+  vtkNew<mesolight_test::MessageCapture> capture;
+  capture->Watch(reader);
+  reader->Modified();
+  reader->Update();
+  EXPECT_NE(reader->GetErrorCode(), vtkErrorCode::NoError);
+  EXPECT_TRUE(capture->HasError("an SRTM height tile ('.hgt') holds N x N big-endian"))
+    << capture->AllErrors();
+  EXPECT_EQ(reader->GetOutput()->GetNumberOfPoints(), 0);
+  EXPECT_FALSE(reader->CanReadFile(file.string().c_str()));
+}
+
 TEST(OIIOImageIO, RowOrderBottomRowIsLastInFile)
 {
   const fs::path dir = mesolight_test::TestDirectory();
