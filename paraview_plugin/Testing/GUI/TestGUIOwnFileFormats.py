@@ -63,7 +63,8 @@ def run_order(view, depth_file, steps):
 @x._guarded
 def mesolight_reader_offered(extensions):
     """File > Open's file types: the Mesolight Image Reader claims the 8/16-bit formats beside
-    ParaView's own readers, so the reader dialog offers it for them (it gives point scalars)."""
+    ParaView's own readers, so the reader dialog offers it for them (it gives point scalars), and
+    SRTM height tiles (.hgt), which no other reader opens."""
     factory = pvs.servermanager.vtkSMProxyManager.GetProxyManager().GetReaderFactory()
     factory.UpdateAvailableReaders()
     types = factory.GetSupportedFileTypes(pvs.servermanager.ActiveConnection.Session).split(";;")
@@ -74,7 +75,7 @@ def mesolight_reader_offered(extensions):
 
 def main():
     own.write_files()
-    mesolight_reader_offered(["png", "jpg", "jpeg", "tif", "tiff", "exr", "hdr"])
+    mesolight_reader_offered(["png", "jpg", "jpeg", "tif", "tiff", "exr", "hdr", "hgt"])
     view = g.gui_view()
     readers = {}
     # Each format once, the orders alternating (the suite's time: about 13 s a run here).
