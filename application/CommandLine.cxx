@@ -297,6 +297,21 @@ bool CommandLine::GetDouble(
   return ParseNumber(name, text, low, high, value, error);
 }
 
+bool CommandLine::CheckVerticalExaggeration(const CommandLine& cl, std::string& error)
+{
+  if (!cl.Has("--normalize"))
+  {
+    error = "--vertical-exaggeration needs --normalize (elevations in metres)";
+    return false;
+  }
+  if (cl.Has("--depth-scale"))
+  {
+    error = "--vertical-exaggeration and --depth-scale: give one";
+    return false;
+  }
+  return true;
+}
+
 bool CommandLine::GetNoData(const std::string& name, NoDataOption& option, std::string& error) const
 {
   option = NoDataOption();

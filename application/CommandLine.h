@@ -81,6 +81,14 @@ public:
     "texels holding this value (e.g. -32768 in an int16 DEM; nan) have no data: left out of "
     "--normalize's range and drawn as the lowest ground. Default: the value a GeoTIFF names "
     "(GDAL_NODATA), if any; none: not even that one";
+  /** The help text of every command's --vertical-exaggeration. */
+  static constexpr const char* VerticalExaggerationHelp =
+    "a georeferenced elevation map (GeoTIFF, SRTM .hgt) at its true vertical scale times E, in "
+    "place of --depth-scale: the relief as deep, relative to its width, as the terrain is, times "
+    "E (needs --normalize)";
+  /** --vertical-exaggeration's companions: --normalize given, --depth-scale not; false with a
+   *  message otherwise. */
+  static bool CheckVerticalExaggeration(const CommandLine& cl, std::string& error);
   /**
    * Comma-separated lists ("512,1024"). Every item must be a number in [low, high] (whole for
    * GetIntList), and there must be at least one; false with a message naming the option and the

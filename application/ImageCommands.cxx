@@ -15,6 +15,7 @@
 #include "vtkUnitScale.h"
 
 #include <vtkDataArray.h>
+#include <vtkFieldData.h>
 #include <vtkFloatArray.h>
 #include <vtkImageData.h>
 #include <vtkNew.h>
@@ -24,7 +25,9 @@
 #include <algorithm>
 #include <cctype>
 #include <chrono>
+#include <iomanip>
 #include <iostream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -63,6 +66,7 @@ int RunBakeCommand(const std::vector<std::string>& args)
   cl.AddFlag("--height", "the input stores height (white = high) rather than depth");
   cl.AddFlag("--normalize", "stretch the input's value range to [0, 1]");
   cl.AddValue("--no-data", "VALUE", CommandLine::NoDataHelp);
+  cl.AddValue("--vertical-exaggeration", "E", CommandLine::VerticalExaggerationHelp);
   cl.AddValue("--bits", "N", "8 or 16 bits per channel for PNG/TIFF output", "8");
   cl.AddValue("--memory-budget", "GIB", "refuse images needing more memory (0: all there is)", "0");
   std::string error;
@@ -81,10 +85,14 @@ int RunBakeCommand(const std::vector<std::string>& args)
   int bits = 8;
   double budget = 0.0;
   CommandLine::NoDataOption noData;
+  double exaggeration = 0.0;
   if (!cl.GetDouble("--depth-scale", 0.0, 100.0, depthScale, error) ||
     !cl.GetInt("--bits", 8, 16, bits, error) ||
     !cl.GetDouble("--memory-budget", 0.0, 1e6, budget, error) ||
-    !cl.GetNoData("--no-data", noData, error))
+    !cl.GetNoData("--no-data", noData, error) ||
+    (cl.Has("--vertical-exaggeration") &&
+      (!cl.GetDouble("--vertical-exaggeration", 1e-6, 1000.0, exaggeration, error) ||
+        !CommandLine::CheckVerticalExaggeration(cl, error))))
   {
     return cl.UsageError(error);
   }
@@ -113,6 +121,8 @@ int RunBakeCommand(const std::vector<std::string>& args)
   bake->SetUseNoDataValue(noData.Use);
   bake->SetNoDataValue(noData.Value);
   bake->SetUseInputNoDataValue(noData.UseFileValue);
+  bake->SetUseTrueDepthScale(exaggeration > 0.0);
+  bake->SetVerticalExaggeration(exaggeration);
   bake->SetMemoryBudget(static_cast<vtkTypeInt64>(budget * 1073741824.0));
   if (border == "wrap")
   {
@@ -139,10 +149,11 @@ int RunBakeCommand(const std::vector<std::string>& args)
     return 1;
   }
   ReportFileNoDataValue(in, !noData.Use && noData.UseFileValue);
+  ReportTrueDepthScale(in, bake->GetOutput());
   int dims[3];
   bake->GetOutput()->GetDimensions(dims);
   std::cout << "wrote " << out << " (" << dims[0] << "x" << dims[1]
-            << " relief texture, depth scale " << depthScale << ")\n";
+            << " relief texture, depth scale " << bake->GetAppliedDepthScale() << ")\n";
   return 0;
 }
 
@@ -161,6 +172,26 @@ void ReportFileNoDataValue(const std::string& file, bool applied)
               << (IsSrtmHeightFileName(file) ? " (SRTM voids)" : " (GDAL_NODATA)")
               << ": its texels are drawn as the lowest ground (--no-data none: as elevations)\n";
   }
+}
+
+void ReportTrueDepthScale(const std::string& file, vtkImageData* relief)
+{
+  vtkFieldData* fields = relief ? relief->GetFieldData() : nullptr;
+  vtkDataArray* trueScale = fields ? fields->GetArray("MesolightTrueDepthScale") : nullptr;
+  vtkDataArray* drawn = fields ? fields->GetArray("MesolightDepthScale") : nullptr;
+  if (!trueScale || !drawn || trueScale->GetNumberOfTuples() != 1 ||
+    drawn->GetNumberOfTuples() != 1)
+  {
+    return;
+  }
+  const double t = trueScale->GetComponent(0, 0);
+  const double d = drawn->GetComponent(0, 0);
+  std::ostringstream text;
+  text << std::setprecision(3) << file
+       << " is georeferenced: its true vertical scale is depth scale " << t << "; drawn at " << d
+       << ", " << d / t
+       << " times exaggerated (--vertical-exaggeration E: E times the true scale)\n";
+  std::cout << text.str();
 }
 
 int RunConeCommand(const std::vector<std::string>& args)

@@ -43,6 +43,7 @@ void AddSceneOptions(CommandLine& cl)
   cl.AddValue("--no-data", "VALUE", CommandLine::NoDataHelp);
   cl.AddValue("--resolution", "N", "texels per side of the procedural map", "512");
   cl.AddValue("--depth-scale", "K", "relief depth as a fraction of the wall width", "0.04");
+  cl.AddValue("--vertical-exaggeration", "E", CommandLine::VerticalExaggerationHelp);
   cl.AddValue("--method", "NAME",
     "texture, bump, parallax, parallax-limit, parallax-slope, iterative-parallax, binary, secant, "
     "linear (steep), pom, relief, interval, relaxed-cone, relaxed-cone-interval, cone, max-mipmap "
@@ -144,6 +145,12 @@ bool ReadSceneOptions(const CommandLine& cl, ReliefSceneOptions& o, std::string&
     !cl.GetInt("--env-lights", 1, 4096, o.EnvironmentLights, error) ||
     !cl.GetDouble("--exposure", 0.0, 1e6, o.Exposure, error) ||
     !cl.GetDouble("--light-elevation", 0.0, 90.0, o.LightElevation, error))
+  {
+    return false;
+  }
+  if (cl.Has("--vertical-exaggeration") &&
+    (!cl.GetDouble("--vertical-exaggeration", 1e-6, 1000.0, o.VerticalExaggeration, error) ||
+      !CommandLine::CheckVerticalExaggeration(cl, error)))
   {
     return false;
   }
@@ -345,6 +352,7 @@ int RunRenderCommand(const std::vector<std::string>& args)
   else
   {
     ReportFileNoDataValue(options.DepthFile, !options.UseNoDataValue && options.UseFileNoDataValue);
+    ReportTrueDepthScale(options.DepthFile, scene.ReliefTexture);
   }
   // One window for both the PNG and the interactive view: on screen when a display is there.
   const bool interactive = !cl.Has("--offscreen") && HasDisplay();

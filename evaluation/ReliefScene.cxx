@@ -15,7 +15,9 @@
 #include <vtkActor.h>
 #include <vtkCamera.h>
 #include <vtkCommand.h>
+#include <vtkDataArray.h>
 #include <vtkExecutive.h>
+#include <vtkFieldData.h>
 #include <vtkImageData.h>
 #include <vtkLight.h>
 #include <vtkMapper.h>
@@ -80,6 +82,19 @@ vtkSmartPointer<vtkPolyData> MakeWall(vtkImageData* relief)
 
 void ApplyMaterial(vtkActor* actor);
 
+// The options with the depth scale the relief texture was baked with: DepthScale, or a DEM's
+// true vertical scale times VerticalExaggeration.
+ReliefSceneOptions WithBakedDepthScale(const ReliefSceneOptions& options, vtkImageData* relief)
+{
+  ReliefSceneOptions baked = options;
+  vtkDataArray* scale = relief ? relief->GetFieldData()->GetArray("MesolightDepthScale") : nullptr;
+  if (options.VerticalExaggeration > 0.0 && scale && scale->GetNumberOfTuples() == 1)
+  {
+    baked.DepthScale = scale->GetComponent(0, 0);
+  }
+  return baked;
+}
+
 // Every scene variant: the same actor material, albedo, camera and lights.
 void FinishScene(const ReliefSceneOptions& options, vtkMapper* mapper, ReliefScene& scene)
 {
@@ -131,6 +146,8 @@ bool BuildReliefTextures(const ReliefSceneOptions& options, vtkSmartPointer<vtkI
     bake->SetUseNoDataValue(options.UseNoDataValue);
     bake->SetNoDataValue(options.NoDataValue);
     bake->SetUseInputNoDataValue(options.UseFileNoDataValue);
+    bake->SetUseTrueDepthScale(options.VerticalExaggeration > 0.0);
+    bake->SetVerticalExaggeration(options.VerticalExaggeration);
     // A depth file comes without colour: a light grey albedo shows the relief itself.
     vtkNew<vtkImageData> grey;
     grey->SetDimensions(1, 1, 1);
@@ -175,7 +192,7 @@ bool BuildReliefTextures(const ReliefSceneOptions& options, vtkSmartPointer<vtkI
     vtkNew<vtkConeMapFilter> cones;
     cones->AddObserver(vtkCommand::ErrorEvent, errors);
     cones->SetInputData(relief);
-    cones->SetDepthScale(options.DepthScale); // bake the normals as the relief texture was
+    cones->SetDepthScale(bake->GetAppliedDepthScale()); // the relief texture's normals, kept
     if (coneMap == vtkReliefProperty::ConservativeConeMap)
     {
       cones->SetConeTypeToConservative();
@@ -350,19 +367,20 @@ void SetupCameraAndLights(const ReliefSceneOptions& options, vtkRenderer* render
 }
 
 //------------------------------------------------------------------------------
-bool BuildReliefScene(const ReliefSceneOptions& options, ReliefScene& scene, std::string& error)
+bool BuildReliefScene(const ReliefSceneOptions& requested, ReliefScene& scene, std::string& error)
 {
   vtkNew<vtkReliefProperty> probe;
-  if (!probe->SetMethodByName(options.Method.c_str()))
+  if (!probe->SetMethodByName(requested.Method.c_str()))
   {
-    error = "unknown method '" + options.Method + "'";
+    error = "unknown method '" + requested.Method + "'";
     return false;
   }
-  if (!BuildReliefTextures(options, scene.ReliefTexture, scene.Albedo, error,
+  if (!BuildReliefTextures(requested, scene.ReliefTexture, scene.Albedo, error,
         vtkReliefProperty::GetRequiredConeMap(probe->GetMethod())))
   {
     return false;
   }
+  const ReliefSceneOptions options = WithBakedDepthScale(requested, scene.ReliefTexture);
   vtkSmartPointer<vtkPolyData> wall = MakeWall(scene.ReliefTexture);
   if (!wall)
   {
@@ -430,12 +448,13 @@ bool BuildReliefScene(const ReliefSceneOptions& options, ReliefScene& scene, std
 
 //------------------------------------------------------------------------------
 bool BuildDenseReferenceScene(
-  const ReliefSceneOptions& options, ReliefScene& scene, std::string& error)
+  const ReliefSceneOptions& requested, ReliefScene& scene, std::string& error)
 {
-  if (!BuildReliefTextures(options, scene.ReliefTexture, scene.Albedo, error))
+  if (!BuildReliefTextures(requested, scene.ReliefTexture, scene.Albedo, error))
   {
     return false;
   }
+  const ReliefSceneOptions options = WithBakedDepthScale(requested, scene.ReliefTexture);
   vtkNew<vtkHeightFieldMeshFilter> dense;
   dense->SetInputData(scene.ReliefTexture);
   dense->SetOrigin(0.0, 0.0, 0.0);

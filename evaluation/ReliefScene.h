@@ -37,7 +37,10 @@ struct ReliefSceneOptions
   bool UseFileNoDataValue = true; // else the value a GeoTIFF names (GDAL_NODATA) is data too
   int Resolution = 512;           // texels per side of the procedural map
   double DepthScale = 0.04;       // world depth of depth 1 / world width of the wall
-  std::string Method = "relief";  // vtkReliefMapper::SetMethodByName
+  // > 0: a georeferenced elevation map at its true vertical scale times this, in place of
+  // DepthScale (vtkReliefTextureFilter::UseTrueDepthScale; needs NormalizeDepthFile).
+  double VerticalExaggeration = 0.0;
+  std::string Method = "relief"; // vtkReliefMapper::SetMethodByName
   int LinearSteps = 10;
   int RefinementSteps = 8;
   bool SelfShadowing = true;

@@ -114,6 +114,8 @@ int vtkOIIOImageReader::RequestInformation(
     this->FormatName.clear();
     this->HasNoDataValue = false;
     this->NoDataValue = 0.0;
+    this->HasPixelSize = false;
+    this->PixelSize[0] = this->PixelSize[1] = 0.0;
     return 0;
   }
   if (header.FileChannels > 4)
@@ -127,6 +129,9 @@ int vtkOIIOImageReader::RequestInformation(
   this->FormatName = header.FormatName;
   this->HasNoDataValue = header.HasNoDataValue;
   this->NoDataValue = header.NoDataValue;
+  this->HasPixelSize = header.HasPixelSize;
+  this->PixelSize[0] = header.PixelSizeX;
+  this->PixelSize[1] = header.PixelSizeY;
 
   const int extent[6] = { 0, header.Width - 1, 0, header.Height - 1, 0, 0 };
   const double origin[3] = { 0.0, 0.0, 0.0 };
@@ -196,6 +201,14 @@ int vtkOIIOImageReader::RequestData(
     noData->InsertNextValue(header.NoDataValue);
     output->GetFieldData()->AddArray(noData);
   }
+  if (header.HasPixelSize)
+  {
+    vtkNew<vtkDoubleArray> pixelSize;
+    pixelSize->SetName("MesolightPixelSize");
+    pixelSize->SetNumberOfComponents(2);
+    pixelSize->InsertNextTuple2(header.PixelSizeX, header.PixelSizeY);
+    output->GetFieldData()->AddArray(pixelSize);
+  }
   // NaN is how geometry images mark holes: counted for the consumers that refuse it, not warned.
   if (header.Type == mesolight::ImageSampleType::Float)
   {
@@ -218,4 +231,6 @@ void vtkOIIOImageReader::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfNonFiniteValues: " << this->NumberOfNonFiniteValues << "\n";
   os << indent << "HasNoDataValue: " << (this->HasNoDataValue ? "true" : "false") << "\n";
   os << indent << "NoDataValue: " << this->NoDataValue << "\n";
+  os << indent << "HasPixelSize: " << (this->HasPixelSize ? "true" : "false") << "\n";
+  os << indent << "PixelSize: " << this->PixelSize[0] << " x " << this->PixelSize[1] << " m\n";
 }

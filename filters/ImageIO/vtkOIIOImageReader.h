@@ -24,7 +24,14 @@
  * A GeoTIFF that names a no-data value in GDAL's GDAL_NODATA tag (elevation maps written by
  * GDAL: -32768, -9999, NaN...) gives it as GetNoDataValue() and as the output's field data array
  * "MesolightNoDataValue" (one double), which vtkReliefTextureFilter applies by default
- * (OpenImageIO does not pass the tag on; mesolight::ReadTiffNoDataTag reads it).
+ * (OpenImageIO does not pass the tag on; mesolight::ReadTiffNoDataTag reads it). An SRTM height
+ * tile (.hgt, which OpenImageIO does not read) is read as int16 metres with its voids, -32768, as
+ * that value.
+ *
+ * A georeferenced file (GeoTIFF tags; an SRTM tile's name) gives a pixel's size on the ground in
+ * metres, GetPixelSize(), and the field data array "MesolightPixelSize" (two doubles: along rows,
+ * along columns), from which vtkReliefTextureFilter derives the depth scale of the true vertical
+ * scale. The output's spacing stays 1.
  *
  * Failures report vtkErrorMacro messages with the file name and OpenImageIO's error text,
  * set ErrorCode (vtkErrorCode::NoFileNameError, FileNotFoundError, CannotOpenFileError,
@@ -93,6 +100,16 @@ public:
   vtkGetMacro(NoDataValue, double);
   ///@}
 
+  ///@{
+  /**
+   * Whether the last file read is georeferenced, and a pixel's size on the ground in metres along
+   * its rows and columns (valid after UpdateInformation()). Degrees of a geographic raster are
+   * converted at its middle latitude (mesolight::GeographicPixelSize).
+   */
+  vtkGetMacro(HasPixelSize, bool);
+  vtkGetVector2Macro(PixelSize, double);
+  ///@}
+
 protected:
   vtkOIIOImageReader();
   ~vtkOIIOImageReader() override;
@@ -108,6 +125,8 @@ protected:
   vtkIdType NumberOfNonFiniteValues = 0;
   bool HasNoDataValue = false;
   double NoDataValue = 0.0;
+  bool HasPixelSize = false;
+  double PixelSize[2] = { 0.0, 0.0 };
 
 private:
   vtkOIIOImageReader(const vtkOIIOImageReader&) = delete;

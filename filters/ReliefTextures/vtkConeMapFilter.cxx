@@ -119,6 +119,8 @@ int vtkConeMapFilter::Execute(
     bake->SetNoDataValue(this->NoDataValue);
     bake->SetUseNoDataValue(this->UseNoDataValue);
     bake->SetUseInputNoDataValue(this->UseInputNoDataValue);
+    bake->SetUseTrueDepthScale(this->UseTrueDepthScale);
+    bake->SetVerticalExaggeration(this->VerticalExaggeration);
     bake->SetMemoryBudget(this->MemoryBudget);
     struct Forward : public vtkCommand
     {
@@ -228,5 +230,7 @@ void vtkConeMapFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NoDataValue: " << this->NoDataValue << "\n";
   os << indent << "UseNoDataValue: " << (this->UseNoDataValue ? "On" : "Off") << "\n";
   os << indent << "UseInputNoDataValue: " << (this->UseInputNoDataValue ? "On" : "Off") << "\n";
+  os << indent << "UseTrueDepthScale: " << (this->UseTrueDepthScale ? "On" : "Off") << "\n";
+  os << indent << "VerticalExaggeration: " << this->VerticalExaggeration << "\n";
   os << indent << "MemoryBudget: " << this->MemoryBudget << "\n";
 }

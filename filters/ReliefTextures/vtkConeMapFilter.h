@@ -78,6 +78,11 @@ public:
   vtkSetMacro(UseInputNoDataValue, bool);
   vtkGetMacro(UseInputNoDataValue, bool);
   vtkBooleanMacro(UseInputNoDataValue, bool);
+  vtkSetMacro(UseTrueDepthScale, bool);
+  vtkGetMacro(UseTrueDepthScale, bool);
+  vtkBooleanMacro(UseTrueDepthScale, bool);
+  vtkSetClampMacro(VerticalExaggeration, double, 0.0, 1000.0);
+  vtkGetMacro(VerticalExaggeration, double);
   ///@}
 
   ///@{
@@ -109,6 +114,8 @@ protected:
   double NoDataValue = 0.0;
   bool UseNoDataValue = false;
   bool UseInputNoDataValue = true;
+  bool UseTrueDepthScale = false;
+  double VerticalExaggeration = 1.0;
   vtkTypeInt64 MemoryBudget = 0;
 
 private:

@@ -14,6 +14,7 @@
 #include "vtkDataArray.h"
 #include "vtkDataObject.h"
 #include "vtkDataSetAttributes.h"
+#include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
@@ -409,6 +410,32 @@ int vtkReliefTextureFilter::Execute(
       scale = 0.0;
     }
   }
+  // The true vertical scale: the elevations' range over the map's width on the ground.
+  this->TrueDepthScale = 0.0;
+  vtkDataArray* pixelSize =
+    vtkDataArray::SafeDownCast(input->GetFieldData()->GetAbstractArray("MesolightPixelSize"));
+  if (this->NormalizeRange && pixelSize && pixelSize->GetNumberOfTuples() == 1 &&
+    pixelSize->GetNumberOfComponents() == 2 && pixelSize->GetComponent(0, 0) > 0.0 &&
+    maxValue > minValue)
+  {
+    this->TrueDepthScale = (maxValue - minValue) / (w * pixelSize->GetComponent(0, 0));
+  }
+  if (this->UseTrueDepthScale && this->TrueDepthScale <= 0.0)
+  {
+    vtkErrorMacro("UseTrueDepthScale (ParaView: Use True Depth Scale; mesolight: "
+                  "--vertical-exaggeration) needs "
+      << (!this->NormalizeRange ? "NormalizeRange on (elevations in metres)"
+                                : (pixelSize ? "elevations that vary"
+                                             : "an image that carries its pixel size on the "
+                                               "ground, as the Mesolight Image Reader "
+                                               "(vtkOIIOImageReader) gives it for a GeoTIFF or "
+                                               "an SRTM tile; this one carries none"))
+      << ". Set the depth scale instead.");
+    return 0;
+  }
+  this->AppliedDepthScale =
+    this->UseTrueDepthScale ? this->TrueDepthScale * this->VerticalExaggeration : this->DepthScale;
+
   const bool invert = this->InvertInput;
   for (vtkIdType k = 0; k < n; ++k)
   {
@@ -433,7 +460,7 @@ int vtkReliefTextureFilter::Execute(
   relief->SetNumberOfComponents(4);
   relief->SetNumberOfTuples(n);
   float* rgba = relief->GetPointer(0);
-  const float depthScale = static_cast<float>(this->DepthScale);
+  const float depthScale = static_cast<float>(this->AppliedDepthScale);
   const mesolight::BorderMode mode =
     this->BorderMode == WRAP ? mesolight::BorderMode::Wrap : mesolight::BorderMode::Clamp;
   const float* depthPtr = depth.data();
@@ -466,6 +493,13 @@ int vtkReliefTextureFilter::Execute(
   scaleArray->SetNumberOfTuples(1);
   scaleArray->SetValue(0, depthScale);
   output->GetFieldData()->AddArray(scaleArray);
+  if (this->TrueDepthScale > 0.0)
+  {
+    vtkNew<vtkDoubleArray> trueScale;
+    trueScale->SetName("MesolightTrueDepthScale");
+    trueScale->InsertNextValue(this->TrueDepthScale);
+    output->GetFieldData()->AddArray(trueScale);
+  }
   return 1;
 }
 
@@ -474,6 +508,9 @@ void vtkReliefTextureFilter::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "DepthScale: " << this->DepthScale << "\n";
+  os << indent << "UseTrueDepthScale: " << (this->UseTrueDepthScale ? "On" : "Off") << "\n";
+  os << indent << "VerticalExaggeration: " << this->VerticalExaggeration << "\n";
+  os << indent << "TrueDepthScale: " << this->TrueDepthScale << "\n";
   os << indent << "BorderMode: " << (this->BorderMode == WRAP ? "Wrap" : "Clamp") << "\n";
   os << indent << "InvertInput: " << (this->InvertInput ? "On" : "Off") << "\n";
   os << indent << "NormalizeRange: " << (this->NormalizeRange ? "On" : "Off") << "\n";

@@ -62,6 +62,35 @@ public:
 
   ///@{
   /**
+   * The true vertical scale of an elevation map: with UseTrueDepthScale on, the depth scale is
+   * not DepthScale but TrueDepthScale times VerticalExaggeration, where TrueDepthScale is the
+   * elevations' range over the map's width on the ground, (max - min) / (W * pixel width), both
+   * in metres: the relief is then as deep, relative to its width, as the terrain is (times the
+   * exaggeration). It needs NormalizeRange (the range is the stored values', taken as metres) and
+   * an image that carries a pixel's size on the ground (the field data array
+   * "MesolightPixelSize", metres along rows and columns, which vtkOIIOImageReader gives for a
+   * GeoTIFF and an SRTM tile); without them the filter fails with an error. Defaults: off, 1.
+   */
+  vtkSetMacro(UseTrueDepthScale, bool);
+  vtkGetMacro(UseTrueDepthScale, bool);
+  vtkBooleanMacro(UseTrueDepthScale, bool);
+  vtkSetClampMacro(VerticalExaggeration, double, 0.0, 1000.0);
+  vtkGetMacro(VerticalExaggeration, double);
+  ///@}
+
+  ///@{
+  /**
+   * After Update(): the true vertical scale's depth scale of the last input, when it was
+   * georeferenced and NormalizeRange was on (else 0; the output carries it as the field data
+   * array "MesolightTrueDepthScale" then), and the depth scale the output carries
+   * ("MesolightDepthScale").
+   */
+  vtkGetMacro(TrueDepthScale, double);
+  vtkGetMacro(AppliedDepthScale, double);
+  ///@}
+
+  ///@{
+  /**
    * How the Sobel stencil addresses texels outside the image: CLAMP (one-sided differences
    * at the borders, the default) or WRAP (periodic, for tileable textures).
    */
@@ -148,6 +177,10 @@ protected:
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   double DepthScale = 0.05;
+  bool UseTrueDepthScale = false;
+  double VerticalExaggeration = 1.0;
+  double TrueDepthScale = 0.0;
+  double AppliedDepthScale = 0.0;
   int BorderMode = CLAMP;
   bool InvertInput = false;
   bool NormalizeRange = false;

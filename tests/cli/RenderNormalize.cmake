@@ -111,3 +111,24 @@ if (srtm_voids_as_data STREQUAL srtm_filled)
 endif ()
 cli_expect_error(1 "signed integers"
   ${scene} --depth-file "${WORK}/N46E007-voids.hgt" --out "${WORK}/never.png")
+
+# The tile is georeferenced (a degree from 46 N): the tool states its true vertical scale, and
+# --vertical-exaggeration E draws E times it in place of --depth-scale; a map without a
+# georeference is refused, as are the option without --normalize and beside --depth-scale.
+cli_expect(0 "is georeferenced: its true vertical scale is depth scale"
+  ${scene} --normalize --depth-file "${WORK}/N46E007-voids.hgt" --out "${WORK}/srtm-default.png")
+cli_expect(0 "3 times exaggerated" ${scene} --normalize --depth-file "${WORK}/N46E007-voids.hgt"
+  --vertical-exaggeration 3 --out "${WORK}/srtm-exaggerated.png")
+file(SHA256 "${WORK}/srtm-exaggerated.png" srtm_exaggerated)
+if (srtm_exaggerated STREQUAL srtm_voids)
+  message(FATAL_ERROR "--vertical-exaggeration 3 drew the relief of the default depth scale")
+endif ()
+cli_expect_error(1 "carries its pixel size on the ground" ${scene} --normalize
+  --depth-file "${WORK}/metres.tif" --vertical-exaggeration 3 --out "${WORK}/never.png")
+cli_expect_error(2 "--vertical-exaggeration needs --normalize" ${scene}
+  --depth-file "${WORK}/N46E007-voids.hgt" --vertical-exaggeration 3 --out "${WORK}/never.png")
+cli_expect_error(2 "give one" ${scene} --normalize --depth-file "${WORK}/N46E007-voids.hgt"
+  --vertical-exaggeration 3 --depth-scale 0.1 --out "${WORK}/never.png")
+if (EXISTS "${WORK}/never.png")
+  message(FATAL_ERROR "an image was written from a refused command")
+endif ()

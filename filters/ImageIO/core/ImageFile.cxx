@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "ImageFile.h"
 
+#include "GeoTiffTags.h"
 #include "MemoryBudget.h"
 #include "OneLineMessage.h"
 #include "SrtmHeightFile.h"
-#include "TiffNoDataTag.h"
 
 #include <OpenImageIO/imageio.h>
 
@@ -313,6 +313,16 @@ ImageFileInfo ReadSrtmTileInfo(const std::string& path, std::int64_t memoryBudge
   info.FormatName = "srtm-hgt";
   info.HasNoDataValue = true;
   info.NoDataValue = SrtmVoidHeight;
+  // A tile spans one degree from the corner its name gives (N45E006: 45-46 degrees north).
+  if (const std::optional<double> south = SrtmTileSouthLatitude(path))
+  {
+    if (const auto pixel = GeographicPixelSize(1.0 / (side - 1), 1.0 / (side - 1), *south + 0.5))
+    {
+      info.HasPixelSize = true;
+      info.PixelSizeX = pixel->X;
+      info.PixelSizeY = pixel->Y;
+    }
+  }
   return info;
 }
 
@@ -425,6 +435,12 @@ ImageFileInfo ReadImageFileInfo(const std::string& path, std::int64_t memoryBudg
     {
       info.HasNoDataValue = true;
       info.NoDataValue = *noData;
+    }
+    if (const std::optional<GeoPixelSize> pixel = ReadGeoTiffPixelSize(path, info.Height))
+    {
+      info.HasPixelSize = true;
+      info.PixelSizeX = pixel->X;
+      info.PixelSizeY = pixel->Y;
     }
   }
   return info;

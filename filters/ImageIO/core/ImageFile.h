@@ -75,9 +75,14 @@ struct MESOLIGHTIMAGEIO_EXPORT ImageFileInfo
   int Channels = 0;     // channels read: min(FileChannels, 4)
   ImageSampleType Type = ImageSampleType::Float;
   std::string FormatName; // OpenImageIO's name: "png", "openexr", ...
-  /** The value a GeoTIFF names for pixels without data (GDAL_NODATA, TiffNoDataTag.h). */
+  /** The value a GeoTIFF names for pixels without data (GDAL_NODATA, GeoTiffTags.h). */
   bool HasNoDataValue = false;
   double NoDataValue = 0.0;
+  /** A pixel's size on the ground in metres, along rows (X) and columns (Y), where the file is
+   *  georeferenced (GeoTIFF tags, GeoTiffTags.h; an SRTM tile's name, SrtmHeightFile.h). */
+  bool HasPixelSize = false;
+  double PixelSizeX = 0.0;
+  double PixelSizeY = 0.0;
 
   /** 1, 2 or 4 bytes. */
   std::size_t SampleSize() const;

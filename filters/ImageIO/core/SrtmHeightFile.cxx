@@ -20,6 +20,25 @@ bool IsSrtmHeightFileName(const std::string& path)
   return ext == ".hgt";
 }
 
+std::optional<double> SrtmTileSouthLatitude(const std::string& path)
+{
+  const std::string name = std::filesystem::path(path).stem().string();
+  // [NS]dd[EW]ddd, as the tiles are named.
+  if (name.size() < 7 || !(name[0] == 'N' || name[0] == 'S' || name[0] == 'n' || name[0] == 's') ||
+    !std::isdigit(static_cast<unsigned char>(name[1])) ||
+    !std::isdigit(static_cast<unsigned char>(name[2])) ||
+    !(name[3] == 'E' || name[3] == 'W' || name[3] == 'e' || name[3] == 'w'))
+  {
+    return std::nullopt;
+  }
+  const int degrees = (name[1] - '0') * 10 + (name[2] - '0');
+  if (degrees > 89)
+  {
+    return std::nullopt;
+  }
+  return (name[0] == 'S' || name[0] == 's') ? -degrees : degrees;
+}
+
 int SrtmTileSide(std::uint64_t bytes)
 {
   if (bytes % 2 != 0 || bytes < 8 || bytes > 2ULL * 46340 * 46340)

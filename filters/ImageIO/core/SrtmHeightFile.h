@@ -16,6 +16,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 
 namespace mesolight
@@ -26,6 +27,10 @@ constexpr std::int16_t SrtmVoidHeight = -32768;
 
 /** True when `path`'s extension is `.hgt` (any case). */
 MESOLIGHTIMAGEIO_EXPORT bool IsSrtmHeightFileName(const std::string& path);
+
+/** The latitude of the tile's southern edge from its file name (N45E006.hgt: 45, S12W077.hgt:
+ *  -12), or none when the name is not a tile's. */
+MESOLIGHTIMAGEIO_EXPORT std::optional<double> SrtmTileSouthLatitude(const std::string& path);
 
 /** N when `bytes` is the size of an N x N tile (2 N^2 bytes, N >= 2), else 0. */
 MESOLIGHTIMAGEIO_EXPORT int SrtmTileSide(std::uint64_t bytes);

@@ -192,6 +192,23 @@ if srtm is not None:
     got = vtk_to_numpy(servermanager.Fetch(relief).GetPointData().GetScalars())[:, 3]
     check(got.size == W * W and got.reshape(W, W)[W - H:, :][~outside].max() < 0.013,
           "with Use Input No Data Value off the voids are elevations (the negative case)")
+    # The tile is georeferenced (a degree from 49 N, 47 pixels across): Use True Depth Scale
+    # draws it as deep, relative to its width, as the terrain is, times Vertical Exaggeration.
+    relief.UseInputNoDataValue = 1
+    relief.UseTrueDepthScale = 1
+    relief.VerticalExaggeration = 2
+    relief.UpdatePipeline()
+    fields = servermanager.Fetch(relief).GetFieldData()
+    degree = 6371008.8 * np.pi / 180.0
+    pixel = degree * np.cos(np.radians(49.5)) / (W - 1)
+    true_scale = 400.0 / (W * pixel)  # -100..300 m over W pixels
+    drawn = fields.GetArray("MesolightDepthScale").GetValue(0)
+    print("SRTM tile: true depth scale %.6f, drawn at %.6f" % (true_scale, drawn))
+    check(abs(drawn - 2 * true_scale) < 1e-6 * true_scale + 1e-7,
+          "Use True Depth Scale and Vertical Exaggeration 2: depth scale %.6f (expected %.6f)"
+          % (drawn, 2 * true_scale))
+    check(abs(fields.GetArray("MesolightTrueDepthScale").GetValue(0) - true_scale) < 1e-9,
+          "the true depth scale travels with the texture")
 
 if failures:
     print("FAILED: " + "; ".join(failures))

@@ -3,7 +3,7 @@
 #include "vtkOIIOImageReader.h"
 #include "vtkOIIOImageWriter.h"
 
-#include "GdalNoDataTagWriter.h"
+#include "TiffTagWriter.h"
 
 #include "MesolightTestUtilities.h"
 
@@ -295,14 +295,7 @@ TEST(OIIOImageIO, GeoTiffNoDataValueComesWithTheImage)
   // GDAL names a DEM's no-data value in the GDAL_NODATA tag: the reader gives it, and passes it
   // downstream as field data (vtkReliefTextureFilter applies it); a file without it has none.
   const fs::path file = mesolight_test::TestDirectory() / "dem_nodata.tif";
-  const std::vector<std::int16_t> metres = { -9999, 141, 547, 300 };
-  {
-    auto out = OIIO::ImageOutput::create(file.string());
-    ASSERT_TRUE(out);
-    ASSERT_TRUE(out->open(file.string(), OIIO::ImageSpec(2, 2, 1, OIIO::TypeDesc::INT16)));
-    ASSERT_TRUE(out->write_image(OIIO::TypeDesc::INT16, metres.data()));
-    ASSERT_TRUE(out->close());
-  }
+  ASSERT_TRUE(mesolight_test::WriteInt16Tiff(file.string(), 2, 2, { -9999, 141, 547, 300 }));
   vtkNew<vtkOIIOImageReader> reader;
   reader->SetFileName(file.string().c_str());
   reader->Update();
@@ -357,6 +350,17 @@ TEST(OIIOImageIO, SrtmHeightTilesAreReadWithTheirVoids)
   vtkDataArray* noData = image->GetFieldData()->GetArray("MesolightNoDataValue");
   ASSERT_NE(noData, nullptr);
   EXPECT_EQ(noData->GetComponent(0, 0), -32768.0);
+  // A tile spans a degree (N00: 0-1 degrees north): 2 x 2 heights are a degree apart, measured
+  // at 0.5 degrees north.
+  const double degree = 6371008.8 * 3.14159265358979323846 / 180.0;
+  EXPECT_TRUE(reader->GetHasPixelSize());
+  EXPECT_NEAR(
+    reader->GetPixelSize()[0], degree * std::cos(0.5 * 3.14159265358979323846 / 180.0), 1e-6);
+  EXPECT_NEAR(reader->GetPixelSize()[1], degree, 1e-6);
+  vtkDataArray* pixelSize = image->GetFieldData()->GetArray("MesolightPixelSize");
+  ASSERT_NE(pixelSize, nullptr);
+  EXPECT_EQ(pixelSize->GetNumberOfComponents(), 2);
+  EXPECT_EQ(pixelSize->GetComponent(0, 1), reader->GetPixelSize()[1]);
 
   // A size that is no tile's: an error naming the sizes expected, no image.
   {
@@ -372,6 +376,34 @@ TEST(OIIOImageIO, SrtmHeightTilesAreReadWithTheirVoids)
     << capture->AllErrors();
   EXPECT_EQ(reader->GetOutput()->GetNumberOfPoints(), 0);
   EXPECT_FALSE(reader->CanReadFile(file.string().c_str()));
+}
+
+TEST(OIIOImageIO, GeoTiffPixelSizeComesWithTheImage)
+{
+  // A GeoTIFF's georeference (a projection in metres, 30 x 25 m pixels): the reader gives a
+  // pixel's size on the ground and passes it downstream as field data; a file without it has none.
+  const fs::path file = mesolight_test::TestDirectory() / "dem_utm.tif";
+  ASSERT_TRUE(mesolight_test::WriteInt16Tiff(file.string(), 2, 2, { 100, 141, 547, 300 }));
+  vtkNew<vtkOIIOImageReader> reader;
+  reader->SetFileName(file.string().c_str());
+  reader->Update();
+  EXPECT_FALSE(reader->GetHasPixelSize());
+  EXPECT_EQ(reader->GetOutput()->GetFieldData()->GetArray("MesolightPixelSize"), nullptr);
+  ASSERT_TRUE(mesolight_test::AddGeoTiffTags(
+    file.string(), 30.0, 25.0, 500000.0, 5000000.0, { { 1024, 1 }, { 3076, 9001 } }));
+  reader->Modified();
+  reader->Update();
+  ASSERT_EQ(reader->GetErrorCode(), vtkErrorCode::NoError);
+  EXPECT_TRUE(reader->GetHasPixelSize());
+  EXPECT_EQ(reader->GetPixelSize()[0], 30.0);
+  EXPECT_EQ(reader->GetPixelSize()[1], 25.0);
+  vtkDataArray* pixelSize = reader->GetOutput()->GetFieldData()->GetArray("MesolightPixelSize");
+  ASSERT_NE(pixelSize, nullptr);
+  EXPECT_EQ(pixelSize->GetComponent(0, 0), 30.0);
+  EXPECT_EQ(pixelSize->GetComponent(0, 1), 25.0);
+  double spacing[3];
+  reader->GetOutput()->GetSpacing(spacing);
+  EXPECT_EQ(spacing[0], 1.0); // the image itself is unchanged
 }
 
 TEST(OIIOImageIO, RowOrderBottomRowIsLastInFile)

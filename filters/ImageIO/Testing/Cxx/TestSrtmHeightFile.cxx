@@ -81,6 +81,13 @@ TEST(SrtmHeightFile, TileSidesFromFileSizes)
   EXPECT_TRUE(mesolight::IsSrtmHeightFileName("S12W077.HGT"));
   EXPECT_FALSE(mesolight::IsSrtmHeightFileName("N45E006.hgt.zip"));
   EXPECT_FALSE(mesolight::IsSrtmHeightFileName("hgt"));
+  // A tile's name gives its south-west corner.
+  EXPECT_EQ(mesolight::SrtmTileSouthLatitude("/data/N45E006.hgt").value_or(-999), 45.0);
+  EXPECT_EQ(mesolight::SrtmTileSouthLatitude("S12W077.HGT").value_or(-999), -12.0);
+  EXPECT_EQ(mesolight::SrtmTileSouthLatitude("n00e000.hgt").value_or(-999), 0.0);
+  EXPECT_FALSE(mesolight::SrtmTileSouthLatitude("terrain.hgt").has_value());
+  EXPECT_FALSE(mesolight::SrtmTileSouthLatitude("N9E006.hgt").has_value());
+  EXPECT_FALSE(mesolight::SrtmTileSouthLatitude("N95E006.hgt").has_value());
 }
 
 TEST(SrtmHeightFile, HeightsAsOpenImageIOReadsTheSameTiff)

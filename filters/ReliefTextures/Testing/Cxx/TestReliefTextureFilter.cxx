@@ -338,6 +338,83 @@ TEST(vtkReliefTextureFilter, PixelsAsCellsAreReadAtTheirCorners)
   EXPECT_NEAR(Relief(filter)->GetComponent(11, 3), 0.0, 1e-6);
 }
 
+TEST(vtkReliefTextureFilter, TrueDepthScaleOfAGeoreferencedElevationMap)
+{
+  // 4 x 3 elevations, 100-400 m, pixels 50 m wide on the ground: the map is 200 m wide and 300 m
+  // deep, so its true depth scale is 1.5, and the relief baked with it is the one baked with
+  // DepthScale 1.5 (times the exaggeration), normals included.
+  auto dem = MakeImage<vtkShortArray>(
+    4, 3, 1, { 100, 150, 200, 250, 120, 180, 260, 300, 100, 250, 400, 350 });
+  vtkNew<vtkDoubleArray> pixelSize;
+  pixelSize->SetName("MesolightPixelSize");
+  pixelSize->SetNumberOfComponents(2);
+  pixelSize->InsertNextTuple2(50.0, 70.0);
+  dem->GetFieldData()->AddArray(pixelSize);
+
+  vtkNew<vtkReliefTextureFilter> filter;
+  vtkNew<MessageCapture> capture;
+  capture->Watch(filter);
+  filter->SetInputData(dem);
+  filter->InvertInputOn();
+  filter->NormalizeRangeOn();
+  filter->Update();
+  EXPECT_NEAR(filter->GetTrueDepthScale(), 1.5, 1e-12);
+  EXPECT_EQ(filter->GetAppliedDepthScale(), 0.05); // off by default: DepthScale
+  vtkDataArray* trueScale =
+    filter->GetOutput()->GetFieldData()->GetArray("MesolightTrueDepthScale");
+  ASSERT_NE(trueScale, nullptr);
+  EXPECT_NEAR(trueScale->GetComponent(0, 0), 1.5, 1e-12);
+
+  vtkNew<vtkReliefTextureFilter> byHand;
+  byHand->SetInputData(dem);
+  byHand->InvertInputOn();
+  byHand->NormalizeRangeOn();
+  for (const double exaggeration : { 1.0, 0.2 })
+  {
+    filter->UseTrueDepthScaleOn();
+    filter->SetVerticalExaggeration(exaggeration);
+    filter->Update();
+    ASSERT_TRUE(capture->Errors.empty()) << capture->AllErrors();
+    EXPECT_NEAR(filter->GetAppliedDepthScale(), 1.5 * exaggeration, 1e-12);
+    EXPECT_NEAR(
+      filter->GetOutput()->GetFieldData()->GetArray("MesolightDepthScale")->GetComponent(0, 0),
+      1.5 * exaggeration, 1e-6);
+    byHand->SetDepthScale(1.5 * exaggeration);
+    byHand->Update();
+    for (vtkIdType k = 0; k < 12; ++k)
+    {
+      for (int c = 0; c < 4; ++c)
+      {
+        EXPECT_NEAR(Relief(filter)->GetComponent(k, c), Relief(byHand)->GetComponent(k, c), 1e-6)
+          << "texel " << k << ", component " << c;
+      }
+    }
+  }
+  // The negative case: the default depth scale gives other normals.
+  byHand->SetDepthScale(0.05);
+  byHand->Update();
+  EXPECT_GT(
+    std::abs(Relief(filter)->GetComponent(5, 0) - Relief(byHand)->GetComponent(5, 0)), 0.01);
+
+  // Refused, naming what is missing: without NormalizeRange (depths in [0, 1] are no metres),
+  // and without a pixel size.
+  auto unit = MakeImage<vtkFloatArray>(2, 2, 1, { 0.f, 0.5f, 0.25f, 1.f });
+  unit->GetFieldData()->AddArray(pixelSize);
+  filter->SetInputData(unit);
+  filter->NormalizeRangeOff();
+  filter->Update();
+  EXPECT_TRUE(capture->HasError("needs NormalizeRange on")) << capture->AllErrors();
+  EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), 0);
+  filter->SetInputData(dem);
+  filter->NormalizeRangeOn();
+  dem->GetFieldData()->RemoveArray("MesolightPixelSize");
+  dem->Modified();
+  capture->Errors.clear();
+  filter->Update();
+  EXPECT_TRUE(capture->HasError("carries its pixel size on the ground")) << capture->AllErrors();
+  EXPECT_EQ(filter->GetTrueDepthScale(), 0.0);
+}
+
 TEST(vtkReliefTextureFilter, NonFiniteValuesAreRejected)
 {
   const float nan = std::numeric_limits<float>::quiet_NaN();
