@@ -7,7 +7,8 @@ DEPTH_IMAGE: 0 = the surface, 1 = the deepest (8/16-bit PNG, JPEG, TIFF, EXR...)
 height map instead (white = high, as game textures' height channels and DEMs); an elevation map
 in metres (a DEM) also takes --normalize and --no-data=VALUE (with "=": the launchers read a
 lone -32768 as an option of their own; a GeoTIFF that names its no-data value needs none, and
---no-data=none draws those texels as elevations). Writes relief.png.
+--no-data=none draws those texels as elevations); a georeferenced one (GeoTIFF, SRTM .hgt) takes
+--vertical-exaggeration=E, E times its true vertical scale. Writes relief.png.
 The plugin is auto-loaded by the launchers (LoadPlugin is not needed)."""
 import argparse
 import os
@@ -43,6 +44,9 @@ parser.add_argument("--normalize", action="store_true",
 parser.add_argument("--no-data", metavar="VALUE",
                     help="texels holding this value have no data (e.g. -32768 in an int16 DEM; "
                     "default: the value a GeoTIFF names; none: not even that one)")
+parser.add_argument("--vertical-exaggeration", metavar="E", type=float,
+                    help="a georeferenced elevation map (GeoTIFF, SRTM .hgt) at E times its true "
+                    "vertical scale (with --normalize)")
 args = parser.parse_args(sys.argv[1:])  # the GUI's --script passes none
 depth = open_image(args.depth) if args.depth else MesolightProceduralRelief()
 relief = MesolightReliefTexture(Input=depth, InvertInput=int(args.height),
@@ -55,7 +59,15 @@ elif args.no_data is not None:
     except ValueError:
         sys.exit("first-relief.py: --no-data takes a number, nan or none, not %r" % args.no_data)
     relief.UseNoDataValue = 1
+if args.vertical_exaggeration is not None:
+    relief.UseTrueDepthScale = 1
+    relief.VerticalExaggeration = args.vertical_exaggeration
 check(relief, "the relief texture of %s" % (args.depth or "the procedural map"))
+if "MesolightTrueDepthScale" in relief.FieldData.keys():
+    true_scale = relief.FieldData["MesolightTrueDepthScale"].GetRange()[0]
+    drawn = relief.FieldData["MesolightDepthScale"].GetRange()[0]
+    print("%s is georeferenced: its true vertical scale is depth scale %.3g; drawn at %.3g, %.3g "
+          "times exaggerated" % (args.depth, true_scale, drawn, drawn / true_scale))
 plane = Plane()
 attached = MesolightAttachReliefTexture(Input=plane, ReliefTexture=relief)
 if args.environment:

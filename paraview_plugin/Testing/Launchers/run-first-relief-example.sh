@@ -6,8 +6,9 @@
 # data, which Relief Texture refused: the script then saved a frame without the relief). Fails
 # unless the script exits 0, prints no error and writes relief.png with a shaded relief covering
 # part of the frame; unless an elevation map in metres is refused without --normalize and drawn
-# with --normalize --no-data; and unless a missing file ends the script with an error and no
-# relief.png.
+# with --normalize --no-data; unless an SRTM tile is drawn with --vertical-exaggeration (and a
+# map without a georeference refused with it); and unless a missing file ends the script with an
+# error and no relief.png.
 set -uo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 repo="$(cd "$here/../../.." && pwd)"
@@ -76,6 +77,31 @@ if [ $status -ne 0 ] || grep -q "ERR|" log.txt; then
 fi
 check_relief
 
+# An SRTM tile (georeferenced): --vertical-exaggeration=3 draws three times its true vertical
+# scale and says so; the map in metres above, which has no georeference, is refused with it.
+/usr/bin/python3 "$repo/tests/cli/WriteSrtmTile.py" N46E007.hgt 121 voids || exit 1
+rm -f relief.png
+env -u DISPLAY timeout 300 bash "$repo/scripts/pvbatch.sh" \
+  "$repo/examples/paraview/first-relief.py" --height --normalize --vertical-exaggeration=3 \
+  N46E007.hgt >log.txt 2>&1
+status=$?
+cat log.txt
+if [ $status -ne 0 ] || grep -q "ERR|" log.txt || ! grep -q "3 times exaggerated" log.txt; then
+  echo "FAILED: first-relief.py --vertical-exaggeration=3 on an SRTM tile" >&2
+  exit 1
+fi
+check_relief
+rm -f relief.png
+env -u DISPLAY timeout 300 bash "$repo/scripts/pvbatch.sh" \
+  "$repo/examples/paraview/first-relief.py" --height --normalize --vertical-exaggeration=3 \
+  dem.tif >log.txt 2>&1
+status=$?
+cat log.txt
+if [ $status -eq 0 ] || [ -e relief.png ] || ! grep -q "pixel size on the ground" log.txt; then
+  echo "FAILED: --vertical-exaggeration on a map without a georeference must stop the script" >&2
+  exit 1
+fi
+
 rm -f relief.png
 env -u DISPLAY timeout 300 bash "$repo/scripts/pvbatch.sh" \
   "$repo/examples/paraview/first-relief.py" missing.png >log.txt 2>&1
@@ -86,4 +112,5 @@ if [ $status -eq 0 ] || [ -e relief.png ] || ! grep -q "no such file: missing.pn
   exit 1
 fi
 echo "passed: first-relief.py on a JPEG height map and an HDR sky, on an elevation map with"\
-  "no-data holes (refused without --normalize); a missing file refused"
+  "no-data holes (refused without --normalize), on an SRTM tile at three times its true"\
+  "vertical scale (refused on a map without a georeference); a missing file refused"
