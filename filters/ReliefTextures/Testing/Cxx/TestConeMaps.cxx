@@ -860,6 +860,41 @@ TEST(vtkConeMapFilter, ReadsElevationMapsAsTheReliefFilterDoes)
   EXPECT_TRUE(capture->Errors.empty()) << capture->AllErrors();
   EXPECT_LT(cones->GetOutput()->GetPointData()->GetScalars()->GetComponent(10 * w + 20, 3), 0.01);
 
+  // Georeferenced (pixels 100 m wide): the true vertical scale times the exaggeration, as the
+  // relief filter bakes it, normals included; without a pixel size, refused.
+  cones->UseNoDataValueOff();
+  cones->UseTrueDepthScaleOn();
+  cones->SetVerticalExaggeration(3.0);
+  capture->Errors.clear();
+  cones->Update();
+  EXPECT_TRUE(capture->HasError("carries its pixel size on the ground")) << capture->AllErrors();
+  vtkNew<vtkDoubleArray> pixelSize;
+  pixelSize->SetName("MesolightPixelSize");
+  pixelSize->SetNumberOfComponents(2);
+  pixelSize->InsertNextTuple2(100.0, 100.0);
+  dem->GetFieldData()->AddArray(pixelSize);
+  dem->Modified();
+  capture->Errors.clear();
+  cones->Update();
+  ASSERT_TRUE(capture->Errors.empty()) << capture->AllErrors();
+  bake->SetInputData(dem);
+  bake->UseTrueDepthScaleOn();
+  bake->SetVerticalExaggeration(3.0);
+  bake->Update();
+  ASSERT_GT(bake->GetTrueDepthScale(), 0.0);
+  EXPECT_EQ(cones->GetOutput()->GetFieldData()->GetArray("MesolightDepthScale")->GetComponent(0, 0),
+    bake->GetOutput()->GetFieldData()->GetArray("MesolightDepthScale")->GetComponent(0, 0));
+  relief = bake->GetOutput()->GetPointData()->GetScalars();
+  packed = cones->GetOutput()->GetPointData()->GetScalars();
+  for (vtkIdType k = 0; k < w * h; ++k)
+  {
+    ASSERT_FLOAT_EQ(static_cast<float>(packed->GetComponent(k, 0)),
+      static_cast<float>(relief->GetComponent(k, 0)))
+      << "texel " << k;
+  }
+  cones->UseTrueDepthScaleOff();
+  bake->UseTrueDepthScaleOff();
+
   // The same raster as cells of a grid one point larger, the holes hidden: the cone map is that
   // of the relief filter's corner means, not refused for want of point scalars.
   vtkNew<vtkImageData> cellsRaster;
