@@ -414,9 +414,10 @@ int vtkReliefTextureFilter::Execute(
   this->TrueDepthScale = 0.0;
   vtkDataArray* pixelSize =
     vtkDataArray::SafeDownCast(input->GetFieldData()->GetAbstractArray("MesolightPixelSize"));
-  if (this->NormalizeRange && pixelSize && pixelSize->GetNumberOfTuples() == 1 &&
+  const bool validPixelSize = pixelSize && pixelSize->GetNumberOfTuples() == 1 &&
     pixelSize->GetNumberOfComponents() == 2 && pixelSize->GetComponent(0, 0) > 0.0 &&
-    maxValue > minValue)
+    std::isfinite(pixelSize->GetComponent(0, 0));
+  if (this->NormalizeRange && validPixelSize && maxValue > minValue)
   {
     this->TrueDepthScale = (maxValue - minValue) / (w * pixelSize->GetComponent(0, 0));
   }
@@ -425,12 +426,23 @@ int vtkReliefTextureFilter::Execute(
     vtkErrorMacro("UseTrueDepthScale (ParaView: Use True Depth Scale; mesolight: "
                   "--vertical-exaggeration) needs "
       << (!this->NormalizeRange ? "NormalizeRange on (elevations in metres)"
-                                : (pixelSize ? "elevations that vary"
-                                             : "an image that carries its pixel size on the "
-                                               "ground, as the Mesolight Image Reader "
-                                               "(vtkOIIOImageReader) gives it for a GeoTIFF or "
-                                               "an SRTM tile; this one carries none"))
+             : !pixelSize       ? "an image that carries its pixel size on the ground, as the "
+                                  "Mesolight Image Reader (vtkOIIOImageReader) gives it for a "
+                                  "GeoTIFF or an SRTM tile; this one carries none"
+             : !validPixelSize  ? "a positive, finite pixel size (MesolightPixelSize: two values)"
+                                : "elevations that vary")
       << ". Set the depth scale instead.");
+    return 0;
+  }
+  // A pixel size far too small for the elevations (a corrupt georeference) would give a relief
+  // hundreds of times deeper than wide: refused, as DepthScale is clamped to 100.
+  if (this->UseTrueDepthScale && this->TrueDepthScale * this->VerticalExaggeration > 100.0)
+  {
+    vtkErrorMacro("The true vertical scale times VerticalExaggeration is a depth scale of "
+      << this->TrueDepthScale * this->VerticalExaggeration << " (" << maxValue - minValue
+      << " of elevation over " << w << " pixels of " << pixelSize->GetComponent(0, 0)
+      << " m), above 100: the image's pixel size or its elevations' unit cannot be right. "
+         "Set the depth scale instead.");
     return 0;
   }
   this->AppliedDepthScale =

@@ -413,6 +413,22 @@ TEST(vtkReliefTextureFilter, TrueDepthScaleOfAGeoreferencedElevationMap)
   filter->Update();
   EXPECT_TRUE(capture->HasError("carries its pixel size on the ground")) << capture->AllErrors();
   EXPECT_EQ(filter->GetTrueDepthScale(), 0.0);
+  // A corrupt pixel size: not finite, or so small that the relief would be hundreds of times
+  // deeper than wide. Refused, no output.
+  for (const double bad : { std::numeric_limits<double>::infinity(), 1e-6 })
+  {
+    vtkNew<vtkDoubleArray> corrupt;
+    corrupt->SetName("MesolightPixelSize");
+    corrupt->SetNumberOfComponents(2);
+    corrupt->InsertNextTuple2(bad, bad);
+    dem->GetFieldData()->AddArray(corrupt);
+    dem->Modified();
+    capture->Errors.clear();
+    filter->Update();
+    EXPECT_FALSE(capture->Errors.empty()) << bad;
+    EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), 0) << bad;
+  }
+  EXPECT_TRUE(capture->HasError("above 100")) << capture->AllErrors();
 }
 
 TEST(vtkReliefTextureFilter, NonFiniteValuesAreRejected)
