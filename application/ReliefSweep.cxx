@@ -10,6 +10,7 @@
 #include "vtkOIIOImageWriter.h"
 #include "vtkProceduralReliefSource.h"
 #include "vtkReliefMapper.h"
+#include "vtkReliefPlaneFilter.h"
 #include "vtkReliefProperty.h"
 
 #if __has_include("vtkConeMapFilter.h")
@@ -446,11 +447,13 @@ bool RunReliefSweep(
     for (double angle : settings.Angles)
     {
       o.ViewAngle = angle;
-      SetupCameraAndLights(o, relief.Renderer);
+      SetupCameraAndLights(
+        o, relief.Renderer, vtkReliefPlaneFilter::GetGroundProportions(relief.ReliefTexture));
       Frame denseFrame;
       if (settings.DenseMesh)
       {
-        SetupCameraAndLights(o, dense.Renderer);
+        SetupCameraAndLights(
+          o, dense.Renderer, vtkReliefPlaneFilter::GetGroundProportions(relief.ReliefTexture));
         denseFrame = CaptureFrame(denseWindow);
       }
       ReliefReference reference;

@@ -6,6 +6,8 @@
 #include "HeightFieldTracer.h"
 #include "ImageCompare.h"
 #include "ReliefReference.h"
+#include "ReliefScene.h"
+#include "vtkReliefPlaneFilter.h"
 
 #include "EnvironmentMaps.h"
 
@@ -96,7 +98,8 @@ glm::dvec3 SampleNormal(vtkDataArray* rgba, int w, int h, double u, double v)
 struct ReferenceSetup
 {
   int Dims[3] = { 0, 0, 0 };
-  double Aspect = 1.0;
+  double TexelAspect = 1.0; // rows / columns: how the baked normals are encoded
+  double Aspect = 1.0;      // the wall's height for a width of 1 (its ground proportions)
   double DepthScale = 1.0;
   vtkDataArray* Rgba = nullptr;
   bool ConePacked = false; // vtkConeMapFilter's packing: normal x, y in RG, cone ratio in B
@@ -108,7 +111,8 @@ struct ReferenceSetup
     , ConePacked(relief->GetFieldData()->GetAbstractArray("MesolightConeType") != nullptr)
   {
     relief->GetDimensions(this->Dims);
-    this->Aspect = static_cast<double>(this->Dims[1]) / this->Dims[0];
+    this->TexelAspect = static_cast<double>(this->Dims[1]) / this->Dims[0];
+    this->Aspect = vtkReliefPlaneFilter::GetGroundProportions(relief);
     this->Depth.resize(static_cast<size_t>(this->Dims[0]) * this->Dims[1]);
     for (size_t i = 0; i < this->Depth.size(); ++i)
     {
@@ -165,7 +169,7 @@ struct ReferenceSetup
     // Depth gradient from the baked normal (depth scale k), then the world normal of the
     // surface (u, aspect v, -k d): Pu x Pv.
     const glm::dvec2 g(
-      nt.x / (nz * this->DepthScale), nt.y * this->Aspect / (nz * this->DepthScale));
+      nt.x / (nz * this->DepthScale), nt.y * this->TexelAspect / (nz * this->DepthScale));
     return glm::normalize(
       glm::dvec3(this->DepthScale * this->Aspect * g.x, this->DepthScale * g.y, this->Aspect));
   }

@@ -6,6 +6,7 @@
 #include "ImageCompare.h"
 #include "ReliefScene.h"
 #include "vtkMinDepthPyramidTexture.h"
+#include "vtkReliefPlaneFilter.h"
 
 #include <vtkCamera.h>
 #include <vtkDataArray.h>
@@ -32,8 +33,7 @@ namespace mesolight
 //------------------------------------------------------------------------------
 void ReliefReference::HitPosition(size_t p, double position[3]) const
 {
-  const double aspect =
-    this->TextureWidth > 0 ? double(this->TextureHeight) / this->TextureWidth : 1.0;
+  const double aspect = this->WallHeight;
   position[0] = this->HitU[p];
   position[1] = this->HitV[p] * aspect;
   position[2] = -this->HitD[p] * this->DepthScale;
@@ -145,6 +145,7 @@ bool ComputeReliefReference(
   reference.Height = H;
   reference.TextureWidth = tw;
   reference.TextureHeight = th;
+  reference.WallHeight = vtkReliefPlaneFilter::GetGroundProportions(input.Relief);
   reference.DepthScale = input.DepthScale;
   reference.State.assign(pixels, ReliefReference::OutsideFootprint);
   reference.HitU.assign(pixels, 0.0);
@@ -167,7 +168,8 @@ bool ComputeReliefReference(
   double view[16];
   vtkMatrix4x4::DeepCopy(view, input.Camera->GetViewTransformMatrix());
 
-  const double aspect = double(th) / tw; // wall height / width
+  const double aspect =
+    vtkReliefPlaneFilter::GetGroundProportions(input.Relief); // wall height / width
   const double s = input.DepthScale;
   const double uLow = 0.5 / tw, uHigh = 1.0 - 0.5 / tw;
   const double vLow = 0.5 / th, vHigh = 1.0 - 0.5 / th;

@@ -63,6 +63,7 @@ struct MESOLIGHTEVALUATION_EXPORT ReliefReference
   int Height = 0;
   int TextureWidth = 0; // texels
   int TextureHeight = 0;
+  double WallHeight = 1.0; // for a width of 1 (the texture's ground proportions)
   double DepthScale = 0.0;
   std::vector<unsigned char> State;
   std::vector<double> HitU; // texture coordinates of the first hit

@@ -10,6 +10,7 @@
 #include "vtkProceduralEnvironmentSource.h"
 #include "vtkProceduralReliefSource.h"
 #include "vtkReliefMapper.h"
+#include "vtkReliefPlaneFilter.h"
 #include "vtkReliefTextureFilter.h"
 
 #include <vtkActor.h>
@@ -43,21 +44,13 @@ namespace mesolight
 {
 namespace
 {
-// The wall spans [0,1] x [0, H/W] in the z = 0 plane, facing +z.
-double WallHeight(vtkImageData* relief)
-{
-  int dims[3];
-  relief->GetDimensions(dims);
-  return dims[0] > 0 ? static_cast<double>(dims[1]) / dims[0] : 1.0;
-}
-
 // The coarse wall: a few quads spanning the texel centres of the relief texture, exactly the
 // extent of the dense reference mesh (one vertex per texel centre), with u,v = texture position.
 vtkSmartPointer<vtkPolyData> MakeWall(vtkImageData* relief)
 {
   int dims[3];
   relief->GetDimensions(dims);
-  const double h = WallHeight(relief);
+  const double h = vtkReliefPlaneFilter::GetGroundProportions(relief);
   const double du = 0.5 / dims[0], dv = 0.5 / dims[1];
   vtkNew<vtkPlaneSource> plane;
   plane->SetOrigin(du, dv * h, 0.0);
@@ -104,7 +97,8 @@ void FinishScene(const ReliefSceneOptions& options, vtkMapper* mapper, ReliefSce
   ApplyMaterial(scene.Actor);
   scene.Renderer = vtkSmartPointer<vtkRenderer>::New();
   scene.Renderer->AddActor(scene.Actor);
-  SetupCameraAndLights(options, scene.Renderer);
+  SetupCameraAndLights(
+    options, scene.Renderer, vtkReliefPlaneFilter::GetGroundProportions(scene.ReliefTexture));
 }
 
 void ApplyMaterial(vtkActor* actor)
@@ -310,14 +304,13 @@ static void FillViewportWithWall(vtkCamera* camera, double height, double depthS
 }
 
 //------------------------------------------------------------------------------
-void SetupCameraAndLights(const ReliefSceneOptions& options, vtkRenderer* renderer)
+void SetupCameraAndLights(const ReliefSceneOptions& options, vtkRenderer* renderer, double height)
 {
   // Aim at the wall's centre from ViewAngle off its normal, turned by ViewAzimuth about it.
-  const double height = 1.0; // scenes are square unless a file says otherwise: close enough
   const double centre[3] = { 0.5, 0.5 * height, 0.0 };
   const double a = vtkMath::RadiansFromDegrees(options.ViewAngle);
   const double b = vtkMath::RadiansFromDegrees(options.ViewAzimuth);
-  const double d = options.ViewDistance;
+  const double d = options.ViewDistance * std::max(1.0, height); // the whole of a tall wall in view
   vtkCamera* camera = renderer->GetActiveCamera();
   camera->SetFocalPoint(centre);
   camera->SetPosition(centre[0] + d * std::sin(a) * std::sin(b),
@@ -459,7 +452,8 @@ bool BuildDenseReferenceScene(
   dense->SetInputData(scene.ReliefTexture);
   dense->SetOrigin(0.0, 0.0, 0.0);
   dense->SetPoint1(1.0, 0.0, 0.0);
-  dense->SetPoint2(0.0, WallHeight(scene.ReliefTexture), 0.0);
+  dense->SetPoint2(0.0, vtkReliefPlaneFilter::GetGroundProportions(scene.ReliefTexture), 0.0);
+  dense->SquareTexelsOff(); // the wall's own proportions, as the relief's (a map's on the ground)
   dense->UseInputDepthScaleOff();
   dense->SetDepthScale(options.DepthScale);
   dense->Update();

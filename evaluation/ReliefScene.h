@@ -55,7 +55,7 @@ struct ReliefSceneOptions
   int Height = 800;
   double ViewAngle = 55.0; // camera angle from the wall's normal, degrees
   double ViewAzimuth = 20.0;
-  double ViewDistance = 2.6; // in wall widths
+  double ViewDistance = 2.6; // in wall widths (heights for a wall taller than wide)
   // Stretch and centre the projection so the wall's footprint (relief depth included) fills the
   // viewport: at grazing angles the wall is otherwise a thin strip of the frame, and a frame time
   // would measure mostly the fixed per-frame cost, not the march. Pixels are then not square.
@@ -113,9 +113,13 @@ MESOLIGHTEVALUATION_EXPORT bool BuildDenseReferenceScene(
 MESOLIGHTEVALUATION_EXPORT bool BuildTexturedPlaneScene(
   const ReliefSceneOptions& options, ReliefScene& scene, std::string& error);
 
-/** Places camera and lights as the options say; every scene variant uses this. */
+/**
+ * Places camera and lights as the options say, aimed at the middle of a wall `wallHeight` high
+ * for a width of 1 (the relief texture's vtkReliefPlaneFilter::GetGroundProportions, as every
+ * scene variant and the CPU references take it); every scene variant uses this.
+ */
 MESOLIGHTEVALUATION_EXPORT void SetupCameraAndLights(
-  const ReliefSceneOptions& options, vtkRenderer* renderer);
+  const ReliefSceneOptions& options, vtkRenderer* renderer, double wallHeight = 1.0);
 
 /** An offscreen window of the options' size holding the renderer. */
 MESOLIGHTEVALUATION_EXPORT vtkSmartPointer<vtkRenderWindow> MakeOffscreenWindow(

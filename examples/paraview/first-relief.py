@@ -68,7 +68,8 @@ if "MesolightTrueDepthScale" in relief.FieldData.keys():
     drawn = relief.FieldData["MesolightDepthScale"].GetRange()[0]
     print("%s is georeferenced: its true vertical scale is depth scale %.3g; drawn at %.3g, %.3g "
           "times exaggerated" % (args.depth, true_scale, drawn, drawn / true_scale))
-plane = Plane()
+# A plane in the map's proportions (a georeferenced map's on the ground), not the square Plane.
+plane = MesolightReliefPlane(Input=relief)
 attached = MesolightAttachReliefTexture(Input=plane, ReliefTexture=relief)
 if args.environment:
     lights = MesolightMedianCutLights(Input=open_image(args.environment))

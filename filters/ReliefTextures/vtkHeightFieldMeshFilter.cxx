@@ -169,13 +169,17 @@ int vtkHeightFieldMeshFilter::RequestData(
   }
   double t[3] = { a[0] / width, a[1] / width, a[2] / width };
   double bn[3] = { b[0] / lengthB, b[1] / lengthB, b[2] / lengthB };
+  const double squareLengthB = width * static_cast<double>(h) / static_cast<double>(w);
   if (this->SquareTexels)
   {
-    lengthB = width * static_cast<double>(h) / static_cast<double>(w);
+    lengthB = squareLengthB;
     b[0] = bn[0] * lengthB;
     b[1] = bn[1] * lengthB;
     b[2] = bn[2] * lengthB;
   }
+  // The normals are baked for square texels; texels stretched along v (a
+  // geographic map on its ground proportions) make every slope along v that much gentler.
+  const double normalRatioV = normalRatio * squareLengthB / lengthB;
   const double displacement = depthScale * width;
 
   if (w == 1 || h == 1)
@@ -223,7 +227,7 @@ int vtkHeightFieldMeshFilter::RequestData(
           static_cast<float>(origin[c] + u * a[c] + v * b[c] - nrm[c] * d * displacement);
       }
       // Unpack the tangent-space normal and bring it to world space.
-      double tn[3] = { (2.0 * texel[0] - 1.0) * normalRatio, (2.0 * texel[1] - 1.0) * normalRatio,
+      double tn[3] = { (2.0 * texel[0] - 1.0) * normalRatio, (2.0 * texel[1] - 1.0) * normalRatioV,
         2.0 * texel[2] - 1.0 };
       double wn[3];
       for (int c = 0; c < 3; ++c)

@@ -19,7 +19,9 @@
  * By default (SquareTexels on) the length of Point2 - Origin is set to
  * |Point1 - Origin| * H / W, keeping its direction, so texels are square as the DepthScale
  * convention assumes; the default plane is then the unit-wide rectangle (0,0,0), (1,0,0),
- * (0, H/W, 0) in z = 0.
+ * (0, H/W, 0) in z = 0. With SquareTexels off Point2 is used as given: texels stretched
+ * along v (a georeferenced map on its ground proportions) get normals with their slopes along v
+ * scaled to match.
  *
  * The depth scale: when UseInputDepthScale is on (default) and the input field data holds
  * "MesolightDepthScale", that value is used; otherwise DepthScale. When the scale used

@@ -505,6 +505,16 @@ int vtkReliefTextureFilter::Execute(
   scaleArray->SetNumberOfTuples(1);
   scaleArray->SetValue(0, depthScale);
   output->GetFieldData()->AddArray(scaleArray);
+  if (validPixelSize && pixelSize->GetComponent(0, 1) > 0.0 &&
+    std::isfinite(pixelSize->GetComponent(0, 1)))
+  {
+    // The texels' size on the ground, for the surface the relief is drawn on: a geographic
+    // raster's pixels are not square (vtkReliefPlaneFilter).
+    vtkNew<vtkDoubleArray> groundSize;
+    groundSize->DeepCopy(pixelSize);
+    groundSize->SetName("MesolightPixelSize");
+    output->GetFieldData()->AddArray(groundSize);
+  }
   if (this->TrueDepthScale > 0.0)
   {
     vtkNew<vtkDoubleArray> trueScale;

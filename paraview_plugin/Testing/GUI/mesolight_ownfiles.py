@@ -123,6 +123,14 @@ def only_relief_framed(min_span=0.5):
 
 
 @x._guarded
+def attached_to(expected):
+    """The proxy type of Attach Relief Texture's Input (the surface the relief is drawn on)."""
+    surface = x.source("MesolightAttachReliefTexture").Input
+    name = surface.GetXMLName() if surface is not None else None
+    x._check(name == expected, "Attach Relief Texture's Input: %s (expected %s)" % (name, expected))
+
+
+@x._guarded
 def light_set_port(expected):
     """Attach Relief Texture's Light Set: the producer's output port (1: LightTexture)."""
     prop = x.source("MesolightAttachReliefTexture").LightSet

@@ -209,6 +209,23 @@ if srtm is not None:
           % (drawn, 2 * true_scale))
     check(abs(fields.GetArray("MesolightTrueDepthScale").GetValue(0) - true_scale) < 1e-9,
           "the true depth scale travels with the texture")
+    # Relief Plane: the tile on its ground proportions, cos(49.5 degrees) as wide as tall (its
+    # pixels are a degree / (W - 1) of longitude by one of latitude); Sources > Plane is square.
+    plane = pvs.MesolightReliefPlane(Input=relief)
+    plane.UpdatePipeline()
+    bounds = plane.GetDataInformation().GetBounds()
+    width, height = bounds[1] - bounds[0], bounds[3] - bounds[2]
+    print("Relief Plane of the tile: %.4f x %.4f" % (width, height))
+    check(abs(width - 1.0) < 1e-6 and abs(height - 1.0 / np.cos(np.radians(49.5))) < 1e-5,
+          "Relief Plane: 1 x %.4f (expected 1 x %.4f, the tile's ground proportions)"
+          % (height, 1.0 / np.cos(np.radians(49.5))))
+    # Without a georeference (the int16 DEM above): its texels' proportions, H / W.
+    plain = pvs.MesolightReliefPlane(Input=reader)
+    plain.UpdatePipeline()
+    bounds = plain.GetDataInformation().GetBounds()
+    check(abs(bounds[3] - bounds[2] - H / W) < 1e-6,
+          "Relief Plane without a georeference: 1 x %.4f (expected 1 x %.4f)"
+          % (bounds[3] - bounds[2], H / W))
 
 if failures:
     print("FAILED: " + "; ".join(failures))

@@ -26,34 +26,10 @@ namespace
 {
 using namespace mesolight;
 
-// Renders the relief variant and the dense reference of the same options and compares them.
-// `lights`, when given, replaces the lights of both scenes.
 FrameDifference CompareWithDenseMesh(const ReliefSceneOptions& options, const std::string& tag,
   const std::function<void(vtkRenderer*)>& lights = {})
 {
-  std::string error;
-  ReliefScene dense, relief, coarse;
-  EXPECT_TRUE(BuildDenseReferenceScene(options, dense, error)) << error;
-  EXPECT_TRUE(BuildReliefScene(options, relief, error)) << error;
-  EXPECT_TRUE(BuildTexturedPlaneScene(options, coarse, error)) << error;
-  if (lights)
-  {
-    lights(dense.Renderer);
-    lights(relief.Renderer);
-  }
-  auto coarseWindow = MakeOffscreenWindow(options, coarse.Renderer);
-  const Frame footprint = CaptureFrame(coarseWindow);
-  auto denseWindow = MakeOffscreenWindow(options, dense.Renderer);
-  const Frame reference = CaptureFrame(denseWindow);
-  auto reliefWindow = MakeOffscreenWindow(options, relief.Renderer);
-  const Frame frame = CaptureFrame(reliefWindow);
-  WritePng(reference, test::OutputPath(tag + "-dense.png").c_str());
-  WritePng(frame, test::OutputPath(tag + "-relief.png").c_str());
-  // Depth tolerance: 5% of the relief's world depth.
-  const FrameDifference d = CompareFrames(frame, reference, 0.05 * options.DepthScale, &footprint);
-  std::cout << "[" << tag << "] mean colour error " << d.MeanColorError << " levels, PSNR "
-            << d.Psnr << " dB, silhouette mismatch " << d.SilhouetteMismatch << "%, depth mismatch "
-            << d.DepthMismatch << "%, mean depth error " << d.MeanDepthError << std::endl;
+  const FrameDifference d = test::CompareWithDenseMesh(options, tag, lights);
   EXPECT_GT(d.CoveredBoth, options.Width * options.Height / 4) << "the wall should fill the view";
   return d;
 }

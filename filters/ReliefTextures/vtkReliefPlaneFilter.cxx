@@ -1,0 +1,111 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "vtkReliefPlaneFilter.h"
+
+#include "vtkCellArray.h"
+#include "vtkDataArray.h"
+#include "vtkFieldData.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+
+#include <cmath>
+
+vtkStandardNewMacro(vtkReliefPlaneFilter);
+
+//------------------------------------------------------------------------------
+vtkReliefPlaneFilter::vtkReliefPlaneFilter()
+{
+  this->SetNumberOfInputPorts(1);
+  this->SetNumberOfOutputPorts(1);
+}
+
+//------------------------------------------------------------------------------
+int vtkReliefPlaneFilter::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkImageData");
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+double vtkReliefPlaneFilter::GetGroundProportions(vtkImageData* image)
+{
+  int dims[3] = { 0, 0, 0 };
+  if (image)
+  {
+    image->GetDimensions(dims);
+  }
+  if (dims[0] < 1 || dims[1] < 1)
+  {
+    return 1.0;
+  }
+  double proportions = static_cast<double>(dims[1]) / dims[0];
+  vtkDataArray* ground = image->GetFieldData()->GetArray("MesolightPixelSize");
+  if (ground && ground->GetNumberOfTuples() == 1 && ground->GetNumberOfComponents() == 2)
+  {
+    const double along = ground->GetComponent(0, 0), across = ground->GetComponent(0, 1);
+    if (along > 0.0 && across > 0.0 && std::isfinite(along) && std::isfinite(across))
+    {
+      proportions *= across / along;
+    }
+  }
+  return proportions;
+}
+
+//------------------------------------------------------------------------------
+int vtkReliefPlaneFilter::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkImageData* image = vtkImageData::GetData(inputVector[0], 0);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  if (!image || !output)
+  {
+    vtkErrorMacro("No input image.");
+    return 0;
+  }
+  if (image->GetNumberOfPoints() < 1)
+  {
+    vtkErrorMacro("The input image is empty: it has no texels to take the plane's proportions "
+                  "from.");
+    return 0;
+  }
+  const double x = 0.5 * this->Width;
+  const double y = 0.5 * this->Width * GetGroundProportions(image);
+  vtkNew<vtkPoints> points;
+  points->InsertNextPoint(-x, -y, 0.0);
+  points->InsertNextPoint(x, -y, 0.0);
+  points->InsertNextPoint(x, y, 0.0);
+  points->InsertNextPoint(-x, y, 0.0);
+  vtkNew<vtkCellArray> quad;
+  const vtkIdType corners[4] = { 0, 1, 2, 3 };
+  quad->InsertNextCell(4, corners);
+  vtkNew<vtkFloatArray> tcoords;
+  tcoords->SetName("TextureCoordinates");
+  tcoords->SetNumberOfComponents(2);
+  vtkNew<vtkFloatArray> normals;
+  normals->SetName("Normals");
+  normals->SetNumberOfComponents(3);
+  const float uv[4][2] = { { 0.f, 0.f }, { 1.f, 0.f }, { 1.f, 1.f }, { 0.f, 1.f } };
+  for (const auto& c : uv)
+  {
+    tcoords->InsertNextTuple2(c[0], c[1]);
+    normals->InsertNextTuple3(0.0, 0.0, 1.0);
+  }
+  output->SetPoints(points);
+  output->SetPolys(quad);
+  output->GetPointData()->SetTCoords(tcoords);
+  output->GetPointData()->SetNormals(normals);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkReliefPlaneFilter::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Width: " << this->Width << "\n";
+}
