@@ -116,6 +116,8 @@ int vtkOIIOImageReader::RequestInformation(
     this->NoDataValue = 0.0;
     this->HasPixelSize = false;
     this->PixelSize[0] = this->PixelSize[1] = 0.0;
+    this->HasElevationUnit = false;
+    this->ElevationUnit = 1.0;
     return 0;
   }
   if (header.FileChannels > 4)
@@ -132,6 +134,8 @@ int vtkOIIOImageReader::RequestInformation(
   this->HasPixelSize = header.HasPixelSize;
   this->PixelSize[0] = header.PixelSizeX;
   this->PixelSize[1] = header.PixelSizeY;
+  this->HasElevationUnit = header.HasElevationUnit;
+  this->ElevationUnit = header.ElevationUnit;
 
   const int extent[6] = { 0, header.Width - 1, 0, header.Height - 1, 0, 0 };
   const double origin[3] = { 0.0, 0.0, 0.0 };
@@ -209,6 +213,13 @@ int vtkOIIOImageReader::RequestData(
     pixelSize->InsertNextTuple2(header.PixelSizeX, header.PixelSizeY);
     output->GetFieldData()->AddArray(pixelSize);
   }
+  if (header.HasElevationUnit)
+  {
+    vtkNew<vtkDoubleArray> unit;
+    unit->SetName("MesolightElevationUnit");
+    unit->InsertNextValue(header.ElevationUnit);
+    output->GetFieldData()->AddArray(unit);
+  }
   // NaN is how geometry images mark holes: counted for the consumers that refuse it, not warned.
   if (header.Type == mesolight::ImageSampleType::Float)
   {
@@ -233,4 +244,6 @@ void vtkOIIOImageReader::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NoDataValue: " << this->NoDataValue << "\n";
   os << indent << "HasPixelSize: " << (this->HasPixelSize ? "true" : "false") << "\n";
   os << indent << "PixelSize: " << this->PixelSize[0] << " x " << this->PixelSize[1] << " m\n";
+  os << indent << "HasElevationUnit: " << (this->HasElevationUnit ? "true" : "false") << "\n";
+  os << indent << "ElevationUnit: " << this->ElevationUnit << " m\n";
 }

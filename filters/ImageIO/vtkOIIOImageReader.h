@@ -110,6 +110,17 @@ public:
   vtkGetVector2Macro(PixelSize, double);
   ///@}
 
+  ///@{
+  /**
+   * Whether the last file read names its values' unit (a GeoTIFF's VerticalUnitsGeoKey), and
+   * how many metres one is (1, or 0.3048 for feet; 0 for a unit that is neither). Also the field
+   * data array "MesolightElevationUnit", which vtkReliefTextureFilter's true vertical scale uses.
+   * Without it, elevations are taken to be in metres.
+   */
+  vtkGetMacro(HasElevationUnit, bool);
+  vtkGetMacro(ElevationUnit, double);
+  ///@}
+
 protected:
   vtkOIIOImageReader();
   ~vtkOIIOImageReader() override;
@@ -127,6 +138,8 @@ protected:
   double NoDataValue = 0.0;
   bool HasPixelSize = false;
   double PixelSize[2] = { 0.0, 0.0 };
+  bool HasElevationUnit = false;
+  double ElevationUnit = 1.0;
 
 private:
   vtkOIIOImageReader(const vtkOIIOImageReader&) = delete;

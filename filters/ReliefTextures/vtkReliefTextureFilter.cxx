@@ -417,9 +417,17 @@ int vtkReliefTextureFilter::Execute(
   const bool validPixelSize = pixelSize && pixelSize->GetNumberOfTuples() == 1 &&
     pixelSize->GetNumberOfComponents() == 2 && pixelSize->GetComponent(0, 0) > 0.0 &&
     std::isfinite(pixelSize->GetComponent(0, 0));
-  if (this->NormalizeRange && validPixelSize && maxValue > minValue)
+  // The elevations' unit, where the file names it (a GeoTIFF's VerticalUnitsGeoKey: feet are
+  // 0.3048 m); metres otherwise.
+  vtkDataArray* unitArray =
+    vtkDataArray::SafeDownCast(input->GetFieldData()->GetAbstractArray("MesolightElevationUnit"));
+  const double elevationUnit =
+    unitArray && unitArray->GetNumberOfValues() == 1 ? unitArray->GetComponent(0, 0) : 1.0;
+  const bool validUnit = elevationUnit > 0.0 && std::isfinite(elevationUnit);
+  if (this->NormalizeRange && validPixelSize && validUnit && maxValue > minValue)
   {
-    this->TrueDepthScale = (maxValue - minValue) / (w * pixelSize->GetComponent(0, 0));
+    this->TrueDepthScale =
+      (maxValue - minValue) * elevationUnit / (w * pixelSize->GetComponent(0, 0));
   }
   if (this->UseTrueDepthScale && this->TrueDepthScale <= 0.0)
   {
@@ -430,6 +438,8 @@ int vtkReliefTextureFilter::Execute(
                                   "Mesolight Image Reader (vtkOIIOImageReader) gives it for a "
                                   "GeoTIFF or an SRTM tile; this one carries none"
              : !validPixelSize  ? "a positive, finite pixel size (MesolightPixelSize: two values)"
+             : !validUnit       ? "elevations in metres or feet; the file names another unit "
+                                  "(MesolightElevationUnit, from a GeoTIFF's VerticalUnitsGeoKey)"
                                 : "elevations that vary")
       << ". Set the depth scale instead.");
     return 0;
@@ -439,8 +449,9 @@ int vtkReliefTextureFilter::Execute(
   if (this->UseTrueDepthScale && this->TrueDepthScale * this->VerticalExaggeration > 100.0)
   {
     vtkErrorMacro("The true vertical scale times VerticalExaggeration is a depth scale of "
-      << this->TrueDepthScale * this->VerticalExaggeration << " (" << maxValue - minValue
-      << " of elevation over " << w << " pixels of " << pixelSize->GetComponent(0, 0)
+      << this->TrueDepthScale * this->VerticalExaggeration << " ("
+      << (maxValue - minValue) * elevationUnit << " m of elevation over " << w << " pixels of "
+      << pixelSize->GetComponent(0, 0)
       << " m), above 100: the image's pixel size or its elevations' unit cannot be right. "
          "Set the depth scale instead.");
     return 0;

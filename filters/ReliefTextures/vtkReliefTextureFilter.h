@@ -66,10 +66,12 @@ public:
    * not DepthScale but TrueDepthScale times VerticalExaggeration, where TrueDepthScale is the
    * elevations' range over the map's width on the ground, (max - min) / (W * pixel width), both
    * in metres: the relief is then as deep, relative to its width, as the terrain is (times the
-   * exaggeration). It needs NormalizeRange (the range is the stored values', taken as metres) and
-   * an image that carries a pixel's size on the ground (the field data array
-   * "MesolightPixelSize", metres along rows and columns, which vtkOIIOImageReader gives for a
-   * GeoTIFF and an SRTM tile); without them the filter fails with an error. Defaults: off, 1.
+   * exaggeration). It needs NormalizeRange (the range is the stored values', in metres, or in
+   * the unit the field data array "MesolightElevationUnit" gives in metres: vtkOIIOImageReader's
+   * for a GeoTIFF that names its vertical unit, e.g. feet) and an image that carries a pixel's
+   * size on the ground (the field data array "MesolightPixelSize", metres along rows and
+   * columns, which vtkOIIOImageReader gives for a GeoTIFF and an SRTM tile); without them the
+   * filter fails with an error. Defaults: off, 1.
    */
   vtkSetMacro(UseTrueDepthScale, bool);
   vtkGetMacro(UseTrueDepthScale, bool);

@@ -238,6 +238,13 @@ constexpr unsigned GeoKeyDirectoryTag = 34735;
 constexpr unsigned GTModelTypeGeoKey = 1024; // 1 projected, 2 geographic
 constexpr unsigned GeogAngularUnitsGeoKey = 2054;
 constexpr unsigned ProjLinearUnitsGeoKey = 3076;
+constexpr unsigned VerticalUnitsGeoKey = 4099;
+
+// Metres per unit of an EPSG linear unit code: metre, foot, US survey foot; 0 for others.
+double MetresPerLinearUnit(double code)
+{
+  return code == 9001 ? 1.0 : code == 9002 ? 0.3048 : code == 9003 ? 1200.0 / 3937.0 : 0.0;
+}
 
 std::optional<GeoPixelSize> FindPixelSize(const ReadAt& read, int height)
 {
@@ -298,27 +305,36 @@ std::optional<GeoPixelSize> FindPixelSize(const ReadAt& read, int height)
   {
     return std::nullopt;
   }
+  std::optional<GeoPixelSize> size;
   if (*modelType == 1)
   {
     // Projected: metres, unless the linear unit is a foot (EPSG 9002, 9003).
-    const double unit = key(ProjLinearUnitsGeoKey).value_or(9001.0);
-    const double metres = unit == 9001 ? 1.0
-      : unit == 9002                   ? 0.3048
-      : unit == 9003                   ? 1200.0 / 3937.0
-                                       : 0.0;
+    const double metres = MetresPerLinearUnit(key(ProjLinearUnitsGeoKey).value_or(9001.0));
     if (metres == 0.0)
     {
       return std::nullopt;
     }
-    return GeoPixelSize{ sx * metres, sy * metres, false };
+    size = GeoPixelSize{ sx * metres, sy * metres, false };
   }
   // Geographic: degrees (EPSG 9102, the default), at the raster's middle latitude.
-  if (key(GeogAngularUnitsGeoKey).value_or(9102.0) != 9102.0 ||
+  else if (key(GeogAngularUnitsGeoKey).value_or(9102.0) != 9102.0 ||
     (tiepoint.size() < 6 && matrix.size() < 16))
   {
     return std::nullopt;
   }
-  return GeographicPixelSize(sx, sy, middleY);
+  else
+  {
+    size = GeographicPixelSize(sx, sy, middleY);
+  }
+  if (size)
+  {
+    if (const std::optional<double> vertical = key(VerticalUnitsGeoKey))
+    {
+      size->HasVerticalUnit = true;
+      size->VerticalUnit = MetresPerLinearUnit(*vertical);
+    }
+  }
+  return size;
 }
 } // namespace
 

@@ -40,6 +40,12 @@ struct GeoPixelSize
   double X = 0.0;
   double Y = 0.0;
   bool Geographic = false; ///< from degrees of longitude and latitude (else a projection's units)
+  /** Metres per unit of the raster's values where the file names their unit
+   *  (VerticalUnitsGeoKey: metres 1, feet 0.3048, US survey feet 1200 / 3937); 0 for a unit it
+   *  names but that is not one of those. Without the key the values' unit is not known (GDAL
+   *  writes it only for a vertical datum): metres are the usual one. */
+  bool HasVerticalUnit = false;
+  double VerticalUnit = 1.0;
 };
 
 /**
@@ -49,7 +55,8 @@ struct GeoPixelSize
  * (ProjLinearUnitsGeoKey 9002, 9003) converted to metres; a geographic one (2) gives degrees,
  * converted at the raster's middle latitude (from the tie point and `height`, the raster's rows)
  * by GeographicPixelSize. Anything else (no GeoKeyDirectory, a geocentric or user-defined model,
- * other units, a corrupt tag) gives no size.
+ * other units, a corrupt tag) gives no size. The values' unit, where VerticalUnitsGeoKey names
+ * it, comes with the size (GeoPixelSize::VerticalUnit).
  */
 MESOLIGHTIMAGEIO_EXPORT std::optional<GeoPixelSize> ParseGeoTiffPixelSize(
   const unsigned char* data, std::size_t size, int height);

@@ -441,6 +441,8 @@ ImageFileInfo ReadImageFileInfo(const std::string& path, std::int64_t memoryBudg
       info.HasPixelSize = true;
       info.PixelSizeX = pixel->X;
       info.PixelSizeY = pixel->Y;
+      info.HasElevationUnit = pixel->HasVerticalUnit;
+      info.ElevationUnit = pixel->VerticalUnit;
     }
   }
   return info;

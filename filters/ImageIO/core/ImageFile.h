@@ -83,6 +83,10 @@ struct MESOLIGHTIMAGEIO_EXPORT ImageFileInfo
   bool HasPixelSize = false;
   double PixelSizeX = 0.0;
   double PixelSizeY = 0.0;
+  /** Metres per unit of the pixel values, where a georeferenced file names their unit
+   *  (GeoPixelSize::VerticalUnit; 0: a unit that is neither metres nor feet). */
+  bool HasElevationUnit = false;
+  double ElevationUnit = 1.0;
 
   /** 1, 2 or 4 bytes. */
   std::size_t SampleSize() const;

@@ -18,6 +18,7 @@
 #include <iterator>
 #include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace fs = std::filesystem;
@@ -174,6 +175,33 @@ TEST(GeoTiffPixelSize, ProjectedMetresAndFeet)
   EXPECT_FALSE(mesolight::ReadGeoTiffPixelSize(file.string(), 2).has_value());
   ASSERT_TRUE(mesolight_test::AddGeoTiffTags(file.string(), 10.0, 10.0, 0.0, 0.0, { { 1025, 1 } }));
   EXPECT_FALSE(mesolight::ReadGeoTiffPixelSize(file.string(), 2).has_value());
+}
+
+// The values' unit, where VerticalUnitsGeoKey names it: metres, feet, US survey feet; another
+// unit is named but not read (0); no key, no unit.
+TEST(GeoTiffPixelSize, VerticalUnits)
+{
+  const fs::path file = WriteInt16Tiff("vertical.tif");
+  ASSERT_TRUE(mesolight_test::AddGeoTiffTags(file.string(), 30.0, 25.0, 0.0, 0.0, { { 1024, 1 } }));
+  auto size = mesolight::ReadGeoTiffPixelSize(file.string(), 2);
+  ASSERT_TRUE(size.has_value());
+  EXPECT_FALSE(size->HasVerticalUnit);
+  EXPECT_EQ(size->VerticalUnit, 1.0);
+  const std::pair<std::uint16_t, double> units[] = { { 9001, 1.0 }, { 9002, 0.3048 },
+    { 9003, 1200.0 / 3937.0 }, { 9098, 0.0 } };
+  for (const auto& [code, metres] : units)
+  {
+    // Projected (a foot on the ground too: the vertical unit is its own key) and geographic.
+    for (const std::uint16_t model : { 1, 2 })
+    {
+      ASSERT_TRUE(mesolight_test::AddGeoTiffTags(file.string(), model == 1 ? 30.0 : 0.001,
+        model == 1 ? 25.0 : 0.001, 0.0, 45.0, { { 1024, model }, { 3076, 9002 }, { 4099, code } }));
+      size = mesolight::ReadGeoTiffPixelSize(file.string(), 2);
+      ASSERT_TRUE(size.has_value()) << code;
+      EXPECT_TRUE(size->HasVerticalUnit) << code;
+      EXPECT_EQ(size->VerticalUnit, metres) << code;
+    }
+  }
 }
 
 TEST(GeoTiffPixelSize, GeographicDegreesAtTheMiddleLatitude)

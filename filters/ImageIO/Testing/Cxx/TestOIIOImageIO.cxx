@@ -404,6 +404,19 @@ TEST(OIIOImageIO, GeoTiffPixelSizeComesWithTheImage)
   double spacing[3];
   reader->GetOutput()->GetSpacing(spacing);
   EXPECT_EQ(spacing[0], 1.0); // the image itself is unchanged
+  // No vertical unit named: none passed on (metres are assumed downstream).
+  EXPECT_FALSE(reader->GetHasElevationUnit());
+  EXPECT_EQ(reader->GetOutput()->GetFieldData()->GetArray("MesolightElevationUnit"), nullptr);
+  // Elevations in feet (VerticalUnitsGeoKey 9002).
+  ASSERT_TRUE(mesolight_test::AddGeoTiffTags(file.string(), 30.0, 25.0, 500000.0, 5000000.0,
+    { { 1024, 1 }, { 3076, 9001 }, { 4099, 9002 } }));
+  reader->Modified();
+  reader->Update();
+  EXPECT_TRUE(reader->GetHasElevationUnit());
+  EXPECT_EQ(reader->GetElevationUnit(), 0.3048);
+  vtkDataArray* unit = reader->GetOutput()->GetFieldData()->GetArray("MesolightElevationUnit");
+  ASSERT_NE(unit, nullptr);
+  EXPECT_EQ(unit->GetComponent(0, 0), 0.3048);
 }
 
 TEST(OIIOImageIO, RowOrderBottomRowIsLastInFile)

@@ -390,6 +390,29 @@ TEST(vtkReliefTextureFilter, TrueDepthScaleOfAGeoreferencedElevationMap)
       }
     }
   }
+  // Elevations in feet (the file's vertical unit, MesolightElevationUnit): 300 ft over 200 m.
+  vtkNew<vtkDoubleArray> feet;
+  feet->SetName("MesolightElevationUnit");
+  feet->InsertNextValue(0.3048);
+  dem->GetFieldData()->AddArray(feet);
+  dem->Modified();
+  filter->SetVerticalExaggeration(1.0);
+  filter->Update();
+  ASSERT_TRUE(capture->Errors.empty()) << capture->AllErrors();
+  EXPECT_NEAR(filter->GetTrueDepthScale(), 1.5 * 0.3048, 1e-12);
+  EXPECT_NEAR(filter->GetAppliedDepthScale(), 1.5 * 0.3048, 1e-12);
+  // A unit that is neither metres nor feet (the reader gives 0): refused, naming it.
+  feet->SetValue(0, 0.0);
+  dem->Modified();
+  filter->Update();
+  EXPECT_TRUE(capture->HasError("elevations in metres or feet")) << capture->AllErrors();
+  EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), 0);
+  capture->Errors.clear();
+  dem->GetFieldData()->RemoveArray("MesolightElevationUnit");
+  dem->Modified();
+  filter->SetVerticalExaggeration(0.2);
+  filter->Update();
+  ASSERT_TRUE(capture->Errors.empty()) << capture->AllErrors();
   // The negative case: the default depth scale gives other normals.
   byHand->SetDepthScale(0.05);
   byHand->Update();
