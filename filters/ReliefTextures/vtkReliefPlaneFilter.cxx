@@ -45,13 +45,16 @@ double vtkReliefPlaneFilter::GetGroundProportions(vtkImageData* image)
     return 1.0;
   }
   double proportions = static_cast<double>(dims[1]) / dims[0];
-  vtkDataArray* ground = image->GetFieldData()->GetArray("MesolightPixelSize");
-  if (ground && ground->GetNumberOfTuples() == 1 && ground->GetNumberOfComponents() == 2)
+  vtkDataArray* pixelSize = image->GetFieldData()->GetArray("MesolightPixelSize");
+  if (pixelSize && pixelSize->GetNumberOfTuples() == 1 && pixelSize->GetNumberOfComponents() == 2)
   {
-    const double along = ground->GetComponent(0, 0), across = ground->GetComponent(0, 1);
-    if (along > 0.0 && across > 0.0 && std::isfinite(along) && std::isfinite(across))
+    const double along = pixelSize->GetComponent(0, 0), across = pixelSize->GetComponent(0, 1);
+    const double ground = proportions * (across / along);
+    // Sizes that overflow or vanish in the ratio (a corrupt georeference) are ignored too.
+    if (along > 0.0 && across > 0.0 && std::isfinite(along) && std::isfinite(across) &&
+      std::isfinite(ground) && ground > 0.0)
     {
-      proportions *= across / along;
+      proportions = ground;
     }
   }
   return proportions;

@@ -45,7 +45,7 @@ public:
   /**
    * The map's height over its width on the ground: rows / columns, times the pixels' height
    * over their width where the image carries a valid "MesolightPixelSize" (two positive, finite
-   * sizes). 1 for a null or empty image.
+   * sizes whose ratio is too). 1 for a null or empty image.
    */
   static double GetGroundProportions(vtkImageData* image);
 

@@ -126,6 +126,9 @@ TEST(ReliefPlaneFilter, AnUnusablePixelSizeLeavesTheTexelsProportions)
     EXPECT_EQ(vtkReliefPlaneFilter::GetGroundProportions(DepthMap(40, 20, bad, 10.0)), 0.5);
     EXPECT_EQ(vtkReliefPlaneFilter::GetGroundProportions(DepthMap(40, 20, 10.0, bad)), 0.5);
   }
+  // Sizes whose ratio overflows or vanishes.
+  EXPECT_EQ(vtkReliefPlaneFilter::GetGroundProportions(DepthMap(40, 20, 1e-300, 1e300)), 0.5);
+  EXPECT_EQ(vtkReliefPlaneFilter::GetGroundProportions(DepthMap(40, 20, 1e300, 1e-300)), 0.5);
   // The relief texture passes no unusable size on.
   vtkNew<vtkReliefTextureFilter> bake;
   bake->SetInputData(DepthMap(40, 20, 10.0, nan));
