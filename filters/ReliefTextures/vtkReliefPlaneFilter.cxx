@@ -54,8 +54,16 @@ double vtkReliefPlaneFilter::GetGroundProportions(vtkImageData* image)
     if (along > 0.0 && across > 0.0 && std::isfinite(along) && std::isfinite(across) &&
       std::isfinite(ground) && ground > 0.0)
     {
-      proportions = ground;
+      return ground;
     }
+  }
+  // Otherwise the image's own spacing, VTK's pixel shape (ParaView's GDAL Raster Reader gives a
+  // projected raster's pixel size in metres there; most readers give 1).
+  const double* spacing = image->GetSpacing();
+  const double spaced = proportions * (spacing[1] / spacing[0]);
+  if (spacing[0] > 0.0 && spacing[1] > 0.0 && std::isfinite(spaced) && spaced > 0.0)
+  {
+    return spaced;
   }
   return proportions;
 }

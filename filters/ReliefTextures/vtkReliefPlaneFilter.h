@@ -9,9 +9,9 @@
  * point normals. Its height is Width times GetGroundProportions(): the image's rows over its
  * columns, times its pixels' height over their width on the ground when it carries them (field
  * data "MesolightPixelSize", which vtkOIIOImageReader reads from a georeferenced file and
- * vtkReliefTextureFilter passes on). A geographic raster's pixels are narrower than tall away
- * from the equator (an SRTM tile at 60 N: 0.49 times as wide as tall), so on a square plane or
- * one of the texels' proportions the terrain would be stretched.
+ * vtkReliefTextureFilter passes on), else times its spacing's. A geographic raster's pixels are
+ * narrower than tall away from the equator (an SRTM tile at 60 N: 0.49 times as wide as tall), so
+ * on a square plane or one of the texels' proportions the terrain would be stretched.
  *
  * A vtkPlaneSource (ParaView's Plane) is square whatever the map; this is its replacement in
  * front of vtkAttachReliefTexture, and vtkReliefMapper draws on any mesh with texture
@@ -45,7 +45,9 @@ public:
   /**
    * The map's height over its width on the ground: rows / columns, times the pixels' height
    * over their width where the image carries a valid "MesolightPixelSize" (two positive, finite
-   * sizes whose ratio is too). 1 for a null or empty image.
+   * sizes whose ratio is too), else over the image's spacing along x (VTK's own pixel shape:
+   * ParaView's GDAL Raster Reader gives a projected raster's pixel size there). 1 for a null or
+   * empty image.
    */
   static double GetGroundProportions(vtkImageData* image);
 

@@ -117,6 +117,24 @@ TEST(ReliefPlaneFilter, AGeoreferencedMapTakesItsGroundProportions)
     vtkReliefPlaneFilter::GetGroundProportions(DepthMap(95, 90, 597.89, 926.63)));
 }
 
+TEST(ReliefPlaneFilter, WithoutAPixelSizeTheImagesSpacingGivesThePixelShape)
+{
+  // VTK's own pixel shape: 40 x 20 texels of 2 x 3 units (ParaView's GDAL Raster Reader gives a
+  // projected raster's pixel size in metres there).
+  auto spaced = DepthMap(40, 20);
+  spaced->SetSpacing(2.0, 3.0, 1.0);
+  EXPECT_DOUBLE_EQ(vtkReliefPlaneFilter::GetGroundProportions(spaced), 0.75);
+  // The pixel size on the ground, where the image carries one, comes first.
+  auto both = DepthMap(40, 20, 10.0, 10.0);
+  both->SetSpacing(2.0, 3.0, 1.0);
+  EXPECT_DOUBLE_EQ(vtkReliefPlaneFilter::GetGroundProportions(both), 0.5);
+  // Spacings that are no pixel shape (negative: a flipped axis; a ratio that overflows).
+  spaced->SetSpacing(-2.0, 3.0, 1.0);
+  EXPECT_DOUBLE_EQ(vtkReliefPlaneFilter::GetGroundProportions(spaced), 0.5);
+  spaced->SetSpacing(1e-300, 1e300, 1.0);
+  EXPECT_DOUBLE_EQ(vtkReliefPlaneFilter::GetGroundProportions(spaced), 0.5);
+}
+
 TEST(ReliefPlaneFilter, AnUnusablePixelSizeLeavesTheTexelsProportions)
 {
   const double nan = std::numeric_limits<double>::quiet_NaN();
