@@ -6,7 +6,6 @@
 #include "HeightFieldTracer.h"
 #include "ImageCompare.h"
 #include "ReliefReference.h"
-#include "ReliefScene.h"
 #include "vtkReliefPlaneFilter.h"
 
 #include "EnvironmentMaps.h"

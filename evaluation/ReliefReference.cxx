@@ -168,8 +168,7 @@ bool ComputeReliefReference(
   double view[16];
   vtkMatrix4x4::DeepCopy(view, input.Camera->GetViewTransformMatrix());
 
-  const double aspect =
-    vtkReliefPlaneFilter::GetGroundProportions(input.Relief); // wall height / width
+  const double aspect = reference.WallHeight; // wall height / width
   const double s = input.DepthScale;
   const double uLow = 0.5 / tw, uHigh = 1.0 - 0.5 / tw;
   const double vLow = 0.5 / th, vHigh = 1.0 - 0.5 / th;
