@@ -221,9 +221,11 @@ int RunVlfAccuracyBenchmark(const std::vector<std::string>& args)
     "a room lit\nindirectly, a ribbed corridor, thin panels near walls, the Cornell box), per "
     "resolution setting:\npropagation time, memory, field size, mean / p95 relative error, "
     "black-where-lit pixels,\nwithout and with the final gather (FinalGather.h) and the bilateral "
-    "texture filter.\n");
-  cl.AddValue(
-    "--scenes", "LIST", "boxes,room,corridor,thin,cornell", "boxes,room,corridor,thin,cornell");
+    "texture filter.\n"
+    "A sixth scene, props (an office of nine models made for a game, open meshes; they are read "
+    "from\nDebian's redeclipse-data), runs when named.\n");
+  cl.AddValue("--scenes", "LIST", "boxes,room,corridor,thin,cornell; or props",
+    "boxes,room,corridor,thin,cornell");
   cl.AddValue("--settings", "LIST",
     "per scene: auto, auto-uniform (auto without its finer texels on surfaces others stand on), "
     "auto-adaptive (auto's, texels refined per surface from the light of a first pass on top of "

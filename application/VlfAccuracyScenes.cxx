@@ -1,11 +1,19 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "VlfAccuracyScenes.h"
 
+#include "ObjScene.h"
+
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <fstream>
+#include <iterator>
+#include <map>
 #include <stdexcept>
+#include <string>
+#include <tuple>
 
 namespace mesolight
 {
@@ -272,6 +280,130 @@ AccuracyScene Thin()
   return s;
 }
 
+// The edges of a mesh that only one triangle uses, its points welded by position (an OBJ repeats
+// a point for each normal and texture coordinate): 0 for a closed solid.
+std::size_t CountOpenEdges(const TriangleScene& mesh)
+{
+  std::map<std::tuple<float, float, float>, std::uint32_t> ids;
+  std::vector<std::uint32_t> welded(mesh.Positions.size());
+  for (std::size_t i = 0; i < mesh.Positions.size(); ++i)
+  {
+    const glm::vec3& p = mesh.Positions[i];
+    welded[i] = ids.emplace(std::make_tuple(p.x, p.y, p.z), static_cast<std::uint32_t>(ids.size()))
+                  .first->second;
+  }
+  std::map<std::pair<std::uint32_t, std::uint32_t>, int> uses;
+  for (const glm::uvec3& t : mesh.Triangles)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const std::uint32_t a = welded[t[k]], b = welded[t[(k + 1) % 3]];
+      ++uses[std::minmax(a, b)];
+    }
+  }
+  return static_cast<std::size_t>(
+    std::count_if(uses.begin(), uses.end(), [](const auto& e) { return e.second == 1; }));
+}
+
+// A model modelled by someone else, from an OBJ file: scaled to `height` metres, turned by
+// `degrees` about y and stood with the centre of its bounding box's bottom at `base`, all of one
+// material (the props have no .mtl; their textures are for the game). Returns its open edges.
+std::size_t AddModel(TriangleScene& scene, const std::string& path, float height, float degrees,
+  glm::vec3 base, std::uint32_t material)
+{
+  ObjSceneRead read = ReadObjScene(path);
+  TriangleScene& model = read.Scene;
+  const std::size_t openEdges = CountOpenEdges(model);
+  glm::vec3 lower, upper;
+  if (!SceneBounds(model, lower, upper) || upper.y <= lower.y)
+  {
+    throw std::runtime_error(path + ": no triangles with a height");
+  }
+  const float scale = height / (upper.y - lower.y);
+  const glm::vec3 foot(0.5f * (lower.x + upper.x), lower.y, 0.5f * (lower.z + upper.z));
+  const float r = glm::radians(degrees), c = std::cos(r), s = std::sin(r);
+  for (glm::vec3& p : model.Positions)
+  {
+    const glm::vec3 q = scale * (p - foot);
+    p = base + glm::vec3(c * q.x + s * q.z, q.y, -s * q.x + c * q.z);
+  }
+  model.Normals.clear();
+  model.TextureCoordinates.clear();
+  model.SurfaceNames.clear();
+  model.SurfaceIds.clear();
+  model.Materials = { scene.Materials[material] };
+  std::fill(model.MaterialIds.begin(), model.MaterialIds.end(), 0u);
+  scene.Append(model);
+  return openEdges;
+}
+
+AccuracyScene Props()
+{
+  // Office props of the game Red Eclipse (Debian's redeclipse-data, models by "nieb", CC-BY):
+  // meshes made for a game, so unlike the other scenes' solids most are open (faces the player
+  // never sees are left out: the shelf has 176 boundary edges, the desk 100, the chair 98).
+  const std::string root = "/usr/share/games/redeclipse/data/nieb/";
+  if (!std::ifstream(root + "desk/model.obj").good())
+  {
+    throw std::runtime_error("the props scene reads its models from Debian's redeclipse-data ("
+                             "MESOLIGHT_REAL_MAPS=1 scripts/install-deps.sh installs it): " +
+      root + "desk/model.obj is absent");
+  }
+  AccuracyScene s;
+  s.Name = "props";
+  TriangleScene& t = s.Scene;
+  const std::uint32_t white = t.AddMaterial(Diffuse("white", glm::vec3(0.75f)));
+  const std::uint32_t floor = t.AddMaterial(Diffuse("floor", { 0.45f, 0.4f, 0.35f }));
+  const std::uint32_t blue = t.AddMaterial(Diffuse("blue", { 0.25f, 0.35f, 0.6f }));
+  const std::uint32_t wood = t.AddMaterial(Diffuse("wood", { 0.55f, 0.38f, 0.22f }));
+  const std::uint32_t grey = t.AddMaterial(Diffuse("grey", glm::vec3(0.5f)));
+  const std::uint32_t dark = t.AddMaterial(Diffuse("dark", glm::vec3(0.2f)));
+  const std::uint32_t red = t.AddMaterial(Diffuse("red", { 0.65f, 0.15f, 0.12f }));
+  const std::uint32_t pale = t.AddMaterial(Diffuse("pale", { 0.8f, 0.78f, 0.7f }));
+  const std::uint32_t lamp = t.AddMaterial(Diffuse("lamp", glm::vec3(0.8f), glm::vec3(12.0f)));
+  const float W = 6.0f, H = 2.8f, D = 5.0f;
+  Block room = Block::Along({ 0, 0, 0 }, { W, 0, 0 }, { 0, 0, D }, { 0, H, 0 }, white).Inside();
+  room.Materials[0] = blue; // x = 0
+  room.Materials[4] = floor;
+  room.AddTo(t);
+  for (float x : { 1.6f, 4.0f })
+  {
+    Quad(t, { x, H - 0.001f, 1.8f }, { x + 0.6f, H - 0.001f, 1.8f }, { x + 0.6f, H - 0.001f, 2.4f },
+      { x, H - 0.001f, 2.4f }, { 0, -1, 0 }, lamp);
+  }
+  struct Placed
+  {
+    const char* Model;
+    float Height, Degrees;
+    glm::vec3 Base;
+    std::uint32_t Material;
+  };
+  const Placed placed[] = {
+    { "shelf_storage", 2.0f, 0.0f, { 0.4f, 0.0f, 1.6f }, grey },
+    { "desk", 0.72f, 90.0f, { 3.2f, 0.0f, 2.6f }, wood },
+    { "computer_monitor", 0.45f, 0.0f, { 2.45f, 0.72f, 2.1f }, dark },
+    { "chair_office", 1.0f, 160.0f, { 3.2f, 0.0f, 3.95f }, red },
+    { "copy-machine", 1.05f, 90.0f, { 1.3f, 0.0f, 0.5f }, pale },
+    { "server_rack/1", 1.9f, 90.0f, { 5.4f, 0.0f, 0.5f }, dark },
+    { "white_board", 1.6f, 180.0f, { 5.5f, 0.0f, 2.6f }, pale },
+    { "garbage_can", 0.7f, 0.0f, { 2.2f, 0.0f, 0.4f }, grey },
+    { "storage_tote", 0.35f, 20.0f, { 0.8f, 0.0f, 3.9f }, blue },
+  };
+  std::size_t openEdges = 0;
+  for (const Placed& p : placed)
+  {
+    openEdges +=
+      AddModel(t, root + p.Model + "/model.obj", p.Height, p.Degrees, p.Base, p.Material);
+  }
+  s.Description = "an office of " + std::to_string(std::size(placed)) +
+    " real game models under two ceiling lights; the models have " + std::to_string(openEdges) +
+    " open edges";
+  s.Camera.Position = { 4.6f, 1.6f, 4.8f };
+  s.Camera.FocalPoint = { 2.2f, 0.8f, 1.2f };
+  s.Camera.ViewAngleDegrees = 65.0f;
+  return s;
+}
+
 AccuracyScene Cornell()
 {
   AccuracyScene s;
@@ -310,8 +442,12 @@ AccuracyScene MakeAccuracyScene(const std::string& name)
   {
     return Cornell();
   }
+  if (name == "props")
+  {
+    return Props();
+  }
   throw std::invalid_argument(
-    "unknown scene '" + name + "' (boxes, room, corridor, thin, cornell)");
+    "unknown scene '" + name + "' (boxes, room, corridor, thin, cornell, props)");
 }
 
 } // namespace mesolight

@@ -10,7 +10,10 @@
 //             ceiling lights, the far one brightest: a large range of scales and brightness;
 //   thin      a room with a 1 cm panel hung 3 cm before a wall, a thin fin, 5 cm cubes along
 //             the walls and a box in a corner, under a ceiling light: contacts and gaps;
-//   cornell   the Cornell box (MakeCornellBox) and its published camera.
+//   cornell   the Cornell box (MakeCornellBox) and its published camera;
+//   props     not in the default list: an office furnished with nine models made for a game
+//             (Debian's redeclipse-data), open meshes whose hidden faces were left out, unlike
+//             the closed solids above: the light field on geometry nobody built for it.
 #ifndef mesolight_VlfAccuracyScenes_h
 #define mesolight_VlfAccuracyScenes_h
 
@@ -34,9 +37,10 @@ struct AccuracyScene
   int ReferenceSamplesScale = 1;
 };
 
-// The names accepted by MakeAccuracyScene, in the benchmark's order.
+// The benchmark's default scenes, in its order (MakeAccuracyScene also takes "props").
 std::vector<std::string> AccuracySceneNames();
-// Throws std::invalid_argument for an unknown name.
+// Throws std::invalid_argument for an unknown name, std::runtime_error when "props" cannot find
+// its models.
 AccuracyScene MakeAccuracyScene(const std::string& name);
 
 } // namespace mesolight
