@@ -20,12 +20,12 @@
  *   float image of 3 components, pixel (9 i + k, j) SH9 coefficient k of probe (i, j) at texture
  *   ((i + 1/2) / n, (j + 1/2) / n) (mesolight::vlf::ReliefSurfaceProbes).
  * - GetEmitterLights(): the field's emitters as VTK lights (mesolight::vlf::EstimateEmitterLights,
- *   one per emitting surface at its centroid, world coordinates), each set up by
- *   vtkReliefMapper::ConfigureEmitterLight from the radiant intensity Le x Area in world units
- *   (a cosine-lobe spot light falling off as 1 / d^2, intensity divided by pi: VTK shades
- *   Kd x intensity x cos without the Lambertian 1 / pi). Add them to the renderer that draws the
- * relief only (a renderer of their own: the walkthrough's geometry mode is lit by its renderer's
- * lights).
+ *   one per lamp -- a connected piece of an emitting surface -- at its centroid, world
+ *   coordinates), each set up by vtkReliefMapper::ConfigureEmitterLight from the radiant
+ *   intensity Le x Area in world units (a cosine-lobe spot light falling off as 1 / d^2,
+ *   intensity divided by pi: VTK shades Kd x intensity x cos without the Lambertian 1 / pi).
+ *   Add them to the renderer that draws the relief only (a renderer of their own: the
+ *   walkthrough's geometry mode is lit by its renderer's lights).
  *
  * Any planar surface instead of a named one (e.g. ParaView's Relief Surface lit by a Virtual
  * Light Field): polydata in world coordinates on input port 1 (SetSurfaceConnection /

@@ -8,6 +8,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <numeric>
+#include <tuple>
 #include <vector>
 
 namespace mesolight
@@ -56,6 +59,45 @@ void PolygonMoments(const std::vector<glm::dvec2>& polygon, double& area, glm::d
     moment += a * (polygon[0] + polygon[i] + polygon[i + 1]) / 3.0;
   }
 }
+
+// The triangles in pieces that touch (share a corner; corners welded by position). A field
+// surface is every triangle of one material on one plane, so a row of ceiling lamps is one
+// surface; its centroid lies between the lamps, where no light is.
+std::vector<std::vector<std::uint32_t>> ConnectedPieces(
+  const TriangleScene& scene, const std::vector<std::uint32_t>& triangles)
+{
+  std::vector<std::size_t> parent(triangles.size());
+  std::iota(parent.begin(), parent.end(), std::size_t{ 0 });
+  const auto root = [&parent](std::size_t i)
+  {
+    while (parent[i] != i)
+    {
+      i = parent[i] = parent[parent[i]];
+    }
+    return i;
+  };
+  std::map<std::tuple<float, float, float>, std::size_t> firstAtCorner;
+  for (std::size_t i = 0; i < triangles.size(); ++i)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      const glm::vec3 x = scene.Vertex(triangles[i], c);
+      const auto found = firstAtCorner.emplace(std::make_tuple(x.x, x.y, x.z), i);
+      parent[root(i)] = root(found.first->second);
+    }
+  }
+  std::map<std::size_t, std::vector<std::uint32_t>> pieces;
+  for (std::size_t i = 0; i < triangles.size(); ++i)
+  {
+    pieces[root(i)].push_back(triangles[i]);
+  }
+  std::vector<std::vector<std::uint32_t>> out;
+  for (auto& piece : pieces)
+  {
+    out.push_back(std::move(piece.second));
+  }
+  return out;
+}
 } // namespace
 
 //------------------------------------------------------------------------------
@@ -92,86 +134,89 @@ LightApproximation EstimateEmitterLights(
       }
       continue;
     }
-    EmitterLight light;
-    light.Surface = s;
-    light.Normal = surface.Normal;
-    light.Radiance = le;
-    glm::dvec3 centroid(0.0);
-    for (const std::uint32_t t : surface.Triangles)
+    for (const std::vector<std::uint32_t>& lamp : ConnectedPieces(scene, surface.Triangles))
     {
-      const double a = scene.Area(t);
-      centroid +=
-        a * glm::dvec3(scene.Vertex(t, 0) + scene.Vertex(t, 1) + scene.Vertex(t, 2)) / 3.0;
-      light.Area += a;
-    }
-    if (light.Area <= 0.0)
-    {
-      continue;
-    }
-    light.Position = glm::vec3(centroid / light.Area);
-    // Splitting: the emitter's triangles in its plane's (u, v) frame.
-    const double distance = glm::length(glm::dvec3(light.Position - options.ReferencePoint));
-    glm::dvec2 lower(1e300), upper(-1e300);
-    std::vector<std::vector<glm::dvec2>> flat;
-    for (const std::uint32_t t : surface.Triangles)
-    {
-      std::vector<glm::dvec2> corners;
-      for (int c = 0; c < 3; ++c)
+      EmitterLight light;
+      light.Surface = s;
+      light.Normal = surface.Normal;
+      light.Radiance = le;
+      glm::dvec3 centroid(0.0);
+      for (const std::uint32_t t : lamp)
       {
-        const glm::dvec3 x(scene.Vertex(t, c) - surface.Origin);
-        const glm::dvec2 uv(
-          glm::dot(x, glm::dvec3(surface.AxisU)), glm::dot(x, glm::dvec3(surface.AxisV)));
-        corners.push_back(uv);
-        lower = glm::min(lower, uv);
-        upper = glm::max(upper, uv);
+        const double a = scene.Area(t);
+        centroid +=
+          a * glm::dvec3(scene.Vertex(t, 0) + scene.Vertex(t, 1) + scene.Vertex(t, 2)) / 3.0;
+        light.Area += a;
       }
-      flat.push_back(corners);
-    }
-    const double limit = std::max(1e-12, static_cast<double>(options.SplitRatio) * distance);
-    const int maxSplit = std::max(1, options.MaxSplit);
-    const int nu = options.Split
-      ? std::min(maxSplit, std::max(1, static_cast<int>(std::ceil((upper.x - lower.x) / limit))))
-      : 1;
-    const int nv = options.Split
-      ? std::min(maxSplit, std::max(1, static_cast<int>(std::ceil((upper.y - lower.y) / limit))))
-      : 1;
-    if (nu * nv == 1)
-    {
-      out.Lights.push_back(light);
-      continue;
-    }
-    for (int a = 0; a < nu; ++a)
-    {
-      for (int b = 0; b < nv; ++b)
+      if (light.Area <= 0.0)
       {
-        const double u0 = lower.x + (upper.x - lower.x) * a / nu;
-        const double u1 = lower.x + (upper.x - lower.x) * (a + 1) / nu;
-        const double v0 = lower.y + (upper.y - lower.y) * b / nv;
-        const double v1 = lower.y + (upper.y - lower.y) * (b + 1) / nv;
-        double pieceArea = 0.0;
-        glm::dvec2 moment(0.0);
-        for (const std::vector<glm::dvec2>& triangle : flat)
+        continue;
+      }
+      light.Position = glm::vec3(centroid / light.Area);
+      // Splitting: the lamp's triangles in its plane's (u, v) frame.
+      const double distance = glm::length(glm::dvec3(light.Position - options.ReferencePoint));
+      glm::dvec2 lower(1e300), upper(-1e300);
+      std::vector<std::vector<glm::dvec2>> flat;
+      for (const std::uint32_t t : lamp)
+      {
+        std::vector<glm::dvec2> corners;
+        for (int c = 0; c < 3; ++c)
         {
-          std::vector<glm::dvec2> part = ClipPolygon(triangle, 0, u0, false);
-          part = ClipPolygon(part, 0, u1, true);
-          part = ClipPolygon(part, 1, v0, false);
-          part = ClipPolygon(part, 1, v1, true);
-          double partArea = 0.0;
-          glm::dvec2 partMoment(0.0);
-          PolygonMoments(part, partArea, partMoment);
-          pieceArea += partArea;
-          moment += partMoment;
+          const glm::dvec3 x(scene.Vertex(t, c) - surface.Origin);
+          const glm::dvec2 uv(
+            glm::dot(x, glm::dvec3(surface.AxisU)), glm::dot(x, glm::dvec3(surface.AxisV)));
+          corners.push_back(uv);
+          lower = glm::min(lower, uv);
+          upper = glm::max(upper, uv);
         }
-        if (!(pieceArea > 0.0))
+        flat.push_back(corners);
+      }
+      const double limit = std::max(1e-12, static_cast<double>(options.SplitRatio) * distance);
+      const int maxSplit = std::max(1, options.MaxSplit);
+      const int nu = options.Split
+        ? std::min(maxSplit, std::max(1, static_cast<int>(std::ceil((upper.x - lower.x) / limit))))
+        : 1;
+      const int nv = options.Split
+        ? std::min(maxSplit, std::max(1, static_cast<int>(std::ceil((upper.y - lower.y) / limit))))
+        : 1;
+      if (nu * nv == 1)
+      {
+        out.Lights.push_back(light);
+        continue;
+      }
+      for (int a = 0; a < nu; ++a)
+      {
+        for (int b = 0; b < nv; ++b)
         {
-          continue;
+          const double u0 = lower.x + (upper.x - lower.x) * a / nu;
+          const double u1 = lower.x + (upper.x - lower.x) * (a + 1) / nu;
+          const double v0 = lower.y + (upper.y - lower.y) * b / nv;
+          const double v1 = lower.y + (upper.y - lower.y) * (b + 1) / nv;
+          double cellArea = 0.0;
+          glm::dvec2 moment(0.0);
+          for (const std::vector<glm::dvec2>& triangle : flat)
+          {
+            std::vector<glm::dvec2> part = ClipPolygon(triangle, 0, u0, false);
+            part = ClipPolygon(part, 0, u1, true);
+            part = ClipPolygon(part, 1, v0, false);
+            part = ClipPolygon(part, 1, v1, true);
+            double partArea = 0.0;
+            glm::dvec2 partMoment(0.0);
+            PolygonMoments(part, partArea, partMoment);
+            cellArea += partArea;
+            moment += partMoment;
+          }
+          if (!(cellArea > 0.0))
+          {
+            continue;
+          }
+          EmitterLight cell = light;
+          const glm::dvec2 uv = moment / cellArea;
+          cell.Position = glm::vec3(glm::dvec3(surface.Origin) + uv.x * glm::dvec3(surface.AxisU) +
+            uv.y * glm::dvec3(surface.AxisV));
+          cell.Area = cellArea;
+          out.Lights.push_back(cell);
         }
-        EmitterLight piece = light;
-        const glm::dvec2 uv = moment / pieceArea;
-        piece.Position = glm::vec3(glm::dvec3(surface.Origin) + uv.x * glm::dvec3(surface.AxisU) +
-          uv.y * glm::dvec3(surface.AxisV));
-        piece.Area = pieceArea;
-        out.Lights.push_back(piece);
       }
     }
   }

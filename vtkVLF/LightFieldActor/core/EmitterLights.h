@@ -2,7 +2,8 @@
 // EmitterLights: ordinary point lights that approximate a light field's emitters, so a movable
 // object can be shaded by plain (VTK/OpenGL) lighting. Wither 2005 ("Interactive dynamic objects
 // in a virtual light field", §3.5) placed such lights by hand and lists estimating them from the
-// field as future work; here each emitting surface becomes one light at its centroid, facing
+// field as future work; here each lamp (a connected piece of an emitting surface: separate lamps
+// of one material on one plane are one field surface) becomes one light at its centroid, facing
 // along its normal, with the radiant intensity Le x area (cosine lobe), and the field's mean
 // radiance gives an ambient term for the indirect light. Plain C++ (GLM, no VTK types);
 // positions are in the field's unit sphere.
@@ -22,8 +23,8 @@ class LightField;
 
 struct EmitterLight
 {
-  std::uint32_t Surface = 0;            // the field surface it stands for
-  glm::vec3 Position{ 0.0f };           // area-weighted centroid of the surface
+  std::uint32_t Surface = 0;            // the field surface it stands for (a part of)
+  glm::vec3 Position{ 0.0f };           // area-weighted centroid of its lamp
   glm::vec3 Normal{ 0.0f, 0.0f, 1.0f }; // emitting (front) side
   glm::vec3 Radiance{ 0.0f };           // Le
   double Area = 0.0;                    // unit-sphere units
@@ -40,10 +41,10 @@ struct LightApproximation
 LightApproximation EstimateEmitterLights(const LightField& field);
 
 // Splitting large emitters: a point light is a good stand-in for an area emitter only far from
-// it (the inverse-square law holds beyond a few emitter sizes). With Split, an emitter whose
-// side exceeds SplitRatio x its distance to ReferencePoint (the object's centre, unit sphere) is
-// cut into a grid of up to MaxSplit x MaxSplit rectangles of its plane, each a light at the
-// centroid of the emitter's part inside it (triangles clipped exactly), with that part's area.
+// it (the inverse-square law holds beyond a few emitter sizes). With Split, a lamp whose side
+// exceeds SplitRatio x its distance to ReferencePoint (the object's centre, unit sphere) is cut
+// into a grid of up to MaxSplit x MaxSplit rectangles of its plane, each a light at the centroid
+// of the lamp's part inside it (triangles clipped exactly), with that part's area.
 struct EmitterLightOptions
 {
   bool Split = false;

@@ -2,7 +2,8 @@
 // EmitterLights (Wither 2005 ch. 4): the light estimated from the Cornell box's field against the
 // published box (the light 130 x 105 mm at y = 548.7, centre (278, 548.7, 279.5), Le (17, 12, 4),
 // facing down), several emitters sorted by power, large emitters split near the object (their
-// irradiance against the exact integral over the rectangle), and the ambient term.
+// irradiance against the exact integral over the rectangle), separate lamps of one material as
+// separate lights, and the ambient term.
 #include "EmitterLights.h"
 #include "MathConstants.h"
 #include "WalkthroughTestFields.h"
@@ -13,6 +14,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <memory>
 
 using namespace mesolight;
 using namespace mesolight::vlf;
@@ -50,6 +52,82 @@ glm::vec3 ExactIrradiance(const glm::vec3& p, const glm::vec3& n)
     }
   }
   return le * static_cast<float>(sum);
+}
+// A closed grey box [-1, 1]^3 (fronts inward) with two lamps facing down just below its ceiling:
+// 0.4 x 0.4 centred at (-0.6, h, 0) and 0.2 x 0.2 at (0.5, h, 0), of emission `dim` and `bright`
+// (one material when they are equal), propagated coarsely.
+constexpr float LampHeight = 0.999f;
+std::unique_ptr<LightField> BoxWithTwoLamps(
+  const glm::vec3& dimEmission, const glm::vec3& brightEmission)
+{
+  TriangleScene scene;
+  SceneMaterial grey, dim, bright;
+  grey.Diffuse = glm::vec3(0.5f);
+  dim.Emission = dimEmission;
+  bright.Emission = brightEmission;
+  const std::uint32_t g = scene.AddMaterial(grey), d = scene.AddMaterial(dim);
+  const std::uint32_t b = dimEmission == brightEmission ? d : scene.AddMaterial(bright);
+  const float h = LampHeight;
+  for (int axis = 0; axis < 3; ++axis) // the box, fronts inward
+  {
+    for (const float side : { -1.0f, 1.0f })
+    {
+      const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+      std::vector<glm::vec3> quad(4, glm::vec3(0.0f));
+      const float su[4] = { -1, 1, 1, -1 }, sv[4] = { -1, -1, 1, 1 };
+      for (int q = 0; q < 4; ++q)
+      {
+        quad[q][axis] = side;
+        quad[q][u] = su[q];
+        quad[q][v] = sv[q];
+      }
+      glm::vec3 normal = glm::cross(quad[1] - quad[0], quad[2] - quad[0]);
+      if (glm::dot(normal, glm::vec3(0.0f) - quad[0]) < 0.0f)
+      {
+        std::swap(quad[1], quad[3]);
+      }
+      scene.AddPolygon(quad, g);
+    }
+  }
+  scene.AddPolygon(
+    { { -0.8f, h, -0.2f }, { -0.4f, h, -0.2f }, { -0.4f, h, 0.2f }, { -0.8f, h, 0.2f } }, d);
+  scene.AddPolygon(
+    { { 0.4f, h, -0.1f }, { 0.6f, h, -0.1f }, { 0.6f, h, 0.1f }, { 0.4f, h, 0.1f } }, b);
+  for (std::size_t t = scene.TriangleCount() - 4; t < scene.TriangleCount(); ++t)
+  {
+    if (scene.FaceNormal(t).y > 0.0f) // face down
+    {
+      std::swap(scene.Triangles[t].y, scene.Triangles[t].z);
+    }
+  }
+  LightFieldSettings settings;
+  settings.Directions = 33;
+  settings.RaysPerSide = 8;
+  settings.TilesPerSide = 2;
+  std::unique_ptr<LightField> field = LightField::Build(scene, settings);
+  Propagate(*field, 1);
+  return field;
+}
+
+// Irradiance at p (normal n) from a one-sided rectangle [x0, x1] x [z0, z1] at height y facing
+// down, of radiance le, by a fine midpoint rule.
+double RectangleIrradiance(
+  const glm::vec3& p, const glm::vec3& n, double x0, double x1, double z0, double z1, double y)
+{
+  const int steps = 400;
+  double sum = 0.0;
+  const double du = (x1 - x0) / steps, dv = (z1 - z0) / steps;
+  for (int a = 0; a < steps; ++a)
+  {
+    for (int b = 0; b < steps; ++b)
+    {
+      const glm::dvec3 d = glm::dvec3(x0 + (a + 0.5) * du, y, z0 + (b + 0.5) * dv) - glm::dvec3(p);
+      const double r2 = glm::dot(d, d);
+      const glm::dvec3 w = d / std::sqrt(r2);
+      sum += std::max(0.0, w.y) * std::max(0.0, glm::dot(w, glm::dvec3(n))) / r2 * du * dv;
+    }
+  }
+  return sum;
 }
 } // namespace
 
@@ -131,53 +209,9 @@ TEST(ObjectEmitterLights, LargeEmittersAreSplitNearTheObject)
 
 TEST(ObjectEmitterLights, SeveralEmittersBrightestFirst)
 {
-  // A closed grey box with two ceiling lights of different power.
-  TriangleScene scene;
-  SceneMaterial grey, dim, bright;
-  grey.Diffuse = glm::vec3(0.5f);
-  dim.Emission = glm::vec3(1.0f);
-  bright.Emission = glm::vec3(4.0f);
-  const std::uint32_t g = scene.AddMaterial(grey), d = scene.AddMaterial(dim),
-                      b = scene.AddMaterial(bright);
-  const float h = 0.999f;              // just below the ceiling, facing down
-  for (int axis = 0; axis < 3; ++axis) // the box, fronts inward
-  {
-    for (const float side : { -1.0f, 1.0f })
-    {
-      const int u = (axis + 1) % 3, v = (axis + 2) % 3;
-      std::vector<glm::vec3> quad(4, glm::vec3(0.0f));
-      const float su[4] = { -1, 1, 1, -1 }, sv[4] = { -1, -1, 1, 1 };
-      for (int q = 0; q < 4; ++q)
-      {
-        quad[q][axis] = side;
-        quad[q][u] = su[q];
-        quad[q][v] = sv[q];
-      }
-      glm::vec3 normal = glm::cross(quad[1] - quad[0], quad[2] - quad[0]);
-      if (glm::dot(normal, glm::vec3(0.0f) - quad[0]) < 0.0f)
-      {
-        std::swap(quad[1], quad[3]);
-      }
-      scene.AddPolygon(quad, g);
-    }
-  }
-  scene.AddPolygon(
-    { { -0.8f, h, -0.2f }, { -0.4f, h, -0.2f }, { -0.4f, h, 0.2f }, { -0.8f, h, 0.2f } }, d);
-  scene.AddPolygon(
-    { { 0.4f, h, -0.1f }, { 0.6f, h, -0.1f }, { 0.6f, h, 0.1f }, { 0.4f, h, 0.1f } }, b);
-  for (std::size_t t = scene.TriangleCount() - 4; t < scene.TriangleCount(); ++t)
-  {
-    if (scene.FaceNormal(t).y > 0.0f) // face down
-    {
-      std::swap(scene.Triangles[t].y, scene.Triangles[t].z);
-    }
-  }
-  LightFieldSettings settings;
-  settings.Directions = 33;
-  settings.RaysPerSide = 8;
-  settings.TilesPerSide = 2;
-  std::unique_ptr<LightField> field = LightField::Build(scene, settings);
-  Propagate(*field, 1);
+  // Two ceiling lamps of different power, each of its own material.
+  const float h = LampHeight;
+  const std::unique_ptr<LightField> field = BoxWithTwoLamps(glm::vec3(1.0f), glm::vec3(4.0f));
   const LightApproximation lights = EstimateEmitterLights(*field);
   ASSERT_EQ(lights.Lights.size(), 2u);
   // Powers Le x area: dim 1 x 0.16, bright 4 x 0.04 -> equal; the sort is by intensity sum, so
@@ -200,4 +234,45 @@ TEST(ObjectEmitterLights, SeveralEmittersBrightestFirst)
   }
   const glm::vec3 i0 = lights.Lights[0].Intensity(), i1 = lights.Lights[1].Intensity();
   EXPECT_GE(i0.x + i0.y + i0.z, i1.x + i1.y + i1.z);
+}
+
+TEST(ObjectEmitterLights, SeparateLampsOfOneMaterialAreSeparateLights)
+{
+  // The same two lamps of one material: one field surface (one material, one plane), two lamps.
+  // One light at the surface's centroid would stand at x = -0.38, between them, where no lamp is.
+  const float h = LampHeight;
+  const std::unique_ptr<LightField> field = BoxWithTwoLamps(glm::vec3(2.0f), glm::vec3(2.0f));
+  const LightApproximation lights = EstimateEmitterLights(*field);
+  ASSERT_EQ(lights.Lights.size(), 2u);
+  EXPECT_EQ(lights.Lights[0].Surface, lights.Lights[1].Surface);
+  const double scale2 = field->NormalizationScale() * field->NormalizationScale();
+  // Brightest (largest) first.
+  EXPECT_LT(
+    glm::length(ToWorld(*field, lights.Lights[0].Position) - glm::vec3(-0.6f, h, 0.0f)), 1e-4f);
+  EXPECT_NEAR(lights.Lights[0].Area / scale2, 0.16, 1e-5);
+  EXPECT_LT(
+    glm::length(ToWorld(*field, lights.Lights[1].Position) - glm::vec3(0.5f, h, 0.0f)), 1e-4f);
+  EXPECT_NEAR(lights.Lights[1].Area / scale2, 0.04, 1e-5);
+  // Irradiance 0.8 below the small lamp (Kd = pi so the shading is E) against the exact
+  // integral over both lamps; the merged light (the negative case) misses it by far.
+  const glm::vec3 world(0.5f, h - 0.8f, 0.0f), up(0.0f, 1.0f, 0.0f);
+  const double exact = 2.0 *
+    (RectangleIrradiance(world, up, -0.8, -0.4, -0.2, 0.2, h) +
+      RectangleIrradiance(world, up, 0.4, 0.6, -0.1, 0.1, h));
+  const glm::vec3 kd(Pi<float>), p = ToUnit(*field, world);
+  const float two = (ShadeWithLights(lights, p, up, kd) - kd * lights.Ambient).x;
+  LightApproximation merged = lights;
+  merged.Lights.resize(1);
+  merged.Lights[0].Area = lights.Lights[0].Area + lights.Lights[1].Area;
+  merged.Lights[0].Position =
+    glm::vec3((lights.Lights[0].Area * glm::dvec3(lights.Lights[0].Position) +
+                lights.Lights[1].Area * glm::dvec3(lights.Lights[1].Position)) /
+      merged.Lights[0].Area);
+  const float one = (ShadeWithLights(merged, p, up, kd) - kd * merged.Ambient).x;
+  const double errorTwo = std::abs(two - exact) / exact, errorOne = std::abs(one - exact) / exact;
+  std::printf("[ figures  ] below the small lamp: exact E %.4f, a light per lamp %.4f (%.1f%%), "
+              "one light at the surface's centroid %.4f (%.1f%%)\n",
+    exact, two, 100.0 * errorTwo, one, 100.0 * errorOne);
+  EXPECT_LT(errorTwo, 0.05);
+  EXPECT_GT(errorOne, 0.2);
 }
