@@ -30,13 +30,13 @@ SceneMaterial Diffuse(const char* name, glm::vec3 kd, glm::vec3 ke = glm::vec3(0
 
 // A quad whose front faces `front` (the winding is chosen from it).
 void Quad(TriangleScene& scene, glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec3 d,
-  const glm::vec3& front, std::uint32_t material)
+  const glm::vec3& front, std::uint32_t material, std::uint32_t surface = TriangleScene::NoSurface)
 {
   if (glm::dot(glm::cross(b - a, c - a), front) < 0.0f)
   {
     std::swap(b, d);
   }
-  scene.AddPolygon({ a, b, c, d }, material);
+  scene.AddPolygon({ a, b, c, d }, material, surface);
 }
 
 // The one box builder of the scenes: a parallelepiped o + [0,1] ea + [0,1] eb + [0,1] ec, its
@@ -48,6 +48,8 @@ struct Block
   glm::vec3 Edges[3] = { glm::vec3(1, 0, 0), glm::vec3(0, 0, 1), glm::vec3(0, 1, 0) };
   // Per face, -ea, +ea, -eb, +eb, -ec (bottom), +ec (top).
   std::uint32_t Materials[6] = { 0, 0, 0, 0, 0, 0 };
+  // Per face, in the same order, a surface name (`vlf render --relief back=...`), or none.
+  const char* Names[6] = { nullptr, nullptr, nullptr, nullptr, nullptr, nullptr };
   bool Inward = false;
   bool Bottom = true;
 
@@ -104,8 +106,10 @@ struct Block
         }
         const glm::vec3 p = this->Origin + static_cast<float>(side) * this->Edges[axis];
         const glm::vec3 out = p + 0.5f * (u + v) - centre;
+        const char* name = this->Names[2 * axis + side];
         Quad(scene, p, p + u, p + u + v, p + v, this->Inward ? -out : out,
-          this->Materials[2 * axis + side]);
+          this->Materials[2 * axis + side],
+          name ? scene.AddSurface(name) : TriangleScene::NoSurface);
       }
     }
   }
@@ -365,6 +369,9 @@ AccuracyScene Props()
   Block room = Block::Along({ 0, 0, 0 }, { W, 0, 0 }, { 0, 0, D }, { 0, H, 0 }, white).Inside();
   room.Materials[0] = blue; // x = 0
   room.Materials[4] = floor;
+  // Named, so that a relief can be put on a wall (`vlf render --relief back=DEPTH_IMAGE`).
+  const char* const walls[6] = { "left", "right", "back", "front", "floor", "ceiling" };
+  std::copy(std::begin(walls), std::end(walls), room.Names);
   room.AddTo(t);
   for (float x : { 1.6f, 4.0f })
   {

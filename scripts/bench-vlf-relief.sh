@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: BSD-3-Clause
-# A relief lit by the light field, measured against the truth: the Cornell box with a relief on
-# its back wall, from one camera,
-#   - path traced on the dense displaced mesh of the relief (`trace --scene cornell --relief
+# A relief lit by the light field, measured against the truth: a scene (the Cornell box unless
+# SCENE names an OBJ file) with a relief on one of its walls (SURFACE, the back wall unless
+# told), from one camera,
+#   - path traced on the dense displaced mesh of the relief (`trace --scene "$scene" --relief
 #     back=DEPTH --exr`, the reference), twice with other random paths so that the reference's
 #     own noise is printed beside the errors, with the relief's pixel mask (--relief-mask);
 #   - the flat wall path traced and drawn by the field without a relief, over the same pixels:
@@ -26,7 +27,9 @@
 # Depth maps: a procedural brick map (written here) and, when the Debian package redeclipse-data
 # is installed, its brick height map (wicked/highqualitybrickz.jpg, inverted to depth); skipped
 # when absent. Settings through the environment (defaults in brackets): DIRECTIONS [2049], RAYS
-# [32] (the field), SIZE [256] (square images), SAMPLES [1024] (paths per pixel of the
+# [32] (the field), SCENE [cornell, or an OBJ + MTL scene with named surfaces, e.g. the props
+# office of `mesolight bench vlf-accuracy --scenes props --write-obj DIR`], SURFACE [back],
+# SIZE [256] (square images), SAMPLES [1024] (paths per pixel of the
 # references), SUPERSAMPLING [2] (the GPU's pixels drawn per image pixel side), DEPTH_SCALE [0.05], CAMERA [278,273,-800,278,273,0, the published Cornell camera],
 # FOV [39.3077], CSV_DIR [docs/measurements/relief-against-path-tracer in the source tree],
 # LABEL_SUFFIX [none: appended to every CSV row's label, e.g. to tell two binaries' runs on the
@@ -48,6 +51,15 @@ camera="${CAMERA:-278,273,-800,278,273,0}"
 fov="${FOV:-39.3077}"
 csv_dir="${CSV_DIR:-$source_dir/docs/measurements/relief-against-path-tracer}"
 suffix="${LABEL_SUFFIX:-}"
+scene="${SCENE:-cornell}"
+surface="${SURFACE:-back}"
+scene_args=()
+if [ "$scene" != cornell ]; then
+  scene="$(realpath "$scene")"
+  scene_args=("$scene")
+fi
+# The rows' label: the scene's file name without .obj, and the surface ("$label-...").
+label="$(basename "$scene" .obj)-$surface"
 mkdir -p "$out/input" "$csv_dir"
 cd "$out"
 log() { echo "+ $*" >> commands.txt; }
@@ -105,9 +117,10 @@ else
   echo "note: redeclipse-data not installed; only the procedural map is measured"
 fi
 
-field="$out/cornell-$directions.vlf"
+field="$out/$(basename "$scene" .obj)-$directions-$rays.vlf"
 if [ ! -f "$field" ]; then
-  t=$(timed propagate "$bin" vlf propagate --out "$field" --directions "$directions" --rays "$rays")
+  t=$(timed propagate "$bin" vlf propagate "${scene_args[@]}" --out "$field" \
+    --directions "$directions" --rays "$rays")
   echo "field: $directions directions, $rays rays per side, propagated in $t s"
 fi
 
@@ -116,16 +129,16 @@ status=0
 for entry in "${maps[@]}"; do
   name="${entry%%:*}"
   depth="${entry#*:}"
-  relief=(--relief "back=$depth" --relief-depth-scale "$scale")
+  relief=(--relief "$surface=$depth" --relief-depth-scale "$scale")
   echo "== $name"
   # References already in OUTDIR (same settings) are reused: they are the slow part.
   if [ -f "$name-reference.exr" ] && [ -f "$name-reference-2.exr" ] && [ -f "$name-mask.exr" ]; then
     echo "reusing $out/$name-reference*.exr and $name-mask.exr"
   else
-    t_ref=$(timed "$name-reference" "$bin" trace --scene cornell "${relief[@]}" "${view[@]}" \
+    t_ref=$(timed "$name-reference" "$bin" trace --scene "$scene" "${relief[@]}" "${view[@]}" \
       --width "$size" --height "$size" --samples "$samples" --seed 1 --offscreen \
       --out "$name-reference.png" --exr "$name-reference.exr" --relief-mask "$name-mask.exr")
-    t_ref2=$(timed "$name-reference-2" "$bin" trace --scene cornell "${relief[@]}" "${view[@]}" \
+    t_ref2=$(timed "$name-reference-2" "$bin" trace --scene "$scene" "${relief[@]}" "${view[@]}" \
       --width "$size" --height "$size" --samples "$samples" --seed 2 --offscreen \
       --out "$name-reference-2.png" --exr "$name-reference-2.exr")
     echo "reference: $t_ref s, second reference: $t_ref2 s ($samples paths per pixel)"
@@ -154,7 +167,7 @@ for entry in "${maps[@]}"; do
     --reference "$name-reference.exr" --reference-2 "$name-reference-2.exr"
     --mask "$name-mask.exr" --images "vlf-render=$name-field.exr$gpu_images"
     --times "vlf-render=${frame:-0}"
-    --label "cornell-back-$name-$directions-$samples$suffix" --write-images "$name"
+    --label "$label-$name-$directions-$samples$suffix" --write-images "$name"
     --csv "$csv_dir/relief-against-path-tracer.csv"
     --plot "$csv_dir/relief-against-path-tracer-$name.png")
   log "$bin" "${bench[@]}"
@@ -175,7 +188,7 @@ for entry in "${maps[@]}"; do
     bench=(bench vlf-relief --reference "$name-reference.exr" --reference-2 "$name-reference-2.exr"
       --mask "$name-mask.exr"
       --images "$method=$name-$method.exr,flat-wall=$name-flat-wall.exr,one-light=$name-one-light.exr"
-      --label "cornell-back-$name-$method-$directions-$samples$suffix"
+      --label "$label-$name-$method-$directions-$samples$suffix"
       --csv "$csv_dir/relief-against-path-tracer.csv")
     log "$bin" "${bench[@]}"
     "$bin" "${bench[@]}" | tee "$name-$method-bench.log"
@@ -185,7 +198,7 @@ done
 first="${maps[0]%%:*}"
 if [ -f "$first-mask.exr" ]; then
   if [ ! -f flat-reference.exr ]; then
-    timed flat-reference "$bin" trace --scene cornell "${view[@]}" --width "$size" \
+    timed flat-reference "$bin" trace --scene "$scene" "${view[@]}" --width "$size" \
       --height "$size" --samples "$samples" --seed 1 --offscreen --out flat-reference.png \
       --exr flat-reference.exr > /dev/null
   fi
@@ -194,7 +207,7 @@ if [ -f "$first-mask.exr" ]; then
   if [ -f flat-reference.exr ] && [ -f flat-field.exr ]; then
     echo "== the flat wall (no relief), over the $first relief's pixels"
     bench=(bench vlf-relief --reference flat-reference.exr --mask "$first-mask.exr"
-      --images "flat-wall-field=flat-field.exr" --label "cornell-back-flat-$directions-$samples$suffix"
+      --images "flat-wall-field=flat-field.exr" --label "$label-flat-$directions-$samples$suffix"
       --csv "$csv_dir/relief-against-path-tracer.csv")
     log "$bin" "${bench[@]}"
     "$bin" "${bench[@]}" | tee flat-bench.log
