@@ -3,6 +3,7 @@
 // built by the cores-only sanitizer stage (tests/cores). Files are written with OpenImageIO or by
 // hand (a PFM header is a line of text).
 #include "ImageFile.h"
+#include "TestDirectory.h"
 
 #include <OpenImageIO/imageio.h>
 
@@ -27,14 +28,6 @@ using mesolight::ImageSampleType;
 
 namespace
 {
-fs::path TempDir(const std::string& name)
-{
-  const fs::path dir = fs::path(MESOLIGHT_TEST_TEMP_DIR) / ("ImageFile-" + name);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
 /// Writes a width x height float image with `channels` channels, value = index.
 bool WriteFloat(
   const fs::path& file, int width, int height, int channels, std::vector<float> values = {})
@@ -115,7 +108,7 @@ Outcome Pixels(const fs::path& file, const ImageFileInfo& info, void* pixels, st
 
 TEST(ImageFile, MissingEmptyAndDirectoryPathsAreRefused)
 {
-  const fs::path dir = TempDir("paths");
+  const fs::path dir = mesolight_test::TestDirectory();
   ImageFileInfo info;
   std::string message;
   EXPECT_EQ(Info("", info, message), ImageFileStatus::NoFileName);
@@ -135,7 +128,7 @@ TEST(ImageFile, UnreadableFileIsRefused)
   // anyone may enter.
   const bool root = ::geteuid() == 0;
   const uid_t nobody = 65534;
-  fs::path dir = TempDir("unreadable");
+  fs::path dir = mesolight_test::TestDirectory();
   if (root)
   {
     std::string pattern = (fs::temp_directory_path() / "mesolight-unreadable-XXXXXX").string();
@@ -177,7 +170,7 @@ TEST(ImageFile, UnreadableFileIsRefused)
 
 TEST(ImageFile, CorruptAndUnknownFilesAreRefusedWithOpenImageIOsReason)
 {
-  const fs::path dir = TempDir("corrupt");
+  const fs::path dir = mesolight_test::TestDirectory();
   WriteBytes(dir / "bad.png", "this is not a PNG file at all");
   WriteBytes(dir / "bad.mesolight-unknown", "nor is this anything");
   ImageFileInfo info;
@@ -221,7 +214,7 @@ TEST(ImageFile, AtMostFourChannelsAreRead)
   EXPECT_EQ(info.Channels, 4);
   EXPECT_EQ(info.ByteSize(), 2u * 3u * 4u * 4u);
 
-  const fs::path dir = TempDir("channels");
+  const fs::path dir = mesolight_test::TestDirectory();
   ASSERT_TRUE(WriteFloat(dir / "six.exr", 3, 2, 6));
   ASSERT_EQ(Info(dir / "six.exr", info, message), Accepted) << message;
   EXPECT_EQ(info.FileChannels, 6);
@@ -236,7 +229,7 @@ TEST(ImageFile, AtMostFourChannelsAreRead)
 TEST(ImageFile, AbsurdDimensionsAreRefusedBeforeAllocating)
 {
   // A PFM header claiming 100000 x 100000 RGB floats (120 GB) and no pixels: 20 bytes.
-  const fs::path dir = TempDir("absurd");
+  const fs::path dir = mesolight_test::TestDirectory();
   WriteBytes(dir / "huge.pfm", "PF\n100000 100000\n-1.0\n");
   ImageFileInfo info;
   std::string message;
@@ -256,7 +249,7 @@ TEST(ImageFile, AbsurdDimensionsAreRefusedBeforeAllocating)
 
 TEST(ImageFile, TruncatedPixelsAreRefused)
 {
-  const fs::path dir = TempDir("truncated");
+  const fs::path dir = mesolight_test::TestDirectory();
   // OpenImageIO reads PFM but does not write it: header and little-endian floats by hand.
   std::string pfm = "PF\n64 64\n-1.0\n";
   pfm += std::string(64 * 64 * 3 * sizeof(float), '\0');
@@ -273,7 +266,7 @@ TEST(ImageFile, TruncatedPixelsAreRefused)
 
 TEST(ImageFile, AFileThatChangedAfterItsHeaderIsRefused)
 {
-  const fs::path dir = TempDir("changed");
+  const fs::path dir = mesolight_test::TestDirectory();
   ASSERT_TRUE(WriteFloat(dir / "c.exr", 4, 4, 1));
   ImageFileInfo info;
   std::string message;
@@ -288,7 +281,7 @@ TEST(ImageFile, AFileThatChangedAfterItsHeaderIsRefused)
 
 TEST(ImageFile, NonFiniteSamplesAreCounted)
 {
-  const fs::path dir = TempDir("nonfinite");
+  const fs::path dir = mesolight_test::TestDirectory();
   const float nan = std::numeric_limits<float>::quiet_NaN();
   const float inf = std::numeric_limits<float>::infinity();
   ASSERT_TRUE(WriteFloat(dir / "n.exr", 2, 2, 1, { 1.f, nan, -inf, 3e38f }));
@@ -304,7 +297,7 @@ TEST(ImageFile, NonFiniteSamplesAreCounted)
 
 TEST(ImageFile, StoppingThroughProgressReadsNothingFurther)
 {
-  const fs::path dir = TempDir("abort");
+  const fs::path dir = mesolight_test::TestDirectory();
   ASSERT_TRUE(WriteFloat(dir / "a.exr", 8, 300, 1));
   ImageFileInfo info;
   std::string message;
@@ -321,7 +314,7 @@ TEST(ImageFile, OpenExrAttributesLargerThanTheFileAreRefused)
 {
   // Found by the image_file fuzz target: OpenEXR allocated the 1.8 GB an attribute of a 600-byte
   // file claimed (fuzz/corpus/image_file/crash-exr-attribute-claims-1.8GB).
-  const fs::path dir = TempDir("exr");
+  const fs::path dir = mesolight_test::TestDirectory();
   std::string bytes("\x76\x2f\x31\x01\x02\x00\x00\x00", 8);
   bytes += std::string("comments\0string\0", 16);
   bytes += std::string("\x00\x00\x00\x70", 4); // 1.8 GB of comment

@@ -5,6 +5,7 @@
 // size is no tile's. Without VTK: also built by the cores-only sanitizer stage (tests/cores).
 #include "ImageFile.h"
 #include "SrtmHeightFile.h"
+#include "TestDirectory.h"
 
 #include <OpenImageIO/imageio.h>
 
@@ -23,14 +24,6 @@ using mesolight::ImageSampleType;
 
 namespace
 {
-fs::path TempDir(const std::string& name)
-{
-  const fs::path dir = fs::path(MESOLIGHT_TEST_TEMP_DIR) / ("SrtmHeightFile-" + name);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
 /// Heights in file order (the northernmost row first): distinct per texel, negative ones (below
 /// sea level) and both bytes non-zero, voids in one corner.
 std::vector<std::int16_t> TileHeights(int side)
@@ -92,7 +85,7 @@ TEST(SrtmHeightFile, TileSidesFromFileSizes)
 
 TEST(SrtmHeightFile, HeightsAsOpenImageIOReadsTheSameTiff)
 {
-  const fs::path dir = TempDir("same");
+  const fs::path dir = mesolight_test::TestDirectory();
   const int side = 1201;
   const std::vector<std::int16_t> heights = TileHeights(side);
   const fs::path tile = dir / "N45E006.hgt";
@@ -134,7 +127,7 @@ TEST(SrtmHeightFile, HeightsAsOpenImageIOReadsTheSameTiff)
 
 TEST(SrtmHeightFile, SizesOfNoTileAreRefusedWithTheSizesExpected)
 {
-  const fs::path dir = TempDir("sizes");
+  const fs::path dir = mesolight_test::TestDirectory();
   const fs::path odd = dir / "odd.hgt";
   std::ofstream(odd, std::ios::binary) << std::string(2884801, '\0');
   try
@@ -173,7 +166,7 @@ TEST(SrtmHeightFile, SizesOfNoTileAreRefusedWithTheSizesExpected)
 
 TEST(SrtmHeightFile, ATileThatChangedAfterItsHeaderIsRefused)
 {
-  const fs::path dir = TempDir("changed");
+  const fs::path dir = mesolight_test::TestDirectory();
   const fs::path tile = dir / "tile.hgt";
   WriteTile(tile, TileHeights(64));
   const mesolight::ImageFileInfo info = mesolight::ReadImageFileInfo(tile.string(), 0);
@@ -194,7 +187,7 @@ TEST(SrtmHeightFile, ATileThatChangedAfterItsHeaderIsRefused)
 
 TEST(SrtmHeightFile, StoppingThroughProgressReadsNothingFurther)
 {
-  const fs::path dir = TempDir("progress");
+  const fs::path dir = mesolight_test::TestDirectory();
   const fs::path tile = dir / "tile.hgt";
   WriteTile(tile, TileHeights(1201));
   const mesolight::ImageFileInfo info = mesolight::ReadImageFileInfo(tile.string(), 0);

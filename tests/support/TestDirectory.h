@@ -1,0 +1,29 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// A fresh directory per test, written once for the modules' unit tests and the algorithm cores'
+// (which build without VTK, so this header includes none of it).
+#ifndef mesolight_TestDirectory_h
+#define mesolight_TestDirectory_h
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+
+namespace mesolight_test
+{
+
+/// A fresh, empty directory for the current test under the build tree (MESOLIGHT_TEST_TEMP_DIR,
+/// set by the test target), named after the test.
+inline std::filesystem::path TestDirectory()
+{
+  const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
+  std::filesystem::path dir = std::filesystem::path(MESOLIGHT_TEST_TEMP_DIR) /
+    (std::string(info->test_suite_name()) + "." + info->name());
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+} // namespace mesolight_test
+
+#endif
