@@ -13,8 +13,10 @@
 #include "ChartPlot.h"
 #include "CommandLine.h"
 #include "CornellRegions.h" // WriteLinearImage, ReadLinearImage
+#include "LightFieldCamera.h"
 #include "OutputFile.h"
 #include "Timing.h"
+#include "TraceObjScene.h" // IsObjSceneName
 #include "VlfAccuracyScenes.h"
 #include "VlfPixelComparison.h"
 
@@ -223,9 +225,11 @@ int RunVlfAccuracyBenchmark(const std::vector<std::string>& args)
     "black-where-lit pixels,\nwithout and with the final gather (FinalGather.h) and the bilateral "
     "texture filter.\n"
     "A sixth scene, props (an office of nine models made for a game, open meshes; they are read "
-    "from\nDebian's redeclipse-data), runs when named.\n");
-  cl.AddValue("--scenes", "LIST", "boxes,room,corridor,thin,cornell; or props",
+    "from\nDebian's redeclipse-data), runs when named, and so does any OBJ + MTL scene file, seen "
+    "from --camera.\n");
+  cl.AddValue("--scenes", "LIST", "boxes,room,corridor,thin,cornell; props; or FILE.obj",
     "boxes,room,corridor,thin,cornell");
+  AddLightFieldCameraOptions(cl); // the view of a FILE.obj scene
   cl.AddValue("--settings", "LIST",
     "per scene: auto, auto-uniform (auto without its finer texels on surfaces others stand on), "
     "auto-adaptive (auto's, texels refined per surface from the light of a first pass on top of "
@@ -353,17 +357,44 @@ int RunVlfAccuracyBenchmark(const std::vector<std::string>& args)
   std::printf("%-9s %-12s %6s %4s %8s %9s %7s %7s %8s %9s %6s %7s %7s %6s %6s\n", "scene",
     "settings", "dirs", "rays", "texel m", "lines", "iter", "time s", "memory", "filter", "mean",
     "p95", "black", "refn", "pix");
-  for (const std::string& name : cl.GetStringList("--scenes"))
+  for (const std::string& requested : cl.GetStringList("--scenes"))
   {
     AccuracyScene s;
-    try
+    if (IsObjSceneName(requested))
     {
-      s = MakeAccuracyScene(name);
+      PinholeCamera camera;
+      double up[3] = { 0.0, 1.0, 0.0 }, degrees = 0.0;
+      try
+      {
+        s = MakeObjAccuracyScene(requested, camera);
+      }
+      catch (const std::exception& e)
+      {
+        std::cerr << "mesolight bench vlf-accuracy: " << e.what() << "\n";
+        return 1;
+      }
+      glm::vec3 lower, upper;
+      SceneBounds(s.Scene, lower, upper);
+      if (!ReadCameraOptions(cl, lower, upper, s.Camera.Position, s.Camera.FocalPoint, up, error) ||
+        !ReadViewAngle(cl, degrees, error))
+      {
+        return cl.UsageError(error);
+      }
+      s.Camera.ViewUp = glm::vec3(up[0], up[1], up[2]);
+      s.Camera.ViewAngleDegrees = static_cast<float>(degrees);
     }
-    catch (const std::exception& e)
+    else
     {
-      return cl.UsageError(e.what());
+      try
+      {
+        s = MakeAccuracyScene(requested);
+      }
+      catch (const std::exception& e)
+      {
+        return cl.UsageError(e.what());
+      }
     }
+    const std::string& name = s.Name;
     const EmbreeScene embree(s.Scene);
     const std::vector<PixelHit> hits = PrimaryHits(s, embree, width, height);
     std::printf(

@@ -326,18 +326,20 @@ std::size_t AddModel(TriangleScene& scene, const std::string& path, float height
   const float scale = height / (upper.y - lower.y);
   const glm::vec3 foot(0.5f * (lower.x + upper.x), lower.y, 0.5f * (lower.z + upper.z));
   const float r = glm::radians(degrees), c = std::cos(r), s = std::sin(r);
-  for (glm::vec3& p : model.Positions)
+  // Appended by hand, not by TriangleScene::Append: the model's faces take the scene's material
+  // `material` itself, not a copy of it (an OBJ written from the scene would name it twice).
+  const auto first = static_cast<std::uint32_t>(scene.Positions.size());
+  for (const glm::vec3& p : model.Positions)
   {
     const glm::vec3 q = scale * (p - foot);
-    p = base + glm::vec3(c * q.x + s * q.z, q.y, -s * q.x + c * q.z);
+    scene.Positions.push_back(base + glm::vec3(c * q.x + s * q.z, q.y, -s * q.x + c * q.z));
   }
-  model.Normals.clear();
-  model.TextureCoordinates.clear();
-  model.SurfaceNames.clear();
-  model.SurfaceIds.clear();
-  model.Materials = { scene.Materials[material] };
-  std::fill(model.MaterialIds.begin(), model.MaterialIds.end(), 0u);
-  scene.Append(model);
+  for (const glm::uvec3& t : model.Triangles)
+  {
+    scene.Triangles.push_back(t + first);
+    scene.MaterialIds.push_back(material);
+    scene.NameLastTriangle(TriangleScene::NoSurface);
+  }
   return openEdges;
 }
 
@@ -421,6 +423,21 @@ AccuracyScene Cornell()
   return s;
 }
 } // namespace
+
+AccuracyScene MakeObjAccuracyScene(const std::string& path, const PinholeCamera& camera)
+{
+  ObjReadOptions options;
+  options.RequireEmitter = true;
+  ObjSceneRead read = ReadObjScene(path, options);
+  AccuracyScene s;
+  const std::size_t slash = path.find_last_of('/');
+  s.Name = path.substr(slash == std::string::npos ? 0 : slash + 1);
+  s.Name = s.Name.size() > 4 ? s.Name.substr(0, s.Name.size() - 4) : "scene";
+  s.Description = path;
+  s.Scene = std::move(read.Scene);
+  s.Camera = camera;
+  return s;
+}
 
 std::vector<std::string> AccuracySceneNames()
 {
