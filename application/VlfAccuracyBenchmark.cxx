@@ -362,11 +362,10 @@ int RunVlfAccuracyBenchmark(const std::vector<std::string>& args)
     AccuracyScene s;
     if (IsObjSceneName(requested))
     {
-      PinholeCamera camera;
       double up[3] = { 0.0, 1.0, 0.0 }, degrees = 0.0;
       try
       {
-        s = MakeObjAccuracyScene(requested, camera);
+        s = MakeObjAccuracyScene(requested);
       }
       catch (const std::exception& e)
       {

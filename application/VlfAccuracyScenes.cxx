@@ -424,7 +424,7 @@ AccuracyScene Cornell()
 }
 } // namespace
 
-AccuracyScene MakeObjAccuracyScene(const std::string& path, const PinholeCamera& camera)
+AccuracyScene MakeObjAccuracyScene(const std::string& path)
 {
   ObjReadOptions options;
   options.RequireEmitter = true;
@@ -435,7 +435,6 @@ AccuracyScene MakeObjAccuracyScene(const std::string& path, const PinholeCamera&
   s.Name = s.Name.size() > 4 ? s.Name.substr(0, s.Name.size() - 4) : "scene";
   s.Description = path;
   s.Scene = std::move(read.Scene);
-  s.Camera = camera;
   return s;
 }
 

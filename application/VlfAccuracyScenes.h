@@ -43,9 +43,9 @@ std::vector<std::string> AccuracySceneNames();
 // its models.
 AccuracyScene MakeAccuracyScene(const std::string& name);
 
-// A user's OBJ + MTL scene (at least one emitter) seen from `camera`, named after the file's
-// stem. Throws ObjSceneError, or std::runtime_error for a scene without an emitter.
-AccuracyScene MakeObjAccuracyScene(const std::string& path, const PinholeCamera& camera);
+// A user's OBJ + MTL scene (at least one emitter), named after the file's stem; the caller sets
+// its camera (the benchmark's --camera, which needs the scene's bounds). Throws ObjSceneError.
+AccuracyScene MakeObjAccuracyScene(const std::string& path);
 
 } // namespace mesolight
 

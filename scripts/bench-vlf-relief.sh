@@ -3,12 +3,12 @@
 # A relief lit by the light field, measured against the truth: a scene (the Cornell box unless
 # SCENE names an OBJ file) with a relief on one of its walls (SURFACE, the back wall unless
 # told), from one camera,
-#   - path traced on the dense displaced mesh of the relief (`trace --scene "$scene" --relief
-#     back=DEPTH --exr`, the reference), twice with other random paths so that the reference's
+#   - path traced on the dense displaced mesh of the relief (`trace --scene SCENE --relief
+#     SURFACE=DEPTH --exr`, the reference), twice with other random paths so that the reference's
 #     own noise is printed beside the errors, with the relief's pixel mask (--relief-mask);
 #   - the flat wall path traced and drawn by the field without a relief, over the same pixels:
 #     the field's own error there, which the relief inherits;
-#   - `vlf render --relief back=DEPTH --exr` (the method as a user runs it), and the interactive
+#   - `vlf render --relief SURFACE=DEPTH --exr` (the method as a user runs it), and the interactive
 #     GPU path (`vlf render --mode progressive --relief ...`, the relief mapper as `vlf view`
 #     draws it, with and without its precomputed occlusion), measured as a method of its own
 #     against the same negative cases: drawn at one ray per pixel and with `--supersampling S`
@@ -58,7 +58,8 @@ if [ "$scene" != cornell ]; then
   scene="$(realpath "$scene")"
   scene_args=("$scene")
 fi
-# The rows' label: the scene's file name without .obj, and the surface ("$label-...").
+# The rows' labels begin with the scene's file name without .obj and the surface
+# ("cornell-back-..." by default).
 label="$(basename "$scene" .obj)-$surface"
 mkdir -p "$out/input" "$csv_dir"
 cd "$out"
