@@ -134,7 +134,17 @@ LightApproximation EstimateEmitterLights(
       }
       continue;
     }
-    for (const std::vector<std::uint32_t>& lamp : ConnectedPieces(scene, surface.Triangles))
+    // A light per lamp; but a surface of more lamps than a MaxSplit x MaxSplit grid has cells
+    // (a wall of LED tiles) is cut into that grid instead, a light per cell with lamp area in it,
+    // so that the count of lights, each a shadow on the GPU, stays bounded.
+    const int maxSplit = std::max(1, options.MaxSplit);
+    std::vector<std::vector<std::uint32_t>> lamps = ConnectedPieces(scene, surface.Triangles);
+    const bool grid = lamps.size() > static_cast<std::size_t>(maxSplit * maxSplit);
+    if (grid)
+    {
+      lamps = { surface.Triangles };
+    }
+    for (const std::vector<std::uint32_t>& lamp : lamps)
     {
       EmitterLight light;
       light.Surface = s;
@@ -172,13 +182,20 @@ LightApproximation EstimateEmitterLights(
         flat.push_back(corners);
       }
       const double limit = std::max(1e-12, static_cast<double>(options.SplitRatio) * distance);
-      const int maxSplit = std::max(1, options.MaxSplit);
-      const int nu = options.Split
-        ? std::min(maxSplit, std::max(1, static_cast<int>(std::ceil((upper.x - lower.x) / limit))))
-        : 1;
-      const int nv = options.Split
-        ? std::min(maxSplit, std::max(1, static_cast<int>(std::ceil((upper.y - lower.y) / limit))))
-        : 1;
+      // Cells along an extent: the grid's, the split's (up to maxSplit), or one.
+      const auto cells = [&](double extent)
+      {
+        if (grid)
+        {
+          return maxSplit;
+        }
+        if (!options.Split)
+        {
+          return 1;
+        }
+        return std::min(maxSplit, std::max(1, static_cast<int>(std::ceil(extent / limit))));
+      };
+      const int nu = cells(upper.x - lower.x), nv = cells(upper.y - lower.y);
       if (nu * nv == 1)
       {
         out.Lights.push_back(light);

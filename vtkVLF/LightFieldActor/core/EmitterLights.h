@@ -44,7 +44,9 @@ LightApproximation EstimateEmitterLights(const LightField& field);
 // it (the inverse-square law holds beyond a few emitter sizes). With Split, a lamp whose side
 // exceeds SplitRatio x its distance to ReferencePoint (the object's centre, unit sphere) is cut
 // into a grid of up to MaxSplit x MaxSplit rectangles of its plane, each a light at the centroid
-// of the lamp's part inside it (triangles clipped exactly), with that part's area.
+// of the lamp's part inside it (triangles clipped exactly), with that part's area. A surface of
+// more than MaxSplit^2 lamps is cut into that grid whatever Split says, so the lights of one
+// surface never outnumber its cells.
 struct EmitterLightOptions
 {
   bool Split = false;

@@ -12,9 +12,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <utility>
+#include <vector>
 
 using namespace mesolight;
 using namespace mesolight::vlf;
@@ -53,21 +56,20 @@ glm::vec3 ExactIrradiance(const glm::vec3& p, const glm::vec3& n)
   }
   return le * static_cast<float>(sum);
 }
-// A closed grey box [-1, 1]^3 (fronts inward) with two lamps facing down just below its ceiling:
-// 0.4 x 0.4 centred at (-0.6, h, 0) and 0.2 x 0.2 at (0.5, h, 0), of emission `dim` and `bright`
-// (one material when they are equal), propagated coarsely.
+// A closed grey box [-1, 1]^3 (fronts inward) with lamps facing down just below its ceiling,
+// [X0, X1] x [Z0, Z1] each (lamps of equal emission share one material), propagated coarsely.
 constexpr float LampHeight = 0.999f;
-std::unique_ptr<LightField> BoxWithTwoLamps(
-  const glm::vec3& dimEmission, const glm::vec3& brightEmission)
+struct Lamp
+{
+  float X0, X1, Z0, Z1;
+  glm::vec3 Emission;
+};
+std::unique_ptr<LightField> BoxWithLamps(const std::vector<Lamp>& lamps)
 {
   TriangleScene scene;
-  SceneMaterial grey, dim, bright;
+  SceneMaterial grey;
   grey.Diffuse = glm::vec3(0.5f);
-  dim.Emission = dimEmission;
-  bright.Emission = brightEmission;
-  const std::uint32_t g = scene.AddMaterial(grey), d = scene.AddMaterial(dim);
-  const std::uint32_t b = dimEmission == brightEmission ? d : scene.AddMaterial(bright);
-  const float h = LampHeight;
+  const std::uint32_t g = scene.AddMaterial(grey);
   for (int axis = 0; axis < 3; ++axis) // the box, fronts inward
   {
     for (const float side : { -1.0f, 1.0f })
@@ -89,16 +91,28 @@ std::unique_ptr<LightField> BoxWithTwoLamps(
       scene.AddPolygon(quad, g);
     }
   }
-  scene.AddPolygon(
-    { { -0.8f, h, -0.2f }, { -0.4f, h, -0.2f }, { -0.4f, h, 0.2f }, { -0.8f, h, 0.2f } }, d);
-  scene.AddPolygon(
-    { { 0.4f, h, -0.1f }, { 0.6f, h, -0.1f }, { 0.6f, h, 0.1f }, { 0.4f, h, 0.1f } }, b);
-  for (std::size_t t = scene.TriangleCount() - 4; t < scene.TriangleCount(); ++t)
+  const float h = LampHeight;
+  std::vector<std::pair<glm::vec3, std::uint32_t>> materials;
+  for (const Lamp& lamp : lamps)
   {
-    if (scene.FaceNormal(t).y > 0.0f) // face down
+    std::uint32_t m = 0;
+    const auto same = std::find_if(materials.begin(), materials.end(),
+      [&lamp](const auto& known) { return known.first == lamp.Emission; });
+    if (same != materials.end())
     {
-      std::swap(scene.Triangles[t].y, scene.Triangles[t].z);
+      m = same->second;
     }
+    else
+    {
+      SceneMaterial emitter;
+      emitter.Emission = lamp.Emission;
+      m = scene.AddMaterial(emitter);
+      materials.emplace_back(lamp.Emission, m);
+    }
+    // Counter-clockwise seen from below: facing down.
+    scene.AddPolygon({ { lamp.X0, h, lamp.Z0 }, { lamp.X1, h, lamp.Z0 }, { lamp.X1, h, lamp.Z1 },
+                       { lamp.X0, h, lamp.Z1 } },
+      m);
   }
   LightFieldSettings settings;
   settings.Directions = 33;
@@ -107,6 +121,15 @@ std::unique_ptr<LightField> BoxWithTwoLamps(
   std::unique_ptr<LightField> field = LightField::Build(scene, settings);
   Propagate(*field, 1);
   return field;
+}
+
+// The two lamps of the tests below: 0.4 x 0.4 centred at (-0.6, h, 0) and 0.2 x 0.2 at (0.5, h,
+// 0), of emission `dim` and `bright`.
+std::unique_ptr<LightField> BoxWithTwoLamps(
+  const glm::vec3& dimEmission, const glm::vec3& brightEmission)
+{
+  return BoxWithLamps(
+    { { -0.8f, -0.4f, -0.2f, 0.2f, dimEmission }, { 0.4f, 0.6f, -0.1f, 0.1f, brightEmission } });
 }
 
 // Irradiance at p (normal n) from a one-sided rectangle [x0, x1] x [z0, z1] at height y facing
@@ -275,4 +298,48 @@ TEST(ObjectEmitterLights, SeparateLampsOfOneMaterialAreSeparateLights)
     exact, two, 100.0 * errorTwo, one, 100.0 * errorOne);
   EXPECT_LT(errorTwo, 0.05);
   EXPECT_GT(errorOne, 0.2);
+}
+
+TEST(ObjectEmitterLights, ManyLampsOfOneSurfaceShareAGridOfLights)
+{
+  // 25 lamps of one material, 0.1 x 0.1 on a 0.3 pitch: more than a 4 x 4 grid has cells, so the
+  // surface is cut into that grid, at most 16 lights, keeping the lamps' area and centroid.
+  std::vector<Lamp> tiles;
+  for (int i = 0; i < 5; ++i)
+  {
+    for (int j = 0; j < 5; ++j)
+    {
+      const float x = -0.65f + 0.3f * i, z = -0.65f + 0.3f * j;
+      tiles.push_back({ x, x + 0.1f, z, z + 0.1f, glm::vec3(3.0f) });
+    }
+  }
+  const float h = LampHeight;
+  const std::unique_ptr<LightField> field = BoxWithLamps(tiles);
+  const LightApproximation lights = EstimateEmitterLights(*field);
+  EXPECT_GT(lights.Lights.size(), 4u);
+  EXPECT_LE(lights.Lights.size(), 16u);
+  const double scale2 = field->NormalizationScale() * field->NormalizationScale();
+  double area = 0.0;
+  glm::dvec3 moment(0.0);
+  for (const EmitterLight& l : lights.Lights)
+  {
+    area += l.Area / scale2;
+    moment += l.Area / scale2 * glm::dvec3(ToWorld(*field, l.Position));
+  }
+  EXPECT_NEAR(area, 25 * 0.01, 1e-5);
+  EXPECT_LT(glm::length(glm::vec3(moment / area) - glm::vec3(0.0f, h, 0.0f)), 1e-4f);
+  // 1.5 below the grid's centre the lights give the exact irradiance of the 25 lamps.
+  const glm::vec3 world(0.05f, h - 1.5f, 0.1f), up(0.0f, 1.0f, 0.0f);
+  double exact = 0.0;
+  for (const Lamp& t : tiles)
+  {
+    exact += 3.0 * RectangleIrradiance(world, up, t.X0, t.X1, t.Z0, t.Z1, h);
+  }
+  const glm::vec3 kd(Pi<float>);
+  const float shaded =
+    (ShadeWithLights(lights, ToUnit(*field, world), up, kd) - kd * lights.Ambient).x;
+  std::printf("[ figures  ] 25 lamps of one surface: %zu lights; 1.5 below, exact E %.4f, the "
+              "lights %.4f (%.1f%%)\n",
+    lights.Lights.size(), exact, shaded, 100.0 * std::abs(shaded - exact) / exact);
+  EXPECT_LT(std::abs(shaded - exact) / exact, 0.02);
 }
