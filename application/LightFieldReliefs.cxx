@@ -151,7 +151,8 @@ vtkRenderer* ReliefLayer(vtkLightFieldActor* actor, vtkRenderer* walkthrough,
     return renderer;
   }
   // Above the walkthrough, its depth kept, the same camera; its lights are the field's emitters
-  // (no headlight), so they light the reliefs only.
+  // (no headlight), so they light nothing of the walkthrough (each relief shades its own
+  // surface's list, vtkReliefProperty::SetLights).
   window->SetNumberOfLayers(std::max(2, window->GetNumberOfLayers()));
   renderer->SetLayer(1);
   renderer->PreserveDepthBufferOn();
@@ -274,6 +275,9 @@ int SetUpWalkthroughReliefs(const CommandLine& cl, const char* command, vtkLight
     vtkReliefProperty* property = mapper->GetReliefProperty();
     property->SetDepthScale(depthScale);
     property->SetSelfShadowing(true);
+    // The surface's own emitter lights: the probes' scene visibility is per light of that list
+    // (more lamps than the relief shades are merged with this wall's nearest lamps kept apart).
+    property->SetLights(surface->GetEmitterLights());
     // A wall of a closed room has no silhouette: a view ray leaving the texture at its edge
     // would show the background through the hidden wall (the CPU reference keeps the wall there).
     property->SilhouettesOff();

@@ -140,6 +140,12 @@ vtkImageData* vtkReliefMapper::GetIrradianceProbes()
 }
 
 //------------------------------------------------------------------------------
+int vtkReliefMapper::GetMaximumNumberOfLights()
+{
+  return vtkReliefShading::MaximumNumberOfLights;
+}
+
+//------------------------------------------------------------------------------
 void vtkReliefMapper::ConfigureEmitterLight(
   vtkLight* light, const double position[3], const double normal[3], const double intensityRGB[3])
 {

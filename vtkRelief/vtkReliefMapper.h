@@ -41,8 +41,9 @@
  * port 3, as data or from a pipeline) light it with a virtual light field's indirect light; the
  * field's emitters become VTK lights through ConfigureEmitterLight (docs/vlf.md, "On the GPU").
  *
- * Up to vtkReliefShading::MaximumNumberOfLights (8) of the renderer's lights are shaded; further
- * lights are ignored with a warning. The relief drawing (geometry, textures, shader edits,
+ * Up to GetMaximumNumberOfLights() (8) of the renderer's lights are shaded; further lights are
+ * ignored with a warning (a light field's emitter lights are merged down to that count,
+ * vtkLightFieldReliefSurface). The relief drawing (geometry, textures, shader edits,
  * uniforms) is done by a vtkReliefShading, the same as vtkCompositeReliefMapper's.
  */
 
@@ -144,6 +145,9 @@ public:
    */
   static void ConfigureEmitterLight(vtkLight* light, const double position[3],
     const double normal[3], const double intensityRGB[3]);
+
+  /** How many of the renderer's (or the property's) switched-on lights the relief shades: 8. */
+  static int GetMaximumNumberOfLights();
 
   /** Includes the relief property's modification time. */
   vtkMTimeType GetMTime() override;

@@ -468,6 +468,7 @@ int vtkLightFieldReliefSurface::RequestData(
   // Port 1: the probes, pixel (9 i + k, j), with the scene's occlusion of the emitter lights and
   // the relief's visible share when asked for.
   std::vector<float> visibility;
+  const std::vector<vlf::EmitterLight> emitters = ReliefEmitterLights(*field, &surface);
   this->Internals->LightSamples.clear();
   if (this->SceneOcclusion)
   {
@@ -476,7 +477,7 @@ int vtkLightFieldReliefSurface::RequestData(
     // The relief's own shadow of the first emitter light's area, in the visible-share map: a
     // point light's hard shadow is not the emitter's penumbra (ReliefEmitterShadowMap).
     std::vector<glm::vec3> lights;
-    for (const vlf::EmitterLight& light : vlf::EstimateEmitterLights(*field).Lights)
+    for (const vlf::EmitterLight& light : emitters)
     {
       lights.push_back(light.Position);
     }
@@ -486,7 +487,7 @@ int vtkLightFieldReliefSurface::RequestData(
     }
   }
   FillProbesImage(probesOutput, PackProbes(probes, n), n,
-    this->SceneOcclusion ? &visibility : nullptr, vlf::EstimateEmitterLights(*field).Lights.size());
+    this->SceneOcclusion ? &visibility : nullptr, emitters.size());
   this->NamedProbes = std::make_unique<std::vector<mesolight::SH9>>(std::move(probes));
   ++this->ProbeComputations;
   const double frame[12] = { surface.Origin.x, surface.Origin.y, surface.Origin.z, surface.AxisU.x,
@@ -499,7 +500,7 @@ int vtkLightFieldReliefSurface::RequestData(
     return 1; // stopped: empty outputs
   }
 
-  AddEmitterLights(*field, this->EmitterLights);
+  AddEmitterLights(*field, &surface, this->EmitterLights);
   return 1;
 }
 
@@ -789,7 +790,7 @@ bool vtkLightFieldReliefSurface::GetEmitterLights(
   {
     return false;
   }
-  AddEmitterLights(*field, lights);
+  AddEmitterLights(*field, nullptr, lights);
   return true;
 }
 

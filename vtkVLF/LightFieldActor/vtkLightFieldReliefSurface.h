@@ -24,8 +24,10 @@
  *   coordinates), each set up by vtkReliefMapper::ConfigureEmitterLight from the radiant
  *   intensity Le x Area in world units (a cosine-lobe spot light falling off as 1 / d^2,
  *   intensity divided by pi: VTK shades Kd x intensity x cos without the Lambertian 1 / pi).
- *   Add them to the renderer that draws the relief only (a renderer of their own: the
- *   walkthrough's geometry mode is lit by its renderer's lights).
+ *   More lamps than the relief shades (vtkReliefMapper::GetMaximumNumberOfLights, 8) are merged
+ *   down to that count (Lightcuts' metric, the lamps farthest from this surface first), so no
+ *   lamp's light is dropped. Give them to the relief (vtkReliefProperty::SetLights): the scene
+ *   visibility below is per light of this list.
  *
  * Any planar surface instead of a named one (e.g. ParaView's Relief Surface lit by a Virtual
  * Light Field): polydata in world coordinates on input port 1 (SetSurfaceConnection /
@@ -192,8 +194,9 @@ public:
   vtkLightCollection* GetEmitterLights() { return this->EmitterLights; }
 
   /**
-   * The same emitter lights for the field `actor` shows, added to `lights` without a surface
-   * (e.g. for a relief-mapped movable object). False when the actor shows no field.
+   * The field's emitter lights for the field `actor` shows, added to `lights` without a surface
+   * (e.g. for a relief-mapped movable object): merged as above, but for no receiver in
+   * particular (neighbouring lamps first). False when the actor shows no field.
    */
   static bool GetEmitterLights(vtkLightFieldActor* actor, vtkLightCollection* lights);
 

@@ -23,6 +23,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <utility>
 #include <vector>
@@ -33,14 +34,38 @@ namespace vlf
 {
 namespace reliefsurface
 {
+std::vector<vlf::EmitterLight> ReliefEmitterLights(
+  const vlf::LightField& field, const vlf::ReliefSurface* surface)
+{
+  vlf::EmitterLightOptions options;
+  options.MaxLights = static_cast<std::size_t>(vtkReliefMapper::GetMaximumNumberOfLights());
+  if (surface)
+  {
+    // The receivers: the box of the surface's texture rectangle.
+    glm::dvec3 lower(std::numeric_limits<double>::max()), upper(-lower);
+    for (const double u : { 0.0, 1.0 })
+    {
+      for (const double v : { 0.0, 1.0 })
+      {
+        lower = glm::min(lower, surface->Point(u, v));
+        upper = glm::max(upper, surface->Point(u, v));
+      }
+    }
+    options.ReceiverLower = glm::vec3(lower);
+    options.ReceiverUpper = glm::vec3(upper);
+  }
+  return vlf::EstimateEmitterLights(field, options).Lights;
+}
+
 // The field's emitters as VTK lights: radiant intensity Le x Area, the area in world units
 // (world = centre + unit / scale). Packed 9 numbers a light (position, normal, intensity), the
 // form in which they travel between MPI ranks.
-std::vector<double> PackEmitterLights(const vlf::LightField& field)
+std::vector<double> PackEmitterLights(
+  const vlf::LightField& field, const vlf::ReliefSurface* surface)
 {
   const double scale = field.NormalizationScale();
   std::vector<double> packed;
-  for (const vlf::EmitterLight& emitter : vlf::EstimateEmitterLights(field).Lights)
+  for (const vlf::EmitterLight& emitter : ReliefEmitterLights(field, surface))
   {
     const glm::vec3 world = vlf::ToWorld(field, emitter.Position);
     const glm::vec3 unitIntensity = emitter.Intensity();
@@ -62,9 +87,10 @@ void AddPackedLights(const std::vector<double>& packed, vtkLightCollection* ligh
   }
 }
 
-void AddEmitterLights(const vlf::LightField& field, vtkLightCollection* lights)
+void AddEmitterLights(
+  const vlf::LightField& field, const vlf::ReliefSurface* surface, vtkLightCollection* lights)
 {
-  AddPackedLights(PackEmitterLights(field), lights);
+  AddPackedLights(PackEmitterLights(field, surface), lights);
 }
 
 // The probe image of port 1 from n x n SH9 probes (pixel (9 i + k, j)), as floats.
@@ -117,7 +143,7 @@ std::vector<float> LightVisibility(const vlf::LightField& field, const vlf::Reli
   int n, const mesolight::EmbreeScene* lent)
 {
   std::vector<glm::vec3> lights;
-  for (const vlf::EmitterLight& light : vlf::EstimateEmitterLights(field).Lights)
+  for (const vlf::EmitterLight& light : ReliefEmitterLights(field, &surface))
   {
     lights.push_back(light.Position);
   }
@@ -224,7 +250,7 @@ SurfaceResult ComputeSurface(const vlf::LightField& field, vtkPolyData* whole, i
     }
     result.Limit[6] = 1.0;
   }
-  result.Lights = PackEmitterLights(field);
+  result.Lights = PackEmitterLights(field, &surface);
   if (sceneOcclusion)
   {
     result.Visibility = LightVisibility(field, surface, n);

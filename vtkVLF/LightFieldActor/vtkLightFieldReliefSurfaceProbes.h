@@ -23,14 +23,23 @@ class EmbreeScene;
 namespace vlf
 {
 class LightField;
+struct EmitterLight;
 struct ReliefSurface;
 
 namespace reliefsurface
 {
-// The field's emitters packed 9 numbers a light (world position, normal, intensity).
-std::vector<double> PackEmitterLights(const LightField& field);
+// The field's emitters as the relief shades them: one light per lamp, merged down to the count
+// the relief shader shades (vtkReliefMapper::GetMaximumNumberOfLights), so that a room of more
+// lamps loses none of their light and every light keeps its scene visibility. Given the surface
+// they light, the lamps nearest it stay separate (the merges go to the far ones).
+std::vector<EmitterLight> ReliefEmitterLights(
+  const LightField& field, const ReliefSurface* surface = nullptr);
+
+// Those lights packed 9 numbers a light (world position, normal, intensity).
+std::vector<double> PackEmitterLights(const LightField& field, const ReliefSurface* surface);
 void AddPackedLights(const std::vector<double>& packed, vtkLightCollection* lights);
-void AddEmitterLights(const LightField& field, vtkLightCollection* lights);
+void AddEmitterLights(
+  const LightField& field, const ReliefSurface* surface, vtkLightCollection* lights);
 
 // Port 1's probe image: n x n SH9 probes as floats (pixel (9 i + k, j)), and the image itself
 // with, when given, the scene's visibility of light k as a fourth component.

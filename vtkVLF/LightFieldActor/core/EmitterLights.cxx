@@ -5,9 +5,11 @@
 #include "MathConstants.h"
 
 #include <glm/geometric.hpp>
+#include <glm/vector_relational.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <numeric>
 #include <tuple>
@@ -98,7 +100,198 @@ std::vector<std::vector<std::uint32_t>> ConnectedPieces(
   }
   return out;
 }
+
+float Brightness(const EmitterLight& light)
+{
+  const glm::vec3 i = light.Intensity();
+  return i.x + i.y + i.z;
+}
+
+// A cluster of lights for MergeEmitterLights: its members (indices), their positions' bounds and
+// their brightness-weighted normal sum.
+struct LightCluster
+{
+  std::vector<std::size_t> Members;
+  glm::dvec3 Lower{ 0.0 }, Upper{ 0.0 };
+  glm::dvec3 NormalSum{ 0.0 };
+  double Brightness = 0.0;
+};
+
+// The axis of a set of normals (their brightness-weighted mean) and the cosine of the cone about
+// it that holds them all (-1 when the mean vanishes: normals all around).
+double ConeCosine(const std::vector<EmitterLight>& lights, const std::vector<std::size_t>& a,
+  const std::vector<std::size_t>& b, const glm::dvec3& sum, glm::dvec3& axis)
+{
+  const double length = glm::length(sum);
+  if (!(length > 1e-12))
+  {
+    axis = glm::dvec3(lights[a.front()].Normal);
+    return -1.0;
+  }
+  axis = sum / length;
+  double cosine = 1.0;
+  for (const std::vector<std::size_t>* members : { &a, &b })
+  {
+    for (const std::size_t m : *members)
+    {
+      cosine = std::min(cosine, glm::dot(axis, glm::dvec3(lights[m].Normal)));
+    }
+  }
+  return cosine;
+}
+
+// Lightcuts' metric for a cluster of oriented lights (Walter et al. 2005, §4.1): its brightness
+// x (the squared diagonal of its positions' bounds + (c (1 - cos of its normal cone))^2), c the
+// scene's diameter (the field's unit sphere: 2); over the squared distance from those bounds to
+// the receivers' box when there is one (at least 0.05, a lamp on the receivers).
+double MergeCost(const std::vector<EmitterLight>& lights, const LightCluster& a,
+  const LightCluster& b, const EmitterLightOptions& options)
+{
+  const glm::dvec3 lower = glm::min(a.Lower, b.Lower), upper = glm::max(a.Upper, b.Upper);
+  const glm::dvec3 extent = upper - lower;
+  glm::dvec3 axis;
+  const double cone =
+    2.0 * (1.0 - ConeCosine(lights, a.Members, b.Members, a.NormalSum + b.NormalSum, axis));
+  double cost = (a.Brightness + b.Brightness) * (glm::dot(extent, extent) + cone * cone);
+  const glm::dvec3 receiverLower(options.ReceiverLower), receiverUpper(options.ReceiverUpper);
+  if (glm::all(glm::lessThanEqual(receiverLower, receiverUpper)))
+  {
+    const glm::dvec3 gap =
+      glm::max(glm::dvec3(0.0), glm::max(receiverLower - upper, lower - receiverUpper));
+    cost /= std::max(glm::dot(gap, gap), 0.05 * 0.05);
+  }
+  return cost;
+}
+
+// One light for a cluster: at the brightness-weighted centroid, facing along the mean normal,
+// with the members' intensity along it (each lamp's Le A cos, the cosine clamped at 0).
+EmitterLight ClusterLight(const std::vector<EmitterLight>& lights, const LightCluster& cluster)
+{
+  glm::dvec3 axis;
+  ConeCosine(lights, cluster.Members, {}, cluster.NormalSum, axis);
+  EmitterLight out = lights[cluster.Members.front()];
+  glm::dvec3 position(0.0), intensity(0.0);
+  double weight = 0.0, area = 0.0;
+  float brightest = -1.0f;
+  for (const std::size_t m : cluster.Members)
+  {
+    const EmitterLight& light = lights[m];
+    const double b = Brightness(light);
+    position += b * glm::dvec3(light.Position);
+    weight += b;
+    const double facing = std::max(0.0, glm::dot(axis, glm::dvec3(light.Normal)));
+    intensity += facing * glm::dvec3(light.Intensity());
+    area += facing * light.Area;
+    if (Brightness(light) > brightest)
+    {
+      brightest = Brightness(light);
+      out.Surface = light.Surface;
+    }
+  }
+  out.Position =
+    weight > 0.0 ? glm::vec3(position / weight) : lights[cluster.Members.front()].Position;
+  out.Normal = glm::vec3(axis);
+  out.Area = area;
+  out.Radiance = area > 0.0 ? glm::vec3(intensity / area) : glm::vec3(0.0f);
+  return out;
+}
 } // namespace
+
+//------------------------------------------------------------------------------
+std::vector<EmitterLight> MergeEmitterLights(
+  std::vector<EmitterLight> lights, const EmitterLightOptions& options)
+{
+  const std::size_t maxLights = options.MaxLights;
+  if (maxLights == 0 || lights.size() <= maxLights)
+  {
+    return lights;
+  }
+  std::vector<LightCluster> clusters(lights.size());
+  for (std::size_t i = 0; i < lights.size(); ++i)
+  {
+    LightCluster& c = clusters[i];
+    c.Members = { i };
+    c.Lower = c.Upper = glm::dvec3(lights[i].Position);
+    c.Brightness = Brightness(lights[i]);
+    c.NormalSum = c.Brightness * glm::dvec3(lights[i].Normal);
+  }
+  // Greedy pairing with each cluster's cheapest partner cached (as Lightcuts builds its tree).
+  std::vector<bool> alive(clusters.size(), true);
+  std::vector<std::size_t> partner(clusters.size(), 0);
+  std::vector<double> partnerCost(clusters.size(), 0.0);
+  const auto findPartner = [&](std::size_t i)
+  {
+    partnerCost[i] = std::numeric_limits<double>::infinity();
+    for (std::size_t j = 0; j < clusters.size(); ++j)
+    {
+      if (j != i && alive[j])
+      {
+        const double cost = MergeCost(lights, clusters[i], clusters[j], options);
+        if (cost < partnerCost[i])
+        {
+          partnerCost[i] = cost;
+          partner[i] = j;
+        }
+      }
+    }
+  };
+  for (std::size_t i = 0; i < clusters.size(); ++i)
+  {
+    findPartner(i);
+  }
+  for (std::size_t count = clusters.size(); count > maxLights; --count)
+  {
+    std::size_t a = clusters.size();
+    for (std::size_t i = 0; i < clusters.size(); ++i)
+    {
+      if (alive[i] && (a == clusters.size() || partnerCost[i] < partnerCost[a]))
+      {
+        a = i;
+      }
+    }
+    const std::size_t b = partner[a];
+    LightCluster& merged = clusters[a];
+    const LightCluster& gone = clusters[b];
+    merged.Members.insert(merged.Members.end(), gone.Members.begin(), gone.Members.end());
+    merged.Lower = glm::min(merged.Lower, gone.Lower);
+    merged.Upper = glm::max(merged.Upper, gone.Upper);
+    merged.NormalSum += gone.NormalSum;
+    merged.Brightness += gone.Brightness;
+    alive[b] = false;
+    findPartner(a);
+    for (std::size_t k = 0; k < clusters.size(); ++k)
+    {
+      if (!alive[k] || k == a)
+      {
+        continue;
+      }
+      if (partner[k] == a || partner[k] == b)
+      {
+        findPartner(k);
+      }
+      else
+      {
+        const double cost = MergeCost(lights, clusters[k], merged, options);
+        if (cost < partnerCost[k])
+        {
+          partnerCost[k] = cost;
+          partner[k] = a;
+        }
+      }
+    }
+  }
+  std::vector<EmitterLight> out;
+  for (std::size_t i = 0; i < clusters.size(); ++i)
+  {
+    if (alive[i])
+    {
+      out.push_back(ClusterLight(lights, clusters[i]));
+    }
+  }
+  std::sort(out.begin(), out.end(),
+    [](const EmitterLight& a, const EmitterLight& b) { return Brightness(a) > Brightness(b); });
+  return out;
+}
 
 //------------------------------------------------------------------------------
 LightApproximation EstimateEmitterLights(const LightField& field)
@@ -238,11 +431,8 @@ LightApproximation EstimateEmitterLights(
     }
   }
   std::sort(out.Lights.begin(), out.Lights.end(),
-    [](const EmitterLight& a, const EmitterLight& b)
-    {
-      const glm::vec3 ia = a.Intensity(), ib = b.Intensity();
-      return ia.x + ia.y + ia.z > ib.x + ib.y + ib.z;
-    });
+    [](const EmitterLight& a, const EmitterLight& b) { return Brightness(a) > Brightness(b); });
+  out.Lights = MergeEmitterLights(std::move(out.Lights), options);
   if (area > 0.0)
   {
     out.Ambient = glm::vec3(radianceArea / area);

@@ -12,6 +12,7 @@
 
 #include <glm/vec3.hpp>
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -47,13 +48,34 @@ LightApproximation EstimateEmitterLights(const LightField& field);
 // of the lamp's part inside it (triangles clipped exactly), with that part's area. A surface of
 // more than MaxSplit^2 lamps is cut into that grid whatever Split says, so the lights of one
 // surface never outnumber its cells.
+//
+// MaxLights (0: no limit) caps the count for a consumer that shades only so many lights (the
+// relief shader shades 8): the lights are merged in pairs, cheapest first, by the cluster metric
+// of Walter et al.'s "Lightcuts" (SIGGRAPH 2005) for oriented lights, intensity x (the extent of
+// the merged lights' positions^2 + (field diameter x (1 - cos of their normals' cone))^2): near
+// lamps facing the same way merge before far ones or ones that face apart. A merged light stands
+// at the intensity-weighted centroid, faces along the intensity-weighted mean normal and keeps
+// the lights' summed intensity along it (for lamps of one plane, their summed intensity), so no
+// lamp's light is dropped. A merged light errs by about (its lamps' spread / distance)^2 at a
+// receiver, so when the receivers are known (ReceiverLower..ReceiverUpper, a box; empty when
+// any bound is above the other: anywhere), the metric is divided by the squared distance
+// between the lights and that box, and the lamps nearest the receivers stay separate.
 struct EmitterLightOptions
 {
   bool Split = false;
   glm::vec3 ReferencePoint{ 0.0f };
   float SplitRatio = 0.5f;
   int MaxSplit = 4;
+  std::size_t MaxLights = 0;
+  glm::vec3 ReceiverLower{ 1.0f };
+  glm::vec3 ReceiverUpper{ -1.0f };
 };
+
+// The merging above, on its own: `lights` merged until at most options.MaxLights remain
+// (brightest first). MaxLights 0 leaves them as they are.
+std::vector<EmitterLight> MergeEmitterLights(
+  std::vector<EmitterLight> lights, const EmitterLightOptions& options);
+
 LightApproximation EstimateEmitterLights(
   const LightField& field, const EmitterLightOptions& options);
 

@@ -3,8 +3,10 @@
 // published box (the light 130 x 105 mm at y = 548.7, centre (278, 548.7, 279.5), Le (17, 12, 4),
 // facing down), several emitters sorted by power, large emitters split near the object (their
 // irradiance against the exact integral over the rectangle), separate lamps of one material as
-// separate lights, and the ambient term.
+// separate lights, more lamps than the relief shader shades merged (Lightcuts' metric) against
+// the exact irradiance, and the ambient term.
 #include "EmitterLights.h"
+#include "EmitterTestFields.h"
 #include "MathConstants.h"
 #include "WalkthroughTestFields.h"
 
@@ -21,6 +23,7 @@
 
 using namespace mesolight;
 using namespace mesolight::vlf;
+using namespace mesolight::emittertest;
 
 namespace
 {
@@ -56,73 +59,6 @@ glm::vec3 ExactIrradiance(const glm::vec3& p, const glm::vec3& n)
   }
   return le * static_cast<float>(sum);
 }
-// A closed grey box [-1, 1]^3 (fronts inward) with lamps facing down just below its ceiling,
-// [X0, X1] x [Z0, Z1] each (lamps of equal emission share one material), propagated coarsely.
-constexpr float LampHeight = 0.999f;
-struct Lamp
-{
-  float X0, X1, Z0, Z1;
-  glm::vec3 Emission;
-};
-std::unique_ptr<LightField> BoxWithLamps(const std::vector<Lamp>& lamps)
-{
-  TriangleScene scene;
-  SceneMaterial grey;
-  grey.Diffuse = glm::vec3(0.5f);
-  const std::uint32_t g = scene.AddMaterial(grey);
-  for (int axis = 0; axis < 3; ++axis) // the box, fronts inward
-  {
-    for (const float side : { -1.0f, 1.0f })
-    {
-      const int u = (axis + 1) % 3, v = (axis + 2) % 3;
-      std::vector<glm::vec3> quad(4, glm::vec3(0.0f));
-      const float su[4] = { -1, 1, 1, -1 }, sv[4] = { -1, -1, 1, 1 };
-      for (int q = 0; q < 4; ++q)
-      {
-        quad[q][axis] = side;
-        quad[q][u] = su[q];
-        quad[q][v] = sv[q];
-      }
-      glm::vec3 normal = glm::cross(quad[1] - quad[0], quad[2] - quad[0]);
-      if (glm::dot(normal, glm::vec3(0.0f) - quad[0]) < 0.0f)
-      {
-        std::swap(quad[1], quad[3]);
-      }
-      scene.AddPolygon(quad, g);
-    }
-  }
-  const float h = LampHeight;
-  std::vector<std::pair<glm::vec3, std::uint32_t>> materials;
-  for (const Lamp& lamp : lamps)
-  {
-    std::uint32_t m = 0;
-    const auto same = std::find_if(materials.begin(), materials.end(),
-      [&lamp](const auto& known) { return known.first == lamp.Emission; });
-    if (same != materials.end())
-    {
-      m = same->second;
-    }
-    else
-    {
-      SceneMaterial emitter;
-      emitter.Emission = lamp.Emission;
-      m = scene.AddMaterial(emitter);
-      materials.emplace_back(lamp.Emission, m);
-    }
-    // Counter-clockwise seen from below: facing down.
-    scene.AddPolygon({ { lamp.X0, h, lamp.Z0 }, { lamp.X1, h, lamp.Z0 }, { lamp.X1, h, lamp.Z1 },
-                       { lamp.X0, h, lamp.Z1 } },
-      m);
-  }
-  LightFieldSettings settings;
-  settings.Directions = 33;
-  settings.RaysPerSide = 8;
-  settings.TilesPerSide = 2;
-  std::unique_ptr<LightField> field = LightField::Build(scene, settings);
-  Propagate(*field, 1);
-  return field;
-}
-
 // The two lamps of the tests below: 0.4 x 0.4 centred at (-0.6, h, 0) and 0.2 x 0.2 at (0.5, h,
 // 0), of emission `dim` and `bright`.
 std::unique_ptr<LightField> BoxWithTwoLamps(
@@ -132,26 +68,6 @@ std::unique_ptr<LightField> BoxWithTwoLamps(
     { { -0.8f, -0.4f, -0.2f, 0.2f, dimEmission }, { 0.4f, 0.6f, -0.1f, 0.1f, brightEmission } });
 }
 
-// Irradiance at p (normal n) from a one-sided rectangle [x0, x1] x [z0, z1] at height y facing
-// down, of radiance le, by a fine midpoint rule.
-double RectangleIrradiance(
-  const glm::vec3& p, const glm::vec3& n, double x0, double x1, double z0, double z1, double y)
-{
-  const int steps = 400;
-  double sum = 0.0;
-  const double du = (x1 - x0) / steps, dv = (z1 - z0) / steps;
-  for (int a = 0; a < steps; ++a)
-  {
-    for (int b = 0; b < steps; ++b)
-    {
-      const glm::dvec3 d = glm::dvec3(x0 + (a + 0.5) * du, y, z0 + (b + 0.5) * dv) - glm::dvec3(p);
-      const double r2 = glm::dot(d, d);
-      const glm::dvec3 w = d / std::sqrt(r2);
-      sum += std::max(0.0, w.y) * std::max(0.0, glm::dot(w, glm::dvec3(n))) / r2 * du * dv;
-    }
-  }
-  return sum;
-}
 } // namespace
 
 TEST(ObjectEmitterLights, CornellLightMatchesThePublishedBox)
@@ -342,4 +258,157 @@ TEST(ObjectEmitterLights, ManyLampsOfOneSurfaceShareAGridOfLights)
               "lights %.4f (%.1f%%)\n",
     lights.Lights.size(), exact, shaded, 100.0 * std::abs(shaded - exact) / exact);
   EXPECT_LT(std::abs(shaded - exact) / exact, 0.02);
+}
+
+namespace
+{
+EmitterLightOptions AtMost(std::size_t lights)
+{
+  EmitterLightOptions options;
+  options.MaxLights = lights;
+  return options;
+}
+
+// The largest relative error over `points` (world, each with its normal) of the lights'
+// irradiance against the exact integral over the lamps.
+double WorstIrradianceError(const LightField& field, const std::vector<Lamp>& lamps,
+  const LightApproximation& lights, const std::vector<std::pair<glm::vec3, glm::vec3>>& points,
+  const char* label)
+{
+  const glm::vec3 kd(Pi<float>);
+  double worst = 0.0;
+  for (const auto& [world, normal] : points)
+  {
+    double exact = 0.0;
+    for (const Lamp& l : lamps)
+    {
+      exact +=
+        l.Emission.x * RectangleIrradiance(world, normal, l.X0, l.X1, l.Z0, l.Z1, LampHeight);
+    }
+    const double shaded =
+      (ShadeWithLights(lights, ToUnit(field, world), normal, kd) - kd * lights.Ambient).x;
+    worst = std::max(worst, std::abs(shaded - exact) / exact);
+  }
+  std::printf("[ figures  ] %s: worst irradiance error %.1f%% over %zu points\n", label,
+    100.0 * worst, points.size());
+  return worst;
+}
+} // namespace
+
+TEST(ObjectEmitterLights, MoreLampsThanTheShaderShadesMergeWithoutLosingLight)
+{
+  // The relief shader shades 8 lights. Twelve lamps give twelve lights; merged to 8 (Lightcuts'
+  // metric: neighbours first) they keep the lamps' area and intensity, and at receivers 1 or 2
+  // below the ceiling (two and four times the lamps' pitch) the irradiance stays near the exact
+  // integral over all twelve lamps. Shading the first 8 of the twelve, as the shader did,
+  // drops a third of the light.
+  const std::vector<Lamp> lamps = TwelveLamps();
+  const std::unique_ptr<LightField> field = BoxWithLamps(lamps);
+  const LightApproximation all = EstimateEmitterLights(*field);
+  ASSERT_EQ(all.Lights.size(), 12u);
+  const LightApproximation merged = EstimateEmitterLights(*field, AtMost(8));
+  ASSERT_EQ(merged.Lights.size(), 8u);
+  const double scale2 = field->NormalizationScale() * field->NormalizationScale();
+  double area = 0.0;
+  glm::dvec3 intensity(0.0);
+  for (const EmitterLight& light : merged.Lights)
+  {
+    area += light.Area / scale2;
+    intensity += glm::dvec3(light.Intensity()) / scale2;
+    EXPECT_GT(glm::dot(light.Normal, glm::vec3(0.0f, -1.0f, 0.0f)), 0.9999f);
+  }
+  EXPECT_NEAR(area, 12 * 0.04, 1e-5);
+  EXPECT_NEAR(intensity.x, 4.0 * 12 * 0.04, 1e-4);
+  std::vector<std::pair<glm::vec3, glm::vec3>> below;
+  for (const float x : { -0.8f, -0.3f, 0.2f, 0.7f })
+  {
+    for (const float z : { -0.7f, 0.0f, 0.6f })
+    {
+      below.push_back({ glm::vec3(x, 0.0f, z), glm::vec3(0.0f, 1.0f, 0.0f) });
+      below.push_back({ glm::vec3(x, -0.95f, z), glm::vec3(0.0f, 1.0f, 0.0f) });
+    }
+  }
+  LightApproximation firstEight = all;
+  firstEight.Lights.resize(8);
+  EXPECT_LT(WorstIrradianceError(*field, lamps, all, below, "twelve lights"), 0.02);
+  EXPECT_LT(WorstIrradianceError(*field, lamps, merged, below, "merged to 8"), 0.08);
+  EXPECT_GT(WorstIrradianceError(*field, lamps, firstEight, below, "the first 8 of 12"), 0.2);
+}
+
+TEST(ObjectEmitterLights, LampsNearTheReceiversStaySeparate)
+{
+  // A relief on the wall x = -1, 0.15 from the nearest row of lamps and 0.4-1.0 below them:
+  // merged by the plain metric, a merged pair of that row lights it from where no lamp is; with
+  // the receivers' box the merges go to the far lamps, and the wall's irradiance stays near the
+  // twelve lights' (all within 3% of the exact one).
+  const std::vector<Lamp> lamps = TwelveLamps();
+  const std::unique_ptr<LightField> field = BoxWithLamps(lamps);
+  std::vector<std::pair<glm::vec3, glm::vec3>> wall;
+  for (const float y : { 0.0f, 0.3f, 0.6f })
+  {
+    for (const float z : { -0.6f, -0.2f, 0.2f, 0.6f })
+    {
+      wall.push_back({ glm::vec3(-0.999f, y, z), glm::vec3(1.0f, 0.0f, 0.0f) });
+    }
+  }
+  EmitterLightOptions options = AtMost(8);
+  options.ReceiverLower = ToUnit(*field, glm::vec3(-1.0f, 0.0f, -0.6f));
+  options.ReceiverUpper = ToUnit(*field, glm::vec3(-1.0f, 0.6f, 0.6f));
+  const LightApproximation aware = EstimateEmitterLights(*field, options);
+  ASSERT_EQ(aware.Lights.size(), 8u);
+  const double plain = WorstIrradianceError(
+    *field, lamps, EstimateEmitterLights(*field, AtMost(8)), wall, "wall, plain metric");
+  const double near = WorstIrradianceError(*field, lamps, aware, wall, "wall, receivers known");
+  EXPECT_LT(
+    WorstIrradianceError(*field, lamps, EstimateEmitterLights(*field), wall, "wall, 12 lights"),
+    0.04);
+  EXPECT_LT(near, 0.08);
+  EXPECT_GT(plain, 3.0 * near);
+}
+
+TEST(ObjectEmitterLights, LightsFacingApartMergeLast)
+{
+  // Eight lights under a ceiling (facing down) and two on a wall (facing +x), merged to 8: the
+  // two merges join ceiling lights, never a wall light with a ceiling one, whose mean normal
+  // would light neither side right.
+  std::vector<EmitterLight> lights;
+  for (int i = 0; i < 8; ++i)
+  {
+    EmitterLight l;
+    l.Position = glm::vec3(-0.7f + 0.2f * i, 0.9f, 0.0f);
+    l.Normal = glm::vec3(0.0f, -1.0f, 0.0f);
+    l.Radiance = glm::vec3(1.0f);
+    l.Area = 0.01;
+    lights.push_back(l);
+  }
+  for (const float y : { -0.2f, 0.2f })
+  {
+    EmitterLight l;
+    l.Position = glm::vec3(-0.9f, y, 0.0f);
+    l.Normal = glm::vec3(1.0f, 0.0f, 0.0f);
+    l.Radiance = glm::vec3(1.0f);
+    l.Area = 0.01;
+    lights.push_back(l);
+  }
+  const std::vector<EmitterLight> merged = MergeEmitterLights(lights, AtMost(8));
+  ASSERT_EQ(merged.size(), 8u);
+  int wall = 0;
+  double area = 0.0;
+  for (const EmitterLight& l : merged)
+  {
+    const bool down = glm::dot(l.Normal, glm::vec3(0.0f, -1.0f, 0.0f)) > 0.9999f;
+    const bool side = glm::dot(l.Normal, glm::vec3(1.0f, 0.0f, 0.0f)) > 0.9999f;
+    EXPECT_TRUE(down || side) << "a light facing between the ceiling and the wall";
+    wall += side ? 1 : 0;
+    area += l.Area;
+  }
+  EXPECT_EQ(wall, 2);
+  EXPECT_NEAR(area, 0.1, 1e-9);
+  // Within the limit nothing changes; 0 is no limit.
+  EXPECT_EQ(MergeEmitterLights(lights, AtMost(10)).size(), 10u);
+  EXPECT_EQ(MergeEmitterLights(lights, AtMost(0)).size(), 10u);
+  // Down to one: every light in it, facing the brightness-weighted mean of the normals.
+  const std::vector<EmitterLight> one = MergeEmitterLights(lights, AtMost(1));
+  ASSERT_EQ(one.size(), 1u);
+  EXPECT_GT(glm::dot(one[0].Normal, glm::normalize(glm::vec3(2.0f, -8.0f, 0.0f))), 0.9999f);
 }

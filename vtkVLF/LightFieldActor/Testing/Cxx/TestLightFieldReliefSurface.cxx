@@ -11,9 +11,11 @@
 #include "vtkLightFieldActor.h"
 #include "vtkLightFieldActorCore.h"
 #include "vtkLightFieldReliefSurfaceCore.h"
+#include "vtkReliefMapper.h"
 #include "vtkVirtualLightField.h"
 #include "vtkVirtualLightFieldCore.h"
 
+#include "EmitterTestFields.h"
 #include "FieldIrradiance.h"
 #include "LightField.h"
 #include "MessageCapture.h"
@@ -40,6 +42,8 @@
 
 #include <cmath>
 #include <iostream>
+#include <memory>
+#include <vector>
 
 namespace
 {
@@ -312,6 +316,35 @@ TEST(LightFieldReliefSurface, EmitterLightsCarryRadiantIntensityInWorldUnits)
   EXPECT_DOUBLE_EQ(light->GetAttenuationValues()[2], 1.0);
   // Facing down into the box.
   EXPECT_LT(light->GetFocalPoint()[1], light->GetPosition()[1]);
+}
+
+TEST(LightFieldReliefSurface, MoreLampsThanTheReliefShadesAreMergedNotDropped)
+{
+  // Twelve lamps, and the relief mapper shades 8 lights: the relief's emitter lights are merged
+  // to 8 that carry all twelve lamps' light. (The mapper would shade the first 8 of twelve and
+  // drop the rest with a warning.)
+  const std::vector<emittertest::Lamp> lamps = emittertest::TwelveLamps();
+  const std::unique_ptr<vlf::LightField> field = emittertest::BoxWithLamps(lamps);
+  vtkNew<vtkLightFieldActor> actor;
+  vtkLightFieldActorCore::SetLightField(actor, field.get());
+  vtkNew<vtkLightCollection> lights;
+  ASSERT_TRUE(vtkLightFieldReliefSurface::GetEmitterLights(actor, lights));
+  ASSERT_EQ(lights->GetNumberOfItems(), vtkReliefMapper::GetMaximumNumberOfLights());
+  double total = 0.0;
+  lights->InitTraversal();
+  while (vtkLight* light = lights->GetNextItem())
+  {
+    total += light->GetIntensity() * light->GetDiffuseColor()[0];
+    EXPECT_LT(light->GetFocalPoint()[1], light->GetPosition()[1]) << "facing down";
+  }
+  // Le x area over pi (VTK's lights carry the Lambertian 1 / pi), the area in world units.
+  double expected = 0.0;
+  for (const emittertest::Lamp& lamp : lamps)
+  {
+    expected +=
+      lamp.Emission.x * (lamp.X1 - lamp.X0) * (lamp.Z1 - lamp.Z0) / 3.14159265358979323846;
+  }
+  EXPECT_NEAR(total, expected, 1e-4 * expected);
 }
 
 TEST(LightFieldReliefSurface, BadInputIsReported)
