@@ -62,45 +62,6 @@ void PolygonMoments(const std::vector<glm::dvec2>& polygon, double& area, glm::d
   }
 }
 
-// The triangles in pieces that touch (share a corner; corners welded by position). A field
-// surface is every triangle of one material on one plane, so a row of ceiling lamps is one
-// surface; its centroid lies between the lamps, where no light is.
-std::vector<std::vector<std::uint32_t>> ConnectedPieces(
-  const TriangleScene& scene, const std::vector<std::uint32_t>& triangles)
-{
-  std::vector<std::size_t> parent(triangles.size());
-  std::iota(parent.begin(), parent.end(), std::size_t{ 0 });
-  const auto root = [&parent](std::size_t i)
-  {
-    while (parent[i] != i)
-    {
-      i = parent[i] = parent[parent[i]];
-    }
-    return i;
-  };
-  std::map<std::tuple<float, float, float>, std::size_t> firstAtCorner;
-  for (std::size_t i = 0; i < triangles.size(); ++i)
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      const glm::vec3 x = scene.Vertex(triangles[i], c);
-      const auto found = firstAtCorner.emplace(std::make_tuple(x.x, x.y, x.z), i);
-      parent[root(i)] = root(found.first->second);
-    }
-  }
-  std::map<std::size_t, std::vector<std::uint32_t>> pieces;
-  for (std::size_t i = 0; i < triangles.size(); ++i)
-  {
-    pieces[root(i)].push_back(triangles[i]);
-  }
-  std::vector<std::vector<std::uint32_t>> out;
-  for (auto& piece : pieces)
-  {
-    out.push_back(std::move(piece.second));
-  }
-  return out;
-}
-
 float Brightness(const EmitterLight& light)
 {
   const glm::vec3 i = light.Intensity();
@@ -170,6 +131,8 @@ EmitterLight ClusterLight(const std::vector<EmitterLight>& lights, const LightCl
   glm::dvec3 axis;
   ConeCosine(lights, cluster.Members, {}, cluster.NormalSum, axis);
   EmitterLight out = lights[cluster.Members.front()];
+  out.Triangles.clear();
+  bool cells = false; // a member is a cell of a cut lamp: no triangles of its own
   glm::dvec3 position(0.0), intensity(0.0);
   double weight = 0.0, area = 0.0;
   float brightest = -1.0f;
@@ -182,6 +145,8 @@ EmitterLight ClusterLight(const std::vector<EmitterLight>& lights, const LightCl
     const double facing = std::max(0.0, glm::dot(axis, glm::dvec3(light.Normal)));
     intensity += facing * glm::dvec3(light.Intensity());
     area += facing * light.Area;
+    cells = cells || light.Triangles.empty();
+    out.Triangles.insert(out.Triangles.end(), light.Triangles.begin(), light.Triangles.end());
     if (Brightness(light) > brightest)
     {
       brightest = Brightness(light);
@@ -190,12 +155,53 @@ EmitterLight ClusterLight(const std::vector<EmitterLight>& lights, const LightCl
   }
   out.Position =
     weight > 0.0 ? glm::vec3(position / weight) : lights[cluster.Members.front()].Position;
+  if (cells)
+  {
+    out.Triangles.clear();
+  }
   out.Normal = glm::vec3(axis);
   out.Area = area;
   out.Radiance = area > 0.0 ? glm::vec3(intensity / area) : glm::vec3(0.0f);
   return out;
 }
 } // namespace
+
+//------------------------------------------------------------------------------
+std::vector<std::vector<std::uint32_t>> LampsOf(
+  const TriangleScene& scene, const std::vector<std::uint32_t>& triangles)
+{
+  std::vector<std::size_t> parent(triangles.size());
+  std::iota(parent.begin(), parent.end(), std::size_t{ 0 });
+  const auto root = [&parent](std::size_t i)
+  {
+    while (parent[i] != i)
+    {
+      i = parent[i] = parent[parent[i]];
+    }
+    return i;
+  };
+  std::map<std::tuple<float, float, float>, std::size_t> firstAtCorner;
+  for (std::size_t i = 0; i < triangles.size(); ++i)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      const glm::vec3 x = scene.Vertex(triangles[i], c);
+      const auto found = firstAtCorner.emplace(std::make_tuple(x.x, x.y, x.z), i);
+      parent[root(i)] = root(found.first->second);
+    }
+  }
+  std::map<std::size_t, std::vector<std::uint32_t>> pieces;
+  for (std::size_t i = 0; i < triangles.size(); ++i)
+  {
+    pieces[root(i)].push_back(triangles[i]);
+  }
+  std::vector<std::vector<std::uint32_t>> out;
+  for (auto& piece : pieces)
+  {
+    out.push_back(std::move(piece.second));
+  }
+  return out;
+}
 
 //------------------------------------------------------------------------------
 std::vector<EmitterLight> MergeEmitterLights(
@@ -331,7 +337,7 @@ LightApproximation EstimateEmitterLights(
     // (a wall of LED tiles) is cut into that grid instead, a light per cell with lamp area in it,
     // so that the count of lights, each a shadow on the GPU, stays bounded.
     const int maxSplit = std::max(1, options.MaxSplit);
-    std::vector<std::vector<std::uint32_t>> lamps = ConnectedPieces(scene, surface.Triangles);
+    std::vector<std::vector<std::uint32_t>> lamps = LampsOf(scene, surface.Triangles);
     const bool grid = lamps.size() > static_cast<std::size_t>(maxSplit * maxSplit);
     if (grid)
     {
@@ -391,6 +397,7 @@ LightApproximation EstimateEmitterLights(
       const int nu = cells(upper.x - lower.x), nv = cells(upper.y - lower.y);
       if (nu * nv == 1)
       {
+        light.Triangles = lamp;
         out.Lights.push_back(light);
         continue;
       }

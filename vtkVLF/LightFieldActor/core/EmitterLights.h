@@ -18,6 +18,7 @@
 
 namespace mesolight
 {
+struct TriangleScene;
 namespace vlf
 {
 class LightField;
@@ -29,6 +30,9 @@ struct EmitterLight
   glm::vec3 Normal{ 0.0f, 0.0f, 1.0f }; // emitting (front) side
   glm::vec3 Radiance{ 0.0f };           // Le
   double Area = 0.0;                    // unit-sphere units
+  // The scene triangles of the lamp (or merged lamps) it stands for; empty for a cell of a cut
+  // lamp or surface (its part of them).
+  std::vector<std::uint32_t> Triangles;
   // Radiant intensity along the normal, Le x Area; at angle theta it is that times cos theta.
   glm::vec3 Intensity() const { return this->Radiance * static_cast<float>(this->Area); }
 };
@@ -40,6 +44,12 @@ struct LightApproximation
 };
 
 LightApproximation EstimateEmitterLights(const LightField& field);
+
+// The lamps among `triangles`: the pieces that touch (share a corner; corners welded by
+// position). A field surface is every triangle of one material on one plane, so a row of ceiling
+// lamps is one surface.
+std::vector<std::vector<std::uint32_t>> LampsOf(
+  const TriangleScene& scene, const std::vector<std::uint32_t>& triangles);
 
 // Splitting large emitters: a point light is a good stand-in for an area emitter only far from
 // it (the inverse-square law holds beyond a few emitter sizes). With Split, a lamp whose side

@@ -173,7 +173,12 @@ std::vector<ShadowEmitter> SignificantEmitters(
   const LightField& field, const ShadowSettings& settings)
 {
   std::vector<ShadowEmitter> out;
-  const LightApproximation lights = EstimateEmitterLights(field); // brightest first
+  // One light per lamp, merged down to the emitters that may cast shadows, so a room of more
+  // lamps keeps all their light in the shadows' share (the first few alone would leave the rest
+  // of the direct light unshadowed).
+  EmitterLightOptions options;
+  options.MaxLights = static_cast<std::size_t>(std::max(1, settings.MaximumEmitters));
+  const LightApproximation lights = EstimateEmitterLights(field, options); // brightest first
   const TriangleScene& scene = field.Scene();
   const float strongest = lights.Lights.empty() ? 0.0f : Mean(lights.Lights[0].Intensity());
   float total = 0.0f;
@@ -189,45 +194,79 @@ std::vector<ShadowEmitter> SignificantEmitters(
     emitter.Light = light;
     emitter.PowerWeight = power;
     total += power;
-    // g x g stratified points: the cell centres of the surface's bounding rectangle (its own
-    // frame) that lie on one of its triangles, each standing for an equal share of the area.
+    // Its lamps (a cell of a cut surface: the surface), each sampled by the g x g stratified
+    // cell centres of its bounding rectangle in its plane that lie on one of its triangles, each
+    // standing for an equal share of the area. A merged emitter's m lamps take g / sqrt(m) per
+    // side each (at least 1; more lamps than g^2: g^2 of them, spread over the list), so that an
+    // emitter never has more than g^2 samples (the GPU's budget of maps and samples is counted
+    // in them).
     const Surface& surface = field.Surfaces()[light.Surface];
-    auto uv = [&](const glm::vec3& x)
+    std::vector<std::vector<std::uint32_t>> lamps = light.Triangles.empty()
+      ? std::vector<std::vector<std::uint32_t>>{ surface.Triangles }
+      : LampsOf(scene, light.Triangles);
+    const std::size_t budget = static_cast<std::size_t>(settings.AreaSamples) *
+      static_cast<std::size_t>(settings.AreaSamples);
+    if (lamps.size() > budget)
     {
-      return glm::vec2(
-        glm::dot(x - surface.Origin, surface.AxisU), glm::dot(x - surface.Origin, surface.AxisV));
-    };
-    glm::vec2 lower(1e30f), upper(-1e30f);
-    for (const std::uint32_t t : surface.Triangles)
-    {
-      for (int c = 0; c < 3; ++c)
+      std::vector<std::vector<std::uint32_t>> spread;
+      for (std::size_t k = 0; k < budget; ++k)
       {
-        lower = glm::min(lower, uv(scene.Vertex(t, c)));
-        upper = glm::max(upper, uv(scene.Vertex(t, c)));
+        spread.push_back(std::move(lamps[k * lamps.size() / budget]));
       }
+      lamps = std::move(spread);
     }
-    const int g = settings.AreaSamples;
+    const int g = std::max(1,
+      static_cast<int>(
+        std::floor(settings.AreaSamples / std::sqrt(static_cast<double>(lamps.size())))));
     std::vector<glm::vec3> points;
-    for (int b = 0; b < g && !surface.Triangles.empty(); ++b)
+    for (const std::vector<std::uint32_t>& lamp : lamps)
     {
-      for (int a = 0; a < g; ++a)
+      if (lamp.empty())
       {
-        const glm::vec2 q = lower + (upper - lower) * glm::vec2((a + 0.5f) / g, (b + 0.5f) / g);
-        for (const std::uint32_t t : surface.Triangles)
+        continue;
+      }
+      // The lamp's plane: the surface's frame, or (a lamp merged from another surface) one of
+      // its own normal.
+      glm::vec3 origin = surface.Origin, axisU = surface.AxisU, axisV = surface.AxisV;
+      const glm::vec3 normal = glm::normalize(scene.FaceNormal(lamp.front()));
+      if (glm::dot(normal, surface.Normal) < 0.9999f)
+      {
+        origin = scene.Vertex(lamp.front(), 0);
+        OrthonormalBasis(normal, axisU, axisV);
+      }
+      auto uv = [&](const glm::vec3& x)
+      { return glm::vec2(glm::dot(x - origin, axisU), glm::dot(x - origin, axisV)); };
+      const float offset = glm::dot(scene.Vertex(lamp.front(), 0) - origin, normal);
+      glm::vec2 lower(1e30f), upper(-1e30f);
+      for (const std::uint32_t t : lamp)
+      {
+        for (int c = 0; c < 3; ++c)
         {
-          const glm::vec2 p0 = uv(scene.Vertex(t, 0)), p1 = uv(scene.Vertex(t, 1)),
-                          p2 = uv(scene.Vertex(t, 2));
-          const float area = Edge(p0, p1, p2);
-          if (area == 0.0f)
+          lower = glm::min(lower, uv(scene.Vertex(t, c)));
+          upper = glm::max(upper, uv(scene.Vertex(t, c)));
+        }
+      }
+      for (int b = 0; b < g; ++b)
+      {
+        for (int a = 0; a < g; ++a)
+        {
+          const glm::vec2 q = lower + (upper - lower) * glm::vec2((a + 0.5f) / g, (b + 0.5f) / g);
+          for (const std::uint32_t t : lamp)
           {
-            continue;
-          }
-          const float w0 = Edge(p1, p2, q) / area, w1 = Edge(p2, p0, q) / area,
-                      w2 = Edge(p0, p1, q) / area;
-          if (w0 >= 0.0f && w1 >= 0.0f && w2 >= 0.0f)
-          {
-            points.push_back(surface.Origin + q.x * surface.AxisU + q.y * surface.AxisV);
-            break;
+            const glm::vec2 p0 = uv(scene.Vertex(t, 0)), p1 = uv(scene.Vertex(t, 1)),
+                            p2 = uv(scene.Vertex(t, 2));
+            const float area = Edge(p0, p1, p2);
+            if (area == 0.0f)
+            {
+              continue;
+            }
+            const float w0 = Edge(p1, p2, q) / area, w1 = Edge(p2, p0, q) / area,
+                        w2 = Edge(p0, p1, q) / area;
+            if (w0 >= 0.0f && w1 >= 0.0f && w2 >= 0.0f)
+            {
+              points.push_back(origin + q.x * axisU + q.y * axisV + offset * normal);
+              break;
+            }
           }
         }
       }

@@ -4,10 +4,11 @@
 // from the scene's lights, blended instead of black, back projection removed). Plain C++ (GLM,
 // no VTK types); every point is in the field's unit sphere.
 //
-// Emitters: the significant ones (EstimateEmitterLights, strongest first, by power Le x area),
-// each sampled by g x g points over its surface (the stratified cell centres inside its
-// triangles), which give its direct irradiance at a receiver and, in Soft mode, one shadow map
-// each (the area-light penumbra the thesis lists as future work).
+// Emitters: the significant ones (EstimateEmitterLights, one per lamp, strongest first, by power
+// Le x area; more lamps than MaximumEmitters merged down to it), each lamp of one sampled by
+// g x g points (the stratified cell centres inside its triangles), which give its direct
+// irradiance at a receiver and, in Soft mode, one shadow map each (the area-light penumbra the
+// thesis lists as future work).
 //
 // A shadow map is placed automatically: at the light point, looking at the centre of the
 // object's bounding sphere with a square perspective frustum tangent to that sphere (near and
@@ -129,8 +130,9 @@ float ShadowMapBlocked(const ShadowMap& map, const glm::vec3& p, const glm::vec3
 glm::vec3 SampleIrradiance(const glm::vec3& le, const glm::vec3& ne, const glm::vec4& sample,
   const glm::vec3& p, const glm::vec3& n);
 
-// The field's significant emitters under the settings (at most MaximumEmitters, power at least
-// MinimumPowerFraction of the strongest), sampled by AreaSamples^2 points each.
+// The field's significant emitters under the settings (its lamps merged to at most
+// MaximumEmitters, power at least MinimumPowerFraction of the strongest), each lamp sampled by
+// AreaSamples^2 points (a merged emitter's lamps by about that many in all).
 std::vector<ShadowEmitter> SignificantEmitters(
   const LightField& field, const ShadowSettings& settings);
 

@@ -6,6 +6,7 @@
 // directions the umbra without the direction aliasing's stripes and tint (the subtraction of the
 // blocked direct light the negative case); the cost of filling and looking up maps per
 // resolution. `ctest -R ShadowMap`.
+#include "EmitterTestFields.h"
 #include "ObjectShadows.h"
 #include "WalkthroughTestFields.h"
 
@@ -412,6 +413,108 @@ ModeError Errors(
   return e;
 }
 } // namespace
+
+TEST(ShadowMapCore, EachLampCastsFromItsOwnArea)
+{
+  // Lamps of one material on one plane are one field surface but separate lights: each shadow
+  // emitter's samples lie on its own lamp (sampled over the whole surface, the two emitters
+  // would each spread over both lamps, and a lamp's shadow map would stand for the other's light).
+  using emittertest::Lamp;
+  const std::vector<Lamp> two = { { -0.8f, -0.4f, -0.2f, 0.2f, glm::vec3(2.0f) },
+    { 0.4f, 0.6f, -0.1f, 0.1f, glm::vec3(2.0f) } };
+  const std::unique_ptr<vlf::LightField> field = emittertest::BoxWithLamps(two);
+  const vlf::ShadowSettings settings;
+  const std::vector<vlf::ShadowEmitter> emitters = vlf::SignificantEmitters(*field, settings);
+  ASSERT_EQ(emitters.size(), 2u);
+  for (std::size_t e = 0; e < 2; ++e)
+  {
+    const Lamp& lamp = two[e]; // the larger lamp is the brighter light, first
+    float area = 0.0f;
+    EXPECT_EQ(emitters[e].Samples.size(), 9u);
+    for (const glm::vec4& sample : emitters[e].Samples)
+    {
+      const glm::vec3 world = vlf::ToWorld(*field, glm::vec3(sample));
+      EXPECT_TRUE(world.x > lamp.X0 && world.x < lamp.X1 && world.z > lamp.Z0 && world.z < lamp.Z1)
+        << "emitter " << e << " sample at " << world.x << ", " << world.z;
+      area += sample.w;
+    }
+    EXPECT_NEAR(area, static_cast<float>(emitters[e].Light.Area), 1e-6f);
+  }
+
+  // The emitters' samples give the direct irradiance the shadows take their share of: 0.8 below
+  // the small lamp against the exact integral over both lamps.
+  const glm::vec3 up(0.0f, 1.0f, 0.0f);
+  const auto sampled = [&up](const vlf::LightField& f, const std::vector<vlf::ShadowEmitter>& list,
+                         const glm::vec3& world)
+  {
+    double e = 0.0;
+    for (const vlf::ShadowEmitter& emitter : list)
+    {
+      for (const glm::vec4& sample : emitter.Samples)
+      {
+        e += vlf::SampleIrradiance(
+          emitter.Light.Radiance, emitter.Light.Normal, sample, vlf::ToUnit(f, world), up)
+               .x;
+      }
+    }
+    return e;
+  };
+  const auto exact = [&up](const std::vector<Lamp>& lamps, const glm::vec3& world)
+  {
+    double e = 0.0;
+    for (const Lamp& l : lamps)
+    {
+      e += l.Emission.x *
+        emittertest::RectangleIrradiance(
+          world, up, l.X0, l.X1, l.Z0, l.Z1, emittertest::LampHeight);
+    }
+    return e;
+  };
+  const glm::vec3 belowSmall(0.5f, emittertest::LampHeight - 0.8f, 0.0f);
+  const double twoError =
+    std::abs(sampled(*field, emitters, belowSmall) / exact(two, belowSmall) - 1.0);
+  std::printf("[ figures  ] two lamps: the emitters' direct irradiance 0.8 below the small lamp "
+              "%.1f%% off the exact\n",
+    100.0 * twoError);
+  EXPECT_LT(twoError, 0.03);
+
+  // Twelve lamps and at most 4 shadow emitters: merged to 4, their samples on the lamps and
+  // their areas all twelve lamps' (the 4 brightest alone would leave 8 lamps' light unshadowed).
+  const std::vector<Lamp> twelve = emittertest::TwelveLamps();
+  const std::unique_ptr<vlf::LightField> room = emittertest::BoxWithLamps(twelve);
+  const std::vector<vlf::ShadowEmitter> merged = vlf::SignificantEmitters(*room, settings);
+  ASSERT_EQ(merged.size(), 4u);
+  const double scale2 = room->NormalizationScale() * room->NormalizationScale();
+  double area = 0.0;
+  for (const vlf::ShadowEmitter& e : merged)
+  {
+    area += e.Light.Area / scale2;
+    // A sample on each of its lamps, and no more samples than one lamp gets (3 x 3).
+    const std::size_t lamps = vlf::LampsOf(room->Scene(), e.Light.Triangles).size();
+    EXPECT_GE(lamps, 1u);
+    EXPECT_GE(e.Samples.size(), lamps);
+    EXPECT_LE(e.Samples.size(), 9u);
+    for (const glm::vec4& sample : e.Samples)
+    {
+      const glm::vec3 world = vlf::ToWorld(*room, glm::vec3(sample));
+      EXPECT_TRUE(std::any_of(twelve.begin(), twelve.end(),
+        [&world](const Lamp& l)
+        { return world.x > l.X0 && world.x < l.X1 && world.z > l.Z0 && world.z < l.Z1; }))
+        << world.x << ", " << world.z;
+    }
+  }
+  EXPECT_NEAR(area, 12 * 0.04, 1e-5);
+  double worst = 0.0;
+  for (const glm::vec3 world :
+    { glm::vec3(0.0f, 0.0f, 0.0f), glm::vec3(-0.6f, -0.9f, 0.4f), glm::vec3(0.7f, -0.5f, -0.5f) })
+  {
+    worst = std::max(worst, std::abs(sampled(*room, merged, world) / exact(twelve, world) - 1.0));
+  }
+  std::printf("[ figures  ] twelve lamps, 4 emitters: their direct irradiance 1-2 below the "
+              "ceiling at most %.1f%% off the exact\n",
+    100.0 * worst);
+  EXPECT_LT(worst, 0.05);
+}
 
 TEST(ShadowMapCore, FloorAgainstPathTracerFieldDerivedBest)
 {
