@@ -1,0 +1,52 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
+# An office lit by more lamps than the relief shader shades (8), for
+# `scripts/bench-vlf-relief.sh` (SCENE=...): the props office (`bench vlf-accuracy --scenes props
+# --write-obj`, nine game models from redeclipse-data) with its two 0.6 x 0.6 m ceiling lamps
+# replaced by twelve of 0.245 x 0.245 m on a 4 x 3 grid (x 1.0, 2.3, 3.7, 5.0; z 1.0, 2.5, 4.0),
+# the same material and about the same total area (0.720 m^2 against 0.72). Writes
+# OUTDIR/props12.obj and .mtl and prints the benchmark's command.
+#
+# Usage: scripts/make-twelve-lamp-office.sh MESOLIGHT_BINARY OUTDIR
+set -euo pipefail
+bin="$(realpath "$1")"
+out="$2"
+mkdir -p "$out"
+if [ -e "$out/props12.obj" ] || [ -e "$out/props12.mtl" ]; then
+  echo "$out/props12.obj or .mtl exists; not overwritten" >&2
+  exit 1
+fi
+props="$(mktemp -d)"
+trap 'rm -rf "$props"' EXIT
+"$bin" bench vlf-accuracy --scenes props --write-obj "$props" > /dev/null
+python3 - "$props" "$out" <<'PY'
+import sys
+props, out = sys.argv[1], sys.argv[2]
+lines, material, dropped = [], None, 0
+for line in open(props + "/props.obj").read().splitlines():
+    if line.startswith("usemtl "):
+        material = line.split()[1]
+    if line.startswith("f ") and material == "lamp":
+        dropped += 1  # the two lamps' triangles
+        continue
+    lines.append(line.replace("mtllib props.mtl", "mtllib props12.mtl"))
+while lines and not lines[-1]:
+    lines.pop()
+offset = sum(1 for line in lines if line.startswith("v "))
+side, height = 0.245, 2.799  # just below the 2.8 m ceiling, as the two lamps were
+faces = []
+for x in (1.0, 2.3, 3.7, 5.0):
+    for z in (1.0, 2.5, 4.0):
+        b = offset + 1
+        lines += ["v %.4f %.4f %.4f" % (x + dx * side / 2, height, z + dz * side / 2)
+                  for dx, dz in ((-1, -1), (1, -1), (1, 1), (-1, 1))]
+        faces += ["f %d %d %d" % (b, b + 1, b + 2), "f %d %d %d" % (b, b + 2, b + 3)]  # facing down
+        offset += 4
+lines += ["g", "usemtl lamp"] + faces
+open(out + "/props12.obj", "w").write("\n".join(lines) + "\n")
+open(out + "/props12.mtl", "w").write(open(props + "/props.mtl").read())
+print("wrote %s/props12.obj: the props office with twelve ceiling lamps (%d lamp triangles "
+      "replaced by %d)" % (out, dropped, len(faces)))
+PY
+echo "measure: SCENE=$out/props12.obj SURFACE=back CAMERA=4.6,1.6,4.8,2.2,0.8,1.2 FOV=65" \
+  "RAYS=72 scripts/bench-vlf-relief.sh $bin OUTDIR"
