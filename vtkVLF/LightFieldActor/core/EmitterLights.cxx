@@ -4,7 +4,9 @@
 #include "LightField.h"
 #include "MathConstants.h"
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
 #include <glm/vector_relational.hpp>
 
 #include <algorithm>
@@ -68,51 +70,63 @@ float Brightness(const EmitterLight& light)
   return i.x + i.y + i.z;
 }
 
-// A cluster of lights for MergeEmitterLights: its members (indices), their positions' bounds and
-// their brightness-weighted normal sum.
+// A cluster of lights for MergeEmitterLights: its members (indices), their positions' bounds,
+// their brightness-weighted normal sum and a cone about that sum's direction that holds their
+// normals (kept as clusters merge, so that a merge's cost takes constant time).
 struct LightCluster
 {
   std::vector<std::size_t> Members;
   glm::dvec3 Lower{ 0.0 }, Upper{ 0.0 };
   glm::dvec3 NormalSum{ 0.0 };
   double Brightness = 0.0;
+  double HalfAngle = 0.0; // radians, about Axis()
+  glm::dvec3 Axis() const
+  {
+    const double length = glm::length(this->NormalSum);
+    return length > 1e-12 ? this->NormalSum / length : glm::dvec3(0.0, 0.0, 1.0);
+  }
 };
 
-// The axis of a set of normals (their brightness-weighted mean) and the cosine of the cone about
-// it that holds them all (-1 when the mean vanishes: normals all around).
-double ConeCosine(const std::vector<EmitterLight>& lights, const std::vector<std::size_t>& a,
-  const std::vector<std::size_t>& b, const glm::dvec3& sum, glm::dvec3& axis)
+// The half-angle of the cone about the joint axis (the merged normal sum's direction) that holds
+// both clusters' cones (pi when the sum vanishes: normals all around).
+double MergedHalfAngle(const LightCluster& a, const LightCluster& b)
 {
+  const glm::dvec3 sum = a.NormalSum + b.NormalSum;
   const double length = glm::length(sum);
   if (!(length > 1e-12))
   {
-    axis = glm::dvec3(lights[a.front()].Normal);
-    return -1.0;
+    return Pi<double>;
   }
-  axis = sum / length;
-  double cosine = 1.0;
-  for (const std::vector<std::size_t>* members : { &a, &b })
+  const glm::dvec3 axis = sum / length;
+  double half = 0.0;
+  for (const LightCluster* c : { &a, &b })
   {
-    for (const std::size_t m : *members)
-    {
-      cosine = std::min(cosine, glm::dot(axis, glm::dvec3(lights[m].Normal)));
-    }
+    const double apart = std::acos(std::clamp(glm::dot(axis, c->Axis()), -1.0, 1.0));
+    half = std::max(half, apart + c->HalfAngle);
   }
-  return cosine;
+  return std::min(half, Pi<double>);
+}
+
+// `into` becomes the cluster of both.
+void Absorb(LightCluster& into, const LightCluster& from)
+{
+  into.HalfAngle = MergedHalfAngle(into, from);
+  into.Members.insert(into.Members.end(), from.Members.begin(), from.Members.end());
+  into.Lower = glm::min(into.Lower, from.Lower);
+  into.Upper = glm::max(into.Upper, from.Upper);
+  into.NormalSum += from.NormalSum;
+  into.Brightness += from.Brightness;
 }
 
 // Lightcuts' metric for a cluster of oriented lights (Walter et al. 2005, §4.1): its brightness
 // x (the squared diagonal of its positions' bounds + (c (1 - cos of its normal cone))^2), c the
 // scene's diameter (the field's unit sphere: 2); over the squared distance from those bounds to
 // the receivers' box when there is one (at least 0.05, a lamp on the receivers).
-double MergeCost(const std::vector<EmitterLight>& lights, const LightCluster& a,
-  const LightCluster& b, const EmitterLightOptions& options)
+double MergeCost(const LightCluster& a, const LightCluster& b, const EmitterLightOptions& options)
 {
   const glm::dvec3 lower = glm::min(a.Lower, b.Lower), upper = glm::max(a.Upper, b.Upper);
   const glm::dvec3 extent = upper - lower;
-  glm::dvec3 axis;
-  const double cone =
-    2.0 * (1.0 - ConeCosine(lights, a.Members, b.Members, a.NormalSum + b.NormalSum, axis));
+  const double cone = 2.0 * (1.0 - std::cos(MergedHalfAngle(a, b)));
   double cost = (a.Brightness + b.Brightness) * (glm::dot(extent, extent) + cone * cone);
   const glm::dvec3 receiverLower(options.ReceiverLower), receiverUpper(options.ReceiverUpper);
   if (glm::all(glm::lessThanEqual(receiverLower, receiverUpper)))
@@ -125,11 +139,15 @@ double MergeCost(const std::vector<EmitterLight>& lights, const LightCluster& a,
 }
 
 // One light for a cluster: at the brightness-weighted centroid, facing along the mean normal,
-// with the members' intensity along it (each lamp's Le A cos, the cosine clamped at 0).
+// with the members' summed intensity Le A, so their power (pi Le A for a cosine lobe). For lamps
+// of one plane that is also their intensity along the normal; for a curved lamp's pieces it
+// spreads the power of a cap over one cosine lobe (too bright along the axis, too dark far from
+// it, right on average).
 EmitterLight ClusterLight(const std::vector<EmitterLight>& lights, const LightCluster& cluster)
 {
-  glm::dvec3 axis;
-  ConeCosine(lights, cluster.Members, {}, cluster.NormalSum, axis);
+  const glm::dvec3 axis = glm::length(cluster.NormalSum) > 1e-12
+    ? cluster.Axis()
+    : glm::dvec3(lights[cluster.Members.front()].Normal);
   EmitterLight out = lights[cluster.Members.front()];
   out.Triangles.clear();
   bool cells = false; // a member is a cell of a cut lamp: no triangles of its own
@@ -142,9 +160,8 @@ EmitterLight ClusterLight(const std::vector<EmitterLight>& lights, const LightCl
     const double b = Brightness(light);
     position += b * glm::dvec3(light.Position);
     weight += b;
-    const double facing = std::max(0.0, glm::dot(axis, glm::dvec3(light.Normal)));
-    intensity += facing * glm::dvec3(light.Intensity());
-    area += facing * light.Area;
+    intensity += glm::dvec3(light.Intensity());
+    area += light.Area;
     cells = cells || light.Triangles.empty();
     out.Triangles.insert(out.Triangles.end(), light.Triangles.begin(), light.Triangles.end());
     if (Brightness(light) > brightest)
@@ -221,6 +238,40 @@ std::vector<EmitterLight> MergeEmitterLights(
     c.Brightness = Brightness(lights[i]);
     c.NormalSum = c.Brightness * glm::dvec3(lights[i].Normal);
   }
+  // The pairing below costs about n^2 merge costs; a curved lamp (each of its triangles a field
+  // surface, so a light) can bring thousands. Past 256 lights they are first gathered into the
+  // cells of a 3 x 3 x 3 grid over their positions times the 6 axis directions their normals
+  // lean to (at most 162 clusters).
+  if (clusters.size() > 256)
+  {
+    glm::dvec3 lower(std::numeric_limits<double>::max()), upper(-lower);
+    for (const LightCluster& c : clusters)
+    {
+      lower = glm::min(lower, c.Lower);
+      upper = glm::max(upper, c.Upper);
+    }
+    const glm::dvec3 size = glm::max(upper - lower, glm::dvec3(1e-12));
+    std::map<int, LightCluster> cells;
+    for (LightCluster& c : clusters)
+    {
+      const glm::ivec3 cell = glm::clamp(glm::ivec3(3.0 * (c.Lower - lower) / size), 0, 2);
+      const glm::dvec3 n = c.Axis(), a = glm::abs(n);
+      const int axis = a.x >= a.y && a.x >= a.z ? 0 : (a.y >= a.z ? 1 : 2);
+      const int key = ((cell.x * 3 + cell.y) * 3 + cell.z) * 6 + 2 * axis + (n[axis] < 0.0 ? 1 : 0);
+      const auto found = cells.find(key);
+      if (found == cells.end())
+      {
+        cells.emplace(key, std::move(c));
+        continue;
+      }
+      Absorb(found->second, c);
+    }
+    clusters.clear();
+    for (auto& cell : cells)
+    {
+      clusters.push_back(std::move(cell.second));
+    }
+  }
   // Greedy pairing with each cluster's cheapest partner cached (as Lightcuts builds its tree).
   std::vector<bool> alive(clusters.size(), true);
   std::vector<std::size_t> partner(clusters.size(), 0);
@@ -232,7 +283,7 @@ std::vector<EmitterLight> MergeEmitterLights(
     {
       if (j != i && alive[j])
       {
-        const double cost = MergeCost(lights, clusters[i], clusters[j], options);
+        const double cost = MergeCost(clusters[i], clusters[j], options);
         if (cost < partnerCost[i])
         {
           partnerCost[i] = cost;
@@ -257,12 +308,7 @@ std::vector<EmitterLight> MergeEmitterLights(
     }
     const std::size_t b = partner[a];
     LightCluster& merged = clusters[a];
-    const LightCluster& gone = clusters[b];
-    merged.Members.insert(merged.Members.end(), gone.Members.begin(), gone.Members.end());
-    merged.Lower = glm::min(merged.Lower, gone.Lower);
-    merged.Upper = glm::max(merged.Upper, gone.Upper);
-    merged.NormalSum += gone.NormalSum;
-    merged.Brightness += gone.Brightness;
+    Absorb(merged, clusters[b]);
     alive[b] = false;
     findPartner(a);
     for (std::size_t k = 0; k < clusters.size(); ++k)
@@ -277,7 +323,7 @@ std::vector<EmitterLight> MergeEmitterLights(
       }
       else
       {
-        const double cost = MergeCost(lights, clusters[k], merged, options);
+        const double cost = MergeCost(clusters[k], merged, options);
         if (cost < partnerCost[k])
         {
           partnerCost[k] = cost;

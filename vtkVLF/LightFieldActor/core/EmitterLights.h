@@ -65,11 +65,13 @@ std::vector<std::vector<std::uint32_t>> LampsOf(
 // the merged lights' positions^2 + (field diameter x (1 - cos of their normals' cone))^2): near
 // lamps facing the same way merge before far ones or ones that face apart. A merged light stands
 // at the intensity-weighted centroid, faces along the intensity-weighted mean normal and keeps
-// the lights' summed intensity along it (for lamps of one plane, their summed intensity), so no
-// lamp's light is dropped. A merged light errs by about (its lamps' spread / distance)^2 at a
-// receiver, so when the receivers are known (ReceiverLower..ReceiverUpper, a box; empty when
-// any bound is above the other: anywhere), the metric is divided by the squared distance
-// between the lights and that box, and the lamps nearest the receivers stay separate.
+// the lights' summed intensity (so their power; for lamps of one plane, exactly their light), so
+// no lamp's light is dropped. Past 256 lights (a curved lamp's pieces) they are first gathered by
+// position and normal direction, as the pairing costs n^2. A merged light errs by about (its lamps'
+// spread / distance)^2 at a receiver, so when the receivers are known
+// (ReceiverLower..ReceiverUpper, a box; empty when any bound is above the other: anywhere), the
+// metric is divided by the squared distance between the lights and that box, and the lamps nearest
+// the receivers stay separate.
 struct EmitterLightOptions
 {
   bool Split = false;
