@@ -228,9 +228,12 @@ std::vector<ShadowEmitter> SignificantEmitters(
       // The lamp's plane: the surface's frame, or (a lamp merged from another surface) one of
       // its own normal.
       glm::vec3 origin = surface.Origin, axisU = surface.AxisU, axisV = surface.AxisV;
-      const glm::vec3 normal = glm::normalize(scene.FaceNormal(lamp.front()));
-      if (glm::dot(normal, surface.Normal) < 0.9999f)
+      glm::vec3 normal = surface.Normal;
+      const glm::vec3 face = scene.FaceNormal(lamp.front());
+      const float faceLength = glm::length(face);
+      if (faceLength > 0.0f && glm::dot(face / faceLength, normal) < 0.9999f)
       {
+        normal = face / faceLength;
         origin = scene.Vertex(lamp.front(), 0);
         OrthonormalBasis(normal, axisU, axisV);
       }
