@@ -215,6 +215,7 @@ std::vector<ShadowEmitter> SignificantEmitters(
       }
       lamps = std::move(spread);
     }
+    emitter.Lamps = static_cast<std::uint32_t>(lamps.size());
     const int g = std::max(1,
       static_cast<int>(
         std::floor(settings.AreaSamples / std::sqrt(static_cast<double>(lamps.size())))));
@@ -293,6 +294,13 @@ std::vector<ShadowEmitter> SignificantEmitters(
 }
 
 //------------------------------------------------------------------------------
+bool PerSampleMaps(ShadowMode mode, const ShadowEmitter& emitter)
+{
+  return mode == ShadowMode::Soft ||
+    ((mode == ShadowMode::Field || mode == ShadowMode::PCF) && emitter.Lamps > 1);
+}
+
+//------------------------------------------------------------------------------
 std::vector<float> PackEmitters(const std::vector<ShadowEmitter>& emitters)
 {
   std::vector<float> out;
@@ -301,7 +309,8 @@ std::vector<float> PackEmitters(const std::vector<ShadowEmitter>& emitters)
     const EmitterLight& l = e.Light;
     const float head[] = { static_cast<float>(l.Surface), l.Position.x, l.Position.y, l.Position.z,
       l.Normal.x, l.Normal.y, l.Normal.z, l.Radiance.x, l.Radiance.y, l.Radiance.z,
-      static_cast<float>(l.Area), e.PowerWeight, static_cast<float>(e.Samples.size()) };
+      static_cast<float>(l.Area), e.PowerWeight, static_cast<float>(e.Lamps),
+      static_cast<float>(e.Samples.size()) };
     out.insert(out.end(), std::begin(head), std::end(head));
     for (const glm::vec4& s : e.Samples)
     {
@@ -314,7 +323,7 @@ std::vector<float> PackEmitters(const std::vector<ShadowEmitter>& emitters)
 //------------------------------------------------------------------------------
 bool UnpackEmitters(const float* values, std::size_t count, std::vector<ShadowEmitter>& emitters)
 {
-  constexpr std::size_t head = 13;
+  constexpr std::size_t head = 14;
   emitters.clear();
   std::size_t i = 0;
   while (i < count)
@@ -325,8 +334,8 @@ bool UnpackEmitters(const float* values, std::size_t count, std::vector<ShadowEm
       return false;
     }
     const float* v = values + i;
-    const float samples = v[12];
-    if (!(samples >= 0.0f && samples <= 4096.0f) || v[0] < 0.0f ||
+    const float samples = v[13];
+    if (!(samples >= 0.0f && samples <= 4096.0f) || v[0] < 0.0f || !(v[12] >= 1.0f) ||
       (count - i - head) / 4 < static_cast<std::size_t>(samples))
     {
       emitters.clear();
@@ -339,6 +348,7 @@ bool UnpackEmitters(const float* values, std::size_t count, std::vector<ShadowEm
     e.Light.Radiance = glm::vec3(v[7], v[8], v[9]);
     e.Light.Area = v[10];
     e.PowerWeight = v[11];
+    e.Lamps = static_cast<std::uint32_t>(std::min(v[12], 1e6f));
     const std::size_t n = static_cast<std::size_t>(samples);
     for (std::size_t k = 0; k < n; ++k)
     {
@@ -486,15 +496,15 @@ std::string ObjectShadows::Build(const std::vector<ShadowEmitter>& emitters,
   this->EmitterList = emitters;
   glm::vec3 centre;
   const float radius = std::max(BoundingRadius(object, centre), 1e-6f);
-  // Per emitter its centroid's map first (Black, Blend, Field, PCF), then in Soft mode one map
-  // per sample point.
+  // Per emitter its centroid's map first (Black, Blend, Field, PCF), then one map per sample
+  // point: in Soft mode, and in Field and PCF for an emitter of merged lamps (PerSampleMaps).
   std::vector<glm::vec3> lights;
   this->EmitterMaps.resize(emitters.size());
   for (std::size_t e = 0; e < emitters.size(); ++e)
   {
     this->EmitterMaps[e].push_back(static_cast<std::uint32_t>(lights.size()));
     lights.push_back(emitters[e].Light.Position);
-    if (settings.Mode == ShadowMode::Soft)
+    if (PerSampleMaps(settings.Mode, emitters[e]))
     {
       for (const glm::vec4& s : emitters[e].Samples)
       {
@@ -543,7 +553,7 @@ float ObjectShadows::BlockedFraction(std::size_t e, const glm::vec3& p, const gl
 {
   const ShadowSettings& c = this->Config;
   const std::vector<std::uint32_t>& maps = this->EmitterMaps[e];
-  if (c.Mode == ShadowMode::Soft && maps.size() > 1)
+  if (c.Mode >= ShadowMode::Field && maps.size() > 1)
   {
     const ShadowEmitter& emitter = this->EmitterList[e];
     float blocked = 0.0f, weight = 0.0f;
@@ -596,7 +606,7 @@ glm::vec3 ObjectShadows::Shade(
   {
     const ShadowEmitter& emitter = this->EmitterList[e];
     const std::vector<std::uint32_t>& maps = this->EmitterMaps[e];
-    if (c.Mode == ShadowMode::Soft && maps.size() > 1)
+    if (c.Mode >= ShadowMode::Field && maps.size() > 1)
     {
       for (std::size_t i = 0; i < emitter.Samples.size(); ++i)
       {

@@ -103,6 +103,7 @@ struct ShadowEmitter
   EmitterLight Light;
   std::vector<glm::vec4> Samples; // xyz: point on the emitter, w: the area it stands for
   float PowerWeight = 1.0f;       // Le x area (mean of RGB) / sum over shadowing emitters
+  std::uint32_t Lamps = 1;        // the lamps it stands for (more than 1: merged)
 };
 
 struct ShadowMap
@@ -129,6 +130,11 @@ float ShadowMapBlocked(const ShadowMap& map, const glm::vec3& p, const glm::vec3
 // emitter with normal ne and radiance le.
 glm::vec3 SampleIrradiance(const glm::vec3& le, const glm::vec3& ne, const glm::vec4& sample,
   const glm::vec3& p, const glm::vec3& n);
+
+// Whether an emitter gets a shadow map per sample point: in Soft mode, and in Field and PCF
+// for an emitter of merged lamps (one hard map at their centroid, between the lamps, would cast
+// a shadow none of them casts).
+bool PerSampleMaps(ShadowMode mode, const ShadowEmitter& emitter);
 
 // The field's significant emitters under the settings (its lamps merged to at most
 // MaximumEmitters, power at least MinimumPowerFraction of the strongest), each lamp sampled by

@@ -115,7 +115,7 @@ vec3 mlShadowedAt(vec3 total, vec3 p, vec3 n, vec3 kd)
     int first = int(mlShadowEmitterIndex[e].x);
     int count = int(mlShadowEmitterIndex[e].y);
     int firstMap = int(mlShadowEmitterIndex[e].w);
-    if (mlShadowMode == 5 && firstMap >= 0)
+    if (firstMap >= 0) // soft, or field / PCF for an emitter of merged lamps: a map per sample
     {
       for (int i = 0; i < count; ++i)
       {

@@ -229,6 +229,7 @@ TEST(ShadowMapCore, SeveralEmittersEachCastTheirOwnShadow)
       static_cast<float>(unpacked[e].Light.Area), static_cast<float>(emitters[e].Light.Area));
     EXPECT_EQ(unpacked[e].PowerWeight, emitters[e].PowerWeight);
     EXPECT_EQ(unpacked[e].Samples, emitters[e].Samples);
+    EXPECT_EQ(unpacked[e].Lamps, emitters[e].Lamps);
   }
   EXPECT_FALSE(vlf::UnpackEmitters(packed.data(), packed.size() - 1, unpacked));
   EXPECT_TRUE(unpacked.empty());
@@ -504,6 +505,21 @@ TEST(ShadowMapCore, EachLampCastsFromItsOwnArea)
     }
   }
   EXPECT_NEAR(area, 12 * 0.04, 1e-5);
+  // An emitter of merged lamps gets a map per sample in Field mode (the default) as in Soft: one
+  // hard map at the lamps' centroid would cast a shadow none of them casts. A single lamp keeps
+  // its one map.
+  const vlf::ObjectMesh cube =
+    vlf::TransformMesh(vlf::MakeCube(0.2f), vlf::WorldToUnitSphere(*room));
+  vlf::ObjectShadows fieldShadows;
+  ASSERT_EQ(fieldShadows.Build(*room, cube, settings), "");
+  for (std::size_t e = 0; e < merged.size(); ++e)
+  {
+    EXPECT_GT(merged[e].Lamps, 1u);
+    EXPECT_EQ(fieldShadows.MapsOf(e).size(), 1 + merged[e].Samples.size());
+  }
+  vlf::ObjectShadows single;
+  ASSERT_EQ(single.Build(*field, cube, settings), "");
+  EXPECT_EQ(single.MapsOf(0).size(), 1u);
   double worst = 0.0;
   for (const glm::vec3 world :
     { glm::vec3(0.0f, 0.0f, 0.0f), glm::vec3(-0.6f, -0.9f, 0.4f), glm::vec3(0.7f, -0.5f, -0.5f) })
