@@ -7,8 +7,9 @@
 // Emitters: the significant ones (EstimateEmitterLights, one per lamp, strongest first, by power
 // Le x area; more lamps than MaximumEmitters merged down to it), each lamp of one sampled by
 // g x g points (the stratified cell centres inside its triangles), which give its direct
-// irradiance at a receiver and, in Soft mode, one shadow map each (the area-light penumbra the
-// thesis lists as future work).
+// irradiance at a receiver and, in Soft mode (and in Field and PCF for an emitter of merged
+// lamps, PerSampleMaps), one shadow map each (the area-light penumbra the thesis lists as future
+// work).
 //
 // A shadow map is placed automatically: at the light point, looking at the centre of the
 // object's bounding sphere with a square perspective frustum tangent to that sphere (near and
