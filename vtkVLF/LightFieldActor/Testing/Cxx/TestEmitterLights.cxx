@@ -36,6 +36,29 @@ glm::vec3 ToUnit(const LightField& field, const glm::vec3& world)
   return (world - field.NormalizationCentre()) * field.NormalizationScale();
 }
 
+// The lights' summed area, radiant intensity (Le x area) and area-weighted world centroid, in
+// world units.
+struct WorldTotals
+{
+  double Area = 0.0;
+  glm::dvec3 Intensity{ 0.0 };
+  glm::dvec3 Centroid{ 0.0 };
+};
+WorldTotals Totals(const LightField& field, const std::vector<EmitterLight>& lights)
+{
+  const double scale2 = field.NormalizationScale() * field.NormalizationScale();
+  WorldTotals t;
+  glm::dvec3 moment(0.0);
+  for (const EmitterLight& l : lights)
+  {
+    t.Area += l.Area / scale2;
+    t.Intensity += glm::dvec3(l.Intensity()) / scale2;
+    moment += l.Area / scale2 * glm::dvec3(ToWorld(field, l.Position));
+  }
+  t.Centroid = t.Area > 0.0 ? moment / t.Area : moment;
+  return t;
+}
+
 // Exact irradiance at p (normal n) from the Cornell light (Le, a one-sided rectangle facing
 // down), by a fine midpoint rule over the rectangle (world millimetres).
 glm::vec3 ExactIrradiance(const glm::vec3& p, const glm::vec3& n)
@@ -234,16 +257,9 @@ TEST(ObjectEmitterLights, ManyLampsOfOneSurfaceShareAGridOfLights)
   const LightApproximation lights = EstimateEmitterLights(*field);
   EXPECT_GT(lights.Lights.size(), 4u);
   EXPECT_LE(lights.Lights.size(), 16u);
-  const double scale2 = field->NormalizationScale() * field->NormalizationScale();
-  double area = 0.0;
-  glm::dvec3 moment(0.0);
-  for (const EmitterLight& l : lights.Lights)
-  {
-    area += l.Area / scale2;
-    moment += l.Area / scale2 * glm::dvec3(ToWorld(*field, l.Position));
-  }
-  EXPECT_NEAR(area, 25 * 0.01, 1e-5);
-  EXPECT_LT(glm::length(glm::vec3(moment / area) - glm::vec3(0.0f, h, 0.0f)), 1e-4f);
+  const WorldTotals totals = Totals(*field, lights.Lights);
+  EXPECT_NEAR(totals.Area, 25 * 0.01, 1e-5);
+  EXPECT_LT(glm::length(glm::vec3(totals.Centroid) - glm::vec3(0.0f, h, 0.0f)), 1e-4f);
   // 1.5 below the grid's centre the lights give the exact irradiance of the 25 lamps.
   const glm::vec3 world(0.05f, h - 1.5f, 0.1f), up(0.0f, 1.0f, 0.0f);
   double exact = 0.0;
@@ -308,17 +324,13 @@ TEST(ObjectEmitterLights, MoreLampsThanTheShaderShadesMergeWithoutLosingLight)
   ASSERT_EQ(all.Lights.size(), 12u);
   const LightApproximation merged = EstimateEmitterLights(*field, AtMost(8));
   ASSERT_EQ(merged.Lights.size(), 8u);
-  const double scale2 = field->NormalizationScale() * field->NormalizationScale();
-  double area = 0.0;
-  glm::dvec3 intensity(0.0);
   for (const EmitterLight& light : merged.Lights)
   {
-    area += light.Area / scale2;
-    intensity += glm::dvec3(light.Intensity()) / scale2;
     EXPECT_GT(glm::dot(light.Normal, glm::vec3(0.0f, -1.0f, 0.0f)), 0.9999f);
   }
-  EXPECT_NEAR(area, 12 * 0.04, 1e-5);
-  EXPECT_NEAR(intensity.x, 4.0 * 12 * 0.04, 1e-4);
+  const WorldTotals totals = Totals(*field, merged.Lights);
+  EXPECT_NEAR(totals.Area, 12 * 0.04, 1e-5);
+  EXPECT_NEAR(totals.Intensity.x, 4.0 * 12 * 0.04, 1e-4);
   std::vector<std::pair<glm::vec3, glm::vec3>> below;
   for (const float x : { -0.8f, -0.3f, 0.2f, 0.7f })
   {
