@@ -5,23 +5,29 @@
 # --write-obj`, nine game models from redeclipse-data) with its two 0.6 x 0.6 m ceiling lamps
 # replaced by twelve of 0.245 x 0.245 m on a 4 x 3 grid (x 1.0, 2.3, 3.7, 5.0; z 1.0, 2.5, 4.0),
 # the same material and about the same total area (0.720 m^2 against 0.72). Writes
-# OUTDIR/props12.obj and .mtl and prints the benchmark's command.
+# OUTDIR/props12.obj and .mtl and prints the benchmark's command. With `cubes` it also writes the
+# movable object's shadow scenes of docs/measurements/vlf/object-shadows-twelve-lamps: cube.obj (a
+# 0.5 m cube centred on the origin, for `vlf render --object`) and props12cube.obj /
+# props12cube-low.obj (the office with that cube at (5.0, 2.15, 3.0) / (5.0, 1.0, 3.0), grey,
+# for the path tracer).
 #
-# Usage: scripts/make-twelve-lamp-office.sh MESOLIGHT_BINARY OUTDIR
+# Usage: scripts/make-twelve-lamp-office.sh MESOLIGHT_BINARY OUTDIR [cubes]
 set -euo pipefail
 bin="$(realpath "$1")"
 out="$2"
 mkdir -p "$out"
-if [ -e "$out/props12.obj" ] || [ -e "$out/props12.mtl" ]; then
-  echo "$out/props12.obj or .mtl exists; not overwritten" >&2
-  exit 1
-fi
+for file in props12.obj props12.mtl cube.obj props12cube.obj props12cube-low.obj; do
+  if [ -e "$out/$file" ]; then
+    echo "$out/$file exists; not overwritten" >&2
+    exit 1
+  fi
+done
 props="$(mktemp -d)"
 trap 'rm -rf "$props"' EXIT
 "$bin" bench vlf-accuracy --scenes props --write-obj "$props" > /dev/null
-python3 - "$props" "$out" <<'PY'
+python3 - "$props" "$out" "${3:-}" <<'PY'
 import sys
-props, out = sys.argv[1], sys.argv[2]
+props, out, cubes = sys.argv[1], sys.argv[2], sys.argv[3] == "cubes"
 lines, material, dropped = [], None, 0
 for line in open(props + "/props.obj").read().splitlines():
     if line.startswith("usemtl "):
@@ -47,6 +53,25 @@ open(out + "/props12.obj", "w").write("\n".join(lines) + "\n")
 open(out + "/props12.mtl", "w").write(open(props + "/props.mtl").read())
 print("wrote %s/props12.obj: the props office with twelve ceiling lamps (%d lamp triangles "
       "replaced by %d)" % (out, dropped, len(faces)))
+if cubes:
+    corners = [(a, b, c) for a, b, c in [(-1, -1, -1), (1, -1, -1), (1, 1, -1), (-1, 1, -1),
+                                         (-1, -1, 1), (1, -1, 1), (1, 1, 1), (-1, 1, 1)]]
+    quads = [(0, 3, 2, 1), (4, 5, 6, 7), (0, 4, 7, 3), (1, 2, 6, 5), (0, 1, 5, 4), (3, 7, 6, 2)]
+
+    def cube(centre, first):  # counter-clockwise seen from outside
+        v = ["v %.4f %.4f %.4f" % tuple(centre[i] + 0.25 * p[i] for i in range(3)) for p in corners]
+        f = []
+        for q in quads:
+            a, b, c, d = (first + i for i in q)
+            f += ["f %d %d %d" % (a, b, c), "f %d %d %d" % (a, c, d)]
+        return v, f
+
+    v, f = cube((0.0, 0.0, 0.0), 1)
+    open(out + "/cube.obj", "w").write("\n".join(v + f) + "\n")
+    for name, centre in (("props12cube", (5.0, 2.15, 3.0)), ("props12cube-low", (5.0, 1.0, 3.0))):
+        v, f = cube(centre, offset + 1)
+        open(out + "/" + name + ".obj", "w").write("\n".join(lines + ["g cube", "usemtl grey"] + v + f) + "\n")
+    print("wrote %s/cube.obj, props12cube.obj and props12cube-low.obj" % out)
 PY
 echo "measure: SCENE=$out/props12.obj SURFACE=back CAMERA=4.6,1.6,4.8,2.2,0.8,1.2 FOV=65" \
   "RAYS=72 scripts/bench-vlf-relief.sh $bin OUTDIR"
