@@ -1,6 +1,11 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkAttachReliefTexture.h"
 
+#include "TextureProportions.h"
+#include "vtkReliefPlaneFilter.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
 #include "vtkDataArray.h"
 #include "vtkDataSet.h"
 #include "vtkFieldData.h"
@@ -11,8 +16,11 @@
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
+#include "vtkPolyData.h"
 #include "vtkWholeExtentRequest.h"
 
+#include <cmath>
+#include <sstream>
 #include <string>
 
 vtkStandardNewMacro(vtkAttachReliefTexture);
@@ -25,6 +33,8 @@ const char* const ReliefPrefix = "MesolightReliefTexture";
 const char* const LightSetPrefix = "MesolightLightSet";
 const char* const ColorPrefix = "MesolightColorTexture";
 const char* const ImageFieldArrays[] = { "MesolightDepthScale", "MesolightConeType" };
+// A flat surface whose drawn proportions differ from the map's by more than this is warned about.
+constexpr double StretchTolerance = 0.02;
 
 // Adds image's scalars (shared, not copied) and size under prefix; false if it has none.
 bool Attach(vtkImageData* image, const char* prefix, vtkFieldData* field)
@@ -61,6 +71,46 @@ bool Attach(vtkImageData* image, const char* prefix, vtkFieldData* field)
     }
   }
   return true;
+}
+
+// How many times as tall as wide, per texture unit, a flat surface draws its texture; 0 when it
+// is not a flat vtkPolyData of polygons with texture coordinates (curved meshes are parametrised
+// with a stretch of their own).
+double FlatSurfaceHeightOverWidth(vtkDataSet* surface)
+{
+  vtkPolyData* polyData = vtkPolyData::SafeDownCast(surface);
+  vtkDataArray* tcoords = polyData ? polyData->GetPointData()->GetTCoords() : nullptr;
+  if (!tcoords || tcoords->GetNumberOfComponents() < 2 || !polyData->GetPolys())
+  {
+    return 0.0;
+  }
+  mesolight::TextureProportions proportions;
+  auto point = [&](vtkIdType id)
+  {
+    double p[3];
+    polyData->GetPoint(id, p);
+    return glm::dvec3(p[0], p[1], p[2]);
+  };
+  auto tcoord = [&](vtkIdType id)
+  { return glm::dvec2(tcoords->GetComponent(id, 0), tcoords->GetComponent(id, 1)); };
+  const vtkIdType points = polyData->GetNumberOfPoints();
+  auto cells = vtk::TakeSmartPointer(polyData->GetPolys()->NewIterator());
+  for (cells->GoToFirstCell(); !cells->IsDoneWithTraversal(); cells->GoToNextCell())
+  {
+    vtkIdType size = 0;
+    const vtkIdType* ids = nullptr;
+    cells->GetCurrentCell(size, ids);
+    for (vtkIdType k = 1; k + 1 < size; ++k) // a fan over the polygon
+    {
+      const vtkIdType a = ids[0], b = ids[k], c = ids[k + 1];
+      if (a < 0 || b < 0 || c < 0 || a >= points || b >= points || c >= points)
+      {
+        return 0.0; // a broken cell: the mapper reports it
+      }
+      proportions.AddTriangle(point(a), point(b), point(c), tcoord(a), tcoord(b), tcoord(c));
+    }
+  }
+  return proportions.IsFlat() ? proportions.GetHeightOverWidth() : 0.0;
 }
 
 vtkSmartPointer<vtkImageData> Detach(vtkDataObject* data, const char* prefix)
@@ -207,6 +257,25 @@ int vtkAttachReliefTexture::RequestData(
                      "scalars: connect Mesolight Relief Texture's (or Cone Map's) output as the "
                      "Relief Texture input (VTK: vtkReliefTextureFilter's output).");
     return 0;
+  }
+  // A flat surface that draws the map out of its proportions (ParaView's Plane is square
+  // whatever the map) stretches every feature of the relief: say so, and what to use instead.
+  const double drawn = FlatSurfaceHeightOverWidth(input);
+  const double ground = vtkReliefPlaneFilter::GetGroundProportions(relief);
+  if (drawn > 0.0 && std::abs(std::log(drawn / ground)) > std::log(1.0 + StretchTolerance))
+  {
+    std::ostringstream stretch;
+    stretch.precision(3);
+    stretch << "The surface draws the relief texture at a height / width of " << drawn
+            << " (per unit of its texture coordinates), where the map's height / width on the "
+               "ground is "
+            << ground << ": every feature of the relief is drawn "
+            << (drawn > ground ? drawn / ground : ground / drawn)
+            << (drawn > ground ? " times too tall" : " times too wide")
+            << ". Make the surface with Filters > Mesolight > Mesolight Relief Plane (input: the "
+               "Relief Texture), which takes the map's proportions, or scale the texture "
+               "coordinates (VTK: vtkReliefPlaneFilter).";
+    vtkWarningMacro(<< stretch.str());
   }
   if (lights && !Attach(lights, LightSetPrefix, field))
   {

@@ -21,6 +21,12 @@
  * GetAttachedReliefTexture() / GetAttachedLightSet() / GetAttachedColorTexture() turn them back
  * into images.
  *
+ * A flat polygonal surface whose texture coordinates draw the map more than 2% out of its
+ * proportions on the ground (vtkReliefPlaneFilter::GetGroundProportions; a vtkPlaneSource is
+ * square whatever the map) stretches every feature of the relief: a warning says by how much and
+ * names vtkReliefPlaneFilter (ParaView's Mesolight Relief Plane). Curved surfaces are not judged:
+ * their parametrisation has a stretch of its own (mesolight::TextureProportions).
+ *
  * Why field data: a ParaView representation has one input, and field data travels with every
  * piece of a distributed dataset (each MPI rank draws its piece with the whole texture), through
  * state files and pvbatch, where a second pipeline input of the representation would not.

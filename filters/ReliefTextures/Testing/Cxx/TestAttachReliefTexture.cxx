@@ -1,17 +1,24 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // vtkAttachReliefTexture: the relief texture, light set and colour image travel with the surface
-// as field data and come back as the same images; a bad colour image is refused with a message.
+// as field data and come back as the same images; a bad colour image is refused with a message;
+// a flat surface that draws the map out of its ground proportions is warned about.
 #include "vtkAttachReliefTexture.h"
+#include "vtkReliefPlaneFilter.h"
 
 #include "MesolightTestUtilities.h"
 
 #include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
 #include "vtkPlaneSource.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
+#include "vtkTexturedSphereSource.h"
+#include "vtkTransform.h"
+#include "vtkTransformPolyDataFilter.h"
 #include "vtkTrivialProducer.h"
 
 #include <gtest/gtest.h>
@@ -33,7 +40,8 @@ vtkSmartPointer<vtkImageData> Image(int w, int h, int components, float value)
 
 TEST(AttachReliefTexture, ColorTextureTravelsWithTheSurface)
 {
-  vtkNew<vtkPlaneSource> plane;
+  vtkNew<vtkPlaneSource> plane; // in the map's proportions: twice as wide as tall
+  plane->SetPoint2(-0.5, 0.0, 0.0);
   vtkNew<vtkTrivialProducer> relief;
   relief->SetOutput(Image(8, 4, 4, 0.5f));
   vtkNew<vtkTrivialProducer> color;
@@ -71,4 +79,68 @@ TEST(AttachReliefTexture, ColorTextureTravelsWithTheSurface)
   attach->SetColorTextureConnection(empty->GetOutputPort());
   attach->Update();
   EXPECT_TRUE(messages->HasError("colour texture")) << messages->AllErrors();
+}
+
+namespace
+{
+// The warnings of attaching relief to surface.
+std::string AttachWarnings(vtkAlgorithm* surface, vtkImageData* relief)
+{
+  vtkNew<vtkTrivialProducer> texture;
+  texture->SetOutput(relief);
+  vtkNew<vtkAttachReliefTexture> attach;
+  attach->SetInputConnection(surface->GetOutputPort());
+  attach->SetReliefTextureConnection(texture->GetOutputPort());
+  vtkNew<mesolight_test::MessageCapture> messages;
+  messages->Watch(attach);
+  attach->Update();
+  EXPECT_EQ(messages->AllErrors(), "");
+  EXPECT_NE(vtkAttachReliefTexture::GetAttachedReliefTexture(attach->GetOutputDataObject(0)),
+    nullptr); // a warning, not a refusal
+  return messages->AllWarnings();
+}
+} // namespace
+
+TEST(AttachReliefTexture, AMapOutOfItsProportionsOnTheSurfaceIsWarnedAbout)
+{
+  // ParaView's Plane (square) under a map twice as wide as tall: drawn twice too tall.
+  auto wide = Image(8, 4, 4, 0.5f);
+  vtkNew<vtkPlaneSource> square;
+  std::string warnings = AttachWarnings(square, wide);
+  EXPECT_NE(warnings.find("Mesolight Relief Plane"), std::string::npos) << warnings;
+  EXPECT_NE(warnings.find("2 times too tall"), std::string::npos) << warnings;
+  EXPECT_NE(warnings.find("height / width on the ground is 0.5"), std::string::npos) << warnings;
+
+  // The plane Relief Plane makes for it, moved, turned and scaled as a user may: no warning.
+  vtkNew<vtkReliefPlaneFilter> fitted;
+  fitted->SetInputData(wide);
+  fitted->SetWidth(3.0);
+  vtkNew<vtkTransform> placement;
+  placement->Translate(1, 2, 3);
+  placement->RotateWXYZ(50, 1, 2, 0.5);
+  placement->Scale(7, 7, 7);
+  vtkNew<vtkTransformPolyDataFilter> placed;
+  placed->SetInputConnection(fitted->GetOutputPort());
+  placed->SetTransform(placement);
+  EXPECT_EQ(AttachWarnings(placed, wide), "");
+
+  // A georeferenced square map whose pixels are twice as tall as wide on the ground (what a
+  // geographic raster's are away from the equator), on the square Plane: drawn twice too wide.
+  auto geographic = Image(4, 4, 4, 0.5f);
+  vtkNew<vtkDoubleArray> pixelSize;
+  pixelSize->SetName("MesolightPixelSize");
+  pixelSize->SetNumberOfComponents(2);
+  pixelSize->InsertNextTuple2(10.0, 20.0);
+  geographic->GetFieldData()->AddArray(pixelSize);
+  warnings = AttachWarnings(square, geographic);
+  EXPECT_NE(warnings.find("2 times too wide"), std::string::npos) << warnings;
+
+  // Within 2% no warning (a square map on a plane 1% taller than wide).
+  vtkNew<vtkPlaneSource> nearlySquare;
+  nearlySquare->SetPoint2(-0.5, 0.51, 0.0);
+  EXPECT_EQ(AttachWarnings(nearlySquare, Image(4, 4, 4, 0.5f)), "");
+
+  // A curved surface has a stretch of its own parametrisation: no warning.
+  vtkNew<vtkTexturedSphereSource> sphere;
+  EXPECT_EQ(AttachWarnings(sphere, wide), "");
 }
