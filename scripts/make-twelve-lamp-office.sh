@@ -9,14 +9,17 @@
 # movable object's shadow scenes of docs/measurements/vlf/object-shadows-twelve-lamps: cube.obj (a
 # 0.5 m cube centred on the origin, for `vlf render --object`) and props12cube.obj /
 # props12cube-low.obj (the office with that cube at (5.0, 2.15, 3.0) / (5.0, 1.0, 3.0), grey,
-# for the path tracer).
+# for the path tracer). With `walls` it also writes props16.obj: the twelve ceiling lamps and four
+# more of the same size on the side walls, 2.3 m up (above the furniture) at z 1.5 and 3.5, facing
+# into the room (+x on the left wall, -x on the right), so that the lights the relief shades face
+# three ways and light the back wall from its sides.
 #
-# Usage: scripts/make-twelve-lamp-office.sh MESOLIGHT_BINARY OUTDIR [cubes]
+# Usage: scripts/make-twelve-lamp-office.sh MESOLIGHT_BINARY OUTDIR [cubes] [walls]
 set -euo pipefail
 bin="$(realpath "$1")"
 out="$2"
 mkdir -p "$out"
-for file in props12.obj props12.mtl cube.obj props12cube.obj props12cube-low.obj; do
+for file in props12.obj props12.mtl cube.obj props12cube.obj props12cube-low.obj props16.obj props16.mtl; do
   if [ -e "$out/$file" ]; then
     echo "$out/$file exists; not overwritten" >&2
     exit 1
@@ -25,9 +28,13 @@ done
 props="$(mktemp -d)"
 trap 'rm -rf "$props"' EXIT
 "$bin" bench vlf-accuracy --scenes props --write-obj "$props" > /dev/null
-python3 - "$props" "$out" "${3:-}" <<'PY'
+python3 - "$props" "$out" "${@:3}" <<'PY'
 import sys
-props, out, cubes = sys.argv[1], sys.argv[2], sys.argv[3] == "cubes"
+props, out = sys.argv[1], sys.argv[2]
+for extra in sys.argv[3:]:
+    if extra not in ("cubes", "walls"):
+        sys.exit("unknown scene '%s': cubes or walls" % extra)
+cubes, walls = "cubes" in sys.argv[3:], "walls" in sys.argv[3:]
 lines, material, dropped = [], None, 0
 for line in open(props + "/props.obj").read().splitlines():
     if line.startswith("usemtl "):
@@ -72,6 +79,24 @@ if cubes:
         v, f = cube(centre, offset + 1)
         open(out + "/" + name + ".obj", "w").write("\n".join(lines + ["g cube", "usemtl grey"] + v + f) + "\n")
     print("wrote %s/cube.obj, props12cube.obj and props12cube-low.obj" % out)
+if walls:
+    wall_lines, first = [], offset + 1
+    for x, corners in ((0.001, ((-1, -1), (1, -1), (1, 1), (-1, 1))),    # facing +x
+                       (5.999, ((-1, -1), (-1, 1), (1, 1), (1, -1)))):   # facing -x
+        for z in (1.5, 3.5):
+            wall_lines += ["v %.4f %.4f %.4f" % (x, 2.3 + dy * side / 2, z + dz * side / 2)
+                           for dy, dz in corners]
+            faces += ["f %d %d %d" % (first, first + 1, first + 2),
+                      "f %d %d %d" % (first, first + 2, first + 3)]
+            first += 4
+    lamps = len(lines) - 1 - lines[::-1].index("usemtl lamp")  # the twelve lamps' faces
+    walled = lines[:lamps - 1] + wall_lines + ["g", "usemtl lamp"] + faces
+    open(out + "/props16.obj", "w").write(
+        "\n".join(line.replace("mtllib props12.mtl", "mtllib props16.mtl") for line in walled) + "\n")
+    open(out + "/props16.mtl", "w").write(open(props + "/props.mtl").read())
+    print("wrote %s/props16.obj: the twelve ceiling lamps and four on the side walls" % out)
 PY
-echo "measure: SCENE=$out/props12.obj SURFACE=back CAMERA=4.6,1.6,4.8,2.2,0.8,1.2 FOV=65" \
+scene=props12.obj
+for extra in "${@:3}"; do [ "$extra" != walls ] || scene=props16.obj; done
+echo "measure: SCENE=$out/$scene SURFACE=back CAMERA=4.6,1.6,4.8,2.2,0.8,1.2 FOV=65" \
   "RAYS=72 scripts/bench-vlf-relief.sh $bin OUTDIR"
