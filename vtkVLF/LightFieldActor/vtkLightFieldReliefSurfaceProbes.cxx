@@ -23,7 +23,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <stdexcept>
 #include <utility>
 #include <vector>
@@ -41,18 +40,11 @@ std::vector<vlf::EmitterLight> ReliefEmitterLights(
   options.MaxLights = static_cast<std::size_t>(vtkReliefMapper::GetMaximumNumberOfLights());
   if (surface)
   {
-    // The receivers: the box of the surface's texture rectangle.
-    glm::dvec3 lower(std::numeric_limits<double>::max()), upper(-lower);
-    for (const double u : { 0.0, 1.0 })
-    {
-      for (const double v : { 0.0, 1.0 })
-      {
-        lower = glm::min(lower, surface->Point(u, v));
-        upper = glm::max(upper, surface->Point(u, v));
-      }
-    }
-    options.ReceiverLower = glm::vec3(lower);
-    options.ReceiverUpper = glm::vec3(upper);
+    // The receivers: the surface's texture rectangle, facing its front.
+    options.ReceiverCorner = glm::vec3(surface->Origin);
+    options.ReceiverEdgeU = glm::vec3(surface->AxisU);
+    options.ReceiverEdgeV = glm::vec3(surface->AxisV);
+    options.ReceiverNormal = glm::vec3(surface->Normal);
   }
   return vlf::EstimateEmitterLights(field, options).Lights;
 }

@@ -7,7 +7,6 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
-#include <glm/vector_relational.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -71,21 +70,76 @@ float Brightness(const EmitterLight& light)
 }
 
 // A cluster of lights for MergeEmitterLights: its members (indices), their positions' bounds,
-// their brightness-weighted normal sum and a cone about that sum's direction that holds their
-// normals (kept as clusters merge, so that a merge's cost takes constant time).
+// their brightness-weighted position and normal sums and a cone about the normal sum's direction
+// that holds their normals (kept as clusters merge, so that a merge's cost takes constant time);
+// with receivers, its lights' own irradiance at the receivers' points and the summed relative
+// error of its one light there.
 struct LightCluster
 {
   std::vector<std::size_t> Members;
   glm::dvec3 Lower{ 0.0 }, Upper{ 0.0 };
+  glm::dvec3 PositionSum{ 0.0 };
   glm::dvec3 NormalSum{ 0.0 };
   double Brightness = 0.0;
   double HalfAngle = 0.0; // radians, about Axis()
+  std::vector<double> Exact;
+  double Error = 0.0;
   glm::dvec3 Axis() const
   {
     const double length = glm::length(this->NormalSum);
     return length > 1e-12 ? this->NormalSum / length : glm::dvec3(0.0, 0.0, 1.0);
   }
 };
+
+// Where the merged lights will be seen, when the caller knows: the centres of an 8 x 8 grid over
+// the receivers' parallelogram, their normal, and all the lights' irradiance at each point.
+struct Receivers
+{
+  static constexpr int SamplesPerSide = 8;
+  std::vector<glm::dvec3> Points;
+  glm::dvec3 Normal{ 0.0, 0.0, 1.0 };
+  std::vector<double> Total; // floored at a thousandth of the mean: a dark point weighs little
+  bool Known() const { return !this->Points.empty(); }
+};
+
+// The unshadowed irradiance (in brightness units) at p, facing n, from a light of that brightness
+// at `position` whose cosine lobe faces `normal`.
+double LightIrradiance(const glm::dvec3& position, const glm::dvec3& normal, double brightness,
+  const glm::dvec3& p, const glm::dvec3& n)
+{
+  const glm::dvec3 d = position - p;
+  const double r2 = glm::dot(d, d);
+  if (!(r2 > 1e-12))
+  {
+    return 0.0;
+  }
+  const glm::dvec3 w = d / std::sqrt(r2);
+  return brightness * std::max(0.0, -glm::dot(w, normal)) * std::max(0.0, glm::dot(w, n)) / r2;
+}
+
+// The summed relative error at the receivers of one light standing for lights whose own
+// irradiance there is `exact` (brightness-weighted position and normal sums, total brightness).
+double ClusterError(const Receivers& receivers, const glm::dvec3& positionSum,
+  const glm::dvec3& normalSum, double brightness, const std::vector<double>& exact,
+  const std::vector<double>* more = nullptr)
+{
+  if (!(brightness > 0.0))
+  {
+    return 0.0;
+  }
+  const double length = glm::length(normalSum);
+  const glm::dvec3 normal = length > 1e-12 ? normalSum / length : glm::dvec3(0.0);
+  const glm::dvec3 position = positionSum / brightness;
+  double error = 0.0;
+  for (std::size_t k = 0; k < receivers.Points.size(); ++k)
+  {
+    const double want = exact[k] + (more ? (*more)[k] : 0.0);
+    const double have =
+      LightIrradiance(position, normal, brightness, receivers.Points[k], receivers.Normal);
+    error += std::abs(have - want) / receivers.Total[k];
+  }
+  return error;
+}
 
 // The half-angle of the cone about the joint axis (the merged normal sum's direction) that holds
 // both clusters' cones (pi when the sum vanishes: normals all around).
@@ -108,34 +162,89 @@ double MergedHalfAngle(const LightCluster& a, const LightCluster& b)
 }
 
 // `into` becomes the cluster of both.
-void Absorb(LightCluster& into, const LightCluster& from)
+void Absorb(LightCluster& into, const LightCluster& from, const Receivers& receivers)
 {
   into.HalfAngle = MergedHalfAngle(into, from);
   into.Members.insert(into.Members.end(), from.Members.begin(), from.Members.end());
   into.Lower = glm::min(into.Lower, from.Lower);
   into.Upper = glm::max(into.Upper, from.Upper);
+  into.PositionSum += from.PositionSum;
   into.NormalSum += from.NormalSum;
   into.Brightness += from.Brightness;
+  if (receivers.Known())
+  {
+    for (std::size_t k = 0; k < into.Exact.size(); ++k)
+    {
+      into.Exact[k] += from.Exact[k];
+    }
+    into.Error =
+      ClusterError(receivers, into.PositionSum, into.NormalSum, into.Brightness, into.Exact);
+  }
 }
 
-// Lightcuts' metric for a cluster of oriented lights (Walter et al. 2005, §4.1): its brightness
-// x (the squared diagonal of its positions' bounds + (c (1 - cos of its normal cone))^2), c the
-// scene's diameter (the field's unit sphere: 2); over the squared distance from those bounds to
-// the receivers' box when there is one (at least 0.05, a lamp on the receivers).
-double MergeCost(const LightCluster& a, const LightCluster& b, const EmitterLightOptions& options)
+// What merging two clusters costs. Without receivers, Lightcuts' metric for a cluster of oriented
+// lights (Walter et al. 2005, §4.1): its brightness x (the squared diagonal of its positions'
+// bounds + (c (1 - cos of its normal cone))^2), c the scene's diameter (the field's unit sphere:
+// 2). With receivers, the error the merge adds there: the merged light's summed relative error
+// at the receivers' points less the two clusters' own (Lightcuts bounds a cluster's error at each
+// receiver; here it is evaluated at sample points, so that lamps facing apart, near or far, are
+// weighed by what they do to the receivers).
+double MergeCost(const LightCluster& a, const LightCluster& b, const Receivers& receivers)
 {
+  if (receivers.Known())
+  {
+    return ClusterError(receivers, a.PositionSum + b.PositionSum, a.NormalSum + b.NormalSum,
+             a.Brightness + b.Brightness, a.Exact, &b.Exact) -
+      a.Error - b.Error;
+  }
   const glm::dvec3 lower = glm::min(a.Lower, b.Lower), upper = glm::max(a.Upper, b.Upper);
   const glm::dvec3 extent = upper - lower;
   const double cone = 2.0 * (1.0 - std::cos(MergedHalfAngle(a, b)));
-  double cost = (a.Brightness + b.Brightness) * (glm::dot(extent, extent) + cone * cone);
-  const glm::dvec3 receiverLower(options.ReceiverLower), receiverUpper(options.ReceiverUpper);
-  if (glm::all(glm::lessThanEqual(receiverLower, receiverUpper)))
+  return (a.Brightness + b.Brightness) * (glm::dot(extent, extent) + cone * cone);
+}
+
+// The receivers' points and all the lights' irradiance there; none (Known() false) when the
+// options name no receivers or no light reaches them.
+Receivers ReceiversOf(const std::vector<EmitterLight>& lights, const EmitterLightOptions& options)
+{
+  Receivers out;
+  const glm::dvec3 corner(options.ReceiverCorner), edgeU(options.ReceiverEdgeU),
+    edgeV(options.ReceiverEdgeV), normal(options.ReceiverNormal);
+  const double normalLength = glm::length(normal);
+  if (!(glm::length(glm::cross(edgeU, edgeV)) > 0.0) || !(normalLength > 0.0) ||
+    !std::isfinite(glm::dot(corner + edgeU + edgeV, normal)))
   {
-    const glm::dvec3 gap =
-      glm::max(glm::dvec3(0.0), glm::max(receiverLower - upper, lower - receiverUpper));
-    cost /= std::max(glm::dot(gap, gap), 0.05 * 0.05);
+    return out;
   }
-  return cost;
+  out.Normal = normal / normalLength;
+  const int n = Receivers::SamplesPerSide;
+  for (int j = 0; j < n; ++j)
+  {
+    for (int i = 0; i < n; ++i)
+    {
+      out.Points.push_back(corner + (i + 0.5) / n * edgeU + (j + 0.5) / n * edgeV);
+    }
+  }
+  out.Total.assign(out.Points.size(), 0.0);
+  for (const EmitterLight& light : lights)
+  {
+    for (std::size_t k = 0; k < out.Points.size(); ++k)
+    {
+      out.Total[k] += LightIrradiance(glm::dvec3(light.Position), glm::dvec3(light.Normal),
+        Brightness(light), out.Points[k], out.Normal);
+    }
+  }
+  const double mean = std::accumulate(out.Total.begin(), out.Total.end(), 0.0) /
+    static_cast<double>(out.Total.size());
+  if (!(mean > 0.0) || !std::isfinite(mean))
+  {
+    return Receivers(); // no light reaches them: merge as if they were unknown
+  }
+  for (double& total : out.Total)
+  {
+    total = std::max(total, 1e-3 * mean);
+  }
+  return out;
 }
 
 // One light for a cluster: at the brightness-weighted centroid, facing along the mean normal,
@@ -229,6 +338,7 @@ std::vector<EmitterLight> MergeEmitterLights(
   {
     return lights;
   }
+  const Receivers receivers = ReceiversOf(lights, options);
   std::vector<LightCluster> clusters(lights.size());
   for (std::size_t i = 0; i < lights.size(); ++i)
   {
@@ -236,7 +346,13 @@ std::vector<EmitterLight> MergeEmitterLights(
     c.Members = { i };
     c.Lower = c.Upper = glm::dvec3(lights[i].Position);
     c.Brightness = Brightness(lights[i]);
+    c.PositionSum = c.Brightness * glm::dvec3(lights[i].Position);
     c.NormalSum = c.Brightness * glm::dvec3(lights[i].Normal);
+    for (const glm::dvec3& p : receivers.Points) // a light alone is exact: Error stays 0
+    {
+      c.Exact.push_back(
+        LightIrradiance(c.Lower, glm::dvec3(lights[i].Normal), c.Brightness, p, receivers.Normal));
+    }
   }
   // The pairing below costs about n^2 merge costs; a curved lamp (each of its triangles a field
   // surface, so a light) can bring thousands. Past 256 lights they are first gathered into the
@@ -264,7 +380,7 @@ std::vector<EmitterLight> MergeEmitterLights(
         cells.emplace(key, std::move(c));
         continue;
       }
-      Absorb(found->second, c);
+      Absorb(found->second, c, receivers);
     }
     clusters.clear();
     for (auto& cell : cells)
@@ -283,7 +399,7 @@ std::vector<EmitterLight> MergeEmitterLights(
     {
       if (j != i && alive[j])
       {
-        const double cost = MergeCost(clusters[i], clusters[j], options);
+        const double cost = MergeCost(clusters[i], clusters[j], receivers);
         if (cost < partnerCost[i])
         {
           partnerCost[i] = cost;
@@ -308,7 +424,7 @@ std::vector<EmitterLight> MergeEmitterLights(
     }
     const std::size_t b = partner[a];
     LightCluster& merged = clusters[a];
-    Absorb(merged, clusters[b]);
+    Absorb(merged, clusters[b], receivers);
     alive[b] = false;
     findPartner(a);
     for (std::size_t k = 0; k < clusters.size(); ++k)
@@ -323,7 +439,7 @@ std::vector<EmitterLight> MergeEmitterLights(
       }
       else
       {
-        const double cost = MergeCost(clusters[k], merged, options);
+        const double cost = MergeCost(clusters[k], merged, receivers);
         if (cost < partnerCost[k])
         {
           partnerCost[k] = cost;

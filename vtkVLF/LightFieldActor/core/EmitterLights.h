@@ -67,11 +67,13 @@ std::vector<std::vector<std::uint32_t>> LampsOf(
 // at the intensity-weighted centroid, faces along the intensity-weighted mean normal and keeps
 // the lights' summed intensity (so their power; for lamps of one plane, exactly their light), so
 // no lamp's light is dropped. Past 256 lights (a curved lamp's pieces) they are first gathered by
-// position and normal direction, as the pairing costs n^2. A merged light errs by about (its lamps'
-// spread / distance)^2 at a receiver, so when the receivers are known
-// (ReceiverLower..ReceiverUpper, a box; empty when any bound is above the other: anywhere), the
-// metric is divided by the squared distance between the lights and that box, and the lamps nearest
-// the receivers stay separate.
+// position and normal direction, as the pairing costs n^2. When the receivers are known (a relief
+// surface: the parallelogram ReceiverCorner + s ReceiverEdgeU + t ReceiverEdgeV, s and t in
+// [0, 1], facing ReceiverNormal; zero edges: anywhere), a merge's cost is instead the error it
+// adds there: the merged light's unshadowed irradiance against its lights' own at 8 x 8 points
+// of the parallelogram, relative to all the lights' irradiance at each point, summed. So the
+// lamps nearest the receivers stay separate and lamps facing apart merge only where that costs
+// the receivers least (Lightcuts bounds a cluster's error at each receiver; here it is evaluated).
 struct EmitterLightOptions
 {
   bool Split = false;
@@ -79,8 +81,10 @@ struct EmitterLightOptions
   float SplitRatio = 0.5f;
   int MaxSplit = 4;
   std::size_t MaxLights = 0;
-  glm::vec3 ReceiverLower{ 1.0f };
-  glm::vec3 ReceiverUpper{ -1.0f };
+  glm::vec3 ReceiverCorner{ 0.0f };
+  glm::vec3 ReceiverEdgeU{ 0.0f };
+  glm::vec3 ReceiverEdgeV{ 0.0f };
+  glm::vec3 ReceiverNormal{ 0.0f, 0.0f, 1.0f };
 };
 
 // The merging above, on its own: `lights` merged until at most options.MaxLights remain

@@ -350,9 +350,9 @@ TEST(ObjectEmitterLights, MoreLampsThanTheShaderShadesMergeWithoutLosingLight)
 TEST(ObjectEmitterLights, LampsNearTheReceiversStaySeparate)
 {
   // A relief on the wall x = -1, 0.15 from the nearest row of lamps and 0.4-1.0 below them:
-  // merged by the plain metric, a merged pair of that row lights it from where no lamp is; with
-  // the receivers' box the merges go to the far lamps, and the wall's irradiance stays near the
-  // twelve lights' (all within 3% of the exact one).
+  // merged by the plain metric, a merged pair of that row lights it from where no lamp is; told
+  // the receivers, the merges go where they cost the wall least, and the wall's irradiance stays
+  // near the twelve lights' (all within 3% of the exact one).
   const std::vector<Lamp> lamps = TwelveLamps();
   const std::unique_ptr<LightField> field = BoxWithLamps(lamps);
   std::vector<std::pair<glm::vec3, glm::vec3>> wall;
@@ -364,8 +364,10 @@ TEST(ObjectEmitterLights, LampsNearTheReceiversStaySeparate)
     }
   }
   EmitterLightOptions options = AtMost(8);
-  options.ReceiverLower = ToUnit(*field, glm::vec3(-1.0f, 0.0f, -0.6f));
-  options.ReceiverUpper = ToUnit(*field, glm::vec3(-1.0f, 0.6f, 0.6f));
+  options.ReceiverCorner = ToUnit(*field, glm::vec3(-1.0f, 0.0f, -0.6f));
+  options.ReceiverEdgeU = ToUnit(*field, glm::vec3(-1.0f, 0.0f, 0.6f)) - options.ReceiverCorner;
+  options.ReceiverEdgeV = ToUnit(*field, glm::vec3(-1.0f, 0.6f, -0.6f)) - options.ReceiverCorner;
+  options.ReceiverNormal = glm::vec3(1.0f, 0.0f, 0.0f);
   const LightApproximation aware = EstimateEmitterLights(*field, options);
   ASSERT_EQ(aware.Lights.size(), 8u);
   const double plain = WorstIrradianceError(
@@ -376,6 +378,87 @@ TEST(ObjectEmitterLights, LampsNearTheReceiversStaySeparate)
     0.04);
   EXPECT_LT(near, 0.08);
   EXPECT_GT(plain, 3.0 * near);
+}
+
+TEST(ObjectEmitterLights, LampsFacingThreeWaysMergeForTheReceivers)
+{
+  // An office (6 x 2.8 x 5, scaled by 1/4 into the unit sphere) with twelve ceiling lamps and four
+  // on its side walls facing into the room, merged to 8 for a relief on its back wall: told the
+  // wall, the merges keep the wall's irradiance within 7% of the sixteen lights' on average
+  // (measured 5.5%; the metric as it was before, Lightcuts' divided by the squared distance to the
+  // wall's box, 9.6%), where the plain metric, not told, is at least 1.5 times as far off
+  // (11.4%). Area and intensity are kept either way.
+  const double scale = 0.25;
+  const glm::dvec3 centre(3.0, 1.4, 2.5);
+  const auto unit = [&](double x, double y, double z)
+  { return glm::vec3((glm::dvec3(x, y, z) - centre) * scale); };
+  std::vector<EmitterLight> lights;
+  const auto lamp = [&](glm::vec3 position, glm::vec3 normal)
+  {
+    EmitterLight l;
+    l.Position = position;
+    l.Normal = normal;
+    l.Radiance = glm::vec3(1.0f);
+    l.Area = 0.245 * 0.245 * scale * scale;
+    lights.push_back(l);
+  };
+  for (const double x : { 1.0, 2.3, 3.7, 5.0 })
+  {
+    for (const double z : { 1.0, 2.5, 4.0 })
+    {
+      lamp(unit(x, 2.799, z), glm::vec3(0.0f, -1.0f, 0.0f));
+    }
+  }
+  for (const double z : { 1.5, 3.5 })
+  {
+    lamp(unit(0.001, 2.3, z), glm::vec3(1.0f, 0.0f, 0.0f));
+    lamp(unit(5.999, 2.3, z), glm::vec3(-1.0f, 0.0f, 0.0f));
+  }
+  EmitterLightOptions told = AtMost(8);
+  told.ReceiverCorner = unit(0.0, 0.0, 0.001);
+  told.ReceiverEdgeU = unit(6.0, 0.0, 0.001) - told.ReceiverCorner;
+  told.ReceiverEdgeV = unit(0.0, 2.8, 0.001) - told.ReceiverCorner;
+  told.ReceiverNormal = glm::vec3(0.0f, 0.0f, 1.0f);
+  const std::vector<EmitterLight> aware = MergeEmitterLights(lights, told);
+  const std::vector<EmitterLight> plain = MergeEmitterLights(lights, AtMost(8));
+  ASSERT_EQ(aware.size(), 8u);
+  ASSERT_EQ(plain.size(), 8u);
+  // The mean relative error on a 30 x 14 grid of the wall (not the merge's own 8 x 8 points).
+  const auto wallError = [&](const std::vector<EmitterLight>& merged, const char* label)
+  {
+    const LightApproximation exact{ lights, glm::vec3(0.0f) }, approx{ merged, glm::vec3(0.0f) };
+    const glm::vec3 normal(0.0f, 0.0f, 1.0f), kd(1.0f);
+    double sum = 0.0;
+    int count = 0;
+    for (int i = 0; i < 30; ++i)
+    {
+      for (int j = 0; j < 14; ++j)
+      {
+        const glm::vec3 p = unit(0.1 + 0.2 * i, 0.1 + 0.2 * j, 0.001);
+        const double want = ShadeWithLights(exact, p, normal, kd).x;
+        sum += std::abs(ShadeWithLights(approx, p, normal, kd).x - want) / want;
+        ++count;
+      }
+    }
+    std::printf("[ figures  ] %s: mean irradiance error %.1f%% over the back wall\n", label,
+      100.0 * sum / count);
+    return sum / count;
+  };
+  const double near = wallError(aware, "merged for the back wall");
+  const double far = wallError(plain, "merged by the plain metric");
+  EXPECT_LT(near, 0.07);
+  EXPECT_GT(far, 1.5 * near);
+  for (const std::vector<EmitterLight>* merged : { &aware, &plain })
+  {
+    double area = 0.0, intensity = 0.0;
+    for (const EmitterLight& l : *merged)
+    {
+      area += l.Area;
+      intensity += l.Intensity().x;
+    }
+    EXPECT_NEAR(area, 16 * lights[0].Area, 1e-9);
+    EXPECT_NEAR(intensity, 16 * lights[0].Intensity().x, 1e-6);
+  }
 }
 
 TEST(ObjectEmitterLights, LightsFacingApartMergeLast)
