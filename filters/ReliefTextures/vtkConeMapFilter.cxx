@@ -1,25 +1,19 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkConeMapFilter.h"
 #include "vtkOutOfMemory.h"
-#include "vtkWholeExtentRequest.h"
 
 #include "ConeMaps.h"
 #include "MemoryBudget.h"
-#include "VTKMessage.h"
-#include "vtkReliefTextureFilter.h"
 
 #include "vtkCellData.h"
-#include "vtkCommand.h"
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
-#include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
-#include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkStringArray.h"
 #include "vtkUnsignedCharArray.h"
 
@@ -35,13 +29,6 @@ vtkStandardNewMacro(vtkConeMapFilter);
 vtkConeMapFilter::vtkConeMapFilter() = default;
 
 //------------------------------------------------------------------------------
-int vtkConeMapFilter::FillInputPortInformation(int, vtkInformation* info)
-{
-  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkImageData");
-  return 1;
-}
-
-//------------------------------------------------------------------------------
 int vtkConeMapFilter::RequestInformation(
   vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
@@ -51,25 +38,16 @@ int vtkConeMapFilter::RequestInformation(
 }
 
 //------------------------------------------------------------------------------
-int vtkConeMapFilter::RequestUpdateExtent(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
-{
-  // Cones see the whole map.
-  mesolight::RequestWholeInputExtent(inputVector);
-  return 1;
-}
-
-//------------------------------------------------------------------------------
 int vtkConeMapFilter::RequestData(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   return mesolight::ExecuteReportingOutOfMemory(
-    this, [&]() { return this->Execute(inputVector, outputVector); });
+    this, [&]() { return this->Execute(request, inputVector, outputVector); });
 }
 
 //------------------------------------------------------------------------------
 int vtkConeMapFilter::Execute(
-  vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   vtkImageData* input = vtkImageData::GetData(inputVector[0]);
   vtkImageData* output = vtkImageData::GetData(outputVector);
@@ -103,44 +81,30 @@ int vtkConeMapFilter::Execute(
       return 0;
     }
   }
-  vtkSmartPointer<vtkImageData> relief;
+  vtkNew<vtkImageData> relief;
   if (isReliefTexture)
   {
-    relief = input;
+    relief->ShallowCopy(input);
+    vtkDataArray* scale = input->GetFieldData()->GetArray("MesolightDepthScale");
+    this->AppliedDepthScale = scale->GetNumberOfTuples() > 0 ? scale->GetComponent(0, 0) : 0.0;
+    this->TrueDepthScale = 0.0;
+    this->AppliedNoData = false;
+    this->AppliedNoDataValue = 0.0;
+    this->NumberOfNoDataTexels = 0;
   }
   else
   {
-    vtkNew<vtkReliefTextureFilter> bake;
-    bake->SetInputData(input);
-    bake->SetDepthScale(this->DepthScale);
-    bake->SetBorderMode(this->BorderMode);
-    bake->SetInvertInput(this->InvertInput);
-    bake->SetNormalizeRange(this->NormalizeRange);
-    bake->SetNoDataValue(this->NoDataValue);
-    bake->SetUseNoDataValue(this->UseNoDataValue);
-    bake->SetUseInputNoDataValue(this->UseInputNoDataValue);
-    bake->SetUseTrueDepthScale(this->UseTrueDepthScale);
-    bake->SetVerticalExaggeration(this->VerticalExaggeration);
-    bake->SetMemoryBudget(this->MemoryBudget);
-    struct Forward : public vtkCommand
+    // The relief texture of the depth map, as vtkReliefTextureFilter bakes it (its errors are
+    // this filter's), the first tenth of the progress; then the cones over it.
+    this->SetProgressShiftScale(0.0, 0.1);
+    const int baked = this->Superclass::RequestData(request, inputVector, outputVector);
+    this->SetProgressShiftScale(0.0, 1.0);
+    if (!baked || this->GetAbortExecute())
     {
-      static Forward* New() { return new Forward; }
-      void Execute(vtkObject*, unsigned long, void* data) override
-      {
-        // The inner filter's own sentence, not its location line and address.
-        this->Errors += mesolight::CleanVTKMessage(data ? static_cast<const char*>(data) : "");
-      }
-      std::string Errors;
-    };
-    vtkNew<Forward> errors;
-    bake->AddObserver(vtkCommand::ErrorEvent, errors);
-    bake->Update();
-    if (!errors->Errors.empty() || bake->GetOutput()->GetNumberOfPoints() == 0)
-    {
-      vtkErrorMacro(<< "Could not read the depth map: " << errors->Errors);
-      return 0;
+      return baked;
     }
-    relief = bake->GetOutput();
+    relief->ShallowCopy(output);
+    output->Initialize();
   }
 
   int dims[3];
@@ -161,7 +125,7 @@ int vtkConeMapFilter::Execute(
   }
 
   mesolight::ConeMapOptions options;
-  options.Progress = mesolight::AlgorithmProgress(this);
+  options.Progress = mesolight::AlgorithmProgress(this, isReliefTexture ? 0.0 : 0.1, 1.0);
   const std::vector<float> cones =
     mesolight::ComputeConeMap(this->ConeType == CONSERVATIVE ? mesolight::ConeType::Conservative
                                                              : mesolight::ConeType::Relaxed,
@@ -223,14 +187,4 @@ void vtkConeMapFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ConeType: " << (this->ConeType == CONSERVATIVE ? "Conservative" : "Relaxed")
      << "\n";
   os << indent << "Packing: " << (this->Packing == RATIO_8BIT ? "Ratio8Bit" : "Float") << "\n";
-  os << indent << "DepthScale: " << this->DepthScale << "\n";
-  os << indent << "BorderMode: " << this->BorderMode << "\n";
-  os << indent << "InvertInput: " << (this->InvertInput ? "On" : "Off") << "\n";
-  os << indent << "NormalizeRange: " << (this->NormalizeRange ? "On" : "Off") << "\n";
-  os << indent << "NoDataValue: " << this->NoDataValue << "\n";
-  os << indent << "UseNoDataValue: " << (this->UseNoDataValue ? "On" : "Off") << "\n";
-  os << indent << "UseInputNoDataValue: " << (this->UseInputNoDataValue ? "On" : "Off") << "\n";
-  os << indent << "UseTrueDepthScale: " << (this->UseTrueDepthScale ? "On" : "Off") << "\n";
-  os << indent << "VerticalExaggeration: " << this->VerticalExaggeration << "\n";
-  os << indent << "MemoryBudget: " << this->MemoryBudget << "\n";
 }

@@ -12,9 +12,11 @@
  * filters/ReliefTextures/core/ConeMaps.h for the definitions and the bound. Computed with
  * vtkSMPTools.
  *
- * Input: a depth map, read exactly as vtkReliefTextureFilter reads it (the same options: heights,
- * elevations in metres and their no-data value, pixels given as cells by ParaView's GDAL Raster
- * Reader), or a relief texture (4 components and "MesolightDepthScale": depth in A, kept).
+ * Input: a depth map, baked exactly as vtkReliefTextureFilter bakes it: a cone map is a relief
+ * texture with cone ratios, so this filter is one and has all of its options (heights, elevations
+ * in metres and their no-data value, pixels given as cells by ParaView's GDAL Raster Reader, the
+ * depth scale, the memory budget) and its results (GetAppliedNoData() and the rest). Or a relief
+ * texture (4 components and "MesolightDepthScale": depth in A, kept).
  * Output packings:
  *  - Float (default): float RGBA, R,G = normal x, y packed (n+1)/2, B = cone ratio, A = depth;
  *  - Ratio8Bit: the cone ratio c stored as floor(255 c / (1 + c)) in 8 bits (the layout of
@@ -27,13 +29,13 @@
 #define vtkConeMapFilter_h
 
 #include "MesolightReliefTexturesModule.h" // for export macro
-#include "vtkImageAlgorithm.h"
+#include "vtkReliefTextureFilter.h"
 
-class MESOLIGHTRELIEFTEXTURES_EXPORT vtkConeMapFilter : public vtkImageAlgorithm
+class MESOLIGHTRELIEFTEXTURES_EXPORT vtkConeMapFilter : public vtkReliefTextureFilter
 {
 public:
   static vtkConeMapFilter* New();
-  vtkTypeMacro(vtkConeMapFilter, vtkImageAlgorithm);
+  vtkTypeMacro(vtkConeMapFilter, vtkReliefTextureFilter);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   enum ConeTypes
@@ -56,71 +58,20 @@ public:
   void SetPackingToFloat() { this->SetPacking(FLOAT); }
   void SetPackingToRatio8Bit() { this->SetPacking(RATIO_8BIT); }
 
-  ///@{
-  /** Normals and input handling, as in vtkReliefTextureFilter. */
-  vtkSetClampMacro(DepthScale, double, 0.0, 100.0);
-  vtkGetMacro(DepthScale, double);
-  vtkSetClampMacro(BorderMode, int, 0, 1);
-  vtkGetMacro(BorderMode, int);
-  void SetBorderModeToClamp() { this->SetBorderMode(0); }
-  void SetBorderModeToWrap() { this->SetBorderMode(1); }
-  vtkSetMacro(InvertInput, bool);
-  vtkGetMacro(InvertInput, bool);
-  vtkBooleanMacro(InvertInput, bool);
-  vtkSetMacro(NormalizeRange, bool);
-  vtkGetMacro(NormalizeRange, bool);
-  vtkBooleanMacro(NormalizeRange, bool);
-  vtkSetMacro(NoDataValue, double);
-  vtkGetMacro(NoDataValue, double);
-  vtkSetMacro(UseNoDataValue, bool);
-  vtkGetMacro(UseNoDataValue, bool);
-  vtkBooleanMacro(UseNoDataValue, bool);
-  vtkSetMacro(UseInputNoDataValue, bool);
-  vtkGetMacro(UseInputNoDataValue, bool);
-  vtkBooleanMacro(UseInputNoDataValue, bool);
-  vtkSetMacro(UseTrueDepthScale, bool);
-  vtkGetMacro(UseTrueDepthScale, bool);
-  vtkBooleanMacro(UseTrueDepthScale, bool);
-  vtkSetClampMacro(VerticalExaggeration, double, 0.0, 1000.0);
-  vtkGetMacro(VerticalExaggeration, double);
-  ///@}
-
-  ///@{
-  /**
-   * Memory budget in bytes. The filter estimates its working memory before allocating it and
-   * fails with an error giving the size it needs when that is more than the budget (a
-   * std::bad_alloc that still happens becomes an error too, never an abort). 0 (default): the
-   * memory the process can get (its cgroup limit, else the physical memory).
-   */
-  vtkSetClampMacro(MemoryBudget, vtkTypeInt64, 0, VTK_TYPE_INT64_MAX);
-  vtkGetMacro(MemoryBudget, vtkTypeInt64);
-  ///@}
-
 protected:
   vtkConeMapFilter();
   ~vtkConeMapFilter() override = default;
 
-  int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
-  int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   int ConeType = RELAXED;
   int Packing = FLOAT;
-  double DepthScale = 0.05;
-  int BorderMode = 0;
-  bool InvertInput = false;
-  bool NormalizeRange = false;
-  double NoDataValue = 0.0;
-  bool UseNoDataValue = false;
-  bool UseInputNoDataValue = true;
-  bool UseTrueDepthScale = false;
-  double VerticalExaggeration = 1.0;
-  vtkTypeInt64 MemoryBudget = 0;
 
 private:
   // RequestData without the std::bad_alloc guard.
-  int Execute(vtkInformationVector** inputVector, vtkInformationVector* outputVector);
+  int Execute(vtkInformation* request, vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector);
 
   vtkConeMapFilter(const vtkConeMapFilter&) = delete;
   void operator=(const vtkConeMapFilter&) = delete;

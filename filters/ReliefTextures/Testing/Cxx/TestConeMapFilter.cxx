@@ -77,7 +77,8 @@ TEST(vtkConeMapFilter, PacksTheCoreConesReportsProgressAndAborts)
     ASSERT_EQ(static_cast<float>(packed->GetComponent(static_cast<vtkIdType>(k), 2)), cones[k]);
   }
   ASSERT_GE(progress.size(), 3u);
-  EXPECT_TRUE(std::is_sorted(progress.begin(), progress.end()));
+  EXPECT_TRUE(std::is_sorted(progress.begin(), progress.end())); // the bake's, then the cones'
+  EXPECT_LE(progress.front(), 0.1);
   EXPECT_EQ(progress.back(), 1.0);
 
   // 8-bit packing: the never-widening code of each cone, computed for the depth as stored
@@ -190,6 +191,10 @@ TEST(vtkConeMapFilter, ReadsElevationMapsAsTheReliefFilterDoes)
   }
   // The holes lie at the lowest ground (depth 1), not 32 km below the map's top.
   EXPECT_EQ(packed->GetComponent(5 * w + 6, 3), 1.0);
+  // What the bake applied is reported as the relief filter reports it.
+  EXPECT_TRUE(cones->GetAppliedNoData());
+  EXPECT_EQ(cones->GetAppliedNoDataValue(), -32768.0);
+  EXPECT_EQ(cones->GetNumberOfNoDataTexels(), bake->GetNumberOfNoDataTexels());
 
   // Negative cases. The file's value off: the holes are elevations, and the rest is squeezed
   // into a sliver at the top.
