@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <memory>
 #include <utility>
 #include <vector>
@@ -506,6 +507,29 @@ TEST(ObjectEmitterLights, LightsFacingApartMergeLast)
   const std::vector<EmitterLight> one = MergeEmitterLights(lights, AtMost(1));
   ASSERT_EQ(one.size(), 1u);
   EXPECT_GT(glm::dot(one[0].Normal, glm::normalize(glm::vec3(2.0f, -8.0f, 0.0f))), 0.9999f);
+
+  // Receivers no light reaches (the floor seen from below), a rectangle without area, or one
+  // with a non-finite corner: merged as if no receivers were named.
+  EmitterLightOptions away = AtMost(8);
+  away.ReceiverCorner = glm::vec3(-1.0f, -1.0f, -1.0f);
+  away.ReceiverEdgeU = glm::vec3(2.0f, 0.0f, 0.0f);
+  away.ReceiverEdgeV = glm::vec3(0.0f, 0.0f, 2.0f);
+  away.ReceiverNormal = glm::vec3(0.0f, -1.0f, 0.0f);
+  EmitterLightOptions flat = away;
+  flat.ReceiverEdgeV = glm::vec3(0.0f);
+  EmitterLightOptions broken = away;
+  broken.ReceiverNormal = glm::vec3(0.0f, 1.0f, 0.0f);
+  broken.ReceiverCorner.x = std::numeric_limits<float>::quiet_NaN();
+  for (const EmitterLightOptions* options : { &away, &flat, &broken })
+  {
+    const std::vector<EmitterLight> same = MergeEmitterLights(lights, *options);
+    ASSERT_EQ(same.size(), merged.size());
+    for (std::size_t k = 0; k < same.size(); ++k)
+    {
+      EXPECT_EQ(same[k].Position, merged[k].Position);
+      EXPECT_EQ(same[k].Normal, merged[k].Normal);
+    }
+  }
 }
 
 TEST(ObjectEmitterLights, ACurvedLampsPiecesMergeKeepingItsPower)
