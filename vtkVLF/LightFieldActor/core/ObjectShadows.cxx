@@ -553,7 +553,7 @@ float ObjectShadows::BlockedFraction(std::size_t e, const glm::vec3& p, const gl
 {
   const ShadowSettings& c = this->Config;
   const std::vector<std::uint32_t>& maps = this->EmitterMaps[e];
-  if (c.Mode >= ShadowMode::Field && maps.size() > 1)
+  if (PerSampleMaps(c.Mode, this->EmitterList[e]) && maps.size() > 1)
   {
     const ShadowEmitter& emitter = this->EmitterList[e];
     float blocked = 0.0f, weight = 0.0f;
@@ -606,7 +606,7 @@ glm::vec3 ObjectShadows::Shade(
   {
     const ShadowEmitter& emitter = this->EmitterList[e];
     const std::vector<std::uint32_t>& maps = this->EmitterMaps[e];
-    if (c.Mode >= ShadowMode::Field && maps.size() > 1)
+    if (PerSampleMaps(c.Mode, emitter) && maps.size() > 1)
     {
       for (std::size_t i = 0; i < emitter.Samples.size(); ++i)
       {
