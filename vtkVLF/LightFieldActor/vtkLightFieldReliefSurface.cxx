@@ -472,7 +472,7 @@ int vtkLightFieldReliefSurface::RequestData(
   this->Internals->LightSamples.clear();
   if (this->SceneOcclusion)
   {
-    visibility = LightVisibility(*field, surface, n,
+    visibility = LightVisibility(*field, surface, emitters, n,
       this->Internals->LentFor == field ? this->Internals->LentEmbree.get() : nullptr);
     // The relief's own shadow of the first emitter light's area, in the visible-share map: a
     // point light's hard shadow is not the emitter's penumbra (ReliefEmitterShadowMap).
@@ -500,7 +500,7 @@ int vtkLightFieldReliefSurface::RequestData(
     return 1; // stopped: empty outputs
   }
 
-  AddEmitterLights(*field, &surface, this->EmitterLights);
+  AddEmitterLights(*field, emitters, this->EmitterLights);
   return 1;
 }
 
@@ -790,7 +790,7 @@ bool vtkLightFieldReliefSurface::GetEmitterLights(
   {
     return false;
   }
-  AddEmitterLights(*field, nullptr, lights);
+  AddEmitterLights(*field, ReliefEmitterLights(*field), lights);
   return true;
 }
 

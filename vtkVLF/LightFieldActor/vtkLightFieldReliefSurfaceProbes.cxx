@@ -49,15 +49,15 @@ std::vector<vlf::EmitterLight> ReliefEmitterLights(
   return vlf::EstimateEmitterLights(field, options).Lights;
 }
 
-// The field's emitters as VTK lights: radiant intensity Le x Area, the area in world units
+// The field's emitter lights as VTK lights: radiant intensity Le x Area, the area in world units
 // (world = centre + unit / scale). Packed 9 numbers a light (position, normal, intensity), the
 // form in which they travel between MPI ranks.
 std::vector<double> PackEmitterLights(
-  const vlf::LightField& field, const vlf::ReliefSurface* surface)
+  const vlf::LightField& field, const std::vector<vlf::EmitterLight>& emitters)
 {
   const double scale = field.NormalizationScale();
   std::vector<double> packed;
-  for (const vlf::EmitterLight& emitter : ReliefEmitterLights(field, surface))
+  for (const vlf::EmitterLight& emitter : emitters)
   {
     const glm::vec3 world = vlf::ToWorld(field, emitter.Position);
     const glm::vec3 unitIntensity = emitter.Intensity();
@@ -79,10 +79,10 @@ void AddPackedLights(const std::vector<double>& packed, vtkLightCollection* ligh
   }
 }
 
-void AddEmitterLights(
-  const vlf::LightField& field, const vlf::ReliefSurface* surface, vtkLightCollection* lights)
+void AddEmitterLights(const vlf::LightField& field, const std::vector<vlf::EmitterLight>& emitters,
+  vtkLightCollection* lights)
 {
-  AddPackedLights(PackEmitterLights(field, surface), lights);
+  AddPackedLights(PackEmitterLights(field, emitters), lights);
 }
 
 // The probe image of port 1 from n x n SH9 probes (pixel (9 i + k, j)), as floats.
@@ -129,13 +129,13 @@ void FillProbesImage(vtkImageData* image, const std::vector<float>& values, int 
   image->GetPointData()->GetScalars()->SetName("IrradianceProbes");
 }
 
-// The scene's visibility of the field's emitter lights from the surface's n x n probes, traced
-// in `lent` (an Embree scene of field.Scene()) when given, else in a scene built here.
+// The scene's visibility of the emitter lights from the surface's n x n probes, traced in `lent`
+// (an Embree scene of field.Scene()) when given, else in a scene built here.
 std::vector<float> LightVisibility(const vlf::LightField& field, const vlf::ReliefSurface& surface,
-  int n, const mesolight::EmbreeScene* lent)
+  const std::vector<vlf::EmitterLight>& emitters, int n, const mesolight::EmbreeScene* lent)
 {
   std::vector<glm::vec3> lights;
-  for (const vlf::EmitterLight& light : ReliefEmitterLights(field, &surface))
+  for (const vlf::EmitterLight& light : emitters)
   {
     lights.push_back(light.Position);
   }
@@ -242,10 +242,11 @@ SurfaceResult ComputeSurface(const vlf::LightField& field, vtkPolyData* whole, i
     }
     result.Limit[6] = 1.0;
   }
-  result.Lights = PackEmitterLights(field, &surface);
+  const std::vector<vlf::EmitterLight> emitters = ReliefEmitterLights(field, &surface);
+  result.Lights = PackEmitterLights(field, emitters);
   if (sceneOcclusion)
   {
-    result.Visibility = LightVisibility(field, surface, n);
+    result.Visibility = LightVisibility(field, surface, emitters, n);
   }
   return result;
 }

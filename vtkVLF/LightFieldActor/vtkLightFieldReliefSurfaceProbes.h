@@ -35,11 +35,13 @@ namespace reliefsurface
 std::vector<EmitterLight> ReliefEmitterLights(
   const LightField& field, const ReliefSurface* surface = nullptr);
 
-// Those lights packed 9 numbers a light (world position, normal, intensity).
-std::vector<double> PackEmitterLights(const LightField& field, const ReliefSurface* surface);
+// Those lights (computed once by the caller: the merge is not free) packed 9 numbers a light
+// (world position, normal, intensity), or added as VTK lights.
+std::vector<double> PackEmitterLights(
+  const LightField& field, const std::vector<EmitterLight>& emitters);
 void AddPackedLights(const std::vector<double>& packed, vtkLightCollection* lights);
 void AddEmitterLights(
-  const LightField& field, const ReliefSurface* surface, vtkLightCollection* lights);
+  const LightField& field, const std::vector<EmitterLight>& emitters, vtkLightCollection* lights);
 
 // Port 1's probe image: n x n SH9 probes as floats (pixel (9 i + k, j)), and the image itself
 // with, when given, the scene's visibility of light k as a fourth component.
@@ -47,10 +49,10 @@ std::vector<float> PackProbes(const std::vector<SH9>& probes, int n);
 void FillProbesImage(vtkImageData* image, const std::vector<float>& values, int n,
   const std::vector<float>* visibility = nullptr, std::size_t lights = 0);
 
-// The scene's visibility of the emitter lights from the surface's n x n probes (traced in
-// `lent` when given).
-std::vector<float> LightVisibility(
-  const LightField& field, const ReliefSurface& surface, int n, const EmbreeScene* lent = nullptr);
+// The scene's visibility of those lights from the surface's n x n probes (traced in `lent` when
+// given).
+std::vector<float> LightVisibility(const LightField& field, const ReliefSurface& surface,
+  const std::vector<EmitterLight>& emitters, int n, const EmbreeScene* lent = nullptr);
 
 // The depth (A) of a relief texture; throws std::runtime_error saying why not.
 HeightField ReliefHeightField(vtkImageData* texture, bool walled);
