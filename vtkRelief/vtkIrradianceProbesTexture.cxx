@@ -115,10 +115,11 @@ void vtkIrradianceProbesTexture::Update(vtkOpenGLRenderWindow* renWin, vtkImageD
         if (visibility && k < 8)
         {
           const double value = values->GetComponent(pixel, 3);
-          if (!(value >= 0.0 && value <= 1.0))
+          if (!(value >= 0.0 && value <= MaxLightFactor))
           {
-            vtkErrorMacro(<< "The visibility of light " << k << " from irradiance probe (" << i
-                          << ", " << j << ") is " << value << ", not in [0, 1]." << layout);
+            vtkErrorMacro(<< "The factor of light " << k << " at irradiance probe (" << i << ", "
+                          << j << ") is " << value << ", not in [0, " << MaxLightFactor << "]."
+                          << layout);
             return;
           }
           texels[((static_cast<size_t>(7 + k / 4) * nv + j) * nu + i) * 4 + k % 4] =

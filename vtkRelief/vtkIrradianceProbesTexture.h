@@ -18,9 +18,11 @@
  * Two optional parts make the relief's own occlusion and the scene's shadows cheap per pixel,
  * both computed once on the CPU (vtkLightFieldReliefSurface, for the walkthrough's reliefs and
  * ParaView's Relief Surface):
- * - a fourth component: pixel (9 i + k, j) holds the scene's visibility (in [0, 1]) of the
- *   renderer's light k (k < 8) from probe (i, j), uploaded as blocks 7-8 (lights 0-3, 4-7) and
- *   multiplied into that light's contribution (1 without it);
+ * - a fourth component: pixel (9 i + k, j) holds the factor (in [0, MaxLightFactor]) by which
+ *   the renderer's light k (k < 8) is multiplied at probe (i, j), uploaded as blocks 7-8 (lights
+ *   0-3, 4-7), bilinear between probes, and multiplied into that light's contribution (1
+ *   without it): the scene's shadow of the light, and the ratio of the emitters' irradiance it
+ *   stands for to its own as a point light (mesolight::vlf::EmitterLightFactors);
  * - the relief's cosine-weighted visible share over its texture (ReliefVisibleShareMap in
  *   reliefcore/core/ReliefShading.h: per cell V and V over the share of directions above the
  *   macro plane; optionally a third value, the visible share Vs of the relief the occluded
@@ -83,6 +85,9 @@ public:
   vtkGetMacro(HasVisibleShare, bool);
   /** Whether the map holds light 0's shadow by the relief (a fourth value per cell). */
   vtkGetMacro(HasLightShadow, bool);
+
+  /** The largest light factor a probe may carry (the fourth component, see above). */
+  static constexpr double MaxLightFactor = 8.0;
 
   /** The field-data arrays of the relief's visible share and its grid size (see above). */
   static const char* GetVisibleShareName() { return "ReliefVisibleShare"; }

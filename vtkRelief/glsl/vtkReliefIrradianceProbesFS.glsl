@@ -9,8 +9,8 @@
 // hold red's L_0..L_7, 2-3 green's, 4-5 blue's, block 6 the three L_8. A linear fetch inside a
 // block interpolates its coefficients bilinearly between the four nearest probes; the fetch is
 // clamped to the block's texel centres, which clamps at the grid's border (probe (i, j) stands
-// at ((i + 1/2) / Nu, (j + 1/2) / Nv)). The texture is Nu x 9 Nv: blocks 7-8 hold the scene's
-// visibility of the renderer's lights 0-3 and 4-7 from each probe (1 where not given).
+// at ((i + 1/2) / Nu, (j + 1/2) / Nv)). The texture is Nu x 9 Nv: blocks 7-8 hold the
+// factors of the renderer's lights 0-3 and 4-7 at each probe (1 where not given).
 //
 // The relief's own occlusion and inter-reflection at near-zero cost per pixel: V, the
 // cosine-weighted share of the hemisphere leaving the relief, and Vs, that of the relief the
@@ -86,9 +86,10 @@ vec4 mlReliefShare(vec2 uv)
   return textureLod(mlReliefVisibleShare, vec2(uv.x, row / rows), 0.0);
 }
 
-// The scene's visibility of the renderer's light `light` at texture coordinates uv, from the
-// probes (bilinear); 1 for lights 8 and beyond.
-float mlEmitterVisibility(vec2 uv, int light)
+// The factor of the renderer's light `light` at texture coordinates uv, from the probes
+// (bilinear): the scene's shadow of the light times the emitters' irradiance it stands for over
+// its own as a point light (EmitterLightFactors); 1 for lights 8 and beyond.
+float mlEmitterLightFactor(vec2 uv, int light)
 {
   if (light >= 8)
   {
@@ -132,7 +133,7 @@ vec3 mlFlatLightIrradiance(vec3 posVC, vec3 macroVC, vec2 uv)
     vec3 lightDir;
     float attenuation = mlLightArrival(i, posVC, lightDir);
     irradiance += max(0.0, attenuation * dot(macroVC, -lightDir)) *
-      mlEmitterVisibility(uv, i) * mlLightColor[i];
+      mlEmitterLightFactor(uv, i) * mlLightColor[i];
   }
   return 3.14159265 * irradiance;
 }

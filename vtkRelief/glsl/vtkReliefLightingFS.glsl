@@ -19,7 +19,7 @@ uniform float mlExposure; // scales the light-set and probe shading
 uniform mat3 mlWorldToView; // rotation part of the view matrix
 
 #ifdef ML_IRRADIANCE_PROBES
-float mlEmitterVisibility(vec2 uv, int light); // the scene's shadow (vtkReliefIrradianceProbesFS)
+float mlEmitterLightFactor(vec2 uv, int light); // the scene's shadow and the point's error
 float mlEmitterSelfShadow(vec2 uv, int light);  // the relief's, precomputed (-1: not held)
 #endif
 
@@ -99,7 +99,7 @@ void mlAccumulateLights(vec3 posVC, vec3 normalVC, vec3 hit, mat3 worldToTexture
     vec3 lightDir;
     float attenuation = mlLightArrival(i, posVC, lightDir);
 #ifdef ML_IRRADIANCE_PROBES
-    attenuation *= mlEmitterVisibility(hit.xy, i);
+    attenuation *= mlEmitterLightFactor(hit.xy, i);
 #endif
     float df = max(0.0, attenuation * mlFilteredLambert(normalVC, -lightDir));
     if (df <= 0.0)

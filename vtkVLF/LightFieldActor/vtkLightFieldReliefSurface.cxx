@@ -467,12 +467,12 @@ int vtkLightFieldReliefSurface::RequestData(
 
   // Port 1: the probes, pixel (9 i + k, j), with the scene's occlusion of the emitter lights and
   // the relief's visible share when asked for.
-  std::vector<float> visibility;
+  std::vector<float> factors;
   const std::vector<vlf::EmitterLight> emitters = ReliefEmitterLights(*field, &surface);
   this->Internals->LightSamples.clear();
   if (this->SceneOcclusion)
   {
-    visibility = LightVisibility(*field, surface, emitters, n,
+    factors = LightFactors(*field, surface, emitters, n,
       this->Internals->LentFor == field ? this->Internals->LentEmbree.get() : nullptr);
     // The relief's own shadow of the first emitter light's area, in the visible-share map: a
     // point light's hard shadow is not the emitter's penumbra (ReliefEmitterShadowMap).
@@ -486,8 +486,8 @@ int vtkLightFieldReliefSurface::RequestData(
       this->Internals->LightSamples = vlf::EmitterSamplesOfLight(field->Scene(), lights, 0);
     }
   }
-  FillProbesImage(probesOutput, PackProbes(probes, n), n,
-    this->SceneOcclusion ? &visibility : nullptr, emitters.size());
+  FillProbesImage(probesOutput, PackProbes(probes, n), n, this->SceneOcclusion ? &factors : nullptr,
+    emitters.size());
   this->NamedProbes = std::make_unique<std::vector<mesolight::SH9>>(std::move(probes));
   ++this->ProbeComputations;
   const double frame[12] = { surface.Origin.x, surface.Origin.y, surface.Origin.z, surface.AxisU.x,
@@ -692,9 +692,9 @@ int vtkLightFieldReliefSurface::RequestSurfaceData(
       }
       if (this->SceneOcclusion)
       {
-        result.Visibility.resize(static_cast<std::size_t>(n) * n * (lights / 9));
+        result.Factors.resize(static_cast<std::size_t>(n) * n * (lights / 9));
         controller->Broadcast(
-          result.Visibility.data(), static_cast<vtkIdType>(result.Visibility.size()), root);
+          result.Factors.data(), static_cast<vtkIdType>(result.Factors.size()), root);
       }
     }
   }
@@ -714,8 +714,8 @@ int vtkLightFieldReliefSurface::RequestSurfaceData(
     ++this->ProbeComputations;
   }
 
-  FillProbesImage(probesOutput, result.Probes, n,
-    this->SceneOcclusion ? &result.Visibility : nullptr, result.Lights.size() / 9);
+  FillProbesImage(probesOutput, result.Probes, n, this->SceneOcclusion ? &result.Factors : nullptr,
+    result.Lights.size() / 9);
   in.LightSamples.clear(); // not on every rank's field: the mapper marches the lights' shadows
   if (!this->AddVisibleShare(probesOutput, result.Frame, ranks > 1 ? controller : nullptr))
   {

@@ -44,10 +44,12 @@
  *
  * What makes the relief mapper shade like the CPU reference (`mesolight vlf render --relief`,
  * vtkIrradianceProbesTexture), both optional and computed once per change, not per frame:
- * - SceneOcclusion on: port 1 gets a fourth component, pixel (9 i + k, j) the scene's visibility
- *   (Embree) of emitter light k (k < 9, GetEmitterLights' order; the mapper reads lights 0-7)
- *   from probe (i, j), over the CPU
- *   reference's emitter samples (mesolight::vlf::EmitterLightVisibility, core/ReliefOcclusion.h).
+ * - SceneOcclusion on: port 1 gets a fourth component, pixel (9 i + k, j) the factor of emitter
+ *   light k (k < 9, GetEmitterLights' order; the mapper reads lights 0-7) at probe (i, j): the
+ *   flat wall's irradiance there from the CPU reference's emitter samples the light stands for,
+ *   past the scene (Embree), over the light's own as a point light
+ *   (mesolight::vlf::EmitterLightFactors, core/ReliefOcclusion.h). It carries the scene's shadow
+ *   and corrects a light that stands for several merged lamps.
  * - a relief texture given (SetReliefTextureData, vtkReliefMapper's form: depth in A, 0 = top,
  *   1 = deepest; ReliefDepthScale its depth scale): port 1's field data gets the relief's
  *   visible-share map over its texture (ReliefVisibleShareMap on the exact height-field

@@ -108,43 +108,38 @@ std::vector<float> PackProbes(const std::vector<mesolight::SH9>& probes, int n)
 }
 
 // Port 1: the probes, and as a fourth component (when given: `lights` values per probe, as
-// EmitterLightVisibility makes them) the scene's visibility of light k < 9 at pixel (9 i + k, j).
+// EmitterLightFactors makes them) the factor of light k < 9 at pixel (9 i + k, j).
 void FillProbesImage(vtkImageData* image, const std::vector<float>& values, int n,
-  const std::vector<float>* visibility, std::size_t lights)
+  const std::vector<float>* factors, std::size_t lights)
 {
   image->SetExtent(0, 9 * n - 1, 0, n - 1, 0, 0);
-  const int components = visibility ? 4 : 3;
+  const int components = factors ? 4 : 3;
   image->AllocateScalars(VTK_FLOAT, components);
   float* out = static_cast<float*>(image->GetScalarPointer());
   const std::size_t pixels = static_cast<std::size_t>(9) * n * n;
   for (std::size_t p = 0; p < pixels; ++p)
   {
     std::copy(&values[3 * p], &values[3 * p] + 3, out + components * p);
-    if (visibility)
+    if (factors)
     {
       const std::size_t k = p % 9, probe = p / 9;
-      out[4 * p + 3] = k < lights ? (*visibility)[probe * lights + k] : 1.0f;
+      out[4 * p + 3] = k < lights ? (*factors)[probe * lights + k] : 1.0f;
     }
   }
   image->GetPointData()->GetScalars()->SetName("IrradianceProbes");
 }
 
-// The scene's visibility of the emitter lights from the surface's n x n probes, traced in `lent`
+// The emitter lights' factors at the surface's n x n probes (EmitterLightFactors), traced in `lent`
 // (an Embree scene of field.Scene()) when given, else in a scene built here.
-std::vector<float> LightVisibility(const vlf::LightField& field, const vlf::ReliefSurface& surface,
+std::vector<float> LightFactors(const vlf::LightField& field, const vlf::ReliefSurface& surface,
   const std::vector<vlf::EmitterLight>& emitters, int n, const mesolight::EmbreeScene* lent)
 {
-  std::vector<glm::vec3> lights;
-  for (const vlf::EmitterLight& light : emitters)
-  {
-    lights.push_back(light.Position);
-  }
   if (lent)
   {
-    return vlf::EmitterLightVisibility(field, *lent, surface, lights, n, n);
+    return vlf::EmitterLightFactors(field, *lent, surface, emitters, n, n);
   }
   const mesolight::EmbreeScene embree(field.Scene());
-  return vlf::EmitterLightVisibility(field, embree, surface, lights, n, n);
+  return vlf::EmitterLightFactors(field, embree, surface, emitters, n, n);
 }
 
 // The depth (A) of a relief texture as a height field; throws std::runtime_error saying why not.
@@ -246,7 +241,7 @@ SurfaceResult ComputeSurface(const vlf::LightField& field, vtkPolyData* whole, i
   result.Lights = PackEmitterLights(field, emitters);
   if (sceneOcclusion)
   {
-    result.Visibility = LightVisibility(field, surface, emitters, n);
+    result.Factors = LightFactors(field, surface, emitters, n);
   }
   return result;
 }

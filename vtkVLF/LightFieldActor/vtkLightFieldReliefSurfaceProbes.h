@@ -44,14 +44,14 @@ void AddEmitterLights(
   const LightField& field, const std::vector<EmitterLight>& emitters, vtkLightCollection* lights);
 
 // Port 1's probe image: n x n SH9 probes as floats (pixel (9 i + k, j)), and the image itself
-// with, when given, the scene's visibility of light k as a fourth component.
+// with, when given, the factor of light k (EmitterLightFactors) as a fourth component.
 std::vector<float> PackProbes(const std::vector<SH9>& probes, int n);
 void FillProbesImage(vtkImageData* image, const std::vector<float>& values, int n,
-  const std::vector<float>* visibility = nullptr, std::size_t lights = 0);
+  const std::vector<float>* factors = nullptr, std::size_t lights = 0);
 
-// The scene's visibility of those lights from the surface's n x n probes (traced in `lent` when
-// given).
-std::vector<float> LightVisibility(const LightField& field, const ReliefSurface& surface,
+// Those lights' factors at the surface's n x n probes (EmitterLightFactors: the scene's shadow
+// and the point light's error; traced in `lent` when given).
+std::vector<float> LightFactors(const LightField& field, const ReliefSurface& surface,
   const std::vector<EmitterLight>& emitters, int n, const EmbreeScene* lent = nullptr);
 
 // The depth (A) of a relief texture; throws std::runtime_error saying why not.
@@ -67,7 +67,8 @@ struct SurfaceResult
   // The depth limit (world): a point, the front normal, 1 when the surface is mounted on a wall.
   double Limit[7] = {};
   std::vector<double> Lights;
-  std::vector<float> Visibility; // per probe and light (SceneOcclusion), else empty
+  std::vector<float>
+    Factors; // per probe and light (SceneOcclusion, EmitterLightFactors), else empty
 };
 
 SurfaceResult ComputeSurface(const LightField& field, vtkPolyData* whole, int n,

@@ -585,22 +585,43 @@ TEST(ReliefIrradianceProbes, VisibleShareAndLightVisibilityFollowTheCpuFormula)
     image->GetPointData()->SetScalars(values);
     return image;
   };
-  scene.Mapper->SetIrradianceProbesData(lightOnly(1.0));
-  const Frame full = Render(scene);
-  scene.Mapper->SetIrradianceProbesData(lightOnly(0.25));
-  const Frame quarter = Render(scene);
-  double sumFull = 0.0, sumQuarter = 0.0;
-  for (size_t p = 0; p < full.Depth.size(); ++p)
+  // The light's red over the relief with factor `high` over that with `low` (unclipped pixels).
+  const auto lightRatio = [&](double low, double high)
   {
-    if (full.Covered(p) && quarter.Covered(p))
+    scene.Mapper->SetIrradianceProbesData(lightOnly(low));
+    const Frame lowFrame = Render(scene);
+    scene.Mapper->SetIrradianceProbesData(lightOnly(high));
+    const Frame highFrame = Render(scene);
+    double sumLow = 0.0, sumHigh = 0.0;
+    for (size_t p = 0; p < lowFrame.Depth.size(); ++p)
     {
-      sumFull += full.Rgb[3 * p];
-      sumQuarter += quarter.Rgb[3 * p];
+      if (lowFrame.Covered(p) && highFrame.Covered(p) && lowFrame.Rgb[3 * p] < 250.0 &&
+        highFrame.Rgb[3 * p] < 250.0)
+      {
+        sumLow += lowFrame.Rgb[3 * p];
+        sumHigh += highFrame.Rgb[3 * p];
+      }
     }
+    EXPECT_GT(sumLow, 0.0);
+    return sumHigh / sumLow;
+  };
+  const double quarter = 1.0 / lightRatio(0.25, 1.0);
+  std::cout << "[light visibility] quarter / full = " << quarter << "\n";
+  EXPECT_NEAR(quarter, 0.25, 0.01);
+  // A factor above 1 (a light that stands for more than its point delivers,
+  // vlf::EmitterLightFactors) is applied as it is: 1.5 gives three times 0.5's light. One above
+  // vtkIrradianceProbesTexture::MaxLightFactor is reported.
+  const double more = lightRatio(0.5, 1.5);
+  std::cout << "[light factor] 1.5 / 0.5 = " << more << "\n";
+  EXPECT_NEAR(more, 3.0, 0.05);
+  {
+    vtkNew<mesolight_test::MessageCapture> tooLarge;
+    tooLarge->Watch(scene.Mapper);
+    scene.Mapper->SetIrradianceProbesData(lightOnly(9.0));
+    Render(scene);
+    EXPECT_TRUE(tooLarge->HasError("The factor of light 0 at irradiance probe (0, 0) is 9"))
+      << tooLarge->AllErrors();
   }
-  std::cout << "[light visibility] quarter / full = " << sumQuarter / sumFull << "\n";
-  EXPECT_GT(sumFull, 0.0);
-  EXPECT_NEAR(sumQuarter / sumFull, 0.25, 0.01);
   scene.Renderer->RemoveAllLights();
 
   // A map whose size does not match its values: reported, the relief drawn without the probes.

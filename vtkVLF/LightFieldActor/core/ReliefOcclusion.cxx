@@ -3,6 +3,7 @@
 
 #include "Distribution.h" // Reducer, Agree
 #include "EmbreeScene.h"
+#include "EmitterLights.h" // EmitterLight
 #include "LightField.h"
 #include "ReliefSurface.h"
 #include "TriangleScene.h"
@@ -91,25 +92,32 @@ std::vector<ReliefEmitterSample> EmitterSamplesOfLight(
   return of;
 }
 
-std::vector<float> EmitterLightVisibility(const LightField& field, const EmbreeScene& scene,
-  const ReliefSurface& surface, const std::vector<glm::vec3>& lights, int probesU, int probesV,
+std::vector<float> EmitterLightFactors(const LightField& field, const EmbreeScene& scene,
+  const ReliefSurface& surface, const std::vector<EmitterLight>& lights, int probesU, int probesV,
   int samplesPerSide)
 {
   const std::size_t count = lights.size();
-  std::vector<float> visibility(static_cast<std::size_t>(probesU) * probesV * count, 1.0f);
+  std::vector<float> factors(static_cast<std::size_t>(probesU) * probesV * count, 1.0f);
   if (count == 0)
   {
-    return visibility;
+    return factors;
   }
+  const auto luminance = [](const glm::dvec3& c)
+  { return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z; };
   const std::vector<ReliefEmitterSample> samples =
     EmitterSamples(field.Scene(), std::max(1, samplesPerSide));
-  const std::vector<std::size_t> nearest = NearestLights(samples, lights);
+  std::vector<glm::vec3> positions;
+  for (const EmitterLight& light : lights)
+  {
+    positions.push_back(light.Position);
+  }
+  const std::vector<std::size_t> nearest = NearestLights(samples, positions);
   for (int j = 0; j < probesV; ++j)
   {
     for (int i = 0; i < probesU; ++i)
     {
       const glm::dvec3 p(ReliefProbePoint(surface, i, j, probesU, probesV));
-      std::vector<double> all(count, 0.0), seen(count, 0.0);
+      std::vector<double> seen(count, 0.0);
       for (std::size_t s = 0; s < samples.size(); ++s)
       {
         const ReliefEmitterSample& e = samples[s];
@@ -120,13 +128,12 @@ std::vector<float> EmitterLightVisibility(const LightField& field, const EmbreeS
           continue;
         }
         const glm::dvec3 l = toLight / std::sqrt(r2);
-        const double weight = glm::dot(surface.Normal, l) * -glm::dot(e.Normal, l) / r2 *
-          (0.2126 * e.RadianceArea.x + 0.7152 * e.RadianceArea.y + 0.0722 * e.RadianceArea.z);
+        const double weight =
+          glm::dot(surface.Normal, l) * -glm::dot(e.Normal, l) / r2 * luminance(e.RadianceArea);
         if (!(weight > 0.0))
         {
           continue;
         }
-        all[nearest[s]] += weight;
         SceneRay ray;
         ray.Origin = glm::vec3(p);
         ray.Direction = glm::vec3(l);
@@ -139,15 +146,26 @@ std::vector<float> EmitterLightVisibility(const LightField& field, const EmbreeS
       }
       for (std::size_t k = 0; k < count; ++k)
       {
-        if (all[k] > 0.0)
+        const EmitterLight& light = lights[k];
+        const glm::dvec3 toLight = glm::dvec3(light.Position) - p;
+        const double d2 = glm::dot(toLight, toLight);
+        if (!(d2 > 0.0))
         {
-          visibility[(static_cast<std::size_t>(j) * probesU + i) * count + k] =
-            static_cast<float>(seen[k] / all[k]);
+          continue;
+        }
+        const glm::dvec3 l = toLight / std::sqrt(d2);
+        const double point = std::max(0.0, glm::dot(surface.Normal, l)) *
+          std::max(0.0, -glm::dot(glm::dvec3(light.Normal), l)) / d2 *
+          luminance(glm::dvec3(light.Intensity()));
+        if (point > 0.0)
+        {
+          factors[(static_cast<std::size_t>(j) * probesU + i) * count + k] =
+            static_cast<float>(std::min(seen[k] / point, double{ MaxEmitterLightFactor }));
         }
       }
     }
   }
-  return visibility;
+  return factors;
 }
 
 ReliefFrame ReliefFrameOf(const ReliefSurface& surface, double depthScale)

@@ -26,6 +26,7 @@ class TriangleScene;
 namespace vlf
 {
 class LightField;
+struct EmitterLight;
 class Reducer;
 struct ReliefSurface;
 
@@ -37,19 +38,30 @@ constexpr int MaxVisibleShareSide = 256;
 // map), the CPU reference's emitters.
 std::vector<ReliefEmitterSample> EmitterSamples(const TriangleScene& scene, int n);
 
-// The scene's visibility of point lights from a relief surface's SH9 probes (for the relief
-// mapper, vtkIrradianceProbesTexture's fourth component): per probe (i, j) of a probesU x probesV
-// grid (ReliefProbePoint, j slowest) and light k, the share of the flat wall's irradiance
-// from the field's emitters that reaches the probe past the scene, over the CPU renderer's
-// emitter samples (n x n per emitting triangle) nearest to light k (unit-sphere positions).
-// 1 where no sample lights the probe. Index ((j probesU + i) lights + k).
-std::vector<float> EmitterLightVisibility(const LightField& field, const EmbreeScene& scene,
-  const ReliefSurface& surface, const std::vector<glm::vec3>& lights, int probesU, int probesV,
+// The most EmitterLightFactors gives a light (vtkIrradianceProbesTexture::MaxLightFactor, what
+// the relief mapper accepts): where a point light delivers next to nothing of what its samples
+// do, a larger factor would only amplify the bilinear step between probes.
+constexpr float MaxEmitterLightFactor = 8.0f;
+
+// What makes the relief mapper's point lights deliver the emitters' light (for the relief mapper,
+// vtkIrradianceProbesTexture's fourth component): per probe (i, j) of a probesU x probesV grid
+// (ReliefProbePoint, j slowest) and light k, the flat wall's irradiance there from the CPU
+// renderer's emitter samples (n x n per emitting triangle) nearest to light k that reach the
+// probe past the scene, over light k's own as a point light (Le A cos_e cos / d^2 from its
+// position, with its normal and intensity: vtkReliefMapper::ConfigureEmitterLight's light). One
+// factor corrects the scene's shadow and the point light's error at once: a light standing for
+// several merged lamps (EstimateEmitterLights' MaxLights) is no point, and the lights times their
+// factors sum to the samples' irradiance at every probe, however the samples are grouped (unless
+// a factor is clamped, or a light's samples reach a probe its point light does not). Luminance
+// weights; clamped to [0, MaxEmitterLightFactor]; 1 where the point light does not light the
+// probe (nothing to correct). Index ((j probesU + i) lights + k).
+std::vector<float> EmitterLightFactors(const LightField& field, const EmbreeScene& scene,
+  const ReliefSurface& surface, const std::vector<EmitterLight>& lights, int probesU, int probesV,
   int samplesPerSide = 4);
 
 // The samples (EmitterSamples, n x n per emitting triangle) nearer to light `light` of `lights`
 // (unit-sphere positions, e.g. EstimateEmitterLights') than to any other: the area that light
-// stands for, as EmitterLightVisibility groups them.
+// stands for, as EmitterLightFactors groups them.
 std::vector<ReliefEmitterSample> EmitterSamplesOfLight(
   const TriangleScene& scene, const std::vector<glm::vec3>& lights, std::size_t light, int n = 4);
 

@@ -495,7 +495,7 @@ vtkSmartPointer<vtkImageData> GroovedTexture(int n, int cell)
 // sees the whole hemisphere there); the lights' visibility is a share; a new depth scale
 // computes the map again but keeps the probes; a new surface gathers them again; a texture
 // without depth is an error that keeps the probes.
-TEST(LightFieldReliefSurface, ReliefOcclusionAddsTheVisibleShareMapAndLightVisibility)
+TEST(LightFieldReliefSurface, ReliefOcclusionAddsTheVisibleShareMapAndLightFactors)
 {
   vtkSmartPointer<vtkVirtualLightField> field = SmallCornellField();
   field->FinalGatherOff();
@@ -526,12 +526,15 @@ TEST(LightFieldReliefSurface, ReliefOcclusionAddsTheVisibleShareMapAndLightVisib
   ASSERT_GE(lights, 1);
   for (vtkIdType p = 0; p < scalars->GetNumberOfTuples(); ++p)
   {
-    const double visible = scalars->GetComponent(p, 3);
-    EXPECT_GE(visible, 0.0);
-    EXPECT_LE(visible, 1.0);
+    // The light's factor (EmitterLightFactors): the scene's shadow times the lamp's irradiance
+    // over its point light's, which differ by a few per cent at most this far from the small
+    // Cornell lamp.
+    const double factor = scalars->GetComponent(p, 3);
+    EXPECT_GE(factor, 0.0);
+    EXPECT_LE(factor, 1.05);
     if (p % 9 >= lights)
     {
-      EXPECT_EQ(visible, 1.0) << "no light k there";
+      EXPECT_EQ(factor, 1.0) << "no light k there";
     }
   }
   vtkDataArray* share =

@@ -1,15 +1,26 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // ReliefSurface (core, no VTK): the texture frame of the plane rule on the published Cornell box
-// (docs/vlf.md gives the back wall's frame in millimetres), the probes' places, and the refusals.
+// (docs/vlf.md gives the back wall's frame in millimetres), the probes' places, and the refusals;
+// the emitter lights' factors at the probes (ReliefOcclusion).
 #include "ReliefSurface.h"
 
+#include "EmbreeScene.h"
+#include "EmitterLights.h"
+#include "EmitterTestFields.h"
 #include "LightField.h"
 #include "PatchComparison.h" // ToWorld
+#include "ReliefOcclusion.h" // EmitterLightFactors
 #include "SurfaceRelief.h"   // SurfacePlaneOf
 #include "WalkthroughTestFields.h"
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <memory>
+#include <vector>
 
 namespace
 {
@@ -173,4 +184,68 @@ TEST(ReliefSurface, TrianglesOfItsOwnOnTheBackWallAreTheBackWall)
     vlf::ReliefSurfaceFromTriangles(field, bent, {}, quad, "patch"), vlf::ReliefSurfaceError);
   EXPECT_THROW(vlf::ReliefSurfaceFromTriangles(field, bent, {}, { { 0, 1, 9 } }, "patch"),
     std::invalid_argument);
+}
+
+// The relief mapper's point lights times their factors (EmitterLightFactors) deliver the lamps'
+// irradiance: twelve 0.2 x 0.2 lamps under a box's ceiling merged to the shader's 8 lights, at
+// 6 x 6 probes of a plane 1.5 below them (the box has nothing in between), against the exact
+// integral over every lamp. The negative case is the merged point lights alone (factor 1, what
+// an unoccluded light got when the factor was the scene's visibility): the merge's error.
+TEST(ReliefSurface, EmitterLightFactorsMakeMergedLightsDeliverTheLampsIrradiance)
+{
+  const std::vector<emittertest::Lamp> lamps = emittertest::TwelveLamps();
+  const std::unique_ptr<vlf::LightField> field = emittertest::BoxWithLamps(lamps);
+  vlf::EmitterLightOptions options;
+  options.MaxLights = 8;
+  const std::vector<vlf::EmitterLight> lights = vlf::EstimateEmitterLights(*field, options).Lights;
+  ASSERT_EQ(lights.size(), 8u);
+  const double scale = field->NormalizationScale();
+  const glm::dvec3 centre(field->NormalizationCentre());
+  vlf::ReliefSurface plane; // world x, z in [-0.9, 0.9] at y = -0.5, facing up
+  plane.Origin = (glm::dvec3(-0.9, -0.5, -0.9) - centre) * scale;
+  plane.AxisU = glm::dvec3(1.8 * scale, 0.0, 0.0);
+  plane.AxisV = glm::dvec3(0.0, 0.0, 1.8 * scale);
+  plane.Normal = glm::dvec3(0.0, 1.0, 0.0);
+  const int n = 6;
+  const EmbreeScene embree(field->Scene());
+  const std::vector<float> factors = vlf::EmitterLightFactors(*field, embree, plane, lights, n, n);
+  ASSERT_EQ(factors.size(), static_cast<std::size_t>(n * n) * lights.size());
+  double worst = 0.0, worstPoints = 0.0;
+  for (int j = 0; j < n; ++j)
+  {
+    for (int i = 0; i < n; ++i)
+    {
+      const glm::dvec3 p(vlf::ReliefProbePoint(plane, i, j, n, n));
+      double exact = 0.0;
+      for (const emittertest::Lamp& l : lamps)
+      {
+        exact += l.Emission.x *
+          emittertest::RectangleIrradiance(glm::vec3(p / scale + centre), glm::vec3(plane.Normal),
+            l.X0, l.X1, l.Z0, l.Z1, emittertest::LampHeight);
+      }
+      // Irradiance is the same in unit-sphere and world units (a solid angle).
+      double delivered = 0.0, points = 0.0;
+      for (std::size_t k = 0; k < lights.size(); ++k)
+      {
+        const glm::dvec3 d = glm::dvec3(lights[k].Position) - p;
+        const double d2 = glm::dot(d, d);
+        const glm::dvec3 l = d / std::sqrt(d2);
+        const double point = lights[k].Intensity().x *
+          std::max(0.0, -glm::dot(glm::dvec3(lights[k].Normal), l)) *
+          std::max(0.0, glm::dot(plane.Normal, l)) / d2;
+        const float factor = factors[(static_cast<std::size_t>(j) * n + i) * lights.size() + k];
+        EXPECT_GE(factor, 0.0f);
+        EXPECT_LE(factor, vlf::MaxEmitterLightFactor);
+        delivered += factor * point;
+        points += point;
+      }
+      worst = std::max(worst, std::abs(delivered - exact) / exact);
+      worstPoints = std::max(worstPoints, std::abs(points - exact) / exact);
+    }
+  }
+  std::cout << "[ figures  ] twelve lamps as 8 lights at " << n * n
+            << " probes: worst irradiance error with the factors " << 100.0 * worst
+            << "%, the point lights alone " << 100.0 * worstPoints << "%\n";
+  EXPECT_LT(worst, 0.01);
+  EXPECT_GT(worstPoints, 4.0 * worst);
 }
