@@ -107,9 +107,9 @@ public:
   int GetVisibleShareMaps();
 
   /**
-   * The last visible-share map as this rank holds it: its values (three per cell, row-major,
-   * vtkIrradianceProbesTexture's visible-share array) after its width and height, empty without
-   * a map; the ranks it was split over (1: computed whole); the seconds it took and the
+   * The last visible-share map as this rank holds it: its values (three or four per cell,
+   * row-major, vtkIrradianceProbesTexture's visible-share array) after its width and height, empty
+   * without a map; the ranks it was split over (1: computed whole); the seconds it took and the
    * processor seconds this process spent on it. What tests compare between one and several
    * ranks, and benchmarks time.
    */

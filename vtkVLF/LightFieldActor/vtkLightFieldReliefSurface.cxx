@@ -695,6 +695,13 @@ int vtkLightFieldReliefSurface::RequestSurfaceData(
         result.Factors.resize(static_cast<std::size_t>(n) * n * (lights / 9));
         controller->Broadcast(
           result.Factors.data(), static_cast<vtkIdType>(result.Factors.size()), root);
+        vtkIdType samples = static_cast<vtkIdType>(result.LightSamples.size());
+        controller->Broadcast(&samples, 1, root);
+        result.LightSamples.resize(static_cast<std::size_t>(samples));
+        if (samples > 0)
+        {
+          controller->Broadcast(result.LightSamples.data(), samples, root);
+        }
       }
     }
   }
@@ -716,7 +723,9 @@ int vtkLightFieldReliefSurface::RequestSurfaceData(
 
   FillProbesImage(probesOutput, result.Probes, n, this->SceneOcclusion ? &result.Factors : nullptr,
     result.Lights.size() / 9);
-  in.LightSamples.clear(); // not on every rank's field: the mapper marches the lights' shadows
+  // Light 0's area shadow in the map, as for a named surface (every rank has the samples: its own
+  // or the computing rank's).
+  in.LightSamples = UnpackEmitterSamples(result.LightSamples);
   if (!this->AddVisibleShare(probesOutput, result.Frame, ranks > 1 ? controller : nullptr))
   {
     probesOutput->Initialize();

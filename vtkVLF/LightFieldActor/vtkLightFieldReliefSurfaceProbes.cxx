@@ -242,8 +242,45 @@ SurfaceResult ComputeSurface(const vlf::LightField& field, vtkPolyData* whole, i
   if (sceneOcclusion)
   {
     result.Factors = LightFactors(field, surface, emitters, n);
+    std::vector<glm::vec3> lights;
+    for (const vlf::EmitterLight& light : emitters)
+    {
+      lights.push_back(light.Position);
+    }
+    if (!lights.empty())
+    {
+      result.LightSamples =
+        PackEmitterSamples(vlf::EmitterSamplesOfLight(field.Scene(), lights, 0));
+    }
   }
   return result;
+}
+
+std::vector<double> PackEmitterSamples(const std::vector<ReliefEmitterSample>& samples)
+{
+  std::vector<double> packed;
+  packed.reserve(9 * samples.size());
+  for (const ReliefEmitterSample& sample : samples)
+  {
+    for (const glm::dvec3& v : { sample.Position, sample.Normal, sample.RadianceArea })
+    {
+      packed.insert(packed.end(), { v.x, v.y, v.z });
+    }
+  }
+  return packed;
+}
+
+std::vector<ReliefEmitterSample> UnpackEmitterSamples(const std::vector<double>& packed)
+{
+  std::vector<ReliefEmitterSample> samples(packed.size() / 9);
+  for (std::size_t s = 0; s < samples.size(); ++s)
+  {
+    const double* p = &packed[9 * s];
+    samples[s].Position = glm::dvec3(p[0], p[1], p[2]);
+    samples[s].Normal = glm::dvec3(p[3], p[4], p[5]);
+    samples[s].RadianceArea = glm::dvec3(p[6], p[7], p[8]);
+  }
+  return samples;
 }
 } // namespace reliefsurface
 } // namespace vlf

@@ -1,14 +1,15 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // vtkLightFieldReliefSurface's conversions between the light field's cores and VTK data: the
-// field's emitters as VTK lights, the probe image of port 1, the scene's visibility of the
-// emitters, the relief texture as a height field, and what one rank computes for a surface of
-// polydata. Defined in vtkLightFieldReliefSurfaceProbes.cxx (comments there); not installed.
+// field's emitters as VTK lights, the probe image of port 1, the emitter lights' factors, the
+// relief texture as a height field, and what one rank computes for a surface of polydata. Defined
+// in vtkLightFieldReliefSurfaceProbes.cxx (comments there); not installed.
 #ifndef vtkLightFieldReliefSurfaceProbes_h
 #define vtkLightFieldReliefSurfaceProbes_h
 
 #include "EnvironmentMaps.h"   // SH9
 #include "HeightFieldTracer.h" // HeightField
 #include "Progress.h"          // ProgressCallback
+#include "ReliefShading.h"     // ReliefEmitterSample
 
 #include <cstddef>
 #include <vector>
@@ -69,7 +70,15 @@ struct SurfaceResult
   std::vector<double> Lights;
   std::vector<float>
     Factors; // per probe and light (SceneOcclusion, EmitterLightFactors), else empty
+  // The emitter samples light 0 stands for (EmitterSamplesOfLight; SceneOcclusion, else empty),
+  // unit sphere, packed 9 numbers a sample (position, normal, radiance x area): the relief's
+  // shadow of that light's area goes into the visible-share map on every rank.
+  std::vector<double> LightSamples;
 };
+
+// Emitter samples packed 9 numbers a sample (SurfaceResult::LightSamples) and back.
+std::vector<double> PackEmitterSamples(const std::vector<ReliefEmitterSample>& samples);
+std::vector<ReliefEmitterSample> UnpackEmitterSamples(const std::vector<double>& packed);
 
 SurfaceResult ComputeSurface(const LightField& field, vtkPolyData* whole, int n,
   bool sceneOcclusion, const ProgressCallback& progress);

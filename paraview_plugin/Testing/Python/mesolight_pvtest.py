@@ -183,11 +183,12 @@ MAP_TOLERANCE = 1e-6
 
 def visible_share_map(display):
     """A Relief Surface's visible-share map as the first rank holds it (LightFieldVisibleShare):
-    height x width x 3 float32 values, and the ranks its rows were split over."""
+    height x width x C float32 values (C = 3, or 4 with light 0's area shadow), and the ranks its
+    rows were split over."""
     display.UpdatePropertyInformation()
     values = np.asarray(display.GetPropertyValue("LightFieldVisibleShare"), dtype=np.float64)
     width, height = int(values[0]), int(values[1])
-    share = values[2:].astype(np.float32).reshape(height, width, 3)
+    share = values[2:].astype(np.float32).reshape(height, width, -1)
     return share, display.GetPropertyValue("LightFieldVisibleShareRanks")
 
 

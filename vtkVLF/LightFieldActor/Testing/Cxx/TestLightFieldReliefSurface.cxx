@@ -546,6 +546,19 @@ TEST(LightFieldReliefSurface, ReliefOcclusionAddsTheVisibleShareMapAndLightFacto
   ASSERT_EQ(size->GetComponent(0, 0), n);
   ASSERT_EQ(size->GetComponent(1, 0), n);
   ASSERT_EQ(share->GetNumberOfTuples(), n * n);
+  // A fourth value: the relief's shadow of light 0's area (ReliefEmitterShadowMap over the
+  // emitter samples it stands for), as a named surface's map has it; the Cornell lamp above and
+  // in front of the back wall reaches into part of the grooves only.
+  ASSERT_EQ(share->GetNumberOfComponents(), 4);
+  double lowestLight = 1.0;
+  for (vtkIdType t = 0; t < share->GetNumberOfTuples(); ++t)
+  {
+    EXPECT_GE(share->GetComponent(t, 3), 0.0);
+    EXPECT_LE(share->GetComponent(t, 3), 1.0);
+    lowestLight = std::min(lowestLight, share->GetComponent(t, 3));
+  }
+  std::cout << "light 0's share past the relief's shadow: lowest " << lowestLight << "\n";
+  EXPECT_LT(lowestLight, 0.9);
   double groove = 0.0, middle = 0.0;
   int grooves = 0, middles = 0;
   for (int j = 1; j < n - 1; ++j)
