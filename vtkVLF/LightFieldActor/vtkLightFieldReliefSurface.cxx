@@ -465,8 +465,8 @@ int vtkLightFieldReliefSurface::RequestData(
   output->GetPointData()->SetNormals(normals);
   output->GetPointData()->SetTCoords(tcoords);
 
-  // Port 1: the probes, pixel (9 i + k, j), with the scene's occlusion of the emitter lights and
-  // the relief's visible share when asked for.
+  // Port 1: the probes, pixel (9 i + k, j), with the emitter lights' factors and the relief's
+  // visible share when asked for.
   std::vector<float> factors;
   const std::vector<vlf::EmitterLight> emitters = ReliefEmitterLights(*field, &surface);
   this->Internals->LightSamples.clear();
@@ -474,17 +474,7 @@ int vtkLightFieldReliefSurface::RequestData(
   {
     factors = LightFactors(*field, surface, emitters, n,
       this->Internals->LentFor == field ? this->Internals->LentEmbree.get() : nullptr);
-    // The relief's own shadow of the first emitter light's area, in the visible-share map: a
-    // point light's hard shadow is not the emitter's penumbra (ReliefEmitterShadowMap).
-    std::vector<glm::vec3> lights;
-    for (const vlf::EmitterLight& light : emitters)
-    {
-      lights.push_back(light.Position);
-    }
-    if (!lights.empty())
-    {
-      this->Internals->LightSamples = vlf::EmitterSamplesOfLight(field->Scene(), lights, 0);
-    }
+    this->Internals->LightSamples = FirstLightSamples(*field, emitters);
   }
   FillProbesImage(probesOutput, PackProbes(probes, n), n, this->SceneOcclusion ? &factors : nullptr,
     emitters.size());

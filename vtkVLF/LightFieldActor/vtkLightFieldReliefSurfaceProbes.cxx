@@ -242,18 +242,23 @@ SurfaceResult ComputeSurface(const vlf::LightField& field, vtkPolyData* whole, i
   if (sceneOcclusion)
   {
     result.Factors = LightFactors(field, surface, emitters, n);
-    std::vector<glm::vec3> lights;
-    for (const vlf::EmitterLight& light : emitters)
-    {
-      lights.push_back(light.Position);
-    }
-    if (!lights.empty())
-    {
-      result.LightSamples =
-        PackEmitterSamples(vlf::EmitterSamplesOfLight(field.Scene(), lights, 0));
-    }
+    result.LightSamples = PackEmitterSamples(FirstLightSamples(field, emitters));
   }
   return result;
+}
+
+// The relief's own shadow of the first emitter light's area goes into the visible-share map: a
+// point light's hard shadow is not the emitter's penumbra (ReliefEmitterShadowMap).
+std::vector<ReliefEmitterSample> FirstLightSamples(
+  const vlf::LightField& field, const std::vector<vlf::EmitterLight>& emitters)
+{
+  std::vector<glm::vec3> lights;
+  for (const vlf::EmitterLight& light : emitters)
+  {
+    lights.push_back(light.Position);
+  }
+  return lights.empty() ? std::vector<ReliefEmitterSample>()
+                        : vlf::EmitterSamplesOfLight(field.Scene(), lights, 0);
 }
 
 std::vector<double> PackEmitterSamples(const std::vector<ReliefEmitterSample>& samples)

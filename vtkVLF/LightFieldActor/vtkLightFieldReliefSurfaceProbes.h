@@ -76,6 +76,11 @@ struct SurfaceResult
   std::vector<double> LightSamples;
 };
 
+// The emitter samples the first of those lights stands for (EmitterSamplesOfLight), whose shadow
+// by the relief the visible-share map holds; empty without lights.
+std::vector<ReliefEmitterSample> FirstLightSamples(
+  const LightField& field, const std::vector<EmitterLight>& emitters);
+
 // Emitter samples packed 9 numbers a sample (SurfaceResult::LightSamples) and back.
 std::vector<double> PackEmitterSamples(const std::vector<ReliefEmitterSample>& samples);
 std::vector<ReliefEmitterSample> UnpackEmitterSamples(const std::vector<double>& packed);
