@@ -489,10 +489,11 @@ vtkSmartPointer<vtkImageData> GroovedTexture(int n, int cell)
 }
 } // namespace
 
-// The relief's visible-share map and the scene's visibility of the emitter lights (what the
-// walkthrough's relief adds to its probes, vtkIrradianceProbesTexture): the map is low in the
-// grooves and 1 on the plateaus' middles (the exact intersector: a plateau 0.9 above its grooves
-// sees the whole hemisphere there); the lights' visibility is a share; a new depth scale
+// The relief's visible-share map and the emitter lights' factors (what the walkthrough's relief
+// adds to its probes, vtkIrradianceProbesTexture): the map is low in the grooves and 1 on the
+// plateaus' middles (the exact intersector: a plateau 0.9 above its grooves sees the whole
+// hemisphere there) and holds light 0's area shadow; the one lamp's factors stay near or below
+// 1 (its area and its point differ by a few per cent this far away); a new depth scale
 // computes the map again but keeps the probes; a new surface gathers them again; a texture
 // without depth is an error that keeps the probes.
 TEST(LightFieldReliefSurface, ReliefOcclusionAddsTheVisibleShareMapAndLightFactors)
