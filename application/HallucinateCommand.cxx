@@ -605,14 +605,14 @@ int RunHallucinationBenchmark(const std::vector<std::string>& args)
     std::vector<float> brightness(depth.size()), darkIsDeep(depth.size()), ratio(depth.size());
     for (std::size_t p = 0; p < depth.size(); ++p)
     {
-      const float t = RgbLuminance(&shots.TrueAlbedo.Rgb[3 * p]);
-      albedoError += std::abs(RgbLuminance(&result.Albedo.Rgb[3 * p]) - t) / t;
-      brightness[p] = -RgbLuminance(&shots.Diffuse.Rgb[3 * p]);
+      const float t = Luminance(&shots.TrueAlbedo.Rgb[3 * p]);
+      albedoError += std::abs(Luminance(&result.Albedo.Rgb[3 * p]) - t) / t;
+      brightness[p] = -Luminance(&shots.Diffuse.Rgb[3 * p]);
       darkIsDeep[p] = -result.Shading[p];
       // The diffuse/flash ratio: the albedo divides out, dark is deep, no scales.
-      const float flashLuminance = RgbLuminance(&shots.Flash.Rgb[3 * p]);
+      const float flashLuminance = Luminance(&shots.Flash.Rgb[3 * p]);
       ratio[p] =
-        flashLuminance > 0.0f ? -RgbLuminance(&shots.Diffuse.Rgb[3 * p]) / flashLuminance : 0.0f;
+        flashLuminance > 0.0f ? -Luminance(&shots.Diffuse.Rgb[3 * p]) / flashLuminance : 0.0f;
     }
     albedoError = fromPhotos.empty() ? albedoError / static_cast<double>(depth.size())
                                      : std::numeric_limits<double>::quiet_NaN();

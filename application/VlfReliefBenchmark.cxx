@@ -12,6 +12,7 @@
 #include "EmbreeScene.h"
 #include "LightField.h"
 #include "Lookup.h"
+#include "Luminance.h"
 #include "MathConstants.h"
 #include "ParallelFor.h"
 #include "PatchComparison.h" // ToUnit
@@ -34,11 +35,6 @@ namespace mesolight
 {
 namespace
 {
-double Luminance(const float* rgb)
-{
-  return 0.2126 * rgb[0] + 0.7152 * rgb[1] + 0.0722 * rgb[2];
-}
-
 struct Row
 {
   std::string Name;
@@ -339,8 +335,10 @@ MaskedError MaskedRelativeError(const RgbImage& image, const RgbImage& reference
       {
         continue;
       }
-      const double yRef = Luminance(reference.Pixel(i, j));
-      const double y = Luminance(image.Pixel(i, j));
+      const float* ref = reference.Pixel(i, j);
+      const float* rgb = image.Pixel(i, j);
+      const double yRef = Luminance<double>(ref[0], ref[1], ref[2]);
+      const double y = Luminance<double>(rgb[0], rgb[1], rgb[2]);
       if (!(yRef > floor) || !std::isfinite(y))
       {
         continue;

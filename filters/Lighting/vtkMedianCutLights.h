@@ -18,7 +18,7 @@
  * left to right, v in [0,1] with v = 0 at the TOP row, so row j has v = 1 - (j + 0.5) / H;
  * +Z up, polar angle theta = pi v, azimuth phi = 2 pi u from +X toward +Y,
  * d = (sin theta cos phi, sin theta sin phi, cos theta); luminance
- * Y = 0.2125 R + 0.7154 G + 0.0721 B.
+ * Y = 0.2126 R + 0.7152 G + 0.0722 B (Rec. 709).
  *
  * Output port 0, vtkPolyData: one vertex per light at its unit direction (the light is at
  * infinity in that direction), sorted by decreasing energy, with point data

@@ -4,6 +4,7 @@
 #include "vtkUnitScale.h"
 #include "vtkWholeExtentRequest.h"
 
+#include "Luminance.h"
 #include "MemoryBudget.h"
 #include "RasterCells.h"
 #include "ScalarConversion.h"
@@ -55,8 +56,7 @@ void ToUnitDepth(const T* data, vtkIdType n, int nComp, bool stored, double* out
         const T* t = data + k * nComp;
         if (nComp >= 3)
         {
-          // Rec. 709 luminance, as in vtkImageLuminance.
-          out[k] = 0.2125 * value(t[0]) + 0.7154 * value(t[1]) + 0.0721 * value(t[2]);
+          out[k] = mesolight::Luminance<double>(value(t[0]), value(t[1]), value(t[2]));
         }
         else
         {

@@ -20,12 +20,13 @@
  * others, as the lowest ground. An input that names its own no-data value (field data
  * "MesolightNoDataValue", which vtkOIIOImageReader sets from a GeoTIFF's GDAL_NODATA tag) gets the
  * same by default (UseInputNoDataValue). Images with 3 or 4 components are converted to luminance
- * 0.2125 R + 0.7154 G + 0.0721 B; with 2 components the first one is used. The input array is
- * selected with SetInputArrayToProcess() and defaults to the point scalars, else the cell
- * scalars. Pixels given as cells (GDAL Raster Reader's output: a grid one point larger than the
- * raster) are read at the cells' corners: each texel is the mean of the cells around it that
- * have data (hidden cells, GDAL's no-data ones, have none under UseInputNoDataValue), as Cell
- * Data to Point Data averages them but without the holes; the output keeps the input's points.
+ * 0.2126 R + 0.7152 G + 0.0722 B (Rec. 709, common/Luminance.h); with 2 components the first one is
+ * used. The input array is selected with SetInputArrayToProcess() and defaults to the point
+ * scalars, else the cell scalars. Pixels given as cells (GDAL Raster Reader's output: a grid one
+ * point larger than the raster) are read at the cells' corners: each texel is the mean of the cells
+ * around it that have data (hidden cells, GDAL's no-data ones, have none under
+ * UseInputNoDataValue), as Cell Data to Point Data averages them but without the holes; the output
+ * keeps the input's points.
  *
  * Errors (no output is produced): no input, an empty or non-2D image, NaN or infinite
  * values (other than no data), depths outside [0,1] or signed integers without NormalizeRange, no

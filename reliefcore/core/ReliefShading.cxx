@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "ReliefShading.h"
 
+#include "Luminance.h"
 #include "ParallelFor.h"
 
 #include <glm/common.hpp>
@@ -216,8 +217,8 @@ void EmitterShadowAt(const HeightField& hf, const ReliefFrame& frame,
     {
       continue;
     }
-    const double weight = cosine * cosineEmitter / r2 *
-      (0.2126 * e.RadianceArea.x + 0.7152 * e.RadianceArea.y + 0.0722 * e.RadianceArea.z);
+    const double weight =
+      cosine * cosineEmitter / r2 * Luminance(e.RadianceArea.x, e.RadianceArea.y, e.RadianceArea.z);
     all[static_cast<std::size_t>(g)] += weight;
     if (Visible(hf, hit, frame.ToTexture(l), 1e-6))
     {
@@ -241,7 +242,7 @@ double RadianceVisibleShare(const ReliefLighting& lighting, const HeightField& h
   {
     const glm::dvec3 w = local(c);
     const glm::dvec3 l = ProbeRadiance(lighting, hit.x, hit.y, w);
-    const double weight = 0.2126 * l.x + 0.7152 * l.y + 0.0722 * l.z + 1e-12;
+    const double weight = Luminance(l.x, l.y, l.z) + 1e-12;
     all += weight;
     visible += LeavesRelief(hf, frame, hit, w) ? weight : 0.0;
   }
@@ -577,7 +578,7 @@ std::optional<ReliefShade> ShadeReliefRay(const HeightField& hf, const ReliefFra
     {
       const glm::dvec3 w = local(c);
       const glm::dvec3 l = ProbeRadiance(lighting, u, v, w);
-      const double weight = 0.2126 * l.x + 0.7152 * l.y + 0.0722 * l.z + 1e-12;
+      const double weight = Luminance(l.x, l.y, l.z) + 1e-12;
       all += weight;
       if (LeavesRelief(hf, frame, hit->point, w))
       {

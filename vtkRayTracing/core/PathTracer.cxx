@@ -2,6 +2,7 @@
 #include "PathTracer.h"
 
 #include "EnvironmentMaps.h" // the lat-long lookup (MapUVFromDirection)
+#include "Luminance.h"
 #include "MathConstants.h"
 #include "OrthonormalBasis.h"
 
@@ -18,11 +19,6 @@ namespace mesolight
 
 namespace
 {
-
-float Luminance(const glm::vec3& c)
-{
-  return 0.2125f * c.x + 0.7154f * c.y + 0.0721f * c.z;
-}
 
 float MaxComponent(const glm::vec3& c)
 {
@@ -139,7 +135,8 @@ PathTracer::PathTracer(const EmbreeScene& scene, const PathTracerSettings& setti
     if (Positive(emission))
     {
       this->Emitters.push_back(static_cast<std::uint32_t>(t));
-      power.push_back(0.5f * length * std::max(Luminance(emission), 1e-6f));
+      power.push_back(
+        0.5f * length * std::max(Luminance(emission.x, emission.y, emission.z), 1e-6f));
     }
   }
   // Emitters are chosen in proportion to their power; EmitterProbability holds the area pdf
@@ -240,8 +237,8 @@ bool PathTracer::Scatter(
   const SceneMaterial& material = this->Scene.MaterialOf(point.Triangle);
   const glm::vec3 kd = material.Diffuse;
   const glm::vec3 ks = diffuseOnly ? glm::vec3(0.0f) : material.Specular;
-  const float diffuseWeight = std::max(0.0f, Luminance(kd));
-  const float specularWeight = std::max(0.0f, Luminance(ks));
+  const float diffuseWeight = std::max(0.0f, Luminance(kd.x, kd.y, kd.z));
+  const float specularWeight = std::max(0.0f, Luminance(ks.x, ks.y, ks.z));
   if (!(diffuseWeight + specularWeight > 0.0f) || state.Depth >= this->Parameters.MaxDepth)
   {
     return false;

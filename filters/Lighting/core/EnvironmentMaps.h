@@ -18,7 +18,8 @@
  *    toward +X and increasing toward +Y: d = (sin theta cos phi, sin theta sin phi, cos theta).
  *  - Pixel solid angle: the exact band integral (2 pi / W) (cos theta0 - cos theta1) over the
  *    pixel's polar range [theta0, theta1]; the W H pixels sum to 4 pi.
- *  - Luminance Y = 0.2125 R + 0.7154 G + 0.0721 B (the thesis' eq. 11).
+ *  - Luminance Y = 0.2126 R + 0.7152 G + 0.0722 B (common/Luminance.h; the thesis' eq. 11 prints
+ *    them rounded as 0.2125, 0.7154, 0.0721).
  *  - RGB values are radiance; an irradiance is sum L max(0, n.d) dOmega.
  */
 #ifndef mesolight_EnvironmentMaps_h
@@ -26,6 +27,7 @@
 
 #include "MesolightLightingModule.h" // for the export macro only
 
+#include "Luminance.h" // Y of the energy the cuts balance
 #include "MathConstants.h"
 #include "RgbImage.h"
 
@@ -35,12 +37,6 @@
 
 namespace mesolight
 {
-
-/// Luminance Y = 0.2125 R + 0.7154 G + 0.0721 B.
-inline double Luminance(double r, double g, double b)
-{
-  return 0.2125 * r + 0.7154 * g + 0.0721 * b;
-}
 
 /// Unit direction of map coordinates (u, v) (v = 0 top = zenith).
 MESOLIGHTLIGHTING_EXPORT void DirectionFromMapUV(double u, double v, double d[3]);

@@ -8,7 +8,7 @@
  * v = 0 at the top row, +Z up, theta = pi v, phi = 2 pi u from +X toward +Y).
  *
  * Algorithm:
- *  1. Energy per pixel e = Y(max(0, RGB)) dOmega, Y = 0.2125 R + 0.7154 G + 0.0721 B and
+ *  1. Energy per pixel e = Y(max(0, RGB)) dOmega, Y = 0.2126 R + 0.7152 G + 0.0722 B and
  *     dOmega the exact pixel solid angle. Summed-area tables are DOUBLE precision (float
  *     SATs over HDR maps lose the small regions' energy).
  *  2. Start with the whole map as one region; repeatedly take the region with the most

@@ -538,7 +538,7 @@ HallucinationResult HallucinateDepth(const RgbImage& diffuse, const RgbImage& fl
     std::size_t negative = 0;
     for (std::size_t p = 0; p < n; ++p)
     {
-      negative += RgbLuminance(&image.Rgb[3 * p]) < 0.0f ? 1 : 0;
+      negative += Luminance(&image.Rgb[3 * p]) < 0.0f ? 1 : 0;
     }
     return static_cast<double>(negative) / static_cast<double>(n);
   };
@@ -567,8 +567,8 @@ HallucinationResult HallucinateDepth(const RgbImage& diffuse, const RgbImage& fl
   double flashOnly = 0.0, diffuseMean = 0.0;
   for (std::size_t p = 0; p < n; ++p)
   {
-    flashOnly += RgbLuminance(&flash.Rgb[3 * p]) - RgbLuminance(&diffuse.Rgb[3 * p]);
-    diffuseMean += RgbLuminance(&diffuse.Rgb[3 * p]);
+    flashOnly += Luminance(&flash.Rgb[3 * p]) - Luminance(&diffuse.Rgb[3 * p]);
+    diffuseMean += Luminance(&diffuse.Rgb[3 * p]);
   }
   flashOnly /= static_cast<double>(n);
   diffuseMean /= static_cast<double>(n);
@@ -585,7 +585,7 @@ HallucinationResult HallucinateDepth(const RgbImage& diffuse, const RgbImage& fl
   std::size_t darker = 0;
   for (std::size_t p = 0; p < n; ++p)
   {
-    const double difference = RgbLuminance(&flash.Rgb[3 * p]) - RgbLuminance(&diffuse.Rgb[3 * p]);
+    const double difference = Luminance(&flash.Rgb[3 * p]) - Luminance(&diffuse.Rgb[3 * p]);
     if (difference < -settings.DarkerTolerance * flashOnly)
     {
       ++darker;
@@ -618,7 +618,7 @@ HallucinationResult HallucinateDepth(const RgbImage& diffuse, const RgbImage& fl
     std::vector<float> cardLuminance(n);
     for (std::size_t p = 0; p < n; ++p)
     {
-      cardLuminance[p] = RgbLuminance(&calibration->Rgb[3 * p]);
+      cardLuminance[p] = Luminance(&calibration->Rgb[3 * p]);
     }
     const float bright = Percentile(cardLuminance, 0.995);
     cardFloor = 0.02f * (bright > 0.0f ? bright : calibrationMax);
@@ -650,7 +650,7 @@ HallucinationResult HallucinateDepth(const RgbImage& diffuse, const RgbImage& fl
   std::vector<float> albedoLuminance(n);
   for (std::size_t p = 0; p < n; ++p)
   {
-    albedoLuminance[p] = RgbLuminance(&result.Albedo.Rgb[3 * p]);
+    albedoLuminance[p] = Luminance(&result.Albedo.Rgb[3 * p]);
   }
   const float albedoFloor = 1e-3f * Percentile(albedoLuminance, 0.995);
   result.Shading.assign(n, -1.0f);
@@ -660,7 +660,7 @@ HallucinationResult HallucinateDepth(const RgbImage& diffuse, const RgbImage& fl
   {
     if (albedoLuminance[p] > albedoFloor)
     {
-      result.Shading[p] = std::max(0.0f, RgbLuminance(&diffuse.Rgb[3 * p])) / albedoLuminance[p];
+      result.Shading[p] = std::max(0.0f, Luminance(&diffuse.Rgb[3 * p])) / albedoLuminance[p];
       valid.push_back(result.Shading[p]);
     }
   }
@@ -679,7 +679,7 @@ HallucinationResult HallucinateDepth(const RgbImage& diffuse, const RgbImage& fl
   float ratioMax = 0.0f;
   for (std::size_t p = 0; p < n; ++p)
   {
-    const float d = std::max(0.0f, RgbLuminance(&diffuse.Rgb[3 * p]));
+    const float d = std::max(0.0f, Luminance(&diffuse.Rgb[3 * p]));
     const float total = d + albedoLuminance[p];
     result.Ratio[p] = total > 0.0f ? d / total : 1.0f;
     ratioMax = std::max(ratioMax, result.Ratio[p]);

@@ -71,6 +71,7 @@
 
 #include "MesolightReliefTexturesModule.h" // for the export macro only
 
+#include "Luminance.h"
 #include "Progress.h"
 #include "RgbImage.h"
 
@@ -234,12 +235,6 @@ MESOLIGHTRELIEFTEXTURES_EXPORT HallucinationFeatureScale MeasureHallucinationFea
 /// The layer count of the scale average (Layers 0): every octave whose sigma leaves an interior
 /// 2 sigma from the border of a w x h photograph, 1..12.
 MESOLIGHTRELIEFTEXTURES_EXPORT int HallucinationAverageLayers(int w, int h, float baseSigma = 1.0f);
-
-/// Rec. 709 luminance of a linear RGB pixel.
-inline float RgbLuminance(const float* rgb)
-{
-  return 0.2126f * rgb[0] + 0.7152f * rgb[1] + 0.0722f * rgb[2];
-}
 
 /**
  * The whole filter: albedo, shading and depth. `calibration` may be null (a uniform flash).

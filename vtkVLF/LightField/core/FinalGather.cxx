@@ -2,6 +2,7 @@
 #include "FinalGather.h"
 
 #include "Distribution.h"
+#include "Luminance.h"
 
 #include "MathConstants.h"
 #include "OrthonormalBasis.h"
@@ -58,18 +59,13 @@ struct Emitters
   }
 };
 
-float Luminance(const glm::vec3& c)
-{
-  return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z;
-}
-
 Emitters CollectEmitters(const TriangleScene& scene)
 {
   Emitters e;
   for (std::size_t t = 0; t < scene.TriangleCount(); ++t)
   {
     const SceneMaterial& m = scene.MaterialOf(t);
-    const float power = Luminance(m.Emission);
+    const float power = Luminance(m.Emission.x, m.Emission.y, m.Emission.z);
     const glm::vec3 n = scene.FaceNormal(t);
     const float twiceArea = glm::length(n);
     if (!(power > 0.0f) || !(twiceArea > 0.0f))

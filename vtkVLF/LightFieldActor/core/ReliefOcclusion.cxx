@@ -5,6 +5,7 @@
 #include "EmbreeScene.h"
 #include "EmitterLights.h" // EmitterLight
 #include "LightField.h"
+#include "Luminance.h"
 #include "ReliefSurface.h"
 #include "TriangleScene.h"
 
@@ -102,8 +103,7 @@ std::vector<float> EmitterLightFactors(const LightField& field, const EmbreeScen
   {
     return factors;
   }
-  const auto luminance = [](const glm::dvec3& c)
-  { return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z; };
+  const auto luminance = [](const glm::dvec3& c) { return Luminance(c.x, c.y, c.z); };
   const std::vector<ReliefEmitterSample> samples =
     EmitterSamples(field.Scene(), std::max(1, samplesPerSide));
   std::vector<glm::vec3> positions;

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "WalkthroughImage.h"
 
+#include "Luminance.h"
+
 #include <glm/common.hpp>
 
 #include <algorithm>
@@ -76,7 +78,7 @@ double LogAverageLuminance(const float* rgba, std::size_t texels)
   for (std::size_t i = 0; i < texels; ++i)
   {
     const float* p = rgba + 4 * i;
-    const double y = 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2];
+    const double y = Luminance<double>(p[0], p[1], p[2]);
     if (y > 0.0 && std::isfinite(y))
     {
       sum += std::log(y);

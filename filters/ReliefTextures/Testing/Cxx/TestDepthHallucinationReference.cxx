@@ -133,7 +133,7 @@ std::vector<float> InvertedBrightness(const RgbImage& image)
   std::vector<float> d(static_cast<std::size_t>(image.Width) * image.Height);
   for (std::size_t p = 0; p < d.size(); ++p)
   {
-    d[p] = -RgbLuminance(&image.Rgb[3 * p]);
+    d[p] = -Luminance(&image.Rgb[3 * p]);
   }
   return d;
 }
@@ -246,13 +246,13 @@ TEST_P(HallucinationReference, AlbedoAgainstTruth)
     const std::size_t n = c.TrueDepth.size();
     for (std::size_t p = 0; p < n; ++p)
     {
-      const float truth = RgbLuminance(&c.Photos.TrueAlbedo.Rgb[3 * p]);
+      const float truth = Luminance(&c.Photos.TrueAlbedo.Rgb[3 * p]);
       relative += std::abs(estimate(p) - truth) / truth;
     }
     return relative / static_cast<double>(n);
   };
   const double flashPair =
-    error([&](std::size_t p) { return RgbLuminance(&c.Result.Albedo.Rgb[3 * p]); });
+    error([&](std::size_t p) { return Luminance(&c.Result.Albedo.Rgb[3 * p]); });
   std::cout << "hallucination " << expected.Map << " albedo mean relative error " << flashPair
             << "\n";
   // Measured: Bricks 0.167 (deep mortar joints), Stone 0.047, HemisphereTorus 0.028, terrain
@@ -261,10 +261,8 @@ TEST_P(HallucinationReference, AlbedoAgainstTruth)
   EXPECT_LE(flashPair, threshold);
   // Negative: the flash photograph over the card without removing the overcast light in it.
   const double flashOnly = error(
-    [&](std::size_t p)
-    {
-      return RgbLuminance(&c.Photos.Flash.Rgb[3 * p]) /
-        RgbLuminance(&c.Photos.Calibration.Rgb[3 * p]);
+    [&](std::size_t p) {
+      return Luminance(&c.Photos.Flash.Rgb[3 * p]) / Luminance(&c.Photos.Calibration.Rgb[3 * p]);
     });
   std::cout << "hallucination " << expected.Map << " albedo without subtracting I_d " << flashOnly
             << "\n";
@@ -356,8 +354,8 @@ Baselines BestBaseline(const Surface& s)
   std::vector<float> ratio(s.Depth.size());
   for (std::size_t p = 0; p < ratio.size(); ++p)
   {
-    ratio[p] = -RgbLuminance(&s.Photos.Diffuse.Rgb[3 * p]) /
-      std::max(1e-6f, RgbLuminance(&s.Photos.Flash.Rgb[3 * p]));
+    ratio[p] = -Luminance(&s.Photos.Diffuse.Rgb[3 * p]) /
+      std::max(1e-6f, Luminance(&s.Photos.Flash.Rgb[3 * p]));
   }
   const double brightness = Correlation(s, InvertedBrightness(s.Photos.Diffuse));
   const double flashRatio = Correlation(s, ratio);
@@ -495,8 +493,8 @@ TEST(HallucinationRatioModel, BeatsThePreviousModelOnBricks)
   std::vector<float> ratio(truth.size());
   for (std::size_t p = 0; p < ratio.size(); ++p)
   {
-    ratio[p] = -RgbLuminance(&c.Photos.Diffuse.Rgb[3 * p]) /
-      std::max(1e-6f, RgbLuminance(&c.Photos.Flash.Rgb[3 * p]));
+    ratio[p] = -Luminance(&c.Photos.Diffuse.Rgb[3 * p]) /
+      std::max(1e-6f, Luminance(&c.Photos.Flash.Rgb[3 * p]));
   }
   const double flashRatio = CompareDepth(ratio, truth, Size, Size, Margin).Correlation;
   const double brightness =

@@ -103,10 +103,10 @@ TEST(vtkReliefTextureFilter, IntegerInputsAreNormalised)
   EXPECT_FLOAT_EQ(Relief(filter)->GetComponent(0, 3), 0.f);
   EXPECT_FLOAT_EQ(Relief(filter)->GetComponent(1, 3), 1.f);
 
-  // RGB: luminance 0.2125 R + 0.7154 G + 0.0721 B; 2 components: the first one.
+  // RGB: luminance 0.2126 R + 0.7152 G + 0.0722 B; 2 components: the first one.
   filter->SetInputData(MakeImage<vtkUnsignedCharArray>(1, 1, 3, { 255, 0, 0 }));
   filter->Update();
-  EXPECT_NEAR(Relief(filter)->GetComponent(0, 3), 0.2125, 1e-6);
+  EXPECT_NEAR(Relief(filter)->GetComponent(0, 3), 0.2126, 1e-6);
   filter->SetInputData(MakeImage<vtkUnsignedCharArray>(1, 1, 2, { 0, 255 }));
   filter->Update();
   EXPECT_EQ(Relief(filter)->GetComponent(0, 3), 0.0);
