@@ -120,11 +120,13 @@ public:
    * world coordinates, the real SH basis of FieldIrradiance.h) is pixel (9 i + k, j). The relief
    * is lit by the probes' irradiance at its perturbed normal (interpolated bilinearly between
    * probes), albedo / pi, besides the renderer's lights and the light set. Input port 3.
-   * The relief's own occlusion of this light is not modelled (the CPU evaluation's
-   * ReliefLighting::OcclusionDirections = 0). Like the light set, the sum is scaled by the
-   * property's Exposure and tone mapped when ToneMapping is on (the default); turn it off to
-   * read radiance. A malformed image (width not a multiple of 9, empty, non-finite
-   * coefficients) is reported with an error and the relief is drawn without probes.
+   * Optional parts, described in vtkIrradianceProbesTexture.h: a fourth component, a factor per
+   * probe for each of the renderer's lights 0-7, and the relief's own occlusion of the probes'
+   * light as a visible-share map in the field data; without the map that occlusion is not
+   * modelled (the CPU evaluation's ReliefLighting::OcclusionDirections = 0). Like the light set,
+   * the sum is scaled by the property's Exposure and tone mapped when ToneMapping is on (the
+   * default); turn it off to read radiance. A malformed image (width not a multiple of 9, empty,
+   * non-finite coefficients) is reported with an error and the relief is drawn without probes.
    */
   void SetIrradianceProbesData(vtkImageData* probes);
   void SetIrradianceProbesConnection(vtkAlgorithmOutput* output);
