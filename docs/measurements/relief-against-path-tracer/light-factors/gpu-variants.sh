@@ -3,12 +3,13 @@
 # The relief's GPU image at one ray and 2 x 2 per pixel, each rendered twice with the whole
 # process timed, against the references of a scripts/bench-vlf-relief.sh run (see commands.txt).
 # Usage: gpu-variants.sh VARIANT -> $OUTROOT/VARIANT/{map}-{gpu,gpu-2x2}.exr, times.txt, ab.csv
-# Environment: BIN (mesolight), RUN (the benchmark's output directory), FIELD, OUTROOT.
+# Environment: BIN (mesolight), RUN (the benchmark's output directory), FIELD, OUTROOT, CAMERA and
+# FOV (the office's view unless given; the Cornell box: CAMERA=278,273,-800,278,273,0 FOV=39.3077).
 set -e
 v=$1; out=${OUTROOT:-/tmp/walls/ab}/$v; mkdir -p $out; cd $out
 bin=${BIN:-/work/main/build/bin/mesolight}
 run=${RUN:-/tmp/walls/run}; field=${FIELD:-$run/props16-2049-72.vlf}
-view=(--camera 4.6,1.6,4.8,2.2,0.8,1.2 --fov 65)
+view=(--camera ${CAMERA:-4.6,1.6,4.8,2.2,0.8,1.2} --fov ${FOV:-65})
 for name in procedural-bricks redeclipse-bricks; do
   if [ $name = procedural-bricks ]; then depth=$run/input/bricks-depth.pgm; else depth=$run/input/redeclipse-bricks-depth.png; fi
   for rep in 1 2; do
