@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkMedianCutLights.h"
 #include "vtkOutOfMemory.h"
+#include "vtkRasterRowOrder.h"
 #include "vtkWholeExtentRequest.h"
 
 #include "EnvironmentMaps.h"
@@ -151,22 +152,29 @@ int vtkMedianCutLights::Execute(
       << dims[0] << " x " << dims[1] << " x " << dims[2] << ".");
     return 0;
   }
-  const int w = dims[0];
-  const int h = dims[1];
-  const vtkIdType n = input->GetNumberOfPoints();
+  int w = dims[0];
+  int h = dims[1];
+  vtkIdType n = input->GetNumberOfPoints();
   vtkDataArray* scalars = this->GetInputArrayToProcess(0, inputVector);
-  if (!scalars && input->GetCellData()->GetScalars())
+  if (!scalars)
   {
-    // ParaView's GDAL Raster Reader gives pixels as cells.
-    vtkErrorMacro("The environment map carries its pixels as cell data (as ParaView's GDAL "
-                  "Raster Reader gives them); radiance is read from point scalars: open the file "
-                  "with the Mesolight Image Reader or ParaView's HDR Reader, or apply Cell Data to "
-                  "Point Data first.");
-    return 0;
+    // ParaView's GDAL Raster Reader gives a raster's pixels as the cells of a grid one point
+    // larger: a lat-long map's pixels are those cells, read as they are (no interpolation).
+    scalars = input->GetCellData()->GetScalars();
+  }
+  bool topFirst = false;
+  if (scalars && dims[0] > 1 && dims[1] > 1 && scalars->GetNumberOfTuples() != n &&
+    scalars->GetNumberOfTuples() == input->GetNumberOfCells())
+  {
+    w = dims[0] - 1;
+    h = dims[1] - 1;
+    n = input->GetNumberOfCells();
+    // A plain image (not georeferenced) through GDAL Raster Reader: the file's top row first.
+    topFirst = mesolight::RowsTopFirst(input);
   }
   if (!scalars)
   {
-    vtkErrorMacro("The input image has no point scalars (or no array selected by "
+    vtkErrorMacro("The input image has no point or cell scalars (or no array selected by "
                   "SetInputArrayToProcess()) to read radiance from.");
     return 0;
   }
@@ -216,6 +224,10 @@ int vtkMedianCutLights::Execute(
     default:
       vtkErrorMacro("Unsupported input scalar type " << scalars->GetDataTypeAsString() << ".");
       return 0;
+  }
+  if (topFirst)
+  {
+    mesolight::ReverseRows(rgb, static_cast<std::size_t>(h), 3 * static_cast<std::size_t>(w));
   }
   vtkIdType nonFinite = 0;
   vtkIdType firstNonFinite = -1;

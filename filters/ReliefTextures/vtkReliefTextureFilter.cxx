@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkReliefTextureFilter.h"
 #include "vtkOutOfMemory.h"
+#include "vtkRasterRowOrder.h"
 #include "vtkUnitScale.h"
 #include "vtkWholeExtentRequest.h"
 
@@ -279,6 +280,12 @@ int vtkReliefTextureFilter::Execute(
     cellNoData.swap(noData);
     mesolight::CellsToCorners(cellValue, cellNoData, w - 1, h - 1, value, noData);
     noDataCount = static_cast<vtkIdType>(std::count(noData.begin(), noData.end(), 1));
+    if (mesolight::RowsTopFirst(input))
+    {
+      // A plain image (not georeferenced) through GDAL Raster Reader: the file's top row first.
+      mesolight::ReverseRows(value, static_cast<std::size_t>(h), static_cast<std::size_t>(w));
+      mesolight::ReverseRows(noData, static_cast<std::size_t>(h), static_cast<std::size_t>(w));
+    }
   }
   this->AppliedNoData = useNoData || noDataCount > 0;
   this->AppliedNoDataValue = useNoData ? noDataValue : 0.0;

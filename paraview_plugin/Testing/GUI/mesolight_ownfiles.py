@@ -6,7 +6,8 @@ Open) and TestGUIOwnFileFormats.py.
 
 Depth images: a dome and a groove (0 = surface, 1 = deepest) as an 8-bit PNG, a 16-bit PNG, an
 8-bit JPEG, a float TIFF and a float OpenEXR (oiiotool, from openimageio-tools); the environment: a lat-long
-Radiance HDR (written here, uncompressed RGBE scanlines) with a bright sun patch."""
+Radiance HDR (written here, uncompressed RGBE scanlines) with a bright sun patch, and the same sky
+as a float RGB TIFF."""
 import math
 import os
 import struct
@@ -37,11 +38,14 @@ def depth_map():
     return np.clip(0.6 * (1.0 - dome) + 0.4 * groove, 0.0, 1.0)
 
 
-def _image(values, vtk_type=None):
+def _image(values, vtk_type=None, name="depth"):
+    """An image of `values` (rows bottom up; a third axis: the components)."""
     image = vtkImageData()
-    image.SetDimensions(SIZE, SIZE, 1)
-    array = numpy_to_vtk(np.ascontiguousarray(values.ravel()), deep=1, array_type=vtk_type)
-    array.SetName("depth")
+    image.SetDimensions(values.shape[1], values.shape[0], 1)
+    components = values.shape[2] if values.ndim == 3 else 1
+    array = numpy_to_vtk(np.ascontiguousarray(values.reshape(-1, components).squeeze()), deep=1,
+                         array_type=vtk_type)
+    array.SetName(name)
     image.GetPointData().SetScalars(array)
     return image
 
@@ -65,9 +69,9 @@ def write_jpeg(path):
     writer.Write()
 
 
-def write_tiff(path):
+def write_tiff(path, depth=None):
     writer = vtkTIFFWriter()
-    writer.SetInputData(_image(depth_map().astype(np.float32)))
+    writer.SetInputData(_image((depth_map() if depth is None else depth).astype(np.float32)))
     writer.SetFileName(path)
     writer.Write()
 
@@ -80,16 +84,21 @@ def write_exr(path):
     os.remove(tiff)
 
 
+def sky_pixel(i, j, width, height):
+    """Pixel (i, j) of a lat-long sky with a sun, row j = 0 the zenith's (a file's top row)."""
+    theta = math.pi * (j + 0.5) / height
+    phi = 2 * math.pi * (i + 0.5) / width
+    sky = 0.4 + 0.6 * max(0.0, math.cos(theta))
+    sun = 40.0 if abs(theta - 0.8) < 0.12 and abs(phi - 1.0) < 0.12 else 0.0
+    return (sky + sun, sky * 0.95 + sun, sky * 1.1 + sun)
+
+
 def write_hdr(path, width=128, height=64):
-    """A lat-long sky with a sun: Radiance RGBE, flat (uncompressed) scanlines, top row first."""
+    """The sky: Radiance RGBE, flat (uncompressed) scanlines, top row first."""
     rows = []
     for j in range(height):
-        theta = math.pi * (j + 0.5) / height
         for i in range(width):
-            phi = 2 * math.pi * (i + 0.5) / width
-            sky = 0.4 + 0.6 * max(0.0, math.cos(theta))
-            sun = 40.0 if abs(theta - 0.8) < 0.12 and abs(phi - 1.0) < 0.12 else 0.0
-            rgb = (sky + sun, sky * 0.95 + sun, sky * 1.1 + sun)
+            rgb = sky_pixel(i, j, width, height)
             top = max(rgb)
             mantissa, exponent = math.frexp(top)
             scale = mantissa * 256.0 / top
@@ -97,6 +106,16 @@ def write_hdr(path, width=128, height=64):
     with open(path, "wb") as f:
         f.write(b"#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y %d +X %d\n" % (height, width))
         f.write(b"".join(rows))
+
+
+def write_sky_tiff(path, width=128, height=64):
+    """The sky as a float RGB TIFF (VTK's rows bottom up: the zenith's row last)."""
+    rgb = np.array([[sky_pixel(i, height - 1 - j, width, height) for i in range(width)]
+                    for j in range(height)], dtype=np.float32)
+    writer = vtkTIFFWriter()
+    writer.SetInputData(_image(rgb, name="sky"))
+    writer.SetFileName(path)
+    writer.Write()
 
 
 def write_files():
@@ -107,6 +126,7 @@ def write_files():
     write_tiff(os.path.join(d, "depth.tif"))
     write_exr(os.path.join(d, "depth.exr"))
     write_hdr(os.path.join(d, "sky.hdr"))
+    write_sky_tiff(os.path.join(d, "sky.tif"))
     x._print("wrote the user's files into %s" % d)
 
 

@@ -106,12 +106,19 @@ check(top < 0.013, "without Use Input No Data Value -32768 is an elevation (the 
 # The same file through GDAL Raster Reader, which ParaView offers for a GeoTIFF: its pixels
 # are cells, the no-data ones hidden. Relief Texture reads a texel at each cell corner, the mean
 # of the cells around it with data; the reference is that mean computed here from the reader's
-# own cells (rows as GDAL gives them).
+# own cells. This file has no georeference (GDAL leaves its map projection empty), so GDAL gives
+# its rows top first, and Relief Texture turns them around (common/vtkRasterRowOrder.h): the
+# reference takes the cells' rows the other way round too.
 gdal = pvs.GDALRasterReader(FileName=tagged)
 relief = pvs.MesolightReliefTexture(Input=gdal, InvertInput=1, NormalizeRange=1)
 raster = servermanager.Fetch(gdal)
+check(raster.GetFieldData().GetAbstractArray("MAP_PROJECTION").GetValue(0) == "",
+      "GDAL reads the tagged DEM as a plain image (no map projection)")
 cell_values = vtk_to_numpy(raster.GetCellData().GetScalars()).astype(np.float64).reshape(H, W)
 hidden = (vtk_to_numpy(raster.GetCellGhostArray()).reshape(H, W) & 32) != 0
+check(np.array_equal(cell_values[::-1], np.where(outside, -32768.0, stored)),
+      "GDAL gives the plain image's rows top first")
+cell_values, hidden = cell_values[::-1], hidden[::-1]
 check(hidden.sum() == outside.sum(), "GDAL hides the %d no-data cells (got %d)"
       % (outside.sum(), hidden.sum()))
 total = np.zeros((H + 1, W + 1))

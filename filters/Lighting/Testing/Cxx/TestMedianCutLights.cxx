@@ -9,13 +9,16 @@
 #include "MesolightTestUtilities.h"
 
 #include "vtkCallbackCommand.h"
+#include "vtkCellData.h"
 #include "vtkDataArray.h"
+#include "vtkFieldData.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
+#include "vtkStringArray.h"
 #include "vtkUnsignedCharArray.h"
 
 #include <OpenImageIO/imageio.h>
@@ -103,6 +106,83 @@ TEST(MedianCutLights, OutputsOnTheSunSky)
   lights->SetNumberOfLights(7);
   lights->Update();
   EXPECT_EQ(lights->GetOutput()->GetNumberOfPoints(), 7);
+}
+
+// A raster given as the cells of a grid one point larger (ParaView's GDAL Raster Reader gives a
+// float TIFF's RGB so, as a 3-component cell array) is read pixel for pixel: the same lights as
+// the same pixels as point scalars; and a plain image's rows, which that reader gives top row
+// first (its MAP_PROJECTION field data empty), are turned around. The negative case: those rows
+// without the reader's mark (the sun below the horizon) move the strongest light by 60 degrees.
+TEST(MedianCutLights, PixelsGivenAsCellsAreThePixels)
+{
+  vtkNew<vtkProceduralEnvironmentSource> sky;
+  sky->SetMapToSunSky();
+  sky->SetResolution(128, 64);
+  sky->SetSunElevation(30.0);
+  sky->SetSunAzimuth(90.0);
+  sky->Update();
+  vtkDataArray* pixels = sky->GetOutput()->GetPointData()->GetScalars();
+  const auto asCells = [&](bool flipRows, bool marked = false)
+  {
+    auto image = vtkSmartPointer<vtkImageData>::New();
+    if (marked)
+    {
+      vtkNew<vtkStringArray> projection; // what GDAL Raster Reader attaches to a plain image
+      projection->SetName("MAP_PROJECTION");
+      projection->InsertNextValue("");
+      image->GetFieldData()->AddArray(projection);
+    }
+    image->SetExtent(0, 128, 0, 64, 0, 0);
+    vtkNew<vtkFloatArray> cells;
+    cells->SetNumberOfComponents(3);
+    cells->SetNumberOfTuples(128 * 64);
+    for (vtkIdType j = 0; j < 64; ++j)
+    {
+      for (vtkIdType i = 0; i < 128; ++i)
+      {
+        const vtkIdType from = (flipRows ? 63 - j : j) * 128 + i;
+        for (int c = 0; c < 3; ++c)
+        {
+          cells->SetComponent(j * 128 + i, c, pixels->GetComponent(from, c));
+        }
+      }
+    }
+    cells->SetName("Elevation"); // the GDAL reader's name for any raster
+    image->GetCellData()->SetScalars(cells);
+    return image;
+  };
+  const auto strongest = [](vtkImageData* image, std::vector<double>& irradiance)
+  {
+    vtkNew<vtkMedianCutLights> lights;
+    vtkNew<MessageCapture> capture;
+    capture->Watch(lights);
+    lights->SetInputData(image);
+    lights->SetNumberOfLights(16);
+    lights->Update();
+    EXPECT_TRUE(capture->Errors.empty()) << capture->AllErrors();
+    EXPECT_FALSE(capture->HasWarning("not 2:1")) << "the cells are 128 x 64";
+    vtkPolyData* out = lights->GetOutput();
+    EXPECT_EQ(out->GetNumberOfPoints(), 16);
+    irradiance.clear();
+    for (vtkIdType k = 0; k < out->GetNumberOfPoints(); ++k)
+    {
+      irradiance.push_back(out->GetPointData()->GetArray("Irradiance")->GetComponent(k, 0));
+    }
+    std::vector<double> p(3, 0.0);
+    if (out->GetNumberOfPoints() > 0)
+    {
+      out->GetPoint(0, p.data());
+    }
+    return p;
+  };
+  std::vector<double> fromPoints, fromCells, fromFlipped;
+  const std::vector<double> sun = strongest(sky->GetOutput(), fromPoints);
+  EXPECT_EQ(strongest(asCells(false), fromCells), sun);
+  EXPECT_EQ(fromCells, fromPoints);
+  EXPECT_EQ(strongest(asCells(true, true), fromFlipped), sun);
+  EXPECT_EQ(fromFlipped, fromPoints);
+  const std::vector<double> below = strongest(asCells(true), fromFlipped);
+  EXPECT_GT(Degrees(below.data(), sun.data()), 59.0);
 }
 
 TEST(MedianCutLights, FileRowOrderZenithOnTop)

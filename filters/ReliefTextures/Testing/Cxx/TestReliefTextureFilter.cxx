@@ -16,6 +16,7 @@
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkShortArray.h"
+#include "vtkStringArray.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkUnsignedShortArray.h"
 
@@ -336,6 +337,22 @@ TEST(vtkReliefTextureFilter, PixelsAsCellsAreReadAtTheirCorners)
   filter->Update();
   EXPECT_EQ(filter->GetNumberOfNoDataTexels(), 0);
   EXPECT_NEAR(Relief(filter)->GetComponent(11, 3), 0.0, 1e-6);
+
+  // A plain image (not georeferenced) through GDAL Raster Reader comes top row first, marked by
+  // an empty MAP_PROJECTION (common/vtkRasterRowOrder.h): the texels' rows are turned around, so
+  // the picture's bottom row is texel row 0 as from every other reader.
+  filter->UseInputNoDataValueOn();
+  vtkNew<vtkStringArray> projection;
+  projection->SetName("MAP_PROJECTION");
+  projection->InsertNextValue("");
+  raster->GetFieldData()->AddArray(projection);
+  filter->Update();
+  for (vtkIdType k = 0; k < 12; ++k)
+  {
+    const vtkIdType mirrored = (2 - k / 4) * 4 + k % 4;
+    const double expected = corners[mirrored] < 0 ? 1.0 : (corners[mirrored] - 10.0) / 40.0;
+    EXPECT_NEAR(Relief(filter)->GetComponent(k, 3), expected, 1e-6) << "texel " << k;
+  }
 }
 
 TEST(vtkReliefTextureFilter, TrueDepthScaleOfAGeoreferencedElevationMap)
