@@ -63,6 +63,10 @@ void AddObjectOptions(CommandLine& cl)
     "the object's shadows on the scene: none, black, blend (fixed alpha 0.5), field (the "
     "direct light it blocks), pcf or soft",
     "field");
+  cl.AddValue("--shadow-emitters", "N",
+    "how many of the scene's emitters (the strongest; more lamps merged down to them) cast the "
+    "object's shadows, 1-8 (vtkLightFieldActor::SetShadowEmitterCount)",
+    "4");
   cl.AddValue(
     "--subdivision", "N", "midpoint subdivision levels of the gathered object (0-3)", "0");
   cl.AddValue("--gather-directions", "SET",
@@ -93,8 +97,8 @@ int SetUpObject(const CommandLine& cl, const char* command, vtkLightFieldActor* 
   {
     // Every object option: without an object they would be silently ignored.
     for (const char* option : { "--object-transform", "--object-colour", "--shading", "--shadows",
-           "--subdivision", "--gather-directions", "--gather-volume", "--path", "--object-relief",
-           "--object-relief-depth-scale" })
+           "--shadow-emitters", "--subdivision", "--gather-directions", "--gather-volume", "--path",
+           "--object-relief", "--object-relief-depth-scale" })
     {
       if (cl.Has(option))
       {
@@ -139,6 +143,12 @@ int SetUpObject(const CommandLine& cl, const char* command, vtkLightFieldActor* 
   {
     std::cerr << command << ": --shadows '" << cl.Get("--shadows")
               << "' is not none, black, blend, field, pcf or soft\n";
+    return 2;
+  }
+  int shadowEmitters = 4;
+  if (!cl.GetInt("--shadow-emitters", 1, 8, shadowEmitters, error))
+  {
+    std::cerr << command << ": " << error << "\n";
     return 2;
   }
   double colour[3] = { 0.7, 0.7, 0.7 };
@@ -265,6 +275,7 @@ int SetUpObject(const CommandLine& cl, const char* command, vtkLightFieldActor* 
   object.Mapper->SetShading(shading);
   object.Mapper->SetGatherDirections(gatherDirections);
   scene->SetShadowMode(shadows);
+  scene->SetShadowEmitterCount(shadowEmitters);
   object.Mapper->SetSubdivision(subdivision);
   object.Actor->SetMapper(object.Mapper);
   object.Actor->GetProperty()->SetDiffuseColor(colour);

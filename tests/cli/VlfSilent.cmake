@@ -67,7 +67,7 @@ cli_run(TRUE vlf propagate --resume --iterations 2 --directions 33 --rays 16 --t
         --out "${field}")
 
 # Object options without --object would be ignored.
-foreach (option IN ITEMS "--shading;flat" "--shadows;none" "--subdivision;2"
+foreach (option IN ITEMS "--shading;flat" "--shadows;none" "--shadow-emitters;2" "--subdivision;2"
                          "--object-colour;1,0,0" "--gather-directions;half" "--gather-volume;4")
   list(GET option 0 name)
   cli_expect_error(2 "${name} needs --object"
