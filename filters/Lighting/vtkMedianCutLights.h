@@ -13,7 +13,8 @@
  * type (integers are divided by their type's maximum), 3 or more components (RGB first),
  * from SetInputArrayToProcess() (default: the point scalars, else the cell scalars). Pixels given
  * as the cells of a grid one point larger, as ParaView's GDAL Raster Reader gives a float TIFF,
- * are read as they are: the map is then (W - 1) x (H - 1) of a W x H point grid.
+ * are read as they are: the map is then (W - 1) x (H - 1) of a W x H point grid (a plain image's
+ * rows, which that reader gives top row first, turned around: common/vtkRasterRowOrder.h).
  *
  * Conventions (docs/environment-maps.md): VTK row order, row 0 = the bottom of the picture
  * (files store the zenith first; vtkOIIOImageReader flips rows); map coordinates u in [0,1]

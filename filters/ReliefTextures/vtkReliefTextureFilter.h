@@ -26,7 +26,9 @@
  * point larger than the raster) are read at the cells' corners: each texel is the mean of the cells
  * around it that have data (hidden cells, GDAL's no-data ones, have none under
  * UseInputNoDataValue), as Cell Data to Point Data averages them but without the holes; the output
- * keeps the input's points.
+ * keeps the input's points. A plain image's rows, which GDAL Raster Reader gives top row first,
+ * are turned around (common/vtkRasterRowOrder.h), so texel row 0 is the picture's bottom row as
+ * from every other reader.
  *
  * Errors (no output is produced): no input, an empty or non-2D image, NaN or infinite
  * values (other than no data), depths outside [0,1] or signed integers without NormalizeRange, no
