@@ -112,31 +112,39 @@ def sky_through_gdal():
 
 @x._guarded
 def depth_through_gdal():
-    """The float TIFF depth through GDAL Raster Reader (a plain image: top row first, as cells)
-    and through the Mesolight Image Reader: Relief Texture's texel at each inner cell corner is
-    the mean of the four texels around it from the Mesolight Image Reader (the same picture the
-    same way up); upside down (the rows as GDAL gives them) it is not. The user's depth is the
-    same either way up, so this writes one that is not: the depth over a slope."""
-    path = os.path.join(own.directory(), "slope.tif")
-    own.write_tiff(path, own.depth_map() * 0.5 + 0.5 * np.linspace(0.0, 1.0, own.SIZE)[:, None])
-    textures = []
-    for reader in (pvs.GDALRasterReader(FileName=path), pvs.MesolightImageReader(FileName=path)):
-        relief = pvs.MesolightReliefTexture(Input=reader)
-        image = pvs.servermanager.Fetch(relief)
-        dims = image.GetDimensions()
-        textures.append(vtk_to_numpy(image.GetPointData().GetScalars())[:, 3]
-                        .reshape(dims[1], dims[0]))
-        pvs.Delete(relief)
-        pvs.Delete(reader)
-    corners, ours = textures
-    means = 0.25 * (ours[:-1, :-1] + ours[1:, :-1] + ours[:-1, 1:] + ours[1:, 1:])
-    ok = corners.shape == (ours.shape[0] + 1, ours.shape[1] + 1)
-    error = np.abs(corners[1:-1, 1:-1] - means).max() if ok else -1.0
-    flipped = np.abs(corners[1:-1, 1:-1] - means[::-1]).max() if ok else -1.0
-    x._print("slope.tif through GDAL Raster Reader: largest texel difference %.2e from the "
-             "Mesolight Image Reader's corner means, %.2f upside down" % (error, flipped))
-    x._check(ok and error < 1e-5 and flipped > 0.1,
-             "Relief Texture reads GDAL's plain image the right way up")
+    """A float TIFF depth through GDAL Raster Reader and through the Mesolight Image Reader:
+    Relief Texture's texel at each inner cell corner from GDAL's cells is the mean of the four
+    texels around it from the Mesolight Image Reader (the same picture the same way up); upside
+    down it is not. As a plain image GDAL gives the rows top first (Relief Texture turns them
+    around); with a world file (slope.tfw: georeferenced, no map projection) north up, as they
+    stay. The user's depth is the same either way up, so this writes one that is not: the depth
+    over a slope."""
+    depth = own.depth_map() * 0.5 + 0.5 * np.linspace(0.0, 1.0, own.SIZE)[:, None]
+    for name, world in (("slope.tif", None), ("slope-world.tif", "slope-world.tfw")):
+        path = os.path.join(own.directory(), name)
+        own.write_tiff(path, depth)
+        if world:
+            with open(os.path.join(own.directory(), world), "w") as f:
+                f.write("0.5\n0\n0\n-0.5\n1000.25\n2000.25\n")  # 0.5 m pixels, north up
+        textures = []
+        for reader in (pvs.GDALRasterReader(FileName=path),
+                       pvs.MesolightImageReader(FileName=path)):
+            relief = pvs.MesolightReliefTexture(Input=reader)
+            image = pvs.servermanager.Fetch(relief)
+            dims = image.GetDimensions()
+            textures.append(vtk_to_numpy(image.GetPointData().GetScalars())[:, 3]
+                            .reshape(dims[1], dims[0]))
+            pvs.Delete(relief)
+            pvs.Delete(reader)
+        corners, ours = textures
+        means = 0.25 * (ours[:-1, :-1] + ours[1:, :-1] + ours[:-1, 1:] + ours[1:, 1:])
+        ok = corners.shape == (ours.shape[0] + 1, ours.shape[1] + 1)
+        error = np.abs(corners[1:-1, 1:-1] - means).max() if ok else -1.0
+        flipped = np.abs(corners[1:-1, 1:-1] - means[::-1]).max() if ok else -1.0
+        x._print("%s through GDAL Raster Reader: largest texel difference %.2e from the "
+                 "Mesolight Image Reader's corner means, %.2f upside down" % (name, error, flipped))
+        x._check(ok and error < 1e-5 and flipped > 0.1,
+                 "Relief Texture reads GDAL's %s the right way up" % name)
 
 
 def main():

@@ -111,8 +111,10 @@ TEST(MedianCutLights, OutputsOnTheSunSky)
 // A raster given as the cells of a grid one point larger (ParaView's GDAL Raster Reader gives a
 // float TIFF's RGB so, as a 3-component cell array) is read pixel for pixel: the same lights as
 // the same pixels as point scalars; and a plain image's rows, which that reader gives top row
-// first (its MAP_PROJECTION field data empty), are turned around. The negative case: those rows
-// without the reader's mark (the sun below the horizon) move the strongest light by 60 degrees.
+// first (its MAP_PROJECTION field data empty, origin 0 and pixels of 1), are turned around, a
+// world file's raster (no projection, its ground origin and size) not. The negative case: those
+// rows without the reader's mark (the sun below the horizon) move the strongest light by 60
+// degrees.
 TEST(MedianCutLights, PixelsGivenAsCellsAreThePixels)
 {
   vtkNew<vtkProceduralEnvironmentSource> sky;
@@ -181,6 +183,14 @@ TEST(MedianCutLights, PixelsGivenAsCellsAreThePixels)
   EXPECT_EQ(fromCells, fromPoints);
   EXPECT_EQ(strongest(asCells(true, true), fromFlipped), sun);
   EXPECT_EQ(fromFlipped, fromPoints);
+  // A raster georeferenced by a world file has no map projection either, but GDAL gives it north
+  // up, at its ground origin and pixel size: its rows stay as they are.
+  vtkSmartPointer<vtkImageData> world = asCells(false, true);
+  world->SetOrigin(1000.0, 1936.0, 0.0);
+  world->SetSpacing(0.5, 0.5, 1.0);
+  std::vector<double> fromWorld;
+  EXPECT_EQ(strongest(world, fromWorld), sun);
+  EXPECT_EQ(fromWorld, fromPoints);
   const std::vector<double> below = strongest(asCells(true), fromFlipped);
   EXPECT_GT(Degrees(below.data(), sun.data()), 59.0);
 }
