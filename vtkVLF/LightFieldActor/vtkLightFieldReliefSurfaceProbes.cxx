@@ -252,13 +252,9 @@ SurfaceResult ComputeSurface(const vlf::LightField& field, vtkPolyData* whole, i
 std::vector<ReliefEmitterSample> FirstLightSamples(
   const vlf::LightField& field, const std::vector<vlf::EmitterLight>& emitters)
 {
-  std::vector<glm::vec3> lights;
-  for (const vlf::EmitterLight& light : emitters)
-  {
-    lights.push_back(light.Position);
-  }
-  return lights.empty() ? std::vector<ReliefEmitterSample>()
-                        : vlf::EmitterSamplesOfLight(field.Scene(), lights, 0);
+  return emitters.empty()
+    ? std::vector<ReliefEmitterSample>()
+    : vlf::EmitterSamplesOfLight(field.Scene(), vlf::LightPositions(emitters), 0);
 }
 
 std::vector<double> PackEmitterSamples(const std::vector<ReliefEmitterSample>& samples)

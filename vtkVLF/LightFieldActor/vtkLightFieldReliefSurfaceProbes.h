@@ -68,8 +68,8 @@ struct SurfaceResult
   // The depth limit (world): a point, the front normal, 1 when the surface is mounted on a wall.
   double Limit[7] = {};
   std::vector<double> Lights;
-  std::vector<float>
-    Factors; // per probe and light (SceneOcclusion, EmitterLightFactors), else empty
+  // Per probe and light (SceneOcclusion, EmitterLightFactors), else empty.
+  std::vector<float> Factors;
   // The emitter samples light 0 stands for (EmitterSamplesOfLight; SceneOcclusion, else empty),
   // unit sphere, packed 9 numbers a sample (position, normal, radiance x area): the relief's
   // shadow of that light's area goes into the visible-share map on every rank.

@@ -330,6 +330,17 @@ std::vector<std::vector<std::uint32_t>> LampsOf(
 }
 
 //------------------------------------------------------------------------------
+std::vector<glm::vec3> LightPositions(const std::vector<EmitterLight>& lights)
+{
+  std::vector<glm::vec3> positions;
+  positions.reserve(lights.size());
+  for (const EmitterLight& light : lights)
+  {
+    positions.push_back(light.Position);
+  }
+  return positions;
+}
+
 std::vector<EmitterLight> MergeEmitterLights(
   std::vector<EmitterLight> lights, const EmitterLightOptions& options)
 {

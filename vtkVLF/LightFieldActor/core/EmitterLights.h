@@ -87,6 +87,10 @@ struct EmitterLightOptions
   glm::vec3 ReceiverNormal{ 0.0f, 0.0f, 1.0f };
 };
 
+// The lights' positions (unit sphere), in their order: what groups emitter samples by the nearest
+// light (EmitterSamplesOfLight, EmitterLightFactors).
+std::vector<glm::vec3> LightPositions(const std::vector<EmitterLight>& lights);
+
 // The merging above, on its own: `lights` merged until at most options.MaxLights remain
 // (brightest first). MaxLights 0 leaves them as they are.
 std::vector<EmitterLight> MergeEmitterLights(

@@ -106,12 +106,7 @@ std::vector<float> EmitterLightFactors(const LightField& field, const EmbreeScen
   const auto luminance = [](const glm::dvec3& c) { return Luminance(c.x, c.y, c.z); };
   const std::vector<ReliefEmitterSample> samples =
     EmitterSamples(field.Scene(), std::max(1, samplesPerSide));
-  std::vector<glm::vec3> positions;
-  for (const EmitterLight& light : lights)
-  {
-    positions.push_back(light.Position);
-  }
-  const std::vector<std::size_t> nearest = NearestLights(samples, positions);
+  const std::vector<std::size_t> nearest = NearestLights(samples, LightPositions(lights));
   for (int j = 0; j < probesV; ++j)
   {
     for (int i = 0; i < probesU; ++i)
