@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkLightSetTexture.h"
 
+#include "Luminance.h"
+
 #include "vtkDataArray.h"
 #include "vtkImageData.h"
 #include "vtkMath.h"
@@ -24,11 +26,13 @@ vtkLightSetTexture::~vtkLightSetTexture() = default;
 //------------------------------------------------------------------------------
 bool vtkLightSetTexture::Update(vtkOpenGLRenderWindow* renWin, vtkImageData* lights)
 {
-  this->HasLightSet = lights != nullptr;
-  if (!lights)
-  {
-    return true;
-  }
+  this->HasLightSet = lights != nullptr && this->Upload(renWin, lights);
+  return lights == nullptr || this->HasLightSet;
+}
+
+//------------------------------------------------------------------------------
+bool vtkLightSetTexture::Upload(vtkOpenGLRenderWindow* renWin, vtkImageData* lights)
+{
   vtkDataArray* values = lights->GetPointData()->GetScalars();
   if (values && values == this->Uploaded && values->GetMTime() <= this->UploadTime &&
     this->TextureObject && this->TextureObject->GetHandle() != 0 &&
@@ -41,7 +45,14 @@ bool vtkLightSetTexture::Update(vtkOpenGLRenderWindow* renWin, vtkImageData* lig
   this->NumberOfLights = 0;
   int dims[3];
   lights->GetDimensions(dims);
-  if (!values || dims[1] != 2 || dims[0] < 1 || values->GetNumberOfComponents() < 3)
+  if (!values || lights->GetNumberOfPoints() == 0)
+  {
+    // An empty image is what a light-set source leaves after it reported its own error.
+    vtkErrorMacro(<< "The light set is empty: its source made no lights (see its error "
+                     "above).");
+    return false;
+  }
+  if (dims[1] != 2 || dims[0] < 1 || values->GetNumberOfComponents() < 3)
   {
     vtkErrorMacro(<< "The light set must be an N x 2 image with 3 or 4 components (row 0 "
                      "directions, row 1 irradiance). In ParaView: connect Mesolight Median Cut "
@@ -83,8 +94,15 @@ bool vtkLightSetTexture::Update(vtkOpenGLRenderWindow* renWin, vtkImageData* lig
     {
       light.Direction[c] = static_cast<float>(direction[c]);
     }
-    light.Luminance =
-      0.2125f * light.Irradiance[0] + 0.7154f * light.Irradiance[1] + 0.0721f * light.Irradiance[2];
+    light.Luminance = mesolight::Luminance(light.Irradiance);
+  }
+  // One texel per light along a row: a GPU takes as many lights as its widest texture.
+  const int widest = vtkTextureObject::GetMaximumTextureSize(renWin);
+  if (widest > 0 && dims[0] > widest)
+  {
+    vtkErrorMacro(<< "The light set has " << dims[0] << " lights; this GPU's textures hold at most "
+                  << widest << ". Use fewer lights (vtkMedianCutLights::SetNumberOfLights).");
+    return false;
   }
   std::sort(sorted.begin(), sorted.end(),
     [](const Light& a, const Light& b) { return a.Luminance > b.Luminance; });

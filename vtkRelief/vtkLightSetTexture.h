@@ -33,11 +33,12 @@ public:
 
   /**
    * Uploads the light set unless it is already on the GPU of this window; null means no light
-   * set (true). False (with an error) for a malformed light set or a failed upload.
+   * set (true). False (with an error) for a malformed light set or a failed upload: the relief
+   * is then lit as without one (HasLightSet false), as a malformed set of probes is.
    */
   bool Update(vtkOpenGLRenderWindow* renWin, vtkImageData* lights);
 
-  /** Whether the last Update was given a light set. */
+  /** Whether the last Update was given a light set and uploaded it. */
   vtkGetMacro(HasLightSet, bool);
 
   /** Number of lights uploaded. */
@@ -54,6 +55,8 @@ public:
 protected:
   vtkLightSetTexture();
   ~vtkLightSetTexture() override;
+
+  bool Upload(vtkOpenGLRenderWindow* renWin, vtkImageData* lights);
 
   vtkSmartPointer<vtkTextureObject> TextureObject;
   vtkDataArray* Uploaded = nullptr; // not referenced: only compared

@@ -123,12 +123,14 @@ bool vtkReliefShading::StartDraw(vtkOpenGLRenderWindow* renWin, vtkReliefPropert
         requiredCones != vtkReliefProperty::NoConeMap, property->GetFloatTextures(),
         property->GetDeriveNormals(),
         property->GetLevelOfDetail() &&
-          property->GetNormalFilter() >= vtkReliefProperty::VisibleNormalFilter) ||
-    !this->LightSet->Update(renWin, lights))
+          property->GetNormalFilter() >= vtkReliefProperty::VisibleNormalFilter))
   {
     return false;
   }
-  this->Probes->Update(renWin, probes); // malformed probes: reported, drawn without them
+  // A malformed light set or probes: reported, the relief drawn without them (lit as the
+  // renderer's lights light it), not hidden.
+  this->LightSet->Update(renWin, lights);
+  this->Probes->Update(renWin, probes);
   if (requiredCones != vtkReliefProperty::NoConeMap &&
     this->ReliefTexture->GetConeMap() == vtkReliefProperty::NoConeMap)
   {

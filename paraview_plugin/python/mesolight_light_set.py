@@ -63,7 +63,7 @@ def read_light_set(path):
 
 
 def _luminance(e):
-    return 0.2125 * e[0] + 0.7154 * e[1] + 0.0721 * e[2]
+    return 0.2126 * e[0] + 0.7152 * e[1] + 0.0722 * e[2]  # Rec. 709, as common/Luminance.h
 
 
 def apply_light_set(view, light_set, count=8, exposure=1.0, displays=()):

@@ -60,7 +60,7 @@ vec3 mlLightSetIrradiance(vec3 normalVC, vec3 hit, mat3 worldToTexture, bool mar
         continue;
       }
       ++marched;
-      float weight = dot(contribution, vec3(0.2125, 0.7154, 0.0721));
+      float weight = dot(contribution, vec3(0.2126, 0.7152, 0.0722)); // luminance (Rec. 709)
       marchedWeight += weight;
       if (mlShadowed(hit, clamp(toLight / -toLight.z, -1e4, 1e4)))
       {

@@ -106,6 +106,46 @@ TEST(ReliefBadInput, MissingReliefTextureIsAnError)
   EXPECT_TRUE(messages->HasError("No relief texture")) << messages->AllErrors();
 }
 
+// A light set its source left empty (the source reported why), and one wider than the GPU's
+// widest texture, which would otherwise be dropped without a word: each a clear error, and the
+// relief still drawn, lit by the renderer's lights as without a light set (as malformed probes).
+TEST(ReliefBadInput, EmptyOrTooWideLightSetsAreErrors)
+{
+  vtkNew<vtkReliefMapper> plain;
+  plain->SetReliefTextureData(SmallRelief());
+  vtkNew<vtkImageData> empty;
+  vtkNew<vtkReliefMapper> emptyMapper;
+  emptyMapper->SetReliefTextureData(SmallRelief());
+  emptyMapper->SetLightSetData(empty);
+  vtkNew<mesolight_test::MessageCapture> messages;
+  messages->Watch(emptyMapper);
+  Frame frame = DrawWithRelief(emptyMapper, PlaneWithTCoords());
+  EXPECT_TRUE(messages->HasError("The light set is empty")) << messages->AllErrors();
+  EXPECT_FALSE(messages->HasError("N x 2")) << messages->AllErrors();
+  EXPECT_EQ(CoveredPixels(frame), 0);
+
+  const int count = 70000; // wider than any GPU's 2D textures (16384 here, 32768 on most)
+  vtkNew<vtkImageData> wide;
+  wide->SetDimensions(count, 2, 1);
+  vtkNew<vtkFloatArray> values;
+  values->SetNumberOfComponents(4);
+  values->SetNumberOfTuples(2 * count);
+  for (int i = 0; i < count; ++i)
+  {
+    values->SetTuple4(i, 0.0, 0.0, 1.0, 0.0);
+    values->SetTuple4(count + i, 1e-4, 1e-4, 1e-4, 0.0);
+  }
+  wide->GetPointData()->SetScalars(values);
+  vtkNew<vtkReliefMapper> wideMapper;
+  wideMapper->SetReliefTextureData(SmallRelief());
+  wideMapper->SetLightSetData(wide);
+  messages->Clear();
+  messages->Watch(wideMapper);
+  frame = DrawWithRelief(wideMapper, PlaneWithTCoords());
+  EXPECT_TRUE(messages->HasError("textures hold at most")) << messages->AllErrors();
+  EXPECT_EQ(CoveredPixels(frame), 0);
+}
+
 TEST(ReliefBadInput, ReliefTextureWithoutFourComponentsIsAnError)
 {
   auto depthOnly = test::MakeDepthMap(8, 8, [](double, double) { return 0.5; });
