@@ -4,6 +4,29 @@
 #include "vtkObject.h"
 #include "vtkOutputWindow.h"
 
+#include <sstream>
+#include <string>
+
+namespace
+{
+// The message as the owner's: "vtkReliefGeometryCache (0x...): text" becomes
+// "vtkReliefMapper (0x...): text", the object the user made and watches.
+std::string AttributedToOwner(const char* message, vtkObject* caller, vtkObject* owner)
+{
+  std::string text = message ? message : "";
+  const std::string from = std::string(caller->GetClassName()) + " (";
+  const std::size_t start = text.find(from);
+  const std::size_t end = start == std::string::npos ? start : text.find("): ", start);
+  if (end == std::string::npos)
+  {
+    return text;
+  }
+  std::ostringstream to;
+  to << owner->GetClassName() << " (" << static_cast<const void*>(owner) << ")";
+  return text.replace(start, end + 1 - start, to.str());
+}
+}
+
 //------------------------------------------------------------------------------
 vtkReliefMessageForwarder* vtkReliefMessageForwarder::New()
 {
@@ -18,19 +41,26 @@ void vtkReliefMessageForwarder::Watch(vtkObject* source)
 }
 
 //------------------------------------------------------------------------------
-void vtkReliefMessageForwarder::Execute(vtkObject*, unsigned long event, void* callData)
+void vtkReliefMessageForwarder::Execute(vtkObject* caller, unsigned long event, void* callData)
 {
   vtkObject* owner = this->Owner;
+  const char* message = static_cast<const char*>(callData);
+  std::string attributed;
+  if (owner && caller && caller != owner)
+  {
+    attributed = AttributedToOwner(message, caller, owner);
+    message = attributed.c_str();
+  }
   if (owner && owner->HasObserver(event))
   {
-    owner->InvokeEvent(event, callData);
+    owner->InvokeEvent(event, const_cast<char*>(message));
   }
   else if (event == vtkCommand::ErrorEvent)
   {
-    vtkOutputWindowDisplayErrorText(static_cast<const char*>(callData));
+    vtkOutputWindowDisplayErrorText(message);
   }
   else
   {
-    vtkOutputWindowDisplayWarningText(static_cast<const char*>(callData));
+    vtkOutputWindowDisplayWarningText(message);
   }
 }

@@ -7,8 +7,9 @@
  * A relief mapper does its work in several helper objects (vtkReliefShading and the caches and
  * textures it composes, vtkReliefProperty). Users watch the mapper, as for any VTK algorithm:
  * this command, observing ErrorEvent and WarningEvent on each helper (Watch()), invokes the same
- * event with the same text on the owner when the owner has observers for it, and otherwise
- * displays the message as vtkErrorMacro / vtkWarningMacro would have.
+ * event on the owner when the owner has observers for it, and otherwise displays the message as
+ * vtkErrorMacro / vtkWarningMacro would have. Either way the text names the owner, not the
+ * helper ("vtkReliefMapper (0x...): ..."): users never made the helpers.
  */
 
 #ifndef vtkReliefMessageForwarder_h

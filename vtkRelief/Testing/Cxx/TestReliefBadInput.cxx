@@ -94,6 +94,9 @@ TEST(ReliefBadInput, MissingTextureCoordinatesIsAnError)
   messages->Watch(mapper);
   const Frame frame = DrawWithRelief(mapper, mesh);
   EXPECT_TRUE(messages->HasError("texture coordinates")) << messages->AllErrors();
+  // Named after the mapper the user made, not the helper that found it.
+  EXPECT_TRUE(messages->HasError("vtkReliefMapper (")) << messages->AllErrors();
+  EXPECT_FALSE(messages->HasError("vtkReliefGeometryCache (")) << messages->AllErrors();
   EXPECT_EQ(CoveredPixels(frame), 0);
 }
 
@@ -122,7 +125,10 @@ TEST(ReliefBadInput, EmptyOrTooWideLightSetsAreErrors)
   Frame frame = DrawWithRelief(emptyMapper, PlaneWithTCoords());
   EXPECT_TRUE(messages->HasError("The light set is empty")) << messages->AllErrors();
   EXPECT_FALSE(messages->HasError("N x 2")) << messages->AllErrors();
-  EXPECT_EQ(CoveredPixels(frame), 0);
+  const Frame withoutLightSet = DrawWithRelief(plain, PlaneWithTCoords());
+  EXPECT_GT(CoveredPixels(withoutLightSet), 1000);
+  EXPECT_EQ(CompareFrames(frame, withoutLightSet, 1e-6).MeanColorError, 0.0);
+  EXPECT_EQ(CompareCoverage(frame, withoutLightSet).Mismatched, 0);
 
   const int count = 70000; // wider than any GPU's 2D textures (16384 here, 32768 on most)
   vtkNew<vtkImageData> wide;
@@ -143,7 +149,8 @@ TEST(ReliefBadInput, EmptyOrTooWideLightSetsAreErrors)
   messages->Watch(wideMapper);
   frame = DrawWithRelief(wideMapper, PlaneWithTCoords());
   EXPECT_TRUE(messages->HasError("textures hold at most")) << messages->AllErrors();
-  EXPECT_EQ(CoveredPixels(frame), 0);
+  EXPECT_EQ(CompareFrames(frame, withoutLightSet, 1e-6).MeanColorError, 0.0);
+  EXPECT_EQ(CompareCoverage(frame, withoutLightSet).Mismatched, 0);
 }
 
 TEST(ReliefBadInput, ReliefTextureWithoutFourComponentsIsAnError)
