@@ -273,7 +273,9 @@ std::size_t vtkLightFieldActor::ShadeMirrors(bool objectMoved)
   Internals& impl = *this->Impl;
   const vlf::WalkthroughTracer& tracer = *impl.Scene.GetTracer();
   const vlf::ViewFrame& view = impl.View.GetView();
-  if (!tracer.HasMirrors() && !impl.WarnedNoMirrors)
+  // Progressive, the default, adapts to the scene: without mirrors its diffuse textures are the
+  // whole picture. Only the modes a user picks for mirrors say that they have none to trace.
+  if (!tracer.HasMirrors() && !impl.WarnedNoMirrors && this->RenderMode != Progressive)
   {
     vtkWarningMacro(<< "the light field has no mirror surfaces: the "
                     << GetRenderModeAsString(this->RenderMode)
