@@ -422,8 +422,11 @@ void LightField::Setup(
   if (settings.Directions > settings.MemoryBudget / perDirection)
   {
     throw MemoryBudgetError("the light field's " + std::to_string(settings.Directions) +
-      " directions alone would need more than the memory budget of " +
-      FormatBytes(settings.MemoryBudget) + "; use fewer directions, or raise the budget");
+      " directions alone (each of " + std::to_string(settings.RaysPerSide) + "x" +
+      std::to_string(settings.RaysPerSide) + " rays in " + std::to_string(settings.TilesPerSide) +
+      "x" + std::to_string(settings.TilesPerSide) +
+      " tiles) would need more than the memory budget of " + FormatBytes(settings.MemoryBudget) +
+      "; use fewer directions or rays per side, or raise the budget");
   }
   this->DirectionsPtr.reset(new DirectionSet(DirectionSet::WithCount(settings.Directions)));
   const float texel = settings.TexelSize > 0.0f ? settings.TexelSize : settings.CellSize();
