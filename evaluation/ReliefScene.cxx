@@ -362,14 +362,14 @@ void SetupCameraAndLights(const ReliefSceneOptions& options, vtkRenderer* render
 //------------------------------------------------------------------------------
 bool BuildReliefScene(const ReliefSceneOptions& requested, ReliefScene& scene, std::string& error)
 {
-  vtkNew<vtkReliefProperty> probe;
-  if (!probe->SetMethodByName(requested.Method.c_str()))
+  const int method = vtkReliefProperty::GetMethodFromName(requested.Method.c_str());
+  if (method < 0)
   {
     error = "unknown method '" + requested.Method + "'";
     return false;
   }
   if (!BuildReliefTextures(requested, scene.ReliefTexture, scene.Albedo, error,
-        vtkReliefProperty::GetRequiredConeMap(probe->GetMethod())))
+        vtkReliefProperty::GetRequiredConeMap(method)))
   {
     return false;
   }
@@ -383,11 +383,7 @@ bool BuildReliefScene(const ReliefSceneOptions& requested, ReliefScene& scene, s
   scene.Mapper = vtkSmartPointer<vtkReliefMapper>::New();
   scene.Mapper->SetInputData(wall);
   scene.Mapper->SetReliefTextureData(scene.ReliefTexture);
-  if (!scene.Mapper->GetReliefProperty()->SetMethodByName(options.Method.c_str()))
-  {
-    error = "unknown method '" + options.Method + "'";
-    return false;
-  }
+  scene.Mapper->GetReliefProperty()->SetMethod(method);
   scene.Mapper->GetReliefProperty()->SetDepthScale(options.DepthScale);
   scene.Mapper->GetReliefProperty()->SetLinearSteps(options.LinearSteps);
   scene.Mapper->GetReliefProperty()->SetRefinementSteps(options.RefinementSteps);

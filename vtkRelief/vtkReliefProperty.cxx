@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkReliefProperty.h"
 
+#include "DepthScaleSetting.h"
 #include "DisplayTransform.h"
 #include "vtkLightCollection.h"
 #include "vtkMath.h"
@@ -145,6 +146,13 @@ bool vtkReliefProperty::SetMethodByName(const char* name)
   const int method = GetMethodFromName(name);
   if (method < 0)
   {
+    std::string names;
+    for (int m = 0; m < NumberOfMethods; ++m)
+    {
+      names += std::string(m > 0 ? ", " : "") + MethodNames[m];
+    }
+    vtkErrorMacro(<< "Unknown relief method '" << (name ? name : "(null)")
+                  << "'; the method is kept. The names are " << names << ".");
     return false;
   }
   this->SetMethod(method);
@@ -167,15 +175,19 @@ int vtkReliefProperty::GetRequiredConeMap(int method)
 }
 
 //------------------------------------------------------------------------------
-void vtkReliefProperty::SetDepthScale(double depthScale)
+void vtkReliefProperty::SetDepthScale(double requested)
 {
-  if (std::isnan(depthScale))
+  double depthScale = 0.0;
+  std::string note;
+  if (!mesolight::ClampDepthScale(requested, 10.0, depthScale, note))
   {
-    vtkErrorMacro(<< "SetDepthScale: NaN is not a depth scale; keeping " << this->DepthScale
-                  << ".");
+    vtkErrorMacro(<< "SetDepthScale: " << note << "; keeping " << this->DepthScale << ".");
     return;
   }
-  depthScale = vtkMath::ClampValue(depthScale, 0.0, 10.0);
+  if (!note.empty())
+  {
+    vtkWarningMacro(<< "SetDepthScale: " << note);
+  }
   if (depthScale != this->DepthScale)
   {
     this->DepthScale = depthScale;
@@ -227,11 +239,16 @@ void vtkReliefProperty::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "RepeatTexture: " << (this->RepeatTexture ? "On" : "Off") << "\n";
   os << indent << "FloatTextures: " << (this->FloatTextures ? "On" : "Off") << "\n";
   os << indent << "DeriveNormals: " << (this->DeriveNormals ? "On" : "Off") << "\n";
-  os << indent << "Output: " << this->Output << "\n";
+  static const char* const outputNames[NumberOfOutputs] = { "shaded", "hit u", "hit v",
+    "light visibility", "non-finite check", "sample count" };
+  os << indent << "Output: "
+     << (this->Output >= 0 && this->Output < NumberOfOutputs ? outputNames[this->Output]
+                                                             : "unknown")
+     << "\n";
   os << indent << "AdaptiveSteps: " << (this->AdaptiveSteps ? "On" : "Off") << "\n";
   os << indent << "MinimumSteps: " << this->MinimumSteps << "\n";
   os << indent << "LevelOfDetail: " << (this->LevelOfDetail ? "On" : "Off") << "\n";
-  os << indent << "NormalFilter: " << this->NormalFilter << "\n";
+  os << indent << "NormalFilter: " << GetNormalFilterName(this->NormalFilter) << "\n";
   os << indent << "FarViewRays: " << this->FarViewRays << "\n";
   os << indent << "Exposure: " << this->Exposure << "\n";
   os << indent << "ToneMapping: " << (this->ToneMapping ? "On" : "Off") << "\n";

@@ -107,6 +107,7 @@ public:
   void SetMethodToSteepParallax() { this->SetMethod(LinearSearch); }
   void SetMethodToParallaxOcclusion() { this->SetMethod(ParallaxOcclusion); }
   void SetMethodToRelief() { this->SetMethod(Relief); }
+  void SetMethodToMaximumMipmap() { this->SetMethod(MaximumMipmap); }
   ///@}
 
   ///@{
@@ -115,7 +116,8 @@ public:
    * "parallax-limit", "parallax-slope", "iterative-parallax", "binary", "secant", "linear" (also
    * "steep"), "pom", "relief", "interval", "relaxed-cone", "relaxed-cone-interval", "cone",
    * "max-mipmap". GetMethodName returns "unknown" outside the methods; GetMethodFromName -1 for
-   * an unknown (or null) name; SetMethodByName false, leaving the method unchanged.
+   * an unknown (or null) name; SetMethodByName reports an error listing the names and returns
+   * false, leaving the method unchanged.
    */
   static const char* GetMethodName(int method);
   static int GetMethodFromName(const char* name);

@@ -5,6 +5,7 @@
 #include "vtkUnitScale.h"
 #include "vtkWholeExtentRequest.h"
 
+#include "DepthScaleSetting.h"
 #include "Luminance.h"
 #include "MemoryBudget.h"
 #include "RasterCells.h"
@@ -108,6 +109,27 @@ vtkReliefTextureFilter::vtkReliefTextureFilter()
 {
   this->SetInputArrayToProcess(
     0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, vtkDataSetAttributes::SCALARS);
+}
+
+//------------------------------------------------------------------------------
+void vtkReliefTextureFilter::SetDepthScale(double requested)
+{
+  double depthScale = 0.0;
+  std::string note;
+  if (!mesolight::ClampDepthScale(requested, 100.0, depthScale, note))
+  {
+    vtkErrorMacro(<< "SetDepthScale: " << note << "; keeping " << this->DepthScale << ".");
+    return;
+  }
+  if (!note.empty())
+  {
+    vtkWarningMacro(<< "SetDepthScale: " << note);
+  }
+  if (depthScale != this->DepthScale)
+  {
+    this->DepthScale = depthScale;
+    this->Modified();
+  }
 }
 
 //------------------------------------------------------------------------------

@@ -57,9 +57,10 @@ public:
   ///@{
   /**
    * World depth of depth = 1 divided by the world width of the texture (dimensionless).
-   * Clamped to [0, 100]. Default is 0.05.
+   * Clamped to [0, 100], with a warning (a negative scale is 0: invert the input instead);
+   * NaN is an error and keeps the value. Default is 0.05.
    */
-  vtkSetClampMacro(DepthScale, double, 0.0, 100.0);
+  void SetDepthScale(double depthScale);
   vtkGetMacro(DepthScale, double);
   ///@}
 

@@ -71,9 +71,18 @@ TEST(ReliefProperty, UnknownNamesAreRefused)
   EXPECT_EQ(vtkReliefProperty::GetMethodFromName("Relief"), -1) << "names are case-sensitive";
   vtkNew<vtkReliefProperty> property;
   property->SetMethod(vtkReliefProperty::Interval);
+  vtkNew<mesolight_test::MessageCapture> messages;
+  messages->Watch(property);
   EXPECT_FALSE(property->SetMethodByName("no-such-method"));
+  // Said, with the names to pick from, not refused in silence.
+  EXPECT_TRUE(messages->HasError("Unknown relief method 'no-such-method'"))
+    << messages->AllErrors();
+  EXPECT_TRUE(messages->HasError("relief, interval")) << messages->AllErrors();
+  EXPECT_TRUE(messages->HasError("max-mipmap")) << messages->AllErrors();
   EXPECT_FALSE(property->SetMethodByName(nullptr));
   EXPECT_EQ(property->GetMethod(), vtkReliefProperty::Interval) << "the method is kept";
+  property->SetMethodToMaximumMipmap();
+  EXPECT_EQ(property->GetMethod(), vtkReliefProperty::MaximumMipmap);
   EXPECT_STREQ(vtkReliefProperty::GetMethodName(-1), "unknown");
   EXPECT_STREQ(vtkReliefProperty::GetMethodName(vtkReliefProperty::NumberOfMethods), "unknown");
 }
@@ -129,8 +138,19 @@ TEST(ReliefProperty, DefaultsAndClamping)
   EXPECT_EQ(property->GetMethod(), vtkReliefProperty::NumberOfMethods - 1);
   property->SetLinearSteps(0);
   EXPECT_EQ(property->GetLinearSteps(), 1);
+  vtkNew<mesolight_test::MessageCapture> messages;
+  messages->Watch(property);
   property->SetDepthScale(-1.0);
   EXPECT_EQ(property->GetDepthScale(), 0.0);
+  // Said, with what a negative scale was likely meant for.
+  EXPECT_TRUE(messages->HasWarning("is taken as 0")) << messages->AllWarnings();
+  EXPECT_TRUE(messages->HasWarning("invert it")) << messages->AllWarnings();
+  messages->Clear();
+  property->SetDepthScale(0.2);
+  EXPECT_TRUE(messages->AllWarnings().empty()) << messages->AllWarnings();
+  property->SetDepthScale(50.0);
+  EXPECT_EQ(property->GetDepthScale(), 10.0);
+  EXPECT_TRUE(messages->HasWarning("clamped to 10")) << messages->AllWarnings();
 }
 
 TEST(ReliefProperty, SharedByTwoMappers)

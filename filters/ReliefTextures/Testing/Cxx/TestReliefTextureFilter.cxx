@@ -89,6 +89,26 @@ TEST(vtkReliefTextureFilter, MatchesCoreAndStoresDepthScale)
   EXPECT_TRUE(std::equal(expected.begin(), expected.end(), relief->GetPointer(0)));
 }
 
+// The depth scale as vtkReliefProperty takes it (common/DepthScaleSetting.h): NaN refused and the
+// value kept, out-of-range values clamped and said.
+TEST(vtkReliefTextureFilter, DepthScaleOutOfRangeIsSaid)
+{
+  vtkNew<vtkReliefTextureFilter> filter;
+  vtkNew<MessageCapture> capture;
+  capture->Watch(filter);
+  filter->SetDepthScale(0.1);
+  EXPECT_TRUE(capture->AllWarnings().empty() && capture->AllErrors().empty());
+  filter->SetDepthScale(std::nan(""));
+  EXPECT_EQ(filter->GetDepthScale(), 0.1);
+  EXPECT_TRUE(capture->HasError("NaN is not a depth scale; keeping 0.1")) << capture->AllErrors();
+  filter->SetDepthScale(-0.04);
+  EXPECT_EQ(filter->GetDepthScale(), 0.0);
+  EXPECT_TRUE(capture->HasWarning("Invert Input")) << capture->AllWarnings();
+  filter->SetDepthScale(1e6);
+  EXPECT_EQ(filter->GetDepthScale(), 100.0);
+  EXPECT_TRUE(capture->HasWarning("clamped to 100")) << capture->AllWarnings();
+}
+
 TEST(vtkReliefTextureFilter, IntegerInputsAreNormalised)
 {
   vtkNew<vtkReliefTextureFilter> filter;
