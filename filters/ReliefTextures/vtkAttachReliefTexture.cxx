@@ -217,15 +217,6 @@ int vtkAttachReliefTexture::RequestUpdateExtent(
   mesolight::RequestWholeInputExtent(inputVector, 1);
   mesolight::RequestWholeInputExtent(inputVector, 2);
   mesolight::RequestWholeInputExtent(inputVector, 3);
-  for (int port = 1; port < 4; ++port)
-  {
-    if (inputVector[port]->GetNumberOfInformationObjects() > 0)
-    {
-      vtkInformation* info = inputVector[port]->GetInformationObject(0);
-      info->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), 0);
-      info->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), 1);
-    }
-  }
   return 1;
 }
 

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkReliefPlaneFilter.h"
+#include "vtkWholeExtentRequest.h"
 
 #include "vtkCellArray.h"
 #include "vtkDataArray.h"
@@ -13,6 +14,7 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
 
 #include <cmath>
 
@@ -29,6 +31,30 @@ vtkReliefPlaneFilter::vtkReliefPlaneFilter()
 int vtkReliefPlaneFilter::FillInputPortInformation(int, vtkInformation* info)
 {
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkImageData");
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkReliefPlaneFilter::SetWidth(double width)
+{
+  if (!(width > 0.0) || !std::isfinite(width))
+  {
+    vtkErrorMacro(<< "Width " << width << " is not a plane's width (a positive number of world "
+                  << "units); keeping " << this->Width << ".");
+    return;
+  }
+  if (width != this->Width)
+  {
+    this->Width = width;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+int vtkReliefPlaneFilter::RequestUpdateExtent(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
+{
+  mesolight::RequestWholeInputExtent(inputVector);
   return 1;
 }
 
@@ -84,6 +110,13 @@ int vtkReliefPlaneFilter::RequestData(
     vtkErrorMacro("The input image is empty: it has no texels to take the plane's proportions "
                   "from.");
     return 0;
+  }
+  // One quad: piece 0 has it, the other pieces (MPI ranks) are empty.
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  if (outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()) > 0)
+  {
+    output->Initialize();
+    return 1;
   }
   const double x = 0.5 * this->Width;
   const double y = 0.5 * this->Width * GetGroundProportions(image);

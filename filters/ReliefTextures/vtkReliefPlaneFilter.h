@@ -18,6 +18,9 @@
  * coordinates, this one included.
  *
  * Errors (no output): no input image, or an image without points.
+ *
+ * In parallel (pieces, MPI ranks) the quad is piece 0's; other pieces are empty. Each asks for
+ * the whole image, as piece 0 of 1 (common/vtkWholeExtentRequest.h).
  */
 #ifndef vtkReliefPlaneFilter_h
 #define vtkReliefPlaneFilter_h
@@ -36,9 +39,10 @@ public:
 
   ///@{
   /**
-   * The plane's width along +x, in world units. Default 1 (ParaView's Plane is 1 wide).
+   * The plane's width along +x, in world units. Default 1 (ParaView's Plane is 1 wide). A width
+   * that is not a positive finite number is an error and keeps the width.
    */
-  vtkSetClampMacro(Width, double, 1e-12, VTK_DOUBLE_MAX);
+  void SetWidth(double width);
   vtkGetMacro(Width, double);
   ///@}
 
@@ -56,6 +60,8 @@ protected:
   ~vtkReliefPlaneFilter() override = default;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestUpdateExtent(vtkInformation* request, vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
   int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
     vtkInformationVector* outputVector) override;
 
