@@ -309,6 +309,14 @@ bool mlShadowed(vec3 hit, vec3 spanUpPerDepth)
   }
 #endif
   float t = mlTraceMaxMipmap(origin + vec3(0.0, 0.0, -bias), span, mlLinearSteps, 1.0);
+  if (mlTraceOutOfIterations)
+  {
+    // The budget ran out on the way (a ray skimming a broad, nearly flat top walks many cells
+    // just above it); where it stopped is not an occluder. The rest of the way is marched as
+    // the linear search would: a budget spent is not a shadow (a dark speck at a dome's apex).
+    vec3 from = origin + t * span;
+    return mlShadowedLinear(from, hit - from, hit, bias, mlLinearSteps);
+  }
   return t < 1.0 - 1e-3;
 #else
   // The linear search's budget: mlLinearSteps per unit of depth travelled, so a shallow hit costs

@@ -89,7 +89,9 @@ bool mlMeetsCell(vec3 origin, vec3 span, vec2 dx, vec2 a0, vec4 d, float s0, flo
 // walk of at most 2^(ML_PYRAMID_FIRST_LEVEL - 1) cells per axis) without fetching the parent
 // again. (The levels in between are not stored, so the pyramid costs 1/12 byte per texel in
 // the compact storage, and the default's upload stays a tenth of the dense mesh's.) maxIterations bounds the work; past tEnd (<= 1) the ray is of no interest
-// and the trace returns 1.
+// and the trace returns 1. A trace that spends maxIterations before either returns where it
+// got to and sets mlTraceOutOfIterations: that point is above the surface, not a hit.
+bool mlTraceOutOfIterations = false;
 // The loop body has one texture fetch and no square root or division: on SIMD hardware that
 // runs fragments in lock step (and on llvmpipe, which executes every branch any lane takes) an
 // iteration costs the sum of its branches, so the level-0 test shares the iteration's fetch and
@@ -120,6 +122,7 @@ float mlTraceMaxMipmap(vec3 origin, vec3 span, int maxIterations, float tEnd)
   }
   // Past a cell boundary by a thousandth of a cell, so float rounding cannot keep the ray in it.
   float nudge = min(1e-3 / max(max(abs(dx.x), abs(dx.y)), 1e-6), 1e-5);
+  mlTraceOutOfIterations = false;
   ivec2 hitCell = ivec2(-1);
   vec4 hitDepths = vec4(0.0);
   float hitStart = 0.0, hitEnd = 1.0;
@@ -231,6 +234,7 @@ float mlTraceMaxMipmap(vec3 origin, vec3 span, int maxIterations, float tEnd)
     float s = mlIntersectCell(origin, span, hitCell, hitDepths, hitStart, hitEnd);
     return s >= 0.0 ? s : hitStart;
   }
+  mlTraceOutOfIterations = true;
   return t;
 }
 

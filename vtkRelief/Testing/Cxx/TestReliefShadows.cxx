@@ -123,16 +123,17 @@ double TrulyShadowedShare(const ReliefReference& reference)
   return covered > 0 ? 100.0 * double(shadowed) / covered : 0.0;
 }
 
-double ShadowMismatch(const char* method, int linearSteps, bool shadows, double* shadowedShare)
+double ShadowMismatch(const char* method, int linearSteps, bool shadows, double* shadowedShare,
+  double depthScale = 0.15, double lightElevation = 25.0)
 {
   ReliefSceneOptions o;
   o.Pattern = "HemisphereTorus";
   o.Resolution = 256;
   o.Width = o.Height = 320;
-  o.DepthScale = 0.15;
+  o.DepthScale = depthScale;
   o.ViewAngle = 45.0;
   o.ViewDistance = 2.2;
-  o.LightElevation = 25.0;
+  o.LightElevation = lightElevation;
   o.Lights = 1;
   o.Method = method;
   o.LinearSteps = linearSteps;
@@ -165,6 +166,22 @@ TEST(ReliefShadows, PerPixelVisibilityMatchesExactTracing)
   EXPECT_LT(ShadowMismatch("cone", 16, true, &shadowed), 1.0);
   // Negative: without the shadow march the mismatch is the whole shadowed share.
   EXPECT_GT(ShadowMismatch("relief", 16, false, &shadowed), 0.8 * shadowed);
+}
+
+// The default's iteration budget (64) spent by a shadow ray is not a shadow. Rays that skim a
+// dome's broad, nearly flat top walk many level-0 cells just above it and used to run out and
+// report the hit shadowed: dark specks at the apex (ParaView's first relief showed one). Where the
+// budget runs out the rest of the way is marched linearly; with the default budget the shadows
+// must agree with exact tracing as well as with 1024 iterations.
+TEST(ReliefShadows, ASpentIterationBudgetIsNotAShadow)
+{
+  // A light 10 degrees above the wall. Measured: 0.261% with 1024 iterations and with 64; with
+  // 64 before, 0.321% (the spent budgets; at depth 0.05 and at 25-60 degrees no ray ran out).
+  double shadowed = 0.0;
+  const double ample = ShadowMismatch("max-mipmap", 1024, true, &shadowed, 0.15, 10.0);
+  const double budget = ShadowMismatch("max-mipmap", 64, true, &shadowed, 0.15, 10.0);
+  EXPECT_LT(ample, 0.5);
+  EXPECT_LE(budget, ample + 0.01);
 }
 
 // Self-shadowing under point and spot lights against exact visibility: the direction to the
