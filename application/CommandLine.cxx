@@ -118,7 +118,8 @@ bool CommandLine::Parse(const std::vector<std::string>& args, std::string& error
     auto it = this->Options.find(name);
     if (it == this->Options.end())
     {
-      error = "unknown option '" + name + "' (see --help)";
+      error = "unknown option '" + name + "' (" +
+        (this->UnknownOptionHint.empty() ? "see --help" : this->UnknownOptionHint) + ")";
       return false;
     }
     if (it->second.TakesValue)

@@ -29,6 +29,9 @@ public:
     const std::string& defaultValue = "");
   /** Declares a flag without a value. */
   void AddFlag(const std::string& name, const std::string& help);
+  /** What an unknown option's error suggests instead of "see --help" (e.g. the mode that has
+   *  it). */
+  void SetUnknownOptionHint(const std::string& hint) { this->UnknownOptionHint = hint; }
 
   /** Parses args; positional arguments are kept in order. False with a message on error. */
   bool Parse(const std::vector<std::string>& args, std::string& error);
@@ -129,6 +132,7 @@ private:
   std::map<std::string, std::string> Values;
   std::map<std::string, std::vector<std::string>> AllValues;
   std::vector<std::string> PositionalArgs;
+  std::string UnknownOptionHint;
 };
 
 /**

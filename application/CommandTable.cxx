@@ -65,7 +65,9 @@ int DispatchCommand(const std::string& prefix, const std::vector<Command>& table
                          : DispatchCommand(prefix + " " + command.Name, command.Subcommands, rest);
     }
   }
-  if (fallback)
+  // The unnamed command takes options only: a word first is a subcommand's name mistyped, not
+  // a reason to run the default (`bench foo` ran the two-minute relief benchmark).
+  if (fallback && (args.empty() || args[0].rfind('-', 0) == 0))
   {
     return fallback->Run(args);
   }

@@ -110,6 +110,13 @@ int RunBakeCommand(const std::vector<std::string>& args)
   {
     return cl.UsageError("--out: " + problem);
   }
+  const std::string format =
+    CheckOutputExtension(cl, { "--out" }, { ".exr", ".tif", ".tiff", ".png" },
+      "a relief texture holds its depth in alpha, which JPEG and the like drop");
+  if (!format.empty())
+  {
+    return cl.UsageError(format);
+  }
 
   vtkNew<vtkOIIOImageReader> reader;
   reader->SetFileName(in.c_str());

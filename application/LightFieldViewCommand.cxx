@@ -299,6 +299,10 @@ int Render(const std::vector<std::string>& args)
       return 2;
     }
   }
+  if (const std::string format = CheckImageOutputNames(cl); !format.empty())
+  {
+    return cl.UsageError(format);
+  }
   if (vlf::FileExists(out) && !cl.Has("--force"))
   {
     std::cerr << command << ": '" << out << "' exists; add --force to replace it\n";
@@ -600,6 +604,16 @@ int View(const std::vector<std::string>& args)
   {
     std::cerr << command << ": " << error << "\n";
     return 2;
+  }
+  // Without frames the window waits for the user: with no window (--offscreen) it would wait
+  // for ever, and keys would never be pressed.
+  for (const char* option : { "--offscreen", "--keys" })
+  {
+    if (cl.Has(option) && frames < 1)
+    {
+      std::cerr << command << ": " << option << " needs --frames N (N >= 1)\n";
+      return 2;
+    }
   }
   std::vector<double> drag;
   if (cl.Has("--drag") &&

@@ -3,6 +3,9 @@
 
 #include "CommandLine.h"
 
+#include <algorithm>
+#include <cctype>
+
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -94,6 +97,43 @@ std::string CheckOutputOptions(
     }
   }
   return "";
+}
+
+std::string CheckOutputExtension(const CommandLine& cl, const std::vector<std::string>& names,
+  const std::vector<std::string>& extensions, const std::string& advice)
+{
+  for (const std::string& name : names)
+  {
+    if (!cl.Has(name))
+    {
+      continue;
+    }
+    std::string file = cl.Get(name);
+    std::transform(file.begin(), file.end(), file.begin(),
+      [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    const bool known = std::any_of(extensions.begin(), extensions.end(),
+      [&](const std::string& e)
+      { return file.size() > e.size() && file.compare(file.size() - e.size(), e.size(), e) == 0; });
+    if (!known)
+    {
+      std::string list;
+      for (const std::string& e : extensions)
+      {
+        list += (list.empty() ? "" : (&e == &extensions.back() ? " or " : ", ")) + e;
+      }
+      return name + ": '" + cl.Get(name) + "' does not end in " + list + ": " + advice;
+    }
+  }
+  return "";
+}
+
+std::string CheckImageOutputNames(const CommandLine& cl)
+{
+  const std::string png = CheckOutputExtension(cl, { "--out" }, { ".png" },
+    "the image is written as a PNG (--exr FILE.exr for the linear radiance)");
+  return !png.empty() ? png
+                      : CheckOutputExtension(cl, { "--exr", "--relief-mask" }, { ".exr" },
+                          "the linear images are written as OpenEXR");
 }
 
 } // namespace mesolight

@@ -29,6 +29,19 @@ class CommandLine;
 std::string CheckOutputOptions(
   const CommandLine& cl, const std::vector<std::string>& names, std::vector<std::string> inputs);
 
+/**
+ * "" when none of the options `names` was given, or each names a file ending in one of
+ * `extensions` (with the dot, compared without case), else "--out: 'r.exr' does not end in .png: "
+ * followed by `advice`. A writer picks its format by the command, not by the name: a PNG written
+ * as r.exr, or a relief texture as a JPEG (no alpha: the depth lost), would be found out later.
+ */
+std::string CheckOutputExtension(const CommandLine& cl, const std::vector<std::string>& names,
+  const std::vector<std::string>& extensions, const std::string& advice);
+
+/** CheckOutputExtension for the commands that render: --out a .png (the display image), --exr
+ *  and --relief-mask .exr (linear). */
+std::string CheckImageOutputNames(const CommandLine& cl);
+
 } // namespace mesolight
 
 #endif

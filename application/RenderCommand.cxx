@@ -50,9 +50,9 @@ void AddSceneOptions(CommandLine& cl)
     "(the mapper's default: exact)",
     "max-mipmap");
   cl.AddValue("--linear-steps", "N",
-    "linear search steps (cone steps; iterations for iterative parallax and max-mipmap, "
-    "which defaults to 64, the mapper's default)",
-    "10");
+    "linear search steps (cone steps; iterations for iterative parallax and max-mipmap). "
+    "Default: 64 iterations for max-mipmap (the default method, as the mapper's), 10 for the "
+    "other methods");
   cl.AddValue("--refinement-steps", "N", "binary / interval / secant refinement steps", "8");
   cl.AddFlag("--adaptive-steps", "fewer linear steps head-on, --linear-steps at grazing angles");
   cl.AddFlag("--level-of-detail",
@@ -305,7 +305,7 @@ int RunRenderCommand(const std::vector<std::string>& args)
     "when a display is available.\nKeys: m method, +/- steps, [ ] depth, x shadows, o "
     "silhouettes, z depth write, q quit.\n");
   AddSceneOptions(cl);
-  cl.AddValue("--out", "FILE", "PNG to write", "mesolight-render.png");
+  cl.AddValue("--out", "FILE.png", "PNG to write", "mesolight-render.png");
   cl.AddFlag("--offscreen", "only write the PNG, never open a window");
   cl.AddValue("--geometry-image", "FILE",
     "relief on a geometry image's mesh: RGB = XYZ image or "
@@ -326,12 +326,17 @@ int RunRenderCommand(const std::vector<std::string>& args)
     return 2;
   }
   const std::string out = cl.Get("--out");
-  const std::string problem = CheckOutputFile(out,
+  std::string problem = CheckOutputFile(out,
     { options.DepthFile, options.Environment, options.LightsCsv, cl.Get("--geometry-image"),
       cl.Get("--color") });
   if (!problem.empty())
   {
     return cl.UsageError("--out: " + problem);
+  }
+  problem = CheckImageOutputNames(cl);
+  if (!problem.empty())
+  {
+    return cl.UsageError(problem);
   }
 
   ReliefScene scene;

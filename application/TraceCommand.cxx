@@ -289,6 +289,10 @@ int RunTraceCommand(const std::vector<std::string>& args)
         { compare, cl.Get("--out"), cl.Get("--exr"), sceneFile, materialFile });
     }
   }
+  if (problem.empty())
+  {
+    problem = CheckImageOutputNames(cl);
+  }
   if (!problem.empty())
   {
     return cl.UsageError(problem);

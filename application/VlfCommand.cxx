@@ -112,6 +112,9 @@ int Render(const std::vector<std::string>& args)
     "normal, direct light from the field's emitters with the relief's self-shadowing");
   cl.AddValue("--relief-depth-scale", "K",
     "world depth of depth 1 over the world width of the relief's texture", "0.05");
+  // --help lists the --mode renderer's options too (--tone-map, --object, ...): say they need it.
+  cl.SetUnknownOptionHint(
+    "see --help: the options listed under 'With --mode' need --mode MODE, the GPU renderer");
   std::string error;
   int exitCode = 0;
   if (!cl.ParseArguments(args, exitCode))
@@ -133,7 +136,11 @@ int Render(const std::vector<std::string>& args)
       inputs.push_back(item.substr(equals + 1));
     }
   }
-  const std::string problem = CheckOutputOptions(cl, { "--out", "--exr" }, inputs);
+  std::string problem = CheckOutputOptions(cl, { "--out", "--exr" }, inputs);
+  if (problem.empty())
+  {
+    problem = CheckImageOutputNames(cl);
+  }
   if (!problem.empty())
   {
     return cl.UsageError(problem);

@@ -66,6 +66,17 @@ public:
     }
     std::cerr << "mesolight: " << mesolight::NameOwnOptions(mesolight::CleanVTKMessage(message))
               << "\n";
+    // VTK's X window aborts (SIGABRT, a core) right after this message when there is no X
+    // server, even for offscreen rendering (Debian's VTK has no EGL or OSMesa): end the command
+    // with an ordinary error and the way out instead.
+    if (message.find("bad X server connection") != std::string::npos)
+    {
+      std::cerr << "mesolight: no X display to render with (DISPLAY='"
+                << (std::getenv("DISPLAY") ? std::getenv("DISPLAY") : "")
+                << "'); run the command under scripts/xvfb.sh or xvfb-run -a\n";
+      std::cerr.flush();
+      std::_Exit(1);
+    }
   }
 };
 vtkStandardNewMacro(ConsoleOutputWindow);

@@ -224,6 +224,11 @@ vtkSmartPointer<vtkImageData> LoadEnvironment(const std::string& spec, std::stri
     map->DeepCopy(sky->GetOutput());
     return map;
   }
+  if (spec.rfind("procedural:", 0) == 0)
+  {
+    error = "unknown procedural map '" + spec + "' (expected procedural:sky or procedural:sun)";
+    return nullptr;
+  }
   vtkNew<vtkOIIOImageReader> reader;
   reader->AddObserver(vtkCommand::ErrorEvent, errors);
   reader->SetFileName(spec.c_str());

@@ -138,3 +138,36 @@ file(STRINGS "${WORK}/box.mtl" emitters REGEX "^Ke [1-9]")
 if (NOT emitters)
   message(FATAL_ERROR "box.mtl has no emitter")
 endif ()
+
+# 11. A writer's format is the command's, not the file name's: a PNG named r.exr, or a relief
+# texture as a JPEG (its depth, in alpha, lost), is refused before any work, and nothing is
+# written. A mistyped benchmark name is an unknown subcommand, not the default benchmark; a
+# window that would wait for ever for a user (vlf view with no window, no frames) is refused.
+cli_expect_error(2 "does not end in .png" render --offscreen --size 32x32 --out "${WORK}/r.exr")
+cli_expect_error(2 "depth in alpha" bake "${user}" --out "${WORK}/relief.jpg")
+cli_expect_error(2 "does not end in .png"
+  trace --offscreen --scene cornell --width 8 --height 8 --samples 1 --out "${WORK}/t.exr")
+cli_expect_error(2 "does not end in .exr"
+  trace --offscreen --scene cornell --width 8 --height 8 --samples 1 --exr "${WORK}/t2.png")
+cli_expect_error(2 "does not end in .png" vlf render "${WORK}/field.vlf" --out "${WORK}/v.exr")
+cli_expect_error(2 "does not end in .png"
+  vlf render "${WORK}/field.vlf" --mode geometry --out "${WORK}/v.jpg")
+foreach (file r.exr relief.jpg t.exr t2.png v.exr v.jpg)
+  if (EXISTS "${WORK}/${file}")
+    message(FATAL_ERROR "${file} was written")
+  endif ()
+endforeach ()
+cli_expect_error(2 "unknown subcommand 'foo'" bench foo --csv "${WORK}/bench.csv")
+cli_expect_error(2 "--offscreen needs --frames" vlf view "${WORK}/field.vlf" --offscreen)
+cli_expect_error(2 "--keys needs --frames" vlf view "${WORK}/field.vlf" --keys abc)
+# Without an X server VTK's window aborts (SIGABRT): an ordinary error naming the way out.
+set(display "$ENV{DISPLAY}")
+unset(ENV{DISPLAY})
+cli_expect_error(1 "run the command under scripts/xvfb.sh"
+  render --offscreen --size 32x32 --out "${WORK}/no-display.png")
+set(ENV{DISPLAY} "${display}")
+# An unknown procedural environment is not a missing file; a --mode option without --mode says so.
+cli_expect_error(1 "expected procedural:sky or procedural:sun"
+  render --offscreen --size 32x32 --environment procedural:foo --out "${WORK}/sky.png")
+cli_expect_error(2 "need --mode MODE"
+  vlf render "${WORK}/field.vlf" --out "${WORK}/tone.png" --tone-map reinhard)
