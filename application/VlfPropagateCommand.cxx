@@ -482,7 +482,8 @@ int Propagate(const std::vector<std::string>& args)
       }
       else
       {
-        std::cout << "; memory up to " << estimate.Describe() << "\n";
+        std::cout << "; memory " << (estimate.SampleStride > 1 ? "" : "up to ")
+                  << estimate.Describe() << "\n";
       }
       const Clock::time_point start = Clock::now();
       field = vlf::LightField::Build(scene, settings,

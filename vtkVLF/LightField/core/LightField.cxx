@@ -437,18 +437,19 @@ void LightField::Setup(
   {
     this->TexelTotal += s.TexelCount();
   }
-  this->EstimateUsed = EstimateFor(
-    this->NormalizedScene, this->SurfaceList, *this->DirectionsPtr, settings, this->AnySpecular);
+  this->EstimateUsed = EstimateWithinBudget(this->NormalizedScene, this->SurfaceList,
+    *this->DirectionsPtr, settings, this->AnySpecular, this->BudgetShareRanks);
   // A distributed field holds about 1/ranks of the maps on each rank (Distribution.h).
   if (this->EstimateUsed.TotalBytes - this->EstimateUsed.MapBytes +
       this->EstimateUsed.MapBytes / this->BudgetShareRanks >
     settings.MemoryBudget)
   {
     std::ostringstream message;
-    message << "the light field would need up to " << this->EstimateUsed.Describe() << " for "
-            << settings.Directions << " directions x " << settings.RaysPerSide << "x"
-            << settings.RaysPerSide << " rays, above the memory budget of "
-            << FormatBytes(settings.MemoryBudget)
+    message << "the light field would need "
+            << (this->EstimateUsed.SampleStride > 1 ? "" : "up to ")
+            << this->EstimateUsed.Describe() << " for " << settings.Directions << " directions x "
+            << settings.RaysPerSide << "x" << settings.RaysPerSide
+            << " rays, above the memory budget of " << FormatBytes(settings.MemoryBudget)
             << "; use fewer directions or rays per side, or raise the budget";
     throw MemoryBudgetError(message.str());
   }

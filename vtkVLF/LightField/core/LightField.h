@@ -201,14 +201,19 @@ struct MemoryEstimate
   // afterwards beside the propagated ones), triangle lists
   std::uint64_t GatherBytes = 0;
   std::uint64_t TotalBytes = 0;
+  // 1: counted on every direction. n > 1: on 1 in n, scaled (a field far over its budget:
+  // EstimateWithinBudget); Describe() then says "about".
+  std::size_t SampleStride = 1;
   std::string Describe() const; // "1.23 GiB (maps 1.2 GiB for 2.1e7 cells, textures 3 MiB)"
 };
 
 // Bytes needed by a LightField for the scene (normalised to the unit sphere first, as Build
 // does) and settings while it propagates, computed without allocating the structure: the maps'
 // crossings and (tile, surface) pairs counted from the projected triangles, so within a few
-// percent of what Build allocates (AllocatedBytes) plus propagation's receive buffers. Throws
-// std::invalid_argument for unusable settings or an empty scene.
+// percent of what Build allocates (AllocatedBytes) plus propagation's receive buffers. A field
+// of many directions far over settings.MemoryBudget is counted on a sample of its directions
+// only (SampleStride): enough to refuse it, as Build does, without the exact count's minute.
+// Throws std::invalid_argument for unusable settings or an empty scene.
 MemoryEstimate EstimateMemory(const TriangleScene& scene, const LightFieldSettings& settings);
 
 class Reducer; // Distribution.h

@@ -263,6 +263,34 @@ TEST(VLFLightField, RefusesOverBudgetBeforeAllocating)
   EXPECT_THROW(LightField::Build(cornell, settings), MemoryBudgetError);
 }
 
+// A field far over its budget is estimated on 1 in 64 of its directions (and refused on that):
+// the sample is within a few per cent of the exact count, and a field within the budget gets
+// the exact count.
+TEST(VLFLightField, FarOverBudgetIsEstimatedOnASampleOfDirections)
+{
+  const TriangleScene cornell = MakeCornellBox();
+  LightFieldSettings settings;
+  settings.Directions = 2049;
+  settings.RaysPerSide = 64;
+  settings.TilesPerSide = 4;
+  const MemoryEstimate exact = EstimateMemory(cornell, settings);
+  EXPECT_EQ(exact.SampleStride, 1u) << exact.Describe();
+  settings.MemoryBudget = exact.TotalBytes / 4;
+  const MemoryEstimate sampled = EstimateMemory(cornell, settings);
+  EXPECT_EQ(sampled.SampleStride, 64u) << sampled.Describe();
+  EXPECT_NEAR(static_cast<double>(sampled.TotalBytes), static_cast<double>(exact.TotalBytes),
+    0.05 * static_cast<double>(exact.TotalBytes));
+  EXPECT_NE(sampled.Describe().find("about"), std::string::npos) << sampled.Describe();
+  const std::string message = MessageOf([&] { LightField::Build(cornell, settings); });
+  EXPECT_NE(message.find("counted on 1 in 64 directions"), std::string::npos) << message;
+  // Over the budget but not 1.5 times over it: the exact count decides.
+  settings.MemoryBudget = exact.TotalBytes * 9 / 10;
+  const MemoryEstimate near = EstimateMemory(cornell, settings);
+  EXPECT_EQ(near.SampleStride, 1u);
+  EXPECT_EQ(near.TotalBytes, exact.TotalBytes);
+  EXPECT_THROW(LightField::Build(cornell, settings), MemoryBudgetError);
+}
+
 TEST(VLFLightField, RejectsBadSettingsAndScenes)
 {
   const TriangleScene cornell = MakeCornellBox();
