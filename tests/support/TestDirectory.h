@@ -24,6 +24,18 @@ inline std::filesystem::path TestDirectory()
   return dir;
 }
 
+/// A file of the current test: `name` in the test's own directory under MESOLIGHT_TEST_TEMP_DIR
+/// (created if missing, not emptied). ctest runs each test in its own process, in parallel: a
+/// name shared by two tests of one executable was a race between them.
+inline std::string TestPath(const std::string& name)
+{
+  const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
+  std::filesystem::path dir = std::filesystem::path(MESOLIGHT_TEST_TEMP_DIR) /
+    (std::string(info->test_suite_name()) + "." + info->name());
+  std::filesystem::create_directories(dir);
+  return (dir / name).string();
+}
+
 } // namespace mesolight_test
 
 #endif

@@ -4,6 +4,7 @@
 // and corrupt files.
 #include "Propagation.h"
 #include "Snapshot.h"
+#include "TestDirectory.h"
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
@@ -32,7 +33,7 @@ using namespace mesolight::vlf;
 
 std::string TempPath(const std::string& name)
 {
-  return std::string(MESOLIGHT_TEST_TEMP_DIR) + "/" + name;
+  return mesolight_test::TestPath(name);
 }
 
 // mirror: the box with a mirror, whose maps store their radiance (LightField::SentRadiance).

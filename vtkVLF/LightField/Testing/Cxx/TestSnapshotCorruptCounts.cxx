@@ -5,6 +5,7 @@
 // error (or a capped budget), never a crash or an allocation the file does not justify.
 #include "MemoryBudget.h"
 #include "Snapshot.h"
+#include "TestDirectory.h"
 
 #include <gtest/gtest.h>
 
@@ -32,7 +33,7 @@ constexpr std::size_t FirstPositionAt = 57;
 
 std::string TempPath(const std::string& name)
 {
-  return std::string(MESOLIGHT_TEST_TEMP_DIR) + "/" + name;
+  return mesolight_test::TestPath(name);
 }
 
 // The payload of a small valid field (its 48-byte header stripped).

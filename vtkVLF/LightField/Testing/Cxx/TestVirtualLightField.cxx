@@ -5,6 +5,7 @@
 // foreign file, the irradiance query, PrintSelf; the radiance atlas it attaches for drawing
 // (bilinear at each vertex's atlas coordinates = the vertex's Radiance); an empty parallel piece;
 // ContactTexelHalvings on a box standing on a floor.
+#include "TestDirectory.h"
 #include "vtkVirtualLightFieldCore.h"
 
 #include "AutomaticSettings.h"
@@ -65,7 +66,7 @@ public:
 
 std::string TempPath(const std::string& name)
 {
-  return std::string(MESOLIGHT_TEST_TEMP_DIR) + "/" + name;
+  return mesolight_test::TestPath(name);
 }
 
 void SmallSettings(vtkVirtualLightField* filter)
