@@ -174,14 +174,17 @@ int vtkOIIOImageReader::RequestData(
   scalars->SetName("ImageScalars");
 
   bool complete = false;
+  std::string warning;
   try
   {
-    complete = mesolight::ReadImageFilePixels(this->FileName, header, scalars->GetVoidPointer(0),
+    complete = mesolight::ReadImageFilePixels(
+      this->FileName, header, scalars->GetVoidPointer(0),
       [this](float portionDone)
       {
         this->UpdateProgress(portionDone);
         return this->GetAbortExecute() != 0;
-      });
+      },
+      &warning);
   }
   catch (const mesolight::ImageFileError& e)
   {
@@ -197,6 +200,10 @@ int vtkOIIOImageReader::RequestData(
   {
     output->Initialize();
     return 1;
+  }
+  if (!warning.empty())
+  {
+    vtkWarningMacro(<< warning);
   }
   if (header.HasNoDataValue)
   {

@@ -450,8 +450,12 @@ ImageFileInfo ReadImageFileInfo(const std::string& path, std::int64_t memoryBudg
 
 //------------------------------------------------------------------------------
 bool ReadImageFilePixels(const std::string& path, const ImageFileInfo& info, void* pixels,
-  const std::function<bool(float)>& progress)
+  const std::function<bool(float)>& progress, std::string* warning)
 {
+  if (warning)
+  {
+    warning->clear();
+  }
   if (IsSrtmHeightFileName(path))
   {
     const ImageFileInfo now = ReadSrtmTileInfo(path, 0);
@@ -509,7 +513,8 @@ bool ReadImageFilePixels(const std::string& path, const ImageFileInfo& info, voi
   const bool ok =
     in->read_image(0, 0, 0, info.Channels, format, lastRow, OIIO::AutoStride, -rowBytes,
       OIIO::AutoStride, &ProgressTrampoline, const_cast<std::function<bool(float)>*>(&watch));
-  const std::string oiioError = OneLineMessage(in->geterror());
+  const std::string decoderMessage = in->geterror();
+  const std::string oiioError = OneLineMessage(decoderMessage);
   Close(*in);
   if (stopped)
   {
@@ -520,6 +525,12 @@ bool ReadImageFilePixels(const std::string& path, const ImageFileInfo& info, voi
     Refuse(ImageFileStatus::FileFormat,
       "Cannot read the pixels of image '" + path +
         "': the file is truncated or corrupt (OpenImageIO: " + oiioError + ").");
+  }
+  if (warning && !decoderMessage.empty())
+  {
+    const bool stop = oiioError.back() == '.';
+    *warning = "Image '" + path + "' was read, but its decoder reported a problem: " + oiioError +
+      (stop ? " " : ". ") + "Part of it may be missing or wrong (a truncated file's last rows).";
   }
   return true;
 }

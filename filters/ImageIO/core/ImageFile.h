@@ -117,10 +117,12 @@ MESOLIGHTIMAGEIO_EXPORT ImageFileInfo ReadImageFileInfo(
  * interleaved channels. progress(portion done) may return true to stop: then returns false
  * (the pixels are incomplete), else true. Throws ImageFileError (FileFormat) for a file whose
  * header no longer matches `info` or whose pixels are truncated or corrupt, and as
- * ReadImageFileInfo for a file that no longer opens.
+ * ReadImageFileInfo for a file that no longer opens. A read the decoder finished but complained
+ * about (a truncated baseline JPEG: libjpeg fills the missing rows and says "Premature end of
+ * JPEG file") sets `warning`, when given, to one line; otherwise it is left empty.
  */
 MESOLIGHTIMAGEIO_EXPORT bool ReadImageFilePixels(const std::string& path, const ImageFileInfo& info,
-  void* pixels, const std::function<bool(float)>& progress = {});
+  void* pixels, const std::function<bool(float)>& progress = {}, std::string* warning = nullptr);
 
 /**
  * The header of an SRTM height tile (`.hgt`, SrtmHeightFile.h), which ReadImageFileInfo reads for

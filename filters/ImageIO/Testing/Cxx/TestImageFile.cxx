@@ -264,6 +264,47 @@ TEST(ImageFile, TruncatedPixelsAreRefused)
   EXPECT_NE(message.find("truncated or corrupt"), std::string::npos) << message;
 }
 
+// A baseline JPEG cut short decodes "successfully" (libjpeg fills the missing rows), with a
+// complaint OpenImageIO keeps: the read is a warning, not silence. The whole file: none.
+TEST(ImageFile, ADecodersComplaintIsAWarning)
+{
+  const fs::path dir = mesolight_test::TestDirectory();
+  const int side = 64;
+  std::vector<unsigned char> values(static_cast<std::size_t>(side) * side);
+  for (std::size_t i = 0; i < values.size(); ++i)
+  {
+    values[i] = static_cast<unsigned char>((i * 37) % 251); // noise: no run compresses away
+  }
+  {
+    auto out = OIIO::ImageOutput::create((dir / "whole.jpg").string());
+    ASSERT_TRUE(out);
+    ASSERT_TRUE(out->open((dir / "whole.jpg").string(),
+                  OIIO::ImageSpec(side, side, 1, OIIO::TypeDesc::UINT8)) &&
+      out->write_image(OIIO::TypeDesc::UINT8, values.data()) && out->close());
+  }
+  fs::copy_file(dir / "whole.jpg", dir / "cut.jpg");
+  fs::resize_file(dir / "cut.jpg", fs::file_size(dir / "whole.jpg") / 2);
+  for (const char* name : { "whole.jpg", "cut.jpg" })
+  {
+    ImageFileInfo info;
+    std::string message;
+    ASSERT_EQ(Info(dir / name, info, message), Accepted) << message;
+    std::vector<unsigned char> pixels(static_cast<std::size_t>(info.ByteSize()));
+    std::string warning;
+    EXPECT_TRUE(
+      mesolight::ReadImageFilePixels((dir / name).string(), info, pixels.data(), {}, &warning));
+    if (std::string(name) == "cut.jpg")
+    {
+      EXPECT_NE(warning.find("Premature end of JPEG file"), std::string::npos) << warning;
+      EXPECT_NE(warning.find("may be missing"), std::string::npos) << warning;
+    }
+    else
+    {
+      EXPECT_TRUE(warning.empty()) << warning;
+    }
+  }
+}
+
 TEST(ImageFile, AFileThatChangedAfterItsHeaderIsRefused)
 {
   const fs::path dir = mesolight_test::TestDirectory();
