@@ -207,11 +207,16 @@ int vtkVirtualLightField::RequestData(
                                            << this->MaxIterations << ") in [1, 10000].");
     return 0;
   }
-  if (this->Directions < 0 || this->RaysPerSide < 0 || this->MemoryBudget <= 0)
+  if (this->Directions < 0 || this->RaysPerSide < 0)
   {
     vtkErrorMacro("Directions (" << this->Directions << ") and RaysPerSide (" << this->RaysPerSide
-                                 << ") must be positive or 0 (automatic), MemoryBudget ("
-                                 << this->MemoryBudget << ") positive.");
+                                 << ") must be positive or 0 (automatic).");
+    return 0;
+  }
+  if (this->MemoryBudget <= 0)
+  {
+    vtkErrorMacro(
+      "The memory budget must be positive (it is " << this->GetMemoryBudgetMiB() << " MiB).");
     return 0;
   }
   const std::string contactProblem = this->CheckContactTexelHalvings();

@@ -160,8 +160,8 @@ DirectionSet DirectionSet::WithCount(std::size_t count)
       return DirectionSet(static_cast<int>(n));
     }
   }
-  throw std::invalid_argument(
-    "DirectionSet: " + std::to_string(count) + " directions is not 2n^2+1 (use 513, 2049 or 8193)");
+  throw std::invalid_argument(std::to_string(count) +
+    " directions: a direction set holds 2n^2+1 (33, 129, 513, 2049 or 8193)");
 }
 
 bool DirectionSet::ToUpperHemisphere(const glm::vec3& unit, glm::dvec3& upper)

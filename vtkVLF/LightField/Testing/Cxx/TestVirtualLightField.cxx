@@ -379,6 +379,21 @@ TEST(VLFVirtualLightField, AutomaticDirectionsFollowTheLines)
   filter->Update();
   EXPECT_TRUE(messages->HasError("must be positive or 0 (automatic)")) << messages->AllErrors();
   EXPECT_EQ(vtkVirtualLightFieldCore::GetLightField(filter), nullptr);
+  // In the units the user set, naming nothing internal.
+  filter->SetDirections(33);
+  const double budget = filter->GetMemoryBudgetMiB();
+  filter->SetMemoryBudgetMiB(0.0);
+  messages->Clear();
+  filter->Update();
+  EXPECT_TRUE(messages->HasError("memory budget must be positive (it is 0 MiB)"))
+    << messages->AllErrors();
+  filter->SetMemoryBudgetMiB(budget);
+  filter->SetDirections(7);
+  messages->Clear();
+  filter->Update();
+  EXPECT_TRUE(messages->HasError("7 directions: a direction set holds 2n^2+1"))
+    << messages->AllErrors();
+  EXPECT_FALSE(messages->HasError("DirectionSet")) << messages->AllErrors();
 }
 
 // ContactTexelHalvings (LightFieldSettings::ContactTexelHalvings) on a box standing on a floor:
