@@ -11,7 +11,9 @@
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <iostream>
 #include <sstream>
 
 namespace mesolight
@@ -124,6 +126,20 @@ void SetCornellCamera(vtkCamera* camera)
   camera->SetFocalPoint(c.FocalPoint.x, c.FocalPoint.y, c.FocalPoint.z);
   camera->SetViewUp(c.ViewUp.x, c.ViewUp.y, c.ViewUp.z);
   camera->SetViewAngle(c.ViewAngleDegrees);
+}
+
+void WarnIfAllBlack(
+  const std::string& command, const std::vector<float>& rgb, const CommandLine& cl)
+{
+  if (rgb.empty() || std::any_of(rgb.begin(), rgb.end(), [](float v) { return v > 0.0f; }))
+  {
+    return;
+  }
+  std::cerr << command << ": warning: every pixel is black. "
+            << (cl.Has("--camera") ? "The camera may face away from the lit scene"
+                                   : "The default camera looks along +z from outside the "
+                                     "scene's bounds: in a closed room it sees the walls' backs")
+            << "; place it inside with --camera EYE_X,EYE_Y,EYE_Z,TARGET_X,TARGET_Y,TARGET_Z.\n";
 }
 
 } // namespace mesolight

@@ -10,6 +10,7 @@
 #include <glm/vec3.hpp>
 
 #include <string>
+#include <vector>
 
 class vtkCamera;
 
@@ -41,6 +42,14 @@ bool ReadLightFieldCamera(const CommandLine& cl, const vlf::LightField& field, g
 /** The vertical field of view in degrees from --fov or --view-angle (default 39.3077, the
  * Cornell camera's); both given and different is an error, as is a value outside [1, 179]. */
 bool ReadViewAngle(const CommandLine& cl, double& degrees, std::string& error);
+
+/**
+ * Prints a warning on stderr when every pixel of the linear image is black: with the default
+ * view of a closed room (along +z from outside it) the camera sees the walls' backs and the
+ * image is all black, which is written without a word otherwise. Says how to place the camera.
+ */
+void WarnIfAllBlack(
+  const std::string& command, const std::vector<float>& rgb, const CommandLine& cl);
 
 /** Puts the published Cornell box camera (CornellCamera: position, focal point, view up and
  * angle) on a VTK camera, as the benchmarks view the built-in boxes. */

@@ -130,6 +130,7 @@ int TraceObjScene(const CommandLine& cl, int width, int height, int threads)
       return 1;
     }
     std::cout << "wrote " << cl.Get("--out") << "\n";
+    WarnIfAllBlack(command, image.Rgb, cl);
     if (cl.Has("--exr"))
     {
       if (!WriteLinearImage(image, cl.Get("--exr"), error))

@@ -370,6 +370,7 @@ int Render(const std::vector<std::string>& args)
     }
     std::cout << "wrote " << out << " (" << width << "x" << height << ", " << SecondsSince(start)
               << " s, light field after " << field->IterationsDone << " iterations)\n";
+    WarnIfAllBlack("mesolight vlf render", linear.Rgb, cl);
     if (cl.Has("--exr"))
     {
       if (!WriteLinearImage(linear, cl.Get("--exr"), error))

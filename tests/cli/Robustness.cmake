@@ -171,3 +171,15 @@ cli_expect_error(1 "expected procedural:sky or procedural:sun"
   render --offscreen --size 32x32 --environment procedural:foo --out "${WORK}/sky.png")
 cli_expect_error(2 "need --mode MODE"
   vlf render "${WORK}/field.vlf" --out "${WORK}/tone.png" --tone-map reinhard)
+# 12. The default camera outside a closed room sees the walls' backs: an all-black image is
+# written with a warning that says how to place the camera (the open box: no warning).
+math(EXPR d "${count} + 4")
+file(WRITE "${WORK}/closed.obj" "${room}\nv 0 0 0\nv 0 548.8 0\nv 556 548.8 0\nv 549.6 0 0\n"
+  "usemtl white\nf ${a} ${b} ${c} ${d}\n")
+cli_expect_error(0 "every pixel is black" trace --scene "${WORK}/closed.obj" --width 16 --height 16
+  --samples 1 --out "${WORK}/closed.png")
+cli_execute(trace --scene "${CMAKE_CURRENT_LIST_DIR}/../../examples/data/cornell-box.obj" --width 16
+  --height 16 --samples 1 --out "${WORK}/open.png")
+if (cli_stderr MATCHES "every pixel is black")
+  message(FATAL_ERROR "the open box's image was called black:\n${cli_stderr}")
+endif ()
