@@ -8,6 +8,7 @@
 #include "OutputFile.h"
 #include "ReliefBenchmark.h"
 #include "ReliefScene.h"
+#include "vtkProceduralReliefSource.h"
 #include "vtkReliefMapper.h"
 #include "vtkReliefProperty.h"
 
@@ -20,6 +21,7 @@
 #include <vtkRenderer.h>
 #include <vtkTextActor.h>
 #include <vtkTextProperty.h>
+#include <vtksys/SystemTools.hxx>
 
 #include <iostream>
 #include <sstream>
@@ -102,6 +104,30 @@ bool ReadSceneOptions(const CommandLine& cl, ReliefSceneOptions& o, std::string&
   o.NoDataValue = noData.Value;
   o.UseFileNoDataValue = noData.UseFileValue;
   o.Method = cl.Get("--method");
+  // A misspelt name is a usage error that lists the names, before any work.
+  if (vtkReliefProperty::GetMethodFromName(o.Method.c_str()) < 0)
+  {
+    error = "--method: unknown method '" + o.Method + "'; the methods are";
+    for (int m = 0; m < vtkReliefProperty::NumberOfMethods; ++m)
+    {
+      error += std::string(m > 0 ? ", " : " ") + vtkReliefProperty::GetMethodName(m);
+    }
+    return false;
+  }
+  bool knownPattern = false;
+  std::string patterns;
+  for (int p = 0; vtkProceduralReliefSource::GetPatternName(p); ++p)
+  {
+    const std::string name = vtkProceduralReliefSource::GetPatternName(p);
+    knownPattern =
+      knownPattern || vtksys::SystemTools::Strucmp(name.c_str(), o.Pattern.c_str()) == 0;
+    patterns += (p > 0 ? ", " : " ") + name;
+  }
+  if (!knownPattern)
+  {
+    error = "--pattern: unknown pattern '" + o.Pattern + "'; the patterns are" + patterns;
+    return false;
+  }
   o.SelfShadowing = !cl.Has("--no-shadows");
   o.Silhouettes = !cl.Has("--no-silhouettes");
   o.SurfaceCurvature = !cl.Has("--no-surface-curvature");

@@ -183,3 +183,8 @@ cli_execute(trace --scene "${CMAKE_CURRENT_LIST_DIR}/../../examples/data/cornell
 if (cli_stderr MATCHES "every pixel is black")
   message(FATAL_ERROR "the open box's image was called black:\n${cli_stderr}")
 endif ()
+# 13. A misspelt method or pattern is a usage error listing the names.
+cli_expect_error(2 "the methods are texture, bump"
+  render --offscreen --size 32x32 --method relief-mapping --out "${WORK}/method.png")
+cli_expect_error(2 "the patterns are Bricks, Stone"
+  render --offscreen --size 32x32 --pattern Brick --out "${WORK}/pattern.png")
