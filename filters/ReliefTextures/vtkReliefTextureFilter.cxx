@@ -364,7 +364,8 @@ int vtkReliefTextureFilter::Execute(
     vtkErrorMacro("The input depth map contains "
       << nonFinite << " NaN or infinite value(s) out of " << n
       << "; the first is at texel (i=" << firstNonFinite % w << ", j=" << firstNonFinite / w
-      << "). Fix the data (e.g. fill holes) before computing a relief texture.");
+      << "). Fix the data (e.g. fill holes), or take them as having no data (UseNoDataValue "
+         "on, NoDataValue nan; ParaView: Use No Data Value; mesolight: --no-data nan).");
     return 0;
   }
   const int type = scalars->GetDataType();
