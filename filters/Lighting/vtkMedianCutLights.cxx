@@ -53,7 +53,8 @@ void ToRgb(const T* data, vtkIdType n, int nComp, float* out)
         const T* t = data + k * nComp;
         for (int c = 0; c < 3; ++c)
         {
-          out[3 * k + c] = static_cast<float>(mesolight::ToUnitValue(t[c]));
+          // One or two components (grey, grey and alpha): the grey in all three.
+          out[3 * k + c] = static_cast<float>(mesolight::ToUnitValue(t[nComp >= 3 ? c : 0]));
         }
       }
     });
@@ -179,12 +180,12 @@ int vtkMedianCutLights::Execute(
     return 0;
   }
   const int nComp = scalars->GetNumberOfComponents();
-  if (nComp < 3 || scalars->GetNumberOfTuples() != n)
+  if (nComp < 1 || scalars->GetNumberOfTuples() != n)
   {
-    vtkErrorMacro("The environment map \""
+    vtkErrorMacro("The environment map's values (array \""
       << (scalars->GetName() ? scalars->GetName() : "")
-      << "\" must have 3 or more components (RGB first) and one tuple per pixel; it has " << nComp
-      << " components and " << scalars->GetNumberOfTuples() << " tuples for " << n << " pixels.");
+      << "\") must be one per pixel, grey or RGB first; it has " << scalars->GetNumberOfTuples()
+      << " values of " << nComp << " components for " << n << " pixels.");
     return 0;
   }
   if (this->NumberOfLights < 1 || this->NumberOfLights > n)

@@ -10,7 +10,8 @@
  * precision: core/MedianCut.h.
  *
  * Input: a lat-long (equirectangular) vtkImageData, W x H with W = 2H expected, any scalar
- * type (integers are divided by their type's maximum), 3 or more components (RGB first),
+ * type (integers are divided by their type's maximum), 3 or more components (RGB first) or
+ * 1 or 2 (grey, the first taken as R, G and B),
  * from SetInputArrayToProcess() (default: the point scalars, else the cell scalars). Pixels given
  * as the cells of a grid one point larger, as ParaView's GDAL Raster Reader gives a float TIFF,
  * are read as they are: the map is then (W - 1) x (H - 1) of a W x H point grid (a plain image's

@@ -251,7 +251,42 @@ TEST(MedianCutLights, BadInput)
     "NumberOfLights must be between 1 and the number of "
     "pixels (128); it is 0");
   expectError(Image(16, 8, 1.0f), 129, "it is 129");
-  expectError(Image(16, 8, 1.0f, 1), 4, "3 or more components");
+  auto short_ = Image(16, 8, 1.0f);
+  short_->GetPointData()->GetScalars()->SetNumberOfTuples(100);
+  expectError(short_, 4, "must be one per pixel, grey or RGB first; it has 100 values");
+  // A grey map (one component, or grey and alpha) lights as the same map in RGB.
+  {
+    auto lightsOf = [](vtkImageData* image)
+    {
+      vtkNew<vtkMedianCutLights> lights;
+      lights->SetInputData(image);
+      lights->SetNumberOfLights(4);
+      lights->Update();
+      return vtkSmartPointer<vtkDataArray>(lights->GetLightTexture()->GetPointData()->GetScalars());
+    };
+    auto grey = Image(16, 8, 0.0f, 1);
+    auto rgb = Image(16, 8, 0.0f, 3);
+    for (vtkIdType p = 0; p < 128; ++p)
+    {
+      const float v = 0.1f + 0.01f * static_cast<float>((p * 7) % 13);
+      grey->GetPointData()->GetScalars()->SetComponent(p, 0, v);
+      for (int c = 0; c < 3; ++c)
+      {
+        rgb->GetPointData()->GetScalars()->SetComponent(p, c, v);
+      }
+    }
+    const auto fromGrey = lightsOf(grey);
+    const auto fromRgb = lightsOf(rgb);
+    ASSERT_EQ(fromGrey->GetNumberOfTuples(), fromRgb->GetNumberOfTuples());
+    ASSERT_GT(fromGrey->GetNumberOfTuples(), 0);
+    for (vtkIdType t = 0; t < fromGrey->GetNumberOfTuples(); ++t)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        EXPECT_EQ(fromGrey->GetComponent(t, c), fromRgb->GetComponent(t, c)) << t << " " << c;
+      }
+    }
+  }
   {
     vtkNew<vtkMedianCutLights> lights;
     vtkNew<MessageCapture> capture;
