@@ -591,6 +591,13 @@ ObjSceneRead ParseObjScene(std::istream& obj, const std::string& name, const std
     {
       message += (k ? "; " : "") + check.Errors[k];
     }
+    // The warnings are lost with the scene; the first often is the cause (a missing mtllib:
+    // no material, so no emitter).
+    if (!read.Warnings.empty())
+    {
+      message += " (after " + std::to_string(read.Warnings.size()) + " warning" +
+        (read.Warnings.size() > 1 ? "s" : "") + ", the first: " + read.Warnings.front() + ")";
+    }
     throw ObjSceneError(message);
   }
   for (const std::string& warning : check.Warnings)

@@ -221,6 +221,14 @@ TEST(ObjScene, NoEmitter)
   const std::string lit =
     WriteText("lit.obj", "mtllib lamp.mtl\nusemtl lamp\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
   EXPECT_EQ(ReadError(lit, strict), "");
+  // Its material file missing, the refusal gives the first warning: the cause.
+  const std::string unlit =
+    WriteText("unlit.obj", "mtllib gone.mtl\nusemtl lamp\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  const std::string error = ReadError(unlit, strict);
+  EXPECT_NE(error.find("the scene has no emitter"), std::string::npos) << error;
+  EXPECT_NE(
+    error.find("the first: " + unlit + ":1: mtllib 'gone.mtl' not found"), std::string::npos)
+    << error;
 }
 
 TEST(ObjScene, DegenerateAndNonManifoldTriangles)
