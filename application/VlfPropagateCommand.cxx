@@ -415,14 +415,18 @@ int Propagate(const std::vector<std::string>& args)
     else
     {
       TriangleScene scene;
+      // A scene without an emitter gives a dark field: refused when read, not after the set-up.
+      mesolight::ObjReadOptions withEmitter;
+      withEmitter.RequireEmitter = true;
       if (distributed)
       {
         // Agreed: a rank that cannot read the scene stops every rank, with its message.
         vlf::Agree(reducer,
           [&]()
           {
-            scene = cl.Positional().empty() ? MakeCornellBox()
-                                            : mesolight::ReadObjScene(cl.Positional()[0]).Scene;
+            scene = cl.Positional().empty()
+              ? MakeCornellBox()
+              : mesolight::ReadObjScene(cl.Positional()[0], withEmitter).Scene;
           });
         std::cout << "scene: "
                   << (cl.Positional().empty() ? "the built-in Cornell box" : cl.Positional()[0])
@@ -435,7 +439,7 @@ int Propagate(const std::vector<std::string>& args)
       }
       else
       {
-        mesolight::ObjSceneRead read = mesolight::ReadObjScene(cl.Positional()[0]);
+        mesolight::ObjSceneRead read = mesolight::ReadObjScene(cl.Positional()[0], withEmitter);
         for (const std::string& w : read.Warnings)
         {
           std::cerr << "mesolight vlf propagate: warning: " << w << "\n";
