@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /**
  * @file DepthScaleSetting.h
- * @brief How every Mesolight setter takes a relief's depth scale (plain C++17).
+ * @brief How every Mesolight setter takes a relief's depth scale (plain C++17; the setter
+ *        body for VTK classes is a template that uses VTK's macros where it is instantiated).
  *
  * One rule for vtkReliefProperty and vtkReliefTextureFilter, so that a user's mistake gets the
  * same answer wherever it is made: NaN is refused (the old value is kept), anything else is
@@ -46,6 +47,31 @@ inline bool ClampDepthScale(double requested, double maximum, double& value, std
   }
   note = text.str();
   return true;
+}
+
+/// A depth-scale setter's whole body, for VTK classes (Object: a vtkObject): ClampDepthScale,
+/// its note reported through the object's error or warning, `member` set and the object
+/// modified when the value changes. A template so that this header needs no VTK header; the
+/// caller's translation unit has vtkObject and vtkSetGet.h.
+template <class Object>
+void SetDepthScaleOf(Object* self, double& member, double requested, double maximum)
+{
+  double value = member;
+  std::string note;
+  if (!ClampDepthScale(requested, maximum, value, note))
+  {
+    vtkErrorWithObjectMacro(self, << "SetDepthScale: " << note << "; keeping " << member << ".");
+    return;
+  }
+  if (!note.empty())
+  {
+    vtkWarningWithObjectMacro(self, << "SetDepthScale: " << note);
+  }
+  if (value != member)
+  {
+    member = value;
+    self->Modified();
+  }
 }
 
 } // namespace mesolight

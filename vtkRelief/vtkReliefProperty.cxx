@@ -177,22 +177,7 @@ int vtkReliefProperty::GetRequiredConeMap(int method)
 //------------------------------------------------------------------------------
 void vtkReliefProperty::SetDepthScale(double requested)
 {
-  double depthScale = 0.0;
-  std::string note;
-  if (!mesolight::ClampDepthScale(requested, 10.0, depthScale, note))
-  {
-    vtkErrorMacro(<< "SetDepthScale: " << note << "; keeping " << this->DepthScale << ".");
-    return;
-  }
-  if (!note.empty())
-  {
-    vtkWarningMacro(<< "SetDepthScale: " << note);
-  }
-  if (depthScale != this->DepthScale)
-  {
-    this->DepthScale = depthScale;
-    this->Modified();
-  }
+  mesolight::SetDepthScaleOf(this, this->DepthScale, requested, 10.0);
 }
 
 //------------------------------------------------------------------------------

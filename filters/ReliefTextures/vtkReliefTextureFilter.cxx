@@ -114,22 +114,7 @@ vtkReliefTextureFilter::vtkReliefTextureFilter()
 //------------------------------------------------------------------------------
 void vtkReliefTextureFilter::SetDepthScale(double requested)
 {
-  double depthScale = 0.0;
-  std::string note;
-  if (!mesolight::ClampDepthScale(requested, 100.0, depthScale, note))
-  {
-    vtkErrorMacro(<< "SetDepthScale: " << note << "; keeping " << this->DepthScale << ".");
-    return;
-  }
-  if (!note.empty())
-  {
-    vtkWarningMacro(<< "SetDepthScale: " << note);
-  }
-  if (depthScale != this->DepthScale)
-  {
-    this->DepthScale = depthScale;
-    this->Modified();
-  }
+  mesolight::SetDepthScaleOf(this, this->DepthScale, requested, 100.0);
 }
 
 //------------------------------------------------------------------------------
