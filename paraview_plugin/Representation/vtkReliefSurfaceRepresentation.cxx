@@ -95,6 +95,7 @@ void vtkReliefSurfaceRepresentation::AddPlaneTextureCoordinates()
   // The pieces delivered to the mapper: the multiblock maker's leaves (the geometry filter's
   // polydata, shared or copied).
   std::vector<vtkPolyData*> bare;
+  int textured = 0;
   for (vtkDataObject* leaf :
     mesolight::DataObjectLeaves(this->MultiBlockMaker->GetOutputDataObject(0)))
   {
@@ -103,17 +104,20 @@ void vtkReliefSurfaceRepresentation::AddPlaneTextureCoordinates()
     {
       bare.push_back(poly);
     }
+    textured = textured || vtkAttachReliefTexture::GetAttachedReliefTexture(leaf) != nullptr;
   }
   // Every rank's representation updates together (one pipeline), so the collectives match.
   vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
   const bool parallel = controller && controller->GetNumberOfProcesses() > 1;
-  int any = bare.empty() ? 0 : 1;
+  int any[2] = { bare.empty() ? 0 : 1, textured };
   if (parallel)
   {
-    int mine = any;
-    controller->AllReduce(&mine, &any, 1, vtkCommunicator::MAX_OP);
+    const int mine[2] = { any[0], any[1] };
+    controller->AllReduce(mine, any, 2, vtkCommunicator::MAX_OP);
   }
-  if (!any)
+  // Without a relief texture there is nothing to address: the mapper's "No relief texture ...
+  // apply Attach Relief Texture" is the one message, not a complaint about the surface's shape.
+  if (!any[0] || !any[1])
   {
     return;
   }

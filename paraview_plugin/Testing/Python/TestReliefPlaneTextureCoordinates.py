@@ -18,6 +18,8 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import mesolight_pvtest as t  # noqa: E402
 import paraview.simple as pvs  # noqa: E402
 from paraview import servermanager  # noqa: E402
+from vtkmodules.util.misc import calldata_type  # noqa: E402
+from vtkmodules.util.vtkConstants import VTK_STRING  # noqa: E402
 from vtkmodules.vtkCommonCore import vtkCommand, vtkOutputWindow  # noqa: E402
 
 t.load_plugin()
@@ -95,6 +97,29 @@ pvs.Render(view)
 window.RemoveObserver(tag)
 print("non-planar surface: %d error(s) reported" % len(messages))
 check(len(messages) > 0, "a non-planar surface without texture coordinates is an error")
+
+# A plain Sphere shown as Relief Surface with no relief texture attached at all: the errors say
+# what is missing (texture coordinates, a relief texture), not that the sphere is not planar (the
+# plane rule is for a relief texture's surface; without one it was the first, misleading word).
+texts = []
+
+
+@calldata_type(VTK_STRING)
+def on_error(caller, event, text):
+    texts.append(text)
+
+
+tag = window.AddObserver(vtkCommand.ErrorEvent, on_error)
+bare_sphere = without_tcoords(pvs.Sphere(ThetaResolution=16, PhiResolution=16))
+view = t.make_view()
+bare_display = pvs.Show(bare_sphere, view)
+bare_display.SetRepresentationType("Relief Surface")
+pvs.Render(view)
+window.RemoveObserver(tag)
+said = " | ".join(texts)
+print("sphere without a relief texture: %s" % said.replace("\n", " ")[:300])
+check(len(texts) > 0, "a sphere without a relief texture or texture coordinates is an error")
+check("not planar" not in said, "no plane-rule complaint on a surface with no relief texture")
 
 if failures:
     print("FAILED: " + "; ".join(failures))
