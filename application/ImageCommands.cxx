@@ -274,11 +274,8 @@ int RunConeCommand(const std::vector<std::string>& args)
   {
     // Integer formats (PNG, TIFF...) store [0, 1]: float-packed cone ratios above 1 are clamped
     // there (narrower cones: still valid, but slower stepping). Say so, and what keeps them.
-    std::string extension = out.substr(std::min(out.size(), out.find_last_of('.') + 1));
-    std::transform(extension.begin(), extension.end(), extension.begin(),
-      [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
     vtkDataArray* packed = cones->GetOutput()->GetPointData()->GetScalars();
-    if (!cl.Has("--8bit") && extension != "exr" && extension != "hdr" && packed)
+    if (!cl.Has("--8bit") && !HasExtension(out, ".exr") && !HasExtension(out, ".hdr") && packed)
     {
       vtkIdType clamped = 0;
       double largest = 0.0;

@@ -99,6 +99,18 @@ std::string CheckOutputOptions(
   return "";
 }
 
+bool HasExtension(const std::string& file, const std::string& extension)
+{
+  if (file.size() <= extension.size())
+  {
+    return false;
+  }
+  std::string tail = file.substr(file.size() - extension.size());
+  std::transform(tail.begin(), tail.end(), tail.begin(),
+    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return tail == extension;
+}
+
 std::string CheckOutputExtension(const CommandLine& cl, const std::vector<std::string>& names,
   const std::vector<std::string>& extensions, const std::string& advice)
 {
@@ -108,12 +120,9 @@ std::string CheckOutputExtension(const CommandLine& cl, const std::vector<std::s
     {
       continue;
     }
-    std::string file = cl.Get(name);
-    std::transform(file.begin(), file.end(), file.begin(),
-      [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    const std::string file = cl.Get(name);
     const bool known = std::any_of(extensions.begin(), extensions.end(),
-      [&](const std::string& e)
-      { return file.size() > e.size() && file.compare(file.size() - e.size(), e.size(), e) == 0; });
+      [&](const std::string& e) { return HasExtension(file, e); });
     if (!known)
     {
       std::string list;

@@ -29,6 +29,9 @@ class CommandLine;
 std::string CheckOutputOptions(
   const CommandLine& cl, const std::vector<std::string>& names, std::vector<std::string> inputs);
 
+/** Whether `file` ends in `extension` (with its dot, e.g. ".png"), compared without case. */
+bool HasExtension(const std::string& file, const std::string& extension);
+
 /**
  * "" when none of the options `names` was given, or each names a file ending in one of
  * `extensions` (with the dot, compared without case), else "--out: 'r.exr' does not end in .png: "

@@ -25,14 +25,7 @@ namespace mesolight
 
 bool IsObjSceneName(const std::string& scene)
 {
-  if (scene.size() < 4)
-  {
-    return false;
-  }
-  std::string tail = scene.substr(scene.size() - 4);
-  std::transform(tail.begin(), tail.end(), tail.begin(),
-    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return tail == ".obj";
+  return HasExtension(scene, ".obj");
 }
 
 void AddTraceObjOptions(CommandLine& cl)
