@@ -16,6 +16,7 @@
 #include "vtkReliefShading.h"
 #include "vtkRenderer.h"
 #include "vtkShader.h"
+#include "vtkTexture.h"
 #include "vtk_glew.h" // before vtkCompositeMapperHelper2.h: VTK 9.1's uses GLenum undeclared
 
 #include "vtkCompositeMapperHelper2.h"
@@ -46,6 +47,20 @@ protected:
   {
     auto* parent = static_cast<vtkCompositeReliefMapper*>(this->Parent);
     this->ReadyToDraw = false;
+    // What decides whether the frame can be drawn, for BeginFrame (not the mapper, nor the actor
+    // and its properties, which ParaView modifies as it renders).
+    vtkTexture* albedo = actor->GetTexture();
+    std::vector<vtkObject*> frameInputs{ parent->GetReliefProperty(), parent->CurrentReliefTexture,
+      parent->CurrentLightSet, parent->IrradianceProbesData, albedo,
+      albedo ? albedo->GetInput() : nullptr };
+    for (const auto& entry : this->Data)
+    {
+      frameInputs.push_back(entry.first);
+    }
+    if (!this->Shading()->BeginFrame(parent->CurrentReliefTexture, frameInputs))
+    {
+      return;
+    }
     // Every block must carry a relief (texture coordinates); prepared copies are made once.
     vtkReliefGeometryCache* geometry = this->Shading()->GetGeometryCache();
     std::vector<vtkPolyData*> inputs;
@@ -57,6 +72,7 @@ protected:
       vtkPolyData* prepared = geometry->Prepare(entry.first);
       if (!prepared)
       {
+        this->Shading()->FrameFailed();
         return;
       }
       curved = curved && vtkReliefGeometryCache::IsCurved(prepared);
@@ -67,6 +83,7 @@ protected:
           parent->GetReliefProperty(), parent->CurrentReliefTexture, parent->CurrentLightSet,
           parent->IrradianceProbesData, actor))
     {
+      this->Shading()->FrameFailed();
       return;
     }
     this->Superclass::RenderPieceStart(ren, actor);

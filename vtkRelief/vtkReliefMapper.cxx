@@ -21,6 +21,7 @@
 #include "vtkRenderer.h"
 #include "vtkShader.h"
 #include "vtkShaderProperty.h"
+#include "vtkTexture.h"
 #include "vtkTextureObject.h"
 
 #include <algorithm>
@@ -212,13 +213,11 @@ void vtkReliefMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* actor)
     vtkAlgorithmOutput* probesPort = this->GetInputConnection(3, 0);
     probesPort->GetProducer()->Update(probesPort->GetIndex());
   }
-  this->PreparedInput =
-    this->CurrentInput ? this->Shading->GetGeometryCache()->Prepare(this->CurrentInput) : nullptr;
-  if (!this->PreparedInput)
+  this->PreparedInput = nullptr;
+  if (!this->CurrentInput)
   {
     return;
   }
-  this->Shading->SetCurvedGeometry(vtkReliefGeometryCache::IsCurved(this->PreparedInput));
   // Without connections, a relief texture and light set attached as field data are used.
   vtkSmartPointer<vtkImageData> relief = this->GetReliefTexture();
   if (!relief)
@@ -230,9 +229,25 @@ void vtkReliefMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* actor)
   {
     lights = vtkAttachReliefTexture::GetAttachedLightSet(this->CurrentInput);
   }
-  if (!this->Shading->StartDraw(vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow()),
-        this->GetReliefProperty(), relief, lights, this->GetIrradianceProbes(), actor))
+  vtkImageData* probes = this->GetIrradianceProbes();
+  vtkTexture* albedo = actor->GetTexture();
+  const std::vector<vtkObject*> frameInputs{ this->GetReliefProperty(), this->CurrentInput, relief,
+    lights, probes, albedo, albedo ? albedo->GetInput() : nullptr };
+  if (!this->Shading->BeginFrame(relief, frameInputs))
   {
+    return;
+  }
+  this->PreparedInput = this->Shading->GetGeometryCache()->Prepare(this->CurrentInput);
+  if (!this->PreparedInput)
+  {
+    this->Shading->FrameFailed();
+    return;
+  }
+  this->Shading->SetCurvedGeometry(vtkReliefGeometryCache::IsCurved(this->PreparedInput));
+  if (!this->Shading->StartDraw(vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow()),
+        this->GetReliefProperty(), relief, lights, probes, actor))
+  {
+    this->Shading->FrameFailed();
     return;
   }
   this->CurrentInput = this->PreparedInput;

@@ -101,16 +101,44 @@ vtkReliefGeometryCache* vtkReliefShading::GetGeometryCache()
 }
 
 //------------------------------------------------------------------------------
-bool vtkReliefShading::StartDraw(vtkOpenGLRenderWindow* renWin, vtkReliefProperty* property,
-  vtkImageData* relief, vtkImageData* lights, vtkImageData* probes, vtkActor* actor)
+bool vtkReliefShading::BeginFrame(vtkImageData* relief, const std::vector<vtkObject*>& inputs)
 {
-  this->Drawing = false;
-  this->Property = property;
+  this->FrameInputs.clear();
+  for (vtkObject* input : inputs)
+  {
+    this->FrameInputs.emplace_back(input, input ? input->GetMTime() : 0);
+  }
+  if (this->LastFrameFailed && this->FrameInputs == this->FailedFrameInputs)
+  {
+    return false;
+  }
+  this->LastFrameFailed = false;
   if (!relief)
   {
     vtkErrorMacro(<< "No relief texture. In ParaView: apply Mesolight Attach Relief Texture to "
                      "this surface, with Mesolight Relief Texture's output as its Relief "
                      "Texture input. In VTK: give the mapper vtkReliefTextureFilter's output.");
+    this->FrameFailed();
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkReliefShading::FrameFailed()
+{
+  this->LastFrameFailed = true;
+  this->FailedFrameInputs = this->FrameInputs;
+}
+
+//------------------------------------------------------------------------------
+bool vtkReliefShading::StartDraw(vtkOpenGLRenderWindow* renWin, vtkReliefProperty* property,
+  vtkImageData* relief, vtkImageData* lights, vtkImageData* probes, vtkActor* actor)
+{
+  this->Drawing = false;
+  this->Property = property;
+  if (!relief) // (reported by BeginFrame)
+  {
     return false;
   }
   const int method = property->GetMethod();

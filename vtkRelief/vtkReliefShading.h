@@ -10,6 +10,8 @@
  * vtkReliefMapper is such a mapper; vtkCompositeReliefMapper's helper (a
  * vtkCompositeMapperHelper2, how ParaView's geometry representations draw) is another. Both make
  * the same calls on one vtkReliefShading, so the two draw the same pixels:
+ *  - BeginFrame / FrameFailed: whether a frame is tried at all (a relief texture, and no error
+ *    already reported for the same inputs);
  *  - GetGeometryCache()->Prepare(input): the geometry the shader reads (vtkReliefGeometryCache);
  *  - StartDraw / FinishDraw: the relief texture and its min-depth pyramid
  *    (vtkReliefTextureCache, vtkMinDepthPyramidTexture), the light set (vtkLightSetTexture) and
@@ -30,7 +32,9 @@
 #include "vtkObject.h"
 #include "vtkSmartPointer.h" // for Property
 
-#include <string> // for the shader sources
+#include <string>  // for the shader sources
+#include <utility> // for FrameInputs
+#include <vector>  // for FrameInputs
 
 class vtkActor;
 class vtkImageData;
@@ -77,6 +81,21 @@ public:
 
   /** The relief's textures on the GPU (formats, bytes uploaded). */
   vtkReliefTextureCache* GetReliefTextureCache();
+
+  ///@{
+  /**
+   * The frame's first check, before the geometry is prepared: false when it cannot be drawn.
+   * Without a relief texture it reports that (the first thing a relief surface needs, so it is
+   * what a user hears first). After a frame that failed (FrameFailed) it returns false without a
+   * word while `inputs`, everything that decides whether the frame can be drawn (the relief
+   * property, the polydata, the relief texture, light set, probes, albedo texture and image; null
+   * entries allowed), are the same objects, unmodified: each error is reported once, not at
+   * every render (an interactor or ParaView's view renders many times), and again once any of
+   * them changes.
+   */
+  bool BeginFrame(vtkImageData* relief, const std::vector<vtkObject*>& inputs);
+  void FrameFailed();
+  ///@}
 
   /**
    * Uploads the relief texture, the light set and the irradiance probes (null: none) when they
@@ -138,6 +157,12 @@ protected:
   // The albedo texture image last checked for NaN/Inf texels, and when (its MTime).
   vtkImageData* CheckedAlbedo = nullptr;
   vtkMTimeType CheckedAlbedoTime = 0;
+  // The inputs of the frame under way (BeginFrame) and of the last one that failed: each
+  // object's address (only compared) and modification time.
+  using FrameInputList = std::vector<std::pair<const void*, vtkMTimeType>>;
+  FrameInputList FrameInputs;
+  bool LastFrameFailed = false;
+  FrameInputList FailedFrameInputs;
 
 private:
   vtkReliefShading(const vtkReliefShading&) = delete;

@@ -115,11 +115,20 @@ view = t.make_view()
 bare_display = pvs.Show(bare_sphere, view)
 bare_display.SetRepresentationType("Relief Surface")
 pvs.Render(view)
+after_one_render = len(texts)
+pvs.Render(view)
+pvs.Render(view)
 window.RemoveObserver(tag)
 said = " | ".join(texts)
-print("sphere without a relief texture: %s" % said.replace("\n", " ")[:300])
+print("sphere without a relief texture: %d error(s) after one render, %d after three: %s"
+      % (after_one_render, len(texts), said.replace("\n", " ")[:300]))
 check(len(texts) > 0, "a sphere without a relief texture or texture coordinates is an error")
 check("not planar" not in said, "no plane-rule complaint on a surface with no relief texture")
+# The first word is the first thing a relief surface needs, and it is said once, not at every
+# render of the view.
+check(len(texts) > 0 and "No relief texture" in texts[0],
+      "the first error names the missing relief texture")
+check(len(texts) == after_one_render, "renders of an unchanged surface repeat no error")
 
 if failures:
     print("FAILED: " + "; ".join(failures))

@@ -109,6 +109,54 @@ TEST(ReliefBadInput, MissingReliefTextureIsAnError)
   EXPECT_TRUE(messages->HasError("No relief texture")) << messages->AllErrors();
 }
 
+// A surface with neither texture coordinates nor a relief texture (a plain Sphere in ParaView)
+// hears first about the relief texture, the first thing a relief surface needs; and each error
+// is reported once, not at every render of an interactor or a ParaView view, until something
+// changes. A test of the repeats: without the memo of the failed frame each render reports
+// again.
+TEST(ReliefBadInput, EachErrorIsReportedOnceUntilSomethingChanges)
+{
+  auto mesh = PlaneWithTCoords();
+  vtkSmartPointer<vtkDataArray> tcoords = mesh->GetPointData()->GetTCoords();
+  mesh->GetPointData()->SetTCoords(nullptr);
+  vtkNew<vtkReliefMapper> mapper;
+  mapper->SetInputData(mesh);
+  vtkNew<mesolight_test::MessageCapture> messages;
+  messages->Watch(mapper);
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  vtkNew<vtkRenderer> renderer;
+  renderer->AddActor(actor);
+  renderer->GetActiveCamera()->SetPosition(0.0, -1.0, 1.5);
+  renderer->GetActiveCamera()->SetFocalPoint(0.0, 0.0, 0.0);
+  ReliefSceneOptions size;
+  size.Width = size.Height = 96;
+  auto window = MakeOffscreenWindow(size, renderer);
+  for (int render = 0; render < 3; ++render)
+  {
+    window->Render();
+  }
+  ASSERT_EQ(messages->Errors.size(), 1u) << messages->AllErrors();
+  EXPECT_TRUE(messages->HasError("No relief texture")) << messages->AllErrors();
+
+  // A relief texture given: the next error is the missing texture coordinates, once.
+  mapper->SetReliefTextureData(SmallRelief());
+  messages->Clear();
+  for (int render = 0; render < 3; ++render)
+  {
+    window->Render();
+  }
+  ASSERT_EQ(messages->Errors.size(), 1u) << messages->AllErrors();
+  EXPECT_TRUE(messages->HasError("texture coordinates")) << messages->AllErrors();
+
+  // Mended: drawn, without a word.
+  mesh->GetPointData()->SetTCoords(tcoords);
+  messages->Clear();
+  const Frame frame = CaptureFrame(window);
+  EXPECT_TRUE(messages->Errors.empty()) << messages->AllErrors();
+  EXPECT_GT(CoveredPixels(frame), 1000);
+}
+
 // A light set its source left empty (the source reported why), and one wider than the GPU's
 // widest texture, which would otherwise be dropped without a word: each a clear error, and the
 // relief still drawn, lit by the renderer's lights as without a light set (as malformed probes).
