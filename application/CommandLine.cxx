@@ -152,7 +152,26 @@ bool CommandLine::Parse(const std::vector<std::string>& args, std::string& error
       this->Values[name] = "1";
     }
   }
+  for (const auto& [option, anyOf] : this->OptionsNeedingOthers)
+  {
+    if (this->Has(option) &&
+      std::none_of(
+        anyOf.begin(), anyOf.end(), [this](const std::string& other) { return this->Has(other); }))
+    {
+      error = option + " needs ";
+      for (size_t k = 0; k < anyOf.size(); ++k)
+      {
+        error += (k == 0 ? "" : " or ") + anyOf[k];
+      }
+      return false;
+    }
+  }
   return true;
+}
+
+void CommandLine::AppliesOnlyWith(const std::string& option, const std::vector<std::string>& anyOf)
+{
+  this->OptionsNeedingOthers.emplace_back(option, anyOf);
 }
 
 namespace

@@ -9,6 +9,7 @@
 #include <map>
 #include <ostream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace mesolight
@@ -32,6 +33,11 @@ public:
   /** What an unknown option's error suggests instead of "see --help" (e.g. the mode that has
    *  it). */
   void SetUnknownOptionHint(const std::string& hint) { this->UnknownOptionHint = hint; }
+  /**
+   * Declares that `option` only does something together with one of `anyOf`: given without them
+   * it is a usage error ("--height needs --depth-file") when parsed, not accepted and ignored.
+   */
+  void AppliesOnlyWith(const std::string& option, const std::vector<std::string>& anyOf);
 
   /** Parses args; positional arguments are kept in order. False with a message on error. */
   bool Parse(const std::vector<std::string>& args, std::string& error);
@@ -133,6 +139,7 @@ private:
   std::map<std::string, std::vector<std::string>> AllValues;
   std::vector<std::string> PositionalArgs;
   std::string UnknownOptionHint;
+  std::vector<std::pair<std::string, std::vector<std::string>>> OptionsNeedingOthers;
 };
 
 /**

@@ -72,6 +72,7 @@ void AddObjectReliefOptions(CommandLine& cl)
     "texture, regathered when the object moves); its shadow stays the object's");
   cl.AddValue("--object-relief-depth-scale", "K",
     "world depth of depth 1 over the world width of the object's texture", "0.05");
+  cl.AppliesOnlyWith("--object-relief-depth-scale", { "--object-relief" });
 }
 
 int CheckObjectRelief(const CommandLine& cl, const char* command, const std::string& objectName,
@@ -79,11 +80,6 @@ int CheckObjectRelief(const CommandLine& cl, const char* command, const std::str
 {
   if (!cl.Has("--object-relief"))
   {
-    if (cl.Has("--object-relief-depth-scale"))
-    {
-      std::cerr << command << ": --object-relief-depth-scale needs --object-relief\n";
-      return 2;
-    }
     return 0;
   }
   double scale = 0.0;

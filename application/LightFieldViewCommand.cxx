@@ -580,6 +580,8 @@ int View(const std::vector<std::string>& args)
     "a line (repeated when shorter; the camera stays still)");
   cl.AddValue("--record-path", "FILE.csv",
     "with --object: write the object's placement at every rendered frame (for --path)");
+  cl.AppliesOnlyWith("--path", { "--object" });
+  cl.AppliesOnlyWith("--record-path", { "--object" });
   cl.AddValue("--frames", "N",
     "render N frames (turning the camera 2 degrees each) and exit: a non-interactive check", "0");
   cl.AddFlag("--offscreen", "no window (with --frames)");
@@ -657,11 +659,9 @@ int View(const std::vector<std::string>& args)
     {
       problem = "'" + cl.Get("--record-path") + "' exists; a recorded path is never replaced";
     }
-    if (!object.Active || !problem.empty())
+    if (!problem.empty())
     {
-      std::cerr << command
-                << ": --record-path: " << (object.Active ? problem : std::string("needs --object"))
-                << "\n";
+      std::cerr << command << ": --record-path: " << problem << "\n";
       return 2;
     }
     record.open(cl.Get("--record-path"));

@@ -666,6 +666,10 @@ int RunReliefSweep(const std::vector<std::string>& args)
   cl.AddFlag("--normalize",
     "stretch each depth image's value range to [0, 1] (elevations in metres, as in DEMs)");
   cl.AddValue("--no-data", "VALUE", CommandLine::NoDataHelp);
+  for (const char* option : { "--height", "--normalize", "--no-data" })
+  {
+    cl.AppliesOnlyWith(option, { "--depth-file" });
+  }
   cl.AddValue("--angles", "LIST", "view angles from the wall normal, degrees", "0,45,70,80,85");
   cl.AddValue("--size", "WxH", "window size in pixels", "512x512");
   cl.AddValue("--frames", "N", "timed frames per configuration, after a warm-up frame", "5");

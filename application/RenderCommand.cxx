@@ -43,6 +43,10 @@ void AddSceneOptions(CommandLine& cl)
   cl.AddFlag("--normalize",
     "stretch the depth image's value range to [0, 1] (elevations in metres, as in DEMs)");
   cl.AddValue("--no-data", "VALUE", CommandLine::NoDataHelp);
+  for (const char* option : { "--height", "--normalize", "--no-data" })
+  {
+    cl.AppliesOnlyWith(option, { "--depth-file" });
+  }
   cl.AddValue("--resolution", "N", "texels per side of the procedural map", "512");
   cl.AddValue("--depth-scale", "K", "relief depth as a fraction of the wall width", "0.04");
   cl.AddValue("--vertical-exaggeration", "E", CommandLine::VerticalExaggerationHelp);
@@ -276,15 +280,6 @@ bool BuildGeometryImageRender(const CommandLine& cl, const ReliefSceneOptions& r
   ReliefScene& scene, std::string& error, int& exitCode)
 {
   exitCode = 2;
-  const bool geometry = cl.Has("--geometry-image");
-  for (const char* option : { "--stride", "--tolerance", "--color" })
-  {
-    if (cl.Has(option) && !geometry)
-    {
-      error = std::string(option) + " needs --geometry-image";
-      return false;
-    }
-  }
   if (cl.Has("--stride") && cl.Has("--tolerance"))
   {
     error = "--stride and --tolerance exclude each other (regular or adaptive sampling)";
@@ -339,6 +334,10 @@ int RunRenderCommand(const std::vector<std::string>& args)
   cl.AddValue("--stride", "K", "geometry image: a vertex every K pixels", "20");
   cl.AddValue("--tolerance", "T", "geometry image: adaptive, to T world units (not with --stride)");
   cl.AddValue("--color", "IMAGE", "geometry image: albedo in its parameterization");
+  for (const char* option : { "--stride", "--tolerance", "--color" })
+  {
+    cl.AppliesOnlyWith(option, { "--geometry-image" });
+  }
   ReliefSceneOptions options;
   int exitCode = 0;
   if (!ParseSceneCommand(cl, args, options, exitCode))

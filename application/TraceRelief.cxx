@@ -35,6 +35,11 @@ void AddTraceReliefOptions(CommandLine& cl)
   cl.AddValue("--relief-subdivision", "N", "grid lines of the dense mesh per texel", "1");
   cl.AddValue("--relief-mask", "FILE.exr",
     "also write the share of each pixel covered by the relief surface (1 = all of it)");
+  for (const char* option :
+    { "--relief-depth-scale", "--relief-mask", "--relief-height", "--relief-subdivision" })
+  {
+    cl.AppliesOnlyWith(option, { "--relief" });
+  }
 }
 
 bool ReadDepthMapImage(const std::string& file, bool isHeight, std::vector<float>& depth,
@@ -74,15 +79,7 @@ bool ApplyTraceRelief(
   surface.clear();
   if (!cl.Has("--relief"))
   {
-    for (const char* option : { "--relief-mask", "--relief-height", "--relief-subdivision" })
-    {
-      if (cl.Has(option))
-      {
-        error = std::string(option) + " needs --relief SURFACE=DEPTH_IMAGE";
-        return false;
-      }
-    }
-    return true;
+    return true; // (the relief options need --relief: AddTraceReliefOptions)
   }
   const std::string spec = cl.Get("--relief");
   const std::size_t equals = spec.find('=');

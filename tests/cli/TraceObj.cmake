@@ -178,7 +178,7 @@ g far\nf 5 8 7 6
   cli_expect_error(1 "takes SURFACE=DEPTH_IMAGE" trace --scene cornell --relief back ${_never})
   cli_expect_error(1 "missing.png" trace --scene cornell --relief "back=${WORK}/missing.png"
     ${_never})
-  cli_expect_error(1 "--relief-mask needs --relief" trace --scene cornell --camera 0,0,0,0,0,1
+  cli_expect_error(2 "--relief-mask needs --relief" trace --scene cornell --camera 0,0,0,0,0,1
     --relief-mask "${WORK}/never-mask.exr" ${_never})
   cli_expect_error(2 "--relief applies to --scene FILE.obj or cornell only" trace --scene spheres
     --relief "back=${WORK}/depth.png" ${_never})
