@@ -35,6 +35,7 @@
 #include <vtkObjectFactory.h>
 #include <vtkOutputWindow.h>
 #include <vtkSmartPointer.h>
+#include <vtkVersion.h>
 
 #include <cstdlib>
 #include <fstream>
@@ -90,7 +91,8 @@ void PrintUsage(std::ostream& os)
 {
   os << "mesolight - relief surfaces for VTK\n\nUsage:\n";
   mesolight::PrintCommandUsage(os, "mesolight", Commands());
-  os << "\nRun 'mesolight COMMAND --help' for the options of a command.\n";
+  os << "\nRun 'mesolight COMMAND --help' for the options of a command, 'mesolight --version' "
+        "for the version.\n";
 }
 
 // Every command: name, usage, summary (the lines of `mesolight --help`), handler.
@@ -250,6 +252,12 @@ int main(int argc, char* argv[])
   {
     PrintUsage(std::cout);
     status = args.empty() ? 2 : 0;
+  }
+  else if (args[0] == "--version")
+  {
+    // What a bug report needs: this tool's version and the VTK it runs on.
+    std::cout << "mesolight " << MESOLIGHT_VERSION << " (VTK " << vtkVersion::GetVTKVersion()
+              << ")\n";
   }
   else
   {
