@@ -37,6 +37,7 @@
 #include <algorithm>
 #include <functional>
 #include <map>
+#include <sstream>
 #include <utility>
 #include <vector>
 
@@ -247,6 +248,7 @@ int vtkVirtualLightField::RequestData(
     if (snapshots && this->ResumeFromSnapshot && vlf::FileExists(this->SnapshotFileName))
     {
       field = vlf::ReadSnapshot(this->SnapshotFileName, settings.MemoryBudget);
+      this->WarnAboutSettingsNotResumed(field->Settings());
     }
     else
     {
@@ -545,6 +547,10 @@ int vtkVirtualLightField::RequestDistributedData(vtkPolyData* input, vtkPolyData
           field = vlf::ReadSnapshot(this->SnapshotFileName, settings.MemoryBudget);
           vlf::KeepOwnedSubfields(*field, reducer);
         });
+      if (reducer.Rank() == 0)
+      {
+        this->WarnAboutSettingsNotResumed(field->Settings());
+      }
     }
     else
     {
@@ -675,6 +681,45 @@ std::string vtkVirtualLightField::CheckContactTexelHalvings() const
     "] (texels halved that many times where surfaces meet; -1: automatic).";
 }
 
+//------------------------------------------------------------------------------
+void vtkVirtualLightField::WarnAboutSettingsNotResumed(
+  const mesolight::vlf::LightFieldSettings& stored)
+{
+  // What a user set that the resumed field does not use would otherwise be ignored without a
+  // word (`mesolight vlf propagate --resume` refuses such options instead).
+  const struct
+  {
+    const char* Name;
+    bool Given;
+    long long Asked;
+    long long Stored;
+  } settings[] = {
+    { "Directions", this->Directions > 0, this->Directions,
+      static_cast<long long>(stored.Directions) },
+    { "RaysPerSide", this->RaysPerSide > 0, this->RaysPerSide, stored.RaysPerSide },
+    { "Tiles", this->Tiles > 0, this->Tiles, stored.TilesPerSide },
+    { "ContactTexelHalvings", this->ContactTexelHalvings >= 0, this->ContactTexelHalvings,
+      stored.ContactTexelHalvings },
+  };
+  std::ostringstream differing;
+  for (const auto& setting : settings)
+  {
+    if (setting.Given && setting.Asked != setting.Stored)
+    {
+      differing << (differing.tellp() > 0 ? ", " : "") << setting.Name << " " << setting.Stored
+                << " (asked: " << setting.Asked << ")";
+    }
+  }
+  if (differing.tellp() > 0)
+  {
+    vtkWarningMacro("Resumed '" << this->SnapshotFileName
+                                << "' with the settings it was propagated with: " << differing.str()
+                                << ". A resumed field keeps its own; turn ResumeFromSnapshot off "
+                                   "to start over with yours.");
+  }
+}
+
+//------------------------------------------------------------------------------
 void vtkVirtualLightField::GatherIfAsked(
   mesolight::vlf::LightField& field, double begin, mesolight::vlf::Reducer* reducer)
 {

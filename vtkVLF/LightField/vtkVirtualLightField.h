@@ -65,6 +65,7 @@ namespace mesolight
 namespace vlf
 {
 class LightField;
+struct LightFieldSettings;
 class Reducer;
 }
 }
@@ -302,6 +303,10 @@ private:
   double AdaptiveTexelsBudget = 0.5; // mesolight::vlf::AdaptiveTexelOptions::GatherBudget
   // The sentence refusing ContactTexelHalvings outside [-1, 3], empty when it is in range.
   std::string CheckContactTexelHalvings() const;
+  // After resuming a snapshot: a warning naming each setting given here (Directions, RaysPerSide,
+  // Tiles, ContactTexelHalvings; automatic ones excepted) that differs from the snapshot's, which
+  // the resumed field keeps.
+  void WarnAboutSettingsNotResumed(const mesolight::vlf::LightFieldSettings& stored);
   // The final gather (when on) with progress from `begin` to 1, then the snapshot written again;
   // with a reducer (a distributed field) split over the ranks (collective).
   void GatherIfAsked(

@@ -269,6 +269,21 @@ TEST(VLFVirtualLightField, BudgetAbortAndSnapshots)
   ASSERT_NE(vtkVirtualLightFieldCore::GetLightField(filter), nullptr);
   EXPECT_EQ(vtkVirtualLightFieldCore::GetLightField(filter)->IterationsDone, 3);
   EXPECT_EQ(vtkVirtualLightFieldCore::GetLightField(filter)->EnergyLog.size(), 3u);
+  EXPECT_FALSE(messages->HasWarning("Resumed")) << messages->AllWarnings();
+
+  // Other rays per side asked of a resumed snapshot: it keeps its own, and says so (not ignored
+  // without a word).
+  const int rays = filter->GetRaysPerSide();
+  messages->Clear();
+  filter->SetRaysPerSide(2 * rays);
+  filter->SetIterations(4);
+  filter->Update();
+  ASSERT_NE(vtkVirtualLightFieldCore::GetLightField(filter), nullptr);
+  EXPECT_EQ(vtkVirtualLightFieldCore::GetLightField(filter)->Settings().RaysPerSide, rays);
+  EXPECT_TRUE(messages->HasWarning(
+    "RaysPerSide " + std::to_string(rays) + " (asked: " + std::to_string(2 * rays) + ")"))
+    << messages->AllWarnings();
+  filter->SetRaysPerSide(rays);
 
   // Abort from a progress observer.
   vtkNew<vtkVirtualLightField> aborted;
