@@ -47,9 +47,14 @@ void AddReliefOptions(CommandLine& cl)
     "emitters as lights");
   cl.AddValue("--relief-depth-scale", "K",
     "world depth of depth 1 over the world width of the relief's texture", "0.05");
+  cl.AddFlag("--relief-height", "the relief images store height (white = high), not depth");
   cl.AddFlag("--relief-no-occlusion",
     "the relief mapper without the relief's occlusion of its indirect light, its "
     "inter-reflection and the scene's shadows of the emitter lights (for comparison)");
+  for (const char* option : { "--relief-depth-scale", "--relief-height", "--relief-no-occlusion" })
+  {
+    cl.AppliesOnlyWith(option, { "--relief" });
+  }
 }
 
 std::vector<std::string> ReliefInputs(const CommandLine& cl)
@@ -99,11 +104,13 @@ class MirroredReliefs : public vlf::TracedReliefs
 {
 public:
   MirroredReliefs(const vlf::LightField& field, std::shared_ptr<const EmbreeScene> embree,
-    const std::vector<std::string>& items, double depthScale, std::vector<std::vector<SH9>> probes)
+    const std::vector<std::string>& items, double depthScale, bool depthIsHeight,
+    std::vector<std::vector<SH9>> probes)
     : Embree(std::move(embree))
   {
     FieldReliefOptions options;
     options.DepthScale = depthScale;
+    options.DepthIsHeight = depthIsHeight;
     options.KnownProbes = std::move(probes);
     this->Reliefs = SetUpFieldReliefs(field, *this->Embree, items, options);
     this->ReliefOf = ReliefOfTriangle(field, this->Reliefs);
@@ -235,6 +242,7 @@ int SetUpWalkthroughReliefs(const CommandLine& cl, const char* command, vtkLight
     ReliefSceneOptions textureOptions;
     textureOptions.DepthFile = depthImage;
     textureOptions.DepthScale = depthScale;
+    textureOptions.DepthFileIsHeight = cl.Has("--relief-height");
     vtkSmartPointer<vtkImageData> texture;
     vtkSmartPointer<vtkTexture> albedo;
     if (!BuildReliefTextures(textureOptions, texture, albedo, error))
@@ -304,7 +312,8 @@ int SetUpWalkthroughReliefs(const CommandLine& cl, const char* command, vtkLight
     try
     {
       vtkLightFieldActorCore::SetTracedReliefs(actor,
-        std::make_shared<MirroredReliefs>(*field, embree, items, depthScale, std::move(probes)));
+        std::make_shared<MirroredReliefs>(
+          *field, embree, items, depthScale, cl.Has("--relief-height"), std::move(probes)));
     }
     catch (const std::exception& e)
     {

@@ -112,6 +112,9 @@ int Render(const std::vector<std::string>& args)
     "normal, direct light from the field's emitters with the relief's self-shadowing");
   cl.AddValue("--relief-depth-scale", "K",
     "world depth of depth 1 over the world width of the relief's texture", "0.05");
+  cl.AddFlag("--relief-height", "the relief images store height (white = high), not depth");
+  cl.AppliesOnlyWith("--relief-depth-scale", { "--relief" });
+  cl.AppliesOnlyWith("--relief-height", { "--relief" });
   // --help lists the --mode renderer's options too (--tone-map, --object, ...): say they need it.
   cl.SetUnknownOptionHint(
     "see --help: the options listed under 'With --mode' need --mode MODE, the GPU renderer");
@@ -157,6 +160,7 @@ int Render(const std::vector<std::string>& args)
   }
   double viewAngle = 0.0, exposure = 0.0, tolerance = 0.1;
   FieldReliefOptions reliefOptions;
+  reliefOptions.DepthIsHeight = cl.Has("--relief-height");
   if (!ReadViewAngle(cl, viewAngle, error) ||
     !cl.GetDouble("--exposure", 0.0, 1e9, exposure, error) ||
     !cl.GetDouble("--tolerance", 0.0, 10.0, tolerance, error) ||

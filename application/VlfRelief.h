@@ -48,7 +48,8 @@ struct FieldRelief
 
 struct FieldReliefOptions
 {
-  double DepthScale = 0.05;                     // vtkReliefProperty's default
+  double DepthScale = 0.05;   // vtkReliefProperty's default
+  bool DepthIsHeight = false; // the images store height (white = high), not depth (--relief-height)
   int Probes = vlf::DefaultReliefProbesPerSide; // SH9 probes per side of the texture
   int EmitterSamplesPerSide = 4;                // per emitter triangle: n x n stratified samples
   // Per item, its SH9 probes (Probes x Probes, vlf::ReliefSurfaceProbes) when they are already
@@ -71,8 +72,9 @@ bool ReliefRadiance(
   const FieldRelief& relief, const glm::vec3& origin, const glm::vec3& dir, glm::vec3& radiance);
 
 // The depths of an image file as the relief mapper reads them (ReadDepthMapImage: luminance,
-// 0..1; row 0 at the bottom, v ~ 0). Throws ReliefSetupError naming the file and the reason.
-HeightField ReadDepthImage(const std::string& path);
+// 0..1, inverted when `isHeight`; row 0 at the bottom, v ~ 0). Throws ReliefSetupError naming the
+// file and the reason.
+HeightField ReadDepthImage(const std::string& path, bool isHeight);
 
 } // namespace mesolight
 

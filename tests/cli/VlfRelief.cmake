@@ -9,15 +9,19 @@ include("${CMAKE_CURRENT_LIST_DIR}/RunTool.cmake")
 cli_fresh_work()
 
 cli_run(TRUE vlf propagate --directions 129 --rays 16 --iterations 3 --out "${WORK}/box.vlf")
-# Depth images as ASCII PGM: all 0, and vertical grooves (every other 4 columns 255).
+# Depth images as ASCII PGM: all 0, and vertical grooves (every other 4 columns 255); the
+# grooves' height map (white = high: 255 - depth).
 set(_zero "P2\n8 8\n255\n")
 set(_grooves "P2\n8 8\n255\n")
+set(_grooves_height "P2\n8 8\n255\n")
 foreach (_row RANGE 7)
   string(APPEND _zero "0 0 0 0 0 0 0 0\n")
   string(APPEND _grooves "0 0 0 0 255 255 255 255\n")
+  string(APPEND _grooves_height "255 255 255 255 0 0 0 0\n")
 endforeach ()
 file(WRITE "${WORK}/zero.pgm" "${_zero}")
 file(WRITE "${WORK}/grooves.pgm" "${_grooves}")
+file(WRITE "${WORK}/grooves-height.pgm" "${_grooves_height}")
 
 cli_run(TRUE vlf render "${WORK}/box.vlf" --size 48x48 --out "${WORK}/flat.png"
   --exr "${WORK}/flat.exr")
@@ -38,6 +42,27 @@ endif ()
 if (_grooves EQUAL _zero)
   message(FATAL_ERROR "a relief with depth looks like the flat wall")
 endif ()
+
+# A height map (white = high) with --relief-height is the same relief as its depth map, pixel for
+# pixel; without the flag it is the inverted relief (the ridges where the grooves were).
+foreach (_flag IN ITEMS height depth)
+  set(_height_flag)
+  if (_flag STREQUAL "height")
+    set(_height_flag --relief-height)
+  endif ()
+  cli_run(TRUE vlf render "${WORK}/box.vlf" --size 48x48 --relief back=${WORK}/grooves-height.pgm
+    --relief floor=${WORK}/grooves-height.pgm --relief-depth-scale 0.1 ${_height_flag}
+    --out "${WORK}/ridges-as-${_flag}.png" --exr "${WORK}/ridges-as-${_flag}.exr")
+  execute_process(COMMAND "${OIIOTOOL}" --fail 1e-6 --warn 1e-6 "${WORK}/grooves.exr"
+    "${WORK}/ridges-as-${_flag}.exr" --diff RESULT_VARIABLE _differs OUTPUT_QUIET ERROR_QUIET)
+  if (_flag STREQUAL "height" AND NOT _differs EQUAL 0)
+    message(FATAL_ERROR "the height map with --relief-height is not the depth map's relief")
+  elseif (_flag STREQUAL "depth" AND _differs EQUAL 0)
+    message(FATAL_ERROR "the height map read as depth gives the depth map's relief")
+  endif ()
+endforeach ()
+cli_expect_error(2 "--relief-height needs --relief" vlf render "${WORK}/box.vlf"
+  --relief-height --out "${WORK}/never.png")
 
 # Bad input.
 cli_expect_error(2 "its surfaces are: floor, ceiling, back, left, right, light, short, tall"

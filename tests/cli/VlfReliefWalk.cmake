@@ -48,6 +48,16 @@ if (_inside LESS 50)
 endif ()
 
 if (PART STREQUAL "walk")
+  # The walkthrough reads a height map with --relief-height as the relief mapper and the CPU
+  # reference do: the inverted grooves drawn as heights give the grooves' image.
+  string(REPLACE "0 0 0 0 255 255 255 255" "255 255 255 255 0 0 0 0" _ridges "${_grooves}")
+  file(WRITE "${WORK}/grooves-height.pgm" "${_ridges}")
+  cli_run(TRUE vlf render "${WORK}/box.vlf" --mode progressive --size ${_size} ${_relief}
+    --out "${WORK}/as-depth.png")
+  cli_run(TRUE vlf render "${WORK}/box.vlf" --mode progressive --size ${_size}
+    --relief back=${WORK}/grooves-height.pgm --relief-depth-scale 0.1 --relief-height
+    --out "${WORK}/as-height.png")
+  oiio("${WORK}/as-depth.png" "${WORK}/as-height.png" --diff)
   foreach (_mode IN ITEMS geometry raytrace progressive coherent)
     cli_run(TRUE vlf render "${WORK}/box.vlf" --mode ${_mode} --size ${_size}
       --out "${WORK}/${_mode}-flat.png")
