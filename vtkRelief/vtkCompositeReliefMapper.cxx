@@ -57,7 +57,7 @@ protected:
     {
       frameInputs.push_back(entry.first);
     }
-    if (!this->Shading()->BeginFrame(parent->CurrentReliefTexture, frameInputs))
+    if (!this->Shading()->BeginFrame(this, parent->CurrentReliefTexture, frameInputs))
     {
       return;
     }

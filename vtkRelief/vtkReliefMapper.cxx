@@ -233,7 +233,7 @@ void vtkReliefMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* actor)
   vtkTexture* albedo = actor->GetTexture();
   const std::vector<vtkObject*> frameInputs{ this->GetReliefProperty(), this->CurrentInput, relief,
     lights, probes, albedo, albedo ? albedo->GetInput() : nullptr };
-  if (!this->Shading->BeginFrame(relief, frameInputs))
+  if (!this->Shading->BeginFrame(this, relief, frameInputs))
   {
     return;
   }

@@ -101,18 +101,24 @@ vtkReliefGeometryCache* vtkReliefShading::GetGeometryCache()
 }
 
 //------------------------------------------------------------------------------
-bool vtkReliefShading::BeginFrame(vtkImageData* relief, const std::vector<vtkObject*>& inputs)
+bool vtkReliefShading::BeginFrame(
+  const void* drawer, vtkImageData* relief, const std::vector<vtkObject*>& inputs)
 {
+  this->FrameDrawer = drawer;
   this->FrameInputs.clear();
   for (vtkObject* input : inputs)
   {
     this->FrameInputs.emplace_back(input, input ? input->GetMTime() : 0);
   }
-  if (this->LastFrameFailed && this->FrameInputs == this->FailedFrameInputs)
+  const auto failed = this->FailedFrames.find(drawer);
+  if (failed != this->FailedFrames.end())
   {
-    return false;
+    if (failed->second == this->FrameInputs)
+    {
+      return false;
+    }
+    this->FailedFrames.erase(failed);
   }
-  this->LastFrameFailed = false;
   if (!relief)
   {
     vtkErrorMacro(<< "No relief texture. In ParaView: apply Mesolight Attach Relief Texture to "
@@ -127,8 +133,7 @@ bool vtkReliefShading::BeginFrame(vtkImageData* relief, const std::vector<vtkObj
 //------------------------------------------------------------------------------
 void vtkReliefShading::FrameFailed()
 {
-  this->LastFrameFailed = true;
-  this->FailedFrameInputs = this->FrameInputs;
+  this->FailedFrames[this->FrameDrawer] = this->FrameInputs;
 }
 
 //------------------------------------------------------------------------------
@@ -363,6 +368,10 @@ void vtkReliefShading::SetShaderParameters(
   program->SetUniform3f("mlSpecularColor", specular);
   program->SetUniformf("mlSpecularPower", static_cast<float>(property->GetSpecularPower()));
   program->SetUniformf("mlExposure", static_cast<float>(p->GetExposure()));
+  const double* emission = p->GetEmission();
+  const float emitted[3] = { static_cast<float>(emission[0]), static_cast<float>(emission[1]),
+    static_cast<float>(emission[2]) };
+  program->SetUniform3f("mlEmission", emitted);
   if (this->LightSet->GetHasLightSet())
   {
     program->SetUniformi("mlLightSet", this->LightSet->GetTextureObject()->GetTextureUnit());

@@ -32,6 +32,7 @@
 #include "vtkObject.h"
 #include "vtkSmartPointer.h" // for Property
 
+#include <map>     // for FailedFrames
 #include <string>  // for the shader sources
 #include <utility> // for FrameInputs
 #include <vector>  // for FrameInputs
@@ -86,14 +87,15 @@ public:
   /**
    * The frame's first check, before the geometry is prepared: false when it cannot be drawn.
    * Without a relief texture it reports that (the first thing a relief surface needs, so it is
-   * what a user hears first). After a frame that failed (FrameFailed) it returns false without a
-   * word while `inputs`, everything that decides whether the frame can be drawn (the relief
-   * property, the polydata, the relief texture, light set, probes, albedo texture and image; null
-   * entries allowed), are the same objects, unmodified: each error is reported once, not at
-   * every render (an interactor or ParaView's view renders many times), and again once any of
-   * them changes.
+   * what a user hears first). After a frame of the same `drawer` that failed (FrameFailed) it
+   * returns false without a word while `inputs`, everything that decides whether the frame can be
+   * drawn (the relief property, the polydata, the relief texture, light set, probes, albedo
+   * texture and image; null entries allowed), are the same objects, unmodified: each error is
+   * reported once, not at every render (an interactor or ParaView's view renders many times), and
+   * again once any of them changes. `drawer` tells apart the callers sharing this shading (the
+   * composite mapper's helpers, each with its own blocks); it is only compared.
    */
-  bool BeginFrame(vtkImageData* relief, const std::vector<vtkObject*>& inputs);
+  bool BeginFrame(const void* drawer, vtkImageData* relief, const std::vector<vtkObject*>& inputs);
   void FrameFailed();
   ///@}
 
@@ -157,12 +159,12 @@ protected:
   // The albedo texture image last checked for NaN/Inf texels, and when (its MTime).
   vtkImageData* CheckedAlbedo = nullptr;
   vtkMTimeType CheckedAlbedoTime = 0;
-  // The inputs of the frame under way (BeginFrame) and of the last one that failed: each
-  // object's address (only compared) and modification time.
+  // The drawer and inputs of the frame under way (BeginFrame), and per drawer the inputs of its
+  // last frame if it failed: each object's address (only compared) and modification time.
   using FrameInputList = std::vector<std::pair<const void*, vtkMTimeType>>;
+  const void* FrameDrawer = nullptr;
   FrameInputList FrameInputs;
-  bool LastFrameFailed = false;
-  FrameInputList FailedFrameInputs;
+  std::map<const void*, FrameInputList> FailedFrames;
 
 private:
   vtkReliefShading(const vtkReliefShading&) = delete;
