@@ -286,6 +286,8 @@ int SetUpWalkthroughReliefs(const CommandLine& cl, const char* command, vtkLight
     // The surface's own emitter lights: the probes' scene visibility is per light of that list
     // (more lamps than the relief shades are merged with this wall's nearest lamps kept apart).
     property->SetLights(surface->GetEmitterLights());
+    // A relief on a lamp or a window still emits its light.
+    property->SetEmission(surface->GetSurfaceEmission());
     // A wall of a closed room has no silhouette: a view ray leaving the texture at its edge
     // would show the background through the hidden wall (the CPU reference keeps the wall there).
     property->SilhouettesOff();

@@ -236,6 +236,8 @@ void vtkReliefProperty::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NormalFilter: " << GetNormalFilterName(this->NormalFilter) << "\n";
   os << indent << "FarViewRays: " << this->FarViewRays << "\n";
   os << indent << "Exposure: " << this->Exposure << "\n";
+  os << indent << "Emission: " << this->Emission[0] << " " << this->Emission[1] << " "
+     << this->Emission[2] << "\n";
   os << indent << "ToneMapping: " << (this->ToneMapping ? "On" : "Off") << "\n";
   os << indent << "EncodeSRGB: " << (this->EncodeSRGB ? "On" : "Off") << "\n";
   os << indent << "Lights: "

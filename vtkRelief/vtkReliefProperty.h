@@ -371,6 +371,18 @@ public:
 
   ///@{
   /**
+   * Radiance the surface emits (RGB, default 0), added to the light-set or probe shading before
+   * Exposure: a relief on an emitter of a light field (a lamp, a window) shows the emitter's
+   * light, as the field and its CPU reference do (vtkLightFieldReliefSurface's
+   * GetSurfaceEmission). Not used without a light set or probes (VTK's own lights: the actor's
+   * ambient term).
+   */
+  vtkSetVector3Macro(Emission, double);
+  vtkGetVector3Macro(Emission, double);
+  ///@}
+
+  ///@{
+  /**
    * Encode the light-set / probe shading with the sRGB curve after exposure and tone mapping
    * (default off: relief colours go to the framebuffer linear, as VTK's). On for a relief drawn
    * beside a light field walkthrough, whose radiance is sRGB-encoded (vtkLightFieldActor), so
@@ -451,7 +463,8 @@ protected:
   bool LevelOfDetail = true;
   int NormalFilter = HeightMaskedNormalFilter;
   int FarViewRays = 3;
-  double Exposure;  // mesolight::ReliefLightSetDisplay, set in the constructor
+  double Exposure; // mesolight::ReliefLightSetDisplay, set in the constructor
+  double Emission[3] = { 0.0, 0.0, 0.0 };
   bool ToneMapping; // idem
   bool EncodeSRGB = false;
   vtkSmartPointer<vtkLightCollection> Lights;

@@ -367,6 +367,10 @@ void vtkReliefSurfaceRepresentation::UseFieldSurfaceOutputs(bool updated)
   static_cast<vtkCompositeReliefMapper*>(this->Mapper)->SetIrradianceProbesData(kept);
   static_cast<vtkCompositeReliefMapper*>(this->LODMapper)->SetIrradianceProbesData(kept);
   this->ReliefProperty->SetLights(this->FieldLit ? this->FieldLights.Get() : nullptr);
+  // A relief on an emitter of the field (a lamp, a window) still emits its light.
+  const double none[3] = { 0.0, 0.0, 0.0 };
+  this->ReliefProperty->SetEmission(
+    this->FieldLit ? this->FieldSurface->GetSurfaceEmission() : none);
   // A relief mounted on a wall of the field replaces the wall: its depth lies behind its plane
   // (by up to the depth scale), so without the limit the Light Field representation's wall a
   // few mm behind the patch would hide the relief's deeper parts.

@@ -280,6 +280,8 @@
   // e.g. the light field walkthrough's object shadow (vtkLightFieldReliefMapper).
   gl_FragData[0].rgb = mlRadianceHook(gl_FragData[0].rgb, mlHitPos, mlN, diffuseColor);
 #endif
+  // An emitter's own light (a lamp under the relief), which no shadow takes away.
+  gl_FragData[0].rgb += mlEmission;
   gl_FragData[0].rgb *= mlExposure;
 #ifdef ML_TONE_MAPPING
   gl_FragData[0].rgb = gl_FragData[0].rgb / (1.0 + gl_FragData[0].rgb); // Reinhard

@@ -16,6 +16,7 @@ uniform int mlLightPositional[ML_MAX_LIGHTS];
 uniform vec3 mlSpecularColor; // specular x specular colour
 uniform float mlSpecularPower;
 uniform float mlExposure; // scales the light-set and probe shading
+uniform vec3 mlEmission;  // the surface's emitted radiance, added to that shading
 uniform mat3 mlWorldToView; // rotation part of the view matrix
 
 #ifdef ML_IRRADIANCE_PROBES

@@ -427,6 +427,7 @@ int vtkLightFieldReliefSurface::RequestData(
   for (int c = 0; c < 3; ++c)
   {
     this->SurfaceDiffuse[c] = surface.Diffuse[c];
+    this->SurfaceEmission[c] = surface.Emission[c];
   }
 
   // Port 0: the triangles, three points each (the surface's own normal and texture map).
@@ -675,6 +676,7 @@ int vtkLightFieldReliefSurface::RequestSurfaceData(
         result.Probes.data(), static_cast<vtkIdType>(result.Probes.size()), root);
       controller->Broadcast(result.Frame, 16, root);
       controller->Broadcast(result.Diffuse, 3, root);
+      controller->Broadcast(result.Emission, 3, root);
       controller->Broadcast(result.Limit, 7, root);
       if (lights > 0)
       {
@@ -723,6 +725,7 @@ int vtkLightFieldReliefSurface::RequestSurfaceData(
   }
   AddPackedLights(result.Lights, this->EmitterLights);
   std::copy(result.Diffuse, result.Diffuse + 3, this->SurfaceDiffuse);
+  std::copy(result.Emission, result.Emission + 3, this->SurfaceEmission);
   std::copy(result.Limit, result.Limit + 7, this->DepthLimit);
 
   // Port 0: this rank's piece, with normals and, when it has none, the plane's texture

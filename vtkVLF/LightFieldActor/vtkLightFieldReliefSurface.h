@@ -214,6 +214,12 @@ public:
   vtkGetVector3Macro(SurfaceDiffuse, double);
 
   /**
+   * The radiance the surface emits (its material's Ke, 0 unless it is an emitter) after an
+   * update: the relief drawn over a lamp or a window shows it (vtkReliefProperty::SetEmission).
+   */
+  vtkGetVector3Macro(SurfaceEmission, double);
+
+  /**
    * For a surface of input port 1 mounted on a scene surface (facing the same way, up to 5% of
    * the scene radius in front of it: mesolight::vlf::ReliefSurfaceFromTriangles), after an
    * update: the plane halfway between the two, world coordinates (a point, the front normal).
@@ -263,6 +269,7 @@ private:
   struct vtkInternals; // what the last update computed, kept while its inputs do not change
   std::unique_ptr<vtkInternals> Internals;
   double SurfaceDiffuse[3] = { 0.0, 0.0, 0.0 };
+  double SurfaceEmission[3] = { 0.0, 0.0, 0.0 };
   double DepthLimit[7] = { 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0 }; // point, normal, mounted
   vtkNew<vtkLightCollection> EmitterLights;
   const void* ExecutedField = nullptr; // the actor's field the outputs were made from

@@ -219,6 +219,7 @@ SurfaceResult ComputeSurface(const vlf::LightField& field, vtkPolyData* whole, i
   {
     result.Frame[12 + c] = field.NormalizationCentre()[c];
     result.Diffuse[c] = surface.Diffuse[c];
+    result.Emission[c] = surface.Emission[c];
   }
   result.Frame[15] = field.NormalizationScale();
   if (surface.FieldSurface != vlf::NoSurface)

@@ -59,12 +59,13 @@ std::vector<float> LightFactors(const LightField& field, const ReliefSurface& su
 HeightField ReliefHeightField(vtkImageData* texture, bool walled);
 
 // What one rank computes for a surface of polydata and sends: the probes, the texture frame,
-// the surface's Kd and the emitter lights.
+// the surface's Kd and Ke and the emitter lights.
 struct SurfaceResult
 {
   std::vector<float> Probes;
   double Frame[16] = {}; // origin, u axis, v axis, normal (unit sphere); centre, scale (world)
   double Diffuse[3] = {};
+  double Emission[3] = {};
   // The depth limit (world): a point, the front normal, 1 when the surface is mounted on a wall.
   double Limit[7] = {};
   std::vector<double> Lights;
