@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /**
  * @file DepthScaleSetting.h
- * @brief How every Mesolight setter takes a relief's depth scale (plain C++17; the setter
- *        body for VTK classes is a template that uses VTK's macros where it is instantiated).
+ * @brief How every Mesolight setter takes a relief's depth scale (the rule in plain C++17;
+ *        the setter body for VTK classes a template on VTK's message macros).
  *
  * One rule for vtkReliefProperty and vtkReliefTextureFilter, so that a user's mistake gets the
  * same answer wherever it is made: NaN is refused (the old value is kept), anything else is
@@ -13,6 +13,8 @@
 #ifndef mesolight_DepthScaleSetting_h
 #define mesolight_DepthScaleSetting_h
 
+#include "vtkObject.h" // vtkErrorWithObjectMacro, vtkWarningWithObjectMacro (SetDepthScaleOf)
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -20,6 +22,11 @@
 
 namespace mesolight
 {
+
+/// The largest depth scale anything accepts (the world depth of depth 1 over the texture's world
+/// width): a relief ten times deeper than wide. vtkReliefProperty, vtkReliefTextureFilter (also
+/// for its true scale times VerticalExaggeration) and the shader's baked scale use it alike.
+constexpr double MaximumDepthScale = 10.0;
 
 /// False for NaN (value untouched). Otherwise value = requested clamped to [0, maximum], and
 /// note the sentence to report when it differs from requested (empty when it does not).
@@ -51,8 +58,7 @@ inline bool ClampDepthScale(double requested, double maximum, double& value, std
 
 /// A depth-scale setter's whole body, for VTK classes (Object: a vtkObject): ClampDepthScale,
 /// its note reported through the object's error or warning, `member` set and the object
-/// modified when the value changes. A template so that this header needs no VTK header; the
-/// caller's translation unit has vtkObject and vtkSetGet.h.
+/// modified when the value changes.
 template <class Object>
 void SetDepthScaleOf(Object* self, double& member, double requested, double maximum)
 {

@@ -177,7 +177,7 @@ int vtkReliefProperty::GetRequiredConeMap(int method)
 //------------------------------------------------------------------------------
 void vtkReliefProperty::SetDepthScale(double requested)
 {
-  mesolight::SetDepthScaleOf(this, this->DepthScale, requested, 10.0);
+  mesolight::SetDepthScaleOf(this, this->DepthScale, requested, mesolight::MaximumDepthScale);
 }
 
 //------------------------------------------------------------------------------

@@ -114,7 +114,7 @@ vtkReliefTextureFilter::vtkReliefTextureFilter()
 //------------------------------------------------------------------------------
 void vtkReliefTextureFilter::SetDepthScale(double requested)
 {
-  mesolight::SetDepthScaleOf(this, this->DepthScale, requested, 100.0);
+  mesolight::SetDepthScaleOf(this, this->DepthScale, requested, mesolight::MaximumDepthScale);
 }
 
 //------------------------------------------------------------------------------
@@ -459,16 +459,18 @@ int vtkReliefTextureFilter::Execute(
       << ". Set the depth scale instead.");
     return 0;
   }
-  // A pixel size far too small for the elevations (a corrupt georeference) would give a relief
-  // hundreds of times deeper than wide: refused, as DepthScale is clamped to 100.
-  if (this->UseTrueDepthScale && this->TrueDepthScale * this->VerticalExaggeration > 100.0)
+  // A pixel size far too small for the elevations (a corrupt georeference), or an absurd
+  // exaggeration, would give a relief many times deeper than wide: refused, as DepthScale is
+  // clamped to mesolight::MaximumDepthScale (which the mapper applies to a baked scale too).
+  if (this->UseTrueDepthScale &&
+    this->TrueDepthScale * this->VerticalExaggeration > mesolight::MaximumDepthScale)
   {
     vtkErrorMacro("The true vertical scale times VerticalExaggeration is a depth scale of "
       << this->TrueDepthScale * this->VerticalExaggeration << " ("
       << (maxValue - minValue) * elevationUnit << " m of elevation over " << w << " pixels of "
-      << pixelSize->GetComponent(0, 0)
-      << " m), above 100: the image's pixel size or its elevations' unit cannot be right. "
-         "Set the depth scale instead.");
+      << pixelSize->GetComponent(0, 0) << " m), above " << mesolight::MaximumDepthScale
+      << ", the largest depth scale: lower VerticalExaggeration, or check the image's pixel size "
+         "and its elevations' unit (or set the depth scale instead).");
     return 0;
   }
   this->AppliedDepthScale =

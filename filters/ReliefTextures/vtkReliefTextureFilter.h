@@ -57,8 +57,8 @@ public:
   ///@{
   /**
    * World depth of depth = 1 divided by the world width of the texture (dimensionless).
-   * Clamped to [0, 100], with a warning (a negative scale is 0: invert the input instead);
-   * NaN is an error and keeps the value. Default is 0.05.
+   * Clamped to [0, 10] (mesolight::MaximumDepthScale), with a warning (a negative scale is 0:
+   * invert the input instead); NaN is an error and keeps the value. Default is 0.05.
    */
   void SetDepthScale(double depthScale);
   vtkGetMacro(DepthScale, double);
