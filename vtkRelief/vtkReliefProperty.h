@@ -33,6 +33,7 @@
 #define vtkReliefProperty_h
 
 #include "MesolightReliefModule.h" // for export macro
+#include "vtkClampedSetter.h"       // for mesolightSetClampMacro
 #include "vtkObject.h"
 #include "vtkSmartPointer.h" // for Messages
 
@@ -101,7 +102,7 @@ public:
    * GetMarchMethod). Before: Relief 10+8, which missed by 1.6-44 texels on real maps at 85
    * degrees.
    */
-  vtkSetClampMacro(Method, int, TextureMapping, NumberOfMethods - 1);
+  mesolightSetClampMacro(Method, int, TextureMapping, NumberOfMethods - 1);
   vtkGetMacro(Method, int);
   void SetMethodToTextureMapping() { this->SetMethod(TextureMapping); }
   void SetMethodToSteepParallax() { this->SetMethod(LinearSearch); }
@@ -136,9 +137,9 @@ public:
    * (docs/relief-methods.md). Choosing another method, give its steps too (10 was the default
    * for Relief).
    */
-  vtkSetClampMacro(LinearSteps, int, 1, 1024);
+  mesolightSetClampMacro(LinearSteps, int, 1, 1024);
   vtkGetMacro(LinearSteps, int);
-  vtkSetClampMacro(RefinementSteps, int, 0, 64);
+  mesolightSetClampMacro(RefinementSteps, int, 0, 64);
   vtkGetMacro(RefinementSteps, int);
   ///@}
 
@@ -150,7 +151,7 @@ public:
   vtkSetMacro(AdaptiveSteps, bool);
   vtkGetMacro(AdaptiveSteps, bool);
   vtkBooleanMacro(AdaptiveSteps, bool);
-  vtkSetClampMacro(MinimumSteps, int, 1, 1024);
+  mesolightSetClampMacro(MinimumSteps, int, 1, 1024);
   vtkGetMacro(MinimumSteps, int);
   ///@}
 
@@ -197,7 +198,7 @@ public:
 
   ///@{
   /** NormalFilterKind (default HeightMaskedNormalFilter); read only with LevelOfDetail on. */
-  vtkSetClampMacro(NormalFilter, int, MeanNormalFilter, HeightMaskedNormalFilter);
+  mesolightSetClampMacro(NormalFilter, int, MeanNormalFilter, HeightMaskedNormalFilter);
   vtkGetMacro(NormalFilter, int);
   ///@}
 
@@ -226,7 +227,7 @@ public:
    * (docs/relief-methods.md, "Several view rays per far pixel"); test
    * ReliefLevelOfDetail.AveragesViewRaysAcrossAFarFootprint.
    */
-  vtkSetClampMacro(FarViewRays, int, 1, 8);
+  mesolightSetClampMacro(FarViewRays, int, 1, 8);
   vtkGetMacro(FarViewRays, int);
   ///@}
 
@@ -349,7 +350,7 @@ public:
    * What the fragments show (OutputType): the shaded surface, or measurement outputs that tests
    * and benchmarks compare with exact CPU references (see mesolight::DecodeHitCoordinate).
    */
-  vtkSetClampMacro(Output, int, ShadedOutput, NumberOfOutputs - 1);
+  mesolightSetClampMacro(Output, int, ShadedOutput, NumberOfOutputs - 1);
   vtkGetMacro(Output, int);
   ///@}
 
@@ -362,7 +363,7 @@ public:
    * the first image is exposed. The defaults are mesolight::ReliefLightSetDisplay
    * (common/DisplayTransform.h). Off: the shading is clamped (for measurements in radiance).
    */
-  vtkSetClampMacro(Exposure, double, 0.0, 1e6);
+  mesolightSetClampMacro(Exposure, double, 0.0, 1e6);
   vtkGetMacro(Exposure, double);
   vtkSetMacro(ToneMapping, bool);
   vtkGetMacro(ToneMapping, bool);
@@ -411,9 +412,9 @@ public:
    * with ShadowedLights = K > 0 only the K strongest lights facing a pixel march their shadows,
    * the rest are weighted by the visible fraction of those K (default 0: all march).
    */
-  vtkSetClampMacro(LightSetThreshold, double, 0.0, 1.0);
+  mesolightSetClampMacro(LightSetThreshold, double, 0.0, 1.0);
   vtkGetMacro(LightSetThreshold, double);
-  vtkSetClampMacro(ShadowedLights, int, 0, 1 << 16);
+  mesolightSetClampMacro(ShadowedLights, int, 0, 1 << 16);
   vtkGetMacro(ShadowedLights, int);
   ///@}
 

@@ -134,12 +134,31 @@ TEST(ReliefProperty, DefaultsAndClamping)
   EXPECT_EQ(property->GetDepthScale(), 0.05);
   EXPECT_TRUE(property->GetSelfShadowing());
   EXPECT_EQ(property->GetOutput(), vtkReliefProperty::ShadedOutput);
-  property->SetMethod(1000);
-  EXPECT_EQ(property->GetMethod(), vtkReliefProperty::NumberOfMethods - 1);
-  property->SetLinearSteps(0);
-  EXPECT_EQ(property->GetLinearSteps(), 1);
   vtkNew<mesolight_test::MessageCapture> messages;
   messages->Watch(property);
+  // Clamped into range, and said (VTK's vtkSetClampMacro clamped without a word).
+  property->SetMethod(1000);
+  EXPECT_EQ(property->GetMethod(), vtkReliefProperty::NumberOfMethods - 1);
+  EXPECT_TRUE(messages->HasWarning("SetMethod: 1000 is outside [0, ")) << messages->AllWarnings();
+  property->SetLinearSteps(0);
+  EXPECT_EQ(property->GetLinearSteps(), 1);
+  EXPECT_TRUE(messages->HasWarning("SetLinearSteps: 0 is outside [1, 1024]; using 1."))
+    << messages->AllWarnings();
+  property->SetExposure(-1.0);
+  EXPECT_EQ(property->GetExposure(), 0.0);
+  EXPECT_TRUE(messages->HasWarning("SetExposure: -1 is outside")) << messages->AllWarnings();
+  // NaN is refused, the old value kept.
+  property->SetExposure(2.0);
+  property->SetExposure(std::nan(""));
+  EXPECT_EQ(property->GetExposure(), 2.0);
+  EXPECT_TRUE(messages->HasError("SetExposure: NaN is not a value; keeping 2."))
+    << messages->AllErrors();
+  // In range: nothing said.
+  messages->Clear();
+  property->SetLinearSteps(32);
+  property->SetRefinementSteps(8);
+  EXPECT_TRUE(messages->AllWarnings().empty()) << messages->AllWarnings();
+  EXPECT_EQ(property->GetLinearStepsMaxValue(), 1024);
   property->SetDepthScale(-1.0);
   EXPECT_EQ(property->GetDepthScale(), 0.0);
   // Said, with what a negative scale was likely meant for.
