@@ -201,10 +201,10 @@ int vtkAttachReliefTexture::FillInputPortInformation(int port, vtkInformation* i
     return 1;
   }
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkImageData");
-  if (port >= 2)
-  {
-    info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
-  }
+  // The relief texture (port 1) is needed, but a missing one is said by RequestData in the
+  // user's words (the executive's 'has 0 connections but is not optional' named no fix), and
+  // the surface still passes on.
+  info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
   return 1;
 }
 
@@ -242,6 +242,14 @@ int vtkAttachReliefTexture::RequestData(
   vtkNew<vtkFieldData> field; // the input's field data stays untouched
   field->ShallowCopy(input->GetFieldData());
   output->SetFieldData(field);
+  if (inputVector[1]->GetNumberOfInformationObjects() == 0)
+  {
+    vtkErrorMacro(<< "No Relief Texture input: connect Mesolight Relief Texture's (or Cone Map's) "
+                     "output as the Relief Texture input (ParaView: select this filter, then Edit "
+                     "> Change Input...; VTK: SetReliefTextureConnection). The surface is passed "
+                     "on without a relief.");
+    return 1;
+  }
   if (!Attach(relief, ReliefPrefix, field))
   {
     vtkErrorMacro(<< "The relief texture (input port 1) must be a non-empty 2D image with point "

@@ -101,6 +101,27 @@ std::string AttachWarnings(vtkAlgorithm* surface, vtkImageData* relief)
 }
 } // namespace
 
+// Applied without its Relief Texture (ParaView's input dialog lets one press OK): one error that
+// says what to connect and how, not the executive's "has 0 connections but is not optional",
+// and the surface passes on (the view does not go empty behind a pipeline failure).
+TEST(AttachReliefTexture, AMissingReliefTextureIsSaidAndTheSurfacePasses)
+{
+  vtkNew<vtkPlaneSource> square;
+  vtkNew<vtkAttachReliefTexture> attach;
+  attach->SetInputConnection(square->GetOutputPort());
+  vtkNew<mesolight_test::MessageCapture> messages;
+  messages->Watch(attach);
+  attach->Update();
+  EXPECT_NE(messages->AllErrors().find("No Relief Texture input"), std::string::npos)
+    << messages->AllErrors();
+  EXPECT_NE(messages->AllErrors().find("Change Input"), std::string::npos) << messages->AllErrors();
+  EXPECT_EQ(messages->AllErrors().find("not optional"), std::string::npos) << messages->AllErrors();
+  vtkDataSet* output = vtkDataSet::SafeDownCast(attach->GetOutputDataObject(0));
+  ASSERT_NE(output, nullptr);
+  EXPECT_EQ(output->GetNumberOfPoints(), 4);
+  EXPECT_EQ(vtkAttachReliefTexture::GetAttachedReliefTexture(output), nullptr);
+}
+
 TEST(AttachReliefTexture, AMapOutOfItsProportionsOnTheSurfaceIsWarnedAbout)
 {
   // ParaView's Plane (square) under a map twice as wide as tall: drawn twice too tall.
