@@ -73,9 +73,16 @@ SurfacePlane SurfacePlaneOf(
   }
   const double diagonal = glm::length(upper - lower);
   const double normalLength = glm::length(normalSum);
-  if (!(normalLength > 0.0) || !(diagonal > 0.0))
+  if (!(diagonal > 0.0))
   {
     throw SurfaceReliefError(name + " has no area");
+  }
+  // Faces that cancel out (a closed object: a box, a bracket, a sphere) have area but no one
+  // side: not "no area", which a user looking at the object knows to be wrong.
+  if (!(normalLength > 1e-6 * diagonal * diagonal))
+  {
+    throw SurfaceReliefError(
+      name + " is not planar: its faces turn every way (a closed or " + "curved object)");
   }
   const glm::dvec3 n = normalSum / normalLength;
   // The plane through the area-weighted centroid.

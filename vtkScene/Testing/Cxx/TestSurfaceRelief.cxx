@@ -8,6 +8,8 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
+
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -281,6 +283,38 @@ TEST(SurfaceRelief, PlaneRuleOnFloorAndTilt)
       EXPECT_LT(v.z, 0.0f) << degrees;
     }
   }
+}
+
+// A closed object (a cube, all six faces outward) has area but no side to take a plane from:
+// "not planar", not "has no area" (what ParaView's Relief Surface said of an OBJ bracket), which
+// its user knows to be wrong.
+TEST(SurfaceRelief, AClosedObjectIsNotPlanarRatherThanWithoutArea)
+{
+  TriangleScene cube;
+  const std::uint32_t material = cube.AddMaterial({});
+  const glm::vec3 p[8] = { { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 }, { 0, 0, 1 },
+    { 1, 0, 1 }, { 1, 1, 1 }, { 0, 1, 1 } };
+  for (const auto& face : std::vector<std::array<int, 4>>{ { 0, 3, 2, 1 }, { 4, 5, 6, 7 },
+         { 0, 1, 5, 4 }, { 2, 3, 7, 6 }, { 0, 4, 7, 3 }, { 1, 2, 6, 5 } })
+  {
+    cube.AddPolygon({ p[face[0]], p[face[1]], p[face[2]], p[face[3]] }, material);
+  }
+  std::vector<std::size_t> all(cube.TriangleCount());
+  for (std::size_t t = 0; t < all.size(); ++t)
+  {
+    all[t] = t;
+  }
+  std::string said;
+  try
+  {
+    mesolight::SurfacePlaneOf(cube, all, "the cube");
+  }
+  catch (const std::exception& e)
+  {
+    said = e.what();
+  }
+  EXPECT_NE(said.find("not planar"), std::string::npos) << said;
+  EXPECT_EQ(said.find("no area"), std::string::npos) << said;
 }
 
 TEST(SurfaceRelief, ConstantDepthSideWallsArea)
