@@ -7,7 +7,9 @@
 #   scripts/paraview.sh                         (the GUI)
 #   scripts/paraview.sh --state=examples/relief-environment.pvsm
 #   scripts/paraview.sh --script=my_pipeline.py
-# Without a display it runs under Xvfb (scripts/xvfb.sh), e.g. for scripted checks.
+# Without a display it runs under Xvfb (scripts/xvfb.sh), e.g. for scripted checks, with its own
+# settings directory where ParaView's welcome dialog is off (no one could close it, and a script
+# that loads a state would wait behind it: scripts/paraview-script-settings.sh).
 #   MESOLIGHT_PARAVIEW_BUILD_DIR  the plugin's build directory (default: <repo>/build-paraview)
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -22,6 +24,12 @@ export PYTHONPATH="$python_dir${PYTHONPATH:+:$PYTHONPATH}"
 export PV_PLUGIN_PATH="$plugin_dir${PV_PLUGIN_PATH:+:$PV_PLUGIN_PATH}"
 export MESOLIGHT_PLUGIN="$plugin_dir/Mesolight.so"
 if [ -z "${DISPLAY:-}" ]; then
-  exec bash "$here/scripts/xvfb.sh" paraview "$@"
+  config="$(mktemp -d "${TMPDIR:-/tmp}/mesolight-paraview-settings.XXXXXX")"
+  trap 'rm -rf "$config"' EXIT
+  bash "$here/scripts/paraview-script-settings.sh" "$config"
+  status=0
+  XDG_CONFIG_HOME="$config" XDG_RUNTIME_DIR="$config" bash "$here/scripts/xvfb.sh" paraview "$@" ||
+    status=$?
+  exit "$status"
 fi
 exec paraview "$@"

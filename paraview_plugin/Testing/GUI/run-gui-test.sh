@@ -2,9 +2,8 @@
 # SPDX-License-Identifier: BSD-3-Clause
 # Runs a Python script inside the real ParaView GUI: `paraview --script=SCRIPT --exit`, as a
 # user's session would (the plugin auto-loaded through PV_PLUGIN_PATH, ParaView's Python from
-# PYTHONPATH), with a private HOME whose ParaView settings file turns off the splash screen and
-# the welcome dialog (GeneralSettings.ShowSplashScreen / ShowWelcomeDialog, read from
-# ~/.config/ParaView/ParaView<version>.ini by ParaView 5.11's client). The script writes "OK"
+# PYTHONPATH), with a private HOME whose ParaView settings turn off the splash screen and the
+# welcome dialog (scripts/paraview-script-settings.sh, as scripts/paraview.sh without a display). The script writes "OK"
 # or its failures to $MESOLIGHT_GUI_RESULT: `paraview --script` runs it through
 # vtkPythonInterpreter::RunSimpleString and exits 0 whatever happened, so a missing "OK" (an
 # exception, a crash, a dialog that blocked) is the failure this wrapper reports.
@@ -15,16 +14,10 @@
 set -euo pipefail
 script="$1"
 shift
-version="$(paraview --version 2>/dev/null | sed -n 's/.*version \([0-9.]*\).*/\1/p' | head -1)"
-version="${version:-5.11.0}"
 home="$(mktemp -d "${TMPDIR:-/tmp}/mesolight-gui-home.XXXXXX")"
 trap 'rm -rf "$home"' EXIT
-mkdir -p "$home/.config/ParaView"
-cat > "$home/.config/ParaView/ParaView$version.ini" <<INI
-[General]
-GeneralSettings.ShowSplashScreen=false
-GeneralSettings.ShowWelcomeDialog=false
-INI
+bash "$(cd "$(dirname "${BASH_SOURCE[0]}")/../../.." && pwd)/scripts/paraview-script-settings.sh" \
+  "$home/.config"
 result="$home/result.txt"
 # The scripts' shared module beside them (paraview --script defines no __file__).
 export PYTHONPATH="$(cd "$(dirname "$script")" && pwd)${PYTHONPATH:+:$PYTHONPATH}"
