@@ -31,3 +31,22 @@ execute_process(COMMAND "${CMAKE_COMMAND}" --build "${WORK}/readme-snippets"
 if (NOT rc EQUAL 0)
   message(FATAL_ERROR "building the README's C++ snippets as written failed:\n${out}\n${err}")
 endif ()
+# Components are the module names: known ones are found, an unknown REQUIRED one fails
+# find_package naming it (it was accepted without a word).
+foreach (_case IN ITEMS "Relief ReliefTextures;0" "Relief NoSuchModule;1")
+  list(GET _case 0 _components)
+  list(GET _case 1 _must_fail)
+  set(_project "${WORK}/components-${_must_fail}")
+  file(WRITE "${_project}/CMakeLists.txt" "cmake_minimum_required(VERSION 3.16)\n"
+    "project(MesolightComponents LANGUAGES C CXX)\n"
+    "find_package(Mesolight REQUIRED COMPONENTS ${_components})\n")
+  execute_process(COMMAND "${CMAKE_COMMAND}" -S "${_project}" -B "${_project}/build"
+                          "-DCMAKE_PREFIX_PATH=${WORK}/prefix"
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if (_must_fail AND (rc EQUAL 0 OR NOT "${out}${err}" MATCHES "NoSuchModule"))
+    message(FATAL_ERROR "find_package(Mesolight COMPONENTS ${_components}) did not fail naming "
+      "the unknown component:\n${out}\n${err}")
+  elseif (NOT _must_fail AND NOT rc EQUAL 0)
+    message(FATAL_ERROR "find_package(Mesolight COMPONENTS ${_components}) failed:\n${out}\n${err}")
+  endif ()
+endforeach ()

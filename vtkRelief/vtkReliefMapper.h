@@ -7,7 +7,8 @@
  * The relief texture (see vtkReliefTextureFilter) stores the tangent-space normal in RGB and the
  * depth in A (0 = the mesh surface, 1 = deepest), as in Méndez Fernández's thesis (§4). For each
  * fragment the mapper casts the view ray into the height field below the mesh, finds its first
- * intersection (linear search then a refinement step), and shades the hit point with every light
+ * intersection (by default exactly: maximum-mipmap tracing, Tevs, Ihrke and Seidel 2008; other
+ * methods march and refine), and shades the hit point with every light
  * of the renderer, using the actor's vtkProperty (ambient, diffuse, specular, specular power) and
  * the actor's colour texture sampled at the displaced texture coordinate. Optionally it
  *  - marches toward each light for hard self-shadows (the same march, Méndez Fernández's thesis
@@ -18,11 +19,14 @@
  * The settings (method, steps, depth scale, shadows, silhouettes, depth write, outputs, light-set
  * shading) are a vtkReliefProperty: mapper->GetReliefProperty()->SetMethodToRelief(), and so on.
  * Several mappers can share one property (SetReliefProperty()), as actors share a vtkProperty.
- * Methods (one march skeleton, method-specific refinement), among them:
+ * Methods (vtkReliefProperty lists them all, GetMethodName gives their names), among them:
+ *  - MaximumMipmap (the default): exact traversal of a min-depth pyramid (Tevs, Ihrke and
+ *    Seidel 2008), within LinearSteps iterations (64); docs/relief-methods.md measures it.
  *  - Relief: linear search + binary search (Policarpo et al. 2005; the thesis uses 10 + 8).
  *  - ParallaxOcclusion: linear search + one secant step between the last two samples (Tatarchuk
- * 2006).
- *  - SteepParallax: linear search only (McGuire & McGuire 2005).
+ *    2006).
+ *  - LinearSearch ("linear"; SetMethodToSteepParallax): linear search only, steep parallax
+ *    (McGuire & McGuire 2005).
  *  - TextureMapping: no march (plain texture and normal mapping); useful as a baseline.
  *
  * Geometry: any triangulated vtkPolyData with point texture coordinates. Point normals and
