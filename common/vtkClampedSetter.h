@@ -14,18 +14,18 @@
 
 #include "vtkObject.h" // vtkWarningMacro, vtkErrorMacro
 
-#define mesolightSetClampMacro(name, type, min, max)                                              \
+#define mesolightSetClampMacro(name, type, min, max)                                               \
   virtual void Set##name(type _arg)                                                                \
   {                                                                                                \
     if (_arg != _arg) /* NaN */                                                                    \
     {                                                                                              \
-      vtkErrorMacro(<< "Set" #name ": NaN is not a value; keeping " << this->name << ".");       \
+      vtkErrorMacro(<< "Set" #name ": NaN is not a value; keeping " << this->name << ".");         \
       return;                                                                                      \
     }                                                                                              \
     const type _clamped = (_arg < (min) ? (min) : (_arg > (max) ? (max) : _arg));                  \
     if (_clamped != _arg)                                                                          \
     {                                                                                              \
-      vtkWarningMacro(<< "Set" #name ": " << _arg << " is outside [" << (min) << ", " << (max)   \
+      vtkWarningMacro(<< "Set" #name ": " << _arg << " is outside [" << (min) << ", " << (max)     \
                       << "]; using " << _clamped << ".");                                          \
     }                                                                                              \
     if (this->name != _clamped)                                                                    \
@@ -34,7 +34,13 @@
       this->Modified();                                                                            \
     }                                                                                              \
   }                                                                                                \
-  virtual type Get##name##MinValue() { return (min); }                                             \
-  virtual type Get##name##MaxValue() { return (max); }
+  virtual type Get##name##MinValue()                                                               \
+  {                                                                                                \
+    return (min);                                                                                  \
+  }                                                                                                \
+  virtual type Get##name##MaxValue()                                                               \
+  {                                                                                                \
+    return (max);                                                                                  \
+  }
 
 #endif

@@ -33,7 +33,7 @@
 #define vtkReliefProperty_h
 
 #include "MesolightReliefModule.h" // for export macro
-#include "vtkClampedSetter.h"       // for mesolightSetClampMacro
+#include "vtkClampedSetter.h"      // for mesolightSetClampMacro
 #include "vtkObject.h"
 #include "vtkSmartPointer.h" // for Messages
 
