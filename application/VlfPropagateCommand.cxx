@@ -9,6 +9,7 @@
 
 #include "AdaptiveTexels.h"
 #include "AutomaticSettings.h"
+#include "DirectionSet.h"
 #include "Distribution.h"
 #include "FinalGather.h"
 #include "LightField.h"
@@ -240,6 +241,11 @@ int Propagate(const std::vector<std::string>& args)
     !cl.GetDouble("--memory-budget", 1e-3, 1e6, budget, error))
   {
     return cl.UsageError(error);
+  }
+  // Refused before the scene is read (it was reported after an "automatic resolution" line).
+  if (directions > 0 && !vlf::DirectionSet::IsCount(static_cast<std::size_t>(directions), &error))
+  {
+    return cl.UsageError("--directions: " + error);
   }
   vlf::FinalGatherOptions gatherOptions;
   const bool gather = !cl.Has("--no-gather");

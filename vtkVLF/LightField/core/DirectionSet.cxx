@@ -149,19 +149,46 @@ DirectionSet::DirectionSet(int n)
   this->SolidAngles.assign(weights.begin(), weights.end());
 }
 
-DirectionSet DirectionSet::WithCount(std::size_t count)
+namespace
 {
-  // count = 2 n^2 + 1
+// n with count = 2 n^2 + 1, or 0 when there is none.
+std::size_t SetOrder(std::size_t count)
+{
   if (count >= 3 && (count - 1) % 2 == 0)
   {
     const auto n = static_cast<std::size_t>(std::llround(std::sqrt(double(count - 1) / 2.0)));
     if (n >= 1 && 2 * n * n + 1 == count)
     {
-      return DirectionSet(static_cast<int>(n));
+      return n;
     }
   }
-  throw std::invalid_argument(std::to_string(count) +
-    " directions: a direction set holds 2n^2+1 (33, 129, 513, 2049 or 8193)");
+  return 0;
+}
+} // namespace
+
+bool DirectionSet::IsCount(std::size_t count, std::string* why)
+{
+  if (SetOrder(count) > 0)
+  {
+    return true;
+  }
+  if (why)
+  {
+    *why = std::to_string(count) +
+      " directions: a direction set holds 2n^2+1 for some whole n >= 1 (3, 9, 19, 33, 51, ..., "
+      "129, 513, 2049, 8193, ...)";
+  }
+  return false;
+}
+
+DirectionSet DirectionSet::WithCount(std::size_t count)
+{
+  std::string why;
+  if (!IsCount(count, &why))
+  {
+    throw std::invalid_argument(why);
+  }
+  return DirectionSet(static_cast<int>(SetOrder(count)));
 }
 
 bool DirectionSet::ToUpperHemisphere(const glm::vec3& unit, glm::dvec3& upper)

@@ -27,6 +27,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace mesolight
@@ -43,6 +44,9 @@ public:
   explicit DirectionSet(int n);
   // 513, 2049, 8193 (any 2n^2+1); throws std::invalid_argument for other counts.
   static DirectionSet WithCount(std::size_t count);
+  // Whether `count` directions make a set (2n^2+1, n >= 1); if not, `why` (when given) gets the
+  // sentence WithCount throws.
+  static bool IsCount(std::size_t count, std::string* why = nullptr);
 
   std::size_t Size() const { return this->Directions.size(); }
   const glm::vec3& Direction(std::size_t i) const { return this->Directions[i]; } // unit length
