@@ -276,19 +276,21 @@ int vtkAttachReliefTexture::RequestData(
                "coordinates (VTK: vtkReliefPlaneFilter).";
     vtkWarningMacro(<< stretch.str());
   }
+  // A light set or colour image that cannot be attached (an empty one from a source that failed,
+  // e.g. Median Cut Lights on a 1 x 1 map) is an error, but the relief stays: drawn without it
+  // (lit by the view's lights; its own colour), as the mapper draws a malformed light set.
   if (lights && !Attach(lights, LightSetPrefix, field))
   {
-    vtkErrorMacro(<< "The light set (input port 2) must be a 2D image with point scalars: "
-                     "connect Mesolight Median Cut Lights' second output (LightTexture) as the "
-                     "Light Set input (VTK: vtkMedianCutLights' output port 1).");
-    return 0;
+    vtkErrorMacro(<< "The light set (input port 2) must be a non-empty 2D image with point "
+                     "scalars: connect Mesolight Median Cut Lights' second output (LightTexture) "
+                     "as the Light Set input (VTK: vtkMedianCutLights' output port 1); if its "
+                     "source failed, see its error. The relief is drawn without it.");
   }
   if (color && !Attach(color, ColorPrefix, field))
   {
     vtkErrorMacro(<< "The colour texture (input port 3) must be a non-empty 2D image with point "
                      "scalars in the relief texture's coordinates, e.g. Mesolight Depth "
-                     "Hallucination's Albedo output.");
-    return 0;
+                     "Hallucination's Albedo output. The relief is drawn without it.");
   }
   this->UpdateProgress(1.0);
   return 1;

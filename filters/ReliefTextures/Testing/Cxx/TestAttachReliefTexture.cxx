@@ -9,6 +9,7 @@
 
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
+#include "vtkExecutive.h"
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
@@ -77,8 +78,22 @@ TEST(AttachReliefTexture, ColorTextureTravelsWithTheSurface)
   vtkNew<mesolight_test::MessageCapture> messages;
   messages->Watch(attach);
   attach->SetColorTextureConnection(empty->GetOutputPort());
-  attach->Update();
+  // ... but the filter does not fail, and the relief stays (drawn in its own colour), as with an
+  // empty light set (what Median Cut Lights leaves after refusing a 1 x 1 map): a failed filter
+  // left ParaView's view without the surface.
+  EXPECT_EQ(attach->GetExecutive()->Update(), 1);
   EXPECT_TRUE(messages->HasError("colour texture")) << messages->AllErrors();
+  EXPECT_NE(
+    vtkAttachReliefTexture::GetAttachedReliefTexture(attach->GetOutputDataObject(0)), nullptr);
+  attach->SetColorTextureConnection(nullptr);
+  attach->SetLightSetConnection(empty->GetOutputPort());
+  messages->Clear();
+  EXPECT_EQ(attach->GetExecutive()->Update(), 1);
+  EXPECT_TRUE(messages->HasError("light set")) << messages->AllErrors();
+  EXPECT_TRUE(messages->HasError("drawn without it")) << messages->AllErrors();
+  EXPECT_NE(
+    vtkAttachReliefTexture::GetAttachedReliefTexture(attach->GetOutputDataObject(0)), nullptr);
+  EXPECT_EQ(vtkAttachReliefTexture::GetAttachedLightSet(attach->GetOutputDataObject(0)), nullptr);
 }
 
 namespace
