@@ -108,7 +108,8 @@ int vtkReliefPlaneFilter::RequestData(
   if (image->GetNumberOfPoints() < 1)
   {
     vtkErrorMacro("The input image is empty: it has no texels to take the plane's proportions "
-                  "from.");
+                  "from (a reader that could not read its file leaves it empty: see the reader's "
+                  "error).");
     return 0;
   }
   // One quad: piece 0 has it, the other pieces (MPI ranks) are empty.

@@ -183,7 +183,8 @@ int vtkReliefTextureFilter::Execute(
   input->GetDimensions(dims);
   if (input->GetNumberOfPoints() < 1 || dims[0] < 1 || dims[1] < 1 || dims[2] < 1)
   {
-    vtkErrorMacro("The input image is empty: a depth map needs at least 1 x 1 texels.");
+    vtkErrorMacro("The input image is empty: a depth map needs at least 1 x 1 texels (a reader "
+                  "that could not read its file leaves it empty: see the reader's error).");
     return 0;
   }
   if (dims[2] != 1)
