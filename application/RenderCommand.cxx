@@ -111,11 +111,8 @@ bool ReadSceneOptions(const CommandLine& cl, ReliefSceneOptions& o, std::string&
   // A misspelt name is a usage error that lists the names, before any work.
   if (vtkReliefProperty::GetMethodFromName(o.Method.c_str()) < 0)
   {
-    error = "--method: unknown method '" + o.Method + "'; the methods are";
-    for (int m = 0; m < vtkReliefProperty::NumberOfMethods; ++m)
-    {
-      error += std::string(m > 0 ? ", " : " ") + vtkReliefProperty::GetMethodName(m);
-    }
+    error = "--method: unknown method '" + o.Method + "'; the methods are " +
+      vtkReliefProperty::GetMethodNameList();
     return false;
   }
   bool knownPattern = false;

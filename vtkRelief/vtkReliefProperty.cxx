@@ -141,18 +141,24 @@ int vtkReliefProperty::GetMethodFromName(const char* name)
 }
 
 //------------------------------------------------------------------------------
+std::string vtkReliefProperty::GetMethodNameList()
+{
+  std::string names;
+  for (int m = 0; m < NumberOfMethods; ++m)
+  {
+    names += std::string(m > 0 ? ", " : "") + MethodNames[m];
+  }
+  return names;
+}
+
+//------------------------------------------------------------------------------
 bool vtkReliefProperty::SetMethodByName(const char* name)
 {
   const int method = GetMethodFromName(name);
   if (method < 0)
   {
-    std::string names;
-    for (int m = 0; m < NumberOfMethods; ++m)
-    {
-      names += std::string(m > 0 ? ", " : "") + MethodNames[m];
-    }
     vtkErrorMacro(<< "Unknown relief method '" << (name ? name : "(null)")
-                  << "'; the method is kept. The names are " << names << ".");
+                  << "'; the method is kept. The names are " << GetMethodNameList() << ".");
     return false;
   }
   this->SetMethod(method);

@@ -37,6 +37,8 @@
 #include "vtkObject.h"
 #include "vtkSmartPointer.h" // for Messages
 
+#include <string> // for GetMethodNameList
+
 class vtkLightCollection;
 class vtkReliefMessageForwarder;
 
@@ -118,10 +120,12 @@ public:
    * "steep"), "pom", "relief", "interval", "relaxed-cone", "relaxed-cone-interval", "cone",
    * "max-mipmap". GetMethodName returns "unknown" outside the methods; GetMethodFromName -1 for
    * an unknown (or null) name; SetMethodByName reports an error listing the names and returns
-   * false, leaving the method unchanged.
+   * false, leaving the method unchanged. GetMethodNameList: every name, comma-separated, as the
+   * errors about an unknown name list them.
    */
   static const char* GetMethodName(int method);
   static int GetMethodFromName(const char* name);
+  static std::string GetMethodNameList();
   bool SetMethodByName(const char* name);
   ///@}
 

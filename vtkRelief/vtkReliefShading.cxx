@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkReliefShading.h"
 
+#include "DepthScaleSetting.h" // MaximumDepthScale
+
 #include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkDataArray.h"
@@ -292,7 +294,7 @@ void vtkReliefShading::SetShaderParameters(
   relief->SetShaderParameters(program);
   const bool hasBaked = relief->GetBakedDepthScale() >= 0.0;
   const double depthScale = hasBaked && p->GetUseTextureDepthScale()
-    ? std::min(relief->GetBakedDepthScale(), 10.0)
+    ? std::min(relief->GetBakedDepthScale(), mesolight::MaximumDepthScale)
     : p->GetDepthScale();
   program->SetUniformf("mlDepthScale", static_cast<float>(depthScale));
   // Normals baked with another depth scale are rescaled through the depth gradient.

@@ -528,7 +528,7 @@ bool ReadImageFilePixels(const std::string& path, const ImageFileInfo& info, voi
   }
   if (warning && !decoderMessage.empty())
   {
-    const bool stop = oiioError.back() == '.';
+    const bool stop = !oiioError.empty() && oiioError.back() == '.';
     *warning = "Image '" + path + "' was read, but its decoder reported a problem: " + oiioError +
       (stop ? " " : ". ") + "Part of it may be missing or wrong (a truncated file's last rows).";
   }

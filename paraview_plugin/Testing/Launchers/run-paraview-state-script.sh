@@ -19,12 +19,14 @@ with open("$work/result.txt", "w") as result:
     result.write("OK\n")
 PY
 status=0
+start=$SECONDS
 env -u DISPLAY HOME="$work/home" timeout 240 bash "$repo/scripts/paraview.sh" \
   --script="$work/load.py" --exit > "$work/log.txt" 2>&1 || status=$?
 if [ "$(head -1 "$work/result.txt" 2>/dev/null)" != "OK" ]; then
   cat "$work/log.txt"
-  echo "FAILED: scripts/paraview.sh --script (LoadState) did not finish (exit status $status;" \
-    "124: the timeout, e.g. a dialog waiting)" >&2
+  echo "FAILED: scripts/paraview.sh --script (LoadState) did not finish in" \
+    "$((SECONDS - start)) s (exit status $status; 124: the timeout, e.g. a dialog waiting)" >&2
   exit 1
 fi
-echo "scripts/paraview.sh --script loaded the state and rendered (exit status $status)"
+echo "scripts/paraview.sh --script loaded the state and rendered in $((SECONDS - start)) s" \
+  "(exit status $status)"
