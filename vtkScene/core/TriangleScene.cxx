@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "TriangleScene.h"
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -188,26 +189,25 @@ bool IsFinite(const glm::vec3& v)
   return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
 
-// Area below which a triangle counts as degenerate, relative to the scene's size.
-float DegenerateAreaLimit(const TriangleScene& scene, float minimumArea)
+// Whether float coordinates cannot tell the triangle from a segment or a point: its height over
+// its longest edge is within two roundings of its largest coordinate. The test is per triangle (in
+// double, so huge coordinates do not overflow), not relative to the scene's size: a ground plane a
+// thousand kilometres wide must not erase the room standing on it.
+bool IsDegenerate(const TriangleScene& scene, std::size_t triangle)
 {
-  glm::vec3 lower, upper;
-  if (!SceneBounds(scene, lower, upper))
-  {
-    return 0.0f;
-  }
-  const glm::vec3 diagonal = upper - lower;
-  return minimumArea * glm::dot(diagonal, diagonal);
-}
-
-bool IsDegenerate(const TriangleScene& scene, std::size_t triangle, float areaLimit)
-{
-  const float area = scene.Area(triangle);
-  return !(area > areaLimit); // also catches NaN
+  const glm::dvec3 a(scene.Vertex(triangle, 0)), b(scene.Vertex(triangle, 1)),
+    c(scene.Vertex(triangle, 2));
+  const double twiceArea = glm::length(glm::cross(b - a, c - a));
+  const double longest =
+    std::sqrt(std::max({ glm::dot(b - a, b - a), glm::dot(c - a, c - a), glm::dot(c - b, c - b) }));
+  const glm::dvec3 magnitude = glm::max(glm::abs(a), glm::max(glm::abs(b), glm::abs(c)));
+  const double resolution = 2.0 * std::numeric_limits<float>::epsilon() *
+    std::max({ magnitude.x, magnitude.y, magnitude.z, longest });
+  return !(twiceArea > longest * resolution); // height <= resolution; also catches NaN
 }
 } // namespace
 
-SceneCheck CheckScene(const TriangleScene& scene, bool requireEmitter, float minimumArea)
+SceneCheck CheckScene(const TriangleScene& scene, bool requireEmitter)
 {
   SceneCheck check;
   if (scene.Triangles.empty())
@@ -248,11 +248,10 @@ SceneCheck CheckScene(const TriangleScene& scene, bool requireEmitter, float min
       return check;
     }
   }
-  const float areaLimit = DegenerateAreaLimit(scene, minimumArea);
   bool emitter = false;
   for (std::size_t t = 0; t < scene.Triangles.size(); ++t)
   {
-    if (IsDegenerate(scene, t, areaLimit))
+    if (IsDegenerate(scene, t))
     {
       ++check.DegenerateTriangles;
       continue;
@@ -360,13 +359,12 @@ float FarGeometryRatio(const TriangleScene& scene)
   return bulk > 0.0f ? whole / bulk : 1.0f;
 }
 
-std::size_t RemoveDegenerateTriangles(TriangleScene& scene, float minimumArea)
+std::size_t RemoveDegenerateTriangles(TriangleScene& scene)
 {
-  const float areaLimit = DegenerateAreaLimit(scene, minimumArea);
   std::size_t kept = 0;
   for (std::size_t t = 0; t < scene.Triangles.size(); ++t)
   {
-    if (!IsDegenerate(scene, t, areaLimit))
+    if (!IsDegenerate(scene, t))
     {
       scene.Triangles[kept] = scene.Triangles[t];
       scene.MaterialIds[kept] = scene.MaterialIds[t];

@@ -104,8 +104,9 @@ std::vector<std::size_t> SurfaceTriangles(const TriangleScene& scene, const std:
 std::string SurfaceNameList(const TriangleScene& scene);
 
 // What is wrong with a scene, one problem per entry ("triangle 12 is degenerate (area 0)",
-// "no emitter"): empty when the scene can be used. Degenerate means area <= minimumArea
-// times the squared bounding-box diagonal.
+// "no emitter"): empty when the scene can be used. Degenerate means a triangle float arithmetic
+// cannot tell from a segment: its height over its longest edge is at most two float roundings of
+// its largest coordinate (each triangle on its own, whatever else the scene holds).
 struct SceneCheck
 {
   std::vector<std::string> Errors;   // the scene cannot be used
@@ -113,7 +114,7 @@ struct SceneCheck
   std::size_t DegenerateTriangles = 0;
   bool Ok() const { return this->Errors.empty(); }
 };
-SceneCheck CheckScene(const TriangleScene& scene, bool requireEmitter, float minimumArea = 1e-12f);
+SceneCheck CheckScene(const TriangleScene& scene, bool requireEmitter);
 
 // How many times the scene's bounding-box diagonal exceeds that of the box holding 98% of its
 // surface area (per axis, area-weighted 1st and 99th percentiles of the triangles' extents); 1 for
@@ -124,7 +125,7 @@ float FarGeometryRatio(const TriangleScene& scene);
 constexpr float FarGeometryWarningRatio = 2.5f;
 
 // Drops degenerate triangles (see CheckScene); returns how many were dropped.
-std::size_t RemoveDegenerateTriangles(TriangleScene& scene, float minimumArea = 1e-12f);
+std::size_t RemoveDegenerateTriangles(TriangleScene& scene);
 
 // Axis-aligned bounds; false for an empty scene.
 bool SceneBounds(const TriangleScene& scene, glm::vec3& lower, glm::vec3& upper);

@@ -133,6 +133,42 @@ TEST(TriangleScene, FarTrianglesAreWarnedAbout)
   }
 }
 
+// Degenerate is judged per triangle at float precision. The limit used to be relative to the
+// scene's bounding box (1e-12 x diagonal^2): a ground plane +-1e6 m around a room in metres made
+// every room triangle "degenerate" and the propagation said "no emitter"; at +-1e30 every triangle
+// was. A tiny but well-shaped triangle in a large scene is kept; a sliver thinner than float
+// resolution at its coordinates is not.
+TEST(TriangleScene, DegenerateIsJudgedPerTriangle)
+{
+  TriangleScene room = mesolight::MakeCornellBox();
+  for (glm::vec3& p : room.Positions)
+  {
+    p *= 0.001f; // metres
+  }
+  const auto ground = room.AddMaterial(mesolight::SceneMaterial{});
+  for (const float half : { 1e6f, 1e30f })
+  {
+    TriangleScene scene = room;
+    scene.AddPolygon({ { -half, -0.01f, -half }, { half, -0.01f, -half }, { half, -0.01f, half },
+                       { -half, -0.01f, half } },
+      ground);
+    const mesolight::SceneCheck check = mesolight::CheckScene(scene, true);
+    EXPECT_TRUE(check.Ok()) << half << ": " << (check.Errors.empty() ? "" : check.Errors[0]);
+    EXPECT_EQ(check.DegenerateTriangles, 0u) << half;
+  }
+
+  TriangleScene scene;
+  const auto grey = scene.AddMaterial(mesolight::SceneMaterial{});
+  scene.AddPolygon({ { -1000, 0, 0 }, { 1000, 0, 0 }, { 0, 1000, 0 } }, grey);
+  scene.AddPolygon({ { 0, 0, 1 }, { 1e-4f, 0, 1 }, { 0, 1e-4f, 1 } }, grey);      // tiny, kept
+  scene.AddPolygon({ { 500, 0, 0 }, { 501, 0, 0 }, { 500.5f, 1e-5f, 0 } }, grey); // sliver
+  const mesolight::SceneCheck check = mesolight::CheckScene(scene, false);
+  EXPECT_TRUE(check.Ok());
+  EXPECT_EQ(check.DegenerateTriangles, 1u);
+  EXPECT_EQ(mesolight::RemoveDegenerateTriangles(scene), 1u);
+  EXPECT_EQ(scene.TriangleCount(), 2u);
+}
+
 TEST(TriangleScene, NormalizesIntoTheUnitSphere)
 {
   TriangleScene box = mesolight::MakeCornellBox();
