@@ -4,6 +4,7 @@
 #include "ChartPlot.h"
 #include "CommandLine.h"
 #include "OutputFile.h"
+#include "ProgressLine.h"
 #include "Timing.h"
 
 #include "DepthHallucination.h"
@@ -286,30 +287,21 @@ int RunHallucinateCommand(const std::vector<std::string>& args)
                 << ": at most about " << std::setprecision(2) << estimate << " s\n";
     }
   }
+  // Progress on stderr, the tool's way (ProgressLine.h).
+  ProgressCallback printed = PrintedProgress("hallucinating");
   vtkNew<vtkCallbackCommand> progress;
   progress->SetCallback(
     [](vtkObject* caller, unsigned long, void* clientData, void*)
     {
-      // Progress on stderr in steps of 10%.
-      int& last = *static_cast<int*>(clientData);
-      const int step = static_cast<int>(10.0 * static_cast<vtkAlgorithm*>(caller)->GetProgress());
-      if (step > last)
-      {
-        last = step;
-        std::cerr << "\rhallucinating " << step * 10 << "%" << (step >= 10 ? "\n" : "")
-                  << std::flush;
-      }
+      (*static_cast<ProgressCallback*>(clientData))(
+        static_cast<vtkAlgorithm*>(caller)->GetProgress());
     });
-  int lastStep = -1;
-  progress->SetClientData(&lastStep);
+  progress->SetClientData(&printed);
   filter->AddObserver(vtkCommand::ProgressEvent, progress);
   const auto start = std::chrono::steady_clock::now();
   filter->Update();
   const double seconds = SecondsSince(start);
-  if (lastStep >= 0 && lastStep < 10)
-  {
-    std::cerr << "\n";
-  }
+  EndProgressLine();
   if (!errors->Errors.empty() || filter->GetDepthOutput()->GetNumberOfPoints() == 0)
   {
     std::cerr << "mesolight hallucinate: "

@@ -5,6 +5,7 @@
 
 #include "CommandLine.h"
 #include "OutputFile.h"
+#include "ProgressLine.h"
 #include "Timing.h"
 
 #include "AdaptiveTexels.h"
@@ -152,23 +153,6 @@ int RanksOnThisNode(int ranks)
     }
   }
   return ranks;
-}
-
-// Progress on stderr in steps of 10%.
-ProgressCallback PrintedProgress(const std::string& what)
-{
-  auto last = std::make_shared<int>(-1);
-  return [what, last](double fraction)
-  {
-    const int step = static_cast<int>(fraction * 10.0);
-    if (step != *last)
-    {
-      *last = step;
-      std::cerr << "\r" << what << " " << step * 10 << "%" << (step >= 10 ? "\n" : "")
-                << std::flush;
-    }
-    return true;
-  };
 }
 
 int Propagate(const std::vector<std::string>& args)
@@ -563,6 +547,7 @@ int Propagate(const std::vector<std::string>& args)
       iterationSeconds += e.Seconds;
       if (root)
       {
+        EndProgressLine();
         char took[32];
         std::snprintf(took, sizeof(took), " in %.2f s", writeSeconds);
         const std::string written = due
@@ -590,6 +575,7 @@ int Propagate(const std::vector<std::string>& args)
                *field, tolerance, maxIterations, options, afterIteration) &&
       root)
     {
+      EndProgressLine();
       std::cerr << "mesolight vlf propagate: warning: " << 100.0 * vlf::UnshotFraction(*field)
                 << "% of the emitted flux is still unshot after " << maxIterations
                 << " iterations (--max-iterations)\n";

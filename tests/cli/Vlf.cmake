@@ -16,6 +16,15 @@ cli_run(TRUE vlf propagate --directions 33 --rays 16 --tolerance 0.05 --out "${W
 if (NOT last_output MATCHES "of the emitted \\(tolerance 5%\\)" OR NOT last_output MATCHES "iteration 2:")
   message(FATAL_ERROR "no progress toward the tolerance reported: ${last_output}")
 endif ()
+# Progress and results in one log (stdout and stderr captured together, as `> log 2>&1` does):
+# progress lines end before each result line and use no carriage returns ("toward the tolerance
+# 50%iteration 4: ..." ran together).
+execute_process(COMMAND "${CLI}" vlf propagate --directions 33 --rays 16 --tolerance 0.05 --force
+  --out "${WORK}/tolerance.vlf" OUTPUT_VARIABLE log ERROR_VARIABLE log)
+string(ASCII 13 carriage_return)
+if (log MATCHES "%[a-z]" OR log MATCHES "${carriage_return}" OR NOT log MATCHES "\n100%\n|% 100%\n")
+  message(FATAL_ERROR "progress ran into the results of a captured run:\n${log}")
+endif ()
 cli_run(FALSE vlf propagate --directions 33 --rays 16 --iterations 2 --tolerance 0.05
   --out "${WORK}/both.vlf")
 # --filter writes smoothed totals (a different field from the same propagation); it cannot resume.
