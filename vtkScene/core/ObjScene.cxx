@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "ObjScene.h"
 
+#include "PolygonTriangulation.h"
+
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -431,9 +433,14 @@ ObjSceneRead ParseObjScene(std::istream& obj, const std::string& name, const std
         currentMaterial = materialId("", where);
         haveMaterial = true;
       }
-      for (std::size_t k = 1; k + 1 < corners.size(); ++k) // fan
+      std::vector<glm::vec3> polygon;
+      for (const Corner& c : corners)
       {
-        faces.push_back({ corners[0], corners[k], corners[k + 1] });
+        polygon.push_back(positions[c.Position]);
+      }
+      for (const glm::uvec3& t : TriangulatePolygon(polygon))
+      {
+        faces.push_back({ corners[t[0]], corners[t[1]], corners[t[2]] });
         faceMaterials.push_back(currentMaterial);
         faceSurfaces.push_back(currentSurface);
       }

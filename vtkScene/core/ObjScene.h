@@ -4,7 +4,7 @@
 // the shared TriangleScene and writes one back (the built-in Cornell box as an example of the
 // format).
 //
-// Read: v, vt, vn, f (n-gons fan-triangulated; negative indices count back from the last
+// Read: v, vt, vn, f (n-gons ear-clipped, TriangulatePolygon; negative indices count back from the last
 // definition), usemtl, mtllib; MTL newmtl, Kd (diffuse), Ks (perfect specular, Wither 2005 §2.1),
 // Ke (emission), Ka, Ns, and the names of map_* textures (recorded, not loaded); o and g name the
 // faces that follow (TriangleScene::SurfaceNames; the statement's names joined by a space, a bare

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "TriangleScene.h"
 
+#include "PolygonTriangulation.h"
+
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
@@ -71,9 +73,9 @@ void TriangleScene::AddPolygon(
   }
   const auto first = static_cast<std::uint32_t>(this->Positions.size());
   this->Positions.insert(this->Positions.end(), corners.begin(), corners.end());
-  for (std::uint32_t i = 1; i + 1 < corners.size(); ++i)
+  for (const glm::uvec3& t : TriangulatePolygon(corners))
   {
-    this->Triangles.emplace_back(first, first + i, first + i + 1);
+    this->Triangles.emplace_back(first + t);
     this->MaterialIds.push_back(materialId);
     this->NameLastTriangle(surfaceId);
   }

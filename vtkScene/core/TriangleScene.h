@@ -80,7 +80,7 @@ struct TriangleScene : TriangleMesh
   // Names a triangle just appended (Triangles.back()): keeps SurfaceIds one per triangle once any
   // triangle is named. NoSurface leaves it unnamed.
   void NameLastTriangle(std::uint32_t surfaceId);
-  // Appends a planar convex polygon (fan-triangulated), counter-clockwise seen from its front,
+  // Appends a planar simple polygon (TriangulatePolygon), counter-clockwise seen from its front,
   // optionally part of a named surface (an id from AddSurface).
   void AddPolygon(const std::vector<glm::vec3>& corners, std::uint32_t materialId,
     std::uint32_t surfaceId = NoSurface);

@@ -260,6 +260,33 @@ TEST(ObjScene, DegenerateAndNonManifoldTriangles)
     mesolight::CountNonManifoldEdges({ { 0, 1, 2 }, { 0, 3, 1 }, { 1, 3, 2 }, { 2, 3, 0 } }), 0u);
 }
 
+// N-gons are ear-clipped (TriangulatePolygon): an L-shaped roof keeps its notch, and a square
+// with its edges' midpoints is read without the "degenerate" and "non-manifold" warnings that
+// the fan's zero-area triangles caused.
+TEST(ObjScene, ConcaveAndEdgeMidpointFacesAreReadAsDrawn)
+{
+  const ObjSceneRead l = ReadObjScene(
+    WriteText("roof.obj", "v 2 0 0\nv 2 0 1\nv 1 0 1\nv 1 0 2\nv 0 0 2\nv 0 0 0\nf 1 2 3 4 5 6\n"));
+  double area = 0.0;
+  for (std::size_t t = 0; t < l.Scene.TriangleCount(); ++t)
+  {
+    area += l.Scene.Area(t);
+  }
+  EXPECT_NEAR(area, 3.0, 1e-6);
+  EXPECT_EQ(l.DegenerateTriangles, 0u);
+  const ObjSceneRead square = ReadObjScene(WriteText("midpoints.obj",
+    "v 0 0 0\nv 1 0 0\nv 2 0 0\nv 2 1 0\nv 2 2 0\nv 1 2 0\nv 0 2 0\nv 0 1 0\n"
+    "f 1 2 3 4 5 6 7 8\n"));
+  EXPECT_EQ(square.Scene.TriangleCount(), 6u);
+  EXPECT_EQ(square.DegenerateTriangles, 0u);
+  EXPECT_EQ(square.NonManifoldEdges, 0u);
+  for (const std::string& w : square.Warnings)
+  {
+    EXPECT_EQ(w.find("degenerate"), std::string::npos) << w;
+    EXPECT_EQ(w.find("non-manifold"), std::string::npos) << w;
+  }
+}
+
 TEST(ObjScene, CornellBoxRoundTripAndNoOverwrite)
 {
   const TriangleScene box = mesolight::MakeCornellBox();
