@@ -4,11 +4,11 @@
 // the shared TriangleScene and writes one back (the built-in Cornell box as an example of the
 // format).
 //
-// Read: v, vt, vn, f (n-gons ear-clipped, TriangulatePolygon; negative indices count back from the last
-// definition), usemtl, mtllib; MTL newmtl, Kd (diffuse), Ks (perfect specular, Wither 2005 §2.1),
-// Ke (emission), Ka, Ns, and the names of map_* textures (recorded, not loaded); o and g name the
-// faces that follow (TriangleScene::SurfaceNames; the statement's names joined by a space, a bare
-// g ends the named group). Other statements (s, illum, d, ...) are ignored. Errors throw
+// Read: v, vt, vn, f (n-gons ear-clipped, TriangulatePolygon; negative indices count back from the
+// last definition), usemtl, mtllib; MTL newmtl, Kd (diffuse), Ks (perfect specular, Wither 2005
+// §2.1), Ke (emission), Ka, Ns, and the names of map_* textures (recorded, not loaded); o and g
+// name the faces that follow (TriangleScene::SurfaceNames; the statement's names joined by a space,
+// a bare g ends the named group). Other statements (s, illum, d, ...) are ignored. Errors throw
 // ObjSceneError with "file:line: what"; a missing MTL file or material is a warning and gets a
 // default grey material.
 #ifndef mesolight_ObjScene_h
