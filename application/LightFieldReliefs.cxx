@@ -51,7 +51,9 @@ void AddReliefOptions(CommandLine& cl)
   cl.AddFlag("--relief-no-occlusion",
     "the relief mapper without the relief's occlusion of its indirect light, its "
     "inter-reflection and the scene's shadows of the emitter lights (for comparison)");
-  for (const char* option : { "--relief-depth-scale", "--relief-height", "--relief-no-occlusion" })
+  cl.AddValue("--relief-probes", "N", ReliefProbesHelp(), "0");
+  for (const char* option :
+    { "--relief-depth-scale", "--relief-height", "--relief-no-occlusion", "--relief-probes" })
   {
     cl.AppliesOnlyWith(option, { "--relief" });
   }
@@ -104,13 +106,14 @@ class MirroredReliefs : public vlf::TracedReliefs
 {
 public:
   MirroredReliefs(const vlf::LightField& field, std::shared_ptr<const EmbreeScene> embree,
-    const std::vector<std::string>& items, double depthScale, bool depthIsHeight,
+    const std::vector<std::string>& items, double depthScale, bool depthIsHeight, int probesPerSide,
     std::vector<std::vector<SH9>> probes)
     : Embree(std::move(embree))
   {
     FieldReliefOptions options;
     options.DepthScale = depthScale;
     options.DepthIsHeight = depthIsHeight;
+    options.Probes = probesPerSide;
     options.KnownProbes = std::move(probes);
     this->Reliefs = SetUpFieldReliefs(field, *this->Embree, items, options);
     this->ReliefOf = ReliefOfTriangle(field, this->Reliefs);
@@ -184,8 +187,10 @@ int SetUpWalkthroughReliefs(const CommandLine& cl, const char* command, vtkLight
     return 0;
   }
   double depthScale = 0.05;
+  int probesPerSide = vlf::AutomaticReliefProbes;
   std::string error;
-  if (!cl.GetDouble("--relief-depth-scale", 0.0, 10.0, depthScale, error))
+  if (!cl.GetDouble("--relief-depth-scale", 0.0, 10.0, depthScale, error) ||
+    !cl.GetInt("--relief-probes", 0, 256, probesPerSide, error))
   {
     std::cerr << command << ": " << error << "\n";
     return 2;
@@ -257,6 +262,7 @@ int SetUpWalkthroughReliefs(const CommandLine& cl, const char* command, vtkLight
     executiveNoise->Watch(surface->GetExecutive());
     surface->SetLightFieldActor(actor);
     surface->SetSurfaceName(name.c_str());
+    surface->SetProbesPerSide(probesPerSide);
     if (occlusion)
     {
       // The relief's occlusion of its indirect light and its inter-reflection (its visible-share
@@ -314,8 +320,8 @@ int SetUpWalkthroughReliefs(const CommandLine& cl, const char* command, vtkLight
     try
     {
       vtkLightFieldActorCore::SetTracedReliefs(actor,
-        std::make_shared<MirroredReliefs>(
-          *field, embree, items, depthScale, cl.Has("--relief-height"), std::move(probes)));
+        std::make_shared<MirroredReliefs>(*field, embree, items, depthScale,
+          cl.Has("--relief-height"), probesPerSide, std::move(probes)));
     }
     catch (const std::exception& e)
     {

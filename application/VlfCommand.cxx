@@ -113,8 +113,10 @@ int Render(const std::vector<std::string>& args)
   cl.AddValue("--relief-depth-scale", "K",
     "world depth of depth 1 over the world width of the relief's texture", "0.05");
   cl.AddFlag("--relief-height", "the relief images store height (white = high), not depth");
+  cl.AddValue("--relief-probes", "N", ReliefProbesHelp(), "0");
   cl.AppliesOnlyWith("--relief-depth-scale", { "--relief" });
   cl.AppliesOnlyWith("--relief-height", { "--relief" });
+  cl.AppliesOnlyWith("--relief-probes", { "--relief" });
   // --help lists the --mode renderer's options too (--tone-map, --object, ...): say they need it.
   cl.SetUnknownOptionHint(
     "see --help: the options listed under 'With --mode' need --mode MODE, the GPU renderer");
@@ -164,7 +166,8 @@ int Render(const std::vector<std::string>& args)
   if (!ReadViewAngle(cl, viewAngle, error) ||
     !cl.GetDouble("--exposure", 0.0, 1e9, exposure, error) ||
     !cl.GetDouble("--tolerance", 0.0, 10.0, tolerance, error) ||
-    !cl.GetDouble("--relief-depth-scale", 0.0, 10.0, reliefOptions.DepthScale, error))
+    !cl.GetDouble("--relief-depth-scale", 0.0, 10.0, reliefOptions.DepthScale, error) ||
+    !cl.GetInt("--relief-probes", 0, 256, reliefOptions.Probes, error))
   {
     return cl.UsageError(error);
   }

@@ -47,19 +47,22 @@ HeightField ReadDepthImage(const std::string& path, bool isHeight)
   return HeightField(width, height, std::move(depth), HeightField::Edge::Walled);
 }
 
+std::string ReliefProbesHelp()
+{
+  return "SH9 probes per side of each relief's texture (the scene's shadows and indirect light "
+         "on it); 0: one per field line cell across the surface, " +
+    std::to_string(vlf::DefaultReliefProbesPerSide) + " to " +
+    std::to_string(vlf::MaximumAutomaticReliefProbesPerSide);
+}
+
 std::vector<FieldRelief> SetUpFieldReliefs(const vlf::LightField& field, const EmbreeScene& embree,
   const std::vector<std::string>& items, const FieldReliefOptions& options)
 {
   const TriangleScene& scene = field.Scene();
-  const int n = std::max(1, options.Probes);
-  const std::size_t probeCount = static_cast<std::size_t>(n) * n;
-  if (!options.KnownProbes.empty() &&
-    (options.KnownProbes.size() != items.size() ||
-      std::any_of(options.KnownProbes.begin(), options.KnownProbes.end(),
-        [probeCount](const std::vector<SH9>& probes) { return probes.size() != probeCount; })))
+  if (!options.KnownProbes.empty() && options.KnownProbes.size() != items.size())
   {
-    throw std::invalid_argument("SetUpFieldReliefs: KnownProbes must hold Probes x Probes "
-                                "probes for every item");
+    throw std::invalid_argument("SetUpFieldReliefs: KnownProbes must hold the probes of every "
+                                "item");
   }
   std::vector<FieldRelief> reliefs;
   for (const std::string& item : items)
@@ -102,9 +105,21 @@ std::vector<FieldRelief> SetUpFieldReliefs(const vlf::LightField& field, const E
     // walkthrough's relief mapper takes the same), the emitters' own radiance left out (the
     // emitter samples below carry it).
     ReliefLighting& lighting = relief.Lighting;
+    const int n = vlf::ReliefProbesPerSide(field, surface, options.Probes);
     lighting.ProbesU = lighting.ProbesV = n;
-    lighting.Probes = options.KnownProbes.empty() ? vlf::ReliefSurfaceProbes(field, surface, n, n)
-                                                  : options.KnownProbes[reliefs.size()];
+    if (options.KnownProbes.empty())
+    {
+      lighting.Probes = vlf::ReliefSurfaceProbes(field, surface, n, n);
+    }
+    else if (options.KnownProbes[reliefs.size()].size() == static_cast<std::size_t>(n) * n)
+    {
+      lighting.Probes = options.KnownProbes[reliefs.size()];
+    }
+    else
+    {
+      throw std::invalid_argument("SetUpFieldReliefs: KnownProbes of " + Quoted(relief.Name) +
+        " are not Probes x Probes (ReliefProbesPerSide)");
+    }
     // The light the relief reflects onto itself (ReliefLighting::Albedo).
     relief.Lighting.Albedo = glm::dvec3(material.Diffuse);
     // Direct: the field's emitters, the scene's occlusion by Embree.

@@ -10,7 +10,7 @@
 #define mesolight_VlfRelief_h
 
 #include "ReliefShading.h"
-#include "ReliefSurface.h" // DefaultReliefProbesPerSide, ReliefSurfaceError
+#include "ReliefSurface.h" // AutomaticReliefProbes, ReliefSurfaceError
 
 #include <glm/vec3.hpp>
 
@@ -50,12 +50,17 @@ struct FieldReliefOptions
 {
   double DepthScale = 0.05;   // vtkReliefProperty's default
   bool DepthIsHeight = false; // the images store height (white = high), not depth (--relief-height)
-  int Probes = vlf::DefaultReliefProbesPerSide; // SH9 probes per side of the texture
-  int EmitterSamplesPerSide = 4;                // per emitter triangle: n x n stratified samples
-  // Per item, its SH9 probes (Probes x Probes, vlf::ReliefSurfaceProbes) when they are already
-  // computed (the walkthrough's vtkLightFieldReliefSurface did); empty: computed here.
+  // SH9 probes per side of the texture; AutomaticReliefProbes: vlf::ReliefProbesPerSide's choice.
+  int Probes = vlf::AutomaticReliefProbes;
+  int EmitterSamplesPerSide = 4; // per emitter triangle: n x n stratified samples
+  // Per item, its SH9 probes (n x n, n = vlf::ReliefProbesPerSide(Probes),
+  // vlf::ReliefSurfaceProbes) when they are already computed (the walkthrough's
+  // vtkLightFieldReliefSurface did); empty: computed here.
   std::vector<std::vector<SH9>> KnownProbes;
 };
+
+// The help of --relief-probes, written once for the CPU reference and the relief mapper.
+std::string ReliefProbesHelp();
 
 // The --relief items ("SURFACE=DEPTH_IMAGE") set up against the field. Throws ReliefSetupError,
 // and std::invalid_argument when KnownProbes is neither empty nor the probes of every item.

@@ -57,6 +57,21 @@
 #include <vector>
 
 namespace vlf = mesolight::vlf;
+
+namespace
+{
+// The probes image's extent is known once RequestData has chosen the probe count (the automatic
+// one depends on the surface); the pipeline is told the extent the data has.
+void ProbesWholeExtentFromData(vtkInformationVector* outputVector)
+{
+  vtkInformation* info = outputVector->GetInformationObject(1);
+  vtkImageData* probes = vtkImageData::GetData(info);
+  if (probes && probes->GetNumberOfPoints() > 0)
+  {
+    info->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), probes->GetExtent(), 6);
+  }
+}
+} // namespace
 using namespace mesolight::vlf::reliefsurface;
 
 // What the last update of a surface of input port 1 computed, and from what.
@@ -96,7 +111,7 @@ vtkCxxSetObjectMacro(vtkLightFieldReliefSurface, LightFieldProducer, vtkVirtualL
 
 //------------------------------------------------------------------------------
 vtkLightFieldReliefSurface::vtkLightFieldReliefSurface()
-  : ProbesPerSide(vlf::DefaultReliefProbesPerSide)
+  : ProbesPerSide(vlf::AutomaticReliefProbes)
   , Internals(new vtkInternals)
 {
   this->SetNumberOfInputPorts(2); // 0: the field, 1: a surface of its own (optional)
@@ -361,7 +376,10 @@ int vtkLightFieldReliefSurface::FillOutputPortInformation(int port, vtkInformati
 int vtkLightFieldReliefSurface::RequestInformation(
   vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
-  const int n = this->ProbesPerSide;
+  // The automatic count is known once the surface is (RequestData sets the extent it chose).
+  const int n = this->ProbesPerSide > 0 ? this->ProbesPerSide
+    : this->ProbesPerSideUsed > 0       ? this->ProbesPerSideUsed
+                                        : vlf::DefaultReliefProbesPerSide;
   const int extent[6] = { 0, 9 * n - 1, 0, n - 1, 0, 0 };
   vtkInformation* info = outputVector->GetInformationObject(1);
   info->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent, 6);
@@ -380,7 +398,10 @@ int vtkLightFieldReliefSurface::RequestData(
   std::fill(this->DepthLimit, this->DepthLimit + 7, 0.0);
   if (this->GetNumberOfInputConnections(1) > 0)
   {
-    return this->RequestSurfaceData(vtkPolyData::GetData(inputVector[1], 0), output, probesOutput);
+    const int done =
+      this->RequestSurfaceData(vtkPolyData::GetData(inputVector[1], 0), output, probesOutput);
+    ProbesWholeExtentFromData(outputVector);
+    return done;
   }
   const vlf::LightField* field = nullptr;
   if (this->LightFieldActor)
@@ -400,10 +421,11 @@ int vtkLightFieldReliefSurface::RequestData(
   }
   vlf::ReliefSurface surface;
   std::vector<mesolight::SH9> probes;
-  const int n = this->ProbesPerSide;
+  int n = vlf::DefaultReliefProbesPerSide;
   try
   {
     surface = vlf::FindReliefSurface(*field, this->SurfaceName);
+    n = vlf::ReliefProbesPerSide(*field, surface, this->ProbesPerSide);
     probes = vlf::ReliefSurfaceProbes(
       *field, surface, n, n, mesolight::AlgorithmProgress(this, 0.0, this->MapProgress()));
   }
@@ -479,6 +501,8 @@ int vtkLightFieldReliefSurface::RequestData(
   }
   FillProbesImage(probesOutput, PackProbes(probes, n), n, this->SceneOcclusion ? &factors : nullptr,
     emitters.size());
+  this->ProbesPerSideUsed = n;
+  ProbesWholeExtentFromData(outputVector);
   this->NamedProbes = std::make_unique<std::vector<mesolight::SH9>>(std::move(probes));
   ++this->ProbeComputations;
   const double frame[12] = { surface.Origin.x, surface.Origin.y, surface.Origin.z, surface.AxisU.x,
@@ -555,7 +579,7 @@ int vtkLightFieldReliefSurface::RequestSurfaceData(
   vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
   const int ranks = controller ? controller->GetNumberOfProcesses() : 1;
   const int rank = ranks > 1 ? controller->GetLocalProcessId() : 0;
-  const int n = this->ProbesPerSide;
+  const int requested = this->ProbesPerSide;
 
   // The whole surface on every rank (one texture frame for all pieces). Every rank reaches each
   // collective below: nothing returns before the last one.
@@ -585,9 +609,9 @@ int vtkLightFieldReliefSurface::RequestSurfaceData(
   vtkInternals& in = *this->Internals;
   const int propagation = producer ? producer->GetPropagationCount() : -1;
   const vtkMTimeType surfaceTime = input ? input->GetMTime() : 0;
-  int stale =
-    (!in.HasResult || in.Producer != producer || in.Propagation != propagation ||
-      in.SurfaceTime != surfaceTime || in.Probes != n || in.SceneOcclusion != this->SceneOcclusion)
+  int stale = (!in.HasResult || in.Producer != producer || in.Propagation != propagation ||
+                in.SurfaceTime != surfaceTime || in.Probes != requested ||
+                in.SceneOcclusion != this->SceneOcclusion)
     ? 1
     : 0;
   if (ranks > 1)
@@ -629,7 +653,7 @@ int vtkLightFieldReliefSurface::RequestSurfaceData(
     {
       try
       {
-        result = ComputeSurface(*field, whole, n, this->SceneOcclusion,
+        result = ComputeSurface(*field, whole, this->ProbesPerSide, this->SceneOcclusion,
           mesolight::AlgorithmProgress(this, 0.0, this->MapProgress()));
       }
       catch (const vlf::AbortedError&)
@@ -670,6 +694,8 @@ int vtkLightFieldReliefSurface::RequestSurfaceData(
     {
       vtkIdType lights = static_cast<vtkIdType>(result.Lights.size());
       controller->Broadcast(&lights, 1, root);
+      controller->Broadcast(&result.ProbesPerSide, 1, root);
+      const int n = result.ProbesPerSide;
       result.Probes.resize(static_cast<std::size_t>(27) * n * n);
       result.Lights.resize(static_cast<std::size_t>(lights));
       controller->Broadcast(
@@ -708,13 +734,14 @@ int vtkLightFieldReliefSurface::RequestSurfaceData(
     in.Producer = producer;
     in.Propagation = propagation;
     in.SurfaceTime = surfaceTime;
-    in.Probes = n;
+    in.Probes = requested;
     in.SceneOcclusion = this->SceneOcclusion;
     ++this->ProbeComputations;
   }
 
-  FillProbesImage(probesOutput, result.Probes, n, this->SceneOcclusion ? &result.Factors : nullptr,
-    result.Lights.size() / 9);
+  FillProbesImage(probesOutput, result.Probes, result.ProbesPerSide,
+    this->SceneOcclusion ? &result.Factors : nullptr, result.Lights.size() / 9);
+  this->ProbesPerSideUsed = result.ProbesPerSide;
   // Light 0's area shadow in the map, as for a named surface (every rank has the samples: its own
   // or the computing rank's).
   in.LightSamples = UnpackEmitterSamples(result.LightSamples);
@@ -804,6 +831,7 @@ void vtkLightFieldReliefSurface::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LightFieldProducer: " << this->LightFieldProducer << "\n";
   os << indent << "SurfaceName: " << this->SurfaceName << "\n";
   os << indent << "ProbesPerSide: " << this->ProbesPerSide << "\n";
+  os << indent << "ProbesPerSideUsed: " << this->ProbesPerSideUsed << "\n";
   os << indent << "EmitterLights: " << this->EmitterLights->GetNumberOfItems() << "\n";
   os << indent << "ReliefTextureData: " << this->Internals->ReliefTexture.Get() << "\n";
   os << indent << "ReliefDepthScale: " << this->ReliefDepthScale << "\n";

@@ -129,9 +129,15 @@ public:
   ///@}
 
   ///@{
-  /** SH9 probes per side of the texture (default 8, mesolight::vlf::DefaultReliefProbesPerSide). */
-  vtkSetClampMacro(ProbesPerSide, int, 1, 256);
+  /**
+   * SH9 probes per side of the texture; 0 (the default) chooses from the field and the surface:
+   * one per field line cell across the surface, 8 to 64 (mesolight::vlf::ReliefProbesPerSide),
+   * so that the scene's shadows on a large surface are not averaged away.
+   */
+  vtkSetClampMacro(ProbesPerSide, int, 0, 256);
   vtkGetMacro(ProbesPerSide, int);
+  /** The probes per side of the last execution (ProbesPerSide, or the automatic choice). */
+  vtkGetMacro(ProbesPerSideUsed, int);
   ///@}
 
   ///@{
@@ -258,6 +264,7 @@ private:
   vtkVirtualLightField* LightFieldProducer = nullptr;
   std::string SurfaceName;
   int ProbesPerSide;
+  int ProbesPerSideUsed = 0;
   double ReliefDepthScale = 0.05;
   bool WalledRelief = true;
   bool SceneOcclusion = false;

@@ -172,7 +172,7 @@ mesolight::HeightField ReliefHeightField(vtkImageData* texture, bool walled)
     walled ? mesolight::HeightField::Edge::Walled : mesolight::HeightField::Edge::Clamped);
 }
 
-SurfaceResult ComputeSurface(const vlf::LightField& field, vtkPolyData* whole, int n,
+SurfaceResult ComputeSurface(const vlf::LightField& field, vtkPolyData* whole, int probesPerSide,
   bool sceneOcclusion, const mesolight::ProgressCallback& progress)
 {
   std::vector<glm::vec3> positions(static_cast<std::size_t>(whole->GetNumberOfPoints()));
@@ -206,6 +206,8 @@ SurfaceResult ComputeSurface(const vlf::LightField& field, vtkPolyData* whole, i
   const vlf::ReliefSurface surface =
     vlf::ReliefSurfaceFromTriangles(field, positions, tcoords, triangles, "the relief surface");
   SurfaceResult result;
+  const int n = vlf::ReliefProbesPerSide(field, surface, probesPerSide);
+  result.ProbesPerSide = n;
   result.Probes = PackProbes(vlf::ReliefSurfaceProbes(field, surface, n, n, progress), n);
   const glm::dvec3 frame[4] = { surface.Origin, surface.AxisU, surface.AxisV, surface.Normal };
   for (int a = 0; a < 4; ++a)

@@ -62,6 +62,7 @@ HeightField ReliefHeightField(vtkImageData* texture, bool walled);
 // the surface's Kd and Ke and the emitter lights.
 struct SurfaceResult
 {
+  int ProbesPerSide = 0; // n (vlf::ReliefProbesPerSide)
   std::vector<float> Probes;
   double Frame[16] = {}; // origin, u axis, v axis, normal (unit sphere); centre, scale (world)
   double Diffuse[3] = {};
@@ -86,7 +87,8 @@ std::vector<ReliefEmitterSample> FirstLightSamples(
 std::vector<double> PackEmitterSamples(const std::vector<ReliefEmitterSample>& samples);
 std::vector<ReliefEmitterSample> UnpackEmitterSamples(const std::vector<double>& packed);
 
-SurfaceResult ComputeSurface(const LightField& field, vtkPolyData* whole, int n,
+// `probesPerSide`: vtkLightFieldReliefSurface::ProbesPerSide (0: ReliefProbesPerSide's choice).
+SurfaceResult ComputeSurface(const LightField& field, vtkPolyData* whole, int probesPerSide,
   bool sceneOcclusion, const ProgressCallback& progress);
 } // namespace reliefsurface
 } // namespace vlf

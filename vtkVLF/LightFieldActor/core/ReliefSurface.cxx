@@ -225,6 +225,20 @@ glm::vec3 ReliefProbePoint(const ReliefSurface& surface, int i, int j, int probe
   return glm::vec3(surface.Point(u, v) + 1e-3 * surface.Normal);
 }
 
+int ReliefProbesPerSide(const LightField& field, const ReliefSurface& surface, int requested)
+{
+  if (requested > 0)
+  {
+    return requested;
+  }
+  const double side = std::max(glm::length(surface.AxisU), glm::length(surface.AxisV));
+  const double cells = std::ceil(side / static_cast<double>(field.Settings().CellSize()));
+  return std::isfinite(cells)
+    ? static_cast<int>(std::clamp(cells, static_cast<double>(DefaultReliefProbesPerSide),
+        static_cast<double>(MaximumAutomaticReliefProbesPerSide)))
+    : DefaultReliefProbesPerSide;
+}
+
 std::vector<SH9> ReliefSurfaceProbes(const LightField& field, const ReliefSurface& surface,
   int probesU, int probesV, const ProgressCallback& progress)
 {

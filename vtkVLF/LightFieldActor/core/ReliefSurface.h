@@ -38,9 +38,11 @@ public:
   using std::runtime_error::runtime_error;
 };
 
-// SH9 probes per side of the texture unless told otherwise (the CPU reference's and the
-// walkthrough's default: the field's indirect light varies slowly over a wall).
+// SH9 probes per side of the texture: the fewest (and the count a wall of the Cornell box gets)
+// and the most the automatic choice (ReliefProbesPerSide) gives; 0 asks for that choice.
 constexpr int DefaultReliefProbesPerSide = 8;
+constexpr int MaximumAutomaticReliefProbesPerSide = 64;
+constexpr int AutomaticReliefProbes = 0;
 
 struct ReliefSurface
 {
@@ -86,6 +88,14 @@ ReliefSurface ReliefSurfaceFromTriangles(const LightField& field,
 // the plane; row-major, j slowest. Reports progress per row; a stop throws AbortedError.
 std::vector<SH9> ReliefSurfaceProbes(const LightField& field, const ReliefSurface& surface,
   int probesU, int probesV, const ProgressCallback& progress = {});
+
+// Probes per side for a relief on `surface`: `requested` when positive, else one probe per
+// field line cell across the surface's longer texture side (LightFieldSettings::CellSize),
+// within [DefaultReliefProbesPerSide, MaximumAutomaticReliefProbesPerSide]. The probes carry the
+// scene's shadows on the relief (the emitter lights' factors) and its indirect light: on a 200 m
+// ground under 10 m buildings, 8 probes a side (25 m apart) averaged the buildings' shadows away
+// where the field itself, and the CPU reference, drew them.
+int ReliefProbesPerSide(const LightField& field, const ReliefSurface& surface, int requested);
 
 // Where probe (i, j) stands (unit sphere): its texture point lifted off the plane by 1e-3.
 glm::vec3 ReliefProbePoint(const ReliefSurface& surface, int i, int j, int probesU, int probesV);
