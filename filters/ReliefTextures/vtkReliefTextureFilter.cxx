@@ -43,6 +43,31 @@ vtkStandardNewMacro(vtkReliefTextureFilter);
 
 namespace
 {
+/// A hint when the lowest stored value is one that DEMs use for "no data" (-32768 in SRTM and
+/// int16 GeoTIFFs, -9999 and -99999 in ASCII grids, the lowest float) and none is set: such holes
+/// make an elevation range thousands of metres too deep.
+std::string NoDataHint(double lowest, bool noDataSet)
+{
+  if (noDataSet)
+  {
+    return {};
+  }
+  for (const double marker : { -32768.0, -32767.0, -9999.0, -99999.0,
+         static_cast<double>(std::numeric_limits<float>::lowest()) })
+  {
+    if (lowest == marker)
+    {
+      std::ostringstream hint;
+      hint << " The lowest value, " << marker
+           << ", looks like a no-data value: name it (NoDataValue with UseNoDataValue; ParaView: "
+              "Use No Data Value; mesolight: --no-data="
+           << marker << ").";
+      return hint.str();
+    }
+  }
+  return {};
+}
+
 /// Convert nComp-component tuples of type T to one value per texel (double): unit values, or
 /// with `stored` the stored values themselves (NormalizeRange rescales them anyway).
 template <typename T>
@@ -420,8 +445,9 @@ int vtkReliefTextureFilter::Execute(
     }
     else
     {
+      // A flat map (a lake or sea tile) is the surface's plane, heights or depths alike.
       vtkWarningMacro("NormalizeRange: the input is constant ("
-        << minValue << "); it is mapped to depth " << (this->InvertInput ? 1 : 0) << ".");
+        << minValue << "); it is mapped to depth 0, the surface's plane.");
       offset = minValue;
       scale = 0.0;
     }
@@ -440,12 +466,14 @@ int vtkReliefTextureFilter::Execute(
   const double elevationUnit =
     unitArray && unitArray->GetNumberOfValues() == 1 ? unitArray->GetComponent(0, 0) : 1.0;
   const bool validUnit = elevationUnit > 0.0 && std::isfinite(elevationUnit);
-  if (this->NormalizeRange && validPixelSize && validUnit && maxValue > minValue)
+  // (0 for constant elevations: a flat tile drawn flat.)
+  const bool trueScaleKnown = this->NormalizeRange && validPixelSize && validUnit;
+  if (trueScaleKnown)
   {
     this->TrueDepthScale =
       (maxValue - minValue) * elevationUnit / (w * pixelSize->GetComponent(0, 0));
   }
-  if (this->UseTrueDepthScale && this->TrueDepthScale <= 0.0)
+  if (this->UseTrueDepthScale && !trueScaleKnown)
   {
     vtkErrorMacro("UseTrueDepthScale (ParaView: Use True Depth Scale; mesolight: "
                   "--vertical-exaggeration) needs "
@@ -454,9 +482,8 @@ int vtkReliefTextureFilter::Execute(
                                   "Mesolight Image Reader (vtkOIIOImageReader) gives it for a "
                                   "GeoTIFF or an SRTM tile; this one carries none"
              : !validPixelSize  ? "a positive, finite pixel size (MesolightPixelSize: two values)"
-             : !validUnit       ? "elevations in metres or feet; the file names another unit "
-                                  "(MesolightElevationUnit, from a GeoTIFF's VerticalUnitsGeoKey)"
-                                : "elevations that vary")
+                                : "elevations in metres or feet; the file names another unit "
+                                  "(MesolightElevationUnit, from a GeoTIFF's VerticalUnitsGeoKey)")
       << ". Set the depth scale instead.");
     return 0;
   }
@@ -471,13 +498,14 @@ int vtkReliefTextureFilter::Execute(
       << (maxValue - minValue) * elevationUnit << " m of elevation over " << w << " pixels of "
       << pixelSize->GetComponent(0, 0) << " m), above " << mesolight::MaximumDepthScale
       << ", the largest depth scale: lower VerticalExaggeration, or check the image's pixel size "
-         "and its elevations' unit (or set the depth scale instead).");
+         "and its elevations' unit (or set the depth scale instead)."
+      << NoDataHint(minValue, noDataCount > 0));
     return 0;
   }
   this->AppliedDepthScale =
     this->UseTrueDepthScale ? this->TrueDepthScale * this->VerticalExaggeration : this->DepthScale;
 
-  const bool invert = this->InvertInput;
+  const bool invert = this->InvertInput && scale != 0.0; // a constant input stays at depth 0
   for (vtkIdType k = 0; k < n; ++k)
   {
     const double d = std::min(1.0, std::max(0.0, (value[k] - offset) * scale));

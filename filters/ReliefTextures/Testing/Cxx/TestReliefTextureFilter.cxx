@@ -492,6 +492,63 @@ TEST(vtkReliefTextureFilter, TrueDepthScaleOfAGeoreferencedElevationMap)
   EXPECT_TRUE(capture->HasError("above 10,")) << capture->AllErrors();
 }
 
+// A flat elevation map (a lake or sea tile) is the surface's plane: depth 0 with InvertInput
+// too (it was depth 1, the relief sunk to its deepest), and at its true vertical scale a depth
+// scale of 0 (it was refused: "needs elevations that vary").
+TEST(vtkReliefTextureFilter, ConstantElevationsAreTheFlatPlane)
+{
+  auto lake = MakeImage<vtkShortArray>(3, 2, 1, { 12, 12, 12, 12, 12, 12 });
+  vtkNew<vtkDoubleArray> pixelSize;
+  pixelSize->SetName("MesolightPixelSize");
+  pixelSize->SetNumberOfComponents(2);
+  pixelSize->InsertNextTuple2(30.0, 30.0);
+  lake->GetFieldData()->AddArray(pixelSize);
+  vtkNew<vtkReliefTextureFilter> filter;
+  vtkNew<MessageCapture> capture;
+  capture->Watch(filter);
+  filter->SetInputData(lake);
+  filter->InvertInputOn();
+  filter->NormalizeRangeOn();
+  filter->UseTrueDepthScaleOn();
+  filter->Update();
+  EXPECT_TRUE(capture->Errors.empty()) << capture->AllErrors();
+  EXPECT_TRUE(capture->HasWarning("mapped to depth 0"));
+  EXPECT_EQ(filter->GetAppliedDepthScale(), 0.0);
+  ASSERT_EQ(filter->GetOutput()->GetNumberOfPoints(), 6);
+  for (vtkIdType k = 0; k < 6; ++k)
+  {
+    EXPECT_EQ(Relief(filter)->GetComponent(k, 3), 0.0f) << "texel " << k;
+  }
+}
+
+// An int16 DEM whose holes hold -32768 without a no-data value set spans 36 km of "elevation":
+// the refusal says which value looks like no-data and how to name it.
+TEST(vtkReliefTextureFilter, ANoDataLookingMinimumIsNamed)
+{
+  auto dem = MakeImage<vtkShortArray>(4, 1, 1, { -32768, 0, 2000, 4000 });
+  vtkNew<vtkDoubleArray> pixelSize;
+  pixelSize->SetName("MesolightPixelSize");
+  pixelSize->SetNumberOfComponents(2);
+  pixelSize->InsertNextTuple2(250.0, 250.0);
+  dem->GetFieldData()->AddArray(pixelSize);
+  vtkNew<vtkReliefTextureFilter> filter;
+  vtkNew<MessageCapture> capture;
+  capture->Watch(filter);
+  filter->SetInputData(dem);
+  filter->NormalizeRangeOn();
+  filter->UseTrueDepthScaleOn();
+  filter->Update();
+  EXPECT_TRUE(capture->HasError("-32768, looks like a no-data value")) << capture->AllErrors();
+  EXPECT_TRUE(capture->HasError("--no-data=-32768")) << capture->AllErrors();
+  // Named, the holes are left out: 4 km over 1 km is refused no more.
+  capture->Errors.clear();
+  filter->UseNoDataValueOn();
+  filter->SetNoDataValue(-32768);
+  filter->Update();
+  EXPECT_TRUE(capture->Errors.empty()) << capture->AllErrors();
+  EXPECT_NEAR(filter->GetAppliedDepthScale(), 4.0, 1e-12);
+}
+
 TEST(vtkReliefTextureFilter, NonFiniteValuesAreRejected)
 {
   const float nan = std::numeric_limits<float>::quiet_NaN();
