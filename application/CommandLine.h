@@ -90,6 +90,10 @@ public:
     "texels holding this value (e.g. -32768 in an int16 DEM; nan) have no data: left out of "
     "--normalize's range and drawn as the lowest ground. Default: the value a GeoTIFF names "
     "(GDAL_NODATA), if any; none: not even that one";
+  /** The help text of --relief-normalize (trace, vlf render, vlf view). */
+  static constexpr const char* ReliefNormalizeHelp =
+    "stretch the relief images' value range to [0, 1], as render's --normalize does: elevation "
+    "maps in metres (DEMs, signed integers), whose no-data value a GeoTIFF names is left out";
   /** The help text of every command's --vertical-exaggeration. */
   static constexpr const char* VerticalExaggerationHelp =
     "a georeferenced elevation map (GeoTIFF, SRTM .hgt) at its true vertical scale times E, in "

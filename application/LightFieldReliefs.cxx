@@ -51,9 +51,10 @@ void AddReliefOptions(CommandLine& cl)
   cl.AddFlag("--relief-no-occlusion",
     "the relief mapper without the relief's occlusion of its indirect light, its "
     "inter-reflection and the scene's shadows of the emitter lights (for comparison)");
+  cl.AddFlag("--relief-normalize", CommandLine::ReliefNormalizeHelp);
   cl.AddValue("--relief-probes", "N", ReliefProbesHelp(), "0");
-  for (const char* option :
-    { "--relief-depth-scale", "--relief-height", "--relief-no-occlusion", "--relief-probes" })
+  for (const char* option : { "--relief-depth-scale", "--relief-height", "--relief-normalize",
+         "--relief-no-occlusion", "--relief-probes" })
   {
     cl.AppliesOnlyWith(option, { "--relief" });
   }
@@ -106,15 +107,9 @@ class MirroredReliefs : public vlf::TracedReliefs
 {
 public:
   MirroredReliefs(const vlf::LightField& field, std::shared_ptr<const EmbreeScene> embree,
-    const std::vector<std::string>& items, double depthScale, bool depthIsHeight, int probesPerSide,
-    std::vector<std::vector<SH9>> probes)
+    const std::vector<std::string>& items, const FieldReliefOptions& options)
     : Embree(std::move(embree))
   {
-    FieldReliefOptions options;
-    options.DepthScale = depthScale;
-    options.DepthIsHeight = depthIsHeight;
-    options.Probes = probesPerSide;
-    options.KnownProbes = std::move(probes);
     this->Reliefs = SetUpFieldReliefs(field, *this->Embree, items, options);
     this->ReliefOf = ReliefOfTriangle(field, this->Reliefs);
   }
@@ -248,6 +243,7 @@ int SetUpWalkthroughReliefs(const CommandLine& cl, const char* command, vtkLight
     textureOptions.DepthFile = depthImage;
     textureOptions.DepthScale = depthScale;
     textureOptions.DepthFileIsHeight = cl.Has("--relief-height");
+    textureOptions.NormalizeDepthFile = cl.Has("--relief-normalize");
     vtkSmartPointer<vtkImageData> texture;
     vtkSmartPointer<vtkTexture> albedo;
     if (!BuildReliefTextures(textureOptions, texture, albedo, error))
@@ -311,17 +307,21 @@ int SetUpWalkthroughReliefs(const CommandLine& cl, const char* command, vtkLight
   }
   if (mirrors)
   {
-    std::vector<std::vector<SH9>> probes;
+    // The CPU reference's reading of the same images, with the relief surfaces' probes.
+    FieldReliefOptions mirrorOptions;
+    mirrorOptions.DepthScale = depthScale;
+    mirrorOptions.DepthIsHeight = cl.Has("--relief-height");
+    mirrorOptions.NormalizeDepth = cl.Has("--relief-normalize");
+    mirrorOptions.Probes = probesPerSide;
     for (const auto& surface : reliefs.Surfaces)
     {
       const std::vector<SH9>* computed = vtkLightFieldReliefSurfaceCore::GetProbes(surface);
-      probes.push_back(computed ? *computed : std::vector<SH9>());
+      mirrorOptions.KnownProbes.push_back(computed ? *computed : std::vector<SH9>());
     }
     try
     {
-      vtkLightFieldActorCore::SetTracedReliefs(actor,
-        std::make_shared<MirroredReliefs>(*field, embree, items, depthScale,
-          cl.Has("--relief-height"), probesPerSide, std::move(probes)));
+      vtkLightFieldActorCore::SetTracedReliefs(
+        actor, std::make_shared<MirroredReliefs>(*field, embree, items, mirrorOptions));
     }
     catch (const std::exception& e)
     {

@@ -32,18 +32,19 @@ void AddTraceReliefOptions(CommandLine& cl)
     "and default)",
     "0.05");
   cl.AddFlag("--relief-height", "the relief image stores height (white = high), not depth");
+  cl.AddFlag("--relief-normalize", CommandLine::ReliefNormalizeHelp);
   cl.AddValue("--relief-subdivision", "N", "grid lines of the dense mesh per texel", "1");
   cl.AddValue("--relief-mask", "FILE.exr",
     "also write the share of each pixel covered by the relief surface (1 = all of it)");
-  for (const char* option :
-    { "--relief-depth-scale", "--relief-mask", "--relief-height", "--relief-subdivision" })
+  for (const char* option : { "--relief-depth-scale", "--relief-mask", "--relief-height",
+         "--relief-normalize", "--relief-subdivision" })
   {
     cl.AppliesOnlyWith(option, { "--relief" });
   }
 }
 
-bool ReadDepthMapImage(const std::string& file, bool isHeight, std::vector<float>& depth,
-  int& width, int& height, std::string& error)
+bool ReadDepthMapImage(const std::string& file, bool isHeight, bool normalize,
+  std::vector<float>& depth, int& width, int& height, std::string& error)
 {
   vtkNew<MessageCollector> errors;
   vtkNew<vtkOIIOImageReader> reader;
@@ -53,6 +54,7 @@ bool ReadDepthMapImage(const std::string& file, bool isHeight, std::vector<float
   bake->AddObserver(vtkCommand::ErrorEvent, errors);
   bake->SetInputConnection(reader->GetOutputPort());
   bake->SetInvertInput(isHeight);
+  bake->SetNormalizeRange(normalize);
   bake->Update();
   vtkImageData* relief = bake->GetOutput();
   vtkDataArray* scalars = relief ? relief->GetPointData()->GetScalars() : nullptr;
@@ -96,8 +98,8 @@ bool ApplyTraceRelief(
     return false;
   }
   DepthMap map;
-  if (!ReadDepthMapImage(spec.substr(equals + 1), cl.Has("--relief-height"), map.Depth, map.Width,
-        map.Height, error))
+  if (!ReadDepthMapImage(spec.substr(equals + 1), cl.Has("--relief-height"),
+        cl.Has("--relief-normalize"), map.Depth, map.Width, map.Height, error))
   {
     return false;
   }

@@ -17,15 +17,16 @@ class CommandLine;
 class EmbreeScene;
 struct TriangleScene;
 
-/** Declares --relief, --relief-depth-scale, --relief-height, --relief-subdivision and
- * --relief-mask. */
+/** Declares --relief, --relief-depth-scale, --relief-height, --relief-normalize,
+ * --relief-subdivision and --relief-mask. */
 void AddTraceReliefOptions(CommandLine& cl);
 
 /** The depth map of an image file exactly as the relief mapper sees it (vtkOIIOImageReader +
- * vtkReliefTextureFilter: luminance, scaled to [0, 1], inverted for a height image; row 0 at the
- * bottom). False with a message in error. */
-bool ReadDepthMapImage(const std::string& file, bool isHeight, std::vector<float>& depth,
-  int& width, int& height, std::string& error);
+ * vtkReliefTextureFilter: luminance, scaled to [0, 1], or its range stretched to [0, 1] with
+ * `normalize` (NormalizeRange: elevations), inverted for a height image; row 0 at the bottom).
+ * False with a message in error. */
+bool ReadDepthMapImage(const std::string& file, bool isHeight, bool normalize,
+  std::vector<float>& depth, int& width, int& height, std::string& error);
 
 /**
  * Applies --relief to the scene (its triangles replaced by the displaced mesh; the surface's name

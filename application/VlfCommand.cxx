@@ -113,7 +113,9 @@ int Render(const std::vector<std::string>& args)
   cl.AddValue("--relief-depth-scale", "K",
     "world depth of depth 1 over the world width of the relief's texture", "0.05");
   cl.AddFlag("--relief-height", "the relief images store height (white = high), not depth");
+  cl.AddFlag("--relief-normalize", CommandLine::ReliefNormalizeHelp);
   cl.AddValue("--relief-probes", "N", ReliefProbesHelp(), "0");
+  cl.AppliesOnlyWith("--relief-normalize", { "--relief" });
   cl.AppliesOnlyWith("--relief-depth-scale", { "--relief" });
   cl.AppliesOnlyWith("--relief-height", { "--relief" });
   cl.AppliesOnlyWith("--relief-probes", { "--relief" });
@@ -163,6 +165,7 @@ int Render(const std::vector<std::string>& args)
   double viewAngle = 0.0, exposure = 0.0, tolerance = 0.1;
   FieldReliefOptions reliefOptions;
   reliefOptions.DepthIsHeight = cl.Has("--relief-height");
+  reliefOptions.NormalizeDepth = cl.Has("--relief-normalize");
   if (!ReadViewAngle(cl, viewAngle, error) ||
     !cl.GetDouble("--exposure", 0.0, 1e9, exposure, error) ||
     !cl.GetDouble("--tolerance", 0.0, 10.0, tolerance, error) ||

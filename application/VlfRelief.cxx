@@ -29,7 +29,7 @@ std::string Quoted(const std::string& text)
 }
 } // namespace
 
-HeightField ReadDepthImage(const std::string& path, bool isHeight)
+HeightField ReadDepthImage(const std::string& path, bool isHeight, bool normalize)
 {
   // The depths exactly as the path tracer's dense mesh (trace --relief) and the relief mapper
   // read them: the same reader and relief filter, so NaN, out-of-range values, signed elevations
@@ -38,7 +38,7 @@ HeightField ReadDepthImage(const std::string& path, bool isHeight)
   int width = 0;
   int height = 0;
   std::string error;
-  if (!ReadDepthMapImage(path, isHeight, depth, width, height, error))
+  if (!ReadDepthMapImage(path, isHeight, normalize, depth, width, height, error))
   {
     throw ReliefSetupError("--relief: depth image " + Quoted(path) + ": " + error);
   }
@@ -92,7 +92,8 @@ std::vector<FieldRelief> SetUpFieldReliefs(const vlf::LightField& field, const E
     {
       throw ReliefSetupError(std::string("--relief: ") + e.what());
     }
-    relief.Height = ReadDepthImage(relief.DepthImage, options.DepthIsHeight);
+    relief.Height =
+      ReadDepthImage(relief.DepthImage, options.DepthIsHeight, options.NormalizeDepth);
     relief.Frame.Origin = surface.Origin;
     relief.Frame.AxisU = surface.AxisU;
     relief.Frame.AxisV = surface.AxisV;

@@ -50,6 +50,7 @@ struct FieldReliefOptions
 {
   double DepthScale = 0.05;   // vtkReliefProperty's default
   bool DepthIsHeight = false; // the images store height (white = high), not depth (--relief-height)
+  bool NormalizeDepth = false; // their value range stretched to [0, 1] (--relief-normalize)
   // SH9 probes per side of the texture; AutomaticReliefProbes: vlf::ReliefProbesPerSide's choice.
   int Probes = vlf::AutomaticReliefProbes;
   int EmitterSamplesPerSide = 4; // per emitter triangle: n x n stratified samples
@@ -77,9 +78,9 @@ bool ReliefRadiance(
   const FieldRelief& relief, const glm::vec3& origin, const glm::vec3& dir, glm::vec3& radiance);
 
 // The depths of an image file as the relief mapper reads them (ReadDepthMapImage: luminance,
-// 0..1, inverted when `isHeight`; row 0 at the bottom, v ~ 0). Throws ReliefSetupError naming the
-// file and the reason.
-HeightField ReadDepthImage(const std::string& path, bool isHeight);
+// 0..1 or the range stretched to it with `normalize`, inverted when `isHeight`; row 0 at the
+// bottom, v ~ 0). Throws ReliefSetupError naming the file and the reason.
+HeightField ReadDepthImage(const std::string& path, bool isHeight, bool normalize);
 
 } // namespace mesolight
 

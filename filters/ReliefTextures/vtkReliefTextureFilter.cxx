@@ -392,7 +392,8 @@ int vtkReliefTextureFilter::Execute(
       << ", " << std::lround(maxValue / unitScale) << "]"
       << (noDataCount > 0 ? " without the no-data texels" : "")
       << "): they store measurements such as elevations in metres (DEMs), not depths in [0,1]. "
-         "Turn on NormalizeRange (ParaView: Normalize Range; mesolight: --normalize) to "
+         "Turn on NormalizeRange (ParaView: Normalize Range; mesolight: --normalize, with --relief "
+         "--relief-normalize) to "
          "rescale their range to [0,1].");
     return 0;
   }
@@ -412,7 +413,8 @@ int vtkReliefTextureFilter::Execute(
       << (noDataCount > 0 ? " without the no-data texels" : "") << " (" << outOfRange
       << " texel(s) outside, the first at texel (i=" << firstOutOfRange % w
       << ", j=" << firstOutOfRange / w
-      << ")). Turn on NormalizeRange (ParaView: Normalize Range; mesolight: --normalize) to "
+      << ")). Turn on NormalizeRange (ParaView: Normalize Range; mesolight: --normalize, with "
+         "--relief --relief-normalize) to "
          "rescale the input range to [0,1], as for elevations in metres, or fix the data.");
     return 0;
   }

@@ -121,6 +121,24 @@ cli_expect_error(2 "are not one affine map of its plane" vlf render "${WORK}/ben
   --size 32x32 --camera 0.5,0.5,0.05,0.5,0.5,1 --relief back=${WORK}/grooves.pgm
   --out "${WORK}/never.png")
 
+# An elevation map in metres (a DEM) is refused without --relief-normalize, the message naming
+# it; with it (and --relief-height) it is the same relief as the same checker stored as depths in
+# [0, 1] (64 m: depth 0, 16 m: depth 1).
+cli_elevation_maps()
+cli_oiiotool(--pattern checker:width=4:height=4:color1=0:color2=1 64x64 1 -d uint8
+  -o "${WORK}/checker-depth.png")
+cli_expect_error(2 "--relief-normalize" vlf render "${WORK}/box.vlf" --size 32x32
+  --relief back=${WORK}/metres.tif --out "${WORK}/never.png")
+cli_run(TRUE vlf render "${WORK}/box.vlf" --size 32x32 --relief back=${WORK}/metres.tif
+  --relief-normalize --relief-height --out "${WORK}/dem.png" --exr "${WORK}/dem.exr")
+cli_run(TRUE vlf render "${WORK}/box.vlf" --size 32x32 --relief back=${WORK}/checker-depth.png
+  --out "${WORK}/checker.png" --exr "${WORK}/checker.exr")
+execute_process(COMMAND "${OIIOTOOL}" --fail 1e-6 --warn 1e-6 "${WORK}/dem.exr"
+  "${WORK}/checker.exr" --diff RESULT_VARIABLE _differs OUTPUT_VARIABLE _out ERROR_QUIET)
+if (NOT _differs EQUAL 0)
+  message(FATAL_ERROR "the normalized elevation map is not the depth checker's relief: ${_out}")
+endif ()
+
 # The committed mirror box names its surfaces too; its mirror wall is refused (reliefs are
 # diffuse), its back wall is drawn.
 cli_run(TRUE vlf propagate "${DATA}/cornell-box-mirror.obj" --directions 33 --rays 16

@@ -81,3 +81,12 @@ endif ()
 if (NOT _relative_8 GREATER ${LIMIT})
   message(FATAL_ERROR "8 probes a side pass the check: it cannot see the shadows")
 endif ()
+
+# Terrain in metres on the ground: the walkthrough takes --relief-normalize as the CPU reference
+# does (refused without it, naming it).
+cli_elevation_maps()
+set(_dem --size 48x48 --camera 70,-90,45,0,0,5,0,0,1 --relief ground=${WORK}/metres.tif)
+cli_expect_error(2 "--relief-normalize" vlf render "${WORK}/town.vlf" --mode progressive ${_dem}
+  --out "${WORK}/never.png")
+cli_run(TRUE vlf render "${WORK}/town.vlf" --mode progressive ${_dem} --relief-normalize
+  --relief-height --out "${WORK}/dem.png")
