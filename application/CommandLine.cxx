@@ -470,14 +470,35 @@ std::vector<std::string> CommandLine::GetStringList(const std::string& name) con
 
 void CommandLine::PrintOptions(std::ostream& os) const
 {
+  // Descriptions start in column 31 and wrap at 100 columns, continuation lines indented to
+  // the same column (a terminal's own wrap, or a newline in the text, restarted them at 0).
+  constexpr std::size_t column = 31;
+  constexpr std::size_t width = 100;
   for (const std::string& name : this->Order)
   {
     const Option& option = this->Options.at(name);
     std::string head = "  " + name + (option.TakesValue ? " " + option.Meta : "");
-    os << std::left << std::setw(30) << head << " " << option.Help;
+    std::string text = option.Help;
     if (!option.Default.empty())
     {
-      os << " (default: " << option.Default << ")";
+      text += " (default: " + option.Default + ")";
+    }
+    os << std::left << std::setw(column - 1) << head << " ";
+    std::size_t at = std::max(column, head.size() + 1);
+    std::istringstream words(text);
+    std::string word;
+    bool first = true;
+    while (words >> word)
+    {
+      if (!first && at + 1 + word.size() > width)
+      {
+        os << "\n" << std::string(column, ' ');
+        at = column;
+        first = true;
+      }
+      os << (first ? "" : " ") << word;
+      at += (first ? 0 : 1) + word.size();
+      first = false;
     }
     os << "\n";
   }

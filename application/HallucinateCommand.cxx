@@ -144,16 +144,16 @@ int RunHallucinateCommand(const std::vector<std::string>& args)
   cl.AddValue("--depth", "FILE", "depth map to write (float; 0 = highest, 1 = deepest)");
   cl.AddValue("--depth-scale", "K", "the user's depth scale: multiplies the model's depth", "1");
   cl.AddValue("--layers", "N",
-    "scale layers; sigma 1, 2, 4, ... texels (feature: from\nthe ratio's feature size, the "
-    "average on fine features,\none wide count on broad ones; average: every count the\n"
-    "photograph holds, averaged; auto: one count from the\nphotographs' octave energies)",
+    "scale layers; sigma 1, 2, 4, ... texels (feature: from the ratio's feature size, the "
+    "average on fine features, one wide count on broad ones; average: every count the "
+    "photograph holds, averaged; auto: one count from the photographs' octave energies)",
     "feature");
   cl.AddValue("--model", "NAME",
-    "ratio: layers of the diffuse/flash ratio, each count\nweighted by its agreement with it; "
-    "shading: the previous\nmodel, layers of the shading, equal weights",
+    "ratio: layers of the diffuse/flash ratio, each count weighted by its agreement with it; "
+    "shading: the previous model, layers of the shading, equal weights",
     "ratio");
   cl.AddValue("--residual-weight", "W",
-    "sigma of the residual layer (the widest layer against\nthe open sky) in widest sigmas; 0: "
+    "sigma of the residual layer (the widest layer against the open sky) in widest sigmas; 0: "
     "none",
     "8");
   cl.AddValue("--hill-weight", "W", "weight of the hill law (orientation to the sky)", "1");
@@ -388,22 +388,22 @@ int RunHallucinationBenchmark(const std::vector<std::string>& args)
   }
 #endif
   cl.AddValue("--maps", "LIST",
-    "Bricks, Stone, HemisphereTorus, Panels, Holes or depth\nimages (0 = top), each "
+    "Bricks, Stone, HemisphereTorus, Panels, Holes or depth images (0 = top), each "
     "NAME[:RELIEF_TEXELS]",
     defaultMaps);
   cl.AddValue("--size", "N", "photograph size for the procedural maps", "128");
   cl.AddValue("--relief", "TEXELS", "depth of depth 1 in texels, unless given per map", "8");
   cl.AddValue("--samples", "N", "path samples per pixel", "32");
   cl.AddValue("--layers", "N",
-    "scale layers of the model (feature: from the ratio's\nfeature size; average: every count "
-    "averaged; auto: one\ncount from the octave energies)",
+    "scale layers of the model (feature: from the ratio's feature size; average: every count "
+    "averaged; auto: one count from the octave energies)",
     "feature");
   cl.AddValue("--model", "NAME",
-    "ratio: layers of the diffuse/flash ratio, each count\nweighted by its agreement with it; "
-    "shading: the previous\nmodel, layers of the shading, equal weights",
+    "ratio: layers of the diffuse/flash ratio, each count weighted by its agreement with it; "
+    "shading: the previous model, layers of the shading, equal weights",
     "ratio");
   cl.AddValue("--sweep", "LIST",
-    "also run the model with each of these fixed layer counts\n(e.g. 1,2,3,4,5,6,7,8,9): the "
+    "also run the model with each of these fixed layer counts (e.g. 1,2,3,4,5,6,7,8,9): the "
     "summary names the best");
   cl.AddFlag("--height", "depth images are height maps (white = high): depth = 1 - value");
   cl.AddValue("--plot", "FILE", "correlation per layer count and map as PNG (needs --sweep)");
@@ -411,7 +411,7 @@ int RunHallucinationBenchmark(const std::vector<std::string>& args)
   cl.AddValue("--photos", "DIR", "also write each map's photographs and true depth (.exr) there");
   cl.AddValue("--from-photos", "DIR",
     "read each map's photographs and true depth from DIR (as\n--photos writes them) instead of "
-    "rendering; no albedo\nerror, no ideal-flash row");
+    "rendering; no albedo error, no ideal-flash row");
   int exitCode = 0;
   if (!cl.ParseArguments(args, exitCode))
   {
