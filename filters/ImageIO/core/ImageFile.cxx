@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <optional>
@@ -106,8 +107,55 @@ ImageSampleType SampleType(const OIIO::TypeDesc& format)
 ImageFileInfo CheckSpec(
   const std::string& path, const OIIO::ImageSpec& spec, std::int64_t memoryBudget)
 {
-  return CheckImageHeader(path, spec.width, spec.height, spec.depth, spec.nchannels,
-    SampleType(spec.format), memoryBudget);
+  int orientation = spec.get_int_attribute("Orientation", 1);
+  orientation = orientation >= 1 && orientation <= 8 ? orientation : 1;
+  const bool turned = orientation >= 5; // a quarter turn: shown width = stored height
+  ImageFileInfo info =
+    CheckImageHeader(path, turned ? spec.height : spec.width, turned ? spec.width : spec.height,
+      spec.depth, spec.nchannels, SampleType(spec.format), memoryBudget);
+  info.Orientation = orientation;
+  return info;
+}
+
+/// Where the pixel shown at (x, y) (top-left origin, the shown image `width` x `height`) is
+/// stored in a file of orientation `orientation` (EXIF 2.3 Orientation, TIFF 6.0 tag 274).
+void StoredPixel(int orientation, int x, int y, int width, int height, int& sx, int& sy)
+{
+  switch (orientation)
+  {
+    case 2: // mirrored left-right
+      sx = width - 1 - x;
+      sy = y;
+      break;
+    case 3: // turned 180 degrees
+      sx = width - 1 - x;
+      sy = height - 1 - y;
+      break;
+    case 4: // mirrored top-bottom
+      sx = x;
+      sy = height - 1 - y;
+      break;
+    case 5: // transposed
+      sx = y;
+      sy = x;
+      break;
+    case 6: // shown turned 90 clockwise
+      sx = y;
+      sy = width - 1 - x;
+      break;
+    case 7: // transversed
+      sx = height - 1 - y;
+      sy = width - 1 - x;
+      break;
+    case 8: // shown turned 90 anticlockwise
+      sx = height - 1 - y;
+      sy = x;
+      break;
+    default:
+      sx = x;
+      sy = y;
+      break;
+  }
 }
 
 /// Little-endian 32-bit integer at `bytes`.
@@ -484,7 +532,7 @@ bool ReadImageFilePixels(const std::string& path, const ImageFileInfo& info, voi
   {
     const ImageFileInfo now = CheckSpec(path, in->spec(), 0);
     changed = now.Width != info.Width || now.Height != info.Height ||
-      now.Channels != info.Channels || now.Type != info.Type;
+      now.Orientation != info.Orientation || now.Channels != info.Channels || now.Type != info.Type;
   }
   catch (const ImageFileError&)
   {
@@ -502,17 +550,39 @@ bool ReadImageFilePixels(const std::string& path, const ImageFileInfo& info, voi
     : info.Type == ImageSampleType::Int32                           ? OIIO::TypeDesc::INT32
                                                                     : OIIO::TypeDesc::FLOAT;
   // File rows are top first, VTK rows bottom first: start at the last row and walk backwards
-  // with a negative scanline stride.
-  const OIIO::stride_t rowBytes = static_cast<OIIO::stride_t>(info.Width) * info.Channels *
-    static_cast<OIIO::stride_t>(info.SampleSize());
-  unsigned char* lastRow =
-    static_cast<unsigned char*>(pixels) + static_cast<std::size_t>(rowBytes) * (info.Height - 1);
+  // with a negative scanline stride. A turned or mirrored file (Orientation) is read as stored,
+  // top first, and then placed as shown.
+  const std::size_t pixelBytes = static_cast<std::size_t>(info.Channels) * info.SampleSize();
+  const bool turned = info.Orientation >= 5;
+  const int storedWidth = turned ? info.Height : info.Width;
+  std::vector<unsigned char> stored(info.Orientation != 1 ? info.ByteSize() : 0);
+  const OIIO::stride_t rowBytes =
+    static_cast<OIIO::stride_t>(storedWidth) * static_cast<OIIO::stride_t>(pixelBytes);
+  unsigned char* firstRow = info.Orientation != 1
+    ? stored.data()
+    : static_cast<unsigned char*>(pixels) + static_cast<std::size_t>(rowBytes) * (info.Height - 1);
   bool stopped = false;
   const std::function<bool(float)> watch = [&](float portion)
   { return stopped = progress && progress(portion); };
-  const bool ok =
-    in->read_image(0, 0, 0, info.Channels, format, lastRow, OIIO::AutoStride, -rowBytes,
-      OIIO::AutoStride, &ProgressTrampoline, const_cast<std::function<bool(float)>*>(&watch));
+  const bool ok = in->read_image(0, 0, 0, info.Channels, format, firstRow, OIIO::AutoStride,
+    info.Orientation != 1 ? rowBytes : -rowBytes, OIIO::AutoStride, &ProgressTrampoline,
+    const_cast<std::function<bool(float)>*>(&watch));
+  if (ok && info.Orientation != 1)
+  {
+    unsigned char* out = static_cast<unsigned char*>(pixels);
+    for (int y = 0; y < info.Height; ++y) // shown rows, top first
+    {
+      unsigned char* row =
+        out + static_cast<std::size_t>(info.Height - 1 - y) * info.Width * pixelBytes;
+      for (int x = 0; x < info.Width; ++x)
+      {
+        int sx = 0, sy = 0;
+        StoredPixel(info.Orientation, x, y, info.Width, info.Height, sx, sy);
+        std::memcpy(row + static_cast<std::size_t>(x) * pixelBytes,
+          &stored[(static_cast<std::size_t>(sy) * storedWidth + sx) * pixelBytes], pixelBytes);
+      }
+    }
+  }
   const std::string decoderMessage = in->geterror();
   const std::string oiioError = OneLineMessage(decoderMessage);
   Close(*in);

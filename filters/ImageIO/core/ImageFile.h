@@ -75,6 +75,10 @@ struct MESOLIGHTIMAGEIO_EXPORT ImageFileInfo
   int Channels = 0;     // channels read: min(FileChannels, 4)
   ImageSampleType Type = ImageSampleType::Float;
   std::string FormatName; // OpenImageIO's name: "png", "openexr", ...
+  /** The file's EXIF/TIFF orientation (1-8; 1: stored as shown). Width and Height are the image
+   *  as shown (swapped from the stored ones for 5-8), and the pixels are read turned that way,
+   *  as every viewer shows a photograph taken with the camera turned. */
+  int Orientation = 1;
   /** The value a GeoTIFF names for pixels without data (GDAL_NODATA, GeoTiffTags.h). */
   bool HasNoDataValue = false;
   double NoDataValue = 0.0;

@@ -226,6 +226,73 @@ TEST(ImageFile, AtMostFourChannelsAreRead)
   EXPECT_EQ(pixels[3], 21.f);
 }
 
+// A photograph taken with the camera turned is stored sideways with an Orientation tag (EXIF 2.3
+// tag 274, TIFF 6.0) that every viewer applies; it is read as shown. The reference is the EXIF
+// table itself: the side of the shown image the stored 0th row and 0th column lie on. (OpenImageIO
+// 2.4's ImageBufAlgo::reorient swaps 5 and 7 against that table, and against Pillow's
+// exif_transpose: it cannot be the reference.) A reader that ignores the tag fails 2-8.
+TEST(ImageFile, OrientedFilesAreReadAsShown)
+{
+  enum Side
+  {
+    Top,
+    Bottom,
+    Left,
+    Right
+  };
+  // Per orientation 1-8: where the 0th row is, where the 0th column is.
+  const Side rowSide[9] = { Top, Top, Top, Bottom, Bottom, Left, Right, Right, Left };
+  const Side columnSide[9] = { Left, Left, Right, Right, Left, Top, Top, Bottom, Bottom };
+  const int storedWidth = 3, storedHeight = 2;
+  std::vector<float> values(storedWidth * storedHeight);
+  for (std::size_t i = 0; i < values.size(); ++i)
+  {
+    values[i] = static_cast<float>(i + 1);
+  }
+  const fs::path dir = mesolight_test::TestDirectory();
+  for (int orientation = 1; orientation <= 8; ++orientation)
+  {
+    const fs::path file = dir / ("oriented-" + std::to_string(orientation) + ".tif");
+    auto out = OIIO::ImageOutput::create(file.string());
+    ASSERT_TRUE(out);
+    OIIO::ImageSpec spec(storedWidth, storedHeight, 1, OIIO::TypeDesc::FLOAT);
+    spec.attribute("Orientation", orientation);
+    ASSERT_TRUE(out->open(file.string(), spec) &&
+      out->write_image(OIIO::TypeDesc::FLOAT, values.data()) && out->close());
+
+    ImageFileInfo info;
+    std::string message;
+    ASSERT_EQ(Info(file, info, message), Accepted) << message;
+    EXPECT_EQ(info.Orientation, orientation);
+    const bool sideways = rowSide[orientation] == Left || rowSide[orientation] == Right;
+    ASSERT_EQ(info.Width, sideways ? storedHeight : storedWidth) << orientation;
+    ASSERT_EQ(info.Height, sideways ? storedWidth : storedHeight) << orientation;
+    std::vector<float> pixels(values.size());
+    ASSERT_EQ(Pixels(file, info, pixels.data(), message), Accepted) << message;
+    for (int sy = 0; sy < storedHeight; ++sy)
+    {
+      for (int sx = 0; sx < storedWidth; ++sx)
+      {
+        // Shown position (top-left origin) of stored pixel (sx, sy).
+        int x = 0, y = 0;
+        if (!sideways)
+        {
+          y = rowSide[orientation] == Top ? sy : info.Height - 1 - sy;
+          x = columnSide[orientation] == Left ? sx : info.Width - 1 - sx;
+        }
+        else
+        {
+          x = rowSide[orientation] == Left ? sy : info.Width - 1 - sy;
+          y = columnSide[orientation] == Top ? sx : info.Height - 1 - sx;
+        }
+        EXPECT_EQ(pixels[static_cast<std::size_t>(info.Height - 1 - y) * info.Width + x],
+          values[static_cast<std::size_t>(sy) * storedWidth + sx])
+          << "orientation " << orientation << ", stored pixel (" << sx << ", " << sy << ")";
+      }
+    }
+  }
+}
+
 TEST(ImageFile, AbsurdDimensionsAreRefusedBeforeAllocating)
 {
   // A PFM header claiming 100000 x 100000 RGB floats (120 GB) and no pixels: 20 bytes.
