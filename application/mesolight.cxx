@@ -16,6 +16,7 @@
 #include "LightSetBenchmark.h"
 #include "LightsCommand.h"
 #include "ObjectBenchmark.h"
+#include "ProgressLine.h"
 #include "ReliefAliasingBenchmark.h"
 #include "ReliefFieldCostBenchmark.h"
 #include "ReliefSweep.h"
@@ -65,6 +66,7 @@ public:
     {
       return;
     }
+    mesolight::EndProgressLine();
     std::cerr << "mesolight: " << mesolight::NameOwnOptions(mesolight::CleanVTKMessage(message))
               << "\n";
     // VTK's X window aborts (SIGABRT, a core) right after this message when there is no X

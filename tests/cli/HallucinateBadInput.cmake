@@ -46,12 +46,23 @@ string(FIND "${last_stderr}" "use --layers 6 or fewer" at)
 if (at EQUAL -1)
   message(FATAL_ERROR "the layers refusal names no limit: ${last_stderr}")
 endif ()
+# A grey photograph beside a colour one (one channel, or R = G = B): the albedo's colours would be
+# wrong (blue 0.14 instead of 0.22), or the refusal blamed swapped photographs. Refused, naming it.
+make(luminance "${d}" --chsum:weight=0.2126,0.7152,0.0722)
+make(greyrgb "${WORK}/luminance.exr" --ch 0,0,0)
+foreach (_grey IN ITEMS luminance greyrgb)
+  cli_expect_error(1 "diffuse photograph is grey and the flash one is in colour"
+    hallucinate "${WORK}/${_grey}.exr" "${f}" --albedo "${WORK}/${_grey}-albedo.exr")
+endforeach ()
+cli_expect_error(1 "flash photograph is grey and the diffuse one is in colour"
+  hallucinate "${d}" "${WORK}/greyrgb.exr" --albedo "${WORK}/greyflash-albedo.exr")
 # A uniformly lit, uniform surface has no depth to find: written, but said so.
 make(grey --pattern constant:color=0.3,0.3,0.3 16x16 3)
 make(greyflash --pattern constant:color=0.8,0.8,0.8 16x16 3)
 cli_expect_error(0 "warning: the depth is flat"
   hallucinate "${WORK}/grey.exr" "${WORK}/greyflash.exr" --depth "${WORK}/grey-depth.exr")
-foreach (file IN ITEMS negative-depth dot-depth flat albedo layers)
+foreach (file IN ITEMS negative-depth dot-depth flat albedo layers luminance-albedo greyrgb-albedo
+    greyflash-albedo)
   if (EXISTS "${WORK}/${file}.exr")
     message(FATAL_ERROR "a refused run wrote ${file}.exr")
   endif ()

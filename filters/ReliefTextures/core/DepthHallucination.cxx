@@ -562,6 +562,33 @@ HallucinationResult HallucinateDepth(const RgbImage& diffuse, const RgbImage& fl
     }
   }
 
+  // The albedo (I_f - I_d) / I_c is per channel: a grey photograph (R = G = B everywhere, e.g. one
+  // channel read as grey) beside a colour one gives wrong colours, or the darker-flash check
+  // below blames swapped photographs. (An all-black frame is left to that check.)
+  const auto grey = [n](const RgbImage& image)
+  {
+    bool lit = false;
+    for (std::size_t p = 0; p < n; ++p)
+    {
+      const float* rgb = &image.Rgb[3 * p];
+      if (rgb[0] != rgb[1] || rgb[1] != rgb[2])
+      {
+        return false;
+      }
+      lit = lit || rgb[0] != 0.0f;
+    }
+    return lit;
+  };
+  const bool diffuseGrey = grey(diffuse);
+  if (diffuseGrey != grey(flash))
+  {
+    Fail(HallucinationStatus::GreyAndColour,
+      std::string("The ") + (diffuseGrey ? "diffuse" : "flash") + " photograph is grey and the " +
+        (diffuseGrey ? "flash" : "diffuse") +
+        " one is in colour: the albedo, flash minus diffuse per channel, would have wrong "
+        "colours. Give both in colour (or both grey), from the same camera settings.");
+  }
+
   // The flash must add light: on average (else it did not fire, or the images are swapped), and
   // nearly everywhere (pixels darker in the flash image beyond noise are counted).
   double flashOnly = 0.0, diffuseMean = 0.0;

@@ -131,7 +131,8 @@ enum class HallucinationStatus
   BadSettings,
   TooSmall,      ///< fewer than MinimumSide pixels across: no surround to compare with
   NegativeLight, ///< a photograph negative in many pixels (not linear light)
-  DarkCard       ///< a calibration card dark in part of the view (albedo would blow up)
+  DarkCard,      ///< a calibration card dark in part of the view (albedo would blow up)
+  GreyAndColour  ///< one photograph grey (R = G = B), the other in colour: a wrong albedo
 };
 
 /// The smallest photograph side HallucinateDepth accepts: the first layer compares a pixel with

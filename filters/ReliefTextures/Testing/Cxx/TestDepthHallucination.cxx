@@ -397,6 +397,19 @@ TEST(DepthHallucination, BadInputIsReported)
     EXPECT_EQ(e.GetReason(), HallucinationStatus::BadSettings);
     EXPECT_NE(std::string(e.what()).find("both 0"), std::string::npos) << e.what();
   }
+  // A grey photograph (one channel read as grey) beside a colour one: refused naming it; it gave
+  // a wrong albedo, or "were the two swapped?". Both grey (this pair) or both colour pass.
+  const Pair coloured =
+    Photograph([](int, int) { return 0.5f; }, [](int, int, int c) { return c == 2 ? 0.2f : 0.6f; });
+  RgbImage greyDiffuse = coloured.Diffuse;
+  for (std::size_t p = 0; p < greyDiffuse.Rgb.size(); p += 3)
+  {
+    std::fill(&greyDiffuse.Rgb[p + 1], &greyDiffuse.Rgb[p + 3], greyDiffuse.Rgb[p]); // R only
+  }
+  result = refusal(greyDiffuse, coloured.Flash, nullptr);
+  EXPECT_EQ(result.Reason, HallucinationStatus::GreyAndColour);
+  EXPECT_NE(result.Message.find("diffuse photograph is grey"), std::string::npos) << result.Message;
+  EXPECT_TRUE(refusal(coloured.Diffuse, coloured.Flash, nullptr).Message.empty());
   // A calibration card black in half the view: the albedo there was divided by 1e-4 of the
   // card (up to thousands); now refused, and a card dark in a few pixels is floored at 2% of
   // its bright level (albedo at most 50 x the flash light).
