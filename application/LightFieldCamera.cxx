@@ -91,10 +91,13 @@ bool ReadCameraOptions(const CommandLine& cl, const glm::vec3& worldLower,
     }
     else
     {
+      // From outside the bounds along +z, or along +y when the view up is mostly z (a scene
+      // with z up, --view-up 0,0,1: looking along it was refused as parallel).
       const glm::vec3 centre = 0.5f * (worldLower + worldUpper);
       const float radius = 0.5f * glm::length(worldUpper - worldLower);
+      const bool zUp = std::abs(up[2]) > std::max(std::abs(up[0]), std::abs(up[1]));
       focal = centre;
-      eye = centre - glm::vec3(0.0f, 0.0f, 2.2f * radius);
+      eye = centre - 2.2f * radius * (zUp ? glm::vec3(0, 1, 0) : glm::vec3(0, 0, 1));
     }
   }
   const glm::vec3 forward = focal - eye;
@@ -136,10 +139,13 @@ void WarnIfAllBlack(
     return;
   }
   std::cerr << command << ": warning: every pixel is black. "
-            << (cl.Has("--camera") ? "The camera may face away from the lit scene"
-                                   : "The default camera looks along +z from outside the "
-                                     "scene's bounds: in a closed room it sees the walls' backs")
-            << "; place it inside with --camera EYE_X,EYE_Y,EYE_Z,TARGET_X,TARGET_Y,TARGET_Z.\n";
+            << (cl.Has("--camera")
+                   ? "The camera may face away from the lit scene"
+                   : "The default camera looks from outside the scene's bounds along +z (along "
+                     "+y with --view-up 0,0,1): in a closed room it sees the walls' backs, and a "
+                     "scene with z up is seen from below (give --view-up 0,0,1)")
+            << "; place it with --camera EYE_X,EYE_Y,EYE_Z,TARGET_X,TARGET_Y,TARGET_Z[,UP_X,UP_Y,"
+               "UP_Z].\n";
 }
 
 } // namespace mesolight

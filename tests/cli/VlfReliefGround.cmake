@@ -90,3 +90,14 @@ cli_expect_error(2 "--relief-normalize" vlf render "${WORK}/town.vlf" --mode pro
   --out "${WORK}/never.png")
 cli_run(TRUE vlf render "${WORK}/town.vlf" --mode progressive ${_dem} --relief-normalize
   --relief-height --out "${WORK}/dem.png")
+
+# The default camera of a scene with z up: with --view-up 0,0,1 it looks along +y and sees the
+# town (it was refused: the view up parallel to the view direction); without it the black image's
+# warning names the option.
+cli_expect(0 "wrote" vlf render "${WORK}/town.vlf" --size 32x32 --view-up 0,0,1
+  --out "${WORK}/default-z-up.png")
+if (last_stderr MATCHES "every pixel is black")
+  message(FATAL_ERROR "the default camera with --view-up 0,0,1 sees nothing: ${last_stderr}")
+endif ()
+cli_expect_error(0 "give --view-up 0,0,1" vlf render "${WORK}/town.vlf" --size 32x32
+  --out "${WORK}/default.png")
