@@ -96,7 +96,8 @@ void vtkLightFieldCameraView::CheckInsideWall(
   if (warn)
   {
     vtkWarningWithObjectMacro(this->Owner,
-      << "the camera sees the back of the light field's surfaces (is it inside a wall?): "
+      << "the camera sees the back of the light field's surfaces (is it inside a wall, or "
+         "outside a closed room?): "
          "the field is one-sided, so they show black");
   }
 }
