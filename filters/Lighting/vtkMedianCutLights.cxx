@@ -194,6 +194,14 @@ int vtkMedianCutLights::Execute(
       << n << "); it is " << this->NumberOfLights << ".");
     return 0;
   }
+  if (scalars->GetDataType() == VTK_UNSIGNED_CHAR)
+  {
+    // Median cut splits the map by energy: an 8-bit map has the sun clipped to the sky's white
+    // and its sRGB curve read as linear light, so the lights lose the light's real balance.
+    vtkWarningMacro("The environment map is 8-bit: its values are usually sRGB-encoded and "
+                    "clipped at white (the sun no brighter than a cloud), and they are read as "
+                    "linear radiance. Use a high-dynamic-range map (.exr, .hdr) for real light.");
+  }
   if (w != 2 * h)
   {
     vtkWarningMacro("The environment map is " << w << " x " << h

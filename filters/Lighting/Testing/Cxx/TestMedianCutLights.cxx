@@ -323,6 +323,33 @@ TEST(MedianCutLights, BadInput)
     4 * mesolight::Pi<double>, 1e-4);
 }
 
+// An 8-bit map (a JPEG or PNG panorama) is sRGB-encoded and clipped: its lights come with a
+// warning that says so; a float map of the same values gets none.
+TEST(MedianCutLights, EightBitMapsAreWarnedAbout)
+{
+  const auto warned = [](vtkImageData* image)
+  {
+    vtkNew<vtkMedianCutLights> lights;
+    vtkNew<MessageCapture> capture;
+    capture->Watch(lights);
+    lights->SetInputData(image);
+    lights->SetNumberOfLights(4);
+    lights->Update();
+    EXPECT_EQ(lights->GetOutput()->GetNumberOfPoints(), 4);
+    return capture->HasWarning("The environment map is 8-bit");
+  };
+  auto bytes = vtkSmartPointer<vtkImageData>::New();
+  bytes->SetDimensions(16, 8, 1);
+  bytes->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+  vtkDataArray* values = bytes->GetPointData()->GetScalars();
+  for (vtkIdType k = 0; k < values->GetNumberOfValues(); ++k)
+  {
+    values->SetVariantValue(k, static_cast<unsigned char>(40 + k % 200));
+  }
+  EXPECT_TRUE(warned(bytes));
+  EXPECT_FALSE(warned(Image(16, 8, 1.0f)));
+}
+
 TEST(MedianCutLights, Abort)
 {
   vtkNew<vtkProceduralEnvironmentSource> sky;
