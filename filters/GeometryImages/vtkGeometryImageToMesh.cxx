@@ -199,6 +199,13 @@ int vtkGeometryImageToMesh::RequestData(
     vtkErrorMacro(<< "Cannot mesh the geometry image: " << error << ".");
     return 0;
   }
+  if (input->GetPointData()->GetScalars()->GetDataType() == VTK_UNSIGNED_CHAR)
+  {
+    // Positions in 256 steps a side are rarely meant: an 8-bit RGB image is a colour picture.
+    vtkWarningMacro("The geometry image is 8-bit: its RGB values are read as XYZ positions in "
+                    "256 steps. Is it a colour picture? A geometry image stores positions, "
+                    "usually as float (.exr, .tif).");
+  }
   mesolight::GeometryImageMesh mesh;
   const mesolight::ProgressCallback progress = mesolight::AlgorithmProgress(this);
   try

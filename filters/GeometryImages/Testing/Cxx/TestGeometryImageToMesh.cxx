@@ -192,6 +192,34 @@ vtkSmartPointer<vtkImageData> GeometryImageOf(F&& f)
 
 // Geometry images whose triangles all have zero (or overflowing) area in single precision gave
 // "N triangles" and a background-only render with exit 0: now a clear error.
+// An 8-bit RGB image (a colour picture given as a geometry image) is meshed, with a warning that
+// its colours are read as positions; the float geometry image of the source gets none.
+TEST(GeometryImageToMesh, EightBitImagesAreWarnedAbout)
+{
+  vtkNew<vtkImageData> picture;
+  picture->SetDimensions(8, 8, 1);
+  picture->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+  vtkDataArray* rgb = picture->GetPointData()->GetScalars();
+  for (vtkIdType p = 0; p < 64; ++p)
+  {
+    rgb->SetTuple3(p, 10 + 20 * (p % 8), 10 + 20 * (p / 8), 100);
+  }
+  vtkNew<MessageCapture> messages;
+  vtkNew<vtkGeometryImageToMesh> mesh;
+  messages->Watch(mesh);
+  mesh->SetInputData(picture);
+  mesh->SetStride(1);
+  mesh->Update();
+  EXPECT_TRUE(messages->HasWarning("The geometry image is 8-bit")) << messages->AllWarnings();
+  EXPECT_GT(mesh->GetOutput()->GetNumberOfPolys(), 0);
+  messages->Warnings.clear();
+  vtkNew<vtkGeometryImageSource> source;
+  source->SetResolution(16, 16);
+  mesh->SetInputConnection(source->GetOutputPort());
+  mesh->Update();
+  EXPECT_FALSE(messages->HasWarning("8-bit")) << messages->AllWarnings();
+}
+
 TEST(GeometryImageToMesh, DegenerateGeometryImagesAreRefused)
 {
   EXPECT_TRUE(RefusedWith(GeometryImageOf([](int, int, double* p) { p[0] = p[1] = p[2] = 0.5; }),
