@@ -120,11 +120,14 @@ bool ReadRgb(const std::string& file, RgbImage& out)
   return true;
 }
 
+// Depth and albedo are float: a .png or .tif keeps 16 bits of them (8 bits gave 256 depth
+// levels without a word); .exr keeps them as they are.
 bool WriteImage(vtkImageData* image, const std::string& file)
 {
   vtkNew<vtkOIIOImageWriter> writer;
   writer->SetInputData(image);
   writer->SetFileName(file.c_str());
+  writer->SetBitDepth(16);
   return writer->Write() != 0 && writer->GetErrorCode() == 0;
 }
 } // namespace

@@ -31,6 +31,12 @@ cli_expect(0 "% 100%" hallucinate "${d}" "${f}" --depth "${WORK}/good.exr")
 if (NOT EXISTS "${WORK}/good.exr" OR last_stderr MATCHES "warning")
   message(FATAL_ERROR "good photographs: ${last_stdout} ${last_stderr}")
 endif ()
+# A depth written as PNG keeps 16 bits (it was 8: 256 levels, without a word).
+cli_expect(0 "wrote" hallucinate "${d}" "${f}" --depth "${WORK}/depth.png")
+execute_process(COMMAND "${OIIOTOOL}" --info "${WORK}/depth.png" OUTPUT_VARIABLE _info)
+if (NOT _info MATCHES "uint16")
+  message(FATAL_ERROR "the PNG depth is not 16-bit: ${_info}")
+endif ()
 cli_expect_error(1 "diffuse photograph is negative in 100% of the pixels"
   hallucinate "${WORK}/negative.exr" "${f}" --depth "${WORK}/negative-depth.exr")
 cli_expect_error(1 "at least 4x4 pixels"
