@@ -784,9 +784,18 @@ int RunHallucinationBenchmark(const std::vector<std::string>& args)
               << std::setw(8) << s.CorrelationLength << std::setprecision(3) << std::setw(9)
               << s.Average << std::setw(10) << s.Previous << std::setw(8) << s.Auto << std::setw(5)
               << s.AutoLayers << std::setprecision(1) << std::setw(9) << s.Feature
-              << std::setprecision(3) << std::setw(9) << s.Five << std::setw(8)
-              << (s.BestLayers ? s.Best : 0.0) << std::setw(5) << s.BestLayers << std::setw(12)
-              << s.Brightness << std::setw(8) << s.Ratio << "  " << (beats ? "yes" : "NO") << "\n";
+              << std::setprecision(3) << std::setw(9) << s.Five;
+    // Without --sweep there is no best fixed count: "-", not "0.000 0".
+    if (s.BestLayers)
+    {
+      std::cout << std::setw(8) << s.Best << std::setw(5) << s.BestLayers;
+    }
+    else
+    {
+      std::cout << std::setw(8) << "-" << std::setw(5) << "-";
+    }
+    std::cout << std::setw(12) << s.Brightness << std::setw(8) << s.Ratio << "  "
+              << (beats ? "yes" : "NO") << "\n";
   }
   std::cout << std::setprecision(3) << "mean correlation: default " << meanDefault
             << " (beats both baselines on " << beaten << " of " << summaries.size()
