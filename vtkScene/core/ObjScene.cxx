@@ -582,7 +582,16 @@ ObjSceneRead ParseObjScene(std::istream& obj, const std::string& name, const std
     }
     objTriangles.push_back(objTriangle);
   }
-  read.NonManifoldEdges = CountNonManifoldEdges(objTriangles);
+  // Over the triangles that are kept: a degenerate one on an edge is not the user's fold.
+  std::vector<glm::uvec3> keptTriangles;
+  for (std::size_t t = 0; t < objTriangles.size(); ++t)
+  {
+    if (!options.RemoveDegenerateTriangles || !IsDegenerateTriangle(scene, t))
+    {
+      keptTriangles.push_back(objTriangles[t]);
+    }
+  }
+  read.NonManifoldEdges = CountNonManifoldEdges(keptTriangles);
   if (read.NonManifoldEdges > 0)
   {
     read.Warnings.push_back(name + ": " + std::to_string(read.NonManifoldEdges) +

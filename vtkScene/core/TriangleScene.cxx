@@ -191,11 +191,13 @@ bool IsFinite(const glm::vec3& v)
   return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
 
+} // namespace
+
 // Whether float coordinates cannot tell the triangle from a segment or a point: its height over
 // its longest edge is within two roundings of its largest coordinate. The test is per triangle (in
 // double, so huge coordinates do not overflow), not relative to the scene's size: a ground plane a
 // thousand kilometres wide must not erase the room standing on it.
-bool IsDegenerate(const TriangleScene& scene, std::size_t triangle)
+bool IsDegenerateTriangle(const TriangleScene& scene, std::size_t triangle)
 {
   const glm::dvec3 a(scene.Vertex(triangle, 0)), b(scene.Vertex(triangle, 1)),
     c(scene.Vertex(triangle, 2));
@@ -207,7 +209,6 @@ bool IsDegenerate(const TriangleScene& scene, std::size_t triangle)
     std::max({ magnitude.x, magnitude.y, magnitude.z, longest });
   return !(twiceArea > longest * resolution); // height <= resolution; also catches NaN
 }
-} // namespace
 
 SceneCheck CheckScene(const TriangleScene& scene, bool requireEmitter)
 {
@@ -253,7 +254,7 @@ SceneCheck CheckScene(const TriangleScene& scene, bool requireEmitter)
   bool emitter = false;
   for (std::size_t t = 0; t < scene.Triangles.size(); ++t)
   {
-    if (IsDegenerate(scene, t))
+    if (IsDegenerateTriangle(scene, t))
     {
       ++check.DegenerateTriangles;
       continue;
@@ -366,7 +367,7 @@ std::size_t RemoveDegenerateTriangles(TriangleScene& scene)
   std::size_t kept = 0;
   for (std::size_t t = 0; t < scene.Triangles.size(); ++t)
   {
-    if (!IsDegenerate(scene, t))
+    if (!IsDegenerateTriangle(scene, t))
     {
       scene.Triangles[kept] = scene.Triangles[t];
       scene.MaterialIds[kept] = scene.MaterialIds[t];

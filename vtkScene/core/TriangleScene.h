@@ -124,6 +124,9 @@ SceneCheck CheckScene(const TriangleScene& scene, bool requireEmitter);
 float FarGeometryRatio(const TriangleScene& scene);
 constexpr float FarGeometryWarningRatio = 2.5f;
 
+// Whether triangle `triangle` is degenerate (see CheckScene).
+bool IsDegenerateTriangle(const TriangleScene& scene, std::size_t triangle);
+
 // Drops degenerate triangles (see CheckScene); returns how many were dropped.
 std::size_t RemoveDegenerateTriangles(TriangleScene& scene);
 
