@@ -257,8 +257,8 @@ TEST(ObjScene, DegenerateAndNonManifoldTriangles)
     TempPath("flat.obj") + ": every triangle of the scene is degenerate (zero area)");
   // Two triangles on edge 1-2 and a zero-area one along it: the degenerate triangle is dropped,
   // so the edge is not reported as non-manifold (it was, blaming the user's file for a fold).
-  const ObjSceneRead sliver = ReadObjScene(WriteText("sliver.obj",
-    "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 -1 0\nv 0.5 0 0\nf 1 2 3\nf 2 1 4\nf 1 5 2\n"));
+  const ObjSceneRead sliver = ReadObjScene(WriteText(
+    "sliver.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 -1 0\nv 0.5 0 0\nf 1 2 3\nf 2 1 4\nf 1 5 2\n"));
   EXPECT_EQ(sliver.DegenerateTriangles, 1u);
   EXPECT_EQ(sliver.NonManifoldEdges, 0u);
   // A closed manifold (tetrahedron) has none.
