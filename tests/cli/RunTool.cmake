@@ -105,10 +105,12 @@ endfunction ()
 #   filled.tif        the same with the holes at the lowest ground, 16 m;
 #   holes-tagged.tif  holes.tif naming -9999 as its no-data value (GDAL_NODATA), as GDAL writes;
 #   metres-int16.tif  metres.tif as signed 16-bit metres.
+# cli_oiiotool(<argument>...): runs OIIOTOOL; a failure fails the test with oiiotool's output.
 function (cli_oiiotool)
-  execute_process(COMMAND "${OIIOTOOL}" ${ARGN} RESULT_VARIABLE rc ERROR_VARIABLE err)
+  execute_process(COMMAND "${OIIOTOOL}" ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out
+    ERROR_VARIABLE err)
   if (NOT rc EQUAL 0)
-    message(FATAL_ERROR "oiiotool ${ARGN}: ${err}")
+    message(FATAL_ERROR "oiiotool ${ARGN}: ${out}${err}")
   endif ()
 endfunction ()
 function (cli_elevation_maps)

@@ -10,14 +10,6 @@
 include("${CMAKE_CURRENT_LIST_DIR}/RunTool.cmake")
 cli_fresh_work()
 
-function (oiio)
-  execute_process(COMMAND "${OIIOTOOL}" ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out
-    ERROR_VARIABLE err)
-  if (NOT rc EQUAL 0)
-    message(FATAL_ERROR "oiiotool ${ARGN}: ${out}${err}")
-  endif ()
-endfunction ()
-
 set(_obj "mtllib town.mtl\n")
 set(_faces "")
 set(_v 0)
@@ -69,7 +61,7 @@ exr_stat_milli("${WORK}/cpu.exr" Avg _reference)
 foreach (_probes IN ITEMS 0 8)
   cli_run(TRUE vlf render "${WORK}/town.vlf" --mode progressive ${_view} --relief-probes ${_probes}
     --out "${WORK}/gpu-${_probes}.png" --exr "${WORK}/gpu-${_probes}.exr")
-  oiio("${WORK}/gpu-${_probes}.exr" "${WORK}/cpu.exr" --absdiff -o "${WORK}/diff-${_probes}.exr")
+  cli_oiiotool("${WORK}/gpu-${_probes}.exr" "${WORK}/cpu.exr" --absdiff -o "${WORK}/diff-${_probes}.exr")
   exr_stat_milli("${WORK}/diff-${_probes}.exr" Avg _diff_${_probes})
   math(EXPR _relative_${_probes} "1000 * ${_diff_${_probes}} / ${_reference}")
   message("--relief-probes ${_probes}: mean |GPU - CPU| ${_relative_${_probes}}/1000 of the "

@@ -23,24 +23,16 @@ file(WRITE "${WORK}/grooves.pgm" "${_grooves}")
 set(_size 96x96)
 set(_relief --relief back=${WORK}/grooves.pgm --relief-depth-scale 0.1)
 
-function (oiio)
-  execute_process(COMMAND "${OIIOTOOL}" ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out
-    ERROR_VARIABLE err)
-  if (NOT rc EQUAL 0)
-    message(FATAL_ERROR "oiiotool ${ARGN}: ${out}${err}")
-  endif ()
-endfunction ()
-
 # Where the relief is: the CPU reference with and without it (exact hits; the grooves change
 # every pixel of the wall), as a 0/1 mask, grown and shrunk by 2 pixels for the edges.
 cli_run(TRUE vlf render "${WORK}/box.vlf" --size ${_size} --out "${WORK}/cpu-flat.png"
   --exr "${WORK}/cpu-flat.exr")
 cli_run(TRUE vlf render "${WORK}/box.vlf" --size ${_size} ${_relief} --out "${WORK}/cpu-relief.png"
   --exr "${WORK}/cpu-relief.exr")
-oiio("${WORK}/cpu-flat.exr" "${WORK}/cpu-relief.exr" --absdiff --maxchan --mulc 1e6
+cli_oiiotool("${WORK}/cpu-flat.exr" "${WORK}/cpu-relief.exr" --absdiff --maxchan --mulc 1e6
   --clamp:min=0:max=1 -o "${WORK}/mask.exr")
-oiio("${WORK}/mask.exr" --dilate 5x5 --mulc -1 --addc 1 -o "${WORK}/outside.exr")
-oiio("${WORK}/mask.exr" --erode 5x5 -o "${WORK}/inside.exr")
+cli_oiiotool("${WORK}/mask.exr" --dilate 5x5 --mulc -1 --addc 1 -o "${WORK}/outside.exr")
+cli_oiiotool("${WORK}/mask.exr" --erode 5x5 -o "${WORK}/inside.exr")
 exr_stat_milli("${WORK}/inside.exr" Avg _inside)
 if (_inside LESS 50)
   message(FATAL_ERROR "the back wall covers ${_inside}/1000 of the CPU image: not the camera the "
@@ -57,7 +49,7 @@ if (PART STREQUAL "walk")
   cli_run(TRUE vlf render "${WORK}/box.vlf" --mode progressive --size ${_size}
     --relief back=${WORK}/grooves-height.pgm --relief-depth-scale 0.1 --relief-height
     --out "${WORK}/as-height.png")
-  oiio("${WORK}/as-depth.png" "${WORK}/as-height.png" --diff)
+  cli_oiiotool("${WORK}/as-depth.png" "${WORK}/as-height.png" --diff)
   # A relief on the lamp (an emitter) keeps its light: with depth 0 the image is the flat one
   # within 5 levels (the relief mapper drew the lamp dark grey, without its emission).
   file(WRITE "${WORK}/zero.pgm" "P2\n2 2\n255\n0 0\n0 0\n")
@@ -65,19 +57,19 @@ if (PART STREQUAL "walk")
     --out "${WORK}/lamp-flat.png")
   cli_run(TRUE vlf render "${WORK}/box.vlf" --mode progressive --size ${_size}
     --relief light=${WORK}/zero.pgm --out "${WORK}/lamp-relief.png")
-  oiio("${WORK}/lamp-flat.png" "${WORK}/lamp-relief.png" --fail 0.02 --warn 0.02 --diff)
+  cli_oiiotool("${WORK}/lamp-flat.png" "${WORK}/lamp-relief.png" --fail 0.02 --warn 0.02 --diff)
   foreach (_mode IN ITEMS geometry raytrace progressive coherent)
     cli_run(TRUE vlf render "${WORK}/box.vlf" --mode ${_mode} --size ${_size}
       --out "${WORK}/${_mode}-flat.png")
     cli_run(TRUE vlf render "${WORK}/box.vlf" --mode ${_mode} --size ${_size} ${_relief}
       --out "${WORK}/${_mode}-relief.png")
     # Per pixel, the largest channel difference in [0, 1].
-    oiio("${WORK}/${_mode}-flat.png" "${WORK}/${_mode}-relief.png" --absdiff --maxchan
+    cli_oiiotool("${WORK}/${_mode}-flat.png" "${WORK}/${_mode}-relief.png" --absdiff --maxchan
       -o "${WORK}/${_mode}-diff.exr")
-    oiio("${WORK}/${_mode}-diff.exr" "${WORK}/outside.exr" --mul -o "${WORK}/${_mode}-out.exr")
+    cli_oiiotool("${WORK}/${_mode}-diff.exr" "${WORK}/outside.exr" --mul -o "${WORK}/${_mode}-out.exr")
     exr_stat_milli("${WORK}/${_mode}-out.exr" Max _outside_max)
     # Changed pixels (more than 1 level) among the relief's.
-    oiio("${WORK}/${_mode}-diff.exr" --subc 0.0045 --mulc 1e6 --clamp:min=0:max=1
+    cli_oiiotool("${WORK}/${_mode}-diff.exr" --subc 0.0045 --mulc 1e6 --clamp:min=0:max=1
       "${WORK}/inside.exr" --mul -o "${WORK}/${_mode}-in.exr")
     exr_stat_milli("${WORK}/${_mode}-in.exr" Avg _changed)
     message("${_mode}: the relief changes ${_changed}/1000 of the image where the relief's core "
@@ -97,13 +89,13 @@ if (PART STREQUAL "walk")
   # The checks can fail: the floor's relief is outside the back wall's mask.
   cli_run(TRUE vlf render "${WORK}/box.vlf" --mode geometry --size ${_size}
     --relief floor=${WORK}/grooves.pgm --out "${WORK}/floor-relief.png")
-  oiio("${WORK}/geometry-flat.png" "${WORK}/floor-relief.png" --absdiff --maxchan
+  cli_oiiotool("${WORK}/geometry-flat.png" "${WORK}/floor-relief.png" --absdiff --maxchan
     "${WORK}/outside.exr" --mul -o "${WORK}/floor-out.exr")
   exr_stat_milli("${WORK}/floor-out.exr" Max _floor_max)
   if (NOT _floor_max GREATER 3)
     message(FATAL_ERROR "a relief on the floor went unnoticed outside the back wall")
   endif ()
-  oiio("${WORK}/geometry-flat.png" "${WORK}/geometry-flat.png" --absdiff --maxchan --subc 0.0045
+  cli_oiiotool("${WORK}/geometry-flat.png" "${WORK}/geometry-flat.png" --absdiff --maxchan --subc 0.0045
     --mulc 1e6 --clamp:min=0:max=1 "${WORK}/inside.exr" --mul -o "${WORK}/same-in.exr")
   exr_stat_milli("${WORK}/same-in.exr" Avg _same)
   if (NOT _same EQUAL 0)
@@ -171,12 +163,12 @@ elseif (PART STREQUAL "match")
   # hits differ by up to a pixel). (x 100: exr_stat_milli's thousandths then resolve 0.1% of the
   # image's mean.)
   foreach (_which IN ITEMS gpu cpu unoccluded)
-    oiio("${WORK}/${_which}-vgrooves.png" --tocolorspace linear --ch 0 --blur 3x3
+    cli_oiiotool("${WORK}/${_which}-vgrooves.png" --tocolorspace linear --ch 0 --blur 3x3
       "${WORK}/inside.exr" --mul --mulc 100 -o "${WORK}/${_which}-in.exr")
   endforeach ()
   exr_stat_milli("${WORK}/cpu-in.exr" Avg _reference)
   foreach (_which IN ITEMS gpu unoccluded)
-    oiio("${WORK}/${_which}-in.exr" "${WORK}/cpu-in.exr" --absdiff -o "${WORK}/${_which}-error.exr")
+    cli_oiiotool("${WORK}/${_which}-in.exr" "${WORK}/cpu-in.exr" --absdiff -o "${WORK}/${_which}-error.exr")
     exr_stat_milli("${WORK}/${_which}-error.exr" Avg _error_${_which})
     message("relief, red, ${_which}: mean |GPU - CPU| ${_error_${_which}}, CPU mean ${_reference} "
       "(1/100000 of the image)")
@@ -208,16 +200,16 @@ elseif (PART STREQUAL "shadow")
       cli_run(TRUE vlf render "${WORK}/box.vlf" --mode ${_mode} --size ${_size} ${_object}
         --shadows ${_shadows} ${_shallow} --out "${WORK}/${_mode}-relief-${_shadows}.png")
       foreach (_which IN ITEMS flat relief)
-        oiio("${WORK}/${_mode}-${_which}-${_shadows}.png" --tocolorspace linear --ch 0 --addc 1e-4
+        cli_oiiotool("${WORK}/${_mode}-${_which}-${_shadows}.png" --tocolorspace linear --ch 0 --addc 1e-4
           -o "${WORK}/${_mode}-${_which}-${_shadows}.exr")
       endforeach ()
     endforeach ()
     foreach (_which IN ITEMS flat relief)
-      oiio("${WORK}/${_mode}-${_which}-field.exr" "${WORK}/${_mode}-${_which}-none.exr" --div
+      cli_oiiotool("${WORK}/${_mode}-${_which}-field.exr" "${WORK}/${_mode}-${_which}-none.exr" --div
         -o "${WORK}/${_mode}-${_which}-share.exr")
     endforeach ()
     # The flat wall's shadow on the relief's wall: 1 where its share is below 0.9.
-    oiio("${WORK}/${_mode}-flat-share.exr" --mulc -1 --addc 0.9 --mulc 1e6 --clamp:min=0:max=1
+    cli_oiiotool("${WORK}/${_mode}-flat-share.exr" --mulc -1 --addc 0.9 --mulc 1e6 --clamp:min=0:max=1
       --erode 3x3 "${WORK}/inside.exr" --mul -o "${WORK}/${_mode}-umbra.exr")
     exr_stat_milli("${WORK}/${_mode}-umbra.exr" Avg _umbra)
     if (_umbra LESS 3)
@@ -226,12 +218,12 @@ elseif (PART STREQUAL "shadow")
     endif ()
     # Mean over the shadow of the share lost, and of |relief - flat| (x 100 before the stats, so
     # that exr_stat_milli's thousandths resolve the small shadow's mean; / _umbra after).
-    oiio("${WORK}/${_mode}-umbra.exr" --mulc 100 -o "${WORK}/${_mode}-umbra100.exr")
+    cli_oiiotool("${WORK}/${_mode}-umbra.exr" --mulc 100 -o "${WORK}/${_mode}-umbra100.exr")
     exr_stat_milli("${WORK}/${_mode}-umbra100.exr" Avg _umbra)
-    oiio("${WORK}/${_mode}-flat-share.exr" --mulc -1 --addc 1 "${WORK}/${_mode}-umbra.exr" --mul
+    cli_oiiotool("${WORK}/${_mode}-flat-share.exr" --mulc -1 --addc 1 "${WORK}/${_mode}-umbra.exr" --mul
       --mulc 100 -o "${WORK}/${_mode}-flat-lost.exr")
     exr_stat_milli("${WORK}/${_mode}-flat-lost.exr" Avg _lost)
-    oiio("${WORK}/${_mode}-relief-share.exr" "${WORK}/${_mode}-flat-share.exr" --absdiff
+    cli_oiiotool("${WORK}/${_mode}-relief-share.exr" "${WORK}/${_mode}-flat-share.exr" --absdiff
       "${WORK}/${_mode}-umbra.exr" --mul --mulc 100 -o "${WORK}/${_mode}-apart.exr")
     exr_stat_milli("${WORK}/${_mode}-apart.exr" Avg _apart)
     math(EXPR _lost "${_lost} * 1000 / ${_umbra}")
@@ -267,10 +259,10 @@ elseif (PART STREQUAL "mirror")
     --out "${WORK}/m-cpu-flat.png" --exr "${WORK}/m-cpu-flat.exr")
   cli_run(TRUE vlf render "${WORK}/mirror.vlf" --size ${_size} ${_camera} ${_relief}
     --out "${WORK}/m-cpu-relief.png" --exr "${WORK}/m-cpu-relief.exr")
-  oiio("${WORK}/m-cpu-flat.exr" "${WORK}/m-cpu-relief.exr" --absdiff --maxchan --mulc 1e6
+  cli_oiiotool("${WORK}/m-cpu-flat.exr" "${WORK}/m-cpu-relief.exr" --absdiff --maxchan --mulc 1e6
     --clamp:min=0:max=1 -o "${WORK}/m-direct.exr")
-  oiio("${WORK}/m-direct.exr" --dilate 5x5 --mulc -1 --addc 1 -o "${WORK}/m-beyond.exr")
-  oiio("${WORK}/m-direct.exr" --erode 5x5 -o "${WORK}/m-direct-core.exr")
+  cli_oiiotool("${WORK}/m-direct.exr" --dilate 5x5 --mulc -1 --addc 1 -o "${WORK}/m-beyond.exr")
+  cli_oiiotool("${WORK}/m-direct.exr" --erode 5x5 -o "${WORK}/m-direct-core.exr")
   exr_stat_milli("${WORK}/m-direct-core.exr" Avg _direct)
   exr_stat_milli("${WORK}/m-beyond.exr" Avg _beyond)
   if (_direct LESS 20 OR _beyond LESS 200)
@@ -288,21 +280,21 @@ elseif (PART STREQUAL "mirror")
     endforeach ()
     # The relief's change per pixel, and the pixels it changes (by more than 2 levels).
     foreach (_against IN ITEMS relief flat)
-      oiio("${WORK}/m-${_mode}-flat.png" "${WORK}/m-${_mode}-${_against}.png" --absdiff --maxchan
+      cli_oiiotool("${WORK}/m-${_mode}-flat.png" "${WORK}/m-${_mode}-${_against}.png" --absdiff --maxchan
         -o "${WORK}/m-${_mode}-${_against}-diff.exr")
-      oiio("${WORK}/m-${_mode}-${_against}-diff.exr" --subc 0.0085 --mulc 1e6 --clamp:min=0:max=1
+      cli_oiiotool("${WORK}/m-${_mode}-${_against}-diff.exr" --subc 0.0085 --mulc 1e6 --clamp:min=0:max=1
         "${WORK}/m-beyond.exr" --mul -o "${WORK}/m-${_mode}-${_against}-changed.exr")
       exr_stat_milli("${WORK}/m-${_mode}-${_against}-changed.exr" Avg _changed_${_against})
       # Mean change (x 1000 / the area) in the mirror and where the relief is seen directly.
-      oiio("${WORK}/m-${_mode}-${_against}-diff.exr" "${WORK}/m-${_mode}-${_against}-changed.exr"
+      cli_oiiotool("${WORK}/m-${_mode}-${_against}-diff.exr" "${WORK}/m-${_mode}-${_against}-changed.exr"
         --mul --mulc 100 -o "${WORK}/m-${_mode}-${_against}-mirror.exr")
       exr_stat_milli("${WORK}/m-${_mode}-${_against}-mirror.exr" Avg _mirror_${_against})
     endforeach ()
     # The same where the relief is seen directly (its pixels changed by more than 2 levels).
-    oiio("${WORK}/m-${_mode}-relief-diff.exr" --subc 0.0085 --mulc 1e6 --clamp:min=0:max=1
+    cli_oiiotool("${WORK}/m-${_mode}-relief-diff.exr" --subc 0.0085 --mulc 1e6 --clamp:min=0:max=1
       "${WORK}/m-direct-core.exr" --mul -o "${WORK}/m-${_mode}-direct-changed.exr")
     exr_stat_milli("${WORK}/m-${_mode}-direct-changed.exr" Avg _direct_changed)
-    oiio("${WORK}/m-${_mode}-relief-diff.exr" "${WORK}/m-${_mode}-direct-changed.exr" --mul
+    cli_oiiotool("${WORK}/m-${_mode}-relief-diff.exr" "${WORK}/m-${_mode}-direct-changed.exr" --mul
       --mulc 100 -o "${WORK}/m-${_mode}-direct-change.exr")
     exr_stat_milli("${WORK}/m-${_mode}-direct-change.exr" Avg _direct_change)
     set(_direct_mean 0)
@@ -331,7 +323,7 @@ elseif (PART STREQUAL "mirror")
       # traced (FollowMirrorChain): there they must be the coherent mode's traced values, which
       # the field lookup (the flat run) is not.
       foreach (_which IN ITEMS relief flat)
-        oiio("${WORK}/m-raytrace-${_which}.png" "${WORK}/m-coherent-relief.png" --absdiff --maxchan
+        cli_oiiotool("${WORK}/m-raytrace-${_which}.png" "${WORK}/m-coherent-relief.png" --absdiff --maxchan
           "${WORK}/m-coherent-relief-changed.exr" --mul --mulc 100
           -o "${WORK}/m-raytrace-${_which}-traced.exr")
         exr_stat_milli("${WORK}/m-raytrace-${_which}-traced.exr" Avg _traced_${_which})
