@@ -54,6 +54,18 @@ ProgressCallback AlgorithmProgress(Algorithm* algorithm, double begin = 0.0, dou
   };
 }
 
+/**
+ * Clears the abort flag a previous run left set; the first thing an abortable RequestData does.
+ * VTK 9.1's executive clears it before each RequestData, the VTK of ParaView 5.11 does not: one
+ * abort (the GUI's Abort, a script's SetAbortExecute(1)) stopped every later run of the filter,
+ * even after its settings changed. (SetAbortExecute(0) and the template keep this header VTK-free.)
+ */
+template <class Algorithm>
+void ClearAbort(Algorithm* algorithm)
+{
+  algorithm->SetAbortExecute(0);
+}
+
 } // namespace mesolight
 
 #endif

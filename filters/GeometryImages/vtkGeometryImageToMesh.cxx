@@ -184,6 +184,7 @@ std::string DegenerateMeshProblem(const mesolight::GeometryImageMesh& mesh)
 int vtkGeometryImageToMesh::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
+  mesolight::ClearAbort(this);
   vtkImageData* input = vtkImageData::GetData(inputVector[0], 0);
   vtkImageData* normalInput = vtkImageData::GetData(inputVector[1], 0);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkOIIOImageReader.h"
+#include "Progress.h"
 
 #include "ImageFile.h"
 
@@ -151,6 +152,7 @@ int vtkOIIOImageReader::RequestInformation(
 int vtkOIIOImageReader::RequestData(
   vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
+  mesolight::ClearAbort(this);
   vtkImageData* output = vtkImageData::GetData(outputVector, 0);
   if (!output)
   {

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkOIIOImageWriter.h"
+#include "Progress.h"
 #include "vtkWholeExtentRequest.h"
 
 #include "OneLineMessage.h"
@@ -142,6 +143,7 @@ int vtkOIIOImageWriter::RequestUpdateExtent(
 int vtkOIIOImageWriter::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
 {
+  mesolight::ClearAbort(this);
   this->LastWriteSucceeded = false;
   vtkImageData* input = vtkImageData::GetData(inputVector[0], 0);
   if (!input)

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkMedianCutLights.h"
+#include "Progress.h"
 #include "vtkOutOfMemory.h"
 #include "vtkRasterRowOrder.h"
 #include "vtkWholeExtentRequest.h"
@@ -119,6 +120,7 @@ int vtkMedianCutLights::RequestUpdateExtent(
 int vtkMedianCutLights::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
+  mesolight::ClearAbort(this);
   return mesolight::ExecuteReportingOutOfMemory(
     this, [&]() { return this->Execute(inputVector, outputVector); });
 }

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkConeMapFilter.h"
+#include "Progress.h"
 #include "vtkOutOfMemory.h"
 
 #include "ConeMaps.h"
@@ -49,6 +50,7 @@ int vtkConeMapFilter::RequestData(
 int vtkConeMapFilter::Execute(
   vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
+  mesolight::ClearAbort(this);
   vtkImageData* input = vtkImageData::GetData(inputVector[0]);
   vtkImageData* output = vtkImageData::GetData(outputVector);
   // Point scalars, or the cells ParaView's GDAL Raster Reader gives the pixels as (the relief

@@ -127,6 +127,7 @@ int vtkDepthHallucinationFilter::RequestUpdateExtent(
 int vtkDepthHallucinationFilter::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
+  mesolight::ClearAbort(this);
   this->DepthRangeTexels = 0.0;
   vtkImageData* albedoOut = vtkImageData::GetData(outputVector, 0);
   vtkImageData* depthOut = vtkImageData::GetData(outputVector, 1);

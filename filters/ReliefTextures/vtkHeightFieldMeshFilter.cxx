@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkHeightFieldMeshFilter.h"
+#include "Progress.h"
 
 #include "ScalarConversion.h"
 
@@ -76,6 +77,7 @@ int vtkHeightFieldMeshFilter::FillInputPortInformation(int, vtkInformation* info
 int vtkHeightFieldMeshFilter::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
+  mesolight::ClearAbort(this);
   vtkImageData* input = vtkImageData::GetData(inputVector[0], 0);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   if (!input)

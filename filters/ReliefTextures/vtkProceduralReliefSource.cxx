@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkProceduralReliefSource.h"
+#include "Progress.h"
 
 #include "ProceduralHeightFields.h"
 
@@ -113,6 +114,7 @@ int vtkProceduralReliefSource::RequestInformation(
 int vtkProceduralReliefSource::RequestData(
   vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
+  mesolight::ClearAbort(this);
   vtkImageData* depthImage = vtkImageData::GetData(outputVector, 0);
   vtkImageData* albedoImage = vtkImageData::GetData(outputVector, 1);
   if (!depthImage || !albedoImage)

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkReliefTextureFilter.h"
+#include "Progress.h"
 #include "vtkOutOfMemory.h"
 #include "vtkRasterRowOrder.h"
 #include "vtkUnitScale.h"
@@ -178,6 +179,7 @@ int vtkReliefTextureFilter::RequestUpdateExtent(
 int vtkReliefTextureFilter::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
+  mesolight::ClearAbort(this);
   return mesolight::ExecuteReportingOutOfMemory(
     this, [&]() { return this->Execute(inputVector, outputVector); });
 }

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkVirtualLightField.h"
+#include "Progress.h"
 #include "vtkVirtualLightFieldCore.h"
 
 #include "AdaptiveTexels.h"
@@ -156,6 +157,7 @@ int vtkVirtualLightField::RequestUpdateExtent(
 int vtkVirtualLightField::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
+  mesolight::ClearAbort(this);
   namespace vlf = mesolight::vlf;
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
   vtkPolyData* output = vtkPolyData::GetData(outputVector);

@@ -335,6 +335,7 @@ const mesolight::vlf::LightField* vtkLightFieldGatherFilter::AcquireField(vtkAlg
 int vtkLightFieldGatherFilter::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
+  mesolight::ClearAbort(this);
   using namespace mesolight;
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);

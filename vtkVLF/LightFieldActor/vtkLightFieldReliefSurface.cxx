@@ -391,6 +391,7 @@ int vtkLightFieldReliefSurface::RequestInformation(
 int vtkLightFieldReliefSurface::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
+  mesolight::ClearAbort(this);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   vtkImageData* probesOutput = vtkImageData::GetData(outputVector, 1);
   this->EmitterLights->RemoveAllItems();

@@ -1,7 +1,8 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """Long Mesolight filters report progress to ParaView's progress handler (what drives the GUI's
 progress bar) and can be aborted: a cone map aborted from a progress observer stops early and
-leaves an empty output."""
+leaves an empty output; after the abort, a changed setting runs it to the end again (ParaView
+5.11's VTK leaves the abort flag set, and every later run stopped at once)."""
 import os
 import sys
 import time
@@ -61,6 +62,32 @@ print("aborted cone map: %.2f s, progress reports %s, output points %d"
       % (aborted_time, ["%.3f" % f for f in fractions], points))
 if not own or max(own) > 0.5 or points != 0:
     failures.append("the aborted cone map should stop early and output nothing")
+
+# 3. After the abort, the next run (a setting changed) is not aborted by the stale flag.
+algorithm.RemoveAllObservers()
+cones.ConeType = 0
+start = time.time()
+cones.UpdatePipeline()
+output = algorithm.GetOutputDataObject(0)
+points = output.GetNumberOfPoints() if output else 0
+print("cone map after the abort: %.2f s, output points %d, abort flag %d"
+      % (time.time() - start, points, algorithm.GetAbortExecute()))
+if points != 256 * 256:
+    failures.append("after an abort the cone map never ran to the end again")
+field = pvs.MesolightVirtualLightField(Input=pvs.MesolightCornellBox(), Directions=513,
+                                       RaysPerSide=32)
+field_algorithm = field.GetClientSideObject()
+field_algorithm.AddObserver("ProgressEvent", abort_early)
+field.UpdatePipeline()
+if field.GetDataInformation().GetNumberOfCells() != 0:
+    failures.append("the aborted light field should output nothing")
+field_algorithm.RemoveAllObservers()
+field.RaysPerSide = 16
+field.UpdatePipeline()
+cells = field.GetDataInformation().GetNumberOfCells()
+print("light field after an abort and a change: %d cells" % cells)
+if cells == 0:
+    failures.append("after an abort the light field never propagated again")
 
 if failures:
     print("FAILED: " + "; ".join(failures))
