@@ -76,15 +76,18 @@ std::vector<glm::uvec3> TriangulatePolygon(const std::vector<glm::vec3>& corners
   {
     left[i] = static_cast<std::uint32_t>(i);
   }
-  while (left.size() > 3)
+  // Tips tried from the second corner on, and after each clip from where it was, so a convex
+  // polygon gets the fan it always got (0, k, k + 1) (the same diagonals, which matters for a
+  // slightly non-planar quad) in one pass. Beyond MaximumEarClippedCorners the fan is kept: ear
+  // clipping's cost grows as the cube of the corners in the worst case.
+  std::size_t start = n > MaximumEarClippedCorners ? n : 1;
+  while (left.size() > 3 && start < left.size())
   {
     const std::size_t m = left.size();
     bool clipped = false;
-    // Tips tried from the second corner on, so a convex polygon gets the fan it always got
-    // (0, k, k + 1) (the same diagonals, which matters for a slightly non-planar quad).
     for (std::size_t j = 0; j < m && !clipped; ++j)
     {
-      const std::size_t i = (j + 1) % m;
+      const std::size_t i = (start + j) % m;
       const std::uint32_t a = left[(i + m - 1) % m], b = left[i], c = left[(i + 1) % m];
       if (straight(a, b, c))
       {
@@ -105,6 +108,7 @@ std::vector<glm::uvec3> TriangulatePolygon(const std::vector<glm::vec3>& corners
       {
         triangles.emplace_back(a, b, c);
         left.erase(left.begin() + static_cast<std::ptrdiff_t>(i));
+        start = i < left.size() ? i : 0;
         clipped = true;
       }
     }

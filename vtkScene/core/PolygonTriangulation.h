@@ -5,6 +5,7 @@
 
 #include <glm/vec3.hpp>
 
+#include <cstddef>
 #include <vector>
 
 namespace mesolight
@@ -17,8 +18,10 @@ namespace mesolight
  * rather than by a fan that fills the notch; only strictly convex corners are clipped, so corners
  * on a straight edge (a midpoint shared with a neighbouring face) give no zero-area triangles.
  * A polygon that has no ear left (self-intersecting) has its remainder fanned, as before; one of
- * zero area gives no triangles beyond those already clipped.
+ * zero area gives no triangles beyond those already clipped. One of more than
+ * MaximumEarClippedCorners corners is fanned whole (ear clipping costs up to the cube of them).
  */
+constexpr std::size_t MaximumEarClippedCorners = 1024;
 std::vector<glm::uvec3> TriangulatePolygon(const std::vector<glm::vec3>& corners);
 
 } // namespace mesolight

@@ -138,3 +138,30 @@ TEST(PolygonTriangulation, DegenerateAndSelfIntersectingPolygonsEnd)
     TriangulatePolygon({ { 0, 0, 0 }, { 1, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 } }).size(),
     3u);
 }
+
+TEST(PolygonTriangulation, LargeFacesStayCheap)
+{
+  // A concave star of 1000 corners (radius 1 and 0.5 alternately) is ear-clipped exactly: its
+  // area is 1000 triangles of the two radii's half-angle wedge.
+  std::vector<glm::vec3> star;
+  const int corners = 1000;
+  for (int k = 0; k < corners; ++k)
+  {
+    const double a = 2.0 * 3.14159265358979 * k / corners;
+    const double r = k % 2 ? 0.5 : 1.0;
+    star.emplace_back(static_cast<float>(r * std::cos(a)), static_cast<float>(r * std::sin(a)), 0);
+  }
+  const double wedge = 0.5 * 1.0 * 0.5 * std::sin(2.0 * 3.14159265358979 / corners);
+  const std::vector<glm::uvec3> triangles = TriangulatePolygon(star);
+  EXPECT_EQ(triangles.size(), static_cast<std::size_t>(corners - 2));
+  EXPECT_NEAR(CoveredArea(star, triangles, { 0, 0, 1 }), corners * wedge, 1e-4);
+  // Beyond MaximumEarClippedCorners the fan is kept.
+  std::vector<glm::vec3> circle;
+  for (std::size_t k = 0; k < mesolight::MaximumEarClippedCorners + 1; ++k)
+  {
+    const double a = 2.0 * 3.14159265358979 * static_cast<double>(k) /
+      static_cast<double>(mesolight::MaximumEarClippedCorners + 1);
+    circle.emplace_back(static_cast<float>(std::cos(a)), static_cast<float>(std::sin(a)), 0);
+  }
+  EXPECT_EQ(TriangulatePolygon(circle), Fan(circle.size()));
+}
