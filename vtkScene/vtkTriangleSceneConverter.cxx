@@ -33,6 +33,8 @@ constexpr const char* SpecularName = "Specular";
 constexpr const char* EmissionName = "Emission";
 constexpr const char* MaterialIdName = "MaterialId";
 constexpr const char* MaterialNamesName = "MaterialNames";
+constexpr const char* SurfaceIdName = "SurfaceId";
+constexpr const char* SurfaceNamesName = "SurfaceNames";
 
 vtkSmartPointer<vtkFloatArray> ColourArray(const char* name, vtkIdType cells)
 {
@@ -234,6 +236,26 @@ void vtkTriangleSceneConverter::ToPolyData(
     names->InsertNextValue(m.Name);
   }
   output->GetFieldData()->AddArray(names);
+  if (!scene.SurfaceIds.empty())
+  {
+    vtkNew<vtkIntArray> surfaceIds;
+    surfaceIds->SetName(SurfaceIdName);
+    surfaceIds->SetNumberOfTuples(cells);
+    for (vtkIdType t = 0; t < cells; ++t)
+    {
+      const std::uint32_t id = scene.SurfaceIds[static_cast<std::size_t>(t)];
+      surfaceIds->SetValue(
+        t, id == mesolight::TriangleScene::NoSurface ? -1 : static_cast<int>(id));
+    }
+    output->GetCellData()->AddArray(surfaceIds);
+    vtkNew<vtkStringArray> surfaceNames;
+    surfaceNames->SetName(SurfaceNamesName);
+    for (const std::string& name : scene.SurfaceNames)
+    {
+      surfaceNames->InsertNextValue(name);
+    }
+    output->GetFieldData()->AddArray(surfaceNames);
+  }
 }
 
 vtkSmartPointer<vtkPolyData> vtkTriangleSceneConverter::ToPolyData(
@@ -414,6 +436,28 @@ bool vtkTriangleSceneConverter::ToTriangleScene(vtkPolyData* input, mesolight::T
       }
     }
     scene.MaterialIds.push_back(material);
+  }
+  // Surface names, when the polydata carries them (ToPolyData's): ids outside the names are
+  // unnamed.
+  vtkDataArray* surfaceIds = cellData->GetArray(SurfaceIdName);
+  vtkStringArray* surfaceNames =
+    vtkStringArray::SafeDownCast(triangles->GetFieldData()->GetAbstractArray(SurfaceNamesName));
+  if (surfaceIds && surfaceNames && surfaceIds->GetNumberOfComponents() == 1 &&
+    surfaceIds->GetNumberOfTuples() == firstPoly + cells)
+  {
+    for (vtkIdType k = 0; k < surfaceNames->GetNumberOfValues(); ++k)
+    {
+      scene.SurfaceNames.push_back(surfaceNames->GetValue(k));
+    }
+    scene.SurfaceIds.resize(static_cast<std::size_t>(cells), mesolight::TriangleScene::NoSurface);
+    for (vtkIdType t = 0; t < cells; ++t)
+    {
+      const double id = surfaceIds->GetComponent(firstPoly + t, 0);
+      if (id >= 0.0 && id < static_cast<double>(scene.SurfaceNames.size()))
+      {
+        scene.SurfaceIds[static_cast<std::size_t>(t)] = static_cast<std::uint32_t>(id);
+      }
+    }
   }
 
   const mesolight::SceneCheck check = mesolight::CheckScene(scene, false);

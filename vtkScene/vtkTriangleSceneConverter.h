@@ -13,7 +13,10 @@
  *  - "Diffuse" (3 floats, Kd), "Specular" (3, Ks, perfect specular), "Emission" (3, Ke,
  *    emitted radiance), "MaterialId" (int, index into the scene's materials),
  *  - point normals and texture coordinates when the scene has them,
- *  - field data "MaterialNames" (strings, indexed by MaterialId).
+ *  - field data "MaterialNames" (strings, indexed by MaterialId),
+ *  - when the scene names its surfaces (OBJ g/o, the Cornell box's floor, back, ...): cell
+ *    array "SurfaceId" (int, index into field data "SurfaceNames"; -1 unnamed), so that a light
+ *    field propagated from the polydata knows them (a relief on "floor").
  *
  * ToTriangleScene accepts any vtkPolyData: polygons and strips are triangulated (a warning says
  * how many), vertices and lines are dropped (a warning), missing material arrays get the default

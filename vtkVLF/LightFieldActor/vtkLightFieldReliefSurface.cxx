@@ -438,10 +438,12 @@ int vtkLightFieldReliefSurface::RequestData(
   {
     if (!this->LightFieldActor && mesolight::SurfaceNameList(field->Scene()) == "(none)")
     {
-      // vtkTriangleSceneConverter's polydata carries materials, not surface names.
+      // Polydata names its surfaces only with vtkTriangleSceneConverter's SurfaceId array.
       vtkErrorMacro(<< e.what()
-                    << "; a field propagated from polydata has no surface names: load it from a "
-                       "snapshot of a named scene into a vtkLightFieldActor and give that actor");
+                    << "; a field propagated from polydata has no surface names when the polydata "
+                       "has no SurfaceId cell array (the Mesolight OBJ reader's and Cornell box "
+                       "source's have one): read the scene with them, or load a snapshot of a "
+                       "named scene into a vtkLightFieldActor and give that actor");
       return 0;
     }
     vtkErrorMacro(<< e.what());

@@ -6,8 +6,8 @@
  *
  * The light field comes from a vtkLightFieldActor (SetLightFieldActor: the field it shows, e.g.
  * loaded from a snapshot) or from a vtkVirtualLightField connected to input port 0
- * (SetLightFieldConnection; its scene came as polydata, which carries no surface names yet, so
- * this route finds none and says so). SurfaceName names one planar surface of the field's scene: an
+ * (SetLightFieldConnection; its scene came as polydata, whose names vtkTriangleSceneConverter
+ * carries when the source gave them). SurfaceName names one planar surface of the field's scene: an
  * OBJ `g`/`o` name or a Cornell box name (floor, ceiling, back, left, right, short, tall). Outputs:
  *
  * - port 0: the surface's triangles in world coordinates with point normals (its front side)

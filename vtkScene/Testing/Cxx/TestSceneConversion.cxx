@@ -69,6 +69,18 @@ TEST(TriangleSceneConverter, CornellBoxRoundTrip)
   ExpectSameScene(box, back);
   EXPECT_EQ(converter->GetLastWarningCount(), 0);
   EXPECT_TRUE(messages->Warnings.empty());
+  // The surfaces' names come through (a light field propagated from the polydata had none, so a
+  // relief on "floor" was refused from Python): the same triangles for each name.
+  ASSERT_NE(polyData->GetCellData()->GetArray("SurfaceId"), nullptr);
+  EXPECT_EQ(back.SurfaceNames, box.SurfaceNames);
+  EXPECT_EQ(back.SurfaceIds, box.SurfaceIds);
+  EXPECT_EQ(mesolight::SurfaceTriangles(back, "floor"), mesolight::SurfaceTriangles(box, "floor"));
+  // Polydata without them (a sphere) has no names, as before.
+  vtkNew<vtkSphereSource> sphere;
+  sphere->Update();
+  TriangleScene unnamed;
+  ASSERT_TRUE(converter->ToTriangleScene(sphere->GetOutput(), unnamed));
+  EXPECT_TRUE(unnamed.SurfaceIds.empty());
 }
 
 TEST(TriangleSceneConverter, ForeignPolyData)

@@ -26,6 +26,7 @@
 
 #include <vtkCallbackCommand.h>
 #include <vtkCellArray.h>
+#include <vtkCellData.h>
 #include <vtkDataArray.h>
 #include <vtkFieldData.h>
 #include <vtkImageData.h>
@@ -415,9 +416,12 @@ TEST(LightFieldReliefSurface, ProbesAreRecomputedForANewFieldOnly)
   EXPECT_EQ(runs, 1);
 }
 
-// The filter route: the scene comes as polydata (vtkTriangleSceneConverter), which carries no
-// surface names, so no surface is found and the message says why and what to do.
-TEST(LightFieldReliefSurface, AVirtualLightFieldFiltersSceneHasNoNames)
+// The filter route: the scene comes as polydata (vtkTriangleSceneConverter), which now carries
+// the surfaces' names (cell array SurfaceId): a relief on the Cornell box's "floor" of a
+// vtkVirtualLightField is found (it was refused, "no surface named 'floor'", so a Python user
+// could not put a relief on a field propagated in Python). Polydata without the names still
+// gets the message that says why and what to do.
+TEST(LightFieldReliefSurface, AVirtualLightFieldFiltersSceneKeepsItsNames)
 {
   vtkSmartPointer<vtkVirtualLightField> field = SmallCornellField();
   vtkNew<vtkLightFieldReliefSurface> surface;
@@ -428,6 +432,16 @@ TEST(LightFieldReliefSurface, AVirtualLightFieldFiltersSceneHasNoNames)
   surface->SetProbesPerSide(2);
   surface->Update();
   ASSERT_NE(vtkVirtualLightFieldCore::GetLightField(field), nullptr);
+  EXPECT_TRUE(messages->Errors.empty()) << messages->AllErrors();
+  EXPECT_EQ(surface->GetOutput()->GetNumberOfCells(), 2); // the floor's two triangles
+
+  vtkNew<vtkCornellBoxSource> box;
+  box->Update();
+  vtkNew<vtkPolyData> unnamed;
+  unnamed->DeepCopy(box->GetOutput());
+  unnamed->GetCellData()->RemoveArray("SurfaceId");
+  field->SetInputData(unnamed);
+  surface->Update();
   EXPECT_TRUE(messages->HasError("a field propagated from polydata has no surface names"))
     << messages->AllErrors();
 }
