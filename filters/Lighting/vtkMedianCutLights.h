@@ -43,6 +43,7 @@
 #define vtkMedianCutLights_h
 
 #include "MesolightLightingModule.h" // For export macro
+#include "vtkClampedSetter.h"        // For mesolightSetClampMacro
 #include "vtkPolyDataAlgorithm.h"
 
 #include <string> // For std::string
@@ -62,7 +63,7 @@ public:
    * Number of lights, >= 1 and at most the number of pixels (any count, not only powers
    * of two). Default is 64.
    */
-  vtkSetMacro(NumberOfLights, int);
+  mesolightSetClampMacro(NumberOfLights, int, 1, VTK_INT_MAX);
   vtkGetMacro(NumberOfLights, int);
   ///@}
 

@@ -52,6 +52,7 @@
 #define vtkVirtualLightField_h
 
 #include "MesolightLightFieldModule.h" // For export macro
+#include "vtkClampedSetter.h"          // For mesolightSetClampMacro
 #include "vtkPolyDataAlgorithm.h"
 
 #include <memory> // For std::unique_ptr
@@ -82,7 +83,7 @@ public:
    * Directions of the subfields: 2 n^2 + 1 (513, 2049, 8193), or 0 (default): automatic, from the
    * lines per side (mesolight::vlf::ResolveAutomaticSettings, AutomaticSettings.h).
    */
-  vtkSetMacro(Directions, int);
+  mesolightSetClampMacro(Directions, int, 0, VTK_INT_MAX);
   vtkGetMacro(Directions, int);
   ///@}
 
@@ -91,13 +92,13 @@ public:
    * Lines per subfield side, or 0 (default): automatic, from the scene's small features within a
    * line count and MemoryBudget (2049 x 64 x 64 when the scene asks for no more and it fits).
    */
-  vtkSetMacro(RaysPerSide, int);
+  mesolightSetClampMacro(RaysPerSide, int, 0, VTK_INT_MAX);
   vtkGetMacro(RaysPerSide, int);
   ///@}
 
   ///@{
   /** Tiles per subfield side; RaysPerSide must be a multiple. 0 (default) = RaysPerSide / 8. */
-  vtkSetMacro(Tiles, int);
+  mesolightSetClampMacro(Tiles, int, 0, VTK_INT_MAX);
   vtkGetMacro(Tiles, int);
   ///@}
 
@@ -106,17 +107,17 @@ public:
    * Shooting iterations: -1 (default) iterates until at most ConvergenceTolerance of the emitted
    * flux is left unshot (at most MaxIterations); 0 or more is that fixed count.
    */
-  vtkSetMacro(Iterations, int);
+  mesolightSetClampMacro(Iterations, int, -1, VTK_INT_MAX);
   vtkGetMacro(Iterations, int);
   ///@}
   ///@{
   /** Share of the emitted flux left unshot at which propagation stops (default 0.01). */
-  vtkSetMacro(ConvergenceTolerance, double);
+  mesolightSetClampMacro(ConvergenceTolerance, double, 0.0, 1.0);
   vtkGetMacro(ConvergenceTolerance, double);
   ///@}
   ///@{
   /** Most iterations the tolerance may take (default 100): a safety cap. */
-  vtkSetMacro(MaxIterations, int);
+  mesolightSetClampMacro(MaxIterations, int, 1, VTK_INT_MAX);
   vtkGetMacro(MaxIterations, int);
   ///@}
 

@@ -247,9 +247,16 @@ TEST(MedianCutLights, BadInput)
   expectError(nan, 4, "contains 2 NaN or infinite value(s)");
   expectError(nan, 4, "(i=5, j=2");
   expectError(Image(16, 8, 0.0f), 4, "no light");
-  expectError(Image(16, 8, 1.0f), 0,
-    "NumberOfLights must be between 1 and the number of "
-    "pixels (128); it is 0");
+  {
+    // Below 1: said and clamped at the setter (it was stored and refused at Update).
+    vtkNew<vtkMedianCutLights> lights;
+    vtkNew<MessageCapture> capture;
+    capture->Watch(lights);
+    lights->SetNumberOfLights(0);
+    EXPECT_TRUE(capture->HasWarning("SetNumberOfLights: 0 is outside [1,"))
+      << capture->AllWarnings();
+    EXPECT_EQ(lights->GetNumberOfLights(), 1);
+  }
   expectError(Image(16, 8, 1.0f), 129, "it is 129");
   auto short_ = Image(16, 8, 1.0f);
   short_->GetPointData()->GetScalars()->SetNumberOfTuples(100);
