@@ -656,7 +656,7 @@ int vtkLightFieldReliefSurface::RequestSurfaceData(
     {
       try
       {
-        result = ComputeSurface(*field, whole, this->ProbesPerSide, this->SceneOcclusion,
+        result = ComputeSurface(*field, whole, requested, this->SceneOcclusion,
           mesolight::AlgorithmProgress(this, 0.0, this->MapProgress()));
       }
       catch (const vlf::AbortedError&)
