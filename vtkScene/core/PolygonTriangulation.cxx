@@ -35,9 +35,17 @@ std::vector<glm::uvec3> TriangulatePolygon(const std::vector<glm::vec3>& corners
   {
     return triangles;
   }
-  if (n == 3)
+  // Three corners, or a corner that is not finite: the fan, so that the scene check reports the
+  // vertex instead of the face vanishing here without a word.
+  const bool finite = std::all_of(corners.begin(), corners.end(),
+    [](const glm::vec3& p)
+    { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); });
+  if (n == 3 || !finite)
   {
-    triangles.emplace_back(0u, 1u, 2u);
+    for (std::uint32_t k = 1; k + 1 < n; ++k)
+    {
+      triangles.emplace_back(0u, k, k + 1);
+    }
     return triangles;
   }
   // Newell's normal picks the projection plane (drop its largest axis) and the winding.

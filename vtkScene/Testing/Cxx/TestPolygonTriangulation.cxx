@@ -133,6 +133,10 @@ TEST(PolygonTriangulation, DegenerateAndSelfIntersectingPolygonsEnd)
     EXPECT_LT(t[1], 4u);
     EXPECT_LT(t[2], 4u);
   }
+  // A corner that is not finite keeps the fan, for the scene check to name the vertex (the
+  // polygon must not vanish without a word).
+  EXPECT_EQ(
+    TriangulatePolygon({ { 0, 0, 0 }, { 1, 0, 0 }, { std::nanf(""), 1, 0 }, { 0, 1, 0 } }), Fan(4));
   // Repeated corners (a face that visits a vertex twice) end too.
   EXPECT_LE(
     TriangulatePolygon({ { 0, 0, 0 }, { 1, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 } }).size(),
