@@ -384,6 +384,7 @@ void vtkReliefSurfaceRepresentation::UseFieldSurfaceOutputs(bool updated)
     this->ReliefProperty->RemoveDepthLimitPlane();
   }
   this->UpdateDisplayTransform();
+  this->UpdateAlbedo();
 }
 
 //------------------------------------------------------------------------------
@@ -498,6 +499,36 @@ void vtkReliefSurfaceRepresentation::SetExposure(double exposure)
 }
 
 //------------------------------------------------------------------------------
+void vtkReliefSurfaceRepresentation::SetLightFieldAlbedo(bool on)
+{
+  this->LightFieldAlbedo = on;
+  this->UpdateAlbedo();
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+void vtkReliefSurfaceRepresentation::SetDiffuseColor(double r, double g, double b)
+{
+  this->UserDiffuseColor[0] = r;
+  this->UserDiffuseColor[1] = g;
+  this->UserDiffuseColor[2] = b;
+  this->UpdateAlbedo();
+}
+
+//------------------------------------------------------------------------------
+void vtkReliefSurfaceRepresentation::UpdateAlbedo()
+{
+  // A texture's colours multiply the shading (vtkReliefImplFS.glsl) and an array's replace the
+  // diffuse colour: the wall's Kd stands in for Solid Color only.
+  double origin[3], normal[3];
+  const bool solid = !this->Actor->GetTexture() && !this->Mapper->GetScalarVisibility();
+  const bool wall = this->FieldLit && this->LightFieldAlbedo && solid &&
+    this->FieldSurface->GetDepthLimitPlane(origin, normal);
+  const double* color = wall ? this->FieldSurface->GetSurfaceDiffuse() : this->UserDiffuseColor;
+  this->Superclass::SetDiffuseColor(color[0], color[1], color[2]);
+}
+
+//------------------------------------------------------------------------------
 vtkLightCollection* vtkReliefSurfaceRepresentation::GetFieldLights()
 {
   return this->FieldLights;
@@ -521,6 +552,7 @@ int vtkReliefSurfaceRepresentation::ProcessViewRequest(
   if (requestType == vtkPVView::REQUEST_RENDER())
   {
     this->UpdateAttachedColorTexture();
+    this->UpdateAlbedo(); // the texture and the colouring by an array are known now
   }
   return 1;
 }
@@ -619,6 +651,9 @@ void vtkReliefSurfaceRepresentation::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "FieldLit: " << this->FieldLit << "\n";
   os << indent << "LightFieldAutoExposure: " << this->LightFieldAutoExposure << "\n";
   os << indent << "LightFieldOcclusion: " << this->LightFieldOcclusion << "\n";
+  os << indent << "LightFieldAlbedo: " << this->LightFieldAlbedo << "\n";
+  os << indent << "UserDiffuseColor: " << this->UserDiffuseColor[0] << " "
+     << this->UserDiffuseColor[1] << " " << this->UserDiffuseColor[2] << "\n";
   os << indent << "ProbeGatherings: " << this->ProbeGatherings << "\n";
   os << indent << "ReliefProperty:\n";
   this->ReliefProperty->PrintSelf(os, indent.GetNextIndent());

@@ -22,7 +22,9 @@
  * (vtkReliefProperty::SetLights), then the Light Field representation's display transform:
  * exposure (0.18 / the field's log-average luminance with LightFieldAutoExposure, times
  * Exposure), Reinhard tone mapping (ToneMapping) and sRGB, so a relief on a wall of the scene
- * shows the same radiance as the same pixel value as the scene beside it. A surface mounted on a
+ * shows the same radiance as the same pixel value as the scene beside it. A relief mounted on a
+ * wall takes the wall's Kd as its albedo in place of Solid Color (SetLightFieldAlbedo). A surface
+ * mounted on a
  * scene wall writes no depth behind the plane halfway to the wall
  * (vtkLightFieldReliefSurface::GetDepthLimitPlane, vtkReliefProperty::SetDepthLimitPlane): the
  * relief, which lies behind its surface by up to its depth, replaces the wall drawn by the Light
@@ -96,6 +98,18 @@ public:
   void SetLightFieldAutoExposure(bool on);
 
   /**
+   * With a Light Field (default on): a relief mounted on a wall of the field's scene takes the
+   * wall's Kd as its albedo, as the walkthrough's relief on that wall does, so the relief a user
+   * adds looks like the wall around it without looking up the wall's material. Only where Solid
+   * Color would apply: a relief coloured by an array or a texture (a photograph's albedo) keeps
+   * its colours. Off, or not mounted on a wall: Solid Color (DiffuseColor).
+   */
+  void SetLightFieldAlbedo(bool on);
+
+  /** Solid Color: the relief's albedo unless the Light Field's wall gives it (above). */
+  void SetDiffuseColor(double r, double g, double b) override;
+
+  /**
    * With a Light Field: the relief's occlusion of its own indirect light with its multi-bounce
    * inter-reflection (the visible-share map of its relief texture, vtkLightFieldReliefSurface)
    * and the scene's shadows of the emitter lights per probe, as `mesolight vlf view --relief`
@@ -151,6 +165,8 @@ protected:
   void UseFieldSurfaceOutputs(bool updated);
   /** The relief property's exposure, tone map and sRGB for the current lighting. */
   void UpdateDisplayTransform();
+  /** The actor's diffuse colour: the mounted wall's Kd or Solid Color (SetLightFieldAlbedo). */
+  void UpdateAlbedo();
 
   vtkNew<vtkReliefProperty> ReliefProperty;
   vtkNew<vtkTexture> AttachedColorTexture;
@@ -169,6 +185,8 @@ protected:
   int GatheredPropagation = -1;
   vtkMTimeType GatheredGeometryTime = 0;
   bool LightFieldOcclusion = true;
+  bool LightFieldAlbedo = true;
+  double UserDiffuseColor[3] = { 1.0, 1.0, 1.0 }; // Solid Color
   // What the visible-share map was computed for: the relief texture, its depth scale, its edge.
   vtkDataArray* SharedTexture = nullptr; // its texels; not owned, compared only
   vtkMTimeType SharedTextureTime = 0;

@@ -57,6 +57,8 @@ CHECKED_ELSEWHERE = {
     "LightField": "TestGUIReliefInLightField.py (set from the panel, the relief matches the wall)",
     "ReliefLightFieldAutoExposure": "Python/TestReliefInLightField.py (off, the relief misses "
                                     "the wall it matches when on)",
+    "ReliefLightFieldAlbedo": "Python/TestReliefInLightField.py (off, the white relief misses "
+                              "the wall it matches when on)",
     "ReliefLightFieldOcclusion": "Python/TestReliefFieldOcclusion.py (off, the relief misses the "
                                  "CPU reference it matches when on)",
     # The README pipeline's surface is flat, where the checkbox rightly changes nothing.

@@ -6,10 +6,11 @@ Reference (independent of the probes and the emitter lights): the field's own ra
 the back wall, as the Light Field representation draws it (the propagated texture, exposed,
 tone-mapped, sRGB). A flat relief (depth scale 0) on a patch in front of that wall, lit by the
 field, is shaded from other data entirely: SH9 probes of the field's incident light gathered
-over the patch plus the emitters as lights, Kd x E / pi, through the same display transform.
+over the patch plus the emitters as lights, Kd x E / pi, through the same display transform, with
+Solid Color left white: the relief takes the wall's Kd (Light Field Albedo, on by default).
 Where the patch covers the wall the two images must agree (the wall and the relief look
 continuous). Must fail: the same relief lit by the view's lights (Light Field unset), and lit
-by the field without its automatic exposure. A relief with depth lit by the field must differ
+by the field without its automatic exposure, and with Light Field Albedo off (Solid Color white). A relief with depth lit by the field must differ
 from the flat one (it is drawn as a relief) and stay near it on average (same light); though
 its depth lies behind the wall the patch stands 1.2 mm in front of, the wall hides none of it
 (it shows as it does with the scene hidden) while the boxes in front still hide it.
@@ -58,7 +59,8 @@ scene = pvs.Show(field, view)
 check(scene.Representation == "Light Field", "the scene is shown as Light Field")
 wall = capture("pv-relief-field-wall.png")
 
-# The back wall's Kd (the relief's albedo: the user's Solid Color), from the box's cell data.
+# The back wall's Kd, from the box's cell data: the albedo a relief mounted on it takes by
+# default (Light Field Albedo), and the Solid Color that gives the same image with that off.
 data = servermanager.Fetch(box)
 points = vtk_to_numpy(data.GetPoints().GetData())
 diffuse = vtk_to_numpy(data.GetCellData().GetArray("Diffuse"))
@@ -75,7 +77,7 @@ patch = pvs.Plane(Origin=[90.0, 90.0, PATCH_Z], Point1=[90.0, 470.0, PATCH_Z],
                   Point2=[470.0, 90.0, PATCH_Z], XResolution=4, YResolution=4)
 attached, relief = t.show_relief(patch, t.relief_texture(128), view, OverrideDepthScale=1,
                                  ReliefDepthScale=0.0)
-relief.DiffuseColor = kd
+# Solid Color stays ParaView's default (white): a user who adds a relief to a wall sets nothing.
 relief.Ambient, relief.Diffuse = 0.0, 1.0
 
 # The patch's footprint, shrunk by 3 pixels (edges are not compared).
@@ -91,7 +93,7 @@ print("patch footprint: %d pixels" % int(footprint.sum()))
 check(footprint.sum() > SIZE * SIZE // 8, "the patch covers much of the view")
 scene.Visibility = 1
 relief.SetRepresentationType("Relief Surface")
-relief.DiffuseColor = kd
+relief.AmbientColor = relief.DiffuseColor = [1.0, 1.0, 1.0]
 relief.Ambient, relief.Diffuse = 0.0, 1.0
 
 
@@ -121,6 +123,23 @@ check(error(flat, "flat relief lit by the field") <= MAX_MEAN_ERROR,
       % MAX_MEAN_ERROR)
 first = gatherings()
 check(first == 1, "the probes were gathered once (%d)" % first)
+
+# The albedo came from the wall (Light Field Albedo, on by default), not from Solid Color (white):
+# off, the white relief must fail; off with Solid Color set to the wall's Kd by hand, it matches.
+relief.ReliefLightFieldAlbedo = 0
+white = capture("pv-relief-field-white.png")
+check(error(white, "negative: Light Field Albedo off, Solid Color white") > MAX_MEAN_ERROR,
+      "negative: the relief with the default Solid Color (white) does not match the wall")
+relief.DiffuseColor = kd
+by_hand = capture("pv-relief-field-solid-color-kd.png")
+check(error(by_hand, "Light Field Albedo off, Solid Color = the wall's Kd") <= MAX_MEAN_ERROR,
+      "Solid Color set to the wall's Kd by hand matches as the default does")
+relief.DiffuseColor = [1.0, 1.0, 1.0]
+relief.ReliefLightFieldAlbedo = 1
+check(float(np.abs(capture("pv-relief-field-flat-again.png")[footprint].astype(float) -
+                   flat[footprint]).mean()) < 0.5,
+      "Light Field Albedo on again: the wall's Kd again")
+check(gatherings() == first, "the albedo gathers no probes (%d)" % gatherings())
 
 # Renders, camera moves and display settings gather nothing.
 view.CameraPosition = [300.0, 250.0, -700.0]
