@@ -7,6 +7,7 @@
 #include "vtkMessageCollector.h"
 
 #include "vtkLightFieldActor.h"
+#include "vtkLightFieldReliefActor.h"
 #include "vtkOIIOImageReader.h"
 #include "vtkReliefMapper.h"
 #include "vtkReliefTextureFilter.h"
@@ -56,7 +57,7 @@ void SyncObjectRelief(vtkObject*, unsigned long, void* clientData, void*)
     }
     if (scene)
     {
-      CopyWalkthroughDisplay(
+      vtkLightFieldReliefActor::CopyDisplay(
         scene, vtkReliefMapper::SafeDownCast(actor->GetMapper())->GetReliefProperty());
     }
   }

@@ -9,7 +9,7 @@
 #include "WalkthroughTracer.h" // TracedReliefs
 #include "vtkLightFieldActor.h"
 #include "vtkLightFieldActorCore.h"
-#include "vtkLightFieldReliefMapper.h"
+#include "vtkLightFieldReliefActor.h"
 #include "vtkLightFieldReliefSurface.h"
 #include "vtkLightFieldReliefSurfaceCore.h"
 #include "vtkReliefMapper.h"
@@ -26,7 +26,6 @@
 #include <vtkImageData.h>
 #include <vtkLight.h>
 #include <vtkLightCollection.h>
-#include <vtkProperty.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
 #include <vtkTexture.h>
@@ -86,7 +85,7 @@ void CopyDisplay(vtkLightFieldActor* actor, const WalkthroughReliefs& reliefs)
   {
     if (vtkReliefMapper* mapper = vtkReliefMapper::SafeDownCast(relief->GetMapper()))
     {
-      CopyWalkthroughDisplay(actor, mapper->GetReliefProperty());
+      vtkLightFieldReliefActor::CopyDisplay(actor, mapper->GetReliefProperty());
     }
   }
 }
@@ -138,13 +137,6 @@ WalkthroughReliefs::~WalkthroughReliefs()
   {
     this->Followed->RemoveObserver(this->FollowTag);
   }
-}
-
-void CopyWalkthroughDisplay(vtkLightFieldActor* actor, vtkReliefProperty* property)
-{
-  property->SetExposure(actor->GetExposure());
-  property->SetToneMapping(actor->GetToneMap() == vtkLightFieldActor::Reinhard);
-  property->EncodeSRGBOn(); // the walkthrough's radiance is sRGB-encoded (vtkLightFieldActor)
 }
 
 vtkRenderer* ReliefLayer(vtkLightFieldActor* actor, vtkRenderer* walkthrough,
@@ -251,57 +243,31 @@ int SetUpWalkthroughReliefs(const CommandLine& cl, const char* command, vtkLight
       std::cerr << command << ": --relief: " << error << "\n";
       return 2;
     }
+    // The relief actor VTK pipelines use (vtkLightFieldReliefActor), its surface filter lent the
+    // Embree scene built above and updated here so that its errors end the command.
+    vtkNew<vtkLightFieldReliefActor> relief;
+    relief->SetLightFieldActor(actor);
+    relief->SetSurfaceName(name.c_str());
+    relief->SetReliefTextureData(texture);
+    relief->SetDepthScale(depthScale);
+    relief->SetProbesPerSide(probesPerSide);
+    relief->SetOcclusion(occlusion);
+    vtkLightFieldReliefSurface* surface = relief->GetReliefSurface();
+    if (occlusion)
+    {
+      vtkLightFieldReliefSurfaceCore::LendEmbreeScene(surface, field, embree);
+    }
     vtkNew<MessageCollector> messages;
-    vtkNew<vtkLightFieldReliefSurface> surface;
     messages->Watch(surface);
     vtkNew<MessageCollector> executiveNoise; // its "returned failure" follow-up
     executiveNoise->Watch(surface->GetExecutive());
-    surface->SetLightFieldActor(actor);
-    surface->SetSurfaceName(name.c_str());
-    surface->SetProbesPerSide(probesPerSide);
-    if (occlusion)
-    {
-      // The relief's occlusion of its indirect light and its inter-reflection (its visible-share
-      // map), and the scene's shadows of the emitter lights, added to the probes; walled, as the
-      // CPU reference's relief recessed into its wall.
-      surface->SetReliefTextureData(texture);
-      surface->SetReliefDepthScale(depthScale);
-      surface->WalledReliefOn();
-      surface->SceneOcclusionOn();
-      vtkLightFieldReliefSurfaceCore::LendEmbreeScene(surface, field, embree);
-    }
-    surface->Update();
+    relief->GetBounds(); // updates the surface
     if (!messages->Errors.empty())
     {
       std::cerr << command << ": --relief: " << messages->ErrorText() << "\n";
       return 2;
     }
-    // A vtkReliefMapper that also draws the movable object's shadow as the walls show it.
-    vtkNew<vtkLightFieldReliefMapper> mapper;
-    mapper->SetLightFieldActor(actor);
-    mapper->SetInputConnection(surface->GetOutputPort(0));
-    mapper->SetReliefTextureData(texture);
-    mapper->SetIrradianceProbesConnection(surface->GetOutputPort(1));
-    vtkReliefProperty* property = mapper->GetReliefProperty();
-    property->SetDepthScale(depthScale);
-    property->SetSelfShadowing(true);
-    // The surface's own emitter lights: the probes' scene visibility is per light of that list
-    // (more lamps than the relief shades are merged with this wall's nearest lamps kept apart).
-    property->SetLights(surface->GetEmitterLights());
-    // A relief on a lamp or a window still emits its light.
-    property->SetEmission(surface->GetSurfaceEmission());
-    // A wall of a closed room has no silhouette: a view ray leaving the texture at its edge
-    // would show the background through the hidden wall (the CPU reference keeps the wall there).
-    property->SilhouettesOff();
-    vtkNew<vtkActor> relief;
-    relief->SetMapper(mapper);
-    const double* kd = surface->GetSurfaceDiffuse();
-    relief->GetProperty()->SetColor(kd[0], kd[1], kd[2]);
-    relief->GetProperty()->SetAmbient(0.0);
-    relief->GetProperty()->SetDiffuse(1.0);
-    relief->GetProperty()->SetSpecular(0.0);
     renderer->AddActor(relief);
-    actor->AddHiddenSurface(name);
     reliefs.Surfaces.emplace_back(surface);
     reliefs.Actors.emplace_back(relief);
   }

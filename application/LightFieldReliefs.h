@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // `--relief SURFACE=DEPTH_IMAGE` in the walkthrough (`mesolight vlf view`, `vlf render --mode`):
-// each named surface of the field's scene drawn by vtkReliefMapper (its relief texture baked from
-// the depth image as `mesolight render` bakes it), lit by the field (vtkLightFieldReliefSurface:
-// the indirect light as SH9 probes, the emitters as VTK lights), the flat surface hidden from the
-// light field actor. The reliefs live in a renderer of their own on the window's second layer,
+// each named surface of the field's scene drawn by a vtkLightFieldReliefActor (its relief texture
+// baked from the depth image as `mesolight render` bakes it), lit by the field (the indirect
+// light as SH9 probes, the emitters as VTK lights), the flat surface hidden from the light field
+// actor. The reliefs live in a renderer of their own on the window's second layer,
 // sharing the walkthrough's camera and depth buffer: the emitter lights light them only (the
 // walkthrough's geometry mode is lit by its own renderer's lights).
 #ifndef mesolight_LightFieldReliefs_h
@@ -21,7 +21,6 @@
 
 class vtkActor;
 class vtkLightFieldReliefSurface;
-class vtkReliefProperty;
 class vtkRenderer;
 class vtkRenderWindow;
 
@@ -49,12 +48,6 @@ struct WalkthroughReliefs
   vtkWeakPointer<vtkLightFieldActor> Followed;
   unsigned long FollowTag = 0;
 };
-
-/**
- * The walkthrough's display (exposure, tone map, sRGB encoding) on a relief drawn beside it, so
- * the same radiance shows as the same pixel value.
- */
-void CopyWalkthroughDisplay(vtkLightFieldActor* actor, vtkReliefProperty* property);
 
 /**
  * The reliefs' renderer, set up on the first call: layer 1 of `window` above `walkthrough`,

@@ -13,8 +13,10 @@ from vtkmodules.util.numpy_support import numpy_to_vtk
 from vtkmodules.vtkCommonCore import VTK_STRING, vtkCommand
 from vtkmodules.vtkCommonDataModel import vtkImageData
 
-from mesolight import (vtkConeMapFilter, vtkMedianCutLights, vtkOIIOImageReader,
-                       vtkProceduralEnvironmentSource)
+from mesolight import (vtkConeMapFilter, vtkCornellBoxSource, vtkLightFieldActor,
+                       vtkLightFieldReliefActor, vtkMedianCutLights, vtkOIIOImageReader,
+                       vtkProceduralEnvironmentSource, vtkProceduralReliefSource,
+                       vtkReliefTextureFilter, vtkVirtualLightField)
 
 
 class ErrorRecorder:
@@ -57,6 +59,21 @@ def expect_error(name, algorithm, pattern, output_size):
     return True
 
 
+def expect_actor_error(name, actor, pattern):
+    surface = actor.GetReliefSurface()
+    errors = ErrorRecorder(actor, surface, surface.GetExecutive())
+    bounds = actor.GetBounds()
+    empty = bounds is None or bounds[1] < bounds[0]
+    matched = [m for m in errors.messages if pattern.lower() in m.lower()]
+    print(f"{name}: {len(errors.messages)} error(s), empty: {empty}: "
+          f"{matched[0].strip().splitlines()[-1] if matched else '(none)'}")
+    if not matched:
+        print(f"  FAIL: no error mentioning '{pattern}'")
+    if not empty:
+        print("  FAIL: bounds despite the error")
+    return bool(matched) and empty
+
+
 def main():
     ok = True
     points = lambda a: a.GetOutput().GetNumberOfPoints()  # noqa: E731
@@ -80,6 +97,37 @@ def main():
     # A cone map filter without an input.
     cones = vtkConeMapFilter()
     ok &= expect_error("no input", cones, "input", points)
+
+    # A relief actor on a light field: no texture, then a surface the scene does not have. The
+    # actor is measured (GetBounds updates it, as a render does): an error, nothing to draw.
+    box = vtkCornellBoxSource()
+    field = vtkVirtualLightField()
+    field.SetInputConnection(box.GetOutputPort())
+    field.SetDirections(129)
+    field.SetRaysPerSide(8)
+    field.SetIterations(1)
+    walkthrough = vtkLightFieldActor()
+    walkthrough.SetLightFieldFilter(field)
+    walkthrough.GetBounds()  # propagates
+    relief = vtkLightFieldReliefActor()
+    relief.SetLightFieldActor(walkthrough)
+    relief.SetSurfaceName("back")
+    ok &= expect_actor_error("relief actor without a texture", relief, "relief texture")
+    bricks = vtkProceduralReliefSource()
+    bake = vtkReliefTextureFilter()
+    bake.SetInputConnection(bricks.GetOutputPort(0))
+    bake.Update()
+    relief.SetReliefTextureData(bake.GetOutput())
+    walkthrough.RemoveAllHiddenSurfaces()
+    relief.SetSurfaceName("wall")  # the walkthrough reports it too
+    ok &= expect_actor_error("relief actor on an unknown surface", relief, "back, left")
+    relief.SetSurfaceName("back")
+    errors = ErrorRecorder(relief, relief.GetReliefSurface())
+    bounds = relief.GetBounds()
+    good = bounds[1] > bounds[0] and not errors.messages
+    print(f"relief actor on 'back' afterwards: x from {bounds[0]:.3f} to {bounds[1]:.3f}, "
+          f"{len(errors.messages)} errors")
+    ok &= good
 
     # The same filter goes on working with a good input.
     sky = vtkProceduralEnvironmentSource()

@@ -4,19 +4,19 @@
  * @brief   a vtkReliefMapper for a relief on a wall of a light field walkthrough, darkened by the
  *          walkthrough's movable object's shadow as the flat walls are
  *
- * Private to Mesolight::LightFieldActor (header not installed: Mesolight::Relief is a private
- * dependency), for code built in this tree (`mesolight vlf view --relief`). The relief of a
- * static surface of the field's scene (vtkLightFieldReliefSurface's outputs) is
- * drawn by vtkReliefMapper on a layer of its own; the movable object's shadow (Wither 2005,
- * "Interactive dynamic objects in a virtual light field", ch. 4; mesolight::vlf::ObjectShadows)
- * is drawn by the light field actor's own mapper on its surfaces only. This mapper follows the
- * actor given by SetLightFieldActor: while the actor draws the object's shadow (a radiance mode,
- * an object casting shadows), the relief's linear radiance at its hit point is shaded by the same
- * shader code (glsl/vtkLightFieldShadowFS.glsl through vtkReliefMapper's radiance hook,
- * glsl/vtkLightFieldReliefShadowFS.glsl), the same maps and mode, at the wall's macro normal;
- * otherwise the shadow code is left out of the shader (a software rasteriser would pay for it on
- * every fragment) and it draws as vtkReliefMapper does. Not for a relief on the movable object
- * itself (it would shadow itself with its own maps).
+ * Private to Mesolight::LightFieldActor (header not installed): vtkLightFieldReliefActor draws a
+ * static surface's relief with it, and code built in this tree a relief-mapped movable object
+ * (`mesolight vlf view --object-relief`). The relief of a static surface of the field's scene
+ * (vtkLightFieldReliefSurface's outputs) is drawn by vtkReliefMapper; the movable object's shadow
+ * (Wither 2005, "Interactive dynamic objects in a virtual light field", ch. 4;
+ * mesolight::vlf::ObjectShadows) is drawn by the light field actor's own mapper on its surfaces
+ * only. This mapper follows the actor given by SetLightFieldActor: while the actor draws the
+ * object's shadow (a radiance mode, an object casting shadows), the relief's linear radiance at its
+ * hit point is shaded by the same shader code (glsl/vtkLightFieldShadowFS.glsl through
+ * vtkReliefMapper's radiance hook, glsl/vtkLightFieldReliefShadowFS.glsl), the same maps and mode,
+ * at the wall's macro normal; otherwise the shadow code is left out of the shader (a software
+ * rasteriser would pay for it on every fragment) and it draws as vtkReliefMapper does. Not for a
+ * relief on the movable object itself (it would shadow itself with its own maps).
  */
 #ifndef vtkLightFieldReliefMapper_h
 #define vtkLightFieldReliefMapper_h
