@@ -11,6 +11,8 @@
 # PART match: the walkthrough's relief against the CPU reference's, same camera, on V-grooves:
 # mean relative error over the relief's pixels within 4% (needs the relief mapper's SH9 shading
 # with the precomputed visible share); negative: without the occlusion it is above 8%.
+# PART python: the same check on examples/python/relief_in_light_field.py (PYTHON: the runner,
+# scripts/python.sh; BUILD_DIR, EXAMPLE): a VTK Python script's vtkLightFieldReliefActor.
 include("${CMAKE_CURRENT_LIST_DIR}/RunTool.cmake")
 cli_fresh_work()
 
@@ -38,6 +40,27 @@ if (_inside LESS 50)
   message(FATAL_ERROR "the back wall covers ${_inside}/1000 of the CPU image: not the camera the "
     "test expects")
 endif ()
+
+# V-shaped grooves (4 per wall, walls at 45 degrees at depth scale 0.1) as vgrooves.pgm.
+macro (write_vgrooves)
+  set(_vgrooves "P2\n64 16\n255\n")
+  set(_row "")
+  foreach (_i RANGE 63)
+    math(EXPR _x "(${_i} % 16) * 2 + 1 - 16") # twice the offset from the groove's centre
+    if (_x LESS 0)
+      math(EXPR _x "-${_x}")
+    endif ()
+    math(EXPR _depth "255 - 255 * ${_x} / 12")
+    if (_depth LESS 0)
+      set(_depth 0)
+    endif ()
+    string(APPEND _row "${_depth} ")
+  endforeach ()
+  foreach (_r RANGE 15)
+    string(APPEND _vgrooves "${_row}\n")
+  endforeach ()
+  file(WRITE "${WORK}/vgrooves.pgm" "${_vgrooves}")
+endmacro ()
 
 if (PART STREQUAL "walk")
   # The walkthrough reads a height map with --relief-height as the relief mapper and the CPU
@@ -126,38 +149,42 @@ if (PART STREQUAL "walk")
   endforeach ()
   cli_expect_error(2 "--out" vlf render "${WORK}/box.vlf" --mode geometry
     --relief back=${WORK}/grooves.pgm --out "${WORK}/grooves.pgm" --force)
-elseif (PART STREQUAL "match")
-  # V-shaped grooves (4 per wall, walls at 45 degrees at depth scale 0.1): the relief's
-  # occlusion of its indirect light and its inter-reflection matter on every wall, and no step
-  # edge makes the comparison one of where a ray lands. The GPU (the relief mapper, the
-  # precomputed visible share) against the CPU (32 marched directions per pixel), both with the
-  # multi-bounce inter-reflection and the scene's shadows of the lamp.
-  set(_vgrooves "P2\n64 16\n255\n")
-  set(_row "")
-  foreach (_i RANGE 63)
-    math(EXPR _x "(${_i} % 16) * 2 + 1 - 16") # twice the offset from the groove's centre
-    if (_x LESS 0)
-      math(EXPR _x "-${_x}")
-    endif ()
-    math(EXPR _depth "255 - 255 * ${_x} / 12")
-    if (_depth LESS 0)
-      set(_depth 0)
-    endif ()
-    string(APPEND _row "${_depth} ")
-  endforeach ()
-  foreach (_r RANGE 15)
-    string(APPEND _vgrooves "${_row}\n")
-  endforeach ()
-  file(WRITE "${WORK}/vgrooves.pgm" "${_vgrooves}")
+elseif (PART STREQUAL "match" OR PART STREQUAL "python")
+  # V-shaped grooves: the relief's occlusion of its indirect light and its inter-reflection
+  # matter on every wall, and no step edge makes the comparison one of where a ray lands. The GPU
+  # (the relief mapper, the precomputed visible share) against the CPU (32 marched directions per
+  # pixel), both with the multi-bounce inter-reflection and the scene's shadows of the lamp. The
+  # GPU relief is the walkthrough's (`vlf render --mode progressive --relief`), or (PART python)
+  # examples/python/relief_in_light_field.py's: a vtkLightFieldReliefActor beside a
+  # vtkLightFieldActor in a VTK Python script, on the same snapshot, camera and image.
+  write_vgrooves()
   set(_vrelief --relief back=${WORK}/vgrooves.pgm --relief-depth-scale 0.1)
   cli_run(TRUE vlf render "${WORK}/box.vlf" --size ${_size} ${_vrelief}
     --out "${WORK}/cpu-vgrooves.png")
-  cli_run(TRUE vlf render "${WORK}/box.vlf" --mode progressive --size ${_size} ${_vrelief}
-    --out "${WORK}/gpu-vgrooves.png")
-  # Negative: the relief mapper without the occlusion (the SH irradiance at the perturbed
-  # normal, the lamp unshadowed by the scene) is 11% off and too dark.
-  cli_run(TRUE vlf render "${WORK}/box.vlf" --mode progressive --size ${_size} ${_vrelief}
-    --relief-no-occlusion --out "${WORK}/unoccluded-vgrooves.png")
+  if (PART STREQUAL "match")
+    cli_run(TRUE vlf render "${WORK}/box.vlf" --mode progressive --size ${_size} ${_vrelief}
+      --out "${WORK}/gpu-vgrooves.png")
+    # Negative: the relief mapper without the occlusion (the SH irradiance at the perturbed
+    # normal, the lamp unshadowed by the scene) is 11% off and too dark.
+    cli_run(TRUE vlf render "${WORK}/box.vlf" --mode progressive --size ${_size} ${_vrelief}
+      --relief-no-occlusion --out "${WORK}/unoccluded-vgrooves.png")
+  else ()
+    string(REPLACE "x" ";" _sides "${_size}")
+    list(GET _sides 0 _side)
+    foreach (_which IN ITEMS gpu unoccluded)
+      set(_flag)
+      if (_which STREQUAL "unoccluded")
+        set(_flag --no-occlusion)
+      endif ()
+      execute_process(COMMAND ${CMAKE_COMMAND} -E env "MESOLIGHT_BUILD_DIR=${BUILD_DIR}"
+        "${PYTHON}" "${EXAMPLE}" "${WORK}/${_which}-vgrooves.png" --field "${WORK}/box.vlf"
+        --depth "${WORK}/vgrooves.pgm" --surface back --depth-scale 0.1 --size ${_side} ${_flag}
+        RESULT_VARIABLE _status OUTPUT_VARIABLE _out ERROR_VARIABLE _err)
+      if (NOT _status EQUAL 0)
+        message(FATAL_ERROR "relief_in_light_field.py ${_flag} failed (${_status}):\n${_out}${_err}")
+      endif ()
+    endforeach ()
+  endif ()
   # sRGB-encoded PNGs of all (exposure 1, clamp): decoded to linear, compared over the relief
   # after a 3-pixel blur (one ray per pixel each: at the grooves' creases the two renderers'
   # hits differ by up to a pixel). (x 100: exr_stat_milli's thousandths then resolve 0.1% of the
@@ -170,13 +197,13 @@ elseif (PART STREQUAL "match")
   foreach (_which IN ITEMS gpu unoccluded)
     cli_oiiotool("${WORK}/${_which}-in.exr" "${WORK}/cpu-in.exr" --absdiff -o "${WORK}/${_which}-error.exr")
     exr_stat_milli("${WORK}/${_which}-error.exr" Avg _error_${_which})
-    message("relief, red, ${_which}: mean |GPU - CPU| ${_error_${_which}}, CPU mean ${_reference} "
-      "(1/100000 of the image)")
+    message("relief, red, ${_which} (${PART}): mean |GPU - CPU| ${_error_${_which}}, CPU mean "
+      "${_reference} (1/100000 of the image)")
   endforeach ()
   # Measured 2.4% (the unoccluded 11.4%).
   math(EXPR _allowed "${_reference} * 4 / 100")
   if (_error_gpu GREATER _allowed)
-    message(FATAL_ERROR "the walkthrough's relief is not the CPU reference's within 4%")
+    message(FATAL_ERROR "the walkthrough's relief (${PART}) is not the CPU reference's within 4%")
   endif ()
   math(EXPR _needed "${_reference} * 8 / 100")
   if (NOT _error_unoccluded GREATER _needed)
