@@ -2,6 +2,7 @@
 #include "LightFieldReliefs.h"
 
 #include "CommandLine.h"
+#include "Timing.h"
 #include "ReliefScene.h" // BuildReliefTextures
 #include "VlfRelief.h"   // SetUpFieldReliefs, ReliefRadiance
 #include "vtkMessageCollector.h"
@@ -261,12 +262,17 @@ int SetUpWalkthroughReliefs(const CommandLine& cl, const char* command, vtkLight
     messages->Watch(surface);
     vtkNew<MessageCollector> executiveNoise; // its "returned failure" follow-up
     executiveNoise->Watch(surface->GetExecutive());
+    const auto start = std::chrono::steady_clock::now();
     relief->GetBounds(); // updates the surface
     if (!messages->Errors.empty())
     {
       std::cerr << command << ": --relief: " << messages->ErrorText() << "\n";
       return 2;
     }
+    // What the set-up cost, once per field and surface (scripts/bench-relief-probes.sh reads it).
+    const int probes = surface->GetProbesPerSideUsed();
+    std::cout << "relief on '" << name << "': " << probes << " x " << probes
+              << " SH9 probes, set up in " << SecondsSince(start) << " s\n";
     renderer->AddActor(relief);
     reliefs.Surfaces.emplace_back(surface);
     reliefs.Actors.emplace_back(relief);

@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: BSD-3-Clause
-# A relief on a large ground lit by the field keeps the scene's shadows: 10 m buildings on a
-# 200 m ground under a 40 m sky panel. The relief mapper's emitter lights carry the scene's
+# A relief on a large ground lit by the field keeps the scene's shadows: examples/data/town.obj,
+# 10 m buildings on a 200 m ground under a 40 m sky panel. The relief mapper's emitter lights carry the scene's
 # shadow as one factor per SH9 probe; 8 probes a side (25 m apart) averaged the buildings'
 # shadows away where the CPU reference (`vlf render --relief`, a shadow ray per emitter sample)
 # draws them. The automatic probe count (one per field line cell across the surface,
@@ -10,49 +10,9 @@
 include("${CMAKE_CURRENT_LIST_DIR}/RunTool.cmake")
 cli_fresh_work()
 
-set(_obj "mtllib town.mtl\n")
-set(_faces "")
-set(_v 0)
-# quad(material x0 y0 z0 x1 y1 z1 x2 y2 z2 x3 y3 z3)
-macro (quad material)
-  set(_c ${ARGN})
-  foreach (_k 0 3 6 9)
-    math(EXPR _k1 "${_k} + 1")
-    math(EXPR _k2 "${_k} + 2")
-    list(GET _c ${_k} _x)
-    list(GET _c ${_k1} _y)
-    list(GET _c ${_k2} _z)
-    string(APPEND _obj "v ${_x} ${_y} ${_z}\n")
-  endforeach ()
-  math(EXPR _a "${_v} + 1")
-  math(EXPR _b "${_v} + 2")
-  math(EXPR _d "${_v} + 3")
-  math(EXPR _e "${_v} + 4")
-  string(APPEND _faces "usemtl ${material}\nf ${_a} ${_b} ${_d} ${_e}\n")
-  math(EXPR _v "${_v} + 4")
-endmacro ()
-# A box standing on the ground: four sides and a roof, facing out.
-macro (box material x0 y0 x1 y1 h)
-  quad(${material} ${x0} ${y0} 0 ${x1} ${y0} 0 ${x1} ${y0} ${h} ${x0} ${y0} ${h})
-  quad(${material} ${x1} ${y0} 0 ${x1} ${y1} 0 ${x1} ${y1} ${h} ${x1} ${y0} ${h})
-  quad(${material} ${x1} ${y1} 0 ${x0} ${y1} 0 ${x0} ${y1} ${h} ${x1} ${y1} ${h})
-  quad(${material} ${x0} ${y1} 0 ${x0} ${y0} 0 ${x0} ${y0} ${h} ${x0} ${y1} ${h})
-  quad(${material} ${x0} ${y0} ${h} ${x1} ${y0} ${h} ${x1} ${y1} ${h} ${x0} ${y1} ${h})
-endmacro ()
-string(APPEND _faces "g ground\n")
-quad(ground -100 -100 0 100 -100 0 100 100 0 -100 100 0)
-string(APPEND _faces "g buildings\n")
-box(white -20 -5 -10 5 10)
-box(white 10 0 20 10 10)
-box(white -4 -24 4 -16 12)
-string(APPEND _faces "g sky\n")
-quad(sun -50 -20 80 -50 20 80 -10 20 80 -10 -20 80)
-file(WRITE "${WORK}/town.obj" "${_obj}${_faces}")
-file(WRITE "${WORK}/town.mtl" "newmtl ground\nKd 0.5 0.45 0.4\nnewmtl white\nKd 0.8 0.8 0.8\n"
-  "newmtl sun\nKd 0 0 0\nKe 20 20 18\n")
 file(WRITE "${WORK}/zero.pgm" "P2\n2 2\n255\n0 0\n0 0\n")
 
-cli_run(TRUE vlf propagate "${WORK}/town.obj" --directions 513 --rays 32 --iterations 2
+cli_run(TRUE vlf propagate "${DATA}/town.obj" --directions 513 --rays 32 --iterations 2
   --out "${WORK}/town.vlf")
 set(_view --size 96x96 --camera 70,-90,45,0,0,5,0,0,1 --relief ground=${WORK}/zero.pgm)
 cli_run(TRUE vlf render "${WORK}/town.vlf" ${_view} --out "${WORK}/cpu.png"
