@@ -114,6 +114,20 @@ ImageFileInfo CheckSpec(
     CheckImageHeader(path, turned ? spec.height : spec.width, turned ? spec.width : spec.height,
       spec.depth, spec.nchannels, SampleType(spec.format), memoryBudget);
   info.Orientation = orientation;
+  if (orientation != 1)
+  {
+    // Read as stored into a second buffer, then turned into the output (ReadImageFile): both
+    // are held at once.
+    std::ostringstream what;
+    what << "the " << info.Width << " x " << info.Height << " pixels of image '" << path
+         << "', turned or mirrored as its Orientation tag " << orientation
+         << " says (read through a second buffer of the same size)";
+    const std::string budget = CheckMemoryBudget(what.str(), 2 * info.ByteSize(), memoryBudget);
+    if (!budget.empty())
+    {
+      Refuse(ImageFileStatus::TooLarge, "Cannot read image '" + path + "': " + budget);
+    }
+  }
   return info;
 }
 

@@ -291,6 +291,14 @@ TEST(ImageFile, OrientedFilesAreReadAsShown)
       }
     }
   }
+  // A turned file is read through a second buffer: its 24 bytes of pixels need 48 of the
+  // budget, as the refusal says; the file stored upright fits 32.
+  ImageFileInfo info;
+  std::string message;
+  EXPECT_EQ(Info(dir / "oriented-1.tif", info, message, 32), Accepted) << message;
+  EXPECT_EQ(Info(dir / "oriented-6.tif", info, message, 32), ImageFileStatus::TooLarge);
+  EXPECT_NE(message.find("Orientation tag 6"), std::string::npos) << message;
+  EXPECT_EQ(Info(dir / "oriented-6.tif", info, message, 48), Accepted) << message;
 }
 
 TEST(ImageFile, AbsurdDimensionsAreRefusedBeforeAllocating)
