@@ -2,9 +2,9 @@
 #include "LightFieldReliefs.h"
 
 #include "CommandLine.h"
-#include "Timing.h"
 #include "ReliefScene.h" // BuildReliefTextures
-#include "VlfRelief.h"   // SetUpFieldReliefs, ReliefRadiance
+#include "Timing.h"
+#include "VlfRelief.h" // SetUpFieldReliefs, ReliefRadiance
 #include "vtkMessageCollector.h"
 
 #include "WalkthroughTracer.h" // TracedReliefs

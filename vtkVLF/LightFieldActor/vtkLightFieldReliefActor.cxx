@@ -3,12 +3,16 @@
 
 #include "vtkImageData.h"
 #include "vtkLightFieldActor.h"
+#include "vtkLightFieldActorCore.h"
 #include "vtkLightFieldReliefMapper.h"
 #include "vtkLightFieldReliefSurface.h"
 #include "vtkObjectFactory.h"
 #include "vtkPolyData.h"
 #include "vtkProperty.h"
 #include "vtkReliefProperty.h"
+
+#include "LightField.h"
+#include "TriangleScene.h"
 
 vtkStandardNewMacro(vtkLightFieldReliefActor);
 
@@ -72,10 +76,24 @@ void vtkLightFieldReliefActor::HideSurface()
 {
   // Now, not at the first frame: the walkthrough may draw before this actor in that frame, and
   // its flat surface in front of the relief would hide it.
-  if (this->LightFieldActor && !this->SurfaceName.empty())
+  if (!this->LightFieldActor || this->SurfaceName.empty())
   {
-    this->LightFieldActor->AddHiddenSurface(this->SurfaceName);
+    return;
   }
+  if (const mesolight::vlf::LightField* field =
+        vtkLightFieldActorCore::GetLightField(this->LightFieldActor))
+  {
+    try
+    {
+      mesolight::SurfaceTriangles(field->Scene(), this->SurfaceName);
+    }
+    catch (const mesolight::SceneSurfaceError&)
+    {
+      return; // the surface filter reports the name once, with the scene's names
+    }
+  }
+  // (A field not loaded yet checks the name when it loads.)
+  this->LightFieldActor->AddHiddenSurface(this->SurfaceName);
 }
 
 //------------------------------------------------------------------------------
@@ -185,6 +203,7 @@ bool vtkLightFieldReliefActor::Prepare()
     if (this->Drawable)
     {
       this->GetProperty()->SetColor(this->Surface->GetSurfaceDiffuse());
+      this->HideSurface(); // if the field was not there when the name was set
     }
   }
   if (this->Drawable)
