@@ -36,43 +36,6 @@ const char* const ImageFieldArrays[] = { "MesolightDepthScale", "MesolightConeTy
 // A flat surface whose drawn proportions differ from the map's by more than this is warned about.
 constexpr double StretchTolerance = 0.02;
 
-// Adds image's scalars (shared, not copied) and size under prefix; false if it has none.
-bool Attach(vtkImageData* image, const char* prefix, vtkFieldData* field)
-{
-  vtkDataArray* scalars = image ? image->GetPointData()->GetScalars() : nullptr;
-  int dims[3] = { 0, 0, 0 };
-  if (image)
-  {
-    image->GetDimensions(dims);
-  }
-  if (!scalars || dims[0] < 1 || dims[1] < 1 || dims[2] != 1)
-  {
-    return false;
-  }
-  vtkSmartPointer<vtkDataArray> texels =
-    vtkSmartPointer<vtkDataArray>::Take(scalars->NewInstance());
-  texels->ShallowCopy(scalars); // the same memory under our name
-  texels->SetName(prefix);
-  field->AddArray(texels);
-  vtkNew<vtkIntArray> size;
-  size->SetName((std::string(prefix) + "Size").c_str());
-  size->InsertNextValue(dims[0]);
-  size->InsertNextValue(dims[1]);
-  field->AddArray(size);
-  for (const char* name : ImageFieldArrays)
-  {
-    if (vtkAbstractArray* a = image->GetFieldData()->GetAbstractArray(name))
-    {
-      vtkSmartPointer<vtkAbstractArray> copy =
-        vtkSmartPointer<vtkAbstractArray>::Take(a->NewInstance());
-      copy->DeepCopy(a);
-      copy->SetName((std::string(prefix) + (name + 9)).c_str()); // drop "Mesolight"
-      field->AddArray(copy);
-    }
-  }
-  return true;
-}
-
 // How many times as tall as wide, per texture unit, a flat surface draws its texture; 0 when it
 // is not a flat vtkPolyData of polygons with texture coordinates (curved meshes are parametrised
 // with a stretch of their own).
@@ -250,7 +213,7 @@ int vtkAttachReliefTexture::RequestData(
                      "on without a relief.");
     return 1;
   }
-  if (!Attach(relief, ReliefPrefix, field))
+  if (!this->Attach(relief, 1, ReliefPrefix, field))
   {
     vtkErrorMacro(<< "The relief texture (input port 1) must be a non-empty 2D image with point "
                      "scalars: connect Mesolight Relief Texture's (or Cone Map's) output as the "
@@ -261,6 +224,7 @@ int vtkAttachReliefTexture::RequestData(
   // whatever the map) stretches every feature of the relief: say so, and what to use instead.
   const double drawn = FlatSurfaceHeightOverWidth(input);
   const double ground = vtkReliefPlaneFilter::GetGroundProportions(relief);
+  std::string stretchWarning;
   if (drawn > 0.0 && std::abs(std::log(drawn / ground)) > std::log(1.0 + StretchTolerance))
   {
     std::ostringstream stretch;
@@ -273,20 +237,30 @@ int vtkAttachReliefTexture::RequestData(
             << (drawn > ground ? " times too tall" : " times too wide")
             << ". Make the surface with Filters > Mesolight > Mesolight Relief Plane (input: the "
                "Relief Texture), which takes the map's proportions, or scale the texture "
-               "coordinates (VTK: vtkReliefPlaneFilter).";
-    vtkWarningMacro(<< stretch.str());
+               "coordinates: for a surface placed on a wall, a Calculator before this filter "
+               "(Point Data, Result TCoords, e.g. TextureCoordinates_X * "
+            << (drawn < ground ? ground / drawn : 1.0) << " * iHat + TextureCoordinates_Y * "
+            << (drawn > ground ? drawn / ground : 1.0)
+            << " * jHat) repeats the map at its proportions (VTK: vtkReliefPlaneFilter).";
+    stretchWarning = stretch.str();
   }
+  // Once, not at every re-execution (a colour texture attached, a setting changed).
+  if (!stretchWarning.empty() && stretchWarning != this->LastStretchWarning)
+  {
+    vtkWarningMacro(<< stretchWarning);
+  }
+  this->LastStretchWarning = stretchWarning;
   // A light set or colour image that cannot be attached (an empty one from a source that failed,
   // e.g. Median Cut Lights on a 1 x 1 map) is an error, but the relief stays: drawn without it
   // (lit by the view's lights; its own colour), as the mapper draws a malformed light set.
-  if (lights && !Attach(lights, LightSetPrefix, field))
+  if (lights && !this->Attach(lights, 2, LightSetPrefix, field))
   {
     vtkErrorMacro(<< "The light set (input port 2) must be a non-empty 2D image with point "
                      "scalars: connect Mesolight Median Cut Lights' second output (LightTexture) "
                      "as the Light Set input (VTK: vtkMedianCutLights' output port 1); if its "
                      "source failed, see its error. The relief is drawn without it.");
   }
-  if (color && !Attach(color, ColorPrefix, field))
+  if (color && !this->Attach(color, 3, ColorPrefix, field))
   {
     vtkErrorMacro(<< "The colour texture (input port 3) must be a non-empty 2D image with point "
                      "scalars in the relief texture's coordinates, e.g. Mesolight Depth "
@@ -294,6 +268,49 @@ int vtkAttachReliefTexture::RequestData(
   }
   this->UpdateProgress(1.0);
   return 1;
+}
+
+//------------------------------------------------------------------------------
+bool vtkAttachReliefTexture::Attach(
+  vtkImageData* image, int port, const char* prefix, vtkFieldData* field)
+{
+  vtkDataArray* scalars = image ? image->GetPointData()->GetScalars() : nullptr;
+  int dims[3] = { 0, 0, 0 };
+  if (image)
+  {
+    image->GetDimensions(dims);
+  }
+  if (!scalars || dims[0] < 1 || dims[1] < 1 || dims[2] != 1)
+  {
+    return false;
+  }
+  AttachedArray& kept = this->AttachedArrays[port];
+  if (kept.Source != scalars || kept.SourceTime != scalars->GetMTime() || !kept.Attached)
+  {
+    kept.Attached = vtkSmartPointer<vtkDataArray>::Take(scalars->NewInstance());
+    kept.Attached->ShallowCopy(scalars); // the same memory under our name
+    kept.Attached->SetName(prefix);
+    kept.Source = scalars;
+    kept.SourceTime = scalars->GetMTime();
+  }
+  field->AddArray(kept.Attached);
+  vtkNew<vtkIntArray> size;
+  size->SetName((std::string(prefix) + "Size").c_str());
+  size->InsertNextValue(dims[0]);
+  size->InsertNextValue(dims[1]);
+  field->AddArray(size);
+  for (const char* name : ImageFieldArrays)
+  {
+    if (vtkAbstractArray* a = image->GetFieldData()->GetAbstractArray(name))
+    {
+      vtkSmartPointer<vtkAbstractArray> copy =
+        vtkSmartPointer<vtkAbstractArray>::Take(a->NewInstance());
+      copy->DeepCopy(a);
+      copy->SetName((std::string(prefix) + (name + 9)).c_str()); // drop "Mesolight"
+      field->AddArray(copy);
+    }
+  }
+  return true;
 }
 
 //------------------------------------------------------------------------------

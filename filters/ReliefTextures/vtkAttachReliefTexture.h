@@ -24,7 +24,8 @@
  * A flat polygonal surface whose texture coordinates draw the map more than 2% out of its
  * proportions on the ground (vtkReliefPlaneFilter::GetGroundProportions; a vtkPlaneSource is
  * square whatever the map) stretches every feature of the relief: a warning says by how much and
- * names vtkReliefPlaneFilter (ParaView's Mesolight Relief Plane). Curved surfaces are not judged:
+ * names vtkReliefPlaneFilter (ParaView's Mesolight Relief Plane), once until the stretch changes.
+ * Curved surfaces are not judged:
  * their parametrisation has a stretch of its own (mesolight::TextureProportions).
  *
  * Why field data: a ParaView representation has one input, and field data travels with every
@@ -39,8 +40,12 @@
 #include "vtkPassInputTypeAlgorithm.h"
 #include "vtkSmartPointer.h" // For the returned images
 
+#include <string> // For std::string
+
 class vtkAlgorithmOutput;
+class vtkDataArray;
 class vtkDataObject;
+class vtkFieldData;
 class vtkImageData;
 
 class MESOLIGHTRELIEFTEXTURES_EXPORT vtkAttachReliefTexture : public vtkPassInputTypeAlgorithm
@@ -79,6 +84,20 @@ protected:
 private:
   vtkAttachReliefTexture(const vtkAttachReliefTexture&) = delete;
   void operator=(const vtkAttachReliefTexture&) = delete;
+
+  // Adds the image's scalars (shared, not copied) and size under prefix; false if it has none.
+  // The array attached for input `port` is the same object while the image's scalars are: a
+  // consumer that keeps work per texture (the Relief Surface's visible-share map) tells a new
+  // texture from a re-execution for another input (e.g. a colour texture attached).
+  bool Attach(vtkImageData* image, int port, const char* prefix, vtkFieldData* field);
+  struct AttachedArray
+  {
+    vtkDataArray* Source = nullptr; // the image's scalars; compared only (with their time)
+    vtkMTimeType SourceTime = 0;
+    vtkSmartPointer<vtkDataArray> Attached;
+  };
+  AttachedArray AttachedArrays[4]; // per input port (1-3 used)
+  std::string LastStretchWarning;  // said once until the stretch changes
 };
 
 #endif

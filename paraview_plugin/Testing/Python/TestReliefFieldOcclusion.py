@@ -245,6 +245,13 @@ check(shallow_maps > maps, "a new depth scale computes the map again")
 view.CameraPosition = [300.0, 250.0, -700.0]
 pvs.Render(view)
 check(info("LightFieldVisibleShareMaps") == shallow_maps, "a render computes no map")
+# A colour texture attached (Attach Relief Texture runs again) computes no map either: the relief
+# texture is the same (before, each colour texture attached or removed computed it again).
+attached.ColorTexture = depth_reader
+capture("pv-occlusion-relief-colour.png")
+print("after a colour texture: visible-share maps %d" % info("LightFieldVisibleShareMaps"))
+check(info("LightFieldVisibleShareMaps") == shallow_maps,
+      "a colour texture attached computes no map")
 
 if failures:
     print("FAILED: " + "; ".join(failures))

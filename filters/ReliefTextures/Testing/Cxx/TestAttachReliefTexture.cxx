@@ -180,3 +180,55 @@ TEST(AttachReliefTexture, AMapOutOfItsProportionsOnTheSurfaceIsWarnedAbout)
   vtkNew<vtkTexturedSphereSource> sphere;
   EXPECT_EQ(AttachWarnings(sphere, wide), "");
 }
+
+// A re-execution for another input (a colour texture attached, ParaView's Apply) keeps the relief
+// texture's attached array: the Relief Surface keeps its visible-share map (seconds of work) per
+// array and recomputed it for every colour texture attached or removed. A new relief texture, or
+// the same one modified, is a new array. The stretch warning is said once, not per re-execution,
+// and again when the stretch changes; it says how to tile the map on a wall.
+TEST(AttachReliefTexture, AReExecutionKeepsTheReliefArrayAndSaysTheStretchOnce)
+{
+  vtkNew<vtkPlaneSource> square;
+  vtkNew<vtkTrivialProducer> relief;
+  auto wide = Image(8, 4, 4, 0.5f);
+  relief->SetOutput(wide);
+  vtkNew<vtkAttachReliefTexture> attach;
+  attach->SetInputConnection(square->GetOutputPort());
+  attach->SetReliefTextureConnection(relief->GetOutputPort());
+  vtkNew<mesolight_test::MessageCapture> messages;
+  messages->Watch(attach);
+  attach->Update();
+  const auto texels = [&attach]() {
+    return attach->GetOutputDataObject(0)->GetFieldData()->GetArray("MesolightReliefTexture");
+  };
+  vtkDataArray* first = texels();
+  ASSERT_NE(first, nullptr);
+  const std::string warned = messages->AllWarnings();
+  EXPECT_NE(warned.find("2 times too tall"), std::string::npos) << warned;
+  // Twice too tall: the map repeated twice up the surface keeps its proportions.
+  EXPECT_NE(warned.find("TextureCoordinates_X * 1 * iHat + TextureCoordinates_Y * 2 * jHat"),
+    std::string::npos)
+    << warned;
+
+  vtkNew<vtkTrivialProducer> color;
+  color->SetOutput(Image(8, 4, 3, 0.25f));
+  attach->SetColorTextureConnection(color->GetOutputPort());
+  attach->Update();
+  EXPECT_EQ(texels(), first) << "a colour texture attached made a new relief array";
+  EXPECT_EQ(messages->AllWarnings(), warned) << "the same stretch was said again";
+
+  wide->GetPointData()->GetScalars()->SetComponent(0, 3, 0.75);
+  wide->GetPointData()->GetScalars()->Modified();
+  relief->Modified();
+  attach->Update();
+  EXPECT_NE(texels(), first) << "a modified relief texture kept the old array";
+  EXPECT_EQ(texels()->GetComponent(0, 3), 0.75);
+
+  // Another stretch (a square map on the square plane: none), then the wide map again: said.
+  relief->SetOutput(Image(4, 4, 4, 0.5f));
+  attach->Update();
+  relief->SetOutput(Image(8, 4, 4, 0.5f));
+  attach->Update();
+  const std::string all = messages->AllWarnings();
+  EXPECT_NE(all.find("2 times too tall", warned.size()), std::string::npos) << all;
+}
