@@ -201,9 +201,10 @@ void vtkReliefSurfaceRepresentation::UpdateFieldLighting(vtkInformationVector* f
   const bool parallel = controller && controller->GetNumberOfProcesses() > 1;
   if (this->GetNumberOfInputConnections(1) == 0)
   {
-    if (this->FieldLit || this->GatheredProducer)
+    if (this->FieldLit || this->GatheredProducer || this->GatheredInput)
     {
       this->FieldLit = false;
+      this->GatheredInput = nullptr;
       this->GatheredProducer = nullptr;
       this->GatheredPropagation = -1;
       this->FieldSurface->SetLightFieldProducer(nullptr);
@@ -217,8 +218,8 @@ void vtkReliefSurfaceRepresentation::UpdateFieldLighting(vtkInformationVector* f
     }
     return;
   }
-  vtkVirtualLightField* producer =
-    vtkVirtualLightField::FindUpstream(this->GetInputAlgorithm(1, 0));
+  vtkAlgorithm* connected = this->GetInputAlgorithm(1, 0);
+  vtkVirtualLightField* producer = vtkVirtualLightField::FindUpstream(connected);
   const int propagation = producer ? producer->GetPropagationCount() : -1;
   vtkDataObject* geometry = this->GeometryFilter->GetOutputDataObject(0);
   // The shown geometry's points and polygons, not the data objects holding them: the geometry
@@ -237,8 +238,10 @@ void vtkReliefSurfaceRepresentation::UpdateFieldLighting(vtkInformationVector* f
       geometryTime = std::max(geometryTime, poly->GetPolys()->GetMTime());
     }
   }
-  int changed = (producer != this->GatheredProducer || propagation != this->GatheredPropagation ||
-                  geometryTime != this->GatheredGeometryTime)
+  // The connection too: another wrong choice (no field upstream either) is reported again.
+  int changed =
+    (connected != this->GatheredInput || producer != this->GatheredProducer ||
+      propagation != this->GatheredPropagation || geometryTime != this->GatheredGeometryTime)
     ? 1
     : 0;
   // The visible-share map's inputs: the relief texture (with the data), its depth scale, its edge.
@@ -285,6 +288,7 @@ void vtkReliefSurfaceRepresentation::UpdateFieldLighting(vtkInformationVector* f
     this->UseFieldSurfaceOutputs(producer != nullptr);
     return;
   }
+  this->GatheredInput = connected;
   this->GatheredProducer = producer;
   this->GatheredPropagation = propagation;
   this->GatheredGeometryTime = geometryTime;

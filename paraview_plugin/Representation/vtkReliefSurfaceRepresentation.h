@@ -181,6 +181,7 @@ protected:
   double FieldLogAverage = 0.0; // 0: none
   int ProbeGatherings = 0;
   // What the probes were gathered for: the field's producer and its propagation, the geometry.
+  vtkAlgorithm* GatheredInput = nullptr;            // the Light Field connected; compared only
   vtkVirtualLightField* GatheredProducer = nullptr; // not owned, compared only
   int GatheredPropagation = -1;
   vtkMTimeType GatheredGeometryTime = 0;

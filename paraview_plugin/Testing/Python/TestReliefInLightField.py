@@ -216,8 +216,17 @@ tag = window.AddObserver(vtkCommand.ErrorEvent,
                          lambda caller, event: messages.append("error"))
 relief.LightField = box
 bad = capture("pv-relief-field-bad-input.png")
+first_bad = len(messages)
+# Another wrong choice (the patch itself) is said again: each choice is the user's, and the
+# first message may have scrolled away (before, neither this one nor the one after unsetting a
+# field was said: only a change of the field's producer counted).
+relief.LightField = patch
+capture("pv-relief-field-bad-input-again.png")
 window.RemoveObserver(tag)
-print("bad input: %d error(s) reported" % len(messages))
+print("bad input: %d error(s) reported for the box, %d more for the patch"
+      % (first_bad, len(messages) - first_bad))
+check(first_bad > 0, "a Light Field that is no field is an error")
+check(len(messages) > first_bad, "a second wrong Light Field is an error again")
 check(float(np.abs(bad[footprint] - kit[footprint]).mean()) < 1.0,
       "a Light Field that is no field: the relief is drawn the ordinary way")
 
