@@ -19,6 +19,7 @@
 #include "vtkSmartPointer.h"
 
 #include <cstring>
+#include <utility>
 #include <vector>
 
 vtkStandardNewMacro(vtkSMReliefSurfaceRepresentationProxy);
@@ -178,18 +179,20 @@ void vtkSMReliefSurfaceRepresentationProxy::UpdateLightSetAttached(vtkSMProxy* c
     return;
   }
   vtkPVDataInformation* info = source->GetDataInformation(input.GetOutputPort(0));
-  // A Light Field input shades with the same exposure and tone mapping as a light set.
   const bool fieldSet = this->GetProperty("LightField") &&
     vtkSMPropertyHelper(this, "LightField").GetNumberOfElements() > 0 &&
     vtkSMPropertyHelper(this, "LightField").GetAsProxy(0);
   const bool lightSet =
     info && info->GetArrayInformation(LightSetArrayName(), vtkDataObject::FIELD);
-  const int attached = fieldSet || lightSet ? 1 : 0;
-  vtkSMPropertyHelper flag(this, "LightSetAttached");
-  if (flag.GetAsInt() != attached)
+  // Properties of the proxy, so the panel's decorators hear of a change at once: Exposure and
+  // Tone Mapping shade either, the light set's and the field's own settings only theirs.
+  for (const auto& [name, value] : { std::pair<const char*, bool>{ "LightSetAttached", lightSet },
+         std::pair<const char*, bool>{ "LightFieldAttached", fieldSet } })
   {
-    // A property of the proxy, so the panel's decorators hear of the change at once.
-    flag.Set(attached);
+    if (this->GetProperty(name) && vtkSMPropertyHelper(this, name).GetAsInt() != (value ? 1 : 0))
+    {
+      vtkSMPropertyHelper(this, name).Set(value ? 1 : 0);
+    }
   }
 }
 

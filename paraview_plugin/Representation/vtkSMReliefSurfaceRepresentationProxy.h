@@ -6,10 +6,11 @@
  *
  * After every update of a view showing it (ViewUpdated):
  * - LightSetAttached becomes 1 when the shown data carries a light set (the field array
- *   MesolightLightSet that Attach Relief Texture adds) or a Light Field input is set, else 0. The
- * panel's GenericDecorators show Exposure, Tone Mapping, Light Set Threshold and Shadowed Lights
- * only then (ParaView's decorators test properties of the representation proxy, not the data's
- * field arrays).
+ *   MesolightLightSet that Attach Relief Texture adds), else 0; LightFieldAttached 1 when a Light
+ *   Field input is set. The panel's decorators show Light Set Threshold and Shadowed Lights with
+ *   a light set, the Light Field's own settings with a field, Exposure and Tone Mapping with
+ *   either (ParaView's decorators test properties of the representation proxy, not the data's
+ *   field arrays).
  * - At the first update that shows the relief, if it is then the only visible data of a render
  *   view left in 2D interaction, the view goes to 3D and its camera is reset. ParaView 5.11
  *   chooses the mode in pqRenderView::updateInteractionMode, called by
@@ -49,7 +50,8 @@ public:
   vtkTypeMacro(vtkSMReliefSurfaceRepresentationProxy, vtkSMRepresentationProxy);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  /** Updates LightSetAttached and, once, the view's interaction mode (see the class comment). */
+  /** Updates LightSetAttached, LightFieldAttached and, once, the view's interaction mode (see
+   * the class comment). */
   void ViewUpdated(vtkSMProxy* view) override;
 
   /** The field array whose presence means a light set is attached. */

@@ -26,6 +26,8 @@ DELIBERATE = {
         "information about the last read (Python: GetPropertyValue)",
     ("MesolightReliefSurfaceRepresentation", "LightSetAttached"):
         "set from the data by the proxy class; the panel's decorators read it",
+    ("MesolightReliefSurfaceRepresentation", "LightFieldAttached"):
+        "set from the Light Field input by the proxy class; the panel's decorators read it",
     ("MesolightVirtualLightField", "DirectionsPropagated"):
         "information about the last update (Python: GetPropertyValue)",
     ("MesolightLightFieldGather", "FieldPropagations"):

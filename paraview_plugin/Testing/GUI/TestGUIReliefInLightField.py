@@ -9,7 +9,10 @@ field (what picking it in the panel's Light Field selector does).
 - with the Light Field the relief looks like the wall it covers (the scene drawn as Light Field
   with the relief hidden): mean difference over the patch within MAX_MEAN_ERROR levels;
 - must fail (the measure can fail): the relief lit by the view's lights (no Light Field);
-- the panel shows Exposure and Tone Mapping once the Light Field is set (LightSetAttached).
+- the panel shows Exposure, Tone Mapping and the Light Field's settings once the Light Field is
+  set (LightFieldAttached 0, then 1), and not the light set's (LightSetAttached stays 0: no
+  light set is attached; before, the field set it to 1 and showed Light Set Threshold and
+  Shadowed Lights, which do nothing without a light set).
 """
 # run-gui-test.sh puts this directory on PYTHONPATH (paraview --script defines no __file__).
 import mesolight_guitest as g  # noqa: E402
@@ -71,7 +74,7 @@ def main():
         return float(np.abs(frame[footprint] - wall[footprint]).mean())
 
     kit = g.grab(view, "gui-relief-field-view-lights.png")
-    lit = shown.LightSetAttached
+    lit = (shown.LightFieldAttached, shown.LightSetAttached)
     shown.LightField = field  # what picking the field in the panel's Light Field selector does
     with_field = g.grab(view, "gui-relief-field-lit.png")
     e_kit, e_field = error(kit), error(with_field)
@@ -83,10 +86,12 @@ def main():
     if e_kit <= MAX_MEAN_ERROR:
         failures.append("negative check: the view's lights should not match the wall (%.2f)"
                         % e_kit)
-    print("panel: LightSetAttached %d without, %d with the Light Field"
-          % (lit, shown.LightSetAttached))
-    if lit != 0 or shown.LightSetAttached != 1:
-        failures.append("the panel should show Exposure and Tone Mapping with a Light Field")
+    now = (shown.LightFieldAttached, shown.LightSetAttached)
+    print("panel: LightFieldAttached %d without, %d with the Light Field; LightSetAttached %d, %d"
+          % (lit[0], now[0], lit[1], now[1]))
+    if lit != (0, 0) or now != (1, 0):
+        failures.append("the panel should show the Light Field's settings (not the light set's) "
+                        "with a Light Field")
     return failures
 
 
