@@ -113,6 +113,7 @@ void vtkSMReliefSurfaceRepresentationProxy::ViewUpdated(vtkSMProxy* view)
     return;
   }
   this->UpdateLightSetAttached(composite);
+  this->FollowSceneDisplay(view);
   const bool hidden = this->HideUpstreamImages(composite, view);
   this->UpdateInteractionMode(composite, view, hidden);
 }
@@ -193,6 +194,44 @@ void vtkSMReliefSurfaceRepresentationProxy::UpdateLightSetAttached(vtkSMProxy* c
     {
       vtkSMPropertyHelper(this, name).Set(value ? 1 : 0);
     }
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkSMReliefSurfaceRepresentationProxy::FollowSceneDisplay(vtkSMProxy* view)
+{
+  auto* viewProxy = vtkSMViewProxy::SafeDownCast(view);
+  if (!viewProxy || !this->GetProperty("ReliefLightFieldSceneDisplay") ||
+    vtkSMPropertyHelper(this, "ReliefLightFieldSceneDisplay").GetAsInt() == 0 ||
+    !this->GetProperty("LightField") ||
+    vtkSMPropertyHelper(this, "LightField").GetNumberOfElements() == 0)
+  {
+    return;
+  }
+  vtkSMPropertyHelper field(this, "LightField");
+  auto* source = vtkSMSourceProxy::SafeDownCast(field.GetAsProxy(0));
+  vtkSMProxy* scene =
+    source ? viewProxy->FindRepresentation(source, field.GetOutputPort(0)) : nullptr;
+  if (!scene || !scene->GetProperty("LightFieldExposure"))
+  {
+    return; // the field is not shown in this view: the relief's own settings
+  }
+  bool changed = false;
+  const auto copy = [&](const char* from, const char* to)
+  {
+    const double value = vtkSMPropertyHelper(scene, from).GetAsDouble();
+    if (this->GetProperty(to) && vtkSMPropertyHelper(this, to).GetAsDouble() != value)
+    {
+      vtkSMPropertyHelper(this, to).Set(value);
+      changed = true;
+    }
+  };
+  copy("LightFieldExposure", "Exposure");
+  copy("LightFieldToneMapping", "ToneMapping"); // 0 clamp, 1 Reinhard: the relief's on/off
+  copy("LightFieldAutoExposure", "ReliefLightFieldAutoExposure");
+  if (changed)
+  {
+    this->UpdateVTKObjects(); // before the render this update precedes
   }
 }
 

@@ -11,6 +11,10 @@
  *   a light set, the Light Field's own settings with a field, Exposure and Tone Mapping with
  *   either (ParaView's decorators test properties of the representation proxy, not the data's
  *   field arrays).
+ * - With a Light Field and ReliefLightFieldSceneDisplay on (the default), the relief's Exposure,
+ *   Tone Mapping and Light Field Auto Exposure are copied from the field's own display in the
+ *   view (its LightFieldExposure, LightFieldToneMapping, LightFieldAutoExposure), so a relief on
+ *   a wall stays continuous with the scene when the scene's display settings change.
  * - At the first update that shows the relief, if it is then the only visible data of a render
  *   view left in 2D interaction, the view goes to 3D and its camera is reset. ParaView 5.11
  *   chooses the mode in pqRenderView::updateInteractionMode, called by
@@ -69,6 +73,9 @@ private:
   void operator=(const vtkSMReliefSurfaceRepresentationProxy&) = delete;
 
   void UpdateLightSetAttached(vtkSMProxy* composite);
+  /** With a Light Field and ReliefLightFieldSceneDisplay on: the field's display in `view` gives
+   * the relief's Exposure, Tone Mapping and Light Field Auto Exposure (see the class comment). */
+  void FollowSceneDisplay(vtkSMProxy* view);
   /** Hides newly upstream visible images (see the class comment); true if it hid any. */
   bool HideUpstreamImages(vtkSMProxy* composite, vtkSMProxy* view);
   void UpdateInteractionMode(vtkSMProxy* composite, vtkSMProxy* view, bool imagesHidden);

@@ -57,6 +57,8 @@ CHECKED_ELSEWHERE = {
     "LightField": "TestGUIReliefInLightField.py (set from the panel, the relief matches the wall)",
     "ReliefLightFieldAutoExposure": "Python/TestReliefInLightField.py (off, the relief misses "
                                     "the wall it matches when on)",
+    "ReliefLightFieldSceneDisplay": "Python/TestReliefInLightField.py (off, with the scene at "
+                                    "exposure 2 the relief misses the wall it matches when on)",
     "ReliefLightFieldAlbedo": "Python/TestReliefInLightField.py (off, the white relief misses "
                               "the wall it matches when on)",
     "ReliefLightFieldOcclusion": "Python/TestReliefFieldOcclusion.py (off, the relief misses the "

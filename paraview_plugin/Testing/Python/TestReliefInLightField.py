@@ -141,6 +141,37 @@ check(float(np.abs(capture("pv-relief-field-flat-again.png")[footprint].astype(f
       "Light Field Albedo on again: the wall's Kd again")
 check(gatherings() == first, "the albedo gathers no probes (%d)" % gatherings())
 
+# The scene's display changed (exposure 2, clamp), nothing else: the relief follows it (Light
+# Field Display From Scene, on by default) and still matches the wall drawn at that display; off,
+# the relief keeps its own and must not match. A first-time user saw a 26.8-level seam here.
+scene.LightFieldExposure, scene.LightFieldToneMapping = 2.0, 0
+relief.Visibility = 0
+wall_bright = capture("pv-relief-field-wall-exposure2.png")
+relief.Visibility = 1
+followed = capture("pv-relief-field-exposure2.png")
+
+
+def error_against(image, reference, label):
+    e = float(np.abs(image[footprint].astype(float) - reference[footprint]).mean())
+    print("%s: mean |relief - wall| %.2f levels over the patch" % (label, e))
+    return e
+
+
+check(error_against(followed, wall_bright, "scene exposure 2, clamp") <= MAX_MEAN_ERROR,
+      "the relief follows the scene display's exposure and tone mapping")
+check(relief.Exposure == 2.0 and relief.ToneMapping == 0,
+      "the relief's Exposure and Tone Mapping show the scene's")
+relief.ReliefLightFieldSceneDisplay = 0
+relief.Exposure, relief.ToneMapping = 1.0, 1
+own = capture("pv-relief-field-exposure2-own.png")
+check(error_against(own, wall_bright, "negative: the relief's own display") > MAX_MEAN_ERROR,
+      "negative: the relief's own display misses the scene at exposure 2")
+relief.ReliefLightFieldSceneDisplay = 1
+scene.LightFieldExposure, scene.LightFieldToneMapping = 1.0, 1
+again = capture("pv-relief-field-display-back.png")
+check(float(np.abs(again[footprint].astype(float) - flat[footprint]).mean()) < 0.5,
+      "the scene's display back: the relief back to its first image")
+
 # Renders, camera moves and display settings gather nothing.
 view.CameraPosition = [300.0, 250.0, -700.0]
 pvs.Render(view)
@@ -149,11 +180,14 @@ capture("pv-relief-field-again.png")
 check(gatherings() == first, "renders and settings gather no probes (%d)" % gatherings())
 
 # --- negative: without the field's automatic exposure ---------------------------------------
+# (the relief's own setting: not the scene display's)
+relief.ReliefLightFieldSceneDisplay = 0
 relief.ReliefLightFieldAutoExposure = 0
 dim = capture("pv-relief-field-no-auto-exposure.png")
 check(error(dim, "negative: no automatic exposure") > MAX_MEAN_ERROR,
       "negative: the relief without the field's automatic exposure does not match")
 relief.ReliefLightFieldAutoExposure = 1
+relief.ReliefLightFieldSceneDisplay = 1
 
 # --- a relief with depth: drawn as a relief, lit alike on average ----------------------------
 # Its depth (0.1 x 380 mm = 38 mm) lies far behind the back wall, 1.2 mm behind the patch: the
