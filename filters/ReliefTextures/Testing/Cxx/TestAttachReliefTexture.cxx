@@ -198,9 +198,8 @@ TEST(AttachReliefTexture, AReExecutionKeepsTheReliefArrayAndSaysTheStretchOnce)
   vtkNew<mesolight_test::MessageCapture> messages;
   messages->Watch(attach);
   attach->Update();
-  const auto texels = [&attach]() {
-    return attach->GetOutputDataObject(0)->GetFieldData()->GetArray("MesolightReliefTexture");
-  };
+  const auto texels = [&attach]()
+  { return attach->GetOutputDataObject(0)->GetFieldData()->GetArray("MesolightReliefTexture"); };
   vtkDataArray* first = texels();
   ASSERT_NE(first, nullptr);
   const std::string warned = messages->AllWarnings();
