@@ -259,9 +259,7 @@ int SetUpWalkthroughReliefs(const CommandLine& cl, const char* command, vtkLight
       vtkLightFieldReliefSurfaceCore::LendEmbreeScene(surface, field, embree);
     }
     vtkNew<MessageCollector> messages;
-    messages->Watch(surface);
-    vtkNew<MessageCollector> executiveNoise; // its "returned failure" follow-up
-    executiveNoise->Watch(surface->GetExecutive());
+    messages->Watch(relief); // its surface filter's messages are the actor's
     const auto start = std::chrono::steady_clock::now();
     relief->GetBounds(); // updates the surface
     if (!messages->Errors.empty())

@@ -19,7 +19,8 @@ without --depth the back wall gets procedural bricks. --field loads a snapshot w
 import argparse
 import sys
 
-from vtkmodules.vtkCommonCore import vtkCommand
+from vtkmodules.util.misc import calldata_type
+from vtkmodules.vtkCommonCore import VTK_STRING, vtkCommand
 from vtkmodules.vtkIOImage import vtkPNGWriter
 from vtkmodules.vtkRenderingCore import (vtkRenderWindow, vtkRenderWindowInteractor,
                                          vtkRenderer, vtkWindowToImageFilter)
@@ -46,8 +47,16 @@ def main(argv):
 
     errors = []
 
+    @calldata_type(VTK_STRING)
+    def on_error(caller, event, message):
+        # VTK's message, last line (the first names the source file and line).
+        errors.append(message)
+        print("relief_in_light_field.py: " + message.strip().splitlines()[-1], file=sys.stderr)
+
     def watch(obj):
-        obj.AddObserver(vtkCommand.ErrorEvent, lambda caller, event: errors.append(caller))
+        obj.AddObserver(vtkCommand.ErrorEvent, on_error)
+        if hasattr(obj, "GetExecutive"):  # its "returned failure" follow-up says nothing new
+            obj.GetExecutive().AddObserver(vtkCommand.ErrorEvent, lambda caller, event: None)
         return obj
 
     # The walkthrough: a snapshot, or the Cornell box propagated when first drawn.
@@ -86,8 +95,7 @@ def main(argv):
     relief = watch(vtkLightFieldReliefActor())
     relief.SetLightFieldActor(scene)
     relief.SetSurfaceName(args.surface)
-    relief.SetReliefTextureData(bake.GetOutput())
-    relief.SetDepthScale(args.depth_scale)
+    relief.SetReliefTextureData(bake.GetOutput())  # drawn at the bake's depth scale
     relief.SetOcclusion(not args.no_occlusion)
 
     renderer = vtkRenderer()

@@ -60,18 +60,30 @@ def expect_error(name, algorithm, pattern, output_size):
 
 
 def expect_actor_error(name, actor, pattern):
-    surface = actor.GetReliefSurface()
-    errors = ErrorRecorder(actor, surface, surface.GetExecutive())
-    bounds = actor.GetBounds()
-    empty = bounds is None or bounds[1] < bounds[0]
+    """The actor's own observers hear the error, once however often it is measured; it has no
+    bounds and the walkthrough shows the flat surface (no hole)."""
+    errors = ErrorRecorder(actor)
+    bounds = [actor.GetBounds() for _ in range(3)]  # a render asks several times
+    empty = all(b is None or b[1] < b[0] for b in bounds)
     matched = [m for m in errors.messages if pattern.lower() in m.lower()]
-    print(f"{name}: {len(errors.messages)} error(s), empty: {empty}: "
-          f"{matched[0].strip().splitlines()[-1] if matched else '(none)'}")
+    shown = actor.GetLightFieldActor().GetNumberOfHiddenSurfaces() == 0
+    print(f"{name}: {len(errors.messages)} error(s) to the actor, empty: {empty}, surface shown: "
+          f"{shown}: {matched[0].strip().splitlines()[-1] if matched else '(none)'}")
+    ok = True
     if not matched:
-        print(f"  FAIL: no error mentioning '{pattern}'")
+        print(f"  FAIL: no error mentioning '{pattern}' reached the actor's observer")
+        ok = False
+    if len(errors.messages) != 1:
+        print("  FAIL: not one message")
+        ok = False
     if not empty:
         print("  FAIL: bounds despite the error")
-    return bool(matched) and empty
+        ok = False
+    if not shown:
+        print("  FAIL: the walkthrough hides the surface of a relief that is not drawn")
+        ok = False
+    actor.RemoveObservers(vtkCommand.ErrorEvent)
+    return ok
 
 
 def main():
@@ -120,13 +132,24 @@ def main():
     relief.SetReliefTextureData(bake.GetOutput())
     relief.SetSurfaceName("wall")
     ok &= expect_actor_error("relief actor on an unknown surface", relief, "back, left")
+    relief.SetSurfaceName("tall")
+    ok &= expect_actor_error("relief actor on a surface that is not planar", relief, "planar")
     relief.SetSurfaceName("back")
-    errors = ErrorRecorder(relief, relief.GetReliefSurface())
+    errors = ErrorRecorder(relief)
     bounds = relief.GetBounds()
-    good = bounds[1] > bounds[0] and not errors.messages
+    hidden = walkthrough.GetNumberOfHiddenSurfaces()
+    relief.VisibilityOff()
+    hidden_off = walkthrough.GetNumberOfHiddenSurfaces()
+    relief.VisibilityOn()
+    good = (bounds[1] > bounds[0] and not errors.messages and hidden == 1 and hidden_off == 0
+            and walkthrough.GetNumberOfHiddenSurfaces() == 1)
     print(f"relief actor on 'back' afterwards: x from {bounds[0]:.3f} to {bounds[1]:.3f}, "
-          f"{len(errors.messages)} errors")
+          f"{len(errors.messages)} errors; surfaces hidden {hidden}, {hidden_off} with the actor "
+          f"invisible, {walkthrough.GetNumberOfHiddenSurfaces()} visible again")
     ok &= good
+    del relief  # deleted, the walkthrough shows the back wall again
+    print(f"relief actor deleted: surfaces hidden {walkthrough.GetNumberOfHiddenSurfaces()}")
+    ok &= walkthrough.GetNumberOfHiddenSurfaces() == 0
 
     # The same filter goes on working with a good input.
     sky = vtkProceduralEnvironmentSource()

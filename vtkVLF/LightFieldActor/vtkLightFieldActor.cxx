@@ -167,6 +167,19 @@ void vtkLightFieldActor::AddHiddenSurface(const std::string& name)
 }
 
 //------------------------------------------------------------------------------
+void vtkLightFieldActor::RemoveHiddenSurface(const std::string& name)
+{
+  Internals& impl = *this->Impl;
+  const auto hidden = std::find(impl.HiddenSurfaces.begin(), impl.HiddenSurfaces.end(), name);
+  if (hidden == impl.HiddenSurfaces.end())
+  {
+    return;
+  }
+  impl.HiddenSurfaces.erase(hidden);
+  impl.ApplyHiddenSurfaces(*this);
+}
+
+//------------------------------------------------------------------------------
 void vtkLightFieldActor::RemoveAllHiddenSurfaces()
 {
   Internals& impl = *this->Impl;

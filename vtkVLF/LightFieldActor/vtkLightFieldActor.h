@@ -127,6 +127,8 @@ public:
    * reported with vtkErrorMacro (listing the names it has) and ignored.
    */
   void AddHiddenSurface(const std::string& name);
+  /** Shows the surface of that name again (nothing if it is not hidden). */
+  void RemoveHiddenSurface(const std::string& name);
   void RemoveAllHiddenSurfaces();
   int GetNumberOfHiddenSurfaces() const;
   ///@}

@@ -24,12 +24,16 @@
  * shadow falls on it as on the walls (vtkLightFieldReliefMapper). Probes and lights are computed
  * again only when the field, the surface, the texture, the depth scale, the probe count or
  * Occlusion change. The relief's own settings (method, steps, self-shadowing) are
- * GetReliefProperty()'s; the actor's vtkProperty holds its colour.
+ * GetReliefProperty()'s; the actor's vtkProperty holds its colour. The relief writes no depth
+ * behind its surface's plane (vtkReliefProperty::SetDepthLimitPlane): it is recessed into its
+ * surface, as the CPU reference's is, so a wall a little behind the surface (a window or a panel
+ * hung in front of a wall) does not show through its deeper parts.
  *
  * An unknown surface name (the message lists the scene's surfaces), a non-planar surface, no
- * field or no texture are reported with vtkErrorMacro; the actor then draws nothing (and has no
- * bounds). The walkthrough keeps a surface hidden once asked, also after the relief actor is
- * removed or renamed (vtkLightFieldActor::RemoveAllHiddenSurfaces shows them again).
+ * field or no texture are errors of this actor (its observers hear them, once per cause: the
+ * surface filter's are passed on); the actor then draws nothing, has no bounds, and the
+ * walkthrough shows the flat surface again. The surface is hidden while the actor is visible
+ * (SetVisibility) and shown again when the actor is renamed, hidden or deleted.
  */
 #ifndef vtkLightFieldReliefActor_h
 #define vtkLightFieldReliefActor_h
@@ -41,6 +45,7 @@
 
 #include <string> // For std::string
 
+class vtkCommand;
 class vtkImageData;
 class vtkLightFieldActor;
 class vtkLightFieldReliefMapper;
@@ -73,9 +78,17 @@ public:
   ///@}
 
   ///@{
-  /** World depth of depth 1 over the world width of the texture (default 0.05, [0, 10]). */
+  /**
+   * World depth of depth 1 over the world width of the texture, [0, 10]. By default the depth
+   * scale the texture was baked with (vtkReliefTextureFilter's DepthScale, its field data
+   * "MesolightDepthScale"; 0.05 for a texture without one), so the relief's normals and its
+   * depth agree; SetDepthScale overrides it (UseTextureDepthScale off).
+   */
   void SetDepthScale(double scale);
   double GetDepthScale() const { return this->DepthScale; }
+  void SetUseTextureDepthScale(bool on);
+  bool GetUseTextureDepthScale() const { return this->UseTextureDepthScale; }
+  vtkBooleanMacro(UseTextureDepthScale, bool);
   ///@}
 
   ///@{
@@ -110,6 +123,9 @@ public:
   using vtkOpenGLActor::GetBounds;
   ///@}
 
+  /** Hidden, the walkthrough shows the flat surface again. */
+  void SetVisibility(vtkTypeBool visible) override;
+
 protected:
   vtkLightFieldReliefActor();
   ~vtkLightFieldReliefActor() override;
@@ -120,19 +136,31 @@ private:
 
   // Updates the surface filter and the mapper; false when there is nothing to draw.
   bool Prepare();
-  // Hides the named surface from the walkthrough once both are known.
+  // An error of this actor, said once until it changes or the relief draws.
+  void Report(const std::string& problem);
+  // Hides the named surface from the walkthrough once both are known (and the surface is one of
+  // a loaded field's); ShowSurface undoes it.
   void HideSurface();
+  void ShowSurface();
 
   vtkWeakPointer<vtkLightFieldActor> LightFieldActor;
   std::string SurfaceName;
   double DepthScale = 0.05;
+  bool UseTextureDepthScale = true;
   int ProbesPerSide = 0;
   bool Occlusion = true;
   vtkSmartPointer<vtkImageData> ReliefTexture;
   vtkSmartPointer<vtkLightFieldReliefSurface> Surface;
   vtkSmartPointer<vtkLightFieldReliefMapper> ReliefMapper;
-  vtkMTimeType PreparedTime = 0; // the surface's output time the mapper was set up for
+  vtkSmartPointer<vtkCommand> Forwarder;      // the surface filter's messages, as this actor's
+  vtkSmartPointer<vtkCommand> ExecutiveNoise; // its executive's "returned failure", swallowed
+  vtkMTimeType PreparedTime = 0;              // the surface's output time the mapper was set up for
+  vtkMTimeType FailedTime = 0; // the surface's settings time of the last failed update
   bool Drawable = false;
+  std::string LastProblem;
+  // The surface this actor hid, and in which walkthrough.
+  vtkWeakPointer<vtkLightFieldActor> HiddenIn;
+  std::string HiddenName;
 };
 
 #endif
