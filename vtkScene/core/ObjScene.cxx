@@ -530,13 +530,27 @@ ObjSceneRead ParseObjScene(std::istream& obj, const std::string& name, const std
   // One scene vertex per distinct (position, texture coordinate, normal) corner; per-vertex
   // attributes are kept only when every corner has them.
   bool allTCoords = true, allNormals = true;
+  std::size_t facesWithTCoords = 0;
   for (const auto& face : faces)
   {
+    bool any = false;
     for (const Corner& c : face)
     {
       allTCoords = allTCoords && c.TCoord >= 0;
       allNormals = allNormals && c.Normal >= 0;
+      any = any || c.TCoord >= 0;
     }
+    facesWithTCoords += any ? 1 : 0;
+  }
+  if (!allTCoords && facesWithTCoords > 0)
+  {
+    // A scene keeps texture coordinates per vertex for all its triangles or for none: say that
+    // the ones given were dropped (a relief on such a surface takes its plane's instead).
+    read.Warnings.push_back(name + ": " + std::to_string(facesWithTCoords) + " of " +
+      std::to_string(faces.size()) +
+      " triangles have texture coordinates (vt), the others none: all are dropped, and reliefs "
+      "take "
+      "their surfaces' planes; give every face texture coordinates to keep them");
   }
   std::unordered_map<Corner, std::uint32_t, CornerHash> vertexOf;
   std::vector<glm::uvec3> objTriangles; // by OBJ position, for the manifold check

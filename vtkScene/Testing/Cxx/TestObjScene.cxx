@@ -191,6 +191,30 @@ TEST(ObjScene, MissingMtlGivesGreyAndAWarning)
   EXPECT_EQ(plain.Scene.Materials[0].Name, "default-grey");
 }
 
+// Texture coordinates on some faces only (a user who gave one wall vt): the scene keeps them for
+// all triangles or none, so they are dropped, and the reader says so instead of a relief on that
+// wall silently taking its plane's coordinates. On every face they are kept, without a word.
+TEST(ObjScene, TextureCoordinatesOnSomeFacesOnlyAreDroppedWithAWarning)
+{
+  const std::string vertices = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nvt 0 0\nvt 2 0\nvt 0 2\n";
+  const ObjSceneRead some =
+    ReadObjScene(WriteText("some-vt.obj", vertices + "f 1/1 2/2 3/3\nf 2 4 3\n"));
+  EXPECT_TRUE(some.Scene.TextureCoordinates.empty());
+  bool said = false;
+  for (const std::string& warning : some.Warnings)
+  {
+    said = said || warning.find("1 of 2 triangles have texture coordinates") != std::string::npos;
+  }
+  EXPECT_TRUE(said) << "no warning about the dropped texture coordinates";
+  const ObjSceneRead all =
+    ReadObjScene(WriteText("all-vt.obj", vertices + "f 1/1 2/2 3/3\nf 2/2 1/1 3/3\n"));
+  EXPECT_EQ(all.Scene.TextureCoordinates.size(), all.Scene.Positions.size());
+  for (const std::string& warning : all.Warnings)
+  {
+    EXPECT_EQ(warning.find("texture coordinates"), std::string::npos) << warning;
+  }
+}
+
 // An MTL that is a device or a FIFO is not read: /dev/zero is one endless line (memory without
 // bound), /dev/stdin waits forever.
 TEST(ObjScene, MtllibOfADeviceIsIgnored)
