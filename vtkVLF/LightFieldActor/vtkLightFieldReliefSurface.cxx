@@ -658,6 +658,10 @@ int vtkLightFieldReliefSurface::RequestSurfaceData(
       {
         result = ComputeSurface(*field, whole, requested, this->SceneOcclusion,
           mesolight::AlgorithmProgress(this, 0.0, this->MapProgress()));
+        if (!result.Warning.empty() && (rank == 0 || !summed))
+        {
+          vtkWarningMacro(<< result.Warning);
+        }
       }
       catch (const vlf::AbortedError&)
       {

@@ -224,6 +224,21 @@ SurfaceResult ComputeSurface(const vlf::LightField& field, vtkPolyData* whole, i
     result.Emission[c] = surface.Emission[c];
   }
   result.Frame[15] = field.NormalizationScale();
+  if (surface.FieldSurface != vlf::NoSurface && !surface.OtherMaterials.empty())
+  {
+    // One albedo for the whole relief (the representation's and the mapper's colour): say which,
+    // and how to have each material's.
+    std::string others;
+    for (const std::string& name : surface.OtherMaterials)
+    {
+      others += (others.empty() ? "'" : ", '") + name + "'";
+    }
+    const std::string& chosen = field.MaterialOf(surface.FieldSurface).Name;
+    result.Warning = "The relief surface lies on scene surfaces of several materials: '" + chosen +
+      "' under its centre, and " + others + ". It takes one albedo, '" + chosen +
+      "''s Kd, over all of it; to have each material's, split the surface where the materials "
+      "meet (one relief per part).";
+  }
   if (surface.FieldSurface != vlf::NoSurface)
   {
     // Halfway between the surface's plane and the wall's: in front of the wall by half their gap

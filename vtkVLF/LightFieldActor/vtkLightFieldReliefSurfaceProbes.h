@@ -12,6 +12,7 @@
 #include "ReliefShading.h"     // ReliefEmitterSample
 
 #include <cstddef>
+#include <string>
 #include <vector>
 
 class vtkImageData;
@@ -76,6 +77,8 @@ struct SurfaceResult
   // unit sphere, packed 9 numbers a sample (position, normal, radiance x area): the relief's
   // shadow of that light's area goes into the visible-share map on every rank.
   std::vector<double> LightSamples;
+  // Said once by the computing rank: the surface covers scene surfaces of several materials.
+  std::string Warning;
 };
 
 // The emitter samples the first of those lights stands for (EmitterSamplesOfLight), whose shadow

@@ -8,12 +8,14 @@
 #include "TriangleScene.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
 #include <glm/matrix.hpp>
 #include <glm/vec2.hpp>
+#include <glm/vector_relational.hpp>
 #include <sstream>
 
 namespace mesolight
@@ -43,6 +45,54 @@ glm::dvec3 ReliefSurface::TextureOf(const glm::dvec3& point) const
 
 namespace
 {
+// Whether p lies inside the triangle (either winding; on an edge counts).
+bool InTriangle(const glm::dvec2& p, const glm::dvec2 (&t)[3])
+{
+  const auto side = [](const glm::dvec2& a, const glm::dvec2& b, const glm::dvec2& q)
+  { return (b.x - a.x) * (q.y - a.y) - (b.y - a.y) * (q.x - a.x); };
+  const double d0 = side(t[0], t[1], p), d1 = side(t[1], t[2], p), d2 = side(t[2], t[0], p);
+  return (d0 >= 0.0 && d1 >= 0.0 && d2 >= 0.0) || (d0 <= 0.0 && d1 <= 0.0 && d2 <= 0.0);
+}
+
+// Points on a patch, in its texture coordinates: the centres of a 16 x 16 grid over its bounds
+// that lie on one of its triangles (where scene surfaces under it are looked for).
+std::vector<glm::dvec2> PatchSamples(const ReliefSurface& surface,
+  const std::vector<glm::vec3>& positions, const std::vector<glm::uvec3>& triangles)
+{
+  std::vector<std::array<glm::dvec2, 3>> flat;
+  glm::dvec2 low(1e30), high(-1e30);
+  for (const glm::uvec3& t : triangles)
+  {
+    std::array<glm::dvec2, 3> uv;
+    for (std::size_t c = 0; c < 3; ++c)
+    {
+      uv[c] = glm::dvec2(surface.TextureOf(glm::dvec3(positions[t[static_cast<int>(c)]])));
+      low = glm::min(low, uv[c]);
+      high = glm::max(high, uv[c]);
+    }
+    flat.push_back(uv);
+  }
+  constexpr int grid = 16;
+  std::vector<glm::dvec2> samples;
+  for (int j = 0; j < grid; ++j)
+  {
+    for (int i = 0; i < grid; ++i)
+    {
+      const glm::dvec2 p = low + (high - low) * glm::dvec2((i + 0.5) / grid, (j + 0.5) / grid);
+      for (const auto& uv : flat)
+      {
+        const glm::dvec2 corners[3] = { uv[0], uv[1], uv[2] };
+        if (InTriangle(p, corners))
+        {
+          samples.push_back(p);
+          break;
+        }
+      }
+    }
+  }
+  return samples;
+}
+
 // The texture frame of surface.Triangles of `scene` (FindReliefSurface and
 // ReliefSurfaceFromTriangles); `name` is how messages call the surface.
 void FitTextureFrame(const TriangleMesh& scene, const std::string& name, ReliefSurface& surface)
@@ -183,6 +233,8 @@ ReliefSurface ReliefSurfaceFromTriangles(const LightField& field,
   const double planeTolerance = MountTolerance;
   double nearest = 1e30;
   const TriangleScene& scene = field.Scene();
+  std::vector<std::uint32_t> overlapped; // mounting candidates under some of the patch
+  const std::vector<glm::dvec2> samples = PatchSamples(surface, positions, triangles);
   for (std::uint32_t s = 0; s < field.Surfaces().size(); ++s)
   {
     const Surface& candidate = field.Surfaces()[s];
@@ -194,12 +246,20 @@ ReliefSurface ReliefSurfaceFromTriangles(const LightField& field,
       continue;
     }
     glm::dvec3 low(1e30), high(-1e30);
+    bool under = false;
     for (const std::uint32_t t : candidate.Triangles)
     {
+      glm::dvec2 uv[3];
       for (int c = 0; c < 3; ++c)
       {
-        low = glm::min(low, glm::dvec3(scene.Vertex(t, c)));
-        high = glm::max(high, glm::dvec3(scene.Vertex(t, c)));
+        const glm::dvec3 p(scene.Vertex(t, c));
+        low = glm::min(low, p);
+        high = glm::max(high, p);
+        uv[c] = glm::dvec2(surface.TextureOf(p));
+      }
+      for (std::size_t k = 0; k < samples.size() && !under; ++k)
+      {
+        under = InTriangle(samples[k], uv);
       }
     }
     const double distance = glm::length(centroid - glm::clamp(centroid, low, high));
@@ -208,12 +268,29 @@ ReliefSurface ReliefSurfaceFromTriangles(const LightField& field,
       nearest = distance;
       surface.FieldSurface = s;
     }
+    if (under)
+    {
+      overlapped.push_back(s);
+    }
   }
   if (surface.FieldSurface != NoSurface)
   {
     const SceneMaterial& material = field.MaterialOf(surface.FieldSurface);
     surface.Diffuse = material.Diffuse;
     surface.Emission = material.Emission;
+    for (const std::uint32_t s : overlapped)
+    {
+      const SceneMaterial& other = field.MaterialOf(s);
+      const bool same =
+        glm::all(glm::lessThan(glm::abs(other.Diffuse - material.Diffuse), glm::vec3(1e-3f))) &&
+        glm::all(glm::lessThan(glm::abs(other.Emission - material.Emission), glm::vec3(1e-3f)));
+      if (!same &&
+        std::find(surface.OtherMaterials.begin(), surface.OtherMaterials.end(), other.Name) ==
+          surface.OtherMaterials.end())
+      {
+        surface.OtherMaterials.push_back(other.Name);
+      }
+    }
   }
   return surface;
 }

@@ -58,6 +58,9 @@ struct ReliefSurface
   glm::vec3 Diffuse{ 0.0f };
   glm::vec3 Emission{ 0.0f };
   bool SceneTextureCoordinates = false; // the frame came from the scene's vt, not the plane
+  // ReliefSurfaceFromTriangles: the scene surfaces of other materials the patch also covers, by
+  // material name (its Diffuse is the one under its centre), empty when it covers one material.
+  std::vector<std::string> OtherMaterials;
 
   glm::dvec3 Point(double u, double v) const
   {
@@ -75,7 +78,9 @@ ReliefSurface FindReliefSurface(const LightField& field, const std::string& name
 // places on a wall. FieldSurface is the scene surface whose plane it lies on facing the same way,
 // or stands in front of by up to 5% of the scene radius (a relief's depth lies behind its plane,
 // so a relief mounted on a wall stands that far in front of it) (NoSurface if none), Diffuse and
-// Emission that surface's material's (zero if none); `name` is how messages call it. Throws
+// Emission that surface's material's (zero if none); OtherMaterials names the materials of the
+// other such surfaces it overlaps (a patch across a two-tone wall); `name` is how messages call
+// it. Throws
 // ReliefSurfaceError (no triangles, no area, not planar, degenerate or non-affine texture
 // coordinates).
 ReliefSurface ReliefSurfaceFromTriangles(const LightField& field,

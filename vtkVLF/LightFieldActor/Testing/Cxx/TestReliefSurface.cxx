@@ -186,6 +186,64 @@ TEST(ReliefSurface, TrianglesOfItsOwnOnTheBackWallAreTheBackWall)
     std::invalid_argument);
 }
 
+// A patch on a two-tone wall (a user's red wall with a blue dado) takes one albedo, the one
+// under its centre: ReliefSurfaceFromTriangles names the other materials it lies on, so the
+// user is told (vtkLightFieldReliefSurface warns), and names none for a patch on one of them.
+TEST(ReliefSurface, APatchAcrossTwoMaterialsNamesTheOther)
+{
+  // The published box with its back wall's second triangle red: the wall split along a diagonal.
+  TriangleScene scene = MakeCornellBox();
+  const std::vector<std::size_t> back = SurfaceTriangles(scene, "back");
+  ASSERT_EQ(back.size(), 2u);
+  const auto red = std::find_if(scene.Materials.begin(), scene.Materials.end(),
+    [](const SceneMaterial& m) { return m.Name == "red"; });
+  ASSERT_NE(red, scene.Materials.end());
+  scene.MaterialIds[back[1]] = static_cast<std::uint32_t>(red - scene.Materials.begin());
+  vlf::LightFieldSettings settings;
+  settings.Directions = 33;
+  settings.RaysPerSide = 4;
+  const std::unique_ptr<vlf::LightField> field = vlf::LightField::Build(scene, settings);
+  // Patches 1% of the radius in front of the wall, in the wall's own frame: across the diagonal,
+  // and in a corner of the first triangle only.
+  const vlf::ReliefSurface wall = vlf::FindReliefSurface(*field, "back");
+  const glm::vec3 n(wall.Normal);
+  const auto patch = [&](double u0, double v0, double size)
+  {
+    std::vector<glm::vec3> corners;
+    for (const glm::dvec2 t :
+      { glm::dvec2(0, 0), glm::dvec2(1, 0), glm::dvec2(1, 1), glm::dvec2(0, 1) })
+    {
+      corners.push_back(glm::vec3(wall.Point(u0 + size * t.x, v0 + size * t.y)) + 0.01f * n);
+    }
+    return corners;
+  };
+  const std::vector<glm::uvec3> quad = { { 0, 1, 2 }, { 0, 2, 3 } };
+  const vlf::ReliefSurface across =
+    vlf::ReliefSurfaceFromTriangles(*field, patch(0.3, 0.3, 0.4), {}, quad, "patch");
+  ASSERT_NE(across.FieldSurface, vlf::NoSurface);
+  const std::string under = field->MaterialOf(across.FieldSurface).Name;
+  ASSERT_EQ(across.OtherMaterials.size(), 1u);
+  EXPECT_EQ(across.OtherMaterials[0], under == "red" ? "white" : "red");
+  // Each corner patch lies on one triangle's side of the diagonal; at least one of the two is
+  // wholly on one material (which corner depends on how the wall's quad was split).
+  const vlf::ReliefSurface a =
+    vlf::ReliefSurfaceFromTriangles(*field, patch(0.02, 0.02, 0.15), {}, quad, "patch");
+  const vlf::ReliefSurface b =
+    vlf::ReliefSurfaceFromTriangles(*field, patch(0.83, 0.02, 0.15), {}, quad, "patch");
+  EXPECT_TRUE(a.OtherMaterials.empty() || b.OtherMaterials.empty());
+  // The plain box's wall: one material, nothing named.
+  const vlf::LightField& plain = walkthroughtest::PlainCornellField(129);
+  const vlf::ReliefSurface plainBack = vlf::FindReliefSurface(plain, "back");
+  std::vector<glm::vec3> corners;
+  for (const glm::dvec2 t :
+    { glm::dvec2(0.3, 0.3), glm::dvec2(0.7, 0.3), glm::dvec2(0.7, 0.7), glm::dvec2(0.3, 0.7) })
+  {
+    corners.push_back(glm::vec3(plainBack.Point(t.x, t.y)) + 0.01f * glm::vec3(plainBack.Normal));
+  }
+  EXPECT_TRUE(
+    vlf::ReliefSurfaceFromTriangles(plain, corners, {}, quad, "patch").OtherMaterials.empty());
+}
+
 // The relief mapper's point lights times their factors (EmitterLightFactors) deliver the lamps'
 // irradiance: twelve 0.2 x 0.2 lamps under a box's ceiling merged to the shader's 8 lights, at
 // 6 x 6 probes of a plane 1.5 below them (the box has nothing in between), against the exact
