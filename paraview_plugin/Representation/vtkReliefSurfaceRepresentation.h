@@ -22,10 +22,11 @@
  * (vtkReliefProperty::SetLights), then the Light Field representation's display transform:
  * exposure (0.18 / the field's log-average luminance with LightFieldAutoExposure, times
  * Exposure), Reinhard tone mapping (ToneMapping) and sRGB, so a relief on a wall of the scene
- * shows the same radiance as the same pixel value as the scene beside it. A relief mounted on a
- * wall takes the wall's Kd as its albedo in place of Solid Color (SetLightFieldAlbedo). A surface
- * mounted on a
- * scene wall writes no depth behind the plane halfway to the wall
+ * shows the same radiance as the same pixel value as the scene beside it (the proxy class copies
+ * the field display's exposure and tone mapping: vtkSMReliefSurfaceRepresentationProxy). A
+ * relief mounted on a wall takes the wall's Kd as its albedo in place of Solid Color
+ * (SetLightFieldAlbedo). A surface mounted on a scene wall writes no depth behind the plane
+ * halfway to the wall
  * (vtkLightFieldReliefSurface::GetDepthLimitPlane, vtkReliefProperty::SetDepthLimitPlane): the
  * relief, which lies behind its surface by up to its depth, replaces the wall drawn by the Light
  * Field representation instead of being hidden by it. The probes are
