@@ -41,6 +41,28 @@ if (_inside LESS 50)
     "test expects")
 endif ()
 
+# red_errors_against_cpu(<pattern> <mask> <which>...): the images <pattern>.png with @ replaced by
+# each <which> and by cpu, sRGB-encoded (exposure 1, clamp): red decoded to linear and blurred
+# 3 x 3 (one ray per pixel each: at creases two renderers' hits differ by up to a pixel), over
+# <mask>, x 100 (exr_stat_milli's thousandths then resolve 0.1% of the image's mean). Sets
+# _reference (the CPU's mean) and _error_<which> (mean |<which> - CPU|) in the caller.
+function (red_errors_against_cpu pattern mask)
+  foreach (_which IN ITEMS cpu ${ARGN})
+    string(REPLACE "@" "${_which}" _image "${pattern}")
+    cli_oiiotool("${_image}.png" --tocolorspace linear --ch 0 --blur 3x3 "${mask}" --mul
+      --mulc 100 -o "${_image}-in.exr")
+  endforeach ()
+  string(REPLACE "@" "cpu" _cpu "${pattern}")
+  exr_stat_milli("${_cpu}-in.exr" Avg _reference)
+  set(_reference ${_reference} PARENT_SCOPE)
+  foreach (_which IN ITEMS ${ARGN})
+    string(REPLACE "@" "${_which}" _image "${pattern}")
+    cli_oiiotool("${_image}-in.exr" "${_cpu}-in.exr" --absdiff -o "${_image}-error.exr")
+    exr_stat_milli("${_image}-error.exr" Avg _error)
+    set(_error_${_which} ${_error} PARENT_SCOPE)
+  endforeach ()
+endfunction ()
+
 # V-shaped grooves (4 per wall, walls at 45 degrees at depth scale 0.1) as vgrooves.pgm.
 macro (write_vgrooves)
   set(_vgrooves "P2\n64 16\n255\n")
@@ -185,18 +207,8 @@ elseif (PART STREQUAL "match" OR PART STREQUAL "python")
       endif ()
     endforeach ()
   endif ()
-  # sRGB-encoded PNGs of all (exposure 1, clamp): decoded to linear, compared over the relief
-  # after a 3-pixel blur (one ray per pixel each: at the grooves' creases the two renderers'
-  # hits differ by up to a pixel). (x 100: exr_stat_milli's thousandths then resolve 0.1% of the
-  # image's mean.)
-  foreach (_which IN ITEMS gpu cpu unoccluded)
-    cli_oiiotool("${WORK}/${_which}-vgrooves.png" --tocolorspace linear --ch 0 --blur 3x3
-      "${WORK}/inside.exr" --mul --mulc 100 -o "${WORK}/${_which}-in.exr")
-  endforeach ()
-  exr_stat_milli("${WORK}/cpu-in.exr" Avg _reference)
+  red_errors_against_cpu("${WORK}/@-vgrooves" "${WORK}/inside.exr" gpu unoccluded)
   foreach (_which IN ITEMS gpu unoccluded)
-    cli_oiiotool("${WORK}/${_which}-in.exr" "${WORK}/cpu-in.exr" --absdiff -o "${WORK}/${_which}-error.exr")
-    exr_stat_milli("${WORK}/${_which}-error.exr" Avg _error_${_which})
     message("relief, red, ${_which} (${PART}): mean |GPU - CPU| ${_error_${_which}}, CPU mean "
       "${_reference} (1/100000 of the image)")
   endforeach ()
@@ -249,16 +261,7 @@ elseif (PART STREQUAL "panel")
     --out "${WORK}/p-gpu.png")
   cli_run(TRUE vlf render "${WORK}/panel.vlf" --mode progressive --size ${_size}
     --out "${WORK}/p-flatgpu.png")
-  foreach (_which IN ITEMS gpu cpu flatgpu)
-    cli_oiiotool("${WORK}/p-${_which}.png" --tocolorspace linear --ch 0 --blur 3x3
-      "${WORK}/p-inside.exr" --mul --mulc 100 -o "${WORK}/p-${_which}-in.exr")
-  endforeach ()
-  exr_stat_milli("${WORK}/p-cpu-in.exr" Avg _reference)
-  foreach (_which IN ITEMS gpu flatgpu)
-    cli_oiiotool("${WORK}/p-${_which}-in.exr" "${WORK}/p-cpu-in.exr" --absdiff
-      -o "${WORK}/p-${_which}-error.exr")
-    exr_stat_milli("${WORK}/p-${_which}-error.exr" Avg _error_${_which})
-  endforeach ()
+  red_errors_against_cpu("${WORK}/p-@" "${WORK}/p-inside.exr" gpu flatgpu)
   message("relief on a panel 10 mm before the wall, red: mean |GPU - CPU| ${_error_gpu} (the flat "
     "panel ${_error_flatgpu}), CPU mean ${_reference} (1/100000 of the image, over "
     "${_panel_area}/1000 of it)")
