@@ -211,8 +211,10 @@ int RunTraceCommand(const std::vector<std::string>& args)
     "cornell (path-traced reference; from a walkthrough camera with --camera or --relief), "
     "or FILE.obj (path traced, with its .mtl)",
     "spheres");
-  cl.AddValue("--width", "N", "image width in pixels", "640");
-  cl.AddValue("--height", "N", "image height in pixels", "480");
+  cl.AddValue("--size", "WxH",
+    "image size in pixels, as `render` and `vlf render` take it (default: 640x480)");
+  cl.AddValue("--width", "N", "image width in pixels (the W of --size)", "640");
+  cl.AddValue("--height", "N", "image height in pixels (the H of --size)", "480");
   cl.AddValue("--samples", "N", "cornell, FILE.obj: paths per pixel", "64");
   cl.AddValue("--seed", "N", "cornell, FILE.obj: random seed of the paths", "1");
   cl.AddFlag(
@@ -242,8 +244,14 @@ int RunTraceCommand(const std::vector<std::string>& args)
   }
   int width = 0, height = 0, glossy = 0, depth = 0, threads = 0;
   double threshold = 0.0;
-  if (!cl.GetInt("--width", 1, 16384, width, error) ||
-    !cl.GetInt("--height", 1, 16384, height, error) ||
+  if (cl.Has("--size") && (cl.Has("--width") || cl.Has("--height")))
+  {
+    return cl.UsageError("give --size WxH or --width and --height, not both");
+  }
+  const bool sized = cl.Has("--size");
+  if ((sized && !cl.GetSize("--size", 1, 16384, width, height, error)) ||
+    (!sized && !cl.GetInt("--width", 1, 16384, width, error)) ||
+    (!sized && !cl.GetInt("--height", 1, 16384, height, error)) ||
     !cl.GetInt("--glossy-samples", 1, 1024, glossy, error) ||
     !cl.GetInt("--max-depth", 0, 64, depth, error) ||
     !cl.GetInt("--threads", 0, 1024, threads, error) ||
