@@ -16,6 +16,11 @@
 # Settings through the environment: DIRECTIONS [513], RAYS [32], ITERATIONS [2] (the field),
 # SIZE [96] (square images), REPEATS [3], LABEL [the host name].
 set -u
+if [ $# -ne 2 ] || [ ! -x "$1" ]; then
+  echo "usage: scripts/bench-relief-probes.sh MESOLIGHT_BINARY OUTDIR (e.g. build/bin/mesolight" \
+    "/tmp/probes)" >&2
+  exit 2
+fi
 bin="$(realpath "$1")"
 out="$2"
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"

@@ -549,8 +549,7 @@ ObjSceneRead ParseObjScene(std::istream& obj, const std::string& name, const std
     read.Warnings.push_back(name + ": " + std::to_string(facesWithTCoords) + " of " +
       std::to_string(faces.size()) +
       " triangles have texture coordinates (vt), the others none: all are dropped, and reliefs "
-      "take "
-      "their surfaces' planes; give every face texture coordinates to keep them");
+      "take their surfaces' planes; give every face texture coordinates to keep them");
   }
   std::unordered_map<Corner, std::uint32_t, CornerHash> vertexOf;
   std::vector<glm::uvec3> objTriangles; // by OBJ position, for the manifold check
