@@ -119,6 +119,11 @@ float SobelNormalMismatch(
   return *std::max_element(rowMax.begin(), rowMax.end());
 }
 
+bool NormalsAreTheDepths(const float* depth, const float* normalXY, int w, int h, double depthScale)
+{
+  return SobelNormalMismatch(depth, normalXY, w, h, depthScale) <= SobelNormalTolerance;
+}
+
 void EncodeOctahedral8(float x, float y, float z, std::int8_t& e0, std::int8_t& e1)
 {
   // Signed normalised: 8 bits err alike in every direction, where x, y with z rebuilt lose the
@@ -196,8 +201,13 @@ void AxisTexels(int i, int level, int size, std::vector<int>& out)
 }
 } // namespace
 
-std::vector<float> NormalMomentLevel(
-  const float* normalXY, const float* normalZ, int w, int h, int level)
+namespace
+{
+// Level `level` of the moments of a w x h map whose level-0 texel t has the moments
+// texelMoments(t, m) (NormalMomentCount floats): each texel the mean of the level-0 texels
+// AxisTexels gives it.
+template <typename TexelMoments>
+std::vector<float> MomentLevel(int w, int h, int level, const TexelMoments& texelMoments)
 {
   constexpr int k = NormalMomentCount;
   const int lw = MipLevelSize(w, level), lh = MipLevelSize(h, level);
@@ -224,10 +234,7 @@ std::vector<float> NormalMomentLevel(
           {
             for (int ci : columns[static_cast<size_t>(i)])
             {
-              const size_t t = static_cast<size_t>(cj) * w + ci;
-              const float x = normalXY[2 * t], y = normalXY[2 * t + 1];
-              const float z = normalZ ? normalZ[t] : std::sqrt(std::max(0.f, 1.f - x * x - y * y));
-              NormalMoments(x, y, z, m);
+              texelMoments(static_cast<size_t>(cj) * w + ci, m);
               for (int c = 0; c < k; ++c)
               {
                 o[c] += share * m[c];
@@ -238,6 +245,57 @@ std::vector<float> NormalMomentLevel(
       }
     });
   return out;
+}
+} // namespace
+
+std::vector<float> NormalMomentLevel(
+  const float* normalXY, const float* normalZ, int w, int h, int level)
+{
+  return MomentLevel(w, h, level,
+    [&](size_t t, float m[NormalMomentCount])
+    {
+      const float x = normalXY[2 * t], y = normalXY[2 * t + 1];
+      const float z = normalZ ? normalZ[t] : std::sqrt(std::max(0.f, 1.f - x * x - y * y));
+      NormalMoments(x, y, z, m);
+    });
+}
+
+std::vector<float> SurfaceNormalMomentLevel(
+  const float* depth, int w, int h, double depthScale, int level)
+{
+  auto at = [&](int i, int j)
+  {
+    i = std::min(std::max(i, 0), w - 1);
+    j = std::min(std::max(j, 0), h - 1);
+    return depth[static_cast<size_t>(j) * w + i];
+  };
+  const float k = static_cast<float>(depthScale);
+  return MomentLevel(w, h, level,
+    [&](size_t t, float m[NormalMomentCount])
+    {
+      const int ti = static_cast<int>(t % static_cast<size_t>(w));
+      const int tj = static_cast<int>(t / static_cast<size_t>(w));
+      std::fill(m, m + NormalMomentCount, 0.f);
+      // One sample at the centre of each quarter of the texel: each quarter lies in one cell of
+      // the bilinear surface (between four texel centres), whose gradient is linear across it.
+      for (int q = 0; q < 4; ++q)
+      {
+        const int di = q % 2, dj = q / 2;
+        const int i0 = ti - 1 + di, j0 = tj - 1 + dj;                 // the cell's lower-left texel
+        const float fx = di ? 0.25f : 0.75f, fy = dj ? 0.25f : 0.75f; // within the cell
+        const float d00 = at(i0, j0), d10 = at(i0 + 1, j0), d01 = at(i0, j0 + 1),
+                    d11 = at(i0 + 1, j0 + 1);
+        const float gi = (1.f - fy) * (d10 - d00) + fy * (d11 - d01);
+        const float gj = (1.f - fx) * (d01 - d00) + fx * (d11 - d10);
+        float n[3], qm[NormalMomentCount];
+        NormalFromGradient(gi, gj, w, k, n);
+        NormalMoments(n[0], n[1], n[2], qm);
+        for (int c = 0; c < NormalMomentCount; ++c)
+        {
+          m[c] += 0.25f * qm[c];
+        }
+      }
+    });
 }
 
 } // namespace mesolight

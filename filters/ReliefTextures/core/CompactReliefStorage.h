@@ -67,6 +67,23 @@ MESOLIGHTRELIEFTEXTURES_EXPORT float SobelNormalMismatch(
   const float* depth, const float* normalXY, int w, int h, double depthScale);
 
 /**
+ * The largest SobelNormalMismatch of normals that are their depth's own: about a degree, since
+ * 8-bit baked normals are within 1/127 of the float ones.
+ */
+constexpr float SobelNormalTolerance = 0.02f;
+
+/**
+ * Whether a relief texture's normals are its depth's own (the Sobel normals
+ * vtkReliefTextureFilter bakes at depthScale, SobelNormalMismatch within SobelNormalTolerance).
+ * Such a texture is shaded with the gradient of the bilinear surface its depth defines, the
+ * surface every renderer marches (the relief mapper, the exact CPU intersector, the path
+ * tracer's dense mesh): the Sobel stencil spans three texels and flattens detail a texel or two
+ * wide. Normals made apart (a normal map) are shaded as given.
+ */
+MESOLIGHTRELIEFTEXTURES_EXPORT bool NormalsAreTheDepths(
+  const float* depth, const float* normalXY, int w, int h, double depthScale);
+
+/**
  * A unit normal (z >= 0, hemisphere) in hemispherical octahedral coordinates (Cigolle et al.,
  * "A Survey of Efficient Representations for Independent Unit Vectors", JCGT 2014) as signed
  * normalised 8-bit values, as GL_RG8_SNORM stores them: k / 127. x, y, z need not be unit.
@@ -108,6 +125,16 @@ MESOLIGHTRELIEFTEXTURES_EXPORT int MipLevelSize(int size, int level);
  */
 MESOLIGHTRELIEFTEXTURES_EXPORT std::vector<float> NormalMomentLevel(
   const float* normalXY, const float* normalZ, int w, int h, int level);
+
+/**
+ * NormalMomentLevel of the surface a depth map defines rather than of stored normals: each
+ * level-0 texel's moments are the mean of those of the bilinear surface's normal over the texel
+ * (one sample at the centre of each quarter, each in one cell of the surface), with the normal
+ * convention of NormalFromGradient at depthScale. What a footprint of the surface the relief
+ * mapper shades up close (NormalsAreTheDepths) holds, the spread inside each texel included.
+ */
+MESOLIGHTRELIEFTEXTURES_EXPORT std::vector<float> SurfaceNormalMomentLevel(
+  const float* depth, int w, int h, double depthScale, int level);
 
 } // namespace mesolight
 

@@ -170,6 +170,9 @@ TEST(CompactReliefStorage, SobelNormalsAreRecognised)
   EXPECT_GT(SobelNormalMismatch(depth.data(), twice.data(), w, h, k), 0.02f);
   EXPECT_GT(SobelNormalMismatch(depth.data(), xy.data(), w, h, 2.0 * k), 0.02f);
   EXPECT_GT(SobelNormalMismatch(depth.data(), xy.data(), w, h, 0.0), 1.f);
+  EXPECT_TRUE(NormalsAreTheDepths(depth.data(), xy.data(), w, h, k));
+  EXPECT_FALSE(NormalsAreTheDepths(depth.data(), twice.data(), w, h, k));
+  EXPECT_FALSE(NormalsAreTheDepths(depth.data(), xy.data(), w, h, 0.0));
 }
 
 namespace
@@ -668,5 +671,68 @@ TEST(CompactNormalMoments, FilterAsFloatMoments)
     EXPECT_TRUE(unweighted.MeanDegrees > meanDegrees || unweighted.MaxDegrees > maxDegrees ||
       unweighted.MaxLength > maxLength)
       << name << ": negative case, moments without the area weight";
+  }
+}
+
+// The moments of the surface a depth map defines (SurfaceNormalMomentLevel). A plane: those of its
+// one normal, as NormalMomentLevel gives them from that normal. Stripes a texel wide (depth 0, 1,
+// 0, 1 from column to column): the bilinear surface's slope is one depth unit per texel
+// everywhere, half the quarters rising and half falling, so each interior texel's mean normal is
+// flat but its second moment holds the spread, E[w nx^2] = (k w)^2 / sqrt(1 + (k w)^2), and
+// E[w nz^2] = E[nz] = 1 / sqrt(1 + (k w)^2). The Sobel normals of the same stripes are flat and
+// spread nothing: the negative case.
+TEST(CompactNormalMoments, SurfaceMomentsHoldTheSpreadInsideATexel)
+{
+  const int w = 16, h = 12;
+  const float k = 0.05f;
+  std::vector<float> plane(static_cast<size_t>(w) * h), stripes(plane.size());
+  for (int j = 0; j < h; ++j)
+  {
+    for (int i = 0; i < w; ++i)
+    {
+      plane[static_cast<size_t>(j) * w + i] = 0.02f * static_cast<float>(i) + 0.01f * j;
+      stripes[static_cast<size_t>(j) * w + i] = static_cast<float>(i % 2);
+    }
+  }
+  float n[3], expected[K];
+  NormalFromGradient(0.02f, 0.01f, w, k, n);
+  NormalMoments(n[0], n[1], n[2], expected);
+  const std::vector<float> planeMoments = SurfaceNormalMomentLevel(plane.data(), w, h, k, 0);
+  for (int j = 1; j + 1 < h; ++j)
+  {
+    for (int i = 1; i + 1 < w; ++i)
+    {
+      for (int c = 0; c < K; ++c)
+      {
+        ASSERT_NEAR(planeMoments[K * (static_cast<size_t>(j) * w + i) + c], expected[c], 1e-5f)
+          << "texel " << i << ", " << j << ", moment " << c;
+      }
+    }
+  }
+
+  const double slope = static_cast<double>(k) * w;
+  const double spread = slope * slope / std::sqrt(1.0 + slope * slope);
+  const double nz = 1.0 / std::sqrt(1.0 + slope * slope);
+  const std::vector<float> surface = SurfaceNormalMomentLevel(stripes.data(), w, h, k, 0);
+  std::vector<float> rgba(4 * stripes.size()), xy(2 * stripes.size()), z(stripes.size());
+  ComputeReliefTexture(stripes.data(), w, h, k, BorderMode::Clamp, rgba.data());
+  for (size_t t = 0; t < stripes.size(); ++t)
+  {
+    xy[2 * t] = 2.f * rgba[4 * t] - 1.f;
+    xy[2 * t + 1] = 2.f * rgba[4 * t + 1] - 1.f;
+    z[t] = 2.f * rgba[4 * t + 2] - 1.f;
+  }
+  const std::vector<float> sobel = NormalMomentLevel(xy.data(), z.data(), w, h, 0);
+  for (int j = 1; j + 1 < h; ++j)
+  {
+    for (int i = 1; i + 1 < w; ++i)
+    {
+      const float* m = &surface[K * (static_cast<size_t>(j) * w + i)];
+      EXPECT_NEAR(m[0], spread, 1e-5) << "texel " << i << ", " << j;
+      EXPECT_NEAR(m[3], nz, 1e-5) << "texel " << i << ", " << j;
+      EXPECT_NEAR(m[6], 0.0, 1e-6) << "texel " << i << ", " << j;
+      EXPECT_LT(sobel[K * (static_cast<size_t>(j) * w + i)], 0.01 * spread)
+        << "negative: the Sobel normals of the stripes are flat";
+    }
   }
 }
