@@ -263,18 +263,23 @@
   // Lambertian under the environment: albedo / pi times irradiance, scaled by the exposure.
   vec3 mlEnvironment = vec3(0.0);
 #ifdef ML_LIGHT_SET
-  mlEnvironment += mlLightSetIrradiance(mlShadingNormal, mlShadowPoint, mlWorldToTexture,
-    mlHasFrame);
+  // mlNormalLength: the filtered normal's length (Toksvig), 1 without level of detail: each
+  // light's n.l is linear in n.
+  mlEnvironment += mlNormalLength *
+    mlLightSetIrradiance(mlShadingNormal, mlShadowPoint, mlWorldToTexture, mlHasFrame);
 #endif
 #ifdef ML_IRRADIANCE_PROBES
-  // The probes' SH9 irradiance at the perturbed normal, in world coordinates, with the relief's
-  // occlusion and inter-reflection (mlProbeIndirect).
-  mlEnvironment += mlProbeIndirect(mlHit.xy, transpose(mlWorldToView) * mlShadingNormal,
-    transpose(mlWorldToView) * mlN, diffuseColor, mlFlatLightIrradiance(mlHitPos, mlN, mlHit.xy));
+  // The probes' SH9 irradiance over the footprint's normals (their mean and second moment, world
+  // coordinates; one normal near), with the relief's occlusion and inter-reflection
+  // (mlProbeIndirect).
+  mat3 mlViewToWorld = transpose(mlWorldToView);
+  vec3 mlMeanNormalVC = mlNormalLength * mlShadingNormal;
+  mlEnvironment += mlProbeIndirect(mlHit.xy, mlViewToWorld * mlMeanNormalVC,
+    mlViewToWorld * (mlNormalSpreadVC + outerProduct(mlMeanNormalVC, mlMeanNormalVC)) *
+      mlWorldToView,
+    mlViewToWorld * mlN, diffuseColor, mlFlatLightIrradiance(mlHitPos, mlN, mlHit.xy));
 #endif
-  // mlNormalLength: the filtered normal's length (Toksvig), 1 without level of detail.
-  gl_FragData[0].rgb =
-    gl_FragData[0].rgb + mlEnvironment * (mlNormalLength * diffuseColor / 3.14159265);
+  gl_FragData[0].rgb = gl_FragData[0].rgb + mlEnvironment * (diffuseColor / 3.14159265);
 #ifdef ML_RADIANCE_HOOK
   // A subclass's change of the linear radiance at the hit (view coordinates, the macro normal),
   // e.g. the light field walkthrough's object shadow (vtkLightFieldReliefMapper).

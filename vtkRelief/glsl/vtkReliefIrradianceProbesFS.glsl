@@ -47,16 +47,20 @@ vec2 mlProbeCoordinates(vec2 uv)
   return vec2(probe.x / mlProbeGrid.x, probe.y / (ML_PROBE_BLOCKS * mlProbeGrid.y));
 }
 
-// SH9 irradiance of the seven fetched blocks for the unit world normal n, clamped at 0 (to be
-// multiplied by albedo / pi). A_l Y_lm(n) in the order of SH9 (Y00, Y1-1, Y10, Y11 | Y2-2, Y2-1,
-// Y20, Y21 | Y22), with A_0 = pi, A_1 = 2 pi / 3, A_2 = pi / 4.
-vec3 mlShIrradiance(vec4 c0, vec4 c1, vec4 c2, vec4 c3, vec4 c4, vec4 c5, vec4 c6, vec3 n)
+// SH9 irradiance of the seven fetched blocks averaged over a spread of unit world normals with
+// mean n (of length 1 or less) and second moment S = E[n n^T], clamped at 0 (to be multiplied by
+// albedo / pi). A_l Y_lm(n) in the order of SH9 (Y00, Y1-1, Y10, Y11 | Y2-2, Y2-1, Y20, Y21 |
+// Y22), with A_0 = pi, A_1 = 2 pi / 3, A_2 = pi / 4: polynomials in n of degree 0, 1 and 2, whose
+// means the two moments give exactly (a footprint's spread of normals under level of detail; one
+// normal: S = n n^T). The constant band keeps its full weight however the normals spread.
+vec3 mlShIrradiance(
+  vec4 c0, vec4 c1, vec4 c2, vec4 c3, vec4 c4, vec4 c5, vec4 c6, vec3 n, mat3 S)
 {
   vec4 w0 = vec4(3.14159265 * 0.282095, 2.09439510 * 0.488603 * vec3(n.y, n.z, n.x));
   vec4 w1 = 0.78539816 *
-    vec4(1.092548 * n.x * n.y, 1.092548 * n.y * n.z, 0.315392 * (3.0 * n.z * n.z - 1.0),
-      1.092548 * n.x * n.z);
-  float w8 = 0.78539816 * 0.546274 * (n.x * n.x - n.y * n.y);
+    vec4(1.092548 * S[0][1], 1.092548 * S[1][2], 0.315392 * (3.0 * S[2][2] - 1.0),
+      1.092548 * S[0][2]);
+  float w8 = 0.78539816 * 0.546274 * (S[0][0] - S[1][1]);
   vec3 irradiance =
     vec3(dot(c0, w0) + dot(c1, w1), dot(c2, w0) + dot(c3, w1), dot(c4, w0) + dot(c5, w1)) +
     c6.rgb * w8;
@@ -139,11 +143,12 @@ vec3 mlFlatLightIrradiance(vec3 posVC, vec3 macroVC, vec2 uv)
 }
 
 // The relief's indirect irradiance at texture coordinates uv: the probes' SH9 irradiance at the
-// perturbed unit world normal n, times the visible share of their light, plus the relief's multi-bounce
+// perturbed world normal n (the mean of a footprint's normals, second moment S: mlShIrradiance),
+// times the visible share of their light, plus the relief's multi-bounce
 // inter-reflection (1 - V) a Vs E_flat / (1 - a (1 - Vs)), a the albedo, E_flat the flat wall's
 // irradiance (the probes' at the macro world normal m plus flatLights) -- ReliefInterReflected's
 // MultiBounce. With V = 1 (no map) this is the probes' irradiance alone.
-vec3 mlProbeIndirect(vec2 uv, vec3 n, vec3 m, vec3 albedo, vec3 flatLights)
+vec3 mlProbeIndirect(vec2 uv, vec3 n, mat3 S, vec3 m, vec3 albedo, vec3 flatLights)
 {
   vec2 st = mlProbeCoordinates(uv);
   float block = 1.0 / ML_PROBE_BLOCKS;
@@ -156,14 +161,15 @@ vec3 mlProbeIndirect(vec2 uv, vec3 n, vec3 m, vec3 albedo, vec3 flatLights)
   vec4 c6 = textureLod(mlIrradianceProbes, st + vec2(0.0, 6.0 * block), 0.0);
   vec3 share = clamp(mlReliefShare(uv).rgb, 0.0, 1.0);
   float visible = share.r;
-  vec3 irradiance = share.g * mlShIrradiance(c0, c1, c2, c3, c4, c5, c6, n);
+  vec3 irradiance = share.g * mlShIrradiance(c0, c1, c2, c3, c4, c5, c6, n, S);
   if (visible >= 1.0)
   {
     return irradiance;
   }
   vec3 a = clamp(albedo, 0.0, 1.0);
   float occluded = 1.0 - visible;
-  vec3 flatIrradiance = mlShIrradiance(c0, c1, c2, c3, c4, c5, c6, m) + flatLights;
+  vec3 flatIrradiance =
+    mlShIrradiance(c0, c1, c2, c3, c4, c5, c6, m, outerProduct(m, m)) + flatLights;
   return irradiance +
     occluded * a * flatIrradiance * share.b / max(1.0 - a * (1.0 - share.b), vec3(1e-9));
 }
