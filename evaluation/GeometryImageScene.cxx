@@ -260,7 +260,8 @@ bool BuildGeometryImageDenseScene(
     positions->SetTuple3(static_cast<vtkIdType>(k), p.x, p.y, p.z);
   }
   image->GetPointData()->SetScalars(positions);
-  // One vertex per pixel; normals of the displaced geometry itself.
+  // One vertex per pixel, shaded with its triangles' own normals (VTK derives them per fragment
+  // when the mesh has none), as the relief mapper shades the surface it marches.
   GeometryImageSceneOptions dense = options;
   dense.Stride = 1;
   dense.Tolerance = 0.0;
@@ -269,6 +270,7 @@ bool BuildGeometryImageDenseScene(
   {
     return false;
   }
+  mesh->GetPointData()->SetNormals(nullptr);
   UseMesh(options, scene, mesh);
   return true;
 }

@@ -3,6 +3,7 @@
 
 #include "MathConstants.h"
 
+#include "CompactReliefStorage.h"
 #include "HeightFieldTracer.h"
 #include "ImageCompare.h"
 #include "ReliefReference.h"
@@ -19,6 +20,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <random>
 
 namespace mesolight
@@ -103,6 +105,7 @@ struct ReferenceSetup
   vtkDataArray* Rgba = nullptr;
   bool ConePacked = false; // vtkConeMapFilter's packing: normal x, y in RG, cone ratio in B
   std::vector<float> Depth;
+  std::unique_ptr<HeightField> Surface; // set when the normals are the depth's own
 
   ReferenceSetup(vtkImageData* relief, double depthScale)
     : DepthScale(depthScale)
@@ -116,6 +119,26 @@ struct ReferenceSetup
     for (size_t i = 0; i < this->Depth.size(); ++i)
     {
       this->Depth[i] = static_cast<float>(this->Rgba->GetComponent(static_cast<vtkIdType>(i), 3));
+    }
+    // Normals that are the depth's own shade as the relief mapper shades them: with the
+    // gradient of the bilinear surface (NormalsAreTheDepths).
+    vtkDataArray* baked = relief->GetFieldData()->GetArray("MesolightDepthScale");
+    if (baked && baked->GetNumberOfTuples() > 0)
+    {
+      std::vector<float> normalXY(2 * this->Depth.size());
+      for (size_t i = 0; i < this->Depth.size(); ++i)
+      {
+        for (int c = 0; c < 2; ++c)
+        {
+          normalXY[2 * i + c] =
+            static_cast<float>(2.0 * this->Rgba->GetComponent(static_cast<vtkIdType>(i), c) - 1.0);
+        }
+      }
+      if (NormalsAreTheDepths(this->Depth.data(), normalXY.data(), this->Dims[0], this->Dims[1],
+            baked->GetComponent(0, 0)))
+      {
+        this->Surface = std::make_unique<HeightField>(this->Field());
+      }
     }
   }
 
@@ -154,10 +177,17 @@ struct ReferenceSetup
     return samples;
   }
 
-  // The shading normal is the relief texture's (bilinearly sampled, as the GPU does): the asset's
-  // normals are part of the scene; only visibility and irradiance are referenced.
+  // The shading normal as the relief mapper takes it: the bilinear surface's when the texture's
+  // normals are its depth's own, else the texture's (bilinearly sampled, as the GPU does: a
+  // normal map made apart is part of the scene). Only visibility and irradiance are referenced.
   glm::dvec3 WorldNormal(const glm::dvec3& hit) const
   {
+    if (this->Surface)
+    {
+      const glm::dvec2 g = this->Surface->GradientAt(hit.x, hit.y);
+      return glm::normalize(
+        glm::dvec3(this->DepthScale * this->Aspect * g.x, this->DepthScale * g.y, this->Aspect));
+    }
     const glm::dvec3 packed = SampleNormal(this->Rgba, this->Dims[0], this->Dims[1], hit.x, hit.y);
     glm::dvec3 nt = packed * 2.0 - 1.0;
     if (this->ConePacked) // as the shader decodes it: z from the filtered x, y

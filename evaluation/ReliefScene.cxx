@@ -458,9 +458,14 @@ bool BuildDenseReferenceScene(
   dense->UseInputDepthScaleOff();
   dense->SetDepthScale(options.DepthScale);
   dense->Update();
+  // Shaded with its triangles' own normals (VTK derives them per fragment when the mesh has
+  // none), as the path tracer shades it and as the relief mapper shades the surface it marches.
+  vtkNew<vtkPolyData> mesh;
+  mesh->ShallowCopy(dense->GetOutput());
+  mesh->GetPointData()->RemoveArray("Normals");
 
   vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputConnection(dense->GetOutputPort());
+  mapper->SetInputData(mesh);
   mapper->ScalarVisibilityOff();
   scene.Mapper = nullptr;
   FinishScene(options, mapper, scene);

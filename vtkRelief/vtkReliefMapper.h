@@ -39,6 +39,14 @@
  * normals; if the relief texture carries a different "MesolightDepthScale" field value, the mapper
  * rescales its normals so shading stays consistent with the marched geometry.
  *
+ * Shading normal: when the texture's normals are its depth's own (the Sobel normals
+ * vtkReliefTextureFilter bakes at the "MesolightDepthScale" it records; checked at upload,
+ * mesolight::NormalsAreTheDepths), the hit is shaded with the gradient of the surface marched, the
+ * bilinear interpolation of the depth texels, as the exact CPU intersector and the path tracer's
+ * dense displaced mesh shade it, and level of detail filters that surface's normals. The 3 x 3
+ * Sobel stencil flattens detail a texel or two wide and brightened it (docs/relief-methods.md,
+ * "The shading normal"). Normals made apart (a normal map) are shaded as given.
+ *
  * The relief texture comes either as data (SetReliefTextureData), from a pipeline
  * (SetReliefTextureConnection, input port 1), or attached to the input polydata as field data
  * (vtkAttachReliefTexture); likewise the light set (input port 2). Irradiance probes (input

@@ -79,8 +79,10 @@ void vtkReliefShaderSource::Configure(vtkReliefProperty* property, bool albedoTe
 }
 
 //------------------------------------------------------------------------------
-void vtkReliefShaderSource::SetTextureLayout(bool floatTextures, bool storedNormals, bool moments)
+void vtkReliefShaderSource::SetTextureLayout(
+  bool floatTextures, bool storedNormals, bool moments, bool normalsFromDepth)
 {
+  this->NormalsFromDepth = normalsFromDepth;
   this->NormalMoments = moments;
   this->FloatTextures = floatTextures;
   this->StoredNormals = storedNormals;
@@ -135,7 +137,8 @@ std::string vtkReliefShaderSource::Key() const
     (this->GetCurved() ? "Q" : "q") +
     (this->FloatTextures      ? "F"
         : this->StoredNormals ? "N"
-                              : "f");
+                              : "f") +
+    (this->NormalsFromDepth ? "S" : "s");
 }
 
 //------------------------------------------------------------------------------
@@ -245,6 +248,10 @@ void vtkReliefShaderSource::ReplaceValuesAfter(std::string& fs, const void* cell
   else if (this->StoredNormals)
   {
     defines += "#define ML_STORED_NORMALS\n";
+  }
+  if (this->NormalsFromDepth)
+  {
+    defines += "#define ML_SURFACE_NORMALS\n";
   }
   if (p->GetAdaptiveSteps())
   {

@@ -41,7 +41,8 @@ public:
    * compact one with the normals uploaded (storedNormals) or derived from the depth; moments:
    * the normal's mip-mapped moments are uploaded (level of detail's visible normal filter).
    */
-  void SetTextureLayout(bool floatTextures, bool storedNormals, bool moments = false);
+  void SetTextureLayout(
+    bool floatTextures, bool storedNormals, bool moments, bool normalsFromDepth);
 
   /**
    * Whether the geometry drawn carries per-vertex quadrics (vtkReliefGeometryCache::IsCurved).
@@ -92,6 +93,7 @@ protected:
   bool FloatTextures = false;
   bool StoredNormals = false;
   bool NormalMoments = false;
+  bool NormalsFromDepth = false;
   std::map<const void*, std::string> Keys;
 
 private:

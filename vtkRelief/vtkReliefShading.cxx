@@ -211,7 +211,8 @@ bool vtkReliefShading::StartDraw(vtkOpenGLRenderWindow* renWin, vtkReliefPropert
     this->ReliefTexture->GetConePacked(), this->LightSet->GetHasLightSet(),
     this->Probes->GetHasProbes());
   this->ShaderSource->SetTextureLayout(this->ReliefTexture->GetFloatTextures(),
-    this->ReliefTexture->GetNormalsStored(), this->ReliefTexture->GetMomentsUploaded());
+    this->ReliefTexture->GetNormalsStored(), this->ReliefTexture->GetMomentsUploaded(),
+    this->ReliefTexture->GetNormalsFromDepth());
   const int wrap =
     property->GetRepeatTexture() ? vtkTextureObject::Repeat : vtkTextureObject::ClampToEdge;
   this->ReliefTexture->ActivateTextures(wrap);

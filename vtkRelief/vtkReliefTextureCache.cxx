@@ -258,7 +258,7 @@ bool vtkReliefTextureCache::Update(vtkOpenGLRenderWindow* renWin, vtkImageData* 
         depth[i] = vtkMath::ClampValue(channel[i], 0.f, 1.f);
       }
     }
-    else if (c < 2 && !floatTextures)
+    else if (c < 2)
     {
       normalXY.resize(2 * n);
       for (size_t i = 0; i < n; ++i)
@@ -293,8 +293,8 @@ bool vtkReliefTextureCache::Update(vtkOpenGLRenderWindow* renWin, vtkImageData* 
     this->DeriveNormals = deriveNormals;
     this->NormalTexture->ReleaseGraphicsResources(renWin);
     this->NormalsStored = false;
-    this->NormalMismatch = -1.0;
     this->BaseBytes = 0;
+    this->CheckNormalsAgainstDepth(depth, normalXY, dims, floatTextures);
     if (floatTextures)
     {
       if (!this->UploadFloat(renWin, scalars, dims, bytes, baseMipmaps))
@@ -319,7 +319,7 @@ bool vtkReliefTextureCache::Update(vtkOpenGLRenderWindow* renWin, vtkImageData* 
     }
     this->MomentsUploaded = false;
     this->MomentBytes = 0;
-    if (wantMoments && !this->UploadMoments(renWin, normalXY, normalZ, dims))
+    if (wantMoments && !this->UploadMoments(renWin, depth, normalXY, normalZ, dims))
     {
       return false;
     }
@@ -432,6 +432,30 @@ bool vtkReliefTextureCache::UploadFloat(
 }
 
 //------------------------------------------------------------------------------
+void vtkReliefTextureCache::CheckNormalsAgainstDepth(const std::vector<float>& depth,
+  const std::vector<float>& normalXY, const int dims[3], bool floatTextures)
+{
+  this->NormalMismatch = -1.0;
+  this->NormalsFromDepth = false;
+  if (!(this->BakedDepthScale > 0.0) || normalXY.size() != 2 * depth.size())
+  {
+    return;
+  }
+  // Against the depth as uploaded: 16-bit in compact storage.
+  std::vector<float> uploaded(depth);
+  if (!floatTextures)
+  {
+    for (float& d : uploaded)
+    {
+      d = static_cast<float>(mesolight::QuantizeDepth16(d)) / 65535.f;
+    }
+  }
+  this->NormalMismatch = mesolight::SobelNormalMismatch(
+    uploaded.data(), normalXY.data(), dims[0], dims[1], this->BakedDepthScale);
+  this->NormalsFromDepth = this->NormalMismatch <= mesolight::SobelNormalTolerance;
+}
+
+//------------------------------------------------------------------------------
 bool vtkReliefTextureCache::UploadCompact(vtkOpenGLRenderWindow* renWin,
   const std::vector<float>& depth, const std::vector<float>& normalXY,
   const std::vector<float>& normalZ, const int dims[3], bool mipmaps, bool deriveNormals,
@@ -455,22 +479,9 @@ bool vtkReliefTextureCache::UploadCompact(vtkOpenGLRenderWindow* renWin,
   }
   this->BaseBytes = GetTextureBytes(this->TextureObject);
 
-  // Normals derived in the shader when asked and they are the Sobel normals of this depth, as
-  // vtkReliefTextureFilter bakes them (Mendez Fernandez's thesis, section 3.2); else uploaded.
-  this->NormalsStored = true;
-  if (deriveNormals && this->BakedDepthScale > 0.0)
-  {
-    std::vector<float> uploaded(n);
-    for (size_t i = 0; i < n; ++i)
-    {
-      uploaded[i] = static_cast<float>(depth16[i]) / 65535.f;
-    }
-    this->NormalMismatch = mesolight::SobelNormalMismatch(
-      uploaded.data(), normalXY.data(), dims[0], dims[1], this->BakedDepthScale);
-    // About one degree: 8-bit baked normals are within 1/127 of the float ones.
-    const double tolerance = 0.02;
-    this->NormalsStored = !(this->NormalMismatch <= tolerance);
-  }
+  // Normals derived in the shader when asked and they are the depth's own (Sobel, as
+  // vtkReliefTextureFilter bakes them; Mendez Fernandez's thesis, section 3.2); else uploaded.
+  this->NormalsStored = !(deriveNormals && this->NormalsFromDepth);
   if (this->NormalsStored)
   {
     // Hemispherical octahedral coordinates (Cigolle et al., "A Survey of Efficient
@@ -496,7 +507,8 @@ bool vtkReliefTextureCache::UploadCompact(vtkOpenGLRenderWindow* renWin,
 
 //------------------------------------------------------------------------------
 bool vtkReliefTextureCache::UploadMoments(vtkOpenGLRenderWindow* renWin,
-  const std::vector<float>& normalXY, const std::vector<float>& normalZ, const int dims[3])
+  const std::vector<float>& depth, const std::vector<float>& normalXY,
+  const std::vector<float>& normalZ, const int dims[3])
 {
   // Moments of the unit normal n weighted by w = 1 / nz, the texel's surface area over its base
   // area: a footprint's mean of w (n.v) f(n) is then the light the pixel sees of its facets,
@@ -508,13 +520,19 @@ bool vtkReliefTextureCache::UploadMoments(vtkOpenGLRenderWindow* renWin,
   // up stay half floats: by Olano's error analysis of LEAN mapping, a moment's representation
   // error must stay below 1 / s for a specular exponent s, and 8 bits over these moments' range
   // (up to 16, the weight's clamp) err by 16/512, exponents of 30; half floats err by 1/2048 of
-  // the value. At a sixteenth of the texels they cost 1.3 bytes per texel of level 0.
+  // the value. At a sixteenth of the texels they cost 1.3 bytes per texel of level 0. Normals
+  // that are the depth's own give way to the surface's (NormalsFromDepth): the moments are
+  // those of the bilinear surface the shader shades up close, the spread inside each texel
+  // included, which the smoothed Sobel normals lack.
   constexpr int k = mesolight::NormalMomentCount;
   this->MomentFirstLevel = mesolight::NormalMomentFirstStoredLevel; // the normals are stored
   const int w = mesolight::MipLevelSize(dims[0], this->MomentFirstLevel);
   const int h = mesolight::MipLevelSize(dims[1], this->MomentFirstLevel);
-  const std::vector<float> moments = mesolight::NormalMomentLevel(normalXY.data(),
-    normalZ.empty() ? nullptr : normalZ.data(), dims[0], dims[1], this->MomentFirstLevel);
+  const std::vector<float> moments = this->NormalsFromDepth
+    ? mesolight::SurfaceNormalMomentLevel(
+        depth.data(), dims[0], dims[1], this->BakedDepthScale, this->MomentFirstLevel)
+    : mesolight::NormalMomentLevel(normalXY.data(), normalZ.empty() ? nullptr : normalZ.data(),
+        dims[0], dims[1], this->MomentFirstLevel);
   const size_t stored = static_cast<size_t>(w) * h;
   std::vector<float> m0(4 * stored), m1(4 * stored);
   for (size_t i = 0; i < stored; ++i)
@@ -636,6 +654,7 @@ void vtkReliefTextureCache::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "DepthBits: " << this->DepthBits << "\n";
   os << indent << "NormalsStored: " << (this->NormalsStored ? "yes" : "no") << "\n";
   os << indent << "NormalMismatch: " << this->NormalMismatch << "\n";
+  os << indent << "NormalsFromDepth: " << (this->NormalsFromDepth ? "yes" : "no") << "\n";
   os << indent << "ConesUploaded: " << (this->ConesUploaded ? "yes" : "no") << "\n";
   os << indent << "MomentsUploaded: " << (this->MomentsUploaded ? "yes" : "no") << "\n";
   os << indent << "MomentFirstLevel: " << this->MomentFirstLevel << "\n";

@@ -107,10 +107,19 @@ public:
 
   /**
    * The largest normal component difference between the stored normals and the Sobel normals
-   * of the uploaded depth (interior texels); negative unless a compact upload was asked to
-   * derive the normals.
+   * of the uploaded depth (interior texels); negative when the texture records no depth scale
+   * (MesolightDepthScale) to compare them at.
    */
   vtkGetMacro(NormalMismatch, double);
+
+  /**
+   * Whether the texture's normals are its depth's own, the Sobel normals vtkReliefTextureFilter
+   * bakes at the depth scale it records (NormalMismatch within about a degree): the shader then
+   * shades near texels with the gradient of the surface it marches (the bilinear depth's), as
+   * the exact intersector and the dense displaced mesh do, and reads the stored normals only to
+   * filter far ones. Other normals (a normal map made apart) are shaded as given.
+   */
+  vtkGetMacro(NormalsFromDepth, bool);
 
   /**
    * Bytes the textures of the last Update occupy on the GPU, all mip levels, from the sizes
@@ -153,8 +162,10 @@ protected:
   bool UploadCompact(vtkOpenGLRenderWindow* renWin, const std::vector<float>& depth,
     const std::vector<float>& normalXY, const std::vector<float>& normalZ, const int dims[3],
     bool mipmaps, bool deriveNormals, std::vector<std::uint16_t>& depth16);
-  bool UploadMoments(vtkOpenGLRenderWindow* renWin, const std::vector<float>& normalXY,
-    const std::vector<float>& normalZ, const int dims[3]);
+  void CheckNormalsAgainstDepth(const std::vector<float>& depth, const std::vector<float>& normalXY,
+    const int dims[3], bool floatTextures);
+  bool UploadMoments(vtkOpenGLRenderWindow* renWin, const std::vector<float>& depth,
+    const std::vector<float>& normalXY, const std::vector<float>& normalZ, const int dims[3]);
 
   vtkSmartPointer<vtkTextureObject> TextureObject;
   vtkSmartPointer<vtkTextureObject> NormalTexture;
@@ -174,6 +185,7 @@ protected:
   bool Repeat = false; // the wrap mode of the current draw
   int DepthBits = 0;
   double NormalMismatch = -1.0;
+  bool NormalsFromDepth = false;
   vtkIdType BaseBytes = 0; // relief texture and normals
   vtkIdType ConeBytes = 0;
   vtkIdType UploadedBytes = 0;

@@ -181,12 +181,52 @@ uniform float mlMomentFirstLevel;
 
 vec3 mlOctahedralNormal(vec2 e);
 
+#ifdef ML_SURFACE_NORMALS
+// The facet level-0 texel t stands for when the normals are the depth's own: the cell of the
+// bilinear surface from texel t to t + 1, its mean slope as a unit normal of the bake's
+// convention (mlSobelNormal's, a two- rather than a three-texel stencil) and its mean depth. The
+// levels' lookups are taken half a texel back (mlFacetLookupUv), so that the cells cover the
+// footprint as the texels do.
+vec3 mlSurfaceCellNormal(ivec2 t, out float depth)
+{
+  ML_COUNT_SAMPLE();
+  ivec2 size = ivec2(mlTextureSize);
+  ivec2 t1 = t + 1;
+  t1 = mlRepeatTexture != 0 ? t1 % size : min(t1, size - 1);
+  float d00 = texelFetch(mlReliefTexture, t, 0).ML_DEPTH_CHANNEL;
+  float d10 = texelFetch(mlReliefTexture, ivec2(t1.x, t.y), 0).ML_DEPTH_CHANNEL;
+  float d01 = texelFetch(mlReliefTexture, ivec2(t.x, t1.y), 0).ML_DEPTH_CHANNEL;
+  float d11 = texelFetch(mlReliefTexture, t1, 0).ML_DEPTH_CHANNEL;
+  depth = 0.25 * (d00 + d10 + d01 + d11);
+  vec2 g = 0.5 * vec2(d10 - d00 + d11 - d01, d01 - d00 + d11 - d10); // depth per texel
+  float k = mlGradientScale > 0.0 ? 1.0 / mlGradientScale : 0.0;
+  return normalize(vec3(k * mlTextureSize.x * g, 1.0));
+}
+#define mlFacetLookupUv(uv) ((uv) - 0.5 / mlTextureSize)
+#else
+#define mlFacetLookupUv(uv) (uv)
+#endif
+
+// The unit normal of level-0 texel t's facet (and its depth): the stored normal, or the
+// surface's cell (ML_SURFACE_NORMALS).
+vec3 mlTexelFacet(ivec2 t, out float depth)
+{
+#ifdef ML_SURFACE_NORMALS
+  return mlSurfaceCellNormal(t, depth);
+#else
+  ML_COUNT_SAMPLE();
+  ML_COUNT_SAMPLE();
+  depth = texelFetch(mlReliefTexture, t, 0).r;
+  return normalize(mlOctahedralNormal(texelFetch(mlNormalTexture, t, 0).rg));
+#endif
+}
+
 // Adds k times the moments of level-0 texel t's normal (mesolight::NormalMoments): a texel's
 // second moment is its normal's outer product, so levels 0 and 1 need no texture of their own.
 void mlAddTexelMoments(ivec2 t, float k, inout vec4 a, inout vec4 b)
 {
-  ML_COUNT_SAMPLE();
-  vec3 n = normalize(mlOctahedralNormal(texelFetch(mlNormalTexture, t, 0).rg));
+  float depth;
+  vec3 n = mlTexelFacet(t, depth);
   float w = k / max(n.z, 1.0 / 16.0);
   a += w * vec4(n.x * n.x, n.y * n.y, n.x * n.y, n.z * n.z);
   b += w * vec4(n.x * n.z, n.y * n.z, n.x, n.y);
@@ -291,13 +331,12 @@ float mlFacetLambda(vec3 l)
 
 void mlAddTexelFacet(ivec2 t, float k)
 {
-  ML_COUNT_SAMPLE();
-  ML_COUNT_SAMPLE();
-  vec3 n = normalize(mlOctahedralNormal(texelFetch(mlNormalTexture, t, 0).rg));
+  float depth;
+  vec3 n = mlTexelFacet(t, depth);
   float s = mlDepthScale * mlGradientScale;
   mlFacetNormal[mlFacetCount] = normalize(vec3(s * n.xy, n.z));
   mlFacetBase[mlFacetCount] = k;
-  mlFacetDepth[mlFacetCount] = texelFetch(mlReliefTexture, t, 0).r;
+  mlFacetDepth[mlFacetCount] = depth;
   ++mlFacetCount;
 }
 
@@ -415,13 +454,13 @@ vec3 mlVisibleNormal(vec2 uv, vec3 v, float lod)
     float f = lod - float(level);
 #ifdef ML_HEIGHT_MASKING
     mlFacetCount = 0;
-    mlAddLevelFacets(uv, level, 1.0 - f);
+    mlAddLevelFacets(mlFacetLookupUv(uv), level, 1.0 - f);
     float stored = 0.0;
     if (f > 0.0)
     {
       if (float(level + 1) < mlMomentFirstLevel)
       {
-        mlAddLevelFacets(uv, level + 1, f);
+        mlAddLevelFacets(mlFacetLookupUv(uv), level + 1, f);
       }
       else
       {
@@ -441,12 +480,12 @@ vec3 mlVisibleNormal(vec2 uv, vec3 v, float lod)
     mlNormalSpread = (1.0 - stored) * maskedSpread + stored * mlNormalSpread;
     return mix(masked, unmasked, stored);
 #else
-    mlAddLevelMoments(uv, level, 1.0 - f, a, b);
+    mlAddLevelMoments(mlFacetLookupUv(uv), level, 1.0 - f, a, b);
     if (f > 0.0)
     {
       if (float(level + 1) < mlMomentFirstLevel)
       {
-        mlAddLevelMoments(uv, level + 1, f, a, b);
+        mlAddLevelMoments(mlFacetLookupUv(uv), level + 1, f, a, b);
       }
       else
       {
@@ -621,6 +660,26 @@ vec3 mlSobelNormal(ivec2 c, ivec2 size)
   return normalize(vec3(k * mlTextureSize.x * g, 1.0));
 }
 #endif
+
+// (d depth / du, d depth / dv) of the surface marched, the bilinear interpolation of the level-0
+// depth texels, at uv: the gradient the exact CPU intersector and the path tracer shade with.
+vec2 mlSurfaceGradient(vec2 uv)
+{
+  ML_COUNT_SAMPLE();
+  ivec2 size = ivec2(mlTextureSize);
+  vec2 x = uv * mlTextureSize - 0.5;
+  ivec2 i0 = ivec2(floor(x));
+  vec2 f = x - vec2(i0);
+  float d[4];
+  for (int k = 0; k < 4; ++k)
+  {
+    ivec2 t = i0 + ivec2(k - 2 * (k / 2), k / 2);
+    t = mlRepeatTexture != 0 ? (t % size + size) % size : clamp(t, ivec2(0), size - 1);
+    d[k] = texelFetch(mlReliefTexture, t, 0).ML_DEPTH_CHANNEL;
+  }
+  return vec2(mix(d[1] - d[0], d[3] - d[2], f.y), mix(d[2] - d[0], d[3] - d[1], f.x)) *
+    mlTextureSize;
+}
 
 // (d depth / du, d depth / dv) at uv.
 vec2 mlDepthGradient(vec2 uv)

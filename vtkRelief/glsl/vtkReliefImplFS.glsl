@@ -163,10 +163,10 @@
     vec2 g = vec2(0.0);
     if (mlShadeLod < 1.0)
     {
-#ifdef ML_STORED_NORMALS
-      g = mlGradientFromNormal(mlPackedNormalAt(mlHit.xy));
+#ifdef ML_SURFACE_NORMALS
+      g = mlSurfaceGradient(mlHit.xy);
 #else
-      g = mlDepthGradient(mlHit.xy);
+      g = mlGradientFromNormal(mlPackedNormalAt(mlHit.xy));
 #endif
     }
 #else
@@ -180,6 +180,10 @@
     vec3 mlFilteredNormal = vec3(0.0, 0.0, 1.0);
 #endif
     mlMarchLod = 0.0; // shadows march level 0 again
+#ifdef ML_SURFACE_NORMALS
+    // Near, the normal of the surface marched; blended into the filtered one over the first level.
+    g = mix(mlSurfaceGradient(mlHit.xy), g, clamp(mlShadeLod, 0.0, 1.0));
+#endif
 #endif
 #if defined(ML_LEVEL_OF_DETAIL) && !defined(ML_CONE_PACKED) && !defined(ML_VISIBLE_NORMALS)
     // Only where the footprint's level is above the base: the bilinear blend of neighbouring

@@ -33,9 +33,10 @@ CASES = {
     "SelfShadowing": ({}, {"SelfShadowing": 0}),
     "Silhouettes": ({}, {"Silhouettes": 0}),
     "WriteDepth": ({}, {"WriteDepth": 0}),
-    # Rays that leave the texture at its edges: a pattern deep at the border (Stone), deep.
+    # Rays that leave the texture at its edges: a pattern deep at the border (Stone), deep, and
+    # no silhouettes, so that they go on into the wrapped texture rather than end at the edge.
     "RepeatTexture": ({"source.Pattern": "Stone", "OverrideDepthScale": 1,
-                       "ReliefDepthScale": 0.3}, {"RepeatTexture": 1}),
+                       "ReliefDepthScale": 0.3, "Silhouettes": 0}, {"RepeatTexture": 1}),
     # A 1024^2 stone texture over a few hundred pixels: minified, so mip levels matter (level
     # of detail is on by default).
     "LevelOfDetail": ({"source.Pattern": "Stone", "source.Resolution": [1024, 1024]},

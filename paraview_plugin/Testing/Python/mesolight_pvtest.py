@@ -102,7 +102,10 @@ def show_relief(surface, relief, view, lights=None, **settings):
 
 
 def show_dense_reference(relief, view):
-    mesh = pvs.MesolightHeightFieldMesh(Input=relief)
+    # Shaded with its triangles' own normals (the mesh's point normals dropped: VTK derives them
+    # per fragment), as the path tracer shades it and the relief shades the surface it marches.
+    mesh = pvs.PassArrays(Input=pvs.MesolightHeightFieldMesh(Input=relief))
+    mesh.PointDataArrays = ["TCoords", "Depth"]
     display = pvs.Show(mesh, view)
     display.ColorArrayName = ["POINTS", ""]
     display.SetRepresentationType("Surface")
