@@ -294,7 +294,7 @@ bool vtkReliefTextureCache::Update(vtkOpenGLRenderWindow* renWin, vtkImageData* 
     this->NormalTexture->ReleaseGraphicsResources(renWin);
     this->NormalsStored = false;
     this->BaseBytes = 0;
-    this->CheckNormalsAgainstDepth(depth, normalXY, dims, floatTextures);
+    this->CheckNormalsAgainstDepth(depth, normalXY, dims);
     if (floatTextures)
     {
       if (!this->UploadFloat(renWin, scalars, dims, bytes, baseMipmaps))
@@ -432,8 +432,8 @@ bool vtkReliefTextureCache::UploadFloat(
 }
 
 //------------------------------------------------------------------------------
-void vtkReliefTextureCache::CheckNormalsAgainstDepth(const std::vector<float>& depth,
-  const std::vector<float>& normalXY, const int dims[3], bool floatTextures)
+void vtkReliefTextureCache::CheckNormalsAgainstDepth(
+  const std::vector<float>& depth, const std::vector<float>& normalXY, const int dims[3])
 {
   this->NormalMismatch = -1.0;
   this->NormalsFromDepth = false;
@@ -441,17 +441,9 @@ void vtkReliefTextureCache::CheckNormalsAgainstDepth(const std::vector<float>& d
   {
     return;
   }
-  // Against the depth as uploaded: 16-bit in compact storage.
-  std::vector<float> uploaded(depth);
-  if (!floatTextures)
-  {
-    for (float& d : uploaded)
-    {
-      d = static_cast<float>(mesolight::QuantizeDepth16(d)) / 65535.f;
-    }
-  }
+  // Against the float depth: 16-bit rounding moves a normal by far less than the tolerance.
   this->NormalMismatch = mesolight::SobelNormalMismatch(
-    uploaded.data(), normalXY.data(), dims[0], dims[1], this->BakedDepthScale);
+    depth.data(), normalXY.data(), dims[0], dims[1], this->BakedDepthScale);
   this->NormalsFromDepth = this->NormalMismatch <= mesolight::SobelNormalTolerance;
 }
 

@@ -107,7 +107,7 @@ public:
 
   /**
    * The largest normal component difference between the stored normals and the Sobel normals
-   * of the uploaded depth (interior texels); negative when the texture records no depth scale
+   * of the depth (interior texels); negative when the texture records no depth scale
    * (MesolightDepthScale) to compare them at.
    */
   vtkGetMacro(NormalMismatch, double);
@@ -115,9 +115,9 @@ public:
   /**
    * Whether the texture's normals are its depth's own, the Sobel normals vtkReliefTextureFilter
    * bakes at the depth scale it records (NormalMismatch within about a degree): the shader then
-   * shades near texels with the gradient of the surface it marches (the bilinear depth's), as
-   * the exact intersector and the dense displaced mesh do, and reads the stored normals only to
-   * filter far ones. Other normals (a normal map made apart) are shaded as given.
+   * shades the surface it marches (the bilinear depth's gradient near, its facets' moments far:
+   * ML_SURFACE_NORMALS), as the exact intersector and the path tracer's dense mesh do. Other
+   * normals (a normal map made apart) are shaded as given.
    */
   vtkGetMacro(NormalsFromDepth, bool);
 
@@ -162,8 +162,8 @@ protected:
   bool UploadCompact(vtkOpenGLRenderWindow* renWin, const std::vector<float>& depth,
     const std::vector<float>& normalXY, const std::vector<float>& normalZ, const int dims[3],
     bool mipmaps, bool deriveNormals, std::vector<std::uint16_t>& depth16);
-  void CheckNormalsAgainstDepth(const std::vector<float>& depth, const std::vector<float>& normalXY,
-    const int dims[3], bool floatTextures);
+  void CheckNormalsAgainstDepth(
+    const std::vector<float>& depth, const std::vector<float>& normalXY, const int dims[3]);
   bool UploadMoments(vtkOpenGLRenderWindow* renWin, const std::vector<float>& depth,
     const std::vector<float>& normalXY, const std::vector<float>& normalZ, const int dims[3]);
 

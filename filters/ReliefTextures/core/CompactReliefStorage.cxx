@@ -88,27 +88,25 @@ float SobelNormalMismatch(
   {
     return std::numeric_limits<float>::max();
   }
-  const std::size_t n = static_cast<std::size_t>(w) * static_cast<std::size_t>(h);
-  std::vector<float> gradient(2 * n);
-  ParallelFor(0, static_cast<std::size_t>(h), 16,
-    [&](std::size_t b, std::size_t e)
-    {
-      ComputeSobelGradientRows(
-        depth, w, h, BorderMode::Clamp, static_cast<int>(b), static_cast<int>(e), gradient.data());
-    });
+  // Row by row (a row's gradient at a time): the check runs on every upload, maps of 8192^2
+  // included, and a whole gradient image would double the upload's memory.
   const double k = depthScale;
   std::vector<float> rowMax(static_cast<std::size_t>(h), 0.f);
   ParallelFor(1, static_cast<std::size_t>(h - 1), 16,
     [&](std::size_t b, std::size_t e)
     {
+      std::vector<float> gradient(2 * static_cast<std::size_t>(w));
       for (std::size_t row = b; row < e; ++row)
       {
+        ComputeSobelGradientRow(
+          depth, w, h, BorderMode::Clamp, static_cast<int>(row), gradient.data());
         float worst = 0.f;
-        for (std::size_t i = row * std::size_t(w) + 1; i + 1 < (row + 1) * std::size_t(w); ++i)
+        for (std::size_t c = 1; c + 1 < std::size_t(w); ++c)
         {
+          const std::size_t i = row * std::size_t(w) + c;
           float derived[3];
           NormalFromGradient(
-            gradient[2 * i], gradient[2 * i + 1], w, static_cast<float>(k), derived);
+            gradient[2 * c], gradient[2 * c + 1], w, static_cast<float>(k), derived);
           worst = std::max(worst,
             std::max(std::fabs(derived[0] - normalXY[2 * i]),
               std::fabs(derived[1] - normalXY[2 * i + 1])));

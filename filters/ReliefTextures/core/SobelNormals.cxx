@@ -82,13 +82,23 @@ void ComputeSobelGradientRows(
   rowEnd = rowEnd > h ? h : rowEnd;
   for (int j = rowBegin; j < rowEnd; ++j)
   {
-    const Neighbours nj = GetNeighbours(j, h, mode);
-    float* out = gradOut + 2 * static_cast<std::size_t>(j) * static_cast<std::size_t>(w);
-    for (int i = 0; i < w; ++i)
-    {
-      const Neighbours ni = GetNeighbours(i, w, mode);
-      SobelAt(depth, w, ni, nj, i, j, out[2 * i], out[2 * i + 1]);
-    }
+    ComputeSobelGradientRow(depth, w, h, mode, j,
+      gradOut + 2 * static_cast<std::size_t>(j) * static_cast<std::size_t>(w));
+  }
+}
+
+void ComputeSobelGradientRow(
+  const float* depth, int w, int h, BorderMode mode, int row, float* rowOut)
+{
+  if (!depth || !rowOut || w <= 0 || row < 0 || row >= h)
+  {
+    return;
+  }
+  const Neighbours nj = GetNeighbours(row, h, mode);
+  for (int i = 0; i < w; ++i)
+  {
+    const Neighbours ni = GetNeighbours(i, w, mode);
+    SobelAt(depth, w, ni, nj, i, row, rowOut[2 * i], rowOut[2 * i + 1]);
   }
 }
 

@@ -51,6 +51,10 @@ MESOLIGHTRELIEFTEXTURES_EXPORT void ComputeSobelGradient(
 MESOLIGHTRELIEFTEXTURES_EXPORT void ComputeSobelGradientRows(
   const float* depth, int w, int h, BorderMode mode, int rowBegin, int rowEnd, float* gradOut);
 
+/// One row of ComputeSobelGradient(): rowOut holds 2*w floats, (gi, gj) per texel of row `row`.
+MESOLIGHTRELIEFTEXTURES_EXPORT void ComputeSobelGradientRow(
+  const float* depth, int w, int h, BorderMode mode, int row, float* rowOut);
+
 /// Tangent-space unit normal from a Sobel gradient (gi, gj in depth per texel) of a
 /// w-texel-wide map: n = normalize(k w gi, k w gj, 1).
 MESOLIGHTRELIEFTEXTURES_EXPORT void NormalFromGradient(
