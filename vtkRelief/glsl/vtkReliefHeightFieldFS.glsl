@@ -30,6 +30,27 @@ uniform float mlDepthScale;    // world depth of depth = 1 over the world length
 uniform float mlGradientScale; // 1 / depth scale the normals were baked with (0: flat bake)
 uniform float mlTexelAspect;   // texture height / width in texels (texels are square)
 uniform vec2 mlTextureSize;    // texels
+
+// Texel t of a level of `size` texels as the samplers address it: wrapped or clamped.
+ivec2 mlAddressTexel(ivec2 t, ivec2 size)
+{
+  return mlRepeatTexture != 0 ? (t % size + size) % size : clamp(t, ivec2(0), size - 1);
+}
+
+// The four level-0 texels a bilinear lookup at uv weighs, (i0, j0), (i1, j0), (i0, j1), (i1, j1)
+// as the samplers address them, and its fraction f.
+void mlBilinearTexels(vec2 uv, out ivec2 t[4], out vec2 f)
+{
+  ivec2 size = ivec2(mlTextureSize);
+  vec2 x = uv * mlTextureSize - 0.5;
+  ivec2 i0 = ivec2(floor(x));
+  f = x - vec2(i0);
+  for (int k = 0; k < 4; ++k)
+  {
+    t[k] = mlAddressTexel(i0 + ivec2(k - 2 * (k / 2), k / 2), size);
+  }
+}
+
 uniform int mlLinearSteps;
 uniform int mlRefinementSteps;
 uniform int mlMinimumSteps; // adaptive step counts: from mlLinearSteps (grazing) to this (head-on)
@@ -192,7 +213,7 @@ vec3 mlSurfaceCellNormal(ivec2 t, out float depth)
   ML_COUNT_SAMPLE();
   ivec2 size = ivec2(mlTextureSize);
   ivec2 t1 = t + 1;
-  t1 = mlRepeatTexture != 0 ? t1 % size : min(t1, size - 1);
+  t1 = mlAddressTexel(t1, size);
   float d00 = texelFetch(mlReliefTexture, t, 0).ML_DEPTH_CHANNEL;
   float d10 = texelFetch(mlReliefTexture, ivec2(t1.x, t.y), 0).ML_DEPTH_CHANNEL;
   float d01 = texelFetch(mlReliefTexture, ivec2(t.x, t1.y), 0).ML_DEPTH_CHANNEL;
@@ -269,7 +290,7 @@ ivec2 mlLevelLookupTexel(mlLevelLookup l, int n, out float weight)
   int i = n - c * perCorner;
   ivec2 o = ivec2(c & 1, c >> 1);
   ivec2 t = l.Corner + o;
-  t = mlRepeatTexture != 0 ? (t % l.Size + l.Size) % l.Size : clamp(t, ivec2(0), l.Size - 1);
+  t = mlAddressTexel(t, l.Size);
   vec2 axis = mix(1.0 - l.Fraction, l.Fraction, vec2(o));
   weight = axis.x * axis.y / float(perCorner);
   ivec2 child = ivec2(i % l.Children, i / l.Children);
@@ -536,16 +557,13 @@ vec3 mlPackedNormalAt(vec2 uv)
     // The four texels' unit normals blended as the float texture's are, by the bilinear weights:
     // blending their octahedral coordinates instead bends the normals between a wall and the
     // flat beside it, which max-mipmap's exact hits show (colour error on real maps).
-    ivec2 size = ivec2(mlTextureSize);
-    vec2 x = uv * mlTextureSize - 0.5;
-    ivec2 i0 = ivec2(floor(x));
-    vec2 f = x - vec2(i0);
+    ivec2 t[4];
+    vec2 f;
+    mlBilinearTexels(uv, t, f);
     vec3 n[4];
     for (int k = 0; k < 4; ++k)
     {
-      ivec2 t = i0 + ivec2(k - 2 * (k / 2), k / 2);
-      t = mlRepeatTexture != 0 ? (t % size + size) % size : clamp(t, ivec2(0), size - 1);
-      n[k] = normalize(mlOctahedralNormal(texelFetch(mlNormalTexture, t, 0).rg));
+      n[k] = normalize(mlOctahedralNormal(texelFetch(mlNormalTexture, t[k], 0).rg));
     }
     return mix(mix(n[0], n[1], f.x), mix(n[2], n[3], f.x), f.y);
   }
@@ -666,16 +684,13 @@ vec3 mlSobelNormal(ivec2 c, ivec2 size)
 vec2 mlSurfaceGradient(vec2 uv)
 {
   ML_COUNT_SAMPLE();
-  ivec2 size = ivec2(mlTextureSize);
-  vec2 x = uv * mlTextureSize - 0.5;
-  ivec2 i0 = ivec2(floor(x));
-  vec2 f = x - vec2(i0);
+  ivec2 t[4];
+  vec2 f;
+  mlBilinearTexels(uv, t, f);
   float d[4];
   for (int k = 0; k < 4; ++k)
   {
-    ivec2 t = i0 + ivec2(k - 2 * (k / 2), k / 2);
-    t = mlRepeatTexture != 0 ? (t % size + size) % size : clamp(t, ivec2(0), size - 1);
-    d[k] = texelFetch(mlReliefTexture, t, 0).ML_DEPTH_CHANNEL;
+    d[k] = texelFetch(mlReliefTexture, t[k], 0).ML_DEPTH_CHANNEL;
   }
   return vec2(mix(d[1] - d[0], d[3] - d[2], f.y), mix(d[2] - d[0], d[3] - d[1], f.x)) *
     mlTextureSize;
@@ -706,7 +721,7 @@ vec2 mlDepthGradient(vec2 uv)
       for (int i = 0; i < 4; ++i)
       {
         ivec2 t = mlBlockOrigin + ivec2(i, j);
-        t = mlRepeatTexture != 0 ? (t % size + size) % size : clamp(t, ivec2(0), size - 1);
+        t = mlAddressTexel(t, size);
         mlBlock[4 * j + i] = texelFetch(mlReliefTexture, t, 0).r;
       }
     }
