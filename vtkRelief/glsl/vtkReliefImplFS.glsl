@@ -170,20 +170,33 @@
 #endif
     }
 #else
-    mlMarchLod = mlShadeLod; // the shading normal at the footprint's level (level of detail)
-#if defined(ML_FLOAT_TEXTURES) || defined(ML_STORED_NORMALS)
-    vec3 mlFilteredNormal = mlPackedNormalAt(mlHit.xy);
-    vec2 g = mlGradientFromNormal(mlFilteredNormal);
-#else
-    // Normals derived in the shader from the depth: unit, no spread to read for Toksvig.
-    vec2 g = mlDepthGradient(mlHit.xy);
+    // Derived normals are unit: no spread to read for Toksvig.
     vec3 mlFilteredNormal = vec3(0.0, 0.0, 1.0);
-#endif
-    mlMarchLod = 0.0; // shadows march level 0 again
+    vec2 g = vec2(0.0);
 #ifdef ML_SURFACE_NORMALS
-    // Near, the normal of the surface marched; blended into the filtered one over the first level.
-    g = mix(mlSurfaceGradient(mlHit.xy), g, clamp(mlShadeLod, 0.0, 1.0));
+    // Near, the normal of the surface marched, blended into the filtered one over the first
+    // level; each read only where its share is not zero (near pixels, and every pixel without
+    // level of detail, read no filtered normal).
+    float mlFilteredShare = clamp(mlShadeLod, 0.0, 1.0);
+    if (mlFilteredShare < 1.0)
+    {
+      g = mlSurfaceGradient(mlHit.xy);
+    }
+#else
+    float mlFilteredShare = 1.0;
 #endif
+    if (mlFilteredShare > 0.0)
+    {
+      mlMarchLod = mlShadeLod; // the shading normal at the footprint's level (level of detail)
+#if defined(ML_FLOAT_TEXTURES) || defined(ML_STORED_NORMALS)
+      mlFilteredNormal = mlPackedNormalAt(mlHit.xy);
+      vec2 filtered = mlGradientFromNormal(mlFilteredNormal);
+#else
+      vec2 filtered = mlDepthGradient(mlHit.xy);
+#endif
+      mlMarchLod = 0.0; // shadows march level 0 again
+      g = mix(g, filtered, mlFilteredShare);
+    }
 #endif
 #if defined(ML_LEVEL_OF_DETAIL) && !defined(ML_CONE_PACKED) && !defined(ML_VISIBLE_NORMALS)
     // Only where the footprint's level is above the base: the bilinear blend of neighbouring
