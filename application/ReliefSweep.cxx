@@ -531,7 +531,6 @@ bool RunReliefSweep(
           row.Angle = angle;
           row.Method = m;
           row.FloatTextures = storage == "float";
-          row.DerivedNormals = storage == "derived";
           row.MethodName =
             std::string(isDefault ? "default" : vtkReliefProperty::GetMethodName(m)) +
             (storage == "compact" ? "" : " (" + storage + ")");
@@ -542,7 +541,6 @@ bool RunReliefSweep(
           row.OracleStoredLevels = oracleStored;
           row.OracleAllLevels = oracleAll;
           mapper->GetReliefProperty()->SetFloatTextures(row.FloatTextures);
-          mapper->GetReliefProperty()->SetDeriveNormals(row.DerivedNormals);
           mapper->GetReliefProperty()->SetLinearSteps(step.LinearSteps);
           mapper->GetReliefProperty()->SetRefinementSteps(step.RefinementSteps);
 
@@ -598,7 +596,6 @@ bool RunReliefSweep(
     }
     mapper->SetReliefTextureData(relief.ReliefTexture);
     mapper->GetReliefProperty()->SetFloatTextures(false);
-    mapper->GetReliefProperty()->SetDeriveNormals(false);
   }
 
   out << "\n";
@@ -686,9 +683,7 @@ int RunReliefSweep(const std::vector<std::string>& args)
   cl.AddValue("--plots", "DIR", "write one PNG chart per view angle into DIR");
   cl.AddValue("--texture-storage", "LIST",
     "how the relief is uploaded, each measured: compact (the default storage), float (float "
-    "RGBA, vtkReliefProperty::FloatTextures), derived (compact, normals derived in the shader: "
-    "vtkReliefProperty::DeriveNormals; with --level-of-detail the normals are uploaded all the "
-    "same, as its filter reads them)",
+    "RGBA, vtkReliefProperty::FloatTextures)",
     "compact");
   cl.AddFlag("--no-dense",
     "do not draw the dense displaced mesh (maps too large to mesh): no colour columns; its size "
@@ -805,14 +800,14 @@ int RunReliefSweep(const std::vector<std::string>& args)
   settings.TextureStorages = cl.GetStringList("--texture-storage");
   for (const std::string& storage : settings.TextureStorages)
   {
-    if (storage != "compact" && storage != "float" && storage != "derived")
+    if (storage != "compact" && storage != "float")
     {
-      return cl.UsageError("--texture-storage: '" + storage + "' is not compact, float or derived");
+      return cl.UsageError("--texture-storage: '" + storage + "' is not compact or float");
     }
   }
   if (settings.TextureStorages.empty())
   {
-    return cl.UsageError("--texture-storage needs compact, float or derived");
+    return cl.UsageError("--texture-storage needs compact or float");
   }
   settings.DenseMesh = !cl.Has("--no-dense");
   settings.LevelOfDetail = cl.Has("--level-of-detail");

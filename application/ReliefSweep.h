@@ -47,9 +47,8 @@ struct ReliefSweepSettings
   std::vector<std::string> Steps;
   // Iteration budgets for max-mipmap instead of the built-in table (empty: 32, 64, 128).
   std::vector<int> Iterations;
-  // How the relief is uploaded, each measured in the same run: "compact" (the default storage),
-  // "float" (vtkReliefProperty::FloatTextures, the float RGBA layout) and "derived" (compact,
-  // vtkReliefProperty::DeriveNormals).
+  // How the relief is uploaded, each measured in the same run: "compact" (the default storage)
+  // and "float" (vtkReliefProperty::FloatTextures, the float RGBA layout).
   std::vector<std::string> TextureStorages{ "compact" };
   // Draw the dense displaced mesh for the colour columns. Off for maps too large to mesh (its
   // size in MB is computed either way).
@@ -115,9 +114,8 @@ struct ReliefSweepRow
   double ShadowMismatch = 0.0; // % of pixels covered in both
   long long CoveredBoth = 0;
   long long Footprint = 0;
-  bool FloatTextures = false;  // uploaded as float RGBA (vtkReliefProperty::FloatTextures)
-  bool DerivedNormals = false; // compact, normals derived (vtkReliefProperty::DeriveNormals)
-  double GpuMegaBytes = 0.0;   // the relief's textures on the GPU (vtkReliefMapper)
+  bool FloatTextures = false; // uploaded as float RGBA (vtkReliefProperty::FloatTextures)
+  double GpuMegaBytes = 0.0;  // the relief's textures on the GPU (vtkReliefMapper)
   // The dense displaced mesh of the same map as VTK's stock mapper uploads it: 32 bytes per
   // vertex (position, normal, texture coordinate) and 12 per triangle.
   double DenseMegaBytes = 0.0;

@@ -68,11 +68,9 @@ bool WriteCsv(const std::string& file, const std::vector<ReliefSweepRow>& rows,
         << ',' << r.SamplesPerPixel << ',' << r.HitMeanTexels << ',' << r.HitP99Texels << ','
         << r.SilhouetteMismatch << ',' << r.ColorRmse << ',' << r.Psnr << ',' << r.ShadowMismatch
         << ',' << r.CoveredBoth << ',' << r.Footprint << ','
-        << (r.FloatTextures       ? "float"
-               : r.DerivedNormals ? "derived"
-                                  : "compact")
-        << ',' << r.GpuMegaBytes << ',' << r.DenseMegaBytes << ',' << r.LockStepSamplesPerPixel
-        << ',' << r.Floor.Mean << ',' << r.Floor.LockStep << ',' << r.OracleStoredLevels.Mean << ','
+        << (r.FloatTextures ? "float" : "compact") << ',' << r.GpuMegaBytes << ','
+        << r.DenseMegaBytes << ',' << r.LockStepSamplesPerPixel << ',' << r.Floor.Mean << ','
+        << r.Floor.LockStep << ',' << r.OracleStoredLevels.Mean << ','
         << r.OracleStoredLevels.LockStep << ',' << r.OracleAllLevels.Mean << ','
         << r.OracleAllLevels.LockStep << "\n";
   }
@@ -84,7 +82,7 @@ namespace
 // Rows of a storage other than the default (compact): compared apart, in PrintStorage.
 bool OtherStorage(const ReliefSweepRow& r)
 {
-  return r.FloatTextures || r.DerivedNormals;
+  return r.FloatTextures;
 }
 
 std::string AngleTag(double angle)
@@ -445,9 +443,7 @@ void PrintStorage(const std::vector<ReliefSweepRow>& rows, std::ostream& out)
   struct Entry
   {
     std::string Map, Method;
-    double Dense = 0.0, Compact = 0.0, Float = 0.0, Derived = 0.0;
-    double DerivedRmse = 0.0;
-    int DerivedPairs = 0;
+    double Dense = 0.0, Compact = 0.0, Float = 0.0;
     double CompactMean = 0.0, FloatMean = 0.0, CompactP99 = 0.0, FloatP99 = 0.0;
     double CompactRmse = 0.0, FloatRmse = 0.0;
     int Pairs = 0;
@@ -470,7 +466,7 @@ void PrintStorage(const std::vector<ReliefSweepRow>& rows, std::ostream& out)
   {
     Entry& e = entryOf(r);
     e.Dense = r.DenseMegaBytes;
-    double& mb = r.FloatTextures ? e.Float : r.DerivedNormals ? e.Derived : e.Compact;
+    double& mb = r.FloatTextures ? e.Float : e.Compact;
     mb = std::max(mb, r.GpuMegaBytes);
     if (OtherStorage(r))
     {
@@ -480,11 +476,6 @@ void PrintStorage(const std::vector<ReliefSweepRow>& rows, std::ostream& out)
     {
       const bool paired = f.Map == r.Map && f.Angle == r.Angle && f.Method == r.Method &&
         f.IsDefault == r.IsDefault && f.Step.Label == r.Step.Label;
-      if (paired && f.DerivedNormals)
-      {
-        e.DerivedRmse += f.ColorRmse;
-        ++e.DerivedPairs;
-      }
       if (paired && f.FloatTextures)
       {
         e.CompactMean += r.HitMeanTexels;
@@ -504,13 +495,11 @@ void PrintStorage(const std::vector<ReliefSweepRow>& rows, std::ostream& out)
   out << "- GPU memory: the relief's textures (largest over the method's rows) against the dense "
          "displaced mesh (32 B/vertex + 12 B/triangle); with float rows, compact vs float "
          "storage at equal settings: hit error mean and p99 (texels) and colour RMSE, averaged "
-         "over the paired rows; with derived rows (normals derived in the shader), their MB "
-         "and colour RMSE\n"
+         "over the paired rows\n"
       << "    " << std::left << std::setw(18) << "map" << std::setw(14) << "method" << std::right
       << std::setw(9) << "dense MB" << std::setw(11) << "compact MB" << std::setw(10) << "dense/cmp"
       << std::setw(10) << "float MB" << std::setw(10) << "float/cmp" << std::setw(16)
       << "mean cmp/float" << std::setw(16) << "p99 cmp/float" << std::setw(16) << "RMSE cmp/float"
-      << std::setw(8) << "drv MB" << std::setw(10) << "drv RMSE"
       << "\n";
   for (const Entry& e : entries)
   {
@@ -528,12 +517,7 @@ void PrintStorage(const std::vector<ReliefSweepRow>& rows, std::ostream& out)
         << (e.Float > 0.0 ? Fixed(e.Float, 2) : std::string("-")) << std::setw(10)
         << ratio(e.Float, e.Compact) << std::setw(16) << pair(e.CompactMean, e.FloatMean, 3)
         << std::setw(16) << pair(e.CompactP99, e.FloatP99, 2) << std::setw(16)
-        << (e.CompactRmse >= 0.0 ? pair(e.CompactRmse, e.FloatRmse, 2) : std::string("-"))
-        << std::setw(8) << (e.Derived > 0.0 ? Fixed(e.Derived, 2) : std::string("-"))
-        << std::setw(10)
-        << (e.DerivedPairs > 0 && e.DerivedRmse >= 0.0 ? Fixed(e.DerivedRmse / e.DerivedPairs, 2)
-                                                       : std::string("-"))
-        << "\n";
+        << (e.CompactRmse >= 0.0 ? pair(e.CompactRmse, e.FloatRmse, 2) : std::string("-")) << "\n";
   }
 }
 } // namespace

@@ -229,7 +229,6 @@ void vtkReliefProperty::PrintSelf(ostream& os, vtkIndent indent)
   }
   os << indent << "RepeatTexture: " << (this->RepeatTexture ? "On" : "Off") << "\n";
   os << indent << "FloatTextures: " << (this->FloatTextures ? "On" : "Off") << "\n";
-  os << indent << "DeriveNormals: " << (this->DeriveNormals ? "On" : "Off") << "\n";
   static const char* const outputNames[NumberOfOutputs] = { "shaded", "hit u", "hit v",
     "light visibility", "non-finite check", "sample count" };
   os << indent << "Output: "

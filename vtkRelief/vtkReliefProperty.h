@@ -322,24 +322,18 @@ public:
   ///@{
   /**
    * How the relief is stored on the GPU (vtkReliefTextureCache). By default compactly, with
-   * only what the method reads: 16-bit depth, 8-bit normals (octahedral), 8-bit cone ratios for
-   * cone methods, an 8-bit min-depth pyramid from level 3 for MaximumMipmap, half-float normal
-   * moments from mip level 2 with LevelOfDetail: 4 to 5.4 bytes per texel, the hits as exact as
-   * with float textures. FloatTextures: the float RGBA texture and float pyramid instead (16 to
-   * 37 bytes per texel); off by default, on only to measure what compact storage costs.
-   * DeriveNormals: no normals uploaded when they are the Sobel normals of the depth (as
-   * vtkReliefTextureFilter bakes them; checked at upload, else they are uploaded): the shader
-   * derives them from 16 depth texels, 2 bytes per texel less for more fetches. Default off
-   * (1.65x the frame time on Mesa llvmpipe). It applies without LevelOfDetail only: level of
-   * detail's normal filter reads the stored normals per texel (its levels 0 and 1), so they are
-   * uploaded all the same. Both: mesolight bench relief --texture-storage.
+   * only what the method reads: 16-bit depth; no normals when they are the depth's own (as
+   * vtkReliefTextureFilter bakes them, checked at upload: the shader shades the surface it
+   * marches from the depth), else 8-bit octahedral normals; 8-bit cone ratios for cone methods,
+   * an 8-bit min-depth pyramid from level 3 for MaximumMipmap, half-float normal moments from mip
+   * level 2 with LevelOfDetail: 2 to 5.4 bytes per texel (3.4 for the default), the hits as
+   * exact as with float textures. FloatTextures: the float RGBA texture and float pyramid
+   * instead (16 to 37 bytes per texel); off by default, on only to measure what compact storage
+   * costs (mesolight bench relief --texture-storage).
    */
   vtkSetMacro(FloatTextures, bool);
   vtkGetMacro(FloatTextures, bool);
   vtkBooleanMacro(FloatTextures, bool);
-  vtkSetMacro(DeriveNormals, bool);
-  vtkGetMacro(DeriveNormals, bool);
-  vtkBooleanMacro(DeriveNormals, bool);
   ///@}
 
   ///@{
@@ -461,7 +455,6 @@ protected:
   double DepthLimitNormal[3] = { 0.0, 0.0, 1.0 };
   bool RepeatTexture = false;
   bool FloatTextures = false;
-  bool DeriveNormals = false;
   int Output = ShadedOutput;
   bool AdaptiveSteps = false;
   int MinimumSteps = 4;

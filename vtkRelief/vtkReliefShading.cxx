@@ -156,7 +156,6 @@ bool vtkReliefShading::StartDraw(vtkOpenGLRenderWindow* renWin, vtkReliefPropert
   // Only what the method reads is uploaded: the pyramid for MaximumMipmap, cones for cone methods.
   if (!this->ReliefTexture->Update(renWin, relief, property->GetLevelOfDetail(), maximumMipmap,
         requiredCones != vtkReliefProperty::NoConeMap, property->GetFloatTextures(),
-        property->GetDeriveNormals(),
         property->GetLevelOfDetail() &&
           property->GetNormalFilter() >= vtkReliefProperty::VisibleNormalFilter))
   {

@@ -180,13 +180,9 @@ bool vtkReliefTextureCache::GetConePacked() const
 
 //------------------------------------------------------------------------------
 bool vtkReliefTextureCache::Update(vtkOpenGLRenderWindow* renWin, vtkImageData* image, bool mipmaps,
-  bool needPyramid, bool needCones, bool floatTextures, bool deriveNormals, bool normalMoments)
+  bool needPyramid, bool needCones, bool floatTextures, bool normalMoments)
 {
   const bool wantMoments = normalMoments && mipmaps && !floatTextures;
-  // The moments' levels 0 and 1 are the shader's, from the stored normals (UploadMoments): with
-  // them the normals are uploaded even where derived ones are asked for, 2 bytes per texel
-  // against the 20 that uploading those levels would take.
-  deriveNormals = deriveNormals && !wantMoments;
   // With the visible normal filter the march and the base normal read level 0 only, and the
   // filter reads the moments' mip chain: the depth and normals need no mip chain of their own.
   const bool baseMipmaps = mipmaps && !wantMoments;
@@ -194,7 +190,7 @@ bool vtkReliefTextureCache::Update(vtkOpenGLRenderWindow* renWin, vtkImageData* 
   const bool baseCurrent = scalars && scalars == this->Uploaded &&
     scalars->GetMTime() <= this->UploadTime && this->TextureObject->GetHandle() != 0 &&
     this->TextureObject->GetContext() == renWin && this->UploadedWithMipmaps == baseMipmaps &&
-    this->FloatTextures == floatTextures && (floatTextures || this->DeriveNormals == deriveNormals);
+    this->FloatTextures == floatTextures;
   const bool wantCones =
     !floatTextures && needCones && ConeTypeOf(image) != vtkReliefProperty::NoConeMap;
   const bool havePyramid = this->Pyramid->GetNumberOfLevels() > 0;
@@ -290,7 +286,6 @@ bool vtkReliefTextureCache::Update(vtkOpenGLRenderWindow* renWin, vtkImageData* 
   {
     this->UploadedWithMipmaps = baseMipmaps;
     this->FloatTextures = floatTextures;
-    this->DeriveNormals = deriveNormals;
     this->NormalTexture->ReleaseGraphicsResources(renWin);
     this->NormalsStored = false;
     this->BaseBytes = 0;
@@ -302,8 +297,7 @@ bool vtkReliefTextureCache::Update(vtkOpenGLRenderWindow* renWin, vtkImageData* 
         return false;
       }
     }
-    else if (!this->UploadCompact(
-               renWin, depth, normalXY, normalZ, dims, baseMipmaps, deriveNormals, depth16))
+    else if (!this->UploadCompact(renWin, depth, normalXY, normalZ, dims, baseMipmaps, depth16))
     {
       return false;
     }
@@ -450,7 +444,7 @@ void vtkReliefTextureCache::CheckNormalsAgainstDepth(
 //------------------------------------------------------------------------------
 bool vtkReliefTextureCache::UploadCompact(vtkOpenGLRenderWindow* renWin,
   const std::vector<float>& depth, const std::vector<float>& normalXY,
-  const std::vector<float>& normalZ, const int dims[3], bool mipmaps, bool deriveNormals,
+  const std::vector<float>& normalZ, const int dims[3], bool mipmaps,
   std::vector<std::uint16_t>& depth16)
 {
   // Depth in 16 bits, also for 8-bit maps (exact either way): filtered 8-bit textures come back
@@ -471,9 +465,10 @@ bool vtkReliefTextureCache::UploadCompact(vtkOpenGLRenderWindow* renWin,
   }
   this->BaseBytes = GetTextureBytes(this->TextureObject);
 
-  // Normals derived in the shader when asked and they are the depth's own (Sobel, as
-  // vtkReliefTextureFilter bakes them; Mendez Fernandez's thesis, section 3.2); else uploaded.
-  this->NormalsStored = !(deriveNormals && this->NormalsFromDepth);
+  // Normals that are the depth's own (the Sobel normals vtkReliefTextureFilter bakes; Mendez
+  // Fernandez's thesis, section 3.2) are not uploaded: the shader shades the surface it marches
+  // from the depth alone (ML_SURFACE_NORMALS). Others (a normal map made apart) are.
+  this->NormalsStored = !this->NormalsFromDepth;
   if (this->NormalsStored)
   {
     // Hemispherical octahedral coordinates (Cigolle et al., "A Survey of Efficient
@@ -506,9 +501,10 @@ bool vtkReliefTextureCache::UploadMoments(vtkOpenGLRenderWindow* renWin,
   // area: a footprint's mean of w (n.v) f(n) is then the light the pixel sees of its facets,
   // each in proportion to its projected area (LEAN mapping, Olano and Baker, "LEAN Mapping",
   // I3D 2010; here the 3D second-moment matrix; core/CompactReliefStorage.h). Averages are
-  // linear, so a mip chain holds the moments of every footprint. With stored normals its levels
-  // 0 and 1 are not uploaded: a texel's moments are those of its own normal, which the shader
-  // reads anyway, and level 1 averages four of them (NormalMomentFirstStoredLevel). Levels 2 and
+  // linear, so a mip chain holds the moments of every footprint. Its levels 0 and 1 are not
+  // uploaded: a texel's moments are those of its own normal (stored, or its surface cell's from
+  // the depth), which the shader reads anyway, and level 1 averages four of them
+  // (NormalMomentFirstStoredLevel). Levels 2 and
   // up stay half floats: by Olano's error analysis of LEAN mapping, a moment's representation
   // error must stay below 1 / s for a specular exponent s, and 8 bits over these moments' range
   // (up to 16, the weight's clamp) err by 16/512, exponents of 30; half floats err by 1/2048 of
@@ -517,7 +513,7 @@ bool vtkReliefTextureCache::UploadMoments(vtkOpenGLRenderWindow* renWin,
   // those of the bilinear surface the shader shades up close, the spread inside each texel
   // included, which the smoothed Sobel normals lack.
   constexpr int k = mesolight::NormalMomentCount;
-  this->MomentFirstLevel = mesolight::NormalMomentFirstStoredLevel; // the normals are stored
+  this->MomentFirstLevel = mesolight::NormalMomentFirstStoredLevel; // levels 0-1: the shader's
   const int w = mesolight::MipLevelSize(dims[0], this->MomentFirstLevel);
   const int h = mesolight::MipLevelSize(dims[1], this->MomentFirstLevel);
   const std::vector<float> moments = this->NormalsFromDepth

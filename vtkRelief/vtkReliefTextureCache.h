@@ -63,8 +63,7 @@ public:
    * is not a relief texture or cannot be uploaded.
    */
   bool Update(vtkOpenGLRenderWindow* renWin, vtkImageData* image, bool mipmaps, bool needPyramid,
-    bool needCones = true, bool floatTextures = false, bool deriveNormals = false,
-    bool normalMoments = false);
+    bool needCones = true, bool floatTextures = false, bool normalMoments = false);
 
   /**
    * The relief texture: the depth (compact storage) or the float RGBA texture (float storage).
@@ -81,7 +80,11 @@ public:
   /** Whether the float RGBA layout is uploaded (float storage). */
   vtkGetMacro(FloatTextures, bool);
 
-  /** Compact storage: whether normals are uploaded (else the shader derives them). */
+  /**
+   * Compact storage: whether normals are uploaded. Not when they are the depth's own
+   * (NormalsFromDepth): the shader then takes every normal it reads from the depth (the
+   * surface's gradient, its cells' facets, the moments of its levels), 2 bytes per texel less.
+   */
   vtkGetMacro(NormalsStored, bool);
 
   /**
@@ -97,7 +100,7 @@ public:
   /**
    * The relief's mip level that the moment textures' level 0 holds: 2
    * (mesolight::NormalMomentFirstStoredLevel; the shader computes levels 0 and 1 from the stored
-   * normals, which are uploaded with the moments even where derived normals are asked for).
+   * normals, or from the depth's surface cells when the normals are the depth's own).
    * Uniform mlMomentFirstLevel.
    */
   vtkGetMacro(MomentFirstLevel, int);
@@ -161,7 +164,7 @@ protected:
     bool bytes, bool mipmaps);
   bool UploadCompact(vtkOpenGLRenderWindow* renWin, const std::vector<float>& depth,
     const std::vector<float>& normalXY, const std::vector<float>& normalZ, const int dims[3],
-    bool mipmaps, bool deriveNormals, std::vector<std::uint16_t>& depth16);
+    bool mipmaps, std::vector<std::uint16_t>& depth16);
   void CheckNormalsAgainstDepth(
     const std::vector<float>& depth, const std::vector<float>& normalXY, const int dims[3]);
   bool UploadMoments(vtkOpenGLRenderWindow* renWin, const std::vector<float>& depth,
@@ -176,7 +179,6 @@ protected:
   vtkMTimeType UploadTime = 0;
   bool UploadedWithMipmaps = false;
   bool FloatTextures = false;
-  bool DeriveNormals = false;
   bool NormalsStored = false;
   bool ConesUploaded = false;
   bool MomentsUploaded = false;

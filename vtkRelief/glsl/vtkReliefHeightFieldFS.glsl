@@ -193,14 +193,16 @@ float mlDepthAt(vec2 uv)
 uniform sampler2D mlMomentTexture0; // E[w nx^2], E[w ny^2], E[w nx ny], E[w nz^2]
 uniform sampler2D mlMomentTexture1; // E[w nx nz], E[w ny nz], E[w nx], E[w ny]
 // The relief's mip level that the moment textures' level 0 holds (2): levels 0 and 1 are
-// computed here from the stored normals, which vtkReliefTextureCache uploads with the moments
-// even where derived normals are asked for.
+// computed here, from the stored normals or, when the normals are the depth's own (not
+// uploaded), from the depth's surface cells.
 uniform float mlMomentFirstLevel;
-#ifndef ML_STORED_NORMALS
-#error "the visible normal filter reads the stored normals"
+#if !defined(ML_STORED_NORMALS) && !defined(ML_SURFACE_NORMALS)
+#error "the visible normal filter reads stored normals or the depth's own"
 #endif
 
+#ifdef ML_STORED_NORMALS
 vec3 mlOctahedralNormal(vec2 e);
+#endif
 
 #ifdef ML_SURFACE_NORMALS
 // The facet level-0 texel t stands for when the normals are the depth's own: the cell of the
@@ -640,45 +642,6 @@ vec2 mlGradientFromNormal(vec3 n)
   return vec2(n.x, n.y * mlTexelAspect) * (mlGradientScale / nz);
 }
 
-#if !defined(ML_FLOAT_TEXTURES) && !defined(ML_STORED_NORMALS)
-
-// The 4 x 4 depth texels around uv at level 0, from (i0 - 1, j0 - 1), wrapped or clamped as the
-// sampler addresses them, and that origin.
-float mlBlock[16];
-ivec2 mlBlockOrigin;
-
-// The tangent-space normal vtkReliefTextureFilter bakes at texel c (Sobel, Méndez Fernández's
-// thesis §3.2, eq. 2, one-sided at clamped borders), from mlBlock: n = normalize(k w g, 1) with
-// k = 1 / mlGradientScale, the scale the normals are taken to be baked with.
-vec3 mlSobelNormal(ivec2 c, ivec2 size)
-{
-  ivec2 m = c - 1;
-  ivec2 p = c + 1;
-  if (mlRepeatTexture == 0)
-  {
-    c = clamp(c, ivec2(0), size - 1);
-    m = max(c - 1, ivec2(0));
-    p = min(c + 1, size - 1);
-  }
-  ivec2 b = c - mlBlockOrigin, bm = m - mlBlockOrigin, bp = p - mlBlockOrigin;
-  vec2 g = vec2(0.0);
-  if (p.x > m.x)
-  {
-    g.x = ((mlBlock[4 * bm.y + bp.x] + 2.0 * mlBlock[4 * b.y + bp.x] + mlBlock[4 * bp.y + bp.x]) -
-            (mlBlock[4 * bm.y + bm.x] + 2.0 * mlBlock[4 * b.y + bm.x] + mlBlock[4 * bp.y + bm.x])) /
-      (4.0 * float(p.x - m.x));
-  }
-  if (p.y > m.y)
-  {
-    g.y = ((mlBlock[4 * bp.y + bm.x] + 2.0 * mlBlock[4 * bp.y + b.x] + mlBlock[4 * bp.y + bp.x]) -
-            (mlBlock[4 * bm.y + bm.x] + 2.0 * mlBlock[4 * bm.y + b.x] + mlBlock[4 * bm.y + bp.x])) /
-      (4.0 * float(p.y - m.y));
-  }
-  float k = mlGradientScale > 0.0 ? 1.0 / mlGradientScale : 0.0;
-  return normalize(vec3(k * mlTextureSize.x * g, 1.0));
-}
-#endif
-
 // (d depth / du, d depth / dv) of the surface marched, the bilinear interpolation of the level-0
 // depth texels, at uv: the gradient the exact CPU intersector and the path tracer shade with.
 vec2 mlSurfaceGradient(vec2 uv)
@@ -696,63 +659,40 @@ vec2 mlSurfaceGradient(vec2 uv)
     mlTextureSize;
 }
 
-// (d depth / du, d depth / dv) at uv.
+// (d depth / du, d depth / dv) at uv, at level mlMarchLod.
 vec2 mlDepthGradient(vec2 uv)
 {
+#ifdef ML_SURFACE_NORMALS
+  if (mlMarchLod <= 0.0)
+  {
+    return mlSurfaceGradient(uv); // the normals are the depth's: the surface's own slope
+  }
+#endif
 #if defined(ML_FLOAT_TEXTURES) || defined(ML_STORED_NORMALS)
   // Recovered from the baked normal n ~ (k dd/dx, k dd/dy, 1), where x = u and y = v * aspect
   // are measured in texture widths (vtkReliefTextureFilter's convention).
-  vec3 n = mlPackedNormalAt(uv);
+  return mlGradientFromNormal(mlPackedNormalAt(uv));
 #else
-  vec3 n;
-  if (mlMarchLod <= 0.0)
+  // Level of detail, the normals not uploaded (they are the depth's): the Sobel stencil on the
+  // filtered depth of the level read, taps one of its texels apart (linear in the depth: the
+  // blend of that level's Sobel gradients).
+  ML_COUNT_SAMPLE();
+  float texels = exp2(mlMarchLod);
+  vec2 step = texels / mlTextureSize;
+  float d[9];
+  for (int j = 0; j < 3; ++j)
   {
-    // The baked normals, derived: the Sobel normals of the four texels around uv, blended as
-    // the GPU's bilinear filter blends stored ones (the uploader checked that the texture's
-    // normals are these; as the float texture, to float and 16-bit rounding).
-    ML_COUNT_SAMPLE();
-    ivec2 size = ivec2(mlTextureSize);
-    vec2 x = uv * mlTextureSize - 0.5;
-    ivec2 i0 = ivec2(floor(x));
-    vec2 f = x - vec2(i0);
-    mlBlockOrigin = i0 - 1;
-    for (int j = 0; j < 4; ++j)
+    for (int i = 0; i < 3; ++i)
     {
-      for (int i = 0; i < 4; ++i)
-      {
-        ivec2 t = mlBlockOrigin + ivec2(i, j);
-        t = mlAddressTexel(t, size);
-        mlBlock[4 * j + i] = texelFetch(mlReliefTexture, t, 0).r;
-      }
+      d[3 * j + i] =
+        textureLod(mlReliefTexture, uv + vec2(float(i - 1), float(j - 1)) * step, mlMarchLod).r;
     }
-    n = mix(mix(mlSobelNormal(i0, size), mlSobelNormal(i0 + ivec2(1, 0), size), f.x),
-      mix(mlSobelNormal(i0 + ivec2(0, 1), size), mlSobelNormal(i0 + ivec2(1, 1), size), f.x),
-      f.y);
   }
-  else
-  {
-    // Level of detail: the Sobel stencil on the filtered depth of the level read, taps one of
-    // its texels apart (linear in the depth: the blend of that level's Sobel gradients).
-    ML_COUNT_SAMPLE();
-    float texels = exp2(mlMarchLod);
-    vec2 step = texels / mlTextureSize;
-    float d[9];
-    for (int j = 0; j < 3; ++j)
-    {
-      for (int i = 0; i < 3; ++i)
-      {
-        d[3 * j + i] = textureLod(mlReliefTexture, uv + vec2(float(i - 1), float(j - 1)) * step,
-          mlMarchLod).r;
-      }
-    }
-    float gi = ((d[2] + 2.0 * d[5] + d[8]) - (d[0] + 2.0 * d[3] + d[6])) / 8.0;
-    float gj = ((d[6] + 2.0 * d[7] + d[8]) - (d[0] + 2.0 * d[1] + d[2])) / 8.0;
-    // Per texel of the level -> per unit of u and of v.
-    return vec2(gi, gj) * (mlTextureSize / texels);
-  }
+  float gi = ((d[2] + 2.0 * d[5] + d[8]) - (d[0] + 2.0 * d[3] + d[6])) / 8.0;
+  float gj = ((d[6] + 2.0 * d[7] + d[8]) - (d[0] + 2.0 * d[1] + d[2])) / 8.0;
+  // Per texel of the level -> per unit of u and of v.
+  return vec2(gi, gj) * (mlTextureSize / texels);
 #endif
-  float nz = max(n.z, 1e-4);
-  return vec2(n.x, n.y * mlTexelAspect) * (mlGradientScale / nz);
 }
 
 #if ML_METHOD == ML_MAXIMUM_MIPMAP
