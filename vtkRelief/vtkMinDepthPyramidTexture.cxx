@@ -61,8 +61,8 @@ bool vtkMinDepthPyramidTexture::UploadCompact(
   vtkOpenGLRenderWindow* renWin, const std::vector<std::uint16_t>& depth16, int width, int height)
 {
   // The same levels with each minimum rounded down to 8 bits (core/CompactReliefStorage.h):
-  // bounds never below the surface, 1/12 byte per texel, so the default's upload stays a tenth
-  // of the dense mesh's (docs/relief-benchmark.md, "GPU memory").
+  // bounds never below the surface, 1/3 byte per texel from level 2, so the default's upload
+  // stays far under a tenth of the dense mesh's (docs/relief-benchmark.md, "GPU memory").
   std::vector<int> sizes;
   const std::vector<std::vector<std::uint8_t>> levels = mesolight::CompactChildMinima8(
     depth16.data(), width, height, vtkMinDepthPyramidTexture::FirstLevel, sizes);

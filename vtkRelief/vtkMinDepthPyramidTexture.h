@@ -15,8 +15,10 @@
  *
  * Upload (float storage) keeps float minima (GL_RGBA32F); UploadCompact (the relief texture
  * cache's compact storage, the default) rounds them down to 8 bits (GL_RGBA8), which still
- * bound the surface from above, so the traversal stays exact: 1/12 byte per texel at
- * FirstLevel 3, 22 KB for a 512^2 map. (Before: level 0's corners and every level in RGBA16,
+ * bound the surface from above, so the traversal stays exact: 1/3 byte per texel at
+ * FirstLevel 2, 87 KB for a 512^2 map. (Level 2 was left out, 1/12 byte per texel, while the
+ * normals were uploaded too; stored, it saves 3-11% of the grazing rays' lock-step fetches on
+ * rough real maps: docs/relief-methods.md. Before: level 0's corners and every level in RGBA16,
  * 10.67 bytes per texel, 2.8 MB; the corners from the depth texture with four fetches had made
  * the traversal 1.6-2x slower: docs/relief-methods.md.)
  */
@@ -73,9 +75,10 @@ public:
 
   /**
    * The first level stored: levels 1 to FirstLevel - 1 hold no bounds (the traversal walks
-   * their level-0 cells), level 0 is the depth texture's texels.
+   * their level-0 cells, at most 2 x 2 in a blocked level-2 cell), level 0 is the depth
+   * texture's texels.
    */
-  static constexpr int FirstLevel = 3;
+  static constexpr int FirstLevel = 2;
 
   /** Cells per stored level, (width, height) pairs from FirstLevel on. */
   const std::vector<int>& GetLevelSizes() const { return this->LevelSizes; }

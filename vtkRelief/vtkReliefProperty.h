@@ -325,8 +325,8 @@ public:
    * only what the method reads: 16-bit depth; no normals when they are the depth's own (as
    * vtkReliefTextureFilter bakes them, checked at upload: the shader shades the surface it
    * marches from the depth), else 8-bit octahedral normals; 8-bit cone ratios for cone methods,
-   * an 8-bit min-depth pyramid from level 3 for MaximumMipmap, half-float normal moments from mip
-   * level 2 with LevelOfDetail: 2 to 5.4 bytes per texel (3.4 for the default), the hits as
+   * an 8-bit min-depth pyramid from level 2 for MaximumMipmap, half-float normal moments from mip
+   * level 2 with LevelOfDetail: 2 to 5.4 bytes per texel (3.7 for the default), the hits as
    * exact as with float textures. FloatTextures: the float RGBA texture and float pyramid
    * instead (16 to 37 bytes per texel); off by default, on only to measure what compact storage
    * costs (mesolight bench relief --texture-storage).

@@ -87,8 +87,9 @@ bool mlMeetsCell(vec3 origin, vec3 span, vec2 dx, vec2 a0, vec4 d, float s0, flo
 // is the cell's four corners (one gather of the depth texture) and whose test is the cell's
 // bilinear patch, exactly. A miss there goes on to the next level-0 cell of the same child (a
 // walk of at most 2^(ML_PYRAMID_FIRST_LEVEL - 1) cells per axis) without fetching the parent
-// again. (The levels in between are not stored, so the pyramid costs 1/12 byte per texel in
-// the compact storage, and the default's upload stays a tenth of the dense mesh's.) maxIterations bounds the work; past tEnd (<= 1) the ray is of no interest
+// again. (Level 1 is not stored, so the pyramid costs 1/3 byte per texel in the compact storage
+// with its first level 2.) maxIterations bounds the work; past tEnd (<= 1) the ray is of no
+// interest
 // and the trace returns 1. A trace that spends maxIterations before either returns where it
 // got to and sets mlTraceOutOfIterations: that point is above the surface, not a hit.
 bool mlTraceOutOfIterations = false;

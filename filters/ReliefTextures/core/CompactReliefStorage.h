@@ -45,8 +45,9 @@ MESOLIGHTRELIEFTEXTURES_EXPORT std::vector<std::vector<std::uint16_t>> CompactMi
  * little earlier. Levels that a small map lacks (past 1 x 1) are 1 x 1 copies of its apex, so
  * level firstLevel always exists. Level 0 (the cells' corners) and the levels between are not
  * stored: the traversal reads a level-0 cell's corners from the depth texture with one gather.
- * At firstLevel 3: 1/12 byte per texel. Returns the levels (RGBA, row-major) and their sizes in
- * levelSizes ((w, h) pairs); empty for an empty map or firstLevel < 1.
+ * At firstLevel 2 (vtkMinDepthPyramidTexture's): 1/3 byte per texel; at 3, 1/12. Returns the levels
+ * (RGBA, row-major) and their sizes in levelSizes ((w, h) pairs); empty for an empty map or
+ * firstLevel < 1.
  */
 MESOLIGHTRELIEFTEXTURES_EXPORT std::vector<std::vector<std::uint8_t>> CompactChildMinima8(
   const std::uint16_t* depth16, int w, int h, int firstLevel, std::vector<int>& levelSizes);

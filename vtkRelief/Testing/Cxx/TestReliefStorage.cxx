@@ -10,6 +10,7 @@
 #include "ReliefReference.h"
 #include "ReliefScene.h"
 #include "vtkConeMapFilter.h"
+#include "vtkMinDepthPyramidTexture.h"
 #include "vtkReliefMapper.h"
 #include "vtkReliefProperty.h"
 
@@ -162,17 +163,19 @@ INSTANTIATE_TEST_SUITE_P(Methods, ReliefStorage,
 
 // The bytes the mapper reports are those of the formats uploaded: per texel 2 (16-bit depth; the
 // maps' normals are their depth's own, not uploaded), + 1 (8-bit cone ratio) for cone methods;
-// the max-mipmap pyramid at 4 bytes per cell from level 3 (16 in float storage); float storage 16
+// the max-mipmap pyramid at 4 bytes per cell from level 2 (16 in float storage); float storage 16
 // per texel; level of detail adds the normal moments' 16 bytes per texel of mip levels 2 and up.
 // Normals made apart add 2 (NormalsThatAreNotTheDepthsAreUploaded).
 TEST(ReliefStorage, ReportedBytesAreThoseOfTheFormats)
 {
   const int n = 301;
   const long long texels = static_cast<long long>(n) * n;
-  // Pyramid cells from level 3 (levels 0-2 are not stored: level 0's corners come from the depth
+  // Pyramid cells from level 2 (levels 0-1 are not stored: level 0's corners come from the depth
   // texture), (n + 1)^2 cells at level 0, sizes halving rounding down.
   long long pyramid = 0;
-  for (int w = (n + 1) >> 3, h = (n + 1) >> 3;; w = std::max(1, w / 2), h = std::max(1, h / 2))
+  const int first = vtkMinDepthPyramidTexture::FirstLevel;
+  for (int w = (n + 1) >> first, h = (n + 1) >> first;;
+       w = std::max(1, w / 2), h = std::max(1, h / 2))
   {
     pyramid += static_cast<long long>(w) * h;
     if (w == 1 && h == 1)
@@ -189,7 +192,7 @@ TEST(ReliefStorage, ReportedBytesAreThoseOfTheFormats)
   const Expected expected[] = {
     { "relief", Storage::Compact, 2 * texels },
     { "relief", Storage::Float, 16 * texels },
-    // The compact pyramid: four 8-bit children's minima per cell from level 3 (RGBA8); the
+    // The compact pyramid: four 8-bit children's minima per cell from level 2 (RGBA8); the
     // float one the same in 32 bits.
     { "max-mipmap", Storage::Compact, 2 * texels + 4 * pyramid },
     { "max-mipmap", Storage::Float, 16 * texels + 16 * pyramid },
