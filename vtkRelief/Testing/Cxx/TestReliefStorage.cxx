@@ -1,10 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // How the relief is stored on the GPU (vtkReliefTextureCache): the compact storage (the default:
 // 16-bit depth, no normals when they are the depth's own, else 8-bit ones, 8-bit cones, 8-bit
-// pyramid) must hit where
-// the float RGBA storage hits, both measured against the exact CPU intersector (ReliefReference);
-// the bytes the mapper reports must be those of the formats; and a storage that loses depth
-// precision (8-bit depth on a deep map) must fail the same check.
+// pyramid) must hit where the float RGBA storage hits, both measured against the exact CPU
+// intersector (ReliefReference); the bytes the mapper reports must be those of the formats; and a
+// storage that loses depth precision (8-bit depth on a deep map) must fail the same check.
 #include "DenseMeshTestScene.h"
 #include "ImageCompare.h"
 #include "ReliefReference.h"
@@ -308,8 +307,8 @@ TEST(ReliefStorage, NormalsThatAreNotTheDepthsAreUploaded)
 {
   StorageCase c{ "Stone", "relief", 16, 4, 55.0, 256 };
   StorageScene scene(OptionsOf(c));
-  const Measured derived = scene.Draw(Storage::Compact, "Sobel normals");
-  EXPECT_EQ(derived.Bytes, 2LL * 256 * 256);
+  const Measured own = scene.Draw(Storage::Compact, "Sobel normals");
+  EXPECT_EQ(own.Bytes, 2LL * 256 * 256);
 
   vtkNew<vtkImageData> tilted;
   tilted->DeepCopy(scene.Scene.ReliefTexture);
