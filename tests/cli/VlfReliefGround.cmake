@@ -3,10 +3,10 @@
 # 10 m buildings on a 200 m ground under a 40 m sky panel. The relief mapper's emitter lights carry the scene's
 # shadow as one factor per SH9 probe; 8 probes a side (25 m apart) averaged the buildings'
 # shadows away where the CPU reference (`vlf render --relief`, a shadow ray per emitter sample)
-# draws them. The automatic probe count (one per field line cell across the surface,
+# draws them. The automatic probe count (two per field line cell across the surface, 44 here,
 # vlf::ReliefProbesPerSide) brings the walkthrough's relief (depth 0) to the CPU reference's
 # image: mean |GPU - CPU| over the image within LIMIT/1000 of the reference's mean; negative:
-# --relief-probes 8 is not.
+# --relief-probes 8 is not, nor 22 (one per field line cell, the rule before).
 include("${CMAKE_CURRENT_LIST_DIR}/RunTool.cmake")
 cli_fresh_work()
 
@@ -18,7 +18,7 @@ set(_view --size 96x96 --camera 70,-90,45,0,0,5,0,0,1 --relief ground=${WORK}/ze
 cli_run(TRUE vlf render "${WORK}/town.vlf" ${_view} --out "${WORK}/cpu.png"
   --exr "${WORK}/cpu.exr")
 exr_stat_milli("${WORK}/cpu.exr" Avg _reference)
-foreach (_probes IN ITEMS 0 8)
+foreach (_probes IN ITEMS 0 8 22)
   cli_run(TRUE vlf render "${WORK}/town.vlf" --mode progressive ${_view} --relief-probes ${_probes}
     --out "${WORK}/gpu-${_probes}.png" --exr "${WORK}/gpu-${_probes}.exr")
   cli_oiiotool("${WORK}/gpu-${_probes}.exr" "${WORK}/cpu.exr" --absdiff -o "${WORK}/diff-${_probes}.exr")
@@ -32,6 +32,10 @@ if (_relative_0 GREATER ${LIMIT})
 endif ()
 if (NOT _relative_8 GREATER ${LIMIT})
   message(FATAL_ERROR "8 probes a side pass the check: it cannot see the shadows")
+endif ()
+if (NOT _relative_22 GREATER ${LIMIT})
+  message(FATAL_ERROR "22 probes a side (one per field line cell) pass the check: it cannot "
+    "tell the rule's two per cell from one")
 endif ()
 
 # Terrain in metres on the ground: the walkthrough takes --relief-normalize as the CPU reference

@@ -309,7 +309,7 @@ int ReliefProbesPerSide(const LightField& field, const ReliefSurface& surface, i
     return requested;
   }
   const double side = std::max(glm::length(surface.AxisU), glm::length(surface.AxisV));
-  const double cells = std::ceil(side / static_cast<double>(field.Settings().CellSize()));
+  const double cells = std::ceil(2.0 * side / static_cast<double>(field.Settings().CellSize()));
   return std::isfinite(cells)
     ? static_cast<int>(std::clamp(cells, static_cast<double>(DefaultReliefProbesPerSide),
         static_cast<double>(MaximumAutomaticReliefProbesPerSide)))
