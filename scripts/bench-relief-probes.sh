@@ -16,15 +16,8 @@
 # Settings through the environment: DIRECTIONS [513], RAYS [32], ITERATIONS [2] (the field),
 # SIZE [96] (square images), REPEATS [3], LABEL [the host name].
 set -u
-if [ $# -ne 2 ] || [ ! -x "$1" ]; then
-  echo "usage: scripts/bench-relief-probes.sh MESOLIGHT_BINARY OUTDIR (e.g. build/bin/mesolight" \
-    "/tmp/probes)" >&2
-  exit 2
-fi
-bin="$(realpath "$1")"
-out="$2"
-here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
-source_dir="$(dirname "$here")"
+source "$(dirname "${BASH_SOURCE[0]}")/bench-arguments.sh"
+bench_arguments /tmp/probes "$@"
 directions="${DIRECTIONS:-513}"
 rays="${RAYS:-32}"
 iterations="${ITERATIONS:-2}"

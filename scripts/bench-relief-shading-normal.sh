@@ -17,15 +17,8 @@
 # Settings through the environment: DIRECTIONS [513], RAYS [16], ITERATIONS [3] (the field), SIZE
 # [256] (square images), LABEL [the host name].
 set -u
-if [ $# -ne 2 ] || [ ! -x "$1" ]; then
-  echo "usage: scripts/bench-relief-shading-normal.sh MESOLIGHT_BINARY OUTDIR (e.g." \
-    "build/bin/mesolight /tmp/shading-normal)" >&2
-  exit 2
-fi
-bin="$(realpath "$1")"
-out="$2"
-here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
-source_dir="$(dirname "$here")"
+source "$(dirname "${BASH_SOURCE[0]}")/bench-arguments.sh"
+bench_arguments /tmp/shading-normal "$@"
 directions="${DIRECTIONS:-513}"
 rays="${RAYS:-16}"
 iterations="${ITERATIONS:-3}"

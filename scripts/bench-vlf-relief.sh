@@ -36,10 +36,8 @@
 # same references apart].
 # References already in OUTDIR are reused (they are the slow part).
 set -u
-bin="$(realpath "$1")"
-out="$2"
-here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
-source_dir="$(dirname "$here")"
+source "$(dirname "${BASH_SOURCE[0]}")/bench-arguments.sh"
+bench_arguments /tmp/vlf-relief "$@"
 directions="${DIRECTIONS:-2049}"
 rays="${RAYS:-32}"
 size="${SIZE:-256}"
