@@ -77,7 +77,7 @@ EnvironmentSampler MakeSampler(vtkImageData* environment)
 }
 
 // GL_LINEAR + CLAMP_TO_EDGE sample of the packed normal (RGB) of a relief texture.
-glm::dvec3 SampleNormal(vtkDataArray* rgba, int w, int h, double u, double v)
+glm::dvec3 SampleNormal(vtkDataArray* rgba, double unit, int w, int h, double u, double v)
 {
   const double x = u * w - 0.5, y = v * h - 0.5;
   const int i0 = static_cast<int>(std::floor(x)), j0 = static_cast<int>(std::floor(y));
@@ -87,8 +87,8 @@ glm::dvec3 SampleNormal(vtkDataArray* rgba, int w, int h, double u, double v)
     i = std::min(std::max(i, 0), w - 1);
     j = std::min(std::max(j, 0), h - 1);
     const vtkIdType id = static_cast<vtkIdType>(j) * w + i;
-    return glm::dvec3(
-      rgba->GetComponent(id, 0), rgba->GetComponent(id, 1), rgba->GetComponent(id, 2));
+    return unit *
+      glm::dvec3(rgba->GetComponent(id, 0), rgba->GetComponent(id, 1), rgba->GetComponent(id, 2));
   };
   return (texel(i0, j0) * (1 - fx) + texel(i0 + 1, j0) * fx) * (1 - fy) +
     (texel(i0, j0 + 1) * (1 - fx) + texel(i0 + 1, j0 + 1) * fx) * fy;
@@ -103,6 +103,9 @@ struct ReferenceSetup
   double Aspect = 1.0;      // the wall's height for a width of 1 (its ground proportions)
   double DepthScale = 1.0;
   vtkDataArray* Rgba = nullptr;
+  // What a stored value of 1 is: 8-bit textures hold 0-255, as the relief mapper reads them
+  // (vtkReliefTextureCache), float ones 0-1.
+  double Unit = 1.0;
   bool ConePacked = false; // vtkConeMapFilter's packing: normal x, y in RG, cone ratio in B
   std::vector<float> Depth;
   std::unique_ptr<HeightField> Surface; // set when the normals are the depth's own
@@ -112,13 +115,15 @@ struct ReferenceSetup
     , Rgba(relief->GetPointData()->GetScalars())
     , ConePacked(relief->GetFieldData()->GetAbstractArray("MesolightConeType") != nullptr)
   {
+    this->Unit = this->Rgba->GetDataType() == VTK_UNSIGNED_CHAR ? 1.0 / 255.0 : 1.0;
     relief->GetDimensions(this->Dims);
     this->TexelAspect = static_cast<double>(this->Dims[1]) / this->Dims[0];
     this->Aspect = vtkReliefPlaneFilter::GetGroundProportions(relief);
     this->Depth.resize(static_cast<size_t>(this->Dims[0]) * this->Dims[1]);
     for (size_t i = 0; i < this->Depth.size(); ++i)
     {
-      this->Depth[i] = static_cast<float>(this->Rgba->GetComponent(static_cast<vtkIdType>(i), 3));
+      this->Depth[i] =
+        static_cast<float>(this->Unit * this->Rgba->GetComponent(static_cast<vtkIdType>(i), 3));
     }
     // Normals that are the depth's own shade as the relief mapper shades them: with the
     // gradient of the bilinear surface (NormalsAreTheDepths).
@@ -130,8 +135,8 @@ struct ReferenceSetup
       {
         for (int c = 0; c < 2; ++c)
         {
-          normalXY[2 * i + c] =
-            static_cast<float>(2.0 * this->Rgba->GetComponent(static_cast<vtkIdType>(i), c) - 1.0);
+          normalXY[2 * i + c] = static_cast<float>(
+            2.0 * this->Unit * this->Rgba->GetComponent(static_cast<vtkIdType>(i), c) - 1.0);
         }
       }
       if (NormalsAreTheDepths(this->Depth.data(), normalXY.data(), this->Dims[0], this->Dims[1],
@@ -188,7 +193,8 @@ struct ReferenceSetup
       return glm::normalize(
         glm::dvec3(this->DepthScale * this->Aspect * g.x, this->DepthScale * g.y, this->Aspect));
     }
-    const glm::dvec3 packed = SampleNormal(this->Rgba, this->Dims[0], this->Dims[1], hit.x, hit.y);
+    const glm::dvec3 packed =
+      SampleNormal(this->Rgba, this->Unit, this->Dims[0], this->Dims[1], hit.x, hit.y);
     glm::dvec3 nt = packed * 2.0 - 1.0;
     if (this->ConePacked) // as the shader decodes it: z from the filtered x, y
     {

@@ -30,7 +30,8 @@ struct EnvironmentIrradianceSample
  * deterministic seed): for up to maxPixels covered pixels of the reference, the irradiance at the
  * exact hit, from every direction of the environment, shadowed by the exact bilinear height field.
  * world depth = d x depthScale, +Z up for both the wall and the environment. Empty if `relief` is
- * not a 4-component relief texture or there is no environment.
+ * not a 4-component relief texture (float values in [0, 1], or 8-bit ones read as / 255, as the
+ * relief mapper reads them) or there is no environment.
  */
 MESOLIGHTEVALUATION_EXPORT std::vector<EnvironmentIrradianceSample> ComputeEnvironmentReference(
   const ReliefReference& hits, vtkImageData* relief, vtkImageData* environment, double depthScale,

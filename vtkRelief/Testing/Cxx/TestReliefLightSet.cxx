@@ -11,6 +11,7 @@
 #include "vtkReliefMapper.h"
 
 #include <vtkCamera.h>
+#include <vtkFieldData.h>
 #include <vtkFloatArray.h>
 #include <vtkImageData.h>
 #include <vtkMath.h>
@@ -20,6 +21,7 @@
 #include <vtkProperty.h>
 #include <vtkRendererCollection.h>
 #include <vtkTexture.h>
+#include <vtkUnsignedCharArray.h>
 
 #include <gtest/gtest.h>
 
@@ -245,6 +247,52 @@ TEST(ReliefLightSet, LightSetRenderAgainstTheExactRenderOfTheSameLights)
   oneRow->AllocateScalars(VTK_FLOAT, 4);
   EXPECT_TRUE(
     ComputeLightSetReference(hits, scene.ReliefTexture, oneRow, o.DepthScale, 800).empty());
+  // An 8-bit relief texture (0-255, as the mapper also reads them) gives the reference of the
+  // same values in float (k / 255); read as 0-1 values its depth and normals were garbage.
+  {
+    vtkDataArray* source = scene.ReliefTexture->GetPointData()->GetScalars();
+    vtkNew<vtkFloatArray> rounded;
+    vtkNew<vtkUnsignedCharArray> bytes;
+    for (vtkDataArray* a :
+      { static_cast<vtkDataArray*>(rounded), static_cast<vtkDataArray*>(bytes) })
+    {
+      a->SetNumberOfComponents(4);
+      a->SetNumberOfTuples(source->GetNumberOfTuples());
+    }
+    for (vtkIdType t = 0; t < source->GetNumberOfTuples(); ++t)
+    {
+      for (int c = 0; c < 4; ++c)
+      {
+        const double b = std::round(255.0 * source->GetComponent(t, c));
+        bytes->SetComponent(t, c, b);
+        rounded->SetComponent(t, c, b / 255.0);
+      }
+    }
+    std::vector<EnvironmentIrradianceSample> references[2];
+    for (int k = 0; k < 2; ++k)
+    {
+      vtkNew<vtkImageData> texture;
+      texture->CopyStructure(scene.ReliefTexture);
+      texture->GetFieldData()->ShallowCopy(scene.ReliefTexture->GetFieldData());
+      texture->GetPointData()->SetScalars(
+        k == 0 ? static_cast<vtkDataArray*>(rounded) : static_cast<vtkDataArray*>(bytes));
+      references[k] = ComputeLightSetReference(hits, texture, scene.LightSet, o.DepthScale, 800);
+    }
+    ASSERT_EQ(references[1].size(), references[0].size());
+    ASSERT_FALSE(references[0].empty());
+    double difference = 0.0, total = 0.0;
+    for (size_t k = 0; k < references[0].size(); ++k)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        difference += std::fabs(references[1][k].Irradiance[c] - references[0][k].Irradiance[c]);
+        total += references[0][k].Irradiance[c];
+      }
+    }
+    std::cout << "[same lights] 8-bit relief texture against the same values in float: mean "
+              << "|difference| " << 100.0 * difference / total << "%" << std::endl;
+    EXPECT_LT(difference, 1e-4 * total);
+  }
   const double exposure = ExposureFor(reliefReference);
   ASSERT_GT(exposure, 0.0);
   scene.Mapper->GetReliefProperty()->SetExposure(exposure);
