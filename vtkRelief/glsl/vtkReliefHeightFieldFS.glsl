@@ -666,18 +666,26 @@ vec2 mlDepthGradient(vec2 uv)
 #ifdef ML_SURFACE_NORMALS
   if (mlMarchLod <= 0.0)
   {
-    // The normals are the depth's (not uploaded): central differences of the bilinear depth a
-    // texel apart, which the Sobel normals smooth further. The surface's own cell gradient
-    // (mlSurfaceGradient, what the hit is shaded with) jumps at every texel edge, and tangent
-    // planes taken from it led iterative parallax astray (mean hit error up to 23% larger, p99
-    // up to 50%, than with the Sobel normals; these are within 8% of them, and cheaper).
+    // The normals are the depth's (not uploaded): their Sobel gradient, from the bilinear depth
+    // (both are linear, so the Sobel stencil on the interpolated depth is the interpolation of
+    // the texels' Sobel gradients, as the stored normals were filtered): a tap a texel across and
+    // half a texel along averages two rows as the stencil's 1-2-1 weights do, 8 taps in all.
+    // The surface's own cell gradient (mlSurfaceGradient, what the hit is shaded with) jumps at
+    // every texel edge and led iterative parallax astray (mean hit error up to 23% larger, p99
+    // up to 50%); plain central differences, without the stencil's smoothing across, up to 24%
+    // on a real brick map (docs/relief-methods.md, "The shading normal").
     ML_COUNT_SAMPLE();
     vec2 e = 1.0 / mlTextureSize;
-    float dx = textureLod(mlReliefTexture, uv + vec2(e.x, 0.0), 0.0).ML_DEPTH_CHANNEL -
-      textureLod(mlReliefTexture, uv - vec2(e.x, 0.0), 0.0).ML_DEPTH_CHANNEL;
-    float dy = textureLod(mlReliefTexture, uv + vec2(0.0, e.y), 0.0).ML_DEPTH_CHANNEL -
-      textureLod(mlReliefTexture, uv - vec2(0.0, e.y), 0.0).ML_DEPTH_CHANNEL;
-    return 0.5 * vec2(dx, dy) * mlTextureSize;
+    vec2 h = 0.5 * e;
+    float dx = textureLod(mlReliefTexture, uv + vec2(e.x, h.y), 0.0).ML_DEPTH_CHANNEL +
+      textureLod(mlReliefTexture, uv + vec2(e.x, -h.y), 0.0).ML_DEPTH_CHANNEL -
+      textureLod(mlReliefTexture, uv + vec2(-e.x, h.y), 0.0).ML_DEPTH_CHANNEL -
+      textureLod(mlReliefTexture, uv + vec2(-e.x, -h.y), 0.0).ML_DEPTH_CHANNEL;
+    float dy = textureLod(mlReliefTexture, uv + vec2(h.x, e.y), 0.0).ML_DEPTH_CHANNEL +
+      textureLod(mlReliefTexture, uv + vec2(-h.x, e.y), 0.0).ML_DEPTH_CHANNEL -
+      textureLod(mlReliefTexture, uv + vec2(h.x, -e.y), 0.0).ML_DEPTH_CHANNEL -
+      textureLod(mlReliefTexture, uv + vec2(-h.x, -e.y), 0.0).ML_DEPTH_CHANNEL;
+    return 0.25 * vec2(dx, dy) * mlTextureSize;
   }
 #endif
 #if defined(ML_FLOAT_TEXTURES) || defined(ML_STORED_NORMALS)
