@@ -234,6 +234,21 @@ void vtkCompositeReliefMapper::SetIrradianceProbesData(vtkImageData* probes)
 }
 
 //------------------------------------------------------------------------------
+void vtkCompositeReliefMapper::SetRadianceHook(vtkReliefRadianceHook* hook)
+{
+  if (this->Shading->SetRadianceHook(hook))
+  {
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkReliefRadianceHook* vtkCompositeReliefMapper::GetRadianceHook()
+{
+  return this->Shading->GetRadianceHook();
+}
+
+//------------------------------------------------------------------------------
 vtkImageData* vtkCompositeReliefMapper::GetIrradianceProbesData()
 {
   return this->IrradianceProbesData;

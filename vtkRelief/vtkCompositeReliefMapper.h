@@ -28,6 +28,7 @@
 #include "vtkSmartPointer.h"   // for members
 
 class vtkImageData;
+class vtkReliefRadianceHook;
 class vtkReliefShading;
 
 class MESOLIGHTRELIEF_EXPORT vtkCompositeReliefMapper : public vtkCompositePolyDataMapper2
@@ -60,6 +61,15 @@ public:
    */
   void SetIrradianceProbesData(vtkImageData* probes);
   vtkImageData* GetIrradianceProbesData();
+  ///@}
+
+  ///@{
+  /**
+   * Code that changes the relief's linear radiance at its hit point (vtkReliefRadianceHook; null,
+   * the default: none), e.g. a light field's movable object's shadow.
+   */
+  void SetRadianceHook(vtkReliefRadianceHook* hook);
+  vtkReliefRadianceHook* GetRadianceHook();
   ///@}
 
   /** Finds the relief texture and light set of this render, then draws the blocks. */

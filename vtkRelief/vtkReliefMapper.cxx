@@ -125,6 +125,21 @@ void vtkReliefMapper::SetIrradianceProbesData(vtkImageData* probes)
 }
 
 //------------------------------------------------------------------------------
+void vtkReliefMapper::SetRadianceHook(vtkReliefRadianceHook* hook)
+{
+  if (this->Shading->SetRadianceHook(hook))
+  {
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkReliefRadianceHook* vtkReliefMapper::GetRadianceHook()
+{
+  return this->Shading->GetRadianceHook();
+}
+
+//------------------------------------------------------------------------------
 void vtkReliefMapper::SetIrradianceProbesConnection(vtkAlgorithmOutput* output)
 {
   this->SetInputConnection(3, output);

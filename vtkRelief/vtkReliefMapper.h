@@ -72,6 +72,7 @@
 class vtkAlgorithmOutput;
 class vtkImageData;
 class vtkLight;
+class vtkReliefRadianceHook;
 class vtkReliefShading;
 
 class MESOLIGHTRELIEF_EXPORT vtkReliefMapper : public vtkOpenGLPolyDataMapper
@@ -143,6 +144,15 @@ public:
   void SetIrradianceProbesData(vtkImageData* probes);
   void SetIrradianceProbesConnection(vtkAlgorithmOutput* output);
   vtkImageData* GetIrradianceProbes();
+  ///@}
+
+  ///@{
+  /**
+   * Code that changes the relief's linear radiance at its hit point (vtkReliefRadianceHook; null,
+   * the default: none), e.g. a light field's movable object's shadow.
+   */
+  void SetRadianceHook(vtkReliefRadianceHook* hook);
+  vtkReliefRadianceHook* GetRadianceHook();
   ///@}
 
   /**

@@ -18,6 +18,7 @@
 #include "vtkReliefMaxMipmapFS.h"
 
 #include <cstdlib>
+#include <functional> // std::hash of a radiance hook's source
 #include <iostream>
 #include <string>
 
@@ -138,7 +139,10 @@ std::string vtkReliefShaderSource::Key() const
     (this->FloatTextures      ? "F"
         : this->StoredNormals ? "N"
                               : "f") +
-    (this->NormalsFromDepth ? "S" : "s");
+    (this->NormalsFromDepth ? "S" : "s") +
+    (this->RadianceHookSource.empty()
+        ? std::string("r")
+        : "R" + std::to_string(std::hash<std::string>()(this->RadianceHookSource)));
 }
 
 //------------------------------------------------------------------------------
@@ -159,8 +163,9 @@ void vtkReliefShaderSource::ReplaceValuesBefore(std::string& vs, std::string& fs
   vtkShaderProgram::Substitute(vs, "//VTK::Normal::Impl",
     "mlTangentVC = mlTangentMatrix * tangentMC;\n  mlTCoordVC = mlTCoordMC;\n  "
     "//VTK::Normal::Impl");
-  vtkShaderProgram::Substitute(
-    fs, "//VTK::CustomUniforms::Dec", "//VTK::CustomUniforms::Dec\n//MESOLIGHT::Dec");
+  // A radiance hook's declarations come after the relief's own (which they may use), before main.
+  vtkShaderProgram::Substitute(fs, "//VTK::CustomUniforms::Dec",
+    "//VTK::CustomUniforms::Dec\n//MESOLIGHT::Dec\n" + this->RadianceHookSource);
   vtkShaderProgram::Substitute(
     fs, "//VTK::UniformFlow::Impl", "//MESOLIGHT::UniformFlow::Impl\n  //VTK::UniformFlow::Impl");
   vtkShaderProgram::Substitute(fs, "//VTK::Light::Impl", "//MESOLIGHT::Relief::Impl");

@@ -51,6 +51,8 @@ public:
    */
   void SetCurvedGeometry(bool curved) { this->CurvedGeometry = curved; }
   bool GetCurvedGeometry() const { return this->CurvedGeometry; }
+  /** A vtkReliefRadianceHook's declarations for this draw ("": none). */
+  void SetRadianceHookSource(const std::string& source) { this->RadianceHookSource = source; }
   /** Whether the shader of the current settings marches the curved layer. */
   bool GetCurved() const;
 
@@ -94,6 +96,7 @@ protected:
   bool StoredNormals = false;
   bool NormalMoments = false;
   bool NormalsFromDepth = false;
+  std::string RadianceHookSource;
   std::map<const void*, std::string> Keys;
 
 private:

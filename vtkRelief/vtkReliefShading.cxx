@@ -21,6 +21,7 @@
 #include "vtkReliefGeometryCache.h"
 #include "vtkReliefMessageForwarder.h"
 #include "vtkReliefProperty.h"
+#include "vtkReliefRadianceHook.h"
 #include "vtkReliefShaderSource.h"
 #include "vtkReliefTextureCache.h"
 #include "vtkRenderer.h"
@@ -230,6 +231,9 @@ bool vtkReliefShading::StartDraw(vtkOpenGLRenderWindow* renWin, vtkReliefPropert
   {
     this->Probes->Activate();
   }
+  this->RadianceHookActive = this->RadianceHook && this->RadianceHook->StartDraw(renWin);
+  this->ShaderSource->SetRadianceHookSource(
+    this->RadianceHookActive ? this->RadianceHook->GetFragmentDeclarations() : std::string());
   this->Drawing = true;
   return true;
 }
@@ -254,6 +258,11 @@ void vtkReliefShading::FinishDraw()
   {
     this->Probes->Deactivate();
   }
+  if (this->RadianceHookActive)
+  {
+    this->RadianceHook->FinishDraw();
+  }
+  this->RadianceHookActive = false;
   this->Drawing = false;
 }
 
@@ -399,8 +408,29 @@ void vtkReliefShading::SetShaderParameters(
     }
     program->SetUniformMatrix3x3("mlWorldToView", worldToView);
   }
+  if (this->RadianceHookActive)
+  {
+    this->RadianceHook->SetShaderParameters(program, ren);
+  }
 
   this->SetLightUniforms(program, ren);
+}
+
+//------------------------------------------------------------------------------
+bool vtkReliefShading::SetRadianceHook(vtkReliefRadianceHook* hook)
+{
+  if (this->RadianceHook == hook)
+  {
+    return false;
+  }
+  this->RadianceHook = hook;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+vtkReliefRadianceHook* vtkReliefShading::GetRadianceHook()
+{
+  return this->RadianceHook;
 }
 
 //------------------------------------------------------------------------------
@@ -483,6 +513,10 @@ void vtkReliefShading::ReleaseGraphicsResources(vtkWindow* win)
   this->ReliefTexture->ReleaseGraphicsResources(win);
   this->LightSet->ReleaseGraphicsResources(win);
   this->Probes->ReleaseGraphicsResources(win);
+  if (this->RadianceHook)
+  {
+    this->RadianceHook->ReleaseGraphicsResources(win);
+  }
   this->ShaderSource->ForgetShaders();
 }
 
@@ -496,6 +530,7 @@ void vtkReliefShading::PrintSelf(ostream& os, vtkIndent indent)
   this->LightSet->PrintSelf(os, indent.GetNextIndent());
   os << indent << "IrradianceProbes:\n";
   this->Probes->PrintSelf(os, indent.GetNextIndent());
+  os << indent << "RadianceHook: " << this->RadianceHook.Get() << "\n";
   os << indent << "ShaderSource:\n";
   this->ShaderSource->PrintSelf(os, indent.GetNextIndent());
 }

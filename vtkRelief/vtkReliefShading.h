@@ -20,6 +20,8 @@
  *  - ShaderKeyChanged, ReplaceShaderValuesBefore/After: the shader edits
  *    (vtkReliefShaderSource);
  *  - SetShaderParameters: the uniforms of one draw.
+ * A vtkReliefRadianceHook (SetRadianceHook) takes part in the last three: bound in StartDraw, its
+ * GLSL in the shader while it draws, its uniforms set with the relief's.
  * The settings are a vtkReliefProperty held here for the mapper (GetReliefProperty), which this
  * class only reads.
  */
@@ -45,6 +47,7 @@ class vtkOpenGLRenderWindow;
 class vtkReliefGeometryCache;
 class vtkReliefMessageForwarder;
 class vtkReliefProperty;
+class vtkReliefRadianceHook;
 class vtkReliefShaderSource;
 class vtkReliefTextureCache;
 class vtkRenderer;
@@ -124,6 +127,12 @@ public:
   void ReplaceShaderValuesAfter(std::string& fs, const void* cellBO);
   ///@}
 
+  ///@{
+  /** Code that changes the relief's radiance at its hit (null, the default: none). */
+  bool SetRadianceHook(vtkReliefRadianceHook* hook);
+  vtkReliefRadianceHook* GetRadianceHook();
+  ///@}
+
   /** Uniforms of one draw (textures, settings, camera, tangent frame, VTK lights). */
   void SetShaderParameters(vtkShaderProgram* program, vtkRenderer* ren, vtkActor* actor);
 
@@ -151,6 +160,8 @@ protected:
 
   vtkSmartPointer<vtkReliefProperty> ReliefProperty; // the mapper's settings
   vtkSmartPointer<vtkReliefProperty> Property;       // the settings of the current draw
+  vtkSmartPointer<vtkReliefRadianceHook> RadianceHook;
+  bool RadianceHookActive = false; // the hook takes part in the current draw
   bool Drawing = false;
   bool PyramidActive = false;
   bool LightSetActive = false;

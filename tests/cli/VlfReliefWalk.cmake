@@ -274,7 +274,7 @@ elseif (PART STREQUAL "panel")
     message(FATAL_ERROR "the flat panel passes for the relief: the check cannot fail")
   endif ()
 elseif (PART STREQUAL "shadow")
-  # The movable object in front of the back wall, its shadow on the wall (vtkLightFieldReliefMapper:
+  # The movable object in front of the back wall, its shadow on the wall (vtkLightFieldReliefShadowHook:
   # the walkthrough's shadow code at the relief's hit point). Per pixel the share of the light the
   # shadow leaves (the run with --shadows field over the run with --shadows none, red, linear):
   # where the flat wall's share is below 0.9 (eroded by a pixel: the relief's grooves, 5.6 mm

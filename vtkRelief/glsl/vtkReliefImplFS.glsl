@@ -298,8 +298,8 @@
 #endif
   gl_FragData[0].rgb = gl_FragData[0].rgb + mlEnvironment * (diffuseColor / 3.14159265);
 #ifdef ML_RADIANCE_HOOK
-  // A subclass's change of the linear radiance at the hit (view coordinates, the macro normal),
-  // e.g. the light field walkthrough's object shadow (vtkLightFieldReliefMapper).
+  // A vtkReliefRadianceHook's change of the linear radiance at the hit (view coordinates, the
+  // macro normal), e.g. a light field's movable object's shadow (vtkLightFieldReliefShadowHook).
   gl_FragData[0].rgb = mlRadianceHook(gl_FragData[0].rgb, mlHitPos, mlN, diffuseColor);
 #endif
   // An emitter's own light (a lamp under the relief), which no shadow takes away.

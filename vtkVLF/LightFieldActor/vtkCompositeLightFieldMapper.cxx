@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkCompositeLightFieldMapper.h"
 
+#include "vtkLightFieldCasterShadows.h"
 #include "vtkLightFieldGatherFilter.h"
 #include "vtkLightFieldMapper.h"
 #include "vtkLightFieldShading.h"
@@ -24,11 +25,9 @@
 
 #include "vtkCompositeMapperHelper2.h"
 
-#include "vtkCellArray.h"
 #include "vtkFieldData.h"
-#include "vtkIdList.h"
+#include "vtkNew.h"
 
-#include "ObjectMesh.h"
 #include "ObjectShadows.h"
 #include "WalkthroughImage.h"
 
@@ -44,22 +43,12 @@ static_assert(
       static_cast<int>(mesolight::ToneMapOperator::Reinhard),
   "vtkCompositeLightFieldMapper's tone maps and mesolight::ToneMapOperator share their values");
 
-// The movable object's shadow maps: as vtkLightFieldActor's (vtkLightFieldObjectShadows.h), built
-// from the emitters the caster carries instead of the field itself.
+// The movable object's shadow maps (vtkLightFieldCasterShadows) and their texture.
 struct vtkCompositeLightFieldMapper::ShadowData
 {
-  vtkSmartPointer<vtkPolyData> Caster;
-  const void* BuiltCaster = nullptr;
-  vtkMTimeType BuiltTime = 0;
-  int BuiltMode = -1;
-  int BuiltResolution = -1;
-  mesolight::vlf::ObjectShadows Maps;
-  mesolight::vlf::ShadowGpuData Gpu;
-  unsigned long Version = 0;
+  vtkNew<vtkLightFieldCasterShadows> Maps;
   unsigned long UploadedVersion = 0;
   vtkSmartPointer<vtkTextureObject> Texture;
-  std::string Problem;
-  bool Active() const { return this->Gpu.Mode != 0 && this->Gpu.EmitterCount > 0; }
 };
 
 //==============================================================================
@@ -202,7 +191,7 @@ protected:
     uniforms.ToneMap = owner->GetToneMap();
     vtkLightFieldShading::SetRadianceUniforms(cellBO.Program, uniforms);
     vtkLightFieldShading::SetShadowUniforms(cellBO.Program,
-      this->Shadowing ? &owner->Shadows->Gpu : nullptr,
+      this->Shadowing ? &owner->Shadows->Maps->GetGpu() : nullptr,
       this->Shadowing ? owner->Shadows->Texture->GetTextureUnit() : uniforms.AtlasUnit);
   }
 
@@ -239,16 +228,16 @@ vtkCompositeLightFieldMapper::~vtkCompositeLightFieldMapper() = default;
 //------------------------------------------------------------------------------
 void vtkCompositeLightFieldMapper::SetShadowCaster(vtkPolyData* caster)
 {
-  if (this->Shadows->Caster != caster)
+  if (this->Shadows->Maps->GetCaster() != caster)
   {
-    this->Shadows->Caster = caster;
+    this->Shadows->Maps->SetCaster(caster);
     this->Modified();
   }
 }
 
 vtkPolyData* vtkCompositeLightFieldMapper::GetShadowCaster()
 {
-  return this->Shadows->Caster;
+  return this->Shadows->Maps->GetCaster();
 }
 
 void vtkCompositeLightFieldMapper::SetShadowMode(int mode)
@@ -257,6 +246,7 @@ void vtkCompositeLightFieldMapper::SetShadowMode(int mode)
   if (mode != this->ShadowMode)
   {
     this->ShadowMode = mode;
+    this->Shadows->Maps->SetMode(mode);
     this->Modified();
   }
 }
@@ -267,106 +257,14 @@ void vtkCompositeLightFieldMapper::SetShadowMapResolution(int texels)
   if (texels != this->ShadowMapResolution)
   {
     this->ShadowMapResolution = texels;
+    this->Shadows->Maps->SetResolution(texels);
     this->Modified();
   }
 }
 
 const char* vtkCompositeLightFieldMapper::GetShadowProblem()
 {
-  return this->Shadows->Problem.c_str();
-}
-
-//------------------------------------------------------------------------------
-void vtkCompositeLightFieldMapper::PrepareShadows()
-{
-  namespace vlf = mesolight::vlf;
-  ShadowData& d = *this->Shadows;
-  vtkPolyData* caster = this->ShadowMode != 0 ? d.Caster.Get() : nullptr;
-  if (caster == d.BuiltCaster && (!caster || caster->GetMTime() == d.BuiltTime) &&
-    this->ShadowMode == d.BuiltMode && this->ShadowMapResolution == d.BuiltResolution)
-  {
-    return;
-  }
-  d.BuiltCaster = caster;
-  d.BuiltTime = caster ? caster->GetMTime() : 0;
-  d.BuiltMode = this->ShadowMode;
-  d.BuiltResolution = this->ShadowMapResolution;
-  d.Maps.Clear();
-  d.Gpu = vlf::ShadowGpuData();
-  ++d.Version;
-  const std::string before = d.Problem;
-  d.Problem.clear();
-  if (!caster)
-  {
-    return;
-  }
-  vtkFieldData* fields = caster->GetFieldData();
-  vtkFloatArray* packed = vtkFloatArray::SafeDownCast(
-    fields ? fields->GetAbstractArray(vtkLightFieldGatherFilter::GetEmittersName()) : nullptr);
-  vtkDataArray* normalisation = vtkArrayDownCast<vtkDataArray>(
-    fields ? fields->GetAbstractArray(vtkLightFieldGatherFilter::GetToUnitSphereName()) : nullptr);
-  std::vector<vlf::ShadowEmitter> emitters;
-  if (!packed || !normalisation || normalisation->GetNumberOfValues() != 4 ||
-    !vlf::UnpackEmitters(
-      packed->GetPointer(0), static_cast<std::size_t>(packed->GetNumberOfValues()), emitters))
-  {
-    d.Problem = "the Shadow Caster carries no light field emitters: connect the output of Light "
-                "Field Gather (or a filter after it) as the Shadow Caster";
-  }
-  else if (caster->GetNumberOfPolys() == 0 || caster->GetNumberOfPoints() == 0)
-  {
-    d.Problem = "the Shadow Caster has no polygons";
-  }
-  if (d.Problem.empty())
-  {
-    const double scale = normalisation->GetComponent(3, 0);
-    const double centre[3] = { normalisation->GetComponent(0, 0), normalisation->GetComponent(1, 0),
-      normalisation->GetComponent(2, 0) };
-    vlf::ObjectMesh mesh;
-    mesh.Positions.reserve(static_cast<std::size_t>(caster->GetNumberOfPoints()));
-    for (vtkIdType i = 0; i < caster->GetNumberOfPoints(); ++i)
-    {
-      double p[3];
-      caster->GetPoint(i, p);
-      mesh.Positions.emplace_back(static_cast<float>((p[0] - centre[0]) * scale),
-        static_cast<float>((p[1] - centre[1]) * scale),
-        static_cast<float>((p[2] - centre[2]) * scale));
-    }
-    vtkNew<vtkIdList> ids;
-    vtkCellArray* polys = caster->GetPolys();
-    for (polys->InitTraversal(); polys->GetNextCell(ids);)
-    {
-      for (vtkIdType k = 1; k + 1 < ids->GetNumberOfIds(); ++k)
-      {
-        mesh.Triangles.emplace_back(static_cast<unsigned>(ids->GetId(0)),
-          static_cast<unsigned>(ids->GetId(k)), static_cast<unsigned>(ids->GetId(k + 1)));
-      }
-    }
-    mesh.ComputeNormals();
-    vlf::ShadowSettings settings;
-    settings.Mode = static_cast<vlf::ShadowMode>(this->ShadowMode);
-    settings.Resolution = this->ShadowMapResolution;
-    // The field's ambient term makes the shadow the share of the lighting blocked (no stripes
-    // from the field's direction aliasing, see ObjectShadows.h); an older gather output has none.
-    vtkDataArray* ambient = vtkArrayDownCast<vtkDataArray>(
-      fields->GetAbstractArray(vtkLightFieldGatherFilter::GetAmbientName()));
-    if (ambient && ambient->GetNumberOfValues() == 3)
-    {
-      d.Maps.SetAmbient(glm::vec3(static_cast<float>(ambient->GetComponent(0, 0)),
-        static_cast<float>(ambient->GetComponent(1, 0)),
-        static_cast<float>(ambient->GetComponent(2, 0))));
-    }
-    else
-    {
-      d.Maps.ClearAmbient();
-    }
-    d.Problem = d.Maps.Build(emitters, mesh, settings);
-    d.Gpu = vlf::PackShadowsForGpu(d.Maps);
-  }
-  if (!d.Problem.empty() && d.Problem != before)
-  {
-    vtkWarningMacro(<< "the Shadow Caster casts no shadow: " << d.Problem << ".");
-  }
+  return this->Shadows->Maps->GetProblem();
 }
 
 //------------------------------------------------------------------------------
@@ -391,23 +289,24 @@ bool vtkCompositeLightFieldMapper::PrepareShadowTexture(vtkRenderer* ren)
 {
   ShadowData& d = *this->Shadows;
   vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
-  if (!d.Active() || !window)
+  if (!d.Maps->HasShadows() || !window)
   {
     return false;
   }
   if (d.Texture && d.Texture->GetHandle() != 0 && d.Texture->GetContext() == window &&
-    d.UploadedVersion == d.Version)
+    d.UploadedVersion == d.Maps->GetVersion())
   {
     return true; // uploaded once per rebuild of the maps
   }
-  if (!vtkLightFieldShading::UploadShadowTexture(d.Texture, window, d.Gpu))
+  const mesolight::vlf::ShadowGpuData& gpu = d.Maps->GetGpu();
+  if (!vtkLightFieldShading::UploadShadowTexture(d.Texture, window, gpu))
   {
-    vtkErrorMacro(<< "could not upload the " << d.Gpu.Width << "x" << d.Gpu.Height
+    vtkErrorMacro(<< "could not upload the " << gpu.Width << "x" << gpu.Height
                   << " shadow map texture: the object casts no shadow");
     d.UploadedVersion = 0;
     return false;
   }
-  d.UploadedVersion = d.Version;
+  d.UploadedVersion = d.Maps->GetVersion();
   return true;
 }
 
@@ -477,7 +376,7 @@ void vtkCompositeLightFieldMapper::Render(vtkRenderer* ren, vtkActor* actor)
   }
   if (this->CurrentAtlas)
   {
-    this->PrepareShadows();
+    this->Shadows->Maps->Update(this);
   }
   if (!this->CurrentAtlas && !this->VertexRadiance && anyCells && !this->WarnedNoAtlas)
   {
@@ -556,5 +455,5 @@ void vtkCompositeLightFieldMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "VertexRadiance: " << this->VertexRadiance << "\n";
   os << indent << "ShadowMode: " << this->ShadowMode << "\n";
   os << indent << "ShadowMapResolution: " << this->ShadowMapResolution << "\n";
-  os << indent << "ShadowCaster: " << (this->Shadows->Caster ? "set" : "(none)") << "\n";
+  os << indent << "ShadowCaster: " << (this->GetShadowCaster() ? "set" : "(none)") << "\n";
 }

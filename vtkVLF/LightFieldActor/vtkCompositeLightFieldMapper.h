@@ -20,8 +20,8 @@
  *
  * Shadows of a movable object (SetShadowCaster: Light Field Gather's output, in world
  * coordinates, whose field data carries the field's emitters and normalisation) darken the
- * scene by vtkLightFieldActor's code: the maps of mesolight::vlf::ObjectShadows, packed by
- * PackShadowsForGpu, read per fragment by glsl/vtkLightFieldShadowFS.glsl at each receiver's
+ * scene by vtkLightFieldActor's code: the maps of vtkLightFieldCasterShadows, read per
+ * fragment by glsl/vtkLightFieldShadowFS.glsl at each receiver's
  * unit-sphere point, normal and reflectance (vtkVirtualLightField's receiver arrays).
  * ShadowMode as vtkLightFieldActor::SetShadowMode (default field-derived).
  *
@@ -124,8 +124,6 @@ protected:
 
   /** Uploads the current atlas when it changed; false when there is none. */
   bool PrepareAtlas(vtkRenderer* ren);
-  /** Builds the shadow maps when the caster or settings changed (CPU). */
-  void PrepareShadows();
   /** Uploads the maps when they changed; false when there are none to draw. */
   bool PrepareShadowTexture(vtkRenderer* ren);
   /** A 1 x 1 texture the samplers of a gathered surface's draw point at. */

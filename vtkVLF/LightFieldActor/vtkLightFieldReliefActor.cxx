@@ -8,12 +8,13 @@
 #include "vtkImageData.h"
 #include "vtkLightFieldActor.h"
 #include "vtkLightFieldActorCore.h"
-#include "vtkLightFieldReliefMapper.h"
+#include "vtkLightFieldReliefShadowHook.h"
 #include "vtkLightFieldReliefSurface.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkProperty.h"
+#include "vtkReliefMapper.h"
 #include "vtkReliefMessageForwarder.h"
 #include "vtkReliefProperty.h"
 
@@ -27,8 +28,10 @@ vtkStandardNewMacro(vtkLightFieldReliefActor);
 //------------------------------------------------------------------------------
 vtkLightFieldReliefActor::vtkLightFieldReliefActor()
   : Surface(vtkSmartPointer<vtkLightFieldReliefSurface>::New())
-  , ReliefMapper(vtkSmartPointer<vtkLightFieldReliefMapper>::New())
+  , ReliefMapper(vtkSmartPointer<vtkReliefMapper>::New())
+  , ObjectShadow(vtkSmartPointer<vtkLightFieldReliefShadowHook>::New())
 {
+  this->ReliefMapper->SetRadianceHook(this->ObjectShadow);
   this->ReliefMapper->SetInputConnection(this->Surface->GetOutputPort(0));
   this->ReliefMapper->SetIrradianceProbesConnection(this->Surface->GetOutputPort(1));
   vtkReliefProperty* relief = this->ReliefMapper->GetReliefProperty();
@@ -66,7 +69,7 @@ void vtkLightFieldReliefActor::SetLightFieldActor(vtkLightFieldActor* actor)
     this->ShowSurface();
     this->LightFieldActor = actor;
     this->Surface->SetLightFieldActor(actor);
-    this->ReliefMapper->SetLightFieldActor(actor);
+    this->ObjectShadow->SetLightFieldActor(actor);
     this->HideSurface();
     this->Modified();
   }

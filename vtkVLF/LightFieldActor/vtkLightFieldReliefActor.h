@@ -21,8 +21,8 @@
  *
  * Every frame it takes the walkthrough's display (exposure, tone map, sRGB encoding: CopyDisplay)
  * so the same radiance shows as the same pixel value beside the field, and the movable object's
- * shadow falls on it as on the walls (vtkLightFieldReliefMapper). Probes and lights are computed
- * again only when the field, the surface, the texture, the depth scale, the probe count or
+ * shadow falls on it as on the walls (vtkLightFieldReliefShadowHook). Probes and lights are
+ * computed again only when the field, the surface, the texture, the depth scale, the probe count or
  * Occlusion change. The relief's own settings (method, steps, self-shadowing) are
  * GetReliefProperty()'s; the actor's vtkProperty holds its colour. The relief writes no depth
  * behind its surface's plane (vtkReliefProperty::SetDepthLimitPlane): it is recessed into its
@@ -48,8 +48,9 @@
 class vtkCommand;
 class vtkImageData;
 class vtkLightFieldActor;
-class vtkLightFieldReliefMapper;
+class vtkLightFieldReliefShadowHook;
 class vtkLightFieldReliefSurface;
+class vtkReliefMapper;
 class vtkReliefProperty;
 
 class MESOLIGHTLIGHTFIELDACTOR_EXPORT vtkLightFieldReliefActor : public vtkOpenGLActor
@@ -151,7 +152,8 @@ private:
   bool Occlusion = true;
   vtkSmartPointer<vtkImageData> ReliefTexture;
   vtkSmartPointer<vtkLightFieldReliefSurface> Surface;
-  vtkSmartPointer<vtkLightFieldReliefMapper> ReliefMapper;
+  vtkSmartPointer<vtkReliefMapper> ReliefMapper;
+  vtkSmartPointer<vtkLightFieldReliefShadowHook> ObjectShadow; // the walkthrough's object's
   vtkSmartPointer<vtkCommand> Forwarder;      // the surface filter's messages, as this actor's
   vtkSmartPointer<vtkCommand> ExecutiveNoise; // its executive's "returned failure", swallowed
   vtkMTimeType PreparedTime = 0;              // the surface's output time the mapper was set up for

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// The movable object's shadow on a relief drawn beside the walkthrough (vtkLightFieldReliefMapper):
-// vtkReliefMapper's radiance hook, called with the relief's linear radiance at its hit point
+// The movable object's shadow on a relief lit by the field (vtkLightFieldReliefShadowHook): the
+// relief mappers' radiance hook (vtkReliefRadianceHook), called with the relief's linear radiance
+// at its hit point
 // before the exposure, shades it by the walkthrough's own shadow code (vtkLightFieldShadowFS.glsl,
 // spliced in before this with ML_SHADOW_RECEIVER_GIVEN): the same maps, mode and share of the
 // lighting as the flat walls, at the displaced point the relief shows and the wall's macro normal

@@ -5,7 +5,7 @@
 // (m % mlShadowColumns, m / mlShadowColumns), mlShadowResolution texels a side), read with
 // texelFetch so the depth test sees exactly the CPU's texels. mlShadowMode: 0 none, 1 black,
 // 2 blend, 3 field, 4 PCF, 5 soft. Positions are in the field's unit sphere. mlShadowedAt shades
-// a receiver given by its point, normal and Kd (the walkthrough's reliefs, vtkLightFieldReliefMapper:
+// a receiver given by its point, normal and Kd (a relief lit by the field, vtkLightFieldReliefShadowHook:
 // the relief's hit point); mlShadowed the light field's own receivers, given per vertex (with
 // ML_SHADOW_RECEIVER_GIVEN defined, it and its inputs are left out).
 

@@ -13,6 +13,7 @@
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
 #include "vtkIdList.h"
+#include "vtkLightFieldCasterShadows.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
@@ -188,6 +189,66 @@ TEST(LightFieldGatherFilter, CarriesWhatTheShadowCasterNeeds)
   EXPECT_EQ(p.field->GetPropagationCount(), 1);
   EXPECT_EQ(p.gather->GetFieldPropagations(), 1);
   EXPECT_EQ(p.gather->GetFieldBroadcasts(), 0); // one process
+}
+
+// What ParaView draws a Shadow Caster with (on the scene and on a relief): the gather output's
+// emitters and normalisation make the maps, rebuilt only when the caster or a setting changes;
+// a caster that is no gather output is said once, through the object the user watches.
+TEST(LightFieldCasterShadows, MapsFromTheGatherOutputRebuiltOnlyOnChange)
+{
+  Pipeline p;
+  p.gather->Update();
+  vtkNew<vtkLightFieldCasterShadows> shadows;
+  vtkNew<vtkObject> reporter;
+  vtkNew<mesolight_test::MessageCapture> said;
+  said->Watch(reporter);
+  shadows->Update(reporter);
+  EXPECT_FALSE(shadows->HasShadows()); // no caster
+  const unsigned long none = shadows->GetVersion();
+
+  shadows->SetCaster(p.gather->GetOutput());
+  shadows->Update(reporter);
+  ASSERT_TRUE(shadows->HasShadows()) << shadows->GetProblem();
+  EXPECT_STREQ(shadows->GetProblem(), "");
+  EXPECT_GT(shadows->GetGpu().EmitterCount, 0);
+  const unsigned long built = shadows->GetVersion();
+  EXPECT_NE(built, none);
+  shadows->Update(reporter);
+  EXPECT_EQ(shadows->GetVersion(), built); // nothing changed: not rebuilt
+  p.gather->GetOutput()->Modified();
+  shadows->Update(reporter);
+  EXPECT_NE(shadows->GetVersion(), built); // the caster changed
+
+  // World to the field's unit sphere: the gather's normalisation.
+  float m[16];
+  shadows->GetWorldToUnitSphere(m);
+  vtkDataArray* toUnit =
+    vtkArrayDownCast<vtkDataArray>(p.gather->GetOutput()->GetFieldData()->GetAbstractArray(
+      vtkLightFieldGatherFilter::GetToUnitSphereName()));
+  ASSERT_NE(toUnit, nullptr);
+  const double x[3] = { 100.0, 200.0, 300.0 };
+  for (int c = 0; c < 3; ++c)
+  {
+    const double mapped = m[c * 5] * x[c] + m[12 + c];
+    EXPECT_NEAR(mapped, (x[c] - toUnit->GetComponent(c, 0)) * toUnit->GetComponent(3, 0), 1e-4);
+  }
+
+  shadows->SetMode(0); // None
+  shadows->Update(reporter);
+  EXPECT_FALSE(shadows->HasShadows());
+  shadows->SetMode(3);
+
+  // The sphere itself (no emitters): no shadow, one warning naming what to connect.
+  shadows->SetCaster(p.sphere->GetOutput());
+  p.sphere->Update();
+  shadows->Update(reporter);
+  EXPECT_FALSE(shadows->HasShadows());
+  EXPECT_NE(std::string(shadows->GetProblem()).find("Light Field Gather"), std::string::npos);
+  EXPECT_TRUE(said->HasWarning("casts no shadow")) << said->AllWarnings();
+  said->Clear();
+  p.sphere->GetOutput()->Modified();
+  shadows->Update(reporter);
+  EXPECT_EQ(said->AllWarnings(), ""); // the same cause is not said again
 }
 
 TEST(LightFieldGatherFilter, ComputesMissingNormals)
