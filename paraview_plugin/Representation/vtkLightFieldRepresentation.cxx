@@ -53,50 +53,60 @@ int vtkLightFieldRepresentation::RequestData(
   {
     return 0;
   }
-  // The caster: this rank's piece, then every rank's (a shadow map needs the whole object).
-  // Every rank updates the representation together, so the collective matches.
   vtkPolyData* piece =
     this->GetNumberOfInputConnections(1) > 0 ? vtkPolyData::GetData(inputVector[1], 0) : nullptr;
+  vtkSmartPointer<vtkPolyData> whole = GatherShadowCaster(piece);
+  this->Caster = whole;
+  static_cast<vtkCompositeLightFieldMapper*>(this->Mapper)->SetShadowCaster(whole);
+  static_cast<vtkCompositeLightFieldMapper*>(this->LODMapper)->SetShadowCaster(whole);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkPolyData> vtkLightFieldRepresentation::GatherShadowCaster(vtkPolyData* piece)
+{
+  // This rank's piece, then every rank's (a shadow map needs the whole object).
   vtkSmartPointer<vtkPolyData> whole;
   vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
   if (controller && controller->GetNumberOfProcesses() > 1)
   {
     int mine = piece ? 1 : 0, any = 0;
     controller->AllReduce(&mine, &any, 1, vtkCommunicator::MAX_OP);
-    if (any)
+    if (!any)
     {
-      vtkNew<vtkPolyData> local;
-      if (piece)
+      return whole;
+    }
+    vtkNew<vtkPolyData> local;
+    if (piece)
+    {
+      local->ShallowCopy(piece);
+    }
+    std::vector<vtkSmartPointer<vtkDataObject>> pieces;
+    controller->AllGather(local, pieces);
+    vtkNew<vtkAppendPolyData> append;
+    vtkFieldData* fields = nullptr;
+    for (const auto& received : pieces)
+    {
+      auto* poly = vtkPolyData::SafeDownCast(received);
+      if (poly && poly->GetNumberOfPoints() > 0)
       {
-        local->ShallowCopy(piece);
+        append->AddInputData(poly);
       }
-      std::vector<vtkSmartPointer<vtkDataObject>> pieces;
-      controller->AllGather(local, pieces);
-      vtkNew<vtkAppendPolyData> append;
-      vtkFieldData* fields = nullptr;
-      for (const auto& received : pieces)
+      if (poly && !fields && poly->GetFieldData() &&
+        poly->GetFieldData()->GetAbstractArray(vtkLightFieldGatherFilter::GetEmittersName()))
       {
-        auto* poly = vtkPolyData::SafeDownCast(received);
-        if (poly && poly->GetNumberOfPoints() > 0)
-        {
-          append->AddInputData(poly);
-        }
-        if (poly && !fields && poly->GetFieldData() &&
-          poly->GetFieldData()->GetAbstractArray(vtkLightFieldGatherFilter::GetEmittersName()))
-        {
-          fields = poly->GetFieldData();
-        }
+        fields = poly->GetFieldData();
       }
-      whole = vtkSmartPointer<vtkPolyData>::New();
-      if (append->GetNumberOfInputConnections(0) > 0)
-      {
-        append->Update();
-        whole->ShallowCopy(append->GetOutput());
-      }
-      if (fields)
-      {
-        whole->GetFieldData()->ShallowCopy(fields); // the emitters travel as field data
-      }
+    }
+    whole = vtkSmartPointer<vtkPolyData>::New();
+    if (append->GetNumberOfInputConnections(0) > 0)
+    {
+      append->Update();
+      whole->ShallowCopy(append->GetOutput());
+    }
+    if (fields)
+    {
+      whole->GetFieldData()->ShallowCopy(fields); // the emitters travel as field data
     }
   }
   else if (piece)
@@ -104,10 +114,7 @@ int vtkLightFieldRepresentation::RequestData(
     whole = vtkSmartPointer<vtkPolyData>::New();
     whole->ShallowCopy(piece);
   }
-  this->Caster = whole;
-  static_cast<vtkCompositeLightFieldMapper*>(this->Mapper)->SetShadowCaster(whole);
-  static_cast<vtkCompositeLightFieldMapper*>(this->LODMapper)->SetShadowCaster(whole);
-  return 1;
+  return whole;
 }
 
 //------------------------------------------------------------------------------

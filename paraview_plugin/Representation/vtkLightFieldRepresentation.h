@@ -50,6 +50,13 @@ public:
   /** The whole caster of the last update (all ranks' pieces), null without one. */
   vtkPolyData* GetShadowCaster();
 
+  /**
+   * A Shadow Caster as its maps need it: every rank's piece appended, the field's emitters kept
+   * (field data), on every rank; null when no rank has one. Collective: every rank calls it in
+   * the same update (what the Relief Surface's Shadow Caster is gathered with too).
+   */
+  static vtkSmartPointer<vtkPolyData> GatherShadowCaster(vtkPolyData* piece);
+
 protected:
   vtkLightFieldRepresentation();
   ~vtkLightFieldRepresentation() override;

@@ -14,7 +14,11 @@
 #include "vtkInformationVector.h"
 #include "vtkIrradianceProbesTexture.h" // the visible share's array names
 #include "vtkLight.h"
+#include "vtkMatrix4x4.h"
+#include "vtkLightFieldCasterShadows.h"
+#include "vtkLightFieldReliefShadowHook.h"
 #include "vtkLightFieldReliefSurface.h"
+#include "vtkLightFieldRepresentation.h" // GatherShadowCaster
 #include "vtkMultiProcessController.h"
 #include "vtkObjectFactory.h"
 #include "vtkPVLODActor.h"
@@ -57,8 +61,14 @@ vtkReliefSurfaceRepresentation::vtkReliefSurfaceRepresentation()
   this->AttachedColorTexture->SetColorModeToDirectScalars();
   this->AttachedColorTexture->InterpolateOn();
   this->AttachedColorTexture->MipmapOn();
+  // The Shadow Caster's maps, drawn on the relief while it is lit by the field.
+  this->CasterShadows = vtkSmartPointer<vtkLightFieldCasterShadows>::New();
+  this->ObjectShadow = vtkSmartPointer<vtkLightFieldReliefShadowHook>::New();
+  this->ObjectShadow->SetCasterShadows(this->CasterShadows);
+  mapper->SetRadianceHook(this->ObjectShadow);
+  lodMapper->SetRadianceHook(this->ObjectShadow);
   this->SetupDefaults();
-  this->SetNumberOfInputPorts(2); // 1: the Light Field
+  this->SetNumberOfInputPorts(3); // 1: the Light Field, 2: the Shadow Caster
 }
 
 //------------------------------------------------------------------------------
@@ -70,6 +80,12 @@ int vtkReliefSurfaceRepresentation::FillInputPortInformation(int port, vtkInform
   if (port == 1)
   {
     info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataObject");
+    info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+    return 1;
+  }
+  if (port == 2)
+  {
+    info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
     info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
     return 1;
   }
@@ -86,7 +102,36 @@ int vtkReliefSurfaceRepresentation::RequestData(
   }
   this->AddPlaneTextureCoordinates();
   this->UpdateFieldLighting(inputVector[1]);
+  this->UpdateShadowCaster(inputVector[2]);
   return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkReliefSurfaceRepresentation::UpdateShadowCaster(vtkInformationVector* casterInput)
+{
+  // Every rank gathers (a collective), lit by the field or not: FieldLit is the same on all.
+  vtkPolyData* piece =
+    this->GetNumberOfInputConnections(2) > 0 ? vtkPolyData::GetData(casterInput, 0) : nullptr;
+  vtkSmartPointer<vtkPolyData> whole = vtkLightFieldRepresentation::GatherShadowCaster(piece);
+  // The maps live in the field's unit sphere and darken the field's lighting: none without it.
+  this->CasterShadows->SetCaster(this->FieldLit ? whole.Get() : nullptr);
+  this->CasterShadows->Update(this->Mapper);
+}
+
+//------------------------------------------------------------------------------
+void vtkReliefSurfaceRepresentation::SetShadowMode(int mode)
+{
+  this->CasterShadows->SetMode(mode);
+  this->CasterShadows->Update(this->Mapper);
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+void vtkReliefSurfaceRepresentation::SetShadowMapResolution(int texels)
+{
+  this->CasterShadows->SetResolution(texels);
+  this->CasterShadows->Update(this->Mapper);
+  this->Modified();
 }
 
 //------------------------------------------------------------------------------
@@ -557,6 +602,18 @@ int vtkReliefSurfaceRepresentation::ProcessViewRequest(
   {
     this->UpdateAttachedColorTexture();
     this->UpdateAlbedo(); // the texture and the colouring by an array are known now
+    // The field's probes, emitter lights and depth limit are those of the data where it is: a
+    // display transform moves the relief away from the light it was lit with. Said once per
+    // transform.
+    const bool moved = this->FieldLit && !this->Actor->GetMatrix()->IsIdentity();
+    if (moved && !this->WarnedDisplayTransform)
+    {
+      vtkWarningMacro("The Relief Surface is lit by its Light Field where its data lies; the "
+                      "display's Translation, Scale, Orientation or Origin move it away from that "
+                      "light. Move the surface with a Transform filter before Attach Relief "
+                      "Texture instead.");
+    }
+    this->WarnedDisplayTransform = moved;
   }
   return 1;
 }
@@ -653,6 +710,8 @@ void vtkReliefSurfaceRepresentation::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "FieldLit: " << this->FieldLit << "\n";
+  os << indent << "CasterShadows:\n";
+  this->CasterShadows->PrintSelf(os, indent.GetNextIndent());
   os << indent << "LightFieldAutoExposure: " << this->LightFieldAutoExposure << "\n";
   os << indent << "LightFieldOcclusion: " << this->LightFieldOcclusion << "\n";
   os << indent << "LightFieldAlbedo: " << this->LightFieldAlbedo << "\n";

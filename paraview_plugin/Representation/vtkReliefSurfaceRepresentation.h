@@ -40,6 +40,16 @@
  * change, not per frame) and the scene shadows the emitter lights per probe (Embree), as the
  * walkthrough's relief (`mesolight vlf view --relief`) does.
  *
+ * Input port 2 (optional, the proxy's "ReliefShadowCaster", which follows the Shadow Caster of the
+ * field's own display): with a Light Field, the movable object (Light Field Gather's output)
+ * darkens the relief by the same shadow maps, mode and share of the lighting as the scene's walls
+ * (vtkLightFieldCasterShadows, drawn on the relief by vtkLightFieldReliefShadowHook), at the
+ * displaced point the relief shows; under MPI every rank's piece of the caster is gathered
+ * (vtkLightFieldRepresentation::GatherShadowCaster). Without a Light Field it casts nothing.
+ *
+ * A display transform (Translation, Scale, Orientation) of a relief lit by a Light Field is warned
+ * about: the lighting is the field's where the data lies.
+ *
  * A planar surface without texture coordinates gets those of its plane (the rule of the
  * command line's reliefs: SurfacePlaneOf in vtkScene/core/SurfaceRelief.h, the depth image once
  * over the surface's bounding rectangle in its plane, upright), computed over the whole surface
@@ -60,6 +70,8 @@
 
 class vtkDataArray;
 class vtkDoubleArray;
+class vtkLightFieldCasterShadows;
+class vtkLightFieldReliefShadowHook;
 class vtkReliefProperty;
 class vtkVirtualLightField;
 
@@ -93,6 +105,15 @@ public:
   void SetToneMapping(bool on);
   void SetLightSetThreshold(double threshold);
   void SetShadowedLights(int count);
+  ///@}
+
+  ///@{
+  /**
+   * With a Light Field and a Shadow Caster: vtkLightFieldActor::ShadowModes (default 3, Field)
+   * and texels per shadow map side (default 256), as the Light Field representation's.
+   */
+  void SetShadowMode(int mode);
+  void SetShadowMapResolution(int texels);
   ///@}
 
   /** With a Light Field: the field's automatic exposure (see above; default on). */
@@ -164,6 +185,8 @@ protected:
   void UpdateFieldLighting(vtkInformationVector* fieldInput);
   /** The field surface's probes, lights and depth limit on the mappers (after its update). */
   void UseFieldSurfaceOutputs(bool updated);
+  /** The Shadow Caster of input port 2 on the relief (with a Light Field), or none. */
+  void UpdateShadowCaster(vtkInformationVector* casterInput);
   /** The relief property's exposure, tone map and sRGB for the current lighting. */
   void UpdateDisplayTransform();
   /** The actor's diffuse colour: the mounted wall's Kd or Solid Color (SetLightFieldAlbedo). */
@@ -174,9 +197,12 @@ protected:
   vtkTexture* UserTexture = nullptr; // not owned: the superclass' actor holds it
 
   vtkNew<vtkLightFieldReliefSurface> FieldSurface;
+  vtkSmartPointer<vtkLightFieldCasterShadows> CasterShadows;
+  vtkSmartPointer<vtkLightFieldReliefShadowHook> ObjectShadow;
   vtkNew<vtkLightCollection> FieldLights;
   vtkSmartPointer<vtkDoubleArray> VisibleShareValues; // GetVisibleShareValues' answer
   bool FieldLit = false;
+  bool WarnedDisplayTransform = false; // the display transform warned about (once)
   bool LightFieldAutoExposure = true;
   double UserExposure = 1.0;
   double FieldLogAverage = 0.0; // 0: none

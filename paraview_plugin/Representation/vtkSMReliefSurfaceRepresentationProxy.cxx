@@ -217,6 +217,7 @@ void vtkSMReliefSurfaceRepresentationProxy::FollowSceneDisplay(vtkSMProxy* view)
     return; // the field is not shown in this view: the relief's own settings
   }
   bool changed = false;
+  bool inputChanged = false;
   const auto copy = [&](const char* from, const char* to)
   {
     const double value = vtkSMPropertyHelper(scene, from).GetAsDouble();
@@ -229,9 +230,41 @@ void vtkSMReliefSurfaceRepresentationProxy::FollowSceneDisplay(vtkSMProxy* view)
   copy("LightFieldExposure", "Exposure");
   copy("LightFieldToneMapping", "ToneMapping"); // 0 clamp, 1 Reinhard: the relief's on/off
   copy("LightFieldAutoExposure", "ReliefLightFieldAutoExposure");
+  // The movable object shadows the relief as it shadows the scene.
+  copy("LightFieldShadowMode", "ReliefShadowMode");
+  copy("LightFieldShadowMapResolution", "ReliefShadowMapResolution");
+  if (scene->GetProperty("ShadowCaster") && this->GetProperty("ReliefShadowCaster"))
+  {
+    vtkSMPropertyHelper from(scene, "ShadowCaster");
+    vtkSMPropertyHelper to(this, "ReliefShadowCaster");
+    vtkSMProxy* caster = from.GetNumberOfElements() > 0 ? from.GetAsProxy(0) : nullptr;
+    const unsigned int port = caster ? from.GetOutputPort(0) : 0;
+    vtkSMProxy* current = to.GetNumberOfElements() > 0 ? to.GetAsProxy(0) : nullptr;
+    if (caster != current || (caster && to.GetOutputPort(0) != port))
+    {
+      if (caster)
+      {
+        to.Set(caster, port);
+      }
+      else
+      {
+        to.RemoveAllValues();
+      }
+      changed = inputChanged = true;
+    }
+  }
   if (changed)
   {
     this->UpdateVTKObjects(); // before the render this update precedes
+  }
+  if (inputChanged && !this->UpdatingForCaster)
+  {
+    // A new input leaves the representation without delivered data until it updates: update
+    // the view again now, so the render this update precedes shows the relief (with its
+    // shadow), not nothing. The nested update finds nothing more to follow.
+    this->UpdatingForCaster = true;
+    viewProxy->Update();
+    this->UpdatingForCaster = false;
   }
 }
 

@@ -14,7 +14,10 @@
  * - With a Light Field and ReliefLightFieldSceneDisplay on (the default), the relief's Exposure,
  *   Tone Mapping and Light Field Auto Exposure are copied from the field's own display in the
  *   view (its LightFieldExposure, LightFieldToneMapping, LightFieldAutoExposure), so a relief on
- *   a wall stays continuous with the scene when the scene's display settings change.
+ *   a wall stays continuous with the scene when the scene's display settings change; and its
+ *   ReliefShadowCaster, ReliefShadowMode and ReliefShadowMapResolution from the display's
+ *   ShadowCaster, LightFieldShadowMode and LightFieldShadowMapResolution, so the movable object
+ *   shadows the relief as it shadows the scene.
  * - At the first update that shows the relief, if it is then the only visible data of a render
  *   view left in 2D interaction, the view goes to 3D and its camera is reset. ParaView 5.11
  *   chooses the mode in pqRenderView::updateInteractionMode, called by
@@ -74,13 +77,15 @@ private:
 
   void UpdateLightSetAttached(vtkSMProxy* composite);
   /** With a Light Field and ReliefLightFieldSceneDisplay on: the field's display in `view` gives
-   * the relief's Exposure, Tone Mapping and Light Field Auto Exposure (see the class comment). */
+   * the relief's Exposure, Tone Mapping, Light Field Auto Exposure and Shadow Caster with its
+   * mode and resolution (see the class comment). */
   void FollowSceneDisplay(vtkSMProxy* view);
   /** Hides newly upstream visible images (see the class comment); true if it hid any. */
   bool HideUpstreamImages(vtkSMProxy* composite, vtkSMProxy* view);
   void UpdateInteractionMode(vtkSMProxy* composite, vtkSMProxy* view, bool imagesHidden);
 
   bool LoadedFromState = false;
+  bool UpdatingForCaster = false; // FollowSceneDisplay's nested view update
   bool InteractionModeChecked = false;
   // Upstream output ports already considered (source proxy global id, port).
   std::set<std::pair<vtkTypeUInt32, int>> UpstreamPortsSeen;

@@ -13,6 +13,11 @@ field (what picking it in the panel's Light Field selector does).
   set (LightFieldAttached 0, then 1), and not the light set's (LightSetAttached stays 0: no
   light set is attached; before, the field set it to 1 and showed Light Set Threshold and
   Shadowed Lights, which do nothing without a light set).
+- a movable object (Sphere -> Transform -> Light Field Gather, applied as the GUI does) set as
+  the scene display's Shadow Caster shadows the relief too: more than MIN_SHADOW_PIXELS of the
+  patch darker by more than 3 levels and under 1% of that brighter (the relief still drawn),
+  and the relief display's Shadow Caster is the gather;
+  must fail: the caster removed darkens nothing.
 """
 # run-gui-test.sh puts this directory on PYTHONPATH (paraview --script defines no __file__).
 import mesolight_guitest as g  # noqa: E402
@@ -20,6 +25,7 @@ import numpy as np  # noqa: E402
 import paraview.simple as pvs  # noqa: E402
 
 MAX_MEAN_ERROR = 8.0
+MIN_SHADOW_PIXELS = 300
 PATCH_Z = 539.0  # the relief (depth 0.05 x 380 mm = 19 mm) mounted in front of the wall
 
 
@@ -92,6 +98,38 @@ def main():
     if lit != (0, 0) or now != (1, 0):
         failures.append("the panel should show the Light Field's settings (not the light set's) "
                         "with a Light Field")
+
+    # The movable object between the lamp and the patch's left part (clear of the patch).
+    sphere = pvs.Sphere(Radius=40.0, ThetaResolution=32, PhiResolution=16)
+    g.apply(sphere, view)
+    moved = pvs.Transform(Input=sphere)
+    moved.Transform.Translate = [150.0, 380.0, 480.0]
+    g.apply(moved, view)
+    gather = pvs.MesolightLightFieldGather(Input=moved, LightField=field)
+    g.apply(gather, view)
+    scene = pvs.GetDisplayProperties(field, view)
+    no_caster = g.grab(view, "gui-relief-field-no-caster.png")
+    scene.ShadowCaster = gather  # what picking it in the scene's Shadow Caster selector does
+    shadowed = g.grab(view, "gui-relief-field-caster.png")
+    darker = int((((no_caster - shadowed).max(axis=2) > 3) & footprint).sum())
+    # Brighter pixels: the relief replaced by the flat wall (drawn nothing for a frame) would
+    # brighten its grooves.
+    brighter = int((((shadowed - no_caster).max(axis=2) > 3) & footprint).sum())
+    followed = shown.GetProperty("ReliefShadowCaster").GetData()
+    print("Shadow Caster set on the scene's display: %d pixels of the patch darker, %d brighter; "
+          "the relief's Shadow Caster %s" % (darker, brighter, followed))
+    if darker < MIN_SHADOW_PIXELS or brighter > 0.01 * darker:
+        failures.append("the object's shadow should darken the relief (%d <= %d pixels) and "
+                        "brighten none of it (%d)" % (darker, MIN_SHADOW_PIXELS, brighter))
+    if followed is None or followed.SMProxy is not gather.SMProxy:
+        failures.append("the relief should follow the scene display's Shadow Caster")
+    scene.ShadowCaster = []
+    removed = g.grab(view, "gui-relief-field-caster-removed.png")
+    left = int((((no_caster - removed).max(axis=2) > 3) & footprint).sum())
+    print("negative: the caster removed: %d pixels of the patch darker" % left)
+    if left > 0:
+        failures.append("negative check: without the caster the relief should not darken (%d)"
+                        % left)
     return failures
 
 
