@@ -16,7 +16,6 @@ inside the Cornell box's field, the gather output as the field display's Shadow 
 - A saved state brings the Shadow Caster back with its shadow.
 """
 import os
-import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -39,15 +38,7 @@ check = t.checker(failures)
 
 out = t.output_dir()
 snapshot = os.path.join(out, "pv-shadow-field.vlf")
-if os.path.exists(snapshot):
-    os.remove(snapshot)
-box = pvs.MesolightCornellBox()
-field = pvs.MesolightVirtualLightField(Input=box, Directions=513, RaysPerSide=32, Iterations=4,
-                                       SnapshotFileName=snapshot)
-sphere = pvs.Sphere(Center=[0.0, 0.0, 0.0], Radius=RADIUS, ThetaResolution=32, PhiResolution=16)
-moved = pvs.Transform(Input=sphere)
-moved.Transform.Translate = CENTRE
-gather = pvs.MesolightLightFieldGather(Input=moved, LightField=field)
+field, moved, gather = t.cornell_field_with_object(snapshot, CENTRE, RADIUS)
 
 view = t.make_cornell_view(SIZE)
 
@@ -94,32 +85,13 @@ for display in (scene, obj):
     display.LightFieldToneMapping = "Clamp"
     display.LightFieldExposure = EXPOSURE
 
-mesh = servermanager.Fetch(moved)
-obj_file = os.path.join(out, "pv-shadow-sphere.obj")
-with open(obj_file, "w") as f:
-    for p in vtk_to_numpy(mesh.GetPoints().GetData()):
-        f.write("v %.6f %.6f %.6f\n" % tuple(p))
-    polys = vtk_to_numpy(mesh.GetPolys().GetConnectivityArray())
-    offsets = vtk_to_numpy(mesh.GetPolys().GetOffsetsArray())
-    for a, b in zip(offsets[:-1], offsets[1:]):
-        f.write("f " + " ".join(str(i + 1) for i in polys[a:b]) + "\n")
+obj_file = t.write_obj(moved, os.path.join(out, "pv-shadow-sphere.obj"))
 
 
 def reference(shadows):
     path = os.path.join(out, "pv-shadow-reference-%s.png" % shadows)
-    command = [os.environ["MESOLIGHT_TOOL"], "vlf", "render", snapshot, "--mode", "progressive",
-               "--object", obj_file, "--object-transform", "0,0,0", "--shadows", shadows,
-               "--out", path, "--force", "--size", "%dx%d" % (SIZE, SIZE),
-               "--view-angle", str(t.CORNELL_VIEW_ANGLE),
-               "--camera", ",".join(str(c) for c in t.CORNELL_EYE + t.CORNELL_FOCAL),
-               "--exposure", str(EXPOSURE), "--tone-map", "clamp"]
-    print(" ".join(command))
-    subprocess.run(command, check=True)
-    return t.capture_file(path).astype(np.float64)
+    return t.object_shadow_reference(snapshot, obj_file, shadows, path, SIZE, EXPOSURE)
 
-
-def linear(image):
-    return t.srgb_decode(image) / EXPOSURE
 
 
 ref_none, ref_field = reference("none"), reference("field")
@@ -130,8 +102,7 @@ unshadowed = capture("pv-shadow-none.png")
 
 # The shadow region: darkened by the reference's shadow, not saturated, and where the two
 # renderers agree without the shadow (edges of the object and of walls excluded).
-lum = np.array([0.2126, 0.7152, 0.0722])
-drop = (ref_none - ref_field) @ lum
+drop = (ref_none - ref_field) @ t.REC709
 agree = np.abs(unshadowed - ref_none).max(axis=2) <= 6
 region = (drop > 3.0) & (ref_none.max(axis=2) < 255) & agree
 print("shadow region: %d pixels (%d darkened by the reference, %d of them where the unshadowed "
@@ -140,7 +111,7 @@ check(region.sum() > 300, "the reference shows a shadow region of more than 300 
 
 
 def ratio(with_shadow, without):
-    return float((linear(with_shadow)[region] @ lum).sum() / (linear(without)[region] @ lum).sum())
+    return t.radiance_left(with_shadow, without, region, EXPOSURE)
 
 
 r_ref = ratio(ref_field, ref_none)

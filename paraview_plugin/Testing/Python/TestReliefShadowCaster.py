@@ -23,15 +23,12 @@ field's own display only (what a user does to shadow the scene).
 - A saved state, loaded in a new session, shadows the relief again.
 """
 import os
-import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import mesolight_pvtest as t  # noqa: E402
 import numpy as np  # noqa: E402
 import paraview.simple as pvs  # noqa: E402
-from paraview import servermanager  # noqa: E402
-from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: E402
 from vtkmodules.util.misc import calldata_type  # noqa: E402
 from vtkmodules.vtkCommonCore import VTK_STRING, vtkCommand, vtkOutputWindow  # noqa: E402
 
@@ -50,15 +47,7 @@ check = t.checker(failures)
 
 out = t.output_dir()
 snapshot = os.path.join(out, "pv-relief-shadow.vlf")
-if os.path.exists(snapshot):
-    os.remove(snapshot)
-box = pvs.MesolightCornellBox()
-field = pvs.MesolightVirtualLightField(Input=box, Directions=513, RaysPerSide=32, Iterations=4,
-                                       SnapshotFileName=snapshot)
-sphere = pvs.Sphere(Center=[0.0, 0.0, 0.0], Radius=RADIUS, ThetaResolution=32, PhiResolution=16)
-moved = pvs.Transform(Input=sphere)
-moved.Transform.Translate = CENTRE
-gather = pvs.MesolightLightFieldGather(Input=moved, LightField=field)
+field, moved, gather = t.cornell_field_with_object(snapshot, CENTRE, RADIUS)
 
 view = t.make_cornell_view(SIZE)
 scene = pvs.Show(field, view)
@@ -86,10 +75,7 @@ scene.Visibility = obj.Visibility = 0
 relief.SetRepresentationType("Surface")
 relief.AmbientColor = relief.DiffuseColor = [1.0, 1.0, 1.0]
 relief.Ambient, relief.Diffuse = 1.0, 0.0
-footprint = capture("pv-relief-shadow-footprint.png").max(axis=2) > 128
-for _ in range(3):
-    footprint = (footprint & np.roll(footprint, 1, 0) & np.roll(footprint, -1, 0) &
-                 np.roll(footprint, 1, 1) & np.roll(footprint, -1, 1))
+footprint = t.eroded(capture("pv-relief-shadow-footprint.png").max(axis=2) > 128, 3)
 scene.Visibility = obj.Visibility = 1
 relief.SetRepresentationType("Relief Surface")
 relief.Ambient, relief.Diffuse = 0.0, 1.0
@@ -110,32 +96,13 @@ relief.ReliefShadowCaster = []
 
 # --- the reference: the VTK light field actor on the flat wall ----------------------------------
 relief.LightField = field
-mesh = servermanager.Fetch(moved)
-obj_file = os.path.join(out, "pv-relief-shadow-sphere.obj")
-with open(obj_file, "w") as f:
-    for p in vtk_to_numpy(mesh.GetPoints().GetData()):
-        f.write("v %.6f %.6f %.6f\n" % tuple(p))
-    polys = vtk_to_numpy(mesh.GetPolys().GetConnectivityArray())
-    offsets = vtk_to_numpy(mesh.GetPolys().GetOffsetsArray())
-    for a, b in zip(offsets[:-1], offsets[1:]):
-        f.write("f " + " ".join(str(i + 1) for i in polys[a:b]) + "\n")
+obj_file = t.write_obj(moved, os.path.join(out, "pv-relief-shadow-sphere.obj"))
 
 
 def reference(shadows):
     path = os.path.join(out, "pv-relief-shadow-reference-%s.png" % shadows)
-    command = [os.environ["MESOLIGHT_TOOL"], "vlf", "render", snapshot, "--mode", "progressive",
-               "--object", obj_file, "--object-transform", "0,0,0", "--shadows", shadows,
-               "--out", path, "--force", "--size", "%dx%d" % (SIZE, SIZE),
-               "--view-angle", str(t.CORNELL_VIEW_ANGLE),
-               "--camera", ",".join(str(c) for c in t.CORNELL_EYE + t.CORNELL_FOCAL),
-               "--exposure", str(EXPOSURE), "--tone-map", "clamp"]
-    print(" ".join(command))
-    subprocess.run(command, check=True)
-    return t.capture_file(path).astype(np.float64)
+    return t.object_shadow_reference(snapshot, obj_file, shadows, path, SIZE, EXPOSURE)
 
-
-def linear(image):
-    return t.srgb_decode(image) / EXPOSURE
 
 
 unshadowed = capture("pv-relief-shadow-none.png")  # the field exists once this has rendered
@@ -149,8 +116,7 @@ print("the relief's Shadow Caster after setting the scene display's: %s" % follo
 check(followed is not None and followed.SMProxy is gather.SMProxy,
       "the relief follows the scene display's Shadow Caster")
 
-lum = np.array([0.2126, 0.7152, 0.0722])
-drop = (ref_none - ref_field) @ lum
+drop = (ref_none - ref_field) @ t.REC709
 agree = np.abs(unshadowed - ref_none).max(axis=2) <= 10
 region = footprint & (drop > 3.0) & (ref_none.max(axis=2) < 255) & agree
 print("shadow region on the patch: %d pixels (%d darkened by the reference on the patch)"
@@ -159,7 +125,7 @@ check(region.sum() > 300, "the reference's shadow covers more than 300 pixels of
 
 
 def ratio(with_shadow, without):
-    return float((linear(with_shadow)[region] @ lum).sum() / (linear(without)[region] @ lum).sum())
+    return t.radiance_left(with_shadow, without, region, EXPOSURE)
 
 
 r_ref = ratio(ref_field, ref_none)

@@ -8,6 +8,7 @@ by ParaView's ordinary Surface representation, with the same camera, lights and 
 """
 import argparse
 import os
+import subprocess
 import sys
 
 from paraview import servermanager
@@ -129,6 +130,71 @@ def capture_file(path):
     w, h, _ = image.GetDimensions()
     pixels = vtk_to_numpy(image.GetPointData().GetScalars()).reshape(h, w, -1)
     return pixels[:, :, :3].astype(np.int32)
+
+
+def eroded(mask, pixels):
+    """The mask shrunk by `pixels` (edges are not compared)."""
+    for _ in range(pixels):
+        mask = (mask & np.roll(mask, 1, 0) & np.roll(mask, -1, 0) &
+                np.roll(mask, 1, 1) & np.roll(mask, -1, 1))
+    return mask
+
+
+def write_obj(source, path):
+    """The polygons of a pipeline output, fetched, as an OBJ file (what `mesolight vlf render
+    --object` reads)."""
+    mesh = servermanager.Fetch(source)
+    with open(path, "w") as f:
+        for p in vtk_to_numpy(mesh.GetPoints().GetData()):
+            f.write("v %.6f %.6f %.6f\n" % tuple(p))
+        polys = vtk_to_numpy(mesh.GetPolys().GetConnectivityArray())
+        offsets = vtk_to_numpy(mesh.GetPolys().GetOffsetsArray())
+        for a, b in zip(offsets[:-1], offsets[1:]):
+            f.write("f " + " ".join(str(i + 1) for i in polys[a:b]) + "\n")
+    return path
+
+
+REC709 = np.array([0.2126, 0.7152, 0.0722])
+
+
+def cornell_field_with_object(snapshot, centre, radius):
+    """The Cornell box's field (513 directions, 32 rays, 4 iterations; its snapshot written to
+    `snapshot` for the reference) and a sphere moved to `centre`, gathered from it: (field, the
+    moved sphere, Light Field Gather)."""
+    if os.path.exists(snapshot):
+        os.remove(snapshot)
+    box = pvs.MesolightCornellBox()
+    field = pvs.MesolightVirtualLightField(Input=box, Directions=513, RaysPerSide=32, Iterations=4,
+                                           SnapshotFileName=snapshot)
+    sphere = pvs.Sphere(Center=[0.0, 0.0, 0.0], Radius=radius, ThetaResolution=32,
+                        PhiResolution=16)
+    moved = pvs.Transform(Input=sphere)
+    moved.Transform.Translate = centre
+    return field, moved, pvs.MesolightLightFieldGather(Input=moved, LightField=field)
+
+
+def radiance_left(with_shadow, without, region, exposure):
+    """Linear luminance of `with_shadow` over that of `without` in `region` (frames clamped at
+    `exposure`, sRGB): the share of the light a shadow leaves."""
+    def luminance(image):
+        return (srgb_decode(image)[region] / exposure) @ REC709
+
+    return float(luminance(with_shadow).sum() / luminance(without).sum())
+
+
+def object_shadow_reference(snapshot, obj_file, shadows, path, size, exposure):
+    """The VTK light field actor's frame of a field snapshot with a movable object (`mesolight vlf
+    render --mode progressive --object OBJ --shadows none|field`), from the Cornell box camera,
+    clamped at `exposure`: the independent reference of the Shadow Caster tests."""
+    command = [os.environ["MESOLIGHT_TOOL"], "vlf", "render", snapshot, "--mode", "progressive",
+               "--object", obj_file, "--object-transform", "0,0,0", "--shadows", shadows,
+               "--out", path, "--force", "--size", "%dx%d" % (size, size),
+               "--view-angle", str(CORNELL_VIEW_ANGLE),
+               "--camera", ",".join(str(c) for c in CORNELL_EYE + CORNELL_FOCAL),
+               "--exposure", str(exposure), "--tone-map", "clamp"]
+    print(" ".join(command))
+    subprocess.run(command, check=True)
+    return capture_file(path).astype(np.float64)
 
 
 def covered(pixels):
