@@ -14,11 +14,11 @@
 #include "vtkInformationVector.h"
 #include "vtkIrradianceProbesTexture.h" // the visible share's array names
 #include "vtkLight.h"
-#include "vtkMatrix4x4.h"
 #include "vtkLightFieldCasterShadows.h"
 #include "vtkLightFieldReliefShadowHook.h"
 #include "vtkLightFieldReliefSurface.h"
 #include "vtkLightFieldRepresentation.h" // GatherShadowCaster
+#include "vtkMatrix4x4.h"
 #include "vtkMultiProcessController.h"
 #include "vtkObjectFactory.h"
 #include "vtkPVLODActor.h"

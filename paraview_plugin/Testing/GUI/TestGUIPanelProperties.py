@@ -28,6 +28,11 @@ DELIBERATE = {
         "set from the data by the proxy class; the panel's decorators read it",
     ("MesolightReliefSurfaceRepresentation", "LightFieldAttached"):
         "set from the Light Field input by the proxy class; the panel's decorators read it",
+    ("MesolightReliefSurfaceRepresentation", "ReliefShadowMode"):
+        "follows the field display's Shadow Mode (the proxy class; Python: ReliefShadowMode)",
+    ("MesolightReliefSurfaceRepresentation", "ReliefShadowMapResolution"):
+        "follows the field display's Shadow Map Resolution (the proxy class; Python: "
+        "ReliefShadowMapResolution)",
     ("MesolightVirtualLightField", "DirectionsPropagated"):
         "information about the last update (Python: GetPropertyValue)",
     ("MesolightLightFieldGather", "FieldPropagations"):
