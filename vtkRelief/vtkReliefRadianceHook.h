@@ -43,9 +43,10 @@ public:
 
   /**
    * The GLSL declarations of a draw StartDraw accepted, inserted after the relief's own
-   * declarations; a change of this text rebuilds the shader.
+   * declarations; a change of this text rebuilds the shader. Asked on every draw: a reference to
+   * text the hook keeps, not built anew each time.
    */
-  virtual std::string GetFragmentDeclarations() = 0;
+  virtual const std::string& GetFragmentDeclarations() = 0;
 
   /** The hook's uniforms for one draw. */
   virtual void SetShaderParameters(vtkShaderProgram* program, vtkRenderer* ren) = 0;

@@ -139,10 +139,19 @@ std::string vtkReliefShaderSource::Key() const
     (this->FloatTextures      ? "F"
         : this->StoredNormals ? "N"
                               : "f") +
-    (this->NormalsFromDepth ? "S" : "s") +
-    (this->RadianceHookSource.empty()
-        ? std::string("r")
-        : "R" + std::to_string(std::hash<std::string>()(this->RadianceHookSource)));
+    (this->NormalsFromDepth ? "S" : "s") + this->RadianceHookKey;
+}
+
+//------------------------------------------------------------------------------
+void vtkReliefShaderSource::SetRadianceHookSource(const std::string& source)
+{
+  // Called on every draw: the copy and its hash only when the source changes.
+  if (source != this->RadianceHookSource)
+  {
+    this->RadianceHookSource = source;
+    this->RadianceHookKey =
+      source.empty() ? std::string("r") : "R" + std::to_string(std::hash<std::string>()(source));
+  }
 }
 
 //------------------------------------------------------------------------------

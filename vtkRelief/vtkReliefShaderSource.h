@@ -52,7 +52,7 @@ public:
   void SetCurvedGeometry(bool curved) { this->CurvedGeometry = curved; }
   bool GetCurvedGeometry() const { return this->CurvedGeometry; }
   /** A vtkReliefRadianceHook's declarations for this draw ("": none). */
-  void SetRadianceHookSource(const std::string& source) { this->RadianceHookSource = source; }
+  void SetRadianceHookSource(const std::string& source);
   /** Whether the shader of the current settings marches the curved layer. */
   bool GetCurved() const;
 
@@ -97,6 +97,7 @@ protected:
   bool NormalMoments = false;
   bool NormalsFromDepth = false;
   std::string RadianceHookSource;
+  std::string RadianceHookKey = "r"; // the source's part of Key(), computed when it changes
   std::map<const void*, std::string> Keys;
 
 private:

@@ -232,8 +232,9 @@ bool vtkReliefShading::StartDraw(vtkOpenGLRenderWindow* renWin, vtkReliefPropert
     this->Probes->Activate();
   }
   this->RadianceHookActive = this->RadianceHook && this->RadianceHook->StartDraw(renWin);
+  static const std::string none;
   this->ShaderSource->SetRadianceHookSource(
-    this->RadianceHookActive ? this->RadianceHook->GetFragmentDeclarations() : std::string());
+    this->RadianceHookActive ? this->RadianceHook->GetFragmentDeclarations() : none);
   this->Drawing = true;
   return true;
 }

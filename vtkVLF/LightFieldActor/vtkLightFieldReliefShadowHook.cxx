@@ -124,10 +124,11 @@ bool vtkLightFieldReliefShadowHook::StartDraw(vtkOpenGLRenderWindow* window)
 }
 
 //------------------------------------------------------------------------------
-std::string vtkLightFieldReliefShadowHook::GetFragmentDeclarations()
+const std::string& vtkLightFieldReliefShadowHook::GetFragmentDeclarations()
 {
-  return std::string("#define ML_SHADOW_RECEIVER_GIVEN\n") + vtkLightFieldShadowFS +
-    vtkLightFieldReliefShadowFS;
+  static const std::string declarations = std::string("#define ML_SHADOW_RECEIVER_GIVEN\n") +
+    vtkLightFieldShadowFS + vtkLightFieldReliefShadowFS;
+  return declarations;
 }
 
 //------------------------------------------------------------------------------

@@ -59,7 +59,7 @@ public:
   vtkGetMacro(Shadowing, bool);
 
   bool StartDraw(vtkOpenGLRenderWindow* window) override;
-  std::string GetFragmentDeclarations() override;
+  const std::string& GetFragmentDeclarations() override;
   void SetShaderParameters(vtkShaderProgram* program, vtkRenderer* ren) override;
   void FinishDraw() override;
   void ReleaseGraphicsResources(vtkWindow* window) override;
