@@ -115,6 +115,16 @@ void vtkReliefSurfaceRepresentation::UpdateShadowCaster(vtkInformationVector* ca
   vtkSmartPointer<vtkPolyData> whole = vtkLightFieldRepresentation::GatherShadowCaster(piece);
   // The maps live in the field's unit sphere and darken the field's lighting: none without it.
   this->CasterShadows->SetCaster(this->FieldLit ? whole.Get() : nullptr);
+  // A caster gathered from another field than the one lighting the relief casts no shadow.
+  double centre[3], scale = 0.0;
+  if (this->FieldLit && this->FieldSurface->GetFieldUnitSphere(centre, &scale))
+  {
+    this->CasterShadows->SetFieldUnitSphere(centre, scale);
+  }
+  else
+  {
+    this->CasterShadows->ClearFieldUnitSphere();
+  }
   this->CasterShadows->Update(this->Mapper);
 }
 

@@ -19,6 +19,7 @@
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
+#include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
 #include "vtkIdList.h"
@@ -418,6 +419,9 @@ int vtkVirtualLightField::FillOutput(vtkTriangleSceneConverter* converter, vtkPo
   output->GetPointData()->AddArray(receiverPoint);
   output->GetPointData()->AddArray(receiverNormal);
   output->GetPointData()->AddArray(receiverDiffuse);
+  const glm::vec3 centre = field.NormalizationCentre();
+  const double unitCentre[3] = { centre.x, centre.y, centre.z };
+  AttachUnitSphere(output, unitCentre, field.NormalizationScale());
 
   // The total diffuse textures whole, for drawing them per pixel (bilinear, no seams: the
   // atlas' gutters), and each vertex's place in them. Every vertex belongs to one surface.
@@ -668,6 +672,42 @@ vtkFloatArray* vtkVirtualLightField::GetAttachedAtlas(vtkDataObject* data, int s
     return nullptr;
   }
   return pixels;
+}
+
+void vtkVirtualLightField::AttachUnitSphere(
+  vtkDataObject* data, const double centre[3], double scale)
+{
+  if (!data || !data->GetFieldData())
+  {
+    return;
+  }
+  vtkNew<vtkDoubleArray> normalisation;
+  normalisation->SetName(GetToUnitSphereName());
+  for (const double v : { centre[0], centre[1], centre[2], scale })
+  {
+    normalisation->InsertNextValue(v);
+  }
+  data->GetFieldData()->AddArray(normalisation);
+}
+
+bool vtkVirtualLightField::GetAttachedUnitSphere(
+  vtkDataObject* data, double centre[3], double* scale)
+{
+  vtkFieldData* fields = data ? data->GetFieldData() : nullptr;
+  vtkDataArray* normalisation = fields
+    ? vtkArrayDownCast<vtkDataArray>(fields->GetAbstractArray(GetToUnitSphereName()))
+    : nullptr;
+  if (!normalisation || normalisation->GetNumberOfValues() != 4 ||
+    normalisation->GetNumberOfComponents() != 1 || !(normalisation->GetComponent(3, 0) > 0.0))
+  {
+    return false;
+  }
+  for (int i = 0; i < 3; ++i)
+  {
+    centre[i] = normalisation->GetComponent(i, 0);
+  }
+  *scale = normalisation->GetComponent(3, 0);
+  return true;
 }
 
 std::string vtkVirtualLightField::CheckContactTexelHalvings() const

@@ -22,7 +22,10 @@
  * data travels with every piece and into state files. For the shadows a movable object casts on
  * the scene (vtkCompositeLightFieldMapper), each vertex also carries its place in the field's
  * unit sphere, its surface's normal and reflectance (GetReceiverPointName(),
- * GetReceiverNormalName(), GetReceiverDiffuseName(): 3 components each).
+ * GetReceiverNormalName(), GetReceiverDiffuseName(): 3 components each). The field's world to
+ * unit sphere normalisation travels as field data too (GetToUnitSphereName(): centre x, y, z,
+ * scale), as on Light Field Gather's output: what tells a movable object gathered from this
+ * field from one gathered from another (vtkLightFieldCasterShadows::SetFieldUnitSphere).
  *
  * Memory is estimated before anything is allocated; above MemoryBudget the filter fails with a
  * message saying how much it would need. With a SnapshotFileName a snapshot is written after
@@ -238,6 +241,7 @@ public:
   static const char* GetReceiverPointName() { return "LightFieldUnitPoint"; }
   static const char* GetReceiverNormalName() { return "LightFieldNormal"; }
   static const char* GetReceiverDiffuseName() { return "LightFieldDiffuse"; }
+  static const char* GetToUnitSphereName() { return "LightFieldToUnitSphere"; }
   ///@}
 
   /**
@@ -252,6 +256,17 @@ public:
    * size receives its width and height.
    */
   static vtkFloatArray* GetAttachedAtlas(vtkDataObject* data, int size[2]);
+
+  ///@{
+  /**
+   * The field's world to unit sphere normalisation (p -> (p - centre) x scale, Wither 2005 §2.2:
+   * the field's lines live in the unit sphere about the scene) as field data of `data`
+   * (GetToUnitSphereName()), the form of this filter's and Light Field Gather's outputs. Get
+   * returns false when `data` carries none (or a malformed one).
+   */
+  static void AttachUnitSphere(vtkDataObject* data, const double centre[3], double scale);
+  static bool GetAttachedUnitSphere(vtkDataObject* data, double centre[3], double* scale);
+  ///@}
 
   /**
    * The vtkVirtualLightField whose output reaches `algorithm`: itself, or the first one found

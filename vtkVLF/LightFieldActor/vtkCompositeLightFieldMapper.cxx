@@ -376,6 +376,21 @@ void vtkCompositeLightFieldMapper::Render(vtkRenderer* ren, vtkActor* actor)
   }
   if (this->CurrentAtlas)
   {
+    // The caster must come from the field drawn (a field's output carries its unit sphere).
+    double centre[3], scale = 0.0;
+    bool known = false;
+    for (vtkDataObject* block : blocks)
+    {
+      known = known || vtkVirtualLightField::GetAttachedUnitSphere(block, centre, &scale);
+    }
+    if (known)
+    {
+      this->Shadows->Maps->SetFieldUnitSphere(centre, scale);
+    }
+    else
+    {
+      this->Shadows->Maps->ClearFieldUnitSphere();
+    }
     this->Shadows->Maps->Update(this);
   }
   if (!this->CurrentAtlas && !this->VertexRadiance && anyCells && !this->WarnedNoAtlas)

@@ -4,6 +4,7 @@
 #include "ObjectMesh.h"
 #include "ObjectShadows.h"
 #include "vtkLightFieldGatherFilter.h"
+#include "vtkVirtualLightField.h"
 
 #include "vtkCellArray.h"
 #include "vtkFieldData.h"
@@ -14,6 +15,8 @@
 #include "vtkPolyData.h"
 
 #include <algorithm>
+#include <cmath>
+#include <sstream>
 #include <vector>
 
 vtkStandardNewMacro(vtkLightFieldCasterShadows);
@@ -71,6 +74,33 @@ void vtkLightFieldCasterShadows::SetResolution(int texels)
 }
 
 //------------------------------------------------------------------------------
+void vtkLightFieldCasterShadows::SetFieldUnitSphere(const double centre[3], double scale)
+{
+  if (!(scale > 0.0) || !std::isfinite(scale))
+  {
+    this->ClearFieldUnitSphere();
+    return;
+  }
+  if (scale != this->FieldScale || !std::equal(centre, centre + 3, this->FieldCentre))
+  {
+    std::copy(centre, centre + 3, this->FieldCentre);
+    this->FieldScale = scale;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkLightFieldCasterShadows::ClearFieldUnitSphere()
+{
+  if (this->FieldScale != 0.0)
+  {
+    std::fill(this->FieldCentre, this->FieldCentre + 3, 0.0);
+    this->FieldScale = 0.0;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
 bool vtkLightFieldCasterShadows::HasShadows() const
 {
   return this->Built->Gpu.Mode != 0 && this->Built->Gpu.EmitterCount > 0;
@@ -100,7 +130,9 @@ void vtkLightFieldCasterShadows::Update(vtkObject* reporter)
   namespace vlf = mesolight::vlf;
   vtkPolyData* caster = this->Mode != 0 ? this->Caster.Get() : nullptr;
   if (caster == this->BuiltCaster && (!caster || caster->GetMTime() == this->BuiltTime) &&
-    this->Mode == this->BuiltMode && this->Resolution == this->BuiltResolution)
+    this->Mode == this->BuiltMode && this->Resolution == this->BuiltResolution &&
+    this->FieldScale == this->BuiltFieldScale &&
+    std::equal(this->FieldCentre, this->FieldCentre + 3, this->BuiltFieldCentre))
   {
     return;
   }
@@ -108,6 +140,8 @@ void vtkLightFieldCasterShadows::Update(vtkObject* reporter)
   this->BuiltTime = caster ? caster->GetMTime() : 0;
   this->BuiltMode = this->Mode;
   this->BuiltResolution = this->Resolution;
+  this->BuiltFieldScale = this->FieldScale;
+  std::copy(this->FieldCentre, this->FieldCentre + 3, this->BuiltFieldCentre);
   Maps& d = *this->Built;
   d.Shadows.Clear();
   d.Gpu = vlf::ShadowGpuData();
@@ -121,10 +155,8 @@ void vtkLightFieldCasterShadows::Update(vtkObject* reporter)
   vtkFieldData* fields = caster->GetFieldData();
   vtkFloatArray* packed = vtkFloatArray::SafeDownCast(
     fields ? fields->GetAbstractArray(vtkLightFieldGatherFilter::GetEmittersName()) : nullptr);
-  vtkDataArray* normalisation = vtkArrayDownCast<vtkDataArray>(
-    fields ? fields->GetAbstractArray(vtkLightFieldGatherFilter::GetToUnitSphereName()) : nullptr);
   std::vector<vlf::ShadowEmitter> emitters;
-  if (!packed || !normalisation || normalisation->GetNumberOfValues() != 4 ||
+  if (!packed || !vtkVirtualLightField::GetAttachedUnitSphere(caster, this->Centre, &this->Scale) ||
     !vlf::UnpackEmitters(
       packed->GetPointer(0), static_cast<std::size_t>(packed->GetNumberOfValues()), emitters))
   {
@@ -135,13 +167,20 @@ void vtkLightFieldCasterShadows::Update(vtkObject* reporter)
   {
     this->Problem = "the Shadow Caster has no polygons";
   }
+  else if (this->FieldScale > 0.0 && !this->SameUnitSphere())
+  {
+    std::ostringstream why;
+    why << "it was gathered from another light field than the one it shadows (its field's unit "
+           "sphere: centre ("
+        << this->Centre[0] << ", " << this->Centre[1] << ", " << this->Centre[2] << "), radius "
+        << 1.0 / this->Scale << "; this field's: centre (" << this->FieldCentre[0] << ", "
+        << this->FieldCentre[1] << ", " << this->FieldCentre[2] << "), radius "
+        << 1.0 / this->FieldScale
+        << "): give Light Field Gather this field as its light field input";
+    this->Problem = why.str();
+  }
   if (this->Problem.empty())
   {
-    this->Scale = normalisation->GetComponent(3, 0);
-    for (int i = 0; i < 3; ++i)
-    {
-      this->Centre[i] = normalisation->GetComponent(i, 0);
-    }
     vlf::ObjectMesh mesh;
     mesh.Positions.reserve(static_cast<std::size_t>(caster->GetNumberOfPoints()));
     for (vtkIdType i = 0; i < caster->GetNumberOfPoints(); ++i)
@@ -191,12 +230,38 @@ void vtkLightFieldCasterShadows::Update(vtkObject* reporter)
 }
 
 //------------------------------------------------------------------------------
+bool vtkLightFieldCasterShadows::SameUnitSphere() const
+{
+  // Both come from the same float normalisation when the fields are one scene's (a field and
+  // its snapshot, or two propagations of it); a millionth of the sphere allows for the float to
+  // double round trips and nothing a user could see.
+  const double tolerance = 1e-6;
+  double offset = 0.0;
+  for (int i = 0; i < 3; ++i)
+  {
+    offset = std::max(offset, std::abs(this->Centre[i] - this->FieldCentre[i]));
+  }
+  return std::abs(this->Scale / this->FieldScale - 1.0) <= tolerance &&
+    offset * this->FieldScale <= tolerance;
+}
+
+//------------------------------------------------------------------------------
 void vtkLightFieldCasterShadows::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Caster: " << (this->Caster ? "set" : "(none)") << "\n";
   os << indent << "Mode: " << this->Mode << "\n";
   os << indent << "Resolution: " << this->Resolution << "\n";
+  os << indent << "FieldUnitSphere: ";
+  if (this->FieldScale > 0.0)
+  {
+    os << "centre (" << this->FieldCentre[0] << ", " << this->FieldCentre[1] << ", "
+       << this->FieldCentre[2] << "), scale " << this->FieldScale << "\n";
+  }
+  else
+  {
+    os << "(not checked)\n";
+  }
   os << indent << "Version: " << this->Version << "\n";
   os << indent << "Problem: " << (this->Problem.empty() ? "(none)" : this->Problem) << "\n";
 }

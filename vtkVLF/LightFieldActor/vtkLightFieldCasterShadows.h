@@ -65,6 +65,18 @@ public:
    */
   void Update(vtkObject* reporter);
 
+  ///@{
+  /**
+   * The field the shadow is drawn in, as its world to unit sphere normalisation (centre, scale:
+   * vtkVirtualLightField::GetAttachedUnitSphere of the field's output). A caster gathered from
+   * another field (another scene, or the same one moved or scaled) carries that field's emitters
+   * and unit sphere, so its shadow would fall in the wrong place with the wrong lamps: it then
+   * casts none and Update says why. Scale 0 (the default, ClearFieldUnitSphere): not checked.
+   */
+  void SetFieldUnitSphere(const double centre[3], double scale);
+  void ClearFieldUnitSphere();
+  ///@}
+
   /** There are maps to draw. */
   bool HasShadows() const;
   /** The packed maps (valid until the next Update). */
@@ -93,9 +105,16 @@ protected:
   unsigned long Version = 0;
   double Centre[3] = { 0.0, 0.0, 0.0 };
   double Scale = 1.0;
+  double FieldCentre[3] = { 0.0, 0.0, 0.0 };
+  double FieldScale = 0.0; // 0: the field is not known, nothing checked
+  double BuiltFieldCentre[3] = { 0.0, 0.0, 0.0 };
+  double BuiltFieldScale = -1.0;
   std::string Problem;
   struct Maps;
   std::unique_ptr<Maps> Built;
+
+  // The caster's unit sphere (Centre, Scale) is the field's (FieldCentre, FieldScale).
+  bool SameUnitSphere() const;
 
 private:
   vtkLightFieldCasterShadows(const vtkLightFieldCasterShadows&) = delete;

@@ -208,14 +208,6 @@ void AttachShadowCasterData(const mesolight::vlf::LightField& field, vtkPolyData
   emitters->SetName(vtkLightFieldGatherFilter::GetEmittersName());
   emitters->SetNumberOfValues(static_cast<vtkIdType>(packed.size()));
   std::copy(packed.begin(), packed.end(), emitters->GetPointer(0));
-  vtkNew<vtkDoubleArray> normalisation;
-  normalisation->SetName(vtkLightFieldGatherFilter::GetToUnitSphereName());
-  const glm::vec3 centre = field.NormalizationCentre();
-  for (const double v : { static_cast<double>(centre.x), static_cast<double>(centre.y),
-         static_cast<double>(centre.z), static_cast<double>(field.NormalizationScale()) })
-  {
-    normalisation->InsertNextValue(v);
-  }
   vtkNew<vtkDoubleArray> logAverage;
   logAverage->SetName(vtkLightFieldGatherFilter::GetLogAverageName());
   double average = 0.0;
@@ -231,7 +223,9 @@ void AttachShadowCasterData(const mesolight::vlf::LightField& field, vtkPolyData
   logAverage->InsertNextValue(average);
   AttachShadowAmbient(field, significant, output, output);
   output->GetFieldData()->AddArray(emitters);
-  output->GetFieldData()->AddArray(normalisation);
+  const glm::vec3 centre = field.NormalizationCentre();
+  const double unitCentre[3] = { centre.x, centre.y, centre.z };
+  vtkVirtualLightField::AttachUnitSphere(output, unitCentre, field.NormalizationScale());
   output->GetFieldData()->AddArray(logAverage);
 }
 } // namespace

@@ -45,6 +45,7 @@
 
 #include "MesolightLightFieldActorModule.h" // For export macro
 #include "vtkPolyDataAlgorithm.h"
+#include "vtkVirtualLightField.h" // For GetToUnitSphereName
 
 #include <memory> // For std::unique_ptr
 
@@ -107,7 +108,8 @@ public:
   ///@{
   /** Names of the output's field data arrays (see the class description). */
   static const char* GetEmittersName() { return "LightFieldEmitters"; }
-  static const char* GetToUnitSphereName() { return "LightFieldToUnitSphere"; }
+  // vtkVirtualLightField::AttachUnitSphere's array, as on the field's own output.
+  static const char* GetToUnitSphereName() { return vtkVirtualLightField::GetToUnitSphereName(); }
   static const char* GetLogAverageName() { return "LightFieldLogAverage"; }
   static const char* GetAmbientName() { return "LightFieldAmbient"; }
   ///@}

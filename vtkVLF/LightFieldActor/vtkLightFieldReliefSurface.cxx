@@ -397,6 +397,7 @@ int vtkLightFieldReliefSurface::RequestData(
   this->EmitterLights->RemoveAllItems();
   this->NamedProbes.reset();
   std::fill(this->DepthLimit, this->DepthLimit + 7, 0.0);
+  std::fill(this->FieldUnitSphere, this->FieldUnitSphere + 4, 0.0);
   if (this->GetNumberOfInputConnections(1) > 0)
   {
     const int done =
@@ -519,6 +520,9 @@ int vtkLightFieldReliefSurface::RequestData(
   }
 
   AddEmitterLights(*field, emitters, this->EmitterLights);
+  const glm::vec3 centre = field->NormalizationCentre();
+  std::copy(&centre.x, &centre.x + 3, this->FieldUnitSphere);
+  this->FieldUnitSphere[3] = field->NormalizationScale();
   return 1;
 }
 
@@ -761,6 +765,7 @@ int vtkLightFieldReliefSurface::RequestSurfaceData(
   std::copy(result.Diffuse, result.Diffuse + 3, this->SurfaceDiffuse);
   std::copy(result.Emission, result.Emission + 3, this->SurfaceEmission);
   std::copy(result.Limit, result.Limit + 7, this->DepthLimit);
+  std::copy(result.Frame + 12, result.Frame + 16, this->FieldUnitSphere);
 
   // Port 0: this rank's piece, with normals and, when it has none, the plane's texture
   // coordinates (u, v of the frame at each point: world -> unit sphere -> texture).
@@ -815,6 +820,14 @@ bool vtkLightFieldReliefSurface::GetDepthLimitPlane(double origin[3], double nor
   std::copy(this->DepthLimit, this->DepthLimit + 3, origin);
   std::copy(this->DepthLimit + 3, this->DepthLimit + 6, normal);
   return this->DepthLimit[6] > 0.0;
+}
+
+//------------------------------------------------------------------------------
+bool vtkLightFieldReliefSurface::GetFieldUnitSphere(double centre[3], double* scale) const
+{
+  std::copy(this->FieldUnitSphere, this->FieldUnitSphere + 3, centre);
+  *scale = this->FieldUnitSphere[3];
+  return this->FieldUnitSphere[3] > 0.0;
 }
 
 //------------------------------------------------------------------------------

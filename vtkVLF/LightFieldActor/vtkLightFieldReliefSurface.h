@@ -237,6 +237,13 @@ public:
    */
   bool GetDepthLimitPlane(double origin[3], double normal[3]) const;
 
+  /**
+   * After an update, the field's world to unit sphere normalisation (centre, scale; every rank
+   * has it), what a movable object's shadow on this surface must have been gathered with
+   * (vtkLightFieldCasterShadows::SetFieldUnitSphere). False before a successful update.
+   */
+  bool GetFieldUnitSphere(double centre[3], double* scale) const;
+
   vtkMTimeType GetMTime() override;
 
 protected:
@@ -278,6 +285,7 @@ private:
   double SurfaceDiffuse[3] = { 0.0, 0.0, 0.0 };
   double SurfaceEmission[3] = { 0.0, 0.0, 0.0 };
   double DepthLimit[7] = { 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0 }; // point, normal, mounted
+  double FieldUnitSphere[4] = { 0.0, 0.0, 0.0, 0.0 };           // centre, scale (0: none)
   vtkNew<vtkLightCollection> EmitterLights;
   const void* ExecutedField = nullptr; // the actor's field the outputs were made from
   // A named surface's probes as computed (port 1 has them as floats); null otherwise.

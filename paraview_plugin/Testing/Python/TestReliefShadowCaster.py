@@ -20,6 +20,8 @@ field's own display only (what a user does to shadow the scene).
   unshadowed; the Black mode (followed from the scene display) misses the field-derived ratio;
   without a Light Field the caster changes nothing (the view's lights are not the field's).
 - A display transform (Position) of the field-lit relief is warned about, once.
+- A caster gathered from another field (another scene) shadows neither the scene nor the relief,
+  and is warned about; the field's own caster shadows again after it.
 - A saved state, loaded in a new session, shadows the relief again.
 """
 import os
@@ -209,8 +211,37 @@ print("display transform on a field-lit relief: %d warning(s) over two renders" 
 check(len(said) == 1, "a display transform of a field-lit relief is warned about once (%d)"
       % len(said))
 
-# --- a state file brings the relief's shadow back ----------------------------------------------
+# --- a caster gathered from another field casts no shadow, on the scene or the relief: said ---
+# The same sphere gathered from the field of another scene (the box moved 100 mm to the right:
+# another unit sphere, its lamp elsewhere) would put that field's shadow here.
 scene.LightFieldShadowMode = "Field"
+moved_box = pvs.Transform(Input=pvs.MesolightCornellBox())
+moved_box.Transform.Translate = [100.0, 0.0, 0.0]
+other_field = pvs.MesolightVirtualLightField(Input=moved_box, Directions=33, RaysPerSide=8,
+                                             Iterations=1)
+other_gather = pvs.MesolightLightFieldGather(Input=moved, LightField=other_field)
+warnings.clear()
+tag = window.AddObserver(vtkCommand.WarningEvent, on_warning)
+scene.ShadowCaster = other_gather
+mismatched = capture("pv-relief-shadow-other-field.png")
+capture("pv-relief-shadow-other-field-again.png")
+window.RemoveObserver(tag)
+said = [w for w in warnings if "gathered from another light field" in w]
+changed_px = int((np.abs(mismatched - unshadowed).max(axis=2) > 3).sum())
+print("a caster gathered from another field: %d pixels of the frame differ from the unshadowed "
+      "one by > 3 levels; %d warning(s) over two renders" % (changed_px, len(said)))
+for w in said[:1]:
+    print("  " + w.strip().splitlines()[-1])
+check(changed_px == 0, "a caster of another field shadows neither the scene nor the relief "
+      "(%d pixels changed)" % changed_px)
+check(1 <= len(said) <= 2, "a caster of another field is said once per display that draws it "
+      "(%d)" % len(said))
+scene.ShadowCaster = gather  # its own field's caster shadows again (the check is not sticky)
+r_again = ratio(capture("pv-relief-shadow-field-again.png"), unshadowed)
+print("the field's own caster again: %.4f left (before %.4f)" % (r_again, r_relief))
+check(abs(r_again - r_relief) <= 0.005, "the field's own caster shadows the relief again")
+
+# --- a state file brings the relief's shadow back ----------------------------------------------
 state = os.path.join(out, "pv-relief-shadow.pvsm")
 pvs.SaveState(state)
 pvs.ResetSession()  # the plugin stays loaded in this process

@@ -18,6 +18,8 @@
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkSphereSource.h"
+#include "vtkTransform.h"
+#include "vtkTransformPolyDataFilter.h"
 #include "vtkVirtualLightField.h"
 
 #include "MessageCapture.h"
@@ -249,6 +251,84 @@ TEST(LightFieldCasterShadows, MapsFromTheGatherOutputRebuiltOnlyOnChange)
   p.sphere->GetOutput()->Modified();
   shadows->Update(reporter);
   EXPECT_EQ(said->AllWarnings(), ""); // the same cause is not said again
+}
+
+// A caster gathered from another field (here the same box scaled by 1.5: another unit sphere,
+// its lamp elsewhere) would draw that field's shadow in this one: it casts none, says why once,
+// and the caster of the field itself still casts (the check does not refuse everything).
+TEST(LightFieldCasterShadows, ACasterOfAnotherFieldCastsNone)
+{
+  Pipeline p;
+  p.gather->Update();
+  double centre[3], scale = 0.0;
+  ASSERT_TRUE(vtkVirtualLightField::GetAttachedUnitSphere(p.field->GetOutput(), centre, &scale));
+  double casterCentre[3], casterScale = 0.0;
+  ASSERT_TRUE(
+    vtkVirtualLightField::GetAttachedUnitSphere(p.gather->GetOutput(), casterCentre, &casterScale));
+  EXPECT_EQ(scale, casterScale); // the field's output and its gather's carry the same sphere
+  for (int c = 0; c < 3; ++c)
+  {
+    EXPECT_EQ(centre[c], casterCentre[c]);
+  }
+
+  vtkNew<vtkTransform> larger;
+  larger->Scale(1.5, 1.5, 1.5);
+  vtkNew<vtkTransformPolyDataFilter> otherBox;
+  otherBox->SetInputConnection(p.box->GetOutputPort());
+  otherBox->SetTransform(larger);
+  vtkNew<vtkVirtualLightField> otherField;
+  otherField->SetInputConnection(otherBox->GetOutputPort());
+  otherField->SetDirections(33);
+  otherField->SetRaysPerSide(8);
+  otherField->SetIterations(1);
+  otherField->Update();
+  double otherCentre[3], otherScale = 0.0;
+  ASSERT_TRUE(
+    vtkVirtualLightField::GetAttachedUnitSphere(otherField->GetOutput(), otherCentre, &otherScale));
+  EXPECT_NEAR(otherScale, scale / 1.5, 1e-3 * scale);
+
+  vtkNew<vtkLightFieldCasterShadows> shadows;
+  vtkNew<vtkObject> reporter;
+  vtkNew<mesolight_test::MessageCapture> said;
+  said->Watch(reporter);
+  shadows->SetCaster(p.gather->GetOutput());
+  shadows->SetFieldUnitSphere(centre, scale);
+  shadows->Update(reporter);
+  EXPECT_TRUE(shadows->HasShadows()) << shadows->GetProblem(); // its own field
+  EXPECT_EQ(said->AllWarnings(), "");
+
+  shadows->SetFieldUnitSphere(otherCentre, otherScale);
+  shadows->Update(reporter);
+  EXPECT_FALSE(shadows->HasShadows());
+  EXPECT_NE(std::string(shadows->GetProblem()).find("another light field"), std::string::npos)
+    << shadows->GetProblem();
+  EXPECT_TRUE(said->HasWarning("gathered from another light field")) << said->AllWarnings();
+  said->Clear();
+  shadows->Update(reporter);
+  p.gather->GetOutput()->Modified();
+  shadows->Update(reporter);
+  EXPECT_EQ(said->AllWarnings(), ""); // the same cause is not said again
+
+  // A caster gathered in the other field, drawn in the first.
+  vtkNew<vtkLightFieldGatherFilter> otherGather;
+  otherGather->SetInputConnection(p.sphere->GetOutputPort());
+  otherGather->SetLightFieldConnection(otherField->GetOutputPort());
+  otherGather->Update();
+  shadows->SetCaster(otherGather->GetOutput());
+  shadows->SetFieldUnitSphere(centre, scale);
+  shadows->Update(reporter);
+  EXPECT_FALSE(shadows->HasShadows());
+  shadows->SetFieldUnitSphere(otherCentre, otherScale);
+  shadows->Update(reporter);
+  EXPECT_TRUE(shadows->HasShadows()) << shadows->GetProblem(); // in its own field it casts
+
+  // Not known (no field given): not checked, as before.
+  shadows->SetFieldUnitSphere(centre, scale);
+  shadows->Update(reporter);
+  EXPECT_FALSE(shadows->HasShadows());
+  shadows->ClearFieldUnitSphere();
+  shadows->Update(reporter);
+  EXPECT_TRUE(shadows->HasShadows()) << shadows->GetProblem();
 }
 
 TEST(LightFieldGatherFilter, ComputesMissingNormals)

@@ -464,6 +464,13 @@ TEST(LightFieldReliefSurface, AMountedPatchLimitsItsDepthHalfwayToTheWall)
     surface->SetProbesPerSide(2);
     surface->Update();
     EXPECT_TRUE(messages->Errors.empty()) << messages->AllErrors();
+    // The field's unit sphere, what a movable object's shadow on the patch must come from.
+    double centre[3], scale = 0.0, fieldCentre[3], fieldScale = 0.0;
+    EXPECT_TRUE(surface->GetFieldUnitSphere(centre, &scale));
+    EXPECT_TRUE(
+      vtkVirtualLightField::GetAttachedUnitSphere(field->GetOutput(), fieldCentre, &fieldScale));
+    EXPECT_EQ(scale, fieldScale);
+    EXPECT_EQ(centre[2], fieldCentre[2]);
     return surface->GetDepthLimitPlane(origin, normal);
   };
   double origin[3], normal[3];
@@ -477,6 +484,9 @@ TEST(LightFieldReliefSurface, AMountedPatchLimitsItsDepthHalfwayToTheWall)
   ReliefSurfaceFixture named("back");
   EXPECT_FALSE(named.Surface->GetDepthLimitPlane(origin, normal))
     << "a named surface is the wall itself";
+  double centre[3], scale = 0.0;
+  EXPECT_TRUE(named.Surface->GetFieldUnitSphere(centre, &scale));
+  EXPECT_GT(scale, 0.0);
 }
 
 namespace
