@@ -18,6 +18,8 @@
 #include "vtkStringArray.h"
 #include "vtkTriangleFilter.h"
 
+#include <glm/geometric.hpp>
+
 #include <array>
 #include <map>
 #include <sstream>
@@ -35,6 +37,10 @@ constexpr const char* MaterialIdName = "MaterialId";
 constexpr const char* MaterialNamesName = "MaterialNames";
 constexpr const char* SurfaceIdName = "SurfaceId";
 constexpr const char* SurfaceNamesName = "SurfaceNames";
+// The materials by MaterialId, as field data: a Transform filter leaves them alone.
+constexpr const char* MaterialDiffuseName = "MaterialDiffuse";
+constexpr const char* MaterialSpecularName = "MaterialSpecular";
+constexpr const char* MaterialEmissionName = "MaterialEmission";
 
 vtkSmartPointer<vtkFloatArray> ColourArray(const char* name, vtkIdType cells)
 {
@@ -231,11 +237,22 @@ void vtkTriangleSceneConverter::ToPolyData(
   output->GetCellData()->SetActiveScalars(DiffuseName);
   vtkNew<vtkStringArray> names;
   names->SetName(MaterialNamesName);
-  for (const mesolight::SceneMaterial& m : scene.Materials)
+  const auto materials = static_cast<vtkIdType>(scene.Materials.size());
+  auto tableDiffuse = ColourArray(MaterialDiffuseName, materials);
+  auto tableSpecular = ColourArray(MaterialSpecularName, materials);
+  auto tableEmission = ColourArray(MaterialEmissionName, materials);
+  for (vtkIdType k = 0; k < materials; ++k)
   {
+    const mesolight::SceneMaterial& m = scene.Materials[static_cast<std::size_t>(k)];
     names->InsertNextValue(m.Name);
+    tableDiffuse->SetTypedTuple(k, &m.Diffuse[0]);
+    tableSpecular->SetTypedTuple(k, &m.Specular[0]);
+    tableEmission->SetTypedTuple(k, &m.Emission[0]);
   }
   output->GetFieldData()->AddArray(names);
+  output->GetFieldData()->AddArray(tableDiffuse);
+  output->GetFieldData()->AddArray(tableSpecular);
+  output->GetFieldData()->AddArray(tableEmission);
   if (!scene.SurfaceIds.empty())
   {
     vtkNew<vtkIntArray> surfaceIds;
@@ -358,6 +375,28 @@ bool vtkTriangleSceneConverter::ToTriangleScene(vtkPolyData* input, mesolight::T
   }
   vtkStringArray* names =
     vtkStringArray::SafeDownCast(triangles->GetFieldData()->GetAbstractArray(MaterialNamesName));
+  // The material table (ToPolyData's field data) is what the cell arrays were made from. A
+  // Transform filter (ParaView's transforms every 3-component array by default) scales and
+  // rotates the cell arrays as if they were vectors, so with a MaterialId the table's colours
+  // are the scene's, and cells whose arrays differ are said.
+  std::array<vtkDataArray*, 3> table = { nullptr, nullptr, nullptr };
+  if (idArray)
+  {
+    const std::array<const char*, 3> tableNames = { MaterialDiffuseName, MaterialSpecularName,
+      MaterialEmissionName };
+    for (int k = 0; k < 3; ++k)
+    {
+      table[k] =
+        vtkArrayDownCast<vtkDataArray>(triangles->GetFieldData()->GetAbstractArray(tableNames[k]));
+      if (!table[k] || table[k]->GetNumberOfComponents() != 3 ||
+        table[k]->GetNumberOfTuples() != table[0]->GetNumberOfTuples())
+      {
+        table = { nullptr, nullptr, nullptr };
+        break;
+      }
+    }
+  }
+  vtkIdType cellsOffTable = 0;
 
   const mesolight::SceneMaterial grey = []
   {
@@ -386,6 +425,22 @@ bool vtkTriangleSceneConverter::ToTriangleScene(vtkPolyData* input, mesolight::T
       m.Emission = Colour(colours[2], cell);
     }
     std::uint32_t material;
+    const long long tableId =
+      table[0] ? static_cast<long long>(idArray->GetComponent(cell, 0)) : -1;
+    if (tableId >= 0 && tableId < table[0]->GetNumberOfTuples())
+    {
+      const mesolight::SceneMaterial fromCells = m;
+      m.Diffuse = Colour(table[0], tableId);
+      m.Specular = Colour(table[1], tableId);
+      m.Emission = Colour(table[2], tableId);
+      const float tolerance = 1e-5f * (1.0f + glm::length(m.Emission));
+      if ((colours[0] && glm::length(fromCells.Diffuse - m.Diffuse) > tolerance) ||
+        (colours[1] && glm::length(fromCells.Specular - m.Specular) > tolerance) ||
+        (colours[2] && glm::length(fromCells.Emission - m.Emission) > tolerance))
+      {
+        ++cellsOffTable;
+      }
+    }
     if (idArray)
     {
       const auto id = static_cast<long long>(idArray->GetComponent(cell, 0));
@@ -436,6 +491,14 @@ bool vtkTriangleSceneConverter::ToTriangleScene(vtkPolyData* input, mesolight::T
       }
     }
     scene.MaterialIds.push_back(material);
+  }
+  if (cellsOffTable > 0)
+  {
+    warn(std::to_string(cellsOffTable) + " of " + std::to_string(cells) +
+      " cells' Diffuse, Specular or Emission arrays differ from the scene's materials (field "
+      "data MaterialDiffuse, MaterialSpecular, MaterialEmission by MaterialId): the materials "
+      "are used. A Transform filter scales and rotates every 3-component array as a vector "
+      "unless its Transform All Input Vectors is off; the materials stay right either way");
   }
   // Surface names, when the polydata carries them (ToPolyData's): ids outside the names are
   // unnamed.

@@ -12,8 +12,12 @@
  * vtkPolyData: triangles, and per cell the material arrays
  *  - "Diffuse" (3 floats, Kd), "Specular" (3, Ks, perfect specular), "Emission" (3, Ke,
  *    emitted radiance), "MaterialId" (int, index into the scene's materials),
+ *  - field data "MaterialNames" (strings, indexed by MaterialId) and the materials themselves
+ *    by MaterialId, "MaterialDiffuse", "MaterialSpecular", "MaterialEmission" (3 floats each):
+ *    with a MaterialId, ToTriangleScene takes each cell's colours from these, since a Transform
+ *    filter (ParaView's transforms every 3-component array by default) scales and rotates the
+ *    cell arrays as vectors; cells whose arrays differ from their material are warned about,
  *  - point normals and texture coordinates when the scene has them,
- *  - field data "MaterialNames" (strings, indexed by MaterialId),
  *  - when the scene names its surfaces (OBJ g/o, the Cornell box's floor, back, ...): cell
  *    array "SurfaceId" (int, index into field data "SurfaceNames"; -1 unnamed), so that a light
  *    field propagated from the polydata knows them (a relief on "floor").

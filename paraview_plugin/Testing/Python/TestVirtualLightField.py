@@ -13,6 +13,8 @@ not come from the light field:
   (all bounces; the light field's bounces 4, 5, ... are missing, so it is below: measured
   87-99%, the C++ light field 86-94%);
   negative: the direct-only field must fail this check;
+- the box scaled to metres with ParaView's Transform (whose defaults scale the cell colours as
+  vectors) keeps its materials: the floor's radiance is the millimetre box's within 2%;
 - the filter's progress reaches ParaView's progress handler;
 - rendered with the Radiance array (x 4 by a Calculator) as colours (MapScalars off): the left wall is red, the right
   wall green, the floor warm white.
@@ -148,6 +150,26 @@ check(np.all(floor_3 > floor_direct), "more iterations add light (3 iterations >
 wrong, ratio = matches_path_tracer(floor_direct)
 print("negative: direct-only floor vs path traced: ratio %s" % np.round(ratio, 3))
 check(not wrong, "negative: the direct-only field fails the path-tracer check")
+
+# --- the box scaled to metres with ParaView's Transform ------------------------------------------
+# Transform's defaults scale every 3-component cell array as a vector (Diffuse, Emission: Kd and
+# Le x 0.001); the scene's materials travel by MaterialId in field data, so the field is the
+# same. Radiance does not depend on the scene's scale: the floor's must match the box's.
+metres = pvs.Transform(Input=box)
+metres.Transform.Scale = [0.001, 0.001, 0.001]
+metres_field = pvs.MesolightVirtualLightField(Input=metres, Directions=513, RaysPerSide=32,
+                                              Iterations=3)
+area_m, normal_m, centre_m, arrays_m, _ = surfaces(metres_field)
+floor_m = (normal_m[:, 1] > 0.99) & (np.abs(centre_m[:, 1]) < 1e-3)
+floor_metres = (arrays_m["Radiance"][floor_m] * (area_m[floor_m] / area_m[floor_m].sum())[:, None]).sum(axis=0)
+scaled_kd = vtk_to_numpy(servermanager.Fetch(metres).GetCellData().GetArray("Diffuse")).max()
+print("the box in metres (Transform, its defaults): the Transform's Diffuse up to %.5f; the "
+      "field's floor %s against %s in millimetres (ratio %s)"
+      % (scaled_kd, np.round(floor_metres, 4), np.round(floor_3, 4),
+         np.round(floor_metres / floor_3, 4)))
+check(scaled_kd < 0.01, "the Transform scales the cell colours (what made the scene dark)")
+check(np.all(np.abs(floor_metres / floor_3 - 1.0) <= 0.02),
+      "a scene scaled with Transform keeps its materials: the same floor radiance within 2%")
 
 # --- the OBJ scene reader: examples/data/cornell-box.obj is the built-in box written out -------
 reader = pvs.MesolightOBJSceneReader(FileName=os.environ["MESOLIGHT_CORNELL_OBJ"])

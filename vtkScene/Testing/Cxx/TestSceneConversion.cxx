@@ -22,6 +22,8 @@
 #include "vtkPolyData.h"
 #include "vtkSphereSource.h"
 #include "vtkStringArray.h"
+#include "vtkTransform.h"
+#include "vtkTransformFilter.h"
 
 #include <gtest/gtest.h>
 
@@ -81,6 +83,66 @@ TEST(TriangleSceneConverter, CornellBoxRoundTrip)
   TriangleScene unnamed;
   ASSERT_TRUE(converter->ToTriangleScene(sphere->GetOutput(), unnamed));
   EXPECT_TRUE(unnamed.SurfaceIds.empty());
+}
+
+// A scene moved, scaled and rotated with vtkTransformFilter transforming every 3-component array
+// (ParaView's Transform does by default): its cell colours are scaled and rotated like vectors
+// (Kd halved, the lamp's Le turned negative), but its materials come through unchanged from the
+// material table, with one warning naming the cause. Without the table (the negative case) the
+// transformed colours would have been the materials.
+TEST(TriangleSceneConverter, ATransformedSceneKeepsItsMaterials)
+{
+  const TriangleScene box = mesolight::MakeCornellBox();
+  vtkNew<vtkTriangleSceneConverter> converter;
+  vtkNew<MessageCapture> messages;
+  messages->Watch(converter);
+  vtkNew<vtkTransform> transform;
+  transform->Scale(0.5, 0.5, 0.5);
+  transform->RotateY(90.0);
+  vtkNew<vtkTransformFilter> moved;
+  moved->SetInputData(converter->ToPolyData(box));
+  moved->SetTransform(transform);
+  moved->TransformAllInputVectorsOn();
+  moved->Update();
+  vtkPolyData* output = vtkPolyData::SafeDownCast(moved->GetOutput());
+  ASSERT_NE(output, nullptr);
+  double range[2];
+  output->GetCellData()->GetArray("Emission")->GetRange(range, 2);
+  EXPECT_LT(range[0], -1.0) << "the filter turned the lamp's Le as a vector";
+
+  TriangleScene back;
+  ASSERT_TRUE(converter->ToTriangleScene(output, back));
+  ASSERT_EQ(back.Materials.size(), box.Materials.size());
+  for (std::size_t k = 0; k < box.Materials.size(); ++k)
+  {
+    EXPECT_EQ(back.Materials[k].Name, box.Materials[k].Name);
+    EXPECT_EQ(back.Materials[k].Diffuse, box.Materials[k].Diffuse) << box.Materials[k].Name;
+    EXPECT_EQ(back.Materials[k].Emission, box.Materials[k].Emission) << box.Materials[k].Name;
+  }
+  EXPECT_EQ(back.MaterialIds, box.MaterialIds);
+  EXPECT_TRUE(messages->HasWarning("Transform All Input Vectors")) << messages->AllWarnings();
+  EXPECT_TRUE(messages->Errors.empty()) << messages->AllErrors();
+
+  // Negative: the same polydata without the table takes the transformed colours.
+  vtkNew<vtkPolyData> untabled;
+  untabled->ShallowCopy(output);
+  vtkNew<vtkFieldData> fields;
+  fields->DeepCopy(output->GetFieldData());
+  for (const char* name : { "MaterialDiffuse", "MaterialSpecular", "MaterialEmission" })
+  {
+    fields->RemoveArray(name);
+  }
+  untabled->SetFieldData(fields);
+  messages->Clear();
+  TriangleScene transformed;
+  converter->ToTriangleScene(untabled, transformed);
+  EXPECT_FALSE(messages->HasWarning("Transform All Input Vectors"));
+  bool anyDiffers = false;
+  for (std::size_t k = 0; k < transformed.Materials.size() && k < box.Materials.size(); ++k)
+  {
+    anyDiffers = anyDiffers || transformed.Materials[k].Diffuse != box.Materials[k].Diffuse;
+  }
+  EXPECT_TRUE(anyDiffers || !messages->Errors.empty());
 }
 
 TEST(TriangleSceneConverter, ForeignPolyData)
