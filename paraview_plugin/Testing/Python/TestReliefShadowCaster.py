@@ -22,6 +22,7 @@ field's own display only (what a user does to shadow the scene).
 - A display transform (Position) of the field-lit relief is warned about, once.
 - A caster gathered from another field (another scene) shadows neither the scene nor the relief,
   and is warned about; the field's own caster shadows again after it.
+- The panel's Light Field selector offers only fields, the Shadow Caster selectors only gathers.
 - A saved state, loaded in a new session, shadows the relief again.
 """
 import os
@@ -240,6 +241,21 @@ scene.ShadowCaster = gather  # its own field's caster shadows again (the check i
 r_again = ratio(capture("pv-relief-shadow-field-again.png"), unshadowed)
 print("the field's own caster again: %.4f left (before %.4f)" % (r_again, r_relief))
 check(abs(r_again - r_relief) <= 0.005, "the field's own caster shadows the relief again")
+
+# --- the panel's selectors offer what each input takes -------------------------------------------
+# Every output above has executed, so the panel knows its arrays. The relief's Light Field lists
+# the two fields and nothing else (not the box, the sphere, the gathers, the patch); the scene's
+# Shadow Caster lists the two gathers (a field, the sphere, the patch would each give an error).
+fields = t.selector_choices(relief, "LightField")
+casters = t.selector_choices(scene, "ShadowCaster")
+print("Light Field selector: %d choices; Shadow Caster selector: %d choices" % (len(fields),
+                                                                                len(casters)))
+check(fields == {t.choice(field), t.choice(other_field)},
+      "the relief's Light Field selector lists the two fields only")
+check(casters == {t.choice(gather), t.choice(other_gather)},
+      "the scene's Shadow Caster selector lists the two gathers only")
+check(t.selector_choices(relief, "ReliefShadowCaster") == casters,
+      "the relief's own Shadow Caster takes the same outputs")
 
 # --- a state file brings the relief's shadow back ----------------------------------------------
 state = os.path.join(out, "pv-relief-shadow.pvsm")

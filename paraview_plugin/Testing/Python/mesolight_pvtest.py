@@ -173,6 +173,31 @@ def cornell_field_with_object(snapshot, centre, radius):
     return field, moved, pvs.MesolightLightFieldGather(Input=moved, LightField=field)
 
 
+def selector_choices(display, name):
+    """The pipeline outputs the Properties panel's input selector offers for `display`'s input
+    property `name`, as the panel asks (ParaView 5.11, pqInputSelectorWidget::updateComboBox):
+    each output port of each pipeline proxy set on the representation's prototype property, kept
+    when the property's domains hold. A set of (proxy, port)."""
+    pxm = servermanager.ProxyManager()
+    smproxy = display.SMProxy
+    prototype = pxm.GetPrototypeProxy(smproxy.GetXMLGroup(), smproxy.GetXMLName())
+    prop = prototype.GetProperty(name)
+    listed = set()
+    for source in pxm.GetProxiesInGroup("sources").values():
+        source = source.SMProxy if hasattr(source, "SMProxy") else source
+        for port in range(source.GetNumberOfOutputPorts()):
+            prop.SetInputConnection(0, source, port)
+            if prop.IsInDomains():
+                listed.add((source.GetGlobalIDAsString(), port))
+    prop.RemoveAllProxies()
+    return listed
+
+
+def choice(proxy, port=0):
+    """`proxy`'s output `port` as selector_choices lists it."""
+    return (proxy.SMProxy.GetGlobalIDAsString(), port)
+
+
 def radiance_left(with_shadow, without, region, exposure):
     """Linear luminance of `with_shadow` over that of `without` in `region` (frames clamped at
     `exposure`, sRGB): the share of the light a shadow leaves."""
