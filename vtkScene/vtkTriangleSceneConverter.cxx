@@ -37,10 +37,9 @@ constexpr const char* MaterialIdName = "MaterialId";
 constexpr const char* MaterialNamesName = "MaterialNames";
 constexpr const char* SurfaceIdName = "SurfaceId";
 constexpr const char* SurfaceNamesName = "SurfaceNames";
-// The materials by MaterialId, as field data: a Transform filter leaves them alone.
-constexpr const char* MaterialDiffuseName = "MaterialDiffuse";
-constexpr const char* MaterialSpecularName = "MaterialSpecular";
-constexpr const char* MaterialEmissionName = "MaterialEmission";
+// Each cell's Kd, Ks and Ke as one 9-component array: a Transform filter transforms the
+// 3-component arrays as vectors and leaves this one alone.
+constexpr const char* MaterialColoursName = "MaterialColours";
 
 vtkSmartPointer<vtkFloatArray> ColourArray(const char* name, vtkIdType cells)
 {
@@ -221,6 +220,10 @@ void vtkTriangleSceneConverter::ToPolyData(
   vtkNew<vtkIntArray> materialIds;
   materialIds->SetName(MaterialIdName);
   materialIds->SetNumberOfTuples(cells);
+  vtkNew<vtkFloatArray> materialColours;
+  materialColours->SetName(MaterialColoursName);
+  materialColours->SetNumberOfComponents(9);
+  materialColours->SetNumberOfTuples(cells);
   for (vtkIdType t = 0; t < cells; ++t)
   {
     const std::uint32_t id = scene.MaterialIds[static_cast<std::size_t>(t)];
@@ -229,30 +232,23 @@ void vtkTriangleSceneConverter::ToPolyData(
     specular->SetTypedTuple(t, &m.Specular[0]);
     emission->SetTypedTuple(t, &m.Emission[0]);
     materialIds->SetValue(t, static_cast<int>(id));
+    const float all[9] = { m.Diffuse.x, m.Diffuse.y, m.Diffuse.z, m.Specular.x, m.Specular.y,
+      m.Specular.z, m.Emission.x, m.Emission.y, m.Emission.z };
+    materialColours->SetTypedTuple(t, all);
   }
   output->GetCellData()->AddArray(diffuse);
   output->GetCellData()->AddArray(specular);
   output->GetCellData()->AddArray(emission);
   output->GetCellData()->AddArray(materialIds);
+  output->GetCellData()->AddArray(materialColours);
   output->GetCellData()->SetActiveScalars(DiffuseName);
   vtkNew<vtkStringArray> names;
   names->SetName(MaterialNamesName);
-  const auto materials = static_cast<vtkIdType>(scene.Materials.size());
-  auto tableDiffuse = ColourArray(MaterialDiffuseName, materials);
-  auto tableSpecular = ColourArray(MaterialSpecularName, materials);
-  auto tableEmission = ColourArray(MaterialEmissionName, materials);
-  for (vtkIdType k = 0; k < materials; ++k)
+  for (const mesolight::SceneMaterial& m : scene.Materials)
   {
-    const mesolight::SceneMaterial& m = scene.Materials[static_cast<std::size_t>(k)];
     names->InsertNextValue(m.Name);
-    tableDiffuse->SetTypedTuple(k, &m.Diffuse[0]);
-    tableSpecular->SetTypedTuple(k, &m.Specular[0]);
-    tableEmission->SetTypedTuple(k, &m.Emission[0]);
   }
   output->GetFieldData()->AddArray(names);
-  output->GetFieldData()->AddArray(tableDiffuse);
-  output->GetFieldData()->AddArray(tableSpecular);
-  output->GetFieldData()->AddArray(tableEmission);
   if (!scene.SurfaceIds.empty())
   {
     vtkNew<vtkIntArray> surfaceIds;
@@ -375,26 +371,19 @@ bool vtkTriangleSceneConverter::ToTriangleScene(vtkPolyData* input, mesolight::T
   }
   vtkStringArray* names =
     vtkStringArray::SafeDownCast(triangles->GetFieldData()->GetAbstractArray(MaterialNamesName));
-  // The material table (ToPolyData's field data) is what the cell arrays were made from. A
+  // ToPolyData's 9-component MaterialColours is what the 3-component arrays were made from. A
   // Transform filter (ParaView's transforms every 3-component array by default) scales and
-  // rotates the cell arrays as if they were vectors, so with a MaterialId the table's colours
-  // are the scene's, and cells whose arrays differ are said.
-  std::array<vtkDataArray*, 3> table = { nullptr, nullptr, nullptr };
-  if (idArray)
+  // rotates those as if they were vectors and leaves this one alone, which vtkAppendPolyData
+  // appends like any cell array: where it is, it gives the colours, and cells whose 3-component
+  // arrays differ are said.
+  vtkDataArray* materialColours = cellData->GetArray(MaterialColoursName);
+  if (materialColours &&
+    (materialColours->GetNumberOfComponents() != 9 ||
+      materialColours->GetNumberOfTuples() != triangles->GetNumberOfCells()))
   {
-    const std::array<const char*, 3> tableNames = { MaterialDiffuseName, MaterialSpecularName,
-      MaterialEmissionName };
-    for (int k = 0; k < 3; ++k)
-    {
-      table[k] =
-        vtkArrayDownCast<vtkDataArray>(triangles->GetFieldData()->GetAbstractArray(tableNames[k]));
-      if (!table[k] || table[k]->GetNumberOfComponents() != 3 ||
-        table[k]->GetNumberOfTuples() != table[0]->GetNumberOfTuples())
-      {
-        table = { nullptr, nullptr, nullptr };
-        break;
-      }
-    }
+    warn("cell array 'MaterialColours' is not 9 values per cell: the Diffuse, Specular and "
+         "Emission arrays are used");
+    materialColours = nullptr;
   }
   vtkIdType cellsOffTable = 0;
 
@@ -405,13 +394,26 @@ bool vtkTriangleSceneConverter::ToTriangleScene(vtkPolyData* input, mesolight::T
     m.Diffuse = glm::vec3(0.5f);
     return m;
   }();
-  std::map<long long, std::uint32_t> byId;               // MaterialId -> scene material
-  std::map<std::array<float, 9>, std::uint32_t> byValue; // without MaterialId
-  bool warnedDiffering = false;
-  for (vtkIdType t = 0; t < cells; ++t)
+  // A cell's own colours (the grey defaults where an array is missing), as a key and a material.
+  const auto cellMaterial = [&](vtkIdType cell, bool count)
   {
-    const vtkIdType cell = firstPoly + t;
     mesolight::SceneMaterial m = grey;
+    if (materialColours)
+    {
+      double all[9];
+      materialColours->GetTuple(cell, all);
+      m.Diffuse = glm::vec3(glm::dvec3(all[0], all[1], all[2]));
+      m.Specular = glm::vec3(glm::dvec3(all[3], all[4], all[5]));
+      m.Emission = glm::vec3(glm::dvec3(all[6], all[7], all[8]));
+      const float tolerance = 1e-5f * (1.0f + glm::length(m.Emission));
+      if ((colours[0] && glm::length(Colour(colours[0], cell) - m.Diffuse) > tolerance) ||
+        (colours[1] && glm::length(Colour(colours[1], cell) - m.Specular) > tolerance) ||
+        (colours[2] && glm::length(Colour(colours[2], cell) - m.Emission) > tolerance))
+      {
+        cellsOffTable += count ? 1 : 0;
+      }
+      return m;
+    }
     if (colours[0])
     {
       m.Diffuse = Colour(colours[0], cell);
@@ -424,53 +426,78 @@ bool vtkTriangleSceneConverter::ToTriangleScene(vtkPolyData* input, mesolight::T
     {
       m.Emission = Colour(colours[2], cell);
     }
-    std::uint32_t material;
-    const long long tableId =
-      table[0] ? static_cast<long long>(idArray->GetComponent(cell, 0)) : -1;
-    if (tableId >= 0 && tableId < table[0]->GetNumberOfTuples())
+    return m;
+  };
+  const auto keyOf = [](const mesolight::SceneMaterial& m)
+  {
+    return std::array<float, 9>{ m.Diffuse.x, m.Diffuse.y, m.Diffuse.z, m.Specular.x, m.Specular.y,
+      m.Specular.z, m.Emission.x, m.Emission.y, m.Emission.z };
+  };
+  // The cells of one MaterialId agree on their colours in a scene as ToPolyData wrote it, also
+  // after a Transform (every cell of a material transformed alike). Where they do not, ids of
+  // different scenes collide (two scenes appended: vtkAppendPolyData keeps the first one's field
+  // data, so its table would colour the second's cells): such an id's cells keep their own
+  // colours, one material per colour.
+  std::map<long long, std::pair<std::array<float, 9>, bool>> idColours; // first cell's, collided
+  if (idArray)
+  {
+    for (vtkIdType t = 0; t < cells; ++t)
     {
-      const mesolight::SceneMaterial fromCells = m;
-      m.Diffuse = Colour(table[0], tableId);
-      m.Specular = Colour(table[1], tableId);
-      m.Emission = Colour(table[2], tableId);
-      const float tolerance = 1e-5f * (1.0f + glm::length(m.Emission));
-      if ((colours[0] && glm::length(fromCells.Diffuse - m.Diffuse) > tolerance) ||
-        (colours[1] && glm::length(fromCells.Specular - m.Specular) > tolerance) ||
-        (colours[2] && glm::length(fromCells.Emission - m.Emission) > tolerance))
+      const vtkIdType cell = firstPoly + t;
+      const auto id = static_cast<long long>(idArray->GetComponent(cell, 0));
+      const std::array<float, 9> key = keyOf(cellMaterial(cell, false));
+      const auto found = idColours.find(id);
+      if (found == idColours.end())
       {
-        ++cellsOffTable;
+        idColours.emplace(id, std::make_pair(key, false));
+      }
+      else if (found->second.first != key)
+      {
+        found->second.second = true;
       }
     }
+  }
+  // (MaterialId, the cell's colours for a collided id) -> scene material.
+  std::map<std::pair<long long, std::array<float, 9>>, std::uint32_t> byId;
+  std::map<long long, int> groupsOfId;
+  std::map<std::array<float, 9>, std::uint32_t> byValue; // without MaterialId
+  std::string collided;
+  for (vtkIdType t = 0; t < cells; ++t)
+  {
+    const vtkIdType cell = firstPoly + t;
+    mesolight::SceneMaterial m = cellMaterial(cell, true);
+    std::uint32_t material;
     if (idArray)
     {
       const auto id = static_cast<long long>(idArray->GetComponent(cell, 0));
-      const auto found = byId.find(id);
+      const bool collides = idColours[id].second;
+      const auto key = std::make_pair(id, collides ? keyOf(m) : std::array<float, 9>{});
+      const auto found = byId.find(key);
       if (found == byId.end())
       {
         m.Name = (names && id >= 0 && id < names->GetNumberOfValues())
           ? names->GetValue(static_cast<vtkIdType>(id))
           : "material-" + std::to_string(id);
+        const int group = ++groupsOfId[id];
+        if (group > 1)
+        {
+          m.Name += "-" + std::to_string(group);
+          if (group == 2)
+          {
+            collided += (collided.empty() ? "" : ", ") + std::to_string(id);
+          }
+        }
         material = scene.AddMaterial(m);
-        byId.emplace(id, material);
+        byId.emplace(key, material);
       }
       else
       {
         material = found->second;
-        const mesolight::SceneMaterial& first = scene.Materials[material];
-        if (!warnedDiffering &&
-          (first.Diffuse != m.Diffuse || first.Specular != m.Specular ||
-            first.Emission != m.Emission))
-        {
-          warn("cells with MaterialId " + std::to_string(id) +
-            " have different colours: the first cell's are used");
-          warnedDiffering = true;
-        }
       }
     }
     else
     {
-      const std::array<float, 9> key = { m.Diffuse.x, m.Diffuse.y, m.Diffuse.z, m.Specular.x,
-        m.Specular.y, m.Specular.z, m.Emission.x, m.Emission.y, m.Emission.z };
+      const std::array<float, 9> key = keyOf(m);
       const auto found = byValue.find(key);
       if (found == byValue.end())
       {
@@ -492,13 +519,19 @@ bool vtkTriangleSceneConverter::ToTriangleScene(vtkPolyData* input, mesolight::T
     }
     scene.MaterialIds.push_back(material);
   }
+  if (!collided.empty())
+  {
+    warn("cells with MaterialId " + collided +
+      " have different colours (scenes appended, whose material ids collide?): each colour is "
+      "a material of its own");
+  }
   if (cellsOffTable > 0)
   {
     warn(std::to_string(cellsOffTable) + " of " + std::to_string(cells) +
-      " cells' Diffuse, Specular or Emission arrays differ from the scene's materials (field "
-      "data MaterialDiffuse, MaterialSpecular, MaterialEmission by MaterialId): the materials "
-      "are used. A Transform filter scales and rotates every 3-component array as a vector "
-      "unless its Transform All Input Vectors is off; the materials stay right either way");
+      " cells' Diffuse, Specular or Emission arrays differ from their MaterialColours: "
+      "MaterialColours are used. A Transform filter scales and rotates every 3-component array "
+      "as a vector unless its Transform All Input Vectors is off; the materials stay right "
+      "either way");
   }
   // Surface names, when the polydata carries them (ToPolyData's): ids outside the names are
   // unnamed.

@@ -12,11 +12,11 @@
  * vtkPolyData: triangles, and per cell the material arrays
  *  - "Diffuse" (3 floats, Kd), "Specular" (3, Ks, perfect specular), "Emission" (3, Ke,
  *    emitted radiance), "MaterialId" (int, index into the scene's materials),
- *  - field data "MaterialNames" (strings, indexed by MaterialId) and the materials themselves
- *    by MaterialId, "MaterialDiffuse", "MaterialSpecular", "MaterialEmission" (3 floats each):
- *    with a MaterialId, ToTriangleScene takes each cell's colours from these, since a Transform
- *    filter (ParaView's transforms every 3-component array by default) scales and rotates the
- *    cell arrays as vectors; cells whose arrays differ from their material are warned about,
+ *  - "MaterialColours" (9 floats: Kd, Ks, Ke): the same colours in one array, which a Transform
+ *    filter leaves alone (ParaView's transforms every 3-component array as a vector by default,
+ *    scaling and rotating Kd and Ke); ToTriangleScene takes a cell's colours from it where it is
+ *    and warns about cells whose 3-component arrays differ,
+ *  - field data "MaterialNames" (strings, indexed by MaterialId),
  *  - point normals and texture coordinates when the scene has them,
  *  - when the scene names its surfaces (OBJ g/o, the Cornell box's floor, back, ...): cell
  *    array "SurfaceId" (int, index into field data "SurfaceNames"; -1 unnamed), so that a light
@@ -26,9 +26,10 @@
  * how many), vertices and lines are dropped (a warning), missing material arrays get the default
  * grey material (Kd 0.5, no specular, no emission) with a warning, a 1-component array is taken as
  * grey. Cells with equal MaterialId share one material (without MaterialId, cells with equal
- * Diffuse/Specular/Emission do). Errors (no triangles, non-finite points, arrays of the wrong
- * size, negative colours) go through vtkErrorMacro and return false; warnings through
- * vtkWarningMacro (observe vtkCommand::ErrorEvent / WarningEvent to catch them).
+ * Diffuse/Specular/Emission do), unless their colours differ: scenes appended, whose ids collide,
+ * keep each colour as a material of its own (a warning). Errors (no triangles, non-finite points,
+ * arrays of the wrong size, negative colours) go through vtkErrorMacro and return false; warnings
+ * through vtkWarningMacro (observe vtkCommand::ErrorEvent / WarningEvent to catch them).
  *
  * For code built in this tree (the ray tracer, the light field, the tool, the tests): the header
  * is not installed, since its signatures name the core types, whose headers are not either.

@@ -153,8 +153,9 @@ check(not wrong, "negative: the direct-only field fails the path-tracer check")
 
 # --- the box scaled to metres with ParaView's Transform ------------------------------------------
 # Transform's defaults scale every 3-component cell array as a vector (Diffuse, Emission: Kd and
-# Le x 0.001); the scene's materials travel by MaterialId in field data, so the field is the
-# same. Radiance does not depend on the scene's scale: the floor's must match the box's.
+# Le x 0.001); the scene's colours also travel as one 9-component cell array (MaterialColours)
+# that Transform leaves alone, so the field is the same. Radiance does not depend on the scene's
+# scale: the floor's must match the box's.
 metres = pvs.Transform(Input=box)
 metres.Transform.Scale = [0.001, 0.001, 0.001]
 metres_field = pvs.MesolightVirtualLightField(Input=metres, Directions=513, RaysPerSide=32,

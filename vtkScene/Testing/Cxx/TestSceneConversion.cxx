@@ -9,6 +9,7 @@
 #include "vtkOBJSceneReader.h"
 #include "vtkTriangleSceneConverter.h"
 
+#include "vtkAppendPolyData.h"
 #include "vtkCellData.h"
 #include "vtkCommand.h"
 #include "vtkExecutive.h"
@@ -88,8 +89,8 @@ TEST(TriangleSceneConverter, CornellBoxRoundTrip)
 // A scene moved, scaled and rotated with vtkTransformFilter transforming every 3-component array
 // (ParaView's Transform does by default): its cell colours are scaled and rotated like vectors
 // (Kd halved, the lamp's Le turned negative), but its materials come through unchanged from the
-// material table, with one warning naming the cause. Without the table (the negative case) the
-// transformed colours would have been the materials.
+// 9-component MaterialColours, with one warning naming the cause. Without it (the negative case)
+// the transformed colours would have been the materials.
 TEST(TriangleSceneConverter, ATransformedSceneKeepsItsMaterials)
 {
   const TriangleScene box = mesolight::MakeCornellBox();
@@ -123,16 +124,10 @@ TEST(TriangleSceneConverter, ATransformedSceneKeepsItsMaterials)
   EXPECT_TRUE(messages->HasWarning("Transform All Input Vectors")) << messages->AllWarnings();
   EXPECT_TRUE(messages->Errors.empty()) << messages->AllErrors();
 
-  // Negative: the same polydata without the table takes the transformed colours.
+  // Negative: the same polydata without MaterialColours takes the transformed colours.
   vtkNew<vtkPolyData> untabled;
-  untabled->ShallowCopy(output);
-  vtkNew<vtkFieldData> fields;
-  fields->DeepCopy(output->GetFieldData());
-  for (const char* name : { "MaterialDiffuse", "MaterialSpecular", "MaterialEmission" })
-  {
-    fields->RemoveArray(name);
-  }
-  untabled->SetFieldData(fields);
+  untabled->DeepCopy(output);
+  untabled->GetCellData()->RemoveArray("MaterialColours");
   messages->Clear();
   TriangleScene transformed;
   converter->ToTriangleScene(untabled, transformed);
@@ -143,6 +138,48 @@ TEST(TriangleSceneConverter, ATransformedSceneKeepsItsMaterials)
     anyDiffers = anyDiffers || transformed.Materials[k].Diffuse != box.Materials[k].Diffuse;
   }
   EXPECT_TRUE(anyDiffers || !messages->Errors.empty());
+}
+
+// Two scenes appended, the first scaled by a Transform first (all vectors): their MaterialIds
+// collide, and the cells of a collided id keep their own colours (MaterialColours, untouched by
+// the Transform), one material per colour, with one warning. Before, every cell of an id took
+// the first cell's colours.
+TEST(TriangleSceneConverter, AppendedScenesKeepEachOnesMaterials)
+{
+  const TriangleScene box = mesolight::MakeCornellBox();
+  TriangleScene repainted = box; // the same ids and names, other colours
+  for (mesolight::SceneMaterial& m : repainted.Materials)
+  {
+    m.Diffuse = glm::vec3(0.25f, 0.5f, 0.125f) * (m.Emission.x > 0.0f ? 0.0f : 1.0f);
+  }
+  vtkNew<vtkTriangleSceneConverter> converter;
+  vtkNew<MessageCapture> messages;
+  messages->Watch(converter);
+  vtkNew<vtkTransform> transform;
+  transform->Scale(2.0, 2.0, 2.0);
+  vtkNew<vtkTransformFilter> moved;
+  moved->SetInputData(converter->ToPolyData(box));
+  moved->SetTransform(transform);
+  moved->TransformAllInputVectorsOn();
+  vtkNew<vtkAppendPolyData> both;
+  both->AddInputConnection(moved->GetOutputPort());
+  both->AddInputData(converter->ToPolyData(repainted));
+  both->Update();
+
+  TriangleScene back;
+  ASSERT_TRUE(converter->ToTriangleScene(both->GetOutput(), back));
+  ASSERT_EQ(back.TriangleCount(), 2 * box.TriangleCount());
+  std::size_t wrong = 0;
+  for (std::size_t t = 0; t < box.TriangleCount(); ++t)
+  {
+    const std::size_t second = box.TriangleCount() + t;
+    wrong += back.MaterialOf(t).Diffuse != box.MaterialOf(t).Diffuse ? 1 : 0;
+    wrong += back.MaterialOf(second).Diffuse != repainted.MaterialOf(t).Diffuse ? 1 : 0;
+    wrong += back.MaterialOf(t).Emission != box.MaterialOf(t).Emission ? 1 : 0;
+  }
+  EXPECT_EQ(wrong, 0u) << "of " << 3 * box.TriangleCount() << " colours compared";
+  EXPECT_TRUE(messages->HasWarning("material ids collide")) << messages->AllWarnings();
+  EXPECT_TRUE(messages->Errors.empty()) << messages->AllErrors();
 }
 
 TEST(TriangleSceneConverter, ForeignPolyData)
