@@ -385,7 +385,7 @@ bool vtkTriangleSceneConverter::ToTriangleScene(vtkPolyData* input, mesolight::T
          "Emission arrays are used");
     materialColours = nullptr;
   }
-  vtkIdType cellsOffTable = 0;
+  vtkIdType cellsDisagreeing = 0;
 
   const mesolight::SceneMaterial grey = []
   {
@@ -410,7 +410,7 @@ bool vtkTriangleSceneConverter::ToTriangleScene(vtkPolyData* input, mesolight::T
         (colours[1] && glm::length(Colour(colours[1], cell) - m.Specular) > tolerance) ||
         (colours[2] && glm::length(Colour(colours[2], cell) - m.Emission) > tolerance))
       {
-        cellsOffTable += count ? 1 : 0;
+        cellsDisagreeing += count ? 1 : 0;
       }
       return m;
     }
@@ -433,11 +433,9 @@ bool vtkTriangleSceneConverter::ToTriangleScene(vtkPolyData* input, mesolight::T
     return std::array<float, 9>{ m.Diffuse.x, m.Diffuse.y, m.Diffuse.z, m.Specular.x, m.Specular.y,
       m.Specular.z, m.Emission.x, m.Emission.y, m.Emission.z };
   };
-  // The cells of one MaterialId agree on their colours in a scene as ToPolyData wrote it, also
-  // after a Transform (every cell of a material transformed alike). Where they do not, ids of
-  // different scenes collide (two scenes appended: vtkAppendPolyData keeps the first one's field
-  // data, so its table would colour the second's cells): such an id's cells keep their own
-  // colours, one material per colour.
+  // The cells of one MaterialId agree on their colours in a scene as ToPolyData wrote it. Where
+  // they do not, ids of different scenes collide (two scenes appended, each numbering its
+  // materials from 0): such an id's cells keep their own colours, one material per colour.
   std::map<long long, std::pair<std::array<float, 9>, bool>> idColours; // first cell's, collided
   if (idArray)
   {
@@ -525,9 +523,9 @@ bool vtkTriangleSceneConverter::ToTriangleScene(vtkPolyData* input, mesolight::T
       " have different colours (scenes appended, whose material ids collide?): each colour is "
       "a material of its own");
   }
-  if (cellsOffTable > 0)
+  if (cellsDisagreeing > 0)
   {
-    warn(std::to_string(cellsOffTable) + " of " + std::to_string(cells) +
+    warn(std::to_string(cellsDisagreeing) + " of " + std::to_string(cells) +
       " cells' Diffuse, Specular or Emission arrays differ from their MaterialColours: "
       "MaterialColours are used. A Transform filter scales and rotates every 3-component array "
       "as a vector unless its Transform All Input Vectors is off; the materials stay right "
