@@ -4,6 +4,7 @@
 #include "vtkAlgorithm.h"
 #include "vtkAppendPolyData.h"
 #include "vtkCompositeLightFieldMapper.h"
+#include "vtkDataObjectLeaves.h"
 #include "vtkFieldData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
@@ -13,6 +14,7 @@
 #include "vtkObjectFactory.h"
 #include "vtkPolyData.h"
 
+#include <algorithm>
 #include <vector>
 
 vtkStandardNewMacro(vtkLightFieldRepresentation);
@@ -26,6 +28,10 @@ vtkLightFieldRepresentation::vtkLightFieldRepresentation()
   this->LODMapper->Delete();
   this->Mapper = vtkCompositeLightFieldMapper::New();
   this->LODMapper = vtkCompositeLightFieldMapper::New();
+  // A gathered surface moved after the gather is said here, once per new data (RequestData): the
+  // level-of-detail copy's points are moved by its decimation, not by the user.
+  static_cast<vtkCompositeLightFieldMapper*>(this->Mapper)->CheckGatheredPositionsOff();
+  static_cast<vtkCompositeLightFieldMapper*>(this->LODMapper)->CheckGatheredPositionsOff();
   this->SetupDefaults();
   this->SetNumberOfInputPorts(2); // 1: the Shadow Caster
 }
@@ -52,6 +58,20 @@ int vtkLightFieldRepresentation::RequestData(
   if (!this->Superclass::RequestData(request, inputVector, outputVector))
   {
     return 0;
+  }
+  double moved = 0.0;
+  for (vtkDataObject* block :
+    mesolight::DataObjectLeaves(vtkDataObject::GetData(inputVector[0], 0)))
+  {
+    moved = std::max(
+      moved, vtkCompositeLightFieldMapper::MovedSinceGathered(vtkPolyData::SafeDownCast(block)));
+  }
+  if (moved > 0.0)
+  {
+    vtkWarningMacro("The surface was moved after Light Field Gather (a point by up to "
+      << moved
+      << "): its light was gathered where it was, and a Transform turns its Radiance as a "
+         "vector. Move it before Light Field Gather (Transform, then the gather).");
   }
   vtkPolyData* piece =
     this->GetNumberOfInputConnections(1) > 0 ? vtkPolyData::GetData(inputVector[1], 0) : nullptr;

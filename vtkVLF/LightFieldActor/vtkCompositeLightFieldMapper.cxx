@@ -31,7 +31,9 @@
 #include "ObjectShadows.h"
 #include "WalkthroughImage.h"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <string>
 #include <vector>
@@ -350,6 +352,25 @@ void vtkCompositeLightFieldMapper::Render(vtkRenderer* ren, vtkActor* actor)
     }
   }
   const bool vertexRadiance = !this->CurrentAtlas && gatheredLogAverage >= 0.0;
+  if (vertexRadiance && this->CheckGatheredPositions && input &&
+    input->GetMTime() != this->MovedCheckTime)
+  {
+    // A Transform after Light Field Gather moves the surface away from where its light was
+    // gathered and turns its Radiance as a vector: said once per change of the input.
+    this->MovedCheckTime = input->GetMTime();
+    double moved = 0.0;
+    for (vtkDataObject* block : blocks)
+    {
+      moved = std::max(moved, MovedSinceGathered(vtkPolyData::SafeDownCast(block)));
+    }
+    if (moved > 0.0)
+    {
+      vtkWarningMacro("The gathered surface was moved after Light Field Gather (a point by up to "
+        << moved
+        << "): its light was gathered where it was, and a Transform turns its Radiance "
+           "as a vector. Move it before Light Field Gather (Transform, then the gather).");
+    }
+  }
   if (vertexRadiance != this->VertexRadiance)
   {
     this->VertexRadiance = vertexRadiance;
@@ -401,6 +422,44 @@ void vtkCompositeLightFieldMapper::Render(vtkRenderer* ren, vtkActor* actor)
     this->WarnedNoAtlas = true;
   }
   this->Superclass::Render(ren, actor);
+}
+
+//------------------------------------------------------------------------------
+double vtkCompositeLightFieldMapper::MovedSinceGathered(vtkPolyData* surface)
+{
+  vtkDataArray* at = surface
+    ? surface->GetPointData()->GetArray(vtkLightFieldGatherFilter::GetGatheredAtName())
+    : nullptr;
+  if (!at || at->GetNumberOfComponents() != 4 ||
+    at->GetNumberOfTuples() != surface->GetNumberOfPoints() || surface->GetNumberOfPoints() == 0)
+  {
+    return 0.0;
+  }
+  // A millionth of the surface's size, or a few float steps of its coordinates where they are
+  // large (the positions are kept as floats), is no move; filters that interpolate point data
+  // (Clip, Slice) interpolate the positions alike and move nothing.
+  double bounds[6];
+  surface->GetBounds(bounds);
+  double largest = 0.0;
+  for (const double b : bounds)
+  {
+    largest = std::max(largest, std::abs(b));
+  }
+  const double tolerance =
+    std::max(1e-6 * surface->GetLength(), 8.0 * std::numeric_limits<float>::epsilon() * largest);
+  double worst = 0.0;
+  for (vtkIdType i = 0; i < surface->GetNumberOfPoints(); ++i)
+  {
+    double p[3], gathered[4];
+    surface->GetPoint(i, p);
+    at->GetTuple(i, gathered);
+    const double w = gathered[3] != 0.0 ? gathered[3] : 1.0;
+    const double d = std::sqrt((p[0] - gathered[0] / w) * (p[0] - gathered[0] / w) +
+      (p[1] - gathered[1] / w) * (p[1] - gathered[1] / w) +
+      (p[2] - gathered[2] / w) * (p[2] - gathered[2] / w));
+    worst = std::max(worst, d);
+  }
+  return worst > tolerance ? worst : 0.0;
 }
 
 //------------------------------------------------------------------------------
@@ -470,5 +529,6 @@ void vtkCompositeLightFieldMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "VertexRadiance: " << this->VertexRadiance << "\n";
   os << indent << "ShadowMode: " << this->ShadowMode << "\n";
   os << indent << "ShadowMapResolution: " << this->ShadowMapResolution << "\n";
+  os << indent << "CheckGatheredPositions: " << this->CheckGatheredPositions << "\n";
   os << indent << "ShadowCaster: " << (this->GetShadowCaster() ? "set" : "(none)") << "\n";
 }

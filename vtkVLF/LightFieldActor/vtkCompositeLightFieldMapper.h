@@ -75,6 +75,25 @@ public:
   /** The exposure the last render used (Exposure, times the automatic scale when on). */
   vtkGetMacro(EffectiveExposure, double);
 
+  ///@{
+  /**
+   * Warn when a gathered surface (Light Field Gather's output) was moved after the gather: its
+   * points no longer where its light was gathered (vtkLightFieldGatherFilter's
+   * GetGatheredAtName() array). Default on. ParaView's Light Field representation turns it off
+   * in its mappers and says it itself (its level-of-detail mapper draws a decimated copy, whose
+   * points the decimation moves).
+   */
+  vtkSetMacro(CheckGatheredPositions, bool);
+  vtkGetMacro(CheckGatheredPositions, bool);
+  vtkBooleanMacro(CheckGatheredPositions, bool);
+  ///@}
+
+  /**
+   * The largest distance of a gathered surface's point from where Light Field Gather shaded it
+   * (its GetGatheredAtName() array); 0 when none moved, or the surface carries no such array.
+   */
+  static double MovedSinceGathered(vtkPolyData* surface);
+
   /**
    * Log-average luminance (Rec. 709 weights) of the atlas' texels with positive luminance: the
    * automatic exposure is 0.18 / this. 0 when there are none.
@@ -149,6 +168,8 @@ protected:
   vtkFloatArray* UploadedAtlas = nullptr; // identity and time of what AtlasTexture holds
   vtkMTimeType UploadedTime = 0;
   bool WarnedNoAtlas = false;
+  bool CheckGatheredPositions = true;
+  vtkMTimeType MovedCheckTime = 0; // the input's time when it was last checked for a move
 
   friend class vtkCompositeLightFieldMapperHelper;
 

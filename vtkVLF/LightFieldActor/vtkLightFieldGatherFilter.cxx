@@ -228,6 +228,25 @@ void AttachShadowCasterData(const mesolight::vlf::LightField& field, vtkPolyData
   vtkVirtualLightField::AttachUnitSphere(output, unitCentre, field.NormalizationScale());
   output->GetFieldData()->AddArray(logAverage);
 }
+
+// Each point's position as gathered, as x, y, z, 1 (see the header: not 3 components, so that a
+// Transform after the gather leaves it alone).
+void AttachGatheredAt(vtkPolyData* output)
+{
+  vtkNew<vtkFloatArray> at;
+  at->SetName(vtkLightFieldGatherFilter::GetGatheredAtName());
+  at->SetNumberOfComponents(4);
+  at->SetNumberOfTuples(output->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < output->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    output->GetPoint(i, p);
+    const float tuple[4] = { static_cast<float>(p[0]), static_cast<float>(p[1]),
+      static_cast<float>(p[2]), 1.0f };
+    at->SetTypedTuple(i, tuple);
+  }
+  output->GetPointData()->AddArray(at);
+}
 } // namespace
 
 //------------------------------------------------------------------------------
@@ -420,6 +439,7 @@ int vtkLightFieldGatherFilter::RequestData(
     }
     output->GetPointData()->AddArray(irradiance);
     output->GetPointData()->AddArray(radiance);
+    AttachGatheredAt(output);
     // No active scalars: ParaView shows the output as Light Field (its radiance exposed and
     // tone-mapped like the scene) rather than through a colour map.
     this->OutsidePoints = static_cast<vtkIdType>(shaded.OutsidePoints);
@@ -553,6 +573,7 @@ int vtkLightFieldGatherFilter::GatherDistributed(
       }
       output->GetPointData()->AddArray(irradiance);
       output->GetPointData()->AddArray(radiance);
+      AttachGatheredAt(output);
     }
     if (this->OutsidePoints > 0)
     {

@@ -36,6 +36,11 @@
  * shadow falls (GetAmbientName(), RGB per unit reflectance, mesolight::vlf::EstimateShadowIndirect:
  * the shadows' ObjectShadows::SetAmbient).
  *
+ * Each point's position when gathered goes with it (point array GetGatheredAtName(): x, y, z, 1;
+ * four components so that a Transform after the gather, which moves the points and transforms
+ * every 3-component array as a vector, Radiance included, leaves it alone):
+ * vtkCompositeLightFieldMapper warns when the surface it draws was moved after the gather.
+ *
  * Points outside the field's bounding sphere are gathered on its boundary (a warning gives how
  * many); GetOutsidePoints() tells after an update. Progress goes through UpdateProgress;
  * AbortExecute stops between batches of points (the output is then empty).
@@ -112,6 +117,7 @@ public:
   static const char* GetToUnitSphereName() { return vtkVirtualLightField::GetToUnitSphereName(); }
   static const char* GetLogAverageName() { return "LightFieldLogAverage"; }
   static const char* GetAmbientName() { return "LightFieldAmbient"; }
+  static const char* GetGatheredAtName() { return "LightFieldGatheredAt"; }
   ///@}
 
 protected:

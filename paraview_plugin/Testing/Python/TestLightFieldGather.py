@@ -9,7 +9,9 @@
 - Radiance = Reflectance / pi x Irradiance;
 - a sphere inside the Cornell box's field: finite, the top (facing the light) brighter than the
   bottom, and the side facing the red wall (+x) redder than the side facing the green one;
-- a Light Field input that is not a light field is an error message, not a crash.
+- a Light Field input that is not a light field is an error message, not a crash;
+- drawn as Light Field, the sphere moved by a Transform after the gather is warned about (its
+  light was gathered where it was); the gather and a Clip after it are not.
 """
 import math
 import os
@@ -112,10 +114,53 @@ if e is not None and normals is not None:
     check(ratio_red > 1.2 * ratio_green, "Cornell sphere: colour bleeding, the side facing the "
           "red wall is redder (R/G %.3f vs %.3f)" % (ratio_red, ratio_green))
 
+# --- Moved after the gather: said when drawn ------------------------------------------------------
+# A Transform after the gather moves the sphere away from where its light was gathered and turns
+# its Radiance as a vector (rotated about y, its blue channel becomes minus its red); drawn as
+# Light Field it is warned about. The gather itself, and a Clip after it (its cut points
+# interpolated, the gathered positions alike), are not.
+from vtkmodules.util.misc import calldata_type  # noqa: E402
+from vtkmodules.vtkCommonCore import (VTK_STRING, vtkCommand, vtkOutputWindow,  # noqa: E402
+                                      vtkStringOutputWindow)
+
+view = pvs.CreateView("RenderView")
+view.ViewSize = [200, 200]
+
+
+def warnings_drawing(source):
+    said = []
+
+    @calldata_type(VTK_STRING)
+    def on_warning(caller, event, text):
+        said.append(text)
+
+    window = vtkOutputWindow.GetInstance()
+    tag = window.AddObserver(vtkCommand.WarningEvent, on_warning)
+    shown = pvs.Show(source, view)
+    shown.SetRepresentationType("Light Field")
+    pvs.ResetCamera(view)  # framed, so that it is drawn (an object out of view is culled)
+    pvs.SaveScreenshot(os.path.join(t.output_dir(), "pv-gather-moved.png"), view)
+    window.RemoveObserver(tag)
+    pvs.Hide(source, view)
+    return sum("moved after Light Field Gather" in w for w in said), shown
+
+
+turned = pvs.Transform(Input=gather)
+turned.Transform.Rotate = [0.0, 90.0, 0.0]
+clipped = pvs.Clip(Input=gather, ClipType="Plane")
+clipped.ClipType.Origin = [200.0, 300.0, 150.0]
+clipped.Crinkleclip = 0
+clipped_poly = pvs.ExtractSurface(Input=clipped)
+for name, source, expected in (("the gather", gather, 0), ("a Clip after it", clipped_poly, 0),
+                               ("a Transform after it", turned, 1)):
+    count, shown = warnings_drawing(source)
+    print("drawn as Light Field, %s: %d warning(s) of a move" % (name, count))
+    check(count == expected, "%s: %d warning(s) of a move after the gather (%d expected)"
+          % (name, count, expected))
+
 # --- Bad input ------------------------------------------------------------------------------
 plane = pvs.Plane()
 bad = pvs.MesolightLightFieldGather(Input=ball, LightField=plane)
-from vtkmodules.vtkCommonCore import vtkOutputWindow, vtkStringOutputWindow  # noqa: E402
 messages = vtkStringOutputWindow()
 previous = vtkOutputWindow.GetInstance()
 vtkOutputWindow.SetInstance(messages)

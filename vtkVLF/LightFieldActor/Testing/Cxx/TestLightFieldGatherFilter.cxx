@@ -7,7 +7,9 @@
 
 #include "vtkCallbackCommand.h"
 #include "vtkCellData.h"
+#include "vtkClipPolyData.h"
 #include "vtkCommand.h"
+#include "vtkCompositeLightFieldMapper.h"
 #include "vtkCornellBoxSource.h"
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
@@ -15,10 +17,12 @@
 #include "vtkIdList.h"
 #include "vtkLightFieldCasterShadows.h"
 #include "vtkNew.h"
+#include "vtkPlane.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkSphereSource.h"
 #include "vtkTransform.h"
+#include "vtkTransformFilter.h"
 #include "vtkTransformPolyDataFilter.h"
 #include "vtkVirtualLightField.h"
 
@@ -329,6 +333,36 @@ TEST(LightFieldCasterShadows, ACasterOfAnotherFieldCastsNone)
   shadows->ClearFieldUnitSphere();
   shadows->Update(reporter);
   EXPECT_TRUE(shadows->HasShadows()) << shadows->GetProblem();
+}
+
+// Each point's place when gathered goes with it: a Transform after the gather (which also turns
+// Radiance as a vector) shows as a move, a clip (cut points interpolated) does not.
+TEST(LightFieldGatherFilter, KeepsWhereEachPointWasGathered)
+{
+  Pipeline p;
+  p.gather->Update();
+  EXPECT_EQ(vtkCompositeLightFieldMapper::MovedSinceGathered(p.gather->GetOutput()), 0.0);
+
+  vtkNew<vtkTransform> turn;
+  turn->RotateY(90.0);
+  vtkNew<vtkTransformFilter> turned;
+  turned->SetInputConnection(p.gather->GetOutputPort());
+  turned->SetTransform(turn);
+  turned->TransformAllInputVectorsOn();
+  turned->Update();
+  EXPECT_GT(vtkCompositeLightFieldMapper::MovedSinceGathered(
+              vtkPolyData::SafeDownCast(turned->GetOutput())),
+    100.0); // the sphere's centre (300, 250, 200) turns to (200, 250, -300)
+
+  vtkNew<vtkPlane> plane;
+  plane->SetOrigin(300.0, 250.0, 200.0);
+  plane->SetNormal(1.0, 0.3, 0.0);
+  vtkNew<vtkClipPolyData> clipped;
+  clipped->SetInputConnection(p.gather->GetOutputPort());
+  clipped->SetClipFunction(plane);
+  clipped->Update();
+  ASSERT_GT(clipped->GetOutput()->GetNumberOfPoints(), 0);
+  EXPECT_EQ(vtkCompositeLightFieldMapper::MovedSinceGathered(clipped->GetOutput()), 0.0);
 }
 
 TEST(LightFieldGatherFilter, ComputesMissingNormals)
