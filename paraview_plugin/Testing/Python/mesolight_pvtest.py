@@ -177,7 +177,7 @@ def selector_choices(display, name):
     """The pipeline outputs the Properties panel's input selector offers for `display`'s input
     property `name`, as the panel asks (ParaView 5.11, pqInputSelectorWidget::updateComboBox):
     each output port of each pipeline proxy set on the representation's prototype property, kept
-    when the property's domains hold. A set of (proxy, port)."""
+    when the property's domains hold. A set of (proxy global id, port)."""
     pxm = servermanager.ProxyManager()
     smproxy = display.SMProxy
     prototype = pxm.GetPrototypeProxy(smproxy.GetXMLGroup(), smproxy.GetXMLName())
