@@ -4,7 +4,6 @@
 #include "vtkAlgorithm.h"
 #include "vtkAppendPolyData.h"
 #include "vtkCompositeLightFieldMapper.h"
-#include "vtkDataObjectLeaves.h"
 #include "vtkFieldData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
@@ -14,7 +13,6 @@
 #include "vtkObjectFactory.h"
 #include "vtkPolyData.h"
 
-#include <algorithm>
 #include <vector>
 
 vtkStandardNewMacro(vtkLightFieldRepresentation);
@@ -59,20 +57,8 @@ int vtkLightFieldRepresentation::RequestData(
   {
     return 0;
   }
-  double moved = 0.0;
-  for (vtkDataObject* block :
-    mesolight::DataObjectLeaves(vtkDataObject::GetData(inputVector[0], 0)))
-  {
-    moved = std::max(
-      moved, vtkCompositeLightFieldMapper::MovedSinceGathered(vtkPolyData::SafeDownCast(block)));
-  }
-  if (moved > 0.0)
-  {
-    vtkWarningMacro("The surface was moved after Light Field Gather (a point by up to "
-      << moved
-      << "): its light was gathered where it was, and a Transform turns its Radiance as a "
-         "vector. Move it before Light Field Gather (Transform, then the gather).");
-  }
+  vtkCompositeLightFieldMapper::WarnIfMovedSinceGathered(
+    vtkDataObject::GetData(inputVector[0], 0), this);
   vtkPolyData* piece =
     this->GetNumberOfInputConnections(1) > 0 ? vtkPolyData::GetData(inputVector[1], 0) : nullptr;
   vtkSmartPointer<vtkPolyData> whole = GatherShadowCaster(piece);

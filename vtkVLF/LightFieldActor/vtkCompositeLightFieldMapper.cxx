@@ -355,21 +355,9 @@ void vtkCompositeLightFieldMapper::Render(vtkRenderer* ren, vtkActor* actor)
   if (vertexRadiance && this->CheckGatheredPositions && input &&
     input->GetMTime() != this->MovedCheckTime)
   {
-    // A Transform after Light Field Gather moves the surface away from where its light was
-    // gathered and turns its Radiance as a vector: said once per change of the input.
+    // Said once per change of the input.
     this->MovedCheckTime = input->GetMTime();
-    double moved = 0.0;
-    for (vtkDataObject* block : blocks)
-    {
-      moved = std::max(moved, MovedSinceGathered(vtkPolyData::SafeDownCast(block)));
-    }
-    if (moved > 0.0)
-    {
-      vtkWarningMacro("The gathered surface was moved after Light Field Gather (a point by up to "
-        << moved
-        << "): its light was gathered where it was, and a Transform turns its Radiance "
-           "as a vector. Move it before Light Field Gather (Transform, then the gather).");
-    }
+    WarnIfMovedSinceGathered(input, this);
   }
   if (vertexRadiance != this->VertexRadiance)
   {
@@ -422,6 +410,28 @@ void vtkCompositeLightFieldMapper::Render(vtkRenderer* ren, vtkActor* actor)
     this->WarnedNoAtlas = true;
   }
   this->Superclass::Render(ren, actor);
+}
+
+//------------------------------------------------------------------------------
+bool vtkCompositeLightFieldMapper::WarnIfMovedSinceGathered(
+  vtkDataObject* data, vtkObject* reporter)
+{
+  // A Transform after Light Field Gather moves the surface away from where its light was
+  // gathered and turns its Radiance as a vector.
+  double moved = 0.0;
+  for (vtkDataObject* block : mesolight::DataObjectLeaves(data))
+  {
+    moved = std::max(moved, MovedSinceGathered(vtkPolyData::SafeDownCast(block)));
+  }
+  if (moved > 0.0)
+  {
+    vtkWarningWithObjectMacro(reporter,
+      "The gathered surface was moved after Light Field Gather (a point by up to "
+        << moved
+        << "): its light was gathered where it was, and a Transform turns its Radiance as a "
+           "vector. Move it before Light Field Gather (Transform, then the gather).");
+  }
+  return moved > 0.0;
 }
 
 //------------------------------------------------------------------------------

@@ -95,6 +95,13 @@ public:
   static double MovedSinceGathered(vtkPolyData* surface);
 
   /**
+   * Warns through `reporter` when a gathered surface among `data`'s leaves moved after the
+   * gather (MovedSinceGathered): what this mapper says with CheckGatheredPositions on, and what
+   * ParaView's Light Field representation says for its mappers. True when it warned.
+   */
+  static bool WarnIfMovedSinceGathered(vtkDataObject* data, vtkObject* reporter);
+
+  /**
    * Log-average luminance (Rec. 709 weights) of the atlas' texels with positive luminance: the
    * automatic exposure is 0.18 / this. 0 when there are none.
    */

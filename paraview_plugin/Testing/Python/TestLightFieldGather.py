@@ -147,6 +147,12 @@ def warnings_drawing(source):
 
 turned = pvs.Transform(Input=gather)
 turned.Transform.Rotate = [0.0, 90.0, 0.0]
+_, _, turned_radiance, _ = arrays(turned)
+print("Radiance ranges (R, G, B): gathered %s, after a Transform (Rotate 0, 90, 0) %s"
+      % ([(round(float(c.min()), 4), round(float(c.max()), 4)) for c in radiance.T],
+         [(round(float(c.min()), 4), round(float(c.max()), 4)) for c in turned_radiance.T]))
+check(turned_radiance[:, 2].max() < 0.0, "a Transform after the gather turns its Radiance as a "
+      "vector (blue negative): what the warning below is for")
 clipped = pvs.Clip(Input=gather, ClipType="Plane")
 clipped.ClipType.Origin = [200.0, 300.0, 150.0]
 clipped.Crinkleclip = 0

@@ -29,6 +29,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <string>
 #include <vector>
@@ -110,6 +111,11 @@ TEST(TriangleSceneConverter, ATransformedSceneKeepsItsMaterials)
   double range[2];
   output->GetCellData()->GetArray("Emission")->GetRange(range, 2);
   EXPECT_LT(range[0], -1.0) << "the filter turned the lamp's Le as a vector";
+  double diffuse[2];
+  output->GetCellData()->GetArray("Diffuse")->GetRange(diffuse, -1);
+  std::printf("[ figures  ] after the Transform (scale 0.5, 90 degrees about y): cell Emission's "
+              "z from %.1f, Diffuse magnitude up to %.3f (the box's Kd up to 0.78 per channel)\n",
+    range[0], diffuse[1]);
 
   TriangleScene back;
   ASSERT_TRUE(converter->ToTriangleScene(output, back));
