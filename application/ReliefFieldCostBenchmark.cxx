@@ -26,6 +26,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <fstream>
 #include <functional>
 #include <iomanip>
@@ -143,8 +144,11 @@ vtkSmartPointer<vtkImageData> OccludedProbes(
   frame.DepthScale = depthScale;
   const int w = std::min(dims[0], 256), h = std::min(dims[1], 256);
   const int count = ReliefLighting().OcclusionDirections;
-  const std::vector<float> share = ReliefVisibleShareMap(height, frame, w, h, count);
-  const std::vector<float> seen = ReliefSeenShareMap(height, frame, share, w, h, count);
+  std::vector<std::uint8_t> leaving;
+  const std::vector<float> share =
+    ReliefVisibleShareMap(height, frame, w, h, count, {}, {}, &leaving);
+  const std::vector<float> seen =
+    ReliefSeenShareMap(height, frame, share, w, h, count, {}, {}, &leaving);
   std::vector<ReliefEmitterSample> samples;
   const glm::dvec3 position(0.2, -0.3, 0.6), normal(0.0, 0.6, -0.8), side(1.0, 0.0, 0.0);
   const glm::dvec3 up = glm::cross(normal, side);

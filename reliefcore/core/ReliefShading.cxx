@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <cstdint>
 #include <stdexcept>
 
 namespace mesolight
@@ -248,10 +249,10 @@ double RadianceVisibleShare(const ReliefLighting& lighting, const HeightField& h
   }
   return all > 0.0 ? visible / all : 1.0;
 }
-} // namespace
 
-double ReliefVisibleShare(const HeightField& hf, const ReliefFrame& frame, const glm::dvec3& hit,
-  const glm::dvec3& n, int count, double* abovePlane)
+// ReliefVisibleShare, also noting in leaving[k] (when given) whether direction k leaves.
+double VisibleShareNoting(const HeightField& hf, const ReliefFrame& frame, const glm::dvec3& hit,
+  const glm::dvec3& n, int count, double* abovePlane, std::uint8_t* leaving)
 {
   if (count < 1)
   {
@@ -262,12 +263,17 @@ double ReliefVisibleShare(const HeightField& hf, const ReliefFrame& frame, const
     return 1.0;
   }
   const NormalFrame local(n);
-  int seen = 0, above = 0;
+  int seen = 0, above = 0, k = 0;
   for (const glm::dvec3& c : CosineDirections(count))
   {
     const glm::dvec3 w = local(c);
     above += glm::dot(w, frame.Normal) > 0.0 ? 1 : 0;
-    seen += LeavesRelief(hf, frame, hit, w) ? 1 : 0;
+    const bool leaves = LeavesRelief(hf, frame, hit, w);
+    seen += leaves ? 1 : 0;
+    if (leaving)
+    {
+      leaving[k++] = leaves ? 1 : 0;
+    }
   }
   if (abovePlane)
   {
@@ -276,8 +282,11 @@ double ReliefVisibleShare(const HeightField& hf, const ReliefFrame& frame, const
   return static_cast<double>(seen) / count;
 }
 
-double ReliefSeenShare(const HeightField& hf, const ReliefFrame& frame, const glm::dvec3& hit,
-  const glm::dvec3& n, int count, const std::vector<float>* shareMap, int mapWidth, int mapHeight)
+// ReliefSeenShare with leaves(k, w): whether direction k, world w, leaves the relief.
+template <typename Leaves>
+double SeenShareWith(const HeightField& hf, const ReliefFrame& frame, const glm::dvec3& hit,
+  const glm::dvec3& n, int count, const std::vector<float>* shareMap, int mapWidth, int mapHeight,
+  const Leaves& leaves)
 {
   if (count < 1)
   {
@@ -302,11 +311,11 @@ double ReliefSeenShare(const HeightField& hf, const ReliefFrame& frame, const gl
   const NormalFrame local(n);
   const glm::dvec3 from(hit.x, hit.y, std::max(0.0, hit.z));
   double sum = 0.0;
-  int occluded = 0;
+  int occluded = 0, k = 0;
   for (const glm::dvec3& c : CosineDirections(count))
   {
     const glm::dvec3 w = local(c);
-    if (LeavesRelief(hf, frame, hit, w))
+    if (leaves(k++, w))
     {
       continue;
     }
@@ -332,6 +341,20 @@ double ReliefSeenShare(const HeightField& hf, const ReliefFrame& frame, const gl
     sum += ReliefVisibleShare(hf, frame, seen->point, normal, count);
   }
   return occluded > 0 ? sum / occluded : 1.0;
+}
+} // namespace
+
+double ReliefVisibleShare(const HeightField& hf, const ReliefFrame& frame, const glm::dvec3& hit,
+  const glm::dvec3& n, int count, double* abovePlane)
+{
+  return VisibleShareNoting(hf, frame, hit, n, count, abovePlane, nullptr);
+}
+
+double ReliefSeenShare(const HeightField& hf, const ReliefFrame& frame, const glm::dvec3& hit,
+  const glm::dvec3& n, int count, const std::vector<float>* shareMap, int mapWidth, int mapHeight)
+{
+  return SeenShareWith(hf, frame, hit, n, count, shareMap, mapWidth, mapHeight,
+    [&](int, const glm::dvec3& w) { return LeavesRelief(hf, frame, hit, w); });
 }
 
 glm::dvec3 ReliefInterReflected(ReliefInterReflection model, double visibleShare, double seenShare,
@@ -360,7 +383,8 @@ glm::dvec3 ReliefInterReflected(ReliefInterReflection model, double visibleShare
 }
 
 std::vector<float> ReliefVisibleShareMap(const HeightField& hf, const ReliefFrame& frame, int width,
-  int height, int count, const ProgressCallback& progress, GridRows rows)
+  int height, int count, const ProgressCallback& progress, GridRows rows,
+  std::vector<std::uint8_t>* leaving)
 {
   if (width < 1 || height < 1)
   {
@@ -372,13 +396,18 @@ std::vector<float> ReliefVisibleShareMap(const HeightField& hf, const ReliefFram
   }
   std::vector<float> share(
     2 * static_cast<std::size_t>(width) * height, rows.Count > 1 ? 0.0f : 1.0f);
+  const std::size_t directions = static_cast<std::size_t>(std::max(count, 0));
+  if (leaving)
+  {
+    leaving->assign(static_cast<std::size_t>(width) * height * directions, 0);
+  }
   ForEachGridCell(width, height, rows, progress,
     [&](std::size_t i, std::size_t j, double u, double v)
     {
       const glm::dvec3 hit(u, v, hf.DepthAt(u, v));
       double above = 1.0;
-      const double visible =
-        ReliefVisibleShare(hf, frame, hit, ReliefNormalAt(hf, frame, u, v), count, &above);
+      const double visible = VisibleShareNoting(hf, frame, hit, ReliefNormalAt(hf, frame, u, v),
+        count, &above, leaving ? leaving->data() + (j * width + i) * directions : nullptr);
       share[2 * (j * width + i)] = static_cast<float>(visible);
       share[2 * (j * width + i) + 1] =
         static_cast<float>(above > 0.0 ? std::min(1.0, visible / above) : 1.0);
@@ -388,7 +417,7 @@ std::vector<float> ReliefVisibleShareMap(const HeightField& hf, const ReliefFram
 
 std::vector<float> ReliefSeenShareMap(const HeightField& hf, const ReliefFrame& frame,
   const std::vector<float>& share, int width, int height, int count,
-  const ProgressCallback& progress, GridRows rows)
+  const ProgressCallback& progress, GridRows rows, const std::vector<std::uint8_t>* leaving)
 {
   if (width < 1 || height < 1 || share.size() != 2 * static_cast<std::size_t>(width) * height)
   {
@@ -399,13 +428,23 @@ std::vector<float> ReliefSeenShareMap(const HeightField& hf, const ReliefFrame& 
   {
     throw std::invalid_argument("ReliefSeenShareMap: the rows' index must lie in [0, count)");
   }
+  const std::size_t directions = static_cast<std::size_t>(std::max(count, 0));
+  if (leaving && leaving->size() != static_cast<std::size_t>(width) * height * directions)
+  {
+    throw std::invalid_argument("ReliefSeenShareMap: the leaving directions must hold `count` "
+                                "values per cell of the grid");
+  }
   std::vector<float> seen(static_cast<std::size_t>(width) * height, rows.Count > 1 ? 0.0f : 1.0f);
   ForEachGridCell(width, height, rows, progress,
     [&](std::size_t i, std::size_t j, double u, double v)
     {
       const glm::dvec3 hit(u, v, hf.DepthAt(u, v));
-      seen[j * width + i] = static_cast<float>(ReliefSeenShare(
-        hf, frame, hit, ReliefNormalAt(hf, frame, u, v), count, &share, width, height));
+      const std::uint8_t* noted =
+        leaving ? leaving->data() + (j * width + i) * directions : nullptr;
+      seen[j * width + i] = static_cast<float>(
+        SeenShareWith(hf, frame, hit, ReliefNormalAt(hf, frame, u, v), count, &share, width, height,
+          [&](int k, const glm::dvec3& w)
+          { return noted ? noted[k] != 0 : LeavesRelief(hf, frame, hit, w); }));
     });
   return seen;
 }

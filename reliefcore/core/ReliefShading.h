@@ -24,6 +24,7 @@
 
 #include <glm/vec3.hpp>
 
+#include <cstdint>
 #include <functional>
 #include <optional>
 #include <vector>
@@ -200,22 +201,26 @@ struct GridRows
  * directions below the plane are dark in it already; ShadeReliefRay's radiance weighting
  * leaves them out for the same reason). Parallel; reports progress (over the rows computed), and
  * a stop throws std::runtime_error("aborted"). With `rows` of several processes only its rows
- * are computed, the others 0 (GridRows).
+ * are computed, the others 0 (GridRows). With `leaving`, which of each cell's `count` directions
+ * leave the relief (1) or not (0), cell after cell (the rows not computed 0): for
+ * ReliefSeenShareMap, which needs them again.
  */
 MESOLIGHTRELIEFCORE_EXPORT std::vector<float> ReliefVisibleShareMap(const HeightField& hf,
   const ReliefFrame& frame, int width, int height, int count, const ProgressCallback& progress = {},
-  GridRows rows = {});
+  GridRows rows = {}, std::vector<std::uint8_t>* leaving = nullptr);
 
 /**
  * ReliefSeenShare over the grid of `share` (ReliefVisibleShareMap's output for the same width,
  * height and count), read from that map: one value per cell, row-major, j slowest. The relief
  * mapper's third channel of the map (vtkIrradianceProbesTexture). Parallel; progress, stop and
  * `rows` as ReliefVisibleShareMap (`share` must be whole: a cell reads the cells its occluded
- * directions meet, in any row).
+ * directions meet, in any row). With `leaving` (ReliefVisibleShareMap's, for the same grid,
+ * count and rows) the directions that leave are read from it instead of marched again.
  */
 MESOLIGHTRELIEFCORE_EXPORT std::vector<float> ReliefSeenShareMap(const HeightField& hf,
   const ReliefFrame& frame, const std::vector<float>& share, int width, int height, int count,
-  const ProgressCallback& progress = {}, GridRows rows = {});
+  const ProgressCallback& progress = {}, GridRows rows = {},
+  const std::vector<std::uint8_t>* leaving = nullptr);
 
 /**
  * The relief's own shadow of area lights over the grid of ReliefVisibleShareMap: per cell (at the

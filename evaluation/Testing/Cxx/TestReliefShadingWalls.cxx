@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <iostream>
 #include <stdexcept>
 #include <vector>
@@ -158,6 +159,55 @@ TEST(ReliefShading, SeenShareMapFollowsTheMarchedSeenShare)
   EXPECT_GT(sumOwn / cells, 3.0 * sumError / cells);
   EXPECT_THROW(
     mesolight::ReliefSeenShareMap(hf, frame, share, w + 1, h, count), std::invalid_argument);
+}
+
+// The seen-share map reading which directions leave from the visible-share map's pass
+// (`leaving`, what the relief's map set-up does) instead of marching them again: the same map
+// bit for bit, whole and split by rows; directions noted wrongly (every one leaving, the negative
+// case) change it; a `leaving` of the wrong size is refused.
+TEST(ReliefShading, SeenShareMapReadsTheLeavingDirectionsOfTheFirstPass)
+{
+  const HeightField hf = WalledSlot();
+  ReliefFrame frame = Square();
+  frame.DepthScale = 0.2;
+  const int w = 8, h = 37, count = 32;
+  const std::vector<float> share = mesolight::ReliefVisibleShareMap(hf, frame, w, h, count);
+  const std::vector<float> seen = mesolight::ReliefSeenShareMap(hf, frame, share, w, h, count);
+  std::vector<std::uint8_t> leaving;
+  ASSERT_EQ(mesolight::ReliefVisibleShareMap(hf, frame, w, h, count, {}, {}, &leaving), share);
+  ASSERT_EQ(leaving.size(), static_cast<std::size_t>(w * h * count));
+  std::size_t left = 0;
+  for (std::uint8_t l : leaving)
+  {
+    left += l;
+  }
+  double meanShare = 0.0;
+  for (int c = 0; c < w * h; ++c)
+  {
+    meanShare += share[2 * c];
+  }
+  // The noted directions are the share's: V is the share of the count directions that leave.
+  EXPECT_NEAR(static_cast<double>(left) / (w * h * count), meanShare / (w * h), 1e-6);
+  EXPECT_EQ(mesolight::ReliefSeenShareMap(hf, frame, share, w, h, count, {}, {}, &leaving), seen);
+  for (int processes = 2; processes <= 3; ++processes)
+  {
+    for (int p = 0; p < processes; ++p)
+    {
+      const mesolight::GridRows rows{ p, processes };
+      std::vector<std::uint8_t> ownLeaving;
+      mesolight::ReliefVisibleShareMap(hf, frame, w, h, count, {}, rows, &ownLeaving);
+      EXPECT_EQ(mesolight::ReliefSeenShareMap(hf, frame, share, w, h, count, {}, rows, &ownLeaving),
+        mesolight::ReliefSeenShareMap(hf, frame, share, w, h, count, {}, rows));
+    }
+  }
+  const std::vector<std::uint8_t> allLeave(leaving.size(), 1);
+  const std::vector<float> wrong =
+    mesolight::ReliefSeenShareMap(hf, frame, share, w, h, count, {}, {}, &allLeave);
+  EXPECT_NE(wrong, seen);
+  EXPECT_EQ(*std::min_element(wrong.begin(), wrong.end()), 1.0f); // nothing occluded, as noted
+  const std::vector<std::uint8_t> tooShort(leaving.size() - 1, 0);
+  EXPECT_THROW(mesolight::ReliefSeenShareMap(hf, frame, share, w, h, count, {}, {}, &tooShort),
+    std::invalid_argument);
 }
 
 // The maps split by rows between processes (GridRows, what MPI ranks compute): the shares of 1,

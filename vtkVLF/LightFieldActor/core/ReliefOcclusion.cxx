@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <cstdint>
 #include <functional>
 #include <limits>
 #include <stdexcept>
@@ -233,17 +234,20 @@ std::vector<float> ReliefVisibleShareGrid(const HeightField& field, const Relief
   const int count = ReliefLighting().OcclusionDirections;
   const bool light = !lightSamples.empty();
   const double third = light ? 1.0 / 3.0 : 0.5;
+  // Which directions leave, per cell of this rank's rows: the seen share needs them again (the
+  // same rows on every pass, so never summed).
+  std::vector<std::uint8_t> leaving;
   const std::vector<float> share = pass(
     [&]()
     {
-      return ReliefVisibleShareMap(
-        field, frame, gridWidth, gridHeight, count, SubProgress(watched, 0.0, third), rows);
+      return ReliefVisibleShareMap(field, frame, gridWidth, gridHeight, count,
+        SubProgress(watched, 0.0, third), rows, &leaving);
     });
   const std::vector<float> seen = pass(
     [&]()
     {
       return ReliefSeenShareMap(field, frame, share, gridWidth, gridHeight, count,
-        SubProgress(watched, third, light ? 2.0 * third : 1.0), rows);
+        SubProgress(watched, third, light ? 2.0 * third : 1.0), rows, &leaving);
     });
   std::vector<float> shadow;
   if (light)
