@@ -16,6 +16,7 @@
 #include "LightField.h"
 #include "MemoryBudget.h"
 #include "ObjScene.h"
+#include "ParallelForThreads.h" // RanksOnThisMachine
 #include "Propagation.h"
 #include "Snapshot.h"
 #include "TextureComparison.h"
@@ -137,23 +138,6 @@ private:
   };
   vlf::Reducer& Inner;
 };
-
-// Ranks on this machine (Open MPI, MPICH/Hydra), or all of them when the launcher does not say.
-int RanksOnThisNode(int ranks)
-{
-  for (const char* name : { "OMPI_COMM_WORLD_LOCAL_SIZE", "MPI_LOCALNRANKS" })
-  {
-    if (const char* value = std::getenv(name))
-    {
-      const int n = std::atoi(value);
-      if (n > 0)
-      {
-        return n;
-      }
-    }
-  }
-  return ranks;
-}
 
 int Propagate(const std::vector<std::string>& args)
 {
@@ -332,7 +316,7 @@ int Propagate(const std::vector<std::string>& args)
     // Each rank's parallel-for would start a thread per core: ranks sharing a machine split its
     // cores instead of oversubscribing them (two ranks on two cores: one thread each).
     const int hardware = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-    threadsPerRank = std::max(1, hardware / RanksOnThisNode(reducer.Size()));
+    threadsPerRank = std::max(1, hardware / RanksOnThisMachine(reducer.Size()));
     vtkSMPTools::Initialize(threadsPerRank);
   }
   const bool rankReport = cl.Has("--rank-report");

@@ -1,9 +1,12 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "ParallelFor.h"
 
+#include "ParallelForThreads.h"
+
 #include "vtkSMPTools.h"
 #include "vtkType.h"
 
+#include <cstring>
 #include <exception>
 #include <mutex>
 
@@ -20,6 +23,14 @@ void ParallelFor(std::size_t begin, std::size_t end, std::size_t grain,
   if (threads == 1 || end - begin == 1)
   {
     body(begin, end);
+    return;
+  }
+  // vtkSMPTools' Sequential backend (ParaView's VTK selects it by default) would run every core
+  // on one thread: the cores' work (light-field propagation, cone maps, the relief's maps) takes
+  // the machine's threads on its own instead, as VTK's imaging filters do.
+  if (std::strcmp(vtkSMPTools::GetBackend(), "Sequential") == 0)
+  {
+    ParallelForOnThreads(begin, end, grain, body, ParallelForThreadCount());
     return;
   }
   // Exceptions must not leave a vtkSMPTools task (the STDThread backend would terminate):

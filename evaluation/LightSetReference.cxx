@@ -2,6 +2,7 @@
 #include "LightSetReference.h"
 
 #include "MathConstants.h"
+#include "ParallelFor.h"
 
 #include "CompactReliefStorage.h"
 #include "HeightFieldTracer.h"
@@ -16,7 +17,6 @@
 #include <vtkFieldData.h>
 #include <vtkImageData.h>
 #include <vtkPointData.h>
-#include <vtkSMPTools.h>
 
 #include <algorithm>
 #include <cmath>
@@ -220,10 +220,10 @@ struct ReferenceSetup
   void ForEachPixel(const ReliefReference& hits, std::vector<EnvironmentIrradianceSample>& samples,
     Irradiance irradiance) const
   {
-    vtkSMPTools::For(0, static_cast<vtkIdType>(samples.size()),
-      [&](vtkIdType begin, vtkIdType end)
+    mesolight::ParallelFor(0, samples.size(), 0,
+      [&](std::size_t begin, std::size_t end)
       {
-        for (vtkIdType s = begin; s < end; ++s)
+        for (std::size_t s = begin; s < end; ++s)
         {
           EnvironmentIrradianceSample& sample = samples[static_cast<size_t>(s)];
           const size_t p = sample.Pixel;

@@ -4,6 +4,7 @@
 #include "BoundTraversalOracle.h"
 #include "HeightFieldTracer.h"
 #include "ImageCompare.h"
+#include "ParallelFor.h"
 #include "ReliefScene.h"
 #include "vtkMinDepthPyramidTexture.h"
 #include "vtkReliefPlaneFilter.h"
@@ -17,7 +18,6 @@
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkRenderer.h>
-#include <vtkSMPTools.h>
 
 #include <glm/vec3.hpp>
 
@@ -195,10 +195,10 @@ bool ComputeReliefReference(
     out = glm::dvec3(r[0], r[1], r[2]) / r[3];
   };
 
-  vtkSMPTools::For(0, H,
-    [&](vtkIdType rowBegin, vtkIdType rowEnd)
+  mesolight::ParallelFor(0, static_cast<std::size_t>(H), 0,
+    [&](std::size_t rowBegin, std::size_t rowEnd)
     {
-      for (vtkIdType y = rowBegin; y < rowEnd; ++y)
+      for (std::size_t y = rowBegin; y < rowEnd; ++y)
       {
         for (int x = 0; x < W; ++x)
         {

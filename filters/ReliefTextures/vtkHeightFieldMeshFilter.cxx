@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkHeightFieldMeshFilter.h"
+#include "ParallelFor.h"
 #include "Progress.h"
 
 #include "ScalarConversion.h"
@@ -18,7 +19,6 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
-#include "vtkSMPTools.h"
 
 #include <algorithm>
 #include <cmath>
@@ -31,10 +31,10 @@ namespace
 template <typename T>
 void ToUnitRGBA(const T* data, vtkIdType n, float* out)
 {
-  vtkSMPTools::For(0, 4 * n,
-    [&](vtkIdType begin, vtkIdType end)
+  mesolight::ParallelFor(0, static_cast<std::size_t>(4 * n), 0,
+    [&](std::size_t begin, std::size_t end)
     {
-      for (vtkIdType k = begin; k < end; ++k)
+      for (std::size_t k = begin; k < end; ++k)
       {
         out[k] = static_cast<float>(mesolight::ToUnitValue(data[k]));
       }
@@ -53,7 +53,10 @@ bool ChunkedFor(
     {
       return false;
     }
-    vtkSMPTools::For(n * c / chunks, n * (c + 1) / chunks, functor);
+    mesolight::ParallelFor(static_cast<std::size_t>(n * c / chunks),
+      static_cast<std::size_t>(n * (c + 1) / chunks), 0,
+      [&](std::size_t begin, std::size_t end)
+      { functor(static_cast<vtkIdType>(begin), static_cast<vtkIdType>(end)); });
     self->UpdateProgress(
       progressBegin + (progressEnd - progressBegin) * static_cast<double>(c + 1) / chunks);
   }

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkProceduralReliefSource.h"
+#include "ParallelFor.h"
 #include "Progress.h"
 
 #include "ProceduralHeightFields.h"
@@ -11,7 +12,6 @@
 #include "vtkInformationVector.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
-#include "vtkSMPTools.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkUnsignedCharArray.h"
 
@@ -165,8 +165,8 @@ int vtkProceduralReliefSource::RequestData(
   {
     const int rowBegin = static_cast<int>(static_cast<long long>(h) * c / chunks);
     const int rowEnd = static_cast<int>(static_cast<long long>(h) * (c + 1) / chunks);
-    vtkSMPTools::For(rowBegin, rowEnd,
-      [&](vtkIdType begin, vtkIdType end)
+    mesolight::ParallelFor(static_cast<std::size_t>(rowBegin), static_cast<std::size_t>(rowEnd), 0,
+      [&](std::size_t begin, std::size_t end)
       {
         mesolight::GenerateHeightFieldRows(
           params, w, h, static_cast<int>(begin), static_cast<int>(end), depthPtr, albedoPtr);

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkReliefTextureFilter.h"
+#include "ParallelFor.h"
 #include "Progress.h"
 #include "vtkOutOfMemory.h"
 #include "vtkRasterRowOrder.h"
@@ -26,7 +27,6 @@
 #include "vtkInformationVector.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
-#include "vtkSMPTools.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkUnsignedCharArray.h"
 
@@ -76,10 +76,10 @@ void ToUnitDepth(const T* data, vtkIdType n, int nComp, bool stored, double* out
 {
   const auto value = [stored](T v)
   { return stored ? static_cast<double>(v) : mesolight::ToUnitValue(v); };
-  vtkSMPTools::For(0, n,
-    [&](vtkIdType begin, vtkIdType end)
+  mesolight::ParallelFor(0, static_cast<std::size_t>(n), 0,
+    [&](std::size_t begin, std::size_t end)
     {
-      for (vtkIdType k = begin; k < end; ++k)
+      for (std::size_t k = begin; k < end; ++k)
       {
         const T* t = data + k * nComp;
         if (nComp >= 3)
@@ -546,8 +546,8 @@ int vtkReliefTextureFilter::Execute(
     }
     const int rowBegin = static_cast<int>(static_cast<long long>(h) * c / chunks);
     const int rowEnd = static_cast<int>(static_cast<long long>(h) * (c + 1) / chunks);
-    vtkSMPTools::For(rowBegin, rowEnd,
-      [&](vtkIdType begin, vtkIdType end)
+    mesolight::ParallelFor(static_cast<std::size_t>(rowBegin), static_cast<std::size_t>(rowEnd), 0,
+      [&](std::size_t begin, std::size_t end)
       {
         mesolight::ComputeReliefTextureRows(
           depthPtr, w, h, depthScale, mode, static_cast<int>(begin), static_cast<int>(end), rgba);
