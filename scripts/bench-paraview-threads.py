@@ -1,0 +1,105 @@
+# SPDX-License-Identifier: BSD-3-Clause
+"""What the plugin's own threads give ParaView users: ParaView's VTK runs vtkSMPTools on its
+Sequential backend by default (Debian's 5.11: STDThread is built in but not selected), so
+mesolight::ParallelFor starts its own threads there (common/ParallelForThreads.h). Times, in
+pvbatch, the plugin's long filters at their defaults, each updated alone (wall seconds, the median
+of REPEATS updates after one unmeasured): Virtual Light Field on the Cornell box (the automatic
+directions and rays, final gather on), Light Field Gather of a sphere in it, Cone Map of a 512 x
+512 procedural stone relief, Median Cut Lights (64, variance minimizing) of a 2048 x 1024 procedural
+sky, and the Relief Surface's visible-share map (256 x 256 bricks) lit by the field. Run it with
+one thread (what the plugin did before: every core on one thread) and with the default, in the same
+session, and compare:
+
+    VTK_SMP_MAX_THREADS=1 bash scripts/xvfb.sh bash scripts/pvbatch.sh scripts/bench-paraview-threads.py [OUT.csv] [REPEATS]
+    bash scripts/xvfb.sh bash scripts/pvbatch.sh scripts/bench-paraview-threads.py [OUT.csv] [REPEATS]
+
+Prints one line per filter; appends "threads,backend,cores,filter,median_seconds,repeats" to OUT.csv
+(default docs/measurements/paraview/threads.csv; threads: VTK_SMP_MAX_THREADS, else "auto").
+"""
+import os
+import statistics
+import sys
+import time
+
+import paraview.simple as pvs
+from vtkmodules.vtkCommonCore import vtkSMPTools
+
+here = os.path.dirname(os.path.abspath(__file__))
+out = sys.argv[1] if len(sys.argv) > 1 else os.path.join(
+    here, "..", "docs", "measurements", "paraview", "threads.csv")
+repeats = int(sys.argv[2]) if len(sys.argv) > 2 else 3
+threads = os.environ.get("VTK_SMP_MAX_THREADS", "auto")
+backend = vtkSMPTools.GetBackend()
+cores = os.cpu_count()
+pvs.LoadPlugin(os.environ["MESOLIGHT_PLUGIN"], remote=False, ns=pvs.__dict__)
+print("vtkSMPTools backend %s, VTK_SMP_MAX_THREADS %s, %d hardware threads"
+      % (backend, threads, cores))
+rows = []
+
+
+def timed(name, proxy, change):
+    """Median wall seconds of `repeats` updates of proxy, each after change(run) modified it."""
+    proxy.UpdatePipeline()  # its inputs, unmeasured
+    seconds = []
+    for run in range(repeats):
+        change(run)
+        start = time.perf_counter()
+        proxy.UpdatePipeline()
+        seconds.append(time.perf_counter() - start)
+    median = statistics.median(seconds)
+    print("%-26s %8.3f s  (%s)" % (name, median, ", ".join("%.3f" % s for s in seconds)))
+    rows.append((name, median))
+
+
+box = pvs.MesolightCornellBox()
+field = pvs.MesolightVirtualLightField(Input=box)
+timed("Virtual Light Field", field,
+      lambda run: setattr(field, "ConvergenceTolerance", 0.01 + 0.0001 * (run + 1)))
+
+sphere = pvs.Sphere(Center=[278.0, 150.0, 280.0], Radius=80.0, ThetaResolution=32,
+                    PhiResolution=32)
+gather = pvs.MesolightLightFieldGather(Input=sphere, LightField=field)
+timed("Light Field Gather", gather,
+      lambda run: setattr(gather, "Reflectance", [0.7, 0.7, 0.6 + 0.01 * run]))
+
+stone = pvs.MesolightProceduralRelief(Pattern=2, Resolution=[512, 512])
+cones = pvs.MesolightConeMap(Input=pvs.OutputPort(stone, 0))
+timed("Cone Map 512 x 512", cones,
+      lambda run: setattr(cones, "DepthScale", 0.05 + 0.001 * (run + 1)))
+
+sky = pvs.MesolightProceduralEnvironment(Resolution=[2048, 1024])
+lights = pvs.MesolightMedianCutLights(Input=sky)
+timed("Median Cut Lights 2048 x 1024", lights,
+      lambda run: setattr(lights, "NumberOfLights", 64 + run + 1))
+
+view = pvs.CreateRenderView()
+view.ViewSize = [200, 200]
+pvs.Show(field, view)
+patch = pvs.Plane(Origin=[90.0, 90.0, 558.0], Point1=[90.0, 470.0, 558.0],
+                  Point2=[470.0, 90.0, 558.0], XResolution=4, YResolution=4)
+bricks = pvs.MesolightProceduralRelief(Pattern=0, Resolution=[256, 256])
+texture = pvs.MesolightReliefTexture(Input=pvs.OutputPort(bricks, 0), DepthScale=0.05)
+attached = pvs.MesolightAttachReliefTexture(Input=patch, ReliefTexture=texture)
+relief = pvs.Show(attached, view)
+relief.SetRepresentationType("Relief Surface")
+relief.OverrideDepthScale = 1
+relief.ReliefDepthScale = 0.05
+relief.LightField = field
+pvs.Render(view)
+maps = []
+for run in range(repeats):
+    relief.ReliefDepthScale = 0.1 if run % 2 == 0 else 0.07
+    pvs.Render(view)  # the map alone
+    relief.UpdatePropertyInformation()
+    maps.append(relief.GetPropertyValue("LightFieldVisibleShareSeconds"))
+print("%-26s %8.3f s  (%s)" % ("Visible-share map 256^2", statistics.median(maps),
+                               ", ".join("%.3f" % s for s in maps)))
+rows.append(("Visible-share map 256^2", statistics.median(maps)))
+
+new = not os.path.exists(out)
+with open(out, "a") as csv:
+    if new:
+        csv.write("threads,backend,cores,filter,median_seconds,repeats\n")
+    for name, median in rows:
+        csv.write("%s,%s,%d,%s,%.4f,%d\n" % (threads, backend, cores, name, median, repeats))
+print("appended to %s" % out)
