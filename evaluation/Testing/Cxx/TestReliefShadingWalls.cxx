@@ -48,6 +48,30 @@ HeightField WalledSlot()
   return HeightField(n, n, depth, HeightField::Edge::Walled);
 }
 
+// The walled slot's maps as the relief mapper's set-up makes them (depth scale 0.2, 32
+// directions): the visible-share map and the seen-share map read from it, on a w x h grid.
+struct SlotMaps
+{
+  HeightField Field;
+  ReliefFrame Frame;
+  int W;
+  int H;
+  int Count;
+  std::vector<float> Share;
+  std::vector<float> Seen;
+};
+
+SlotMaps MakeSlotMaps(int w, int h)
+{
+  ReliefFrame frame = Square();
+  frame.DepthScale = 0.2;
+  const int count = 32;
+  const HeightField hf = WalledSlot();
+  std::vector<float> share = mesolight::ReliefVisibleShareMap(hf, frame, w, h, count);
+  std::vector<float> seen = mesolight::ReliefSeenShareMap(hf, frame, share, w, h, count);
+  return { hf, frame, w, h, count, std::move(share), std::move(seen) };
+}
+
 // The slot seen from below and in front, as the bench's camera sees the top edge: its side wall,
 // its bottom and the bevel. The indirect irradiance under uniform light by the method (the
 // multi-bounce series at the seen relief's visible share) and by the series at the shaded point's
@@ -124,12 +148,7 @@ TEST(ReliefShading, InterReflectionInAWalledSlotAgainstPathTracing)
 // rows: close, and far from the cells' own share (the negative case, what the map held before).
 TEST(ReliefShading, SeenShareMapFollowsTheMarchedSeenShare)
 {
-  const HeightField hf = WalledSlot();
-  ReliefFrame frame = Square();
-  frame.DepthScale = 0.2;
-  const int w = 8, h = 64, count = 32;
-  const std::vector<float> share = mesolight::ReliefVisibleShareMap(hf, frame, w, h, count);
-  const std::vector<float> seen = mesolight::ReliefSeenShareMap(hf, frame, share, w, h, count);
+  const auto [hf, frame, w, h, count, share, seen] = MakeSlotMaps(8, 64);
   ASSERT_EQ(seen.size(), static_cast<std::size_t>(w * h));
   double sumError = 0.0, sumOwn = 0.0;
   int cells = 0;
@@ -167,12 +186,7 @@ TEST(ReliefShading, SeenShareMapFollowsTheMarchedSeenShare)
 // case) change it; a `leaving` of the wrong size is refused.
 TEST(ReliefShading, SeenShareMapReadsTheLeavingDirectionsOfTheFirstPass)
 {
-  const HeightField hf = WalledSlot();
-  ReliefFrame frame = Square();
-  frame.DepthScale = 0.2;
-  const int w = 8, h = 37, count = 32;
-  const std::vector<float> share = mesolight::ReliefVisibleShareMap(hf, frame, w, h, count);
-  const std::vector<float> seen = mesolight::ReliefSeenShareMap(hf, frame, share, w, h, count);
+  const auto [hf, frame, w, h, count, share, seen] = MakeSlotMaps(8, 37);
   std::vector<std::uint8_t> leaving;
   ASSERT_EQ(mesolight::ReliefVisibleShareMap(hf, frame, w, h, count, {}, {}, &leaving), share);
   ASSERT_EQ(leaving.size(), static_cast<std::size_t>(w * h * count));
@@ -215,12 +229,8 @@ TEST(ReliefShading, SeenShareMapReadsTheLeavingDirectionsOfTheFirstPass)
 // only, and the sum without one share (a rank's rows left 0, the negative case) does not.
 TEST(ReliefShading, ShareMapsSplitByRowsSumToTheWholeMap)
 {
-  const HeightField hf = WalledSlot();
-  ReliefFrame frame = Square();
-  frame.DepthScale = 0.2;
-  const int w = 8, h = 37, count = 32; // rows not a multiple of the process counts
-  const std::vector<float> share = mesolight::ReliefVisibleShareMap(hf, frame, w, h, count);
-  const std::vector<float> seen = mesolight::ReliefSeenShareMap(hf, frame, share, w, h, count);
+  // 37 rows: not a multiple of the process counts.
+  const auto [hf, frame, w, h, count, share, seen] = MakeSlotMaps(8, 37);
   for (int processes = 2; processes <= 3; ++processes)
   {
     std::vector<float> shareSum(share.size(), 0.0f), seenSum(seen.size(), 0.0f);
