@@ -25,6 +25,8 @@ import paraview.simple as pvs
 from vtkmodules.vtkCommonCore import vtkSMPTools
 
 here = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, here)
+from relief_share_timing import relief_on_back_wall, visible_share_maps  # noqa: E402
 out = sys.argv[1] if len(sys.argv) > 1 else os.path.join(
     here, "..", "docs", "measurements", "paraview", "threads.csv")
 repeats = int(sys.argv[2]) if len(sys.argv) > 2 else 3
@@ -72,26 +74,8 @@ lights = pvs.MesolightMedianCutLights(Input=sky)
 timed("Median Cut Lights 2048 x 1024", lights,
       lambda run: setattr(lights, "NumberOfLights", 64 + run + 1))
 
-view = pvs.CreateRenderView()
-view.ViewSize = [200, 200]
-pvs.Show(field, view)
-patch = pvs.Plane(Origin=[90.0, 90.0, 558.0], Point1=[90.0, 470.0, 558.0],
-                  Point2=[470.0, 90.0, 558.0], XResolution=4, YResolution=4)
-bricks = pvs.MesolightProceduralRelief(Pattern=0, Resolution=[256, 256])
-texture = pvs.MesolightReliefTexture(Input=pvs.OutputPort(bricks, 0), DepthScale=0.05)
-attached = pvs.MesolightAttachReliefTexture(Input=patch, ReliefTexture=texture)
-relief = pvs.Show(attached, view)
-relief.SetRepresentationType("Relief Surface")
-relief.OverrideDepthScale = 1
-relief.ReliefDepthScale = 0.05
-relief.LightField = field
-pvs.Render(view)
-maps = []
-for run in range(repeats):
-    relief.ReliefDepthScale = 0.1 if run % 2 == 0 else 0.07
-    pvs.Render(view)  # the map alone
-    relief.UpdatePropertyInformation()
-    maps.append(relief.GetPropertyValue("LightFieldVisibleShareSeconds"))
+view, relief = relief_on_back_wall(pvs, field)
+maps = [seconds for seconds, _, _ in visible_share_maps(pvs, view, relief, repeats)]
 print("%-26s %8.3f s  (%s)" % ("Visible-share map 256^2", statistics.median(maps),
                                ", ".join("%.3f" % s for s in maps)))
 rows.append(("Visible-share map 256^2", statistics.median(maps)))

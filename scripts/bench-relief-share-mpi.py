@@ -25,6 +25,8 @@ import paraview.simple as pvs
 from paraview import servermanager
 
 here = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, here)
+from relief_share_timing import relief_on_back_wall, visible_share_maps  # noqa: E402
 out = sys.argv[1] if len(sys.argv) > 1 else os.path.join(
     here, "..", "docs", "measurements", "paraview", "relief-share-mpi.csv")
 repeats = int(sys.argv[2]) if len(sys.argv) > 2 else 5
@@ -35,37 +37,13 @@ ranks = servermanager.ActiveConnection.GetNumberOfDataPartitions()
 box = pvs.MesolightCornellBox()
 field = pvs.MesolightVirtualLightField(Input=box, Directions=513, RaysPerSide=32, Iterations=4,
                                        FinalGather=0)
-view = pvs.CreateRenderView()
-view.ViewSize = [200, 200]
-pvs.Show(field, view)
-patch = pvs.Plane(Origin=[90.0, 90.0, 558.0], Point1=[90.0, 470.0, 558.0],
-                  Point2=[470.0, 90.0, 558.0], XResolution=4, YResolution=4)
-depth = pvs.MesolightProceduralRelief(Pattern=0, Resolution=[SIDE, SIDE])
-texture = pvs.MesolightReliefTexture(Input=pvs.OutputPort(depth, 0), DepthScale=0.05)
-attached = pvs.MesolightAttachReliefTexture(Input=patch, ReliefTexture=texture)
-relief = pvs.Show(attached, view)
-relief.SetRepresentationType("Relief Surface")
-relief.OverrideDepthScale = 1
-relief.ReliefDepthScale = 0.05
-relief.LightField = field
-pvs.Render(view)  # the field, the probes and the first map, unmeasured
-
-
-def value(name):
-    relief.UpdatePropertyInformation()
-    return relief.GetPropertyValue(name)
-
-
+view, relief = relief_on_back_wall(pvs, field, SIDE)
 times, cpu_times = [], []
-for run in range(repeats):
-    relief.ReliefDepthScale = 0.1 if run % 2 == 0 else 0.07
-    pvs.Render(view)  # the map alone
-    seconds, cpu = value("LightFieldVisibleShareSeconds"), value("LightFieldVisibleShareCpuSeconds")
+for run, (seconds, cpu, split) in enumerate(visible_share_maps(pvs, view, relief, repeats)):
     times.append(seconds)
     cpu_times.append(cpu)
     print("ranks %d, run %d, bricks %d x %d: visible-share map %.3f s, %.3f processor s on the "
-          "first rank (split over %d rank(s))"
-          % (ranks, run, SIDE, SIDE, seconds, cpu, value("LightFieldVisibleShareRanks")))
+          "first rank (split over %d rank(s))" % (ranks, run, SIDE, SIDE, seconds, cpu, split))
 median, cpu_median = statistics.median(times), statistics.median(cpu_times)
 print("ranks %d: median %.3f s, %.3f processor s on the first rank over %d maps"
       % (ranks, median, cpu_median, repeats))
