@@ -2,6 +2,7 @@
 #include "ParallelForThreads.h"
 
 #include <algorithm>
+#include <condition_variable>
 #include <cstdlib>
 #include <exception>
 #include <mutex>
@@ -13,7 +14,7 @@ namespace mesolight
 namespace
 {
 // Set on the threads running a body, so that a parallel-for inside it runs inline instead of
-// starting workers² threads.
+// asking the busy pool for more threads.
 thread_local bool InsideBody = false;
 
 int PositiveEnvironment(const char* name)
@@ -22,6 +23,77 @@ int PositiveEnvironment(const char* name)
   const int n = value ? std::atoi(value) : 0;
   return n > 0 ? n : 0;
 }
+
+// Threads started once and kept, so that a loop costs a wake-up, not a thread start (a light
+// field's propagation runs a few thousand short loops). One loop at a time: a loop asked for
+// while another runs (from another thread) runs on its caller alone. Never destroyed: its threads
+// wait on it until the process ends (a plugin's library stays loaded as long).
+class WorkerPool
+{
+public:
+  static WorkerPool& Instance()
+  {
+    static WorkerPool* pool = new WorkerPool;
+    return *pool;
+  }
+
+  // Runs work() on the calling thread and on `helpers` pool threads, returning when every call
+  // has; false, running nothing, when the pool is busy with another caller's loop.
+  bool Run(int helpers, const std::function<void()>& work)
+  {
+    std::unique_lock<std::mutex> busy(this->Busy, std::try_to_lock);
+    if (!busy.owns_lock())
+    {
+      return false;
+    }
+    {
+      std::lock_guard<std::mutex> lock(this->Mutex);
+      while (static_cast<int>(this->Threads.size()) < helpers)
+      {
+        this->Threads.emplace_back([this]() { this->Serve(); });
+      }
+      this->Job = &work;
+      this->Waiting = helpers;
+    }
+    this->Wake.notify_all();
+    work();
+    // work() returns when nothing is left to take: the helpers not started yet need not start.
+    std::unique_lock<std::mutex> lock(this->Mutex);
+    this->Waiting = 0;
+    this->Done.wait(lock, [this]() { return this->Running == 0; });
+    this->Job = nullptr;
+    return true;
+  }
+
+private:
+  void Serve()
+  {
+    std::unique_lock<std::mutex> lock(this->Mutex);
+    for (;;)
+    {
+      this->Wake.wait(lock, [this]() { return this->Waiting > 0; });
+      --this->Waiting;
+      ++this->Running;
+      const std::function<void()>* job = this->Job;
+      lock.unlock();
+      (*job)();
+      lock.lock();
+      if (--this->Running == 0)
+      {
+        this->Done.notify_all();
+      }
+    }
+  }
+
+  std::mutex Busy; // held for a whole loop
+  std::mutex Mutex;
+  std::condition_variable Wake;
+  std::condition_variable Done;
+  std::vector<std::thread> Threads;
+  const std::function<void()>* Job = nullptr;
+  int Waiting = 0; // helpers asked for and not started
+  int Running = 0; // helpers inside the job
+};
 } // namespace
 
 void ParallelForOnThreads(std::size_t begin, std::size_t end, std::size_t grain,
@@ -45,7 +117,7 @@ void ParallelForOnThreads(std::size_t begin, std::size_t end, std::size_t grain,
   std::exception_ptr failure;
   std::mutex mutex;
   std::size_t next = begin;
-  auto work = [&]()
+  const std::function<void()> work = [&]()
   {
     InsideBody = true;
     for (;;)
@@ -75,15 +147,9 @@ void ParallelForOnThreads(std::size_t begin, std::size_t end, std::size_t grain,
     }
     InsideBody = false;
   };
-  std::vector<std::thread> pool;
-  for (std::size_t t = 1; t < threads; ++t)
+  if (!WorkerPool::Instance().Run(static_cast<int>(threads) - 1, work))
   {
-    pool.emplace_back(work);
-  }
-  work();
-  for (std::thread& t : pool)
-  {
-    t.join();
+    work(); // the pool runs another thread's loop: this one on its caller
   }
   if (failure)
   {

@@ -18,9 +18,10 @@ namespace mesolight
 {
 
 /**
- * ParallelFor's contract (ParallelFor.h) on `workers` std::threads (the calling thread is one):
- * blocks of at least `grain` items, a few per worker, taken in turn. workers <= 1, one item, or a
- * call from inside another call's body (nested) runs body(begin, end) on the calling thread.
+ * ParallelFor's contract (ParallelFor.h) on `workers` threads (the calling thread is one; the
+ * others from a pool started once and kept): blocks of at least `grain` items, a few per worker,
+ * taken in turn. workers <= 1, one item, a call from inside another call's body (nested) or one
+ * made while another thread's call holds the pool runs body(begin, end) on the calling thread.
  */
 MESOLIGHTCOMMON_EXPORT void ParallelForOnThreads(std::size_t begin, std::size_t end,
   std::size_t grain, const std::function<void(std::size_t, std::size_t)>& body, int workers);

@@ -84,6 +84,42 @@ TEST(ParallelFor, UnderTheSequentialBackendItStartsThreadsOfItsOwn)
   EXPECT_LE(threads.size(), std::thread::hardware_concurrency());
 }
 
+// The threads are kept between loops (a light field runs thousands of short ones): thousands of
+// loops of a few items, and loops asked for from two threads at once (the second runs on its
+// caller while the first holds the threads), each run every item exactly once.
+TEST(ParallelFor, ManyShortLoopsAndLoopsFromTwoThreadsRunEveryItemOnce)
+{
+  unsetenv("VTK_SMP_MAX_THREADS");
+  SequentialBackend sequential;
+  const auto loops = [](int count, std::size_t items)
+  {
+    long wrong = 0;
+    for (int n = 0; n < count; ++n)
+    {
+      std::vector<std::atomic<int>> runs(items);
+      ParallelFor(0, items, 1,
+        [&](std::size_t begin, std::size_t end)
+        {
+          for (std::size_t k = begin; k < end; ++k)
+          {
+            ++runs[k];
+          }
+        });
+      for (const std::atomic<int>& r : runs)
+      {
+        wrong += r.load() != 1 ? 1 : 0;
+      }
+    }
+    return wrong;
+  };
+  EXPECT_EQ(loops(5000, 4), 0);
+  long wrongElsewhere = -1;
+  std::thread other([&]() { wrongElsewhere = loops(2000, 37); });
+  EXPECT_EQ(loops(2000, 53), 0);
+  other.join();
+  EXPECT_EQ(wrongElsewhere, 0);
+}
+
 TEST(ParallelFor, OneThreadWhenVtkSmpMaxThreadsSaysOne)
 {
   setenv("VTK_SMP_MAX_THREADS", "1", 1);
