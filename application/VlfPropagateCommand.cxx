@@ -16,7 +16,7 @@
 #include "LightField.h"
 #include "MemoryBudget.h"
 #include "ObjScene.h"
-#include "ParallelForThreads.h" // RanksOnThisMachine
+#include "ParallelForThreads.h" // ParallelForThreadCount
 #include "Propagation.h"
 #include "Snapshot.h"
 #include "TextureComparison.h"
@@ -36,7 +36,6 @@
 #include <iostream>
 #include <memory>
 #include <string>
-#include <thread>
 #include <vector>
 
 namespace mesolight
@@ -315,8 +314,7 @@ int Propagate(const std::vector<std::string>& args)
   {
     // Each rank's parallel-for would start a thread per core: ranks sharing a machine split its
     // cores instead of oversubscribing them (two ranks on two cores: one thread each).
-    const int hardware = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-    threadsPerRank = std::max(1, hardware / RanksOnThisMachine(reducer.Size()));
+    threadsPerRank = ParallelForThreadCount(reducer.Size());
     vtkSMPTools::Initialize(threadsPerRank);
   }
   const bool rankReport = cl.Has("--rank-report");

@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <exception>
 #include <mutex>
+#include <system_error>
 #include <thread>
 #include <vector>
 
@@ -50,10 +51,17 @@ public:
       std::lock_guard<std::mutex> lock(this->Mutex);
       while (static_cast<int>(this->Threads.size()) < helpers)
       {
-        this->Threads.emplace_back([this]() { this->Serve(); });
+        try
+        {
+          this->Threads.emplace_back([this]() { this->Serve(); });
+        }
+        catch (const std::system_error&)
+        {
+          break; // the system gives no more threads: the loop runs on those there are
+        }
       }
       this->Job = &work;
-      this->Waiting = helpers;
+      this->Waiting = std::min(helpers, static_cast<int>(this->Threads.size()));
     }
     this->Wake.notify_all();
     work();
@@ -169,14 +177,14 @@ int RanksOnThisMachine(int otherwise)
   return otherwise;
 }
 
-int ParallelForThreadCount()
+int ParallelForThreadCount(int ranksOtherwise)
 {
+  const int hardware = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   if (const int n = PositiveEnvironment("VTK_SMP_MAX_THREADS"))
   {
-    return n;
+    return std::min(n, hardware); // as vtkSMPTools takes it: more threads than cores buy nothing
   }
-  const int hardware = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  return std::max(1, hardware / std::max(1, RanksOnThisMachine(1)));
+  return std::max(1, hardware / std::max(1, RanksOnThisMachine(ranksOtherwise)));
 }
 
 } // namespace mesolight

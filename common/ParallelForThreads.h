@@ -33,11 +33,13 @@ MESOLIGHTCOMMON_EXPORT void ParallelForOnThreads(std::size_t begin, std::size_t 
 MESOLIGHTCOMMON_EXPORT int RanksOnThisMachine(int otherwise);
 
 /**
- * The threads ParallelFor starts on its own: VTK_SMP_MAX_THREADS when set (vtkSMPTools' own
- * variable), else the machine's hardware threads split between the MPI ranks on it (one rank when
- * the launcher does not say), at least 1.
+ * The threads a parallel loop takes: VTK_SMP_MAX_THREADS when set (vtkSMPTools' own variable,
+ * at most the hardware threads, as vtkSMPTools takes it), else the machine's hardware threads
+ * split between the MPI ranks on it (RanksOnThisMachine(ranksOtherwise)), at least 1.
+ * ParallelFor's own threads use it with one rank when the launcher does not say; `mesolight vlf
+ * propagate` with its communicator's size.
  */
-MESOLIGHTCOMMON_EXPORT int ParallelForThreadCount();
+MESOLIGHTCOMMON_EXPORT int ParallelForThreadCount(int ranksOtherwise = 1);
 
 } // namespace mesolight
 

@@ -154,8 +154,26 @@ TEST(ParallelFor, RanksOnOneMachineSplitItsThreads)
   setenv("OMPI_COMM_WORLD_LOCAL_SIZE", "not a number", 1);
   setenv("MPI_LOCALNRANKS", "3", 1); // MPICH / Hydra
   EXPECT_EQ(mesolight::RanksOnThisMachine(5), 3);
-  setenv("VTK_SMP_MAX_THREADS", "3", 1); // VTK's own variable wins
-  EXPECT_EQ(mesolight::ParallelForThreadCount(), 3);
+  EXPECT_EQ(mesolight::ParallelForThreadCount(7), std::max(1, hardware / 3)); // said: not 7
+  unsetenv("MPI_LOCALNRANKS");
+  unsetenv("OMPI_COMM_WORLD_LOCAL_SIZE");
+  EXPECT_EQ(mesolight::ParallelForThreadCount(2), std::max(1, hardware / 2)); // not said: 2
+  setenv("VTK_SMP_MAX_THREADS", "3", 1); // VTK's own variable wins, up to the hardware threads
+  EXPECT_EQ(mesolight::ParallelForThreadCount(), std::min(3, hardware));
+  EXPECT_EQ(mesolight::ParallelForThreadCount(2), std::min(3, hardware));
+  // An absurd count (a typo, an exponent) is held to the hardware threads, as vtkSMPTools holds
+  // it, instead of asking the system for a hundred thousand threads; garbage is not a count.
+  setenv("VTK_SMP_MAX_THREADS", "100000", 1);
+  EXPECT_EQ(mesolight::ParallelForThreadCount(), hardware);
+  setenv("VTK_SMP_MAX_THREADS", "many", 1);
+  EXPECT_EQ(mesolight::ParallelForThreadCount(), hardware);
+  {
+    SequentialBackend sequential;
+    EXPECT_LE(ThreadsThatRan(200).size(), static_cast<std::size_t>(hardware));
+    // Unset before the TBB backend comes back: VTK 9.1's TBB backend takes the variable as it is
+    // (TBB then asks for 99999 workers and crashes at exit), which is VTK's, not this code's.
+    unsetenv("VTK_SMP_MAX_THREADS");
+  }
 }
 
 TEST(ParallelFor, ANestedLoopRunsOnItsCallersThread)
