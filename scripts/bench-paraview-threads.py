@@ -4,9 +4,11 @@ Sequential backend by default (Debian's 5.11: STDThread is built in but not sele
 mesolight::ParallelFor starts its own threads there (common/ParallelForThreads.h). Times, in
 pvbatch, the plugin's long filters at their defaults, each updated alone (wall seconds, the median
 of REPEATS updates after one unmeasured): Virtual Light Field on the Cornell box (the automatic
-directions and rays, final gather on), Light Field Gather of a sphere in it, Cone Map of a 512 x
-512 procedural stone relief, Median Cut Lights (64, variance minimizing) of a 2048 x 1024 procedural
-sky, and the Relief Surface's visible-share map (256 x 256 bricks) lit by the field. Run it with
+directions and rays, final gather on) and on examples/data/town.obj, Light Field Gather of a sphere
+in the box's field, Cone Map of a 512 x 512 procedural stone relief and of a real height map
+(redeclipse-data's dq_stones01_b, when installed), Median Cut Lights (64, variance minimizing) of a
+2048 x 1024 procedural sky, and the Relief Surface's visible-share map (256 x 256 bricks) lit by
+the box's field. Run it with
 one thread (what the plugin did before: every core on one thread) and with the default, in the same
 session, and compare:
 
@@ -58,6 +60,13 @@ field = pvs.MesolightVirtualLightField(Input=box)
 timed("Virtual Light Field", field,
       lambda run: setattr(field, "ConvergenceTolerance", 0.01 + 0.0001 * (run + 1)))
 
+# A scene unlike the Cornell box: the example town (OBJ, 200 m, buildings and a ground).
+town = pvs.MesolightOBJSceneReader(FileName=os.path.join(here, "..", "examples", "data",
+                                                         "town.obj"))
+town_field = pvs.MesolightVirtualLightField(Input=town)
+timed("Virtual Light Field town.obj", town_field,
+      lambda run: setattr(town_field, "ConvergenceTolerance", 0.01 + 0.0001 * (run + 1)))
+
 sphere = pvs.Sphere(Center=[278.0, 150.0, 280.0], Radius=80.0, ThetaResolution=32,
                     PhiResolution=32)
 gather = pvs.MesolightLightFieldGather(Input=sphere, LightField=field)
@@ -68,6 +77,17 @@ stone = pvs.MesolightProceduralRelief(Pattern=2, Resolution=[512, 512])
 cones = pvs.MesolightConeMap(Input=pvs.OutputPort(stone, 0))
 timed("Cone Map 512 x 512", cones,
       lambda run: setattr(cones, "DepthScale", 0.05 + 0.001 * (run + 1)))
+
+# A real height map (white high), when Debian's redeclipse-data is installed
+# (MESOLIGHT_REAL_MAPS=1 scripts/install-deps.sh).
+REAL_MAP = "/usr/share/games/redeclipse/data/dziq/dq_stones01_b.jpg"
+if os.path.exists(REAL_MAP):
+    real = pvs.MesolightImageReader(FileName=REAL_MAP)
+    real_cones = pvs.MesolightConeMap(Input=real, InvertInput=1)
+    timed("Cone Map dq_stones01_b 512", real_cones,
+          lambda run: setattr(real_cones, "DepthScale", 0.05 + 0.001 * (run + 1)))
+else:
+    print("skipped the real height map: %s is absent" % REAL_MAP)
 
 sky = pvs.MesolightProceduralEnvironment(Resolution=[2048, 1024])
 lights = pvs.MesolightMedianCutLights(Input=sky)
