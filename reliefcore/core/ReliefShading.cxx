@@ -13,7 +13,10 @@
 #include <atomic>
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <stdexcept>
+#include <string>
+#include <utility>
 
 namespace mesolight
 {
@@ -282,11 +285,42 @@ double VisibleShareNoting(const HeightField& hf, const ReliefFrame& frame, const
   return static_cast<double>(seen) / count;
 }
 
+// The side wall's visible share at the wall point `point` (RayHit::wall `wall`) from the walls'
+// pairs over `width` cells along each wall and 4 x levels rows, as mlReliefShare reads it:
+// bilinear between cell centres along the wall and between levels down it (level l's centre at
+// (l + 1/2) / levels of the wall's foot, the border's depth there), clamped.
+double WallShareAt(const HeightField& hf, const std::vector<float>& walls, int width, int levels,
+  const glm::dvec2& wall, const glm::dvec3& point)
+{
+  const int block = wall.x > 0.0 ? 0 : wall.x < 0.0 ? 1 : wall.y > 0.0 ? 2 : 3;
+  const double along = wall.x != 0.0 ? point.y : point.x;
+  const double foot = hf.DepthAt(std::clamp(point.x, 0.0, 1.0), std::clamp(point.y, 0.0, 1.0));
+  const double down = foot > 0.0 ? std::clamp(point.z / foot, 0.0, 1.0) : 0.0;
+  const double x = std::clamp(along * width - 0.5, 0.0, width - 1.0);
+  const double y = std::clamp(down * levels, 0.5, levels - 0.5) - 0.5;
+  const int i0 = static_cast<int>(std::floor(x)), l0 = static_cast<int>(std::floor(y));
+  const int i1 = std::min(i0 + 1, width - 1), l1 = std::min(l0 + 1, levels - 1);
+  const double fx = x - i0, fy = y - l0;
+  const auto at = [&](int i, int l)
+  {
+    const std::size_t row = static_cast<std::size_t>(block) * levels + l;
+    return static_cast<double>(walls[2 * (row * width + i)]);
+  };
+  return (1.0 - fy) * ((1.0 - fx) * at(i0, l0) + fx * at(i1, l0)) +
+    fy * ((1.0 - fx) * at(i0, l1) + fx * at(i1, l1));
+}
+
+bool WallSharesFit(const ReliefWallShares& walls, int width)
+{
+  return walls.Values && walls.Levels > 0 && width > 0 &&
+    walls.Values->size() == 2 * static_cast<std::size_t>(width) * 4 * walls.Levels;
+}
+
 // ReliefSeenShare with leaves(k, w): whether direction k, world w, leaves the relief.
 template <typename Leaves>
 double SeenShareWith(const HeightField& hf, const ReliefFrame& frame, const glm::dvec3& hit,
   const glm::dvec3& n, int count, const std::vector<float>* shareMap, int mapWidth, int mapHeight,
-  const Leaves& leaves)
+  ReliefWallShares wallShares, const Leaves& leaves)
 {
   if (count < 1)
   {
@@ -336,6 +370,12 @@ double SeenShareWith(const HeightField& hf, const ReliefFrame& frame, const glm:
       sum += mapped(seen->point.x, seen->point.y);
       continue;
     }
+    if (wall && WallSharesFit(wallShares, mapWidth))
+    {
+      sum +=
+        WallShareAt(hf, *wallShares.Values, mapWidth, wallShares.Levels, seen->wall, seen->point);
+      continue;
+    }
     const glm::dvec3 normal = wall ? ReliefWallNormal(frame, seen->wall)
                                    : ReliefNormalAt(hf, frame, seen->point.x, seen->point.y);
     sum += ReliefVisibleShare(hf, frame, seen->point, normal, count);
@@ -351,9 +391,10 @@ double ReliefVisibleShare(const HeightField& hf, const ReliefFrame& frame, const
 }
 
 double ReliefSeenShare(const HeightField& hf, const ReliefFrame& frame, const glm::dvec3& hit,
-  const glm::dvec3& n, int count, const std::vector<float>* shareMap, int mapWidth, int mapHeight)
+  const glm::dvec3& n, int count, const std::vector<float>* shareMap, int mapWidth, int mapHeight,
+  ReliefWallShares wallShares)
 {
-  return SeenShareWith(hf, frame, hit, n, count, shareMap, mapWidth, mapHeight,
+  return SeenShareWith(hf, frame, hit, n, count, shareMap, mapWidth, mapHeight, wallShares,
     [&](int, const glm::dvec3& w) { return LeavesRelief(hf, frame, hit, w); });
 }
 
@@ -417,7 +458,8 @@ std::vector<float> ReliefVisibleShareMap(const HeightField& hf, const ReliefFram
 
 std::vector<float> ReliefSeenShareMap(const HeightField& hf, const ReliefFrame& frame,
   const std::vector<float>& share, int width, int height, int count,
-  const ProgressCallback& progress, GridRows rows, const std::vector<std::uint8_t>* leaving)
+  const ProgressCallback& progress, GridRows rows, const std::vector<std::uint8_t>* leaving,
+  ReliefWallShares wallShares)
 {
   if (width < 1 || height < 1 || share.size() != 2 * static_cast<std::size_t>(width) * height)
   {
@@ -434,6 +476,11 @@ std::vector<float> ReliefSeenShareMap(const HeightField& hf, const ReliefFrame& 
     throw std::invalid_argument("ReliefSeenShareMap: the leaving directions must hold `count` "
                                 "values per cell of the grid");
   }
+  if (wallShares.Values && !WallSharesFit(wallShares, width))
+  {
+    throw std::invalid_argument("ReliefSeenShareMap: the walls' shares must hold two values per "
+                                "cell of the walls' grid (the map's width by 4 x levels rows)");
+  }
   std::vector<float> seen(static_cast<std::size_t>(width) * height, rows.Count > 1 ? 0.0f : 1.0f);
   ForEachGridCell(width, height, rows, progress,
     [&](std::size_t i, std::size_t j, double u, double v)
@@ -441,10 +488,10 @@ std::vector<float> ReliefSeenShareMap(const HeightField& hf, const ReliefFrame& 
       const glm::dvec3 hit(u, v, hf.DepthAt(u, v));
       const std::uint8_t* noted =
         leaving ? leaving->data() + (j * width + i) * directions : nullptr;
-      seen[j * width + i] = static_cast<float>(
-        SeenShareWith(hf, frame, hit, ReliefNormalAt(hf, frame, u, v), count, &share, width, height,
-          [&](int k, const glm::dvec3& w)
-          { return noted ? noted[k] != 0 : LeavesRelief(hf, frame, hit, w); }));
+      seen[j * width + i] = static_cast<float>(SeenShareWith(hf, frame, hit,
+        ReliefNormalAt(hf, frame, u, v), count, &share, width, height, wallShares,
+        [&](int k, const glm::dvec3& w)
+        { return noted ? noted[k] != 0 : LeavesRelief(hf, frame, hit, w); }));
     });
   return seen;
 }
@@ -471,20 +518,90 @@ std::vector<float> ReliefEmitterShadowMap(const HeightField& hf, const ReliefFra
   return shadow;
 }
 
+namespace
+{
+// The point of cell i of row r of the walls' grid (ReliefWallShareMap) and the wall's unit
+// normal there; nothing where the border is at the surface (no wall) or the field is not walled.
+std::optional<std::pair<glm::dvec3, glm::dvec3>> WallCellPoint(const HeightField& hf,
+  const ReliefFrame& frame, int width, int levels, std::size_t i, std::size_t r)
+{
+  const int wall = static_cast<int>(r) / levels;
+  const int level = static_cast<int>(r) % levels;
+  const double s = (i + 0.5) / width;
+  // The border's point and the wall's normal in (u, v), pointing back into the rectangle
+  // (RayHit::wall, the relief mapper's mlSideWall).
+  const glm::dvec2 uv = wall == 0 ? glm::dvec2(0.0, s)
+    : wall == 1                   ? glm::dvec2(1.0, s)
+    : wall == 2                   ? glm::dvec2(s, 0.0)
+                                  : glm::dvec2(s, 1.0);
+  const glm::dvec2 inward = wall == 0 ? glm::dvec2(1.0, 0.0)
+    : wall == 1                       ? glm::dvec2(-1.0, 0.0)
+    : wall == 2                       ? glm::dvec2(0.0, 1.0)
+                                      : glm::dvec2(0.0, -1.0);
+  const double bottom = hf.DepthAt(uv.x, uv.y);
+  if (hf.EdgeRule() != HeightField::Edge::Walled || !(bottom > 0.0))
+  {
+    return std::nullopt;
+  }
+  return std::make_pair(
+    glm::dvec3(uv.x, uv.y, bottom * (level + 0.5) / levels), ReliefWallNormal(frame, inward));
+}
+
+void CheckWallGrid(const char* what, int width, int levels, GridRows rows)
+{
+  if (width < 1 || levels < 1)
+  {
+    throw std::invalid_argument(std::string(what) + ": needs a grid and at least one level");
+  }
+  if (rows.Count < 1 || rows.Index < 0 || rows.Index >= rows.Count)
+  {
+    throw std::invalid_argument(std::string(what) + ": the rows' index must lie in [0, count)");
+  }
+}
+} // namespace
+
+std::vector<float> ReliefWallVisibleShareMap(const HeightField& hf, const ReliefFrame& frame,
+  int width, int levels, int count, const ProgressCallback& progress, GridRows rows)
+{
+  CheckWallGrid("ReliefWallVisibleShareMap", width, levels, rows);
+  const int wallRows = 4 * levels;
+  std::vector<float> walls(
+    2 * static_cast<std::size_t>(width) * wallRows, rows.Count > 1 ? 0.0f : 1.0f);
+  ForEachGridCell(width, wallRows, rows, progress,
+    [&](std::size_t i, std::size_t r, double, double)
+    {
+      float* cell = &walls[2 * (r * width + i)];
+      const auto point = WallCellPoint(hf, frame, width, levels, i, r);
+      if (!point)
+      {
+        cell[0] = cell[1] = 1.0f;
+        return;
+      }
+      double above = 1.0;
+      const double visible =
+        ReliefVisibleShare(hf, frame, point->first, point->second, count, &above);
+      cell[0] = static_cast<float>(visible);
+      cell[1] = static_cast<float>(above > 0.0 ? std::min(1.0, visible / above) : 1.0);
+    });
+  return walls;
+}
+
 std::vector<float> ReliefWallShareMap(const HeightField& hf, const ReliefFrame& frame,
   const std::vector<float>& share, int width, int height, int levels, int count,
   const std::vector<ReliefEmitterSample>& samples, const ProgressCallback& progress, GridRows rows,
-  const ReliefLighting* probes)
+  const ReliefLighting* probes, const std::vector<float>* wallShare)
 {
-  if (width < 1 || height < 1 || levels < 1 ||
-    share.size() != 2 * static_cast<std::size_t>(width) * height)
+  CheckWallGrid("ReliefWallShareMap", width, levels, rows);
+  if (height < 1 || share.size() != 2 * static_cast<std::size_t>(width) * height)
   {
     throw std::invalid_argument("ReliefWallShareMap: needs a grid, at least one level and the "
                                 "visible-share map's two values per cell of the grid");
   }
-  if (rows.Count < 1 || rows.Index < 0 || rows.Index >= rows.Count)
+  const ReliefWallShares given{ wallShare, levels };
+  if (wallShare && !WallSharesFit(given, width))
   {
-    throw std::invalid_argument("ReliefWallShareMap: the rows' index must lie in [0, count)");
+    throw std::invalid_argument("ReliefWallShareMap: the walls' visible shares must hold two "
+                                "values per cell of the walls' grid (width by 4 x levels rows)");
   }
   const std::vector<int> group(samples.size(), 0);
   const bool weighted = probes && !probes->Probes.empty();
@@ -494,38 +611,32 @@ std::vector<float> ReliefWallShareMap(const HeightField& hf, const ReliefFrame& 
   ForEachGridCell(width, wallRows, rows, progress,
     [&](std::size_t i, std::size_t r, double, double)
     {
-      const int wall = static_cast<int>(r) / levels;
-      const int level = static_cast<int>(r) % levels;
-      const double s = (i + 0.5) / width;
-      // The border's point and the wall's normal in (u, v), pointing back into the rectangle
-      // (RayHit::wall, the relief mapper's mlSideWall).
-      const glm::dvec2 uv = wall == 0 ? glm::dvec2(0.0, s)
-        : wall == 1                   ? glm::dvec2(1.0, s)
-        : wall == 2                   ? glm::dvec2(s, 0.0)
-                                      : glm::dvec2(s, 1.0);
-      const glm::dvec2 inward = wall == 0 ? glm::dvec2(1.0, 0.0)
-        : wall == 1                       ? glm::dvec2(-1.0, 0.0)
-        : wall == 2                       ? glm::dvec2(0.0, 1.0)
-                                          : glm::dvec2(0.0, -1.0);
       float* cell = &walls[4 * (r * width + i)];
-      const double bottom = hf.DepthAt(uv.x, uv.y);
-      if (hf.EdgeRule() != HeightField::Edge::Walled || !(bottom > 0.0))
+      const auto point = WallCellPoint(hf, frame, width, levels, i, r);
+      if (!point)
       {
         std::fill(cell, cell + 4, 1.0f);
         return;
       }
-      const glm::dvec3 hit(uv.x, uv.y, bottom * (level + 0.5) / levels);
-      const glm::dvec3 normal = ReliefWallNormal(frame, inward);
-      double above = 1.0;
-      const double visible = ReliefVisibleShare(hf, frame, hit, normal, count, &above);
-      cell[0] = static_cast<float>(visible);
-      cell[1] = static_cast<float>(above > 0.0 ? std::min(1.0, visible / above) : 1.0);
+      const auto& [hit, normal] = *point;
+      if (wallShare)
+      {
+        cell[0] = (*wallShare)[2 * (r * width + i)];
+        cell[1] = (*wallShare)[2 * (r * width + i) + 1];
+      }
+      else
+      {
+        double above = 1.0;
+        const double visible = ReliefVisibleShare(hf, frame, hit, normal, count, &above);
+        cell[0] = static_cast<float>(visible);
+        cell[1] = static_cast<float>(above > 0.0 ? std::min(1.0, visible / above) : 1.0);
+      }
       if (weighted)
       {
         cell[1] = static_cast<float>(RadianceVisibleShare(*probes, hf, frame, hit, normal, count));
       }
-      cell[2] =
-        static_cast<float>(ReliefSeenShare(hf, frame, hit, normal, count, &share, width, height));
+      cell[2] = static_cast<float>(
+        ReliefSeenShare(hf, frame, hit, normal, count, &share, width, height, given));
       cell[3] = 1.0f;
       if (!samples.empty())
       {

@@ -151,17 +151,33 @@ MESOLIGHTRELIEFCORE_EXPORT double ReliefVisibleShare(const HeightField& hf,
   double* abovePlane = nullptr); // abovePlane: the share of the directions above the macro plane
 
 /**
+ * The side walls' visible shares (ReliefWallVisibleShareMap's pairs) for the seen shares: a point
+ * met on a walled relief's side wall reads its share from them as the relief mapper reads the
+ * wall's map (mlReliefShare: bilinear along the wall between cell centres and down it between
+ * levels, clamped, at its depth over the wall's foot there) instead of marching its directions.
+ * Values: 2 per cell of the walls' grid (`width` cells along each wall, the visible-share map's
+ * width, and 4 x Levels rows). Without them (Values null) a wall point is marched.
+ */
+struct ReliefWallShares
+{
+  const std::vector<float>* Values = nullptr;
+  int Levels = 0;
+};
+
+/**
  * The mean visible share (ReliefVisibleShare, around its own normal: the side wall's on a walled
  * relief's wall) of the relief points that the directions of ReliefVisibleShare at hit = (u, v, d)
  * around n meet, over the directions that do not leave the relief (IntersectFirst); 1 when all
  * leave it. The Vs of the multi-bounce inter-reflection (ReliefLighting::InterReflection). With
  * `shareMap` (ReliefVisibleShareMap's pairs over a mapWidth x mapHeight grid) a point of the
  * height field reads its share from the map (bilinear between cell centres, clamped), one met on
- * a side wall is still marched: what the relief mapper's precomputed map holds.
+ * a side wall from `wallShares` where given (else it is marched): what the relief mapper's
+ * precomputed map holds.
  */
 MESOLIGHTRELIEFCORE_EXPORT double ReliefSeenShare(const HeightField& hf, const ReliefFrame& frame,
   const glm::dvec3& hit, const glm::dvec3& n, int count,
-  const std::vector<float>* shareMap = nullptr, int mapWidth = 0, int mapHeight = 0);
+  const std::vector<float>* shareMap = nullptr, int mapWidth = 0, int mapHeight = 0,
+  ReliefWallShares wallShares = {});
 
 /**
  * The light the relief reflects onto itself at a point of visible share V (ReliefLighting's
@@ -215,12 +231,15 @@ MESOLIGHTRELIEFCORE_EXPORT std::vector<float> ReliefVisibleShareMap(const Height
  * mapper's third channel of the map (vtkIrradianceProbesTexture). Parallel; progress, stop and
  * `rows` as ReliefVisibleShareMap (`share` must be whole: a cell reads the cells its occluded
  * directions meet, in any row). With `leaving` (ReliefVisibleShareMap's, for the same grid,
- * count and rows) the directions that leave are read from it instead of marched again.
+ * count and rows) the directions that leave are read from it instead of marched again. With
+ * `wallShares` (ReliefWallVisibleShareMap's, whole, for this width) the directions that meet a
+ * side wall read the wall's share instead of marching its directions, which was most of the
+ * pass's work on a walled relief (`mesolight bench relief-field-cost` times both).
  */
 MESOLIGHTRELIEFCORE_EXPORT std::vector<float> ReliefSeenShareMap(const HeightField& hf,
   const ReliefFrame& frame, const std::vector<float>& share, int width, int height, int count,
   const ProgressCallback& progress = {}, GridRows rows = {},
-  const std::vector<std::uint8_t>* leaving = nullptr);
+  const std::vector<std::uint8_t>* leaving = nullptr, ReliefWallShares wallShares = {});
 
 /**
  * The relief's own shadow of area lights over the grid of ReliefVisibleShareMap: per cell (at the
@@ -256,13 +275,28 @@ MESOLIGHTRELIEFCORE_EXPORT std::vector<float> ReliefEmitterShadowMap(const Heigh
  * that along all of them, at the wall's point): half of a wall's hemisphere lies behind the macro
  * plane, where SH9 rings (a probe's light cut off at the plane is not zero behind it in 9
  * coefficients), so V over the share above the plane overstates the wall's probe light.
- * Parallel; progress, stop and `rows` (of the 4 levels rows) as ReliefVisibleShareMap.
+ * With `wallShare` (ReliefWallVisibleShareMap's, whole, for this width and levels) the first two
+ * values are copied from it (the second unless `probes` weighs it) and the third reads the walls'
+ * shares from it (ReliefWallShares). Parallel; progress, stop and `rows` (of the 4 levels rows) as
+ * ReliefVisibleShareMap.
  */
 MESOLIGHTRELIEFCORE_EXPORT std::vector<float> ReliefWallShareMap(const HeightField& hf,
   const ReliefFrame& frame, const std::vector<float>& share, int width, int height, int levels,
   int count, const std::vector<ReliefEmitterSample>& samples = {},
-  const ProgressCallback& progress = {}, GridRows rows = {},
-  const ReliefLighting* probes = nullptr);
+  const ProgressCallback& progress = {}, GridRows rows = {}, const ReliefLighting* probes = nullptr,
+  const std::vector<float>* wallShare = nullptr);
+
+/**
+ * ReliefWallShareMap's first two values alone (V and V over the share above the macro plane, on
+ * the same grid of `width` cells along each wall and 4 x `levels` rows; 1 where the border is at
+ * the surface): what ReliefSeenShareMap reads for the directions that meet a side wall
+ * (ReliefWallShares), so it comes before the seen shares, and what ReliefWallShareMap then takes
+ * as `wallShare` instead of marching the walls' directions again. Parallel; progress, stop and
+ * `rows` (of the 4 levels rows) as ReliefVisibleShareMap.
+ */
+MESOLIGHTRELIEFCORE_EXPORT std::vector<float> ReliefWallVisibleShareMap(const HeightField& hf,
+  const ReliefFrame& frame, int width, int levels, int count, const ProgressCallback& progress = {},
+  GridRows rows = {});
 
 } // namespace mesolight
 

@@ -3,9 +3,10 @@
 // meets the wall's plane in side walls) against exact CPU evaluations: the indirect light in the
 // slot along its top edge against Monte-Carlo paths bouncing in it (the negative case, the series
 // at the shaded point's own share, is off by twice as much), the seen-share map against the marched
-// seen share, the maps split by rows between processes against the whole maps, and the side walls'
-// map against the analytic view factor of a slot's wall (the negative case, the border texel's
-// share). The open relief's tests are in TestReliefShading.cxx.
+// seen share (reading the side walls' shares too), the maps split by rows between processes
+// against the whole maps, and the side walls' map against the analytic view factor of a slot's
+// wall (the negative case, the border texel's share). The open relief's tests are in
+// TestReliefShading.cxx.
 #include "ReliefShadingTestScene.h"
 
 #include "MathConstants.h"
@@ -222,6 +223,93 @@ TEST(ReliefShading, SeenShareMapReadsTheLeavingDirectionsOfTheFirstPass)
   const std::vector<std::uint8_t> tooShort(leaving.size() - 1, 0);
   EXPECT_THROW(mesolight::ReliefSeenShareMap(hf, frame, share, w, h, count, {}, {}, &tooShort),
     std::invalid_argument);
+}
+
+// The seen-share map reading the side walls' shares (ReliefWallVisibleShareMap, what the relief
+// mapper reads for a pixel on a wall) for the directions that meet a wall, instead of marching
+// each such point's directions: close to the map that marches them and, in the slot, as close to
+// the marched seen share; walls read as black (the negative case) darken the slot's seen shares.
+// The walls' shares are ReliefWallShareMap's first two values, which takes them in place of its
+// own march; split by rows they sum to the whole; a wrong size is refused.
+TEST(ReliefShading, SeenShareMapReadsTheSideWallsShares)
+{
+  const auto [hf, frame, w, h, count, share, seen] = MakeSlotMaps(8, 64);
+  const int levels = 8;
+  const std::vector<float> walls =
+    mesolight::ReliefWallVisibleShareMap(hf, frame, w, levels, count);
+  ASSERT_EQ(walls.size(), static_cast<std::size_t>(2 * w * 4 * levels));
+  const std::vector<float> full =
+    mesolight::ReliefWallShareMap(hf, frame, share, w, h, levels, count);
+  const std::vector<float> reusing = mesolight::ReliefWallShareMap(
+    hf, frame, share, w, h, levels, count, {}, {}, {}, nullptr, &walls);
+  double wallSeenChange = 0.0;
+  for (std::size_t c = 0; c < walls.size() / 2; ++c)
+  {
+    ASSERT_EQ(full[4 * c], walls[2 * c]);
+    ASSERT_EQ(full[4 * c + 1], walls[2 * c + 1]);
+    ASSERT_EQ(reusing[4 * c], walls[2 * c]);
+    ASSERT_EQ(reusing[4 * c + 1], walls[2 * c + 1]);
+    wallSeenChange += std::abs(reusing[4 * c + 2] - full[4 * c + 2]) / (walls.size() / 2);
+  }
+  const mesolight::ReliefWallShares read{ &walls, levels };
+  const std::vector<float> seenRead =
+    mesolight::ReliefSeenShareMap(hf, frame, share, w, h, count, {}, {}, nullptr, read);
+  const std::vector<float> black(walls.size(), 0.0f);
+  const std::vector<float> seenBlack = mesolight::ReliefSeenShareMap(
+    hf, frame, share, w, h, count, {}, {}, nullptr, mesolight::ReliefWallShares{ &black, levels });
+  double change = 0.0, blackChange = 0.0, readError = 0.0, marchedError = 0.0;
+  int cells = 0;
+  for (int j = h - 12; j < h; ++j) // the slot and its bevel
+  {
+    for (int i = 0; i < w; ++i)
+    {
+      const std::size_t c = static_cast<std::size_t>(j) * w + i;
+      if (share[2 * c] >= 1.0f)
+      {
+        continue;
+      }
+      const double u = (i + 0.5) / w, v = (j + 0.5) / h;
+      const double marched = mesolight::ReliefSeenShare(hf, frame,
+        glm::dvec3(u, v, hf.DepthAt(u, v)), mesolight::ReliefNormalAt(hf, frame, u, v), count);
+      change += std::abs(seenRead[c] - seen[c]);
+      blackChange += std::abs(seenBlack[c] - seen[c]);
+      readError += std::abs(seenRead[c] - marched);
+      marchedError += std::abs(seen[c] - marched);
+      ++cells;
+    }
+  }
+  ASSERT_GT(cells, 40);
+  std::cout << "seen shares over " << cells << " cells of a walled slot, the walls' shares read "
+            << "against marched: mean change " << change / cells << " (walls read as black, "
+            << "negative: " << blackChange / cells << "); against the marched seen share "
+            << readError / cells << " (walls marched: " << marchedError / cells
+            << "); the walls' own seen shares change by " << wallSeenChange << " on average\n";
+  EXPECT_LT(change / cells, 0.01);
+  EXPECT_LT(readError / cells, 0.03);
+  EXPECT_GT(blackChange / cells, 5.0 * change / cells);
+  EXPECT_LT(wallSeenChange, 0.01);
+  for (int processes = 2; processes <= 3; ++processes)
+  {
+    std::vector<float> sum(walls.size(), 0.0f);
+    for (int p = 0; p < processes; ++p)
+    {
+      const std::vector<float> part = mesolight::ReliefWallVisibleShareMap(
+        hf, frame, w, levels, count, {}, mesolight::GridRows{ p, processes });
+      for (std::size_t k = 0; k < part.size(); ++k)
+      {
+        sum[k] += part[k];
+      }
+    }
+    EXPECT_EQ(sum, walls) << processes << " processes";
+  }
+  const std::vector<float> tooShort(walls.size() - 1, 1.0f);
+  EXPECT_THROW(mesolight::ReliefSeenShareMap(hf, frame, share, w, h, count, {}, {}, nullptr,
+                 mesolight::ReliefWallShares{ &tooShort, levels }),
+    std::invalid_argument);
+  EXPECT_THROW(mesolight::ReliefWallShareMap(
+                 hf, frame, share, w, h, levels, count, {}, {}, {}, nullptr, &tooShort),
+    std::invalid_argument);
+  EXPECT_THROW(mesolight::ReliefWallVisibleShareMap(hf, frame, w, 0, count), std::invalid_argument);
 }
 
 // The maps split by rows between processes (GridRows, what MPI ranks compute): the shares of 1,
