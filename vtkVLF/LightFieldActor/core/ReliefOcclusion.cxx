@@ -228,12 +228,13 @@ std::vector<float> ReliefVisibleShareGrid(const HeightField& field, const Relief
     }
     return values;
   };
-  // The visible share, then the share of the relief each cell's occluded directions meet
-  // (ReliefSeenShareMap, which reads the first, whole), then the area light's self-shadow if
-  // asked for: a third (or half) of the work each.
+  // The visible share (with the side walls' on a walled relief), then the share of the relief
+  // each cell's occluded directions meet (ReliefSeenShareMap, which reads the first, whole),
+  // then the area light's self-shadow if asked for: a third (or half) of the work each.
   const int count = ReliefLighting().OcclusionDirections;
   const bool light = !lightSamples.empty();
   const double third = light ? 1.0 / 3.0 : 0.5;
+  const bool walled = field.EdgeRule() == HeightField::Edge::Walled;
   // Which directions leave, per cell of this rank's rows: the seen share needs them again (the
   // same rows on every pass, so never summed).
   std::vector<std::uint8_t> leaving;
@@ -241,13 +242,26 @@ std::vector<float> ReliefVisibleShareGrid(const HeightField& field, const Relief
     [&]()
     {
       return ReliefVisibleShareMap(field, frame, gridWidth, gridHeight, count,
-        SubProgress(watched, 0.0, third), rows, &leaving);
+        SubProgress(watched, 0.0, walled ? 0.9 * third : third), rows, &leaving);
     });
+  // The directions that meet a side wall read its share from here (most of the seen shares'
+  // work on a walled relief marched 32 directions at each such point); the wall map reuses it.
+  std::vector<float> wallShare;
+  if (walled)
+  {
+    wallShare = pass(
+      [&]()
+      {
+        return ReliefWallVisibleShareMap(field, frame, gridWidth, WallShareLevels, count,
+          SubProgress(watched, 0.9 * third, third), rows);
+      });
+  }
+  const ReliefWallShares wallShares{ walled ? &wallShare : nullptr, WallShareLevels };
   const std::vector<float> seen = pass(
     [&]()
     {
       return ReliefSeenShareMap(field, frame, share, gridWidth, gridHeight, count,
-        SubProgress(watched, third, light ? 2.0 * third : 1.0), rows, &leaving);
+        SubProgress(watched, third, light ? 2.0 * third : 1.0), rows, &leaving, wallShares);
     });
   std::vector<float> shadow;
   if (light)
@@ -264,14 +278,14 @@ std::vector<float> ReliefVisibleShareGrid(const HeightField& field, const Relief
   if (walls)
   {
     walls->clear();
-    if (field.EdgeRule() == HeightField::Edge::Walled)
+    if (walled)
     {
       // A small pass (4 x WallShareLevels rows of the grid's width), after the others.
       const std::vector<float> wallCells = pass(
         [&]()
         {
           return ReliefWallShareMap(field, frame, share, gridWidth, gridHeight, WallShareLevels,
-            count, lightSamples, SubProgress(watched, 1.0, 1.0), rows, probes);
+            count, lightSamples, SubProgress(watched, 1.0, 1.0), rows, probes, &wallShare);
         });
       walls->resize(components * (wallCells.size() / 4));
       for (std::size_t c = 0; c < wallCells.size() / 4; ++c)

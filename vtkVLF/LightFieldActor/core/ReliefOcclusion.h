@@ -80,9 +80,10 @@ ReliefFrame ReliefFrameOf(const ReliefSurface& surface, double depthScale);
 // rows are split as the final gather splits its texels (Distribution.h): each rank computes every
 // ranks-th row (GridRows) into a map of zeros and one sum over the ranks per pass gives every
 // rank the whole map, the one-rank map bit for bit (the seen shares read the whole visible-share
-// map, so one sum per pass: 8, 4 and, with light samples, 4 bytes a cell). A failure or stop on
-// one rank is agreed (Agree): every rank throws, AbortedError where it was a stop.
-// With `walls` on a walled height field (HeightField::Edge::Walled) the side walls' map too
+// map, so one sum per pass: 8, 4 and, with light samples, 4 bytes a cell; on a walled relief
+// also the side walls' shares, read by the seen shares: ReliefWallVisibleShareMap). A failure or
+// stop on one rank is agreed (Agree): every rank throws, AbortedError where it was a stop. With
+// `walls` on a walled height field (HeightField::Edge::Walled) the side walls' map too
 // (ReliefWallShareMap, WallShareLevels levels, split and summed as the rest; as many values per
 // cell as the grid's), else `walls` is left empty: vtkIrradianceProbesTexture's wall array.
 // With `probes` the walls' second value is weighted by the probes' radiance (ReliefWallShareMap).
