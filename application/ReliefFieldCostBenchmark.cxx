@@ -123,12 +123,28 @@ vtkSmartPointer<vtkLight> MakeKeyLight()
   return light;
 }
 
+// What the visible-share map's passes cost (median ms of `repeats` runs each): the first pass
+// (which notes the directions that leave the relief), the side walls' shares, and the second
+// pass reading both, against the second pass marching the walls' directions (what it did
+// before it read the walls' shares) and marching every direction (before it read the first's);
+// the share of the cells' directions that leave, and how far reading the walls' shares moves
+// the map.
+struct ShareMapTimes
+{
+  int Width = 0, Height = 0, Directions = 0, WallLevels = 0;
+  double FirstPassMs = 0.0, WallPassMs = 0.0, SecondPassMs = 0.0;
+  double SecondPassMarchingWallsMs = 0.0, SecondPassMarchingMs = 0.0;
+  double LeavingShare = 0.0;
+  bool SameMap = false; // reading the first pass's directions gives the same map, bit for bit
+  double WallsMeanChange = 0.0, WallsLargestChange = 0.0;
+};
+
 // The probes with the relief's precomputed occlusion, as the walkthrough gives them to the
 // relief mapper (application/LightFieldReliefs.cxx): the visible-share map of this height field
 // (depth: the relief texture's fourth component), the relief's shadow of emitter 0's area (4 x 4
 // samples of a 0.1 x 0.1 square facing its normal) and a light visibility per probe.
 vtkSmartPointer<vtkImageData> OccludedProbes(
-  vtkImageData* probes, vtkImageData* relief, double depthScale)
+  vtkImageData* probes, vtkImageData* relief, double depthScale, int repeats, ShareMapTimes& times)
 {
   int dims[3];
   relief->GetDimensions(dims);
@@ -145,10 +161,38 @@ vtkSmartPointer<vtkImageData> OccludedProbes(
   const int w = std::min(dims[0], 256), h = std::min(dims[1], 256);
   const int count = ReliefLighting().OcclusionDirections;
   std::vector<std::uint8_t> leaving;
-  const std::vector<float> share =
-    ReliefVisibleShareMap(height, frame, w, h, count, {}, {}, &leaving);
-  const std::vector<float> seen =
-    ReliefSeenShareMap(height, frame, share, w, h, count, {}, {}, &leaving);
+  std::vector<float> share, wallShare, seen, seenMarchingWalls, seenMarching;
+  constexpr int WallLevels = 8; // vlf::WallShareLevels, as the walkthrough's reliefs have
+  times.Width = w;
+  times.Height = h;
+  times.Directions = count;
+  times.WallLevels = WallLevels;
+  times.FirstPassMs = MedianMilliseconds(repeats,
+    [&]() { share = ReliefVisibleShareMap(height, frame, w, h, count, {}, {}, &leaving); });
+  times.WallPassMs = MedianMilliseconds(
+    repeats, [&]() { wallShare = ReliefWallVisibleShareMap(height, frame, w, WallLevels, count); });
+  const ReliefWallShares walls{ &wallShare, WallLevels };
+  times.SecondPassMs = MedianMilliseconds(repeats,
+    [&]()
+    { seen = ReliefSeenShareMap(height, frame, share, w, h, count, {}, {}, &leaving, walls); });
+  times.SecondPassMarchingWallsMs = MedianMilliseconds(repeats,
+    [&]() {
+      seenMarchingWalls = ReliefSeenShareMap(height, frame, share, w, h, count, {}, {}, &leaving);
+    });
+  times.SecondPassMarchingMs = MedianMilliseconds(repeats,
+    [&]()
+    { seenMarching = ReliefSeenShareMap(height, frame, share, w, h, count, {}, {}, nullptr); });
+  times.SameMap = seenMarchingWalls == seenMarching;
+  for (std::size_t c = 0; c < seen.size(); ++c)
+  {
+    const double change = std::abs(static_cast<double>(seen[c]) - seenMarchingWalls[c]);
+    times.WallsMeanChange += change / static_cast<double>(seen.size());
+    times.WallsLargestChange = std::max(times.WallsLargestChange, change);
+  }
+  times.LeavingShare = leaving.empty()
+    ? 0.0
+    : static_cast<double>(std::count(leaving.begin(), leaving.end(), std::uint8_t(1))) /
+      static_cast<double>(leaving.size());
   std::vector<ReliefEmitterSample> samples;
   const glm::dvec3 position(0.2, -0.3, 0.6), normal(0.0, 0.6, -0.8), side(1.0, 0.0, 0.0);
   const glm::dvec3 up = glm::cross(normal, side);
@@ -219,6 +263,7 @@ int RunReliefFieldCostBenchmark(const std::vector<std::string>& args)
     "--map", "PATTERN", "procedural height map (Bricks, Stone, HemisphereTorus, ...)", "Bricks");
   cl.AddValue("--resolution", "N", "height map resolution", "512");
   cl.AddValue("--depth", "FILE", "a depth image (0 top, 1 deepest) instead of --map");
+  cl.AddFlag("--height", "the --depth image stores height (white = high), as game textures do");
   cl.AddValue("--size", "WxH", "window size", "800x800");
   cl.AddValue("--probes", "N", "N x N SH9 probes over the wall", "8");
   cl.AddValue("--frames", "N", "timed frames per configuration and round", "10");
@@ -240,9 +285,14 @@ int RunReliefFieldCostBenchmark(const std::vector<std::string>& args)
     return cl.UsageError(error);
   }
   o.Pattern = cl.Get("--map");
+  if (cl.Has("--height") && !cl.Has("--depth"))
+  {
+    return cl.UsageError("--height describes a --depth image; give one");
+  }
   if (cl.Has("--depth"))
   {
     o.DepthFile = cl.Get("--depth");
+    o.DepthFileIsHeight = cl.Has("--height");
     o.Pattern = o.DepthFile;
   }
   o.DepthScale = 0.08;
@@ -264,8 +314,9 @@ int RunReliefFieldCostBenchmark(const std::vector<std::string>& args)
   vtkReliefProperty* settings = scene.Mapper->GetReliefProperty();
   settings->SetExposure(1.0);
   const vtkSmartPointer<vtkImageData> plainProbes = MakeProbes(probes);
+  ShareMapTimes mapTimes;
   const vtkSmartPointer<vtkImageData> probeImage =
-    OccludedProbes(plainProbes, scene.ReliefTexture, o.DepthScale);
+    OccludedProbes(plainProbes, scene.ReliefTexture, o.DepthScale, rounds, mapTimes);
   auto window = MakeOffscreenWindow(o, scene.Renderer);
 
   std::vector<Config> configs = {
@@ -351,6 +402,25 @@ int RunReliefFieldCostBenchmark(const std::vector<std::string>& args)
   const double ratioB = (configs[3].MedianMs - background) / singleRelief;
   std::cout << "\n(b) / (a) per relief pixel: " << std::setprecision(2) << ratioB
             << (ratioB <= 1.5 ? " (goal <= 1.5: met)" : " (goal <= 1.5: NOT met)") << "\n";
+  const ShareMapTimes& m = mapTimes;
+  const double mapMs = m.FirstPassMs + m.WallPassMs + m.SecondPassMs;
+  const double marchingWallsMs = m.FirstPassMs + m.SecondPassMarchingWallsMs;
+  const double marchingMs = m.FirstPassMs + m.SecondPassMarchingMs;
+  std::cout << "\nThe probes' visible-share map (the seen shares' part), " << m.Width << " x "
+            << m.Height << " cells, " << m.Directions << " directions, walls of " << m.WallLevels
+            << " levels (median of " << rounds << " runs, ParallelFor's threads):\n"
+            << std::setprecision(1) << "  first pass " << m.FirstPassMs << " ms ("
+            << 100.0 * m.LeavingShare << "% of the directions leave the relief), the side walls' "
+            << "shares " << m.WallPassMs << " ms\n  second pass reading both " << m.SecondPassMs
+            << " ms; marching the walls' directions " << m.SecondPassMarchingWallsMs
+            << " ms; marching every direction " << m.SecondPassMarchingMs << " ms (the same map "
+            << "as reading the first's directions: " << (m.SameMap ? "yes" : "NO") << ")\n"
+            << "  the map " << mapMs << " ms, against " << marchingWallsMs << " ms ("
+            << std::setprecision(2) << mapMs / std::max(1e-9, marchingWallsMs) << "x) and "
+            << std::setprecision(1) << marchingMs << " ms (" << std::setprecision(2)
+            << mapMs / std::max(1e-9, marchingMs) << "x); reading the walls' shares moves the "
+            << "seen shares by " << std::setprecision(4) << m.WallsMeanChange << " on average, "
+            << m.WallsLargestChange << " at most\n";
   std::cout.unsetf(std::ios::fixed);
   if (cl.Has("--csv"))
   {
