@@ -3,10 +3,12 @@
 time (bench-relief-share-mpi.py, bench-paraview-threads.py): one scene, one way to time it."""
 
 
-def relief_on_back_wall(pvs, field, side=256):
+def relief_on_back_wall(pvs, field, side=256, silhouettes=True):
     """A view of `field` (the Cornell box's) with a Relief Surface of side x side procedural
     bricks (depth scale 0.05) on a 380 mm patch in front of the box's back wall, lit by the
-    field; rendered once (the field, the probes and the first map). Returns (view, relief)."""
+    field; rendered once (the field, the probes and the first map). Without silhouettes the
+    relief is walled at its border (side walls down to the depth there, whose shares the map
+    holds too). Returns (view, relief)."""
     view = pvs.CreateRenderView()
     view.ViewSize = [200, 200]
     pvs.Show(field, view)
@@ -17,6 +19,7 @@ def relief_on_back_wall(pvs, field, side=256):
     attached = pvs.MesolightAttachReliefTexture(Input=patch, ReliefTexture=texture)
     relief = pvs.Show(attached, view)
     relief.SetRepresentationType("Relief Surface")
+    relief.Silhouettes = 1 if silhouettes else 0
     relief.OverrideDepthScale = 1
     relief.ReliefDepthScale = 0.05
     relief.LightField = field
