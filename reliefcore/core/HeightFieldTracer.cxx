@@ -545,19 +545,28 @@ std::optional<RayHit> IntersectFirst(
 bool Visible(
   const HeightField& hf, const glm::dvec3& point, const glm::dvec3& toLight, double epsilon)
 {
+  return VisibleOrBlocker(hf, point, toLight, epsilon).Visible;
+}
+
+Visibility VisibleOrBlocker(
+  const HeightField& hf, const glm::dvec3& point, const glm::dvec3& toLight, double epsilon)
+{
   if (!IsFinite(point) || !IsFinite(toLight) || !std::isfinite(epsilon) || !(toLight.z < 0.0))
   {
-    return false;
+    return {};
   }
   const glm::dvec3 dir =
     toLight / std::sqrt(toLight.x * toLight.x + toLight.y * toLight.y + toLight.z * toLight.z);
   const glm::dvec3 start = point + epsilon * dir;
   if (start.z <= 0.0)
   {
-    return true; // already at or above the top of the height field
+    return { true, std::nullopt }; // already at or above the top of the height field
   }
   const double tTop = -start.z / dir.z; // where the ray reaches d = 0
-  return !TraceEdge(hf, start, dir, tTop, Contact::StrictlyBelow);
+  Visibility result;
+  result.Blocker = TraceEdge(hf, start, dir, tTop, Contact::StrictlyBelow);
+  result.Visible = !result.Blocker;
+  return result;
 }
 
 int CountBoundReachingCells(

@@ -115,6 +115,26 @@ MESOLIGHTRELIEFCORE_EXPORT std::optional<RayHit> IntersectFirst(
 MESOLIGHTRELIEFCORE_EXPORT bool Visible(
   const HeightField& hf, const glm::dvec3& point, const glm::dvec3& toLight, double epsilon = 1e-6);
 
+/** Visible's answer and, when its march was stopped by the surface, where. */
+struct Visibility
+{
+  bool Visible = false;
+  // Where the ray first passed strictly below the surface (a side wall's point on a Walled
+  // field; t is measured from the ray's start, epsilon along normalize(toLight) from the point,
+  // in that unit direction); empty when Visible, and when not Visible without a march (a light
+  // at or below the horizon, non-finite input).
+  std::optional<RayHit> Blocker;
+};
+
+/**
+ * Visible, with the point that blocks the ray: one march for a caller that needs both whether a
+ * direction leaves the relief and, if not, what it meets (the relief's seen shares). The blocker
+ * is IntersectFirst's hit for the same ray except where the ray only touches the surface before
+ * it (on-or-below there, strictly below here).
+ */
+MESOLIGHTRELIEFCORE_EXPORT Visibility VisibleOrBlocker(
+  const HeightField& hf, const glm::dvec3& point, const glm::dvec3& toLight, double epsilon = 1e-6);
+
 /**
  * How many cells of the texel-centre grid the ray origin + t * dir, t in [0, tEnd], reaches at
  * or below the cell's shallowest corner (the bound a maximum mipmap keeps for it; Tevs, Ihrke
