@@ -253,9 +253,98 @@ double RadianceVisibleShare(const ReliefLighting& lighting, const HeightField& h
   return all > 0.0 ? visible / all : 1.0;
 }
 
-// ReliefVisibleShare, also noting in leaving[k] (when given) whether direction k leaves.
+// What a direction from a relief point meets: nothing (it leaves the relief), or the point it
+// meets, empty when the march lost it numerically (counted as dark).
+struct DirectionHit
+{
+  bool Leaves = false;
+  std::optional<RayHit> Seen;
+};
+
+// The point direction w from the relief point `from` (depth clamped to the top) meets, for a
+// direction that does not leave the relief: every such direction meets it within the unit
+// square's diagonal and the depth range.
+std::optional<RayHit> MarchToSeenPoint(
+  const HeightField& hf, const ReliefFrame& frame, const glm::dvec3& from, const glm::dvec3& w)
+{
+  const glm::dvec3 step = frame.ToTexture(w);
+  const double length = glm::length(step);
+  return IntersectFirst(hf, from + (1e-6 / length) * step, step, 4.0 / length);
+}
+
+// Direction w from the relief point hit marched twice, as the seen share does without the first
+// pass's hits: whether it leaves (LeavesRelief), then what it meets.
+DirectionHit MarchDirection(
+  const HeightField& hf, const ReliefFrame& frame, const glm::dvec3& hit, const glm::dvec3& w)
+{
+  if (LeavesRelief(hf, frame, hit, w))
+  {
+    return { true, std::nullopt };
+  }
+  return { false, MarchToSeenPoint(hf, frame, glm::dvec3(hit.x, hit.y, std::max(0.0, hit.z)), w) };
+}
+
+// A direction's entries of ReliefDirectionHits from what it met, and back.
+void NoteHit(const DirectionHit& met, std::uint8_t& kind, float* where)
+{
+  using Hits = ReliefDirectionHits;
+  where[0] = where[1] = 0.0f;
+  if (met.Leaves || !met.Seen)
+  {
+    kind = met.Leaves ? Hits::Leaves : Hits::Lost;
+    return;
+  }
+  const RayHit& seen = *met.Seen;
+  kind = seen.wall.x > 0.0 ? Hits::WallU0
+    : seen.wall.x < 0.0    ? Hits::WallU1
+    : seen.wall.y > 0.0    ? Hits::WallV0
+    : seen.wall.y < 0.0    ? Hits::WallV1
+                           : Hits::Surface;
+  // (u, v) on the surface; on a wall the coordinate along it and the depth.
+  const bool alongV = kind == Hits::WallU0 || kind == Hits::WallU1;
+  where[0] = static_cast<float>(alongV ? seen.point.y : seen.point.x);
+  where[1] = static_cast<float>(kind == Hits::Surface ? seen.point.y : seen.point.z);
+}
+
+DirectionHit NotedHit(const HeightField& hf, std::uint8_t kind, const float* where)
+{
+  using Hits = ReliefDirectionHits;
+  if (kind == Hits::Leaves || kind == Hits::Lost)
+  {
+    return { kind == Hits::Leaves, std::nullopt };
+  }
+  const double a = where[0], b = where[1];
+  RayHit seen{ 0.0, glm::dvec3(a, b, 0.0) };
+  switch (kind)
+  {
+    case Hits::WallU0:
+      seen.point = glm::dvec3(0.0, a, b);
+      seen.wall = glm::dvec2(1.0, 0.0);
+      break;
+    case Hits::WallU1:
+      seen.point = glm::dvec3(1.0, a, b);
+      seen.wall = glm::dvec2(-1.0, 0.0);
+      break;
+    case Hits::WallV0:
+      seen.point = glm::dvec3(a, 0.0, b);
+      seen.wall = glm::dvec2(0.0, 1.0);
+      break;
+    case Hits::WallV1:
+      seen.point = glm::dvec3(a, 1.0, b);
+      seen.wall = glm::dvec2(0.0, -1.0);
+      break;
+    default:
+      seen.point.z = hf.DepthAt(a, b);
+  }
+  return { false, seen };
+}
+
+// ReliefVisibleShare, also noting (when `kinds` is given) what each direction k meets into
+// kinds[k] and where[2k], [2k + 1] (ReliefDirectionHits). The direction's one march decides
+// whether it leaves and stops where it does not (VisibleOrBlocker); a direction below the macro
+// plane, occluded without a march, is marched to its point.
 double VisibleShareNoting(const HeightField& hf, const ReliefFrame& frame, const glm::dvec3& hit,
-  const glm::dvec3& n, int count, double* abovePlane, std::uint8_t* leaving)
+  const glm::dvec3& n, int count, double* abovePlane, std::uint8_t* kinds, float* where)
 {
   if (count < 1)
   {
@@ -266,17 +355,32 @@ double VisibleShareNoting(const HeightField& hf, const ReliefFrame& frame, const
     return 1.0;
   }
   const NormalFrame local(n);
+  const glm::dvec3 from(hit.x, hit.y, std::max(0.0, hit.z));
   int seen = 0, above = 0, k = 0;
   for (const glm::dvec3& c : CosineDirections(count))
   {
     const glm::dvec3 w = local(c);
-    above += glm::dot(w, frame.Normal) > 0.0 ? 1 : 0;
-    const bool leaves = LeavesRelief(hf, frame, hit, w);
-    seen += leaves ? 1 : 0;
-    if (leaving)
+    const bool up = glm::dot(w, frame.Normal) > 0.0;
+    above += up ? 1 : 0;
+    if (!kinds)
     {
-      leaving[k++] = leaves ? 1 : 0;
+      seen += LeavesRelief(hf, frame, hit, w) ? 1 : 0;
+      continue;
     }
+    // LeavesRelief's march, keeping where it stopped.
+    DirectionHit met;
+    if (up)
+    {
+      const Visibility visibility = VisibleOrBlocker(hf, from, frame.ToTexture(w), 1e-6);
+      met = { visibility.Visible, visibility.Blocker };
+    }
+    if (!met.Leaves && !met.Seen)
+    {
+      met.Seen = MarchToSeenPoint(hf, frame, from, w);
+    }
+    seen += met.Leaves ? 1 : 0;
+    NoteHit(met, kinds[k], where + 2 * k);
+    ++k;
   }
   if (abovePlane)
   {
@@ -316,11 +420,12 @@ bool WallSharesFit(const ReliefWallShares& walls, int width)
     walls.Values->size() == 2 * static_cast<std::size_t>(width) * 4 * walls.Levels;
 }
 
-// ReliefSeenShare with leaves(k, w): whether direction k, world w, leaves the relief.
-template <typename Leaves>
-double SeenShareWith(const HeightField& hf, const ReliefFrame& frame, const glm::dvec3& hit,
-  const glm::dvec3& n, int count, const std::vector<float>* shareMap, int mapWidth, int mapHeight,
-  ReliefWallShares wallShares, const Leaves& leaves)
+// ReliefSeenShare around the normal n with met(k, w): what direction k, world w, meets from the
+// shaded point (DirectionHit).
+template <typename Met>
+double SeenShareWith(const HeightField& hf, const ReliefFrame& frame, const glm::dvec3& n,
+  int count, const std::vector<float>* shareMap, int mapWidth, int mapHeight,
+  ReliefWallShares wallShares, const Met& met)
 {
   if (count < 1)
   {
@@ -343,42 +448,36 @@ double SeenShareWith(const HeightField& hf, const ReliefFrame& frame, const glm:
       fy * ((1.0 - fx) * at(i0, j1) + fx * at(i1, j1));
   };
   const NormalFrame local(n);
-  const glm::dvec3 from(hit.x, hit.y, std::max(0.0, hit.z));
   double sum = 0.0;
   int occluded = 0, k = 0;
   for (const glm::dvec3& c : CosineDirections(count))
   {
-    const glm::dvec3 w = local(c);
-    if (leaves(k++, w))
+    const DirectionHit direction = met(k++, local(c));
+    if (direction.Leaves)
     {
       continue;
     }
     ++occluded;
-    const glm::dvec3 step = frame.ToTexture(w);
-    const double length = glm::length(step);
-    // Every direction that stays in the relief meets it within the unit square's diagonal and
-    // the depth range; one lost numerically counts as dark.
-    const std::optional<RayHit> seen =
-      IntersectFirst(hf, from + (1e-6 / length) * step, step, 4.0 / length);
-    if (!seen)
+    if (!direction.Seen)
     {
-      continue;
+      continue; // lost numerically: dark
     }
-    const bool wall = seen->wall.x != 0.0 || seen->wall.y != 0.0;
+    const RayHit& seen = *direction.Seen;
+    const bool wall = seen.wall.x != 0.0 || seen.wall.y != 0.0;
     if (map && !wall)
     {
-      sum += mapped(seen->point.x, seen->point.y);
+      sum += mapped(seen.point.x, seen.point.y);
       continue;
     }
     if (wall && WallSharesFit(wallShares, mapWidth))
     {
       sum +=
-        WallShareAt(hf, *wallShares.Values, mapWidth, wallShares.Levels, seen->wall, seen->point);
+        WallShareAt(hf, *wallShares.Values, mapWidth, wallShares.Levels, seen.wall, seen.point);
       continue;
     }
-    const glm::dvec3 normal = wall ? ReliefWallNormal(frame, seen->wall)
-                                   : ReliefNormalAt(hf, frame, seen->point.x, seen->point.y);
-    sum += ReliefVisibleShare(hf, frame, seen->point, normal, count);
+    const glm::dvec3 normal = wall ? ReliefWallNormal(frame, seen.wall)
+                                   : ReliefNormalAt(hf, frame, seen.point.x, seen.point.y);
+    sum += ReliefVisibleShare(hf, frame, seen.point, normal, count);
   }
   return occluded > 0 ? sum / occluded : 1.0;
 }
@@ -387,15 +486,15 @@ double SeenShareWith(const HeightField& hf, const ReliefFrame& frame, const glm:
 double ReliefVisibleShare(const HeightField& hf, const ReliefFrame& frame, const glm::dvec3& hit,
   const glm::dvec3& n, int count, double* abovePlane)
 {
-  return VisibleShareNoting(hf, frame, hit, n, count, abovePlane, nullptr);
+  return VisibleShareNoting(hf, frame, hit, n, count, abovePlane, nullptr, nullptr);
 }
 
 double ReliefSeenShare(const HeightField& hf, const ReliefFrame& frame, const glm::dvec3& hit,
   const glm::dvec3& n, int count, const std::vector<float>* shareMap, int mapWidth, int mapHeight,
   ReliefWallShares wallShares)
 {
-  return SeenShareWith(hf, frame, hit, n, count, shareMap, mapWidth, mapHeight, wallShares,
-    [&](int, const glm::dvec3& w) { return LeavesRelief(hf, frame, hit, w); });
+  return SeenShareWith(hf, frame, n, count, shareMap, mapWidth, mapHeight, wallShares,
+    [&](int, const glm::dvec3& w) { return MarchDirection(hf, frame, hit, w); });
 }
 
 glm::dvec3 ReliefInterReflected(ReliefInterReflection model, double visibleShare, double seenShare,
@@ -424,8 +523,7 @@ glm::dvec3 ReliefInterReflected(ReliefInterReflection model, double visibleShare
 }
 
 std::vector<float> ReliefVisibleShareMap(const HeightField& hf, const ReliefFrame& frame, int width,
-  int height, int count, const ProgressCallback& progress, GridRows rows,
-  std::vector<std::uint8_t>* leaving)
+  int height, int count, const ProgressCallback& progress, GridRows rows, ReliefDirectionHits* hits)
 {
   if (width < 1 || height < 1)
   {
@@ -438,9 +536,11 @@ std::vector<float> ReliefVisibleShareMap(const HeightField& hf, const ReliefFram
   std::vector<float> share(
     2 * static_cast<std::size_t>(width) * height, rows.Count > 1 ? 0.0f : 1.0f);
   const std::size_t directions = static_cast<std::size_t>(std::max(count, 0));
-  if (leaving)
+  if (hits)
   {
-    leaving->assign(static_cast<std::size_t>(width) * height * directions, 0);
+    hits->Kinds.assign(
+      static_cast<std::size_t>(width) * height * directions, ReliefDirectionHits::Leaves);
+    hits->Where.assign(2 * hits->Kinds.size(), 0.0f);
   }
   ForEachGridCell(width, height, rows, progress,
     [&](std::size_t i, std::size_t j, double u, double v)
@@ -448,7 +548,8 @@ std::vector<float> ReliefVisibleShareMap(const HeightField& hf, const ReliefFram
       const glm::dvec3 hit(u, v, hf.DepthAt(u, v));
       double above = 1.0;
       const double visible = VisibleShareNoting(hf, frame, hit, ReliefNormalAt(hf, frame, u, v),
-        count, &above, leaving ? leaving->data() + (j * width + i) * directions : nullptr);
+        count, &above, hits ? hits->Kinds.data() + (j * width + i) * directions : nullptr,
+        hits ? hits->Where.data() + 2 * (j * width + i) * directions : nullptr);
       share[2 * (j * width + i)] = static_cast<float>(visible);
       share[2 * (j * width + i) + 1] =
         static_cast<float>(above > 0.0 ? std::min(1.0, visible / above) : 1.0);
@@ -458,7 +559,7 @@ std::vector<float> ReliefVisibleShareMap(const HeightField& hf, const ReliefFram
 
 std::vector<float> ReliefSeenShareMap(const HeightField& hf, const ReliefFrame& frame,
   const std::vector<float>& share, int width, int height, int count,
-  const ProgressCallback& progress, GridRows rows, const std::vector<std::uint8_t>* leaving,
+  const ProgressCallback& progress, GridRows rows, const ReliefDirectionHits* hits,
   ReliefWallShares wallShares)
 {
   if (width < 1 || height < 1 || share.size() != 2 * static_cast<std::size_t>(width) * height)
@@ -471,10 +572,12 @@ std::vector<float> ReliefSeenShareMap(const HeightField& hf, const ReliefFrame& 
     throw std::invalid_argument("ReliefSeenShareMap: the rows' index must lie in [0, count)");
   }
   const std::size_t directions = static_cast<std::size_t>(std::max(count, 0));
-  if (leaving && leaving->size() != static_cast<std::size_t>(width) * height * directions)
+  if (hits &&
+    (hits->Kinds.size() != static_cast<std::size_t>(width) * height * directions ||
+      hits->Where.size() != 2 * hits->Kinds.size()))
   {
-    throw std::invalid_argument("ReliefSeenShareMap: the leaving directions must hold `count` "
-                                "values per cell of the grid");
+    throw std::invalid_argument("ReliefSeenShareMap: the first pass's hits must hold `count` "
+                                "directions per cell of the grid");
   }
   if (wallShares.Values && !WallSharesFit(wallShares, width))
   {
@@ -486,12 +589,15 @@ std::vector<float> ReliefSeenShareMap(const HeightField& hf, const ReliefFrame& 
     [&](std::size_t i, std::size_t j, double u, double v)
     {
       const glm::dvec3 hit(u, v, hf.DepthAt(u, v));
-      const std::uint8_t* noted =
-        leaving ? leaving->data() + (j * width + i) * directions : nullptr;
-      seen[j * width + i] = static_cast<float>(SeenShareWith(hf, frame, hit,
+      const std::size_t first = (j * width + i) * directions;
+      seen[j * width + i] = static_cast<float>(SeenShareWith(hf, frame,
         ReliefNormalAt(hf, frame, u, v), count, &share, width, height, wallShares,
         [&](int k, const glm::dvec3& w)
-        { return noted ? noted[k] != 0 : LeavesRelief(hf, frame, hit, w); }));
+        {
+          const std::size_t d = first + static_cast<std::size_t>(k);
+          return hits ? NotedHit(hf, hits->Kinds[d], &hits->Where[2 * d])
+                      : MarchDirection(hf, frame, hit, w);
+        }));
     });
   return seen;
 }

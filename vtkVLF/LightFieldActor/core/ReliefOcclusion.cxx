@@ -235,14 +235,14 @@ std::vector<float> ReliefVisibleShareGrid(const HeightField& field, const Relief
   const bool light = !lightSamples.empty();
   const double third = light ? 1.0 / 3.0 : 0.5;
   const bool walled = field.EdgeRule() == HeightField::Edge::Walled;
-  // Which directions leave, per cell of this rank's rows: the seen share needs them again (the
-  // same rows on every pass, so never summed).
-  std::vector<std::uint8_t> leaving;
+  // What each direction of this rank's cells met: the seen shares read it instead of marching
+  // again (the same rows on every pass, so never summed).
+  ReliefDirectionHits hits;
   const std::vector<float> share = pass(
     [&]()
     {
       return ReliefVisibleShareMap(field, frame, gridWidth, gridHeight, count,
-        SubProgress(watched, 0.0, walled ? 0.9 * third : third), rows, &leaving);
+        SubProgress(watched, 0.0, walled ? 0.9 * third : third), rows, &hits);
     });
   // The directions that meet a side wall read its share from here (most of the seen shares'
   // work on a walled relief marched 32 directions at each such point); the wall map reuses it.
@@ -261,7 +261,7 @@ std::vector<float> ReliefVisibleShareGrid(const HeightField& field, const Relief
     [&]()
     {
       return ReliefSeenShareMap(field, frame, share, gridWidth, gridHeight, count,
-        SubProgress(watched, third, light ? 2.0 * third : 1.0), rows, &leaving, wallShares);
+        SubProgress(watched, third, light ? 2.0 * third : 1.0), rows, &hits, wallShares);
     });
   std::vector<float> shadow;
   if (light)
