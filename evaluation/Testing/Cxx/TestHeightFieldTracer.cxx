@@ -5,6 +5,7 @@
 #include "HeightFieldTracer.h"
 
 #include "MathConstants.h"
+#include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -29,7 +30,8 @@ using mesolight::Visible;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-HeightField MakeField(int w, int h, const std::function<float(int, int)>& depth)
+HeightField MakeField(int w, int h, const std::function<float(int, int)>& depth,
+  HeightField::Edge edge = HeightField::Edge::Clamped)
 {
   std::vector<float> samples;
   for (int j = 0; j < h; ++j)
@@ -39,14 +41,16 @@ HeightField MakeField(int w, int h, const std::function<float(int, int)>& depth)
       samples.push_back(depth(i, j));
     }
   }
-  return HeightField(w, h, samples);
+  return HeightField(w, h, samples, edge);
 }
 
-HeightField RandomField(int w, int h, unsigned seed)
+HeightField RandomField(
+  int w, int h, unsigned seed, HeightField::Edge edge = HeightField::Edge::Clamped)
 {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<float> depth(0.0f, 1.0f);
-  return MakeField(w, h, [&](int, int) { return depth(rng); });
+  return MakeField(
+    w, h, [&](int, int) { return depth(rng); }, edge);
 }
 
 // Unit direction at angle `theta` from straight down (+d) and azimuth `phi`.
@@ -589,6 +593,58 @@ TEST(Visible, AgreesWithBruteForceShadowRays)
   EXPECT_GT(lit, rays / 10);
   EXPECT_LT(lit, rays * 9 / 10);
   std::printf("[          ] shadow rays: %d of %d agree, %d lit\n", agree, rays, lit);
+}
+
+// VisibleOrBlocker: Visible's answer on every ray, and where Visible is false after a march the
+// point that stopped it, which is IntersectFirst's hit from the same start (the ray's first
+// crossing) on these random rays; on a walled field the side wall's point and normal. The
+// negative case: a blocker taken one cell further along the ray is not that hit.
+TEST(Visible, VisibleOrBlockerKeepsWhereTheMarchStopped)
+{
+  for (const HeightField::Edge edge : { HeightField::Edge::Clamped, HeightField::Edge::Walled })
+  {
+    const HeightField hf = RandomField(17, 13, 778, edge);
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> uv(0.0, 1.0), unit(0.0, 1.0);
+    const double epsilon = 1e-6;
+    int blocked = 0, walls = 0, farther = 0;
+    for (int n = 0; n < 500; ++n)
+    {
+      const glm::dvec3 point(DrawUV(rng, uv, uv), 0.0);
+      const glm::dvec3 onSurface(point.x, point.y, hf.DepthAt(point.x, point.y));
+      const double elevation = (1.0 + 60.0 * unit(rng)) * mesolight::Pi<double> / 180.0;
+      const double phi = unit(rng) * 2 * mesolight::Pi<double>;
+      const glm::dvec3 toLight(std::cos(elevation) * std::cos(phi),
+        std::cos(elevation) * std::sin(phi), -std::sin(elevation));
+      const mesolight::Visibility visibility =
+        mesolight::VisibleOrBlocker(hf, onSurface, toLight, epsilon);
+      ASSERT_EQ(visibility.Visible, Visible(hf, onSurface, toLight, epsilon));
+      if (visibility.Visible)
+      {
+        EXPECT_FALSE(visibility.Blocker);
+        continue;
+      }
+      ASSERT_TRUE(visibility.Blocker);
+      ++blocked;
+      const glm::dvec3 start = onSurface + epsilon * toLight;
+      const std::optional<RayHit> first = IntersectFirst(hf, start, toLight, 4.0);
+      ASSERT_TRUE(first);
+      EXPECT_NEAR(glm::length(visibility.Blocker->point - first->point), 0.0, 1e-9);
+      EXPECT_EQ(visibility.Blocker->wall, first->wall);
+      walls += first->wall != glm::dvec2(0.0) ? 1 : 0;
+      // Negative: the point a cell's width further along the ray is not the hit.
+      const glm::dvec3 later = visibility.Blocker->point + (1.0 / 17) * toLight;
+      farther += glm::length(later - first->point) > 1e-3 ? 1 : 0;
+    }
+    EXPECT_GT(blocked, 50);
+    EXPECT_EQ(farther, blocked);
+    if (edge == HeightField::Edge::Walled)
+    {
+      EXPECT_GT(walls, 0) << "some rays meet the side walls";
+    }
+    std::printf("[          ] %s: %d of 500 rays blocked, %d by a side wall\n",
+      edge == HeightField::Edge::Walled ? "walled" : "clamped", blocked, walls);
+  }
 }
 
 } // namespace
