@@ -229,12 +229,17 @@ std::vector<float> ReliefVisibleShareGrid(const HeightField& field, const Relief
     return values;
   };
   // The visible share (with the side walls' on a walled relief), then the share of the relief
-  // each cell's occluded directions meet (ReliefSeenShareMap, which reads the first, whole),
-  // then the area light's self-shadow if asked for: a third (or half) of the work each.
+  // each cell's occluded directions meet (ReliefSeenShareMap, which reads the first, whole, and
+  // the points the first pass noted), then the area light's self-shadow if asked for. The
+  // progress follows their rough shares of the work: the first pass and the self-shadow march,
+  // the walls are a small grid and the seen shares read what the first pass noted
+  // (docs/relief-against-path-tracer.md, "The map's cost").
   const int count = ReliefLighting().OcclusionDirections;
   const bool light = !lightSamples.empty();
-  const double third = light ? 1.0 / 3.0 : 0.5;
   const bool walled = field.EdgeRule() == HeightField::Edge::Walled;
+  const double shareEnd = light ? 0.55 : 0.85; // the first pass
+  const double wallsEnd = shareEnd + (walled ? 0.05 : 0.0);
+  const double seenEnd = light ? 0.65 : 1.0;
   // What each direction of this rank's cells met: the seen shares read it instead of marching
   // again (the same rows on every pass, so never summed).
   ReliefDirectionHits hits;
@@ -242,7 +247,7 @@ std::vector<float> ReliefVisibleShareGrid(const HeightField& field, const Relief
     [&]()
     {
       return ReliefVisibleShareMap(field, frame, gridWidth, gridHeight, count,
-        SubProgress(watched, 0.0, walled ? 0.9 * third : third), rows, &hits);
+        SubProgress(watched, 0.0, shareEnd), rows, &hits);
     });
   // The directions that meet a side wall read its share from here (most of the seen shares'
   // work on a walled relief marched 32 directions at each such point); the wall map reuses it.
@@ -253,7 +258,7 @@ std::vector<float> ReliefVisibleShareGrid(const HeightField& field, const Relief
       [&]()
       {
         return ReliefWallVisibleShareMap(field, frame, gridWidth, WallShareLevels, count,
-          SubProgress(watched, 0.9 * third, third), rows);
+          SubProgress(watched, shareEnd, wallsEnd), rows);
       });
   }
   const ReliefWallShares wallShares{ walled ? &wallShare : nullptr, WallShareLevels };
@@ -261,7 +266,7 @@ std::vector<float> ReliefVisibleShareGrid(const HeightField& field, const Relief
     [&]()
     {
       return ReliefSeenShareMap(field, frame, share, gridWidth, gridHeight, count,
-        SubProgress(watched, third, light ? 2.0 * third : 1.0), rows, &hits, wallShares);
+        SubProgress(watched, wallsEnd, seenEnd), rows, &hits, wallShares);
     });
   std::vector<float> shadow;
   if (light)
@@ -271,7 +276,7 @@ std::vector<float> ReliefVisibleShareGrid(const HeightField& field, const Relief
       {
         return ReliefEmitterShadowMap(field, frame, lightSamples,
           std::vector<int>(lightSamples.size(), 0), 1, gridWidth, gridHeight,
-          SubProgress(watched, 2.0 * third, 1.0), rows);
+          SubProgress(watched, seenEnd, 1.0), rows);
       });
   }
   const std::size_t components = light ? 4 : 3;
