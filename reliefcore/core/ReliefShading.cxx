@@ -653,6 +653,17 @@ std::optional<std::pair<glm::dvec3, glm::dvec3>> WallCellPoint(const HeightField
     glm::dvec3(uv.x, uv.y, bottom * (level + 0.5) / levels), ReliefWallNormal(frame, inward));
 }
 
+// The first two values of a wall cell: V at the wall's point around its normal, and V over the
+// share of the directions above the macro plane (as ReliefVisibleShareMap's pairs).
+void WallVisibleSharePair(const HeightField& hf, const ReliefFrame& frame, const glm::dvec3& hit,
+  const glm::dvec3& normal, int count, float* pair)
+{
+  double above = 1.0;
+  const double visible = ReliefVisibleShare(hf, frame, hit, normal, count, &above);
+  pair[0] = static_cast<float>(visible);
+  pair[1] = static_cast<float>(above > 0.0 ? std::min(1.0, visible / above) : 1.0);
+}
+
 void CheckWallGrid(const char* what, int width, int levels, GridRows rows)
 {
   if (width < 1 || levels < 1)
@@ -683,11 +694,7 @@ std::vector<float> ReliefWallVisibleShareMap(const HeightField& hf, const Relief
         cell[0] = cell[1] = 1.0f;
         return;
       }
-      double above = 1.0;
-      const double visible =
-        ReliefVisibleShare(hf, frame, point->first, point->second, count, &above);
-      cell[0] = static_cast<float>(visible);
-      cell[1] = static_cast<float>(above > 0.0 ? std::min(1.0, visible / above) : 1.0);
+      WallVisibleSharePair(hf, frame, point->first, point->second, count, cell);
     });
   return walls;
 }
@@ -732,10 +739,7 @@ std::vector<float> ReliefWallShareMap(const HeightField& hf, const ReliefFrame& 
       }
       else
       {
-        double above = 1.0;
-        const double visible = ReliefVisibleShare(hf, frame, hit, normal, count, &above);
-        cell[0] = static_cast<float>(visible);
-        cell[1] = static_cast<float>(above > 0.0 ? std::min(1.0, visible / above) : 1.0);
+        WallVisibleSharePair(hf, frame, hit, normal, count, cell);
       }
       if (weighted)
       {
