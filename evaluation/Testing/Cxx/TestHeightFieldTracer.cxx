@@ -68,6 +68,17 @@ glm::dvec2 DrawUV(Rng& rng, U& u, V& v)
   return { pu, v(rng) };
 }
 
+// A light direction (toward the light, d up) at an elevation between 1 and 1 + span degrees above
+// the horizon and any azimuth: elevation drawn first, then azimuth.
+template <typename Rng, typename U>
+glm::dvec3 DrawToLight(Rng& rng, U& unit, double spanDegrees)
+{
+  const double elevation = (1.0 + spanDegrees * unit(rng)) * mesolight::Pi<double> / 180.0;
+  const double phi = unit(rng) * 2 * mesolight::Pi<double>;
+  return { std::cos(elevation) * std::cos(phi), std::cos(elevation) * std::sin(phi),
+    -std::sin(elevation) };
+}
+
 // Every reported hit must be on or below the surface and lie on the ray at its t.
 void ExpectValidHit(const HeightField& hf, const glm::dvec3& origin, const glm::dvec3& dir,
   double tMax, const RayHit& hit)
@@ -569,10 +580,7 @@ TEST(Visible, AgreesWithBruteForceShadowRays)
   {
     const glm::dvec3 point(DrawUV(rng, uv, uv), 0.0);
     const glm::dvec3 onSurface(point.x, point.y, hf.DepthAt(point.x, point.y));
-    const double elevation = (1.0 + 80.0 * unit(rng)) * mesolight::Pi<double> / 180.0;
-    const double phi = unit(rng) * 2 * mesolight::Pi<double>;
-    const glm::dvec3 toLight(std::cos(elevation) * std::cos(phi),
-      std::cos(elevation) * std::sin(phi), -std::sin(elevation));
+    const glm::dvec3 toLight = DrawToLight(rng, unit, 80.0);
     const bool visible = Visible(hf, onSurface, toLight, epsilon);
     // Oracle: the same offset start, sampled up to where the ray leaves the top (d = 0).
     const glm::dvec3 start = onSurface + epsilon * toLight;
@@ -612,10 +620,7 @@ TEST(Visible, VisibleOrBlockerKeepsWhereTheMarchStopped)
     {
       const glm::dvec3 point(DrawUV(rng, uv, uv), 0.0);
       const glm::dvec3 onSurface(point.x, point.y, hf.DepthAt(point.x, point.y));
-      const double elevation = (1.0 + 60.0 * unit(rng)) * mesolight::Pi<double> / 180.0;
-      const double phi = unit(rng) * 2 * mesolight::Pi<double>;
-      const glm::dvec3 toLight(std::cos(elevation) * std::cos(phi),
-        std::cos(elevation) * std::sin(phi), -std::sin(elevation));
+      const glm::dvec3 toLight = DrawToLight(rng, unit, 60.0);
       const mesolight::Visibility visibility =
         mesolight::VisibleOrBlocker(hf, onSurface, toLight, epsilon);
       ASSERT_EQ(visibility.Visible, Visible(hf, onSurface, toLight, epsilon));
