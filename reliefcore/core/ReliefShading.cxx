@@ -664,6 +664,31 @@ void WallVisibleSharePair(const HeightField& hf, const ReliefFrame& frame, const
   pair[1] = static_cast<float>(above > 0.0 ? std::min(1.0, visible / above) : 1.0);
 }
 
+// The walls' grid of `perCell` values a cell (`width` cells along each wall, 4 x levels rows;
+// the rows outside `rows` 0): cell(values, point, normal, index) fills each cell that has a wall
+// (index: the cell's, row-major), the others are 1. Parallel, with ForEachGridCell's progress
+// and stop.
+template <typename Cell>
+std::vector<float> WallGrid(const HeightField& hf, const ReliefFrame& frame, int width, int levels,
+  std::size_t perCell, GridRows rows, const ProgressCallback& progress, const Cell& cell)
+{
+  std::vector<float> walls(
+    perCell * static_cast<std::size_t>(width) * 4 * levels, rows.Count > 1 ? 0.0f : 1.0f);
+  ForEachGridCell(width, 4 * levels, rows, progress,
+    [&](std::size_t i, std::size_t r, double, double)
+    {
+      float* values = &walls[perCell * (r * width + i)];
+      const auto point = WallCellPoint(hf, frame, width, levels, i, r);
+      if (!point)
+      {
+        std::fill(values, values + perCell, 1.0f);
+        return;
+      }
+      cell(values, point->first, point->second, r * width + i);
+    });
+  return walls;
+}
+
 void CheckWallGrid(const char* what, int width, int levels, GridRows rows)
 {
   if (width < 1 || levels < 1)
@@ -681,22 +706,9 @@ std::vector<float> ReliefWallVisibleShareMap(const HeightField& hf, const Relief
   int width, int levels, int count, const ProgressCallback& progress, GridRows rows)
 {
   CheckWallGrid("ReliefWallVisibleShareMap", width, levels, rows);
-  const int wallRows = 4 * levels;
-  std::vector<float> walls(
-    2 * static_cast<std::size_t>(width) * wallRows, rows.Count > 1 ? 0.0f : 1.0f);
-  ForEachGridCell(width, wallRows, rows, progress,
-    [&](std::size_t i, std::size_t r, double, double)
-    {
-      float* cell = &walls[2 * (r * width + i)];
-      const auto point = WallCellPoint(hf, frame, width, levels, i, r);
-      if (!point)
-      {
-        cell[0] = cell[1] = 1.0f;
-        return;
-      }
-      WallVisibleSharePair(hf, frame, point->first, point->second, count, cell);
-    });
-  return walls;
+  return WallGrid(hf, frame, width, levels, 2, rows, progress,
+    [&](float* cell, const glm::dvec3& hit, const glm::dvec3& normal, std::size_t)
+    { WallVisibleSharePair(hf, frame, hit, normal, count, cell); });
 }
 
 std::vector<float> ReliefWallShareMap(const HeightField& hf, const ReliefFrame& frame,
@@ -718,24 +730,13 @@ std::vector<float> ReliefWallShareMap(const HeightField& hf, const ReliefFrame& 
   }
   const std::vector<int> group(samples.size(), 0);
   const bool weighted = probes && !probes->Probes.empty();
-  const int wallRows = 4 * levels;
-  std::vector<float> walls(
-    4 * static_cast<std::size_t>(width) * wallRows, rows.Count > 1 ? 0.0f : 1.0f);
-  ForEachGridCell(width, wallRows, rows, progress,
-    [&](std::size_t i, std::size_t r, double, double)
+  return WallGrid(hf, frame, width, levels, 4, rows, progress,
+    [&](float* cell, const glm::dvec3& hit, const glm::dvec3& normal, std::size_t c)
     {
-      float* cell = &walls[4 * (r * width + i)];
-      const auto point = WallCellPoint(hf, frame, width, levels, i, r);
-      if (!point)
-      {
-        std::fill(cell, cell + 4, 1.0f);
-        return;
-      }
-      const auto& [hit, normal] = *point;
       if (wallShare)
       {
-        cell[0] = (*wallShare)[2 * (r * width + i)];
-        cell[1] = (*wallShare)[2 * (r * width + i) + 1];
+        cell[0] = (*wallShare)[2 * c];
+        cell[1] = (*wallShare)[2 * c + 1];
       }
       else
       {
@@ -753,7 +754,6 @@ std::vector<float> ReliefWallShareMap(const HeightField& hf, const ReliefFrame& 
         EmitterShadowAt(hf, frame, samples, group, 1, hit, normal, &cell[3]);
       }
     });
-  return walls;
 }
 
 glm::dvec3 ProbeRadiance(const ReliefLighting& lighting, double u, double v, const glm::dvec3& w)
