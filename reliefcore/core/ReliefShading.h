@@ -156,7 +156,9 @@ MESOLIGHTRELIEFCORE_EXPORT double ReliefVisibleShare(const HeightField& hf,
  * wall's map (mlReliefShare: bilinear along the wall between cell centres and down it between
  * levels, clamped, at its depth over the wall's foot there) instead of marching its directions.
  * Values: 2 per cell of the walls' grid (`width` cells along each wall, the visible-share map's
- * width, and 4 x Levels rows). Without them (Values null) a wall point is marched.
+ * width, and 4 x Levels rows). Without them (Values null) a wall point is marched; values of
+ * another size are refused by ReliefSeenShareMap and ReliefWallShareMap (std::invalid_argument)
+ * and not read by ReliefSeenShare (the point marched).
  */
 struct ReliefWallShares
 {
