@@ -67,6 +67,10 @@ int mlRefinementBudget()
 }
 int mlViewRefinementSteps = 0;
 #define mlRefinementSteps mlViewRefinementSteps
+// The view rays this pixel traces (several far away with ML_FAR_RAYS): where they are several,
+// their hard self-shadows average over the footprint, and one ray's shadow need not stand in
+// for the others' (mlShadowVisibility).
+int mlPixelViewRays = 1;
 #endif
 
 // The mip level the height field is sampled at. Marches use explicit levels (implicit

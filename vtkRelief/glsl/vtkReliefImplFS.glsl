@@ -35,6 +35,7 @@
   int mlRays = mlMajorTexels > 2.0
     ? clamp(int(ceil(mlMajorTexels / max(mlMinorTexels, 1e-6) - 1e-3)) | 1, 1, ML_FAR_RAYS)
     : 1;
+  mlPixelViewRays = mlRays;
   vec4 mlRaySum = vec4(0.0);
   int mlRaysKept = 0;
   vec3 mlCentreHit = mlHit, mlCentreHitPos = mlHitPos, mlCentreShadingNormal = mlShadingNormal;

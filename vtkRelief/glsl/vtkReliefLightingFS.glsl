@@ -50,25 +50,29 @@ float mlLightArrival(int i, vec3 posVC, out vec3 lightDir)
 
 #ifdef ML_SELF_SHADOWING
 // The share of a light reaching the facets of the pixel's footprint. Near (level of detail off,
-// or a footprint's shading level of 0) one shadow ray from the hit: lit or not. Far, a pixel
-// averages the shadows of all its facets, and one ray from one of them aliases: the ray starts
-// half a footprint towards the light (the facets' own relief within the footprint darkens them
-// through the clamped Lambert term, mlFilteredLambert, not a second time through the ray), and
-// its visibility is soft: 1/2 where the ray grazes the height field, clamp(1/2 + g) with g the
-// ray's least clearance above it per depth climbed (1 over a flat floor; negative: below it at
-// the first blocked sample), as a bundle of rays from across the footprint would be partly
-// blocked where one ray just passes; the penumbra narrows to a hard shadow as the shading
-// level falls to 0. As percentage-closer filtering (Reeves, Salesin and Cook 1987) softens a
-// shadow map's test over a filter's area. Measured on three real maps at 45 and 80 degrees
-// against lifts of 0 (the hit, refinement's bracket higher), 0.5 and 1 footprint and a hard
-// test (docs/relief-methods.md, "Aliasing"). Cone and maximum-mipmap shadow marches report no
-// clearance and stay hard from the lifted start. The shadows the footprint's facets cast on
-// each other, which the lifted ray does not see, come from the moments (mlFootprintShadowing).
+// or a footprint's shading level of 0) one shadow ray from the hit: lit or not. So too for each
+// of a far pixel's several view rays (ML_FAR_RAYS, mlPixelViewRays > 1): their hard shadows from
+// their own hits average over the footprint as the supersampled frame's subsamples do, measured
+// better than each ray's shadow softened (docs/relief-methods.md, "Several view rays per far
+// pixel"). A far pixel with one view ray averages the shadows of all its facets too, and one
+// hard ray from one of them aliases: there the ray starts half a footprint towards the light
+// (the facets' own relief within the footprint darkens them through the clamped Lambert term,
+// mlFilteredLambert, not a second time through the ray), and its visibility is soft: 1/2 where
+// the ray grazes the height field, clamp(1/2 + g) with g the ray's least clearance above it per
+// depth climbed (1 over a flat floor; negative: below it at the first blocked sample), as a
+// bundle of rays from across the footprint would be partly blocked where one ray just passes;
+// the penumbra narrows to a hard shadow as the shading level falls to 0. As percentage-closer
+// filtering (Reeves, Salesin and Cook 1987) softens a shadow map's test over a filter's area.
+// Measured on three real maps at 45 and 80 degrees against lifts of 0 (the hit, refinement's
+// bracket higher), 0.5 and 1 footprint and a hard test (docs/relief-methods.md, "Aliasing").
+// Cone and maximum-mipmap shadow marches report no clearance and stay hard from the lifted
+// start. The shadows the footprint's facets cast on each other, which one ray does not see, come
+// from the moments (mlFootprintShadowing).
 float mlShadowVisibility(vec3 hit, vec3 spanUpPerDepth)
 {
 #if defined(ML_LEVEL_OF_DETAIL) && !defined(ML_CURVED)
   float blend = clamp(mlShadeLod, 0.0, 1.0); // 0 near: the frame of level of detail off
-  if (mlFootprint > 1.0 && blend > 0.0)
+  if (mlFootprint > 1.0 && blend > 0.0 && mlPixelViewRays == 1)
   {
     float footprint = blend * mlFootprint; // texels
     float along = 0.5 * footprint / max(length(spanUpPerDepth.xy * mlTextureSize), 1e-6);
