@@ -223,13 +223,15 @@ public:
    * minor axis' length along it, rounded up to an odd count and at most this many (an even
    * value counts as the odd one below it), enters at evenly spaced points of the pixel along its
    * major screen axis, the middle one through the pixel's centre (its hit is the depth written
-   * and its miss a silhouette); each is traced, shaded and self-shadowed as the pixel's one ray
-   * would be, and their colours are averaged (a far grazing pixel covers many facets, of which
-   * one ray meets one). 1: one ray per pixel. Near pixels always take one ray. Default 3 (3 rays
-   * at 45 and 80 degrees): far error on four real maps at 2 wall widths 0.45x relief 10+8
-   * without level of detail, against 0.56x with one ray, at 3x the relief samples per far pixel
-   * (docs/relief-methods.md, "Several view rays per far pixel"); test
-   * ReliefLevelOfDetail.AveragesViewRaysAcrossAFarFootprint.
+   * and its miss a silhouette); each is traced and shaded as the pixel's one ray would be and
+   * self-shadowed hard from its own hit (one ray's soft far shadow stands in for the rays it
+   * does not trace), and their colours are averaged (a far grazing pixel covers many facets, of
+   * which one ray meets one). 1: one ray per pixel. Near pixels always take one ray. Default 3
+   * (3 rays at 45 and 80 degrees): far error on four real maps at 2 wall widths 0.35x relief
+   * 10+8 without level of detail, against 0.45x with one ray, at 3.2x the relief samples per far
+   * pixel (docs/relief-methods.md, "Several view rays per far pixel" and "Each far view ray's own
+   * hard shadow"); tests ReliefLevelOfDetail.AveragesViewRaysAcrossAFarFootprint and
+   * ShadowsEachFarViewRayFromItsHit.
    */
   mesolightSetClampMacro(FarViewRays, int, 1, 8);
   vtkGetMacro(FarViewRays, int);
