@@ -53,8 +53,8 @@ float mlLightArrival(int i, vec3 posVC, out vec3 lightDir)
 // or a footprint's shading level of 0) one shadow ray from the hit: lit or not. So too for each
 // of a far pixel's several view rays (ML_FAR_RAYS, mlPixelViewRays > 1): their hard shadows from
 // their own hits average over the footprint as the supersampled frame's subsamples do, measured
-// better than each ray's shadow softened (docs/relief-methods.md, "Several view rays per far
-// pixel"). A far pixel with one view ray averages the shadows of all its facets too, and one
+// better than each ray's shadow softened (docs/relief-methods.md, "Each far view ray's own
+// hard shadow"). A far pixel with one view ray averages the shadows of all its facets too, and one
 // hard ray from one of them aliases: there the ray starts half a footprint towards the light
 // (the facets' own relief within the footprint darkens them through the clamped Lambert term,
 // mlFilteredLambert, not a second time through the ray), and its visibility is soft: 1/2 where

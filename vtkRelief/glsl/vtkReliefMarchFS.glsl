@@ -302,7 +302,11 @@ bool mlShadowed(vec3 hit, vec3 spanUpPerDepth)
   // Where level of detail softens a far pixel's shadow (mlShadowVisibility: a footprint over a
   // texel at a shading level above 0), the penumbra needs the linear march's clearance, which
   // the pyramid's skips do not measure; 10 steps per unit of depth, the march the Relief 10+8
-  // default took there, so far pixels shade as before the default became exact.
+  // default took there, so far pixels shade as before the default became exact. The hard
+  // shadows of a far pixel's several view rays take it too: the exact march made them darker
+  // than the supersampled frame (its hard shadow times the footprint's averaged Lambert term
+  // loses the correlation of a facet's light with its shadow; docs/relief-methods.md, "Each far
+  // view ray's own hard shadow").
   if (mlFootprint > 1.0 && mlShadeLod > 0.0)
   {
     return mlShadowedLinear(origin, span, hit, bias, 10);
