@@ -178,8 +178,10 @@ public:
   enum NormalFilterKind
   {
     /**
-     * The mip-mapped mean normal, its length dimming the diffuse light and widening the
-     * highlight (Toksvig 2005). Blind to which facets a grazing view sees.
+     * The footprint's mean normal, its length dimming the diffuse light and widening the
+     * highlight (Toksvig 2005): in compact storage the plain mean of the same moments the
+     * visible filters read, in float storage the mip-mapped normal. Blind to which facets a
+     * grazing view sees; one view ray per pixel (FarViewRays is the visible filters').
      */
     MeanNormalFilter = 0,
     /**

@@ -132,7 +132,9 @@ std::string vtkReliefShaderSource::Key() const
     (p->GetToneMapping() ? "T" : "t") + (p->GetShadowCulling() ? "K" : "k") +
     (this->HasIrradianceProbes ? "P" : "p") + (p->GetEncodeSRGB() ? "G" : "g") +
     (this->NormalMoments && p->GetLevelOfDetail()
-        ? (p->GetNormalFilter() == vtkReliefProperty::HeightMaskedNormalFilter ? "H" : "M") +
+        ? (p->GetNormalFilter() == vtkReliefProperty::HeightMaskedNormalFilter ? "H"
+              : p->GetNormalFilter() == vtkReliefProperty::VisibleNormalFilter ? "M"
+                                                                               : "W") +
           std::to_string(p->GetFarViewRays())
         : "m") +
     (this->GetCurved() ? "Q" : "q") +
@@ -276,14 +278,23 @@ void vtkReliefShaderSource::ReplaceValuesAfter(std::string& fs, const void* cell
     defines += "#define ML_LEVEL_OF_DETAIL\n";
     if (this->NormalMoments)
     {
-      defines += "#define ML_VISIBLE_NORMALS\n";
-      if (p->GetNormalFilter() == vtkReliefProperty::HeightMaskedNormalFilter)
+      // Every normal filter reads the footprint's normals from their moments: the mean filter
+      // their plain mean (Toksvig's, ML_MEAN_NORMALS), the others the visible one.
+      defines += "#define ML_NORMAL_MOMENTS\n";
+      const int filter = p->GetNormalFilter();
+      if (filter == vtkReliefProperty::MeanNormalFilter)
+      {
+        defines += "#define ML_MEAN_NORMALS\n";
+      }
+      else if (filter == vtkReliefProperty::HeightMaskedNormalFilter)
       {
         defines += "#define ML_HEIGHT_MASKING\n";
       }
       const int output = p->GetOutput();
-      // An odd count, so that one ray passes through the pixel's centre.
-      const int rays = (p->GetFarViewRays() - 1) | 1;
+      // An odd count, so that one ray passes through the pixel's centre; with the visible
+      // filters (FarViewRays), the mean filter keeping one ray as Toksvig's filter does.
+      const int rays =
+        filter == vtkReliefProperty::MeanNormalFilter ? 1 : (p->GetFarViewRays() - 1) | 1;
       if (rays > 1 &&
         (output == vtkReliefProperty::ShadedOutput ||
           output == vtkReliefProperty::SampleCountOutput))
@@ -344,7 +355,8 @@ void vtkReliefShaderSource::ReplaceValuesAfter(std::string& fs, const void* cell
           // -1.5..0 (docs/relief-methods.md, "Aliasing").
           ? "\n  mlFootprint = sqrt(abs(mlDUVdx.x * mlDUVdy.y - mlDUVdx.y * mlDUVdy.x) * "
             "mlTextureSize.x * mlTextureSize.y);" +
-            std::string(this->NormalMoments
+            std::string(this->NormalMoments &&
+                    p->GetNormalFilter() != vtkReliefProperty::MeanNormalFilter
                 ? "\n  mlShadeLod = max(0.0, -0.5 + log2(max(mlFootprint * mlFootprint / "
                   "max(max(length(mlDUVdx * mlTextureSize), length(mlDUVdy * mlTextureSize)), "
                   "1e-30), 1e-30)));"

@@ -157,8 +157,7 @@ bool vtkReliefShading::StartDraw(vtkOpenGLRenderWindow* renWin, vtkReliefPropert
   // Only what the method reads is uploaded: the pyramid for MaximumMipmap, cones for cone methods.
   if (!this->ReliefTexture->Update(renWin, relief, property->GetLevelOfDetail(), maximumMipmap,
         requiredCones != vtkReliefProperty::NoConeMap, property->GetFloatTextures(),
-        property->GetLevelOfDetail() &&
-          property->GetNormalFilter() >= vtkReliefProperty::VisibleNormalFilter))
+        property->GetLevelOfDetail()))
   {
     return false;
   }

@@ -91,8 +91,8 @@ float mlSpecularPowerScale = 1.0;
 
 // Lambert's n.l for a pixel's spread of normals: n.l is linear in n, so the footprint's mean is
 // the mean normal's, |n| = mlNormalLength times the filtered direction m's (Toksvig 2005).
-// With the visible normal filter (ML_VISIBLE_NORMALS) m and the length are those of the facets
-// the viewer sees (mlVisibleNormal).
+// With the visible normal filters (ML_NORMAL_MOMENTS but not ML_MEAN_NORMALS) m and the length
+// are those of the facets the viewer sees (mlVisibleNormal).
 // The mean of n.l is not the footprint's light, though: each facet turned from the light adds
 // nothing rather than a negative amount, max(0, n.l). With the spread's covariance C
 // (mlNormalSpreadVC, view coordinates; zero near and without the visible normal filter), n.l
@@ -191,7 +191,7 @@ float mlDepthAt(vec2 uv)
                                    : textureLod(mlReliefTexture, uv, mlMarchLod).ML_DEPTH_CHANNEL;
 }
 
-#ifdef ML_VISIBLE_NORMALS
+#ifdef ML_NORMAL_MOMENTS
 // Level of detail's visible normal filter (vtkReliefTextureCache::GetMomentsUploaded): moments
 // of the baked unit normal n weighted by w = 1 / nz, the texel's surface area over its base.
 uniform sampler2D mlMomentTexture0; // E[w nx^2], E[w ny^2], E[w nx ny], E[w nz^2]
@@ -447,6 +447,12 @@ vec3 mlMomentsVisibleNormal(vec4 a, vec4 b, vec3 v)
 {
   float s = mlDepthScale * mlGradientScale;
   float r = sqrt(max(s * s * (a.x + a.y) + a.w, 1e-12) / max(a.x + a.y + a.w, 1e-12));
+#ifdef ML_MEAN_NORMALS
+  // The mean normal filter: the footprint's plain mean of the unit normals, E[w nz n] (its
+  // length: the spread, Toksvig 2005), without a spread for the clamped Lambert term.
+  mlNormalSpread = mat3(0.0);
+  return vec3(s * b.x, s * b.y, a.w) / r;
+#endif
   mat3 S = mat3(s * s * a.x, s * s * a.z, s * b.x, s * s * a.z, s * s * a.y, s * b.y, s * b.x,
     s * b.y, a.w);
   // The spread about the area-weighted mean for the clamped Lambert term (mlFilteredLambert):

@@ -159,7 +159,7 @@
     }
 #endif
 #if ML_METHOD != ML_TEXTURE_MAPPING
-#ifdef ML_VISIBLE_NORMALS
+#ifdef ML_NORMAL_MOMENTS
     // The base level's normal where it still shows (blended below over the first level).
     vec2 g = vec2(0.0);
     if (mlShadeLod < 1.0)
@@ -199,7 +199,7 @@
       g = mix(g, filtered, mlFilteredShare);
     }
 #endif
-#if defined(ML_LEVEL_OF_DETAIL) && !defined(ML_CONE_PACKED) && !defined(ML_VISIBLE_NORMALS)
+#if defined(ML_LEVEL_OF_DETAIL) && !defined(ML_CONE_PACKED) && !defined(ML_NORMAL_MOMENTS)
     // Only where the footprint's level is above the base: the bilinear blend of neighbouring
     // unit normals is a little short too, but near, the frame stays that of the exact march.
     mlNormalLength = mix(1.0, clamp(length(mlFilteredNormal), 1e-3, 1.0), clamp(mlShadeLod, 0.0, 1.0));
@@ -214,7 +214,7 @@
     vec3 pu = dPdu - mlN * (worldDepth * g.x);
     vec3 pv = dPdv - mlN * (worldDepth * g.y);
     mlShadingNormal = normalize(cross(pu, pv) * handedness);
-#ifdef ML_VISIBLE_NORMALS
+#ifdef ML_NORMAL_MOMENTS
     if (mlShadeLod > 0.0)
     {
       // Blended in over the first mip level, so that near frames are exactly those of level of

@@ -134,7 +134,7 @@ void mlAccumulateLights(vec3 posVC, vec3 normalVC, vec3 hit, mat3 worldToTexture
     {
       continue;
     }
-#ifdef ML_VISIBLE_NORMALS
+#ifdef ML_NORMAL_MOMENTS
     // The facets of the footprint shadowed by its own relief (mlFootprintShadowing).
     visible *= marchShadows ? mlFootprintShadowing(-lightDir) : 1.0;
 #endif
