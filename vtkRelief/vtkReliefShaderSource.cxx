@@ -355,8 +355,8 @@ void vtkReliefShaderSource::ReplaceValuesAfter(std::string& fs, const void* cell
           // -1.5..0 (docs/relief-methods.md, "Aliasing").
           ? "\n  mlFootprint = sqrt(abs(mlDUVdx.x * mlDUVdy.y - mlDUVdx.y * mlDUVdy.x) * "
             "mlTextureSize.x * mlTextureSize.y);" +
-            std::string(this->NormalMoments &&
-                    p->GetNormalFilter() != vtkReliefProperty::MeanNormalFilter
+            std::string(
+              this->NormalMoments && p->GetNormalFilter() != vtkReliefProperty::MeanNormalFilter
                 ? "\n  mlShadeLod = max(0.0, -0.5 + log2(max(mlFootprint * mlFootprint / "
                   "max(max(length(mlDUVdx * mlTextureSize), length(mlDUVdy * mlTextureSize)), "
                   "1e-30), 1e-30)));"
