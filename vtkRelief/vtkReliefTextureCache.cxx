@@ -183,7 +183,7 @@ bool vtkReliefTextureCache::Update(vtkOpenGLRenderWindow* renWin, vtkImageData* 
   bool needPyramid, bool needCones, bool floatTextures, bool normalMoments)
 {
   const bool wantMoments = normalMoments && mipmaps && !floatTextures;
-  // With the visible normal filter the march and the base normal read level 0 only, and the
+  // With the moments the march and the base normal read level 0 only, and the normal
   // filter reads the moments' mip chain: the depth and normals need no mip chain of their own.
   const bool baseMipmaps = mipmaps && !wantMoments;
   vtkDataArray* scalars = image->GetPointData()->GetScalars();

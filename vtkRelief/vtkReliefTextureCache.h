@@ -89,7 +89,7 @@ public:
 
   /**
    * Whether the normal's mip-mapped moments are uploaded (compact storage with mipmaps, asked
-   * for by level of detail's visible normal filter): mlMomentTexture0 holds E[w nx^2],
+   * for by level of detail, whose normal filters read them): mlMomentTexture0 holds E[w nx^2],
    * E[w ny^2], E[w nx ny], E[w nz^2] and mlMomentTexture1 E[w nx nz], E[w ny nz], E[w nx],
    * E[w ny] in RGBA16F, w = 1 / nz the texel's surface area over its base area (LEAN mapping,
    * Olano and Baker 2010, with the 3D second-moment matrix). The depth and normals then have

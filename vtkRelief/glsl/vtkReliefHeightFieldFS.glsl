@@ -192,7 +192,7 @@ float mlDepthAt(vec2 uv)
 }
 
 #ifdef ML_NORMAL_MOMENTS
-// Level of detail's visible normal filter (vtkReliefTextureCache::GetMomentsUploaded): moments
+// Level of detail's normal filters (vtkReliefTextureCache::GetMomentsUploaded): moments
 // of the baked unit normal n weighted by w = 1 / nz, the texel's surface area over its base.
 uniform sampler2D mlMomentTexture0; // E[w nx^2], E[w ny^2], E[w nx ny], E[w nz^2]
 uniform sampler2D mlMomentTexture1; // E[w nx nz], E[w ny nz], E[w nx], E[w ny]
