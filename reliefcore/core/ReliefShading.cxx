@@ -193,6 +193,25 @@ bool WallSharesFit(const ReliefWallShares& walls, int width)
 
 } // namespace relief_internal
 
+//------------------------------------------------------------------------------
+double EmitterSampleGeometry(const ReliefEmitterSample& e, const glm::dvec3& point,
+  const glm::dvec3& normal, glm::dvec3& l, double& r2)
+{
+  const glm::dvec3 toSample = e.Position - point;
+  const double d2 = glm::dot(toSample, toSample);
+  if (!(d2 > 0.0))
+  {
+    return 0.0;
+  }
+  r2 = d2;
+  l = toSample / std::sqrt(d2);
+  const double cosine = glm::dot(normal, l);
+  const double cosineEmitter = -glm::dot(e.Normal, l);
+  // Both must be positive: their product alone is also positive where the point faces away
+  // from a sample that faces away from it.
+  return cosine > 0.0 && cosineEmitter > 0.0 ? cosine * cosineEmitter / d2 : 0.0;
+}
+
 using namespace relief_internal;
 
 double ReliefVisibleShare(const HeightField& hf, const ReliefFrame& frame, const glm::dvec3& hit,

@@ -55,6 +55,16 @@ struct ReliefEmitterSample
   glm::dvec3 RadianceArea{ 0.0 };
 };
 
+/**
+ * The geometric factor of emitter sample e's irradiance at a point of unit normal `normal`,
+ * cos cos_e / r^2 (times RadianceArea, the irradiance the sample delivers unshadowed), with the
+ * unit direction l towards the sample and the squared distance r2. 0 unless the point faces the
+ * sample and the sample's front faces the point (both cosines positive), or where the sample is
+ * at the point (l, r2 then unset).
+ */
+MESOLIGHTRELIEFCORE_EXPORT double EmitterSampleGeometry(const ReliefEmitterSample& e,
+  const glm::dvec3& point, const glm::dvec3& normal, glm::dvec3& l, double& r2);
+
 /** How the light the relief reflects onto itself is modelled (see ReliefLighting::Albedo). */
 enum class ReliefInterReflection
 {

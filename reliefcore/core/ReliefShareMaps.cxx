@@ -82,22 +82,16 @@ void EmitterShadowAt(const HeightField& hf, const ReliefFrame& frame,
       continue;
     }
     const ReliefEmitterSample& e = samples[s];
-    const glm::dvec3 toLight = e.Position - point;
-    const double r2 = glm::dot(toLight, toLight);
-    if (!(r2 > 0.0))
-    {
-      continue;
-    }
-    const glm::dvec3 l = toLight / std::sqrt(r2);
-    const double cosine = glm::dot(normal, l);
-    const double cosineEmitter = -glm::dot(e.Normal, l);
+    glm::dvec3 l;
+    double r2 = 0.0;
+    const double geometry = EmitterSampleGeometry(e, point, normal, l, r2);
     // As ShadeReliefRay: the light must face the point and be above the macro plane.
-    if (!(cosine > 0.0 && cosineEmitter > 0.0 && glm::dot(frame.Normal, l) > 0.0))
+    if (!(geometry > 0.0 && glm::dot(frame.Normal, l) > 0.0))
     {
       continue;
     }
     const double weight =
-      cosine * cosineEmitter / r2 * Luminance(e.RadianceArea.x, e.RadianceArea.y, e.RadianceArea.z);
+      geometry * Luminance(e.RadianceArea.x, e.RadianceArea.y, e.RadianceArea.z);
     all[static_cast<std::size_t>(g)] += weight;
     if (Visible(hf, hit, frame.ToTexture(l), 1e-6))
     {

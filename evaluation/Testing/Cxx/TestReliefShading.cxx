@@ -603,3 +603,35 @@ TEST(ReliefShading, InterReflectedFormula)
   EXPECT_EQ(
     mesolight::ReliefInterReflected(ReliefInterReflection::MultiBounce, 0.6, 0.6, a, e), multi);
 }
+
+// The emitter sample's geometric factor, cos cos_e / r^2, against the point-light law, and zero
+// wherever either face turns away: also where both do, where the product of the two cosines alone
+// is positive (the negative case a product-only weight passes).
+TEST(ReliefShading, EmitterSampleGeometryNeedsBothFacesTurnedToEachOther)
+{
+  mesolight::ReliefEmitterSample e;
+  e.Position = glm::dvec3(0.0, 0.0, 2.0);
+  e.Normal = glm::dvec3(0.0, 0.0, -1.0); // faces down, at the point below
+  const glm::dvec3 point(0.0), up(0.0, 0.0, 1.0);
+  glm::dvec3 l;
+  double r2 = 0.0;
+  EXPECT_NEAR(mesolight::EmitterSampleGeometry(e, point, up, l, r2), 0.25, 1e-15);
+  EXPECT_NEAR(r2, 4.0, 1e-15);
+  EXPECT_NEAR(l.z, 1.0, 1e-15);
+  // Off to the side, facing down: 45 degrees from both normals, cos 45 cos 45 / r^2.
+  e.Position = glm::dvec3(1.0, 0.0, 1.0);
+  e.Normal = glm::dvec3(0.0, 0.0, -1.0);
+  EXPECT_NEAR(mesolight::EmitterSampleGeometry(e, point, up, l, r2), 0.5 / 2.0, 1e-12);
+  // The point turned away (the sample below its plane), the sample still facing it.
+  e.Position = glm::dvec3(0.0, 0.0, -2.0);
+  e.Normal = glm::dvec3(0.0, 0.0, 1.0);
+  EXPECT_EQ(mesolight::EmitterSampleGeometry(e, point, up, l, r2), 0.0);
+  // Both turned away: the cosines' product is positive, the sample still delivers nothing.
+  e.Normal = glm::dvec3(0.0, 0.0, -1.0);
+  const double product = glm::dot(up, l) * -glm::dot(e.Normal, l);
+  EXPECT_GT(product, 0.0) << "the negative case: a product-only weight counts this sample";
+  EXPECT_EQ(mesolight::EmitterSampleGeometry(e, point, up, l, r2), 0.0);
+  // At the point: no direction, nothing.
+  e.Position = point;
+  EXPECT_EQ(mesolight::EmitterSampleGeometry(e, point, up, l, r2), 0.0);
+}

@@ -117,15 +117,10 @@ std::vector<float> EmitterLightFactors(const LightField& field, const EmbreeScen
       for (std::size_t s = 0; s < samples.size(); ++s)
       {
         const ReliefEmitterSample& e = samples[s];
-        const glm::dvec3 toLight = e.Position - p;
-        const double r2 = glm::dot(toLight, toLight);
-        if (!(r2 > 0.0))
-        {
-          continue;
-        }
-        const glm::dvec3 l = toLight / std::sqrt(r2);
+        glm::dvec3 l;
+        double r2 = 0.0;
         const double weight =
-          glm::dot(surface.Normal, l) * -glm::dot(e.Normal, l) / r2 * luminance(e.RadianceArea);
+          EmitterSampleGeometry(e, p, surface.Normal, l, r2) * luminance(e.RadianceArea);
         if (!(weight > 0.0))
         {
           continue;
