@@ -6,6 +6,7 @@
 #include "ImageCompare.h"
 #include "OutputFile.h"
 #include "ReliefScene.h"
+#include "Timing.h"
 #include "vtkReliefMapper.h"
 #include "vtkReliefProperty.h"
 
@@ -51,6 +52,7 @@ struct Settings
   int Refine = 0;
   int CompareFilter = vtkReliefProperty::MeanNormalFilter; // the "mean" row's normal filter
   int CompareFarViewRays = 0; // the "mean" row's vtkReliefProperty::FarViewRays, 0: the default's
+  int Frames = 5;             // timed frames of each row's shaded frame (median ms), 0: none
   std::string CsvFile;
   std::string PlotFile;
 };
@@ -60,10 +62,16 @@ struct ClassFigures
   long long Pixels = 0;
   double ErrorBefore = 0.0; // mean |frame - box-filtered reference|, 8-bit levels over RGB
   double ErrorDefault = 0.0;
-  double ErrorMean = 0.0;     // level of detail with the mean normal filter
+  double ErrorMean = 0.0;     // the third row: level of detail with --compare-filter's filter
   double SamplesBefore = 0.0; // relief-texture samples per pixel
   double SamplesDefault = 0.0;
   double SamplesMean = 0.0;
+};
+
+// Median ms per frame of the rows' shaded frames (0 when not timed).
+struct FrameTimes
+{
+  double Before = 0.0, Default = 0.0, Mean = 0.0;
 };
 
 struct CaseRow
@@ -77,6 +85,7 @@ struct CaseRow
   double NearHitChangeMean = 0.0;
   // Far pixels' mean of frame - reference (8-bit levels): bias, where the error is noise or not.
   double FarSignedBefore = 0.0, FarSignedDefault = 0.0, FarSignedMean = 0.0;
+  FrameTimes Ms;
 };
 
 bool IsFile(const std::string& map)
@@ -92,8 +101,10 @@ std::string MapLabel(const std::string& map)
   return dot == std::string::npos ? name : name.substr(0, dot);
 }
 
+// Draws one frame of the variant; with ms, also the median time of settings.Frames more frames of
+// the same window (the first, captured, compiled the shaders).
 bool RenderVariant(const Settings& settings, ReliefSceneOptions options, Variant variant,
-  int output, int scale, Frame& frame, int& texels, std::string& error)
+  int output, int scale, Frame& frame, int& texels, std::string& error, double* ms = nullptr)
 {
   vtkNew<vtkReliefProperty> defaults; // an untouched property: the default
   switch (variant)
@@ -154,6 +165,15 @@ bool RenderVariant(const Settings& settings, ReliefSceneOptions options, Variant
   {
     error = "the frame was not rendered (a shader failed?)";
     return false;
+  }
+  if (ms)
+  {
+    *ms = MedianMilliseconds(settings.Frames,
+      [&]
+      {
+        window->Render();
+        window->WaitForCompletion();
+      });
   }
   return true;
 }
@@ -265,10 +285,14 @@ bool MeasureCase(const Settings& settings, const std::string& map, double angle,
   Frame hitsBefore[2], hitsDefault[2];
   const int shaded = vtkReliefProperty::ShadedOutput;
   const int samples = vtkReliefProperty::SampleCountOutput;
+  const bool timed = settings.Frames > 0;
   if (!RenderVariant(settings, options, Variant::Reference, shaded, s, reference, texels, error) ||
-    !RenderVariant(settings, options, Variant::Before, shaded, 1, before, texels, error) ||
-    !RenderVariant(settings, options, Variant::Default, shaded, 1, current, texels, error) ||
-    !RenderVariant(settings, options, Variant::Mean, shaded, 1, mean, texels, error) ||
+    !RenderVariant(settings, options, Variant::Before, shaded, 1, before, texels, error,
+      timed ? &row.Ms.Before : nullptr) ||
+    !RenderVariant(settings, options, Variant::Default, shaded, 1, current, texels, error,
+      timed ? &row.Ms.Default : nullptr) ||
+    !RenderVariant(settings, options, Variant::Mean, shaded, 1, mean, texels, error,
+      timed ? &row.Ms.Mean : nullptr) ||
     !RenderVariant(settings, options, Variant::Mean, samples, 1, samplesMean, texels, error) ||
     !RenderVariant(settings, options, Variant::Before, samples, 1, samplesBefore, texels, error) ||
     !RenderVariant(
@@ -391,11 +415,12 @@ int RunReliefAliasingBenchmark(const std::vector<std::string>& args)
     "Usage: mesolight bench relief-aliasing [options]\n"
     "The default relief (an untouched vtkReliefProperty: level of detail on, visible normals), "
     "the\n"
-    "same with level of detail off, and with the mean normal filter (Toksvig),\n"
+    "same with level of detail off, and a third row (by default the mean normal filter, Toksvig),\n"
     "against the exact relief (maximum-mipmap tracing, 128 iterations) rendered at S x S times\n"
     "the resolution and box-filtered: S^2 exact subsamples per pixel. Per map, view angle and\n"
     "distance: mean colour error over all, near (footprint <= 1 texel) and far pixels, the\n"
-    "relief-texture samples per pixel, and how far level of detail moves near hits.\n");
+    "relief-texture samples per pixel, how far level of detail moves near hits, and each row's\n"
+    "time per frame.\n");
   cl.AddValue("--maps", "LIST", "procedural patterns and depth image files", "Stone");
   cl.AddFlag("--height", "the image files store height (white = high) rather than depth");
   cl.AddValue("--resolution", "N", "texels per side of the procedural maps", "1024");
@@ -418,8 +443,11 @@ int RunReliefAliasingBenchmark(const std::vector<std::string>& args)
   cl.AddValue("--compare-far-view-rays", "N",
     "the third row's most view rays per far pixel (vtkReliefProperty::FarViewRays; 1: one ray "
     "per pixel, the default before), default: the default's");
+  cl.AddValue("--frames", "N",
+    "timed frames of each row's shaded frame after the one measured (median ms; 0: not timed)",
+    "5");
   cl.AddValue("--csv", "FILE", "write one CSV row per case");
-  cl.AddValue("--plot", "FILE.png", "error against footprint: off, mean filter and default");
+  cl.AddValue("--plot", "FILE.png", "error against footprint: off, the third row and default");
   int exitCode = 0;
   if (!cl.ParseArguments(args, exitCode))
   {
@@ -457,6 +485,7 @@ int RunReliefAliasingBenchmark(const std::vector<std::string>& args)
     !cl.GetSize("--size", 8, 4096, settings.Width, settings.Height_, error) ||
     !cl.GetInt("--supersampling", 1, 16, settings.Supersampling, error) ||
     !cl.GetDouble("--depth-scale", 1e-4, 10.0, settings.DepthScale, error) ||
+    !cl.GetInt("--frames", 0, 1000, settings.Frames, error) ||
     (cl.Has("--compare-far-view-rays") &&
       !cl.GetInt("--compare-far-view-rays", 1, 8, settings.CompareFarViewRays, error)))
   {
@@ -483,6 +512,14 @@ int RunReliefAliasingBenchmark(const std::vector<std::string>& args)
   const std::string compareRays = settings.CompareFarViewRays > 0
     ? ", FarViewRays " + std::to_string(settings.CompareFarViewRays)
     : std::string();
+  // The third row, as the table, the summary and the chart name it.
+  const std::string third =
+    std::string(settings.CompareFilter == vtkReliefProperty::MeanNormalFilter
+        ? "mean normal filter (Toksvig)"
+        : settings.CompareFilter == vtkReliefProperty::VisibleNormalFilter
+        ? "visible normal filter without height-correlated masking"
+        : "default's normal filter") +
+    compareRays;
   out << "Relief aliasing: " << settings.Width << "x" << settings.Height_ << " pixels, depth scale "
       << settings.DepthScale << "; reference: max-mipmap 128 (exact) at " << settings.Supersampling
       << "x" << settings.Supersampling << " subsamples per pixel, box-filtered.\n"
@@ -493,23 +530,21 @@ int RunReliefAliasingBenchmark(const std::vector<std::string>& args)
       << (settings.Method.empty() ? defaults->GetRefinementSteps() : settings.Refine)
       << ", level of detail off; default: the same with level of detail on and the default normal\n"
       << "filter (visible normals, second moments, height-correlated masking; several view rays\n"
-      << "per far pixel); mean: level of detail with the "
-      << (settings.CompareFilter == vtkReliefProperty::MeanNormalFilter
-             ? "mean normal filter (Toksvig)"
-             : settings.CompareFilter == vtkReliefProperty::VisibleNormalFilter
-             ? "visible normal filter without height-correlated masking"
-             : "default's normal filter")
-      << (settings.Method.empty() ? "" : " (the method above)") << compareRays << ".\n"
+      << "per far pixel); 3rd (third row): level of detail with the " << third
+      << (settings.Method.empty() ? "" : " (the method above)") << ".\n"
       << "err: mean |colour - reference| in 8-bit levels; fp: median footprint, texels per pixel;\n"
       << "far: pixels whose footprint exceeds one texel; spp: relief-texture samples per pixel;\n"
-      << "near hit: how far the default moves hits of near pixels from before's, texels (max).\n\n";
+      << "near hit: how far the default moves hits of near pixels from before's, texels (max);\n"
+      << "ms: the whole frame's median milliseconds over " << settings.Frames
+      << " frames (before, default, 3rd).\n\n";
   out << std::left << std::setw(18) << "map" << std::right << std::setw(5) << "deg" << std::setw(6)
       << "dist" << std::setw(6) << "fp" << std::setw(6) << "far%" << std::setw(8) << "err bef"
       << std::setw(8) << "err def" << std::setw(7) << "ratio" << std::setw(9) << "far bef"
-      << std::setw(9) << "far def" << std::setw(7) << "ratio" << std::setw(9) << "far mean"
+      << std::setw(9) << "far def" << std::setw(7) << "ratio" << std::setw(9) << "far 3rd"
       << std::setw(7) << "ratio" << std::setw(9) << "near bef" << std::setw(9) << "near def"
       << std::setw(9) << "spp bef" << std::setw(9) << "spp def" << std::setw(9) << "far spp"
-      << std::setw(9) << "near hit"
+      << std::setw(9) << "near hit" << std::setw(8) << "ms bef" << std::setw(8) << "ms def"
+      << std::setw(8) << "ms 3rd"
       << "\n";
   std::vector<CaseRow> rows;
   for (const std::string& map : settings.Maps)
@@ -537,7 +572,10 @@ int RunReliefAliasingBenchmark(const std::vector<std::string>& args)
             << row.Near.ErrorBefore << std::setw(9) << row.Near.ErrorDefault << std::setprecision(1)
             << std::setw(9) << row.Far.SamplesBefore << std::setw(9) << row.Far.SamplesDefault
             << std::setw(9) << Ratio(row.Far.SamplesDefault, row.Far.SamplesBefore)
-            << std::setprecision(3) << std::setw(9) << row.NearHitChangeMax << "\n";
+            << std::setprecision(3) << std::setw(9) << row.NearHitChangeMax << std::setprecision(1)
+            << std::setw(8) << row.Ms.Before << std::setw(8) << row.Ms.Default << std::setw(8)
+            << row.Ms.Mean << "\n"
+            << std::setprecision(3); // the summary's figures below
         out.unsetf(std::ios::fixed);
         out.flush();
         rows.push_back(row);
@@ -548,6 +586,7 @@ int RunReliefAliasingBenchmark(const std::vector<std::string>& args)
   // Summary: the error ratio over all measured pixels of every case, and per case.
   double before = 0.0, current = 0.0, farBefore = 0.0, farCurrent = 0.0, sb = 0.0, sd = 0.0;
   double farMean = 0.0, sm = 0.0;
+  FrameTimes ms; // summed over the cases
   long long pixels = 0, farPixels = 0, met = 0, withFar = 0, better = 0;
   double nearHitMax = 0.0;
   for (const CaseRow& r : rows)
@@ -563,6 +602,9 @@ int RunReliefAliasingBenchmark(const std::vector<std::string>& args)
     sd += r.Far.SamplesDefault * r.Far.Pixels;
     farPixels += r.Far.Pixels;
     nearHitMax = std::max(nearHitMax, r.NearHitChangeMax);
+    ms.Before += r.Ms.Before;
+    ms.Default += r.Ms.Default;
+    ms.Mean += r.Ms.Mean;
     if (r.Far.Pixels > 0)
     {
       ++withFar;
@@ -576,12 +618,18 @@ int RunReliefAliasingBenchmark(const std::vector<std::string>& args)
       << farCurrent / std::max<long long>(farPixels, 1) << " (" << Ratio(farCurrent, farBefore)
       << "x), samples per far pixel " << sb / std::max<long long>(farPixels, 1) << " -> "
       << sd / std::max<long long>(farPixels, 1) << " (" << Ratio(sd, sb) << "x)\n"
-      << "mean normal filter: far error " << farMean / std::max<long long>(farPixels, 1) << " ("
+      << "3rd, " << third << ": far error " << farMean / std::max<long long>(farPixels, 1) << " ("
       << Ratio(farMean, farBefore) << "x before), samples per far pixel "
       << sm / std::max<long long>(farPixels, 1) << " (" << Ratio(sm, sb) << "x)\n"
       << "cases with far error <= 0.5x before: " << met << " of " << withFar
       << "; default below both before and mean: " << better << " of " << withFar
       << "; largest move of a near hit: " << nearHitMax << " texels\n";
+  if (settings.Frames > 0)
+  {
+    out << "ms per frame, summed over the cases: before " << ms.Before << ", default " << ms.Default
+        << " (" << Ratio(ms.Default, ms.Before) << "x), 3rd " << ms.Mean << " ("
+        << Ratio(ms.Mean, ms.Before) << "x)\n";
+  }
   out << "signed far error (frame - reference, levels; before / default / third row):";
   for (const CaseRow& r : rows)
   {
@@ -601,8 +649,9 @@ int RunReliefAliasingBenchmark(const std::vector<std::string>& args)
     csv << "map,view_deg,distance,median_footprint_texels,pixels,far_pixels,error_before,"
            "error_default,far_error_before,far_error_default,near_error_before,"
            "near_error_default,far_spp_before,far_spp_default,near_spp_before,near_spp_default,"
-           "near_hit_change_max_texels,near_hit_change_mean_texels,error_mean_filter,"
-           "far_error_mean_filter,near_error_mean_filter,far_spp_mean_filter\n";
+           "near_hit_change_max_texels,near_hit_change_mean_texels,error_third_row,"
+           "far_error_third_row,near_error_third_row,far_spp_third_row,ms_before,ms_default,"
+           "ms_third_row\n";
     for (const CaseRow& r : rows)
     {
       csv << r.Map << ',' << r.Angle << ',' << r.Distance << ',' << r.MedianFootprint << ','
@@ -611,7 +660,8 @@ int RunReliefAliasingBenchmark(const std::vector<std::string>& args)
           << r.Near.ErrorBefore << ',' << r.Near.ErrorDefault << ',' << r.Far.SamplesBefore << ','
           << r.Far.SamplesDefault << ',' << r.Near.SamplesBefore << ',' << r.Near.SamplesDefault
           << ',' << r.NearHitChangeMax << ',' << r.NearHitChangeMean << ',' << r.All.ErrorMean
-          << ',' << r.Far.ErrorMean << ',' << r.Near.ErrorMean << ',' << r.Far.SamplesMean << "\n";
+          << ',' << r.Far.ErrorMean << ',' << r.Near.ErrorMean << ',' << r.Far.SamplesMean << ','
+          << r.Ms.Before << ',' << r.Ms.Default << ',' << r.Ms.Mean << "\n";
     }
     if (!csv)
     {
@@ -628,7 +678,7 @@ int RunReliefAliasingBenchmark(const std::vector<std::string>& args)
     chart.YLabel = "mean colour error (8-bit levels)";
     ChartSeries b{ "level of detail off (before)", {}, {} };
     ChartSeries d{ "default (visible normals)", {}, {} };
-    ChartSeries m{ "mean normal filter", {}, {} };
+    ChartSeries m{ "3rd: " + third, {}, {} };
     for (const CaseRow& r : rows)
     {
       b.X.push_back(r.MedianFootprint);

@@ -1,13 +1,13 @@
 # SPDX-License-Identifier: BSD-3-Clause
 # `mesolight bench relief-aliasing` end to end on a tiny run: one distant and one near view of a
 # fine procedural map; the table, the CSV and the chart appear, the distant view's far pixels are
-# closer to the supersampled exact frame with the default (level of detail) than without, and no
-# near hit moves. Bad arguments exit with 2.
+# closer to the supersampled exact frame with the default (level of detail) than without, no
+# near hit moves, and each row's frame time is printed. Bad arguments exit with 2.
 cmake_minimum_required(VERSION 3.16) # quoted strings in if() are strings (CMP0054)
 include("${CMAKE_CURRENT_LIST_DIR}/RunTool.cmake")
 cli_fresh_work()
 cli_execute(bench relief-aliasing --maps Stone --resolution 1024 --angles 45 --distances 0.05,2
-            --size 80x60 --supersampling 4 --csv "${WORK}/aliasing.csv"
+            --size 80x60 --supersampling 4 --frames 2 --csv "${WORK}/aliasing.csv"
             --plot "${WORK}/aliasing.png")
 message("${cli_stdout}")
 if (NOT cli_rc EQUAL 0)
@@ -31,11 +31,17 @@ list(GET far 9 default)
 if (NOT default LESS before)
   message(FATAL_ERROR "distant view: far error default ${default}, before ${before}")
 endif ()
+if (NOT cli_stdout MATCHES "ms per frame, summed over the cases: before [0-9.e+-]+, default [0-9.e+-]+ ")
+  message(FATAL_ERROR "no frame times")
+endif ()
+if (NOT lines MATCHES "ms_before,ms_default,ms_third_row")
+  message(FATAL_ERROR "aliasing.csv has no frame time columns")
+endif ()
 if (NOT cli_stdout MATCHES "largest move of a near hit: 0 texels")
   message(FATAL_ERROR "a near hit moved with level of detail")
 endif ()
 foreach (bad "--method;no-such-method" "--steps;x" "--supersampling;0" "--compare-filter;none"
-             "--compare-far-view-rays;0")
+             "--compare-far-view-rays;0" "--frames;-1")
   cli_execute(bench relief-aliasing ${bad})
   if (NOT cli_rc EQUAL 2)
     message(FATAL_ERROR "bench relief-aliasing ${bad} exited with ${cli_rc}, not 2")
