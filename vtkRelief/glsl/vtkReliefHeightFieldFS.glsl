@@ -37,6 +37,25 @@ ivec2 mlAddressTexel(ivec2 t, ivec2 size)
   return mlRepeatTexture != 0 ? (t % size + size) % size : clamp(t, ivec2(0), size - 1);
 }
 
+// The depths of level-0 texels i, i + (1, 0), i + (0, 1) and i + (1, 1), as the samplers address
+// them (wrapped or clamped), as (d00, d10, d01, d11). With ML_TEXEL_GATHER (compact storage,
+// where a shader reads quads: maximum mipmaps, the depth's own normals) one gather at their
+// shared corner, which is exact (half a texel from any rounding of the sampler's texel choice);
+// textureGather returns (i0, j1), (i1, j1), (i1, j0), (i0, j0). Otherwise four fetches.
+vec4 mlTexelQuad(ivec2 i)
+{
+#ifdef ML_TEXEL_GATHER
+  return textureGather(mlReliefTexture, vec2(i + 1) / mlTextureSize).wzxy;
+#else
+  ivec2 size = ivec2(mlTextureSize);
+  ivec2 lo = mlAddressTexel(i, size), hi = mlAddressTexel(i + 1, size);
+  return vec4(texelFetch(mlReliefTexture, lo, 0).ML_DEPTH_CHANNEL,
+    texelFetch(mlReliefTexture, ivec2(hi.x, lo.y), 0).ML_DEPTH_CHANNEL,
+    texelFetch(mlReliefTexture, ivec2(lo.x, hi.y), 0).ML_DEPTH_CHANNEL,
+    texelFetch(mlReliefTexture, hi, 0).ML_DEPTH_CHANNEL);
+#endif
+}
+
 // The four level-0 texels a bilinear lookup at uv weighs, (i0, j0), (i1, j0), (i0, j1), (i1, j1)
 // as the samplers address them, and its fraction f.
 void mlBilinearTexels(vec2 uv, out ivec2 t[4], out vec2 f)
@@ -217,15 +236,9 @@ vec3 mlOctahedralNormal(vec2 e);
 vec3 mlSurfaceCellNormal(ivec2 t, out float depth)
 {
   ML_COUNT_SAMPLE();
-  ivec2 size = ivec2(mlTextureSize);
-  ivec2 t1 = t + 1;
-  t1 = mlAddressTexel(t1, size);
-  float d00 = texelFetch(mlReliefTexture, t, 0).ML_DEPTH_CHANNEL;
-  float d10 = texelFetch(mlReliefTexture, ivec2(t1.x, t.y), 0).ML_DEPTH_CHANNEL;
-  float d01 = texelFetch(mlReliefTexture, ivec2(t.x, t1.y), 0).ML_DEPTH_CHANNEL;
-  float d11 = texelFetch(mlReliefTexture, t1, 0).ML_DEPTH_CHANNEL;
-  depth = 0.25 * (d00 + d10 + d01 + d11);
-  vec2 g = 0.5 * vec2(d10 - d00 + d11 - d01, d01 - d00 + d11 - d10); // depth per texel
+  vec4 d = mlTexelQuad(t); // d00, d10, d01, d11
+  depth = 0.25 * (d.x + d.y + d.z + d.w);
+  vec2 g = 0.5 * vec2(d.y - d.x + d.w - d.z, d.z - d.x + d.w - d.y); // depth per texel
   float k = mlGradientScale > 0.0 ? 1.0 / mlGradientScale : 0.0;
   return normalize(vec3(k * mlTextureSize.x * g, 1.0));
 }
@@ -657,16 +670,11 @@ vec2 mlGradientFromNormal(vec3 n)
 vec2 mlSurfaceGradient(vec2 uv)
 {
   ML_COUNT_SAMPLE();
-  ivec2 t[4];
-  vec2 f;
-  mlBilinearTexels(uv, t, f);
-  float d[4];
-  for (int k = 0; k < 4; ++k)
-  {
-    d[k] = texelFetch(mlReliefTexture, t[k], 0).ML_DEPTH_CHANNEL;
-  }
-  return vec2(mix(d[1] - d[0], d[3] - d[2], f.y), mix(d[2] - d[0], d[3] - d[1], f.x)) *
-    mlTextureSize;
+  vec2 x = uv * mlTextureSize - 0.5;
+  ivec2 i0 = ivec2(floor(x));
+  vec2 f = x - vec2(i0);
+  vec4 d = mlTexelQuad(i0); // d00, d10, d01, d11
+  return vec2(mix(d.y - d.x, d.w - d.z, f.y), mix(d.z - d.x, d.w - d.y, f.x)) * mlTextureSize;
 }
 
 // (d depth / du, d depth / dv) at uv, at level mlMarchLod: the slope the parallax methods step
@@ -757,8 +765,7 @@ vec4 mlCellCorners(ivec2 k)
     texelFetch(mlReliefTexture, ivec2(lo.x, hi.y), 0).a, texelFetch(mlReliefTexture, hi, 0).a);
 #else
   ivec2 inner = min(max(k, ivec2(1)), max(size - 1, ivec2(0)));
-  vec4 g = textureGather(mlReliefTexture, vec2(inner) / mlTextureSize);
-  vec4 d = g.wzxy;
+  vec4 d = mlTexelQuad(inner - 1);
   d = k.x <= 0 ? d.xxzz : (k.x >= size.x ? d.yyww : d);
   d = k.y <= 0 ? d.xyxy : (k.y >= size.y ? d.zwzw : d);
   return d;
