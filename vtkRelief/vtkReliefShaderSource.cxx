@@ -223,12 +223,13 @@ void vtkReliefShaderSource::ReplaceValuesAfter(std::string& fs, const void* cell
     defines += "#define ML_PYRAMID_FIRST_LEVEL " +
       std::to_string(vtkMinDepthPyramidTexture::FirstLevel) + "\n";
   }
-  if (!this->FloatTextures && (method == vtkReliefProperty::MaximumMipmap || this->NormalsFromDepth))
+  if (!this->FloatTextures &&
+    (method == vtkReliefProperty::MaximumMipmap || this->NormalsFromDepth))
   {
     // mlTexelQuad gathers four depth texels at once (GLSL 4.00; VTK declares 1.50): the
     // maximum-mipmap march's cell corners, the surface's cells and gradient.
-    vtkShaderProgram::Substitute(fs, "//VTK::System::Dec",
-      "//VTK::System::Dec\n#extension GL_ARB_texture_gather : require\n");
+    vtkShaderProgram::Substitute(
+      fs, "//VTK::System::Dec", "//VTK::System::Dec\n#extension GL_ARB_texture_gather : require\n");
     defines += "#define ML_TEXEL_GATHER\n";
   }
   if (p->GetSelfShadowing())
