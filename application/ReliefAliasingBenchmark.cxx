@@ -437,8 +437,8 @@ int RunReliefAliasingBenchmark(const std::vector<std::string>& args)
     "--steps", "L+R", "the --method's linear (or iteration) and refinement steps", "10+8");
   cl.AddFlag("--no-shadows", "self-shadowing off in every frame, the reference's too");
   cl.AddValue("--compare-filter", "NAME",
-    "the normal filter of the third row: mean (Toksvig), visible (the moments without "
-    "height-correlated masking) or masked (the default's)",
+    "the normal filter of the third row: mean (Toksvig), visible (the moments: facets turned "
+    "away count negatively) or masked (facets turned away left out; the default's)",
     "mean");
   cl.AddValue("--compare-far-view-rays", "N",
     "the third row's most view rays per far pixel (vtkReliefProperty::FarViewRays; 1: one ray "
@@ -517,7 +517,7 @@ int RunReliefAliasingBenchmark(const std::vector<std::string>& args)
     std::string(settings.CompareFilter == vtkReliefProperty::MeanNormalFilter
         ? "mean normal filter (Toksvig)"
         : settings.CompareFilter == vtkReliefProperty::VisibleNormalFilter
-        ? "visible normal filter without height-correlated masking"
+        ? "visible normal filter (the moments, facets turned away unmasked)"
         : "default's normal filter") +
     compareRays;
   out << "Relief aliasing: " << settings.Width << "x" << settings.Height_ << " pixels, depth scale "
@@ -529,7 +529,7 @@ int RunReliefAliasingBenchmark(const std::vector<std::string>& args)
       << " " << (settings.Method.empty() ? defaults->GetLinearSteps() : settings.Linear) << "+"
       << (settings.Method.empty() ? defaults->GetRefinementSteps() : settings.Refine)
       << ", level of detail off; default: the same with level of detail on and the default normal\n"
-      << "filter (visible normals, second moments, height-correlated masking; several view rays\n"
+      << "filter (visible normals, second moments, facets turned away masked; several view rays\n"
       << "per far pixel); 3rd (third row): level of detail with the " << third
       << (settings.Method.empty() ? "" : " (the method above)") << ".\n"
       << "err: mean |colour - reference| in 8-bit levels; fp: median footprint, texels per pixel;\n"

@@ -67,7 +67,7 @@ void AddSceneOptions(CommandLine& cl)
   cl.AddFlag("--no-level-of-detail", "no filtering where texels are smaller than pixels");
   cl.AddValue("--normal-filter", "NAME",
     "with level of detail, the shading normal over a pixel footprint: mean (Toksvig), visible "
-    "(the visible normal's moments) or masked (with height-correlated masking; the mapper's "
+    "(the visible normal's moments) or masked (the facets the viewer sees; the mapper's "
     "default)");
   cl.AddValue("--far-view-rays", "N",
     "with level of detail, the most view rays averaged across a far pixel, 1-8 (1: one ray; the "

@@ -24,7 +24,7 @@ static_assert(sizeof(MethodNames) / sizeof(MethodNames[0]) == vtkReliefProperty:
   "one name per method");
 const char* const NormalFilterNames[] = { "mean", "visible", "masked" };
 static_assert(sizeof(NormalFilterNames) / sizeof(NormalFilterNames[0]) ==
-    vtkReliefProperty::HeightMaskedNormalFilter + 1,
+    vtkReliefProperty::MaskedNormalFilter + 1,
   "one name per normal filter");
 } // namespace
 
@@ -99,7 +99,7 @@ const char* vtkReliefProperty::GetMethodName(int method)
 //------------------------------------------------------------------------------
 const char* vtkReliefProperty::GetNormalFilterName(int filter)
 {
-  if (filter < MeanNormalFilter || filter > HeightMaskedNormalFilter)
+  if (filter < MeanNormalFilter || filter > MaskedNormalFilter)
   {
     return "unknown";
   }
@@ -109,7 +109,7 @@ const char* vtkReliefProperty::GetNormalFilterName(int filter)
 //------------------------------------------------------------------------------
 int vtkReliefProperty::GetNormalFilterFromName(const char* name)
 {
-  for (int f = MeanNormalFilter; name && f <= HeightMaskedNormalFilter; ++f)
+  for (int f = MeanNormalFilter; name && f <= MaskedNormalFilter; ++f)
   {
     if (std::strcmp(name, NormalFilterNames[f]) == 0)
     {

@@ -188,23 +188,25 @@ public:
      * The footprint's visible mean normal: second moments of the normal, mip-mapped (LEAN
      * mapping, Olano and Baker 2010), weighted by the area each facet shows the viewer
      * (compact storage, one more RGBA16F texture pair from mip level 2 up, 1.33 bytes per
-     * texel; float storage uses the mean). Facets the view hides below their neighbours still
-     * count: the default before HeightMaskedNormalFilter.
+     * texel; float storage uses the mean). Facets turned from the viewer count negatively (as
+     * the ones hiding them count positively): the default before MaskedNormalFilter.
      */
     VisibleNormalFilter = 1,
     /**
-     * The visible normal filter with height-correlated masking (the default): where the
-     * footprint's level is computed from the stored normals (levels 0 and 1), each facet counts
-     * by the share of it the view sees over its neighbours, by Smith's masking with heights
-     * (Heitz 2014), so a grazing view weighs the tops and not the walls of the cracks between
-     * them. No more memory; up to 20 more depth fetches per far pixel.
+     * The visible normal of the facets the viewer sees (the default): where the footprint's
+     * level is computed per texel (levels 0 and 1), each facet counts by the area it turns to
+     * the viewer, and facets turned away are left out (masked) instead of counting negatively as
+     * in the moments, so a grazing view weighs the tops and faces turned to it and not the far
+     * walls of the cracks. No more memory. (Smith's height-correlated masking on top of it,
+     * Heitz 2014, stopped paying once far pixels took several view rays: docs/relief-methods.md,
+     * "Masked facets".)
      */
-    HeightMaskedNormalFilter = 2
+    MaskedNormalFilter = 2
   };
 
   ///@{
-  /** NormalFilterKind (default HeightMaskedNormalFilter); read only with LevelOfDetail on. */
-  mesolightSetClampMacro(NormalFilter, int, MeanNormalFilter, HeightMaskedNormalFilter);
+  /** NormalFilterKind (default MaskedNormalFilter); read only with LevelOfDetail on. */
+  mesolightSetClampMacro(NormalFilter, int, MeanNormalFilter, MaskedNormalFilter);
   vtkGetMacro(NormalFilter, int);
   ///@}
 
@@ -463,7 +465,7 @@ protected:
   bool AdaptiveSteps = false;
   int MinimumSteps = 4;
   bool LevelOfDetail = true;
-  int NormalFilter = HeightMaskedNormalFilter;
+  int NormalFilter = MaskedNormalFilter;
   int FarViewRays = 3;
   double Exposure; // mesolight::ReliefLightSetDisplay, set in the constructor
   double Emission[3] = { 0.0, 0.0, 0.0 };

@@ -132,7 +132,7 @@ std::string vtkReliefShaderSource::Key() const
     (p->GetToneMapping() ? "T" : "t") + (p->GetShadowCulling() ? "K" : "k") +
     (this->HasIrradianceProbes ? "P" : "p") + (p->GetEncodeSRGB() ? "G" : "g") +
     (this->NormalMoments && p->GetLevelOfDetail()
-        ? (p->GetNormalFilter() == vtkReliefProperty::HeightMaskedNormalFilter ? "H"
+        ? (p->GetNormalFilter() == vtkReliefProperty::MaskedNormalFilter       ? "H"
               : p->GetNormalFilter() == vtkReliefProperty::VisibleNormalFilter ? "M"
                                                                                : "W") +
           std::to_string(p->GetFarViewRays())
@@ -289,9 +289,9 @@ void vtkReliefShaderSource::ReplaceValuesAfter(std::string& fs, const void* cell
       {
         defines += "#define ML_MEAN_NORMALS\n";
       }
-      else if (filter == vtkReliefProperty::HeightMaskedNormalFilter)
+      else if (filter == vtkReliefProperty::MaskedNormalFilter)
       {
-        defines += "#define ML_HEIGHT_MASKING\n";
+        defines += "#define ML_MASKED_FACETS\n";
       }
       const int output = p->GetOutput();
       // An odd count, so that one ray passes through the pixel's centre; with the visible

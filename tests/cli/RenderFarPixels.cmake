@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: BSD-3-Clause
 # `render --far-view-rays` and `--normal-filter` reach the mapper: at a grazing view of a fine
 # 512^2 stone in a small frame (far pixels), one view ray and the mean normal each draw another
-# image than the defaults (3 rays, the height-masked visible normal); with level of detail off
+# image than the defaults (3 rays, the masked facets' visible normal); with level of detail off
 # neither changes anything (both act only through it). Bad values are refused naming the option.
 include("${CMAKE_CURRENT_LIST_DIR}/RunTool.cmake")
 cli_fresh_work()

@@ -330,118 +330,56 @@ void mlAddLevelMoments(vec2 uv, int level, float k, inout vec4 a, inout vec4 b)
 
 mat3 mlNormalSpread = mat3(0.0); // the footprint's covariance of n, (T, B, N) frame (below)
 
-#ifdef ML_HEIGHT_MASKING
-// Height-correlated masking (ML_HEIGHT_MASKING): the facets of the levels computed from the
-// stored normals (0 and 1), each with its depth, so that a grazing view weighs the ones it sees.
-#define ML_MAX_FACETS 20
-vec3 mlFacetNormal[ML_MAX_FACETS]; // unit, at the rendering's depth scale
-float mlFacetBase[ML_MAX_FACETS];   // the share of the footprint's base (bilinear weight)
-float mlFacetDepth[ML_MAX_FACETS];
-float mlFacetLower[ML_MAX_FACETS]; // the share of the surface at or below the facet
-int mlFacetCount = 0;
-
-// Smith's Lambda for direction l ((T, B, N) frame) over a Gaussian of the gathered facets'
-// slopes along its azimuth (0 overhead or where the facets do not spread).
-float mlFacetLambda(vec3 l)
+#ifdef ML_MASKED_FACETS
+// The masked facet filter (ML_MASKED_FACETS): the facets of the levels computed per texel (0 and
+// 1), each weighed by the area it turns to the viewer, w max(0, n.v), so that facets turned away
+// are left out (masked) instead of counting negatively as they do in the moments (S v, below).
+// Smith's height-correlated masking on top (C(h)^Lambda, Heitz 2014) no longer paid once far
+// pixels took several view rays (docs/relief-methods.md, "Masked facets"); without it each facet
+// adds to running sums as it is read: their seen area, its first and second moments.
+struct mlSeenFacets
 {
-  float sine = length(l.xy);
-  if (sine <= 1e-4 || l.z <= 1e-4)
-  {
-    return 0.0;
-  }
-  vec2 d = l.xy / sine;
-  float sum = 0.0, mean = 0.0, square = 0.0;
-  for (int i = 0; i < mlFacetCount; ++i)
-  {
-    vec3 n = mlFacetNormal[i];
-    float slope = -dot(n.xy, d) / max(n.z, 1.0 / 16.0);
-    sum += mlFacetBase[i];
-    mean += mlFacetBase[i] * slope;
-    square += mlFacetBase[i] * slope * slope;
-  }
-  mean /= max(sum, 1e-12);
-  float variance = max(square / max(sum, 1e-12) - mean * mean, 0.0);
-  if (variance <= 1e-8)
-  {
-    return 0.0;
-  }
-  float a = l.z / (sine * sqrt(2.0 * variance));
-  return max(mlNormalCdf(1.4142135624 * a) - 1.0 + exp(-a * a) / (3.5449077018 * a), 0.0);
-}
+  float Area;
+  vec3 Mean;
+  mat3 Second;
+};
 
-void mlAddTexelFacet(ivec2 t, float k)
+// Adds level-0 texel t's facet with base weight k as view direction v ((T, B, N) frame) sees it.
+void mlAddSeenFacet(ivec2 t, float k, vec3 v, inout mlSeenFacets seen)
 {
   float depth;
   vec3 n = mlTexelFacet(t, depth);
   float s = mlDepthScale * mlGradientScale;
-  mlFacetNormal[mlFacetCount] = normalize(vec3(s * n.xy, n.z));
-  mlFacetBase[mlFacetCount] = k;
-  mlFacetDepth[mlFacetCount] = depth;
-  ++mlFacetCount;
+  n = normalize(vec3(s * n.xy, n.z)); // at the rendering's depth scale
+  float c = k * max(dot(n, v), 0.0) / max(n.z, 1.0 / 16.0);
+  seen.Area += c;
+  seen.Mean += c * n;
+  seen.Second += c * outerProduct(n, n);
 }
 
-// The facets of level 0 or 1 that its bilinear lookup at uv weighs, with k times their weights
-// (the texels of mlLevelLookupAt).
-void mlAddLevelFacets(vec2 uv, int level, float k)
+// Adds the facets of level 0 or 1 that its bilinear lookup at uv weighs, with k times their
+// weights (the texels of mlLevelLookupAt).
+void mlAddLevelSeenFacets(vec2 uv, int level, float k, vec3 v, inout mlSeenFacets seen)
 {
   mlLevelLookup l = mlLevelLookupAt(uv, level);
   for (int n = 0; n < mlLevelLookupCount(l); ++n)
   {
     float weight;
     ivec2 t = mlLevelLookupTexel(l, n, weight);
-    mlAddTexelFacet(t, k * weight);
+    mlAddSeenFacet(t, k * weight, v, seen);
   }
 }
 
-// The visible mean normal of the facets gathered (mlAddLevelFacets) and their visible spread
-// (mlNormalSpread), for v towards the viewer in the (T, B, N) frame. A facet shows the viewer
-// its projected area, w max(0, n.v), where its neighbours do not hide it, and which ones they
-// hide depends on its height: by Smith's masking with heights, a point at height h is seen with
-// probability C(h)^Lambda(v), C the share of the surface no higher (Heitz 2014, "Understanding
-// the masking-shadowing function in microfacet-based BRDFs", the height-correlated form; Smith
-// 1967). C is the facets' own distribution, Lambda that of a Gaussian of their slopes along v's
-// azimuth (mlFootprintShadowing's). A grazing view so sees the tops, not the walls of the cracks
-// between them, which the moments alone weigh by their projected area.
-vec3 mlMaskedFacetNormal(vec3 v)
+// The seen facets' mean normal, and their spread (mlNormalSpread).
+vec3 mlSeenFacetNormal(mlSeenFacets seen)
 {
-  float lambda = mlFacetLambda(v);
-  float total = 0.0;
-  for (int i = 0; i < mlFacetCount; ++i)
-  {
-    total += mlFacetBase[i];
-  }
-  for (int i = 0; i < mlFacetCount; ++i)
-  {
-    float lower = 0.0;
-    for (int j = 0; j < mlFacetCount; ++j)
-    {
-      lower += mlFacetDepth[j] >= mlFacetDepth[i] - 1e-4 ? mlFacetBase[j] : 0.0;
-    }
-    mlFacetLower[i] = clamp(lower / max(total, 1e-12), 0.0, 1.0);
-  }
-  vec3 mean = vec3(0.0);
-  mat3 second = mat3(0.0);
-  float seen = 0.0;
-  for (int i = 0; i < mlFacetCount; ++i)
-  {
-    vec3 n = mlFacetNormal[i];
-    float projected = max(dot(n, v), 0.0) / max(n.z, 1.0 / 16.0);
-    if (projected <= 0.0 || mlFacetBase[i] <= 0.0)
-    {
-      continue;
-    }
-    float c = mlFacetBase[i] * projected * (lambda > 0.0 ? pow(mlFacetLower[i], lambda) : 1.0);
-    seen += c;
-    mean += c * n;
-    second += c * outerProduct(n, n);
-  }
-  if (seen <= 1e-12)
+  if (seen.Area <= 1e-12)
   {
     mlNormalSpread = mat3(0.0);
     return vec3(0.0, 0.0, 1.0);
   }
-  mean /= seen;
-  mlNormalSpread = second / seen - outerProduct(mean, mean);
+  vec3 mean = seen.Mean / seen.Area;
+  mlNormalSpread = seen.Second / seen.Area - outerProduct(mean, mean);
   return mean;
 }
 #endif
@@ -485,9 +423,9 @@ vec3 mlMomentsVisibleNormal(vec4 a, vec4 b, vec3 v)
   return (S * v) / (projected * r);
 }
 
-// The footprint's visible mean normal at mip level lod (mlMomentsVisibleNormal), with
-// height-correlated masking (mlMaskedFacetNormal) where the level is computed from the stored
-// normals and ML_HEIGHT_MASKING is on.
+// The footprint's visible mean normal at mip level lod (mlMomentsVisibleNormal), or with
+// ML_MASKED_FACETS, where the level is computed per texel, that of the facets the viewer sees
+// (mlSeenFacetNormal).
 vec3 mlVisibleNormal(vec2 uv, vec3 v, float lod)
 {
   mlNormalSpread = mat3(0.0);
@@ -498,22 +436,22 @@ vec3 mlVisibleNormal(vec2 uv, vec3 v, float lod)
     // Trilinear as the sampler's, the levels below the texture's from the stored normals.
     int level = int(lod);
     float f = lod - float(level);
-#ifdef ML_HEIGHT_MASKING
-    mlFacetCount = 0;
-    mlAddLevelFacets(mlFacetLookupUv(uv), level, 1.0 - f);
+#ifdef ML_MASKED_FACETS
+    mlSeenFacets seen = mlSeenFacets(0.0, vec3(0.0), mat3(0.0));
+    mlAddLevelSeenFacets(mlFacetLookupUv(uv), level, 1.0 - f, v, seen);
     float stored = 0.0;
     if (f > 0.0)
     {
       if (float(level + 1) < mlMomentFirstLevel)
       {
-        mlAddLevelFacets(mlFacetLookupUv(uv), level + 1, f);
+        mlAddLevelSeenFacets(mlFacetLookupUv(uv), level + 1, f, v, seen);
       }
       else
       {
         stored = f;
       }
     }
-    vec3 masked = mlMaskedFacetNormal(v);
+    vec3 masked = mlSeenFacetNormal(seen);
     if (stored <= 0.0)
     {
       return masked;

@@ -38,14 +38,13 @@ TEST(ReliefProperty, MethodNamesRoundTrip)
 
 TEST(ReliefProperty, NormalFilterNamesRoundTrip)
 {
-  for (int f = vtkReliefProperty::MeanNormalFilter;
-       f <= vtkReliefProperty::HeightMaskedNormalFilter; ++f)
+  for (int f = vtkReliefProperty::MeanNormalFilter; f <= vtkReliefProperty::MaskedNormalFilter; ++f)
   {
     const char* name = vtkReliefProperty::GetNormalFilterName(f);
     EXPECT_EQ(vtkReliefProperty::GetNormalFilterFromName(name), f) << name;
   }
   EXPECT_STREQ(
-    vtkReliefProperty::GetNormalFilterName(vtkReliefProperty::HeightMaskedNormalFilter), "masked");
+    vtkReliefProperty::GetNormalFilterName(vtkReliefProperty::MaskedNormalFilter), "masked");
   EXPECT_STREQ(vtkReliefProperty::GetNormalFilterName(3), "unknown");
   EXPECT_EQ(vtkReliefProperty::GetNormalFilterFromName("toksvig"), -1);
   EXPECT_EQ(vtkReliefProperty::GetNormalFilterFromName(nullptr), -1);

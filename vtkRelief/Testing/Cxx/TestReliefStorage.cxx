@@ -249,9 +249,9 @@ TEST(ReliefStorage, DefaultUploadsATenthOfTheDenseMesh)
     ASSERT_TRUE(o.LevelOfDetail) << "level of detail is the default";
     StorageScene scene(o);
     const Measured m = scene.Draw(Storage::Compact, "the default");
-    // The default filter (height-correlated masking) uploads the moments as the visible one.
+    // The default filter (masked facets) uploads the moments as the visible one.
     ASSERT_TRUE(scene.Scene.Mapper->GetReliefProperty()->GetNormalFilter() ==
-      vtkReliefProperty::HeightMaskedNormalFilter);
+      vtkReliefProperty::MaskedNormalFilter);
     ReliefScene dense;
     std::string error;
     ASSERT_TRUE(BuildDenseReferenceScene(o, dense, error)) << error;
