@@ -256,6 +256,34 @@ FarViewRayErrors ErrorsOfTheFarViewRays(const std::string& file, double viewAngl
             << ", level of detail off " << e.Off.Mean << std::endl;
   return e;
 }
+
+// The errors of the default (masked facets), the visible normal's moments and level of detail
+// off on a far real-map wall, against the supersampled exact frame; farViewRays as
+// vtkReliefProperty::FarViewRays for the first two (0: the default's).
+struct MaskedFacetErrors
+{
+  AliasingError Masked, Moments, Off;
+};
+
+MaskedFacetErrors ErrorsOfTheMaskedFacets(
+  const std::string& file, double viewAngle, int farViewRays, const char* what)
+{
+  const ReliefSceneOptions options = FarRealMapWall(file, viewAngle);
+  const int shaded = vtkReliefProperty::ShadedOutput;
+  const Frame reference = RenderView(options, Drawn::Exact, Supersampling, shaded);
+  MaskedFacetErrors e;
+  e.Masked = Compare(
+    RenderView(options, Drawn::LevelOfDetailOn, 1, shaded, nullptr, false, farViewRays), reference);
+  e.Moments = Compare(
+    RenderView(options, Drawn::LevelOfDetailUnmasked, 1, shaded, nullptr, false, farViewRays),
+    reference);
+  e.Off = Compare(RenderView(options, Drawn::LevelOfDetailOff, 1, shaded), reference);
+  std::cout << what << ", error against the " << Supersampling << "x" << Supersampling
+            << " supersampled exact frame, " << e.Masked.Pixels << " pixels: default "
+            << e.Masked.Mean << " levels, the visible normal's moments " << e.Moments.Mean
+            << ", level of detail off " << e.Off.Mean << std::endl;
+  return e;
+}
 } // namespace
 
 TEST(ReliefLevelOfDetail, ChangesTheFrameAgainstTheSupersampledReference)
@@ -457,21 +485,12 @@ TEST(ReliefLevelOfDetail, MasksTheFacetsAFarViewHides)
   {
     GTEST_SKIP() << "dziq/dq_stones01_b.jpg is absent (redeclipse-data)";
   }
-  const ReliefSceneOptions options = FarRealMapWall(file, 45.0);
-  const int shaded = vtkReliefProperty::ShadedOutput;
-  const Frame reference = RenderView(options, Drawn::Exact, Supersampling, shaded);
   // One view ray per far pixel in both frames: the masking alone (the default's several rays
   // per far pixel are AveragesViewRaysAcrossAFarFootprint's).
-  const AliasingError on =
-    Compare(RenderView(options, Drawn::LevelOfDetailOn, 1, shaded, nullptr, false, 1), reference);
-  const AliasingError unmasked = Compare(
-    RenderView(options, Drawn::LevelOfDetailUnmasked, 1, shaded, nullptr, false, 1), reference);
-  const AliasingError off =
-    Compare(RenderView(options, Drawn::LevelOfDetailOff, 1, shaded), reference);
-  std::cout << "far stone wall, error against the " << Supersampling << "x" << Supersampling
-            << " supersampled exact frame, " << on.Pixels << " pixels: default " << on.Mean
-            << " levels, the visible normal's moments " << unmasked.Mean << ", level of detail off "
-            << off.Mean << std::endl;
+  const MaskedFacetErrors e = ErrorsOfTheMaskedFacets(file, 45.0, 1, "far stone wall");
+  const AliasingError& on = e.Masked;
+  const AliasingError& unmasked = e.Moments;
+  const AliasingError& off = e.Off;
   ASSERT_GT(on.Pixels, 200 * 150 / 4) << "the wall should fill much of the view";
   // Measured with the exact default traversal, one ray per far pixel: 10.91 (masked), 13.13
   // (without the masking) and 18.00 (off) levels; with relief 10+8, the default when the test
@@ -526,19 +545,10 @@ TEST(ReliefLevelOfDetail, MaskedFacetsShadeAFarGrazingStoneWall)
   {
     GTEST_SKIP() << "dziq/dq_stones01_b.jpg is absent (redeclipse-data)";
   }
-  const ReliefSceneOptions options = FarRealMapWall(file, 80.0);
-  const int shaded = vtkReliefProperty::ShadedOutput;
-  const Frame reference = RenderView(options, Drawn::Exact, Supersampling, shaded);
-  const AliasingError masked =
-    Compare(RenderView(options, Drawn::LevelOfDetailOn, 1, shaded), reference);
-  const AliasingError moments =
-    Compare(RenderView(options, Drawn::LevelOfDetailUnmasked, 1, shaded), reference);
-  const AliasingError off =
-    Compare(RenderView(options, Drawn::LevelOfDetailOff, 1, shaded), reference);
-  std::cout << "far grazing stone wall, error against the " << Supersampling << "x" << Supersampling
-            << " supersampled exact frame, " << masked.Pixels << " pixels: default " << masked.Mean
-            << " levels, the visible normal's moments " << moments.Mean << ", level of detail off "
-            << off.Mean << std::endl;
+  const MaskedFacetErrors e = ErrorsOfTheMaskedFacets(file, 80.0, 0, "far grazing stone wall");
+  const AliasingError& masked = e.Masked;
+  const AliasingError& moments = e.Moments;
+  const AliasingError& off = e.Off;
   ASSERT_GT(masked.Pixels, 200 * 150 / 12) << "the receding wall should fill a band of the view";
   // Measured 6.31 (default), 9.23 (the moments) and 12.62 (off) levels; 8.79 with the
   // height-correlated masking (the default before: the test fails with it). The bound lies 24%
