@@ -441,6 +441,16 @@ int RunReliefBenchmarkCommand(const std::vector<std::string>& args)
   {
     return exitCode; // --help printed, or a usage error reported
   }
+  // Its rows fix their own methods and steps; a method asked for would be silently ignored.
+  for (const char* fixed : { "--method", "--linear-steps", "--refinement-steps" })
+  {
+    if (cl.Has(fixed))
+    {
+      return cl.UsageError(std::string(fixed) +
+        " does not apply: `mesolight bench` draws fixed rows (relief 10+8, POM, steep "
+        "parallax); `mesolight bench relief --methods NAME --steps L+R` measures any method");
+    }
+  }
   std::string error;
   BenchmarkSettings settings;
   settings.Scene = options;

@@ -61,6 +61,13 @@ endif ()
 if (NOT relief LESS plane) # both are decimals; LESS compares them as numbers
   message(FATAL_ERROR "relief (${relief}) is not closer to the dense mesh than the plane (${plane})")
 endif ()
+# Its rows fix their methods and steps: asking for one is refused, not silently ignored.
+foreach (fixed "--method;max-mipmap" "--linear-steps;64" "--refinement-steps;4")
+  cli_execute(bench --sizes 64 --frames 1 --size 64x64 ${fixed})
+  if (NOT cli_rc EQUAL 2 OR NOT cli_stderr MATCHES "does not apply")
+    message(FATAL_ERROR "bench ${fixed}: rc ${cli_rc}, not a usage error:\n${cli_stderr}")
+  endif ()
+endforeach ()
 
 # `bench cones`: one row per map, size and cone type.
 run(cones bench cones --maps Bricks --sizes 64 --oracle-size 16 --compare-size 32
