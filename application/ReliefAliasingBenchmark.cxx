@@ -53,6 +53,10 @@ struct Settings
   int CompareFilter = vtkReliefProperty::MeanNormalFilter; // the "mean" row's normal filter
   int CompareFarViewRays = 0; // the "mean" row's vtkReliefProperty::FarViewRays, 0: the default's
   int Frames = 5;             // timed frames of each row's shaded frame (median ms), 0: none
+  int Lights = 2;             // VTK lights (ReliefSceneOptions::Lights)
+  std::string Environment;    // image-based lighting (ReliefSceneOptions::Environment)
+  int EnvironmentLights = 128;
+  double Exposure = 1.0;
   std::string CsvFile;
   std::string PlotFile;
 };
@@ -274,6 +278,11 @@ bool MeasureCase(const Settings& settings, const std::string& map, double angle,
   }
   options.DepthScale = settings.DepthScale;
   options.SelfShadowing = settings.Shadows;
+  options.Lights = settings.Lights;
+  options.Environment = settings.Environment;
+  options.EnvironmentLights = settings.EnvironmentLights;
+  options.Exposure = settings.Exposure;
+  options.ToneMapping = true; // as `mesolight render` and the property have it
   options.ViewAngle = angle;
   options.ViewDistance = distance;
   options.Width = settings.Width;
@@ -436,6 +445,12 @@ int RunReliefAliasingBenchmark(const std::vector<std::string>& args)
   cl.AddValue(
     "--steps", "L+R", "the --method's linear (or iteration) and refinement steps", "10+8");
   cl.AddFlag("--no-shadows", "self-shadowing off in every frame, the reference's too");
+  cl.AddValue("--lights", "N", "VTK lights: 0 = none, 1 = key light, 2 = key + fill", "2");
+  cl.AddValue("--environment", "SPEC",
+    "light also by an environment (every frame, the reference's too): procedural:sky, "
+    "procedural:sun or a lat-long HDR file");
+  cl.AddValue("--env-lights", "N", "median-cut lights of the environment", "128");
+  cl.AddValue("--exposure", "X", "scale of the environment lighting (Reinhard tone mapped)", "1");
   cl.AddValue("--compare-filter", "NAME",
     "the normal filter of the third row: mean (Toksvig), visible (the moments: facets turned "
     "away count negatively) or masked (facets turned away left out; the default's)",
@@ -486,6 +501,9 @@ int RunReliefAliasingBenchmark(const std::vector<std::string>& args)
     !cl.GetInt("--supersampling", 1, 16, settings.Supersampling, error) ||
     !cl.GetDouble("--depth-scale", 1e-4, 10.0, settings.DepthScale, error) ||
     !cl.GetInt("--frames", 0, 1000, settings.Frames, error) ||
+    !cl.GetInt("--lights", 0, 2, settings.Lights, error) ||
+    !cl.GetInt("--env-lights", 1, 4096, settings.EnvironmentLights, error) ||
+    !cl.GetDouble("--exposure", 0.0, 1e6, settings.Exposure, error) ||
     (cl.Has("--compare-far-view-rays") &&
       !cl.GetInt("--compare-far-view-rays", 1, 8, settings.CompareFarViewRays, error)))
   {
@@ -499,6 +517,7 @@ int RunReliefAliasingBenchmark(const std::vector<std::string>& args)
   {
     return cl.UsageError("unexpected argument '" + cl.Positional()[0] + "'");
   }
+  settings.Environment = cl.Get("--environment");
   settings.CsvFile = cl.Get("--csv");
   settings.PlotFile = cl.Get("--plot");
   if (const std::string problem = CheckOutputOptions(cl, { "--csv", "--plot" }, {});
@@ -523,6 +542,12 @@ int RunReliefAliasingBenchmark(const std::vector<std::string>& args)
   out << "Relief aliasing: " << settings.Width << "x" << settings.Height_ << " pixels, depth scale "
       << settings.DepthScale << "; reference: max-mipmap 128 (exact) at " << settings.Supersampling
       << "x" << settings.Supersampling << " subsamples per pixel, box-filtered.\n"
+      << "lights: " << settings.Lights << " VTK light(s)"
+      << (settings.Environment.empty() ? std::string()
+                                       : "; environment " + settings.Environment + ", " +
+               std::to_string(settings.EnvironmentLights) + " median-cut lights, exposure " +
+               Ratio(settings.Exposure, 1.0) + ", tone mapped")
+      << ".\n"
       << "before: "
       << (settings.Method.empty() ? vtkReliefProperty::GetMethodName(defaults->GetMethod())
                                   : settings.Method.c_str())
