@@ -92,6 +92,14 @@ int mlViewRefinementSteps = 0;
 int mlPixelViewRays = 1;
 #endif
 
+// The most view rays a pixel traces (ML_FAR_RAYS), each ray's hit kept until the pixel's
+// lights are summed (mlLightSetIrradiance).
+#ifdef ML_FAR_RAYS
+#define ML_RAY_SLOTS ML_FAR_RAYS
+#else
+#define ML_RAY_SLOTS 1
+#endif
+
 // The mip level the height field is sampled at. Marches use explicit levels (implicit
 // derivatives are undefined inside divergent loops) and always level 0: marching an averaged
 // height field fills the cracks a supersampled frame keeps. With LevelOfDetail on (the default),

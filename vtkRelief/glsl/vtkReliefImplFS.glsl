@@ -12,6 +12,19 @@
   vec3 mlHit = vec3(mlUV, 0.0);
   vec3 mlHitPos = mlPos;
   vec3 mlShadingNormal = mlN;
+  // Each kept view ray's linear radiance but the light set's, and what the light set and the
+  // colour's last steps need of it: the light set's lights are summed for all rays at once, after
+  // they are traced (mlLightSetIrradiance).
+  vec3 mlRayRadiance[ML_RAY_SLOTS];
+  vec3 mlRayNormal[ML_RAY_SLOTS];
+  vec3 mlRayShadowPoint[ML_RAY_SLOTS];
+  vec3 mlRayHitPos[ML_RAY_SLOTS];
+  vec2 mlRayHitUV[ML_RAY_SLOTS];
+  float mlRayNormalLength[ML_RAY_SLOTS];
+  int mlRaysKept = 0;
+  // The hit's texture frame (the same for every view ray of the pixel: the mesh's).
+  mat3 mlWorldToTexture = mat3(0.0);
+  bool mlHasFrame = abs(mlDet) > 1e-30;
 #ifdef ML_FAR_RAYS
   // Several view rays per far pixel (level of detail): at a grazing view a far pixel's
   // footprint is long along one axis, and one view ray, however exact, meets one of the facets
@@ -36,8 +49,6 @@
     ? clamp(int(ceil(mlMajorTexels / max(mlMinorTexels, 1e-6) - 1e-3)) | 1, 1, ML_FAR_RAYS)
     : 1;
   mlPixelViewRays = mlRays;
-  vec4 mlRaySum = vec4(0.0);
-  int mlRaysKept = 0;
   vec3 mlCentreHit = mlHit, mlCentreHitPos = mlHitPos, mlCentreShadingNormal = mlShadingNormal;
 #define ML_MISS if (2 * mlRay + 1 == mlRays) { discard; } continue
   for (int mlRay = 0; mlRay < mlRays; ++mlRay)
@@ -64,8 +75,7 @@
 #ifdef ML_CURVED
   vec3 mlHitPlane = mlHit; // the hit in the entry point's plane coordinates (shadows start there)
 #endif
-  mat3 mlWorldToTexture = mat3(0.0);
-  bool mlHasFrame = abs(mlDet) > 1e-30;
+  mlWorldToTexture = mat3(0.0);
 #ifdef ML_LEVEL_OF_DETAIL
   mlViewRefinementSteps = mlRefinementBudget(); // the budget wherever the view march is skipped
 #endif
@@ -276,55 +286,30 @@
   // Whether the first light reaches the hit point (facing it and not self-shadowed).
   gl_FragData[0] = vec4(vec3(mlFirstLightVisible), 1.0);
 #else
-  gl_FragData[0] = vec4(ambientColor + diffuse * diffuseColor + specular * mlSpecularColor, opacity);
-#if defined(ML_LIGHT_SET) || defined(ML_IRRADIANCE_PROBES)
-  // Lambertian under the environment: albedo / pi times irradiance, scaled by the exposure.
-  vec3 mlEnvironment = vec3(0.0);
-#ifdef ML_LIGHT_SET
-  // mlNormalLength: the filtered normal's length (Toksvig), 1 without level of detail: each
-  // light's n.l is linear in n.
-  mlEnvironment += mlNormalLength *
-    mlLightSetIrradiance(mlShadingNormal, mlShadowPoint, mlWorldToTexture, mlHasFrame);
-#endif
+  vec3 mlRadiance = ambientColor + diffuse * diffuseColor + specular * mlSpecularColor;
 #ifdef ML_IRRADIANCE_PROBES
   // The probes' SH9 irradiance over the footprint's normals (their mean and second moment, world
   // coordinates; one normal near), with the relief's occlusion and inter-reflection
-  // (mlProbeIndirect).
+  // (mlProbeIndirect), Lambertian: albedo / pi times irradiance.
   mat3 mlViewToWorld = transpose(mlWorldToView);
   vec3 mlMeanNormalVC = mlNormalLength * mlShadingNormal;
-  mlEnvironment += mlProbeIndirect(mlHit.xy, mlViewToWorld * mlMeanNormalVC,
+  mlRadiance += mlProbeIndirect(mlHit.xy, mlViewToWorld * mlMeanNormalVC,
     mlViewToWorld * (mlNormalSpreadVC + outerProduct(mlMeanNormalVC, mlMeanNormalVC)) *
       mlWorldToView,
-    mlViewToWorld * mlN, diffuseColor, mlFlatLightIrradiance(mlHitPos, mlN, mlHit.xy));
+    mlViewToWorld * mlN, diffuseColor, mlFlatLightIrradiance(mlHitPos, mlN, mlHit.xy)) *
+    (diffuseColor / 3.14159265);
 #endif
-  gl_FragData[0].rgb = gl_FragData[0].rgb + mlEnvironment * (diffuseColor / 3.14159265);
-#ifdef ML_RADIANCE_HOOK
-  // A vtkReliefRadianceHook's change of the linear radiance at the hit (view coordinates, the
-  // macro normal), e.g. a light field's movable object's shadow (vtkLightFieldReliefShadowHook).
-  gl_FragData[0].rgb = mlRadianceHook(gl_FragData[0].rgb, mlHitPos, mlN, diffuseColor);
-#endif
-  // An emitter's own light (a lamp under the relief), which no shadow takes away.
-  gl_FragData[0].rgb += mlEmission;
-  gl_FragData[0].rgb *= mlExposure;
-#ifdef ML_TONE_MAPPING
-  gl_FragData[0].rgb = gl_FragData[0].rgb / (1.0 + gl_FragData[0].rgb); // Reinhard
-#endif
-#ifdef ML_ENCODE_SRGB
-  gl_FragData[0].rgb = mlEncodeSrgb(gl_FragData[0].rgb); // beside an sRGB-encoded light field
-#endif
-#endif
-#if ML_OUTPUT == 4
-  // Checked before the albedo texture's clamp, which may turn a NaN into a number (GLSL leaves
-  // clamp of NaN undefined) and would hide it from the check below.
-  bool mlBadColour = any(isnan(gl_FragData[0])) || any(isinf(gl_FragData[0]));
-#endif
-#ifdef ML_ALBEDO_SAMPLER
-  gl_FragData[0] = clamp(gl_FragData[0], 0.0, 1.0) *
-    textureGrad(ML_ALBEDO_SAMPLER, mlHit.xy, mlDUVdx, mlDUVdy);
+  mlRayRadiance[mlRaysKept] = mlRadiance;
+  mlRayNormal[mlRaysKept] = mlShadingNormal;
+  mlRayShadowPoint[mlRaysKept] = mlShadowPoint;
+  mlRayHitPos[mlRaysKept] = mlHitPos;
+  mlRayHitUV[mlRaysKept] = mlHit.xy;
+  // mlNormalLength: the filtered normal's length (Toksvig), 1 without level of detail: each
+  // light's n.l is linear in n.
+  mlRayNormalLength[mlRaysKept] = mlNormalLength;
+  ++mlRaysKept;
 #endif
 #ifdef ML_FAR_RAYS
-    mlRaySum += gl_FragData[0];
-    ++mlRaysKept;
     if (2 * mlRay + 1 == mlRays) // the centre's
     {
       mlCentreHit = mlHit;
@@ -332,11 +317,63 @@
       mlCentreShadingNormal = mlShadingNormal;
     }
   }
-  gl_FragData[0] = mlRaySum / float(max(mlRaysKept, 1));
   mlPos = vertexVC.xyz;
   mlHit = mlCentreHit;
   mlHitPos = mlCentreHitPos;
   mlShadingNormal = mlCentreShadingNormal;
+#endif
+#if ML_OUTPUT != 1 && ML_OUTPUT != 2 && ML_OUTPUT != 3
+#ifdef ML_LIGHT_SET
+  vec3 mlRayIrradiance[ML_RAY_SLOTS];
+  mlLightSetIrradiance(mlRayNormal, mlRayShadowPoint, mlRaysKept, mlWorldToTexture, mlHasFrame,
+    mlRayIrradiance);
+#endif
+  // The pixel's colour: its kept view rays' colours averaged (one but far away, ML_FAR_RAYS).
+  vec4 mlColourSum = vec4(0.0);
+#if ML_OUTPUT == 4
+  bool mlBadColour = false;
+#endif
+  for (int mlKept = 0; mlKept < ML_RAY_SLOTS; ++mlKept)
+  {
+    if (mlKept >= mlRaysKept)
+    {
+      break;
+    }
+    vec4 mlColour = vec4(mlRayRadiance[mlKept], opacity);
+#if defined(ML_LIGHT_SET) || defined(ML_IRRADIANCE_PROBES)
+#ifdef ML_LIGHT_SET
+    // Lambertian under the environment: albedo / pi times irradiance.
+    mlColour.rgb +=
+      mlRayNormalLength[mlKept] * mlRayIrradiance[mlKept] * (diffuseColor / 3.14159265);
+#endif
+#ifdef ML_RADIANCE_HOOK
+    // A vtkReliefRadianceHook's change of the linear radiance at the hit (view coordinates, the
+    // macro normal), e.g. a light field's movable object's shadow (vtkLightFieldReliefShadowHook).
+    mlColour.rgb = mlRadianceHook(mlColour.rgb, mlRayHitPos[mlKept], mlN, diffuseColor);
+#endif
+    // An emitter's own light (a lamp under the relief), which no shadow takes away; the exposure
+    // scales the environment's shading.
+    mlColour.rgb += mlEmission;
+    mlColour.rgb *= mlExposure;
+#ifdef ML_TONE_MAPPING
+    mlColour.rgb = mlColour.rgb / (1.0 + mlColour.rgb); // Reinhard
+#endif
+#ifdef ML_ENCODE_SRGB
+    mlColour.rgb = mlEncodeSrgb(mlColour.rgb); // beside an sRGB-encoded light field
+#endif
+#endif
+#if ML_OUTPUT == 4
+    // Checked before the albedo texture's clamp, which may turn a NaN into a number (GLSL leaves
+    // clamp of NaN undefined) and would hide it from the check below.
+    mlBadColour = mlBadColour || any(isnan(mlColour)) || any(isinf(mlColour));
+#endif
+#ifdef ML_ALBEDO_SAMPLER
+    mlColour = clamp(mlColour, 0.0, 1.0) *
+      textureGrad(ML_ALBEDO_SAMPLER, mlRayHitUV[mlKept], mlDUVdx, mlDUVdy);
+#endif
+    mlColourSum += mlColour;
+  }
+  gl_FragData[0] = mlColourSum / float(max(mlRaysKept, 1));
 #endif
 #if ML_OUTPUT == 4
   // Red where anything on the way to the colour was NaN or Inf (stress tests), else green.
@@ -349,7 +386,6 @@
   // a 16-bit count in R (high) and G (low).
   float mlCount = float(min(mlSampleCount, 65535));
   gl_FragData[0] = vec4(floor(mlCount / 256.0), mod(mlCount, 256.0), 0.0, 255.0) / 255.0;
-#endif
 #endif
 #ifdef ML_WRITE_DEPTH
   vec3 mlDepthPos = mlHitPos;

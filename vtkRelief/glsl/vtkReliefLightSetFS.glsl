@@ -16,16 +16,28 @@ uniform int mlLightSetCount;
 uniform float mlLightSetCutoff; // luminance below which lights are skipped
 uniform int mlShadowedLights;   // 0: march every facing light
 
-// Irradiance at the hit from the light set (to be multiplied by albedo / pi).
-vec3 mlLightSetIrradiance(vec3 normalVC, vec3 hit, mat3 worldToTexture, bool marchShadows)
+// Irradiance from the light set (to be multiplied by albedo / pi) at each of the pixel's kept
+// view rays (rays of them: one but for a far pixel's several, ML_FAR_RAYS), whose shading normals
+// and shadow points are given. The rays take the lights' shadow marches in turn, each light's
+// visibility from one ray's hit counting for every ray's n.l: interleaved sampling (Keller and
+// Heidrich 2001, "Interleaved Sampling"), so that a pixel marches each light once however many
+// view rays it traces, and its rays' hits still spread the lights' shadows over its footprint.
+void mlLightSetIrradiance(vec3 normalVC[ML_RAY_SLOTS], vec3 hit[ML_RAY_SLOTS], int rays,
+  mat3 worldToTexture, bool marchShadows, out vec3 irradiance[ML_RAY_SLOTS])
 {
-  vec3 irradiance = vec3(0.0);
-  vec3 unmarched = vec3(0.0);
+  vec3 unmarched[ML_RAY_SLOTS];
+  vec3 normalWC[ML_RAY_SLOTS];
+  mat3 viewToWorld = transpose(mlWorldToView); // the view rotation is orthonormal
+  for (int r = 0; r < ML_RAY_SLOTS; ++r)
+  {
+    irradiance[r] = vec3(0.0);
+    unmarched[r] = vec3(0.0);
+    normalWC[r] = viewToWorld * normalVC[r];
+  }
   float marchedWeight = 0.0;
   float visibleWeight = 0.0;
   int marched = 0;
   float wasted = 0.0; // only with ML_NO_SHADOW_CULLING, to measure what culling saves
-  vec3 normalWC = transpose(mlWorldToView) * normalVC; // the view rotation is orthonormal
   for (int i = 0; i < mlLightSetCount; ++i)
   {
     vec4 light = texelFetch(mlLightSet, ivec2(i, 0), 0);
@@ -33,19 +45,25 @@ vec3 mlLightSetIrradiance(vec3 normalVC, vec3 hit, mat3 worldToTexture, bool mar
     {
       break; // sorted: every further light is weaker still
     }
-    float ndl = dot(normalWC, light.xyz);
-    if (ndl <= 0.0)
+    float ndl[ML_RAY_SLOTS];
+    float ndlSum = 0.0;
+    for (int r = 0; r < ML_RAY_SLOTS; ++r)
+    {
+      ndl[r] = r < rays ? max(dot(normalWC[r], light.xyz), 0.0) : 0.0;
+      ndlSum += ndl[r];
+    }
+    if (ndlSum <= 0.0)
     {
 #if defined(ML_NO_SHADOW_CULLING) && defined(ML_SELF_SHADOWING)
       vec3 away = worldToTexture * (mlWorldToView * light.xyz);
       if (marchShadows && away.z < -1e-6)
       {
-        wasted += mlShadowed(hit, clamp(away / -away.z, -1e4, 1e4)) ? 1.0 : 0.0;
+        wasted += mlShadowed(hit[0], clamp(away / -away.z, -1e4, 1e4)) ? 1.0 : 0.0;
       }
 #endif
-      continue;
+      continue; // behind every ray's shading normal
     }
-    vec3 contribution = texelFetch(mlLightSet, ivec2(i, 1), 0).rgb * ndl;
+    vec3 lightIrradiance = texelFetch(mlLightSet, ivec2(i, 1), 0).rgb;
 #ifdef ML_SELF_SHADOWING
     if (marchShadows)
     {
@@ -56,22 +74,34 @@ vec3 mlLightSetIrradiance(vec3 normalVC, vec3 hit, mat3 worldToTexture, bool mar
       }
       if (mlShadowedLights > 0 && marched >= mlShadowedLights)
       {
-        unmarched += contribution;
+        for (int r = 0; r < ML_RAY_SLOTS; ++r)
+        {
+          unmarched[r] += lightIrradiance * ndl[r];
+        }
         continue;
       }
-      ++marched;
-      float weight = dot(contribution, vec3(0.2126, 0.7152, 0.0722)); // luminance (Rec. 709)
+      // Luminance (Rec. 709) of the light's share of the pixel.
+      float weight = dot(lightIrradiance, vec3(0.2126, 0.7152, 0.0722)) * ndlSum;
       marchedWeight += weight;
-      if (mlShadowed(hit, clamp(toLight / -toLight.z, -1e4, 1e4)))
+      bool blocked =
+        mlShadowed(hit[marched % max(rays, 1)], clamp(toLight / -toLight.z, -1e4, 1e4));
+      ++marched;
+      if (blocked)
       {
         continue;
       }
       visibleWeight += weight;
     }
 #endif
-    irradiance += contribution;
+    for (int r = 0; r < ML_RAY_SLOTS; ++r)
+    {
+      irradiance[r] += lightIrradiance * ndl[r];
+    }
   }
   // (1e-30 * wasted keeps the measured, useless marches from being compiled away.)
-  return irradiance + unmarched * (marchedWeight > 0.0 ? visibleWeight / marchedWeight : 1.0) +
-    vec3(1e-30 * wasted);
+  float unmarchedVisible = marchedWeight > 0.0 ? visibleWeight / marchedWeight : 1.0;
+  for (int r = 0; r < ML_RAY_SLOTS; ++r)
+  {
+    irradiance[r] += unmarched[r] * unmarchedVisible + vec3(1e-30 * wasted);
+  }
 }
