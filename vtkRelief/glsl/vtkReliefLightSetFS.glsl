@@ -58,7 +58,7 @@ void mlLightSetIrradiance(vec3 normalVC[ML_RAY_SLOTS], vec3 hit[ML_RAY_SLOTS], i
       vec3 away = worldToTexture * (mlWorldToView * light.xyz);
       if (marchShadows && away.z < -1e-6)
       {
-        wasted += mlShadowed(hit[0], clamp(away / -away.z, -1e4, 1e4)) ? 1.0 : 0.0;
+        wasted += mlShadowed(hit[0], clamp(away / -away.z, -1e4, 1e4), 1.0) ? 1.0 : 0.0;
       }
 #endif
       continue; // behind every ray's shading normal
@@ -84,7 +84,7 @@ void mlLightSetIrradiance(vec3 normalVC[ML_RAY_SLOTS], vec3 hit[ML_RAY_SLOTS], i
       float weight = dot(lightIrradiance, vec3(0.2126, 0.7152, 0.0722)) * ndlSum;
       marchedWeight += weight;
       bool blocked =
-        mlShadowed(hit[marched % max(rays, 1)], clamp(toLight / -toLight.z, -1e4, 1e4));
+        mlShadowed(hit[marched % max(rays, 1)], clamp(toLight / -toLight.z, -1e4, 1e4), 1.0);
       ++marched;
       if (blocked)
       {

@@ -288,7 +288,9 @@ bool mlShadowedLinear(vec3 origin, vec3 span, vec3 hit, float bias, int stepsPer
   return false;
 }
 
-bool mlShadowed(vec3 hit, vec3 spanUpPerDepth)
+// linearAboveLevel: with maximum-mipmap tracing and level of detail, the shading level above
+// which a far pixel marches the linear march instead of the exact one (below).
+bool mlShadowed(vec3 hit, vec3 spanUpPerDepth, float linearAboveLevel)
 {
   if (hit.z <= 1e-4)
   {
@@ -306,8 +308,11 @@ bool mlShadowed(vec3 hit, vec3 spanUpPerDepth)
   // shadows of a far pixel's several view rays take it too: the exact march made them darker
   // than the supersampled frame (its hard shadow times the footprint's averaged Lambert term
   // loses the correlation of a facet's light with its shadow; docs/relief-methods.md, "Each far
-  // view ray's own hard shadow").
-  if (mlFootprint > 1.0 && mlShadeLod > 0.0)
+  // view ray's own hard shadow"). The VTK lights take it above level 0; a light set's lights,
+  // shaded without the clamped Lambert term and the footprint's own shadowing, only above
+  // level 1: below it the linear march missed so many occluders that an environment lit far
+  // walls too brightly (docs/relief-methods.md, "Light sets on far pixels").
+  if (mlFootprint > 1.0 && mlShadeLod > linearAboveLevel)
   {
     return mlShadowedLinear(origin, span, hit, bias, 10);
   }
