@@ -307,6 +307,9 @@
   // mlNormalLength: the filtered normal's length (Toksvig), 1 without level of detail: each
   // light's n.l is linear in n.
   mlRayNormalLength[mlRaysKept] = mlNormalLength;
+#ifdef ML_CURVED
+  mlRayQuadricOrigin[mlRaysKept] = mlQuadricOrigin;
+#endif
   ++mlRaysKept;
 #endif
 #ifdef ML_FAR_RAYS

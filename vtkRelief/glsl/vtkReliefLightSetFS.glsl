@@ -58,6 +58,9 @@ void mlLightSetIrradiance(vec3 normalVC[ML_RAY_SLOTS], vec3 hit[ML_RAY_SLOTS], i
       vec3 away = worldToTexture * (mlWorldToView * light.xyz);
       if (marchShadows && away.z < -1e-6)
       {
+#ifdef ML_CURVED
+        mlQuadricOrigin = mlRayQuadricOrigin[0];
+#endif
         wasted += mlShadowed(hit[0], clamp(away / -away.z, -1e4, 1e4), 1.0) ? 1.0 : 0.0;
       }
 #endif
@@ -83,8 +86,11 @@ void mlLightSetIrradiance(vec3 normalVC[ML_RAY_SLOTS], vec3 hit[ML_RAY_SLOTS], i
       // Luminance (Rec. 709) of the light's share of the pixel.
       float weight = dot(lightIrradiance, vec3(0.2126, 0.7152, 0.0722)) * ndlSum;
       marchedWeight += weight;
-      bool blocked =
-        mlShadowed(hit[marched % max(rays, 1)], clamp(toLight / -toLight.z, -1e4, 1e4), 1.0);
+      int shadowRay = marched % max(rays, 1);
+#ifdef ML_CURVED
+      mlQuadricOrigin = mlRayQuadricOrigin[shadowRay]; // the curved layer of that ray's entry
+#endif
+      bool blocked = mlShadowed(hit[shadowRay], clamp(toLight / -toLight.z, -1e4, 1e4), 1.0);
       ++marched;
       if (blocked)
       {

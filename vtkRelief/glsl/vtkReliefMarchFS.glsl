@@ -25,6 +25,9 @@ int mlViewSteps = 10;   // linear (or cone) steps for this view ray, adaptive if
 vec2 mlQuadric = vec2(0.0);       // (a, b) in depth units per squared texture unit
 vec2 mlLayerStretch = vec2(0.0);  // kappa x world depth of depth 1, along u and v
 vec2 mlQuadricOrigin = vec2(0.0); // the view ray's entry point, where the quadric touches
+// Each kept view ray's entry point, for the shadows marched after all a pixel's rays are traced
+// (mlLightSetIrradiance).
+vec2 mlRayQuadricOrigin[ML_RAY_SLOTS];
 bool mlLeftLayer = false;
 
 vec2 mlLayerScale(float z)
