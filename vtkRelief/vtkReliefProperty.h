@@ -234,8 +234,9 @@ public:
    * (3 rays at 45 and 80 degrees): far error on four real maps at 2 wall widths 0.35x relief
    * 10+8 without level of detail, against 0.45x with one ray, at 3.2x the relief samples per far
    * pixel (docs/relief-methods.md, "Several view rays per far pixel" and "Each far view ray's own
-   * hard shadow"); tests ReliefLevelOfDetail.AveragesViewRaysAcrossAFarFootprint and
-   * ShadowsEachFarViewRayFromItsHit.
+   * hard shadow"); test ReliefLevelOfDetail.AveragesViewRaysAcrossAFarFootprint. Under a light
+   * set the rays take the lights' shadow marches in turn, so a pixel marches each light once
+   * (interleaved sampling; test FarViewRaysTakeTheLightSetsShadowsInTurn).
    */
   mesolightSetClampMacro(FarViewRays, int, 1, 8);
   vtkGetMacro(FarViewRays, int);

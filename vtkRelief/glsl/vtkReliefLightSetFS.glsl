@@ -5,8 +5,9 @@
 // The light texture is N x 2: row 0 the unit directions toward the lights (world coordinates)
 // and their luminance (A), row 1 the irradiance each delivers at normal incidence (RGB). Lights
 // come sorted by luminance, strongest first, so the loop can stop at the first negligible one.
-// The loop runs in world coordinates (one normal transform per pixel, not one per light) and
-// reads a light's irradiance only if the light faces the pixel.
+// The loop runs in world coordinates (one normal transform per view ray, not one per light),
+// once per pixel for all its view rays, and reads a light's irradiance only if the light faces
+// one of them.
 // What a pixel does not need is skipped: lights behind the shading normal or below the
 // macro-surface horizon get no shadow march, and with mlShadowedLights > 0 only the strongest
 // facing lights are marched; the others are weighted by the visible fraction of those.
