@@ -518,6 +518,14 @@ int RunReliefAliasingBenchmark(const std::vector<std::string>& args)
     return cl.UsageError("unexpected argument '" + cl.Positional()[0] + "'");
   }
   settings.Environment = cl.Get("--environment");
+  if (settings.Environment.empty() && (cl.Has("--env-lights") || cl.Has("--exposure")))
+  {
+    return cl.UsageError("--env-lights and --exposure need --environment");
+  }
+  if (settings.Environment.empty() && settings.Lights == 0)
+  {
+    return cl.UsageError("--lights 0 without --environment leaves the relief unlit");
+  }
   settings.CsvFile = cl.Get("--csv");
   settings.PlotFile = cl.Get("--plot");
   if (const std::string problem = CheckOutputOptions(cl, { "--csv", "--plot" }, {});

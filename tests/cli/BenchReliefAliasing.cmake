@@ -63,6 +63,13 @@ cli_execute(bench relief-aliasing --maps Stone --environment "${WORK}/no-such-sk
 if (cli_rc EQUAL 0 OR NOT cli_stderr MATCHES "no-such-sky")
   message(FATAL_ERROR "a missing environment file was not reported (rc ${cli_rc}): ${cli_stderr}")
 endif ()
+# Light options that would be ignored or leave nothing lit are refused, not run.
+foreach (unlit "--lights;0" "--env-lights;8" "--exposure;2")
+  cli_execute(bench relief-aliasing --maps Stone ${unlit})
+  if (NOT cli_rc EQUAL 2 OR NOT cli_stderr MATCHES "environment")
+    message(FATAL_ERROR "bench relief-aliasing ${unlit}: rc ${cli_rc}, not a usage error:\n${cli_stderr}")
+  endif ()
+endforeach ()
 foreach (bad "--method;no-such-method" "--steps;x" "--supersampling;0" "--compare-filter;none"
              "--compare-far-view-rays;0" "--frames;-1" "--lights;3" "--env-lights;0"
              "--exposure;-1")
