@@ -100,6 +100,18 @@ int mlPixelViewRays = 1;
 #define ML_RAY_SLOTS 1
 #endif
 
+// What a kept view ray's shading leaves for the light set, whose lights are summed once all the
+// pixel's rays are traced (mlLightSetIrradiance).
+struct mlLitRay
+{
+  vec3 Normal;        // the shading normal, filtered far away (level of detail), view coordinates
+  float NormalLength; // the filtered normal's length (Toksvig), 1 near
+  mat3 NormalSpread;  // the footprint's spread of normals (mlNormalSpreadVC), zero near
+  vec3 Facet;         // the base level's normal at the ray's exact hit, view coordinates
+  vec3 ShadowPoint;   // where the ray's shadow marches start, texture space
+  vec2 QuadricOrigin; // a curved mesh's view ray entry point (mlQuadricOrigin)
+};
+
 // The mip level the height field is sampled at. Marches use explicit levels (implicit
 // derivatives are undefined inside divergent loops) and always level 0: marching an averaged
 // height field fills the cracks a supersampled frame keeps. With LevelOfDetail on (the default),
@@ -136,10 +148,9 @@ float mlNormalPdf(float x)
 {
   return 0.3989422804 * exp(-0.5 * x * x);
 }
-float mlFilteredLambert(vec3 m, vec3 l)
+// The mean of max(0, x) for x normal with mean mu and the variance given (mu where it is none).
+float mlRectifiedMean(float mu, float variance)
 {
-  float mu = mlNormalLength * dot(m, l);
-  float variance = dot(l, mlNormalSpreadVC * l);
   if (variance <= 1e-8)
   {
     return mu;
@@ -147,6 +158,11 @@ float mlFilteredLambert(vec3 m, vec3 l)
   float sigma = sqrt(variance);
   float x = mu / sigma;
   return mu * mlNormalCdf(x) + sigma * mlNormalPdf(x);
+}
+// The clamped Lambert term of the VTK lights: l in view coordinates.
+float mlFilteredLambert(vec3 m, vec3 l)
+{
+  return mlRectifiedMean(mlNormalLength * dot(m, l), dot(l, mlNormalSpreadVC * l));
 }
 
 // The share of the footprint's facets facing direction l (towards a light, view coordinates)

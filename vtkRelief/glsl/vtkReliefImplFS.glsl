@@ -16,11 +16,12 @@
   // colour's last steps need of it: the light set's lights are summed for all rays at once, after
   // they are traced (mlLightSetIrradiance).
   vec3 mlRayRadiance[ML_RAY_SLOTS];
-  vec3 mlRayNormal[ML_RAY_SLOTS];
-  vec3 mlRayShadowPoint[ML_RAY_SLOTS];
+  mlLitRay mlRayLit[ML_RAY_SLOTS];
   vec3 mlRayHitPos[ML_RAY_SLOTS];
   vec2 mlRayHitUV[ML_RAY_SLOTS];
-  float mlRayNormalLength[ML_RAY_SLOTS];
+  // The base level's normal at the hit, kept for the light set where the shading normal is the
+  // footprint's (mlLitRay).
+  vec3 mlFacetNormal = mlN;
   int mlRaysKept = 0;
   // The hit's texture frame (the same for every view ray of the pixel: the mesh's).
   mat3 mlWorldToTexture = mat3(0.0);
@@ -70,6 +71,7 @@
     mlHit = vec3(mlUV, 0.0);
     mlHitPos = mlPos;
     mlShadingNormal = mlN;
+    mlFacetNormal = mlN;
 #endif
   vec2 mlWall = vec2(0.0); // a side wall's normal in (u, v) where the view ray met one
 #ifdef ML_CURVED
@@ -217,13 +219,31 @@
     mlSpecularPowerScale =
       mlNormalLength / (mlNormalLength + mlSpecularPower * (1.0 - mlNormalLength));
 #endif
+    vec2 mlLayerSlope = vec2(0.0);
 #ifdef ML_CURVED
     // The slope of the curved layer under the hit.
-    g += 2.0 * mlQuadric * mlLayerScale(mlHitPlane.z) * (mlHitPlane.xy - mlQuadricOrigin);
+    mlLayerSlope = 2.0 * mlQuadric * mlLayerScale(mlHitPlane.z) * (mlHitPlane.xy - mlQuadricOrigin);
+    g += mlLayerSlope;
 #endif
     vec3 pu = dPdu - mlN * (worldDepth * g.x);
     vec3 pv = dPdv - mlN * (worldDepth * g.y);
     mlShadingNormal = normalize(cross(pu, pv) * handedness);
+    mlFacetNormal = mlShadingNormal;
+#if defined(ML_NORMAL_MOMENTS) && defined(ML_LIGHT_SET)
+    if (mlShadeLod >= 1.0)
+    {
+      // Far, where the shading normal reads no base level, the light set still needs the facet
+      // (mlLightSetIrradiance): one more lookup per view ray.
+#ifdef ML_SURFACE_NORMALS
+      vec2 gBase = mlSurfaceGradient(mlHit.xy);
+#else
+      vec2 gBase = mlGradientFromNormal(mlPackedNormalAt(mlHit.xy));
+#endif
+      gBase += mlLayerSlope;
+      mlFacetNormal = normalize(cross(dPdu - mlN * (worldDepth * gBase.x),
+                                  dPdv - mlN * (worldDepth * gBase.y)) * handedness);
+    }
+#endif
 #ifdef ML_NORMAL_MOMENTS
     if (mlShadeLod > 0.0)
     {
@@ -248,6 +268,7 @@
     if (mlWall != vec2(0.0))
     {
       mlShadingNormal = normalize(mlWall.x * T + mlWall.y * B); // the walled relief's side wall
+      mlFacetNormal = mlShadingNormal;
     }
   }
   // Bump mapping shades the undisplaced point but shadows it from the height below it.
@@ -300,15 +321,12 @@
     (diffuseColor / 3.14159265);
 #endif
   mlRayRadiance[mlRaysKept] = mlRadiance;
-  mlRayNormal[mlRaysKept] = mlShadingNormal;
-  mlRayShadowPoint[mlRaysKept] = mlShadowPoint;
   mlRayHitPos[mlRaysKept] = mlHitPos;
   mlRayHitUV[mlRaysKept] = mlHit.xy;
-  // mlNormalLength: the filtered normal's length (Toksvig), 1 without level of detail: each
-  // light's n.l is linear in n.
-  mlRayNormalLength[mlRaysKept] = mlNormalLength;
+  mlRayLit[mlRaysKept] = mlLitRay(mlShadingNormal, mlNormalLength, mlNormalSpreadVC,
+    mlFacetNormal, mlShadowPoint, vec2(0.0));
 #ifdef ML_CURVED
-  mlRayQuadricOrigin[mlRaysKept] = mlQuadricOrigin;
+  mlRayLit[mlRaysKept].QuadricOrigin = mlQuadricOrigin;
 #endif
   ++mlRaysKept;
 #endif
@@ -328,8 +346,7 @@
 #if ML_OUTPUT != 1 && ML_OUTPUT != 2 && ML_OUTPUT != 3
 #ifdef ML_LIGHT_SET
   vec3 mlRayIrradiance[ML_RAY_SLOTS];
-  mlLightSetIrradiance(mlRayNormal, mlRayShadowPoint, mlRaysKept, mlWorldToTexture, mlHasFrame,
-    mlRayIrradiance);
+  mlLightSetIrradiance(mlRayLit, mlRaysKept, mlWorldToTexture, mlHasFrame, mlRayIrradiance);
 #endif
   // The pixel's colour: its kept view rays' colours averaged (one but far away, ML_FAR_RAYS).
   vec4 mlColourSum = vec4(0.0);
@@ -347,7 +364,7 @@
 #ifdef ML_LIGHT_SET
     // Lambertian under the environment: albedo / pi times irradiance.
     mlColour.rgb +=
-      mlRayNormalLength[mlKept] * mlRayIrradiance[mlKept] * (diffuseColor / 3.14159265);
+      mlRayIrradiance[mlKept] * (diffuseColor / 3.14159265);
 #endif
 #ifdef ML_RADIANCE_HOOK
     // A vtkReliefRadianceHook's change of the linear radiance at the hit (view coordinates, the

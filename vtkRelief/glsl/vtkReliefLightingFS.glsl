@@ -77,7 +77,7 @@ float mlShadowVisibility(vec3 hit, vec3 spanUpPerDepth)
     float footprint = blend * mlFootprint; // texels
     float along = 0.5 * footprint / max(length(spanUpPerDepth.xy * mlTextureSize), 1e-6);
     mlShadowGap = 1e30;
-    bool blocked = mlShadowed(hit + spanUpPerDepth * min(along, hit.z), spanUpPerDepth, 0.0);
+    bool blocked = mlShadowed(hit + spanUpPerDepth * min(along, hit.z), spanUpPerDepth, true);
     if (mlShadowGap >= 1e29)
     {
       return blocked ? 0.0 : 1.0;
@@ -85,7 +85,7 @@ float mlShadowVisibility(vec3 hit, vec3 spanUpPerDepth)
     return clamp(0.5 + mlShadowGap / blend, 0.0, 1.0);
   }
 #endif
-  return mlShadowed(hit, spanUpPerDepth, 0.0) ? 0.0 : 1.0;
+  return mlShadowed(hit, spanUpPerDepth, true) ? 0.0 : 1.0;
 }
 #endif
 

@@ -25,9 +25,6 @@ int mlViewSteps = 10;   // linear (or cone) steps for this view ray, adaptive if
 vec2 mlQuadric = vec2(0.0);       // (a, b) in depth units per squared texture unit
 vec2 mlLayerStretch = vec2(0.0);  // kappa x world depth of depth 1, along u and v
 vec2 mlQuadricOrigin = vec2(0.0); // the view ray's entry point, where the quadric touches
-// Each kept view ray's entry point, for the shadows marched after all a pixel's rays are traced
-// (mlLightSetIrradiance).
-vec2 mlRayQuadricOrigin[ML_RAY_SLOTS];
 bool mlLeftLayer = false;
 
 vec2 mlLayerScale(float z)
@@ -291,9 +288,9 @@ bool mlShadowedLinear(vec3 origin, vec3 span, vec3 hit, float bias, int stepsPer
   return false;
 }
 
-// linearAboveLevel: with maximum-mipmap tracing and level of detail, the shading level above
-// which a far pixel marches the linear march instead of the exact one (below).
-bool mlShadowed(vec3 hit, vec3 spanUpPerDepth, float linearAboveLevel)
+// linearWhenFar: with maximum-mipmap tracing and level of detail, a far pixel (shading level
+// above 0) marches the linear march instead of the exact one.
+bool mlShadowed(vec3 hit, vec3 spanUpPerDepth, bool linearWhenFar)
 {
   if (hit.z <= 1e-4)
   {
@@ -304,18 +301,18 @@ bool mlShadowed(vec3 hit, vec3 spanUpPerDepth, float linearAboveLevel)
   const float bias = 2e-3; // depth units: avoids self-shadowing acne at the hit itself
 #if ML_METHOD == ML_MAXIMUM_MIPMAP
 #if defined(ML_LEVEL_OF_DETAIL) && !defined(ML_CURVED)
-  // Where level of detail softens a far pixel's shadow (mlShadowVisibility: a footprint over a
-  // texel at a shading level above 0), the penumbra needs the linear march's clearance, which
-  // the pyramid's skips do not measure; 10 steps per unit of depth, the march the Relief 10+8
-  // default took there, so far pixels shade as before the default became exact. The hard
-  // shadows of a far pixel's several view rays take it too: the exact march made them darker
-  // than the supersampled frame (its hard shadow times the footprint's averaged Lambert term
-  // loses the correlation of a facet's light with its shadow; docs/relief-methods.md, "Each far
-  // view ray's own hard shadow"). The VTK lights take it above level 0; a light set's lights,
-  // shaded without the clamped Lambert term and the footprint's own shadowing, only above
-  // level 1: below it the linear march missed so many occluders that an environment lit far
-  // walls too brightly (docs/relief-methods.md, "Light sets on far pixels").
-  if (mlFootprint > 1.0 && mlShadeLod > linearAboveLevel)
+  // The VTK lights' far shadows. Where level of detail softens a far pixel's shadow
+  // (mlShadowVisibility: a footprint over a texel at a shading level above 0), the penumbra
+  // needs the linear march's clearance, which the pyramid's skips do not measure; 10 steps per
+  // unit of depth, the march the Relief 10+8 default took there, so far pixels shade as before
+  // the default became exact. The hard shadows of a far pixel's several view rays take it too:
+  // the exact march made them darker than the supersampled frame (its hard shadow times the
+  // footprint's averaged Lambert term loses the correlation of a facet's light with its shadow;
+  // docs/relief-methods.md, "Each far view ray's own hard shadow"). A light set's lights march
+  // exactly at every level from a facet facing the light, which keeps that correlation
+  // (mlLightSetIrradiance; docs/relief-methods.md, "Light sets on far pixels: a facing facet's
+  // shadow").
+  if (linearWhenFar && mlFootprint > 1.0 && mlShadeLod > 0.0)
   {
     return mlShadowedLinear(origin, span, hit, bias, 10);
   }
