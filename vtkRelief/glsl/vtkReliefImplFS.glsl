@@ -172,9 +172,14 @@
 #endif
 #if ML_METHOD != ML_TEXTURE_MAPPING
 #ifdef ML_NORMAL_MOMENTS
-    // The base level's normal where it still shows (blended below over the first level).
+    // The base level's normal where it still shows (blended below over the first level), and
+    // under a light set everywhere: its far shadows start from the facet (mlLitRay).
     vec2 g = vec2(0.0);
-    if (mlShadeLod < 1.0)
+    bool mlReadBaseNormal = mlShadeLod < 1.0;
+#ifdef ML_LIGHT_SET
+    mlReadBaseNormal = true; // one more lookup per far view ray
+#endif
+    if (mlReadBaseNormal)
     {
 #ifdef ML_SURFACE_NORMALS
       g = mlSurfaceGradient(mlHit.xy);
@@ -219,31 +224,14 @@
     mlSpecularPowerScale =
       mlNormalLength / (mlNormalLength + mlSpecularPower * (1.0 - mlNormalLength));
 #endif
-    vec2 mlLayerSlope = vec2(0.0);
 #ifdef ML_CURVED
     // The slope of the curved layer under the hit.
-    mlLayerSlope = 2.0 * mlQuadric * mlLayerScale(mlHitPlane.z) * (mlHitPlane.xy - mlQuadricOrigin);
-    g += mlLayerSlope;
+    g += 2.0 * mlQuadric * mlLayerScale(mlHitPlane.z) * (mlHitPlane.xy - mlQuadricOrigin);
 #endif
     vec3 pu = dPdu - mlN * (worldDepth * g.x);
     vec3 pv = dPdv - mlN * (worldDepth * g.y);
     mlShadingNormal = normalize(cross(pu, pv) * handedness);
     mlFacetNormal = mlShadingNormal;
-#if defined(ML_NORMAL_MOMENTS) && defined(ML_LIGHT_SET)
-    if (mlShadeLod >= 1.0)
-    {
-      // Far, where the shading normal reads no base level, the light set still needs the facet
-      // (mlLightSetIrradiance): one more lookup per view ray.
-#ifdef ML_SURFACE_NORMALS
-      vec2 gBase = mlSurfaceGradient(mlHit.xy);
-#else
-      vec2 gBase = mlGradientFromNormal(mlPackedNormalAt(mlHit.xy));
-#endif
-      gBase += mlLayerSlope;
-      mlFacetNormal = normalize(cross(dPdu - mlN * (worldDepth * gBase.x),
-                                  dPdv - mlN * (worldDepth * gBase.y)) * handedness);
-    }
-#endif
 #ifdef ML_NORMAL_MOMENTS
     if (mlShadeLod > 0.0)
     {
