@@ -197,9 +197,11 @@ public:
      * level is computed per texel (levels 0 and 1), each facet counts by the area it turns to
      * the viewer, and facets turned away are left out (masked) instead of counting negatively as
      * in the moments, so a grazing view weighs the tops and faces turned to it and not the far
-     * walls of the cracks. No more memory. (Smith's height-correlated masking on top of it,
-     * Heitz 2014, stopped paying once far pixels took several view rays: docs/relief-methods.md,
-     * "Masked facets".)
+     * walls of the cracks; at the levels above, the moments' Gaussian model of the footprint's
+     * normals leaves them out in the same way (docs/relief-methods.md, "The masked filter's
+     * moments"). No more memory. (Smith's height-correlated masking on top of it, Heitz 2014,
+     * stopped paying once far pixels took several view rays: docs/relief-methods.md, "Masked
+     * facets".)
      */
     MaskedNormalFilter = 2
   };
