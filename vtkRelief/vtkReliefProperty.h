@@ -228,8 +228,9 @@ public:
    * pixel's footprint is longer than two texels along its major axis, about one view ray per
    * minor axis' length along it, rounded up to an odd count and at most this many (an even
    * value counts as the odd one below it), enters at evenly spaced points of the pixel along its
-   * major screen axis, the middle one through the pixel's centre (its hit is the depth written
-   * and its miss a silhouette); each is traced and shaded as the pixel's one ray would be and
+   * major screen axis, each in a strip of its own across it (an N-rooks pattern), the middle one
+   * through the pixel's centre (its hit is the depth written and its miss a silhouette); each is
+   * traced and shaded as the pixel's one ray would be (its normals filtered over its strip) and
    * self-shadowed hard from its own hit (one ray's soft far shadow stands in for the rays it
    * does not trace), and their colours are averaged (a far grazing pixel covers many facets, of
    * which one ray meets one). 1: one ray per pixel. Near pixels always take one ray. Default 3
