@@ -56,6 +56,7 @@ struct Settings
   int Lights = 2;             // VTK lights (ReliefSceneOptions::Lights)
   std::string Environment;    // image-based lighting (ReliefSceneOptions::Environment)
   int EnvironmentLights = 128;
+  vtkSmartPointer<vtkImageData> EnvironmentLightSet; // its median cut, made once for every case
   double Exposure = 1.0;
   std::string CsvFile;
   std::string PlotFile;
@@ -281,6 +282,7 @@ bool MeasureCase(const Settings& settings, const std::string& map, double angle,
   options.Lights = settings.Lights;
   options.Environment = settings.Environment;
   options.EnvironmentLights = settings.EnvironmentLights;
+  options.EnvironmentLightSet = settings.EnvironmentLightSet;
   options.Exposure = settings.Exposure;
   options.ToneMapping = true; // as `mesolight render` and the property have it
   options.ViewAngle = angle;
@@ -532,6 +534,19 @@ int RunReliefAliasingBenchmark(const std::vector<std::string>& args)
       !problem.empty())
   {
     return cl.UsageError(problem);
+  }
+
+  if (!settings.Environment.empty())
+  {
+    ReliefSceneOptions lighting;
+    lighting.Environment = settings.Environment;
+    lighting.EnvironmentLights = settings.EnvironmentLights;
+    settings.EnvironmentLightSet = MakeEnvironmentLights(lighting, error);
+    if (!settings.EnvironmentLightSet)
+    {
+      std::cerr << "mesolight bench relief-aliasing: " << error << "\n";
+      return 1;
+    }
   }
 
   vtkNew<vtkReliefProperty> defaults;

@@ -410,7 +410,8 @@ bool BuildReliefScene(const ReliefSceneOptions& requested, ReliefScene& scene, s
   scene.Mapper->GetReliefProperty()->SetToneMapping(options.ToneMapping);
   if (!options.Environment.empty())
   {
-    scene.LightSet = MakeEnvironmentLights(options, error);
+    scene.LightSet = options.EnvironmentLightSet ? options.EnvironmentLightSet
+                                                 : MakeEnvironmentLights(options, error);
     if (!scene.LightSet)
     {
       return false;

@@ -66,6 +66,9 @@ struct ReliefSceneOptions
   std::string Environment;
   int EnvironmentLights = 128;
   bool EnvironmentVarianceCuts = true; // vtkMedianCutLights' default; false: even-energy cuts
+  // The environment's light set when already made (MakeEnvironmentLights from these options):
+  // scenes built from it share one median cut, and its warnings are reported once.
+  vtkSmartPointer<vtkImageData> EnvironmentLightSet;
   // A light set written by `mesolight lights` (CSV, vtkLightSetReader) instead of Environment.
   std::string LightsCsv;
   double Exposure = 1.0;

@@ -668,6 +668,14 @@ bool ErrorsUnderAnEnvironment(const char* map, const char* world, double viewAng
   options.Environment = environment;
   options.EnvironmentLights = 64;
   options.ToneMapping = true;
+  std::string error;
+  options.EnvironmentLightSet = MakeEnvironmentLights(options, error);
+  if (!options.EnvironmentLightSet)
+  {
+    ADD_FAILURE() << environment << ": " << error; // present but not made into lights
+    skip = error;
+    return false;
+  }
   const int shaded = vtkReliefProperty::ShadedOutput;
   const int samples = vtkReliefProperty::SampleCountOutput;
   const Frame reference = RenderView(options, Drawn::Exact, Supersampling, shaded);
