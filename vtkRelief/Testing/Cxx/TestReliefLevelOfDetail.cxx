@@ -694,6 +694,15 @@ bool ErrorsUnderAnEnvironment(const char* map, const char* world, double viewAng
             << e.OneRaySamples << "), level of detail off " << e.Off.Mean << std::endl;
   return true;
 }
+
+// The default's error under the bound, and the negative cases' above it: one view ray per far
+// pixel and level of detail off.
+void ExpectTheDefaultAloneUnder(const LightSetErrors& e, double bound, const char* what)
+{
+  EXPECT_LT(e.Default.Mean, bound) << what;
+  EXPECT_GT(e.OneRay.Mean, bound) << "negative case: one view ray per far pixel aliases";
+  EXPECT_GT(e.Off.Mean, bound) << "negative case: without level of detail the wall aliases";
+}
 } // namespace
 
 // A far grazing stone-and-brick wall (brick_wall01_b) under the courtyard's light. A far pixel's
@@ -719,9 +728,7 @@ TEST(ReliefLevelOfDetail, FarViewRaysTakeTheLightSetsShadowsInTurn)
   EXPECT_LT(e.DefaultSamples, 1.6 * e.OneRaySamples)
     << "a far pixel's view rays should share the light set's shadow marches";
   const double bound = 7.0;
-  EXPECT_LT(e.Default.Mean, bound) << "several view rays should average the far footprint";
-  EXPECT_GT(e.OneRay.Mean, bound) << "negative case: one view ray per far pixel aliases";
-  EXPECT_GT(e.Off.Mean, bound) << "negative case: without level of detail the wall aliases";
+  ExpectTheDefaultAloneUnder(e, bound, "several view rays should average the far footprint");
 }
 
 // A far stone wall (dq_stones01_b) 80 degrees from its normal, one wall width away (5.6 texels per
@@ -742,9 +749,7 @@ TEST(ReliefLevelOfDetail, FarViewRaysSpreadAcrossTheFootprint)
   // rays on the major axis alone (checked: the test fails with it). The bound lies 11% above the
   // default and 10% below the rays on one axis.
   const double bound = 6.2;
-  EXPECT_LT(e.Default.Mean, bound) << "the far view rays should sample the whole footprint";
-  EXPECT_GT(e.OneRay.Mean, bound) << "negative case: one view ray per far pixel aliases";
-  EXPECT_GT(e.Off.Mean, bound) << "negative case: without level of detail the wall aliases";
+  ExpectTheDefaultAloneUnder(e, bound, "the far view rays should sample the whole footprint");
 }
 
 // The same wall 45 degrees from its normal, one wall width away (2.5 texels per pixel) under the
@@ -765,9 +770,7 @@ TEST(ReliefLevelOfDetail, LightSetShadowsAWallJustPastTexelSizeExactly)
   // with the linear far march (checked: the test fails with it). The bound lies 23% above the
   // default and 11% below one ray.
   const double bound = 5.2;
-  EXPECT_LT(e.Default.Mean, bound) << "the light set's shadows should darken the wall as exactly";
-  EXPECT_GT(e.OneRay.Mean, bound) << "negative case: one view ray per far pixel aliases";
-  EXPECT_GT(e.Off.Mean, bound) << "negative case: without level of detail the wall aliases";
+  ExpectTheDefaultAloneUnder(e, bound, "the light set's shadows should darken the wall as exactly");
 }
 
 // A far stone wall (dq_stones01_b) 45 degrees from its normal, two wall widths away (4.8 texels
@@ -786,13 +789,13 @@ TEST(ReliefLevelOfDetail, LightSetLightsAFarWallAsBrightlyAsItsFacets)
   }
   ASSERT_GT(e.Default.Pixels, 200 * 150 / 12) << "the receding wall should fill a band of the view";
   // Measured 6.80 levels, 0.89 too bright on average (7.60 and -0.15 with the rays on the major
-  // axis alone; off 14.35, one ray 10.67). The shadings
-  // before and beside it fail the brightness check (checked by running this test against their
-  // builds): the mean normal's n.l with the linear far march above level 1 (the shading before)
-  // +5.23 (8.89 levels); the clamped Lambert term with the exact march from the rays in turn,
-  // facing the light or not, -2.24; from a facing facet but with the mean normal's n.l -3.64; the
-  // clamped Lambert term and a facing facet with the linear far march +11.75 (12.88 levels).
-  // The bound lies 23% above the default and 41% below off.
+  // axis alone; off 14.35, one ray 10.67). The shadings before and beside it fail the brightness
+  // check (checked by running this test against their builds): the mean normal's n.l with the
+  // linear far march above level 1 (the shading before) +5.23 (8.89 levels); the clamped Lambert
+  // term with the exact march from the rays in turn, facing the light or not, -2.24; from a facing
+  // facet but with the mean normal's n.l -3.64; the clamped Lambert term and a facing facet with
+  // the linear far march +11.75 (12.88 levels). The bound lies 23% above the default and 41% below
+  // off.
   EXPECT_LT(std::abs(e.Default.Signed), 1.5) << "the far wall should be as bright as its facets";
   const double bound = 8.4;
   EXPECT_LT(e.Default.Mean, bound) << "far pixels should average their footprint's light";
